@@ -1,0 +1,282 @@
+#!/usr/bin/env python3
+"""Write BENCHMARKS.md from criterion's output (never typed by hand).
+
+    python benches/report.py --run          # run the benches, then write the report
+    python benches/report.py                # only write the report from target/criterion
+
+``--run`` runs ``cargo bench`` for every bench named in SECTIONS and, when the
+``burmester`` package is importable, the Python-side timings that SECTIONS
+names (they are stored beside criterion's output, in
+``target/criterion/python/``), so that every figure and ratio of the report
+comes from one run on this machine.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import os
+import platform
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable, Optional
+
+ROOT = Path(__file__).resolve().parent.parent
+CRITERION = ROOT / "target" / "criterion"
+OUT = ROOT / "BENCHMARKS.md"
+
+
+@dataclass
+class Ratio:
+    """``numerator / denominator`` of two benchmark ids (mean times)."""
+
+    name: str
+    numerator: str
+    denominator: str
+    goal: str
+    #: Pass when the ratio satisfies this predicate.
+    ok: Callable[[float], bool]
+
+
+@dataclass
+class Section:
+    title: str
+    #: cargo bench target names to run for this section.
+    benches: list[str]
+    #: criterion id prefixes whose figures are listed.
+    prefixes: list[str]
+    ratios: list[Ratio] = field(default_factory=list)
+    #: Python timings: id -> (setup, statement, elements); run with timeit.
+    python: dict[str, tuple[str, str, int]] = field(default_factory=dict)
+    note: str = ""
+
+
+SECTIONS: list[Section] = [
+    Section(
+        title="Position analysis (`position`)",
+        benches=["position"],
+        prefixes=["position/"],
+        ratios=[
+            Ratio(
+                "four-bar 7.0.5 `pos()` / burmester `solve`",
+                "position/single/four_bar_pos",
+                "position/single/solve",
+                ">= 2",
+                lambda r: r >= 2.0,
+            ),
+            Ratio(
+                "four-bar 7.0.5 `pos()` / burmester `joints_at` + coupler point",
+                "position/single/four_bar_pos",
+                "position/single/joints_coupler",
+                "(like for like, no goal)",
+                lambda r: True,
+            ),
+            Ratio(
+                "four-bar sweep / burmester `solve_into` sweep (3600 angles)",
+                "position/sweep/four_bar_pos/3600",
+                "position/sweep/solve_into/3600",
+                "(no goal)",
+                lambda r: True,
+            ),
+        ],
+        note=(
+            "`four-bar` is the Rust crate `four-bar` 7.0.5, measured in the same run on "
+            "the same linkage (Norton's Example 4-1 with a coupler point). Its `pos()` "
+            "returns five points, so `joints_coupler` does the same work; `solve` "
+            "returns the two angles. Pure-Python pylinkage is about 3.7 us per solve "
+            "(figure from the issue, not measured here)."
+        ),
+    ),
+]
+
+
+@dataclass
+class Figure:
+    id: str
+    mean_ns: float
+    low_ns: float
+    high_ns: float
+    elements: Optional[int]
+
+
+def load_criterion() -> dict[str, Figure]:
+    figures: dict[str, Figure] = {}
+    if not CRITERION.exists():
+        return figures
+    for bench in CRITERION.rglob("new/benchmark.json"):
+        est = bench.parent / "estimates.json"
+        if not est.exists():
+            continue
+        meta = json.loads(bench.read_text())
+        e = json.loads(est.read_text())
+        mean = e["mean"]
+        tp = meta.get("throughput") or {}
+        elements = tp.get("Elements") or tp.get("Bytes")
+        figures[meta["full_id"]] = Figure(
+            meta["full_id"],
+            mean["point_estimate"],
+            mean["confidence_interval"]["lower_bound"],
+            mean["confidence_interval"]["upper_bound"],
+            elements,
+        )
+    py = CRITERION / "python"
+    if py.exists():
+        for f in py.glob("*.json"):
+            d = json.loads(f.read_text())
+            figures[d["id"]] = Figure(d["id"], d["mean_ns"], d["low_ns"], d["high_ns"], d["elements"])
+    return figures
+
+
+def run_benches(sections: list[Section], extra: list[str]) -> None:
+    for s in sections:
+        for b in s.benches:
+            cmd = ["cargo", "bench", "-p", "burmester", "--bench", b, "--", *extra]
+            print("+", " ".join(cmd), flush=True)
+            subprocess.run(cmd, cwd=ROOT, check=True)
+
+
+def run_python(sections: list[Section], repeat: int) -> None:
+    try:
+        import burmester  # noqa: F401
+    except ImportError:
+        print("burmester is not importable: Python timings skipped", file=sys.stderr)
+        return
+    out = CRITERION / "python"
+    out.mkdir(parents=True, exist_ok=True)
+    for s in sections:
+        for pid, (setup, stmt, elements) in s.python.items():
+            env: dict = {}
+            exec(setup, env)
+            exec(stmt, env)  # warm up
+            times = []
+            for _ in range(repeat):
+                t0 = time.perf_counter_ns()
+                exec(stmt, env)
+                times.append(time.perf_counter_ns() - t0)
+            times.sort()
+            mean = statistics.fmean(times)
+            rec = {
+                "id": pid,
+                "mean_ns": mean,
+                "low_ns": times[0],
+                "high_ns": times[-1],
+                "elements": elements,
+                "median_ns": statistics.median(times),
+            }
+            print(f"python {pid}: {mean / 1e6:.3f} ms", flush=True)
+            (out / (pid.replace("/", "__") + ".json")).write_text(json.dumps(rec))
+
+
+def fmt_time(ns: float) -> str:
+    if ns < 1e3:
+        return f"{ns:.2f} ns"
+    if ns < 1e6:
+        return f"{ns / 1e3:.2f} µs"
+    if ns < 1e9:
+        return f"{ns / 1e6:.3f} ms"
+    return f"{ns / 1e9:.3f} s"
+
+
+def fmt_rate(elements: Optional[int], ns: float) -> str:
+    if not elements:
+        return ""
+    per_s = elements / (ns * 1e-9)
+    for unit, k in (("G", 1e9), ("M", 1e6), ("K", 1e3)):
+        if per_s >= k:
+            return f"{per_s / k:.2f} {unit}elem/s"
+    return f"{per_s:.1f} elem/s"
+
+
+def machine() -> list[str]:
+    cpu = "unknown"
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    rustc = subprocess.run(["rustc", "-V"], capture_output=True, text=True).stdout.strip()
+    return [
+        f"- CPU: {cpu}, {os.cpu_count()} logical cores",
+        f"- OS: {platform.system()} {platform.release()}",
+        f"- {rustc}; Python {platform.python_version()}",
+        f"- written: {datetime.datetime.now().strftime('%Y-%m-%d %H:%M')}",
+    ]
+
+
+def write(figures: dict[str, Figure]) -> str:
+    lines = [
+        "# Benchmarks",
+        "",
+        "Written by `benches/report.py` from criterion's output of one run on this",
+        "machine; do not edit by hand. Times are criterion's mean with its 95% interval.",
+        "",
+        "To reproduce (about ten minutes):",
+        "",
+        "```sh",
+        "pip install .            # for the Python-side timings",
+        "python benches/report.py --run",
+        "```",
+        "",
+        "## Machine",
+        "",
+        *machine(),
+        "",
+    ]
+    for s in SECTIONS:
+        lines += [f"## {s.title}", ""]
+        if s.note:
+            lines += [s.note, ""]
+        rows = sorted(
+            (f for f in figures.values() if any(f.id.startswith(p) for p in s.prefixes)),
+            key=lambda f: f.id,
+        )
+        if not rows:
+            lines += ["(not measured yet: run `python benches/report.py --run`)", ""]
+            continue
+        lines += ["| benchmark | time | interval | throughput |", "|---|---|---|---|"]
+        for f in rows:
+            lines.append(
+                f"| `{f.id}` | {fmt_time(f.mean_ns)} | {fmt_time(f.low_ns)} to "
+                f"{fmt_time(f.high_ns)} | {fmt_rate(f.elements, f.mean_ns)} |"
+            )
+        lines.append("")
+        if s.ratios:
+            lines += ["| ratio | value | goal | met |", "|---|---|---|---|"]
+            for r in s.ratios:
+                a, b = figures.get(r.numerator), figures.get(r.denominator)
+                if a is None or b is None:
+                    lines.append(f"| {r.name} | (missing) | {r.goal} | |")
+                    continue
+                v = a.mean_ns / b.mean_ns
+                lines.append(f"| {r.name} | {v:.2f} | {r.goal} | {'yes' if r.ok(v) else 'NO'} |")
+            lines.append("")
+    return "\n".join(lines)
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("--run", action="store_true", help="run the benches first")
+    ap.add_argument("--python-repeat", type=int, default=20)
+    ap.add_argument("criterion_args", nargs="*", help="passed to criterion (after --)")
+    args = ap.parse_args()
+    if args.run:
+        # Every figure of the report comes from this one run.
+        shutil.rmtree(CRITERION, ignore_errors=True)
+        run_benches(SECTIONS, args.criterion_args)
+        run_python(SECTIONS, args.python_repeat)
+    text = write(load_criterion())
+    OUT.write_text(text + "\n")
+    print(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,25 @@
+//! Python bindings of `burmester`: the `burmester._burmester` extension module.
+//!
+//! Thin wrappers only: each class holds a core value, converts arguments,
+//! and maps core errors to Python exceptions in one place (the `errors` module).
+
+use pyo3::prelude::*;
+
+mod conv;
+mod errors;
+mod fourbar;
+
+/// The native core of the `burmester` package.
+#[pymodule]
+mod _burmester {
+    #[pymodule_export]
+    use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
+    #[pymodule_export]
+    use crate::fourbar::{PyConfiguration, PyFourBar};
+
+    #[pymodule_init]
+    fn init(m: &pyo3::Bound<'_, pyo3::types::PyModule>) -> pyo3::PyResult<()> {
+        use pyo3::types::PyModuleMethods;
+        m.add("__version__", env!("CARGO_PKG_VERSION"))
+    }
+}

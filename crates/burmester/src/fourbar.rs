@@ -1,0 +1,874 @@
+//! Four-bar position analysis: both assembly modes in closed form, toggle
+//! positions, Grashof type, input range, transmission angle, joints and
+//! coupler-point paths.
+//!
+//! # Conventions
+//!
+//! The ground link runs from the input pivot `O2` to the output pivot `O4`
+//! at the angle `theta1`; the crank `L2` turns about `O2`, the rocker `L4`
+//! about `O4`, and the coupler `L3` joins the crank tip `A` to the rocker tip
+//! `B`. All angles are absolute (measured from the fixed +x axis,
+//! counter-clockwise, in radians), so that the loop reads
+//!
+//! ```text
+//! L2 e^{i theta2} + L3 e^{i theta3} - L1 e^{i theta1} - L4 e^{i theta4} = 0
+//! ```
+//!
+//! With the default placement (`O2` at the origin, ground along +x) this is
+//! the textbook form with `theta1 = 0` (Norton, *Design of Machinery*, §4.5).
+//!
+//! # The closed form
+//!
+//! The textbook solution substitutes `t = tan(theta/2)` and solves a
+//! quadratic `a t^2 + b t + c = 0`; it divides by `2a`, which is zero exactly
+//! when the answer is `theta = pi`, and its choice of root does not always
+//! match the assembly mode. This module intersects the two circles instead.
+//! With `d = O4 - A` and `r = |d|`, Heron's product
+//!
+//! ```text
+//! H = ((L3 + L4)^2 - r^2) (r^2 - (L3 - L4)^2)   (= 16 area^2 of triangle A B O4)
+//! ```
+//!
+//! is negative where the loop does not close and zero at a toggle. Then
+//!
+//! ```text
+//! v3 = d (L3^2 - L4^2 + r^2) + s sqrt(H) i d      theta3 = atan2(v3)
+//! v4 = d (L3^2 - L4^2 - r^2) + s sqrt(H) i d      theta4 = atan2(v4)
+//! ```
+//!
+//! with `s = +1` for [`AssemblyMode::Open`] and `-1` for
+//! [`AssemblyMode::Crossed`]; `cross(v3, v4) = 2 s r^4 sqrt(H)`, so the mode
+//! is the sign of `sin(theta4 - theta3)` by construction, for every linkage
+//! including parallelograms and kites. No division occurs, and every angle,
+//! `pi` included, comes out of `atan2`. The lengths are scaled by the longest
+//! link first, so no product overflows or underflows at any size.
+//!
+//! The two `atan2` are evaluated together in two SIMD lanes (the `wide`
+//! crate, within about 1 ulp of a correctly rounded `atan2`); `sin` and `cos`
+//! of the input come from `libm`.
+//!
+//! A toggle is reported where `|H|` is within rounding of zero:
+//! `|H| <= 8 eps ((L3 + L4)^2 + r^2)^2`, lengths in units of the longest link.
+
+use core::f64::consts::{PI, TAU};
+
+use nalgebra::{Point2, Vector2};
+
+use crate::error::{AssemblyError, Error, InvalidInput, Result, finite, positive};
+use crate::geom::{perp, point_is_finite, rotate, unit, wrap_angle};
+
+/// Relative tolerance of the toggle test and of the Grashof equality, in
+/// units of the machine epsilon times the size of the quantity compared.
+const ROUNDING_FACTOR: f64 = 8.0;
+
+/// The two ways to close the loop at one input angle.
+///
+/// Named by the sign of `sin(theta4 - theta3)`, the angle from the coupler
+/// to the rocker: positive is [`Open`](AssemblyMode::Open) (Norton's "open"
+/// circuit for the usual layout), negative is
+/// [`Crossed`](AssemblyMode::Crossed).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AssemblyMode {
+    /// `sin(theta4 - theta3) > 0`.
+    Open,
+    /// `sin(theta4 - theta3) < 0`.
+    Crossed,
+}
+
+impl AssemblyMode {
+    /// Both modes, open first.
+    pub const BOTH: [AssemblyMode; 2] = [AssemblyMode::Open, AssemblyMode::Crossed];
+
+    /// `+1.0` for open, `-1.0` for crossed.
+    #[inline]
+    pub fn sign(self) -> f64 {
+        match self {
+            AssemblyMode::Open => 1.0,
+            AssemblyMode::Crossed => -1.0,
+        }
+    }
+
+    /// The other mode.
+    #[inline]
+    #[must_use]
+    pub fn other(self) -> Self {
+        match self {
+            AssemblyMode::Open => AssemblyMode::Crossed,
+            AssemblyMode::Crossed => AssemblyMode::Open,
+        }
+    }
+
+    /// The mode whose sign is the sign of `value`, or `None` for zero or NaN.
+    pub fn from_sign(value: f64) -> Option<Self> {
+        if value > 0.0 {
+            Some(AssemblyMode::Open)
+        } else if value < 0.0 {
+            Some(AssemblyMode::Crossed)
+        } else {
+            None
+        }
+    }
+
+    /// `"open"` or `"crossed"`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            AssemblyMode::Open => "open",
+            AssemblyMode::Crossed => "crossed",
+        }
+    }
+}
+
+impl core::fmt::Display for AssemblyMode {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl core::str::FromStr for AssemblyMode {
+    type Err = InvalidInput;
+
+    /// Parses `"open"` or `"crossed"` (ASCII case-insensitive).
+    fn from_str(s: &str) -> Result<Self, InvalidInput> {
+        if s.eq_ignore_ascii_case("open") {
+            Ok(AssemblyMode::Open)
+        } else if s.eq_ignore_ascii_case("crossed") {
+            Ok(AssemblyMode::Crossed)
+        } else {
+            Err(InvalidInput::UnknownName {
+                what: "assembly mode",
+                expected: "\"open\" or \"crossed\"",
+                found: s.to_owned(),
+            })
+        }
+    }
+}
+
+/// Grashof type of a four-bar, the input being the crank link.
+///
+/// With `s` the shortest, `l` the longest and `p`, `q` the other two links,
+/// the linkage is Grashof when `s + l < p + q` (some link turns fully), a
+/// change point when `s + l = p + q` (within rounding), and non-Grashof
+/// otherwise. A Grashof linkage is named after its shortest link.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Grashof {
+    /// Grashof, crank shortest: the input turns fully, the output rocks.
+    CrankRocker,
+    /// Grashof, ground shortest: both the input and the output turn fully (drag link).
+    DoubleCrank,
+    /// Grashof, rocker shortest: the output turns fully, the input rocks.
+    RockerCrank,
+    /// Grashof, coupler shortest: both the input and the output rock; the coupler turns fully.
+    DoubleRocker,
+    /// Non-Grashof (`s + l > p + q`): no link turns fully relative to another.
+    TripleRocker,
+    /// `s + l = p + q`: the linkage passes through a flat (change point)
+    /// position where it can switch assembly modes.
+    ChangePoint,
+}
+
+impl Grashof {
+    /// The name used in the Python API: `"crank-rocker"`, `"double-crank"`,
+    /// `"rocker-crank"`, `"double-rocker"`, `"triple-rocker"` or `"change-point"`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Grashof::CrankRocker => "crank-rocker",
+            Grashof::DoubleCrank => "double-crank",
+            Grashof::RockerCrank => "rocker-crank",
+            Grashof::DoubleRocker => "double-rocker",
+            Grashof::TripleRocker => "triple-rocker",
+            Grashof::ChangePoint => "change-point",
+        }
+    }
+
+    /// Whether `s + l < p + q` strictly (some link turns fully and the
+    /// linkage never reaches a change point).
+    pub fn is_grashof(self) -> bool {
+        !matches!(self, Grashof::TripleRocker | Grashof::ChangePoint)
+    }
+}
+
+impl core::fmt::Display for Grashof {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// A closed interval of angles, counter-clockwise from `start` to `end`
+/// (`start <= end < start + 2 pi`), in radians.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AngleInterval {
+    /// Where the interval starts.
+    pub start: f64,
+    /// Where it ends, counter-clockwise from `start`.
+    pub end: f64,
+}
+
+impl AngleInterval {
+    /// The angular width `end - start`.
+    pub fn span(&self) -> f64 {
+        self.end - self.start
+    }
+
+    /// The middle angle.
+    pub fn mid(&self) -> f64 {
+        0.5 * (self.start + self.end)
+    }
+
+    /// Whether `angle` (any multiple of `2 pi` added) lies in the interval.
+    pub fn contains(&self, angle: f64) -> bool {
+        let t = (angle - self.start).rem_euclid(TAU);
+        t <= self.span()
+    }
+}
+
+/// Where the input link can be: all the way round, or one or two arcs
+/// bounded by dead (toggle) positions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum InputRange {
+    /// The input turns fully.
+    Full,
+    /// The input rocks within one arc.
+    Arc(AngleInterval),
+    /// The input rocks within one of two arcs, mirror images across the
+    /// ground line (a Grashof double-rocker's two circuits).
+    TwoArcs(AngleInterval, AngleInterval),
+}
+
+impl InputRange {
+    /// Whether the input can reach `theta2`.
+    pub fn contains(&self, theta2: f64) -> bool {
+        match self {
+            InputRange::Full => true,
+            InputRange::Arc(a) => a.contains(theta2),
+            InputRange::TwoArcs(a, b) => a.contains(theta2) || b.contains(theta2),
+        }
+    }
+
+    /// Whether the input turns fully.
+    pub fn is_full(&self) -> bool {
+        matches!(self, InputRange::Full)
+    }
+
+    /// The arcs as an array of up to two, with their count.
+    pub fn arcs_array(&self) -> ([AngleInterval; 2], usize) {
+        let zero = AngleInterval {
+            start: 0.0,
+            end: 0.0,
+        };
+        match *self {
+            InputRange::Full => ([zero; 2], 0),
+            InputRange::Arc(a) => ([a, zero], 1),
+            InputRange::TwoArcs(a, b) => ([a, b], 2),
+        }
+    }
+
+    /// The dead positions: the input angles that bound the arcs (empty when
+    /// the input turns fully).
+    pub fn dead_positions(&self) -> Vec<f64> {
+        let (arcs, n) = self.arcs_array();
+        arcs[..n].iter().flat_map(|a| [a.start, a.end]).collect()
+    }
+}
+
+/// One solved position of a four-bar.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Configuration {
+    /// Input (crank) angle, as given.
+    pub theta2: f64,
+    /// Coupler angle, in `(-pi, pi]`.
+    pub theta3: f64,
+    /// Output (rocker) angle, in `(-pi, pi]`.
+    pub theta4: f64,
+    /// The assembly mode that was asked for.
+    pub mode: AssemblyMode,
+    /// True at a toggle (dead) position, where the two modes meet: coupler
+    /// and rocker are collinear and `sin(theta4 - theta3)` is zero within
+    /// rounding, so both modes give this same answer.
+    pub toggle: bool,
+}
+
+impl Configuration {
+    /// The angle from the coupler to the rocker, `theta4 - theta3` wrapped
+    /// into `(-pi, pi]`; its sign is the assembly mode.
+    pub fn coupler_rocker_angle(&self) -> f64 {
+        wrap_angle(self.theta4 - self.theta3)
+    }
+
+    /// The transmission angle: the acute angle between coupler and rocker,
+    /// in `[0, pi/2]` (`pi/2` is ideal, `0` is a toggle).
+    ///
+    /// ```text
+    /// mu = |theta4 - theta3| (wrapped to [0, pi]), folded: min(mu, pi - mu)
+    /// ```
+    pub fn transmission_angle(&self) -> f64 {
+        let mu = self.coupler_rocker_angle().abs();
+        mu.min(PI - mu)
+    }
+}
+
+/// Where the four joints are in one configuration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Joints {
+    /// The input (crank) pivot `O2`, fixed.
+    pub input_pivot: Point2<f64>,
+    /// The crank tip `A`, joining crank and coupler.
+    pub crank_joint: Point2<f64>,
+    /// The rocker tip `B`, joining coupler and rocker.
+    pub rocker_joint: Point2<f64>,
+    /// The output (rocker) pivot `O4`, fixed.
+    pub output_pivot: Point2<f64>,
+}
+
+impl Joints {
+    /// Where a point fixed to the coupler is. `local` is given in the
+    /// coupler frame: origin at the crank joint `A`, x-axis toward the rocker
+    /// joint `B`.
+    pub fn coupler_point(&self, local: Vector2<f64>) -> Point2<f64> {
+        let ab = self.rocker_joint - self.crank_joint;
+        let e = ab / ab.norm();
+        self.crank_joint
+            + Vector2::new(e.x * local.x - e.y * local.y, e.y * local.x + e.x * local.y)
+    }
+}
+
+/// The loop closed at one input angle, before any angle is computed.
+#[derive(Debug, Clone, Copy)]
+struct Closed {
+    /// `e^{i theta2}`.
+    crank_dir: Vector2<f64>,
+    /// A vector along the coupler, `A -> B`.
+    v3: Vector2<f64>,
+    /// A vector along the rocker, `O4 -> B`.
+    v4: Vector2<f64>,
+    toggle: bool,
+}
+
+/// A planar four-bar linkage.
+///
+/// Built from its four link lengths, and placed by its input pivot and the
+/// direction of its ground link (default: the origin and +x).
+///
+/// # Example
+///
+/// ```
+/// use burmester::{AssemblyMode, FourBar};
+/// // Norton, Design of Machinery, Example 4-1.
+/// let fb = FourBar::new(100.0, 40.0, 120.0, 80.0)?;
+/// let c = fb.solve(40f64.to_radians(), AssemblyMode::Open)?;
+/// assert!((c.theta3.to_degrees() - 20.298).abs() < 5e-4);
+/// assert!((c.theta4.to_degrees() - 57.325).abs() < 5e-4);
+/// # Ok::<(), burmester::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FourBar {
+    ground: f64,
+    crank: f64,
+    coupler: f64,
+    rocker: f64,
+    origin: Point2<f64>,
+    ground_angle: f64,
+    /// Lengths divided by `scale`, the longest link: the arithmetic runs at
+    /// unit size, so no product of lengths overflows or underflows.
+    scale: f64,
+    /// `ground / scale` times the ground's unit direction.
+    g_vec: Vector2<f64>,
+    c_n: f64,
+    sum_n: f64,
+    diff_n: f64,
+    /// `(L3^2 - L4^2) / scale^2`.
+    sq_diff_n: f64,
+}
+
+impl FourBar {
+    /// A four-bar from its ground, crank (input), coupler and rocker
+    /// (output) lengths, with the input pivot at the origin and the ground
+    /// along +x.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput`] when a length is zero, negative, NaN or infinite;
+    /// [`AssemblyError::NeverCloses`] when the longest link is longer than
+    /// the other three together (no input angle closes the loop).
+    pub fn new(ground: f64, crank: f64, coupler: f64, rocker: f64) -> Result<Self> {
+        Self::placed(ground, crank, coupler, rocker, Point2::origin(), 0.0)
+    }
+
+    /// A four-bar with its input pivot at `origin` and its ground link at
+    /// `ground_angle` radians from +x.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourBar::new`], and [`InvalidInput::NotFinite`] for a
+    /// non-finite origin or angle.
+    pub fn placed(
+        ground: f64,
+        crank: f64,
+        coupler: f64,
+        rocker: f64,
+        origin: Point2<f64>,
+        ground_angle: f64,
+    ) -> Result<Self> {
+        let ground = positive("ground length", ground)?;
+        let crank = positive("crank length", crank)?;
+        let coupler = positive("coupler length", coupler)?;
+        let rocker = positive("rocker length", rocker)?;
+        finite("origin x", origin.x)?;
+        finite("origin y", origin.y)?;
+        let ground_angle = finite("ground angle", ground_angle)?;
+        let links = [ground, crank, coupler, rocker];
+        let scale = links.iter().copied().fold(0.0, f64::max);
+        let [g, c, l3, l4] = links.map(|l| l / scale);
+        let sum_n = g + c + l3 + l4;
+        // The longest link is 1 in units of `scale`.
+        let others = sum_n - 1.0;
+        if 1.0 > others * (1.0 + ROUNDING_FACTOR * f64::EPSILON) {
+            return Err(AssemblyError::NeverCloses {
+                longest: scale,
+                others: others * scale,
+            }
+            .into());
+        }
+        Ok(FourBar {
+            ground,
+            crank,
+            coupler,
+            rocker,
+            origin,
+            ground_angle,
+            scale,
+            g_vec: unit(ground_angle) * g,
+            c_n: c,
+            sum_n: l3 + l4,
+            diff_n: l3 - l4,
+            sq_diff_n: (l3 - l4) * (l3 + l4),
+        })
+    }
+
+    /// A four-bar between two given fixed pivots: the ground length and
+    /// angle come from `input_pivot` and `output_pivot`.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourBar::placed`]; the pivots must be finite and distinct.
+    pub fn from_pivots(
+        input_pivot: Point2<f64>,
+        output_pivot: Point2<f64>,
+        crank: f64,
+        coupler: f64,
+        rocker: f64,
+    ) -> Result<Self> {
+        if !point_is_finite(&input_pivot) || !point_is_finite(&output_pivot) {
+            let bad = [input_pivot.x, input_pivot.y, output_pivot.x, output_pivot.y]
+                .into_iter()
+                .find(|v| !v.is_finite())
+                .unwrap_or(f64::NAN);
+            return Err(InvalidInput::NotFinite {
+                name: "fixed pivot coordinate",
+                value: bad,
+            }
+            .into());
+        }
+        let d = output_pivot - input_pivot;
+        let ground = d.norm();
+        Self::placed(ground, crank, coupler, rocker, input_pivot, d.y.atan2(d.x))
+    }
+
+    /// Ground length `L1` (input pivot to output pivot).
+    pub fn ground(&self) -> f64 {
+        self.ground
+    }
+    /// Crank (input) length `L2`.
+    pub fn crank(&self) -> f64 {
+        self.crank
+    }
+    /// Coupler length `L3`.
+    pub fn coupler(&self) -> f64 {
+        self.coupler
+    }
+    /// Rocker (output) length `L4`.
+    pub fn rocker(&self) -> f64 {
+        self.rocker
+    }
+    /// The four lengths `[ground, crank, coupler, rocker]`.
+    pub fn lengths(&self) -> [f64; 4] {
+        [self.ground, self.crank, self.coupler, self.rocker]
+    }
+    /// The input pivot `O2`.
+    pub fn input_pivot(&self) -> Point2<f64> {
+        self.origin
+    }
+    /// The output pivot `O4`.
+    pub fn output_pivot(&self) -> Point2<f64> {
+        self.origin + unit(self.ground_angle) * self.ground
+    }
+    /// The angle of the ground link, `theta1`, in radians.
+    pub fn ground_angle(&self) -> f64 {
+        self.ground_angle
+    }
+    /// Ratio of the longest to the shortest link.
+    pub fn link_ratio(&self) -> f64 {
+        let l = self.lengths();
+        let min = l.iter().copied().fold(f64::INFINITY, f64::min);
+        self.scale / min
+    }
+
+    /// Closes the loop at `theta2`: the crank direction and the two vectors
+    /// whose arguments are `theta3` and `theta4` (module docs), no
+    /// trigonometry beyond `sin` and `cos` of the input.
+    #[inline(always)]
+    fn close(&self, theta2: f64, mode: AssemblyMode) -> Result<Closed> {
+        let (s2, c2) = libm::sincos(theta2);
+        // d = O4 - A, in units of `scale`.
+        let d = Vector2::new(self.g_vec.x - self.c_n * c2, self.g_vec.y - self.c_n * s2);
+        let r2 = d.x * d.x + d.y * d.y;
+        let sum = self.sum_n;
+        let diff = self.diff_n;
+        let heron = (sum * sum - r2) * (r2 - diff * diff);
+        let big = sum * sum + r2;
+        let tol = ROUNDING_FACTOR * f64::EPSILON * big * big;
+        // NaN comes from a non-finite angle.
+        if heron.is_nan() || heron < -tol || r2 == 0.0 {
+            return Err(self.close_error(theta2, r2, heron));
+        }
+        let toggle = heron <= tol;
+        let h = if toggle {
+            0.0
+        } else {
+            mode.sign() * heron.sqrt()
+        };
+        let n = perp(d) * h;
+        Ok(Closed {
+            crank_dir: Vector2::new(c2, s2),
+            v3: d * (self.sq_diff_n + r2) + n,
+            v4: d * (self.sq_diff_n - r2) + n,
+            toggle,
+        })
+    }
+
+    #[cold]
+    fn close_error(&self, theta2: f64, r2: f64, heron: f64) -> Error {
+        if !theta2.is_finite() {
+            return InvalidInput::NotFinite {
+                name: "theta2",
+                value: theta2,
+            }
+            .into();
+        }
+        if heron < 0.0 || heron.is_nan() {
+            AssemblyError::OutOfReach {
+                theta2,
+                distance: r2.sqrt() * self.scale,
+                min_reach: self.diff_n.abs() * self.scale,
+                max_reach: self.sum_n * self.scale,
+            }
+            .into()
+        } else {
+            AssemblyError::Indeterminate { theta2 }.into()
+        }
+    }
+
+    /// Solves the loop at input angle `theta2` (radians) in `mode`.
+    ///
+    /// Returns the coupler and rocker angles; at a toggle position the
+    /// result carries `toggle = true` (both modes coincide there).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotFinite`] for a NaN or infinite angle;
+    /// [`AssemblyError::OutOfReach`] where the loop does not close;
+    /// [`AssemblyError::Indeterminate`] where the crank tip lies on the
+    /// output pivot of a linkage whose coupler equals its rocker.
+    #[inline]
+    pub fn solve(&self, theta2: f64, mode: AssemblyMode) -> Result<Configuration> {
+        let c = self.close(theta2, mode)?;
+        let [theta3, theta4] = wide::f64x2::new([c.v3.y, c.v4.y])
+            .atan2(wide::f64x2::new([c.v3.x, c.v4.x]))
+            .to_array();
+        Ok(Configuration {
+            theta2,
+            theta3,
+            theta4,
+            mode,
+            toggle: c.toggle,
+        })
+    }
+
+    /// Solves the loop at every angle of `theta2s`, lazily: one result per
+    /// angle, no allocation.
+    pub fn solve_iter<'a, I>(
+        &'a self,
+        theta2s: I,
+        mode: AssemblyMode,
+    ) -> impl Iterator<Item = Result<Configuration>> + 'a
+    where
+        I: IntoIterator<Item = f64>,
+        I::IntoIter: 'a,
+    {
+        theta2s.into_iter().map(move |t| self.solve(t, mode))
+    }
+
+    /// Solves the loop at every angle of `theta2s`, writing `theta3`,
+    /// `theta4` and whether the loop closed into the three output slices.
+    /// Where it does not close (or the angle is not finite) the angles are
+    /// NaN and `valid` is false. Returns how many closed.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::LengthMismatch`] when the slices differ in length.
+    pub fn solve_into(
+        &self,
+        theta2s: &[f64],
+        mode: AssemblyMode,
+        theta3: &mut [f64],
+        theta4: &mut [f64],
+        valid: &mut [bool],
+    ) -> Result<usize> {
+        for (name, len) in [
+            ("theta3", theta3.len()),
+            ("theta4", theta4.len()),
+            ("valid", valid.len()),
+        ] {
+            if len != theta2s.len() {
+                return Err(InvalidInput::LengthMismatch {
+                    name,
+                    expected: theta2s.len(),
+                    found: len,
+                }
+                .into());
+            }
+        }
+        let mut count = 0;
+        for (i, &t) in theta2s.iter().enumerate() {
+            match self.solve(t, mode) {
+                Ok(c) => {
+                    theta3[i] = c.theta3;
+                    theta4[i] = c.theta4;
+                    valid[i] = true;
+                    count += 1;
+                }
+                Err(_) => {
+                    theta3[i] = f64::NAN;
+                    theta4[i] = f64::NAN;
+                    valid[i] = false;
+                }
+            }
+        }
+        Ok(count)
+    }
+
+    /// The joint positions of a configuration of this linkage.
+    pub fn joints(&self, c: &Configuration) -> Joints {
+        let a = self.origin + unit(c.theta2) * self.crank;
+        let o4 = self.output_pivot();
+        Joints {
+            input_pivot: self.origin,
+            crank_joint: a,
+            rocker_joint: o4 + unit(c.theta4) * self.rocker,
+            output_pivot: o4,
+        }
+    }
+
+    /// Solves at `theta2` in `mode` and returns the joint positions,
+    /// without computing any angle (no trigonometry beyond `sin` and `cos` of
+    /// the input).
+    ///
+    /// # Errors
+    ///
+    /// As [`FourBar::solve`].
+    pub fn joints_at(&self, theta2: f64, mode: AssemblyMode) -> Result<Joints> {
+        let c = self.close(theta2, mode)?;
+        let a = self.origin + c.crank_dir * self.crank;
+        let o4 = self.output_pivot();
+        Ok(Joints {
+            input_pivot: self.origin,
+            crank_joint: a,
+            rocker_joint: o4 + c.v4 * (self.rocker / c.v4.norm()),
+            output_pivot: o4,
+        })
+    }
+
+    /// Where a point fixed to the coupler is, in a configuration.
+    ///
+    /// `local` is given in the coupler frame: origin at the crank joint `A`,
+    /// x-axis from `A` toward the rocker joint `B`.
+    ///
+    /// ```text
+    /// P = A + e^{i theta3} (u + i v)
+    /// ```
+    pub fn coupler_point(&self, c: &Configuration, local: Vector2<f64>) -> Point2<f64> {
+        let a = self.origin + unit(c.theta2) * self.crank;
+        a + rotate(local, c.theta3)
+    }
+
+    /// The path of a coupler point over the input angles `theta2s`, lazily:
+    /// one result per angle (an error where the loop does not close).
+    ///
+    /// # Errors
+    ///
+    /// Each item is an error where [`FourBar::solve`] fails; a non-finite
+    /// `local` gives [`InvalidInput::NotFinite`] for every item.
+    pub fn coupler_path<'a, I>(
+        &'a self,
+        local: Vector2<f64>,
+        theta2s: I,
+        mode: AssemblyMode,
+    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
+    where
+        I: IntoIterator<Item = f64>,
+        I::IntoIter: 'a,
+    {
+        let local_ok = finite("coupler point u", local.x)
+            .and_then(|_| finite("coupler point v", local.y))
+            .map_err(Error::from);
+        theta2s.into_iter().map(move |t| {
+            local_ok.clone()?;
+            Ok(self.joints_at(t, mode)?.coupler_point(local))
+        })
+    }
+
+    /// Grashof type, the input being the crank link.
+    ///
+    /// The equality `s + l = p + q` is decided within a relative rounding
+    /// tolerance of a few machine epsilons, so that change-point linkages
+    /// given with decimal lengths are recognised.
+    pub fn grashof(&self) -> Grashof {
+        let l = self.lengths().map(|v| v / self.scale);
+        let mut idx = [0usize, 1, 2, 3];
+        idx.sort_by(|&a, &b| l[a].total_cmp(&l[b]));
+        let s = l[idx[0]];
+        let lmax = l[idx[3]];
+        let p = l[idx[1]];
+        let q = l[idx[2]];
+        let lhs = s + lmax;
+        let rhs = p + q;
+        let tol = ROUNDING_FACTOR * f64::EPSILON * (lhs + rhs);
+        if (lhs - rhs).abs() <= tol {
+            Grashof::ChangePoint
+        } else if lhs > rhs {
+            Grashof::TripleRocker
+        } else {
+            match idx[0] {
+                0 => Grashof::DoubleCrank,
+                1 => Grashof::CrankRocker,
+                2 => Grashof::DoubleRocker,
+                _ => Grashof::RockerCrank,
+            }
+        }
+    }
+
+    /// Where the input link can be: all the way round, or the arcs between
+    /// its dead positions.
+    ///
+    /// With `c = cos(theta2 - theta1)` the crank tip is at distance
+    /// `r^2 = L1^2 + L2^2 - 2 L1 L2 c` from the output pivot, and the loop
+    /// closes where `|L3 - L4| <= r <= L3 + L4`:
+    ///
+    /// ```text
+    /// (L1^2 + L2^2 - (L3 + L4)^2) / (2 L1 L2) <= c <= (L1^2 + L2^2 - (L3 - L4)^2) / (2 L1 L2)
+    /// ```
+    ///
+    /// A bound within rounding of `+-1` counts as reached, so that change-point
+    /// linkages turn fully.
+    pub fn input_range(&self) -> InputRange {
+        let g = self.ground / self.scale;
+        let c = self.c_n;
+        let base = g * g + c * c;
+        let two = 2.0 * g * c;
+        let tol = ROUNDING_FACTOR * f64::EPSILON * (base + self.sum_n * self.sum_n) / two;
+        let c_min = (base - self.sum_n * self.sum_n) / two;
+        let c_max = (base - self.diff_n * self.diff_n) / two;
+        let lo_free = c_min <= -1.0 + tol;
+        let hi_free = c_max >= 1.0 - tol;
+        let t1 = self.ground_angle;
+        match (lo_free, hi_free) {
+            (true, true) => InputRange::Full,
+            (false, true) => {
+                let a = c_min.clamp(-1.0, 1.0).acos();
+                InputRange::Arc(AngleInterval {
+                    start: t1 - a,
+                    end: t1 + a,
+                })
+            }
+            (true, false) => {
+                let a = c_max.clamp(-1.0, 1.0).acos();
+                InputRange::Arc(AngleInterval {
+                    start: t1 + a,
+                    end: t1 + TAU - a,
+                })
+            }
+            (false, false) => {
+                let a_lo = c_max.clamp(-1.0, 1.0).acos();
+                let a_hi = c_min.clamp(-1.0, 1.0).acos();
+                InputRange::TwoArcs(
+                    AngleInterval {
+                        start: t1 + a_lo,
+                        end: t1 + a_hi,
+                    },
+                    AngleInterval {
+                        start: t1 - a_hi,
+                        end: t1 - a_lo,
+                    },
+                )
+            }
+        }
+    }
+
+    /// Whether the input link turns fully (its [`input_range`](Self::input_range) is full).
+    pub fn input_turns_fully(&self) -> bool {
+        self.input_range().is_full()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn deg(x: f64) -> f64 {
+        x.to_radians()
+    }
+
+    #[test]
+    fn norton_example_4_1() {
+        let fb = FourBar::new(100.0, 40.0, 120.0, 80.0).unwrap();
+        let o = fb.solve(deg(40.0), AssemblyMode::Open).unwrap();
+        let c = fb.solve(deg(40.0), AssemblyMode::Crossed).unwrap();
+        let r = |x: f64| (x.to_degrees() * 1000.0).round() / 1000.0;
+        assert_eq!((r(o.theta3), r(o.theta4)), (20.298, 57.325));
+        assert_eq!((r(c.theta3), r(c.theta4)), (-60.978, -98.005));
+        assert!(!o.toggle && !c.toggle);
+    }
+
+    #[test]
+    fn angle_pi_is_exact() {
+        // Rhombus at theta2 = pi/2: A = (0, 1), O4 = (1, 0). Open is the
+        // parallelogram (B = (1, 1)); crossed folds B onto O2, theta4 = pi,
+        // where the half-angle form divides by zero.
+        let fb = FourBar::new(1.0, 1.0, 1.0, 1.0).unwrap();
+        let c = fb.solve(PI / 2.0, AssemblyMode::Open).unwrap();
+        assert!(c.theta3.abs() < 1e-15, "{c:?}");
+        assert!((c.theta4 - PI / 2.0).abs() < 1e-15);
+        let x = fb.solve(PI / 2.0, AssemblyMode::Crossed).unwrap();
+        assert!(wrap_angle(x.theta4 - PI).abs() < 1e-15, "{x:?}");
+        assert!((x.theta3 + PI / 2.0).abs() < 1e-15, "{x:?}");
+        assert!(x.coupler_rocker_angle() < 0.0);
+    }
+
+    #[test]
+    fn bad_lengths_are_typed_errors() {
+        for (args, what) in [
+            ((0.0, 1.0, 1.0, 1.0), "ground"),
+            ((1.0, -1.0, 1.0, 1.0), "crank"),
+            ((1.0, 1.0, f64::NAN, 1.0), "coupler"),
+            ((1.0, 1.0, 1.0, f64::INFINITY), "rocker"),
+        ] {
+            let e = FourBar::new(args.0, args.1, args.2, args.3).unwrap_err();
+            assert!(matches!(e, Error::InvalidInput(_)), "{e}");
+            assert!(e.to_string().contains(what), "{e}");
+        }
+        let e = FourBar::new(10.0, 1.0, 2.0, 3.0).unwrap_err();
+        assert!(matches!(
+            e,
+            Error::Assembly(AssemblyError::NeverCloses { .. })
+        ));
+    }
+}
