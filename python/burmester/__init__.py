@@ -12,9 +12,13 @@ from burmester._burmester import (
     AssemblyError,
     BurmesterError,
     Configuration,
+    Conic,
     DegenerateError,
+    Filemon,
     FourBar,
     InvalidInputError,
+    SynthesizedFourBar,
+    Task,
     __version__,
 )
 
@@ -22,8 +26,12 @@ __all__ = [
     "AssemblyError",
     "BurmesterError",
     "Configuration",
+    "Conic",
     "DegenerateError",
+    "Filemon",
     "FourBar",
     "InvalidInputError",
+    "SynthesizedFourBar",
+    "Task",
     "__version__",
 ]

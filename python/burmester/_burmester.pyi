@@ -169,3 +169,215 @@ class FourBar:
         """``(x, y, valid)``: the path of a coupler point over input angles,
         NaN exactly where ``valid`` is False."""
     def __eq__(self, other: object) -> bool: ...
+
+Pose = Tuple[float, float, float]
+Line = Tuple[Point, Point]
+Method = Literal["conic", "direct", "simulate"]
+BranchClass = Literal["free", "defective", "boundary"]
+
+class Task:
+    """Three poses of the coupler, ``(x, y, angle)`` with angles in radians.
+
+    Raises :class:`InvalidInputError` for NaN or infinite numbers or not
+    exactly three poses, and :class:`DegenerateError` when two poses are
+    equal, when two poses differ by a pure translation (their pole is at
+    infinity: rotate one pose a little), or when the three poses are
+    rotations about one point.
+
+    The maps run in a frame attached to the pole triangle, so results do not
+    depend on where the task is or how large it is.
+    """
+
+    def __init__(self, poses: Sequence[Pose]) -> None: ...
+    @property
+    def poses(self) -> list[Pose]:
+        """The three poses."""
+    @property
+    def rotations(self) -> Tuple[float, float, float]:
+        """``(theta12, theta13, theta23)``, each wrapped into (-pi, pi]."""
+    @property
+    def scale(self) -> float:
+        """The size of the pole triangle (unit of the relative tolerances)."""
+    def poles(self) -> Tuple[Point, Point, Point]:
+        """``(P12, P13, P23)``: the fixed points of the displacements."""
+    def image_poles(self) -> Tuple[Point, Point, Point]:
+        """``(P12, P13, P'23)`` in the pose-1 frame; ``P'23`` is the
+        reflection of ``P23`` across the line ``P12 P13``."""
+    def image_poles_in(self, frame: int) -> Tuple[Point, Point, Point]:
+        """The image poles ``(P12^k, P13^k, P23^k)`` in the frame of pose
+        ``k`` (1, 2 or 3)."""
+    def pole_circle(self) -> dict[str, object]:
+        """The circle through the poles: ``{"kind": "circle", "center": (x, y),
+        "radius": r}`` (or ``{"kind": "line", "point", "direction"}`` when
+        collinear). Center points on it have their circle point at infinity."""
+    def image_pole_circle(self) -> dict[str, object]:
+        """The circle through the image poles (same form). Circle points on it
+        have their center point at infinity."""
+    def pole_triangle_angles(self) -> Tuple[float, float, float]:
+        """The signed angles of the pole triangle at P12, P13, P23, modulo pi
+        in (-pi/2, pi/2]; they equal theta12/2, theta13/2, theta23/2 mod pi."""
+    def displace(self, point: Point, i: int, j: int) -> Point:
+        """``D_ij(z)``: where the coupler point at ``point`` in pose ``i`` is in
+        pose ``j`` (1-based)."""
+    def circle_point(self, center: Point) -> Point:
+        """The circle point (moving pivot at pose 1) of a center point (fixed
+        pivot). Raises :class:`DegenerateError` on the pole circle (the answer
+        is at infinity; the message gives its direction) or at a pole."""
+    def center_point(self, circle: Point) -> Point:
+        """The center point of a circle point. Raises :class:`DegenerateError`
+        on the image-pole circle (the center is at infinity: a slider) or at an
+        image pole."""
+    def circle_points(self, centers: ArrayLike) -> Tuple[FloatArray, BoolArray]:
+        """:meth:`circle_point` of an array of shape ``(..., 2)``: the points
+        (NaN where undefined) and a validity mask of shape ``(...)``."""
+    def center_points(self, circles: ArrayLike) -> Tuple[FloatArray, BoolArray]:
+        """:meth:`center_point` of an array of shape ``(..., 2)``."""
+    def dyad(self, center: Point) -> Tuple[Point, Point]:
+        """``(center, circle)``: the dyad with this center point."""
+    def crank_angles(self, center: Point) -> Tuple[float, float, float]:
+        """The crank angle of the dyad with this center point at each pose."""
+    def filemon(self, driven_center: Point) -> Filemon:
+        """Filemon's construction for the driven dyad with this center point
+        (``C0``). Raises :class:`DegenerateError` where ``C0`` has no circle
+        point (pole circle, poles)."""
+    def four_bar(self, driving_center: Point, driven_center: Point) -> SynthesizedFourBar:
+        """The four-bar built from the dyads with these center points."""
+    def line_to_conic(self, point: Point, direction: Point) -> Conic:
+        """The exact image in the center-point plane of a line of the
+        circle-point plane: a conic through the three poles."""
+
+class Filemon:
+    """Filemon's construction for a driven dyad ``(C0, C1)`` and its two lines
+    transformed exactly into conics in the driving crank's center-point plane.
+
+    A driving center point ``A0`` is branch-free exactly where the two conics
+    have values of one sign (``g_a(A0) * g_b(A0) > 0``).
+    """
+
+    @property
+    def task(self) -> Task:
+        """The task."""
+    @property
+    def driven_center(self) -> Point:
+        """``C0``, the driven crank's fixed pivot."""
+    @property
+    def circle_point(self) -> Point:
+        """``C1``, the driven crank's moving pivot at pose 1."""
+    @property
+    def fixed_pivot_images(self) -> Tuple[Point, Point, Point]:
+        """``(C'1, C'2, C'3)``, ``C'k = D_k1(C0)``."""
+    @property
+    def all_defective(self) -> bool:
+        """True when every driving circle point has a branch defect (the
+        directions ``C'k - C1`` do not lie in an open half-plane); then
+        :attr:`lines` and :attr:`conics` are empty."""
+    @property
+    def lines(self) -> list[Line]:
+        """The two Filemon lines, each ``(point, direction)`` with point ``C1``
+        and direction ``C'k - C1`` of an extreme pose (empty when all are
+        defective)."""
+    @property
+    def all_lines(self) -> list[Line]:
+        """The three lines through ``C1`` and ``C'k``, ``k = 1, 2, 3``."""
+    @property
+    def conics(self) -> list[Conic]:
+        """The two transformed Filemon lines (empty when all are defective)."""
+    @property
+    def extreme_poses(self) -> Optional[Tuple[int, int]]:
+        """The poses (1-based) whose lines are the Filemon lines."""
+    @property
+    def middle_pose(self) -> Optional[int]:
+        """The pose whose line lies between the Filemon lines."""
+    def line_conic(self, pose: int) -> Conic:
+        """The transformed line of pose ``k`` (any of the three)."""
+    def is_branch_free(self, center: Point, method: Method = "conic") -> bool:
+        """Whether the driving center point is free of the branch defect.
+
+        ``"conic"``: the signs of the two conics (defined everywhere);
+        ``"direct"``: the circle point, then the sign test at the three poses;
+        ``"simulate"``: build the four-bar and drive it through the poses.
+        The methods agree except within about 1e-9 of the task's size from
+        a conic. A point on a curve is not free. ``"direct"`` and
+        ``"simulate"`` raise :class:`DegenerateError` on the pole circle and
+        at the poles."""
+    def classify(self, center: Point, method: Method = "conic") -> BranchClass:
+        """``"free"``, ``"defective"`` or ``"boundary"`` (on a curve, or a toggle
+        at a design pose)."""
+    def classify_circle_point(self, circle: Point) -> BranchClass:
+        """Filemon's test of a driving circle point in the circle-point plane."""
+    def circle_signs(self, circle: Point) -> Tuple[float, float, float]:
+        """``cross(C'k - C1, A1 - C1)`` for ``k = 1, 2, 3``."""
+    def conic_values(self, center: Point) -> Optional[Tuple[float, float]]:
+        """The two conics' values at a center point (None when all defective)."""
+    def four_bar(self, driving_center: Point) -> SynthesizedFourBar:
+        """The four-bar with this driven dyad and the driving dyad whose center
+        point is given."""
+
+class Conic:
+    """A conic ``A x^2 + B x y + C y^2 + D x + E y + F = 0``; its value is
+    defined up to a positive factor, so its sign tells the side."""
+
+    def __init__(self, a: float, b: float, c: float, d: float, e: float, f: float) -> None: ...
+    @property
+    def coefficients(self) -> Tuple[float, float, float, float, float, float]:
+        """``(A, B, C, D, E, F)`` in the fixed frame."""
+    @property
+    def kind(self) -> Literal["ellipse", "hyperbola", "parabola", "degenerate"]:
+        """The kind (``B^2 - 4AC`` within a relative 1e-12 of zero is a parabola)."""
+    @property
+    def center(self) -> Optional[Point]:
+        """The center, if unique (not for parabolas)."""
+    @property
+    def axis_angle(self) -> float:
+        """The direction of a principal axis, in (-pi/2, pi/2] (the other is at
+        right angles)."""
+    @property
+    def asymptotes(self) -> Optional[Tuple[Point, Point, Point]]:
+        """For a hyperbola: ``(center, direction1, direction2)``."""
+    def evaluate(self, point: Point) -> float:
+        """The value at a point (zero on the curve)."""
+    def __call__(self, point: Point) -> float: ...
+    def evaluate_many(self, points: ArrayLike) -> FloatArray:
+        """The values at an array of points of shape ``(..., 2)``."""
+    def side(self, point: Point) -> int:
+        """The sign of the value: 1, -1 or 0."""
+    def distance(self, point: Point) -> float:
+        """First-order distance to the curve, ``|q| / |grad q|``."""
+    def polylines(
+        self, xmin: float, xmax: float, ymin: float, ymax: float, tolerance: Optional[float] = None
+    ) -> list[FloatArray]:
+        """The curve clipped to the viewport, as arrays of shape ``(n, 2)``:
+        each branch separately, never joined across infinity, the parts near
+        the asymptotes included. ``tolerance`` is the largest chord error
+        (default: a thousandth of the viewport's diagonal)."""
+
+class SynthesizedFourBar:
+    """A four-bar built from a driving dyad ``(A0, A1)`` and a driven dyad
+    ``(C0, C1)``; driving it to ``input_angles[k]`` in ``modes[k]`` places
+    the task's coupler point and angle at pose ``k + 1``."""
+
+    @property
+    def fourbar(self) -> FourBar:
+        """The linkage (input pivot ``A0``, output pivot ``C0``)."""
+    @property
+    def driving(self) -> Tuple[Point, Point]:
+        """``(A0, A1)``."""
+    @property
+    def driven(self) -> Tuple[Point, Point]:
+        """``(C0, C1)``."""
+    @property
+    def input_angles(self) -> Tuple[float, float, float]:
+        """The input angle at each pose."""
+    @property
+    def modes(self) -> Tuple[Optional[Mode], Optional[Mode], Optional[Mode]]:
+        """The assembly mode at each pose (None at a toggle)."""
+    @property
+    def coupler_point(self) -> Point:
+        """The task's coupler point in the linkage's coupler frame."""
+    @property
+    def coupler_angle_offset(self) -> float:
+        """Task coupler angle minus the linkage's theta3."""
+    def is_branch_free(self) -> bool:
+        """Whether the three poses are in one assembly mode."""
+    def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
+        """``(x, y, angle)`` of the task's coupler point when driven to ``theta2``."""

@@ -1,19 +1,15 @@
 //! `burmester.FourBar` and `burmester.Configuration`.
 
-use burmester::{AssemblyMode, Configuration, FourBar, InputRange, Point2, Vector2};
+use burmester::{AssemblyMode, Configuration, FourBar, InputRange, Point2};
 use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLikeDyn};
 use pyo3::prelude::*;
 
-use crate::conv::{flatten, to_numpy};
+use crate::conv::{PyPoint, flatten, pt, to_numpy};
 use crate::errors::IntoPy;
 
 /// Parses `"open"` / `"crossed"`.
 pub(crate) fn mode(s: &str) -> PyResult<AssemblyMode> {
     s.parse::<AssemblyMode>().py()
-}
-
-pub(crate) fn pt(p: Point2<f64>) -> (f64, f64) {
-    (p.x, p.y)
 }
 
 /// A planar four-bar linkage.
@@ -38,44 +34,31 @@ type Arrays<'py> = (
 #[pymethods]
 impl PyFourBar {
     #[new]
-    #[pyo3(signature = (ground, crank, coupler, rocker, *, origin = (0.0, 0.0), ground_angle = 0.0))]
+    #[pyo3(signature = (ground, crank, coupler, rocker, *, origin = PyPoint(Point2::origin()), ground_angle = 0.0))]
     fn new(
         ground: f64,
         crank: f64,
         coupler: f64,
         rocker: f64,
-        origin: (f64, f64),
+        origin: PyPoint,
         ground_angle: f64,
     ) -> PyResult<Self> {
-        FourBar::placed(
-            ground,
-            crank,
-            coupler,
-            rocker,
-            Point2::new(origin.0, origin.1),
-            ground_angle,
-        )
-        .map(Self::from)
-        .py()
+        FourBar::placed(ground, crank, coupler, rocker, origin.0, ground_angle)
+            .map(Self::from)
+            .py()
     }
 
     #[staticmethod]
     fn from_pivots(
-        input_pivot: (f64, f64),
-        output_pivot: (f64, f64),
+        input_pivot: PyPoint,
+        output_pivot: PyPoint,
         crank: f64,
         coupler: f64,
         rocker: f64,
     ) -> PyResult<Self> {
-        FourBar::from_pivots(
-            Point2::new(input_pivot.0, input_pivot.1),
-            Point2::new(output_pivot.0, output_pivot.1),
-            crank,
-            coupler,
-            rocker,
-        )
-        .map(Self::from)
-        .py()
+        FourBar::from_pivots(input_pivot.0, output_pivot.0, crank, coupler, rocker)
+            .map(Self::from)
+            .py()
     }
 
     #[getter]
@@ -201,9 +184,9 @@ impl PyFourBar {
     }
 
     #[pyo3(signature = (theta2, point, mode = "open"))]
-    fn coupler_point(&self, theta2: f64, point: (f64, f64), mode: &str) -> PyResult<(f64, f64)> {
+    fn coupler_point(&self, theta2: f64, point: PyPoint, mode: &str) -> PyResult<(f64, f64)> {
         let mode = self::mode(mode)?;
-        let local = Vector2::new(point.0, point.1);
+        let local = point.0.coords;
         let mut it = self.inner.coupler_path(local, [theta2], mode);
         it.next().expect("one angle in, one point out").map(pt).py()
     }
@@ -212,12 +195,12 @@ impl PyFourBar {
     fn coupler_path<'py>(
         &self,
         py: Python<'py>,
-        point: (f64, f64),
+        point: PyPoint,
         theta2s: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
         mode: &str,
     ) -> PyResult<Arrays<'py>> {
         let mode = self::mode(mode)?;
-        let local = Vector2::new(point.0, point.1);
+        let local = point.0.coords;
         if !(local.x.is_finite() && local.y.is_finite()) {
             // Report the bad point once, as an exception.
             self.inner

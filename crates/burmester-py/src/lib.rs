@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 mod conv;
 mod errors;
 mod fourbar;
+mod synthesis;
 
 /// The native core of the `burmester` package.
 #[pymodule]
@@ -16,6 +17,8 @@ mod _burmester {
     use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
     #[pymodule_export]
     use crate::fourbar::{PyConfiguration, PyFourBar};
+    #[pymodule_export]
+    use crate::synthesis::{PyConic, PyFilemon, PySynthesizedFourBar, PyTask};
 
     #[pymodule_init]
     fn init(m: &pyo3::Bound<'_, pyo3::types::PyModule>) -> pyo3::PyResult<()> {

@@ -160,6 +160,19 @@ pub enum DegenerateError {
         /// Second pose index (1-based).
         j: usize,
     },
+    /// The three poses are rotations about one point: all three poles
+    /// coincide, and every dyad has its center point there.
+    #[error(
+        "the three poses are rotations about one point ({x}, {y}): all poles coincide there, so \
+         the synthesis is degenerate (every dyad is centered there); move one pose off that \
+         rotation"
+    )]
+    CoincidentPoles {
+        /// x of the common pole.
+        x: f64,
+        /// y of the common pole.
+        y: f64,
+    },
     /// The answer of a map lies at infinity.
     #[error(
         "the {what} of ({x}, {y}) is at infinity (direction {dir_x}, {dir_y}): the point lies on \

@@ -31,15 +31,23 @@
 //! # Ok::<(), burmester::Error>(())
 //! ```
 
+pub mod conic;
+pub mod dyad;
 pub mod error;
+pub mod filemon;
 pub mod fourbar;
 mod geom;
+pub mod task;
 
+pub use conic::{Conic, ConicKind, Line, Viewport};
+pub use dyad::{Dyad, SynthesizedFourBar};
 pub use error::{AssemblyError, DegenerateError, Error, InvalidInput, Result};
+pub use filemon::{Branch, Filemon, Method};
 pub use fourbar::{
     AngleInterval, AssemblyMode, Configuration, FourBar, Grashof, InputRange, Joints,
 };
 pub use nalgebra::{Point2, Vector2};
+pub use task::{CircleOrLine, Pose, Similarity, Task};
 
 /// The README's Rust examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -1,0 +1,953 @@
+//! General plane conics `A x^2 + B x y + C y^2 + D x + E y + F = 0`: kind,
+//! center, axes, asymptotes, evaluation, and sampling into polylines clipped
+//! to a viewport.
+//!
+//! # Sampling
+//!
+//! A conic through a known point `Q` is parametrized exactly by the pencil
+//! of lines through `Q`: the line along `w = (cos s, sin s)` meets the conic
+//! again at
+//!
+//! ```text
+//! Y(s) = Q + t(s) w,    t(s) = -(grad q(Q) . w) / (w^T M w)
+//! ```
+//!
+//! where `M` is the matrix of the quadratic part. As `s` runs over half a
+//! turn this traces the whole conic once. The denominator vanishes exactly
+//! at the asymptote directions, so the parameter intervals between its roots
+//! are the branches: a hyperbola gives two, a parabola one, an ellipse one
+//! closed loop. Each branch is followed out to beyond the viewport (the
+//! parts near the asymptotes are included), sampled adaptively, and clipped
+//! to the viewport (parry's AABB line clipping); no segment ever joins two
+//! branches across infinity.
+
+use core::f64::consts::{FRAC_PI_2, PI};
+
+use nalgebra::{Matrix3, Point2, Vector2};
+use parry2d_f64::bounding_volume::Aabb;
+
+use crate::error::{InvalidInput, Result, finite};
+use crate::geom::cross;
+
+/// Relative tolerance of the kind tests (parabola, degenerate).
+const KIND_TOLERANCE: f64 = 1e-12;
+
+/// A line: a point and a direction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Line {
+    /// A point of the line.
+    pub point: Point2<f64>,
+    /// Its direction (not necessarily unit; see the producer's docs).
+    pub direction: Vector2<f64>,
+}
+
+impl Line {
+    /// `cross(direction, p - point)`: positive left of the line, negative right.
+    pub fn side(&self, p: Point2<f64>) -> f64 {
+        cross(self.direction, p - self.point)
+    }
+}
+
+/// The kind of a conic.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ConicKind {
+    /// `B^2 - 4AC < 0`, non-degenerate (possibly with no real points).
+    Ellipse,
+    /// `B^2 - 4AC > 0`, non-degenerate.
+    Hyperbola,
+    /// `B^2 - 4AC = 0`, non-degenerate.
+    Parabola,
+    /// The 3x3 determinant vanishes: a pair of lines, a double line, a
+    /// point, or nothing.
+    Degenerate,
+}
+
+impl ConicKind {
+    /// `"ellipse"`, `"hyperbola"`, `"parabola"` or `"degenerate"`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ConicKind::Ellipse => "ellipse",
+            ConicKind::Hyperbola => "hyperbola",
+            ConicKind::Parabola => "parabola",
+            ConicKind::Degenerate => "degenerate",
+        }
+    }
+}
+
+impl core::fmt::Display for ConicKind {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// A rectangle of the plane, `xmin <= x <= xmax`, `ymin <= y <= ymax`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Viewport {
+    /// Left edge.
+    pub xmin: f64,
+    /// Right edge.
+    pub xmax: f64,
+    /// Bottom edge.
+    pub ymin: f64,
+    /// Top edge.
+    pub ymax: f64,
+}
+
+impl Viewport {
+    /// A viewport, validated.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput`] when a bound is not finite or `xmin >= xmax` or
+    /// `ymin >= ymax`.
+    pub fn new(xmin: f64, xmax: f64, ymin: f64, ymax: f64) -> Result<Self> {
+        finite("xmin", xmin)?;
+        finite("xmax", xmax)?;
+        finite("ymin", ymin)?;
+        finite("ymax", ymax)?;
+        if xmin >= xmax || ymin >= ymax || !(xmax - xmin).is_finite() || !(ymax - ymin).is_finite()
+        {
+            return Err(InvalidInput::OutOfRange {
+                name: "viewport",
+                expected: "must have xmin < xmax and ymin < ymax (and a finite size)",
+                found: format!("x from {xmin} to {xmax}, y from {ymin} to {ymax}"),
+            }
+            .into());
+        }
+        Ok(Viewport {
+            xmin,
+            xmax,
+            ymin,
+            ymax,
+        })
+    }
+
+    /// Width and height.
+    pub fn size(&self) -> (f64, f64) {
+        (self.xmax - self.xmin, self.ymax - self.ymin)
+    }
+
+    /// The length of the diagonal.
+    pub fn diagonal(&self) -> f64 {
+        let (w, h) = self.size();
+        w.hypot(h)
+    }
+
+    /// The center.
+    pub fn center(&self) -> Point2<f64> {
+        Point2::new(0.5 * (self.xmin + self.xmax), 0.5 * (self.ymin + self.ymax))
+    }
+
+    /// Whether `p` lies inside (edges included).
+    pub fn contains(&self, p: Point2<f64>) -> bool {
+        p.x >= self.xmin && p.x <= self.xmax && p.y >= self.ymin && p.y <= self.ymax
+    }
+}
+
+/// A conic `A x^2 + B x y + C y^2 + D x + E y + F = 0`.
+///
+/// Stored in a local frame (an origin and a unit length) with its
+/// coefficients scaled so that the largest is 1 in magnitude: the value
+/// `q(p)` is defined up to a positive factor, which keeps every sign test
+/// meaningful while no evaluation overflows.
+///
+/// # Example
+///
+/// ```
+/// use burmester::{Conic, ConicKind, Point2};
+/// // x^2 - y^2 = 1
+/// let h = Conic::new(1.0, 0.0, -1.0, 0.0, 0.0, -1.0)?;
+/// assert_eq!(h.kind(), ConicKind::Hyperbola);
+/// assert!(h.evaluate(Point2::new(1.0, 0.0)).abs() < 1e-15);
+/// # Ok::<(), burmester::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Conic {
+    /// Local coefficients `[A, B, C, D, E, F]`, max magnitude 1.
+    q: [f64; 6],
+    origin: Point2<f64>,
+    scale: f64,
+    /// A point on the conic, local, if one is known exactly.
+    known: Option<Vector2<f64>>,
+}
+
+impl Conic {
+    /// A conic from its coefficients in the fixed frame.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput`] when a coefficient is not finite, or when `A, B, C,
+    /// D, E` are all zero (no curve).
+    pub fn new(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64) -> Result<Self> {
+        let names = ["A", "B", "C", "D", "E", "F"];
+        let q = [a, b, c, d, e, f];
+        for (n, v) in names.iter().zip(q) {
+            finite(n, v)?;
+        }
+        if q[..5].iter().all(|&v| v == 0.0) {
+            return Err(InvalidInput::OutOfRange {
+                name: "conic coefficients",
+                expected: "A, B, C, D and E must not all be zero",
+                found: format!("{q:?}"),
+            }
+            .into());
+        }
+        Ok(Self::local(q, Point2::origin(), 1.0, None))
+    }
+
+    /// A conic given in a local frame: `q((Y - origin) / scale)`, with an
+    /// optional local point known to lie on it.
+    pub(crate) fn local(
+        q: [f64; 6],
+        origin: Point2<f64>,
+        scale: f64,
+        known: Option<Vector2<f64>>,
+    ) -> Self {
+        let m = q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let q = if m > 0.0 && m.is_finite() {
+            q.map(|v| v / m)
+        } else {
+            q
+        };
+        Conic {
+            q,
+            origin,
+            scale,
+            known,
+        }
+    }
+
+    /// The coefficients `[A, B, C, D, E, F]` in the fixed frame (defined
+    /// up to a positive factor).
+    pub fn coefficients(&self) -> [f64; 6] {
+        let [a, b, c, d, e, f] = self.q;
+        let (ox, oy) = (self.origin.x, self.origin.y);
+        let s = self.scale;
+        let s2 = s * s;
+        [
+            a / s2,
+            b / s2,
+            c / s2,
+            (-2.0 * a * ox - b * oy) / s2 + d / s,
+            (-b * ox - 2.0 * c * oy) / s2 + e / s,
+            (a * ox * ox + b * ox * oy + c * oy * oy) / s2 - (d * ox + e * oy) / s + f,
+        ]
+    }
+
+    /// The local coefficients, origin and unit length.
+    pub fn local_coefficients(&self) -> ([f64; 6], Point2<f64>, f64) {
+        (self.q, self.origin, self.scale)
+    }
+
+    #[inline(always)]
+    fn eval_local(&self, x: f64, y: f64) -> f64 {
+        let [a, b, c, d, e, f] = self.q;
+        x * (a * x + b * y + d) + y * (c * y + e) + f
+    }
+
+    #[inline(always)]
+    fn grad_local(&self, p: Vector2<f64>) -> Vector2<f64> {
+        let [a, b, c, d, e, _] = self.q;
+        Vector2::new(2.0 * a * p.x + b * p.y + d, b * p.x + 2.0 * c * p.y + e)
+    }
+
+    #[inline(always)]
+    fn quad_local(&self, w: Vector2<f64>) -> f64 {
+        let [a, b, c, ..] = self.q;
+        a * w.x * w.x + b * w.x * w.y + c * w.y * w.y
+    }
+
+    #[inline]
+    fn local_of(&self, p: Point2<f64>) -> Vector2<f64> {
+        (p - self.origin) / self.scale
+    }
+
+    #[inline]
+    fn global_of(&self, v: Vector2<f64>) -> Point2<f64> {
+        self.origin + v * self.scale
+    }
+
+    /// The value `q(p)` (up to the conic's positive factor): zero on the
+    /// curve, and its sign tells the side.
+    #[inline]
+    pub fn evaluate(&self, p: Point2<f64>) -> f64 {
+        let v = self.local_of(p);
+        self.eval_local(v.x, v.y)
+    }
+
+    /// The sign of [`evaluate`](Self::evaluate): `1`, `-1`, or `0` on the curve.
+    pub fn side(&self, p: Point2<f64>) -> i8 {
+        let v = self.evaluate(p);
+        if v > 0.0 {
+            1
+        } else if v < 0.0 {
+            -1
+        } else {
+            0
+        }
+    }
+
+    /// The gradient of `q` at `p`, in the fixed frame.
+    pub fn gradient(&self, p: Point2<f64>) -> Vector2<f64> {
+        self.grad_local(self.local_of(p)) / self.scale
+    }
+
+    /// First-order distance from `p` to the curve, `|q| / |grad q|` (exact
+    /// for lines, accurate near the curve). Infinite where the gradient
+    /// vanishes off the curve.
+    pub fn distance_estimate(&self, p: Point2<f64>) -> f64 {
+        let v = self.local_of(p);
+        let g = self.grad_local(v).norm();
+        let val = self.eval_local(v.x, v.y).abs();
+        if val == 0.0 {
+            0.0
+        } else {
+            val / g * self.scale
+        }
+    }
+
+    /// `B^2 - 4AC` of the local coefficients (its sign is the kind's).
+    fn discriminant(&self) -> f64 {
+        let [a, b, c, ..] = self.q;
+        b * b - 4.0 * a * c
+    }
+
+    fn matrix3(&self) -> Matrix3<f64> {
+        let [a, b, c, d, e, f] = self.q;
+        Matrix3::new(
+            a,
+            0.5 * b,
+            0.5 * d,
+            0.5 * b,
+            c,
+            0.5 * e,
+            0.5 * d,
+            0.5 * e,
+            f,
+        )
+    }
+
+    /// Whether the conic is degenerate (its 3x3 matrix is singular within
+    /// a relative `1e-12`).
+    pub fn is_degenerate(&self) -> bool {
+        let [a, b, c, ..] = self.q;
+        if a == 0.0 && b == 0.0 && c == 0.0 {
+            return true;
+        }
+        let m = self.matrix3();
+        let n = m.norm();
+        m.determinant().abs() <= KIND_TOLERANCE * n * n * n
+    }
+
+    /// The kind: ellipse, hyperbola, parabola or degenerate. `B^2 - 4AC`
+    /// within a relative `1e-12` of zero counts as a parabola.
+    pub fn kind(&self) -> ConicKind {
+        if self.is_degenerate() {
+            return ConicKind::Degenerate;
+        }
+        let [a, b, c, ..] = self.q;
+        let disc = self.discriminant();
+        if disc.abs() <= KIND_TOLERANCE * (a * a + b * b + c * c) {
+            ConicKind::Parabola
+        } else if disc < 0.0 {
+            ConicKind::Ellipse
+        } else {
+            ConicKind::Hyperbola
+        }
+    }
+
+    /// The eigen-decomposition of the quadratic part: `(angle, l1, l2)`
+    /// with `l1 >= l2` the eigenvalues for the directions `angle` and
+    /// `angle + pi/2`; `angle = atan2(B, A - C) / 2` in `(-pi/2, pi/2]`.
+    fn eigen(&self) -> (f64, f64, f64) {
+        let [a, b, c, ..] = self.q;
+        let angle = 0.5 * b.atan2(a - c);
+        let mean = 0.5 * (a + c);
+        let r = (0.5 * (a - c)).hypot(0.5 * b);
+        (angle, mean + r, mean - r)
+    }
+
+    /// The direction of a principal axis, as an angle in `(-pi/2, pi/2]`;
+    /// the other axis is at right angles (the pair is defined modulo
+    /// `pi/2`). Zero for a circle.
+    pub fn axis_angle(&self) -> f64 {
+        self.eigen().0
+    }
+
+    /// The center (where the gradient vanishes), if unique: ellipses,
+    /// hyperbolas and crossing line pairs have one; parabolas do not.
+    pub fn center(&self) -> Option<Point2<f64>> {
+        let [a, b, c, d, e, _] = self.q;
+        let det = 4.0 * a * c - b * b;
+        if det.abs() <= KIND_TOLERANCE * (a * a + b * b + c * c) {
+            return None;
+        }
+        let x = (b * e - 2.0 * c * d) / det;
+        let y = (b * d - 2.0 * a * e) / det;
+        let p = self.global_of(Vector2::new(x, y));
+        (p.x.is_finite() && p.y.is_finite()).then_some(p)
+    }
+
+    /// The directions (unit, as angles in `[0, pi)`) along which the
+    /// quadratic part vanishes: two for a hyperbola or crossing lines, one
+    /// for a parabola, none for an ellipse.
+    fn null_directions(&self) -> Vec<f64> {
+        let [a, b, c, ..] = self.q;
+        let (angle, l1, l2) = self.eigen();
+        let scale = (a * a + b * b + c * c).sqrt();
+        if scale == 0.0 {
+            return Vec::new();
+        }
+        let tol = KIND_TOLERANCE * scale;
+        let norm = |t: f64| t.rem_euclid(PI);
+        if l1.abs() <= tol && l2.abs() <= tol {
+            Vec::new()
+        } else if l1.abs() <= tol {
+            vec![norm(angle)]
+        } else if l2.abs() <= tol {
+            vec![norm(angle + FRAC_PI_2)]
+        } else if l1 * l2 < 0.0 {
+            let alpha = (-l1 / l2).sqrt().atan();
+            let mut v = vec![norm(angle + alpha), norm(angle - alpha)];
+            v.sort_by(f64::total_cmp);
+            v
+        } else {
+            Vec::new()
+        }
+    }
+
+    /// The asymptotes of a hyperbola (through its center), else `None`.
+    /// Directions are unit vectors.
+    pub fn asymptotes(&self) -> Option<[Line; 2]> {
+        if self.kind() != ConicKind::Hyperbola {
+            return None;
+        }
+        let center = self.center()?;
+        let dirs = self.null_directions();
+        if dirs.len() != 2 {
+            return None;
+        }
+        Some([dirs[0], dirs[1]].map(|t| Line {
+            point: center,
+            direction: Vector2::new(t.cos(), t.sin()),
+        }))
+    }
+
+    /// Points where the line `point + r * direction` meets the conic (zero,
+    /// one or two, in order of `r`).
+    pub fn intersect_line(&self, line: &Line) -> Vec<Point2<f64>> {
+        let p = self.local_of(line.point);
+        let w = line.direction / self.scale;
+        roots_on_line(self, p, w)
+            .into_iter()
+            .map(|r| self.global_of(p + w * r))
+            .collect()
+    }
+
+    /// A point on the conic near the viewport, in local coordinates.
+    fn find_point(&self, near: Vector2<f64>) -> Option<Vector2<f64>> {
+        if let Some(k) = self.known {
+            return Some(k);
+        }
+        let center = self.center().map(|c| self.local_of(c));
+        let (angle, ..) = self.eigen();
+        let mut dirs = vec![
+            Vector2::new(1.0, 0.0),
+            Vector2::new(0.0, 1.0),
+            Vector2::new(angle.cos(), angle.sin()),
+            Vector2::new(-angle.sin(), angle.cos()),
+        ];
+        dirs.extend(
+            self.null_directions()
+                .iter()
+                .map(|t| Vector2::new(t.cos(), t.sin())),
+        );
+        for base in center.into_iter().chain([near, Vector2::zeros()]) {
+            for w in &dirs {
+                if let Some(r) = roots_on_line(self, base, *w).first() {
+                    return Some(base + w * *r);
+                }
+            }
+        }
+        None
+    }
+
+    /// The curve sampled into polylines clipped to `viewport`, each
+    /// branch separately and never joined across infinity.
+    ///
+    /// `tolerance` is the largest distance between the curve and a chord, in
+    /// the units of the plane; pass `None` for a thousandth of the
+    /// viewport's diagonal.
+    pub fn polylines(&self, viewport: &Viewport, tolerance: Option<f64>) -> Vec<Vec<Point2<f64>>> {
+        let tol = tolerance
+            .filter(|t| t.is_finite() && *t > 0.0)
+            .unwrap_or(viewport.diagonal() * 1e-3)
+            / self.scale;
+        let lo = self.local_of(Point2::new(viewport.xmin, viewport.ymin));
+        let hi = self.local_of(Point2::new(viewport.xmax, viewport.ymax));
+        let aabb = Aabb::new(
+            parry2d_f64::math::Vector::new(lo.x, lo.y),
+            parry2d_f64::math::Vector::new(hi.x, hi.y),
+        );
+        let mut sampler = Sampler {
+            conic: self,
+            lo,
+            hi,
+            aabb,
+            tol,
+            center: (lo + hi) * 0.5,
+            radius: 0.5 * (hi - lo).norm(),
+            out: Vec::new(),
+            current: Vec::new(),
+        };
+        if self.kind() == ConicKind::Degenerate {
+            for line in self.degenerate_lines(sampler.center) {
+                sampler.line(line.0, line.1);
+            }
+        } else if let Some(q) = self.find_point(sampler.center) {
+            self.sample_branches(q, &mut sampler);
+        }
+        sampler
+            .out
+            .into_iter()
+            .map(|pl| pl.into_iter().map(|v| self.global_of(v)).collect())
+            .collect()
+    }
+
+    /// The lines of a degenerate conic (local point and direction).
+    fn degenerate_lines(&self, near: Vector2<f64>) -> Vec<(Vector2<f64>, Vector2<f64>)> {
+        let [a, b, c, d, e, f] = self.q;
+        if a == 0.0 && b == 0.0 && c == 0.0 {
+            // A single line D x + E y + F = 0.
+            let n = Vector2::new(d, e);
+            let n2 = n.norm_squared();
+            if n2 == 0.0 {
+                return Vec::new();
+            }
+            return vec![(-n * (f / n2), Vector2::new(-e, d))];
+        }
+        let dirs = self.null_directions();
+        if let Some(center) = self.center() {
+            let c0 = self.local_of(center);
+            // Crossing lines through the center (none if it is an isolated point).
+            return dirs
+                .iter()
+                .map(|t| (c0, Vector2::new(t.cos(), t.sin())))
+                .collect();
+        }
+        // Parallel or double lines along the null direction.
+        let Some(&t) = dirs.first() else {
+            return Vec::new();
+        };
+        let w = Vector2::new(t.cos(), t.sin());
+        let n = Vector2::new(-w.y, w.x);
+        roots_on_line(self, near, n)
+            .into_iter()
+            .map(|r| (near + n * r, w))
+            .collect()
+    }
+
+    /// Samples every branch through the pencil of lines at `q`.
+    fn sample_branches(&self, q: Vector2<f64>, sampler: &mut Sampler) {
+        let g = self.grad_local(q);
+        let t_of = |s: f64| {
+            let w = Vector2::new(s.cos(), s.sin());
+            -g.dot(&w) / self.quad_local(w)
+        };
+        let point = |s: f64| {
+            let w = Vector2::new(s.cos(), s.sin());
+            q + w * t_of(s)
+        };
+        let breaks = self.null_directions();
+        // Far enough that the curve is off the viewport.
+        let far = 4.0 * ((q - sampler.center).norm() + sampler.radius);
+        if breaks.is_empty() {
+            // Ellipse: a closed loop starting and ending at q (tangent direction).
+            let s0 = g.y.atan2(g.x) + FRAC_PI_2;
+            sampler.sample(&point, s0, s0 + PI);
+            sampler.finish();
+            return;
+        }
+        let mut intervals = Vec::new();
+        for (k, &b) in breaks.iter().enumerate() {
+            let next = if k + 1 < breaks.len() {
+                breaks[k + 1]
+            } else {
+                breaks[0] + PI
+            };
+            intervals.push((b, next));
+        }
+        for (a, b) in intervals {
+            let Some(s_lo) = trim(&t_of, a, 0.5 * (a + b), far) else {
+                continue;
+            };
+            let Some(s_hi) = trim(&t_of, b, 0.5 * (a + b), far) else {
+                continue;
+            };
+            sampler.sample(&point, s_lo, s_hi);
+            sampler.finish();
+        }
+    }
+}
+
+/// The parameter nearest to the pole `at` (toward `mid`) where `|t|`
+/// exceeds `far`: steps geometrically toward the pole.
+fn trim(t_of: &impl Fn(f64) -> f64, at: f64, mid: f64, far: f64) -> Option<f64> {
+    let mut step = mid - at;
+    for _ in 0..1100 {
+        step *= 0.5;
+        let s = at + step;
+        if s == at {
+            return Some(at + step * 2.0);
+        }
+        let t = t_of(s);
+        if t.abs() > far && t_of(at + 0.5 * step).abs() > t.abs() {
+            return Some(s);
+        }
+    }
+    None
+}
+
+/// Distance from `c` to the segment `a b`.
+fn segment_distance(c: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    let ab = b - a;
+    let l2 = ab.norm_squared();
+    let t = if l2 > 0.0 {
+        ((c - a).dot(&ab) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (a + ab * t - c).norm()
+}
+
+/// Real roots `r` of `q(p + r w) = 0`, sorted.
+fn roots_on_line(c: &Conic, p: Vector2<f64>, w: Vector2<f64>) -> Vec<f64> {
+    let alpha = c.quad_local(w);
+    let beta = c.grad_local(p).dot(&w);
+    let gamma = c.eval_local(p.x, p.y);
+    let size = alpha.abs() + beta.abs() + gamma.abs();
+    if size == 0.0 || !size.is_finite() {
+        return Vec::new();
+    }
+    if alpha.abs() <= 1e-14 * size {
+        if beta == 0.0 {
+            return Vec::new();
+        }
+        return vec![-gamma / beta];
+    }
+    let disc = beta * beta - 4.0 * alpha * gamma;
+    if disc < 0.0 {
+        return Vec::new();
+    }
+    let sq = disc.sqrt();
+    let qq = -0.5 * (beta + beta.signum() * sq);
+    let mut r = if qq == 0.0 {
+        vec![0.0]
+    } else {
+        vec![qq / alpha, gamma / qq]
+    };
+    r.retain(|v| v.is_finite());
+    r.sort_by(f64::total_cmp);
+    r
+}
+
+/// Adaptive sampling and viewport clipping, in local coordinates.
+struct Sampler<'a> {
+    conic: &'a Conic,
+    /// The viewport's corners (local).
+    lo: Vector2<f64>,
+    hi: Vector2<f64>,
+    aabb: Aabb,
+    tol: f64,
+    center: Vector2<f64>,
+    radius: f64,
+    out: Vec<Vec<Vector2<f64>>>,
+    current: Vec<Vector2<f64>>,
+}
+
+impl Sampler<'_> {
+    const INITIAL: usize = 256;
+    const MAX_DEPTH: u32 = 24;
+
+    /// A whole line, clipped.
+    fn line(&mut self, p: Vector2<f64>, w: Vector2<f64>) {
+        let v = |v: Vector2<f64>| parry2d_f64::math::Vector::new(v.x, v.y);
+        if let Some((t0, t1)) = self.aabb.clip_line_parameters(v(p), v(w)) {
+            self.out.push(vec![p + w * t0, p + w * t1]);
+        }
+    }
+
+    fn sample(&mut self, point: &impl Fn(f64) -> Vector2<f64>, s0: f64, s1: f64) {
+        let n = Self::INITIAL;
+        let mut prev_s = s0;
+        let mut prev = point(s0);
+        for k in 1..=n {
+            let s = s0 + (s1 - s0) * (k as f64 / n as f64);
+            let p = point(s);
+            self.refine(point, prev_s, prev, s, p, 0);
+            prev_s = s;
+            prev = p;
+        }
+    }
+
+    fn refine(
+        &mut self,
+        point: &impl Fn(f64) -> Vector2<f64>,
+        s0: f64,
+        p0: Vector2<f64>,
+        s1: f64,
+        p1: Vector2<f64>,
+        depth: u32,
+    ) {
+        let sm = 0.5 * (s0 + s1);
+        let pm = point(sm);
+        // Refine where the chord or the midpoint passes near the viewport.
+        let reach = 2.0 * self.radius;
+        let relevant =
+            (pm - self.center).norm() <= reach || segment_distance(self.center, p0, p1) <= reach;
+        if depth < Self::MAX_DEPTH && relevant && pm.iter().all(|v| v.is_finite()) {
+            let chord = p1 - p0;
+            let len = chord.norm();
+            let dev = if len > 0.0 {
+                cross(chord, pm - p0).abs() / len
+            } else {
+                (pm - p0).norm()
+            };
+            if dev > self.tol || len > 0.05 * self.radius {
+                self.refine(point, s0, p0, sm, pm, depth + 1);
+                self.refine(point, sm, pm, s1, p1, depth + 1);
+                return;
+            }
+        }
+        self.segment(p0, p1);
+    }
+
+    /// Clips one segment and appends it to the current polyline.
+    fn segment(&mut self, a: Vector2<f64>, b: Vector2<f64>) {
+        if !(a.iter().all(|v| v.is_finite()) && b.iter().all(|v| v.is_finite())) {
+            self.finish();
+            return;
+        }
+        let v = |v: Vector2<f64>| parry2d_f64::math::Vector::new(v.x, v.y);
+        let ab = b - a;
+        let clip = if ab == Vector2::zeros() {
+            None
+        } else {
+            self.aabb.clip_line_parameters(v(a), v(ab))
+        };
+        let Some((t0, t1)) = clip else {
+            self.finish();
+            return;
+        };
+        let (t0, t1) = (t0.max(0.0), t1.min(1.0));
+        if t0 > t1 {
+            self.finish();
+            return;
+        }
+        // Unclipped ends stay exactly the samples, so consecutive segments
+        // join; clipped ends move onto the curve where it crosses the edge.
+        let ca = if t0 == 0.0 {
+            a
+        } else {
+            self.on_edge(a + ab * t0)
+        };
+        let cb = if t1 == 1.0 {
+            b
+        } else {
+            self.on_edge(a + ab * t1)
+        };
+        match self.current.last() {
+            Some(last) if t0 == 0.0 && *last == ca => self.current.push(cb),
+            _ => {
+                self.finish();
+                self.current.push(ca);
+                self.current.push(cb);
+            }
+        }
+        if t1 < 1.0 {
+            self.finish();
+        }
+    }
+
+    /// The point where the curve crosses the viewport edge nearest to `p`
+    /// (a point of a chord on that edge), or `p` if none is within the
+    /// sampling tolerance.
+    fn on_edge(&self, p: Vector2<f64>) -> Vector2<f64> {
+        let edges = [
+            (
+                (p.x - self.lo.x).abs(),
+                Vector2::new(self.lo.x, p.y),
+                Vector2::y(),
+            ),
+            (
+                (p.x - self.hi.x).abs(),
+                Vector2::new(self.hi.x, p.y),
+                Vector2::y(),
+            ),
+            (
+                (p.y - self.lo.y).abs(),
+                Vector2::new(p.x, self.lo.y),
+                Vector2::x(),
+            ),
+            (
+                (p.y - self.hi.y).abs(),
+                Vector2::new(p.x, self.hi.y),
+                Vector2::x(),
+            ),
+        ];
+        let (_, base, w) = edges
+            .into_iter()
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .expect("four edges");
+        roots_on_line(self.conic, base, w)
+            .into_iter()
+            .filter(|r| r.abs() <= 2.0 * self.tol)
+            .min_by(|a, b| a.abs().total_cmp(&b.abs()))
+            .map(|r| {
+                let q = base + w * r;
+                Vector2::new(
+                    q.x.clamp(self.lo.x, self.hi.x),
+                    q.y.clamp(self.lo.y, self.hi.y),
+                )
+            })
+            .unwrap_or(p)
+    }
+
+    fn finish(&mut self) {
+        if self.current.len() >= 2 {
+            self.out.push(core::mem::take(&mut self.current));
+        } else {
+            self.current.clear();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn vp() -> Viewport {
+        Viewport::new(-5.0, 5.0, -5.0, 5.0).unwrap()
+    }
+
+    #[test]
+    fn kinds() {
+        let c = |q: [f64; 6]| Conic::new(q[0], q[1], q[2], q[3], q[4], q[5]).unwrap();
+        assert_eq!(
+            c([1.0, 0.0, 1.0, 0.0, 0.0, -1.0]).kind(),
+            ConicKind::Ellipse
+        );
+        assert_eq!(
+            c([1.0, 0.0, -1.0, 0.0, 0.0, -1.0]).kind(),
+            ConicKind::Hyperbola
+        );
+        assert_eq!(
+            c([1.0, 0.0, 0.0, 0.0, -1.0, 0.0]).kind(),
+            ConicKind::Parabola
+        );
+        assert_eq!(
+            c([1.0, 0.0, -1.0, 0.0, 0.0, 0.0]).kind(),
+            ConicKind::Degenerate
+        );
+        assert_eq!(
+            c([0.0, 0.0, 0.0, 1.0, 1.0, 0.0]).kind(),
+            ConicKind::Degenerate
+        );
+        assert!(Conic::new(0.0, 0.0, 0.0, 0.0, 0.0, 1.0).is_err());
+        assert!(Conic::new(f64::NAN, 0.0, 0.0, 0.0, 0.0, 1.0).is_err());
+    }
+
+    #[test]
+    fn circle_samples_close_within_tolerance() {
+        let circle = Conic::new(1.0, 0.0, 1.0, -2.0, 0.0, -3.0).unwrap(); // (x-1)^2 + y^2 = 4
+        let pl = circle.polylines(&vp(), Some(1e-4));
+        assert_eq!(pl.len(), 1);
+        let l = &pl[0];
+        assert!((l[0] - l[l.len() - 1]).norm() < 1e-12, "closed loop");
+        for p in l {
+            assert!(((p - Point2::new(1.0, 0.0)).norm() - 2.0).abs() < 1e-12);
+        }
+        assert_eq!(circle.center(), Some(Point2::new(1.0, 0.0)));
+    }
+
+    #[test]
+    fn hyperbola_gives_two_branches_reaching_the_edges() {
+        let h = Conic::new(1.0, 0.0, -1.0, 0.0, 0.0, -1.0).unwrap();
+        let pl = h.polylines(&vp(), None);
+        assert_eq!(pl.len(), 2, "{pl:?}");
+        for l in &pl {
+            // Every branch leaves through the edges at both ends.
+            for p in [l[0], l[l.len() - 1]] {
+                assert!(
+                    (p.x.abs() - 5.0).abs() < 1e-9 || (p.y.abs() - 5.0).abs() < 1e-9,
+                    "{p}"
+                );
+            }
+            // Never crosses x = 0 (no segment across infinity).
+            let sign = l[0].x.signum();
+            assert!(l.iter().all(|p| p.x.signum() == sign));
+            for p in l {
+                assert!((p.x * p.x - p.y * p.y - 1.0).abs() < 1e-9);
+            }
+        }
+        let [a1, a2] = h.asymptotes().unwrap();
+        let slopes = [
+            a1.direction.y / a1.direction.x,
+            a2.direction.y / a2.direction.x,
+        ];
+        assert!(slopes.iter().any(|s| (s - 1.0).abs() < 1e-12));
+        assert!(slopes.iter().any(|s| (s + 1.0).abs() < 1e-12));
+    }
+
+    #[test]
+    fn parabola_and_line_pairs() {
+        let p = Conic::new(1.0, 0.0, 0.0, 0.0, -1.0, 0.0).unwrap(); // y = x^2
+        let pl = p.polylines(&vp(), None);
+        assert_eq!(pl.len(), 1);
+        assert!(pl[0].iter().all(|q| (q.y - q.x * q.x).abs() < 1e-9));
+        let pair = Conic::new(1.0, 0.0, -1.0, 0.0, 0.0, 0.0).unwrap(); // y = +-x
+        let pl = pair.polylines(&vp(), None);
+        assert_eq!(pl.len(), 2);
+        let parallel = Conic::new(0.0, 0.0, 1.0, 0.0, 0.0, -1.0).unwrap(); // y = +-1
+        let pl = parallel.polylines(&vp(), None);
+        assert_eq!(pl.len(), 2);
+        for l in &pl {
+            assert!(l.iter().all(|q| (q.y.abs() - 1.0).abs() < 1e-12));
+        }
+        let empty = Conic::new(1.0, 0.0, 1.0, 0.0, 0.0, 1.0).unwrap();
+        assert!(empty.polylines(&vp(), None).is_empty());
+    }
+
+    #[test]
+    fn global_coefficients_round_trip_through_a_local_frame() {
+        let g = Conic::new(0.3, -1.2, 0.7, 2.0, -0.5, -4.0).unwrap();
+        let (q, ..) = g.local_coefficients();
+        let local = Conic::local(
+            {
+                // Re-express in a frame at (10, -3), unit 7.
+                let (ox, oy, s) = (10.0, -3.0, 7.0);
+                let [a, b, c, d, e, f] = q;
+                let ev = |x: f64, y: f64| a * x * x + b * x * y + c * y * y + d * x + e * y + f;
+                [
+                    a * s * s,
+                    b * s * s,
+                    c * s * s,
+                    (2.0 * a * ox + b * oy + d) * s,
+                    (b * ox + 2.0 * c * oy + e) * s,
+                    ev(ox, oy),
+                ]
+            },
+            Point2::new(10.0, -3.0),
+            7.0,
+            None,
+        );
+        let (a, b) = (g.coefficients(), local.coefficients());
+        let k = a[0] / b[0];
+        for i in 0..6 {
+            assert!((a[i] - k * b[i]).abs() < 1e-12, "{a:?} {b:?}");
+        }
+        for p in [Point2::new(1.0, 2.0), Point2::new(-3.0, 0.5)] {
+            assert!((g.evaluate(p) - k * local.evaluate(p)).abs() < 1e-12);
+        }
+    }
+}
