@@ -96,6 +96,88 @@ SECTIONS: list[Section] = [
 ]
 
 
+SWEEP_SETUP = """
+import numpy as np, burmester
+from burmester._burmester import Task
+t = Task([(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)])
+f = t.filemon((4.0, -1.0))
+vp = (-8.0, 8.0, -8.0, 8.0)
+out = np.empty((4096, 4096), dtype=bool)
+"""
+
+SECTIONS.append(
+    Section(
+        title="Dense grid branch sweep (`branch_sweep`)",
+        benches=["branch_sweep"],
+        prefixes=["branch_sweep/", "python/branch_map"],
+        ratios=[
+            Ratio(
+                "`conic` / `memset` at 4096^2",
+                "branch_sweep/conic/4096",
+                "branch_sweep/memset/4096",
+                "<= 2",
+                lambda r: r <= 2.0,
+            ),
+            Ratio(
+                "`direct` / `conic` at 4096^2",
+                "branch_sweep/direct/4096",
+                "branch_sweep/conic/4096",
+                ">= 10",
+                lambda r: r >= 10.0,
+            ),
+            Ratio(
+                "`simulate` / `conic` at 1024^2",
+                "branch_sweep/simulate/1024",
+                "branch_sweep/conic/1024",
+                ">= 100",
+                lambda r: r >= 100.0,
+            ),
+            Ratio(
+                "`conic_pointwise` / `conic` at 4096^2 (runs against point by point)",
+                "branch_sweep/conic_pointwise/4096",
+                "branch_sweep/conic/4096",
+                "(no goal)",
+                lambda r: True,
+            ),
+            Ratio(
+                "Python `branch_map(...)` / Rust `branch_map` (both allocate), 4096^2",
+                "python/branch_map/fresh/4096",
+                "branch_sweep/conic_alloc/4096",
+                "<= 1.2",
+                lambda r: r <= 1.2,
+            ),
+            Ratio(
+                "Python `branch_map(..., out=)` / Rust `branch_map_into`, 4096^2",
+                "python/branch_map/out/4096",
+                "branch_sweep/conic/4096",
+                "<= 1.2",
+                lambda r: r <= 1.2,
+            ),
+        ],
+        python={
+            "python/branch_map/fresh/4096": (
+                SWEEP_SETUP,
+                "f.branch_map(*vp, 4096, 4096)",
+                4096 * 4096,
+            ),
+            "python/branch_map/out/4096": (
+                SWEEP_SETUP,
+                "f.branch_map(*vp, 4096, 4096, out=out)",
+                4096 * 4096,
+            ),
+        },
+        note=(
+            "The built-in example task over (-8, 8)^2, throughput in grid points, rayon on "
+            "all cores. `memset` fills a byte buffer of the same size (one thread): the "
+            "floor for writing the map. `conic` writes into an existing buffer; "
+            "`conic_alloc` allocates the map as `branch_map` does (fresh pages from the "
+            "kernel). The Python figures are the mean over batches of back-to-back calls "
+            "of the installed wheel (`pip install .`, release profile)."
+        ),
+    )
+)
+
+
 @dataclass
 class Figure:
     id: str
@@ -153,12 +235,18 @@ def run_python(sections: list[Section], repeat: int) -> None:
         for pid, (setup, stmt, elements) in s.python.items():
             env: dict = {}
             exec(setup, env)
-            exec(stmt, env)  # warm up
+            code = compile(stmt, pid, "exec")
+            for _ in range(5):
+                exec(code, env)  # warm up
+            # Like criterion: batches of back-to-back calls, per-call time
+            # of each batch.
+            batch = 10
             times = []
             for _ in range(repeat):
                 t0 = time.perf_counter_ns()
-                exec(stmt, env)
-                times.append(time.perf_counter_ns() - t0)
+                for _ in range(batch):
+                    exec(code, env)
+                times.append((time.perf_counter_ns() - t0) / batch)
             times.sort()
             mean = statistics.fmean(times)
             rec = {

@@ -312,6 +312,50 @@ class Filemon:
     def four_bar(self, driving_center: Point) -> SynthesizedFourBar:
         """The four-bar with this driven dyad and the driving dyad whose center
         point is given."""
+    def branch_map(
+        self,
+        xmin: float,
+        xmax: float,
+        ymin: float,
+        ymax: float,
+        nx: int,
+        ny: int,
+        method: Method = "conic",
+        *,
+        out: Optional[BoolArray] = None,
+    ) -> BoolArray:
+        """Classify every candidate driving center point on a grid.
+
+        Samples sit at cell centers, ``x_i = xmin + (i + 0.5) (xmax - xmin) / nx``
+        and likewise ``y_j``; the result has shape ``(ny, nx)``, row ``j`` for
+        ``y_j``, True where strictly branch-free, so that
+        ``plt.imshow(m, origin="lower", extent=(xmin, xmax, ymin, ymax))``
+        shows it the right way up. Points on a curve, at a pole or at ``C0``
+        are False; ``"direct"`` and ``"simulate"`` are also False where the
+        circle point does not exist (on the pole circle). The GIL is released
+        during the computation; the result is handed to NumPy without a copy,
+        or written into ``out`` (a C-contiguous bool array of shape
+        ``(ny, nx)``), which is returned.
+
+        ``"conic"`` at 4096 x 4096 takes about as long as filling the array
+        with a constant (see BENCHMARKS.md)."""
+    def margin_map(
+        self,
+        xmin: float,
+        xmax: float,
+        ymin: float,
+        ymax: float,
+        nx: int,
+        ny: int,
+        *,
+        out: Optional[npt.NDArray[np.float32]] = None,
+    ) -> npt.NDArray[np.float32]:
+        """The signed margin on the same grid (float32): the first-order
+        distance to the nearer transformed Filemon curve, positive where
+        branch-free and negative elsewhere; ``-inf`` everywhere when all
+        circle points are defective. For contour plots and ranking pivots."""
+    def margin(self, center: Point) -> float:
+        """The signed margin at one point (float64)."""
 
 class Conic:
     """A conic ``A x^2 + B x y + C y^2 + D x + E y + F = 0``; its value is

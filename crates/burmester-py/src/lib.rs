@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 mod conv;
 mod errors;
 mod fourbar;
+mod sweep;
 mod synthesis;
 
 /// The native core of the `burmester` package.

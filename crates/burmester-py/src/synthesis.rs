@@ -341,6 +341,43 @@ impl PyFilemon {
         self.inner.conic_values(center.0).map(|[a, b]| (a, b))
     }
 
+    #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, method = "conic", *, out = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn branch_map<'py>(
+        &self,
+        py: Python<'py>,
+        xmin: f64,
+        xmax: f64,
+        ymin: f64,
+        ymax: f64,
+        nx: usize,
+        ny: usize,
+        method: &str,
+        out: Option<Bound<'py, PyArray2<bool>>>,
+    ) -> PyResult<Bound<'py, PyArray2<bool>>> {
+        crate::sweep::branch_map(self.inner, py, xmin, xmax, ymin, ymax, nx, ny, method, out)
+    }
+
+    #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, *, out = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn margin_map<'py>(
+        &self,
+        py: Python<'py>,
+        xmin: f64,
+        xmax: f64,
+        ymin: f64,
+        ymax: f64,
+        nx: usize,
+        ny: usize,
+        out: Option<Bound<'py, PyArray2<f32>>>,
+    ) -> PyResult<Bound<'py, PyArray2<f32>>> {
+        crate::sweep::margin_map(self.inner, py, xmin, xmax, ymin, ymax, nx, ny, out)
+    }
+
+    fn margin(&self, center: PyPoint) -> f64 {
+        self.inner.margin(center.0)
+    }
+
     fn four_bar(&self, driving_center: PyPoint) -> PyResult<PySynthesizedFourBar> {
         self.inner
             .four_bar(driving_center.0)

@@ -239,10 +239,38 @@ impl Conic {
         (self.q, self.origin, self.scale)
     }
 
+    /// `q` in local coordinates, associated as `x (A x + l) + k` with the
+    /// row terms `l = B y + D`, `k = y (C y + E) + F` (see [`Conic::row`]),
+    /// so that a grid sweep that precomputes the row terms gets the same
+    /// bits as a point evaluation.
     #[inline(always)]
     fn eval_local(&self, x: f64, y: f64) -> f64 {
+        let (a, l, k) = self.row(y);
+        x * (a * x + l) + k
+    }
+
+    /// The quadratic along the local row `y`: `(A, l, k)` with
+    /// `q(x, y) = x (A x + l) + k`.
+    #[inline(always)]
+    pub(crate) fn row(&self, y: f64) -> (f64, f64, f64) {
         let [a, b, c, d, e, f] = self.q;
-        x * (a * x + b * y + d) + y * (c * y + e) + f
+        (a, b * y + d, y * (c * y + e) + f)
+    }
+
+    /// A bound on the rounding error of [`Conic::row`] and the evaluation
+    /// along the row at local `x`: the sum of the magnitudes of the terms.
+    #[inline]
+    pub(crate) fn row_magnitude(&self, x: f64, y: f64) -> f64 {
+        let [a, b, c, d, e, f] = self.q;
+        a.abs() * x * x
+            + (b.abs() * y.abs() + d.abs()) * x.abs()
+            + y.abs() * (c.abs() * y.abs() + e.abs())
+            + f.abs()
+    }
+
+    /// The local frame: `(origin, scale)`.
+    pub(crate) fn frame(&self) -> (Point2<f64>, f64) {
+        (self.origin, self.scale)
     }
 
     #[inline(always)]

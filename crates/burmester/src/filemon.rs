@@ -330,9 +330,10 @@ impl Filemon {
 
     /// The branch class of a driving center point `A0`, by `method`.
     ///
-    /// With [`Method::Conic`], a point on either conic (a pole, `C0`, any
-    /// point of the curves) is [`Branch::Boundary`]; the pole circle needs
-    /// no special case.
+    /// With [`Method::Conic`], a point where a conic value is zero, or
+    /// within [`Task::POINT_TOLERANCE`] of a pole or of `C0` (where all the
+    /// curves meet), is [`Branch::Boundary`]; the pole circle needs no
+    /// special case.
     ///
     /// # Errors
     ///
@@ -363,7 +364,26 @@ impl Filemon {
         Ok(self.classify(a0, method)?.is_free())
     }
 
+    /// The points every transformed curve passes through: `P12, P13, P23`
+    /// and `C0`.
+    pub fn special_points(&self) -> [Point2<f64>; 4] {
+        let [a, b, c] = self.task.poles();
+        [a, b, c, self.driven.center]
+    }
+
+    /// Whether `p` is within [`Task::POINT_TOLERANCE`] (relative to the
+    /// task's size) of a pole or of `C0`, where all the conics meet.
+    pub(crate) fn at_special_point(&self, p: Point2<f64>) -> bool {
+        let tol = Task::POINT_TOLERANCE * self.task.scale();
+        self.special_points()
+            .iter()
+            .any(|q| (q.x - p.x).abs() <= tol && (q.y - p.y).abs() <= tol)
+    }
+
     fn classify_conic(&self, a0: Point2<f64>) -> Branch {
+        if self.at_special_point(a0) {
+            return Branch::Boundary;
+        }
         match self.conic_values(a0) {
             None => Branch::Defective,
             Some([a, b]) => {

@@ -34,9 +34,11 @@
 pub mod conic;
 pub mod dyad;
 pub mod error;
+pub mod example;
 pub mod filemon;
 pub mod fourbar;
 mod geom;
+pub mod sweep;
 pub mod task;
 
 pub use conic::{Conic, ConicKind, Line, Viewport};
@@ -47,6 +49,7 @@ pub use fourbar::{
     AngleInterval, AssemblyMode, Configuration, FourBar, Grashof, InputRange, Joints,
 };
 pub use nalgebra::{Point2, Vector2};
+pub use sweep::Grid;
 pub use task::{CircleOrLine, Pose, Similarity, Task};
 
 /// The README's Rust examples, compiled and run as doctests.

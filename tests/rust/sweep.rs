@@ -1,0 +1,222 @@
+//! The dense grid branch sweep: the fast run-based `conic` kernel against
+//! the point-by-point kernel and `Filemon::classify` (bit for bit), and the
+//! three methods against each other away from the curves.
+
+use std::f64::consts::PI;
+
+use burmester::{Filemon, Grid, Method, Point2, Task};
+use proptest::prelude::*;
+use proptest::strategy::ValueTree;
+use proptest::test_runner::TestRunner;
+
+fn task() -> impl Strategy<Value = Task> {
+    prop::array::uniform3((-5.0f64..5.0, -5.0f64..5.0, -PI..PI)).prop_filter_map(
+        "ill-conditioned task",
+        |p| {
+            let t = Task::from_xya(p.map(|(x, y, a)| [x, y, a])).ok()?;
+            if t.rotations().iter().any(|r| r.abs() < 0.1) {
+                return None;
+            }
+            let far = t
+                .poles()
+                .iter()
+                .map(|p| p.coords.norm())
+                .fold(0.0, f64::max);
+            (far < 300.0 && t.scale() > 0.05).then_some(t)
+        },
+    )
+}
+
+fn filemon(runner: &mut TestRunner) -> Filemon {
+    loop {
+        let t = task().new_tree(runner).unwrap().current();
+        let c = (-8.0f64..8.0, -8.0f64..8.0)
+            .new_tree(runner)
+            .unwrap()
+            .current();
+        if let Ok(f) = t.filemon(Point2::new(c.0, c.1)) {
+            if !f.all_defective() {
+                return f;
+            }
+        }
+    }
+}
+
+#[test]
+fn grid_convention_and_errors() {
+    let g = Grid::from_bounds(-1.0, 3.0, 10.0, 12.0, 4, 2).unwrap();
+    assert_eq!(g.len(), 8);
+    assert_eq!(g.x(0), -0.5);
+    assert_eq!(g.x(3), 2.5);
+    assert_eq!(g.y(0), 10.5);
+    assert_eq!(g.y(1), 11.5);
+    assert!(Grid::from_bounds(0.0, 1.0, 0.0, 1.0, 0, 4).is_err());
+    assert!(Grid::from_bounds(1.0, 0.0, 0.0, 1.0, 4, 4).is_err());
+    assert!(Grid::from_bounds(0.0, f64::NAN, 0.0, 1.0, 4, 4).is_err());
+    assert!(Grid::from_bounds(0.0, 1.0, 0.0, 1.0, 1 << 20, 1 << 20).is_err());
+    let t = Task::from_xya([[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap();
+    let f = t.filemon(Point2::new(4.0, -1.0)).unwrap();
+    let mut short = vec![false; 7];
+    assert!(f.branch_map_into(&g, Method::Conic, &mut short).is_err());
+    let mut shortf = vec![0.0f32; 9];
+    assert!(f.margin_map_into(&g, &mut shortf).is_err());
+    // Row-major, row j for y_j.
+    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 37, 23).unwrap();
+    let m = f.branch_map(&g, Method::Conic);
+    for j in 0..23 {
+        for i in 0..37 {
+            let want = f.is_branch_free(g.point(i, j), Method::Conic).unwrap();
+            assert_eq!(m[j * 37 + i], want, "({i}, {j})");
+        }
+    }
+}
+
+/// The run-based kernel gives exactly the point-by-point answers, and
+/// exactly `classify` at the grid points, on rows of 4096 samples: nothing
+/// drifts along a row.
+#[test]
+fn runs_match_pointwise_bit_for_bit_over_4096_wide_rows() {
+    let mut runner = TestRunner::deterministic();
+    for case in 0..40 {
+        let f = filemon(&mut runner);
+        let half = [2.0, 10.0, 40.0][case % 3];
+        let g = Grid::from_bounds(-half, half, -half, half, 4096, 24).unwrap();
+        let runs = f.branch_map(&g, Method::Conic);
+        let mut pw = vec![false; g.len()];
+        f.branch_map_pointwise_into(&g, &mut pw).unwrap();
+        let diff = runs.iter().zip(&pw).filter(|(a, b)| a != b).count();
+        assert_eq!(diff, 0, "case {case}: {diff} samples differ");
+        for j in (0..24).step_by(5) {
+            for i in (0..4096).step_by(97) {
+                let c = f.is_branch_free(g.point(i, j), Method::Conic).unwrap();
+                assert_eq!(runs[j * 4096 + i], c);
+            }
+        }
+        assert!(runs.iter().any(|&b| b) || runs.iter().all(|&b| !b));
+    }
+}
+
+/// Near-double roots and points right on the curves: a fine grid around a
+/// pole, where both conics pass, still matches point by point.
+#[test]
+fn runs_match_pointwise_at_the_poles_and_c0() {
+    let mut runner = TestRunner::deterministic();
+    for _ in 0..20 {
+        let f = filemon(&mut runner);
+        let t = f.task();
+        for p in t.poles().iter().chain([&f.driven().center]) {
+            let r = 1e-6 * t.scale();
+            let g = Grid::from_bounds(p.x - r, p.x + r, p.y - r, p.y + r, 257, 257).unwrap();
+            let runs = f.branch_map(&g, Method::Conic);
+            let mut pw = vec![false; g.len()];
+            f.branch_map_pointwise_into(&g, &mut pw).unwrap();
+            assert_eq!(runs, pw);
+            assert_eq!(
+                runs[128 * 257 + 128],
+                f.is_branch_free(g.point(128, 128), Method::Conic).unwrap()
+            );
+            // The pole itself lies on both curves: never free, in the map too.
+            assert!(!f.is_branch_free(*p, Method::Conic).unwrap());
+            let one = Grid::from_bounds(p.x - 1.0, p.x + 1.0, p.y - 1.0, p.y + 1.0, 1, 1).unwrap();
+            assert_eq!(f.branch_map(&one, Method::Conic), vec![false]);
+            let mut pw = vec![true];
+            f.branch_map_pointwise_into(&one, &mut pw).unwrap();
+            assert_eq!(pw, vec![false]);
+            assert!(f.margin_map(&one)[0] <= 0.0);
+        }
+    }
+}
+
+/// The three methods agree at 512 x 512 on every point farther than 1e-9
+/// of the viewport's size from a curve (and, for the methods that need a
+/// circle point, off the pole circle and the poles).
+#[test]
+fn the_three_methods_agree_at_512_squared() {
+    let mut runner = TestRunner::deterministic();
+    let n = 512;
+    let mut checked = 0usize;
+    for case in 0..12 {
+        let f = filemon(&mut runner);
+        let half = [6.0, 12.0, 25.0][case % 3];
+        let g = Grid::from_bounds(-half, half, -half, half, n, n).unwrap();
+        let size = 2.0 * half;
+        let conic = f.branch_map(&g, Method::Conic);
+        let direct = f.branch_map(&g, Method::Direct);
+        let sim = if case % 4 == 0 {
+            Some(f.branch_map(&g, Method::Simulate))
+        } else {
+            None
+        };
+        let [ga, gb] = f.conics().unwrap();
+        let t = f.task();
+        let pc = t.pole_circle();
+        for j in 0..n {
+            for i in 0..n {
+                let k = j * n + i;
+                if conic[k] == direct[k] && sim.as_ref().is_none_or(|s| s[k] == conic[k]) {
+                    continue;
+                }
+                let p = g.point(i, j);
+                let near_curve = ga.distance_estimate(p).min(gb.distance_estimate(p)) < 1e-9 * size;
+                let near_pc = pc.side(p).abs() < 1e-9 * size;
+                assert!(
+                    near_curve || near_pc,
+                    "case {case}: methods disagree at {p} (conic {}, direct {}, simulate {:?})",
+                    conic[k],
+                    direct[k],
+                    sim.as_ref().map(|s| s[k])
+                );
+            }
+        }
+        checked += n * n;
+        assert!(
+            conic.iter().any(|&b| b),
+            "case {case}: some point should be free"
+        );
+    }
+    assert!(checked >= 12 * 512 * 512);
+}
+
+#[test]
+fn margin_map_signs_and_distances() {
+    let mut runner = TestRunner::deterministic();
+    for _ in 0..10 {
+        let f = filemon(&mut runner);
+        let g = Grid::from_bounds(-9.0, 9.0, -7.0, 7.0, 180, 140).unwrap();
+        let m = f.margin_map(&g);
+        let b = f.branch_map(&g, Method::Conic);
+        for (k, (&mk, &bk)) in m.iter().zip(&b).enumerate() {
+            assert!(!mk.is_nan(), "NaN at {k}");
+            assert_eq!(mk > 0.0, bk, "sign at {k}: {mk} vs {bk}");
+        }
+        // The margin is the first-order distance to the nearer curve.
+        let [ga, gb] = f.conics().unwrap();
+        for k in (0..g.len()).step_by(131) {
+            let p = g.point(k % 180, k / 180);
+            let want = ga.distance_estimate(p).min(gb.distance_estimate(p));
+            let got = f.margin(p).abs();
+            assert!((got - want).abs() <= 1e-9 * (1.0 + want), "{got} vs {want}");
+            assert!(((m[k] as f64).abs() - got).abs() <= 1e-6 * (1.0 + got));
+        }
+    }
+}
+
+#[test]
+fn all_defective_maps_are_false_and_minus_infinity() {
+    let mut runner = TestRunner::deterministic();
+    loop {
+        let t = task().new_tree(&mut runner).unwrap().current();
+        let Ok(f) = t.filemon(Point2::new(1.0, -3.0)) else {
+            continue;
+        };
+        if !f.all_defective() {
+            continue;
+        }
+        let g = Grid::from_bounds(-5.0, 5.0, -5.0, 5.0, 33, 17).unwrap();
+        for m in [Method::Conic, Method::Direct, Method::Simulate] {
+            assert!(f.branch_map(&g, m).iter().all(|&b| !b));
+        }
+        assert!(f.margin_map(&g).iter().all(|&v| v == f32::NEG_INFINITY));
+        break;
+    }
+}
