@@ -6,6 +6,9 @@
 //! * `direct`: the circle point, then the sign test at the three poses;
 //! * `simulate`: build the four-bar and drive it (up to 1024^2);
 //! * `margin`: the signed margin map (f32);
+//! * `solution_map`: the designer's full map (branch, Grashof, order and
+//!   circuit, minimum transmission angle over the travel, link ratio,
+//!   acceptable mask), up to 1024^2;
 //! * `memset`: filling a byte buffer of the same size, the physical floor
 //!   for writing the map.
 //!
@@ -13,7 +16,7 @@
 
 use std::hint::black_box;
 
-use burmester::{Grid, Method, example};
+use burmester::{Constraints, DesignLimits, Grid, Method, example};
 use criterion::{
     BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group, criterion_main,
 };
@@ -59,6 +62,11 @@ fn sweep(c: &mut Criterion) {
             })
         });
         if n <= 1024 {
+            let limits = DesignLimits::default();
+            let none = Constraints::none();
+            g.bench_with_input(BenchmarkId::new("solution_map", n), &n, |b, _| {
+                b.iter(|| f.solution_map(black_box(&grid), &limits, &none).unwrap())
+            });
             g.bench_with_input(BenchmarkId::new("simulate", n), &n, |b, _| {
                 b.iter(|| {
                     f.branch_map_into(&grid, Method::Simulate, black_box(&mut out))

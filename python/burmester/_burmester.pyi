@@ -6,7 +6,7 @@ NumPy can turn into a float64 array, of any shape; array results have the
 shape of the input.
 """
 
-from typing import Literal, Optional, Sequence, Tuple, Union
+from typing import Any, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -242,6 +242,27 @@ class Task:
         point (pole circle, poles)."""
     def four_bar(self, driving_center: Point, driven_center: Point) -> SynthesizedFourBar:
         """The four-bar built from the dyads with these center points."""
+    def driven_solution_map(
+        self,
+        driving_center: Point,
+        xmin: float,
+        xmax: float,
+        ymin: float,
+        ymax: float,
+        nx: int,
+        ny: int,
+        *,
+        min_transmission_deg: float = 30.0,
+        max_link_ratio: float = 10.0,
+        input: Literal["any", "crank", "rocker"] = "any",
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+    ) -> SolutionMap:
+        """The same map the other way round: the driving dyad with this center
+        point is fixed and the candidates are driven center points ``C0``; the
+        branch-free flag is the sign test at the three poses."""
     def line_to_conic(self, point: Point, direction: Point) -> Conic:
         """The exact image in the center-point plane of a line of the
         circle-point plane: a conic through the three poles."""
@@ -356,6 +377,38 @@ class Filemon:
         circle points are defective. For contour plots and ranking pivots."""
     def margin(self, center: Point) -> float:
         """The signed margin at one point (float64)."""
+    def solution_map(
+        self,
+        xmin: float,
+        xmax: float,
+        ymin: float,
+        ymax: float,
+        nx: int,
+        ny: int,
+        *,
+        min_transmission_deg: float = 30.0,
+        max_link_ratio: float = 10.0,
+        input: Literal["any", "crank", "rocker"] = "any",
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+    ) -> SolutionMap:
+        """The designer's solution-space map over candidate driving center
+        points ``A0`` on the same grid as :meth:`branch_map`.
+
+        For each candidate: whether the linkage exists, the branch-free flag
+        (exactly :meth:`branch_map`), the Grashof class, whether the driving
+        link turns fully, the input rotation direction that carries the coupler
+        from pose 1 through pose 2 to pose 3 (or none), whether the three
+        input angles lie on one circuit, the minimum transmission angle over
+        the whole travel (exact, not only at the poses), the link ratio, and an
+        ``acceptable`` mask from the limits (``min_transmission_deg``,
+        ``max_link_ratio``, ``input`` = ``"any"``, ``"crank"`` (turns fully) or
+        ``"rocker"``) and constraints: the fixed pivot inside ``base_plate`` (a
+        simple polygon), and the moving links, as capsules ``link_width`` wide,
+        clear of ``obstacles`` (convex polygons) at ``travel_samples`` input
+        angles of the travel. The GIL is released during the computation."""
 
 class Conic:
     """A conic ``A x^2 + B x y + C y^2 + D x + E y + F = 0``; its value is
@@ -425,3 +478,64 @@ class SynthesizedFourBar:
         """Whether the three poses are in one assembly mode."""
     def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
         """``(x, y, angle)`` of the task's coupler point when driven to ``theta2``."""
+
+class SolutionMap:
+    """The solution-space map: read-only arrays of shape ``(ny, nx)``, row
+    ``j`` for ``y_j``, like :meth:`Filemon.branch_map` (handed to NumPy
+    without a copy)."""
+
+    grashof_names: list[str]
+    """The Grashof class of each code of :attr:`grashof`."""
+    @property
+    def valid(self) -> BoolArray:
+        """The linkage exists (a circle point, links of nonzero length)."""
+    @property
+    def branch_free(self) -> BoolArray:
+        """Free of the branch defect."""
+    @property
+    def grashof(self) -> npt.NDArray[np.uint8]:
+        """Grashof class as an index into :attr:`grashof_names`; 255 where invalid."""
+    @property
+    def input_full(self) -> BoolArray:
+        """The driving link turns fully."""
+    @property
+    def direction(self) -> npt.NDArray[np.int8]:
+        """The input rotation that carries the coupler 1 -> 2 -> 3: 1 ccw, -1 cw,
+        0 none (order defect or poses on different circuits)."""
+    @property
+    def one_circuit(self) -> BoolArray:
+        """The three input angles lie on one circuit (one arc of the input range)."""
+    @property
+    def min_transmission(self) -> npt.NDArray[np.float32]:
+        """Minimum transmission angle over the travel, radians; NaN where there
+        is no feasible travel or no linkage."""
+    @property
+    def link_ratio(self) -> npt.NDArray[np.float32]:
+        """Longest over shortest link; NaN where there is no linkage."""
+    @property
+    def acceptable(self) -> BoolArray:
+        """Feasible, branch-free, and within the limits and constraints."""
+    @property
+    def extent(self) -> Tuple[float, float, float, float]:
+        """``(xmin, xmax, ymin, ymax)``, for ``imshow(..., extent=...)``."""
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """``(ny, nx)``."""
+    @property
+    def varying(self) -> Literal["driving", "driven"]:
+        """Which center point the map varies."""
+    def point(self, j: int, i: int) -> Point:
+        """The candidate center point of sample ``[j, i]``."""
+    def linkage(self, j: int, i: int) -> SynthesizedFourBar:
+        """The linkage of sample ``[j, i]``."""
+    def best_pivots(self, k: int = 5, min_separation: Optional[float] = None) -> list[dict[str, Any]]:
+        """The ``k`` best acceptable candidates, best first, as plain dicts:
+        ``center``, ``driving`` and ``driven`` dyads, ``lengths``, ``grashof``,
+        ``input_full``, ``direction`` (``"ccw"``/``"cw"``),
+        ``min_transmission_deg``, ``link_ratio``, ``margin``, ``input_angles``,
+        ``mode``, ``index``.
+
+        Ranked by the minimum transmission angle over the travel, ties by the
+        margin to the nearest branch-defect boundary; candidates closer than
+        ``min_separation`` (default 2% of the viewport's diagonal) to a better
+        one are skipped, so the list offers distinct options."""

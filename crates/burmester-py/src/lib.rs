@@ -6,6 +6,7 @@
 use pyo3::prelude::*;
 
 mod conv;
+mod design;
 mod errors;
 mod fourbar;
 mod sweep;
@@ -14,6 +15,8 @@ mod synthesis;
 /// The native core of the `burmester` package.
 #[pymodule]
 mod _burmester {
+    #[pymodule_export]
+    use crate::design::PySolutionMap;
     #[pymodule_export]
     use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
     #[pymodule_export]

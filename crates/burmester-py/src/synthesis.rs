@@ -218,6 +218,41 @@ impl PyTask {
             .py()
     }
 
+    #[pyo3(signature = (driving_center, xmin, xmax, ymin, ymax, nx, ny, *,
+        min_transmission_deg = 30.0, max_link_ratio = 10.0, input = "any", base_plate = None,
+        obstacles = None, link_width = 0.0, travel_samples = 64))]
+    #[allow(clippy::too_many_arguments)]
+    fn driven_solution_map(
+        &self,
+        py: Python<'_>,
+        driving_center: PyPoint,
+        xmin: f64,
+        xmax: f64,
+        ymin: f64,
+        ymax: f64,
+        nx: usize,
+        ny: usize,
+        min_transmission_deg: f64,
+        max_link_ratio: f64,
+        input: &str,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: f64,
+        travel_samples: usize,
+    ) -> PyResult<crate::design::PySolutionMap> {
+        let grid = burmester::Grid::from_bounds(xmin, xmax, ymin, ymax, nx, ny).py()?;
+        let opts = crate::design::MapOptions::new(
+            min_transmission_deg,
+            max_link_ratio,
+            input,
+            base_plate,
+            obstacles,
+            link_width,
+            travel_samples,
+        )?;
+        crate::design::driven_solution_map(py, self.inner, driving_center.0, grid, opts)
+    }
+
     fn line_to_conic(&self, point: PyPoint, direction: PyPoint) -> PyResult<PyConic> {
         self.inner
             .line_to_conic(&Line {
@@ -376,6 +411,40 @@ impl PyFilemon {
 
     fn margin(&self, center: PyPoint) -> f64 {
         self.inner.margin(center.0)
+    }
+
+    #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, *, min_transmission_deg = 30.0,
+        max_link_ratio = 10.0, input = "any", base_plate = None, obstacles = None,
+        link_width = 0.0, travel_samples = 64))]
+    #[allow(clippy::too_many_arguments)]
+    fn solution_map(
+        &self,
+        py: Python<'_>,
+        xmin: f64,
+        xmax: f64,
+        ymin: f64,
+        ymax: f64,
+        nx: usize,
+        ny: usize,
+        min_transmission_deg: f64,
+        max_link_ratio: f64,
+        input: &str,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: f64,
+        travel_samples: usize,
+    ) -> PyResult<crate::design::PySolutionMap> {
+        let grid = burmester::Grid::from_bounds(xmin, xmax, ymin, ymax, nx, ny).py()?;
+        let opts = crate::design::MapOptions::new(
+            min_transmission_deg,
+            max_link_ratio,
+            input,
+            base_plate,
+            obstacles,
+            link_width,
+            travel_samples,
+        )?;
+        crate::design::solution_map(py, self.inner, grid, opts)
     }
 
     fn four_bar(&self, driving_center: PyPoint) -> PyResult<PySynthesizedFourBar> {

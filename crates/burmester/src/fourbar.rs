@@ -167,6 +167,16 @@ pub enum Grashof {
 }
 
 impl Grashof {
+    /// Every class, in the order of their codes in a solution map.
+    pub const ALL: [Grashof; 6] = [
+        Grashof::CrankRocker,
+        Grashof::DoubleCrank,
+        Grashof::RockerCrank,
+        Grashof::DoubleRocker,
+        Grashof::TripleRocker,
+        Grashof::ChangePoint,
+    ];
+
     /// The name used in the Python API: `"crank-rocker"`, `"double-crank"`,
     /// `"rocker-crank"`, `"double-rocker"`, `"triple-rocker"` or `"change-point"`.
     pub fn as_str(self) -> &'static str {
@@ -732,28 +742,7 @@ impl FourBar {
     /// tolerance of a few machine epsilons, so that change-point linkages
     /// given with decimal lengths are recognised.
     pub fn grashof(&self) -> Grashof {
-        let l = self.lengths().map(|v| v / self.scale);
-        let mut idx = [0usize, 1, 2, 3];
-        idx.sort_by(|&a, &b| l[a].total_cmp(&l[b]));
-        let s = l[idx[0]];
-        let lmax = l[idx[3]];
-        let p = l[idx[1]];
-        let q = l[idx[2]];
-        let lhs = s + lmax;
-        let rhs = p + q;
-        let tol = ROUNDING_FACTOR * f64::EPSILON * (lhs + rhs);
-        if (lhs - rhs).abs() <= tol {
-            Grashof::ChangePoint
-        } else if lhs > rhs {
-            Grashof::TripleRocker
-        } else {
-            match idx[0] {
-                0 => Grashof::DoubleCrank,
-                1 => Grashof::CrankRocker,
-                2 => Grashof::DoubleRocker,
-                _ => Grashof::RockerCrank,
-            }
-        }
+        grashof_of(self.lengths())
     }
 
     /// Where the input link can be: all the way round, or the arcs between
@@ -770,15 +759,12 @@ impl FourBar {
     /// A bound within rounding of `+-1` counts as reached, so that change-point
     /// linkages turn fully.
     pub fn input_range(&self) -> InputRange {
-        let g = self.ground / self.scale;
-        let c = self.c_n;
-        let base = g * g + c * c;
-        let two = 2.0 * g * c;
-        let tol = ROUNDING_FACTOR * f64::EPSILON * (base + self.sum_n * self.sum_n) / two;
-        let c_min = (base - self.sum_n * self.sum_n) / two;
-        let c_max = (base - self.diff_n * self.diff_n) / two;
-        let lo_free = c_min <= -1.0 + tol;
-        let hi_free = c_max >= 1.0 - tol;
+        let InputBounds {
+            c_min,
+            c_max,
+            lo_free,
+            hi_free,
+        } = input_bounds(self.lengths());
         let t1 = self.ground_angle;
         match (lo_free, hi_free) {
             (true, true) => InputRange::Full,
@@ -816,6 +802,61 @@ impl FourBar {
     /// Whether the input link turns fully (its [`input_range`](Self::input_range) is full).
     pub fn input_turns_fully(&self) -> bool {
         self.input_range().is_full()
+    }
+}
+
+/// Grashof type of the lengths `[ground, crank, coupler, rocker]` (see
+/// [`FourBar::grashof`]); any positive scale.
+pub(crate) fn grashof_of(lengths: [f64; 4]) -> Grashof {
+    let scale = lengths.iter().copied().fold(0.0, f64::max);
+    let l = lengths.map(|v| v / scale);
+    let mut idx = [0usize, 1, 2, 3];
+    idx.sort_by(|&a, &b| l[a].total_cmp(&l[b]));
+    let lhs = l[idx[0]] + l[idx[3]];
+    let rhs = l[idx[1]] + l[idx[2]];
+    let tol = ROUNDING_FACTOR * f64::EPSILON * (lhs + rhs);
+    if (lhs - rhs).abs() <= tol {
+        Grashof::ChangePoint
+    } else if lhs > rhs {
+        Grashof::TripleRocker
+    } else {
+        match idx[0] {
+            0 => Grashof::DoubleCrank,
+            1 => Grashof::CrankRocker,
+            2 => Grashof::DoubleRocker,
+            _ => Grashof::RockerCrank,
+        }
+    }
+}
+
+/// Where the loop closes, as bounds on `c = cos(theta2 - theta1)`, and
+/// whether each bound is beyond `-1` / `1` (within rounding).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct InputBounds {
+    pub(crate) c_min: f64,
+    pub(crate) c_max: f64,
+    /// `c_min <= -1`: the input passes `theta1 + pi`.
+    pub(crate) lo_free: bool,
+    /// `c_max >= 1`: the input passes `theta1`.
+    pub(crate) hi_free: bool,
+}
+
+/// The input bounds of the lengths `[ground, crank, coupler, rocker]` (see
+/// [`FourBar::input_range`]); any positive scale.
+pub(crate) fn input_bounds(lengths: [f64; 4]) -> InputBounds {
+    let scale = lengths.iter().copied().fold(0.0, f64::max);
+    let [g, c, l3, l4] = lengths.map(|v| v / scale);
+    let (sum, diff) = (l3 + l4, l3 - l4);
+    let base = g * g + c * c;
+    let two = 2.0 * g * c;
+    let tol = ROUNDING_FACTOR * f64::EPSILON * (base + sum * sum) / two;
+    let c_min = (base - sum * sum) / two;
+    let c_max = (base - diff * diff) / two;
+    InputBounds {
+        c_min,
+        c_max,
+        lo_free: c_min <= -1.0 + tol,
+        hi_free: c_max >= 1.0 - tol,
     }
 }
 

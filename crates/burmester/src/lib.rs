@@ -32,6 +32,7 @@
 //! ```
 
 pub mod conic;
+pub mod design;
 pub mod dyad;
 pub mod error;
 pub mod example;
@@ -42,6 +43,10 @@ pub mod sweep;
 pub mod task;
 
 pub use conic::{Conic, ConicKind, Line, Viewport};
+pub use design::{
+    Constraints, DesignLimits, InputRequirement, LinkageFigures, MapContext, Pivot, SolutionMap,
+    Varying,
+};
 pub use dyad::{Dyad, SynthesizedFourBar};
 pub use error::{AssemblyError, DegenerateError, Error, InvalidInput, Result};
 pub use filemon::{Branch, Filemon, Method};
