@@ -21,7 +21,7 @@ import json
 import math
 import os
 import sys
-from typing import IO, TYPE_CHECKING, Any, Callable, List, NoReturn, Optional, Sequence
+from typing import IO, TYPE_CHECKING, Any, Callable, List, NoReturn, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -34,7 +34,7 @@ from burmester.taskfile import TaskFileError, TaskSpec, View
 if TYPE_CHECKING:
     from types import ModuleType
 
-    from burmester._burmester import Filemon, Method
+    from burmester._burmester import Filemon, Method, Mode
 
 #: The built-in example four-bar: Norton, *Design of Machinery*, Example 4-1 (mm).
 EXAMPLE_FOURBAR = (100.0, 40.0, 120.0, 80.0)
@@ -288,10 +288,11 @@ def position_table(fourbar: burmester.FourBar, step_deg: float = 30.0) -> str:
         f"{'crossed theta3':>14} {'theta4':>8} {'mu':>6}",
     ]
     n = max(1, round(360.0 / step_deg))
+    both: Tuple[Mode, Mode] = ("open", "crossed")
     for k in range(n):
         t2 = k * 360.0 / n
         row = f"{t2:8.1f} |"
-        for mode in ("open", "crossed"):
+        for mode in both:
             try:
                 c = fourbar.configuration(math.radians(t2), mode)
             except burmester.AssemblyError:
@@ -325,7 +326,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
         print(position_table(fb, args.step or 30.0))
         return 0
     t2 = math.radians(args.theta2)
-    modes: List[Any] = [args.mode] if args.mode else ["open", "crossed"]
+    modes: List[Mode] = [args.mode] if args.mode else ["open", "crossed"]
     lines = [f"{fb!r}: {fb.grashof()}", f"theta2 = {args.theta2:g} deg"]
     for mode in modes:
         try:

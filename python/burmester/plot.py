@@ -116,14 +116,20 @@ def clip_line(point: Point, direction: Point, extent: Extent) -> Optional[Tuple[
 
 def _draw_circle(ax: Axes, circle: Dict[str, Any], extent: Extent, gid: str, label: str) -> Artist:
     """A pole circle (or the line it becomes when the poles are collinear)."""
-    style = dict(color=CIRCLE_COLOR, linestyle="--", linewidth=1.0, label=label, zorder=2)
+    art: Artist
     if circle["kind"] == "circle":
-        art: Artist = Circle(circle["center"], circle["radius"], fill=False, **style)  # type: ignore[arg-type]
-        ax.add_patch(art)  # type: ignore[arg-type]
+        patch = Circle(
+            circle["center"], circle["radius"], fill=False, color=CIRCLE_COLOR,
+            linestyle="--", linewidth=1.0, label=label, zorder=2,
+        )
+        ax.add_patch(patch)
+        art = patch
     else:
         seg = clip_line(circle["point"], circle["direction"], extent)
         xs, ys = ([seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]]) if seg else ([], [])
-        (art,) = ax.plot(xs, ys, **style)  # type: ignore[arg-type]
+        (art,) = ax.plot(
+            xs, ys, color=CIRCLE_COLOR, linestyle="--", linewidth=1.0, label=label, zorder=2
+        )
     art.set_gid(gid)
     return art
 
@@ -271,6 +277,9 @@ def center_plane(
                 color="0.55", linestyle=":", linewidth=0.8, zorder=2,
             )
             side.set_gid("pole-triangle-sides")
+            if not any(h.get_gid() == "pole-triangle-sides" for h in handles):
+                side.set_label("pole triangle's sides, extended (always defective)")
+                handles.append(side)
     tri_x = [p[0] for p in poles] + [poles[0][0]]
     tri_y = [p[1] for p in poles] + [poles[0][1]]
     (tri,) = ax.plot(tri_x, tri_y, color=POLE_COLOR, linewidth=1.0, zorder=4, label="pole triangle")
@@ -313,8 +322,8 @@ def center_plane(
         )
         piv.set_gid("pivots")
         handles.append(piv)
-        for k, p in enumerate(pts, start=1):
-            _label(ax, (float(p[0]), float(p[1])), str(k))
+        for k, (px, py) in enumerate(pts.tolist(), start=1):
+            _label(ax, (px, py), str(k))
 
     if labels:
         ax.set_title("Driving crank center-point plane")
@@ -601,7 +610,7 @@ def drive_angles(sfb: SynthesizedFourBar, frames: int = 60) -> Tuple[npt.NDArray
         stops = [t1, t1 - ((t1 - t2) % tau), t1 - ((t1 - t3) % tau)]
     total = abs(stops[2] - stops[0])
     n = max(2, int(frames))
-    parts = []
+    parts: List[npt.NDArray[np.float64]] = []
     idx = [0]
     for a, b in ((stops[0], stops[1]), (stops[1], stops[2])):
         steps = max(1, round(n * abs(b - a) / total)) if total > 0 else 1

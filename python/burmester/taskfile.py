@@ -181,7 +181,7 @@ def _describe(value: object) -> str:
         dict: "a table",
     }
     kind = kinds.get(type(value), type(value).__name__)
-    text = repr(value)
+    text = ("true" if value else "false") if isinstance(value, bool) else repr(value)
     if len(text) > 40:
         text = text[:37] + "..."
     return f"{text} ({kind})"
