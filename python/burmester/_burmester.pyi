@@ -6,10 +6,25 @@ NumPy can turn into a float64 array, of any shape; array results have the
 shape of the input.
 """
 
-from typing import Any, Literal, Optional, Sequence, Tuple, Union
+from typing import Any, Literal, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
+
+__all__ = [
+    "AssemblyError",
+    "BurmesterError",
+    "DegenerateError",
+    "InvalidInputError",
+    "Configuration",
+    "FourBar",
+    "Conic",
+    "Filemon",
+    "SolutionMap",
+    "SynthesizedFourBar",
+    "Task",
+    "__version__",
+]
 
 __version__: str
 
@@ -37,6 +52,7 @@ class DegenerateError(BurmesterError):
     """The geometry is degenerate: an answer lies at infinity (for example a
     center point on the pole circle), or the task has no unique answer."""
 
+@final
 class Configuration:
     """One solved position of a four-bar (from :meth:`FourBar.configuration`)."""
 
@@ -62,6 +78,7 @@ class Configuration:
     def coupler_rocker_angle(self) -> float:
         """theta4 - theta3 wrapped into (-pi, pi]; its sign is the mode."""
 
+@final
 class FourBar:
     """A planar four-bar linkage.
 
@@ -83,18 +100,19 @@ class FourBar:
     [20.298, 57.325]
     """
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         ground: float,
         crank: float,
         coupler: float,
         rocker: float,
         *,
-        origin: Point = (0.0, 0.0),
+        origin: Point = ...,
         ground_angle: float = 0.0,
-    ) -> None:
+    ) -> FourBar:
         """A four-bar from its link lengths; the input pivot is at ``origin``
-        and the ground link at ``ground_angle`` radians from +x."""
+        (default ``(0.0, 0.0)``) and the ground link at ``ground_angle``
+        radians from +x."""
     @staticmethod
     def from_pivots(
         input_pivot: Point, output_pivot: Point, crank: float, coupler: float, rocker: float
@@ -168,13 +186,14 @@ class FourBar:
     ) -> Tuple[FloatArray, FloatArray, BoolArray]:
         """``(x, y, valid)``: the path of a coupler point over input angles,
         NaN exactly where ``valid`` is False."""
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
 
 Pose = Tuple[float, float, float]
 Line = Tuple[Point, Point]
 Method = Literal["conic", "direct", "simulate"]
 BranchClass = Literal["free", "defective", "boundary"]
 
+@final
 class Task:
     """Three poses of the coupler, ``(x, y, angle)`` with angles in radians.
 
@@ -188,7 +207,7 @@ class Task:
     depend on where the task is or how large it is.
     """
 
-    def __init__(self, poses: Sequence[Pose]) -> None: ...
+    def __new__(cls, poses: Sequence[Pose]) -> Task: ...
     @property
     def poses(self) -> list[Pose]:
         """The three poses."""
@@ -267,6 +286,7 @@ class Task:
         """The exact image in the center-point plane of a line of the
         circle-point plane: a conic through the three poles."""
 
+@final
 class Filemon:
     """Filemon's construction for a driven dyad ``(C0, C1)`` and its two lines
     transformed exactly into conics in the driving crank's center-point plane.
@@ -410,11 +430,12 @@ class Filemon:
         clear of ``obstacles`` (convex polygons) at ``travel_samples`` input
         angles of the travel. The GIL is released during the computation."""
 
+@final
 class Conic:
     """A conic ``A x^2 + B x y + C y^2 + D x + E y + F = 0``; its value is
     defined up to a positive factor, so its sign tells the side."""
 
-    def __init__(self, a: float, b: float, c: float, d: float, e: float, f: float) -> None: ...
+    def __new__(cls, a: float, b: float, c: float, d: float, e: float, f: float) -> Conic: ...
     @property
     def coefficients(self) -> Tuple[float, float, float, float, float, float]:
         """``(A, B, C, D, E, F)`` in the fixed frame."""
@@ -448,6 +469,7 @@ class Conic:
         the asymptotes included. ``tolerance`` is the largest chord error
         (default: a thousandth of the viewport's diagonal)."""
 
+@final
 class SynthesizedFourBar:
     """A four-bar built from a driving dyad ``(A0, A1)`` and a driven dyad
     ``(C0, C1)``; driving it to ``input_angles[k]`` in ``modes[k]`` places
@@ -479,6 +501,7 @@ class SynthesizedFourBar:
     def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
         """``(x, y, angle)`` of the task's coupler point when driven to ``theta2``."""
 
+@final
 class SolutionMap:
     """The solution-space map: read-only arrays of shape ``(ny, nx)``, row
     ``j`` for ``y_j``, like :meth:`Filemon.branch_map` (handed to NumPy

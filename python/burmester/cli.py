@@ -1,16 +1,283 @@
-"""The ``burmester`` command line."""
+"""The ``burmester`` command line (also ``python -m burmester``).
+
+Commands::
+
+    burmester map [TASK.toml] -o map.png      # the center-point plane (Fig. 10/12)
+    burmester pivots [TASK.toml] --top 5      # the best driving pivots, as a table (--json)
+    burmester linkage [TASK.toml] -o l.gif    # a four-bar at the poses (.png) or animated (.gif/.mp4)
+    burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
+    burmester example > task.toml             # a task file to start from
+
+Without a task file, the commands use the built-in example. Without any
+arguments, ``burmester`` prints this help. Bad input exits with status 2 and
+a one-line message saying what to change; a missing optional dependency
+(matplotlib) exits with status 1.
+"""
 
 from __future__ import annotations
 
 import argparse
+import json
 import math
+import os
 import sys
-from typing import Sequence
+from typing import IO, TYPE_CHECKING, Any, Callable, List, NoReturn, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
 
 import burmester
+from burmester import taskfile
+from burmester.pivots import Pivot, rank_by_margin
+from burmester.taskfile import TaskFileError, TaskSpec, View
+
+if TYPE_CHECKING:
+    from types import ModuleType
+
+    from burmester._burmester import Filemon, Method, Mode
 
 #: The built-in example four-bar: Norton, *Design of Machinery*, Example 4-1 (mm).
 EXAMPLE_FOURBAR = (100.0, 40.0, 120.0, 80.0)
+
+#: Grids with at least this many points are swept in row bands, with a
+#: progress bar on stderr when it is a terminal.
+PROGRESS_MIN_POINTS = 2_000_000
+
+
+class UsageError(Exception):
+    """Bad command-line input; the message says what to change."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """An ArgumentParser whose errors are one line (and exit status 2)."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+# ---------------------------------------------------------------------------
+# Progress and sweeps
+
+
+class ProgressBar:
+    """A one-line text progress bar, redrawn in place on a terminal stream."""
+
+    def __init__(self, stream: IO[str], label: str, width: int = 30) -> None:
+        self.stream = stream
+        self.label = label
+        self.width = width
+
+    def __call__(self, fraction: float) -> None:
+        """Show ``fraction`` (0 to 1) done; a newline ends the bar at 1."""
+        fraction = min(max(fraction, 0.0), 1.0)
+        filled = round(self.width * fraction)
+        bar = "#" * filled + " " * (self.width - filled)
+        end = "\n" if fraction >= 1.0 else ""
+        self.stream.write(f"\r{self.label} [{bar}] {100 * fraction:3.0f}%{end}")
+        self.stream.flush()
+
+
+def sweep(
+    filemon: Filemon,
+    view: View,
+    what: str = "branch",
+    method: Method = "conic",
+    progress: Optional[Callable[[float], None]] = None,
+    bands: int = 50,
+) -> npt.NDArray[Any]:
+    """The branch map (``what="branch"``) or margin map (``"margin"``) of ``view``.
+
+    With ``progress``, the grid is computed in about ``bands`` bands of rows
+    (the same samples as one call) and ``progress(fraction)`` is called after
+    each.
+    """
+    nx, ny = view.nx, view.ny
+    if what == "branch":
+        out: npt.NDArray[Any] = np.empty((ny, nx), dtype=bool)
+    else:
+        out = np.empty((ny, nx), dtype=np.float32)
+    if progress is None:
+        bands = 1
+    rows = max(1, math.ceil(ny / max(1, bands)))
+    dy = (view.ymax - view.ymin) / ny
+    for j0 in range(0, ny, rows):
+        j1 = min(ny, j0 + rows)
+        y0 = view.ymin + j0 * dy
+        y1 = view.ymax if j1 == ny else view.ymin + j1 * dy
+        band = out[j0:j1]
+        if what == "branch":
+            filemon.branch_map(view.xmin, view.xmax, y0, y1, nx, j1 - j0, method, out=band)
+        else:
+            filemon.margin_map(view.xmin, view.xmax, y0, y1, nx, j1 - j0, out=band)
+        if progress is not None:
+            progress(j1 / ny)
+    return out
+
+
+def _progress_for(view: View, label: str) -> Optional[Callable[[float], None]]:
+    big = view.nx * view.ny >= PROGRESS_MIN_POINTS
+    return ProgressBar(sys.stderr, f"burmester: {label}") if big and sys.stderr.isatty() else None
+
+
+# ---------------------------------------------------------------------------
+# Helpers
+
+
+def _load(path: Optional[str]) -> TaskSpec:
+    return taskfile.example() if path is None else taskfile.load(path)
+
+
+def _with_grid(spec: TaskSpec, grid: Optional[Sequence[int]]) -> TaskSpec:
+    if grid is None:
+        return spec
+    nx, ny = grid
+    for name, n in (("NX", nx), ("NY", ny)):
+        if not 2 <= n <= 20000:
+            raise UsageError(f"--grid {name} must be from 2 to 20000, got {n}")
+    v = spec.view
+    view = View(v.xmin, v.xmax, v.ymin, v.ymax, nx, ny)
+    return TaskSpec(spec.poses, spec.driven_center, view, spec.limits, spec.source)
+
+
+def _plot_module() -> ModuleType:
+    """``burmester.plot`` with the Agg backend (files only, no windows)."""
+    try:
+        import matplotlib
+    except ImportError:
+        raise ImportError(
+            'this command draws pictures and needs matplotlib: pip install "burmester[plot]"'
+        ) from None
+    matplotlib.use("Agg")
+    import burmester.plot as plot
+
+    return plot
+
+
+def _save(fig: Any, path: str, dpi: int) -> None:
+    import matplotlib.pyplot as plt
+
+    try:
+        fig.savefig(path, dpi=dpi, bbox_inches="tight")
+    except OSError as e:
+        raise UsageError(f"cannot write {path}: {e.strerror or e}") from None
+    finally:
+        plt.close(fig)
+
+
+def _fmt_point(p: Sequence[float]) -> str:
+    return f"({p[0]:.3f}, {p[1]:.3f})"
+
+
+# ---------------------------------------------------------------------------
+# Commands
+
+
+def cmd_map(args: argparse.Namespace) -> int:
+    """``burmester map``: draw the center-point (or circle-point) plane."""
+    spec = _with_grid(_load(args.task), args.grid)
+    plot = _plot_module()
+    filemon = spec.filemon()
+    if args.plane == "circle":
+        ax = plot.circle_plane(filemon)
+        summary = f"circle-point plane of {spec.source}"
+    else:
+        free = sweep(filemon, spec.view, "branch", args.method, _progress_for(spec.view, "branch map"))
+        pivots = None
+        if args.pivots > 0:
+            margin = sweep(filemon, spec.view, "margin", progress=_progress_for(spec.view, "margin map"))
+            pivots = [p.center for p in rank_by_margin(filemon, spec.view, args.pivots, margin=margin)]
+        ax = plot.center_plane(filemon, spec.view, free=free, pivots=pivots)
+        summary = (
+            f"center-point plane of {spec.source}: {100 * free.mean():.1f}% of the "
+            f"{spec.view.nx} x {spec.view.ny} grid is branch-free"
+        )
+    _save(ax.figure, args.output, args.dpi)
+    print(f"wrote {args.output}: {summary}")
+    return 0
+
+
+def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot]) -> str:
+    """The text table of ``burmester pivots``."""
+    lines = [
+        f"Driving pivots A0 for {spec.source}, ranked by margin (distance to the branch-defect boundary)",
+        f"{'#':>2} | {'A0 (x, y)':>18} | {'margin':>7} | {'ground':>7} {'crank':>7} {'coupler':>7} "
+        f"{'rocker':>7} | {'Grashof type':<14} | {'mu1':>4} {'mu2':>4} {'mu3':>4} | {'mode':<7} | limits",
+    ]
+    for k, p in enumerate(pivots, start=1):
+        g, c, cp, r = p.lengths
+        mu = " ".join(f"{m:4.0f}" for m in p.transmission_deg)
+        bad = p.violations(spec.limits)
+        lines.append(
+            f"{k:>2} | {_fmt_point(p.center):>18} | {p.margin:7.3f} | {g:7.3f} {c:7.3f} {cp:7.3f} "
+            f"{r:7.3f} | {p.grashof:<14} | {mu} | {p.modes[0] or '':<7} | {'; '.join(bad) or 'ok'}"
+        )
+    if not pivots:
+        lines.append("(no branch-free pivot in the view)")
+    lim = spec.limits
+    lines.append(
+        f"mu: transmission angle at poses 1-3, degrees. limits: transmission >= "
+        f"{lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
+        + (", crank input" if lim.require_crank else "")
+    )
+    return "\n".join(lines)
+
+
+def cmd_pivots(args: argparse.Namespace) -> int:
+    """``burmester pivots``: rank the branch-free driving pivots."""
+    spec = _with_grid(_load(args.task), args.grid)
+    filemon = spec.filemon()
+    margin = sweep(filemon, spec.view, "margin", progress=_progress_for(spec.view, "margin map"))
+    pivots = rank_by_margin(filemon, spec.view, args.top, spacing=args.spacing, margin=margin)
+    if args.json:
+        v, lim = spec.view, spec.limits
+        doc = {
+            "task": spec.source,
+            "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax], "grid": [v.nx, v.ny]},
+            "limits": {
+                "min_transmission_deg": lim.min_transmission_deg,
+                "max_link_ratio": lim.max_link_ratio,
+                "require_crank": lim.require_crank,
+            },
+            "pivots": [p.as_dict(lim) for p in pivots],
+        }
+        print(json.dumps(doc, indent=2))
+    else:
+        print(pivot_table(spec, pivots))
+    return 0
+
+
+def cmd_linkage(args: argparse.Namespace) -> int:
+    """``burmester linkage``: draw or animate the four-bar of one driving pivot."""
+    spec = _load(args.task)
+    filemon = spec.filemon()
+    if args.pivot is None:
+        best = rank_by_margin(filemon, spec.view, 1)
+        if not best:
+            raise UsageError("no branch-free driving pivot in the view; give one with --pivot X Y")
+        pivot = best[0].center
+    else:
+        pivot = (args.pivot[0], args.pivot[1])
+    plot = _plot_module()
+    sfb = filemon.four_bar(pivot)
+    out: str = args.output
+    if out.lower().endswith((".gif", ".mp4")):
+        try:
+            anim = plot.animate(sfb, out, task=filemon.task, frames=args.frames, fps=args.fps)
+        except RuntimeError as e:
+            raise UsageError(str(e)) from None
+        except OSError as e:
+            raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
+        del anim
+        import matplotlib.pyplot as plt
+
+        plt.close("all")
+    else:
+        ax = plot.linkage(sfb, task=filemon.task)
+        _save(ax.figure, out, args.dpi)
+    state = "branch-free" if sfb.is_branch_free() else "has a branch defect"
+    print(f"wrote {out}: four-bar with driving pivot A0 = {_fmt_point(pivot)}, "
+          f"{sfb.fourbar.grashof()}, {state}")
+    return 0
 
 
 def position_table(fourbar: burmester.FourBar, step_deg: float = 30.0) -> str:
@@ -21,10 +288,11 @@ def position_table(fourbar: burmester.FourBar, step_deg: float = 30.0) -> str:
         f"{'crossed theta3':>14} {'theta4':>8} {'mu':>6}",
     ]
     n = max(1, round(360.0 / step_deg))
+    both: Tuple[Mode, Mode] = ("open", "crossed")
     for k in range(n):
         t2 = k * 360.0 / n
         row = f"{t2:8.1f} |"
-        for mode in ("open", "crossed"):
+        for mode in both:
             try:
                 c = fourbar.configuration(math.radians(t2), mode)
             except burmester.AssemblyError:
@@ -40,20 +308,219 @@ def position_table(fourbar: burmester.FourBar, step_deg: float = 30.0) -> str:
     return "\n".join(lines)
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of ``python -m burmester`` and the ``burmester`` script."""
-    parser = argparse.ArgumentParser(
-        prog="burmester",
-        description="Four-bar linkage analysis and branch-free three-position synthesis.",
-    )
-    parser.add_argument(
-        "--step", type=float, default=30.0, help="input angle step of the table, degrees"
-    )
-    args = parser.parse_args(argv)
-    try:
-        fb = burmester.FourBar(*EXAMPLE_FOURBAR)
-        print(position_table(fb, args.step))
-    except burmester.BurmesterError as e:
-        print(f"burmester: error: {e}", file=sys.stderr)
-        return 2
+def cmd_solve(args: argparse.Namespace) -> int:
+    """``burmester solve``: position analysis of a four-bar."""
+    given = [args.ground, args.crank, args.coupler, args.rocker]
+    if all(v is None for v in given):
+        lengths = EXAMPLE_FOURBAR
+        print("(no lengths given: the example four-bar of Norton, Design of Machinery, Example 4-1)")
+    elif any(v is None for v in given):
+        missing = [n for n, v in zip(("--ground", "--crank", "--coupler", "--rocker"), given) if v is None]
+        raise UsageError(f"missing {', '.join(missing)}: give all four link lengths, or none for the example")
+    else:
+        lengths = (args.ground, args.crank, args.coupler, args.rocker)
+    if args.step is not None and not 0.0 < args.step <= 360.0:
+        raise UsageError(f"--step must be more than 0 and at most 360 degrees, got {args.step:g}")
+    fb = burmester.FourBar(*lengths)
+    if args.theta2 is None:
+        print(position_table(fb, args.step or 30.0))
+        return 0
+    t2 = math.radians(args.theta2)
+    modes: List[Mode] = [args.mode] if args.mode else ["open", "crossed"]
+    lines = [f"{fb!r}: {fb.grashof()}", f"theta2 = {args.theta2:g} deg"]
+    for mode in modes:
+        try:
+            c = fb.configuration(t2, mode)
+        except burmester.AssemblyError:
+            ranges = fb.input_range() or []
+            arcs = " or ".join(f"[{math.degrees(a):.1f}, {math.degrees(b):.1f}]" for a, b in ranges)
+            raise UsageError(
+                f"the loop does not close at theta2 = {args.theta2:g} deg; "
+                f"this input only rocks within {arcs} deg: choose --theta2 there"
+            ) from None
+        o2, a, b, o4 = fb.joints(t2, mode)
+        lines.append(
+            f"{mode + ':':<8} theta3 = {math.degrees(c.theta3):9.3f} deg, theta4 = "
+            f"{math.degrees(c.theta4):9.3f} deg, transmission angle = "
+            f"{math.degrees(c.transmission_angle):6.2f} deg"
+            + (" (toggle)" if c.toggle else "")
+            + f"; A = {_fmt_point(a)}, B = {_fmt_point(b)}"
+        )
+    print("\n".join(lines))
     return 0
+
+
+def cmd_example(args: argparse.Namespace) -> int:
+    """``burmester example``: print (or write) the built-in example as a task file."""
+    text = taskfile.dumps(taskfile.example())
+    if args.output is None or args.output == "-":
+        sys.stdout.write(text)
+        return 0
+    try:
+        with open(args.output, "x", encoding="utf-8") as fh:
+            fh.write(text)
+    except FileExistsError:
+        raise UsageError(f"{args.output} exists; give another file name, or remove it first") from None
+    except OSError as e:
+        raise UsageError(f"cannot write {args.output}: {e.strerror or e}") from None
+    print(f"wrote {args.output}")
+    return 0
+
+
+# ---------------------------------------------------------------------------
+# The parser and main
+
+
+def _count(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
+    if n < 0:
+        raise argparse.ArgumentTypeError(f"expected a whole number of at least 0, got {n}")
+    return n
+
+
+def _positive_int(text: str) -> int:
+    n = _count(text)
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"expected a whole number of at least 1, got {n}")
+    return n
+
+
+def _finite(text: str) -> float:
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if not math.isfinite(x):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
+    return x
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser of the ``burmester`` command."""
+    parser = _Parser(
+        prog="burmester",
+        description=(
+            "Four-bar linkages for three given coupler poses, free of the branch problem "
+            "(Borm & Kim). Lengths in any one unit; angles on the command line and in task "
+            "files are in degrees."
+        ),
+        epilog=(
+            "examples:\n"
+            "  burmester map -o map.png            center-point plane of the built-in example\n"
+            "  burmester example > task.toml       a task file to edit\n"
+            "  burmester map task.toml -o map.png  center-point plane of your task\n"
+            "  burmester pivots task.toml --top 5  the best branch-free driving pivots\n"
+            "  burmester linkage task.toml -o linkage.gif\n"
+            "  burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40\n"
+            "Without arguments, burmester prints this help."
+        ),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("--version", action="version", version=f"burmester {burmester.__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    task_help = "task file (TOML; see 'burmester example'); default: the built-in example"
+
+    p = sub.add_parser("map", help="draw the driving crank's center-point plane (or circle-point plane)",
+                       description="Draw the driving crank's center-point plane as in Borm & Kim's "
+                       "Fig. 10 and 12: branch-free pivots shaded, the transformed Filemon curves, "
+                       "the poles, the pole triangle and circle, the driven crank's fixed pivot.")
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("-o", "--output", default="map.png", help="picture to write (.png, .svg, .pdf); default: map.png")
+    p.add_argument("--plane", choices=("center", "circle"), default="center",
+                   help="center: center-point plane (Fig. 10/12); circle: circle-point plane (Fig. 3/11)")
+    p.add_argument("--method", choices=("conic", "direct", "simulate"), default="conic",
+                   help="how grid points are classified (default: conic)")
+    p.add_argument("--grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
+                   help="grid samples along x and y (default: the task file's, or 400)")
+    p.add_argument("--pivots", type=_count, default=0, metavar="N",
+                   help="also mark the N best driving pivots (ranked as by 'burmester pivots')")
+    p.add_argument("--dpi", type=_positive_int, default=100, help="resolution, dots per inch (default: 100)")
+    p.set_defaults(func=cmd_map)
+
+    p = sub.add_parser("pivots", help="rank the branch-free driving pivots",
+                       description="Rank branch-free driving pivots A0 by their distance to the "
+                       "branch-defect boundary (the margin map) and show each one's four-bar.")
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("--top", type=_positive_int, default=5, help="how many pivots (default: 5)")
+    p.add_argument("--spacing", type=_finite, default=None,
+                   help="least distance between listed pivots (default: a tenth of the view)")
+    p.add_argument("--grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
+                   help="grid samples along x and y (default: the task file's, or 400)")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.set_defaults(func=cmd_pivots)
+
+    p = sub.add_parser("linkage", help="draw or animate the four-bar of a driving pivot",
+                       description="Draw the four-bar at the three poses (.png, .svg, .pdf), or "
+                       "animate it driven through them (.gif, or .mp4 with ffmpeg).")
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
+                   help="the driving crank's fixed pivot A0 (default: the best by margin)")
+    p.add_argument("-o", "--output", default="linkage.png", help="file to write; default: linkage.png")
+    p.add_argument("--frames", type=_positive_int, default=60, help="animation frames from pose 1 to 3")
+    p.add_argument("--fps", type=_positive_int, default=20, help="animation frames per second")
+    p.add_argument("--dpi", type=_positive_int, default=100, help="resolution of a still picture")
+    p.set_defaults(func=cmd_linkage)
+
+    p = sub.add_parser("solve", help="position analysis of a four-bar (angles in degrees)",
+                       description="Solve a four-bar's position: the coupler and rocker angles for "
+                       "an input angle, in both assembly modes. Without --theta2, a table over a "
+                       "full turn. Without lengths, Norton's Example 4-1 (100, 40, 120, 80).")
+    p.add_argument("--ground", type=_finite, help="ground link length L1 (input pivot to output pivot)")
+    p.add_argument("--crank", type=_finite, help="crank (input) length L2")
+    p.add_argument("--coupler", type=_finite, help="coupler length L3")
+    p.add_argument("--rocker", type=_finite, help="rocker (output) length L4")
+    p.add_argument("--theta2", type=_finite, metavar="DEG",
+                   help="input (crank) angle in DEGREES, counter-clockwise from the ground link")
+    p.add_argument("--mode", choices=("open", "crossed"),
+                   help="assembly mode (default: both); open: sin(theta4 - theta3) > 0")
+    p.add_argument("--step", type=_finite, default=None, metavar="DEG",
+                   help="input angle step of the full-turn table, degrees (default: 30)")
+    p.set_defaults(func=cmd_solve)
+
+    p = sub.add_parser("example", help="print the built-in example as a task file",
+                       description="Print the built-in example task as a TOML task file, to edit.")
+    p.add_argument("-o", "--output", default=None, help="write to this file instead of stdout (never overwrites)")
+    p.set_defaults(func=cmd_example)
+    return parser
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """Entry point of ``python -m burmester`` and the ``burmester`` script.
+
+    Returns the exit status: 0 on success, 2 for bad input (with a one-line
+    message on stderr saying what to change), 1 when matplotlib is missing.
+    """
+    parser = build_parser()
+    args_list = list(sys.argv[1:] if argv is None else argv)
+    if not args_list:
+        parser.print_help()
+        return 0
+    try:
+        args = parser.parse_args(args_list)
+    except SystemExit as e:  # argparse: --help, --version, or a usage error (already printed)
+        return int(e.code or 0) if not isinstance(e.code, str) else 2
+    if args.command is None:
+        parser.print_help()
+        return 0
+    prog = f"burmester {args.command}"
+    try:
+        return int(args.func(args))
+    except (UsageError, TaskFileError, burmester.BurmesterError) as e:
+        print(f"{prog}: error: {e}", file=sys.stderr)
+        return 2
+    except ImportError as e:
+        print(f"{prog}: error: {e}", file=sys.stderr)
+        return 1
+    except ValueError as e:  # e.g. an output format matplotlib does not know
+        print(f"{prog}: error: {e}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"\n{prog}: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # e.g. `burmester pivots --json | head`
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 1

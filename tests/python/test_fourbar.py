@@ -146,9 +146,9 @@ def test_configuration_and_geometry():
     assert FourBar(4, 1, 3, 3).link_ratio() == 4
 
 
-def test_main_job_prints_a_table(capsys):
+def test_solve_command_prints_a_table(capsys):
     from burmester.cli import main
 
-    assert main([]) == 0
+    assert main(["solve"]) == 0
     out = capsys.readouterr().out
     assert "crank-rocker" in out and "20.298" not in out.splitlines()[0]

@@ -1,0 +1,704 @@
+"""Pictures of a three-position synthesis, after Borm & Kim's figures.
+
+- :func:`center_plane`: the driving crank's center-point plane (the paper's
+  Fig. 10 and 12): branch-free pivots shaded, the two transformed Filemon
+  curves drawn exactly, the poles, the pole triangle and circle, the driven
+  crank's fixed pivot, and optional overlays.
+- :func:`circle_plane`: the circle-point plane (Fig. 3 and 11): the three
+  lines through ``C1``, Filemon's double wedges, the image poles and their circle.
+- :func:`linkage`: a synthesized four-bar drawn at the three poses.
+- :func:`animate`: a GIF or MP4 of the four-bar driven through the poses.
+
+Needs matplotlib (``pip install "burmester[plot]"``). Every drawing function
+takes an optional ``ax`` to draw into and returns the Axes, so you can keep
+editing; ``ax.figure.savefig("out.png")`` saves it. The artists carry gids
+(``"branch-map"``, ``"conic-1"`` ... ``"conic-3"`` by pose, ``"poles"``,
+``"pole-circle"``, ...) to find and restyle them: ``[a for a in
+ax.get_children() if a.get_gid() == "poles"]``.
+
+Colours follow the poses throughout: pose 1 red, pose 2 purple, pose 3 blue;
+a transformed Filemon curve has the colour of its line's pose.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+try:
+    import matplotlib
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import FFMpegWriter, FuncAnimation, PillowWriter
+    from matplotlib.artist import Artist
+    from matplotlib.axes import Axes
+    from matplotlib.colors import ListedColormap
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Circle, Patch, PathPatch, Polygon
+    from matplotlib.path import Path as MplPath
+except ImportError as e:  # pragma: no cover - exercised in a subprocess test
+    raise ImportError(
+        'burmester.plot needs matplotlib; install it with: pip install "burmester[plot]"'
+    ) from e
+
+import burmester
+from burmester._burmester import Filemon, SynthesizedFourBar, Task
+from burmester.taskfile import DEFAULT_GRID, View, default_view
+
+if TYPE_CHECKING:
+    from burmester._burmester import Method, Mode
+
+Point = Tuple[float, float]
+Extent = Tuple[float, float, float, float]
+ViewLike = Union[View, Sequence[float]]
+
+#: Colour of each pose (1, 2, 3); lines, curves and linkages use them.
+POSE_COLORS: Dict[int, str] = {1: "#d62728", 2: "#9467bd", 3: "#1f77b4"}
+#: Shading of branch-defective pivots (the page), branch-free pivots, and
+#: branch-free pivots that also meet the limits (the ``acceptable`` overlay).
+DEFECT_COLOR = "#ffffff"
+FREE_COLOR = "#c7e9b4"
+ACCEPT_COLOR = "#41ab5d"
+POLE_COLOR = "#000000"
+CIRCLE_COLOR = "#7f7f7f"
+
+
+# ---------------------------------------------------------------------------
+# Helpers
+
+
+def _as_view(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, int]]) -> View:
+    """A :class:`View` from a View, an ``(xmin, xmax, ymin, ymax)`` sequence or None."""
+    if view is None:
+        v = default_view(filemon)
+    elif isinstance(view, View):
+        v = view
+    else:
+        xmin, xmax, ymin, ymax = (float(t) for t in view)
+        if not (xmin < xmax and ymin < ymax):
+            raise ValueError(f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}")
+        w, h = xmax - xmin, ymax - ymin
+        nx = DEFAULT_GRID if w >= h else max(2, round(DEFAULT_GRID * w / h))
+        ny = DEFAULT_GRID if h >= w else max(2, round(DEFAULT_GRID * h / w))
+        v = View(xmin, xmax, ymin, ymax, nx, ny)
+    if grid is not None:
+        v = View(v.xmin, v.xmax, v.ymin, v.ymax, int(grid[0]), int(grid[1]))
+    return v
+
+
+def _new_axes(ax: Optional[Axes], figsize: Tuple[float, float] = (8.0, 6.4)) -> Axes:
+    if ax is not None:
+        return ax
+    _, new = plt.subplots(figsize=figsize)
+    return new
+
+
+def clip_line(point: Point, direction: Point, extent: Extent) -> Optional[Tuple[Point, Point]]:
+    """The part of the infinite line ``point + t * direction`` inside the
+    rectangle ``(xmin, xmax, ymin, ymax)``, as two end points, or None."""
+    xmin, xmax, ymin, ymax = extent
+    (px, py), (dx, dy) = point, direction
+    lo, hi = -math.inf, math.inf
+    for p, d, a, b in ((px, dx, xmin, xmax), (py, dy, ymin, ymax)):
+        if d == 0.0:
+            if not a <= p <= b:
+                return None
+            continue
+        t0, t1 = (a - p) / d, (b - p) / d
+        lo, hi = max(lo, min(t0, t1)), min(hi, max(t0, t1))
+    if not lo <= hi:
+        return None
+    return (px + lo * dx, py + lo * dy), (px + hi * dx, py + hi * dy)
+
+
+def _draw_circle(ax: Axes, circle: Dict[str, Any], extent: Extent, gid: str, label: str) -> Artist:
+    """A pole circle (or the line it becomes when the poles are collinear)."""
+    art: Artist
+    if circle["kind"] == "circle":
+        patch = Circle(
+            circle["center"], circle["radius"], fill=False, color=CIRCLE_COLOR,
+            linestyle="--", linewidth=1.0, label=label, zorder=2,
+        )
+        ax.add_patch(patch)
+        art = patch
+    else:
+        seg = clip_line(circle["point"], circle["direction"], extent)
+        xs, ys = ([seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]]) if seg else ([], [])
+        (art,) = ax.plot(
+            xs, ys, color=CIRCLE_COLOR, linestyle="--", linewidth=1.0, label=label, zorder=2
+        )
+    art.set_gid(gid)
+    return art
+
+
+def _label(ax: Axes, p: Point, text: str, color: str = "black") -> None:
+    ax.annotate(
+        text, p, xytext=(4, 4), textcoords="offset points", fontsize=9, color=color, zorder=6
+    )
+
+
+def _finish(ax: Axes, extent: Extent, legend: bool) -> None:
+    ax.set_xlim(extent[0], extent[1])
+    ax.set_ylim(extent[2], extent[3])
+    ax.set_aspect("equal")
+    if legend:
+        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize="small")
+
+
+def _check_shape(name: str, array: Optional[npt.ArrayLike], shape: Tuple[int, int]) -> Optional[np.ndarray]:
+    if array is None:
+        return None
+    a = np.asarray(array)
+    if a.shape != shape:
+        raise ValueError(f"{name} must have the grid's shape (ny, nx) = {shape}, got {a.shape}")
+    return a
+
+
+# ---------------------------------------------------------------------------
+# The center-point plane
+
+
+def center_plane(
+    filemon: Filemon,
+    view: Optional[ViewLike] = None,
+    grid: Optional[Tuple[int, int]] = None,
+    *,
+    method: Method = "conic",
+    free: Optional[npt.ArrayLike] = None,
+    acceptable: Optional[npt.ArrayLike] = None,
+    transmission: Optional[npt.ArrayLike] = None,
+    transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
+    pivots: Optional[Sequence[Point]] = None,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw the driving crank's center-point plane, as in Borm & Kim's Fig. 10 and 12.
+
+    Draws, bottom to top: the branch-free driving pivots shaded (gid
+    ``"branch-map"``, an image of the grid: 0 defective, 1 branch-free,
+    2 branch-free and acceptable); the transformed Filemon curves, exact and
+    every branch, clipped to the view (gid ``"conic-k"`` for the line of pose
+    k, one Line2D per branch); the pole triangle (``"pole-triangle"``) and its
+    side lines extended (``"pole-triangle-sides"``, always defective: the
+    paper's property 5); the pole circle (``"pole-circle"``); the poles
+    (``"poles"``); the driven crank's fixed pivot ``C0`` (``"driven-pivot"``);
+    and the overlays given.
+
+    Parameters:
+        filemon: Filemon's construction for the driven dyad
+            (``task.filemon(C0)``).
+        view: ``(xmin, xmax, ymin, ymax)`` or a :class:`burmester.taskfile.View`;
+            default: a square around the poles and the pivots.
+        grid: ``(nx, ny)`` samples of the branch map; default: the View's, or
+            400 along the longer side.
+        method: how :meth:`Filemon.branch_map` classifies (``"conic"``,
+            ``"direct"``, ``"simulate"``).
+        free: a branch map already computed on this view, shape ``(ny, nx)``
+            (then ``grid`` is taken from it and ``method`` is not used).
+        acceptable: optional bool array ``(ny, nx)``: pivots that meet the
+            limits (from the solution-space map); shaded darker where also
+            branch-free.
+        transmission: optional float array ``(ny, nx)``: a transmission angle
+            in degrees per grid point (NaN where undefined), drawn as
+            labelled contours at ``transmission_levels`` (gid ``"transmission"``).
+        pivots: optional ``(x, y)`` points, best first: drawn as numbered stars
+            (gid ``"pivots"``).
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    if free is not None:
+        ny, nx = np.asarray(free).shape
+        grid = (nx, ny)
+    v = _as_view(filemon, view, grid)
+    extent = v.extent
+    shape = (v.ny, v.nx)
+    free_a = _check_shape("free", free, shape)
+    if free_a is None:
+        free_a = filemon.branch_map(*extent, v.nx, v.ny, method)
+    free_b = free_a.astype(bool)
+    acc = _check_shape("acceptable", acceptable, shape)
+    trans = _check_shape("transmission", transmission, shape)
+
+    ax = _new_axes(ax)
+    cat = free_b.astype(np.int8)
+    if acc is not None:
+        cat[free_b & acc.astype(bool)] = 2
+    img = ax.imshow(
+        cat,
+        origin="lower",
+        extent=extent,
+        cmap=ListedColormap([DEFECT_COLOR, FREE_COLOR, ACCEPT_COLOR]),
+        vmin=0,
+        vmax=2,
+        interpolation="nearest",
+        zorder=0,
+    )
+    img.set_gid("branch-map")
+    handles: List[Artist] = [Patch(facecolor=FREE_COLOR, edgecolor="0.5", label="branch-free driving pivot")]
+    if acc is not None:
+        handles.append(Patch(facecolor=ACCEPT_COLOR, edgecolor="0.5", label="branch-free and acceptable"))
+
+    # The transformed Filemon curves.
+    if filemon.all_defective:
+        ax.text(
+            0.5, 0.5, "every driving pivot has a branch defect",
+            transform=ax.transAxes, ha="center", va="center", color="0.3",
+        )
+    else:
+        extreme = filemon.extreme_poses
+        assert extreme is not None
+        for pose, conic in zip(extreme, filemon.conics):
+            color = POSE_COLORS[pose]
+            first = True
+            for pl in conic.polylines(*extent):
+                (line,) = ax.plot(pl[:, 0], pl[:, 1], color=color, linewidth=1.6, zorder=3)
+                line.set_gid(f"conic-{pose}")
+                if first:
+                    line.set_label(f"Filemon line {pose} transformed ({conic.kind})")
+                    handles.append(line)
+                    first = False
+
+    # The poles, the pole triangle, its extended sides and the pole circle.
+    task = filemon.task
+    poles = task.poles()
+    for a, b in ((0, 1), (1, 2), (2, 0)):
+        seg = clip_line(poles[a], (poles[b][0] - poles[a][0], poles[b][1] - poles[a][1]), extent)
+        if seg:
+            (side,) = ax.plot(
+                [seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]],
+                color="0.55", linestyle=":", linewidth=0.8, zorder=2,
+            )
+            side.set_gid("pole-triangle-sides")
+            if not any(h.get_gid() == "pole-triangle-sides" for h in handles):
+                side.set_label("pole triangle's sides, extended (always defective)")
+                handles.append(side)
+    tri_x = [p[0] for p in poles] + [poles[0][0]]
+    tri_y = [p[1] for p in poles] + [poles[0][1]]
+    (tri,) = ax.plot(tri_x, tri_y, color=POLE_COLOR, linewidth=1.0, zorder=4, label="pole triangle")
+    tri.set_gid("pole-triangle")
+    handles.append(tri)
+    handles.append(_draw_circle(ax, task.pole_circle(), extent, "pole-circle", "pole circle"))
+    (pole_art,) = ax.plot(
+        [p[0] for p in poles], [p[1] for p in poles], linestyle="none", marker="o",
+        markersize=5, color=POLE_COLOR, zorder=5, label="poles",
+    )
+    pole_art.set_gid("poles")
+    handles.append(pole_art)
+    c0 = filemon.driven_center
+    (c0_art,) = ax.plot(
+        [c0[0]], [c0[1]], linestyle="none", marker="^", markersize=9, color="#ff7f0e",
+        markeredgecolor="black", zorder=5, label="driven crank's fixed pivot C0",
+    )
+    c0_art.set_gid("driven-pivot")
+    handles.append(c0_art)
+    if labels:
+        for name, p in zip(("P12", "P13", "P23"), poles):
+            _label(ax, p, name)
+        _label(ax, c0, "C0")
+
+    # Overlays from the solution-space map.
+    if trans is not None:
+        xs, ys = v.cell_centers()
+        cs = ax.contour(
+            xs, ys, np.asarray(trans, dtype=float), levels=sorted(transmission_levels),
+            colors="#636363", linewidths=0.8, zorder=3,
+        )
+        cs.set_gid("transmission")
+        ax.clabel(cs, fmt="%g°", fontsize=7)
+        handles.append(Line2D([], [], color="#636363", linewidth=0.8, label="transmission angle, deg"))
+    if pivots is not None and len(pivots) > 0:
+        pts = np.asarray(pivots, dtype=float).reshape(-1, 2)
+        (piv,) = ax.plot(
+            pts[:, 0], pts[:, 1], linestyle="none", marker="*", markersize=13, color="#ffd700",
+            markeredgecolor="black", zorder=6, label="best driving pivots",
+        )
+        piv.set_gid("pivots")
+        handles.append(piv)
+        for k, (px, py) in enumerate(pts.tolist(), start=1):
+            _label(ax, (px, py), str(k))
+
+    if labels:
+        ax.set_title("Driving crank center-point plane")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    _finish(ax, extent, False)
+    if legend:
+        ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                  borderaxespad=0.0, fontsize="small")
+    return ax
+
+
+# ---------------------------------------------------------------------------
+# The circle-point plane
+
+
+def _sector_polygon(center: Point, a0: float, a1: float, radius: float) -> npt.NDArray[np.float64]:
+    """A pie slice from angle a0 to a1 (counter-clockwise) as a polygon."""
+    ts = np.linspace(a0, a1, max(3, int(64 * (a1 - a0) / math.pi) + 2))
+    pts = np.column_stack([center[0] + radius * np.cos(ts), center[1] + radius * np.sin(ts)])
+    return np.vstack([[center], pts, [center]])
+
+
+def filemon_wedges(filemon: Filemon, radius: float) -> Tuple[List[npt.NDArray[np.float64]], List[npt.NDArray[np.float64]]]:
+    """Filemon's sectors around ``C1`` as polygons of the given radius:
+    ``(free, defective)``. The free ones are the two opposite sectors where
+    all three lines see the driving circle point on one side."""
+    c1 = filemon.circle_point
+    dirs = [d for _, d in filemon.all_lines]
+    angles = sorted({(math.atan2(d[1], d[0]) + s) % (2 * math.pi) for d in dirs for s in (0.0, math.pi)})
+    free: List[npt.NDArray[np.float64]] = []
+    defective: List[npt.NDArray[np.float64]] = []
+    for i, a0 in enumerate(angles):
+        a1 = angles[i + 1] if i + 1 < len(angles) else angles[0] + 2 * math.pi
+        mid = (a0 + a1) / 2
+        m = (math.cos(mid), math.sin(mid))
+        signs = {math.copysign(1.0, d[0] * m[1] - d[1] * m[0]) for d in dirs}
+        poly = _sector_polygon(c1, a0, a1, radius)
+        (free if len(signs) == 1 and not filemon.all_defective else defective).append(poly)
+    return free, defective
+
+
+def _default_circle_view(filemon: Filemon) -> View:
+    pts: List[Point] = [filemon.circle_point, *filemon.fixed_pivot_images, *filemon.task.image_poles()]
+    xs = [p[0] for p in pts]
+    ys = [p[1] for p in pts]
+    cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    half = max(max(xs) - min(xs), max(ys) - min(ys), filemon.task.scale) * 0.75
+    return View(cx - half, cx + half, cy - half, cy + half)
+
+
+def circle_plane(
+    filemon: Filemon,
+    view: Optional[ViewLike] = None,
+    *,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw the driving crank's circle-point plane, as in Borm & Kim's Fig. 3 and 11.
+
+    Draws Filemon's construction for the driven dyad ``(C0, C1)``: the three
+    lines through ``C1`` and ``C'k`` (gid ``"line-k"``; the two Filemon lines
+    solid, the middle one dashed), the branch-free double wedge between the
+    Filemon lines shaded (gid ``"free-wedge"``) and the defective one hatched
+    (``"defect-wedge"``), ``C1`` and the fixed pivot's images ``C'1 = C0,
+    C'2, C'3`` (``"fixed-pivot-images"``), the image poles ``P12, P13, P'23``
+    (``"image-poles"``) and the image-pole circle (``"image-pole-circle"``),
+    on which circle points have their center point at infinity.
+
+    Parameters:
+        filemon: Filemon's construction for the driven dyad.
+        view: ``(xmin, xmax, ymin, ymax)`` or a View; default: a square around
+            ``C1``, the ``C'k`` and the image poles.
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    v = _default_circle_view(filemon) if view is None else _as_view(filemon, view, None)
+    extent = v.extent
+    ax = _new_axes(ax)
+    c1 = filemon.circle_point
+    corners = [(x, y) for x in extent[:2] for y in extent[2:]]
+    radius = 2.0 * max(math.hypot(x - c1[0], y - c1[1]) for x, y in corners) + 1.0
+    free, defective = filemon_wedges(filemon, radius)
+    handles: List[Artist] = []
+    if free:
+        patch = PathPatch(
+            MplPath.make_compound_path(*(MplPath(p, closed=True) for p in free)),
+            facecolor=FREE_COLOR, edgecolor="none", zorder=0, label="branch-free driving circle points",
+        )
+        patch.set_gid("free-wedge")
+        ax.add_patch(patch)
+        handles.append(patch)
+    if defective:
+        hatch = PathPatch(
+            MplPath.make_compound_path(*(MplPath(p, closed=True) for p in defective)),
+            facecolor="none", edgecolor="0.75", hatch="////", linewidth=0.0, zorder=0,
+            label="branch defect (Filemon)",
+        )
+        hatch.set_gid("defect-wedge")
+        ax.add_patch(hatch)
+        handles.append(hatch)
+
+    middle = filemon.middle_pose
+    for k, (point, direction) in enumerate(filemon.all_lines, start=1):
+        seg = clip_line(point, direction, extent)
+        if seg is None:
+            continue
+        (line,) = ax.plot(
+            [seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]], color=POSE_COLORS[k],
+            linestyle="--" if k == middle else "-", linewidth=1.4, zorder=3,
+            label=f"line C1 C'{k} (pose {k})" + (", middle" if k == middle else ""),
+        )
+        line.set_gid(f"line-{k}")
+        handles.append(line)
+
+    ip = filemon.task.image_poles()
+    handles.append(_draw_circle(ax, filemon.task.image_pole_circle(), extent, "image-pole-circle", "image-pole circle"))
+    (ip_art,) = ax.plot(
+        [p[0] for p in ip], [p[1] for p in ip], linestyle="none", marker="s", markersize=5,
+        color=POLE_COLOR, zorder=5, label="image poles",
+    )
+    ip_art.set_gid("image-poles")
+    handles.append(ip_art)
+    images = filemon.fixed_pivot_images
+    (img_art,) = ax.plot(
+        [p[0] for p in images], [p[1] for p in images], linestyle="none", marker="^",
+        markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=5,
+        label="fixed pivot seen from the coupler, C'k",
+    )
+    img_art.set_gid("fixed-pivot-images")
+    handles.append(img_art)
+    (c1_art,) = ax.plot(
+        [c1[0]], [c1[1]], linestyle="none", marker="o", markersize=7, color="white",
+        markeredgecolor="black", zorder=5, label="driven crank's moving pivot C1",
+    )
+    c1_art.set_gid("circle-point")
+    handles.append(c1_art)
+    if labels:
+        for name, p in zip(("P12", "P13", "P'23"), ip):
+            _label(ax, p, name)
+        for k, p in enumerate(images, start=1):
+            _label(ax, p, f"C'{k}" + (" = C0" if k == 1 else ""), POSE_COLORS[k])
+        _label(ax, c1, "C1")
+        ax.set_title("Driving crank circle-point plane (pose 1)")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    _finish(ax, extent, False)
+    if legend:
+        ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                  borderaxespad=0.0, fontsize="small")
+    return ax
+
+
+# ---------------------------------------------------------------------------
+# The linkage
+
+
+def _flag(pose: Tuple[float, float, float], length: float) -> Tuple[List[float], List[float]]:
+    x, y, a = pose
+    return [x, x + length * math.cos(a)], [y, y + length * math.sin(a)]
+
+
+def _draw_static(ax: Axes, sfb: SynthesizedFourBar, task: Optional[Task], curve: bool, labels: bool) -> float:
+    """Ground pivots, coupler curve and the pose markers; returns the flag length."""
+    fb = sfb.fourbar
+    a0, c0 = sfb.driving[0], sfb.driven[0]
+    flag = 0.3 * min(fb.lengths)
+    if curve:
+        mode = sfb.modes[0] or "open"
+        ts = np.linspace(0.0, 2 * math.pi, 1441)
+        x, y, _ = fb.coupler_path(sfb.coupler_point, ts, mode)
+        (cc,) = ax.plot(x, y, color="0.6", linewidth=0.8, zorder=1, label=f"coupler curve ({mode})")
+        cc.set_gid("coupler-curve")
+    (g,) = ax.plot([a0[0], c0[0]], [a0[1], c0[1]], color="0.3", linestyle="--", linewidth=1.0, zorder=2)
+    g.set_gid("ground")
+    (piv,) = ax.plot(
+        [a0[0], c0[0]], [a0[1], c0[1]], linestyle="none", marker="^", markersize=10,
+        color="0.2", zorder=6, label="fixed pivots A0, C0",
+    )
+    piv.set_gid("fixed-pivots")
+    poses = task.poses if task is not None else [
+        sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)
+    ]
+    for k, pose in enumerate(poses, start=1):
+        fx, fy = _flag(pose, flag)
+        (mk,) = ax.plot(fx, fy, color="black", linewidth=2.0, zorder=7)
+        mk.set_gid(f"pose-{k}")
+        (dot,) = ax.plot([pose[0]], [pose[1]], marker="o", markersize=5, color="black", zorder=7)
+        dot.set_gid(f"pose-{k}")
+        if labels:
+            _label(ax, (pose[0], pose[1]), str(k))
+    if labels:
+        _label(ax, a0, "A0")
+        _label(ax, c0, "C0")
+    return flag
+
+
+def _linkage_polys(sfb: SynthesizedFourBar, theta2: float, mode: Mode) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """``(chain, coupler)``: the polyline O2-A-B-O4 and the coupler triangle A-B-P."""
+    o2, a, b, o4 = sfb.fourbar.joints(theta2, mode)
+    x, y, _ = sfb.pose_at(theta2, mode)
+    chain = np.array([o2, a, b, o4], dtype=float)
+    coupler = np.array([a, b, (x, y)], dtype=float)
+    return chain, coupler
+
+
+def linkage(
+    sfb: SynthesizedFourBar,
+    *,
+    task: Optional[Task] = None,
+    coupler_curve: bool = True,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a synthesized four-bar at the three poses.
+
+    Draws the fixed pivots ``A0`` and ``C0`` with the ground line, the path of
+    the coupler point over a full turn of the input in the mode of pose 1
+    (gid ``"coupler-curve"``), and at each pose k, in its colour and assembly
+    mode: the crank, the coupler (a triangle through both moving pivots and
+    the coupler point) and the rocker (gids ``"linkage-k"`` and
+    ``"coupler-k"``). The poses themselves are black markers, a dot and a flag
+    along the coupler angle (gid ``"pose-k"``), so you can see the coupler
+    reach each one.
+
+    Parameters:
+        sfb: the four-bar, from :meth:`burmester.Filemon.four_bar` or
+            :meth:`burmester.Task.four_bar`.
+        task: the task, to mark the poses it asks for; default: the poses the
+            linkage reaches at its input angles.
+        coupler_curve: draw the coupler curve.
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    ax = _new_axes(ax, (7.5, 6.0))
+    _draw_static(ax, sfb, task, coupler_curve, labels)
+    for k, (theta2, mode) in enumerate(zip(sfb.input_angles, sfb.modes), start=1):
+        m = mode or "open"
+        chain, coupler = _linkage_polys(sfb, theta2, m)
+        color = POSE_COLORS[k]
+        (ln,) = ax.plot(
+            chain[:, 0], chain[:, 1], color=color, linewidth=2.0, marker="o", markersize=4,
+            zorder=4, label=f"pose {k}: theta2 = {math.degrees(theta2):.1f} deg, {mode or 'toggle'}",
+        )
+        ln.set_gid(f"linkage-{k}")
+        tri = Polygon(coupler, closed=True, facecolor=color, edgecolor=color, alpha=0.25, zorder=3)
+        tri.set_gid(f"coupler-{k}")
+        ax.add_patch(tri)
+    if labels:
+        state = "branch-free" if sfb.is_branch_free() else "branch defect (modes differ)"
+        ax.set_title(f"Four-bar at the three poses: {sfb.fourbar.grashof()}, {state}")
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.margins(0.08)
+    if legend:
+        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize="small")
+    return ax
+
+
+def drive_angles(sfb: SynthesizedFourBar, frames: int = 60) -> Tuple[npt.NDArray[np.float64], Tuple[int, int, int]]:
+    """Input angles that drive the linkage from pose 1 through pose 2 to pose 3.
+
+    The input turns one way (counter-clockwise or clockwise, whichever reaches
+    pose 2 before pose 3) in about ``frames`` equal steps; the three input
+    angles of the poses are among the samples, exactly. Returns the angles and
+    the indices of the poses in them.
+    """
+    t1, t2, t3 = sfb.input_angles
+    tau = 2 * math.pi
+    d12, d13 = (t2 - t1) % tau, (t3 - t1) % tau
+    if d12 <= d13:
+        stops = [t1, t1 + d12, t1 + d13]
+    else:  # clockwise
+        stops = [t1, t1 - ((t1 - t2) % tau), t1 - ((t1 - t3) % tau)]
+    total = abs(stops[2] - stops[0])
+    n = max(2, int(frames))
+    parts: List[npt.NDArray[np.float64]] = []
+    idx = [0]
+    for a, b in ((stops[0], stops[1]), (stops[1], stops[2])):
+        steps = max(1, round(n * abs(b - a) / total)) if total > 0 else 1
+        seg = np.linspace(a, b, steps + 1)
+        parts.append(seg if not parts else seg[1:])
+        idx.append(idx[-1] + steps)
+    return np.concatenate(parts), (idx[0], idx[1], idx[2])
+
+
+def animate(
+    sfb: SynthesizedFourBar,
+    path: Union[str, Path],
+    *,
+    task: Optional[Task] = None,
+    frames: int = 60,
+    fps: int = 20,
+    dpi: int = 80,
+) -> FuncAnimation:
+    """Write an animation of the four-bar driven through the three poses.
+
+    The input turns from pose 1 through pose 2 to pose 3 (see
+    :func:`drive_angles`) and back, so the animation loops smoothly; the
+    moving linkage (gid ``"moving-linkage"``, ``"moving-coupler"``) is drawn
+    over the coupler curve and the pose markers (as in :func:`linkage`).
+
+    Parameters:
+        sfb: a branch-free four-bar.
+        path: where to write: ``.gif`` (Pillow) or ``.mp4`` (needs ffmpeg).
+        task: the task, to mark its poses; default: the poses the linkage reaches.
+        frames: about how many frames from pose 1 to pose 3.
+        fps: frames per second.
+        dpi: resolution of the frames.
+
+    Returns:
+        The matplotlib animation (already saved).
+
+    Raises:
+        burmester.AssemblyError: the linkage has a branch defect, or its input
+            cannot turn from pose 1 through pose 2 to pose 3 without passing a
+            dead position.
+        ValueError: the file type is neither ``.gif`` nor ``.mp4``.
+        RuntimeError: ``.mp4`` was asked for and ffmpeg is not installed.
+    """
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in (".gif", ".mp4"):
+        raise ValueError(f"animation file must end in .gif or .mp4, got {path.name!r}")
+    if suffix == ".mp4" and not matplotlib.animation.writers.is_available("ffmpeg"):
+        raise RuntimeError("writing .mp4 needs ffmpeg on the PATH; install it, or write a .gif")
+    modes = set(sfb.modes)
+    if None in modes or len(modes) != 1:
+        raise burmester.AssemblyError(
+            f"the linkage meets the poses in modes {list(sfb.modes)}: it has a branch defect "
+            "and cannot be driven through all three; choose a branch-free driving pivot"
+        )
+    mode: Mode = sfb.modes[0] or "open"
+    angles, _ = drive_angles(sfb, frames)
+    _, _, valid = sfb.fourbar.solve_many(angles, mode)
+    if not bool(np.all(valid)):
+        raise burmester.AssemblyError(
+            "the input cannot turn from pose 1 through pose 2 to pose 3 without passing a "
+            "dead position (an order defect); choose another driving pivot"
+        )
+    sequence = np.concatenate([angles, angles[-2:0:-1]])
+
+    fig, ax = plt.subplots(figsize=(6.0, 5.0))
+    _draw_static(ax, sfb, task, True, True)
+    polys = [_linkage_polys(sfb, float(t), mode) for t in sequence]
+    allpts = np.vstack([np.vstack(p) for p in polys])
+    lo, hi = allpts.min(axis=0), allpts.max(axis=0)
+    pad = 0.08 * float(max(hi - lo))
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.set_aspect("equal")
+    ax.set_title(f"{sfb.fourbar.grashof()}, driven through the poses ({mode})")
+    (chain_art,) = ax.plot([], [], color="#333333", linewidth=2.5, marker="o", markersize=5, zorder=8)
+    chain_art.set_gid("moving-linkage")
+    tri = Polygon(polys[0][1], closed=True, facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.6, zorder=8)
+    tri.set_gid("moving-coupler")
+    ax.add_patch(tri)
+
+    def update(i: int) -> List[Artist]:
+        chain, coupler = polys[i]
+        chain_art.set_data(chain[:, 0], chain[:, 1])
+        tri.set_xy(coupler)
+        return [chain_art, tri]
+
+    anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
+    writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
+    anim.save(str(path), writer=writer, dpi=dpi)
+    return anim

@@ -1,0 +1,418 @@
+"""Task files: a three-position synthesis job written in TOML.
+
+A task file gives the three poses of the coupler (angles in **degrees**), the
+driven dyad, the part of the center-point plane to show and sweep, and the
+limits a good linkage must meet. Only ``[[pose]]`` and ``[driven]`` are
+required::
+
+    # Lengths in any one unit; angles in degrees, counter-clockwise from +x.
+    [[pose]]              # pose 1: where the coupler point is, and the coupler's angle
+    x = 0.0
+    y = 0.0
+    angle_deg = 0.0
+
+    [[pose]]              # pose 2
+    x = 2.0
+    y = 0.5
+    angle_deg = 22.918
+
+    [[pose]]              # pose 3
+    x = 3.0
+    y = 2.0
+    angle_deg = 63.025
+
+    [driven]              # the driven dyad, by its fixed pivot C0 ...
+    center = [4.0, -1.0]
+    # circle = [x, y]     # ... or by its moving pivot C1 at pose 1 (not both)
+
+    [view]                # the driving crank's center-point plane: shown and swept
+    x = [-8.0, 8.0]       # xmin, xmax
+    y = [-8.0, 8.0]       # ymin, ymax
+    grid = [400, 400]     # samples along x and along y
+
+    [limits]              # what a good linkage must meet
+    min_transmission_deg = 30.0
+    max_link_ratio = 10.0
+    require_crank = false
+
+A bad file raises :class:`TaskFileError` (a ``ValueError``) whose message
+names the file, the key, what was expected and what was found.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+import burmester
+from burmester._burmester import Filemon, Task
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover - exercised on Python < 3.11 only
+    import tomli as tomllib
+
+Point = Tuple[float, float]
+
+#: The default number of grid samples along the longer side of the view.
+DEFAULT_GRID = 400
+
+#: The built-in example (the same as the Rust ``burmester::example``):
+#: poses ``(x, y, angle in radians)``, the driven crank's fixed pivot, the view.
+EXAMPLE_POSES: Tuple[Tuple[float, float, float], ...] = (
+    (0.0, 0.0, 0.0),
+    (2.0, 0.5, 0.4),
+    (3.0, 2.0, 1.1),
+)
+EXAMPLE_DRIVEN_CENTER: Point = (4.0, -1.0)
+EXAMPLE_VIEW: Tuple[float, float, float, float] = (-8.0, 8.0, -8.0, 8.0)
+
+
+class TaskFileError(ValueError):
+    """A task file that cannot be used; the message says where and why."""
+
+
+@dataclass(frozen=True)
+class View:
+    """A rectangle of the plane and the grid of samples over it."""
+
+    xmin: float
+    xmax: float
+    ymin: float
+    ymax: float
+    nx: int = DEFAULT_GRID
+    ny: int = DEFAULT_GRID
+
+    @property
+    def extent(self) -> Tuple[float, float, float, float]:
+        """``(xmin, xmax, ymin, ymax)``, the order ``branch_map`` and ``imshow`` use."""
+        return (self.xmin, self.xmax, self.ymin, self.ymax)
+
+    @property
+    def grid(self) -> Tuple[int, int]:
+        """``(nx, ny)``."""
+        return (self.nx, self.ny)
+
+    def cell_centers(self) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+        """The sample coordinates ``(x, y)`` (1-D arrays of length nx and ny),
+        at cell centers as in :meth:`burmester.Filemon.branch_map`."""
+        x = self.xmin + (np.arange(self.nx) + 0.5) * (self.xmax - self.xmin) / self.nx
+        y = self.ymin + (np.arange(self.ny) + 0.5) * (self.ymax - self.ymin) / self.ny
+        return x, y
+
+
+@dataclass(frozen=True)
+class Limits:
+    """What an acceptable linkage must meet (used by the solution-space map).
+
+    ``min_transmission_deg``: the smallest transmission angle allowed at the
+    poses, degrees in [0, 90]. ``max_link_ratio``: the largest ratio of the
+    longest to the shortest link, at least 1. ``require_crank``: whether the
+    driving link must turn fully (crank-rocker or double-crank).
+    """
+
+    min_transmission_deg: float = 30.0
+    max_link_ratio: float = 10.0
+    require_crank: bool = False
+
+
+@dataclass(frozen=True)
+class TaskSpec:
+    """A loaded task: poses (angles in radians), driven dyad, view and limits."""
+
+    poses: Tuple[Tuple[float, float, float], ...]
+    driven_center: Point
+    view: View
+    limits: Limits = field(default_factory=Limits)
+    source: str = "<example>"
+
+    def task(self) -> Task:
+        """The :class:`burmester.Task` of the three poses."""
+        return Task(list(self.poses))
+
+    def filemon(self) -> Filemon:
+        """Filemon's construction for the driven dyad."""
+        return self.task().filemon(self.driven_center)
+
+
+def example() -> TaskSpec:
+    """The built-in example task (the one ``burmester map`` draws without a file)."""
+    x0, x1, y0, y1 = EXAMPLE_VIEW
+    return TaskSpec(
+        poses=EXAMPLE_POSES,
+        driven_center=EXAMPLE_DRIVEN_CENTER,
+        view=View(x0, x1, y0, y1),
+        source="<example>",
+    )
+
+
+def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> View:
+    """A square view around the poles, the task's points and both pivots of the
+    driven dyad, twice as wide as the box around them."""
+    task = filemon.task
+    pts: List[Point] = list(task.poles())
+    pts += [(p[0], p[1]) for p in task.poses]
+    pts += [filemon.driven_center, filemon.circle_point]
+    xs = [p[0] for p in pts]
+    ys = [p[1] for p in pts]
+    cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    half = max(max(xs) - min(xs), max(ys) - min(ys), task.scale)
+    return View(cx - half, cx + half, cy - half, cy + half, grid, grid)
+
+
+# ---------------------------------------------------------------------------
+# Parsing
+
+
+def _describe(value: object) -> str:
+    """What was found, for an error message: the value and its TOML type."""
+    kinds = {
+        bool: "a boolean",
+        int: "an integer",
+        float: "a float",
+        str: "a string",
+        list: "an array",
+        dict: "a table",
+    }
+    kind = kinds.get(type(value), type(value).__name__)
+    text = ("true" if value else "false") if isinstance(value, bool) else repr(value)
+    if len(text) > 40:
+        text = text[:37] + "..."
+    return f"{text} ({kind})"
+
+
+class _Reader:
+    """Reads values out of the parsed TOML, raising TaskFileError with context."""
+
+    def __init__(self, source: str) -> None:
+        self.source = source
+
+    def fail(self, where: str, message: str) -> TaskFileError:
+        return TaskFileError(f"{self.source}: {where}: {message}")
+
+    def table(self, doc: Mapping[str, Any], key: str, required: bool) -> Optional[Dict[str, Any]]:
+        if key not in doc:
+            if required:
+                raise self.fail(f"[{key}]", f"missing; add a [{key}] table")
+            return None
+        value = doc[key]
+        if not isinstance(value, dict):
+            raise self.fail(key, f"expected a table [{key}], found {_describe(value)}")
+        return value
+
+    def only_keys(self, where: str, table: Mapping[str, Any], allowed: Sequence[str]) -> None:
+        for key in table:
+            if key not in allowed:
+                hint = ""
+                if key in ("angle", "angle_rad", "theta", "phi"):
+                    hint = "; angles in task files are in degrees: use angle_deg"
+                expected = ", ".join(allowed)
+                raise self.fail(
+                    f"{where}.{key}", f"unknown key (expected one of: {expected}){hint}"
+                )
+
+    def number(self, where: str, value: object, what: str = "a number") -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise self.fail(where, f"expected {what}, found {_describe(value)}")
+        x = float(value)
+        if not math.isfinite(x):
+            raise self.fail(where, f"expected a finite number, found {value}")
+        return x
+
+    def required_number(self, where: str, table: Mapping[str, Any], key: str, what: str) -> float:
+        if key not in table:
+            raise self.fail(f"{where}.{key}", f"missing; expected {what}")
+        return self.number(f"{where}.{key}", table[key], what)
+
+    def point(self, where: str, value: object) -> Point:
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail(where, f"expected a point [x, y], found {_describe(value)}")
+        return (
+            self.number(f"{where}[0]", value[0], "a number (x)"),
+            self.number(f"{where}[1]", value[1], "a number (y)"),
+        )
+
+    def interval(self, where: str, value: object) -> Tuple[float, float]:
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail(where, f"expected [min, max], found {_describe(value)}")
+        lo = self.number(f"{where}[0]", value[0], "a number (min)")
+        hi = self.number(f"{where}[1]", value[1], "a number (max)")
+        if not lo < hi:
+            raise self.fail(where, f"expected min < max, found [{lo:g}, {hi:g}]")
+        return lo, hi
+
+    def grid(self, where: str, value: object) -> Tuple[int, int]:
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail(where, f"expected [nx, ny], found {_describe(value)}")
+        out = []
+        for i, n in enumerate(value):
+            if isinstance(n, bool) or not isinstance(n, int):
+                raise self.fail(f"{where}[{i}]", f"expected a whole number, found {_describe(n)}")
+            if not 2 <= n <= 20000:
+                raise self.fail(f"{where}[{i}]", f"expected 2 to 20000 samples, found {n}")
+            out.append(n)
+        return out[0], out[1]
+
+
+def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
+    """A :class:`TaskSpec` from a parsed TOML document (a dict).
+
+    Raises :class:`TaskFileError` naming ``source``, the key, what was
+    expected and what was found.
+    """
+    r = _Reader(source)
+    for key in doc:
+        if key not in ("pose", "driven", "view", "limits"):
+            hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
+            raise r.fail(key, f"unknown top-level key (expected [[pose]], [driven], [view], [limits]){hint}")
+
+    # [[pose]] x3
+    if "pose" not in doc:
+        raise r.fail("[[pose]]", "missing; give three [[pose]] tables with x, y and angle_deg")
+    raw_poses = doc["pose"]
+    if not isinstance(raw_poses, list) or not all(isinstance(p, dict) for p in raw_poses):
+        raise r.fail("pose", f"expected three [[pose]] tables, found {_describe(raw_poses)}")
+    if len(raw_poses) != 3:
+        raise r.fail("[[pose]]", f"expected exactly 3 poses, found {len(raw_poses)}")
+    poses = []
+    for k, p in enumerate(raw_poses, start=1):
+        where = f"pose {k}"
+        r.only_keys(where, p, ["x", "y", "angle_deg"])
+        x = r.required_number(where, p, "x", "a number (the coupler point's x)")
+        y = r.required_number(where, p, "y", "a number (the coupler point's y)")
+        a = r.required_number(where, p, "angle_deg", "a number (the coupler angle, degrees)")
+        poses.append((x, y, math.radians(a)))
+    try:
+        task = Task(poses)
+    except burmester.BurmesterError as e:
+        raise r.fail("[[pose]]", f"the three poses cannot be used: {e}") from None
+
+    # [driven]
+    driven = r.table(doc, "driven", required=True)
+    assert driven is not None
+    r.only_keys("driven", driven, ["center", "circle"])
+    if ("center" in driven) == ("circle" in driven):
+        found = "both" if "center" in driven else "neither"
+        raise r.fail(
+            "[driven]",
+            f"expected exactly one of center = [x, y] (the fixed pivot C0) or "
+            f"circle = [x, y] (the moving pivot C1 at pose 1), found {found}",
+        )
+    if "center" in driven:
+        center = r.point("driven.center", driven["center"])
+    else:
+        circle = r.point("driven.circle", driven["circle"])
+        try:
+            center = task.center_point(circle)
+        except burmester.BurmesterError as e:
+            raise r.fail("driven.circle", f"has no center point: {e}") from None
+    try:
+        filemon = task.filemon(center)
+    except burmester.BurmesterError as e:
+        raise r.fail("driven.center", f"cannot be used: {e}") from None
+
+    # [view]
+    view_t = r.table(doc, "view", required=False) or {}
+    r.only_keys("view", view_t, ["x", "y", "grid"])
+    if ("x" in view_t) != ("y" in view_t):
+        missing = "y" if "x" in view_t else "x"
+        raise r.fail(f"view.{missing}", "missing; give both x = [min, max] and y = [min, max], or neither")
+    if "x" in view_t:
+        xmin, xmax = r.interval("view.x", view_t["x"])
+        ymin, ymax = r.interval("view.y", view_t["y"])
+    else:
+        auto = default_view(filemon)
+        xmin, xmax, ymin, ymax = auto.extent
+    if "grid" in view_t:
+        nx, ny = r.grid("view.grid", view_t["grid"])
+    else:
+        w, h = xmax - xmin, ymax - ymin
+        nx = DEFAULT_GRID if w >= h else max(2, round(DEFAULT_GRID * w / h))
+        ny = DEFAULT_GRID if h >= w else max(2, round(DEFAULT_GRID * h / w))
+    view = View(xmin, xmax, ymin, ymax, nx, ny)
+
+    # [limits]
+    lim_t = r.table(doc, "limits", required=False) or {}
+    r.only_keys("limits", lim_t, ["min_transmission_deg", "max_link_ratio", "require_crank"])
+    defaults = Limits()
+    mu = defaults.min_transmission_deg
+    if "min_transmission_deg" in lim_t:
+        mu = r.number("limits.min_transmission_deg", lim_t["min_transmission_deg"], "a number of degrees")
+        if not 0.0 <= mu <= 90.0:
+            raise r.fail("limits.min_transmission_deg", f"expected degrees from 0 to 90, found {mu:g}")
+    ratio = defaults.max_link_ratio
+    if "max_link_ratio" in lim_t:
+        ratio = r.number("limits.max_link_ratio", lim_t["max_link_ratio"], "a number")
+        if ratio < 1.0:
+            raise r.fail("limits.max_link_ratio", f"expected a ratio of at least 1, found {ratio:g}")
+    crank = defaults.require_crank
+    if "require_crank" in lim_t:
+        crank = lim_t["require_crank"]
+        if not isinstance(crank, bool):
+            raise r.fail("limits.require_crank", f"expected true or false, found {_describe(crank)}")
+    limits = Limits(mu, ratio, crank)
+
+    return TaskSpec(tuple(poses), center, view, limits, source)
+
+
+def loads(text: str, source: str = "<task>") -> TaskSpec:
+    """A :class:`TaskSpec` from the text of a task file."""
+    try:
+        doc = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise TaskFileError(f"{source}: not valid TOML: {e}") from None
+    return parse_task(doc, source)
+
+
+def load(path: Union[str, Path]) -> TaskSpec:
+    """A :class:`TaskSpec` from a task file. Raises :class:`TaskFileError`
+    when the file cannot be read or is not a valid task."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise TaskFileError(f"{p}: no such file; give the path of a task file (.toml)") from None
+    except (OSError, UnicodeDecodeError) as e:
+        raise TaskFileError(f"{p}: cannot read it: {e}") from None
+    return loads(text, str(p))
+
+
+def dumps(spec: TaskSpec) -> str:
+    """The text of a task file for ``spec`` (angles written in degrees)."""
+    lines = [
+        "# burmester task file (TOML).",
+        "# Lengths in any one unit; angles in DEGREES, counter-clockwise from +x.",
+        "",
+    ]
+    for k, (x, y, a) in enumerate(spec.poses, start=1):
+        note = ": x, y where the coupler point is, angle_deg the coupler's angle" if k == 1 else ""
+        lines += [f"[[pose]]  # pose {k}{note}", f"x = {x!r}", f"y = {y!r}", f"angle_deg = {math.degrees(a)!r}", ""]
+    cx, cy = spec.driven_center
+    lines += [
+        "[driven]  # the driven dyad: its fixed pivot C0 (or circle = [x, y], its moving pivot at pose 1)",
+        f"center = [{cx!r}, {cy!r}]",
+        "",
+    ]
+    v = spec.view
+    lines += [
+        "[view]  # the driving crank's center-point plane: drawn, and searched for pivots",
+        f"x = [{v.xmin!r}, {v.xmax!r}]  # xmin, xmax",
+        f"y = [{v.ymin!r}, {v.ymax!r}]  # ymin, ymax",
+        f"grid = [{v.nx}, {v.ny}]  # samples along x and y",
+        "",
+    ]
+    lim = spec.limits
+    lines += [
+        "[limits]  # what an acceptable linkage must meet",
+        f"min_transmission_deg = {lim.min_transmission_deg!r}  # at the poses, degrees",
+        f"max_link_ratio = {lim.max_link_ratio!r}  # longest link / shortest link",
+        f"require_crank = {'true' if lim.require_crank else 'false'}  # the driving link turns fully",
+        "",
+    ]
+    return "\n".join(lines)

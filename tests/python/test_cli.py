@@ -1,0 +1,267 @@
+"""The command line: good and bad input, exit codes, messages, outputs."""
+
+import io
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import burmester
+from burmester import cli, taskfile
+from burmester.cli import main
+from burmester.pivots import rank_by_margin
+
+EXAMPLE_FILE = Path(__file__).resolve().parents[2] / "examples" / "task.toml"
+
+
+def run(*args, cwd=None):
+    """``python -m burmester ARGS`` in a subprocess: (exit code, stdout, stderr)."""
+    p = subprocess.run(
+        [sys.executable, "-m", "burmester", *map(str, args)], capture_output=True, text=True, cwd=cwd
+    )
+    return p.returncode, p.stdout, p.stderr
+
+
+def test_no_arguments_prints_help(capsys):
+    assert main([]) == 0
+    out = capsys.readouterr().out
+    for cmd in ("map", "pivots", "linkage", "solve", "example"):
+        assert cmd in out
+    assert "Without arguments, burmester prints this help" in out
+
+
+def test_example_command_writes_a_loadable_task(tmp_path, capsys):
+    assert main(["example"]) == 0
+    text = capsys.readouterr().out
+    assert text == EXAMPLE_FILE.read_text()
+    out = tmp_path / "t.toml"
+    assert main(["example", "-o", str(out)]) == 0
+    assert taskfile.load(out).view == taskfile.example().view
+    assert main(["example", "-o", str(out)]) == 2  # never overwrites
+    assert "exists" in capsys.readouterr().err
+
+
+# ---------------------------------------------------------------------------
+# solve
+
+
+def test_solve_one_position_matches_norton(capsys):
+    args = ["solve", "--ground", "100", "--crank", "40", "--coupler", "120", "--rocker", "80", "--theta2", "40"]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "crank-rocker" in out
+    assert "theta3 =    20.298 deg, theta4 =    57.325 deg" in out
+    assert "theta3 =   -60.978 deg, theta4 =   -98.005 deg" in out
+    assert main(args + ["--mode", "crossed"]) == 0
+    out = capsys.readouterr().out
+    assert "-60.978" in out and "20.298" not in out
+
+
+def test_solve_full_turn_table(capsys):
+    assert main(["solve"]) == 0  # no lengths: Norton's example
+    out = capsys.readouterr().out
+    assert "Example 4-1" in out and "crank-rocker" in out
+    assert main(["solve", "--ground", "4", "--crank", "1", "--coupler", "3", "--rocker", "3", "--step", "60"]) == 0
+    rows = [ln for ln in capsys.readouterr().out.splitlines() if ln.strip().startswith("60.0 |")]
+    assert "39.166" in rows[0] and "113.038" in rows[0] and "-66.962" in rows[0]
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["--ground", "3", "--crank", "2", "--coupler", "1.5", "--rocker", "1", "--theta2", "180"],
+         ["does not close at theta2 = 180 deg", "rocks within [-55.8, 55.8] deg"]),
+        (["--ground", "3"], ["missing --crank, --coupler, --rocker"]),
+        (["--ground", "0", "--crank", "2", "--coupler", "1.5", "--rocker", "1"], ["ground length", "greater than zero"]),
+        (["--ground", "10", "--crank", "1", "--coupler", "1", "--rocker", "1"], ["can never be assembled"]),
+        (["--theta2", "abc"], ["argument --theta2", "expected a number, got 'abc'"]),
+        (["--theta2", "inf"], ["finite"]),
+        (["--mode", "sideways"], ["argument --mode", "invalid choice"]),
+        (["--step", "0"], ["--step must be more than 0"]),
+    ],
+)
+def test_solve_bad_input(args, words, capsys):
+    assert main(["solve", *args]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    for w in words:
+        assert w in err, (w, err)
+
+
+def test_solve_help_says_degrees(capsys):
+    assert main(["solve", "--help"]) == 0
+    out = capsys.readouterr().out
+    assert "DEGREES" in out and "--mode {open,crossed}" in out
+
+
+# ---------------------------------------------------------------------------
+# pivots
+
+
+def test_pivots_table_and_json(capsys):
+    assert main(["pivots", str(EXAMPLE_FILE), "--top", "3"]) == 0
+    table = capsys.readouterr().out.splitlines()
+    assert table[0].startswith(f"Driving pivots A0 for {EXAMPLE_FILE}")
+    assert [ln.split("|")[0].strip() for ln in table[2:5]] == ["1", "2", "3"]
+
+    assert main(["pivots", "--top", "4", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    pivots = doc["pivots"]
+    assert len(pivots) == 4
+    margins = [p["margin"] for p in pivots]
+    assert margins == sorted(margins, reverse=True) and margins[-1] > 0
+    f = taskfile.example().filemon()
+    for p in pivots:
+        center = tuple(p["center"])
+        assert f.is_branch_free(center)
+        assert f.margin(center) == pytest.approx(p["margin"], rel=1e-4)
+        sfb = f.four_bar(center)
+        fb = sfb.fourbar
+        assert [p["ground"], p["crank"], p["coupler"], p["rocker"]] == pytest.approx(list(fb.lengths))
+        assert p["grashof"] == fb.grashof()
+        mus = [math.degrees(fb.transmission_angle(t, m)) for t, m in zip(sfb.input_angles, sfb.modes)]
+        assert p["transmission_deg"] == pytest.approx(mus)
+        assert ("transmission" in " ".join(p["violations"])) == (min(mus) < 30.0)
+    # The pivots are apart, not neighbouring grid cells.
+    pts = np.array([p["center"] for p in pivots])
+    d = np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
+    assert d[np.triu_indices(4, 1)].min() >= 1.6 - 1e-9
+
+
+def test_pivots_rank_matches_the_margin_map():
+    spec = taskfile.example()
+    f = spec.filemon()
+    v = spec.view
+    mm = f.margin_map(*v.extent, v.nx, v.ny)
+    (best,) = rank_by_margin(f, v, 1, margin=mm)
+    assert best.margin == pytest.approx(float(mm.max()))
+
+
+# ---------------------------------------------------------------------------
+# map and linkage (need matplotlib)
+
+
+def test_map_writes_the_center_plane(tmp_path):
+    pytest.importorskip("matplotlib")
+    from PIL import Image
+
+    out = tmp_path / "map.png"
+    code, stdout, stderr = run("map", "-o", out, "--grid", "120", "90", "--dpi", "50")
+    assert code == 0, stderr
+    m = taskfile.example().filemon().branch_map(-8, 8, -8, 8, 120, 90)
+    assert f"{100 * m.mean():.1f}% of the 120 x 90 grid is branch-free" in stdout
+    with Image.open(out) as im:
+        assert im.format == "PNG" and 200 < im.width < 800
+
+
+def test_map_of_a_task_file_with_pivots_and_the_circle_plane(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "c.svg"
+    assert main(["map", str(EXAMPLE_FILE), "--plane", "circle", "-o", str(out)]) == 0
+    assert out.read_text().lstrip().startswith("<?xml")
+    assert main(["map", "--pivots", "3", "--grid", "80", "80", "-o", str(tmp_path / "p.png")]) == 0
+    assert "branch-free" in capsys.readouterr().out
+
+
+def test_linkage_still_and_animated(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    from PIL import Image
+
+    assert main(["linkage", "--pivot", "-7.98", "-5.18", "-o", str(tmp_path / "l.png")]) == 0
+    assert "double-rocker, branch-free" in capsys.readouterr().out
+    gif = tmp_path / "l.gif"
+    assert main(["linkage", "--frames", "6", "-o", str(gif)]) == 0
+    with Image.open(gif) as im:
+        assert im.n_frames > 6
+    assert main(["linkage", "--pivot", "0", "0", "-o", str(tmp_path / "d.gif")]) == 2
+    assert "branch defect" in capsys.readouterr().err
+
+
+def bad_task(tmp_path, old, new):
+    text = EXAMPLE_FILE.read_text()
+    assert old in text
+    path = tmp_path / "bad.toml"
+    path.write_text(text.replace(old, new, 1))
+    return path
+
+
+@pytest.mark.parametrize("command", ["map", "pivots"])
+def test_bad_task_files_exit_2_with_one_line(tmp_path, command):
+    cases = [
+        (("angle_deg = 22.918311805232932", 'angle_deg = "x"'), "pose 2.angle_deg: expected a number"),
+        (("center = [4.0, -1.0]", "centre = [4.0, -1.0]"), "driven.centre: unknown key"),
+        (("grid = [400, 400]", "grid = [400]"), "view.grid: expected [nx, ny]"),
+        (("max_link_ratio = 10.0", "max_link_ratio = -1"), "limits.max_link_ratio"),
+        (("[[pose]]  # pose 3", "[[pose]  # pose 3"), "not valid TOML"),
+    ]
+    for (old, new), words in cases:
+        path = bad_task(tmp_path, old, new)
+        code, out, err = run(command, path, "-o" if command == "map" else "--top", tmp_path / "m.png" if command == "map" else "2")
+        assert code == 2, (old, err)
+        assert err.startswith(f"burmester {command}: error: {path}: ")
+        assert words in err and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+        assert out == ""
+
+
+def test_other_bad_input_exits_2(tmp_path):
+    code, _, err = run("map", tmp_path / "none.toml")
+    assert code == 2 and "none.toml: no such file" in err
+    code, _, err = run("map", "--grid", "10", "x")
+    assert code == 2 and "argument --grid" in err and len(err.strip().splitlines()) == 1
+    code, _, err = run("frobnicate")
+    assert code == 2 and "invalid choice" in err
+    code, _, err = run("pivots", "--top", "0")
+    assert code == 2 and "at least 1" in err
+
+
+def test_bad_output_files_exit_2(tmp_path):
+    pytest.importorskip("matplotlib")
+    code, _, err = run("map", "-o", tmp_path / "no" / "dir" / "m.png", "--grid", "20", "20")
+    assert code == 2 and "cannot write" in err and "Traceback" not in err
+    code, _, err = run("map", "-o", tmp_path / "m.xyz", "--grid", "20", "20")
+    assert code == 2 and "xyz" in err and "Traceback" not in err
+
+
+def test_map_without_matplotlib_exits_1_and_says_what_to_install():
+    code = (
+        "import sys; sys.modules['matplotlib'] = None\n"
+        "from burmester.cli import main\n"
+        "sys.exit(main(['map', '-o', 'never.png']))\n"
+    )
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert p.returncode == 1
+    assert 'pip install "burmester[plot]"' in p.stderr and "Traceback" not in p.stderr
+
+
+# ---------------------------------------------------------------------------
+# Sweeping in bands with a progress bar
+
+
+def test_banded_sweep_is_the_single_sweep():
+    spec = taskfile.example()
+    f = spec.filemon()
+    v = taskfile.View(-8.0, 8.0, -8.0, 8.0, 130, 97)
+    seen = []
+    banded = cli.sweep(f, v, "branch", progress=seen.append, bands=7)
+    whole = f.branch_map(*v.extent, v.nx, v.ny)
+    assert seen == sorted(seen) and seen[-1] == 1.0 and len(seen) == 7
+    mm = f.margin_map(*v.extent, v.nx, v.ny)
+    differ = banded != whole
+    assert np.all(np.abs(mm[differ]) < 1e-9)  # only points on a curve could differ
+    assert differ.sum() == 0
+    margin = cli.sweep(f, v, "margin", progress=lambda _: None, bands=5)
+    assert np.allclose(margin, mm, atol=1e-6)
+
+
+def test_progress_bar_draws_in_place():
+    buf = io.StringIO()
+    bar = cli.ProgressBar(buf, "burmester: branch map", width=10)
+    for x in (0.0, 0.5, 1.0):
+        bar(x)
+    text = buf.getvalue()
+    assert text.count("\r") == 3 and text.endswith("[##########] 100%\n")
+    assert "[#####     ]  50%" in text

@@ -1,0 +1,142 @@
+"""Task files (TOML): what a good file gives, and what a bad one says."""
+
+import math
+from pathlib import Path
+
+import pytest
+
+import burmester
+from burmester import taskfile
+from burmester.taskfile import Limits, TaskFileError, View
+
+EXAMPLE_FILE = Path(__file__).resolve().parents[2] / "examples" / "task.toml"
+
+GOOD = """
+[[pose]]
+x = 0
+y = 0.0
+angle_deg = 0.0
+[[pose]]
+x = 2.0
+y = 0.5
+angle_deg = 22.918311805232932
+[[pose]]
+x = 3.0
+y = 2.0
+angle_deg = 63.02535746439056
+[driven]
+center = [4.0, -1.0]
+[view]
+x = [-8.0, 8.0]
+y = [-6.0, 6.0]
+grid = [200, 150]
+[limits]
+min_transmission_deg = 40
+max_link_ratio = 6.5
+require_crank = true
+"""
+
+
+def test_good_file():
+    spec = taskfile.loads(GOOD, "good.toml")
+    assert [p[:2] for p in spec.poses] == [(0.0, 0.0), (2.0, 0.5), (3.0, 2.0)]
+    assert [p[2] for p in spec.poses] == pytest.approx([0.0, 0.4, 1.1], abs=1e-15)
+    assert spec.driven_center == (4.0, -1.0)
+    assert spec.view == View(-8.0, 8.0, -6.0, 6.0, 200, 150)
+    assert spec.limits == Limits(40.0, 6.5, True)
+    assert spec.filemon().circle_point == pytest.approx(
+        burmester.Task([(0, 0, 0), (2, 0.5, 0.4), (3, 2, 1.1)]).circle_point((4.0, -1.0))
+    )
+
+
+def test_example_file_is_the_built_in_example():
+    spec = taskfile.load(EXAMPLE_FILE)
+    ex = taskfile.example()
+    assert spec.view == ex.view and spec.limits == ex.limits
+    assert spec.driven_center == ex.driven_center
+    for p, q in zip(spec.poses, ex.poses):
+        assert p == pytest.approx(q, abs=1e-15)
+    assert taskfile.loads(taskfile.dumps(ex)).view == ex.view
+
+
+def test_optional_sections_and_the_driven_circle_point():
+    minimal = GOOD.split("[view]")[0]
+    spec = taskfile.loads(minimal)
+    assert spec.limits == Limits()
+    v = spec.view  # a default square view around the poles and the pivots
+    assert v.xmax - v.xmin == pytest.approx(v.ymax - v.ymin) and (v.nx, v.ny) == (400, 400)
+    for p in list(spec.task().poles()) + [spec.driven_center]:
+        assert v.xmin < p[0] < v.xmax and v.ymin < p[1] < v.ymax
+    # The driven dyad by its circle point gives the same C0.
+    c1 = spec.filemon().circle_point
+    by_circle = taskfile.loads(minimal.replace("center = [4.0, -1.0]", f"circle = [{c1[0]!r}, {c1[1]!r}]"))
+    assert by_circle.driven_center == pytest.approx((4.0, -1.0), abs=1e-9)
+    # A non-square view gets square grid cells.
+    wide = taskfile.loads(minimal + "[view]\nx = [0.0, 20.0]\ny = [0.0, 5.0]\n")
+    assert (wide.view.nx, wide.view.ny) == (400, 100)
+
+
+def edit(old, new):
+    assert old in GOOD
+    return GOOD.replace(old, new, 1)
+
+
+BAD = [
+    # (file text, words the message must contain)
+    ("x = [", ["not valid TOML"]),
+    (GOOD.replace("[driven]\ncenter = [4.0, -1.0]\n", ""), ["[driven]", "missing"]),
+    ("[driven]\ncenter = [0, 0]\n", ["[[pose]]", "missing", "three"]),
+    (edit("[[pose]]\nx = 0\ny = 0.0\nangle_deg = 0.0\n", ""), ["exactly 3 poses", "found 2"]),
+    (edit("angle_deg = 22.918311805232932", 'angle_deg = "23"'),
+     ["pose 2.angle_deg", "expected a number", "'23' (a string)"]),
+    (edit("angle_deg = 22.918311805232932", "angle = 0.4"), ["pose 2.angle", "unknown key", "angle_deg"]),
+    (edit("x = 3.0\n", ""), ["pose 3.x", "missing"]),
+    (edit("y = 0.5", "y = true"), ["pose 2.y", "expected a number", "true (a boolean)"]),
+    (edit("y = 0.5", "y = nan"), ["pose 2.y", "finite"]),
+    (edit("angle_deg = 22.918311805232932", "angle_deg = 0.0"), ["[[pose]]", "pure translation"]),
+    (edit("center = [4.0, -1.0]", "center = [4.0]"), ["driven.center", "expected a point [x, y]"]),
+    (edit("center = [4.0, -1.0]", "center = [4.0, -1.0]\ncircle = [1.0, 1.0]"), ["[driven]", "exactly one", "both"]),
+    (edit("center = [4.0, -1.0]", "center = [-0.23328871889672342, 5.183154875586894]"),
+     ["driven.center", "cannot be used", "pole P12"]),
+    (edit("x = [-8.0, 8.0]", "x = [8.0, -8.0]"), ["view.x", "min < max", "found [8, -8]"]),
+    (edit("y = [-6.0, 6.0]\n", ""), ["view.y", "missing", "both"]),
+    (edit("grid = [200, 150]", "grid = [200.5, 150]"), ["view.grid[0]", "whole number", "200.5 (a float)"]),
+    (edit("grid = [200, 150]", "grid = [200, 1]"), ["view.grid[1]", "2 to 20000", "found 1"]),
+    (edit("min_transmission_deg = 40", "min_transmission_deg = 120"),
+     ["limits.min_transmission_deg", "0 to 90", "found 120"]),
+    (edit("max_link_ratio = 6.5", "max_link_ratio = 0.5"), ["limits.max_link_ratio", "at least 1", "0.5"]),
+    (edit("require_crank = true", 'require_crank = "yes"'),
+     ["limits.require_crank", "true or false", "'yes' (a string)"]),
+    (edit("require_crank = true", "min_transmission = 30"), ["limits.min_transmission", "unknown key"]),
+    (GOOD + "\n[poses]\nx = 1\n", ["poses", "unknown top-level key", "[[pose]]"]),
+]
+
+
+@pytest.mark.parametrize("text, words", BAD)
+def test_bad_files_say_which_key_what_was_expected_and_found(text, words):
+    with pytest.raises(TaskFileError) as info:
+        taskfile.loads(text, "bad.toml")
+    msg = str(info.value)
+    assert msg.startswith("bad.toml: ") and "\n" not in msg
+    for w in words:
+        assert w in msg, (w, msg)
+
+
+def test_unreadable_files(tmp_path):
+    with pytest.raises(TaskFileError, match="no such file"):
+        taskfile.load(tmp_path / "missing.toml")
+    (tmp_path / "latin1.toml").write_bytes(b"# caf\xe9\n")
+    with pytest.raises(TaskFileError, match="cannot read"):
+        taskfile.load(tmp_path / "latin1.toml")
+
+
+def test_view_cell_centers_match_branch_map():
+    spec = taskfile.loads(GOOD)
+    f = spec.filemon()
+    v = spec.view
+    xs, ys = v.cell_centers()
+    m = f.branch_map(*v.extent, v.nx, v.ny)
+    for j in range(0, v.ny, 37):
+        for i in range(0, v.nx, 41):
+            assert m[j, i] == f.is_branch_free((xs[i], ys[j]))
+    assert math.isclose(xs[0], -8.0 + 16.0 / 400)
