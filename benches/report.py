@@ -178,6 +178,37 @@ SECTIONS.append(
 )
 
 
+SECTIONS.append(
+    Section(
+        title="Solution-space map (`branch_sweep/solution_map`)",
+        benches=[],
+        prefixes=["branch_sweep/solution_map/"],
+        ratios=[
+            Ratio(
+                "`solution_map` / `conic` branch map at 1024^2",
+                "branch_sweep/solution_map/1024",
+                "branch_sweep/conic/1024",
+                "<= 20",
+                lambda r: r <= 20.0,
+            ),
+            Ratio(
+                "`solution_map` / `direct` branch map at 1024^2",
+                "branch_sweep/solution_map/1024",
+                "branch_sweep/direct/1024",
+                "(no goal)",
+                lambda r: True,
+            ),
+        ],
+        note=(
+            "The full designer's map (branch-free flag from the conic sweep, Grashof "
+            "class, input type, order and circuit, exact minimum transmission angle over "
+            "the travel, link ratio, acceptable mask; no constraints) for the built-in "
+            "example, measured in the `branch_sweep` run beside the branch-only sweeps."
+        ),
+    )
+)
+
+
 @dataclass
 class Figure:
     id: str

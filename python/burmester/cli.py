@@ -28,7 +28,7 @@ import numpy.typing as npt
 
 import burmester
 from burmester import taskfile
-from burmester.pivots import Pivot, rank_by_margin
+from burmester.pivots import Pivot, rank_by_margin, rank_pivots, solution_map
 from burmester.taskfile import TaskFileError, TaskSpec, View
 
 if TYPE_CHECKING:
@@ -183,39 +183,63 @@ def cmd_map(args: argparse.Namespace) -> int:
     else:
         free = sweep(filemon, spec.view, "branch", args.method, _progress_for(spec.view, "branch map"))
         pivots = None
+        acceptable = transmission = None
+        smap = None
+        if args.design or args.pivots > 0:
+            smap = solution_map(filemon, spec.view, spec.limits)
+        if args.design and smap is not None:
+            acceptable = smap.acceptable
+            transmission = np.degrees(smap.min_transmission)
         if args.pivots > 0:
-            margin = sweep(filemon, spec.view, "margin", progress=_progress_for(spec.view, "margin map"))
-            pivots = [p.center for p in rank_by_margin(filemon, spec.view, args.pivots, margin=margin)]
-        ax = plot.center_plane(filemon, spec.view, free=free, pivots=pivots)
+            ranked = rank_pivots(filemon, spec.view, spec.limits, args.pivots, smap=smap)
+            if not ranked:
+                margin = sweep(filemon, spec.view, "margin", progress=_progress_for(spec.view, "margin map"))
+                ranked = rank_by_margin(filemon, spec.view, args.pivots, margin=margin)
+            pivots = [p.center for p in ranked]
+        ax = plot.center_plane(
+            filemon, spec.view, free=free, pivots=pivots, acceptable=acceptable, transmission=transmission
+        )
         summary = (
             f"center-point plane of {spec.source}: {100 * free.mean():.1f}% of the "
             f"{spec.view.nx} x {spec.view.ny} grid is branch-free"
         )
+        if smap is not None:
+            summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
     _save(ax.figure, args.output, args.dpi)
     print(f"wrote {args.output}: {summary}")
     return 0
 
 
-def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot]) -> str:
+def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], acceptable: bool = True) -> str:
     """The text table of ``burmester pivots``."""
+    head = (
+        "ranked by the minimum transmission angle over the travel (acceptable under the limits)"
+        if acceptable
+        else "none meets the limits: branch-free pivots ranked by margin (distance to the "
+        "branch-defect boundary)"
+    )
     lines = [
-        f"Driving pivots A0 for {spec.source}, ranked by margin (distance to the branch-defect boundary)",
+        f"Driving pivots A0 for {spec.source}, {head}",
         f"{'#':>2} | {'A0 (x, y)':>18} | {'margin':>7} | {'ground':>7} {'crank':>7} {'coupler':>7} "
-        f"{'rocker':>7} | {'Grashof type':<14} | {'mu1':>4} {'mu2':>4} {'mu3':>4} | {'mode':<7} | limits",
+        f"{'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'mu1':>4} {'mu2':>4} {'mu3':>4} | "
+        f"{'drive':<10} | limits",
     ]
     for k, p in enumerate(pivots, start=1):
         g, c, cp, r = p.lengths
         mu = " ".join(f"{m:4.0f}" for m in p.transmission_deg)
+        mt = f"{p.min_transmission_deg:6.1f}" if p.min_transmission_deg is not None else f"{'-':>6}"
+        drive = f"{p.direction} {p.modes[0] or ''}".strip()
         bad = p.violations(spec.limits)
         lines.append(
             f"{k:>2} | {_fmt_point(p.center):>18} | {p.margin:7.3f} | {g:7.3f} {c:7.3f} {cp:7.3f} "
-            f"{r:7.3f} | {p.grashof:<14} | {mu} | {p.modes[0] or '':<7} | {'; '.join(bad) or 'ok'}"
+            f"{r:7.3f} | {p.grashof:<14} | {mt} | {mu} | {drive:<10} | {'; '.join(bad) or 'ok'}"
         )
     if not pivots:
         lines.append("(no branch-free pivot in the view)")
     lim = spec.limits
     lines.append(
-        f"mu: transmission angle at poses 1-3, degrees. limits: transmission >= "
+        "mu min: smallest transmission angle over the travel 1 -> 2 -> 3; mu1-3: at the poses "
+        f"(degrees). drive: input rotation and assembly mode. limits: transmission >= "
         f"{lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
         + (", crank input" if lim.require_crank else "")
     )
@@ -226,8 +250,11 @@ def cmd_pivots(args: argparse.Namespace) -> int:
     """``burmester pivots``: rank the branch-free driving pivots."""
     spec = _with_grid(_load(args.task), args.grid)
     filemon = spec.filemon()
-    margin = sweep(filemon, spec.view, "margin", progress=_progress_for(spec.view, "margin map"))
-    pivots = rank_by_margin(filemon, spec.view, args.top, spacing=args.spacing, margin=margin)
+    pivots = rank_pivots(filemon, spec.view, spec.limits, args.top, spacing=args.spacing)
+    acceptable = bool(pivots)
+    if not pivots:
+        margin = sweep(filemon, spec.view, "margin", progress=_progress_for(spec.view, "margin map"))
+        pivots = rank_by_margin(filemon, spec.view, args.top, spacing=args.spacing, margin=margin)
     if args.json:
         v, lim = spec.view, spec.limits
         doc = {
@@ -238,11 +265,12 @@ def cmd_pivots(args: argparse.Namespace) -> int:
                 "max_link_ratio": lim.max_link_ratio,
                 "require_crank": lim.require_crank,
             },
+            "ranking": "min_transmission" if acceptable else "margin",
             "pivots": [p.as_dict(lim) for p in pivots],
         }
         print(json.dumps(doc, indent=2))
     else:
-        print(pivot_table(spec, pivots))
+        print(pivot_table(spec, pivots, acceptable))
     return 0
 
 
@@ -251,7 +279,7 @@ def cmd_linkage(args: argparse.Namespace) -> int:
     spec = _load(args.task)
     filemon = spec.filemon()
     if args.pivot is None:
-        best = rank_by_margin(filemon, spec.view, 1)
+        best = rank_pivots(filemon, spec.view, spec.limits, 1) or rank_by_margin(filemon, spec.view, 1)
         if not best:
             raise UsageError("no branch-free driving pivot in the view; give one with --pivot X Y")
         pivot = best[0].center
@@ -412,7 +440,7 @@ def build_parser() -> argparse.ArgumentParser:
             "  burmester map -o map.png            center-point plane of the built-in example\n"
             "  burmester example > task.toml       a task file to edit\n"
             "  burmester map task.toml -o map.png  center-point plane of your task\n"
-            "  burmester pivots task.toml --top 5  the best branch-free driving pivots\n"
+            "  burmester pivots task.toml --top 5  the best acceptable driving pivots\n"
             "  burmester linkage task.toml -o linkage.gif\n"
             "  burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40\n"
             "Without arguments, burmester prints this help."
@@ -437,12 +465,18 @@ def build_parser() -> argparse.ArgumentParser:
                    help="grid samples along x and y (default: the task file's, or 400)")
     p.add_argument("--pivots", type=_count, default=0, metavar="N",
                    help="also mark the N best driving pivots (ranked as by 'burmester pivots')")
+    p.add_argument("--design", action="store_true",
+                   help="overlay the solution-space map: pivots acceptable under the task's limits "
+                   "shaded darker, contours of the minimum transmission angle over the travel")
     p.add_argument("--dpi", type=_positive_int, default=100, help="resolution, dots per inch (default: 100)")
     p.set_defaults(func=cmd_map)
 
-    p = sub.add_parser("pivots", help="rank the branch-free driving pivots",
-                       description="Rank branch-free driving pivots A0 by their distance to the "
-                       "branch-defect boundary (the margin map) and show each one's four-bar.")
+    p = sub.add_parser("pivots", help="rank the acceptable driving pivots",
+                       description="Rank the driving pivots A0 that are branch-free, pass the poses "
+                       "in order on one circuit and meet the task's limits, by the minimum "
+                       "transmission angle over the travel (the solution-space map), and show each "
+                       "one's four-bar. When none is acceptable, list branch-free pivots by their "
+                       "distance to the branch-defect boundary, with the limits they miss.")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("--top", type=_positive_int, default=5, help="how many pivots (default: 5)")
     p.add_argument("--spacing", type=_finite, default=None,
@@ -457,7 +491,7 @@ def build_parser() -> argparse.ArgumentParser:
                        "animate it driven through them (.gif, or .mp4 with ffmpeg).")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
-                   help="the driving crank's fixed pivot A0 (default: the best by margin)")
+                   help="the driving crank's fixed pivot A0 (default: the best, as by 'burmester pivots')")
     p.add_argument("-o", "--output", default="linkage.png", help="file to write; default: linkage.png")
     p.add_argument("--frames", type=_positive_int, default=60, help="animation frames from pose 1 to 3")
     p.add_argument("--fps", type=_positive_int, default=20, help="animation frames per second")

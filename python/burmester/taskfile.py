@@ -111,10 +111,11 @@ class View:
 class Limits:
     """What an acceptable linkage must meet (used by the solution-space map).
 
-    ``min_transmission_deg``: the smallest transmission angle allowed at the
-    poses, degrees in [0, 90]. ``max_link_ratio``: the largest ratio of the
-    longest to the shortest link, at least 1. ``require_crank``: whether the
-    driving link must turn fully (crank-rocker or double-crank).
+    ``min_transmission_deg``: the smallest transmission angle allowed over
+    the whole travel from pose 1 through pose 2 to pose 3, degrees in
+    [0, 90]. ``max_link_ratio``: the largest ratio of the longest to the
+    shortest link, at least 1. ``require_crank``: whether the driving link
+    must turn fully.
     """
 
     min_transmission_deg: float = 30.0
@@ -410,7 +411,7 @@ def dumps(spec: TaskSpec) -> str:
     lim = spec.limits
     lines += [
         "[limits]  # what an acceptable linkage must meet",
-        f"min_transmission_deg = {lim.min_transmission_deg!r}  # at the poses, degrees",
+        f"min_transmission_deg = {lim.min_transmission_deg!r}  # over the whole travel through the poses, degrees",
         f"max_link_ratio = {lim.max_link_ratio!r}  # longest link / shortest link",
         f"require_crank = {'true' if lim.require_crank else 'false'}  # the driving link turns fully",
         "",

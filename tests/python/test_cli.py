@@ -106,18 +106,29 @@ def test_pivots_table_and_json(capsys):
     assert main(["pivots", str(EXAMPLE_FILE), "--top", "3"]) == 0
     table = capsys.readouterr().out.splitlines()
     assert table[0].startswith(f"Driving pivots A0 for {EXAMPLE_FILE}")
+    assert "minimum transmission angle over the travel" in table[0]
     assert [ln.split("|")[0].strip() for ln in table[2:5]] == ["1", "2", "3"]
 
     assert main(["pivots", "--top", "4", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
+    assert doc["ranking"] == "min_transmission"
     pivots = doc["pivots"]
     assert len(pivots) == 4
-    margins = [p["margin"] for p in pivots]
-    assert margins == sorted(margins, reverse=True) and margins[-1] > 0
-    f = taskfile.example().filemon()
+    scores = [p["min_transmission_deg"] for p in pivots]
+    assert scores == sorted(scores, reverse=True)
+    spec = taskfile.example()
+    f = spec.filemon()
+    v = spec.view
+    smap = f.solution_map(*v.extent, v.nx, v.ny)
+    xs, ys = v.cell_centers()
     for p in pivots:
         center = tuple(p["center"])
         assert f.is_branch_free(center)
+        # Each listed pivot is an acceptable sample of the solution-space map.
+        i, j = int(np.argmin(abs(xs - center[0]))), int(np.argmin(abs(ys - center[1])))
+        assert smap.acceptable[j, i]
+        assert math.degrees(smap.min_transmission[j, i]) == pytest.approx(p["min_transmission_deg"], abs=1e-4)
+        assert p["violations"] == [] and p["direction"] in ("ccw", "cw")
         assert f.margin(center) == pytest.approx(p["margin"], rel=1e-4)
         sfb = f.four_bar(center)
         fb = sfb.fourbar
@@ -125,11 +136,26 @@ def test_pivots_table_and_json(capsys):
         assert p["grashof"] == fb.grashof()
         mus = [math.degrees(fb.transmission_angle(t, m)) for t, m in zip(sfb.input_angles, sfb.modes)]
         assert p["transmission_deg"] == pytest.approx(mus)
-        assert ("transmission" in " ".join(p["violations"])) == (min(mus) < 30.0)
+        # The minimum over the travel is at most the angle at any pose.
+        assert p["min_transmission_deg"] <= min(mus) + 1e-4
     # The pivots are apart, not neighbouring grid cells.
     pts = np.array([p["center"] for p in pivots])
     d = np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
     assert d[np.triu_indices(4, 1)].min() >= 1.6 - 1e-9
+
+
+def test_pivots_fall_back_to_the_margin_when_nothing_meets_the_limits(tmp_path, capsys):
+    text = EXAMPLE_FILE.read_text()
+    strict = text.replace("min_transmission_deg = 30.0", "min_transmission_deg = 89.9")
+    assert strict != text
+    path = tmp_path / "strict.toml"
+    path.write_text(strict)
+    assert main(["pivots", str(path), "--top", "2", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["ranking"] == "margin"
+    assert doc["pivots"] and all(p["violations"] for p in doc["pivots"])
+    assert main(["pivots", str(path), "--top", "2"]) == 0
+    assert "none meets the limits" in capsys.readouterr().out
 
 
 def test_pivots_rank_matches_the_margin_map():
@@ -156,6 +182,14 @@ def test_map_writes_the_center_plane(tmp_path):
     assert f"{100 * m.mean():.1f}% of the 120 x 90 grid is branch-free" in stdout
     with Image.open(out) as im:
         assert im.format == "PNG" and 200 < im.width < 800
+
+
+def test_map_design_overlay_reports_the_acceptable_share(tmp_path):
+    pytest.importorskip("matplotlib")
+    code, stdout, stderr = run("map", "--design", "--pivots", "2", "--grid", "60", "60", "-o", tmp_path / "d.png")
+    assert code == 0, stderr
+    smap = taskfile.example().filemon().solution_map(-8, 8, -8, 8, 60, 60)
+    assert f"{100 * np.mean(smap.acceptable):.1f}% acceptable" in stdout
 
 
 def test_map_of_a_task_file_with_pivots_and_the_circle_plane(tmp_path, capsys):
