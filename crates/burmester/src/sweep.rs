@@ -51,7 +51,7 @@
 use nalgebra::Point2;
 use rayon::prelude::*;
 
-use crate::conic::{Conic, Viewport};
+use crate::conic::{Conic, FAR, Viewport};
 use crate::error::{InvalidInput, Result};
 use crate::filemon::{Filemon, Method};
 
@@ -205,6 +205,14 @@ impl Local {
     fn y(&self, grid: &Grid, j: usize) -> f64 {
         (grid.y(j) - self.oy) / self.s
     }
+
+    /// Whether row `j` has a sample beyond [`FAR`] (local units): such rows
+    /// are classified point by point, as [`Filemon::classify`] scales them.
+    fn far_row(&self, grid: &Grid, j: usize) -> bool {
+        let near = |v: f64| v.abs() <= FAR;
+        let (first, last) = (self.xs[0], self.xs[self.xs.len() - 1]);
+        !(near(self.y(grid, j)) && near(first) && near(last))
+    }
 }
 
 /// Whether two conic values make a branch-free point.
@@ -307,6 +315,10 @@ impl Filemon {
                     .for_each(|(b, block)| {
                         for (r, row) in block.chunks_mut(nx).enumerate() {
                             let j = b * rows + r;
+                            if local.far_row(grid, j) {
+                                self.far_row_map(grid, j, row);
+                                continue;
+                            }
                             conic_row(&ca, &cb, local.y(grid, j), &local.xs, row);
                             self.clear_special_points(grid, j, row);
                         }
@@ -352,11 +364,22 @@ impl Filemon {
             .for_each(|(b, block)| {
                 for (r, row) in block.chunks_mut(nx).enumerate() {
                     let j = b * rows + r;
+                    if local.far_row(grid, j) {
+                        self.far_row_map(grid, j, row);
+                        continue;
+                    }
                     pointwise_row(&ca, &cb, local.y(grid, j), &local.xs, row);
                     self.clear_special_points(grid, j, row);
                 }
             });
         Ok(())
+    }
+
+    /// Row `j` by [`Filemon::classify`], point by point (far rows).
+    fn far_row_map(&self, grid: &Grid, j: usize, row: &mut [bool]) {
+        for (i, o) in row.iter_mut().enumerate() {
+            *o = self.classify_conic(grid.point(i, j)).is_free();
+        }
     }
 
     /// Sets the samples of row `j` that lie at a pole or at `C0` to
@@ -375,9 +398,12 @@ impl Filemon {
             if (p.y - y).abs() > tol {
                 continue;
             }
-            // Candidate columns around p.x (x_i is monotone in i).
-            let lo = ((p.x - tol - xmin) / grid.dx - 0.5).floor() - 1.0;
-            let hi = ((p.x + tol - xmin) / grid.dx - 0.5).ceil() + 2.0;
+            // Candidate columns around p.x (x_i is monotone in i), widened
+            // by how far rounding can move x_i (many columns when the grid
+            // is finer than the spacing of doubles there).
+            let slack = (4.0 * f64::EPSILON * (xmin.abs() + p.x.abs() + tol) / grid.dx).ceil();
+            let lo = ((p.x - tol - xmin) / grid.dx - 0.5).floor() - 1.0 - slack;
+            let hi = ((p.x + tol - xmin) / grid.dx - 0.5).ceil() + 2.0 + slack;
             let (lo, hi) = (lo.max(0.0) as usize, hi.clamp(0.0, grid.nx as f64) as usize);
             for i in lo..hi {
                 if (grid.x(i) - p.x).abs() <= tol {
@@ -431,6 +457,12 @@ impl Filemon {
             .for_each(|(b, block)| {
                 for (r, row) in block.chunks_mut(nx).enumerate() {
                     let j = b * rows + r;
+                    if local.far_row(grid, j) {
+                        for (i, o) in row.iter_mut().enumerate() {
+                            *o = self.margin(grid.point(i, j)) as f32;
+                        }
+                        continue;
+                    }
                     margin_row(&ca, &cb, local.y(grid, j), local.s, &local.xs, row);
                     self.for_special_columns(grid, j, |i| row[i] = -0.0);
                 }
@@ -447,6 +479,15 @@ impl Filemon {
         }
         let (o, s) = ca.frame();
         let v = (p - o) / s;
+        if !(v.x.abs().max(v.y.abs()) <= FAR) {
+            // Far away: the scaled evaluations (see `Conic::evaluate`).
+            let d = ca.distance_estimate(p).min(cb.distance_estimate(p));
+            return if free(ca.evaluate(p), cb.evaluate(p)) {
+                d
+            } else {
+                -d
+            };
+        }
         margin_at(&ca, &cb, v.x, v.y, s)
     }
 }
