@@ -590,14 +590,30 @@ pub fn filemon_classify(data: &[u8]) {
             let k = j * nx + i;
             let p = grid.point(i, j);
             let c = f.classify(p, Method::Conic).expect("finite point");
-            assert_eq!(map[k], c.is_free(), "branch map vs classify at {p:?}: {c:?} {:?} {:?} {:?} {:?}", f.conic_values(p), f.special_points(), grid, t.scale());
+            assert_eq!(
+                map[k],
+                c.is_free(),
+                "branch map vs classify at {p:?}: {c:?} {:?} {:?} {:?} {:?}",
+                f.conic_values(p),
+                f.special_points(),
+                grid,
+                t.scale()
+            );
             let m = margins[k];
             assert!(!m.is_nan());
             if !f.all_defective() {
                 assert_eq!(m > 0.0, map[k], "margin map sign at {p:?}: {m}");
             }
             let d = f.classify(p, Method::Direct).is_ok_and(|b| b.is_free());
-            assert_eq!(direct[k], d, "direct map vs classify at {p:?}: {} {:?} {:?} {:?}", f.all_defective(), f.classify(p, Method::Direct), f.fixed_pivot_images(), f.driven());
+            assert_eq!(
+                direct[k],
+                d,
+                "direct map vs classify at {p:?}: {} {:?} {:?} {:?}",
+                f.all_defective(),
+                f.classify(p, Method::Direct),
+                f.fixed_pivot_images(),
+                f.driven()
+            );
         }
     }
     // The curves on a small viewport.

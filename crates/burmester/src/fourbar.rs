@@ -761,7 +761,10 @@ impl FourBar {
                     name: "coupler point",
                     expected: "must stay within the representable range; pass a point nearer \
                                the coupler",
-                    found: format!("({}, {}), which reaches ({}, {})", local.x, local.y, p.x, p.y),
+                    found: format!(
+                        "({}, {}), which reaches ({}, {})",
+                        local.x, local.y, p.x, p.y
+                    ),
                 }
                 .into())
             }

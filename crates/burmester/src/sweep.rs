@@ -479,7 +479,8 @@ impl Filemon {
         }
         let (o, s) = ca.frame();
         let v = (p - o) / s;
-        if !(v.x.abs().max(v.y.abs()) <= FAR) {
+        let m = v.x.abs().max(v.y.abs());
+        if m > FAR || m.is_nan() {
             // Far away: the scaled evaluations (see `Conic::evaluate`).
             let d = ca.distance_estimate(p).min(cb.distance_estimate(p));
             return if free(ca.evaluate(p), cb.evaluate(p)) {
