@@ -350,6 +350,27 @@ impl Filemon {
     /// curves meet), is [`Branch::Boundary`]; the pole circle needs no
     /// special case.
     ///
+    /// # Tolerance bands
+    ///
+    /// Lengths in task sizes ([`Task::scale`]); `R` is the point's distance
+    /// from `P12`.
+    ///
+    /// ```text
+    /// conic     each conic's sign is the exact sign of the closed form (from the
+    ///           task's double parameters) at points farther than
+    ///           1e-13 (1 + R)^2 from the curve; Boundary only where a value is
+    ///           exactly zero or within 1e-12 of P12, P13, P23, C0
+    /// direct    agrees with conic farther than 1e-9 from the curves and the
+    ///           pole circle (the circle point's rounding grows near both)
+    /// simulate  agrees with direct where it is not Boundary; a pose counts as
+    ///           reached within 1e-7 of the linkage's size and 1e-7 rad
+    /// ```
+    ///
+    /// Inside a band a point may be classified either way. The conic band
+    /// is checked against an exact rational evaluation of the closed form
+    /// (the signs were exact beyond `5e-16 (1 + R)^2` in those runs), the
+    /// others against each other, in the crate's tests.
+    ///
     /// # Errors
     ///
     /// [`Method::Direct`] and [`Method::Simulate`] fail where the circle
