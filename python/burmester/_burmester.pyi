@@ -27,7 +27,12 @@ class BurmesterError(ValueError):
 
 class InvalidInputError(BurmesterError):
     """A number or name passed in is not acceptable: NaN, infinite, zero or
-    negative length, unknown name. The message says which and what to pass."""
+    negative length, an int too large for a float, a negative or too large
+    count or index, a ragged array, a number out of the supported range,
+    unknown name. The message says which and what to pass.
+
+    An argument of the wrong type (a string, ``None``, a complex number where
+    a real one goes) raises :class:`TypeError` instead."""
 
 class AssemblyError(BurmesterError):
     """The linkage cannot be assembled as asked: the loop does not close at
@@ -180,15 +185,19 @@ class Task:
 
     Raises :class:`InvalidInputError` for NaN or infinite numbers or not
     exactly three poses, and :class:`DegenerateError` when two poses are
-    equal, when two poses differ by a pure translation (their pole is at
-    infinity: rotate one pose a little), or when the three poses are
-    rotations about one point.
+    equal, when two poses differ by a pure translation (their angles agree
+    within 1e-6 rad, so their pole is at infinity: rotate one pose by at
+    least 1e-6 rad), or when the three poses are rotations about one point.
 
     The maps run in a frame attached to the pole triangle, so results do not
     depend on where the task is or how large it is.
     """
 
-    def __init__(self, poses: Sequence[Pose]) -> None: ...
+    def __init__(self, poses: Sequence[Sequence[float]]) -> None:
+        """Three poses, each a sequence of three numbers (tuples, lists or a
+        3 x 3 array). Coordinates must be at most 1e100 and angles at most 1e9
+        rad in magnitude, and two angles must differ by more than 1e-6 rad
+        (mod 2 pi)."""
     @property
     def poses(self) -> list[Pose]:
         """The three poses."""
