@@ -421,7 +421,9 @@ impl Filemon {
     /// ```
     ///
     /// positive where branch-free, negative (or `-0.0` on a curve)
-    /// elsewhere, in the plane's units, as `f32`. For contour plots and for
+    /// elsewhere, in the plane's units, as `f32`. Its sign is the branch map
+    /// even where the distance underflows (a free sample is then the
+    /// smallest positive `f32`). For contour plots and for
     /// ranking pivots by their distance to a defect. When every circle
     /// point is defective the map is `-inf` everywhere (there is no
     /// boundary).
@@ -459,7 +461,7 @@ impl Filemon {
                     let j = b * rows + r;
                     if local.far_row(grid, j) {
                         for (i, o) in row.iter_mut().enumerate() {
-                            *o = self.margin(grid.point(i, j)) as f32;
+                            *o = margin_f32(self.margin(grid.point(i, j)));
                         }
                         continue;
                     }
@@ -483,11 +485,7 @@ impl Filemon {
         if m > FAR || m.is_nan() {
             // Far away: the scaled evaluations (see `Conic::evaluate`).
             let d = ca.distance_estimate(p).min(cb.distance_estimate(p));
-            return if free(ca.evaluate(p), cb.evaluate(p)) {
-                d
-            } else {
-                -d
-            };
+            return signed_margin(d, free(ca.evaluate(p), cb.evaluate(p)));
         }
         margin_at(&ca, &cb, v.x, v.y, s)
     }
@@ -606,13 +604,35 @@ fn margin_at(ca: &Conic, cb: &Conic, x: f64, y: f64, s: f64) -> f64 {
 fn margin_of(ra: &RowGrad, rb: &RowGrad, x: f64, s: f64) -> f64 {
     let (da, ga) = ra.dist(x);
     let (db, gb) = rb.dist(x);
-    let d = da.min(db) * s;
-    if free(ga, gb) { d } else { -d }
+    signed_margin(da.min(db) * s, free(ga, gb))
+}
+
+/// `+d` where free, `-d` elsewhere; a free point's margin stays positive
+/// when `d` underflows to zero (its sign is the branch map).
+#[inline(always)]
+fn signed_margin(d: f64, is_free: bool) -> f64 {
+    if is_free {
+        d.max(f64::from_bits(1))
+    } else {
+        -d
+    }
+}
+
+/// A margin as `f32`, keeping its sign: a positive margin below the
+/// smallest `f32` becomes the smallest positive `f32`, a negative one `-0.0`.
+#[inline(always)]
+fn margin_f32(m: f64) -> f32 {
+    let v = m as f32;
+    if m > 0.0 {
+        v.max(f32::from_bits(1))
+    } else {
+        v
+    }
 }
 
 fn margin_row(ca: &Conic, cb: &Conic, y: f64, s: f64, xs: &[f64], out: &mut [f32]) {
     let (ra, rb) = (RowGrad::new(ca, y), RowGrad::new(cb, y));
     for (o, &x) in out.iter_mut().zip(xs) {
-        *o = margin_of(&ra, &rb, x, s) as f32;
+        *o = margin_f32(margin_of(&ra, &rb, x, s));
     }
 }
