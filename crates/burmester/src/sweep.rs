@@ -623,11 +623,7 @@ fn signed_margin(d: f64, is_free: bool) -> f64 {
 #[inline(always)]
 fn margin_f32(m: f64) -> f32 {
     let v = m as f32;
-    if m > 0.0 {
-        v.max(f32::from_bits(1))
-    } else {
-        v
-    }
+    if m > 0.0 { v.max(f32::from_bits(1)) } else { v }
 }
 
 fn margin_row(ca: &Conic, cb: &Conic, y: f64, s: f64, xs: &[f64], out: &mut [f32]) {
