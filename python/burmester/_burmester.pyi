@@ -80,8 +80,9 @@ class FourBar:
     ``"open"`` where it is positive, ``"crossed"`` where it is negative.
 
     Raises :class:`InvalidInputError` for a zero, negative, NaN or infinite
-    length, and :class:`AssemblyError` when the longest link is longer than
-    the other three together.
+    length or a linkage larger than 1e300 (origin distance plus lengths), and
+    :class:`AssemblyError` when the longest link is longer than the other
+    three together.
 
     >>> fb = FourBar(100.0, 40.0, 120.0, 80.0)   # Norton, Example 4-1
     >>> [round(math.degrees(a), 3) for a in fb.solve(math.radians(40))]
@@ -388,7 +389,8 @@ class Conic:
     def asymptotes(self) -> Optional[Tuple[Point, Point, Point]]:
         """For a hyperbola: ``(center, direction1, direction2)``."""
     def evaluate(self, point: Point) -> float:
-        """The value at a point (zero on the curve)."""
+        """The value at a point (zero on the curve), up to a positive factor;
+        finite for every finite point (far points are evaluated scaled)."""
     def __call__(self, point: Point) -> float: ...
     def evaluate_many(self, points: ArrayLike) -> FloatArray:
         """The values at an array of points of shape ``(..., 2)``."""
