@@ -75,7 +75,7 @@ fn the_margin_map_keeps_its_sign_where_the_distance_underflows() {
         angle: p.angle,
     }))
     .unwrap();
-    let f = t.filemon(Point2::new(4.0 * k, -1.0 * k)).unwrap();
+    let f = t.filemon(Point2::new(4.0 * k, -k)).unwrap();
     let g = Grid::from_bounds(-8.0 * k, 8.0 * k, -8.0 * k, 8.0 * k, 64, 48).unwrap();
     let map = f.branch_map(&g, Method::Conic);
     let margins = f.margin_map(&g);
