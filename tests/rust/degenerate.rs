@@ -9,7 +9,7 @@
 //! | rotations about one point (coincident poles) | rejected: `DegenerateError::CoincidentPoles` |
 //! | collinear poles | only in the translation limit (rejected); `CircleOrLine::Line` for collinear points given directly |
 //! | driven center point on the pole circle (`C1` at infinity) | `Task::filemon` fails with `DegenerateError::AtInfinity` (with the direction); just off it, everything works |
-//! | a Filemon line tangent to the image-pole circle | the conic is a `Parabola` (no center, no asymptotes, one branch) |
+//! | a Filemon line tangent to the image-pole circle | the conic is a `Parabola` (no center, no asymptotes, one branch), for `line_to_conic` and in an actual construction |
 //! | a driving center point at a pole or at `C0` | `conic`: `Boundary`; `direct`: `Undefined` at a pole, `Boundary` at `C0`; `simulate`: an error; maps `false`, margin `-0.0` |
 //! | points on the curves | `Boundary` only where a value is exactly zero; either side within the band, the right side beyond it |
 //! | tasks at scale 1e-6 and 1e6 | the same answers, scaled |
@@ -232,6 +232,53 @@ fn a_line_tangent_to_the_image_pole_circle_gives_a_parabola() {
         // Property 1 on either side of the tangent.
         assert_eq!(conic(radius * (1.0 + 1e-9)).kind(), ConicKind::Ellipse);
         assert_eq!(conic(radius * (1.0 - 1e-9)).kind(), ConicKind::Hyperbola);
+    }
+}
+
+/// The same in an actual construction: a driven center point chosen (by
+/// bisection along a line) so that a Filemon line is tangent to the
+/// image-pole circle.
+#[test]
+fn a_filemon_line_tangent_to_the_image_pole_circle_gives_a_parabola() {
+    let t = example();
+    let CircleOrLine::Circle { center, radius } = t.image_pole_circle() else {
+        panic!()
+    };
+    let c0_at = |s: f64| C0 + Vector2::new(1.0, 0.7) * s;
+    // Line 1's distance from the circle's center, minus the radius.
+    let gap = |s: f64| {
+        let f = t.filemon(c0_at(s)).unwrap();
+        let l = f.all_lines()[0];
+        let d = l.direction.normalize();
+        (d.x * (center.y - l.point.y) - d.y * (center.x - l.point.x)).abs() - radius
+    };
+    let (mut a, mut b) = (-0.9, -0.5);
+    assert!(gap(a) * gap(b) < 0.0);
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        if gap(m) * gap(a) <= 0.0 {
+            b = m;
+        } else {
+            a = m;
+        }
+    }
+    let f = t.filemon(c0_at(a)).unwrap();
+    let (extremes, _) = f.extreme_poses().unwrap();
+    assert!(extremes.contains(&1), "line 1 is a Filemon line");
+    let g = f.line_conic(1);
+    assert_eq!(g.kind(), ConicKind::Parabola);
+    assert!(g.center().is_none() && g.asymptotes().is_none());
+    let vp = Viewport::new(-10.0, 10.0, -10.0, 10.0).unwrap();
+    assert_eq!(g.polylines(&vp, None).len(), 1);
+    // The classifiers still agree off the band.
+    for y in points(Point2::new(0.0, 0.0), 8.0, 300) {
+        if f.margin(y).abs() > 1e-7 * t.scale() && t.pole_circle().side(y).abs() > 1e-6 {
+            assert_eq!(
+                f.classify(y, Method::Conic).unwrap(),
+                f.classify(y, Method::Direct).unwrap(),
+                "at {y}"
+            );
+        }
     }
 }
 
