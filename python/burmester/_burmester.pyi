@@ -42,7 +42,12 @@ class BurmesterError(ValueError):
 
 class InvalidInputError(BurmesterError):
     """A number or name passed in is not acceptable: NaN, infinite, zero or
-    negative length, unknown name. The message says which and what to pass."""
+    negative length, an int too large for a float, a negative or too large
+    count or index, a ragged array, a number out of the supported range,
+    unknown name. The message says which and what to pass.
+
+    An argument of the wrong type (a string, ``None``, a complex number where
+    a real one goes) raises :class:`TypeError` instead."""
 
 class AssemblyError(BurmesterError):
     """The linkage cannot be assembled as asked: the loop does not close at
@@ -92,8 +97,9 @@ class FourBar:
     ``"open"`` where it is positive, ``"crossed"`` where it is negative.
 
     Raises :class:`InvalidInputError` for a zero, negative, NaN or infinite
-    length, and :class:`AssemblyError` when the longest link is longer than
-    the other three together.
+    length or a linkage larger than 1e300 (origin distance plus lengths), and
+    :class:`AssemblyError` when the longest link is longer than the other
+    three together.
 
     >>> fb = FourBar(100.0, 40.0, 120.0, 80.0)   # Norton, Example 4-1
     >>> [round(math.degrees(a), 3) for a in fb.solve(math.radians(40))]
@@ -199,15 +205,19 @@ class Task:
 
     Raises :class:`InvalidInputError` for NaN or infinite numbers or not
     exactly three poses, and :class:`DegenerateError` when two poses are
-    equal, when two poses differ by a pure translation (their pole is at
-    infinity: rotate one pose a little), or when the three poses are
-    rotations about one point.
+    equal, when two poses differ by a pure translation (their angles agree
+    within 1e-6 rad, so their pole is at infinity: rotate one pose by at
+    least 1e-6 rad), or when the three poses are rotations about one point.
 
     The maps run in a frame attached to the pole triangle, so results do not
     depend on where the task is or how large it is.
     """
 
-    def __new__(cls, poses: Sequence[Pose]) -> Task: ...
+    def __new__(cls, poses: Sequence[Sequence[float]]) -> Task:
+        """Three poses, each a sequence of three numbers (tuples, lists or a
+        3 x 3 array). Coordinates must be at most 1e100 and angles at most 1e9
+        rad in magnitude, and two angles must differ by more than 1e-6 rad
+        (mod 2 pi)."""
     @property
     def poses(self) -> list[Pose]:
         """The three poses."""
@@ -453,7 +463,8 @@ class Conic:
     def asymptotes(self) -> Optional[Tuple[Point, Point, Point]]:
         """For a hyperbola: ``(center, direction1, direction2)``."""
     def evaluate(self, point: Point) -> float:
-        """The value at a point (zero on the curve)."""
+        """The value at a point (zero on the curve), up to a positive factor;
+        finite for every finite point (far points are evaluated scaled)."""
     def __call__(self, point: Point) -> float: ...
     def evaluate_many(self, points: ArrayLike) -> FloatArray:
         """The values at an array of points of shape ``(..., 2)``."""

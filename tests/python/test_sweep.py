@@ -74,5 +74,11 @@ def test_bad_grids_raise(f):
         f.branch_map(0.0, float("nan"), 0.0, 1.0, 10, 10)
     with pytest.raises(InvalidInputError, match="method"):
         f.branch_map(*VP, 10, 10, "fast")
-    with pytest.raises(OverflowError):
+    with pytest.raises(InvalidInputError, match="non-negative integer"):
         f.branch_map(*VP, -1, 10)
+    with pytest.raises(InvalidInputError, match="out of range"):
+        f.margin_map(*VP, 10, 2**70)
+    with pytest.raises(InvalidInputError, match="2\\^32"):
+        f.branch_map(*VP, 2**40, 2**40)
+    with pytest.raises(TypeError):
+        f.branch_map(*VP, 10.5, 10)

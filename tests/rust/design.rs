@@ -57,7 +57,12 @@ fn linkages(n: usize, seed_cases: &mut TestRunner) -> Vec<(Task, SynthesizedFour
             continue;
         };
         let Ok(fb) = t.four_bar(&a, &c) else { continue };
-        if fb.fourbar.lengths().iter().any(|l| !(1e-3..=200.0).contains(l)) {
+        if fb
+            .fourbar
+            .lengths()
+            .iter()
+            .any(|l| !(1e-3..=200.0).contains(l))
+        {
             continue;
         }
         out.push((t, fb));

@@ -220,3 +220,77 @@ fn all_defective_maps_are_false_and_minus_infinity() {
         break;
     }
 }
+
+/// The inverse of a similarity (test helper).
+fn inverse(sim: &burmester::Similarity, q: Point2<f64>) -> Point2<f64> {
+    let (s, c) = sim.angle.sin_cos();
+    let w = q - sim.offset;
+    let v = burmester::Vector2::new(c * w.x + s * w.y, -s * w.x + c * w.y) / sim.factor;
+    Point2::new(v.x, if sim.mirror { -v.y } else { v.y })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// The branch map is invariant under moving, rotating, scaling and
+    /// mirroring, up to resampling: the map of the transformed task on its
+    /// own (axis-aligned) grid equals `classify` of the original task at
+    /// the pulled-back samples, except within `1e-9` of the task's size of
+    /// a curve; and equals the original map at its nearest sample except
+    /// within a cell of a curve.
+    #[test]
+    fn the_branch_map_is_invariant_up_to_resampling(
+        seed in 0u32..1000, k in 1e-3f64..1e3, ang in -PI..PI,
+        ox in -100.0f64..100.0, oy in -100.0f64..100.0, mirror in any::<bool>(),
+    ) {
+        let mut runner = TestRunner::new_with_rng(
+            ProptestConfig::default(),
+            proptest::test_runner::TestRng::from_seed(
+                proptest::test_runner::RngAlgorithm::ChaCha,
+                &[seed as u8; 32],
+            ),
+        );
+        let f = filemon(&mut runner);
+        let t = f.task();
+        let mut sim = burmester::Similarity::new(k, ang, burmester::Vector2::new(ox, oy)).unwrap();
+        if mirror { sim = sim.mirrored(); }
+        let t2 = Task::new(t.poses().map(|p| sim.pose(&p))).unwrap();
+        let f2 = t2.filemon(sim.point(f.driven().center)).unwrap();
+        let n = 96;
+        let half = 8.0;
+        let g1 = Grid::from_bounds(-half, half, -half, half, n, n).unwrap();
+        let m1 = f.branch_map(&g1, Method::Conic);
+        // The transformed viewport's bounding box.
+        let corners = [(-half, -half), (half, -half), (-half, half), (half, half)]
+            .map(|(x, y)| sim.point(Point2::new(x, y)));
+        let xs = corners.map(|p| p.x);
+        let ys = corners.map(|p| p.y);
+        let fold = |v: [f64; 4], f: fn(f64, f64) -> f64, init: f64| v.iter().copied().fold(init, f);
+        let g2 = Grid::from_bounds(
+            fold(xs, f64::min, f64::INFINITY), fold(xs, f64::max, f64::NEG_INFINITY),
+            fold(ys, f64::min, f64::INFINITY), fold(ys, f64::max, f64::NEG_INFINITY), n, n,
+        ).unwrap();
+        let m2 = f2.branch_map(&g2, Method::Conic);
+        let cell = 2.0 * half / n as f64;
+        let mut compared = 0;
+        for j in 0..n {
+            for i in 0..n {
+                let p = inverse(&sim, g2.point(i, j));
+                if p.x.abs() >= half || p.y.abs() >= half { continue; }
+                let got = m2[j * n + i];
+                let margin = f.margin(p).abs();
+                if margin > 1e-9 * t.scale() {
+                    prop_assert_eq!(got, f.classify(p, Method::Conic).unwrap().is_free(), "at {}", p);
+                }
+                // Nearest sample of the original map.
+                let ii = (((p.x + half) / cell) as usize).min(n - 1);
+                let jj = (((p.y + half) / cell) as usize).min(n - 1);
+                if margin > cell * std::f64::consts::SQRT_2 {
+                    prop_assert_eq!(got, m1[jj * n + ii], "resampled at {}", p);
+                }
+                compared += 1;
+            }
+        }
+        prop_assert!(compared > n * n / 4, "{}", compared);
+    }
+}

@@ -391,8 +391,13 @@ proptest! {
     }
 
     /// Moving, rotating, scaling and mirroring the task moves, rotates,
-    /// scales and mirrors the poles, the maps, the conics' zero sets and
-    /// keeps the classifications.
+    /// scales and mirrors the poles, the image poles, the pole circles, the
+    /// maps and the conics' zero sets (the known points and points found on
+    /// the curves), and keeps the classifications (conic and direct), the
+    /// conics' kinds and which lines are the Filemon lines. Tolerances are
+    /// relative: `1e-9` of the task's size for the poles, `1e-7` for the
+    /// maps and zero sets; classifications are compared `1e-7` of the
+    /// task's size away from the curves.
     #[test]
     fn invariance_under_similarities(
         t in task(), c0 in point(), a0 in point(),
@@ -429,6 +434,53 @@ proptest! {
             let x = t.circle_point(a0).unwrap();
             let x2 = t2.circle_point(sim.point(a0)).unwrap();
             prop_assert!((sim.point(x) - x2).norm() < 1e-7 * k * (s + (x - a0).norm()) + 1e-9 * (ox.abs() + oy.abs()));
+        }
+        // The image poles, the pole circles and the triangle's angles (a
+        // mirror turns every angle the other way).
+        let slack = 1e-9 * k * s + 1e-12 * (ox.abs() + oy.abs());
+        for (p, q) in t.image_poles().iter().zip(t2.image_poles()) {
+            prop_assert!((sim.point(*p) - q).norm() < 1e-9 * k * (s + p.coords.norm()) + slack);
+        }
+        for (c1, c2) in [(t.pole_circle(), t2.pole_circle()), (t.image_pole_circle(), t2.image_pole_circle())] {
+            if let (CircleOrLine::Circle { center: a, radius: ra }, CircleOrLine::Circle { center: b, radius: rb }) = (c1, c2) {
+                prop_assert!((sim.point(a) - b).norm() < 1e-8 * k * (s + ra + a.coords.norm()) + slack);
+                prop_assert!((k * ra - rb).abs() < 1e-8 * k * (s + ra));
+            }
+        }
+        let sign = if mirror { -1.0 } else { 1.0 };
+        for (a, b) in t.pole_triangle_angles().iter().zip(t2.pole_triangle_angles()) {
+            prop_assert!(wrap_half(sign * a - b).abs() < 1e-8);
+        }
+        // Which lines are the Filemon lines, and the conics' kinds.
+        // (A mirror reverses their angular order.)
+        let sorted = |e: Option<([usize; 2], usize)>| e.map(|([a, b], m)| ([a.min(b), a.max(b)], m));
+        prop_assert_eq!(sorted(f.extreme_poses()), sorted(f2.extreme_poses()));
+        for kk in 1..=3 {
+            let (g, g2) = (f.line_conic(kk), f2.line_conic(kk));
+            let (q, ..) = g.local_coefficients();
+            let disc = (q[1] * q[1] - 4.0 * q[0] * q[2]) / (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+            if disc.abs() > 1e-6 {
+                prop_assert_eq!(g.kind(), g2.kind());
+            }
+            // Zero sets beyond the known points: points of g, found on a
+            // line through a0, map onto g2.
+            for dir in [Vector2::new(1.0, 0.3), Vector2::new(-0.2, 1.0)] {
+                for p in g.intersect_line(&Line { point: a0, direction: dir }) {
+                    if (p - a0).norm() > 1e3 * s { continue; }
+                    let size = s + (p - t.poles()[0]).norm();
+                    prop_assert!(g2.distance_estimate(sim.point(p)) < 1e-7 * k * size, "{} off", p);
+                }
+            }
+        }
+        // The direct classification too, off the curves and the pole circle.
+        if let Some([ga, gb]) = f.conics() {
+            let away = ga.distance_estimate(a0).min(gb.distance_estimate(a0)) > 1e-7 * s;
+            if away && off_pole_circle(&t, a0) > 1e-6 && min_pole_distance(&t, a0) > 1e-6 {
+                prop_assert_eq!(
+                    f.classify(a0, Method::Direct).unwrap(),
+                    f2.classify(sim.point(a0), Method::Direct).unwrap()
+                );
+            }
         }
     }
 }

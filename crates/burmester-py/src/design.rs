@@ -9,7 +9,7 @@ use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::conv::{PyPoint, pt};
+use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::{IntoPy, InvalidInputError};
 use crate::synthesis::PySynthesizedFourBar;
 
@@ -37,7 +37,8 @@ impl MapOptions {
         };
         if !(0.0..=90.0).contains(&min_transmission_deg) {
             return Err(InvalidInputError::new_err(format!(
-                "min_transmission_deg must be between 0 and 90 degrees, got {min_transmission_deg}"
+                "min_transmission_deg must be between 0 and 90 degrees, got {min_transmission_deg}; \
+                 pass an angle in that range"
             )));
         }
         let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<Point2<f64>>>();
@@ -186,32 +187,44 @@ impl PySolutionMap {
             burmester::Varying::Driven { .. } => "driven",
         }
     }
-    fn point(&self, j: usize, i: usize) -> PyResult<(f64, f64)> {
+    fn point(&self, j: Count, i: Count) -> PyResult<(f64, f64)> {
+        let (j, i) = (j.0, i.0);
         let g = &self.context.grid;
         if i >= g.nx() || j >= g.ny() {
             return Err(InvalidInputError::new_err(format!(
-                "sample ({j}, {i}) is outside the map of shape ({}, {})",
+                "sample ({j}, {i}) is outside the map of shape ({}, {}); pass indices within it",
                 g.ny(),
                 g.nx()
             )));
         }
         Ok(pt(g.point(i, j)))
     }
-    fn linkage(&self, j: usize, i: usize) -> PyResult<PySynthesizedFourBar> {
+    fn linkage(&self, j: Count, i: Count) -> PyResult<PySynthesizedFourBar> {
         let nx = self.context.grid.nx();
         self.point(j, i)?;
+        let (j, i) = (j.0, i.0);
         self.context
             .linkage(j * nx + i)
             .map(|inner| PySynthesizedFourBar { inner })
             .py()
     }
-    #[pyo3(signature = (k = 5, min_separation = None))]
+    #[pyo3(signature = (k = Count(5), min_separation = None),
+        text_signature = "($self, /, k=5, min_separation=None)")]
     fn best_pivots<'py>(
         &self,
         py: Python<'py>,
-        k: usize,
-        min_separation: Option<f64>,
+        k: Count,
+        min_separation: Option<Real>,
     ) -> PyResult<Bound<'py, PyList>> {
+        let (k, min_separation) = (k.0, min_separation.map(|r| r.0));
+        if let Some(s) = min_separation {
+            if !(s.is_finite() && s >= 0.0) {
+                return Err(InvalidInputError::new_err(format!(
+                    "min_separation must be a finite distance of at least 0, got {s}; pass one \
+                     (or None for the default)"
+                )));
+            }
+        }
         let acc = self.acceptable.bind(py).readonly();
         let mt = self.min_transmission.bind(py).readonly();
         let bf = self.branch_free.bind(py).readonly();

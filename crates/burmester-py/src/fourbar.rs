@@ -1,10 +1,10 @@
 //! `burmester.FourBar` and `burmester.Configuration`.
 
 use burmester::{AssemblyMode, Configuration, FourBar, InputRange, Point2};
-use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLikeDyn};
+use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::conv::{PyPoint, flatten, pt, to_numpy};
+use crate::conv::{FloatArray, PyPoint, Real, pt, to_numpy};
 use crate::errors::IntoPy;
 
 /// Parses `"open"` / `"crossed"`.
@@ -34,29 +34,37 @@ type Arrays<'py> = (
 #[pymethods]
 impl PyFourBar {
     #[new]
-    #[pyo3(signature = (ground, crank, coupler, rocker, *, origin = PyPoint(Point2::origin()), ground_angle = 0.0))]
+    #[pyo3(signature = (ground, crank, coupler, rocker, *, origin = PyPoint(Point2::origin()), ground_angle = Real(0.0)),
+        text_signature = "(ground, crank, coupler, rocker, *, origin=(0.0, 0.0), ground_angle=0.0)")]
     fn new(
-        ground: f64,
-        crank: f64,
-        coupler: f64,
-        rocker: f64,
+        ground: Real,
+        crank: Real,
+        coupler: Real,
+        rocker: Real,
         origin: PyPoint,
-        ground_angle: f64,
+        ground_angle: Real,
     ) -> PyResult<Self> {
-        FourBar::placed(ground, crank, coupler, rocker, origin.0, ground_angle)
-            .map(Self::from)
-            .py()
+        FourBar::placed(
+            ground.0,
+            crank.0,
+            coupler.0,
+            rocker.0,
+            origin.0,
+            ground_angle.0,
+        )
+        .map(Self::from)
+        .py()
     }
 
     #[staticmethod]
     fn from_pivots(
         input_pivot: PyPoint,
         output_pivot: PyPoint,
-        crank: f64,
-        coupler: f64,
-        rocker: f64,
+        crank: Real,
+        coupler: Real,
+        rocker: Real,
     ) -> PyResult<Self> {
-        FourBar::from_pivots(input_pivot.0, output_pivot.0, crank, coupler, rocker)
+        FourBar::from_pivots(input_pivot.0, output_pivot.0, crank.0, coupler.0, rocker.0)
             .map(Self::from)
             .py()
     }
@@ -100,14 +108,14 @@ impl PyFourBar {
     }
 
     #[pyo3(signature = (theta2, mode = "open"))]
-    fn solve(&self, theta2: f64, mode: &str) -> PyResult<(f64, f64)> {
-        let c = self.inner.solve(theta2, self::mode(mode)?).py()?;
+    fn solve(&self, theta2: Real, mode: &str) -> PyResult<(f64, f64)> {
+        let c = self.inner.solve(theta2.0, self::mode(mode)?).py()?;
         Ok((c.theta3, c.theta4))
     }
 
     #[pyo3(signature = (theta2, mode = "open"))]
-    fn configuration(&self, theta2: f64, mode: &str) -> PyResult<PyConfiguration> {
-        let c = self.inner.solve(theta2, self::mode(mode)?).py()?;
+    fn configuration(&self, theta2: Real, mode: &str) -> PyResult<PyConfiguration> {
+        let c = self.inner.solve(theta2.0, self::mode(mode)?).py()?;
         Ok(PyConfiguration { inner: c })
     }
 
@@ -115,11 +123,14 @@ impl PyFourBar {
     fn solve_many<'py>(
         &self,
         py: Python<'py>,
-        theta2s: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+        theta2s: FloatArray,
         mode: &str,
     ) -> PyResult<Arrays<'py>> {
         let mode = self::mode(mode)?;
-        let (flat, shape) = flatten(&theta2s);
+        let FloatArray {
+            values: flat,
+            shape,
+        } = theta2s;
         let n = flat.len();
         let fb = self.inner;
         let (t3, t4, ok) = py.detach(move || {
@@ -159,10 +170,10 @@ impl PyFourBar {
     }
 
     #[pyo3(signature = (theta2, mode = "open"))]
-    fn transmission_angle(&self, theta2: f64, mode: &str) -> PyResult<f64> {
+    fn transmission_angle(&self, theta2: Real, mode: &str) -> PyResult<f64> {
         Ok(self
             .inner
-            .solve(theta2, self::mode(mode)?)
+            .solve(theta2.0, self::mode(mode)?)
             .py()?
             .transmission_angle())
     }
@@ -171,10 +182,10 @@ impl PyFourBar {
     #[allow(clippy::type_complexity)]
     fn joints(
         &self,
-        theta2: f64,
+        theta2: Real,
         mode: &str,
     ) -> PyResult<((f64, f64), (f64, f64), (f64, f64), (f64, f64))> {
-        let j = self.inner.joints_at(theta2, self::mode(mode)?).py()?;
+        let j = self.inner.joints_at(theta2.0, self::mode(mode)?).py()?;
         Ok((
             pt(j.input_pivot),
             pt(j.crank_joint),
@@ -184,10 +195,10 @@ impl PyFourBar {
     }
 
     #[pyo3(signature = (theta2, point, mode = "open"))]
-    fn coupler_point(&self, theta2: f64, point: PyPoint, mode: &str) -> PyResult<(f64, f64)> {
+    fn coupler_point(&self, theta2: Real, point: PyPoint, mode: &str) -> PyResult<(f64, f64)> {
         let mode = self::mode(mode)?;
         let local = point.0.coords;
-        let mut it = self.inner.coupler_path(local, [theta2], mode);
+        let mut it = self.inner.coupler_path(local, [theta2.0], mode);
         it.next().expect("one angle in, one point out").map(pt).py()
     }
 
@@ -196,7 +207,7 @@ impl PyFourBar {
         &self,
         py: Python<'py>,
         point: PyPoint,
-        theta2s: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+        theta2s: FloatArray,
         mode: &str,
     ) -> PyResult<Arrays<'py>> {
         let mode = self::mode(mode)?;
@@ -209,7 +220,10 @@ impl PyFourBar {
                 .expect("one item")
                 .py()?;
         }
-        let (flat, shape) = flatten(&theta2s);
+        let FloatArray {
+            values: flat,
+            shape,
+        } = theta2s;
         let fb = self.inner;
         let (xs, ys, ok) = py.detach(move || {
             let n = flat.len();

@@ -3,12 +3,17 @@
 use burmester::{Filemon, Grid, Method};
 use numpy::ndarray::Array2;
 use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods, PyUntypedArrayMethods};
+use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
 
+use crate::conv::{Count, Real};
 use crate::errors::{IntoPy, InvalidInputError};
 
-fn grid(xmin: f64, xmax: f64, ymin: f64, ymax: f64, nx: usize, ny: usize) -> PyResult<Grid> {
-    Grid::from_bounds(xmin, xmax, ymin, ymax, nx, ny).py()
+/// The grid of the arguments `(xmin, xmax, ymin, ymax, nx, ny)`.
+pub(crate) type GridArgs = (Real, Real, Real, Real, Count, Count);
+
+fn grid((xmin, xmax, ymin, ymax, nx, ny): GridArgs) -> PyResult<Grid> {
+    Grid::from_bounds(xmin.0, xmax.0, ymin.0, ymax.0, nx.0, ny.0).py()
 }
 
 /// Runs `fill` into a fresh `(ny, nx)` array (handed to NumPy without a
@@ -23,8 +28,17 @@ fn run<'py, T: Element + Copy + Send>(
     let (ny, nx) = (grid.ny(), grid.nx());
     match out {
         None => {
-            let v = py.detach(|| {
-                let mut v = vec![zero; grid.len()];
+            // A refused allocation is a MemoryError, not an abort.
+            let mut v = Vec::new();
+            v.try_reserve_exact(grid.len()).map_err(|_| {
+                PyMemoryError::new_err(format!(
+                    "a ({ny}, {nx}) map needs {} bytes, more than can be allocated; pass a \
+                     smaller nx and ny, or an out= array",
+                    grid.len().saturating_mul(core::mem::size_of::<T>())
+                ))
+            })?;
+            let v = py.detach(move || {
+                v.resize(grid.len(), zero);
                 fill(&mut v);
                 v
             });
@@ -46,7 +60,9 @@ fn run<'py, T: Element + Copy + Send>(
             }
             {
                 let mut rw = arr.try_readwrite().map_err(|e| {
-                    InvalidInputError::new_err(format!("out cannot be written: {e}"))
+                    InvalidInputError::new_err(format!(
+                        "out cannot be written: {e}; pass a writeable array"
+                    ))
                 })?;
                 let slice = rw.as_slice_mut().map_err(|_| {
                     InvalidInputError::new_err(
@@ -61,20 +77,14 @@ fn run<'py, T: Element + Copy + Send>(
 }
 
 /// `Filemon.branch_map` (see the stub for the docs).
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn branch_map<'py>(
     f: Filemon,
     py: Python<'py>,
-    xmin: f64,
-    xmax: f64,
-    ymin: f64,
-    ymax: f64,
-    nx: usize,
-    ny: usize,
+    args: GridArgs,
     method: &str,
     out: Option<Bound<'py, PyArray2<bool>>>,
 ) -> PyResult<Bound<'py, PyArray2<bool>>> {
-    let grid = grid(xmin, xmax, ymin, ymax, nx, ny)?;
+    let grid = grid(args)?;
     let method = method.parse::<Method>().py()?;
     run(py, grid, false, out, move |buf| {
         // The buffer has grid.len() flags by construction.
@@ -83,19 +93,13 @@ pub(crate) fn branch_map<'py>(
 }
 
 /// `Filemon.margin_map`.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn margin_map<'py>(
     f: Filemon,
     py: Python<'py>,
-    xmin: f64,
-    xmax: f64,
-    ymin: f64,
-    ymax: f64,
-    nx: usize,
-    ny: usize,
+    args: GridArgs,
     out: Option<Bound<'py, PyArray2<f32>>>,
 ) -> PyResult<Bound<'py, PyArray2<f32>>> {
-    let grid = grid(xmin, xmax, ymin, ymax, nx, ny)?;
+    let grid = grid(args)?;
     run(py, grid, 0.0f32, out, move |buf| {
         let _ = f.margin_map_into(&grid, buf);
     })

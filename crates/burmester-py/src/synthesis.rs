@@ -4,11 +4,11 @@ use burmester::{
     CircleOrLine, Conic, Dyad, Filemon, Line, Method, Point2, Pose, SynthesizedFourBar, Task,
     Viewport,
 };
-use numpy::{AllowTypeChange, IntoPyArray, PyArray2, PyArrayDyn, PyArrayLikeDyn};
+use numpy::{IntoPyArray, PyArray2, PyArrayDyn};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::conv::{PyPoint, points, pt, to_numpy, vec2};
+use crate::conv::{Count, FloatArray, PyPoint, Real, points, pt, to_numpy, vec2};
 use crate::errors::{IntoPy, InvalidInputError};
 use crate::fourbar::PyFourBar;
 
@@ -21,12 +21,13 @@ fn method(s: &str) -> PyResult<Method> {
     s.parse::<Method>().py()
 }
 
-fn pose_index(k: usize) -> PyResult<usize> {
+fn pose_index(k: Count) -> PyResult<usize> {
+    let k = k.0;
     if (1..=3).contains(&k) {
         Ok(k)
     } else {
         Err(InvalidInputError::new_err(format!(
-            "pose index must be 1, 2 or 3, got {k}"
+            "pose index must be 1, 2 or 3, got {k}; pass one of those"
         )))
     }
 }
@@ -56,7 +57,7 @@ fn line_tuple(l: &Line) -> (Xy, Xy) {
 /// it fails) and a validity mask.
 fn map_points<'py>(
     py: Python<'py>,
-    input: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+    input: FloatArray,
     f: impl Fn(Point2<f64>) -> burmester::Result<Point2<f64>> + Send + Sync,
 ) -> PyResult<MappedPoints<'py>> {
     let (pts, lead) = points(&input)?;
@@ -92,17 +93,25 @@ pub struct PyTask {
 #[pymethods]
 impl PyTask {
     #[new]
-    fn new(poses: Vec<(f64, f64, f64)>) -> PyResult<Self> {
-        let [a, b, c]: [(f64, f64, f64); 3] = poses.clone().try_into().map_err(|_| {
-            InvalidInputError::new_err(format!(
-                "a task needs exactly three poses (x, y, angle), got {}",
+    fn new(poses: Vec<Vec<Real>>) -> PyResult<Self> {
+        if poses.len() != 3 {
+            return Err(InvalidInputError::new_err(format!(
+                "a task needs exactly three poses (x, y, angle), got {}; pass three",
                 poses.len()
-            ))
-        })?;
-        let p = |(x, y, t): (f64, f64, f64)| Pose::new(x, y, t);
-        Task::new([p(a), p(b), p(c)])
-            .map(|inner| PyTask { inner })
-            .py()
+            )));
+        }
+        let mut p = [Pose::new(0.0, 0.0, 0.0); 3];
+        for (k, (q, v)) in p.iter_mut().zip(&poses).enumerate() {
+            let [x, y, a] = v[..] else {
+                return Err(InvalidInputError::new_err(format!(
+                    "pose {} must be (x, y, angle): three numbers, got {}; pass three",
+                    k + 1,
+                    v.len()
+                )));
+            };
+            *q = Pose::new(x.0, y.0, a.0);
+        }
+        Task::new(p).map(|inner| PyTask { inner }).py()
     }
 
     #[getter]
@@ -135,8 +144,8 @@ impl PyTask {
         (pt(a), pt(b), pt(c))
     }
 
-    fn image_poles_in(&self, frame: usize) -> PyResult<(Xy, Xy, Xy)> {
-        let [a, b, c] = self.inner.image_poles_in(frame).py()?;
+    fn image_poles_in(&self, frame: Count) -> PyResult<(Xy, Xy, Xy)> {
+        let [a, b, c] = self.inner.image_poles_in(pose_index(frame)?).py()?;
         Ok((pt(a), pt(b), pt(c)))
     }
 
@@ -153,7 +162,7 @@ impl PyTask {
         (a, b, c)
     }
 
-    fn displace(&self, point: PyPoint, i: usize, j: usize) -> PyResult<Xy> {
+    fn displace(&self, point: PyPoint, i: Count, j: Count) -> PyResult<Xy> {
         Ok(pt(self.inner.displace(
             point.0,
             pose_index(i)?,
@@ -172,7 +181,7 @@ impl PyTask {
     fn circle_points<'py>(
         &self,
         py: Python<'py>,
-        centers: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+        centers: FloatArray,
     ) -> PyResult<MappedPoints<'py>> {
         let t = self.inner;
         map_points(py, centers, move |p| t.circle_point(p))
@@ -181,7 +190,7 @@ impl PyTask {
     fn center_points<'py>(
         &self,
         py: Python<'py>,
-        circles: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+        circles: FloatArray,
     ) -> PyResult<MappedPoints<'py>> {
         let t = self.inner;
         map_points(py, circles, move |p| t.center_point(p))
@@ -219,36 +228,39 @@ impl PyTask {
     }
 
     #[pyo3(signature = (driving_center, xmin, xmax, ymin, ymax, nx, ny, *,
-        min_transmission_deg = 30.0, max_link_ratio = 10.0, input = "any", base_plate = None,
-        obstacles = None, link_width = 0.0, travel_samples = 64))]
+        min_transmission_deg = Real(30.0), max_link_ratio = Real(10.0), input = "any",
+        base_plate = None, obstacles = None, link_width = Real(0.0), travel_samples = Count(64)),
+        text_signature = "($self, /, driving_center, xmin, xmax, ymin, ymax, nx, ny, *, \
+        min_transmission_deg=30.0, max_link_ratio=10.0, input='any', base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64)")]
     #[allow(clippy::too_many_arguments)]
     fn driven_solution_map(
         &self,
         py: Python<'_>,
         driving_center: PyPoint,
-        xmin: f64,
-        xmax: f64,
-        ymin: f64,
-        ymax: f64,
-        nx: usize,
-        ny: usize,
-        min_transmission_deg: f64,
-        max_link_ratio: f64,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+        nx: Count,
+        ny: Count,
+        min_transmission_deg: Real,
+        max_link_ratio: Real,
         input: &str,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: f64,
-        travel_samples: usize,
+        link_width: Real,
+        travel_samples: Count,
     ) -> PyResult<crate::design::PySolutionMap> {
-        let grid = burmester::Grid::from_bounds(xmin, xmax, ymin, ymax, nx, ny).py()?;
+        let grid = burmester::Grid::from_bounds(xmin.0, xmax.0, ymin.0, ymax.0, nx.0, ny.0).py()?;
         let opts = crate::design::MapOptions::new(
-            min_transmission_deg,
-            max_link_ratio,
+            min_transmission_deg.0,
+            max_link_ratio.0,
             input,
             base_plate,
             obstacles,
-            link_width,
-            travel_samples,
+            link_width.0,
+            travel_samples.0,
         )?;
         crate::design::driven_solution_map(py, self.inner, driving_center.0, grid, opts)
     }
@@ -341,7 +353,7 @@ impl PyFilemon {
         self.inner.extreme_poses().map(|(_, m)| m)
     }
 
-    fn line_conic(&self, pose: usize) -> PyResult<PyConic> {
+    fn line_conic(&self, pose: Count) -> PyResult<PyConic> {
         Ok(PyConic {
             inner: self.inner.line_conic(pose_index(pose)?),
         })
@@ -381,16 +393,17 @@ impl PyFilemon {
     fn branch_map<'py>(
         &self,
         py: Python<'py>,
-        xmin: f64,
-        xmax: f64,
-        ymin: f64,
-        ymax: f64,
-        nx: usize,
-        ny: usize,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+        nx: Count,
+        ny: Count,
         method: &str,
         out: Option<Bound<'py, PyArray2<bool>>>,
     ) -> PyResult<Bound<'py, PyArray2<bool>>> {
-        crate::sweep::branch_map(self.inner, py, xmin, xmax, ymin, ymax, nx, ny, method, out)
+        let grid = (xmin, xmax, ymin, ymax, nx, ny);
+        crate::sweep::branch_map(self.inner, py, grid, method, out)
     }
 
     #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, *, out = None))]
@@ -398,51 +411,55 @@ impl PyFilemon {
     fn margin_map<'py>(
         &self,
         py: Python<'py>,
-        xmin: f64,
-        xmax: f64,
-        ymin: f64,
-        ymax: f64,
-        nx: usize,
-        ny: usize,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+        nx: Count,
+        ny: Count,
         out: Option<Bound<'py, PyArray2<f32>>>,
     ) -> PyResult<Bound<'py, PyArray2<f32>>> {
-        crate::sweep::margin_map(self.inner, py, xmin, xmax, ymin, ymax, nx, ny, out)
+        let grid = (xmin, xmax, ymin, ymax, nx, ny);
+        crate::sweep::margin_map(self.inner, py, grid, out)
     }
 
     fn margin(&self, center: PyPoint) -> f64 {
         self.inner.margin(center.0)
     }
 
-    #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, *, min_transmission_deg = 30.0,
-        max_link_ratio = 10.0, input = "any", base_plate = None, obstacles = None,
-        link_width = 0.0, travel_samples = 64))]
+    #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, *, min_transmission_deg = Real(30.0),
+        max_link_ratio = Real(10.0), input = "any", base_plate = None, obstacles = None,
+        link_width = Real(0.0), travel_samples = Count(64)),
+        text_signature = "($self, /, xmin, xmax, ymin, ymax, nx, ny, *, \
+        min_transmission_deg=30.0, max_link_ratio=10.0, input='any', base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64)")]
     #[allow(clippy::too_many_arguments)]
     fn solution_map(
         &self,
         py: Python<'_>,
-        xmin: f64,
-        xmax: f64,
-        ymin: f64,
-        ymax: f64,
-        nx: usize,
-        ny: usize,
-        min_transmission_deg: f64,
-        max_link_ratio: f64,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+        nx: Count,
+        ny: Count,
+        min_transmission_deg: Real,
+        max_link_ratio: Real,
         input: &str,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: f64,
-        travel_samples: usize,
+        link_width: Real,
+        travel_samples: Count,
     ) -> PyResult<crate::design::PySolutionMap> {
-        let grid = burmester::Grid::from_bounds(xmin, xmax, ymin, ymax, nx, ny).py()?;
+        let grid = burmester::Grid::from_bounds(xmin.0, xmax.0, ymin.0, ymax.0, nx.0, ny.0).py()?;
         let opts = crate::design::MapOptions::new(
-            min_transmission_deg,
-            max_link_ratio,
+            min_transmission_deg.0,
+            max_link_ratio.0,
             input,
             base_plate,
             obstacles,
-            link_width,
-            travel_samples,
+            link_width.0,
+            travel_samples.0,
         )?;
         crate::design::solution_map(py, self.inner, grid, opts)
     }
@@ -480,8 +497,8 @@ pub struct PyConic {
 impl PyConic {
     #[new]
     #[allow(clippy::many_single_char_names)]
-    fn new(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64) -> PyResult<Self> {
-        Conic::new(a, b, c, d, e, f)
+    fn new(a: Real, b: Real, c: Real, d: Real, e: Real, f: Real) -> PyResult<Self> {
+        Conic::new(a.0, b.0, c.0, d.0, e.0, f.0)
             .map(|inner| PyConic { inner })
             .py()
     }
@@ -525,7 +542,7 @@ impl PyConic {
     fn evaluate_many<'py>(
         &self,
         py: Python<'py>,
-        points: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+        points: FloatArray,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (pts, lead) = crate::conv::points(&points)?;
         let c = self.inner;
@@ -545,17 +562,18 @@ impl PyConic {
     fn polylines<'py>(
         &self,
         py: Python<'py>,
-        xmin: f64,
-        xmax: f64,
-        ymin: f64,
-        ymax: f64,
-        tolerance: Option<f64>,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+        tolerance: Option<Real>,
     ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-        let vp = Viewport::new(xmin, xmax, ymin, ymax).py()?;
+        let vp = Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()?;
+        let tolerance = tolerance.map(|t| t.0);
         if let Some(t) = tolerance {
             if !(t.is_finite() && t > 0.0) {
                 return Err(InvalidInputError::new_err(format!(
-                    "tolerance must be a positive finite number, got {t}"
+                    "tolerance must be a positive finite number, got {t}; pass one, or None for the default"
                 )));
             }
         }
@@ -634,10 +652,10 @@ impl PySynthesizedFourBar {
         self.inner.is_branch_free()
     }
     #[pyo3(signature = (theta2, mode = "open"))]
-    fn pose_at(&self, theta2: f64, mode: &str) -> PyResult<(f64, f64, f64)> {
+    fn pose_at(&self, theta2: Real, mode: &str) -> PyResult<(f64, f64, f64)> {
         let p = self
             .inner
-            .pose_at(theta2, crate::fourbar::mode(mode)?)
+            .pose_at(theta2.0, crate::fourbar::mode(mode)?)
             .py()?;
         Ok((p.position.x, p.position.y, p.angle))
     }

@@ -32,6 +32,12 @@ use crate::geom::cross;
 /// Relative tolerance of the kind tests (parabola, degenerate).
 const KIND_TOLERANCE: f64 = 1e-12;
 
+/// Local coordinates (in units of the conic's frame) beyond which a point
+/// is evaluated scaled: `q(v) / m^2` with `m = max(|x|, |y|)`, which has the
+/// sign of `q(v)` and cannot overflow. Nearer points are evaluated by the
+/// plain formula, bit for bit as a grid sweep does.
+pub(crate) const FAR: f64 = 1e100;
+
 /// A line: a point and a direction.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Line {
@@ -290,6 +296,44 @@ impl Conic {
         (p - self.origin) / self.scale
     }
 
+    /// The local coordinates `v` of `p` as `(v / m, m)`: `m = 1` (and `v`
+    /// bit for bit) when `max(|x|, |y|) <= FAR`, else `m = max(|x|, |y|)`,
+    /// computed without overflow in `v / m` (`m` itself may be infinite).
+    #[inline]
+    fn local_scaled(&self, p: Point2<f64>) -> (Vector2<f64>, f64) {
+        let v = self.local_of(p);
+        if v.x.abs().max(v.y.abs()) <= FAR {
+            return (v, 1.0);
+        }
+        let w = p - self.origin;
+        let mw = w.x.abs().max(w.y.abs());
+        (w / mw, mw / self.scale)
+    }
+
+    /// `q(v m) / m^2` for `(v, m)` from [`Conic::local_scaled`]: the plain
+    /// evaluation when `m = 1`.
+    #[inline]
+    fn eval_scaled(&self, v: Vector2<f64>, m: f64) -> f64 {
+        if m == 1.0 {
+            return self.eval_local(v.x, v.y);
+        }
+        let [.., d, e, f] = self.q;
+        self.quad_local(v) + (d * v.x + e * v.y) / m + f / m / m
+    }
+
+    /// `grad q(v m) / m` for `(v, m)` from [`Conic::local_scaled`].
+    #[inline]
+    fn grad_scaled(&self, v: Vector2<f64>, m: f64) -> Vector2<f64> {
+        if m == 1.0 {
+            return self.grad_local(v);
+        }
+        let [a, b, c, d, e, _] = self.q;
+        Vector2::new(
+            2.0 * a * v.x + b * v.y + d / m,
+            b * v.x + 2.0 * c * v.y + e / m,
+        )
+    }
+
     #[inline]
     fn global_of(&self, v: Vector2<f64>) -> Point2<f64> {
         self.origin + v * self.scale
@@ -297,10 +341,15 @@ impl Conic {
 
     /// The value `q(p)` (up to the conic's positive factor): zero on the
     /// curve, and its sign tells the side.
+    ///
+    /// Finite for every finite point: a point more than `1e100` units of the
+    /// conic's frame away (see [`Conic::local_coefficients`]) is evaluated
+    /// as `q(p) / m^2` with `m` its distance in those units, which has the
+    /// same sign.
     #[inline]
     pub fn evaluate(&self, p: Point2<f64>) -> f64 {
-        let v = self.local_of(p);
-        self.eval_local(v.x, v.y)
+        let (v, m) = self.local_scaled(p);
+        self.eval_scaled(v, m)
     }
 
     /// The sign of [`evaluate`](Self::evaluate): `1`, `-1`, or `0` on the curve.
@@ -324,13 +373,13 @@ impl Conic {
     /// for lines, accurate near the curve). Infinite where the gradient
     /// vanishes off the curve.
     pub fn distance_estimate(&self, p: Point2<f64>) -> f64 {
-        let v = self.local_of(p);
-        let g = self.grad_local(v).norm();
-        let val = self.eval_local(v.x, v.y).abs();
+        let (v, m) = self.local_scaled(p);
+        let g = self.grad_scaled(v, m).norm();
+        let val = self.eval_scaled(v, m).abs();
         if val == 0.0 {
             0.0
         } else {
-            val / g * self.scale
+            val / g * m * self.scale
         }
     }
 
@@ -462,13 +511,15 @@ impl Conic {
     }
 
     /// Points where the line `point + r * direction` meets the conic (zero,
-    /// one or two, in order of `r`).
+    /// one or two, in order of `r`). An intersection too far away to be
+    /// represented (a line nearly along an asymptote) is left out.
     pub fn intersect_line(&self, line: &Line) -> Vec<Point2<f64>> {
         let p = self.local_of(line.point);
         let w = line.direction / self.scale;
         roots_on_line(self, p, w)
             .into_iter()
             .map(|r| self.global_of(p + w * r))
+            .filter(|q| q.x.is_finite() && q.y.is_finite())
             .collect()
     }
 
@@ -701,7 +752,18 @@ impl Sampler<'_> {
     fn line(&mut self, p: Vector2<f64>, w: Vector2<f64>) {
         let v = |v: Vector2<f64>| parry2d_f64::math::Vector::new(v.x, v.y);
         if let Some((t0, t1)) = self.aabb.clip_line_parameters(v(p), v(w)) {
-            self.out.push(vec![p + w * t0, p + w * t1]);
+            // Clamped: from a far `p` the ends are on the edges only up to
+            // the rounding of `p`.
+            let clamp = |q: Vector2<f64>| {
+                Vector2::new(
+                    q.x.clamp(self.lo.x, self.hi.x),
+                    q.y.clamp(self.lo.y, self.hi.y),
+                )
+            };
+            let (a, b) = (clamp(p + w * t0), clamp(p + w * t1));
+            if a != b {
+                self.out.push(vec![a, b]);
+            }
         }
     }
 
@@ -774,12 +836,17 @@ impl Sampler<'_> {
         }
         // Unclipped ends stay exactly the samples, so consecutive segments
         // join; clipped ends move onto the curve where it crosses the edge.
-        let ca = if t0 == 0.0 {
+        // (A parameter rounded to 0 or 1 on a long chord does not make its
+        // end inside: check.)
+        let inside = |q: Vector2<f64>| {
+            q.x >= self.lo.x && q.x <= self.hi.x && q.y >= self.lo.y && q.y <= self.hi.y
+        };
+        let ca = if t0 == 0.0 && inside(a) {
             a
         } else {
             self.on_edge(a + ab * t0)
         };
-        let cb = if t1 == 1.0 {
+        let cb = if t1 == 1.0 && inside(b) {
             b
         } else {
             self.on_edge(a + ab * t1)
@@ -827,22 +894,24 @@ impl Sampler<'_> {
             .into_iter()
             .min_by(|a, b| a.0.total_cmp(&b.0))
             .expect("four edges");
-        roots_on_line(self.conic, base, w)
+        // Clamped in both cases: a chord from a far sample puts its edge
+        // point there only up to the rounding of that far point.
+        let q = roots_on_line(self.conic, base, w)
             .into_iter()
             .filter(|r| r.abs() <= 2.0 * self.tol)
             .min_by(|a, b| a.abs().total_cmp(&b.abs()))
-            .map(|r| {
-                let q = base + w * r;
-                Vector2::new(
-                    q.x.clamp(self.lo.x, self.hi.x),
-                    q.y.clamp(self.lo.y, self.hi.y),
-                )
-            })
-            .unwrap_or(p)
+            .map_or(p, |r| base + w * r);
+        Vector2::new(
+            q.x.clamp(self.lo.x, self.hi.x),
+            q.y.clamp(self.lo.y, self.hi.y),
+        )
     }
 
     fn finish(&mut self) {
-        if self.current.len() >= 2 {
+        // A polyline of one repeated point is a chord from far samples that
+        // only grazes the viewport's edge, not a piece of the curve.
+        let first = self.current.first().copied();
+        if self.current.len() >= 2 && self.current.iter().any(|p| Some(*p) != first) {
             self.out.push(core::mem::take(&mut self.current));
         } else {
             self.current.clear();

@@ -54,7 +54,7 @@ use rayon::prelude::*;
 use crate::dyad::{Dyad, SynthesizedFourBar};
 use crate::error::{InvalidInput, Result, finite, positive};
 use crate::filemon::{Filemon, Method};
-use crate::fourbar::{AssemblyMode, Grashof};
+use crate::fourbar::{AssemblyMode, Grashof, input_bounds};
 use crate::geom::{cross, rotate_cs};
 use crate::sweep::Grid;
 use crate::task::Task;
@@ -438,21 +438,8 @@ fn classify_lengths(l: [f64; 4]) -> (Grashof, bool, bool, f64, f64) {
     } else {
         Grashof::RockerCrank
     };
-    // Input bounds on c = cos(theta - theta1), lengths in units of `max`.
-    let inv = 1.0 / max;
-    let (g, c, s3, d3) = (l1 * inv, l2 * inv, (l3 + l4) * inv, (l3 - l4) * inv);
-    let base = g * g + c * c;
-    let inv_two = 1.0 / (2.0 * g * c);
-    let btol = 8.0 * f64::EPSILON * (base + s3 * s3) * inv_two;
-    let c_min = (base - s3 * s3) * inv_two;
-    let c_max = (base - d3 * d3) * inv_two;
-    (
-        grashof,
-        c_min <= -1.0 + btol,
-        c_max >= 1.0 - btol,
-        c_min,
-        c_max,
-    )
+    let b = input_bounds(l);
+    (grashof, b.lo_free, b.hi_free, b.c_min, b.c_max)
 }
 
 /// The figures of the linkage `A0 A1 C1 C0`, with `A_k`, `C_k` the moving

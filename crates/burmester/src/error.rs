@@ -148,11 +148,12 @@ pub enum DegenerateError {
         /// Second pose index (1-based).
         j: usize,
     },
-    /// Two poses differ by a pure translation, so their pole is at infinity.
+    /// Two poses differ by a pure translation (their angles agree within
+    /// `Task::MIN_ROTATION`), so their pole is at infinity.
     #[error(
-        "poses {i} and {j} have the same angle, so the motion between them is a pure translation \
-         and their pole is at infinity; this is not supported: rotate one of the poses by a \
-         small angle"
+        "poses {i} and {j} have the same angle (within 1e-6 rad), so the motion between them is \
+         a pure translation and their pole is at infinity; this is not supported: rotate one of \
+         the poses by at least 1e-6 rad (a few thousandths of a degree)"
     )]
     PureTranslation {
         /// First pose index (1-based).

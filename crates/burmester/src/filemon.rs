@@ -44,7 +44,7 @@ use nalgebra::{Matrix2, Point2, Vector2};
 use crate::conic::{Conic, Line};
 use crate::dyad::{Dyad, SynthesizedFourBar};
 use crate::error::{InvalidInput, Result};
-use crate::geom::cross;
+use crate::geom::{cross, normalized};
 use crate::task::Task;
 
 /// How to decide whether a driving center point is free of the branch defect.
@@ -190,8 +190,7 @@ impl Task {
     pub fn line_to_conic(&self, line: &Line) -> Result<Conic> {
         crate::error::finite("line point x", line.point.x)?;
         crate::error::finite("line point y", line.point.y)?;
-        let n = line.direction.norm();
-        if !(n > 0.0 && n.is_finite()) {
+        if normalized(line.direction).is_none() {
             return Err(InvalidInput::OutOfRange {
                 name: "line direction",
                 expected: "must be a finite, non-zero vector",
@@ -222,7 +221,8 @@ impl Filemon {
     /// # Errors
     ///
     /// [`crate::DegenerateError::ZeroLengthLink`] when the dyad has no
-    /// length.
+    /// length; [`InvalidInput::OutOfRange`] when an image `C'_k` of its
+    /// fixed pivot overflows or coincides with its circle point.
     pub fn new(task: &Task, driven: Dyad) -> Result<Self> {
         if driven.length() <= Task::POINT_TOLERANCE * task.scale() {
             return Err(crate::DegenerateError::ZeroLengthLink {
@@ -235,6 +235,18 @@ impl Filemon {
         let c1 = driven.circle;
         let c_prime = [1, 2, 3].map(|k| task.displace(driven.center, k, 1));
         let dirs = c_prime.map(|c| c - c1);
+        if dirs.iter().any(|d| normalized(*d).is_none()) {
+            return Err(InvalidInput::OutOfRange {
+                name: "driven dyad",
+                expected: "must have its fixed pivot's images C'k = D_k1(C0) finite and apart \
+                           from its circle point C1; choose a driven center point nearer the task",
+                found: format!(
+                    "C0 = ({}, {}), C1 = ({}, {})",
+                    driven.center.x, driven.center.y, c1.x, c1.y
+                ),
+            }
+            .into());
+        }
         let order = half_plane_order(&dirs);
         let conics = dirs.map(|d| line_conic(task, c1, d));
         Ok(Filemon {
@@ -330,10 +342,34 @@ impl Filemon {
 
     /// The branch class of a driving center point `A0`, by `method`.
     ///
+    /// When [`Filemon::all_defective`] holds, no method returns
+    /// [`Branch::Free`] (the branch map is `false` everywhere then).
+    ///
     /// With [`Method::Conic`], a point where a conic value is zero, or
     /// within [`Task::POINT_TOLERANCE`] of a pole or of `C0` (where all the
     /// curves meet), is [`Branch::Boundary`]; the pole circle needs no
     /// special case.
+    ///
+    /// # Tolerance bands
+    ///
+    /// Lengths in task sizes ([`Task::scale`]); `R` is the point's distance
+    /// from `P12`.
+    ///
+    /// ```text
+    /// conic     each conic's sign is the exact sign of the closed form (from the
+    ///           task's double parameters) at points farther than
+    ///           1e-13 (1 + R)^2 from the curve; Boundary only where a value is
+    ///           exactly zero or within 1e-12 of P12, P13, P23, C0
+    /// direct    agrees with conic farther than 1e-9 from the curves and the
+    ///           pole circle (the circle point's rounding grows near both)
+    /// simulate  agrees with direct where it is not Boundary; a pose counts as
+    ///           reached within 1e-7 of the linkage's size and 1e-7 rad
+    /// ```
+    ///
+    /// Inside a band a point may be classified either way. The conic band
+    /// is checked against an exact rational evaluation of the closed form
+    /// (the signs were exact beyond `5e-16 (1 + R)^2` in those runs), the
+    /// others against each other, in the crate's tests.
     ///
     /// # Errors
     ///
@@ -344,14 +380,21 @@ impl Filemon {
     pub fn classify(&self, a0: Point2<f64>, method: Method) -> Result<Branch> {
         crate::error::finite("driving center x", a0.x)?;
         crate::error::finite("driving center y", a0.y)?;
-        match method {
-            Method::Conic => Ok(self.classify_conic(a0)),
+        let b = match method {
+            Method::Conic => self.classify_conic(a0),
             Method::Direct => {
                 let a1 = self.task.circle_point(a0)?;
-                Ok(self.classify_circle_point(a1))
+                self.classify_circle_point(a1)
             }
-            Method::Simulate => self.classify_simulate(a0),
-        }
+            Method::Simulate => self.classify_simulate(a0)?,
+        };
+        // When the directions C'_k - C1 span no open half-plane, no point is
+        // free; a sign test that says otherwise is rounding at that border.
+        Ok(if b == Branch::Free && self.all_defective() {
+            Branch::Defective
+        } else {
+            b
+        })
     }
 
     /// Whether the driving center point `a0` is branch-free, by `method`
@@ -380,20 +423,21 @@ impl Filemon {
             .any(|q| (q.x - p.x).abs() <= tol && (q.y - p.y).abs() <= tol)
     }
 
-    fn classify_conic(&self, a0: Point2<f64>) -> Branch {
+    pub(crate) fn classify_conic(&self, a0: Point2<f64>) -> Branch {
         if self.at_special_point(a0) {
             return Branch::Boundary;
         }
         match self.conic_values(a0) {
             None => Branch::Defective,
+            // Signs, not the product `a * b`, which underflows to zero for
+            // two tiny values (the sweep tests signs too).
             Some([a, b]) => {
-                let p = a * b;
-                if p > 0.0 {
-                    Branch::Free
-                } else if p < 0.0 {
-                    Branch::Defective
-                } else {
+                if a == 0.0 || b == 0.0 || a.is_nan() || b.is_nan() {
                     Branch::Boundary
+                } else if (a > 0.0) == (b > 0.0) {
+                    Branch::Free
+                } else {
+                    Branch::Defective
                 }
             }
         }
@@ -488,7 +532,8 @@ fn line_conic(task: &Task, c1: Point2<f64>, d: Vector2<f64>) -> Conic {
     let k1 = r2.transpose() * j.transpose() * q13;
     let k0 = cross(q13, v0);
     // cross(d, u) = (R1^T J^T d) . y.
-    let dn = d / d.norm();
+    // The callers pass a finite, non-zero direction.
+    let dn = normalized(d).unwrap_or_else(Vector2::x);
     let m1 = r1.transpose() * j.transpose() * dn;
     let c1l = task.local_of(c1);
     let cdc = cross(dn, c1l);

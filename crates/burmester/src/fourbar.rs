@@ -55,7 +55,7 @@ use core::f64::consts::{PI, TAU};
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{AssemblyError, Error, InvalidInput, Result, finite, positive};
-use crate::geom::{perp, point_is_finite, rotate, unit, wrap_angle};
+use crate::geom::{normalized, perp, point_is_finite, rotate, unit, wrap_angle};
 
 /// Relative tolerance of the toggle test and of the Grashof equality, in
 /// units of the machine epsilon times the size of the quantity compared.
@@ -335,7 +335,8 @@ impl Joints {
     /// joint `B`.
     pub fn coupler_point(&self, local: Vector2<f64>) -> Point2<f64> {
         let ab = self.rocker_joint - self.crank_joint;
-        let e = ab / ab.norm();
+        // The coupler has a length, so `ab` is not zero (scaled: no underflow).
+        let e = normalized(ab).unwrap_or_else(Vector2::x);
         self.crank_joint
             + Vector2::new(e.x * local.x - e.y * local.y, e.y * local.x + e.x * local.y)
     }
@@ -390,14 +391,20 @@ pub struct FourBar {
 }
 
 impl FourBar {
+    /// The largest extent of a linkage: the input pivot's distance from the
+    /// origin (as `|x| + |y|`) plus the four lengths. Larger linkages are
+    /// rejected, so that no joint position overflows.
+    pub const MAX_EXTENT: f64 = 1e300;
+
     /// A four-bar from its ground, crank (input), coupler and rocker
     /// (output) lengths, with the input pivot at the origin and the ground
     /// along +x.
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] when a length is zero, negative, NaN or infinite;
-    /// [`AssemblyError::NeverCloses`] when the longest link is longer than
+    /// [`InvalidInput`] when a length is zero, negative, NaN or infinite,
+    /// or the linkage is larger than [`FourBar::MAX_EXTENT`] or its link ratio
+    /// overflows; [`AssemblyError::NeverCloses`] when the longest link is longer than
     /// the other three together (no input angle closes the loop).
     pub fn new(ground: f64, crank: f64, coupler: f64, rocker: f64) -> Result<Self> {
         Self::placed(ground, crank, coupler, rocker, Point2::origin(), 0.0)
@@ -427,6 +434,19 @@ impl FourBar {
         let ground_angle = finite("ground angle", ground_angle)?;
         let links = [ground, crank, coupler, rocker];
         let scale = links.iter().copied().fold(0.0, f64::max);
+        // Every joint lies within `extent` of the fixed frame's origin; past
+        // `MAX_EXTENT` a joint or a length of two joints could overflow.
+        let extent = origin.x.abs() + origin.y.abs() + links.iter().sum::<f64>();
+        let shortest = links.iter().copied().fold(f64::INFINITY, f64::min);
+        if !(extent <= Self::MAX_EXTENT && (scale / shortest).is_finite()) {
+            return Err(InvalidInput::OutOfRange {
+                name: "linkage size",
+                expected: "must be at most 1e300 (the origin's distance plus the four lengths), with \
+                           a finite ratio of the longest to the shortest link; rescale the linkage",
+                found: format!("origin ({}, {}) and lengths {links:?}", origin.x, origin.y),
+            }
+            .into());
+        }
         let [g, c, l3, l4] = links.map(|l| l / scale);
         let sum_n = g + c + l3 + l4;
         // The longest link is 1 in units of `scale`.
@@ -547,10 +567,19 @@ impl FourBar {
             mode.sign() * heron.sqrt()
         };
         let n = perp(d) * h;
+        let v3 = d * (self.sq_diff_n + r2) + n;
+        let v4 = d * (self.sq_diff_n - r2) + n;
+        // Both vanish only when the crank tip is within rounding of the
+        // output pivot of a linkage whose coupler equals its rocker (or the
+        // products underflow there): every coupler angle closes the loop.
+        let zero = Vector2::zeros();
+        if v3 == zero || v4 == zero {
+            return Err(AssemblyError::Indeterminate { theta2 }.into());
+        }
         Ok(Closed {
             crank_dir: Vector2::new(c2, s2),
-            v3: d * (self.sq_diff_n + r2) + n,
-            v4: d * (self.sq_diff_n - r2) + n,
+            v3,
+            v4,
             toggle,
         })
     }
@@ -692,7 +721,7 @@ impl FourBar {
         Ok(Joints {
             input_pivot: self.origin,
             crank_joint: a,
-            rocker_joint: o4 + c.v4 * (self.rocker / c.v4.norm()),
+            rocker_joint: o4 + normalized(c.v4).unwrap_or(c.v4) * self.rocker,
             output_pivot: o4,
         })
     }
@@ -716,7 +745,9 @@ impl FourBar {
     /// # Errors
     ///
     /// Each item is an error where [`FourBar::solve`] fails; a non-finite
-    /// `local` gives [`InvalidInput::NotFinite`] for every item.
+    /// `local` gives [`InvalidInput::NotFinite`] for every item, and a point
+    /// so far from the coupler that its position overflows gives
+    /// [`InvalidInput::OutOfRange`].
     pub fn coupler_path<'a, I>(
         &'a self,
         local: Vector2<f64>,
@@ -732,7 +763,21 @@ impl FourBar {
             .map_err(Error::from);
         theta2s.into_iter().map(move |t| {
             local_ok.clone()?;
-            Ok(self.joints_at(t, mode)?.coupler_point(local))
+            let p = self.joints_at(t, mode)?.coupler_point(local);
+            if point_is_finite(&p) {
+                Ok(p)
+            } else {
+                Err(InvalidInput::OutOfRange {
+                    name: "coupler point",
+                    expected: "must stay within the representable range; pass a point nearer \
+                               the coupler",
+                    found: format!(
+                        "({}, {}), which reaches ({}, {})",
+                        local.x, local.y, p.x, p.y
+                    ),
+                }
+                .into())
+            }
         })
     }
 
@@ -844,19 +889,24 @@ pub(crate) struct InputBounds {
 /// The input bounds of the lengths `[ground, crank, coupler, rocker]` (see
 /// [`FourBar::input_range`]); any positive scale.
 pub(crate) fn input_bounds(lengths: [f64; 4]) -> InputBounds {
-    let scale = lengths.iter().copied().fold(0.0, f64::max);
-    let [g, c, l3, l4] = lengths.map(|v| v / scale);
-    let (sum, diff) = (l3 + l4, l3 - l4);
+    // In units of the longer of ground and crank, so that neither the
+    // squares nor `2 L1 L2` underflow (the link ratio is finite). A square
+    // of `L3 + L4` may overflow to infinity: then `c_min` is `-inf` and the
+    // bound is reached, as it should be.
+    let [l1, l2, l3, l4] = lengths;
+    let m = l1.max(l2);
+    let (g, c) = (l1 / m, l2 / m);
+    let (sum, diff) = (l3 / m + l4 / m, l3 / m - l4 / m);
     let base = g * g + c * c;
     let two = 2.0 * g * c;
-    let tol = ROUNDING_FACTOR * f64::EPSILON * (base + sum * sum) / two;
+    let rounding = ROUNDING_FACTOR * f64::EPSILON / two;
     let c_min = (base - sum * sum) / two;
     let c_max = (base - diff * diff) / two;
     InputBounds {
         c_min,
         c_max,
-        lo_free: c_min <= -1.0 + tol,
-        hi_free: c_max >= 1.0 - tol,
+        lo_free: c_min <= -1.0 + rounding * (base + sum * sum),
+        hi_free: c_max >= 1.0 - rounding * (base + diff * diff),
     }
 }
 

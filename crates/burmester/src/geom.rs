@@ -49,6 +49,24 @@ pub(crate) fn wrap_angle(angle: f64) -> f64 {
     a
 }
 
+/// `|u|` without overflow or underflow in the squares (`hypot`).
+#[inline]
+pub(crate) fn length(u: Vector2<f64>) -> f64 {
+    u.x.hypot(u.y)
+}
+
+/// `u / |u|`, computed without overflow or underflow; `None` for a zero or
+/// non-finite vector.
+#[inline]
+pub(crate) fn normalized(u: Vector2<f64>) -> Option<Vector2<f64>> {
+    let m = u.x.abs().max(u.y.abs());
+    if !(m > 0.0 && m.is_finite()) {
+        return None;
+    }
+    let w = u / m;
+    Some(w / w.norm())
+}
+
 /// Whether every coordinate of `p` is finite.
 #[inline]
 pub(crate) fn point_is_finite(p: &Point2<f64>) -> bool {

@@ -51,7 +51,7 @@
 use nalgebra::Point2;
 use rayon::prelude::*;
 
-use crate::conic::{Conic, Viewport};
+use crate::conic::{Conic, FAR, Viewport};
 use crate::error::{InvalidInput, Result};
 use crate::filemon::{Filemon, Method};
 
@@ -205,6 +205,14 @@ impl Local {
     fn y(&self, grid: &Grid, j: usize) -> f64 {
         (grid.y(j) - self.oy) / self.s
     }
+
+    /// Whether row `j` has a sample beyond [`FAR`] (local units): such rows
+    /// are classified point by point, as [`Filemon::classify`] scales them.
+    fn far_row(&self, grid: &Grid, j: usize) -> bool {
+        let near = |v: f64| v.abs() <= FAR;
+        let (first, last) = (self.xs[0], self.xs[self.xs.len() - 1]);
+        !(near(self.y(grid, j)) && near(first) && near(last))
+    }
 }
 
 /// Whether two conic values make a branch-free point.
@@ -307,6 +315,10 @@ impl Filemon {
                     .for_each(|(b, block)| {
                         for (r, row) in block.chunks_mut(nx).enumerate() {
                             let j = b * rows + r;
+                            if local.far_row(grid, j) {
+                                self.far_row_map(grid, j, row);
+                                continue;
+                            }
                             conic_row(&ca, &cb, local.y(grid, j), &local.xs, row);
                             self.clear_special_points(grid, j, row);
                         }
@@ -352,11 +364,22 @@ impl Filemon {
             .for_each(|(b, block)| {
                 for (r, row) in block.chunks_mut(nx).enumerate() {
                     let j = b * rows + r;
+                    if local.far_row(grid, j) {
+                        self.far_row_map(grid, j, row);
+                        continue;
+                    }
                     pointwise_row(&ca, &cb, local.y(grid, j), &local.xs, row);
                     self.clear_special_points(grid, j, row);
                 }
             });
         Ok(())
+    }
+
+    /// Row `j` by [`Filemon::classify`], point by point (far rows).
+    fn far_row_map(&self, grid: &Grid, j: usize, row: &mut [bool]) {
+        for (i, o) in row.iter_mut().enumerate() {
+            *o = self.classify_conic(grid.point(i, j)).is_free();
+        }
     }
 
     /// Sets the samples of row `j` that lie at a pole or at `C0` to
@@ -375,9 +398,12 @@ impl Filemon {
             if (p.y - y).abs() > tol {
                 continue;
             }
-            // Candidate columns around p.x (x_i is monotone in i).
-            let lo = ((p.x - tol - xmin) / grid.dx - 0.5).floor() - 1.0;
-            let hi = ((p.x + tol - xmin) / grid.dx - 0.5).ceil() + 2.0;
+            // Candidate columns around p.x (x_i is monotone in i), widened
+            // by how far rounding can move x_i (many columns when the grid
+            // is finer than the spacing of doubles there).
+            let slack = (4.0 * f64::EPSILON * (xmin.abs() + p.x.abs() + tol) / grid.dx).ceil();
+            let lo = ((p.x - tol - xmin) / grid.dx - 0.5).floor() - 1.0 - slack;
+            let hi = ((p.x + tol - xmin) / grid.dx - 0.5).ceil() + 2.0 + slack;
             let (lo, hi) = (lo.max(0.0) as usize, hi.clamp(0.0, grid.nx as f64) as usize);
             for i in lo..hi {
                 if (grid.x(i) - p.x).abs() <= tol {
@@ -395,7 +421,9 @@ impl Filemon {
     /// ```
     ///
     /// positive where branch-free, negative (or `-0.0` on a curve)
-    /// elsewhere, in the plane's units, as `f32`. For contour plots and for
+    /// elsewhere, in the plane's units, as `f32`. Its sign is the branch map
+    /// even where the distance underflows (a free sample is then the
+    /// smallest positive `f32`). For contour plots and for
     /// ranking pivots by their distance to a defect. When every circle
     /// point is defective the map is `-inf` everywhere (there is no
     /// boundary).
@@ -431,6 +459,12 @@ impl Filemon {
             .for_each(|(b, block)| {
                 for (r, row) in block.chunks_mut(nx).enumerate() {
                     let j = b * rows + r;
+                    if local.far_row(grid, j) {
+                        for (i, o) in row.iter_mut().enumerate() {
+                            *o = margin_f32(self.margin(grid.point(i, j)));
+                        }
+                        continue;
+                    }
                     margin_row(&ca, &cb, local.y(grid, j), local.s, &local.xs, row);
                     self.for_special_columns(grid, j, |i| row[i] = -0.0);
                 }
@@ -447,6 +481,12 @@ impl Filemon {
         }
         let (o, s) = ca.frame();
         let v = (p - o) / s;
+        let m = v.x.abs().max(v.y.abs());
+        if m > FAR || m.is_nan() {
+            // Far away: the scaled evaluations (see `Conic::evaluate`).
+            let d = ca.distance_estimate(p).min(cb.distance_estimate(p));
+            return signed_margin(d, free(ca.evaluate(p), cb.evaluate(p)));
+        }
         margin_at(&ca, &cb, v.x, v.y, s)
     }
 }
@@ -564,13 +604,31 @@ fn margin_at(ca: &Conic, cb: &Conic, x: f64, y: f64, s: f64) -> f64 {
 fn margin_of(ra: &RowGrad, rb: &RowGrad, x: f64, s: f64) -> f64 {
     let (da, ga) = ra.dist(x);
     let (db, gb) = rb.dist(x);
-    let d = da.min(db) * s;
-    if free(ga, gb) { d } else { -d }
+    signed_margin(da.min(db) * s, free(ga, gb))
+}
+
+/// `+d` where free, `-d` elsewhere; a free point's margin stays positive
+/// when `d` underflows to zero (its sign is the branch map).
+#[inline(always)]
+fn signed_margin(d: f64, is_free: bool) -> f64 {
+    if is_free {
+        d.max(f64::from_bits(1))
+    } else {
+        -d
+    }
+}
+
+/// A margin as `f32`, keeping its sign: a positive margin below the
+/// smallest `f32` becomes the smallest positive `f32`, a negative one `-0.0`.
+#[inline(always)]
+fn margin_f32(m: f64) -> f32 {
+    let v = m as f32;
+    if m > 0.0 { v.max(f32::from_bits(1)) } else { v }
 }
 
 fn margin_row(ca: &Conic, cb: &Conic, y: f64, s: f64, xs: &[f64], out: &mut [f32]) {
     let (ra, rb) = (RowGrad::new(ca, y), RowGrad::new(cb, y));
     for (o, &x) in out.iter_mut().zip(xs) {
-        *o = margin_of(&ra, &rb, x, s) as f32;
+        *o = margin_f32(margin_of(&ra, &rb, x, s));
     }
 }

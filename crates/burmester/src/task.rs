@@ -57,7 +57,7 @@ use core::f64::consts::PI;
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{DegenerateError, InvalidInput, Result, finite};
-use crate::geom::{cross, perp, rotate_cs, wrap_angle};
+use crate::geom::{cross, length, perp, rotate_cs, wrap_angle};
 
 /// A pose of the coupler: where a chosen coupler point is, and the coupler's
 /// angle (radians, counter-clockwise from +x).
@@ -122,13 +122,21 @@ impl CircleOrLine {
     /// relative `1e-12` (the triangle's doubled area against its longest side
     /// squared) gives a line through the two farthest apart.
     pub fn through(a: Point2<f64>, b: Point2<f64>, c: Point2<f64>) -> Self {
-        let (ab, ac) = (b - a, c - a);
+        // In units of the longest side, so that no square overflows or
+        // underflows.
+        let unit = length(b - a).max(length(c - a)).max(length(c - b));
+        let unit = if unit > 0.0 && unit.is_finite() {
+            unit
+        } else {
+            1.0
+        };
+        let (ab, ac) = ((b - a) / unit, (c - a) / unit);
         let det = 2.0 * cross(ab, ac);
         let longest = ab
             .norm_squared()
             .max(ac.norm_squared())
-            .max((c - b).norm_squared());
-        if det.abs() <= 1e-12 * longest {
+            .max((ac - ab).norm_squared());
+        if det.abs() <= 1e-12 * longest || longest == 0.0 {
             let (p, q) = [(a, b), (a, c), (b, c)]
                 .into_iter()
                 .max_by(|x, y| {
@@ -147,8 +155,8 @@ impl CircleOrLine {
         let (b2, c2) = (ab.norm_squared(), ac.norm_squared());
         let off = Vector2::new(ac.y * b2 - ab.y * c2, ab.x * c2 - ac.x * b2) / det;
         CircleOrLine::Circle {
-            center: a + off,
-            radius: off.norm(),
+            center: a + off * unit,
+            radius: off.norm() * unit,
         }
     }
 
@@ -211,10 +219,26 @@ impl Task {
     /// which a point counts as lying on a pole.
     pub const POINT_TOLERANCE: f64 = 1e-12;
 
+    /// Largest magnitude of a pose coordinate. With it and
+    /// [`Task::MIN_ROTATION`] the poles stay below about `1e107`, so no
+    /// square of a distance overflows.
+    pub const MAX_COORDINATE: f64 = 1e100;
+
+    /// Largest magnitude of a pose angle, in radians: past it a double no
+    /// longer holds the angle to `1e-7` rad.
+    pub const MAX_ANGLE: f64 = 1e9;
+
+    /// Smallest size of the pole triangle ([`Task::scale`]): smaller tasks
+    /// are rejected (rescale them), so that no square of a distance
+    /// underflows.
+    pub const MIN_SCALE: f64 = 1e-100;
+
     /// Smallest angle between two poses (radians) that is not treated as a
-    /// pure translation: below it the pole would be more than about `1e12`
-    /// times the poses' separation away.
-    pub const MIN_ROTATION: f64 = 1e-12;
+    /// pure translation. The pole of two poses rotated by `theta` lies about
+    /// `1 / theta` times their separation away, and the maps, which run
+    /// through the poles, lose that factor in relative accuracy near the
+    /// poses: at this bound, a few `1e6 * f64::EPSILON` (`1e-9` was measured).
+    pub const MIN_ROTATION: f64 = 1e-6;
 
     /// A task from three poses.
     ///
@@ -225,7 +249,10 @@ impl Task {
     /// [`DegenerateError::PureTranslation`] when two poses have the same
     /// angle (modulo `2 pi`, within [`Task::MIN_ROTATION`]): their pole is
     /// at infinity; [`DegenerateError::CoincidentPoles`] when the three
-    /// poses are rotations about one point.
+    /// poses are rotations about one point; [`InvalidInput::OutOfRange`]
+    /// when a coordinate exceeds [`Task::MAX_COORDINATE`] or an angle
+    /// [`Task::MAX_ANGLE`] in magnitude, or
+    /// the pole triangle is smaller than [`Task::MIN_SCALE`].
     pub fn new(poses: [Pose; 3]) -> Result<Self> {
         const NAMES: [[&str; 3]; 3] = [
             ["pose 1 x", "pose 1 y", "pose 1 angle"],
@@ -236,6 +263,26 @@ impl Task {
             finite(n[0], p.position.x)?;
             finite(n[1], p.position.y)?;
             finite(n[2], p.angle)?;
+            if p.angle.abs() > Self::MAX_ANGLE {
+                return Err(InvalidInput::OutOfRange {
+                    name: n[2],
+                    expected: "must be at most 1e9 radians in magnitude (beyond, a double cannot \
+                               hold the angle to 1e-7 rad); reduce it modulo 2 pi",
+                    found: p.angle.to_string(),
+                }
+                .into());
+            }
+            for (name, v) in [(n[0], p.position.x), (n[1], p.position.y)] {
+                if v.abs() > Self::MAX_COORDINATE {
+                    return Err(InvalidInput::OutOfRange {
+                        name,
+                        expected: "must be at most 1e100 in magnitude; rescale the task (the \
+                                   maps are invariant under scaling)",
+                        found: v.to_string(),
+                    }
+                    .into());
+                }
+            }
         }
         let pairs = [(0, 1), (0, 2), (1, 2)];
         let theta = pairs.map(|(i, j)| wrap_angle(poses[j].angle - poses[i].angle));
@@ -255,7 +302,7 @@ impl Task {
         });
         let size = [(0, 1), (0, 2), (1, 2)]
             .iter()
-            .map(|&(a, b)| (poles[b] - poles[a]).norm())
+            .map(|&(a, b)| length(poles[b] - poles[a]))
             .fold(0.0, f64::max);
         if !size.is_finite() {
             return Err(InvalidInput::OutOfRange {
@@ -267,12 +314,21 @@ impl Task {
         }
         let extent = poses
             .iter()
-            .map(|p| (p.position - poles[0]).norm())
+            .map(|p| length(p.position - poles[0]))
             .fold(0.0, f64::max);
         if size <= Self::POINT_TOLERANCE * extent || size == 0.0 {
             return Err(DegenerateError::CoincidentPoles {
                 x: poles[0].x,
                 y: poles[0].y,
+            }
+            .into());
+        }
+        if size < Self::MIN_SCALE {
+            return Err(InvalidInput::OutOfRange {
+                name: "task",
+                expected: "must have a pole triangle of size at least 1e-100; rescale the task \
+                           (the maps are invariant under scaling)",
+                found: format!("a pole triangle of size {size}"),
             }
             .into());
         }
@@ -451,7 +507,8 @@ impl Task {
     /// (the answer lies at infinity; the error carries its direction);
     /// [`DegenerateError::Undefined`] when `center` is at a pole (a whole
     /// line of circle points has it as center); [`InvalidInput::NotFinite`]
-    /// for a non-finite point.
+    /// for a non-finite point, [`InvalidInput::OutOfRange`] for a point
+    /// more than about `1e300` task sizes away.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
         self.map(center, MapDir::CenterToCircle)
     }
@@ -464,7 +521,9 @@ impl Task {
     /// [`DegenerateError::AtInfinity`] when `circle` is on the image-pole
     /// circle (the center point is at infinity: a slider);
     /// [`DegenerateError::Undefined`] at an image pole;
-    /// [`InvalidInput::NotFinite`] for a non-finite point.
+    /// [`InvalidInput::NotFinite`] for a non-finite point,
+    /// [`InvalidInput::OutOfRange`] for a point more than about `1e300`
+    /// task sizes away.
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
         self.map(circle, MapDir::CircleToCenter)
     }
@@ -493,20 +552,34 @@ impl Task {
         circles.into_iter().map(move |p| self.center_point(p))
     }
 
-    /// The Cremona map in the local frame: returns `(u, kappa, den)` with
-    /// the answer `u * kappa / den` (local), for the direction `dir`.
+    /// The Cremona map of a local point of ordinary size (see
+    /// [`Task::map_parts_scaled`]): `(u, kappa, den, v)` with the answer
+    /// `u * kappa / den` (local); `dir_sign` is `-1` for the circle point of
+    /// a center point, `+1` for the center point of a circle point.
     #[inline(always)]
     pub(crate) fn map_parts(
         &self,
         y: Vector2<f64>,
         dir_sign: f64,
     ) -> (Vector2<f64>, f64, f64, Vector2<f64>) {
+        self.map_parts_scaled(y, self.q13, dir_sign)
+    }
+
+    /// The Cremona map in the local frame: returns `(u, kappa, den)` with
+    /// the answer `u * kappa / den` (local), for the direction `dir`.
+    #[inline(always)]
+    fn map_parts_scaled(
+        &self,
+        y: Vector2<f64>,
+        q13: Vector2<f64>,
+        dir_sign: f64,
+    ) -> (Vector2<f64>, f64, f64, Vector2<f64>) {
         let (c12, s12) = self.half12;
         let (c13, s13) = self.half13;
         let u = rotate_cs(y, c12, dir_sign * s12);
-        let v = rotate_cs(y - self.q13, c13, dir_sign * s13);
+        let v = rotate_cs(y - q13, c13, dir_sign * s13);
         let den = cross(u, v);
-        let kappa = cross(self.q13, v);
+        let kappa = cross(q13, v);
         (u, kappa, den, v)
     }
 
@@ -526,20 +599,34 @@ impl Task {
         finite(names[0], p.x)?;
         finite(names[1], p.y)?;
         let y = self.local_of(p);
+        if !(y.x.is_finite() && y.y.is_finite()) {
+            return Err(InvalidInput::OutOfRange {
+                name: names[0],
+                expected: "must lie within about 1e300 task sizes (Task::scale) of the poles; \
+                           pass a nearer point",
+                found: format!("({}, {})", p.x, p.y),
+            }
+            .into());
+        }
         let sign = match dir {
             MapDir::CenterToCircle => -1.0,
             MapDir::CircleToCenter => 1.0,
         };
-        let (u, kappa, den, v) = self.map_parts(y, sign);
         let third = match dir {
             MapDir::CenterToCircle => self.q23,
             MapDir::CircleToCenter => self.local_of(self.image_p23),
         };
-        let tol = Self::POINT_TOLERANCE;
+        // Far points (beyond one task size) run in units of `m`: the answer
+        // `u kappa / den` is homogeneous of degree 1 in (y, q13), so the
+        // scaled parts give it, times `m`, without overflow for any finite
+        // point (at `m = 1` this is the plain formula, bit for bit).
+        let m = y.x.abs().max(y.y.abs()).max(1.0);
+        let (u, kappa, den, v) = self.map_parts_scaled(y / m, self.q13 / m, sign);
+        let tol = Self::POINT_TOLERANCE / m;
         let at = [
             (u.norm(), "the pole P12"),
             (v.norm(), "the pole P13"),
-            ((y - third).norm(), "the pole P23"),
+            ((y - third).norm() / m, "the pole P23"),
         ];
         for (dist, name) in at {
             if dist <= tol {
@@ -571,7 +658,7 @@ impl Task {
             }
             .into());
         }
-        let out = self.global_of(u * (kappa / den));
+        let out = self.global_of(u * (kappa / den) * m);
         if out.x.is_finite() && out.y.is_finite() {
             Ok(out)
         } else {

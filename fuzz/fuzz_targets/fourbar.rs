@@ -1,0 +1,4 @@
+//! cargo-fuzz target `fourbar`: see `burmester_fuzz::fourbar`.
+#![no_main]
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| burmester_fuzz::fourbar(data));

@@ -1,0 +1,343 @@
+"""The public API under extreme floats, NaN, infinities, huge ints, wrong
+types and wrong shapes (hypothesis).
+
+Every call either returns finite values (NaN only where a validity mask
+says so), or raises a ``BurmesterError`` subclass whose message says what to
+change, or a ``TypeError`` for an argument of the wrong type. Nothing else
+escapes (no ``OverflowError``, no plain ``ValueError``, no Rust panic) and
+nothing crashes the interpreter.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from hypothesis.extra import numpy as hnp
+
+import burmester
+from burmester import BurmesterError, Conic, FourBar, InvalidInputError, Task
+
+# A warning (NumPy dropping an imaginary part, say) is a silent coercion: fail.
+pytestmark = pytest.mark.filterwarnings("error")
+
+POSES = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
+SETTINGS = settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+# Numbers as a user might pass them: any double (NaN, infinities, subnormals,
+# huge), ints far beyond a double, and ordinary values.
+numbers = st.one_of(
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.integers(min_value=-(10**400), max_value=10**400),
+    st.floats(min_value=-10, max_value=10),
+    st.sampled_from([0.0, -0.0, 5e-324, 1e-300, 1e300, 1.7976931348623157e308]),
+)
+moderate = st.floats(min_value=-20, max_value=20, allow_nan=False)
+# Not numbers at all.
+junk = st.one_of(
+    st.none(),
+    st.text(max_size=3),
+    st.complex_numbers(allow_nan=False, max_magnitude=10).filter(lambda z: z.imag != 0),
+    st.binary(max_size=2),
+    st.dictionaries(st.integers(), st.integers(), max_size=1),
+    st.just(object()),
+)
+
+
+def finite(*values):
+    for v in values:
+        if isinstance(v, tuple):
+            finite(*v)
+        else:
+            assert math.isfinite(v), values
+
+
+def acceptable(exc):
+    """The error types a call may raise, with a message that says something."""
+    assert isinstance(exc, (BurmesterError, TypeError)), repr(exc)
+    assert str(exc), repr(exc)
+    if isinstance(exc, BurmesterError):
+        # The message says what to change.
+        msg = str(exc)
+        assert any(
+            w in msg
+            for w in ("pass", "choose", "rotate", "move", "rescale", "shorten", "step", "use one of", "reduce", "but")
+        ), msg
+
+
+def call(fn, *args, **kwargs):
+    try:
+        return fn(*args, **kwargs), None
+    except Exception as exc:  # noqa: BLE001 - checked by acceptable()
+        acceptable(exc)
+        return None, exc
+
+
+@SETTINGS
+@given(st.lists(numbers, min_size=4, max_size=4), numbers, numbers, numbers, st.lists(numbers, max_size=5))
+def test_fourbar_with_any_numbers(lengths, ox, angle, theta2, thetas):
+    fb, err = call(FourBar, *lengths, origin=(ox, 0.0), ground_angle=angle)
+    if err is not None:
+        return
+    finite(fb.lengths, fb.input_pivot, fb.output_pivot, fb.link_ratio())
+    for arc in fb.input_range() or []:
+        finite(arc)
+    finite(*fb.dead_positions())
+    for mode in ("open", "crossed"):
+        r, err = call(fb.solve, theta2, mode)
+        if r is not None:
+            finite(r)
+            finite(call(fb.joints, theta2, mode)[0])
+            c = fb.configuration(theta2, mode)
+            if not c.toggle:
+                # The mode asked for is the mode returned.
+                assert c.coupler_rocker_angle * (1 if mode == "open" else -1) > -1e-9
+        r, _ = call(fb.coupler_point, theta2, (1.0, 0.5), mode)
+        if r is not None:
+            finite(r)
+    r, err = call(fb.solve_many, thetas)
+    if r is not None:
+        t3, t4, ok = r
+        assert np.array_equal(np.isfinite(t3), ok) and np.array_equal(np.isfinite(t4), ok)
+
+
+@SETTINGS
+@given(st.lists(st.lists(numbers, min_size=0, max_size=4), min_size=0, max_size=4), st.tuples(numbers, numbers))
+def test_task_with_any_numbers(poses, point):
+    t, err = call(Task, poses)
+    if err is not None:
+        return
+    finite(t.poles(), t.image_poles(), t.scale, t.rotations, t.pole_triangle_angles())
+    for m in (t.circle_point, t.center_point):
+        r, err = call(m, point)
+        if r is not None:
+            finite(r)
+    r, err = call(t.filemon, point)
+    if r is not None:
+        finite(r.circle_point)
+
+
+@SETTINGS
+@given(st.tuples(numbers, numbers), st.text(max_size=8) | st.sampled_from(["conic", "direct", "simulate", "Direct"]))
+def test_classify_with_any_point_and_method(point, method):
+    f = Task(POSES).filemon((4.0, -1.0))
+    r, err = call(f.classify, point, method)
+    if r is not None:
+        assert r in ("free", "defective", "boundary")
+    if all(isinstance(v, float) or abs(v) < 1e300 for v in point):
+        m, err = call(f.margin, point)
+        if m is not None and all(math.isfinite(float(v)) for v in point):
+            assert not math.isnan(m)
+
+
+@SETTINGS
+@given(
+    st.lists(numbers, min_size=4, max_size=4),
+    st.integers(min_value=-3, max_value=9) | st.integers(min_value=2**62, max_value=2**80),
+    st.integers(min_value=-3, max_value=9),
+    st.sampled_from(["conic", "direct", "simulate", "fast"]),
+)
+def test_branch_and_margin_maps_with_any_grid(bounds, nx, ny, method):
+    f = Task(POSES).filemon((4.0, -1.0))
+    m, err = call(f.branch_map, *bounds, nx, ny, method)
+    if m is not None:
+        assert m.shape == (ny, nx) and m.dtype == np.bool_
+    mm, err = call(f.margin_map, *bounds, nx, ny)
+    if mm is not None:
+        assert mm.shape == (ny, nx) and not np.isnan(mm).any()
+
+
+@SETTINGS
+@given(
+    hnp.arrays(
+        dtype=st.sampled_from([np.float64, np.float32, np.int64, np.bool_]),
+        shape=hnp.array_shapes(min_dims=0, max_dims=3, max_side=3),
+        elements=None,
+    )
+)
+def test_point_arrays_of_any_shape_and_values(a):
+    t = Task(POSES)
+    r, err = call(t.circle_points, a)
+    if a.ndim == 0 or a.shape[-1] != 2:
+        assert isinstance(err, InvalidInputError), (a.shape, err)
+        return
+    pts, ok = r
+    assert pts.shape == a.shape and ok.shape == a.shape[:-1]
+    assert np.array_equal(np.isfinite(pts).all(axis=-1), ok)
+    v, err = call(Conic(1, 0, -1, 0, 0, -1).evaluate_many, a)
+    assert v.shape == a.shape[:-1]
+    finite_in = np.isfinite(a.astype(np.float64)).all(axis=-1)
+    assert np.isfinite(v[finite_in]).all()
+
+
+@SETTINGS
+@given(st.lists(numbers, min_size=6, max_size=6), st.lists(numbers, min_size=4, max_size=4), st.tuples(numbers, numbers))
+def test_conic_with_any_coefficients(q, vp, point):
+    c, err = call(Conic, *q)
+    if err is not None:
+        return
+    finite(c.coefficients, c.axis_angle)
+    if c.center is not None:
+        finite(c.center)
+    v, err = call(c.evaluate, point)
+    if v is not None and all(math.isfinite(float(p)) for p in point):
+        assert math.isfinite(v)
+    lines, err = call(c.polylines, *vp)
+    if lines is not None:
+        xmin, xmax, ymin, ymax = (float(b) for b in vp)
+        slack = 1e-9 * (abs(xmax) + abs(xmin) + abs(ymax) + abs(ymin)) + 1e-6 * (xmax - xmin + ymax - ymin)
+        for l in lines:
+            assert np.isfinite(l).all()
+            assert (l[:, 0] >= xmin - slack).all() and (l[:, 0] <= xmax + slack).all()
+            assert (l[:, 1] >= ymin - slack).all() and (l[:, 1] <= ymax + slack).all()
+
+
+@SETTINGS
+@given(st.lists(moderate, min_size=2, max_size=2), moderate)
+def test_curves_and_maps_on_ordinary_input_never_hand_back_nan(p, theta):
+    t = Task(POSES)
+    f = t.filemon((4.0, -1.0))
+    for conic in f.conics:
+        finite(conic.evaluate(tuple(p)), conic.distance(tuple(p)) if conic.evaluate(tuple(p)) else 0.0)
+    finite(f.margin(tuple(p)))
+    fb = FourBar(4, 1, 3, 3)
+    finite(fb.solve(theta), fb.joints(theta))
+
+
+# Every public callable, with each argument replaced by something that is not
+# what it should be.
+def _targets():
+    fb = FourBar(4.0, 1.0, 3.0, 3.0)
+    t = Task(POSES)
+    f = t.filemon((4.0, -1.0))
+    c = f.conics[0]
+    s = t.four_bar((-1.0, 3.0), (4.0, -1.0))
+    sm = f.solution_map(-8.0, 8.0, -8.0, 8.0, 6, 5)
+    return [
+        (FourBar, (4.0, 1.0, 3.0, 3.0)),
+        (FourBar.from_pivots, ((0.0, 0.0), (4.0, 0.0), 1.0, 3.0, 3.0)),
+        (fb.solve, (0.5, "open")),
+        (fb.configuration, (0.5, "open")),
+        (fb.solve_many, ([0.5, 1.0], "open")),
+        (fb.transmission_angle, (0.5, "open")),
+        (fb.joints, (0.5, "open")),
+        (fb.coupler_point, (0.5, (1.0, 0.0), "open")),
+        (fb.coupler_path, ((1.0, 0.0), [0.5], "open")),
+        (Task, (POSES,)),
+        (t.displace, ((1.0, 2.0), 1, 2)),
+        (t.image_poles_in, (2,)),
+        (t.circle_point, ((1.0, -2.0),)),
+        (t.center_point, ((1.0, -2.0),)),
+        (t.circle_points, ([[1.0, -2.0]],)),
+        (t.center_points, ([[1.0, -2.0]],)),
+        (t.dyad, ((1.0, -2.0),)),
+        (t.crank_angles, ((1.0, -2.0),)),
+        (t.filemon, ((4.0, -1.0),)),
+        (t.four_bar, ((-1.0, 3.0), (4.0, -1.0))),
+        (t.line_to_conic, ((0.0, 0.0), (1.0, 0.5))),
+        (f.line_conic, (1,)),
+        (f.is_branch_free, ((1.0, 1.0), "conic")),
+        (f.classify, ((1.0, 1.0), "direct")),
+        (f.classify_circle_point, ((1.0, 1.0),)),
+        (f.circle_signs, ((1.0, 1.0),)),
+        (f.conic_values, ((1.0, 1.0),)),
+        (f.branch_map, (-1.0, 1.0, -1.0, 1.0, 4, 3, "conic")),
+        (f.margin_map, (-1.0, 1.0, -1.0, 1.0, 4, 3)),
+        (f.margin, ((1.0, 1.0),)),
+        (f.four_bar, ((-1.0, 3.0),)),
+        (Conic, (1.0, 0.0, -1.0, 0.0, 0.0, -1.0)),
+        (c.evaluate, ((1.0, 1.0),)),
+        (c.evaluate_many, ([[1.0, 1.0]],)),
+        (c.side, ((1.0, 1.0),)),
+        (c.distance, ((1.0, 1.0),)),
+        (c.polylines, (-5.0, 5.0, -5.0, 5.0, 0.1)),
+        (s.pose_at, (0.5, "open")),
+        (f.solution_map, (-1.0, 1.0, -1.0, 1.0, 4, 3)),
+        (t.driven_solution_map, ((-1.0, 3.0), -1.0, 1.0, -1.0, 1.0, 4, 3)),
+        (sm.best_pivots, (3, 0.1)),
+        (sm.point, (1, 2)),
+        (sm.linkage, (1, 2)),
+    ]
+
+
+BAD = [
+    None,
+    "x",
+    1j,
+    [1.0, 2.0, 3.0],
+    {},
+    object(),
+    b"",
+    10**400,
+    -(10**400),
+    -1,
+    2**70,
+    math.nan,
+    math.inf,
+    -math.inf,
+    np.array([[1.0, 2.0], [3.0, 4.0]]),
+    np.array(["a", "b"]),
+    np.array([1 + 2j, 3j]),
+    np.complex64(1 + 1j),
+    np.array([np.complex128(1j), 2.0]),
+    [[1.0], [2.0, 3.0]],
+    [None, None],
+    (math.nan, 0.0),
+    (10**400, 0.0),
+]
+
+
+@pytest.mark.parametrize("target", range(len(_targets())))
+def test_every_argument_replaced_by_something_wrong(target):
+    fn, args = _targets()[target]
+    for k in range(len(args)):
+        for bad in BAD:
+            new = list(args)
+            new[k] = bad
+            r, err = call(fn, *new)
+            if err is None:
+                # Accepted: the bad value was a legitimate input here (a
+                # list of numbers where an array goes, -1 as an angle).
+                continue
+
+
+@pytest.mark.parametrize(
+    "key", ["min_transmission_deg", "max_link_ratio", "input", "base_plate", "obstacles", "link_width", "travel_samples"]
+)
+def test_solution_map_keywords_replaced_by_something_wrong(key):
+    f = Task(POSES).filemon((4.0, -1.0))
+    good = {"obstacles": [[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]], "link_width": 0.1}
+    for bad in BAD:
+        kwargs = dict(good)
+        kwargs[key] = bad
+        call(f.solution_map, -8.0, 8.0, -8.0, 8.0, 5, 4, **kwargs)
+
+
+def test_documented_error_types_and_messages():
+    with pytest.raises(InvalidInputError, match="too large to be a float"):
+        FourBar(10**400, 1, 1, 1)
+    with pytest.raises(InvalidInputError, match="non-negative integer"):
+        Task(POSES).displace((0, 0), -1, 2)
+    with pytest.raises(InvalidInputError, match="pose 2 must be"):
+        Task([(0, 0, 0), (1, 2), (3, 2, 1.1)])
+    with pytest.raises(TypeError, match="complex"):
+        Task(POSES).circle_points(np.array([[1j, 0]]))
+    with pytest.raises(TypeError, match="real number"):
+        Task(POSES).circle_points(np.array([[None, 0]], dtype=object))
+    with pytest.raises(InvalidInputError, match="one shape"):
+        FourBar(4, 1, 3, 3).solve_many([[1.0], [2.0, 3.0]])
+    with pytest.raises(InvalidInputError, match="at most 1e100"):
+        Task([(1e101, 0, 0), (2, 0.5, 0.4), (3, 2, 1.1)])
+    with pytest.raises(burmester.DegenerateError, match="1e-6"):
+        Task([(0, 0, 0.3), (1, 0, 0.3 + 1e-7), (3, 2, 1.1)])
+    with pytest.raises(InvalidInputError, match="1e300"):
+        FourBar(1e300, 1e300, 1e300, 1e300)
+
+
+def test_grids_beyond_2_32_samples_are_refused_before_any_allocation():
+    f = Task(POSES).filemon((4.0, -1.0))
+    with pytest.raises(InvalidInputError, match="2\\^32"):
+        f.margin_map(-1, 1, -1, 1, 2**32 + 1, 1)
+    with pytest.raises(InvalidInputError, match="2\\^32"):
+        f.branch_map(-1, 1, -1, 1, 2**17, 2**17)
