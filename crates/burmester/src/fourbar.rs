@@ -556,9 +556,12 @@ impl FourBar {
         let heron = (sum * sum - r2) * (r2 - diff * diff);
         let big = sum * sum + r2;
         let tol = ROUNDING_FACTOR * f64::EPSILON * big * big;
-        // NaN comes from a non-finite angle.
-        if heron.is_nan() || heron < -tol || r2 == 0.0 {
-            return Err(self.close_error(theta2, r2, heron));
+        // One comparison catches both a loop that does not close and NaN
+        // (from a non-finite angle). A crank tip on the output pivot
+        // (`r2 == 0`) makes `v3` and `v4` zero, caught below.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(heron >= -tol) {
+            return Err(self.close_error(theta2, r2));
         }
         let toggle = heron <= tol;
         let h = if toggle {
@@ -572,9 +575,8 @@ impl FourBar {
         // Both vanish only when the crank tip is within rounding of the
         // output pivot of a linkage whose coupler equals its rocker (or the
         // products underflow there): every coupler angle closes the loop.
-        let zero = Vector2::zeros();
-        if v3 == zero || v4 == zero {
-            return Err(AssemblyError::Indeterminate { theta2 }.into());
+        if (v3.x == 0.0 && v3.y == 0.0) || (v4.x == 0.0 && v4.y == 0.0) {
+            return Err(indeterminate(theta2));
         }
         Ok(Closed {
             crank_dir: Vector2::new(c2, s2),
@@ -585,7 +587,8 @@ impl FourBar {
     }
 
     #[cold]
-    fn close_error(&self, theta2: f64, r2: f64, heron: f64) -> Error {
+    #[inline(never)]
+    fn close_error(&self, theta2: f64, r2: f64) -> Error {
         if !theta2.is_finite() {
             return InvalidInput::NotFinite {
                 name: "theta2",
@@ -593,17 +596,13 @@ impl FourBar {
             }
             .into();
         }
-        if heron < 0.0 || heron.is_nan() {
-            AssemblyError::OutOfReach {
-                theta2,
-                distance: r2.sqrt() * self.scale,
-                min_reach: self.diff_n.abs() * self.scale,
-                max_reach: self.sum_n * self.scale,
-            }
-            .into()
-        } else {
-            AssemblyError::Indeterminate { theta2 }.into()
+        AssemblyError::OutOfReach {
+            theta2,
+            distance: r2.sqrt() * self.scale,
+            min_reach: self.diff_n.abs() * self.scale,
+            max_reach: self.sum_n * self.scale,
         }
+        .into()
     }
 
     /// Solves the loop at input angle `theta2` (radians) in `mode`.
@@ -848,6 +847,13 @@ impl FourBar {
     pub fn input_turns_fully(&self) -> bool {
         self.input_range().is_full()
     }
+}
+
+/// The error of a position where every coupler angle closes the loop.
+#[cold]
+#[inline(never)]
+fn indeterminate(theta2: f64) -> Error {
+    AssemblyError::Indeterminate { theta2 }.into()
 }
 
 /// Grashof type of the lengths `[ground, crank, coupler, rocker]` (see
