@@ -7,15 +7,7 @@ import pytest
 
 import burmester
 from burmester import InvalidInputError
-
-POSES = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
-C0 = (4.0, -1.0)
-VP = (-8.0, 8.0, -8.0, 8.0)
-
-
-@pytest.fixture
-def f():
-    return burmester.Task(POSES).filemon(C0)
+from conftest import POSES, C0, VP
 
 
 def test_arrays_shapes_dtypes_and_consistency(f):

@@ -18,11 +18,11 @@ from hypothesis.extra import numpy as hnp
 
 import burmester
 from burmester import BurmesterError, Conic, FourBar, InvalidInputError, Task
+from conftest import POSES
 
 # A warning (NumPy dropping an imaginary part, say) is a silent coercion: fail.
 pytestmark = pytest.mark.filterwarnings("error")
 
-POSES = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
 SETTINGS = settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 # Numbers as a user might pass them: any double (NaN, infinities, subnormals,

@@ -5,15 +5,7 @@ import pytest
 
 import burmester
 from burmester import InvalidInputError
-
-POSES = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
-C0 = (4.0, -1.0)
-VP = (-8.0, 8.0, -8.0, 8.0)
-
-
-@pytest.fixture
-def f():
-    return burmester.Task(POSES).filemon(C0)
+from conftest import VP
 
 
 def test_shape_dtype_and_orientation(f):

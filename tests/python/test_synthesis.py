@@ -7,13 +7,7 @@ import pytest
 
 import burmester
 from burmester import Conic, DegenerateError, Filemon, InvalidInputError, Task
-
-POSES = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
-
-
-@pytest.fixture
-def task():
-    return Task(POSES)
+from conftest import POSES, C0
 
 
 def rot(v, a):

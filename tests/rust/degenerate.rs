@@ -22,7 +22,7 @@ use burmester::{
 };
 
 fn example() -> Task {
-    Task::from_xya([[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap()
+    burmester::example::task()
 }
 
 const C0: Point2<f64> = Point2::new(4.0, -1.0);

@@ -4,48 +4,22 @@
 //! order and circuit against driving the linkage through its travel with
 //! the position analysis, and the constraints against direct geometry.
 
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
+
+mod common;
 
 use burmester::{
-    AssemblyMode, Constraints, DesignLimits, Dyad, Filemon, Grashof, Grid, InputRequirement,
-    Method, Point2, SolutionMap, SynthesizedFourBar, Task, Vector2,
+    AssemblyMode, Constraints, DesignLimits, Dyad, Grashof, Grid, InputRequirement, Method, Point2,
+    SolutionMap, SynthesizedFourBar, Task, Vector2,
 };
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
-
-fn task() -> impl Strategy<Value = Task> {
-    proptest::array::uniform3((-5.0f64..5.0, -5.0f64..5.0, -PI..PI)).prop_filter_map(
-        "ill-conditioned task",
-        |p| {
-            let t = Task::from_xya(p.map(|(x, y, a)| [x, y, a])).ok()?;
-            if t.rotations().iter().any(|r| r.abs() < 0.1) {
-                return None;
-            }
-            let far = t
-                .poles()
-                .iter()
-                .map(|p| p.coords.norm())
-                .fold(0.0, f64::max);
-            (far < 300.0 && t.scale() > 0.05).then_some(t)
-        },
-    )
-}
-
-fn wrap(a: f64) -> f64 {
-    let mut a = a % TAU;
-    if a > PI {
-        a -= TAU;
-    } else if a <= -PI {
-        a += TAU;
-    }
-    a
-}
 
 /// Random linkages of random tasks, with their figures.
 fn linkages(n: usize, seed_cases: &mut TestRunner) -> Vec<(Task, SynthesizedFourBar)> {
     let mut out = Vec::new();
     while out.len() < n {
-        let t = task().new_tree(seed_cases).unwrap().current();
+        let t = common::task().new_tree(seed_cases).unwrap().current();
         let pts = (-8.0f64..8.0, -8.0f64..8.0, -8.0f64..8.0, -8.0f64..8.0)
             .new_tree(seed_cases)
             .unwrap()
@@ -88,7 +62,7 @@ fn drive(t: &Task, fb: &SynthesizedFourBar, dir: f64, steps: usize) -> Option<bo
     let lands = |theta: f64, k: usize| {
         fb.pose_at(theta, mode).is_ok_and(|p| {
             (p.position - t.poses()[k].position).norm() < 1e-7 * size
-                && wrap(p.angle - t.poses()[k].angle).abs() < 1e-7
+                && common::wrap(p.angle - t.poses()[k].angle).abs() < 1e-7
         })
     };
     if d3 < d2 {
@@ -226,26 +200,11 @@ fn order_and_circuit_match_driving_the_linkage() {
     );
 }
 
-fn filemon(runner: &mut TestRunner) -> Filemon {
-    loop {
-        let t = task().new_tree(runner).unwrap().current();
-        let c = (-6.0f64..6.0, -6.0f64..6.0)
-            .new_tree(runner)
-            .unwrap()
-            .current();
-        if let Ok(f) = t.filemon(Point2::new(c.0, c.1)) {
-            if !f.all_defective() {
-                return f;
-            }
-        }
-    }
-}
-
 #[test]
 fn map_samples_match_the_linkage_at_each_point() {
     let mut runner = TestRunner::deterministic();
     for _ in 0..6 {
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 6.0);
         let g = Grid::from_bounds(-9.0, 9.0, -8.0, 8.0, 41, 37).unwrap();
         let limits = DesignLimits::default();
         let map = f.solution_map(&g, &limits, &Constraints::none()).unwrap();
@@ -287,7 +246,7 @@ fn map_samples_match_the_linkage_at_each_point() {
 #[test]
 fn limits_and_input_requirements_filter_the_mask() {
     let mut runner = TestRunner::deterministic();
-    let f = filemon(&mut runner);
+    let f = common::filemon(&mut runner, 6.0);
     let g = Grid::from_bounds(-9.0, 9.0, -9.0, 9.0, 60, 60).unwrap();
     let loose = DesignLimits {
         min_transmission: 0.0,

@@ -4,22 +4,14 @@
 
 use std::f64::consts::{PI, TAU};
 
+mod common;
+
 use burmester::{
     AssemblyError, AssemblyMode, Error, FourBar, Grashof, InputRange, InvalidInput, Point2, Vector2,
 };
 use proptest::prelude::*;
 
 const CASES: u32 = 4000;
-
-fn wrap(a: f64) -> f64 {
-    let mut a = a % TAU;
-    if a > PI {
-        a -= TAU;
-    } else if a <= -PI {
-        a += TAU;
-    }
-    a
-}
 
 fn unit(a: f64) -> Vector2<f64> {
     Vector2::new(a.cos(), a.sin())
@@ -372,8 +364,8 @@ proptest! {
         for mode in AssemblyMode::BOTH {
             if let (Ok(c), Some((t3, t4))) = (fb.solve(t2, mode), circle_intersection(&fb, t2, mode)) {
                 if c.transmission_angle() > 1e-3 {
-                    prop_assert!(wrap(c.theta3 - t3).abs() < 1e-9, "{:?} vs {} {}", c, t3, t4);
-                    prop_assert!(wrap(c.theta4 - t4).abs() < 1e-9, "{:?} vs {} {}", c, t3, t4);
+                    prop_assert!(common::wrap(c.theta3 - t3).abs() < 1e-9, "{:?} vs {} {}", c, t3, t4);
+                    prop_assert!(common::wrap(c.theta4 - t4).abs() < 1e-9, "{:?} vs {} {}", c, t3, t4);
                 }
             }
         }
@@ -390,7 +382,7 @@ proptest! {
         if o.transmission_angle() < 1e-3 { return Ok(()); }
         if let Some(pairs) = half_angle(l1, l2, l3, l4, t2) {
             let close = |p: (f64, f64), q: &burmester::Configuration| {
-                wrap(p.0 - q.theta3).abs() < 1e-7 && wrap(p.1 - q.theta4).abs() < 1e-7
+                common::wrap(p.0 - q.theta3).abs() < 1e-7 && common::wrap(p.1 - q.theta4).abs() < 1e-7
             };
             // The same root sign gives one mode, the other sign the other.
             prop_assert!(
@@ -408,8 +400,8 @@ proptest! {
             if let Ok(c) = fb.solve(t2, mode) {
                 let m = fb.solve(2.0 * t1 - t2, mode.other()).unwrap();
                 if !c.toggle {
-                    prop_assert!(wrap(m.theta3 - (2.0 * t1 - c.theta3)).abs() < 1e-9);
-                    prop_assert!(wrap(m.theta4 - (2.0 * t1 - c.theta4)).abs() < 1e-9);
+                    prop_assert!(common::wrap(m.theta3 - (2.0 * t1 - c.theta3)).abs() < 1e-9);
+                    prop_assert!(common::wrap(m.theta4 - (2.0 * t1 - c.theta4)).abs() < 1e-9);
                 }
             }
         }
@@ -423,8 +415,8 @@ proptest! {
             match (fb.solve(t2, mode), scaled.solve(t2, mode)) {
                 (Ok(a), Ok(b)) => {
                     if a.transmission_angle() > 1e-4 {
-                        prop_assert!(wrap(a.theta3 - b.theta3).abs() < 1e-9);
-                        prop_assert!(wrap(a.theta4 - b.theta4).abs() < 1e-9);
+                        prop_assert!(common::wrap(a.theta3 - b.theta3).abs() < 1e-9);
+                        prop_assert!(common::wrap(a.theta4 - b.theta4).abs() < 1e-9);
                     }
                 }
                 (Err(_), Err(_)) => {}
@@ -507,7 +499,7 @@ proptest! {
         let range = fb.input_range();
         for k in 0..720 {
             let t = -PI + (k as f64 + 0.5) * TAU / 720.0;
-            let near_dead = range.dead_positions().iter().any(|&d| wrap(t - d).abs() < 1e-7);
+            let near_dead = range.dead_positions().iter().any(|&d| common::wrap(t - d).abs() < 1e-7);
             if !near_dead {
                 prop_assert_eq!(fb.solve(t, AssemblyMode::Open).is_ok(), range.contains(t), "at {}", t);
             }

@@ -34,7 +34,7 @@
 //! largest `delta` at which a sign differed (about `1e-15 (1 + R)^2` in the
 //! runs made so far; the band has a margin of about 100 over it).
 
-use std::f64::consts::PI;
+mod common;
 
 use burmester::{Conic, Filemon, Line, Point2, Task, Vector2};
 use num_bigint::BigInt;
@@ -119,39 +119,6 @@ impl Exact {
     }
 }
 
-fn task() -> impl Strategy<Value = Task> {
-    prop::array::uniform3((-5.0f64..5.0, -5.0f64..5.0, -PI..PI)).prop_filter_map(
-        "ill-conditioned task",
-        |p| {
-            let t = Task::from_xya(p.map(|(x, y, a)| [x, y, a])).ok()?;
-            if t.rotations().iter().any(|r| r.abs() < 0.1) {
-                return None;
-            }
-            let far = t
-                .poles()
-                .iter()
-                .map(|p| p.coords.norm())
-                .fold(0.0, f64::max);
-            (far < 300.0 && t.scale() > 0.05).then_some(t)
-        },
-    )
-}
-
-fn filemon(runner: &mut TestRunner) -> Filemon {
-    loop {
-        let t = task().new_tree(runner).unwrap().current();
-        let c = (-8.0f64..8.0, -8.0f64..8.0)
-            .new_tree(runner)
-            .unwrap()
-            .current();
-        if let Ok(f) = t.filemon(Point2::new(c.0, c.1)) {
-            if !f.all_defective() && (f.circle_point() - f.driven().center).norm() > 1e-3 {
-                return f;
-            }
-        }
-    }
-}
-
 fn side(c: &Conic, p: Point2<f64>) -> i8 {
     c.side(p)
 }
@@ -165,7 +132,7 @@ fn conic_signs_match_the_exact_closed_form_outside_the_band() {
     let mut checked = 0usize;
     let mut wrong_inside = 0usize;
     for _ in 0..24 {
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 8.0);
         let t = *f.task();
         let ex = Exact::new(&t, &f);
         let s = t.scale();
@@ -226,7 +193,7 @@ fn classify_matches_the_exact_classification_at_random_points() {
     let mut runner = TestRunner::deterministic();
     let mut checked = 0;
     for _ in 0..30 {
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 8.0);
         let t = *f.task();
         let ex = Exact::new(&t, &f);
         let s = t.scale();
@@ -260,7 +227,7 @@ fn classify_matches_the_exact_classification_at_random_points() {
 fn the_exact_reference_vanishes_at_the_known_points() {
     let mut runner = TestRunner::deterministic();
     for _ in 0..10 {
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 8.0);
         let t = *f.task();
         let ex = Exact::new(&t, &f);
         let [la, _] = f.lines().unwrap();

@@ -8,7 +8,7 @@
 use burmester::{Error, FourBar, Grid, Method, Point2, Pose, Task, Vector2};
 
 fn example() -> Task {
-    Task::from_xya([[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap()
+    burmester::example::task()
 }
 
 /// fourbar/lengths-near-f64-max-overflow-joints: a linkage whose extent

@@ -4,43 +4,12 @@
 
 use std::f64::consts::PI;
 
-use burmester::{Filemon, Grid, Method, Point2, Task};
+mod common;
+
+use burmester::{Grid, Method, Point2, Task};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
-
-fn task() -> impl Strategy<Value = Task> {
-    prop::array::uniform3((-5.0f64..5.0, -5.0f64..5.0, -PI..PI)).prop_filter_map(
-        "ill-conditioned task",
-        |p| {
-            let t = Task::from_xya(p.map(|(x, y, a)| [x, y, a])).ok()?;
-            if t.rotations().iter().any(|r| r.abs() < 0.1) {
-                return None;
-            }
-            let far = t
-                .poles()
-                .iter()
-                .map(|p| p.coords.norm())
-                .fold(0.0, f64::max);
-            (far < 300.0 && t.scale() > 0.05).then_some(t)
-        },
-    )
-}
-
-fn filemon(runner: &mut TestRunner) -> Filemon {
-    loop {
-        let t = task().new_tree(runner).unwrap().current();
-        let c = (-8.0f64..8.0, -8.0f64..8.0)
-            .new_tree(runner)
-            .unwrap()
-            .current();
-        if let Ok(f) = t.filemon(Point2::new(c.0, c.1)) {
-            if !f.all_defective() {
-                return f;
-            }
-        }
-    }
-}
 
 #[test]
 fn grid_convention_and_errors() {
@@ -78,7 +47,7 @@ fn grid_convention_and_errors() {
 fn runs_match_pointwise_bit_for_bit_over_4096_wide_rows() {
     let mut runner = TestRunner::deterministic();
     for case in 0..40 {
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 8.0);
         let half = [2.0, 10.0, 40.0][case % 3];
         let g = Grid::from_bounds(-half, half, -half, half, 4096, 24).unwrap();
         let runs = f.branch_map(&g, Method::Conic);
@@ -102,7 +71,7 @@ fn runs_match_pointwise_bit_for_bit_over_4096_wide_rows() {
 fn runs_match_pointwise_at_the_poles_and_c0() {
     let mut runner = TestRunner::deterministic();
     for _ in 0..20 {
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 8.0);
         let t = f.task();
         for p in t.poles().iter().chain([&f.driven().center]) {
             let r = 1e-6 * t.scale();
@@ -136,7 +105,7 @@ fn the_three_methods_agree_at_512_squared() {
     let n = 512;
     let mut checked = 0usize;
     for case in 0..12 {
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 8.0);
         let half = [6.0, 12.0, 25.0][case % 3];
         let g = Grid::from_bounds(-half, half, -half, half, n, n).unwrap();
         let size = 2.0 * half;
@@ -181,7 +150,7 @@ fn the_three_methods_agree_at_512_squared() {
 fn margin_map_signs_and_distances() {
     let mut runner = TestRunner::deterministic();
     for _ in 0..10 {
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 8.0);
         let g = Grid::from_bounds(-9.0, 9.0, -7.0, 7.0, 180, 140).unwrap();
         let m = f.margin_map(&g);
         let b = f.branch_map(&g, Method::Conic);
@@ -205,7 +174,7 @@ fn margin_map_signs_and_distances() {
 fn all_defective_maps_are_false_and_minus_infinity() {
     let mut runner = TestRunner::deterministic();
     loop {
-        let t = task().new_tree(&mut runner).unwrap().current();
+        let t = common::task().new_tree(&mut runner).unwrap().current();
         let Ok(f) = t.filemon(Point2::new(1.0, -3.0)) else {
             continue;
         };
@@ -250,7 +219,7 @@ proptest! {
                 &[seed as u8; 32],
             ),
         );
-        let f = filemon(&mut runner);
+        let f = common::filemon(&mut runner, 8.0);
         let t = f.task();
         let mut sim = burmester::Similarity::new(k, ang, burmester::Vector2::new(ox, oy)).unwrap();
         if mirror { sim = sim.mirrored(); }

@@ -5,6 +5,8 @@
 
 use std::f64::consts::PI;
 
+mod common;
+
 use burmester::{
     Branch, CircleOrLine, Conic, ConicKind, DegenerateError, Error, Filemon, Line, Method, Point2,
     Pose, Similarity, Task, Vector2,
@@ -12,14 +14,6 @@ use burmester::{
 use proptest::prelude::*;
 
 const CASES: u32 = 2000;
-
-fn config(cases: u32) -> ProptestConfig {
-    ProptestConfig {
-        cases,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
 
 fn wrap_half(a: f64) -> f64 {
     // modulo pi into (-pi/2, pi/2]
@@ -34,24 +28,6 @@ fn wrap_half(a: f64) -> f64 {
 
 /// Well-conditioned random tasks: rotations between poses at least 0.1 rad
 /// (mod 2 pi), poles within a few hundred units.
-fn task() -> impl Strategy<Value = Task> {
-    (prop::array::uniform3((-5.0f64..5.0, -5.0f64..5.0, -PI..PI)),).prop_filter_map(
-        "ill-conditioned task",
-        |(p,)| {
-            let t = Task::from_xya(p.map(|(x, y, a)| [x, y, a])).ok()?;
-            if t.rotations().iter().any(|r| r.abs() < 0.1) {
-                return None;
-            }
-            let far = t
-                .poles()
-                .iter()
-                .map(|p| p.coords.norm())
-                .fold(0.0, f64::max);
-            (far < 300.0 && t.scale() > 0.05).then_some(t)
-        },
-    )
-}
-
 fn point() -> impl Strategy<Value = Point2<f64>> {
     (-10.0f64..10.0, -10.0f64..10.0).prop_map(|(x, y)| Point2::new(x, y))
 }
@@ -172,7 +148,7 @@ fn the_middle_line_is_not_always_pose_2() {
     let mut defective = 0;
     let mut n = 0;
     while n < 3000 {
-        let t = task().new_tree(&mut runner).unwrap().current();
+        let t = common::task().new_tree(&mut runner).unwrap().current();
         let c0 = point().new_tree(&mut runner).unwrap().current();
         let Some(f) = filemon(&t, c0) else { continue };
         n += 1;
@@ -193,10 +169,10 @@ fn the_middle_line_is_not_always_pose_2() {
 }
 
 proptest! {
-    #![proptest_config(config(CASES))]
+    #![proptest_config(common::config(CASES))]
 
     #[test]
-    fn poles_images_and_triangle_angles(t in task()) {
+    fn poles_images_and_triangle_angles(t in common::task()) {
         let [p12, p13, p23] = t.poles();
         let s = t.scale();
         prop_assert!((t.displace(p12, 1, 2) - p12).norm() < 1e-9 * s);
@@ -221,7 +197,7 @@ proptest! {
     }
 
     #[test]
-    fn maps_round_trip_and_are_circumcenters(t in task(), y in point(), x in point()) {
+    fn maps_round_trip_and_are_circumcenters(t in common::task(), y in point(), x in point()) {
         let s = t.scale();
         if off_pole_circle(&t, y) > 1e-3 && min_pole_distance(&t, y) > 1e-3 {
             let cx = t.circle_point(y).unwrap();
@@ -246,7 +222,7 @@ proptest! {
     /// Property 2: each transformed Filemon curve passes through P12, P13,
     /// P23 and C0; and the image of every point of the line lies on it.
     #[test]
-    fn property_2_conics_pass_through_the_poles_and_c0(t in task(), c0 in point(), r in -20.0f64..20.0) {
+    fn property_2_conics_pass_through_the_poles_and_c0(t in common::task(), c0 in point(), r in -20.0f64..20.0) {
         let Some(f) = filemon(&t, c0) else { return Ok(()) };
         let s = t.scale();
         for (k, line) in f.all_lines().iter().enumerate() {
@@ -268,7 +244,7 @@ proptest! {
     /// circle twice, asymptotes along arg(X - P12) + theta12/2 (mod pi);
     /// ellipse when it misses it.
     #[test]
-    fn property_1_hyperbola_iff_the_line_meets_the_image_pole_circle(t in task(), c0 in point()) {
+    fn property_1_hyperbola_iff_the_line_meets_the_image_pole_circle(t in common::task(), c0 in point()) {
         let Some(f) = filemon(&t, c0) else { return Ok(()) };
         let CircleOrLine::Circle { center, radius } = t.image_pole_circle() else { return Ok(()) };
         let theta12 = t.rotations()[0];
@@ -305,7 +281,7 @@ proptest! {
     /// Property 3: parallel lines give conics with the same principal-axis
     /// direction (modulo pi/2).
     #[test]
-    fn property_3_parallel_lines_share_their_axes(t in task(), p in point(), q in point(), a in -PI..PI) {
+    fn property_3_parallel_lines_share_their_axes(t in common::task(), p in point(), q in point(), a in -PI..PI) {
         let d = Vector2::new(a.cos(), a.sin());
         let g1 = t.line_to_conic(&Line { point: p, direction: d }).unwrap();
         let g2 = t.line_to_conic(&Line { point: q, direction: d * 3.0 }).unwrap();
@@ -325,7 +301,7 @@ proptest! {
     /// Property 4: the image poles lie in the branch-defect region of the
     /// circle-point plane.
     #[test]
-    fn property_4_image_poles_are_defective(t in task(), c0 in point()) {
+    fn property_4_image_poles_are_defective(t in common::task(), c0 in point()) {
         let Some(f) = filemon(&t, c0) else { return Ok(()) };
         for p in t.image_poles() {
             prop_assert_ne!(f.classify_circle_point(p), Branch::Free);
@@ -335,7 +311,7 @@ proptest! {
     /// Property 5: center points on the pole-triangle side lines (vertices
     /// excepted) are always defective.
     #[test]
-    fn property_5_pole_triangle_sides_are_defective(t in task(), c0 in point(), r in -3.0f64..3.0, side in 0usize..3) {
+    fn property_5_pole_triangle_sides_are_defective(t in common::task(), c0 in point(), r in -3.0f64..3.0, side in 0usize..3) {
         let Some(f) = filemon(&t, c0) else { return Ok(()) };
         let [p12, p13, p23] = t.poles();
         let (a, b) = [(p12, p13), (p12, p23), (p13, p23)][side];
@@ -351,7 +327,7 @@ proptest! {
     /// task's size) around the conics, and from the pole circle for the
     /// methods that need the circle point.
     #[test]
-    fn the_three_classifiers_agree_off_the_curves(t in task(), c0 in point(), a0 in point()) {
+    fn the_three_classifiers_agree_off_the_curves(t in common::task(), c0 in point(), a0 in point()) {
         let Some(f) = filemon(&t, c0) else { return Ok(()) };
         let s = t.scale();
         let conic = f.classify(a0, Method::Conic).unwrap();
@@ -376,7 +352,7 @@ proptest! {
     /// A four-bar built from two dyads of a random task, driven by the
     /// position analysis, passes through all three poses.
     #[test]
-    fn the_built_four_bar_passes_through_the_three_poses(t in task(), a0 in point(), c0 in point()) {
+    fn the_built_four_bar_passes_through_the_three_poses(t in common::task(), a0 in point(), c0 in point()) {
         let (Ok(da), Ok(dc)) = (t.dyad_from_center(a0), t.dyad_from_center(c0)) else { return Ok(()) };
         let Ok(fb) = t.four_bar(&da, &dc) else { return Ok(()) };
         let size = fb.fourbar.lengths().iter().sum::<f64>() + fb.coupler_point.norm();
@@ -386,7 +362,7 @@ proptest! {
             let pose = fb.pose_at(fb.input_angles[k], mode).unwrap();
             let want = t.poses()[k];
             prop_assert!((pose.position - want.position).norm() < 1e-8 * size, "pose {}: {:?} vs {:?}", k + 1, pose, want);
-            prop_assert!(burmester_wrap(pose.angle - want.angle).abs() < 1e-8);
+            prop_assert!(common::wrap(pose.angle - want.angle).abs() < 1e-8);
         }
     }
 
@@ -400,7 +376,7 @@ proptest! {
     /// task's size away from the curves.
     #[test]
     fn invariance_under_similarities(
-        t in task(), c0 in point(), a0 in point(),
+        t in common::task(), c0 in point(), a0 in point(),
         k in 1e-3f64..1e3, ang in -PI..PI, ox in -100.0f64..100.0, oy in -100.0f64..100.0, mirror in any::<bool>(),
     ) {
         let mut sim = Similarity::new(k, ang, Vector2::new(ox, oy)).unwrap();
@@ -485,23 +461,13 @@ proptest! {
     }
 }
 
-fn burmester_wrap(a: f64) -> f64 {
-    let mut a = a % (2.0 * PI);
-    if a > PI {
-        a -= 2.0 * PI;
-    } else if a <= -PI {
-        a += 2.0 * PI;
-    }
-    a
-}
-
 proptest! {
-    #![proptest_config(config(300))]
+    #![proptest_config(common::config(300))]
 
     /// The sampled conics lie on the curve, and pass through the known
     /// points inside the view (within the sampling tolerance).
     #[test]
-    fn sampled_conics_lie_on_the_curve_and_reach_the_poles(t in task(), c0 in point()) {
+    fn sampled_conics_lie_on_the_curve_and_reach_the_poles(t in common::task(), c0 in point()) {
         let Some(f) = filemon(&t, c0) else { return Ok(()) };
         let vp = burmester::Viewport::new(-12.0, 12.0, -12.0, 12.0).unwrap();
         let tol = vp.diagonal() * 1e-3;

@@ -20,8 +20,35 @@ pub(crate) struct MapOptions {
 }
 
 impl MapOptions {
+    /// The grid and the options of a solution map, from the Python arguments.
     #[allow(clippy::too_many_arguments)]
-    pub(crate) fn new(
+    pub(crate) fn with_grid(
+        bounds: [Real; 4],
+        size: [Count; 2],
+        min_transmission_deg: Real,
+        max_link_ratio: Real,
+        input: &str,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: Real,
+        travel_samples: Count,
+    ) -> PyResult<(Grid, Self)> {
+        let [xmin, xmax, ymin, ymax] = bounds.map(|r| r.0);
+        let grid = Grid::from_bounds(xmin, xmax, ymin, ymax, size[0].0, size[1].0).py()?;
+        let opts = Self::new(
+            min_transmission_deg.0,
+            max_link_ratio.0,
+            input,
+            base_plate,
+            obstacles,
+            link_width.0,
+            travel_samples.0,
+        )?;
+        Ok((grid, opts))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn new(
         min_transmission_deg: f64,
         max_link_ratio: f64,
         input: &str,

@@ -252,15 +252,16 @@ impl PyTask {
         link_width: Real,
         travel_samples: Count,
     ) -> PyResult<crate::design::PySolutionMap> {
-        let grid = burmester::Grid::from_bounds(xmin.0, xmax.0, ymin.0, ymax.0, nx.0, ny.0).py()?;
-        let opts = crate::design::MapOptions::new(
-            min_transmission_deg.0,
-            max_link_ratio.0,
+        let (grid, opts) = crate::design::MapOptions::with_grid(
+            [xmin, xmax, ymin, ymax],
+            [nx, ny],
+            min_transmission_deg,
+            max_link_ratio,
             input,
             base_plate,
             obstacles,
-            link_width.0,
-            travel_samples.0,
+            link_width,
+            travel_samples,
         )?;
         crate::design::driven_solution_map(py, self.inner, driving_center.0, grid, opts)
     }
@@ -451,15 +452,16 @@ impl PyFilemon {
         link_width: Real,
         travel_samples: Count,
     ) -> PyResult<crate::design::PySolutionMap> {
-        let grid = burmester::Grid::from_bounds(xmin.0, xmax.0, ymin.0, ymax.0, nx.0, ny.0).py()?;
-        let opts = crate::design::MapOptions::new(
-            min_transmission_deg.0,
-            max_link_ratio.0,
+        let (grid, opts) = crate::design::MapOptions::with_grid(
+            [xmin, xmax, ymin, ymax],
+            [nx, ny],
+            min_transmission_deg,
+            max_link_ratio,
             input,
             base_plate,
             obstacles,
-            link_width.0,
-            travel_samples.0,
+            link_width,
+            travel_samples,
         )?;
         crate::design::solution_map(py, self.inner, grid, opts)
     }

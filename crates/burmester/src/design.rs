@@ -989,6 +989,72 @@ fn sample(
     }
 }
 
+/// What the per-sample evaluation of either map shares: the task's
+/// displacements, its frame, and the prepared constraints.
+struct Sampler<'a> {
+    task: Task,
+    moves: Moves,
+    origin: Point2<f64>,
+    scale: f64,
+    tiny: f64,
+    limits: &'a DesignLimits,
+    prepared: Prepared,
+}
+
+impl<'a> Sampler<'a> {
+    fn new(task: &Task, limits: &'a DesignLimits, constraints: &Constraints) -> Result<Self> {
+        limits.validate()?;
+        let (origin, scale) = task.frame();
+        Ok(Sampler {
+            task: *task,
+            moves: Moves::new(task),
+            origin,
+            scale,
+            tiny: Task::POINT_TOLERANCE * task.scale(),
+            limits,
+            prepared: constraints.prepare()?,
+        })
+    }
+
+    /// The moving pivot at the three poses of the dyad centered at `p` (its
+    /// circle point by the closed form), or `None` where it does not exist.
+    #[inline(always)]
+    fn moving_pivots(&self, p: Point2<f64>) -> Option<[Point2<f64>; 3]> {
+        let (u, kappa, den, _) = self.task.map_parts((p - self.origin) / self.scale, -1.0);
+        let q = self.origin + u * (kappa / den * self.scale);
+        if !(q.x.is_finite() && q.y.is_finite()) || den == 0.0 {
+            return None;
+        }
+        Some([q, self.moves.apply(1, q), self.moves.apply(2, q)])
+    }
+
+    /// The moving pivot of a fixed dyad at the three poses.
+    fn fixed_pivots(&self, d: &Dyad) -> [Point2<f64>; 3] {
+        [0, 1, 2].map(|k| self.moves.apply(k, d.circle))
+    }
+
+    /// The sample for figures `fig` with branch flag `branch_free`, where
+    /// `candidate` is the varying center point and `driving`, `driven` the
+    /// linkage's dyads (for the constraints).
+    fn sample(
+        &self,
+        fig: Option<LinkageFigures>,
+        branch_free: bool,
+        candidate: Point2<f64>,
+        driving: Dyad,
+        driven: Dyad,
+    ) -> Sample {
+        sample(fig, branch_free, self.limits, |f| {
+            self.prepared.pivot_ok(candidate)
+                && (self.prepared.obstacles.is_empty()
+                    || self
+                        .task
+                        .four_bar(&driving, &driven)
+                        .is_ok_and(|fb| self.prepared.clearance_ok(&fb, f)))
+        })
+    }
+}
+
 impl Filemon {
     /// The solution-space map over candidate driving center points `A0`
     /// (module docs). The branch-free flag is exactly the `conic` branch
@@ -1003,38 +1069,23 @@ impl Filemon {
         limits: &DesignLimits,
         constraints: &Constraints,
     ) -> Result<SolutionMap> {
-        limits.validate()?;
-        let prepared = constraints.prepare()?;
-        let task = *self.task();
+        let sampler = Sampler::new(self.task(), limits, constraints)?;
         let driven = self.driven();
         let mut map = SolutionMap::empty(
             *grid,
-            task,
+            *self.task(),
             Varying::Driving { driven },
             *limits,
             constraints.clone(),
         );
         let branch = self.branch_map(grid, Method::Conic);
-        let m = Moves::new(&task);
-        let c = [0, 1, 2].map(|k| m.apply(k, driven.circle));
-        let tiny = Task::POINT_TOLERANCE * task.scale();
-        let (origin, scale) = task.frame();
+        let c = sampler.fixed_pivots(&driven);
         map.fill(|k, a0| {
-            // The circle point by the closed form, NaN-free checks inline.
-            let (u, kappa, den, _) = task.map_parts((a0 - origin) / scale, -1.0);
-            let a1 = origin + u * (kappa / den * scale);
-            if !(a1.x.is_finite() && a1.y.is_finite()) || den == 0.0 {
+            let Some(a) = sampler.moving_pivots(a0) else {
                 return Sample::INVALID;
-            }
-            let a = [a1, m.apply(1, a1), m.apply(2, a1)];
-            let fig = figures::<false>(a0, a, driven.center, c, tiny);
-            sample(fig, branch[k], limits, |f| {
-                prepared.pivot_ok(a0)
-                    && (prepared.obstacles.is_empty()
-                        || task
-                            .four_bar(&Dyad::new(a0, a1), &driven)
-                            .is_ok_and(|fb| prepared.clearance_ok(&fb, f)))
-            })
+            };
+            let fig = figures::<false>(a0, a, driven.center, c, sampler.tiny);
+            sampler.sample(fig, branch[k], a0, Dyad::new(a0, a[0]), driven)
         });
         Ok(map)
     }
@@ -1057,12 +1108,10 @@ impl Task {
         limits: &DesignLimits,
         constraints: &Constraints,
     ) -> Result<SolutionMap> {
-        limits.validate()?;
-        let prepared = constraints.prepare()?;
+        let sampler = Sampler::new(self, limits, constraints)?;
         positive("driving crank length", driving.length())?;
-        let task = *self;
-        let d = task.dyad_from_center(driving.center)?;
-        if (d.circle - driving.circle).norm() > 1e-9 * (task.scale() + driving.length()) {
+        let d = self.dyad_from_center(driving.center)?;
+        if (d.circle - driving.circle).norm() > 1e-9 * (self.scale() + driving.length()) {
             return Err(InvalidInput::OutOfRange {
                 name: "driving dyad",
                 expected: "must be a dyad of the task (its circle point the circle point of its \
@@ -1073,31 +1122,19 @@ impl Task {
         }
         let mut map = SolutionMap::empty(
             *grid,
-            task,
+            *self,
             Varying::Driven { driving: *driving },
             *limits,
             constraints.clone(),
         );
-        let m = Moves::new(&task);
-        let a = [0, 1, 2].map(|k| m.apply(k, driving.circle));
-        let tiny = Task::POINT_TOLERANCE * task.scale();
-        let (origin, scale) = task.frame();
+        let a = sampler.fixed_pivots(driving);
         map.fill(|_, c0| {
-            let (u, kappa, den, _) = task.map_parts((c0 - origin) / scale, -1.0);
-            let c1 = origin + u * (kappa / den * scale);
-            if !(c1.x.is_finite() && c1.y.is_finite()) || den == 0.0 {
+            let Some(c) = sampler.moving_pivots(c0) else {
                 return Sample::INVALID;
-            }
-            let c = [c1, m.apply(1, c1), m.apply(2, c1)];
-            let fig = figures::<true>(driving.center, a, c0, c, tiny);
+            };
+            let fig = figures::<true>(driving.center, a, c0, c, sampler.tiny);
             let free = fig.is_some_and(|f| f.branch_free());
-            sample(fig, free, limits, |f| {
-                prepared.pivot_ok(c0)
-                    && (prepared.obstacles.is_empty()
-                        || task
-                            .four_bar(driving, &Dyad::new(c0, c1))
-                            .is_ok_and(|fb| prepared.clearance_ok(&fb, f)))
-            })
+            sampler.sample(fig, free, c0, *driving, Dyad::new(c0, c[0]))
         });
         Ok(map)
     }

@@ -169,6 +169,20 @@ impl Grid {
         (16_384 / self.nx).clamp(1, self.ny.div_ceil(8).max(1))
     }
 
+    /// Calls `f(j, row)` for every row `j` of `out` (`nx` values each), in
+    /// parallel over blocks of rows.
+    pub(crate) fn par_rows<T: Send>(&self, out: &mut [T], f: impl Fn(usize, &mut [T]) + Sync) {
+        let rows = self.rows_per_block();
+        let nx = self.nx;
+        out.par_chunks_mut(nx * rows)
+            .enumerate()
+            .for_each(|(b, block)| {
+                for (r, row) in block.chunks_mut(nx).enumerate() {
+                    f(b * rows + r, row);
+                }
+            });
+    }
+
     fn check_len(&self, len: usize) -> Result<()> {
         if len == self.len() {
             Ok(())
@@ -305,38 +319,26 @@ impl Filemon {
             out.par_chunks_mut(1 << 16).for_each(|c| c.fill(false));
             return;
         };
-        let rows = grid.rows_per_block();
-        let nx = grid.nx;
         match method {
             Method::Conic => {
                 let local = Local::new(&ca, grid);
-                out.par_chunks_mut(nx * rows)
-                    .enumerate()
-                    .for_each(|(b, block)| {
-                        for (r, row) in block.chunks_mut(nx).enumerate() {
-                            let j = b * rows + r;
-                            if local.far_row(grid, j) {
-                                self.far_row_map(grid, j, row);
-                                continue;
-                            }
-                            conic_row(&ca, &cb, local.y(grid, j), &local.xs, row);
-                            self.clear_special_points(grid, j, row);
-                        }
-                    });
+                grid.par_rows(out, |j, row| {
+                    if local.far_row(grid, j) {
+                        self.far_row_map(grid, j, row);
+                        return;
+                    }
+                    conic_row(&ca, &cb, local.y(grid, j), &local.xs, row);
+                    self.clear_special_points(grid, j, row);
+                });
             }
             Method::Direct | Method::Simulate => {
-                out.par_chunks_mut(nx * rows)
-                    .enumerate()
-                    .for_each(|(b, block)| {
-                        for (r, row) in block.chunks_mut(nx).enumerate() {
-                            let j = b * rows + r;
-                            for (i, o) in row.iter_mut().enumerate() {
-                                *o = self
-                                    .classify(grid.point(i, j), method)
-                                    .is_ok_and(|c| c.is_free());
-                            }
-                        }
-                    });
+                grid.par_rows(out, |j, row| {
+                    for (i, o) in row.iter_mut().enumerate() {
+                        *o = self
+                            .classify(grid.point(i, j), method)
+                            .is_ok_and(|c| c.is_free());
+                    }
+                });
             }
         }
     }
@@ -357,21 +359,14 @@ impl Filemon {
             return Ok(());
         };
         let local = Local::new(&ca, grid);
-        let rows = grid.rows_per_block();
-        let nx = grid.nx;
-        out.par_chunks_mut(nx * rows)
-            .enumerate()
-            .for_each(|(b, block)| {
-                for (r, row) in block.chunks_mut(nx).enumerate() {
-                    let j = b * rows + r;
-                    if local.far_row(grid, j) {
-                        self.far_row_map(grid, j, row);
-                        continue;
-                    }
-                    pointwise_row(&ca, &cb, local.y(grid, j), &local.xs, row);
-                    self.clear_special_points(grid, j, row);
-                }
-            });
+        grid.par_rows(out, |j, row| {
+            if local.far_row(grid, j) {
+                self.far_row_map(grid, j, row);
+                return;
+            }
+            pointwise_row(&ca, &cb, local.y(grid, j), &local.xs, row);
+            self.clear_special_points(grid, j, row);
+        });
         Ok(())
     }
 
@@ -452,23 +447,16 @@ impl Filemon {
             return;
         };
         let local = Local::new(&ca, grid);
-        let rows = grid.rows_per_block();
-        let nx = grid.nx;
-        out.par_chunks_mut(nx * rows)
-            .enumerate()
-            .for_each(|(b, block)| {
-                for (r, row) in block.chunks_mut(nx).enumerate() {
-                    let j = b * rows + r;
-                    if local.far_row(grid, j) {
-                        for (i, o) in row.iter_mut().enumerate() {
-                            *o = margin_f32(self.margin(grid.point(i, j)));
-                        }
-                        continue;
-                    }
-                    margin_row(&ca, &cb, local.y(grid, j), local.s, &local.xs, row);
-                    self.for_special_columns(grid, j, |i| row[i] = -0.0);
+        grid.par_rows(out, |j, row| {
+            if local.far_row(grid, j) {
+                for (i, o) in row.iter_mut().enumerate() {
+                    *o = margin_f32(self.margin(grid.point(i, j)));
                 }
-            });
+                return;
+            }
+            margin_row(&ca, &cb, local.y(grid, j), local.s, &local.xs, row);
+            self.for_special_columns(grid, j, |i| row[i] = -0.0);
+        });
     }
 
     /// The signed margin at one point (see [`margin_map`](Self::margin_map)).
