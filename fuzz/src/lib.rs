@@ -24,8 +24,8 @@
 //! test without libFuzzer.
 
 use burmester::{
-    AssemblyMode, CircleOrLine, Conic, DegenerateError, Error, FourBar, Grid, Line, Method, Point2,
-    Pose, Task, Vector2, Viewport,
+    AssemblyMode, CircleOrLine, Conic, Constraints, DegenerateError, DesignLimits, Error, FourBar,
+    Grid, InputRequirement, Line, Method, Point2, Pose, SolutionMap, Task, Vector2, Viewport,
 };
 
 /// Reads numbers from the fuzzer's bytes; past the end everything is zero.
@@ -530,12 +530,12 @@ pub fn filemon_classify(data: &[u8]) {
             f.fixed_pivot_images(),
             f.conic_values(p)
         );
-        if let Some(v) = f.conic_values(p) {
-            if moderate {
-                finite("conic value", v[0]);
-                finite("conic value", v[1]);
-                assert!(margin.is_finite(), "margin {margin}");
-            }
+        if let Some(v) = f.conic_values(p)
+            && moderate
+        {
+            finite("conic value", v[0]);
+            finite("conic value", v[1]);
+            assert!(margin.is_finite(), "margin {margin}");
         }
         assert_eq!(
             margin > 0.0,
@@ -550,11 +550,11 @@ pub fn filemon_classify(data: &[u8]) {
                 finite("coupler point", fb.coupler_point.x);
                 finite("coupler point", fb.coupler_point.y);
                 for (k, m) in fb.modes.iter().enumerate() {
-                    if let Some(m) = m {
-                        if let Ok(q) = fb.pose_at(fb.input_angles[k], *m) {
-                            finite_pt("pose", q.position);
-                            finite("pose angle", q.angle);
-                        }
+                    if let Some(m) = m
+                        && let Ok(q) = fb.pose_at(fb.input_angles[k], *m)
+                    {
+                        finite_pt("pose", q.position);
+                        finite("pose angle", q.angle);
                     }
                 }
             }
@@ -702,5 +702,148 @@ pub fn conic(data: &[u8]) {
     let (x0, y0, w, h) = (inp.num(), inp.num(), inp.num().abs(), inp.num().abs());
     if let Ok(vp) = Viewport::new(x0, x0 + w, y0, y0 + h) {
         polylines(&c, &vp);
+    }
+}
+
+/// Checks the arrays of a solution map: lengths, and the documented
+/// relations between them (no unflagged NaN).
+fn check_solution_map(map: &SolutionMap) {
+    let n = map.context.grid.len();
+    for len in [
+        map.valid.len(),
+        map.branch_free.len(),
+        map.grashof.len(),
+        map.input_full.len(),
+        map.direction.len(),
+        map.one_circuit.len(),
+        map.min_transmission.len(),
+        map.link_ratio.len(),
+        map.acceptable.len(),
+    ] {
+        assert_eq!(len, n);
+    }
+    for k in 0..n {
+        if map.acceptable[k] {
+            assert!(
+                map.valid[k] && map.branch_free[k] && map.direction[k] != 0 && map.one_circuit[k]
+            );
+        }
+        if !map.valid[k] {
+            assert!(!map.acceptable[k] && map.direction[k] == 0);
+            assert_eq!(map.grashof[k], SolutionMap::GRASHOF_NONE);
+            assert!(map.min_transmission[k].is_nan() && map.link_ratio[k].is_nan());
+            continue;
+        }
+        assert!(SolutionMap::grashof_of_code(map.grashof[k]).is_some());
+        let r = map.link_ratio[k];
+        assert!(r >= 1.0, "link ratio {r}");
+        let t = map.min_transmission[k];
+        if map.direction[k] == 0 {
+            assert!(t.is_nan(), "transmission {t} without a travel");
+        } else {
+            assert!(
+                (0.0..=core::f32::consts::FRAC_PI_2 + 1e-6).contains(&t),
+                "transmission {t}"
+            );
+        }
+    }
+}
+
+/// The solution-space map in both directions, on small grids anywhere, with
+/// arbitrary limits and constraints; the best pivots of each.
+pub fn solution_map(data: &[u8]) {
+    let mut inp = Input::new(data);
+    let Some(t) = task(&mut inp) else { return };
+    let s = t.scale();
+    let near =
+        |inp: &mut Input<'_>, t: &Task| t.poles()[0] + Vector2::new(inp.nice(), inp.nice()) * s;
+    let c0 = if inp.byte() % 2 == 0 {
+        inp.point()
+    } else {
+        near(&mut inp, &t)
+    };
+    let f = match t.filemon(c0) {
+        Ok(f) => f,
+        Err(e) => return message(&e),
+    };
+    let (a, b) = if inp.byte() % 2 == 0 {
+        (inp.point(), inp.point())
+    } else {
+        (near(&mut inp, &t), near(&mut inp, &t))
+    };
+    let vp = match Viewport::new(a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)) {
+        Ok(v) => v,
+        Err(e) => return message(&e),
+    };
+    let grid = match Grid::new(vp, inp.count(1, 12), inp.count(1, 12)) {
+        Ok(g) => g,
+        Err(e) => return message(&e),
+    };
+    let limits = DesignLimits {
+        min_transmission: if inp.byte() % 4 == 0 {
+            inp.num()
+        } else {
+            inp.nice().abs() % 1.5
+        },
+        max_link_ratio: if inp.byte() % 4 == 0 {
+            inp.num()
+        } else {
+            1.0 + inp.nice().abs()
+        },
+        input: [
+            InputRequirement::Any,
+            InputRequirement::Crank,
+            InputRequirement::Rocker,
+        ][usize::from(inp.byte()) % 3],
+    };
+    let polygon = |inp: &mut Input<'_>| -> Vec<Point2<f64>> {
+        let n = inp.count(0, 5);
+        (0..n)
+            .map(|_| {
+                if inp.byte() % 4 == 0 {
+                    inp.point()
+                } else {
+                    near(inp, &t)
+                }
+            })
+            .collect()
+    };
+    let constraints = Constraints {
+        base_plate: if inp.byte() % 2 == 0 {
+            Some(polygon(&mut inp))
+        } else {
+            None
+        },
+        obstacles: (0..inp.count(0, 2)).map(|_| polygon(&mut inp)).collect(),
+        link_width: if inp.byte() % 3 == 0 {
+            inp.num()
+        } else {
+            inp.nice().abs() * s * 0.1
+        },
+        travel_samples: inp.count(0, 16),
+    };
+    match f.solution_map(&grid, &limits, &constraints) {
+        Err(e) => message(&e),
+        Ok(map) => {
+            check_solution_map(&map);
+            for p in map.best_pivots(inp.count(0, 4), None) {
+                assert!(map.acceptable[p.index]);
+                finite_pt("pivot", p.center);
+                assert!(p.figures.link_ratio >= 1.0);
+            }
+        }
+    }
+    // The other direction, with the driving dyad at a probe point.
+    let a0 = near(&mut inp, &t);
+    if let Ok(driving) = t.dyad_from_center(a0) {
+        match t.driven_solution_map(&driving, &grid, &limits, &constraints) {
+            Err(e) => message(&e),
+            Ok(map) => {
+                check_solution_map(&map);
+                for p in map.best_pivots(2, Some(0.0)) {
+                    assert!(map.acceptable[p.index]);
+                }
+            }
+        }
     }
 }

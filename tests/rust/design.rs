@@ -491,6 +491,27 @@ fn bad_limits_and_constraints_are_typed_errors() {
         ..Constraints::none()
     };
     assert!(f.solution_map(&g, &DesignLimits::default(), &cons).is_err());
+    // fuzz/regressions/solution_map/obstacle-of-coincident-points-panics-in-hull:
+    // parry's hull asserted on an obstacle without area.
+    for obstacle in [
+        vec![Point2::new(1.0, 1.0)],
+        vec![Point2::new(1.0, 1.0); 4],
+        vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 1.0),
+            Point2::new(2.0, 2.0),
+        ],
+    ] {
+        let cons = Constraints {
+            obstacles: vec![obstacle],
+            link_width: 0.1,
+            ..Constraints::none()
+        };
+        let e = f
+            .solution_map(&g, &DesignLimits::default(), &cons)
+            .unwrap_err();
+        assert!(e.to_string().contains("obstacle"), "{e}");
+    }
     let cons = Constraints {
         base_plate: Some(vec![Point2::new(0.0, 0.0)]),
         ..Constraints::none()

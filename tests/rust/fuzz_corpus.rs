@@ -49,3 +49,8 @@ fn filemon_classify() {
 fn conic() {
     replay("conic", checks::conic);
 }
+
+#[test]
+fn solution_map() {
+    replay("solution_map", checks::solution_map);
+}

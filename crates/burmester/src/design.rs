@@ -185,16 +185,22 @@ impl Constraints {
 
     /// Validates the constraints and builds parry shapes.
     fn prepare(&self) -> Result<Prepared> {
-        for (k, p) in self
+        for p in self
             .base_plate
             .iter()
             .flatten()
             .chain(self.obstacles.iter().flatten())
-            .enumerate()
         {
-            let _ = k;
-            finite("constraint vertex x", p.x)?;
-            finite("constraint vertex y", p.y)?;
+            for (name, v) in [("constraint vertex x", p.x), ("constraint vertex y", p.y)] {
+                if finite(name, v)?.abs() > MAX_COORDINATE {
+                    return Err(InvalidInput::OutOfRange {
+                        name,
+                        expected: "must be at most 1e100 in magnitude; rescale the constraints",
+                        found: v.to_string(),
+                    }
+                    .into());
+                }
+            }
         }
         if let Some(plate) = &self.base_plate {
             if plate.len() < 3 {
@@ -220,14 +226,19 @@ impl Constraints {
         }
         let mut obstacles = Vec::with_capacity(self.obstacles.len());
         for o in &self.obstacles {
+            let bad = || InvalidInput::OutOfRange {
+                name: "obstacle",
+                expected: "must have at least 3 vertices that are not all on one line; pass a \
+                           polygon",
+                found: format!("{} vertices", o.len()),
+            };
+            // parry's hull asserts on fewer than two distinct points: check
+            // that the vertices span an area first.
+            if !spans_area(o) {
+                return Err(bad().into());
+            }
             let pts: Vec<PVector> = o.iter().map(|p| PVector::new(p.x, p.y)).collect();
-            let hull =
-                ConvexPolygon::from_convex_hull(&pts).ok_or_else(|| InvalidInput::OutOfRange {
-                    name: "obstacle",
-                    expected: "must have at least 3 vertices that are not all on one line",
-                    found: format!("{} vertices", o.len()),
-                })?;
-            obstacles.push(hull);
+            obstacles.push(ConvexPolygon::from_convex_hull(&pts).ok_or_else(bad)?);
         }
         Ok(Prepared {
             plate: self
@@ -239,6 +250,29 @@ impl Constraints {
             samples: self.samples(),
         })
     }
+}
+
+/// The largest coordinate of a constraint vertex.
+const MAX_COORDINATE: f64 = 1e100;
+
+/// Whether the points span an area: three or more, not all on one line
+/// (relative to their extent).
+fn spans_area(pts: &[Point2<f64>]) -> bool {
+    let Some(&p0) = pts.first() else {
+        return false;
+    };
+    let far = pts
+        .iter()
+        .max_by(|a, b| {
+            (*a - p0)
+                .norm_squared()
+                .total_cmp(&(*b - p0).norm_squared())
+        })
+        .copied()
+        .unwrap_or(p0);
+    let d = far - p0;
+    let extent = d.norm_squared();
+    extent > 0.0 && pts.iter().any(|q| cross(d, q - p0).abs() > 1e-12 * extent)
 }
 
 /// Constraints as parry shapes.
