@@ -134,6 +134,14 @@ def _draw_circle(ax: Axes, circle: Dict[str, Any], extent: Extent, gid: str, lab
     return art
 
 
+def _markers(ax: Axes, points: npt.ArrayLike, gid: str, label: Optional[str], **style: Any) -> Artist:
+    """Points drawn as markers without a line, tagged with ``gid``."""
+    pts = np.asarray(points, dtype=float).reshape(-1, 2)
+    (art,) = ax.plot(pts[:, 0], pts[:, 1], linestyle="none", label=label, **style)
+    art.set_gid(gid)
+    return art
+
+
 def _label(ax: Axes, p: Point, text: str, color: str = "black") -> None:
     ax.annotate(
         text, p, xytext=(4, 4), textcoords="offset points", fontsize=9, color=color, zorder=6
@@ -286,19 +294,12 @@ def center_plane(
     tri.set_gid("pole-triangle")
     handles.append(tri)
     handles.append(_draw_circle(ax, task.pole_circle(), extent, "pole-circle", "pole circle"))
-    (pole_art,) = ax.plot(
-        [p[0] for p in poles], [p[1] for p in poles], linestyle="none", marker="o",
-        markersize=5, color=POLE_COLOR, zorder=5, label="poles",
-    )
-    pole_art.set_gid("poles")
-    handles.append(pole_art)
+    handles.append(_markers(ax, poles, "poles", "poles", marker="o", markersize=5, color=POLE_COLOR, zorder=5))
     c0 = filemon.driven_center
-    (c0_art,) = ax.plot(
-        [c0[0]], [c0[1]], linestyle="none", marker="^", markersize=9, color="#ff7f0e",
-        markeredgecolor="black", zorder=5, label="driven crank's fixed pivot C0",
-    )
-    c0_art.set_gid("driven-pivot")
-    handles.append(c0_art)
+    handles.append(_markers(
+        ax, [c0], "driven-pivot", "driven crank's fixed pivot C0",
+        marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=5,
+    ))
     if labels:
         for name, p in zip(("P12", "P13", "P23"), poles):
             _label(ax, p, name)
@@ -316,12 +317,10 @@ def center_plane(
         handles.append(Line2D([], [], color="#636363", linewidth=0.8, label="transmission angle, deg"))
     if pivots is not None and len(pivots) > 0:
         pts = np.asarray(pivots, dtype=float).reshape(-1, 2)
-        (piv,) = ax.plot(
-            pts[:, 0], pts[:, 1], linestyle="none", marker="*", markersize=13, color="#ffd700",
-            markeredgecolor="black", zorder=6, label="best driving pivots",
-        )
-        piv.set_gid("pivots")
-        handles.append(piv)
+        handles.append(_markers(
+            ax, pts, "pivots", "best driving pivots",
+            marker="*", markersize=13, color="#ffd700", markeredgecolor="black", zorder=6,
+        ))
         for k, (px, py) in enumerate(pts.tolist(), start=1):
             _label(ax, (px, py), str(k))
 
@@ -446,26 +445,18 @@ def circle_plane(
 
     ip = filemon.task.image_poles()
     handles.append(_draw_circle(ax, filemon.task.image_pole_circle(), extent, "image-pole-circle", "image-pole circle"))
-    (ip_art,) = ax.plot(
-        [p[0] for p in ip], [p[1] for p in ip], linestyle="none", marker="s", markersize=5,
-        color=POLE_COLOR, zorder=5, label="image poles",
-    )
-    ip_art.set_gid("image-poles")
-    handles.append(ip_art)
+    handles.append(_markers(
+        ax, ip, "image-poles", "image poles", marker="s", markersize=5, color=POLE_COLOR, zorder=5,
+    ))
     images = filemon.fixed_pivot_images
-    (img_art,) = ax.plot(
-        [p[0] for p in images], [p[1] for p in images], linestyle="none", marker="^",
-        markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=5,
-        label="fixed pivot seen from the coupler, C'k",
-    )
-    img_art.set_gid("fixed-pivot-images")
-    handles.append(img_art)
-    (c1_art,) = ax.plot(
-        [c1[0]], [c1[1]], linestyle="none", marker="o", markersize=7, color="white",
-        markeredgecolor="black", zorder=5, label="driven crank's moving pivot C1",
-    )
-    c1_art.set_gid("circle-point")
-    handles.append(c1_art)
+    handles.append(_markers(
+        ax, images, "fixed-pivot-images", "fixed pivot seen from the coupler, C'k",
+        marker="^", markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=5,
+    ))
+    handles.append(_markers(
+        ax, [c1], "circle-point", "driven crank's moving pivot C1",
+        marker="o", markersize=7, color="white", markeredgecolor="black", zorder=5,
+    ))
     if labels:
         for name, p in zip(("P12", "P13", "P'23"), ip):
             _label(ax, p, name)
@@ -504,11 +495,10 @@ def _draw_static(ax: Axes, sfb: SynthesizedFourBar, task: Optional[Task], curve:
         cc.set_gid("coupler-curve")
     (g,) = ax.plot([a0[0], c0[0]], [a0[1], c0[1]], color="0.3", linestyle="--", linewidth=1.0, zorder=2)
     g.set_gid("ground")
-    (piv,) = ax.plot(
-        [a0[0], c0[0]], [a0[1], c0[1]], linestyle="none", marker="^", markersize=10,
-        color="0.2", zorder=6, label="fixed pivots A0, C0",
+    _markers(
+        ax, [a0, c0], "fixed-pivots", "fixed pivots A0, C0",
+        marker="^", markersize=10, color="0.2", zorder=6,
     )
-    piv.set_gid("fixed-pivots")
     poses = task.poses if task is not None else [
         sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)
     ]
