@@ -148,12 +148,19 @@ def _label(ax: Axes, p: Point, text: str, color: str = "black") -> None:
     )
 
 
-def _finish(ax: Axes, extent: Extent, legend: bool) -> None:
+def _legend(ax: Axes, handles: Optional[List[Any]] = None) -> None:
+    """The legend, to the right of the axes (of ``handles`` when given)."""
+    kwargs: Dict[str, Any] = {} if handles is None else {"handles": handles}
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize="small", **kwargs)
+
+
+def _finish(ax: Axes, extent: Extent, legend: bool, handles: List[Any]) -> None:
+    """Limits to ``extent``, equal aspect, and the legend of ``handles``."""
     ax.set_xlim(extent[0], extent[1])
     ax.set_ylim(extent[2], extent[3])
     ax.set_aspect("equal")
     if legend:
-        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize="small")
+        _legend(ax, handles)
 
 
 def _check_shape(name: str, array: Optional[npt.ArrayLike], shape: Tuple[int, int]) -> Optional[np.ndarray]:
@@ -328,10 +335,7 @@ def center_plane(
         ax.set_title("Driving crank center-point plane")
         ax.set_xlabel("x")
         ax.set_ylabel("y")
-    _finish(ax, extent, False)
-    if legend:
-        ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0),
-                  borderaxespad=0.0, fontsize="small")
+    _finish(ax, extent, legend, handles)
     return ax
 
 
@@ -466,10 +470,7 @@ def circle_plane(
         ax.set_title("Driving crank circle-point plane (pose 1)")
         ax.set_xlabel("x")
         ax.set_ylabel("y")
-    _finish(ax, extent, False)
-    if legend:
-        ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0),
-                  borderaxespad=0.0, fontsize="small")
+    _finish(ax, extent, legend, handles)
     return ax
 
 
@@ -579,7 +580,7 @@ def linkage(
     ax.autoscale_view()
     ax.margins(0.08)
     if legend:
-        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize="small")
+        _legend(ax)
     return ax
 
 
