@@ -6,7 +6,7 @@ use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::IntoPyDict;
 
-use crate::errors::InvalidInputError;
+use crate::errors::{InvalidInputError, invalid};
 
 /// An array-like of real numbers (list, tuple, ndarray of a real dtype,
 /// nested to any depth), read as float64 in C order: its flat values and
@@ -29,9 +29,12 @@ impl<'a, 'py> FromPyObject<'a, 'py> for FloatArray {
         let np = py.import("numpy")?;
         let arr = np.call_method1("asarray", (ob,)).map_err(|e| {
             if e.is_instance_of::<PyValueError>(py) {
-                InvalidInputError::new_err(format!(
-                    "expected an array of numbers of one shape ({e}); pass a rectangular array"
-                ))
+                invalid(
+                    "not_rectangular",
+                    format!(
+                        "expected an array of numbers of one shape ({e}); pass a rectangular array"
+                    ),
+                )
             } else {
                 e
             }
@@ -104,12 +107,13 @@ impl<'a, 'py> FromPyObject<'a, 'py> for Real {
         }
         match ob.extract::<f64>() {
             Ok(v) => Ok(Real(v)),
-            Err(e) if e.is_instance_of::<PyOverflowError>(ob.py()) => {
-                Err(InvalidInputError::new_err(format!(
+            Err(e) if e.is_instance_of::<PyOverflowError>(ob.py()) => Err(invalid(
+                "too_large",
+                format!(
                     "{} is too large to be a float; pass a finite number",
                     short_repr(&ob)
-                )))
-            }
+                ),
+            )),
             Err(e) => Err(e),
         }
     }
@@ -126,13 +130,14 @@ impl<'a, 'py> FromPyObject<'a, 'py> for Count {
     fn extract(ob: pyo3::Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
         match ob.extract::<usize>() {
             Ok(v) => Ok(Count(v)),
-            Err(e) if e.is_instance_of::<PyOverflowError>(ob.py()) => {
-                Err(InvalidInputError::new_err(format!(
+            Err(e) if e.is_instance_of::<PyOverflowError>(ob.py()) => Err(invalid(
+                "count_out_of_range",
+                format!(
                     "{} is out of range: a count or an index must be a non-negative integer \
                      (at most 2^64 - 1); pass one",
                     short_repr(&ob)
-                )))
-            }
+                ),
+            )),
             Err(e) => Err(e),
         }
     }
@@ -200,19 +205,17 @@ pub(crate) fn pt(p: burmester::Point2<f64>) -> (f64, f64) {
     (p.x, p.y)
 }
 
-/// `(x, y)` of a vector for Python.
-pub(crate) fn vec2(v: burmester::Vector2<f64>) -> (f64, f64) {
-    (v.x, v.y)
-}
-
 /// Points from an array-like of shape `(..., 2)`: the flat points and the
 /// leading shape.
 pub(crate) fn points(a: &FloatArray) -> PyResult<(Vec<burmester::Point2<f64>>, Vec<usize>)> {
     let shape = &a.shape;
     if shape.last() != Some(&2) {
-        return Err(InvalidInputError::new_err(format!(
-            "points must be an array of shape (..., 2), got shape {shape:?}; pass (x, y) pairs"
-        )));
+        return Err(invalid(
+            "shape",
+            format!(
+                "points must be an array of shape (..., 2), got shape {shape:?}; pass (x, y) pairs"
+            ),
+        ));
     }
     let lead = shape[..shape.len() - 1].to_vec();
     Ok((

@@ -1,88 +1,150 @@
-//! `burmester.SolutionMap`: the designer's solution-space map.
+//! `burmester.DesignLimits`, `burmester.SolutionMap` and `burmester.Pivot`
+//! (the core's `design`).
 
 use burmester::{
-    Constraints, DesignLimits, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2,
-    SolutionMap, Task,
+    Constraints, DesignLimits, Dyad, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2,
+    RankBy, SolutionMap, Task, Varying,
 };
 use numpy::ndarray::Array2;
 use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods};
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyDict, PyTuple};
 
 use crate::conv::{Count, PyPoint, Real, pt};
-use crate::errors::{IntoPy, InvalidInputError};
-use crate::synthesis::PySynthesizedFourBar;
+use crate::errors::IntoPy;
+use crate::geom::PyGrid;
+use crate::run::{WATCH_MIN_SAMPLES, run};
+use crate::synthesis::{PySynthesizedFourBar, PyTask, dyad_tuple};
 
-/// The keyword arguments shared by both map constructors.
+type Xy = (f64, f64);
+
+/// The designer's limits behind the `acceptable` mask.
+#[pyclass(
+    frozen,
+    eq,
+    from_py_object,
+    name = "DesignLimits",
+    module = "burmester"
+)]
+#[derive(Clone, PartialEq)]
+pub struct PyDesignLimits {
+    pub(crate) inner: DesignLimits,
+}
+
+#[pymethods]
+impl PyDesignLimits {
+    #[new]
+    #[pyo3(signature = (min_transmission_deg = Real(30.0), max_link_ratio = Real(10.0), input = "any"),
+        text_signature = "(min_transmission_deg=30.0, max_link_ratio=10.0, input='any')")]
+    fn new(min_transmission_deg: Real, max_link_ratio: Real, input: &str) -> PyResult<Self> {
+        let input = input.parse::<InputRequirement>().py()?;
+        DesignLimits::from_degrees(min_transmission_deg.0, max_link_ratio.0, input)
+            .map(|inner| PyDesignLimits { inner })
+            .py()
+    }
+    /// The shortest decimal number of degrees that gives the limit in
+    /// radians exactly (so `DesignLimits(30).min_transmission_deg == 30`,
+    /// not `29.999999999999996`, and pickling gives back an equal object).
+    #[getter]
+    fn min_transmission_deg(&self) -> f64 {
+        shortest_degrees(self.inner.min_transmission)
+    }
+    #[getter]
+    fn max_link_ratio(&self) -> f64 {
+        self.inner.max_link_ratio
+    }
+    #[getter]
+    fn input(&self) -> &'static str {
+        self.inner.input.as_str()
+    }
+    fn __getnewargs__(&self) -> (f64, f64, &'static str) {
+        (
+            self.min_transmission_deg(),
+            self.inner.max_link_ratio,
+            self.inner.input.as_str(),
+        )
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "DesignLimits(min_transmission_deg={:?}, max_link_ratio={:?}, input='{}')",
+            self.min_transmission_deg(),
+            self.inner.max_link_ratio,
+            self.inner.input.as_str()
+        )
+    }
+}
+
+/// The shortest decimal (at most 17 significant digits) whose conversion to
+/// radians is `rad`; `rad` in degrees when none is.
+fn shortest_degrees(rad: f64) -> f64 {
+    let deg = rad.to_degrees();
+    (0..17)
+        .filter_map(|digits| format!("{deg:.digits$e}").parse::<f64>().ok())
+        .find(|d| d.to_radians() == rad)
+        .unwrap_or(deg)
+}
+
+/// The keyword arguments of the solution maps: the limits (a
+/// `DesignLimits`, or its three keywords) and the constraints.
 pub(crate) struct MapOptions {
     pub(crate) limits: DesignLimits,
     pub(crate) constraints: Constraints,
 }
 
 impl MapOptions {
-    /// The grid and the options of a solution map, from the Python arguments.
+    /// The options from the Python keywords; the core validates them.
     #[allow(clippy::too_many_arguments)]
-    pub(crate) fn with_grid(
-        bounds: [Real; 4],
-        size: [Count; 2],
-        min_transmission_deg: Real,
-        max_link_ratio: Real,
-        input: &str,
+    pub(crate) fn new(
+        limits: Option<PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        input: Option<&str>,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
         link_width: Real,
         travel_samples: Count,
-    ) -> PyResult<(Grid, Self)> {
-        let [xmin, xmax, ymin, ymax] = bounds.map(|r| r.0);
-        let grid = Grid::from_bounds(xmin, xmax, ymin, ymax, size[0].0, size[1].0).py()?;
-        let opts = Self::new(
-            min_transmission_deg.0,
-            max_link_ratio.0,
-            input,
-            base_plate,
-            obstacles,
-            link_width.0,
-            travel_samples.0,
-        )?;
-        Ok((grid, opts))
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        min_transmission_deg: f64,
-        max_link_ratio: f64,
-        input: &str,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: f64,
-        travel_samples: usize,
     ) -> PyResult<Self> {
-        let limits = DesignLimits {
-            min_transmission: min_transmission_deg.to_radians(),
-            max_link_ratio,
-            input: input.parse::<InputRequirement>().py()?,
+        let limits = match limits {
+            Some(l) => {
+                if min_transmission_deg.is_some() || max_link_ratio.is_some() || input.is_some() {
+                    return Err(PyTypeError::new_err(
+                        "pass either limits=DesignLimits(...) or the keywords \
+                         min_transmission_deg, max_link_ratio and input, not both",
+                    ));
+                }
+                l.inner
+            }
+            None => {
+                let d = DesignLimits::default();
+                let input = match input {
+                    Some(s) => s.parse::<InputRequirement>().py()?,
+                    None => d.input,
+                };
+                DesignLimits::from_degrees(
+                    min_transmission_deg.map_or(d.min_transmission.to_degrees(), |r| r.0),
+                    max_link_ratio.map_or(d.max_link_ratio, |r| r.0),
+                    input,
+                )
+                .py()?
+            }
         };
-        if !(0.0..=90.0).contains(&min_transmission_deg) {
-            return Err(InvalidInputError::new_err(format!(
-                "min_transmission_deg must be between 0 and 90 degrees, got {min_transmission_deg}; \
-                 pass an angle in that range"
-            )));
-        }
         let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<Point2<f64>>>();
-        let constraints = Constraints {
-            base_plate: base_plate.map(pts),
-            obstacles: obstacles.unwrap_or_default().into_iter().map(pts).collect(),
-            link_width,
-            travel_samples,
-        };
         Ok(MapOptions {
             limits,
-            constraints,
+            constraints: Constraints {
+                base_plate: base_plate.map(pts),
+                obstacles: obstacles.unwrap_or_default().into_iter().map(pts).collect(),
+                link_width: link_width.0,
+                travel_samples: travel_samples.0,
+            },
         })
     }
 }
 
-fn readonly<'py, T: Element>(py: Python<'py>, grid: &Grid, v: Vec<T>) -> PyResult<Py<PyArray2<T>>> {
+/// A column of a map as a read-only NumPy array of shape `(ny, nx)`,
+/// taking the buffer (no copy).
+fn readonly<T: Element>(py: Python<'_>, grid: &Grid, v: Vec<T>) -> PyResult<Py<PyArray2<T>>> {
     let a = Array2::from_shape_vec((grid.ny(), grid.nx()), v)
         .expect("one value per sample")
         .into_pyarray(py);
@@ -92,111 +154,232 @@ fn readonly<'py, T: Element>(py: Python<'py>, grid: &Grid, v: Vec<T>) -> PyResul
     Ok(a.unbind())
 }
 
-/// The solution-space map over candidate pivots (see the stub for the docs).
-#[pyclass(frozen, name = "SolutionMap", module = "burmester")]
-pub struct PySolutionMap {
-    context: MapContext,
-    valid: Py<PyArray2<bool>>,
-    branch_free: Py<PyArray2<bool>>,
-    grashof: Py<PyArray2<u8>>,
-    input_full: Py<PyArray2<bool>>,
-    direction: Py<PyArray2<i8>>,
-    one_circuit: Py<PyArray2<bool>>,
-    min_transmission: Py<PyArray2<f32>>,
-    link_ratio: Py<PyArray2<f32>>,
-    acceptable: Py<PyArray2<bool>>,
+/// A column's values, for comparing maps (floats by their bits, so that
+/// NaN equals NaN).
+trait Bits: Copy {
+    fn bits(self) -> u64;
 }
 
-impl PySolutionMap {
-    /// Moves the map's arrays into read-only NumPy arrays (no copy).
-    pub(crate) fn new(py: Python<'_>, map: SolutionMap) -> PyResult<Self> {
-        let g = map.context.grid;
-        Ok(PySolutionMap {
-            valid: readonly(py, &g, map.valid)?,
-            branch_free: readonly(py, &g, map.branch_free)?,
-            grashof: readonly(py, &g, map.grashof)?,
-            input_full: readonly(py, &g, map.input_full)?,
-            direction: readonly(py, &g, map.direction)?,
-            one_circuit: readonly(py, &g, map.one_circuit)?,
-            min_transmission: readonly(py, &g, map.min_transmission)?,
-            link_ratio: readonly(py, &g, map.link_ratio)?,
-            acceptable: readonly(py, &g, map.acceptable)?,
-            context: map.context,
-        })
+impl Bits for bool {
+    fn bits(self) -> u64 {
+        u64::from(self)
     }
 }
 
-fn pivot_dict<'py>(py: Python<'py>, p: &Pivot) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    let f = &p.figures;
-    let l = &p.linkage;
-    d.set_item("center", pt(p.center))?;
-    d.set_item("driving", (pt(l.driving.center), pt(l.driving.circle)))?;
-    d.set_item("driven", (pt(l.driven.center), pt(l.driven.circle)))?;
-    let [l1, l2, l3, l4] = f.lengths;
-    d.set_item("lengths", (l1, l2, l3, l4))?;
-    d.set_item("grashof", f.grashof.as_str())?;
-    d.set_item("input_full", f.input_full)?;
-    d.set_item(
-        "direction",
-        match f.direction {
-            1 => "ccw",
-            -1 => "cw",
-            _ => "none",
-        },
-    )?;
-    d.set_item("min_transmission_deg", f.min_transmission.to_degrees())?;
-    d.set_item("link_ratio", f.link_ratio)?;
-    d.set_item("margin", p.margin)?;
-    let [a, b, c] = l.input_angles;
-    d.set_item("input_angles", (a, b, c))?;
-    d.set_item("mode", l.modes[0].map(|m| m.as_str()))?;
-    d.set_item("index", p.index)?;
-    Ok(d)
+impl Bits for u8 {
+    fn bits(self) -> u64 {
+        u64::from(self)
+    }
+}
+
+impl Bits for i8 {
+    fn bits(self) -> u64 {
+        self as u8 as u64
+    }
+}
+
+impl Bits for f32 {
+    fn bits(self) -> u64 {
+        u64::from(self.to_bits())
+    }
+}
+
+fn same_column<T: Element + Bits>(
+    py: Python<'_>,
+    a: &Py<PyArray2<T>>,
+    b: &Py<PyArray2<T>>,
+) -> bool {
+    let (a, b) = (a.bind(py).readonly(), b.bind(py).readonly());
+    match (a.as_slice(), b.as_slice()) {
+        (Ok(a), Ok(b)) => a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.bits() == y.bits()),
+        _ => false,
+    }
+}
+
+macro_rules! py_solution_map {
+    ($($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
+        /// The solution-space map over candidate pivots (see the stub for the docs).
+        #[pyclass(frozen, name = "SolutionMap", module = "burmester")]
+        pub struct PySolutionMap {
+            context: MapContext,
+            $($(#[$doc])* #[pyo3(get)] $name: Py<PyArray2<$ty>>,)*
+        }
+
+        impl PySolutionMap {
+            /// Moves the map's columns into read-only NumPy arrays (no copy).
+            pub(crate) fn new(py: Python<'_>, map: SolutionMap) -> PyResult<Self> {
+                let g = map.context.grid;
+                let c = map.columns;
+                Ok(PySolutionMap {
+                    $($name: readonly(py, &g, c.$name)?,)*
+                    context: map.context,
+                })
+            }
+
+            /// The columns by name.
+            fn column_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+                let d = PyDict::new(py);
+                $(d.set_item(stringify!($name), self.$name.clone_ref(py))?;)*
+                Ok(d)
+            }
+
+            /// A map from its context and its columns by name (copied).
+            fn from_columns(
+                py: Python<'_>,
+                context: MapContext,
+                columns: &Bound<'_, PyDict>,
+            ) -> PyResult<Self> {
+                let g = context.grid;
+                $(
+                    let $name: Vec<$ty> = {
+                        let item = columns.get_item(stringify!($name))?.ok_or_else(|| {
+                            PyTypeError::new_err(concat!("missing column ", stringify!($name)))
+                        })?;
+                        let a = item.cast_into::<PyArray2<$ty>>().map_err(PyErr::from)?;
+                        let ro = a.readonly();
+                        let v = ro.as_array();
+                        if v.shape() != [g.ny(), g.nx()] {
+                            return Err(PyTypeError::new_err(concat!(
+                                "column ", stringify!($name), " does not have the grid's shape"
+                            )));
+                        }
+                        v.iter().copied().collect()
+                    };
+                )*
+                Ok(PySolutionMap {
+                    $($name: readonly(py, &g, $name)?,)*
+                    context,
+                })
+            }
+
+            fn same_columns(&self, py: Python<'_>, other: &Self) -> bool {
+                true $(&& same_column(py, &self.$name, &other.$name))*
+            }
+        }
+    };
+}
+
+burmester::solution_map_columns!(py_solution_map);
+
+/// A candidate pivot of a solution map with its linkage.
+#[pyclass(frozen, name = "Pivot", module = "burmester")]
+#[derive(Clone)]
+pub struct PyPivot {
+    center: Xy,
+    index: (usize, usize),
+    linkage: PySynthesizedFourBar,
+    margin: f64,
+    ranked_by: RankBy,
+}
+
+impl PyPivot {
+    fn of(task: Task, p: &Pivot) -> Self {
+        PyPivot {
+            center: pt(p.center),
+            index: p.index,
+            linkage: PySynthesizedFourBar::new(task, p.linkage),
+            margin: p.margin,
+            ranked_by: p.ranked_by,
+        }
+    }
+}
+
+#[pymethods]
+impl PyPivot {
+    #[new]
+    fn new(
+        center: PyPoint,
+        index: (Count, Count),
+        linkage: PySynthesizedFourBar,
+        margin: Real,
+        ranked_by: &str,
+    ) -> PyResult<Self> {
+        Ok(PyPivot {
+            center: pt(center.0),
+            index: (index.0.0, index.1.0),
+            linkage,
+            margin: margin.0,
+            ranked_by: ranked_by.parse::<RankBy>().py()?,
+        })
+    }
+    #[getter]
+    fn center(&self) -> Xy {
+        self.center
+    }
+    #[getter]
+    fn index(&self) -> (usize, usize) {
+        self.index
+    }
+    #[getter]
+    fn linkage(&self) -> PySynthesizedFourBar {
+        self.linkage.clone()
+    }
+    #[getter]
+    fn figures(&self) -> crate::linkage::PyLinkageFigures {
+        self.linkage.figures()
+    }
+    #[getter]
+    fn margin(&self) -> f64 {
+        self.margin
+    }
+    #[getter]
+    fn ranked_by(&self) -> &'static str {
+        self.ranked_by.as_str()
+    }
+    fn __getnewargs__(&self) -> (Xy, (usize, usize), PySynthesizedFourBar, f64, &'static str) {
+        (
+            self.center,
+            self.index,
+            self.linkage.clone(),
+            self.margin,
+            self.ranked_by.as_str(),
+        )
+    }
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other.cast::<PyPivot>().is_ok_and(|o| {
+            let o = o.get();
+            o.center == self.center
+                && o.index == self.index
+                && o.linkage == self.linkage
+                && o.margin.to_bits() == self.margin.to_bits()
+                && o.ranked_by == self.ranked_by
+        })
+    }
+    fn __repr__(&self) -> String {
+        let f = &self.linkage.inner.figures;
+        format!(
+            "<Pivot center=({:.6}, {:.6}) index={:?} {} min_transmission_deg={} by {}>",
+            self.center.0,
+            self.center.1,
+            self.index,
+            f.grashof,
+            if f.min_transmission.is_nan() {
+                "None".to_owned()
+            } else {
+                format!("{:.3}", f.min_transmission.to_degrees())
+            },
+            self.ranked_by.as_str()
+        )
+    }
 }
 
 #[pymethods]
 impl PySolutionMap {
-    #[getter]
-    fn valid(&self, py: Python<'_>) -> Py<PyArray2<bool>> {
-        self.valid.clone_ref(py)
-    }
-    #[getter]
-    fn branch_free(&self, py: Python<'_>) -> Py<PyArray2<bool>> {
-        self.branch_free.clone_ref(py)
-    }
-    #[getter]
-    fn grashof(&self, py: Python<'_>) -> Py<PyArray2<u8>> {
-        self.grashof.clone_ref(py)
-    }
-    #[getter]
-    fn input_full(&self, py: Python<'_>) -> Py<PyArray2<bool>> {
-        self.input_full.clone_ref(py)
-    }
-    #[getter]
-    fn direction(&self, py: Python<'_>) -> Py<PyArray2<i8>> {
-        self.direction.clone_ref(py)
-    }
-    #[getter]
-    fn one_circuit(&self, py: Python<'_>) -> Py<PyArray2<bool>> {
-        self.one_circuit.clone_ref(py)
-    }
-    #[getter]
-    fn min_transmission(&self, py: Python<'_>) -> Py<PyArray2<f32>> {
-        self.min_transmission.clone_ref(py)
-    }
-    #[getter]
-    fn link_ratio(&self, py: Python<'_>) -> Py<PyArray2<f32>> {
-        self.link_ratio.clone_ref(py)
-    }
-    #[getter]
-    fn acceptable(&self, py: Python<'_>) -> Py<PyArray2<bool>> {
-        self.acceptable.clone_ref(py)
-    }
     /// The names of the Grashof codes, by code.
     #[classattr]
     fn grashof_names() -> Vec<&'static str> {
         burmester::Grashof::ALL.iter().map(|g| g.as_str()).collect()
+    }
+    /// The names of the columns, in order.
+    #[classattr]
+    fn columns() -> Vec<&'static str> {
+        burmester::design::Columns::NAMES.to_vec()
+    }
+    #[getter]
+    fn grid(&self) -> PyGrid {
+        PyGrid {
+            inner: self.context.grid,
+        }
     }
     #[getter]
     fn extent(&self) -> (f64, f64, f64, f64) {
@@ -209,61 +392,144 @@ impl PySolutionMap {
     }
     #[getter]
     fn varying(&self) -> &'static str {
-        match self.context.varying {
-            burmester::Varying::Driving { .. } => "driving",
-            burmester::Varying::Driven { .. } => "driven",
+        self.context.varying.as_str()
+    }
+    #[getter]
+    fn fixed_dyad(&self) -> (Xy, Xy) {
+        dyad_tuple(&self.context.varying.fixed())
+    }
+    #[getter]
+    fn task(&self) -> PyTask {
+        PyTask {
+            inner: self.context.task,
         }
     }
-    fn point(&self, j: Count, i: Count) -> PyResult<(f64, f64)> {
-        let (j, i) = (j.0, i.0);
-        let g = &self.context.grid;
-        if i >= g.nx() || j >= g.ny() {
-            return Err(InvalidInputError::new_err(format!(
-                "sample ({j}, {i}) is outside the map of shape ({}, {}); pass indices within it",
-                g.ny(),
-                g.nx()
-            )));
+    #[getter]
+    fn limits(&self) -> PyDesignLimits {
+        PyDesignLimits {
+            inner: self.context.limits,
         }
-        Ok(pt(g.point(i, j)))
+    }
+    fn point(&self, j: Count, i: Count) -> PyResult<Xy> {
+        self.grid().point(j, i)
     }
     fn linkage(&self, j: Count, i: Count) -> PyResult<PySynthesizedFourBar> {
-        let nx = self.context.grid.nx();
         self.point(j, i)?;
-        let (j, i) = (j.0, i.0);
+        let k = j.0 * self.context.grid.nx() + i.0;
         self.context
-            .linkage(j * nx + i)
-            .map(|inner| PySynthesizedFourBar { inner })
+            .linkage(k)
+            .map(|l| PySynthesizedFourBar::new(self.context.task, l))
             .py()
     }
-    #[pyo3(signature = (k = Count(5), min_separation = None),
-        text_signature = "($self, /, k=5, min_separation=None)")]
-    fn best_pivots<'py>(
+    fn margin(&self, py: Python<'_>, j: Count, i: Count) -> PyResult<f64> {
+        self.point(j, i)?;
+        let k = j.0 * self.context.grid.nx() + i.0;
+        let bf = self.branch_free.bind(py).readonly();
+        let bf = bf.as_slice()?;
+        let ctx = &self.context;
+        Ok(py.detach(|| ctx.margin(k, bf)))
+    }
+    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "transmission"),
+        text_signature = "($self, /, k=5, min_separation=None, rank_by='transmission')")]
+    fn best_pivots(
         &self,
-        py: Python<'py>,
+        py: Python<'_>,
         k: Count,
         min_separation: Option<Real>,
-    ) -> PyResult<Bound<'py, PyList>> {
-        let (k, min_separation) = (k.0, min_separation.map(|r| r.0));
-        if let Some(s) = min_separation {
-            if !(s.is_finite() && s >= 0.0) {
-                return Err(InvalidInputError::new_err(format!(
-                    "min_separation must be a finite distance of at least 0, got {s}; pass one \
-                     (or None for the default)"
+        rank_by: &str,
+    ) -> PyResult<Vec<PyPivot>> {
+        let rank_by = rank_by.parse::<RankBy>().py()?;
+        let valid = self.valid.bind(py).readonly();
+        let bf = self.branch_free.bind(py).readonly();
+        let mt = self.min_transmission_rad.bind(py).readonly();
+        let acc = self.acceptable.bind(py).readonly();
+        let cols = burmester::design::RankColumns {
+            valid: valid.as_slice()?,
+            branch_free: bf.as_slice()?,
+            min_transmission_rad: mt.as_slice()?,
+            acceptable: acc.as_slice()?,
+        };
+        let ctx = &self.context;
+        let pivots = py
+            .detach(|| ctx.best_pivots(k.0, min_separation.map(|r| r.0), rank_by, cols))
+            .py()?;
+        Ok(pivots.iter().map(|p| PyPivot::of(ctx.task, p)).collect())
+    }
+
+    /// Rebuilds a map from its state (for pickling).
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn _from_state(
+        py: Python<'_>,
+        grid: PyGrid,
+        task: PyTask,
+        varying: &str,
+        fixed: (PyPoint, PyPoint),
+        limits: PyDesignLimits,
+        constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+        columns: &Bound<'_, PyDict>,
+    ) -> PyResult<Self> {
+        let dyad = Dyad::new(fixed.0.0, fixed.1.0);
+        let varying = match varying {
+            "driving" => Varying::Driving { driven: dyad },
+            "driven" => Varying::Driven { driving: dyad },
+            other => {
+                return Err(PyTypeError::new_err(format!(
+                    "varying must be 'driving' or 'driven', got {other:?}"
                 )));
             }
-        }
-        let acc = self.acceptable.bind(py).readonly();
-        let mt = self.min_transmission.bind(py).readonly();
-        let bf = self.branch_free.bind(py).readonly();
-        let (acc, mt, bf) = (acc.as_slice()?, mt.as_slice()?, bf.as_slice()?);
-        let ctx = &self.context;
-        let pivots = py.detach(|| ctx.best_pivots(k, min_separation, acc, mt, bf));
-        let list = PyList::empty(py);
-        for p in &pivots {
-            list.append(pivot_dict(py, p)?)?;
-        }
-        Ok(list)
+        };
+        let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<_>>();
+        let context = MapContext {
+            grid: grid.inner,
+            task: task.inner,
+            varying,
+            limits: limits.inner,
+            constraints: Constraints {
+                base_plate: constraints.0.map(pts),
+                obstacles: constraints.1.into_iter().map(pts).collect(),
+                link_width: constraints.2,
+                travel_samples: constraints.3,
+            },
+        };
+        Self::from_columns(py, context, columns)
     }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let c = &self.context;
+        let pts = |v: &[Point2<f64>]| v.iter().map(|p| pt(*p)).collect::<Vec<_>>();
+        let constraints = (
+            c.constraints.base_plate.as_deref().map(pts),
+            c.constraints
+                .obstacles
+                .iter()
+                .map(|o| pts(o))
+                .collect::<Vec<_>>(),
+            c.constraints.link_width,
+            c.constraints.travel_samples,
+        );
+        let args = (
+            self.grid(),
+            self.task(),
+            self.varying(),
+            self.fixed_dyad(),
+            self.limits(),
+            constraints,
+            self.column_dict(py)?,
+        )
+            .into_pyobject(py)?;
+        Ok((py.get_type::<PySolutionMap>().getattr("_from_state")?, args))
+    }
+
+    fn __eq__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<PySolutionMap>()
+            .is_ok_and(|o| o.get().context == self.context && self.same_columns(py, o.get()))
+    }
+
     fn __repr__(&self) -> String {
         let (ny, nx) = self.shape();
         format!("<SolutionMap {} pivots, {ny} x {nx}>", self.varying())
@@ -276,10 +542,12 @@ pub(crate) fn solution_map(
     f: Filemon,
     grid: Grid,
     opts: MapOptions,
+    progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PySolutionMap> {
-    let map = py
-        .detach(|| f.solution_map(&grid, &opts.limits, &opts.constraints))
-        .py()?;
+    let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
+    let map = run(py, watch, progress, None, |control| {
+        f.solution_map(&grid, &opts.limits, &opts.constraints, control)
+    })?;
     PySolutionMap::new(py, map)
 }
 
@@ -290,10 +558,12 @@ pub(crate) fn driven_solution_map(
     driving_center: Point2<f64>,
     grid: Grid,
     opts: MapOptions,
+    progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PySolutionMap> {
     let driving = task.dyad_from_center(driving_center).py()?;
-    let map = py
-        .detach(|| task.driven_solution_map(&driving, &grid, &opts.limits, &opts.constraints))
-        .py()?;
+    let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
+    let map = run(py, watch, progress, None, |control| {
+        task.driven_solution_map(&driving, &grid, &opts.limits, &opts.constraints, control)
+    })?;
     PySolutionMap::new(py, map)
 }

@@ -1,8 +1,13 @@
 //! The one place where core errors become Python exceptions.
+//!
+//! Every exception carries the core error's cause and fields as
+//! attributes: `cause` (for example `"at_infinity"`) and one attribute per
+//! field (`dir_x`, `dir_y`, `name`, `value`, ...).
 
-use pyo3::PyErr;
+use burmester::error::Field;
 use pyo3::create_exception;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyKeyboardInterrupt, PyMemoryError, PyValueError};
+use pyo3::prelude::*;
 
 create_exception!(
     burmester,
@@ -29,15 +34,44 @@ create_exception!(
     "The geometry is degenerate: an answer lies at infinity, or the task has no unique answer."
 );
 
-/// Maps a core error to its Python exception.
+/// Maps a core error to its Python exception, with its cause and fields as
+/// attributes.
 pub(crate) fn to_py(e: burmester::Error) -> PyErr {
     let msg = e.to_string();
-    match e {
+    let err = match e {
         burmester::Error::InvalidInput(_) => InvalidInputError::new_err(msg),
         burmester::Error::Assembly(_) => AssemblyError::new_err(msg),
         burmester::Error::Degenerate(_) => DegenerateError::new_err(msg),
+        burmester::Error::Cancelled { .. } => PyKeyboardInterrupt::new_err(msg),
+        burmester::Error::OutOfMemory { .. } => PyMemoryError::new_err(msg),
         _ => BurmesterError::new_err(msg),
-    }
+    };
+    Python::attach(|py| {
+        let value = err.value(py);
+        // Setting attributes on a fresh exception object cannot fail in
+        // practice; an attribute that could not be set is left out.
+        let _ = value.setattr("cause", e.cause());
+        for (name, field) in e.fields() {
+            let _ = match field {
+                Field::Float(v) => value.setattr(name, v),
+                Field::Int(v) => value.setattr(name, v),
+                Field::Str(v) => value.setattr(name, v),
+            };
+        }
+    });
+    err
+}
+
+/// An `InvalidInputError` raised by the binding itself (an argument that
+/// never reaches the core: an array of the wrong shape, an `out=` array
+/// that cannot be written), with its `cause` set like the core's.
+pub(crate) fn invalid(cause: &'static str, msg: impl Into<String>) -> PyErr {
+    let err = InvalidInputError::new_err(msg.into());
+    Python::attach(|py| {
+        // As in `to_py`: a fresh exception object takes the attribute.
+        let _ = err.value(py).setattr("cause", cause);
+    });
+    err
 }
 
 /// `result.py()` turns a core result into a Python result.

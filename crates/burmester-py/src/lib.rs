@@ -1,14 +1,20 @@
 //! Python bindings of `burmester`: the `burmester._burmester` extension module.
 //!
-//! Thin wrappers only: each class holds a core value, converts arguments,
-//! and maps core errors to Python exceptions in one place (the `errors` module).
+//! Thin wrappers only, one module per core module (`geom`, `linkage`,
+//! `synthesis`, `design`; `sweep` holds the three-pose sweeps of
+//! `synthesis::three`), each importing only from those before it. Each class
+//! holds a core value, converts arguments, and maps core errors to Python
+//! exceptions in one place (`errors`); long calls release the GIL and
+//! honour Ctrl-C and progress callbacks through one runner (`run`).
 
 use pyo3::prelude::*;
 
 mod conv;
 mod design;
 mod errors;
-mod fourbar;
+mod geom;
+mod linkage;
+mod run;
 mod sweep;
 mod synthesis;
 
@@ -16,17 +22,23 @@ mod synthesis;
 #[pymodule]
 mod _burmester {
     #[pymodule_export]
-    use crate::design::PySolutionMap;
+    use crate::design::{PyDesignLimits, PyPivot, PySolutionMap};
     #[pymodule_export]
     use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
     #[pymodule_export]
-    use crate::fourbar::{PyConfiguration, PyFourBar};
+    use crate::geom::{PyConic, PyGrid, clip_line};
     #[pymodule_export]
-    use crate::synthesis::{PyConic, PyFilemon, PySynthesizedFourBar, PyTask};
+    use crate::linkage::{PyConfiguration, PyFourBar, PyLinkageFigures};
+    #[pymodule_export]
+    use crate::synthesis::{PyFilemon, PyPole, PySynthesizedFourBar, PyTask};
 
     #[pymodule_init]
     fn init(m: &pyo3::Bound<'_, pyo3::types::PyModule>) -> pyo3::PyResult<()> {
         use pyo3::types::PyModuleMethods;
+        // Load NumPy's C API now, while no signal can be pending: loading it
+        // lazily in the first array-returning call would import NumPy there,
+        // and a Ctrl-C at that moment would fail the import inside Rust.
+        let _ = numpy::PyArray1::<f64>::zeros(m.py(), 0, false);
         m.add("__version__", env!("CARGO_PKG_VERSION"))
     }
 }

@@ -1,77 +1,130 @@
-//! `Filemon.branch_map` and `Filemon.margin_map`: the dense grid sweep.
+//! `Filemon.branch_map` and `Filemon.margin_map`: the dense grid sweeps.
 
 use burmester::{Filemon, Grid, Method};
 use numpy::ndarray::Array2;
 use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods, PyUntypedArrayMethods};
-use pyo3::exceptions::PyMemoryError;
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 
-use crate::conv::{Count, Real};
-use crate::errors::{IntoPy, InvalidInputError};
+use crate::errors::{IntoPy, invalid};
+use crate::run::{WATCH_MIN_SAMPLES, run};
 
-/// The grid of the arguments `(xmin, xmax, ymin, ymax, nx, ny)`.
-pub(crate) type GridArgs = (Real, Real, Real, Real, Count, Count);
-
-fn grid((xmin, xmax, ymin, ymax, nx, ny): GridArgs) -> PyResult<Grid> {
-    Grid::from_bounds(xmin.0, xmax.0, ymin.0, ymax.0, nx.0, ny.0).py()
+/// Checks an `out=` argument: a C-contiguous, writeable NumPy array of
+/// `dtype` in native byte order and of the grid's shape.
+fn out_array<'py, T: Element>(
+    out: &Bound<'py, PyAny>,
+    grid: &Grid,
+    dtype: &str,
+) -> PyResult<Bound<'py, PyArray2<T>>> {
+    let (ny, nx) = (grid.ny(), grid.nx());
+    let np_dtype = out.getattr("dtype").ok();
+    let Some(found) = np_dtype else {
+        return Err(PyTypeError::new_err(format!(
+            "out must be a NumPy array, got {}; pass numpy.empty(({ny}, {nx}), dtype={dtype})",
+            out.get_type()
+                .name()
+                .map_or("an object".into(), |n| n.to_string())
+        )));
+    };
+    let shape: Vec<usize> = out.getattr("shape")?.extract()?;
+    if shape != [ny, nx] {
+        return Err(invalid(
+            "out_array",
+            format!(
+                "out has shape {shape:?}, but the grid needs ({ny}, {nx}); pass an array of shape (ny, nx)"
+            ),
+        ));
+    }
+    let name: String = found.getattr("name")?.extract()?;
+    let native: bool = found.getattr("isnative")?.extract()?;
+    if name != dtype || !native {
+        return Err(invalid(
+            "out_array",
+            format!(
+                "out has dtype {} ({}), but this map is written as {dtype} in native byte order; pass \
+             numpy.empty(({ny}, {nx}), dtype={dtype})",
+                found.str()?,
+                if native {
+                    "native"
+                } else {
+                    "swapped byte order"
+                },
+            ),
+        ));
+    }
+    let arr = out.cast::<PyArray2<T>>().map_err(|_| {
+        invalid("out_array", format!(
+            "out must be a 2-D NumPy array of {dtype}; pass numpy.empty(({ny}, {nx}), dtype={dtype})"
+        ))
+    })?;
+    if !arr.is_c_contiguous() {
+        return Err(invalid(
+            "out_array",
+            format!(
+                "out must be C-contiguous (not a strided view); pass numpy.empty(({ny}, {nx}), \
+             dtype={dtype})"
+            ),
+        ));
+    }
+    if !out
+        .getattr("flags")?
+        .getattr("writeable")?
+        .extract::<bool>()?
+    {
+        return Err(invalid(
+            "out_array",
+            "out is read-only; pass a writeable array",
+        ));
+    }
+    Ok(arr.clone())
 }
 
 /// Runs `fill` into a fresh `(ny, nx)` array (handed to NumPy without a
-/// copy) or into `out`, with the GIL released.
-fn run<'py, T: Element + Copy + Send>(
+/// copy) or into `out`, with the GIL released, Ctrl-C and progress.
+fn run_map<'py, T: Element + Copy + Send>(
     py: Python<'py>,
     grid: Grid,
     zero: T,
-    out: Option<Bound<'py, PyArray2<T>>>,
-    fill: impl Fn(&mut [T]) + Send + Sync,
-) -> PyResult<Bound<'py, PyArray2<T>>> {
+    dtype: &str,
+    out: Option<Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
+    fill: impl Fn(&mut [T], &burmester::Control<'_>) -> burmester::Result<()> + Send + Sync,
+) -> PyResult<Bound<'py, PyAny>> {
     let (ny, nx) = (grid.ny(), grid.nx());
+    let watch = grid.len() >= WATCH_MIN_SAMPLES;
     match out {
         None => {
-            // A refused allocation is a MemoryError, not an abort.
-            let mut v = Vec::new();
-            v.try_reserve_exact(grid.len()).map_err(|_| {
-                PyMemoryError::new_err(format!(
-                    "a ({ny}, {nx}) map needs {} bytes, more than can be allocated; pass a \
-                     smaller nx and ny, or an out= array",
-                    grid.len().saturating_mul(core::mem::size_of::<T>())
-                ))
+            let v = run(py, watch, progress, None, |control| {
+                let mut v = burmester::error::try_vec("a map", grid.len(), zero)?;
+                fill(&mut v, control)?;
+                Ok(v)
             })?;
-            let v = py.detach(move || {
-                v.resize(grid.len(), zero);
-                fill(&mut v);
-                v
-            });
             Ok(Array2::from_shape_vec((ny, nx), v)
                 .expect("one value per sample")
-                .into_pyarray(py))
+                .into_pyarray(py)
+                .into_any())
         }
-        Some(arr) => {
-            if arr.shape() != [ny, nx] {
-                return Err(InvalidInputError::new_err(format!(
-                    "out has shape {:?}, but the grid needs ({ny}, {nx}); pass an array of shape (ny, nx)",
-                    arr.shape()
-                )));
-            }
-            if !arr.is_c_contiguous() {
-                return Err(InvalidInputError::new_err(
-                    "out must be C-contiguous; pass numpy.empty((ny, nx), dtype=...)",
-                ));
-            }
+        Some(out) => {
+            let arr = out_array::<T>(&out, &grid, dtype)?;
             {
-                let mut rw = arr.try_readwrite().map_err(|e| {
-                    InvalidInputError::new_err(format!(
-                        "out cannot be written: {e}; pass a writeable array"
-                    ))
-                })?;
-                let slice = rw.as_slice_mut().map_err(|_| {
-                    InvalidInputError::new_err(
-                        "out must be C-contiguous; pass numpy.empty((ny, nx), dtype=...)",
+                let mut rw = arr.try_readwrite().map_err(|_| {
+                    invalid(
+                        "out_array",
+                        "out is being written by another call (NumPy arrays lent to Rust are \
+                         borrow-checked); pass a separate array to each concurrent call",
                     )
                 })?;
-                py.detach(|| fill(slice));
+                let slice = rw.as_slice_mut().map_err(|_| {
+                    invalid(
+                        "out_array",
+                        "out must be C-contiguous; pass numpy.empty((ny, nx))",
+                    )
+                })?;
+                run(py, watch, progress, Some("out"), |control| {
+                    fill(slice, control)
+                })?;
             }
-            Ok(arr)
+            Ok(out)
         }
     }
 }
@@ -80,27 +133,38 @@ fn run<'py, T: Element + Copy + Send>(
 pub(crate) fn branch_map<'py>(
     f: Filemon,
     py: Python<'py>,
-    args: GridArgs,
+    grid: Grid,
     method: &str,
-    out: Option<Bound<'py, PyArray2<bool>>>,
-) -> PyResult<Bound<'py, PyArray2<bool>>> {
-    let grid = grid(args)?;
+    out: Option<Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
     let method = method.parse::<Method>().py()?;
-    run(py, grid, false, out, move |buf| {
-        // The buffer has grid.len() flags by construction.
-        let _ = f.branch_map_into(&grid, method, buf);
-    })
+    run_map(
+        py,
+        grid,
+        false,
+        "bool",
+        out,
+        progress,
+        move |buf, control| f.branch_map_into(&grid, method, buf, control),
+    )
 }
 
 /// `Filemon.margin_map`.
 pub(crate) fn margin_map<'py>(
     f: Filemon,
     py: Python<'py>,
-    args: GridArgs,
-    out: Option<Bound<'py, PyArray2<f32>>>,
-) -> PyResult<Bound<'py, PyArray2<f32>>> {
-    let grid = grid(args)?;
-    run(py, grid, 0.0f32, out, move |buf| {
-        let _ = f.margin_map_into(&grid, buf);
-    })
+    grid: Grid,
+    out: Option<Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    run_map(
+        py,
+        grid,
+        0.0f32,
+        "float32",
+        out,
+        progress,
+        move |buf, control| f.margin_map_into(&grid, buf, control),
+    )
 }

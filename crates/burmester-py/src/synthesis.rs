@@ -1,36 +1,24 @@
-//! `burmester.Task`, `Filemon`, `Conic` and `SynthesizedFourBar`.
+//! `burmester.Task`, `Pole`, `Filemon` and `SynthesizedFourBar` (the core's
+//! `synthesis`).
 
 use burmester::{
-    CircleOrLine, Conic, Dyad, Filemon, Line, Method, Point2, Pose, SynthesizedFourBar, Task,
-    Viewport,
+    CircleOrLine, Cremona, Dyad, Filemon, Line, Point2, Pole, Pose, SynthesizedFourBar, Task,
 };
-use numpy::{IntoPyArray, PyArray2, PyArrayDyn};
+use numpy::PyArrayDyn;
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PySequence, PyTuple};
 
-use crate::conv::{Count, FloatArray, PyPoint, Real, points, pt, to_numpy, vec2};
-use crate::errors::{IntoPy, InvalidInputError};
-use crate::fourbar::PyFourBar;
+use crate::conv::{Count, FloatArray, PyPoint, Real, points, pt, to_numpy};
+use crate::design::MapOptions;
+use crate::errors::IntoPy;
+use crate::geom::{PyConic, grid_arg, vec2};
+use crate::linkage::{PyFourBar, PyLinkageFigures};
 
 type Xy = (f64, f64);
 
 /// Mapped points (NaN where undefined) and their validity mask.
 type MappedPoints<'py> = (Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>);
-
-fn method(s: &str) -> PyResult<Method> {
-    s.parse::<Method>().py()
-}
-
-fn pose_index(k: Count) -> PyResult<usize> {
-    let k = k.0;
-    if (1..=3).contains(&k) {
-        Ok(k)
-    } else {
-        Err(InvalidInputError::new_err(format!(
-            "pose index must be 1, 2 or 3, got {k}; pass one of those"
-        )))
-    }
-}
 
 fn circle_dict<'py>(py: Python<'py>, c: CircleOrLine) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -51,6 +39,11 @@ fn circle_dict<'py>(py: Python<'py>, c: CircleOrLine) -> PyResult<Bound<'py, PyD
 
 fn line_tuple(l: &Line) -> (Xy, Xy) {
     (pt(l.point), vec2(l.direction))
+}
+
+/// `(center, circle)` of a dyad for Python.
+pub(crate) fn dyad_tuple(d: &Dyad) -> (Xy, Xy) {
+    (pt(d.center), pt(d.circle))
 }
 
 /// Maps an array of points with `f`, returning the mapped points (NaN where
@@ -83,35 +76,166 @@ fn map_points<'py>(
     Ok((to_numpy(py, &shape, out), to_numpy(py, &lead, ok)))
 }
 
-/// Three poses of the coupler.
-#[pyclass(frozen, name = "Task", module = "burmester")]
-#[derive(Clone)]
+/// The poses of a task from Python: a sequence of `(x, y, angle)`.
+fn poses_arg(ob: &Bound<'_, PyAny>) -> PyResult<Vec<Pose>> {
+    let usage = |what: String| {
+        PyTypeError::new_err(format!(
+            "a task takes a sequence of poses (x, y, angle), each three numbers; {what}"
+        ))
+    };
+    if ob.is_instance_of::<pyo3::types::PyString>() {
+        return Err(usage("got a string".into()));
+    }
+    let seq = ob.cast::<PySequence>().map_err(|_| {
+        usage(format!(
+            "got {}",
+            ob.get_type()
+                .name()
+                .map_or("an object".into(), |n| n.to_string())
+        ))
+    })?;
+    let mut out = Vec::new();
+    for (k, item) in seq.try_iter()?.enumerate() {
+        let item = item?;
+        let v: Vec<Real> = item.extract().map_err(|e: PyErr| {
+            if e.is_instance_of::<crate::errors::InvalidInputError>(ob.py()) {
+                e
+            } else {
+                usage(format!("pose {} is not a sequence of numbers", k + 1))
+            }
+        })?;
+        let [x, y, a] = v[..] else {
+            return Err(crate::errors::invalid(
+                "pose_shape",
+                format!(
+                    "pose {} must be (x, y, angle): three numbers, got {}; pass three",
+                    k + 1,
+                    v.len()
+                ),
+            ));
+        };
+        out.push(Pose::new(x.0, y.0, a.0));
+    }
+    Ok(out)
+}
+
+/// A pole: the fixed point of the displacement between two poses, or the
+/// direction in which it lies at infinity.
+#[pyclass(frozen, eq, name = "Pole", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub struct PyPole {
+    pair: (usize, usize),
+    point: Option<Xy>,
+    direction: Option<Xy>,
+}
+
+#[pymethods]
+impl PyPole {
+    #[new]
+    #[pyo3(signature = (pair, point = None, direction = None))]
+    fn new(
+        pair: (Count, Count),
+        point: Option<PyPoint>,
+        direction: Option<PyPoint>,
+    ) -> PyResult<Self> {
+        let pair = (pair.0.0, pair.1.0);
+        if !(1 <= pair.0 && pair.0 < pair.1 && pair.1 <= burmester::geom::MAX_POSES) {
+            return Err(crate::errors::invalid(
+                "pose_index",
+                format!(
+                    "a pole's pair must be two pose indices 1 <= i < j <= {}, got {pair:?}; \
+                     pass 1-based indices",
+                    burmester::geom::MAX_POSES
+                ),
+            ));
+        }
+        if point.is_some() == direction.is_some() {
+            return Err(PyTypeError::new_err(
+                "a pole has either a point or a direction (at infinity)",
+            ));
+        }
+        let bad = |e: burmester::InvalidInput| Err(crate::errors::to_py(e.into()));
+        if let Some(p) = point {
+            for (name, value) in [("pole x", p.0.x), ("pole y", p.0.y)] {
+                if !value.is_finite() {
+                    return bad(burmester::InvalidInput::NotFinite { name, value });
+                }
+            }
+        }
+        if let Some(d) = direction {
+            let (x, y) = (d.0.x, d.0.y);
+            if !(x.is_finite() && y.is_finite()) || (x == 0.0 && y == 0.0) {
+                return bad(burmester::InvalidInput::ZeroDirection {
+                    name: "the pole's direction",
+                    x,
+                    y,
+                });
+            }
+        }
+        Ok(PyPole {
+            pair,
+            point: point.map(|p| pt(p.0)),
+            direction: direction.map(|d| pt(d.0)),
+        })
+    }
+    /// `(i, j)`, 1-based.
+    #[getter]
+    fn pair(&self) -> (usize, usize) {
+        self.pair
+    }
+    #[getter]
+    fn point(&self) -> Option<Xy> {
+        self.point
+    }
+    #[getter]
+    fn direction(&self) -> Option<Xy> {
+        self.direction
+    }
+    #[getter]
+    fn at_infinity(&self) -> bool {
+        self.point.is_none()
+    }
+    fn __getnewargs__(&self) -> ((usize, usize), Option<Xy>, Option<Xy>) {
+        (self.pair, self.point, self.direction)
+    }
+    fn __repr__(&self) -> String {
+        let (i, j) = self.pair;
+        match (self.point, self.direction) {
+            (Some((x, y)), _) => format!("Pole(({i}, {j}), point=({x:?}, {y:?}))"),
+            (_, Some((x, y))) => format!("Pole(({i}, {j}), direction=({x:?}, {y:?}))"),
+            _ => format!("Pole(({i}, {j}))"),
+        }
+    }
+}
+
+/// Three to five poses of the coupler.
+#[pyclass(frozen, eq, from_py_object, name = "Task", module = "burmester")]
+#[derive(Clone, PartialEq)]
 pub struct PyTask {
     pub(crate) inner: Task,
+}
+
+impl PyTask {
+    fn cremona(&self) -> PyResult<&Cremona> {
+        self.inner.cremona().py()
+    }
 }
 
 #[pymethods]
 impl PyTask {
     #[new]
-    fn new(poses: Vec<Vec<Real>>) -> PyResult<Self> {
-        if poses.len() != 3 {
-            return Err(InvalidInputError::new_err(format!(
-                "a task needs exactly three poses (x, y, angle), got {}; pass three",
-                poses.len()
-            )));
-        }
-        let mut p = [Pose::new(0.0, 0.0, 0.0); 3];
-        for (k, (q, v)) in p.iter_mut().zip(&poses).enumerate() {
-            let [x, y, a] = v[..] else {
-                return Err(InvalidInputError::new_err(format!(
-                    "pose {} must be (x, y, angle): three numbers, got {}; pass three",
-                    k + 1,
-                    v.len()
-                )));
-            };
-            *q = Pose::new(x.0, y.0, a.0);
-        }
-        Task::new(p).map(|inner| PyTask { inner }).py()
+    fn new(poses: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Task::new(&poses_arg(poses)?)
+            .map(|inner| PyTask { inner })
+            .py()
+    }
+
+    fn __getnewargs__(&self) -> (Vec<(f64, f64, f64)>,) {
+        (self.poses(),)
+    }
+
+    fn __len__(&self) -> usize {
+        self.inner.len()
     }
 
     #[getter]
@@ -124,9 +248,8 @@ impl PyTask {
     }
 
     #[getter]
-    fn rotations(&self) -> (f64, f64, f64) {
-        let [a, b, c] = self.inner.rotations();
-        (a, b, c)
+    fn rotations(&self) -> Vec<f64> {
+        self.inner.rotations()
     }
 
     #[getter]
@@ -134,40 +257,56 @@ impl PyTask {
         self.inner.scale()
     }
 
-    fn poles(&self) -> (Xy, Xy, Xy) {
-        let [a, b, c] = self.inner.poles();
-        (pt(a), pt(b), pt(c))
+    #[getter]
+    fn poles(&self) -> Vec<PyPole> {
+        self.inner
+            .motion()
+            .pairs()
+            .zip(self.inner.poles())
+            .map(|(pair, p)| match p {
+                Pole::Finite(q) => PyPole {
+                    pair,
+                    point: Some(pt(q)),
+                    direction: None,
+                },
+                Pole::AtInfinity { direction } => PyPole {
+                    pair,
+                    point: None,
+                    direction: Some(vec2(direction)),
+                },
+            })
+            .collect()
     }
 
-    fn image_poles(&self) -> (Xy, Xy, Xy) {
-        let [a, b, c] = self.inner.image_poles();
-        (pt(a), pt(b), pt(c))
+    fn rotation(&self, i: Count, j: Count) -> PyResult<f64> {
+        self.inner.rotation(i.0, j.0).py()
+    }
+
+    fn image_poles(&self) -> PyResult<(Xy, Xy, Xy)> {
+        let [a, b, c] = self.cremona()?.image_poles();
+        Ok((pt(a), pt(b), pt(c)))
     }
 
     fn image_poles_in(&self, frame: Count) -> PyResult<(Xy, Xy, Xy)> {
-        let [a, b, c] = self.inner.image_poles_in(pose_index(frame)?).py()?;
+        let [a, b, c] = self.cremona()?.image_poles_in(frame.0).py()?;
         Ok((pt(a), pt(b), pt(c)))
     }
 
     fn pole_circle<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        circle_dict(py, self.inner.pole_circle())
+        circle_dict(py, self.cremona()?.pole_circle())
     }
 
     fn image_pole_circle<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        circle_dict(py, self.inner.image_pole_circle())
+        circle_dict(py, self.cremona()?.image_pole_circle())
     }
 
-    fn pole_triangle_angles(&self) -> (f64, f64, f64) {
-        let [a, b, c] = self.inner.pole_triangle_angles();
-        (a, b, c)
+    fn pole_triangle_angles(&self) -> PyResult<(f64, f64, f64)> {
+        let [a, b, c] = self.cremona()?.pole_triangle_angles();
+        Ok((a, b, c))
     }
 
     fn displace(&self, point: PyPoint, i: Count, j: Count) -> PyResult<Xy> {
-        Ok(pt(self.inner.displace(
-            point.0,
-            pose_index(i)?,
-            pose_index(j)?,
-        )))
+        self.inner.displace(point.0, i.0, j.0).map(pt).py()
     }
 
     fn circle_point(&self, center: PyPoint) -> PyResult<Xy> {
@@ -183,6 +322,9 @@ impl PyTask {
         py: Python<'py>,
         centers: FloatArray,
     ) -> PyResult<MappedPoints<'py>> {
+        // A task of four or five poses is a misuse, not a point without an
+        // answer: raise instead of a mask of False.
+        self.cremona()?;
         let t = self.inner;
         map_points(py, centers, move |p| t.circle_point(p))
     }
@@ -192,19 +334,21 @@ impl PyTask {
         py: Python<'py>,
         circles: FloatArray,
     ) -> PyResult<MappedPoints<'py>> {
+        // A task of four or five poses is a misuse, not a point without an
+        // answer: raise instead of a mask of False.
+        self.cremona()?;
         let t = self.inner;
         map_points(py, circles, move |p| t.center_point(p))
     }
 
     fn dyad(&self, center: PyPoint) -> PyResult<(Xy, Xy)> {
         let d = self.inner.dyad_from_center(center.0).py()?;
-        Ok((pt(d.center), pt(d.circle)))
+        Ok(dyad_tuple(&d))
     }
 
-    fn crank_angles(&self, center: PyPoint) -> PyResult<(f64, f64, f64)> {
+    fn crank_angles(&self, center: PyPoint) -> PyResult<Vec<f64>> {
         let d = self.inner.dyad_from_center(center.0).py()?;
-        let [a, b, c] = self.inner.crank_angles(&d);
-        Ok((a, b, c))
+        Ok(self.inner.crank_angles(&d).to_vec())
     }
 
     fn filemon(&self, driven_center: PyPoint) -> PyResult<PyFilemon> {
@@ -223,38 +367,40 @@ impl PyTask {
         let c = self.inner.dyad_from_center(driven_center.0).py()?;
         self.inner
             .four_bar(&a, &c)
-            .map(|inner| PySynthesizedFourBar { inner })
+            .map(|inner| PySynthesizedFourBar::new(self.inner, inner))
             .py()
     }
 
-    #[pyo3(signature = (driving_center, xmin, xmax, ymin, ymax, nx, ny, *,
-        min_transmission_deg = Real(30.0), max_link_ratio = Real(10.0), input = "any",
-        base_plate = None, obstacles = None, link_width = Real(0.0), travel_samples = Count(64)),
-        text_signature = "($self, /, driving_center, xmin, xmax, ymin, ymax, nx, ny, *, \
-        min_transmission_deg=30.0, max_link_ratio=10.0, input='any', base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64)")]
+    #[pyo3(signature = (driving_center, *grid, limits = None, min_transmission_deg = None,
+        max_link_ratio = None, input = None, base_plate = None, obstacles = None,
+        link_width = Real(0.0), travel_samples = Count(64), progress = None),
+        text_signature = "($self, driving_center, *grid, limits=None, \
+        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
     #[allow(clippy::too_many_arguments)]
     fn driven_solution_map(
         &self,
         py: Python<'_>,
         driving_center: PyPoint,
-        xmin: Real,
-        xmax: Real,
-        ymin: Real,
-        ymax: Real,
-        nx: Count,
-        ny: Count,
-        min_transmission_deg: Real,
-        max_link_ratio: Real,
-        input: &str,
+        grid: &Bound<'_, PyTuple>,
+        limits: Option<crate::design::PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        input: Option<&str>,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
         link_width: Real,
         travel_samples: Count,
+        progress: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<crate::design::PySolutionMap> {
-        let (grid, opts) = crate::design::MapOptions::with_grid(
-            [xmin, xmax, ymin, ymax],
-            [nx, ny],
+        let (g, used) = grid_arg(grid)?;
+        if used != grid.len() {
+            return Err(PyTypeError::new_err(
+                "driven_solution_map takes the driving center and a grid (or its six numbers)",
+            ));
+        }
+        let opts = MapOptions::new(
+            limits,
             min_transmission_deg,
             max_link_ratio,
             input,
@@ -263,7 +409,7 @@ impl PyTask {
             link_width,
             travel_samples,
         )?;
-        crate::design::driven_solution_map(py, self.inner, driving_center.0, grid, opts)
+        crate::design::driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
     }
 
     fn line_to_conic(&self, point: PyPoint, direction: PyPoint) -> PyResult<PyConic> {
@@ -287,14 +433,19 @@ impl PyTask {
 }
 
 /// Filemon's construction for a driven dyad, and its transformed conics.
-#[pyclass(frozen, name = "Filemon", module = "burmester")]
-#[derive(Clone)]
+#[pyclass(frozen, eq, name = "Filemon", module = "burmester")]
+#[derive(Clone, PartialEq)]
 pub struct PyFilemon {
     pub(crate) inner: Filemon,
 }
 
 #[pymethods]
 impl PyFilemon {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (Xy,))> {
+        let task = Bound::new(py, self.task())?;
+        Ok((task.getattr("filemon")?, (pt(self.inner.driven().center),)))
+    }
+
     #[getter]
     fn task(&self) -> PyTask {
         PyTask {
@@ -308,8 +459,8 @@ impl PyFilemon {
     }
 
     #[getter]
-    fn circle_point(&self) -> Xy {
-        pt(self.inner.circle_point())
+    fn driven_circle(&self) -> Xy {
+        pt(self.inner.driven_circle())
     }
 
     #[getter]
@@ -337,6 +488,11 @@ impl PyFilemon {
     }
 
     #[getter]
+    fn sectors(&self) -> Vec<(f64, f64, bool)> {
+        self.inner.construction().sectors()
+    }
+
+    #[getter]
     fn conics(&self) -> Vec<PyConic> {
         self.inner
             .conics()
@@ -355,9 +511,10 @@ impl PyFilemon {
     }
 
     fn line_conic(&self, pose: Count) -> PyResult<PyConic> {
-        Ok(PyConic {
-            inner: self.inner.line_conic(pose_index(pose)?),
-        })
+        self.inner
+            .line_conic(pose.0)
+            .map(|inner| PyConic { inner })
+            .py()
     }
 
     #[pyo3(signature = (center, method = "conic"))]
@@ -376,85 +533,93 @@ impl PyFilemon {
             .as_str())
     }
 
-    fn classify_circle_point(&self, circle: PyPoint) -> &'static str {
-        self.inner.classify_circle_point(circle.0).as_str()
+    fn classify_circle_point(&self, circle: PyPoint) -> PyResult<&'static str> {
+        Ok(self.inner.classify_circle_point(circle.0).py()?.as_str())
     }
 
-    fn circle_signs(&self, circle: PyPoint) -> (f64, f64, f64) {
-        let [a, b, c] = self.inner.circle_signs(circle.0);
-        (a, b, c)
+    fn circle_signs(&self, circle: PyPoint) -> PyResult<(f64, f64, f64)> {
+        let [a, b, c] = self.inner.circle_signs(circle.0).py()?;
+        Ok((a, b, c))
     }
 
-    fn conic_values(&self, center: PyPoint) -> Option<(f64, f64)> {
-        self.inner.conic_values(center.0).map(|[a, b]| (a, b))
+    fn conic_values(&self, center: PyPoint) -> PyResult<Option<(f64, f64)>> {
+        Ok(self.inner.conic_values(center.0).py()?.map(|[a, b]| (a, b)))
     }
 
-    #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, method = "conic", *, out = None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (*grid, method = None, out = None, progress = None),
+        text_signature = "($self, *grid, method='conic', out=None, progress=None)")]
     fn branch_map<'py>(
         &self,
         py: Python<'py>,
-        xmin: Real,
-        xmax: Real,
-        ymin: Real,
-        ymax: Real,
-        nx: Count,
-        ny: Count,
-        method: &str,
-        out: Option<Bound<'py, PyArray2<bool>>>,
-    ) -> PyResult<Bound<'py, PyArray2<bool>>> {
-        let grid = (xmin, xmax, ymin, ymax, nx, ny);
-        crate::sweep::branch_map(self.inner, py, grid, method, out)
+        grid: &Bound<'py, PyTuple>,
+        method: Option<&str>,
+        out: Option<Bound<'py, PyAny>>,
+        progress: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (g, used) = grid_arg(grid)?;
+        let method = match (grid.len() - used, method) {
+            (0, m) => m.unwrap_or("conic").to_owned(),
+            (1, None) => grid.get_item(used)?.extract::<String>()?,
+            _ => {
+                return Err(PyTypeError::new_err(
+                    "branch_map takes a grid (or its six numbers) and a method, once",
+                ));
+            }
+        };
+        crate::sweep::branch_map(self.inner, py, g, &method, out, progress.as_ref())
     }
 
-    #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, *, out = None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (*grid, out = None, progress = None),
+        text_signature = "($self, *grid, out=None, progress=None)")]
     fn margin_map<'py>(
         &self,
         py: Python<'py>,
-        xmin: Real,
-        xmax: Real,
-        ymin: Real,
-        ymax: Real,
-        nx: Count,
-        ny: Count,
-        out: Option<Bound<'py, PyArray2<f32>>>,
-    ) -> PyResult<Bound<'py, PyArray2<f32>>> {
-        let grid = (xmin, xmax, ymin, ymax, nx, ny);
-        crate::sweep::margin_map(self.inner, py, grid, out)
+        grid: &Bound<'py, PyTuple>,
+        out: Option<Bound<'py, PyAny>>,
+        progress: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (g, used) = grid_arg(grid)?;
+        if used != grid.len() {
+            return Err(PyTypeError::new_err(
+                "margin_map takes a grid (or its six numbers)",
+            ));
+        }
+        crate::sweep::margin_map(self.inner, py, g, out, progress.as_ref())
     }
 
-    fn margin(&self, center: PyPoint) -> f64 {
-        self.inner.margin(center.0)
+    fn margin(&self, center: PyPoint) -> PyResult<f64> {
+        self.inner.margin(center.0).py()
     }
 
-    #[pyo3(signature = (xmin, xmax, ymin, ymax, nx, ny, *, min_transmission_deg = Real(30.0),
-        max_link_ratio = Real(10.0), input = "any", base_plate = None, obstacles = None,
-        link_width = Real(0.0), travel_samples = Count(64)),
-        text_signature = "($self, /, xmin, xmax, ymin, ymax, nx, ny, *, \
-        min_transmission_deg=30.0, max_link_ratio=10.0, input='any', base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64)")]
+    #[pyo3(signature = (*grid, limits = None, min_transmission_deg = None,
+        max_link_ratio = None, input = None, base_plate = None, obstacles = None,
+        link_width = Real(0.0), travel_samples = Count(64), progress = None),
+        text_signature = "($self, *grid, limits=None, min_transmission_deg=None, \
+        max_link_ratio=None, input=None, base_plate=None, obstacles=None, link_width=0.0, \
+        travel_samples=64, progress=None)")]
     #[allow(clippy::too_many_arguments)]
     fn solution_map(
         &self,
         py: Python<'_>,
-        xmin: Real,
-        xmax: Real,
-        ymin: Real,
-        ymax: Real,
-        nx: Count,
-        ny: Count,
-        min_transmission_deg: Real,
-        max_link_ratio: Real,
-        input: &str,
+        grid: &Bound<'_, PyTuple>,
+        limits: Option<crate::design::PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        input: Option<&str>,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
         link_width: Real,
         travel_samples: Count,
+        progress: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<crate::design::PySolutionMap> {
-        let (grid, opts) = crate::design::MapOptions::with_grid(
-            [xmin, xmax, ymin, ymax],
-            [nx, ny],
+        let (g, used) = grid_arg(grid)?;
+        if used != grid.len() {
+            return Err(PyTypeError::new_err(
+                "solution_map takes a grid (or its six numbers); the limits go by keyword",
+            ));
+        }
+        let opts = MapOptions::new(
+            limits,
             min_transmission_deg,
             max_link_ratio,
             input,
@@ -463,13 +628,13 @@ impl PyFilemon {
             link_width,
             travel_samples,
         )?;
-        crate::design::solution_map(py, self.inner, grid, opts)
+        crate::design::solution_map(py, self.inner, g, opts, progress)
     }
 
     fn four_bar(&self, driving_center: PyPoint) -> PyResult<PySynthesizedFourBar> {
         self.inner
             .four_bar(driving_center.0)
-            .map(|inner| PySynthesizedFourBar { inner })
+            .map(|inner| PySynthesizedFourBar::new(*self.inner.task(), inner))
             .py()
     }
 
@@ -488,132 +653,44 @@ impl PyFilemon {
     }
 }
 
-/// A conic `A x^2 + B x y + C y^2 + D x + E y + F = 0`.
-#[pyclass(frozen, name = "Conic", module = "burmester")]
-#[derive(Clone)]
-pub struct PyConic {
-    pub(crate) inner: Conic,
-}
-
-#[pymethods]
-impl PyConic {
-    #[new]
-    #[allow(clippy::many_single_char_names)]
-    fn new(a: Real, b: Real, c: Real, d: Real, e: Real, f: Real) -> PyResult<Self> {
-        Conic::new(a.0, b.0, c.0, d.0, e.0, f.0)
-            .map(|inner| PyConic { inner })
-            .py()
-    }
-
-    #[getter]
-    fn coefficients(&self) -> (f64, f64, f64, f64, f64, f64) {
-        let [a, b, c, d, e, f] = self.inner.coefficients();
-        (a, b, c, d, e, f)
-    }
-
-    #[getter]
-    fn kind(&self) -> &'static str {
-        self.inner.kind().as_str()
-    }
-
-    #[getter]
-    fn center(&self) -> Option<Xy> {
-        self.inner.center().map(pt)
-    }
-
-    #[getter]
-    fn axis_angle(&self) -> f64 {
-        self.inner.axis_angle()
-    }
-
-    #[getter]
-    fn asymptotes(&self) -> Option<(Xy, Xy, Xy)> {
-        self.inner
-            .asymptotes()
-            .map(|[a, b]| (pt(a.point), vec2(a.direction), vec2(b.direction)))
-    }
-
-    fn evaluate(&self, point: PyPoint) -> f64 {
-        self.inner.evaluate(point.0)
-    }
-
-    fn __call__(&self, point: PyPoint) -> f64 {
-        self.inner.evaluate(point.0)
-    }
-
-    fn evaluate_many<'py>(
-        &self,
-        py: Python<'py>,
-        points: FloatArray,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let (pts, lead) = crate::conv::points(&points)?;
-        let c = self.inner;
-        let v: Vec<f64> = py.detach(|| pts.iter().map(|p| c.evaluate(*p)).collect());
-        Ok(to_numpy(py, &lead, v))
-    }
-
-    fn side(&self, point: PyPoint) -> i8 {
-        self.inner.side(point.0)
-    }
-
-    fn distance(&self, point: PyPoint) -> f64 {
-        self.inner.distance_estimate(point.0)
-    }
-
-    #[pyo3(signature = (xmin, xmax, ymin, ymax, tolerance = None))]
-    fn polylines<'py>(
-        &self,
-        py: Python<'py>,
-        xmin: Real,
-        xmax: Real,
-        ymin: Real,
-        ymax: Real,
-        tolerance: Option<Real>,
-    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-        let vp = Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()?;
-        let tolerance = tolerance.map(|t| t.0);
-        if let Some(t) = tolerance {
-            if !(t.is_finite() && t > 0.0) {
-                return Err(InvalidInputError::new_err(format!(
-                    "tolerance must be a positive finite number, got {t}; pass one, or None for the default"
-                )));
-            }
-        }
-        let c = self.inner;
-        let lines = py.detach(|| c.polylines(&vp, tolerance));
-        Ok(lines
-            .into_iter()
-            .map(|l| {
-                let flat: Vec<f64> = l.iter().flat_map(|p| [p.x, p.y]).collect();
-                numpy::ndarray::Array2::from_shape_vec((l.len(), 2), flat)
-                    .expect("two coordinates per point")
-                    .into_pyarray(py)
-            })
-            .collect())
-    }
-
-    fn __repr__(&self) -> String {
-        let [a, b, c, d, e, f] = self.inner.coefficients();
-        format!(
-            "Conic({a:?}, {b:?}, {c:?}, {d:?}, {e:?}, {f:?})  # {}",
-            self.inner.kind()
-        )
-    }
+fn method(s: &str) -> PyResult<burmester::Method> {
+    s.parse::<burmester::Method>().py()
 }
 
 /// A four-bar built from a driving and a driven dyad of a task.
-#[pyclass(frozen, name = "SynthesizedFourBar", module = "burmester")]
-#[derive(Clone)]
+#[pyclass(
+    frozen,
+    from_py_object,
+    name = "SynthesizedFourBar",
+    module = "burmester"
+)]
+#[derive(Clone, PartialEq)]
 pub struct PySynthesizedFourBar {
     pub(crate) inner: SynthesizedFourBar,
+    /// The task it was built for (for pickling).
+    task: Task,
 }
 
-fn dyad_tuple(d: &Dyad) -> (Xy, Xy) {
-    (pt(d.center), pt(d.circle))
+impl PySynthesizedFourBar {
+    pub(crate) fn new(task: Task, inner: SynthesizedFourBar) -> Self {
+        PySynthesizedFourBar { inner, task }
+    }
 }
 
 #[pymethods]
 impl PySynthesizedFourBar {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (Xy, Xy))> {
+        let task = Bound::new(py, PyTask { inner: self.task })?;
+        Ok((
+            task.getattr("four_bar")?,
+            (pt(self.inner.driving.center), pt(self.inner.driven.center)),
+        ))
+    }
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<PySynthesizedFourBar>()
+            .is_ok_and(|o| *o.get() == *self)
+    }
     #[getter]
     fn fourbar(&self) -> PyFourBar {
         self.inner.fourbar.into()
@@ -627,20 +704,16 @@ impl PySynthesizedFourBar {
         dyad_tuple(&self.inner.driven)
     }
     #[getter]
-    fn input_angles(&self) -> (f64, f64, f64) {
-        let [a, b, c] = self.inner.input_angles;
-        (a, b, c)
+    fn input_angles(&self) -> Vec<f64> {
+        self.inner.input_angles.to_vec()
     }
     #[getter]
-    fn modes(
-        &self,
-    ) -> (
-        Option<&'static str>,
-        Option<&'static str>,
-        Option<&'static str>,
-    ) {
-        let [a, b, c] = self.inner.modes.map(|m| m.map(|m| m.as_str()));
-        (a, b, c)
+    fn modes(&self) -> Vec<Option<&'static str>> {
+        self.inner
+            .modes()
+            .iter()
+            .map(|m| m.map(|m| m.as_str()))
+            .collect()
     }
     #[getter]
     fn coupler_point(&self) -> Xy {
@@ -650,14 +723,40 @@ impl PySynthesizedFourBar {
     fn coupler_angle_offset(&self) -> f64 {
         self.inner.coupler_angle_offset
     }
-    fn is_branch_free(&self) -> bool {
+    #[getter]
+    pub(crate) fn figures(&self) -> PyLinkageFigures {
+        PyLinkageFigures {
+            inner: self.inner.figures,
+        }
+    }
+    #[getter]
+    fn branch_free(&self) -> bool {
         self.inner.is_branch_free()
+    }
+    /// `(start, span)` of the travel, or None.
+    #[getter]
+    fn travel(&self) -> Option<(f64, f64)> {
+        self.inner.travel()
+    }
+    /// The input angle at each pose along the travel, unwrapped, or None.
+    #[getter]
+    fn travel_stops(&self) -> Option<Vec<f64>> {
+        self.inner.travel_stops().map(|s| s.to_vec())
+    }
+    fn travel_angles<'py>(
+        &self,
+        py: Python<'py>,
+        samples: Count,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let v = self.inner.travel_angles(samples.0).py()?;
+        let n = v.len();
+        Ok(to_numpy(py, &[n], v))
     }
     #[pyo3(signature = (theta2, mode = "open"))]
     fn pose_at(&self, theta2: Real, mode: &str) -> PyResult<(f64, f64, f64)> {
         let p = self
             .inner
-            .pose_at(theta2.0, crate::fourbar::mode(mode)?)
+            .pose_at(theta2.0, crate::linkage::mode(mode)?)
             .py()?;
         Ok((p.position.x, p.position.y, p.angle))
     }

@@ -1,18 +1,28 @@
-//! Errors, one enum per concern.
+//! Errors: one enum per concern, one variant per cause, typed fields.
 //!
 //! Every fallible function in the crate returns [`Error`](enum@Error), which wraps one of
-//! three kinds:
+//! four kinds:
 //!
-//! * [`InvalidInput`]: a number or a string the caller passed is not
-//!   acceptable (NaN, infinite, zero or negative length, unknown name, wrong
-//!   length of a batch). Change the input.
+//! * [`InvalidInput`]: a number, a name, a count or a shape the caller passed
+//!   is not acceptable (NaN, infinite, zero or negative length, unknown
+//!   name, a pose index out of range, a polygon that is not simple). Change
+//!   the input.
 //! * [`AssemblyError`]: the input is well formed, but the linkage cannot be
 //!   put together where it was asked to be (the loop does not close).
 //! * [`DegenerateError`]: the geometry is degenerate: an answer lies at
 //!   infinity, or the task has no unique answer.
+//! * [`Error::Cancelled`]: a long computation was stopped by its
+//!   [`Control`](crate::Control) (for example Ctrl-C in Python).
+//! * [`Error::OutOfMemory`]: a buffer sized by the input could not be
+//!   allocated (Python: `MemoryError`).
 //!
-//! The messages say what was wrong and what to change. Nothing in the crate
-//! panics on user input, and no NaN is handed back without a flag saying so.
+//! The messages say what was wrong and what to change; every variant's
+//! fields are also available as data ([`Error::cause`], [`Error::fields`]),
+//! which the Python binding turns into attributes of its exceptions. Nothing
+//! in the crate panics on user input, and no NaN is handed back without a
+//! flag saying so.
+
+use core::fmt;
 
 use thiserror::Error;
 
@@ -32,6 +42,79 @@ pub enum Error {
     /// The geometry is degenerate (an answer at infinity, or no unique answer).
     #[error(transparent)]
     Degenerate(#[from] DegenerateError),
+    /// The computation was cancelled through its [`Control`](crate::Control)
+    /// before it finished; nothing it was filling holds a complete answer.
+    #[error(
+        "the computation was cancelled after {done} of {total} rows; run it again to get a \
+         complete result"
+    )]
+    Cancelled {
+        /// Rows (or other units of work) finished when it stopped.
+        done: usize,
+        /// Rows in all.
+        total: usize,
+    },
+    /// A buffer sized by the input could not be allocated.
+    #[error(
+        "{what} needs {bytes} bytes, more than can be allocated; ask for fewer samples (a smaller \
+         grid) or split the work"
+    )]
+    OutOfMemory {
+        /// What was being allocated.
+        what: &'static str,
+        /// How many bytes it needs.
+        bytes: usize,
+    },
+}
+
+/// A number in a message: short (at most 17 significant digits, in
+/// scientific notation when very large or very small), so that a huge value
+/// never fills a message with hundreds of digits.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Num(pub f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = self.0;
+        let a = v.abs();
+        if v.is_finite() && a != 0.0 && !(1e-5..1e16).contains(&a) {
+            write!(f, "{v:e}")
+        } else {
+            write!(f, "{v}")
+        }
+    }
+}
+
+/// Why a polygon is not acceptable.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PolygonProblem {
+    /// Fewer than three vertices.
+    TooFewVertices,
+    /// Its vertices lie on one line (within a relative `1e-12`): no area.
+    NoArea,
+    /// Two of its edges cross: it is not a simple polygon.
+    SelfIntersecting,
+}
+
+impl PolygonProblem {
+    /// A short name: `"too few vertices"`, `"no area"`, `"self-intersecting"`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            PolygonProblem::TooFewVertices => "too few vertices",
+            PolygonProblem::NoArea => "no area",
+            PolygonProblem::SelfIntersecting => "self-intersecting",
+        }
+    }
+}
+
+impl fmt::Display for PolygonProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            PolygonProblem::TooFewVertices => "it has fewer than 3 vertices",
+            PolygonProblem::NoArea => "its vertices lie on one line, so it has no area",
+            PolygonProblem::SelfIntersecting => "two of its edges cross (it is not simple)",
+        })
+    }
 }
 
 /// An argument is not acceptable: change it.
@@ -39,7 +122,7 @@ pub enum Error {
 #[non_exhaustive]
 pub enum InvalidInput {
     /// A number is NaN or infinite.
-    #[error("{name} must be a finite number, got {value}; pass a finite value")]
+    #[error("{name} must be a finite number, got {}; pass a finite value", Num(*.value))]
     NotFinite {
         /// What the number is (for example `"crank length"`).
         name: &'static str,
@@ -47,12 +130,68 @@ pub enum InvalidInput {
         value: f64,
     },
     /// A length is zero or negative.
-    #[error("{name} must be greater than zero, got {value}; pass a positive length")]
+    #[error("{name} must be greater than zero, got {}; pass a positive length", Num(*.value))]
     NotPositive {
         /// What the length is.
         name: &'static str,
         /// The value that was passed.
         value: f64,
+    },
+    /// A number is outside the closed range `[min, max]`.
+    #[error(
+        "{name} must be between {} and {}{}, got {}; pass a value in that range",
+        Num(*.min), Num(*.max), .unit, Num(*.value)
+    )]
+    OutsideRange {
+        /// What the number is.
+        name: &'static str,
+        /// The value that was passed.
+        value: f64,
+        /// The smallest accepted value.
+        min: f64,
+        /// The largest accepted value (infinity: no upper limit).
+        max: f64,
+        /// The unit of the range, with a leading space (for example
+        /// `" degrees"`), or empty.
+        unit: &'static str,
+    },
+    /// A magnitude exceeds the documented limit past which the arithmetic
+    /// could overflow or lose its precision.
+    #[error("{name} is {}, beyond the limit of {} in magnitude; {hint}", Num(*.value), Num(*.limit))]
+    TooLarge {
+        /// What the number is (for example `"pose 2 angle"`).
+        name: &'static str,
+        /// The value that was passed (or derived from the input).
+        value: f64,
+        /// The documented limit.
+        limit: f64,
+        /// What to do about it.
+        hint: &'static str,
+    },
+    /// A size is below the documented limit past which the arithmetic could
+    /// underflow.
+    #[error("{name} is {}, below the limit of {}; {hint}", Num(*.value), Num(*.limit))]
+    TooSmall {
+        /// What the size is.
+        name: &'static str,
+        /// The size found.
+        value: f64,
+        /// The documented limit.
+        limit: f64,
+        /// What to do about it.
+        hint: &'static str,
+    },
+    /// A count (of samples, of results) is outside its documented range.
+    #[error("{name} must be from {min} to {max}, got {value}; pass a count in that range")]
+    CountOutOfRange {
+        /// What is counted.
+        name: &'static str,
+        /// The count that was passed.
+        value: usize,
+        /// The smallest accepted count.
+        min: usize,
+        /// The largest accepted count.
+        max: usize,
     },
     /// A name (an assembly mode, a method) is not one of those accepted.
     #[error("unknown {what} {found:?}; use one of {expected}")]
@@ -74,15 +213,139 @@ pub enum InvalidInput {
         /// The length that was found.
         found: usize,
     },
-    /// A grid or a sampling parameter is out of its range.
-    #[error("{name} is {found}, but {expected}")]
-    OutOfRange {
-        /// Which argument.
+    /// A task was given a number of poses it does not support.
+    #[error(
+        "a task takes {min} to {max} poses, got {found}; pass {min} poses for the branch maps, \
+         {} for the Burmester curves or {max} for the Burmester points",
+        .min + 1
+    )]
+    PoseCount {
+        /// The number of poses passed.
+        found: usize,
+        /// The smallest supported number.
+        min: usize,
+        /// The largest supported number.
+        max: usize,
+    },
+    /// A method that needs a specific number of poses was called on a task
+    /// with another number.
+    #[error("{method} needs a task of {required} poses, but this task has {found}")]
+    NeedsPoses {
+        /// The method (for example `"Task::filemon"`).
+        method: &'static str,
+        /// The number of poses it needs.
+        required: usize,
+        /// The number of poses of the task.
+        found: usize,
+    },
+    /// A pose index (1-based) is out of range.
+    #[error("pose index must be from 1 to {count}, got {index}; pass a 1-based index of a pose")]
+    PoseIndex {
+        /// The index that was passed.
+        index: usize,
+        /// The number of poses.
+        count: usize,
+    },
+    /// A grid has no samples in one direction, or more than
+    /// [`Grid::MAX_POINTS`](crate::Grid::MAX_POINTS) in all.
+    #[error(
+        "a grid of {nx} by {ny} samples is not supported: nx and ny must be at least 1 and \
+         nx * ny at most {max}; pass other sample counts"
+    )]
+    GridSize {
+        /// Samples per row.
+        nx: usize,
+        /// Rows.
+        ny: usize,
+        /// The largest number of samples.
+        max: usize,
+    },
+    /// A viewport is empty or inverted (or its size overflows).
+    #[error(
+        "the viewport x from {} to {}, y from {} to {} is empty or inverted; pass xmin < xmax \
+         and ymin < ymax (with a finite size)",
+        Num(*.xmin), Num(*.xmax), Num(*.ymin), Num(*.ymax)
+    )]
+    Viewport {
+        /// Left edge.
+        xmin: f64,
+        /// Right edge.
+        xmax: f64,
+        /// Bottom edge.
+        ymin: f64,
+        /// Top edge.
+        ymax: f64,
+    },
+    /// A direction vector is zero (or not finite).
+    #[error("{name} must be a finite, non-zero vector, got ({}, {}); pass a direction", Num(*.x), Num(*.y))]
+    ZeroDirection {
+        /// Which direction.
         name: &'static str,
-        /// What is expected, in words (for example `"must be at least 1"`).
-        expected: &'static str,
-        /// What was found, formatted.
-        found: String,
+        /// Its x.
+        x: f64,
+        /// Its y.
+        y: f64,
+    },
+    /// The quadratic and linear coefficients of a conic are all zero.
+    #[error(
+        "a conic needs A, B, C, D or E nonzero (all are zero); pass the coefficients of a curve"
+    )]
+    ConicCoefficients,
+    /// Every coefficient of a cubic but the constant is zero.
+    #[error(
+        "a cubic needs a coefficient other than the constant nonzero; pass the coefficients of a \
+         curve"
+    )]
+    CubicCoefficients,
+    /// A point that must lie on a curve (a center point on the center-point
+    /// curve, a circle point on the circle-point curve) is off it.
+    #[error(
+        "the {what} is {} from its curve, more than the tolerance of {}; take a point of the \
+         traced curve (or a Burmester point)",
+        Num(*.distance), Num(*.tolerance)
+    )]
+    OffCurve {
+        /// Which point (for example `"center point"`).
+        what: &'static str,
+        /// Its first-order distance from the curve.
+        distance: f64,
+        /// The largest distance accepted.
+        tolerance: f64,
+    },
+    /// A dyad passed to a task is not a dyad of it: its moving pivot is not
+    /// at one distance from its fixed pivot in every pose.
+    #[error(
+        "the {which} is not a dyad of the task: its moving pivot's distances from its fixed pivot \
+         over the poses differ by {} (relative), more than {}; build it with Task::dyad_from_center",
+        Num(*.spread), Num(*.tolerance)
+    )]
+    NotADyad {
+        /// Which dyad (`"driving dyad"` or `"driven dyad"`).
+        which: &'static str,
+        /// The spread of the distances, relative to the dyad's and the
+        /// task's size.
+        spread: f64,
+        /// The tolerance ([`tolerance::DYAD`](crate::tolerance::DYAD)).
+        tolerance: f64,
+    },
+    /// A polygon (a base plate, an obstacle) is not acceptable.
+    #[error("{name} is not a usable polygon: {problem}; pass a simple polygon with an area")]
+    Polygon {
+        /// Which polygon (for example `"base_plate"` or `"obstacle 2"`).
+        name: String,
+        /// How many vertices it has.
+        vertices: usize,
+        /// What is wrong.
+        problem: PolygonProblem,
+    },
+    /// A result would not be representable (it overflows), although every
+    /// input is finite: the input is too far from the task or the linkage.
+    #[error("{what} overflows: {hint}")]
+    Overflow {
+        /// What overflows (for example `"the coupler point's position"`).
+        what: &'static str,
+        /// What to do about it.
+        hint: &'static str,
     },
 }
 
@@ -93,8 +356,9 @@ pub enum AssemblyError {
     /// The longest link is longer than the other three together: no input
     /// angle closes the loop.
     #[error(
-        "the linkage can never be assembled: its longest link ({longest}) is longer than the \
-         other three together ({others}); shorten it or lengthen the others"
+        "the linkage can never be assembled: its longest link ({}) is longer than the other three \
+         together ({}); shorten it or lengthen the others",
+        Num(*.longest), Num(*.others)
     )]
     NeverCloses {
         /// The longest link length.
@@ -105,9 +369,10 @@ pub enum AssemblyError {
     /// At this input angle the coupler and the rocker cannot reach from the
     /// crank tip to the output pivot.
     #[error(
-        "the loop does not close at theta2 = {theta2} rad: the crank tip is {distance} from the \
-         output pivot, but coupler and rocker reach only from {min_reach} to {max_reach}; choose \
-         an input angle inside the input range (FourBar::input_range)"
+        "the loop does not close at theta2 = {} rad: the crank tip is {} from the output pivot, \
+         but coupler and rocker reach only from {} to {}; choose an input angle inside the input \
+         range (FourBar::input_range)",
+        Num(*.theta2), Num(*.distance), Num(*.min_reach), Num(*.max_reach)
     )]
     OutOfReach {
         /// The input angle, in radians.
@@ -122,9 +387,10 @@ pub enum AssemblyError {
     /// The crank tip lies on the output pivot and the coupler equals the
     /// rocker: every coupler angle closes the loop.
     #[error(
-        "the position at theta2 = {theta2} rad is indeterminate: the crank tip lies on the output \
-         pivot and the coupler is as long as the rocker, so any coupler angle closes the loop; \
-         step the input angle away from it"
+        "the position at theta2 = {} rad is indeterminate: the crank tip lies on the output pivot \
+         and the coupler is as long as the rocker, so any coupler angle closes the loop; step the \
+         input angle away from it",
+        Num(*.theta2)
     )]
     Indeterminate {
         /// The input angle, in radians.
@@ -149,11 +415,12 @@ pub enum DegenerateError {
         j: usize,
     },
     /// Two poses differ by a pure translation (their angles agree within
-    /// `Task::MIN_ROTATION`), so their pole is at infinity.
+    /// [`tolerance::MIN_ROTATION`](crate::tolerance::MIN_ROTATION)), so their
+    /// pole is at infinity, where a computation needs it finite.
     #[error(
         "poses {i} and {j} have the same angle (within 1e-6 rad), so the motion between them is \
-         a pure translation and their pole is at infinity; this is not supported: rotate one of \
-         the poses by at least 1e-6 rad (a few thousandths of a degree)"
+         a pure translation and their pole is at infinity; this is not supported here: rotate \
+         one of the poses by at least 1e-6 rad (a few thousandths of a degree)"
     )]
     PureTranslation {
         /// First pose index (1-based).
@@ -164,9 +431,10 @@ pub enum DegenerateError {
     /// The three poses are rotations about one point: all three poles
     /// coincide, and every dyad has its center point there.
     #[error(
-        "the three poses are rotations about one point ({x}, {y}): all poles coincide there, so \
+        "the three poses are rotations about one point ({}, {}): all poles coincide there, so \
          the synthesis is degenerate (every dyad is centered there); move one pose off that \
-         rotation"
+         rotation",
+        Num(*.x), Num(*.y)
     )]
     CoincidentPoles {
         /// x of the common pole.
@@ -176,8 +444,9 @@ pub enum DegenerateError {
     },
     /// The answer of a map lies at infinity.
     #[error(
-        "the {what} of ({x}, {y}) is at infinity (direction {dir_x}, {dir_y}): the point lies on \
-         the {curve}; choose a point off it"
+        "the {what} of ({}, {}) is at infinity (direction {}, {}): the point lies on the \
+         {curve}; choose a point off it",
+        Num(*.x), Num(*.y), Num(*.dir_x), Num(*.dir_y)
     )]
     AtInfinity {
         /// What was asked for (for example `"circle point"`).
@@ -196,8 +465,9 @@ pub enum DegenerateError {
     /// The map has no unique answer at this point (a pole, where every
     /// image coincides).
     #[error(
-        "the {what} of ({x}, {y}) is not unique: the point is at {at}, where the map is \
-         undefined; choose a point off it"
+        "the {what} of ({}, {}) is not unique: the point is at {at}, where the map is undefined; \
+         choose a point off it",
+        Num(*.x), Num(*.y)
     )]
     Undefined {
         /// What was asked for.
@@ -209,10 +479,35 @@ pub enum DegenerateError {
         /// y of the point.
         y: f64,
     },
+    /// Every pose has the same angle: the motion is a pure translation, and
+    /// the Burmester points are not defined (none or infinitely many).
+    #[error(
+        "every pose has the same angle: the motion is a pure translation, which has no Burmester \
+         points (or infinitely many); rotate a pose"
+    )]
+    AllTranslations,
+    /// The crank rotation does not parametrize the center-point curve (the
+    /// compatibility linkage of the poses has a link of zero length).
+    #[error(
+        "the crank rotation does not parametrize this task's center-point curve (its \
+         compatibility linkage has a link of zero length); trace the curve instead"
+    )]
+    NotParametrizable,
+    /// The dyad at this crank rotation has its center point at infinity (a
+    /// slider).
+    #[error(
+        "the dyad at the crank rotation beta2 = {} rad has its center point at infinity (a \
+         slider); step beta2 off it",
+        Num(*.beta2)
+    )]
+    SliderDyad {
+        /// The crank rotation from pose 1 to pose 2, radians.
+        beta2: f64,
+    },
     /// A dyad's center point and circle point coincide (a link of zero length).
     #[error(
-        "the {what} has zero length: its center point and circle point coincide at ({x}, {y}); \
-         choose another point"
+        "the {what} has zero length: its ends coincide at ({}, {}); choose another point",
+        Num(*.x), Num(*.y)
     )]
     ZeroLengthLink {
         /// Which link.
@@ -224,15 +519,238 @@ pub enum DegenerateError {
     },
 }
 
+/// The value of a field of an error, for bindings ([`Error::fields`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Field {
+    /// A number.
+    Float(f64),
+    /// A count or an index.
+    Int(usize),
+    /// A name or a description.
+    Str(String),
+}
+
+impl From<&f64> for Field {
+    fn from(v: &f64) -> Self {
+        Field::Float(*v)
+    }
+}
+
+impl From<&usize> for Field {
+    fn from(v: &usize) -> Self {
+        Field::Int(*v)
+    }
+}
+
+impl From<&str> for Field {
+    fn from(v: &str) -> Self {
+        Field::Str(v.to_owned())
+    }
+}
+
+impl From<&&str> for Field {
+    fn from(v: &&str) -> Self {
+        Field::Str((*v).to_owned())
+    }
+}
+
+impl From<&String> for Field {
+    fn from(v: &String) -> Self {
+        Field::Str(v.clone())
+    }
+}
+
+/// `vec![("name", Field::from(value)), ...]`.
+macro_rules! fields {
+    ($($name:ident),* $(,)?) => {
+        vec![$((stringify!($name), Field::from($name))),*]
+    };
+}
+
 impl Error {
-    /// A short name of the kind: `"invalid input"`, `"assembly"` or `"degenerate"`.
+    /// A short name of the kind: `"invalid input"`, `"assembly"`,
+    /// `"degenerate"`, `"cancelled"` or `"memory"`.
     pub fn kind(&self) -> &'static str {
         match self {
             Error::InvalidInput(_) => "invalid input",
             Error::Assembly(_) => "assembly",
             Error::Degenerate(_) => "degenerate",
+            Error::Cancelled { .. } => "cancelled",
+            Error::OutOfMemory { .. } => "memory",
         }
     }
+
+    /// The cause: the variant's name in snake case (for example
+    /// `"not_finite"`, `"out_of_reach"`, `"at_infinity"`).
+    pub fn cause(&self) -> &'static str {
+        match self {
+            Error::InvalidInput(e) => match e {
+                InvalidInput::NotFinite { .. } => "not_finite",
+                InvalidInput::NotPositive { .. } => "not_positive",
+                InvalidInput::OutsideRange { .. } => "outside_range",
+                InvalidInput::TooLarge { .. } => "too_large",
+                InvalidInput::TooSmall { .. } => "too_small",
+                InvalidInput::CountOutOfRange { .. } => "count_out_of_range",
+                InvalidInput::UnknownName { .. } => "unknown_name",
+                InvalidInput::LengthMismatch { .. } => "length_mismatch",
+                InvalidInput::PoseCount { .. } => "pose_count",
+                InvalidInput::NeedsPoses { .. } => "needs_poses",
+                InvalidInput::PoseIndex { .. } => "pose_index",
+                InvalidInput::GridSize { .. } => "grid_size",
+                InvalidInput::Viewport { .. } => "viewport",
+                InvalidInput::ZeroDirection { .. } => "zero_direction",
+                InvalidInput::ConicCoefficients => "conic_coefficients",
+                InvalidInput::CubicCoefficients => "cubic_coefficients",
+                InvalidInput::OffCurve { .. } => "off_curve",
+                InvalidInput::NotADyad { .. } => "not_a_dyad",
+                InvalidInput::Polygon { .. } => "polygon",
+                InvalidInput::Overflow { .. } => "overflow",
+            },
+            Error::Assembly(e) => match e {
+                AssemblyError::NeverCloses { .. } => "never_closes",
+                AssemblyError::OutOfReach { .. } => "out_of_reach",
+                AssemblyError::Indeterminate { .. } => "indeterminate",
+            },
+            Error::Degenerate(e) => match e {
+                DegenerateError::CoincidentPoses { .. } => "coincident_poses",
+                DegenerateError::PureTranslation { .. } => "pure_translation",
+                DegenerateError::CoincidentPoles { .. } => "coincident_poles",
+                DegenerateError::AtInfinity { .. } => "at_infinity",
+                DegenerateError::Undefined { .. } => "undefined",
+                DegenerateError::ZeroLengthLink { .. } => "zero_length_link",
+                DegenerateError::AllTranslations => "all_translations",
+                DegenerateError::NotParametrizable => "not_parametrizable",
+                DegenerateError::SliderDyad { .. } => "slider_dyad",
+            },
+            Error::Cancelled { .. } => "cancelled",
+            Error::OutOfMemory { .. } => "out_of_memory",
+        }
+    }
+
+    /// The variant's fields by name, as data (the Python binding sets them
+    /// as attributes of its exceptions).
+    pub fn fields(&self) -> Vec<(&'static str, Field)> {
+        match self {
+            Error::InvalidInput(e) => match e {
+                InvalidInput::NotFinite { name, value }
+                | InvalidInput::NotPositive { name, value } => fields!(name, value),
+                InvalidInput::OutsideRange {
+                    name,
+                    value,
+                    min,
+                    max,
+                    unit,
+                } => {
+                    let unit = unit.trim();
+                    fields!(name, value, min, max, unit)
+                }
+                InvalidInput::TooLarge {
+                    name,
+                    value,
+                    limit,
+                    hint,
+                }
+                | InvalidInput::TooSmall {
+                    name,
+                    value,
+                    limit,
+                    hint,
+                } => fields!(name, value, limit, hint),
+                InvalidInput::CountOutOfRange {
+                    name,
+                    value,
+                    min,
+                    max,
+                } => fields!(name, value, min, max),
+                InvalidInput::UnknownName {
+                    what,
+                    expected,
+                    found,
+                } => fields!(what, expected, found),
+                InvalidInput::LengthMismatch {
+                    name,
+                    expected,
+                    found,
+                } => fields!(name, expected, found),
+                InvalidInput::PoseCount { found, min, max } => fields!(found, min, max),
+                InvalidInput::NeedsPoses {
+                    method,
+                    required,
+                    found,
+                } => fields!(method, required, found),
+                InvalidInput::PoseIndex { index, count } => fields!(index, count),
+                InvalidInput::GridSize { nx, ny, max } => fields!(nx, ny, max),
+                InvalidInput::Viewport {
+                    xmin,
+                    xmax,
+                    ymin,
+                    ymax,
+                } => fields!(xmin, xmax, ymin, ymax),
+                InvalidInput::ZeroDirection { name, x, y } => fields!(name, x, y),
+                InvalidInput::ConicCoefficients | InvalidInput::CubicCoefficients => vec![],
+                InvalidInput::OffCurve {
+                    what,
+                    distance,
+                    tolerance,
+                } => fields!(what, distance, tolerance),
+                InvalidInput::NotADyad {
+                    which,
+                    spread,
+                    tolerance,
+                } => fields!(which, spread, tolerance),
+                InvalidInput::Polygon {
+                    name,
+                    vertices,
+                    problem,
+                } => {
+                    let problem = problem.as_str();
+                    fields!(name, vertices, problem)
+                }
+                InvalidInput::Overflow { what, hint } => fields!(what, hint),
+            },
+            Error::Assembly(e) => match e {
+                AssemblyError::NeverCloses { longest, others } => fields!(longest, others),
+                AssemblyError::OutOfReach {
+                    theta2,
+                    distance,
+                    min_reach,
+                    max_reach,
+                } => fields!(theta2, distance, min_reach, max_reach),
+                AssemblyError::Indeterminate { theta2 } => fields!(theta2),
+            },
+            Error::Degenerate(e) => match e {
+                DegenerateError::CoincidentPoses { i, j }
+                | DegenerateError::PureTranslation { i, j } => fields!(i, j),
+                DegenerateError::CoincidentPoles { x, y } => fields!(x, y),
+                DegenerateError::AtInfinity {
+                    what,
+                    curve,
+                    x,
+                    y,
+                    dir_x,
+                    dir_y,
+                } => fields!(what, curve, x, y, dir_x, dir_y),
+                DegenerateError::Undefined { what, at, x, y } => fields!(what, at, x, y),
+                DegenerateError::ZeroLengthLink { what, x, y } => fields!(what, x, y),
+                DegenerateError::AllTranslations | DegenerateError::NotParametrizable => vec![],
+                DegenerateError::SliderDyad { beta2 } => fields!(beta2),
+            },
+            Error::Cancelled { done, total } => fields!(done, total),
+            Error::OutOfMemory { what, bytes } => fields!(what, bytes),
+        }
+    }
+}
+
+/// A vector of `n` copies of `value`, or [`Error::OutOfMemory`] when it
+/// cannot be allocated (instead of aborting the process).
+pub fn try_vec<T: Clone>(what: &'static str, n: usize, value: T) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| Error::OutOfMemory {
+        what,
+        bytes: n.saturating_mul(core::mem::size_of::<T>()),
+    })?;
+    v.resize(n, value);
+    Ok(v)
 }
 
 /// Checks that `value` is finite.
@@ -254,6 +772,77 @@ pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64, InvalidInp
     }
 }
 
+/// Checks that `value` is finite and at most `limit` in magnitude.
+pub(crate) fn bounded(
+    name: &'static str,
+    value: f64,
+    limit: f64,
+    hint: &'static str,
+) -> Result<f64, InvalidInput> {
+    let value = finite(name, value)?;
+    if value.abs() <= limit {
+        Ok(value)
+    } else {
+        Err(InvalidInput::TooLarge {
+            name,
+            value,
+            limit,
+            hint,
+        })
+    }
+}
+
+/// Checks that `value` is in `[min, max]` (NaN is not).
+pub(crate) fn in_range(
+    name: &'static str,
+    value: f64,
+    min: f64,
+    max: f64,
+    unit: &'static str,
+) -> Result<f64, InvalidInput> {
+    if (min..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(InvalidInput::OutsideRange {
+            name,
+            value,
+            min,
+            max,
+            unit,
+        })
+    }
+}
+
+/// Checks that a count is in `[min, max]`.
+pub(crate) fn count_in(
+    name: &'static str,
+    value: usize,
+    min: usize,
+    max: usize,
+) -> Result<usize, InvalidInput> {
+    if (min..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(InvalidInput::CountOutOfRange {
+            name,
+            value,
+            min,
+            max,
+        })
+    }
+}
+
+/// Checks that a point is finite, naming its coordinates `"{what} x"` and
+/// `"{what} y"`.
+pub(crate) fn finite_point(
+    names: [&'static str; 2],
+    p: nalgebra::Point2<f64>,
+) -> Result<nalgebra::Point2<f64>, InvalidInput> {
+    finite(names[0], p.x)?;
+    finite(names[1], p.y)?;
+    Ok(p)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -266,6 +855,14 @@ mod tests {
         assert!(msg.contains("-1"), "{msg}");
         assert!(msg.contains("positive"), "{msg}");
         assert_eq!(e.kind(), "invalid input");
+        assert_eq!(e.cause(), "not_positive");
+        assert_eq!(
+            e.fields(),
+            vec![
+                ("name", Field::Str("crank length".into())),
+                ("value", Field::Float(-1.0))
+            ]
+        );
         let e = finite("theta2", f64::NAN).unwrap_err();
         assert!(e.to_string().contains("finite"));
         assert_eq!(finite("x", 1.5), Ok(1.5));
@@ -277,5 +874,39 @@ mod tests {
             positive("x", f64::INFINITY),
             Err(InvalidInput::NotFinite { .. })
         ));
+    }
+
+    #[test]
+    fn numbers_in_messages_are_short() {
+        let e = bounded("x", 1e300, 1e100, "rescale").unwrap_err();
+        let msg = e.to_string();
+        assert!(msg.contains("1e300") && msg.contains("1e100"), "{msg}");
+        assert!(msg.len() < 120, "{msg}");
+        assert_eq!(Num(0.25).to_string(), "0.25");
+        assert_eq!(Num(-3.0).to_string(), "-3");
+        assert_eq!(Num(1e-300).to_string(), "1e-300");
+        assert_eq!(Num(f64::NAN).to_string(), "NaN");
+    }
+
+    #[test]
+    fn every_cause_has_its_fields() {
+        let e: Error = DegenerateError::AtInfinity {
+            what: "circle point",
+            curve: "pole circle",
+            x: 1.0,
+            y: 2.0,
+            dir_x: 0.6,
+            dir_y: 0.8,
+        }
+        .into();
+        assert_eq!(e.cause(), "at_infinity");
+        let f = e.fields();
+        assert!(f.contains(&("dir_x", Field::Float(0.6))));
+        assert!(f.contains(&("curve", Field::Str("pole circle".into()))));
+        let e = Error::Cancelled { done: 3, total: 9 };
+        assert_eq!(
+            e.fields(),
+            vec![("done", Field::Int(3)), ("total", Field::Int(9))]
+        );
     }
 }

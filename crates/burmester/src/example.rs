@@ -4,8 +4,8 @@
 
 use nalgebra::Point2;
 
-use crate::conic::Viewport;
-use crate::task::Task;
+use crate::geom::Viewport;
+use crate::synthesis::Task;
 
 /// The example's poses, `[x, y, angle]` with angles in radians.
 pub const POSES: [[f64; 3]; 3] = [[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]];
@@ -18,7 +18,7 @@ pub const VIEWPORT: [f64; 4] = [-8.0, 8.0, -8.0, 8.0];
 
 /// The example task.
 pub fn task() -> Task {
-    Task::from_xya(POSES).expect("the example task is valid")
+    Task::from_xya(&POSES).expect("the example task is valid")
 }
 
 /// The example's driven center point.

@@ -1,8 +1,25 @@
 //! # burmester
 //!
 //! Planar four-bar linkages for mechanism designers: position analysis,
-//! three-position Burmester synthesis, and the exact elimination of the
-//! branch problem in the driving crank's center-point plane (Borm & Kim).
+//! Burmester synthesis, and the exact elimination of the branch problem in
+//! the driving crank's center-point plane (Borm & Kim).
+//!
+//! # Layout
+//!
+//! Each module imports only from those above it:
+//!
+//! * [`geom`]: plane geometry (poses, lines and circles, conics, viewports
+//!   and grids, per-pose values).
+//! * [`linkage`]: the four-bar: position analysis, Grashof type and input
+//!   range, the one assembly-mode test, and the figures a designer checks.
+//! * [`synthesis`]: the task (three to five poses), its motion
+//!   (displacements, poles), dyads and the four-bar built from two,
+//!   Filemon's construction in the circle-point plane, and
+//!   [`synthesis::three`]: the three-position maps, Filemon's conics and the
+//!   branch sweep.
+//! * [`design`]: limits, constraints, the solution-space map and ranking.
+//! * [`engine`]: the tiled parallel engine with progress and cancellation;
+//!   [`tolerance`]: every rounding decision, named; [`error`]: the errors.
 //!
 //! # Conventions
 //!
@@ -31,31 +48,28 @@
 //! # Ok::<(), burmester::Error>(())
 //! ```
 
-pub mod conic;
 pub mod design;
-pub mod dyad;
+pub mod engine;
 pub mod error;
 pub mod example;
-pub mod filemon;
-pub mod fourbar;
-mod geom;
-pub mod sweep;
-pub mod task;
+pub mod geom;
+pub mod linkage;
+pub mod synthesis;
+pub mod tolerance;
 
-pub use conic::{Conic, ConicKind, Line, Viewport};
 pub use design::{
-    Constraints, DesignLimits, InputRequirement, LinkageFigures, MapContext, Pivot, SolutionMap,
-    Varying,
+    Constraints, DesignLimits, InputRequirement, MapContext, Pivot, RankBy, SolutionMap, Varying,
 };
-pub use dyad::{Dyad, SynthesizedFourBar};
+pub use engine::Control;
 pub use error::{AssemblyError, DegenerateError, Error, InvalidInput, Result};
-pub use filemon::{Branch, Filemon, Method};
-pub use fourbar::{
-    AngleInterval, AssemblyMode, Configuration, FourBar, Grashof, InputRange, Joints,
+pub use geom::{CircleOrLine, Conic, ConicKind, Grid, Line, PerPose, Pose, Similarity, Viewport};
+pub use linkage::{
+    AngleInterval, AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, Joints,
+    LinkageFigures,
 };
 pub use nalgebra::{Point2, Vector2};
-pub use sweep::Grid;
-pub use task::{CircleOrLine, Pose, Similarity, Task};
+pub use synthesis::three::{Cremona, Filemon, Method};
+pub use synthesis::{Branch, Dyad, FilemonLines, Motion, Pole, SynthesizedFourBar, Task};
 
 /// The README's Rust examples, compiled and run as doctests.
 #[cfg(doctest)]

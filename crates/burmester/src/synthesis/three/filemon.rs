@@ -1,30 +1,16 @@
-//! Filemon's construction and its exact transform into the driving crank's
-//! center-point plane (Borm & Kim): the branch problem solved for the
-//! driving crank's fixed pivot.
+//! Filemon's construction for three poses and its exact transform into the
+//! driving crank's center-point plane (Borm & Kim): the branch problem
+//! solved for the driving crank's fixed pivot.
 //!
-//! # Filemon's construction (circle-point plane)
-//!
-//! For the driven dyad `(C0, C1)`, `C'_k = D_k1(C0)` is the driven crank's
-//! fixed pivot seen from the coupler frame of pose 1 while at pose `k`
-//! (`C'_1 = C0`). The three lines through `C1` and `C'_k` split the
-//! circle-point plane into six sectors, and the branch sign of a driving
-//! circle point `A1` at pose `k` is
-//!
-//! ```text
-//! s_k = sign cross(C'_k - C1, A1 - C1)
-//! ```
-//!
-//! The branch-free circle points are the two opposite sectors where the three
-//! signs agree, bounded by the two **extreme** lines: the **Filemon lines**.
-//! (Which pose gives the middle line varies with the task.) If the
-//! directions `C'_k - C1` do not lie in an open half-plane, every driving
-//! circle point has a branch defect ([`Filemon::all_defective`]).
+//! The construction itself (one line per pose through `C1`, the extreme
+//! lines, the branch signs) holds for any number of poses and lives in
+//! [`FilemonLines`]; this module adds what three poses allow.
 //!
 //! # The transformed curves (center-point plane)
 //!
 //! For the line through `C1` with direction `d`, `f(X) = cross(d, X - C1)`;
 //! substituting the circle point `X(Y)` of a center point `Y` (see
-//! [`crate::task`]) and multiplying by `den` gives an exact quadratic:
+//! [`Cremona`]) and multiplying by `den` gives an exact quadratic:
 //!
 //! ```text
 //! g(Y) = cross(d, P12 - C1) den(Y) + cross(d, u(Y)) kappa(Y)
@@ -37,15 +23,18 @@
 //! circle, where the circle point is at infinity, splits nothing: `den`
 //! cancels. The coefficients come from this closed form, not from samples.
 
+use core::f64::consts::{FRAC_PI_8, TAU};
 use core::str::FromStr;
 
 use nalgebra::{Matrix2, Point2, Vector2};
 
-use crate::conic::{Conic, Line};
-use crate::dyad::{Dyad, SynthesizedFourBar};
-use crate::error::{InvalidInput, Result};
-use crate::geom::{cross, normalized};
-use crate::task::Task;
+use crate::error::{InvalidInput, Result, finite_point};
+use crate::geom::{Conic, Line, cross, normalized, wrap_angle};
+use crate::linkage::{AngleInterval, InputRange};
+use crate::synthesis::branch::{Branch, FilemonLines};
+use crate::synthesis::three::Cremona;
+use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
+use crate::tolerance;
 
 /// How to decide whether a driving center point is free of the branch defect.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -57,9 +46,14 @@ pub enum Method {
     /// The circle point of the point, then the branch sign at the three
     /// poses.
     Direct,
-    /// Build the four-bar, run the position analysis at the three input
-    /// angles in pose 1's assembly mode, and check that it lands on poses 2
-    /// and 3.
+    /// Build the four-bar and drive it: from each pose to the next, the
+    /// input turns (either way, reversing between poses as needed) inside
+    /// its input range in pose 1's assembly mode, in steps of at most
+    /// `pi/8`, every step solved by the position analysis, and the coupler
+    /// must land on the pose. Free when every pose is reached without a
+    /// dead position. Besides the branch defect this also sees the circuit
+    /// defect of a Grashof double-rocker (poses on both arcs of its input),
+    /// which the sign tests cannot.
     Simulate,
 }
 
@@ -87,45 +81,6 @@ impl FromStr for Method {
                 expected: "\"conic\", \"direct\" or \"simulate\"",
                 found: s.to_owned(),
             }),
-        }
-    }
-}
-
-/// The branch class of a driving center point (or circle point).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Branch {
-    /// The linkage passes the three poses in one assembly mode.
-    Free,
-    /// The linkage passes the poses on different branches (a branch defect).
-    Defective,
-    /// On a boundary: a branch sign is zero (a toggle at a design pose), or
-    /// the point lies on a transformed Filemon conic. Never counted as free.
-    Boundary,
-}
-
-impl Branch {
-    /// Whether the class is [`Branch::Free`].
-    pub fn is_free(self) -> bool {
-        self == Branch::Free
-    }
-
-    /// `"free"`, `"defective"` or `"boundary"`.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Branch::Free => "free",
-            Branch::Defective => "defective",
-            Branch::Boundary => "boundary",
-        }
-    }
-
-    /// The class from three branch signs.
-    fn from_signs(s: [f64; 3]) -> Self {
-        if s.iter().any(|&v| v == 0.0 || v.is_nan()) {
-            Branch::Boundary
-        } else if (s[0] > 0.0) == (s[1] > 0.0) && (s[1] > 0.0) == (s[2] > 0.0) {
-            Branch::Free
-        } else {
-            Branch::Defective
         }
     }
 }
@@ -162,17 +117,13 @@ fn rot_neg((c, s): (f64, f64)) -> Matrix2<f64> {
     Matrix2::new(c, s, -s, c)
 }
 
-/// Filemon's construction for a driven dyad, with the transformed lines.
+/// Filemon's construction for a driven dyad of a three-pose task, with the
+/// transformed lines.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Filemon {
     task: Task,
-    driven: Dyad,
-    /// `C'_k = D_k1(C0)`.
-    c_prime: [Point2<f64>; 3],
-    /// Pose indices (0-based) sorted by the angle of `C'_k - C1` within
-    /// their half-plane: first and last are the extremes. `None` when they
-    /// do not lie in an open half-plane.
-    order: Option<[usize; 3]>,
+    cremona: Cremona,
+    lines: FilemonLines,
     /// The transformed line of each pose's direction, `g_k`.
     conics: [Conic; 3],
 }
@@ -186,19 +137,21 @@ impl Task {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] for a non-finite point or a zero or non-finite direction.
+    /// [`InvalidInput::NotFinite`] for a non-finite point,
+    /// [`InvalidInput::ZeroDirection`] for a zero or non-finite direction,
+    /// [`InvalidInput::NeedsPoses`] for a task of four or five poses.
     pub fn line_to_conic(&self, line: &Line) -> Result<Conic> {
-        crate::error::finite("line point x", line.point.x)?;
-        crate::error::finite("line point y", line.point.y)?;
+        let cremona = self.three_poses("Task::line_to_conic")?;
+        finite_point(["line point x", "line point y"], line.point)?;
         if normalized(line.direction).is_none() {
-            return Err(InvalidInput::OutOfRange {
+            return Err(InvalidInput::ZeroDirection {
                 name: "line direction",
-                expected: "must be a finite, non-zero vector",
-                found: format!("({}, {})", line.direction.x, line.direction.y),
+                x: line.direction.x,
+                y: line.direction.y,
             }
             .into());
         }
-        Ok(line_conic(self, line.point, line.direction))
+        Ok(line_conic(cremona, line.point, line.direction))
     }
 
     /// Filemon's construction for the driven dyad whose center point is
@@ -206,54 +159,37 @@ impl Task {
     ///
     /// # Errors
     ///
-    /// As [`Task::circle_point`] (the driven center point must be off the
-    /// pole circle and the poles); [`crate::DegenerateError::ZeroLengthLink`]
-    /// when its circle point coincides with it.
+    /// [`InvalidInput::NeedsPoses`] for a task of four or five poses; as
+    /// [`Task::circle_point`] (the driven center point must be off the pole
+    /// circle and the poles); as [`Filemon::new`].
     pub fn filemon(&self, driven_center: Point2<f64>) -> Result<Filemon> {
+        self.three_poses("Task::filemon")?;
         let driven = self.dyad_from_center(driven_center)?;
         Filemon::new(self, driven)
+    }
+
+    /// The three-position maps, or the error naming `method`.
+    pub(crate) fn three_poses(&self, method: &'static str) -> Result<&Cremona> {
+        self.cremona().map_err(|_| self.needs(3, method))
     }
 }
 
 impl Filemon {
-    /// Filemon's construction for a driven dyad of `task`.
+    /// Filemon's construction for a driven dyad of a three-pose `task`.
     ///
     /// # Errors
     ///
-    /// [`crate::DegenerateError::ZeroLengthLink`] when the dyad has no
-    /// length; [`InvalidInput::OutOfRange`] when an image `C'_k` of its
-    /// fixed pivot overflows or coincides with its circle point.
+    /// [`InvalidInput::NeedsPoses`] for a task of four or five poses; as
+    /// [`FilemonLines::new`].
     pub fn new(task: &Task, driven: Dyad) -> Result<Self> {
-        if driven.length() <= Task::POINT_TOLERANCE * task.scale() {
-            return Err(crate::DegenerateError::ZeroLengthLink {
-                what: "driven crank",
-                x: driven.center.x,
-                y: driven.center.y,
-            }
-            .into());
-        }
+        let cremona = *task.three_poses("Filemon::new")?;
+        let lines = FilemonLines::new(task, driven)?;
         let c1 = driven.circle;
-        let c_prime = [1, 2, 3].map(|k| task.displace(driven.center, k, 1));
-        let dirs = c_prime.map(|c| c - c1);
-        if dirs.iter().any(|d| normalized(*d).is_none()) {
-            return Err(InvalidInput::OutOfRange {
-                name: "driven dyad",
-                expected: "must have its fixed pivot's images C'k = D_k1(C0) finite and apart \
-                           from its circle point C1; choose a driven center point nearer the task",
-                found: format!(
-                    "C0 = ({}, {}), C1 = ({}, {})",
-                    driven.center.x, driven.center.y, c1.x, c1.y
-                ),
-            }
-            .into());
-        }
-        let order = half_plane_order(&dirs);
-        let conics = dirs.map(|d| line_conic(task, c1, d));
+        let conics = [0, 1, 2].map(|k| line_conic(&cremona, c1, lines.all_lines()[k].direction));
         Ok(Filemon {
             task: *task,
-            driven,
-            c_prime,
-            order,
+            cremona,
+            lines,
             conics,
         })
     }
@@ -263,80 +199,109 @@ impl Filemon {
         &self.task
     }
 
-    /// The driven dyad `(C0, C1)`.
-    pub fn driven(&self) -> Dyad {
-        self.driven
+    /// The task's three-position maps.
+    pub fn cremona(&self) -> &Cremona {
+        &self.cremona
     }
 
-    /// `C1`, the driven crank's circle point.
-    pub fn circle_point(&self) -> Point2<f64> {
-        self.driven.circle
+    /// The construction in the circle-point plane (lines, extremes, signs).
+    pub fn construction(&self) -> &FilemonLines {
+        &self.lines
+    }
+
+    /// The driven dyad `(C0, C1)`.
+    pub fn driven(&self) -> Dyad {
+        self.lines.driven()
+    }
+
+    /// `C1`, the driven crank's circle point (moving pivot at pose 1).
+    pub fn driven_circle(&self) -> Point2<f64> {
+        self.lines.driven().circle
     }
 
     /// `[C'_1, C'_2, C'_3]`, `C'_k = D_k1(C0)`.
     pub fn fixed_pivot_images(&self) -> [Point2<f64>; 3] {
-        self.c_prime
+        let c = self.lines.fixed_pivot_images();
+        [c[0], c[1], c[2]]
     }
 
     /// The three lines through `C1` and `C'_k`, directions `C'_k - C1`.
     pub fn all_lines(&self) -> [Line; 3] {
-        self.c_prime.map(|c| Line {
-            point: self.driven.circle,
-            direction: c - self.driven.circle,
-        })
+        let l = self.lines.all_lines();
+        [l[0], l[1], l[2]]
     }
 
     /// Whether every driving circle point has a branch defect (the
     /// directions `C'_k - C1` do not lie in an open half-plane).
     pub fn all_defective(&self) -> bool {
-        self.order.is_none()
+        self.lines.all_defective()
     }
 
     /// The poses (1-based) whose lines are the extreme ones (the Filemon
     /// lines), and the middle pose; `None` when all are defective.
     pub fn extreme_poses(&self) -> Option<([usize; 2], usize)> {
-        self.order.map(|o| ([o[0] + 1, o[2] + 1], o[1] + 1))
+        self.lines.pose_order().map(|o| ([o[0], o[2]], o[1]))
     }
 
     /// The two Filemon lines (through `C1`, directions `C'_k - C1` of the
     /// extreme poses); `None` when all are defective.
     pub fn lines(&self) -> Option<[Line; 2]> {
-        let all = self.all_lines();
-        self.order.map(|o| [all[o[0]], all[o[2]]])
+        self.lines.lines()
     }
 
     /// The two transformed Filemon conics in the center-point plane;
     /// `None` when all are defective.
     pub fn conics(&self) -> Option<[Conic; 2]> {
-        self.order.map(|o| [self.conics[o[0]], self.conics[o[2]]])
+        self.lines
+            .extreme_poses()
+            .map(|[a, b]| [self.conics[a - 1], self.conics[b - 1]])
     }
 
     /// The transformed line of pose `k`'s direction (1-based), for any of
     /// the three lines.
     ///
-    /// # Panics
+    /// # Errors
     ///
-    /// If `k` is not 1, 2 or 3.
-    pub fn line_conic(&self, k: usize) -> Conic {
-        self.conics[k - 1]
+    /// [`InvalidInput::PoseIndex`] when `k` is not 1, 2 or 3.
+    pub fn line_conic(&self, k: usize) -> Result<Conic> {
+        Ok(self.conics[self.task.motion().index(k)?])
     }
 
     /// The branch signs `cross(C'_k - C1, A1 - C1)` of a driving circle point.
-    pub fn circle_signs(&self, a1: Point2<f64>) -> [f64; 3] {
-        let c1 = self.driven.circle;
-        self.c_prime.map(|c| cross(c - c1, a1 - c1))
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotFinite`] for a non-finite point.
+    pub fn circle_signs(&self, a1: Point2<f64>) -> Result<[f64; 3]> {
+        finite_point(["circle point x", "circle point y"], a1)?;
+        let s = self.lines.circle_signs(a1);
+        Ok([s[0], s[1], s[2]])
     }
 
     /// The branch class of a driving circle point `A1` (Filemon's test in
     /// the circle-point plane).
-    pub fn classify_circle_point(&self, a1: Point2<f64>) -> Branch {
-        Branch::from_signs(self.circle_signs(a1))
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotFinite`] for a non-finite point.
+    pub fn classify_circle_point(&self, a1: Point2<f64>) -> Result<Branch> {
+        finite_point(["circle point x", "circle point y"], a1)?;
+        Ok(self.lines.classify_circle_point(a1))
     }
 
     /// The values of the two transformed Filemon conics at a driving center
     /// point (`None` when all are defective). Their product is positive
     /// exactly where the point is branch-free.
-    pub fn conic_values(&self, a0: Point2<f64>) -> Option<[f64; 2]> {
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotFinite`] for a non-finite point.
+    pub fn conic_values(&self, a0: Point2<f64>) -> Result<Option<[f64; 2]>> {
+        finite_point(["driving center x", "driving center y"], a0)?;
+        Ok(self.values(a0))
+    }
+
+    fn values(&self, a0: Point2<f64>) -> Option<[f64; 2]> {
         self.conics().map(|[a, b]| [a.evaluate(a0), b.evaluate(a0)])
     }
 
@@ -346,7 +311,7 @@ impl Filemon {
     /// [`Branch::Free`] (the branch map is `false` everywhere then).
     ///
     /// With [`Method::Conic`], a point where a conic value is zero, or
-    /// within [`Task::POINT_TOLERANCE`] of a pole or of `C0` (where all the
+    /// within [`tolerance::POINT`] of a pole or of `C0` (where all the
     /// curves meet), is [`Branch::Boundary`]; the pole circle needs no
     /// special case.
     ///
@@ -362,14 +327,17 @@ impl Filemon {
     ///           exactly zero or within 1e-12 of P12, P13, P23, C0
     /// direct    agrees with conic farther than 1e-9 from the curves and the
     ///           pole circle (the circle point's rounding grows near both)
-    /// simulate  agrees with direct where it is not Boundary; a pose counts as
-    ///           reached within 1e-7 of the linkage's size and 1e-7 rad
+    /// simulate  agrees with direct farther than 1e-9 from the curves and the
+    ///           pole circle, except that it also reports the circuit defect of
+    ///           a double-rocker input; a pose counts as reached within 1e-7
+    ///           task sizes and 1e-7 rad (tolerance::REACH)
     /// ```
     ///
     /// Inside a band a point may be classified either way. The conic band
     /// is checked against an exact rational evaluation of the closed form
     /// (the signs were exact beyond `5e-16 (1 + R)^2` in those runs), the
-    /// others against each other, in the crate's tests.
+    /// others against each other and against driving the linkage densely,
+    /// in the crate's tests.
     ///
     /// # Errors
     ///
@@ -378,13 +346,12 @@ impl Filemon {
     /// [`crate::DegenerateError`]); [`Method::Simulate`] also where a link
     /// has zero length. A non-finite point is [`InvalidInput::NotFinite`].
     pub fn classify(&self, a0: Point2<f64>, method: Method) -> Result<Branch> {
-        crate::error::finite("driving center x", a0.x)?;
-        crate::error::finite("driving center y", a0.y)?;
+        finite_point(["driving center x", "driving center y"], a0)?;
         let b = match method {
             Method::Conic => self.classify_conic(a0),
             Method::Direct => {
-                let a1 = self.task.circle_point(a0)?;
-                self.classify_circle_point(a1)
+                let a1 = self.cremona.circle_point(a0)?;
+                self.lines.classify_circle_point(a1)
             }
             Method::Simulate => self.classify_simulate(a0)?,
         };
@@ -410,14 +377,14 @@ impl Filemon {
     /// The points every transformed curve passes through: `P12, P13, P23`
     /// and `C0`.
     pub fn special_points(&self) -> [Point2<f64>; 4] {
-        let [a, b, c] = self.task.poles();
-        [a, b, c, self.driven.center]
+        let [a, b, c] = self.cremona.poles();
+        [a, b, c, self.driven().center]
     }
 
-    /// Whether `p` is within [`Task::POINT_TOLERANCE`] (relative to the
-    /// task's size) of a pole or of `C0`, where all the conics meet.
+    /// Whether `p` is within [`tolerance::POINT`] (relative to the task's
+    /// size) of a pole or of `C0`, where all the conics meet.
     pub(crate) fn at_special_point(&self, p: Point2<f64>) -> bool {
-        let tol = Task::POINT_TOLERANCE * self.task.scale();
+        let tol = tolerance::POINT * self.task.scale();
         self.special_points()
             .iter()
             .any(|q| (q.x - p.x).abs() <= tol && (q.y - p.y).abs() <= tol)
@@ -427,7 +394,7 @@ impl Filemon {
         if self.at_special_point(a0) {
             return Branch::Boundary;
         }
-        match self.conic_values(a0) {
+        match self.values(a0) {
             None => Branch::Defective,
             // Signs, not the product `a * b`, which underflows to zero for
             // two tiny values (the sweep tests signs too).
@@ -443,27 +410,39 @@ impl Filemon {
         }
     }
 
+    /// Drives the linkage from pose to pose ([`Method::Simulate`]).
     fn classify_simulate(&self, a0: Point2<f64>) -> Result<Branch> {
         let fb = self.four_bar(a0)?;
-        let Some(mode) = fb.modes[0] else {
+        let modes = fb.modes();
+        let Some(mode) = modes[0] else {
             return Ok(Branch::Boundary);
         };
+        let range = fb.fourbar.input_range();
         let poses = self.task.poses();
-        let size = fb.fourbar.lengths().iter().sum::<f64>()
-            + (poses[0].position - fb.driving.circle).norm();
+        let reach = tolerance::REACH * self.task.scale();
         for (k, want) in poses.iter().enumerate().skip(1) {
-            let theta2 = fb.input_angles[k];
-            let c = match fb.fourbar.solve(theta2, mode) {
-                Ok(c) => c,
-                Err(_) => return Ok(Branch::Defective),
+            let (from, to) = (fb.input_angles[k - 1], fb.input_angles[k]);
+            let Some(path) = input_path(&range, from, to) else {
+                // Not on the arc the input is on: a circuit defect (or a
+                // pose within rounding of a dead position).
+                return Ok(Branch::Defective);
             };
-            if c.toggle {
-                return Ok(Branch::Boundary);
+            let steps = (path.abs() / FRAC_PI_8).ceil().max(1.0) as usize;
+            for s in 1..=steps {
+                let theta = from + path * (s as f64 / steps as f64);
+                let c = match fb.fourbar.solve(theta, mode) {
+                    Ok(c) => c,
+                    Err(_) => return Ok(Branch::Defective),
+                };
+                if c.toggle {
+                    // A dead position on the way, or a toggle at the pose.
+                    return Ok(Branch::Boundary);
+                }
             }
-            let pose = fb.pose_at(theta2, mode)?;
+            let pose = fb.pose_at(to, mode)?;
             let dp = (pose.position - want.position).norm();
-            let da = crate::geom::wrap_angle(pose.angle - want.angle).abs();
-            if dp > 1e-7 * size || da > 1e-7 {
+            let da = wrap_angle(pose.angle - want.angle).abs();
+            if !(dp <= reach && da <= tolerance::REACH) {
                 return Ok(Branch::Defective);
             }
         }
@@ -478,42 +457,31 @@ impl Filemon {
     /// As [`Task::circle_point`] and [`Task::four_bar`].
     pub fn four_bar(&self, driving_center: Point2<f64>) -> Result<SynthesizedFourBar> {
         let driving = self.task.dyad_from_center(driving_center)?;
-        self.task.four_bar(&driving, &self.driven)
+        self.task.four_bar(&driving, &self.driven())
     }
 }
 
-/// The order of three directions by angle when they lie in an open
-/// half-plane (extremes first and last), else `None`.
-fn half_plane_order(d: &[Vector2<f64>; 3]) -> Option<[usize; 3]> {
-    use core::f64::consts::{PI, TAU};
-    let ang = d.map(|v| v.y.atan2(v.x));
-    let mut idx = [0usize, 1, 2];
-    idx.sort_by(|&a, &b| ang[a].total_cmp(&ang[b]));
-    // Circular gaps between consecutive angles; the directions lie in an
-    // open half-plane iff the largest gap exceeds pi. The extremes are the
-    // two angles bounding that gap.
-    let gaps = [
-        ang[idx[1]] - ang[idx[0]],
-        ang[idx[2]] - ang[idx[1]],
-        ang[idx[0]] + TAU - ang[idx[2]],
-    ];
-    let (k, &gap) = gaps
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .unwrap_or((0, &0.0));
-    if gap <= PI {
-        return None;
+/// The signed angle the input turns from `from` to `to` without leaving its
+/// input range (either way round for an input that turns fully: the
+/// shorter), or `None` when `to` is not on the arc `from` is on.
+fn input_path(range: &InputRange, from: f64, to: f64) -> Option<f64> {
+    let within = |a: &AngleInterval| {
+        let (of, ot) = (
+            (from - a.start).rem_euclid(TAU),
+            (to - a.start).rem_euclid(TAU),
+        );
+        (of <= a.span() && ot <= a.span()).then_some(ot - of)
+    };
+    match range {
+        InputRange::Full => Some(wrap_angle(to - from)),
+        InputRange::Arc(a) => within(a),
+        InputRange::TwoArcs(a, b) => within(a).or_else(|| within(b)),
     }
-    // The gap runs from idx[k] to idx[k+1]; the run of directions starts
-    // after it.
-    let start = (k + 1) % 3;
-    Some([idx[start], idx[(start + 1) % 3], idx[(start + 2) % 3]])
 }
 
 /// The exact transform of the line through `c1` with direction `d` into the
 /// center-point plane, as a conic in the task's local frame.
-fn line_conic(task: &Task, c1: Point2<f64>, d: Vector2<f64>) -> Conic {
+fn line_conic(task: &Cremona, c1: Point2<f64>, d: Vector2<f64>) -> Conic {
     let (origin, scale) = task.frame();
     let q13 = task.local_p13();
     let (h12, h13) = task.half_angles();
@@ -551,19 +519,22 @@ mod tests {
     use super::*;
 
     #[test]
-    fn half_plane_order_finds_the_extremes() {
-        let v = |a: f64| Vector2::new(a.cos(), a.sin());
-        assert_eq!(half_plane_order(&[v(0.1), v(0.5), v(0.3)]), Some([0, 2, 1]));
-        assert_eq!(
-            half_plane_order(&[v(3.0), v(-3.0), v(2.5)]),
-            Some([2, 0, 1])
-        );
-        assert_eq!(half_plane_order(&[v(0.0), v(2.2), v(-2.2)]), None);
-    }
-
-    #[test]
     fn methods_parse() {
         assert_eq!("Direct".parse::<Method>().unwrap(), Method::Direct);
         assert!("exact".parse::<Method>().is_err());
+    }
+
+    #[test]
+    fn paths_stay_in_the_input_range() {
+        let arc = AngleInterval {
+            start: 3.0,
+            end: 5.0,
+        };
+        let r = InputRange::Arc(arc);
+        assert!((input_path(&r, 3.5, 4.5).unwrap() - 1.0).abs() < 1e-15);
+        assert!((input_path(&r, 4.5 - TAU, 3.5).unwrap() + 1.0).abs() < 1e-12);
+        assert_eq!(input_path(&r, 3.5, 0.0), None);
+        let full = input_path(&InputRange::Full, 3.0, -3.0).unwrap();
+        assert!((full - (TAU - 6.0)).abs() < 1e-12);
     }
 }

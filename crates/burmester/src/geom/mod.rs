@@ -1,5 +1,19 @@
-//! Small planar helpers shared by the modules: points are read as complex
-//! numbers `z = x + iy` (see the conventions in the crate docs).
+//! Plane geometry: poses and similarity transforms, lines and circles,
+//! conics, viewports and grids; and the small planar helpers shared by the
+//! modules (points are read as complex numbers `z = x + iy`, see the
+//! conventions in the crate docs).
+
+pub mod conic;
+pub mod cubic;
+mod grid;
+mod line;
+mod pose;
+
+pub use conic::{Conic, ConicKind};
+pub use cubic::Cubic;
+pub use grid::{Grid, Viewport};
+pub use line::{CircleOrLine, Line};
+pub use pose::{MAX_POSES, PerPose, Pose, Similarity};
 
 use nalgebra::{Point2, Vector2};
 
@@ -77,7 +91,6 @@ pub(crate) fn point_is_finite(p: &Point2<f64>) -> bool {
 mod tests {
     use super::*;
     use core::f64::consts::PI;
-
     #[test]
     fn wrap_is_half_open() {
         assert_eq!(wrap_angle(PI), PI);

@@ -1,11 +1,21 @@
-//! `burmester.FourBar` and `burmester.Configuration`.
+//! `burmester.FourBar`, `burmester.Configuration` and
+//! `burmester.LinkageFigures` (the core's `linkage`).
+//!
+//! The naming rule of the whole package: a **property** is a value the
+//! object holds or derives without arguments and without failing; anything
+//! that takes an argument, can fail, or does real work is a **method**.
 
-use burmester::{AssemblyMode, Configuration, FourBar, InputRange, Point2};
+use burmester::{
+    AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, LinkageFigures, PerPose,
+    Point2,
+};
 use numpy::PyArrayDyn;
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
 
 use crate::conv::{FloatArray, PyPoint, Real, pt, to_numpy};
-use crate::errors::IntoPy;
+use crate::errors::{IntoPy, invalid};
 
 /// Parses `"open"` / `"crossed"`.
 pub(crate) fn mode(s: &str) -> PyResult<AssemblyMode> {
@@ -34,16 +44,35 @@ type Arrays<'py> = (
 #[pymethods]
 impl PyFourBar {
     #[new]
-    #[pyo3(signature = (ground, crank, coupler, rocker, *, origin = PyPoint(Point2::origin()), ground_angle = Real(0.0)),
-        text_signature = "(ground, crank, coupler, rocker, *, origin=(0.0, 0.0), ground_angle=0.0)")]
+    #[pyo3(signature = (*args, ground = None, crank = None, coupler = None, rocker = None,
+        origin = PyPoint(Point2::origin()), ground_angle = Real(0.0)),
+        text_signature = "(*, ground, crank, coupler, rocker, origin=(0.0, 0.0), ground_angle=0.0)")]
+    #[allow(clippy::too_many_arguments)]
     fn new(
-        ground: Real,
-        crank: Real,
-        coupler: Real,
-        rocker: Real,
+        args: &Bound<'_, PyTuple>,
+        ground: Option<Real>,
+        crank: Option<Real>,
+        coupler: Option<Real>,
+        rocker: Option<Real>,
         origin: PyPoint,
         ground_angle: Real,
     ) -> PyResult<Self> {
+        if !args.is_empty() {
+            return Err(PyTypeError::new_err(format!(
+                "FourBar takes its lengths by name, got {} positional arguments: pass \
+                 FourBar(ground=..., crank=..., coupler=..., rocker=...) (books order the four \
+                 links differently)",
+                args.len()
+            )));
+        }
+        let (Some(ground), Some(crank), Some(coupler), Some(rocker)) =
+            (ground, crank, coupler, rocker)
+        else {
+            return Err(PyTypeError::new_err(
+                "FourBar needs all four lengths: FourBar(ground=..., crank=..., coupler=..., \
+                 rocker=...)",
+            ));
+        };
         FourBar::placed(
             ground.0,
             crank.0,
@@ -54,6 +83,18 @@ impl PyFourBar {
         )
         .map(Self::from)
         .py()
+    }
+
+    fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<((), Bound<'py, PyDict>)> {
+        let f = &self.inner;
+        let kw = PyDict::new(py);
+        kw.set_item("ground", f.ground())?;
+        kw.set_item("crank", f.crank())?;
+        kw.set_item("coupler", f.coupler())?;
+        kw.set_item("rocker", f.rocker())?;
+        kw.set_item("origin", pt(f.input_pivot()))?;
+        kw.set_item("ground_angle", f.ground_angle())?;
+        Ok(((), kw))
     }
 
     #[staticmethod]
@@ -103,6 +144,7 @@ impl PyFourBar {
         self.inner.ground_angle()
     }
 
+    #[getter]
     fn link_ratio(&self) -> f64 {
         self.inner.link_ratio()
     }
@@ -116,7 +158,10 @@ impl PyFourBar {
     #[pyo3(signature = (theta2, mode = "open"))]
     fn configuration(&self, theta2: Real, mode: &str) -> PyResult<PyConfiguration> {
         let c = self.inner.solve(theta2.0, self::mode(mode)?).py()?;
-        Ok(PyConfiguration { inner: c })
+        Ok(PyConfiguration {
+            inner: c,
+            fourbar: self.inner,
+        })
     }
 
     #[pyo3(signature = (theta2s, mode = "open"))]
@@ -146,15 +191,18 @@ impl PyFourBar {
         ))
     }
 
+    #[getter]
     fn grashof(&self) -> &'static str {
         self.inner.grashof().as_str()
     }
 
+    #[getter]
     fn input_turns_fully(&self) -> bool {
         self.inner.input_turns_fully()
     }
 
     /// `None` when the input turns fully, else a list of `(start, end)` arcs.
+    #[getter]
     fn input_range(&self) -> Option<Vec<(f64, f64)>> {
         match self.inner.input_range() {
             InputRange::Full => None,
@@ -165,6 +213,7 @@ impl PyFourBar {
         }
     }
 
+    #[getter]
     fn dead_positions(&self) -> Vec<f64> {
         self.inner.input_range().dead_positions()
     }
@@ -248,11 +297,12 @@ impl PyFourBar {
         let [l1, l2, l3, l4] = self.inner.lengths();
         let o = self.inner.input_pivot();
         let a = self.inner.ground_angle();
+        let lengths = format!("ground={l1:?}, crank={l2:?}, coupler={l3:?}, rocker={l4:?}");
         if o == Point2::origin() && a == 0.0 {
-            format!("FourBar({l1:?}, {l2:?}, {l3:?}, {l4:?})")
+            format!("FourBar({lengths})")
         } else {
             format!(
-                "FourBar({l1:?}, {l2:?}, {l3:?}, {l4:?}, origin=({:?}, {:?}), ground_angle={a:?})",
+                "FourBar({lengths}, origin=({:?}, {:?}), ground_angle={a:?})",
                 o.x, o.y
             )
         }
@@ -271,6 +321,8 @@ impl PyFourBar {
 #[derive(Clone)]
 pub struct PyConfiguration {
     pub(crate) inner: Configuration,
+    /// The linkage it is a position of (for pickling).
+    fourbar: FourBar,
 }
 
 #[pymethods]
@@ -312,6 +364,160 @@ impl PyConfiguration {
             c.theta4,
             c.mode.as_str(),
             if c.toggle { "True" } else { "False" }
+        )
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<PyConfiguration>()
+            .map(|o| o.get().inner == self.inner && o.get().fourbar == self.fourbar)
+            .unwrap_or(false)
+    }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, (f64, &'static str))> {
+        let fb = Bound::new(py, PyFourBar::from(self.fourbar))?;
+        Ok((
+            fb.getattr("configuration")?,
+            (self.inner.theta2, self.inner.mode.as_str()),
+        ))
+    }
+}
+
+/// What a designer checks of one linkage that must pass a task's poses.
+#[pyclass(frozen, eq, name = "LinkageFigures", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub struct PyLinkageFigures {
+    pub(crate) inner: LinkageFigures,
+}
+
+type Modes = Vec<Option<&'static str>>;
+
+#[pymethods]
+impl PyLinkageFigures {
+    /// Rebuilds figures from their fields (for pickling).
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn _from_fields(
+        lengths: [f64; 4],
+        grashof: &str,
+        input_full: bool,
+        modes: Vec<Option<String>>,
+        direction: &str,
+        one_circuit: bool,
+        min_transmission: f64,
+        link_ratio: f64,
+    ) -> PyResult<Self> {
+        let grashof = Grashof::ALL
+            .into_iter()
+            .find(|g| g.as_str() == grashof)
+            .ok_or_else(|| invalid("unknown_name", format!("unknown Grashof type {grashof:?}")))?;
+        let direction = Direction::ALL
+            .into_iter()
+            .find(|d| d.as_str() == direction)
+            .ok_or_else(|| invalid("unknown_name", format!("unknown direction {direction:?}")))?;
+        let modes = modes
+            .iter()
+            .map(|m| m.as_deref().map(mode).transpose())
+            .collect::<PyResult<Vec<_>>>()?;
+        if !(1..=burmester::geom::MAX_POSES).contains(&modes.len()) {
+            return Err(invalid("count_out_of_range", "figures need 1 to 5 modes"));
+        }
+        Ok(PyLinkageFigures {
+            inner: LinkageFigures {
+                lengths,
+                grashof,
+                input_full,
+                modes: PerPose::from_slice(&modes),
+                direction,
+                one_circuit,
+                min_transmission,
+                link_ratio,
+            },
+        })
+    }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let f = &self.inner;
+        let args = (
+            f.lengths,
+            f.grashof.as_str(),
+            f.input_full,
+            self.modes(),
+            f.direction.as_str(),
+            f.one_circuit,
+            f.min_transmission,
+            f.link_ratio,
+        )
+            .into_pyobject(py)?;
+        Ok((
+            py.get_type::<PyLinkageFigures>().getattr("_from_fields")?,
+            args,
+        ))
+    }
+
+    /// `(ground, crank, coupler, rocker)`.
+    #[getter]
+    fn lengths(&self) -> (f64, f64, f64, f64) {
+        let [a, b, c, d] = self.inner.lengths;
+        (a, b, c, d)
+    }
+    #[getter]
+    fn grashof(&self) -> &'static str {
+        self.inner.grashof.as_str()
+    }
+    #[getter]
+    fn input_full(&self) -> bool {
+        self.inner.input_full
+    }
+    #[getter]
+    fn modes(&self) -> Modes {
+        self.inner
+            .modes
+            .iter()
+            .map(|m| m.map(|m| m.as_str()))
+            .collect()
+    }
+    #[getter]
+    fn direction(&self) -> &'static str {
+        self.inner.direction.as_str()
+    }
+    #[getter]
+    fn one_circuit(&self) -> bool {
+        self.inner.one_circuit
+    }
+    #[getter]
+    fn min_transmission_deg(&self) -> Option<f64> {
+        let t = self.inner.min_transmission;
+        (!t.is_nan()).then(|| t.to_degrees())
+    }
+    #[getter]
+    fn link_ratio(&self) -> f64 {
+        self.inner.link_ratio
+    }
+    #[getter]
+    fn branch_free(&self) -> bool {
+        self.inner.branch_free()
+    }
+    #[getter]
+    fn feasible(&self) -> bool {
+        self.inner.feasible()
+    }
+    fn __repr__(&self) -> String {
+        let f = &self.inner;
+        format!(
+            "<LinkageFigures {} direction={} branch_free={} min_transmission_deg={} link_ratio={:.3}>",
+            f.grashof,
+            f.direction,
+            if f.branch_free() { "True" } else { "False" },
+            self.min_transmission_deg()
+                .map_or("None".to_owned(), |t| format!("{t:.3}")),
+            f.link_ratio
         )
     }
 }

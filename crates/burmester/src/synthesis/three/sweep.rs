@@ -1,19 +1,6 @@
 //! The dense grid branch sweep: classify every candidate driving fixed
 //! pivot on a grid over the center-point plane.
 //!
-//! # The grid
-//!
-//! Over a [`Viewport`] `(xmin, xmax, ymin, ymax)` with `nx` by `ny` samples
-//! at cell centers,
-//!
-//! ```text
-//! x_i = xmin + (i + 0.5) dx,   dx = (xmax - xmin) / nx
-//! y_j = ymin + (j + 0.5) dy,   dy = (ymax - ymin) / ny
-//! ```
-//!
-//! stored row-major, row `j` for `y_j` (so `imshow(map, origin="lower")`
-//! shows it the right way up).
-//!
 //! # The `conic` method, fast
 //!
 //! Along a row the two transformed Filemon curves are quadratics in `x`,
@@ -29,15 +16,16 @@
 //! point. [`Filemon::branch_map_pointwise_into`] is the straightforward
 //! point-by-point kernel, kept for checking and benchmarking.
 //!
-//! Work is split over blocks of rows with rayon; nothing is allocated inside
-//! the loops.
+//! Work is split over blocks of rows by the [`engine`](crate::engine),
+//! which follows progress and cancellation; nothing is allocated inside the
+//! loops.
 //!
 //! # Defined answers
 //!
 //! A sample is `true` only when it is strictly branch-free:
 //!
 //! * `conic`: both conic values nonzero and of one sign, and the point not
-//!   within [`Task::POINT_TOLERANCE`](crate::Task::POINT_TOLERANCE) of a
+//!   within [`tolerance::POINT`] of a
 //!   pole or `C0` (where all the curves meet). A point on a curve is `false`. On the pole circle the
 //!   conic signs are defined and used as they are (the pole circle splits no
 //!   region).
@@ -49,153 +37,15 @@
 //!   ([`Filemon::all_defective`]) the whole map is `false`.
 
 use nalgebra::Point2;
-use rayon::prelude::*;
 
-use crate::conic::{Conic, FAR, Viewport};
-use crate::error::{InvalidInput, Result};
-use crate::filemon::{Filemon, Method};
+use crate::engine::{Control, for_rows};
+use crate::error::finite_point;
+use crate::tolerance;
 
-/// A grid of sample points at cell centers over a viewport.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Grid {
-    viewport: Viewport,
-    nx: usize,
-    ny: usize,
-    dx: f64,
-    dy: f64,
-}
-
-impl Grid {
-    /// The largest number of samples a grid may have (`2^32`).
-    pub const MAX_POINTS: usize = 1 << 32;
-
-    /// A grid of `nx` by `ny` samples over `viewport`.
-    ///
-    /// # Errors
-    ///
-    /// [`InvalidInput::OutOfRange`] when `nx` or `ny` is zero or the grid
-    /// has more than [`Grid::MAX_POINTS`] samples.
-    pub fn new(viewport: Viewport, nx: usize, ny: usize) -> Result<Self> {
-        for (name, n) in [("nx", nx), ("ny", ny)] {
-            if n == 0 {
-                return Err(InvalidInput::OutOfRange {
-                    name,
-                    expected: "must be at least 1",
-                    found: n.to_string(),
-                }
-                .into());
-            }
-        }
-        if nx.checked_mul(ny).is_none_or(|n| n > Self::MAX_POINTS) {
-            return Err(InvalidInput::OutOfRange {
-                name: "nx * ny",
-                expected: "must be at most 2^32 samples",
-                found: format!("{nx} * {ny}"),
-            }
-            .into());
-        }
-        let (w, h) = viewport.size();
-        Ok(Grid {
-            viewport,
-            nx,
-            ny,
-            dx: w / nx as f64,
-            dy: h / ny as f64,
-        })
-    }
-
-    /// A grid from the viewport bounds and the sample counts.
-    ///
-    /// # Errors
-    ///
-    /// As [`Viewport::new`] and [`Grid::new`].
-    pub fn from_bounds(
-        xmin: f64,
-        xmax: f64,
-        ymin: f64,
-        ymax: f64,
-        nx: usize,
-        ny: usize,
-    ) -> Result<Self> {
-        Self::new(Viewport::new(xmin, xmax, ymin, ymax)?, nx, ny)
-    }
-
-    /// The viewport.
-    pub fn viewport(&self) -> Viewport {
-        self.viewport
-    }
-
-    /// Samples per row.
-    pub fn nx(&self) -> usize {
-        self.nx
-    }
-
-    /// Rows.
-    pub fn ny(&self) -> usize {
-        self.ny
-    }
-
-    /// `nx * ny`.
-    pub fn len(&self) -> usize {
-        self.nx * self.ny
-    }
-
-    /// Always false (a grid has at least one sample).
-    pub fn is_empty(&self) -> bool {
-        false
-    }
-
-    /// `x_i = xmin + (i + 0.5) dx`.
-    #[inline]
-    pub fn x(&self, i: usize) -> f64 {
-        self.viewport.xmin + (i as f64 + 0.5) * self.dx
-    }
-
-    /// `y_j = ymin + (j + 0.5) dy`.
-    #[inline]
-    pub fn y(&self, j: usize) -> f64 {
-        self.viewport.ymin + (j as f64 + 0.5) * self.dy
-    }
-
-    /// The sample `(x_i, y_j)`.
-    #[inline]
-    pub fn point(&self, i: usize, j: usize) -> Point2<f64> {
-        Point2::new(self.x(i), self.y(j))
-    }
-
-    /// Rows per rayon task: about 16 K samples, at least 8 tasks when the
-    /// grid allows.
-    fn rows_per_block(&self) -> usize {
-        (16_384 / self.nx).clamp(1, self.ny.div_ceil(8).max(1))
-    }
-
-    /// Calls `f(j, row)` for every row `j` of `out` (`nx` values each), in
-    /// parallel over blocks of rows.
-    pub(crate) fn par_rows<T: Send>(&self, out: &mut [T], f: impl Fn(usize, &mut [T]) + Sync) {
-        let rows = self.rows_per_block();
-        let nx = self.nx;
-        out.par_chunks_mut(nx * rows)
-            .enumerate()
-            .for_each(|(b, block)| {
-                for (r, row) in block.chunks_mut(nx).enumerate() {
-                    f(b * rows + r, row);
-                }
-            });
-    }
-
-    fn check_len(&self, len: usize) -> Result<()> {
-        if len == self.len() {
-            Ok(())
-        } else {
-            Err(InvalidInput::LengthMismatch {
-                name: "output buffer",
-                expected: self.len(),
-                found: len,
-            }
-            .into())
-        }
-    }
-}
+use crate::error::Result;
+use crate::geom::conic::FAR;
+use crate::geom::{Conic, Grid};
+use crate::synthesis::three::{Filemon, Method};
 
 /// The two conics' shared local frame, with the local coordinates of the
 /// grid's columns.
@@ -211,7 +61,7 @@ impl Local {
         Local {
             oy: o.y,
             s,
-            xs: (0..grid.nx).map(|i| (grid.x(i) - o.x) / s).collect(),
+            xs: (0..grid.nx()).map(|i| (grid.x(i) - o.x) / s).collect(),
         }
     }
 
@@ -254,7 +104,7 @@ impl RowQuad {
 /// a point evaluation has the sign of the exact quadratic; `None` when the
 /// row must be evaluated point by point.
 fn danger(c: &Conic, q: RowQuad, y: f64, out: &mut [(f64, f64); 2]) -> Option<usize> {
-    const K: f64 = 64.0 * f64::EPSILON;
+    const K: f64 = tolerance::SWEEP_BAND_EPS * f64::EPSILON;
     let RowQuad { a, l, k } = q;
     let width = |r: f64| {
         let slope = (2.0 * a * r + l).abs();
@@ -298,48 +148,60 @@ impl Filemon {
     /// row-major, `true` where strictly branch-free (module docs).
     pub fn branch_map(&self, grid: &Grid, method: Method) -> Vec<bool> {
         let mut out = vec![false; grid.len()];
-        self.fill_branch_map(grid, method, &mut out);
+        // The buffer fits and nothing cancels: this cannot fail.
+        let _ = self.fill_branch_map(grid, method, &mut out, &Control::new());
         out
     }
 
-    /// [`branch_map`](Self::branch_map) into a buffer of `grid.len()` flags.
+    /// [`branch_map`](Self::branch_map) into a buffer of `grid.len()`
+    /// flags, following `control`.
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::LengthMismatch`] when the buffer's length is not
-    /// `grid.len()`.
-    pub fn branch_map_into(&self, grid: &Grid, method: Method, out: &mut [bool]) -> Result<()> {
+    /// [`InvalidInput::LengthMismatch`](crate::InvalidInput::LengthMismatch)
+    /// when the buffer's length is not `grid.len()`;
+    /// [`Error::Cancelled`](crate::Error::Cancelled) when `control` stopped
+    /// it (the buffer then holds a partial map).
+    pub fn branch_map_into(
+        &self,
+        grid: &Grid,
+        method: Method,
+        out: &mut [bool],
+        control: &Control<'_>,
+    ) -> Result<()> {
         grid.check_len(out.len())?;
-        self.fill_branch_map(grid, method, out);
-        Ok(())
+        self.fill_branch_map(grid, method, out, control)
     }
 
-    fn fill_branch_map(&self, grid: &Grid, method: Method, out: &mut [bool]) {
+    fn fill_branch_map(
+        &self,
+        grid: &Grid,
+        method: Method,
+        out: &mut [bool],
+        control: &Control<'_>,
+    ) -> Result<()> {
         let Some([ca, cb]) = self.conics() else {
-            out.par_chunks_mut(1 << 16).for_each(|c| c.fill(false));
-            return;
+            return for_rows(grid.nx(), out, control, |_, row| row.fill(false));
         };
         match method {
             Method::Conic => {
                 let local = Local::new(&ca, grid);
-                grid.par_rows(out, |j, row| {
+                for_rows(grid.nx(), out, control, |j, row| {
                     if local.far_row(grid, j) {
                         self.far_row_map(grid, j, row);
                         return;
                     }
                     conic_row(&ca, &cb, local.y(grid, j), &local.xs, row);
                     self.clear_special_points(grid, j, row);
-                });
+                })
             }
-            Method::Direct | Method::Simulate => {
-                grid.par_rows(out, |j, row| {
-                    for (i, o) in row.iter_mut().enumerate() {
-                        *o = self
-                            .classify(grid.point(i, j), method)
-                            .is_ok_and(|c| c.is_free());
-                    }
-                });
-            }
+            Method::Direct | Method::Simulate => for_rows(grid.nx(), out, control, |j, row| {
+                for (i, o) in row.iter_mut().enumerate() {
+                    *o = self
+                        .classify(grid.point(i, j), method)
+                        .is_ok_and(|c| c.is_free());
+                }
+            }),
         }
     }
 
@@ -350,8 +212,8 @@ impl Filemon {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::LengthMismatch`] when the buffer's length is not
-    /// `grid.len()`.
+    /// [`InvalidInput::LengthMismatch`](crate::InvalidInput::LengthMismatch)
+    /// when the buffer's length is not `grid.len()`.
     pub fn branch_map_pointwise_into(&self, grid: &Grid, out: &mut [bool]) -> Result<()> {
         grid.check_len(out.len())?;
         let Some([ca, cb]) = self.conics() else {
@@ -359,15 +221,14 @@ impl Filemon {
             return Ok(());
         };
         let local = Local::new(&ca, grid);
-        grid.par_rows(out, |j, row| {
+        for_rows(grid.nx(), out, &Control::new(), |j, row| {
             if local.far_row(grid, j) {
                 self.far_row_map(grid, j, row);
                 return;
             }
             pointwise_row(&ca, &cb, local.y(grid, j), &local.xs, row);
             self.clear_special_points(grid, j, row);
-        });
-        Ok(())
+        })
     }
 
     /// Row `j` by [`Filemon::classify`], point by point (far rows).
@@ -384,9 +245,9 @@ impl Filemon {
     }
 
     /// Calls `f(i)` for each column `i` of row `j` whose sample lies within
-    /// [`Task::POINT_TOLERANCE`](crate::Task::POINT_TOLERANCE) of a pole or `C0`.
+    /// [`tolerance::POINT`] of a pole or `C0`.
     fn for_special_columns(&self, grid: &Grid, j: usize, mut f: impl FnMut(usize)) {
-        let tol = crate::task::Task::POINT_TOLERANCE * self.task().scale();
+        let tol = tolerance::POINT * self.task().scale();
         let y = grid.y(j);
         let xmin = grid.viewport().xmin;
         for p in self.special_points() {
@@ -396,10 +257,13 @@ impl Filemon {
             // Candidate columns around p.x (x_i is monotone in i), widened
             // by how far rounding can move x_i (many columns when the grid
             // is finer than the spacing of doubles there).
-            let slack = (4.0 * f64::EPSILON * (xmin.abs() + p.x.abs() + tol) / grid.dx).ceil();
-            let lo = ((p.x - tol - xmin) / grid.dx - 0.5).floor() - 1.0 - slack;
-            let hi = ((p.x + tol - xmin) / grid.dx - 0.5).ceil() + 2.0 + slack;
-            let (lo, hi) = (lo.max(0.0) as usize, hi.clamp(0.0, grid.nx as f64) as usize);
+            let slack = (4.0 * f64::EPSILON * (xmin.abs() + p.x.abs() + tol) / grid.dx()).ceil();
+            let lo = ((p.x - tol - xmin) / grid.dx() - 0.5).floor() - 1.0 - slack;
+            let hi = ((p.x + tol - xmin) / grid.dx() - 0.5).ceil() + 2.0 + slack;
+            let (lo, hi) = (
+                lo.max(0.0) as usize,
+                hi.clamp(0.0, grid.nx() as f64) as usize,
+            );
             for i in lo..hi {
                 if (grid.x(i) - p.x).abs() <= tol {
                     f(i);
@@ -424,43 +288,59 @@ impl Filemon {
     /// boundary).
     pub fn margin_map(&self, grid: &Grid) -> Vec<f32> {
         let mut out = vec![0.0; grid.len()];
-        self.fill_margin_map(grid, &mut out);
+        // The buffer fits and nothing cancels: this cannot fail.
+        let _ = self.fill_margin_map(grid, &mut out, &Control::new());
         out
     }
 
-    /// [`margin_map`](Self::margin_map) into a buffer of `grid.len()` values.
+    /// [`margin_map`](Self::margin_map) into a buffer of `grid.len()`
+    /// values, following `control`.
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::LengthMismatch`] when the buffer's length is not
-    /// `grid.len()`.
-    pub fn margin_map_into(&self, grid: &Grid, out: &mut [f32]) -> Result<()> {
+    /// As [`branch_map_into`](Self::branch_map_into).
+    pub fn margin_map_into(
+        &self,
+        grid: &Grid,
+        out: &mut [f32],
+        control: &Control<'_>,
+    ) -> Result<()> {
         grid.check_len(out.len())?;
-        self.fill_margin_map(grid, out);
-        Ok(())
+        self.fill_margin_map(grid, out, control)
     }
 
-    fn fill_margin_map(&self, grid: &Grid, out: &mut [f32]) {
+    fn fill_margin_map(&self, grid: &Grid, out: &mut [f32], control: &Control<'_>) -> Result<()> {
         let Some([ca, cb]) = self.conics() else {
-            out.par_chunks_mut(1 << 16)
-                .for_each(|c| c.fill(f32::NEG_INFINITY));
-            return;
+            return for_rows(grid.nx(), out, control, |_, row| {
+                row.fill(f32::NEG_INFINITY)
+            });
         };
         let local = Local::new(&ca, grid);
-        grid.par_rows(out, |j, row| {
+        for_rows(grid.nx(), out, control, |j, row| {
             if local.far_row(grid, j) {
                 for (i, o) in row.iter_mut().enumerate() {
-                    *o = margin_f32(self.margin(grid.point(i, j)));
+                    *o = margin_f32(self.margin_at(grid.point(i, j)));
                 }
                 return;
             }
             margin_row(&ca, &cb, local.y(grid, j), local.s, &local.xs, row);
             self.for_special_columns(grid, j, |i| row[i] = -0.0);
-        });
+        })
     }
 
     /// The signed margin at one point (see [`margin_map`](Self::margin_map)).
-    pub fn margin(&self, p: Point2<f64>) -> f64 {
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotFinite`](crate::InvalidInput::NotFinite) for a
+    /// non-finite point.
+    pub fn margin(&self, p: Point2<f64>) -> Result<f64> {
+        finite_point(["driving center x", "driving center y"], p)?;
+        Ok(self.margin_at(p))
+    }
+
+    /// [`margin`](Self::margin) of a finite point.
+    pub(crate) fn margin_at(&self, p: Point2<f64>) -> f64 {
         let Some([ca, cb]) = self.conics() else {
             return f64::NEG_INFINITY;
         };

@@ -27,7 +27,7 @@ use nalgebra::{Matrix3, Point2, Vector2};
 use parry2d_f64::bounding_volume::Aabb;
 
 use crate::error::{InvalidInput, Result, finite};
-use crate::geom::cross;
+use crate::geom::{Line, Viewport, cross};
 
 /// Relative tolerance of the kind tests (parabola, degenerate).
 const KIND_TOLERANCE: f64 = 1e-12;
@@ -37,22 +37,6 @@ const KIND_TOLERANCE: f64 = 1e-12;
 /// sign of `q(v)` and cannot overflow. Nearer points are evaluated by the
 /// plain formula, bit for bit as a grid sweep does.
 pub(crate) const FAR: f64 = 1e100;
-
-/// A line: a point and a direction.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Line {
-    /// A point of the line.
-    pub point: Point2<f64>,
-    /// Its direction (not necessarily unit; see the producer's docs).
-    pub direction: Vector2<f64>,
-}
-
-impl Line {
-    /// `cross(direction, p - point)`: positive left of the line, negative right.
-    pub fn side(&self, p: Point2<f64>) -> f64 {
-        cross(self.direction, p - self.point)
-    }
-}
 
 /// The kind of a conic.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -83,70 +67,6 @@ impl ConicKind {
 impl core::fmt::Display for ConicKind {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(self.as_str())
-    }
-}
-
-/// A rectangle of the plane, `xmin <= x <= xmax`, `ymin <= y <= ymax`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Viewport {
-    /// Left edge.
-    pub xmin: f64,
-    /// Right edge.
-    pub xmax: f64,
-    /// Bottom edge.
-    pub ymin: f64,
-    /// Top edge.
-    pub ymax: f64,
-}
-
-impl Viewport {
-    /// A viewport, validated.
-    ///
-    /// # Errors
-    ///
-    /// [`InvalidInput`] when a bound is not finite or `xmin >= xmax` or
-    /// `ymin >= ymax`.
-    pub fn new(xmin: f64, xmax: f64, ymin: f64, ymax: f64) -> Result<Self> {
-        finite("xmin", xmin)?;
-        finite("xmax", xmax)?;
-        finite("ymin", ymin)?;
-        finite("ymax", ymax)?;
-        if xmin >= xmax || ymin >= ymax || !(xmax - xmin).is_finite() || !(ymax - ymin).is_finite()
-        {
-            return Err(InvalidInput::OutOfRange {
-                name: "viewport",
-                expected: "must have xmin < xmax and ymin < ymax (and a finite size)",
-                found: format!("x from {xmin} to {xmax}, y from {ymin} to {ymax}"),
-            }
-            .into());
-        }
-        Ok(Viewport {
-            xmin,
-            xmax,
-            ymin,
-            ymax,
-        })
-    }
-
-    /// Width and height.
-    pub fn size(&self) -> (f64, f64) {
-        (self.xmax - self.xmin, self.ymax - self.ymin)
-    }
-
-    /// The length of the diagonal.
-    pub fn diagonal(&self) -> f64 {
-        let (w, h) = self.size();
-        w.hypot(h)
-    }
-
-    /// The center.
-    pub fn center(&self) -> Point2<f64> {
-        Point2::new(0.5 * (self.xmin + self.xmax), 0.5 * (self.ymin + self.ymax))
-    }
-
-    /// Whether `p` lies inside (edges included).
-    pub fn contains(&self, p: Point2<f64>) -> bool {
-        p.x >= self.xmin && p.x <= self.xmax && p.y >= self.ymin && p.y <= self.ymax
     }
 }
 
@@ -191,14 +111,43 @@ impl Conic {
             finite(n, v)?;
         }
         if q[..5].iter().all(|&v| v == 0.0) {
-            return Err(InvalidInput::OutOfRange {
-                name: "conic coefficients",
-                expected: "A, B, C, D and E must not all be zero",
-                found: format!("{q:?}"),
-            }
-            .into());
+            return Err(InvalidInput::ConicCoefficients.into());
         }
         Ok(Self::local(q, Point2::origin(), 1.0, None))
+    }
+
+    /// The conic's exact stored form: its local coefficients (largest 1 in
+    /// magnitude), the local frame's origin and unit, and a local point
+    /// known to lie on it. [`Conic::from_parts`] rebuilds the same conic,
+    /// bit for bit (for serialization).
+    pub fn to_parts(&self) -> ([f64; 6], Point2<f64>, f64, Option<Vector2<f64>>) {
+        (self.q, self.origin, self.scale, self.known)
+    }
+
+    /// The conic of [`Conic::to_parts`].
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput`] for a non-finite number, a unit that is not
+    /// positive, or `A, B, C, D, E` all zero.
+    pub fn from_parts(
+        q: [f64; 6],
+        origin: Point2<f64>,
+        scale: f64,
+        known: Option<Vector2<f64>>,
+    ) -> Result<Self> {
+        for v in q {
+            finite("conic coefficient", v)?;
+        }
+        crate::error::finite_point(["conic origin x", "conic origin y"], origin)?;
+        crate::error::positive("conic unit length", scale)?;
+        if let Some(k) = known {
+            crate::error::finite_point(["known point x", "known point y"], Point2::from(k))?;
+        }
+        if q[..5].iter().all(|&v| v == 0.0) {
+            return Err(InvalidInput::ConicCoefficients.into());
+        }
+        Ok(Self::local(q, origin, scale, known))
     }
 
     /// A conic given in a local frame: `q((Y - origin) / scale)`, with an
@@ -337,6 +286,15 @@ impl Conic {
     #[inline]
     fn global_of(&self, v: Vector2<f64>) -> Point2<f64> {
         self.origin + v * self.scale
+    }
+    /// [`evaluate`](Self::evaluate) of a point checked to be finite.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotFinite`] for a non-finite point.
+    pub fn try_evaluate(&self, p: Point2<f64>) -> Result<f64> {
+        crate::error::finite_point(["point x", "point y"], p)?;
+        Ok(self.evaluate(p))
     }
 
     /// The value `q(p)` (up to the conic's positive factor): zero on the
@@ -551,17 +509,43 @@ impl Conic {
         None
     }
 
+    /// The smallest chord tolerance of [`Conic::polylines`], relative to
+    /// the viewport's diagonal.
+    pub const MIN_RELATIVE_TOLERANCE: f64 = 1e-9;
+
+    /// The most points [`Conic::polylines`] returns.
+    pub const MAX_POLYLINE_POINTS: usize = 10_000_000;
+
     /// The curve sampled into polylines clipped to `viewport`, each
     /// branch separately and never joined across infinity.
     ///
     /// `tolerance` is the largest distance between the curve and a chord, in
-    /// the units of the plane; pass `None` for a thousandth of the
-    /// viewport's diagonal.
-    pub fn polylines(&self, viewport: &Viewport, tolerance: Option<f64>) -> Vec<Vec<Point2<f64>>> {
-        let tol = tolerance
-            .filter(|t| t.is_finite() && *t > 0.0)
-            .unwrap_or(viewport.diagonal() * 1e-3)
-            / self.scale;
+    /// the units of the plane, from [`Conic::MIN_RELATIVE_TOLERANCE`] times
+    /// the viewport's diagonal to the diagonal; pass `None` for a
+    /// thousandth of the diagonal.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::OutsideRange`] for a tolerance outside that range
+    /// (or not finite); [`InvalidInput::TooLarge`] when the curve would
+    /// need more than [`Conic::MAX_POLYLINE_POINTS`] points (a nearly
+    /// degenerate conic at a fine tolerance).
+    pub fn polylines(
+        &self,
+        viewport: &Viewport,
+        tolerance: Option<f64>,
+    ) -> Result<Vec<Vec<Point2<f64>>>> {
+        let diag = viewport.diagonal();
+        let tol = match tolerance {
+            None => diag * 1e-3,
+            Some(t) => crate::error::in_range(
+                "tolerance",
+                t,
+                Self::MIN_RELATIVE_TOLERANCE * diag,
+                diag,
+                " (plane units: 1e-9 to 1 times the viewport's diagonal)",
+            )?,
+        } / self.scale;
         let lo = self.local_of(Point2::new(viewport.xmin, viewport.ymin));
         let hi = self.local_of(Point2::new(viewport.xmax, viewport.ymax));
         let aabb = Aabb::new(
@@ -578,6 +562,7 @@ impl Conic {
             radius: 0.5 * (hi - lo).norm(),
             out: Vec::new(),
             current: Vec::new(),
+            points: 0,
         };
         if self.kind() == ConicKind::Degenerate {
             for line in self.degenerate_lines(sampler.center) {
@@ -586,11 +571,20 @@ impl Conic {
         } else if let Some(q) = self.find_point(sampler.center) {
             self.sample_branches(q, &mut sampler);
         }
-        sampler
+        if sampler.points > Self::MAX_POLYLINE_POINTS {
+            return Err(InvalidInput::TooLarge {
+                name: "the number of polyline points",
+                value: sampler.points as f64,
+                limit: Self::MAX_POLYLINE_POINTS as f64,
+                hint: "pass a larger tolerance",
+            }
+            .into());
+        }
+        Ok(sampler
             .out
             .into_iter()
             .map(|pl| pl.into_iter().map(|v| self.global_of(v)).collect())
-            .collect()
+            .collect())
     }
 
     /// The lines of a degenerate conic (local point and direction).
@@ -742,6 +736,9 @@ struct Sampler<'a> {
     radius: f64,
     out: Vec<Vec<Vector2<f64>>>,
     current: Vec<Vector2<f64>>,
+    /// Points emitted so far; past [`Conic::MAX_POLYLINE_POINTS`] sampling
+    /// stops.
+    points: usize,
 }
 
 impl Sampler<'_> {
@@ -789,6 +786,9 @@ impl Sampler<'_> {
         p1: Vector2<f64>,
         depth: u32,
     ) {
+        if self.points > Conic::MAX_POLYLINE_POINTS {
+            return;
+        }
         let sm = 0.5 * (s0 + s1);
         let pm = point(sm);
         // Refine where the chord or the midpoint passes near the viewport.
@@ -814,6 +814,7 @@ impl Sampler<'_> {
 
     /// Clips one segment and appends it to the current polyline.
     fn segment(&mut self, a: Vector2<f64>, b: Vector2<f64>) {
+        self.points += 1;
         if !(a.iter().all(|v| v.is_finite()) && b.iter().all(|v| v.is_finite())) {
             self.finish();
             return;
@@ -957,7 +958,7 @@ mod tests {
     #[test]
     fn circle_samples_close_within_tolerance() {
         let circle = Conic::new(1.0, 0.0, 1.0, -2.0, 0.0, -3.0).unwrap(); // (x-1)^2 + y^2 = 4
-        let pl = circle.polylines(&vp(), Some(1e-4));
+        let pl = circle.polylines(&vp(), Some(1e-4)).unwrap();
         assert_eq!(pl.len(), 1);
         let l = &pl[0];
         assert!((l[0] - l[l.len() - 1]).norm() < 1e-12, "closed loop");
@@ -970,7 +971,7 @@ mod tests {
     #[test]
     fn hyperbola_gives_two_branches_reaching_the_edges() {
         let h = Conic::new(1.0, 0.0, -1.0, 0.0, 0.0, -1.0).unwrap();
-        let pl = h.polylines(&vp(), None);
+        let pl = h.polylines(&vp(), None).unwrap();
         assert_eq!(pl.len(), 2, "{pl:?}");
         for l in &pl {
             // Every branch leaves through the edges at both ends.
@@ -999,20 +1000,20 @@ mod tests {
     #[test]
     fn parabola_and_line_pairs() {
         let p = Conic::new(1.0, 0.0, 0.0, 0.0, -1.0, 0.0).unwrap(); // y = x^2
-        let pl = p.polylines(&vp(), None);
+        let pl = p.polylines(&vp(), None).unwrap();
         assert_eq!(pl.len(), 1);
         assert!(pl[0].iter().all(|q| (q.y - q.x * q.x).abs() < 1e-9));
         let pair = Conic::new(1.0, 0.0, -1.0, 0.0, 0.0, 0.0).unwrap(); // y = +-x
-        let pl = pair.polylines(&vp(), None);
+        let pl = pair.polylines(&vp(), None).unwrap();
         assert_eq!(pl.len(), 2);
         let parallel = Conic::new(0.0, 0.0, 1.0, 0.0, 0.0, -1.0).unwrap(); // y = +-1
-        let pl = parallel.polylines(&vp(), None);
+        let pl = parallel.polylines(&vp(), None).unwrap();
         assert_eq!(pl.len(), 2);
         for l in &pl {
             assert!(l.iter().all(|q| (q.y.abs() - 1.0).abs() < 1e-12));
         }
         let empty = Conic::new(1.0, 0.0, 1.0, 0.0, 0.0, 1.0).unwrap();
-        assert!(empty.polylines(&vp(), None).is_empty());
+        assert!(empty.polylines(&vp(), None).unwrap().is_empty());
     }
 
     #[test]

@@ -55,11 +55,10 @@ use core::f64::consts::{PI, TAU};
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{AssemblyError, Error, InvalidInput, Result, finite, positive};
-use crate::geom::{normalized, perp, point_is_finite, rotate, unit, wrap_angle};
-
-/// Relative tolerance of the toggle test and of the Grashof equality, in
-/// units of the machine epsilon times the size of the quantity compared.
-const ROUNDING_FACTOR: f64 = 8.0;
+use crate::geom::{cross, normalized, perp, point_is_finite, rotate, unit, wrap_angle};
+use crate::linkage::grashof::{InputBounds, grashof_of, input_bounds};
+use crate::linkage::{AngleInterval, Grashof, InputRange};
+use crate::tolerance;
 
 /// The two ways to close the loop at one input angle.
 ///
@@ -109,6 +108,32 @@ impl AssemblyMode {
         }
     }
 
+    /// The mode of a closed loop from its coupler vector (crank joint to
+    /// rocker joint) and its rocker vector (output pivot to rocker joint):
+    /// the sign of `cross(coupler, rocker)`, the sign of
+    /// `sin(theta4 - theta3)`; `None` (a toggle) where the cross product is
+    /// within [`tolerance::CROSS_EPS`] machine epsilons of the product of
+    /// the lengths. The one assembly-mode test of the crate: the synthesized
+    /// linkages and the solution maps use it at every pose.
+    ///
+    /// ```
+    /// use burmester::{AssemblyMode, Vector2};
+    /// let m = AssemblyMode::of_loop(Vector2::new(1.0, 0.0), Vector2::new(0.0, 2.0));
+    /// assert_eq!(m, Some(AssemblyMode::Open));
+    /// assert_eq!(AssemblyMode::of_loop(Vector2::new(1.0, 0.0), Vector2::new(3.0, 0.0)), None);
+    /// ```
+    #[inline(always)]
+    pub fn of_loop(coupler: Vector2<f64>, rocker: Vector2<f64>) -> Option<Self> {
+        let s = cross(coupler, rocker);
+        // |s| <= k eps |u| |w|, squared: no square roots.
+        let t = tolerance::CROSS_EPS * f64::EPSILON;
+        if s * s <= t * t * coupler.norm_squared() * rocker.norm_squared() {
+            None
+        } else {
+            AssemblyMode::from_sign(s)
+        }
+    }
+
     /// `"open"` or `"crossed"`.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -140,143 +165,6 @@ impl core::str::FromStr for AssemblyMode {
                 found: s.to_owned(),
             })
         }
-    }
-}
-
-/// Grashof type of a four-bar, the input being the crank link.
-///
-/// With `s` the shortest, `l` the longest and `p`, `q` the other two links,
-/// the linkage is Grashof when `s + l < p + q` (some link turns fully), a
-/// change point when `s + l = p + q` (within rounding), and non-Grashof
-/// otherwise. A Grashof linkage is named after its shortest link.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Grashof {
-    /// Grashof, crank shortest: the input turns fully, the output rocks.
-    CrankRocker,
-    /// Grashof, ground shortest: both the input and the output turn fully (drag link).
-    DoubleCrank,
-    /// Grashof, rocker shortest: the output turns fully, the input rocks.
-    RockerCrank,
-    /// Grashof, coupler shortest: both the input and the output rock; the coupler turns fully.
-    DoubleRocker,
-    /// Non-Grashof (`s + l > p + q`): no link turns fully relative to another.
-    TripleRocker,
-    /// `s + l = p + q`: the linkage passes through a flat (change point)
-    /// position where it can switch assembly modes.
-    ChangePoint,
-}
-
-impl Grashof {
-    /// Every class, in the order of their codes in a solution map.
-    pub const ALL: [Grashof; 6] = [
-        Grashof::CrankRocker,
-        Grashof::DoubleCrank,
-        Grashof::RockerCrank,
-        Grashof::DoubleRocker,
-        Grashof::TripleRocker,
-        Grashof::ChangePoint,
-    ];
-
-    /// The name used in the Python API: `"crank-rocker"`, `"double-crank"`,
-    /// `"rocker-crank"`, `"double-rocker"`, `"triple-rocker"` or `"change-point"`.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Grashof::CrankRocker => "crank-rocker",
-            Grashof::DoubleCrank => "double-crank",
-            Grashof::RockerCrank => "rocker-crank",
-            Grashof::DoubleRocker => "double-rocker",
-            Grashof::TripleRocker => "triple-rocker",
-            Grashof::ChangePoint => "change-point",
-        }
-    }
-
-    /// Whether `s + l < p + q` strictly (some link turns fully and the
-    /// linkage never reaches a change point).
-    pub fn is_grashof(self) -> bool {
-        !matches!(self, Grashof::TripleRocker | Grashof::ChangePoint)
-    }
-}
-
-impl core::fmt::Display for Grashof {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(self.as_str())
-    }
-}
-
-/// A closed interval of angles, counter-clockwise from `start` to `end`
-/// (`start <= end < start + 2 pi`), in radians.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct AngleInterval {
-    /// Where the interval starts.
-    pub start: f64,
-    /// Where it ends, counter-clockwise from `start`.
-    pub end: f64,
-}
-
-impl AngleInterval {
-    /// The angular width `end - start`.
-    pub fn span(&self) -> f64 {
-        self.end - self.start
-    }
-
-    /// The middle angle.
-    pub fn mid(&self) -> f64 {
-        0.5 * (self.start + self.end)
-    }
-
-    /// Whether `angle` (any multiple of `2 pi` added) lies in the interval.
-    pub fn contains(&self, angle: f64) -> bool {
-        let t = (angle - self.start).rem_euclid(TAU);
-        t <= self.span()
-    }
-}
-
-/// Where the input link can be: all the way round, or one or two arcs
-/// bounded by dead (toggle) positions.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum InputRange {
-    /// The input turns fully.
-    Full,
-    /// The input rocks within one arc.
-    Arc(AngleInterval),
-    /// The input rocks within one of two arcs, mirror images across the
-    /// ground line (a Grashof double-rocker's two circuits).
-    TwoArcs(AngleInterval, AngleInterval),
-}
-
-impl InputRange {
-    /// Whether the input can reach `theta2`.
-    pub fn contains(&self, theta2: f64) -> bool {
-        match self {
-            InputRange::Full => true,
-            InputRange::Arc(a) => a.contains(theta2),
-            InputRange::TwoArcs(a, b) => a.contains(theta2) || b.contains(theta2),
-        }
-    }
-
-    /// Whether the input turns fully.
-    pub fn is_full(&self) -> bool {
-        matches!(self, InputRange::Full)
-    }
-
-    /// The arcs as an array of up to two, with their count.
-    pub fn arcs_array(&self) -> ([AngleInterval; 2], usize) {
-        let zero = AngleInterval {
-            start: 0.0,
-            end: 0.0,
-        };
-        match *self {
-            InputRange::Full => ([zero; 2], 0),
-            InputRange::Arc(a) => ([a, zero], 1),
-            InputRange::TwoArcs(a, b) => ([a, b], 2),
-        }
-    }
-
-    /// The dead positions: the input angles that bound the arcs (empty when
-    /// the input turns fully).
-    pub fn dead_positions(&self) -> Vec<f64> {
-        let (arcs, n) = self.arcs_array();
-        arcs[..n].iter().flat_map(|a| [a.start, a.end]).collect()
     }
 }
 
@@ -438,12 +326,21 @@ impl FourBar {
         // `MAX_EXTENT` a joint or a length of two joints could overflow.
         let extent = origin.x.abs() + origin.y.abs() + links.iter().sum::<f64>();
         let shortest = links.iter().copied().fold(f64::INFINITY, f64::min);
-        if !(extent <= Self::MAX_EXTENT && (scale / shortest).is_finite()) {
-            return Err(InvalidInput::OutOfRange {
-                name: "linkage size",
-                expected: "must be at most 1e300 (the origin's distance plus the four lengths), with \
-                           a finite ratio of the longest to the shortest link; rescale the linkage",
-                found: format!("origin ({}, {}) and lengths {links:?}", origin.x, origin.y),
+        if extent.is_nan() || extent > Self::MAX_EXTENT {
+            return Err(InvalidInput::TooLarge {
+                name: "linkage size (the origin's distance plus the four lengths)",
+                value: extent,
+                limit: Self::MAX_EXTENT,
+                hint: "rescale the linkage",
+            }
+            .into());
+        }
+        if !(scale / shortest).is_finite() {
+            return Err(InvalidInput::TooLarge {
+                name: "ratio of the longest to the shortest link",
+                value: scale / shortest,
+                limit: f64::MAX,
+                hint: "pass lengths of comparable sizes",
             }
             .into());
         }
@@ -451,7 +348,7 @@ impl FourBar {
         let sum_n = g + c + l3 + l4;
         // The longest link is 1 in units of `scale`.
         let others = sum_n - 1.0;
-        if 1.0 > others * (1.0 + ROUNDING_FACTOR * f64::EPSILON) {
+        if 1.0 > others * (1.0 + tolerance::ROUNDING_EPS * f64::EPSILON) {
             return Err(AssemblyError::NeverCloses {
                 longest: scale,
                 others: others * scale,
@@ -555,7 +452,7 @@ impl FourBar {
         let diff = self.diff_n;
         let heron = (sum * sum - r2) * (r2 - diff * diff);
         let big = sum * sum + r2;
-        let tol = ROUNDING_FACTOR * f64::EPSILON * big * big;
+        let tol = tolerance::ROUNDING_EPS * f64::EPSILON * big * big;
         // One comparison catches both a loop that does not close and NaN
         // (from a non-finite angle). A crank tip on the output pivot
         // (`r2 == 0`) makes `v3` and `v4` zero, caught below.
@@ -766,14 +663,9 @@ impl FourBar {
             if point_is_finite(&p) {
                 Ok(p)
             } else {
-                Err(InvalidInput::OutOfRange {
-                    name: "coupler point",
-                    expected: "must stay within the representable range; pass a point nearer \
-                               the coupler",
-                    found: format!(
-                        "({}, {}), which reaches ({}, {})",
-                        local.x, local.y, p.x, p.y
-                    ),
+                Err(InvalidInput::Overflow {
+                    what: "the coupler point's position",
+                    hint: "pass a coupler point nearer the coupler",
                 }
                 .into())
             }
@@ -854,66 +746,6 @@ impl FourBar {
 #[inline(never)]
 fn indeterminate(theta2: f64) -> Error {
     AssemblyError::Indeterminate { theta2 }.into()
-}
-
-/// Grashof type of the lengths `[ground, crank, coupler, rocker]` (see
-/// [`FourBar::grashof`]); any positive scale.
-pub(crate) fn grashof_of(lengths: [f64; 4]) -> Grashof {
-    let scale = lengths.iter().copied().fold(0.0, f64::max);
-    let l = lengths.map(|v| v / scale);
-    let mut idx = [0usize, 1, 2, 3];
-    idx.sort_by(|&a, &b| l[a].total_cmp(&l[b]));
-    let lhs = l[idx[0]] + l[idx[3]];
-    let rhs = l[idx[1]] + l[idx[2]];
-    let tol = ROUNDING_FACTOR * f64::EPSILON * (lhs + rhs);
-    if (lhs - rhs).abs() <= tol {
-        Grashof::ChangePoint
-    } else if lhs > rhs {
-        Grashof::TripleRocker
-    } else {
-        match idx[0] {
-            0 => Grashof::DoubleCrank,
-            1 => Grashof::CrankRocker,
-            2 => Grashof::DoubleRocker,
-            _ => Grashof::RockerCrank,
-        }
-    }
-}
-
-/// Where the loop closes, as bounds on `c = cos(theta2 - theta1)`, and
-/// whether each bound is beyond `-1` / `1` (within rounding).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct InputBounds {
-    pub(crate) c_min: f64,
-    pub(crate) c_max: f64,
-    /// `c_min <= -1`: the input passes `theta1 + pi`.
-    pub(crate) lo_free: bool,
-    /// `c_max >= 1`: the input passes `theta1`.
-    pub(crate) hi_free: bool,
-}
-
-/// The input bounds of the lengths `[ground, crank, coupler, rocker]` (see
-/// [`FourBar::input_range`]); any positive scale.
-pub(crate) fn input_bounds(lengths: [f64; 4]) -> InputBounds {
-    // In units of the longer of ground and crank, so that neither the
-    // squares nor `2 L1 L2` underflow (the link ratio is finite). A square
-    // of `L3 + L4` may overflow to infinity: then `c_min` is `-inf` and the
-    // bound is reached, as it should be.
-    let [l1, l2, l3, l4] = lengths;
-    let m = l1.max(l2);
-    let (g, c) = (l1 / m, l2 / m);
-    let (sum, diff) = (l3 / m + l4 / m, l3 / m - l4 / m);
-    let base = g * g + c * c;
-    let two = 2.0 * g * c;
-    let rounding = ROUNDING_FACTOR * f64::EPSILON / two;
-    let c_min = (base - sum * sum) / two;
-    let c_max = (base - diff * diff) / two;
-    InputBounds {
-        c_min,
-        c_max,
-        lo_free: c_min <= -1.0 + rounding * (base + sum * sum),
-        hi_free: c_max >= 1.0 - rounding * (base + diff * diff),
-    }
 }
 
 #[cfg(test)]

@@ -1,0 +1,325 @@
+//! `burmester.Grid` and `burmester.Conic` (the core's `geom`).
+
+use burmester::{Conic, Grid, Vector2, Viewport};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn};
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+
+use crate::conv::{Count, FloatArray, PyPoint, Real, pt, to_numpy};
+use crate::errors::{IntoPy, invalid};
+
+type Xy = (f64, f64);
+
+/// A grid of sample points at cell centers over a viewport.
+#[pyclass(frozen, eq, from_py_object, name = "Grid", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub struct PyGrid {
+    pub(crate) inner: Grid,
+}
+
+#[pymethods]
+impl PyGrid {
+    #[new]
+    fn new(xmin: Real, xmax: Real, ymin: Real, ymax: Real, nx: Count, ny: Count) -> PyResult<Self> {
+        Grid::from_bounds(xmin.0, xmax.0, ymin.0, ymax.0, nx.0, ny.0)
+            .map(|inner| PyGrid { inner })
+            .py()
+    }
+
+    #[getter]
+    fn xmin(&self) -> f64 {
+        self.inner.viewport().xmin
+    }
+    #[getter]
+    fn xmax(&self) -> f64 {
+        self.inner.viewport().xmax
+    }
+    #[getter]
+    fn ymin(&self) -> f64 {
+        self.inner.viewport().ymin
+    }
+    #[getter]
+    fn ymax(&self) -> f64 {
+        self.inner.viewport().ymax
+    }
+    #[getter]
+    fn nx(&self) -> usize {
+        self.inner.nx()
+    }
+    #[getter]
+    fn ny(&self) -> usize {
+        self.inner.ny()
+    }
+    #[getter]
+    fn dx(&self) -> f64 {
+        self.inner.dx()
+    }
+    #[getter]
+    fn dy(&self) -> f64 {
+        self.inner.dy()
+    }
+    #[getter]
+    fn extent(&self) -> (f64, f64, f64, f64) {
+        extent(&self.inner)
+    }
+    #[getter]
+    fn shape(&self) -> (usize, usize) {
+        (self.inner.ny(), self.inner.nx())
+    }
+    #[getter]
+    fn size(&self) -> usize {
+        self.inner.len()
+    }
+
+    /// `(xs, ys)`: the sample coordinates of the columns and of the rows.
+    fn cell_centers<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>) {
+        let g = &self.inner;
+        let xs: Vec<f64> = (0..g.nx()).map(|i| g.x(i)).collect();
+        let ys: Vec<f64> = (0..g.ny()).map(|j| g.y(j)).collect();
+        (xs.into_pyarray(py), ys.into_pyarray(py))
+    }
+
+    /// The sample `[j, i]`: `(x_i, y_j)`.
+    pub(crate) fn point(&self, j: Count, i: Count) -> PyResult<Xy> {
+        let (j, i) = (j.0, i.0);
+        let g = &self.inner;
+        if i >= g.nx() || j >= g.ny() {
+            return Err(invalid(
+                "grid_index",
+                format!(
+                    "sample ({j}, {i}) is outside the grid of shape ({}, {}); pass indices within it",
+                    g.ny(),
+                    g.nx()
+                ),
+            ));
+        }
+        Ok(pt(g.point(i, j)))
+    }
+
+    /// The sample `[j, i]` nearest to a point (clamped to the grid).
+    fn nearest(&self, point: PyPoint) -> PyResult<(usize, usize)> {
+        self.inner.nearest(point.0).py()
+    }
+
+    fn __getnewargs__(&self) -> (f64, f64, f64, f64, usize, usize) {
+        let (a, b, c, d) = extent(&self.inner);
+        (a, b, c, d, self.inner.nx(), self.inner.ny())
+    }
+
+    fn __repr__(&self) -> String {
+        let (a, b, c, d) = extent(&self.inner);
+        format!(
+            "Grid({a:?}, {b:?}, {c:?}, {d:?}, {}, {})",
+            self.inner.nx(),
+            self.inner.ny()
+        )
+    }
+}
+
+fn extent(g: &Grid) -> (f64, f64, f64, f64) {
+    let v = g.viewport();
+    (v.xmin, v.xmax, v.ymin, v.ymax)
+}
+
+/// A grid from the leading positional arguments of a call: a `Grid`, or the
+/// six numbers `xmin, xmax, ymin, ymax, nx, ny`. Returns the grid and how
+/// many arguments it took.
+pub(crate) fn grid_arg(args: &Bound<'_, PyTuple>) -> PyResult<(Grid, usize)> {
+    let usage = || {
+        PyTypeError::new_err(
+            "expected a grid: a burmester.Grid, or the six numbers xmin, xmax, ymin, ymax, nx, ny",
+        )
+    };
+    let first = args.get_item(0).map_err(|_| usage())?;
+    if let Ok(g) = first.cast::<PyGrid>() {
+        return Ok((g.get().inner, 1));
+    }
+    if args.len() < 6 {
+        return Err(usage());
+    }
+    let num = |k: usize| -> PyResult<f64> { Ok(args.get_item(k)?.extract::<Real>()?.0) };
+    let count = |k: usize| -> PyResult<usize> { Ok(args.get_item(k)?.extract::<Count>()?.0) };
+    let g = Grid::from_bounds(num(0)?, num(1)?, num(2)?, num(3)?, count(4)?, count(5)?).py()?;
+    Ok((g, 6))
+}
+
+/// A conic `A x^2 + B x y + C y^2 + D x + E y + F = 0`.
+#[pyclass(frozen, eq, name = "Conic", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub struct PyConic {
+    pub(crate) inner: Conic,
+}
+
+#[pymethods]
+impl PyConic {
+    #[new]
+    #[allow(clippy::many_single_char_names)]
+    fn new(a: Real, b: Real, c: Real, d: Real, e: Real, f: Real) -> PyResult<Self> {
+        Conic::new(a.0, b.0, c.0, d.0, e.0, f.0)
+            .map(|inner| PyConic { inner })
+            .py()
+    }
+
+    /// Rebuilds a conic from its exact stored form (for pickling).
+    #[staticmethod]
+    fn _from_parts(
+        q: [f64; 6],
+        origin: PyPoint,
+        scale: Real,
+        known: Option<PyPoint>,
+    ) -> PyResult<Self> {
+        Conic::from_parts(q, origin.0, scale.0, known.map(|k| k.0.coords))
+            .map(|inner| PyConic { inner })
+            .py()
+    }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let (q, o, s, k) = self.inner.to_parts();
+        let f = py.get_type::<PyConic>().getattr("_from_parts")?;
+        let args = (q, pt(o), s, k.map(|k| (k.x, k.y))).into_pyobject(py)?;
+        Ok((f, args))
+    }
+
+    #[getter]
+    fn coefficients(&self) -> (f64, f64, f64, f64, f64, f64) {
+        let [a, b, c, d, e, f] = self.inner.coefficients();
+        (a, b, c, d, e, f)
+    }
+
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.inner.kind().as_str()
+    }
+
+    #[getter]
+    fn center(&self) -> Option<Xy> {
+        self.inner.center().map(pt)
+    }
+
+    #[getter]
+    fn axis_angle(&self) -> f64 {
+        self.inner.axis_angle()
+    }
+
+    #[getter]
+    fn asymptotes(&self) -> Option<(Xy, Xy, Xy)> {
+        self.inner
+            .asymptotes()
+            .map(|[a, b]| (pt(a.point), vec2(a.direction), vec2(b.direction)))
+    }
+
+    fn evaluate(&self, point: PyPoint) -> PyResult<f64> {
+        self.inner.try_evaluate(point.0).py()
+    }
+
+    fn __call__(&self, point: PyPoint) -> PyResult<f64> {
+        self.evaluate(point)
+    }
+
+    fn evaluate_many<'py>(
+        &self,
+        py: Python<'py>,
+        points: FloatArray,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (pts, lead) = crate::conv::points(&points)?;
+        let c = self.inner;
+        let v: Vec<f64> = py
+            .detach(|| {
+                pts.iter()
+                    .map(|p| c.try_evaluate(*p))
+                    .collect::<Result<_, _>>()
+            })
+            .py()?;
+        Ok(to_numpy(py, &lead, v))
+    }
+
+    fn side(&self, point: PyPoint) -> PyResult<i8> {
+        self.inner.try_evaluate(point.0).py()?;
+        Ok(self.inner.side(point.0))
+    }
+
+    fn distance(&self, point: PyPoint) -> PyResult<f64> {
+        self.inner.try_evaluate(point.0).py()?;
+        Ok(self.inner.distance_estimate(point.0))
+    }
+
+    #[pyo3(signature = (xmin, xmax, ymin, ymax, tolerance = None))]
+    fn polylines<'py>(
+        &self,
+        py: Python<'py>,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+        tolerance: Option<Real>,
+    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+        let vp = Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()?;
+        let tolerance = tolerance.map(|t| t.0);
+        let c = self.inner;
+        let lines = py.detach(|| c.polylines(&vp, tolerance)).py()?;
+        Ok(lines
+            .into_iter()
+            .map(|l| {
+                let flat: Vec<f64> = l.iter().flat_map(|p| [p.x, p.y]).collect();
+                numpy::ndarray::Array2::from_shape_vec((l.len(), 2), flat)
+                    .expect("two coordinates per point")
+                    .into_pyarray(py)
+            })
+            .collect())
+    }
+
+    fn __repr__(&self) -> String {
+        let [a, b, c, d, e, f] = self.inner.coefficients();
+        format!(
+            "Conic({a:?}, {b:?}, {c:?}, {d:?}, {e:?}, {f:?})  # {}",
+            self.inner.kind()
+        )
+    }
+}
+
+/// `(x, y)` of a vector for Python.
+pub(crate) fn vec2(v: Vector2<f64>) -> Xy {
+    (v.x, v.y)
+}
+
+/// The part of the line `point + t direction` inside the rectangle
+/// `extent = (xmin, xmax, ymin, ymax)`, as its two ends, or None.
+#[pyfunction]
+pub(crate) fn clip_line(
+    point: PyPoint,
+    direction: PyPoint,
+    extent: &Bound<'_, PyAny>,
+) -> PyResult<Option<(Xy, Xy)>> {
+    let usage = |what: String| {
+        PyTypeError::new_err(format!(
+            "expected an extent (xmin, xmax, ymin, ymax): a sequence of four numbers, got {what}"
+        ))
+    };
+    let e: Vec<Real> = extent.extract().map_err(|e: PyErr| {
+        if e.is_instance_of::<crate::errors::InvalidInputError>(extent.py()) {
+            return e;
+        }
+        usage(
+            extent
+                .get_type()
+                .name()
+                .map_or("an object".into(), |n| n.to_string()),
+        )
+    })?;
+    let [xmin, xmax, ymin, ymax] = e[..] else {
+        return Err(usage(format!("{} numbers", e.len())));
+    };
+    let vp = Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()?;
+    let line = burmester::Line {
+        point: point.0,
+        direction: direction.0.coords,
+    };
+    Ok(line.clip(&vp).map(|(a, b)| (pt(a), pt(b))))
+}

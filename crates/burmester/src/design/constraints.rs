@@ -1,0 +1,373 @@
+//! Where the linkage may be: a base plate for the fixed pivot, and obstacles
+//! the moving links must clear over the whole travel (parry shapes).
+//!
+//! # Clearance over the whole travel, not only at samples
+//!
+//! The links are capsules `link_width` wide around their center lines. The
+//! travel is checked at `travel_samples` input angles, and between them by a
+//! bound on how far any point of a link can move: a rigid link's velocity
+//! field is affine, so along a link no point moves faster than its faster
+//! end. The crank tip moves `L2 dtheta`; the rocker tip moves
+//! `L4 dtheta4 = L2 dtheta |sin(theta2 - theta3)| / |sin mu|`, at most
+//! `L2 dtheta / sin mu_min` with `mu_min` the minimum transmission angle
+//! over the travel (exact, [`LinkageFigures::min_transmission`]). So within
+//! `h` of an input angle every point of every moving link stays within
+//!
+//! ```text
+//! r(h) = L2 h / sin mu_min
+//! ```
+//!
+//! of where it is at that angle. An interval of the travel is clear when
+//! the capsules at its middle, inflated by `r(half width)`, miss every
+//! obstacle; when they do not, the plain capsules are tested (a hit there
+//! is a real collision) and otherwise the interval is halved, down to
+//! [`Constraints::MIN_STEP`]. Below that the linkage counts as colliding:
+//! "acceptable" never admits a linkage that is not certified clear.
+
+use nalgebra::Point2;
+use parry2d_f64::math::Vector as PVector;
+use parry2d_f64::query::intersection_test;
+use parry2d_f64::shape::{Capsule, ConvexPolygon};
+use parry2d_f64::utils::point_in_poly2d;
+
+use crate::error::{InvalidInput, PolygonProblem, Result, bounded, count_in, in_range};
+use crate::geom::cross;
+use crate::linkage::AssemblyMode;
+use crate::synthesis::SynthesizedFourBar;
+use crate::tolerance;
+
+/// Where the linkage may be: a base plate for the fixed pivot being placed,
+/// obstacles the moving links must clear.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Constraints {
+    /// The fixed pivot being placed must lie inside this simple polygon
+    /// (vertices in order); `None`: anywhere.
+    pub base_plate: Option<Vec<Point2<f64>>>,
+    /// Convex obstacles (vertices in any order: their convex hull is used;
+    /// give a non-convex obstacle as several convex pieces).
+    pub obstacles: Vec<Vec<Point2<f64>>>,
+    /// The width of the moving links (crank, coupler, rocker), modelled as
+    /// capsules of this diameter around their center lines (at least 0).
+    pub link_width: f64,
+    /// At how many evenly spaced input angles of the travel the clearance
+    /// check starts (2 to [`Constraints::MAX_TRAVEL_SAMPLES`], default 64);
+    /// between them it refines where needed (module docs).
+    pub travel_samples: usize,
+}
+
+impl Default for Constraints {
+    fn default() -> Self {
+        Constraints {
+            base_plate: None,
+            obstacles: Vec::new(),
+            link_width: 0.0,
+            travel_samples: Self::DEFAULT_TRAVEL_SAMPLES,
+        }
+    }
+}
+
+impl Constraints {
+    /// The default number of travel samples.
+    pub const DEFAULT_TRAVEL_SAMPLES: usize = 64;
+
+    /// The most travel samples (the work per linkage grows with them).
+    pub const MAX_TRAVEL_SAMPLES: usize = 4096;
+
+    /// The largest magnitude of a vertex coordinate.
+    pub const MAX_COORDINATE: f64 = 1e100;
+
+    /// The smallest input step (radians) of the clearance refinement: an
+    /// interval that cannot be certified clear at this width counts as a
+    /// collision.
+    pub const MIN_STEP: f64 = 1e-9;
+
+    /// No constraints.
+    pub fn none() -> Self {
+        Constraints::default()
+    }
+
+    /// Validates the constraints and builds parry shapes.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput`] for a non-finite or too large vertex, a negative or
+    /// non-finite `link_width`, a travel sample count out of range, a base
+    /// plate that is not a simple polygon with an area, or an obstacle
+    /// without an area.
+    pub(crate) fn prepare(&self) -> Result<Prepared> {
+        const RESCALE: &str = "rescale the constraints with the task";
+        for p in self
+            .base_plate
+            .iter()
+            .flatten()
+            .chain(self.obstacles.iter().flatten())
+        {
+            bounded("constraint vertex x", p.x, Self::MAX_COORDINATE, RESCALE)?;
+            bounded("constraint vertex y", p.y, Self::MAX_COORDINATE, RESCALE)?;
+        }
+        let width = in_range("link_width", self.link_width, 0.0, Self::MAX_COORDINATE, "")?;
+        let samples = count_in(
+            "travel_samples",
+            self.travel_samples,
+            2,
+            Self::MAX_TRAVEL_SAMPLES,
+        )?;
+        if let Some(plate) = &self.base_plate {
+            check_polygon("base_plate", plate, true)?;
+        }
+        let mut obstacles = Vec::with_capacity(self.obstacles.len());
+        for (k, o) in self.obstacles.iter().enumerate() {
+            // parry's hull asserts on fewer than two distinct points: check
+            // that the vertices span an area first.
+            let name = || format!("obstacle {}", k + 1);
+            check_polygon(&name(), o, false)?;
+            let pts: Vec<PVector> = o.iter().map(|p| PVector::new(p.x, p.y)).collect();
+            let hull = ConvexPolygon::from_convex_hull(&pts).ok_or(InvalidInput::Polygon {
+                name: name(),
+                vertices: o.len(),
+                problem: PolygonProblem::NoArea,
+            })?;
+            obstacles.push(hull);
+        }
+        Ok(Prepared {
+            plate: self
+                .base_plate
+                .as_ref()
+                .map(|p| p.iter().map(|q| PVector::new(q.x, q.y)).collect()),
+            obstacles,
+            radius: 0.5 * width,
+            samples,
+        })
+    }
+}
+
+/// Checks that a polygon has three vertices spanning an area and, when
+/// `simple` is asked for, that no two of its edges cross.
+fn check_polygon(name: &str, pts: &[Point2<f64>], simple: bool) -> Result<(), InvalidInput> {
+    let bad = |problem| InvalidInput::Polygon {
+        name: name.to_owned(),
+        vertices: pts.len(),
+        problem,
+    };
+    if pts.len() < 3 {
+        return Err(bad(PolygonProblem::TooFewVertices));
+    }
+    if !spans_area(pts) {
+        return Err(bad(PolygonProblem::NoArea));
+    }
+    if simple && self_intersects(pts) {
+        return Err(bad(PolygonProblem::SelfIntersecting));
+    }
+    Ok(())
+}
+
+/// Whether the points span an area: not all on one line (relative to their
+/// extent, [`tolerance::COLLINEAR`]).
+fn spans_area(pts: &[Point2<f64>]) -> bool {
+    let Some(&p0) = pts.first() else {
+        return false;
+    };
+    let far = pts
+        .iter()
+        .max_by(|a, b| {
+            (*a - p0)
+                .norm_squared()
+                .total_cmp(&(*b - p0).norm_squared())
+        })
+        .copied()
+        .unwrap_or(p0);
+    let d = far - p0;
+    let extent = d.norm_squared();
+    extent > 0.0
+        && pts
+            .iter()
+            .any(|q| cross(d, q - p0).abs() > tolerance::COLLINEAR * extent)
+}
+
+/// Whether two edges of the closed polygon cross or touch (adjacent edges
+/// share only their common vertex).
+fn self_intersects(pts: &[Point2<f64>]) -> bool {
+    let n = pts.len();
+    let edge = |i: usize| (pts[i], pts[(i + 1) % n]);
+    let orient = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| cross(b - a, c - a);
+    let on = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| {
+        orient(a, b, c) == 0.0
+            && c.x >= a.x.min(b.x)
+            && c.x <= a.x.max(b.x)
+            && c.y >= a.y.min(b.y)
+            && c.y <= a.y.max(b.y)
+    };
+    let meet = |(a, b): (Point2<f64>, Point2<f64>), (c, d): (Point2<f64>, Point2<f64>)| {
+        let (d1, d2) = (orient(c, d, a), orient(c, d, b));
+        let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+        ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+            && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+            || on(c, d, a)
+            || on(c, d, b)
+            || on(a, b, c)
+            || on(a, b, d)
+    };
+    for i in 0..n {
+        for j in i + 1..n {
+            if j == i + 1 || (i == 0 && j == n - 1) {
+                // Adjacent edges share a vertex; they overlap only if they
+                // fold back on each other along one line.
+                let (shared, p, q) = if j == i + 1 {
+                    (pts[j], pts[i], pts[(j + 1) % n])
+                } else {
+                    (pts[0], pts[1], pts[n - 1])
+                };
+                let (u, v) = (p - shared, q - shared);
+                if cross(u, v) == 0.0 && u.dot(&v) > 0.0 {
+                    return true;
+                }
+            } else if meet(edge(i), edge(j)) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Constraints as parry shapes.
+pub(crate) struct Prepared {
+    plate: Option<Vec<PVector>>,
+    pub(crate) obstacles: Vec<ConvexPolygon>,
+    radius: f64,
+    samples: usize,
+}
+
+impl Prepared {
+    /// Whether the fixed pivot `p` is on the base plate.
+    pub(crate) fn pivot_ok(&self, p: Point2<f64>) -> bool {
+        self.plate
+            .as_ref()
+            .is_none_or(|poly| point_in_poly2d(PVector::new(p.x, p.y), poly))
+    }
+
+    /// Whether the moving links, inflated by `extra`, clear every obstacle
+    /// at input angle `theta` (`None`: the loop does not close there).
+    fn clear_at(
+        &self,
+        fb: &SynthesizedFourBar,
+        mode: AssemblyMode,
+        theta: f64,
+        extra: f64,
+    ) -> Option<bool> {
+        let j = fb.fourbar.joints_at(theta, mode).ok()?;
+        let v = |p: Point2<f64>| PVector::new(p.x, p.y);
+        let identity = parry2d_f64::math::Pose::identity();
+        let links = [
+            (j.input_pivot, j.crank_joint),
+            (j.crank_joint, j.rocker_joint),
+            (j.output_pivot, j.rocker_joint),
+        ];
+        for (a, b) in links {
+            let cap = Capsule::new(v(a), v(b), self.radius + extra);
+            for o in &self.obstacles {
+                let hit = intersection_test(&identity, &cap, &identity, o)
+                    .map_or(true, |r| r.intersecting);
+                if hit {
+                    return Some(false);
+                }
+            }
+        }
+        Some(true)
+    }
+
+    /// Whether the moving links clear every obstacle over the whole travel
+    /// (module docs).
+    pub(crate) fn clearance_ok(&self, fb: &SynthesizedFourBar) -> bool {
+        if self.obstacles.is_empty() {
+            return true;
+        }
+        let (Some(Some(mode)), Some((start, span))) = (fb.modes().first().copied(), fb.travel())
+        else {
+            return false;
+        };
+        let sin_mu = fb.figures.min_transmission.sin();
+        if sin_mu.is_nan() || sin_mu <= 0.0 {
+            return false;
+        }
+        // Within `h` of a checked angle no point of a link moves farther
+        // than `rate * h`.
+        let rate = fb.fourbar.crank() / sin_mu;
+        let n = self.samples;
+        let step = span / n as f64;
+        // n intervals of width |step|, each checked at its middle.
+        (0..n).all(|k| {
+            let mid = start + step * (k as f64 + 0.5);
+            self.interval_clear(fb, mode, mid, 0.5 * step.abs(), rate)
+        })
+    }
+
+    /// Whether the travel within `half` of `mid` is clear, refining by
+    /// halves where the inflated test cannot decide.
+    fn interval_clear(
+        &self,
+        fb: &SynthesizedFourBar,
+        mode: AssemblyMode,
+        mid: f64,
+        half: f64,
+        rate: f64,
+    ) -> bool {
+        match self.clear_at(fb, mode, mid, rate * half) {
+            Some(true) => return true,
+            None => return false,
+            Some(false) => {}
+        }
+        // A hit of the plain capsules is a collision.
+        if self.clear_at(fb, mode, mid, 0.0) != Some(true) || half < Constraints::MIN_STEP {
+            return false;
+        }
+        let q = 0.5 * half;
+        self.interval_clear(fb, mode, mid - q, q, rate)
+            && self.interval_clear(fb, mode, mid + q, q, rate)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pts(v: &[[f64; 2]]) -> Vec<Point2<f64>> {
+        v.iter().map(|&[x, y]| Point2::new(x, y)).collect()
+    }
+
+    #[test]
+    fn polygons_are_checked() {
+        let square = pts(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+        assert!(check_polygon("p", &square, true).is_ok());
+        let bow = pts(&[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]]);
+        let e = check_polygon("p", &bow, true).unwrap_err();
+        assert!(matches!(
+            e,
+            InvalidInput::Polygon {
+                problem: PolygonProblem::SelfIntersecting,
+                ..
+            }
+        ));
+        // A convex obstacle's vertices may come in any order.
+        assert!(check_polygon("o", &bow, false).is_ok());
+        let line = pts(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]);
+        assert!(check_polygon("p", &line, true).is_err());
+        assert!(check_polygon("p", &line[..2], true).is_err());
+        let spike = pts(&[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 1.0]]);
+        assert!(check_polygon("p", &spike, true).is_err());
+    }
+
+    #[test]
+    fn bad_numbers_are_refused() {
+        let c = |w: f64, n: usize| Constraints {
+            link_width: w,
+            travel_samples: n,
+            ..Constraints::default()
+        };
+        assert!(c(0.0, 64).prepare().is_ok());
+        assert!(c(-1.0, 64).prepare().is_err());
+        assert!(c(f64::NAN, 64).prepare().is_err());
+        assert!(c(f64::INFINITY, 64).prepare().is_err());
+        assert!(c(0.1, 1).prepare().is_err());
+        assert!(c(0.1, 10_000_000).prepare().is_err());
+    }
+}

@@ -1,0 +1,170 @@
+//! The designer's limits behind the `acceptable` mask.
+
+use crate::error::{InvalidInput, Result, in_range};
+use crate::linkage::{Direction, LinkageFigures};
+
+/// Which kind of input link a design requires.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum InputRequirement {
+    /// Any input that carries the coupler through the poses.
+    #[default]
+    Any,
+    /// The input must turn fully (a crank: motor-driven without reversing).
+    Crank,
+    /// The input must rock (not turn fully).
+    Rocker,
+}
+
+impl InputRequirement {
+    /// `"any"`, `"crank"` or `"rocker"`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            InputRequirement::Any => "any",
+            InputRequirement::Crank => "crank",
+            InputRequirement::Rocker => "rocker",
+        }
+    }
+}
+
+impl core::str::FromStr for InputRequirement {
+    type Err = InvalidInput;
+
+    fn from_str(s: &str) -> Result<Self, InvalidInput> {
+        match s.to_ascii_lowercase().as_str() {
+            "any" => Ok(InputRequirement::Any),
+            "crank" => Ok(InputRequirement::Crank),
+            "rocker" => Ok(InputRequirement::Rocker),
+            _ => Err(InvalidInput::UnknownName {
+                what: "input requirement",
+                expected: "\"any\", \"crank\" or \"rocker\"",
+                found: s.to_owned(),
+            }),
+        }
+    }
+}
+
+/// The designer's limits behind the `acceptable` mask.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DesignLimits {
+    /// The smallest acceptable transmission angle over the travel, radians
+    /// (default 30 degrees, a common rule of thumb).
+    pub min_transmission: f64,
+    /// The largest acceptable ratio of the longest to the shortest link
+    /// (default 10).
+    pub max_link_ratio: f64,
+    /// Which input is required (default: any).
+    pub input: InputRequirement,
+}
+
+impl Default for DesignLimits {
+    fn default() -> Self {
+        DesignLimits {
+            min_transmission: 30f64.to_radians(),
+            max_link_ratio: 10.0,
+            input: InputRequirement::Any,
+        }
+    }
+}
+
+impl DesignLimits {
+    /// Limits with the transmission angle in degrees (as designers give
+    /// it), validated.
+    ///
+    /// # Errors
+    ///
+    /// As [`DesignLimits::validate`], with the angle named
+    /// `min_transmission_deg` and its range in degrees.
+    pub fn from_degrees(
+        min_transmission_deg: f64,
+        max_link_ratio: f64,
+        input: InputRequirement,
+    ) -> Result<Self> {
+        in_range(
+            "min_transmission_deg",
+            min_transmission_deg,
+            0.0,
+            90.0,
+            " degrees",
+        )?;
+        let limits = DesignLimits {
+            min_transmission: min_transmission_deg.to_radians(),
+            max_link_ratio,
+            input,
+        };
+        limits.validate()?;
+        Ok(limits)
+    }
+
+    /// Checks the limits: a transmission angle in `[0, pi/2]`, a link ratio
+    /// of at least 1 (infinity allowed: no limit).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::OutsideRange`] when a limit is NaN or out of its range.
+    pub fn validate(&self) -> Result<()> {
+        in_range(
+            "min_transmission",
+            self.min_transmission,
+            0.0,
+            core::f64::consts::FRAC_PI_2,
+            " radians",
+        )?;
+        in_range(
+            "max_link_ratio",
+            self.max_link_ratio,
+            1.0,
+            f64::INFINITY,
+            "",
+        )?;
+        Ok(())
+    }
+
+    /// Whether a linkage's figures meet the limits, its motion being
+    /// feasible (branch-free, one circuit, a driving direction).
+    pub fn accepts(&self, f: &LinkageFigures) -> bool {
+        f.branch_free() && self.meets(f)
+    }
+
+    /// [`accepts`](Self::accepts) but for the branch flag, which a
+    /// three-pose driving map takes from its exact conic sweep instead of
+    /// the modes: one circuit, a driving direction, the transmission angle,
+    /// the link ratio and the input kind. The one acceptance test of the
+    /// solution maps and the rankings.
+    pub fn meets(&self, f: &LinkageFigures) -> bool {
+        f.one_circuit
+            && f.direction != Direction::None
+            && f.min_transmission >= self.min_transmission
+            && f.link_ratio <= self.max_link_ratio
+            && match self.input {
+                InputRequirement::Any => true,
+                InputRequirement::Crank => f.input_full,
+                InputRequirement::Rocker => !f.input_full,
+            }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn limits_validate() {
+        assert!(DesignLimits::default().validate().is_ok());
+        let l = |t: f64, r: f64| DesignLimits {
+            min_transmission: t,
+            max_link_ratio: r,
+            input: InputRequirement::Any,
+        };
+        assert!(l(2.0, 10.0).validate().is_err());
+        assert!(l(0.1, 0.5).validate().is_err());
+        assert!(l(0.1, f64::NAN).validate().is_err());
+        assert!(l(0.1, f64::INFINITY).validate().is_ok());
+        assert!(DesignLimits::from_degrees(95.0, 10.0, InputRequirement::Any).is_err());
+        let e = DesignLimits::from_degrees(f64::NAN, 10.0, InputRequirement::Any).unwrap_err();
+        assert!(e.to_string().contains("min_transmission_deg"), "{e}");
+        assert_eq!(
+            "Crank".parse::<InputRequirement>().unwrap(),
+            InputRequirement::Crank
+        );
+    }
+}

@@ -1,0 +1,405 @@
+//! The solution-space map: one value per grid sample of every figure.
+//!
+//! The columns are defined once, by [`solution_map_columns!`](crate::solution_map_columns):
+//! the core's [`Columns`] and per-sample record are generated from that
+//! list, and so is the Python binding's class.
+
+use nalgebra::Point2;
+
+use crate::design::constraints::Prepared;
+use crate::design::{Constraints, DesignLimits};
+use crate::engine::{Control, Rows, run_blocks};
+use crate::error::{InvalidInput, Result, try_vec};
+use crate::geom::Grid;
+use crate::linkage::LinkageFigures;
+use crate::linkage::figures::figures;
+use crate::synthesis::three::{Cremona, Filemon, Method};
+use crate::synthesis::{Dyad, Motion, SynthesizedFourBar, Task};
+use crate::tolerance;
+
+/// Calls `$callback! { ... }` with the solution map's columns, each as
+/// `/// docs  name: type = value where the linkage does not exist`, in
+/// order. The one list of the columns: the core's [`Columns`] and the
+/// Python binding's `SolutionMap` class are generated from it.
+#[macro_export]
+macro_rules! solution_map_columns {
+    ($callback:ident) => {
+        $callback! {
+            /// The linkage exists: the candidate has a circle point and every
+            /// link a nonzero length. Where false, the other columns hold
+            /// false, 0, NaN or `GRASHOF_NONE`.
+            valid: bool = false,
+            /// Free of the branch defect (for candidate driving pivots,
+            /// exactly the `conic` branch map).
+            branch_free: bool = false,
+            /// Grashof class as the index of its class in `Grashof::ALL`;
+            /// `SolutionMap::GRASHOF_NONE` (255) where invalid.
+            grashof: u8 = $crate::SolutionMap::GRASHOF_NONE,
+            /// The driving link turns fully.
+            input_full: bool = false,
+            /// The input rotation that carries the coupler through the poses
+            /// in order: `1` counter-clockwise, `-1` clockwise, `0` none
+            /// (`Direction::code`).
+            direction: i8 = 0,
+            /// The input angles at the poses lie on one circuit.
+            one_circuit: bool = false,
+            /// Minimum transmission angle over the travel, radians; NaN where
+            /// there is no travel or no linkage.
+            min_transmission_rad: f32 = f32::NAN,
+            /// Longest over shortest link; NaN where there is no linkage.
+            link_ratio: f32 = f32::NAN,
+            /// Meets the limits and the constraints, with a feasible,
+            /// branch-free motion.
+            acceptable: bool = false,
+        }
+    };
+}
+
+macro_rules! define_columns {
+    ($($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
+        /// The columns of a solution map: one value per grid sample,
+        /// row-major like the branch map.
+        #[derive(Debug, Clone, PartialEq)]
+        pub struct Columns {
+            $($(#[$doc])* pub $name: Vec<$ty>,)*
+        }
+
+        impl Columns {
+            /// The names of the columns, in order.
+            pub const NAMES: &'static [&'static str] = &[$(stringify!($name)),*];
+
+            /// `n` samples of "no linkage".
+            fn new(n: usize) -> Result<Self> {
+                Ok(Columns {
+                    $($name: try_vec("a solution map", n, $invalid)?,)*
+                })
+            }
+
+            fn rows(&mut self, nx: usize) -> ColumnsMut<'_> {
+                ColumnsMut {
+                    $($name: &mut self.$name,)*
+                    nx,
+                }
+            }
+        }
+
+        /// One sample's values.
+        #[derive(Clone, Copy)]
+        struct Sample {
+            $($name: $ty,)*
+        }
+
+        impl Sample {
+            const INVALID: Sample = Sample {
+                $($name: $invalid,)*
+            };
+        }
+
+        /// A block of rows of every column.
+        struct ColumnsMut<'a> {
+            $($name: &'a mut [$ty],)*
+            nx: usize,
+        }
+
+        impl Rows for ColumnsMut<'_> {
+            fn split_rows(self, rows: usize) -> (Self, Self) {
+                let at = (rows * self.nx).min(self.valid.len());
+                $(let $name = self.$name.split_at_mut(at);)*
+                (
+                    ColumnsMut { $($name: $name.0,)* nx: self.nx },
+                    ColumnsMut { $($name: $name.1,)* nx: self.nx },
+                )
+            }
+        }
+
+        impl ColumnsMut<'_> {
+            #[inline(always)]
+            fn set(&mut self, i: usize, s: Sample) {
+                $(self.$name[i] = s.$name;)*
+            }
+        }
+    };
+}
+
+crate::solution_map_columns!(define_columns);
+
+/// Which pivot a solution map varies.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Varying {
+    /// Candidate driving center points `A0`, with this driven dyad.
+    Driving {
+        /// The fixed driven dyad `(C0, C1)`.
+        driven: Dyad,
+    },
+    /// Candidate driven center points `C0`, with this driving dyad.
+    Driven {
+        /// The fixed driving dyad `(A0, A1)`.
+        driving: Dyad,
+    },
+}
+
+impl Varying {
+    /// `"driving"` or `"driven"`: which center point varies.
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Varying::Driving { .. } => "driving",
+            Varying::Driven { .. } => "driven",
+        }
+    }
+
+    /// The fixed dyad.
+    pub fn fixed(&self) -> Dyad {
+        match *self {
+            Varying::Driving { driven } => driven,
+            Varying::Driven { driving } => driving,
+        }
+    }
+}
+
+/// What a solution map was computed for: the grid, the task, which pivot
+/// varies, and the limits and constraints. Holds the per-sample logic
+/// (the linkage of a sample, its margin, the best pivots), so that the
+/// columns can live elsewhere (for example in NumPy).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapContext {
+    /// The grid.
+    pub grid: Grid,
+    /// The task.
+    pub task: Task,
+    /// Which pivot varies, and the fixed dyad.
+    pub varying: Varying,
+    /// The limits behind `acceptable`.
+    pub limits: DesignLimits,
+    /// The constraints behind `acceptable`.
+    pub constraints: Constraints,
+}
+
+/// The solution-space map: what it was computed for, and its columns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolutionMap {
+    /// What the map was computed for.
+    pub context: MapContext,
+    /// One value per grid sample of every figure.
+    pub columns: Columns,
+}
+
+impl SolutionMap {
+    /// The Grashof code of an invalid sample.
+    pub const GRASHOF_NONE: u8 = 255;
+}
+
+impl MapContext {
+    /// The candidate center point of sample `k` (row-major index).
+    pub fn point(&self, k: usize) -> Point2<f64> {
+        self.grid.point(k % self.grid.nx(), k / self.grid.nx())
+    }
+
+    /// The linkage of sample `k`.
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::four_bar`] (for an invalid sample).
+    pub fn linkage(&self, k: usize) -> Result<SynthesizedFourBar> {
+        let p = self.point(k);
+        let d = self.task.dyad_from_center(p)?;
+        match self.varying {
+            Varying::Driving { driven } => self.task.four_bar(&d, &driven),
+            Varying::Driven { driving } => self.task.four_bar(&driving, &d),
+        }
+    }
+}
+
+/// What the per-sample evaluation of either map shares: the task's
+/// motion and maps, and the prepared limits and constraints.
+struct Sampler<'a> {
+    task: &'a Task,
+    cremona: &'a Cremona,
+    motion: &'a Motion,
+    tiny: f64,
+    limits: &'a DesignLimits,
+    prepared: Prepared,
+}
+
+impl<'a> Sampler<'a> {
+    fn new(task: &'a Task, limits: &'a DesignLimits, constraints: &Constraints) -> Result<Self> {
+        limits.validate()?;
+        Ok(Sampler {
+            task,
+            cremona: task.three_poses("the solution map")?,
+            motion: task.motion(),
+            tiny: tolerance::POINT * task.scale(),
+            limits,
+            prepared: constraints.prepare()?,
+        })
+    }
+
+    /// The moving pivot at the three poses of the dyad centered at `p` (its
+    /// circle point by the closed form), or `None` where it does not exist.
+    #[inline(always)]
+    fn moving_pivots(&self, p: Point2<f64>) -> Option<[Point2<f64>; 3]> {
+        let q = self.cremona.circle_point_fast(p)?;
+        Some([q, self.motion.first_to(1, q), self.motion.first_to(2, q)])
+    }
+
+    /// The moving pivot of a fixed dyad at the three poses.
+    fn fixed_pivots(&self, d: &Dyad) -> [Point2<f64>; 3] {
+        [0, 1, 2].map(|k| self.motion.first_to(k, d.circle))
+    }
+
+    /// The sample for figures `fig` with branch flag `branch_free`, where
+    /// `candidate` is the varying center point and `driving`, `driven` the
+    /// linkage's dyads (for the constraints).
+    fn sample(
+        &self,
+        fig: Option<LinkageFigures>,
+        branch_free: bool,
+        candidate: Point2<f64>,
+        driving: Dyad,
+        driven: Dyad,
+    ) -> Sample {
+        let Some(f) = fig else {
+            return Sample::INVALID;
+        };
+        let acceptable = branch_free
+            && self.limits.meets(&f)
+            && self.prepared.pivot_ok(candidate)
+            && (self.prepared.obstacles.is_empty()
+                || self
+                    .task
+                    .four_bar(&driving, &driven)
+                    .is_ok_and(|fb| self.prepared.clearance_ok(&fb)));
+        Sample {
+            valid: true,
+            branch_free,
+            grashof: f.grashof.code(),
+            input_full: f.input_full,
+            direction: f.direction.code(),
+            one_circuit: f.one_circuit,
+            min_transmission_rad: f.min_transmission as f32,
+            link_ratio: f.link_ratio as f32,
+            acceptable,
+        }
+    }
+}
+
+/// Fills a map's columns from `eval(k, point)`, over blocks of rows.
+fn fill(
+    grid: &Grid,
+    columns: &mut Columns,
+    control: &Control<'_>,
+    eval: impl Fn(usize, Point2<f64>) -> Sample + Sync,
+) -> Result<()> {
+    let nx = grid.nx();
+    run_blocks(
+        nx,
+        grid.ny(),
+        columns.rows(nx),
+        control,
+        |j0, mut block, rows| {
+            for r in 0..rows {
+                let j = j0 + r;
+                let y = grid.y(j);
+                for i in 0..nx {
+                    let s = eval(j * nx + i, Point2::new(grid.x(i), y));
+                    block.set(r * nx + i, s);
+                }
+            }
+        },
+    )
+}
+
+impl Filemon {
+    /// The solution-space map over candidate driving center points `A0`
+    /// on `grid` (see [`design`](crate::design)), following `control`. The
+    /// branch-free flag is exactly the `conic` branch map; the other
+    /// figures come from the linkage at each sample.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput`] for invalid limits or constraints;
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when the columns
+    /// cannot be allocated; [`Error::Cancelled`](crate::Error::Cancelled).
+    pub fn solution_map(
+        &self,
+        grid: &Grid,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        control: &Control<'_>,
+    ) -> Result<SolutionMap> {
+        let sampler = Sampler::new(self.task(), limits, constraints)?;
+        let driven = self.driven();
+        let mut branch = try_vec("a branch map", grid.len(), false)?;
+        self.branch_map_into(grid, Method::Conic, &mut branch, control)?;
+        let mut columns = Columns::new(grid.len())?;
+        let c = sampler.fixed_pivots(&driven);
+        fill(grid, &mut columns, control, |k, a0| {
+            let Some(a) = sampler.moving_pivots(a0) else {
+                return Sample::INVALID;
+            };
+            let fig = figures::<false, 3>(a0, &a, driven.center, &c, sampler.tiny);
+            sampler.sample(fig, branch[k], a0, Dyad::new(a0, a[0]), driven)
+        })?;
+        Ok(SolutionMap {
+            context: MapContext {
+                grid: *grid,
+                task: *self.task(),
+                varying: Varying::Driving { driven },
+                limits: *limits,
+                constraints: constraints.clone(),
+            },
+            columns,
+        })
+    }
+}
+
+impl Task {
+    /// The solution-space map over candidate driven center points `C0`,
+    /// with a fixed driving dyad: the other direction of
+    /// [`Filemon::solution_map`], so a designer can iterate either way. The
+    /// branch-free flag is the assembly-mode test at the three poses.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput`] for invalid limits or constraints, or a driving
+    /// dyad that is not a dyad of this task; as [`Filemon::solution_map`].
+    pub fn driven_solution_map(
+        &self,
+        driving: &Dyad,
+        grid: &Grid,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        control: &Control<'_>,
+    ) -> Result<SolutionMap> {
+        let sampler = Sampler::new(self, limits, constraints)?;
+        let d = self.dyad_from_center(driving.center)?;
+        let spread = (d.circle - driving.circle).norm() / (self.scale() + driving.length());
+        if spread.is_nan() || spread > tolerance::DYAD {
+            return Err(InvalidInput::NotADyad {
+                which: "driving dyad",
+                spread,
+                tolerance: tolerance::DYAD,
+            }
+            .into());
+        }
+        let mut columns = Columns::new(grid.len())?;
+        let a = sampler.fixed_pivots(driving);
+        fill(grid, &mut columns, control, |_, c0| {
+            let Some(c) = sampler.moving_pivots(c0) else {
+                return Sample::INVALID;
+            };
+            let fig = figures::<true, 3>(driving.center, &a, c0, &c, sampler.tiny);
+            let free = fig.is_some_and(|f| f.branch_free());
+            sampler.sample(fig, free, c0, *driving, Dyad::new(c0, c[0]))
+        })?;
+        Ok(SolutionMap {
+            context: MapContext {
+                grid: *grid,
+                task: *self,
+                varying: Varying::Driven { driving: *driving },
+                limits: *limits,
+                constraints: constraints.clone(),
+            },
+            columns,
+        })
+    }
+}

@@ -1,0 +1,35 @@
+//! The designer's solution-space map: from branch-free to buildable and
+//! good.
+//!
+//! The paper stops at branch-free and names Grashof type and order as
+//! future work. For every candidate driving center point `A0` on a grid
+//! (the same grid as the branch map), [`Filemon::solution_map`](crate::Filemon::solution_map) gives:
+//!
+//! * whether the linkage exists (a circle point, links of nonzero length);
+//! * the branch-free flag (exactly the branch map's);
+//! * the Grashof class, and whether the driving link turns fully;
+//! * order and circuit: the input rotation direction that carries the
+//!   coupler from pose 1 through pose 2 to pose 3, or none; for a rocker
+//!   input, whether the three input angles lie on one circuit (one arc of
+//!   the input range) with pose 2 between poses 1 and 3;
+//! * the minimum transmission angle over the whole travel from pose 1
+//!   through pose 2 to pose 3 (not only at the poses);
+//! * the ratio of the longest to the shortest link;
+//! * an `acceptable` mask from [`DesignLimits`] and [`Constraints`].
+//!
+//! [`Task::driven_solution_map`](crate::Task::driven_solution_map) does the same the other way round: a
+//! fixed driving dyad, candidate driven center points.
+//!
+//! How each figure is computed is in [`linkage::figures`](crate::linkage::LinkageFigures);
+//! the constraints, the clearance check and its bound are in
+//! [`Constraints`]; the maps run on the tiled [`engine`](crate::engine).
+
+mod constraints;
+mod limits;
+mod map;
+mod rank;
+
+pub use constraints::Constraints;
+pub use limits::{DesignLimits, InputRequirement};
+pub use map::{Columns, MapContext, SolutionMap, Varying};
+pub use rank::{Pivot, RankBy, RankColumns};

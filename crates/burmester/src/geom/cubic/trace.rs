@@ -1,0 +1,864 @@
+//! Tracing a cubic through the pencil of lines at one of its points (see
+//! the docs of [`crate::geom::cubic`]).
+
+use core::f64::consts::PI;
+
+use nalgebra::{Point2, Vector2};
+
+use super::Cubic;
+use super::roots::{form_eval, form_mul, form_roots, form_sub, real_roots, roots_in};
+use crate::geom::{Conic, Viewport};
+
+/// The traced curve: every real component of the cubic, with its
+/// polylines inside the viewport.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CubicTrace {
+    /// The real components of the curve (in view or not; a component out of
+    /// view has no polylines). A non-singular cubic has one or two.
+    pub components: Vec<CubicComponent>,
+    /// The chord tolerance that was used, in the units of the plane.
+    pub tolerance: f64,
+}
+
+impl CubicTrace {
+    /// How many components have a part in view.
+    pub fn in_view(&self) -> usize {
+        self.components
+            .iter()
+            .filter(|c| !c.polylines.is_empty())
+            .count()
+    }
+
+    /// Every polyline of every component.
+    pub fn polylines(&self) -> Vec<Vec<Point2<f64>>> {
+        self.components
+            .iter()
+            .flat_map(|c| c.polylines.iter().cloned())
+            .collect()
+    }
+}
+
+/// One real component of a cubic (a closed loop of the projective curve).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CubicComponent {
+    /// Its pieces inside the viewport, each from edge to edge (or one
+    /// closed polyline, last point equal to the first, when the whole
+    /// component is in view).
+    pub polylines: Vec<Vec<Point2<f64>>>,
+    /// Whether it stays finite (an oval); `false` for a branch that runs to
+    /// infinity.
+    pub bounded: bool,
+    /// Whether it lies wholly inside the viewport (then it is bounded and
+    /// has one closed polyline).
+    pub closed: bool,
+}
+
+/// Which root of the pencil's quadratic.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Sheet {
+    Plus,
+    Minus,
+}
+
+/// The pencil of lines through a point `q` of the curve (local frame).
+struct Pencil<'a> {
+    cubic: &'a Cubic,
+    q: Vector2<f64>,
+    alpha: [f64; 4],
+    beta: [f64; 3],
+    gamma: [f64; 2],
+    /// The direction (angle) of the tangent at `q`.
+    tangent: f64,
+}
+
+impl Pencil<'_> {
+    fn coefficients(&self, s: f64) -> (Vector2<f64>, f64, f64, f64) {
+        let (sn, cs) = s.sin_cos();
+        let a = form_eval(&self.alpha, cs, sn);
+        let b = form_eval(&self.beta, cs, sn);
+        let g = form_eval(&self.gamma, cs, sn);
+        (Vector2::new(cs, sn), a, b, g)
+    }
+
+    fn delta(&self, s: f64) -> f64 {
+        let (_, a, b, g) = self.coefficients(s);
+        b * b - 4.0 * a * g
+    }
+
+    /// `(t+, t-)` along the direction `s`; `tangent` forces the double root
+    /// (a loop's turning point, where `Delta = 0`).
+    fn roots(&self, s: f64, tangent: bool) -> (Vector2<f64>, f64, f64) {
+        let (w, a, b, g) = self.coefficients(s);
+        if tangent {
+            let t0 = if 2.0 * a.abs() >= b.abs() {
+                -b / (2.0 * a)
+            } else {
+                -2.0 * g / b
+            };
+            return (w, t0, t0);
+        }
+        let sq = (b * b - 4.0 * a * g).max(0.0).sqrt();
+        if b >= 0.0 {
+            let q = -0.5 * (b + sq);
+            if q == 0.0 {
+                let t = if g == 0.0 { 0.0 } else { f64::INFINITY };
+                return (w, t, t);
+            }
+            (w, g / q, q / a)
+        } else {
+            let q = 0.5 * (sq - b);
+            (w, q / a, g / q)
+        }
+    }
+
+    /// The point of the curve on `sheet` along `s` (local), after one
+    /// Newton step onto the curve; `None` at infinity.
+    fn point(&self, s: f64, sheet: Sheet, tangent: bool, tol: f64) -> Option<Vector2<f64>> {
+        let (w, tp, tm) = self.roots(s, tangent);
+        let t = match sheet {
+            Sheet::Plus => tp,
+            Sheet::Minus => tm,
+        };
+        let p = self.q + w * t;
+        if !(p.x.is_finite() && p.y.is_finite()) {
+            return None;
+        }
+        Some(polish(self.cubic, p, tol))
+    }
+}
+
+/// One Newton step of `p` onto the curve along the gradient, kept only when
+/// it is a small correction (a thousandth of the chord tolerance).
+fn polish(cubic: &Cubic, p: Vector2<f64>, tol: f64) -> Vector2<f64> {
+    let f = cubic.eval_local(p);
+    let g = cubic.grad_local(p);
+    let g2 = g.norm_squared();
+    if f == 0.0 || !(g2 > 0.0) {
+        return p;
+    }
+    let step = g * (f / g2);
+    if step.norm() <= 1e-3 * tol && step.iter().all(|v| v.is_finite()) {
+        p - step
+    } else {
+        p
+    }
+}
+
+/// A loop of the projective curve, by the pencil's parameter.
+#[derive(Debug, Clone, Copy)]
+enum Kind {
+    /// `Delta > 0` for every direction: one root, `s` over half a turn
+    /// (`lambda` in `[0, 1)`, `s = pi lambda`).
+    Full(Sheet),
+    /// `Delta >= 0` on `[a, b]`: the `+` root from `a` to `b`
+    /// (`lambda` in `[0, 1]`), then the `-` root back (`lambda` in `[1, 2]`),
+    /// with `s = a + (b - a) (1 - cos(pi u)) / 2` so that the turning points
+    /// are smooth in `lambda`.
+    Interval { a: f64, b: f64 },
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Loop {
+    kind: Kind,
+    bounded: bool,
+}
+
+impl Loop {
+    fn period(&self) -> f64 {
+        match self.kind {
+            Kind::Full(_) => 1.0,
+            Kind::Interval { .. } => 2.0,
+        }
+    }
+
+    /// `(s, sheet, tangent)` at `lambda`.
+    fn at(&self, lambda: f64) -> (f64, Sheet, bool) {
+        match self.kind {
+            Kind::Full(sheet) => (PI * lambda.rem_euclid(1.0), sheet, false),
+            Kind::Interval { a, b } => {
+                let l = lambda.rem_euclid(2.0);
+                let (u, sheet) = if l <= 1.0 {
+                    (l, Sheet::Plus)
+                } else {
+                    (2.0 - l, Sheet::Minus)
+                };
+                let s = a + (b - a) * 0.5 * (1.0 - (PI * u).cos());
+                (s, sheet, u == 0.0 || u == 1.0)
+            }
+        }
+    }
+
+    /// `lambda` of the direction `s` (any angle) on `sheet`, if this loop
+    /// covers it.
+    fn lambda_of(&self, s: f64, sheet: Sheet) -> Option<f64> {
+        match self.kind {
+            Kind::Full(k) => (k == sheet).then(|| s.rem_euclid(PI) / PI),
+            Kind::Interval { a, b } => {
+                let lifted = a + (s - a).rem_euclid(PI);
+                if lifted > b {
+                    return None;
+                }
+                let u = (1.0 - 2.0 * (lifted - a) / (b - a)).clamp(-1.0, 1.0).acos() / PI;
+                Some(match sheet {
+                    Sheet::Plus => u,
+                    Sheet::Minus => 2.0 - u,
+                })
+            }
+        }
+    }
+}
+
+/// The most vertices one trace places by refinement (beyond the initial
+/// samples): a bound on the work for any input.
+const MAX_VERTICES: usize = 1 << 20;
+
+/// The local viewport and the sampling parameters.
+struct View {
+    lo: Vector2<f64>,
+    hi: Vector2<f64>,
+    radius: f64,
+    tol: f64,
+    max_chord: f64,
+    /// Vertices left to place (a bound on the work, whatever the input).
+    budget: core::cell::Cell<usize>,
+}
+
+impl View {
+    fn inside(&self, p: Vector2<f64>) -> bool {
+        p.x >= self.lo.x && p.x <= self.hi.x && p.y >= self.lo.y && p.y <= self.hi.y
+    }
+}
+
+pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace {
+    let empty = CubicTrace {
+        components: Vec::new(),
+        tolerance: tol,
+    };
+    let lo = cubic.local_of(Point2::new(viewport.xmin, viewport.ymin));
+    let hi = cubic.local_of(Point2::new(viewport.xmax, viewport.ymax));
+    let finite = lo.iter().chain(hi.iter()).all(|v| v.is_finite());
+    if !(finite && hi.x > lo.x && hi.y > lo.y) {
+        return empty;
+    }
+    let center = (lo + hi) * 0.5;
+    let radius = 0.5 * (hi - lo).norm();
+    if !(radius > 0.0 && radius.is_finite()) {
+        return empty;
+    }
+    let view = View {
+        lo,
+        hi,
+        radius,
+        // Never below a ten-billionth of the diagonal (rounding).
+        tol: (tol / cubic.scale).max(2e-10 * radius),
+        max_chord: 0.1 * radius,
+        budget: core::cell::Cell::new(MAX_VERTICES),
+    };
+    let Some(q) = choose_point(cubic, center, radius) else {
+        return empty;
+    };
+    if tangent_is_component(cubic, q, radius) {
+        if let Some(t) = trace_factored(cubic, q, viewport, &view) {
+            return t;
+        }
+    }
+    let g = cubic.grad_local(q);
+    let h = cubic.hessian_local(q);
+    let pencil = Pencil {
+        cubic,
+        q,
+        alpha: cubic.cubic_form(),
+        beta: [0.5 * h[0], h[1], 0.5 * h[2]],
+        gamma: [g.x, g.y],
+        tangent: (g.x.atan2(-g.y)).rem_euclid(PI),
+    };
+    let loops = loops(&pencil);
+    let crossings = edge_crossings(cubic, &view);
+    // Each crossing on its loop.
+    let mut on_loop: Vec<Vec<(f64, Vector2<f64>)>> = vec![Vec::new(); loops.len()];
+    for x in crossings {
+        if let Some((k, lambda)) = place(&pencil, &loops, x, &view) {
+            on_loop[k].push((lambda, x));
+        }
+    }
+    let mut components = Vec::with_capacity(loops.len() + 1);
+    for (lp, mut cs) in loops.iter().zip(on_loop) {
+        cs.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut polylines = Vec::new();
+        let mut closed = false;
+        if cs.is_empty() {
+            if lp.bounded {
+                let (s, sheet, tangent) = lp.at(0.0);
+                let (sm, sheet_m, tangent_m) = lp.at(0.5 * lp.period());
+                if let (Some(p0), Some(pm)) = (
+                    pencil.point(s, sheet, tangent, view.tol),
+                    pencil.point(sm, sheet_m, tangent_m, view.tol),
+                ) {
+                    if view.inside(pm) {
+                        polylines.extend(sample(&pencil, lp, 0.0, lp.period(), p0, p0, &view));
+                        closed = true;
+                    }
+                }
+            }
+        } else {
+            let n = cs.len();
+            for i in 0..n {
+                let (la, xa) = cs[i];
+                let (lb, xb) = if i + 1 < n {
+                    cs[i + 1]
+                } else {
+                    (cs[0].0 + lp.period(), cs[0].1)
+                };
+                if !(lb > la) {
+                    continue;
+                }
+                let (sm, sheet, tangent) = lp.at(0.5 * (la + lb));
+                match pencil.point(sm, sheet, tangent, view.tol) {
+                    Some(pm) if view.inside(pm) => {
+                        polylines.extend(sample(&pencil, lp, la, lb, xa, xb, &view));
+                    }
+                    _ => {}
+                }
+            }
+        }
+        polylines.retain(|l: &Vec<Vector2<f64>>| l.len() >= 2 && l.iter().any(|p| *p != l[0]));
+        let closed = closed && polylines.len() == 1;
+        components.push(CubicComponent {
+            polylines: polylines
+                .into_iter()
+                .map(|l| l.into_iter().map(|v| cubic.global_of(v)).collect())
+                .collect(),
+            bounded: lp.bounded,
+            closed,
+        });
+    }
+    CubicTrace {
+        components,
+        tolerance: view.tol * cubic.scale,
+    }
+}
+
+/// A point of the curve near the viewport and away from singular points:
+/// the curve's crossings of eight lines through the viewport's center,
+/// the nearest among the well-conditioned ones (gradient not small against
+/// its terms), avoiding points whose tangent line is a component.
+fn choose_point(cubic: &Cubic, center: Vector2<f64>, radius: f64) -> Option<Vector2<f64>> {
+    let mut cands = Vec::new();
+    for base in [center, Vector2::zeros()] {
+        for k in 0..8 {
+            let ang = (k as f64 + 0.3) * PI / 8.0;
+            let w = Vector2::new(ang.cos(), ang.sin()) * radius.max(f64::MIN_POSITIVE);
+            let coeffs = cubic.restriction_local(base, w);
+            for u in real_roots(&coeffs) {
+                let x = base + w * u;
+                if x.iter().all(|v| v.is_finite()) {
+                    cands.push(x);
+                }
+            }
+        }
+        if !cands.is_empty() {
+            break;
+        }
+    }
+    let score = |x: &Vector2<f64>| {
+        let g = cubic.grad_local(*x);
+        let reg = g.norm() / cubic.grad_magnitude_local(*x).max(f64::MIN_POSITIVE);
+        let line = tangent_is_component(cubic, *x, radius);
+        (reg, line, (x - center).norm())
+    };
+    let scored: Vec<_> = cands.iter().map(|x| (*x, score(x))).collect();
+    let pick = |good: &dyn Fn(&(f64, bool, f64)) -> bool| {
+        scored
+            .iter()
+            .filter(|(_, s)| good(s))
+            .min_by(|a, b| a.1.2.total_cmp(&b.1.2))
+            .map(|(x, _)| *x)
+    };
+    // Regular points off line components first, then regular points on a
+    // line component (the curve is then divided by it), then the most
+    // regular point.
+    pick(&|s| s.0 >= 1e-4 && !s.1)
+        .or_else(|| pick(&|s| s.0 >= 1e-4))
+        .or_else(|| {
+            scored
+                .iter()
+                .max_by(|a, b| a.1.0.total_cmp(&b.1.0))
+                .map(|(x, _)| *x)
+        })
+}
+
+/// Whether the tangent line of the curve at its point `x` lies on the curve
+/// (a line component): the restriction along it vanishes within rounding.
+fn tangent_is_component(cubic: &Cubic, x: Vector2<f64>, radius: f64) -> bool {
+    let g = cubic.grad_local(x);
+    let n = g.norm();
+    if !(n > 0.0) {
+        return false;
+    }
+    let radius = radius.max(f64::MIN_POSITIVE);
+    let tau = Vector2::new(-g.y, g.x) / n * radius;
+    let r = cubic.restriction_local(x, tau);
+    // The scale of the curve's terms over the disc of the viewport's radius
+    // around `x`.
+    let reach = x.map(|v| v.abs() + radius);
+    r[2].abs() + r[3].abs() <= 1e-9 * cubic.magnitude_local(reach)
+}
+
+/// A cubic with a line component through `q` (its tangent there):
+/// `f = L q2` with `L` the tangent line, traced as the line and the
+/// quotient conic (the existing [`crate::Conic`] sampler). `None` when the
+/// division leaves a remainder beyond rounding.
+fn trace_factored(
+    cubic: &Cubic,
+    q: Vector2<f64>,
+    viewport: &Viewport,
+    view: &View,
+) -> Option<CubicTrace> {
+    let g = cubic.grad_local(q);
+    let n = g.norm();
+    if !(n > 0.0) {
+        return None;
+    }
+    // L(v) = n . (v - q), unit normal n.
+    let nn = g / n;
+    let l = [-nn.dot(&q), nn.x, nn.y];
+    // The product L q2 as a linear map of q2's coefficients
+    // [1, x, y, x^2, xy, y^2] onto the cubic's [1, x, y, x^2, xy, y^2, x^3, x^2y, xy^2, y^3].
+    let mut m = nalgebra::DMatrix::<f64>::zeros(10, 6);
+    // (monomial of q2, monomial of L) -> monomial of the product.
+    const PRODUCT: [[usize; 3]; 6] = [
+        [0, 1, 2],
+        [1, 3, 4],
+        [2, 4, 5],
+        [3, 6, 7],
+        [4, 7, 8],
+        [5, 8, 9],
+    ];
+    for (col, targets) in PRODUCT.iter().enumerate() {
+        for (li, &row) in targets.iter().enumerate() {
+            m[(row, col)] += l[li];
+        }
+    }
+    let f = nalgebra::DVector::from_column_slice(&cubic.c);
+    let svd = m.clone().svd(true, true);
+    let q2 = svd.solve(&f, 1e-14).ok()?;
+    let residual = (&m * &q2 - &f).norm();
+    if !(residual <= 1e-9 * f.norm()) {
+        return None;
+    }
+    // In the conic's order [A, B, C, D, E, F] (x^2, xy, y^2, x, y, 1).
+    let qc = [q2[3], q2[4], q2[5], q2[1], q2[2], q2[0]];
+    let conic = crate::geom::Conic::local(qc, cubic.origin, cubic.scale, None);
+    let tol = view.tol * cubic.scale;
+    let mut components = Vec::new();
+    // The line, clipped to the viewport.
+    let d = Vector2::new(-nn.y, nn.x);
+    let (mut t0, mut t1) = (f64::NEG_INFINITY, f64::INFINITY);
+    let mut inside = true;
+    for i in 0..2 {
+        if d[i].abs() > 0.0 {
+            let a = (view.lo[i] - q[i]) / d[i];
+            let b = (view.hi[i] - q[i]) / d[i];
+            t0 = t0.max(a.min(b));
+            t1 = t1.min(a.max(b));
+        } else if q[i] < view.lo[i] || q[i] > view.hi[i] {
+            inside = false;
+        }
+    }
+    let line = if inside && t1 > t0 {
+        vec![vec![
+            cubic.global_of(q + d * t0),
+            cubic.global_of(q + d * t1),
+        ]]
+    } else {
+        Vec::new()
+    };
+    components.push(CubicComponent {
+        polylines: line,
+        bounded: false,
+        closed: false,
+    });
+    let bounded = conic.kind() == crate::geom::ConicKind::Ellipse;
+    // The tolerance is within the conic's accepted range (a fraction of
+    // the viewport's diagonal): an error is not expected; draw nothing then.
+    let tol = tol.clamp(
+        Conic::MIN_RELATIVE_TOLERANCE * viewport.diagonal(),
+        viewport.diagonal(),
+    );
+    for pl in conic.polylines(viewport, Some(tol)).unwrap_or_default() {
+        let closed = bounded && pl.len() > 2 && pl[0] == pl[pl.len() - 1];
+        components.push(CubicComponent {
+            polylines: vec![pl],
+            bounded,
+            closed,
+        });
+    }
+    Some(CubicTrace {
+        components,
+        tolerance: tol,
+    })
+}
+
+/// The loops of the pencil: the intervals of directions where `Delta >= 0`.
+fn loops(pencil: &Pencil<'_>) -> Vec<Loop> {
+    let delta = form_sub(
+        &form_mul(&pencil.beta, &pencil.beta),
+        &form_mul(&pencil.alpha, &pencil.gamma.map(|v| 4.0 * v)),
+    );
+    let droots = form_roots(&delta);
+    let aroots = form_roots(&pencil.alpha);
+    // Which sheet runs to infinity at each asymptotic direction: at
+    // alpha = 0 the finite root is -gamma/beta, the other is infinite.
+    let diverging: Vec<(f64, Option<Sheet>)> = aroots
+        .iter()
+        .map(|&s| {
+            let (_, _, b, _) = pencil.coefficients(s);
+            let sheet = if b > 0.0 {
+                Some(Sheet::Minus)
+            } else if b < 0.0 {
+                Some(Sheet::Plus)
+            } else {
+                None
+            };
+            (s, sheet)
+        })
+        .collect();
+    let mut out = Vec::new();
+    if droots.is_empty() {
+        if pencil.delta(0.37) > 0.0 {
+            for sheet in [Sheet::Plus, Sheet::Minus] {
+                let bounded = !diverging.iter().any(|(_, d)| d.is_none_or(|d| d == sheet));
+                out.push(Loop {
+                    kind: Kind::Full(sheet),
+                    bounded,
+                });
+            }
+        }
+        return out;
+    }
+    let m = droots.len();
+    for i in 0..m {
+        let a = droots[i];
+        let b = if i + 1 < m {
+            droots[i + 1]
+        } else {
+            droots[0] + PI
+        };
+        if !(b > a) {
+            continue;
+        }
+        if pencil.delta(0.5 * (a + b)) > 0.0 {
+            let bounded = !aroots.iter().any(|&s| {
+                let lifted = a + (s - a).rem_euclid(PI);
+                lifted > a && lifted < b
+            });
+            out.push(Loop {
+                kind: Kind::Interval { a, b },
+                bounded,
+            });
+        }
+    }
+    out
+}
+
+/// Where the curve crosses the viewport's edges (local), each edge a cubic
+/// in one variable; corners found twice are kept once.
+fn edge_crossings(cubic: &Cubic, view: &View) -> Vec<Vector2<f64>> {
+    let (lo, hi) = (view.lo, view.hi);
+    let mid = (lo + hi) * 0.5;
+    let half = (hi - lo) * 0.5;
+    let edges = [
+        (Vector2::new(mid.x, lo.y), Vector2::new(half.x, 0.0)),
+        (Vector2::new(mid.x, hi.y), Vector2::new(half.x, 0.0)),
+        (Vector2::new(lo.x, mid.y), Vector2::new(0.0, half.y)),
+        (Vector2::new(hi.x, mid.y), Vector2::new(0.0, half.y)),
+    ];
+    let mut out: Vec<Vector2<f64>> = Vec::new();
+    for (m, h) in edges {
+        let coeffs = cubic.restriction_local(m, h);
+        for u in roots_in(&coeffs, -1.0, 1.0) {
+            let mut x = m + h * u;
+            // Exactly on the edge and inside the viewport.
+            x.x = x.x.clamp(lo.x, hi.x);
+            x.y = x.y.clamp(lo.y, hi.y);
+            if !out.iter().any(|y| (y - x).norm() <= 1e-12 * view.radius) {
+                out.push(x);
+            }
+        }
+    }
+    out
+}
+
+/// The loop and the parameter of a crossing `x`, checked: the loop's point
+/// there must be `x` (within a loose relative `1e-6`).
+fn place(
+    pencil: &Pencil<'_>,
+    loops: &[Loop],
+    x: Vector2<f64>,
+    view: &View,
+) -> Option<(usize, f64)> {
+    let d = x - pencil.q;
+    let r = d.norm();
+    let (s, t) = if r <= 1e-12 * view.radius {
+        (pencil.tangent, 0.0)
+    } else {
+        let s = d.y.atan2(d.x).rem_euclid(PI);
+        (s, d.dot(&Vector2::new(s.cos(), s.sin())))
+    };
+    let (_, tp, tm) = pencil.roots(s, false);
+    let sheet = if (t - tp).abs() <= (t - tm).abs() {
+        Sheet::Plus
+    } else {
+        Sheet::Minus
+    };
+    let mut best: Option<(usize, f64)> = None;
+    for (k, lp) in loops.iter().enumerate() {
+        if let Some(l) = lp.lambda_of(s, sheet) {
+            best = Some((k, l));
+            break;
+        }
+    }
+    if best.is_none() {
+        // A crossing at a turning point can land just outside its interval
+        // by rounding: take the nearest end.
+        let mut nearest = f64::INFINITY;
+        for (k, lp) in loops.iter().enumerate() {
+            if let Kind::Interval { a, b } = lp.kind {
+                for (end, l) in [(a, 0.0), (b, 1.0)] {
+                    let gap = (s - end).rem_euclid(PI).min((end - s).rem_euclid(PI));
+                    if gap < nearest {
+                        nearest = gap;
+                        best = Some((k, l));
+                    }
+                }
+            }
+        }
+    }
+    let (k, l) = best?;
+    let (s2, sheet2, tangent) = loops[k].at(l);
+    let p = pencil.point(s2, sheet2, tangent, view.tol)?;
+    ((p - x).norm() <= 1e-6 * (view.radius + r)).then_some((k, l))
+}
+
+/// Samples the loop between `la` and `lb` (the ends given exactly as
+/// `xa`, `xb`) adaptively to the chord tolerance: one polyline, or several
+/// if a point on the way is not finite.
+fn sample(
+    pencil: &Pencil<'_>,
+    lp: &Loop,
+    la: f64,
+    lb: f64,
+    xa: Vector2<f64>,
+    xb: Vector2<f64>,
+    view: &View,
+) -> Vec<Vec<Vector2<f64>>> {
+    const INITIAL: usize = 32;
+    let point = |l: f64| {
+        let (s, sheet, tangent) = lp.at(l);
+        pencil.point(s, sheet, tangent, view.tol)
+    };
+    let mut out = Vec::new();
+    let mut current = vec![xa];
+    let mut prev = (la, Some(xa));
+    for i in 1..=INITIAL {
+        let l = la + (lb - la) * (i as f64 / INITIAL as f64);
+        let p = if i == INITIAL { Some(xb) } else { point(l) };
+        refine(&point, prev, (l, p), 0, view, &mut current, &mut out);
+        prev = (l, p);
+    }
+    if current.len() >= 2 {
+        out.push(current);
+    }
+    out
+}
+
+/// Appends the polyline from `a` to `b` (parameters and points), refined
+/// until the middle point is within the tolerance of the chord and the
+/// chord is short; a point at infinity splits the polyline.
+#[allow(clippy::type_complexity)]
+fn refine(
+    point: &impl Fn(f64) -> Option<Vector2<f64>>,
+    a: (f64, Option<Vector2<f64>>),
+    b: (f64, Option<Vector2<f64>>),
+    depth: u32,
+    view: &View,
+    current: &mut Vec<Vector2<f64>>,
+    out: &mut Vec<Vec<Vector2<f64>>>,
+) {
+    const MAX_DEPTH: u32 = 48;
+    let (la, pa) = a;
+    let (lb, pb) = b;
+    let lm = 0.5 * (la + lb);
+    let pm = point(lm);
+    let split = match (pa, pm, pb) {
+        (Some(pa), Some(pm), Some(pb)) => {
+            let chord = pb - pa;
+            let len = chord.norm();
+            let dev = if len > 0.0 {
+                ((pm - pa).x * chord.y - (pm - pa).y * chord.x).abs() / len
+            } else {
+                (pm - pa).norm()
+            };
+            dev > view.tol || len > view.max_chord
+        }
+        _ => true,
+    };
+    let budget = view.budget.get();
+    if split && depth < MAX_DEPTH && lm > la && lm < lb && budget > 0 {
+        view.budget.set(budget - 1);
+        refine(point, a, (lm, pm), depth + 1, view, current, out);
+        refine(point, (lm, pm), b, depth + 1, view, current, out);
+        return;
+    }
+    match (pa, pb) {
+        (Some(_), Some(pb)) if !(split && depth >= MAX_DEPTH && pm.is_none()) => {
+            current.push(pb);
+        }
+        (_, Some(pb)) => {
+            if current.len() >= 2 {
+                out.push(core::mem::take(current));
+            }
+            current.clear();
+            current.push(pb);
+        }
+        (_, None) => {
+            if current.len() >= 2 {
+                out.push(core::mem::take(current));
+            }
+            current.clear();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn vp(h: f64) -> Viewport {
+        Viewport::new(-h, h, -h, h).unwrap()
+    }
+
+    /// Distance from `p` to the nearest chord of the polylines.
+    fn distance(t: &CubicTrace, p: Point2<f64>) -> f64 {
+        let mut best = f64::INFINITY;
+        for l in t.polylines() {
+            for w in l.windows(2) {
+                let (a, b) = (w[0], w[1]);
+                let ab = b - a;
+                let u =
+                    ((p - a).dot(&ab) / ab.norm_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+                best = best.min((a + ab * u - p).norm());
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn an_oval_and_a_branch() {
+        // y^2 = x^3 - x: an oval on [-1, 0] and a branch from x = 1.
+        let c = Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+        let t = c.trace(&vp(3.0), None);
+        assert_eq!(t.components.len(), 2, "{t:?}");
+        assert_eq!(t.in_view(), 2);
+        let oval = t.components.iter().find(|k| k.bounded).unwrap();
+        assert!(oval.closed);
+        assert_eq!(oval.polylines.len(), 1);
+        let l = &oval.polylines[0];
+        assert_eq!(l[0], l[l.len() - 1]);
+        let branch = t.components.iter().find(|k| !k.bounded).unwrap();
+        assert_eq!(branch.polylines.len(), 1);
+        for l in t.polylines() {
+            for p in l {
+                assert!(c.distance_estimate(p) < 1e-12, "{p}");
+            }
+        }
+        // Zoomed onto the oval only.
+        let t = c.trace(&Viewport::new(-1.2, 0.2, -1.0, 1.0).unwrap(), None);
+        assert_eq!(t.in_view(), 1);
+        assert!(t.components.iter().any(|k| k.closed));
+    }
+
+    #[test]
+    fn a_node_and_a_line_pair() {
+        // The nodal cubic y^2 = x^2 (x + 1).
+        let c = Cubic::new([0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+        let t = c.trace(&vp(2.0), None);
+        assert!(t.in_view() >= 1);
+        // The loop passes near the node and through (-1, 0).
+        assert!(distance(&t, Point2::new(-1.0, 0.0)) < t.tolerance);
+        assert!(distance(&t, Point2::new(0.0, 0.0)) < t.tolerance);
+        for p in t.polylines().iter().flatten() {
+            assert!(c.evaluate(*p).abs() < 1e-12, "{p}");
+        }
+        // A line times a circle: x (x^2 + y^2 - 1).
+        let c = Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0]).unwrap();
+        let t = c.trace(&vp(2.0), None);
+        for p in [
+            (0.0, 1.9),
+            (0.0, -0.3),
+            (-1.0, 0.0),
+            (0.6, 0.8),
+            (0.6, -0.8),
+        ] {
+            assert!(distance(&t, Point2::new(p.0, p.1)) < t.tolerance, "{p:?}");
+        }
+        assert!(t.components.iter().any(|k| k.closed));
+    }
+
+    #[test]
+    fn a_cusp_and_an_isolated_point() {
+        // y^2 = x^3: a cusp at the origin.
+        let c = Cubic::new([0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+        let t = c.trace(&vp(2.0), None);
+        assert!(distance(&t, Point2::new(0.0, 0.0)) < t.tolerance);
+        assert!(distance(&t, Point2::new(1.0, 1.0)) < t.tolerance);
+        assert!(distance(&t, Point2::new(1.0, -1.0)) < t.tolerance);
+        for p in t.polylines().iter().flatten() {
+            assert!(c.evaluate(*p).abs() < 1e-12, "{p}");
+        }
+        // y^2 = x^2 (x - 1): an isolated point at the origin (not drawn) and
+        // a branch from x = 1.
+        let c = Cubic::new([0.0, 0.0, 0.0, -1.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+        let t = c.trace(&vp(2.0), None);
+        assert!(distance(&t, Point2::new(1.0, 0.0)) < t.tolerance);
+        assert!(distance(&t, Point2::new(1.5, 1.5 * 0.5f64.sqrt())) < t.tolerance);
+        for p in t.polylines().iter().flatten() {
+            assert!(c.evaluate(*p).abs() < 1e-12, "{p}");
+        }
+    }
+
+    #[test]
+    fn extreme_viewports_and_tolerances_finish() {
+        let c = Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+        for h in [1e-300, 1e-12, 1e12, 1e300] {
+            let t = c.trace(&vp(h), None);
+            for p in t.polylines().iter().flatten() {
+                assert!(p.x.is_finite() && p.y.is_finite());
+            }
+        }
+        let t = c.trace(&Viewport::new(-6e307, 6e307, -6e307, 6e307).unwrap(), None);
+        for p in t.polylines().iter().flatten() {
+            assert!(p.x.is_finite() && p.y.is_finite());
+        }
+        // A tolerance far below rounding is raised; the work stays bounded.
+        let t = c.trace(&vp(3.0), Some(1e-300));
+        assert!(t.tolerance >= 1e-10 * 6.0 * 2f64.sqrt() * 0.99);
+        assert!(t.polylines().iter().map(Vec::len).sum::<usize>() < 2_000_000);
+        // A viewport far from the curve.
+        let t = c.trace(&Viewport::new(100.0, 101.0, -1.0, 0.0).unwrap(), None);
+        assert_eq!(t.in_view(), 0);
+    }
+
+    #[test]
+    fn three_lines() {
+        // (x + 1.3 y) x (x + 1.1): every point near the view is on a line.
+        let c = Cubic::new([0.0, 0.0, 0.0, 1.1, 1.43, 0.0, 1.0, 1.3, 0.0, 0.0]).unwrap();
+        let t = c.trace(&vp(4.0), None);
+        for p in [(0.0, 3.0), (-1.1, -2.0), (2.6, -2.0), (0.0, 0.0)] {
+            assert!(distance(&t, Point2::new(p.0, p.1)) < t.tolerance, "{p:?}");
+        }
+        for p in t.polylines().iter().flatten() {
+            assert!(c.evaluate(*p).abs() < 1e-12, "{p}");
+        }
+    }
+}

@@ -1,0 +1,291 @@
+//! Filemon's construction with four lines, and the exact ends of the
+//! branch-free arcs of the circle-point curve.
+
+use core::f64::consts::{PI, TAU};
+
+use nalgebra::{Point2, Vector2};
+
+use super::errors;
+use super::four::FourPositions;
+use super::split::split_by;
+use crate::error::Result;
+use crate::geom::cubic::roots::quadratic_roots;
+use crate::geom::{Line, Viewport, cross, normalized};
+use crate::synthesis::Branch;
+use crate::synthesis::Dyad;
+
+/// An end of a branch-free arc: where an extreme Filemon line meets the
+/// circle-point curve (besides `C1`), and the center point of that dyad.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ArcEnd {
+    /// The pose (1-based) whose line it is on.
+    pub pose: usize,
+    /// The circle point, on the circle-point curve and on the line.
+    pub circle: Point2<f64>,
+    /// Its center point, on the center-point curve; `None` where it is at
+    /// infinity (a slider) or undefined.
+    pub center: Option<Point2<f64>>,
+}
+
+/// Filemon's construction for a driven dyad `(C0, C1)` of four poses.
+///
+/// # The lines and the double wedge
+///
+/// `C'_k = D_k1(C0)` is the driven crank's fixed pivot seen from the
+/// coupler frame of pose 1 while at pose `k`. The branch sign of a driving
+/// circle point `A1` at pose `k` is
+///
+/// ```text
+/// s_k = sign cross(C'_k - C1, A1 - C1)
+/// ```
+///
+/// and the driving dyad passes the four poses in one assembly mode when
+/// the four signs agree: in the double wedge between the two **extreme**
+/// lines (the directions `C'_k - C1` sorted by angle inside their
+/// half-plane), or nowhere when the directions do not lie in an open
+/// half-plane ([`FilemonArcs::all_defective`]).
+///
+/// # The exact arc ends
+///
+/// The driving circle point must lie on the circle-point curve, which
+/// passes through `C1`; the line through `C1` along `d` meets the cubic
+/// where
+///
+/// ```text
+/// f(C1 + t d) = t (a3 t^2 + a2 t + a1) = 0
+/// ```
+///
+/// so each line meets it in at most two more points, the roots of one
+/// quadratic. Those on the two extreme lines are the ends of the
+/// branch-free arcs ([`FilemonArcs::arc_ends`]); their center points (the
+/// circle-to-center map) end the arcs of the center-point curve. No
+/// sampling.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FilemonArcs {
+    four: FourPositions,
+    driven: Dyad,
+    c_prime: [Point2<f64>; 4],
+    /// The poses (0-based) sorted by the angle of `C'_k - C1` within their
+    /// half-plane; `None` when they do not lie in an open half-plane.
+    order: Option<[usize; 4]>,
+    /// The other points of each line on the circle-point curve.
+    meets: [Vec<Point2<f64>>; 4],
+    ends: Vec<ArcEnd>,
+}
+
+impl FilemonArcs {
+    /// The construction for a driven dyad of `four`.
+    ///
+    /// # Errors
+    ///
+    /// [`crate::InvalidInput::OutOfRange`] when an image `C'_k` is not
+    /// finite or coincides with `C1`.
+    pub(crate) fn new(four: &FourPositions, driven: &Dyad) -> Result<Self> {
+        let m = four.motion();
+        let c1 = driven.circle;
+        let c_prime = [0, 1, 2, 3].map(|k| m.displace(driven.center, k, 0));
+        let mut dirs = [Vector2::zeros(); 4];
+        for (d, c) in dirs.iter_mut().zip(&c_prime) {
+            *d = normalized(c - c1).ok_or_else(errors::bad_driven)?;
+        }
+        let order = half_plane_order(&dirs);
+        let curve = four.circle_point_curve();
+        let p = curve.local_of(c1);
+        let meets = dirs.map(|d| {
+            let r = curve.restriction_local(p, d);
+            // f(C1 + t d) / t: C1 is on the curve, so the constant term is
+            // rounding; a root within rounding of 0 is C1 again (a tangent).
+            quadratic_roots(r[3], r[2], r[1])
+                .into_iter()
+                .filter(|t| t.abs() > 1e-12 * (1.0 + p.norm()))
+                .map(|t| curve.global_of(p + d * t))
+                .filter(|q| q.x.is_finite() && q.y.is_finite())
+                .collect::<Vec<_>>()
+        });
+        let ends = match order {
+            None => Vec::new(),
+            Some(o) => [o[0], o[3]]
+                .iter()
+                .flat_map(|&k| {
+                    meets[k].iter().map(move |&x| ArcEnd {
+                        pose: k + 1,
+                        circle: x,
+                        center: None,
+                    })
+                })
+                .map(|mut e| {
+                    e.center = four.center_point(e.circle).ok();
+                    e
+                })
+                .collect(),
+        };
+        Ok(FilemonArcs {
+            four: four.clone(),
+            driven: *driven,
+            c_prime,
+            order,
+            meets,
+            ends,
+        })
+    }
+
+    /// The driven dyad `(C0, C1)`.
+    pub fn driven(&self) -> Dyad {
+        self.driven
+    }
+
+    /// `[C'_1, ..., C'_4]`, `C'_k = D_k1(C0)`.
+    pub fn fixed_pivot_images(&self) -> [Point2<f64>; 4] {
+        self.c_prime
+    }
+
+    /// The four lines through `C1` and `C'_k` (directions `C'_k - C1`).
+    pub fn all_lines(&self) -> [Line; 4] {
+        self.c_prime.map(|c| Line {
+            point: self.driven.circle,
+            direction: c - self.driven.circle,
+        })
+    }
+
+    /// Whether every driving circle point has a branch defect (the
+    /// directions `C'_k - C1` do not lie in an open half-plane).
+    pub fn all_defective(&self) -> bool {
+        self.order.is_none()
+    }
+
+    /// The poses (1-based) of the two extreme lines (the Filemon lines),
+    /// first and last by angle; `None` when all are defective.
+    pub fn extreme_poses(&self) -> Option<[usize; 2]> {
+        self.order.map(|o| [o[0] + 1, o[3] + 1])
+    }
+
+    /// The two Filemon lines; `None` when all are defective.
+    pub fn lines(&self) -> Option<[Line; 2]> {
+        let all = self.all_lines();
+        self.order.map(|o| [all[o[0]], all[o[3]]])
+    }
+
+    /// The points other than `C1` where the line of pose `k` (1-based)
+    /// meets the circle-point curve (none, one or two); empty for a `k`
+    /// that is not 1 to 4.
+    pub fn line_points(&self, k: usize) -> &[Point2<f64>] {
+        match k {
+            1..=4 => &self.meets[k - 1],
+            _ => &[],
+        }
+    }
+
+    /// The exact ends of the branch-free arcs (on the two Filemon lines);
+    /// empty when all are defective.
+    pub fn arc_ends(&self) -> &[ArcEnd] {
+        &self.ends
+    }
+
+    /// The branch signs `cross(C'_k - C1, A1 - C1)` of a driving circle point.
+    pub fn circle_signs(&self, a1: Point2<f64>) -> [f64; 4] {
+        let c1 = self.driven.circle;
+        self.c_prime.map(|c| cross(c - c1, a1 - c1))
+    }
+
+    /// The branch class of a driving circle point `A1`: free when the four
+    /// signs agree, a boundary where one is zero (a toggle at a pose).
+    pub fn classify_circle_point(&self, a1: Point2<f64>) -> Branch {
+        let s = self.circle_signs(a1);
+        if s.iter().any(|&v| v == 0.0 || v.is_nan()) {
+            Branch::Boundary
+        } else if self.order.is_some() && s.iter().all(|&v| (v > 0.0) == (s[0] > 0.0)) {
+            Branch::Free
+        } else {
+            Branch::Defective
+        }
+    }
+
+    /// The branch class of a driving center point `A0` on the center-point
+    /// curve (through its circle point).
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::circle_point`].
+    pub fn classify_center_point(&self, a0: Point2<f64>) -> Result<Branch> {
+        Ok(self.classify_circle_point(self.four.circle_point(a0)?))
+    }
+
+    /// The branch-free arcs of the circle-point curve in view: the traced
+    /// curve ([`crate::geom::Cubic::trace`], default tolerance) cut where
+    /// the class changes, each cut replaced by the exact arc end (or `C1`)
+    /// it lies at.
+    pub fn free_circle_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
+        let mut cuts: Vec<Point2<f64>> = self.ends.iter().map(|e| e.circle).collect();
+        cuts.push(self.driven.circle);
+        let polylines = self.four.circle_point_curve().polylines(viewport);
+        free_runs(split_by(&polylines, &cuts, |p| {
+            Some(self.classify_circle_point(p) == Branch::Free)
+        }))
+    }
+
+    /// The branch-free arcs of the center-point curve in view (the driving
+    /// center points whose dyads pass the poses in one assembly mode), cut
+    /// at the centers of the exact arc ends (and at `C0`).
+    pub fn free_center_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
+        let mut cuts: Vec<Point2<f64>> = self.ends.iter().filter_map(|e| e.center).collect();
+        cuts.push(self.driven.center);
+        let polylines = self.four.center_point_curve().polylines(viewport);
+        free_runs(split_by(&polylines, &cuts, |p| {
+            Some(self.classify_center_point(p) == Ok(Branch::Free))
+        }))
+    }
+}
+
+/// The polylines of the runs labelled free.
+fn free_runs(runs: Vec<(bool, Vec<Point2<f64>>)>) -> Vec<Vec<Point2<f64>>> {
+    runs.into_iter()
+        .filter(|(free, _)| *free)
+        .map(|(_, p)| p)
+        .collect()
+}
+
+/// The order of directions by angle when they lie in an open half-plane
+/// (extremes first and last), else `None`.
+fn half_plane_order(d: &[Vector2<f64>; 4]) -> Option<[usize; 4]> {
+    let ang = d.map(|v| v.y.atan2(v.x));
+    let mut idx = [0usize, 1, 2, 3];
+    idx.sort_by(|&a, &b| ang[a].total_cmp(&ang[b]));
+    // The directions lie in an open half-plane iff the largest circular gap
+    // between consecutive angles exceeds pi; the run starts after it.
+    let gaps = [0, 1, 2, 3].map(|i| {
+        if i < 3 {
+            ang[idx[i + 1]] - ang[idx[i]]
+        } else {
+            ang[idx[0]] + TAU - ang[idx[3]]
+        }
+    });
+    let (k, &gap) = gaps
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(b.1))
+        .unwrap_or((0, &0.0));
+    if gap <= PI {
+        return None;
+    }
+    let start = (k + 1) % 4;
+    Some([0, 1, 2, 3].map(|i| idx[(start + i) % 4]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn half_plane_order_finds_the_extremes() {
+        let v = |a: f64| Vector2::new(a.cos(), a.sin());
+        assert_eq!(
+            half_plane_order(&[v(0.1), v(0.5), v(0.3), v(0.2)]),
+            Some([0, 3, 2, 1])
+        );
+        assert_eq!(
+            half_plane_order(&[v(3.0), v(-3.0), v(2.5), v(-2.9)]),
+            Some([2, 0, 1, 3])
+        );
+        assert_eq!(half_plane_order(&[v(0.0), v(2.2), v(-2.2), v(0.1)]), None);
+    }
+}

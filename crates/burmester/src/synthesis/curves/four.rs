@@ -1,0 +1,700 @@
+//! Four poses: the center-point and circle-point curves, the maps between
+//! them, the crank-rotation parametrisation, the points where two crank
+//! positions coincide, and the four-bar of two dyads.
+
+use core::f64::consts::PI;
+
+use nalgebra::{Complex, Matrix3x4, Point2, Vector2, Vector3};
+
+use super::branch::FilemonArcs;
+use super::errors;
+use super::motion::{Failure, Motion, cross3};
+use super::order::{CrankOrder, Drive, check_dyad, crank_angles, drive};
+use super::split::split_by;
+use super::{DEGENERATE_CURVE, ON_CURVE_TOLERANCE};
+use crate::error::Result;
+use crate::geom::{Cubic, Pose, Viewport, wrap_angle};
+use crate::linkage::{AngleInterval, AssemblyMode, FourBar, InputRange};
+use crate::synthesis::Dyad;
+
+/// The six pairs of four poses (0-based), in the order `12, 13, 14, 23, 24, 34`.
+const PAIRS: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+
+/// A pole `P_jk` of two poses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pole {
+    /// The two poses (1-based, `j < k`).
+    pub poses: [usize; 2],
+    /// The pole; `None` when it is at infinity (the two poses differ by a
+    /// pure translation).
+    pub point: Option<Point2<f64>>,
+}
+
+/// A point `Q_jk` of the center-point curve where the crank positions at
+/// poses `j` and `k` coincide:
+///
+/// ```text
+/// Q_jk = (P_lj P_lk) x (P_mj P_mk)      ({l, m} the other two poses)
+/// ```
+///
+/// the meet of the line through `P_lj, P_lk` with the line through
+/// `P_mj, P_mk`. Its circle point is `D_j1(P_jk)`: the moving pivot sits on
+/// the pole `P_jk` at both poses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoincidencePoint {
+    /// The two poses (1-based, `j < k`).
+    pub poses: [usize; 2],
+    /// `Q_jk`; `None` when it is at infinity or undefined (coincident
+    /// poles).
+    pub center: Option<Point2<f64>>,
+    /// Its circle point `D_j1(P_jk)`; `None` when `P_jk` is at infinity.
+    pub circle: Option<Point2<f64>>,
+}
+
+/// A piece of the center-point curve (in view) on which the cyclic order
+/// of the four crank positions is constant, cut at the points `Q_jk`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OrderArc {
+    /// The crank order of every dyad on the piece.
+    pub order: CrankOrder,
+    /// The piece, a polyline on the center-point curve; an end inside the
+    /// viewport is a point `Q_jk` (or a place where the circle point is
+    /// undefined or at infinity).
+    pub points: Vec<Point2<f64>>,
+}
+
+/// A dyad of four poses, with its place on the crank-rotation
+/// parametrisation of the curve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CurveDyad {
+    /// The center point (fixed pivot), on the center-point curve.
+    pub center: Point2<f64>,
+    /// The circle point (moving pivot at pose 1), on the circle-point curve.
+    pub circle: Point2<f64>,
+    /// The crank rotation from pose 1 to pose 2, `beta_2`, in `(-pi, pi]`.
+    pub beta2: f64,
+    /// The solution branch at this `beta_2`: the assembly mode of the
+    /// compatibility linkage; `None` at one of its toggles (where the two
+    /// branches meet) or when the poses have no compatibility linkage.
+    pub branch: Option<AssemblyMode>,
+    /// The cyclic order of the crank's positions at the four poses.
+    pub order: CrankOrder,
+}
+
+impl CurveDyad {
+    /// The dyad `(center, circle)`.
+    pub fn dyad(&self) -> Dyad {
+        Dyad::new(self.center, self.circle)
+    }
+}
+
+/// The crank-rotation parametrisation counts a dyad as at infinity when
+/// the best pair of its equations in `(W, Z)` is this close to singular
+/// (relative to the magnitude of the determinant's terms): its center point
+/// would be more than about `1 / FAR_DYAD` task sizes away, where the
+/// equations no longer fix it to better than `1e-8` relative.
+const FAR_DYAD: f64 = 1e-8;
+
+/// The compatibility linkage (Sandor & Erdman) of four poses: with
+/// `E_j = e^{i alpha_j} - 1`, `delta_j = p_j - p_1` and the dyad vectors
+/// `W = z - G`, `Z = p_1 - z`,
+///
+/// ```text
+/// W (e^{i beta_j} - 1) + Z E_j = delta_j      (j = 2, 3, 4)
+/// ```
+///
+/// is consistent exactly when
+/// `Delta_1 + Delta_2 e^{i beta_2} + Delta_3 e^{i beta_3} + Delta_4 e^{i beta_4} = 0`
+/// (the 3x3 complex determinant), the loop of a four-bar with ground
+/// `-Delta_1` and links `|Delta_2|, |Delta_3|, |Delta_4|`, driven by
+/// `beta_2`; its two assembly modes are the two solution branches.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Compat {
+    fourbar: FourBar,
+    /// `arg Delta_2, arg Delta_3, arg Delta_4`.
+    arg: [f64; 3],
+    /// `E_2, E_3, E_4`.
+    e: [Complex<f64>; 3],
+    /// `delta_2, delta_3, delta_4` (local).
+    delta: [Complex<f64>; 3],
+}
+
+fn cx(v: Vector2<f64>) -> Complex<f64> {
+    Complex::new(v.x, v.y)
+}
+
+impl Compat {
+    fn new(m: &Motion) -> Result<Self> {
+        let e = [1, 2, 3].map(|k| Complex::from_polar(1.0, m.theta[k]) - 1.0);
+        let delta = [1, 2, 3].map(|k| cx(m.pos[k] - m.pos[0]));
+        let d2 = e[1] * delta[2] - e[2] * delta[1];
+        let d3 = -(e[0] * delta[2] - e[2] * delta[0]);
+        let d4 = e[0] * delta[1] - e[1] * delta[0];
+        let d1 = -(d2 + d3 + d4);
+        let lengths = [d1, d2, d3, d4].map(|d| d.norm());
+        let size = lengths.iter().copied().fold(0.0, f64::max);
+        if lengths.iter().any(|&l| !(l > DEGENERATE_CURVE * size)) {
+            return Err(errors::no_parametrization());
+        }
+        let g = -d1;
+        let fourbar = FourBar::placed(
+            lengths[0],
+            lengths[1],
+            lengths[2],
+            lengths[3],
+            Point2::origin(),
+            g.im.atan2(g.re),
+        )?;
+        Ok(Compat {
+            fourbar,
+            arg: [d2.arg(), d3.arg(), d4.arg()],
+            e,
+            delta,
+        })
+    }
+
+    /// `(W, Z)` from the crank rotations `beta_2, beta_3, beta_4`, by the
+    /// best conditioned pair of equations; `None` at infinity.
+    fn dyad(&self, beta: [f64; 3]) -> Option<(Complex<f64>, Complex<f64>)> {
+        let b = beta.map(|t| Complex::from_polar(1.0, t) - 1.0);
+        // |e^{i beta} - 1| <= 2: every determinant is at most 4 max |E_j|,
+        // and the numerator of W is of the order of max |E_j| (in task sizes).
+        let scale = 4.0 * self.e.iter().fold(0.0f64, |m, e| m.max(e.norm()));
+        let mut best: Option<(f64, usize, usize, Complex<f64>)> = None;
+        for (j, k) in [(0, 1), (0, 2), (1, 2)] {
+            let det = b[j] * self.e[k] - b[k] * self.e[j];
+            if best.is_none_or(|(d, ..)| det.norm() > d) {
+                best = Some((det.norm(), j, k, det));
+            }
+        }
+        let (size, j, k, det) = best?;
+        if !(size > FAR_DYAD * scale) {
+            return None;
+        }
+        let w = (self.delta[j] * self.e[k] - self.delta[k] * self.e[j]) / det;
+        let z = (b[j] * self.delta[k] - b[k] * self.delta[j]) / det;
+        (w.re.is_finite() && w.im.is_finite() && z.re.is_finite() && z.im.is_finite())
+            .then_some((w, z))
+    }
+
+    /// The branch (compatibility mode) of a dyad with crank rotations
+    /// `beta_3, beta_4`: the sign of `sin(theta4 - theta3)` of the
+    /// compatibility four-bar; `None` at a toggle.
+    fn branch(&self, beta3: f64, beta4: f64) -> Option<AssemblyMode> {
+        let theta3 = beta3 + self.arg[1];
+        let theta4 = beta4 + self.arg[2] + PI;
+        let s = (theta4 - theta3).sin();
+        if s.abs() <= 1e-12 {
+            None
+        } else {
+            AssemblyMode::from_sign(s)
+        }
+    }
+}
+
+/// Four poses of the coupler: the center-point and circle-point curves
+/// (Burmester curves) and what lies on them.
+///
+/// # The curves (exact cubics)
+///
+/// With `D_1k(z) = R_k z + t_k`, a dyad (center `G`, circle point `z` at
+/// pose 1) passes pose `k` when `a_k(G) . z = b_k(G)`, linear in `z`
+/// (module docs). Three such equations in two unknowns are consistent
+/// exactly where
+///
+/// ```text
+/// f(G) = det [a_2 b_2; a_3 b_3; a_4 b_4] = 0
+/// ```
+///
+/// a circular cubic through the six poles: the **center-point curve**. Its
+/// ten coefficients are expanded exactly from the poses (a product of
+/// affine polynomials), never fitted. The **circle-point curve** is the
+/// same construction for the inverted motion (`D_1k^-1`, the ground seen
+/// from the coupler at pose 1), in the circle-point plane. A pure
+/// translation between two poses needs no special case (its pole is at
+/// infinity; the curves are unchanged in kind).
+///
+/// # Example
+///
+/// ```
+/// use burmester::{Pose, Viewport};
+/// use burmester::synthesis::curves::FourPositions;
+/// let four = FourPositions::new(&[
+///     Pose::new(1.0, 2.0, 0.3),
+///     Pose::new(2.5, 1.0, 0.9),
+///     Pose::new(0.5, -1.0, -0.4),
+///     Pose::new(-1.0, 0.2, 1.7),
+/// ])?;
+/// // The poles lie on the center-point curve; a center point maps to its
+/// // circle point and back.
+/// let p12 = four.poles()[0].point.unwrap();
+/// let dyad = four.dyad_from_center(p12)?;
+/// assert!(four.center_point_curve().distance_estimate(p12) < 1e-12);
+/// assert!((four.center_point(dyad.circle)? - p12).norm() < 1e-9);
+/// // Every traced point is a center point: its circle point stays on one
+/// // circle about it at the four poses.
+/// let view = Viewport::new(-10.0, 10.0, -10.0, 10.0)?;
+/// for g in four.center_point_curve().polylines(&view).into_iter().flatten() {
+///     if let Ok(z) = four.circle_point(g) {
+///         let r: Vec<f64> = (1..=4).map(|k| (four.displace(z, 1, k).unwrap() - g).norm()).collect();
+///         assert!(r.iter().all(|x| (x - r[0]).abs() <= 1e-9 * r[0]));
+///     }
+/// }
+/// # Ok::<(), burmester::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct FourPositions {
+    motion: Motion,
+    center_curve: Cubic,
+    circle_curve: Cubic,
+    compat: Option<Compat>,
+}
+
+impl FourPositions {
+    /// The curves of four poses.
+    ///
+    /// # Errors
+    ///
+    /// [`crate::InvalidInput::LengthMismatch`] unless there are exactly four
+    /// poses; [`crate::InvalidInput`] for non-finite numbers, coordinates
+    /// beyond [`crate::Task::MAX_COORDINATE`], angles beyond
+    /// [`crate::Task::MAX_ANGLE`], a task smaller than
+    /// [`crate::Task::MIN_SCALE`]; [`crate::DegenerateError::CoincidentPoses`]
+    /// for two equal poses (within [`super::COINCIDENT_POSES`]);
+    /// [`crate::DegenerateError::CoincidentPoles`] when the poses are all
+    /// rotations about one point (the curve vanishes identically, within
+    /// [`super::DEGENERATE_CURVE`]).
+    pub fn new(poses: &[Pose]) -> Result<Self> {
+        if poses.len() != 4 {
+            return Err(errors::pose_count("FourPositions::new", 4, poses.len()));
+        }
+        let motion = Motion::new(poses)?;
+        let curve = |form: &super::motion::LinearForm| -> Result<Cubic> {
+            let (f, mag) = form.cubic([1, 2, 3]);
+            let max = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            if !(max > DEGENERATE_CURVE * mag) {
+                let p = motion
+                    .dehomogenize(motion.pole(0, 1))
+                    .unwrap_or(motion.origin);
+                return Err(errors::common_pole(p));
+            }
+            Ok(Cubic::from_local(f, motion.origin, motion.scale))
+        };
+        let center_curve = curve(&motion.form)?;
+        let circle_curve = curve(&motion.form.inverse())?;
+        let compat = Compat::new(&motion).ok();
+        Ok(FourPositions {
+            motion,
+            center_curve,
+            circle_curve,
+            compat,
+        })
+    }
+
+    pub(crate) fn motion(&self) -> &Motion {
+        &self.motion
+    }
+
+    /// The four poses.
+    pub fn poses(&self) -> &[Pose] {
+        &self.motion.poses
+    }
+
+    /// The size of the task: the largest distance of a pose point from
+    /// their centroid. The unit of the relative tolerances.
+    pub fn size(&self) -> f64 {
+        self.motion.scale
+    }
+
+    /// The center-point curve (fixed frame).
+    pub fn center_point_curve(&self) -> &Cubic {
+        &self.center_curve
+    }
+
+    /// The circle-point curve (the coupler frame at pose 1).
+    pub fn circle_point_curve(&self) -> &Cubic {
+        &self.circle_curve
+    }
+
+    /// `D_ij(z) = p_j + e^{i theta_ij} (z - p_i)` (1-based `i`, `j`).
+    ///
+    /// # Errors
+    ///
+    /// [`crate::InvalidInput::CountOutOfRange`] when `i` or `j` is not 1 to 4.
+    pub fn displace(&self, z: Point2<f64>, i: usize, j: usize) -> Result<Point2<f64>> {
+        for k in [i, j] {
+            if !(1..=4).contains(&k) {
+                return Err(errors::pose_index(k, 4));
+            }
+        }
+        Ok(self.motion.displace(z, i - 1, j - 1))
+    }
+
+    /// The largest accepted distance of `p` from a curve:
+    /// [`ON_CURVE_TOLERANCE`] times the task size plus the distance of `p`
+    /// from the task's centroid.
+    fn on_curve_tolerance(&self, p: Point2<f64>) -> f64 {
+        ON_CURVE_TOLERANCE * (self.motion.scale + (p - self.motion.origin).norm())
+    }
+
+    /// Checks a point and returns it in the local frame.
+    fn local_point(&self, p: Point2<f64>, names: [&'static str; 2]) -> Result<Vector2<f64>> {
+        for (n, v) in names.iter().zip([p.x, p.y]) {
+            if !v.is_finite() {
+                return Err(errors::not_finite(n, v));
+            }
+        }
+        let g = self.motion.local_of(p);
+        if !g.iter().all(|v| v.is_finite()) {
+            return Err(errors::far_point());
+        }
+        Ok(g)
+    }
+
+    /// The circle point (moving pivot at pose 1) of a center point on the
+    /// center-point curve: the solution of the best conditioned pair of
+    /// the three linear equations.
+    ///
+    /// # Errors
+    ///
+    /// [`crate::InvalidInput::CountOutOfRange`] when `center` is farther than
+    /// [`ON_CURVE_TOLERANCE`] (relative to the task size plus its distance
+    /// from the task) from the curve, with that distance;
+    /// [`crate::DegenerateError::AtInfinity`] where the circle point is at
+    /// infinity; [`crate::DegenerateError::Undefined`] where a whole line of
+    /// circle points passes the four poses; [`crate::InvalidInput`] for a
+    /// non-finite point.
+    pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
+        let g = self.local_point(center, ["center point x", "center point y"])?;
+        let tol = self.on_curve_tolerance(center);
+        let (on, dist) = self.center_curve.is_on(center, tol);
+        if !on {
+            return Err(errors::off_curve("center point", dist, tol));
+        }
+        match self.motion.form.solve(g, &[1, 2, 3]) {
+            Ok(z) => Ok(self.motion.global_of(z)),
+            Err(Failure::AtInfinity(d)) => Err(errors::at_infinity(
+                "circle point",
+                "center-point curve where its circle point is at infinity",
+                center,
+                d,
+            )),
+            Err(Failure::Undefined) => Err(errors::undefined(
+                "circle point",
+                "a point where the four conditions leave a line of circle points",
+                center,
+            )),
+        }
+    }
+
+    /// The center point (fixed pivot) of a circle point on the circle-point
+    /// curve (the inverted motion's equations, linear in the center).
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::circle_point`], for the circle-point curve (a
+    /// center at infinity is a slider).
+    pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
+        let z = self.local_point(circle, ["circle point x", "circle point y"])?;
+        let tol = self.on_curve_tolerance(circle);
+        let (on, dist) = self.circle_curve.is_on(circle, tol);
+        if !on {
+            return Err(errors::off_curve("circle point", dist, tol));
+        }
+        match self.motion.form.inverse().solve(z, &[1, 2, 3]) {
+            Ok(g) => Ok(self.motion.global_of(g)),
+            Err(Failure::AtInfinity(d)) => Err(errors::at_infinity(
+                "center point",
+                "circle-point curve where its center point is at infinity (a slider)",
+                circle,
+                d,
+            )),
+            Err(Failure::Undefined) => Err(errors::undefined(
+                "center point",
+                "a point where the four conditions leave a line of center points",
+                circle,
+            )),
+        }
+    }
+
+    /// The dyad whose center point is `center`.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::circle_point`].
+    pub fn dyad_from_center(&self, center: Point2<f64>) -> Result<Dyad> {
+        Ok(Dyad::new(center, self.circle_point(center)?))
+    }
+
+    /// The dyad whose circle point is `circle`.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::center_point`].
+    pub fn dyad_from_circle(&self, circle: Point2<f64>) -> Result<Dyad> {
+        Ok(Dyad::new(self.center_point(circle)?, circle))
+    }
+
+    /// The crank angles `arg(D_1k(circle) - center)` at the four poses.
+    pub fn crank_angles(&self, dyad: &Dyad) -> [f64; 4] {
+        let a = crank_angles(&self.motion, dyad);
+        [a[0], a[1], a[2], a[3]]
+    }
+
+    /// The cyclic order of the crank's positions at the four poses.
+    pub fn crank_order(&self, dyad: &Dyad) -> CrankOrder {
+        CrankOrder::from_angles(&self.crank_angles(dyad))
+    }
+
+    /// The center-point curve in view ([`Cubic::polylines`]) cut into the
+    /// pieces where the crank order is constant: the order is that of each
+    /// vertex's dyad, and a change is cut at the exact point `Q_jk` where the
+    /// two crank positions swap. [`CrankOrder::direction`] tells the pieces
+    /// whose crank meets the poses in order.
+    pub fn order_arcs(&self, viewport: &Viewport) -> Vec<OrderArc> {
+        let cuts: Vec<Point2<f64>> = self
+            .coincidence_points()
+            .iter()
+            .filter_map(|q| q.center)
+            .collect();
+        let polylines = self.center_curve.polylines(viewport);
+        split_by(&polylines, &cuts, |p| {
+            self.circle_point(p)
+                .ok()
+                .map(|z| self.crank_order(&Dyad::new(p, z)))
+        })
+        .into_iter()
+        .map(|(order, points)| OrderArc { order, points })
+        .collect()
+    }
+
+    /// The six poles `P_jk`, in the order `12, 13, 14, 23, 24, 34`. They lie
+    /// on the center-point curve.
+    pub fn poles(&self) -> [Pole; 6] {
+        PAIRS.map(|(j, k)| Pole {
+            poses: [j + 1, k + 1],
+            point: self.motion.dehomogenize(self.motion.pole(j, k)),
+        })
+    }
+
+    /// The six points `Q_jk` where the crank positions at poses `j` and `k`
+    /// coincide, in the order `12, 13, 14, 23, 24, 34`: the only places
+    /// along the center-point curve (besides infinity) where the cyclic
+    /// order of the four crank angles can change.
+    pub fn coincidence_points(&self) -> [CoincidencePoint; 6] {
+        let m = &self.motion;
+        PAIRS.map(|(j, k)| {
+            let others: Vec<usize> = (0..4).filter(|&i| i != j && i != k).collect();
+            let (l, n) = (others[0], others[1]);
+            let line1 = cross3(m.pole(l, j), m.pole(l, k));
+            let line2 = cross3(m.pole(n, j), m.pole(n, k));
+            let degenerate = |h: [f64; 3]| h.iter().all(|v| v.abs() <= 1e-14);
+            let center = if degenerate(line1) || degenerate(line2) {
+                None
+            } else {
+                m.dehomogenize(cross3(line1, line2))
+            };
+            let circle = m
+                .dehomogenize(m.pole(j, k))
+                .map(|p| m.displace(p, j, 0))
+                .filter(|p| p.x.is_finite() && p.y.is_finite());
+            CoincidencePoint {
+                poses: [j + 1, k + 1],
+                center,
+                circle,
+            }
+        })
+    }
+
+    fn compat(&self) -> Result<&Compat> {
+        self.compat.as_ref().ok_or_else(|| {
+            // Rebuild for the error message.
+            match Compat::new(&self.motion) {
+                Err(e) => e,
+                Ok(_) => errors::no_parametrization(),
+            }
+        })
+    }
+
+    /// The crank rotations `beta_2` (radians, absolute) where the
+    /// compatibility linkage closes: all of them, or one or two arcs whose
+    /// ends are its toggles, where the two solution branches meet.
+    ///
+    /// # Errors
+    ///
+    /// [`crate::InvalidInput::CountOutOfRange`] when the poses have no
+    /// compatibility linkage (a link of zero length: for example two poses
+    /// that are pure translations of pose 1).
+    pub fn beta2_range(&self) -> Result<InputRange> {
+        let c = self.compat()?;
+        let shift = |a: AngleInterval| AngleInterval {
+            start: a.start - c.arg[0],
+            end: a.end - c.arg[0],
+        };
+        Ok(match c.fourbar.input_range() {
+            InputRange::Full => InputRange::Full,
+            InputRange::Arc(a) => InputRange::Arc(shift(a)),
+            InputRange::TwoArcs(a, b) => InputRange::TwoArcs(shift(a), shift(b)),
+        })
+    }
+
+    /// The dyad on solution branch `branch` whose crank turns by `beta2`
+    /// from pose 1 to pose 2 (the compatibility-linkage parametrisation of
+    /// the curves).
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::beta2_range`]; [`crate::AssemblyError::OutOfReach`]
+    /// when `beta2` is outside that range; [`crate::DegenerateError::AtInfinity`]
+    /// where the dyad's center point is at infinity; [`crate::InvalidInput`]
+    /// for a non-finite angle.
+    pub fn dyad_at(&self, beta2: f64, branch: AssemblyMode) -> Result<CurveDyad> {
+        let c = self.compat()?;
+        let conf = c.fourbar.solve(beta2 + c.arg[0], branch)?;
+        let beta = [beta2, conf.theta3 - c.arg[1], conf.theta4 - c.arg[2] - PI];
+        let Some((w, z)) = c.dyad(beta) else {
+            return Err(errors::dyad_at_infinity(beta2));
+        };
+        let q1 = cx(self.motion.pos[0]);
+        let zl = q1 - z;
+        let gl = zl - w;
+        let (gl, zl) = self.polish(Vector2::new(gl.re, gl.im), Vector2::new(zl.re, zl.im));
+        let center = self.motion.global_of(gl);
+        let circle = self.motion.global_of(zl);
+        let dyad = Dyad::new(center, circle);
+        Ok(CurveDyad {
+            center,
+            circle,
+            beta2: wrap_angle(beta2),
+            branch: if conf.toggle { None } else { Some(branch) },
+            order: self.crank_order(&dyad),
+        })
+    }
+
+    /// Two Gauss-Newton steps of a dyad `(g, z)` (local) onto the solutions
+    /// of the three equations `a_k(g) . z = b_k(g)` (the smallest change,
+    /// `-J^T (J J^T)^-1 F`), each kept only when it is a correction at the
+    /// level of rounding (below `1e-6` of the dyad's size).
+    fn polish(&self, mut g: Vector2<f64>, mut z: Vector2<f64>) -> (Vector2<f64>, Vector2<f64>) {
+        let form = &self.motion.form;
+        for _ in 0..2 {
+            let mut jac = Matrix3x4::zeros();
+            let mut res = Vector3::zeros();
+            for (r, k) in (1..4).enumerate() {
+                let (a, b) = form.row(k, g);
+                let dg = form.row_dg(k, z);
+                res[r] = a.dot(&z) - b;
+                jac[(r, 0)] = dg.x;
+                jac[(r, 1)] = dg.y;
+                jac[(r, 2)] = a.x;
+                jac[(r, 3)] = a.y;
+            }
+            let Some(y) = (jac * jac.transpose()).lu().solve(&res) else {
+                break;
+            };
+            let step = jac.transpose() * y;
+            let size = 1.0 + g.norm() + z.norm();
+            if !(step.norm() <= 1e-6 * size) {
+                break;
+            }
+            g -= Vector2::new(step[0], step[1]);
+            z -= Vector2::new(step[2], step[3]);
+        }
+        (g, z)
+    }
+
+    /// The dyad of a center point on the curve, with its crank rotation
+    /// `beta_2` and its solution branch.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::circle_point`].
+    pub fn curve_dyad(&self, center: Point2<f64>) -> Result<CurveDyad> {
+        let dyad = self.dyad_from_center(center)?;
+        let a = self.crank_angles(&dyad);
+        let branch = self
+            .compat
+            .as_ref()
+            .and_then(|c| c.branch(a[2] - a[0], a[3] - a[0]));
+        Ok(CurveDyad {
+            center,
+            circle: dyad.circle,
+            beta2: wrap_angle(a[1] - a[0]),
+            branch,
+            order: CrankOrder::from_angles(&a),
+        })
+    }
+
+    /// Samples of the dyads along the curves by the crank rotation: about
+    /// `samples` values of `beta_2` spread over [`FourPositions::beta2_range`]
+    /// (its ends, the toggles, included), for each solution branch. Each
+    /// run is one branch over one arc of `beta_2`, in order; a dyad at
+    /// infinity splits a run. Consecutive centers of a run may still be far
+    /// apart where the curve runs to infinity between them (plot the traced
+    /// [`Cubic`] for a faithful picture).
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::beta2_range`]; [`crate::InvalidInput::CountOutOfRange`]
+    /// when `samples` is 0 or more than ten million.
+    pub fn dyad_runs(&self, samples: usize) -> Result<Vec<Vec<CurveDyad>>> {
+        if samples == 0 || samples > 10_000_000 {
+            return Err(errors::count("samples", samples, 1, 10_000_000));
+        }
+        let intervals: Vec<(f64, f64)> = match self.beta2_range()? {
+            InputRange::Full => vec![(-PI, PI)],
+            InputRange::Arc(a) => vec![(a.start, a.end)],
+            InputRange::TwoArcs(a, b) => vec![(a.start, a.end), (b.start, b.end)],
+        };
+        let total: f64 = intervals.iter().map(|(a, b)| b - a).sum();
+        let mut runs = Vec::new();
+        for branch in AssemblyMode::BOTH {
+            for &(lo, hi) in &intervals {
+                let n = ((samples as f64 * (hi - lo) / total).round() as usize).max(2);
+                let mut run = Vec::with_capacity(n + 1);
+                for i in 0..=n {
+                    let beta = lo + (hi - lo) * (i as f64 / n as f64);
+                    match self.dyad_at(beta, branch) {
+                        Ok(d) => run.push(d),
+                        Err(_) => {
+                            if !run.is_empty() {
+                                runs.push(core::mem::take(&mut run));
+                            }
+                        }
+                    }
+                }
+                if !run.is_empty() {
+                    runs.push(run);
+                }
+            }
+        }
+        Ok(runs)
+    }
+
+    /// The four-bar of a driving and a driven dyad of the four poses, with
+    /// its input angles, assembly modes and crank order at each pose.
+    ///
+    /// # Errors
+    ///
+    /// [`crate::InvalidInput::CountOutOfRange`] when a dyad does not pass the four
+    /// poses (its crank length varies by more than [`super::DYAD_TOLERANCE`]);
+    /// [`crate::DegenerateError::ZeroLengthLink`] for a link of zero length;
+    /// errors of [`FourBar::from_pivots`].
+    pub fn drive(&self, driving: &Dyad, driven: &Dyad) -> Result<Drive> {
+        drive(&self.motion, driving, driven)
+    }
+
+    /// Filemon's construction with four lines for a driven dyad, with the
+    /// exact ends of the branch-free arcs of the circle-point curve.
+    ///
+    /// # Errors
+    ///
+    /// [`crate::InvalidInput::CountOutOfRange`] when `driven` does not pass the
+    /// four poses (as [`FourPositions::drive`]) or an image `C'_k = D_k1(C0)`
+    /// of its fixed pivot is not finite or coincides with its circle point;
+    /// [`crate::DegenerateError::ZeroLengthLink`] for a crank of zero length.
+    pub fn filemon(&self, driven: &Dyad) -> Result<FilemonArcs> {
+        check_dyad(&self.motion, driven, "driven dyad")?;
+        FilemonArcs::new(self, driven)
+    }
+}

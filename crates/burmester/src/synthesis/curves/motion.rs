@@ -1,0 +1,461 @@
+//! The motion of `n` poses relative to pose 1, in a local frame, and the
+//! linear form of the dyad condition (see the module docs of
+//! [`crate::synthesis::curves`]).
+
+use nalgebra::{Point2, Vector2};
+
+use super::COINCIDENT_POSES;
+use super::errors;
+use crate::error::Result;
+use crate::geom::{Pose, cross, perp, rotate_cs, wrap_angle};
+use crate::synthesis::Task;
+
+/// Why a row solve has no unique answer.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Failure {
+    /// The rows are parallel but inconsistent: the answer is at infinity,
+    /// along this unit direction (up to sign).
+    AtInfinity(Vector2<f64>),
+    /// The rows are parallel and consistent (or all zero): a whole line
+    /// of answers.
+    Undefined,
+}
+
+/// The displacements `D_1k(z) = R_k z + t_k` of a motion (local frame),
+/// index 0 the identity, and the linear form of the dyad condition:
+///
+/// ```text
+/// |D_1k(z) - g| = |z - g|   <=>   a_k(g) . z = b_k(g)
+/// a_k(g) = conj(R_k) t_k + (1 - conj(R_k)) g,    b_k(g) = t_k . g - |t_k|^2 / 2
+/// ```
+///
+/// (complex products, read as 2-vectors). It is linear in `z` for fixed
+/// `g` and linear in `g` for fixed `z`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct LinearForm {
+    /// `(cos, sin)` of the rotation of each displacement.
+    rot: Vec<(f64, f64)>,
+    /// The translation `t_k` of each displacement.
+    trans: Vec<Vector2<f64>>,
+}
+
+/// An affine polynomial `[c, x, y]` of the plane.
+type Affine = [f64; 3];
+
+impl LinearForm {
+    /// `D_1k(z) = R_k z + t_k` (0-based `k`).
+    #[cfg(test)]
+    pub(crate) fn displace(&self, k: usize, z: Vector2<f64>) -> Vector2<f64> {
+        let (c, s) = self.rot[k];
+        rotate_cs(z, c, s) + self.trans[k]
+    }
+
+    /// `(conj(R_k) t_k, (1 - cos, sin))`: the constant of `a_k` and the
+    /// complex factor `1 - conj(R_k)` of `g`.
+    fn parts(&self, k: usize) -> (Vector2<f64>, (f64, f64)) {
+        let (c, s) = self.rot[k];
+        let t = self.trans[k];
+        (rotate_cs(t, c, -s), (1.0 - c, s))
+    }
+
+    /// Row `k` (0-based, `k >= 1`) at `g`: `(a_k(g), b_k(g))`.
+    pub(crate) fn row(&self, k: usize, g: Vector2<f64>) -> (Vector2<f64>, f64) {
+        let (ck, (mr, mi)) = self.parts(k);
+        let t = self.trans[k];
+        let a = ck + Vector2::new(mr * g.x - mi * g.y, mi * g.x + mr * g.y);
+        (a, t.dot(&g) - 0.5 * t.norm_squared())
+    }
+
+    /// The derivative of `a_k(g) . z - b_k(g)` with respect to `g`:
+    /// `conj(1 - conj(R_k)) z - t_k`.
+    pub(crate) fn row_dg(&self, k: usize, z: Vector2<f64>) -> Vector2<f64> {
+        let (_, (mr, mi)) = self.parts(k);
+        Vector2::new(mr * z.x + mi * z.y, mr * z.y - mi * z.x) - self.trans[k]
+    }
+
+    /// Row `k` as affine polynomials in `g`: `[a_x, a_y, b]`.
+    fn row_poly(&self, k: usize) -> [Affine; 3] {
+        let (ck, (mr, mi)) = self.parts(k);
+        let t = self.trans[k];
+        [
+            [ck.x, mr, -mi],
+            [ck.y, mi, mr],
+            [-0.5 * t.norm_squared(), t.x, t.y],
+        ]
+    }
+
+    /// The exact expansion of `det [a_i b_i; a_j b_j; a_k b_k]` as a cubic in
+    /// `g` (ascending coefficients, as [`crate::geom::Cubic::new`]), and the
+    /// largest coefficient of the same expansion with every number replaced
+    /// by its magnitude (the scale of its rounding and of a vanishing
+    /// determinant).
+    pub(crate) fn cubic(&self, rows: [usize; 3]) -> ([f64; 10], f64) {
+        let r = rows.map(|k| self.row_poly(k));
+        let ra = r.map(|row| row.map(|p| p.map(f64::abs)));
+        let mut out = [0.0; 10];
+        let mut mag = [0.0; 10];
+        const PERMS: [([usize; 3], f64); 6] = [
+            ([0, 1, 2], 1.0),
+            ([1, 2, 0], 1.0),
+            ([2, 0, 1], 1.0),
+            ([0, 2, 1], -1.0),
+            ([2, 1, 0], -1.0),
+            ([1, 0, 2], -1.0),
+        ];
+        for (p, sign) in PERMS {
+            let term = mul3(&mul2(&r[0][p[0]], &r[1][p[1]]), &r[2][p[2]]);
+            let bound = mul3(&mul2(&ra[0][p[0]], &ra[1][p[1]]), &ra[2][p[2]]);
+            for i in 0..10 {
+                out[i] += sign * term[i];
+                mag[i] += bound[i];
+            }
+        }
+        (out, mag.iter().fold(0.0, |m: f64, v| m.max(*v)))
+    }
+
+    /// The form of the inverted motion (the ground seen from the coupler
+    /// at pose 1): `D_1k^-1(w) = conj(R_k) w - conj(R_k) t_k`.
+    pub(crate) fn inverse(&self) -> LinearForm {
+        LinearForm {
+            rot: self.rot.iter().map(|&(c, s)| (c, -s)).collect(),
+            trans: self
+                .rot
+                .iter()
+                .zip(&self.trans)
+                .map(|(&(c, s), &t)| -rotate_cs(t, c, -s))
+                .collect(),
+        }
+    }
+
+    /// The `z` with `a_k(g) . z = b_k(g)` for the rows `ks`, from the pair
+    /// of rows with the largest determinant (the best conditioned).
+    pub(crate) fn solve(&self, g: Vector2<f64>, ks: &[usize]) -> Result<Vector2<f64>, Failure> {
+        let rows: Vec<(Vector2<f64>, f64)> = ks.iter().map(|&k| self.row(k, g)).collect();
+        let (mut best, mut pair) = (-1.0, (0, 0));
+        for i in 0..rows.len() {
+            for j in i + 1..rows.len() {
+                let d = cross(rows[i].0, rows[j].0).abs();
+                if d > best {
+                    best = d;
+                    pair = (i, j);
+                }
+            }
+        }
+        let (r, amax) = rows
+            .iter()
+            .map(|(a, _)| a.norm())
+            .enumerate()
+            .fold((0, 0.0), |acc, (i, n)| if n > acc.1 { (i, n) } else { acc });
+        if !(amax > 0.0) || !amax.is_finite() {
+            return Err(Failure::Undefined);
+        }
+        if !(best > 64.0 * f64::EPSILON * amax * amax) {
+            // Parallel rows: consistent (a line of answers) or not (at infinity).
+            let (ar, br) = rows[r];
+            let inconsistent = rows.iter().any(|(a, b)| {
+                let lam = a.dot(&ar) / (amax * amax);
+                (b - lam * br).abs() > 1e-9 * (b.abs() + (lam * br).abs()) + f64::MIN_POSITIVE
+            });
+            return Err(if inconsistent {
+                Failure::AtInfinity(perp(ar / amax))
+            } else {
+                Failure::Undefined
+            });
+        }
+        let ((ai, bi), (aj, bj)) = (rows[pair.0], rows[pair.1]);
+        let det = cross(ai, aj);
+        let z = Vector2::new(bi * aj.y - bj * ai.y, ai.x * bj - aj.x * bi) / det;
+        if z.iter().all(|v| v.is_finite()) {
+            Ok(z)
+        } else {
+            Err(Failure::AtInfinity(perp(ai / ai.norm())))
+        }
+    }
+}
+
+/// `p q` for affine `p`, `q`: a quadratic `[1, x, y, x^2, xy, y^2]`.
+fn mul2(p: &Affine, q: &Affine) -> [f64; 6] {
+    [
+        p[0] * q[0],
+        p[0] * q[1] + p[1] * q[0],
+        p[0] * q[2] + p[2] * q[0],
+        p[1] * q[1],
+        p[1] * q[2] + p[2] * q[1],
+        p[2] * q[2],
+    ]
+}
+
+/// `q a` for a quadratic `q` and an affine `a`: a cubic, ascending.
+fn mul3(q: &[f64; 6], a: &Affine) -> [f64; 10] {
+    [
+        q[0] * a[0],
+        q[0] * a[1] + q[1] * a[0],
+        q[0] * a[2] + q[2] * a[0],
+        q[1] * a[1] + q[3] * a[0],
+        q[1] * a[2] + q[2] * a[1] + q[4] * a[0],
+        q[2] * a[2] + q[5] * a[0],
+        q[3] * a[1],
+        q[3] * a[2] + q[4] * a[1],
+        q[4] * a[2] + q[5] * a[1],
+        q[5] * a[2],
+    ]
+}
+
+/// `n` poses, validated, in a local frame (origin the centroid of the pose
+/// points, unit their largest distance from it), with the linear form.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Motion {
+    pub(crate) poses: Vec<Pose>,
+    pub(crate) origin: Point2<f64>,
+    pub(crate) scale: f64,
+    /// The pose points in the local frame.
+    pub(crate) pos: Vec<Vector2<f64>>,
+    /// `theta_1k`, wrapped into `(-pi, pi]`.
+    pub(crate) theta: Vec<f64>,
+    pub(crate) form: LinearForm,
+}
+
+impl Motion {
+    /// The motion of `poses` (at most five).
+    ///
+    /// # Errors
+    ///
+    /// Non-finite numbers, coordinates or angles beyond
+    /// [`Task::MAX_COORDINATE`] or [`Task::MAX_ANGLE`], a task smaller than
+    /// [`Task::MIN_SCALE`], two coincident poses, or poses that are all
+    /// rotations about one point.
+    pub(crate) fn new(poses: &[Pose]) -> Result<Self> {
+        const NAMES: [[&str; 3]; 5] = [
+            ["pose 1 x", "pose 1 y", "pose 1 angle"],
+            ["pose 2 x", "pose 2 y", "pose 2 angle"],
+            ["pose 3 x", "pose 3 y", "pose 3 angle"],
+            ["pose 4 x", "pose 4 y", "pose 4 angle"],
+            ["pose 5 x", "pose 5 y", "pose 5 angle"],
+        ];
+        if poses.len() > NAMES.len() || poses.len() < 2 {
+            return Err(errors::pose_count(
+                "the Burmester curves",
+                NAMES.len(),
+                poses.len(),
+            ));
+        }
+        for (p, n) in poses.iter().zip(NAMES) {
+            for (name, v) in [(n[0], p.position.x), (n[1], p.position.y), (n[2], p.angle)] {
+                if !v.is_finite() {
+                    return Err(errors::not_finite(name, v));
+                }
+            }
+            if p.angle.abs() > Task::MAX_ANGLE {
+                return Err(errors::too_large(
+                    n[2],
+                    p.angle,
+                    Task::MAX_ANGLE,
+                    "reduce it modulo 2 pi",
+                ));
+            }
+            for (name, v) in [(n[0], p.position.x), (n[1], p.position.y)] {
+                if v.abs() > Task::MAX_COORDINATE {
+                    return Err(errors::too_large(
+                        name,
+                        v,
+                        Task::MAX_COORDINATE,
+                        "rescale the task",
+                    ));
+                }
+            }
+        }
+        let n = poses.len() as f64;
+        let origin = Point2::from(
+            poses
+                .iter()
+                .fold(Vector2::zeros(), |acc, p| acc + p.position.coords / n),
+        );
+        let scale = poses
+            .iter()
+            .map(|p| (p.position - origin).norm())
+            .fold(0.0, f64::max);
+        for i in 0..poses.len() {
+            for j in i + 1..poses.len() {
+                let d = (poses[j].position - poses[i].position).norm();
+                let a = wrap_angle(poses[j].angle - poses[i].angle).abs();
+                if d <= COINCIDENT_POSES * scale && a <= COINCIDENT_POSES {
+                    return Err(errors::coincident_poses(i + 1, j + 1));
+                }
+            }
+        }
+        if scale == 0.0 {
+            return Err(errors::common_pole(origin));
+        }
+        if scale < Task::MIN_SCALE {
+            return Err(errors::too_small(scale, Task::MIN_SCALE));
+        }
+        let pos: Vec<Vector2<f64>> = poses
+            .iter()
+            .map(|p| (p.position - origin) / scale)
+            .collect();
+        let theta: Vec<f64> = poses
+            .iter()
+            .map(|p| wrap_angle(p.angle - poses[0].angle))
+            .collect();
+        let rot: Vec<(f64, f64)> = theta
+            .iter()
+            .map(|t| {
+                let (s, c) = t.sin_cos();
+                (c, s)
+            })
+            .collect();
+        let trans = rot
+            .iter()
+            .zip(&pos)
+            .map(|(&(c, s), &q)| q - rotate_cs(pos[0], c, s))
+            .collect();
+        Ok(Motion {
+            poses: poses.to_vec(),
+            origin,
+            scale,
+            pos,
+            theta,
+            form: LinearForm { rot, trans },
+        })
+    }
+
+    /// A fixed point in the local frame.
+    #[inline]
+    pub(crate) fn local_of(&self, p: Point2<f64>) -> Vector2<f64> {
+        (p - self.origin) / self.scale
+    }
+
+    /// A local vector back in the fixed frame.
+    #[inline]
+    pub(crate) fn global_of(&self, v: Vector2<f64>) -> Point2<f64> {
+        self.origin + v * self.scale
+    }
+
+    /// `D_ij(z) = p_j + e^{i theta_ij} (z - p_i)` in the fixed frame
+    /// (0-based `i`, `j`).
+    pub(crate) fn displace(&self, z: Point2<f64>, i: usize, j: usize) -> Point2<f64> {
+        let (pi, pj) = (&self.poses[i], &self.poses[j]);
+        let (s, c) = wrap_angle(pj.angle - pi.angle).sin_cos();
+        pj.position + rotate_cs(z - pi.position, c, s)
+    }
+
+    /// The pole `P_jk` (0-based) in homogeneous local coordinates
+    /// `[X, Y, W]` (unit length):
+    ///
+    /// ```text
+    /// P_jk = [ sin(theta/2) (q_j + q_k)/2 + cos(theta/2) i (q_k - q_j)/2 ,  sin(theta/2) ]
+    /// ```
+    ///
+    /// `W = 0` for a pure translation (a pole at infinity, perpendicular to
+    /// the translation).
+    pub(crate) fn pole(&self, j: usize, k: usize) -> [f64; 3] {
+        let th = wrap_angle(self.theta[k] - self.theta[j]);
+        let (s, c) = (0.5 * th).sin_cos();
+        let mid = (self.pos[j] + self.pos[k]) * 0.5;
+        let d = (self.pos[k] - self.pos[j]) * 0.5;
+        let xy = mid * s + perp(d) * c;
+        unit3([xy.x, xy.y, s])
+    }
+
+    /// A homogeneous local point in the fixed frame, `None` at infinity
+    /// (or when it is not representable).
+    pub(crate) fn dehomogenize(&self, h: [f64; 3]) -> Option<Point2<f64>> {
+        if h[2] == 0.0 {
+            return None;
+        }
+        let p = self.global_of(Vector2::new(h[0] / h[2], h[1] / h[2]));
+        (p.x.is_finite() && p.y.is_finite()).then_some(p)
+    }
+}
+
+/// `a x b` for homogeneous points or lines.
+pub(crate) fn cross3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    unit3([
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ])
+}
+
+/// `h` scaled to unit length (unchanged when zero).
+fn unit3(h: [f64; 3]) -> [f64; 3] {
+    let m = h.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if !(m > 0.0) || !m.is_finite() {
+        return h;
+    }
+    let h = h.map(|v| v / m);
+    let n = (h[0] * h[0] + h[1] * h[1] + h[2] * h[2]).sqrt();
+    h.map(|v| v / n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn motion() -> Motion {
+        Motion::new(&[
+            Pose::new(1.0, 2.0, 0.3),
+            Pose::new(2.5, 1.0, 0.9),
+            Pose::new(0.5, -1.0, -0.4),
+            Pose::new(-1.0, 0.2, 1.7),
+        ])
+        .unwrap()
+    }
+
+    #[test]
+    fn rows_state_the_dyad_condition() {
+        let m = motion();
+        let g = Vector2::new(0.3, -0.7);
+        for z in [Vector2::new(0.1, 0.2), Vector2::new(-2.0, 1.5)] {
+            for k in 1..4 {
+                let (a, b) = m.form.row(k, g);
+                let lhs = (m.form.displace(k, z) - g).norm_squared() - (z - g).norm_squared();
+                assert!((lhs - 2.0 * (a.dot(&z) - b)).abs() < 1e-13, "{lhs}");
+                // The g-derivative.
+                let e = |g: Vector2<f64>| {
+                    let (a, b) = m.form.row(k, g);
+                    a.dot(&z) - b
+                };
+                let h = 1e-6;
+                let num = Vector2::new(
+                    (e(g + Vector2::x() * h) - e(g - Vector2::x() * h)) / (2.0 * h),
+                    (e(g + Vector2::y() * h) - e(g - Vector2::y() * h)) / (2.0 * h),
+                );
+                assert!((num - m.form.row_dg(k, z)).norm() < 1e-8);
+            }
+        }
+    }
+
+    #[test]
+    fn the_cubic_is_the_determinant() {
+        let m = motion();
+        let (c, mag) = m.form.cubic([1, 2, 3]);
+        assert!(mag > 0.0);
+        for g in [Vector2::new(0.3, -0.7), Vector2::new(2.0, 1.0)] {
+            let r: Vec<_> = (1..4).map(|k| m.form.row(k, g)).collect();
+            let det = r[0].0.x * (r[1].0.y * r[2].1 - r[2].0.y * r[1].1)
+                - r[0].0.y * (r[1].0.x * r[2].1 - r[2].0.x * r[1].1)
+                + r[0].1 * (r[1].0.x * r[2].0.y - r[2].0.x * r[1].0.y);
+            let cubic = crate::geom::Cubic::new(c).unwrap();
+            let k = c.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            assert!((cubic.evaluate(Point2::from(g)) * k - det).abs() < 1e-13);
+        }
+    }
+
+    #[test]
+    fn poles_are_fixed_points() {
+        let m = motion();
+        for j in 0..4 {
+            for k in j + 1..4 {
+                let p = m.dehomogenize(m.pole(j, k)).unwrap();
+                assert!((m.displace(p, j, k) - p).norm() < 1e-12);
+            }
+        }
+        // The inverse form undoes the motion.
+        let inv = m.form.inverse();
+        let z = Vector2::new(0.4, -1.1);
+        for k in 0..4 {
+            assert!((inv.displace(k, m.form.displace(k, z)) - z).norm() < 1e-14);
+        }
+    }
+}

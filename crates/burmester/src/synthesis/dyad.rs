@@ -1,0 +1,292 @@
+//! Dyads and the four-bar built from a driving and a driven dyad.
+//!
+//! A dyad is a crank: its center point (fixed pivot) and its circle point
+//! (moving pivot at pose 1). The driving dyad is `(A0, A1)`, the driven dyad
+//! `(C0, C1)`. At pose `k` the moving pivots are `A_k = D_1k(A1)` and
+//! `C_k = D_1k(C1)`; the four-bar has ground `A0 C0`, crank `|A1 - A0|`,
+//! coupler `|C1 - A1|` and rocker `|C1 - C0|`.
+//!
+//! With the position analysis' naming, the assembly mode at pose `k` is
+//! the sign of `sin(theta4 - theta3) = cross(C_k - A_k, C_k - C0) / (L3 L4)`,
+//! which is minus the branch sign `s_k = sign cross(C0 - C_k, A_k - C_k)` of
+//! the paper: the design is free of the branch defect exactly when the mode
+//! is the same at every pose ([`AssemblyMode::of_loop`]).
+
+use core::f64::consts::TAU;
+
+use nalgebra::{Point2, Vector2};
+
+use crate::error::{DegenerateError, InvalidInput, Result, count_in};
+use crate::geom::{PerPose, Pose, rotate};
+use crate::linkage::figures::figures_of;
+use crate::linkage::{AssemblyMode, Direction, FourBar, LinkageFigures};
+use crate::synthesis::Task;
+use crate::tolerance;
+
+/// A crank of a synthesized linkage: its fixed pivot and its moving pivot
+/// at pose 1.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dyad {
+    /// The center point: the fixed pivot.
+    pub center: Point2<f64>,
+    /// The circle point: the moving pivot, where it is at pose 1.
+    pub circle: Point2<f64>,
+}
+
+impl Dyad {
+    /// A dyad from its center point and circle point.
+    pub const fn new(center: Point2<f64>, circle: Point2<f64>) -> Self {
+        Dyad { center, circle }
+    }
+
+    /// The crank length `|circle - center|`.
+    pub fn length(&self) -> f64 {
+        (self.circle - self.center).norm()
+    }
+}
+
+/// A four-bar built from a driving and a driven dyad of a task, with what it
+/// takes to drive it through the task's poses and its figures.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SynthesizedFourBar {
+    /// The linkage: input pivot `A0`, output pivot `C0`.
+    pub fourbar: FourBar,
+    /// The driving dyad `(A0, A1)`.
+    pub driving: Dyad,
+    /// The driven dyad `(C0, C1)`.
+    pub driven: Dyad,
+    /// The input angle `theta2` at each pose (absolute, radians, in
+    /// `(-pi, pi]`).
+    pub input_angles: PerPose<f64>,
+    /// The task's coupler point in the linkage's coupler frame (origin at
+    /// the crank joint `A`, x-axis toward the rocker joint `C`).
+    pub coupler_point: Vector2<f64>,
+    /// The task's coupler angle minus the linkage's coupler angle `theta3`
+    /// (constant over the motion).
+    pub coupler_angle_offset: f64,
+    /// What a designer checks of it: the assembly mode at each pose,
+    /// Grashof type, order and circuit, the minimum transmission angle over
+    /// the travel, the link ratio.
+    pub figures: LinkageFigures,
+}
+
+impl SynthesizedFourBar {
+    /// The most input angles [`travel_angles`](Self::travel_angles) returns.
+    pub const MAX_TRAVEL_SAMPLES: usize = 1 << 20;
+
+    /// The assembly mode at each pose; `None` where the pose is a toggle
+    /// (coupler and rocker collinear).
+    pub fn modes(&self) -> PerPose<Option<AssemblyMode>> {
+        self.figures.modes
+    }
+
+    /// Whether the linkage passes every pose in one assembly mode (no
+    /// branch defect and no toggle at a pose).
+    pub fn is_branch_free(&self) -> bool {
+        self.figures.branch_free()
+    }
+
+    /// The coupler pose (the task's coupler point and angle) when the
+    /// linkage is driven to `theta2` in `mode`.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourBar::solve`].
+    pub fn pose_at(&self, theta2: f64, mode: AssemblyMode) -> Result<Pose> {
+        let c = self.fourbar.solve(theta2, mode)?;
+        let p = self.fourbar.coupler_point(&c, self.coupler_point);
+        Ok(Pose {
+            position: p,
+            angle: c.theta3 + self.coupler_angle_offset,
+        })
+    }
+
+    /// The travel: the input angle at pose 1 and the signed angle the input
+    /// turns, in the feasible direction, through the poses to the last
+    /// (positive counter-clockwise); `None` when no direction carries the
+    /// coupler through the poses in order ([`Direction::None`]).
+    pub fn travel(&self) -> Option<(f64, f64)> {
+        let t = &self.input_angles;
+        let span = (t[t.len() - 1] - t[0]).rem_euclid(TAU);
+        match self.figures.direction {
+            Direction::Ccw => Some((t[0], span)),
+            Direction::Cw => Some((t[0], span - TAU)),
+            Direction::None => None,
+        }
+    }
+
+    /// The input angle at each pose along the [`travel`](Self::travel),
+    /// unwrapped: starting at the angle of pose 1 and moving monotonically
+    /// in the travel's direction (so the poses' angles are exact stops of a
+    /// drive); `None` when there is no travel.
+    pub fn travel_stops(&self) -> Option<PerPose<f64>> {
+        let (start, span) = self.travel()?;
+        let t = &self.input_angles;
+        Some(PerPose::from_fn(t.len(), |k| {
+            let d = (t[k] - t[0]).rem_euclid(TAU);
+            let d = if span < 0.0 && d > 0.0 { d - TAU } else { d };
+            start + d
+        }))
+    }
+
+    /// `samples` input angles evenly spaced over the [`travel`](Self::travel),
+    /// both ends included (for drawing and animating the motion).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::CountOutOfRange`] for fewer than 2 or more than
+    /// [`SynthesizedFourBar::MAX_TRAVEL_SAMPLES`] samples;
+    /// [`InvalidInput::NeedsPoses`]-free: a linkage without a feasible
+    /// direction gives an empty list.
+    pub fn travel_angles(&self, samples: usize) -> Result<Vec<f64>> {
+        let n = count_in("travel samples", samples, 2, Self::MAX_TRAVEL_SAMPLES)?;
+        Ok(match self.travel() {
+            Some((start, span)) => (0..n)
+                .map(|k| start + span * (k as f64 / (n - 1) as f64))
+                .collect(),
+            None => Vec::new(),
+        })
+    }
+}
+
+impl Task {
+    /// The dyad whose center point is `center` (its circle point from
+    /// [`Task::circle_point`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::circle_point`].
+    pub fn dyad_from_center(&self, center: Point2<f64>) -> Result<Dyad> {
+        Ok(Dyad::new(center, self.circle_point(center)?))
+    }
+
+    /// The dyad whose circle point is `circle` (its center point from
+    /// [`Task::center_point`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::center_point`].
+    pub fn dyad_from_circle(&self, circle: Point2<f64>) -> Result<Dyad> {
+        Ok(Dyad::new(self.center_point(circle)?, circle))
+    }
+
+    /// Where the dyad's moving pivot is at each pose: `D_1k(circle)`.
+    pub fn moving_pivots(&self, dyad: &Dyad) -> PerPose<Point2<f64>> {
+        self.motion().positions(dyad.circle)
+    }
+
+    /// The dyad's crank angle at each pose: `arg(D_1k(circle) - center)`.
+    pub fn crank_angles(&self, dyad: &Dyad) -> PerPose<f64> {
+        self.moving_pivots(dyad).map(|p| {
+            let v = p - dyad.center;
+            v.y.atan2(v.x)
+        })
+    }
+
+    /// Checks that `dyad` is a dyad of this task: its moving pivot stays at
+    /// one distance from its fixed pivot over the poses (within
+    /// [`tolerance::DYAD`]), and it has a length.
+    fn check_dyad(&self, dyad: &Dyad, which: &'static str) -> Result<()> {
+        let d = self.moving_pivots(dyad).map(|p| (p - dyad.center).norm());
+        let size = d.iter().copied().fold(0.0, f64::max);
+        if !size.is_finite() {
+            return Err(InvalidInput::Overflow {
+                what: "the dyad's length",
+                hint: "pass a dyad nearer the task",
+            }
+            .into());
+        }
+        if size <= tolerance::POINT * self.scale() {
+            return Err(DegenerateError::ZeroLengthLink {
+                what: which,
+                x: dyad.center.x,
+                y: dyad.center.y,
+            }
+            .into());
+        }
+        let spread =
+            d.iter().map(|&x| (x - d[0]).abs()).fold(0.0, f64::max) / (size + self.scale());
+        if spread > tolerance::DYAD {
+            return Err(InvalidInput::NotADyad {
+                which,
+                spread,
+                tolerance: tolerance::DYAD,
+            }
+            .into());
+        }
+        Ok(())
+    }
+
+    /// The four-bar built from a driving dyad `(A0, A1)` and a driven dyad
+    /// `(C0, C1)`, with its input angle and assembly mode at each pose and
+    /// its figures.
+    ///
+    /// Driving the returned linkage to `input_angles[k]` in `modes()[k]`
+    /// places the task's coupler point and angle at pose `k + 1`.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotADyad`] when a dyad is not a dyad of this task;
+    /// [`DegenerateError::ZeroLengthLink`] when a link has zero length
+    /// (coincident pivots, a crank of zero length, or coincident moving
+    /// pivots); errors of [`FourBar::from_pivots`].
+    pub fn four_bar(&self, driving: &Dyad, driven: &Dyad) -> Result<SynthesizedFourBar> {
+        self.check_dyad(driving, "driving dyad")?;
+        self.check_dyad(driven, "driven dyad")?;
+        let tiny = tolerance::POINT * self.scale();
+        for (a, b, what) in [
+            (driving.center, driven.center, "ground link"),
+            (driving.circle, driven.circle, "coupler link"),
+        ] {
+            if (a - b).norm() <= tiny {
+                return Err(DegenerateError::ZeroLengthLink {
+                    what,
+                    x: a.x,
+                    y: a.y,
+                }
+                .into());
+            }
+        }
+        let fourbar = FourBar::from_pivots(
+            driving.center,
+            driven.center,
+            driving.length(),
+            (driven.circle - driving.circle).norm(),
+            driven.length(),
+        )?;
+        let a = self.moving_pivots(driving);
+        let c = self.moving_pivots(driven);
+        let input_angles = a.map(|p| {
+            let v = p - driving.center;
+            v.y.atan2(v.x)
+        });
+        let figures = figures_of(driving.center, &a, driven.center, &c, 0.0).ok_or(
+            InvalidInput::Overflow {
+                what: "the linkage's lengths",
+                hint: "pass dyads nearer the task",
+            },
+        )?;
+        let ac = c[0] - a[0];
+        let theta3 = ac.y.atan2(ac.x);
+        let pose1 = self.poses()[0];
+        Ok(SynthesizedFourBar {
+            fourbar,
+            driving: *driving,
+            driven: *driven,
+            input_angles,
+            coupler_point: rotate(pose1.position - a[0], -theta3),
+            coupler_angle_offset: pose1.angle - theta3,
+            figures,
+        })
+    }
+
+    /// The figures of the linkage built from a driving and a driven dyad of
+    /// this task (its [`SynthesizedFourBar::figures`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::four_bar`].
+    pub fn linkage_figures(&self, driving: &Dyad, driven: &Dyad) -> Result<LinkageFigures> {
+        Ok(self.four_bar(driving, driven)?.figures)
+    }
+}

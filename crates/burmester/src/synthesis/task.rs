@@ -1,0 +1,447 @@
+//! The task: three to five poses of the coupler, validated, with their
+//! motion (displacements and poles) and, for three poses, the maps between
+//! circle points and center points.
+//!
+//! The **circle-point plane** holds coupler points written where they are at
+//! pose 1; the **center-point plane** is the fixed frame. A dyad's center
+//! point (fixed pivot) `Y` and circle point (moving pivot at pose 1) `X`
+//! satisfy `|X - Y| = |D_1k(X) - Y|` for every pose `k` (see
+//! [`motion`](crate::synthesis::motion) for `D_ij` and the poles).
+
+use nalgebra::{Point2, Vector2};
+
+use crate::error::{DegenerateError, InvalidInput, Result, bounded};
+use crate::geom::{PerPose, Pose, Similarity, length};
+use crate::synthesis::motion::{Motion, Pole};
+use crate::synthesis::three::Cremona;
+use crate::tolerance;
+
+/// Three to five poses of the coupler, validated, with their motion.
+///
+/// Everything that holds for any number of poses (the displacements, the
+/// poles, dyads and the four-bar built from two) is here; what holds for
+/// three poses only (the pole circles, the closed-form maps, Filemon's
+/// conics) is on [`Cremona`], from [`Task::cremona`].
+///
+/// # Example
+///
+/// ```
+/// use burmester::{Pose, Task};
+/// let task = Task::new(&[
+///     Pose::new(0.0, 0.0, 0.0),
+///     Pose::new(2.0, 0.5, 0.4),
+///     Pose::new(3.0, 2.0, 1.1),
+/// ])?;
+/// let [p12, p13, p23] = task.cremona()?.poles();
+/// // A circle point and its center point are a round trip.
+/// let y = burmester::Point2::new(1.0, -2.0);
+/// let x = task.circle_point(y)?;
+/// assert!((task.center_point(x)? - y).norm() < 1e-12);
+/// # Ok::<(), burmester::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Task {
+    motion: Motion,
+    /// The unit of the relative tolerances (see [`Task::scale`]).
+    scale: f64,
+    /// The three-position maps (three poses only).
+    cremona: Option<Cremona>,
+}
+
+impl Task {
+    /// The fewest poses of a task.
+    pub const MIN_POSES: usize = 3;
+
+    /// The most poses of a task.
+    pub const MAX_POSES: usize = crate::geom::MAX_POSES;
+
+    /// Largest magnitude of a pose coordinate. With it and
+    /// [`tolerance::MIN_ROTATION`] the poles stay below about `1e107`, so
+    /// no square of a distance overflows.
+    pub const MAX_COORDINATE: f64 = 1e100;
+
+    /// Largest magnitude of a pose angle, in radians: past it a double no
+    /// longer holds the angle to `1e-7` rad.
+    pub const MAX_ANGLE: f64 = 1e9;
+
+    /// Smallest [`Task::scale`]: smaller tasks are rejected (rescale them),
+    /// so that no square of a distance underflows.
+    pub const MIN_SCALE: f64 = 1e-100;
+
+    /// A task from three to five poses.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::PoseCount`] for fewer than three or more than five
+    /// poses; [`InvalidInput::NotFinite`] for a NaN or infinite number;
+    /// [`InvalidInput::TooLarge`] when a coordinate exceeds
+    /// [`Task::MAX_COORDINATE`] or an angle [`Task::MAX_ANGLE`] in
+    /// magnitude; [`DegenerateError::CoincidentPoses`] when two poses are
+    /// equal; [`DegenerateError::CoincidentPoles`] when every pose is a
+    /// rotation about one point; [`InvalidInput::TooSmall`] when the task
+    /// is smaller than [`Task::MIN_SCALE`]. For three poses also
+    /// [`DegenerateError::PureTranslation`] when two poses have the same
+    /// angle (modulo `2 pi`, within [`tolerance::MIN_ROTATION`]): the
+    /// three-position maps need their pole.
+    pub fn new(poses: &[Pose]) -> Result<Self> {
+        let n = poses.len();
+        if !(Self::MIN_POSES..=Self::MAX_POSES).contains(&n) {
+            return Err(InvalidInput::PoseCount {
+                found: n,
+                min: Self::MIN_POSES,
+                max: Self::MAX_POSES,
+            }
+            .into());
+        }
+        const NAMES: [[&str; 3]; 5] = [
+            ["pose 1 x", "pose 1 y", "pose 1 angle"],
+            ["pose 2 x", "pose 2 y", "pose 2 angle"],
+            ["pose 3 x", "pose 3 y", "pose 3 angle"],
+            ["pose 4 x", "pose 4 y", "pose 4 angle"],
+            ["pose 5 x", "pose 5 y", "pose 5 angle"],
+        ];
+        const RESCALE: &str = "rescale the task (the maps are invariant under scaling)";
+        for (p, names) in poses.iter().zip(NAMES) {
+            bounded(names[0], p.position.x, Self::MAX_COORDINATE, RESCALE)?;
+            bounded(names[1], p.position.y, Self::MAX_COORDINATE, RESCALE)?;
+            bounded(
+                names[2],
+                p.angle,
+                Self::MAX_ANGLE,
+                "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)",
+            )?;
+        }
+        let motion = Motion::new(PerPose::from_slice(poses));
+        for (i, j) in motion.pairs() {
+            let (a, b) = (&poses[i - 1], &poses[j - 1]);
+            if motion.rotation0(i - 1, j - 1).abs() <= tolerance::MIN_ROTATION {
+                if a.position == b.position {
+                    return Err(DegenerateError::CoincidentPoses { i, j }.into());
+                }
+                if n == 3 {
+                    return Err(DegenerateError::PureTranslation { i, j }.into());
+                }
+            }
+        }
+        if n == 3 {
+            Self::three(motion)
+        } else {
+            Self::more(motion)
+        }
+    }
+
+    /// Three poses: the scale is the size of the pole triangle.
+    fn three(motion: Motion) -> Result<Self> {
+        let poles: Vec<Point2<f64>> = motion.poles().iter().filter_map(Pole::finite).collect();
+        let poles = [poles[0], poles[1], poles[2]];
+        let size = [(0, 1), (0, 2), (1, 2)]
+            .iter()
+            .map(|&(a, b)| length(poles[b] - poles[a]))
+            .fold(0.0, f64::max);
+        if !size.is_finite() {
+            return Err(InvalidInput::Overflow {
+                what: "the pole triangle",
+                hint: "pass poses whose poles are representable (coordinates far below 1e300)",
+            }
+            .into());
+        }
+        let extent = motion
+            .poses()
+            .iter()
+            .map(|p| length(p.position - poles[0]))
+            .fold(0.0, f64::max);
+        if size <= tolerance::POINT * extent || size == 0.0 {
+            return Err(DegenerateError::CoincidentPoles {
+                x: poles[0].x,
+                y: poles[0].y,
+            }
+            .into());
+        }
+        Self::check_scale(size)?;
+        Ok(Task {
+            motion,
+            scale: size,
+            cremona: Some(Cremona::new(motion, poles, size)),
+        })
+    }
+
+    /// Four or five poses: the scale is the largest distance between two
+    /// pose positions.
+    fn more(motion: Motion) -> Result<Self> {
+        let p = motion.poses();
+        let mut size: f64 = 0.0;
+        for (i, j) in motion.pairs() {
+            size = size.max(length(p[j - 1].position - p[i - 1].position));
+        }
+        // Every pose a rotation about one point: all poles coincide there.
+        let poles = motion.poles();
+        if let Some(first) = poles[0].finite() {
+            let all_there = poles.iter().all(|q| {
+                q.finite().is_some_and(|q| {
+                    length(q - first) <= tolerance::POINT * (size + length(p[0].position - first))
+                })
+            });
+            if all_there {
+                return Err(DegenerateError::CoincidentPoles {
+                    x: first.x,
+                    y: first.y,
+                }
+                .into());
+            }
+        }
+        Self::check_scale(size)?;
+        Ok(Task {
+            motion,
+            scale: size,
+            cremona: None,
+        })
+    }
+
+    fn check_scale(size: f64) -> Result<()> {
+        if size < Self::MIN_SCALE {
+            return Err(InvalidInput::TooSmall {
+                name: "the task's size",
+                value: size,
+                limit: Self::MIN_SCALE,
+                hint: "rescale the task (the maps are invariant under scaling)",
+            }
+            .into());
+        }
+        Ok(())
+    }
+
+    /// A task from `[x, y, angle]` triples (angles in radians).
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::new`].
+    pub fn from_xya(poses: &[[f64; 3]]) -> Result<Self> {
+        let p: Vec<Pose> = poses.iter().map(|&[x, y, a]| Pose::new(x, y, a)).collect();
+        Self::new(&p)
+    }
+
+    /// The poses.
+    pub fn poses(&self) -> &[Pose] {
+        self.motion.poses()
+    }
+
+    /// The number of poses (3, 4 or 5).
+    pub fn len(&self) -> usize {
+        self.motion.len()
+    }
+
+    /// Always false: a task has at least three poses.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// The motion through the poses: displacements and poles.
+    pub fn motion(&self) -> &Motion {
+        &self.motion
+    }
+
+    /// The unit of the relative tolerances: for three poses the size of the
+    /// pole triangle (its longest side), for four or five the largest
+    /// distance between two pose positions.
+    pub fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// The three-position maps (pole circles, closed-form maps, image poles).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NeedsPoses`] for a task of four or five poses.
+    pub fn cremona(&self) -> Result<&Cremona> {
+        self.cremona
+            .as_ref()
+            .ok_or_else(|| self.needs(3, "Task::cremona"))
+    }
+
+    /// The error of a method that needs `required` poses.
+    pub(crate) fn needs(&self, required: usize, method: &'static str) -> crate::Error {
+        InvalidInput::NeedsPoses {
+            method,
+            required,
+            found: self.len(),
+        }
+        .into()
+    }
+
+    /// The rotations `theta_ij` of the pairs `(1,2), (1,3), ..., (2,3), ...`,
+    /// each wrapped into `(-pi, pi]`.
+    pub fn rotations(&self) -> Vec<f64> {
+        self.motion
+            .pairs()
+            .map(|(i, j)| self.motion.rotation0(i - 1, j - 1))
+            .collect()
+    }
+
+    /// The angle from pose `i` to pose `j` (1-based), wrapped into `(-pi, pi]`.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::PoseIndex`] for an index out of range.
+    pub fn rotation(&self, i: usize, j: usize) -> Result<f64> {
+        self.motion.rotation(i, j)
+    }
+
+    /// `D_ij(z) = p_j + e^{i theta_ij} (z - p_i)`: where the coupler point
+    /// that is at `z` in pose `i` is in pose `j` (1-based).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::PoseIndex`] for an index out of range.
+    pub fn displace(&self, z: Point2<f64>, i: usize, j: usize) -> Result<Point2<f64>> {
+        self.motion.displace(z, i, j)
+    }
+
+    /// Every pole, pairs in the order `(1,2), (1,3), ..., (2,3), ...`; a
+    /// pure translation's pole is [`Pole::AtInfinity`].
+    pub fn poles(&self) -> Vec<Pole> {
+        self.motion.poles()
+    }
+
+    /// The circle point (moving pivot at pose 1) whose center point (fixed
+    /// pivot) is `center`: for three poses by [`Cremona::circle_point`].
+    ///
+    /// # Errors
+    ///
+    /// As [`Cremona::circle_point`]; [`InvalidInput::NeedsPoses`] for a task
+    /// of another number of poses.
+    pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
+        self.cremona
+            .as_ref()
+            .ok_or_else(|| self.needs(3, "Task::circle_point"))?
+            .circle_point(center)
+    }
+
+    /// The center point (fixed pivot) of the circle point (moving pivot at
+    /// pose 1) `circle`: for three poses by [`Cremona::center_point`].
+    ///
+    /// # Errors
+    ///
+    /// As [`Cremona::center_point`]; [`InvalidInput::NeedsPoses`] for a
+    /// task of another number of poses.
+    pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
+        self.cremona
+            .as_ref()
+            .ok_or_else(|| self.needs(3, "Task::center_point"))?
+            .center_point(circle)
+    }
+
+    /// [`circle_point`](Self::circle_point) for each of `centers`, lazily.
+    pub fn circle_points<'a, I>(
+        &'a self,
+        centers: I,
+    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
+    where
+        I: IntoIterator<Item = Point2<f64>>,
+        I::IntoIter: 'a,
+    {
+        centers.into_iter().map(move |p| self.circle_point(p))
+    }
+
+    /// [`center_point`](Self::center_point) for each of `circles`, lazily.
+    pub fn center_points<'a, I>(
+        &'a self,
+        circles: I,
+    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
+    where
+        I: IntoIterator<Item = Point2<f64>>,
+        I::IntoIter: 'a,
+    {
+        circles.into_iter().map(move |p| self.center_point(p))
+    }
+
+    /// The same task transformed by a similarity (scale about the origin,
+    /// rotate about the origin, translate; optionally mirrored). Used to
+    /// check invariance.
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::new`].
+    pub fn transformed_by(&self, t: &Similarity) -> Result<Self> {
+        let p: Vec<Pose> = self.poses().iter().map(|p| t.pose(p)).collect();
+        Self::new(&p)
+    }
+
+    /// The same task scaled by `factor` about the origin, rotated by
+    /// `angle` about the origin, then translated by `offset`.
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::new`] and [`Similarity::new`] (for example when `factor`
+    /// is zero).
+    pub fn transformed(&self, factor: f64, angle: f64, offset: Vector2<f64>) -> Result<Self> {
+        self.transformed_by(&Similarity::new(factor, angle, offset)?)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Error;
+
+    fn task() -> Task {
+        Task::from_xya(&[[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap()
+    }
+
+    #[test]
+    fn poles_are_fixed_points() {
+        let t = task();
+        let [p12, p13, p23] = t.cremona().unwrap().poles();
+        assert!((t.displace(p12, 1, 2).unwrap() - p12).norm() < 1e-12);
+        assert!((t.displace(p13, 1, 3).unwrap() - p13).norm() < 1e-12);
+        assert!((t.displace(p23, 2, 3).unwrap() - p23).norm() < 1e-12);
+        let generic: Vec<Point2<f64>> = t.poles().iter().filter_map(Pole::finite).collect();
+        assert_eq!(generic, vec![p12, p13, p23]);
+    }
+
+    #[test]
+    fn pure_translation_and_coincident_poses_are_typed() {
+        let e = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, 0.3], [3.0, 2.0, 1.1]]).unwrap_err();
+        assert!(matches!(
+            e,
+            Error::Degenerate(DegenerateError::PureTranslation { i: 1, j: 2 })
+        ));
+        assert!(e.to_string().contains("translation"), "{e}");
+        let e = Task::from_xya(&[[0.0, 0.0, 0.3], [3.0, 2.0, 1.1], [3.0, 2.0, 1.1]]).unwrap_err();
+        assert!(matches!(
+            e,
+            Error::Degenerate(DegenerateError::CoincidentPoses { i: 2, j: 3 })
+        ));
+        let e =
+            Task::from_xya(&[[0.0, 0.0, f64::NAN], [3.0, 2.0, 1.1], [1.0, 2.0, 1.3]]).unwrap_err();
+        assert!(matches!(e, Error::InvalidInput(_)));
+    }
+
+    #[test]
+    fn pose_counts() {
+        let five = [
+            [0.0, 0.0, 0.0],
+            [2.0, 0.5, 0.4],
+            [3.0, 2.0, 1.1],
+            [1.0, 3.0, 1.1],
+            [-1.0, 2.0, 0.2],
+        ];
+        for n in 3..=5 {
+            let t = Task::from_xya(&five[..n]).unwrap();
+            assert_eq!(t.len(), n);
+            assert_eq!(t.poles().len(), n * (n - 1) / 2);
+            assert_eq!(t.cremona().is_ok(), n == 3);
+        }
+        // A pure translation (poses 3 and 4) is fine with four poses.
+        let t = Task::from_xya(&five[..4]).unwrap();
+        assert!(matches!(t.poles()[5], Pole::AtInfinity { .. }));
+        let e = t.circle_point(Point2::new(0.0, 1.0)).unwrap_err();
+        assert_eq!(e.cause(), "needs_poses");
+        for bad in [&five[..2], &[[0.0; 3]; 6][..]] {
+            let e = Task::from_xya(bad).unwrap_err();
+            assert!(
+                matches!(e, Error::InvalidInput(InvalidInput::PoseCount { .. })),
+                "{e}"
+            );
+        }
+    }
+}

@@ -1,0 +1,62 @@
+//! Tolerances: every decision the crate takes within rounding, named,
+//! documented, and used from here only.
+//!
+//! Lengths are relative: "in task sizes" means in units of
+//! [`Task::scale`](crate::Task::scale), "relative" means in units of the
+//! size of the quantities compared. Factors named `*_EPS` multiply
+//! `f64::EPSILON`. The README's table of tolerance bands lists them with
+//! what each decides. Where a user may want another value the function
+//! takes it as a parameter, with its default documented there.
+
+/// A point within this distance (in task sizes) of a pole, an image pole or
+/// the driven pivot `C0` lies "at" it: maps are undefined there and every
+/// transformed Filemon curve passes through it, so it is never branch-free.
+pub const POINT: f64 = 1e-12;
+
+/// Two poses whose angles agree within this many radians (modulo `2 pi`)
+/// differ by a pure translation: their pole is at infinity. The
+/// three-position maps run through the poles and keep a relative accuracy
+/// of a few `eps / theta` near the poses, about `1e-9` at this bound.
+pub const MIN_ROTATION: f64 = 1e-6;
+
+/// Factor of `f64::EPSILON` for the position analysis' rounding decisions,
+/// relative to the size of the quantities compared: a toggle (Heron's
+/// product `H` within `8 eps` of zero), the Grashof equality
+/// `s + l = p + q`, a loop that just closes, and an input range that just
+/// turns fully.
+pub const ROUNDING_EPS: f64 = 8.0;
+
+/// Factor of `f64::EPSILON` within which a cross product of two vectors,
+/// relative to the product of their lengths, is zero: the assembly mode of
+/// a synthesized linkage at a pose (`None`: a toggle at the pose) and an
+/// answer of a three-position map at infinity (its denominator).
+pub const CROSS_EPS: f64 = 16.0;
+
+/// Relative tolerance of "collinear": three points whose doubled triangle
+/// area is within this fraction of the longest side squared lie on a line
+/// (a pole circle becomes a line, an obstacle has no area).
+pub const COLLINEAR: f64 = 1e-12;
+
+/// Relative tolerance of the conic kind tests: a discriminant `B^2 - 4AC`
+/// or a determinant within this fraction of its terms is zero (parabola,
+/// degenerate conic).
+pub const CONIC_KIND: f64 = 1e-12;
+
+/// A dyad passed to a task is its dyad when its moving pivot's distances to
+/// its fixed pivot over the poses agree within this fraction of the dyad's
+/// length plus the task's size.
+pub const DYAD: f64 = 1e-9;
+
+/// The `simulate` classifier reaches a pose when the driven coupler lands
+/// within this many task sizes of its position and this many radians of
+/// its angle.
+pub const REACH: f64 = 1e-7;
+
+/// Two candidates of a ranking whose scores (radians of transmission angle)
+/// agree within this are tied, and go by their margin.
+pub const RANK_TIE: f64 = 1e-9;
+
+/// Factor of `f64::EPSILON` of the rounding band of the branch sweep: along
+/// a row, a sample farther than this times the row's magnitude (over the
+/// slope) from a root of a conic has the root-free sign.
+pub const SWEEP_BAND_EPS: f64 = 64.0;
