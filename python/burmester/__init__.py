@@ -1,11 +1,12 @@
 """burmester: planar four-bar linkages for mechanism designers.
 
-Position analysis, three-position Burmester synthesis, and the exact
+Position analysis, Burmester synthesis of three to five poses, and the exact
 elimination of the branch problem in the driving crank's center-point plane.
 The heavy lifting is in Rust (``burmester._burmester``); this package
-re-exports it and adds pure-Python conveniences.
+re-exports it and adds pure-Python parsing, formatting and drawing.
 
-Angles are in radians, counter-clockwise, measured from the fixed +x axis.
+Angles are in radians, counter-clockwise, measured from the fixed +x axis,
+except where a name says ``_deg``.
 """
 
 from burmester._burmester import (
@@ -14,13 +15,19 @@ from burmester._burmester import (
     Configuration,
     Conic,
     DegenerateError,
+    DesignLimits,
     Filemon,
     FourBar,
+    Grid,
     InvalidInputError,
+    LinkageFigures,
+    Pivot,
+    Pole,
     SolutionMap,
     SynthesizedFourBar,
     Task,
     __version__,
+    clip_line,
 )
 
 __all__ = [
@@ -29,11 +36,17 @@ __all__ = [
     "Configuration",
     "Conic",
     "DegenerateError",
+    "DesignLimits",
     "Filemon",
     "FourBar",
+    "Grid",
     "InvalidInputError",
+    "LinkageFigures",
+    "Pivot",
+    "Pole",
     "SolutionMap",
     "SynthesizedFourBar",
     "Task",
     "__version__",
+    "clip_line",
 ]

@@ -1,12 +1,19 @@
 """Type stubs and documentation of the native core, ``burmester._burmester``.
 
 Angles are in radians, counter-clockwise, absolute (measured from the fixed
-+x axis). Points are ``(x, y)`` tuples. Array arguments accept anything
-NumPy can turn into a float64 array, of any shape; array results have the
-shape of the input.
++x axis), except where a name ends in ``_deg``. Points are ``(x, y)``
+tuples. Array arguments accept anything NumPy can turn into a float64
+array, of any shape; array results have the shape of the input.
+
+One naming rule holds throughout: a **property** is a value the object
+holds or derives without arguments and that cannot fail; anything that
+takes an argument, can fail or does real work is a **method**.
+
+Every class is immutable and pickles to an equal object (so tasks, Filemon
+constructions and maps can go to worker processes).
 """
 
-from typing import Any, Literal, Optional, Sequence, Tuple, Union, final
+from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, final, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -17,45 +24,202 @@ __all__ = [
     "DegenerateError",
     "InvalidInputError",
     "Configuration",
-    "FourBar",
     "Conic",
+    "DesignLimits",
     "Filemon",
+    "FourBar",
+    "Grid",
+    "LinkageFigures",
+    "Pivot",
+    "Pole",
     "SolutionMap",
     "SynthesizedFourBar",
     "Task",
+    "clip_line",
     "__version__",
 ]
 
 __version__: str
 
 Point = Tuple[float, float]
+Pose = Tuple[float, float, float]
+Line = Tuple[Point, Point]
+Extent = Tuple[float, float, float, float]
 Mode = Literal["open", "crossed"]
+Method = Literal["conic", "direct", "simulate"]
+BranchClass = Literal["free", "defective", "boundary"]
+Direction = Literal["ccw", "cw", "none"]
+InputRequirement = Literal["any", "crank", "rocker"]
+RankBy = Literal["transmission", "margin"]
 GrashofType = Literal[
     "crank-rocker", "double-crank", "rocker-crank", "double-rocker", "triple-rocker", "change-point"
 ]
 FloatArray = npt.NDArray[np.float64]
 BoolArray = npt.NDArray[np.bool_]
 ArrayLike = Union[npt.ArrayLike, Sequence[float]]
+#: ``progress(done_rows, total_rows)``: called from the calling thread while
+#: a sweep runs (the GIL released in between); an exception it raises stops
+#: the sweep and is raised by the call.
+Progress = Callable[[int, int], object]
+
+# ---------------------------------------------------------------------------
+# Errors
 
 class BurmesterError(ValueError):
-    """Base of every error raised by burmester (a ``ValueError``)."""
+    """Base of every error raised by burmester (a ``ValueError``).
+
+    Every instance carries ``cause``, the reason in snake case (for example
+    ``"not_finite"``, ``"out_of_reach"``, ``"at_infinity"``,
+    ``"needs_poses"``), and one attribute per field of the core's error
+    (for example ``name`` and ``value``; ``dir_x`` and ``dir_y``, the
+    direction of an answer at infinity). The message says what to change.
+    """
+
+    cause: str
+    def __getattr__(self, name: str) -> Any:
+        """The error's fields (which depend on its ``cause``)."""
 
 class InvalidInputError(BurmesterError):
     """A number or name passed in is not acceptable: NaN, infinite, zero or
     negative length, an int too large for a float, a negative or too large
-    count or index, a ragged array, a number out of the supported range,
-    unknown name. The message says which and what to pass.
+    count or index, a ragged array, a number out of the supported range, an
+    unknown name, a method called on a task of the wrong number of poses
+    (``cause == "needs_poses"``). The message says which and what to pass.
 
     An argument of the wrong type (a string, ``None``, a complex number where
     a real one goes) raises :class:`TypeError` instead."""
 
 class AssemblyError(BurmesterError):
     """The linkage cannot be assembled as asked: the loop does not close at
-    that input angle, or never closes for those lengths."""
+    that input angle (``cause == "out_of_reach"``), never closes for those
+    lengths (``"never_closes"``), or the position is indeterminate."""
 
 class DegenerateError(BurmesterError):
-    """The geometry is degenerate: an answer lies at infinity (for example a
-    center point on the pole circle), or the task has no unique answer."""
+    """The geometry is degenerate: an answer lies at infinity
+    (``cause == "at_infinity"``, with its unit direction ``dir_x``,
+    ``dir_y``; for example a center point on the pole circle), or the task
+    has no unique answer (``"undefined"``, ``"coincident_poses"``, ...)."""
+
+# ---------------------------------------------------------------------------
+# geom
+
+@final
+class Grid:
+    """A grid of ``nx`` by ``ny`` sample points at cell centers over the
+    rectangle ``xmin <= x <= xmax``, ``ymin <= y <= ymax``:
+    ``x_i = xmin + (i + 0.5) dx`` and ``y_j = ymin + (j + 0.5) dy``.
+
+    Maps over a grid have shape ``(ny, nx)``, row ``j`` for ``y_j``, so
+    that ``plt.imshow(m, origin="lower", extent=grid.extent)`` shows them
+    the right way up.
+
+    Raises :class:`InvalidInputError` for non-finite bounds, ``xmin >= xmax``
+    or ``ymin >= ymax`` (``cause == "viewport"``), and for ``nx`` or ``ny``
+    below 1 or more than ``2^32`` samples in all (``"grid_size"``).
+    """
+
+    def __new__(cls, xmin: float, xmax: float, ymin: float, ymax: float, nx: int, ny: int) -> Grid: ...
+    @property
+    def xmin(self) -> float:
+        """Left edge."""
+    @property
+    def xmax(self) -> float:
+        """Right edge."""
+    @property
+    def ymin(self) -> float:
+        """Bottom edge."""
+    @property
+    def ymax(self) -> float:
+        """Top edge."""
+    @property
+    def nx(self) -> int:
+        """Samples per row."""
+    @property
+    def ny(self) -> int:
+        """Rows."""
+    @property
+    def dx(self) -> float:
+        """The spacing of the columns, ``(xmax - xmin) / nx``."""
+    @property
+    def dy(self) -> float:
+        """The spacing of the rows, ``(ymax - ymin) / ny``."""
+    @property
+    def extent(self) -> Extent:
+        """``(xmin, xmax, ymin, ymax)``, the order ``imshow`` takes."""
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """``(ny, nx)``, the shape of a map over the grid."""
+    @property
+    def size(self) -> int:
+        """``nx * ny``."""
+    def cell_centers(self) -> Tuple[FloatArray, FloatArray]:
+        """``(xs, ys)``: the sample coordinates of the columns (length
+        ``nx``) and of the rows (length ``ny``), exactly those the maps use."""
+    def point(self, j: int, i: int) -> Point:
+        """The sample ``[j, i]``: ``(x_i, y_j)``. Raises
+        :class:`InvalidInputError` outside the grid."""
+    def nearest(self, point: Point) -> Tuple[int, int]:
+        """The index ``(j, i)`` of the sample nearest to a point (clamped to
+        the grid). Raises :class:`InvalidInputError` for a non-finite point."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs__(self) -> Tuple[float, float, float, float, int, int]: ...
+
+@final
+class Conic:
+    """A conic ``A x^2 + B x y + C y^2 + D x + E y + F = 0``; its value is
+    defined up to a positive factor, so its sign tells the side."""
+
+    def __new__(cls, a: float, b: float, c: float, d: float, e: float, f: float) -> Conic: ...
+    @property
+    def coefficients(self) -> Tuple[float, float, float, float, float, float]:
+        """``(A, B, C, D, E, F)`` in the fixed frame."""
+    @property
+    def kind(self) -> Literal["ellipse", "hyperbola", "parabola", "degenerate"]:
+        """The kind (``B^2 - 4AC`` within a relative 1e-12 of zero is a parabola)."""
+    @property
+    def center(self) -> Optional[Point]:
+        """The center, if unique (not for parabolas)."""
+    @property
+    def axis_angle(self) -> float:
+        """The direction of a principal axis, in (-pi/2, pi/2] (the other is at
+        right angles)."""
+    @property
+    def asymptotes(self) -> Optional[Tuple[Point, Point, Point]]:
+        """For a hyperbola: ``(center, direction1, direction2)``."""
+    def evaluate(self, point: Point) -> float:
+        """The value at a point (zero on the curve), up to a positive factor;
+        finite for every finite point (far points are evaluated scaled)."""
+    def __call__(self, point: Point) -> float:
+        """:meth:`evaluate`."""
+    def evaluate_many(self, points: ArrayLike) -> FloatArray:
+        """The values at an array of points of shape ``(..., 2)``."""
+    def side(self, point: Point) -> int:
+        """The sign of the value: 1, -1 or 0."""
+    def distance(self, point: Point) -> float:
+        """First-order distance to the curve, ``|q| / |grad q|``."""
+    def polylines(
+        self, xmin: float, xmax: float, ymin: float, ymax: float, tolerance: Optional[float] = None
+    ) -> list[FloatArray]:
+        """The curve clipped to the viewport, as arrays of shape ``(n, 2)``:
+        each branch separately, never joined across infinity, the parts near
+        the asymptotes included. ``tolerance`` is the largest chord error
+        (default: a thousandth of the viewport's diagonal)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_parts(
+        q: Sequence[float], origin: Point, scale: float, known: Optional[Point]
+    ) -> Conic:
+        """Rebuilds a conic from its exact stored form (for pickling)."""
+
+def clip_line(point: Point, direction: Point, extent: Extent) -> Optional[Tuple[Point, Point]]:
+    """The part of the infinite line ``point + t * direction`` inside the
+    rectangle ``extent = (xmin, xmax, ymin, ymax)``, as its two ends, or
+    None when it misses the rectangle (or the direction is zero). Raises
+    :class:`InvalidInputError` for an empty or inverted rectangle."""
+
+# ---------------------------------------------------------------------------
+# linkage
 
 @final
 class Configuration:
@@ -78,10 +242,12 @@ class Configuration:
         """True at a toggle (dead) position, where both modes coincide."""
     @property
     def transmission_angle(self) -> float:
-        """The acute angle between coupler and rocker, in [0, pi/2]."""
+        """The acute angle between coupler and rocker, in [0, pi/2] radians."""
     @property
     def coupler_rocker_angle(self) -> float:
         """theta4 - theta3 wrapped into (-pi, pi]; its sign is the mode."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
 
 @final
 class FourBar:
@@ -93,6 +259,10 @@ class FourBar:
 
         L2 e^{i theta2} + L3 e^{i theta3} - L1 e^{i theta1} - L4 e^{i theta4} = 0
 
+    The lengths go **by keyword only** (books order the four links
+    differently): ``FourBar(ground=..., crank=..., coupler=..., rocker=...)``;
+    positional lengths raise :class:`TypeError`.
+
     The two assembly modes are named by the sign of ``sin(theta4 - theta3)``:
     ``"open"`` where it is positive, ``"crossed"`` where it is negative.
 
@@ -101,18 +271,18 @@ class FourBar:
     :class:`AssemblyError` when the longest link is longer than the other
     three together.
 
-    >>> fb = FourBar(100.0, 40.0, 120.0, 80.0)   # Norton, Example 4-1
+    >>> fb = FourBar(ground=100.0, crank=40.0, coupler=120.0, rocker=80.0)  # Norton, Example 4-1
     >>> [round(math.degrees(a), 3) for a in fb.solve(math.radians(40))]
     [20.298, 57.325]
     """
 
     def __new__(
         cls,
+        *,
         ground: float,
         crank: float,
         coupler: float,
         rocker: float,
-        *,
         origin: Point = ...,
         ground_angle: float = 0.0,
     ) -> FourBar:
@@ -148,8 +318,26 @@ class FourBar:
     @property
     def ground_angle(self) -> float:
         """The angle of the ground link, theta1."""
+    @property
     def link_ratio(self) -> float:
         """Ratio of the longest to the shortest link."""
+    @property
+    def grashof(self) -> GrashofType:
+        """Grashof type, the input being the crank link: ``"crank-rocker"``,
+        ``"double-crank"``, ``"rocker-crank"``, ``"double-rocker"``
+        (Grashof, coupler shortest), ``"triple-rocker"`` (non-Grashof) or
+        ``"change-point"``."""
+    @property
+    def input_turns_fully(self) -> bool:
+        """Whether the input link turns all the way round."""
+    @property
+    def input_range(self) -> Optional[list[Tuple[float, float]]]:
+        """``None`` when the input turns fully, else the one or two arcs
+        ``(start, end)`` (counter-clockwise) it can rock within."""
+    @property
+    def dead_positions(self) -> list[float]:
+        """The input angles bounding the arcs of :attr:`input_range` (toggle
+        positions); empty when the input turns fully."""
     def solve(self, theta2: float, mode: Mode = "open") -> Tuple[float, float]:
         """``(theta3, theta4)`` at input angle ``theta2`` in ``mode``.
 
@@ -165,21 +353,9 @@ class FourBar:
         input's shape. The angles are NaN exactly where ``valid`` is False
         (the loop does not close there, or the angle is not finite). The GIL
         is released during the computation."""
-    def grashof(self) -> GrashofType:
-        """Grashof type, the input being the crank link: ``"crank-rocker"``,
-        ``"double-crank"``, ``"rocker-crank"``, ``"double-rocker"``
-        (Grashof, coupler shortest), ``"triple-rocker"`` (non-Grashof) or
-        ``"change-point"``."""
-    def input_turns_fully(self) -> bool:
-        """Whether the input link turns all the way round."""
-    def input_range(self) -> Optional[list[Tuple[float, float]]]:
-        """``None`` when the input turns fully, else the one or two arcs
-        ``(start, end)`` (counter-clockwise) it can rock within."""
-    def dead_positions(self) -> list[float]:
-        """The input angles bounding the arcs of :meth:`input_range` (toggle
-        positions); empty when the input turns fully."""
     def transmission_angle(self, theta2: float, mode: Mode = "open") -> float:
-        """The transmission angle (acute angle between coupler and rocker)."""
+        """The transmission angle (acute angle between coupler and rocker),
+        radians."""
     def joints(
         self, theta2: float, mode: Mode = "open"
     ) -> Tuple[Point, Point, Point, Point]:
@@ -193,69 +369,173 @@ class FourBar:
         """``(x, y, valid)``: the path of a coupler point over input angles,
         NaN exactly where ``valid`` is False."""
     def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs_ex__(self) -> Tuple[Tuple[()], dict[str, Any]]: ...
 
-Pose = Tuple[float, float, float]
-Line = Tuple[Point, Point]
-Method = Literal["conic", "direct", "simulate"]
-BranchClass = Literal["free", "defective", "boundary"]
+@final
+class LinkageFigures:
+    """What a designer checks of one linkage that must pass a task's poses
+    in order (from :attr:`SynthesizedFourBar.figures` or :attr:`Pivot.figures`).
+
+    :attr:`min_transmission_deg` is exact over the whole travel, not only at
+    the poses."""
+
+    @property
+    def lengths(self) -> Tuple[float, float, float, float]:
+        """``(ground, crank, coupler, rocker)``."""
+    @property
+    def grashof(self) -> GrashofType:
+        """Grashof type, the driving link being the input."""
+    @property
+    def input_full(self) -> bool:
+        """Whether the driving link turns fully (a crank)."""
+    @property
+    def modes(self) -> list[Optional[Mode]]:
+        """The assembly mode at each pose (None at a toggle)."""
+    @property
+    def direction(self) -> Direction:
+        """The input rotation that carries the coupler from pose 1 through
+        the poses in order to the last: ``"ccw"``, ``"cw"``, or ``"none"``
+        (an order defect, or poses on different circuits)."""
+    @property
+    def one_circuit(self) -> bool:
+        """Whether the input angles at the poses lie on one circuit (one arc
+        of the input range; always True for an input that turns fully)."""
+    @property
+    def min_transmission_deg(self) -> Optional[float]:
+        """The smallest transmission angle over the travel through the poses,
+        degrees in [0, 90]; None when there is no travel (direction ``"none"``)."""
+    @property
+    def link_ratio(self) -> float:
+        """Longest over shortest link."""
+    @property
+    def branch_free(self) -> bool:
+        """Every pose in one assembly mode (no branch defect, no toggle at a pose)."""
+    @property
+    def feasible(self) -> bool:
+        """Branch-free, on one circuit, and with a driving direction: the
+        motion through the poses in order can be driven."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_fields(
+        lengths: Sequence[float],
+        grashof: str,
+        input_full: bool,
+        modes: Sequence[Optional[str]],
+        direction: str,
+        one_circuit: bool,
+        min_transmission: float,
+        link_ratio: float,
+    ) -> LinkageFigures:
+        """Rebuilds figures from their fields (for pickling)."""
+
+# ---------------------------------------------------------------------------
+# synthesis
+
+@final
+class Pole:
+    """The pole of two poses: the fixed point of the displacement between
+    them, or, when they differ by a pure translation, the direction in which
+    it lies at infinity."""
+
+    def __new__(
+        cls, pair: Tuple[int, int], point: Optional[Point] = None, direction: Optional[Point] = None
+    ) -> Pole:
+        """A pole has exactly one of ``point`` and ``direction``."""
+    @property
+    def pair(self) -> Tuple[int, int]:
+        """The poses ``(i, j)``, 1-based, ``i < j``."""
+    @property
+    def point(self) -> Optional[Point]:
+        """The pole ``P_ij``; None when it is at infinity."""
+    @property
+    def direction(self) -> Optional[Point]:
+        """The unit direction of a pole at infinity (of the translation);
+        None for a finite pole."""
+    @property
+    def at_infinity(self) -> bool:
+        """True for a pole at infinity (a pure translation between the poses)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs__(self) -> Tuple[Tuple[int, int], Optional[Point], Optional[Point]]: ...
 
 @final
 class Task:
-    """Three poses of the coupler, ``(x, y, angle)`` with angles in radians.
+    """Three to five poses of the coupler, ``(x, y, angle)`` with angles in
+    radians. ``len(task)`` is the number of poses.
 
-    Raises :class:`InvalidInputError` for NaN or infinite numbers or not
-    exactly three poses, and :class:`DegenerateError` when two poses are
-    equal, when two poses differ by a pure translation (their angles agree
-    within 1e-6 rad, so their pole is at infinity: rotate one pose by at
-    least 1e-6 rad), or when the three poses are rotations about one point.
+    What holds for any number of poses (the poses, displacements, rotations
+    and poles, poles at infinity included) works on every task; the
+    three-position maps (image poles, pole circles, circle and center
+    points, dyads, Filemon's construction and the maps built on it) need
+    three poses and raise :class:`InvalidInputError` with
+    ``cause == "needs_poses"`` otherwise.
 
-    The maps run in a frame attached to the pole triangle, so results do not
-    depend on where the task is or how large it is.
+    Raises :class:`InvalidInputError` for NaN or infinite numbers or fewer
+    than three or more than five poses (``cause == "pose_count"``), and
+    :class:`DegenerateError` when two poses are equal, when all poses are
+    rotations about one point, or, for three poses, when two differ by a
+    pure translation (their angles agree within 1e-6 rad, so their pole is
+    at infinity: rotate one pose by at least 1e-6 rad).
+
+    The three-position maps run in a frame attached to the pole triangle, so
+    results do not depend on where the task is or how large it is.
     """
 
     def __new__(cls, poses: Sequence[Sequence[float]]) -> Task:
-        """Three poses, each a sequence of three numbers (tuples, lists or a
-        3 x 3 array). Coordinates must be at most 1e100 and angles at most 1e9
-        rad in magnitude, and two angles must differ by more than 1e-6 rad
-        (mod 2 pi)."""
+        """Three to five poses, each a sequence of three numbers (tuples,
+        lists or an n x 3 array). Coordinates must be at most 1e100 and
+        angles at most 1e9 rad in magnitude."""
+    def __len__(self) -> int:
+        """The number of poses."""
     @property
     def poses(self) -> list[Pose]:
-        """The three poses."""
+        """The poses."""
     @property
-    def rotations(self) -> Tuple[float, float, float]:
-        """``(theta12, theta13, theta23)``, each wrapped into (-pi, pi]."""
+    def rotations(self) -> list[float]:
+        """The rotation ``theta_ij`` of each pair in pair order (``(1, 2), (1,
+        3), ..., (2, 3), ...``, as :attr:`poles`), each wrapped into (-pi, pi]."""
     @property
     def scale(self) -> float:
-        """The size of the pole triangle (unit of the relative tolerances)."""
-    def poles(self) -> Tuple[Point, Point, Point]:
-        """``(P12, P13, P23)``: the fixed points of the displacements."""
+        """The size of the task (for three poses the pole triangle's): the
+        unit of the relative tolerances."""
+    @property
+    def poles(self) -> list[Pole]:
+        """The pole of every pair of poses, in pair order ``(1, 2), (1, 3),
+        ..., (2, 3), ...``; a pair that differs by a pure translation has its
+        pole at infinity."""
+    def rotation(self, i: int, j: int) -> float:
+        """``theta_ij``: the rotation from pose ``i`` to pose ``j`` (1-based),
+        wrapped into (-pi, pi]."""
     def image_poles(self) -> Tuple[Point, Point, Point]:
-        """``(P12, P13, P'23)`` in the pose-1 frame; ``P'23`` is the
-        reflection of ``P23`` across the line ``P12 P13``."""
+        """Three poses only: ``(P12, P13, P'23)`` in the pose-1 frame;
+        ``P'23`` is the reflection of ``P23`` across the line ``P12 P13``."""
     def image_poles_in(self, frame: int) -> Tuple[Point, Point, Point]:
-        """The image poles ``(P12^k, P13^k, P23^k)`` in the frame of pose
-        ``k`` (1, 2 or 3)."""
-    def pole_circle(self) -> dict[str, object]:
-        """The circle through the poles: ``{"kind": "circle", "center": (x, y),
-        "radius": r}`` (or ``{"kind": "line", "point", "direction"}`` when
-        collinear). Center points on it have their circle point at infinity."""
-    def image_pole_circle(self) -> dict[str, object]:
-        """The circle through the image poles (same form). Circle points on it
-        have their center point at infinity."""
+        """Three poses only: the image poles ``(P12^k, P13^k, P23^k)`` in
+        the frame of pose ``k`` (1, 2 or 3)."""
+    def pole_circle(self) -> dict[str, Any]:
+        """Three poses only: the circle through the poles: ``{"kind":
+        "circle", "center": (x, y), "radius": r}`` (or ``{"kind": "line",
+        "point", "direction"}`` when collinear). Center points on it have
+        their circle point at infinity."""
+    def image_pole_circle(self) -> dict[str, Any]:
+        """Three poses only: the circle through the image poles (same form).
+        Circle points on it have their center point at infinity."""
     def pole_triangle_angles(self) -> Tuple[float, float, float]:
-        """The signed angles of the pole triangle at P12, P13, P23, modulo pi
-        in (-pi/2, pi/2]; they equal theta12/2, theta13/2, theta23/2 mod pi."""
+        """Three poses only: the signed angles of the pole triangle at P12,
+        P13, P23, modulo pi in (-pi/2, pi/2]; they equal theta12/2,
+        theta13/2, theta23/2 mod pi."""
     def displace(self, point: Point, i: int, j: int) -> Point:
         """``D_ij(z)``: where the coupler point at ``point`` in pose ``i`` is in
         pose ``j`` (1-based)."""
     def circle_point(self, center: Point) -> Point:
-        """The circle point (moving pivot at pose 1) of a center point (fixed
-        pivot). Raises :class:`DegenerateError` on the pole circle (the answer
-        is at infinity; the message gives its direction) or at a pole."""
+        """Three poses only: the circle point (moving pivot at pose 1) of a
+        center point (fixed pivot). Raises :class:`DegenerateError` on the
+        pole circle (the answer is at infinity: ``cause == "at_infinity"``,
+        its direction in ``dir_x``, ``dir_y``) or at a pole (``"undefined"``)."""
     def center_point(self, circle: Point) -> Point:
-        """The center point of a circle point. Raises :class:`DegenerateError`
-        on the image-pole circle (the center is at infinity: a slider) or at an
-        image pole."""
+        """Three poses only: the center point of a circle point. Raises
+        :class:`DegenerateError` on the image-pole circle (the center is at
+        infinity: a slider) or at an image pole."""
     def circle_points(self, centers: ArrayLike) -> Tuple[FloatArray, BoolArray]:
         """:meth:`circle_point` of an array of shape ``(..., 2)``: the points
         (NaN where undefined) and a validity mask of shape ``(...)``."""
@@ -263,14 +543,36 @@ class Task:
         """:meth:`center_point` of an array of shape ``(..., 2)``."""
     def dyad(self, center: Point) -> Tuple[Point, Point]:
         """``(center, circle)``: the dyad with this center point."""
-    def crank_angles(self, center: Point) -> Tuple[float, float, float]:
+    def crank_angles(self, center: Point) -> list[float]:
         """The crank angle of the dyad with this center point at each pose."""
     def filemon(self, driven_center: Point) -> Filemon:
-        """Filemon's construction for the driven dyad with this center point
-        (``C0``). Raises :class:`DegenerateError` where ``C0`` has no circle
-        point (pole circle, poles)."""
+        """Three poses only: Filemon's construction for the driven dyad with
+        this center point (``C0``). Raises :class:`DegenerateError` where
+        ``C0`` has no circle point (pole circle, poles)."""
     def four_bar(self, driving_center: Point, driven_center: Point) -> SynthesizedFourBar:
         """The four-bar built from the dyads with these center points."""
+    @overload
+    def driven_solution_map(
+        self,
+        driving_center: Point,
+        grid: Grid,
+        *,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        input: Optional[InputRequirement] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        progress: Optional[Progress] = None,
+    ) -> SolutionMap:
+        """The solution-space map the other way round: the driving dyad with
+        this center point is fixed and the candidates are driven center
+        points ``C0`` on ``grid`` (a :class:`Grid`, or its six numbers
+        ``xmin, xmax, ymin, ymax, nx, ny``); the branch-free flag is the sign
+        test at the poses. Keywords as :meth:`Filemon.solution_map`."""
+    @overload
     def driven_solution_map(
         self,
         driving_center: Point,
@@ -281,25 +583,27 @@ class Task:
         nx: int,
         ny: int,
         *,
-        min_transmission_deg: float = 30.0,
-        max_link_ratio: float = 10.0,
-        input: Literal["any", "crank", "rocker"] = "any",
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        input: Optional[InputRequirement] = None,
         base_plate: Optional[Sequence[Point]] = None,
         obstacles: Optional[Sequence[Sequence[Point]]] = None,
         link_width: float = 0.0,
         travel_samples: int = 64,
-    ) -> SolutionMap:
-        """The same map the other way round: the driving dyad with this center
-        point is fixed and the candidates are driven center points ``C0``; the
-        branch-free flag is the sign test at the three poses."""
+        progress: Optional[Progress] = None,
+    ) -> SolutionMap: ...
     def line_to_conic(self, point: Point, direction: Point) -> Conic:
-        """The exact image in the center-point plane of a line of the
-        circle-point plane: a conic through the three poles."""
+        """Three poses only: the exact image in the center-point plane of a
+        line of the circle-point plane: a conic through the three poles."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs__(self) -> Tuple[list[Pose]]: ...
 
 @final
 class Filemon:
-    """Filemon's construction for a driven dyad ``(C0, C1)`` and its two lines
-    transformed exactly into conics in the driving crank's center-point plane.
+    """Filemon's construction for a driven dyad ``(C0, C1)`` of a three-pose
+    task, and its two lines transformed exactly into conics in the driving
+    crank's center-point plane (from :meth:`Task.filemon`).
 
     A driving center point ``A0`` is branch-free exactly where the two conics
     have values of one sign (``g_a(A0) * g_b(A0) > 0``).
@@ -312,8 +616,8 @@ class Filemon:
     def driven_center(self) -> Point:
         """``C0``, the driven crank's fixed pivot."""
     @property
-    def circle_point(self) -> Point:
-        """``C1``, the driven crank's moving pivot at pose 1."""
+    def driven_circle(self) -> Point:
+        """``C1``, the driven crank's moving pivot at pose 1 (its circle point)."""
     @property
     def fixed_pivot_images(self) -> Tuple[Point, Point, Point]:
         """``(C'1, C'2, C'3)``, ``C'k = D_k1(C0)``."""
@@ -331,6 +635,14 @@ class Filemon:
     def all_lines(self) -> list[Line]:
         """The three lines through ``C1`` and ``C'k``, ``k = 1, 2, 3``."""
     @property
+    def sectors(self) -> list[Tuple[float, float, bool]]:
+        """The sectors around ``C1`` cut by the three lines (each line gives
+        two rays), counter-clockwise: ``(start, end, free)``, angles in
+        radians increasing, the last ending a full turn after the first
+        begins. ``free`` where every line sees the sector's points on one
+        side (the double wedge between the Filemon lines; none when all are
+        defective)."""
+    @property
     def conics(self) -> list[Conic]:
         """The two transformed Filemon lines (empty when all are defective)."""
     @property
@@ -346,11 +658,13 @@ class Filemon:
 
         ``"conic"``: the signs of the two conics (defined everywhere);
         ``"direct"``: the circle point, then the sign test at the three poses;
-        ``"simulate"``: build the four-bar and drive it through the poses.
-        The methods agree except within about 1e-9 of the task's size from
-        a conic. A point on a curve is not free. ``"direct"`` and
-        ``"simulate"`` raise :class:`DegenerateError` on the pole circle and
-        at the poles."""
+        ``"simulate"``: build the four-bar and drive it from pose to pose
+        inside its input range, in pose 1's assembly mode (this also sees
+        the circuit defect of a double-rocker input, which the sign tests
+        cannot). Beyond the bands of the README's table the methods agree
+        (but for that circuit defect). A point on a curve is not free.
+        ``"direct"`` and ``"simulate"`` raise :class:`DegenerateError` on the
+        pole circle and at the poles."""
     def classify(self, center: Point, method: Method = "conic") -> BranchClass:
         """``"free"``, ``"defective"`` or ``"boundary"`` (on a curve, or a toggle
         at a design pose)."""
@@ -363,6 +677,47 @@ class Filemon:
     def four_bar(self, driving_center: Point) -> SynthesizedFourBar:
         """The four-bar with this driven dyad and the driving dyad whose center
         point is given."""
+    @overload
+    def branch_map(
+        self,
+        grid: Grid,
+        /,
+        *,
+        method: Method = "conic",
+        out: Optional[BoolArray] = None,
+        progress: Optional[Progress] = None,
+    ) -> BoolArray:
+        """Classify every candidate driving center point of a grid.
+
+        ``grid`` is a :class:`Grid`, or its six numbers ``xmin, xmax, ymin,
+        ymax, nx, ny``; ``method`` (``"conic"``, ``"direct"`` or
+        ``"simulate"``, as :meth:`is_branch_free`) may follow them
+        positionally. The result has shape ``(ny, nx)``, row ``j`` for
+        ``y_j``, True where strictly branch-free. Points on a curve, at a
+        pole or at ``C0`` are False; ``"direct"`` and ``"simulate"`` are also
+        False where the circle point does not exist (on the pole circle).
+
+        The GIL is released during the computation; the result is handed to
+        NumPy without a copy, or written into ``out`` (a C-contiguous bool
+        array of shape ``(ny, nx)``), which is returned. ``progress(done,
+        total)`` follows the rows; the samples are the same with or without
+        it, bit for bit. Ctrl-C raises :class:`KeyboardInterrupt` within a
+        fraction of a second; its message says when ``out`` holds a partial
+        result.
+
+        ``"conic"`` at 4096 x 4096 takes about as long as filling the array
+        with a constant (see BENCHMARKS.md)."""
+    @overload
+    def branch_map(
+        self,
+        grid: Grid,
+        method: Method,
+        /,
+        *,
+        out: Optional[BoolArray] = None,
+        progress: Optional[Progress] = None,
+    ) -> BoolArray: ...
+    @overload
     def branch_map(
         self,
         xmin: float,
@@ -371,25 +726,41 @@ class Filemon:
         ymax: float,
         nx: int,
         ny: int,
+        /,
+        *,
         method: Method = "conic",
+        out: Optional[BoolArray] = None,
+        progress: Optional[Progress] = None,
+    ) -> BoolArray: ...
+    @overload
+    def branch_map(
+        self,
+        xmin: float,
+        xmax: float,
+        ymin: float,
+        ymax: float,
+        nx: int,
+        ny: int,
+        method: Method,
+        /,
         *,
         out: Optional[BoolArray] = None,
-    ) -> BoolArray:
-        """Classify every candidate driving center point on a grid.
-
-        Samples sit at cell centers, ``x_i = xmin + (i + 0.5) (xmax - xmin) / nx``
-        and likewise ``y_j``; the result has shape ``(ny, nx)``, row ``j`` for
-        ``y_j``, True where strictly branch-free, so that
-        ``plt.imshow(m, origin="lower", extent=(xmin, xmax, ymin, ymax))``
-        shows it the right way up. Points on a curve, at a pole or at ``C0``
-        are False; ``"direct"`` and ``"simulate"`` are also False where the
-        circle point does not exist (on the pole circle). The GIL is released
-        during the computation; the result is handed to NumPy without a copy,
-        or written into ``out`` (a C-contiguous bool array of shape
-        ``(ny, nx)``), which is returned.
-
-        ``"conic"`` at 4096 x 4096 takes about as long as filling the array
-        with a constant (see BENCHMARKS.md)."""
+        progress: Optional[Progress] = None,
+    ) -> BoolArray: ...
+    @overload
+    def margin_map(
+        self,
+        grid: Grid,
+        /,
+        *,
+        out: Optional[npt.NDArray[np.float32]] = None,
+        progress: Optional[Progress] = None,
+    ) -> npt.NDArray[np.float32]:
+        """The signed margin on a grid (float32, like :meth:`branch_map`):
+        the first-order distance to the nearer transformed Filemon curve,
+        positive where branch-free and negative elsewhere; ``-inf``
+        everywhere when all circle points are defective. For contour plots."""
+    @overload
     def margin_map(
         self,
         xmin: float,
@@ -398,15 +769,49 @@ class Filemon:
         ymax: float,
         nx: int,
         ny: int,
+        /,
         *,
         out: Optional[npt.NDArray[np.float32]] = None,
-    ) -> npt.NDArray[np.float32]:
-        """The signed margin on the same grid (float32): the first-order
-        distance to the nearer transformed Filemon curve, positive where
-        branch-free and negative elsewhere; ``-inf`` everywhere when all
-        circle points are defective. For contour plots and ranking pivots."""
+        progress: Optional[Progress] = None,
+    ) -> npt.NDArray[np.float32]: ...
     def margin(self, center: Point) -> float:
         """The signed margin at one point (float64)."""
+    @overload
+    def solution_map(
+        self,
+        grid: Grid,
+        /,
+        *,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        input: Optional[InputRequirement] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        progress: Optional[Progress] = None,
+    ) -> SolutionMap:
+        """The designer's solution-space map over candidate driving center
+        points ``A0`` on a grid (as :meth:`branch_map`).
+
+        For each candidate: whether the linkage exists, the branch-free flag
+        (exactly :meth:`branch_map`), the Grashof class, whether the driving
+        link turns fully, the input rotation direction that carries the
+        coupler from pose 1 through pose 2 to pose 3 (or none), whether the
+        input angles lie on one circuit, the minimum transmission angle over
+        the whole travel (exact, not only at the poses), the link ratio, and
+        an ``acceptable`` mask.
+
+        The limits are ``limits=DesignLimits(...)`` or its three keywords
+        ``min_transmission_deg`` (default 30), ``max_link_ratio`` (default
+        10) and ``input`` (``"any"``, ``"crank"``: turns fully, or
+        ``"rocker"``), not both. The constraints: the fixed pivot inside
+        ``base_plate`` (a simple polygon), and the moving links, as capsules
+        ``link_width`` wide, clear of ``obstacles`` (convex polygons) at
+        ``travel_samples`` input angles of the travel. The GIL is released,
+        ``progress`` and Ctrl-C as in :meth:`branch_map`."""
+    @overload
     def solution_map(
         self,
         xmin: float,
@@ -415,70 +820,20 @@ class Filemon:
         ymax: float,
         nx: int,
         ny: int,
+        /,
         *,
-        min_transmission_deg: float = 30.0,
-        max_link_ratio: float = 10.0,
-        input: Literal["any", "crank", "rocker"] = "any",
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        input: Optional[InputRequirement] = None,
         base_plate: Optional[Sequence[Point]] = None,
         obstacles: Optional[Sequence[Sequence[Point]]] = None,
         link_width: float = 0.0,
         travel_samples: int = 64,
-    ) -> SolutionMap:
-        """The designer's solution-space map over candidate driving center
-        points ``A0`` on the same grid as :meth:`branch_map`.
-
-        For each candidate: whether the linkage exists, the branch-free flag
-        (exactly :meth:`branch_map`), the Grashof class, whether the driving
-        link turns fully, the input rotation direction that carries the coupler
-        from pose 1 through pose 2 to pose 3 (or none), whether the three
-        input angles lie on one circuit, the minimum transmission angle over
-        the whole travel (exact, not only at the poses), the link ratio, and an
-        ``acceptable`` mask from the limits (``min_transmission_deg``,
-        ``max_link_ratio``, ``input`` = ``"any"``, ``"crank"`` (turns fully) or
-        ``"rocker"``) and constraints: the fixed pivot inside ``base_plate`` (a
-        simple polygon), and the moving links, as capsules ``link_width`` wide,
-        clear of ``obstacles`` (convex polygons) at ``travel_samples`` input
-        angles of the travel. The GIL is released during the computation."""
-
-@final
-class Conic:
-    """A conic ``A x^2 + B x y + C y^2 + D x + E y + F = 0``; its value is
-    defined up to a positive factor, so its sign tells the side."""
-
-    def __new__(cls, a: float, b: float, c: float, d: float, e: float, f: float) -> Conic: ...
-    @property
-    def coefficients(self) -> Tuple[float, float, float, float, float, float]:
-        """``(A, B, C, D, E, F)`` in the fixed frame."""
-    @property
-    def kind(self) -> Literal["ellipse", "hyperbola", "parabola", "degenerate"]:
-        """The kind (``B^2 - 4AC`` within a relative 1e-12 of zero is a parabola)."""
-    @property
-    def center(self) -> Optional[Point]:
-        """The center, if unique (not for parabolas)."""
-    @property
-    def axis_angle(self) -> float:
-        """The direction of a principal axis, in (-pi/2, pi/2] (the other is at
-        right angles)."""
-    @property
-    def asymptotes(self) -> Optional[Tuple[Point, Point, Point]]:
-        """For a hyperbola: ``(center, direction1, direction2)``."""
-    def evaluate(self, point: Point) -> float:
-        """The value at a point (zero on the curve), up to a positive factor;
-        finite for every finite point (far points are evaluated scaled)."""
-    def __call__(self, point: Point) -> float: ...
-    def evaluate_many(self, points: ArrayLike) -> FloatArray:
-        """The values at an array of points of shape ``(..., 2)``."""
-    def side(self, point: Point) -> int:
-        """The sign of the value: 1, -1 or 0."""
-    def distance(self, point: Point) -> float:
-        """First-order distance to the curve, ``|q| / |grad q|``."""
-    def polylines(
-        self, xmin: float, xmax: float, ymin: float, ymax: float, tolerance: Optional[float] = None
-    ) -> list[FloatArray]:
-        """The curve clipped to the viewport, as arrays of shape ``(n, 2)``:
-        each branch separately, never joined across infinity, the parts near
-        the asymptotes included. ``tolerance`` is the largest chord error
-        (default: a thousandth of the viewport's diagonal)."""
+        progress: Optional[Progress] = None,
+    ) -> SolutionMap: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
 
 @final
 class SynthesizedFourBar:
@@ -496,10 +851,10 @@ class SynthesizedFourBar:
     def driven(self) -> Tuple[Point, Point]:
         """``(C0, C1)``."""
     @property
-    def input_angles(self) -> Tuple[float, float, float]:
-        """The input angle at each pose."""
+    def input_angles(self) -> list[float]:
+        """The input angle at each pose, in (-pi, pi]."""
     @property
-    def modes(self) -> Tuple[Optional[Mode], Optional[Mode], Optional[Mode]]:
+    def modes(self) -> list[Optional[Mode]]:
         """The assembly mode at each pose (None at a toggle)."""
     @property
     def coupler_point(self) -> Point:
@@ -507,17 +862,112 @@ class SynthesizedFourBar:
     @property
     def coupler_angle_offset(self) -> float:
         """Task coupler angle minus the linkage's theta3."""
-    def is_branch_free(self) -> bool:
-        """Whether the three poses are in one assembly mode."""
+    @property
+    def figures(self) -> LinkageFigures:
+        """What a designer checks of it: Grashof type, order and circuit,
+        the minimum transmission angle over the travel, the link ratio."""
+    @property
+    def branch_free(self) -> bool:
+        """Whether the poses are all in one assembly mode (no toggle at a pose)."""
+    @property
+    def travel(self) -> Optional[Tuple[float, float]]:
+        """``(start, span)``: the input angle at pose 1 and the signed angle
+        the input turns through the poses to the last (positive
+        counter-clockwise); None when no direction carries the coupler
+        through the poses in order."""
+    @property
+    def travel_stops(self) -> Optional[list[float]]:
+        """The input angle at each pose along the :attr:`travel`, unwrapped
+        (starting at pose 1's and moving monotonically in the travel's
+        direction); None when there is no travel."""
+    def travel_angles(self, samples: int) -> FloatArray:
+        """``samples`` input angles evenly spaced over the :attr:`travel`,
+        both ends included; empty when there is no travel. Raises
+        :class:`InvalidInputError` for fewer than 2 samples."""
     def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
         """``(x, y, angle)`` of the task's coupler point when driven to ``theta2``."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+
+# ---------------------------------------------------------------------------
+# design
+
+@final
+class DesignLimits:
+    """The designer's limits behind a solution map's ``acceptable`` mask.
+
+    ``min_transmission_deg``: the smallest transmission angle allowed over
+    the whole travel through the poses, degrees in [0, 90];
+    ``max_link_ratio``: the largest ratio of the longest to the shortest
+    link, at least 1 (``math.inf``: no limit); ``input``: ``"any"``,
+    ``"crank"`` (the driving link must turn fully) or ``"rocker"`` (it must
+    not). Raises :class:`InvalidInputError` (``cause == "outside_range"``,
+    with ``name``, ``value``, ``min``, ``max``) for a limit out of range.
+    """
+
+    def __new__(
+        cls,
+        min_transmission_deg: float = 30.0,
+        max_link_ratio: float = 10.0,
+        input: InputRequirement = "any",
+    ) -> DesignLimits: ...
+    @property
+    def min_transmission_deg(self) -> float:
+        """The smallest acceptable transmission angle, degrees."""
+    @property
+    def max_link_ratio(self) -> float:
+        """The largest acceptable link ratio."""
+    @property
+    def input(self) -> InputRequirement:
+        """Which input the design requires."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs__(self) -> Tuple[float, float, str]: ...
+
+@final
+class Pivot:
+    """A candidate pivot of a solution map with its linkage (from
+    :meth:`SolutionMap.best_pivots`)."""
+
+    def __new__(
+        cls,
+        center: Point,
+        index: Tuple[int, int],
+        linkage: SynthesizedFourBar,
+        margin: float,
+        ranked_by: RankBy,
+    ) -> Pivot: ...
+    @property
+    def center(self) -> Point:
+        """The candidate center point (``A0`` for a driving map, ``C0`` for a
+        driven one)."""
+    @property
+    def index(self) -> Tuple[int, int]:
+        """Its sample ``(j, i)`` in the map: row ``j``, column ``i``."""
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The complete linkage."""
+    @property
+    def figures(self) -> LinkageFigures:
+        """The linkage's figures (``linkage.figures``)."""
+    @property
+    def margin(self) -> float:
+        """Its signed margin to the nearest branch-defect boundary (see
+        :meth:`SolutionMap.margin`)."""
+    @property
+    def ranked_by(self) -> RankBy:
+        """What ranked it: ``"transmission"`` or ``"margin"``."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs__(self) -> Tuple[Point, Tuple[int, int], SynthesizedFourBar, float, str]: ...
 
 @final
 class SolutionMap:
-    """The solution-space map: read-only arrays of shape ``(ny, nx)``, row
-    ``j`` for ``y_j``, like :meth:`Filemon.branch_map` (handed to NumPy
-    without a copy)."""
+    """The solution-space map (from :meth:`Filemon.solution_map` or
+    :meth:`Task.driven_solution_map`): one read-only NumPy array per column,
+    of shape ``(ny, nx)``, row ``j`` for ``y_j``, like
+    :meth:`Filemon.branch_map` (handed to NumPy without a copy)."""
 
+    columns: list[str]
+    """The names of the columns, in order."""
     grashof_names: list[str]
     """The Grashof class of each code of :attr:`grashof`."""
     @property
@@ -534,15 +984,17 @@ class SolutionMap:
         """The driving link turns fully."""
     @property
     def direction(self) -> npt.NDArray[np.int8]:
-        """The input rotation that carries the coupler 1 -> 2 -> 3: 1 ccw, -1 cw,
-        0 none (order defect or poses on different circuits)."""
+        """The input rotation that carries the coupler through the poses in
+        order: 1 ccw, -1 cw, 0 none (order defect or poses on different
+        circuits)."""
     @property
     def one_circuit(self) -> BoolArray:
-        """The three input angles lie on one circuit (one arc of the input range)."""
+        """The input angles at the poses lie on one circuit (one arc of the
+        input range)."""
     @property
-    def min_transmission(self) -> npt.NDArray[np.float32]:
-        """Minimum transmission angle over the travel, radians; NaN where there
-        is no feasible travel or no linkage."""
+    def min_transmission_rad(self) -> npt.NDArray[np.float32]:
+        """Minimum transmission angle over the travel, **radians**; NaN where
+        there is no feasible travel or no linkage."""
     @property
     def link_ratio(self) -> npt.NDArray[np.float32]:
         """Longest over shortest link; NaN where there is no linkage."""
@@ -550,7 +1002,10 @@ class SolutionMap:
     def acceptable(self) -> BoolArray:
         """Feasible, branch-free, and within the limits and constraints."""
     @property
-    def extent(self) -> Tuple[float, float, float, float]:
+    def grid(self) -> Grid:
+        """The grid of candidates."""
+    @property
+    def extent(self) -> Extent:
         """``(xmin, xmax, ymin, ymax)``, for ``imshow(..., extent=...)``."""
     @property
     def shape(self) -> Tuple[int, int]:
@@ -558,18 +1013,47 @@ class SolutionMap:
     @property
     def varying(self) -> Literal["driving", "driven"]:
         """Which center point the map varies."""
+    @property
+    def fixed_dyad(self) -> Tuple[Point, Point]:
+        """The dyad that stays fixed: the driven ``(C0, C1)`` of a driving
+        map, the driving ``(A0, A1)`` of a driven one."""
+    @property
+    def task(self) -> Task:
+        """The task."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits behind :attr:`acceptable`."""
     def point(self, j: int, i: int) -> Point:
         """The candidate center point of sample ``[j, i]``."""
     def linkage(self, j: int, i: int) -> SynthesizedFourBar:
         """The linkage of sample ``[j, i]``."""
-    def best_pivots(self, k: int = 5, min_separation: Optional[float] = None) -> list[dict[str, Any]]:
-        """The ``k`` best acceptable candidates, best first, as plain dicts:
-        ``center``, ``driving`` and ``driven`` dyads, ``lengths``, ``grashof``,
-        ``input_full``, ``direction`` (``"ccw"``/``"cw"``),
-        ``min_transmission_deg``, ``link_ratio``, ``margin``, ``input_angles``,
-        ``mode``, ``index``.
+    def margin(self, j: int, i: int) -> float:
+        """The signed margin of sample ``[j, i]``: positive where branch-free.
+        For a driving map the first-order distance to the nearer transformed
+        Filemon curve (:meth:`Filemon.margin`); for a driven map the distance
+        to the nearest sample of the other class."""
+    def best_pivots(
+        self, k: int = 5, min_separation: Optional[float] = None, rank_by: RankBy = "transmission"
+    ) -> list[Pivot]:
+        """The ``k`` best candidates, best first, as :class:`Pivot` records.
 
-        Ranked by the minimum transmission angle over the travel, ties by the
-        margin to the nearest branch-defect boundary; candidates closer than
-        ``min_separation`` (default 2% of the viewport's diagonal) to a better
-        one are skipped, so the list offers distinct options."""
+        ``rank_by="transmission"``: the acceptable candidates by the minimum
+        transmission angle over the travel, ties by the margin.
+        ``rank_by="margin"``: the valid, branch-free candidates (acceptable or
+        not) by their margin, the fallback when nothing is acceptable.
+        Candidates closer than ``min_separation`` (default: 2% of the
+        viewport's diagonal) to a better one are skipped, so the list offers
+        distinct options."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_state(
+        grid: Grid,
+        task: Task,
+        varying: str,
+        fixed: Tuple[Point, Point],
+        limits: DesignLimits,
+        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        columns: dict[str, Any],
+    ) -> SolutionMap:
+        """Rebuilds a map from its state (for pickling)."""

@@ -21,26 +21,28 @@ import json
 import math
 import os
 import sys
-from typing import IO, TYPE_CHECKING, Any, Callable, List, NoReturn, Optional, Sequence, Tuple
+from typing import IO, TYPE_CHECKING, Any, List, NoReturn, Optional, Sequence, Tuple
 
 import numpy as np
-import numpy.typing as npt
 
 import burmester
+from burmester import pivots as pv
 from burmester import taskfile
-from burmester.pivots import Pivot, rank_by_margin, rank_pivots, solution_map
-from burmester.taskfile import TaskFileError, TaskSpec, View
+from burmester._burmester import Grid, Pivot
+from burmester.taskfile import TaskFileError, TaskSpec
 
 if TYPE_CHECKING:
     from types import ModuleType
 
-    from burmester._burmester import Filemon, Method, Mode
+    from burmester._burmester import Mode, Progress
 
 #: The built-in example four-bar: Norton, *Design of Machinery*, Example 4-1 (mm).
+#: ``(ground, crank, coupler, rocker)``.
 EXAMPLE_FOURBAR = (100.0, 40.0, 120.0, 80.0)
 
-#: Grids with at least this many points are swept in row bands, with a
-#: progress bar on stderr when it is a terminal.
+#: A branch map of at least this many samples shows a progress bar on stderr
+#: when it is a terminal; a solution map (about sixteen times the work per
+#: sample) from a sixteenth of it.
 PROGRESS_MIN_POINTS = 2_000_000
 
 
@@ -56,66 +58,43 @@ class _Parser(argparse.ArgumentParser):
 
 
 # ---------------------------------------------------------------------------
-# Progress and sweeps
+# Progress
 
 
 class ProgressBar:
-    """A one-line text progress bar, redrawn in place on a terminal stream."""
+    """A one-line text progress bar, redrawn in place on a terminal stream.
+
+    It is the ``progress(done, total)`` hook of the core's sweeps
+    (:meth:`burmester.Filemon.branch_map`, :meth:`~burmester.Filemon.solution_map`):
+    the sweep runs as one call, so its samples are those of a call without
+    a bar, bit for bit.
+    """
 
     def __init__(self, stream: IO[str], label: str, width: int = 30) -> None:
         self.stream = stream
         self.label = label
         self.width = width
+        self._shown = -1
 
-    def __call__(self, fraction: float) -> None:
-        """Show ``fraction`` (0 to 1) done; a newline ends the bar at 1."""
-        fraction = min(max(fraction, 0.0), 1.0)
+    def __call__(self, done: int, total: int) -> None:
+        """Show ``done`` of ``total`` rows; a newline ends the bar when all are done."""
+        fraction = min(max(done / total, 0.0), 1.0) if total > 0 else 1.0
         filled = round(self.width * fraction)
+        percent = round(100 * fraction)
+        if percent == self._shown:
+            return
+        self._shown = percent
         bar = "#" * filled + " " * (self.width - filled)
         end = "\n" if fraction >= 1.0 else ""
-        self.stream.write(f"\r{self.label} [{bar}] {100 * fraction:3.0f}%{end}")
+        self.stream.write(f"\r{self.label} [{bar}] {percent:3d}%{end}")
         self.stream.flush()
 
 
-def sweep(
-    filemon: Filemon,
-    view: View,
-    what: str = "branch",
-    method: Method = "conic",
-    progress: Optional[Callable[[float], None]] = None,
-    bands: int = 50,
-) -> npt.NDArray[Any]:
-    """The branch map (``what="branch"``) or margin map (``"margin"``) of ``view``.
-
-    With ``progress``, the grid is computed in about ``bands`` bands of rows
-    (the same samples as one call) and ``progress(fraction)`` is called after
-    each.
-    """
-    nx, ny = view.nx, view.ny
-    if what == "branch":
-        out: npt.NDArray[Any] = np.empty((ny, nx), dtype=bool)
-    else:
-        out = np.empty((ny, nx), dtype=np.float32)
-    if progress is None:
-        bands = 1
-    rows = max(1, math.ceil(ny / max(1, bands)))
-    dy = (view.ymax - view.ymin) / ny
-    for j0 in range(0, ny, rows):
-        j1 = min(ny, j0 + rows)
-        y0 = view.ymin + j0 * dy
-        y1 = view.ymax if j1 == ny else view.ymin + j1 * dy
-        band = out[j0:j1]
-        if what == "branch":
-            filemon.branch_map(view.xmin, view.xmax, y0, y1, nx, j1 - j0, method, out=band)
-        else:
-            filemon.margin_map(view.xmin, view.xmax, y0, y1, nx, j1 - j0, out=band)
-        if progress is not None:
-            progress(j1 / ny)
-    return out
-
-
-def _progress_for(view: View, label: str) -> Optional[Callable[[float], None]]:
-    big = view.nx * view.ny >= PROGRESS_MIN_POINTS
+def progress_for(grid: Grid, label: str, work_per_sample: int = 1) -> Optional[Progress]:
+    """A :class:`ProgressBar` on stderr for a sweep of ``grid`` that is large
+    enough to wait for (``work_per_sample``: 16 for a solution map), when
+    stderr is a terminal; else None."""
+    big = grid.size * work_per_sample >= PROGRESS_MIN_POINTS
     return ProgressBar(sys.stderr, f"burmester: {label}") if big and sys.stderr.isatty() else None
 
 
@@ -135,8 +114,25 @@ def _with_grid(spec: TaskSpec, grid: Optional[Sequence[int]]) -> TaskSpec:
         if not 2 <= n <= 20000:
             raise UsageError(f"--grid {name} must be from 2 to 20000, got {n}")
     v = spec.view
-    view = View(v.xmin, v.xmax, v.ymin, v.ymax, nx, ny)
+    view = Grid(v.xmin, v.xmax, v.ymin, v.ymax, nx, ny)
     return TaskSpec(spec.poses, spec.driven_center, view, spec.limits, spec.source)
+
+
+def _solution_map(spec: TaskSpec, filemon: burmester.Filemon) -> burmester.SolutionMap:
+    """The solution-space map of the task's view under its limits, with a
+    progress bar when it is large."""
+    return filemon.solution_map(
+        spec.view, limits=spec.limits, progress=progress_for(spec.view, "solution map", 16)
+    )
+
+
+def _spacing(spec: TaskSpec, spacing: Optional[float]) -> float:
+    """The least distance between listed pivots: given, or a tenth of the view."""
+    if spacing is None:
+        return pv.default_spacing(spec.view)
+    if not spacing >= 0.0:
+        raise UsageError(f"--spacing must be at least 0, got {spacing:g}")
+    return spacing
 
 
 def _plot_module() -> ModuleType:
@@ -177,31 +173,32 @@ def cmd_map(args: argparse.Namespace) -> int:
     spec = _with_grid(_load(args.task), args.grid)
     plot = _plot_module()
     filemon = spec.filemon()
+    view = spec.view
     if args.plane == "circle":
         ax = plot.circle_plane(filemon)
         summary = f"circle-point plane of {spec.source}"
     else:
-        free = sweep(filemon, spec.view, "branch", args.method, _progress_for(spec.view, "branch map"))
-        pivots = None
+        smap = _solution_map(spec, filemon) if args.design or args.pivots > 0 else None
+        if smap is not None and args.method == "conic":
+            free = smap.branch_free  # the branch map, computed once (with the solution map)
+        else:
+            free = filemon.branch_map(
+                view, method=args.method, progress=progress_for(view, "branch map")
+            )
+        marks = None
         acceptable = transmission = None
-        smap = None
-        if args.design or args.pivots > 0:
-            smap = solution_map(filemon, spec.view, spec.limits)
         if args.design and smap is not None:
             acceptable = smap.acceptable
-            transmission = np.degrees(smap.min_transmission)
-        if args.pivots > 0:
-            ranked = rank_pivots(filemon, spec.view, spec.limits, args.pivots, smap=smap)
-            if not ranked:
-                margin = sweep(filemon, spec.view, "margin", progress=_progress_for(spec.view, "margin map"))
-                ranked = rank_by_margin(filemon, spec.view, args.pivots, margin=margin)
-            pivots = [p.center for p in ranked]
+            transmission = np.degrees(smap.min_transmission_rad)
+        if args.pivots > 0 and smap is not None:
+            ranked, _ = pv.rank(smap, args.pivots, pv.default_spacing(view))
+            marks = [p.center for p in ranked]
         ax = plot.center_plane(
-            filemon, spec.view, free=free, pivots=pivots, acceptable=acceptable, transmission=transmission
+            filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission
         )
         summary = (
             f"center-point plane of {spec.source}: {100 * free.mean():.1f}% of the "
-            f"{spec.view.nx} x {spec.view.ny} grid is branch-free"
+            f"{view.nx} x {view.ny} grid is branch-free"
         )
         if smap is not None:
             summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
@@ -210,11 +207,11 @@ def cmd_map(args: argparse.Namespace) -> int:
     return 0
 
 
-def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], acceptable: bool = True) -> str:
+def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "transmission") -> str:
     """The text table of ``burmester pivots``."""
     head = (
         "ranked by the minimum transmission angle over the travel (acceptable under the limits)"
-        if acceptable
+        if ranked_by == "transmission"
         else "none meets the limits: branch-free pivots ranked by margin (distance to the "
         "branch-defect boundary)"
     )
@@ -222,17 +219,18 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], acceptable: bool = True
         f"Driving pivots A0 for {spec.source}, {head}",
         f"{'#':>2} | {'A0 (x, y)':>18} | {'margin':>7} | {'ground':>7} {'crank':>7} {'coupler':>7} "
         f"{'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'mu1':>4} {'mu2':>4} {'mu3':>4} | "
-        f"{'drive':<10} | limits",
+        f"{'drive':<11} | limits",
     ]
     for k, p in enumerate(pivots, start=1):
-        g, c, cp, r = p.lengths
-        mu = " ".join(f"{m:4.0f}" for m in p.transmission_deg)
-        mt = f"{p.min_transmission_deg:6.1f}" if p.min_transmission_deg is not None else f"{'-':>6}"
-        drive = f"{p.direction} {p.modes[0] or ''}".strip()
-        bad = p.violations(spec.limits)
+        f = p.figures
+        g, c, cp, r = f.lengths
+        mu = " ".join(f"{m:4.0f}" if m is not None else f"{'-':>4}" for m in pv.transmission_at_poses_deg(p.linkage))
+        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
+        drive = f"{f.direction} {f.modes[0] or ''}".strip()
+        bad = pv.violations(f, spec.limits)
         lines.append(
             f"{k:>2} | {_fmt_point(p.center):>18} | {p.margin:7.3f} | {g:7.3f} {c:7.3f} {cp:7.3f} "
-            f"{r:7.3f} | {p.grashof:<14} | {mt} | {mu} | {drive:<10} | {'; '.join(bad) or 'ok'}"
+            f"{r:7.3f} | {f.grashof:<14} | {mt} | {mu} | {drive:<11} | {'; '.join(bad) or 'ok'}"
         )
     if not pivots:
         lines.append("(no branch-free pivot in the view)")
@@ -241,7 +239,7 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], acceptable: bool = True
         "mu min: smallest transmission angle over the travel 1 -> 2 -> 3; mu1-3: at the poses "
         f"(degrees). drive: input rotation and assembly mode. limits: transmission >= "
         f"{lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
-        + (", crank input" if lim.require_crank else "")
+        + ("" if lim.input == "any" else f", {lim.input} input")
     )
     return "\n".join(lines)
 
@@ -249,12 +247,9 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], acceptable: bool = True
 def cmd_pivots(args: argparse.Namespace) -> int:
     """``burmester pivots``: rank the branch-free driving pivots."""
     spec = _with_grid(_load(args.task), args.grid)
-    filemon = spec.filemon()
-    pivots = rank_pivots(filemon, spec.view, spec.limits, args.top, spacing=args.spacing)
-    acceptable = bool(pivots)
-    if not pivots:
-        margin = sweep(filemon, spec.view, "margin", progress=_progress_for(spec.view, "margin map"))
-        pivots = rank_by_margin(filemon, spec.view, args.top, spacing=args.spacing, margin=margin)
+    spacing = _spacing(spec, args.spacing)
+    smap = _solution_map(spec, spec.filemon())
+    pivots, ranked_by = pv.rank(smap, args.top, spacing)
     if args.json:
         v, lim = spec.view, spec.limits
         doc = {
@@ -263,14 +258,15 @@ def cmd_pivots(args: argparse.Namespace) -> int:
             "limits": {
                 "min_transmission_deg": lim.min_transmission_deg,
                 "max_link_ratio": lim.max_link_ratio,
-                "require_crank": lim.require_crank,
+                "input": lim.input,
             },
-            "ranking": "min_transmission" if acceptable else "margin",
-            "pivots": [p.as_dict(lim) for p in pivots],
+            "spacing": spacing,
+            "ranking": ranked_by,
+            "pivots": [pv.as_dict(p, lim) for p in pivots],
         }
         print(json.dumps(doc, indent=2))
     else:
-        print(pivot_table(spec, pivots, acceptable))
+        print(pivot_table(spec, pivots, ranked_by))
     return 0
 
 
@@ -279,7 +275,7 @@ def cmd_linkage(args: argparse.Namespace) -> int:
     spec = _load(args.task)
     filemon = spec.filemon()
     if args.pivot is None:
-        best = rank_pivots(filemon, spec.view, spec.limits, 1) or rank_by_margin(filemon, spec.view, 1)
+        best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view))
         if not best:
             raise UsageError("no branch-free driving pivot in the view; give one with --pivot X Y")
         pivot = best[0].center
@@ -302,16 +298,16 @@ def cmd_linkage(args: argparse.Namespace) -> int:
     else:
         ax = plot.linkage(sfb, task=filemon.task)
         _save(ax.figure, out, args.dpi)
-    state = "branch-free" if sfb.is_branch_free() else "has a branch defect"
+    state = "branch-free" if sfb.branch_free else "has a branch defect"
     print(f"wrote {out}: four-bar with driving pivot A0 = {_fmt_point(pivot)}, "
-          f"{sfb.fourbar.grashof()}, {state}")
+          f"{sfb.fourbar.grashof}, {state}")
     return 0
 
 
 def position_table(fourbar: burmester.FourBar, step_deg: float = 30.0) -> str:
     """A text table of both assembly modes over a full turn of the input."""
     lines = [
-        f"{fourbar!r}: {fourbar.grashof()}",
+        f"{fourbar!r}: {fourbar.grashof}",
         f"{'theta2':>8} | {'open theta3':>11} {'theta4':>8} {'mu':>6} | "
         f"{'crossed theta3':>14} {'theta4':>8} {'mu':>6}",
     ]
@@ -349,18 +345,19 @@ def cmd_solve(args: argparse.Namespace) -> int:
         lengths = (args.ground, args.crank, args.coupler, args.rocker)
     if args.step is not None and not 0.0 < args.step <= 360.0:
         raise UsageError(f"--step must be more than 0 and at most 360 degrees, got {args.step:g}")
-    fb = burmester.FourBar(*lengths)
+    ground, crank, coupler, rocker = lengths
+    fb = burmester.FourBar(ground=ground, crank=crank, coupler=coupler, rocker=rocker)
     if args.theta2 is None:
         print(position_table(fb, args.step or 30.0))
         return 0
     t2 = math.radians(args.theta2)
     modes: List[Mode] = [args.mode] if args.mode else ["open", "crossed"]
-    lines = [f"{fb!r}: {fb.grashof()}", f"theta2 = {args.theta2:g} deg"]
+    lines = [f"{fb!r}: {fb.grashof}", f"theta2 = {args.theta2:g} deg"]
     for mode in modes:
         try:
             c = fb.configuration(t2, mode)
         except burmester.AssemblyError:
-            ranges = fb.input_range() or []
+            ranges = fb.input_range or []
             arcs = " or ".join(f"[{math.degrees(a):.1f}, {math.degrees(b):.1f}]" for a, b in ranges)
             raise UsageError(
                 f"the loop does not close at theta2 = {args.theta2:g} deg; "
@@ -480,7 +477,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("--top", type=_positive_int, default=5, help="how many pivots (default: 5)")
     p.add_argument("--spacing", type=_finite, default=None,
-                   help="least distance between listed pivots (default: a tenth of the view)")
+                   help="least distance between listed pivots, whichever the ranking "
+                   "(default: a tenth of the view's shorter side)")
     p.add_argument("--grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
                    help="grid samples along x and y (default: the task file's, or 400)")
     p.add_argument("--json", action="store_true", help="print JSON instead of a table")

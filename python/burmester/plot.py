@@ -6,7 +6,7 @@
   crank's fixed pivot, and optional overlays.
 - :func:`circle_plane`: the circle-point plane (Fig. 3 and 11): the three
   lines through ``C1``, Filemon's double wedges, the image poles and their circle.
-- :func:`linkage`: a synthesized four-bar drawn at the three poses.
+- :func:`linkage`: a synthesized four-bar drawn at the poses.
 - :func:`animate`: a GIF or MP4 of the four-bar driven through the poses.
 
 Needs matplotlib (``pip install "burmester[plot]"``). Every drawing function
@@ -16,7 +16,8 @@ editing; ``ax.figure.savefig("out.png")`` saves it. The artists carry gids
 ``"pole-circle"``, ...) to find and restyle them: ``[a for a in
 ax.get_children() if a.get_gid() == "poles"]``.
 
-Colours follow the poses throughout: pose 1 red, pose 2 purple, pose 3 blue;
+Colours follow the poses throughout: pose 1 red, pose 2 purple, pose 3 blue
+(pose 4 green, pose 5 brown);
 a transformed Filemon curve has the colour of its line's pose.
 """
 
@@ -45,18 +46,19 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     ) from e
 
 import burmester
-from burmester._burmester import Filemon, SynthesizedFourBar, Task
-from burmester.taskfile import DEFAULT_GRID, View, default_view
+from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
+from burmester.taskfile import DEFAULT_GRID, default_view, grid_for
 
 if TYPE_CHECKING:
     from burmester._burmester import Method, Mode
 
 Point = Tuple[float, float]
 Extent = Tuple[float, float, float, float]
-ViewLike = Union[View, Sequence[float]]
+#: A view: a :class:`burmester.Grid`, or ``(xmin, xmax, ymin, ymax)``.
+ViewLike = Union[Grid, Sequence[float]]
 
-#: Colour of each pose (1, 2, 3); lines, curves and linkages use them.
-POSE_COLORS: Dict[int, str] = {1: "#d62728", 2: "#9467bd", 3: "#1f77b4"}
+#: Colour of each pose (1 to 5); lines, curves and linkages use them.
+POSE_COLORS: Dict[int, str] = {1: "#d62728", 2: "#9467bd", 3: "#1f77b4", 4: "#2ca02c", 5: "#8c564b"}
 #: Shading of branch-defective pivots (the page), branch-free pivots, and
 #: branch-free pivots that also meet the limits (the ``acceptable`` overlay).
 DEFECT_COLOR = "#ffffff"
@@ -70,23 +72,22 @@ CIRCLE_COLOR = "#7f7f7f"
 # Helpers
 
 
-def _as_view(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, int]]) -> View:
-    """A :class:`View` from a View, an ``(xmin, xmax, ymin, ymax)`` sequence or None."""
+def _as_grid(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, int]]) -> Grid:
+    """A :class:`burmester.Grid` from a Grid, an ``(xmin, xmax, ymin, ymax)``
+    sequence (400 samples along the longer side) or None (the default view),
+    with ``grid = (nx, ny)`` samples when given."""
     if view is None:
-        v = default_view(filemon)
-    elif isinstance(view, View):
-        v = view
+        g = default_view(filemon)
+    elif isinstance(view, Grid):
+        g = view
     else:
         xmin, xmax, ymin, ymax = (float(t) for t in view)
         if not (xmin < xmax and ymin < ymax):
             raise ValueError(f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}")
-        w, h = xmax - xmin, ymax - ymin
-        nx = DEFAULT_GRID if w >= h else max(2, round(DEFAULT_GRID * w / h))
-        ny = DEFAULT_GRID if h >= w else max(2, round(DEFAULT_GRID * h / w))
-        v = View(xmin, xmax, ymin, ymax, nx, ny)
+        g = grid_for(xmin, xmax, ymin, ymax, DEFAULT_GRID)
     if grid is not None:
-        v = View(v.xmin, v.xmax, v.ymin, v.ymax, int(grid[0]), int(grid[1]))
-    return v
+        g = Grid(g.xmin, g.xmax, g.ymin, g.ymax, int(grid[0]), int(grid[1]))
+    return g
 
 
 def _new_axes(ax: Optional[Axes], figsize: Tuple[float, float] = (8.0, 6.4)) -> Axes:
@@ -94,24 +95,6 @@ def _new_axes(ax: Optional[Axes], figsize: Tuple[float, float] = (8.0, 6.4)) -> 
         return ax
     _, new = plt.subplots(figsize=figsize)
     return new
-
-
-def clip_line(point: Point, direction: Point, extent: Extent) -> Optional[Tuple[Point, Point]]:
-    """The part of the infinite line ``point + t * direction`` inside the
-    rectangle ``(xmin, xmax, ymin, ymax)``, as two end points, or None."""
-    xmin, xmax, ymin, ymax = extent
-    (px, py), (dx, dy) = point, direction
-    lo, hi = -math.inf, math.inf
-    for p, d, a, b in ((px, dx, xmin, xmax), (py, dy, ymin, ymax)):
-        if d == 0.0:
-            if not a <= p <= b:
-                return None
-            continue
-        t0, t1 = (a - p) / d, (b - p) / d
-        lo, hi = max(lo, min(t0, t1)), min(hi, max(t0, t1))
-    if not lo <= hi:
-        return None
-    return (px + lo * dx, py + lo * dy), (px + hi * dx, py + hi * dy)
 
 
 def _draw_circle(ax: Axes, circle: Dict[str, Any], extent: Extent, gid: str, label: str) -> Artist:
@@ -206,14 +189,15 @@ def center_plane(
     Parameters:
         filemon: Filemon's construction for the driven dyad
             (``task.filemon(C0)``).
-        view: ``(xmin, xmax, ymin, ymax)`` or a :class:`burmester.taskfile.View`;
+        view: a :class:`burmester.Grid` or ``(xmin, xmax, ymin, ymax)``;
             default: a square around the poles and the pivots.
-        grid: ``(nx, ny)`` samples of the branch map; default: the View's, or
+        grid: ``(nx, ny)`` samples of the branch map; default: the Grid's, or
             400 along the longer side.
         method: how :meth:`Filemon.branch_map` classifies (``"conic"``,
             ``"direct"``, ``"simulate"``).
         free: a branch map already computed on this view, shape ``(ny, nx)``
-            (then ``grid`` is taken from it and ``method`` is not used).
+            (for example a solution map's ``branch_free``; then ``grid`` is
+            taken from it and ``method`` is not used).
         acceptable: optional bool array ``(ny, nx)``: pivots that meet the
             limits (from the solution-space map); shaded darker where also
             branch-free.
@@ -232,12 +216,12 @@ def center_plane(
     if free is not None:
         ny, nx = np.asarray(free).shape
         grid = (nx, ny)
-    v = _as_view(filemon, view, grid)
+    v = _as_grid(filemon, view, grid)
     extent = v.extent
-    shape = (v.ny, v.nx)
+    shape = v.shape
     free_a = _check_shape("free", free, shape)
     if free_a is None:
-        free_a = filemon.branch_map(*extent, v.nx, v.ny, method)
+        free_a = filemon.branch_map(v, method=method)
     free_b = free_a.astype(bool)
     acc = _check_shape("acceptable", acceptable, shape)
     trans = _check_shape("transmission", transmission, shape)
@@ -283,7 +267,7 @@ def center_plane(
 
     # The poles, the pole triangle, its extended sides and the pole circle.
     task = filemon.task
-    poles = task.poles()
+    poles = [p.point for p in task.poles if p.point is not None]  # three poses: all finite
     for a, b in ((0, 1), (1, 2), (2, 0)):
         seg = clip_line(poles[a], (poles[b][0] - poles[a][0], poles[b][1] - poles[a][1]), extent)
         if seg:
@@ -351,31 +335,25 @@ def _sector_polygon(center: Point, a0: float, a1: float, radius: float) -> npt.N
 
 
 def filemon_wedges(filemon: Filemon, radius: float) -> Tuple[List[npt.NDArray[np.float64]], List[npt.NDArray[np.float64]]]:
-    """Filemon's sectors around ``C1`` as polygons of the given radius:
-    ``(free, defective)``. The free ones are the two opposite sectors where
-    all three lines see the driving circle point on one side."""
-    c1 = filemon.circle_point
-    dirs = [d for _, d in filemon.all_lines]
-    angles = sorted({(math.atan2(d[1], d[0]) + s) % (2 * math.pi) for d in dirs for s in (0.0, math.pi)})
+    """Filemon's sectors around ``C1`` (:attr:`burmester.Filemon.sectors`) as
+    polygons of the given radius: ``(free, defective)``. The free ones are
+    the two opposite sectors where all three lines see the driving circle
+    point on one side."""
+    c1 = filemon.driven_circle
     free: List[npt.NDArray[np.float64]] = []
     defective: List[npt.NDArray[np.float64]] = []
-    for i, a0 in enumerate(angles):
-        a1 = angles[i + 1] if i + 1 < len(angles) else angles[0] + 2 * math.pi
-        mid = (a0 + a1) / 2
-        m = (math.cos(mid), math.sin(mid))
-        signs = {math.copysign(1.0, d[0] * m[1] - d[1] * m[0]) for d in dirs}
-        poly = _sector_polygon(c1, a0, a1, radius)
-        (free if len(signs) == 1 and not filemon.all_defective else defective).append(poly)
+    for a0, a1, is_free in filemon.sectors:
+        (free if is_free else defective).append(_sector_polygon(c1, a0, a1, radius))
     return free, defective
 
 
-def _default_circle_view(filemon: Filemon) -> View:
-    pts: List[Point] = [filemon.circle_point, *filemon.fixed_pivot_images, *filemon.task.image_poles()]
+def _default_circle_extent(filemon: Filemon) -> Extent:
+    pts: List[Point] = [filemon.driven_circle, *filemon.fixed_pivot_images, *filemon.task.image_poles()]
     xs = [p[0] for p in pts]
     ys = [p[1] for p in pts]
     cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
     half = max(max(xs) - min(xs), max(ys) - min(ys), filemon.task.scale) * 0.75
-    return View(cx - half, cx + half, cy - half, cy + half)
+    return (cx - half, cx + half, cy - half, cy + half)
 
 
 def circle_plane(
@@ -399,8 +377,8 @@ def circle_plane(
 
     Parameters:
         filemon: Filemon's construction for the driven dyad.
-        view: ``(xmin, xmax, ymin, ymax)`` or a View; default: a square around
-            ``C1``, the ``C'k`` and the image poles.
+        view: ``(xmin, xmax, ymin, ymax)`` or a :class:`burmester.Grid`;
+            default: a square around ``C1``, the ``C'k`` and the image poles.
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
         ax: the Axes to draw into; default: a new figure.
@@ -408,10 +386,9 @@ def circle_plane(
     Returns:
         The Axes.
     """
-    v = _default_circle_view(filemon) if view is None else _as_view(filemon, view, None)
-    extent = v.extent
+    extent = _default_circle_extent(filemon) if view is None else _as_grid(filemon, view, None).extent
     ax = _new_axes(ax)
-    c1 = filemon.circle_point
+    c1 = filemon.driven_circle
     corners = [(x, y) for x in extent[:2] for y in extent[2:]]
     radius = 2.0 * max(math.hypot(x - c1[0], y - c1[1]) for x, y in corners) + 1.0
     free, defective = filemon_wedges(filemon, radius)
@@ -535,7 +512,7 @@ def linkage(
     legend: bool = True,
     ax: Optional[Axes] = None,
 ) -> Axes:
-    """Draw a synthesized four-bar at the three poses.
+    """Draw a synthesized four-bar at the task's poses.
 
     Draws the fixed pivots ``A0`` and ``C0`` with the ground line, the path of
     the coupler point over a full turn of the input in the mode of pose 1
@@ -574,8 +551,8 @@ def linkage(
         tri.set_gid(f"coupler-{k}")
         ax.add_patch(tri)
     if labels:
-        state = "branch-free" if sfb.is_branch_free() else "branch defect (modes differ)"
-        ax.set_title(f"Four-bar at the three poses: {sfb.fourbar.grashof()}, {state}")
+        state = "branch-free" if sfb.branch_free else "branch defect (modes differ)"
+        ax.set_title(f"Four-bar at the {len(sfb.input_angles)} poses: {sfb.fourbar.grashof}, {state}")
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.margins(0.08)
@@ -584,31 +561,34 @@ def linkage(
     return ax
 
 
-def drive_angles(sfb: SynthesizedFourBar, frames: int = 60) -> Tuple[npt.NDArray[np.float64], Tuple[int, int, int]]:
-    """Input angles that drive the linkage from pose 1 through pose 2 to pose 3.
+def drive_angles(sfb: SynthesizedFourBar, frames: int = 60) -> Tuple[npt.NDArray[np.float64], Tuple[int, ...]]:
+    """Input angles that drive the linkage from pose 1 through the poses in
+    order to the last, along its travel (:attr:`burmester.SynthesizedFourBar.travel_stops`).
 
-    The input turns one way (counter-clockwise or clockwise, whichever reaches
-    pose 2 before pose 3) in about ``frames`` equal steps; the three input
-    angles of the poses are among the samples, exactly. Returns the angles and
-    the indices of the poses in them.
+    The input turns one way (the travel's direction) in about ``frames``
+    equal steps; the input angles of the poses are among the samples,
+    exactly. Returns the angles and the index of each pose in them.
+
+    Raises:
+        burmester.AssemblyError: no input direction carries the coupler
+            through the poses in order (the linkage has no travel).
     """
-    t1, t2, t3 = sfb.input_angles
-    tau = 2 * math.pi
-    d12, d13 = (t2 - t1) % tau, (t3 - t1) % tau
-    if d12 <= d13:
-        stops = [t1, t1 + d12, t1 + d13]
-    else:  # clockwise
-        stops = [t1, t1 - ((t1 - t2) % tau), t1 - ((t1 - t3) % tau)]
-    total = abs(stops[2] - stops[0])
+    stops = sfb.travel_stops
+    if stops is None:
+        raise burmester.AssemblyError(
+            "no input direction carries the coupler through the poses in order (an order or "
+            "circuit defect); choose another driving pivot"
+        )
+    total = abs(stops[-1] - stops[0])
     n = max(2, int(frames))
     parts: List[npt.NDArray[np.float64]] = []
     idx = [0]
-    for a, b in ((stops[0], stops[1]), (stops[1], stops[2])):
+    for a, b in zip(stops[:-1], stops[1:]):
         steps = max(1, round(n * abs(b - a) / total)) if total > 0 else 1
         seg = np.linspace(a, b, steps + 1)
         parts.append(seg if not parts else seg[1:])
         idx.append(idx[-1] + steps)
-    return np.concatenate(parts), (idx[0], idx[1], idx[2])
+    return np.concatenate(parts), tuple(idx)
 
 
 def animate(
@@ -620,10 +600,10 @@ def animate(
     fps: int = 20,
     dpi: int = 80,
 ) -> FuncAnimation:
-    """Write an animation of the four-bar driven through the three poses.
+    """Write an animation of the four-bar driven through the poses.
 
-    The input turns from pose 1 through pose 2 to pose 3 (see
-    :func:`drive_angles`) and back, so the animation loops smoothly; the
+    The input turns from pose 1 through the poses in order to the last
+    (see :func:`drive_angles`) and back, so the animation loops smoothly; the
     moving linkage (gid ``"moving-linkage"``, ``"moving-coupler"``) is drawn
     over the coupler curve and the pose markers (as in :func:`linkage`).
 
@@ -631,7 +611,7 @@ def animate(
         sfb: a branch-free four-bar.
         path: where to write: ``.gif`` (Pillow) or ``.mp4`` (needs ffmpeg).
         task: the task, to mark its poses; default: the poses the linkage reaches.
-        frames: about how many frames from pose 1 to pose 3.
+        frames: about how many frames from the first pose to the last.
         fps: frames per second.
         dpi: resolution of the frames.
 
@@ -640,8 +620,8 @@ def animate(
 
     Raises:
         burmester.AssemblyError: the linkage has a branch defect, or its input
-            cannot turn from pose 1 through pose 2 to pose 3 without passing a
-            dead position.
+            cannot turn from pose 1 through the poses in order without passing
+            a dead position (:attr:`burmester.LinkageFigures.feasible`).
         ValueError: the file type is neither ``.gif`` nor ``.mp4``.
         RuntimeError: ``.mp4`` was asked for and ffmpeg is not installed.
     """
@@ -651,20 +631,19 @@ def animate(
         raise ValueError(f"animation file must end in .gif or .mp4, got {path.name!r}")
     if suffix == ".mp4" and not matplotlib.animation.writers.is_available("ffmpeg"):
         raise RuntimeError("writing .mp4 needs ffmpeg on the PATH; install it, or write a .gif")
-    modes = set(sfb.modes)
-    if None in modes or len(modes) != 1:
+    figures = sfb.figures
+    if not figures.branch_free:
         raise burmester.AssemblyError(
-            f"the linkage meets the poses in modes {list(sfb.modes)}: it has a branch defect "
-            "and cannot be driven through all three; choose a branch-free driving pivot"
+            f"the linkage meets the poses in modes {figures.modes}: it has a branch defect "
+            "and cannot be driven through all of them; choose a branch-free driving pivot"
         )
-    mode: Mode = sfb.modes[0] or "open"
+    if not figures.feasible:
+        raise burmester.AssemblyError(
+            "the input cannot turn from pose 1 through the poses in order without passing a "
+            "dead position (an order or circuit defect); choose another driving pivot"
+        )
+    mode: Mode = figures.modes[0] or "open"
     angles, _ = drive_angles(sfb, frames)
-    _, _, valid = sfb.fourbar.solve_many(angles, mode)
-    if not bool(np.all(valid)):
-        raise burmester.AssemblyError(
-            "the input cannot turn from pose 1 through pose 2 to pose 3 without passing a "
-            "dead position (an order defect); choose another driving pivot"
-        )
     sequence = np.concatenate([angles, angles[-2:0:-1]])
 
     fig, ax = plt.subplots(figsize=(6.0, 5.0))
@@ -676,7 +655,7 @@ def animate(
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
     ax.set_ylim(lo[1] - pad, hi[1] + pad)
     ax.set_aspect("equal")
-    ax.set_title(f"{sfb.fourbar.grashof()}, driven through the poses ({mode})")
+    ax.set_title(f"{sfb.fourbar.grashof}, driven through the poses ({mode})")
     (chain_art,) = ax.plot([], [], color="#333333", linewidth=2.5, marker="o", markersize=5, zorder=8)
     chain_art.set_gid("moving-linkage")
     tri = Polygon(polys[0][1], closed=True, facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.6, zorder=8)

@@ -33,7 +33,11 @@ required::
     [limits]              # what a good linkage must meet
     min_transmission_deg = 30.0
     max_link_ratio = 10.0
-    require_crank = false
+    input = "any"         # "any", "crank" (turns fully) or "rocker"
+
+The view becomes a :class:`burmester.Grid` and the limits a
+:class:`burmester.DesignLimits` (which validates them); older files may say
+``require_crank = true`` instead of ``input = "crank"``.
 
 A bad file raises :class:`TaskFileError` (a ``ValueError``) whose message
 names the file, the key, what was expected and what was found.
@@ -47,11 +51,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
-import numpy as np
-import numpy.typing as npt
-
 import burmester
-from burmester._burmester import Filemon, Task
+from burmester._burmester import DesignLimits, Filemon, Grid, Task
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -74,67 +75,44 @@ EXAMPLE_DRIVEN_CENTER: Point = (4.0, -1.0)
 EXAMPLE_VIEW: Tuple[float, float, float, float] = (-8.0, 8.0, -8.0, 8.0)
 
 
+#: The values of ``input`` in ``[limits]``.
+INPUTS = ("any", "crank", "rocker")
+
+
 class TaskFileError(ValueError):
     """A task file that cannot be used; the message says where and why."""
 
 
-@dataclass(frozen=True)
-class View:
-    """A rectangle of the plane and the grid of samples over it."""
-
-    xmin: float
-    xmax: float
-    ymin: float
-    ymax: float
-    nx: int = DEFAULT_GRID
-    ny: int = DEFAULT_GRID
-
-    @property
-    def extent(self) -> Tuple[float, float, float, float]:
-        """``(xmin, xmax, ymin, ymax)``, the order ``branch_map`` and ``imshow`` use."""
-        return (self.xmin, self.xmax, self.ymin, self.ymax)
-
-    @property
-    def grid(self) -> Tuple[int, int]:
-        """``(nx, ny)``."""
-        return (self.nx, self.ny)
-
-    def cell_centers(self) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
-        """The sample coordinates ``(x, y)`` (1-D arrays of length nx and ny),
-        at cell centers as in :meth:`burmester.Filemon.branch_map`."""
-        x = self.xmin + (np.arange(self.nx) + 0.5) * (self.xmax - self.xmin) / self.nx
-        y = self.ymin + (np.arange(self.ny) + 0.5) * (self.ymax - self.ymin) / self.ny
-        return x, y
-
-
-@dataclass(frozen=True)
-class Limits:
-    """What an acceptable linkage must meet (used by the solution-space map).
-
-    ``min_transmission_deg``: the smallest transmission angle allowed over
-    the whole travel from pose 1 through pose 2 to pose 3, degrees in
-    [0, 90]. ``max_link_ratio``: the largest ratio of the longest to the
-    shortest link, at least 1. ``require_crank``: whether the driving link
-    must turn fully.
-    """
-
-    min_transmission_deg: float = 30.0
-    max_link_ratio: float = 10.0
-    require_crank: bool = False
+def grid_for(
+    xmin: float, xmax: float, ymin: float, ymax: float, samples: int = DEFAULT_GRID
+) -> Grid:
+    """A :class:`burmester.Grid` over the rectangle with ``samples`` samples
+    along its longer side and about square cells (at least 2 along the
+    shorter side). Raises :class:`burmester.InvalidInputError` for an empty
+    or inverted rectangle."""
+    w, h = xmax - xmin, ymax - ymin
+    if not (w > 0 and h > 0):
+        # Let the core say what is wrong, with its fields.
+        return Grid(xmin, xmax, ymin, ymax, samples, samples)
+    nx = samples if w >= h else max(2, round(samples * w / h))
+    ny = samples if h >= w else max(2, round(samples * h / w))
+    return Grid(xmin, xmax, ymin, ymax, nx, ny)
 
 
 @dataclass(frozen=True)
 class TaskSpec:
-    """A loaded task: poses (angles in radians), driven dyad, view and limits."""
+    """A loaded task: poses (angles in radians), the driven dyad's fixed
+    pivot, the view (a :class:`burmester.Grid`) and the limits (a
+    :class:`burmester.DesignLimits`)."""
 
     poses: Tuple[Tuple[float, float, float], ...]
     driven_center: Point
-    view: View
-    limits: Limits = field(default_factory=Limits)
+    view: Grid
+    limits: DesignLimits = field(default_factory=DesignLimits)
     source: str = "<example>"
 
     def task(self) -> Task:
-        """The :class:`burmester.Task` of the three poses."""
+        """The :class:`burmester.Task` of the poses."""
         return Task(list(self.poses))
 
     def filemon(self) -> Filemon:
@@ -144,27 +122,27 @@ class TaskSpec:
 
 def example() -> TaskSpec:
     """The built-in example task (the one ``burmester map`` draws without a file)."""
-    x0, x1, y0, y1 = EXAMPLE_VIEW
     return TaskSpec(
         poses=EXAMPLE_POSES,
         driven_center=EXAMPLE_DRIVEN_CENTER,
-        view=View(x0, x1, y0, y1),
+        view=Grid(*EXAMPLE_VIEW, DEFAULT_GRID, DEFAULT_GRID),
         source="<example>",
     )
 
 
-def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> View:
+def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> Grid:
     """A square view around the poles, the task's points and both pivots of the
-    driven dyad, twice as wide as the box around them."""
+    driven dyad, twice as wide as the box around them, with ``grid`` samples
+    along each side."""
     task = filemon.task
-    pts: List[Point] = list(task.poles())
+    pts: List[Point] = [p.point for p in task.poles if p.point is not None]
     pts += [(p[0], p[1]) for p in task.poses]
-    pts += [filemon.driven_center, filemon.circle_point]
+    pts += [filemon.driven_center, filemon.driven_circle]
     xs = [p[0] for p in pts]
     ys = [p[1] for p in pts]
     cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
     half = max(max(xs) - min(xs), max(ys) - min(ys), task.scale)
-    return View(cx - half, cx + half, cy - half, cy + half, grid, grid)
+    return Grid(cx - half, cx + half, cy - half, cy + half, grid, grid)
 
 
 # ---------------------------------------------------------------------------
@@ -273,14 +251,17 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
             hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
             raise r.fail(key, f"unknown top-level key (expected [[pose]], [driven], [view], [limits]){hint}")
 
-    # [[pose]] x3
+    # [[pose]] x3 (the branch maps of Filemon's construction need three)
     if "pose" not in doc:
         raise r.fail("[[pose]]", "missing; give three [[pose]] tables with x, y and angle_deg")
     raw_poses = doc["pose"]
     if not isinstance(raw_poses, list) or not all(isinstance(p, dict) for p in raw_poses):
         raise r.fail("pose", f"expected three [[pose]] tables, found {_describe(raw_poses)}")
     if len(raw_poses) != 3:
-        raise r.fail("[[pose]]", f"expected exactly 3 poses, found {len(raw_poses)}")
+        raise r.fail(
+            "[[pose]]",
+            f"expected exactly 3 poses (Filemon's construction and the maps need three), found {len(raw_poses)}",
+        )
     poses = []
     for k, p in enumerate(raw_poses, start=1):
         where = f"pose {k}"
@@ -328,36 +309,50 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
         xmin, xmax = r.interval("view.x", view_t["x"])
         ymin, ymax = r.interval("view.y", view_t["y"])
     else:
-        auto = default_view(filemon)
-        xmin, xmax, ymin, ymax = auto.extent
+        xmin, xmax, ymin, ymax = default_view(filemon).extent
     if "grid" in view_t:
         nx, ny = r.grid("view.grid", view_t["grid"])
+        view = Grid(xmin, xmax, ymin, ymax, nx, ny)
     else:
-        w, h = xmax - xmin, ymax - ymin
-        nx = DEFAULT_GRID if w >= h else max(2, round(DEFAULT_GRID * w / h))
-        ny = DEFAULT_GRID if h >= w else max(2, round(DEFAULT_GRID * h / w))
-    view = View(xmin, xmax, ymin, ymax, nx, ny)
+        view = grid_for(xmin, xmax, ymin, ymax)
 
     # [limits]
     lim_t = r.table(doc, "limits", required=False) or {}
-    r.only_keys("limits", lim_t, ["min_transmission_deg", "max_link_ratio", "require_crank"])
-    defaults = Limits()
+    keys = ["min_transmission_deg", "max_link_ratio", "input", "require_crank"]
+    r.only_keys("limits", lim_t, keys)
+    defaults = DesignLimits()
     mu = defaults.min_transmission_deg
     if "min_transmission_deg" in lim_t:
         mu = r.number("limits.min_transmission_deg", lim_t["min_transmission_deg"], "a number of degrees")
-        if not 0.0 <= mu <= 90.0:
-            raise r.fail("limits.min_transmission_deg", f"expected degrees from 0 to 90, found {mu:g}")
     ratio = defaults.max_link_ratio
     if "max_link_ratio" in lim_t:
         ratio = r.number("limits.max_link_ratio", lim_t["max_link_ratio"], "a number")
-        if ratio < 1.0:
-            raise r.fail("limits.max_link_ratio", f"expected a ratio of at least 1, found {ratio:g}")
-    crank = defaults.require_crank
+    if "input" in lim_t and "require_crank" in lim_t:
+        raise r.fail(
+            "[limits]", 'expected one of input = "any" | "crank" | "rocker" or require_crank, found both'
+        )
+    input_ = defaults.input
+    if "input" in lim_t:
+        value = lim_t["input"]
+        if value not in INPUTS:
+            raise r.fail("limits.input", f'expected "any", "crank" or "rocker", found {_describe(value)}')
+        input_ = value
     if "require_crank" in lim_t:
         crank = lim_t["require_crank"]
         if not isinstance(crank, bool):
             raise r.fail("limits.require_crank", f"expected true or false, found {_describe(crank)}")
-    limits = Limits(mu, ratio, crank)
+        input_ = "crank" if crank else "any"
+    try:
+        limits = DesignLimits(mu, ratio, input_)
+    except burmester.InvalidInputError as e:
+        # The core validates; its error names the limit and its range.
+        if e.cause != "outside_range":
+            raise r.fail("[limits]", str(e)) from None
+        unit = f" {e.unit}" if e.unit else ""
+        expected = (
+            f"at least {e.min:g}{unit}" if math.isinf(e.max) else f"{e.min:g} to {e.max:g}{unit}"
+        )
+        raise r.fail(f"limits.{e.name}", f"expected {expected}, found {e.value:g}") from None
 
     return TaskSpec(tuple(poses), center, view, limits, source)
 
@@ -413,7 +408,7 @@ def dumps(spec: TaskSpec) -> str:
         "[limits]  # what an acceptable linkage must meet",
         f"min_transmission_deg = {lim.min_transmission_deg!r}  # over the whole travel through the poses, degrees",
         f"max_link_ratio = {lim.max_link_ratio!r}  # longest link / shortest link",
-        f"require_crank = {'true' if lim.require_crank else 'false'}  # the driving link turns fully",
+        f'input = "{lim.input}"  # the driving link: "any", "crank" (turns fully) or "rocker"',
         "",
     ]
     return "\n".join(lines)

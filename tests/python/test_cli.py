@@ -11,9 +11,8 @@ import numpy as np
 import pytest
 
 import burmester
-from burmester import cli, taskfile
+from burmester import Grid, cli, pivots, taskfile
 from burmester.cli import main
-from burmester.pivots import rank_by_margin
 
 EXAMPLE_FILE = Path(__file__).resolve().parents[2] / "examples" / "task.toml"
 
@@ -111,35 +110,36 @@ def test_pivots_table_and_json(capsys):
 
     assert main(["pivots", "--top", "4", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
-    assert doc["ranking"] == "min_transmission"
-    pivots = doc["pivots"]
-    assert len(pivots) == 4
-    scores = [p["min_transmission_deg"] for p in pivots]
+    assert doc["ranking"] == "transmission" and doc["spacing"] == pytest.approx(1.6)
+    assert doc["limits"] == {"min_transmission_deg": 30.0, "max_link_ratio": 10.0, "input": "any"}
+    listed = doc["pivots"]
+    assert len(listed) == 4
+    scores = [p["min_transmission_deg"] for p in listed]
     assert scores == sorted(scores, reverse=True)
     spec = taskfile.example()
     f = spec.filemon()
-    v = spec.view
-    smap = f.solution_map(*v.extent, v.nx, v.ny)
-    xs, ys = v.cell_centers()
-    for p in pivots:
+    smap = f.solution_map(spec.view)
+    # The same pivots as the core's ranking, with the CLI's spacing.
+    assert [p["center"] for p in listed] == [list(q.center) for q in smap.best_pivots(4, 1.6)]
+    for p in listed:
         center = tuple(p["center"])
         assert f.is_branch_free(center)
         # Each listed pivot is an acceptable sample of the solution-space map.
-        i, j = int(np.argmin(abs(xs - center[0]))), int(np.argmin(abs(ys - center[1])))
-        assert smap.acceptable[j, i]
-        assert math.degrees(smap.min_transmission[j, i]) == pytest.approx(p["min_transmission_deg"], abs=1e-4)
-        assert p["violations"] == [] and p["direction"] in ("ccw", "cw")
+        j, i = p["index"]
+        assert smap.point(j, i) == center and smap.acceptable[j, i]
+        assert math.degrees(smap.min_transmission_rad[j, i]) == pytest.approx(p["min_transmission_deg"], abs=1e-4)
+        assert p["violations"] == [] and p["direction"] in ("ccw", "cw") and p["ranked_by"] == "transmission"
         assert f.margin(center) == pytest.approx(p["margin"], rel=1e-4)
         sfb = f.four_bar(center)
         fb = sfb.fourbar
         assert [p["ground"], p["crank"], p["coupler"], p["rocker"]] == pytest.approx(list(fb.lengths))
-        assert p["grashof"] == fb.grashof()
+        assert p["grashof"] == fb.grashof and p["input_full"] == fb.input_turns_fully
         mus = [math.degrees(fb.transmission_angle(t, m)) for t, m in zip(sfb.input_angles, sfb.modes)]
         assert p["transmission_deg"] == pytest.approx(mus)
         # The minimum over the travel is at most the angle at any pose.
         assert p["min_transmission_deg"] <= min(mus) + 1e-4
     # The pivots are apart, not neighbouring grid cells.
-    pts = np.array([p["center"] for p in pivots])
+    pts = np.array([p["center"] for p in listed])
     d = np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
     assert d[np.triu_indices(4, 1)].min() >= 1.6 - 1e-9
 
@@ -154,6 +154,15 @@ def test_pivots_fall_back_to_the_margin_when_nothing_meets_the_limits(tmp_path, 
     doc = json.loads(capsys.readouterr().out)
     assert doc["ranking"] == "margin"
     assert doc["pivots"] and all(p["violations"] for p in doc["pivots"])
+    assert all(p["ranked_by"] == "margin" for p in doc["pivots"])
+    # One spacing for both rankings: the CLI's, passed to the core.
+    spec = taskfile.load(path)
+    smap = spec.filemon().solution_map(spec.view, limits=spec.limits)
+    want = smap.best_pivots(2, pivots.default_spacing(spec.view), rank_by="margin")
+    assert [p["center"] for p in doc["pivots"]] == [list(q.center) for q in want]
+    assert main(["pivots", str(path), "--top", "2", "--spacing", "5", "--json"]) == 0
+    wide = json.loads(capsys.readouterr().out)["pivots"]
+    assert math.dist(wide[0]["center"], wide[1]["center"]) >= 5
     assert main(["pivots", str(path), "--top", "2"]) == 0
     assert "none meets the limits" in capsys.readouterr().out
 
@@ -162,9 +171,12 @@ def test_pivots_rank_matches_the_margin_map():
     spec = taskfile.example()
     f = spec.filemon()
     v = spec.view
-    mm = f.margin_map(*v.extent, v.nx, v.ny)
-    (best,) = rank_by_margin(f, v, 1, margin=mm)
-    assert best.margin == pytest.approx(float(mm.max()))
+    mm = f.margin_map(v)
+    smap = f.solution_map(v, min_transmission_deg=90)
+    (best,), ranked_by = pivots.rank(smap, 1)
+    assert ranked_by == "margin" and best.ranked_by == "margin"
+    assert best.margin == pytest.approx(float(mm.max()), rel=1e-6)
+    assert mm[best.index] == mm.max()
 
 
 # ---------------------------------------------------------------------------
@@ -272,30 +284,91 @@ def test_map_without_matplotlib_exits_1_and_says_what_to_install():
 
 
 # ---------------------------------------------------------------------------
-# Sweeping in bands with a progress bar
+# The progress bar: the core's hook on one call
 
 
-def test_banded_sweep_is_the_single_sweep():
-    spec = taskfile.example()
-    f = spec.filemon()
-    v = taskfile.View(-8.0, 8.0, -8.0, 8.0, 130, 97)
+def test_progress_bar_gets_the_samples_of_one_call_bit_for_bit():
+    """The CLI's progress bar follows one call through the core's hook, so a
+    large grid's samples are those of a call without it (the old banded
+    sweep moved sample coordinates in their last bits on a 3001-row view)."""
+    f = taskfile.example().filemon()
+    g = Grid(-8.0, 8.0, -8.0, 8.0, 1200, 3001)
+    buf = io.StringIO()
+    bar = cli.ProgressBar(buf, "burmester: branch map")
     seen = []
-    banded = cli.sweep(f, v, "branch", progress=seen.append, bands=7)
-    whole = f.branch_map(*v.extent, v.nx, v.ny)
-    assert seen == sorted(seen) and seen[-1] == 1.0 and len(seen) == 7
-    mm = f.margin_map(*v.extent, v.nx, v.ny)
-    differ = banded != whole
-    assert np.all(np.abs(mm[differ]) < 1e-9)  # only points on a curve could differ
-    assert differ.sum() == 0
-    margin = cli.sweep(f, v, "margin", progress=lambda _: None, bands=5)
-    assert np.allclose(margin, mm, atol=1e-6)
+
+    def hook(done, total):
+        seen.append((done, total))
+        bar(done, total)
+
+    with_bar = f.branch_map(g, progress=hook)
+    whole = f.branch_map(g)
+    assert np.array_equal(with_bar, whole)
+    assert seen and seen[-1] == (3001, 3001) and all(t == 3001 for _, t in seen)
+    assert [d for d, _ in seen] == sorted(d for d, _ in seen)
+    assert buf.getvalue().endswith("100%\n")
+    mm = f.margin_map(g, progress=lambda d, t: None)
+    assert np.array_equal(mm.view(np.uint32), f.margin_map(g).view(np.uint32))
+    s1 = f.solution_map(Grid(-8.0, 8.0, -8.0, 8.0, 300, 301), progress=lambda d, t: None)
+    assert s1 == f.solution_map(Grid(-8.0, 8.0, -8.0, 8.0, 300, 301))
 
 
 def test_progress_bar_draws_in_place():
     buf = io.StringIO()
     bar = cli.ProgressBar(buf, "burmester: branch map", width=10)
-    for x in (0.0, 0.5, 1.0):
-        bar(x)
+    for done in (0, 50, 50, 100):
+        bar(done, 100)
     text = buf.getvalue()
-    assert text.count("\r") == 3 and text.endswith("[##########] 100%\n")
+    assert text.count("\r") == 3 and text.endswith("[##########] 100%\n")  # an unchanged percentage is not redrawn
     assert "[#####     ]  50%" in text
+
+
+def test_progress_only_for_large_grids_on_a_terminal(monkeypatch):
+    small, big = Grid(0, 1, 0, 1, 100, 100), Grid(0, 1, 0, 1, 2000, 1000)
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
+    assert cli.progress_for(small, "x") is None
+    assert isinstance(cli.progress_for(big, "x"), cli.ProgressBar)
+    assert isinstance(cli.progress_for(Grid(0, 1, 0, 1, 400, 400), "x", 16), cli.ProgressBar)
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: False, raising=False)
+    assert cli.progress_for(big, "x") is None
+
+
+class _Counting:
+    """A Filemon that counts the sweeps asked of it."""
+
+    def __init__(self, inner):
+        self._inner = inner
+        self.calls = []
+
+    def __getattr__(self, name):
+        attr = getattr(self._inner, name)
+        if name in ("branch_map", "margin_map", "solution_map"):
+            def counted(*args, **kwargs):
+                self.calls.append(name)
+                return attr(*args, **kwargs)
+            return counted
+        return attr
+
+
+@pytest.mark.parametrize("extra, calls", [
+    ([], ["branch_map"]),
+    (["--design"], ["solution_map"]),
+    (["--design", "--pivots", "3"], ["solution_map"]),
+    (["--pivots", "2"], ["solution_map"]),
+    (["--design", "--method", "direct"], ["solution_map", "branch_map"]),
+])
+def test_map_computes_each_map_once(tmp_path, monkeypatch, capsys, extra, calls):
+    pytest.importorskip("matplotlib")
+    made = []
+    original = taskfile.TaskSpec.filemon
+
+    def filemon(self):
+        made.append(_Counting(original(self)))
+        return made[-1]
+
+    monkeypatch.setattr(taskfile.TaskSpec, "filemon", filemon)
+    assert main(["map", "--grid", "60", "50", "-o", str(tmp_path / "m.png"), *extra]) == 0
+    assert len(made) == 1 and made[0].calls == calls
+    f = original(taskfile.example())
+    free = f.branch_map(Grid(-8, 8, -8, 8, 60, 50), method="direct" if "direct" in extra else "conic")
+    assert f"{100 * free.mean():.1f}% of the 60 x 50 grid is branch-free" in capsys.readouterr().out

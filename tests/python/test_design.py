@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import burmester
-from burmester import InvalidInputError
+from burmester import DesignLimits, Grid, InvalidInputError, Pivot
 from conftest import POSES, C0, VP
 
 
@@ -16,7 +16,7 @@ def test_arrays_shapes_dtypes_and_consistency(f):
     for name, dtype in [
         ("valid", np.bool_), ("branch_free", np.bool_), ("grashof", np.uint8),
         ("input_full", np.bool_), ("direction", np.int8), ("one_circuit", np.bool_),
-        ("min_transmission", np.float32), ("link_ratio", np.float32), ("acceptable", np.bool_),
+        ("min_transmission_rad", np.float32), ("link_ratio", np.float32), ("acceptable", np.bool_),
     ]:
         a = getattr(m, name)
         assert a.shape == (48, 64) and a.dtype == dtype, name
@@ -25,12 +25,18 @@ def test_arrays_shapes_dtypes_and_consistency(f):
     assert np.array_equal(m.branch_free, f.branch_map(*VP, 64, 48))
     assert not (m.acceptable & ~m.branch_free).any()
     assert not (m.acceptable & (m.direction == 0)).any()
-    assert np.isnan(m.min_transmission[m.direction == 0]).all()
+    assert np.isnan(m.min_transmission_rad[m.direction == 0]).all()
     ok = m.acceptable
-    assert (m.min_transmission[ok] >= math.radians(30) - 1e-6).all()
+    assert (m.min_transmission_rad[ok] >= math.radians(30) - 1e-6).all()
+    assert (m.min_transmission_rad[m.valid & ~np.isnan(m.min_transmission_rad)] <= math.pi / 2 + 1e-6).all()
     assert (m.link_ratio[ok] <= 10).all()
     assert set(np.unique(m.grashof[m.valid])) <= set(range(6))
     assert len(m.grashof_names) == 6 and m.grashof_names[0] == "crank-rocker"
+    assert m.columns == ["valid", "branch_free", "grashof", "input_full", "direction",
+                         "one_circuit", "min_transmission_rad", "link_ratio", "acceptable"]
+    assert m.grid == Grid(*VP, 64, 48) and m.limits == DesignLimits()
+    assert m.task == burmester.Task(POSES) and m.fixed_dyad == ((4.0, -1.0), pytest.approx(f.driven_circle))
+    assert (m.grashof[~m.valid] == 255).all()
 
 
 def test_sample_linkage_matches_the_map(f):
@@ -40,8 +46,18 @@ def test_sample_linkage_matches_the_map(f):
     j, i = js[len(js) // 2], is_[len(is_) // 2]
     fb = m.linkage(int(j), int(i))
     assert fb.driving[0] == pytest.approx(m.point(int(j), int(i)))
-    assert fb.fourbar.grashof() == m.grashof_names[m.grashof[j, i]]
-    assert fb.is_branch_free()
+    assert m.point(int(j), int(i)) == m.grid.point(int(j), int(i))
+    assert fb.fourbar.grashof == m.grashof_names[m.grashof[j, i]]
+    assert fb.branch_free
+    # The sample's figures are the linkage's, column by column.
+    fig = fb.figures
+    assert fig.grashof == m.grashof_names[m.grashof[j, i]]
+    assert fig.input_full == m.input_full[j, i] and fig.one_circuit == m.one_circuit[j, i]
+    assert {"ccw": 1, "cw": -1, "none": 0}[fig.direction] == m.direction[j, i]
+    assert math.radians(fig.min_transmission_deg) == pytest.approx(float(m.min_transmission_rad[j, i]), rel=1e-6)
+    assert fig.link_ratio == pytest.approx(float(m.link_ratio[j, i]), rel=1e-6)
+    assert fig.feasible and fig.branch_free
+    assert m.margin(int(j), int(i)) == pytest.approx(f.margin(m.point(int(j), int(i))))
     with pytest.raises(InvalidInputError):
         m.point(40, 0)
 
@@ -52,6 +68,13 @@ def test_limits_tighten_the_mask(f):
     assert strict.acceptable.sum() < loose.acceptable.sum()
     assert not (strict.acceptable & ~loose.acceptable).any()
     assert (strict.input_full[strict.acceptable]).all()
+    assert strict.limits == DesignLimits(45, 4, "crank")
+    # limits= is the same as its three keywords, and not both.
+    assert f.solution_map(*VP, 50, 50, limits=DesignLimits(45, 4, "crank")) == strict
+    with pytest.raises(TypeError, match="not both"):
+        f.solution_map(*VP, 8, 8, limits=DesignLimits(), max_link_ratio=4)
+    rocker = f.solution_map(*VP, 50, 50, input="rocker")
+    assert not (rocker.input_full[rocker.acceptable]).any()
     with pytest.raises(InvalidInputError, match="input requirement"):
         f.solution_map(*VP, 8, 8, input="motor")
     with pytest.raises(InvalidInputError, match="90"):
@@ -63,14 +86,14 @@ def test_limits_tighten_the_mask(f):
 def test_constraints(f):
     plate = [(-8, -8), (0, -8), (0, 8), (-8, 8)]
     m = f.solution_map(*VP, 40, 40, base_plate=plate)
-    xmin, xmax, ymin, ymax = VP
-    xs = xmin + (np.arange(40) + 0.5) * (xmax - xmin) / 40
+    xs, _ = m.grid.cell_centers()
     assert not m.acceptable[:, xs > 0].any()
     ob = f.solution_map(*VP, 40, 40, obstacles=[[(-1, -3), (0.5, -3), (0.5, -2), (-1, -2)]], link_width=0.3)
     free = f.solution_map(*VP, 40, 40)
     assert ob.acceptable.sum() < free.acceptable.sum()
-    with pytest.raises(InvalidInputError):
+    with pytest.raises(InvalidInputError) as e:
         f.solution_map(*VP, 8, 8, obstacles=[[(0, 0), (1, 1)]], link_width=0.1)
+    assert e.value.cause == "polygon" and e.value.vertices == 2
 
 
 def test_best_pivots_pick_a_linkage_that_passes_the_poses(f):
@@ -78,27 +101,67 @@ def test_best_pivots_pick_a_linkage_that_passes_the_poses(f):
     m = f.solution_map(*VP, 160, 160)
     best = m.best_pivots(5)
     assert 1 <= len(best) <= 5
-    scores = [p["min_transmission_deg"] for p in best]
+    assert all(isinstance(p, Pivot) and p.ranked_by == "transmission" for p in best)
+    scores = [p.figures.min_transmission_deg for p in best]
     assert scores == sorted(scores, reverse=True)
     for p in best:
-        assert p["direction"] in ("ccw", "cw") and p["mode"] in ("open", "crossed")
-        assert p["min_transmission_deg"] >= 30 and p["link_ratio"] <= 10
-        fb = task.four_bar(p["center"], C0)
+        j, i = p.index
+        assert m.acceptable[j, i] and p.center == m.point(j, i)
+        fig = p.figures
+        assert fig == p.linkage.figures
+        assert fig.direction in ("ccw", "cw") and fig.modes[0] in ("open", "crossed")
+        assert fig.min_transmission_deg >= 30 and fig.link_ratio <= 10
+        assert p.margin == pytest.approx(m.margin(j, i)) and p.margin > 0
+        fb = task.four_bar(p.center, C0)
+        assert fb == p.linkage
         for k, pose in enumerate(POSES):
-            x, y, a = fb.pose_at(fb.input_angles[k], p["mode"])
+            x, y, a = fb.pose_at(fb.input_angles[k], fig.modes[k])
             assert (x, y) == pytest.approx(pose[:2], abs=1e-9)
     for a in best:
         for b in best:
             if a is not b:
-                assert math.dist(a["center"], b["center"]) >= 0.02 * math.hypot(16, 16) - 1e-12
+                assert math.dist(a.center, b.center) >= 0.02 * math.hypot(16, 16) - 1e-12
+    # A wider spacing keeps them farther apart.
+    for a, b in zip(m.best_pivots(3, 4.0), m.best_pivots(3, 4.0)[1:]):
+        assert math.dist(a.center, b.center) >= 4.0
+    with pytest.raises(InvalidInputError, match="ranking"):
+        m.best_pivots(3, rank_by="beauty")  # type: ignore[arg-type]
+    with pytest.raises(InvalidInputError):
+        m.best_pivots(3, -1.0)
+
+
+def test_best_pivots_by_margin(f):
+    m = f.solution_map(*VP, 120, 120, min_transmission_deg=89.9)
+    assert not m.acceptable.any()
+    assert m.best_pivots(3) == []
+    best = m.best_pivots(3, 1.6, rank_by="margin")
+    assert len(best) == 3 and all(p.ranked_by == "margin" for p in best)
+    margins = [p.margin for p in best]
+    assert margins == sorted(margins, reverse=True)
+    mm = f.margin_map(m.grid)
+    # The best is the branch-free sample farthest from the curves.
+    assert best[0].margin == pytest.approx(float(mm[m.valid & m.branch_free].max()), rel=1e-6)
+    for p in best:
+        j, i = p.index
+        assert m.valid[j, i] and m.branch_free[j, i]
+        assert p.margin == pytest.approx(f.margin(p.center))
+    for a, b in zip(best, best[1:]):
+        assert math.dist(a.center, b.center) >= 1.6
 
 
 def test_the_other_direction(f):
     task = burmester.Task(POSES)
     m = task.driven_solution_map((-3.0, 4.0), *VP, 40, 40)
     assert m.varying == "driven"
+    assert m.fixed_dyad == task.dyad((-3.0, 4.0))
     js, is_ = np.nonzero(m.branch_free)
     for j, i in list(zip(js, is_))[:20]:
         fb = task.four_bar((-3.0, 4.0), m.point(int(j), int(i)))
-        assert fb.is_branch_free()
-    assert isinstance(m.best_pivots(2), list)
+        assert fb.branch_free
+        assert m.linkage(int(j), int(i)) == fb
+    for p in m.best_pivots(2):
+        assert isinstance(p, Pivot) and p.linkage.driving[0] == (-3.0, 4.0)
+        assert p.linkage.driven[0] == p.center
+    # The driven map's margin: the distance to the nearest sample of the other class.
+    j, i = int(js[0]), int(is_[0])
+    assert m.margin(j, i) > 0

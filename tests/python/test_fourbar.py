@@ -10,6 +10,11 @@ import burmester
 from burmester import AssemblyError, BurmesterError, FourBar, InvalidInputError
 
 
+def fb4(ground, crank, coupler, rocker, **kw):
+    """A FourBar from its lengths in the order ground, crank, coupler, rocker."""
+    return FourBar(ground=ground, crank=crank, coupler=coupler, rocker=rocker, **kw)
+
+
 def test_exception_hierarchy():
     assert issubclass(BurmesterError, ValueError)
     for cls in (InvalidInputError, AssemblyError, burmester.DegenerateError):
@@ -18,7 +23,7 @@ def test_exception_hierarchy():
 
 
 def test_norton_example_4_1():
-    fb = FourBar(100.0, 40.0, 120.0, 80.0)
+    fb = fb4(100.0, 40.0, 120.0, 80.0)
     t3, t4 = fb.solve(math.radians(40))
     assert isinstance(t3, float) and isinstance(t4, float)
     assert round(math.degrees(t3), 3) == 20.298
@@ -29,7 +34,7 @@ def test_norton_example_4_1():
 
 
 def test_second_cross_check():
-    fb = FourBar(4, 1, 3, 3)
+    fb = fb4(4, 1, 3, 3)
     t3, t4 = fb.solve(math.radians(60), "open")
     assert round(math.degrees(t3), 9) == 39.165923859
     assert round(math.degrees(t4), 9) == 113.038303645
@@ -50,7 +55,7 @@ def test_second_cross_check():
     ],
 )
 def test_grashof(lengths, kind):
-    assert FourBar(*lengths).grashof() == kind
+    assert fb4(*lengths).grashof == kind
 
 
 @pytest.mark.parametrize("bad", [0.0, -1.0, math.nan, math.inf, -math.inf])
@@ -60,16 +65,16 @@ def test_bad_lengths_raise_invalid_input(bad, which):
     lengths[which] = bad
     name = ["ground", "crank", "coupler", "rocker"][which]
     with pytest.raises(InvalidInputError, match=name):
-        FourBar(*lengths)
+        fb4(*lengths)
 
 
 def test_never_closes_raises_assembly_error():
     with pytest.raises(AssemblyError, match="never be assembled"):
-        FourBar(10, 1, 2, 3)
+        fb4(10, 1, 2, 3)
 
 
 def test_solve_errors():
-    fb = FourBar(3, 2, 1.5, 1)  # triple-rocker
+    fb = fb4(3, 2, 1.5, 1)  # triple-rocker
     with pytest.raises(AssemblyError, match="does not close"):
         fb.solve(math.pi)
     with pytest.raises(InvalidInputError, match="finite"):
@@ -79,11 +84,11 @@ def test_solve_errors():
     with pytest.raises(TypeError):
         fb.solve("zero")  # type: ignore[arg-type]
     with pytest.raises(AssemblyError, match="indeterminate"):
-        FourBar(1, 1, 2, 2).solve(0.0)
+        fb4(1, 1, 2, 2).solve(0.0)
 
 
 def test_solve_many_matches_solve():
-    fb = FourBar(3, 2, 1.5, 1)
+    fb = fb4(3, 2, 1.5, 1)
     ts = np.linspace(-4, 4, 1001)
     for mode in ("open", "crossed"):
         t3, t4, ok = fb.solve_many(ts, mode=mode)
@@ -100,7 +105,7 @@ def test_solve_many_matches_solve():
 
 
 def test_solve_many_accepts_lists_ints_and_shapes():
-    fb = FourBar(100, 40, 120, 80)
+    fb = fb4(100, 40, 120, 80)
     t3, t4, ok = fb.solve_many([0, 1, 2])
     assert t3.shape == (3,) and ok.all()
     t3, _, ok = fb.solve_many(np.zeros((2, 3), dtype=np.float32))
@@ -113,18 +118,19 @@ def test_solve_many_accepts_lists_ints_and_shapes():
 
 
 def test_configuration_and_geometry():
-    fb = FourBar(3, 2, 1.5, 1)
-    ((start, end),) = fb.input_range()
-    assert fb.dead_positions() == [start, end]
+    fb = fb4(3, 2, 1.5, 1)
+    ((start, end),) = fb.input_range
+    assert fb.dead_positions == [start, end]
     c = fb.configuration(start)
     assert c.toggle and c.transmission_angle < 1e-6
     c = fb.configuration(0.5 * (start + end), "crossed")
     assert not c.toggle and c.mode == "crossed" and c.coupler_rocker_angle < 0
     assert "Configuration(" in repr(c)
-    assert FourBar(4, 1, 3, 3).input_range() is None
-    assert FourBar(4, 1, 3, 3).input_turns_fully()
+    assert fb4(4, 1, 3, 3).input_range is None
+    assert fb4(4, 1, 3, 3).input_turns_fully
+    assert fb4(4, 1, 3, 3).dead_positions == []
 
-    fb = FourBar(100, 40, 120, 80, origin=(1.0, 2.0), ground_angle=0.3)
+    fb = fb4(100, 40, 120, 80, origin=(1.0, 2.0), ground_angle=0.3)
     o2, a_, b_, o4 = fb.joints(1.0)
     assert o2 == (1.0, 2.0) == fb.input_pivot
     assert o4 == pytest.approx(fb.output_pivot)
@@ -140,10 +146,10 @@ def test_configuration_and_geometry():
         fb.coupler_path((math.nan, 0.0), [1.0])
     assert fb.lengths == (100.0, 40.0, 120.0, 80.0)
     assert "origin=" in repr(fb)
-    assert FourBar(1, 2, 3, 3) == FourBar(1.0, 2.0, 3.0, 3.0)
+    assert fb4(1, 2, 3, 3) == fb4(1.0, 2.0, 3.0, 3.0)
     g = FourBar.from_pivots((0, 0), (3, 4), 1, 5, 5)
     assert g.ground == 5 and g.ground_angle == pytest.approx(math.atan2(4, 3))
-    assert FourBar(4, 1, 3, 3).link_ratio() == 4
+    assert fb4(4, 1, 3, 3).link_ratio == 4
 
 
 def test_solve_command_prints_a_table(capsys):
@@ -152,3 +158,21 @@ def test_solve_command_prints_a_table(capsys):
     assert main(["solve"]) == 0
     out = capsys.readouterr().out
     assert "crank-rocker" in out and "20.298" not in out.splitlines()[0]
+
+
+def test_lengths_go_by_keyword_only():
+    with pytest.raises(TypeError, match=r"by name.*ground=\.\.\., crank=\.\.\., coupler=\.\.\., rocker=\.\.\."):
+        FourBar(100.0, 40.0, 120.0, 80.0)  # type: ignore[misc]
+    with pytest.raises(TypeError, match="1 positional"):
+        FourBar(100.0, crank=40.0, coupler=120.0, rocker=80.0)  # type: ignore[misc]
+    with pytest.raises(TypeError, match="all four lengths"):
+        FourBar(ground=100.0, crank=40.0, coupler=120.0)  # type: ignore[call-arg]
+    with pytest.raises(TypeError):
+        FourBar(ground=100.0, crank=40.0, coupler=120.0, rocker=80.0, lenght=1.0)  # type: ignore[call-arg]
+    # Any order of the keywords is the same linkage.
+    a = FourBar(rocker=80.0, coupler=120.0, crank=40.0, ground=100.0)
+    assert a == FourBar(ground=100.0, crank=40.0, coupler=120.0, rocker=80.0)
+    assert a.lengths == (100.0, 40.0, 120.0, 80.0)
+    assert repr(a) == "FourBar(ground=100.0, crank=40.0, coupler=120.0, rocker=80.0)"
+    assert eval(repr(a), {"FourBar": FourBar}) == a
+

@@ -17,7 +17,8 @@ from PIL import Image  # noqa: E402
 
 import burmester  # noqa: E402
 import burmester.plot as bp  # noqa: E402
-from burmester.taskfile import View, example  # noqa: E402
+from burmester import Grid  # noqa: E402
+from burmester.taskfile import example  # noqa: E402
 
 DPI = 100
 
@@ -85,9 +86,13 @@ def polyline_distance(p, poly):
 # center_plane
 
 
+def poles(task):
+    return [p.point for p in task.poles]
+
+
 def test_shaded_pixels_are_the_branch_map(spec, f):
     v = spec.view
-    m = f.branch_map(*v.extent, v.nx, v.ny)
+    m = f.branch_map(v)
     ax = bp.center_plane(f, v)
     (img,) = by_gid(ax, "branch-map")
     assert np.array_equal(np.asarray(img.get_array()), m.astype(np.int8))
@@ -118,7 +123,7 @@ def test_shaded_pixels_are_the_branch_map(spec, f):
 def test_conics_pass_within_a_pixel_of_the_poles_and_c0(spec, f):
     ax = bp.center_plane(f, spec.view)
     render(ax)
-    targets = list(f.task.poles()) + [f.driven_center]
+    targets = poles(f.task) + [f.driven_center]
     to_px = ax.transData.transform
     for pose, conic in zip(f.extreme_poses, f.conics):
         lines = by_gid(ax, f"conic-{pose}")
@@ -144,11 +149,11 @@ def test_conics_pass_within_a_pixel_of_the_poles_and_c0(spec, f):
 
 def test_poles_triangle_circle_and_driven_pivot(f, spec):
     ax = bp.center_plane(f, spec.view)
-    poles = np.array(f.task.poles())
+    poles_ = np.array(poles(f.task))
     (pts,) = by_gid(ax, "poles")
-    assert np.allclose(pts.get_xydata(), poles)
+    assert np.allclose(pts.get_xydata(), poles_)
     (tri,) = by_gid(ax, "pole-triangle")
-    assert np.allclose(tri.get_xydata(), np.vstack([poles, poles[:1]]))
+    assert np.allclose(tri.get_xydata(), np.vstack([poles_, poles_[:1]]))
     (circ,) = by_gid(ax, "pole-circle")
     pc = f.task.pole_circle()
     assert np.allclose(circ.center, pc["center"]) and circ.radius == pytest.approx(pc["radius"])
@@ -161,12 +166,12 @@ def test_poles_triangle_circle_and_driven_pivot(f, spec):
         ts = np.linspace(0.0, 1.0, 401)
         for t in ts:
             p = (x0 + t * (x1 - x0), y0 + t * (y1 - y0))
-            if min(np.hypot(*(poles - p).T)) > 1e-6:
+            if min(np.hypot(*(poles_ - p).T)) > 1e-6:
                 assert not f.is_branch_free(p)
 
 
 def test_overlays_acceptable_transmission_pivots(spec, f):
-    v = View(-8.0, 8.0, -8.0, 8.0, 160, 120)
+    v = Grid(-8.0, 8.0, -8.0, 8.0, 160, 120)
     xs, ys = v.cell_centers()
     X, Y = np.meshgrid(xs, ys)
     acceptable = X > 0.0                       # synthetic: the right half
@@ -176,7 +181,7 @@ def test_overlays_acceptable_transmission_pivots(spec, f):
         f, v, acceptable=acceptable, transmission=transmission,
         transmission_levels=[20.0, 50.0], pivots=pivots,
     )
-    m = f.branch_map(*v.extent, v.nx, v.ny)
+    m = f.branch_map(v)
     (img,) = by_gid(ax, "branch-map")
     cat = np.asarray(img.get_array())
     assert np.array_equal(cat == 2, m & acceptable)
@@ -205,14 +210,19 @@ def test_overlays_acceptable_transmission_pivots(spec, f):
 
 
 def test_overlay_shapes_are_checked(spec, f):
-    v = View(-8.0, 8.0, -8.0, 8.0, 50, 40)
+    v = Grid(-8.0, 8.0, -8.0, 8.0, 50, 40)
     with pytest.raises(ValueError, match="acceptable.*shape"):
         bp.center_plane(f, v, acceptable=np.zeros((50, 40), bool))
     with pytest.raises(ValueError, match="transmission.*shape"):
         bp.center_plane(f, v, transmission=np.zeros((10, 10)))
-    free = f.branch_map(*v.extent, v.nx, v.ny)
+    free = f.branch_map(v)
     ax = bp.center_plane(f, v, free=free)  # a precomputed map sets the grid
     assert np.array_equal(np.asarray(by_gid(ax, "branch-map")[0].get_array()), free)
+    # A view as four numbers: 400 samples along the longer side.
+    (img,) = by_gid(bp.center_plane(f, (-8.0, 8.0, -4.0, 4.0)), "branch-map")
+    assert np.asarray(img.get_array()).shape == (200, 400)
+    with pytest.raises(ValueError, match="xmin < xmax"):
+        bp.center_plane(f, (8.0, -8.0, -4.0, 4.0))
 
 
 def test_all_defective_draws_no_curves():
@@ -263,7 +273,7 @@ def test_circle_plane_wedges_lines_and_image_poles(f):
     for p in f.task.image_poles():
         assert not free.contains_point(to_px([p])[0])
     # Each line passes within a pixel of C1 and of its C'k.
-    c1 = to_px([f.circle_point])[0]
+    c1 = to_px([f.driven_circle])[0]
     for k, ck in enumerate(f.fixed_pivot_images, start=1):
         (ln,) = by_gid(ax, f"line-{k}")
         seg = to_px(ln.get_xydata())
@@ -276,11 +286,30 @@ def test_circle_plane_wedges_lines_and_image_poles(f):
     assert ipc.radius == pytest.approx(f.task.image_pole_circle()["radius"])
 
 
+def test_wedges_are_the_core_sectors(f):
+    free, defective = bp.filemon_wedges(f, 10.0)
+    sectors = f.sectors
+    assert len(free) == sum(s[2] for s in sectors) == 2
+    assert len(free) + len(defective) == len(sectors) == 6
+    assert sectors[-1][1] == pytest.approx(sectors[0][0] + 2 * math.pi)
+    c1 = f.driven_circle
+    for (a0, a1, is_free), poly in zip([s for s in sectors if s[2]] + [s for s in sectors if not s[2]],
+                                        free + defective):
+        mid = 0.5 * (a0 + a1)
+        p = (c1[0] + math.cos(mid), c1[1] + math.sin(mid))
+        assert (f.classify_circle_point(p) == "free") == is_free
+        assert np.allclose(poly[0], c1) and np.allclose(poly[-1], c1)
+
+
 def test_clip_line():
-    seg = bp.clip_line((0.0, 0.0), (1.0, 1.0), (-1.0, 2.0, -3.0, 0.5))
+    seg = burmester.clip_line((0.0, 0.0), (1.0, 1.0), (-1.0, 2.0, -3.0, 0.5))
     assert np.allclose(seg, [(-1.0, -1.0), (0.5, 0.5)])
-    assert bp.clip_line((0.0, 5.0), (1.0, 0.0), (-1.0, 1.0, -1.0, 1.0)) is None
-    assert np.allclose(bp.clip_line((0.0, 0.5), (0.0, 2.0), (-1, 1, -1, 1)), [(0, -1), (0, 1)])
+    assert burmester.clip_line((0.0, 5.0), (1.0, 0.0), (-1.0, 1.0, -1.0, 1.0)) is None
+    assert np.allclose(burmester.clip_line((0.0, 0.5), (0.0, 2.0), (-1, 1, -1, 1)), [(0, -1), (0, 1)])
+    assert burmester.clip_line((0.0, 0.0), (0.0, 0.0), (-1, 1, -1, 1)) is None
+    with pytest.raises(burmester.InvalidInputError):
+        burmester.clip_line((0.0, 0.0), (1.0, 0.0), (1, -1, -1, 1))
+    assert not hasattr(bp, "clip_line") or bp.clip_line is burmester.clip_line
 
 
 # ---------------------------------------------------------------------------
@@ -288,6 +317,7 @@ def test_clip_line():
 
 FREE_PIVOT = (-7.98, -5.18)     # branch-free for the example (a double rocker)
 DEFECT_PIVOT = (0.0, 0.0)       # branch-defective for the example
+ORDER_DEFECT_PIVOT = (-2.375, 4.125)  # branch-free, but no input direction passes 1 -> 2 -> 3
 
 
 def test_linkage_reaches_the_poses(f):
@@ -319,6 +349,14 @@ def test_drive_angles_hit_the_poses(f):
     assert idx[0] == 0 and idx[2] == len(angles) - 1 and 0 < idx[1] < idx[2]
     steps = np.diff(angles)
     assert (steps > 0).all() or (steps < 0).all()
+    # Along the core's travel: its direction, its stops.
+    start, span = sfb.travel
+    assert np.sign(steps[0]) == np.sign(span) == {"ccw": 1, "cw": -1}[sfb.figures.direction]
+    assert [angles[i] for i in idx] == sfb.travel_stops
+    assert angles[-1] == pytest.approx(start + span)
+    # No travel: nothing to drive.
+    with pytest.raises(burmester.AssemblyError, match="order"):
+        bp.drive_angles(f.four_bar(ORDER_DEFECT_PIVOT))
     for k, i in enumerate(idx):
         x, y, a = sfb.pose_at(float(angles[i]), sfb.modes[k])
         px, py, pa = f.task.poses[k]
@@ -346,6 +384,11 @@ def test_animate_refuses_what_it_cannot_drive(tmp_path, f):
         bp.animate(f.four_bar(DEFECT_PIVOT), tmp_path / "x.gif")
     with pytest.raises(ValueError, match=r"\.gif or \.mp4"):
         bp.animate(f.four_bar(FREE_PIVOT), tmp_path / "x.avi")
+    order = f.four_bar(ORDER_DEFECT_PIVOT)
+    assert order.branch_free and order.figures.direction == "none" and order.travel is None
+    with pytest.raises(burmester.AssemblyError, match="order"):
+        bp.animate(order, tmp_path / "x.gif")
+    assert not (tmp_path / "x.gif").exists()
 
 
 # ---------------------------------------------------------------------------

@@ -17,8 +17,13 @@ from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
 import burmester
-from burmester import BurmesterError, Conic, FourBar, InvalidInputError, Task
+from burmester import BurmesterError, Conic, DesignLimits, FourBar, Grid, InvalidInputError, Task
 from conftest import POSES
+
+
+def fb4(ground, crank, coupler, rocker, **kw):
+    """FourBar with its lengths by keyword, in the order ground, crank, coupler, rocker."""
+    return FourBar(ground=ground, crank=crank, coupler=coupler, rocker=rocker, **kw)
 
 # A warning (NumPy dropping an imaginary part, say) is a silent coercion: fail.
 pytestmark = pytest.mark.filterwarnings("error")
@@ -58,6 +63,8 @@ def acceptable(exc):
     assert isinstance(exc, (BurmesterError, TypeError)), repr(exc)
     assert str(exc), repr(exc)
     if isinstance(exc, BurmesterError):
+        # It says why, as data.
+        assert isinstance(exc.cause, str) and exc.cause, repr(exc)
         # The message says what to change.
         msg = str(exc)
         assert any(
@@ -77,13 +84,13 @@ def call(fn, *args, **kwargs):
 @SETTINGS
 @given(st.lists(numbers, min_size=4, max_size=4), numbers, numbers, numbers, st.lists(numbers, max_size=5))
 def test_fourbar_with_any_numbers(lengths, ox, angle, theta2, thetas):
-    fb, err = call(FourBar, *lengths, origin=(ox, 0.0), ground_angle=angle)
+    fb, err = call(fb4, *lengths, origin=(ox, 0.0), ground_angle=angle)
     if err is not None:
         return
-    finite(fb.lengths, fb.input_pivot, fb.output_pivot, fb.link_ratio())
-    for arc in fb.input_range() or []:
+    finite(fb.lengths, fb.input_pivot, fb.output_pivot, fb.link_ratio)
+    for arc in fb.input_range or []:
         finite(arc)
-    finite(*fb.dead_positions())
+    finite(*fb.dead_positions)
     for mode in ("open", "crossed"):
         r, err = call(fb.solve, theta2, mode)
         if r is not None:
@@ -103,19 +110,24 @@ def test_fourbar_with_any_numbers(lengths, ox, angle, theta2, thetas):
 
 
 @SETTINGS
-@given(st.lists(st.lists(numbers, min_size=0, max_size=4), min_size=0, max_size=4), st.tuples(numbers, numbers))
+@given(st.lists(st.lists(numbers, min_size=0, max_size=4), min_size=0, max_size=6), st.tuples(numbers, numbers))
 def test_task_with_any_numbers(poses, point):
     t, err = call(Task, poses)
     if err is not None:
         return
-    finite(t.poles(), t.image_poles(), t.scale, t.rotations, t.pole_triangle_angles())
+    finite(t.scale, tuple(t.rotations))
+    for pole in t.poles:
+        finite(pole.point if pole.point is not None else pole.direction)
+    if len(t) != 3:
+        return
+    finite(t.image_poles(), t.pole_triangle_angles())
     for m in (t.circle_point, t.center_point):
         r, err = call(m, point)
         if r is not None:
             finite(r)
     r, err = call(t.filemon, point)
     if r is not None:
-        finite(r.circle_point)
+        finite(r.driven_circle)
 
 
 @SETTINGS
@@ -166,9 +178,15 @@ def test_point_arrays_of_any_shape_and_values(a):
     assert pts.shape == a.shape and ok.shape == a.shape[:-1]
     assert np.array_equal(np.isfinite(pts).all(axis=-1), ok)
     v, err = call(Conic(1, 0, -1, 0, 0, -1).evaluate_many, a)
-    assert v.shape == a.shape[:-1]
     finite_in = np.isfinite(a.astype(np.float64)).all(axis=-1)
-    assert np.isfinite(v[finite_in]).all()
+    if finite_in.all():
+        # Finite points: finite values, of the input's leading shape.
+        assert err is None and v.shape == a.shape[:-1]
+        assert np.isfinite(v).all()
+    else:
+        # A non-finite point is refused (no NaN handed back), naming it.
+        assert isinstance(err, InvalidInputError) and err.cause == "not_finite", err
+        assert not math.isfinite(err.value)
 
 
 @SETTINGS
@@ -201,21 +219,22 @@ def test_curves_and_maps_on_ordinary_input_never_hand_back_nan(p, theta):
     for conic in f.conics:
         finite(conic.evaluate(tuple(p)), conic.distance(tuple(p)) if conic.evaluate(tuple(p)) else 0.0)
     finite(f.margin(tuple(p)))
-    fb = FourBar(4, 1, 3, 3)
+    fb = fb4(4, 1, 3, 3)
     finite(fb.solve(theta), fb.joints(theta))
 
 
 # Every public callable, with each argument replaced by something that is not
 # what it should be.
 def _targets():
-    fb = FourBar(4.0, 1.0, 3.0, 3.0)
+    fb = fb4(4.0, 1.0, 3.0, 3.0)
     t = Task(POSES)
     f = t.filemon((4.0, -1.0))
     c = f.conics[0]
     s = t.four_bar((-1.0, 3.0), (4.0, -1.0))
     sm = f.solution_map(-8.0, 8.0, -8.0, 8.0, 6, 5)
+    g = Grid(-1.0, 1.0, -1.0, 1.0, 4, 3)
     return [
-        (FourBar, (4.0, 1.0, 3.0, 3.0)),
+        (fb4, (4.0, 1.0, 3.0, 3.0)),
         (FourBar.from_pivots, ((0.0, 0.0), (4.0, 0.0), 1.0, 3.0, 3.0)),
         (fb.solve, (0.5, "open")),
         (fb.configuration, (0.5, "open")),
@@ -226,6 +245,7 @@ def _targets():
         (fb.coupler_path, ((1.0, 0.0), [0.5], "open")),
         (Task, (POSES,)),
         (t.displace, ((1.0, 2.0), 1, 2)),
+        (t.rotation, (1, 2)),
         (t.image_poles_in, (2,)),
         (t.circle_point, ((1.0, -2.0),)),
         (t.center_point, ((1.0, -2.0),)),
@@ -243,7 +263,9 @@ def _targets():
         (f.circle_signs, ((1.0, 1.0),)),
         (f.conic_values, ((1.0, 1.0),)),
         (f.branch_map, (-1.0, 1.0, -1.0, 1.0, 4, 3, "conic")),
+        (f.branch_map, (g, "direct")),
         (f.margin_map, (-1.0, 1.0, -1.0, 1.0, 4, 3)),
+        (f.margin_map, (g,)),
         (f.margin, ((1.0, 1.0),)),
         (f.four_bar, ((-1.0, 3.0),)),
         (Conic, (1.0, 0.0, -1.0, 0.0, 0.0, -1.0)),
@@ -253,11 +275,23 @@ def _targets():
         (c.distance, ((1.0, 1.0),)),
         (c.polylines, (-5.0, 5.0, -5.0, 5.0, 0.1)),
         (s.pose_at, (0.5, "open")),
+        (s.travel_angles, (16,)),
         (f.solution_map, (-1.0, 1.0, -1.0, 1.0, 4, 3)),
+        (f.solution_map, (g,)),
         (t.driven_solution_map, ((-1.0, 3.0), -1.0, 1.0, -1.0, 1.0, 4, 3)),
-        (sm.best_pivots, (3, 0.1)),
+        (t.driven_solution_map, ((-1.0, 3.0), g)),
+        (sm.best_pivots, (3, 0.1, "margin")),
         (sm.point, (1, 2)),
         (sm.linkage, (1, 2)),
+        (sm.margin, (1, 2)),
+        (Grid, (-1.0, 1.0, -1.0, 1.0, 4, 3)),
+        (g.point, (1, 2)),
+        (g.nearest, ((0.3, 0.2),)),
+        (DesignLimits, (30.0, 10.0, "crank")),
+        (burmester.Pole, ((1, 2), (0.0, 1.0))),
+        (burmester.Pole, ((1, 2), None, (0.0, 1.0))),
+        (burmester.Pivot, ((1.0, 2.0), (1, 2), s, 0.5, "margin")),
+        (burmester.clip_line, ((0.0, 0.0), (1.0, 1.0), (-1.0, 1.0, -1.0, 1.0))),
     ]
 
 
@@ -303,7 +337,8 @@ def test_every_argument_replaced_by_something_wrong(target):
 
 
 @pytest.mark.parametrize(
-    "key", ["min_transmission_deg", "max_link_ratio", "input", "base_plate", "obstacles", "link_width", "travel_samples"]
+    "key", ["limits", "min_transmission_deg", "max_link_ratio", "input", "base_plate", "obstacles", "link_width",
+            "travel_samples", "progress"]
 )
 def test_solution_map_keywords_replaced_by_something_wrong(key):
     f = Task(POSES).filemon((4.0, -1.0))
@@ -315,29 +350,36 @@ def test_solution_map_keywords_replaced_by_something_wrong(key):
 
 
 def test_documented_error_types_and_messages():
-    with pytest.raises(InvalidInputError, match="too large to be a float"):
-        FourBar(10**400, 1, 1, 1)
-    with pytest.raises(InvalidInputError, match="non-negative integer"):
-        Task(POSES).displace((0, 0), -1, 2)
-    with pytest.raises(InvalidInputError, match="pose 2 must be"):
-        Task([(0, 0, 0), (1, 2), (3, 2, 1.1)])
+    def raises(cls, match, fn, cause, **fields):
+        with pytest.raises(cls, match=match) as e:
+            fn()
+        assert e.value.cause == cause, e.value.cause
+        for name, value in fields.items():
+            assert getattr(e.value, name) == value, (name, getattr(e.value, name))
+
+    raises(InvalidInputError, "too large to be a float", lambda: fb4(10**400, 1, 1, 1), "too_large")
+    raises(InvalidInputError, "non-negative integer", lambda: Task(POSES).displace((0, 0), -1, 2),
+           "count_out_of_range")
+    raises(InvalidInputError, "pose 2 must be", lambda: Task([(0, 0, 0), (1, 2), (3, 2, 1.1)]), "pose_shape")
     with pytest.raises(TypeError, match="complex"):
         Task(POSES).circle_points(np.array([[1j, 0]]))
     with pytest.raises(TypeError, match="real number"):
         Task(POSES).circle_points(np.array([[None, 0]], dtype=object))
-    with pytest.raises(InvalidInputError, match="one shape"):
-        FourBar(4, 1, 3, 3).solve_many([[1.0], [2.0, 3.0]])
-    with pytest.raises(InvalidInputError, match="at most 1e100"):
-        Task([(1e101, 0, 0), (2, 0.5, 0.4), (3, 2, 1.1)])
-    with pytest.raises(burmester.DegenerateError, match="1e-6"):
-        Task([(0, 0, 0.3), (1, 0, 0.3 + 1e-7), (3, 2, 1.1)])
-    with pytest.raises(InvalidInputError, match="1e300"):
-        FourBar(1e300, 1e300, 1e300, 1e300)
+    raises(InvalidInputError, "one shape", lambda: fb4(4, 1, 3, 3).solve_many([[1.0], [2.0, 3.0]]),
+           "not_rectangular")
+    raises(InvalidInputError, "beyond the limit of 1e100",
+           lambda: Task([(1e101, 0, 0), (2, 0.5, 0.4), (3, 2, 1.1)]),
+           "too_large", name="pose 1 x", value=1e101, limit=1e100)
+    raises(burmester.DegenerateError, "1e-6", lambda: Task([(0, 0, 0.3), (1, 0, 0.3 + 1e-7), (3, 2, 1.1)]),
+           "pure_translation", i=1, j=2)
+    raises(InvalidInputError, "1e300", lambda: fb4(1e300, 1e300, 1e300, 1e300), "too_large")
 
 
 def test_grids_beyond_2_32_samples_are_refused_before_any_allocation():
     f = Task(POSES).filemon((4.0, -1.0))
-    with pytest.raises(InvalidInputError, match="2\\^32"):
-        f.margin_map(-1, 1, -1, 1, 2**32 + 1, 1)
-    with pytest.raises(InvalidInputError, match="2\\^32"):
-        f.branch_map(-1, 1, -1, 1, 2**17, 2**17)
+    for call_ in (lambda: f.margin_map(-1, 1, -1, 1, 2**32 + 1, 1),
+                  lambda: f.branch_map(-1, 1, -1, 1, 2**17, 2**17),
+                  lambda: f.solution_map(Grid(-1, 1, -1, 1, 2**17, 2**17))):
+        with pytest.raises(InvalidInputError, match="at most 4294967296") as e:
+            call_()
+        assert e.value.cause == "grid_size" and e.value.max == 2**32

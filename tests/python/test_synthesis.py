@@ -15,8 +15,15 @@ def rot(v, a):
     return (c * v[0] - s * v[1], s * v[0] + c * v[1])
 
 
+def poles(task):
+    """The finite poles' points, in pair order."""
+    return [p.point for p in task.poles]
+
+
 def test_poles_are_fixed_points(task):
-    p12, p13, p23 = task.poles()
+    assert [p.pair for p in task.poles] == [(1, 2), (1, 3), (2, 3)]
+    assert not any(p.at_infinity or p.direction is not None for p in task.poles)
+    p12, p13, p23 = poles(task)
     for p, (i, j) in ((p12, (1, 2)), (p13, (1, 3)), (p23, (2, 3))):
         assert task.displace(p, i, j) == pytest.approx(p, abs=1e-12)
     ip = task.image_poles()
@@ -31,15 +38,18 @@ def test_poles_are_fixed_points(task):
         assert min(d, math.pi - d) < 1e-9
     pc = task.pole_circle()
     assert pc["kind"] == "circle"
-    for p in task.poles():
+    for p in poles(task):
         assert math.dist(p, pc["center"]) == pytest.approx(pc["radius"])
+    assert task.rotations == pytest.approx([0.4, 1.1, 0.7])
+    assert [task.rotation(i, j) for i, j in ((1, 2), (1, 3), (2, 3))] == task.rotations
+    assert task.rotation(2, 1) == pytest.approx(-0.4)
 
 
 def test_maps_round_trip(task):
     y = (1.0, -2.0)
     x = task.circle_point(y)
     assert task.center_point(x) == pytest.approx(y)
-    ys = np.array([[1.0, -2.0], [0.5, 3.0], list(task.poles()[0])])
+    ys = np.array([[1.0, -2.0], [0.5, 3.0], list(poles(task)[0])])
     xs, ok = task.circle_points(ys)
     assert xs.shape == (3, 2) and list(ok) == [True, True, False]
     assert np.isnan(xs[2]).all()
@@ -56,12 +66,12 @@ def test_degenerate_and_invalid_inputs(task):
         c, r = pc["center"], pc["radius"]
         task.circle_point((c[0] + r, c[1]))
     with pytest.raises(DegenerateError, match="not unique"):
-        task.circle_point(task.poles()[0])
+        task.circle_point(poles(task)[0])
     with pytest.raises(DegenerateError, match="translation"):
         Task([(0, 0, 0.3), (1, 0, 0.3), (2, 2, 1.0)])
     with pytest.raises(DegenerateError, match="equal"):
         Task([(0, 0, 0.3), (0, 0, 0.3), (2, 2, 1.0)])
-    with pytest.raises(InvalidInputError, match="three poses"):
+    with pytest.raises(InvalidInputError, match="3 to 5 poses"):
         Task([(0, 0, 0.3), (2, 2, 1.0)])
     with pytest.raises(InvalidInputError, match="finite"):
         Task([(0, 0, math.nan), (1, 0, 0.3), (2, 2, 1.0)])
@@ -75,7 +85,7 @@ def test_filemon_fixed_names(task):
     f = task.filemon((4.0, -1.0))
     assert isinstance(f, Filemon)
     c1 = task.circle_point((4.0, -1.0))
-    assert f.circle_point == pytest.approx(c1)
+    assert f.driven_circle == pytest.approx(c1)
     assert isinstance(f.all_defective, bool)
     if not f.all_defective:
         assert len(f.lines) == 2 and len(f.conics) == 2
@@ -86,7 +96,7 @@ def test_filemon_fixed_names(task):
             assert len(conic.coefficients) == 6
             assert conic.kind in ("ellipse", "hyperbola", "parabola", "degenerate")
             # Property 2: through the poles and C0.
-            for p in list(task.poles()) + [(4.0, -1.0)]:
+            for p in poles(task) + [(4.0, -1.0)]:
                 assert conic.distance(p) < 1e-9
     for method in ("conic", "direct", "simulate"):
         assert isinstance(f.is_branch_free((1.0, 1.0), method=method), bool)
@@ -96,7 +106,7 @@ def test_filemon_fixed_names(task):
 
 def test_the_three_methods_agree_on_a_grid(task):
     rng = np.random.default_rng(1)
-    checked = 0
+    checked = circuit = 0
     for c0 in rng.uniform(-6, 6, size=(10, 2)):
         try:
             f = task.filemon(tuple(c0))
@@ -116,10 +126,18 @@ def test_the_three_methods_agree_on_a_grid(task):
                 continue
             c = f.classify(p, "conic")
             assert c == d, p
-            if s != "boundary":
-                assert c == s, p
+            if s != "boundary" and s != c:
+                # simulate also sees the circuit defect of an input that
+                # rocks in two arcs (poses on both), which the sign tests
+                # cannot; beyond that the methods agree.
+                assert (c, s) == ("free", "defective"), p
+                sfb = f.four_bar(p)
+                assert len(sfb.fourbar.input_range or []) == 2, p
+                assert not sfb.figures.one_circuit and not sfb.figures.feasible, p
+                circuit += 1
             checked += 1
     assert checked > 100
+    assert circuit < checked / 4
 
 
 def test_built_four_bar_passes_through_the_poses(task):
@@ -133,7 +151,7 @@ def test_built_four_bar_passes_through_the_poses(task):
         assert math.remainder(a - pa, 2 * math.pi) == pytest.approx(0, abs=1e-9)
     assert isinstance(fb.fourbar, burmester.FourBar)
     f = task.filemon((4.0, -1.0))
-    assert f.is_branch_free((-1.0, 3.0)) == fb.is_branch_free()
+    assert f.is_branch_free((-1.0, 3.0)) == fb.branch_free
 
 
 def test_conic_api():
@@ -166,7 +184,7 @@ def test_invariance_under_moving_rotating_and_scaling(task):
         return (q[0] + off[0], q[1] + off[1])
 
     t2 = Task([(*T((x, y)), a + ang) for x, y, a in POSES])
-    for p, q in zip(task.poles(), t2.poles()):
+    for p, q in zip(poles(task), poles(t2)):
         assert T(p) == pytest.approx(q)
     f1, f2 = task.filemon((4.0, -1.0)), t2.filemon(T((4.0, -1.0)))
     rng = np.random.default_rng(7)

@@ -6,8 +6,8 @@ from pathlib import Path
 import pytest
 
 import burmester
-from burmester import taskfile
-from burmester.taskfile import Limits, TaskFileError, View
+from burmester import DesignLimits, Grid, taskfile
+from burmester.taskfile import TaskFileError
 
 EXAMPLE_FILE = Path(__file__).resolve().parents[2] / "examples" / "task.toml"
 
@@ -42,9 +42,9 @@ def test_good_file():
     assert [p[:2] for p in spec.poses] == [(0.0, 0.0), (2.0, 0.5), (3.0, 2.0)]
     assert [p[2] for p in spec.poses] == pytest.approx([0.0, 0.4, 1.1], abs=1e-15)
     assert spec.driven_center == (4.0, -1.0)
-    assert spec.view == View(-8.0, 8.0, -6.0, 6.0, 200, 150)
-    assert spec.limits == Limits(40.0, 6.5, True)
-    assert spec.filemon().circle_point == pytest.approx(
+    assert spec.view == Grid(-8.0, 8.0, -6.0, 6.0, 200, 150)
+    assert spec.limits == DesignLimits(40.0, 6.5, "crank")
+    assert spec.filemon().driven_circle == pytest.approx(
         burmester.Task([(0, 0, 0), (2, 0.5, 0.4), (3, 2, 1.1)]).circle_point((4.0, -1.0))
     )
 
@@ -62,13 +62,14 @@ def test_example_file_is_the_built_in_example():
 def test_optional_sections_and_the_driven_circle_point():
     minimal = GOOD.split("[view]")[0]
     spec = taskfile.loads(minimal)
-    assert spec.limits == Limits()
+    assert spec.limits == DesignLimits()
+    assert spec.limits.min_transmission_deg == 30.0
     v = spec.view  # a default square view around the poles and the pivots
     assert v.xmax - v.xmin == pytest.approx(v.ymax - v.ymin) and (v.nx, v.ny) == (400, 400)
-    for p in list(spec.task().poles()) + [spec.driven_center]:
+    for p in [pole.point for pole in spec.task().poles] + [spec.driven_center]:
         assert v.xmin < p[0] < v.xmax and v.ymin < p[1] < v.ymax
     # The driven dyad by its circle point gives the same C0.
-    c1 = spec.filemon().circle_point
+    c1 = spec.filemon().driven_circle
     by_circle = taskfile.loads(minimal.replace("center = [4.0, -1.0]", f"circle = [{c1[0]!r}, {c1[1]!r}]"))
     assert by_circle.driven_center == pytest.approx((4.0, -1.0), abs=1e-9)
     # A non-square view gets square grid cells.
@@ -87,6 +88,7 @@ BAD = [
     (GOOD.replace("[driven]\ncenter = [4.0, -1.0]\n", ""), ["[driven]", "missing"]),
     ("[driven]\ncenter = [0, 0]\n", ["[[pose]]", "missing", "three"]),
     (edit("[[pose]]\nx = 0\ny = 0.0\nangle_deg = 0.0\n", ""), ["exactly 3 poses", "found 2"]),
+    (GOOD.replace("[driven]", "[[pose]]\nx = 5.0\ny = 1.0\nangle_deg = 80.0\n[driven]"), ["exactly 3 poses", "found 4"]),
     (edit("angle_deg = 22.918311805232932", 'angle_deg = "23"'),
      ["pose 2.angle_deg", "expected a number", "'23' (a string)"]),
     (edit("angle_deg = 22.918311805232932", "angle = 0.4"), ["pose 2.angle", "unknown key", "angle_deg"]),
@@ -103,8 +105,12 @@ BAD = [
     (edit("grid = [200, 150]", "grid = [200.5, 150]"), ["view.grid[0]", "whole number", "200.5 (a float)"]),
     (edit("grid = [200, 150]", "grid = [200, 1]"), ["view.grid[1]", "2 to 20000", "found 1"]),
     (edit("min_transmission_deg = 40", "min_transmission_deg = 120"),
-     ["limits.min_transmission_deg", "0 to 90", "found 120"]),
-    (edit("max_link_ratio = 6.5", "max_link_ratio = 0.5"), ["limits.max_link_ratio", "at least 1", "0.5"]),
+     ["limits.min_transmission_deg", "expected 0 to 90 degrees", "found 120"]),
+    (edit("min_transmission_deg = 40", "min_transmission_deg = -1"),
+     ["limits.min_transmission_deg", "expected 0 to 90 degrees", "found -1"]),
+    (edit("max_link_ratio = 6.5", "max_link_ratio = 0.5"), ["limits.max_link_ratio", "expected at least 1", "found 0.5"]),
+    (edit("require_crank = true", 'input = "motor"'), ["limits.input", '"any", "crank" or "rocker"', "'motor' (a string)"]),
+    (edit("require_crank = true", "require_crank = true\ninput = \"crank\""), ["[limits]", "found both"]),
     (edit("require_crank = true", 'require_crank = "yes"'),
      ["limits.require_crank", "true or false", "'yes' (a string)"]),
     (edit("require_crank = true", "min_transmission = 30"), ["limits.min_transmission", "unknown key"]),
@@ -130,12 +136,38 @@ def test_unreadable_files(tmp_path):
         taskfile.load(tmp_path / "latin1.toml")
 
 
+def test_limits_input_and_the_older_require_crank():
+    for text, want in [
+        (GOOD, "crank"),
+        (edit("require_crank = true", "require_crank = false"), "any"),
+        (edit("require_crank = true", 'input = "rocker"'), "rocker"),
+        (edit("require_crank = true", 'input = "crank"'), "crank"),
+        (edit("require_crank = true", 'input = "any"'), "any"),
+    ]:
+        assert taskfile.loads(text).limits == DesignLimits(40.0, 6.5, want)
+    # What dumps writes loads back to the same limits (the input by name).
+    spec = taskfile.loads(edit("require_crank = true", 'input = "rocker"'))
+    text = taskfile.dumps(spec)
+    assert 'input = "rocker"' in text and "require_crank" not in text
+    again = taskfile.loads(text)
+    assert again.limits == spec.limits and again.view == spec.view
+
+
+def test_grid_for_picks_square_cells():
+    assert taskfile.grid_for(0.0, 20.0, 0.0, 5.0) == Grid(0.0, 20.0, 0.0, 5.0, 400, 100)
+    assert taskfile.grid_for(0.0, 1.0, 0.0, 3.0, 300) == Grid(0.0, 1.0, 0.0, 3.0, 100, 300)
+    assert taskfile.grid_for(0.0, 1000.0, 0.0, 1.0, 10).shape == (2, 10)
+    with pytest.raises(burmester.InvalidInputError) as e:
+        taskfile.grid_for(1.0, 0.0, 0.0, 1.0)
+    assert e.value.cause == "viewport"
+
+
 def test_view_cell_centers_match_branch_map():
     spec = taskfile.loads(GOOD)
     f = spec.filemon()
     v = spec.view
     xs, ys = v.cell_centers()
-    m = f.branch_map(*v.extent, v.nx, v.ny)
+    m = f.branch_map(v)
     for j in range(0, v.ny, 37):
         for i in range(0, v.nx, 41):
             assert m[j, i] == f.is_branch_free((xs[i], ys[j]))

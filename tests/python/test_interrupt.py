@@ -1,0 +1,133 @@
+"""Ctrl-C and progress: a long sweep stops within a fraction of a second
+with KeyboardInterrupt, says what it left in out=, and the progress hook
+sees the same samples as one call without it."""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import numpy as np
+import pytest
+
+import burmester
+from burmester import Grid
+from conftest import C0, POSES, VP
+
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+
+#: The child: starts a sweep that takes seconds, says so, and reports the
+#: KeyboardInterrupt it gets (then lets it end the process).
+CHILD = textwrap.dedent(
+    """
+    import json, sys, time
+    import numpy as np
+    import burmester
+    POSES, C0, VP = {poses!r}, {c0!r}, {vp!r}
+    f = burmester.Task(POSES).filemon(C0)
+    kind, use_out = sys.argv[1], sys.argv[2] == "out"
+    if kind == "branch":
+        g = burmester.Grid(*VP, 3000, 3000)     # "simulate" drives each linkage: about 15 s
+        out = np.zeros(g.shape, dtype=bool) if use_out else None
+        run = lambda: f.branch_map(g, "simulate", out=out)
+    elif kind == "margin":
+        g = burmester.Grid(*VP, 3000, 3000)
+        out = np.full(g.shape, 7.0, dtype=np.float32) if use_out else None
+        run = lambda: [f.margin_map(g, out=out) for _ in range(2000)]   # many short calls: seconds
+    else:
+        g = burmester.Grid(*VP, 600, 600)       # clearance over 256 travel samples: about 20 s
+        obstacle = [(-1.0, -3.0), (0.5, -3.0), (0.5, -2.0), (-1.0, -2.0)]
+        run = lambda: f.solution_map(g, obstacles=[obstacle], link_width=0.3, travel_samples=256)
+    print("started", flush=True)
+    t0 = time.monotonic()
+    try:
+        run()
+    except KeyboardInterrupt as e:
+        done = None
+        if use_out and kind == "branch":
+            done = int(out.any(axis=1).sum())
+        print(json.dumps({{"message": str(e), "ran": time.monotonic() - t0, "rows_touched": done}}), flush=True)
+        raise
+    print(json.dumps({{"finished": time.monotonic() - t0}}), flush=True)
+    """
+).format(poses=POSES, c0=C0, vp=VP)
+
+
+def interrupt(kind, out="none", after=0.3):
+    """Run the child, send SIGINT ``after`` seconds into the sweep: (report,
+    seconds from the signal to the report, return code, stderr)."""
+    p = subprocess.Popen(
+        [sys.executable, "-c", CHILD, kind, out],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        cwd=os.path.dirname(__file__),
+    )
+    try:
+        assert p.stdout.readline().strip() == "started", p.stderr.read()
+        time.sleep(after)
+        sent = time.monotonic()
+        p.send_signal(signal.SIGINT)
+        line = p.stdout.readline()
+        latency = time.monotonic() - sent
+        _, err = p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    return json.loads(line), latency, p.returncode, err
+
+
+@pytest.mark.parametrize("kind", ["branch", "solution"])
+def test_ctrl_c_stops_a_long_sweep_within_half_a_second(kind):
+    report, latency, code, err = interrupt(kind)
+    assert "finished" not in report, "the sweep ended before the signal; make it longer"
+    assert latency < 0.5, latency
+    # The process ends by the KeyboardInterrupt (Python re-raises SIGINT to exit).
+    assert code == -signal.SIGINT and "KeyboardInterrupt" in err
+    done, total = map(int, report["message"].split("interrupted after ")[1].split(" rows")[0].split(" of "))
+    assert 0 <= done < total, report
+    assert "partial" not in report["message"]  # nothing of the caller's was written
+
+
+def test_ctrl_c_says_what_it_left_in_out():
+    report, latency, code, err = interrupt("branch", "out")
+    assert latency < 0.5, latency
+    assert code == -signal.SIGINT
+    msg = report["message"]
+    assert "out holds a partial result" in msg and "keep their old values" in msg
+    done, total = map(int, msg.split("interrupted after ")[1].split(" rows")[0].split(" of "))
+    assert done < total == 3000
+    # The rows it names as done may hold results; none beyond them was written.
+    assert report["rows_touched"] <= done
+
+
+def test_ctrl_c_between_short_calls_is_a_plain_keyboard_interrupt():
+    report, latency, code, err = interrupt("margin", "out")
+    assert latency < 0.5, latency
+    assert code == -signal.SIGINT and "KeyboardInterrupt" in err
+
+
+def test_progress_sees_every_row_and_the_same_samples():
+    f = burmester.Task(POSES).filemon(C0)
+    g = Grid(*VP, 2048, 3001)
+    calls = []
+    m = f.branch_map(g, "direct", progress=lambda done, total: calls.append((done, total)))
+    assert np.array_equal(m, f.branch_map(g, "direct"))
+    assert calls[-1] == (3001, 3001) and len(calls) >= 2
+    assert all(t == 3001 for _, t in calls) and [d for d, _ in calls] == sorted(d for d, _ in calls)
+    s = f.solution_map(Grid(*VP, 900, 700), progress=lambda d, t: None)
+    assert s == f.solution_map(Grid(*VP, 900, 700))
+
+
+def test_an_exception_in_the_progress_hook_stops_the_sweep():
+    f = burmester.Task(POSES).filemon(C0)
+
+    def hook(done, total):
+        raise RuntimeError(f"stop at {done} of {total}")
+
+    out = np.zeros((3000, 3000), dtype=bool)
+    t0 = time.monotonic()
+    with pytest.raises(RuntimeError, match="stop at"):
+        f.branch_map(Grid(*VP, 3000, 3000), "simulate", out=out, progress=hook)
+    assert time.monotonic() - t0 < 2.0  # not the whole sweep (about 15 s)
