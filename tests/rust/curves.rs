@@ -1,0 +1,1165 @@
+//! Four- and five-position synthesis: the Burmester curves, the Burmester
+//! points, crank order and the exact branch arcs, checked against the
+//! notes' worked example, linkages built and driven by the position
+//! analysis, the three-pose maps, dense sign scans and invariance.
+//!
+//! Proptest case counts default to modest values; set `PROPTEST_CASES` for
+//! longer runs.
+
+use std::f64::consts::{PI, TAU};
+
+mod common;
+
+use burmester::geom::Cubic;
+use burmester::synthesis::curves::{
+    Drive, FilemonArcs, FivePositions, FourPositions, ON_CURVE_TOLERANCE, Turn,
+};
+use burmester::{
+    AssemblyMode, Branch, DegenerateError, Dyad, Error, FourBar, InvalidInput, Point2, Pose,
+    Similarity, Task, Vector2, Viewport,
+};
+use proptest::prelude::*;
+
+/// Proptest cases: `PROPTEST_CASES` if set, else `default`.
+fn cases(default: u32) -> ProptestConfig {
+    let n = std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(default);
+    ProptestConfig {
+        max_global_rejects: 1 << 20,
+        ..common::config(n)
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Tasks made from known linkages.
+// ---------------------------------------------------------------------------
+
+/// A task made by driving a known four-bar: its poses and its two dyads.
+#[derive(Debug, Clone)]
+struct Made {
+    poses: Vec<Pose>,
+    /// The input dyad `(A0, A1)`.
+    a: Dyad,
+    /// The output dyad `(B0, B1)`.
+    b: Dyad,
+    fourbar: FourBar,
+}
+
+/// The parameters of a random linkage and of the input angles.
+#[derive(Debug, Clone)]
+struct LinkParams {
+    lengths: [f64; 4],
+    origin: (f64, f64),
+    ground_angle: f64,
+    local: (f64, f64),
+    offset: f64,
+    mode: bool,
+    start: f64,
+    steps: [f64; 5],
+}
+
+fn link_params() -> impl Strategy<Value = LinkParams> {
+    (
+        (2.0f64..5.0, 0.4f64..2.0, 1.0f64..5.0, 1.0f64..5.0),
+        (-3.0f64..3.0, -3.0f64..3.0),
+        -PI..PI,
+        (-3.0f64..3.0, -3.0f64..3.0),
+        -PI..PI,
+        any::<bool>(),
+        0.0f64..1.0,
+        prop::array::uniform5(0.0f64..1.0),
+    )
+        .prop_map(
+            |(l, origin, ground_angle, local, offset, mode, start, steps)| LinkParams {
+                lengths: [l.0, l.1, l.2, l.3],
+                origin,
+                ground_angle,
+                local,
+                offset,
+                mode,
+                start,
+                steps,
+            },
+        )
+}
+
+/// Drives the linkage of `p` to `n` input angles spread over its input
+/// range (increasing) and reads the coupler poses; `None` when the linkage
+/// does not assemble there or the task is ill-conditioned (two poses
+/// rotated by less than `min_rotation`).
+fn made(p: &LinkParams, n: usize, min_rotation: f64) -> Option<Made> {
+    let [g, c, l3, l4] = p.lengths;
+    let fb = FourBar::placed(
+        g,
+        c,
+        l3,
+        l4,
+        Point2::new(p.origin.0, p.origin.1),
+        p.ground_angle,
+    )
+    .ok()?;
+    let range = fb.input_range();
+    let (start, span) = match range {
+        burmester::InputRange::Full => (p.start * TAU, TAU - 0.4),
+        _ => {
+            let (arcs, _) = range.arcs_array();
+            let a = arcs[0];
+            if a.span() < 0.8 {
+                return None;
+            }
+            (a.start + 0.02 * a.span(), 0.96 * a.span())
+        }
+    };
+    // Increasing input angles, at least 6% of the span apart.
+    let w: Vec<f64> = p.steps[..n].iter().map(|s| 0.3 + s).collect();
+    let total: f64 = w.iter().sum::<f64>();
+    let mut angles = Vec::with_capacity(n);
+    let mut acc = 0.0;
+    for wk in &w {
+        angles.push(start + span * acc / total);
+        acc += wk;
+    }
+    let mode = if p.mode {
+        AssemblyMode::Open
+    } else {
+        AssemblyMode::Crossed
+    };
+    let local = Vector2::new(p.local.0, p.local.1);
+    let mut poses = Vec::with_capacity(n);
+    let mut joints1 = None;
+    for &t in &angles {
+        let conf = fb.solve(t, mode).ok()?;
+        if conf.toggle {
+            return None;
+        }
+        let position = fb.coupler_point(&conf, local);
+        poses.push(Pose {
+            position,
+            angle: conf.theta3 + p.offset,
+        });
+        if joints1.is_none() {
+            joints1 = Some(fb.joints(&conf));
+        }
+    }
+    for i in 0..n {
+        for j in i + 1..n {
+            if common::wrap(poses[j].angle - poses[i].angle).abs() < min_rotation {
+                return None;
+            }
+        }
+    }
+    let j = joints1?;
+    Some(Made {
+        poses,
+        a: Dyad::new(fb.input_pivot(), j.crank_joint),
+        b: Dyad::new(fb.output_pivot(), j.rocker_joint),
+        fourbar: fb,
+    })
+}
+
+/// Random poses within 5 of the origin.
+fn random_poses(n: usize) -> impl Strategy<Value = Vec<Pose>> {
+    prop::collection::vec((-5.0f64..5.0, -5.0f64..5.0, -PI..PI), n)
+        .prop_map(|v| v.into_iter().map(|(x, y, a)| Pose::new(x, y, a)).collect())
+}
+
+/// Whether the rotations between every two poses are at least `min` (mod 2 pi).
+fn rotations_at_least(poses: &[Pose], min: f64) -> bool {
+    (0..poses.len()).all(|i| {
+        (i + 1..poses.len()).all(|j| common::wrap(poses[j].angle - poses[i].angle).abs() >= min)
+    })
+}
+
+// ---------------------------------------------------------------------------
+// Small geometric helpers.
+// ---------------------------------------------------------------------------
+
+fn centroid(poses: &[Pose]) -> Point2<f64> {
+    let n = poses.len() as f64;
+    Point2::from(
+        poses
+            .iter()
+            .fold(Vector2::zeros(), |a, p| a + p.position.coords / n),
+    )
+}
+
+/// A square viewport of half-width `h` task sizes around the poses.
+fn view_around(four: &FourPositions, h: f64) -> Viewport {
+    let c = centroid(four.poses());
+    let r = h * four.size();
+    Viewport::new(c.x - r, c.x + r, c.y - r, c.y + r).unwrap()
+}
+
+/// Distance from `p` to the segment `a b`.
+fn seg_dist(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
+    let ab = b - a;
+    let l2 = ab.norm_squared();
+    let u = if l2 > 0.0 {
+        ((p - a).dot(&ab) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (a + ab * u - p).norm()
+}
+
+/// Distance from `p` to the nearest chord of `polylines`.
+fn poly_dist(polylines: &[Vec<Point2<f64>>], p: Point2<f64>) -> f64 {
+    let mut best = f64::INFINITY;
+    for l in polylines {
+        if l.len() == 1 {
+            best = best.min((l[0] - p).norm());
+        }
+        for w in l.windows(2) {
+            best = best.min(seg_dist(p, w[0], w[1]));
+        }
+    }
+    best
+}
+
+/// The relative spread of the crank length of a dyad over the poses.
+fn spread(poses: &[Pose], d: &Dyad) -> f64 {
+    let p1 = poses[0];
+    let r: Vec<f64> = poses
+        .iter()
+        .map(|p| {
+            let (s, c) = (p.angle - p1.angle).sin_cos();
+            let v = d.circle - p1.position;
+            let q = p.position + Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y);
+            (q - d.center).norm()
+        })
+        .collect();
+    let max = r.iter().copied().fold(0.0, f64::max);
+    let min = r.iter().copied().fold(f64::INFINITY, f64::min);
+    (max - min) / max
+}
+
+/// Whether `p` is within the on-curve tolerance of `curve` for `four`.
+fn on_curve(curve: &Cubic, four: &FourPositions, p: Point2<f64>, factor: f64) -> bool {
+    let tol = factor * ON_CURVE_TOLERANCE * (four.size() + (p - centroid(four.poses())).norm());
+    curve.distance_estimate(p) <= tol
+}
+
+// ---------------------------------------------------------------------------
+// The worked example.
+// ---------------------------------------------------------------------------
+
+/// The notes' worked example (positions-4-5.md, section 6).
+fn example_poses() -> [Pose; 5] {
+    let d = |x: f64, y: f64, a: f64| Pose::new(x, y, a.to_radians());
+    [
+        d(1.049199280691, 2.279426358634, 45.220037141544),
+        d(0.734502065472, 3.198658887874, 26.633426990744),
+        d(-0.378159188147, 3.063048993013, 21.786789298262),
+        d(-1.268710439724, 2.051150142014, 27.048624103934),
+        d(-1.411118156972, 0.597429126400, 48.044287536536),
+    ]
+}
+
+#[test]
+fn the_worked_example_has_its_four_burmester_points() {
+    let five = FivePositions::new(&example_poses()).unwrap();
+    let pts = five.burmester_points();
+    let want = [
+        (0.0, 0.0, 1.4095389312, 0.5130302150, 1.5),
+        (4.0, 0.0, 3.8748900012, 2.9973901128, 3.0),
+        (
+            9.1415535429,
+            5.4771377313,
+            10.0779175389,
+            7.0028629572,
+            1.7901438484,
+        ),
+        (
+            28.5694893347,
+            -40.1577865973,
+            -3.2276569999,
+            12.3029832658,
+            61.3448521854,
+        ),
+    ];
+    assert_eq!(pts.len(), 4);
+    for (p, w) in pts.iter().zip(want) {
+        assert!((p.center - Point2::new(w.0, w.1)).norm() < 1e-8, "{p:?}");
+        assert!((p.circle - Point2::new(w.2, w.3)).norm() < 1e-8, "{p:?}");
+        assert!((p.length() - w.4).abs() < 1e-8);
+        assert!(five.residual(p) < 1e-13, "{}", five.residual(p));
+    }
+    // Six four-bars; the generating pair: A0 driving is branch-free and
+    // meets the poses in order counter-clockwise, B0 driving is not.
+    let bars = five.four_bars();
+    assert_eq!(bars.len(), 6);
+    let generating = bars.iter().find(|b| b.indices == [0, 1]).unwrap();
+    let [a_drives, b_drives] = &generating.drives;
+    assert!(a_drives.is_branch_free());
+    assert_eq!(a_drives.in_order(), Some(Turn::Counterclockwise));
+    assert!(a_drives.is_defect_free());
+    assert!(!b_drives.is_branch_free());
+    assert!((a_drives.fourbar.crank() - 1.5).abs() < 1e-8);
+    assert!((a_drives.fourbar.rocker() - 3.0).abs() < 1e-8);
+    assert!((a_drives.fourbar.coupler() - 3.5).abs() < 1e-8);
+    assert!((a_drives.fourbar.ground() - 4.0).abs() < 1e-8);
+    // The crank angles are the example's (20, 70, 120, 170, 230 degrees).
+    for (t, want) in a_drives
+        .input_angles
+        .iter()
+        .zip([20.0f64, 70.0, 120.0, 170.0, 230.0])
+    {
+        assert!(common::wrap(t - want.to_radians()).abs() < 1e-8);
+    }
+    // Both curves of the five poses pass through every Burmester center.
+    for c in five.center_point_curves() {
+        for p in pts {
+            assert!(c.distance_estimate(p.center) < 1e-9 * (1.0 + p.center.coords.norm()));
+        }
+    }
+}
+
+#[test]
+fn the_example_curves_hold_the_generating_dyads() {
+    let poses = example_poses();
+    let four = FourPositions::new(&poses[..4]).unwrap();
+    let a = Dyad::new(
+        Point2::new(0.0, 0.0),
+        Point2::new(1.4095389312, 0.5130302150),
+    );
+    let b = Dyad::new(
+        Point2::new(4.0, 0.0),
+        Point2::new(3.8748900012, 2.9973901128),
+    );
+    for d in [a, b] {
+        let z = four.circle_point(d.center).unwrap();
+        assert!((z - d.circle).norm() < 1e-8, "{z} {d:?}");
+        let g = four.center_point(d.circle).unwrap();
+        assert!((g - d.center).norm() < 1e-8, "{g} {d:?}");
+    }
+    assert!(four.center_point_curve().is_circular());
+    assert!(four.circle_point_curve().is_circular());
+    // The example linkage turns fully and meets poses 1..4 in order.
+    let drive = four.drive(&a, &b).unwrap();
+    assert!(drive.is_branch_free());
+    assert_eq!(drive.in_order(), Some(Turn::Counterclockwise));
+    assert_eq!(drive.order.sequence(), &[1, 2, 3, 4]);
+}
+
+// ---------------------------------------------------------------------------
+// Known linkages: their dyads are on the curves and among the Burmester
+// points; three-pose subsets agree.
+// ---------------------------------------------------------------------------
+
+proptest! {
+    #![proptest_config(cases(96))]
+
+    #[test]
+    fn a_linkage_s_dyads_lie_on_both_curves(p in link_params()) {
+        let m = made(&p, 4, 0.05);
+        prop_assume!(m.is_some());
+        let m = m.unwrap();
+        let four = FourPositions::new(&m.poses).unwrap();
+        let s = four.size();
+        for d in [m.a, m.b] {
+            prop_assert!(on_curve(four.center_point_curve(), &four, d.center, 1.0));
+            prop_assert!(on_curve(four.circle_point_curve(), &four, d.circle, 1.0));
+            let z = four.circle_point(d.center).unwrap();
+            prop_assert!((z - d.circle).norm() <= 1e-7 * (s + d.circle.coords.norm()), "{} {:?}", z, d);
+            let g = four.center_point(d.circle).unwrap();
+            prop_assert!((g - d.center).norm() <= 1e-7 * (s + d.center.coords.norm()), "{} {:?}", g, d);
+            // Every three-pose subset with pose 1 gives the same circle point.
+            for (j, k) in [(1, 2), (1, 3), (2, 3)] {
+                let t = Task::new(&[m.poses[0], m.poses[j], m.poses[k]]).unwrap();
+                let x = t.circle_point(d.center).unwrap();
+                prop_assert!((x - d.circle).norm() <= 1e-7 * (s + d.circle.coords.norm()));
+            }
+            // And the subset without pose 1, in the frame of pose 2.
+            let t = Task::new(&[m.poses[1], m.poses[2], m.poses[3]]).unwrap();
+            let x2 = t.circle_point(d.center).unwrap();
+            let want = four.displace(d.circle, 1, 2).unwrap();
+            prop_assert!((x2 - want).norm() <= 1e-7 * (s + want.coords.norm()));
+        }
+        // The branch and order of the generating linkage as built.
+        let drive = four.drive(&m.a, &m.b).unwrap();
+        prop_assert!(drive.is_branch_free());
+        prop_assert!(drive.in_order().is_some(), "{:?}", drive.order);
+        let _ = m.fourbar;
+    }
+
+    #[test]
+    fn a_linkage_s_dyads_are_burmester_points(p in link_params()) {
+        let m = made(&p, 5, 0.05);
+        prop_assume!(m.is_some());
+        let m = m.unwrap();
+        let five = FivePositions::new(&m.poses).unwrap();
+        let s = five.size();
+        let pts = five.burmester_points();
+        prop_assert!(pts.len() == 2 || pts.len() == 4, "{} points", pts.len());
+        for d in [m.a, m.b] {
+            let hit = pts.iter().any(|q| {
+                (q.center - d.center).norm() <= 1e-6 * (s + d.center.coords.norm())
+                    && (q.circle - d.circle).norm() <= 1e-6 * (s + d.circle.coords.norm())
+            });
+            prop_assert!(hit, "{:?} not in {:?}", d, pts);
+        }
+        for q in pts {
+            prop_assert!(five.residual(q) < 1e-11, "{}", five.residual(q));
+            prop_assert!(spread(&m.poses, q) < 1e-11);
+        }
+        prop_assert_eq!(five.four_bars().len(), pts.len() * (pts.len() - 1) / 2);
+    }
+
+    #[test]
+    fn burmester_points_of_random_tasks_are_concyclic_and_complete(poses in random_poses(5)) {
+        prop_assume!(rotations_at_least(&poses, 0.05));
+        let five = FivePositions::new(&poses).unwrap();
+        let pts = five.burmester_points();
+        prop_assert!(pts.len() <= 4 && pts.len() % 2 == 0, "{}", pts.len());
+        for q in pts {
+            prop_assert!(five.residual(q) < 1e-10, "{}", five.residual(q));
+        }
+        // Completeness, independently: wherever the curve of poses 1235
+        // changes sign along the traced curve of poses 1234 (away from the
+        // poles P12, P13, P23 that both pass through), a Burmester center
+        // lies on that chord.
+        let [f, h] = five.center_point_curves();
+        let c = centroid(&poses);
+        let r = 20.0 * five.size();
+        let view = Viewport::new(c.x - r, c.x + r, c.y - r, c.y + r).unwrap();
+        let four = FourPositions::new(&poses[..4]).unwrap();
+        let poles: Vec<Point2<f64>> = four.poles().iter().filter(|p| matches!(p.poses, [1, 2] | [1, 3] | [2, 3])).filter_map(|p| p.point).collect();
+        for l in f.trace(&view, Some(1e-4 * r)).polylines() {
+            for w in l.windows(2) {
+                let (a, b) = (h.evaluate(w[0]), h.evaluate(w[1]));
+                if a == 0.0 || b == 0.0 || (a < 0.0) == (b < 0.0) {
+                    continue;
+                }
+                let len = (w[1] - w[0]).norm();
+                if poles.iter().any(|p| seg_dist(*p, w[0], w[1]) <= 2.0 * len + 1e-9 * r) {
+                    continue;
+                }
+                let found = pts.iter().any(|q| seg_dist(q.center, w[0], w[1]) <= 2.0 * len + 1e-9 * r);
+                prop_assert!(found, "a crossing near {} is not among {:?}", w[0], pts);
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Traced points, poles and the points Q_jk.
+// ---------------------------------------------------------------------------
+
+proptest! {
+    #![proptest_config(cases(48))]
+
+    #[test]
+    fn every_traced_point_is_concyclic(poses in random_poses(4), h in 1.0f64..6.0) {
+        prop_assume!(rotations_at_least(&poses, 0.05));
+        let four = FourPositions::new(&poses).unwrap();
+        let view = view_around(&four, h);
+        let (mut checked, mut skipped) = (0, 0);
+        for l in four.center_point_curve().polylines(&view) {
+            for g in l {
+                match four.circle_point(g) {
+                    Ok(z) => {
+                        let d = Dyad::new(g, z);
+                        prop_assert!(spread(&poses, &d) < 1e-8, "{} at {}", spread(&poses, &d), g);
+                        // The three-pose maps of the subsets agree.
+                        let t = Task::new(&[poses[0], poses[1], poses[2]]);
+                        if let Ok(x) = t.and_then(|t| t.circle_point(g)) {
+                            prop_assert!((x - z).norm() <= 1e-6 * (four.size() + z.coords.norm()));
+                        }
+                        checked += 1;
+                    }
+                    Err(Error::Degenerate(_)) => skipped += 1,
+                    Err(e) => prop_assert!(false, "{e}"),
+                }
+            }
+        }
+        for l in four.circle_point_curve().polylines(&view) {
+            for z in l {
+                if let Ok(g) = four.center_point(z) {
+                    let d = Dyad::new(g, z);
+                    prop_assert!(spread(&poses, &d) < 1e-8, "{}", spread(&poses, &d));
+                }
+            }
+        }
+        prop_assert!(skipped <= checked / 100 + 1, "{skipped} of {checked}");
+    }
+
+    #[test]
+    fn poles_and_coincidence_points_lie_on_the_curve(poses in random_poses(4)) {
+        prop_assume!(rotations_at_least(&poses, 0.05));
+        let four = FourPositions::new(&poses).unwrap();
+        let curve = four.center_point_curve();
+        for pole in four.poles() {
+            let p = pole.point.unwrap();
+            prop_assert!(on_curve(curve, &four, p, 1.0), "{:?}", pole);
+            // A pole is a fixed point of its displacement.
+            let [j, k] = pole.poses;
+            prop_assert!((four.displace(p, j, k).unwrap() - p).norm() <= 1e-9 * (1.0 + p.coords.norm()));
+        }
+        for q in four.coincidence_points() {
+            let Some(c) = q.center else { continue };
+            prop_assume!(c.coords.norm() < 1e4 * four.size());
+            prop_assert!(on_curve(curve, &four, c, 10.0), "{:?}", q);
+            let [j, k] = q.poses;
+            let z = four.circle_point(c).unwrap();
+            let want = q.circle.unwrap();
+            prop_assert!((z - want).norm() <= 1e-6 * (four.size() + want.coords.norm()), "{} {}", z, want);
+            let a = four.crank_angles(&Dyad::new(c, z));
+            prop_assert!(common::wrap(a[j - 1] - a[k - 1]).abs() < 1e-6, "{:?}", a);
+        }
+    }
+
+    #[test]
+    fn the_crank_order_changes_only_at_the_coincidence_points(poses in random_poses(4)) {
+        prop_assume!(rotations_at_least(&poses, 0.1));
+        let four = FourPositions::new(&poses).unwrap();
+        let Ok(runs) = four.dyad_runs(3000) else { return Ok(()); };
+        let qs: Vec<Point2<f64>> = four.coincidence_points().iter().filter_map(|q| q.center).collect();
+        let s = four.size();
+        let mut changes = 0;
+        for run in &runs {
+            for w in run.windows(2) {
+                let (a, b) = (&w[0], &w[1]);
+                // Every sample is a dyad of the four poses.
+                prop_assert!(spread(&poses, &a.dyad()) < 1e-8, "{}", spread(&poses, &a.dyad()));
+                if a.center.coords.norm() < 1e3 * s {
+                    prop_assert!(on_curve(four.center_point_curve(), &four, a.center, 1.0));
+                }
+                if a.order == b.order {
+                    continue;
+                }
+                let chord = (b.center - a.center).norm();
+                if chord > 0.5 * s || a.center.coords.norm().max(b.center.coords.norm()) > 1e3 * s {
+                    continue; // through (or near) infinity
+                }
+                changes += 1;
+                let near = qs.iter().any(|q| seg_dist(*q, a.center, b.center) <= 2.0 * chord + 1e-9 * s);
+                prop_assert!(near, "order {} -> {} between {} and {}, Q = {:?}", a.order, b.order, a.center, b.center, qs);
+            }
+        }
+        let _ = changes;
+        // The pieces of constant order in view are cut exactly at the Q_jk.
+        let view = view_around(&four, 3.0);
+        let arcs = four.order_arcs(&view);
+        for w in arcs.windows(2) {
+            let (a, b) = (&w[0], &w[1]);
+            let end = *a.points.last().unwrap();
+            if end != b.points[0] {
+                continue;
+            }
+            prop_assert!(a.order != b.order);
+            let at_q = qs.iter().any(|q| (q - end).norm() <= 1e-9 * s);
+            prop_assert!(at_q, "a cut at {} is no Q_jk", end);
+        }
+        for a in &arcs {
+            for p in &a.points[1..a.points.len() - 1] {
+                let d = four.dyad_from_center(*p).unwrap();
+                let ang = four.crank_angles(&d);
+                let tie = (0..4).any(|j| (j + 1..4).any(|k| common::wrap(ang[j] - ang[k]).abs() < 1e-9));
+                if !tie {
+                    prop_assert_eq!(four.crank_order(&d), a.order);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_crank_rotation_parametrisation_matches_the_curve_dyads() {
+    let four = FourPositions::new(&example_poses()[..4]).unwrap();
+    let runs = four.dyad_runs(2000).unwrap();
+    let mut n = 0;
+    for run in &runs {
+        for d in run {
+            let again = four.curve_dyad(d.center).unwrap();
+            assert!((again.circle - d.circle).norm() < 1e-7 * (1.0 + d.circle.coords.norm()));
+            assert!(common::wrap(again.beta2 - d.beta2).abs() < 1e-7);
+            if let (Some(a), Some(b)) = (again.branch, d.branch) {
+                assert_eq!(a, b, "{d:?}");
+            }
+            // The order, away from ties (the points Q_jk, where two crank
+            // positions coincide).
+            let a = four.crank_angles(&d.dyad());
+            let tie = (0..4).any(|j| (j + 1..4).any(|k| common::wrap(a[j] - a[k]).abs() < 1e-6));
+            if !tie {
+                assert_eq!(again.order, d.order);
+            }
+            n += 1;
+        }
+    }
+    assert!(n > 1000);
+    // The example's dyads at their crank rotations.
+    let a = Dyad::new(
+        Point2::new(0.0, 0.0),
+        Point2::new(1.4095389312, 0.5130302150),
+    );
+    let ca = four.curve_dyad(a.center).unwrap();
+    assert!(common::wrap(ca.beta2 - 50f64.to_radians()).abs() < 1e-8);
+    let back = four.dyad_at(ca.beta2, ca.branch.unwrap()).unwrap();
+    assert!((back.center - a.center).norm() < 1e-7, "{back:?}");
+}
+
+// ---------------------------------------------------------------------------
+// Branch: Filemon with four lines, exact arc ends, against driving the
+// linkage densely.
+// ---------------------------------------------------------------------------
+
+/// Whether driving `d`'s linkage from pose 1 in pose 1's assembly mode,
+/// densely (steps of 0.02 rad) in either direction without a loop that
+/// fails to close, reaches every pose (its output joint where the poses
+/// put it). `None` at a toggle at pose 1.
+fn reaches_every_pose(d: &Drive, four_poses: &[Pose]) -> Option<bool> {
+    let mode = d.modes[0]?;
+    let fb = &d.fourbar;
+    let size = fb.lengths().iter().sum::<f64>();
+    let t1 = d.input_angles[0];
+    let p1 = four_poses[0];
+    let target = |k: usize| {
+        let p = four_poses[k];
+        let (s, c) = (p.angle - p1.angle).sin_cos();
+        let v = d.driven.circle - p1.position;
+        p.position + Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y)
+    };
+    for k in 1..four_poses.len() {
+        let mut reached = false;
+        for dir in [1.0, -1.0] {
+            let delta = (dir * (d.input_angles[k] - t1)).rem_euclid(TAU);
+            let steps = (delta / 0.02).ceil() as usize + 1;
+            let closes = (1..steps).all(|i| {
+                fb.solve(t1 + dir * delta * i as f64 / steps as f64, mode)
+                    .is_ok()
+            });
+            if !closes {
+                continue;
+            }
+            if let Ok(j) = fb.joints_at(d.input_angles[k], mode) {
+                if (j.rocker_joint - target(k)).norm() <= 1e-6 * size {
+                    reached = true;
+                    break;
+                }
+            }
+        }
+        if !reached {
+            return Some(false);
+        }
+    }
+    Some(true)
+}
+
+/// The checks of the branch construction for one driven dyad.
+fn check_branch(four: &FourPositions, driven: &Dyad, samples: usize) -> Result<(), TestCaseError> {
+    let arcs: FilemonArcs = match four.filemon(driven) {
+        Ok(a) => a,
+        Err(_) => return Ok(()),
+    };
+    let s = four.size();
+    let c1 = driven.circle;
+    // The exact ends: on the circle-point curve and on their Filemon lines.
+    for e in arcs.arc_ends() {
+        prop_assert!(
+            on_curve(four.circle_point_curve(), four, e.circle, 1.0),
+            "{:?}",
+            e
+        );
+        let line = arcs.all_lines()[e.pose - 1];
+        let dn = line.direction / line.direction.norm();
+        let off = (dn.x * (e.circle - c1).y - dn.y * (e.circle - c1).x).abs();
+        prop_assert!(off <= 1e-9 * (s + (e.circle - c1).norm()), "{off}");
+        if let Some(g) = e.center {
+            prop_assert!(
+                on_curve(four.center_point_curve(), four, g, 10.0),
+                "{:?}",
+                e
+            );
+        }
+    }
+    if arcs.all_defective() {
+        prop_assert!(arcs.arc_ends().is_empty());
+    }
+    // The verdict changes along the circle-point curve only at an arc end or C1.
+    let view = view_around(four, 3.0);
+    let mut cuts: Vec<Point2<f64>> = arcs.arc_ends().iter().map(|e| e.circle).collect();
+    cuts.push(c1);
+    for l in four.circle_point_curve().polylines(&view) {
+        for w in l.windows(2) {
+            let (u, v) = (
+                arcs.classify_circle_point(w[0]),
+                arcs.classify_circle_point(w[1]),
+            );
+            if u == Branch::Boundary || v == Branch::Boundary || u == v {
+                continue;
+            }
+            let len = (w[1] - w[0]).norm();
+            let near = cuts
+                .iter()
+                .any(|c| seg_dist(*c, w[0], w[1]) <= len + 1e-9 * s);
+            prop_assert!(
+                near,
+                "verdict {:?} -> {:?} between {} and {}",
+                u,
+                v,
+                w[0],
+                w[1]
+            );
+        }
+    }
+    for arc in arcs.free_circle_arcs(&view) {
+        for p in &arc[1..arc.len() - 1] {
+            prop_assert_eq!(arcs.classify_circle_point(*p), Branch::Free);
+        }
+    }
+    // Driving dyads along the curve: the verdict against the built linkage.
+    let Ok(runs) = four.dyad_runs(samples) else {
+        return Ok(());
+    };
+    for d in runs.iter().flatten() {
+        let a = d.dyad();
+        if (a.center - driven.center).norm() < 1e-3 * s
+            || (a.circle - driven.circle).norm() < 1e-3 * s
+            || a.center.coords.norm() > 1e3 * s
+        {
+            continue;
+        }
+        let verdict = arcs.classify_circle_point(a.circle);
+        if verdict == Branch::Boundary {
+            continue;
+        }
+        let Ok(drive) = four.drive(&a, driven) else {
+            continue;
+        };
+        if drive.modes.iter().any(|m| m.is_none()) {
+            continue;
+        }
+        // The sign test with four lines is the assembly mode test.
+        prop_assert_eq!(verdict == Branch::Free, drive.is_branch_free());
+        // Driving the linkage densely.
+        let Some(sim) = reaches_every_pose(&drive, four.poses()) else {
+            continue;
+        };
+        if verdict == Branch::Defective {
+            prop_assert!(!sim, "defective but reached every pose: {:?}", d);
+        } else if drive.fourbar.input_turns_fully() {
+            prop_assert!(sim, "free but did not reach every pose: {:?}", d);
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(cases(24))]
+
+    #[test]
+    fn the_branch_verdict_matches_driving_the_linkage(p in link_params()) {
+        let m = made(&p, 4, 0.05);
+        prop_assume!(m.is_some());
+        let m = m.unwrap();
+        let four = FourPositions::new(&m.poses).unwrap();
+        check_branch(&four, &m.b, 120)?;
+        check_branch(&four, &m.a, 120)?;
+    }
+
+    #[test]
+    fn the_branch_verdict_matches_for_random_driven_dyads(poses in random_poses(4), pick in 0usize..1000) {
+        prop_assume!(rotations_at_least(&poses, 0.1));
+        let four = FourPositions::new(&poses).unwrap();
+        let Ok(runs) = four.dyad_runs(200) else { return Ok(()); };
+        let all: Vec<_> = runs.iter().flatten().collect();
+        prop_assume!(!all.is_empty());
+        let driven = all[pick % all.len()].dyad();
+        prop_assume!(driven.length() > 1e-2 * four.size() && driven.center.coords.norm() < 100.0);
+        check_branch(&four, &driven, 80)?;
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Pure translations between two poses.
+// ---------------------------------------------------------------------------
+
+/// The input angle other than `t` where the coupler has the same angle as
+/// at `t` (the coupler angle takes each value twice over a turn), found by
+/// scanning and bisection.
+fn same_coupler_angle(fb: &FourBar, mode: AssemblyMode, t: f64) -> Option<f64> {
+    let th3 = |x: f64| fb.solve(x, mode).ok().map(|c| c.theta3);
+    let target = th3(t)?;
+    let f = |x: f64| th3(x).map(|v| common::wrap(v - target));
+    let n = 720;
+    let mut prev = (t + 0.2, f(t + 0.2)?);
+    for i in 1..n {
+        let x = t + 0.2 + (TAU - 0.4) * i as f64 / n as f64;
+        let fx = f(x)?;
+        if (fx < 0.0) != (prev.1 < 0.0) && (fx - prev.1).abs() < 1.0 {
+            let (mut a, mut b, mut fa) = (prev.0, x, prev.1);
+            for _ in 0..200 {
+                let m = 0.5 * (a + b);
+                let fm = f(m)?;
+                if (fm < 0.0) == (fa < 0.0) {
+                    a = m;
+                    fa = fm;
+                } else {
+                    b = m;
+                }
+            }
+            return Some(0.5 * (a + b));
+        }
+        prev = (x, fx);
+    }
+    None
+}
+
+proptest! {
+    #![proptest_config(cases(48))]
+
+    #[test]
+    fn a_pure_translation_between_two_poses_works(poses in random_poses(5), pair in 0usize..10) {
+        let pairs = [(0, 1), (0, 2), (0, 3), (0, 4), (1, 2), (1, 3), (1, 4), (2, 3), (2, 4), (3, 4)];
+        let (i, j) = pairs[pair];
+        let mut poses = poses;
+        poses[j].angle = poses[i].angle;
+        // Four poses (the pair included when it lies in the first four).
+        let four_poses = &poses[..4];
+        let ok = (0..4).all(|a| (a + 1..4).all(|b| (a, b) == (i, j)
+            || common::wrap(four_poses[b].angle - four_poses[a].angle).abs() >= 0.05));
+        prop_assume!(ok);
+        let four = FourPositions::new(four_poses).unwrap();
+        if j < 4 {
+            let pole = four.poles().into_iter().find(|p| p.poses == [i + 1, j + 1]).unwrap();
+            prop_assert!(pole.point.is_none());
+        }
+        let view = view_around(&four, 3.0);
+        let mut n = 0;
+        for g in four.center_point_curve().polylines(&view).into_iter().flatten() {
+            if let Ok(z) = four.circle_point(g) {
+                prop_assert!(spread(four_poses, &Dyad::new(g, z)) < 1e-8);
+                n += 1;
+            }
+        }
+        prop_assert!(n > 0);
+        let okf = (0..5).all(|a| (a + 1..5).all(|b| (a, b) == (i, j)
+            || common::wrap(poses[b].angle - poses[a].angle).abs() >= 0.05));
+        prop_assume!(okf);
+        let five = FivePositions::new(&poses).unwrap();
+        for q in five.burmester_points() {
+            prop_assert!(five.residual(q) < 1e-10);
+        }
+    }
+
+    #[test]
+    fn a_linkage_with_a_pure_translation_keeps_its_dyads(p in link_params(), which in 0usize..4) {
+        let [g, c, l3, l4] = p.lengths;
+        let Ok(fb) = FourBar::placed(g, c, l3, l4, Point2::new(p.origin.0, p.origin.1), p.ground_angle) else { return Ok(()); };
+        prop_assume!(fb.input_turns_fully());
+        let mode = if p.mode { AssemblyMode::Open } else { AssemblyMode::Crossed };
+        let t0 = p.start * TAU;
+        let Some(t1) = same_coupler_angle(&fb, mode, t0) else { return Ok(()); };
+        // Three more angles away from the pair.
+        let mut angles = vec![t0, t1];
+        for k in 1..=3 {
+            angles.push(t0 + (t1 - t0).rem_euclid(TAU) * 0.25 * k as f64 + 0.3 * p.steps[k]);
+        }
+        angles.swap(1, 1 + which);
+        let local = Vector2::new(p.local.0, p.local.1);
+        let mut poses = Vec::new();
+        for &t in &angles {
+            let Ok(conf) = fb.solve(t, mode) else { return Ok(()); };
+            poses.push(Pose { position: fb.coupler_point(&conf, local), angle: conf.theta3 + p.offset });
+        }
+        let ok = (0..5).all(|a| (a + 1..5).all(|b| {
+            let r = common::wrap(poses[b].angle - poses[a].angle).abs();
+            !(1e-12..0.05).contains(&r)
+        }));
+        prop_assume!(ok);
+        let conf = fb.solve(angles[0], mode).unwrap();
+        let j = fb.joints(&conf);
+        let dyads = [Dyad::new(fb.input_pivot(), j.crank_joint), Dyad::new(fb.output_pivot(), j.rocker_joint)];
+        let four = FourPositions::new(&poses[..4]).unwrap();
+        for d in dyads {
+            let z = four.circle_point(d.center).unwrap();
+            prop_assert!((z - d.circle).norm() <= 1e-7 * (four.size() + z.coords.norm()));
+        }
+        let five = FivePositions::new(&poses).unwrap();
+        for d in dyads {
+            let hit = five.burmester_points().iter().any(|q| (q.center - d.center).norm() <= 1e-6 * (five.size() + d.center.coords.norm()));
+            prop_assert!(hit, "{:?} not in {:?}", d, five.burmester_points());
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Invariance.
+// ---------------------------------------------------------------------------
+
+fn similarity() -> impl Strategy<Value = Similarity> {
+    (
+        prop_oneof![Just(1e-3), Just(1.0), Just(1e3), 0.1f64..10.0],
+        -PI..PI,
+        (-50.0f64..50.0, -50.0f64..50.0),
+        any::<bool>(),
+    )
+        .prop_map(|(f, a, (x, y), m)| {
+            let s = Similarity::new(f, a, Vector2::new(x * f, y * f)).unwrap();
+            if m { s.mirrored() } else { s }
+        })
+}
+
+proptest! {
+    #![proptest_config(cases(48))]
+
+    #[test]
+    fn curves_and_points_move_with_the_task(p in link_params(), t in similarity()) {
+        let m = made(&p, 5, 0.05);
+        prop_assume!(m.is_some());
+        let m = m.unwrap();
+        let moved: Vec<Pose> = m.poses.iter().map(|q| t.pose(q)).collect();
+        // Five poses: the Burmester points are the images.
+        let (a, b) = (FivePositions::new(&m.poses).unwrap(), FivePositions::new(&moved).unwrap());
+        prop_assert_eq!(a.burmester_points().len(), b.burmester_points().len());
+        for q in a.burmester_points() {
+            let want = t.point(q.center);
+            let hit = b.burmester_points().iter().any(|r| {
+                (r.center - want).norm() <= 1e-7 * (b.size() + want.coords.norm())
+                    && (r.circle - t.point(q.circle)).norm() <= 1e-7 * (b.size() + r.circle.coords.norm())
+            });
+            prop_assert!(hit, "{:?} -> {}", q, want);
+        }
+        // Four poses: curve points, circle points and Q_jk are the images.
+        let (fa, fb) = (FourPositions::new(&m.poses[..4]).unwrap(), FourPositions::new(&moved[..4]).unwrap());
+        let view = view_around(&fa, 2.0);
+        for g in fa.center_point_curve().polylines(&view).into_iter().flatten().step_by(7) {
+            let g2 = t.point(g);
+            prop_assert!(on_curve(fb.center_point_curve(), &fb, g2, 10.0));
+            if let (Ok(z), Ok(z2)) = (fa.circle_point(g), fb.circle_point(g2)) {
+                prop_assert!((t.point(z) - z2).norm() <= 1e-6 * (fb.size() + z2.coords.norm()));
+            }
+        }
+        for (q, q2) in fa.coincidence_points().iter().zip(fb.coincidence_points()) {
+            if let (Some(c), Some(c2)) = (q.center, q2.center) {
+                prop_assert!((t.point(c) - c2).norm() <= 1e-6 * (fb.size() + c2.coords.norm()));
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Tracing: every component in view, against a dense sign scan; scale-free.
+// ---------------------------------------------------------------------------
+
+/// Every sign change of `f` between neighbours of an `n` by `n` grid over
+/// `view` has a traced chord within the grid step plus twice the chord
+/// tolerance; every traced vertex is on the curve.
+fn check_against_scan(c: &Cubic, view: &Viewport, n: usize) -> Result<usize, TestCaseError> {
+    let trace = c.trace(view, None);
+    let polys = trace.polylines();
+    let (w, h) = view.size();
+    let (dx, dy) = (w / n as f64, h / n as f64);
+    let at = |i: usize, j: usize| Point2::new(view.xmin + dx * i as f64, view.ymin + dy * j as f64);
+    let vals: Vec<Vec<f64>> = (0..=n)
+        .map(|j| (0..=n).map(|i| c.evaluate(at(i, j))).collect())
+        .collect();
+    let mut changes = 0;
+    for j in 0..=n {
+        for i in 0..=n {
+            for (i2, j2) in [(i + 1, j), (i, j + 1)] {
+                if i2 > n || j2 > n {
+                    continue;
+                }
+                let (a, b) = (vals[j][i], vals[j2][i2]);
+                if a == 0.0 || b == 0.0 || (a < 0.0) == (b < 0.0) {
+                    continue;
+                }
+                changes += 1;
+                let mid = Point2::from((at(i, j).coords + at(i2, j2).coords) * 0.5);
+                let d = poly_dist(&polys, mid);
+                prop_assert!(
+                    d <= dx.max(dy) + 2.0 * trace.tolerance,
+                    "sign change at {} has no trace within {}",
+                    mid,
+                    d
+                );
+            }
+        }
+    }
+    let diag = view.diagonal();
+    let (k, o, s) = c.local_coefficients();
+    let kmax = k.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    for p in polys.iter().flatten() {
+        // On the curve: by the first-order distance, or (at a singular
+        // point, where that means nothing) by the value at rounding level.
+        let r = (p - o).norm() / s;
+        let on = c.distance_estimate(*p) <= 1e-9 * diag
+            || c.evaluate(*p).abs() <= 1e-13 * kmax * (1.0 + r).powi(3);
+        prop_assert!(on, "{} off the curve by {}", p, c.distance_estimate(*p));
+        prop_assert!(
+            view.contains(*p)
+                || (p.x - p.x.clamp(view.xmin, view.xmax))
+                    .abs()
+                    .max((p.y - p.y.clamp(view.ymin, view.ymax)).abs())
+                    <= 1e-9 * diag
+        );
+    }
+    // A component with a closed polyline is bounded and closes exactly.
+    for k in &trace.components {
+        if k.closed {
+            prop_assert!(k.bounded);
+            let l = &k.polylines[0];
+            prop_assert_eq!(l[0], l[l.len() - 1]);
+        }
+    }
+    Ok(changes)
+}
+
+proptest! {
+    #![proptest_config(cases(64))]
+
+    #[test]
+    fn the_trace_finds_every_component_of_a_center_point_curve(poses in random_poses(4), h in 0.5f64..20.0, off in (-3.0f64..3.0, -3.0f64..3.0)) {
+        prop_assume!(rotations_at_least(&poses, 0.02));
+        let four = FourPositions::new(&poses).unwrap();
+        let c = centroid(four.poses()) + Vector2::new(off.0, off.1) * four.size();
+        let r = h * four.size();
+        let view = Viewport::new(c.x - r, c.x + r, c.y - r, c.y + r).unwrap();
+        check_against_scan(four.center_point_curve(), &view, 160)?;
+        check_against_scan(four.circle_point_curve(), &view, 160)?;
+    }
+
+    #[test]
+    fn the_trace_finds_every_component_of_a_random_cubic(k in prop::array::uniform10(-1.0f64..1.0), h in 0.2f64..10.0) {
+        prop_assume!(k[6..].iter().any(|v| v.abs() > 0.05));
+        let c = Cubic::new(k).unwrap();
+        let view = Viewport::new(-h, h, -0.7 * h, 1.3 * h).unwrap();
+        check_against_scan(&c, &view, 160)?;
+    }
+
+    #[test]
+    fn the_trace_finds_every_component_of_a_line_times_a_conic(
+        l in prop::array::uniform3(-1.0f64..1.0),
+        q in prop::array::uniform6(-1.0f64..1.0),
+        h in 0.5f64..5.0,
+    ) {
+        prop_assume!(l[1].abs() + l[2].abs() > 0.1);
+        // (l0 + l1 x + l2 y)(q0 + q1 x + q2 y + q3 x^2 + q4 xy + q5 y^2): two
+        // singular points where the line meets the conic.
+        let k = [
+            l[0] * q[0],
+            l[0] * q[1] + l[1] * q[0],
+            l[0] * q[2] + l[2] * q[0],
+            l[0] * q[3] + l[1] * q[1],
+            l[0] * q[4] + l[1] * q[2] + l[2] * q[1],
+            l[0] * q[5] + l[2] * q[2],
+            l[1] * q[3],
+            l[1] * q[4] + l[2] * q[3],
+            l[1] * q[5] + l[2] * q[4],
+            l[2] * q[5],
+        ];
+        let c = Cubic::new(k).unwrap();
+        let view = Viewport::new(-h, h, -h, 1.1 * h).unwrap();
+        check_against_scan(&c, &view, 160)?;
+    }
+
+    #[test]
+    fn the_trace_is_scale_free(poses in random_poses(4), h in 0.5f64..6.0) {
+        prop_assume!(rotations_at_least(&poses, 0.05));
+        let four = FourPositions::new(&poses).unwrap();
+        let base = view_around(&four, h);
+        let traced: Vec<_> = [1e-3, 1e3].iter().map(|&f| {
+            let s = Similarity::new(f, 0.0, Vector2::zeros()).unwrap();
+            let scaled: Vec<Pose> = poses.iter().map(|p| s.pose(p)).collect();
+            let four = FourPositions::new(&scaled).unwrap();
+            let v = Viewport::new(base.xmin * f, base.xmax * f, base.ymin * f, base.ymax * f).unwrap();
+            let t = four.center_point_curve().trace(&v, None);
+            // Back to the unit scale.
+            let polys: Vec<Vec<Point2<f64>>> = t.polylines().into_iter()
+                .map(|l| l.into_iter().map(|p| Point2::from(p.coords / f)).collect()).collect();
+            (t.in_view(), polys, t.tolerance / f)
+        }).collect();
+        prop_assert_eq!(traced[0].0, traced[1].0);
+        let tol = traced[0].2;
+        for (a, b) in [(0, 1), (1, 0)] {
+            for p in traced[a].1.iter().flatten() {
+                let d = poly_dist(&traced[b].1, *p);
+                prop_assert!(d <= 2.0 * tol, "{} is {} from the other trace", p, d);
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Errors.
+// ---------------------------------------------------------------------------
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    let poses = example_poses();
+    assert!(matches!(
+        FourPositions::new(&poses[..3]),
+        Err(Error::InvalidInput(InvalidInput::LengthMismatch { .. }))
+    ));
+    assert!(matches!(
+        FivePositions::new(&poses[..4]),
+        Err(Error::InvalidInput(InvalidInput::LengthMismatch { .. }))
+    ));
+    let mut bad = poses;
+    bad[2].position.x = f64::NAN;
+    assert!(matches!(
+        FourPositions::new(&bad[..4]),
+        Err(Error::InvalidInput(InvalidInput::NotFinite { .. }))
+    ));
+    let mut same = poses;
+    same[3] = same[1];
+    assert!(matches!(
+        FourPositions::new(&same[..4]),
+        Err(Error::Degenerate(DegenerateError::CoincidentPoses {
+            i: 2,
+            j: 4
+        }))
+    ));
+    // Rotations about one point.
+    let c = Point2::new(1.0, -2.0);
+    let rot: Vec<Pose> = [0.0f64, 0.5, 1.3, 2.0, -1.0]
+        .iter()
+        .map(|&a| {
+            let v = Vector2::new(3.0, 1.0);
+            let (s, co) = a.sin_cos();
+            Pose {
+                position: c + Vector2::new(co * v.x - s * v.y, s * v.x + co * v.y),
+                angle: a + 0.2,
+            }
+        })
+        .collect();
+    assert!(matches!(
+        FourPositions::new(&rot[..4]),
+        Err(Error::Degenerate(DegenerateError::CoincidentPoles { .. }))
+    ));
+    // Four of five poses rotations about one point: a continuum of dyads.
+    for at in 0..5 {
+        let mut five_rot: Vec<Pose> = rot[..4].to_vec();
+        five_rot.insert(at, Pose::new(7.0, 3.0, 0.4));
+        assert!(matches!(
+            FivePositions::new(&five_rot),
+            Err(Error::Degenerate(DegenerateError::CoincidentPoles { .. }))
+        ));
+    }
+    // All one angle.
+    let flat: Vec<Pose> = poses.iter().map(|p| Pose { angle: 0.3, ..*p }).collect();
+    assert!(FivePositions::new(&flat).is_err());
+    // Off the curve: the error carries the distance.
+    let four = FourPositions::new(&poses[..4]).unwrap();
+    let e = four.circle_point(Point2::new(2.0, 1.0)).unwrap_err();
+    assert!(matches!(
+        e,
+        Error::InvalidInput(InvalidInput::OffCurve { .. })
+    ));
+    assert!(e.to_string().contains("from its curve"), "{e}");
+    assert!(four.center_point(Point2::new(f64::INFINITY, 0.0)).is_err());
+    assert!(four.displace(Point2::origin(), 0, 2).is_err());
+    assert!(four.dyad_runs(0).is_err());
+    // A dyad that does not pass the poses.
+    let good = Dyad::new(
+        Point2::new(0.0, 0.0),
+        Point2::new(1.4095389312, 0.5130302150),
+    );
+    let wrong = Dyad::new(Point2::new(0.5, 0.0), Point2::new(1.4, 0.5));
+    assert!(four.drive(&good, &wrong).is_err());
+    assert!(four.drive(&good, &good).is_err());
+    assert!(four.filemon(&wrong).is_err());
+}
