@@ -11,7 +11,8 @@ Commands::
 Without a task file, the commands use the built-in example. Without any
 arguments, ``burmester`` prints this help. Bad input exits with status 2 and
 a one-line message saying what to change; a missing optional dependency
-(matplotlib) exits with status 1.
+(matplotlib) exits with status 1. No command replaces an existing file
+unless given ``--force``.
 """
 
 from __future__ import annotations
@@ -21,7 +22,8 @@ import json
 import math
 import os
 import sys
-from typing import IO, TYPE_CHECKING, Any, List, NoReturn, Optional, Sequence, Tuple
+from pathlib import Path
+from typing import IO, TYPE_CHECKING, Any, Callable, List, NoReturn, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -160,6 +162,32 @@ def _save(fig: Any, path: str, dpi: int) -> None:
         plt.close(fig)
 
 
+#: File types ``map`` and ``linkage`` draw still pictures in.
+PICTURE_TYPES = (".png", ".svg", ".pdf", ".jpg", ".jpeg", ".tif", ".tiff", ".eps", ".ps")
+#: File types ``linkage`` writes animations in.
+ANIMATION_TYPES = (".gif", ".mp4")
+
+
+def _output(path: str, types: Sequence[str], force: bool) -> str:
+    """Check an output file name before any work: one of ``types``, in a
+    folder that exists, not a folder itself, and not an existing file unless
+    ``force`` (one policy for every command: never overwrite silently)."""
+    listed = ", ".join(types)
+    if path == "-":
+        raise UsageError(f"-o - (standard output) is not supported here; give a file name ending in {listed}")
+    p = Path(path)
+    if p.is_dir():
+        raise UsageError(f"{path} is a folder; give a file name in it, such as {p / ('out' + types[0])}")
+    if p.suffix.lower() not in types:
+        got = f"'{p.suffix}'" if p.suffix else "no extension"
+        raise UsageError(f"-o {path} has {got}; end the file name in one of {listed}")
+    if not p.parent.is_dir():
+        raise UsageError(f"cannot write {path}: the folder {str(p.parent)!r} does not exist")
+    if p.exists() and not force:
+        raise UsageError(f"{path} exists; give another file name, or --force to replace it")
+    return path
+
+
 def _fmt_point(p: Sequence[float]) -> str:
     return f"({p[0]:.3f}, {p[1]:.3f})"
 
@@ -170,6 +198,7 @@ def _fmt_point(p: Sequence[float]) -> str:
 
 def cmd_map(args: argparse.Namespace) -> int:
     """``burmester map``: draw the center-point (or circle-point) plane."""
+    _output(args.output, PICTURE_TYPES, args.force)
     spec = _with_grid(_load(args.task), args.grid)
     plot = _plot_module()
     filemon = spec.filemon()
@@ -272,6 +301,7 @@ def cmd_pivots(args: argparse.Namespace) -> int:
 
 def cmd_linkage(args: argparse.Namespace) -> int:
     """``burmester linkage``: draw or animate the four-bar of one driving pivot."""
+    _output(args.output, PICTURE_TYPES + ANIMATION_TYPES, args.force)
     spec = _load(args.task)
     filemon = spec.filemon()
     if args.pivot is None:
@@ -302,6 +332,10 @@ def cmd_linkage(args: argparse.Namespace) -> int:
     print(f"wrote {out}: four-bar with driving pivot A0 = {_fmt_point(pivot)}, "
           f"{sfb.fourbar.grashof}, {state}")
     return 0
+
+
+#: The finest ``solve --step``: 36,000 rows over a turn.
+MIN_STEP_DEG = 0.01
 
 
 def position_table(fourbar: burmester.FourBar, step_deg: float = 30.0) -> str:
@@ -343,8 +377,11 @@ def cmd_solve(args: argparse.Namespace) -> int:
         raise UsageError(f"missing {', '.join(missing)}: give all four link lengths, or none for the example")
     else:
         lengths = (args.ground, args.crank, args.coupler, args.rocker)
-    if args.step is not None and not 0.0 < args.step <= 360.0:
-        raise UsageError(f"--step must be more than 0 and at most 360 degrees, got {args.step:g}")
+    if args.step is not None and not MIN_STEP_DEG <= args.step <= 360.0:
+        raise UsageError(
+            f"--step must be from {MIN_STEP_DEG:g} to 360 degrees (at most "
+            f"{round(360 / MIN_STEP_DEG)} rows), got {args.step:g}"
+        )
     ground, crank, coupler, rocker = lengths
     fb = burmester.FourBar(ground=ground, crank=crank, coupler=coupler, rocker=rocker)
     if args.theta2 is None:
@@ -381,11 +418,12 @@ def cmd_example(args: argparse.Namespace) -> int:
     if args.output is None or args.output == "-":
         sys.stdout.write(text)
         return 0
+    _output(args.output, (".toml",), args.force)
     try:
-        with open(args.output, "x", encoding="utf-8") as fh:
+        with open(args.output, "w" if args.force else "x", encoding="utf-8") as fh:
             fh.write(text)
     except FileExistsError:
-        raise UsageError(f"{args.output} exists; give another file name, or remove it first") from None
+        raise UsageError(f"{args.output} exists; give another file name, or --force to replace it") from None
     except OSError as e:
         raise UsageError(f"cannot write {args.output}: {e.strerror or e}") from None
     print(f"wrote {args.output}")
@@ -404,6 +442,23 @@ def _count(text: str) -> int:
     if n < 0:
         raise argparse.ArgumentTypeError(f"expected a whole number of at least 0, got {n}")
     return n
+
+
+def _ranged(lo: int, hi: int) -> Callable[[str], int]:
+    """An argparse type: a whole number from ``lo`` to ``hi``."""
+
+    def parse(text: str) -> int:
+        n = _count(text)
+        if not lo <= n <= hi:
+            raise argparse.ArgumentTypeError(f"expected a whole number from {lo} to {hi}, got {n}")
+        return n
+
+    return parse
+
+
+#: The range of ``--dpi`` (matplotlib cannot draw much past 2^16 pixels a side).
+MIN_DPI, MAX_DPI = 10, 2400
+_dpi = _ranged(MIN_DPI, MAX_DPI)
 
 
 def _positive_int(text: str) -> int:
@@ -465,7 +520,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--design", action="store_true",
                    help="overlay the solution-space map: pivots acceptable under the task's limits "
                    "shaded darker, contours of the minimum transmission angle over the travel")
-    p.add_argument("--dpi", type=_positive_int, default=100, help="resolution, dots per inch (default: 100)")
+    p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, dots per inch, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_map)
 
     p = sub.add_parser("pivots", help="rank the acceptable driving pivots",
@@ -491,9 +547,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
                    help="the driving crank's fixed pivot A0 (default: the best, as by 'burmester pivots')")
     p.add_argument("-o", "--output", default="linkage.png", help="file to write; default: linkage.png")
-    p.add_argument("--frames", type=_positive_int, default=60, help="animation frames from pose 1 to 3")
-    p.add_argument("--fps", type=_positive_int, default=20, help="animation frames per second")
-    p.add_argument("--dpi", type=_positive_int, default=100, help="resolution of a still picture")
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=60,
+                   help="animation frames from the first pose to the last, 2 to 10000 (default: 60)")
+    p.add_argument("--fps", type=_ranged(1, 240), default=20,
+                   help="animation frames per second, 1 to 240 (default: 20)")
+    p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_linkage)
 
     p = sub.add_parser("solve", help="position analysis of a four-bar (angles in degrees)",
@@ -514,7 +573,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("example", help="print the built-in example as a task file",
                        description="Print the built-in example task as a TOML task file, to edit.")
-    p.add_argument("-o", "--output", default=None, help="write to this file instead of stdout (never overwrites)")
+    p.add_argument("-o", "--output", default=None, help="write to this .toml file instead of stdout")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_example)
     return parser
 
@@ -542,6 +602,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         return int(args.func(args))
     except (UsageError, TaskFileError, burmester.BurmesterError) as e:
         print(f"{prog}: error: {e}", file=sys.stderr)
+        return 2
+    except MemoryError:
+        print(f"{prog}: error: not enough memory for this; use a coarser --grid", file=sys.stderr)
         return 2
     except ImportError as e:
         print(f"{prog}: error: {e}", file=sys.stderr)

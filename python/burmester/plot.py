@@ -83,7 +83,9 @@ def _as_grid(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[in
     else:
         xmin, xmax, ymin, ymax = (float(t) for t in view)
         if not (xmin < xmax and ymin < ymax):
-            raise ValueError(f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}")
+            raise burmester.InvalidInputError(
+                f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
+            )
         g = grid_for(xmin, xmax, ymin, ymax, DEFAULT_GRID)
     if grid is not None:
         g = Grid(g.xmin, g.xmax, g.ymin, g.ymax, int(grid[0]), int(grid[1]))
@@ -146,12 +148,31 @@ def _finish(ax: Axes, extent: Extent, legend: bool, handles: List[Any]) -> None:
         _legend(ax, handles)
 
 
+#: Largest ``frames`` of :func:`animate` and :func:`drive_angles`.
+MAX_FRAMES = 10_000
+#: Largest ``fps`` of :func:`animate`.
+MAX_FPS = 240
+#: Largest ``dpi`` of :func:`animate`.
+MAX_DPI = 2400
+
+
+def _count_in(name: str, value: Any, lo: int, hi: int) -> int:
+    """``value`` as an int from ``lo`` to ``hi``, or InvalidInputError."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an int, got {type(value).__name__}")
+    if not lo <= int(value) <= hi:
+        raise burmester.InvalidInputError(f"{name} must be from {lo} to {hi}, got {int(value)}")
+    return int(value)
+
+
 def _check_shape(name: str, array: Optional[npt.ArrayLike], shape: Tuple[int, int]) -> Optional[np.ndarray]:
     if array is None:
         return None
     a = np.asarray(array)
     if a.shape != shape:
-        raise ValueError(f"{name} must have the grid's shape (ny, nx) = {shape}, got {a.shape}")
+        raise burmester.InvalidInputError(
+            f"{name} must have the grid's shape (ny, nx) = {shape}, got {a.shape}"
+        )
     return a
 
 
@@ -196,8 +217,9 @@ def center_plane(
         method: how :meth:`Filemon.branch_map` classifies (``"conic"``,
             ``"direct"``, ``"simulate"``).
         free: a branch map already computed on this view, shape ``(ny, nx)``
-            (for example a solution map's ``branch_free``; then ``grid`` is
-            taken from it and ``method`` is not used).
+            (for example a solution map's ``branch_free``; then ``method`` is
+            not used, and when neither a Grid nor ``grid`` is given, the
+            samples are taken from its shape).
         acceptable: optional bool array ``(ny, nx)``: pivots that meet the
             limits (from the solution-space map); shaded darker where also
             branch-free.
@@ -213,9 +235,11 @@ def center_plane(
     Returns:
         The Axes.
     """
-    if free is not None:
-        ny, nx = np.asarray(free).shape
-        grid = (nx, ny)
+    if free is not None and grid is None and not isinstance(view, Grid):
+        free_shape = np.shape(free)
+        if len(free_shape) != 2:
+            raise burmester.InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {free_shape}")
+        grid = (free_shape[1], free_shape[0])
     v = _as_grid(filemon, view, grid)
     extent = v.extent
     shape = v.shape
@@ -572,7 +596,9 @@ def drive_angles(sfb: SynthesizedFourBar, frames: int = 60) -> Tuple[npt.NDArray
     Raises:
         burmester.AssemblyError: no input direction carries the coupler
             through the poses in order (the linkage has no travel).
+        burmester.InvalidInputError: ``frames`` is not from 2 to :data:`MAX_FRAMES`.
     """
+    frames = _count_in("frames", frames, 2, MAX_FRAMES)
     stops = sfb.travel_stops
     if stops is None:
         raise burmester.AssemblyError(
@@ -580,7 +606,7 @@ def drive_angles(sfb: SynthesizedFourBar, frames: int = 60) -> Tuple[npt.NDArray
             "circuit defect); choose another driving pivot"
         )
     total = abs(stops[-1] - stops[0])
-    n = max(2, int(frames))
+    n = frames
     parts: List[npt.NDArray[np.float64]] = []
     idx = [0]
     for a, b in zip(stops[:-1], stops[1:]):
@@ -622,13 +648,23 @@ def animate(
         burmester.AssemblyError: the linkage has a branch defect, or its input
             cannot turn from pose 1 through the poses in order without passing
             a dead position (:attr:`burmester.LinkageFigures.feasible`).
-        ValueError: the file type is neither ``.gif`` nor ``.mp4``.
+        burmester.InvalidInputError: the file type is neither ``.gif`` nor
+            ``.mp4``, its folder does not exist, or ``frames`` (2 to
+            :data:`MAX_FRAMES`), ``fps`` (1 to :data:`MAX_FPS`) or ``dpi``
+            (1 to :data:`MAX_DPI`) is out of range.
         RuntimeError: ``.mp4`` was asked for and ffmpeg is not installed.
     """
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix not in (".gif", ".mp4"):
-        raise ValueError(f"animation file must end in .gif or .mp4, got {path.name!r}")
+        raise burmester.InvalidInputError(f"animation file must end in .gif or .mp4, got {path.name!r}")
+    frames = _count_in("frames", frames, 2, MAX_FRAMES)
+    fps = _count_in("fps", fps, 1, MAX_FPS)
+    dpi = _count_in("dpi", dpi, 1, MAX_DPI)
+    if not path.parent.is_dir():
+        raise burmester.InvalidInputError(
+            f"cannot write {path}: the folder {str(path.parent)!r} does not exist; create it first"
+        )
     if suffix == ".mp4" and not matplotlib.animation.writers.is_available("ffmpeg"):
         raise RuntimeError("writing .mp4 needs ffmpeg on the PATH; install it, or write a .gif")
     figures = sfb.figures

@@ -80,7 +80,8 @@ def test_solve_full_turn_table(capsys):
         (["--theta2", "abc"], ["argument --theta2", "expected a number, got 'abc'"]),
         (["--theta2", "inf"], ["finite"]),
         (["--mode", "sideways"], ["argument --mode", "invalid choice"]),
-        (["--step", "0"], ["--step must be more than 0"]),
+        (["--step", "0"], ["--step must be from 0.01 to 360 degrees"]),
+        (["--step", "1e-9"], ["--step must be from 0.01", "at most 36000 rows"]),
     ],
 )
 def test_solve_bad_input(args, words, capsys):
@@ -372,3 +373,70 @@ def test_map_computes_each_map_once(tmp_path, monkeypatch, capsys, extra, calls)
     f = original(taskfile.example())
     free = f.branch_map(Grid(-8, 8, -8, 8, 60, 50), method="direct" if "direct" in extra else "conic")
     assert f"{100 * free.mean():.1f}% of the 60 x 50 grid is branch-free" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    "command, name, words",
+    [
+        ("map", "-", ["-o - (standard output) is not supported", ".png"]),
+        ("map", "{tmp}", ["is a folder", "out.png"]),
+        ("map", "{tmp}/noext", ["has no extension", ".png, .svg, .pdf"]),
+        ("map", "{tmp}/map.txt", ["has '.txt'", ".png"]),
+        ("map", "{tmp}/missing/map.png", ["does not exist"]),
+        ("linkage", "{tmp}/l.bmp", ["has '.bmp'", ".gif, .mp4"]),
+        ("example", "{tmp}/task.txt", ["has '.txt'", ".toml"]),
+    ],
+)
+def test_output_names_are_checked_before_any_work(command, name, words, tmp_path, capsys):
+    # -o NAME without an extension once wrote NAME.png and reported NAME;
+    # -o - wrote "-.png" and -o /tmp wrote /tmp.png.
+    before = sorted(tmp_path.iterdir())
+    assert main([command, "-o", name.format(tmp=tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    for w in words:
+        assert w in err, (w, err)
+    assert sorted(tmp_path.iterdir()) == before  # nothing written
+
+
+@pytest.mark.parametrize("command, name", [("map", "map.svg"), ("example", "task.toml")])
+def test_no_command_replaces_a_file_without_force(command, name, tmp_path, capsys):
+    out = tmp_path / name
+    out.write_text("mine")
+    args = [command, "-o", str(out)] + (["--grid", "20", "20"] if command == "map" else [])
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert "exists" in err and "--force" in err, err
+    assert out.read_text() == "mine"
+    assert main(args + ["--force"]) == 0
+    assert out.read_text() != "mine" and out.stat().st_size > 0
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["map", "--dpi", "100000"], ["--dpi", "from 10 to 2400"]),
+        (["linkage", "--frames", "0"], ["--frames", "from 2 to 10000"]),
+        (["linkage", "--fps", "0"], ["--fps", "from 1 to 240"]),
+    ],
+)
+def test_work_parameters_are_bounded(args, words, capsys):
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    for w in words:
+        assert w in err, (w, err)
+
+
+def test_a_map_too_large_for_memory_is_one_line_and_status_2(monkeypatch, tmp_path, capsys):
+    # A grid of 20000 x 20000 asks for more memory than a small machine has:
+    # one line and status 2, not a traceback. The allocation failure is the
+    # core's MemoryError (tested in test_robustness); here it is forced.
+    import burmester.cli as cli
+
+    def no_memory(*args, **kwargs):
+        raise MemoryError
+    monkeypatch.setattr(cli, "_solution_map", no_memory)
+    assert main(["map", "--design", "-o", str(tmp_path / "m.png")]) == 2
+    err = capsys.readouterr().err
+    assert err.strip().splitlines() == ["burmester map: error: not enough memory for this; use a coarser --grid"]

@@ -423,3 +423,34 @@ def test_readme_pictures_example_runs(tmp_path, monkeypatch):
     exec(compile(code, "README.md", "exec"), {})
     for name in ("center.png", "circle.png", "linkage.png", "linkage.gif"):
         assert (tmp_path / name).stat().st_size > 1000
+
+
+@pytest.mark.parametrize(
+    "kwargs, words",
+    [
+        ({"frames": 0}, "frames must be from 2 to 10000, got 0"),
+        ({"fps": 0}, "fps must be from 1 to 240, got 0"),  # was ZeroDivisionError
+        ({"dpi": 0}, "dpi must be from 1 to 2400, got 0"),
+    ],
+)
+def test_animate_rejects_bad_work_parameters(tmp_path, f, kwargs, words):
+    sfb = f.four_bar(FREE_PIVOT)
+    with pytest.raises(burmester.InvalidInputError, match=words):
+        bp.animate(sfb, tmp_path / "a.gif", **kwargs)
+    with pytest.raises(TypeError, match="frames must be an int"):
+        bp.drive_angles(sfb, 2.5)  # type: ignore[arg-type]
+    assert not (tmp_path / "a.gif").exists()
+
+
+def test_plot_errors_are_burmester_errors(tmp_path, f):
+    sfb = f.four_bar(FREE_PIVOT)
+    with pytest.raises(burmester.InvalidInputError, match="does not exist"):  # was FileNotFoundError
+        bp.animate(sfb, tmp_path / "missing" / "a.gif")
+    with pytest.raises(burmester.InvalidInputError, match=r"\.gif or \.mp4"):
+        bp.animate(sfb, tmp_path / "a.png")
+    with pytest.raises(burmester.InvalidInputError, match="xmin < xmax"):
+        bp.center_plane(f, (1.0, 0.0, 0.0, 1.0))
+    g = Grid(-1.0, 1.0, -1.0, 1.0, 5, 4)
+    for name in ("free", "acceptable", "transmission"):
+        with pytest.raises(burmester.InvalidInputError, match=rf"{name} must have the grid's shape \(ny, nx\) = \(4, 5\)"):
+            bp.center_plane(f, g, **{name: np.zeros((5, 4))})
