@@ -1090,13 +1090,23 @@ proptest! {
 #[test]
 fn bad_input_is_a_typed_error() {
     let poses = example_poses();
+    // The wrong number of poses: the error names what is needed and what
+    // was passed.
     assert!(matches!(
         FourPositions::new(&poses[..3]),
-        Err(Error::InvalidInput(InvalidInput::LengthMismatch { .. }))
+        Err(Error::InvalidInput(InvalidInput::NeedsPoses {
+            required: 4,
+            found: 3,
+            ..
+        }))
     ));
     assert!(matches!(
         FivePositions::new(&poses[..4]),
-        Err(Error::InvalidInput(InvalidInput::LengthMismatch { .. }))
+        Err(Error::InvalidInput(InvalidInput::NeedsPoses {
+            required: 5,
+            found: 4,
+            ..
+        }))
     ));
     let mut bad = poses;
     bad[2].position.x = f64::NAN;

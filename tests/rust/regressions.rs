@@ -37,11 +37,15 @@ fn lengths_near_f64_max_are_rejected_not_overflowed() {
 fn a_grid_finer_than_the_spacing_of_doubles_still_clears_c0() {
     let off = Vector2::new(9.3e7, -8.3e6);
     let t = example();
-    let t = Task::new(t.poses().map(|p| Pose {
-        position: p.position + off,
-        angle: p.angle,
-    }))
-    .unwrap();
+    let poses: Vec<Pose> = t
+        .poses()
+        .iter()
+        .map(|p| Pose {
+            position: p.position + off,
+            angle: p.angle,
+        })
+        .collect();
+    let t = Task::new(&poses).unwrap();
     let c0 = Point2::new(4.0, -1.0) + off;
     let f = t.filemon(c0).unwrap();
     let mut checked = 0;
@@ -70,11 +74,15 @@ fn a_grid_finer_than_the_spacing_of_doubles_still_clears_c0() {
 fn the_margin_map_keeps_its_sign_where_the_distance_underflows() {
     let k = 1e-50;
     let t = example();
-    let t = Task::new(t.poses().map(|p| Pose {
-        position: Point2::from(p.position.coords * k),
-        angle: p.angle,
-    }))
-    .unwrap();
+    let poses: Vec<Pose> = t
+        .poses()
+        .iter()
+        .map(|p| Pose {
+            position: Point2::from(p.position.coords * k),
+            angle: p.angle,
+        })
+        .collect();
+    let t = Task::new(&poses).unwrap();
     let f = t.filemon(Point2::new(4.0 * k, -k)).unwrap();
     let g = Grid::from_bounds(-8.0 * k, 8.0 * k, -8.0 * k, 8.0 * k, 64, 48).unwrap();
     let map = f.branch_map(&g, Method::Conic);
@@ -87,7 +95,7 @@ fn the_margin_map_keeps_its_sign_where_the_distance_underflows() {
         for i in 0..64 {
             let p = g.point(i, j);
             assert_eq!(
-                f.margin(p) > 0.0,
+                f.margin(p).unwrap() > 0.0,
                 f.is_branch_free(p, Method::Conic).unwrap()
             );
         }

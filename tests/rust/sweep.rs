@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 
 mod common;
 
-use burmester::{Grid, Method, Point2, Task};
+use burmester::{Control, Grid, Method, Point2, Pose, Task};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
@@ -23,12 +23,15 @@ fn grid_convention_and_errors() {
     assert!(Grid::from_bounds(1.0, 0.0, 0.0, 1.0, 4, 4).is_err());
     assert!(Grid::from_bounds(0.0, f64::NAN, 0.0, 1.0, 4, 4).is_err());
     assert!(Grid::from_bounds(0.0, 1.0, 0.0, 1.0, 1 << 20, 1 << 20).is_err());
-    let t = Task::from_xya([[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap();
+    let t = Task::from_xya(&[[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap();
     let f = t.filemon(Point2::new(4.0, -1.0)).unwrap();
     let mut short = vec![false; 7];
-    assert!(f.branch_map_into(&g, Method::Conic, &mut short).is_err());
+    assert!(
+        f.branch_map_into(&g, Method::Conic, &mut short, &Control::new())
+            .is_err()
+    );
     let mut shortf = vec![0.0f32; 9];
-    assert!(f.margin_map_into(&g, &mut shortf).is_err());
+    assert!(f.margin_map_into(&g, &mut shortf, &Control::new()).is_err());
     // Row-major, row j for y_j.
     let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 37, 23).unwrap();
     let m = f.branch_map(&g, Method::Conic);
@@ -73,7 +76,13 @@ fn runs_match_pointwise_at_the_poles_and_c0() {
     for _ in 0..20 {
         let f = common::filemon(&mut runner, 8.0);
         let t = f.task();
-        for p in t.poles().iter().chain([&f.driven().center]) {
+        for p in t
+            .cremona()
+            .unwrap()
+            .poles()
+            .iter()
+            .chain([&f.driven().center])
+        {
             let r = 1e-6 * t.scale();
             let g = Grid::from_bounds(p.x - r, p.x + r, p.y - r, p.y + r, 257, 257).unwrap();
             let runs = f.branch_map(&g, Method::Conic);
@@ -118,7 +127,7 @@ fn the_three_methods_agree_at_512_squared() {
         };
         let [ga, gb] = f.conics().unwrap();
         let t = f.task();
-        let pc = t.pole_circle();
+        let pc = t.cremona().unwrap().pole_circle();
         for j in 0..n {
             for i in 0..n {
                 let k = j * n + i;
@@ -126,6 +135,17 @@ fn the_three_methods_agree_at_512_squared() {
                     continue;
                 }
                 let p = g.point(i, j);
+                // The simulation also sees the circuit defect of a Grashof
+                // double-rocker input, which the sign tests cannot: a
+                // branch-free point whose poses lie on both arcs of the
+                // input.
+                if conic[k] == direct[k]
+                    && conic[k]
+                    && sim.as_ref().is_some_and(|s| !s[k])
+                    && common::poses_on_both_arcs(&f, p)
+                {
+                    continue;
+                }
                 let near_curve = ga.distance_estimate(p).min(gb.distance_estimate(p)) < 1e-9 * size;
                 let near_pc = pc.side(p).abs() < 1e-9 * size;
                 assert!(
@@ -163,7 +183,7 @@ fn margin_map_signs_and_distances() {
         for k in (0..g.len()).step_by(131) {
             let p = g.point(k % 180, k / 180);
             let want = ga.distance_estimate(p).min(gb.distance_estimate(p));
-            let got = f.margin(p).abs();
+            let got = f.margin(p).unwrap().abs();
             assert!((got - want).abs() <= 1e-9 * (1.0 + want), "{got} vs {want}");
             assert!(((m[k] as f64).abs() - got).abs() <= 1e-6 * (1.0 + got));
         }
@@ -223,7 +243,8 @@ proptest! {
         let t = f.task();
         let mut sim = burmester::Similarity::new(k, ang, burmester::Vector2::new(ox, oy)).unwrap();
         if mirror { sim = sim.mirrored(); }
-        let t2 = Task::new(t.poses().map(|p| sim.pose(&p))).unwrap();
+        let poses: Vec<Pose> = t.poses().iter().map(|p| sim.pose(p)).collect();
+        let t2 = Task::new(&poses).unwrap();
         let f2 = t2.filemon(sim.point(f.driven().center)).unwrap();
         let n = 96;
         let half = 8.0;
@@ -247,7 +268,7 @@ proptest! {
                 let p = inverse(&sim, g2.point(i, j));
                 if p.x.abs() >= half || p.y.abs() >= half { continue; }
                 let got = m2[j * n + i];
-                let margin = f.margin(p).abs();
+                let margin = f.margin(p).unwrap().abs();
                 if margin > 1e-9 * t.scale() {
                     prop_assert_eq!(got, f.classify(p, Method::Conic).unwrap().is_free(), "at {}", p);
                 }

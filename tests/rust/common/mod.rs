@@ -3,7 +3,7 @@
 
 use std::f64::consts::{PI, TAU};
 
-use burmester::{Filemon, Point2, Task};
+use burmester::{AngleInterval, Filemon, InputRange, Point2, Task};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
@@ -36,11 +36,13 @@ pub(crate) fn task() -> impl Strategy<Value = Task> {
     prop::array::uniform3((-5.0f64..5.0, -5.0f64..5.0, -PI..PI)).prop_filter_map(
         "ill-conditioned task",
         |p| {
-            let t = Task::from_xya(p.map(|(x, y, a)| [x, y, a])).ok()?;
+            let t = Task::from_xya(&p.map(|(x, y, a)| [x, y, a])).ok()?;
             if t.rotations().iter().any(|r| r.abs() < 0.1) {
                 return None;
             }
             let far = t
+                .cremona()
+                .ok()?
                 .poles()
                 .iter()
                 .map(|p| p.coords.norm())
@@ -60,9 +62,26 @@ pub(crate) fn filemon(runner: &mut TestRunner, half: f64) -> Filemon {
             .unwrap()
             .current();
         if let Ok(f) = t.filemon(Point2::new(c.0, c.1)) {
-            if !f.all_defective() && (f.circle_point() - f.driven().center).norm() > 1e-3 {
+            if !f.all_defective() && (f.driven_circle() - f.driven().center).norm() > 1e-3 {
                 return f;
             }
         }
+    }
+}
+
+/// Whether the linkage of `f` with the driving center point `a0` has the
+/// circuit defect of a Grashof double-rocker input: its input rocks on two
+/// arcs and the poses' input angles do not all lie on one of them (which
+/// `Method::Simulate` reports and the sign tests cannot see).
+pub(crate) fn poses_on_both_arcs(f: &Filemon, a0: Point2<f64>) -> bool {
+    let Ok(fb) = f.four_bar(a0) else {
+        return false;
+    };
+    match fb.fourbar.input_range() {
+        InputRange::TwoArcs(p, q) => {
+            let on = |arc: &AngleInterval| fb.input_angles.iter().all(|&a| arc.contains(a));
+            !on(&p) && !on(&q)
+        }
+        _ => false,
     }
 }
