@@ -383,3 +383,132 @@ def test_grids_beyond_2_32_samples_are_refused_before_any_allocation():
         with pytest.raises(InvalidInputError, match="at most 4294967296") as e:
             call_()
         assert e.value.cause == "grid_size" and e.value.max == 2**32
+
+
+# ---------------------------------------------------------------------------
+# Points and angles the accessors once took (issue 15, item 6)
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf])
+def test_point_accessors_refuse_non_finite_points(bad):
+    from burmester.taskfile import example
+
+    f = example().filemon()
+    c = f.conics[0]
+    for call in (
+        lambda p: f.task.displace(p, 1, 2),  # once NaN or inf out
+        f.margin,
+        f.conic_values,
+        f.circle_signs,
+        c.evaluate,
+        c.distance,
+    ):
+        for p in ((bad, 0.0), (0.0, bad)):
+            with pytest.raises(InvalidInputError, match="finite"):
+                call(p)
+
+
+def test_conic_distance_with_tiny_coefficients_is_finite():
+    # Once inf: the gradient's norm underflowed.
+    d = Conic(1, 0, 0, 1e-300, 1e-300, 1e-300).distance((0, 0))
+    assert d == pytest.approx(math.sqrt(0.5), rel=1e-12)
+
+
+@pytest.mark.parametrize("theta2", [1e300, -2e9, 1e10])
+def test_input_angles_beyond_1e9_are_refused_as_for_a_task(theta2):
+    fb = fb4(4, 1, 3, 3)
+    fb.configuration(1e9, "open")  # the bound itself is fine
+    for call in (lambda: fb.configuration(theta2, "open"), lambda: fb.joints(theta2, "crossed")):
+        with pytest.raises(InvalidInputError, match="theta2") as e:
+            call()
+        assert "limit of 1000000000" in str(e.value) and "modulo 2 pi" in str(e.value)
+    with pytest.raises(InvalidInputError, match="limit of 1000000000"):
+        Task([(0, 0, 0), (1, 0, theta2), (0, 1, 1)])  # the same bound
+
+
+# ---------------------------------------------------------------------------
+# One toggle criterion (issue 15, item 5)
+
+
+def _on_curve(conic, p, n):
+    """A root of the conic on the line p + t n, by bisection on its sign."""
+    lo, hi = -1.0, 1.0
+    slo = math.copysign(1.0, conic.evaluate((p[0] + lo * n[0], p[1] + lo * n[1])))
+    shi = math.copysign(1.0, conic.evaluate((p[0] + hi * n[0], p[1] + hi * n[1])))
+    if slo == shi:
+        return None
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if mid in (lo, hi):
+            break
+        s = math.copysign(1.0, conic.evaluate((p[0] + mid * n[0], p[1] + mid * n[1])))
+        if s == slo:
+            lo = mid
+        else:
+            hi = mid
+    return (p[0] + lo * n[0], p[1] + lo * n[1])
+
+
+def test_modes_and_configuration_toggle_agree_and_poses_are_reached_near_toggles():
+    # Driving pivots at 1e-2 down to 1e-11 task sizes from the transformed
+    # Filemon curves, where a design pose is at a toggle. Once the modes
+    # could be all "open" while configuration(theta_k, mode).toggle was True,
+    # and pose_at missed the pose by 1e-4 task sizes (the loop was snapped
+    # onto the toggle). Now: outside the band's own rounding (a factor of 2
+    # either side), both say the same; every pose is reached to rounding.
+    from burmester.taskfile import example
+
+    f = example().filemon()
+    scale = f.task.scale
+    band = math.sqrt(8 * np.finfo(float).eps)
+    checked = toggles = 0
+    for conic in f.conics:
+        for line in conic.polylines(-8, 8, -8, 8):
+            for p in line[:: max(1, len(line) // 12)]:
+                h = 1e-6
+                gx = (conic.evaluate((p[0] + h, p[1])) - conic.evaluate((p[0] - h, p[1]))) / (2 * h)
+                gy = (conic.evaluate((p[0], p[1] + h)) - conic.evaluate((p[0], p[1] - h))) / (2 * h)
+                g = math.hypot(gx, gy)
+                if g == 0:
+                    continue
+                n = (gx / g * 0.01, gy / g * 0.01)
+                root = _on_curve(conic, p, n)
+                if root is None:
+                    continue
+                for d in (1e-2, 1e-4, 1e-6, 1e-7, 1e-8, 1e-9, 1e-11, 0.0):
+                    for side in (-1, 1):
+                        a0 = (root[0] + side * d * scale * gx / g, root[1] + side * d * scale * gy / g)
+                        try:
+                            sfb = f.four_bar(a0)
+                        except BurmesterError:
+                            continue
+                        fb = sfb.fourbar
+                        for k, (theta, mode) in enumerate(zip(sfb.input_angles, sfb.modes)):
+                            for m in ("open", "crossed"):
+                                c = fb.configuration(theta, m)
+                                _, a, b, o4 = fb.joints(theta, m)
+                                l3, l4 = fb.coupler, fb.rocker
+                                r2 = (o4[0] - a[0]) ** 2 + (o4[1] - a[1]) ** 2
+                                tau = band * ((l3 + l4) ** 2 + r2) / (2 * l3 * l4)
+                                sin_mu = math.sin(c.transmission_angle)
+                                if sin_mu < 0.5 * tau:
+                                    assert c.toggle and mode is None, (a0, k, sin_mu, tau)
+                                    toggles += 1
+                                elif sin_mu > 2 * tau:
+                                    assert not c.toggle and mode is not None, (a0, k, sin_mu, tau)
+                            # The pose is reached in its mode; at a toggle
+                            # (mode None) in one of the two. Near a toggle
+                            # the loop is as ill-conditioned as a square root
+                            # (rounding of eps moves it by about sqrt(eps)):
+                            # a few 1e-7 of the task's size, not the 1e-4 of
+                            # a loop snapped onto the toggle.
+                            px, py, pa = f.task.poses[k]
+                            misses = []
+                            for m in (mode,) if mode else ("open", "crossed"):
+                                x, y, ang = sfb.pose_at(theta, m)
+                                misses.append(max(math.hypot(x - px, y - py) / scale,
+                                                  abs(math.remainder(ang - pa, 2 * math.pi))))
+                            near = math.sin(fb.configuration(theta, mode or "open").transmission_angle) < 1e-3
+                            assert min(misses) < (1e-6 if near else 1e-9), (a0, k, misses)
+                            checked += 1
+    assert checked > 500 and toggles > 0, (checked, toggles)

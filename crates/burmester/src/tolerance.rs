@@ -27,10 +27,19 @@ pub const MIN_ROTATION: f64 = 1e-6;
 pub const ROUNDING_EPS: f64 = 8.0;
 
 /// Factor of `f64::EPSILON` within which a cross product of two vectors,
-/// relative to the product of their lengths, is zero: the assembly mode of
-/// a synthesized linkage at a pose (`None`: a toggle at the pose) and an
-/// answer of a three-position map at infinity (its denominator).
+/// relative to the product of their lengths, is zero: an answer of a
+/// three-position map at infinity (its denominator).
 pub const CROSS_EPS: f64 = 16.0;
+
+/// The one toggle criterion, `sqrt(ROUNDING_EPS eps)`: a loop with coupler
+/// `L3`, rocker `L4` and crank tip to output pivot `r` is at a toggle where
+/// its transmission angle `mu` has
+/// `|sin mu| <= TOGGLE_BAND ((L3 + L4)^2 + r^2) / (2 L3 L4)` (about `1e-7`
+/// rad when `L3` and `L4` are alike). It is Heron's product within
+/// [`ROUNDING_EPS`] of zero, restated in angle terms; both
+/// [`FourBar::solve`](crate::FourBar::solve) and the mode of a built linkage
+/// at a pose ([`AssemblyMode::of_loop`](crate::AssemblyMode::of_loop)) use it.
+pub const TOGGLE_BAND: f64 = 4.214_684_851_089_403_5e-8;
 
 /// Relative tolerance of "collinear": three points whose doubled triangle
 /// area is within this fraction of the longest side squared lie on a line
@@ -60,3 +69,13 @@ pub const RANK_TIE: f64 = 1e-9;
 /// a row, a sample farther than this times the row's magnitude (over the
 /// slope) from a root of a conic has the root-free sign.
 pub const SWEEP_BAND_EPS: f64 = 64.0;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn toggle_band_is_the_root_of_the_heron_band() {
+        assert_eq!(TOGGLE_BAND, (ROUNDING_EPS * f64::EPSILON).sqrt());
+    }
+}

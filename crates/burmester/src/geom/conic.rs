@@ -332,7 +332,9 @@ impl Conic {
     /// vanishes off the curve.
     pub fn distance_estimate(&self, p: Point2<f64>) -> f64 {
         let (v, m) = self.local_scaled(p);
-        let g = self.grad_scaled(v, m).norm();
+        let g = self.grad_scaled(v, m);
+        // `hypot`, not `norm`: a gradient of `1e-300` does not underflow.
+        let g = g.x.hypot(g.y);
         let val = self.eval_scaled(v, m).abs();
         if val == 0.0 {
             0.0

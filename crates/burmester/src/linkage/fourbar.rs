@@ -48,7 +48,18 @@
 //! of the input come from `libm`.
 //!
 //! A toggle is reported where `|H|` is within rounding of zero:
-//! `|H| <= 8 eps ((L3 + L4)^2 + r^2)^2`, lengths in units of the longest link.
+//! `|H| <= 8 eps ((L3 + L4)^2 + r^2)^2`. Since `sqrt(H) = 2 L3 L4 |sin mu|`
+//! (`mu` the transmission angle), this is the one toggle criterion of the
+//! crate, in angle terms (see [`AssemblyMode::of_loop`], which decides the
+//! mode of a built linkage at a pose by the same bound):
+//!
+//! ```text
+//! |sin mu| <= TOGGLE_BAND ((L3 + L4)^2 + r^2) / (2 L3 L4),   TOGGLE_BAND = sqrt(8 eps)
+//! ```
+//!
+//! about `1e-7` rad for a coupler and rocker of similar lengths. Inside the
+//! band the answer keeps the asked mode's sign (the loop is not snapped to
+//! the toggle), so a pose reached there is still reached to rounding.
 
 use core::f64::consts::{PI, TAU};
 
@@ -111,10 +122,12 @@ impl AssemblyMode {
     /// The mode of a closed loop from its coupler vector (crank joint to
     /// rocker joint) and its rocker vector (output pivot to rocker joint):
     /// the sign of `cross(coupler, rocker)`, the sign of
-    /// `sin(theta4 - theta3)`; `None` (a toggle) where the cross product is
-    /// within [`tolerance::CROSS_EPS`] machine epsilons of the product of
-    /// the lengths. The one assembly-mode test of the crate: the synthesized
-    /// linkages and the solution maps use it at every pose.
+    /// `sin(theta4 - theta3)`; `None` (a toggle) where the transmission
+    /// angle is within the crate's one toggle band (module docs):
+    /// `|cross(u, w)| <= TOGGLE_BAND ((|u| + |w|)^2 + |u - w|^2) / 2`, the
+    /// bound under which [`FourBar::solve`] reports `toggle`. The one
+    /// assembly-mode test of the crate: the synthesized linkages and the
+    /// solution maps use it at every pose.
     ///
     /// ```
     /// use burmester::{AssemblyMode, Vector2};
@@ -125,12 +138,14 @@ impl AssemblyMode {
     #[inline(always)]
     pub fn of_loop(coupler: Vector2<f64>, rocker: Vector2<f64>) -> Option<Self> {
         let s = cross(coupler, rocker);
-        // |s| <= k eps |u| |w|, squared: no square roots.
-        let t = tolerance::CROSS_EPS * f64::EPSILON;
-        if s * s <= t * t * coupler.norm_squared() * rocker.norm_squared() {
-            None
-        } else {
+        let (u2, w2) = (coupler.norm_squared(), rocker.norm_squared());
+        // (|u| + |w|)^2 + |u - w|^2, the `sum^2 + r^2` of `FourBar::solve`.
+        let big = u2 + w2 + 2.0 * (u2 * w2).sqrt() + (coupler - rocker).norm_squared();
+        // Not `<=`: NaN is a toggle too (no mode).
+        if s.abs() > 0.5 * tolerance::TOGGLE_BAND * big {
             AssemblyMode::from_sign(s)
+        } else {
+            None
         }
     }
 
@@ -444,6 +459,11 @@ impl FourBar {
     /// trigonometry beyond `sin` and `cos` of the input.
     #[inline(always)]
     fn close(&self, theta2: f64, mode: AssemblyMode) -> Result<Closed> {
+        // NaN fails here too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(theta2.abs() <= Self::MAX_ANGLE) {
+            return Err(angle_error(theta2));
+        }
         let (s2, c2) = libm::sincos(theta2);
         // d = O4 - A, in units of `scale`.
         let d = Vector2::new(self.g_vec.x - self.c_n * c2, self.g_vec.y - self.c_n * s2);
@@ -460,12 +480,10 @@ impl FourBar {
         if !(heron >= -tol) {
             return Err(self.close_error(theta2, r2));
         }
+        // The one toggle criterion (module docs); the loop keeps the asked
+        // mode's sign inside the band instead of snapping to the toggle.
         let toggle = heron <= tol;
-        let h = if toggle {
-            0.0
-        } else {
-            mode.sign() * heron.sqrt()
-        };
+        let h = mode.sign() * heron.max(0.0).sqrt();
         let n = perp(d) * h;
         let v3 = d * (self.sq_diff_n + r2) + n;
         let v4 = d * (self.sq_diff_n - r2) + n;
@@ -482,6 +500,11 @@ impl FourBar {
             toggle,
         })
     }
+
+    /// The largest input angle magnitude, in radians: beyond, a double
+    /// cannot hold the angle to `1e-7` rad (the same bound as a task's
+    /// angles).
+    pub const MAX_ANGLE: f64 = 1e9;
 
     #[cold]
     #[inline(never)]
@@ -748,6 +771,23 @@ fn indeterminate(theta2: f64) -> Error {
     AssemblyError::Indeterminate { theta2 }.into()
 }
 
+
+/// The error of an input angle that is not finite or beyond
+/// [`FourBar::MAX_ANGLE`].
+#[cold]
+#[inline(never)]
+fn angle_error(theta2: f64) -> Error {
+    match crate::error::bounded(
+        "theta2",
+        theta2,
+        FourBar::MAX_ANGLE,
+        "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)",
+    ) {
+        Err(e) => e.into(),
+        Ok(_) => unreachable!("angle_error of a bounded angle"),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -799,5 +839,72 @@ mod tests {
             e,
             Error::Assembly(AssemblyError::NeverCloses { .. })
         ));
+    }
+
+    /// Near every dead position, at distances from `1e-20` to `1e-2` rad:
+    /// [`FourBar::solve`]'s `toggle` and the mode of the loop it builds
+    /// ([`AssemblyMode::of_loop`]) give the same answer outside the band's
+    /// own rounding (a factor of 2 either side of the bound), and the loop
+    /// keeps the asked mode's sign: it is not snapped to the toggle.
+    #[test]
+    fn one_toggle_criterion_in_angle_terms() {
+        let linkages = [
+            [3.0, 2.0, 1.5, 1.0],
+            [4.0, 3.0, 2.0, 2.5],
+            [1.0, 0.9, 0.3, 0.5],
+            [2.0, 1.9, 0.05, 0.2],
+            [1e-3, 0.9e-3, 0.3e-3, 0.5e-3],
+        ];
+        let mut toggles = 0;
+        for l in linkages {
+            let fb = FourBar::new(l[0], l[1], l[2], l[3]).unwrap();
+            let dead = fb.input_range().dead_positions();
+            assert!(!dead.is_empty(), "{l:?} has dead positions");
+            for &t0 in &dead {
+                for e in -80..=8 {
+                    for side in [-1.0, 1.0] {
+                        let t = t0 + side * 10f64.powf(e as f64 / 4.0);
+                        for mode in [AssemblyMode::Open, AssemblyMode::Crossed] {
+                            let Ok(c) = fb.solve(t, mode) else { continue };
+                            let j = fb.joints_at(t, mode).unwrap();
+                            let u = j.rocker_joint - j.crank_joint;
+                            let w = j.rocker_joint - j.output_pivot;
+                            let (u2, w2) = (u.norm_squared(), w.norm_squared());
+                            let big = u2 + w2 + 2.0 * (u2 * w2).sqrt() + (u - w).norm_squared();
+                            let bound = 0.5 * tolerance::TOGGLE_BAND * big;
+                            let s = cross(u, w);
+                            let m = AssemblyMode::of_loop(u, w);
+                            if s.abs() < 0.5 * bound {
+                                assert!(c.toggle && m.is_none(), "{l:?} at {t}: {s} vs {bound}");
+                                toggles += 1;
+                            } else if s.abs() > 2.0 * bound {
+                                assert!(!c.toggle && m == Some(mode), "{l:?} at {t}: {s}");
+                            }
+                            // Not snapped: the asked mode's sign, or zero to
+                            // rounding.
+                            assert!(s * mode.sign() >= -1e-3 * bound, "{l:?} at {t}: {s}");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(toggles > 50, "the band was reached ({toggles} times)");
+    }
+
+    #[test]
+    fn input_angles_beyond_the_bound_are_refused() {
+        let fb = FourBar::new(4.0, 1.0, 3.0, 3.0).unwrap();
+        assert!(fb.solve(1e9, AssemblyMode::Open).is_ok());
+        for t in [1e300, -2e9, f64::INFINITY, f64::NAN] {
+            let e = fb.solve(t, AssemblyMode::Open).unwrap_err();
+            assert!(
+                matches!(
+                    e,
+                    Error::InvalidInput(InvalidInput::TooLarge { .. } | InvalidInput::NotFinite { .. })
+                ),
+                "{t}: {e}"
+            );
+            assert!(fb.joints_at(t, AssemblyMode::Crossed).is_err());
+        }
     }
 }

@@ -133,8 +133,10 @@ impl Motion {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::PoseIndex`] for an index out of range.
+    /// [`InvalidInput::PoseIndex`] for an index out of range,
+    /// [`InvalidInput::NotFinite`] for a point that is not finite.
     pub fn displace(&self, z: Point2<f64>, i: usize, j: usize) -> Result<Point2<f64>> {
+        crate::error::finite_point(["point x", "point y"], z)?;
         let (i, j) = (self.index(i)?, self.index(j)?);
         Ok(self.displace0(z, i, j))
     }

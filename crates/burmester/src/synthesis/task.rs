@@ -62,7 +62,7 @@ impl Task {
 
     /// Largest magnitude of a pose angle, in radians: past it a double no
     /// longer holds the angle to `1e-7` rad.
-    pub const MAX_ANGLE: f64 = 1e9;
+    pub const MAX_ANGLE: f64 = crate::FourBar::MAX_ANGLE;
 
     /// Smallest [`Task::scale`]: smaller tasks are rejected (rescale them),
     /// so that no square of a distance underflows.
