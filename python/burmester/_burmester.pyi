@@ -660,7 +660,7 @@ class Filemon:
         ``"direct"``: the circle point, then the sign test at the three poses;
         ``"simulate"``: build the four-bar and drive it from pose to pose
         inside its input range, in pose 1's assembly mode (this also sees
-        the circuit defect of a double-rocker input, which the sign tests
+        the circuit defect of an input that rocks in two separate arcs, which the sign tests
         cannot). Beyond the bands of the README's table the methods agree
         (but for that circuit defect). A point on a curve is not free.
         ``"direct"`` and ``"simulate"`` raise :class:`DegenerateError` on the

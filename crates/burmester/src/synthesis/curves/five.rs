@@ -65,7 +65,7 @@ impl FivePositions {
     ///
     /// # Errors
     ///
-    /// [`crate::InvalidInput::LengthMismatch`] unless there are exactly five
+    /// [`crate::InvalidInput::NeedsPoses`] unless there are exactly five
     /// poses; the errors of [`super::FourPositions::new`] for the poses
     /// (four of them rotations about one point give
     /// [`crate::DegenerateError::CoincidentPoles`]: a continuum of dyads);

@@ -255,7 +255,7 @@ impl FourPositions {
     ///
     /// # Errors
     ///
-    /// [`crate::InvalidInput::LengthMismatch`] unless there are exactly four
+    /// [`crate::InvalidInput::NeedsPoses`] unless there are exactly four
     /// poses; [`crate::InvalidInput`] for non-finite numbers, coordinates
     /// beyond [`crate::Task::MAX_COORDINATE`], angles beyond
     /// [`crate::Task::MAX_ANGLE`], a task smaller than

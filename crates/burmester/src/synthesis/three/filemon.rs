@@ -52,7 +52,7 @@ pub enum Method {
     /// `pi/8`, every step solved by the position analysis, and the coupler
     /// must land on the pose. Free when every pose is reached without a
     /// dead position. Besides the branch defect this also sees the circuit
-    /// defect of a Grashof double-rocker (poses on both arcs of its input),
+    /// defect of an input that rocks in two separate arcs (poses on both),
     /// which the sign tests cannot.
     Simulate,
 }
@@ -329,7 +329,7 @@ impl Filemon {
     ///           pole circle (the circle point's rounding grows near both)
     /// simulate  agrees with direct farther than 1e-9 from the curves and the
     ///           pole circle, except that it also reports the circuit defect of
-    ///           a double-rocker input; a pose counts as reached within 1e-7
+    ///           an input rocking in two arcs; a pose counts as reached within 1e-7
     ///           task sizes and 1e-7 rad (tolerance::REACH)
     /// ```
     ///
