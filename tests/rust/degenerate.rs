@@ -3,8 +3,8 @@
 //!
 //! | case | behaviour |
 //! |---|---|
-//! | pure translation between two poses | rejected: `DegenerateError::PureTranslation` ("rotate one of the poses by at least 1e-6 rad") |
-//! | a rotation just above `Task::MIN_ROTATION` | accepted; maps accurate to a few `eps / theta` of the poses' spread (1e-9 measured at the bound) |
+//! | pure translation between two of three poses | rejected: `DegenerateError::PureTranslation` ("rotate one of the poses by at least 1e-6 rad"); with four or five poses accepted, its pole `Pole::AtInfinity` |
+//! | a rotation just above `tolerance::MIN_ROTATION` | accepted; maps accurate to a few `eps / theta` of the poses' spread (1e-9 measured at the bound) |
 //! | coincident poses | rejected: `DegenerateError::CoincidentPoses` |
 //! | rotations about one point (coincident poles) | rejected: `DegenerateError::CoincidentPoles` |
 //! | collinear poles | only in the translation limit (rejected); `CircleOrLine::Line` for collinear points given directly |
@@ -16,13 +16,19 @@
 
 use std::f64::consts::PI;
 
+use burmester::tolerance::MIN_ROTATION;
 use burmester::{
-    Branch, CircleOrLine, ConicKind, DegenerateError, Error, Grid, Line, Method, Point2, Pose,
-    Task, Vector2, Viewport,
+    Branch, CircleOrLine, ConicKind, Cremona, DegenerateError, Error, Grid, InvalidInput, Line,
+    Method, Point2, Pole, Pose, Task, Vector2, Viewport,
 };
 
 fn example() -> Task {
     burmester::example::task()
+}
+
+/// The three-position maps of a three-pose task.
+fn cremona(t: &Task) -> &Cremona {
+    t.cremona().unwrap()
 }
 
 const C0: Point2<f64> = Point2::new(4.0, -1.0);
@@ -41,7 +47,7 @@ fn points(c: Point2<f64>, r: f64, n: usize) -> Vec<Point2<f64>> {
 #[test]
 fn a_pure_translation_is_rejected_with_what_to_do() {
     for (a2, i, j) in [(0.3, 1, 2), (0.3 + 2.0 * PI, 1, 2), (0.3 + 0.9e-6, 1, 2)] {
-        let e = Task::from_xya([[0.0, 0.0, 0.3], [1.0, 0.0, a2], [3.0, 2.0, 1.1]]).unwrap_err();
+        let e = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, a2], [3.0, 2.0, 1.1]]).unwrap_err();
         assert!(
             matches!(e, Error::Degenerate(DegenerateError::PureTranslation { i: ii, j: jj }) if (ii, jj) == (i, j)),
             "{e:?}"
@@ -52,22 +58,54 @@ fn a_pure_translation_is_rejected_with_what_to_do() {
         }
     }
     // Poses 2 and 3.
-    let e = Task::from_xya([[0.0, 0.0, 0.3], [1.0, 0.0, 1.1], [3.0, 2.0, 1.1]]).unwrap_err();
+    let e = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, 1.1], [3.0, 2.0, 1.1]]).unwrap_err();
     assert!(matches!(
         e,
         Error::Degenerate(DegenerateError::PureTranslation { i: 2, j: 3 })
     ));
+    // Four poses need no pole of every pair: the translation's pole is at
+    // infinity, perpendicular to the translation, and the three-position
+    // maps are refused.
+    let t = Task::from_xya(&[
+        [0.0, 0.0, 0.3],
+        [1.0, 0.0, 1.1],
+        [3.0, 2.0, 1.1],
+        [-1.0, 2.0, 0.2],
+    ])
+    .unwrap();
+    let Pole::AtInfinity { direction } = t.poles()[3] else {
+        panic!("{:?}", t.poles())
+    };
+    assert!((direction.dot(&Vector2::new(2.0, 2.0))).abs() < 1e-15);
+    assert!((direction.norm() - 1.0).abs() < 1e-15);
+    assert!(
+        t.poles()
+            .iter()
+            .enumerate()
+            .all(|(k, p)| (k == 3) != p.finite().is_some())
+    );
+    assert!(matches!(
+        t.cremona().unwrap_err(),
+        Error::InvalidInput(InvalidInput::NeedsPoses {
+            required: 3,
+            found: 4,
+            ..
+        })
+    ));
 }
 
-/// Just above `Task::MIN_ROTATION` the task is accepted, its pole is far
+/// Just above `tolerance::MIN_ROTATION` the task is accepted, its pole is far
 /// away, and the maps keep a few `eps / theta` of relative accuracy.
 #[test]
 fn a_near_translation_is_accepted_and_accurate() {
-    let theta = 2.0 * Task::MIN_ROTATION;
-    let t = Task::from_xya([[0.0, 0.0, 0.0], [2.0, 0.5, theta], [3.0, 2.0, 1.1]]).unwrap();
+    let theta = 2.0 * MIN_ROTATION;
+    let t = Task::from_xya(&[[0.0, 0.0, 0.0], [2.0, 0.5, theta], [3.0, 2.0, 1.1]]).unwrap();
     let spread = 3.7;
     assert!(t.scale() > 1e5, "P12 is far away: {}", t.scale());
-    assert!(matches!(t.pole_circle(), CircleOrLine::Circle { .. }));
+    assert!(matches!(
+        cremona(&t).pole_circle(),
+        CircleOrLine::Circle { .. }
+    ));
     let f = t.filemon(C0).unwrap();
     let mut checked = 0;
     for y in points(Point2::new(1.5, 1.0), 6.0, 200) {
@@ -75,10 +113,10 @@ fn a_near_translation_is_accepted_and_accurate() {
         let size = spread + (x - y).norm();
         let back = t.center_point(x).unwrap();
         assert!((back - y).norm() < 1e-7 * size, "{y} -> {x} -> {back}");
-        let r = [1, 2, 3].map(|k| (t.displace(x, 1, k) - y).norm());
+        let r = [1, 2, 3].map(|k| (t.displace(x, 1, k).unwrap() - y).norm());
         assert!((r[0] - r[1]).abs() < 1e-7 * size && (r[0] - r[2]).abs() < 1e-7 * size);
         // The two classifiers agree off a band of 1e-6 of the spread.
-        if f.margin(y).abs() > 1e-6 * spread {
+        if f.margin(y).unwrap().abs() > 1e-6 * spread {
             assert_eq!(
                 f.classify(y, Method::Conic).unwrap(),
                 f.classify(y, Method::Direct).unwrap(),
@@ -92,22 +130,22 @@ fn a_near_translation_is_accepted_and_accurate() {
 
 #[test]
 fn coincident_poses_and_poles_are_rejected() {
-    let e = Task::from_xya([[1.0, 2.0, 0.3], [1.0, 2.0, 0.3], [3.0, 2.0, 1.1]]).unwrap_err();
+    let e = Task::from_xya(&[[1.0, 2.0, 0.3], [1.0, 2.0, 0.3], [3.0, 2.0, 1.1]]).unwrap_err();
     assert!(matches!(
         e,
         Error::Degenerate(DegenerateError::CoincidentPoses { i: 1, j: 2 })
     ));
     assert!(e.to_string().contains("move or rotate one of them"), "{e}");
     // Equal positions with different angles: a rotation about that point.
-    let t = Task::from_xya([[1.0, 2.0, 0.3], [1.0, 2.0, 0.9], [3.0, 2.0, 1.1]]).unwrap();
-    assert!((t.poles()[0] - Point2::new(1.0, 2.0)).norm() < 1e-15);
+    let t = Task::from_xya(&[[1.0, 2.0, 0.3], [1.0, 2.0, 0.9], [3.0, 2.0, 1.1]]).unwrap();
+    assert!((cremona(&t).poles()[0] - Point2::new(1.0, 2.0)).norm() < 1e-15);
     // Rotations about one point, up to rounding: all poles coincide.
     let c = Point2::new(-3.0, 5.0);
     let poses = [0.2, 1.0, 2.1].map(|a: f64| {
         let p = c + Vector2::new(a.cos(), a.sin()) * 4.0;
         Pose::new(p.x, p.y + 1e-14, a)
     });
-    let e = Task::new(poses).unwrap_err();
+    let e = Task::new(&poses).unwrap_err();
     assert!(
         matches!(
             e,
@@ -124,15 +162,15 @@ fn coincident_poses_and_poles_are_rejected() {
 #[test]
 fn collinear_poles_occur_only_in_the_translation_limit() {
     for theta in [1e-1, 1e-3, 1e-5, 2e-6] {
-        let t = Task::from_xya([[0.0, 0.0, 0.0], [2.0, 0.5, theta], [3.0, 2.0, 1.1]]).unwrap();
-        let a = t.pole_triangle_angles();
+        let t = Task::from_xya(&[[0.0, 0.0, 0.0], [2.0, 0.5, theta], [3.0, 2.0, 1.1]]).unwrap();
+        let a = cremona(&t).pole_triangle_angles();
         assert!((a[0].abs() - theta / 2.0).abs() < 1e-9, "{a:?}");
-        let CircleOrLine::Circle { center, radius } = t.pole_circle() else {
+        let CircleOrLine::Circle { center, radius } = cremona(&t).pole_circle() else {
             panic!("a proper circle at theta = {theta}")
         };
         // Its points still have their circle point at infinity.
         let y = center + Vector2::new(0.0, 1.0) * radius;
-        let far = (y - t.poles()[1]).norm() / t.scale();
+        let far = (y - cremona(&t).poles()[1]).norm() / t.scale();
         if far > 1e-3 {
             assert!(
                 matches!(
@@ -159,7 +197,7 @@ fn collinear_poles_occur_only_in_the_translation_limit() {
 #[test]
 fn a_driven_center_on_the_pole_circle_has_its_circle_point_at_infinity() {
     let t = example();
-    let CircleOrLine::Circle { center, radius } = t.pole_circle() else {
+    let CircleOrLine::Circle { center, radius } = cremona(&t).pole_circle() else {
         panic!()
     };
     let w = Vector2::new(0.8f64.cos(), 0.8f64.sin());
@@ -180,16 +218,18 @@ fn a_driven_center_on_the_pole_circle_has_its_circle_point_at_infinity() {
     for off in [1e-6, -1e-6, 1e-9] {
         let c0 = center + w * (radius * (1.0 + off));
         let f = t.filemon(c0).unwrap();
-        let c1 = f.circle_point();
+        let c1 = f.driven_circle();
         assert!((c1 - c0).norm() > 1e3 * t.scale(), "C1 = {c1}");
         let Some(conics) = f.conics() else { continue };
         for g in conics {
-            for p in t.poles().iter().chain([&c0]) {
+            for p in cremona(&t).poles().iter().chain([&c0]) {
                 assert!(g.distance_estimate(*p) < 1e-9 * t.scale());
             }
         }
         for y in points(Point2::new(1.0, 0.0), 6.0, 200) {
-            if f.margin(y).abs() > 1e-7 * t.scale() && t.pole_circle().side(y).abs() > 1e-6 {
+            if f.margin(y).unwrap().abs() > 1e-7 * t.scale()
+                && cremona(&t).pole_circle().side(y).abs() > 1e-6
+            {
                 assert_eq!(
                     f.classify(y, Method::Conic).unwrap(),
                     f.classify(y, Method::Direct).unwrap(),
@@ -203,7 +243,7 @@ fn a_driven_center_on_the_pole_circle_has_its_circle_point_at_infinity() {
 #[test]
 fn a_line_tangent_to_the_image_pole_circle_gives_a_parabola() {
     let t = example();
-    let CircleOrLine::Circle { center, radius } = t.image_pole_circle() else {
+    let CircleOrLine::Circle { center, radius } = cremona(&t).image_pole_circle() else {
         panic!()
     };
     let vp = Viewport::new(-10.0, 10.0, -10.0, 10.0).unwrap();
@@ -221,12 +261,12 @@ fn a_line_tangent_to_the_image_pole_circle_gives_a_parabola() {
         assert_eq!(g.kind(), ConicKind::Parabola, "a = {a}");
         assert_eq!(g.center(), None);
         assert!(g.asymptotes().is_none());
-        let lines = g.polylines(&vp, None);
+        let lines = g.polylines(&vp, None).unwrap();
         assert_eq!(lines.len(), 1, "one branch");
         for p in &lines[0][1..lines[0].len() - 1] {
             assert!(g.distance_estimate(*p) < 1e-9);
         }
-        for p in t.poles() {
+        for p in cremona(&t).poles() {
             assert!(g.distance_estimate(p) < 1e-12);
         }
         // Property 1 on either side of the tangent.
@@ -241,7 +281,7 @@ fn a_line_tangent_to_the_image_pole_circle_gives_a_parabola() {
 #[test]
 fn a_filemon_line_tangent_to_the_image_pole_circle_gives_a_parabola() {
     let t = example();
-    let CircleOrLine::Circle { center, radius } = t.image_pole_circle() else {
+    let CircleOrLine::Circle { center, radius } = cremona(&t).image_pole_circle() else {
         panic!()
     };
     let c0_at = |s: f64| C0 + Vector2::new(1.0, 0.7) * s;
@@ -265,14 +305,16 @@ fn a_filemon_line_tangent_to_the_image_pole_circle_gives_a_parabola() {
     let f = t.filemon(c0_at(a)).unwrap();
     let (extremes, _) = f.extreme_poses().unwrap();
     assert!(extremes.contains(&1), "line 1 is a Filemon line");
-    let g = f.line_conic(1);
+    let g = f.line_conic(1).unwrap();
     assert_eq!(g.kind(), ConicKind::Parabola);
     assert!(g.center().is_none() && g.asymptotes().is_none());
     let vp = Viewport::new(-10.0, 10.0, -10.0, 10.0).unwrap();
-    assert_eq!(g.polylines(&vp, None).len(), 1);
+    assert_eq!(g.polylines(&vp, None).unwrap().len(), 1);
     // The classifiers still agree off the band.
     for y in points(Point2::new(0.0, 0.0), 8.0, 300) {
-        if f.margin(y).abs() > 1e-7 * t.scale() && t.pole_circle().side(y).abs() > 1e-6 {
+        if f.margin(y).unwrap().abs() > 1e-7 * t.scale()
+            && cremona(&t).pole_circle().side(y).abs() > 1e-6
+        {
             assert_eq!(
                 f.classify(y, Method::Conic).unwrap(),
                 f.classify(y, Method::Direct).unwrap(),
@@ -291,8 +333,8 @@ fn a_driving_center_at_a_pole_or_at_c0_is_a_boundary() {
         let is_c0 = k == 3;
         for q in [p, p + Vector2::new(0.5e-12, -0.5e-12) * s] {
             assert_eq!(f.classify(q, Method::Conic).unwrap(), Branch::Boundary);
-            assert_eq!(f.margin(q), 0.0);
-            assert!(f.margin(q).is_sign_negative());
+            assert_eq!(f.margin(q).unwrap(), 0.0);
+            assert!(f.margin(q).unwrap().is_sign_negative());
         }
         match f.classify(p, Method::Direct) {
             Ok(b) => {
@@ -355,7 +397,7 @@ fn points_on_the_curves() {
                 let n = g.gradient(p).normalize();
                 let step = 1e-7 * s;
                 if other.distance_estimate(p) < 1e3 * step
-                    || t.pole_circle().side(p).abs() < 1e3 * step
+                    || cremona(&t).pole_circle().side(p).abs() < 1e3 * step
                     || f.special_points()
                         .iter()
                         .any(|q| (q - p).norm() < 1e3 * step)
@@ -393,17 +435,21 @@ fn tasks_at_scale_1e_minus_6_and_1e6() {
     for k in [1e-6, 1e6] {
         let off = Vector2::new(3.0, -2.0) * k;
         let map = |p: Point2<f64>| Point2::from(p.coords * k + off);
-        let tk = Task::new(t.poses().map(|p| Pose {
-            position: map(p.position),
-            angle: p.angle,
-        }))
-        .unwrap();
+        let poses: Vec<Pose> = t
+            .poses()
+            .iter()
+            .map(|p| Pose {
+                position: map(p.position),
+                angle: p.angle,
+            })
+            .collect();
+        let tk = Task::new(&poses).unwrap();
         assert!((tk.scale() - k * t.scale()).abs() < 1e-12 * k * t.scale());
-        for (p, q) in t.poles().iter().zip(tk.poles()) {
+        for (p, q) in cremona(&t).poles().iter().zip(cremona(&tk).poles()) {
             assert!((map(*p) - q).norm() < 1e-12 * k * t.scale());
         }
         let fk = tk.filemon(map(C0)).unwrap();
-        assert!((map(f.circle_point()) - fk.circle_point()).norm() < 1e-11 * k * t.scale());
+        assert!((map(f.driven_circle()) - fk.driven_circle()).norm() < 1e-11 * k * t.scale());
         for (a, b) in f.conics().unwrap().iter().zip(fk.conics().unwrap()) {
             assert_eq!(a.kind(), b.kind());
         }
@@ -423,7 +469,10 @@ fn tasks_at_scale_1e_minus_6_and_1e6() {
                 if m1[idx] != mk[idx] {
                     // Only within rounding of a curve.
                     let p = g1.point(i, j);
-                    assert!(f.margin(p).abs() < 1e-9 * t.scale(), "k = {k} at {p}");
+                    assert!(
+                        f.margin(p).unwrap().abs() < 1e-9 * t.scale(),
+                        "k = {k} at {p}"
+                    );
                 }
             }
         }

@@ -4,22 +4,71 @@
 //! order and circuit against driving the linkage through its travel with
 //! the position analysis, and the constraints against direct geometry.
 
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 
-mod common;
-
+use burmester::linkage::Direction;
 use burmester::{
-    AssemblyMode, Constraints, DesignLimits, Dyad, Grashof, Grid, InputRequirement, Method, Point2,
-    SolutionMap, SynthesizedFourBar, Task, Vector2,
+    Constraints, Control, DesignLimits, Dyad, Filemon, Grashof, Grid, InputRequirement, Method,
+    Point2, RankBy, SynthesizedFourBar, Task,
 };
+use proptest::prelude::*;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
+
+/// `a` wrapped into `(-pi, pi]`.
+fn wrap(a: f64) -> f64 {
+    let mut a = a % TAU;
+    if a > PI {
+        a -= TAU;
+    } else if a <= -PI {
+        a += TAU;
+    }
+    a
+}
+
+/// Well-conditioned random tasks: poses within 5 of the origin, rotations
+/// between poses at least 0.1 rad (mod 2 pi), poles within 300 of the
+/// origin and a pole triangle at least 0.05 across.
+fn task() -> impl Strategy<Value = Task> {
+    prop::array::uniform3((-5.0f64..5.0, -5.0f64..5.0, -PI..PI)).prop_filter_map(
+        "ill-conditioned task",
+        |p| {
+            let t = Task::from_xya(&p.map(|(x, y, a)| [x, y, a])).ok()?;
+            if t.rotations().iter().any(|r| r.abs() < 0.1) {
+                return None;
+            }
+            let far = t
+                .poles()
+                .iter()
+                .map(|p| p.finite().map_or(f64::INFINITY, |p| p.coords.norm()))
+                .fold(0.0, f64::max);
+            (far < 300.0 && t.scale() > 0.05).then_some(t)
+        },
+    )
+}
+
+/// A random Filemon construction with a driven center point in
+/// `[-half, half]^2`, not all defective, and a driven crank of some length.
+fn filemon(runner: &mut TestRunner, half: f64) -> Filemon {
+    loop {
+        let t = task().new_tree(runner).unwrap().current();
+        let c = (-half..half, -half..half)
+            .new_tree(runner)
+            .unwrap()
+            .current();
+        if let Ok(f) = t.filemon(Point2::new(c.0, c.1)) {
+            if !f.all_defective() && (f.driven_circle() - f.driven().center).norm() > 1e-3 {
+                return f;
+            }
+        }
+    }
+}
 
 /// Random linkages of random tasks, with their figures.
 fn linkages(n: usize, seed_cases: &mut TestRunner) -> Vec<(Task, SynthesizedFourBar)> {
     let mut out = Vec::new();
     while out.len() < n {
-        let t = common::task().new_tree(seed_cases).unwrap().current();
+        let t = task().new_tree(seed_cases).unwrap().current();
         let pts = (-8.0f64..8.0, -8.0f64..8.0, -8.0f64..8.0, -8.0f64..8.0)
             .new_tree(seed_cases)
             .unwrap()
@@ -48,8 +97,8 @@ fn linkages(n: usize, seed_cases: &mut TestRunner) -> Vec<(Task, SynthesizedFour
 /// pose 1's mode; true when it passes pose 2 and then lands on pose 3
 /// without the loop failing to close.
 fn drive(t: &Task, fb: &SynthesizedFourBar, dir: f64, steps: usize) -> Option<bool> {
-    let mode = fb.modes[0]?;
-    let [t1, t2, t3] = fb.input_angles;
+    let mode = fb.modes()[0]?;
+    let (t1, t2, t3) = (fb.input_angles[0], fb.input_angles[1], fb.input_angles[2]);
     let ccw = |x: f64| {
         if dir > 0.0 {
             (x - t1).rem_euclid(TAU)
@@ -62,7 +111,7 @@ fn drive(t: &Task, fb: &SynthesizedFourBar, dir: f64, steps: usize) -> Option<bo
     let lands = |theta: f64, k: usize| {
         fb.pose_at(theta, mode).is_ok_and(|p| {
             (p.position - t.poses()[k].position).norm() < 1e-7 * size
-                && common::wrap(p.angle - t.poses()[k].angle).abs() < 1e-7
+                && wrap(p.angle - t.poses()[k].angle).abs() < 1e-7
         })
     };
     if d3 < d2 {
@@ -82,8 +131,8 @@ fn drive(t: &Task, fb: &SynthesizedFourBar, dir: f64, steps: usize) -> Option<bo
 
 /// The transmission angle's minimum by dense stepping over the travel.
 fn dense_min_transmission(fb: &SynthesizedFourBar, dir: f64, steps: usize) -> f64 {
-    let mode = fb.modes[0].unwrap();
-    let [t1, _, t3] = fb.input_angles;
+    let mode = fb.modes()[0].unwrap();
+    let (t1, t3) = (fb.input_angles[0], fb.input_angles[2]);
     let span = if dir > 0.0 {
         (t3 - t1).rem_euclid(TAU)
     } else {
@@ -105,11 +154,11 @@ fn min_transmission_matches_dense_stepping() {
     let mut checked = 0;
     for (t, fb) in linkages(400, &mut runner) {
         let fig = t.linkage_figures(&fb.driving, &fb.driven).unwrap();
-        if fig.direction == 0 || fb.modes[0].is_none() {
-            assert!(fig.min_transmission.is_nan() || fig.direction != 0);
+        if fig.direction == Direction::None || fb.modes()[0].is_none() {
+            assert!(fig.min_transmission.is_nan() || fig.direction != Direction::None);
             continue;
         }
-        let dense = dense_min_transmission(&fb, f64::from(fig.direction), 20_000);
+        let dense = dense_min_transmission(&fb, fig.direction.sign(), 20_000);
         // The analytic minimum is exact; dense stepping can only miss the
         // true minimum by a step's worth.
         assert!(
@@ -164,16 +213,20 @@ fn order_and_circuit_match_driving_the_linkage() {
     let (mut feasible, mut infeasible) = (0, 0);
     for (t, fb) in linkages(600, &mut runner) {
         let fig = t.linkage_figures(&fb.driving, &fb.driven).unwrap();
-        let Some(_) = fb.modes[0] else { continue };
+        let Some(_) = fb.modes()[0] else { continue };
         // Skip linkages within reach of a dead position at a pose: there
         // the stepping itself is ill-conditioned.
-        let near_dead = fb.input_angles.iter().zip(fb.modes).any(|(&th, m)| {
-            m.is_none_or(|m| {
-                fb.fourbar
-                    .solve(th, m)
-                    .is_ok_and(|c| c.transmission_angle() < 1e-3)
-            })
-        });
+        let near_dead = fb
+            .input_angles
+            .iter()
+            .zip(fb.modes().iter())
+            .any(|(&th, &m)| {
+                m.is_none_or(|m| {
+                    fb.fourbar
+                        .solve(th, m)
+                        .is_ok_and(|c| c.transmission_angle() < 1e-3)
+                })
+            });
         if near_dead {
             continue;
         }
@@ -187,7 +240,11 @@ fn order_and_circuit_match_driving_the_linkage() {
             fb.input_angles
         );
         if simulated {
-            let dir = if ok_ccw { 1 } else { -1 };
+            let dir = if ok_ccw {
+                Direction::Ccw
+            } else {
+                Direction::Cw
+            };
             assert_eq!(fig.direction, dir);
             feasible += 1;
         } else {
@@ -204,40 +261,43 @@ fn order_and_circuit_match_driving_the_linkage() {
 fn map_samples_match_the_linkage_at_each_point() {
     let mut runner = TestRunner::deterministic();
     for _ in 0..6 {
-        let f = common::filemon(&mut runner, 6.0);
+        let f = filemon(&mut runner, 6.0);
         let g = Grid::from_bounds(-9.0, 9.0, -8.0, 8.0, 41, 37).unwrap();
         let limits = DesignLimits::default();
-        let map = f.solution_map(&g, &limits, &Constraints::none()).unwrap();
+        let map = f
+            .solution_map(&g, &limits, &Constraints::none(), &Control::new())
+            .unwrap();
+        let m = &map.columns;
         let branch = f.branch_map(&g, Method::Conic);
-        assert_eq!(map.branch_free, branch);
+        assert_eq!(m.branch_free, branch);
         for k in 0..g.len() {
-            let p = map.point(k);
-            let Ok(fb) = map.linkage(k) else {
-                assert!(!map.valid[k] || !map.acceptable[k]);
+            let p = map.context.point(k);
+            let Ok(fb) = map.context.linkage(k) else {
+                assert!(!m.valid[k] || !m.acceptable[k]);
                 continue;
             };
-            if !map.valid[k] {
+            if !m.valid[k] {
                 continue;
             }
             let fig = f.task().linkage_figures(&fb.driving, &f.driven()).unwrap();
-            assert_eq!(
-                SolutionMap::grashof_of_code(map.grashof[k]),
-                Some(fig.grashof),
-                "{p}"
-            );
-            assert_eq!(map.direction[k], fig.direction, "{p}");
-            assert_eq!(map.one_circuit[k], fig.one_circuit);
-            assert_eq!(map.input_full[k], fig.input_full);
-            if fig.direction != 0 {
-                assert!((f64::from(map.min_transmission[k]) - fig.min_transmission).abs() < 1e-6);
+            assert_eq!(Grashof::from_code(m.grashof[k]), Some(fig.grashof), "{p}");
+            assert_eq!(m.direction[k], fig.direction.code(), "{p}");
+            assert_eq!(m.one_circuit[k], fig.one_circuit);
+            assert_eq!(m.input_full[k], fig.input_full);
+            if fig.direction != Direction::None {
+                assert!((f64::from(m.min_transmission_rad[k]) - fig.min_transmission).abs() < 1e-6);
             } else {
-                assert!(map.min_transmission[k].is_nan());
+                assert!(m.min_transmission_rad[k].is_nan());
             }
-            assert!((f64::from(map.link_ratio[k]) - fig.link_ratio).abs() < 1e-5 * fig.link_ratio);
-            let want = map.branch_free[k] && fig.meets(&limits);
-            // `meets` uses the modes; the map the conic flag: they agree off the curves.
-            if fig.branch_free() == map.branch_free[k] {
-                assert_eq!(map.acceptable[k], want, "{p}");
+            assert!((f64::from(m.link_ratio[k]) - fig.link_ratio).abs() < 1e-5 * fig.link_ratio);
+            // The map takes its branch flag from the conic sweep, everything
+            // else from the linkage's figures.
+            let want = m.branch_free[k] && limits.meets(&fig);
+            assert_eq!(m.acceptable[k], want, "{p}");
+            // `accepts` uses the modes instead of the conic flag: they agree
+            // off the curves.
+            if fig.branch_free() == m.branch_free[k] {
+                assert_eq!(m.acceptable[k], limits.accepts(&fig), "{p}");
             }
         }
     }
@@ -246,14 +306,17 @@ fn map_samples_match_the_linkage_at_each_point() {
 #[test]
 fn limits_and_input_requirements_filter_the_mask() {
     let mut runner = TestRunner::deterministic();
-    let f = common::filemon(&mut runner, 6.0);
+    let f = filemon(&mut runner, 6.0);
     let g = Grid::from_bounds(-9.0, 9.0, -9.0, 9.0, 60, 60).unwrap();
     let loose = DesignLimits {
         min_transmission: 0.0,
         max_link_ratio: f64::INFINITY,
         input: InputRequirement::Any,
     };
-    let base = f.solution_map(&g, &loose, &Constraints::none()).unwrap();
+    let base = f
+        .solution_map(&g, &loose, &Constraints::none(), &Control::new())
+        .unwrap()
+        .columns;
     for k in 0..g.len() {
         let feasible =
             base.valid[k] && base.branch_free[k] && base.direction[k] != 0 && base.one_circuit[k];
@@ -264,10 +327,13 @@ fn limits_and_input_requirements_filter_the_mask() {
         max_link_ratio: 5.0,
         input: InputRequirement::Crank,
     };
-    let m = f.solution_map(&g, &strict, &Constraints::none()).unwrap();
+    let m = f
+        .solution_map(&g, &strict, &Constraints::none(), &Control::new())
+        .unwrap()
+        .columns;
     for k in 0..g.len() {
         let want = base.acceptable[k]
-            && f64::from(base.min_transmission[k]) >= 40f64.to_radians()
+            && f64::from(base.min_transmission_rad[k]) >= 40f64.to_radians()
             && base.link_ratio[k] <= 5.0
             && base.input_full[k];
         assert_eq!(m.acceptable[k], want, "{k}");
@@ -291,54 +357,126 @@ fn inside(poly: &[Point2<f64>], p: Point2<f64>) -> bool {
     wn != 0
 }
 
-fn seg_seg_dist(a: Point2<f64>, b: Point2<f64>, c: Point2<f64>, d: Point2<f64>) -> f64 {
-    let pt_seg = |p: Point2<f64>, a: Point2<f64>, b: Point2<f64>| {
-        let ab = b - a;
-        let t = ((p - a).dot(&ab) / ab.norm_squared().max(1e-300)).clamp(0.0, 1.0);
-        (a + ab * t - p).norm()
-    };
-    let cr = |o: Point2<f64>, p: Point2<f64>, q: Point2<f64>| {
-        (p - o).x * (q - o).y - (p - o).y * (q - o).x
-    };
-    let crosses = cr(a, b, c) * cr(a, b, d) < 0.0 && cr(c, d, a) * cr(c, d, b) < 0.0;
+/// A point as plain numbers (the clearance reference steps densely, and
+/// plain arithmetic keeps it quick in unoptimized test builds).
+type Xy = (f64, f64);
+
+fn xy(p: Point2<f64>) -> Xy {
+    (p.x, p.y)
+}
+
+/// `cross(p - o, q - o)`.
+fn orient(o: Xy, p: Xy, q: Xy) -> f64 {
+    (p.0 - o.0) * (q.1 - o.1) - (p.1 - o.1) * (q.0 - o.0)
+}
+
+/// Distance from `p` to the segment `ab`.
+fn point_segment(p: Xy, a: Xy, b: Xy) -> f64 {
+    let (abx, aby) = (b.0 - a.0, b.1 - a.1);
+    let len2 = (abx * abx + aby * aby).max(1e-300);
+    let t = (((p.0 - a.0) * abx + (p.1 - a.1) * aby) / len2).clamp(0.0, 1.0);
+    (a.0 + abx * t - p.0).hypot(a.1 + aby * t - p.1)
+}
+
+/// Distance between the segments `ab` and `cd` (zero when they cross).
+fn seg_seg_dist(a: Xy, b: Xy, c: Xy, d: Xy) -> f64 {
+    let crosses =
+        orient(a, b, c) * orient(a, b, d) < 0.0 && orient(c, d, a) * orient(c, d, b) < 0.0;
     if crosses {
         return 0.0;
     }
-    pt_seg(a, c, d)
-        .min(pt_seg(b, c, d))
-        .min(pt_seg(c, a, b))
-        .min(pt_seg(d, a, b))
+    point_segment(a, c, d)
+        .min(point_segment(b, c, d))
+        .min(point_segment(c, a, b))
+        .min(point_segment(d, a, b))
 }
 
-/// Independent clearance: every link segment stays farther than `r` from
-/// the (convex, counter-clockwise) obstacle, over the sampled travel.
-fn clear(fb: &SynthesizedFourBar, dir: i8, obstacle: &[Point2<f64>], r: f64, n: usize) -> bool {
-    let mode = fb.modes[0].unwrap();
-    let [t1, _, t3] = fb.input_angles;
+/// Whether `p` is inside the convex, counter-clockwise polygon.
+fn inside_convex(poly: &[Xy], p: Xy) -> bool {
+    (0..poly.len()).all(|i| orient(poly[i], poly[(i + 1) % poly.len()], p) > 0.0)
+}
+
+/// The links at input angle `th`: the distance from the nearest moving link
+/// (a segment) to the obstacle (zero when one reaches into it), and the
+/// moving joints; `None` where the loop does not close.
+fn links_at(
+    fb: &SynthesizedFourBar,
+    mode: burmester::AssemblyMode,
+    th: f64,
+    obstacle: &[Xy],
+) -> Option<(f64, [Xy; 2])> {
+    let j = fb.fourbar.joints_at(th, mode).ok()?;
+    let (a0, a, c, c0) = (
+        xy(j.input_pivot),
+        xy(j.crank_joint),
+        xy(j.rocker_joint),
+        xy(j.output_pivot),
+    );
+    let mut closest = f64::INFINITY;
+    for (p, q) in [(a0, a), (a, c), (c0, c)] {
+        if inside_convex(obstacle, p) || inside_convex(obstacle, q) {
+            return Some((0.0, [a, c]));
+        }
+        for i in 0..obstacle.len() {
+            let (u, v) = (obstacle[i], obstacle[(i + 1) % obstacle.len()]);
+            closest = closest.min(seg_seg_dist(p, q, u, v));
+        }
+    }
+    Some((closest, [a, c]))
+}
+
+/// Independent clearance of the moving links (segments, the obstacle
+/// convex and counter-clockwise) over the travel in direction `dir`, by
+/// stepping the position analysis: `Some(false)` when some link comes
+/// closer than `r` to the obstacle at a step (a collision), `Some(true)`
+/// when between every two steps the links stay farther than `r` plus twice
+/// the joints' step (so also between the steps), `None` when some stretch
+/// stays too close to call even at a fine step. Stretches that come close
+/// at the coarse step are stepped again finely.
+fn clear(fb: &SynthesizedFourBar, dir: i8, obstacle: &[Point2<f64>], r: f64) -> Option<bool> {
+    const COARSE: usize = 200;
+    const FINE: usize = 40;
+    let obstacle: Vec<Xy> = obstacle.iter().map(|&p| xy(p)).collect();
+    let mode = fb.modes()[0].unwrap();
+    let (t1, t3) = (fb.input_angles[0], fb.input_angles[2]);
     let mut span = (t3 - t1).rem_euclid(TAU);
     if dir < 0 {
         span -= TAU;
     }
-    for s in 0..n {
-        let th = t1 + span * (s as f64 / (n - 1) as f64);
-        let j = fb.fourbar.joints_at(th, mode).unwrap();
-        for (a, b) in [
-            (j.input_pivot, j.crank_joint),
-            (j.crank_joint, j.rocker_joint),
-            (j.output_pivot, j.rocker_joint),
-        ] {
-            if inside(obstacle, a) || inside(obstacle, b) {
-                return false;
-            }
-            for i in 0..obstacle.len() {
-                let (c, d) = (obstacle[i], obstacle[(i + 1) % obstacle.len()]);
-                if seg_seg_dist(a, b, c, d) <= r {
-                    return false;
+    // The steps of `[from, to]` in `n` intervals; `Err(())` on a collision
+    // (or where the loop fails to close, which a feasible travel does not).
+    let steps = |from: f64, to: f64, n: usize| -> Result<Vec<(f64, f64, [Xy; 2])>, ()> {
+        (0..=n)
+            .map(|s| {
+                let th = from + (to - from) * (s as f64 / n as f64);
+                match links_at(fb, mode, th, &obstacle) {
+                    Some((d, joints)) if d >= r * (1.0 - 1e-9) => Ok((th, d, joints)),
+                    _ => Err(()),
                 }
-            }
+            })
+            .collect()
+    };
+    // Whether the stretch between two steps is certainly clear.
+    let safe = |a: &(f64, f64, [Xy; 2]), b: &(f64, f64, [Xy; 2])| {
+        let stride = (0..2)
+            .map(|k| (b.2[k].0 - a.2[k].0).hypot(b.2[k].1 - a.2[k].1))
+            .fold(0.0, f64::max);
+        a.1.min(b.1) > r + 2.0 * stride
+    };
+    let Ok(coarse) = steps(t1, t1 + span, COARSE) else {
+        return Some(false);
+    };
+    let mut undecided = false;
+    for w in coarse.windows(2) {
+        if safe(&w[0], &w[1]) {
+            continue;
         }
+        let Ok(fine) = steps(w[0].0, w[1].0, FINE) else {
+            return Some(false);
+        };
+        undecided |= !fine.windows(2).all(|v| safe(&v[0], &v[1]));
     }
-    true
+    (!undecided).then_some(true)
 }
 
 #[test]
@@ -351,7 +489,9 @@ fn constraints_match_direct_geometry() {
         max_link_ratio: f64::INFINITY,
         input: InputRequirement::Any,
     };
-    let free = f.solution_map(&g, &loose, &Constraints::none()).unwrap();
+    let free = f
+        .solution_map(&g, &loose, &Constraints::none(), &Control::new())
+        .unwrap();
     // An L-shaped (non-convex) base plate.
     let plate: Vec<Point2<f64>> = [
         (-8.0, -8.0),
@@ -374,29 +514,38 @@ fn constraints_match_direct_geometry() {
         link_width: 0.3,
         travel_samples: 48,
     };
-    let m = f.solution_map(&g, &loose, &cons).unwrap();
-    let (mut kept, mut cut_plate, mut cut_obstacle) = (0, 0, 0);
+    let m = f
+        .solution_map(&g, &loose, &cons, &Control::new())
+        .unwrap()
+        .columns;
+    let (mut kept, mut cut_plate, mut cut_obstacle, mut too_close) = (0, 0, 0, 0);
     for k in 0..g.len() {
-        if !free.acceptable[k] {
+        if !free.columns.acceptable[k] {
             assert!(!m.acceptable[k]);
             continue;
         }
-        let p = free.point(k);
+        let p = free.context.point(k);
         let on_plate = inside(&plate, p);
-        let fb = free.linkage(k).unwrap();
-        let ok = on_plate && clear(&fb, free.direction[k], &obstacle, 0.15, 48);
-        assert_eq!(m.acceptable[k], ok, "{p}: plate {on_plate}");
+        if !on_plate {
+            assert!(!m.acceptable[k], "{p}: off the plate");
+            cut_plate += 1;
+            continue;
+        }
+        let fb = free.context.linkage(k).unwrap();
+        let Some(ok) = clear(&fb, free.columns.direction[k], &obstacle, 0.15) else {
+            too_close += 1;
+            continue;
+        };
+        assert_eq!(m.acceptable[k], ok, "{p}: on the plate");
         if ok {
             kept += 1;
-        } else if !on_plate {
-            cut_plate += 1;
         } else {
             cut_obstacle += 1;
         }
     }
     assert!(
-        kept > 0 && cut_plate > 0 && cut_obstacle > 0,
-        "{kept} {cut_plate} {cut_obstacle}"
+        kept > 0 && cut_plate > 0 && cut_obstacle > 0 && too_close * 20 < kept + cut_obstacle,
+        "{kept} kept, {cut_plate} off the plate, {cut_obstacle} hit, {too_close} too close to call"
     );
 }
 
@@ -406,22 +555,34 @@ fn best_pivots_are_acceptable_ordered_separated_and_pass_the_poses() {
     let f = t.filemon(burmester::example::driven_center()).unwrap();
     let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 200, 200).unwrap();
     let map = f
-        .solution_map(&g, &DesignLimits::default(), &Constraints::none())
+        .solution_map(
+            &g,
+            &DesignLimits::default(),
+            &Constraints::none(),
+            &Control::new(),
+        )
         .unwrap();
-    let best = map.best_pivots(5, None);
+    let best = map.best_pivots(5, None, RankBy::Transmission).unwrap();
     assert!(!best.is_empty());
     let sep = 0.02 * g.viewport().diagonal();
     for (i, p) in best.iter().enumerate() {
-        assert!(map.acceptable[p.index]);
-        assert!(p.figures.meets(&map.context.limits));
+        let (row, col) = p.index;
+        let k = row * g.nx() + col;
+        assert_eq!(map.context.point(k), p.center);
+        assert!(map.columns.acceptable[k]);
+        assert_eq!(p.ranked_by, RankBy::Transmission);
+        assert!(map.context.limits.accepts(&p.linkage.figures));
         if i > 0 {
-            assert!(best[i - 1].figures.min_transmission >= p.figures.min_transmission - 1e-6);
+            assert!(
+                best[i - 1].linkage.figures.min_transmission
+                    >= p.linkage.figures.min_transmission - 1e-6
+            );
         }
         for q in &best[..i] {
             assert!((q.center - p.center).norm() >= sep);
         }
         assert!(p.margin > 0.0);
-        let mode = p.linkage.modes[0].unwrap();
+        let mode = p.linkage.modes()[0].unwrap();
         for k in 0..3 {
             let pose = p.linkage.pose_at(p.linkage.input_angles[k], mode).unwrap();
             assert!((pose.position - t.poses()[k].position).norm() < 1e-8);
@@ -429,13 +590,36 @@ fn best_pivots_are_acceptable_ordered_separated_and_pass_the_poses() {
     }
     // Nothing acceptable scores higher than the best.
     let top = map
-        .min_transmission
+        .columns
+        .min_transmission_rad
         .iter()
-        .zip(&map.acceptable)
+        .zip(&map.columns.acceptable)
         .filter(|(_, a)| **a)
         .map(|(v, _)| *v)
         .fold(f32::NEG_INFINITY, f32::max);
-    assert!((f64::from(top) - best[0].figures.min_transmission).abs() < 1e-6);
+    assert!((f64::from(top) - best[0].linkage.figures.min_transmission).abs() < 1e-6);
+    // The fallback ranking: branch-free candidates by their margin to the
+    // nearest curve, which is the Filemon margin at the pivot.
+    let by_margin = map.best_pivots(5, None, RankBy::Margin).unwrap();
+    assert!(!by_margin.is_empty());
+    for (i, p) in by_margin.iter().enumerate() {
+        let k = p.index.0 * g.nx() + p.index.1;
+        assert!(map.columns.valid[k] && map.columns.branch_free[k]);
+        assert_eq!(p.ranked_by, RankBy::Margin);
+        assert_eq!(p.margin, f.margin(p.center).unwrap());
+        assert!(p.margin > 0.0);
+        if i > 0 {
+            assert!(by_margin[i - 1].margin >= p.margin);
+        }
+        for q in &by_margin[..i] {
+            assert!((q.center - p.center).norm() >= sep);
+        }
+    }
+    let widest = (0..g.len())
+        .filter(|&k| map.columns.valid[k] && map.columns.branch_free[k])
+        .map(|k| f.margin(map.context.point(k)).unwrap())
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert_eq!(widest, by_margin[0].margin);
 }
 
 #[test]
@@ -443,34 +627,38 @@ fn the_other_direction_maps_driven_pivots() {
     let t = burmester::example::task();
     let driving = t.dyad_from_center(Point2::new(-3.0, 4.0)).unwrap();
     let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 40, 40).unwrap();
+    let limits = DesignLimits::default();
+    let none = Constraints::none();
+    let control = Control::new();
     let map = t
-        .driven_solution_map(&driving, &g, &DesignLimits::default(), &Constraints::none())
+        .driven_solution_map(&driving, &g, &limits, &none, &control)
         .unwrap();
+    let m = &map.columns;
     let mut free = 0;
     for k in 0..g.len() {
-        let c0 = map.point(k);
+        let c0 = map.context.point(k);
         let Ok(c) = t.dyad_from_center(c0) else {
             continue;
         };
         let Ok(fb) = t.four_bar(&driving, &c) else {
             continue;
         };
-        assert!(map.valid[k]);
-        assert_eq!(map.branch_free[k], fb.is_branch_free(), "{c0}");
+        assert!(m.valid[k]);
+        assert_eq!(m.branch_free[k], fb.is_branch_free(), "{c0}");
         let fig = t.linkage_figures(&driving, &c).unwrap();
-        assert_eq!(map.direction[k], fig.direction);
-        free += usize::from(map.branch_free[k]);
+        assert_eq!(m.direction[k], fig.direction.code());
+        free += usize::from(m.branch_free[k]);
     }
     assert!(free > 0 && free < g.len());
+    let best = map.best_pivots(3, None, RankBy::Transmission).unwrap();
     assert!(
-        map.best_pivots(3, None)
-            .iter()
-            .all(|p| map.acceptable[p.index])
+        best.iter()
+            .all(|p| m.acceptable[p.index.0 * g.nx() + p.index.1])
     );
     // A dyad that is not a dyad of the task is refused.
     let bad = Dyad::new(Point2::new(-3.0, 4.0), Point2::new(0.0, 0.0));
     assert!(
-        t.driven_solution_map(&bad, &g, &DesignLimits::default(), &Constraints::none())
+        t.driven_solution_map(&bad, &g, &limits, &none, &control)
             .is_err()
     );
 }
@@ -480,17 +668,20 @@ fn bad_limits_and_constraints_are_typed_errors() {
     let t = burmester::example::task();
     let f = t.filemon(burmester::example::driven_center()).unwrap();
     let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 8, 8).unwrap();
+    let control = Control::new();
+    let map =
+        |limits: &DesignLimits, cons: &Constraints| f.solution_map(&g, limits, cons, &control);
     let bad = DesignLimits {
         min_transmission: f64::NAN,
         ..DesignLimits::default()
     };
-    assert!(f.solution_map(&g, &bad, &Constraints::none()).is_err());
+    assert!(map(&bad, &Constraints::none()).is_err());
     let cons = Constraints {
         obstacles: vec![vec![Point2::new(0.0, 0.0), Point2::new(1.0, 1.0)]],
         link_width: 0.1,
         ..Constraints::none()
     };
-    assert!(f.solution_map(&g, &DesignLimits::default(), &cons).is_err());
+    assert!(map(&DesignLimits::default(), &cons).is_err());
     // fuzz/regressions/solution_map/obstacle-of-coincident-points-panics-in-hull:
     // parry's hull asserted on an obstacle without area.
     for obstacle in [
@@ -507,16 +698,14 @@ fn bad_limits_and_constraints_are_typed_errors() {
             link_width: 0.1,
             ..Constraints::none()
         };
-        let e = f
-            .solution_map(&g, &DesignLimits::default(), &cons)
-            .unwrap_err();
+        let e = map(&DesignLimits::default(), &cons).unwrap_err();
         assert!(e.to_string().contains("obstacle"), "{e}");
     }
     let cons = Constraints {
         base_plate: Some(vec![Point2::new(0.0, 0.0)]),
         ..Constraints::none()
     };
-    assert!(f.solution_map(&g, &DesignLimits::default(), &cons).is_err());
+    assert!(map(&DesignLimits::default(), &cons).is_err());
     let cons = Constraints {
         obstacles: vec![vec![
             Point2::new(0.0, 0.0),
@@ -526,6 +715,5 @@ fn bad_limits_and_constraints_are_typed_errors() {
         link_width: f64::NAN,
         ..Constraints::none()
     };
-    assert!(f.solution_map(&g, &DesignLimits::default(), &cons).is_err());
-    let _ = (AssemblyMode::Open, Vector2::<f64>::zeros());
+    assert!(map(&DesignLimits::default(), &cons).is_err());
 }
