@@ -4,65 +4,18 @@
 //! order and circuit against driving the linkage through its travel with
 //! the position analysis, and the constraints against direct geometry.
 
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
 
 use burmester::linkage::Direction;
 use burmester::{
-    Constraints, Control, DesignLimits, Dyad, Filemon, Grashof, Grid, InputRequirement, Method,
-    Point2, RankBy, SynthesizedFourBar, Task,
+    Constraints, Control, DesignLimits, Dyad, Grashof, Grid, InputRequirement, Method, Point2,
+    RankBy, SynthesizedFourBar, Task,
 };
-use proptest::prelude::*;
+mod common;
+
+use common::{filemon, task, wrap};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
-
-/// `a` wrapped into `(-pi, pi]`.
-fn wrap(a: f64) -> f64 {
-    let mut a = a % TAU;
-    if a > PI {
-        a -= TAU;
-    } else if a <= -PI {
-        a += TAU;
-    }
-    a
-}
-
-/// Well-conditioned random tasks: poses within 5 of the origin, rotations
-/// between poses at least 0.1 rad (mod 2 pi), poles within 300 of the
-/// origin and a pole triangle at least 0.05 across.
-fn task() -> impl Strategy<Value = Task> {
-    prop::array::uniform3((-5.0f64..5.0, -5.0f64..5.0, -PI..PI)).prop_filter_map(
-        "ill-conditioned task",
-        |p| {
-            let t = Task::from_xya(&p.map(|(x, y, a)| [x, y, a])).ok()?;
-            if t.rotations().iter().any(|r| r.abs() < 0.1) {
-                return None;
-            }
-            let far = t
-                .poles()
-                .iter()
-                .map(|p| p.finite().map_or(f64::INFINITY, |p| p.coords.norm()))
-                .fold(0.0, f64::max);
-            (far < 300.0 && t.scale() > 0.05).then_some(t)
-        },
-    )
-}
-
-/// A random Filemon construction with a driven center point in
-/// `[-half, half]^2`, not all defective, and a driven crank of some length.
-fn filemon(runner: &mut TestRunner, half: f64) -> Filemon {
-    loop {
-        let t = task().new_tree(runner).unwrap().current();
-        let c = (-half..half, -half..half)
-            .new_tree(runner)
-            .unwrap()
-            .current();
-        if let Ok(f) = t.filemon(Point2::new(c.0, c.1)) {
-            if !f.all_defective() && (f.driven_circle() - f.driven().center).norm() > 1e-3 {
-                return f;
-            }
-        }
-    }
-}
 
 /// Random linkages of random tasks, with their figures.
 fn linkages(n: usize, seed_cases: &mut TestRunner) -> Vec<(Task, SynthesizedFourBar)> {
