@@ -131,3 +131,44 @@ def test_an_exception_in_the_progress_hook_stops_the_sweep():
     with pytest.raises(RuntimeError, match="stop at"):
         f.branch_map(Grid(*VP, 3000, 3000), "simulate", out=out, progress=hook)
     assert time.monotonic() - t0 < 2.0  # not the whole sweep (about 15 s)
+
+
+#: The child of the first-call test: nothing of NumPy's C API used yet when
+#: the first array-returning call starts.
+FIRST_CALL = textwrap.dedent(
+    """
+    import sys
+    import burmester
+    f = burmester.Task({poses!r}).filemon({c0!r})
+    g = burmester.Grid(*{vp!r}, 400, 400)
+    print("started", flush=True)
+    try:
+        for _ in range(200):
+            f.branch_map(g, "direct")
+    except KeyboardInterrupt:
+        print("interrupted", flush=True)
+        sys.exit(0)
+    print("finished", flush=True)
+    """
+).format(poses=POSES, c0=C0, vp=VP)
+
+
+@pytest.mark.parametrize("after", [0.0, 0.001, 0.005, 0.02])
+def test_ctrl_c_during_the_first_array_call_of_a_process_is_a_keyboard_interrupt(after):
+    # Once: "PanicException: Failed to access NumPy array API capsule", which
+    # `except Exception` does not catch (NumPy's API was loaded lazily, inside
+    # the first call, with the signal pending). It is loaded at import now.
+    p = subprocess.Popen(
+        [sys.executable, "-c", FIRST_CALL], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        text=True, cwd=os.path.dirname(__file__),
+    )
+    try:
+        assert p.stdout.readline().strip() == "started", p.stderr.read()
+        time.sleep(after)
+        p.send_signal(signal.SIGINT)
+        out, err = p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    assert "Panic" not in err and "panicked" not in err, err
+    assert p.returncode == 0 and out.strip() == "interrupted", (p.returncode, out, err)
