@@ -1,7 +1,10 @@
 //! Conversions between NumPy arrays and Rust buffers.
 
 use numpy::ndarray::{Array, IxDyn};
-use numpy::{Element, IntoPyArray, PyArrayDyn, PyArrayMethods};
+use numpy::{
+    Element, IntoPyArray, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyReadwriteArrayDyn,
+    PyUntypedArrayMethods,
+};
 use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::IntoPyDict;
@@ -9,19 +12,34 @@ use pyo3::types::IntoPyDict;
 use crate::errors::{InvalidInputError, invalid};
 
 /// An array-like of real numbers (list, tuple, ndarray of a real dtype,
-/// nested to any depth), read as float64 in C order: its flat values and
-/// its shape.
+/// nested to any depth), read as float64 in C order: a C-contiguous float64
+/// NumPy array in native byte order is read in place (no copy); anything
+/// else is converted once by `numpy.asarray`.
 ///
 /// Errors say what to change: a ragged nesting or an int too large for a
 /// float is an `InvalidInputError`; strings, complex numbers and other
 /// objects that are not real numbers are a `TypeError` (NumPy would
 /// silently drop an imaginary part or turn `None` into NaN).
-pub(crate) struct FloatArray {
-    pub(crate) values: Vec<f64>,
-    pub(crate) shape: Vec<usize>,
+pub(crate) struct FloatArray<'py> {
+    /// C-contiguous (checked on extraction), so `as_slice` succeeds.
+    array: PyReadonlyArrayDyn<'py, f64>,
 }
 
-impl<'a, 'py> FromPyObject<'a, 'py> for FloatArray {
+impl FloatArray<'_> {
+    /// The values in C order, read in place.
+    pub(crate) fn values(&self) -> &[f64] {
+        self.array
+            .as_slice()
+            .expect("C-contiguous, checked on extraction")
+    }
+
+    /// The shape.
+    pub(crate) fn shape(&self) -> &[usize] {
+        self.array.shape()
+    }
+}
+
+impl<'a, 'py> FromPyObject<'a, 'py> for FloatArray<'py> {
     type Error = PyErr;
 
     fn extract(ob: pyo3::Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
@@ -41,7 +59,12 @@ impl<'a, 'py> FromPyObject<'a, 'py> for FloatArray {
         })?;
         let kind: String = arr.getattr("dtype")?.getattr("kind")?.extract()?;
         let arr = match kind.as_str() {
-            "b" | "i" | "u" | "f" => arr,
+            // A C-contiguous native float64 array comes back as itself.
+            "b" | "i" | "u" | "f" => np.call_method(
+                "asarray",
+                (arr,),
+                Some(&[("dtype", "float64"), ("order", "C")].into_py_dict(py)?),
+            )?,
             "O" => {
                 // Element by element, so that None is a TypeError rather than NaN
                 // and a huge int an InvalidInputError.
@@ -50,10 +73,8 @@ impl<'a, 'py> FromPyObject<'a, 'py> for FloatArray {
                     .call_method0("ravel")?
                     .call_method0("tolist")?
                     .extract()?;
-                return Ok(FloatArray {
-                    values: flat.into_iter().map(|r| r.0).collect(),
-                    shape,
-                });
+                let values = flat.into_iter().map(|r| r.0).collect();
+                to_numpy(py, &shape, values).into_any()
             }
             "c" => {
                 return Err(PyTypeError::new_err(
@@ -67,20 +88,21 @@ impl<'a, 'py> FromPyObject<'a, 'py> for FloatArray {
                 )));
             }
         };
-        let arr = np.call_method(
-            "asarray",
-            (arr,),
-            Some(&[("dtype", "float64"), ("order", "C")].into_py_dict(py)?),
-        )?;
-        let arr = arr.cast_into::<PyArrayDyn<f64>>().map_err(PyErr::from)?;
-        let ro = arr
+        let mut arr = arr.cast_into::<PyArrayDyn<f64>>().map_err(PyErr::from)?;
+        if !arr.is_aligned() {
+            // C-contiguous but misaligned (from a byte buffer at an odd
+            // offset, say): an aligned copy.
+            arr = arr.call_method0("copy")?.cast_into().map_err(PyErr::from)?;
+        }
+        let array = arr
             .try_readonly()
             .map_err(|e| PyTypeError::new_err(e.to_string()))?;
-        let view = ro.as_array();
-        Ok(FloatArray {
-            values: view.iter().copied().collect(),
-            shape: view.shape().to_vec(),
-        })
+        if array.as_slice().is_err() {
+            return Err(PyTypeError::new_err(
+                "expected a C-contiguous array after conversion; pass a NumPy array",
+            ));
+        }
+        Ok(FloatArray { array })
     }
 }
 
@@ -168,6 +190,46 @@ pub(crate) fn to_numpy<'py, T: Element>(
         .into_pyarray(py)
 }
 
+/// Outputs up to this many bytes are allocated through NumPy's C API
+/// directly (a failure there would be a panic, not a `MemoryError`, but
+/// such a small allocation does not fail).
+const SMALL_OUTPUT_BYTES: usize = 1 << 20;
+
+/// A fresh zero-filled, C-contiguous NumPy array of `shape` to write
+/// results into. A large one is made by `numpy.zeros`, so that a failed
+/// allocation is a `MemoryError`; its untouched pages cost no memory.
+pub(crate) fn zeros<'py, T: Element>(
+    py: Python<'py>,
+    shape: &[usize],
+) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
+    let bytes = shape
+        .iter()
+        .try_fold(size_of::<T>(), |acc, &d| acc.checked_mul(d));
+    if bytes.is_some_and(|b| b <= SMALL_OUTPUT_BYTES) {
+        return Ok(PyArrayDyn::<T>::zeros(py, IxDyn(shape), false));
+    }
+    let np = py.import("numpy")?;
+    let kwargs = [("dtype", T::get_dtype(py))].into_py_dict(py)?;
+    np.call_method("zeros", (shape.to_vec(),), Some(&kwargs))?
+        .cast_into::<PyArrayDyn<T>>()
+        .map_err(PyErr::from)
+}
+
+/// Write access to an array made by [`zeros`].
+pub(crate) fn writer<'py, T: Element>(
+    a: &Bound<'py, PyArrayDyn<T>>,
+) -> PyResult<PyReadwriteArrayDyn<'py, T>> {
+    a.try_readwrite()
+        .map_err(|e| PyTypeError::new_err(e.to_string()))
+}
+
+/// The values of an array made by [`zeros`], to fill (with the GIL
+/// released: a `&mut [T]` is `Send`).
+pub(crate) fn slice_mut<'a, T: Element>(w: &'a mut PyReadwriteArrayDyn<'_, T>) -> &'a mut [T] {
+    w.as_slice_mut()
+        .expect("numpy.zeros makes a C-contiguous array")
+}
+
 /// A point `(x, y)` from Python: any sequence of two numbers (tuple, list,
 /// NumPy array).
 #[derive(Debug, Clone, Copy)]
@@ -205,10 +267,27 @@ pub(crate) fn pt(p: burmester::Point2<f64>) -> (f64, f64) {
     (p.x, p.y)
 }
 
-/// Points from an array-like of shape `(..., 2)`: the flat points and the
+/// Points read in place from an array-like of shape `(..., 2)`.
+pub(crate) struct Points<'a> {
+    /// `x0, y0, x1, y1, ...`.
+    flat: &'a [f64],
+    /// The shape without its last axis (of length 2).
+    pub(crate) lead: Vec<usize>,
+}
+
+impl<'a> Points<'a> {
+    /// The points, in C order.
+    pub(crate) fn iter(&self) -> impl Iterator<Item = burmester::Point2<f64>> + Send + 'a {
+        self.flat
+            .chunks_exact(2)
+            .map(|c| burmester::Point2::new(c[0], c[1]))
+    }
+}
+
+/// Points from an array-like of shape `(..., 2)`, read in place, and their
 /// leading shape.
-pub(crate) fn points(a: &FloatArray) -> PyResult<(Vec<burmester::Point2<f64>>, Vec<usize>)> {
-    let shape = &a.shape;
+pub(crate) fn points<'a>(a: &'a FloatArray<'_>) -> PyResult<Points<'a>> {
+    let shape = a.shape();
     if shape.last() != Some(&2) {
         return Err(invalid(
             "shape",
@@ -217,12 +296,8 @@ pub(crate) fn points(a: &FloatArray) -> PyResult<(Vec<burmester::Point2<f64>>, V
             ),
         ));
     }
-    let lead = shape[..shape.len() - 1].to_vec();
-    Ok((
-        a.values
-            .chunks_exact(2)
-            .map(|c| burmester::Point2::new(c[0], c[1]))
-            .collect(),
-        lead,
-    ))
+    Ok(Points {
+        flat: a.values(),
+        lead: shape[..shape.len() - 1].to_vec(),
+    })
 }

@@ -6,7 +6,7 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
-use crate::conv::{Count, FloatArray, PyPoint, Real, pt, to_numpy};
+use crate::conv::{Count, FloatArray, PyPoint, Real, pt, slice_mut, writer, zeros};
 use crate::errors::{IntoPy, invalid};
 
 type Xy = (f64, f64);
@@ -226,18 +226,23 @@ impl PyConic {
     fn evaluate_many<'py>(
         &self,
         py: Python<'py>,
-        points: FloatArray,
+        points: FloatArray<'py>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let (pts, lead) = crate::conv::points(&points)?;
-        let c = self.inner;
-        let v: Vec<f64> = py
-            .detach(|| {
-                pts.iter()
-                    .map(|p| c.try_evaluate(*p))
-                    .collect::<Result<_, _>>()
+        let pts = crate::conv::points(&points)?;
+        let out = zeros::<f64>(py, &pts.lead)?;
+        {
+            let mut w = writer(&out)?;
+            let out_s = slice_mut(&mut w);
+            let c = self.inner;
+            py.detach(|| -> burmester::Result<()> {
+                for (p, v) in pts.iter().zip(out_s) {
+                    *v = c.try_evaluate(p)?;
+                }
+                Ok(())
             })
             .py()?;
-        Ok(to_numpy(py, &lead, v))
+        }
+        Ok(out)
     }
 
     fn side(&self, point: PyPoint) -> PyResult<i8> {

@@ -14,7 +14,7 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::conv::{FloatArray, PyPoint, Real, pt, to_numpy};
+use crate::conv::{FloatArray, PyPoint, Real, pt, slice_mut, writer, zeros};
 use crate::errors::{IntoPy, invalid};
 
 /// Parses `"open"` / `"crossed"`.
@@ -168,27 +168,28 @@ impl PyFourBar {
     fn solve_many<'py>(
         &self,
         py: Python<'py>,
-        theta2s: FloatArray,
+        theta2s: FloatArray<'py>,
         mode: &str,
     ) -> PyResult<Arrays<'py>> {
         let mode = self::mode(mode)?;
-        let FloatArray {
-            values: flat,
-            shape,
-        } = theta2s;
-        let n = flat.len();
-        let fb = self.inner;
-        let (t3, t4, ok) = py.detach(move || {
-            let (mut t3, mut t4, mut ok) = (vec![0.0; n], vec![0.0; n], vec![false; n]);
+        let (flat, shape) = (theta2s.values(), theta2s.shape());
+        let (t3, t4, ok) = (
+            zeros::<f64>(py, shape)?,
+            zeros::<f64>(py, shape)?,
+            zeros::<bool>(py, shape)?,
+        );
+        {
+            let (mut t3_w, mut t4_w, mut ok_w) = (writer(&t3)?, writer(&t4)?, writer(&ok)?);
+            let (t3_s, t4_s, ok_s) = (
+                slice_mut(&mut t3_w),
+                slice_mut(&mut t4_w),
+                slice_mut(&mut ok_w),
+            );
+            let fb = self.inner;
             // Lengths agree by construction, so this cannot fail.
-            let _ = fb.solve_into(&flat, mode, &mut t3, &mut t4, &mut ok);
-            (t3, t4, ok)
-        });
-        Ok((
-            to_numpy(py, &shape, t3),
-            to_numpy(py, &shape, t4),
-            to_numpy(py, &shape, ok),
-        ))
+            let _ = py.detach(|| fb.solve_into(flat, mode, t3_s, t4_s, ok_s));
+        }
+        Ok((t3, t4, ok))
     }
 
     #[getter]
@@ -256,7 +257,7 @@ impl PyFourBar {
         &self,
         py: Python<'py>,
         point: PyPoint,
-        theta2s: FloatArray,
+        theta2s: FloatArray<'py>,
         mode: &str,
     ) -> PyResult<Arrays<'py>> {
         let mode = self::mode(mode)?;
@@ -269,28 +270,31 @@ impl PyFourBar {
                 .expect("one item")
                 .py()?;
         }
-        let FloatArray {
-            values: flat,
-            shape,
-        } = theta2s;
-        let fb = self.inner;
-        let (xs, ys, ok) = py.detach(move || {
-            let n = flat.len();
-            let (mut xs, mut ys, mut ok) = (vec![f64::NAN; n], vec![f64::NAN; n], vec![false; n]);
-            for (i, p) in fb.coupler_path(local, flat, mode).enumerate() {
-                if let Ok(p) = p {
-                    xs[i] = p.x;
-                    ys[i] = p.y;
-                    ok[i] = true;
+        let (flat, shape) = (theta2s.values(), theta2s.shape());
+        let (xs, ys, ok) = (
+            zeros::<f64>(py, shape)?,
+            zeros::<f64>(py, shape)?,
+            zeros::<bool>(py, shape)?,
+        );
+        {
+            let (mut xs_w, mut ys_w, mut ok_w) = (writer(&xs)?, writer(&ys)?, writer(&ok)?);
+            let (xs_s, ys_s, ok_s) = (
+                slice_mut(&mut xs_w),
+                slice_mut(&mut ys_w),
+                slice_mut(&mut ok_w),
+            );
+            let fb = self.inner;
+            py.detach(|| {
+                let path = fb.coupler_path(local, flat.iter().copied(), mode);
+                for (((p, x), y), valid) in path.zip(xs_s).zip(ys_s).zip(ok_s) {
+                    (*x, *y, *valid) = match p {
+                        Ok(p) => (p.x, p.y, true),
+                        Err(_) => (f64::NAN, f64::NAN, false),
+                    };
                 }
-            }
-            (xs, ys, ok)
-        });
-        Ok((
-            to_numpy(py, &shape, xs),
-            to_numpy(py, &shape, ys),
-            to_numpy(py, &shape, ok),
-        ))
+            });
+        }
+        Ok((xs, ys, ok))
     }
 
     fn __repr__(&self) -> String {

@@ -9,7 +9,9 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PySequence, PyTuple};
 
-use crate::conv::{Count, FloatArray, PyPoint, Real, points, pt, to_numpy};
+use crate::conv::{
+    Count, FloatArray, PyPoint, Real, points, pt, slice_mut, to_numpy, writer, zeros,
+};
 use crate::design::MapOptions;
 use crate::errors::IntoPy;
 use crate::geom::{PyConic, grid_arg, vec2};
@@ -47,33 +49,37 @@ pub(crate) fn dyad_tuple(d: &Dyad) -> (Xy, Xy) {
 }
 
 /// Maps an array of points with `f`, returning the mapped points (NaN where
-/// it fails) and a validity mask.
+/// it fails) and a validity mask. A C-contiguous float64 input is read in
+/// place and the results are written straight into the returned arrays.
 fn map_points<'py>(
     py: Python<'py>,
-    input: FloatArray,
+    input: FloatArray<'py>,
     f: impl Fn(Point2<f64>) -> burmester::Result<Point2<f64>> + Send + Sync,
 ) -> PyResult<MappedPoints<'py>> {
-    let (pts, lead) = points(&input)?;
-    let (out, ok) = py.detach(|| {
-        let mut out = Vec::with_capacity(pts.len() * 2);
-        let mut ok = Vec::with_capacity(pts.len());
-        for p in &pts {
-            match f(*p) {
-                Ok(q) => {
-                    out.extend([q.x, q.y]);
-                    ok.push(true);
-                }
-                Err(_) => {
-                    out.extend([f64::NAN, f64::NAN]);
-                    ok.push(false);
+    let pts = points(&input)?;
+    let mut shape = pts.lead.clone();
+    shape.push(2);
+    let out = zeros::<f64>(py, &shape)?;
+    let ok = zeros::<bool>(py, &pts.lead)?;
+    {
+        let (mut out_w, mut ok_w) = (writer(&out)?, writer(&ok)?);
+        let (out_s, ok_s) = (slice_mut(&mut out_w), slice_mut(&mut ok_w));
+        py.detach(|| {
+            for ((p, q), valid) in pts.iter().zip(out_s.chunks_exact_mut(2)).zip(ok_s) {
+                match f(p) {
+                    Ok(r) => {
+                        q.copy_from_slice(&[r.x, r.y]);
+                        *valid = true;
+                    }
+                    Err(_) => {
+                        q.copy_from_slice(&[f64::NAN, f64::NAN]);
+                        *valid = false;
+                    }
                 }
             }
-        }
-        (out, ok)
-    });
-    let mut shape = lead.clone();
-    shape.push(2);
-    Ok((to_numpy(py, &shape, out), to_numpy(py, &lead, ok)))
+        });
+    }
+    Ok((out, ok))
 }
 
 /// The poses of a task from Python: a sequence of `(x, y, angle)`.
@@ -320,7 +326,7 @@ impl PyTask {
     fn circle_points<'py>(
         &self,
         py: Python<'py>,
-        centers: FloatArray,
+        centers: FloatArray<'py>,
     ) -> PyResult<MappedPoints<'py>> {
         // A task of four or five poses is a misuse, not a point without an
         // answer: raise instead of a mask of False.
@@ -332,7 +338,7 @@ impl PyTask {
     fn center_points<'py>(
         &self,
         py: Python<'py>,
-        circles: FloatArray,
+        circles: FloatArray<'py>,
     ) -> PyResult<MappedPoints<'py>> {
         // A task of four or five poses is a misuse, not a point without an
         // answer: raise instead of a mask of False.
