@@ -771,7 +771,6 @@ fn indeterminate(theta2: f64) -> Error {
     AssemblyError::Indeterminate { theta2 }.into()
 }
 
-
 /// The error of an input angle that is not finite or beyond
 /// [`FourBar::MAX_ANGLE`].
 #[cold]
@@ -900,7 +899,9 @@ mod tests {
             assert!(
                 matches!(
                     e,
-                    Error::InvalidInput(InvalidInput::TooLarge { .. } | InvalidInput::NotFinite { .. })
+                    Error::InvalidInput(
+                        InvalidInput::TooLarge { .. } | InvalidInput::NotFinite { .. }
+                    )
                 ),
                 "{t}: {e}"
             );
