@@ -666,7 +666,7 @@ impl FourBar {
     /// Each item is an error where [`FourBar::solve`] fails; a non-finite
     /// `local` gives [`InvalidInput::NotFinite`] for every item, and a point
     /// so far from the coupler that its position overflows gives
-    /// [`InvalidInput::OutOfRange`].
+    /// [`InvalidInput::Overflow`].
     pub fn coupler_path<'a, I>(
         &'a self,
         local: Vector2<f64>,

@@ -20,7 +20,7 @@
 //! ```
 //!
 //! A pure translation (`theta_ij = 0` modulo `2 pi`, within
-//! [`tolerance::MIN_ROTATION`](crate::tolerance::MIN_ROTATION)) has its pole
+//! [`tolerance::MIN_ROTATION`]) has its pole
 //! at infinity, in the direction perpendicular to the translation:
 //! [`Pole::AtInfinity`].
 

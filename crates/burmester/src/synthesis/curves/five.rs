@@ -69,7 +69,7 @@ impl FivePositions {
     /// poses; the errors of [`super::FourPositions::new`] for the poses
     /// (four of them rotations about one point give
     /// [`crate::DegenerateError::CoincidentPoles`]: a continuum of dyads);
-    /// [`crate::InvalidInput::OutOfRange`] when all poses have one angle (a
+    /// [`crate::DegenerateError::AllTranslations`] when all poses have one angle (a
     /// pure translation).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         if poses.len() != 5 {
