@@ -27,16 +27,11 @@ use nalgebra::{Matrix3, Point2, Vector2};
 use parry2d_f64::bounding_volume::Aabb;
 
 use crate::error::{InvalidInput, Result, finite};
-use crate::geom::{Line, Viewport, cross};
+use crate::geom::{Line, LocalFrame, Viewport, cross};
 
 /// Relative tolerance of the kind tests (parabola, degenerate).
 const KIND_TOLERANCE: f64 = 1e-12;
 
-/// Local coordinates (in units of the conic's frame) beyond which a point
-/// is evaluated scaled: `q(v) / m^2` with `m = max(|x|, |y|)`, which has the
-/// sign of `q(v)` and cannot overflow. Nearer points are evaluated by the
-/// plain formula, bit for bit as a grid sweep does.
-pub(crate) const FAR: f64 = 1e100;
 
 /// The kind of a conic.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -95,6 +90,13 @@ pub struct Conic {
     scale: f64,
     /// A point on the conic, local, if one is known exactly.
     known: Option<Vector2<f64>>,
+}
+
+impl LocalFrame for Conic {
+    #[inline]
+    fn frame(&self) -> (Point2<f64>, f64) {
+        (self.origin, self.scale)
+    }
 }
 
 impl Conic {
@@ -240,25 +242,6 @@ impl Conic {
         a * w.x * w.x + b * w.x * w.y + c * w.y * w.y
     }
 
-    #[inline]
-    fn local_of(&self, p: Point2<f64>) -> Vector2<f64> {
-        (p - self.origin) / self.scale
-    }
-
-    /// The local coordinates `v` of `p` as `(v / m, m)`: `m = 1` (and `v`
-    /// bit for bit) when `max(|x|, |y|) <= FAR`, else `m = max(|x|, |y|)`,
-    /// computed without overflow in `v / m` (`m` itself may be infinite).
-    #[inline]
-    fn local_scaled(&self, p: Point2<f64>) -> (Vector2<f64>, f64) {
-        let v = self.local_of(p);
-        if v.x.abs().max(v.y.abs()) <= FAR {
-            return (v, 1.0);
-        }
-        let w = p - self.origin;
-        let mw = w.x.abs().max(w.y.abs());
-        (w / mw, mw / self.scale)
-    }
-
     /// `q(v m) / m^2` for `(v, m)` from [`Conic::local_scaled`]: the plain
     /// evaluation when `m = 1`.
     #[inline]
@@ -283,10 +266,6 @@ impl Conic {
         )
     }
 
-    #[inline]
-    fn global_of(&self, v: Vector2<f64>) -> Point2<f64> {
-        self.origin + v * self.scale
-    }
     /// [`evaluate`](Self::evaluate) of a point checked to be finite.
     ///
     /// # Errors

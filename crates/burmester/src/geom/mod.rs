@@ -5,11 +5,13 @@
 
 pub mod conic;
 pub mod cubic;
+mod frame;
 mod grid;
 mod line;
 mod pose;
 
 pub use conic::{Conic, ConicKind};
+pub(crate) use frame::{FAR, LocalFrame};
 pub use cubic::Cubic;
 pub use grid::{Grid, Viewport};
 pub use line::{CircleOrLine, Line};

@@ -69,13 +69,10 @@ mod trace;
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{InvalidInput, Result, finite};
-use crate::geom::{Line, Viewport};
+use crate::geom::{Line, LocalFrame, Viewport};
 
 pub use trace::{CubicComponent, CubicTrace};
 
-/// Local coordinates (in units of the cubic's frame) beyond which a point is
-/// evaluated scaled, as `f(v) / m^3` with `m = max(|x|, |y|)`.
-const FAR: f64 = 1e100;
 
 /// Relative size (against the largest coefficient, which is 1) below which
 /// a coefficient counts as zero for [`Cubic::degree`] and
@@ -104,6 +101,13 @@ pub struct Cubic {
     c: [f64; 10],
     origin: Point2<f64>,
     scale: f64,
+}
+
+impl LocalFrame for Cubic {
+    #[inline]
+    fn frame(&self) -> (Point2<f64>, f64) {
+        (self.origin, self.scale)
+    }
 }
 
 impl Cubic {
@@ -181,15 +185,6 @@ impl Cubic {
         (self.c, self.origin, self.scale)
     }
 
-    #[inline]
-    pub(crate) fn local_of(&self, p: Point2<f64>) -> Vector2<f64> {
-        (p - self.origin) / self.scale
-    }
-
-    #[inline]
-    pub(crate) fn global_of(&self, v: Vector2<f64>) -> Point2<f64> {
-        self.origin + v * self.scale
-    }
 
     /// `f` at a local point.
     #[inline]
@@ -294,18 +289,6 @@ impl Cubic {
         ]
     }
 
-    /// The local coordinates of `p` as `(v / m, m)`: `m = 1` (and `v` as
-    /// is) when `max(|x|, |y|) <= FAR`, else `m = max(|x|, |y|)`.
-    #[inline]
-    fn local_scaled(&self, p: Point2<f64>) -> (Vector2<f64>, f64) {
-        let v = self.local_of(p);
-        if v.x.abs().max(v.y.abs()) <= FAR {
-            return (v, 1.0);
-        }
-        let w = p - self.origin;
-        let mw = w.x.abs().max(w.y.abs());
-        (w / mw, mw / self.scale)
-    }
 
     /// `f(u m) / m^3` for `(u, m)` from [`Cubic::local_scaled`].
     fn eval_scaled(&self, u: Vector2<f64>, m: f64) -> f64 {

@@ -7,7 +7,7 @@ use nalgebra::{Point2, Vector2};
 
 use super::Cubic;
 use super::roots::{form_eval, form_mul, form_roots, form_sub, real_roots, roots_in};
-use crate::geom::{Conic, Viewport};
+use crate::geom::{Conic, LocalFrame, Viewport};
 
 /// The traced curve: every real component of the cubic, with its
 /// polylines inside the viewport.

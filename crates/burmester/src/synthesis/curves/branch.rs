@@ -10,7 +10,7 @@ use super::four::FourPositions;
 use super::split::split_by;
 use crate::error::Result;
 use crate::geom::cubic::roots::quadratic_roots;
-use crate::geom::{Line, Viewport, cross, normalized};
+use crate::geom::{Line, LocalFrame, Viewport, cross, normalized};
 use crate::synthesis::Branch;
 use crate::synthesis::Dyad;
 

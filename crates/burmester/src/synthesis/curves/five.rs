@@ -9,7 +9,7 @@ use super::order::{Drive, drive};
 use super::{BURMESTER_RESIDUAL, COINCIDENT_POSES, DEGENERATE_CURVE};
 use crate::error::Result;
 use crate::geom::cubic::roots::{form_eval, form_mul, form_roots, form_sub, quadratic_roots};
-use crate::geom::{Cubic, Pose, wrap_angle};
+use crate::geom::{Cubic, LocalFrame, Pose, wrap_angle};
 use crate::synthesis::Dyad;
 
 /// A four-bar made of two Burmester dyads, classified for either dyad

@@ -13,7 +13,7 @@ use super::order::{CrankOrder, Drive, check_dyad, crank_angles, drive};
 use super::split::split_by;
 use super::{DEGENERATE_CURVE, ON_CURVE_TOLERANCE};
 use crate::error::Result;
-use crate::geom::{Cubic, Pose, Viewport, wrap_angle};
+use crate::geom::{Cubic, LocalFrame, Pose, Viewport, wrap_angle};
 use crate::linkage::{AngleInterval, AssemblyMode, FourBar, InputRange};
 use crate::synthesis::Dyad;
 

@@ -7,7 +7,7 @@ use nalgebra::{Point2, Vector2};
 use super::COINCIDENT_POSES;
 use super::errors;
 use crate::error::Result;
-use crate::geom::{Pose, cross, perp, rotate_cs, wrap_angle};
+use crate::geom::{LocalFrame, Pose, cross, perp, rotate_cs, wrap_angle};
 use crate::synthesis::Task;
 
 /// Why a row solve has no unique answer.
@@ -215,6 +215,13 @@ pub(crate) struct Motion {
     pub(crate) form: LinearForm,
 }
 
+impl LocalFrame for Motion {
+    #[inline]
+    fn frame(&self) -> (Point2<f64>, f64) {
+        (self.origin, self.scale)
+    }
+}
+
 impl Motion {
     /// The motion of `poses` (at most five).
     ///
@@ -319,17 +326,6 @@ impl Motion {
         })
     }
 
-    /// A fixed point in the local frame.
-    #[inline]
-    pub(crate) fn local_of(&self, p: Point2<f64>) -> Vector2<f64> {
-        (p - self.origin) / self.scale
-    }
-
-    /// A local vector back in the fixed frame.
-    #[inline]
-    pub(crate) fn global_of(&self, v: Vector2<f64>) -> Point2<f64> {
-        self.origin + v * self.scale
-    }
 
     /// `D_ij(z) = p_j + e^{i theta_ij} (z - p_i)` in the fixed frame
     /// (0-based `i`, `j`).

@@ -36,7 +36,7 @@ use core::f64::consts::PI;
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{DegenerateError, InvalidInput, Result, finite_point};
-use crate::geom::{CircleOrLine, cross, rotate_cs};
+use crate::geom::{CircleOrLine, LocalFrame, cross, rotate_cs};
 use crate::synthesis::motion::Motion;
 use crate::tolerance;
 
@@ -67,6 +67,13 @@ pub struct Cremona {
     /// `(cos, sin)` of `theta12/2` and `theta13/2`.
     half12: (f64, f64),
     half13: (f64, f64),
+}
+
+impl LocalFrame for Cremona {
+    #[inline]
+    fn frame(&self) -> (Point2<f64>, f64) {
+        (self.origin, self.scale)
+    }
 }
 
 impl Cremona {
@@ -172,17 +179,6 @@ impl Cremona {
         self.q13
     }
 
-    /// A fixed point in the local frame.
-    #[inline]
-    pub(crate) fn local_of(&self, p: Point2<f64>) -> Vector2<f64> {
-        (p - self.origin) / self.scale
-    }
-
-    /// A local-frame vector back in the fixed frame.
-    #[inline]
-    pub(crate) fn global_of(&self, v: Vector2<f64>) -> Point2<f64> {
-        self.origin + v * self.scale
-    }
 
     /// The circle point (moving pivot at pose 1) whose center point (fixed
     /// pivot) is `center`.

@@ -29,7 +29,7 @@ use core::str::FromStr;
 use nalgebra::{Matrix2, Point2, Vector2};
 
 use crate::error::{InvalidInput, Result, finite_point};
-use crate::geom::{Conic, Line, cross, normalized, wrap_angle};
+use crate::geom::{Conic, Line, LocalFrame, cross, normalized, wrap_angle};
 use crate::linkage::{AngleInterval, InputRange};
 use crate::synthesis::branch::{Branch, FilemonLines};
 use crate::synthesis::three::Cremona;

@@ -43,7 +43,7 @@ use crate::error::finite_point;
 use crate::tolerance;
 
 use crate::error::Result;
-use crate::geom::conic::FAR;
+use crate::geom::FAR;
 use crate::geom::{Conic, Grid};
 use crate::synthesis::three::{Filemon, Method};
 
