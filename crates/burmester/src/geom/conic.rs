@@ -32,7 +32,6 @@ use crate::geom::{Line, LocalFrame, Viewport, cross};
 /// Relative tolerance of the kind tests (parabola, degenerate).
 const KIND_TOLERANCE: f64 = 1e-12;
 
-
 /// The kind of a conic.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ConicKind {

@@ -11,8 +11,8 @@ mod line;
 mod pose;
 
 pub use conic::{Conic, ConicKind};
-pub(crate) use frame::{FAR, LocalFrame};
 pub use cubic::Cubic;
+pub(crate) use frame::{FAR, LocalFrame};
 pub use grid::{Grid, Viewport};
 pub use line::{CircleOrLine, Line};
 pub use pose::{MAX_POSES, PerPose, Pose, Similarity};

@@ -73,7 +73,6 @@ use crate::geom::{Line, LocalFrame, Viewport};
 
 pub use trace::{CubicComponent, CubicTrace};
 
-
 /// Relative size (against the largest coefficient, which is 1) below which
 /// a coefficient counts as zero for [`Cubic::degree`] and
 /// [`Cubic::is_circular`].
@@ -185,7 +184,6 @@ impl Cubic {
         (self.c, self.origin, self.scale)
     }
 
-
     /// `f` at a local point.
     #[inline]
     pub(crate) fn eval_local(&self, v: Vector2<f64>) -> f64 {
@@ -288,7 +286,6 @@ impl Cubic {
             roots::form_eval(&k, d.x, d.y),
         ]
     }
-
 
     /// `f(u m) / m^3` for `(u, m)` from [`Cubic::local_scaled`].
     fn eval_scaled(&self, u: Vector2<f64>, m: f64) -> f64 {

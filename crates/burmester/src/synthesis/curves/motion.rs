@@ -326,7 +326,6 @@ impl Motion {
         })
     }
 
-
     /// `D_ij(z) = p_j + e^{i theta_ij} (z - p_i)` in the fixed frame
     /// (0-based `i`, `j`).
     pub(crate) fn displace(&self, z: Point2<f64>, i: usize, j: usize) -> Point2<f64> {

@@ -179,7 +179,6 @@ impl Cremona {
         self.q13
     }
 
-
     /// The circle point (moving pivot at pose 1) whose center point (fixed
     /// pivot) is `center`.
     ///
