@@ -233,27 +233,7 @@ impl Task {
     pub fn four_bar(&self, driving: &Dyad, driven: &Dyad) -> Result<SynthesizedFourBar> {
         self.check_dyad(driving, "driving dyad")?;
         self.check_dyad(driven, "driven dyad")?;
-        let tiny = tolerance::POINT * self.scale();
-        for (a, b, what) in [
-            (driving.center, driven.center, "ground link"),
-            (driving.circle, driven.circle, "coupler link"),
-        ] {
-            if (a - b).norm() <= tiny {
-                return Err(DegenerateError::ZeroLengthLink {
-                    what,
-                    x: a.x,
-                    y: a.y,
-                }
-                .into());
-            }
-        }
-        let fourbar = FourBar::from_pivots(
-            driving.center,
-            driven.center,
-            driving.length(),
-            (driven.circle - driving.circle).norm(),
-            driven.length(),
-        )?;
+        let fourbar = linkage_of(driving, driven, tolerance::POINT * self.scale())?;
         let a = self.moving_pivots(driving);
         let c = self.moving_pivots(driven);
         let input_angles = a.map(|p| {
@@ -289,4 +269,35 @@ impl Task {
     pub fn linkage_figures(&self, driving: &Dyad, driven: &Dyad) -> Result<LinkageFigures> {
         Ok(self.four_bar(driving, driven)?.figures)
     }
+}
+
+/// The four-bar of two dyads (for any number of poses): ground from the
+/// driving to the driven center, crank and rocker their lengths, coupler
+/// between the circle points.
+///
+/// # Errors
+///
+/// [`DegenerateError::ZeroLengthLink`] when the ground or the coupler is
+/// within `tiny` of zero; errors of [`FourBar::from_pivots`].
+pub(crate) fn linkage_of(driving: &Dyad, driven: &Dyad, tiny: f64) -> Result<FourBar> {
+    for (a, b, what) in [
+        (driving.center, driven.center, "ground link"),
+        (driving.circle, driven.circle, "coupler link"),
+    ] {
+        if (a - b).norm() <= tiny {
+            return Err(DegenerateError::ZeroLengthLink {
+                what,
+                x: a.x,
+                y: a.y,
+            }
+            .into());
+        }
+    }
+    FourBar::from_pivots(
+        driving.center,
+        driven.center,
+        driving.length(),
+        (driven.circle - driving.circle).norm(),
+        driven.length(),
+    )
 }

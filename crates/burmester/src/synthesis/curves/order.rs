@@ -231,22 +231,7 @@ pub(crate) fn check_dyad(m: &Motion, dyad: &Dyad, what: &'static str) -> Result<
 pub(crate) fn drive(m: &Motion, driving: &Dyad, driven: &Dyad) -> Result<Drive> {
     check_dyad(m, driving, "driving dyad")?;
     check_dyad(m, driven, "driven dyad")?;
-    let tiny = COINCIDENT_POSES * m.scale;
-    for (a, b, what) in [
-        (driving.center, driven.center, "ground link"),
-        (driving.circle, driven.circle, "coupler link"),
-    ] {
-        if (a - b).norm() <= tiny {
-            return Err(errors::zero_length(what, a));
-        }
-    }
-    let fourbar = FourBar::from_pivots(
-        driving.center,
-        driven.center,
-        driving.length(),
-        (driven.circle - driving.circle).norm(),
-        driven.length(),
-    )?;
+    let fourbar = crate::synthesis::dyad::linkage_of(driving, driven, COINCIDENT_POSES * m.scale)?;
     let n = m.poses.len();
     let a: Vec<Point2<f64>> = (0..n).map(|k| m.displace(driving.circle, 0, k)).collect();
     let c: Vec<Point2<f64>> = (0..n).map(|k| m.displace(driven.circle, 0, k)).collect();
