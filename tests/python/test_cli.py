@@ -431,7 +431,7 @@ def test_work_parameters_are_bounded(args, words, capsys):
 def test_a_map_too_large_for_memory_is_one_line_and_status_2(monkeypatch, tmp_path, capsys):
     # A grid of 20000 x 20000 asks for more memory than a small machine has:
     # one line and status 2, not a traceback. The allocation failure is the
-    # core's MemoryError (tested in test_robustness); here it is forced.
+    # core's MemoryError (tested in test_findings.py); here it is forced.
     import burmester.cli as cli
 
     def no_memory(*args, **kwargs):
