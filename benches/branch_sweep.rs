@@ -16,7 +16,7 @@
 
 use std::hint::black_box;
 
-use burmester::{Constraints, DesignLimits, Grid, Method, example};
+use burmester::{Constraints, Control, DesignLimits, Grid, Method, example};
 use criterion::{
     BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group, criterion_main,
 };
@@ -26,6 +26,7 @@ const SIZES: [usize; 3] = [256, 1024, 4096];
 fn sweep(c: &mut Criterion) {
     let f = example::task().filemon(example::driven_center()).unwrap();
     let vp = example::viewport();
+    let control = Control::new();
     let mut g = c.benchmark_group("branch_sweep");
     g.sampling_mode(SamplingMode::Flat);
     for n in SIZES {
@@ -39,7 +40,7 @@ fn sweep(c: &mut Criterion) {
         });
         g.bench_with_input(BenchmarkId::new("conic", n), &n, |b, _| {
             b.iter(|| {
-                f.branch_map_into(&grid, Method::Conic, black_box(&mut out))
+                f.branch_map_into(&grid, Method::Conic, black_box(&mut out), &control)
                     .unwrap()
             })
         });
@@ -53,11 +54,14 @@ fn sweep(c: &mut Criterion) {
             })
         });
         g.bench_with_input(BenchmarkId::new("margin", n), &n, |b, _| {
-            b.iter(|| f.margin_map_into(&grid, black_box(&mut margin)).unwrap())
+            b.iter(|| {
+                f.margin_map_into(&grid, black_box(&mut margin), &control)
+                    .unwrap()
+            })
         });
         g.bench_with_input(BenchmarkId::new("direct", n), &n, |b, _| {
             b.iter(|| {
-                f.branch_map_into(&grid, Method::Direct, black_box(&mut out))
+                f.branch_map_into(&grid, Method::Direct, black_box(&mut out), &control)
                     .unwrap()
             })
         });
@@ -65,11 +69,14 @@ fn sweep(c: &mut Criterion) {
             let limits = DesignLimits::default();
             let none = Constraints::none();
             g.bench_with_input(BenchmarkId::new("solution_map", n), &n, |b, _| {
-                b.iter(|| f.solution_map(black_box(&grid), &limits, &none).unwrap())
+                b.iter(|| {
+                    f.solution_map(black_box(&grid), &limits, &none, &control)
+                        .unwrap()
+                })
             });
             g.bench_with_input(BenchmarkId::new("simulate", n), &n, |b, _| {
                 b.iter(|| {
-                    f.branch_map_into(&grid, Method::Simulate, black_box(&mut out))
+                    f.branch_map_into(&grid, Method::Simulate, black_box(&mut out), &control)
                         .unwrap()
                 })
             });

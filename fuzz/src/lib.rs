@@ -16,16 +16,27 @@
 //!   every circle point is defective is allowed;
 //! * documented consistencies: the branch map equals `classify` at the grid
 //!   points bit for bit, its point-by-point kernel equals its run kernel, the
-//!   margin's sign is the branch map, and a solved configuration carries the
-//!   assembly mode that was asked for.
+//!   margin's sign is the branch map, a map followed through a progress hook
+//!   equals one computed without and a cancelled one is
+//!   [`Error::Cancelled`], a three-pose task's poles are its
+//!   [`Cremona`]'s, a solved configuration carries the assembly mode that was
+//!   asked for, and the ranked pivots of a solution map are what their
+//!   ranking admits;
+//! * the work parameters of the polylines (the chord tolerance and the point
+//!   budget): a tolerance outside its documented range is
+//!   [`InvalidInput::OutsideRange`], a curve over the budget
+//!   [`InvalidInput::TooLarge`], and nothing else fails.
 //!
 //! The same functions run over the committed corpus in the main workspace's
 //! tests (`tests/rust/fuzz_corpus.rs`), so every finding stays a regression
 //! test without libFuzzer.
 
+use core::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
 use burmester::{
-    AssemblyMode, CircleOrLine, Conic, Constraints, DegenerateError, DesignLimits, Error, FourBar,
-    Grid, InputRequirement, Line, Method, Point2, Pose, SolutionMap, Task, Vector2, Viewport,
+    AssemblyMode, CircleOrLine, Conic, Constraints, Control, Cremona, DegenerateError,
+    DesignLimits, Direction, Dyad, Error, FourBar, Grashof, Grid, InputRequirement, InvalidInput,
+    Line, Method, Point2, Pole, Pose, RankBy, SolutionMap, Task, Vector2, Viewport,
 };
 
 /// Reads numbers from the fuzzer's bytes; past the end everything is zero.
@@ -169,6 +180,13 @@ pub fn finite(what: &str, v: f64) {
 #[track_caller]
 pub fn finite_pt(what: &str, p: Point2<f64>) {
     assert!(p.x.is_finite() && p.y.is_finite(), "{what} is {p:?}");
+}
+
+/// Asserts that `a` and `b` are the same, bit for bit (through their
+/// debug forms, so that a NaN carried by an error equals itself).
+#[track_caller]
+pub fn same<T: core::fmt::Debug>(what: &str, a: &T, b: &T) {
+    assert_eq!(format!("{a:?}"), format!("{b:?}"), "{what}");
 }
 
 /// Asserts that the message of `e` is not empty (formatting does not panic).
@@ -342,7 +360,7 @@ fn task(inp: &mut Input<'_>) -> Option<Task> {
             p
         }
     };
-    match Task::new(poses) {
+    match Task::new(&poses) {
         Ok(t) => Some(t),
         Err(e) => {
             message(&e);
@@ -351,20 +369,47 @@ fn task(inp: &mut Input<'_>) -> Option<Task> {
     }
 }
 
+/// The three-position maps of a task of three poses.
+fn cremona(t: &Task) -> &Cremona {
+    t.cremona()
+        .expect("a task of three poses has the three-position maps")
+}
+
 fn check_task(t: &Task) {
-    for p in t.poles().iter().chain(&t.image_poles()) {
+    assert_eq!(t.len(), 3);
+    let cr = cremona(t);
+    // The general poles of three poses are the Cremona poles, bit for bit
+    // (a pure translation is rejected for three poses).
+    let poles = t.poles();
+    assert_eq!(poles.len(), 3);
+    for (k, (p, q)) in poles.iter().zip(cr.poles()).enumerate() {
+        assert_eq!(*p, Pole::Finite(q), "pole {k}");
+    }
+    for p in cr.poles().iter().chain(&cr.image_poles()) {
         finite_pt("pole", *p);
     }
     let s = t.scale();
     assert!(s.is_finite() && s > 0.0, "scale {s}");
-    for r in t.rotations() {
+    assert_eq!(s.to_bits(), cr.scale().to_bits(), "task and Cremona scales");
+    let rotations = t.rotations();
+    assert_eq!(rotations.len(), 3);
+    for r in rotations {
         finite("rotation", r);
     }
-    for a in t.pole_triangle_angles() {
+    for (i, j) in [(1, 2), (1, 3), (2, 3)] {
+        finite("rotation", t.rotation(i, j).expect("valid pose indices"));
+    }
+    for (i, j) in [(0, 1), (1, 4)] {
+        match t.rotation(i, j) {
+            Ok(r) => panic!("rotation({i}, {j}) of three poses is {r}"),
+            Err(e) => message(&e),
+        }
+    }
+    for a in cr.pole_triangle_angles() {
         finite("pole triangle angle", a);
     }
     for k in 0..=4 {
-        match t.image_poles_in(k) {
+        match cr.image_poles_in(k) {
             Ok(ps) => ps.iter().for_each(|p| finite_pt("image pole", *p)),
             Err(e) => {
                 assert!(!(1..=3).contains(&k));
@@ -372,8 +417,8 @@ fn check_task(t: &Task) {
             }
         }
     }
-    circle_or_line("pole circle", t.pole_circle());
-    circle_or_line("image-pole circle", t.image_pole_circle());
+    circle_or_line("pole circle", cr.pole_circle());
+    circle_or_line("image-pole circle", cr.image_pole_circle());
 }
 
 /// A map result: a finite point, or a typed error with a unit direction.
@@ -406,11 +451,12 @@ fn check_map(t: &Task, what: &str, p: Point2<f64>, r: burmester::Result<Point2<f
 
 /// Points that exercise the special places of a task.
 fn probe_points(inp: &mut Input<'_>, t: &Task, extra: &[Point2<f64>]) -> Vec<Point2<f64>> {
-    let mut pts: Vec<Point2<f64>> = t.poles().to_vec();
-    pts.extend(t.image_poles());
+    let cr = cremona(t);
+    let mut pts: Vec<Point2<f64>> = cr.poles().to_vec();
+    pts.extend(cr.image_poles());
     pts.extend_from_slice(extra);
     let s = t.scale();
-    for c in [t.pole_circle(), t.image_pole_circle()] {
+    for c in [cr.pole_circle(), cr.image_pole_circle()] {
         if let CircleOrLine::Circle { center, radius } = c {
             let a = inp.nice();
             pts.push(center + Vector2::new(a.cos(), a.sin()) * radius);
@@ -425,7 +471,7 @@ fn probe_points(inp: &mut Input<'_>, t: &Task, extra: &[Point2<f64>]) -> Vec<Poi
                 base + Vector2::new(inp.nice(), inp.nice()) * (s * 1e-12)
             }
             _ => {
-                let base = t.poles()[0];
+                let base = cr.poles()[0];
                 base + Vector2::new(inp.nice(), inp.nice()) * s
             }
         };
@@ -434,26 +480,44 @@ fn probe_points(inp: &mut Input<'_>, t: &Task, extra: &[Point2<f64>]) -> Vec<Poi
     pts
 }
 
-/// Task construction, poles, circles and the maps.
+/// Task construction, poles, circles and the maps; then (from the bytes
+/// the three-pose checks leave) the same task with a fourth and a fifth pose.
 pub fn task_maps(data: &[u8]) {
     let mut inp = Input::new(data);
     let Some(t) = task(&mut inp) else { return };
     check_task(&t);
+    let cr = cremona(&t);
     let pts = probe_points(&mut inp, &t, &[]);
     let moderate = inp.moderate;
+    for (i, j) in [(0, 1), (2, 4)] {
+        match t.displace(Point2::origin(), i, j) {
+            Ok(q) => panic!("displace by poses {i}, {j} of three gave {q:?}"),
+            Err(e) => message(&e),
+        }
+    }
     for p in pts {
-        check_map(&t, "circle point", p, t.circle_point(p));
-        check_map(&t, "center point", p, t.center_point(p));
+        let circle = t.circle_point(p);
+        same("Task and Cremona", &circle, &cr.circle_point(p));
+        check_map(&t, "circle point", p, circle.clone());
+        let center = t.center_point(p);
+        same("Task and Cremona", &center, &cr.center_point(p));
+        check_map(&t, "center point", p, center);
         if let Ok(d) = t.dyad_from_center(p) {
-            for a in t.crank_angles(&d) {
+            assert_eq!(d, Dyad::new(p, circle.expect("the dyad's circle point")));
+            let angles = t.crank_angles(&d);
+            assert_eq!(angles.len(), 3);
+            for a in angles.iter() {
                 if moderate {
-                    finite("crank angle", a);
+                    finite("crank angle", *a);
                 }
             }
         }
         if moderate && p.x.is_finite() && p.y.is_finite() {
             for (i, j) in [(1, 2), (2, 3), (3, 1)] {
-                finite_pt("displaced", t.displace(p, i, j));
+                finite_pt(
+                    "displaced",
+                    t.displace(p, i, j).expect("valid pose indices"),
+                );
             }
         }
         let d = Vector2::new(inp.nice(), inp.nice());
@@ -471,29 +535,154 @@ pub fn task_maps(data: &[u8]) {
             Err(e) => message(&e),
         }
     }
+    more_poses(&mut inp, &t);
+}
+
+/// A task of four or five poses: the three of `t` and one or two more,
+/// read after everything else (so that inputs written for three poses keep
+/// their meaning). What holds for any number of poses: poles (at infinity
+/// for a pure translation, which more than three poses allow),
+/// displacements, rotations, crank angles; the three-position maps are
+/// typed errors.
+fn more_poses(inp: &mut Input<'_>, t: &Task) {
+    let n = inp.count(3, 5);
+    if n == 3 {
+        return;
+    }
+    let mut poses = t.poses().to_vec();
+    for _ in 3..n {
+        let p = match inp.byte() % 4 {
+            0 => pose(inp),
+            // A pure translation of an earlier pose.
+            1 => {
+                let q = poses[usize::from(inp.byte()) % poses.len()];
+                Pose::new(
+                    q.position.x + inp.nice(),
+                    q.position.y + inp.nice(),
+                    q.angle,
+                )
+            }
+            // A rotation about an earlier pole.
+            2 => {
+                let poles = t.poles();
+                let c = poles[usize::from(inp.byte()) % poles.len()]
+                    .finite()
+                    .expect("three poses have finite poles");
+                let q = poses[0];
+                let a = inp.nice();
+                let v = q.position - c;
+                let (s, co) = a.sin_cos();
+                Pose::new(
+                    c.x + co * v.x - s * v.y,
+                    c.y + s * v.x + co * v.y,
+                    q.angle + a,
+                )
+            }
+            _ => Pose::new(inp.nice(), inp.nice(), inp.nice()),
+        };
+        poses.push(p);
+    }
+    let more = match Task::new(&poses) {
+        Ok(m) => m,
+        Err(e) => return message(&e),
+    };
+    let moderate = inp.moderate;
+    assert_eq!(more.len(), n);
+    let s = more.scale();
+    assert!(s.is_finite() && s > 0.0, "scale {s}");
+    let poles = more.poles();
+    assert_eq!(poles.len(), n * (n - 1) / 2);
+    let pairs: Vec<(usize, usize)> = more.motion().pairs().collect();
+    assert_eq!(pairs.len(), poles.len());
+    for (p, &(i, j)) in poles.iter().zip(&pairs) {
+        assert_eq!(Ok(*p), more.motion().pole(i, j), "pole {i}{j}");
+        match p {
+            Pole::Finite(q) => finite_pt("pole", *q),
+            Pole::AtInfinity { direction } => {
+                let r = direction.norm();
+                assert!((r - 1.0).abs() < 1e-9, "pole {i}{j} at infinity along {r}");
+            }
+        }
+    }
+    let rotations = more.rotations();
+    assert_eq!(rotations.len(), pairs.len());
+    for (r, &(i, j)) in rotations.iter().zip(&pairs) {
+        finite("rotation", *r);
+        assert_eq!(Ok(*r), more.rotation(i, j));
+    }
+    for (i, j) in [(0, 1), (1, n + 1)] {
+        assert!(more.displace(Point2::origin(), i, j).is_err());
+        assert!(more.rotation(i, j).is_err());
+    }
+    assert!(more.motion().pole(2, 2).is_err());
+    let z = Point2::new(inp.nice(), inp.nice());
+    let moderate = moderate && inp.moderate;
+    for (i, j) in pairs {
+        match more.displace(z, i, j) {
+            Ok(d) => {
+                assert!(z.x.is_finite() && z.y.is_finite(), "displaced {z:?}");
+                if moderate {
+                    finite_pt("displaced", d);
+                }
+            }
+            Err(e) => {
+                assert!(!(z.x.is_finite() && z.y.is_finite()), "displace {z:?}: {e}");
+                message(&e);
+            }
+        }
+    }
+    let dyad = Dyad::new(Point2::new(inp.nice(), inp.nice()), z);
+    let angles = more.crank_angles(&dyad);
+    assert_eq!(angles.len(), n);
+    if moderate && inp.moderate {
+        angles.iter().for_each(|a| finite("crank angle", *a));
+    }
+    // The three-position maps need three poses.
+    let needs = |r: burmester::Result<()>| match r {
+        Err(Error::InvalidInput(InvalidInput::NeedsPoses {
+            required, found, ..
+        })) => {
+            assert_eq!((required, found), (3, n));
+        }
+        other => panic!("a task of {n} poses: {other:?}"),
+    };
+    needs(more.cremona().map(|_| ()));
+    needs(more.circle_point(z).map(|_| ()));
+    needs(more.center_point(z).map(|_| ()));
+    needs(more.filemon(z).map(|_| ()));
+    needs(
+        more.line_to_conic(&Line {
+            point: z,
+            direction: Vector2::x(),
+        })
+        .map(|_| ()),
+    );
 }
 
 /// Filemon's construction, the classifiers, the maps and the conic curves.
 pub fn filemon_classify(data: &[u8]) {
     let mut inp = Input::new(data);
     let Some(t) = task(&mut inp) else { return };
+    let poles = cremona(&t).poles();
     let c0 = match inp.byte() % 3 {
         0 => inp.point(),
-        1 => t.poles()[0] + Vector2::new(inp.nice(), inp.nice()) * t.scale(),
-        _ => t.poles()[usize::from(inp.byte()) % 3] + Vector2::new(inp.nice(), inp.nice()) * 1e-9,
+        1 => poles[0] + Vector2::new(inp.nice(), inp.nice()) * t.scale(),
+        _ => poles[usize::from(inp.byte()) % 3] + Vector2::new(inp.nice(), inp.nice()) * 1e-9,
     };
     inp.note_point(c0);
     let f = match t.filemon(c0) {
         Ok(f) => f,
         Err(e) => return message(&e),
     };
-    finite_pt("C1", f.circle_point());
+    let c1 = f.driven_circle();
+    finite_pt("C1", c1);
+    assert_eq!(f.driven(), Dyad::new(c0, c1));
     for p in f.fixed_pivot_images() {
         if inp.moderate {
             finite_pt("C'", p);
         }
     }
-    let mut pts = probe_points(&mut inp, &t, &[c0, f.circle_point()]);
+    let mut pts = probe_points(&mut inp, &t, &[c0, c1]);
     // Points on the curves, from lines through the known points.
     if let Some(cs) = f.conics() {
         for c in cs {
@@ -511,7 +700,11 @@ pub fn filemon_classify(data: &[u8]) {
     for p in &pts {
         let p = *p;
         if !(p.x.is_finite() && p.y.is_finite()) {
-            assert!(f.classify(p, Method::Conic).is_err());
+            for m in [Method::Conic, Method::Direct, Method::Simulate] {
+                assert!(f.classify(p, m).is_err());
+            }
+            assert!(f.margin(p).is_err());
+            assert!(f.conic_values(p).is_err());
             continue;
         }
         let conic = f
@@ -522,15 +715,16 @@ pub fn filemon_classify(data: &[u8]) {
                 message(&e);
             }
         }
-        let margin = f.margin(p);
+        let margin = f.margin(p).expect("a finite point has a margin");
+        let values = f.conic_values(p).expect("a finite point has conic values");
         assert!(
             !margin.is_nan(),
             "margin at {p:?}: {:?} {:?} {:?}",
             f.driven(),
             f.fixed_pivot_images(),
-            f.conic_values(p)
+            values
         );
-        if let Some(v) = f.conic_values(p)
+        if let Some(v) = values
             && moderate
         {
             finite("conic value", v[0]);
@@ -544,12 +738,14 @@ pub fn filemon_classify(data: &[u8]) {
         );
         match f.four_bar(p) {
             Ok(fb) => {
-                for v in fb.input_angles {
-                    finite("input angle", v);
+                assert_eq!(fb.input_angles.len(), 3);
+                for v in fb.input_angles.iter() {
+                    finite("input angle", *v);
                 }
                 finite("coupler point", fb.coupler_point.x);
                 finite("coupler point", fb.coupler_point.y);
-                for (k, m) in fb.modes.iter().enumerate() {
+                finite("coupler angle offset", fb.coupler_angle_offset);
+                for (k, m) in fb.modes().iter().enumerate() {
                     if let Some(m) = m
                         && let Ok(q) = fb.pose_at(fb.input_angles[k], *m)
                     {
@@ -583,6 +779,7 @@ pub fn filemon_classify(data: &[u8]) {
     let mut pw = vec![false; grid.len()];
     f.branch_map_pointwise_into(&grid, &mut pw).expect("length");
     assert_eq!(map, pw, "run and point kernels differ");
+    check_control(&f, &grid, &map);
     let margins = f.margin_map(&grid);
     let direct = f.branch_map(&grid, Method::Direct);
     for j in 0..ny {
@@ -590,6 +787,11 @@ pub fn filemon_classify(data: &[u8]) {
             let k = j * nx + i;
             let p = grid.point(i, j);
             let c = f.classify(p, Method::Conic).expect("finite point");
+            assert_eq!(
+                f.is_branch_free(p, Method::Conic),
+                Ok(c.is_free()),
+                "is_branch_free at {p:?}"
+            );
             assert_eq!(
                 map[k],
                 c.is_free(),
@@ -624,22 +826,119 @@ pub fn filemon_classify(data: &[u8]) {
     }
 }
 
+/// A map followed through a progress hook is the map computed without, bit
+/// for bit, and the hook reaches every row; a cancelled one is
+/// [`Error::Cancelled`] before any row; a buffer of another length is
+/// refused.
+fn check_control(f: &burmester::Filemon, grid: &Grid, map: &[bool]) {
+    let rows = AtomicUsize::new(0);
+    let hook = |done: usize, total: usize| {
+        assert!(
+            done <= total && total == grid.ny(),
+            "progress {done} of {total}"
+        );
+        rows.fetch_max(done, Ordering::Relaxed);
+    };
+    let followed = Control::new().with_progress(&hook);
+    let mut out = vec![false; grid.len()];
+    f.branch_map_into(grid, Method::Conic, &mut out, &followed)
+        .expect("not cancelled");
+    assert_eq!(out, map, "a map followed by a progress hook differs");
+    assert_eq!(rows.load(Ordering::Relaxed), grid.ny());
+    let mut margins = vec![0.0f32; grid.len()];
+    f.margin_map_into(grid, &mut margins, &followed)
+        .expect("not cancelled");
+    let plain = f.margin_map(grid);
+    assert!(
+        margins
+            .iter()
+            .zip(&plain)
+            .all(|(a, b)| a.to_bits() == b.to_bits()),
+        "a margin map followed by a progress hook differs"
+    );
+    let stop = AtomicBool::new(true);
+    let cancelled = Control::new().with_cancel(&stop);
+    for m in [Method::Conic, Method::Direct] {
+        match f.branch_map_into(grid, m, &mut out, &cancelled) {
+            Err(Error::Cancelled { done, total }) => {
+                assert_eq!((done, total), (0, grid.ny()));
+            }
+            other => panic!("a cancelled {m:?} map gave {other:?}"),
+        }
+    }
+    assert!(matches!(
+        f.margin_map_into(grid, &mut margins, &cancelled),
+        Err(Error::Cancelled { .. })
+    ));
+    let mut short = vec![false; grid.len() - 1];
+    assert!(matches!(
+        f.branch_map_into(grid, Method::Conic, &mut short, &Control::new()),
+        Err(Error::InvalidInput(InvalidInput::LengthMismatch { .. }))
+    ));
+    assert!(matches!(
+        f.branch_map_pointwise_into(grid, &mut short),
+        Err(Error::InvalidInput(InvalidInput::LengthMismatch { .. }))
+    ));
+}
+
 fn grid_viewport(g: &Grid) -> burmester::Result<Viewport> {
     let v = g.viewport();
     Viewport::new(v.xmin, v.xmax, v.ymin, v.ymax)
 }
 
+/// The default polylines of `c` on `vp` (see [`check_polylines`]).
 fn polylines(c: &Conic, vp: &Viewport) {
+    let _ = check_polylines(c, vp, None);
+}
+
+/// `c.polylines(vp, tolerance)`: an error only for a tolerance outside
+/// `[Conic::MIN_RELATIVE_TOLERANCE, 1]` times the viewport's diagonal
+/// ([`InvalidInput::OutsideRange`]) or a curve that needs more than
+/// [`Conic::MAX_POLYLINE_POINTS`] points ([`InvalidInput::TooLarge`]);
+/// otherwise at most that many finite points, in the viewport, in polylines
+/// of two points or more that do not stay on one point. Returns the result.
+fn check_polylines(
+    c: &Conic,
+    vp: &Viewport,
+    tolerance: Option<f64>,
+) -> burmester::Result<Vec<Vec<Point2<f64>>>> {
+    let diag = vp.diagonal();
+    let in_range =
+        tolerance.is_none_or(|t| (Conic::MIN_RELATIVE_TOLERANCE * diag..=diag).contains(&t));
+    let lines = match c.polylines(vp, tolerance) {
+        Ok(lines) => lines,
+        Err(e) => {
+            message(&e);
+            match &e {
+                Error::InvalidInput(InvalidInput::OutsideRange { name, .. }) => {
+                    assert_eq!(*name, "tolerance");
+                    assert!(!in_range, "tolerance {tolerance:?} refused on {vp:?}: {e}");
+                }
+                Error::InvalidInput(InvalidInput::TooLarge { .. }) => {
+                    assert!(in_range, "tolerance {tolerance:?}: {e}");
+                }
+                other => panic!("polylines of {c:?} on {vp:?}: {other:?}"),
+            }
+            return Err(e);
+        }
+    };
+    assert!(in_range, "tolerance {tolerance:?} accepted on {vp:?}");
+    let total: usize = lines.iter().map(Vec::len).sum();
+    assert!(total <= Conic::MAX_POLYLINE_POINTS, "{total} points");
     let (w, h) = vp.size();
     // Rounding of the conic's local frame (origin and unit) comes on top.
     let (_, origin, unit) = c.local_coefficients();
     let slack = 1e-14 * (origin.x.abs() + origin.y.abs() + unit)
         + 1e-6 * (w + h)
         + 1e-9 * (vp.xmax.abs().max(vp.xmin.abs()) + vp.ymax.abs().max(vp.ymin.abs()));
-    for l in c.polylines(vp, None) {
+    for l in &lines {
         assert!(l.len() >= 2);
-        for p in l {
-            finite_pt("polyline point", p);
+        assert!(l.iter().any(|p| *p != l[0]), "a polyline on one point");
+        for &p in l {
+            assert!(
+                p.x.is_finite() && p.y.is_finite(),
+                "polyline point {p:?} of {c:?} on {vp:?}, tolerance {tolerance:?}"
+            );
             assert!(
                 p.x >= vp.xmin - slack
                     && p.x <= vp.xmax + slack
@@ -650,6 +949,7 @@ fn polylines(c: &Conic, vp: &Viewport) {
             );
         }
     }
+    Ok(lines)
 }
 
 /// General conics: kind, center, axes, asymptotes, evaluation, polylines.
@@ -666,6 +966,13 @@ pub fn conic(data: &[u8]) {
     for v in c.coefficients() {
         finite("coefficient", v);
     }
+    // The stored form rebuilds the same conic, bit for bit.
+    let (q, origin, unit, known) = c.to_parts();
+    same(
+        "from_parts of to_parts",
+        &Conic::from_parts(q, origin, unit, known),
+        &Ok(c),
+    );
     finite("axis angle", c.axis_angle());
     if let Some(p) = c.center() {
         finite_pt("center", p);
@@ -681,6 +988,25 @@ pub fn conic(data: &[u8]) {
         let p = inp.point();
         let moderate = moderate && inp.moderate;
         let v = c.evaluate(p);
+        match c.try_evaluate(p) {
+            Ok(t) => {
+                assert!(p.x.is_finite() && p.y.is_finite());
+                assert_eq!(
+                    t.to_bits(),
+                    v.to_bits(),
+                    "try_evaluate and evaluate at {p:?}"
+                );
+                // Finite for every finite point (far points are scaled).
+                finite("value", t);
+            }
+            Err(e) => {
+                assert!(
+                    !(p.x.is_finite() && p.y.is_finite()),
+                    "try_evaluate at {p:?}"
+                );
+                message(&e);
+            }
+        }
         if p.x.is_finite() && p.y.is_finite() && moderate {
             finite("value", v);
             let g = c.gradient(p);
@@ -705,40 +1031,166 @@ pub fn conic(data: &[u8]) {
     }
 }
 
+/// The work parameters of [`Conic::polylines`]: the chord tolerance (none,
+/// the default given explicitly, anywhere in its range and at both ends,
+/// just outside it, raw numbers) and the point budget, on general, nearly
+/// degenerate and closed curves, on viewports at and around the curve.
+pub fn conic_polylines(data: &[u8]) {
+    let mut inp = Input::new(data);
+    let q: [f64; 6] = match inp.byte() % 4 {
+        0 => [0; 6].map(|_| inp.num()),
+        1 => [0; 6].map(|_| inp.nice()),
+        // Nearly a line pair: (a x + b y + c)(d x + e y + f) + eps.
+        2 => {
+            let l = [0; 6].map(|_| inp.nice());
+            let eps = inp.nice() * 10f64.powi(-i32::from(inp.byte() % 17));
+            [
+                l[0] * l[3],
+                l[0] * l[4] + l[1] * l[3],
+                l[1] * l[4],
+                l[0] * l[5] + l[2] * l[3],
+                l[1] * l[5] + l[2] * l[4],
+                l[2] * l[5] + eps,
+            ]
+        }
+        // An ellipse (or circle) with center, radii and axis angle.
+        _ => {
+            let (cx, cy) = (inp.nice(), inp.nice());
+            let (ra, rb) = (inp.nice(), inp.nice());
+            let t = inp.nice();
+            let (s, c) = t.sin_cos();
+            let (ia, ib) = (1.0 / (ra * ra), 1.0 / (rb * rb));
+            let a = c * c * ia + s * s * ib;
+            let b = 2.0 * c * s * (ia - ib);
+            let cc = s * s * ia + c * c * ib;
+            [
+                a,
+                b,
+                cc,
+                -2.0 * a * cx - b * cy,
+                -b * cx - 2.0 * cc * cy,
+                a * cx * cx + b * cx * cy + cc * cy * cy - 1.0,
+            ]
+        }
+    };
+    let c = match Conic::new(q[0], q[1], q[2], q[3], q[4], q[5]) {
+        Ok(c) => c,
+        Err(e) => return message(&e),
+    };
+    let vp = match inp.byte() % 3 {
+        0 => {
+            let (x0, y0, w, h) = (inp.num(), inp.num(), inp.num().abs(), inp.num().abs());
+            Viewport::new(x0, x0 + w, y0, y0 + h)
+        }
+        // Around the curve's center (or the origin), of a chosen size.
+        _ => {
+            let at = c.center().unwrap_or_else(Point2::origin);
+            let half = 10f64.powi(i32::from(inp.byte() % 25) - 12) * (1.0 + inp.nice().abs());
+            let aspect = 1.0 + inp.nice().abs();
+            let off = Vector2::new(inp.nice(), inp.nice()) * half;
+            let m = at + off;
+            Viewport::new(
+                m.x - half,
+                m.x + half,
+                m.y - half * aspect,
+                m.y + half * aspect,
+            )
+        }
+    };
+    let vp = match vp {
+        Ok(vp) => vp,
+        Err(e) => return message(&e),
+    };
+    let diag = vp.diagonal();
+    let lo = Conic::MIN_RELATIVE_TOLERANCE * diag;
+    let tolerance = match inp.byte() % 7 {
+        0 => None,
+        // The documented default, given explicitly: the same answer.
+        1 => {
+            let none = check_polylines(&c, &vp, None);
+            let given = check_polylines(&c, &vp, Some(diag * 1e-3));
+            same("None and the default tolerance", &none, &given);
+            return;
+        }
+        // Across the range: diag * 10^-k, k in 0..=9 (both ends exactly).
+        2 => Some(if inp.byte() % 10 == 9 {
+            lo
+        } else {
+            diag * 10f64.powi(-i32::from(inp.byte() % 10))
+        }),
+        // Just outside the range.
+        3 => Some(match inp.byte() % 4 {
+            0 => f64::from_bits(lo.to_bits().saturating_sub(1)),
+            1 => f64::from_bits(diag.to_bits() + 1),
+            2 => 0.0,
+            _ => -diag,
+        }),
+        // Raw numbers: NaN, infinities, signs, anything.
+        4 => Some(inp.num()),
+        // A fraction of the diagonal.
+        _ => Some(diag * (inp.nice().abs() % 1.0)),
+    };
+    let _ = check_polylines(&c, &vp, tolerance);
+}
+
 /// Checks the arrays of a solution map: lengths, and the documented
 /// relations between them (no unflagged NaN).
 fn check_solution_map(map: &SolutionMap) {
     let n = map.context.grid.len();
+    let c = &map.columns;
     for len in [
-        map.valid.len(),
-        map.branch_free.len(),
-        map.grashof.len(),
-        map.input_full.len(),
-        map.direction.len(),
-        map.one_circuit.len(),
-        map.min_transmission.len(),
-        map.link_ratio.len(),
-        map.acceptable.len(),
+        c.valid.len(),
+        c.branch_free.len(),
+        c.grashof.len(),
+        c.input_full.len(),
+        c.direction.len(),
+        c.one_circuit.len(),
+        c.min_transmission_rad.len(),
+        c.link_ratio.len(),
+        c.acceptable.len(),
     ] {
         assert_eq!(len, n);
     }
     for k in 0..n {
-        if map.acceptable[k] {
+        let direction = Direction::from_code(c.direction[k]);
+        assert_eq!(direction.code(), c.direction[k], "direction code");
+        if c.acceptable[k] {
             assert!(
-                map.valid[k] && map.branch_free[k] && map.direction[k] != 0 && map.one_circuit[k]
+                c.valid[k] && c.branch_free[k] && direction != Direction::None && c.one_circuit[k]
             );
+            let limits = &map.context.limits;
+            let t = f64::from(c.min_transmission_rad[k]);
+            // The limits hold in f64; the column is rounded to f32.
+            assert!(
+                t >= limits.min_transmission * (1.0 - 1e-6) - 1e-7,
+                "acceptable with transmission {t} below {}",
+                limits.min_transmission
+            );
+            let r = f64::from(c.link_ratio[k]);
+            // (A ratio beyond f32::MAX is infinite in the column.)
+            assert!(
+                r <= limits.max_link_ratio * (1.0 + 1e-6) || r.is_infinite(),
+                "acceptable with link ratio {r} above {}",
+                limits.max_link_ratio
+            );
+            match limits.input {
+                InputRequirement::Any => {}
+                InputRequirement::Crank => assert!(c.input_full[k]),
+                InputRequirement::Rocker => assert!(!c.input_full[k]),
+            }
         }
-        if !map.valid[k] {
-            assert!(!map.acceptable[k] && map.direction[k] == 0);
-            assert_eq!(map.grashof[k], SolutionMap::GRASHOF_NONE);
-            assert!(map.min_transmission[k].is_nan() && map.link_ratio[k].is_nan());
+        if !c.valid[k] {
+            assert!(!c.acceptable[k] && !c.branch_free[k] && c.direction[k] == 0);
+            assert!(!c.input_full[k] && !c.one_circuit[k]);
+            assert_eq!(c.grashof[k], SolutionMap::GRASHOF_NONE);
+            assert!(c.min_transmission_rad[k].is_nan() && c.link_ratio[k].is_nan());
             continue;
         }
-        assert!(SolutionMap::grashof_of_code(map.grashof[k]).is_some());
-        let r = map.link_ratio[k];
+        assert!(Grashof::from_code(c.grashof[k]).is_some());
+        let r = c.link_ratio[k];
         assert!(r >= 1.0, "link ratio {r}");
-        let t = map.min_transmission[k];
-        if map.direction[k] == 0 {
+        let t = c.min_transmission_rad[k];
+        if direction == Direction::None {
             assert!(t.is_nan(), "transmission {t} without a travel");
         } else {
             assert!(
@@ -755,8 +1207,8 @@ pub fn solution_map(data: &[u8]) {
     let mut inp = Input::new(data);
     let Some(t) = task(&mut inp) else { return };
     let s = t.scale();
-    let near =
-        |inp: &mut Input<'_>, t: &Task| t.poles()[0] + Vector2::new(inp.nice(), inp.nice()) * s;
+    let p12 = cremona(&t).poles()[0];
+    let near = |inp: &mut Input<'_>, _: &Task| p12 + Vector2::new(inp.nice(), inp.nice()) * s;
     let c0 = if inp.byte() % 2 == 0 {
         inp.point()
     } else {
@@ -822,28 +1274,96 @@ pub fn solution_map(data: &[u8]) {
         },
         travel_samples: inp.count(0, 16),
     };
-    match f.solution_map(&grid, &limits, &constraints) {
+    let control = Control::new();
+    match f.solution_map(&grid, &limits, &constraints, &control) {
         Err(e) => message(&e),
         Ok(map) => {
             check_solution_map(&map);
-            for p in map.best_pivots(inp.count(0, 4), None) {
-                assert!(map.acceptable[p.index]);
-                finite_pt("pivot", p.center);
-                assert!(p.figures.link_ratio >= 1.0);
-            }
+            check_cancelled(f.solution_map(&grid, &limits, &constraints, &cancelled()));
+            check_pivots(&map, inp.count(0, 4), None);
         }
     }
     // The other direction, with the driving dyad at a probe point.
     let a0 = near(&mut inp, &t);
     if let Ok(driving) = t.dyad_from_center(a0) {
-        match t.driven_solution_map(&driving, &grid, &limits, &constraints) {
+        match t.driven_solution_map(&driving, &grid, &limits, &constraints, &control) {
             Err(e) => message(&e),
             Ok(map) => {
                 check_solution_map(&map);
-                for p in map.best_pivots(2, Some(0.0)) {
-                    assert!(map.acceptable[p.index]);
+                check_cancelled(t.driven_solution_map(
+                    &driving,
+                    &grid,
+                    &limits,
+                    &constraints,
+                    &cancelled(),
+                ));
+                check_pivots(&map, 2, Some(0.0));
+            }
+        }
+    }
+}
+
+/// A control whose cancel flag is set.
+fn cancelled() -> Control<'static> {
+    static STOP: AtomicBool = AtomicBool::new(true);
+    Control::new().with_cancel(&STOP)
+}
+
+/// A map that succeeds uncancelled is [`Error::Cancelled`] when cancelled
+/// before it starts.
+fn check_cancelled(r: burmester::Result<SolutionMap>) {
+    match r {
+        Err(Error::Cancelled { done, .. }) => assert_eq!(done, 0),
+        other => panic!("a cancelled solution map gave {other:?}"),
+    }
+}
+
+/// The `k` best pivots of `map` by each ranking: at most `k`, each a sample
+/// its ranking admits (acceptable by transmission, valid and branch-free by
+/// margin) with its linkage and a positive margin, farther than the
+/// separation from every better one, best first.
+fn check_pivots(map: &SolutionMap, k: usize, min_separation: Option<f64>) {
+    let c = &map.columns;
+    let nx = map.context.grid.nx();
+    let sep = min_separation.unwrap_or(0.02 * map.context.grid.viewport().diagonal());
+    for rank in [RankBy::Transmission, RankBy::Margin] {
+        let pivots = map
+            .best_pivots(k, min_separation, rank)
+            .expect("a valid separation");
+        assert!(pivots.len() <= k);
+        for (n, p) in pivots.iter().enumerate() {
+            let (j, i) = p.index;
+            let s = j * nx + i;
+            assert!(i < nx && s < map.context.grid.len(), "index {:?}", p.index);
+            assert_eq!(p.center, map.context.point(s));
+            assert_eq!(p.ranked_by, rank);
+            finite_pt("pivot", p.center);
+            assert!(p.linkage.figures.link_ratio >= 1.0);
+            assert!(
+                p.margin > 0.0,
+                "pivot {:?} by {rank:?} with margin {}",
+                p.index,
+                p.margin
+            );
+            match rank {
+                RankBy::Transmission => assert!(c.acceptable[s]),
+                RankBy::Margin => assert!(c.valid[s] && c.branch_free[s]),
+            }
+            for q in &pivots[..n] {
+                assert!(
+                    (q.center - p.center).norm() >= sep,
+                    "pivots closer than {sep}"
+                );
+                if rank == RankBy::Margin {
+                    assert!(q.margin >= p.margin, "margins out of order");
                 }
             }
         }
+    }
+    for bad in [-1.0, f64::NAN, f64::INFINITY] {
+        assert!(matches!(
+            map.best_pivots(k, Some(bad), RankBy::Transmission),
+            Err(Error::InvalidInput(InvalidInput::OutsideRange { .. }))
+        ));
     }
 }

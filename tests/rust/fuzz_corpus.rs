@@ -54,3 +54,8 @@ fn conic() {
 fn solution_map() {
     replay("solution_map", checks::solution_map);
 }
+
+#[test]
+fn conic_polylines() {
+    replay("conic_polylines", checks::conic_polylines);
+}
