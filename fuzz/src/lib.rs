@@ -891,10 +891,12 @@ fn polylines(c: &Conic, vp: &Viewport) {
     let _ = check_polylines(c, vp, None);
 }
 
-/// `c.polylines(vp, tolerance)`: an error only for a tolerance outside
-/// `[Conic::MIN_RELATIVE_TOLERANCE, 1]` times the viewport's diagonal
-/// ([`InvalidInput::OutsideRange`]) or a curve that needs more than
-/// [`Conic::MAX_POLYLINE_POINTS`] points ([`InvalidInput::TooLarge`]);
+/// `c.polylines(vp, tolerance)`: an error only for a viewport whose
+/// diagonal is beyond [`Conic::MAX_VIEWPORT_DIAGONAL`] (first), a
+/// tolerance outside `[Conic::MIN_RELATIVE_TOLERANCE, 1]` times the
+/// viewport's diagonal ([`InvalidInput::OutsideRange`]) or a curve that
+/// needs more than [`Conic::MAX_POLYLINE_POINTS`] points
+/// ([`InvalidInput::TooLarge`]);
 /// otherwise at most that many finite points, in the viewport, in polylines
 /// of two points or more that do not stay on one point. Returns the result.
 fn check_polylines(
@@ -903,12 +905,26 @@ fn check_polylines(
     tolerance: Option<f64>,
 ) -> burmester::Result<Vec<Vec<Point2<f64>>>> {
     let diag = vp.diagonal();
+    let huge = diag.is_nan() || diag > Conic::MAX_VIEWPORT_DIAGONAL;
     let in_range =
         tolerance.is_none_or(|t| (Conic::MIN_RELATIVE_TOLERANCE * diag..=diag).contains(&t));
     let lines = match c.polylines(vp, tolerance) {
         Ok(lines) => lines,
         Err(e) => {
             message(&e);
+            if huge {
+                assert!(
+                    matches!(
+                        &e,
+                        Error::InvalidInput(InvalidInput::TooLarge {
+                            name: "viewport diagonal",
+                            ..
+                        })
+                    ),
+                    "polylines on a huge {vp:?}: {e}"
+                );
+                return Err(e);
+            }
             match &e {
                 Error::InvalidInput(InvalidInput::OutsideRange { name, .. }) => {
                     assert_eq!(*name, "tolerance");
@@ -922,6 +938,7 @@ fn check_polylines(
             return Err(e);
         }
     };
+    assert!(!huge, "a viewport of diagonal {diag} accepted");
     assert!(in_range, "tolerance {tolerance:?} accepted on {vp:?}");
     let total: usize = lines.iter().map(Vec::len).sum();
     assert!(total <= Conic::MAX_POLYLINE_POINTS, "{total} points");

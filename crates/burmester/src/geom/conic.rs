@@ -111,10 +111,14 @@ impl Conic {
         for (n, v) in names.iter().zip(q) {
             finite(n, v)?;
         }
-        if q[..5].iter().all(|&v| v == 0.0) {
+        // After scaling to a largest coefficient of 1, so that a quadratic
+        // part that underflows against `F` (say `1e-300` beside `1e300`)
+        // is refused as it would be by `from_parts`.
+        let c = Self::local(q, Point2::origin(), 1.0, None);
+        if c.q[..5].iter().all(|&v| v == 0.0) {
             return Err(InvalidInput::ConicCoefficients.into());
         }
-        Ok(Self::local(q, Point2::origin(), 1.0, None))
+        Ok(c)
     }
 
     /// The conic's exact stored form: its local coefficients (largest 1 in
@@ -496,6 +500,10 @@ impl Conic {
     /// The most points [`Conic::polylines`] returns.
     pub const MAX_POLYLINE_POINTS: usize = 10_000_000;
 
+    /// The largest viewport diagonal of [`Conic::polylines`] (beyond, the
+    /// sampler's differences of coordinates could overflow).
+    pub const MAX_VIEWPORT_DIAGONAL: f64 = 1e300;
+
     /// The curve sampled into polylines clipped to `viewport`, each
     /// branch separately and never joined across infinity.
     ///
@@ -509,13 +517,25 @@ impl Conic {
     /// [`InvalidInput::OutsideRange`] for a tolerance outside that range
     /// (or not finite); [`InvalidInput::TooLarge`] when the curve would
     /// need more than [`Conic::MAX_POLYLINE_POINTS`] points (a nearly
-    /// degenerate conic at a fine tolerance).
+    /// degenerate conic at a fine tolerance), or for a viewport whose
+    /// diagonal is beyond [`Conic::MAX_VIEWPORT_DIAGONAL`].
     pub fn polylines(
         &self,
         viewport: &Viewport,
         tolerance: Option<f64>,
     ) -> Result<Vec<Vec<Point2<f64>>>> {
         let diag = viewport.diagonal();
+        // Not `>`: an overflowed (infinite) diagonal fails too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(diag <= Self::MAX_VIEWPORT_DIAGONAL) {
+            return Err(InvalidInput::TooLarge {
+                name: "viewport diagonal",
+                value: diag,
+                limit: Self::MAX_VIEWPORT_DIAGONAL,
+                hint: "draw a smaller viewport",
+            }
+            .into());
+        }
         let tol = match tolerance {
             None => diag * 1e-3,
             Some(t) => crate::error::in_range(
@@ -903,6 +923,7 @@ impl Sampler<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::Error;
 
     fn vp() -> Viewport {
         Viewport::new(-5.0, 5.0, -5.0, 5.0).unwrap()
@@ -1026,6 +1047,56 @@ mod tests {
         }
         for p in [Point2::new(1.0, 2.0), Point2::new(-3.0, 0.5)] {
             assert!((g.evaluate(p) - k * local.evaluate(p)).abs() < 1e-12);
+        }
+    }
+
+    /// Fuzz finding (`conic`): a quadratic part that underflows against a
+    /// huge `F` once gave a conic without a curve, which `from_parts` then
+    /// refused (the round trip broke).
+    #[test]
+    fn coefficients_that_underflow_to_no_curve_are_refused() {
+        let e = Conic::new(1e-300, 0.0, 0.0, 0.0, 0.0, 1e300).unwrap_err();
+        assert!(matches!(e, Error::InvalidInput(InvalidInput::ConicCoefficients)));
+        let c = Conic::new(1e-300, 0.0, 0.0, 0.0, 0.0, 1e-290).unwrap();
+        let (q, o, s, k) = c.to_parts();
+        assert_eq!(Conic::from_parts(q, o, s, k).unwrap(), c);
+    }
+
+    /// Fuzz findings (`conic_polylines`): viewports of the size of
+    /// `f64::MAX` once gave NaN points inside an `Ok`.
+    #[test]
+    fn polylines_refuse_viewports_too_large_to_sample() {
+        let c = Conic::new(
+            1.0,
+            -0.05235987755982988,
+            3.7084564308453e-310,
+            0.0,
+            0.0,
+            -0.05235987755982988,
+        )
+        .unwrap();
+        let v = Viewport::new(4e-323, f64::MAX, 4e-323, f64::MAX).unwrap();
+        assert!(matches!(
+            c.polylines(&v, None).unwrap_err(),
+            Error::InvalidInput(InvalidInput::TooLarge { .. })
+        ));
+        let c = Conic::new(
+            6.966104075427817e-21,
+            -0.0014543504901960785,
+            0.0,
+            0.0005732843137254902,
+            0.0,
+            1.0,
+        )
+        .unwrap();
+        let v = Viewport::new(2.33e-321, 1.036e-6, 0.0, f64::MAX).unwrap();
+        assert!(c.polylines(&v, Some(1e308)).is_err());
+        // At the largest viewport allowed, every point is finite.
+        let v = Viewport::new(-3e299, 3e299, -3e299, 3e299).unwrap();
+        for t in [None, Some(3e299)] {
+            for line in c.polylines(&v, t).unwrap() {
+                assert!(line.iter().all(|p| p.x.is_finite() && p.y.is_finite()));
+            }
         }
     }
 }
