@@ -746,9 +746,8 @@ pub fn filemon_classify(data: &[u8]) {
                 finite("coupler point", fb.coupler_point.y);
                 finite("coupler angle offset", fb.coupler_angle_offset);
                 for (k, m) in fb.modes().iter().enumerate() {
-                    if let Some(m) = m
-                        && let Ok(q) = fb.pose_at(fb.input_angles[k], *m)
-                    {
+                    // Not a let chain: the crate's tests build on Rust 1.85.
+                    if let Some(Ok(q)) = m.map(|m| fb.pose_at(fb.input_angles[k], m)) {
                         finite_pt("pose", q.position);
                         finite("pose angle", q.angle);
                     }
