@@ -27,7 +27,8 @@ def pose(deg: float) -> tuple:
 def main() -> None:
     out = Path(__file__).resolve().parents[1] / "docs" / "four-five.png"
     fig, (left, right) = plt.subplots(2, 1, figsize=(8.0, 11.0))
-    plot.burmester_plane(burmester.Task([pose(d) for d in (20, 70, 120, 170)]), (-6, 12, -5, 8), ax=left)
+    four = burmester.Task([pose(d) for d in (20, 70, 120, 170)])
+    plot.burmester_plane(four, (-6, 12, -5, 8), driven=(4.0, 0.0), ax=left)   # the known rocker's pivot
     plot.burmester_plane(burmester.Task([pose(d) for d in (20, 70, 120, 170, 230)]), (-6, 12, -5, 8), ax=right)
     fig.savefig(out, dpi=72, bbox_inches="tight")
     print(f"wrote {out} ({out.stat().st_size // 1024} KiB)")

@@ -662,6 +662,19 @@ class Task:
         pieces of constant crank order, as ``(order, direction, points)``:
         ``direction`` is the way the crank meets the poses in their order
         (``None``: out of order); the cuts are the exact points ``Q_jk``."""
+    def branch_free_arcs(
+        self, driven_center: Point, xmin: float, xmax: float, ymin: float, ymax: float
+    ) -> list[FloatArray]:
+        """Four poses only: the pieces of the center-point curve in the
+        viewport whose driving dyads pass the four poses in one assembly mode
+        with the driven dyad of ``driven_center`` (a point of the curve):
+        Filemon's construction with four lines, the arc ends exact (each line
+        meets the circle-point curve in the roots of one quadratic)."""
+    def curve_branch(self, driven_center: Point, center: Point) -> BranchClass:
+        """Four poses only: the branch class of the driving dyad of
+        ``center`` (on the curve) with the driven dyad of ``driven_center``:
+        ``"free"`` (one assembly mode at the four poses), ``"defective"``, or
+        ``"boundary"`` (a toggle at a pose)."""
     def burmester_points(self) -> list[Tuple[Point, Point]]:
         """Five poses only: the Burmester points as dyads ``(center, circle)``
         (none, two or four; nearest the task first): the circle point's five

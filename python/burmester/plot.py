@@ -392,6 +392,7 @@ def burmester_plane(
     task: Task,
     view: Optional[Sequence[float]] = None,
     *,
+    driven: Optional[Point] = None,
     labels: bool = True,
     legend: bool = True,
     ax: Optional[Axes] = None,
@@ -405,6 +406,11 @@ def burmester_plane(
     clockwise, grey with an order defect; gid ``"center-point-curve"``, one
     Line2D per piece); the poles (gid ``"poles"``, labelled ``Pjk``); the
     points ``Q_jk`` (gid ``"coincidence-points"``); the poses (gid ``"poses"``).
+    With ``driven`` (the center point of a driven dyad, on the curve), the
+    driving center points that pass the poses in one assembly mode with it
+    are drawn under the curve as a wide band (:meth:`burmester.Task.branch_free_arcs`,
+    gid ``"branch-free-arcs"``) and the driven pivot as a triangle (gid
+    ``"driven-pivot"``).
 
     **Five poses**: the center-point curves of poses 1-4 and 1-2-3-5 (gids
     ``"curve-1234"``, ``"curve-1235"``), whose common points other than
@@ -415,6 +421,8 @@ def burmester_plane(
         task: a :class:`burmester.Task` of four or five poses.
         view: ``(xmin, xmax, ymin, ymax)``; default:
             :func:`burmester.taskfile.default_curve_view`.
+        driven: four poses: the driven dyad's center point ``C0``, to show
+            the branch-free driving pivots.
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
         ax: the Axes to draw into; default: a new figure.
@@ -444,6 +452,22 @@ def burmester_plane(
     ax = _new_axes(ax)
     handles: List[Any] = []
     labelled: Dict[Optional[str], bool] = {}
+    if n == 4 and driven is not None:
+        first = True
+        for pts in task.branch_free_arcs(driven, *extent):
+            (band,) = ax.plot(pts[:, 0], pts[:, 1], color=FREE_COLOR, linewidth=9.0,
+                              solid_capstyle="butt", zorder=2)
+            band.set_gid("branch-free-arcs")
+            if first:
+                band.set_label("branch-free driving pivots for C0")
+                handles.append(band)
+                first = False
+        handles.append(_markers(
+            ax, [driven], "driven-pivot", "driven crank's fixed pivot C0",
+            marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=6,
+        ))
+        if labels:
+            _label(ax, driven, "C0")
     if n == 4:
         for order, direction, pts in task.order_arcs(*extent):
             (line,) = ax.plot(pts[:, 0], pts[:, 1], color=ORDER_COLORS[direction], linewidth=2.0, zorder=3)

@@ -193,7 +193,7 @@ METHODS = {
     Task: "rotation image_poles image_poles_in pole_circle image_pole_circle pole_triangle_angles displace "
           "circle_point center_point circle_points center_points dyad crank_angles filemon four_bar "
           "driven_solution_map line_to_conic center_point_curve circle_point_curve coincidence_points "
-          "curve_dyad curve_dyads order_arcs burmester_points burmester_curves burmester_four_bars",
+          "curve_dyad curve_dyads order_arcs branch_free_arcs curve_branch burmester_points burmester_curves burmester_four_bars",
     Filemon: "line_conic is_branch_free classify classify_circle_point circle_signs conic_values four_bar "
              "branch_map margin_map margin solution_map",
     SynthesizedFourBar: "travel_angles pose_at",

@@ -233,6 +233,44 @@ def test_order_arcs_carry_the_order_of_their_dyads():
     assert _crank_order(t.crank_angles(A0)) == "1-2-3-4"
 
 
+def test_branch_free_arcs_against_the_built_linkages():
+    """Filemon's construction with four lines against the assembly modes of
+    the four-bars built at sampled driving pivots (a direct computation)."""
+    t = Task(FOUR)
+    arcs = t.branch_free_arcs(B0, -12, 12, -12, 12)
+    assert arcs
+    # The known crank is branch-free with the known rocker.
+    assert t.curve_branch(B0, A0) == "free"
+    checked = 0
+    for pts in arcs:
+        for g in pts[1:-1]:
+            g = (float(g[0]), float(g[1]))
+            try:
+                sfb = t.four_bar(g, B0)
+            except burmester.BurmesterError:
+                continue
+            assert sfb.branch_free, g
+            assert t.curve_branch(B0, g) == "free"
+            checked += 1
+    assert checked > 20
+    # Off the arcs, on the curve: defective where the built linkage is.
+    defective = 0
+    for pl in t.center_point_curve().polylines(-12, 12, -12, 12):
+        for g in pl[::9]:
+            g = (float(g[0]), float(g[1]))
+            try:
+                cls, sfb = t.curve_branch(B0, g), t.four_bar(g, B0)
+            except burmester.BurmesterError:
+                continue
+            if cls == "defective":
+                assert not sfb.branch_free, g
+                defective += 1
+    assert defective > 5
+    with pytest.raises(InvalidInputError) as e:
+        t.branch_free_arcs((5.0, 5.0), -12, 12, -12, 12)
+    assert e.value.cause == "off_curve"
+
+
 # ---------------------------------------------------------------------------
 # Five poses
 
@@ -402,6 +440,11 @@ def test_the_picture_draws_the_curve_the_poles_and_the_points():
     (qs,) = by_gid["coincidence-points"]
     assert len(qs.get_xdata()) == sum(1 for q in t.coincidence_points() if q.center is not None)
     assert "poses" in by_gid
+    plt.close(ax.figure)
+    ax = plot.burmester_plane(t, (-12, 12, -12, 12), driven=B0, legend=False)
+    bands = [a for a in ax.get_children() if a.get_gid() == "branch-free-arcs"]
+    assert len(bands) == len(t.branch_free_arcs(B0, -12, 12, -12, 12))
+    assert any(a.get_gid() == "driven-pivot" for a in ax.get_children())
     plt.close(ax.figure)
 
     t5 = Task(FIVE)

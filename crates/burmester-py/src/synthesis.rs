@@ -411,6 +411,37 @@ impl PyTask {
             .collect())
     }
 
+    /// Four poses: the branch-free arcs of the center-point curve in view
+    /// for the driven dyad with this center point (Filemon's construction
+    /// with four lines, exact arc ends).
+    #[allow(clippy::too_many_arguments)]
+    fn branch_free_arcs<'py>(
+        &self,
+        py: Python<'py>,
+        driven_center: PyPoint,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+        let four = curves::four(&self.inner, "Task.branch_free_arcs")?;
+        let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
+        let driven = four.dyad_from_center(driven_center.0).py()?;
+        let arcs = four.filemon(&driven).py()?;
+        let lines = py.detach(|| arcs.free_center_arcs(&vp));
+        Ok(lines.iter().map(|l| curves::polyline(py, l)).collect())
+    }
+
+    /// Four poses: the branch class (`"free"`, `"defective"`, `"boundary"`)
+    /// of a driving center point on the curve for the driven dyad with
+    /// `driven_center`.
+    fn curve_branch(&self, driven_center: PyPoint, center: PyPoint) -> PyResult<&'static str> {
+        let four = curves::four(&self.inner, "Task.curve_branch")?;
+        let driven = four.dyad_from_center(driven_center.0).py()?;
+        let arcs = four.filemon(&driven).py()?;
+        Ok(arcs.classify_center_point(center.0).py()?.as_str())
+    }
+
     #[allow(clippy::type_complexity)]
     fn order_arcs<'py>(
         &self,
