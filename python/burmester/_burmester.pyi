@@ -25,6 +25,9 @@ __all__ = [
     "InvalidInputError",
     "Configuration",
     "Conic",
+    "CoincidencePoint",
+    "Cubic",
+    "CurveDyad",
     "DesignLimits",
     "Filemon",
     "FourBar",
@@ -211,6 +214,68 @@ class Conic:
         q: Sequence[float], origin: Point, scale: float, known: Optional[Point]
     ) -> Conic:
         """Rebuilds a conic from its exact stored form (for pickling)."""
+
+@final
+class Cubic:
+    """A plane cubic curve ``f(x, y) = c00 + c10 x + c01 y + c20 x^2 + c11 x y
+    + c02 y^2 + c30 x^3 + c21 x^2 y + c12 x y^2 + c03 y^3 = 0``: the
+    center-point and circle-point curves of four poses
+    (:meth:`Task.center_point_curve`). Its value is defined up to a positive
+    factor, so its sign tells the side. It is stored in a local frame with
+    its largest coefficient 1, so no evaluation overflows."""
+
+    def __new__(cls, coefficients: Sequence[float]) -> Cubic:
+        """A cubic from its ten coefficients ``(c00, c10, c01, c20, c11, c02,
+        c30, c21, c12, c03)`` in the fixed frame; a conic or a line (zero
+        higher coefficients) is accepted. Raises :class:`InvalidInputError`
+        for a non-finite coefficient or no curve (every coefficient but
+        ``c00`` zero), ``TypeError`` for another count than ten."""
+    @property
+    def coefficients(self) -> Tuple[float, ...]:
+        """The ten coefficients in the fixed frame, in the order of the
+        constructor (exact from the poses for a Burmester curve, up to a
+        positive factor; they may overflow for a curve far from the origin)."""
+    @property
+    def degree(self) -> int:
+        """3, or less when the higher coefficients vanish (within a relative 1e-12)."""
+    @property
+    def is_circular(self) -> bool:
+        """Whether it passes through the circular points at infinity (the
+        Burmester curves do)."""
+    @property
+    def asymptotic_directions(self) -> list[Point]:
+        """The real asymptotic directions (unit vectors): one for a circular
+        cubic, up to three in general."""
+    def evaluate(self, point: Point) -> float:
+        """The value at a point (zero on the curve), up to a positive factor;
+        finite for every finite point (far points are evaluated scaled).
+        Raises :class:`InvalidInputError` for a non-finite point."""
+    def __call__(self, point: Point) -> float:
+        """:meth:`evaluate`."""
+    def gradient(self, point: Point) -> Point:
+        """The gradient of the value at a point (same factor as :meth:`evaluate`)."""
+    def distance(self, point: Point) -> float:
+        """First-order distance to the curve, ``|f| / |grad f|`` (zero on
+        the curve, infinite where the gradient vanishes off it)."""
+    def intersect_line(self, point: Point, direction: Point) -> list[Point]:
+        """The points where the line ``point + t * direction`` meets the
+        curve (up to three, in the order of ``t``); none for a line that is a
+        component of the curve."""
+    def polylines(
+        self, xmin: float, xmax: float, ymin: float, ymax: float, tolerance: Optional[float] = None
+    ) -> list[FloatArray]:
+        """Every component of the curve that crosses the viewport (ovals and
+        unbounded branches, found exactly, none missed), as arrays of shape
+        ``(n, 2)`` whose vertices lie on the curve to rounding; a component
+        wholly in view is one closed polyline (last point equal to the
+        first). ``tolerance`` is the largest chord error (default: a
+        thousandth of the viewport's diagonal; 1e-9 to 1 times the
+        diagonal)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_parts(coefficients: Sequence[float], origin: Point, scale: float) -> Cubic:
+        """Rebuilds a cubic from its exact stored form (for pickling)."""
 
 def clip_line(point: Point, direction: Point, extent: Extent) -> Optional[Tuple[Point, Point]]:
     """The part of the infinite line ``point + t * direction`` inside the
@@ -465,10 +530,15 @@ class Task:
 
     What holds for any number of poses (the poses, displacements, rotations
     and poles, poles at infinity included) works on every task; the
-    three-position maps (image poles, pole circles, circle and center
-    points, dyads, Filemon's construction and the maps built on it) need
-    three poses and raise :class:`InvalidInputError` with
-    ``cause == "needs_poses"`` otherwise.
+    three-position maps (image poles, pole circles, Filemon's construction
+    and the maps built on it) need three poses; the Burmester curves
+    (:meth:`center_point_curve`, :meth:`coincidence_points`,
+    :meth:`curve_dyads`, ...) need four; the Burmester points
+    (:meth:`burmester_points`) five. Circle and center points and dyads
+    work for three and four poses, :meth:`dyad` and :meth:`four_bar` for
+    every count. A method called on a task of another size raises
+    :class:`InvalidInputError` with ``cause == "needs_poses"`` and the
+    fields ``method``, ``required`` and ``found``.
 
     Raises :class:`InvalidInputError` for NaN or infinite numbers or fewer
     than three or more than five poses (``cause == "pose_count"``), and
@@ -528,29 +598,105 @@ class Task:
         """``D_ij(z)``: where the coupler point at ``point`` in pose ``i`` is in
         pose ``j`` (1-based)."""
     def circle_point(self, center: Point) -> Point:
-        """Three poses only: the circle point (moving pivot at pose 1) of a
-        center point (fixed pivot). Raises :class:`DegenerateError` on the
-        pole circle (the answer is at infinity: ``cause == "at_infinity"``,
-        its direction in ``dir_x``, ``dir_y``) or at a pole (``"undefined"``)."""
+        """Three or four poses: the circle point (moving pivot at pose 1) of
+        a center point (fixed pivot). Three poses: raises
+        :class:`DegenerateError` on the pole circle (the answer is at
+        infinity: ``cause == "at_infinity"``, its direction in ``dir_x``,
+        ``dir_y``) or at a pole (``"undefined"``). Four poses: the center
+        point must lie on :meth:`center_point_curve` (within 1e-9 of the task
+        size plus its distance from the task), else
+        :class:`InvalidInputError` with ``cause == "off_curve"`` and the
+        fields ``what``, ``distance`` (its first-order distance from the
+        curve) and ``tolerance``; :class:`DegenerateError` where the circle
+        point is at infinity or undefined."""
     def center_point(self, circle: Point) -> Point:
-        """Three poses only: the center point of a circle point. Raises
-        :class:`DegenerateError` on the image-pole circle (the center is at
-        infinity: a slider) or at an image pole."""
+        """Three or four poses: the center point of a circle point. Three
+        poses: raises :class:`DegenerateError` on the image-pole circle (the
+        center is at infinity: a slider) or at an image pole. Four poses: the
+        circle point must lie on :meth:`circle_point_curve` (as
+        :meth:`circle_point`)."""
     def circle_points(self, centers: ArrayLike) -> Tuple[FloatArray, BoolArray]:
         """:meth:`circle_point` of an array of shape ``(..., 2)``: the points
         (NaN where undefined) and a validity mask of shape ``(...)``."""
     def center_points(self, circles: ArrayLike) -> Tuple[FloatArray, BoolArray]:
         """:meth:`center_point` of an array of shape ``(..., 2)``."""
     def dyad(self, center: Point) -> Tuple[Point, Point]:
-        """``(center, circle)``: the dyad with this center point."""
+        """``(center, circle)``: the dyad with this center point. Three and
+        four poses as :meth:`circle_point`; five poses: the Burmester point
+        at ``center`` (within 1e-7 relative), else the dyad of the curve of
+        poses 1 to 4 when it passes the fifth too (else
+        :class:`InvalidInputError`, ``cause`` ``"off_curve"`` or
+        ``"not_a_dyad"``)."""
     def crank_angles(self, center: Point) -> list[float]:
         """The crank angle of the dyad with this center point at each pose."""
+    def center_point_curve(self) -> Cubic:
+        """Four poses only: the center-point curve, the fixed pivots of every
+        dyad that passes the four poses: a circular cubic through the six
+        poles, its coefficients expanded exactly from the poses. Raises
+        :class:`DegenerateError` (``"coincident_poles"``) when the poses are
+        rotations about one point."""
+    def circle_point_curve(self) -> Cubic:
+        """Four poses only: the circle-point curve (moving pivots at pose 1),
+        the same construction for the inverted motion."""
+    def coincidence_points(self) -> list[CoincidencePoint]:
+        """Four poses only: the six points ``Q_jk`` of the center-point curve
+        where the crank positions at poses ``j`` and ``k`` coincide, pairs in
+        the order ``12, 13, 14, 23, 24, 34``. Between them the cyclic order
+        of the crank positions is constant."""
+    def curve_dyad(self, center: Point) -> CurveDyad:
+        """Four poses only: the dyad of a center point on the curve, with its
+        crank rotation from pose 1 to pose 2, its solution branch and its
+        crank order. Errors as :meth:`circle_point`."""
+    def curve_dyads(self, samples: int = 200) -> list[list[CurveDyad]]:
+        """Four poses only: dyads sampled along the curves by the crank
+        rotation ``beta2`` (about ``samples`` values over its range, for each
+        solution branch), as runs in order of ``beta2``; a dyad at infinity
+        splits a run. Raises :class:`DegenerateError`
+        (``"not_parametrizable"``) when the poses have no compatibility
+        linkage, :class:`InvalidInputError` for ``samples`` outside 1 to
+        1e7."""
+    def order_arcs(
+        self, xmin: float, xmax: float, ymin: float, ymax: float
+    ) -> list[Tuple[str, Optional[Literal["counterclockwise", "clockwise"]], FloatArray]]:
+        """Four poses only: the center-point curve in the viewport cut into
+        pieces of constant crank order, as ``(order, direction, points)``:
+        ``direction`` is the way the crank meets the poses in their order
+        (``None``: out of order); the cuts are the exact points ``Q_jk``."""
+    def branch_free_arcs(
+        self, driven_center: Point, xmin: float, xmax: float, ymin: float, ymax: float
+    ) -> list[FloatArray]:
+        """Four poses only: the pieces of the center-point curve in the
+        viewport whose driving dyads pass the four poses in one assembly mode
+        with the driven dyad of ``driven_center`` (a point of the curve):
+        Filemon's construction with four lines, the arc ends exact (each line
+        meets the circle-point curve in the roots of one quadratic)."""
+    def curve_branch(self, driven_center: Point, center: Point) -> BranchClass:
+        """Four poses only: the branch class of the driving dyad of
+        ``center`` (on the curve) with the driven dyad of ``driven_center``:
+        ``"free"`` (one assembly mode at the four poses), ``"defective"``, or
+        ``"boundary"`` (a toggle at a pose)."""
+    def burmester_points(self) -> list[Tuple[Point, Point]]:
+        """Five poses only: the Burmester points as dyads ``(center, circle)``
+        (none, two or four; nearest the task first): the circle point's five
+        positions are concyclic about the center to about 1e-14. Raises
+        :class:`DegenerateError` when four poses are rotations about one point
+        or all poses have one angle."""
+    def burmester_curves(self) -> Tuple[Cubic, Cubic]:
+        """Five poses only: the center-point curves of poses 1, 2, 3, 4 and
+        1, 2, 3, 5; the Burmester centers are their common points other than
+        the poles P12, P13, P23."""
+    def burmester_four_bars(self) -> list[Tuple[int, int, SynthesizedFourBar]]:
+        """Five poses only: the four-bar of every ordered pair of Burmester
+        points, as ``(i, j, four_bar)`` with dyad ``i`` driving and ``j``
+        driven (indices into :meth:`burmester_points`); a pair whose linkage
+        cannot be built (a link of zero length) is left out."""
     def filemon(self, driven_center: Point) -> Filemon:
         """Three poses only: Filemon's construction for the driven dyad with
         this center point (``C0``). Raises :class:`DegenerateError` where
         ``C0`` has no circle point (pole circle, poles)."""
     def four_bar(self, driving_center: Point, driven_center: Point) -> SynthesizedFourBar:
-        """The four-bar built from the dyads with these center points."""
+        """The four-bar built from the dyads with these center points (their
+        circle points as :meth:`dyad`), with its figures at every pose."""
     @overload
     def driven_solution_map(
         self,
@@ -598,6 +744,74 @@ class Task:
         line of the circle-point plane: a conic through the three poles."""
     def __eq__(self, other: object, /) -> bool: ...
     def __getnewargs__(self) -> Tuple[list[Pose]]: ...
+
+@final
+class CoincidencePoint:
+    """A point ``Q_jk`` of the center-point curve of four poses (from
+    :meth:`Task.coincidence_points`): the crank positions at poses ``j`` and
+    ``k`` coincide there, ``Q_jk = (P_lj P_lk) x (P_mj P_mk)`` with ``{l,
+    m}`` the other two poses. Its circle point is the pole ``P_jk`` carried
+    back to pose 1, so the moving pivot sits on ``P_jk`` at both poses."""
+
+    @property
+    def pair(self) -> Tuple[int, int]:
+        """``(j, k)``, 1-based, ``j < k``."""
+    @property
+    def center(self) -> Optional[Point]:
+        """``Q_jk``; None when it is at infinity or undefined (coincident poles)."""
+    @property
+    def circle(self) -> Optional[Point]:
+        """Its circle point (moving pivot at pose 1); None when ``P_jk`` is at infinity."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_fields(
+        pair: Tuple[int, int], center: Optional[Point], circle: Optional[Point]
+    ) -> CoincidencePoint:
+        """Rebuilds a record from its fields (for pickling)."""
+
+@final
+class CurveDyad:
+    """A dyad of four poses with its place on the Burmester curves (from
+    :meth:`Task.curve_dyad` and :meth:`Task.curve_dyads`)."""
+
+    @property
+    def center(self) -> Point:
+        """The center point (fixed pivot), on the center-point curve."""
+    @property
+    def circle(self) -> Point:
+        """The circle point (moving pivot at pose 1), on the circle-point curve."""
+    @property
+    def dyad(self) -> Tuple[Point, Point]:
+        """``(center, circle)``."""
+    @property
+    def beta2(self) -> float:
+        """The crank rotation from pose 1 to pose 2, in (-pi, pi]."""
+    @property
+    def branch(self) -> Optional[Mode]:
+        """The solution branch: the assembly mode of the compatibility
+        linkage (Sandor & Erdman) at this ``beta2``; None at one of its
+        toggles, where the two branches meet, or when the poses have none."""
+    @property
+    def order(self) -> str:
+        """The cyclic order of the crank's positions at the four poses,
+        counter-clockwise from pose 1, such as ``"1-2-3-4"``."""
+    @property
+    def direction(self) -> Optional[Literal["counterclockwise", "clockwise"]]:
+        """The way the crank meets the poses in their order (``"1-2-3-4"``
+        counter-clockwise, ``"1-4-3-2"`` clockwise), or None (an order defect)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_fields(
+        center: Point,
+        circle: Point,
+        beta2: float,
+        branch: Optional[str],
+        order: str,
+        direction: Optional[str],
+    ) -> CurveDyad:
+        """Rebuilds a record from its fields (for pickling)."""
 
 @final
 class Filemon:

@@ -3,6 +3,7 @@
 Commands::
 
     burmester map [TASK.toml] -o map.png      # the center-point plane (Fig. 10/12)
+    burmester map five.toml -o five.png       # four or five poses: the Burmester curve or points
     burmester pivots [TASK.toml] --top 5      # the best driving pivots, as a table (--json)
     burmester linkage [TASK.toml] -o l.gif    # a four-bar at the poses (.png) or animated (.gif/.mp4)
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
@@ -201,6 +202,8 @@ def cmd_map(args: argparse.Namespace) -> int:
     _output(args.output, PICTURE_TYPES, args.force)
     spec = _with_grid(_load(args.task), args.grid)
     plot = _plot_module()
+    if spec.driven_center is None:
+        return _map_many(args, spec, plot)
     filemon = spec.filemon()
     view = spec.view
     if args.plane == "circle":
@@ -231,6 +234,35 @@ def cmd_map(args: argparse.Namespace) -> int:
         )
         if smap is not None:
             summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
+    _save(ax.figure, args.output, args.dpi)
+    print(f"wrote {args.output}: {summary}")
+    return 0
+
+
+def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: ModuleType) -> int:
+    """``burmester map`` of four or five poses: the center-point curve
+    coloured by crank order, or the Burmester points on their curves."""
+    n = len(spec.poses)
+    for flag, given in (("--plane circle", args.plane == "circle"), ("--design", args.design),
+                        ("--pivots", args.pivots > 0)):
+        if given:
+            raise UsageError(
+                f"{flag} is for three poses (Filemon's construction); {spec.source} has {n} poses"
+            )
+    task = spec.task()
+    ax = plot.burmester_plane(task, spec.view.extent)
+    if n == 4:
+        arcs = task.order_arcs(*spec.view.extent)
+        ordered = sum(1 for _, d, _ in arcs if d is not None)
+        summary = (
+            f"center-point curve of {spec.source}: {len(arcs)} pieces in view, "
+            f"{ordered} of them with the crank meeting the poses in order"
+        )
+    else:
+        pts = task.burmester_points()
+        # Rounded first, so that a coordinate of rounding size reads 0.000, not -0.000.
+        listed = ", ".join(_fmt_point([round(c[0], 3) + 0.0, round(c[1], 3) + 0.0]) for c, _ in pts)
+        summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
     _save(ax.figure, args.output, args.dpi)
     print(f"wrote {args.output}: {summary}")
     return 0
@@ -506,7 +538,10 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("map", help="draw the driving crank's center-point plane (or circle-point plane)",
                        description="Draw the driving crank's center-point plane as in Borm & Kim's "
                        "Fig. 10 and 12: branch-free pivots shaded, the transformed Filemon curves, "
-                       "the poles, the pole triangle and circle, the driven crank's fixed pivot.")
+                       "the poles, the pole triangle and circle, the driven crank's fixed pivot. "
+                       "A task of four poses draws its center-point curve coloured by the crank's "
+                       "order, with the poles and the points Q_jk; five poses, the Burmester points "
+                       "on their two center-point curves.")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("-o", "--output", default="map.png", help="picture to write (.png, .svg, .pdf); default: map.png")
     p.add_argument("--plane", choices=("center", "circle"), default="center",

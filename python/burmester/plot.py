@@ -1,4 +1,5 @@
-"""Pictures of a three-position synthesis, after Borm & Kim's figures.
+"""Pictures of a three-position synthesis, after Borm & Kim's figures, and
+of the Burmester curves and points of four and five poses.
 
 - :func:`center_plane`: the driving crank's center-point plane (the paper's
   Fig. 10 and 12): branch-free pivots shaded, the two transformed Filemon
@@ -6,6 +7,9 @@
   crank's fixed pivot, and optional overlays.
 - :func:`circle_plane`: the circle-point plane (Fig. 3 and 11): the three
   lines through ``C1``, Filemon's double wedges, the image poles and their circle.
+- :func:`burmester_plane`: four or five poses: the center-point curve
+  coloured by the crank's order class, the poles and the points ``Q_jk``;
+  the Burmester points of five poses on their two curves.
 - :func:`linkage`: a synthesized four-bar drawn at the poses.
 - :func:`animate`: a GIF or MP4 of the four-bar driven through the poses.
 
@@ -47,7 +51,7 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
 
 import burmester
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
-from burmester.taskfile import DEFAULT_GRID, default_view, grid_for
+from burmester.taskfile import DEFAULT_GRID, default_curve_view, default_view, grid_for
 
 if TYPE_CHECKING:
     from burmester._burmester import Method, Mode
@@ -341,6 +345,182 @@ def center_plane(
 
     if labels:
         ax.set_title("Driving crank center-point plane")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    _finish(ax, extent, legend, handles)
+    return ax
+
+
+# ---------------------------------------------------------------------------
+# Four and five poses: the Burmester curves and points
+
+#: Colours of the center-point curve's pieces by crank order: the crank meets
+#: the poses in their order counter-clockwise, clockwise, or not at all (an
+#: order defect).
+ORDER_COLORS: Dict[Optional[str], str] = {
+    "counterclockwise": "#1a9850",
+    "clockwise": "#2166ac",
+    None: "#bdbdbd",
+}
+ORDER_LABELS: Dict[Optional[str], str] = {
+    "counterclockwise": "center points, crank meets the poses in order (ccw)",
+    "clockwise": "center points, crank meets the poses in order (cw)",
+    None: "center points with an order defect",
+}
+BURMESTER_COLOR = "#ffd700"
+
+
+def _draw_poses(ax: Axes, task: Task, labels: bool) -> Artist:
+    """The poses as black dots with a flag along the coupler angle (gid ``"poses"``)."""
+    flag = 0.12 * task.scale
+    art: Optional[Artist] = None
+    for k, pose in enumerate(task.poses, start=1):
+        fx, fy = _flag(pose, flag)
+        (mk,) = ax.plot(fx, fy, color="black", linewidth=2.0, zorder=6)
+        mk.set_gid("poses")
+        (dot,) = ax.plot([pose[0]], [pose[1]], marker="o", markersize=4, color="black", zorder=6)
+        dot.set_gid("poses")
+        art = dot
+        if labels:
+            _label(ax, (pose[0], pose[1]), str(k))
+    assert art is not None
+    art.set_label("poses (coupler point and angle)")
+    return art
+
+
+def burmester_plane(
+    task: Task,
+    view: Optional[Sequence[float]] = None,
+    *,
+    driven: Optional[Point] = None,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw the center-point plane of four or five poses.
+
+    **Four poses**: the center-point curve, every component in view, cut
+    into pieces at the points ``Q_jk`` where two crank positions coincide
+    and coloured by the crank's order class (:meth:`burmester.Task.order_arcs`:
+    green where the crank meets the poses in order counter-clockwise, blue
+    clockwise, grey with an order defect; gid ``"center-point-curve"``, one
+    Line2D per piece); the poles (gid ``"poles"``, labelled ``Pjk``); the
+    points ``Q_jk`` (gid ``"coincidence-points"``); the poses (gid ``"poses"``).
+    With ``driven`` (the center point of a driven dyad, on the curve), the
+    driving center points that pass the poses in one assembly mode with it
+    are drawn under the curve as a wide band (:meth:`burmester.Task.branch_free_arcs`,
+    gid ``"branch-free-arcs"``) and the driven pivot as a triangle (gid
+    ``"driven-pivot"``).
+
+    **Five poses**: the center-point curves of poses 1-4 and 1-2-3-5 (gids
+    ``"curve-1234"``, ``"curve-1235"``), whose common points other than
+    ``P12, P13, P23`` are the Burmester points (gid ``"burmester-points"``,
+    stars labelled ``B1`` ...); the poles; the poses.
+
+    Parameters:
+        task: a :class:`burmester.Task` of four or five poses.
+        view: ``(xmin, xmax, ymin, ymax)``; default:
+            :func:`burmester.taskfile.default_curve_view`.
+        driven: four poses: the driven dyad's center point ``C0``, to show
+            the branch-free driving pivots.
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+
+    Raises:
+        burmester.InvalidInputError: a task of three poses (``cause ==
+            "needs_poses"``; draw it with :func:`center_plane`), or an empty
+            view.
+    """
+    n = len(task)
+    if n not in (4, 5):
+        # The core's typed error, with its fields.
+        task.center_point_curve()
+    extent: Extent
+    if view is None:
+        extent = default_curve_view(task)
+    else:
+        xmin, xmax, ymin, ymax = (float(t) for t in view)
+        if not (xmin < xmax and ymin < ymax):
+            raise burmester.InvalidInputError(
+                f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
+            )
+        extent = (xmin, xmax, ymin, ymax)
+    ax = _new_axes(ax)
+    handles: List[Any] = []
+    labelled: Dict[Optional[str], bool] = {}
+    if n == 4 and driven is not None:
+        first = True
+        for pts in task.branch_free_arcs(driven, *extent):
+            (band,) = ax.plot(pts[:, 0], pts[:, 1], color=FREE_COLOR, linewidth=9.0,
+                              solid_capstyle="butt", zorder=2)
+            band.set_gid("branch-free-arcs")
+            if first:
+                band.set_label("branch-free driving pivots for C0")
+                handles.append(band)
+                first = False
+        handles.append(_markers(
+            ax, [driven], "driven-pivot", "driven crank's fixed pivot C0",
+            marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=6,
+        ))
+        if labels:
+            _label(ax, driven, "C0")
+    if n == 4:
+        for order, direction, pts in task.order_arcs(*extent):
+            (line,) = ax.plot(pts[:, 0], pts[:, 1], color=ORDER_COLORS[direction], linewidth=2.0, zorder=3)
+            line.set_gid("center-point-curve")
+            if direction not in labelled:
+                labelled[direction] = True
+                line.set_label(ORDER_LABELS[direction])
+                handles.append(line)
+        qs = [(q.pair, q.center) for q in task.coincidence_points() if q.center is not None]
+        if qs:
+            handles.append(_markers(
+                ax, [p for _, p in qs], "coincidence-points", "Q_jk: crank positions j, k coincide",
+                marker="D", markersize=6, color="white", markeredgecolor="black", zorder=5,
+            ))
+            if labels:
+                for (j, k), p in qs:
+                    _label(ax, p, f"Q{j}{k}", "0.3")
+    else:
+        curve_a, curve_b = task.burmester_curves()
+        for curve, gid, name, style in (
+            (curve_a, "curve-1234", "center-point curve of poses 1, 2, 3, 4", "-"),
+            (curve_b, "curve-1235", "center-point curve of poses 1, 2, 3, 5", "--"),
+        ):
+            first = True
+            for pl in curve.polylines(*extent):
+                (line,) = ax.plot(pl[:, 0], pl[:, 1], color="#2166ac" if gid == "curve-1234" else "#b2182b",
+                                  linestyle=style, linewidth=1.4, zorder=3)
+                line.set_gid(gid)
+                if first:
+                    line.set_label(name)
+                    handles.append(line)
+                    first = False
+        points = task.burmester_points()
+        if points:
+            handles.append(_markers(
+                ax, [c for c, _ in points], "burmester-points", "Burmester points (center points)",
+                marker="*", markersize=15, color=BURMESTER_COLOR, markeredgecolor="black", zorder=7,
+            ))
+            if labels:
+                for k, (c, _) in enumerate(points, start=1):
+                    _label(ax, c, f"B{k}")
+    poles = [(p.pair, p.point) for p in task.poles if p.point is not None]
+    if poles:
+        handles.append(_markers(
+            ax, [p for _, p in poles], "poles", "poles", marker="o", markersize=5, color=POLE_COLOR, zorder=5,
+        ))
+        if labels:
+            for (i, j), p in poles:
+                _label(ax, p, f"P{i}{j}")
+    handles.append(_draw_poses(ax, task, labels))
+    if labels:
+        what = "center-point curve" if n == 4 else "Burmester points"
+        ax.set_title(f"{n} poses: {what}")
         ax.set_xlabel("x")
         ax.set_ylabel("y")
     _finish(ax, extent, legend, handles)

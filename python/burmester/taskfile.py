@@ -1,4 +1,4 @@
-"""Task files: a three-position synthesis job written in TOML.
+"""Task files: a three-, four- or five-position synthesis job written in TOML.
 
 A task file gives the three poses of the coupler (angles in **degrees**), the
 driven dyad, the part of the center-point plane to show and sweep, and the
@@ -34,6 +34,12 @@ required::
     min_transmission_deg = 30.0
     max_link_ratio = 10.0
     input = "any"         # "any", "crank" (turns fully) or "rocker"
+
+Four or five ``[[pose]]`` tables make a four- or five-position task (the
+Burmester curves and points, drawn by ``burmester map``): it takes only
+``[[pose]]`` and ``[view]`` (Filemon's construction and the limits are for
+three poses, so ``[driven]`` and ``[limits]`` are refused), and its default
+view is :func:`default_curve_view`.
 
 The view becomes a :class:`burmester.Grid` and the limits a
 :class:`burmester.DesignLimits` (which validates them); older files may say
@@ -106,7 +112,8 @@ class TaskSpec:
     :class:`burmester.DesignLimits`)."""
 
     poses: Tuple[Tuple[float, float, float], ...]
-    driven_center: Point
+    #: The driven crank's fixed pivot; None for four or five poses.
+    driven_center: Optional[Point]
     view: Grid
     limits: DesignLimits = field(default_factory=DesignLimits)
     source: str = "<example>"
@@ -116,7 +123,14 @@ class TaskSpec:
         return Task(list(self.poses))
 
     def filemon(self) -> Filemon:
-        """Filemon's construction for the driven dyad."""
+        """Filemon's construction for the driven dyad. Raises
+        :class:`TaskFileError` for a task of four or five poses (no driven
+        dyad: only ``burmester map`` draws those)."""
+        if self.driven_center is None:
+            raise TaskFileError(
+                f"{self.source}: has {len(self.poses)} poses; Filemon's construction, the maps, "
+                "pivots and linkages need three (burmester map draws four or five poses)"
+            )
         return self.task().filemon(self.driven_center)
 
 
@@ -128,6 +142,29 @@ def example() -> TaskSpec:
         view=Grid(*EXAMPLE_VIEW, DEFAULT_GRID, DEFAULT_GRID),
         source="<example>",
     )
+
+
+def default_curve_view(task: Task) -> Tuple[float, float, float, float]:
+    """A square ``(xmin, xmax, ymin, ymax)`` around the poses of a four- or
+    five-pose task, its finite poles and its points ``Q_jk`` (four poses) or
+    Burmester centers (five poses), leaving out those more than eight task
+    sizes from the poses' centroid (a pole or center point near infinity
+    would shrink the rest to a dot)."""
+    poses = [(p[0], p[1]) for p in task.poses]
+    cx = sum(p[0] for p in poses) / len(poses)
+    cy = sum(p[1] for p in poses) / len(poses)
+    scale = task.scale
+    pts: List[Point] = list(poses) + [p.point for p in task.poles if p.point is not None]
+    if len(task) == 4:
+        pts += [q.center for q in task.coincidence_points() if q.center is not None]
+    elif len(task) == 5:
+        pts += [b[0] for b in task.burmester_points()]
+    near = [p for p in pts if math.hypot(p[0] - cx, p[1] - cy) <= 8.0 * scale]
+    xs = [p[0] for p in near]
+    ys = [p[1] for p in near]
+    mx, my = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    half = 0.6 * max(max(xs) - min(xs), max(ys) - min(ys), scale)
+    return (mx - half, mx + half, my - half, my + half)
 
 
 def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> Grid:
@@ -251,16 +288,18 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
             hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
             raise r.fail(key, f"unknown top-level key (expected [[pose]], [driven], [view], [limits]){hint}")
 
-    # [[pose]] x3 (the branch maps of Filemon's construction need three)
+    # [[pose]] x3 (the branch maps of Filemon's construction need three), or
+    # x4, x5 (the Burmester curves and points)
     if "pose" not in doc:
-        raise r.fail("[[pose]]", "missing; give three [[pose]] tables with x, y and angle_deg")
+        raise r.fail("[[pose]]", "missing; give three (to five) [[pose]] tables with x, y and angle_deg")
     raw_poses = doc["pose"]
     if not isinstance(raw_poses, list) or not all(isinstance(p, dict) for p in raw_poses):
-        raise r.fail("pose", f"expected three [[pose]] tables, found {_describe(raw_poses)}")
-    if len(raw_poses) != 3:
+        raise r.fail("pose", f"expected three to five [[pose]] tables, found {_describe(raw_poses)}")
+    if not 3 <= len(raw_poses) <= 5:
         raise r.fail(
             "[[pose]]",
-            f"expected exactly 3 poses (Filemon's construction and the maps need three), found {len(raw_poses)}",
+            f"expected 3 to 5 poses (3 for Filemon's construction and the maps, 4 or 5 for the "
+            f"Burmester curves and points), found {len(raw_poses)}",
         )
     poses = []
     for k, p in enumerate(raw_poses, start=1):
@@ -273,7 +312,9 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     try:
         task = Task(poses)
     except burmester.BurmesterError as e:
-        raise r.fail("[[pose]]", f"the three poses cannot be used: {e}") from None
+        raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
+    if len(poses) > 3:
+        return _parse_many(r, doc, task, tuple(poses), source)
 
     # [driven]
     driven = r.table(doc, "driven", required=True)
@@ -300,21 +341,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
         raise r.fail("driven.center", f"cannot be used: {e}") from None
 
     # [view]
-    view_t = r.table(doc, "view", required=False) or {}
-    r.only_keys("view", view_t, ["x", "y", "grid"])
-    if ("x" in view_t) != ("y" in view_t):
-        missing = "y" if "x" in view_t else "x"
-        raise r.fail(f"view.{missing}", "missing; give both x = [min, max] and y = [min, max], or neither")
-    if "x" in view_t:
-        xmin, xmax = r.interval("view.x", view_t["x"])
-        ymin, ymax = r.interval("view.y", view_t["y"])
-    else:
-        xmin, xmax, ymin, ymax = default_view(filemon).extent
-    if "grid" in view_t:
-        nx, ny = r.grid("view.grid", view_t["grid"])
-        view = Grid(xmin, xmax, ymin, ymax, nx, ny)
-    else:
-        view = grid_for(xmin, xmax, ymin, ymax)
+    view = _view(r, doc, default_view(filemon).extent)
 
     # [limits]
     lim_t = r.table(doc, "limits", required=False) or {}
@@ -357,6 +384,42 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     return TaskSpec(tuple(poses), center, view, limits, source)
 
 
+def _view(r: _Reader, doc: Mapping[str, Any], default: Tuple[float, float, float, float]) -> Grid:
+    """The ``[view]`` table as a Grid (``default`` when it gives no x, y)."""
+    view_t = r.table(doc, "view", required=False) or {}
+    r.only_keys("view", view_t, ["x", "y", "grid"])
+    if ("x" in view_t) != ("y" in view_t):
+        missing = "y" if "x" in view_t else "x"
+        raise r.fail(f"view.{missing}", "missing; give both x = [min, max] and y = [min, max], or neither")
+    if "x" in view_t:
+        xmin, xmax = r.interval("view.x", view_t["x"])
+        ymin, ymax = r.interval("view.y", view_t["y"])
+    else:
+        xmin, xmax, ymin, ymax = default
+    if "grid" in view_t:
+        nx, ny = r.grid("view.grid", view_t["grid"])
+        return Grid(xmin, xmax, ymin, ymax, nx, ny)
+    return grid_for(xmin, xmax, ymin, ymax)
+
+
+def _parse_many(
+    r: _Reader, doc: Mapping[str, Any], task: Task, poses: Tuple[Tuple[float, float, float], ...], source: str
+) -> TaskSpec:
+    """The rest of a task file of four or five poses: ``[view]`` only."""
+    for key in ("driven", "limits"):
+        if key in doc:
+            raise r.fail(
+                f"[{key}]",
+                f"is for three poses (Filemon's construction and its maps), found {len(poses)} poses; "
+                f"leave [{key}] out of a four- or five-pose task",
+            )
+    try:
+        default = default_curve_view(task)
+    except burmester.BurmesterError as e:
+        raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
+    return TaskSpec(poses, None, _view(r, doc, default), DesignLimits(), source)
+
+
 def loads(text: str, source: str = "<task>") -> TaskSpec:
     """A :class:`TaskSpec` from the text of a task file."""
     try:
@@ -389,12 +452,13 @@ def dumps(spec: TaskSpec) -> str:
     for k, (x, y, a) in enumerate(spec.poses, start=1):
         note = ": x, y where the coupler point is, angle_deg the coupler's angle" if k == 1 else ""
         lines += [f"[[pose]]  # pose {k}{note}", f"x = {x!r}", f"y = {y!r}", f"angle_deg = {math.degrees(a)!r}", ""]
-    cx, cy = spec.driven_center
-    lines += [
-        "[driven]  # the driven dyad: its fixed pivot C0 (or circle = [x, y], its moving pivot at pose 1)",
-        f"center = [{cx!r}, {cy!r}]",
-        "",
-    ]
+    if spec.driven_center is not None:
+        cx, cy = spec.driven_center
+        lines += [
+            "[driven]  # the driven dyad: its fixed pivot C0 (or circle = [x, y], its moving pivot at pose 1)",
+            f"center = [{cx!r}, {cy!r}]",
+            "",
+        ]
     v = spec.view
     lines += [
         "[view]  # the driving crank's center-point plane: drawn, and searched for pivots",
@@ -403,6 +467,8 @@ def dumps(spec: TaskSpec) -> str:
         f"grid = [{v.nx}, {v.ny}]  # samples along x and y",
         "",
     ]
+    if spec.driven_center is None:
+        return "\n".join(lines)
     lim = spec.limits
     lines += [
         "[limits]  # what an acceptable linkage must meet",

@@ -14,7 +14,10 @@ import pytest
 import burmester
 from burmester import (
     AssemblyError,
+    CoincidencePoint,
     Conic,
+    Cubic,
+    CurveDyad,
     DegenerateError,
     DesignLimits,
     Filemon,
@@ -33,6 +36,11 @@ from conftest import C0, POSES, VP
 FOUR = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1), (4.0, 2.0, 1.1)]  # poses 3 and 4: a translation
 FIVE = FOUR + [(1.0, 3.0, 2.0)]
 FREE_PIVOT = (-7.98, -5.18)
+# Five poses with four Burmester points (shared/notes/positions-4-5.md, section 6).
+BURMESTER_FIVE = [(x, y, math.radians(a)) for x, y, a in [
+    (1.049199280691, 2.279426358634, 45.220037141544), (0.734502065472, 3.198658887874, 26.633426990744),
+    (-0.378159188147, 3.063048993013, 21.786789298262), (-1.268710439724, 2.051150142014, 27.048624103934),
+    (-1.411118156972, 0.597429126400, 48.044287536536)]]
 
 
 def samples():
@@ -50,6 +58,13 @@ def samples():
         "Grid": Grid(*VP, 30, 20),
         "Conic": f.conics[0],
         "Conic (built)": Conic(1, 0, -1, 0, 0, -1),
+        "Cubic": Task(FOUR).center_point_curve(),
+        "Cubic (built)": Cubic([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]),
+        "CoincidencePoint": Task(FOUR).coincidence_points()[0],
+        "CoincidencePoint (at infinity)": Task(FOUR).coincidence_points()[-1],
+        "CurveDyad": Task(FOUR).curve_dyads(8)[0][0],
+        "SynthesizedFourBar (5 poses)": Task(BURMESTER_FIVE).burmester_four_bars()[0][2],
+        "SynthesizedFourBar (4 poses)": Task(BURMESTER_FIVE[:4]).four_bar((0.0, 0.0), (4.0, 0.0)),
         "FourBar": FourBar(ground=100.0, crank=40.0, coupler=120.0, rocker=80.0, origin=(1.0, 2.0), ground_angle=0.3),
         "Configuration": fb.configuration(sfb.input_angles[0], "open"),
         "LinkageFigures": sfb.figures,
@@ -67,7 +82,7 @@ def samples():
     }
 
 
-CLASSES = [Grid, Conic, FourBar, burmester.Configuration, LinkageFigures, Pole, Task, Filemon,
+CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.Configuration, LinkageFigures, Pole, Task, Filemon,
            SynthesizedFourBar, DesignLimits, Pivot, SolutionMap]
 
 
@@ -149,6 +164,9 @@ def _kind(cls, name):
 PROPERTIES = {
     Grid: "xmin xmax ymin ymax nx ny dx dy extent shape size",
     Conic: "coefficients kind center axis_angle asymptotes",
+    Cubic: "coefficients degree is_circular asymptotic_directions",
+    CoincidencePoint: "pair center circle",
+    CurveDyad: "center circle dyad beta2 branch order direction",
     FourBar: "ground crank coupler rocker lengths input_pivot output_pivot ground_angle link_ratio grashof "
              "input_turns_fully input_range dead_positions",
     burmester.Configuration: "theta2 theta3 theta4 mode toggle transmission_angle coupler_rocker_angle",
@@ -170,10 +188,12 @@ PROPERTIES = {
 METHODS = {
     Grid: "cell_centers point nearest",
     Conic: "evaluate evaluate_many side distance polylines",
+    Cubic: "evaluate gradient distance intersect_line polylines",
     FourBar: "from_pivots solve configuration solve_many transmission_angle joints coupler_point coupler_path",
     Task: "rotation image_poles image_poles_in pole_circle image_pole_circle pole_triangle_angles displace "
           "circle_point center_point circle_points center_points dyad crank_angles filemon four_bar "
-          "driven_solution_map line_to_conic",
+          "driven_solution_map line_to_conic center_point_curve circle_point_curve coincidence_points "
+          "curve_dyad curve_dyads order_arcs branch_free_arcs curve_branch burmester_points burmester_curves burmester_four_bars",
     Filemon: "line_conic is_branch_free classify classify_circle_point circle_signs conic_values four_bar "
              "branch_map margin_map margin solution_map",
     SynthesizedFourBar: "travel_angles pose_at",
@@ -187,6 +207,12 @@ NO_ARGUMENT_METHODS = {
     (Task, "pole_circle"): "fails for four or five poses",
     (Task, "image_pole_circle"): "fails for four or five poses",
     (Task, "pole_triangle_angles"): "fails for four or five poses",
+    (Task, "center_point_curve"): "fails for three or five poses",
+    (Task, "circle_point_curve"): "fails for three or five poses",
+    (Task, "coincidence_points"): "fails for three or five poses",
+    (Task, "burmester_points"): "fails for three or four poses; does work",
+    (Task, "burmester_curves"): "fails for three or four poses",
+    (Task, "burmester_four_bars"): "fails for three or four poses; does work",
 }
 
 
@@ -381,17 +407,18 @@ def test_three_pose_methods_say_they_need_three(poses):
         "pole_circle": lambda: t.pole_circle(),
         "image_pole_circle": lambda: t.image_pole_circle(),
         "pole_triangle_angles": lambda: t.pole_triangle_angles(),
-        "circle_point": lambda: t.circle_point((1.0, 1.0)),
-        "center_point": lambda: t.center_point((1.0, 1.0)),
-        "circle_points": lambda: t.circle_points([[1.0, 1.0]]),
-        "center_points": lambda: t.center_points([[1.0, 1.0]]),
-        "dyad": lambda: t.dyad((1.0, 1.0)),
-        "crank_angles": lambda: t.crank_angles((1.0, 1.0)),
         "filemon": lambda: t.filemon(C0),
-        "four_bar": lambda: t.four_bar((1.0, 1.0), C0),
         "driven_solution_map": lambda: t.driven_solution_map((1.0, 1.0), *VP, 4, 4),
         "line_to_conic": lambda: t.line_to_conic((0.0, 0.0), (1.0, 0.0)),
     }
+    if len(poses) == 5:
+        # Three or four poses (the closed-form maps, or the center-point curve).
+        calls.update({
+            "circle_point": lambda: t.circle_point((1.0, 1.0)),
+            "center_point": lambda: t.center_point((1.0, 1.0)),
+            "circle_points": lambda: t.circle_points([[1.0, 1.0]]),
+            "center_points": lambda: t.center_points([[1.0, 1.0]]),
+        })
     for name, fn in calls.items():
         with pytest.raises(InvalidInputError, match="needs a task of 3 poses") as e:
             fn()

@@ -440,3 +440,44 @@ def test_a_map_too_large_for_memory_is_one_line_and_status_2(monkeypatch, tmp_pa
     assert main(["map", "--design", "-o", str(tmp_path / "m.png")]) == 2
     err = capsys.readouterr().err
     assert err.strip().splitlines() == ["burmester map: error: not enough memory for this; use a coarser --grid"]
+
+
+FOUR_TASK = """
+[[pose]]
+x = 1.049199280691
+y = 2.279426358634
+angle_deg = 45.220037141544
+[[pose]]
+x = 0.734502065472
+y = 3.198658887874
+angle_deg = 26.633426990744
+[[pose]]
+x = -0.378159188147
+y = 3.063048993013
+angle_deg = 21.786789298262
+[[pose]]
+x = -1.268710439724
+y = 2.051150142014
+angle_deg = 27.048624103934
+"""
+FIFTH_POSE = "[[pose]]\nx = -1.411118156972\ny = 0.597429126400\nangle_deg = 48.044287536536\n"
+
+
+def test_map_of_four_and_five_poses(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    four = tmp_path / "four.toml"
+    four.write_text(FOUR_TASK)
+    assert main(["map", str(four), "-o", str(tmp_path / "four.png")]) == 0
+    out = capsys.readouterr().out
+    assert "center-point curve of" in out and "pieces in view" in out
+    assert (tmp_path / "four.png").stat().st_size > 1000
+    five = tmp_path / "five.toml"
+    five.write_text(FOUR_TASK + FIFTH_POSE)
+    assert main(["map", str(five), "-o", str(tmp_path / "five.png")]) == 0
+    out = capsys.readouterr().out
+    assert "Burmester points of" in out and ": 4: (0.000, 0.000), (4.000, 0.000)" in out
+    # What needs Filemon's construction says so.
+    assert main(["map", str(four), "--design", "-o", str(tmp_path / "x.png")]) == 2
+    assert "--design is for three poses" in capsys.readouterr().err
+    assert main(["pivots", str(five)]) == 2
+    assert "has 5 poses" in capsys.readouterr().err

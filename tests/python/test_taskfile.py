@@ -3,6 +3,7 @@
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import burmester
@@ -87,8 +88,12 @@ BAD = [
     ("x = [", ["not valid TOML"]),
     (GOOD.replace("[driven]\ncenter = [4.0, -1.0]\n", ""), ["[driven]", "missing"]),
     ("[driven]\ncenter = [0, 0]\n", ["[[pose]]", "missing", "three"]),
-    (edit("[[pose]]\nx = 0\ny = 0.0\nangle_deg = 0.0\n", ""), ["exactly 3 poses", "found 2"]),
-    (GOOD.replace("[driven]", "[[pose]]\nx = 5.0\ny = 1.0\nangle_deg = 80.0\n[driven]"), ["exactly 3 poses", "found 4"]),
+    (edit("[[pose]]\nx = 0\ny = 0.0\nangle_deg = 0.0\n", ""), ["3 to 5 poses", "found 2"]),
+    ("[[pose]]\nx = 0\ny = 0\nangle_deg = 0\n" * 6, ["3 to 5 poses", "found 6"]),
+    (GOOD.replace("[driven]", "[[pose]]\nx = 5.0\ny = 1.0\nangle_deg = 80.0\n[driven]"),
+     ["[driven]", "is for three poses", "found 4 poses"]),
+    (GOOD.replace("[driven]\ncenter = [4.0, -1.0]\n", "[[pose]]\nx = 5.0\ny = 1.0\nangle_deg = 80.0\n"),
+     ["[limits]", "is for three poses", "found 4 poses"]),
     (edit("angle_deg = 22.918311805232932", 'angle_deg = "23"'),
      ["pose 2.angle_deg", "expected a number", "'23' (a string)"]),
     (edit("angle_deg = 22.918311805232932", "angle = 0.4"), ["pose 2.angle", "unknown key", "angle_deg"]),
@@ -172,3 +177,35 @@ def test_view_cell_centers_match_branch_map():
         for i in range(0, v.nx, 41):
             assert m[j, i] == f.is_branch_free((xs[i], ys[j]))
     assert math.isclose(xs[0], -8.0 + 16.0 / 400)
+
+
+FOUR_POSES = GOOD.split("[driven]")[0] + "[[pose]]\nx = 5.0\ny = 1.0\nangle_deg = 80.0\n"
+
+
+def test_four_and_five_pose_files():
+    spec = taskfile.loads(FOUR_POSES, "four.toml")
+    assert len(spec.poses) == 4 and spec.driven_center is None
+    assert spec.poses[3] == pytest.approx((5.0, 1.0, math.radians(80.0)))
+    # The default view holds the poses and the nearby poles.
+    v = spec.view
+    for p in spec.poses:
+        assert v.xmin < p[0] < v.xmax and v.ymin < p[1] < v.ymax
+    assert v.xmax - v.xmin == pytest.approx(v.ymax - v.ymin)
+    # A given view is kept; the text round-trips without [driven] and [limits].
+    spec = taskfile.loads(FOUR_POSES + "[view]\nx = [-5.0, 5.0]\ny = [-4.0, 4.0]\n")
+    assert spec.view.extent == (-5.0, 5.0, -4.0, 4.0)
+    text = taskfile.dumps(spec)
+    assert "[driven]" not in text and "[limits]" not in text
+    back = taskfile.loads(text)
+    assert np.allclose(back.poses, spec.poses, rtol=0, atol=1e-12) and back.view == spec.view
+    # Filemon's construction needs three poses: a clear error.
+    with pytest.raises(TaskFileError, match="has 4 poses"):
+        spec.filemon()
+    five = taskfile.loads(FOUR_POSES + "[[pose]]\nx = 1.0\ny = 4.0\nangle_deg = 120.0\n")
+    assert len(five.poses) == 5 and five.task().burmester_points() is not None
+
+
+def test_the_five_pose_example_file():
+    spec = taskfile.load(EXAMPLE_FILE.parent / "five.toml")
+    assert len(spec.poses) == 5 and spec.driven_center is None
+    assert len(spec.task().burmester_points()) == 4

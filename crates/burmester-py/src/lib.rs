@@ -10,6 +10,7 @@
 use pyo3::prelude::*;
 
 mod conv;
+mod curves;
 mod design;
 mod errors;
 mod geom;
@@ -21,6 +22,8 @@ mod synthesis;
 /// The native core of the `burmester` package.
 #[pymodule]
 mod _burmester {
+    #[pymodule_export]
+    use crate::curves::{PyCoincidencePoint, PyCubic, PyCurveDyad};
     #[pymodule_export]
     use crate::design::{PyDesignLimits, PyPivot, PySolutionMap};
     #[pymodule_export]

@@ -4,7 +4,7 @@
 use burmester::{
     CircleOrLine, Cremona, Dyad, Filemon, Line, Point2, Pole, Pose, SynthesizedFourBar, Task,
 };
-use numpy::PyArrayDyn;
+use numpy::{PyArray2, PyArrayDyn};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PySequence, PyTuple};
@@ -12,6 +12,7 @@ use pyo3::types::{PyDict, PySequence, PyTuple};
 use crate::conv::{
     Count, FloatArray, PyPoint, Real, points, pt, slice_mut, to_numpy, writer, zeros,
 };
+use crate::curves::{self, PyCoincidencePoint, PyCubic, PyCurveDyad};
 use crate::design::MapOptions;
 use crate::errors::IntoPy;
 use crate::geom::{PyConic, grid_arg, vec2};
@@ -316,10 +317,18 @@ impl PyTask {
     }
 
     fn circle_point(&self, center: PyPoint) -> PyResult<Xy> {
+        if self.inner.len() == 4 {
+            let four = curves::four(&self.inner, "Task.circle_point")?;
+            return four.circle_point(center.0).map(pt).py();
+        }
         self.inner.circle_point(center.0).map(pt).py()
     }
 
     fn center_point(&self, circle: PyPoint) -> PyResult<Xy> {
+        if self.inner.len() == 4 {
+            let four = curves::four(&self.inner, "Task.center_point")?;
+            return four.center_point(circle.0).map(pt).py();
+        }
         self.inner.center_point(circle.0).map(pt).py()
     }
 
@@ -328,8 +337,12 @@ impl PyTask {
         py: Python<'py>,
         centers: FloatArray<'py>,
     ) -> PyResult<MappedPoints<'py>> {
-        // A task of four or five poses is a misuse, not a point without an
-        // answer: raise instead of a mask of False.
+        if self.inner.len() == 4 {
+            let four = curves::four(&self.inner, "Task.circle_points")?;
+            return map_points(py, centers, move |p| four.circle_point(p));
+        }
+        // A task of five poses is a misuse, not a point without an answer:
+        // raise instead of a mask of False.
         self.cremona()?;
         let t = self.inner;
         map_points(py, centers, move |p| t.circle_point(p))
@@ -340,21 +353,147 @@ impl PyTask {
         py: Python<'py>,
         circles: FloatArray<'py>,
     ) -> PyResult<MappedPoints<'py>> {
-        // A task of four or five poses is a misuse, not a point without an
-        // answer: raise instead of a mask of False.
+        if self.inner.len() == 4 {
+            let four = curves::four(&self.inner, "Task.center_points")?;
+            return map_points(py, circles, move |p| four.center_point(p));
+        }
+        // A task of five poses is a misuse, not a point without an answer:
+        // raise instead of a mask of False.
         self.cremona()?;
         let t = self.inner;
         map_points(py, circles, move |p| t.center_point(p))
     }
 
     fn dyad(&self, center: PyPoint) -> PyResult<(Xy, Xy)> {
-        let d = self.inner.dyad_from_center(center.0).py()?;
+        let d = curves::dyad_of(&self.inner, center.0, "Task.dyad")?;
         Ok(dyad_tuple(&d))
     }
 
     fn crank_angles(&self, center: PyPoint) -> PyResult<Vec<f64>> {
-        let d = self.inner.dyad_from_center(center.0).py()?;
+        let d = curves::dyad_of(&self.inner, center.0, "Task.crank_angles")?;
         Ok(self.inner.crank_angles(&d).to_vec())
+    }
+
+    // Four poses: the Burmester curves.
+
+    fn center_point_curve(&self) -> PyResult<PyCubic> {
+        let four = curves::four(&self.inner, "Task.center_point_curve")?;
+        Ok(PyCubic {
+            inner: *four.center_point_curve(),
+        })
+    }
+
+    fn circle_point_curve(&self) -> PyResult<PyCubic> {
+        let four = curves::four(&self.inner, "Task.circle_point_curve")?;
+        Ok(PyCubic {
+            inner: *four.circle_point_curve(),
+        })
+    }
+
+    /// The six points `Q_jk` (pairs `12, 13, 14, 23, 24, 34`).
+    fn coincidence_points(&self) -> PyResult<Vec<PyCoincidencePoint>> {
+        let four = curves::four(&self.inner, "Task.coincidence_points")?;
+        Ok(four.coincidence_points().iter().map(Into::into).collect())
+    }
+
+    fn curve_dyad(&self, center: PyPoint) -> PyResult<PyCurveDyad> {
+        let four = curves::four(&self.inner, "Task.curve_dyad")?;
+        Ok((&four.curve_dyad(center.0).py()?).into())
+    }
+
+    #[pyo3(signature = (samples = Count(200)), text_signature = "($self, samples=200)")]
+    fn curve_dyads(&self, py: Python<'_>, samples: Count) -> PyResult<Vec<Vec<PyCurveDyad>>> {
+        let four = curves::four(&self.inner, "Task.curve_dyads")?;
+        let runs = py.detach(|| four.dyad_runs(samples.0)).py()?;
+        Ok(runs
+            .iter()
+            .map(|r| r.iter().map(Into::into).collect())
+            .collect())
+    }
+
+    /// Four poses: the branch-free arcs of the center-point curve in view
+    /// for the driven dyad with this center point (Filemon's construction
+    /// with four lines, exact arc ends).
+    #[allow(clippy::too_many_arguments)]
+    fn branch_free_arcs<'py>(
+        &self,
+        py: Python<'py>,
+        driven_center: PyPoint,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+        let four = curves::four(&self.inner, "Task.branch_free_arcs")?;
+        let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
+        let driven = four.dyad_from_center(driven_center.0).py()?;
+        let arcs = four.filemon(&driven).py()?;
+        let lines = py.detach(|| arcs.free_center_arcs(&vp));
+        Ok(lines.iter().map(|l| curves::polyline(py, l)).collect())
+    }
+
+    /// Four poses: the branch class (`"free"`, `"defective"`, `"boundary"`)
+    /// of a driving center point on the curve for the driven dyad with
+    /// `driven_center`.
+    fn curve_branch(&self, driven_center: PyPoint, center: PyPoint) -> PyResult<&'static str> {
+        let four = curves::four(&self.inner, "Task.curve_branch")?;
+        let driven = four.dyad_from_center(driven_center.0).py()?;
+        let arcs = four.filemon(&driven).py()?;
+        Ok(arcs.classify_center_point(center.0).py()?.as_str())
+    }
+
+    #[allow(clippy::type_complexity)]
+    fn order_arcs<'py>(
+        &self,
+        py: Python<'py>,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+    ) -> PyResult<Vec<(String, Option<&'static str>, Bound<'py, PyArray2<f64>>)>> {
+        let four = curves::four(&self.inner, "Task.order_arcs")?;
+        let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
+        let arcs = py.detach(|| four.order_arcs(&vp));
+        Ok(arcs
+            .iter()
+            .map(|a| {
+                (
+                    a.order.to_string(),
+                    a.order.direction().map(|d| d.as_str()),
+                    curves::polyline(py, &a.points),
+                )
+            })
+            .collect())
+    }
+
+    // Five poses: the Burmester points.
+
+    fn burmester_points(&self) -> PyResult<Vec<(Xy, Xy)>> {
+        let five = curves::five(&self.inner, "Task.burmester_points")?;
+        Ok(five.burmester_points().iter().map(dyad_tuple).collect())
+    }
+
+    fn burmester_curves(&self) -> PyResult<(PyCubic, PyCubic)> {
+        let five = curves::five(&self.inner, "Task.burmester_curves")?;
+        let [a, b] = five.center_point_curves();
+        Ok((PyCubic { inner: a }, PyCubic { inner: b }))
+    }
+
+    fn burmester_four_bars(&self) -> PyResult<Vec<(usize, usize, PySynthesizedFourBar)>> {
+        let five = curves::five(&self.inner, "Task.burmester_four_bars")?;
+        let pts = five.burmester_points();
+        let mut out = Vec::new();
+        for (i, a) in pts.iter().enumerate() {
+            for (j, c) in pts.iter().enumerate() {
+                if i == j {
+                    continue;
+                }
+                if let Ok(fb) = self.inner.four_bar(a, c) {
+                    out.push((i, j, PySynthesizedFourBar::new(self.inner, fb)));
+                }
+            }
+        }
+        Ok(out)
     }
 
     fn filemon(&self, driven_center: PyPoint) -> PyResult<PyFilemon> {
@@ -369,8 +508,8 @@ impl PyTask {
         driving_center: PyPoint,
         driven_center: PyPoint,
     ) -> PyResult<PySynthesizedFourBar> {
-        let a = self.inner.dyad_from_center(driving_center.0).py()?;
-        let c = self.inner.dyad_from_center(driven_center.0).py()?;
+        let a = curves::dyad_of(&self.inner, driving_center.0, "Task.four_bar")?;
+        let c = curves::dyad_of(&self.inner, driven_center.0, "Task.four_bar")?;
         self.inner
             .four_bar(&a, &c)
             .map(|inner| PySynthesizedFourBar::new(self.inner, inner))

@@ -184,6 +184,29 @@ impl Cubic {
         (self.c, self.origin, self.scale)
     }
 
+    /// The cubic of [`Cubic::local_coefficients`]: the same curve, bit for
+    /// bit (for serialization, for example pickling in Python).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput`] for a non-finite number, a unit length that is not
+    /// positive, or every coefficient but `c00` zero.
+    pub fn from_local_coefficients(
+        coefficients: [f64; 10],
+        origin: Point2<f64>,
+        scale: f64,
+    ) -> Result<Self> {
+        for v in coefficients {
+            finite("cubic coefficient", v)?;
+        }
+        crate::error::finite_point(["cubic origin x", "cubic origin y"], origin)?;
+        crate::error::positive("cubic unit length", scale)?;
+        if coefficients[1..].iter().all(|&v| v == 0.0) {
+            return Err(InvalidInput::CubicCoefficients.into());
+        }
+        Ok(Self::from_local(coefficients, origin, scale))
+    }
+
     /// `f` at a local point.
     #[inline]
     pub(crate) fn eval_local(&self, v: Vector2<f64>) -> f64 {
@@ -427,6 +450,25 @@ mod tests {
     fn folium() -> Cubic {
         // y^2 = x^3 - x
         Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap()
+    }
+
+    #[test]
+    fn local_coefficients_round_trip() {
+        let c = Cubic::from_local(
+            [0.3, -1.0, 0.2, 0.1, 0.7, -0.4, 0.9, 0.1, 0.9, 0.1],
+            Point2::new(1.5, -2.0),
+            3.0,
+        );
+        let (k, o, s) = c.local_coefficients();
+        assert_eq!(Cubic::from_local_coefficients(k, o, s).unwrap(), c);
+        assert!(Cubic::from_local_coefficients(k, o, 0.0).is_err());
+        assert!(Cubic::from_local_coefficients(k, Point2::new(f64::NAN, 0.0), s).is_err());
+        let mut bad = k;
+        bad[3] = f64::INFINITY;
+        assert!(Cubic::from_local_coefficients(bad, o, s).is_err());
+        let mut constant = [0.0; 10];
+        constant[0] = 1.0;
+        assert!(Cubic::from_local_coefficients(constant, o, s).is_err());
     }
 
     #[test]

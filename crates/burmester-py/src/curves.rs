@@ -1,0 +1,485 @@
+//! `burmester.Cubic` and the four- and five-pose methods of `burmester.Task`
+//! (the core's `geom::Cubic` and `synthesis::curves`).
+//!
+//! The `Task` methods themselves are in `synthesis` (one `#[pymethods]`
+//! block per class); the work they share is here: building the core's
+//! `FourPositions` / `FivePositions` from a task with the typed
+//! `NeedsPoses` error, the dyad of a center point for any pose count, and
+//! the conversions of the core's records to Python values.
+
+use burmester::geom::Cubic;
+use burmester::synthesis::curves::{CoincidencePoint, CurveDyad, FivePositions, FourPositions};
+use burmester::{Dyad, InvalidInput, Point2, Task, Viewport};
+use numpy::{IntoPyArray, PyArray2};
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+
+use crate::conv::{PyPoint, Real, pt};
+use crate::errors::{IntoPy, to_py};
+
+type Xy = (f64, f64);
+
+/// The typed error of a method that needs a task of `required` poses.
+pub(crate) fn needs(task: &Task, required: usize, method: &'static str) -> PyErr {
+    to_py(
+        InvalidInput::NeedsPoses {
+            method,
+            required,
+            found: task.len(),
+        }
+        .into(),
+    )
+}
+
+/// The curves of a task of four poses.
+pub(crate) fn four(task: &Task, method: &'static str) -> PyResult<FourPositions> {
+    if task.len() != 4 {
+        return Err(needs(task, 4, method));
+    }
+    FourPositions::new(task.poses()).py()
+}
+
+/// The Burmester points of a task of five poses.
+pub(crate) fn five(task: &Task, method: &'static str) -> PyResult<FivePositions> {
+    if task.len() != 5 {
+        return Err(needs(task, 5, method));
+    }
+    FivePositions::new(task.poses()).py()
+}
+
+/// Whether two points agree within `1e-7` of the task's size plus their
+/// distance from the first pose (a Burmester point typed back in).
+fn near(task: &Task, a: Point2<f64>, b: Point2<f64>) -> bool {
+    let p1 = task.poses()[0].position;
+    (a - b).norm() <= 1e-7 * (task.scale() + (a - p1).norm())
+}
+
+/// The dyad of a center point, for any pose count: three poses by the
+/// closed-form map; four by the center-point curve (an error with the
+/// distance when it is off the curve); five by the Burmester point it is
+/// (within `1e-7` relative), else by the curve of poses 1 to 4 (a point
+/// that is not a Burmester point then fails the five-pose dyad check of
+/// `Task::four_bar`).
+pub(crate) fn dyad_of(task: &Task, center: Point2<f64>, method: &'static str) -> PyResult<Dyad> {
+    match task.len() {
+        3 => task.dyad_from_center(center).py(),
+        4 => four(task, method)?.dyad_from_center(center).py(),
+        _ => {
+            let five = five(task, method)?;
+            if let Some(d) = five
+                .burmester_points()
+                .iter()
+                .find(|d| near(task, d.center, center))
+            {
+                return Ok(*d);
+            }
+            let d = FourPositions::new(&task.poses()[..4])
+                .py()?
+                .dyad_from_center(center)
+                .py()?;
+            let spread = five.residual(&d);
+            let tolerance = burmester::synthesis::curves::DYAD_TOLERANCE;
+            // A NaN spread (a dyad at infinity) fails too.
+            if spread.is_nan() || spread > tolerance {
+                return Err(to_py(
+                    InvalidInput::NotADyad {
+                        which: "dyad of this center point (not a Burmester point)",
+                        spread,
+                        tolerance,
+                    }
+                    .into(),
+                ));
+            }
+            Ok(d)
+        }
+    }
+}
+
+/// The names of an optional assembly mode, checked (for `_from_fields`).
+fn check_name(what: &str, value: Option<&str>, allowed: [&str; 2]) -> PyResult<()> {
+    match value {
+        Some(v) if !allowed.contains(&v) => Err(crate::errors::invalid(
+            "unknown_name",
+            format!("unknown {what} {v:?}; expected one of {allowed:?} or None"),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// A dyad of four poses with its place on the curves: its crank rotation
+/// from pose 1 to pose 2, its solution branch and its crank order.
+#[pyclass(frozen, eq, name = "CurveDyad", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub struct PyCurveDyad {
+    center: Xy,
+    circle: Xy,
+    beta2: f64,
+    branch: Option<String>,
+    order: String,
+    direction: Option<String>,
+}
+
+impl From<&CurveDyad> for PyCurveDyad {
+    fn from(d: &CurveDyad) -> Self {
+        PyCurveDyad {
+            center: pt(d.center),
+            circle: pt(d.circle),
+            beta2: d.beta2,
+            branch: d.branch.map(|b| b.as_str().to_owned()),
+            order: d.order.to_string(),
+            direction: d.order.direction().map(|t| t.as_str().to_owned()),
+        }
+    }
+}
+
+#[pymethods]
+impl PyCurveDyad {
+    /// Rebuilds a record from its fields (for pickling).
+    #[staticmethod]
+    fn _from_fields(
+        center: PyPoint,
+        circle: PyPoint,
+        beta2: Real,
+        branch: Option<String>,
+        order: String,
+        direction: Option<String>,
+    ) -> PyResult<Self> {
+        check_name("assembly mode", branch.as_deref(), ["open", "crossed"])?;
+        check_name(
+            "direction",
+            direction.as_deref(),
+            ["counterclockwise", "clockwise"],
+        )?;
+        Ok(PyCurveDyad {
+            center: pt(center.0),
+            circle: pt(circle.0),
+            beta2: beta2.0,
+            branch,
+            order,
+            direction,
+        })
+    }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let args = (
+            self.center,
+            self.circle,
+            self.beta2,
+            self.branch.clone(),
+            self.order.clone(),
+            self.direction.clone(),
+        )
+            .into_pyobject(py)?;
+        Ok((py.get_type::<PyCurveDyad>().getattr("_from_fields")?, args))
+    }
+
+    /// The center point (fixed pivot), on the center-point curve.
+    #[getter]
+    fn center(&self) -> Xy {
+        self.center
+    }
+    /// The circle point (moving pivot at pose 1), on the circle-point curve.
+    #[getter]
+    fn circle(&self) -> Xy {
+        self.circle
+    }
+    /// `(center, circle)`.
+    #[getter]
+    fn dyad(&self) -> (Xy, Xy) {
+        (self.center, self.circle)
+    }
+    #[getter]
+    fn beta2(&self) -> f64 {
+        self.beta2
+    }
+    #[getter]
+    fn branch(&self) -> Option<&str> {
+        self.branch.as_deref()
+    }
+    #[getter]
+    fn order(&self) -> &str {
+        &self.order
+    }
+    #[getter]
+    fn direction(&self) -> Option<&str> {
+        self.direction.as_deref()
+    }
+
+    fn __repr__(&self) -> String {
+        let (c, z) = (self.center, self.circle);
+        format!(
+            "<CurveDyad center=({:?}, {:?}) circle=({:?}, {:?}) beta2={:?} branch={} order={}>",
+            c.0,
+            c.1,
+            z.0,
+            z.1,
+            self.beta2,
+            self.branch.as_deref().unwrap_or("None"),
+            self.order
+        )
+    }
+}
+
+/// A point `Q_jk` of the center-point curve of four poses where the crank
+/// positions at poses `j` and `k` coincide, with its circle point.
+#[pyclass(frozen, eq, name = "CoincidencePoint", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub struct PyCoincidencePoint {
+    pair: (usize, usize),
+    center: Option<Xy>,
+    circle: Option<Xy>,
+}
+
+impl From<&CoincidencePoint> for PyCoincidencePoint {
+    fn from(q: &CoincidencePoint) -> Self {
+        PyCoincidencePoint {
+            pair: (q.poses[0], q.poses[1]),
+            center: q.center.map(pt),
+            circle: q.circle.map(pt),
+        }
+    }
+}
+
+#[pymethods]
+impl PyCoincidencePoint {
+    /// Rebuilds a record from its fields (for pickling).
+    #[staticmethod]
+    fn _from_fields(
+        pair: (usize, usize),
+        center: Option<PyPoint>,
+        circle: Option<PyPoint>,
+    ) -> Self {
+        PyCoincidencePoint {
+            pair,
+            center: center.map(|p| pt(p.0)),
+            circle: circle.map(|p| pt(p.0)),
+        }
+    }
+
+    #[allow(clippy::type_complexity)]
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let args = (self.pair, self.center, self.circle).into_pyobject(py)?;
+        Ok((
+            py.get_type::<PyCoincidencePoint>()
+                .getattr("_from_fields")?,
+            args,
+        ))
+    }
+
+    /// `(j, k)`, 1-based.
+    #[getter]
+    fn pair(&self) -> (usize, usize) {
+        self.pair
+    }
+    #[getter]
+    fn center(&self) -> Option<Xy> {
+        self.center
+    }
+    #[getter]
+    fn circle(&self) -> Option<Xy> {
+        self.circle
+    }
+
+    fn __repr__(&self) -> String {
+        let show = |p: Option<Xy>| p.map_or("None".to_owned(), |(x, y)| format!("({x:?}, {y:?})"));
+        format!(
+            "<CoincidencePoint Q{}{} center={} circle={}>",
+            self.pair.0,
+            self.pair.1,
+            show(self.center),
+            show(self.circle)
+        )
+    }
+}
+
+/// A polyline as an `(n, 2)` array.
+pub(crate) fn polyline<'py>(py: Python<'py>, l: &[Point2<f64>]) -> Bound<'py, PyArray2<f64>> {
+    let flat: Vec<f64> = l.iter().flat_map(|p| [p.x, p.y]).collect();
+    numpy::ndarray::Array2::from_shape_vec((l.len(), 2), flat)
+        .expect("two coordinates per point")
+        .into_pyarray(py)
+}
+
+/// A viewport from its four numbers.
+pub(crate) fn viewport(xmin: Real, xmax: Real, ymin: Real, ymax: Real) -> PyResult<Viewport> {
+    Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()
+}
+
+/// Rejects a point with a NaN or infinite coordinate (typed like the
+/// core's `NotFinite`).
+fn finite_point(p: PyPoint, what: [&'static str; 2]) -> PyResult<Point2<f64>> {
+    for (name, value) in what.into_iter().zip([p.0.x, p.0.y]) {
+        if !value.is_finite() {
+            return Err(to_py(InvalidInput::NotFinite { name, value }.into()));
+        }
+    }
+    Ok(p.0)
+}
+
+/// A plane cubic curve `f(x, y) = 0`: the center-point and circle-point
+/// curves of four poses.
+#[pyclass(frozen, eq, name = "Cubic", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub struct PyCubic {
+    pub(crate) inner: Cubic,
+}
+
+#[pymethods]
+impl PyCubic {
+    /// A cubic from its ten coefficients
+    /// `c00, c10, c01, c20, c11, c02, c30, c21, c12, c03`.
+    #[new]
+    fn new(coefficients: Vec<Real>) -> PyResult<Self> {
+        let c: Vec<f64> = coefficients.into_iter().map(|r| r.0).collect();
+        let Ok(c) = <[f64; 10]>::try_from(c.as_slice()) else {
+            return Err(PyTypeError::new_err(format!(
+                "a cubic takes its ten coefficients c00, c10, c01, c20, c11, c02, c30, c21, c12, \
+                 c03 as one sequence, got {} numbers",
+                c.len()
+            )));
+        };
+        Cubic::new(c).map(|inner| PyCubic { inner }).py()
+    }
+
+    /// Rebuilds a cubic from its exact stored form (for pickling).
+    #[staticmethod]
+    fn _from_parts(coefficients: [f64; 10], origin: PyPoint, scale: Real) -> PyResult<Self> {
+        Cubic::from_local_coefficients(coefficients, origin.0, scale.0)
+            .map(|inner| PyCubic { inner })
+            .py()
+    }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let (c, o, s) = self.inner.local_coefficients();
+        let f = py.get_type::<PyCubic>().getattr("_from_parts")?;
+        let args = (c.to_vec(), pt(o), s).into_pyobject(py)?;
+        Ok((f, args))
+    }
+
+    /// The ten coefficients in the fixed frame (defined up to a positive
+    /// factor), in the order of the constructor.
+    #[getter]
+    fn coefficients<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        PyTuple::new(py, self.inner.coefficients())
+    }
+
+    #[getter]
+    fn degree(&self) -> usize {
+        self.inner.degree()
+    }
+
+    #[getter]
+    fn is_circular(&self) -> bool {
+        self.inner.is_circular()
+    }
+
+    #[getter]
+    fn asymptotic_directions(&self) -> Vec<Xy> {
+        self.inner
+            .asymptotic_directions()
+            .into_iter()
+            .map(|d| (d.x, d.y))
+            .collect()
+    }
+
+    fn evaluate(&self, point: PyPoint) -> PyResult<f64> {
+        Ok(self
+            .inner
+            .evaluate(finite_point(point, ["point x", "point y"])?))
+    }
+
+    fn __call__(&self, point: PyPoint) -> PyResult<f64> {
+        self.evaluate(point)
+    }
+
+    fn gradient(&self, point: PyPoint) -> PyResult<Xy> {
+        let g = self
+            .inner
+            .gradient(finite_point(point, ["point x", "point y"])?);
+        Ok((g.x, g.y))
+    }
+
+    fn distance(&self, point: PyPoint) -> PyResult<f64> {
+        Ok(self
+            .inner
+            .distance_estimate(finite_point(point, ["point x", "point y"])?))
+    }
+
+    fn intersect_line(&self, point: PyPoint, direction: PyPoint) -> PyResult<Vec<Xy>> {
+        let p = finite_point(point, ["line point x", "line point y"])?;
+        let d = finite_point(direction, ["line direction x", "line direction y"])?;
+        if d.x == 0.0 && d.y == 0.0 {
+            return Err(to_py(
+                InvalidInput::ZeroDirection {
+                    name: "the line's direction",
+                    x: d.x,
+                    y: d.y,
+                }
+                .into(),
+            ));
+        }
+        let line = burmester::Line {
+            point: p,
+            direction: d.coords,
+        };
+        Ok(self
+            .inner
+            .intersect_line(&line)
+            .into_iter()
+            .map(pt)
+            .collect())
+    }
+
+    #[pyo3(signature = (xmin, xmax, ymin, ymax, tolerance = None))]
+    fn polylines<'py>(
+        &self,
+        py: Python<'py>,
+        xmin: Real,
+        xmax: Real,
+        ymin: Real,
+        ymax: Real,
+        tolerance: Option<Real>,
+    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+        let vp = viewport(xmin, xmax, ymin, ymax)?;
+        let diag = vp.diagonal();
+        let tolerance = match tolerance {
+            None => None,
+            Some(Real(t)) if (1e-9 * diag..=diag).contains(&t) => Some(t),
+            Some(Real(value)) => {
+                return Err(to_py(
+                    InvalidInput::OutsideRange {
+                        name: "tolerance",
+                        value,
+                        min: 1e-9 * diag,
+                        max: diag,
+                        unit: " (plane units: 1e-9 to 1 times the viewport's diagonal)",
+                    }
+                    .into(),
+                ));
+            }
+        };
+        let c = self.inner;
+        let trace = py.detach(|| c.trace(&vp, tolerance));
+        Ok(trace.polylines().iter().map(|l| polyline(py, l)).collect())
+    }
+
+    fn __repr__(&self) -> String {
+        let c: Vec<String> = self
+            .inner
+            .coefficients()
+            .iter()
+            .map(|v| format!("{v:?}"))
+            .collect();
+        format!("Cubic([{}])", c.join(", "))
+    }
+}
