@@ -29,8 +29,11 @@ from burmester._burmester import (
     __version__,
     clip_line,
 )
+from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
 
 __all__ = [
+    "AtlasPair",
+    "PivotAtlas",
     "AssemblyError",
     "BurmesterError",
     "Configuration",
@@ -49,4 +52,5 @@ __all__ = [
     "Task",
     "__version__",
     "clip_line",
+    "pivot_atlas",
 ]

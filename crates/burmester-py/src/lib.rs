@@ -9,6 +9,7 @@
 
 use pyo3::prelude::*;
 
+mod atlas;
 mod conv;
 mod design;
 mod errors;
@@ -21,6 +22,8 @@ mod synthesis;
 /// The native core of the `burmester` package.
 #[pymodule]
 mod _burmester {
+    #[pymodule_export]
+    use crate::atlas::_atlas_tile;
     #[pymodule_export]
     use crate::design::{PyDesignLimits, PyPivot, PySolutionMap};
     #[pymodule_export]
