@@ -174,3 +174,38 @@ def test_a_worker_killed_mid_run_is_retried(client):
     deadline = time.time() + 30
     while len(client.scheduler_info()["workers"]) < 2 and time.time() < deadline:
         time.sleep(0.2)
+
+
+# ---------------------------------------------------------------------------
+# burmester atlas (the command line)
+
+
+def test_cli_atlas_picture_json_and_errors(tmp_path, capsys):
+    import json
+
+    from burmester.cli import main
+
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "atlas.png"
+    small = ["--driven-grid", "6", "5", "--driving-grid", "20", "16"]
+    assert main(["atlas", "-o", str(out), *small]) == 0
+    assert out.stat().st_size > 1000
+    assert "driven centers have an acceptable driving pivot" in capsys.readouterr().out
+    # The output is checked before any work: one line, status 2.
+    assert main(["atlas", "-o", str(out), *small]) == 2
+    assert main(["atlas", "-o", str(tmp_path / "a.txt"), *small]) == 2
+    assert main(["atlas", "--driven-grid", "1", "5"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 3 and "exists" in err and "--force" in err
+    assert main(["atlas", "-o", str(out), "--force", *small]) == 0
+    capsys.readouterr()
+    assert main(["atlas", "--json", "--top", "2", *small]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["driven_grid"] == [6, 5] and len(doc["best"]) == 2
+    v = doc["view"]
+    from burmester import taskfile
+
+    want = pivot_atlas(taskfile.example().task(), (*v["x"], *v["y"], 6, 5), (*v["x"], *v["y"], 20, 16),
+                       min_transmission_deg=doc["limits"]["min_transmission_deg"],
+                       max_link_ratio=doc["limits"]["max_link_ratio"], input=doc["limits"]["input"])
+    assert doc["best"][0]["min_transmission_deg"] == want.best_pairs(1)[0].min_transmission_deg

@@ -7,7 +7,7 @@
 //! `C0`:
 //!
 //! * the number of acceptable driving pivots;
-//! * the best of them by [`RankBy::Transmission`] (the largest minimum
+//! * the best of them by [`RankBy::Transmission`](crate::RankBy::Transmission) (the largest minimum
 //!   transmission angle over the travel, ties within
 //!   [`tolerance::RANK_TIE`] by the larger margin to the nearest
 //!   branch-defect boundary), exactly the first pivot of
