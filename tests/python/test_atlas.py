@@ -209,3 +209,37 @@ def test_cli_atlas_picture_json_and_errors(tmp_path, capsys):
                        min_transmission_deg=doc["limits"]["min_transmission_deg"],
                        max_link_ratio=doc["limits"]["max_link_ratio"], input=doc["limits"]["input"])
     assert doc["best"][0]["min_transmission_deg"] == want.best_pairs(1)[0].min_transmission_deg
+
+
+@pytest.mark.skipif(os.name != "posix", reason="POSIX signals")
+def test_ctrl_c_stops_an_in_process_atlas():
+    import json
+    import subprocess
+    import sys
+    import textwrap
+
+    child = textwrap.dedent(
+        f"""
+        import json, time, burmester
+        t = burmester.Task({POSES!r})
+        print("started", flush=True)
+        t0 = time.monotonic()
+        try:
+            burmester.pivot_atlas(t, (-8, 8, -8, 8, 400, 400), (-8, 8, -8, 8, 200, 200))
+        except KeyboardInterrupt as e:
+            print(json.dumps({{"message": str(e), "ran": time.monotonic() - t0}}), flush=True)
+            raise
+        print(json.dumps({{"finished": time.monotonic() - t0}}), flush=True)
+        """
+    )
+    p = subprocess.Popen([sys.executable, "-c", child], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         text=True)
+    assert p.stdout is not None
+    assert p.stdout.readline().strip() == "started"
+    time.sleep(0.5)
+    p.send_signal(signal.SIGINT)
+    out, err = p.communicate(timeout=60)
+    report = json.loads(out.strip().splitlines()[-1])
+    assert "message" in report, report
+    assert "interrupted after" in report["message"]
+    assert p.returncode != 0 and "KeyboardInterrupt" in err and "PanicException" not in err
