@@ -7,8 +7,9 @@
 //! `C0`:
 //!
 //! * the number of acceptable driving pivots;
-//! * the best of them by [`RankBy::Transmission`](crate::RankBy::Transmission) (the largest minimum
-//!   transmission angle over the travel, ties within
+//! * the best of them by
+//!   [`RankBy::Transmission`](crate::RankBy::Transmission) (the largest
+//!   minimum transmission angle over the travel, ties within
 //!   [`tolerance::RANK_TIE`] by the larger margin to the nearest
 //!   branch-defect boundary), exactly the first pivot of
 //!   [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(1, ..,
