@@ -32,8 +32,11 @@ from burmester._burmester import (
     __version__,
     clip_line,
 )
+from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
 
 __all__ = [
+    "AtlasPair",
+    "PivotAtlas",
     "AssemblyError",
     "BurmesterError",
     "Configuration",
@@ -55,4 +58,5 @@ __all__ = [
     "Task",
     "__version__",
     "clip_line",
+    "pivot_atlas",
 ]

@@ -39,6 +39,7 @@ __all__ = [
     "SynthesizedFourBar",
     "Task",
     "clip_line",
+    "_atlas_tile",
     "__version__",
 ]
 
@@ -1271,3 +1272,32 @@ class SolutionMap:
         columns: dict[str, Any],
     ) -> SolutionMap:
         """Rebuilds a map from its state (for pickling)."""
+
+
+# ---------------------------------------------------------------------------
+# The pivot-pair atlas (the public API is burmester.atlas)
+
+def _atlas_tile(
+    task: Task,
+    driven: Grid,
+    row_start: int,
+    row_end: int,
+    driving: Grid,
+    *,
+    limits: Optional[DesignLimits] = None,
+    min_transmission_deg: Optional[float] = None,
+    max_link_ratio: Optional[float] = None,
+    input: Optional[InputRequirement] = None,
+    base_plate: Optional[Sequence[Point]] = None,
+    obstacles: Optional[Sequence[Sequence[Point]]] = None,
+    link_width: float = 0.0,
+    travel_samples: int = 64,
+    threads: Optional[int] = None,
+    progress: Optional[Progress] = None,
+) -> dict[str, npt.NDArray[Any]]:
+    """Rows ``row_start..row_end`` of the pivot-pair atlas over the driven
+    grid, as arrays of shape ``(rows, nx)`` (``best_driving``,
+    ``best_index``: ``(rows, nx, 2)``): ``valid``, ``count``,
+    ``branch_free``, ``best_transmission_rad``, ``best_link_ratio``,
+    ``best_margin``, ``best_driving``, ``best_index``; on ``threads`` rayon
+    threads (default: all cores). See :func:`burmester.pivot_atlas`."""

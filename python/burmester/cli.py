@@ -6,6 +6,7 @@ Commands::
     burmester map five.toml -o five.png       # four or five poses: the Burmester curve or points
     burmester pivots [TASK.toml] --top 5      # the best driving pivots, as a table (--json)
     burmester linkage [TASK.toml] -o l.gif    # a four-bar at the poses (.png) or animated (.gif/.mp4)
+    burmester atlas [TASK.toml] -o atlas.png  # both pivots at once: the best driving pivot per driven center
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
     burmester example > task.toml             # a task file to start from
 
@@ -265,6 +266,101 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: ModuleType) -> int
         summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
     _save(ax.figure, args.output, args.dpi)
     print(f"wrote {args.output}: {summary}")
+    return 0
+
+
+#: Default driven and driving grids of ``burmester atlas`` (over the task's view).
+ATLAS_DRIVEN_GRID = (24, 24)
+ATLAS_DRIVING_GRID = (80, 80)
+
+
+def _atlas_client(address: Optional[str]) -> Any:
+    if address is None:
+        return None
+    try:
+        import importlib
+
+        distributed = importlib.import_module("distributed")
+    except ImportError:
+        raise ImportError('--scheduler needs Dask: pip install "burmester[dask]"') from None
+    try:
+        return distributed.Client(address, timeout=10)
+    except (OSError, TimeoutError) as e:
+        raise UsageError(f"cannot reach the Dask scheduler at {address}: {e}") from None
+
+
+def cmd_atlas(args: argparse.Namespace) -> int:
+    """``burmester atlas``: the best driving pivot for every driven center."""
+    output = args.output if args.output is not None else (None if args.json else "atlas.png")
+    if output is not None:
+        _output(output, PICTURE_TYPES, args.force)
+    spec = _load(args.task)
+    v = spec.view
+    grids = []
+    for flag, given, default in (("--driven-grid", args.driven_grid, ATLAS_DRIVEN_GRID),
+                                 ("--driving-grid", args.driving_grid, ATLAS_DRIVING_GRID)):
+        nx, ny = given if given is not None else default
+        for name, n in (("NX", nx), ("NY", ny)):
+            if not 2 <= n <= 4000:
+                raise UsageError(f"{flag} {name} must be from 2 to 4000, got {n}")
+        grids.append(Grid(v.xmin, v.xmax, v.ymin, v.ymax, nx, ny))
+    driven, driving = grids
+    plot = _plot_module() if output is not None else None
+    client = _atlas_client(args.scheduler)
+    bar = progress_for(driven, "atlas", driving.size) if client is None else None
+    try:
+        atlas = burmester.pivot_atlas(spec.task(), driven, driving, client=client,
+                                      limits=spec.limits, progress=bar)
+    finally:
+        if client is not None:
+            client.close()
+    best = atlas.best_pairs(1)
+    if args.json:
+        lim = spec.limits
+        doc = {
+            "task": spec.source,
+            "driven_grid": [driven.nx, driven.ny],
+            "driving_grid": [driving.nx, driving.ny],
+            "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax]},
+            "limits": {
+                "min_transmission_deg": lim.min_transmission_deg,
+                "max_link_ratio": lim.max_link_ratio,
+                "input": lim.input,
+            },
+            "valid": int(atlas.valid.sum()),
+            "with_acceptable": int(np.count_nonzero(atlas.count)),
+            "best": [p._asdict() for p in atlas.best_pairs(args.top)],
+        }
+        print(json.dumps(doc, indent=2))
+    if plot is not None and output is not None:
+        import matplotlib.pyplot as plt
+
+        fig, ax = plt.subplots(figsize=(7, 6))
+        im = ax.imshow(atlas.best_transmission_deg, origin="lower", extent=driven.extent,
+                       cmap="viridis", vmin=0.0, vmax=90.0, interpolation="nearest")
+        fig.colorbar(im, ax=ax, label="best minimum transmission angle (deg)")
+        xs, ys = driven.cell_centers()
+        if np.ptp(atlas.count) > 0:
+            cs = ax.contour(xs, ys, atlas.count, levels=6, colors="white", linewidths=0.7)
+            ax.clabel(cs, fontsize=7, fmt="%d")
+        if best:
+            b = best[0]
+            ax.plot([b.driven[0], b.driving[0]], [b.driven[1], b.driving[1]], "r--", lw=1)
+            ax.plot(*b.driven, "r^", ms=9, label=f"driven C0 {_fmt_point(b.driven)}")
+            ax.plot(*b.driving, "rs", ms=8, label=f"driving A0 {_fmt_point(b.driving)}")
+            ax.legend(loc="upper right", fontsize=8)
+        ax.set_xlim(v.xmin, v.xmax)
+        ax.set_ylim(v.ymin, v.ymax)
+        ax.set_aspect("equal")
+        ax.set_xlabel("driven center x")
+        ax.set_ylabel("driven center y")
+        ax.set_title(f"pivot-pair atlas of {spec.source}")
+        _save(fig, output, args.dpi)
+        summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
+                   f"have an acceptable driving pivot")
+        if best:
+            summary += f"; best {best[0].min_transmission_deg:.1f} deg at C0 {_fmt_point(best[0].driven)}, A0 {_fmt_point(best[0].driving)}"
+        print(f"wrote {output}: {summary}", file=sys.stderr if args.json else sys.stdout)
     return 0
 
 
@@ -589,6 +685,25 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_linkage)
+
+    p = sub.add_parser("atlas", help="both pivots at once: the best driving pivot of every driven center",
+                       description="For every driven center on a grid over the view, the solution map over "
+                                   "driving centers reduced: shaded by the best achievable transmission angle, "
+                                   "the count of acceptable driving pivots as contours, the best pair drawn.")
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("-o", "--output", default=None, help="picture to write (.png, .svg, .pdf); default: atlas.png "
+                   "(none with --json unless given)")
+    p.add_argument("--json", action="store_true", help="print the best pairs as JSON")
+    p.add_argument("--top", type=_positive_int, default=5, help="how many pairs in the JSON (default: 5)")
+    p.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                   help="run on a Dask cluster (tcp://host:8786); needs burmester[dask]")
+    p.add_argument("--driven-grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
+                   help=f"driven centers over the view (default: {ATLAS_DRIVEN_GRID[0]} {ATLAS_DRIVEN_GRID[1]})")
+    p.add_argument("--driving-grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
+                   help=f"driving centers over the view (default: {ATLAS_DRIVING_GRID[0]} {ATLAS_DRIVING_GRID[1]})")
+    p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
+    p.set_defaults(func=cmd_atlas)
 
     p = sub.add_parser("solve", help="position analysis of a four-bar (angles in degrees)",
                        description="Solve a four-bar's position: the coupler and rocker angles for "

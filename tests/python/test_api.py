@@ -54,6 +54,7 @@ def samples():
                           travel_samples=16, limits=DesignLimits(25.0, 8.0, "any"))
     driven = t.driven_solution_map((-3.0, 4.0), Grid(*VP, 20, 16))
     (pivot,) = smap.best_pivots(1)
+    atlas = burmester.pivot_atlas(t, (-6.0, 6.0, -6.0, 6.0, 4, 3), Grid(*VP, 16, 16), link_width=0.1)
     return {
         "Grid": Grid(*VP, 30, 20),
         "Conic": f.conics[0],
@@ -79,11 +80,14 @@ def samples():
         "Pivot": pivot,
         "SolutionMap": smap,
         "SolutionMap (driven)": driven,
+        "PivotAtlas": atlas,
+        "AtlasPair": atlas.best_pairs(1)[0],
     }
 
 
-CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.Configuration, LinkageFigures, Pole, Task, Filemon,
-           SynthesizedFourBar, DesignLimits, Pivot, SolutionMap]
+CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.Configuration, LinkageFigures, Pole,
+           Task, Filemon, SynthesizedFourBar, DesignLimits, Pivot, SolutionMap, burmester.PivotAtlas,
+           burmester.AtlasPair]
 
 
 # ---------------------------------------------------------------------------
@@ -151,9 +155,9 @@ def _kind(cls, name):
     """"property" for a value read without a call, "method" for a callable."""
     attr = inspect.getattr_static(cls, name)
     kind = type(attr).__name__
-    if kind in ("getset_descriptor", "member_descriptor", "property"):
+    if kind in ("getset_descriptor", "member_descriptor", "property", "_tuplegetter"):
         return "property"
-    if kind in ("method_descriptor", "builtin_function_or_method", "staticmethod", "classmethod"):
+    if kind in ("method_descriptor", "builtin_function_or_method", "staticmethod", "classmethod", "function"):
         return "method"
     if isinstance(attr, list):
         return "class attribute"
@@ -182,6 +186,8 @@ PROPERTIES = {
     Pivot: "center index linkage figures margin ranked_by",
     SolutionMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                  "acceptable grid extent shape varying fixed_dyad task limits",
+    burmester.PivotAtlas: "branch_free_fraction shape",
+    burmester.AtlasPair: "driven driving min_transmission_deg link_ratio margin n_acceptable driven_index driving_index",
 }
 
 #: Methods of each class: they take arguments, can fail, or do real work.
@@ -198,6 +204,8 @@ METHODS = {
              "branch_map margin_map margin solution_map",
     SynthesizedFourBar: "travel_angles pose_at",
     SolutionMap: "point linkage margin best_pivots",
+    burmester.PivotAtlas: "best_pairs",
+    burmester.AtlasPair: "linkage",
 }
 
 #: Methods without arguments, and why each is a method.
@@ -235,7 +243,9 @@ def test_naming_rule(cls):
     assert _public(cls) == props | methods | attrs, cls.__name__
     # A method without arguments has a reason to be one.
     for name in methods:
-        sig = inspect.signature(getattr(cls, name)) if getattr(cls, name).__text_signature__ else None
+        fn = getattr(cls, name)
+        native = hasattr(fn, "__text_signature__")
+        sig = inspect.signature(fn) if not native or fn.__text_signature__ else None
         if sig is not None:
             params = [p for p in sig.parameters.values() if p.name != "self"]
             if not params:

@@ -9,6 +9,7 @@
 
 use pyo3::prelude::*;
 
+mod atlas;
 mod conv;
 mod curves;
 mod design;
@@ -22,6 +23,8 @@ mod synthesis;
 /// The native core of the `burmester` package.
 #[pymodule]
 mod _burmester {
+    #[pymodule_export]
+    use crate::atlas::_atlas_tile;
     #[pymodule_export]
     use crate::curves::{PyCoincidencePoint, PyCubic, PyCurveDyad};
     #[pymodule_export]

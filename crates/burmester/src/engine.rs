@@ -88,7 +88,7 @@ impl<'a> Control<'a> {
         self.cancel.is_some_and(|c| c.load(Ordering::Relaxed))
     }
 
-    fn report(&self, done: usize, total: usize) {
+    pub(crate) fn report(&self, done: usize, total: usize) {
         if let Some(p) = self.progress {
             p(done, total);
         }

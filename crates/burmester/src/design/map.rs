@@ -85,8 +85,8 @@ macro_rules! define_columns {
 
         /// One sample's values.
         #[derive(Clone, Copy)]
-        struct Sample {
-            $($name: $ty,)*
+        pub(crate) struct Sample {
+            $(pub(crate) $name: $ty,)*
         }
 
         impl Sample {
@@ -211,7 +211,7 @@ impl MapContext {
 
 /// What the per-sample evaluation of either map shares: the task's
 /// motion and maps, and the prepared limits and constraints.
-struct Sampler<'a> {
+pub(crate) struct Sampler<'a> {
     task: &'a Task,
     cremona: &'a Cremona,
     motion: &'a Motion,
@@ -221,7 +221,11 @@ struct Sampler<'a> {
 }
 
 impl<'a> Sampler<'a> {
-    fn new(task: &'a Task, limits: &'a DesignLimits, constraints: &Constraints) -> Result<Self> {
+    pub(crate) fn new(
+        task: &'a Task,
+        limits: &'a DesignLimits,
+        constraints: &Constraints,
+    ) -> Result<Self> {
         limits.validate()?;
         Ok(Sampler {
             task,
@@ -242,8 +246,27 @@ impl<'a> Sampler<'a> {
     }
 
     /// The moving pivot of a fixed dyad at the three poses.
-    fn fixed_pivots(&self, d: &Dyad) -> [Point2<f64>; 3] {
+    pub(crate) fn fixed_pivots(&self, d: &Dyad) -> [Point2<f64>; 3] {
         [0, 1, 2].map(|k| self.motion.first_to(k, d.circle))
+    }
+
+    /// The sample of candidate driving center `a0` of a driving map with
+    /// the driven dyad `driven` (moving pivot `c` at the three poses) and
+    /// the branch flag `branch_free`: one sample of
+    /// [`Filemon::solution_map`].
+    #[inline]
+    pub(crate) fn driving_sample(
+        &self,
+        a0: Point2<f64>,
+        driven: Dyad,
+        c: &[Point2<f64>; 3],
+        branch_free: bool,
+    ) -> Sample {
+        let Some(a) = self.moving_pivots(a0) else {
+            return Sample::INVALID;
+        };
+        let fig = figures::<false, 3>(a0, &a, driven.center, c, self.tiny);
+        self.sample(fig, branch_free, a0, Dyad::new(a0, a[0]), driven)
     }
 
     /// The sample for figures `fig` with branch flag `branch_free`, where
@@ -333,11 +356,7 @@ impl Filemon {
         let mut columns = Columns::new(grid.len())?;
         let c = sampler.fixed_pivots(&driven);
         fill(grid, &mut columns, control, |k, a0| {
-            let Some(a) = sampler.moving_pivots(a0) else {
-                return Sample::INVALID;
-            };
-            let fig = figures::<false, 3>(a0, &a, driven.center, &c, sampler.tiny);
-            sampler.sample(fig, branch[k], a0, Dyad::new(a0, a[0]), driven)
+            sampler.driving_sample(a0, driven, &c, branch[k])
         })?;
         Ok(SolutionMap {
             context: MapContext {

@@ -24,11 +24,13 @@
 //! the constraints, the clearance check and its bound are in
 //! [`Constraints`]; the maps run on the tiled [`engine`](crate::engine).
 
+pub mod atlas;
 mod constraints;
 mod limits;
 mod map;
 mod rank;
 
+pub use atlas::{AtlasBest, AtlasCell, PivotAtlas};
 pub use constraints::Constraints;
 pub use limits::{DesignLimits, InputRequirement};
 pub use map::{Columns, MapContext, SolutionMap, Varying};

@@ -8,3 +8,4 @@ mod sweep;
 
 pub use cremona::Cremona;
 pub use filemon::{Filemon, Method};
+pub(crate) use sweep::BranchRows;

@@ -143,6 +143,50 @@ fn danger(c: &Conic, q: RowQuad, y: f64, out: &mut [(f64, f64); 2]) -> Option<us
     Some(2)
 }
 
+/// The `conic` branch map of one Filemon over a grid, one row at a time:
+/// row `j` holds exactly the bits of row `j` of
+/// [`Filemon::branch_map_into`] with [`Method::Conic`] (the same kernel),
+/// without allocating the map (the pivot-pair atlas reduces many maps).
+pub(crate) struct BranchRows<'a> {
+    filemon: &'a Filemon,
+    grid: &'a Grid,
+    conics: Option<([Conic; 2], Local)>,
+}
+
+impl<'a> BranchRows<'a> {
+    pub(crate) fn new(filemon: &'a Filemon, grid: &'a Grid) -> Self {
+        let conics = filemon.conics().map(|[ca, cb]| {
+            let local = Local::new(&ca, grid);
+            ([ca, cb], local)
+        });
+        BranchRows {
+            filemon,
+            grid,
+            conics,
+        }
+    }
+
+    /// Whether some sample can be branch-free (not every circle point is
+    /// defective).
+    pub(crate) fn any(&self) -> bool {
+        self.conics.is_some()
+    }
+
+    /// Row `j` into `row` (`grid.nx()` flags).
+    pub(crate) fn row(&self, j: usize, row: &mut [bool]) {
+        let Some(([ca, cb], local)) = &self.conics else {
+            row.fill(false);
+            return;
+        };
+        if local.far_row(self.grid, j) {
+            self.filemon.far_row_map(self.grid, j, row);
+            return;
+        }
+        conic_row(ca, cb, local.y(self.grid, j), &local.xs, row);
+        self.filemon.clear_special_points(self.grid, j, row);
+    }
+}
+
 impl Filemon {
     /// The branch map over `grid` by `method`: one flag per sample,
     /// row-major, `true` where strictly branch-free (module docs).

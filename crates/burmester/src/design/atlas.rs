@@ -1,0 +1,344 @@
+//! The pivot-pair atlas: both fixed pivots at once.
+//!
+//! For every candidate driven center point `C0` on a grid (the *driven
+//! grid*), the three-position solution map over candidate driving center
+//! points `A0` on another grid (the *driving grid*),
+//! [`Filemon::solution_map`], reduced to what a designer compares across
+//! `C0`:
+//!
+//! * the number of acceptable driving pivots;
+//! * the best of them by
+//!   [`RankBy::Transmission`](crate::RankBy::Transmission) (the largest
+//!   minimum transmission angle over the travel, ties within
+//!   [`tolerance::RANK_TIE`] by the larger margin to the nearest
+//!   branch-defect boundary), exactly the first pivot of
+//!   [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(1, ..,
+//!   RankBy::Transmission)`, with its figures;
+//! * the number of branch-free driving samples (the map's `branch_free`
+//!   column).
+//!
+//! The per-`C0` map is never materialised: the branch flags come one row at
+//! a time from the same sweep kernel as the branch map, the figures are
+//! computed only where a sample is branch-free (elsewhere it can be neither
+//! branch-free nor acceptable), and the best is kept as it streams by. Each
+//! driven center is computed from its grid indices alone, so any tiling of
+//! the driven grid ([`Task::pivot_atlas_rows`]) gives the same cells, bit
+//! for bit, as one call ([`Task::pivot_atlas`]).
+//!
+//! Driven centers where Filemon's construction fails (on the pole circle,
+//! at a pole) are flagged `valid = false`, with count 0 and no best.
+
+use core::ops::Range;
+use core::sync::atomic::{AtomicUsize, Ordering};
+
+use nalgebra::Point2;
+use rayon::prelude::*;
+
+use crate::design::map::Sampler;
+use crate::design::{Constraints, DesignLimits};
+use crate::engine::Control;
+use crate::error::{Error, InvalidInput, Result, try_vec};
+use crate::geom::Grid;
+use crate::synthesis::Task;
+use crate::synthesis::three::{BranchRows, Filemon};
+use crate::tolerance;
+
+/// The best driving pivot of one driven center (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AtlasBest {
+    /// The driving center point `A0`.
+    pub driving: Point2<f64>,
+    /// Its sample `(j, i)` on the driving grid.
+    pub index: (usize, usize),
+    /// Minimum transmission angle over the travel, radians (the solution
+    /// map's `min_transmission_rad`).
+    pub min_transmission_rad: f32,
+    /// Longest over shortest link.
+    pub link_ratio: f32,
+    /// Its margin to the nearest branch-defect boundary
+    /// ([`Filemon::margin`]).
+    pub margin: f64,
+}
+
+/// One driven center's reduced solution map.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AtlasCell {
+    /// Filemon's construction exists for this driven center.
+    pub valid: bool,
+    /// Acceptable driving samples (the map's `acceptable` column).
+    pub count: u64,
+    /// Branch-free driving samples (the map's `branch_free` column).
+    pub branch_free: u64,
+    /// The best acceptable driving pivot, if any.
+    pub best: Option<AtlasBest>,
+}
+
+impl AtlasCell {
+    /// A driven center without Filemon's construction.
+    pub const INVALID: AtlasCell = AtlasCell {
+        valid: false,
+        count: 0,
+        branch_free: 0,
+        best: None,
+    };
+}
+
+/// The pivot-pair atlas: what it was computed for, and one
+/// [`AtlasCell`] per driven center, row-major.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PivotAtlas {
+    /// The task.
+    pub task: Task,
+    /// The candidate driven center points `C0`.
+    pub driven: Grid,
+    /// The candidate driving center points `A0` of each map.
+    pub driving: Grid,
+    /// The limits behind `acceptable`.
+    pub limits: DesignLimits,
+    /// The constraints behind `acceptable`.
+    pub constraints: Constraints,
+    /// One cell per driven sample, row-major.
+    pub cells: Vec<AtlasCell>,
+}
+
+impl PivotAtlas {
+    /// The branch-free fraction of cell `k`: branch-free driving samples
+    /// over all driving samples (NaN for an invalid cell).
+    pub fn branch_free_fraction(&self, k: usize) -> f64 {
+        let c = &self.cells[k];
+        if c.valid {
+            c.branch_free as f64 / self.driving.len() as f64
+        } else {
+            f64::NAN
+        }
+    }
+}
+
+impl Task {
+    /// The pivot-pair atlas over driven centers on `driven`, each reduced
+    /// from its solution map over `driving` (module docs of
+    /// [`atlas`](crate::design::atlas)), in parallel, following `control`
+    /// (progress counts driven centers).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NeedsPoses`] for a task of four or five poses;
+    /// [`InvalidInput`] for invalid limits or constraints;
+    /// [`Error::OutOfMemory`]; [`Error::Cancelled`].
+    pub fn pivot_atlas(
+        &self,
+        driven: &Grid,
+        driving: &Grid,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        control: &Control<'_>,
+    ) -> Result<PivotAtlas> {
+        let cells = self.pivot_atlas_rows(
+            driven,
+            0..driven.ny(),
+            driving,
+            limits,
+            constraints,
+            control,
+        )?;
+        Ok(PivotAtlas {
+            task: *self,
+            driven: *driven,
+            driving: *driving,
+            limits: *limits,
+            constraints: constraints.clone(),
+            cells,
+        })
+    }
+
+    /// The cells of rows `rows` of the driven grid (a tile of
+    /// [`pivot_atlas`](Self::pivot_atlas), equal to its cells there bit for
+    /// bit), row-major.
+    ///
+    /// # Errors
+    ///
+    /// As [`pivot_atlas`](Self::pivot_atlas);
+    /// [`InvalidInput::OutsideRange`] for rows outside the driven grid.
+    pub fn pivot_atlas_rows(
+        &self,
+        driven: &Grid,
+        rows: Range<usize>,
+        driving: &Grid,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        control: &Control<'_>,
+    ) -> Result<Vec<AtlasCell>> {
+        self.three_poses("the pivot atlas")?;
+        if rows.start > rows.end || rows.end > driven.ny() {
+            return Err(InvalidInput::OutsideRange {
+                name: "driven rows",
+                value: rows.end as f64,
+                min: rows.start as f64,
+                max: driven.ny() as f64,
+                unit: "",
+            }
+            .into());
+        }
+        let sampler = Sampler::new(self, limits, constraints)?;
+        let nx = driven.nx();
+        let total = (rows.end - rows.start) * nx;
+        let mut cells = try_vec("a pivot atlas", total, AtlasCell::INVALID)?;
+        let done = AtomicUsize::new(0);
+        cells.par_iter_mut().enumerate().for_each_init(
+            || vec![false; driving.nx()],
+            |row, (k, cell)| {
+                if control.is_cancelled() {
+                    return;
+                }
+                let (j, i) = (rows.start + k / nx, k % nx);
+                *cell = atlas_cell(self, &sampler, driven.point(i, j), driving, row);
+                let d = done.fetch_add(1, Ordering::Relaxed) + 1;
+                control.report(d, total);
+            },
+        );
+        let done = done.into_inner();
+        if done < total {
+            return Err(Error::Cancelled { done, total });
+        }
+        Ok(cells)
+    }
+}
+
+/// The cell of driven center `c0`; `row` is a buffer of `driving.nx()`
+/// flags.
+fn atlas_cell(
+    task: &Task,
+    sampler: &Sampler<'_>,
+    c0: Point2<f64>,
+    driving: &Grid,
+    row: &mut [bool],
+) -> AtlasCell {
+    let Ok(filemon) = task.filemon(c0) else {
+        return AtlasCell::INVALID;
+    };
+    let driven = filemon.driven();
+    let c = sampler.fixed_pivots(&driven);
+    let branch = BranchRows::new(&filemon, driving);
+    let mut cell = AtlasCell {
+        valid: true,
+        ..AtlasCell::INVALID
+    };
+    if !branch.any() {
+        return cell;
+    }
+    // The acceptable samples within RANK_TIE of the best score so far:
+    // exactly the first run of `best_pivots`' ranking once all are seen.
+    let mut top = f32::NEG_INFINITY;
+    let mut run: Vec<(usize, f32)> = Vec::new();
+    let nx = driving.nx();
+    for j in 0..driving.ny() {
+        branch.row(j, row);
+        for (i, _) in row.iter().enumerate().filter(|(_, f)| **f) {
+            let s = sampler.driving_sample(driving.point(i, j), driven, &c, true);
+            cell.branch_free += u64::from(s.branch_free);
+            if !s.acceptable {
+                continue;
+            }
+            cell.count += 1;
+            let score = s.min_transmission_rad;
+            if score.is_nan() {
+                continue;
+            }
+            if score > top {
+                top = score;
+                run.retain(|&(_, v)| tied(top, v));
+            }
+            if tied(top, score) {
+                run.push((j * nx + i, score));
+            }
+        }
+    }
+    cell.best = best(task, &filemon, sampler, driving, run).or_else(|| {
+        // No candidate of the first run has a linkage (not seen in
+        // practice): rank every acceptable sample, as `best_pivots` does.
+        (cell.count > 0)
+            .then(|| {
+                best(
+                    task,
+                    &filemon,
+                    sampler,
+                    driving,
+                    all_acceptable(&filemon, sampler, driving),
+                )
+            })
+            .flatten()
+    });
+    cell
+}
+
+/// Whether `score` ties with the best score `top` (as `best_pivots` groups
+/// runs: the difference in `f32`, compared in `f64`).
+#[inline]
+fn tied(top: f32, score: f32) -> bool {
+    f64::from(top - score).abs() <= tolerance::RANK_TIE
+}
+
+/// Every acceptable sample with a transmission angle, `(k, score)`.
+fn all_acceptable(filemon: &Filemon, sampler: &Sampler<'_>, driving: &Grid) -> Vec<(usize, f32)> {
+    let driven = filemon.driven();
+    let c = sampler.fixed_pivots(&driven);
+    let branch = BranchRows::new(filemon, driving);
+    let mut row = vec![false; driving.nx()];
+    let mut out = Vec::new();
+    for j in 0..driving.ny() {
+        branch.row(j, &mut row);
+        for (i, _) in row.iter().enumerate().filter(|(_, f)| **f) {
+            let s = sampler.driving_sample(driving.point(i, j), driven, &c, true);
+            if s.acceptable && !s.min_transmission_rad.is_nan() {
+                out.push((j * driving.nx() + i, s.min_transmission_rad));
+            }
+        }
+    }
+    out
+}
+
+/// The first pivot `best_pivots(1, _, RankBy::Transmission)` takes from
+/// the candidates `cand` (`(k, score)`, in sample order): sorted by score,
+/// runs of ties by margin, the first with a linkage.
+fn best(
+    task: &Task,
+    filemon: &Filemon,
+    sampler: &Sampler<'_>,
+    driving: &Grid,
+    mut cand: Vec<(usize, f32)>,
+) -> Option<AtlasBest> {
+    let driven = filemon.driven();
+    let c = sampler.fixed_pivots(&driven);
+    let nx = driving.nx();
+    cand.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let mut i = 0;
+    while i < cand.len() {
+        let mut j = i + 1;
+        while j < cand.len() && tied(cand[i].1, cand[j].1) {
+            j += 1;
+        }
+        let mut run: Vec<(usize, f64)> = cand[i..j]
+            .iter()
+            .map(|&(k, _)| (k, filemon.margin_at(driving.point(k % nx, k / nx))))
+            .collect();
+        run.sort_by(|a, b| b.1.total_cmp(&a.1));
+        for (k, margin) in run {
+            let p = driving.point(k % nx, k / nx);
+            let linkage = task
+                .dyad_from_center(p)
+                .and_then(|d| task.four_bar(&d, &driven));
+            if linkage.is_ok() {
+                let s = sampler.driving_sample(p, driven, &c, true);
+                return Some(AtlasBest {
+                    driving: p,
+                    index: (k / nx, k % nx),
+                    min_transmission_rad: s.min_transmission_rad,
+                    link_ratio: s.link_ratio,
+                    margin,
+                });
+            }
+        }
+        i = j;
+    }
+    None
+}

@@ -1,0 +1,301 @@
+"""The pivot-pair atlas: search both fixed pivots at once.
+
+For every candidate driven center point ``C0`` on a grid, the three-position
+solution map over candidate driving center points ``A0`` on another grid
+(``task.filemon(C0).solution_map(driving, ...)``), reduced to: the number of
+acceptable driving pivots, the best of them (the largest minimum
+transmission angle over the travel, ties by the margin to the nearest
+branch-defect boundary: exactly ``best_pivots(1)``), its driving center and
+figures, and the branch-free fraction.
+
+The work is done by the native kernel one tile (rows of driven centers) at
+a time; :func:`pivot_atlas` runs it in this process (rayon threads, the GIL
+released, Ctrl-C and ``progress`` honoured) or, with ``client=`` a
+``dask.distributed.Client``, as Dask tasks. Each driven center is computed
+from its grid indices alone, so both give the same arrays, bit for bit.
+"""
+
+from __future__ import annotations
+
+import importlib
+import math
+import os
+import uuid
+from typing import Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from burmester._burmester import DesignLimits, Grid, SynthesizedFourBar, Task, _atlas_tile
+
+__all__ = ["AtlasPair", "PivotAtlas", "pivot_atlas"]
+
+GridArg = Union[Grid, Tuple[float, float, float, float, int, int], Sequence[float]]
+Progress = Callable[[int, int], object]
+
+#: The arrays a tile returns, in order.
+_KEYS = ("valid", "count", "branch_free", "best_transmission_rad", "best_link_ratio",
+         "best_margin", "best_driving", "best_index")
+
+#: Driving-sample evaluations one thread does in about a second (measured:
+#: about 1.2e7 with the default limits in a release build, without
+#: obstacles, which cost more); sizes the Dask tasks.
+_SAMPLES_PER_SECOND = 10_000_000
+
+_DASK_MISSING = 'pivot_atlas(client=...) needs Dask: pip install "burmester[dask]"'
+
+
+def _grid(g: GridArg, what: str) -> Grid:
+    if isinstance(g, Grid):
+        return g
+    try:
+        x0, x1, y0, y1, nx, ny = g
+    except (TypeError, ValueError):
+        raise TypeError(
+            f"{what}: expected a burmester.Grid or (xmin, xmax, ymin, ymax, nx, ny), got {g!r}"
+        ) from None
+    return Grid(float(x0), float(x1), float(y0), float(y1), int(nx), int(ny))
+
+
+class AtlasPair(NamedTuple):
+    """A driven center with its best driving center (one cell of an atlas)."""
+
+    driven: Tuple[float, float]
+    """The driven center point ``C0``."""
+    driving: Tuple[float, float]
+    """The best driving center point ``A0`` for it."""
+    min_transmission_deg: float
+    """Minimum transmission angle over the travel, degrees."""
+    link_ratio: float
+    """Longest over shortest link."""
+    margin: float
+    """The driving center's margin to the nearest branch-defect boundary."""
+    n_acceptable: int
+    """Acceptable driving centers of this driven center."""
+    driven_index: Tuple[int, int]
+    """``(j, i)`` on the driven grid."""
+    driving_index: Tuple[int, int]
+    """``(j, i)`` on the driving grid."""
+
+    def linkage(self, task: Task) -> SynthesizedFourBar:
+        """The four-bar of this pair for ``task`` (the atlas's task)."""
+        return task.four_bar(self.driving, self.driven)
+
+
+class PivotAtlas:
+    """The pivot-pair atlas: NumPy arrays over the driven grid (shape
+    ``(ny, nx)``; ``best_driving`` ``(ny, nx, 2)``). Where a driven center
+    has no Filemon construction (``valid`` false) or no acceptable driving
+    pivot, the ``best_*`` arrays hold NaN (``best_index``: -1)."""
+
+    task: Task
+    driven: Grid
+    driving: Grid
+    options: Dict[str, Any]
+    valid: npt.NDArray[np.bool_]
+    count: npt.NDArray[np.int64]
+    branch_free_count: npt.NDArray[np.int64]
+    best_transmission_deg: npt.NDArray[np.float64]
+    best_link_ratio: npt.NDArray[np.float64]
+    best_margin: npt.NDArray[np.float64]
+    best_driving: npt.NDArray[np.float64]
+    best_index: npt.NDArray[np.int64]
+
+    def __init__(self, task: Task, driven: Grid, driving: Grid, options: Dict[str, Any],
+                 arrays: Dict[str, npt.NDArray[Any]]) -> None:
+        self.task, self.driven, self.driving, self.options = task, driven, driving, dict(options)
+        self.valid = arrays["valid"]
+        self.count = arrays["count"]
+        self.branch_free_count = arrays["branch_free"]
+        # The kernel's f32 radians, widened exactly, then converted.
+        self.best_transmission_deg = np.degrees(arrays["best_transmission_rad"])
+        self.best_link_ratio = arrays["best_link_ratio"]
+        self.best_margin = arrays["best_margin"]
+        self.best_driving = arrays["best_driving"]
+        self.best_index = arrays["best_index"]
+
+    @property
+    def branch_free_fraction(self) -> npt.NDArray[np.float64]:
+        """Branch-free driving samples over all driving samples (NaN where
+        not valid)."""
+        frac = self.branch_free_count / float(self.driving.size)
+        return np.where(self.valid, frac, np.nan)
+
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """``(ny, nx)`` of the driven grid."""
+        return self.driven.shape
+
+    def _arrays(self) -> List[npt.NDArray[Any]]:
+        return [self.valid, self.count, self.branch_free_count, self.best_transmission_deg,
+                self.best_link_ratio, self.best_margin, self.best_driving, self.best_index]
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, PivotAtlas):
+            return NotImplemented
+        return (
+            (self.task, self.driven, self.driving, self.options)
+            == (other.task, other.driven, other.driving, other.options)
+            and all(a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
+                    for a, b in zip(self._arrays(), other._arrays()))
+        )
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def best_pairs(self, k: int = 5) -> List[AtlasPair]:
+        """The ``k`` best cells, best first: by the best transmission angle,
+        ties by the margin, then by row and column."""
+        if k < 0:
+            raise ValueError(f"k must be at least 0, got {k}")
+        js, iis = np.nonzero(~np.isnan(self.best_transmission_deg))
+        if len(js) == 0 or k == 0:
+            return []
+        t = self.best_transmission_deg[js, iis]
+        m = self.best_margin[js, iis]
+        order = np.lexsort((iis, js, -m, -t))[:k]
+        out = []
+        for o in order:
+            j, i = int(js[o]), int(iis[o])
+            dj, di = (int(v) for v in self.best_index[j, i])
+            out.append(AtlasPair(
+                driven=self.driven.point(j, i),
+                driving=(float(self.best_driving[j, i, 0]), float(self.best_driving[j, i, 1])),
+                min_transmission_deg=float(self.best_transmission_deg[j, i]),
+                link_ratio=float(self.best_link_ratio[j, i]),
+                margin=float(self.best_margin[j, i]),
+                n_acceptable=int(self.count[j, i]),
+                driven_index=(j, i),
+                driving_index=(dj, di),
+            ))
+        return out
+
+    def __repr__(self) -> str:
+        n_best = int(np.count_nonzero(~np.isnan(self.best_transmission_deg)))
+        top = np.nanmax(self.best_transmission_deg) if n_best else math.nan
+        return (f"PivotAtlas(driven={self.driven.nx}x{self.driven.ny}, "
+                f"driving={self.driving.nx}x{self.driving.ny}, valid={int(self.valid.sum())}, "
+                f"with_best={n_best}, best_transmission_deg={top:.6g})")
+
+
+def _options(limits: Optional[DesignLimits], min_transmission_deg: Optional[float],
+             max_link_ratio: Optional[float], input: Optional[str],
+             base_plate: Optional[Sequence[Tuple[float, float]]],
+             obstacles: Optional[Sequence[Sequence[Tuple[float, float]]]],
+             link_width: float, travel_samples: int) -> Dict[str, Any]:
+    opts: Dict[str, Any] = {"link_width": link_width, "travel_samples": travel_samples}
+    for name, v in (("limits", limits), ("min_transmission_deg", min_transmission_deg),
+                    ("max_link_ratio", max_link_ratio), ("input", input)):
+        if v is not None:
+            opts[name] = v
+    if base_plate is not None:
+        opts["base_plate"] = [tuple(p) for p in base_plate]
+    if obstacles is not None:
+        opts["obstacles"] = [[tuple(p) for p in o] for o in obstacles]
+    return opts
+
+
+def _tile(task: Task, driven: Grid, r0: int, r1: int, driving: Grid, opts: Dict[str, Any],
+          host_threads: Dict[str, int]) -> Dict[str, npt.NDArray[Any]]:
+    """One Dask task: rows ``r0..r1``, on as many rayon threads as leaves
+    (Dask threads on this host) x (rayon threads) <= cores."""
+    threads = 1
+    try:
+        distributed = importlib.import_module("distributed")
+        host = distributed.get_worker().address.rsplit(":", 1)[0]
+        per_host = host_threads.get(host, 1)
+        threads = max(1, (os.cpu_count() or 1) // max(1, per_host))
+    except (ImportError, ValueError, AttributeError):
+        pass
+    return dict(_atlas_tile(task, driven, r0, r1, driving, threads=threads, **opts))
+
+
+def _on_dask(client: Any, task: Task, driven: Grid, driving: Grid, opts: Dict[str, Any],
+             progress: Optional[Progress], tile_rows: Optional[int]) -> Dict[str, npt.NDArray[Any]]:
+    try:
+        distributed = importlib.import_module("distributed")
+    except ImportError:
+        raise ImportError(_DASK_MISSING) from None
+    workers = client.scheduler_info().get("workers", {})
+    host_threads: Dict[str, int] = {}
+    for addr, w in workers.items():
+        host = str(addr).rsplit(":", 1)[0]
+        host_threads[host] = host_threads.get(host, 0) + int(w.get("nthreads", 1))
+    total_threads = max(1, sum(host_threads.values()))
+    ny = driven.ny
+    if tile_rows is None:
+        per_row = driven.nx * driving.size
+        by_time = max(1, _SAMPLES_PER_SECOND // max(1, per_row))
+        tile_rows = max(1, min(by_time, math.ceil(ny / (2 * total_threads))))
+    if tile_rows < 1:
+        raise ValueError(f"tile_rows must be at least 1, got {tile_rows}")
+    bounds = [(r, min(r + tile_rows, ny)) for r in range(0, ny, tile_rows)]
+    run = uuid.uuid4().hex
+    futures = [
+        client.submit(_tile, task, driven, r0, r1, driving, opts, host_threads,
+                      key=f"burmester-atlas-{run}-{r0}", retries=2)
+        for r0, r1 in bounds
+    ]
+    index = {f.key: n for n, f in enumerate(futures)}
+    parts: List[Optional[Dict[str, npt.NDArray[Any]]]] = [None] * len(futures)
+    done = 0
+    try:
+        for fut in distributed.as_completed(futures):
+            n = index[fut.key]
+            parts[n] = fut.result()
+            done += bounds[n][1] - bounds[n][0]
+            if progress is not None:
+                progress(done, ny)
+    except BaseException:
+        client.cancel(futures)
+        raise
+    return {key: np.concatenate([p[key] for p in parts if p is not None], axis=0) for key in _KEYS}
+
+
+def pivot_atlas(
+    task: Task,
+    driven: GridArg,
+    driving: GridArg,
+    *,
+    client: Any = None,
+    limits: Optional[DesignLimits] = None,
+    min_transmission_deg: Optional[float] = None,
+    max_link_ratio: Optional[float] = None,
+    input: Optional[str] = None,
+    base_plate: Optional[Sequence[Tuple[float, float]]] = None,
+    obstacles: Optional[Sequence[Sequence[Tuple[float, float]]]] = None,
+    link_width: float = 0.0,
+    travel_samples: int = 64,
+    progress: Optional[Progress] = None,
+    tile_rows: Optional[int] = None,
+) -> PivotAtlas:
+    """The pivot-pair atlas of a three-pose ``task``: for every driven center
+    on ``driven``, its solution map over ``driving`` reduced (module docs).
+
+    ``driven`` and ``driving`` are :class:`burmester.Grid` objects or
+    ``(xmin, xmax, ymin, ymax, nx, ny)``. The limit keywords are those of
+    :meth:`Filemon.solution_map`. Without ``client`` it runs in this process;
+    with a ``dask.distributed.Client`` it runs as Dask tasks of
+    ``tile_rows`` driven rows (default: about a second each), with the same
+    result bit for bit. ``progress(done_rows, total_rows)`` is called as it
+    goes. Bad input raises the same errors either way, before any work.
+    """
+    dg, vg = _grid(driven, "driven"), _grid(driving, "driving")
+    opts = _options(limits, min_transmission_deg, max_link_ratio, input, base_plate, obstacles,
+                    link_width, travel_samples)
+    if client is None:
+        rows: Optional[Progress] = None
+        if progress is not None:
+            cb = progress
+            # The kernel counts driven centers; report rows, as on Dask.
+            def rows(done: int, total: int) -> object:
+                return cb(done // dg.nx, dg.ny)
+        arrays = dict(_atlas_tile(task, dg, 0, dg.ny, vg, progress=rows, **opts))
+    else:
+        try:
+            importlib.import_module("distributed")
+        except ImportError:
+            raise ImportError(_DASK_MISSING) from None
+        # Validates the task and the options here, with in-process errors.
+        _atlas_tile(task, dg, 0, 0, vg, **opts)
+        arrays = _on_dask(client, task, dg, vg, opts, progress, tile_rows)
+    return PivotAtlas(task, dg, vg, opts, arrays)
