@@ -1056,7 +1056,10 @@ mod tests {
     #[test]
     fn coefficients_that_underflow_to_no_curve_are_refused() {
         let e = Conic::new(1e-300, 0.0, 0.0, 0.0, 0.0, 1e300).unwrap_err();
-        assert!(matches!(e, Error::InvalidInput(InvalidInput::ConicCoefficients)));
+        assert!(matches!(
+            e,
+            Error::InvalidInput(InvalidInput::ConicCoefficients)
+        ));
         let c = Conic::new(1e-300, 0.0, 0.0, 0.0, 0.0, 1e-290).unwrap();
         let (q, o, s, k) = c.to_parts();
         assert_eq!(Conic::from_parts(q, o, s, k).unwrap(), c);
