@@ -153,6 +153,20 @@ SECTIONS.append(
                 "<= 1.2",
                 lambda r: r <= 1.2,
             ),
+            Ratio(
+                "Python `branch_map(...)` (fresh) / `np.ones((4096, 4096), bool)`",
+                "python/branch_map/fresh/4096",
+                "python/branch_map/np_ones/4096",
+                "<= 2",
+                lambda r: r <= 2.0,
+            ),
+            Ratio(
+                "Python `branch_map(..., out=)` / `out.fill(True)`, 4096^2",
+                "python/branch_map/out/4096",
+                "python/branch_map/out_fill/4096",
+                "(no goal)",
+                lambda r: True,
+            ),
         ],
         python={
             "python/branch_map/fresh/4096": (
@@ -163,6 +177,16 @@ SECTIONS.append(
             "python/branch_map/out/4096": (
                 SWEEP_SETUP,
                 "f.branch_map(*vp, 4096, 4096, out=out)",
+                4096 * 4096,
+            ),
+            "python/branch_map/np_ones/4096": (
+                SWEEP_SETUP,
+                "np.ones((4096, 4096), bool)",
+                4096 * 4096,
+            ),
+            "python/branch_map/out_fill/4096": (
+                SWEEP_SETUP,
+                "out.fill(True)",
                 4096 * 4096,
             ),
         },
@@ -213,6 +237,62 @@ SECTIONS.append(
             "per core on this 2-core machine, below what the per-point arithmetic costs "
             "even fully vectorized. Against the point-by-point `direct` branch sweep, "
             "which computes the same circle point per point, the full map is within 3x."
+        ),
+    )
+)
+
+
+SOLVE_MANY_SETUP = """
+import numpy as np
+from burmester._burmester import FourBar
+L1, L2, L3, L4 = 4.0, 1.0, 3.0, 3.0
+fb = FourBar(ground=L1, crank=L2, coupler=L3, rocker=L4)
+th = np.random.default_rng(1).uniform(-np.pi, np.pi, 10**6)
+
+def numpy_closed_form(th, s=1.0):
+    # Circle intersection and two arctan2: the plain NumPy baseline.
+    ax, ay = L2 * np.cos(th), L2 * np.sin(th)
+    dx, dy = L1 - ax, -ay
+    r2 = dx * dx + dy * dy
+    a = (L3 * L3 - L4 * L4 + r2) / (2 * r2)
+    h = np.sqrt(L3 * L3 / r2 - a * a)
+    bx = ax + a * dx - s * h * dy
+    by = ay + a * dy + s * h * dx
+    return np.arctan2(by - ay, bx - ax), np.arctan2(by, bx - L1), ~np.isnan(h)
+"""
+
+SECTIONS.append(
+    Section(
+        title="Batch position analysis (`FourBar.solve_many`)",
+        benches=[],
+        prefixes=["python/solve_many/"],
+        ratios=[
+            Ratio(
+                "NumPy closed form / `solve_many`, 10^6 angles",
+                "python/solve_many/numpy_closed_form/1000000",
+                "python/solve_many/solve_many/1000000",
+                ">= 5",
+                lambda r: r >= 5.0,
+            ),
+        ],
+        python={
+            "python/solve_many/solve_many/1000000": (
+                SOLVE_MANY_SETUP,
+                "fb.solve_many(th)",
+                10**6,
+            ),
+            "python/solve_many/numpy_closed_form/1000000": (
+                SOLVE_MANY_SETUP,
+                "numpy_closed_form(th)",
+                10**6,
+            ),
+        },
+        note=(
+            "Norton-like crank-rocker (4, 1, 3, 3), 10^6 uniform angles in (-pi, pi). "
+            "The baseline is the textbook circle intersection written in plain NumPy "
+            "(cos, sin, sqrt and two arctan2 over whole arrays, with temporaries). "
+            "`solve_many` runs the batch kernel of `FourBar::solve_into` (bit for bit "
+            "`solve`), with rayon on all cores."
         ),
     )
 )

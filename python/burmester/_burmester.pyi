@@ -417,8 +417,10 @@ class FourBar:
     ) -> Tuple[FloatArray, FloatArray, BoolArray]:
         """``(theta3, theta4, valid)`` for every input angle, arrays of the
         input's shape. The angles are NaN exactly where ``valid`` is False
-        (the loop does not close there, or the angle is not finite). The GIL
-        is released during the computation."""
+        (the loop does not close there, or the angle is not finite or beyond
+        ``1e9`` rad), and elsewhere the very values of :meth:`solve`. The GIL
+        is released during the computation, which runs four angles at a time
+        in SIMD lanes and, from 16384 angles on, on all cores."""
     def transmission_angle(self, theta2: float, mode: Mode = "open") -> float:
         """The transmission angle (acute angle between coupler and rocker),
         radians."""

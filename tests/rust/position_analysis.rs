@@ -506,3 +506,80 @@ proptest! {
         }
     }
 }
+
+/// The batch kernel of `solve_into` (structure of arrays, rayon above its
+/// threshold) gives exactly the bits of `solve`, and NaN rows where `solve`
+/// fails: 10^5 angles on each of many linkages, including angles at and
+/// next to the toggle positions (where the closure is most sensitive to
+/// rounding), angles beyond `MAX_ANGLE`, NaN and infinities.
+#[test]
+fn solve_into_batch_is_bitwise_solve() {
+    // xorshift64*: deterministic, no dependency.
+    let mut state = 0x9E37_79B9_7F4A_7C15u64;
+    let mut next = move || {
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        (state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let n = 100_000;
+    let mut linkages = vec![
+        FourBar::new(3.0, 2.0, 1.5, 1.0).unwrap(),
+        FourBar::new(4.0, 1.0, 3.0, 3.0).unwrap(),
+        FourBar::new(2.0, 1.0, 2.0, 1.0).unwrap(),
+        FourBar::new(1.0, 1.0, 2.0, 2.0).unwrap(),
+    ];
+    while linkages.len() < 24 {
+        let l = [0; 4].map(|_| 0.1 + 9.9 * next());
+        let (x, y, a) = (
+            200.0 * next() - 100.0,
+            200.0 * next() - 100.0,
+            TAU * next() - PI,
+        );
+        if let Ok(fb) = FourBar::placed(l[0], l[1], l[2], l[3], Point2::new(x, y), a) {
+            linkages.push(fb);
+        }
+    }
+    for fb in &linkages {
+        let mut ts: Vec<f64> = (0..n).map(|_| 20.0 * next() - 10.0).collect();
+        // Near the toggles: the arc ends, nudged by a few ulps to 1e-6.
+        if let InputRange::Arc(arc) = fb.input_range() {
+            for (k, t) in ts.iter_mut().enumerate().take(2000) {
+                let end = if k % 2 == 0 { arc.start } else { arc.end };
+                let nudge = [0.0, 1e-16, -1e-16, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6][k / 2 % 8];
+                *t = end * (1.0 + nudge) + nudge;
+            }
+        }
+        ts[2001] = f64::NAN;
+        ts[2002] = f64::INFINITY;
+        ts[2003] = -f64::INFINITY;
+        ts[2004] = FourBar::MAX_ANGLE;
+        ts[2005] = FourBar::MAX_ANGLE * (1.0 + f64::EPSILON);
+        ts[2006] = -1e12;
+        ts[2007] = 1e6 + 0.25;
+        for mode in [AssemblyMode::Open, AssemblyMode::Crossed] {
+            // The whole slice (parallel path) and an odd-length prefix
+            // (serial path with a tail shorter than the lane count).
+            for len in [n, 4099] {
+                let (mut t3, mut t4, mut ok) = (vec![0.0; len], vec![0.0; len], vec![false; len]);
+                let count = fb
+                    .solve_into(&ts[..len], mode, &mut t3, &mut t4, &mut ok)
+                    .unwrap();
+                assert_eq!(count, ok.iter().filter(|&&b| b).count());
+                for (i, &t) in ts[..len].iter().enumerate() {
+                    match fb.solve(t, mode) {
+                        Ok(c) => {
+                            assert!(ok[i], "{fb:?} {t}");
+                            assert_eq!(c.theta3.to_bits(), t3[i].to_bits(), "{fb:?} {t}");
+                            assert_eq!(c.theta4.to_bits(), t4[i].to_bits(), "{fb:?} {t}");
+                        }
+                        Err(_) => {
+                            assert!(!ok[i], "{fb:?} {t}");
+                            assert!(t3[i].is_nan() && t4[i].is_nan());
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

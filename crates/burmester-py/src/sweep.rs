@@ -1,8 +1,7 @@
 //! `Filemon.branch_map` and `Filemon.margin_map`: the dense grid sweeps.
 
 use burmester::{Filemon, Grid, Method};
-use numpy::ndarray::Array2;
-use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods, PyUntypedArrayMethods};
+use numpy::{Element, PyArray2, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 
@@ -79,54 +78,47 @@ fn out_array<'py, T: Element>(
     Ok(arr.clone())
 }
 
-/// Runs `fill` into a fresh `(ny, nx)` array (handed to NumPy without a
-/// copy) or into `out`, with the GIL released, Ctrl-C and progress.
+/// Runs `fill` into a fresh `(ny, nx)` array or into `out`, with the GIL
+/// released, Ctrl-C and progress.
+///
+/// A fresh map is allocated by NumPy (`numpy.zeros`: its pages are mapped
+/// lazily, and NumPy asks for huge pages on large arrays) and then swept
+/// exactly as `out=` is, so that its first-touch page faults happen inside
+/// the parallel sweep instead of in a single-threaded fill beforehand.
 fn run_map<'py, T: Element + Copy + Send>(
     py: Python<'py>,
     grid: Grid,
-    zero: T,
     dtype: &str,
     out: Option<Bound<'py, PyAny>>,
     progress: Option<&Bound<'py, PyAny>>,
     fill: impl Fn(&mut [T], &burmester::Control<'_>) -> burmester::Result<()> + Send + Sync,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let (ny, nx) = (grid.ny(), grid.nx());
     let watch = grid.len() >= WATCH_MIN_SAMPLES;
-    match out {
-        None => {
-            let v = run(py, watch, progress, None, |control| {
-                let mut v = burmester::error::try_vec("a map", grid.len(), zero)?;
-                fill(&mut v, control)?;
-                Ok(v)
-            })?;
-            Ok(Array2::from_shape_vec((ny, nx), v)
-                .expect("one value per sample")
-                .into_pyarray(py)
-                .into_any())
-        }
-        Some(out) => {
-            let arr = out_array::<T>(&out, &grid, dtype)?;
-            {
-                let mut rw = arr.try_readwrite().map_err(|_| {
-                    invalid(
-                        "out_array",
-                        "out is being written by another call (NumPy arrays lent to Rust are \
-                         borrow-checked); pass a separate array to each concurrent call",
-                    )
-                })?;
-                let slice = rw.as_slice_mut().map_err(|_| {
-                    invalid(
-                        "out_array",
-                        "out must be C-contiguous; pass numpy.empty((ny, nx))",
-                    )
-                })?;
-                run(py, watch, progress, Some("out"), |control| {
-                    fill(slice, control)
-                })?;
-            }
-            Ok(out)
-        }
+    let (out, partial) = match out {
+        Some(out) => (out, Some("out")),
+        None => (
+            crate::conv::zeros::<T>(py, &[grid.ny(), grid.nx()])?.into_any(),
+            None,
+        ),
+    };
+    let arr = out_array::<T>(&out, &grid, dtype)?;
+    {
+        let mut rw = arr.try_readwrite().map_err(|_| {
+            invalid(
+                "out_array",
+                "out is being written by another call (NumPy arrays lent to Rust are \
+                 borrow-checked); pass a separate array to each concurrent call",
+            )
+        })?;
+        let slice = rw.as_slice_mut().map_err(|_| {
+            invalid(
+                "out_array",
+                "out must be C-contiguous; pass numpy.empty((ny, nx))",
+            )
+        })?;
+        run(py, watch, progress, partial, |control| fill(slice, control))?;
     }
+    Ok(out)
 }
 
 /// `Filemon.branch_map` (see the stub for the docs).
@@ -139,15 +131,9 @@ pub(crate) fn branch_map<'py>(
     progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let method = method.parse::<Method>().py()?;
-    run_map(
-        py,
-        grid,
-        false,
-        "bool",
-        out,
-        progress,
-        move |buf, control| f.branch_map_into(&grid, method, buf, control),
-    )
+    run_map(py, grid, "bool", out, progress, move |buf, control| {
+        f.branch_map_into(&grid, method, buf, control)
+    })
 }
 
 /// `Filemon.margin_map`.
@@ -158,13 +144,7 @@ pub(crate) fn margin_map<'py>(
     out: Option<Bound<'py, PyAny>>,
     progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    run_map(
-        py,
-        grid,
-        0.0f32,
-        "float32",
-        out,
-        progress,
-        move |buf, control| f.margin_map_into(&grid, buf, control),
-    )
+    run_map(py, grid, "float32", out, progress, move |buf, control| {
+        f.margin_map_into(&grid, buf, control)
+    })
 }
