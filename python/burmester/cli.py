@@ -200,8 +200,8 @@ def _fmt_point(p: Sequence[float]) -> str:
 
 def cmd_map(args: argparse.Namespace) -> int:
     """``burmester map``: draw the center-point (or circle-point) plane."""
+    spec = _with_grid(_load(args.task), args.grid)  # the task file's errors first
     _output(args.output, PICTURE_TYPES, args.force)
-    spec = _with_grid(_load(args.task), args.grid)
     plot = _plot_module()
     if spec.driven_center is None:
         return _map_many(args, spec, plot)
@@ -292,9 +292,9 @@ def _atlas_client(address: Optional[str]) -> Any:
 def cmd_atlas(args: argparse.Namespace) -> int:
     """``burmester atlas``: the best driving pivot for every driven center."""
     output = args.output if args.output is not None else (None if args.json else "atlas.png")
+    spec = _load(args.task)  # the task file's errors first
     if output is not None:
         _output(output, PICTURE_TYPES, args.force)
-    spec = _load(args.task)
     v = spec.view
     grids = []
     for flag, given, default in (("--driven-grid", args.driven_grid, ATLAS_DRIVEN_GRID),
@@ -429,8 +429,8 @@ def cmd_pivots(args: argparse.Namespace) -> int:
 
 def cmd_linkage(args: argparse.Namespace) -> int:
     """``burmester linkage``: draw or animate the four-bar of one driving pivot."""
+    spec = _load(args.task)  # the task file's errors first
     _output(args.output, PICTURE_TYPES + ANIMATION_TYPES, args.force)
-    spec = _load(args.task)
     filemon = spec.filemon()
     if args.pivot is None:
         best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view))

@@ -532,7 +532,7 @@ impl Conic {
                 name: "viewport diagonal",
                 value: diag,
                 limit: Self::MAX_VIEWPORT_DIAGONAL,
-                hint: "draw a smaller viewport",
+                hint: "pass a smaller viewport",
             }
             .into());
         }
