@@ -56,8 +56,10 @@ class Section:
     #: Python timings: id -> (setup, statement, elements); run with timeit.
     python: dict[str, tuple[str, str, int]] = field(default_factory=dict)
     note: str = ""
-    #: Extra lines after the tables (facts a bench wrote beside its figures).
-    extra: Optional[Callable[[], list[str]]] = None
+    #: Python timings: warm-up calls, calls per batch, batches (None: --python-repeat).
+    python_runs: tuple[int, int, Optional[int]] = (5, 10, None)
+    #: More lines after the tables, computed from the figures.
+    extra: Optional[Callable[[dict[str, "Figure"]], list[str]]] = None
 
 
 SECTIONS: list[Section] = [
@@ -301,7 +303,7 @@ SECTIONS.append(
 )
 
 
-def burmester_points_completeness() -> list[str]:
+def burmester_points_completeness(figures: dict[str, Figure]) -> list[str]:
     """The completeness line the `burmester_points` bench writes."""
     f = CRITERION / "burmester_points" / "completeness.json"
     if not f.exists():
@@ -320,6 +322,79 @@ def burmester_points_completeness() -> list[str]:
         "(baseline) | |",
         "",
     ]
+
+
+#: The atlas bench's grids: the issue asks for 256^2 driven x 256^2 driving
+#: (4.3e9 pairs: about 4 minutes a run in process on 2 cores at the cost
+#: measured here, about 18 for the Python loop, each timed 4 times), scaled
+#: down so that each run takes a few seconds here.
+ATLAS_DRIVEN = int(os.environ.get("BURMESTER_BENCH_ATLAS_DRIVEN", "32"))
+ATLAS_DRIVING = int(os.environ.get("BURMESTER_BENCH_ATLAS_DRIVING", "128"))
+ATLAS_PAIRS = ATLAS_DRIVEN**2 * ATLAS_DRIVING**2
+ATLAS_ID = f"{ATLAS_DRIVEN}x{ATLAS_DRIVEN}_{ATLAS_DRIVING}x{ATLAS_DRIVING}"
+
+ATLAS_SETUP = f"""
+import os, burmester
+from burmester import Grid, Task
+t = Task([(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)])
+driven = Grid(-8.0, 8.0, -8.0, 8.0, {ATLAS_DRIVEN}, {ATLAS_DRIVEN})
+driving = Grid(-8.0, 8.0, -8.0, 8.0, {ATLAS_DRIVING}, {ATLAS_DRIVING})
+limits = burmester.DesignLimits(30.0, 10.0, "any")
+
+def python_loop():
+    # What a user writes without the atlas: one solution map per C0.
+    best = []
+    for j in range(driven.ny):
+        for i in range(driven.nx):
+            try:
+                f = t.filemon(driven.point(j, i))
+            except burmester.BurmesterError:
+                continue
+            best.append(f.solution_map(driving, limits=limits).best_pivots(1))
+    return best
+"""
+
+ATLAS_DASK_SETUP = ATLAS_SETUP + """
+import distributed
+cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                   dashboard_address=None)
+client = distributed.Client(cluster)
+"""
+
+#: Cores per machine and machine counts of the extrapolation table.
+ATLAS_CORES_PER_MACHINE = 16
+ATLAS_MACHINES = (1, 4, 16, 64)
+ATLAS_BIG = 1024
+
+
+def atlas_extrapolation(figures: dict[str, Figure]) -> list[str]:
+    """The expected time of a 1024^2 x 1024^2 atlas on N 16-core machines,
+    from the measured in-process cost per (driven, driving) pair."""
+    inproc = figures.get(f"python/atlas/in_process/{ATLAS_ID}")
+    if inproc is None:
+        return []
+    cores = os.cpu_count() or 1
+    per_pair_core_ns = inproc.mean_ns * cores / ATLAS_PAIRS
+    dask = figures.get(f"python/atlas/dask_2x1/{ATLAS_ID}")
+    eff = min(1.0, inproc.mean_ns / dask.mean_ns) if dask is not None else 1.0
+    pairs = ATLAS_BIG**4
+    core_s = pairs * per_pair_core_ns * 1e-9
+    lines = [
+        f"Measured cost: {per_pair_core_ns:.1f} core-ns per (driven, driving) pair "
+        f"(in process, {fmt_time(inproc.mean_ns)} x {cores} cores / {ATLAS_PAIRS:.3g} pairs). "
+        f"A {ATLAS_BIG}^2 x {ATLAS_BIG}^2 atlas is {pairs:.3g} pairs, {core_s / 3600:.3g} "
+        f"core-hours; on N machines of {ATLAS_CORES_PER_MACHINE} cores at the measured Dask "
+        f"parallel efficiency e = {eff:.2f}: T = pairs x cost / (N x "
+        f"{ATLAS_CORES_PER_MACHINE} x e), assuming a core there costs what one does here.",
+        "",
+        "| machines (16 cores each) | expected time |",
+        "|---|---|",
+    ]
+    for n in ATLAS_MACHINES:
+        t_ns = core_s * 1e9 / (n * ATLAS_CORES_PER_MACHINE * eff)
+        lines.append(f"| {n} | {t_ns / 3.6e12:.3g} h |")
+    lines.append("")
+    return lines
 
 
 SECTIONS.append(
@@ -352,6 +427,64 @@ SECTIONS.append(
             "(at pose 1) lies within 1e-3 task sizes of it. The core has no pair map, so "
             "the 1024^2 pair map of the issue is not measured here."
         ),
+    )
+)
+
+SECTIONS.append(
+    Section(
+        title="Pivot-pair atlas (`burmester.pivot_atlas`)",
+        benches=[],
+        prefixes=["python/atlas/"],
+        ratios=[
+            Ratio(
+                "Python loop of `solution_map` + `best_pivots(1)` / atlas in process",
+                f"python/atlas/python_loop/{ATLAS_ID}",
+                f"python/atlas/in_process/{ATLAS_ID}",
+                ">= 5",
+                lambda r: r >= 5.0,
+            ),
+            Ratio(
+                "Dask LocalCluster (2 workers x 1 thread) / atlas in process, same cores "
+                "(parallel efficiency = 1 / this)",
+                f"python/atlas/dask_2x1/{ATLAS_ID}",
+                f"python/atlas/in_process/{ATLAS_ID}",
+                "<= 1.25 (efficiency >= 0.8)",
+                lambda r: r <= 1.25,
+            ),
+        ],
+        python={
+            f"python/atlas/in_process/{ATLAS_ID}": (
+                ATLAS_SETUP,
+                "burmester.pivot_atlas(t, driven, driving, limits=limits)",
+                ATLAS_PAIRS,
+            ),
+            f"python/atlas/python_loop/{ATLAS_ID}": (
+                ATLAS_SETUP,
+                "python_loop()",
+                ATLAS_PAIRS,
+            ),
+            f"python/atlas/dask_2x1/{ATLAS_ID}": (
+                ATLAS_DASK_SETUP,
+                "burmester.pivot_atlas(t, driven, driving, limits=limits, client=client)",
+                ATLAS_PAIRS,
+            ),
+        },
+        python_runs=(1, 1, 3),
+        note=(
+            f"The built-in example task, driven and driving centers on grids over (-8, 8)^2: "
+            f"{ATLAS_DRIVEN}^2 driven x {ATLAS_DRIVING}^2 driving ({ATLAS_PAIRS:.3g} pairs; "
+            "throughput in pairs). The issue's 256^2 x 256^2 is scaled down: it is 4.3e9 "
+            "pairs, minutes per run on this 2-core machine (several times that for the Python "
+            "loop, and every figure is timed four times), while the cost per pair hardly "
+            "depends on the grid sizes (each driven center is one solution map of the "
+            "driving grid). The Python loop is what a user writes without the "
+            "atlas: `task.filemon(C0).solution_map(driving)` and `best_pivots(1)` for every "
+            "`C0`. The Dask figure is a `LocalCluster(n_workers=2, threads_per_worker=1, "
+            "processes=True)` started beforehand, on the same 2 cores as the in-process run "
+            "(rayon on all cores); it includes shipping the task and the arrays. "
+            "Each timing is one call, three times, after one warm-up call."
+        ),
+        extra=atlas_extrapolation,
     )
 )
 
@@ -412,15 +545,19 @@ def run_python(sections: list[Section], repeat: int) -> None:
     for s in sections:
         for pid, (setup, stmt, elements) in s.python.items():
             env: dict = {}
-            exec(setup, env)
+            try:
+                exec(setup, env)
+            except ImportError as e:  # e.g. Dask not installed
+                print(f"python {pid}: skipped ({e})", file=sys.stderr)
+                continue
             code = compile(stmt, pid, "exec")
-            for _ in range(5):
+            warmup, batch, batches = s.python_runs
+            for _ in range(warmup):
                 exec(code, env)  # warm up
             # Like criterion: batches of back-to-back calls, per-call time
             # of each batch.
-            batch = 10
             times = []
-            for _ in range(repeat):
+            for _ in range(batches or repeat):
                 t0 = time.perf_counter_ns()
                 for _ in range(batch):
                     exec(code, env)
@@ -525,7 +662,7 @@ def write(figures: dict[str, Figure]) -> str:
                 lines.append(f"| {r.name} | {v:.2f} | {r.goal} | {'yes' if r.ok(v) else 'NO'} |")
             lines.append("")
         if s.extra is not None:
-            lines += s.extra()
+            lines += s.extra(figures)
     return "\n".join(lines)
 
 

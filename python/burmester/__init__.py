@@ -33,6 +33,7 @@ from burmester._burmester import (
     clip_line,
 )
 from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
+from burmester.batch import best_pivots_batch
 
 __all__ = [
     "AtlasPair",
@@ -57,6 +58,7 @@ __all__ = [
     "SynthesizedFourBar",
     "Task",
     "__version__",
+    "best_pivots_batch",
     "clip_line",
     "pivot_atlas",
 ]

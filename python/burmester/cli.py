@@ -7,6 +7,7 @@ Commands::
     burmester pivots [TASK.toml] --top 5      # the best driving pivots, as a table (--json)
     burmester linkage [TASK.toml] -o l.gif    # a four-bar at the poses (.png) or animated (.gif/.mp4)
     burmester atlas [TASK.toml] -o atlas.png  # both pivots at once: the best driving pivot per driven center
+    burmester batch A.toml B.toml --top 5     # each task's best pivots, one JSON line per file
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
     burmester example > task.toml             # a task file to start from
 
@@ -405,26 +406,36 @@ def cmd_pivots(args: argparse.Namespace) -> int:
     """``burmester pivots``: rank the branch-free driving pivots."""
     spec = _with_grid(_load(args.task), args.grid)
     spacing = _spacing(spec, args.spacing)
-    smap = _solution_map(spec, spec.filemon())
-    pivots, ranked_by = pv.rank(smap, args.top, spacing)
     if args.json:
-        v, lim = spec.view, spec.limits
-        doc = {
-            "task": spec.source,
-            "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax], "grid": [v.nx, v.ny]},
-            "limits": {
-                "min_transmission_deg": lim.min_transmission_deg,
-                "max_link_ratio": lim.max_link_ratio,
-                "input": lim.input,
-            },
-            "spacing": spacing,
-            "ranking": ranked_by,
-            "pivots": [pv.as_dict(p, lim) for p in pivots],
-        }
+        doc = pv.report(spec, args.top, spacing, progress_for(spec.view, "solution map", 16))
         print(json.dumps(doc, indent=2))
     else:
+        smap = _solution_map(spec, spec.filemon())
+        pivots, ranked_by = pv.rank(smap, args.top, spacing)
         print(pivot_table(spec, pivots, ranked_by))
     return 0
+
+
+def cmd_batch(args: argparse.Namespace) -> int:
+    """``burmester batch``: each task file's best pivots, one JSON line each
+    (the document of ``burmester pivots --json``, or ``{"task", "error"}``);
+    status 2 when any file failed, after all of them ran."""
+    if args.spacing is not None and not args.spacing >= 0.0:
+        raise UsageError(f"--spacing must be at least 0, got {args.spacing:g}")
+    client = _atlas_client(args.scheduler)
+    try:
+        records = burmester.best_pivots_batch(args.tasks, client=client, top=args.top,
+                                              spacing=args.spacing)
+    finally:
+        if client is not None:
+            client.close()
+    failed = 0
+    for rec in records:
+        print(json.dumps(rec), flush=True)
+        if "error" in rec:
+            failed += 1
+            print(f"burmester batch: error: {rec['error']}", file=sys.stderr)
+    return 2 if failed else 0
 
 
 def cmd_linkage(args: argparse.Namespace) -> int:
@@ -704,6 +715,19 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_atlas)
+
+    p = sub.add_parser("batch", help="the best driving pivots of many task files, one JSON line each",
+                       description="Rank the driving pivots of each task file as 'burmester pivots "
+                       "--json' does, printing one JSON line per file (JSON lines), in order. A file "
+                       "that fails gives a line with an \"error\" field; the others still run, and the "
+                       "exit status is 2 at the end. With --scheduler, one Dask task per file.")
+    p.add_argument("tasks", nargs="+", metavar="TASK.toml", help="task files (TOML; see 'burmester example')")
+    p.add_argument("--top", type=_positive_int, default=5, help="how many pivots per task (default: 5)")
+    p.add_argument("--spacing", type=_finite, default=None,
+                   help="least distance between listed pivots (default: a tenth of each view's shorter side)")
+    p.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                   help="run on a Dask cluster (tcp://host:8786); needs burmester[dask]")
+    p.set_defaults(func=cmd_batch)
 
     p = sub.add_parser("solve", help="position analysis of a four-bar (angles in degrees)",
                        description="Solve a four-bar's position: the coupler and rocker angles for "

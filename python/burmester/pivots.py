@@ -23,9 +23,10 @@ from typing import TYPE_CHECKING, Any, Dict, List, Optional, Tuple
 from burmester._burmester import DesignLimits, Grid, LinkageFigures, Pivot, SolutionMap, SynthesizedFourBar
 
 if TYPE_CHECKING:
-    from burmester._burmester import RankBy
+    from burmester._burmester import Progress, RankBy
+    from burmester.taskfile import TaskSpec
 
-__all__ = ["default_spacing", "rank", "transmission_at_poses_deg", "violations", "as_dict"]
+__all__ = ["default_spacing", "rank", "transmission_at_poses_deg", "violations", "as_dict", "report"]
 
 
 def default_spacing(grid: Grid) -> float:
@@ -111,3 +112,32 @@ def as_dict(pivot: Pivot, limits: Optional[DesignLimits] = None) -> Dict[str, An
     if limits is not None:
         d["violations"] = violations(f, limits)
     return d
+
+
+def report(spec: "TaskSpec", top: int, spacing: Optional[float] = None,
+           progress: Optional["Progress"] = None) -> Dict[str, Any]:
+    """The JSON document of ``burmester pivots --json`` for a task: its view,
+    limits, the spacing, which ranking (:func:`rank`) and the ``top`` best
+    pivots (:func:`as_dict`). ``spacing`` defaults to
+    :func:`default_spacing` of the view; ``progress`` goes to the solution
+    map. Raises :class:`burmester.taskfile.TaskFileError` for a task of four
+    or five poses and ``ValueError`` for a negative spacing."""
+    if spacing is None:
+        spacing = default_spacing(spec.view)
+    elif not spacing >= 0.0:
+        raise ValueError(f"spacing must be at least 0, got {spacing:g}")
+    smap = spec.filemon().solution_map(spec.view, limits=spec.limits, progress=progress)
+    pivots, ranked_by = rank(smap, top, spacing)
+    v, lim = spec.view, spec.limits
+    return {
+        "task": spec.source,
+        "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax], "grid": [v.nx, v.ny]},
+        "limits": {
+            "min_transmission_deg": lim.min_transmission_deg,
+            "max_link_ratio": lim.max_link_ratio,
+            "input": lim.input,
+        },
+        "spacing": spacing,
+        "ranking": ranked_by,
+        "pivots": [as_dict(p, lim) for p in pivots],
+    }

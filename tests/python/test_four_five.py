@@ -221,14 +221,22 @@ def test_order_arcs_carry_the_order_of_their_dyads():
     arcs = t.order_arcs(-12, 12, -12, 12)
     assert len(arcs) >= 2
     directions = {"1-2-3-4": "counterclockwise", "1-4-3-2": "clockwise"}
+    qs = [q.center for q in t.coincidence_points()]
+    checked = 0
     for order, direction, pts in arcs:
         assert direction == directions.get(order)
         mid = tuple(map(float, pts[len(pts) // 2]))
+        # At a Q_jk two crank positions coincide and the order is undefined
+        # (an arc of two points ends there on both sides).
+        if min(math.dist(mid, q) for q in qs) < 1e-6:
+            continue
         try:
             angles = t.crank_angles(mid)
         except burmester.BurmesterError:
             continue
         assert _crank_order(angles) == order
+        checked += 1
+    assert checked >= len(arcs) - 2, (checked, len(arcs))
     # The known crank meets the poses in order, counter-clockwise.
     assert _crank_order(t.crank_angles(A0)) == "1-2-3-4"
 
