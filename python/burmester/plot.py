@@ -756,7 +756,8 @@ def linkage(
         ax.add_patch(tri)
     if labels:
         state = "branch-free" if sfb.branch_free else "branch defect (modes differ)"
-        ax.set_title(f"Four-bar at the {len(sfb.input_angles)} poses: {sfb.fourbar.grashof}, {state}")
+        count = {3: "three", 4: "four", 5: "five"}.get(len(sfb.input_angles), str(len(sfb.input_angles)))
+        ax.set_title(f"Four-bar at the {count} poses: {sfb.fourbar.grashof}, {state}")
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.margins(0.08)

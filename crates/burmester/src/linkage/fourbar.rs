@@ -45,9 +45,7 @@
 //!
 //! The two `atan2` are evaluated together in two SIMD lanes (the `wide`
 //! crate, within about 1 ulp of a correctly rounded `atan2`); `sin` and `cos`
-//! of the input come from the same crate's SIMD polynomial up to
-//! `|theta2| <= 1e5` (within 1 ulp of `libm` there, tested against it) and
-//! from `libm` beyond. [`FourBar::solve_into`] runs the same arithmetic
+//! of the input come from `libm`. [`FourBar::solve_into`] runs the same arithmetic
 //! four angles at a time (and in parallel on large inputs), so that it gives
 //! the bits of [`FourBar::solve`].
 //!
@@ -290,29 +288,6 @@ impl LoopVectors {
 /// The SIMD vector of the batch kernel's `atan2` (lane by lane the same
 /// algorithm as the two lanes of [`FourBar::solve`]).
 type SolveLanes = wide::f64x4;
-/// The SIMD vector of `sin` and `cos` of the input angle ([`sincos`]).
-type TrigLanes = wide::f64x2;
-/// Up to this input angle magnitude `sin` and `cos` come from the SIMD
-/// polynomial of [`sincos`]; beyond (where its three-part reduction by
-/// `pi/2` starts to lose bits) and for NaN, from `libm`.
-const SIMD_TRIG_MAX: f64 = 1e5;
-
-/// `(sin t, cos t)` of an input angle, the same bits in [`FourBar::solve`]
-/// (one lane) and in the batch kernel (several): the `wide` crate's SIMD
-/// polynomial (Agner Fog's vector class library: a Cody-Waite reduction by
-/// `pi/2` in three parts and degree-13 and -14 polynomials; within 1 ulp of
-/// `libm` in practice, tested against it) up to [`SIMD_TRIG_MAX`], `libm`
-/// beyond.
-#[inline(always)]
-fn sincos(t: f64) -> (f64, f64) {
-    if t.abs() <= SIMD_TRIG_MAX {
-        let (s, c) = TrigLanes::splat(t).sin_cos();
-        (s.to_array()[0], c.to_array()[0])
-    } else {
-        libm::sincos(t)
-    }
-}
-
 /// Angles per step of the batch kernel.
 const SOLVE_LANES: usize = 4;
 /// Angles per parallel task of [`FourBar::solve_into`].
@@ -527,7 +502,7 @@ impl FourBar {
         if !(theta2.abs() <= Self::MAX_ANGLE) {
             return Err(angle_error(theta2));
         }
-        let (s2, c2) = sincos(theta2);
+        let (s2, c2) = libm::sincos(theta2);
         let l = self.loop_vectors(c2, s2, mode.sign());
         // One comparison catches both a loop that does not close and NaN
         // (from a non-finite angle). A crank tip on the output pivot
@@ -689,9 +664,9 @@ impl FourBar {
 
     /// The batch kernel of [`solve_into`](Self::solve_into) on slices of
     /// one length: [`SOLVE_LANES`] angles at a time in structure-of-arrays
-    /// form (`sin`/`cos`, the loop closure and both `atan2` across the
-    /// lanes, without branches but for the rare angle beyond
-    /// [`SIMD_TRIG_MAX`]), giving the same bits as [`solve`](Self::solve).
+    /// form (`sin`/`cos` from `libm` per lane, the loop closure, both
+    /// `atan2` across the lanes, without branches), giving the same bits as
+    /// [`solve`](Self::solve).
     /// Returns how many closed.
     fn solve_chunk(
         &self,
@@ -710,18 +685,13 @@ impl FourBar {
             .zip(theta4.chunks_exact_mut(L))
             .zip(valid.chunks_exact_mut(L));
         for (((t, a), b), v) in blocks {
-            let (mut sin, mut cos) = ([0.0; L], [0.0; L]);
-            for k in (0..L).step_by(2) {
-                let (s, c) = TrigLanes::new([t[k], t[k + 1]]).sin_cos();
-                [sin[k], sin[k + 1]] = s.to_array();
-                [cos[k], cos[k + 1]] = c.to_array();
-            }
+            // `sin` and `cos` from `libm`, lane by lane, as `solve` takes
+            // them (the same bits; a SIMD polynomial on one lane made the
+            // single solve slower than `libm`).
+            let mut sin = [0.0; L];
+            let mut cos = [0.0; L];
             for k in 0..L {
-                // As `sincos` decides, lane by lane (rare: large or NaN).
-                #[allow(clippy::neg_cmp_op_on_partial_ord)]
-                if !(t[k].abs() <= SIMD_TRIG_MAX) {
-                    (sin[k], cos[k]) = libm::sincos(t[k]);
-                }
+                (sin[k], cos[k]) = libm::sincos(t[k]);
             }
             let (mut y3, mut x3, mut y4, mut x4) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
             let mut ok = [false; L];
@@ -1054,41 +1024,6 @@ mod tests {
                 "{t}: {e}"
             );
             assert!(fb.joints_at(t, AssemblyMode::Crossed).is_err());
-        }
-    }
-
-    /// The SIMD `sin`/`cos` of the input angle against `libm`: within
-    /// `1e-15` (absolute, the values are at most 1 in magnitude; relative
-    /// where the value is at least `1e-3`), on `10^6` angles spread over
-    /// `|t| <= SIMD_TRIG_MAX`; exactly `libm` beyond and for NaN.
-    #[test]
-    fn simd_sincos_is_libm_to_rounding() {
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = move || {
-            state ^= state >> 12;
-            state ^= state << 25;
-            state ^= state >> 27;
-            (state.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let (mut worst_abs, mut worst_rel) = (0.0f64, 0.0f64);
-        for k in 0..1_000_000 {
-            let span = [4.0, 100.0, 1e4, SIMD_TRIG_MAX][k % 4];
-            let t = span * (2.0 * next() - 1.0);
-            let (s, c) = sincos(t);
-            let (ls, lc) = libm::sincos(t);
-            for (a, b) in [(s, ls), (c, lc)] {
-                let e = (a - b).abs();
-                worst_abs = worst_abs.max(e);
-                if b.abs() >= 1e-3 {
-                    worst_rel = worst_rel.max(e / b.abs());
-                }
-            }
-        }
-        assert!(worst_abs <= 1e-15, "{worst_abs:e}");
-        assert!(worst_rel <= 1e-15, "{worst_rel:e}");
-        for t in [SIMD_TRIG_MAX * 1.5, -1e9, f64::NAN] {
-            let ((s, c), (ls, lc)) = (sincos(t), libm::sincos(t));
-            assert_eq!((s.to_bits(), c.to_bits()), (ls.to_bits(), lc.to_bits()));
         }
     }
 }
