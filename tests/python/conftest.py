@@ -20,3 +20,17 @@ def task():
 def f(task):
     """Filemon's construction of the example's driven crank."""
     return task.filemon(C0)
+
+
+@pytest.fixture(scope="module")
+def client():
+    """A real Dask cluster (worker processes, not the synchronous
+    scheduler), one per test module: a module that kills a worker does not
+    share its cluster. Skips when Dask is not installed."""
+    distributed = pytest.importorskip("distributed")
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=None)
+    c = distributed.Client(cluster)
+    yield c
+    c.close()
+    cluster.close()

@@ -118,17 +118,6 @@ def test_client_without_dask_says_how_to_install(monkeypatch):
 # On a real Dask cluster
 
 
-@pytest.fixture(scope="module")
-def client():
-    distributed = pytest.importorskip("distributed")
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                       dashboard_address=None)
-    c = distributed.Client(cluster)
-    yield c
-    c.close()
-    cluster.close()
-
-
 def test_dask_equals_in_process_bit_for_bit(client, atlas):
     for tile_rows in (None, 1, 4):
         d = pivot_atlas(Task(POSES), DRIVEN, DRIVING, client=client, tile_rows=tile_rows, **LIMITS)

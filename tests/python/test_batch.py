@@ -108,17 +108,6 @@ def test_client_without_dask_says_how_to_install(files, monkeypatch):
         burmester.best_pivots_batch(files, client=object())
 
 
-@pytest.fixture(scope="module")
-def client():
-    distributed = pytest.importorskip("distributed")
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                       dashboard_address=None)
-    c = distributed.Client(cluster)
-    yield c
-    c.close()
-    cluster.close()
-
-
 def test_dask_gives_identical_lines(files, bad, client, capsys):
     items = [files[0], bad, files[1], files[2]]
     here = burmester.best_pivots_batch(items, top=3)
