@@ -350,7 +350,7 @@ def python_loop():
                 f = t.filemon(driven.point(j, i))
             except burmester.BurmesterError:
                 continue
-            best.append(f.solution_map(driving, limits=limits).best_pivots(1))
+            best.append(f.solution_map(driving, limits=limits).best_pivots(1, rank_by="transmission"))
     return best
 """
 
@@ -437,7 +437,7 @@ SECTIONS.append(
         prefixes=["python/atlas/"],
         ratios=[
             Ratio(
-                "Python loop of `solution_map` + `best_pivots(1)` / atlas in process",
+                "Python loop of `solution_map` + `best_pivots(1, rank_by=\"transmission\")` / atlas in process",
                 f"python/atlas/python_loop/{ATLAS_ID}",
                 f"python/atlas/in_process/{ATLAS_ID}",
                 ">= 5",

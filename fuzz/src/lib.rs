@@ -1342,7 +1342,7 @@ fn check_pivots(map: &SolutionMap, k: usize, min_separation: Option<f64>) {
     let c = &map.columns;
     let nx = map.context.grid.nx();
     let sep = min_separation.unwrap_or(0.02 * map.context.grid.viewport().diagonal());
-    for rank in [RankBy::Transmission, RankBy::Margin] {
+    for rank in RankBy::ALL {
         let pivots = map
             .best_pivots(k, min_separation, rank)
             .expect("a valid separation");
@@ -1361,17 +1361,20 @@ fn check_pivots(map: &SolutionMap, k: usize, min_separation: Option<f64>) {
                 p.index,
                 p.margin
             );
+            assert!(p.size_ratio.is_finite() && p.size_ratio > 0.0);
             match rank {
-                RankBy::Transmission => assert!(c.acceptable[s]),
                 RankBy::Margin => assert!(c.valid[s] && c.branch_free[s]),
+                _ => assert!(c.acceptable[s]),
             }
             for q in &pivots[..n] {
                 assert!(
                     (q.center - p.center).norm() >= sep,
                     "pivots closer than {sep}"
                 );
-                if rank == RankBy::Margin {
-                    assert!(q.margin >= p.margin, "margins out of order");
+                match rank {
+                    // The front from compact to transmitting.
+                    RankBy::Pareto => assert!(q.score < p.score, "front out of order"),
+                    _ => assert!(q.score >= p.score - 2e-9, "scores out of order"),
                 }
             }
         }

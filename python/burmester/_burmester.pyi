@@ -54,7 +54,7 @@ Method = Literal["conic", "direct", "simulate"]
 BranchClass = Literal["free", "defective", "boundary"]
 Direction = Literal["ccw", "cw", "none"]
 InputRequirement = Literal["any", "crank", "rocker"]
-RankBy = Literal["transmission", "margin"]
+RankBy = Literal["balanced", "transmission", "compact", "pareto", "margin"]
 GrashofType = Literal[
     "crank-rocker", "double-crank", "rocker-crank", "double-rocker", "triple-rocker", "change-point"
 ]
@@ -572,6 +572,11 @@ class Task:
         """The size of the task (for three poses the pole triangle's): the
         unit of the relative tolerances."""
     @property
+    def span(self) -> float:
+        """The task's size as a designer reads it: the largest distance
+        between two pose positions. The unit of
+        :attr:`SynthesizedFourBar.size_ratio`."""
+    @property
     def poles(self) -> list[Pole]:
         """The pole of every pair of poses, in pair order ``(1, 2), (1, 3),
         ..., (2, 3), ...``; a pair that differs by a pure translation has its
@@ -1062,6 +1067,16 @@ class SynthesizedFourBar:
     def fourbar(self) -> FourBar:
         """The linkage (input pivot ``A0``, output pivot ``C0``)."""
     @property
+    def size(self) -> float:
+        """The linkage's size: the total length of its members, the ground
+        ``A0 C0``, the crank, the rocker and the three sides of the coupler
+        triangle (the moving pivots and the task's coupler point, which the
+        coupler plate carries)."""
+    @property
+    def size_ratio(self) -> float:
+        """:attr:`size` over the task's :attr:`Task.span`: how many times the
+        task's size the linkage's members add up to (scale-free)."""
+    @property
     def driving(self) -> Tuple[Point, Point]:
         """``(A0, A1)``."""
     @property
@@ -1151,6 +1166,7 @@ class Pivot:
         index: Tuple[int, int],
         linkage: SynthesizedFourBar,
         margin: float,
+        score: float,
         ranked_by: RankBy,
     ) -> Pivot: ...
     @property
@@ -1171,10 +1187,19 @@ class Pivot:
         """Its signed margin to the nearest branch-defect boundary (see
         :meth:`SolutionMap.margin`)."""
     @property
+    def size_ratio(self) -> float:
+        """The linkage's size relative to the task's
+        (:attr:`SynthesizedFourBar.size_ratio`)."""
+    @property
+    def score(self) -> float:
+        """Its score by the ranking that chose it (see
+        :meth:`SolutionMap.best_pivots`; the minimum transmission angle in
+        radians on the Pareto front, the margin when ranked by margin)."""
+    @property
     def ranked_by(self) -> RankBy:
-        """What ranked it: ``"transmission"`` or ``"margin"``."""
+        """What ranked it (see :meth:`SolutionMap.best_pivots`)."""
     def __eq__(self, other: object, /) -> bool: ...
-    def __getnewargs__(self) -> Tuple[Point, Tuple[int, int], SynthesizedFourBar, float, str]: ...
+    def __getnewargs__(self) -> Tuple[Point, Tuple[int, int], SynthesizedFourBar, float, float, str]: ...
 
 @final
 class SolutionMap:
@@ -1216,6 +1241,11 @@ class SolutionMap:
     def link_ratio(self) -> npt.NDArray[np.float32]:
         """Longest over shortest link; NaN where there is no linkage."""
     @property
+    def size_ratio(self) -> npt.NDArray[np.float32]:
+        """The linkage's size relative to the task's: the total length of its
+        members (:attr:`SynthesizedFourBar.size`) over :attr:`Task.span`;
+        NaN where there is no linkage."""
+    @property
     def acceptable(self) -> BoolArray:
         """Feasible, branch-free, and within the limits and constraints."""
     @property
@@ -1250,17 +1280,36 @@ class SolutionMap:
         Filemon curve (:meth:`Filemon.margin`); for a driven map the distance
         to the nearest sample of the other class."""
     def best_pivots(
-        self, k: int = 5, min_separation: Optional[float] = None, rank_by: RankBy = "transmission"
+        self, k: int = 5, min_separation: Optional[float] = None, rank_by: RankBy = "balanced"
     ) -> list[Pivot]:
         """The ``k`` best candidates, best first, as :class:`Pivot` records.
 
-        ``rank_by="transmission"``: the acceptable candidates by the minimum
-        transmission angle over the travel, ties by the margin.
-        ``rank_by="margin"``: the valid, branch-free candidates (acceptable or
-        not) by their margin, the fallback when nothing is acceptable.
-        Candidates closer than ``min_separation`` (default: 2% of the
-        viewport's diagonal) to a better one are skipped, so the list offers
-        distinct options."""
+        With ``mu`` the minimum transmission angle over the travel, ``s`` the
+        size ratio (:attr:`size_ratio`) and ``r`` the link ratio, the
+        acceptable candidates are ordered by a score, larger is better:
+
+        * ``"balanced"`` (default): ``sin(mu) / sqrt(s * r)``. ``sin(mu)`` is
+          the share of the coupler's force that turns the output (0.64 at
+          the classical 40 degree limit); the size and link ratios are
+          scale-free and weighed alike on a log scale, so halving the
+          linkage's size is worth what halving its link ratio is, and either
+          what going from 45 to 90 degrees is.
+        * ``"transmission"``: ``mu``.
+        * ``"compact"``: ``-s``, the smallest linkage first.
+        * ``"pareto"``: the Pareto front over ``mu`` and ``s`` (no acceptable
+          candidate is as good in both and better in one), from the most
+          compact to the best transmission (:meth:`pareto_front` gives all).
+        * ``"margin"``: the valid, branch-free candidates (acceptable or
+          not) by their margin, the fallback when nothing is acceptable.
+
+        Scores within 1e-9 go to the larger margin. Candidates closer than
+        ``min_separation`` (default: 2% of the viewport's diagonal) to a
+        better one are skipped, so the list offers distinct options."""
+    def pareto_front(self) -> list[Pivot]:
+        """Every acceptable candidate on the Pareto front of the minimum
+        transmission angle (larger is better) and the size ratio (smaller is
+        better), from the most compact to the best transmission:
+        ``best_pivots(k=all, min_separation=0, rank_by="pareto")``."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod

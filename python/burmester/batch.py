@@ -20,11 +20,14 @@ from __future__ import annotations
 import importlib
 import os
 import uuid
-from typing import Any, Dict, List, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Union
 
 from burmester import pivots as pv
 from burmester import taskfile
 from burmester.taskfile import TaskSpec
+
+if TYPE_CHECKING:
+    from burmester._burmester import RankBy
 
 __all__ = ["BatchItem", "best_pivots_batch"]
 
@@ -42,10 +45,10 @@ def _error(source: str, e: BaseException) -> Dict[str, Any]:
     return {"task": source, "error": str(e)}
 
 
-def _one(spec: TaskSpec, top: int, spacing: Optional[float]) -> Dict[str, Any]:
+def _one(spec: TaskSpec, top: int, spacing: Optional[float], rank_by: "RankBy" = "balanced") -> Dict[str, Any]:
     """One task's record (also the body of one Dask task)."""
     try:
-        return pv.report(spec, top, spacing)
+        return pv.report(spec, top, spacing, rank_by=rank_by)
     except (ValueError, MemoryError) as e:  # TaskFileError, BurmesterError, ...
         if isinstance(e, MemoryError):
             return {"task": spec.source, "error": "not enough memory for this task's view; use a coarser grid"}
@@ -58,6 +61,7 @@ def best_pivots_batch(
     client: Any = None,
     top: int = 5,
     spacing: Optional[float] = None,
+    rank_by: "RankBy" = "balanced",
 ) -> List[Dict[str, Any]]:
     """The ``top`` best driving pivots of each task, in the order given.
 
@@ -66,7 +70,8 @@ def best_pivots_batch(
     ``pivots``), or ``{"task": ..., "error": message}`` when its file cannot
     be loaded or its task cannot be done (four or five poses, a degenerate
     task). ``spacing`` is the least distance between listed pivots (default:
-    a tenth of each view's shorter side). With ``client`` (a
+    a tenth of each view's shorter side); ``rank_by`` the ranking (see
+    :meth:`burmester.SolutionMap.best_pivots`). With ``client`` (a
     ``dask.distributed.Client``) one Dask task per task; the records are the
     same.
     """
@@ -74,6 +79,7 @@ def best_pivots_batch(
         raise ValueError(f"top must be at least 1, got {top}")
     if spacing is not None and not spacing >= 0.0:
         raise ValueError(f"spacing must be at least 0, got {spacing:g}")
+    pv.check_ranking(rank_by)
     loaded: List[Union[TaskSpec, Dict[str, Any]]] = []
     for item in specs:
         if isinstance(item, TaskSpec):
@@ -84,14 +90,14 @@ def best_pivots_batch(
         except ValueError as e:
             loaded.append(_error(_source(item), e))
     if client is None:
-        return [_one(s, top, spacing) if isinstance(s, TaskSpec) else s for s in loaded]
+        return [_one(s, top, spacing, rank_by) if isinstance(s, TaskSpec) else s for s in loaded]
     try:
         importlib.import_module("distributed")
     except ImportError:
         raise ImportError(_DASK_MISSING) from None
     run = uuid.uuid4().hex
     futures = {
-        n: client.submit(_one, s, top, spacing, key=f"burmester-batch-{run}-{n}", retries=2)
+        n: client.submit(_one, s, top, spacing, rank_by, key=f"burmester-batch-{run}-{n}", retries=2)
         for n, s in enumerate(loaded) if isinstance(s, TaskSpec)
     }
     try:

@@ -365,19 +365,18 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     return 0
 
 
-def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "transmission") -> str:
+def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "balanced") -> str:
     """The text table of ``burmester pivots``."""
-    head = (
-        "ranked by the minimum transmission angle over the travel (acceptable under the limits)"
-        if ranked_by == "transmission"
-        else "none meets the limits: branch-free pivots ranked by margin (distance to the "
-        "branch-defect boundary)"
-    )
+    head = pv.describe_ranking(ranked_by)
+    if ranked_by != "margin":
+        head += " (acceptable under the limits)"
+    span = spec.task().span
     lines = [
-        f"Driving pivots A0 for {spec.source}, {head}",
-        f"{'#':>2} | {'A0 (x, y)':>18} | {'margin':>7} | {'ground':>7} {'crank':>7} {'coupler':>7} "
-        f"{'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'mu1':>4} {'mu2':>4} {'mu3':>4} | "
-        f"{'drive':<11} | limits",
+        f"Driving pivots A0 for {spec.source} (task size {span:.3g}: the largest distance "
+        f"between two poses), {head}",
+        f"{'#':>2} | {'A0 (x, y)':>18} | {'size':>6} | {'margin':>7} | {'ground':>7} {'crank':>7} "
+        f"{'coupler':>7} {'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'mu1':>4} {'mu2':>4} "
+        f"{'mu3':>4} | {'drive':<11} | limits",
     ]
     for k, p in enumerate(pivots, start=1):
         f = p.figures
@@ -387,14 +386,17 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "trans
         drive = f"{f.direction} {f.modes[0] or ''}".strip()
         bad = pv.violations(f, spec.limits)
         lines.append(
-            f"{k:>2} | {_fmt_point(p.center):>18} | {p.margin:7.3f} | {g:7.3f} {c:7.3f} {cp:7.3f} "
+            f"{k:>2} | {_fmt_point(p.center):>18} | {_fmt_size(p.size_ratio)} | {p.margin:7.3f} | "
+            f"{g:7.3f} {c:7.3f} {cp:7.3f} "
             f"{r:7.3f} | {f.grashof:<14} | {mt} | {mu} | {drive:<11} | {'; '.join(bad) or 'ok'}"
         )
     if not pivots:
         lines.append("(no branch-free pivot in the view)")
     lim = spec.limits
     lines.append(
-        "mu min: smallest transmission angle over the travel 1 -> 2 -> 3; mu1-3: at the poses "
+        "size: the total length of the links (the coupler as its triangle with the coupler "
+        "point) in task sizes. mu min: smallest transmission angle over the travel 1 -> 2 -> 3; "
+        "mu1-3: at the poses "
         f"(degrees). drive: input rotation and assembly mode. limits: transmission >= "
         f"{lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
         + ("" if lim.input == "any" else f", {lim.input} input")
@@ -402,16 +404,21 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "trans
     return "\n".join(lines)
 
 
+def _fmt_size(ratio: float) -> str:
+    """A size ratio as ``12.3x`` (six characters)."""
+    return f"{ratio:5.1f}x"
+
+
 def cmd_pivots(args: argparse.Namespace) -> int:
     """``burmester pivots``: rank the branch-free driving pivots."""
     spec = _with_grid(_load(args.task), args.grid)
     spacing = _spacing(spec, args.spacing)
     if args.json:
-        doc = pv.report(spec, args.top, spacing, progress_for(spec.view, "solution map", 16))
+        doc = pv.report(spec, args.top, spacing, progress_for(spec.view, "solution map", 16), args.rank_by)
         print(json.dumps(doc, indent=2))
     else:
         smap = _solution_map(spec, spec.filemon())
-        pivots, ranked_by = pv.rank(smap, args.top, spacing)
+        pivots, ranked_by = pv.rank(smap, args.top, spacing, args.rank_by)
         print(pivot_table(spec, pivots, ranked_by))
     return 0
 
@@ -425,7 +432,7 @@ def cmd_batch(args: argparse.Namespace) -> int:
     client = _atlas_client(args.scheduler)
     try:
         records = burmester.best_pivots_batch(args.tasks, client=client, top=args.top,
-                                              spacing=args.spacing)
+                                              spacing=args.spacing, rank_by=args.rank_by)
     finally:
         if client is not None:
             client.close()
@@ -668,9 +675,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("pivots", help="rank the acceptable driving pivots",
                        description="Rank the driving pivots A0 that are branch-free, pass the poses "
-                       "in order on one circuit and meet the task's limits, by the minimum "
-                       "transmission angle over the travel (the solution-space map), and show each "
-                       "one's four-bar. When none is acceptable, list branch-free pivots by their "
+                       "in order on one circuit and meet the task's limits (the solution-space map) "
+                       "by --rank-by, and show each one's four-bar and its size relative to the "
+                       "task. When none is acceptable, list branch-free pivots by their "
                        "distance to the branch-defect boundary, with the limits they miss.")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("--top", type=_positive_int, default=5, help="how many pivots (default: 5)")
@@ -679,6 +686,10 @@ def build_parser() -> argparse.ArgumentParser:
                    "(default: a tenth of the view's shorter side)")
     p.add_argument("--grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
                    help="grid samples along x and y (default: the task file's, or 400)")
+    p.add_argument("--rank-by", choices=pv.RANKINGS, default="balanced",
+                   help="balanced (default): sin(mu min) / sqrt(size x link ratio); transmission: the "
+                   "minimum transmission angle; compact: the smallest linkage relative to the task; "
+                   "pareto: the front of transmission and size, compact to transmitting")
     p.add_argument("--json", action="store_true", help="print JSON instead of a table")
     p.set_defaults(func=cmd_pivots)
 
@@ -725,6 +736,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--top", type=_positive_int, default=5, help="how many pivots per task (default: 5)")
     p.add_argument("--spacing", type=_finite, default=None,
                    help="least distance between listed pivots (default: a tenth of each view's shorter side)")
+    p.add_argument("--rank-by", choices=pv.RANKINGS, default="balanced",
+                   help="the ranking, as for 'burmester pivots' (default: balanced)")
     p.add_argument("--scheduler", metavar="ADDRESS", default=None,
                    help="run on a Dask cluster (tcp://host:8786); needs burmester[dask]")
     p.set_defaults(func=cmd_batch)

@@ -1,15 +1,17 @@
 """Candidate driving pivots: which ranking to show, and what to say about each.
 
-The ranking itself is the core's, :meth:`burmester.SolutionMap.best_pivots`:
+The rankings themselves are the core's, :meth:`burmester.SolutionMap.best_pivots`:
 among the pivots that are branch-free, carry the coupler through the poses
-in order on one circuit and meet the limits, the best have the largest
-minimum transmission angle over the whole travel (ties: the larger margin
-to the branch-defect boundary), kept apart from each other. When no pivot
-meets the limits, :func:`rank` falls back to the core's ranking by margin
-(``rank_by="margin"``): the branch-free pivots farthest from the transformed
-Filemon curves, with the limits each one misses (:func:`violations`). The
-margin grows away from the curves, so in an unbounded free region those lie
-on the edge of the view: choose the view as the space you allow for the pivot.
+in order on one circuit and meet the limits, the best by a documented score
+(``"balanced"`` by default: force transmission, a small linkage relative to
+the task and even links together; ``"transmission"``, ``"compact"``, or the
+``"pareto"`` front of transmission and size), kept apart from each other.
+When no pivot meets the limits, :func:`rank` falls back to the core's
+ranking by margin (``rank_by="margin"``): the branch-free pivots farthest
+from the transformed Filemon curves, with the limits each one misses
+(:func:`violations`). The margin grows away from the curves, so in an
+unbounded free region those lie on the edge of the view: choose the view as
+the space you allow for the pivot.
 
 This module only chooses between the two rankings and formats the
 :class:`burmester.Pivot` records (words, JSON-friendly dicts).
@@ -20,13 +22,50 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any, Dict, List, Optional, Tuple
 
-from burmester._burmester import DesignLimits, Grid, LinkageFigures, Pivot, SolutionMap, SynthesizedFourBar
+from burmester._burmester import (
+    DesignLimits,
+    Grid,
+    InvalidInputError,
+    LinkageFigures,
+    Pivot,
+    SolutionMap,
+    SynthesizedFourBar,
+)
 
 if TYPE_CHECKING:
     from burmester._burmester import Progress, RankBy
     from burmester.taskfile import TaskSpec
 
-__all__ = ["default_spacing", "rank", "transmission_at_poses_deg", "violations", "as_dict", "report"]
+__all__ = ["RANKINGS", "default_spacing", "rank", "check_ranking", "describe_ranking", "transmission_at_poses_deg",
+           "violations", "as_dict", "report"]
+
+#: The rankings a designer chooses from (``"margin"`` is the fallback when
+#: nothing is acceptable), the default first.
+RANKINGS: Tuple[str, ...] = ("balanced", "transmission", "compact", "pareto")
+
+_WORDS = {
+    "balanced": "ranked by the balanced score sin(mu min) / sqrt(size x link ratio): force "
+                "transmission, a small linkage and even links together",
+    "transmission": "ranked by the minimum transmission angle over the travel",
+    "compact": "ranked by size relative to the task, smallest first",
+    "pareto": "the Pareto front of transmission and size, from the most compact to the best "
+              "transmission",
+    "margin": "none meets the limits: branch-free pivots ranked by margin (distance to the "
+              "branch-defect boundary)",
+}
+
+
+def check_ranking(rank_by: str) -> None:
+    """Raises :class:`burmester.InvalidInputError` for a ranking other than
+    :data:`RANKINGS` and ``"margin"`` (before any map is computed)."""
+    if rank_by not in RANKINGS + ("margin",):
+        names = ", ".join(f'"{r}"' for r in RANKINGS + ("margin",))
+        raise InvalidInputError(f"unknown ranking {rank_by!r}; use one of {names}")
+
+
+def describe_ranking(ranked_by: str) -> str:
+    """What a ranking orders by, in words (for tables and reports)."""
+    return _WORDS[ranked_by]
 
 
 def default_spacing(grid: Grid) -> float:
@@ -35,20 +74,21 @@ def default_spacing(grid: Grid) -> float:
     return 0.1 * min(grid.xmax - grid.xmin, grid.ymax - grid.ymin)
 
 
-def rank(smap: SolutionMap, top: int, spacing: Optional[float] = None) -> Tuple[List[Pivot], RankBy]:
+def rank(smap: SolutionMap, top: int, spacing: Optional[float] = None,
+         rank_by: "RankBy" = "balanced") -> Tuple[List[Pivot], "RankBy"]:
     """The ``top`` best pivots of a solution map and what ranked them.
 
-    The acceptable pivots by the minimum transmission angle over the travel
-    (``"transmission"``); when none is acceptable, the branch-free pivots by
-    their margin to the branch-defect boundary (``"margin"``). Both
-    rankings keep the pivots ``spacing`` apart (default: the core's, 2% of
-    the view's diagonal).
+    The acceptable pivots by ``rank_by`` (see
+    :meth:`burmester.SolutionMap.best_pivots`); when none is acceptable, the
+    branch-free pivots by their margin to the branch-defect boundary
+    (``"margin"``). Both keep the pivots ``spacing`` apart (default: the
+    core's, 2% of the view's diagonal).
     """
     if top < 1:
-        return [], "transmission"
-    best = smap.best_pivots(top, spacing, rank_by="transmission")
-    if best:
-        return best, "transmission"
+        return [], rank_by
+    best = smap.best_pivots(top, spacing, rank_by=rank_by)
+    if best or rank_by == "margin":
+        return best, rank_by
     return smap.best_pivots(top, spacing, rank_by="margin"), "margin"
 
 
@@ -96,6 +136,9 @@ def as_dict(pivot: Pivot, limits: Optional[DesignLimits] = None) -> Dict[str, An
         "center": list(pivot.center),
         "index": list(pivot.index),
         "margin": pivot.margin,
+        "score": pivot.score,
+        "size": pivot.linkage.size,
+        "size_ratio": pivot.size_ratio,
         "ground": g,
         "crank": c,
         "coupler": cp,
@@ -115,22 +158,26 @@ def as_dict(pivot: Pivot, limits: Optional[DesignLimits] = None) -> Dict[str, An
 
 
 def report(spec: "TaskSpec", top: int, spacing: Optional[float] = None,
-           progress: Optional["Progress"] = None) -> Dict[str, Any]:
+           progress: Optional["Progress"] = None, rank_by: "RankBy" = "balanced") -> Dict[str, Any]:
     """The JSON document of ``burmester pivots --json`` for a task: its view,
-    limits, the spacing, which ranking (:func:`rank`) and the ``top`` best
-    pivots (:func:`as_dict`). ``spacing`` defaults to
+    its size (``span``, the largest distance between two pose positions),
+    limits, the spacing, which ranking (:func:`rank` by ``rank_by``) and the
+    ``top`` best pivots (:func:`as_dict`). ``spacing`` defaults to
     :func:`default_spacing` of the view; ``progress`` goes to the solution
     map. Raises :class:`burmester.taskfile.TaskFileError` for a task of four
-    or five poses and ``ValueError`` for a negative spacing."""
+    or five poses and ``ValueError`` for a negative spacing or an unknown
+    ranking."""
+    check_ranking(rank_by)
     if spacing is None:
         spacing = default_spacing(spec.view)
     elif not spacing >= 0.0:
         raise ValueError(f"spacing must be at least 0, got {spacing:g}")
     smap = spec.filemon().solution_map(spec.view, limits=spec.limits, progress=progress)
-    pivots, ranked_by = rank(smap, top, spacing)
+    pivots, ranked_by = rank(smap, top, spacing, rank_by)
     v, lim = spec.view, spec.limits
     return {
         "task": spec.source,
+        "span": smap.task.span,
         "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax], "grid": [v.nx, v.ny]},
         "limits": {
             "min_transmission_deg": lim.min_transmission_deg,

@@ -177,15 +177,15 @@ PROPERTIES = {
     LinkageFigures: "lengths grashof input_full modes direction one_circuit min_transmission_deg link_ratio "
                     "branch_free feasible",
     Pole: "pair point direction at_infinity",
-    Task: "poses rotations scale poles",
+    Task: "poses rotations scale span poles",
     Filemon: "task driven_center driven_circle fixed_pivot_images all_defective lines all_lines sectors conics "
              "extreme_poses middle_pose",
-    SynthesizedFourBar: "fourbar driving driven input_angles modes coupler_point coupler_angle_offset figures "
-                        "branch_free travel travel_stops",
+    SynthesizedFourBar: "fourbar size size_ratio driving driven input_angles modes coupler_point "
+                        "coupler_angle_offset figures branch_free travel travel_stops",
     DesignLimits: "min_transmission_deg max_link_ratio input",
-    Pivot: "center index linkage figures margin ranked_by",
+    Pivot: "center index linkage figures margin size_ratio score ranked_by",
     SolutionMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
-                 "acceptable grid extent shape varying fixed_dyad task limits",
+                 "size_ratio acceptable grid extent shape varying fixed_dyad task limits",
     burmester.PivotAtlas: "branch_free_fraction shape",
     burmester.AtlasPair: "driven driving min_transmission_deg link_ratio margin n_acceptable driven_index driving_index",
 }
@@ -203,7 +203,7 @@ METHODS = {
     Filemon: "line_conic is_branch_free classify classify_circle_point circle_signs conic_values four_bar "
              "branch_map margin_map margin solution_map",
     SynthesizedFourBar: "travel_angles pose_at",
-    SolutionMap: "point linkage margin best_pivots",
+    SolutionMap: "point linkage margin best_pivots pareto_front",
     burmester.PivotAtlas: "best_pairs",
     burmester.AtlasPair: "linkage",
 }
@@ -221,6 +221,7 @@ NO_ARGUMENT_METHODS = {
     (Task, "burmester_points"): "fails for three or four poses; does work",
     (Task, "burmester_curves"): "fails for three or four poses",
     (Task, "burmester_four_bars"): "fails for three or four poses; does work",
+    (SolutionMap, "pareto_front"): "does work: scans every sample and builds each linkage on the front",
 }
 
 
@@ -511,16 +512,17 @@ def test_pivot_records_are_typed_and_immutable():
     j, i = p.index
     assert isinstance(j, int) and isinstance(i, int) and p.center == m.point(j, i)
     assert p.linkage == m.linkage(j, i) and p.figures == p.linkage.figures
-    assert p.margin == pytest.approx(m.margin(j, i)) and p.ranked_by == "transmission"
-    for name in ("center", "index", "linkage", "figures", "margin", "ranked_by"):
+    assert p.margin == pytest.approx(m.margin(j, i)) and p.ranked_by == "balanced"
+    assert p.size_ratio == p.linkage.size / m.task.span and p.score > 0
+    for name in ("center", "index", "linkage", "figures", "margin", "size_ratio", "score", "ranked_by"):
         with pytest.raises(AttributeError):
             setattr(p, name, None)
     with pytest.raises(TypeError):
         p["center"]  # not a dict any more
-    rebuilt = Pivot(p.center, p.index, p.linkage, p.margin, p.ranked_by)
+    rebuilt = Pivot(p.center, p.index, p.linkage, p.margin, p.score, p.ranked_by)
     assert rebuilt == p
-    assert rebuilt != Pivot(p.center, p.index, p.linkage, p.margin, "margin")
-    assert "by transmission" in repr(p)
+    assert rebuilt != Pivot(p.center, p.index, p.linkage, p.margin, p.score, "margin")
+    assert f"size_ratio={p.size_ratio:.3f} by balanced" in repr(p)
 
 
 def test_figures_name_their_units():

@@ -103,13 +103,13 @@ def test_solve_help_says_degrees(capsys):
 
 
 def test_pivots_table_and_json(capsys):
-    assert main(["pivots", str(EXAMPLE_FILE), "--top", "3"]) == 0
+    assert main(["pivots", str(EXAMPLE_FILE), "--top", "3", "--rank-by", "transmission"]) == 0
     table = capsys.readouterr().out.splitlines()
     assert table[0].startswith(f"Driving pivots A0 for {EXAMPLE_FILE}")
     assert "minimum transmission angle over the travel" in table[0]
     assert [ln.split("|")[0].strip() for ln in table[2:5]] == ["1", "2", "3"]
 
-    assert main(["pivots", "--top", "4", "--json"]) == 0
+    assert main(["pivots", "--top", "4", "--json", "--rank-by", "transmission"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["ranking"] == "transmission" and doc["spacing"] == pytest.approx(1.6)
     assert doc["limits"] == {"min_transmission_deg": 30.0, "max_link_ratio": 10.0, "input": "any"}
@@ -121,7 +121,7 @@ def test_pivots_table_and_json(capsys):
     f = spec.filemon()
     smap = f.solution_map(spec.view)
     # The same pivots as the core's ranking, with the CLI's spacing.
-    assert [p["center"] for p in listed] == [list(q.center) for q in smap.best_pivots(4, 1.6)]
+    assert [p["center"] for p in listed] == [list(q.center) for q in smap.best_pivots(4, 1.6, "transmission")]
     for p in listed:
         center = tuple(p["center"])
         assert f.is_branch_free(center)
@@ -166,6 +166,39 @@ def test_pivots_fall_back_to_the_margin_when_nothing_meets_the_limits(tmp_path, 
     assert math.dist(wide[0]["center"], wide[1]["center"]) >= 5
     assert main(["pivots", str(path), "--top", "2"]) == 0
     assert "none meets the limits" in capsys.readouterr().out
+
+
+def test_pivots_say_the_size_and_the_ranking(capsys):
+    spec = taskfile.example()
+    smap = spec.filemon().solution_map(spec.view)
+    span = spec.task().span
+    assert main(["pivots", "--top", "3", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["ranking"] == "balanced" and doc["span"] == span
+    want = smap.best_pivots(3, 1.6)
+    assert [p["center"] for p in doc["pivots"]] == [list(q.center) for q in want]
+    for p, q in zip(doc["pivots"], want):
+        assert p["ranked_by"] == "balanced" and p["score"] == q.score
+        assert p["size"] == q.linkage.size and p["size_ratio"] == q.size_ratio
+        assert p["size_ratio"] == pytest.approx(q.linkage.size / span)
+    # The table names the ranking and the task's size, and lists each
+    # linkage's size in task sizes.
+    assert main(["pivots", "--top", "3"]) == 0
+    table = capsys.readouterr().out.splitlines()
+    assert "balanced score" in table[0] and f"task size {span:.3g}" in table[0]
+    assert "size" in table[1].split("|")[2]
+    sizes = [float(ln.split("|")[2].strip().rstrip("x")) for ln in table[2:5]]
+    assert sizes == pytest.approx([q.size_ratio for q in want], abs=0.05)
+    # The Pareto front, from compact to transmitting.
+    assert main(["pivots", "--top", "4", "--rank-by", "pareto", "--json"]) == 0
+    front = json.loads(capsys.readouterr().out)["pivots"]
+    assert [p["ranked_by"] for p in front] == ["pareto"] * len(front) and len(front) >= 2
+    assert [p["size_ratio"] for p in front] == sorted(p["size_ratio"] for p in front)
+    assert [p["min_transmission_deg"] for p in front] == sorted(p["min_transmission_deg"] for p in front)
+    assert main(["pivots", "--rank-by", "compact", "--top", "1"]) == 0
+    assert "size relative to the task, smallest first" in capsys.readouterr().out
+    assert main(["pivots", "--rank-by", "beauty"]) == 2
+    assert "invalid choice" in capsys.readouterr().err
 
 
 def test_pivots_rank_matches_the_margin_map():

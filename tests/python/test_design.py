@@ -16,7 +16,8 @@ def test_arrays_shapes_dtypes_and_consistency(f):
     for name, dtype in [
         ("valid", np.bool_), ("branch_free", np.bool_), ("grashof", np.uint8),
         ("input_full", np.bool_), ("direction", np.int8), ("one_circuit", np.bool_),
-        ("min_transmission_rad", np.float32), ("link_ratio", np.float32), ("acceptable", np.bool_),
+        ("min_transmission_rad", np.float32), ("link_ratio", np.float32), ("size_ratio", np.float32),
+        ("acceptable", np.bool_),
     ]:
         a = getattr(m, name)
         assert a.shape == (48, 64) and a.dtype == dtype, name
@@ -33,7 +34,7 @@ def test_arrays_shapes_dtypes_and_consistency(f):
     assert set(np.unique(m.grashof[m.valid])) <= set(range(6))
     assert len(m.grashof_names) == 6 and m.grashof_names[0] == "crank-rocker"
     assert m.columns == ["valid", "branch_free", "grashof", "input_full", "direction",
-                         "one_circuit", "min_transmission_rad", "link_ratio", "acceptable"]
+                         "one_circuit", "min_transmission_rad", "link_ratio", "size_ratio", "acceptable"]
     assert m.grid == Grid(*VP, 64, 48) and m.limits == DesignLimits()
     assert m.task == burmester.Task(POSES) and m.fixed_dyad == ((4.0, -1.0), pytest.approx(f.driven_circle))
     assert (m.grashof[~m.valid] == 255).all()
@@ -56,6 +57,7 @@ def test_sample_linkage_matches_the_map(f):
     assert {"ccw": 1, "cw": -1, "none": 0}[fig.direction] == m.direction[j, i]
     assert math.radians(fig.min_transmission_deg) == pytest.approx(float(m.min_transmission_rad[j, i]), rel=1e-6)
     assert fig.link_ratio == pytest.approx(float(m.link_ratio[j, i]), rel=1e-6)
+    assert fb.size_ratio == pytest.approx(float(m.size_ratio[j, i]), rel=1e-6)
     assert fig.feasible and fig.branch_free
     assert m.margin(int(j), int(i)) == pytest.approx(f.margin(m.point(int(j), int(i))))
     with pytest.raises(InvalidInputError):
@@ -99,7 +101,7 @@ def test_constraints(f):
 def test_best_pivots_pick_a_linkage_that_passes_the_poses(f):
     task = burmester.Task(POSES)
     m = f.solution_map(*VP, 160, 160)
-    best = m.best_pivots(5)
+    best = m.best_pivots(5, rank_by="transmission")
     assert 1 <= len(best) <= 5
     assert all(isinstance(p, Pivot) and p.ranked_by == "transmission" for p in best)
     scores = [p.figures.min_transmission_deg for p in best]
@@ -165,3 +167,81 @@ def test_the_other_direction(f):
     # The driven map's margin: the distance to the nearest sample of the other class.
     j, i = int(js[0]), int(is_[0])
     assert m.margin(j, i) > 0
+
+
+# ---------------------------------------------------------------------------
+# Rankings designers accept
+
+
+def _size(task, sfb):
+    """The total length of the members, computed here from the joints at
+    pose 1: ground, crank, rocker and the coupler triangle."""
+    (a0, a1), (c0, c1) = sfb.driving, sfb.driven
+    p = task.poses[0][:2]
+    return sum(math.dist(u, v) for u, v in [(a0, c0), (a0, a1), (c0, c1), (a1, c1), (a1, p), (c1, p)])
+
+
+def test_size_ratio_is_the_members_over_the_task_span(f):
+    task = burmester.Task(POSES)
+    pts = [pose[:2] for pose in POSES]
+    assert task.span == max(math.dist(u, v) for u in pts for v in pts)
+    m = f.solution_map(*VP, 40, 40)
+    js, is_ = np.nonzero(m.valid)
+    for j, i in list(zip(js, is_))[::37]:
+        sfb = m.linkage(int(j), int(i))
+        assert sfb.size == pytest.approx(_size(task, sfb), rel=1e-12)
+        assert float(m.size_ratio[j, i]) == pytest.approx(sfb.size / task.span, rel=1e-6)
+    assert np.isnan(m.size_ratio[~m.valid]).all()
+    # Scale-free: the task and its view twice as large give the same ratios.
+    big = burmester.Task([(2 * x, 2 * y, a) for x, y, a in POSES]).filemon((2 * C0[0], 2 * C0[1]))
+    m2 = big.solution_map(*(2 * v for v in VP), 40, 40)
+    assert np.allclose(m2.size_ratio, m.size_ratio, rtol=1e-5, equal_nan=True)
+
+
+@pytest.mark.parametrize("rank_by", ["balanced", "transmission", "compact"])
+def test_rankings_take_the_best_score_among_the_acceptable(f, rank_by):
+    m = f.solution_map(*VP, 100, 100)
+    ok = m.acceptable
+    mu = m.min_transmission_rad.astype(float)
+    s, r = m.size_ratio.astype(float), m.link_ratio.astype(float)
+    # The documented scores, from the columns.
+    score = {"balanced": np.sin(mu) / np.sqrt(s * r), "transmission": mu, "compact": -s}[rank_by]
+    best = m.best_pivots(5, 0.0, rank_by=rank_by)
+    assert len(best) == 5 and all(p.ranked_by == rank_by for p in best)
+    assert best[0].score == pytest.approx(float(score[ok].max()), rel=1e-6)
+    for p in best:
+        assert ok[p.index] and p.score == pytest.approx(float(score[p.index]), rel=1e-6)
+    assert [p.score for p in best] == sorted((p.score for p in best), reverse=True)
+
+
+def test_balanced_is_default_and_smaller_than_the_best_transmission():
+    spec = burmester.taskfile.example()
+    m = spec.filemon().solution_map(spec.view, limits=spec.limits)
+    (balanced,) = m.best_pivots(1)
+    (by_mu,) = m.best_pivots(1, rank_by="transmission")
+    assert balanced.ranked_by == "balanced"
+    # The issue that asked for it: the transmission winner of the built-in
+    # example is a linkage many times the task's size.
+    assert by_mu.size_ratio > 15 and balanced.size_ratio < 0.8 * by_mu.size_ratio
+    assert balanced.figures.min_transmission_deg > 60
+
+
+def test_pareto_front_is_nondominated(f):
+    m = f.solution_map(*VP, 80, 80)
+    front = m.pareto_front()
+    assert len(front) >= 2 and all(p.ranked_by == "pareto" for p in front)
+    mu, s = m.min_transmission_rad, m.size_ratio
+    ok = m.acceptable & ~np.isnan(mu)
+    for p in front:
+        dominated = ok & (mu >= mu[p.index]) & (s <= s[p.index]) & ((mu > mu[p.index]) | (s < s[p.index]))
+        assert not dominated.any()
+    for a, b in zip(front, front[1:]):
+        assert s[a.index] <= s[b.index] and mu[a.index] < mu[b.index]
+    # Every acceptable sample is matched or beaten by a member of the front.
+    fm = np.array([mu[p.index] for p in front])
+    fs = np.array([s[p.index] for p in front])
+    covered = ((fm[:, None] >= mu[ok][None, :]) & (fs[:, None] <= s[ok][None, :])).any(axis=0)
+    assert covered.all()
+    assert m.best_pivots(3, rank_by="pareto") == m.best_pivots(3, rank_by="pareto")
+    with pytest.raises(InvalidInputError, match="balanced"):
+        m.best_pivots(3, rank_by="beauty")  # type: ignore[arg-type]

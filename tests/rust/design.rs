@@ -670,3 +670,250 @@ fn bad_limits_and_constraints_are_typed_errors() {
     };
     assert!(map(&DesignLimits::default(), &cons).is_err());
 }
+
+/// The solution map of the built-in example over a square view.
+fn example_map(t: &Task, c0: Point2<f64>, g: &Grid) -> burmester::SolutionMap {
+    t.filemon(c0)
+        .unwrap()
+        .solution_map(
+            g,
+            &DesignLimits::default(),
+            &Constraints::none(),
+            &Control::new(),
+        )
+        .unwrap()
+}
+
+/// The total length of a linkage's members from its joints at pose 1: the
+/// ground, crank, rocker and the coupler triangle (moving pivots and the
+/// task's coupler point), computed here from the points themselves.
+fn members(t: &Task, l: &SynthesizedFourBar) -> f64 {
+    let (a0, a, c0, c) = (
+        l.driving.center,
+        l.driving.circle,
+        l.driven.center,
+        l.driven.circle,
+    );
+    let p = t.poses()[0].position;
+    [(a0, c0), (a0, a), (c0, c), (a, c), (a, p), (c, p)]
+        .iter()
+        .map(|(u, v)| (u - v).norm())
+        .sum()
+}
+
+#[test]
+fn size_ratio_is_the_members_over_the_span_and_scale_free() {
+    let t = burmester::example::task();
+    let c0 = burmester::example::driven_center();
+    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 60, 60).unwrap();
+    let map = example_map(&t, c0, &g);
+    // The span: the largest distance between two pose positions.
+    let p = t.poses();
+    let span = (0..3)
+        .flat_map(|i| (0..3).map(move |j| (p[i].position - p[j].position).norm()))
+        .fold(0.0, f64::max);
+    assert_eq!(t.span(), span);
+    let mut checked = 0;
+    for k in 0..g.len() {
+        let Ok(l) = map.context.linkage(k) else {
+            assert!(map.columns.size_ratio[k].is_nan() || !map.columns.valid[k]);
+            continue;
+        };
+        let want = members(&t, &l) / span;
+        assert!((l.size() / span - want).abs() <= 1e-12 * want, "{k}");
+        let got = f64::from(map.columns.size_ratio[k]);
+        assert!((got - want).abs() <= 1e-6 * want, "{k}: {got} vs {want}");
+        checked += 1;
+    }
+    assert!(checked > g.len() / 2);
+    // Scaled and moved, the same linkages have the same size ratios.
+    let f = 2.5;
+    let off = burmester::Vector2::new(3.0, -1.0);
+    let t2 = t.transformed(f, 0.0, off).unwrap();
+    let g2 = Grid::from_bounds(
+        -8.0 * f + off.x,
+        8.0 * f + off.x,
+        -8.0 * f + off.y,
+        8.0 * f + off.y,
+        60,
+        60,
+    )
+    .unwrap();
+    let map2 = example_map(&t2, Point2::new(c0.x * f + off.x, c0.y * f + off.y), &g2);
+    for k in 0..g.len() {
+        let (a, b) = (map.columns.size_ratio[k], map2.columns.size_ratio[k]);
+        assert!(
+            (a.is_nan() && b.is_nan()) || (a - b).abs() <= 1e-4 * a,
+            "{k}: {a} vs {b}"
+        );
+    }
+}
+
+#[test]
+fn rankings_order_by_their_documented_scores() {
+    let t = burmester::example::task();
+    let c0 = burmester::example::driven_center();
+    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 120, 120).unwrap();
+    let map = example_map(&t, c0, &g);
+    let c = &map.columns;
+    let acceptable: Vec<usize> = (0..g.len()).filter(|&k| c.acceptable[k]).collect();
+    assert!(acceptable.len() > 100);
+    // Each score recomputed here from the linkage's own figures.
+    let score = |rank: RankBy, k: usize| -> f64 {
+        let l = map.context.linkage(k).unwrap();
+        let mu = l.figures.min_transmission;
+        let s = members(&t, &l) / t.span();
+        let r = l.figures.link_ratio;
+        match rank {
+            RankBy::Balanced => mu.sin() / (s * r).sqrt(),
+            RankBy::Transmission => mu,
+            RankBy::Compact => -s,
+            _ => unreachable!(),
+        }
+    };
+    for rank in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
+        let best = map.best_pivots(4, Some(0.0), rank).unwrap();
+        assert_eq!(best.len(), 4);
+        let k0 = best[0].index.0 * g.nx() + best[0].index.1;
+        let top = acceptable
+            .iter()
+            .map(|&k| score(rank, k))
+            .fold(f64::NEG_INFINITY, f64::max);
+        // The columns are f32: the best by them is the best to f32 rounding.
+        assert!(
+            (score(rank, k0) - top).abs() <= 1e-5 * top.abs().max(1.0),
+            "{rank:?}: {} vs {top}",
+            score(rank, k0)
+        );
+        for p in &best {
+            assert_eq!(p.ranked_by, rank);
+            let k = p.index.0 * g.nx() + p.index.1;
+            assert!(c.acceptable[k]);
+            assert!((p.score - score(rank, k)).abs() <= 1e-5 * p.score.abs().max(1.0));
+            assert_eq!(p.size_ratio, p.linkage.size() / t.span());
+        }
+    }
+    // The designer's complaint: the best transmission on this example is a
+    // large linkage; the balanced ranking offers a much smaller one that
+    // still transmits well.
+    let by_mu = &map.best_pivots(1, None, RankBy::Transmission).unwrap()[0];
+    let balanced = &map.best_pivots(1, None, RankBy::Balanced).unwrap()[0];
+    assert!(
+        balanced.size_ratio < 0.5 * by_mu.size_ratio,
+        "{} vs {}",
+        balanced.size_ratio,
+        by_mu.size_ratio
+    );
+    assert!(balanced.linkage.figures.min_transmission > DesignLimits::default().min_transmission);
+    // The balanced best is worse on all three figures than no acceptable
+    // sample.
+    let fig = |k: usize| (c.min_transmission_rad[k], c.size_ratio[k], c.link_ratio[k]);
+    let b = fig(balanced.index.0 * g.nx() + balanced.index.1);
+    assert!(
+        !acceptable
+            .iter()
+            .map(|&k| fig(k))
+            .any(|o| o.0 > b.0 && o.1 < b.1 && o.2 < b.2)
+    );
+}
+
+#[test]
+fn the_pareto_front_is_exactly_the_nondominated_acceptable_samples() {
+    let t = burmester::example::task();
+    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 100, 100).unwrap();
+    let map = example_map(&t, burmester::example::driven_center(), &g);
+    let c = &map.columns;
+    let front = map.pareto_front().unwrap();
+    assert!(front.len() >= 3, "{}", front.len());
+    let at = |p: &burmester::Pivot| p.index.0 * g.nx() + p.index.1;
+    // From the most compact to the best transmission, strictly.
+    for w in front.windows(2) {
+        let (a, b) = (at(&w[0]), at(&w[1]));
+        assert!(c.size_ratio[a] <= c.size_ratio[b]);
+        assert!(c.min_transmission_rad[a] < c.min_transmission_rad[b]);
+        assert_eq!(w[0].ranked_by, RankBy::Pareto);
+    }
+    let acceptable: Vec<usize> = (0..g.len())
+        .filter(|&k| c.acceptable[k] && !c.min_transmission_rad[k].is_nan())
+        .collect();
+    let dominates = |a: usize, b: usize| {
+        let (ma, sa, mb, sb) = (
+            c.min_transmission_rad[a],
+            c.size_ratio[a],
+            c.min_transmission_rad[b],
+            c.size_ratio[b],
+        );
+        ma >= mb && sa <= sb && (ma > mb || sa < sb)
+    };
+    // Nothing beats a member of the front on both; everything else is
+    // matched or beaten by a member.
+    for p in &front {
+        let f = at(p);
+        assert!(!acceptable.iter().any(|&k| dominates(k, f)), "{f}");
+    }
+    for &k in &acceptable {
+        if front.iter().any(|p| at(p) == k) {
+            continue;
+        }
+        assert!(
+            front.iter().any(|p| {
+                let f = at(p);
+                c.min_transmission_rad[f] >= c.min_transmission_rad[k]
+                    && c.size_ratio[f] <= c.size_ratio[k]
+            }),
+            "{k} is on no side of the front"
+        );
+    }
+    // Its ends are the best of the compact and transmission rankings.
+    let compact = &map.best_pivots(1, Some(0.0), RankBy::Compact).unwrap()[0];
+    let mu = &map.best_pivots(1, Some(0.0), RankBy::Transmission).unwrap()[0];
+    assert_eq!(c.size_ratio[at(&front[0])], c.size_ratio[at(compact)]);
+    assert_eq!(
+        c.min_transmission_rad[at(front.last().unwrap())],
+        c.min_transmission_rad[at(mu)]
+    );
+}
+
+#[test]
+fn rankings_parse_from_their_names() {
+    for r in RankBy::ALL {
+        assert_eq!(r.as_str().parse::<RankBy>().unwrap(), r);
+    }
+    assert_eq!(RankBy::default(), RankBy::Balanced);
+    let e = "fastest".parse::<RankBy>().unwrap_err().to_string();
+    assert!(e.contains("balanced") && e.contains("pareto"), "{e}");
+}
+
+#[test]
+fn ties_go_to_the_more_compact_linkage() {
+    // Columns from outside the core (as NumPy's): every acceptable sample
+    // given the same transmission angle, so all tie and the ranking by
+    // transmission orders them by size, smallest first.
+    let t = burmester::example::task();
+    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 60, 60).unwrap();
+    let map = example_map(&t, burmester::example::driven_center(), &g);
+    let c = &map.columns;
+    let flat: Vec<f32> = c
+        .min_transmission_rad
+        .iter()
+        .map(|v| if v.is_nan() { *v } else { 1.0 })
+        .collect();
+    let cols = burmester::design::RankColumns {
+        min_transmission_rad: &flat,
+        ..map.rank_columns()
+    };
+    let best = map
+        .context
+        .best_pivots(10, Some(0.0), RankBy::Transmission, cols)
+        .unwrap();
+    let at = |p: &burmester::Pivot| p.index.0 * g.nx() + p.index.1;
+    let smallest = (0..g.len())
+        .filter(|&k| c.acceptable[k] && !flat[k].is_nan())
+        .map(|k| c.size_ratio[k])
+        .fold(f32::INFINITY, f32::min);
+    assert_eq!(c.size_ratio[at(&best[0])], smallest);
+    for w in best.windows(2) {
+        assert_eq!(w[0].score, w[1].score);
+        assert!(c.size_ratio[at(&w[0])] <= c.size_ratio[at(&w[1])]);
+    }
+}

@@ -269,6 +269,7 @@ pub struct PyPivot {
     index: (usize, usize),
     linkage: PySynthesizedFourBar,
     margin: f64,
+    score: f64,
     ranked_by: RankBy,
 }
 
@@ -279,6 +280,7 @@ impl PyPivot {
             index: p.index,
             linkage: PySynthesizedFourBar::new(task, p.linkage),
             margin: p.margin,
+            score: p.score,
             ranked_by: p.ranked_by,
         }
     }
@@ -292,6 +294,7 @@ impl PyPivot {
         index: (Count, Count),
         linkage: PySynthesizedFourBar,
         margin: Real,
+        score: Real,
         ranked_by: &str,
     ) -> PyResult<Self> {
         Ok(PyPivot {
@@ -299,6 +302,7 @@ impl PyPivot {
             index: (index.0.0, index.1.0),
             linkage,
             margin: margin.0,
+            score: score.0,
             ranked_by: ranked_by.parse::<RankBy>().py()?,
         })
     }
@@ -323,15 +327,33 @@ impl PyPivot {
         self.margin
     }
     #[getter]
+    fn size_ratio(&self) -> f64 {
+        self.linkage.size_ratio()
+    }
+    #[getter]
+    fn score(&self) -> f64 {
+        self.score
+    }
+    #[getter]
     fn ranked_by(&self) -> &'static str {
         self.ranked_by.as_str()
     }
-    fn __getnewargs__(&self) -> (Xy, (usize, usize), PySynthesizedFourBar, f64, &'static str) {
+    fn __getnewargs__(
+        &self,
+    ) -> (
+        Xy,
+        (usize, usize),
+        PySynthesizedFourBar,
+        f64,
+        f64,
+        &'static str,
+    ) {
         (
             self.center,
             self.index,
             self.linkage.clone(),
             self.margin,
+            self.score,
             self.ranked_by.as_str(),
         )
     }
@@ -342,13 +364,14 @@ impl PyPivot {
                 && o.index == self.index
                 && o.linkage == self.linkage
                 && o.margin.to_bits() == self.margin.to_bits()
+                && o.score.to_bits() == self.score.to_bits()
                 && o.ranked_by == self.ranked_by
         })
     }
     fn __repr__(&self) -> String {
         let f = &self.linkage.inner.figures;
         format!(
-            "<Pivot center=({:.6}, {:.6}) index={:?} {} min_transmission_deg={} by {}>",
+            "<Pivot center=({:.6}, {:.6}) index={:?} {} min_transmission_deg={} size_ratio={:.3} by {}>",
             self.center.0,
             self.center.1,
             self.index,
@@ -358,8 +381,40 @@ impl PyPivot {
             } else {
                 format!("{:.3}", f.min_transmission.to_degrees())
             },
+            self.linkage.size_ratio(),
             self.ranked_by.as_str()
         )
+    }
+}
+
+impl PySolutionMap {
+    /// The `k` best pivots by `rank_by`, reading the NumPy columns in place.
+    fn ranked(
+        &self,
+        py: Python<'_>,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+    ) -> PyResult<Vec<PyPivot>> {
+        let valid = self.valid.bind(py).readonly();
+        let bf = self.branch_free.bind(py).readonly();
+        let mt = self.min_transmission_rad.bind(py).readonly();
+        let lr = self.link_ratio.bind(py).readonly();
+        let sr = self.size_ratio.bind(py).readonly();
+        let acc = self.acceptable.bind(py).readonly();
+        let cols = burmester::design::RankColumns {
+            valid: valid.as_slice()?,
+            branch_free: bf.as_slice()?,
+            min_transmission_rad: mt.as_slice()?,
+            link_ratio: lr.as_slice()?,
+            size_ratio: sr.as_slice()?,
+            acceptable: acc.as_slice()?,
+        };
+        let ctx = &self.context;
+        let pivots = py
+            .detach(|| ctx.best_pivots(k, min_separation, rank_by, cols))
+            .py()?;
+        Ok(pivots.iter().map(|p| PyPivot::of(ctx.task, p)).collect())
     }
 }
 
@@ -429,8 +484,8 @@ impl PySolutionMap {
         let ctx = &self.context;
         Ok(py.detach(|| ctx.margin(k, bf)))
     }
-    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "transmission"),
-        text_signature = "($self, /, k=5, min_separation=None, rank_by='transmission')")]
+    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
+        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
     fn best_pivots(
         &self,
         py: Python<'_>,
@@ -439,21 +494,10 @@ impl PySolutionMap {
         rank_by: &str,
     ) -> PyResult<Vec<PyPivot>> {
         let rank_by = rank_by.parse::<RankBy>().py()?;
-        let valid = self.valid.bind(py).readonly();
-        let bf = self.branch_free.bind(py).readonly();
-        let mt = self.min_transmission_rad.bind(py).readonly();
-        let acc = self.acceptable.bind(py).readonly();
-        let cols = burmester::design::RankColumns {
-            valid: valid.as_slice()?,
-            branch_free: bf.as_slice()?,
-            min_transmission_rad: mt.as_slice()?,
-            acceptable: acc.as_slice()?,
-        };
-        let ctx = &self.context;
-        let pivots = py
-            .detach(|| ctx.best_pivots(k.0, min_separation.map(|r| r.0), rank_by, cols))
-            .py()?;
-        Ok(pivots.iter().map(|p| PyPivot::of(ctx.task, p)).collect())
+        self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
+    }
+    fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyPivot>> {
+        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
     }
 
     /// Rebuilds a map from its state (for pickling).

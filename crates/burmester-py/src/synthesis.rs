@@ -265,6 +265,11 @@ impl PyTask {
     }
 
     #[getter]
+    fn span(&self) -> f64 {
+        self.inner.span()
+    }
+
+    #[getter]
     fn poles(&self) -> Vec<PyPole> {
         self.inner
             .motion()
@@ -839,6 +844,14 @@ impl PySynthesizedFourBar {
     #[getter]
     fn fourbar(&self) -> PyFourBar {
         self.inner.fourbar.into()
+    }
+    #[getter]
+    fn size(&self) -> f64 {
+        self.inner.size()
+    }
+    #[getter]
+    pub(crate) fn size_ratio(&self) -> f64 {
+        self.inner.size() / self.task.span()
     }
     #[getter]
     fn driving(&self) -> (Xy, Xy) {

@@ -10,8 +10,9 @@
 //! * the best of them by
 //!   [`RankBy::Transmission`](crate::RankBy::Transmission) (the largest
 //!   minimum transmission angle over the travel, ties within
-//!   [`tolerance::RANK_TIE`] by the larger margin to the nearest
-//!   branch-defect boundary), exactly the first pivot of
+//!   [`tolerance::RANK_TIE`] by the more compact linkage, the smaller size
+//!   ratio, then by the larger margin to the nearest branch-defect
+//!   boundary), exactly the first pivot of
 //!   [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(1, ..,
 //!   RankBy::Transmission)`, with its figures;
 //! * the number of branch-free driving samples (the map's `branch_free`
@@ -35,6 +36,7 @@ use nalgebra::Point2;
 use rayon::prelude::*;
 
 use crate::design::map::Sampler;
+use crate::design::rank::tie_order;
 use crate::design::{Constraints, DesignLimits};
 use crate::engine::Control;
 use crate::error::{Error, InvalidInput, Result, try_vec};
@@ -272,10 +274,10 @@ fn atlas_cell(
 }
 
 /// Whether `score` ties with the best score `top` (as `best_pivots` groups
-/// runs: the difference in `f32`, compared in `f64`).
+/// runs: the difference in `f64`).
 #[inline]
 fn tied(top: f32, score: f32) -> bool {
-    f64::from(top - score).abs() <= tolerance::RANK_TIE
+    (f64::from(top) - f64::from(score)).abs() <= tolerance::RANK_TIE
 }
 
 /// Every acceptable sample with a transmission angle, `(k, score)`.
@@ -299,7 +301,7 @@ fn all_acceptable(filemon: &Filemon, sampler: &Sampler<'_>, driving: &Grid) -> V
 
 /// The first pivot `best_pivots(1, _, RankBy::Transmission)` takes from
 /// the candidates `cand` (`(k, score)`, in sample order): sorted by score,
-/// runs of ties by margin, the first with a linkage.
+/// runs of ties by size ratio then margin, the first with a linkage.
 fn best(
     task: &Task,
     filemon: &Filemon,
@@ -317,12 +319,16 @@ fn best(
         while j < cand.len() && tied(cand[i].1, cand[j].1) {
             j += 1;
         }
-        let mut run: Vec<(usize, f64)> = cand[i..j]
+        let mut run: Vec<(usize, f32, f64)> = cand[i..j]
             .iter()
-            .map(|&(k, _)| (k, filemon.margin_at(driving.point(k % nx, k / nx))))
+            .map(|&(k, _)| {
+                let p = driving.point(k % nx, k / nx);
+                let size = sampler.driving_sample(p, driven, &c, true).size_ratio;
+                (k, size, filemon.margin_at(p))
+            })
             .collect();
-        run.sort_by(|a, b| b.1.total_cmp(&a.1));
-        for (k, margin) in run {
+        run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
+        for (k, _, margin) in run {
             let p = driving.point(k % nx, k / nx);
             let linkage = task
                 .dyad_from_center(p)

@@ -14,7 +14,7 @@ use crate::geom::Grid;
 use crate::linkage::LinkageFigures;
 use crate::linkage::figures::figures;
 use crate::synthesis::three::{Cremona, Filemon, Method};
-use crate::synthesis::{Dyad, Motion, SynthesizedFourBar, Task};
+use crate::synthesis::{Dyad, Motion, SynthesizedFourBar, Task, members_length};
 use crate::tolerance;
 
 /// Calls `$callback! { ... }` with the solution map's columns, each as
@@ -48,6 +48,11 @@ macro_rules! solution_map_columns {
             min_transmission_rad: f32 = f32::NAN,
             /// Longest over shortest link; NaN where there is no linkage.
             link_ratio: f32 = f32::NAN,
+            /// The linkage's size relative to the task's: the total length of
+            /// its members (`SynthesizedFourBar::size`) over the largest
+            /// distance between two pose positions (`Task::span`); NaN where
+            /// there is no linkage.
+            size_ratio: f32 = f32::NAN,
             /// Meets the limits and the constraints, with a feasible,
             /// branch-free motion.
             acceptable: bool = false,
@@ -216,6 +221,9 @@ pub(crate) struct Sampler<'a> {
     cremona: &'a Cremona,
     motion: &'a Motion,
     tiny: f64,
+    /// The task's coupler point at pose 1 and `1 / Task::span`.
+    point: Point2<f64>,
+    inv_span: f64,
     limits: &'a DesignLimits,
     prepared: Prepared,
 }
@@ -232,6 +240,8 @@ impl<'a> Sampler<'a> {
             cremona: task.three_poses("the solution map")?,
             motion: task.motion(),
             tiny: tolerance::POINT * task.scale(),
+            point: task.poses()[0].position,
+            inv_span: 1.0 / task.span(),
             limits,
             prepared: constraints.prepare()?,
         })
@@ -300,6 +310,7 @@ impl<'a> Sampler<'a> {
             one_circuit: f.one_circuit,
             min_transmission_rad: f.min_transmission as f32,
             link_ratio: f.link_ratio as f32,
+            size_ratio: (members_length(&driving, &driven, self.point) * self.inv_span) as f32,
             acceptable,
         }
     }

@@ -13,12 +13,47 @@ use crate::synthesis::three::Filemon;
 use crate::tolerance;
 
 /// What a ranking of pivots orders by.
+///
+/// Every ranking but [`RankBy::Margin`] takes the *acceptable* samples of
+/// the map (branch-free, in order on one circuit, meeting the limits and
+/// constraints) and orders them by a score, the larger the better; scores
+/// that tie (within [`tolerance::RANK_TIE`]) go to the smaller size ratio,
+/// then to the larger margin to the nearest branch-defect boundary. With `mu` the minimum transmission angle
+/// over the travel, `s` the size ratio (the linkage's size over the task's,
+/// [`SynthesizedFourBar::size`](crate::SynthesizedFourBar::size) over
+/// [`Task::span`](crate::Task::span)) and `r` the link ratio (longest over
+/// shortest link):
+///
+/// | ranking | score | what it favours |
+/// |---|---|---|
+/// | [`Balanced`](Self::Balanced) | `sin(mu) / sqrt(s r)` | force transmission, a small linkage and even links, together |
+/// | [`Transmission`](Self::Transmission) | `mu` | force transmission alone |
+/// | [`Compact`](Self::Compact) | `-s` | the smallest linkage alone |
+/// | [`Pareto`](Self::Pareto) | none: the front | every trade-off between `mu` and `s` |
+/// | [`Margin`](Self::Margin) | the margin | robustness to moving the pivot (branch-free samples, acceptable or not) |
+///
+/// Why the balanced score: `sin(mu)` is the share of the coupler's force
+/// that turns the output (the reason behind the classical 40 degree rule:
+/// 0.64 there, 1 at 90 degrees); the size and link ratios are both scale
+/// free and at least about 1, and their geometric mean weighs them alike on
+/// a logarithmic scale, so halving the linkage's size is worth what halving
+/// its link ratio is, and either is worth going from `mu` = 45 to 90
+/// degrees. It never prefers a linkage that is worse on all three.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum RankBy {
-    /// Acceptable candidates by the minimum transmission angle over the
-    /// travel, ties (within [`tolerance::RANK_TIE`]) by the margin.
+    /// Acceptable candidates by `sin(mu) / sqrt(size_ratio * link_ratio)`.
     #[default]
+    Balanced,
+    /// Acceptable candidates by the minimum transmission angle over the
+    /// travel.
     Transmission,
+    /// Acceptable candidates by the size ratio, smallest first.
+    Compact,
+    /// The acceptable candidates on the Pareto front of the minimum
+    /// transmission angle (larger is better) and the size ratio (smaller is
+    /// better): no other acceptable candidate is as good in both and better
+    /// in one. Listed from the most compact to the best transmission.
+    Pareto,
     /// Branch-free candidates (acceptable or not) by their margin to the
     /// nearest branch-defect boundary: the fallback when nothing is
     /// acceptable.
@@ -26,12 +61,39 @@ pub enum RankBy {
 }
 
 impl RankBy {
-    /// `"transmission"` or `"margin"`.
+    /// Every ranking, the default first.
+    pub const ALL: [RankBy; 5] = [
+        RankBy::Balanced,
+        RankBy::Transmission,
+        RankBy::Compact,
+        RankBy::Pareto,
+        RankBy::Margin,
+    ];
+
+    /// `"balanced"`, `"transmission"`, `"compact"`, `"pareto"` or `"margin"`.
     pub fn as_str(self) -> &'static str {
         match self {
+            RankBy::Balanced => "balanced",
             RankBy::Transmission => "transmission",
+            RankBy::Compact => "compact",
+            RankBy::Pareto => "pareto",
             RankBy::Margin => "margin",
         }
+    }
+
+    /// The score of an acceptable candidate with minimum transmission angle
+    /// `mu` (radians), size ratio `size_ratio` and link ratio `link_ratio`,
+    /// larger is better (see the table above); `None` for
+    /// [`RankBy::Pareto`] and [`RankBy::Margin`], which have no such score,
+    /// and where a figure is NaN.
+    pub fn score(self, mu: f64, size_ratio: f64, link_ratio: f64) -> Option<f64> {
+        let v = match self {
+            RankBy::Balanced => mu.sin() / (size_ratio * link_ratio).sqrt(),
+            RankBy::Transmission => mu,
+            RankBy::Compact => -size_ratio,
+            RankBy::Pareto | RankBy::Margin => return None,
+        };
+        (!v.is_nan()).then_some(v)
     }
 }
 
@@ -39,15 +101,15 @@ impl FromStr for RankBy {
     type Err = InvalidInput;
 
     fn from_str(s: &str) -> Result<Self, InvalidInput> {
-        match s.to_ascii_lowercase().as_str() {
-            "transmission" => Ok(RankBy::Transmission),
-            "margin" => Ok(RankBy::Margin),
-            _ => Err(InvalidInput::UnknownName {
+        let s_lower = s.to_ascii_lowercase();
+        RankBy::ALL
+            .into_iter()
+            .find(|r| r.as_str() == s_lower)
+            .ok_or_else(|| InvalidInput::UnknownName {
                 what: "ranking",
-                expected: "\"transmission\" or \"margin\"",
+                expected: "\"balanced\", \"transmission\", \"compact\", \"pareto\" or \"margin\"",
                 found: s.to_owned(),
-            }),
-        }
+            })
     }
 }
 
@@ -62,6 +124,13 @@ pub struct Pivot {
     pub linkage: SynthesizedFourBar,
     /// Its signed margin (see [`MapContext::margin`]).
     pub margin: f64,
+    /// The linkage's size relative to the task's
+    /// ([`SynthesizedFourBar::size`] over [`Task::span`](crate::Task::span)).
+    pub size_ratio: f64,
+    /// Its score by the ranking (see [`RankBy::score`]; the margin for
+    /// [`RankBy::Margin`], the minimum transmission angle for
+    /// [`RankBy::Pareto`]).
+    pub score: f64,
     /// What ranked it.
     pub ranked_by: RankBy,
 }
@@ -76,8 +145,23 @@ pub struct RankColumns<'a> {
     pub branch_free: &'a [bool],
     /// The `min_transmission_rad` column.
     pub min_transmission_rad: &'a [f32],
+    /// The `link_ratio` column.
+    pub link_ratio: &'a [f32],
+    /// The `size_ratio` column.
+    pub size_ratio: &'a [f32],
     /// The `acceptable` column.
     pub acceptable: &'a [bool],
+}
+
+impl RankColumns<'_> {
+    /// The score of sample `s` by `rank_by` (see [`RankBy::score`]).
+    fn score(&self, s: usize, rank_by: RankBy) -> Option<f64> {
+        rank_by.score(
+            f64::from(self.min_transmission_rad[s]),
+            f64::from(self.size_ratio[s]),
+            f64::from(self.link_ratio[s]),
+        )
+    }
 }
 
 impl SolutionMap {
@@ -88,6 +172,8 @@ impl SolutionMap {
             valid: &c.valid,
             branch_free: &c.branch_free,
             min_transmission_rad: &c.min_transmission_rad,
+            link_ratio: &c.link_ratio,
+            size_ratio: &c.size_ratio,
             acceptable: &c.acceptable,
         }
     }
@@ -111,6 +197,18 @@ impl SolutionMap {
         self.context
             .best_pivots(k, min_separation, rank_by, self.rank_columns())
     }
+
+    /// The whole Pareto front of the acceptable candidates over the minimum
+    /// transmission angle and the size ratio, from the most compact to the
+    /// best transmission: `best_pivots(usize::MAX, Some(0.0),
+    /// RankBy::Pareto)`.
+    ///
+    /// # Errors
+    ///
+    /// As [`MapContext::best_pivots`].
+    pub fn pareto_front(&self) -> Result<Vec<Pivot>> {
+        self.best_pivots(usize::MAX, Some(0.0), RankBy::Pareto)
+    }
 }
 
 impl MapContext {
@@ -124,16 +222,13 @@ impl MapContext {
         Margins::new(self, branch_free).get(k)
     }
 
-    /// The `k` best candidates, best first, from the map's columns.
-    ///
-    /// With [`RankBy::Transmission`] the candidates are the acceptable
-    /// samples, scored by the minimum transmission angle over the travel;
-    /// ties (within [`tolerance::RANK_TIE`]) go to the larger margin to the
-    /// nearest branch-defect boundary. With [`RankBy::Margin`] they are the
-    /// valid, branch-free samples, scored by their margin. Candidates
-    /// closer than `min_separation` to a better one are skipped, so the
-    /// list offers distinct options (default, `None`: 2% of the viewport's
-    /// diagonal).
+    /// The `k` best candidates, best first, from the map's columns, by
+    /// `rank_by` (see [`RankBy`] for the candidates and scores of each
+    /// ranking; runs of scores within [`tolerance::RANK_TIE`] go to the
+    /// smaller size ratio, then the larger margin). Candidates closer than `min_separation` to a better
+    /// one are skipped, so the list offers distinct options (default,
+    /// `None`: 2% of the viewport's diagonal); candidates without a
+    /// linkage are skipped.
     ///
     /// # Errors
     ///
@@ -156,6 +251,8 @@ impl MapContext {
             ("valid", columns.valid.len()),
             ("branch_free", columns.branch_free.len()),
             ("min_transmission_rad", columns.min_transmission_rad.len()),
+            ("link_ratio", columns.link_ratio.len()),
+            ("size_ratio", columns.size_ratio.len()),
             ("acceptable", columns.acceptable.len()),
         ] {
             if len != n {
@@ -168,8 +265,12 @@ impl MapContext {
             }
         }
         let margins = Margins::new(self, columns.branch_free);
+        let span = self.task.span();
         let mut out: Vec<Pivot> = Vec::new();
-        let take = |s: usize, margin: f64, out: &mut Vec<Pivot>| {
+        let take = |s: usize, margin: f64, score: f64, out: &mut Vec<Pivot>| {
+            if out.len() >= k {
+                return;
+            }
             let p = self.point(s);
             if out.iter().any(|q| (q.center - p).norm() < sep) {
                 return;
@@ -181,40 +282,13 @@ impl MapContext {
                     index: (s / nx, s % nx),
                     linkage,
                     margin,
+                    size_ratio: linkage.size() / span,
+                    score,
                     ranked_by: rank_by,
                 });
             }
         };
         match rank_by {
-            RankBy::Transmission => {
-                let mut cand: Vec<(usize, f32)> = (0..n)
-                    .filter(|&s| columns.acceptable[s] && !columns.min_transmission_rad[s].is_nan())
-                    .map(|s| (s, columns.min_transmission_rad[s]))
-                    .collect();
-                cand.sort_by(|a, b| b.1.total_cmp(&a.1));
-                let mut i = 0;
-                while i < cand.len() && out.len() < k {
-                    // A run of equal scores: order by margin.
-                    let mut j = i + 1;
-                    while j < cand.len()
-                        && f64::from(cand[i].1 - cand[j].1).abs() <= tolerance::RANK_TIE
-                    {
-                        j += 1;
-                    }
-                    let mut run: Vec<(usize, f64)> = cand[i..j]
-                        .iter()
-                        .map(|&(s, _)| (s, margins.get(s)))
-                        .collect();
-                    run.sort_by(|a, b| b.1.total_cmp(&a.1));
-                    for (s, margin) in run {
-                        if out.len() >= k {
-                            break;
-                        }
-                        take(s, margin, &mut out);
-                    }
-                    i = j;
-                }
-            }
             RankBy::Margin => {
                 let mut cand: Vec<(usize, f64)> = (0..n)
                     .filter(|&s| columns.valid[s] && columns.branch_free[s])
@@ -222,15 +296,65 @@ impl MapContext {
                     .collect();
                 cand.sort_by(|a, b| b.1.total_cmp(&a.1));
                 for (s, margin) in cand {
-                    if out.len() >= k {
-                        break;
+                    take(s, margin, margin, &mut out);
+                }
+            }
+            RankBy::Pareto => {
+                let mut cand: Vec<(usize, f32, f32)> = (0..n)
+                    .filter(|&s| {
+                        columns.acceptable[s]
+                            && !columns.min_transmission_rad[s].is_nan()
+                            && !columns.size_ratio[s].is_nan()
+                    })
+                    .map(|s| (s, columns.size_ratio[s], columns.min_transmission_rad[s]))
+                    .collect();
+                // By size, ties by the better transmission: a candidate is
+                // on the front when it transmits better than every smaller
+                // (or as small and listed before) one.
+                cand.sort_by(|a, b| a.1.total_cmp(&b.1).then(b.2.total_cmp(&a.2)));
+                let mut best = f32::NEG_INFINITY;
+                for (s, _, mu) in cand {
+                    if mu > best {
+                        best = mu;
+                        take(s, margins.get(s), f64::from(mu), &mut out);
                     }
-                    take(s, margin, &mut out);
+                }
+            }
+            _ => {
+                let mut cand: Vec<(usize, f64)> = (0..n)
+                    .filter(|&s| columns.acceptable[s])
+                    .filter_map(|s| Some((s, columns.score(s, rank_by)?)))
+                    .collect();
+                cand.sort_by(|a, b| b.1.total_cmp(&a.1));
+                let mut i = 0;
+                while i < cand.len() && out.len() < k {
+                    // A run of equal scores: the smaller, then the wider
+                    // margin first.
+                    let mut j = i + 1;
+                    while j < cand.len() && (cand[i].1 - cand[j].1).abs() <= tolerance::RANK_TIE {
+                        j += 1;
+                    }
+                    let mut run: Vec<(usize, f32, f64, f64)> = cand[i..j]
+                        .iter()
+                        .map(|&(s, score)| (s, columns.size_ratio[s], margins.get(s), score))
+                        .collect();
+                    run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
+                    for (s, _, margin, score) in run {
+                        take(s, margin, score, &mut out);
+                    }
+                    i = j;
                 }
             }
         }
         Ok(out)
     }
+}
+
+/// The order of candidates whose scores tie, by `(size_ratio, margin)`:
+/// the smaller size ratio first (NaN last), then the larger margin.
+pub(crate) fn tie_order(a: (f32, f64), b: (f32, f64)) -> core::cmp::Ordering {
+    let size = |v: f32| if v.is_nan() { f32::INFINITY } else { v };
+    size(a.0).total_cmp(&size(b.0)).then(b.1.total_cmp(&a.1))
 }
 
 /// The margins of a map's samples, computing what they share once.

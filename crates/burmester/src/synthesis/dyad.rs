@@ -86,6 +86,19 @@ impl SynthesizedFourBar {
         self.figures.branch_free()
     }
 
+    /// The linkage's size: the total length of its members, the ground
+    /// `A0 C0`, the crank, the rocker and the three sides of the coupler
+    /// triangle (the moving pivots and the task's coupler point, which the
+    /// coupler plate must carry). Compare it with the task's size,
+    /// [`Task::span`]: the solution map's `size_ratio` column is this over
+    /// that.
+    pub fn size(&self) -> f64 {
+        let (a, c) = (self.driving.circle, self.driven.circle);
+        let ac = c - a;
+        let p = a + rotate(self.coupler_point, ac.y.atan2(ac.x));
+        members_length(&self.driving, &self.driven, p)
+    }
+
     /// The coupler pose (the task's coupler point and angle) when the
     /// linkage is driven to `theta2` in `mode`.
     ///
@@ -269,6 +282,20 @@ impl Task {
     pub fn linkage_figures(&self, driving: &Dyad, driven: &Dyad) -> Result<LinkageFigures> {
         Ok(self.four_bar(driving, driven)?.figures)
     }
+}
+
+/// The total length of a linkage's members (see
+/// [`SynthesizedFourBar::size`]) from its dyads and the coupler point `p`,
+/// all at pose 1.
+#[inline]
+pub(crate) fn members_length(driving: &Dyad, driven: &Dyad, p: Point2<f64>) -> f64 {
+    let (a0, a, c0, c) = (driving.center, driving.circle, driven.center, driven.circle);
+    (c0 - a0).norm()
+        + (a - a0).norm()
+        + (c - c0).norm()
+        + (c - a).norm()
+        + (p - a).norm()
+        + (p - c).norm()
 }
 
 /// The four-bar of two dyads (for any number of poses): ground from the

@@ -9,6 +9,7 @@ mod task;
 pub mod three;
 
 pub use branch::{Branch, FilemonLines};
+pub(crate) use dyad::members_length;
 pub use dyad::{Dyad, SynthesizedFourBar};
 pub use motion::{Motion, Pole};
 pub use task::Task;

@@ -247,6 +247,19 @@ impl Task {
         self.scale
     }
 
+    /// The task's size: the largest distance between two pose positions
+    /// (the coupler point's travel, what a designer calls "a task about this
+    /// large"). Positive for every task (poses at one position turn about
+    /// it, which [`Task::new`] rejects). The unit of
+    /// [`SynthesizedFourBar::size`](crate::SynthesizedFourBar::size) ratios.
+    pub fn span(&self) -> f64 {
+        let p = self.motion.poses();
+        self.motion
+            .pairs()
+            .map(|(i, j)| length(p[j - 1].position - p[i - 1].position))
+            .fold(0.0, f64::max)
+    }
+
     /// The three-position maps (pole circles, closed-form maps, image poles).
     ///
     /// # Errors
