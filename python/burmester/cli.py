@@ -6,6 +6,8 @@ Commands::
     burmester map five.toml -o five.png       # four or five poses: the Burmester curve or points
     burmester pivots [TASK.toml] --top 5      # the best driving pivots, as a table (--json)
     burmester linkage [TASK.toml] -o l.gif    # a four-bar at the poses (.png) or animated (.gif/.mp4)
+    burmester map -o plane.dxf                # CAD export (.dxf or .svg): a layer per concept
+    burmester linkage -o linkage.dxf --travel 12
     burmester atlas [TASK.toml] -o atlas.png  # both pivots at once: the best driving pivot per driven center
     burmester batch A.toml B.toml --top 5     # each task's best pivots, one JSON line per file
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
@@ -169,6 +171,45 @@ def _save(fig: Any, path: str, dpi: int) -> None:
 PICTURE_TYPES = (".png", ".svg", ".pdf", ".jpg", ".jpeg", ".tif", ".tiff", ".eps", ".ps")
 #: File types ``linkage`` writes animations in.
 ANIMATION_TYPES = (".gif", ".mp4")
+#: File types ``map`` and ``linkage`` write CAD exports in (:mod:`burmester.export`),
+#: not matplotlib pictures: ``.svg`` is one of them.
+CAD_TYPES = (".dxf", ".svg")
+
+
+def _types(*groups: Sequence[str]) -> Tuple[str, ...]:
+    """The file types of ``groups``, each once, in order."""
+    return tuple(dict.fromkeys(t for g in groups for t in g))
+
+
+def _is_cad(path: str) -> bool:
+    return Path(path).suffix.lower() in CAD_TYPES
+
+
+def _export_module(path: str) -> ModuleType:
+    """``burmester.export``, with ezdxf checked for a ``.dxf`` before any work."""
+    import burmester.export as export
+
+    if Path(path).suffix.lower() == ".dxf":
+        try:
+            import ezdxf  # noqa: F401
+        except ImportError:
+            raise ImportError('writing .dxf needs ezdxf: pip install "burmester[plot]"') from None
+    return export
+
+
+def _units(args: argparse.Namespace) -> str:
+    """``--units``: for CAD exports only (default mm)."""
+    if args.units is not None and not _is_cad(args.output):
+        raise UsageError(f"--units is for CAD exports (.dxf, .svg), not {args.output}")
+    return "mm" if args.units is None else str(args.units)
+
+
+def _write_cad(write: Callable[..., Any], out: str, *args: Any, **kwargs: Any) -> None:
+    """Call an export function, turning a file system error into a UsageError."""
+    try:
+        write(*args, **kwargs)
+    except OSError as e:
+        raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
 
 
 def _output(path: str, types: Sequence[str], force: bool) -> str:
@@ -202,14 +243,27 @@ def _fmt_point(p: Sequence[float]) -> str:
 def cmd_map(args: argparse.Namespace) -> int:
     """``burmester map``: draw the center-point (or circle-point) plane."""
     spec = _with_grid(_load(args.task), args.grid)  # the task file's errors first
-    _output(args.output, PICTURE_TYPES, args.force)
-    plot = _plot_module()
+    _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
+    units = _units(args)
+    cad = _is_cad(args.output)
+    if cad and spec.driven_center is None:
+        raise UsageError(
+            f"the CAD export (.dxf, .svg) draws three-pose planes; {spec.source} has {len(spec.poses)} "
+            "poses: write a picture instead (-o map.png or .pdf)"
+        )
+    export = _export_module(args.output) if cad else None
+    plot = None if cad else _plot_module()
     if spec.driven_center is None:
+        assert plot is not None  # a CAD export of four or five poses was refused above
         return _map_many(args, spec, plot)
     filemon = spec.filemon()
     view = spec.view
     if args.plane == "circle":
-        ax = plot.circle_plane(filemon)
+        if export is not None:
+            _write_cad(export.plane, args.output, filemon, args.output, plane="circle", units=units)
+        else:
+            assert plot is not None
+            ax = plot.circle_plane(filemon)
         summary = f"circle-point plane of {spec.source}"
     else:
         smap = _solution_map(spec, filemon) if args.design or args.pivots > 0 else None
@@ -227,16 +281,22 @@ def cmd_map(args: argparse.Namespace) -> int:
         if args.pivots > 0 and smap is not None:
             ranked, _ = pv.rank(smap, args.pivots, pv.default_spacing(view))
             marks = [p.center for p in ranked]
-        ax = plot.center_plane(
-            filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission
-        )
+        if export is not None:
+            _write_cad(export.plane, args.output, filemon, args.output, view, free=free, pivots=marks,
+                       acceptable=acceptable, transmission=transmission, units=units)
+        else:
+            assert plot is not None
+            ax = plot.center_plane(
+                filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission
+            )
         summary = (
             f"center-point plane of {spec.source}: {100 * free.mean():.1f}% of the "
             f"{view.nx} x {view.ny} grid is branch-free"
         )
         if smap is not None:
             summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
-    _save(ax.figure, args.output, args.dpi)
+    if export is None:
+        _save(ax.figure, args.output, args.dpi)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -441,7 +501,18 @@ def cmd_batch(args: argparse.Namespace) -> int:
 def cmd_linkage(args: argparse.Namespace) -> int:
     """``burmester linkage``: draw or animate the four-bar of one driving pivot."""
     spec = _load(args.task)  # the task file's errors first
-    _output(args.output, PICTURE_TYPES + ANIMATION_TYPES, args.force)
+    _output(args.output, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+    units = _units(args)
+    out: str = args.output
+    cad = _is_cad(out)
+    animated = out.lower().endswith(ANIMATION_TYPES)
+    for flag, given in (("--frames", args.frames), ("--fps", args.fps)):
+        if given is not None and not animated:
+            extra = "; for a CAD export, --travel N draws the linkage at N positions" if cad else ""
+            raise UsageError(f"{flag} is for animations (.gif, .mp4), not {out}{extra}")
+    if args.travel is not None and not cad:
+        raise UsageError(f"--travel is for CAD exports (.dxf, .svg), not {out}; animate with -o linkage.gif")
+    export = _export_module(out) if cad else None
     filemon = spec.filemon()
     if args.pivot is None:
         best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view))
@@ -450,12 +521,15 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         pivot = best[0].center
     else:
         pivot = (args.pivot[0], args.pivot[1])
-    plot = _plot_module()
     sfb = filemon.four_bar(pivot)
-    out: str = args.output
-    if out.lower().endswith((".gif", ".mp4")):
+    if export is not None:
+        _write_cad(export.linkage, out, sfb, out, task=filemon.task, travel_samples=args.travel or 0, units=units)
+    elif animated:
+        plot = _plot_module()
+        frames = 60 if args.frames is None else args.frames
+        fps = 20 if args.fps is None else args.fps
         try:
-            anim = plot.animate(sfb, out, task=filemon.task, frames=args.frames, fps=args.fps)
+            anim = plot.animate(sfb, out, task=filemon.task, frames=frames, fps=fps)
         except RuntimeError as e:
             raise UsageError(str(e)) from None
         except OSError as e:
@@ -465,7 +539,7 @@ def cmd_linkage(args: argparse.Namespace) -> int:
 
         plt.close("all")
     else:
-        ax = plot.linkage(sfb, task=filemon.task)
+        ax = _plot_module().linkage(sfb, task=filemon.task)
         _save(ax.figure, out, args.dpi)
     state = "branch-free" if sfb.branch_free else "has a branch defect"
     print(f"wrote {out}: four-bar with driving pivot A0 = {_fmt_point(pivot)}, "
@@ -595,6 +669,10 @@ def _ranged(lo: int, hi: int) -> Callable[[str], int]:
     return parse
 
 
+#: ``--units`` of a CAD export (:data:`burmester.export.UNITS`, kept here so
+#: that ``burmester --help`` does not import the export module).
+UNIT_CHOICES = ("mm", "cm", "m", "in", "ft", "unitless")
+
 #: The range of ``--dpi`` (matplotlib cannot draw much past 2^16 pixels a side).
 MIN_DPI, MAX_DPI = 10, 2400
 _dpi = _ranged(MIN_DPI, MAX_DPI)
@@ -633,6 +711,7 @@ def build_parser() -> argparse.ArgumentParser:
             "  burmester map task.toml -o map.png  center-point plane of your task\n"
             "  burmester pivots task.toml --top 5  the best acceptable driving pivots\n"
             "  burmester linkage task.toml -o linkage.gif\n"
+            "  burmester map task.toml -o plane.dxf   CAD export (.dxf, .svg), a layer per concept\n"
             "  burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40\n"
             "Without arguments, burmester prints this help."
         ),
@@ -650,7 +729,9 @@ def build_parser() -> argparse.ArgumentParser:
                        "order, with the poles and the points Q_jk; five poses, the Burmester points "
                        "on their two center-point curves.")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
-    p.add_argument("-o", "--output", default="map.png", help="picture to write (.png, .svg, .pdf); default: map.png")
+    p.add_argument("-o", "--output", default="map.png",
+                   help="picture to write (.png, .pdf, ...; matplotlib), or CAD export (.dxf, .svg: a layer "
+                   "or group per concept, exact coordinates; three poses); default: map.png")
     p.add_argument("--plane", choices=("center", "circle"), default="center",
                    help="center: center-point plane (Fig. 10/12); circle: circle-point plane (Fig. 3/11)")
     p.add_argument("--method", choices=("conic", "direct", "simulate"), default="conic",
@@ -662,7 +743,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--design", action="store_true",
                    help="overlay the solution-space map: pivots acceptable under the task's limits "
                    "shaded darker, contours of the minimum transmission angle over the travel")
-    p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, dots per inch, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--dpi", type=_dpi, default=100,
+                   help=f"resolution of a picture, dots per inch, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
+                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_map)
 
@@ -683,16 +767,21 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_pivots)
 
     p = sub.add_parser("linkage", help="draw or animate the four-bar of a driving pivot",
-                       description="Draw the four-bar at the three poses (.png, .svg, .pdf), or "
-                       "animate it driven through them (.gif, or .mp4 with ffmpeg).")
+                       description="Draw the four-bar at the three poses (.png, .pdf, ...), "
+                       "animate it driven through them (.gif, or .mp4 with ffmpeg), or export it to CAD "
+                       "(.dxf, .svg: a layer or group per concept, exact coordinates).")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
                    help="the driving crank's fixed pivot A0 (default: the best, as by 'burmester pivots')")
     p.add_argument("-o", "--output", default="linkage.png", help="file to write; default: linkage.png")
-    p.add_argument("--frames", type=_ranged(2, 10_000), default=60,
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
                    help="animation frames from the first pose to the last, 2 to 10000 (default: 60)")
-    p.add_argument("--fps", type=_ranged(1, 240), default=20,
+    p.add_argument("--fps", type=_ranged(1, 240), default=None,
                    help="animation frames per second, 1 to 240 (default: 20)")
+    p.add_argument("--travel", type=_ranged(2, 10_000), default=None, metavar="N",
+                   help="CAD export: also draw the linkage at N positions over its travel, 2 to 10000")
+    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
+                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
     p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_linkage)
@@ -702,8 +791,8 @@ def build_parser() -> argparse.ArgumentParser:
                                    "driving centers reduced: shaded by the best achievable transmission angle, "
                                    "the count of acceptable driving pivots as contours, the best pair drawn.")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
-    p.add_argument("-o", "--output", default=None, help="picture to write (.png, .svg, .pdf); default: atlas.png "
-                   "(none with --json unless given)")
+    p.add_argument("-o", "--output", default=None, help="picture to write (.png, .svg, .pdf; matplotlib, "
+                   "an image of the atlas, not a CAD export); default: atlas.png (none with --json unless given)")
     p.add_argument("--json", action="store_true", help="print the best pairs as JSON")
     p.add_argument("--top", type=_positive_int, default=5, help="how many pairs in the JSON (default: 5)")
     p.add_argument("--scheduler", metavar="ADDRESS", default=None,

@@ -40,6 +40,8 @@ layer                drawing     what
                                  they are collinear)
 ``DRIVEN_PIVOT``     center      the driven crank's fixed pivot ``C0``
 ``BEST_PIVOTS``      center      given pivots (``pivots=``), numbered
+``TRANSMISSION``     center      contours of a transmission angle (``transmission=``),
+                                 one polyline per piece, labelled in degrees
 ``LINE_k``           circle      the line through ``C1`` and ``C'k``, k = 1, 2, 3
 ``IMAGE_POLES``      circle      the image poles ``P12, P13, P'23``
 ``IMAGE_POLE_CIRCLE`` circle     the circle through them
@@ -180,6 +182,7 @@ LAYERS: Dict[str, Layer] = {
     "DRIVEN_CIRCLE_POINT": Layer(130, "#1b9e77", "driven crank's moving pivot C1"),
     "DRIVEN_PIVOT": Layer(30, "#ff7f0e", "driven crank's fixed pivot C0"),
     "BEST_PIVOTS": Layer(2, "#e6ab02", "best driving pivots, numbered"),
+    "TRANSMISSION": Layer(252, "#636363", "contours of the minimum transmission angle, degrees"),
     "POSES": Layer(40, "#e66101", "poses: point and a flag along the coupler angle"),
     "PIVOTS": Layer(7, "#000000", "fixed pivots A0, C0"),
     "TEXT": Layer(250, "#404040", "labels"),
@@ -379,6 +382,20 @@ def _regions(grid: Grid, mask: npt.NDArray[np.bool_]) -> Iterator[List[Array]]:
         yield [r[:-1] if len(r) > 1 and np.array_equal(r[0], r[-1]) else r for r in rings]
 
 
+def _contours(grid: Grid, values: Array, levels: Sequence[float]) -> Iterator[Tuple[float, Array]]:
+    """``(level, line)``: the contour lines of ``values`` (NaN where undefined)
+    on the grid's samples, by contourpy, one ``(n, 2)`` array per piece."""
+    try:
+        import contourpy
+    except ImportError:
+        raise ImportError(_MISSING.format(what="contourpy for the contours")) from None
+    xs, ys = grid.cell_centers()
+    gen = contourpy.contour_generator(xs, ys, np.ma.masked_invalid(values), line_type=contourpy.LineType.Separate)
+    for level in sorted(levels):
+        for line in cast(List[Array], gen.lines(level)):
+            yield level, np.asarray(line, dtype=float)
+
+
 def _clip_polygon(poly: Array, extent: Extent) -> Array:
     """A polygon clipped to the rectangle ``extent`` (Sutherland-Hodgman)."""
     x0, x1, y0, y1 = extent
@@ -454,8 +471,8 @@ def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_sampl
     if travel_samples and not figures.feasible:
         raise burmester.AssemblyError(
             "the linkage cannot be driven from pose 1 through the poses in order (a branch, order "
-            "or circuit defect), so it has no travel to sample; give travel_samples=0 or choose "
-            "another driving pivot"
+            "or circuit defect), so it has no travel to sample: draw it without travel samples "
+            "(travel_samples=0, no --travel) or choose another driving pivot"
         )
     fb = sfb.fourbar
     a0, c0 = sfb.driving[0], sfb.driven[0]
@@ -500,18 +517,40 @@ def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_sampl
 # The planes
 
 
+class _Overlays(NamedTuple):
+    """What a solution map adds to the center-point plane."""
+
+    acceptable: Optional[npt.ArrayLike]
+    transmission: Optional[npt.ArrayLike]
+    levels: Sequence[float]
+    pivots: Optional[Sequence[Point]]
+
+
 def _center_drawing(filemon: Filemon, grid: Grid, method: Method, free: Optional[npt.ArrayLike],
-                    acceptable: Optional[npt.ArrayLike], pivots: Optional[Sequence[Point]],
-                    labels: bool) -> _Drawing:
+                    over: _Overlays, labels: bool) -> _Drawing:
     extent = grid.extent
     d = _Drawing("driving crank center-point plane")
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
     free_b = _mask("free", free, grid.shape) if free is not None else filemon.branch_map(grid, method=method)
     for rings in _regions(grid, free_b):
         d.regions.append(_Region("BRANCH_FREE", rings, "branch-free driving pivots"))
-    if acceptable is not None:
-        for rings in _regions(grid, free_b & _mask("acceptable", acceptable, grid.shape)):
+    if over.acceptable is not None:
+        for rings in _regions(grid, free_b & _mask("acceptable", over.acceptable, grid.shape)):
             d.regions.append(_Region("ACCEPTABLE", rings, "branch-free and acceptable driving pivots"))
+    if over.transmission is not None:
+        values = np.asarray(over.transmission, dtype=float)
+        if values.shape != grid.shape:
+            raise burmester.InvalidInputError(
+                f"transmission must have the grid's shape (ny, nx) = {grid.shape}, got {values.shape}"
+            )
+        longest: Dict[float, Array] = {}
+        for level, line in _contours(grid, values, over.levels):
+            d.polyline("TRANSMISSION", line, f"transmission angle {level:g} deg")
+            if len(line) > len(longest.get(level, ())):
+                longest[level] = line
+        if labels:  # each level once, at the middle of its longest piece
+            for level, line in longest.items():
+                d.labels.append(_Label((float(line[len(line) // 2][0]), float(line[len(line) // 2][1])), f"{level:g}"))
     extreme = filemon.extreme_poses
     if extreme is not None:
         for pose, conic in zip(extreme, filemon.conics):
@@ -524,7 +563,7 @@ def _center_drawing(filemon: Filemon, grid: Grid, method: Method, free: Optional
     d.polyline("POLE_TRIANGLE", [p for _, p in poles], "pole triangle", closed=True)
     _circle_or_line(d, "POLE_CIRCLE", task.pole_circle(), extent, "pole circle")
     d.marker("DRIVEN_PIVOT", filemon.driven_center, "driven crank's fixed pivot C0", "C0" if labels else None)
-    for k, p in enumerate(pivots or [], start=1):
+    for k, p in enumerate(over.pivots or [], start=1):
         d.marker("BEST_PIVOTS", p, f"driving pivot {k}", str(k) if labels else None)
     return d
 
@@ -561,8 +600,7 @@ def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
 
 
 def _plane_drawing(filemon: Filemon, view: Optional[ViewLike], plane: str, grid: Optional[Tuple[int, int]],
-                   method: Method, free: Optional[npt.ArrayLike], acceptable: Optional[npt.ArrayLike],
-                   pivots: Optional[Sequence[Point]], labels: bool) -> _Drawing:
+                   method: Method, free: Optional[npt.ArrayLike], over: _Overlays, labels: bool) -> _Drawing:
     if plane == "circle":
         extent = default_circle_view(filemon) if view is None else _view(filemon, view, None).extent
         return _circle_drawing(filemon, extent, labels)
@@ -573,7 +611,7 @@ def _plane_drawing(filemon: Filemon, view: Optional[ViewLike], plane: str, grid:
         if len(shape) != 2:
             raise burmester.InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {shape}")
         grid = (shape[1], shape[0])
-    return _center_drawing(filemon, _view(filemon, view, grid), method, free, acceptable, pivots, labels)
+    return _center_drawing(filemon, _view(filemon, view, grid), method, free, over, labels)
 
 
 # ---------------------------------------------------------------------------
@@ -787,6 +825,8 @@ def plane(
     method: Method = "conic",
     free: Optional[npt.ArrayLike] = None,
     acceptable: Optional[npt.ArrayLike] = None,
+    transmission: Optional[npt.ArrayLike] = None,
+    transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
     pivots: Optional[Sequence[Point]] = None,
     labels: bool = True,
     units: str = DEFAULT_UNITS,
@@ -827,6 +867,11 @@ def plane(
             the samples when neither a Grid nor ``grid`` is given.
         acceptable: a bool array ``(ny, nx)``: pivots that meet the limits
             (a solution map's ``acceptable``).
+        transmission: a float array ``(ny, nx)``: a transmission angle in
+            degrees per sample (NaN where undefined), drawn as contours at
+            ``transmission_levels`` (``TRANSMISSION``; for example
+            ``numpy.degrees(smap.min_transmission_rad)``).
+        transmission_levels: the contour levels, degrees.
         pivots: ``(x, y)`` points to mark, numbered from 1 (for example
             ``[p.center for p in smap.best_pivots()]``).
         labels: write the names of the points (layer ``TEXT``).
@@ -846,7 +891,8 @@ def plane(
     """
     target = _target(path, (".dxf", ".svg"))
     units = _units(units)
-    d = _plane_drawing(filemon, view, plane, grid, method, free, acceptable, pivots, labels)
+    over = _Overlays(acceptable, transmission, transmission_levels, pivots)
+    d = _plane_drawing(filemon, view, plane, grid, method, free, over, labels)
     return _write(d, target, units)
 
 
