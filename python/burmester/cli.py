@@ -246,16 +246,10 @@ def cmd_map(args: argparse.Namespace) -> int:
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
     units = _units(args)
     cad = _is_cad(args.output)
-    if cad and spec.driven_center is None:
-        raise UsageError(
-            f"the CAD export (.dxf, .svg) draws three-pose planes; {spec.source} has {len(spec.poses)} "
-            "poses: write a picture instead (-o map.png or .pdf)"
-        )
     export = _export_module(args.output) if cad else None
     plot = None if cad else _plot_module()
     if spec.driven_center is None:
-        assert plot is not None  # a CAD export of four or five poses was refused above
-        return _map_many(args, spec, plot)
+        return _map_many(args, spec, plot, export, units)
     filemon = spec.filemon()
     view = spec.view
     if args.plane == "circle":
@@ -301,9 +295,11 @@ def cmd_map(args: argparse.Namespace) -> int:
     return 0
 
 
-def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: ModuleType) -> int:
+def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleType],
+              export: Optional[ModuleType], units: str) -> int:
     """``burmester map`` of four or five poses: the center-point curve
-    coloured by crank order, or the Burmester points on their curves."""
+    coloured by crank order, or the Burmester points on their curves (a
+    picture with ``plot``, a CAD export with ``export``)."""
     n = len(spec.poses)
     for flag, given in (("--plane circle", args.plane == "circle"), ("--design", args.design),
                         ("--pivots", args.pivots > 0)):
@@ -312,7 +308,11 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: ModuleType) -> int
                 f"{flag} is for three poses (Filemon's construction); {spec.source} has {n} poses"
             )
     task = spec.task()
-    ax = plot.burmester_plane(task, spec.view.extent)
+    if export is not None:
+        _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent, units=units)
+    else:
+        assert plot is not None
+        ax = plot.burmester_plane(task, spec.view.extent)
     if n == 4:
         arcs = task.order_arcs(*spec.view.extent)
         ordered = sum(1 for _, d, _ in arcs if d is not None)
@@ -325,7 +325,8 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: ModuleType) -> int
         # Rounded first, so that a coordinate of rounding size reads 0.000, not -0.000.
         listed = ", ".join(_fmt_point([round(c[0], 3) + 0.0, round(c[1], 3) + 0.0]) for c, _ in pts)
         summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
-    _save(ax.figure, args.output, args.dpi)
+    if export is None:
+        _save(ax.figure, args.output, args.dpi)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -731,7 +732,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("-o", "--output", default="map.png",
                    help="picture to write (.png, .pdf, ...; matplotlib), or CAD export (.dxf, .svg: a layer "
-                   "or group per concept, exact coordinates; three poses); default: map.png")
+                   "or group per concept, exact coordinates); default: map.png")
     p.add_argument("--plane", choices=("center", "circle"), default="center",
                    help="center: center-point plane (Fig. 10/12); circle: circle-point plane (Fig. 3/11)")
     p.add_argument("--method", choices=("conic", "direct", "simulate"), default="conic",

@@ -5,6 +5,12 @@ plane, to DXF (with ezdxf) and to SVG (with the standard library).
   file's suffix): the fixed pivots, the ground link, the linkage at each
   pose, the poses, the coupler curve, the coupler-point path over the
   travel and, optionally, the linkage sampled over the travel.
+- :func:`burmester_plane_dxf`, :func:`burmester_plane_svg` (or
+  :func:`burmester_plane`): four or five poses, as
+  :func:`burmester.plot.burmester_plane` draws them: the center-point curve
+  by crank order with the points ``Q_jk`` (and, given a driven pivot, the
+  branch-free driving pivots on it), or the Burmester points on their two
+  curves; the poles and the poses.
 - :func:`plane_dxf`, :func:`plane_svg` (or :func:`plane`): the driving
   crank's center-point plane (branch-free regions as polygons with holes,
   the transformed Filemon conics, the poles, the pole triangle and circle,
@@ -34,14 +40,25 @@ layer                drawing     what
 ``ACCEPTABLE_FILL``  center      the same, filled
 ``CONIC_k``          center      Filemon's line of pose k transformed, every
                                  branch in view (two of k = 1, 2, 3)
-``POLES``            center      the poles ``P12, P13, P23``
+``POLES``            center,     the poles ``P12, P13, P23`` (and ``Pjk`` of four
+                     4, 5 poses  or five poses, the finite ones)
 ``POLE_TRIANGLE``    center      the pole triangle
 ``POLE_CIRCLE``      center      the circle through the poles (a line when
                                  they are collinear)
-``DRIVEN_PIVOT``     center      the driven crank's fixed pivot ``C0``
+``DRIVEN_PIVOT``     center,     the driven crank's fixed pivot ``C0``
+                     4 poses
 ``BEST_PIVOTS``      center      given pivots (``pivots=``), numbered
 ``TRANSMISSION``     center      contours of a transmission angle (``transmission=``),
                                  one polyline per piece, labelled in degrees
+``CURVE_CCW``        4 poses     the center-point curve where the crank meets the
+                                 poses in order counter-clockwise
+``CURVE_CW``         4 poses     ... clockwise
+``CURVE_ORDER_DEFECT`` 4 poses   ... with an order defect
+``COINCIDENCE_POINTS`` 4 poses   the points ``Q_jk`` where crank positions coincide
+``BRANCH_FREE_ARCS`` 4 poses     driving pivots branch-free with ``driven=``
+``CURVE_1234``       5 poses     the center-point curve of poses 1, 2, 3, 4
+``CURVE_1235``       5 poses     the center-point curve of poses 1, 2, 3, 5
+``BURMESTER_POINTS`` 5 poses     the Burmester points (center points)
 ``LINE_k``           circle      the line through ``C1`` and ``C'k``, k = 1, 2, 3
 ``IMAGE_POLES``      circle      the image poles ``P12, P13, P'23``
 ``IMAGE_POLE_CIRCLE`` circle     the circle through them
@@ -52,7 +69,8 @@ layer                drawing     what
 ``LINKAGE_k``        linkage     the linkage at pose k: crank ``A0 A``, coupler
                                  triangle ``A B P``, rocker ``B C0``, and the
                                  moving joints ``A`` and ``B``
-``POSES``            linkage     each pose: its point and a flag along its angle
+``POSES``            linkage,    each pose: its point and a flag along its angle
+                     4, 5 poses
 ``COUPLER_CURVE``    linkage     the coupler point over the input's whole range
                                  in the mode of pose 1: one closed polyline when
                                  the input turns fully, else one per arc of
@@ -67,10 +85,12 @@ layer                drawing     what
 
 Markers (pivots, poles, poses) are circles centred on the exact point; their
 radius (0.6 % of the drawing's larger side) and the text height (1.8 %) only
-make them visible. The drawing's extent is the bounding box of everything
-drawn, grown by 3 % of its larger side for the markers and labels; DXF
-``$LIMMIN``/``$LIMMAX`` and ``$EXTMIN``/``$EXTMAX`` and the SVG
-``viewBox`` are that box.
+make them visible. The drawing's extent is, for a linkage, the bounding box
+of everything drawn and, for a plane, its view (as in the pictures: curves
+and regions are clipped to it, points outside it are left out, a pole
+circle is drawn whole), grown by 3 % of its larger side for the markers and
+labels; DXF ``$LIMMIN``/``$LIMMAX`` and ``$EXTMIN``/``$EXTMAX`` and the
+SVG ``viewBox`` are that box.
 
 **SVG coordinates.** The picture is upright: a model point ``(x, y)`` is
 written at SVG user coordinates ``(x, -y)`` (SVG's y axis points down), and
@@ -101,15 +121,22 @@ import numpy.typing as npt
 
 import burmester
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
-from burmester.taskfile import DEFAULT_GRID, default_circle_view, default_view, grid_for
+from burmester.taskfile import DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for
 
 if TYPE_CHECKING:
     from burmester._burmester import Method, Mode
 
 __all__ = [
+    "DEFAULT_PATH_SAMPLES",
+    "DEFAULT_TRANSMISSION_LEVELS",
     "DEFAULT_UNITS",
     "LAYERS",
+    "MAX_SAMPLES",
     "UNITS",
+    "Layer",
+    "burmester_plane",
+    "burmester_plane_dxf",
+    "burmester_plane_svg",
     "linkage",
     "linkage_dxf",
     "linkage_svg",
@@ -139,6 +166,8 @@ _SVG_NS = "http://www.w3.org/2000/svg"
 
 #: Largest ``travel_samples`` and ``path_samples``.
 MAX_SAMPLES = 100_000
+#: Contour levels of the transmission angle, degrees, by default (as :func:`burmester.plot.center_plane`).
+DEFAULT_TRANSMISSION_LEVELS: Tuple[float, ...] = (30.0, 45.0, 60.0, 75.0)
 #: Samples of the coupler curve over a full turn of the input, by default.
 DEFAULT_PATH_SAMPLES = 720
 
@@ -166,6 +195,7 @@ LAYERS: Dict[str, Layer] = {
     "ACCEPTABLE_FILL": Layer(84, "#74c476", "branch-free and acceptable region, filled"),
     "BRANCH_FREE": Layer(94, "#31a354", "branch-free region, outlines (outer boundaries and holes)"),
     "ACCEPTABLE": Layer(96, "#006d2c", "branch-free and acceptable region, outlines"),
+    "TRANSMISSION": Layer(252, "#636363", "contours of the minimum transmission angle, degrees"),
     "COUPLER_CURVE": Layer(9, "#999999", "coupler point over the input's range, mode of pose 1"),
     "TRAVEL": Layer(254, "#cccccc", "the linkage sampled over its travel"),
     "COUPLER_PATH": Layer(4, "#17becf", "coupler point over the travel, pose k to k + 1"),
@@ -173,6 +203,12 @@ LAYERS: Dict[str, Layer] = {
     **{f"CONIC_{k}": Layer(a, c, f"Filemon line of pose {k} transformed") for k, (a, c) in _POSE_COLORS.items() if k <= 3},
     **{f"LINE_{k}": Layer(a, c, f"line through C1 and C'{k}") for k, (a, c) in _POSE_COLORS.items() if k <= 3},
     **{f"LINKAGE_{k}": Layer(a, c, f"the linkage at pose {k}") for k, (a, c) in _POSE_COLORS.items()},
+    "BRANCH_FREE_ARCS": Layer(71, "#a1d99b", "driving pivots on the curve, branch-free with C0"),
+    "CURVE_CCW": Layer(94, "#1a9850", "center points, crank meets the poses in order (ccw)"),
+    "CURVE_CW": Layer(150, "#2166ac", "center points, crank meets the poses in order (cw)"),
+    "CURVE_ORDER_DEFECT": Layer(9, "#bdbdbd", "center points with an order defect"),
+    "CURVE_1234": Layer(150, "#2166ac", "center-point curve of poses 1, 2, 3, 4"),
+    "CURVE_1235": Layer(12, "#b2182b", "center-point curve of poses 1, 2, 3, 5"),
     "POLE_CIRCLE": Layer(251, "#7f7f7f", "circle through the poles"),
     "IMAGE_POLE_CIRCLE": Layer(251, "#7f7f7f", "circle through the image poles"),
     "POLE_TRIANGLE": Layer(250, "#333333", "pole triangle"),
@@ -182,7 +218,8 @@ LAYERS: Dict[str, Layer] = {
     "DRIVEN_CIRCLE_POINT": Layer(130, "#1b9e77", "driven crank's moving pivot C1"),
     "DRIVEN_PIVOT": Layer(30, "#ff7f0e", "driven crank's fixed pivot C0"),
     "BEST_PIVOTS": Layer(2, "#e6ab02", "best driving pivots, numbered"),
-    "TRANSMISSION": Layer(252, "#636363", "contours of the minimum transmission angle, degrees"),
+    "COINCIDENCE_POINTS": Layer(251, "#4d4d4d", "Q_jk: crank positions j and k coincide"),
+    "BURMESTER_POINTS": Layer(2, "#e6ab02", "Burmester points (center points)"),
     "POSES": Layer(40, "#e66101", "poses: point and a flag along the coupler angle"),
     "PIVOTS": Layer(7, "#000000", "fixed pivots A0, C0"),
     "TEXT": Layer(250, "#404040", "labels"),
@@ -238,6 +275,8 @@ class _Drawing:
     """The things to draw, by layer, in model coordinates."""
 
     title: str
+    #: A plane's view: the extent, and markers outside it are left out.
+    frame: Optional[Extent] = None
     polylines: List[_Polyline] = field(default_factory=list)
     regions: List[_Region] = field(default_factory=list)
     circles: List[_Circle] = field(default_factory=list)
@@ -249,6 +288,10 @@ class _Drawing:
 
     def marker(self, layer: str, point: Sequence[float], title: str, label: Optional[str] = None) -> None:
         p = (float(point[0]), float(point[1]))
+        if self.frame is not None:
+            x0, x1, y0, y1 = self.frame
+            if not (x0 <= p[0] <= x1 and y0 <= p[1] <= y1):
+                return
         self.markers.append(_Marker(layer, p, title))
         if label is not None:
             self.labels.append(_Label(p, label))
@@ -264,7 +307,10 @@ class _Drawing:
         return [name for name in LAYERS if name in used]
 
     def bounds(self) -> Extent:
-        """The bounding box of the geometry (markers and labels by their points)."""
+        """The frame if any, else the bounding box of the geometry (markers
+        and labels by their points)."""
+        if self.frame is not None:
+            return self.frame
         pts: List[Array] = [p.points for p in self.polylines]
         pts += [ring for r in self.regions for ring in r.rings]
         pts += [np.array([[c.center[0] - c.radius, c.center[1] - c.radius],
@@ -320,6 +366,22 @@ def _target(path: PathLike, suffixes: Sequence[str]) -> Path:
     return p
 
 
+def _extent(view: Any) -> Extent:
+    """``(xmin, xmax, ymin, ymax)`` from a sequence of four finite numbers
+    with ``xmin < xmax`` and ``ymin < ymax``, or InvalidInputError."""
+    try:
+        xmin, xmax, ymin, ymax = (float(t) for t in view)
+    except (TypeError, ValueError):
+        raise burmester.InvalidInputError(
+            f"view must be a burmester.Grid or (xmin, xmax, ymin, ymax), got {view!r}"
+        ) from None
+    if not (math.isfinite(xmin + xmax + ymin + ymax) and xmin < xmax and ymin < ymax):
+        raise burmester.InvalidInputError(
+            f"view must be (xmin, xmax, ymin, ymax), finite, with xmin < xmax and ymin < ymax, got {tuple(view)}"
+        )
+    return (xmin, xmax, ymin, ymax)
+
+
 def _view(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, int]]) -> Grid:
     """A Grid from a Grid, ``(xmin, xmax, ymin, ymax)`` (400 samples along
     the longer side) or None (the default view), ``grid = (nx, ny)`` samples
@@ -329,17 +391,7 @@ def _view(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, 
     elif isinstance(view, Grid):
         g = view
     else:
-        try:
-            xmin, xmax, ymin, ymax = (float(t) for t in view)
-        except (TypeError, ValueError):
-            raise burmester.InvalidInputError(
-                f"view must be a burmester.Grid or (xmin, xmax, ymin, ymax), got {view!r}"
-            ) from None
-        if not (math.isfinite(xmin + xmax + ymin + ymax) and xmin < xmax and ymin < ymax):
-            raise burmester.InvalidInputError(
-                f"view must be (xmin, xmax, ymin, ymax), finite, with xmin < xmax and ymin < ymax, got {tuple(view)}"
-            )
-        g = grid_for(xmin, xmax, ymin, ymax, DEFAULT_GRID)
+        g = grid_for(*_extent(view), DEFAULT_GRID)
     if grid is not None:
         nx, ny = (_samples(name, n, 2) for name, n in zip(("grid nx", "grid ny"), grid))
         g = Grid(g.xmin, g.xmax, g.ymin, g.ymax, nx, ny)
@@ -505,11 +557,7 @@ def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_sampl
         _links(d, f"LINKAGE_{k}", sfb, theta2, m or "open", f"pose {k} ({m or 'toggle'})", True)
 
     poses = task.poses if task is not None else [sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)]
-    flag = 0.3 * min(fb.lengths)
-    for k, (px, py, angle) in enumerate(poses, start=1):
-        d.polyline("POSES", [(px, py), (px + flag * math.cos(angle), py + flag * math.sin(angle))],
-                   f"pose {k}: flag along the coupler angle")
-        d.marker("POSES", (px, py), f"pose {k}", str(k) if labels else None)
+    _poses(d, poses, 0.3 * min(fb.lengths), labels)
     return d
 
 
@@ -529,7 +577,7 @@ class _Overlays(NamedTuple):
 def _center_drawing(filemon: Filemon, grid: Grid, method: Method, free: Optional[npt.ArrayLike],
                     over: _Overlays, labels: bool) -> _Drawing:
     extent = grid.extent
-    d = _Drawing("driving crank center-point plane")
+    d = _Drawing("driving crank center-point plane", extent)
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
     free_b = _mask("free", free, grid.shape) if free is not None else filemon.branch_map(grid, method=method)
     for rings in _regions(grid, free_b):
@@ -569,7 +617,7 @@ def _center_drawing(filemon: Filemon, grid: Grid, method: Method, free: Optional
 
 
 def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
-    d = _Drawing("driving crank circle-point plane (pose 1)")
+    d = _Drawing("driving crank circle-point plane (pose 1)", extent)
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
     c1 = filemon.driven_circle
     corners = _rectangle(extent)
@@ -596,6 +644,46 @@ def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
         name = f"C'{k}" + (" = C0" if k == 1 else "")
         d.marker("FIXED_PIVOT_IMAGES", p, f"fixed pivot image {name}", name if labels else None)
     d.marker("DRIVEN_CIRCLE_POINT", c1, "driven crank's moving pivot C1", "C1" if labels else None)
+    return d
+
+
+_ORDER_LAYERS = {"counterclockwise": "CURVE_CCW", "clockwise": "CURVE_CW", None: "CURVE_ORDER_DEFECT"}
+
+
+def _poses(d: _Drawing, poses: Sequence[Sequence[float]], flag: float, labels: bool) -> None:
+    """Each pose: a flag along its angle and a marker at its point (layer ``POSES``)."""
+    for k, (px, py, angle) in enumerate(poses, start=1):
+        d.polyline("POSES", [(px, py), (px + flag * math.cos(angle), py + flag * math.sin(angle))],
+                   f"pose {k}: flag along the coupler angle")
+        d.marker("POSES", (px, py), f"pose {k}", str(k) if labels else None)
+
+
+def _burmester_drawing(task: Task, extent: Extent, driven: Optional[Point], labels: bool) -> _Drawing:
+    n = len(task)
+    d = _Drawing(f"{n} poses: " + ("center-point curve" if n == 4 else "Burmester points"), extent)
+    d.polyline("VIEW", _rectangle(extent), "view", closed=True)
+    if n == 4:
+        if driven is not None:
+            for pts in task.branch_free_arcs(driven, *extent):
+                d.polyline("BRANCH_FREE_ARCS", pts, "branch-free driving pivots for C0")
+            d.marker("DRIVEN_PIVOT", driven, "driven crank's fixed pivot C0", "C0" if labels else None)
+        for order, direction, pts in task.order_arcs(*extent):
+            d.polyline(_ORDER_LAYERS[direction], pts, f"center-point curve, crank order {order}")
+        for q in task.coincidence_points():
+            if q.center is not None:
+                j, k = q.pair
+                d.marker("COINCIDENCE_POINTS", q.center, f"Q{j}{k}", f"Q{j}{k}" if labels else None)
+    else:
+        for curve, layer, poses in zip(task.burmester_curves(), ("CURVE_1234", "CURVE_1235"), ("1, 2, 3, 4", "1, 2, 3, 5")):
+            for pts in curve.polylines(*extent):
+                d.polyline(layer, pts, f"center-point curve of poses {poses}")
+        for k, (center, _) in enumerate(task.burmester_points(), start=1):
+            d.marker("BURMESTER_POINTS", center, f"Burmester point B{k}", f"B{k}" if labels else None)
+    for pole in task.poles:
+        if pole.point is not None:
+            i, j = pole.pair
+            d.marker("POLES", pole.point, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
+    _poses(d, task.poses, 0.12 * task.scale, labels)
     return d
 
 
@@ -797,22 +885,44 @@ def linkage(
             be driven through the poses in order (no travel).
         ImportError: ezdxf (for ``.dxf``) is not installed.
     """
-    target = _target(path, (".dxf", ".svg"))
+    return _linkage_to((".dxf", ".svg"), sfb, path, task, travel_samples, path_samples, labels, units)
+
+
+def _linkage_to(suffixes: Sequence[str], sfb: SynthesizedFourBar, path: PathLike, task: Optional[Task],
+                travel_samples: int, path_samples: int, labels: bool, units: str) -> Path:
+    target = _target(path, suffixes)
     units = _units(units)
     return _write(_linkage_drawing(sfb, task, travel_samples, path_samples, labels), target, units)
 
 
-def linkage_dxf(sfb: SynthesizedFourBar, path: PathLike, **options: Any) -> Path:
-    """:func:`linkage` to a ``.dxf`` file (any other suffix is an
-    InvalidInputError); the same keywords."""
-    _target(path, (".dxf",))
-    return linkage(sfb, path, **options)
+def linkage_dxf(
+    sfb: SynthesizedFourBar,
+    path: PathLike,
+    *,
+    task: Optional[Task] = None,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`linkage` to a ``.dxf`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    return _linkage_to((".dxf",), sfb, path, task, travel_samples, path_samples, labels, units)
 
 
-def linkage_svg(sfb: SynthesizedFourBar, path: PathLike, **options: Any) -> Path:
-    """:func:`linkage` to an ``.svg`` file; the same keywords."""
-    _target(path, (".svg",))
-    return linkage(sfb, path, **options)
+def linkage_svg(
+    sfb: SynthesizedFourBar,
+    path: PathLike,
+    *,
+    task: Optional[Task] = None,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`linkage` to an ``.svg`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    return _linkage_to((".svg",), sfb, path, task, travel_samples, path_samples, labels, units)
 
 
 def plane(
@@ -826,7 +936,7 @@ def plane(
     free: Optional[npt.ArrayLike] = None,
     acceptable: Optional[npt.ArrayLike] = None,
     transmission: Optional[npt.ArrayLike] = None,
-    transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
+    transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
     pivots: Optional[Sequence[Point]] = None,
     labels: bool = True,
     units: str = DEFAULT_UNITS,
@@ -889,20 +999,145 @@ def plane(
             shape than the grid's.
         ImportError: ezdxf (for ``.dxf``) or contourpy is not installed.
     """
-    target = _target(path, (".dxf", ".svg"))
-    units = _units(units)
     over = _Overlays(acceptable, transmission, transmission_levels, pivots)
-    d = _plane_drawing(filemon, view, plane, grid, method, free, over, labels)
-    return _write(d, target, units)
+    return _plane_to((".dxf", ".svg"), filemon, path, view, plane, grid, method, free, over, labels, units)
 
 
-def plane_dxf(filemon: Filemon, path: PathLike, view: Optional[ViewLike] = None, **options: Any) -> Path:
-    """:func:`plane` to a ``.dxf`` file; the same keywords."""
-    _target(path, (".dxf",))
-    return plane(filemon, path, view, **options)
+def _plane_to(suffixes: Sequence[str], filemon: Filemon, path: PathLike, view: Optional[ViewLike], plane: str,
+              grid: Optional[Tuple[int, int]], method: Method, free: Optional[npt.ArrayLike], over: _Overlays,
+              labels: bool, units: str) -> Path:
+    target = _target(path, suffixes)
+    units = _units(units)
+    return _write(_plane_drawing(filemon, view, plane, grid, method, free, over, labels), target, units)
 
 
-def plane_svg(filemon: Filemon, path: PathLike, view: Optional[ViewLike] = None, **options: Any) -> Path:
-    """:func:`plane` to an ``.svg`` file; the same keywords."""
-    _target(path, (".svg",))
-    return plane(filemon, path, view, **options)
+def plane_dxf(
+    filemon: Filemon,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    plane: Plane = "center",
+    grid: Optional[Tuple[int, int]] = None,
+    method: Method = "conic",
+    free: Optional[npt.ArrayLike] = None,
+    acceptable: Optional[npt.ArrayLike] = None,
+    transmission: Optional[npt.ArrayLike] = None,
+    transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
+    pivots: Optional[Sequence[Point]] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`plane` to a ``.dxf`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    over = _Overlays(acceptable, transmission, transmission_levels, pivots)
+    return _plane_to((".dxf",), filemon, path, view, plane, grid, method, free, over, labels, units)
+
+
+def plane_svg(
+    filemon: Filemon,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    plane: Plane = "center",
+    grid: Optional[Tuple[int, int]] = None,
+    method: Method = "conic",
+    free: Optional[npt.ArrayLike] = None,
+    acceptable: Optional[npt.ArrayLike] = None,
+    transmission: Optional[npt.ArrayLike] = None,
+    transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
+    pivots: Optional[Sequence[Point]] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`plane` to an ``.svg`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    over = _Overlays(acceptable, transmission, transmission_levels, pivots)
+    return _plane_to((".svg",), filemon, path, view, plane, grid, method, free, over, labels, units)
+
+
+def burmester_plane(
+    task: Task,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    driven: Optional[Point] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """Write the center-point plane of four or five poses to a DXF or SVG
+    file, by the path's suffix (what :func:`burmester.plot.burmester_plane`
+    draws).
+
+    **Four poses**: the center-point curve, every component in view, in
+    pieces by the crank's order class (:meth:`burmester.Task.order_arcs`;
+    layers ``CURVE_CCW``, ``CURVE_CW``, ``CURVE_ORDER_DEFECT``), the points
+    ``Q_jk`` (``COINCIDENCE_POINTS``) and, with ``driven``, the driving
+    pivots branch-free with it (:meth:`burmester.Task.branch_free_arcs`,
+    ``BRANCH_FREE_ARCS``) and ``C0`` (``DRIVEN_PIVOT``). **Five poses**: the
+    center-point curves of poses 1-4 and 1-2-3-5 (``CURVE_1234``,
+    ``CURVE_1235``) and the Burmester points (``BURMESTER_POINTS``). Both:
+    ``VIEW``, the finite poles (``POLES``), the poses (``POSES``), labels.
+    The curves are exact (the core's polylines, vertices on the curve).
+
+    Parameters:
+        task: a :class:`burmester.Task` of four or five poses.
+        path: the file to write, ending in ``.dxf`` or ``.svg``.
+        view: ``(xmin, xmax, ymin, ymax)`` or a :class:`burmester.Grid`;
+            default: :func:`burmester.taskfile.default_curve_view`.
+        driven: four poses: the driven dyad's center point ``C0``, on the curve.
+        labels: write the names of the points (layer ``TEXT``).
+        units: the unit of the lengths, recorded in the file: one of
+            :data:`UNITS` (default :data:`DEFAULT_UNITS`).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: a task of three poses (``cause ==
+            "needs_poses"``; export it with :func:`plane`), another suffix, a
+            folder that does not exist, unknown units or a view that is not a view.
+    """
+    return _burmester_to((".dxf", ".svg"), task, path, view, driven, labels, units)
+
+
+def _burmester_to(suffixes: Sequence[str], task: Task, path: PathLike, view: Optional[ViewLike],
+                  driven: Optional[Point], labels: bool, units: str) -> Path:
+    target = _target(path, suffixes)
+    units = _units(units)
+    if len(task) not in (4, 5):
+        task.center_point_curve()  # the core's typed error, with its fields
+    if view is None:
+        extent = default_curve_view(task)
+    elif isinstance(view, Grid):
+        extent = view.extent
+    else:
+        extent = _extent(view)
+    return _write(_burmester_drawing(task, extent, driven, labels), target, units)
+
+
+def burmester_plane_dxf(
+    task: Task,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    driven: Optional[Point] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`burmester_plane` to a ``.dxf`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    return _burmester_to((".dxf",), task, path, view, driven, labels, units)
+
+
+def burmester_plane_svg(
+    task: Task,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    driven: Optional[Point] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`burmester_plane` to an ``.svg`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    return _burmester_to((".svg",), task, path, view, driven, labels, units)

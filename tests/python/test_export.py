@@ -368,6 +368,69 @@ def test_circle_plane_dxf(tmp_path, task, f):
 
 
 # ---------------------------------------------------------------------------
+# Four and five poses
+
+
+@pytest.fixture
+def task5():
+    return burmester.taskfile.load(EXAMPLES / "five.toml").task()
+
+
+def test_five_poses_burmester_points_on_both_curves(tmp_path, task5):
+    out = tmp_path / "five.dxf"
+    view = (-4.0, 12.0, -6.0, 10.0)
+    export.burmester_plane_dxf(task5, out, view)
+    doc = ezdxf.readfile(out)
+    assert layers(doc) == {"VIEW", "CURVE_1234", "CURVE_1235", "BURMESTER_POINTS", "POLES", "POSES", "TEXT"}
+    # The Burmester points in view (the fourth, near (28.6, -40.2), is not).
+    inside = [c for c, _ in task5.burmester_points() if -4 <= c[0] <= 12 and -6 <= c[1] <= 10]
+    assert len(inside) == 3
+    assert close([c for c, _ in circles(doc, "BURMESTER_POINTS")], inside)
+    for curve, layer in zip(task5.burmester_curves(), ("CURVE_1234", "CURVE_1235")):
+        lines = polylines(doc, layer)
+        assert len(lines) == len(curve.polylines(*view))
+        for pts, _ in lines:
+            assert max(curve.distance(tuple(p)) for p in pts) < 1e-9
+        # Each Burmester point lies on both curves.
+        assert all(curve.distance(tuple(c)) < 1e-9 for c in inside)
+    assert close([c for c, _ in circles(doc, "POSES")], [p[:2] for p in task5.poses])
+    lo, hi = np.array(doc.header["$LIMMIN"]), np.array(doc.header["$LIMMAX"])
+    assert close(lo, [-4 - 0.48, -6 - 0.48]) and close(hi, [12 + 0.48, 10 + 0.48])  # the view, 3 % more
+
+
+def test_four_poses_curve_by_crank_order_and_branch_free_arcs(tmp_path, task5):
+    task4 = burmester.Task(task5.poses[:4])
+    out = tmp_path / "four.svg"
+    view = burmester.taskfile.default_curve_view(task4)
+    export.burmester_plane_svg(task4, out, driven=(4.0, 0.0))
+    groups, root = svg_groups(out)
+    curve = task4.center_point_curve()
+    arcs = task4.order_arcs(*view)
+    by_layer = {"CURVE_CCW": "counterclockwise", "CURVE_CW": "clockwise", "CURVE_ORDER_DEFECT": None}
+    for layer, direction in by_layer.items():
+        want = [pts for _, d, pts in arcs if d == direction]
+        got = [svg_rings(p.get("d"))[0] for p in groups[layer].iter(f"{SVG}path")] if want else []
+        assert len(got) == len(want) and all(close(a, b) for a, b in zip(got, want))
+    band = [svg_rings(p.get("d"))[0] for p in groups["BRANCH_FREE_ARCS"].iter(f"{SVG}path")]
+    assert band and all(curve.distance(tuple(v)) < 1e-9 for ring in band for v in ring)
+    qs = [q.center for q in task4.coincidence_points() if q.center is not None
+          and view[0] <= q.center[0] <= view[1] and view[2] <= q.center[1] <= view[3]]
+    got = [(float(c.get("cx")), -float(c.get("cy"))) for c in groups["COINCIDENCE_POINTS"].iter(f"{SVG}circle")]
+    assert qs and close(got, qs)
+    assert close([(float(c.get("cx")), -float(c.get("cy"))) for c in groups["DRIVEN_PIVOT"].iter(f"{SVG}circle")], [(4, 0)])
+
+
+def test_cli_map_of_five_poses_exports_the_burmester_points(tmp_path, capsys):
+    out = tmp_path / "five.dxf"
+    assert main(["map", str(EXAMPLES / "five.toml"), "-o", str(out)]) == 0
+    assert "Burmester points of" in capsys.readouterr().out
+    doc = ezdxf.readfile(out)
+    assert {"CURVE_1234", "CURVE_1235", "BURMESTER_POINTS"} <= layers(doc)
+    with pytest.raises(burmester.InvalidInputError, match="needs a task of"):
+        export.burmester_plane(burmester.taskfile.example().task(), tmp_path / "three.dxf")
+
+
+# ---------------------------------------------------------------------------
 # Bad input
 
 
@@ -462,7 +525,8 @@ def test_cli_linkage_writes_svg_with_travel(tmp_path, capsys):
 @pytest.mark.parametrize(
     "args, words",
     [
-        (["map", str(EXAMPLES / "five.toml"), "-o", "{tmp}/m.dxf"], ["three-pose planes", "5 poses", ".png"]),
+        (["map", str(EXAMPLES / "five.toml"), "--plane", "circle", "-o", "{tmp}/m.dxf"],
+         ["--plane circle is for three poses", "5 poses"]),
         (["linkage", "--frames", "5", "-o", "{tmp}/l.dxf"], ["--frames is for animations", "--travel N"]),
         (["linkage", "--fps", "5", "-o", "{tmp}/l.svg"], ["--fps is for animations"]),
         (["linkage", "--travel", "5", "-o", "{tmp}/l.png"], ["--travel is for CAD exports"]),
