@@ -774,7 +774,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
                    help="the driving crank's fixed pivot A0 (default: the best, as by 'burmester pivots')")
-    p.add_argument("-o", "--output", default="linkage.png", help="file to write; default: linkage.png")
+    p.add_argument("-o", "--output", default="linkage.png",
+                   help="file to write: a picture (.png, .pdf, ...), an animation (.gif, .mp4) or a CAD "
+                   "export (.dxf, .svg); default: linkage.png")
     p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
                    help="animation frames from the first pose to the last, 2 to 10000 (default: 60)")
     p.add_argument("--fps", type=_ranged(1, 240), default=None,

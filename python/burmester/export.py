@@ -24,64 +24,66 @@ written as they are, in the task's unit, which ``units=`` records (DXF
 ``$INSUNITS``, SVG ``width``/``height``); it does not scale anything.
 
 One layer (DXF) or ``<g id=...>`` group (SVG) per concept, with the same
-names in both, each in its own colour:
+names in both, each in its own colour (drawings: ``center`` and ``circle``,
+the planes of three poses, ``4``/``5`` four or five poses, ``linkage``):
 
-==================== =========== ==================================================
-layer                drawing     what
-==================== =========== ==================================================
-``VIEW``             planes      the view's rectangle
-``BRANCH_FREE``      planes      branch-free driving pivots (center plane) or
-                                 circle points (circle plane): region outlines,
-                                 closed polylines, outer boundaries and holes
-``BRANCH_FREE_FILL`` planes      the same regions filled (DXF: a solid HATCH
-                                 with holes; SVG: ``fill-rule="evenodd"``)
-``ACCEPTABLE``       center      branch-free pivots that also meet the limits
-                                 (``acceptable=``), outlines
-``ACCEPTABLE_FILL``  center      the same, filled
-``CONIC_k``          center      Filemon's line of pose k transformed, every
-                                 branch in view (two of k = 1, 2, 3)
-``POLES``            center,     the poles ``P12, P13, P23`` (and ``Pjk`` of four
-                     4, 5 poses  or five poses, the finite ones)
-``POLE_TRIANGLE``    center      the pole triangle
-``POLE_CIRCLE``      center      the circle through the poles (a line when
-                                 they are collinear)
-``DRIVEN_PIVOT``     center,     the driven crank's fixed pivot ``C0``
-                     4 poses
-``BEST_PIVOTS``      center      given pivots (``pivots=``), numbered
-``TRANSMISSION``     center      contours of a transmission angle (``transmission=``),
-                                 one polyline per piece, labelled in degrees
-``CURVE_CCW``        4 poses     the center-point curve where the crank meets the
-                                 poses in order counter-clockwise
-``CURVE_CW``         4 poses     ... clockwise
-``CURVE_ORDER_DEFECT`` 4 poses   ... with an order defect
-``COINCIDENCE_POINTS`` 4 poses   the points ``Q_jk`` where crank positions coincide
-``BRANCH_FREE_ARCS`` 4 poses     driving pivots branch-free with ``driven=``
-``CURVE_1234``       5 poses     the center-point curve of poses 1, 2, 3, 4
-``CURVE_1235``       5 poses     the center-point curve of poses 1, 2, 3, 5
-``BURMESTER_POINTS`` 5 poses     the Burmester points (center points)
-``LINE_k``           circle      the line through ``C1`` and ``C'k``, k = 1, 2, 3
-``IMAGE_POLES``      circle      the image poles ``P12, P13, P'23``
-``IMAGE_POLE_CIRCLE`` circle     the circle through them
-``FIXED_PIVOT_IMAGES`` circle    ``C'1 = C0, C'2, C'3``
-``DRIVEN_CIRCLE_POINT`` circle   ``C1``
-``GROUND``           linkage     the ground link ``A0 C0``
-``PIVOTS``           linkage     the fixed pivots ``A0`` and ``C0``
-``LINKAGE_k``        linkage     the linkage at pose k: crank ``A0 A``, coupler
-                                 triangle ``A B P``, rocker ``B C0``, and the
-                                 moving joints ``A`` and ``B``
-``POSES``            linkage,    each pose: its point and a flag along its angle
-                     4, 5 poses
-``COUPLER_CURVE``    linkage     the coupler point over the input's whole range
-                                 in the mode of pose 1: one closed polyline when
-                                 the input turns fully, else one per arc of
-                                 :attr:`burmester.FourBar.input_range`
-``COUPLER_PATH``     linkage     the coupler point over the travel, one polyline
-                                 per leg from pose k to pose k + 1 (its ends are
-                                 the poses); only for a feasible linkage
-``TRAVEL``           linkage     the linkage at ``travel_samples`` positions
-                                 over the travel (optional)
-``TEXT``             all         labels (``A0``, ``C0``, ``P12``, pose numbers)
-==================== =========== ==================================================
+========================= ============ ==================================================
+layer                     drawing      what
+========================= ============ ==================================================
+``VIEW``                  all planes   the view's rectangle
+``BRANCH_FREE``           planes of 3  branch-free driving pivots (center plane) or
+                                       circle points (circle plane): region outlines,
+                                       closed polylines, outer boundaries and holes
+``BRANCH_FREE_FILL``      planes of 3  the same regions filled (DXF: a solid HATCH with
+                                       holes; SVG: ``fill-rule="evenodd"``)
+``ACCEPTABLE``            center       branch-free pivots that also meet the limits
+                                       (``acceptable=``), outlines
+``ACCEPTABLE_FILL``       center       the same, filled
+``TRANSMISSION``          center       contours of a transmission angle
+                                       (``transmission=``), each level labelled in
+                                       degrees
+``CONIC_k``               center       Filemon's line of pose k transformed, every branch
+                                       in view (two of k = 1, 2, 3)
+``POLES``                 center, 4-5  the poles ``P12, P13, P23`` (the finite ``Pjk`` of
+                                       four or five poses)
+``POLE_TRIANGLE``         center       the pole triangle
+``POLE_CIRCLE``           center       the circle through the poles (a line when they are
+                                       collinear)
+``DRIVEN_PIVOT``          center, 4    the driven crank's fixed pivot ``C0``
+``BEST_PIVOTS``           center       given pivots (``pivots=``), numbered
+``LINE_k``                circle       the line through ``C1`` and ``C'k``, k = 1, 2, 3
+``IMAGE_POLES``           circle       the image poles ``P12, P13, P'23``
+``IMAGE_POLE_CIRCLE``     circle       the circle through them
+``FIXED_PIVOT_IMAGES``    circle       ``C'1 = C0, C'2, C'3``
+``DRIVEN_CIRCLE_POINT``   circle       ``C1``
+``CURVE_CCW``             4            the center-point curve where the crank meets the
+                                       poses in order counter-clockwise
+``CURVE_CW``              4            ... clockwise
+``CURVE_ORDER_DEFECT``    4            ... with an order defect
+``COINCIDENCE_POINTS``    4            the points ``Q_jk`` where crank positions j and k
+                                       coincide
+``BRANCH_FREE_ARCS``      4            driving pivots on the curve branch-free with
+                                       ``driven=``
+``CURVE_1234``            5            the center-point curve of poses 1, 2, 3, 4
+``CURVE_1235``            5            the center-point curve of poses 1, 2, 3, 5
+``BURMESTER_POINTS``      5            the Burmester points (center points)
+``GROUND``                linkage      the ground link ``A0 C0``
+``PIVOTS``                linkage      the fixed pivots ``A0`` and ``C0``
+``LINKAGE_k``             linkage      the linkage at pose k: crank ``A0 A``, coupler
+                                       triangle ``A B P``, rocker ``B C0``, and the
+                                       moving joints ``A`` and ``B``
+``POSES``                 linkage, 4-5 each pose: its point and a flag along its angle
+``COUPLER_CURVE``         linkage      the coupler point over the input's whole range in
+                                       the mode of pose 1: one closed polyline when the
+                                       input turns fully, else one per arc of
+                                       :attr:`burmester.FourBar.input_range`
+``COUPLER_PATH``          linkage      the coupler point over the travel, one polyline
+                                       per leg from pose k to pose k + 1 (its ends are
+                                       the poses); only for a feasible linkage
+``TRAVEL``                linkage      the linkage at ``travel_samples`` positions over
+                                       the travel (optional)
+``TEXT``                  all          labels (``A0``, ``C0``, ``P12``, pose numbers)
+========================= ============ ==================================================
 
 Markers (pivots, poles, poses) are circles centred on the exact point; their
 radius (0.6 % of the drawing's larger side) and the text height (1.8 %) only
@@ -174,6 +176,7 @@ DEFAULT_PATH_SAMPLES = 720
 _MARKER = 0.006  # marker radius, of the drawing's larger side
 _TEXT = 0.018  # text height, of the drawing's larger side
 _MARGIN = 0.03  # extent grown by this, of the drawing's larger side
+_STROKE = 0.0015  # SVG line width, of the drawing's larger side
 
 _MISSING = 'burmester.export needs {what}: pip install "burmester[plot]"'
 
@@ -773,6 +776,7 @@ def _write_svg(d: _Drawing, path: Path, units: str) -> None:
     """Write the drawing as SVG: a ``<g id=LAYER>`` per concept, y flipped, viewBox the extent."""
     (x0, x1, y0, y1), marker, text = d.sizes()
     w, h = x1 - x0, y1 - y0
+    size = max(w, h)
     if units == "unitless":
         f, unit = 800.0 / max(w, h), ""
     else:
@@ -796,26 +800,25 @@ def _write_svg(d: _Drawing, path: Path, units: str) -> None:
         elif name == "TEXT":
             style.update({"fill": spec.color, "font-family": "sans-serif", "font-size": _num(text)})
         else:
-            style.update({"fill": "none", "stroke": spec.color, "stroke-width": "1",
+            style.update({"fill": "none", "stroke": spec.color, "stroke-width": _num(_STROKE * size),
                           "stroke-linejoin": "round", "stroke-linecap": "round"})
         g = ET.SubElement(svg, "g", style)
-        outline = {"vector-effect": "non-scaling-stroke"}
         for r in d.regions:
             if name == r.layer + "_FILL":
                 _titled(g, "path", {"d": _path_data(r.rings, True)}, r.title)
             elif name == r.layer:
-                _titled(g, "path", {"d": _path_data(r.rings, True), **outline}, r.title)
+                _titled(g, "path", {"d": _path_data(r.rings, True)}, r.title)
         for p in d.polylines:
             if p.layer == name:
-                _titled(g, "path", {"d": _path_data([p.points], p.closed), **outline}, p.title)
+                _titled(g, "path", {"d": _path_data([p.points], p.closed)}, p.title)
         for c in d.circles:
             if c.layer == name:
                 _titled(g, "circle", {"cx": _num(c.center[0]), "cy": _num(-c.center[1]),
-                                      "r": _num(c.radius), **outline}, c.title)
+                                      "r": _num(c.radius)}, c.title)
         for m in d.markers:
             if m.layer == name:
                 _titled(g, "circle", {"cx": _num(m.point[0]), "cy": _num(-m.point[1]), "r": _num(marker),
-                                      "fill": spec.color, "fill-opacity": "0.35", **outline}, m.title)
+                                      "fill": spec.color, "fill-opacity": "0.35"}, m.title)
         if name == "TEXT":
             for t in d.labels:
                 el = ET.SubElement(g, "text", {"x": _num(t.point[0] + marker), "y": _num(-(t.point[1] + marker))})

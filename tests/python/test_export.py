@@ -482,6 +482,13 @@ def test_without_ezdxf_the_message_says_what_to_install(tmp_path, f, monkeypatch
     export.plane_svg(f, tmp_path / "a.svg", (-8, 8, -8, 8), grid=(20, 20))  # SVG needs no ezdxf
 
 
+def test_the_cli_offers_the_units_the_export_knows():
+    from burmester import cli
+
+    assert sorted(cli.UNIT_CHOICES) == sorted(export.UNITS)
+    assert export.DEFAULT_UNITS == "mm" and export.UNITS["mm"] == ezdxf.units.MM
+
+
 def test_importing_burmester_imports_no_drawing_library():
     code = ("import sys, burmester, burmester.export; "
             "print(sorted(m for m in ('ezdxf', 'matplotlib', 'contourpy') if m in sys.modules))")
