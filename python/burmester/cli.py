@@ -198,10 +198,22 @@ def _export_module(path: str) -> ModuleType:
 
 
 def _units(args: argparse.Namespace) -> str:
-    """``--units``: for CAD exports only (default mm)."""
+    """``--units``: for CAD exports only (default mm); ``--dpi`` refused for them."""
     if args.units is not None and not _is_cad(args.output):
         raise UsageError(f"--units is for CAD exports (.dxf, .svg), not {args.output}")
+    if args.dpi is not None and _is_cad(args.output):
+        raise UsageError(
+            f"--dpi is for pictures (.png, .pdf, ...); a CAD export ({args.output}) has exact coordinates"
+        )
     return "mm" if args.units is None else str(args.units)
+
+
+#: ``--dpi`` of ``map`` and ``linkage`` when not given.
+DEFAULT_DPI = 100
+
+
+def _picture_dpi(args: argparse.Namespace) -> int:
+    return DEFAULT_DPI if args.dpi is None else int(args.dpi)
 
 
 def _write_cad(write: Callable[..., Any], out: str, *args: Any, **kwargs: Any) -> None:
@@ -290,7 +302,7 @@ def cmd_map(args: argparse.Namespace) -> int:
         if smap is not None:
             summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
     if export is None:
-        _save(ax.figure, args.output, args.dpi)
+        _save(ax.figure, args.output, _picture_dpi(args))
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -326,7 +338,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
         listed = ", ".join(_fmt_point([round(c[0], 3) + 0.0, round(c[1], 3) + 0.0]) for c, _ in pts)
         summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
     if export is None:
-        _save(ax.figure, args.output, args.dpi)
+        _save(ax.figure, args.output, _picture_dpi(args))
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -541,7 +553,7 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         plt.close("all")
     else:
         ax = _plot_module().linkage(sfb, task=filemon.task)
-        _save(ax.figure, out, args.dpi)
+        _save(ax.figure, out, _picture_dpi(args))
     state = "branch-free" if sfb.branch_free else "has a branch defect"
     print(f"wrote {out}: four-bar with driving pivot A0 = {_fmt_point(pivot)}, "
           f"{sfb.fourbar.grashof}, {state}")
@@ -744,7 +756,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--design", action="store_true",
                    help="overlay the solution-space map: pivots acceptable under the task's limits "
                    "shaded darker, contours of the minimum transmission angle over the travel")
-    p.add_argument("--dpi", type=_dpi, default=100,
+    p.add_argument("--dpi", type=_dpi, default=None,
                    help=f"resolution of a picture, dots per inch, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--units", choices=UNIT_CHOICES, default=None,
                    help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
@@ -785,7 +797,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="CAD export: also draw the linkage at N positions over its travel, 2 to 10000")
     p.add_argument("--units", choices=UNIT_CHOICES, default=None,
                    help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
-    p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--dpi", type=_dpi, default=None,
+                   help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_linkage)
 

@@ -203,7 +203,8 @@ LAYERS: Dict[str, Layer] = {
     "TRAVEL": Layer(254, "#cccccc", "the linkage sampled over its travel"),
     "COUPLER_PATH": Layer(4, "#17becf", "coupler point over the travel, pose k to k + 1"),
     "GROUND": Layer(8, "#666666", "ground link A0 C0"),
-    **{f"CONIC_{k}": Layer(a, c, f"Filemon line of pose {k} transformed") for k, (a, c) in _POSE_COLORS.items() if k <= 3},
+    **{f"CONIC_{k}": Layer(a, c, f"Filemon line of pose {k} transformed")
+       for k, (a, c) in _POSE_COLORS.items() if k <= 3},
     **{f"LINE_{k}": Layer(a, c, f"line through C1 and C'{k}") for k, (a, c) in _POSE_COLORS.items() if k <= 3},
     **{f"LINKAGE_{k}": Layer(a, c, f"the linkage at pose {k}") for k, (a, c) in _POSE_COLORS.items()},
     "BRANCH_FREE_ARCS": Layer(71, "#a1d99b", "driving pivots on the curve, branch-free with C0"),
@@ -559,7 +560,9 @@ def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_sampl
     for k, (theta2, m) in enumerate(zip(sfb.input_angles, sfb.modes), start=1):
         _links(d, f"LINKAGE_{k}", sfb, theta2, m or "open", f"pose {k} ({m or 'toggle'})", True)
 
-    poses = task.poses if task is not None else [sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)]
+    poses = task.poses if task is not None else [
+        sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)
+    ]
     _poses(d, poses, 0.3 * min(fb.lengths), labels)
     return d
 
@@ -677,9 +680,9 @@ def _burmester_drawing(task: Task, extent: Extent, driven: Optional[Point], labe
                 j, k = q.pair
                 d.marker("COINCIDENCE_POINTS", q.center, f"Q{j}{k}", f"Q{j}{k}" if labels else None)
     else:
-        for curve, layer, poses in zip(task.burmester_curves(), ("CURVE_1234", "CURVE_1235"), ("1, 2, 3, 4", "1, 2, 3, 5")):
+        for curve, which in zip(task.burmester_curves(), ("1234", "1235")):
             for pts in curve.polylines(*extent):
-                d.polyline(layer, pts, f"center-point curve of poses {poses}")
+                d.polyline(f"CURVE_{which}", pts, f"center-point curve of poses {', '.join(which)}")
         for k, (center, _) in enumerate(task.burmester_points(), start=1):
             d.marker("BURMESTER_POINTS", center, f"Burmester point B{k}", f"B{k}" if labels else None)
     for pole in task.poles:

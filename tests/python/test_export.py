@@ -240,7 +240,8 @@ def check_boundary(rings, grid, mask):
     xs, ys = grid.cell_centers()
     for ring in rings:
         for x, y in ring:
-            if min(abs(x - grid.xmin), abs(x - grid.xmax)) < 1e-12 or min(abs(y - grid.ymin), abs(y - grid.ymax)) < 1e-12:
+            on_edge = min(abs(x - grid.xmin), abs(x - grid.xmax), abs(y - grid.ymin), abs(y - grid.ymax)) < 1e-12
+            if on_edge:
                 continue
             near = mask[np.ix_(np.abs(ys - y) <= dy * 1.0001, np.abs(xs - x) <= dx * 1.0001)]
             assert near.any() and not near.all(), (x, y)
@@ -417,7 +418,8 @@ def test_four_poses_curve_by_crank_order_and_branch_free_arcs(tmp_path, task5):
           and view[0] <= q.center[0] <= view[1] and view[2] <= q.center[1] <= view[3]]
     got = [(float(c.get("cx")), -float(c.get("cy"))) for c in groups["COINCIDENCE_POINTS"].iter(f"{SVG}circle")]
     assert qs and close(got, qs)
-    assert close([(float(c.get("cx")), -float(c.get("cy"))) for c in groups["DRIVEN_PIVOT"].iter(f"{SVG}circle")], [(4, 0)])
+    pivot = [(float(c.get("cx")), -float(c.get("cy"))) for c in groups["DRIVEN_PIVOT"].iter(f"{SVG}circle")]
+    assert close(pivot, [(4, 0)])
 
 
 def test_cli_map_of_five_poses_exports_the_burmester_points(tmp_path, capsys):
@@ -538,6 +540,8 @@ def test_cli_linkage_writes_svg_with_travel(tmp_path, capsys):
         (["linkage", "--fps", "5", "-o", "{tmp}/l.svg"], ["--fps is for animations"]),
         (["linkage", "--travel", "5", "-o", "{tmp}/l.png"], ["--travel is for CAD exports"]),
         (["map", "--units", "in", "-o", "{tmp}/m.png"], ["--units is for CAD exports"]),
+        (["map", "--dpi", "300", "-o", "{tmp}/m.svg"], ["--dpi is for pictures"]),
+        (["linkage", "--dpi", "300", "-o", "{tmp}/l.dxf"], ["--dpi is for pictures"]),
         (["map", "--units", "yard", "-o", "{tmp}/m.dxf"], ["invalid choice: 'yard'"]),
         (["linkage", "--pivot", "0", "0", "--travel", "3", "-o", "{tmp}/l.dxf"], ["no travel to sample"]),
     ],
