@@ -16,7 +16,7 @@ Commands::
 Without a task file, the commands use the built-in example. Without any
 arguments, ``burmester`` prints this help. Bad input exits with status 2 and
 a one-line message saying what to change; a missing optional dependency
-(matplotlib) exits with status 1. No command replaces an existing file
+(matplotlib, ezdxf) exits with status 1. No command replaces an existing file
 unless given ``--force``.
 """
 
@@ -862,7 +862,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     """Entry point of ``python -m burmester`` and the ``burmester`` script.
 
     Returns the exit status: 0 on success, 2 for bad input (with a one-line
-    message on stderr saying what to change), 1 when matplotlib is missing.
+    message on stderr saying what to change), 1 when matplotlib or ezdxf is missing.
     """
     parser = build_parser()
     args_list = list(sys.argv[1:] if argv is None else argv)
