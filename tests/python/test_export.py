@@ -90,6 +90,12 @@ def all_points(doc):
     return np.vstack(pts)
 
 
+def check_valid(doc):
+    """ezdxf's audit finds nothing to fix."""
+    auditor = doc.audit()
+    assert not auditor.has_errors and not auditor.has_fixes, [str(e) for e in auditor.errors + auditor.fixes]
+
+
 def check_extent(doc):
     """``$LIMMIN/$LIMMAX`` = ``$EXTMIN/$EXTMAX``, around everything drawn, by a small margin."""
     lo, hi = np.array(doc.header["$LIMMIN"]), np.array(doc.header["$LIMMAX"])
@@ -154,6 +160,7 @@ def test_linkage_dxf_holds_the_cores_linkage_at_each_pose(tmp_path, task, sfb):
         assert close(flag[0], pose[:2]) and math.isclose(math.atan2(d[1], d[0]), pose[2], abs_tol=1e-9)
     assert texts(doc) == sorted(["A0", "C0", "1", "2", "3"])
     check_extent(doc)
+    check_valid(doc)
 
 
 def test_linkage_dxf_coupler_curve_path_and_travel(tmp_path, task, sfb):
@@ -289,6 +296,7 @@ def test_plane_dxf_regions_conics_and_poles(tmp_path, task, f):
     assert want.any() and not want.all()
     assert (inside_even_odd(rings, pts[far]) == want).all()
     check_extent(doc)
+    check_valid(doc)
 
 
 def test_plane_svg_agrees_with_the_model(tmp_path, task, f):
@@ -322,6 +330,7 @@ def test_plane_with_a_solution_maps_overlays(tmp_path, f):
                      transmission=np.degrees(smap.min_transmission_rad), transmission_levels=(35, 60))
     doc = ezdxf.readfile(out)
     assert {"ACCEPTABLE", "ACCEPTABLE_FILL", "BEST_PIVOTS", "TRANSMISSION"} <= layers(doc)
+    check_valid(doc)
     # free= gave the grid: 120 x 120 over the default view of the example.
     g = Grid(*burmester.taskfile.default_view(f).extent, 120, 120)
     check_boundary(region_rings(doc, "ACCEPTABLE"), g, smap.branch_free & smap.acceptable)
@@ -348,6 +357,7 @@ def test_circle_plane_dxf(tmp_path, task, f):
     doc = ezdxf.readfile(out)
     assert {"LINE_1", "LINE_2", "LINE_3", "BRANCH_FREE", "BRANCH_FREE_FILL", "IMAGE_POLES",
             "IMAGE_POLE_CIRCLE", "FIXED_PIVOT_IMAGES", "DRIVEN_CIRCLE_POINT"} <= layers(doc)
+    check_valid(doc)
     c1 = np.array(f.driven_circle)
     assert close(circles(doc, "DRIVEN_CIRCLE_POINT")[0][0], c1)
     assert close([c for c, _ in circles(doc, "IMAGE_POLES")], task.image_poles())
@@ -383,6 +393,7 @@ def test_five_poses_burmester_points_on_both_curves(tmp_path, task5):
     export.burmester_plane_dxf(task5, out, view)
     doc = ezdxf.readfile(out)
     assert layers(doc) == {"VIEW", "CURVE_1234", "CURVE_1235", "BURMESTER_POINTS", "POLES", "POSES", "TEXT"}
+    check_valid(doc)
     # The Burmester points in view (the fourth, near (28.6, -40.2), is not).
     inside = [c for c, _ in task5.burmester_points() if -4 <= c[0] <= 12 and -6 <= c[1] <= 10]
     assert len(inside) == 3
