@@ -6,6 +6,8 @@ Commands::
     burmester map five.toml -o five.png       # four or five poses: the Burmester curve or points
     burmester pivots [TASK.toml] --top 5      # the best driving pivots, as a table (--json)
     burmester linkage [TASK.toml] -o l.gif    # a four-bar at the poses (.png) or animated (.gif/.mp4)
+    burmester map -o plane.dxf                # CAD export (.dxf or .svg): a layer per concept
+    burmester linkage -o linkage.dxf --travel 12
     burmester atlas [TASK.toml] -o atlas.png  # both pivots at once: the best driving pivot per driven center
     burmester batch A.toml B.toml --top 5     # each task's best pivots, one JSON line per file
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
@@ -14,7 +16,7 @@ Commands::
 Without a task file, the commands use the built-in example. Without any
 arguments, ``burmester`` prints this help. Bad input exits with status 2 and
 a one-line message saying what to change; a missing optional dependency
-(matplotlib) exits with status 1. No command replaces an existing file
+(matplotlib, ezdxf) exits with status 1. No command replaces an existing file
 unless given ``--force``.
 """
 
@@ -169,6 +171,57 @@ def _save(fig: Any, path: str, dpi: int) -> None:
 PICTURE_TYPES = (".png", ".svg", ".pdf", ".jpg", ".jpeg", ".tif", ".tiff", ".eps", ".ps")
 #: File types ``linkage`` writes animations in.
 ANIMATION_TYPES = (".gif", ".mp4")
+#: File types ``map`` and ``linkage`` write CAD exports in (:mod:`burmester.export`),
+#: not matplotlib pictures: ``.svg`` is one of them.
+CAD_TYPES = (".dxf", ".svg")
+
+
+def _types(*groups: Sequence[str]) -> Tuple[str, ...]:
+    """The file types of ``groups``, each once, in order."""
+    return tuple(dict.fromkeys(t for g in groups for t in g))
+
+
+def _is_cad(path: str) -> bool:
+    return Path(path).suffix.lower() in CAD_TYPES
+
+
+def _export_module(path: str) -> ModuleType:
+    """``burmester.export``, with ezdxf checked for a ``.dxf`` before any work."""
+    import burmester.export as export
+
+    if Path(path).suffix.lower() == ".dxf":
+        try:
+            import ezdxf  # noqa: F401
+        except ImportError:
+            raise ImportError('writing .dxf needs ezdxf: pip install "burmester[plot]"') from None
+    return export
+
+
+def _units(args: argparse.Namespace) -> str:
+    """``--units``: for CAD exports only (default mm); ``--dpi`` refused for them."""
+    if args.units is not None and not _is_cad(args.output):
+        raise UsageError(f"--units is for CAD exports (.dxf, .svg), not {args.output}")
+    if args.dpi is not None and _is_cad(args.output):
+        raise UsageError(
+            f"--dpi is for pictures (.png, .pdf, ...); a CAD export ({args.output}) has exact coordinates"
+        )
+    return "mm" if args.units is None else str(args.units)
+
+
+#: ``--dpi`` of ``map`` and ``linkage`` when not given.
+DEFAULT_DPI = 100
+
+
+def _picture_dpi(args: argparse.Namespace) -> int:
+    return DEFAULT_DPI if args.dpi is None else int(args.dpi)
+
+
+def _write_cad(write: Callable[..., Any], out: str, *args: Any, **kwargs: Any) -> None:
+    """Call an export function, turning a file system error into a UsageError."""
+    try:
+        write(*args, **kwargs)
+    except OSError as e:
+        raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
 
 
 def _output(path: str, types: Sequence[str], force: bool) -> str:
@@ -202,14 +255,21 @@ def _fmt_point(p: Sequence[float]) -> str:
 def cmd_map(args: argparse.Namespace) -> int:
     """``burmester map``: draw the center-point (or circle-point) plane."""
     spec = _with_grid(_load(args.task), args.grid)  # the task file's errors first
-    _output(args.output, PICTURE_TYPES, args.force)
-    plot = _plot_module()
+    _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
+    units = _units(args)
+    cad = _is_cad(args.output)
+    export = _export_module(args.output) if cad else None
+    plot = None if cad else _plot_module()
     if spec.driven_center is None:
-        return _map_many(args, spec, plot)
+        return _map_many(args, spec, plot, export, units)
     filemon = spec.filemon()
     view = spec.view
     if args.plane == "circle":
-        ax = plot.circle_plane(filemon)
+        if export is not None:
+            _write_cad(export.plane, args.output, filemon, args.output, plane="circle", units=units)
+        else:
+            assert plot is not None
+            ax = plot.circle_plane(filemon)
         summary = f"circle-point plane of {spec.source}"
     else:
         smap = _solution_map(spec, filemon) if args.design or args.pivots > 0 else None
@@ -227,23 +287,31 @@ def cmd_map(args: argparse.Namespace) -> int:
         if args.pivots > 0 and smap is not None:
             ranked, _ = pv.rank(smap, args.pivots, pv.default_spacing(view))
             marks = [p.center for p in ranked]
-        ax = plot.center_plane(
-            filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission
-        )
+        if export is not None:
+            _write_cad(export.plane, args.output, filemon, args.output, view, free=free, pivots=marks,
+                       acceptable=acceptable, transmission=transmission, units=units)
+        else:
+            assert plot is not None
+            ax = plot.center_plane(
+                filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission
+            )
         summary = (
             f"center-point plane of {spec.source}: {100 * free.mean():.1f}% of the "
             f"{view.nx} x {view.ny} grid is branch-free"
         )
         if smap is not None:
             summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
-    _save(ax.figure, args.output, args.dpi)
+    if export is None:
+        _save(ax.figure, args.output, _picture_dpi(args))
     print(f"wrote {args.output}: {summary}")
     return 0
 
 
-def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: ModuleType) -> int:
+def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleType],
+              export: Optional[ModuleType], units: str) -> int:
     """``burmester map`` of four or five poses: the center-point curve
-    coloured by crank order, or the Burmester points on their curves."""
+    coloured by crank order, or the Burmester points on their curves (a
+    picture with ``plot``, a CAD export with ``export``)."""
     n = len(spec.poses)
     for flag, given in (("--plane circle", args.plane == "circle"), ("--design", args.design),
                         ("--pivots", args.pivots > 0)):
@@ -252,7 +320,11 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: ModuleType) -> int
                 f"{flag} is for three poses (Filemon's construction); {spec.source} has {n} poses"
             )
     task = spec.task()
-    ax = plot.burmester_plane(task, spec.view.extent)
+    if export is not None:
+        _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent, units=units)
+    else:
+        assert plot is not None
+        ax = plot.burmester_plane(task, spec.view.extent)
     if n == 4:
         arcs = task.order_arcs(*spec.view.extent)
         ordered = sum(1 for _, d, _ in arcs if d is not None)
@@ -265,7 +337,8 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: ModuleType) -> int
         # Rounded first, so that a coordinate of rounding size reads 0.000, not -0.000.
         listed = ", ".join(_fmt_point([round(c[0], 3) + 0.0, round(c[1], 3) + 0.0]) for c, _ in pts)
         summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
-    _save(ax.figure, args.output, args.dpi)
+    if export is None:
+        _save(ax.figure, args.output, _picture_dpi(args))
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -448,7 +521,18 @@ def cmd_batch(args: argparse.Namespace) -> int:
 def cmd_linkage(args: argparse.Namespace) -> int:
     """``burmester linkage``: draw or animate the four-bar of one driving pivot."""
     spec = _load(args.task)  # the task file's errors first
-    _output(args.output, PICTURE_TYPES + ANIMATION_TYPES, args.force)
+    _output(args.output, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+    units = _units(args)
+    out: str = args.output
+    cad = _is_cad(out)
+    animated = out.lower().endswith(ANIMATION_TYPES)
+    for flag, given in (("--frames", args.frames), ("--fps", args.fps)):
+        if given is not None and not animated:
+            extra = "; for a CAD export, --travel N draws the linkage at N positions" if cad else ""
+            raise UsageError(f"{flag} is for animations (.gif, .mp4), not {out}{extra}")
+    if args.travel is not None and not cad:
+        raise UsageError(f"--travel is for CAD exports (.dxf, .svg), not {out}; animate with -o linkage.gif")
+    export = _export_module(out) if cad else None
     filemon = spec.filemon()
     if args.pivot is None:
         best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view))
@@ -457,12 +541,15 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         pivot = best[0].center
     else:
         pivot = (args.pivot[0], args.pivot[1])
-    plot = _plot_module()
     sfb = filemon.four_bar(pivot)
-    out: str = args.output
-    if out.lower().endswith((".gif", ".mp4")):
+    if export is not None:
+        _write_cad(export.linkage, out, sfb, out, task=filemon.task, travel_samples=args.travel or 0, units=units)
+    elif animated:
+        plot = _plot_module()
+        frames = 60 if args.frames is None else args.frames
+        fps = 20 if args.fps is None else args.fps
         try:
-            anim = plot.animate(sfb, out, task=filemon.task, frames=args.frames, fps=args.fps)
+            anim = plot.animate(sfb, out, task=filemon.task, frames=frames, fps=fps)
         except RuntimeError as e:
             raise UsageError(str(e)) from None
         except OSError as e:
@@ -472,8 +559,8 @@ def cmd_linkage(args: argparse.Namespace) -> int:
 
         plt.close("all")
     else:
-        ax = plot.linkage(sfb, task=filemon.task)
-        _save(ax.figure, out, args.dpi)
+        ax = _plot_module().linkage(sfb, task=filemon.task)
+        _save(ax.figure, out, _picture_dpi(args))
     state = "branch-free" if sfb.branch_free else "has a branch defect"
     print(f"wrote {out}: four-bar with driving pivot A0 = {_fmt_point(pivot)}, "
           f"{sfb.fourbar.grashof}, {state}")
@@ -602,6 +689,10 @@ def _ranged(lo: int, hi: int) -> Callable[[str], int]:
     return parse
 
 
+#: ``--units`` of a CAD export (:data:`burmester.export.UNITS`, kept here so
+#: that ``burmester --help`` does not import the export module).
+UNIT_CHOICES = ("mm", "cm", "m", "in", "ft", "unitless")
+
 #: The range of ``--dpi`` (matplotlib cannot draw much past 2^16 pixels a side).
 MIN_DPI, MAX_DPI = 10, 2400
 _dpi = _ranged(MIN_DPI, MAX_DPI)
@@ -640,6 +731,7 @@ def build_parser() -> argparse.ArgumentParser:
             "  burmester map task.toml -o map.png  center-point plane of your task\n"
             "  burmester pivots task.toml --top 5  the best acceptable driving pivots\n"
             "  burmester linkage task.toml -o linkage.gif\n"
+            "  burmester map task.toml -o plane.dxf   CAD export (.dxf, .svg), a layer per concept\n"
             "  burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40\n"
             "Without arguments, burmester prints this help."
         ),
@@ -657,7 +749,9 @@ def build_parser() -> argparse.ArgumentParser:
                        "order, with the poles and the points Q_jk; five poses, the Burmester points "
                        "on their two center-point curves.")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
-    p.add_argument("-o", "--output", default="map.png", help="picture to write (.png, .svg, .pdf); default: map.png")
+    p.add_argument("-o", "--output", default="map.png",
+                   help="picture to write (.png, .pdf, ...; matplotlib), or CAD export (.dxf, .svg: a layer "
+                   "or group per concept, exact coordinates); default: map.png")
     p.add_argument("--plane", choices=("center", "circle"), default="center",
                    help="center: center-point plane (Fig. 10/12); circle: circle-point plane (Fig. 3/11)")
     p.add_argument("--method", choices=("conic", "direct", "simulate"), default="conic",
@@ -669,7 +763,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--design", action="store_true",
                    help="overlay the solution-space map: pivots acceptable under the task's limits "
                    "shaded darker, contours of the minimum transmission angle over the travel")
-    p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, dots per inch, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--dpi", type=_dpi, default=None,
+                   help=f"resolution of a picture, dots per inch, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
+                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_map)
 
@@ -694,17 +791,25 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_pivots)
 
     p = sub.add_parser("linkage", help="draw or animate the four-bar of a driving pivot",
-                       description="Draw the four-bar at the three poses (.png, .svg, .pdf), or "
-                       "animate it driven through them (.gif, or .mp4 with ffmpeg).")
+                       description="Draw the four-bar at the three poses (.png, .pdf, ...), "
+                       "animate it driven through them (.gif, or .mp4 with ffmpeg), or export it to CAD "
+                       "(.dxf, .svg: a layer or group per concept, exact coordinates).")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
     p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
                    help="the driving crank's fixed pivot A0 (default: the best, as by 'burmester pivots')")
-    p.add_argument("-o", "--output", default="linkage.png", help="file to write; default: linkage.png")
-    p.add_argument("--frames", type=_ranged(2, 10_000), default=60,
+    p.add_argument("-o", "--output", default="linkage.png",
+                   help="file to write: a picture (.png, .pdf, ...), an animation (.gif, .mp4) or a CAD "
+                   "export (.dxf, .svg); default: linkage.png")
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
                    help="animation frames from the first pose to the last, 2 to 10000 (default: 60)")
-    p.add_argument("--fps", type=_ranged(1, 240), default=20,
+    p.add_argument("--fps", type=_ranged(1, 240), default=None,
                    help="animation frames per second, 1 to 240 (default: 20)")
-    p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--travel", type=_ranged(2, 10_000), default=None, metavar="N",
+                   help="CAD export: also draw the linkage at N positions over its travel, 2 to 10000")
+    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
+                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
+    p.add_argument("--dpi", type=_dpi, default=None,
+                   help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_linkage)
 
@@ -713,8 +818,8 @@ def build_parser() -> argparse.ArgumentParser:
                                    "driving centers reduced: shaded by the best achievable transmission angle, "
                                    "the count of acceptable driving pivots as contours, the best pair drawn.")
     p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
-    p.add_argument("-o", "--output", default=None, help="picture to write (.png, .svg, .pdf); default: atlas.png "
-                   "(none with --json unless given)")
+    p.add_argument("-o", "--output", default=None, help="picture to write (.png, .svg, .pdf; matplotlib, "
+                   "an image of the atlas, not a CAD export); default: atlas.png (none with --json unless given)")
     p.add_argument("--json", action="store_true", help="print the best pairs as JSON")
     p.add_argument("--top", type=_positive_int, default=5, help="how many pairs in the JSON (default: 5)")
     p.add_argument("--scheduler", metavar="ADDRESS", default=None,
@@ -770,7 +875,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     """Entry point of ``python -m burmester`` and the ``burmester`` script.
 
     Returns the exit status: 0 on success, 2 for bad input (with a one-line
-    message on stderr saying what to change), 1 when matplotlib is missing.
+    message on stderr saying what to change), 1 when matplotlib or ezdxf is missing.
     """
     parser = build_parser()
     args_list = list(sys.argv[1:] if argv is None else argv)

@@ -51,7 +51,7 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
 
 import burmester
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
-from burmester.taskfile import DEFAULT_GRID, default_curve_view, default_view, grid_for
+from burmester.taskfile import DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for
 
 if TYPE_CHECKING:
     from burmester._burmester import Method, Mode
@@ -551,15 +551,6 @@ def filemon_wedges(filemon: Filemon, radius: float) -> Tuple[List[npt.NDArray[np
     return free, defective
 
 
-def _default_circle_extent(filemon: Filemon) -> Extent:
-    pts: List[Point] = [filemon.driven_circle, *filemon.fixed_pivot_images, *filemon.task.image_poles()]
-    xs = [p[0] for p in pts]
-    ys = [p[1] for p in pts]
-    cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
-    half = max(max(xs) - min(xs), max(ys) - min(ys), filemon.task.scale) * 0.75
-    return (cx - half, cx + half, cy - half, cy + half)
-
-
 def circle_plane(
     filemon: Filemon,
     view: Optional[ViewLike] = None,
@@ -590,7 +581,7 @@ def circle_plane(
     Returns:
         The Axes.
     """
-    extent = _default_circle_extent(filemon) if view is None else _as_grid(filemon, view, None).extent
+    extent = default_circle_view(filemon) if view is None else _as_grid(filemon, view, None).extent
     ax = _new_axes(ax)
     c1 = filemon.driven_circle
     corners = [(x, y) for x in extent[:2] for y in extent[2:]]

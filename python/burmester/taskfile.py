@@ -182,6 +182,18 @@ def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> Grid:
     return Grid(cx - half, cx + half, cy - half, cy + half, grid, grid)
 
 
+def default_circle_view(filemon: Filemon) -> Tuple[float, float, float, float]:
+    """A square ``(xmin, xmax, ymin, ymax)`` around the driven crank's moving
+    pivot ``C1``, the fixed pivot's images ``C'k`` and the image poles: the
+    default view of the circle-point plane (a picture or a CAD export)."""
+    pts: List[Point] = [filemon.driven_circle, *filemon.fixed_pivot_images, *filemon.task.image_poles()]
+    xs = [p[0] for p in pts]
+    ys = [p[1] for p in pts]
+    cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    half = max(max(xs) - min(xs), max(ys) - min(ys), filemon.task.scale) * 0.75
+    return (cx - half, cx + half, cy - half, cy + half)
+
+
 # ---------------------------------------------------------------------------
 # Parsing
 

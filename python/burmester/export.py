@@ -1,0 +1,1149 @@
+"""CAD export: a synthesized four-bar, or a center-point or circle-point
+plane, to DXF (with ezdxf) and to SVG (with the standard library).
+
+- :func:`linkage_dxf`, :func:`linkage_svg` (or :func:`linkage`, by the
+  file's suffix): the fixed pivots, the ground link, the linkage at each
+  pose, the poses, the coupler curve, the coupler-point path over the
+  travel and, optionally, the linkage sampled over the travel.
+- :func:`burmester_plane_dxf`, :func:`burmester_plane_svg` (or
+  :func:`burmester_plane`): four or five poses, as
+  :func:`burmester.plot.burmester_plane` draws them: the center-point curve
+  by crank order with the points ``Q_jk`` (and, given a driven pivot, the
+  branch-free driving pivots on it), or the Burmester points on their two
+  curves; the poles and the poses.
+- :func:`plane_dxf`, :func:`plane_svg` (or :func:`plane`): the driving
+  crank's center-point plane (branch-free regions as polygons with holes,
+  the transformed Filemon conics, the poles, the pole triangle and circle,
+  ``C0``, and optionally the acceptable region of a solution map and the
+  best pivots), or its circle-point plane (Filemon's lines and branch-free
+  double wedge, the image poles and their circle, ``C1`` and ``C'k``).
+
+Every coordinate comes from the core (joints, coupler paths, travel, conic
+polylines, poles, sectors); nothing is computed again here. Lengths are
+written as they are, in the task's unit, which ``units=`` records (DXF
+``$INSUNITS``, SVG ``width``/``height``); it does not scale anything.
+
+One layer (DXF) or ``<g id=...>`` group (SVG) per concept, with the same
+names in both, each in its own colour (drawings: ``center`` and ``circle``,
+the planes of three poses, ``4``/``5`` four or five poses, ``linkage``):
+
+========================= ============ ==================================================
+layer                     drawing      what
+========================= ============ ==================================================
+``VIEW``                  all planes   the view's rectangle
+``BRANCH_FREE``           planes of 3  branch-free driving pivots (center plane) or
+                                       circle points (circle plane): region outlines,
+                                       closed polylines, outer boundaries and holes
+``BRANCH_FREE_FILL``      planes of 3  the same regions filled (DXF: a solid HATCH with
+                                       holes; SVG: ``fill-rule="evenodd"``)
+``ACCEPTABLE``            center       branch-free pivots that also meet the limits
+                                       (``acceptable=``), outlines
+``ACCEPTABLE_FILL``       center       the same, filled
+``TRANSMISSION``          center       contours of a transmission angle
+                                       (``transmission=``), each level labelled in
+                                       degrees
+``CONIC_k``               center       Filemon's line of pose k transformed, every branch
+                                       in view (two of k = 1, 2, 3)
+``POLES``                 center, 4-5  the poles ``P12, P13, P23`` (the finite ``Pjk`` of
+                                       four or five poses)
+``POLE_TRIANGLE``         center       the pole triangle
+``POLE_CIRCLE``           center       the circle through the poles (a line when they are
+                                       collinear)
+``DRIVEN_PIVOT``          center, 4    the driven crank's fixed pivot ``C0``
+``BEST_PIVOTS``           center       given pivots (``pivots=``), numbered
+``LINE_k``                circle       the line through ``C1`` and ``C'k``, k = 1, 2, 3
+``IMAGE_POLES``           circle       the image poles ``P12, P13, P'23``
+``IMAGE_POLE_CIRCLE``     circle       the circle through them
+``FIXED_PIVOT_IMAGES``    circle       ``C'1 = C0, C'2, C'3``
+``DRIVEN_CIRCLE_POINT``   circle       ``C1``
+``CURVE_CCW``             4            the center-point curve where the crank meets the
+                                       poses in order counter-clockwise
+``CURVE_CW``              4            ... clockwise
+``CURVE_ORDER_DEFECT``    4            ... with an order defect
+``COINCIDENCE_POINTS``    4            the points ``Q_jk`` where crank positions j and k
+                                       coincide
+``BRANCH_FREE_ARCS``      4            driving pivots on the curve branch-free with
+                                       ``driven=``
+``CURVE_1234``            5            the center-point curve of poses 1, 2, 3, 4
+``CURVE_1235``            5            the center-point curve of poses 1, 2, 3, 5
+``BURMESTER_POINTS``      5            the Burmester points (center points)
+``GROUND``                linkage      the ground link ``A0 C0``
+``PIVOTS``                linkage      the fixed pivots ``A0`` and ``C0``
+``LINKAGE_k``             linkage      the linkage at pose k: crank ``A0 A``, coupler
+                                       triangle ``A B P``, rocker ``B C0``, and the
+                                       moving joints ``A`` and ``B``
+``POSES``                 linkage, 4-5 each pose: its point and a flag along its angle
+``COUPLER_CURVE``         linkage      the coupler point over the input's whole range in
+                                       the mode of pose 1: one closed polyline when the
+                                       input turns fully, else one per arc of
+                                       :attr:`burmester.FourBar.input_range`
+``COUPLER_PATH``          linkage      the coupler point over the travel, one polyline
+                                       per leg from pose k to pose k + 1 (its ends are
+                                       the poses); only for a feasible linkage
+``TRAVEL``                linkage      the linkage at ``travel_samples`` positions over
+                                       the travel (optional)
+``TEXT``                  all          labels (``A0``, ``C0``, ``P12``, pose numbers)
+========================= ============ ==================================================
+
+Markers (pivots, poles, poses) are circles centred on the exact point; their
+radius (0.6 % of the drawing's larger side) and the text height (1.8 %) only
+make them visible. The drawing's extent is, for a linkage, the bounding box
+of everything drawn and, for a plane, its view (as in the pictures: curves
+and regions are clipped to it, points outside it are left out, a pole
+circle is drawn whole), grown by 3 % of its larger side for the markers and
+labels; DXF ``$LIMMIN``/``$LIMMAX`` and ``$EXTMIN``/``$EXTMAX`` and the
+SVG ``viewBox`` are that box.
+
+**SVG coordinates.** The picture is upright: a model point ``(x, y)`` is
+written at SVG user coordinates ``(x, -y)`` (SVG's y axis points down), and
+the ``viewBox`` is ``xmin -ymax width height``. Paths are ``M``/``L``
+commands with absolute coordinates in full precision; ``<title>`` elements
+name the things drawn.
+
+**Accuracy.** The region polygons are contours of the core's branch map
+(:meth:`burmester.Filemon.branch_map`, or the map given) at its samples,
+traced with contourpy midway between a branch-free sample and a defective
+one: accurate to a grid cell. The conics, lines, poles, pivots and the
+linkage are exact (the core's polylines within their chord tolerance).
+
+Needs ezdxf for DXF and contourpy for the regions (both in
+``pip install "burmester[plot]"``); ``import burmester`` imports neither.
+"""
+
+from __future__ import annotations
+
+import math
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Dict, Iterator, List, Literal, NamedTuple, Optional, Sequence, Tuple, Union, cast
+
+import numpy as np
+import numpy.typing as npt
+
+import burmester
+from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
+from burmester.taskfile import DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for
+
+if TYPE_CHECKING:
+    from burmester._burmester import Method, Mode
+
+__all__ = [
+    "DEFAULT_PATH_SAMPLES",
+    "DEFAULT_TRANSMISSION_LEVELS",
+    "DEFAULT_UNITS",
+    "LAYERS",
+    "MAX_SAMPLES",
+    "UNITS",
+    "Layer",
+    "burmester_plane",
+    "burmester_plane_dxf",
+    "burmester_plane_svg",
+    "linkage",
+    "linkage_dxf",
+    "linkage_svg",
+    "plane",
+    "plane_dxf",
+    "plane_svg",
+]
+
+Point = Tuple[float, float]
+Extent = Tuple[float, float, float, float]
+Array = npt.NDArray[np.float64]
+PathLike = Union[str, Path]
+#: A view: a :class:`burmester.Grid`, or ``(xmin, xmax, ymin, ymax)``.
+ViewLike = Union[Grid, Sequence[float]]
+Plane = Literal["center", "circle"]
+
+#: Units a drawing may record, with their DXF ``$INSUNITS`` code.
+UNITS: Dict[str, int] = {"unitless": 0, "in": 1, "ft": 2, "mm": 4, "cm": 5, "m": 6}
+#: The units recorded unless told otherwise: the usual unit of mechanical drawings.
+DEFAULT_UNITS = "mm"
+#: SVG ``width``/``height`` of one drawing unit: ``(factor, SVG unit)``.
+#: ``unitless`` drawings are 800 px along their larger side instead.
+_SVG_UNITS: Dict[str, Tuple[float, str]] = {
+    "in": (1.0, "in"), "ft": (12.0, "in"), "mm": (1.0, "mm"), "cm": (1.0, "cm"), "m": (1000.0, "mm"),
+}
+_SVG_NS = "http://www.w3.org/2000/svg"
+
+#: Largest ``travel_samples`` and ``path_samples``.
+MAX_SAMPLES = 100_000
+#: Contour levels of the transmission angle, degrees, by default (as :func:`burmester.plot.center_plane`).
+DEFAULT_TRANSMISSION_LEVELS: Tuple[float, ...] = (30.0, 45.0, 60.0, 75.0)
+#: Samples of the coupler curve over a full turn of the input, by default.
+DEFAULT_PATH_SAMPLES = 720
+
+_MARKER = 0.006  # marker radius, of the drawing's larger side
+_TEXT = 0.018  # text height, of the drawing's larger side
+_MARGIN = 0.03  # extent grown by this, of the drawing's larger side
+_STROKE = 0.0015  # SVG line width, of the drawing's larger side
+
+_MISSING = 'burmester.export needs {what}: pip install "burmester[plot]"'
+
+
+class Layer(NamedTuple):
+    """A layer: its DXF colour index (ACI), its true colour and what it holds."""
+
+    aci: int
+    color: str
+    description: str
+
+
+_POSE_COLORS = {1: (1, "#d62728"), 2: (6, "#9467bd"), 3: (5, "#1f77b4"), 4: (3, "#2ca02c"), 5: (32, "#8c564b")}
+
+#: Every layer, in drawing order (bottom first); see the module's table.
+LAYERS: Dict[str, Layer] = {
+    "VIEW": Layer(253, "#b0b0b0", "the view's rectangle"),
+    "BRANCH_FREE_FILL": Layer(71, "#c7e9b4", "branch-free region, filled"),
+    "ACCEPTABLE_FILL": Layer(84, "#74c476", "branch-free and acceptable region, filled"),
+    "BRANCH_FREE": Layer(94, "#31a354", "branch-free region, outlines (outer boundaries and holes)"),
+    "ACCEPTABLE": Layer(96, "#006d2c", "branch-free and acceptable region, outlines"),
+    "TRANSMISSION": Layer(252, "#636363", "contours of the minimum transmission angle, degrees"),
+    "COUPLER_CURVE": Layer(9, "#999999", "coupler point over the input's range, mode of pose 1"),
+    "TRAVEL": Layer(254, "#cccccc", "the linkage sampled over its travel"),
+    "COUPLER_PATH": Layer(4, "#17becf", "coupler point over the travel, pose k to k + 1"),
+    "GROUND": Layer(8, "#666666", "ground link A0 C0"),
+    **{f"CONIC_{k}": Layer(a, c, f"Filemon line of pose {k} transformed")
+       for k, (a, c) in _POSE_COLORS.items() if k <= 3},
+    **{f"LINE_{k}": Layer(a, c, f"line through C1 and C'{k}") for k, (a, c) in _POSE_COLORS.items() if k <= 3},
+    **{f"LINKAGE_{k}": Layer(a, c, f"the linkage at pose {k}") for k, (a, c) in _POSE_COLORS.items()},
+    "BRANCH_FREE_ARCS": Layer(71, "#a1d99b", "driving pivots on the curve, branch-free with C0"),
+    "CURVE_CCW": Layer(94, "#1a9850", "center points, crank meets the poses in order (ccw)"),
+    "CURVE_CW": Layer(150, "#2166ac", "center points, crank meets the poses in order (cw)"),
+    "CURVE_ORDER_DEFECT": Layer(9, "#bdbdbd", "center points with an order defect"),
+    "CURVE_1234": Layer(150, "#2166ac", "center-point curve of poses 1, 2, 3, 4"),
+    "CURVE_1235": Layer(12, "#b2182b", "center-point curve of poses 1, 2, 3, 5"),
+    "POLE_CIRCLE": Layer(251, "#7f7f7f", "circle through the poles"),
+    "IMAGE_POLE_CIRCLE": Layer(251, "#7f7f7f", "circle through the image poles"),
+    "POLE_TRIANGLE": Layer(250, "#333333", "pole triangle"),
+    "POLES": Layer(7, "#000000", "poles P12, P13, P23"),
+    "IMAGE_POLES": Layer(7, "#000000", "image poles P12, P13, P'23"),
+    "FIXED_PIVOT_IMAGES": Layer(30, "#ff7f0e", "fixed pivot seen from the coupler, C'k"),
+    "DRIVEN_CIRCLE_POINT": Layer(130, "#1b9e77", "driven crank's moving pivot C1"),
+    "DRIVEN_PIVOT": Layer(30, "#ff7f0e", "driven crank's fixed pivot C0"),
+    "BEST_PIVOTS": Layer(2, "#e6ab02", "best driving pivots, numbered"),
+    "COINCIDENCE_POINTS": Layer(251, "#4d4d4d", "Q_jk: crank positions j and k coincide"),
+    "BURMESTER_POINTS": Layer(2, "#e6ab02", "Burmester points (center points)"),
+    "POSES": Layer(40, "#e66101", "poses: point and a flag along the coupler angle"),
+    "PIVOTS": Layer(7, "#000000", "fixed pivots A0, C0"),
+    "TEXT": Layer(250, "#404040", "labels"),
+}
+
+
+# ---------------------------------------------------------------------------
+# The drawing: what both writers draw
+
+
+@dataclass
+class _Polyline:
+    layer: str
+    points: Array
+    closed: bool
+    title: str
+
+
+@dataclass
+class _Region:
+    """A polygon with holes: the outer ring first, rings not repeating their first point."""
+
+    layer: str
+    rings: List[Array]
+    title: str
+
+
+@dataclass
+class _Circle:
+    layer: str
+    center: Point
+    radius: float
+    title: str
+
+
+@dataclass
+class _Marker:
+    """A point, drawn as a small circle whose radius the writer chooses."""
+
+    layer: str
+    point: Point
+    title: str
+
+
+@dataclass
+class _Label:
+    point: Point
+    text: str
+
+
+@dataclass
+class _Drawing:
+    """The things to draw, by layer, in model coordinates."""
+
+    title: str
+    #: A plane's view: the extent, and markers outside it are left out.
+    frame: Optional[Extent] = None
+    polylines: List[_Polyline] = field(default_factory=list)
+    regions: List[_Region] = field(default_factory=list)
+    circles: List[_Circle] = field(default_factory=list)
+    markers: List[_Marker] = field(default_factory=list)
+    labels: List[_Label] = field(default_factory=list)
+
+    def polyline(self, layer: str, points: npt.ArrayLike, title: str, closed: bool = False) -> None:
+        self.polylines.append(_Polyline(layer, np.asarray(points, dtype=float).reshape(-1, 2), closed, title))
+
+    def marker(self, layer: str, point: Sequence[float], title: str, label: Optional[str] = None) -> None:
+        p = (float(point[0]), float(point[1]))
+        if self.frame is not None:
+            x0, x1, y0, y1 = self.frame
+            if not (x0 <= p[0] <= x1 and y0 <= p[1] <= y1):
+                return
+        self.markers.append(_Marker(layer, p, title))
+        if label is not None:
+            self.labels.append(_Label(p, label))
+
+    def layers(self) -> List[str]:
+        """The layers used, in drawing order."""
+        used = {p.layer for p in self.polylines} | {c.layer for c in self.circles}
+        used |= {m.layer for m in self.markers}
+        for r in self.regions:
+            used |= {r.layer, r.layer + "_FILL"}
+        if self.labels:
+            used.add("TEXT")
+        return [name for name in LAYERS if name in used]
+
+    def bounds(self) -> Extent:
+        """The frame if any, else the bounding box of the geometry (markers
+        and labels by their points)."""
+        if self.frame is not None:
+            return self.frame
+        pts: List[Array] = [p.points for p in self.polylines]
+        pts += [ring for r in self.regions for ring in r.rings]
+        pts += [np.array([[c.center[0] - c.radius, c.center[1] - c.radius],
+                          [c.center[0] + c.radius, c.center[1] + c.radius]]) for c in self.circles]
+        pts += [np.array([m.point]) for m in self.markers] + [np.array([t.point]) for t in self.labels]
+        allpts = np.vstack([p for p in pts if len(p)])
+        lo, hi = allpts.min(axis=0), allpts.max(axis=0)
+        return (float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]))
+
+    def sizes(self) -> Tuple[Extent, float, float]:
+        """``(extent, marker radius, text height)``: the bounds grown by the margin."""
+        x0, x1, y0, y1 = self.bounds()
+        size = max(x1 - x0, y1 - y0)
+        if not size > 0.0:
+            size = 1.0
+        m = _MARGIN * size
+        return (x0 - m, x1 + m, y0 - m, y1 + m), _MARKER * size, _TEXT * size
+
+
+# ---------------------------------------------------------------------------
+# Checks
+
+
+def _units(units: str) -> str:
+    if units not in UNITS:
+        raise burmester.InvalidInputError(
+            f"units must be one of {', '.join(repr(u) for u in UNITS)}, got {units!r}"
+        )
+    return units
+
+
+def _samples(name: str, value: Any, lo: int) -> int:
+    """``value`` as an int from ``lo`` to :data:`MAX_SAMPLES`, or InvalidInputError."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an int, got {type(value).__name__}")
+    if not lo <= int(value) <= MAX_SAMPLES:
+        raise burmester.InvalidInputError(f"{name} must be from {lo} to {MAX_SAMPLES}, got {int(value)}")
+    return int(value)
+
+
+def _target(path: PathLike, suffixes: Sequence[str]) -> Path:
+    """The output path, checked: one of ``suffixes``, in a folder that exists."""
+    p = Path(path)
+    if p.suffix.lower() not in suffixes:
+        got = f"'{p.suffix}'" if p.suffix else "no extension"
+        raise burmester.InvalidInputError(
+            f"{p.name!r} has {got}; end the file name in {' or '.join(suffixes)}"
+        )
+    if not p.parent.is_dir():
+        raise burmester.InvalidInputError(
+            f"cannot write {p}: the folder {str(p.parent)!r} does not exist; create it first"
+        )
+    return p
+
+
+def _extent(view: Any) -> Extent:
+    """``(xmin, xmax, ymin, ymax)`` from a sequence of four finite numbers
+    with ``xmin < xmax`` and ``ymin < ymax``, or InvalidInputError."""
+    try:
+        xmin, xmax, ymin, ymax = (float(t) for t in view)
+    except (TypeError, ValueError):
+        raise burmester.InvalidInputError(
+            f"view must be a burmester.Grid or (xmin, xmax, ymin, ymax), got {view!r}"
+        ) from None
+    if not (math.isfinite(xmin + xmax + ymin + ymax) and xmin < xmax and ymin < ymax):
+        raise burmester.InvalidInputError(
+            f"view must be (xmin, xmax, ymin, ymax), finite, with xmin < xmax and ymin < ymax, got {tuple(view)}"
+        )
+    return (xmin, xmax, ymin, ymax)
+
+
+def _view(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, int]]) -> Grid:
+    """A Grid from a Grid, ``(xmin, xmax, ymin, ymax)`` (400 samples along
+    the longer side) or None (the default view), ``grid = (nx, ny)`` samples
+    when given."""
+    if view is None:
+        g = default_view(filemon)
+    elif isinstance(view, Grid):
+        g = view
+    else:
+        g = grid_for(*_extent(view), DEFAULT_GRID)
+    if grid is not None:
+        nx, ny = (_samples(name, n, 2) for name, n in zip(("grid nx", "grid ny"), grid))
+        g = Grid(g.xmin, g.xmax, g.ymin, g.ymax, nx, ny)
+    return g
+
+
+def _mask(name: str, array: npt.ArrayLike, shape: Tuple[int, int]) -> npt.NDArray[np.bool_]:
+    a = np.asarray(array)
+    if a.shape != shape:
+        raise burmester.InvalidInputError(f"{name} must have the grid's shape (ny, nx) = {shape}, got {a.shape}")
+    return a.astype(bool)
+
+
+# ---------------------------------------------------------------------------
+# Geometry helpers (drawing only: the core gives the points)
+
+
+def _rectangle(extent: Extent) -> Array:
+    x0, x1, y0, y1 = extent
+    return np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+
+
+def _regions(grid: Grid, mask: npt.NDArray[np.bool_]) -> Iterator[List[Array]]:
+    """The regions where ``mask`` is True as polygons with holes (outer ring
+    first), traced by contourpy midway between samples; the samples are
+    extended to the view's edges, so a region reaching an edge ends on it."""
+    try:
+        import contourpy
+    except ImportError:
+        raise ImportError(_MISSING.format(what="contourpy for the region polygons")) from None
+    xs, ys = grid.cell_centers()
+    x = np.concatenate([[grid.xmin], xs, [grid.xmax]])
+    y = np.concatenate([[grid.ymin], ys, [grid.ymax]])
+    z = np.pad(mask.astype(np.float64), 1, mode="edge")
+    gen = contourpy.contour_generator(x, y, z, fill_type=contourpy.FillType.OuterOffset)
+    # FillType.OuterOffset: per polygon, its points and the offsets of its rings.
+    points, offsets = cast(Tuple[List[Array], List[npt.NDArray[np.uint32]]], gen.filled(0.5, 1.5))
+    for pts, offs in zip(points, offsets):
+        rings = [np.asarray(pts[a:b], dtype=float) for a, b in zip(offs[:-1], offs[1:])]
+        yield [r[:-1] if len(r) > 1 and np.array_equal(r[0], r[-1]) else r for r in rings]
+
+
+def _contours(grid: Grid, values: Array, levels: Sequence[float]) -> Iterator[Tuple[float, Array]]:
+    """``(level, line)``: the contour lines of ``values`` (NaN where undefined)
+    on the grid's samples, by contourpy, one ``(n, 2)`` array per piece."""
+    try:
+        import contourpy
+    except ImportError:
+        raise ImportError(_MISSING.format(what="contourpy for the contours")) from None
+    xs, ys = grid.cell_centers()
+    gen = contourpy.contour_generator(xs, ys, np.ma.masked_invalid(values), line_type=contourpy.LineType.Separate)
+    for level in sorted(levels):
+        for line in cast(List[Array], gen.lines(level)):
+            yield level, np.asarray(line, dtype=float)
+
+
+def _clip_polygon(poly: Array, extent: Extent) -> Array:
+    """A polygon clipped to the rectangle ``extent`` (Sutherland-Hodgman)."""
+    x0, x1, y0, y1 = extent
+    edges = ((0, x0, 1.0), (0, x1, -1.0), (1, y0, 1.0), (1, y1, -1.0))  # axis, value, inside sign
+    out = [tuple(p) for p in poly.tolist()]
+    for axis, value, sign in edges:
+        src, out = out, []
+        for i, cur in enumerate(src):
+            prev = src[i - 1]
+            cin = sign * (cur[axis] - value) >= 0.0
+            pin = sign * (prev[axis] - value) >= 0.0
+            if cin != pin:
+                t = (value - prev[axis]) / (cur[axis] - prev[axis])
+                out.append(tuple(prev[k] + t * (cur[k] - prev[k]) for k in range(2)))
+            if cin:
+                out.append(cur)
+        if not out:
+            break
+    return np.array(out, dtype=float).reshape(-1, 2)
+
+
+def _circle_or_line(d: _Drawing, layer: str, circle: Dict[str, Any], extent: Extent, title: str) -> None:
+    """A pole circle, or the line (clipped to ``extent``) it becomes when the poles are collinear."""
+    if circle["kind"] == "circle":
+        d.circles.append(_Circle(layer, tuple(circle["center"]), float(circle["radius"]), title))
+    else:
+        seg = clip_line(circle["point"], circle["direction"], extent)
+        if seg is not None:
+            d.polyline(layer, seg, title)
+
+
+def _runs(x: Array, y: Array, valid: npt.NDArray[np.bool_]) -> Iterator[Array]:
+    """The runs of at least two valid samples, as ``(n, 2)`` arrays."""
+    pts = np.column_stack([x, y])
+    idx = np.flatnonzero(np.diff(np.concatenate([[0], valid.astype(np.int8), [0]])))
+    for a, b in zip(idx[::2], idx[1::2]):
+        if b - a >= 2:
+            yield pts[a:b]
+
+
+# ---------------------------------------------------------------------------
+# The linkage
+
+
+def _links(d: _Drawing, layer: str, sfb: SynthesizedFourBar, theta2: float, mode: Mode, what: str,
+           joints: bool) -> None:
+    """Crank, coupler triangle and rocker at ``theta2`` (from the core's joints)."""
+    o2, a, b, o4 = sfb.fourbar.joints(theta2, mode)
+    x, y, _ = sfb.pose_at(theta2, mode)
+    d.polyline(layer, [o2, a], f"crank A0 A, {what}")
+    d.polyline(layer, [a, b, (x, y)], f"coupler A B P, {what}", closed=True)
+    d.polyline(layer, [b, o4], f"rocker B C0, {what}")
+    if joints:
+        d.marker(layer, a, f"moving pivot A, {what}")
+        d.marker(layer, b, f"moving pivot B, {what}")
+
+
+def _input_arcs(sfb: SynthesizedFourBar) -> List[Tuple[float, float, bool]]:
+    """The input's range as ``(start, end, closed)``, counter-clockwise."""
+    ranges = sfb.fourbar.input_range
+    if ranges is None:
+        return [(0.0, 2.0 * math.pi, True)]
+    return [(a, b if b > a else b + 2.0 * math.pi, False) for a, b in ranges]
+
+
+def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_samples: int,
+                     path_samples: int, labels: bool) -> _Drawing:
+    travel_samples = _samples("travel_samples", travel_samples, 0)
+    if travel_samples == 1:
+        raise burmester.InvalidInputError("travel_samples must be 0 (none) or at least 2, got 1")
+    path_samples = _samples("path_samples", path_samples, 8)
+    figures = sfb.figures
+    if travel_samples and not figures.feasible:
+        raise burmester.AssemblyError(
+            "the linkage cannot be driven from pose 1 through the poses in order (a branch, order "
+            "or circuit defect), so it has no travel to sample: draw it without travel samples "
+            "(travel_samples=0, no --travel) or choose another driving pivot"
+        )
+    fb = sfb.fourbar
+    a0, c0 = sfb.driving[0], sfb.driven[0]
+    n = len(sfb.input_angles)
+    d = _Drawing(f"four-bar at {n} poses: {fb.grashof}, A0 {a0}, C0 {c0}")
+    d.polyline("GROUND", [a0, c0], "ground A0 C0")
+    d.marker("PIVOTS", a0, "fixed pivot A0", "A0" if labels else None)
+    d.marker("PIVOTS", c0, "fixed pivot C0", "C0" if labels else None)
+
+    mode: Mode = sfb.modes[0] or "open"
+    for a, b, closed in _input_arcs(sfb):
+        count = max(8, math.ceil(path_samples * (b - a) / (2.0 * math.pi)))
+        ts = np.linspace(a, b, count + 1)[:-1] if closed else np.linspace(a, b, count + 1)
+        x, y, ok = fb.coupler_path(sfb.coupler_point, ts, mode)
+        for run in _runs(x, y, ok):
+            d.polyline("COUPLER_CURVE", run, f"coupler curve ({mode})", closed=closed and bool(ok.all()))
+
+    stops = sfb.travel_stops
+    if figures.feasible and stops is not None:
+        for k, (a, b) in enumerate(zip(stops[:-1], stops[1:]), start=1):
+            count = max(2, math.ceil(path_samples * abs(b - a) / (2.0 * math.pi)))
+            x, y, ok = fb.coupler_path(sfb.coupler_point, np.linspace(a, b, count + 1), mode)
+            for run in _runs(x, y, ok):
+                d.polyline("COUPLER_PATH", run, f"coupler path, pose {k} to pose {k + 1}")
+        if travel_samples:
+            for i, t in enumerate(sfb.travel_angles(travel_samples).tolist(), start=1):
+                _links(d, "TRAVEL", sfb, t, mode, f"travel sample {i} of {travel_samples}", False)
+
+    for k, (theta2, m) in enumerate(zip(sfb.input_angles, sfb.modes), start=1):
+        _links(d, f"LINKAGE_{k}", sfb, theta2, m or "open", f"pose {k} ({m or 'toggle'})", True)
+
+    poses = task.poses if task is not None else [
+        sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)
+    ]
+    _poses(d, poses, 0.3 * min(fb.lengths), labels)
+    return d
+
+
+# ---------------------------------------------------------------------------
+# The planes
+
+
+class _Overlays(NamedTuple):
+    """What a solution map adds to the center-point plane."""
+
+    acceptable: Optional[npt.ArrayLike]
+    transmission: Optional[npt.ArrayLike]
+    levels: Sequence[float]
+    pivots: Optional[Sequence[Point]]
+
+
+def _center_drawing(filemon: Filemon, grid: Grid, method: Method, free: Optional[npt.ArrayLike],
+                    over: _Overlays, labels: bool) -> _Drawing:
+    extent = grid.extent
+    d = _Drawing("driving crank center-point plane", extent)
+    d.polyline("VIEW", _rectangle(extent), "view", closed=True)
+    free_b = _mask("free", free, grid.shape) if free is not None else filemon.branch_map(grid, method=method)
+    for rings in _regions(grid, free_b):
+        d.regions.append(_Region("BRANCH_FREE", rings, "branch-free driving pivots"))
+    if over.acceptable is not None:
+        for rings in _regions(grid, free_b & _mask("acceptable", over.acceptable, grid.shape)):
+            d.regions.append(_Region("ACCEPTABLE", rings, "branch-free and acceptable driving pivots"))
+    if over.transmission is not None:
+        values = np.asarray(over.transmission, dtype=float)
+        if values.shape != grid.shape:
+            raise burmester.InvalidInputError(
+                f"transmission must have the grid's shape (ny, nx) = {grid.shape}, got {values.shape}"
+            )
+        longest: Dict[float, Array] = {}
+        for level, line in _contours(grid, values, over.levels):
+            d.polyline("TRANSMISSION", line, f"transmission angle {level:g} deg")
+            if len(line) > len(longest.get(level, ())):
+                longest[level] = line
+        if labels:  # each level once, at the middle of its longest piece
+            for level, line in longest.items():
+                d.labels.append(_Label((float(line[len(line) // 2][0]), float(line[len(line) // 2][1])), f"{level:g}"))
+    extreme = filemon.extreme_poses
+    if extreme is not None:
+        for pose, conic in zip(extreme, filemon.conics):
+            for pl in conic.polylines(*extent):
+                d.polyline(f"CONIC_{pose}", pl, f"Filemon line {pose} transformed ({conic.kind})")
+    task = filemon.task
+    poles = [(p.pair, p.point) for p in task.poles if p.point is not None]
+    for (i, j), p in poles:
+        d.marker("POLES", p, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
+    d.polyline("POLE_TRIANGLE", [p for _, p in poles], "pole triangle", closed=True)
+    _circle_or_line(d, "POLE_CIRCLE", task.pole_circle(), extent, "pole circle")
+    d.marker("DRIVEN_PIVOT", filemon.driven_center, "driven crank's fixed pivot C0", "C0" if labels else None)
+    for k, p in enumerate(over.pivots or [], start=1):
+        d.marker("BEST_PIVOTS", p, f"driving pivot {k}", str(k) if labels else None)
+    return d
+
+
+def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
+    d = _Drawing("driving crank circle-point plane (pose 1)", extent)
+    d.polyline("VIEW", _rectangle(extent), "view", closed=True)
+    c1 = filemon.driven_circle
+    corners = _rectangle(extent)
+    radius = 2.0 * float(np.max(np.hypot(corners[:, 0] - c1[0], corners[:, 1] - c1[1]))) + 1.0
+    for a0, a1, is_free in filemon.sectors:
+        if not is_free:
+            continue
+        # Arc points 5 degrees apart at this radius lie outside the view, so the clipped wedge is exact.
+        ts = np.linspace(a0, a1, max(2, math.ceil((a1 - a0) / math.radians(5.0))) + 1)
+        wedge = np.vstack([[c1], np.column_stack([c1[0] + radius * np.cos(ts), c1[1] + radius * np.sin(ts)])])
+        clipped = _clip_polygon(wedge, extent)
+        if len(clipped) >= 3:
+            d.regions.append(_Region("BRANCH_FREE", [clipped], "branch-free driving circle points"))
+    middle = filemon.middle_pose
+    for k, (point, direction) in enumerate(filemon.all_lines, start=1):
+        seg = clip_line(point, direction, extent)
+        if seg is not None:
+            d.polyline(f"LINE_{k}", seg, f"line C1 C'{k} (pose {k})" + (", middle" if k == middle else ""))
+    task = filemon.task
+    for name, p in zip(("P12", "P13", "P'23"), task.image_poles()):
+        d.marker("IMAGE_POLES", p, f"image pole {name}", name if labels else None)
+    _circle_or_line(d, "IMAGE_POLE_CIRCLE", task.image_pole_circle(), extent, "image-pole circle")
+    for k, p in enumerate(filemon.fixed_pivot_images, start=1):
+        name = f"C'{k}" + (" = C0" if k == 1 else "")
+        d.marker("FIXED_PIVOT_IMAGES", p, f"fixed pivot image {name}", name if labels else None)
+    d.marker("DRIVEN_CIRCLE_POINT", c1, "driven crank's moving pivot C1", "C1" if labels else None)
+    return d
+
+
+_ORDER_LAYERS = {"counterclockwise": "CURVE_CCW", "clockwise": "CURVE_CW", None: "CURVE_ORDER_DEFECT"}
+
+
+def _poses(d: _Drawing, poses: Sequence[Sequence[float]], flag: float, labels: bool) -> None:
+    """Each pose: a flag along its angle and a marker at its point (layer ``POSES``)."""
+    for k, (px, py, angle) in enumerate(poses, start=1):
+        d.polyline("POSES", [(px, py), (px + flag * math.cos(angle), py + flag * math.sin(angle))],
+                   f"pose {k}: flag along the coupler angle")
+        d.marker("POSES", (px, py), f"pose {k}", str(k) if labels else None)
+
+
+def _burmester_drawing(task: Task, extent: Extent, driven: Optional[Point], labels: bool) -> _Drawing:
+    n = len(task)
+    d = _Drawing(f"{n} poses: " + ("center-point curve" if n == 4 else "Burmester points"), extent)
+    d.polyline("VIEW", _rectangle(extent), "view", closed=True)
+    if n == 4:
+        if driven is not None:
+            for pts in task.branch_free_arcs(driven, *extent):
+                d.polyline("BRANCH_FREE_ARCS", pts, "branch-free driving pivots for C0")
+            d.marker("DRIVEN_PIVOT", driven, "driven crank's fixed pivot C0", "C0" if labels else None)
+        for order, direction, pts in task.order_arcs(*extent):
+            d.polyline(_ORDER_LAYERS[direction], pts, f"center-point curve, crank order {order}")
+        for q in task.coincidence_points():
+            if q.center is not None:
+                j, k = q.pair
+                d.marker("COINCIDENCE_POINTS", q.center, f"Q{j}{k}", f"Q{j}{k}" if labels else None)
+    else:
+        for curve, which in zip(task.burmester_curves(), ("1234", "1235")):
+            for pts in curve.polylines(*extent):
+                d.polyline(f"CURVE_{which}", pts, f"center-point curve of poses {', '.join(which)}")
+        for k, (center, _) in enumerate(task.burmester_points(), start=1):
+            d.marker("BURMESTER_POINTS", center, f"Burmester point B{k}", f"B{k}" if labels else None)
+    for pole in task.poles:
+        if pole.point is not None:
+            i, j = pole.pair
+            d.marker("POLES", pole.point, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
+    _poses(d, task.poses, 0.12 * task.scale, labels)
+    return d
+
+
+def _plane_drawing(filemon: Filemon, view: Optional[ViewLike], plane: str, grid: Optional[Tuple[int, int]],
+                   method: Method, free: Optional[npt.ArrayLike], over: _Overlays, labels: bool) -> _Drawing:
+    if plane == "circle":
+        extent = default_circle_view(filemon) if view is None else _view(filemon, view, None).extent
+        return _circle_drawing(filemon, extent, labels)
+    if plane != "center":
+        raise burmester.InvalidInputError(f"plane must be 'center' or 'circle', got {plane!r}")
+    if free is not None and grid is None and not isinstance(view, Grid):
+        shape = np.shape(free)
+        if len(shape) != 2:
+            raise burmester.InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {shape}")
+        grid = (shape[1], shape[0])
+    return _center_drawing(filemon, _view(filemon, view, grid), method, free, over, labels)
+
+
+# ---------------------------------------------------------------------------
+# Writers
+
+
+def _rgb(color: str) -> Tuple[int, int, int]:
+    return (int(color[1:3], 16), int(color[3:5], 16), int(color[5:7], 16))
+
+
+def _write_dxf(d: _Drawing, path: Path, units: str) -> None:
+    """Write the drawing as DXF R2010: a layer per concept, ``$INSUNITS``, limits and extents."""
+    try:
+        from ezdxf import colors, const
+        from ezdxf.filemanagement import new
+    except ImportError:
+        raise ImportError(_MISSING.format(what="ezdxf to write DXF")) from None
+    extent, marker, text = d.sizes()
+    doc = new("R2010")
+    doc.units = UNITS[units]
+    doc.header["$MEASUREMENT"] = 0 if units in ("in", "ft") else 1
+    for name in d.layers():
+        spec = LAYERS[name]
+        layer = doc.layers.add(name, color=spec.aci, true_color=colors.rgb2int(_rgb(spec.color)))
+        layer.description = spec.description
+    msp = doc.modelspace()
+    for r in d.regions:
+        for ring in r.rings:
+            msp.add_lwpolyline(ring.tolist(), close=True, dxfattribs={"layer": r.layer})
+        hatch = msp.add_hatch(color=colors.BYLAYER, dxfattribs={"layer": r.layer + "_FILL"})
+        for k, ring in enumerate(r.rings):
+            flags = const.BOUNDARY_PATH_EXTERNAL if k == 0 else const.BOUNDARY_PATH_DEFAULT
+            hatch.paths.add_polyline_path(ring.tolist(), is_closed=True, flags=flags)
+    for p in d.polylines:
+        msp.add_lwpolyline(p.points.tolist(), close=p.closed, dxfattribs={"layer": p.layer})
+    for c in d.circles:
+        msp.add_circle(c.center, c.radius, dxfattribs={"layer": c.layer})
+    for m in d.markers:
+        msp.add_circle(m.point, marker, dxfattribs={"layer": m.layer})
+    for t in d.labels:
+        at = (t.point[0] + marker, t.point[1] + marker)
+        msp.add_text(t.text, height=text, dxfattribs={"layer": "TEXT", "insert": at})
+    x0, x1, y0, y1 = extent
+    msp.reset_limits((x0, y0), (x1, y1))
+    msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))
+    doc.set_modelspace_vport(height=y1 - y0, center=((x0 + x1) / 2, (y0 + y1) / 2))
+    doc.saveas(path)
+
+
+def _num(v: float) -> str:
+    """A coordinate in full precision (shortest round-trip form)."""
+    return repr(float(v) + 0.0)
+
+
+def _path_data(rings: Sequence[Array], closed: bool) -> str:
+    """SVG path data of polylines, y flipped: ``M x -y L ...`` (``Z`` when closed)."""
+    parts = []
+    for ring in rings:
+        pts = " L ".join(f"{_num(x)} {_num(-y)}" for x, y in ring.tolist())
+        parts.append(f"M {pts}" + (" Z" if closed else ""))
+    return " ".join(parts)
+
+
+def _titled(parent: ET.Element, tag: str, attrib: Dict[str, str], title: str) -> ET.Element:
+    el = ET.SubElement(parent, tag, attrib)
+    ET.SubElement(el, "title").text = title
+    return el
+
+
+def _write_svg(d: _Drawing, path: Path, units: str) -> None:
+    """Write the drawing as SVG: a ``<g id=LAYER>`` per concept, y flipped, viewBox the extent."""
+    (x0, x1, y0, y1), marker, text = d.sizes()
+    w, h = x1 - x0, y1 - y0
+    size = max(w, h)
+    if units == "unitless":
+        f, unit = 800.0 / max(w, h), ""
+    else:
+        f, unit = _SVG_UNITS[units]
+    svg = ET.Element("svg", {
+        "xmlns": _SVG_NS, "version": "1.1",
+        "width": f"{w * f:.6g}{unit}", "height": f"{h * f:.6g}{unit}",
+        "viewBox": f"{_num(x0)} {_num(-y1)} {_num(w)} {_num(h)}",
+        "data-units": units,
+    })
+    ET.SubElement(svg, "title").text = d.title
+    ET.SubElement(svg, "desc").text = (
+        f"burmester export, lengths in {units}. A model point (x, y) is at SVG user "
+        "coordinates (x, -y); the viewBox is (xmin, -ymax, width, height) of the drawing's extent."
+    )
+    for name in d.layers():
+        spec = LAYERS[name]
+        style = {"id": name, "data-description": spec.description}
+        if name.endswith("_FILL"):
+            style.update({"fill": spec.color, "stroke": "none", "fill-rule": "evenodd"})
+        elif name == "TEXT":
+            style.update({"fill": spec.color, "font-family": "sans-serif", "font-size": _num(text)})
+        else:
+            style.update({"fill": "none", "stroke": spec.color, "stroke-width": _num(_STROKE * size),
+                          "stroke-linejoin": "round", "stroke-linecap": "round"})
+        g = ET.SubElement(svg, "g", style)
+        for r in d.regions:
+            if name == r.layer + "_FILL":
+                _titled(g, "path", {"d": _path_data(r.rings, True)}, r.title)
+            elif name == r.layer:
+                _titled(g, "path", {"d": _path_data(r.rings, True)}, r.title)
+        for p in d.polylines:
+            if p.layer == name:
+                _titled(g, "path", {"d": _path_data([p.points], p.closed)}, p.title)
+        for c in d.circles:
+            if c.layer == name:
+                _titled(g, "circle", {"cx": _num(c.center[0]), "cy": _num(-c.center[1]),
+                                      "r": _num(c.radius)}, c.title)
+        for m in d.markers:
+            if m.layer == name:
+                _titled(g, "circle", {"cx": _num(m.point[0]), "cy": _num(-m.point[1]), "r": _num(marker),
+                                      "fill": spec.color, "fill-opacity": "0.35"}, m.title)
+        if name == "TEXT":
+            for t in d.labels:
+                el = ET.SubElement(g, "text", {"x": _num(t.point[0] + marker), "y": _num(-(t.point[1] + marker))})
+                el.text = t.text
+    ET.indent(svg)
+    ET.ElementTree(svg).write(path, encoding="utf-8", xml_declaration=True)
+
+
+_WRITERS = {".dxf": _write_dxf, ".svg": _write_svg}
+
+
+def _write(d: _Drawing, path: Path, units: str) -> Path:
+    _WRITERS[path.suffix.lower()](d, path, units)
+    return path
+
+
+# ---------------------------------------------------------------------------
+# The public functions
+
+
+def linkage(
+    sfb: SynthesizedFourBar,
+    path: PathLike,
+    *,
+    task: Optional[Task] = None,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """Write a synthesized four-bar to a DXF or SVG file, by the path's suffix.
+
+    Layers (the module's table): ``GROUND``, ``PIVOTS``, ``LINKAGE_k`` at
+    each pose k (in its assembly mode; a toggle drawn open), ``POSES``,
+    ``COUPLER_CURVE``, ``COUPLER_PATH`` (when the linkage is feasible:
+    :attr:`burmester.LinkageFigures.feasible`), ``TRAVEL`` (with
+    ``travel_samples``) and ``TEXT``. Every point is the core's:
+    :meth:`burmester.FourBar.joints` and :meth:`~burmester.SynthesizedFourBar.pose_at`
+    at the input angles, :meth:`burmester.FourBar.coupler_path`,
+    :attr:`~burmester.SynthesizedFourBar.travel_stops` and
+    :meth:`~burmester.SynthesizedFourBar.travel_angles`.
+
+    Parameters:
+        sfb: the four-bar, from :meth:`burmester.Filemon.four_bar` or
+            :meth:`burmester.Task.four_bar`.
+        path: the file to write, ending in ``.dxf`` or ``.svg`` (replaced if
+            it exists).
+        task: the task, to mark the poses it asks for; default: the poses
+            the linkage reaches at its input angles.
+        travel_samples: also draw the linkage at this many input angles
+            evenly spaced over its travel, both ends included (0: none; else
+            2 to :data:`MAX_SAMPLES`).
+        path_samples: samples of the coupler curve per full turn of the
+            input (8 to :data:`MAX_SAMPLES`; default
+            :data:`DEFAULT_PATH_SAMPLES`).
+        labels: write ``A0``, ``C0`` and the pose numbers (layer ``TEXT``).
+        units: the unit of the lengths, recorded in the file: one of
+            :data:`UNITS` (default :data:`DEFAULT_UNITS`).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: another suffix, a folder that does not
+            exist, unknown units or a sample count out of range.
+        burmester.AssemblyError: ``travel_samples`` for a linkage that cannot
+            be driven through the poses in order (no travel).
+        ImportError: ezdxf (for ``.dxf``) is not installed.
+    """
+    return _linkage_to((".dxf", ".svg"), sfb, path, task, travel_samples, path_samples, labels, units)
+
+
+def _linkage_to(suffixes: Sequence[str], sfb: SynthesizedFourBar, path: PathLike, task: Optional[Task],
+                travel_samples: int, path_samples: int, labels: bool, units: str) -> Path:
+    target = _target(path, suffixes)
+    units = _units(units)
+    return _write(_linkage_drawing(sfb, task, travel_samples, path_samples, labels), target, units)
+
+
+def linkage_dxf(
+    sfb: SynthesizedFourBar,
+    path: PathLike,
+    *,
+    task: Optional[Task] = None,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`linkage` to a ``.dxf`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    return _linkage_to((".dxf",), sfb, path, task, travel_samples, path_samples, labels, units)
+
+
+def linkage_svg(
+    sfb: SynthesizedFourBar,
+    path: PathLike,
+    *,
+    task: Optional[Task] = None,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`linkage` to an ``.svg`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    return _linkage_to((".svg",), sfb, path, task, travel_samples, path_samples, labels, units)
+
+
+def plane(
+    filemon: Filemon,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    plane: Plane = "center",
+    grid: Optional[Tuple[int, int]] = None,
+    method: Method = "conic",
+    free: Optional[npt.ArrayLike] = None,
+    acceptable: Optional[npt.ArrayLike] = None,
+    transmission: Optional[npt.ArrayLike] = None,
+    transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
+    pivots: Optional[Sequence[Point]] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """Write the driving crank's center-point or circle-point plane to a DXF
+    or SVG file, by the path's suffix.
+
+    **Center-point plane** (``plane="center"``, what
+    :func:`burmester.plot.center_plane` draws): ``VIEW``; the branch-free
+    driving pivots as polygons with holes (``BRANCH_FREE`` outlines,
+    ``BRANCH_FREE_FILL``), contoured from the branch map (accurate to a grid
+    cell); with ``acceptable``, the branch-free pivots that meet the limits
+    likewise (``ACCEPTABLE``, ``ACCEPTABLE_FILL``); the two transformed
+    Filemon conics, every branch clipped to the view, exact
+    (:meth:`burmester.Conic.polylines`; ``CONIC_k`` for the line of pose
+    k); the poles, the pole triangle and circle; ``C0``
+    (``DRIVEN_PIVOT``); the ``pivots`` given (``BEST_PIVOTS``); labels.
+
+    **Circle-point plane** (``plane="circle"``, as
+    :func:`burmester.plot.circle_plane`): ``VIEW``; the branch-free double
+    wedge between Filemon's lines, clipped to the view (``BRANCH_FREE``);
+    the three lines through ``C1`` (``LINE_k``); the image poles and their
+    circle; ``C'k`` and ``C1``.
+
+    Parameters:
+        filemon: Filemon's construction for the driven dyad (``task.filemon(C0)``).
+        path: the file to write, ending in ``.dxf`` or ``.svg``.
+        view: a :class:`burmester.Grid` or ``(xmin, xmax, ymin, ymax)``
+            (400 samples along the longer side); default: the view of
+            :func:`burmester.taskfile.default_view` (center plane) or
+            :func:`burmester.taskfile.default_circle_view` (circle plane).
+        plane: ``"center"`` or ``"circle"``.
+        grid: ``(nx, ny)`` samples of the branch map (center plane).
+        method: how :meth:`burmester.Filemon.branch_map` classifies, when
+            ``free`` is not given.
+        free: a branch map already computed on this view, shape ``(ny, nx)``
+            (for example a solution map's ``branch_free``); its shape gives
+            the samples when neither a Grid nor ``grid`` is given.
+        acceptable: a bool array ``(ny, nx)``: pivots that meet the limits
+            (a solution map's ``acceptable``).
+        transmission: a float array ``(ny, nx)``: a transmission angle in
+            degrees per sample (NaN where undefined), drawn as contours at
+            ``transmission_levels`` (``TRANSMISSION``; for example
+            ``numpy.degrees(smap.min_transmission_rad)``).
+        transmission_levels: the contour levels, degrees.
+        pivots: ``(x, y)`` points to mark, numbered from 1 (for example
+            ``[p.center for p in smap.best_pivots()]``).
+        labels: write the names of the points (layer ``TEXT``).
+        units: the unit of the lengths, recorded in the file: one of
+            :data:`UNITS` (default :data:`DEFAULT_UNITS`).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: another suffix, a folder that does not
+            exist, unknown units, a view that is not ``(xmin, xmax, ymin,
+            ymax)`` with ``xmin < xmax`` and ``ymin < ymax``, a ``plane``
+            other than ``"center"`` or ``"circle"``, or arrays of another
+            shape than the grid's.
+        ImportError: ezdxf (for ``.dxf``) or contourpy is not installed.
+    """
+    over = _Overlays(acceptable, transmission, transmission_levels, pivots)
+    return _plane_to((".dxf", ".svg"), filemon, path, view, plane, grid, method, free, over, labels, units)
+
+
+def _plane_to(suffixes: Sequence[str], filemon: Filemon, path: PathLike, view: Optional[ViewLike], plane: str,
+              grid: Optional[Tuple[int, int]], method: Method, free: Optional[npt.ArrayLike], over: _Overlays,
+              labels: bool, units: str) -> Path:
+    target = _target(path, suffixes)
+    units = _units(units)
+    return _write(_plane_drawing(filemon, view, plane, grid, method, free, over, labels), target, units)
+
+
+def plane_dxf(
+    filemon: Filemon,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    plane: Plane = "center",
+    grid: Optional[Tuple[int, int]] = None,
+    method: Method = "conic",
+    free: Optional[npt.ArrayLike] = None,
+    acceptable: Optional[npt.ArrayLike] = None,
+    transmission: Optional[npt.ArrayLike] = None,
+    transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
+    pivots: Optional[Sequence[Point]] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`plane` to a ``.dxf`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    over = _Overlays(acceptable, transmission, transmission_levels, pivots)
+    return _plane_to((".dxf",), filemon, path, view, plane, grid, method, free, over, labels, units)
+
+
+def plane_svg(
+    filemon: Filemon,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    plane: Plane = "center",
+    grid: Optional[Tuple[int, int]] = None,
+    method: Method = "conic",
+    free: Optional[npt.ArrayLike] = None,
+    acceptable: Optional[npt.ArrayLike] = None,
+    transmission: Optional[npt.ArrayLike] = None,
+    transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
+    pivots: Optional[Sequence[Point]] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`plane` to an ``.svg`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    over = _Overlays(acceptable, transmission, transmission_levels, pivots)
+    return _plane_to((".svg",), filemon, path, view, plane, grid, method, free, over, labels, units)
+
+
+def burmester_plane(
+    task: Task,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    driven: Optional[Point] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """Write the center-point plane of four or five poses to a DXF or SVG
+    file, by the path's suffix (what :func:`burmester.plot.burmester_plane`
+    draws).
+
+    **Four poses**: the center-point curve, every component in view, in
+    pieces by the crank's order class (:meth:`burmester.Task.order_arcs`;
+    layers ``CURVE_CCW``, ``CURVE_CW``, ``CURVE_ORDER_DEFECT``), the points
+    ``Q_jk`` (``COINCIDENCE_POINTS``) and, with ``driven``, the driving
+    pivots branch-free with it (:meth:`burmester.Task.branch_free_arcs`,
+    ``BRANCH_FREE_ARCS``) and ``C0`` (``DRIVEN_PIVOT``). **Five poses**: the
+    center-point curves of poses 1-4 and 1-2-3-5 (``CURVE_1234``,
+    ``CURVE_1235``) and the Burmester points (``BURMESTER_POINTS``). Both:
+    ``VIEW``, the finite poles (``POLES``), the poses (``POSES``), labels.
+    The curves are exact (the core's polylines, vertices on the curve).
+
+    Parameters:
+        task: a :class:`burmester.Task` of four or five poses.
+        path: the file to write, ending in ``.dxf`` or ``.svg``.
+        view: ``(xmin, xmax, ymin, ymax)`` or a :class:`burmester.Grid`;
+            default: :func:`burmester.taskfile.default_curve_view`.
+        driven: four poses: the driven dyad's center point ``C0``, on the curve.
+        labels: write the names of the points (layer ``TEXT``).
+        units: the unit of the lengths, recorded in the file: one of
+            :data:`UNITS` (default :data:`DEFAULT_UNITS`).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: a task of three poses (``cause ==
+            "needs_poses"``; export it with :func:`plane`), another suffix, a
+            folder that does not exist, unknown units or a view that is not a view.
+    """
+    return _burmester_to((".dxf", ".svg"), task, path, view, driven, labels, units)
+
+
+def _burmester_to(suffixes: Sequence[str], task: Task, path: PathLike, view: Optional[ViewLike],
+                  driven: Optional[Point], labels: bool, units: str) -> Path:
+    target = _target(path, suffixes)
+    units = _units(units)
+    if len(task) not in (4, 5):
+        task.center_point_curve()  # the core's typed error, with its fields
+    if view is None:
+        extent = default_curve_view(task)
+    elif isinstance(view, Grid):
+        extent = view.extent
+    else:
+        extent = _extent(view)
+    return _write(_burmester_drawing(task, extent, driven, labels), target, units)
+
+
+def burmester_plane_dxf(
+    task: Task,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    driven: Optional[Point] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`burmester_plane` to a ``.dxf`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    return _burmester_to((".dxf",), task, path, view, driven, labels, units)
+
+
+def burmester_plane_svg(
+    task: Task,
+    path: PathLike,
+    view: Optional[ViewLike] = None,
+    *,
+    driven: Optional[Point] = None,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """:func:`burmester_plane` to an ``.svg`` file (another suffix is an
+    InvalidInputError): the same arguments."""
+    return _burmester_to((".svg",), task, path, view, driven, labels, units)
