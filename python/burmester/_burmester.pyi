@@ -436,6 +436,9 @@ class FourBar:
     ) -> Tuple[FloatArray, FloatArray, BoolArray]:
         """``(x, y, valid)``: the path of a coupler point over input angles,
         NaN exactly where ``valid`` is False."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __getnewargs_ex__(self) -> Tuple[Tuple[()], dict[str, Any]]: ...
 
@@ -745,6 +748,9 @@ class Task:
     def line_to_conic(self, point: Point, direction: Point) -> Conic:
         """Three poses only: the exact image in the center-point plane of a
         line of the circle-point plane: a conic through the three poles."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __getnewargs__(self) -> Tuple[list[Pose]]: ...
 
@@ -1049,6 +1055,9 @@ class Filemon:
         travel_samples: int = 64,
         progress: Optional[Progress] = None,
     ) -> SolutionMap: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
 
@@ -1103,6 +1112,9 @@ class SynthesizedFourBar:
         :class:`InvalidInputError` for fewer than 2 samples."""
     def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
         """``(x, y, angle)`` of the task's coupler point when driven to ``theta2``."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
 
@@ -1261,6 +1273,9 @@ class SolutionMap:
         Candidates closer than ``min_separation`` (default: 2% of the
         viewport's diagonal) to a better one are skipped, so the list offers
         distinct options."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod

@@ -13,6 +13,7 @@ mod atlas;
 mod conv;
 mod curves;
 mod design;
+mod display;
 mod errors;
 mod geom;
 mod linkage;
