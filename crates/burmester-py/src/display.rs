@@ -4,7 +4,7 @@
 //! The binding draws nothing itself: each method hands the object to the
 //! pure-Python `burmester._display.repr_png`, which imports matplotlib only
 //! when it is called (so `import burmester` does not) and returns the PNG
-//! bytes, or None when matplotlib is not installed (IPython then shows the
+//! bytes, or None when matplotlib is not installed (Jupyter then shows the
 //! `repr`).
 
 use pyo3::prelude::*;
