@@ -407,3 +407,20 @@ def test_readme_picture_script_runs(tmp_path):
     out = explorer_picture.main(tmp_path / "explorer.png")
     with Image.open(out) as im:
         assert im.size[0] > 600 and np.asarray(im.convert("L")).std() > 10
+
+
+def test_readme_explorer_example_runs(tmp_path, monkeypatch):
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
+    blocks = [b.split("```")[0] for b in readme.split("```python\n")[1:]]
+    (code,) = [b for b in blocks if "from burmester.plot import explore" in b]
+    monkeypatch.chdir(tmp_path)
+    scope = {}
+    exec(compile(code, "README.md", "exec"), scope)
+    ex = scope["ex"]
+    assert isinstance(ex, Explorer)
+    assert scope["sfb"] == Task(POSES).filemon(C0).four_bar(ex.driving_center)  # before the move
+    moved = Task([POSES[0], (2.3, 0.3, POSES[1][2]), POSES[2]])
+    assert ex.task == moved and ex.linkage() == moved.filemon(C0).four_bar(ex.driving_center)
+    assert (tmp_path / "explorer.png").stat().st_size > 1000
