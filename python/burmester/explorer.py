@@ -25,8 +25,10 @@ A move the core refuses (a pose dragged onto another, ``C0`` onto a pole,
 ``A0`` onto the pole circle, ...) shows the error and keeps the last good
 state; the handles go back to it.
 
-Recomputing a map is fast (about 4 ms for 256 x 256 samples on two cores),
-so for grids up to :data:`LIVE_SAMPLES` samples the map follows the pointer
+Recomputing the solution map is fast (about 4 ms for 256 x 256 samples in
+BENCHMARKS.md, some 20 ms for the default 240 x 240 on a busy two-core
+machine; drawing the figure costs more), so for grids up to
+:data:`LIVE_SAMPLES` samples the map follows the pointer
 while you drag; for larger grids (``live=False``) the dragged handle follows
 the pointer and the map is recomputed when you let go. Moving ``A0`` only
 rebuilds the linkage, and always follows the pointer.
