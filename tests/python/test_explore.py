@@ -424,3 +424,41 @@ def test_readme_explorer_example_runs(tmp_path, monkeypatch):
     moved = Task([POSES[0], (2.3, 0.3, POSES[1][2]), POSES[2]])
     assert ex.task == moved and ex.linkage() == moved.filemon(C0).four_bar(ex.driving_center)
     assert (tmp_path / "explorer.png").stat().st_size > 1000
+
+
+IPYMPL_SESSION = """
+import matplotlib
+matplotlib.use("module://ipympl.backend_nbagg")
+from matplotlib.backend_bases import MouseEvent
+import burmester, burmester.plot as bp
+
+task = burmester.Task({poses!r})
+ex = bp.explore(task, {c0!r}, burmester.Grid(-8, 8, -8, 8, 64, 64))
+canvas = ex.figure.canvas
+print(type(canvas).__module__)
+canvas.draw()
+
+def drag(start, end):
+    for name, xy in (("button_press_event", start), ("motion_notify_event", end),
+                     ("button_release_event", end)):
+        px, py = ex.ax_map.transData.transform(xy)
+        canvas.callbacks.process(name, MouseEvent(name, canvas, px, py, button=1))
+
+canvas.toolbar.pan()          # the toolbar's pan mode takes the mouse
+drag((2.0, 0.5), (2.4, 0.8))
+print(ex.task == task)
+canvas.toolbar.pan()          # off again: the drag moves pose 2
+drag((2.0, 0.5), (2.4, 0.8))
+print([round(v, 9) for v in ex.task.poses[1]], ex.error)
+"""
+
+
+def test_works_on_the_jupyter_widget_canvas():
+    """The ipympl canvas (``%matplotlib widget``) takes the same events; its
+    toolbar's pan mode keeps the mouse from the handles."""
+    pytest.importorskip("ipympl")
+    import subprocess
+
+    code = IPYMPL_SESSION.format(poses=POSES, c0=C0)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split("\n")[:3] == ["ipympl.backend_nbagg", "True", "[2.4, 0.8, 0.4] None"]
