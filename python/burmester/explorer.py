@@ -438,6 +438,10 @@ class Explorer:
         (self._a0,) = ax.plot([], [], linestyle="none", marker="*", markersize=16, color="#ffd700",
                               markeredgecolor="black", zorder=9)
         self._a0.set_gid("driving-pivot")
+        for name in ("P12", "P13", "P23"):
+            self._labels[name] = ax.annotate(
+                name, (0.0, 0.0), xytext=(4, 4), textcoords="offset points", fontsize=8, zorder=6,
+            )
         for name in _FIXED_HANDLES:
             self._labels[name] = ax.annotate(
                 name, (0.0, 0.0), xytext=(7, 7), textcoords="offset points", fontsize=9, zorder=9,
@@ -483,8 +487,10 @@ class Explorer:
             self._map_artists.append(
                 bp._draw_circle(ax, st.task.pole_circle(), extent, "pole-circle", "pole circle")
             )
-            poles = [p.point for p in st.task.poles if p.point is not None]
+            poles = [p.point for p in st.task.poles if p.point is not None]  # three poses: all finite
             self._poles.set_data([p[0] for p in poles], [p[1] for p in poles])
+            for name, p in zip(("P12", "P13", "P23"), poles):
+                self._labels[name].xy = p
             self._triangle.set_data([p[0] for p in poles + poles[:1]], [p[1] for p in poles + poles[:1]])
         self._draw_handles(st.task.poses, st.filemon.driven_center, st.driving_center)
 

@@ -104,6 +104,8 @@ def assert_shows(ex, task, c0):
             np.testing.assert_array_equal(d, e)
     (poles,) = by_gid(ex.ax_map, "poles")
     np.testing.assert_array_equal(poles.get_xydata(), [p.point for p in task.poles])
+    labels = {t.get_text(): t.xy for t in ex.ax_map.texts}
+    assert [labels[f"P{i}{j}"] for i, j in ((1, 2), (1, 3), (2, 3))] == [p.point for p in task.poles]
     for k, (x, y, _) in enumerate(task.poses, start=1):
         (dot,) = by_gid(ex.ax_map, f"pose-{k}")
         np.testing.assert_array_equal(dot.get_xydata(), [[x, y]])
