@@ -35,7 +35,8 @@ rebuilds the linkage, and always follows the pointer.
 
 Keys (with the pointer over the figure): ``b`` puts ``A0`` on the best pivot
 of the map (:meth:`burmester.SolutionMap.best_pivots`), ``r`` goes back to
-the state the explorer opened with, ``e`` saves to ``export_to`` (see
+the state the explorer opened with (and, as matplotlib's home key, to the
+first view), ``e`` saves to ``export_to`` (see
 :meth:`Explorer.save`). The toolbar's zoom and pan modes take the mouse
 while they are on.
 

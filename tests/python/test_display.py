@@ -119,6 +119,13 @@ def test_task_picture_shows_the_poses_and_poles():
     np.testing.assert_array_equal(np.vstack(dots), [p[:2] for p in POSES])
     assert ax.get_title() == "Three poses and their poles"
     assert [a for a in ax.get_children() if a.get_gid() == "pole-circle"]
+    # Four poses, 3 and 4 a pure translation: their pole is at infinity, named in the title.
+    four = Task(POSES + [(4.0, 2.0, 1.1)])
+    ax = bp.poses(four)
+    (poles,) = [a for a in ax.get_children() if a.get_gid() == "poles"]
+    np.testing.assert_array_equal(poles.get_xydata(), [p.point for p in four.poles[:5]])
+    assert ax.get_title() == "Four poses and their poles (at infinity: P34)"
+    assert decode(four._repr_png_()).std() > 20
 
 
 def test_four_bar_picture_shows_the_joints():
