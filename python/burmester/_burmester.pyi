@@ -436,6 +436,9 @@ class FourBar:
     ) -> Tuple[FloatArray, FloatArray, BoolArray]:
         """``(x, y, valid)``: the path of a coupler point over input angles,
         NaN exactly where ``valid`` is False."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __getnewargs_ex__(self) -> Tuple[Tuple[()], dict[str, Any]]: ...
 
@@ -750,6 +753,9 @@ class Task:
     def line_to_conic(self, point: Point, direction: Point) -> Conic:
         """Three poses only: the exact image in the center-point plane of a
         line of the circle-point plane: a conic through the three poles."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __getnewargs__(self) -> Tuple[list[Pose]]: ...
 
@@ -1054,6 +1060,9 @@ class Filemon:
         travel_samples: int = 64,
         progress: Optional[Progress] = None,
     ) -> SolutionMap: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
 
@@ -1118,6 +1127,9 @@ class SynthesizedFourBar:
         :class:`InvalidInputError` for fewer than 2 samples."""
     def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
         """``(x, y, angle)`` of the task's coupler point when driven to ``theta2``."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
 
@@ -1302,7 +1314,7 @@ class SolutionMap:
         * ``"margin"``: the valid, branch-free candidates (acceptable or
           not) by their margin, the fallback when nothing is acceptable.
 
-        Scores within 1e-9 go to the larger margin. Candidates closer than
+        Scores within 1e-9 go to the smaller size ratio, then the larger margin. Candidates closer than
         ``min_separation`` (default: 2% of the viewport's diagonal) to a
         better one are skipped, so the list offers distinct options."""
     def pareto_front(self) -> list[Pivot]:
@@ -1310,6 +1322,9 @@ class SolutionMap:
         transmission angle (larger is better) and the size ratio (smaller is
         better), from the most compact to the best transmission:
         ``best_pivots(k=all, min_separation=0, rank_by="pareto")``."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): PNG
+        bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod

@@ -169,6 +169,13 @@ class PivotAtlas:
             ))
         return out
 
+    def _repr_png_(self) -> Optional[bytes]:
+        """The atlas's picture for Jupyter (:func:`burmester.plot.atlas`),
+        or None without matplotlib (see :mod:`burmester._display`)."""
+        from burmester._display import repr_png
+
+        return repr_png(self)
+
     def __repr__(self) -> str:
         n_best = int(np.count_nonzero(~np.isnan(self.best_transmission_deg)))
         top = np.nanmax(self.best_transmission_deg) if n_best else math.nan

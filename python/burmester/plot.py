@@ -12,6 +12,12 @@ of the Burmester curves and points of four and five poses.
   the Burmester points of five poses on their two curves.
 - :func:`linkage`: a synthesized four-bar drawn at the poses.
 - :func:`animate`: a GIF or MP4 of the four-bar driven through the poses.
+- :func:`poses`, :func:`four_bar`, :func:`solution_map`, :func:`atlas`: one
+  object at a glance (a task, a four-bar at an input angle, a solution map,
+  a pivot-pair atlas); with :func:`center_plane` and :func:`linkage` they
+  are the pictures the objects show in Jupyter (``_repr_png_``).
+- :func:`explore`: the interactive explorer (:mod:`burmester.explorer`):
+  drag the poses and pivots, and the map and the linkage follow.
 
 Needs matplotlib (``pip install "burmester[plot]"``). Every drawing function
 takes an optional ``ax`` to draw into and returns the Axes, so you can keep
@@ -54,7 +60,10 @@ from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_l
 from burmester.taskfile import DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
     from burmester._burmester import Method, Mode
+    from burmester.explorer import Explorer
 
 Point = Tuple[float, float]
 Extent = Tuple[float, float, float, float]
@@ -180,6 +189,47 @@ def _check_shape(name: str, array: Optional[npt.ArrayLike], shape: Tuple[int, in
     return a
 
 
+def draw_conics(ax: Axes, filemon: Filemon, extent: Extent) -> List[Artist]:
+    """The transformed Filemon curves clipped to ``extent``, every branch,
+    in the colour of their line's pose (gid ``"conic-k"``; the first branch
+    of each labelled), or, when every circle point is defective, a note
+    saying so. Returns the artists drawn."""
+    if filemon.all_defective:
+        note = ax.text(
+            0.5, 0.5, "every driving pivot has a branch defect",
+            transform=ax.transAxes, ha="center", va="center", color="0.3",
+        )
+        note.set_gid("all-defective")
+        return [note]
+    extreme = filemon.extreme_poses
+    assert extreme is not None
+    drawn: List[Artist] = []
+    for pose, conic in zip(extreme, filemon.conics):
+        color = POSE_COLORS[pose]
+        for k, pl in enumerate(conic.polylines(*extent)):
+            (line,) = ax.plot(pl[:, 0], pl[:, 1], color=color, linewidth=1.6, zorder=3)
+            line.set_gid(f"conic-{pose}")
+            if k == 0:
+                line.set_label(f"Filemon line {pose} transformed ({conic.kind})")
+            drawn.append(line)
+    return drawn
+
+
+def map_categories(free: npt.ArrayLike, acceptable: Optional[npt.ArrayLike] = None) -> npt.NDArray[np.int8]:
+    """The shading of a branch map: 0 defective, 1 branch-free, 2
+    branch-free and acceptable (where ``acceptable`` is given and true), the
+    image data of :func:`center_plane`'s ``"branch-map"``."""
+    free_b = np.asarray(free).astype(bool)
+    cat = free_b.astype(np.int8)
+    if acceptable is not None:
+        cat[free_b & np.asarray(acceptable).astype(bool)] = 2
+    return cat
+
+
+#: The colour map of :func:`map_categories`.
+MAP_CMAP = ListedColormap([DEFECT_COLOR, FREE_COLOR, ACCEPT_COLOR])
+
+
 # ---------------------------------------------------------------------------
 # The center-point plane
 
@@ -255,14 +305,11 @@ def center_plane(
     trans = _check_shape("transmission", transmission, shape)
 
     ax = _new_axes(ax)
-    cat = free_b.astype(np.int8)
-    if acc is not None:
-        cat[free_b & acc.astype(bool)] = 2
     img = ax.imshow(
-        cat,
+        map_categories(free_b, acc),
         origin="lower",
         extent=extent,
-        cmap=ListedColormap([DEFECT_COLOR, FREE_COLOR, ACCEPT_COLOR]),
+        cmap=MAP_CMAP,
         vmin=0,
         vmax=2,
         interpolation="nearest",
@@ -274,24 +321,10 @@ def center_plane(
         handles.append(Patch(facecolor=ACCEPT_COLOR, edgecolor="0.5", label="branch-free and acceptable"))
 
     # The transformed Filemon curves.
-    if filemon.all_defective:
-        ax.text(
-            0.5, 0.5, "every driving pivot has a branch defect",
-            transform=ax.transAxes, ha="center", va="center", color="0.3",
-        )
-    else:
-        extreme = filemon.extreme_poses
-        assert extreme is not None
-        for pose, conic in zip(extreme, filemon.conics):
-            color = POSE_COLORS[pose]
-            first = True
-            for pl in conic.polylines(*extent):
-                (line,) = ax.plot(pl[:, 0], pl[:, 1], color=color, linewidth=1.6, zorder=3)
-                line.set_gid(f"conic-{pose}")
-                if first:
-                    line.set_label(f"Filemon line {pose} transformed ({conic.kind})")
-                    handles.append(line)
-                    first = False
+    handles.extend(
+        a for a in draw_conics(ax, filemon, extent)
+        if isinstance(a, Line2D) and not str(a.get_label()).startswith("_")
+    )
 
     # The poles, the pole triangle, its extended sides and the pole circle.
     task = filemon.task
@@ -880,3 +913,331 @@ def animate(
     writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
     anim.save(str(path), writer=writer, dpi=dpi)
     return anim
+
+
+# ---------------------------------------------------------------------------
+# One object at a glance: the pictures of the notebook display
+
+
+def poses(
+    task: Task,
+    view: Optional[Sequence[float]] = None,
+    *,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a task: its poses and poles.
+
+    Draws each pose as a dot with a flag along the coupler angle (gid
+    ``"poses"``, as :func:`burmester_plane`), the finite poles (gid
+    ``"poles"``, labelled ``Pjk``; a pole at infinity, of a pure
+    translation, is named in the title), and for three poses the pole
+    triangle (``"pole-triangle"``) and the pole circle (``"pole-circle"``).
+
+    Parameters:
+        task: three to five poses.
+        view: ``(xmin, xmax, ymin, ymax)``; default: a square around the
+            poses and the poles near them
+            (:func:`burmester.taskfile.default_curve_view`).
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    extent: Extent = default_curve_view(task) if view is None else _as_extent(view)
+    ax = _new_axes(ax, (7.0, 6.0))
+    handles: List[Artist] = [_draw_poses(ax, task, labels)]
+    finite = [p for p in task.poles if p.point is not None]
+    at_infinity = [p for p in task.poles if p.point is None]
+    pts = [p.point for p in finite if p.point is not None]
+    if len(task) == 3:
+        tri = np.array(pts + pts[:1], dtype=float)
+        (side,) = ax.plot(tri[:, 0], tri[:, 1], color=POLE_COLOR, linewidth=1.0, zorder=4, label="pole triangle")
+        side.set_gid("pole-triangle")
+        handles.append(side)
+        handles.append(_draw_circle(ax, task.pole_circle(), extent, "pole-circle", "pole circle"))
+    if pts:
+        handles.append(_markers(
+            ax, pts, "poles", "poles",
+            marker="o", markersize=5, color=POLE_COLOR, zorder=5,
+        ))
+    if labels:
+        for pole in finite:
+            assert pole.point is not None
+            _label(ax, pole.point, f"P{pole.pair[0]}{pole.pair[1]}")
+        count = {3: "Three", 4: "Four", 5: "Five"}[len(task)]
+        title = f"{count} poses and their poles"
+        if at_infinity:
+            title += " (at infinity: " + ", ".join(f"P{p.pair[0]}{p.pair[1]}" for p in at_infinity) + ")"
+        ax.set_title(title)
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    _finish(ax, extent, legend, handles)
+    return ax
+
+
+def _as_extent(view: ViewLike) -> Extent:
+    if isinstance(view, Grid):
+        return view.extent
+    xmin, xmax, ymin, ymax = (float(t) for t in view)
+    if not (xmin < xmax and ymin < ymax):
+        raise burmester.InvalidInputError(
+            f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
+        )
+    return (xmin, xmax, ymin, ymax)
+
+
+def _default_input_angle(fb: burmester.FourBar) -> float:
+    """0 when the input turns fully, else the middle of its first arc."""
+    arcs = fb.input_range
+    if not arcs:
+        return 0.0
+    lo, hi = arcs[0]
+    return lo + 0.5 * ((hi - lo) % (2 * math.pi))
+
+
+def four_bar(
+    fb: burmester.FourBar,
+    theta2: Optional[float] = None,
+    mode: Mode = "open",
+    *,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a four-bar at one input angle.
+
+    Draws the ground (gid ``"ground"``), the fixed pivots (``"fixed-pivots"``),
+    the chain ``O2 A B O4`` at ``theta2`` in ``mode`` (``"linkage"``), and the
+    paths of the crank tip and the rocker tip over the input's range in that
+    mode (``"crank-path"``, ``"rocker-path"``).
+
+    Parameters:
+        fb: the four-bar.
+        theta2: the input angle, radians; default: 0 when the input turns
+            fully, else the middle of its first arc (:attr:`FourBar.input_range`).
+        mode: the assembly mode, ``"open"`` or ``"crossed"``.
+        labels: write the names of the joints and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+
+    Raises:
+        burmester.AssemblyError: the loop does not close at ``theta2``.
+    """
+    t = _default_input_angle(fb) if theta2 is None else float(theta2)
+    o2, a, b, o4 = fb.joints(t, mode)
+    ax = _new_axes(ax, (7.0, 6.0))
+    arcs = fb.input_range or [(0.0, 2 * math.pi)]
+    for k, (lo, hi) in enumerate(arcs):
+        span = (hi - lo) % (2 * math.pi) or 2 * math.pi
+        ts = lo + np.linspace(0.0, span, 721)
+        # The crank tip A is the coupler frame's origin, the rocker tip B its
+        # point (coupler, 0).
+        ax_, ay_, aok = fb.coupler_path((0.0, 0.0), ts, mode)
+        bx_, by_, bok = fb.coupler_path((fb.coupler, 0.0), ts, mode)
+        (cp,) = ax.plot(ax_[aok], ay_[aok], color="0.6", linewidth=0.8, zorder=1,
+                        label="crank tip path" if k == 0 else None)
+        cp.set_gid("crank-path")
+        (rp,) = ax.plot(bx_[bok], by_[bok], color="0.6", linestyle="--", linewidth=0.8, zorder=1,
+                        label="rocker tip path" if k == 0 else None)
+        rp.set_gid("rocker-path")
+    (g,) = ax.plot([o2[0], o4[0]], [o2[1], o4[1]], color="0.3", linestyle="--", linewidth=1.0, zorder=2)
+    g.set_gid("ground")
+    _markers(ax, [o2, o4], "fixed-pivots", "fixed pivots O2, O4", marker="^", markersize=10, color="0.2", zorder=6)
+    chain = np.array([o2, a, b, o4], dtype=float)
+    (ln,) = ax.plot(chain[:, 0], chain[:, 1], color=POSE_COLORS[3], linewidth=2.2, marker="o", markersize=5,
+                    zorder=4, label=f"theta2 = {math.degrees(t):.1f} deg, {mode}")
+    ln.set_gid("linkage")
+    if labels:
+        for name, p in zip(("O2", "A", "B", "O4"), (o2, a, b, o4)):
+            _label(ax, p, name)
+        l1, l2, l3, l4 = fb.lengths
+        ax.set_title(f"Four-bar ({fb.grashof}): ground {l1:.4g}, crank {l2:.4g}, coupler {l3:.4g}, rocker {l4:.4g}",
+                     fontsize=10)
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.margins(0.08)
+    if legend:
+        _legend(ax)
+    return ax
+
+
+def solution_map(
+    smap: burmester.SolutionMap,
+    *,
+    pivots: int = 3,
+    transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a solution-space map: what ``burmester map --design`` draws.
+
+    A map of driving pivots (:meth:`burmester.Filemon.solution_map`) is drawn
+    by :func:`center_plane` with its overlays: the branch map
+    (``smap.branch_free``), the acceptable pivots, contours of the minimum
+    transmission angle over the travel, and the best pivots
+    (:meth:`burmester.SolutionMap.best_pivots`, numbered stars). A map of
+    driven pivots (:meth:`burmester.Task.driven_solution_map`) is drawn the
+    same way over the driven plane (gids ``"branch-map"``,
+    ``"transmission"``, ``"pivots"``), with the fixed driving pivot
+    (``"driving-pivot"``) and the poses (``"poses"``).
+
+    Parameters:
+        smap: the map.
+        pivots: how many of the best pivots to mark (0: none).
+        transmission_levels: the contour levels, degrees.
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    best = [p.center for p in smap.best_pivots(pivots)] if pivots > 0 else []
+    transmission = np.degrees(smap.min_transmission_rad)
+    fixed = smap.fixed_dyad[0]
+    if smap.varying == "driving":
+        return center_plane(
+            smap.task.filemon(fixed), smap.grid, free=smap.branch_free, acceptable=smap.acceptable,
+            transmission=transmission, transmission_levels=transmission_levels, pivots=best or None,
+            labels=labels, legend=legend, ax=ax,
+        )
+    ax = _new_axes(ax)
+    extent = smap.extent
+    img = ax.imshow(
+        map_categories(smap.branch_free, smap.acceptable), origin="lower", extent=extent,
+        cmap=MAP_CMAP, vmin=0, vmax=2, interpolation="nearest", zorder=0,
+    )
+    img.set_gid("branch-map")
+    handles: List[Artist] = [
+        Patch(facecolor=FREE_COLOR, edgecolor="0.5", label="branch-free driven pivot"),
+        Patch(facecolor=ACCEPT_COLOR, edgecolor="0.5", label="branch-free and acceptable"),
+    ]
+    if np.isfinite(transmission).any():
+        xs, ys = smap.grid.cell_centers()
+        cs = ax.contour(xs, ys, transmission, levels=sorted(transmission_levels),
+                        colors="#636363", linewidths=0.8, zorder=3)
+        cs.set_gid("transmission")
+        ax.clabel(cs, fmt="%g°", fontsize=7)
+        handles.append(Line2D([], [], color="#636363", linewidth=0.8, label="transmission angle, deg"))
+    handles.append(_draw_poses(ax, smap.task, labels))
+    handles.append(_markers(
+        ax, [fixed], "driving-pivot", "driving crank's fixed pivot A0",
+        marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=5,
+    ))
+    if best:
+        handles.append(_markers(
+            ax, best, "pivots", "best driven pivots",
+            marker="*", markersize=13, color="#ffd700", markeredgecolor="black", zorder=6,
+        ))
+    if labels:
+        _label(ax, fixed, "A0")
+        for k, p in enumerate(best, start=1):
+            _label(ax, p, str(k))
+        ax.set_title("Driven crank center-point plane")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    _finish(ax, extent, legend, handles)
+    return ax
+
+
+def atlas(
+    pivot_atlas: burmester.PivotAtlas,
+    *,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a pivot-pair atlas: what ``burmester atlas`` draws.
+
+    The driven plane shaded by the best minimum transmission angle of each
+    driven center (gid ``"best-transmission"``, with a colour bar), the count
+    of acceptable driving pivots as contours (``"count"``), and the best pair
+    (:meth:`burmester.PivotAtlas.best_pairs`): its driven and driving pivots
+    joined by a dashed line (``"best-pair"``).
+
+    Parameters:
+        pivot_atlas: the atlas, from :func:`burmester.pivot_atlas`.
+        labels: write the axis names and a title.
+        legend: draw a legend (inside the axes).
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    ax = _new_axes(ax, (7.0, 6.0))
+    driven = pivot_atlas.driven
+    im = ax.imshow(pivot_atlas.best_transmission_deg, origin="lower", extent=driven.extent,
+                   cmap="viridis", vmin=0.0, vmax=90.0, interpolation="nearest")
+    im.set_gid("best-transmission")
+    ax.figure.colorbar(im, ax=ax, label="best minimum transmission angle (deg)")
+    xs, ys = driven.cell_centers()
+    if np.ptp(pivot_atlas.count) > 0:
+        cs = ax.contour(xs, ys, pivot_atlas.count, levels=6, colors="white", linewidths=0.7)
+        cs.set_gid("count")
+        ax.clabel(cs, fontsize=7, fmt="%d")
+    best = pivot_atlas.best_pairs(1)
+    if best:
+        b = best[0]
+        (line,) = ax.plot([b.driven[0], b.driving[0]], [b.driven[1], b.driving[1]], "r--", lw=1)
+        line.set_gid("best-pair")
+        _markers(ax, [b.driven], "best-pair", f"driven C0 ({b.driven[0]:.4g}, {b.driven[1]:.4g})",
+                 marker="^", markersize=9, color="red")
+        _markers(ax, [b.driving], "best-pair", f"driving A0 ({b.driving[0]:.4g}, {b.driving[1]:.4g})",
+                 marker="s", markersize=8, color="red")
+        if legend:
+            ax.legend(loc="upper right", fontsize=8)
+    ax.set_xlim(driven.xmin, driven.xmax)
+    ax.set_ylim(driven.ymin, driven.ymax)
+    ax.set_aspect("equal")
+    if labels:
+        ax.set_xlabel("driven center x")
+        ax.set_ylabel("driven center y")
+        ax.set_title("Pivot-pair atlas")
+    return ax
+
+
+# ---------------------------------------------------------------------------
+# The interactive explorer
+
+
+def explore(
+    task: Task,
+    driven_center: Point,
+    view: Optional[ViewLike] = None,
+    *,
+    driving_center: Optional[Point] = None,
+    limits: Optional[burmester.DesignLimits] = None,
+    grid: Optional[Tuple[int, int]] = None,
+    live: Optional[bool] = None,
+    export_to: Optional[Union[str, Path]] = None,
+    fig: Optional[Figure] = None,
+) -> Explorer:
+    """Open the interactive explorer of a three-position task: drag the
+    poses, ``C0`` and ``A0`` and watch the branch map, the acceptable region
+    (under ``limits``), the Filemon curves and the linkage follow.
+
+    In a desktop window (``plt.show()`` after the call, or ``python -i``) or
+    in Jupyter with ``%matplotlib widget`` (ipympl, in the ``plot`` extra);
+    the keywords, handles and keys are those of
+    :class:`burmester.explorer.Explorer`.
+
+    Returns:
+        The :class:`~burmester.explorer.Explorer`: read the state
+        (``.task``, ``.driven_center``, ``.driving_center``, ``.linkage()``),
+        move things from code (``.move_pose(k, x, y, angle)``, ...) and save
+        (``.save("linkage.dxf")``, ``.save("task.toml")``, ``.save("explorer.png")``).
+    """
+    from burmester.explorer import Explorer
+
+    return Explorer(
+        task, driven_center, view, driving_center=driving_center, limits=limits, grid=grid,
+        live=live, export_to=export_to, fig=fig,
+    )

@@ -574,6 +574,12 @@ impl PySolutionMap {
             .is_ok_and(|o| o.get().context == self.context && self.same_columns(py, o.get()))
     }
 
+    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
+    /// None without matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
     fn __repr__(&self) -> String {
         let (ny, nx) = self.shape();
         format!("<SolutionMap {} pivots, {ny} x {nx}>", self.varying())

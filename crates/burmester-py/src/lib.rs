@@ -5,7 +5,8 @@
 //! `synthesis::three`), each importing only from those before it. Each class
 //! holds a core value, converts arguments, and maps core errors to Python
 //! exceptions in one place (`errors`); long calls release the GIL and
-//! honour Ctrl-C and progress callbacks through one runner (`run`).
+//! honour Ctrl-C and progress callbacks through one runner (`run`). The
+//! pictures Jupyter shows (`_repr_png_`) are drawn in Python (`display`).
 
 use pyo3::prelude::*;
 
@@ -13,6 +14,7 @@ mod atlas;
 mod conv;
 mod curves;
 mod design;
+mod display;
 mod errors;
 mod geom;
 mod linkage;

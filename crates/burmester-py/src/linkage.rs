@@ -297,6 +297,12 @@ impl PyFourBar {
         Ok((xs, ys, ok))
     }
 
+    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
+    /// None without matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
     fn __repr__(&self) -> String {
         let [l1, l2, l3, l4] = self.inner.lengths();
         let o = self.inner.input_pivot();

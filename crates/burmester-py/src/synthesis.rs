@@ -572,6 +572,12 @@ impl PyTask {
             .py()
     }
 
+    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
+    /// None without matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
     fn __repr__(&self) -> String {
         let p: Vec<String> = self
             .poses()
@@ -788,6 +794,12 @@ impl PyFilemon {
             .py()
     }
 
+    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
+    /// None without matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
     fn __repr__(&self) -> String {
         let c0 = self.inner.driven().center;
         format!(
@@ -918,6 +930,12 @@ impl PySynthesizedFourBar {
             .py()?;
         Ok((p.position.x, p.position.y, p.angle))
     }
+    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
+    /// None without matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
     fn __repr__(&self) -> String {
         let [l1, l2, l3, l4] = self.inner.fourbar.lengths();
         format!(
