@@ -51,7 +51,6 @@ how the tests drive it.
 
 from __future__ import annotations
 
-import importlib
 import math
 from pathlib import Path
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
@@ -356,8 +355,8 @@ class Explorer:
           and the other commands read.
 
         Returns the path. Raises :class:`burmester.InvalidInputError` for
-        another type or a folder that does not exist, and ImportError when
-        ``burmester.export`` is not installed (``.svg``, ``.dxf``).
+        another type or a folder that does not exist, and ImportError for
+        ``.dxf`` when ezdxf is not installed (``pip install "burmester[plot]"``).
         """
         p = Path(path)
         suffix = p.suffix.lower()
@@ -382,16 +381,9 @@ class Explorer:
             )
             p.write_text(dumps(spec), encoding="utf-8")
         else:
-            try:
-                export = importlib.import_module("burmester.export")
-            except ModuleNotFoundError as e:
-                if e.name != "burmester.export":
-                    raise
-                raise ImportError(
-                    f"saving the linkage as {suffix} needs burmester.export, which this "
-                    "installation of burmester does not have; save .png, .pdf or .toml instead"
-                ) from None
-            writer: Callable[..., Any] = getattr(export, "linkage_svg" if suffix == ".svg" else "linkage_dxf")
+            from burmester import export  # ezdxf only for .dxf, and only now
+
+            writer = export.linkage_svg if suffix == ".svg" else export.linkage_dxf
             writer(self.linkage(), p, task=self.task)
         return p
 

@@ -355,21 +355,28 @@ def test_save_writes_the_figure_and_the_task_file(ex, tmp_path):
         assert got == pytest.approx(want, abs=1e-12)
 
 
-def test_save_hands_the_linkage_to_burmester_export(ex, tmp_path, monkeypatch):
-    calls = []
-    fake = types.ModuleType("burmester.export")
-    fake.linkage_svg = lambda sfb, path, task=None: calls.append(("svg", sfb, path, task))
-    fake.linkage_dxf = lambda sfb, path, task=None: calls.append(("dxf", sfb, path, task))
-    monkeypatch.setitem(sys.modules, "burmester.export", fake)
-    ex.save(tmp_path / "l.svg")
-    ex.save(tmp_path / "l.dxf")
-    assert calls == [("svg", ex.linkage(), tmp_path / "l.svg", ex.task),
-                     ("dxf", ex.linkage(), tmp_path / "l.dxf", ex.task)]
+def test_save_hands_the_linkage_to_burmester_export(ex, tmp_path):
+    ezdxf = pytest.importorskip("ezdxf")
+    drag(ex, (2.0, 0.5), (2.4, 0.8))
+    sfb = ex.linkage()
+    # The DXF read back: the fixed pivots of the linkage shown, the moved task's poses.
+    doc = ezdxf.readfile(ex.save(tmp_path / "l.dxf"))
+    msp = doc.modelspace()
+    pivots = sorted(tuple(c.dxf.center)[:2] for c in msp.query('CIRCLE[layer=="PIVOTS"]'))
+    assert np.allclose(pivots, sorted([sfb.driving[0], sfb.driven[0]]), rtol=0, atol=1e-12)
+    poses = sorted(tuple(c.dxf.center)[:2] for c in msp.query('CIRCLE[layer=="POSES"]'))
+    assert np.allclose(poses, sorted((x, y) for x, y, _ in ex.task.poses), rtol=0, atol=1e-12)
+    # The SVG: one group per concept, the same names.
+    import xml.etree.ElementTree as ET
+
+    root = ET.parse(ex.save(tmp_path / "l.svg")).getroot()
+    ids = {g.get("id") for g in root.iter("{http://www.w3.org/2000/svg}g")}
+    assert {"PIVOTS", "POSES", "GROUND"} <= ids
 
 
 def test_save_says_what_is_wrong(ex, tmp_path, monkeypatch):
-    monkeypatch.setitem(sys.modules, "burmester.export", None)  # not installed
-    with pytest.raises(ImportError, match="needs burmester.export"):
+    monkeypatch.setitem(sys.modules, "ezdxf", None)  # not installed
+    with pytest.raises(ImportError, match=r"burmester\[plot\]"):
         ex.save(tmp_path / "l.dxf")
     with pytest.raises(burmester.InvalidInputError, match=r"\.png or \.pdf"):
         ex.save(tmp_path / "l.gif")
