@@ -5,7 +5,6 @@ exactly what the core computes for the moved task, from scratch."""
 import gc
 import math
 import sys
-import types
 
 import numpy as np
 import pytest
