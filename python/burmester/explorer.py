@@ -69,7 +69,7 @@ from matplotlib.text import Annotation, Text
 import burmester
 from burmester import plot as bp
 from burmester._burmester import DesignLimits, Filemon, Grid, SolutionMap, SynthesizedFourBar, Task
-from burmester.taskfile import TaskSpec, default_view, dumps, grid_for
+from burmester.taskfile import TaskSpec, dumps
 
 __all__ = ["ANGLE_STEP_DEG", "EXPLORE_SAMPLES", "LIVE_SAMPLES", "PICK_PIXELS", "Explorer"]
 
@@ -118,20 +118,7 @@ def _view_grid(filemon: Filemon, view: Optional[bp.ViewLike], grid: Optional[Tup
     """The explorer's grid: a Grid as given, else the view (default: the
     pictures' default view) with :data:`EXPLORE_SAMPLES` along the longer
     side, or ``grid = (nx, ny)`` samples."""
-    if isinstance(view, Grid):
-        g = view
-    elif view is None:
-        g = default_view(filemon, EXPLORE_SAMPLES)
-    else:
-        xmin, xmax, ymin, ymax = (float(t) for t in view)
-        if not (xmin < xmax and ymin < ymax):
-            raise burmester.InvalidInputError(
-                f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
-            )
-        g = grid_for(xmin, xmax, ymin, ymax, EXPLORE_SAMPLES)
-    if grid is not None:
-        g = Grid(g.xmin, g.xmax, g.ymin, g.ymax, int(grid[0]), int(grid[1]))
-    return g
+    return bp._as_grid(filemon, view, grid, EXPLORE_SAMPLES)
 
 
 def _near_angle(angle: float, reference: float) -> float:

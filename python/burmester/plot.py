@@ -85,12 +85,13 @@ CIRCLE_COLOR = "#7f7f7f"
 # Helpers
 
 
-def _as_grid(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, int]]) -> Grid:
+def _as_grid(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, int]],
+             samples: int = DEFAULT_GRID) -> Grid:
     """A :class:`burmester.Grid` from a Grid, an ``(xmin, xmax, ymin, ymax)``
-    sequence (400 samples along the longer side) or None (the default view),
-    with ``grid = (nx, ny)`` samples when given."""
+    sequence or None (the default view), both with ``samples`` along the
+    longer side, or ``grid = (nx, ny)`` samples when given."""
     if view is None:
-        g = default_view(filemon)
+        g = default_view(filemon, samples)
     elif isinstance(view, Grid):
         g = view
     else:
@@ -99,7 +100,7 @@ def _as_grid(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[in
             raise burmester.InvalidInputError(
                 f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
             )
-        g = grid_for(xmin, xmax, ymin, ymax, DEFAULT_GRID)
+        g = grid_for(xmin, xmax, ymin, ymax, samples)
     if grid is not None:
         g = Grid(g.xmin, g.xmax, g.ymin, g.ymax, int(grid[0]), int(grid[1]))
     return g
