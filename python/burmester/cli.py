@@ -407,29 +407,9 @@ def cmd_atlas(args: argparse.Namespace) -> int:
         }
         print(json.dumps(doc, indent=2))
     if plot is not None and output is not None:
-        import matplotlib.pyplot as plt
-
-        fig, ax = plt.subplots(figsize=(7, 6))
-        im = ax.imshow(atlas.best_transmission_deg, origin="lower", extent=driven.extent,
-                       cmap="viridis", vmin=0.0, vmax=90.0, interpolation="nearest")
-        fig.colorbar(im, ax=ax, label="best minimum transmission angle (deg)")
-        xs, ys = driven.cell_centers()
-        if np.ptp(atlas.count) > 0:
-            cs = ax.contour(xs, ys, atlas.count, levels=6, colors="white", linewidths=0.7)
-            ax.clabel(cs, fontsize=7, fmt="%d")
-        if best:
-            b = best[0]
-            ax.plot([b.driven[0], b.driving[0]], [b.driven[1], b.driving[1]], "r--", lw=1)
-            ax.plot(*b.driven, "r^", ms=9, label=f"driven C0 {_fmt_point(b.driven)}")
-            ax.plot(*b.driving, "rs", ms=8, label=f"driving A0 {_fmt_point(b.driving)}")
-            ax.legend(loc="upper right", fontsize=8)
-        ax.set_xlim(v.xmin, v.xmax)
-        ax.set_ylim(v.ymin, v.ymax)
-        ax.set_aspect("equal")
-        ax.set_xlabel("driven center x")
-        ax.set_ylabel("driven center y")
+        ax = plot.atlas(atlas)
         ax.set_title(f"pivot-pair atlas of {spec.source}")
-        _save(fig, output, args.dpi)
+        _save(ax.figure, output, args.dpi)
         summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
                    f"have an acceptable driving pivot")
         if best:
