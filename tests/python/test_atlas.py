@@ -232,3 +232,22 @@ def test_ctrl_c_stops_an_in_process_atlas():
     assert "message" in report, report
     assert "interrupted after" in report["message"]
     assert p.returncode != 0 and "KeyboardInterrupt" in err and "PanicException" not in err
+
+
+def test_cli_atlas_on_a_running_scheduler(client, capsys):
+    """``burmester atlas --scheduler ADDRESS`` against the address of a real
+    scheduler (the LocalCluster's, worker processes): the same JSON as in
+    process; an address where nothing listens is one line, status 2."""
+    import json
+
+    from burmester.cli import main
+
+    small = ["--driven-grid", "6", "5", "--driving-grid", "20", "16", "--json", "--top", "3"]
+    assert main(["atlas", *small]) == 0
+    local = json.loads(capsys.readouterr().out)
+    assert main(["atlas", *small, "--scheduler", client.scheduler.address]) == 0
+    remote = json.loads(capsys.readouterr().out)
+    assert remote == local and len(remote["best"]) == 3
+    assert main(["atlas", *small, "--scheduler", "tcp://127.0.0.1:9"]) == 2
+    err = capsys.readouterr().err
+    assert "cannot reach the Dask scheduler" in err and err.count("\n") == 1
