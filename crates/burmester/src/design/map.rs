@@ -310,7 +310,8 @@ impl<'a> Sampler<'a> {
             one_circuit: f.one_circuit,
             min_transmission_rad: f.min_transmission as f32,
             link_ratio: f.link_ratio as f32,
-            size_ratio: (members_length(&driving, &driven, self.point) * self.inv_span) as f32,
+            size_ratio: (members_length(f.lengths, driving.circle, driven.circle, self.point)
+                * self.inv_span) as f32,
             acceptable,
         }
     }

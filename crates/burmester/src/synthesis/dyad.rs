@@ -96,7 +96,7 @@ impl SynthesizedFourBar {
         let (a, c) = (self.driving.circle, self.driven.circle);
         let ac = c - a;
         let p = a + rotate(self.coupler_point, ac.y.atan2(ac.x));
-        members_length(&self.driving, &self.driven, p)
+        members_length(self.figures.lengths, a, c, p)
     }
 
     /// The coupler pose (the task's coupler point and angle) when the
@@ -285,17 +285,18 @@ impl Task {
 }
 
 /// The total length of a linkage's members (see
-/// [`SynthesizedFourBar::size`]) from its dyads and the coupler point `p`,
-/// all at pose 1.
+/// [`SynthesizedFourBar::size`]) from its four link lengths (ground,
+/// crank, coupler, rocker), its moving pivots `a`, `c` and the coupler
+/// point `p`, all at pose 1.
 #[inline]
-pub(crate) fn members_length(driving: &Dyad, driven: &Dyad, p: Point2<f64>) -> f64 {
-    let (a0, a, c0, c) = (driving.center, driving.circle, driven.center, driven.circle);
-    (c0 - a0).norm()
-        + (a - a0).norm()
-        + (c - c0).norm()
-        + (c - a).norm()
-        + (p - a).norm()
-        + (p - c).norm()
+pub(crate) fn members_length(
+    lengths: [f64; 4],
+    a: Point2<f64>,
+    c: Point2<f64>,
+    p: Point2<f64>,
+) -> f64 {
+    let [l1, l2, l3, l4] = lengths;
+    l1 + l2 + l3 + l4 + (p - a).norm() + (p - c).norm()
 }
 
 /// The four-bar of two dyads (for any number of poses): ground from the
