@@ -667,20 +667,33 @@ class Task:
         linkage, :class:`InvalidInputError` for ``samples`` outside 1 to
         1e7."""
     def order_arcs(
-        self, xmin: float, xmax: float, ymin: float, ymax: float
+        self, xmin: float, xmax: float, ymin: float, ymax: float, *, plane: Literal["center", "circle"] = "center"
     ) -> list[Tuple[str, Optional[Literal["counterclockwise", "clockwise"]], FloatArray]]:
         """Four poses only: the center-point curve in the viewport cut into
         pieces of constant crank order, as ``(order, direction, points)``:
         ``direction`` is the way the crank meets the poses in their order
-        (``None``: out of order); the cuts are the exact points ``Q_jk``."""
+        (``None``: out of order); the cuts are the exact points ``Q_jk``.
+        ``plane="circle"``: the circle-point curve likewise (each point's
+        dyad from its center point), cut at the circle points of the
+        ``Q_jk`` (and where the center point passes through infinity,
+        between two traced points)."""
     def branch_free_arcs(
-        self, driven_center: Point, xmin: float, xmax: float, ymin: float, ymax: float
+        self,
+        driven_center: Point,
+        xmin: float,
+        xmax: float,
+        ymin: float,
+        ymax: float,
+        *,
+        plane: Literal["center", "circle"] = "center",
     ) -> list[FloatArray]:
         """Four poses only: the pieces of the center-point curve in the
         viewport whose driving dyads pass the four poses in one assembly mode
         with the driven dyad of ``driven_center`` (a point of the curve):
         Filemon's construction with four lines, the arc ends exact (each line
-        meets the circle-point curve in the roots of one quadratic)."""
+        meets the circle-point curve in the roots of one quadratic).
+        ``plane="circle"``: the same driving dyads' circle points, pieces of
+        the circle-point curve."""
     def curve_branch(self, driven_center: Point, center: Point) -> BranchClass:
         """Four poses only: the branch class of the driving dyad of
         ``center`` (on the curve) with the driven dyad of ``driven_center``:

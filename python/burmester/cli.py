@@ -313,24 +313,32 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     coloured by crank order, or the Burmester points on their curves (a
     picture with ``plot``, a CAD export with ``export``)."""
     n = len(spec.poses)
-    for flag, given in (("--plane circle", args.plane == "circle"), ("--design", args.design),
+    circle = args.plane == "circle"
+    for flag, given in (("--plane circle", circle and n == 5), ("--design", args.design),
                         ("--pivots", args.pivots > 0)):
         if given:
             raise UsageError(
-                f"{flag} is for three poses (Filemon's construction); {spec.source} has {n} poses"
+                f"{flag} is for three poses (Filemon's construction){' or four' if circle else ''}; "
+                f"{spec.source} has {n} poses"
             )
     task = spec.task()
     if export is not None:
+        if circle:
+            raise UsageError("the circle-point plane of four poses is drawn as a picture (.png, .pdf); "
+                             "the CAD export writes its center-point plane")
         _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent, units=units)
+    elif circle:
+        assert plot is not None
+        ax = plot.circle_curve_plane(task, spec.view.extent)
     else:
         assert plot is not None
         ax = plot.burmester_plane(task, spec.view.extent)
     if n == 4:
-        arcs = task.order_arcs(*spec.view.extent)
+        arcs = task.order_arcs(*spec.view.extent, plane="circle" if circle else "center")
         ordered = sum(1 for _, d, _ in arcs if d is not None)
         summary = (
-            f"center-point curve of {spec.source}: {len(arcs)} pieces in view, "
-            f"{ordered} of them with the crank meeting the poses in order"
+            f"{'circle' if circle else 'center'}-point curve of {spec.source}: {len(arcs)} pieces in "
+            f"view, {ordered} of them with the crank meeting the poses in order"
         )
     else:
         pts = task.burmester_points()
@@ -733,7 +741,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="picture to write (.png, .pdf, ...; matplotlib), or CAD export (.dxf, .svg: a layer "
                    "or group per concept, exact coordinates); default: map.png")
     p.add_argument("--plane", choices=("center", "circle"), default="center",
-                   help="center: center-point plane (Fig. 10/12); circle: circle-point plane (Fig. 3/11)")
+                   help="center: center-point plane (Fig. 10/12); circle: circle-point plane (Fig. 3/11; "
+                   "four poses: the circle-point curve by crank order)")
     p.add_argument("--method", choices=("conic", "direct", "simulate"), default="conic",
                    help="how grid points are classified (default: conic)")
     p.add_argument("--grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),

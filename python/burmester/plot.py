@@ -422,6 +422,19 @@ def _draw_poses(ax: Axes, task: Task, labels: bool) -> Artist:
     return art
 
 
+def _curve_extent(task: Task, view: Optional[Sequence[float]]) -> Extent:
+    """The extent of a four- or five-pose plane: ``view`` checked, or the
+    default around the task (:func:`burmester.taskfile.default_curve_view`)."""
+    if view is None:
+        return default_curve_view(task)
+    xmin, xmax, ymin, ymax = (float(t) for t in view)
+    if not (xmin < xmax and ymin < ymax):
+        raise burmester.InvalidInputError(
+            f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
+        )
+    return (xmin, xmax, ymin, ymax)
+
+
 def burmester_plane(
     task: Task,
     view: Optional[Sequence[float]] = None,
@@ -473,16 +486,7 @@ def burmester_plane(
     if n not in (4, 5):
         # The core's typed error, with its fields.
         task.center_point_curve()
-    extent: Extent
-    if view is None:
-        extent = default_curve_view(task)
-    else:
-        xmin, xmax, ymin, ymax = (float(t) for t in view)
-        if not (xmin < xmax and ymin < ymax):
-            raise burmester.InvalidInputError(
-                f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
-            )
-        extent = (xmin, xmax, ymin, ymax)
+    extent = _curve_extent(task, view)
     ax = _new_axes(ax)
     handles: List[Any] = []
     labelled: Dict[Optional[str], bool] = {}
@@ -563,6 +567,107 @@ def burmester_plane(
 
 # ---------------------------------------------------------------------------
 # The circle-point plane
+
+
+def circle_curve_plane(
+    task: Task,
+    view: Optional[Sequence[float]] = None,
+    *,
+    driven: Optional[Point] = None,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw the circle-point plane of four poses (the coupler frame at pose 1).
+
+    The circle-point curve, every component in view, cut into pieces of
+    constant crank order and coloured as :func:`burmester_plane` colours the
+    center-point curve (:meth:`burmester.Task.order_arcs` with
+    ``plane="circle"``; gid ``"circle-point-curve"``); the circle points of
+    the points ``Q_jk`` (gid ``"coincidence-points"``, labelled ``Q'jk``:
+    the moving pivot on the pole ``P_jk`` at poses j and k, so ``Q'1k`` is
+    the pole ``P1k``); the poses. With ``driven``
+    (the driven dyad's center point ``C0``, on the center-point curve):
+    Filemon's construction with four lines, the lines through its circle
+    point ``C1`` and the fixed pivot's images ``C'k = D_k1(C0)`` (gids
+    ``"filemon-line-k"``, ``"fixed-pivot-images"``, ``"driven-circle-point"``),
+    and under the curve, as a wide band, the circle points of the driving
+    dyads that pass the poses in one assembly mode with it
+    (:meth:`burmester.Task.branch_free_arcs` with ``plane="circle"``, gid
+    ``"branch-free-arcs"``; their ends are exact).
+
+    Parameters:
+        task: a :class:`burmester.Task` of four poses.
+        view: ``(xmin, xmax, ymin, ymax)``; default:
+            :func:`burmester.taskfile.default_curve_view`.
+        driven: the driven dyad's center point ``C0``.
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+
+    Raises:
+        burmester.InvalidInputError: a task of three or five poses
+            (``cause == "needs_poses"``), or an empty view.
+    """
+    task.circle_point_curve()  # the core's typed error for three or five poses
+    extent = _curve_extent(task, view)
+    ax = _new_axes(ax)
+    handles: List[Any] = []
+    if driven is not None:
+        c1 = task.circle_point(driven)
+        first = True
+        for pts in task.branch_free_arcs(driven, *extent, plane="circle"):
+            (band,) = ax.plot(pts[:, 0], pts[:, 1], color=FREE_COLOR, linewidth=9.0,
+                              solid_capstyle="butt", zorder=2)
+            band.set_gid("branch-free-arcs")
+            if first:
+                band.set_label("branch-free driving circle points for C0")
+                handles.append(band)
+                first = False
+        images = [task.displace(driven, k, 1) for k in range(1, 5)]
+        for k, image in enumerate(images, start=1):
+            seg = clip_line(c1, (image[0] - c1[0], image[1] - c1[1]), extent) if image != c1 else None
+            if seg is None:
+                continue
+            (line,) = ax.plot([seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]], color=POSE_COLORS[k],
+                              linewidth=0.9, zorder=2, label=f"line C1 C'{k} (pose {k})")
+            line.set_gid(f"filemon-line-{k}")
+            handles.append(line)
+        handles.append(_markers(ax, images, "fixed-pivot-images", "C'k = D_k1(C0)", marker="^",
+                                markersize=6, color="white", markeredgecolor="#ff7f0e", zorder=5))
+        handles.append(_markers(ax, [c1], "driven-circle-point", "driven crank's circle point C1", marker="o",
+                                markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=6))
+        if labels:
+            _label(ax, c1, "C1")
+            for k, image in enumerate(images, start=1):
+                _label(ax, image, f"C'{k}", "0.3")
+    labelled: Dict[Optional[str], bool] = {}
+    for _, direction, pts in task.order_arcs(*extent, plane="circle"):
+        (line,) = ax.plot(pts[:, 0], pts[:, 1], color=ORDER_COLORS[direction], linewidth=2.0, zorder=3)
+        line.set_gid("circle-point-curve")
+        if direction not in labelled:
+            labelled[direction] = True
+            line.set_label(ORDER_LABELS[direction].replace("center points", "circle points"))
+            handles.append(line)
+    qs = [(q.pair, q.circle) for q in task.coincidence_points() if q.circle is not None]
+    if qs:
+        handles.append(_markers(
+            ax, [p for _, p in qs], "coincidence-points", "Q'jk: moving pivot on P_jk at poses j, k",
+            marker="D", markersize=6, color="white", markeredgecolor="black", zorder=5,
+        ))
+        if labels:
+            for (j, k), p in qs:
+                _label(ax, p, f"Q'{j}{k}", "0.3")
+    handles.append(_draw_poses(ax, task, labels))
+    if labels:
+        ax.set_title("4 poses: circle-point curve (coupler frame at pose 1)")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    _finish(ax, extent, legend, handles)
+    return ax
 
 
 def _sector_polygon(center: Point, a0: float, a1: float, radius: float) -> npt.NDArray[np.float64]:

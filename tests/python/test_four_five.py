@@ -467,3 +467,101 @@ def test_the_picture_draws_the_curve_the_poles_and_the_points():
     with pytest.raises(InvalidInputError) as e:
         plot.burmester_plane(Task(FIVE[:3]))
     assert e.value.cause == "needs_poses"
+
+
+def test_the_circle_point_curve_by_order_and_branch():
+    """The circle-point plane of four poses: its pieces are circle points
+    whose dyads (from their center points) have the piece's order, and its
+    branch-free arcs are the circle points of the branch-free driving dyads
+    (against the built linkages)."""
+    t = Task(FOUR)
+    view = (-12, 12, -12, 12)
+    arcs = t.order_arcs(*view, plane="circle")
+    assert len(arcs) >= 2
+    circle_curve = t.circle_point_curve()
+    cuts = [q.circle for q in t.coincidence_points() if q.circle is not None]
+    checked = 0
+    for order, direction, pts in arcs:
+        for z in pts[::5]:
+            assert circle_curve.distance((float(z[0]), float(z[1]))) <= 1e-9
+        mid = (float(pts[len(pts) // 2][0]), float(pts[len(pts) // 2][1]))
+        if min(math.dist(mid, q) for q in cuts) < 1e-6:
+            continue
+        try:
+            center = t.center_point(mid)
+            angles = t.crank_angles(center)
+        except burmester.BurmesterError:
+            continue
+        assert _crank_order(angles) == order
+        checked += 1
+    assert checked >= len(arcs) - 2
+    # The known crank's circle point lies on a piece in order counter-clockwise.
+    near = [(math.dist(A1, tuple(z)), d) for _, d, pts in arcs for z in pts]
+    assert min(near)[1] == "counterclockwise"
+    # Branch-free circle points: the built linkage with B0 driven is branch-free.
+    free = t.branch_free_arcs(B0, *view, plane="circle")
+    assert free
+    built = 0
+    for pts in free:
+        for z in pts[1:-1:3]:
+            try:
+                sfb = t.four_bar(t.center_point((float(z[0]), float(z[1]))), B0)
+            except burmester.BurmesterError:
+                continue
+            assert sfb.branch_free
+            built += 1
+    assert built > 10
+    with pytest.raises(InvalidInputError) as e:
+        t.order_arcs(*view, plane="coupler")
+    assert e.value.cause == "unknown_name"
+
+
+def test_the_circle_plane_picture_and_command(tmp_path):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from burmester import plot
+    from burmester.cli import main
+
+    t = Task(FOUR)
+    view = (-12, 12, -12, 12)
+    ax = plot.circle_curve_plane(t, view, driven=B0)
+    by_gid = {}
+    for a in ax.get_children():
+        by_gid.setdefault(a.get_gid(), []).append(a)
+    assert len(by_gid["circle-point-curve"]) == len(t.order_arcs(*view, plane="circle"))
+    assert len(by_gid["branch-free-arcs"]) == len(t.branch_free_arcs(B0, *view, plane="circle"))
+    (c1,) = by_gid["driven-circle-point"]
+    assert tuple(c1.get_xydata()[0]) == pytest.approx(t.circle_point(B0))
+    (images,) = by_gid["fixed-pivot-images"]
+    for k, xy in enumerate(images.get_xydata(), start=1):
+        assert tuple(xy) == pytest.approx(t.displace(B0, k, 1))
+    # Filemon's lines pass through C1 and the image of C0 at their pose.
+    for k in range(2, 5):
+        (line,) = by_gid[f"filemon-line-{k}"]
+        (x0, y0), (x1, y1) = line.get_xydata()
+        for p in (t.circle_point(B0), t.displace(B0, k, 1)):
+            cross = (x1 - x0) * (p[1] - y0) - (y1 - y0) * (p[0] - x0)
+            assert abs(cross) <= 1e-9 * math.hypot(x1 - x0, y1 - y0) * (1 + math.dist(p, (x0, y0)))
+    (qs,) = by_gid["coincidence-points"]
+    assert len(qs.get_xdata()) == sum(1 for q in t.coincidence_points() if q.circle is not None)
+    plt.close(ax.figure)
+    with pytest.raises(InvalidInputError) as e:
+        plot.circle_curve_plane(Task(FIVE))
+    assert e.value.cause == "needs_poses"
+
+    # burmester map --plane circle on a four-pose task file.
+    lines = "".join(f"[[pose]]\nx = {x!r}\ny = {y!r}\nangle_deg = {math.degrees(a)!r}\n\n" for x, y, a in FOUR)
+    path = tmp_path / "four.toml"
+    path.write_text(lines)
+    out = tmp_path / "circle.png"
+    assert main(["map", str(path), "--plane", "circle", "-o", str(out)]) == 0
+    assert out.stat().st_size > 1000
+    assert main(["map", str(path), "--plane", "circle", "-o", str(tmp_path / "c.dxf")]) == 2
+    five = tmp_path / "five.toml"
+    five.write_text("".join(f"[[pose]]\nx = {x!r}\ny = {y!r}\nangle_deg = {math.degrees(a)!r}\n\n"
+                            for x, y, a in FIVE))
+    assert main(["map", str(five), "--plane", "circle", "-o", str(tmp_path / "f.png")]) == 2

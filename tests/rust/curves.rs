@@ -563,6 +563,51 @@ proptest! {
             }
         }
     }
+
+    #[test]
+    fn the_circle_point_curve_is_cut_by_order_at_the_images_of_the_coincidence_points(
+        poses in random_poses(4),
+    ) {
+        prop_assume!(rotations_at_least(&poses, 0.1));
+        let four = FourPositions::new(&poses).unwrap();
+        let s = four.size();
+        let zs: Vec<Point2<f64>> = four.coincidence_points().iter().filter_map(|q| q.circle).collect();
+        let view = view_around(&four, 3.0);
+        let arcs = four.circle_order_arcs(&view);
+        for w in arcs.windows(2) {
+            let (a, b) = (&w[0], &w[1]);
+            let end = *a.points.last().unwrap();
+            if end != b.points[0] {
+                continue;
+            }
+            prop_assert!(a.order != b.order);
+            let at_z = zs.iter().any(|z| (z - end).norm() <= 1e-9 * s);
+            // Or the order changes through infinity: the center points on
+            // either side of the cut are far apart (the center-point curve
+            // leaves along an asymptote and comes back along another).
+            let before = four.center_point(a.points[a.points.len() - 2]);
+            let after = four.center_point(b.points[1]);
+            let through_infinity = match (before, after) {
+                (Ok(p), Ok(q)) => (p - q).norm() > 10.0 * s,
+                _ => true,
+            };
+            prop_assert!(at_z || through_infinity, "a cut at {} is no circle point of a Q_jk", end);
+        }
+        for a in &arcs {
+            for z in &a.points[1..a.points.len() - 1] {
+                // Each point is a circle point of the four poses: its dyad
+                // (from the center point) passes them, and its order is the
+                // arc's away from ties.
+                let d = four.dyad_from_circle(*z).unwrap();
+                prop_assert!(spread(&poses, &d) < 1e-6, "{}", spread(&poses, &d));
+                let ang = four.crank_angles(&d);
+                let tie = (0..4).any(|j| (j + 1..4).any(|k| common::wrap(ang[j] - ang[k]).abs() < 1e-9));
+                if !tie {
+                    prop_assert_eq!(four.crank_order(&d), a.order);
+                }
+            }
+        }
+    }
 }
 
 #[test]

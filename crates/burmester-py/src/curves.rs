@@ -312,6 +312,23 @@ pub(crate) fn viewport(xmin: Real, xmax: Real, ymin: Real, ymax: Real) -> PyResu
     Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()
 }
 
+/// Whether `plane` names the circle-point plane (`"circle"`) rather than
+/// the center-point plane (`"center"`).
+pub(crate) fn circle_plane(plane: &str) -> PyResult<bool> {
+    match plane {
+        "center" => Ok(false),
+        "circle" => Ok(true),
+        _ => Err(to_py(
+            InvalidInput::UnknownName {
+                what: "plane",
+                expected: "\"center\" or \"circle\"",
+                found: plane.to_owned(),
+            }
+            .into(),
+        )),
+    }
+}
+
 /// Rejects a point with a NaN or infinite coordinate (typed like the
 /// core's `NotFinite`).
 fn finite_point(p: PyPoint, what: [&'static str; 2]) -> PyResult<Point2<f64>> {

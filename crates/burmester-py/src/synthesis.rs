@@ -420,6 +420,7 @@ impl PyTask {
     /// for the driven dyad with this center point (Filemon's construction
     /// with four lines, exact arc ends).
     #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (driven_center, xmin, xmax, ymin, ymax, *, plane = "center"))]
     fn branch_free_arcs<'py>(
         &self,
         py: Python<'py>,
@@ -428,12 +429,20 @@ impl PyTask {
         xmax: Real,
         ymin: Real,
         ymax: Real,
+        plane: &str,
     ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
         let four = curves::four(&self.inner, "Task.branch_free_arcs")?;
         let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
+        let circle = curves::circle_plane(plane)?;
         let driven = four.dyad_from_center(driven_center.0).py()?;
         let arcs = four.filemon(&driven).py()?;
-        let lines = py.detach(|| arcs.free_center_arcs(&vp));
+        let lines = py.detach(|| {
+            if circle {
+                arcs.free_circle_arcs(&vp)
+            } else {
+                arcs.free_center_arcs(&vp)
+            }
+        });
         Ok(lines.iter().map(|l| curves::polyline(py, l)).collect())
     }
 
@@ -448,6 +457,7 @@ impl PyTask {
     }
 
     #[allow(clippy::type_complexity)]
+    #[pyo3(signature = (xmin, xmax, ymin, ymax, *, plane = "center"))]
     fn order_arcs<'py>(
         &self,
         py: Python<'py>,
@@ -455,10 +465,18 @@ impl PyTask {
         xmax: Real,
         ymin: Real,
         ymax: Real,
+        plane: &str,
     ) -> PyResult<Vec<(String, Option<&'static str>, Bound<'py, PyArray2<f64>>)>> {
         let four = curves::four(&self.inner, "Task.order_arcs")?;
         let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
-        let arcs = py.detach(|| four.order_arcs(&vp));
+        let circle = curves::circle_plane(plane)?;
+        let arcs = py.detach(|| {
+            if circle {
+                four.circle_order_arcs(&vp)
+            } else {
+                four.order_arcs(&vp)
+            }
+        });
         Ok(arcs
             .iter()
             .map(|a| {

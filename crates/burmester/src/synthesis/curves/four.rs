@@ -458,14 +458,30 @@ impl FourPositions {
             .filter_map(|q| q.center)
             .collect();
         let polylines = self.center_curve.polylines(viewport);
-        split_by(&polylines, &cuts, |p| {
-            self.circle_point(p)
-                .ok()
-                .map(|z| self.crank_order(&Dyad::new(p, z)))
+        order_runs(&polylines, &cuts, |p| {
+            self.dyad_from_center(p).ok().map(|d| self.crank_order(&d))
         })
-        .into_iter()
-        .map(|(order, points)| OrderArc { order, points })
-        .collect()
+    }
+
+    /// The circle-point curve in `viewport` cut into pieces of constant
+    /// crank order, as [`order_arcs`](Self::order_arcs) in the circle-point
+    /// plane: each traced point's dyad is that of its center point
+    /// ([`center_point`](Self::center_point)), and the cuts are the circle
+    /// points `D_j1(P_jk)` of the points `Q_jk`, where the moving pivot
+    /// sits on the pole `P_jk` at poses `j` and `k`. The order may also
+    /// change where the center point passes through infinity (the circle
+    /// points of the center-point curve's asymptotes): such a cut lies
+    /// between two traced points, within the trace's tolerance.
+    pub fn circle_order_arcs(&self, viewport: &Viewport) -> Vec<OrderArc> {
+        let cuts: Vec<Point2<f64>> = self
+            .coincidence_points()
+            .iter()
+            .filter_map(|q| q.circle)
+            .collect();
+        let polylines = self.circle_curve.polylines(viewport);
+        order_runs(&polylines, &cuts, |z| {
+            self.dyad_from_circle(z).ok().map(|d| self.crank_order(&d))
+        })
     }
 
     /// The six poles `P_jk`, in the order `12, 13, 14, 23, 24, 34`. They lie
@@ -697,4 +713,17 @@ impl FourPositions {
         check_dyad(&self.motion, driven, "driven dyad")?;
         FilemonArcs::new(self, driven)
     }
+}
+
+/// The runs of `polylines` of one crank order (`order` of a point, `None`
+/// where it has no dyad), cut at the nearest of `cuts`.
+fn order_runs(
+    polylines: &[Vec<Point2<f64>>],
+    cuts: &[Point2<f64>],
+    order: impl Fn(Point2<f64>) -> Option<CrankOrder>,
+) -> Vec<OrderArc> {
+    split_by(polylines, cuts, order)
+        .into_iter()
+        .map(|(order, points)| OrderArc { order, points })
+        .collect()
 }
