@@ -571,7 +571,30 @@ proptest! {
         prop_assume!(rotations_at_least(&poses, 0.1));
         let four = FourPositions::new(&poses).unwrap();
         let s = four.size();
-        let zs: Vec<Point2<f64>> = four.coincidence_points().iter().filter_map(|q| q.circle).collect();
+        let mut zs: Vec<Point2<f64>> = four.coincidence_points().iter().filter_map(|q| q.circle).collect();
+        // Where the center point passes through infinity (a slider): on the
+        // circle-point curve, and the limit of the circle points of centers
+        // going out along the asymptote.
+        let sliders = four.slider_circle_points();
+        let o = centroid(four.poses());
+        for z in &sliders {
+            prop_assert!(on_curve(four.circle_point_curve(), &four, *z, 1.0), "{} off the circle-point curve", z);
+        }
+        for u in four.center_point_curve().asymptotic_directions() {
+            // The curve's point nearest the asymptote's direction, far out.
+            let far = four.center_point_curve().intersect_line(&burmester::Line {
+                point: o + u * (1e6 * s),
+                direction: Vector2::new(-u.y, u.x),
+            });
+            let Some(g) = far.iter().min_by(|a, b| (*a - o).norm().total_cmp(&(*b - o).norm())) else {
+                continue;
+            };
+            if let Ok(zg) = four.circle_point(*g) {
+                let near = sliders.iter().any(|z| (zg - z).norm() <= 1e-4 * (s + z.coords.norm()));
+                prop_assert!(near, "{} is no slider's circle point {:?}", zg, sliders);
+            }
+        }
+        zs.extend(sliders);
         let view = view_around(&four, 3.0);
         let arcs = four.circle_order_arcs(&view);
         for w in arcs.windows(2) {
@@ -582,16 +605,7 @@ proptest! {
             }
             prop_assert!(a.order != b.order);
             let at_z = zs.iter().any(|z| (z - end).norm() <= 1e-9 * s);
-            // Or the order changes through infinity: the center points on
-            // either side of the cut are far apart (the center-point curve
-            // leaves along an asymptote and comes back along another).
-            let before = four.center_point(a.points[a.points.len() - 2]);
-            let after = four.center_point(b.points[1]);
-            let through_infinity = match (before, after) {
-                (Ok(p), Ok(q)) => (p - q).norm() > 10.0 * s,
-                _ => true,
-            };
-            prop_assert!(at_z || through_infinity, "a cut at {} is no circle point of a Q_jk", end);
+            prop_assert!(at_z, "a cut at {} is neither the circle point of a Q_jk nor a slider's", end);
         }
         for a in &arcs {
             for z in &a.points[1..a.points.len() - 1] {

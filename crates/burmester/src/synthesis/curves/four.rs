@@ -468,20 +468,36 @@ impl FourPositions {
     /// plane: each traced point's dyad is that of its center point
     /// ([`center_point`](Self::center_point)), and the cuts are the circle
     /// points `D_j1(P_jk)` of the points `Q_jk`, where the moving pivot
-    /// sits on the pole `P_jk` at poses `j` and `k`. The order may also
-    /// change where the center point passes through infinity (the circle
-    /// points of the center-point curve's asymptotes): such a cut lies
-    /// between two traced points, within the trace's tolerance.
+    /// sits on the pole `P_jk` at poses `j` and `k`, and at the
+    /// [`slider_circle_points`](Self::slider_circle_points), where the
+    /// center point passes through infinity.
     pub fn circle_order_arcs(&self, viewport: &Viewport) -> Vec<OrderArc> {
-        let cuts: Vec<Point2<f64>> = self
+        let mut cuts: Vec<Point2<f64>> = self
             .coincidence_points()
             .iter()
             .filter_map(|q| q.circle)
             .collect();
+        cuts.extend(self.slider_circle_points());
         let polylines = self.circle_curve.polylines(viewport);
         order_runs(&polylines, &cuts, |z| {
             self.dyad_from_circle(z).ok().map(|d| self.crank_order(&d))
         })
+    }
+
+    /// The circle points whose center point is at infinity, one per real
+    /// asymptotic direction `u` of the center-point curve: the limits of
+    /// the circle points as the center goes to infinity along `u` (the
+    /// crank becomes a slider moving along `u`'s normal). Found from the
+    /// linear form's rows divided by `|G|`, which tend to
+    /// `(1 - conj(R_k)) u . z = t_k . u`, exact.
+    pub fn slider_circle_points(&self) -> Vec<Point2<f64>> {
+        self.center_curve
+            .asymptotic_directions()
+            .into_iter()
+            .filter_map(|u| self.motion.form.solve_at_infinity(u, &[1, 2, 3]).ok())
+            .map(|z| self.motion.global_of(z))
+            .filter(|p| p.x.is_finite() && p.y.is_finite())
+            .collect()
     }
 
     /// The six poles `P_jk`, in the order `12, 13, 14, 23, 24, 34`. They lie

@@ -131,45 +131,72 @@ impl LinearForm {
     /// of rows with the largest determinant (the best conditioned).
     pub(crate) fn solve(&self, g: Vector2<f64>, ks: &[usize]) -> Result<Vector2<f64>, Failure> {
         let rows: Vec<(Vector2<f64>, f64)> = ks.iter().map(|&k| self.row(k, g)).collect();
-        let (mut best, mut pair) = (-1.0, (0, 0));
-        for i in 0..rows.len() {
-            for j in i + 1..rows.len() {
-                let d = cross(rows[i].0, rows[j].0).abs();
-                if d > best {
-                    best = d;
-                    pair = (i, j);
-                }
+        solve_rows(&rows)
+    }
+
+    /// The limit of [`solve`](Self::solve) as `g` goes to infinity in the
+    /// direction `u` (a unit vector): the rows divided by `|g|` tend to
+    /// `(1 - conj(R_k)) u . z = t_k . u`. Where `u` is an asymptotic
+    /// direction of the center-point curve they are consistent, and `z` is
+    /// the circle point of the dyad whose center is at infinity (a slider).
+    pub(crate) fn solve_at_infinity(
+        &self,
+        u: Vector2<f64>,
+        ks: &[usize],
+    ) -> Result<Vector2<f64>, Failure> {
+        let rows: Vec<(Vector2<f64>, f64)> = ks
+            .iter()
+            .map(|&k| {
+                let (_, (mr, mi)) = self.parts(k);
+                let a = Vector2::new(mr * u.x - mi * u.y, mi * u.x + mr * u.y);
+                (a, self.trans[k].dot(&u))
+            })
+            .collect();
+        solve_rows(&rows)
+    }
+}
+
+/// The `z` with `a . z = b` for the rows `(a, b)`, from the pair of rows
+/// with the largest determinant (the best conditioned).
+fn solve_rows(rows: &[(Vector2<f64>, f64)]) -> Result<Vector2<f64>, Failure> {
+    let (mut best, mut pair) = (-1.0, (0, 0));
+    for i in 0..rows.len() {
+        for j in i + 1..rows.len() {
+            let d = cross(rows[i].0, rows[j].0).abs();
+            if d > best {
+                best = d;
+                pair = (i, j);
             }
         }
-        let (r, amax) = rows
-            .iter()
-            .map(|(a, _)| a.norm())
-            .enumerate()
-            .fold((0, 0.0), |acc, (i, n)| if n > acc.1 { (i, n) } else { acc });
-        if !(amax > 0.0) || !amax.is_finite() {
-            return Err(Failure::Undefined);
-        }
-        if !(best > 64.0 * f64::EPSILON * amax * amax) {
-            // Parallel rows: consistent (a line of answers) or not (at infinity).
-            let (ar, br) = rows[r];
-            let inconsistent = rows.iter().any(|(a, b)| {
-                let lam = a.dot(&ar) / (amax * amax);
-                (b - lam * br).abs() > 1e-9 * (b.abs() + (lam * br).abs()) + f64::MIN_POSITIVE
-            });
-            return Err(if inconsistent {
-                Failure::AtInfinity(perp(ar / amax))
-            } else {
-                Failure::Undefined
-            });
-        }
-        let ((ai, bi), (aj, bj)) = (rows[pair.0], rows[pair.1]);
-        let det = cross(ai, aj);
-        let z = Vector2::new(bi * aj.y - bj * ai.y, ai.x * bj - aj.x * bi) / det;
-        if z.iter().all(|v| v.is_finite()) {
-            Ok(z)
+    }
+    let (r, amax) = rows
+        .iter()
+        .map(|(a, _)| a.norm())
+        .enumerate()
+        .fold((0, 0.0), |acc, (i, n)| if n > acc.1 { (i, n) } else { acc });
+    if !(amax > 0.0) || !amax.is_finite() {
+        return Err(Failure::Undefined);
+    }
+    if !(best > 64.0 * f64::EPSILON * amax * amax) {
+        // Parallel rows: consistent (a line of answers) or not (at infinity).
+        let (ar, br) = rows[r];
+        let inconsistent = rows.iter().any(|(a, b)| {
+            let lam = a.dot(&ar) / (amax * amax);
+            (b - lam * br).abs() > 1e-9 * (b.abs() + (lam * br).abs()) + f64::MIN_POSITIVE
+        });
+        return Err(if inconsistent {
+            Failure::AtInfinity(perp(ar / amax))
         } else {
-            Err(Failure::AtInfinity(perp(ai / ai.norm())))
-        }
+            Failure::Undefined
+        });
+    }
+    let ((ai, bi), (aj, bj)) = (rows[pair.0], rows[pair.1]);
+    let det = cross(ai, aj);
+    let z = Vector2::new(bi * aj.y - bj * ai.y, ai.x * bj - aj.x * bi) / det;
+    if z.iter().all(|v| v.is_finite()) {
+        Ok(z)
+    } else {
+        Err(Failure::AtInfinity(perp(ai / ai.norm())))
     }
 }
 
