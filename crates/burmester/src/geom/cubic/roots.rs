@@ -88,23 +88,57 @@ pub(crate) fn roots_in(p: &[f64], lo: f64, hi: f64) -> Vec<f64> {
     roots
 }
 
+/// `p(x)` and `p'(x)` by Horner's scheme.
+#[inline]
+fn eval_with_slope(p: &[f64], x: f64) -> (f64, f64) {
+    let mut v = 0.0;
+    let mut d = 0.0;
+    for &c in p.iter().rev() {
+        d = d * x + v;
+        v = v * x + c;
+    }
+    (v, d)
+}
+
 /// The root of `p` in `[a, b]`, where `p(a)` (= `fa`) and `p(b)` have
-/// opposite signs and `p` is monotone: bisection to the last bit.
+/// opposite signs and `p` is monotone: Newton's method kept inside the
+/// bracket (a step that leaves it, or does not halve the last one, is a
+/// bisection instead), until the bracket is a few ulps wide or a Newton
+/// step is below rounding. As sure as bisection, to the last bits, in a
+/// handful of steps instead of fifty to a thousand.
 fn bisect(p: &[f64], mut a: f64, mut b: f64, mut fa: f64) -> f64 {
+    let mut x = 0.5 * (a + b);
+    let mut last_step = b - a;
     for _ in 0..2200 {
-        let m = 0.5 * (a + b);
-        if m <= a || m >= b {
+        let (fx, dx) = eval_with_slope(p, x);
+        if fx == 0.0 {
+            return x;
+        }
+        if (fx < 0.0) == (fa < 0.0) {
+            a = x;
+            fa = fx;
+        } else {
+            b = x;
+        }
+        let width = b - a;
+        if width <= 4.0 * f64::EPSILON * a.abs().max(b.abs()) || !(width > 0.0) {
             break;
         }
-        let fm = eval(p, m);
-        if fm == 0.0 {
-            return m;
-        }
-        if (fm < 0.0) == (fa < 0.0) {
-            a = m;
-            fa = fm;
+        let newton = x - fx / dx;
+        let step = (newton - x).abs();
+        if newton > a && newton < b && step <= 0.5 * last_step {
+            if step <= f64::EPSILON * x.abs() || step == 0.0 {
+                return newton;
+            }
+            last_step = step;
+            x = newton;
         } else {
-            b = m;
+            let m = 0.5 * (a + b);
+            if m <= a || m >= b {
+                break;
+            }
+            last_step = width;
+            x = m;
         }
     }
     if eval(p, a).abs() <= eval(p, b).abs() {
