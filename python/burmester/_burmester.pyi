@@ -1098,6 +1098,12 @@ class SynthesizedFourBar:
     def size_ratio(self) -> float:
         """:attr:`size` over the task's :attr:`Task.span`: how many times the
         task's size the linkage's members add up to (scale-free)."""
+    def score(self, rank_by: RankBy = "balanced") -> Optional[float]:
+        """Its score by a ranking of :meth:`SolutionMap.best_pivots`
+        (``"balanced"``, ``"transmission"`` or ``"compact"``; larger is
+        better), from its figures and :attr:`size_ratio`; None without a
+        feasible travel. ``"pareto"`` and ``"margin"`` raise
+        :class:`InvalidInputError` (they rank a map, not one linkage)."""
     @property
     def driving(self) -> Tuple[Point, Point]:
         """``(A0, A1)``."""

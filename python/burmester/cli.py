@@ -245,7 +245,10 @@ def _output(path: str, types: Sequence[str], force: bool) -> str:
 
 
 def _fmt_point(p: Sequence[float]) -> str:
-    return f"({p[0]:.3f}, {p[1]:.3f})"
+    """``(x, y)`` to three decimals; a coordinate that rounds to zero reads
+    0.000, not -0.000."""
+    x, y = (round(v, 3) + 0.0 for v in p[:2])
+    return f"({x:.3f}, {y:.3f})"
 
 
 # ---------------------------------------------------------------------------
@@ -342,8 +345,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
         )
     else:
         pts = task.burmester_points()
-        # Rounded first, so that a coordinate of rounding size reads 0.000, not -0.000.
-        listed = ", ".join(_fmt_point([round(c[0], 3) + 0.0, round(c[1], 3) + 0.0]) for c, _ in pts)
+        listed = ", ".join(_fmt_point(c) for c, _ in pts)
         summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
     if export is None:
         _save(ax.figure, args.output, _picture_dpi(args))
@@ -470,9 +472,57 @@ def _fmt_size(ratio: float) -> str:
     return f"{ratio:5.1f}x"
 
 
+def burmester_table(spec: TaskSpec, ranked: Sequence[pv.BurmesterLinkage], ranked_by: str) -> str:
+    """The text table of ``burmester pivots`` for five poses."""
+    task = spec.task()
+    points = task.burmester_points()
+    lines = [
+        f"Four-bars of the {len(points)} Burmester points of {spec.source} (task size {task.span:.3g}), "
+        f"{pv.describe_ranking(ranked_by)}, acceptable ones first",
+    ]
+    lines += [f"  B{k}: center {_fmt_point(c)}, circle point {_fmt_point(z)}"
+              for k, (c, z) in enumerate(points, start=1)]
+    lines.append(
+        f"{'#':>2} | {'drive':>8} | {'size':>6} | {'ground':>7} {'crank':>7} {'coupler':>7} {'rocker':>7} | "
+        f"{'Grashof type':<14} | {'mu min':>6} | {'ratio':>5} | {'motion':<13} | limits"
+    )
+    for k, b in enumerate(ranked, start=1):
+        f = b.linkage.figures
+        g, c, cp, r = f.lengths
+        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
+        motion = f"{f.direction} {f.modes[0] or ''}".strip() if f.branch_free else "branch defect"
+        lines.append(
+            f"{k:>2} | {f'B{b.driving + 1} -> B{b.driven + 1}':>8} | {_fmt_size(b.linkage.size_ratio)} | "
+            f"{g:7.3f} {c:7.3f} {cp:7.3f} {r:7.3f} | {f.grashof:<14} | {mt} | {f.link_ratio:5.1f} | "
+            f"{motion:<13} | {'; '.join(b.violations) or 'ok'}"
+        )
+    if not ranked:
+        lines.append("(no Burmester four-bar: the task has fewer than two real Burmester points)")
+    lines.append("drive: the driving dyad's Burmester point -> the driven one's. size: the total length of the "
+                 "links in task sizes. mu min: smallest transmission angle over the travel through the five poses")
+    return "\n".join(lines)
+
+
+def _pivots_five(args: argparse.Namespace, spec: TaskSpec) -> int:
+    """``burmester pivots`` of five poses: the four-bars of the Burmester points."""
+    if args.rank_by == "pareto":
+        raise UsageError("five poses have at most twelve Burmester four-bars, listed whole: rank them by "
+                         "balanced, transmission or compact")
+    if args.json:
+        print(json.dumps(pv.report_burmester(spec, args.rank_by), indent=2))
+    else:
+        ranked = pv.rank_burmester(spec.task(), spec.limits, args.rank_by)
+        print(burmester_table(spec, ranked[: args.top], args.rank_by))
+    return 0
+
+
 def cmd_pivots(args: argparse.Namespace) -> int:
-    """``burmester pivots``: rank the branch-free driving pivots."""
-    spec = _with_grid(_load(args.task), args.grid)
+    """``burmester pivots``: rank the branch-free driving pivots (five
+    poses: the four-bars of the Burmester points)."""
+    spec = _load(args.task)
+    if len(spec.poses) == 5:
+        return _pivots_five(args, spec)
+    spec = _with_grid(spec, args.grid)
     spacing = _spacing(spec, args.spacing)
     if args.json:
         doc = pv.report(spec, args.top, spacing, progress_for(spec.view, "solution map", 16), args.rank_by)
@@ -521,23 +571,29 @@ def cmd_linkage(args: argparse.Namespace) -> int:
     if args.travel is not None and not cad:
         raise UsageError(f"--travel is for CAD exports (.dxf, .svg), not {out}; animate with -o linkage.gif")
     export = _export_module(out) if cad else None
-    filemon = spec.filemon()
-    if args.pivot is None:
-        best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view))
-        if not best:
-            raise UsageError("no branch-free driving pivot in the view; give one with --pivot X Y")
-        pivot = best[0].center
+    if len(spec.poses) == 5:
+        sfb, what = _best_burmester_linkage(args, spec)
+        task = spec.task()
     else:
-        pivot = (args.pivot[0], args.pivot[1])
-    sfb = filemon.four_bar(pivot)
+        filemon = spec.filemon()
+        if args.pivot is None:
+            best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view))
+            if not best:
+                raise UsageError("no branch-free driving pivot in the view; give one with --pivot X Y")
+            pivot = best[0].center
+        else:
+            pivot = (args.pivot[0], args.pivot[1])
+        sfb = filemon.four_bar(pivot)
+        task = filemon.task
+        what = f"driving pivot A0 = {_fmt_point(pivot)}"
     if export is not None:
-        _write_cad(export.linkage, out, sfb, out, task=filemon.task, travel_samples=args.travel or 0, units=units)
+        _write_cad(export.linkage, out, sfb, out, task=task, travel_samples=args.travel or 0, units=units)
     elif animated:
         plot = _plot_module()
         frames = 60 if args.frames is None else args.frames
         fps = 20 if args.fps is None else args.fps
         try:
-            anim = plot.animate(sfb, out, task=filemon.task, frames=frames, fps=fps)
+            anim = plot.animate(sfb, out, task=task, frames=frames, fps=fps)
         except RuntimeError as e:
             raise UsageError(str(e)) from None
         except OSError as e:
@@ -547,12 +603,26 @@ def cmd_linkage(args: argparse.Namespace) -> int:
 
         plt.close("all")
     else:
-        ax = _plot_module().linkage(sfb, task=filemon.task)
+        ax = _plot_module().linkage(sfb, task=task)
         _save(ax.figure, out, _picture_dpi(args))
     state = "branch-free" if sfb.branch_free else "has a branch defect"
-    print(f"wrote {out}: four-bar with driving pivot A0 = {_fmt_point(pivot)}, "
-          f"{sfb.fourbar.grashof}, {state}")
+    print(f"wrote {out}: four-bar with {what}, {sfb.fourbar.grashof}, {state}")
     return 0
+
+
+def _best_burmester_linkage(args: argparse.Namespace, spec: TaskSpec) -> Tuple[burmester.SynthesizedFourBar, str]:
+    """The four-bar ``burmester linkage`` draws for five poses: the best of
+    :func:`burmester.pivots.rank_burmester` that carries the coupler through
+    the poses in order, and how to name it."""
+    if args.pivot is not None:
+        raise UsageError("five poses: the linkage is built from two Burmester points; drop --pivot "
+                         "(burmester pivots lists them all)")
+    ranked = [b for b in pv.rank_burmester(spec.task(), spec.limits) if b.linkage.figures.direction != "none"]
+    if not ranked:
+        raise UsageError(f"{spec.source}: no four-bar of two Burmester points carries the coupler through "
+                         "the five poses in order")
+    b = ranked[0]
+    return b.linkage, f"Burmester points B{b.driving + 1} driving, B{b.driven + 1} driven"
 
 
 #: The finest ``solve --step``: 36,000 rows over a turn.

@@ -20,7 +20,7 @@ This module only chooses between the two rankings and formats the
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Dict, List, NamedTuple, Optional, Tuple
 
 from burmester._burmester import (
     DesignLimits,
@@ -30,14 +30,16 @@ from burmester._burmester import (
     Pivot,
     SolutionMap,
     SynthesizedFourBar,
+    Task,
 )
 
 if TYPE_CHECKING:
     from burmester._burmester import Progress, RankBy
     from burmester.taskfile import TaskSpec
 
-__all__ = ["RANKINGS", "default_spacing", "rank", "check_ranking", "describe_ranking", "transmission_at_poses_deg",
-           "violations", "as_dict", "report"]
+__all__ = ["RANKINGS", "BurmesterLinkage", "default_spacing", "rank", "rank_burmester", "check_ranking",
+           "describe_ranking", "transmission_at_poses_deg",
+           "violations", "linkage_dict", "as_dict", "report", "report_burmester"]
 
 #: The rankings a designer chooses from (``"margin"`` is the fallback when
 #: nothing is acceptable), the default first.
@@ -92,6 +94,43 @@ def rank(smap: SolutionMap, top: int, spacing: Optional[float] = None,
     return smap.best_pivots(top, spacing, rank_by="margin"), "margin"
 
 
+class BurmesterLinkage(NamedTuple):
+    """A four-bar of two Burmester points of a five-pose task, as
+    :func:`rank_burmester` lists it."""
+
+    driving: int
+    """Index of the driving dyad in :meth:`burmester.Task.burmester_points`."""
+    driven: int
+    """Index of the driven dyad."""
+    linkage: SynthesizedFourBar
+    """The four-bar."""
+    score: Optional[float]
+    """Its score by the ranking (:meth:`burmester.SynthesizedFourBar.score`)."""
+    violations: List[str]
+    """The limits it misses, in words (:func:`violations`); empty when
+    acceptable."""
+
+
+def rank_burmester(task: Task, limits: DesignLimits, rank_by: "RankBy" = "balanced") -> List[BurmesterLinkage]:
+    """Every four-bar of two Burmester points of a five-pose task (both
+    choices of the driving dyad, :meth:`burmester.Task.burmester_four_bars`),
+    best first: the acceptable ones (no :func:`violations` of ``limits``) by
+    their score, then the others by their score (None last). ``rank_by`` is
+    ``"balanced"``, ``"transmission"`` or ``"compact"`` (a list of at most
+    twelve has no map to take a Pareto front or margins of)."""
+    if rank_by not in ("balanced", "transmission", "compact"):
+        raise InvalidInputError(
+            f"five poses rank their Burmester four-bars by \"balanced\", \"transmission\" or "
+            f"\"compact\", got {rank_by!r}"
+        )
+    out = [
+        BurmesterLinkage(i, j, sfb, sfb.score(rank_by), violations(sfb.figures, limits))
+        for i, j, sfb in task.burmester_four_bars()
+    ]
+    out.sort(key=lambda b: (bool(b.violations), b.score is None, -(b.score or 0.0)))
+    return out
+
+
 def transmission_at_poses_deg(linkage: SynthesizedFourBar) -> List[Optional[float]]:
     """The transmission angle at each pose, degrees (None where the linkage
     cannot be assembled there in that pose's mode)."""
@@ -127,18 +166,17 @@ def violations(figures: LinkageFigures, limits: DesignLimits) -> List[str]:
     return out
 
 
-def as_dict(pivot: Pivot, limits: Optional[DesignLimits] = None) -> Dict[str, Any]:
-    """A JSON-friendly dict of a pivot and its four-bar (with ``"violations"``
+def linkage_dict(linkage: SynthesizedFourBar, limits: Optional[DesignLimits] = None) -> Dict[str, Any]:
+    """A JSON-friendly dict of a four-bar's figures: its pivots, size, link
+    lengths, Grashof type, transmission and drive (with ``"violations"``
     when ``limits`` is given)."""
-    f = pivot.figures
+    f = linkage.figures
     g, c, cp, r = f.lengths
     d: Dict[str, Any] = {
-        "center": list(pivot.center),
-        "index": list(pivot.index),
-        "margin": pivot.margin,
-        "score": pivot.score,
-        "size": pivot.linkage.size,
-        "size_ratio": pivot.size_ratio,
+        "driving_center": list(linkage.driving[0]),
+        "driven_center": list(linkage.driven[0]),
+        "size": linkage.size,
+        "size_ratio": linkage.size_ratio,
         "ground": g,
         "crank": c,
         "coupler": cp,
@@ -146,15 +184,52 @@ def as_dict(pivot: Pivot, limits: Optional[DesignLimits] = None) -> Dict[str, An
         "grashof": f.grashof,
         "input_full": f.input_full,
         "link_ratio": f.link_ratio,
-        "transmission_deg": transmission_at_poses_deg(pivot.linkage),
+        "transmission_deg": transmission_at_poses_deg(linkage),
         "min_transmission_deg": f.min_transmission_deg,
         "direction": f.direction,
         "modes": list(f.modes),
-        "ranked_by": pivot.ranked_by,
     }
     if limits is not None:
         d["violations"] = violations(f, limits)
     return d
+
+
+def as_dict(pivot: Pivot, limits: Optional[DesignLimits] = None) -> Dict[str, Any]:
+    """A JSON-friendly dict of a pivot and its four-bar (:func:`linkage_dict`
+    with the pivot's place in the map, margin, score and ranking)."""
+    d: Dict[str, Any] = {
+        "center": list(pivot.center),
+        "index": list(pivot.index),
+        "margin": pivot.margin,
+        "score": pivot.score,
+        "ranked_by": pivot.ranked_by,
+    }
+    d.update(linkage_dict(pivot.linkage, limits))
+    return d
+
+
+def report_burmester(spec: "TaskSpec", rank_by: "RankBy" = "balanced") -> Dict[str, Any]:
+    """The JSON document of ``burmester pivots --json`` for a task of five
+    poses: its Burmester points and every four-bar of two of them,
+    :func:`rank_burmester` order, each with its indices, score and
+    :func:`linkage_dict`."""
+    task = spec.task()
+    lim = spec.limits
+    return {
+        "task": spec.source,
+        "span": task.span,
+        "ranking": rank_by,
+        "limits": {
+            "min_transmission_deg": lim.min_transmission_deg,
+            "max_link_ratio": lim.max_link_ratio,
+            "input": lim.input,
+        },
+        "burmester_points": [{"center": list(c), "circle": list(z)} for c, z in task.burmester_points()],
+        "linkages": [
+            {"driving": b.driving, "driven": b.driven, "score": b.score, **linkage_dict(b.linkage, lim)}
+            for b in rank_burmester(task, lim, rank_by)
+        ],
+    }
 
 
 def report(spec: "TaskSpec", top: int, spacing: Optional[float] = None,

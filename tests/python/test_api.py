@@ -202,7 +202,7 @@ METHODS = {
           "curve_dyad curve_dyads order_arcs branch_free_arcs curve_branch burmester_points burmester_curves burmester_four_bars",
     Filemon: "line_conic is_branch_free classify classify_circle_point circle_signs conic_values four_bar "
              "branch_map margin_map margin solution_map",
-    SynthesizedFourBar: "travel_angles pose_at",
+    SynthesizedFourBar: "travel_angles pose_at score",
     SolutionMap: "point linkage margin best_pivots pareto_front",
     burmester.PivotAtlas: "best_pairs",
     burmester.AtlasPair: "linkage",

@@ -512,5 +512,8 @@ def test_map_of_four_and_five_poses(tmp_path, capsys):
     # What needs Filemon's construction says so.
     assert main(["map", str(four), "--design", "-o", str(tmp_path / "x.png")]) == 2
     assert "--design is for three poses" in capsys.readouterr().err
-    assert main(["pivots", str(five)]) == 2
-    assert "has 5 poses" in capsys.readouterr().err
+    assert main(["pivots", str(four)]) == 2
+    assert "has 4 poses" in capsys.readouterr().err
+    # Five poses list the four-bars of their Burmester points (test_four_five).
+    assert main(["pivots", str(five), "--top", "1"]) == 0
+    assert "Four-bars of the 4 Burmester points" in capsys.readouterr().out

@@ -565,3 +565,55 @@ def test_the_circle_plane_picture_and_command(tmp_path):
     five.write_text("".join(f"[[pose]]\nx = {x!r}\ny = {y!r}\nangle_deg = {math.degrees(a)!r}\n\n"
                             for x, y, a in FIVE))
     assert main(["map", str(five), "--plane", "circle", "-o", str(tmp_path / "f.png")]) == 2
+
+
+def test_five_pose_task_files_rank_and_draw_their_burmester_four_bars(tmp_path, capsys):
+    """``burmester pivots`` and ``linkage`` on a five-pose task file: every
+    four-bar of two Burmester points, the known linkage (A0 driving, B0
+    driven: branch-free, in order counter-clockwise) first."""
+    import json
+
+    from burmester import pivots as pv
+    from burmester.cli import main
+
+    path = tmp_path / "five.toml"
+    path.write_text("".join(f"[[pose]]\nx = {x!r}\ny = {y!r}\nangle_deg = {math.degrees(a)!r}\n\n"
+                            for x, y, a in FIVE))
+    t = Task(FIVE)
+    ranked = pv.rank_burmester(t, burmester.DesignLimits())
+    assert len(ranked) == len(t.burmester_four_bars()) == 12
+    best = ranked[0]
+    points = t.burmester_points()
+    assert close(points[best.driving][0], A0, 1e-8) and close(points[best.driven][0], B0, 1e-8)
+    assert best.violations == [] and best.linkage.figures.direction == "ccw"
+    assert best.score == best.linkage.score("balanced")
+    # Acceptable first, each part by its score.
+    flags = [bool(b.violations) for b in ranked]
+    assert flags == sorted(flags)
+    ok = [b.score for b in ranked if not b.violations]
+    assert ok == sorted(ok, reverse=True)
+    # The score is the documented formula of the linkage's figures.
+    f = best.linkage.figures
+    want = math.sin(math.radians(f.min_transmission_deg)) / math.sqrt(best.linkage.size_ratio * f.link_ratio)
+    assert best.score == pytest.approx(want, rel=1e-12)
+    assert best.linkage.score("transmission") == pytest.approx(math.radians(f.min_transmission_deg))
+    with pytest.raises(InvalidInputError):
+        best.linkage.score("pareto")
+
+    assert main(["pivots", str(path), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert len(doc["burmester_points"]) == 4 and len(doc["linkages"]) == 12
+    first = doc["linkages"][0]
+    assert (first["driving"], first["driven"]) == (best.driving, best.driven)
+    # The file's angles went through degrees: the same linkage to rounding.
+    assert close(first["driving_center"], best.linkage.driving[0], 1e-9) and first["violations"] == []
+    assert main(["pivots", str(path), "--top", "2"]) == 0
+    table = capsys.readouterr().out
+    assert f"B{best.driving + 1} -> B{best.driven + 1}" in table.splitlines()[6]
+    assert main(["pivots", str(path), "--rank-by", "pareto"]) == 2
+    capsys.readouterr()
+
+    out = tmp_path / "five.png"
+    assert main(["linkage", str(path), "-o", str(out)]) == 0
+    assert "B1 driving, B2 driven" in capsys.readouterr().out and out.stat().st_size > 1000
+    assert main(["linkage", str(path), "--pivot", "0", "0", "-o", str(tmp_path / "p.png")]) == 2

@@ -883,6 +883,23 @@ impl PySynthesizedFourBar {
     pub(crate) fn size_ratio(&self) -> f64 {
         self.inner.size() / self.task.span()
     }
+    /// The linkage's score by a ranking (`RankBy::score`); None without a
+    /// feasible travel.
+    #[pyo3(signature = (rank_by = "balanced"))]
+    fn score(&self, rank_by: &str) -> PyResult<Option<f64>> {
+        let rank = rank_by.parse::<burmester::RankBy>().py()?;
+        if matches!(rank, burmester::RankBy::Pareto | burmester::RankBy::Margin) {
+            return Err(crate::errors::invalid(
+                "unknown_name",
+                format!(
+                    "a linkage alone has no {rank_by:?} score; use \"balanced\", \"transmission\" \
+                     or \"compact\""
+                ),
+            ));
+        }
+        let f = &self.inner.figures;
+        Ok(rank.score(f.min_transmission, self.size_ratio(), f.link_ratio))
+    }
     #[getter]
     fn driving(&self) -> (Xy, Xy) {
         dyad_tuple(&self.inner.driving)
