@@ -340,7 +340,7 @@ fn a_driving_center_at_a_pole_or_at_c0_is_a_boundary() {
     let t = example();
     let f = t.filemon(C0).unwrap();
     let s = t.scale();
-    for (k, p) in f.special_points().into_iter().enumerate() {
+    for (k, &p) in f.special_points().iter().enumerate() {
         let is_c0 = k == 3;
         for q in [p, p + Vector2::new(0.5e-12, -0.5e-12) * s] {
             assert_eq!(f.classify(q, Method::Conic).unwrap(), Branch::Boundary);

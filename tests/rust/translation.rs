@@ -340,7 +340,7 @@ fn the_conics_are_exact_on_the_transformed_lines() {
         for (k, line) in f.all_lines().iter().enumerate() {
             let conic = f.line_conic(k + 1).unwrap();
             // The curve passes through the finite poles and C0.
-            for q in f.special_points() {
+            for &q in f.special_points() {
                 let gr = conic.gradient(q).norm();
                 assert!(conic.evaluate(q).abs() <= 1e-12 * gr * t.scale(), "{q:?}");
             }

@@ -131,6 +131,9 @@ pub struct Filemon {
     lines: FilemonLines,
     /// The transformed line of each pose's direction, `g_k`.
     conics: [Conic; 3],
+    /// The finite poles, then `C0`, in the first `n_special` entries.
+    special: [Point2<f64>; 4],
+    n_special: usize,
 }
 
 impl Task {
@@ -194,11 +197,20 @@ impl Filemon {
         let lines = FilemonLines::new(task, driven)?;
         let c1 = driven.circle;
         let conics = [0, 1, 2].map(|k| maps.line_conic(c1, lines.all_lines()[k].direction));
+        let mut special = [driven.center; 4];
+        let mut n_special = 0;
+        for p in maps.poles().into_iter().flatten() {
+            special[n_special] = p;
+            n_special += 1;
+        }
+        special[n_special] = driven.center;
         Ok(Filemon {
             task: *task,
             maps,
             lines,
             conics,
+            special,
+            n_special: n_special + 1,
         })
     }
 
@@ -390,24 +402,16 @@ impl Filemon {
     /// The points every transformed curve passes through: the finite
     /// poles among `P12, P13, P23` (all three unless two poses differ by a
     /// pure translation), then `C0`.
-    pub fn special_points(&self) -> Vec<Point2<f64>> {
-        self.specials().collect()
-    }
-
-    /// [`special_points`](Self::special_points), without allocating.
-    pub(crate) fn specials(&self) -> impl Iterator<Item = Point2<f64>> + '_ {
-        self.maps
-            .poles()
-            .into_iter()
-            .flatten()
-            .chain(core::iter::once(self.driven().center))
+    pub fn special_points(&self) -> &[Point2<f64>] {
+        &self.special[..self.n_special]
     }
 
     /// Whether `p` is within [`tolerance::POINT`] (relative to the task's
     /// size) of a finite pole or of `C0`, where all the conics meet.
     pub(crate) fn at_special_point(&self, p: Point2<f64>) -> bool {
         let tol = tolerance::POINT * self.task.scale();
-        self.specials()
+        self.special_points()
+            .iter()
             .any(|q| (q.x - p.x).abs() <= tol && (q.y - p.y).abs() <= tol)
     }
 

@@ -294,7 +294,7 @@ impl Filemon {
         let tol = tolerance::POINT * self.task().scale();
         let y = grid.y(j);
         let xmin = grid.viewport().xmin;
-        for p in self.specials() {
+        for p in self.special_points() {
             if (p.y - y).abs() > tol {
                 continue;
             }
