@@ -34,9 +34,9 @@
 use core::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use burmester::{
-    AssemblyMode, CircleOrLine, Conic, Constraints, Control, Cremona, DegenerateError,
-    DesignLimits, Direction, Dyad, Error, FourBar, Grashof, Grid, InputRequirement, InvalidInput,
-    Line, Method, Point2, Pole, Pose, RankBy, SolutionMap, Task, Vector2, Viewport,
+    AssemblyMode, CircleOrLine, Conic, Constraints, Control, DegenerateError, DesignLimits,
+    Direction, Dyad, Error, FourBar, Grashof, Grid, InputRequirement, InvalidInput, Line, Method,
+    Point2, Pole, Pose, RankBy, SolutionMap, Task, Vector2, Viewport,
 };
 
 /// Reads numbers from the fuzzer's bytes; past the end everything is zero.
@@ -369,17 +369,44 @@ fn task(inp: &mut Input<'_>) -> Option<Task> {
     }
 }
 
-/// The three-position maps of a task of three poses.
-fn cremona(t: &Task) -> &Cremona {
-    t.cremona()
-        .expect("a task of three poses has the three-position maps")
+/// The finite poles of a task of three poses: all three, unless two poses
+/// differ by a pure translation.
+fn finite_poles(t: &Task) -> Vec<Point2<f64>> {
+    t.poles().iter().filter_map(Pole::finite).collect()
+}
+
+/// A task of three poses with a pure translation: no pole triangle (a typed
+/// error naming the pair), the pair's pole at infinity, a positive scale.
+fn check_translated(t: &Task) {
+    let e = t
+        .cremona()
+        .expect_err("a task with a pole at infinity has no pole triangle");
+    message(&e);
+    let Error::Degenerate(DegenerateError::PureTranslation { i, j }) = e else {
+        panic!("unexpected error {e:?}");
+    };
+    let pairs = [(1, 2), (1, 3), (2, 3)];
+    let k = pairs.iter().position(|&q| q == (i, j)).expect("a pair");
+    assert!(matches!(t.poles()[k], Pole::AtInfinity { .. }));
+    let at_hand = finite_poles(t);
+    assert!(!at_hand.is_empty() && at_hand.len() < 3);
+    for p in &at_hand {
+        finite_pt("pole", *p);
+    }
+    let s = t.scale();
+    assert!(s.is_finite() && s > 0.0, "scale {s}");
+    for r in t.rotations() {
+        finite("rotation", r);
+    }
 }
 
 fn check_task(t: &Task) {
     assert_eq!(t.len(), 3);
-    let cr = cremona(t);
+    let Ok(cr) = t.cremona() else {
+        return check_translated(t);
+    };
     // The general poles of three poses are the Cremona poles, bit for bit
-    // (a pure translation is rejected for three poses).
+    // (a task with a pure translation has no Cremona: checked above).
     let poles = t.poles();
     assert_eq!(poles.len(), 3);
     for (k, (p, q)) in poles.iter().zip(cr.poles()).enumerate() {
@@ -451,15 +478,19 @@ fn check_map(t: &Task, what: &str, p: Point2<f64>, r: burmester::Result<Point2<f
 
 /// Points that exercise the special places of a task.
 fn probe_points(inp: &mut Input<'_>, t: &Task, extra: &[Point2<f64>]) -> Vec<Point2<f64>> {
-    let cr = cremona(t);
-    let mut pts: Vec<Point2<f64>> = cr.poles().to_vec();
-    pts.extend(cr.image_poles());
+    let finite = finite_poles(t);
+    let mut pts: Vec<Point2<f64>> = finite.clone();
+    if let Ok(cr) = t.cremona() {
+        pts.extend(cr.image_poles());
+    }
     pts.extend_from_slice(extra);
     let s = t.scale();
-    for c in [cr.pole_circle(), cr.image_pole_circle()] {
-        if let CircleOrLine::Circle { center, radius } = c {
-            let a = inp.nice();
-            pts.push(center + Vector2::new(a.cos(), a.sin()) * radius);
+    if let Ok(cr) = t.cremona() {
+        for c in [cr.pole_circle(), cr.image_pole_circle()] {
+            if let CircleOrLine::Circle { center, radius } = c {
+                let a = inp.nice();
+                pts.push(center + Vector2::new(a.cos(), a.sin()) * radius);
+            }
         }
     }
     let n = inp.count(1, 6);
@@ -471,7 +502,7 @@ fn probe_points(inp: &mut Input<'_>, t: &Task, extra: &[Point2<f64>]) -> Vec<Poi
                 base + Vector2::new(inp.nice(), inp.nice()) * (s * 1e-12)
             }
             _ => {
-                let base = cr.poles()[0];
+                let base = finite[0];
                 base + Vector2::new(inp.nice(), inp.nice()) * s
             }
         };
@@ -486,7 +517,8 @@ pub fn task_maps(data: &[u8]) {
     let mut inp = Input::new(data);
     let Some(t) = task(&mut inp) else { return };
     check_task(&t);
-    let cr = cremona(&t);
+    // With a pure translation the maps run by the linear form (no Cremona).
+    let cr = t.cremona().ok();
     let pts = probe_points(&mut inp, &t, &[]);
     let moderate = inp.moderate;
     for (i, j) in [(0, 1), (2, 4)] {
@@ -497,10 +529,14 @@ pub fn task_maps(data: &[u8]) {
     }
     for p in pts {
         let circle = t.circle_point(p);
-        same("Task and Cremona", &circle, &cr.circle_point(p));
+        if let Some(cr) = cr {
+            same("Task and Cremona", &circle, &cr.circle_point(p));
+        }
         check_map(&t, "circle point", p, circle.clone());
         let center = t.center_point(p);
-        same("Task and Cremona", &center, &cr.center_point(p));
+        if let Some(cr) = cr {
+            same("Task and Cremona", &center, &cr.center_point(p));
+        }
         check_map(&t, "center point", p, center);
         if let Ok(d) = t.dyad_from_center(p) {
             assert_eq!(d, Dyad::new(p, circle.expect("the dyad's circle point")));
@@ -663,11 +699,14 @@ fn more_poses(inp: &mut Input<'_>, t: &Task) {
 pub fn filemon_classify(data: &[u8]) {
     let mut inp = Input::new(data);
     let Some(t) = task(&mut inp) else { return };
-    let poles = cremona(&t).poles();
+    let poles = finite_poles(&t);
     let c0 = match inp.byte() % 3 {
         0 => inp.point(),
         1 => poles[0] + Vector2::new(inp.nice(), inp.nice()) * t.scale(),
-        _ => poles[usize::from(inp.byte()) % 3] + Vector2::new(inp.nice(), inp.nice()) * 1e-9,
+        _ => {
+            poles[usize::from(inp.byte()) % poles.len()]
+                + Vector2::new(inp.nice(), inp.nice()) * 1e-9
+        }
     };
     inp.note_point(c0);
     let f = match t.filemon(c0) {
@@ -1223,7 +1262,7 @@ pub fn solution_map(data: &[u8]) {
     let mut inp = Input::new(data);
     let Some(t) = task(&mut inp) else { return };
     let s = t.scale();
-    let p12 = cremona(&t).poles()[0];
+    let p12 = finite_poles(&t)[0];
     let near = |inp: &mut Input<'_>, _: &Task| p12 + Vector2::new(inp.nice(), inp.nice()) * s;
     let c0 = if inp.byte() % 2 == 0 {
         inp.point()

@@ -549,12 +549,23 @@ class Task:
     Raises :class:`InvalidInputError` for NaN or infinite numbers or fewer
     than three or more than five poses (``cause == "pose_count"``), and
     :class:`DegenerateError` when two poses are equal, when all poses are
-    rotations about one point, or, for three poses, when two differ by a
-    pure translation (their angles agree within 1e-6 rad, so their pole is
-    at infinity: rotate one pose by at least 1e-6 rad).
+    rotations about one point, or when all have one angle
+    (``cause == "all_translations"``: with three poses every dyad's crank
+    would be the same vector).
 
-    The three-position maps run in a frame attached to the pole triangle, so
-    results do not depend on where the task is or how large it is.
+    Two poses whose angles agree within 1e-6 rad (modulo 2 pi) differ by a
+    pure translation: their pole is at infinity (:attr:`poles` gives its
+    direction). A three-pose task with one works: the circle and center
+    points, dyads, four-bars, Filemon's construction, the branch maps and
+    the solution maps run by the linear form, which needs no pole; only
+    what needs three finite poles (:meth:`image_poles`,
+    :meth:`image_poles_in`, :meth:`pole_circle`, :meth:`image_pole_circle`,
+    :meth:`pole_triangle_angles`) raises :class:`DegenerateError` with
+    ``cause == "pure_translation"`` and the pair as ``i``, ``j``.
+
+    The three-position maps run in a frame attached to the pole triangle (or
+    to a finite pole and the task's scale), so results do not depend on
+    where the task is or how large it is.
     """
 
     def __new__(cls, poses: Sequence[Sequence[float]]) -> Task:
@@ -572,8 +583,11 @@ class Task:
         3), ..., (2, 3), ...``, as :attr:`poles`), each wrapped into (-pi, pi]."""
     @property
     def scale(self) -> float:
-        """The size of the task (for three poses the pole triangle's): the
-        unit of the relative tolerances."""
+        """The size of the task: the unit of the relative tolerances. For
+        three poses the pole triangle's longest side, or, with a pure
+        translation between two poses, the largest distance between two of
+        the pose positions and the finite poles; for four or five poses the
+        largest distance between two pose positions."""
     @property
     def span(self) -> float:
         """The task's size as a designer reads it: the largest distance

@@ -123,7 +123,9 @@ import numpy.typing as npt
 
 import burmester
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
-from burmester.taskfile import DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for
+from burmester.taskfile import (
+    DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
+)
 
 if TYPE_CHECKING:
     from burmester._burmester import Method, Mode
@@ -614,8 +616,9 @@ def _center_drawing(filemon: Filemon, grid: Grid, method: Method, free: Optional
     poles = [(p.pair, p.point) for p in task.poles if p.point is not None]
     for (i, j), p in poles:
         d.marker("POLES", p, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
-    d.polyline("POLE_TRIANGLE", [p for _, p in poles], "pole triangle", closed=True)
-    _circle_or_line(d, "POLE_CIRCLE", task.pole_circle(), extent, "pole circle")
+    if has_pole_triangle(task):  # not with a pole at infinity
+        d.polyline("POLE_TRIANGLE", [p for _, p in poles], "pole triangle", closed=True)
+        _circle_or_line(d, "POLE_CIRCLE", task.pole_circle(), extent, "pole circle")
     d.marker("DRIVEN_PIVOT", filemon.driven_center, "driven crank's fixed pivot C0", "C0" if labels else None)
     for k, p in enumerate(over.pivots or [], start=1):
         d.marker("BEST_PIVOTS", p, f"driving pivot {k}", str(k) if labels else None)
@@ -643,9 +646,10 @@ def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
         if seg is not None:
             d.polyline(f"LINE_{k}", seg, f"line C1 C'{k} (pose {k})" + (", middle" if k == middle else ""))
     task = filemon.task
-    for name, p in zip(("P12", "P13", "P'23"), task.image_poles()):
-        d.marker("IMAGE_POLES", p, f"image pole {name}", name if labels else None)
-    _circle_or_line(d, "IMAGE_POLE_CIRCLE", task.image_pole_circle(), extent, "image-pole circle")
+    if has_pole_triangle(task):  # not with a pole at infinity
+        for name, p in zip(("P12", "P13", "P'23"), task.image_poles()):
+            d.marker("IMAGE_POLES", p, f"image pole {name}", name if labels else None)
+        _circle_or_line(d, "IMAGE_POLE_CIRCLE", task.image_pole_circle(), extent, "image-pole circle")
     for k, p in enumerate(filemon.fixed_pivot_images, start=1):
         name = f"C'{k}" + (" = C0" if k == 1 else "")
         d.marker("FIXED_PIVOT_IMAGES", p, f"fixed pivot image {name}", name if labels else None)

@@ -57,7 +57,9 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
 
 import burmester
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
-from burmester.taskfile import DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for
+from burmester.taskfile import (
+    DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
+)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -260,7 +262,9 @@ def center_plane(
     side lines extended (``"pole-triangle-sides"``, always defective: the
     paper's property 5); the pole circle (``"pole-circle"``); the poles
     (``"poles"``); the driven crank's fixed pivot ``C0`` (``"driven-pivot"``);
-    and the overlays given.
+    and the overlays given. When two poses differ by a pure translation (a
+    pole at infinity) there is no pole triangle or circle: the finite poles
+    are drawn alone.
 
     Parameters:
         filemon: Filemon's construction for the driven dyad
@@ -327,26 +331,30 @@ def center_plane(
         if isinstance(a, Line2D) and not str(a.get_label()).startswith("_")
     )
 
-    # The poles, the pole triangle, its extended sides and the pole circle.
+    # The poles, the pole triangle, its extended sides and the pole circle;
+    # with a pure translation between two poses (a pole at infinity) there
+    # is no triangle or circle: only the finite poles are drawn.
     task = filemon.task
-    poles = [p.point for p in task.poles if p.point is not None]  # three poses: all finite
-    for a, b in ((0, 1), (1, 2), (2, 0)):
-        seg = clip_line(poles[a], (poles[b][0] - poles[a][0], poles[b][1] - poles[a][1]), extent)
-        if seg:
-            (side,) = ax.plot(
-                [seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]],
-                color="0.55", linestyle=":", linewidth=0.8, zorder=2,
-            )
-            side.set_gid("pole-triangle-sides")
-            if not any(h.get_gid() == "pole-triangle-sides" for h in handles):
-                side.set_label("pole triangle's sides, extended (always defective)")
-                handles.append(side)
-    tri_x = [p[0] for p in poles] + [poles[0][0]]
-    tri_y = [p[1] for p in poles] + [poles[0][1]]
-    (tri,) = ax.plot(tri_x, tri_y, color=POLE_COLOR, linewidth=1.0, zorder=4, label="pole triangle")
-    tri.set_gid("pole-triangle")
-    handles.append(tri)
-    handles.append(_draw_circle(ax, task.pole_circle(), extent, "pole-circle", "pole circle"))
+    named = [(f"P{i}{j}", p.point) for p, (i, j) in zip(task.poles, ((1, 2), (1, 3), (2, 3)))]
+    poles = [pt for _, pt in named if pt is not None]
+    if len(poles) == 3:
+        for a, b in ((0, 1), (1, 2), (2, 0)):
+            seg = clip_line(poles[a], (poles[b][0] - poles[a][0], poles[b][1] - poles[a][1]), extent)
+            if seg:
+                (side,) = ax.plot(
+                    [seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]],
+                    color="0.55", linestyle=":", linewidth=0.8, zorder=2,
+                )
+                side.set_gid("pole-triangle-sides")
+                if not any(h.get_gid() == "pole-triangle-sides" for h in handles):
+                    side.set_label("pole triangle's sides, extended (always defective)")
+                    handles.append(side)
+        tri_x = [p[0] for p in poles] + [poles[0][0]]
+        tri_y = [p[1] for p in poles] + [poles[0][1]]
+        (tri,) = ax.plot(tri_x, tri_y, color=POLE_COLOR, linewidth=1.0, zorder=4, label="pole triangle")
+        tri.set_gid("pole-triangle")
+        handles.append(tri)
+        handles.append(_draw_circle(ax, task.pole_circle(), extent, "pole-circle", "pole circle"))
     handles.append(_markers(ax, poles, "poles", "poles", marker="o", markersize=5, color=POLE_COLOR, zorder=5))
     c0 = filemon.driven_center
     handles.append(_markers(
@@ -354,8 +362,9 @@ def center_plane(
         marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=5,
     ))
     if labels:
-        for name, p in zip(("P12", "P13", "P23"), poles):
-            _label(ax, p, name)
+        for name, p in named:
+            if p is not None:
+                _label(ax, p, name)
         _label(ax, c0, "C0")
 
     # Overlays from the solution-space map.
@@ -707,7 +716,8 @@ def circle_plane(
     (``"defect-wedge"``), ``C1`` and the fixed pivot's images ``C'1 = C0,
     C'2, C'3`` (``"fixed-pivot-images"``), the image poles ``P12, P13, P'23``
     (``"image-poles"``) and the image-pole circle (``"image-pole-circle"``),
-    on which circle points have their center point at infinity.
+    on which circle points have their center point at infinity (neither when
+    two poses differ by a pure translation: a pole is at infinity).
 
     Parameters:
         filemon: Filemon's construction for the driven dyad.
@@ -758,11 +768,15 @@ def circle_plane(
         line.set_gid(f"line-{k}")
         handles.append(line)
 
-    ip = filemon.task.image_poles()
-    handles.append(_draw_circle(ax, filemon.task.image_pole_circle(), extent, "image-pole-circle", "image-pole circle"))
-    handles.append(_markers(
-        ax, ip, "image-poles", "image poles", marker="s", markersize=5, color=POLE_COLOR, zorder=5,
-    ))
+    # A task with a pure translation between two poses has no image poles.
+    ip: List[Tuple[float, float]] = list(filemon.task.image_poles()) if has_pole_triangle(filemon.task) else []
+    if ip:
+        handles.append(_draw_circle(
+            ax, filemon.task.image_pole_circle(), extent, "image-pole-circle", "image-pole circle",
+        ))
+        handles.append(_markers(
+            ax, ip, "image-poles", "image poles", marker="s", markersize=5, color=POLE_COLOR, zorder=5,
+        ))
     images = filemon.fixed_pivot_images
     handles.append(_markers(
         ax, images, "fixed-pivot-images", "fixed pivot seen from the coupler, C'k",

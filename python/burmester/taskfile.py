@@ -167,6 +167,13 @@ def default_curve_view(task: Task) -> Tuple[float, float, float, float]:
     return (mx - half, mx + half, my - half, my + half)
 
 
+def has_pole_triangle(task: Task) -> bool:
+    """Whether a task of three poses has three finite poles (no two poses
+    differ by a pure translation): then it has a pole triangle, pole circles
+    and image poles (``Task.pole_circle`` and the like raise otherwise)."""
+    return len(task) == 3 and all(p.point is not None for p in task.poles)
+
+
 def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> Grid:
     """A square view around the poles, the task's points and both pivots of the
     driven dyad, twice as wide as the box around them, with ``grid`` samples
@@ -184,9 +191,12 @@ def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> Grid:
 
 def default_circle_view(filemon: Filemon) -> Tuple[float, float, float, float]:
     """A square ``(xmin, xmax, ymin, ymax)`` around the driven crank's moving
-    pivot ``C1``, the fixed pivot's images ``C'k`` and the image poles: the
-    default view of the circle-point plane (a picture or a CAD export)."""
-    pts: List[Point] = [filemon.driven_circle, *filemon.fixed_pivot_images, *filemon.task.image_poles()]
+    pivot ``C1``, the fixed pivot's images ``C'k`` and the image poles (when
+    the task has them): the default view of the circle-point plane (a
+    picture or a CAD export)."""
+    pts: List[Point] = [filemon.driven_circle, *filemon.fixed_pivot_images]
+    if has_pole_triangle(filemon.task):
+        pts += filemon.task.image_poles()
     xs = [p[0] for p in pts]
     ys = [p[1] for p in pts]
     cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2

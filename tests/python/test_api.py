@@ -321,8 +321,9 @@ def test_every_error_carries_its_cause_and_fields():
          {"theta2": 0.0}),
         (lambda: Task([(0, 0, 0.3), (0, 0, 0.3), (2, 2, 1.0)]), DegenerateError, "coincident_poses",
          {"i": 1, "j": 2}),
-        (lambda: Task([(0, 0, 0.3), (1, 0, 0.3), (2, 2, 1.0)]), DegenerateError, "pure_translation",
-         {"i": 1, "j": 2}),
+        (lambda: Task([(0, 0, 0.3), (1, 0, 0.3), (2, 2, 1.0)]).pole_circle(), DegenerateError,
+         "pure_translation", {"i": 1, "j": 2}),
+        (lambda: Task([(0, 0, 0.3), (1, 0, 0.3), (2, 2, 0.3)]), DegenerateError, "all_translations", {}),
         (lambda: Task(rot), DegenerateError, "coincident_poles", {}),
         (lambda: t.circle_point(on_circle), DegenerateError, "at_infinity",
          {"what": "circle point", "curve": "pole circle", "x": on_circle[0], "y": on_circle[1]}),
@@ -403,10 +404,12 @@ def test_a_pure_translation_has_its_pole_at_infinity():
     assert math.hypot(dx, dy) == pytest.approx(1.0) and dx == pytest.approx(0.0)
     assert [p.at_infinity for p in t.poles] == [False] * 5 + [True]
     assert "direction=" in repr(p34)
-    # Three poses still need their poles finite.
+    # Three poses take it too; only the pole triangle needs it finite.
+    three = Task(FOUR[1:])
+    assert three.poles[-1].at_infinity
     with pytest.raises(DegenerateError) as e:
-        Task(FOUR[1:])
-    assert e.value.cause == "pure_translation"
+        three.pole_circle()
+    assert (e.value.cause, e.value.i, e.value.j) == ("pure_translation", 2, 3)
 
 
 @pytest.mark.parametrize("poses", [FOUR, FIVE], ids=["4 poses", "5 poses"])

@@ -370,8 +370,11 @@ def test_documented_error_types_and_messages():
     raises(InvalidInputError, "beyond the limit of 1e100",
            lambda: Task([(1e101, 0, 0), (2, 0.5, 0.4), (3, 2, 1.1)]),
            "too_large", name="pose 1 x", value=1e101, limit=1e100)
-    raises(burmester.DegenerateError, "1e-6", lambda: Task([(0, 0, 0.3), (1, 0, 0.3 + 1e-7), (3, 2, 1.1)]),
+    raises(burmester.DegenerateError, "1e-6",
+           lambda: Task([(0, 0, 0.3), (1, 0, 0.3 + 1e-7), (3, 2, 1.1)]).pole_triangle_angles(),
            "pure_translation", i=1, j=2)
+    raises(burmester.DegenerateError, "parallelogram",
+           lambda: Task([(0, 0, 0.3), (1, 0, 0.3 + 1e-7), (3, 2, 0.3)]), "all_translations")
     raises(InvalidInputError, "1e300", lambda: fb4(1e300, 1e300, 1e300, 1e300), "too_large")
 
 

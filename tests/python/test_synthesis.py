@@ -68,7 +68,9 @@ def test_degenerate_and_invalid_inputs(task):
     with pytest.raises(DegenerateError, match="not unique"):
         task.circle_point(poles(task)[0])
     with pytest.raises(DegenerateError, match="translation"):
-        Task([(0, 0, 0.3), (1, 0, 0.3), (2, 2, 1.0)])
+        Task([(0, 0, 0.3), (1, 0, 0.3), (2, 2, 0.3)])
+    with pytest.raises(DegenerateError, match="translation"):
+        Task([(0, 0, 0.3), (1, 0, 0.3), (2, 2, 1.0)]).pole_circle()
     with pytest.raises(DegenerateError, match="equal"):
         Task([(0, 0, 0.3), (0, 0, 0.3), (2, 2, 1.0)])
     with pytest.raises(InvalidInputError, match="3 to 5 poses"):

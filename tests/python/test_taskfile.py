@@ -100,7 +100,8 @@ BAD = [
     (edit("x = 3.0\n", ""), ["pose 3.x", "missing"]),
     (edit("y = 0.5", "y = true"), ["pose 2.y", "expected a number", "true (a boolean)"]),
     (edit("y = 0.5", "y = nan"), ["pose 2.y", "finite"]),
-    (edit("angle_deg = 22.918311805232932", "angle_deg = 0.0"), ["[[pose]]", "pure translation"]),
+    (GOOD.replace("angle_deg = 22.918311805232932", "angle_deg = 0.0").replace(
+        "angle_deg = 63.02535746439056", "angle_deg = 0.0"), ["[[pose]]", "pure translation"]),
     (edit("center = [4.0, -1.0]", "center = [4.0]"), ["driven.center", "expected a point [x, y]"]),
     (edit("center = [4.0, -1.0]", "center = [4.0, -1.0]\ncircle = [1.0, 1.0]"), ["[driven]", "exactly one", "both"]),
     (edit("center = [4.0, -1.0]", "center = [-0.23328871889672342, 5.183154875586894]"),

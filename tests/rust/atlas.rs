@@ -175,6 +175,7 @@ fn driven_centers_without_filemon_are_invalid() {
         .filemon(example::driven_center())
         .unwrap()
         .cremona()
+        .unwrap()
         .poles();
     // A one-sample grid exactly at a pole.
     let p = poles[0];

@@ -3,11 +3,12 @@
 //!
 //! | case | behaviour |
 //! |---|---|
-//! | pure translation between two of three poses | rejected: `DegenerateError::PureTranslation` ("rotate one of the poses by at least 1e-6 rad"); with four or five poses accepted, its pole `Pole::AtInfinity` |
+//! | pure translation between two of three poses | accepted, its pole `Pole::AtInfinity`: the maps, Filemon's construction and the solution maps run by the linear form (`tests/rust/translation.rs`); what needs three finite poles (`Task::cremona`: pole triangle, pole circles, image poles) is `DegenerateError::PureTranslation`; with four or five poses accepted too |
+//! | all three poses with one angle | rejected: `DegenerateError::AllTranslations` (every crank the same vector: parallelograms at their change point) |
 //! | a rotation just above `tolerance::MIN_ROTATION` | accepted; maps accurate to a few `eps / theta` of the poses' spread (1e-9 measured at the bound) |
 //! | coincident poses | rejected: `DegenerateError::CoincidentPoses` |
 //! | rotations about one point (coincident poles) | rejected: `DegenerateError::CoincidentPoles` |
-//! | collinear poles | only in the translation limit (rejected); `CircleOrLine::Line` for collinear points given directly |
+//! | collinear poles | only in the translation limit (a pole at infinity: the linear form); `CircleOrLine::Line` for collinear points given directly |
 //! | driven center point on the pole circle (`C1` at infinity) | `Task::filemon` fails with `DegenerateError::AtInfinity` (with the direction); just off it, everything works |
 //! | a Filemon line tangent to the image-pole circle | the conic is a `Parabola` (no center, no asymptotes, one branch), for `line_to_conic` and in an actual construction |
 //! | a driving center point at a pole or at `C0` | `conic`: `Boundary`; `direct`: `Undefined` at a pole, `Boundary` at `C0`; `simulate`: an error; maps `false`, margin `-0.0` |
@@ -45,27 +46,37 @@ fn points(c: Point2<f64>, r: f64, n: usize) -> Vec<Point2<f64>> {
 }
 
 #[test]
-fn a_pure_translation_is_rejected_with_what_to_do() {
+fn a_pure_translation_has_no_pole_triangle() {
     for (a2, i, j) in [(0.3, 1, 2), (0.3 + 2.0 * PI, 1, 2), (0.3 + 0.9e-6, 1, 2)] {
-        let e = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, a2], [3.0, 2.0, 1.1]]).unwrap_err();
+        let t = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, a2], [3.0, 2.0, 1.1]]).unwrap();
+        let e = t.cremona().unwrap_err();
         assert!(
             matches!(e, Error::Degenerate(DegenerateError::PureTranslation { i: ii, j: jj }) if (ii, jj) == (i, j)),
             "{e:?}"
         );
         let msg = e.to_string();
-        for word in ["translation", "infinity", "rotate one of the poses", "1e-6"] {
+        for word in [
+            "translation",
+            "infinity",
+            "pole triangle",
+            "rotate one of the poses",
+            "1e-6",
+        ] {
             assert!(msg.contains(word), "{msg}");
         }
+        // The maps work without it.
+        let y = Point2::new(1.0, -2.0);
+        assert!((t.center_point(t.circle_point(y).unwrap()).unwrap() - y).norm() < 1e-12);
     }
     // Poses 2 and 3.
-    let e = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, 1.1], [3.0, 2.0, 1.1]]).unwrap_err();
+    let t = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, 1.1], [3.0, 2.0, 1.1]]).unwrap();
     assert!(matches!(
-        e,
+        t.cremona().unwrap_err(),
         Error::Degenerate(DegenerateError::PureTranslation { i: 2, j: 3 })
     ));
     // Four poses need no pole of every pair: the translation's pole is at
     // infinity, perpendicular to the translation, and the three-position
-    // maps are refused.
+    // maps are refused (they need three poses).
     let t = Task::from_xya(&[
         [0.0, 0.0, 0.3],
         [1.0, 0.0, 1.1],
@@ -329,7 +340,7 @@ fn a_driving_center_at_a_pole_or_at_c0_is_a_boundary() {
     let t = example();
     let f = t.filemon(C0).unwrap();
     let s = t.scale();
-    for (k, p) in f.special_points().into_iter().enumerate() {
+    for (k, &p) in f.special_points().iter().enumerate() {
         let is_c0 = k == 3;
         for q in [p, p + Vector2::new(0.5e-12, -0.5e-12) * s] {
             assert_eq!(f.classify(q, Method::Conic).unwrap(), Branch::Boundary);

@@ -226,6 +226,21 @@ impl PyTask {
     fn cremona(&self) -> PyResult<&Cremona> {
         self.inner.cremona().py()
     }
+
+    /// A task of three poses, or the `needs_poses` error naming `method`.
+    fn three_poses(&self, method: &'static str) -> PyResult<()> {
+        if self.inner.len() == 3 {
+            return Ok(());
+        }
+        Err(crate::errors::to_py(
+            burmester::InvalidInput::NeedsPoses {
+                method,
+                required: 3,
+                found: self.inner.len(),
+            }
+            .into(),
+        ))
+    }
 }
 
 #[pymethods]
@@ -348,7 +363,7 @@ impl PyTask {
         }
         // A task of five poses is a misuse, not a point without an answer:
         // raise instead of a mask of False.
-        self.cremona()?;
+        self.three_poses("Task.circle_points")?;
         let t = self.inner;
         map_points(py, centers, move |p| t.circle_point(p))
     }
@@ -364,7 +379,7 @@ impl PyTask {
         }
         // A task of five poses is a misuse, not a point without an answer:
         // raise instead of a mask of False.
-        self.cremona()?;
+        self.three_poses("Task.center_points")?;
         let t = self.inner;
         map_points(py, circles, move |p| t.center_point(p))
     }

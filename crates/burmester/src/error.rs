@@ -416,11 +416,15 @@ pub enum DegenerateError {
     },
     /// Two poses differ by a pure translation (their angles agree within
     /// [`tolerance::MIN_ROTATION`](crate::tolerance::MIN_ROTATION)), so their
-    /// pole is at infinity, where a computation needs it finite.
+    /// pole is at infinity, where a computation needs three finite poles:
+    /// the pole triangle, its angles, the pole circles and the image poles
+    /// ([`Task::cremona`](crate::Task::cremona)).
     #[error(
         "poses {i} and {j} have the same angle (within 1e-6 rad), so the motion between them is \
-         a pure translation and their pole is at infinity; this is not supported here: rotate \
-         one of the poses by at least 1e-6 rad (a few thousandths of a degree)"
+         a pure translation and their pole is at infinity: the task has no pole triangle, pole \
+         circles or image poles (the circle and center points, Filemon's construction and the \
+         solution maps work without them); rotate one of the poses by more than 1e-6 rad if you \
+         need them"
     )]
     PureTranslation {
         /// First pose index (1-based).
@@ -479,11 +483,17 @@ pub enum DegenerateError {
         /// y of the point.
         y: f64,
     },
-    /// Every pose has the same angle: the motion is a pure translation, and
-    /// the Burmester points are not defined (none or infinitely many).
+    /// Every pose has the same angle: the motion is a pure translation. With
+    /// three poses every dyad's crank is one and the same vector (each
+    /// center point's circle point is it moved by a fixed offset), so every
+    /// four-bar is a parallelogram at its change point (or, with the poses
+    /// on a line, no dyad exists); with four or five the Burmester points
+    /// are not defined (none or infinitely many).
     #[error(
-        "every pose has the same angle: the motion is a pure translation, which has no Burmester \
-         points (or infinitely many); rotate a pose"
+        "every pose has the same angle: the motion is a pure translation, for which the synthesis \
+         is degenerate (with three poses every dyad's crank is the same vector, so every four-bar \
+         is a parallelogram at its change point; with more there are no Burmester points, or \
+         infinitely many); rotate a pose"
     )]
     AllTranslations,
     /// The crank rotation does not parametrize the center-point curve (the

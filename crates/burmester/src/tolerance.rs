@@ -14,9 +14,12 @@
 pub const POINT: f64 = 1e-12;
 
 /// Two poses whose angles agree within this many radians (modulo `2 pi`)
-/// differ by a pure translation: their pole is at infinity. The
-/// three-position maps run through the poles and keep a relative accuracy
-/// of a few `eps / theta` near the poses, about `1e-9` at this bound.
+/// differ by a pure translation: their pole is at infinity. Above the
+/// bound the three-position maps run through the poles and keep a relative
+/// accuracy of a few `eps / theta` near the poses, about `1e-9` at this
+/// bound; at or below it they run by the linear form with the poses' own
+/// angles (no pole, no division by `theta`), so the maps change by `O(theta)`
+/// across the bound.
 pub const MIN_ROTATION: f64 = 1e-6;
 
 /// Factor of `f64::EPSILON` for the position analysis' rounding decisions,

@@ -13,7 +13,7 @@ use crate::error::{InvalidInput, Result, try_vec};
 use crate::geom::Grid;
 use crate::linkage::LinkageFigures;
 use crate::linkage::figures::figures;
-use crate::synthesis::three::{Cremona, Filemon, Method};
+use crate::synthesis::three::{Filemon, Maps, Method};
 use crate::synthesis::{Dyad, Motion, SynthesizedFourBar, Task, members_length};
 use crate::tolerance;
 
@@ -218,7 +218,7 @@ impl MapContext {
 /// motion and maps, and the prepared limits and constraints.
 pub(crate) struct Sampler<'a> {
     task: &'a Task,
-    cremona: &'a Cremona,
+    maps: &'a Maps,
     motion: &'a Motion,
     tiny: f64,
     /// The task's coupler point at pose 1 and `1 / Task::span`.
@@ -237,7 +237,7 @@ impl<'a> Sampler<'a> {
         limits.validate()?;
         Ok(Sampler {
             task,
-            cremona: task.three_poses("the solution map")?,
+            maps: task.three_poses("the solution map")?,
             motion: task.motion(),
             tiny: tolerance::POINT * task.scale(),
             point: task.poses()[0].position,
@@ -251,7 +251,7 @@ impl<'a> Sampler<'a> {
     /// circle point by the closed form), or `None` where it does not exist.
     #[inline(always)]
     fn moving_pivots(&self, p: Point2<f64>) -> Option<[Point2<f64>; 3]> {
-        let q = self.cremona.circle_point_fast(p)?;
+        let q = self.maps.circle_point_fast(p)?;
         Some([q, self.motion.first_to(1, q), self.motion.first_to(2, q)])
     }
 

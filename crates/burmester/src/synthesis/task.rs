@@ -13,15 +13,22 @@ use nalgebra::{Point2, Vector2};
 use crate::error::{DegenerateError, InvalidInput, Result, bounded};
 use crate::geom::{PerPose, Pose, Similarity, length};
 use crate::synthesis::motion::{Motion, Pole};
-use crate::synthesis::three::Cremona;
+use crate::synthesis::three::{Cremona, Linear, Maps};
 use crate::tolerance;
 
 /// Three to five poses of the coupler, validated, with their motion.
 ///
 /// Everything that holds for any number of poses (the displacements, the
 /// poles, dyads and the four-bar built from two) is here; what holds for
-/// three poses only (the pole circles, the closed-form maps, Filemon's
-/// conics) is on [`Cremona`], from [`Task::cremona`].
+/// three poses only is on [`Cremona`] (the pole triangle and circles,
+/// which need three finite poles), from [`Task::cremona`], and on
+/// [`Filemon`](crate::Filemon) (Filemon's construction and its conics).
+///
+/// Two of three poses may differ by a pure translation (the same angle
+/// modulo `2 pi`, within [`tolerance::MIN_ROTATION`]): the maps, Filemon's
+/// construction and the solution maps then run by the linear form, which
+/// needs no pole, while [`Task::cremona`] reports
+/// [`DegenerateError::PureTranslation`].
 ///
 /// # Example
 ///
@@ -45,7 +52,7 @@ pub struct Task {
     /// The unit of the relative tolerances (see [`Task::scale`]).
     scale: f64,
     /// The three-position maps (three poses only).
-    cremona: Option<Cremona>,
+    three: Option<Maps>,
 }
 
 impl Task {
@@ -80,9 +87,16 @@ impl Task {
     /// equal; [`DegenerateError::CoincidentPoles`] when every pose is a
     /// rotation about one point; [`InvalidInput::TooSmall`] when the task
     /// is smaller than [`Task::MIN_SCALE`]. For three poses also
-    /// [`DegenerateError::PureTranslation`] when two poses have the same
-    /// angle (modulo `2 pi`, within [`tolerance::MIN_ROTATION`]): the
-    /// three-position maps need their pole.
+    /// [`DegenerateError::AllTranslations`] when all three have one angle
+    /// (every dyad's crank is then one and the same vector).
+    ///
+    /// Two poses whose angles agree within [`tolerance::MIN_ROTATION`]
+    /// (modulo `2 pi`) differ by a pure translation: their pole is
+    /// [`Pole::AtInfinity`]. That is the one rule, for any number of poses;
+    /// a three-pose task with such a pair runs its maps by the linear form
+    /// with the poses' own angles (a rotation below the bound is not
+    /// rounded to zero, so the maps stay those of the given poses and vary
+    /// continuously across the bound).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         let n = poses.len();
         if !(Self::MIN_POSES..=Self::MAX_POSES).contains(&n) {
@@ -114,17 +128,19 @@ impl Task {
         let motion = Motion::new(PerPose::from_slice(poses));
         for (i, j) in motion.pairs() {
             let (a, b) = (&poses[i - 1], &poses[j - 1]);
-            if motion.rotation0(i - 1, j - 1).abs() <= tolerance::MIN_ROTATION {
-                if a.position == b.position {
-                    return Err(DegenerateError::CoincidentPoses { i, j }.into());
-                }
-                if n == 3 {
-                    return Err(DegenerateError::PureTranslation { i, j }.into());
-                }
+            if motion.rotation0(i - 1, j - 1).abs() <= tolerance::MIN_ROTATION
+                && a.position == b.position
+            {
+                return Err(DegenerateError::CoincidentPoses { i, j }.into());
             }
         }
         if n == 3 {
-            Self::three(motion)
+            let poles = motion.poles();
+            if poles.iter().all(|p| p.finite().is_some()) {
+                Self::three(motion)
+            } else {
+                Self::translated(motion)
+            }
         } else {
             Self::more(motion)
         }
@@ -161,7 +177,38 @@ impl Task {
         Ok(Task {
             motion,
             scale: size,
-            cremona: Some(Cremona::new(motion, poles, size)),
+            three: Some(Maps::Poles(Cremona::new(motion, poles, size))),
+        })
+    }
+
+    /// Three poses, two of which differ by a pure translation: the scale is
+    /// the largest distance between two of the pose positions and the
+    /// finite poles (the pole triangle's size has no meaning with a pole at
+    /// infinity).
+    fn translated(motion: Motion) -> Result<Self> {
+        let mut points: Vec<Point2<f64>> = motion.poses().iter().map(|p| p.position).collect();
+        points.extend(motion.poles().iter().filter_map(Pole::finite));
+        if points.len() == 3 {
+            return Err(DegenerateError::AllTranslations.into());
+        }
+        let mut size: f64 = 0.0;
+        for (k, p) in points.iter().enumerate() {
+            for q in &points[k + 1..] {
+                size = size.max(length(q - p));
+            }
+        }
+        if !size.is_finite() {
+            return Err(InvalidInput::Overflow {
+                what: "the task's poles",
+                hint: "pass poses whose poles are representable (coordinates far below 1e300)",
+            }
+            .into());
+        }
+        Self::check_scale(size)?;
+        Ok(Task {
+            motion,
+            scale: size,
+            three: Some(Maps::Linear(Linear::new(motion, size))),
         })
     }
 
@@ -193,7 +240,7 @@ impl Task {
         Ok(Task {
             motion,
             scale: size,
-            cremona: None,
+            three: None,
         })
     }
 
@@ -241,8 +288,10 @@ impl Task {
     }
 
     /// The unit of the relative tolerances: for three poses the size of the
-    /// pole triangle (its longest side), for four or five the largest
-    /// distance between two pose positions.
+    /// pole triangle (its longest side), or, when two poses differ by a pure
+    /// translation, the largest distance between two of the pose positions
+    /// and the finite poles; for four or five poses the largest distance
+    /// between two pose positions.
     pub fn scale(&self) -> f64 {
         self.scale
     }
@@ -260,15 +309,31 @@ impl Task {
             .fold(0.0, f64::max)
     }
 
-    /// The three-position maps (pole circles, closed-form maps, image poles).
+    /// The three-position maps through the poles (pole triangle and
+    /// circles, closed-form maps, image poles).
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::NeedsPoses`] for a task of four or five poses.
+    /// [`InvalidInput::NeedsPoses`] for a task of four or five poses;
+    /// [`DegenerateError::PureTranslation`] when two of the three poses
+    /// differ by a pure translation (a pole at infinity: there is no pole
+    /// triangle). The maps themselves ([`Task::circle_point`],
+    /// [`Task::center_point`]), Filemon's construction and the solution maps
+    /// work for such a task.
     pub fn cremona(&self) -> Result<&Cremona> {
-        self.cremona
-            .as_ref()
-            .ok_or_else(|| self.needs(3, "Task::cremona"))
+        match &self.three {
+            Some(Maps::Poles(c)) => Ok(c),
+            Some(Maps::Linear(l)) => {
+                let (i, j) = l.translation();
+                Err(DegenerateError::PureTranslation { i, j }.into())
+            }
+            None => Err(self.needs(3, "Task::cremona")),
+        }
+    }
+
+    /// The three-position maps, whichever form the task uses.
+    pub(crate) fn maps(&self) -> Option<&Maps> {
+        self.three.as_ref()
     }
 
     /// The error of a method that needs `required` poses.
@@ -316,28 +381,31 @@ impl Task {
     }
 
     /// The circle point (moving pivot at pose 1) whose center point (fixed
-    /// pivot) is `center`: for three poses by [`Cremona::circle_point`].
+    /// pivot) is `center`: for three poses by [`Cremona::circle_point`], or
+    /// by the linear form when two poses differ by a pure translation.
     ///
     /// # Errors
     ///
-    /// As [`Cremona::circle_point`]; [`InvalidInput::NeedsPoses`] for a task
-    /// of another number of poses.
+    /// As [`Cremona::circle_point`] (the pole circle is a line through the
+    /// two finite poles when the third is at infinity);
+    /// [`InvalidInput::NeedsPoses`] for a task of another number of poses.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
-        self.cremona
+        self.three
             .as_ref()
             .ok_or_else(|| self.needs(3, "Task::circle_point"))?
             .circle_point(center)
     }
 
     /// The center point (fixed pivot) of the circle point (moving pivot at
-    /// pose 1) `circle`: for three poses by [`Cremona::center_point`].
+    /// pose 1) `circle`: for three poses by [`Cremona::center_point`], or
+    /// by the linear form when two poses differ by a pure translation.
     ///
     /// # Errors
     ///
     /// As [`Cremona::center_point`]; [`InvalidInput::NeedsPoses`] for a
     /// task of another number of poses.
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
-        self.cremona
+        self.three
             .as_ref()
             .ok_or_else(|| self.needs(3, "Task::center_point"))?
             .center_point(circle)
@@ -413,12 +481,22 @@ mod tests {
 
     #[test]
     fn pure_translation_and_coincident_poses_are_typed() {
-        let e = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, 0.3], [3.0, 2.0, 1.1]]).unwrap_err();
+        // A translation between two of three poses is a task; only what
+        // needs three finite poles is refused.
+        let t = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, 0.3], [3.0, 2.0, 1.1]]).unwrap();
+        let e = t.cremona().unwrap_err();
         assert!(matches!(
             e,
             Error::Degenerate(DegenerateError::PureTranslation { i: 1, j: 2 })
         ));
         assert!(e.to_string().contains("translation"), "{e}");
+        let x = t.circle_point(Point2::new(1.0, -2.0)).unwrap();
+        assert!((t.center_point(x).unwrap() - Point2::new(1.0, -2.0)).norm() < 1e-12);
+        let e = Task::from_xya(&[[0.0, 0.0, 0.3], [1.0, 0.0, 0.3], [3.0, 2.0, 0.3]]).unwrap_err();
+        assert!(matches!(
+            e,
+            Error::Degenerate(DegenerateError::AllTranslations)
+        ));
         let e = Task::from_xya(&[[0.0, 0.0, 0.3], [3.0, 2.0, 1.1], [3.0, 2.0, 1.1]]).unwrap_err();
         assert!(matches!(
             e,

@@ -22,6 +22,11 @@
 //! for the two Filemon lines (directions oriented as `C'_k - C1`). The pole
 //! circle, where the circle point is at infinity, splits nothing: `den`
 //! cancels. The coefficients come from this closed form, not from samples.
+//!
+//! A task with a pure translation between two poses has a pole at infinity;
+//! its curves are written from the linear form instead (see the `linear`
+//! module): the same curves up to a constant factor, through the finite
+//! poles and `C0`, exact conics, and the same sign test.
 
 use core::f64::consts::{FRAC_PI_8, TAU};
 use core::str::FromStr;
@@ -32,7 +37,7 @@ use crate::error::{InvalidInput, Result, finite_point};
 use crate::geom::{Conic, Line, LocalFrame, cross, normalized, wrap_angle};
 use crate::linkage::{AngleInterval, InputRange};
 use crate::synthesis::branch::{Branch, FilemonLines};
-use crate::synthesis::three::Cremona;
+use crate::synthesis::three::{Cremona, Maps};
 use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
 use crate::tolerance;
 
@@ -122,10 +127,13 @@ fn rot_neg((c, s): (f64, f64)) -> Matrix2<f64> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Filemon {
     task: Task,
-    cremona: Cremona,
+    maps: Maps,
     lines: FilemonLines,
     /// The transformed line of each pose's direction, `g_k`.
     conics: [Conic; 3],
+    /// The finite poles, then `C0`, in the first `n_special` entries.
+    special: [Point2<f64>; 4],
+    n_special: usize,
 }
 
 impl Task {
@@ -133,7 +141,10 @@ impl Task {
     /// circle-point plane: the conic `g(Y) = cross(d, P12 - X0) den(Y) +
     /// cross(d, u(Y)) kappa(Y)` through `P12, P13, P23` (module docs), with
     /// `g > 0` where the circle point lies left of the line (times the sign
-    /// of `den`).
+    /// of `den`). With a pole at infinity the conic comes from the linear
+    /// form, `g(Y) = cross(d, adj(M) c - X0 det M)`, through the finite
+    /// poles, with `g > 0` where the circle point lies left of the line
+    /// (times the sign of `det M`).
     ///
     /// # Errors
     ///
@@ -141,7 +152,7 @@ impl Task {
     /// [`InvalidInput::ZeroDirection`] for a zero or non-finite direction,
     /// [`InvalidInput::NeedsPoses`] for a task of four or five poses.
     pub fn line_to_conic(&self, line: &Line) -> Result<Conic> {
-        let cremona = self.three_poses("Task::line_to_conic")?;
+        let maps = self.three_poses("Task::line_to_conic")?;
         finite_point(["line point x", "line point y"], line.point)?;
         if normalized(line.direction).is_none() {
             return Err(InvalidInput::ZeroDirection {
@@ -151,7 +162,7 @@ impl Task {
             }
             .into());
         }
-        Ok(line_conic(cremona, line.point, line.direction))
+        Ok(maps.line_conic(line.point, line.direction))
     }
 
     /// Filemon's construction for the driven dyad whose center point is
@@ -161,7 +172,7 @@ impl Task {
     ///
     /// [`InvalidInput::NeedsPoses`] for a task of four or five poses; as
     /// [`Task::circle_point`] (the driven center point must be off the pole
-    /// circle and the poles); as [`Filemon::new`].
+    /// circle and the finite poles); as [`Filemon::new`].
     pub fn filemon(&self, driven_center: Point2<f64>) -> Result<Filemon> {
         self.three_poses("Task::filemon")?;
         let driven = self.dyad_from_center(driven_center)?;
@@ -169,8 +180,8 @@ impl Task {
     }
 
     /// The three-position maps, or the error naming `method`.
-    pub(crate) fn three_poses(&self, method: &'static str) -> Result<&Cremona> {
-        self.cremona().map_err(|_| self.needs(3, method))
+    pub(crate) fn three_poses(&self, method: &'static str) -> Result<&Maps> {
+        self.maps().ok_or_else(|| self.needs(3, method))
     }
 }
 
@@ -182,15 +193,24 @@ impl Filemon {
     /// [`InvalidInput::NeedsPoses`] for a task of four or five poses; as
     /// [`FilemonLines::new`].
     pub fn new(task: &Task, driven: Dyad) -> Result<Self> {
-        let cremona = *task.three_poses("Filemon::new")?;
+        let maps = *task.three_poses("Filemon::new")?;
         let lines = FilemonLines::new(task, driven)?;
         let c1 = driven.circle;
-        let conics = [0, 1, 2].map(|k| line_conic(&cremona, c1, lines.all_lines()[k].direction));
+        let conics = [0, 1, 2].map(|k| maps.line_conic(c1, lines.all_lines()[k].direction));
+        let mut special = [driven.center; 4];
+        let mut n_special = 0;
+        for p in maps.poles().into_iter().flatten() {
+            special[n_special] = p;
+            n_special += 1;
+        }
+        special[n_special] = driven.center;
         Ok(Filemon {
             task: *task,
-            cremona,
+            maps,
             lines,
             conics,
+            special,
+            n_special: n_special + 1,
         })
     }
 
@@ -199,9 +219,14 @@ impl Filemon {
         &self.task
     }
 
-    /// The task's three-position maps.
-    pub fn cremona(&self) -> &Cremona {
-        &self.cremona
+    /// The task's three-position maps through the poles.
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::cremona`]: [`crate::DegenerateError::PureTranslation`]
+    /// when two poses differ by a pure translation.
+    pub fn cremona(&self) -> Result<&Cremona> {
+        self.task.cremona()
     }
 
     /// The construction in the circle-point plane (lines, extremes, signs).
@@ -350,7 +375,7 @@ impl Filemon {
         let b = match method {
             Method::Conic => self.classify_conic(a0),
             Method::Direct => {
-                let a1 = self.cremona.circle_point(a0)?;
+                let a1 = self.maps.circle_point(a0)?;
                 self.lines.classify_circle_point(a1)
             }
             Method::Simulate => self.classify_simulate(a0)?,
@@ -374,15 +399,15 @@ impl Filemon {
         Ok(self.classify(a0, method)?.is_free())
     }
 
-    /// The points every transformed curve passes through: `P12, P13, P23`
-    /// and `C0`.
-    pub fn special_points(&self) -> [Point2<f64>; 4] {
-        let [a, b, c] = self.cremona.poles();
-        [a, b, c, self.driven().center]
+    /// The points every transformed curve passes through: the finite
+    /// poles among `P12, P13, P23` (all three unless two poses differ by a
+    /// pure translation), then `C0`.
+    pub fn special_points(&self) -> &[Point2<f64>] {
+        &self.special[..self.n_special]
     }
 
     /// Whether `p` is within [`tolerance::POINT`] (relative to the task's
-    /// size) of a pole or of `C0`, where all the conics meet.
+    /// size) of a finite pole or of `C0`, where all the conics meet.
     pub(crate) fn at_special_point(&self, p: Point2<f64>) -> bool {
         let tol = tolerance::POINT * self.task.scale();
         self.special_points()
@@ -481,7 +506,7 @@ fn input_path(range: &InputRange, from: f64, to: f64) -> Option<f64> {
 
 /// The exact transform of the line through `c1` with direction `d` into the
 /// center-point plane, as a conic in the task's local frame.
-fn line_conic(task: &Cremona, c1: Point2<f64>, d: Vector2<f64>) -> Conic {
+pub(super) fn line_conic(task: &Cremona, c1: Point2<f64>, d: Vector2<f64>) -> Conic {
     let (origin, scale) = task.frame();
     let q13 = task.local_p13();
     let (h12, h13) = task.half_angles();
