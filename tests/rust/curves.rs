@@ -885,7 +885,17 @@ proptest! {
             let pole = four.poles().into_iter().find(|p| p.poses == [i + 1, j + 1]).unwrap();
             prop_assert!(pole.point.is_none());
         }
-        let view = view_around(&four, 3.0);
+        // The view around the poses and the finite poles (the curve passes
+        // through them, so it is in view even when it runs far from the
+        // poses).
+        let around = view_around(&four, 3.0);
+        let (mut x0, mut x1, mut y0, mut y1) = (around.xmin, around.xmax, around.ymin, around.ymax);
+        for p in four.poles().iter().filter_map(|p| p.point) {
+            prop_assert!(on_curve(four.center_point_curve(), &four, p, 10.0), "pole {} off the curve", p);
+            let m = 0.1 * four.size();
+            (x0, x1, y0, y1) = (x0.min(p.x - m), x1.max(p.x + m), y0.min(p.y - m), y1.max(p.y + m));
+        }
+        let view = Viewport::new(x0, x1, y0, y1).unwrap();
         let mut n = 0;
         for g in four.center_point_curve().polylines(&view).into_iter().flatten() {
             if let Ok(z) = four.circle_point(g) {
