@@ -464,14 +464,22 @@ class Explorer:
             for art in self._map_artists:
                 art.remove()
             self._map_artists = bp.draw_conics(ax, st.filemon, extent)
-            self._map_artists.append(
-                bp._draw_circle(ax, st.task.pole_circle(), extent, "pole-circle", "pole circle")
-            )
-            poles = [p.point for p in st.task.poles if p.point is not None]  # three poses: all finite
+            # A pure translation between two poses puts their pole at
+            # infinity: no pole circle, no pole triangle, one label hidden.
+            finite = [(p.pair, p.point) for p in st.task.poles if p.point is not None]
+            if len(finite) == 3:
+                self._map_artists.append(
+                    bp._draw_circle(ax, st.task.pole_circle(), extent, "pole-circle", "pole circle")
+                )
+            poles = [p for _, p in finite]
             self._poles.set_data([p[0] for p in poles], [p[1] for p in poles])
-            for name, p in zip(("P12", "P13", "P23"), poles):
-                self._labels[name].xy = p
-            self._triangle.set_data([p[0] for p in poles + poles[:1]], [p[1] for p in poles + poles[:1]])
+            shown = {f"P{i}{j}": p for (i, j), p in finite}
+            for name in ("P12", "P13", "P23"):
+                self._labels[name].set_visible(name in shown)
+                if name in shown:
+                    self._labels[name].xy = shown[name]
+            closed = poles + poles[:1] if len(poles) == 3 else []
+            self._triangle.set_data([p[0] for p in closed], [p[1] for p in closed])
         self._draw_handles(st.task.poses, st.filemon.driven_center, st.driving_center)
 
         self.ax_linkage.clear()

@@ -101,10 +101,15 @@ def assert_shows(ex, task, c0):
         assert len(drawn) == len(expected) > 0
         for d, e in zip(drawn, expected):
             np.testing.assert_array_equal(d, e)
+    finite = [p for p in task.poles if p.point is not None]  # a pure translation's is at infinity
     (poles,) = by_gid(ex.ax_map, "poles")
-    np.testing.assert_array_equal(poles.get_xydata(), [p.point for p in task.poles])
-    labels = {t.get_text(): t.xy for t in ex.ax_map.texts}
-    assert [labels[f"P{i}{j}"] for i, j in ((1, 2), (1, 3), (2, 3))] == [p.point for p in task.poles]
+    np.testing.assert_array_equal(poles.get_xydata().reshape(-1, 2), np.reshape([p.point for p in finite], (-1, 2)))
+    labels = {t.get_text(): t for t in ex.ax_map.texts}
+    for p in task.poles:
+        label = labels["P{}{}".format(*p.pair)]
+        assert label.get_visible() == (p.point is not None)
+        if p.point is not None:
+            assert label.xy == p.point
     for k, (x, y, _) in enumerate(task.poses, start=1):
         (dot,) = by_gid(ex.ax_map, f"pose-{k}")
         np.testing.assert_array_equal(dot.get_xydata(), [[x, y]])
@@ -217,12 +222,23 @@ def test_scrolling_over_a_pose_turns_it(ex):
 # Bad moves
 
 
-def test_a_degenerate_drag_keeps_the_last_good_state_and_says_why(ex):
+def test_a_pure_translation_is_drawn_and_all_translations_are_refused(ex):
     good = drag(ex, (2.0, 0.5), (2.4, 0.7))
+    # Turn pose 3 to pose 1's angle (0): a pure translation between them,
+    # which the core takes (its pole is at infinity: no pole triangle).
+    x3, y3, _ = ex.task.poses[2]
+    mouse(ex, "button_press_event", by_gid(ex.ax_map, "pose-angle-3")[0].get_xydata()[0])
+    mouse(ex, "motion_notify_event", (x3 + 1.0, y3))
+    mouse(ex, "button_release_event", (x3 + 1.0, y3))
+    assert ex.error is None and ex.task.poses[2][2] == pytest.approx(0.0, abs=1e-12)
+    assert_shows(ex, ex.task, C0)
+    assert [p.point is None for p in ex.task.poles] == [False, True, False]
+    (triangle,) = by_gid(ex.ax_map, "pole-triangle")
+    assert len(triangle.get_xydata()) == 0
     good_poses = ex.task.poses
     img = image(ex).copy()
     linkage = ex.linkage()
-    # Turn pose 2 to pose 1's angle (0): a pure translation, refused by the core.
+    # Then pose 2 to the same angle: every pose one angle, refused by the core.
     x, y, _ = good_poses[1]
     mouse(ex, "button_press_event", by_gid(ex.ax_map, "pose-angle-2")[0].get_xydata()[0])
     mouse(ex, "motion_notify_event", (x + 1.0, y))

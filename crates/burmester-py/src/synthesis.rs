@@ -859,7 +859,7 @@ fn method(s: &str) -> PyResult<burmester::Method> {
     name = "SynthesizedFourBar",
     module = "burmester"
 )]
-#[derive(Clone, PartialEq)]
+#[derive(Clone)]
 pub struct PySynthesizedFourBar {
     pub(crate) inner: SynthesizedFourBar,
     /// The task it was built for (for pickling).
@@ -869,6 +869,19 @@ pub struct PySynthesizedFourBar {
 impl PySynthesizedFourBar {
     pub(crate) fn new(task: Task, inner: SynthesizedFourBar) -> Self {
         PySynthesizedFourBar { inner, task }
+    }
+}
+
+/// Equal when built from the same task and dyads, bit for bit: the linkage
+/// and its figures are a function of them (figures that are NaN, as the
+/// transmission of a linkage without a travel, would make a field-wise
+/// comparison say a linkage differs from itself).
+impl PartialEq for PySynthesizedFourBar {
+    fn eq(&self, other: &Self) -> bool {
+        let bits = |d: &Dyad| [d.center.x, d.center.y, d.circle.x, d.circle.y].map(f64::to_bits);
+        self.task == other.task
+            && bits(&self.inner.driving) == bits(&other.inner.driving)
+            && bits(&self.inner.driven) == bits(&other.inner.driven)
     }
 }
 
