@@ -152,6 +152,42 @@ impl Task {
         constraints: &Constraints,
         control: &Control<'_>,
     ) -> Result<PairMap> {
+        let context = self.pair_context(n_driving, n_driven, limits, constraints)?;
+        let judge = Judge::new(self, limits, constraints)?;
+        let mut columns = Columns::new(context.grid.len())?;
+        // The moving pivots at the four poses, once per sample of each axis.
+        let motion = self.motion();
+        let pivots = |d: &Option<CurveDyad>| {
+            d.map(|d| (d.dyad(), [0, 1, 2, 3].map(|k| motion.first_to(k, d.circle))))
+        };
+        let a: Vec<_> = context.driving.iter().map(pivots).collect();
+        let c: Vec<_> = context.driven.iter().map(pivots).collect();
+        fill_rows(n_driving, n_driven, &mut columns, control, |j, i| {
+            let (Some((da, pa)), Some((dc, pc))) = (&a[i], &c[j]) else {
+                return Sample::INVALID;
+            };
+            let fig = figures::<true, 4>(da.center, pa, dc.center, pc, judge.tiny);
+            let free = fig.is_some_and(|f| f.branch_free());
+            judge.sample(fig, free, &[da.center, dc.center], *da, *dc)
+        })?;
+        Ok(PairMap { context, columns })
+    }
+
+    /// What [`Task::pair_map`] computes its map for, without the map: the
+    /// parameter plane, the dyads of both axes, the limits and constraints
+    /// (validated).
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::pair_map`] (but for the allocation of the columns and
+    /// cancelling).
+    pub fn pair_context(
+        &self,
+        n_driving: usize,
+        n_driven: usize,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+    ) -> Result<PairContext> {
         if self.len() != 4 {
             return Err(self.needs(4, "Task::pair_map"));
         }
@@ -170,38 +206,16 @@ impl Task {
             }
             .into());
         }
-        let judge = Judge::new(self, limits, constraints)?;
+        Judge::new(self, limits, constraints)?;
         let four = FourPositions::new(self.poses())?;
         let length = four.parameter_length()?;
-        let grid = Grid::from_bounds(0.0, length, 0.0, length, n_driving, n_driven)?;
-        let driving = four.parameter_samples(n_driving)?;
-        let driven = four.parameter_samples(n_driven)?;
-        let mut columns = Columns::new(grid.len())?;
-        // The moving pivots at the four poses, once per sample of each axis.
-        let motion = self.motion();
-        let pivots = |d: &Option<CurveDyad>| {
-            d.map(|d| (d.dyad(), [0, 1, 2, 3].map(|k| motion.first_to(k, d.circle))))
-        };
-        let a: Vec<_> = driving.iter().map(pivots).collect();
-        let c: Vec<_> = driven.iter().map(pivots).collect();
-        fill_rows(n_driving, n_driven, &mut columns, control, |j, i| {
-            let (Some((da, pa)), Some((dc, pc))) = (&a[i], &c[j]) else {
-                return Sample::INVALID;
-            };
-            let fig = figures::<true, 4>(da.center, pa, dc.center, pc, judge.tiny);
-            let free = fig.is_some_and(|f| f.branch_free());
-            judge.sample(fig, free, &[da.center, dc.center], *da, *dc)
-        })?;
-        Ok(PairMap {
-            context: PairContext {
-                grid,
-                task: *self,
-                driving,
-                driven,
-                limits: *limits,
-                constraints: constraints.clone(),
-            },
-            columns,
+        Ok(PairContext {
+            grid: Grid::from_bounds(0.0, length, 0.0, length, n_driving, n_driven)?,
+            task: *self,
+            driving: four.parameter_samples(n_driving)?,
+            driven: four.parameter_samples(n_driven)?,
+            limits: *limits,
+            constraints: constraints.clone(),
         })
     }
 }
