@@ -87,7 +87,8 @@ def test_pairs_refuses_other_pose_counts(tmp_path, capsys):
     five = tmp_path / "five.toml"
     five.write_text(FOUR_TASK + "[[pose]]\nx = -1.411118156972\ny = 0.5974291264\nangle_deg = 48.044287536536\n")
     assert main(["pairs", str(five)]) == 2
-    assert "pairs is for four poses" in capsys.readouterr().err and "has 5 poses"
+    err = capsys.readouterr().err
+    assert "pairs is for four poses" in err and "has 5 poses" in err
     four = tmp_path / "four.toml"
     four.write_text(FOUR_TASK)
     assert main(["pairs", str(four), "--samples", "1"]) == 2
