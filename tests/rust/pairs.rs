@@ -79,7 +79,7 @@ fn nearest(
         .unwrap()
 }
 
-/// A small deterministic generator (SplitMix64) for choosing cells.
+/// A small deterministic generator (`SplitMix64`) for choosing cells.
 struct Rng(u64);
 
 impl Rng {
