@@ -93,3 +93,20 @@ def test_pairs_refuses_other_pose_counts(tmp_path, capsys):
     four.write_text(FOUR_TASK)
     assert main(["pairs", str(four), "--samples", "1"]) == 2
     assert "--samples must be from 2 to 20000" in capsys.readouterr().err
+
+
+def test_a_four_pose_task_file_carries_limits(tmp_path, capsys):
+    from burmester import DesignLimits, taskfile
+
+    text = FOUR_TASK + '[limits]\nmin_transmission_deg = 50.0\nmax_link_ratio = 6.0\ninput = "crank"\n'
+    spec = taskfile.loads(text, "four.toml")
+    assert spec.limits == DesignLimits(50.0, 6.0, "crank")
+    assert taskfile.loads(taskfile.dumps(spec)).limits == spec.limits
+    four = tmp_path / "four.toml"
+    four.write_text(text)
+    assert main(["pairs", str(four), "--json", "--samples", "150", "--top", "5"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["pairs"]
+    for rec in doc["pairs"]:
+        assert rec["min_transmission_deg"] >= 50.0 and rec["link_ratio"] <= 6.0
+        assert rec["grashof"] in ("crank-rocker", "double-crank")
