@@ -87,7 +87,7 @@ pub struct Pair {
     pub index: (usize, usize),
     /// The complete linkage, `task.four_bar(&driving.dyad(), &driven.dyad())`.
     pub linkage: SynthesizedFourBar,
-    /// Its signed margin (see [`PairContext::margin`]).
+    /// Its signed margin (see [`PairContext::margins`]).
     pub margin: f64,
     /// The linkage's size relative to the task's
     /// ([`SynthesizedFourBar::size`] over [`Task::span`]).
@@ -263,11 +263,6 @@ impl PairContext {
     /// as for the driven three-pose map).
     pub fn margins(&self, branch_free: &[bool]) -> Vec<f64> {
         signed_distances(&self.grid, branch_free)
-    }
-
-    /// The signed margin of pair `k` (see [`PairContext::margins`]).
-    pub fn margin(&self, k: usize, branch_free: &[bool]) -> f64 {
-        self.margins(branch_free)[k]
     }
 
     /// The `k` best pairs, best first, from the map's columns, by `rank_by`
