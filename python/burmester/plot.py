@@ -57,7 +57,7 @@ from burmester._burmester import Filemon, Grid, PairMap, SynthesizedFourBar, Tas
 from burmester.taskfile import DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for
 
 if TYPE_CHECKING:
-    from burmester._burmester import Method, Mode
+    from burmester._burmester import Method, Mode, RankBy
 
 Point = Tuple[float, float]
 Extent = Tuple[float, float, float, float]
@@ -544,7 +544,7 @@ def pair_map(
     pmap: PairMap,
     *,
     pairs: Optional[int] = 5,
-    rank_by: str = "balanced",
+    rank_by: RankBy = "balanced",
     transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
     labels: bool = True,
     legend: bool = True,
@@ -611,13 +611,16 @@ def pair_map(
     best = pmap.best_pairs(pairs, rank_by=rank_by) if pairs else []
     if best:
         g = pmap.grid
-        pts = [tuple(math.degrees(v) for v in g.point(*p.index)) for p in best]
+        pts: List[Point] = []
+        for pair in best:
+            x, y = g.point(*pair.index)
+            pts.append((math.degrees(x), math.degrees(y)))
         handles.append(_markers(
             ax, pts, "pairs", f"best pairs ({rank_by})",
             marker="*", markersize=13, color="#ffd700", markeredgecolor="black", zorder=6,
         ))
-        for k, p in enumerate(pts, start=1):
-            _label(ax, p, str(k))
+        for k, pt in enumerate(pts, start=1):
+            _label(ax, pt, str(k))
     if labels:
         ax.set_title("Pair map: every four-bar of the four poses")
         ax.set_xlabel("driving dyad: crank-rotation parameter, deg (open branch | crossed branch)")
