@@ -22,7 +22,7 @@
 //! `<target>/criterion/burmester_points/completeness.json` for
 //! `benches/report.py`.
 //!
-//! There is no pair-map benchmark: the core has no pair map.
+//! The pair map has its own bench (`pair_map`).
 
 use std::f64::consts::TAU;
 use std::hint::black_box;

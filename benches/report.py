@@ -424,8 +424,24 @@ SECTIONS.append(
             "through its positions at poses 1, 3, 5 and the candidate accepted when the "
             "positions at poses 2 and 4 lie within 1 % of its radius of it. A Burmester "
             "point counts as found by the grid when an accepted candidate's circle point "
-            "(at pose 1) lies within 1e-3 task sizes of it. The core has no pair map, so "
-            "the 1024^2 pair map of the issue is not measured here."
+            "(at pose 1) lies within 1e-3 task sizes of it. The 1024^2 pair map is in "
+            "its own section (`pair_map`)."
+        ),
+    )
+)
+
+SECTIONS.append(
+    Section(
+        title="Four poses: the pair map (`pair_map`)",
+        benches=["pair_map"],
+        prefixes=["pair_map/"],
+        note=(
+            "`Task::pair_map` on poses 1-4 of the worked example of the notes "
+            "(`positions-4-5.md`, section 6): n x n pairs of dyads sampled along the "
+            "center-point curve by the crank-rotation parameter, each with the solution "
+            "map's columns (figures at the four poses, limits, ranking inputs), default "
+            "limits, no constraints, on every core; throughput in pairs. The samples of "
+            "both axes (2n dyads) are included."
         ),
     )
 )

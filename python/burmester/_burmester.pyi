@@ -33,6 +33,8 @@ __all__ = [
     "FourBar",
     "Grid",
     "LinkageFigures",
+    "Pair",
+    "PairMap",
     "Pivot",
     "Pole",
     "SolutionMap",
@@ -777,6 +779,34 @@ class Task:
         travel_samples: int = 64,
         progress: Optional[Progress] = None,
     ) -> SolutionMap: ...
+    def pair_map(
+        self,
+        n_driving: int = 256,
+        n_driven: Optional[int] = None,
+        *,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        input: Optional[InputRequirement] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        progress: Optional[Progress] = None,
+    ) -> PairMap:
+        """Four poses only: the pair map, every linkage of the task on one
+        picture. ``n_driving`` driving dyads and ``n_driven`` (default: as
+        many) driven dyads are sampled along the center-point curve by its
+        parameter ``s`` (radians of crank rotation: the arcs of ``beta2``
+        laid end to end, first on the ``"open"`` solution branch, then on the
+        ``"crossed"`` one; samples at the middles of equal steps), and every
+        pair gets the columns of :class:`SolutionMap`. Keywords as
+        :meth:`Filemon.solution_map` (both pivots must lie on the base
+        plate). Raises :class:`InvalidInputError` (``"needs_poses"``) unless
+        the task has four poses, (``"grid_size"``) for a count of 0, above
+        1e7, or more than 2**32 pairs; :class:`DegenerateError`
+        (``"not_parametrizable"``) when the poses have no compatibility
+        linkage."""
     def line_to_conic(self, point: Point, direction: Point) -> Conic:
         """Three poses only: the exact image in the center-point plane of a
         line of the circle-point plane: a conic through the three poles."""
@@ -1372,6 +1402,167 @@ class SolutionMap:
     ) -> SolutionMap:
         """Rebuilds a map from its state (for pickling)."""
 
+
+@final
+class Pair:
+    """A pair of dyads of a pair map with its linkage (from
+    :meth:`PairMap.best_pairs`)."""
+
+    def __new__(
+        cls,
+        driving: CurveDyad,
+        driven: CurveDyad,
+        index: Tuple[int, int],
+        linkage: SynthesizedFourBar,
+        margin: float,
+        score: float,
+        ranked_by: RankBy,
+    ) -> Pair: ...
+    @property
+    def driving(self) -> CurveDyad:
+        """The driving dyad ``(A0, A1)`` with its place on the curve."""
+    @property
+    def driven(self) -> CurveDyad:
+        """The driven dyad ``(C0, C1)`` with its place on the curve."""
+    @property
+    def index(self) -> Tuple[int, int]:
+        """Its pair ``(j, i)`` in the map: driven sample ``j`` (row), driving
+        sample ``i`` (column)."""
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The complete linkage: ``task.four_bar(driving.center, driven.center)``."""
+    @property
+    def figures(self) -> LinkageFigures:
+        """The linkage's figures (``linkage.figures``)."""
+    @property
+    def margin(self) -> float:
+        """Its signed margin (see :meth:`PairMap.margins`)."""
+    @property
+    def size_ratio(self) -> float:
+        """The linkage's size relative to the task's
+        (:attr:`SynthesizedFourBar.size_ratio`)."""
+    @property
+    def score(self) -> float:
+        """Its score by the ranking that chose it (see
+        :meth:`SolutionMap.best_pivots`)."""
+    @property
+    def ranked_by(self) -> RankBy:
+        """What ranked it."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_state(
+        task: Task,
+        driving: CurveDyad,
+        driven: CurveDyad,
+        index: Tuple[int, int],
+        margin: float,
+        score: float,
+        ranked_by: RankBy,
+    ) -> Pair:
+        """Rebuilds a pair from its state (for pickling)."""
+
+@final
+class PairMap:
+    """The four-position pair map (from :meth:`Task.pair_map`): the columns
+    of :class:`SolutionMap` over pairs of dyads, one read-only NumPy array
+    per column of shape ``(n_driven, n_driving)``: row ``j`` is the driven
+    dyad :attr:`driven_dyads` ``[j]``, column ``i`` the driving dyad
+    :attr:`driving_dyads` ``[i]``. A pair of a dyad with itself is invalid
+    (its ground has no length)."""
+
+    columns: list[str]
+    """The names of the columns, in order."""
+    grashof_names: list[str]
+    """The Grashof class of each code of :attr:`grashof`."""
+    @property
+    def valid(self) -> BoolArray:
+        """The linkage exists (both dyads finite, links of nonzero length)."""
+    @property
+    def branch_free(self) -> BoolArray:
+        """One assembly mode at the four poses."""
+    @property
+    def grashof(self) -> npt.NDArray[np.uint8]:
+        """Grashof class as an index into :attr:`grashof_names`; 255 where invalid."""
+    @property
+    def input_full(self) -> BoolArray:
+        """The driving link turns fully."""
+    @property
+    def direction(self) -> npt.NDArray[np.int8]:
+        """The input rotation that carries the coupler through the four poses
+        in order: 1 ccw, -1 cw, 0 none."""
+    @property
+    def one_circuit(self) -> BoolArray:
+        """The input angles at the poses lie on one circuit."""
+    @property
+    def min_transmission_rad(self) -> npt.NDArray[np.float32]:
+        """Minimum transmission angle over the travel, **radians**; NaN where
+        there is no feasible travel or no linkage."""
+    @property
+    def link_ratio(self) -> npt.NDArray[np.float32]:
+        """Longest over shortest link; NaN where there is no linkage."""
+    @property
+    def size_ratio(self) -> npt.NDArray[np.float32]:
+        """The linkage's size over :attr:`Task.span`; NaN where there is no
+        linkage."""
+    @property
+    def acceptable(self) -> BoolArray:
+        """Feasible, branch-free, and within the limits and constraints."""
+    @property
+    def grid(self) -> Grid:
+        """The parameter plane: ``x`` the driving dyad's curve parameter,
+        ``y`` the driven dyad's, both over ``[0, 2L)`` radians of crank
+        rotation (``grid.x(i)`` is the parameter of column ``i``)."""
+    @property
+    def extent(self) -> Extent:
+        """``(0, 2L, 0, 2L)``, for ``imshow(..., extent=...)``."""
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """``(n_driven, n_driving)``."""
+    @property
+    def driving_dyads(self) -> list[Optional[CurveDyad]]:
+        """The driving dyad of each column (its ``beta2`` and ``branch`` give
+        its parameter); ``None`` where it is at infinity."""
+    @property
+    def driven_dyads(self) -> list[Optional[CurveDyad]]:
+        """The driven dyad of each row; ``None`` where it is at infinity."""
+    @property
+    def task(self) -> Task:
+        """The task."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits behind :attr:`acceptable`."""
+    def linkage(self, j: int, i: int) -> SynthesizedFourBar:
+        """The linkage of pair ``[j, i]`` (driven ``j``, driving ``i``):
+        ``task.four_bar`` of the two dyads."""
+    def margins(self) -> FloatArray:
+        """The signed margin of every pair, shape :attr:`shape`: the distance
+        in the parameter plane (radians of crank rotation) to the nearest
+        pair of the other class in :attr:`branch_free`, positive where
+        branch-free, infinite where the other class is empty."""
+    def best_pairs(
+        self, k: int = 5, min_separation: Optional[float] = None, rank_by: RankBy = "balanced"
+    ) -> list[Pair]:
+        """The ``k`` best pairs, best first, as :class:`Pair` records, by the
+        rankings of :meth:`SolutionMap.best_pivots` (ties to the smaller
+        linkage, then the larger margin of :meth:`margins`). Pairs closer
+        than ``min_separation`` in the parameter plane (default: 2% of its
+        diagonal) to a better one are skipped."""
+    def pareto_front(self) -> list[Pair]:
+        """Every acceptable pair on the Pareto front of the minimum
+        transmission angle and the size ratio, from the most compact to the
+        best transmission."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_state(
+        task: Task,
+        shape: Tuple[int, int],
+        limits: DesignLimits,
+        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        columns: dict[str, Any],
+    ) -> PairMap:
+        """Rebuilds a map from its state (for pickling)."""
 
 # ---------------------------------------------------------------------------
 # The pivot-pair atlas (the public API is burmester.atlas)

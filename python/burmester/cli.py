@@ -28,7 +28,7 @@ import math
 import os
 import sys
 from pathlib import Path
-from typing import IO, TYPE_CHECKING, Any, Callable, List, NoReturn, Optional, Sequence, Tuple
+from typing import IO, TYPE_CHECKING, Any, Callable, Dict, List, NoReturn, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -574,6 +574,16 @@ def cmd_linkage(args: argparse.Namespace) -> int:
     if len(spec.poses) == 5:
         sfb, what = _best_burmester_linkage(args, spec)
         task = spec.task()
+    elif len(spec.poses) == 4:
+        if args.pivot is not None:
+            raise UsageError("--pivot is for three poses; a four-pose task draws its best pair of dyads "
+                             "(see 'burmester pairs')")
+        task = spec.task()
+        best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1)
+        if not best_pairs:
+            raise UsageError(f"no acceptable pair of dyads for {spec.source}; see 'burmester pairs'")
+        sfb = best_pairs[0].linkage
+        what = f"the best pair of dyads, driving pivot A0 = {_fmt_point(best_pairs[0].driving.center)}"
     else:
         filemon = spec.filemon()
         if args.pivot is None:
@@ -623,6 +633,105 @@ def _best_burmester_linkage(args: argparse.Namespace, spec: TaskSpec) -> Tuple[b
                          "the five poses in order")
     b = ranked[0]
     return b.linkage, f"Burmester points B{b.driving + 1} driving, B{b.driven + 1} driven"
+
+
+#: Samples of each axis of ``burmester pairs`` (and of ``linkage`` for four poses).
+PAIR_SAMPLES = 400
+
+
+def _pair_map(spec: TaskSpec, samples: int) -> burmester.PairMap:
+    """The pair map of a four-pose task under its limits, with a progress
+    bar when it is large."""
+    n = len(spec.poses)
+    if n != 4:
+        raise UsageError(f"pairs is for four poses (the pair map); {spec.source} has {n} poses")
+    if not 2 <= samples <= 20000:
+        raise UsageError(f"--samples must be from 2 to 20000, got {samples}")
+    big = samples * samples >= PROGRESS_MIN_POINTS
+    bar = ProgressBar(sys.stderr, "burmester: pair map") if big and sys.stderr.isatty() else None
+    return spec.task().pair_map(samples, limits=spec.limits, progress=bar)
+
+
+def _pair_record(p: burmester.Pair) -> Dict[str, Any]:
+    """One pair of ``burmester pairs --json``."""
+    f = p.figures
+
+    def dyad(d: burmester.CurveDyad) -> Dict[str, Any]:
+        return {"center": list(d.center), "circle": list(d.circle), "beta2_deg": math.degrees(d.beta2),
+                "branch": d.branch}
+
+    return {
+        "index": list(p.index),
+        "driving": dyad(p.driving),
+        "driven": dyad(p.driven),
+        "lengths": dict(zip(("ground", "crank", "coupler", "rocker"), f.lengths)),
+        "grashof": f.grashof,
+        "direction": f.direction,
+        "min_transmission_deg": f.min_transmission_deg,
+        "link_ratio": f.link_ratio,
+        "size_ratio": p.size_ratio,
+        "margin": p.margin,
+        "score": p.score,
+        "ranked_by": p.ranked_by,
+    }
+
+
+def pair_table(spec: TaskSpec, pairs: Sequence[burmester.Pair], ranked_by: str) -> str:
+    """The text table of ``burmester pairs``."""
+    lines = [
+        f"Pairs of dyads for {spec.source} (task size {spec.task().span:.3g}), "
+        f"{pv.describe_ranking(ranked_by)} (acceptable under the limits)",
+        f"{'#':>2} | {'A0 (x, y)':>18} | {'C0 (x, y)':>18} | {'size':>6} | {'ground':>7} {'crank':>7} "
+        f"{'coupler':>7} {'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'drive':<11}",
+    ]
+    for k, p in enumerate(pairs, start=1):
+        f = p.figures
+        g, c, cp, r = f.lengths
+        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
+        drive = f"{f.direction} {f.modes[0] or ''}".strip()
+        lines.append(
+            f"{k:>2} | {_fmt_point(p.driving.center):>18} | {_fmt_point(p.driven.center):>18} | "
+            f"{_fmt_size(p.size_ratio)} | {g:7.3f} {c:7.3f} {cp:7.3f} {r:7.3f} | {f.grashof:<14} | "
+            f"{mt} | {drive:<11}"
+        )
+    if not pairs:
+        lines.append("(no acceptable pair of dyads)")
+    lim = spec.limits
+    lines.append(
+        "A0, C0: the driving and driven fixed pivots. size: the total length of the links in task "
+        "sizes. mu min: smallest transmission angle over the travel 1 -> 2 -> 3 -> 4 (degrees). "
+        f"limits: transmission >= {lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
+        + ("" if lim.input == "any" else f", {lim.input} input")
+    )
+    return "\n".join(lines)
+
+
+def cmd_pairs(args: argparse.Namespace) -> int:
+    """``burmester pairs``: rank the pairs of dyads of a four-pose task (the
+    pair map), and draw the map."""
+    spec = _load(args.task)  # the task file's errors first
+    if args.output is not None:
+        _output(args.output, PICTURE_TYPES, args.force)
+    pmap = _pair_map(spec, args.samples)
+    pairs = pmap.best_pairs(args.top, rank_by=args.rank_by)
+    if args.output is not None:
+        ax = _plot_module().pair_map(pmap, pairs=args.top, rank_by=args.rank_by)
+        _save(ax.figure, args.output, _picture_dpi(args))
+    if args.json:
+        doc = {
+            "task": spec.source,
+            "samples": list(pmap.shape),
+            "acceptable_fraction": float(np.mean(pmap.acceptable)),
+            "branch_free_fraction": float(np.mean(pmap.branch_free)),
+            "pairs": [_pair_record(p) for p in pairs],
+        }
+        print(json.dumps(doc, indent=2))
+    else:
+        print(pair_table(spec, pairs, args.rank_by))
+    if args.output is not None and not args.json:
+        print(f"wrote {args.output}: pair map of {spec.source}, {pmap.shape[1]} x {pmap.shape[0]} pairs, "
+              f"{100 * np.mean(pmap.acceptable):.1f}% acceptable")
+    return 0
 
 
 #: The finest ``solve --step``: 36,000 rows over a turn.
@@ -789,6 +898,7 @@ def build_parser() -> argparse.ArgumentParser:
             "  burmester map task.toml -o map.png  center-point plane of your task\n"
             "  burmester pivots task.toml --top 5  the best acceptable driving pivots\n"
             "  burmester linkage task.toml -o linkage.gif\n"
+            "  burmester pairs four.toml -o pairs.png  four poses: the best pairs of dyads and the pair map\n"
             "  burmester map task.toml -o plane.dxf   CAD export (.dxf, .svg), a layer per concept\n"
             "  burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40\n"
             "Without arguments, burmester prints this help."
@@ -848,6 +958,24 @@ def build_parser() -> argparse.ArgumentParser:
                    "pareto: the front of transmission and size, compact to transmitting")
     p.add_argument("--json", action="store_true", help="print JSON instead of a table")
     p.set_defaults(func=cmd_pivots)
+
+    p = sub.add_parser("pairs", help="four poses: rank the pairs of dyads (the pair map)",
+                       description="For a task of four poses, the pair map: every pair of a driving and "
+                       "a driven dyad sampled along the center-point curve, with the solution map's "
+                       "figures; list the best acceptable pairs by --rank-by and draw the map with -o.")
+    p.add_argument("task", metavar="TASK.toml", help="task file of four poses (TOML)")
+    p.add_argument("--samples", type=_positive_int, default=PAIR_SAMPLES, metavar="N",
+                   help=f"dyads sampled along the curve for each pivot, 2 to 20000 (default: {PAIR_SAMPLES})")
+    p.add_argument("--top", type=_positive_int, default=5, help="how many pairs (default: 5)")
+    p.add_argument("--rank-by", choices=pv.RANKINGS, default="balanced",
+                   help="the ranking, as for 'burmester pivots' (default: balanced)")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.add_argument("-o", "--output", default=None,
+                   help="also draw the pair map as a picture (.png, .pdf, ...; matplotlib)")
+    p.add_argument("--dpi", type=_dpi, default=None,
+                   help=f"resolution of the picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
+    p.set_defaults(func=cmd_pairs)
 
     p = sub.add_parser("linkage", help="draw or animate the four-bar of a driving pivot",
                        description="Draw the four-bar at the three poses (.png, .pdf, ...), "

@@ -10,6 +10,9 @@ of the Burmester curves and points of four and five poses.
 - :func:`burmester_plane`: four or five poses: the center-point curve
   coloured by the crank's order class, the poles and the points ``Q_jk``;
   the Burmester points of five poses on their two curves.
+- :func:`pair_map`: four poses: the pair map, every linkage of the task on
+  one picture (driving dyad across, driven dyad up), by category, with
+  transmission contours and the best pairs.
 - :func:`linkage`: a synthesized four-bar drawn at the poses.
 - :func:`animate`: a GIF or MP4 of the four-bar driven through the poses.
 - :func:`poses`, :func:`four_bar`, :func:`solution_map`, :func:`atlas`: one
@@ -56,7 +59,7 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     ) from e
 
 import burmester
-from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
+from burmester._burmester import Filemon, Grid, PairMap, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
     DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
 )
@@ -64,7 +67,7 @@ from burmester.taskfile import (
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-    from burmester._burmester import Method, Mode
+    from burmester._burmester import Method, Mode, RankBy
     from burmester.explorer import Explorer
 
 Point = Tuple[float, float]
@@ -676,6 +679,109 @@ def circle_curve_plane(
         ax.set_xlabel("x")
         ax.set_ylabel("y")
     _finish(ax, extent, legend, handles)
+    return ax
+
+
+# ---------------------------------------------------------------------------
+# The pair map of four poses
+
+
+#: Shading of the pair map's categories: no linkage, a branch defect,
+#: branch-free, branch-free and acceptable.
+PAIR_COLORS = ("#d9d9d9", DEFECT_COLOR, FREE_COLOR, ACCEPT_COLOR)
+PAIR_LABELS = ("no linkage", "branch defect", "branch-free", "branch-free and acceptable")
+
+
+def pair_map(
+    pmap: PairMap,
+    *,
+    pairs: Optional[int] = 5,
+    rank_by: RankBy = "balanced",
+    transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a four-pose pair map (:meth:`burmester.Task.pair_map`): every
+    linkage of the task on one picture.
+
+    Across, the driving dyad's curve parameter; up, the driven dyad's; both
+    in degrees of crank rotation (the ``beta2`` arcs laid end to end, the
+    ``"open"`` solution branch then the ``"crossed"`` one, split by a dotted
+    line, gid ``"branches"``). Draws, bottom to top: the pairs by category
+    (gid ``"pair-map"``, an image: 0 no linkage, 1 a branch defect,
+    2 branch-free, 3 branch-free and acceptable); contours of the minimum
+    transmission angle over the travel where the motion is feasible, at
+    ``transmission_levels`` degrees (gid ``"transmission"``); and the
+    ``pairs`` best pairs by ``rank_by`` (:meth:`PairMap.best_pairs`) as
+    numbered stars (gid ``"pairs"``; ``None`` or 0: none).
+
+    Parameters:
+        pmap: the pair map.
+        pairs: how many of the best pairs to mark.
+        rank_by: their ranking (as :meth:`SolutionMap.best_pivots`).
+        transmission_levels: contour levels, degrees.
+        labels: a title and axis labels.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    cat = np.zeros(pmap.shape, dtype=np.int8)
+    cat[pmap.valid] = 1
+    cat[pmap.branch_free] = 2
+    cat[pmap.acceptable] = 3
+    x0, x1, y0, y1 = (math.degrees(v) for v in pmap.extent)
+    extent = (x0, x1, y0, y1)
+    ax = _new_axes(ax, figsize=(8.0, 6.4))
+    img = ax.imshow(
+        cat, origin="lower", extent=extent, cmap=ListedColormap(list(PAIR_COLORS)), vmin=0, vmax=3,
+        interpolation="nearest", zorder=0,
+    )
+    img.set_gid("pair-map")
+    handles: List[Any] = [
+        Patch(facecolor=c, edgecolor="0.5", label=lab) for c, lab in zip(PAIR_COLORS, PAIR_LABELS)
+    ]
+    # The two solution branches meet at half the parameter's length.
+    half_x, half_y = (x0 + x1) / 2, (y0 + y1) / 2
+    (split,) = ax.plot([half_x, half_x, math.nan, x0, x1], [y0, y1, math.nan, half_y, half_y],
+                       color="0.35", linestyle=":", linewidth=0.9, zorder=2)
+    split.set_gid("branches")
+    feasible = pmap.branch_free & pmap.one_circuit & (pmap.direction != 0)
+    mu = np.where(feasible, np.degrees(pmap.min_transmission_rad.astype(float)), np.nan)
+    if np.isfinite(mu).any():
+        g = pmap.grid
+        xs, ys = g.cell_centers()
+        cs = ax.contour(
+            np.degrees(xs), np.degrees(ys), mu, levels=sorted(transmission_levels),
+            colors="#636363", linewidths=0.8, zorder=3,
+        )
+        cs.set_gid("transmission")
+        ax.clabel(cs, fmt="%g°", fontsize=7)
+        handles.append(Line2D([], [], color="#636363", linewidth=0.8, label="transmission angle, deg"))
+    best = pmap.best_pairs(pairs, rank_by=rank_by) if pairs else []
+    if best:
+        g = pmap.grid
+        pts: List[Point] = []
+        for pair in best:
+            x, y = g.point(*pair.index)
+            pts.append((math.degrees(x), math.degrees(y)))
+        handles.append(_markers(
+            ax, pts, "pairs", f"best pairs ({rank_by})",
+            marker="*", markersize=13, color="#ffd700", markeredgecolor="black", zorder=6,
+        ))
+        for k, pt in enumerate(pts, start=1):
+            _label(ax, pt, str(k))
+    if labels:
+        ax.set_title("Pair map: every four-bar of the four poses")
+        ax.set_xlabel("driving dyad: crank-rotation parameter, deg (open branch | crossed branch)")
+        ax.set_ylabel("driven dyad: parameter, deg")
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("auto")
+    if legend:
+        _legend(ax, handles)
     return ax
 
 

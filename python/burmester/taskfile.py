@@ -37,8 +37,9 @@ required::
 
 Four or five ``[[pose]]`` tables make a four- or five-position task (the
 Burmester curves and points, drawn by ``burmester map``): it takes only
-``[[pose]]`` and ``[view]`` (Filemon's construction and the limits are for
-three poses, so ``[driven]`` and ``[limits]`` are refused), and its default
+``[[pose]]``, ``[view]`` and, for four poses, ``[limits]`` (those of the pair
+map, ``burmester pairs``); Filemon's construction is for three poses, so
+``[driven]`` is refused, and so is ``[limits]`` with five poses. Its default
 view is :func:`default_curve_view`.
 
 The view becomes a :class:`burmester.Grid` and the limits a
@@ -365,7 +366,12 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     # [view]
     view = _view(r, doc, default_view(filemon).extent)
 
-    # [limits]
+    limits = _limits(r, doc)
+    return TaskSpec(tuple(poses), center, view, limits, source)
+
+
+def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
+    """The ``[limits]`` table as a DesignLimits (the defaults when absent)."""
     lim_t = r.table(doc, "limits", required=False) or {}
     keys = ["min_transmission_deg", "max_link_ratio", "input", "require_crank"]
     r.only_keys("limits", lim_t, keys)
@@ -402,8 +408,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
             f"at least {e.min:g}{unit}" if math.isinf(e.max) else f"{e.min:g} to {e.max:g}{unit}"
         )
         raise r.fail(f"limits.{e.name}", f"expected {expected}, found {e.value:g}") from None
-
-    return TaskSpec(tuple(poses), center, view, limits, source)
+    return limits
 
 
 def _view(r: _Reader, doc: Mapping[str, Any], default: Tuple[float, float, float, float]) -> Grid:
@@ -427,19 +432,22 @@ def _view(r: _Reader, doc: Mapping[str, Any], default: Tuple[float, float, float
 def _parse_many(
     r: _Reader, doc: Mapping[str, Any], task: Task, poses: Tuple[Tuple[float, float, float], ...], source: str
 ) -> TaskSpec:
-    """The rest of a task file of four or five poses: ``[view]`` only."""
-    for key in ("driven", "limits"):
+    """The rest of a task file of four or five poses: ``[view]``, and
+    ``[limits]`` for four (the pair map's)."""
+    for key in ("driven",) if len(poses) == 4 else ("driven", "limits"):
         if key in doc:
+            what = "Filemon's construction and its maps" + (") or four (the pair map" if key == "limits" else "")
             raise r.fail(
                 f"[{key}]",
-                f"is for three poses (Filemon's construction and its maps), found {len(poses)} poses; "
-                f"leave [{key}] out of a four- or five-pose task",
+                f"is for three poses ({what}), found {len(poses)} poses; "
+                f"leave [{key}] out of a {'four- or ' if key == 'driven' else ''}five-pose task",
             )
     try:
         default = default_curve_view(task)
     except burmester.BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
-    return TaskSpec(poses, None, _view(r, doc, default), DesignLimits(), source)
+    limits = _limits(r, doc) if len(poses) == 4 else DesignLimits()
+    return TaskSpec(poses, None, _view(r, doc, default), limits, source)
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
@@ -489,7 +497,8 @@ def dumps(spec: TaskSpec) -> str:
         f"grid = [{v.nx}, {v.ny}]  # samples along x and y",
         "",
     ]
-    if spec.driven_center is None:
+    four_with_limits = len(spec.poses) == 4 and spec.limits != DesignLimits()
+    if spec.driven_center is None and not four_with_limits:
         return "\n".join(lines)
     lim = spec.limits
     lines += [

@@ -55,6 +55,8 @@ def samples():
     driven = t.driven_solution_map((-3.0, 4.0), Grid(*VP, 20, 16))
     (pivot,) = smap.best_pivots(1)
     atlas = burmester.pivot_atlas(t, (-6.0, 6.0, -6.0, 6.0, 4, 3), Grid(*VP, 16, 16), link_width=0.1)
+    pmap = Task(BURMESTER_FIVE[:4]).pair_map(40, 36, min_transmission_deg=20.0,
+                                             base_plate=[(-20, -20), (20, -20), (20, 20), (-20, 20)])
     return {
         "Grid": Grid(*VP, 30, 20),
         "Conic": f.conics[0],
@@ -82,12 +84,14 @@ def samples():
         "SolutionMap (driven)": driven,
         "PivotAtlas": atlas,
         "AtlasPair": atlas.best_pairs(1)[0],
+        "PairMap": pmap,
+        "Pair": pmap.best_pairs(1)[0],
     }
 
 
 CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.Configuration, LinkageFigures, Pole,
            Task, Filemon, SynthesizedFourBar, DesignLimits, Pivot, SolutionMap, burmester.PivotAtlas,
-           burmester.AtlasPair]
+           burmester.AtlasPair, burmester.PairMap, burmester.Pair]
 
 
 # ---------------------------------------------------------------------------
@@ -188,6 +192,9 @@ PROPERTIES = {
                  "size_ratio acceptable grid extent shape varying fixed_dyad task limits",
     burmester.PivotAtlas: "branch_free_fraction shape",
     burmester.AtlasPair: "driven driving min_transmission_deg link_ratio margin n_acceptable driven_index driving_index",
+    burmester.PairMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
+                       "size_ratio acceptable grid extent shape driving_dyads driven_dyads task limits",
+    burmester.Pair: "driving driven index linkage figures margin size_ratio score ranked_by",
 }
 
 #: Methods of each class: they take arguments, can fail, or do real work.
@@ -198,7 +205,7 @@ METHODS = {
     FourBar: "from_pivots solve configuration solve_many transmission_angle joints coupler_point coupler_path",
     Task: "rotation image_poles image_poles_in pole_circle image_pole_circle pole_triangle_angles displace "
           "circle_point center_point circle_points center_points dyad crank_angles filemon four_bar "
-          "driven_solution_map line_to_conic center_point_curve circle_point_curve coincidence_points "
+          "driven_solution_map pair_map line_to_conic center_point_curve circle_point_curve coincidence_points "
           "curve_dyad curve_dyads order_arcs branch_free_arcs curve_branch burmester_points burmester_curves burmester_four_bars",
     Filemon: "line_conic is_branch_free classify classify_circle_point circle_signs conic_values four_bar "
              "branch_map margin_map margin solution_map",
@@ -206,6 +213,7 @@ METHODS = {
     SolutionMap: "point linkage margin best_pivots pareto_front",
     burmester.PivotAtlas: "best_pairs",
     burmester.AtlasPair: "linkage",
+    burmester.PairMap: "linkage margins best_pairs pareto_front",
 }
 
 #: Methods without arguments, and why each is a method.
@@ -222,6 +230,8 @@ NO_ARGUMENT_METHODS = {
     (Task, "burmester_curves"): "fails for three or four poses",
     (Task, "burmester_four_bars"): "fails for three or four poses; does work",
     (SolutionMap, "pareto_front"): "does work: scans every sample and builds each linkage on the front",
+    (burmester.PairMap, "margins"): "does work: a distance transform over every pair",
+    (burmester.PairMap, "pareto_front"): "does work: scans every pair and builds each linkage on the front",
 }
 
 
@@ -237,7 +247,7 @@ def test_naming_rule(cls):
         assert _kind(cls, name) == "property", (cls.__name__, name)
     for name in methods:
         assert _kind(cls, name) == "method", (cls.__name__, name)
-    attrs = {"columns", "grashof_names"} if cls is SolutionMap else set()
+    attrs = {"columns", "grashof_names"} if cls in (SolutionMap, burmester.PairMap) else set()
     for name in attrs:
         assert _kind(cls, name) == "class attribute"
     # Nothing public is left unclassified.

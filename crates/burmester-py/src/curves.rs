@@ -109,11 +109,11 @@ fn check_name(what: &str, value: Option<&str>, allowed: [&str; 2]) -> PyResult<(
 
 /// A dyad of four poses with its place on the curves: its crank rotation
 /// from pose 1 to pose 2, its solution branch and its crank order.
-#[pyclass(frozen, eq, name = "CurveDyad", module = "burmester")]
+#[pyclass(frozen, eq, from_py_object, name = "CurveDyad", module = "burmester")]
 #[derive(Clone, PartialEq)]
 pub struct PyCurveDyad {
-    center: Xy,
-    circle: Xy,
+    pub(crate) center: Xy,
+    pub(crate) circle: Xy,
     beta2: f64,
     branch: Option<String>,
     order: String,

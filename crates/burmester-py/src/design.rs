@@ -144,8 +144,12 @@ impl MapOptions {
 
 /// A column of a map as a read-only NumPy array of shape `(ny, nx)`,
 /// taking the buffer (no copy).
-fn readonly<T: Element>(py: Python<'_>, grid: &Grid, v: Vec<T>) -> PyResult<Py<PyArray2<T>>> {
-    let a = Array2::from_shape_vec((grid.ny(), grid.nx()), v)
+pub(crate) fn readonly<T: Element>(
+    py: Python<'_>,
+    (ny, nx): (usize, usize),
+    v: Vec<T>,
+) -> PyResult<Py<PyArray2<T>>> {
+    let a = Array2::from_shape_vec((ny, nx), v)
         .expect("one value per sample")
         .into_pyarray(py);
     let kw = PyDict::new(py);
@@ -156,7 +160,7 @@ fn readonly<T: Element>(py: Python<'_>, grid: &Grid, v: Vec<T>) -> PyResult<Py<P
 
 /// A column's values, for comparing maps (floats by their bits, so that
 /// NaN equals NaN).
-trait Bits: Copy {
+pub(crate) trait Bits: Copy {
     fn bits(self) -> u64;
 }
 
@@ -184,7 +188,7 @@ impl Bits for f32 {
     }
 }
 
-fn same_column<T: Element + Bits>(
+pub(crate) fn same_column<T: Element + Bits>(
     py: Python<'_>,
     a: &Py<PyArray2<T>>,
     b: &Py<PyArray2<T>>,
@@ -196,67 +200,118 @@ fn same_column<T: Element + Bits>(
     }
 }
 
-macro_rules! py_solution_map {
-    ($($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
-        /// The solution-space map over candidate pivots (see the stub for the docs).
-        #[pyclass(frozen, name = "SolutionMap", module = "burmester")]
-        pub struct PySolutionMap {
-            context: MapContext,
+/// Defines a Python map class `$cls` (named `$pyname`) holding a context
+/// of type `$ctx` and the solution map's columns as read-only NumPy arrays
+/// of shape `(rows, columns)`: the one definition of how a map's columns
+/// cross to Python, for every map that has them.
+macro_rules! py_map_class {
+    ($cls:ident, $pyname:literal, $ctx:ty;
+     $($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
+        /// A map with the solution map's columns (see the stub for the docs).
+        #[pyclass(frozen, name = $pyname, module = "burmester")]
+        pub struct $cls {
+            context: $ctx,
             $($(#[$doc])* #[pyo3(get)] $name: Py<PyArray2<$ty>>,)*
         }
 
-        impl PySolutionMap {
-            /// Moves the map's columns into read-only NumPy arrays (no copy).
-            pub(crate) fn new(py: Python<'_>, map: SolutionMap) -> PyResult<Self> {
-                let g = map.context.grid;
-                let c = map.columns;
-                Ok(PySolutionMap {
-                    $($name: readonly(py, &g, c.$name)?,)*
-                    context: map.context,
+        impl $cls {
+            /// Moves the map's columns into read-only NumPy arrays of shape
+            /// `shape` (no copy).
+            pub(crate) fn from_parts(
+                py: Python<'_>,
+                context: $ctx,
+                shape: (usize, usize),
+                c: burmester::design::Columns,
+            ) -> PyResult<Self> {
+                Ok($cls {
+                    $($name: $crate::design::readonly(py, shape, c.$name)?,)*
+                    context,
                 })
             }
 
             /// The columns by name.
-            fn column_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-                let d = PyDict::new(py);
+            fn column_dict<'py>(
+                &self,
+                py: Python<'py>,
+            ) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+                let d = pyo3::types::PyDict::new(py);
                 $(d.set_item(stringify!($name), self.$name.clone_ref(py))?;)*
                 Ok(d)
             }
 
-            /// A map from its context and its columns by name (copied).
+            /// A map from its context and its columns by name (copied), each
+            /// of shape `shape`.
             fn from_columns(
                 py: Python<'_>,
-                context: MapContext,
-                columns: &Bound<'_, PyDict>,
+                context: $ctx,
+                shape: (usize, usize),
+                columns: &Bound<'_, pyo3::types::PyDict>,
             ) -> PyResult<Self> {
-                let g = context.grid;
                 $(
                     let $name: Vec<$ty> = {
                         let item = columns.get_item(stringify!($name))?.ok_or_else(|| {
-                            PyTypeError::new_err(concat!("missing column ", stringify!($name)))
+                            pyo3::exceptions::PyTypeError::new_err(concat!("missing column ", stringify!($name)))
                         })?;
                         let a = item.cast_into::<PyArray2<$ty>>().map_err(PyErr::from)?;
                         let ro = a.readonly();
                         let v = ro.as_array();
-                        if v.shape() != [g.ny(), g.nx()] {
-                            return Err(PyTypeError::new_err(concat!(
-                                "column ", stringify!($name), " does not have the grid's shape"
+                        if v.shape() != [shape.0, shape.1] {
+                            return Err(pyo3::exceptions::PyTypeError::new_err(concat!(
+                                "column ", stringify!($name), " does not have the map's shape"
                             )));
                         }
                         v.iter().copied().collect()
                     };
                 )*
-                Ok(PySolutionMap {
-                    $($name: readonly(py, &g, $name)?,)*
+                Ok($cls {
+                    $($name: $crate::design::readonly(py, shape, $name)?,)*
                     context,
                 })
             }
 
             fn same_columns(&self, py: Python<'_>, other: &Self) -> bool {
-                true $(&& same_column(py, &self.$name, &other.$name))*
+                true $(&& $crate::design::same_column(py, &self.$name, &other.$name))*
+            }
+
+            /// The columns a ranking reads, borrowed from the arrays, passed
+            /// to `f`.
+            fn with_rank_columns<R>(
+                &self,
+                py: Python<'_>,
+                f: impl FnOnce(burmester::design::RankColumns<'_>) -> PyResult<R>,
+            ) -> PyResult<R> {
+                let valid = self.valid.bind(py).readonly();
+                let bf = self.branch_free.bind(py).readonly();
+                let mt = self.min_transmission_rad.bind(py).readonly();
+                let lr = self.link_ratio.bind(py).readonly();
+                let sr = self.size_ratio.bind(py).readonly();
+                let acc = self.acceptable.bind(py).readonly();
+                f(burmester::design::RankColumns {
+                    valid: valid.as_slice()?,
+                    branch_free: bf.as_slice()?,
+                    min_transmission_rad: mt.as_slice()?,
+                    link_ratio: lr.as_slice()?,
+                    size_ratio: sr.as_slice()?,
+                    acceptable: acc.as_slice()?,
+                })
             }
         }
     };
+}
+pub(crate) use py_map_class;
+
+macro_rules! py_solution_map {
+    ($($t:tt)*) => {
+        py_map_class!(PySolutionMap, "SolutionMap", MapContext; $($t)*);
+    };
+}
+
+impl PySolutionMap {
+    /// Moves a core map's columns into read-only NumPy arrays (no copy).
+    pub(crate) fn new(py: Python<'_>, map: SolutionMap) -> PyResult<Self> {
+        let g = map.context.grid;
+        Self::from_parts(py, map.context, (g.ny(), g.nx()), map.columns)
+    }
 }
 
 burmester::solution_map_columns!(py_solution_map);
@@ -396,24 +451,11 @@ impl PySolutionMap {
         min_separation: Option<f64>,
         rank_by: RankBy,
     ) -> PyResult<Vec<PyPivot>> {
-        let valid = self.valid.bind(py).readonly();
-        let bf = self.branch_free.bind(py).readonly();
-        let mt = self.min_transmission_rad.bind(py).readonly();
-        let lr = self.link_ratio.bind(py).readonly();
-        let sr = self.size_ratio.bind(py).readonly();
-        let acc = self.acceptable.bind(py).readonly();
-        let cols = burmester::design::RankColumns {
-            valid: valid.as_slice()?,
-            branch_free: bf.as_slice()?,
-            min_transmission_rad: mt.as_slice()?,
-            link_ratio: lr.as_slice()?,
-            size_ratio: sr.as_slice()?,
-            acceptable: acc.as_slice()?,
-        };
         let ctx = &self.context;
-        let pivots = py
-            .detach(|| ctx.best_pivots(k, min_separation, rank_by, cols))
-            .py()?;
+        let pivots = self.with_rank_columns(py, |cols| {
+            py.detach(|| ctx.best_pivots(k, min_separation, rank_by, cols))
+                .py()
+        })?;
         Ok(pivots.iter().map(|p| PyPivot::of(ctx.task, p)).collect())
     }
 }
@@ -536,7 +578,8 @@ impl PySolutionMap {
                 travel_samples: constraints.3,
             },
         };
-        Self::from_columns(py, context, columns)
+        let shape = (context.grid.ny(), context.grid.nx());
+        Self::from_columns(py, context, shape, columns)
     }
 
     fn __reduce__<'py>(

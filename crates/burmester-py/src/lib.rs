@@ -18,6 +18,7 @@ mod display;
 mod errors;
 mod geom;
 mod linkage;
+mod pairs;
 mod run;
 mod sweep;
 mod synthesis;
@@ -37,6 +38,8 @@ mod _burmester {
     use crate::geom::{PyConic, PyGrid, clip_line};
     #[pymodule_export]
     use crate::linkage::{PyConfiguration, PyFourBar, PyLinkageFigures};
+    #[pymodule_export]
+    use crate::pairs::{PyPair, PyPairMap};
     #[pymodule_export]
     use crate::synthesis::{PyFilemon, PyPole, PySynthesizedFourBar, PyTask};
 

@@ -595,6 +595,43 @@ impl PyTask {
         crate::design::driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
     }
 
+    /// Four poses: the pair map (see the stub).
+    #[pyo3(signature = (n_driving = Count(256), n_driven = None, *, limits = None,
+        min_transmission_deg = None, max_link_ratio = None, input = None, base_plate = None,
+        obstacles = None, link_width = Real(0.0), travel_samples = Count(64), progress = None),
+        text_signature = "($self, n_driving=256, n_driven=None, *, limits=None, \
+        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+    #[allow(clippy::too_many_arguments)]
+    fn pair_map(
+        &self,
+        py: Python<'_>,
+        n_driving: Count,
+        n_driven: Option<Count>,
+        limits: Option<crate::design::PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        input: Option<&str>,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: Real,
+        travel_samples: Count,
+        progress: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<crate::pairs::PyPairMap> {
+        let opts = MapOptions::new(
+            limits,
+            min_transmission_deg,
+            max_link_ratio,
+            input,
+            base_plate,
+            obstacles,
+            link_width,
+            travel_samples,
+        )?;
+        let n_driven = n_driven.map_or(n_driving.0, |n| n.0);
+        crate::pairs::pair_map(py, self.inner, n_driving.0, n_driven, opts, progress)
+    }
+
     fn line_to_conic(&self, point: PyPoint, direction: PyPoint) -> PyResult<PyConic> {
         self.inner
             .line_to_conic(&Line {
@@ -869,6 +906,11 @@ pub struct PySynthesizedFourBar {
 impl PySynthesizedFourBar {
     pub(crate) fn new(task: Task, inner: SynthesizedFourBar) -> Self {
         PySynthesizedFourBar { inner, task }
+    }
+
+    /// The task it was built for.
+    pub(crate) fn task(&self) -> Task {
+        self.task
     }
 }
 

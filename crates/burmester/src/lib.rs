@@ -58,8 +58,8 @@ pub mod synthesis;
 pub mod tolerance;
 
 pub use design::{
-    AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, Pivot,
-    PivotAtlas, RankBy, SolutionMap, Varying,
+    AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, Pair,
+    PairContext, PairMap, Pivot, PivotAtlas, RankBy, SolutionMap, Varying,
 };
 pub use engine::Control;
 pub use error::{AssemblyError, DegenerateError, Error, InvalidInput, Result};

@@ -74,13 +74,13 @@ macro_rules! define_columns {
             pub const NAMES: &'static [&'static str] = &[$(stringify!($name)),*];
 
             /// `n` samples of "no linkage".
-            fn new(n: usize) -> Result<Self> {
+            pub(crate) fn new(n: usize) -> Result<Self> {
                 Ok(Columns {
                     $($name: try_vec("a solution map", n, $invalid)?,)*
                 })
             }
 
-            fn rows(&mut self, nx: usize) -> ColumnsMut<'_> {
+            pub(crate) fn rows(&mut self, nx: usize) -> ColumnsMut<'_> {
                 ColumnsMut {
                     $($name: &mut self.$name,)*
                     nx,
@@ -95,13 +95,13 @@ macro_rules! define_columns {
         }
 
         impl Sample {
-            const INVALID: Sample = Sample {
+            pub(crate) const INVALID: Sample = Sample {
                 $($name: $invalid,)*
             };
         }
 
         /// A block of rows of every column.
-        struct ColumnsMut<'a> {
+        pub(crate) struct ColumnsMut<'a> {
             $($name: &'a mut [$ty],)*
             nx: usize,
         }
@@ -119,7 +119,7 @@ macro_rules! define_columns {
 
         impl ColumnsMut<'_> {
             #[inline(always)]
-            fn set(&mut self, i: usize, s: Sample) {
+            pub(crate) fn set(&mut self, i: usize, s: Sample) {
                 $(self.$name[i] = s.$name;)*
             }
         }
@@ -214,18 +214,84 @@ impl MapContext {
     }
 }
 
-/// What the per-sample evaluation of either map shares: the task's
-/// motion and maps, and the prepared limits and constraints.
-pub(crate) struct Sampler<'a> {
+/// What the per-sample evaluation of every map shares, for any number of
+/// poses: the prepared limits and constraints, and the scales of the
+/// figures. The one place a sample's columns are computed from a
+/// linkage's figures.
+pub(crate) struct Judge<'a> {
     task: &'a Task,
-    maps: &'a Maps,
-    motion: &'a Motion,
-    tiny: f64,
+    /// Links shorter than this make no linkage.
+    pub(crate) tiny: f64,
     /// The task's coupler point at pose 1 and `1 / Task::span`.
     point: Point2<f64>,
     inv_span: f64,
     limits: &'a DesignLimits,
     prepared: Prepared,
+}
+
+impl<'a> Judge<'a> {
+    pub(crate) fn new(
+        task: &'a Task,
+        limits: &'a DesignLimits,
+        constraints: &Constraints,
+    ) -> Result<Self> {
+        limits.validate()?;
+        Ok(Judge {
+            task,
+            tiny: tolerance::POINT * task.scale(),
+            point: task.poses()[0].position,
+            inv_span: 1.0 / task.span(),
+            limits,
+            prepared: constraints.prepare()?,
+        })
+    }
+
+    /// The sample for figures `fig` with branch flag `branch_free`, where
+    /// `candidates` are the varying center points (each must lie on the
+    /// base plate) and `driving`, `driven` the linkage's dyads (for the
+    /// constraints).
+    #[inline]
+    pub(crate) fn sample(
+        &self,
+        fig: Option<LinkageFigures>,
+        branch_free: bool,
+        candidates: &[Point2<f64>],
+        driving: Dyad,
+        driven: Dyad,
+    ) -> Sample {
+        let Some(f) = fig else {
+            return Sample::INVALID;
+        };
+        let acceptable = branch_free
+            && self.limits.meets(&f)
+            && candidates.iter().all(|&c| self.prepared.pivot_ok(c))
+            && (self.prepared.obstacles.is_empty()
+                || self
+                    .task
+                    .four_bar(&driving, &driven)
+                    .is_ok_and(|fb| self.prepared.clearance_ok(&fb)));
+        Sample {
+            valid: true,
+            branch_free,
+            grashof: f.grashof.code(),
+            input_full: f.input_full,
+            direction: f.direction.code(),
+            one_circuit: f.one_circuit,
+            min_transmission_rad: f.min_transmission as f32,
+            link_ratio: f.link_ratio as f32,
+            size_ratio: (members_length(f.lengths, driving.circle, driven.circle, self.point)
+                * self.inv_span) as f32,
+            acceptable,
+        }
+    }
+}
+
+/// What the per-sample evaluation of either three-pose map shares: the
+/// task's motion and maps, and the [`Judge`].
+pub(crate) struct Sampler<'a> {
+    judge: Judge<'a>,
+    maps: &'a Maps,
+    motion: &'a Motion,
 }
 
 impl<'a> Sampler<'a> {
@@ -235,15 +301,11 @@ impl<'a> Sampler<'a> {
         constraints: &Constraints,
     ) -> Result<Self> {
         limits.validate()?;
+        let maps = task.three_poses("the solution map")?;
         Ok(Sampler {
-            task,
-            maps: task.three_poses("the solution map")?,
+            judge: Judge::new(task, limits, constraints)?,
+            maps,
             motion: task.motion(),
-            tiny: tolerance::POINT * task.scale(),
-            point: task.poses()[0].position,
-            inv_span: 1.0 / task.span(),
-            limits,
-            prepared: constraints.prepare()?,
         })
     }
 
@@ -275,46 +337,30 @@ impl<'a> Sampler<'a> {
         let Some(a) = self.moving_pivots(a0) else {
             return Sample::INVALID;
         };
-        let fig = figures::<false, 3>(a0, &a, driven.center, c, self.tiny);
-        self.sample(fig, branch_free, a0, Dyad::new(a0, a[0]), driven)
+        let fig = figures::<false, 3>(a0, &a, driven.center, c, self.judge.tiny);
+        self.judge
+            .sample(fig, branch_free, &[a0], Dyad::new(a0, a[0]), driven)
     }
+}
 
-    /// The sample for figures `fig` with branch flag `branch_free`, where
-    /// `candidate` is the varying center point and `driving`, `driven` the
-    /// linkage's dyads (for the constraints).
-    fn sample(
-        &self,
-        fig: Option<LinkageFigures>,
-        branch_free: bool,
-        candidate: Point2<f64>,
-        driving: Dyad,
-        driven: Dyad,
-    ) -> Sample {
-        let Some(f) = fig else {
-            return Sample::INVALID;
-        };
-        let acceptable = branch_free
-            && self.limits.meets(&f)
-            && self.prepared.pivot_ok(candidate)
-            && (self.prepared.obstacles.is_empty()
-                || self
-                    .task
-                    .four_bar(&driving, &driven)
-                    .is_ok_and(|fb| self.prepared.clearance_ok(&fb)));
-        Sample {
-            valid: true,
-            branch_free,
-            grashof: f.grashof.code(),
-            input_full: f.input_full,
-            direction: f.direction.code(),
-            one_circuit: f.one_circuit,
-            min_transmission_rad: f.min_transmission as f32,
-            link_ratio: f.link_ratio as f32,
-            size_ratio: (members_length(f.lengths, driving.circle, driven.circle, self.point)
-                * self.inv_span) as f32,
-            acceptable,
+/// Fills a map's columns, `nx` samples a row and `ny` rows, from
+/// `eval(j, i)` (row `j`, column `i`), over blocks of rows on the
+/// [`engine`](crate::engine).
+pub(crate) fn fill_rows(
+    nx: usize,
+    ny: usize,
+    columns: &mut Columns,
+    control: &Control<'_>,
+    eval: impl Fn(usize, usize) -> Sample + Sync,
+) -> Result<()> {
+    run_blocks(nx, ny, columns.rows(nx), control, |j0, mut block, rows| {
+        for r in 0..rows {
+            let j = j0 + r;
+            for i in 0..nx {
+                block.set(r * nx + i, eval(j, i));
+            }
         }
-    }
+    })
 }
 
 /// Fills a map's columns from `eval(k, point)`, over blocks of rows.
@@ -325,22 +371,9 @@ fn fill(
     eval: impl Fn(usize, Point2<f64>) -> Sample + Sync,
 ) -> Result<()> {
     let nx = grid.nx();
-    run_blocks(
-        nx,
-        grid.ny(),
-        columns.rows(nx),
-        control,
-        |j0, mut block, rows| {
-            for r in 0..rows {
-                let j = j0 + r;
-                let y = grid.y(j);
-                for i in 0..nx {
-                    let s = eval(j * nx + i, Point2::new(grid.x(i), y));
-                    block.set(r * nx + i, s);
-                }
-            }
-        },
-    )
+    fill_rows(nx, grid.ny(), columns, control, |j, i| {
+        eval(j * nx + i, Point2::new(grid.x(i), grid.y(j)))
+    })
 }
 
 impl Filemon {
@@ -418,9 +451,11 @@ impl Task {
             let Some(c) = sampler.moving_pivots(c0) else {
                 return Sample::INVALID;
             };
-            let fig = figures::<true, 3>(driving.center, &a, c0, &c, sampler.tiny);
+            let fig = figures::<true, 3>(driving.center, &a, c0, &c, sampler.judge.tiny);
             let free = fig.is_some_and(|f| f.branch_free());
-            sampler.sample(fig, free, c0, *driving, Dyad::new(c0, c[0]))
+            sampler
+                .judge
+                .sample(fig, free, &[c0], *driving, Dyad::new(c0, c[0]))
         })?;
         Ok(SolutionMap {
             context: MapContext {

@@ -20,6 +20,10 @@
 //! [`Task::driven_solution_map`](crate::Task::driven_solution_map) does the same the other way round: a
 //! fixed driving dyad, candidate driven center points.
 //!
+//! For four poses, [`Task::pair_map`](crate::Task::pair_map) gives the same
+//! columns over pairs of dyads along the center-point curve: every linkage
+//! of the task on one picture ([`pairs`]).
+//!
 //! How each figure is computed is in [`linkage::figures`](crate::linkage::LinkageFigures);
 //! the constraints, the clearance check and its bound are in
 //! [`Constraints`]; the maps run on the tiled [`engine`](crate::engine).
@@ -28,10 +32,12 @@ pub mod atlas;
 mod constraints;
 mod limits;
 mod map;
+pub mod pairs;
 mod rank;
 
 pub use atlas::{AtlasBest, AtlasCell, PivotAtlas};
 pub use constraints::Constraints;
 pub use limits::{DesignLimits, InputRequirement};
 pub use map::{Columns, MapContext, SolutionMap, Varying};
+pub use pairs::{Pair, PairContext, PairMap};
 pub use rank::{Pivot, RankBy, RankColumns};

@@ -247,13 +247,56 @@ impl MapContext {
             None => 0.02 * self.grid.viewport().diagonal(),
         };
         let n = self.grid.len();
+        columns.check_len(n)?;
+        let margins = Margins::new(self, columns.branch_free);
+        let span = self.task.span();
+        let mut out: Vec<Pivot> = Vec::new();
+        rank_samples(
+            n,
+            rank_by,
+            &columns,
+            &|s| margins.get(s),
+            |s, margin, score| {
+                if out.len() >= k {
+                    return false;
+                }
+                let p = self.point(s);
+                if out.iter().any(|q| (q.center - p).norm() < sep) {
+                    return true;
+                }
+                if let Ok(linkage) = self.linkage(s) {
+                    let nx = self.grid.nx();
+                    out.push(Pivot {
+                        center: p,
+                        index: (s / nx, s % nx),
+                        linkage,
+                        margin,
+                        size_ratio: linkage.size() / span,
+                        score,
+                        ranked_by: rank_by,
+                    });
+                }
+                out.len() < k
+            },
+        );
+        Ok(out)
+    }
+}
+
+impl RankColumns<'_> {
+    /// Checks that every column has `n` values.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::LengthMismatch`] naming the first that has not.
+    pub(crate) fn check_len(&self, n: usize) -> Result<()> {
         for (name, len) in [
-            ("valid", columns.valid.len()),
-            ("branch_free", columns.branch_free.len()),
-            ("min_transmission_rad", columns.min_transmission_rad.len()),
-            ("link_ratio", columns.link_ratio.len()),
-            ("size_ratio", columns.size_ratio.len()),
-            ("acceptable", columns.acceptable.len()),
+            ("valid", self.valid.len()),
+            ("branch_free", self.branch_free.len()),
+            ("min_transmission_rad", self.min_transmission_rad.len()),
+            ("link_ratio", self.link_ratio.len()),
+            ("size_ratio", self.size_ratio.len()),
+            ("acceptable", self.acceptable.len()),
         ] {
             if len != n {
                 return Err(InvalidInput::LengthMismatch {
@@ -264,89 +307,85 @@ impl MapContext {
                 .into());
             }
         }
-        let margins = Margins::new(self, columns.branch_free);
-        let span = self.task.span();
-        let mut out: Vec<Pivot> = Vec::new();
-        let take = |s: usize, margin: f64, score: f64, out: &mut Vec<Pivot>| {
-            if out.len() >= k {
-                return;
-            }
-            let p = self.point(s);
-            if out.iter().any(|q| (q.center - p).norm() < sep) {
-                return;
-            }
-            if let Ok(linkage) = self.linkage(s) {
-                let nx = self.grid.nx();
-                out.push(Pivot {
-                    center: p,
-                    index: (s / nx, s % nx),
-                    linkage,
-                    margin,
-                    size_ratio: linkage.size() / span,
-                    score,
-                    ranked_by: rank_by,
-                });
-            }
-        };
-        match rank_by {
-            RankBy::Margin => {
-                let mut cand: Vec<(usize, f64)> = (0..n)
-                    .filter(|&s| columns.valid[s] && columns.branch_free[s])
-                    .map(|s| (s, margins.get(s)))
-                    .collect();
-                cand.sort_by(|a, b| b.1.total_cmp(&a.1));
-                for (s, margin) in cand {
-                    take(s, margin, margin, &mut out);
-                }
-            }
-            RankBy::Pareto => {
-                let mut cand: Vec<(usize, f32, f32)> = (0..n)
-                    .filter(|&s| {
-                        columns.acceptable[s]
-                            && !columns.min_transmission_rad[s].is_nan()
-                            && !columns.size_ratio[s].is_nan()
-                    })
-                    .map(|s| (s, columns.size_ratio[s], columns.min_transmission_rad[s]))
-                    .collect();
-                // By size, ties by the better transmission: a candidate is
-                // on the front when it transmits better than every smaller
-                // (or as small and listed before) one.
-                cand.sort_by(|a, b| a.1.total_cmp(&b.1).then(b.2.total_cmp(&a.2)));
-                let mut best = f32::NEG_INFINITY;
-                for (s, _, mu) in cand {
-                    if mu > best {
-                        best = mu;
-                        take(s, margins.get(s), f64::from(mu), &mut out);
-                    }
-                }
-            }
-            _ => {
-                let mut cand: Vec<(usize, f64)> = (0..n)
-                    .filter(|&s| columns.acceptable[s])
-                    .filter_map(|s| Some((s, columns.score(s, rank_by)?)))
-                    .collect();
-                cand.sort_by(|a, b| b.1.total_cmp(&a.1));
-                let mut i = 0;
-                while i < cand.len() && out.len() < k {
-                    // A run of equal scores: the smaller, then the wider
-                    // margin first.
-                    let mut j = i + 1;
-                    while j < cand.len() && (cand[i].1 - cand[j].1).abs() <= tolerance::RANK_TIE {
-                        j += 1;
-                    }
-                    let mut run: Vec<(usize, f32, f64, f64)> = cand[i..j]
-                        .iter()
-                        .map(|&(s, score)| (s, columns.size_ratio[s], margins.get(s), score))
-                        .collect();
-                    run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
-                    for (s, _, margin, score) in run {
-                        take(s, margin, score, &mut out);
-                    }
-                    i = j;
+        Ok(())
+    }
+}
+
+/// The ranking of the `n` samples of a map's `columns` by `rank_by` (see
+/// [`RankBy`]), shared by every map: offers each candidate, best first,
+/// to `take(sample, margin, score)`, which returns whether it wants more.
+/// Runs of scores within [`tolerance::RANK_TIE`] are offered by
+/// [`tie_order`] (the smaller size ratio, then the larger `margin`).
+pub(crate) fn rank_samples(
+    n: usize,
+    rank_by: RankBy,
+    columns: &RankColumns<'_>,
+    margin: &dyn Fn(usize) -> f64,
+    mut take: impl FnMut(usize, f64, f64) -> bool,
+) {
+    match rank_by {
+        RankBy::Margin => {
+            let mut cand: Vec<(usize, f64)> = (0..n)
+                .filter(|&s| columns.valid[s] && columns.branch_free[s])
+                .map(|s| (s, margin(s)))
+                .collect();
+            cand.sort_by(|a, b| b.1.total_cmp(&a.1));
+            for (s, m) in cand {
+                if !take(s, m, m) {
+                    return;
                 }
             }
         }
-        Ok(out)
+        RankBy::Pareto => {
+            let mut cand: Vec<(usize, f32, f32)> = (0..n)
+                .filter(|&s| {
+                    columns.acceptable[s]
+                        && !columns.min_transmission_rad[s].is_nan()
+                        && !columns.size_ratio[s].is_nan()
+                })
+                .map(|s| (s, columns.size_ratio[s], columns.min_transmission_rad[s]))
+                .collect();
+            // By size, ties by the better transmission: a candidate is
+            // on the front when it transmits better than every smaller
+            // (or as small and listed before) one.
+            cand.sort_by(|a, b| a.1.total_cmp(&b.1).then(b.2.total_cmp(&a.2)));
+            let mut best = f32::NEG_INFINITY;
+            for (s, _, mu) in cand {
+                if mu > best {
+                    best = mu;
+                    if !take(s, margin(s), f64::from(mu)) {
+                        return;
+                    }
+                }
+            }
+        }
+        _ => {
+            let mut cand: Vec<(usize, f64)> = (0..n)
+                .filter(|&s| columns.acceptable[s])
+                .filter_map(|s| Some((s, columns.score(s, rank_by)?)))
+                .collect();
+            cand.sort_by(|a, b| b.1.total_cmp(&a.1));
+            let mut i = 0;
+            while i < cand.len() {
+                // A run of equal scores: the smaller, then the wider
+                // margin first.
+                let mut j = i + 1;
+                while j < cand.len() && (cand[i].1 - cand[j].1).abs() <= tolerance::RANK_TIE {
+                    j += 1;
+                }
+                let mut run: Vec<(usize, f32, f64, f64)> = cand[i..j]
+                    .iter()
+                    .map(|&(s, score)| (s, columns.size_ratio[s], margin(s), score))
+                    .collect();
+                run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
+                for (s, _, m, score) in run {
+                    if !take(s, m, score) {
+                        return;
+                    }
+                }
+                i = j;
+            }
+        }
     }
 }
 

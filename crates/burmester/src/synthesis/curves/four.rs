@@ -703,6 +703,90 @@ impl FourPositions {
         Ok(runs)
     }
 
+    /// The arcs of `beta_2` over which the compatibility linkage closes
+    /// ([`FourPositions::beta2_range`]) as `(start, end)`, in order.
+    fn beta2_arcs(&self) -> Result<Vec<(f64, f64)>> {
+        Ok(match self.beta2_range()? {
+            InputRange::Full => vec![(-PI, PI)],
+            InputRange::Arc(a) => vec![(a.start, a.end)],
+            InputRange::TwoArcs(a, b) => vec![(a.start, a.end), (b.start, b.end)],
+        })
+    }
+
+    /// The length of the curve parameter `s` of
+    /// [`FourPositions::dyad_at_parameter`]: twice the total length, in
+    /// radians, of [`FourPositions::beta2_range`] (`4 pi` when the crank
+    /// rotation is unrestricted).
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::beta2_range`].
+    pub fn parameter_length(&self) -> Result<f64> {
+        Ok(2.0 * self.beta2_arcs()?.iter().map(|(a, b)| b - a).sum::<f64>())
+    }
+
+    /// The dyad at the curve parameter `s`: one scalar for the whole
+    /// center-point curve, built from the crank rotation. The arcs of
+    /// [`FourPositions::beta2_range`] are laid end to end, first on the
+    /// [`AssemblyMode::Open`] solution branch, then on the
+    /// [`AssemblyMode::Crossed`] one:
+    ///
+    /// ```text
+    /// s in [0, L):   Open branch,    beta_2 = the point s along the arcs
+    /// s in [L, 2L):  Crossed branch, beta_2 = the point s - L along the arcs
+    /// ```
+    ///
+    /// with `L` half the [`FourPositions::parameter_length`]. So `s` is
+    /// measured in radians of crank rotation, and a step in `s` within one
+    /// arc is a step of the crank's rotation from pose 1 to pose 2. The
+    /// branches meet at the toggles that end the arcs (where the curve
+    /// goes on), and the center point runs to infinity where the dyad does.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::dyad_at`]; [`crate::InvalidInput::OutsideRange`]
+    /// when `s` is outside `[0, 2L]`.
+    pub fn dyad_at_parameter(&self, s: f64) -> Result<CurveDyad> {
+        let arcs = self.beta2_arcs()?;
+        let half: f64 = arcs.iter().map(|(a, b)| b - a).sum();
+        let s = crate::error::in_range("curve parameter", s, 0.0, 2.0 * half, "")?;
+        let (branch, mut t) = if s < half {
+            (AssemblyMode::Open, s)
+        } else {
+            (AssemblyMode::Crossed, s - half)
+        };
+        let mut beta = arcs[arcs.len() - 1].1;
+        for &(a, b) in &arcs {
+            if t <= b - a {
+                beta = a + t;
+                break;
+            }
+            t -= b - a;
+        }
+        self.dyad_at(beta, branch)
+    }
+
+    /// `n` samples of the curve parameter, at the middles of `n` equal
+    /// steps of `[0, parameter_length)` (so never at a toggle):
+    /// `s_i = (i + 1/2) parameter_length / n`, with each one's dyad
+    /// ([`FourPositions::dyad_at_parameter`]), `None` where it is at
+    /// infinity.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::beta2_range`]; [`crate::InvalidInput::CountOutOfRange`]
+    /// when `n` is 0 or more than ten million.
+    pub fn parameter_samples(&self, n: usize) -> Result<Vec<Option<CurveDyad>>> {
+        if n == 0 || n > 10_000_000 {
+            return Err(errors::count("samples", n, 1, 10_000_000));
+        }
+        let length = self.parameter_length()?;
+        let step = length / n as f64;
+        Ok((0..n)
+            .map(|i| self.dyad_at_parameter((i as f64 + 0.5) * step).ok())
+            .collect())
+    }
+
     /// The four-bar of a driving and a driven dyad of the four poses, with
     /// its input angles, assembly modes and crank order at each pose.
     ///

@@ -1,0 +1,394 @@
+//! The four-position pair map: every linkage of a four-pose task on one
+//! picture.
+//!
+//! Four poses leave one degree of freedom per dyad: its center point runs
+//! along the center-point curve. A linkage is a pair of dyads, so the
+//! linkages of a task form a plane, spanned by the curve parameter of the
+//! driving dyad and that of the driven dyad. The pair map samples that
+//! plane and gives, for each pair, the columns of the three-pose
+//! [`SolutionMap`](crate::SolutionMap) ([`Columns`]): branch-free,
+//! Grashof class, direction, circuit, minimum transmission angle over the
+//! travel, link ratio, size ratio, and `acceptable` under the limits and
+//! constraints.
+//!
+//! # The parameter
+//!
+//! The curve parameter `s` is the crank rotation: the arcs of `beta_2` (the
+//! driving crank's rotation from pose 1 to pose 2) over which the four
+//! poses have dyads, laid end to end, first on one solution branch, then on
+//! the other ([`FourPositions::dyad_at_parameter`]); it runs over
+//! `[0, 2L)` in radians. Each axis of the map takes `n` samples at the
+//! middles of `n` equal steps ([`FourPositions::parameter_samples`]), so
+//! the map's [`Grid`] is the parameter plane: column `i` is the driving
+//! sample `s_i = grid.x(i)`, row `j` the driven sample `s_j = grid.y(j)`.
+//!
+//! # Each pair
+//!
+//! The moving pivots at the four poses are computed once per sample of
+//! each axis (`D_1k` of the circle point); each pair's figures come from
+//! them alone ([`LinkageFigures`](crate::LinkageFigures), no trigonometry):
+//! the branch flag is the assembly mode at the four poses, as in
+//! [`Task::four_bar`]. A pair of a dyad with itself (the same parameter on
+//! both axes) is not a linkage (its ground has no length): invalid.
+
+use nalgebra::Point2;
+
+use crate::design::map::{Columns, Judge, Sample, fill_rows};
+use crate::design::rank::{RankColumns, rank_samples, signed_distances};
+use crate::design::{Constraints, DesignLimits, RankBy};
+use crate::engine::Control;
+use crate::error::{InvalidInput, Result, in_range};
+use crate::geom::Grid;
+use crate::linkage::figures::figures;
+use crate::synthesis::curves::{CurveDyad, FourPositions};
+use crate::synthesis::{SynthesizedFourBar, Task};
+
+/// What a pair map was computed for: the task, the samples of both axes,
+/// and the limits and constraints. Holds the per-pair logic (the linkage
+/// of a pair, the margins, the best pairs), so that the columns can live
+/// elsewhere (for example in NumPy).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PairContext {
+    /// The parameter plane: `x` the driving dyad's curve parameter (one
+    /// column per sample), `y` the driven dyad's (one row per sample), both
+    /// over `[0, FourPositions::parameter_length)`.
+    pub grid: Grid,
+    /// The task (four poses).
+    pub task: Task,
+    /// The driving dyad of each column; `None` where it is at infinity.
+    pub driving: Vec<Option<CurveDyad>>,
+    /// The driven dyad of each row; `None` where it is at infinity.
+    pub driven: Vec<Option<CurveDyad>>,
+    /// The limits behind `acceptable`.
+    pub limits: DesignLimits,
+    /// The constraints behind `acceptable`.
+    pub constraints: Constraints,
+}
+
+/// The pair map: what it was computed for, and its columns (row-major,
+/// `n_driven` rows of `n_driving` pairs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PairMap {
+    /// What the map was computed for.
+    pub context: PairContext,
+    /// One value per pair of every figure, as in the three-pose map.
+    pub columns: Columns,
+}
+
+/// A pair of dyads of a pair map with its linkage.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pair {
+    /// The driving dyad, with its place on the curve.
+    pub driving: CurveDyad,
+    /// The driven dyad, with its place on the curve.
+    pub driven: CurveDyad,
+    /// Its sample `(j, i)`: row `j` (the driven sample), column `i` (the
+    /// driving sample).
+    pub index: (usize, usize),
+    /// The complete linkage, `task.four_bar(&driving.dyad(), &driven.dyad())`.
+    pub linkage: SynthesizedFourBar,
+    /// Its signed margin (see [`PairContext::margins`]).
+    pub margin: f64,
+    /// The linkage's size relative to the task's
+    /// ([`SynthesizedFourBar::size`] over [`Task::span`]).
+    pub size_ratio: f64,
+    /// Its score by the ranking (see [`RankBy::score`]; the margin for
+    /// [`RankBy::Margin`], the minimum transmission angle for
+    /// [`RankBy::Pareto`]).
+    pub score: f64,
+    /// What ranked it.
+    pub ranked_by: RankBy,
+}
+
+impl Task {
+    /// The most samples on one axis of a pair map.
+    pub const MAX_PAIR_SAMPLES: usize = 10_000_000;
+
+    /// The pair map of a four-pose task: every pair of `n_driving` driving
+    /// dyads and `n_driven` driven dyads sampled along the center-point
+    /// curve by its parameter (see the [module docs](crate::design::pairs)),
+    /// with the columns of the solution map, following `control`.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NeedsPoses`] unless the task has four poses; the
+    /// errors of [`FourPositions::new`] and
+    /// [`FourPositions::beta2_range`] (poses without a crank-rotation
+    /// parametrisation); [`InvalidInput::GridSize`] when a count is 0,
+    /// above [`Task::MAX_PAIR_SAMPLES`], or the map has more than
+    /// [`Grid::MAX_POINTS`] pairs; [`InvalidInput`] for invalid limits or
+    /// constraints; [`Error::OutOfMemory`](crate::Error::OutOfMemory) when
+    /// the columns cannot be allocated;
+    /// [`Error::Cancelled`](crate::Error::Cancelled).
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use burmester::{Constraints, Control, DesignLimits, RankBy, Task};
+    /// // Four poses of the coupler of a crank-rocker (A0 = (0, 0), B0 = (4, 0)).
+    /// let task = Task::from_xya(&[
+    ///     [1.049199280691, 2.279426358634, 45.220037141544_f64.to_radians()],
+    ///     [0.734502065472, 3.198658887874, 26.633426990744_f64.to_radians()],
+    ///     [-0.378159188147, 3.063048993013, 21.786789298262_f64.to_radians()],
+    ///     [-1.268710439724, 2.051150142014, 27.048624103934_f64.to_radians()],
+    /// ])?;
+    /// let map = task.pair_map(64, 64, &DesignLimits::default(), &Constraints::default(),
+    ///     &Control::new())?;
+    /// let best = map.best_pairs(3, None, RankBy::Balanced)?;
+    /// assert!(!best.is_empty());
+    /// for p in &best {
+    ///     // The pair's linkage passes the four poses, branch-free, in order.
+    ///     assert!(p.linkage.figures.feasible());
+    ///     let again = task.four_bar(&p.driving.dyad(), &p.driven.dyad())?;
+    ///     assert_eq!(again, p.linkage);
+    /// }
+    /// # Ok::<(), burmester::Error>(())
+    /// ```
+    pub fn pair_map(
+        &self,
+        n_driving: usize,
+        n_driven: usize,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        control: &Control<'_>,
+    ) -> Result<PairMap> {
+        let context = self.pair_context(n_driving, n_driven, limits, constraints)?;
+        let judge = Judge::new(self, limits, constraints)?;
+        let mut columns = Columns::new(context.grid.len())?;
+        // The moving pivots at the four poses, once per sample of each axis.
+        let motion = self.motion();
+        let pivots = |d: &Option<CurveDyad>| {
+            d.map(|d| (d.dyad(), [0, 1, 2, 3].map(|k| motion.first_to(k, d.circle))))
+        };
+        let a: Vec<_> = context.driving.iter().map(pivots).collect();
+        let c: Vec<_> = context.driven.iter().map(pivots).collect();
+        fill_rows(n_driving, n_driven, &mut columns, control, |j, i| {
+            let (Some((da, pa)), Some((dc, pc))) = (&a[i], &c[j]) else {
+                return Sample::INVALID;
+            };
+            let fig = figures::<true, 4>(da.center, pa, dc.center, pc, judge.tiny);
+            let free = fig.is_some_and(|f| f.branch_free());
+            judge.sample(fig, free, &[da.center, dc.center], *da, *dc)
+        })?;
+        Ok(PairMap { context, columns })
+    }
+
+    /// What [`Task::pair_map`] computes its map for, without the map: the
+    /// parameter plane, the dyads of both axes, the limits and constraints
+    /// (validated).
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::pair_map`] (but for the allocation of the columns and
+    /// cancelling).
+    pub fn pair_context(
+        &self,
+        n_driving: usize,
+        n_driven: usize,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+    ) -> Result<PairContext> {
+        if self.len() != 4 {
+            return Err(self.needs(4, "Task::pair_map"));
+        }
+        if n_driving == 0
+            || n_driven == 0
+            || n_driving > Self::MAX_PAIR_SAMPLES
+            || n_driven > Self::MAX_PAIR_SAMPLES
+            || n_driving
+                .checked_mul(n_driven)
+                .is_none_or(|n| n > Grid::MAX_POINTS)
+        {
+            return Err(InvalidInput::GridSize {
+                nx: n_driving,
+                ny: n_driven,
+                max: Grid::MAX_POINTS,
+            }
+            .into());
+        }
+        Judge::new(self, limits, constraints)?;
+        let four = FourPositions::new(self.poses())?;
+        let length = four.parameter_length()?;
+        Ok(PairContext {
+            grid: Grid::from_bounds(0.0, length, 0.0, length, n_driving, n_driven)?,
+            task: *self,
+            driving: four.parameter_samples(n_driving)?,
+            driven: four.parameter_samples(n_driven)?,
+            limits: *limits,
+            constraints: constraints.clone(),
+        })
+    }
+}
+
+impl PairContext {
+    /// `(n_driven, n_driving)`: the rows and the columns of the map.
+    pub fn shape(&self) -> (usize, usize) {
+        (self.grid.ny(), self.grid.nx())
+    }
+
+    /// The driving and driven dyads of pair `k` (row-major index), `None`
+    /// where either is at infinity.
+    pub fn dyads(&self, k: usize) -> Option<(CurveDyad, CurveDyad)> {
+        let nx = self.grid.nx();
+        Some((self.driving[k % nx]?, self.driven[k / nx]?))
+    }
+
+    /// The linkage of pair `k` (row-major index).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::OutsideRange`] for an index outside the map or a
+    /// dyad at infinity; as [`Task::four_bar`] (for an invalid pair).
+    pub fn linkage(&self, k: usize) -> Result<SynthesizedFourBar> {
+        let n = self.grid.len();
+        let (a, c) =
+            (k < n)
+                .then(|| self.dyads(k))
+                .flatten()
+                .ok_or(InvalidInput::OutsideRange {
+                    name: "pair (a dyad at infinity or an index outside the map)",
+                    value: k as f64,
+                    min: 0.0,
+                    max: n as f64 - 1.0,
+                    unit: "",
+                })?;
+        self.task.four_bar(&a.dyad(), &c.dyad())
+    }
+
+    /// The signed margin of every pair: the distance in the parameter
+    /// plane (radians of crank rotation, [`PairContext::grid`]) to the
+    /// nearest pair of the other class in `branch_free`, positive where
+    /// branch-free, negative elsewhere, infinite where the other class is
+    /// empty (the exact Euclidean distance transform over the whole map,
+    /// as for the driven three-pose map).
+    pub fn margins(&self, branch_free: &[bool]) -> Vec<f64> {
+        signed_distances(&self.grid, branch_free)
+    }
+
+    /// The `k` best pairs, best first, from the map's columns, by `rank_by`
+    /// (the rankings of the three-pose map, [`RankBy`]: runs of scores
+    /// within [`tolerance::RANK_TIE`](crate::tolerance::RANK_TIE) go to the
+    /// smaller size ratio, then the larger margin). A pair closer than
+    /// `min_separation` in the parameter plane to a better one is skipped,
+    /// so the list offers distinct options (default, `None`: 2% of the
+    /// plane's diagonal).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::OutsideRange`] for a negative or non-finite
+    /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
+    /// another length than the map.
+    pub fn best_pairs(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+        columns: RankColumns<'_>,
+    ) -> Result<Vec<Pair>> {
+        let sep = match min_separation {
+            Some(s) => in_range("min_separation", s, 0.0, f64::MAX, "")?,
+            None => 0.02 * self.grid.viewport().diagonal(),
+        };
+        let n = self.grid.len();
+        columns.check_len(n)?;
+        let margins = core::cell::OnceCell::new();
+        let margin = |s: usize| margins.get_or_init(|| self.margins(columns.branch_free))[s];
+        let span = self.task.span();
+        let nx = self.grid.nx();
+        let at = |s: usize| Point2::new(self.grid.x(s % nx), self.grid.y(s / nx));
+        let mut out: Vec<Pair> = Vec::new();
+        rank_samples(n, rank_by, &columns, &margin, |s, margin, score| {
+            if out.len() >= k {
+                return false;
+            }
+            let p = at(s);
+            if out
+                .iter()
+                .any(|q| (at(q.index.0 * nx + q.index.1) - p).norm() < sep)
+            {
+                return true;
+            }
+            if let (Some((driving, driven)), Ok(linkage)) = (self.dyads(s), self.linkage(s)) {
+                out.push(Pair {
+                    driving,
+                    driven,
+                    index: (s / nx, s % nx),
+                    linkage,
+                    margin,
+                    size_ratio: linkage.size() / span,
+                    score,
+                    ranked_by: rank_by,
+                });
+            }
+            out.len() < k
+        });
+        Ok(out)
+    }
+}
+
+impl PairMap {
+    /// The columns a ranking reads.
+    pub fn rank_columns(&self) -> RankColumns<'_> {
+        let c = &self.columns;
+        RankColumns {
+            valid: &c.valid,
+            branch_free: &c.branch_free,
+            min_transmission_rad: &c.min_transmission_rad,
+            link_ratio: &c.link_ratio,
+            size_ratio: &c.size_ratio,
+            acceptable: &c.acceptable,
+        }
+    }
+
+    /// The linkage of pair `(j, i)`: driven sample `j`, driving sample `i`.
+    ///
+    /// # Errors
+    ///
+    /// As [`PairContext::linkage`].
+    pub fn linkage(&self, j: usize, i: usize) -> Result<SynthesizedFourBar> {
+        let (ny, nx) = self.context.shape();
+        if j >= ny || i >= nx {
+            return Err(InvalidInput::OutsideRange {
+                name: "pair index",
+                value: (if j >= ny { j } else { i }) as f64,
+                min: 0.0,
+                max: (if j >= ny { ny } else { nx }) as f64 - 1.0,
+                unit: "",
+            }
+            .into());
+        }
+        self.context.linkage(j * nx + i)
+    }
+
+    /// The signed margin of every pair (see [`PairContext::margins`]).
+    pub fn margins(&self) -> Vec<f64> {
+        self.context.margins(&self.columns.branch_free)
+    }
+
+    /// The `k` best pairs, best first (see [`PairContext::best_pairs`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`PairContext::best_pairs`].
+    pub fn best_pairs(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+    ) -> Result<Vec<Pair>> {
+        self.context
+            .best_pairs(k, min_separation, rank_by, self.rank_columns())
+    }
+
+    /// The whole Pareto front of the acceptable pairs over the minimum
+    /// transmission angle and the size ratio, from the most compact to the
+    /// best transmission: `best_pairs(usize::MAX, Some(0.0),
+    /// RankBy::Pareto)`.
+    ///
+    /// # Errors
+    ///
+    /// As [`PairContext::best_pairs`].
+    pub fn pareto_front(&self) -> Result<Vec<Pair>> {
+        self.best_pairs(usize::MAX, Some(0.0), RankBy::Pareto)
+    }
+}
