@@ -494,7 +494,7 @@ SECTIONS.append(
             "loop, and every figure is timed four times), while the cost per pair hardly "
             "depends on the grid sizes (each driven center is one solution map of the "
             "driving grid). The Python loop is what a user writes without the "
-            "atlas: `task.filemon(C0).solution_map(driving)` and `best_pivots(1)` for every "
+            "atlas: `task.filemon(C0).solution_map(driving)` and `best_pivots(1, rank_by='transmission')` (the atlas's ranking) for every "
             "`C0`. The Dask figure is a `LocalCluster(n_workers=2, threads_per_worker=1, "
             "processes=True)` started beforehand, on the same 2 cores as the in-process run "
             "(rayon on all cores); it includes shipping the task and the arrays. "
