@@ -598,12 +598,13 @@ fn more_poses(inp: &mut Input<'_>, t: &Task) {
                     q.angle,
                 )
             }
-            // A rotation about an earlier pole.
+            // A rotation about an earlier pole (a finite one: a pure
+            // translation between two of the three poses has its pole at
+            // infinity, and not all three are).
             2 => {
-                let poles = t.poles();
-                let c = poles[usize::from(inp.byte()) % poles.len()]
-                    .finite()
-                    .expect("three poses have finite poles");
+                let poles: Vec<Point2<f64>> = t.poles().iter().filter_map(Pole::finite).collect();
+                assert!(!poles.is_empty(), "three poses of one angle make no task");
+                let c = poles[usize::from(inp.byte()) % poles.len()];
                 let q = poses[0];
                 let a = inp.nice();
                 let v = q.position - c;
