@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, List, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -447,6 +447,52 @@ def _curve_extent(task: Task, view: Optional[Sequence[float]]) -> Extent:
     return (xmin, xmax, ymin, ymax)
 
 
+def _draw_free_arcs(ax: Axes, task: Task, driven: Point, extent: Extent, plane: Literal["center", "circle"],
+                    handles: List[Any]) -> None:
+    """Four poses: the branch-free arcs of the driving dyads for the driven
+    dyad of ``driven`` as a wide band under the curve of ``plane``
+    (``"center"`` or ``"circle"``; gid ``"branch-free-arcs"``)."""
+    what = "pivots" if plane == "center" else "circle points"
+    for k, pts in enumerate(task.branch_free_arcs(driven, *extent, plane=plane)):
+        (band,) = ax.plot(pts[:, 0], pts[:, 1], color=FREE_COLOR, linewidth=9.0,
+                          solid_capstyle="butt", zorder=2)
+        band.set_gid("branch-free-arcs")
+        if k == 0:
+            band.set_label(f"branch-free driving {what} for C0")
+            handles.append(band)
+
+
+def _draw_order_arcs(ax: Axes, task: Task, extent: Extent, plane: Literal["center", "circle"], labels: bool,
+                     handles: List[Any]) -> None:
+    """Four poses: the curve of ``plane`` (``"center"`` or ``"circle"``) cut
+    by crank order and coloured by it (gid ``"center-point-curve"`` or
+    ``"circle-point-curve"``), and the points ``Q_jk`` (their circle points
+    ``Q'jk`` in the circle-point plane; gid ``"coincidence-points"``)."""
+    circle = plane == "circle"
+    labelled: Dict[Optional[str], bool] = {}
+    for _, direction, pts in task.order_arcs(*extent, plane=plane):
+        (line,) = ax.plot(pts[:, 0], pts[:, 1], color=ORDER_COLORS[direction], linewidth=2.0, zorder=3)
+        line.set_gid(f"{plane}-point-curve")
+        if direction not in labelled:
+            labelled[direction] = True
+            label = ORDER_LABELS[direction]
+            line.set_label(label.replace("center points", "circle points") if circle else label)
+            handles.append(line)
+    points = ((q.pair, q.circle if circle else q.center) for q in task.coincidence_points())
+    qs = [(pair, p) for pair, p in points if p is not None]
+    if qs:
+        legend = ("Q'jk: moving pivot on P_jk at poses j, k" if circle
+                  else "Q_jk: crank positions j, k coincide")
+        handles.append(_markers(
+            ax, [p for _, p in qs], "coincidence-points", legend,
+            marker="D", markersize=6, color="white", markeredgecolor="black", zorder=5,
+        ))
+        if labels:
+            prime = "'" if circle else ""
+            for (j, k), p in qs:
+                _label(ax, p, f"Q{prime}{j}{k}", "0.3")
+
+
 def burmester_plane(
     task: Task,
     view: Optional[Sequence[float]] = None,
@@ -501,17 +547,8 @@ def burmester_plane(
     extent = _curve_extent(task, view)
     ax = _new_axes(ax)
     handles: List[Any] = []
-    labelled: Dict[Optional[str], bool] = {}
     if n == 4 and driven is not None:
-        first = True
-        for pts in task.branch_free_arcs(driven, *extent):
-            (band,) = ax.plot(pts[:, 0], pts[:, 1], color=FREE_COLOR, linewidth=9.0,
-                              solid_capstyle="butt", zorder=2)
-            band.set_gid("branch-free-arcs")
-            if first:
-                band.set_label("branch-free driving pivots for C0")
-                handles.append(band)
-                first = False
+        _draw_free_arcs(ax, task, driven, extent, "center", handles)
         handles.append(_markers(
             ax, [driven], "driven-pivot", "driven crank's fixed pivot C0",
             marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=6,
@@ -519,22 +556,7 @@ def burmester_plane(
         if labels:
             _label(ax, driven, "C0")
     if n == 4:
-        for order, direction, pts in task.order_arcs(*extent):
-            (line,) = ax.plot(pts[:, 0], pts[:, 1], color=ORDER_COLORS[direction], linewidth=2.0, zorder=3)
-            line.set_gid("center-point-curve")
-            if direction not in labelled:
-                labelled[direction] = True
-                line.set_label(ORDER_LABELS[direction])
-                handles.append(line)
-        qs = [(q.pair, q.center) for q in task.coincidence_points() if q.center is not None]
-        if qs:
-            handles.append(_markers(
-                ax, [p for _, p in qs], "coincidence-points", "Q_jk: crank positions j, k coincide",
-                marker="D", markersize=6, color="white", markeredgecolor="black", zorder=5,
-            ))
-            if labels:
-                for (j, k), p in qs:
-                    _label(ax, p, f"Q{j}{k}", "0.3")
+        _draw_order_arcs(ax, task, extent, "center", labels, handles)
     else:
         curve_a, curve_b = task.burmester_curves()
         for curve, gid, name, style in (
@@ -630,15 +652,7 @@ def circle_curve_plane(
     handles: List[Any] = []
     if driven is not None:
         c1 = task.circle_point(driven)
-        first = True
-        for pts in task.branch_free_arcs(driven, *extent, plane="circle"):
-            (band,) = ax.plot(pts[:, 0], pts[:, 1], color=FREE_COLOR, linewidth=9.0,
-                              solid_capstyle="butt", zorder=2)
-            band.set_gid("branch-free-arcs")
-            if first:
-                band.set_label("branch-free driving circle points for C0")
-                handles.append(band)
-                first = False
+        _draw_free_arcs(ax, task, driven, extent, "circle", handles)
         images = [task.displace(driven, k, 1) for k in range(1, 5)]
         for k, image in enumerate(images, start=1):
             seg = clip_line(c1, (image[0] - c1[0], image[1] - c1[1]), extent) if image != c1 else None
@@ -656,23 +670,7 @@ def circle_curve_plane(
             _label(ax, c1, "C1")
             for k, image in enumerate(images, start=1):
                 _label(ax, image, f"C'{k}", "0.3")
-    labelled: Dict[Optional[str], bool] = {}
-    for _, direction, pts in task.order_arcs(*extent, plane="circle"):
-        (line,) = ax.plot(pts[:, 0], pts[:, 1], color=ORDER_COLORS[direction], linewidth=2.0, zorder=3)
-        line.set_gid("circle-point-curve")
-        if direction not in labelled:
-            labelled[direction] = True
-            line.set_label(ORDER_LABELS[direction].replace("center points", "circle points"))
-            handles.append(line)
-    qs = [(q.pair, q.circle) for q in task.coincidence_points() if q.circle is not None]
-    if qs:
-        handles.append(_markers(
-            ax, [p for _, p in qs], "coincidence-points", "Q'jk: moving pivot on P_jk at poses j, k",
-            marker="D", markersize=6, color="white", markeredgecolor="black", zorder=5,
-        ))
-        if labels:
-            for (j, k), p in qs:
-                _label(ax, p, f"Q'{j}{k}", "0.3")
+    _draw_order_arcs(ax, task, extent, "circle", labels, handles)
     handles.append(_draw_poses(ax, task, labels))
     if labels:
         ax.set_title("4 poses: circle-point curve (coupler frame at pose 1)")
