@@ -192,6 +192,40 @@ fn view_around(four: &FourPositions, h: f64) -> Viewport {
     Viewport::new(c.x - r, c.x + r, c.y - r, c.y + r).unwrap()
 }
 
+/// Pieces of a curve cut by crank order: where two pieces meet the order
+/// changes, exactly at one of `cuts`; inside a piece each point's dyad
+/// (`dyad_of`) has the piece's order, away from ties of two crank angles.
+fn check_order_arcs(
+    four: &FourPositions,
+    arcs: &[burmester::synthesis::curves::OrderArc],
+    cuts: &[Point2<f64>],
+    dyad_of: impl Fn(Point2<f64>) -> Dyad,
+) -> Result<(), TestCaseError> {
+    let s = four.size();
+    for w in arcs.windows(2) {
+        let (a, b) = (&w[0], &w[1]);
+        let end = *a.points.last().unwrap();
+        if end != b.points[0] {
+            continue;
+        }
+        prop_assert!(a.order != b.order);
+        let at_cut = cuts.iter().any(|c| (c - end).norm() <= 1e-9 * s);
+        prop_assert!(at_cut, "a cut at {} is none of {:?}", end, cuts);
+    }
+    for a in arcs {
+        for p in &a.points[1..a.points.len() - 1] {
+            let d = dyad_of(*p);
+            let ang = four.crank_angles(&d);
+            let tie =
+                (0..4).any(|j| (j + 1..4).any(|k| common::wrap(ang[j] - ang[k]).abs() < 1e-9));
+            if !tie {
+                prop_assert_eq!(four.crank_order(&d), a.order);
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Distance from `p` to the segment `a b`.
 fn seg_dist(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
     let ab = b - a;
@@ -541,27 +575,7 @@ proptest! {
         let _ = changes;
         // The pieces of constant order in view are cut exactly at the Q_jk.
         let view = view_around(&four, 3.0);
-        let arcs = four.order_arcs(&view);
-        for w in arcs.windows(2) {
-            let (a, b) = (&w[0], &w[1]);
-            let end = *a.points.last().unwrap();
-            if end != b.points[0] {
-                continue;
-            }
-            prop_assert!(a.order != b.order);
-            let at_q = qs.iter().any(|q| (q - end).norm() <= 1e-9 * s);
-            prop_assert!(at_q, "a cut at {} is no Q_jk", end);
-        }
-        for a in &arcs {
-            for p in &a.points[1..a.points.len() - 1] {
-                let d = four.dyad_from_center(*p).unwrap();
-                let ang = four.crank_angles(&d);
-                let tie = (0..4).any(|j| (j + 1..4).any(|k| common::wrap(ang[j] - ang[k]).abs() < 1e-9));
-                if !tie {
-                    prop_assert_eq!(four.crank_order(&d), a.order);
-                }
-            }
-        }
+        check_order_arcs(&four, &four.order_arcs(&view), &qs, |p| four.dyad_from_center(p).unwrap())?;
     }
 
     #[test]
@@ -597,30 +611,13 @@ proptest! {
         zs.extend(sliders);
         let view = view_around(&four, 3.0);
         let arcs = four.circle_order_arcs(&view);
-        for w in arcs.windows(2) {
-            let (a, b) = (&w[0], &w[1]);
-            let end = *a.points.last().unwrap();
-            if end != b.points[0] {
-                continue;
-            }
-            prop_assert!(a.order != b.order);
-            let at_z = zs.iter().any(|z| (z - end).norm() <= 1e-9 * s);
-            prop_assert!(at_z, "a cut at {} is neither the circle point of a Q_jk nor a slider's", end);
+        // Each point is a circle point of the four poses: its dyad (from the
+        // center point) passes them.
+        for z in arcs.iter().flat_map(|a| &a.points[1..a.points.len() - 1]) {
+            let d = four.dyad_from_circle(*z).unwrap();
+            prop_assert!(spread(&poses, &d) < 1e-6, "{}", spread(&poses, &d));
         }
-        for a in &arcs {
-            for z in &a.points[1..a.points.len() - 1] {
-                // Each point is a circle point of the four poses: its dyad
-                // (from the center point) passes them, and its order is the
-                // arc's away from ties.
-                let d = four.dyad_from_circle(*z).unwrap();
-                prop_assert!(spread(&poses, &d) < 1e-6, "{}", spread(&poses, &d));
-                let ang = four.crank_angles(&d);
-                let tie = (0..4).any(|j| (j + 1..4).any(|k| common::wrap(ang[j] - ang[k]).abs() < 1e-9));
-                if !tie {
-                    prop_assert_eq!(four.crank_order(&d), a.order);
-                }
-            }
-        }
+        check_order_arcs(&four, &arcs, &zs, |z| four.dyad_from_circle(z).unwrap())?;
     }
 }
 
