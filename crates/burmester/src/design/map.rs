@@ -7,6 +7,7 @@
 use nalgebra::Point2;
 
 use crate::design::constraints::Prepared;
+use crate::design::kernel::DrivingKernel;
 use crate::design::{Constraints, DesignLimits};
 use crate::engine::{Control, Rows, run_blocks};
 use crate::error::{InvalidInput, Result, try_vec};
@@ -229,6 +230,13 @@ pub(crate) struct Judge<'a> {
     prepared: Prepared,
 }
 
+impl Judge<'_> {
+    /// The task's coupler point at pose 1 (for the members' length).
+    pub(crate) fn point(&self) -> Point2<f64> {
+        self.point
+    }
+}
+
 impl<'a> Judge<'a> {
     pub(crate) fn new(
         task: &'a Task,
@@ -262,6 +270,22 @@ impl<'a> Judge<'a> {
         let Some(f) = fig else {
             return Sample::INVALID;
         };
+        let members = members_length(f.lengths, driving.circle, driven.circle, self.point);
+        self.sample_sized(f, branch_free, candidates, driving, driven, members)
+    }
+
+    /// [`sample`](Self::sample) of a linkage whose members' total length
+    /// ([`members_length`]) is `members`.
+    #[inline(always)]
+    pub(crate) fn sample_sized(
+        &self,
+        f: LinkageFigures,
+        branch_free: bool,
+        candidates: &[Point2<f64>],
+        driving: Dyad,
+        driven: Dyad,
+        members: f64,
+    ) -> Sample {
         let acceptable = branch_free
             && self.limits.meets(&f)
             && candidates.iter().all(|&c| self.prepared.pivot_ok(c))
@@ -279,8 +303,7 @@ impl<'a> Judge<'a> {
             one_circuit: f.one_circuit,
             min_transmission_rad: f.min_transmission as f32,
             link_ratio: f.link_ratio as f32,
-            size_ratio: (members_length(f.lengths, driving.circle, driven.circle, self.point)
-                * self.inv_span) as f32,
+            size_ratio: (members * self.inv_span) as f32,
             acceptable,
         }
     }
@@ -289,9 +312,9 @@ impl<'a> Judge<'a> {
 /// What the per-sample evaluation of either three-pose map shares: the
 /// task's motion and maps, and the [`Judge`].
 pub(crate) struct Sampler<'a> {
-    judge: Judge<'a>,
-    maps: &'a Maps,
-    motion: &'a Motion,
+    pub(super) judge: Judge<'a>,
+    pub(super) maps: &'a Maps,
+    pub(super) motion: &'a Motion,
 }
 
 impl<'a> Sampler<'a> {
@@ -400,9 +423,15 @@ impl Filemon {
         self.branch_map_into(grid, Method::Conic, &mut branch, control)?;
         let mut columns = Columns::new(grid.len())?;
         let c = sampler.fixed_pivots(&driven);
-        fill(grid, &mut columns, control, |k, a0| {
-            sampler.driving_sample(a0, driven, &c, branch[k])
-        })?;
+        match DrivingKernel::new(&sampler, driven, &c) {
+            Some(kernel) => {
+                let xs = DrivingKernel::padded_xs(grid);
+                kernel.fill(grid, &xs, &branch, columns.rows(grid.nx()), control)?;
+            }
+            None => fill(grid, &mut columns, control, |k, a0| {
+                sampler.driving_sample(a0, driven, &c, branch[k])
+            })?,
+        }
         Ok(SolutionMap {
             context: MapContext {
                 grid: *grid,

@@ -30,6 +30,7 @@
 
 pub mod atlas;
 mod constraints;
+mod kernel;
 mod limits;
 mod map;
 pub mod pairs;

@@ -114,6 +114,13 @@ impl Motion {
         }
     }
 
+    /// `((cos, sin) of theta_1k, t_k)`: the parts of [`first_to`](Self::first_to)
+    /// for a 0-based `k` (no check: internal; the vectorised map kernel).
+    #[inline]
+    pub(crate) fn first_to_parts(&self, k: usize) -> ((f64, f64), Vector2<f64>) {
+        (self.rot[k], self.shift[k])
+    }
+
     /// `D_1k(z) = R_k z + t_k` for a 0-based `k` (no check: internal).
     #[inline(always)]
     pub(crate) fn first_to(&self, k: usize, z: Point2<f64>) -> Point2<f64> {

@@ -1,0 +1,722 @@
+//! The per-pivot kernel of the three-pose driving solution map and of the
+//! pivot atlas, vectorised across a row of candidate driving centers.
+//!
+//! [`Sampler::driving_sample`] computes one sample at a time: the circle
+//! point by the closed form, the moving pivot at the three poses, the
+//! lengths, the input bounds, order and circuit by pseudo-angles, and the
+//! worst `|cos mu|` over the travel (see
+//! [`LinkageFigures`](crate::LinkageFigures) for the method). Here the same
+//! arithmetic runs on SIMD lanes, one candidate per lane, every branch of
+//! the scalar code turned into a select; what is left per sample (the
+//! Grashof class, one `acos`, the limits and constraints, the columns)
+//! runs in scalar code from the lanes' results.
+//!
+//! The lanes come from [`pulp`], which picks at run time the widest
+//! instruction set the CPU has (AVX2 on x86-64-v3, scalar lanes
+//! elsewhere), with no `unsafe` in this crate: a portable wheel built for
+//! SSE2 still runs the AVX2 code where the CPU has it. Every lane
+//! operation is the scalar path's IEEE operation on the same operands in
+//! the same order (no fused multiply-add, no reassociation, a select where
+//! the scalar code branches), so a map is the scalar path's bit for bit;
+//! the tests below check it for lane widths 1, 2, 4 and 8 and for what
+//! the CPU dispatches to.
+
+use nalgebra::Point2;
+use pulp::{Arch, Simd, WithSimd};
+
+use crate::design::map::{ColumnsMut, Sample, Sampler};
+use crate::engine::{Control, run_blocks};
+use crate::error::Result;
+use crate::geom::{Grid, PerPose};
+use crate::linkage::{Direction, Grashof, LinkageFigures};
+use crate::synthesis::Dyad;
+use crate::synthesis::three::Maps;
+use crate::tolerance;
+
+/// Rows are padded to a multiple of the widest lane count (8, AVX-512).
+const PAD: usize = 8;
+
+/// The flags of a lane, packed as small integers in one `f64`.
+const VALID: u8 = 1;
+const FULL: u8 = 2;
+const ONE_CIRCUIT: u8 = 4;
+const CCW: u8 = 8;
+const CW: u8 = 16;
+
+/// A Grashof class's code as a lane value.
+fn code(g: Grashof) -> f64 {
+    f64::from(g.code())
+}
+
+/// The lanes' results for one row, one value per candidate (structure of
+/// arrays, padded to a multiple of [`PAD`]).
+pub(crate) struct RowOut {
+    qx: Vec<f64>,
+    qy: Vec<f64>,
+    l1: Vec<f64>,
+    l2: Vec<f64>,
+    l3: Vec<f64>,
+    /// The largest `|cos mu|` over the travel (meaningless without a
+    /// direction).
+    worst: Vec<f64>,
+    ratio: Vec<f64>,
+    members: Vec<f64>,
+    flags: Vec<f64>,
+    /// The Grashof class's code.
+    grashof: Vec<f64>,
+}
+
+impl RowOut {
+    /// Room for the padded row `xs` of [`DrivingKernel::padded_xs`].
+    pub(crate) fn new(xs: &[f64]) -> Self {
+        let v = || vec![0.0; xs.len()];
+        RowOut {
+            qx: v(),
+            qy: v(),
+            l1: v(),
+            l2: v(),
+            l3: v(),
+            worst: v(),
+            ratio: v(),
+            members: v(),
+            flags: v(),
+            grashof: v(),
+        }
+    }
+}
+
+/// The candidates of one driving map (or atlas cell): the task's closed
+/// form for the circle point, its motion to poses 2 and 3, and the fixed
+/// driven dyad, as the constants of the lanes.
+pub(crate) struct DrivingKernel<'s> {
+    sampler: &'s Sampler<'s>,
+    driven: Dyad,
+    origin: [f64; 2],
+    scale: f64,
+    q13: [f64; 2],
+    /// `(cos, -sin)` of `theta12 / 2` and `theta13 / 2` (the center to
+    /// circle direction of the map).
+    half12: (f64, f64),
+    half13: (f64, f64),
+    /// `(cos, sin)` and shift of the motion from pose 1 to poses 2 and 3.
+    rot: [(f64, f64); 2],
+    shift: [[f64; 2]; 2],
+    /// The driven center and its moving pivot at pose 1.
+    c0: [f64; 2],
+    c1: [f64; 2],
+    /// The rocker's length, and `|P - C1|` for the members' length.
+    l4: f64,
+    to_driven: f64,
+    point: [f64; 2],
+    tiny: f64,
+}
+
+impl<'s> DrivingKernel<'s> {
+    /// The kernel of the driving map with driven dyad `driven` (moving
+    /// pivot `c` at the three poses); `None` for a task with a pole at
+    /// infinity (the linear form, which keeps the scalar path).
+    pub(crate) fn new(
+        sampler: &'s Sampler<'s>,
+        driven: Dyad,
+        c: &[Point2<f64>; 3],
+    ) -> Option<Self> {
+        let Maps::Poles(cremona) = sampler.maps else {
+            return None;
+        };
+        let (origin, scale) = cremona.frame();
+        let q13 = cremona.local_p13();
+        let ((c12, s12), (c13, s13)) = cremona.half_angles();
+        let rot_shift = |k: usize| sampler.motion.first_to_parts(k);
+        let ((r1, t1), (r2, t2)) = (rot_shift(1), rot_shift(2));
+        let point = sampler.judge.point();
+        Some(DrivingKernel {
+            sampler,
+            driven,
+            origin: [origin.x, origin.y],
+            scale,
+            q13: [q13.x, q13.y],
+            half12: (c12, -1.0 * s12),
+            half13: (c13, -1.0 * s13),
+            rot: [r1, r2],
+            shift: [[t1.x, t1.y], [t2.x, t2.y]],
+            c0: [driven.center.x, driven.center.y],
+            c1: [c[0].x, c[0].y],
+            l4: (c[0] - driven.center).norm(),
+            to_driven: (point - driven.circle).norm(),
+            point: [point.x, point.y],
+            tiny: sampler.judge.tiny,
+        })
+    }
+
+    /// The abscissae of `grid`'s columns, padded with the last to a
+    /// multiple of the widest lane count.
+    pub(crate) fn padded_xs(grid: &Grid) -> Vec<f64> {
+        let nx = grid.nx();
+        (0..nx.next_multiple_of(PAD))
+            .map(|i| grid.x(i.min(nx - 1)))
+            .collect()
+    }
+
+    /// The lanes of the row at ordinate `y` with abscissae `xs` (padded)
+    /// into `out`, on the widest SIMD the CPU has.
+    #[inline]
+    pub(crate) fn row(&self, y: f64, xs: &[f64], out: &mut RowOut) {
+        Arch::new().dispatch(Lanes {
+            k: self,
+            y,
+            xs,
+            out,
+        });
+    }
+
+    /// The sample of candidate `a0` (column `i` of the row in `out`) with
+    /// branch flag `branch_free`: [`Sampler::driving_sample`] bit for bit.
+    #[inline]
+    pub(crate) fn sample(
+        &self,
+        out: &RowOut,
+        i: usize,
+        a0: Point2<f64>,
+        branch_free: bool,
+    ) -> Sample {
+        let flags = out.flags[i] as u8;
+        if flags & VALID == 0 {
+            return Sample::INVALID;
+        }
+        let lengths = [out.l1[i], out.l2[i], out.l3[i], self.l4];
+        let direction = if flags & CCW != 0 {
+            Direction::Ccw
+        } else if flags & CW != 0 {
+            Direction::Cw
+        } else {
+            Direction::None
+        };
+        let min_transmission = if direction == Direction::None {
+            f64::NAN
+        } else {
+            out.worst[i].acos()
+        };
+        let f = LinkageFigures {
+            lengths,
+            grashof: Grashof::ALL[out.grashof[i] as usize],
+            input_full: flags & FULL != 0,
+            modes: PerPose::from_fn(3, |_| None),
+            direction,
+            one_circuit: flags & ONE_CIRCUIT != 0,
+            min_transmission,
+            link_ratio: out.ratio[i],
+        };
+        let q = Point2::new(out.qx[i], out.qy[i]);
+        self.sampler.judge.sample_sized(
+            f,
+            branch_free,
+            &[a0],
+            Dyad::new(a0, q),
+            self.driven,
+            out.members[i],
+        )
+    }
+
+    /// Fills the columns of a driving solution map over `grid` (`xs` its
+    /// [`padded_xs`](Self::padded_xs)) with branch flags `branch`, over
+    /// blocks of rows on the engine.
+    pub(crate) fn fill(
+        &self,
+        grid: &Grid,
+        xs: &[f64],
+        branch: &[bool],
+        columns: ColumnsMut<'_>,
+        control: &Control<'_>,
+    ) -> Result<()> {
+        let nx = grid.nx();
+        run_blocks(nx, grid.ny(), columns, control, |j0, mut block, rows| {
+            let mut out = RowOut::new(xs);
+            for r in 0..rows {
+                let j = j0 + r;
+                let y = grid.y(j);
+                self.row(y, xs, &mut out);
+                for (i, &x) in xs[..nx].iter().enumerate() {
+                    let s = self.sample(&out, i, Point2::new(x, y), branch[j * nx + i]);
+                    block.set(r * nx + i, s);
+                }
+            }
+        })
+    }
+}
+
+/// One row of lanes (pulp's entry point).
+struct Lanes<'k, 'o> {
+    k: &'k DrivingKernel<'k>,
+    y: f64,
+    xs: &'o [f64],
+    out: &'o mut RowOut,
+}
+
+/// The lane operations, each inlined into the dispatched function so that
+/// it compiles with the CPU's target features.
+#[derive(Clone, Copy)]
+struct Ops<S>(S);
+
+/// A mask of lanes.
+type M<S> = <S as Simd>::m64s;
+/// A vector of lanes.
+type V<S> = <S as Simd>::f64s;
+
+impl<S: Simd> Ops<S> {
+    #[inline(always)]
+    fn sp(self, v: f64) -> V<S> {
+        self.0.splat_f64s(v)
+    }
+    #[inline(always)]
+    fn add(self, a: V<S>, b: V<S>) -> V<S> {
+        self.0.add_f64s(a, b)
+    }
+    #[inline(always)]
+    fn sub(self, a: V<S>, b: V<S>) -> V<S> {
+        self.0.sub_f64s(a, b)
+    }
+    #[inline(always)]
+    fn mul(self, a: V<S>, b: V<S>) -> V<S> {
+        self.0.mul_f64s(a, b)
+    }
+    #[inline(always)]
+    fn div(self, a: V<S>, b: V<S>) -> V<S> {
+        self.0.div_f64s(a, b)
+    }
+    #[inline(always)]
+    fn neg(self, a: V<S>) -> V<S> {
+        self.0.neg_f64s(a)
+    }
+    #[inline(always)]
+    fn abs(self, a: V<S>) -> V<S> {
+        self.0.abs_f64s(a)
+    }
+    #[inline(always)]
+    fn lt(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.less_than_f64s(a, b)
+    }
+    #[inline(always)]
+    fn gt(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.greater_than_f64s(a, b)
+    }
+    #[inline(always)]
+    fn le(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.less_than_or_equal_f64s(a, b)
+    }
+    #[inline(always)]
+    fn ge(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.greater_than_or_equal_f64s(a, b)
+    }
+    #[inline(always)]
+    fn eq(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.equal_f64s(a, b)
+    }
+    #[inline(always)]
+    fn and(self, a: M<S>, b: M<S>) -> M<S> {
+        self.0.and_m64s(a, b)
+    }
+    #[inline(always)]
+    fn or(self, a: M<S>, b: M<S>) -> M<S> {
+        self.0.or_m64s(a, b)
+    }
+    #[inline(always)]
+    fn xor(self, a: M<S>, b: M<S>) -> M<S> {
+        self.0.xor_m64s(a, b)
+    }
+    #[inline(always)]
+    fn not(self, a: M<S>) -> M<S> {
+        self.0.not_m64s(a)
+    }
+    /// `m ? a : b` per lane.
+    #[inline(always)]
+    fn sel(self, m: M<S>, a: V<S>, b: V<S>) -> V<S> {
+        self.0.select_f64s(m, a, b)
+    }
+    /// The scalar path's `fmax` (`if a > b { a } else { b }`).
+    #[inline(always)]
+    fn fmax(self, a: V<S>, b: V<S>) -> V<S> {
+        self.sel(self.gt(a, b), a, b)
+    }
+    /// The scalar path's `fmin` (`if a < b { a } else { b }`).
+    #[inline(always)]
+    fn fmin(self, a: V<S>, b: V<S>) -> V<S> {
+        self.sel(self.lt(a, b), a, b)
+    }
+    #[inline(always)]
+    fn finite(self, a: V<S>) -> M<S> {
+        self.lt(self.abs(a), self.sp(f64::INFINITY))
+    }
+    /// `sqrt(x^2 + y^2)`, as nalgebra's `norm`.
+    #[inline(always)]
+    fn norm(self, x: V<S>, y: V<S>) -> V<S> {
+        self.0.sqrt_f64s(self.add(self.mul(x, x), self.mul(y, y)))
+    }
+    /// `r . v`.
+    #[inline(always)]
+    fn dot(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {
+        self.add(self.mul(rx, vx), self.mul(ry, vy))
+    }
+    /// `r x v`.
+    #[inline(always)]
+    fn cross(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {
+        self.sub(self.mul(rx, vy), self.mul(ry, vx))
+    }
+    /// `pseudo_angle(r, v)`: the monotone pseudo-angle of `v` from `r`.
+    #[inline(always)]
+    fn pseudo(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {
+        let (zero, two, four) = (self.sp(0.0), self.sp(2.0), self.sp(4.0));
+        let x = self.dot(rx, ry, vx, vy);
+        let y = self.cross(rx, ry, vx, vy);
+        let d = self.add(self.abs(x), self.abs(y));
+        let p = self.div(y, d);
+        let upper = self.sel(self.ge(y, zero), p, self.add(four, p));
+        let t = self.sel(self.ge(x, zero), upper, self.sub(two, p));
+        self.sel(self.eq(d, zero), zero, t)
+    }
+    /// `|cos mu|` at `c = cc` from `[k0, k1, k2, 1 / (2 L3 L4)]` (`figures`).
+    #[inline(always)]
+    fn cos_mu(self, cc: V<S>, [k0, k1, k2, inv]: [V<S>; 4]) -> V<S> {
+        let c = self.mul(self.sub(k2, self.sub(k0, self.mul(k1, cc))), inv);
+        self.fmin(self.abs(c), self.sp(1.0))
+    }
+    /// Whether pseudo-angle `p` lies in the travel `[from, to]` (or is the
+    /// crank's start, for a crank).
+    #[inline(always)]
+    fn inside(self, p: V<S>, from: V<S>, to: V<S>, full: M<S>) -> M<S> {
+        let between = self.and(self.ge(p, from), self.le(p, to));
+        self.or(between, self.and(full, self.eq(p, self.sp(0.0))))
+    }
+    /// `v` where `m`, else 0.
+    #[inline(always)]
+    fn flag(self, m: M<S>, v: u8) -> V<S> {
+        self.sel(m, self.sp(f64::from(v)), self.sp(0.0))
+    }
+}
+
+impl WithSimd for Lanes<'_, '_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: Simd>(self, s: S) {
+        let (k, o) = (self.k, Ops(s));
+        let (zero, one, two, four) = (o.sp(0.0), o.sp(1.0), o.sp(2.0), o.sp(4.0));
+        let (ox, oy) = (o.sp(k.origin[0]), o.sp(k.origin[1]));
+        let scale = o.sp(k.scale);
+        let (q13x, q13y) = (o.sp(k.q13[0]), o.sp(k.q13[1]));
+        let (c12, s12) = (o.sp(k.half12.0), o.sp(k.half12.1));
+        let (c13, s13) = (o.sp(k.half13.0), o.sp(k.half13.1));
+        let (c0x, c0y) = (o.sp(k.c0[0]), o.sp(k.c0[1]));
+        let (c1x, c1y) = (o.sp(k.c1[0]), o.sp(k.c1[1]));
+        let (px, py) = (o.sp(k.point[0]), o.sp(k.point[1]));
+        let (l4, tiny, to_driven) = (o.sp(k.l4), o.sp(k.tiny), o.sp(k.to_driven));
+        let rounding_eps = o.sp(tolerance::ROUNDING_EPS * f64::EPSILON);
+        let [(r1c, r1s), (r2c, r2s)] = k.rot.map(|(c, s)| (o.sp(c), o.sp(s)));
+        let [t1, t2] = k.shift.map(|t| t.map(|v| o.sp(v)));
+        let y = o.sp(self.y);
+        let yy = o.sp((self.y - k.origin[1]) / k.scale);
+
+        let n = S::F64_LANES;
+        let (xs, _) = S::as_simd_f64s(self.xs);
+        let out = self.out;
+        for (c, &x) in xs.iter().enumerate() {
+            // The circle point by the closed form (`circle_point_fast`).
+            let yx = o.div(o.sub(x, ox), scale);
+            let ux = o.sub(o.mul(c12, yx), o.mul(s12, yy));
+            let uy = o.add(o.mul(s12, yx), o.mul(c12, yy));
+            let (wx, wy) = (o.sub(yx, q13x), o.sub(yy, q13y));
+            let vx = o.sub(o.mul(c13, wx), o.mul(s13, wy));
+            let vy = o.add(o.mul(s13, wx), o.mul(c13, wy));
+            let den = o.cross(ux, uy, vx, vy);
+            let kappa = o.cross(q13x, q13y, vx, vy);
+            let t = o.mul(o.div(kappa, den), scale);
+            let qx = o.add(ox, o.mul(ux, t));
+            let qy = o.add(oy, o.mul(uy, t));
+            let has_q = o.and(o.and(o.finite(qx), o.finite(qy)), o.not(o.eq(den, zero)));
+            // The moving pivot at poses 2 and 3 (`Motion::first_to`), and
+            // the crank at the three poses.
+            let a1x = o.add(o.sub(o.mul(r1c, qx), o.mul(r1s, qy)), t1[0]);
+            let a1y = o.add(o.add(o.mul(r1s, qx), o.mul(r1c, qy)), t1[1]);
+            let a2x = o.add(o.sub(o.mul(r2c, qx), o.mul(r2s, qy)), t2[0]);
+            let a2y = o.add(o.add(o.mul(r2s, qx), o.mul(r2c, qy)), t2[1]);
+            let (e0x, e0y) = (o.sub(qx, x), o.sub(qy, y));
+            let (e1x, e1y) = (o.sub(a1x, x), o.sub(a1y, y));
+            let (e2x, e2y) = (o.sub(a2x, x), o.sub(a2y, y));
+            // The lengths and whether the linkage exists (`figures`).
+            let (gx, gy) = (o.sub(c0x, x), o.sub(c0y, y));
+            let l1 = o.norm(gx, gy);
+            let l2 = o.norm(e0x, e0y);
+            let l3 = o.norm(o.sub(c1x, qx), o.sub(c1y, qy));
+            let total = o.add(o.add(o.add(l1, l2), l3), l4);
+            let valid = o.and(
+                o.and(
+                    o.and(has_q, o.gt(l1, tiny)),
+                    o.and(o.gt(l2, tiny), o.gt(l3, tiny)),
+                ),
+                o.and(o.gt(l4, tiny), o.finite(total)),
+            );
+            // The input bounds (`input_bounds`).
+            let m = o.fmax(l1, l2);
+            let (g, cr) = (o.div(l1, m), o.div(l2, m));
+            let (l3m, l4m) = (o.div(l3, m), o.div(l4, m));
+            let (sum, diff) = (o.add(l3m, l4m), o.sub(l3m, l4m));
+            let base = o.add(o.mul(g, g), o.mul(cr, cr));
+            let twice = o.mul(o.mul(two, g), cr);
+            let rounding = o.div(rounding_eps, twice);
+            let (sum2, diff2) = (o.mul(sum, sum), o.mul(diff, diff));
+            let c_min = o.div(o.sub(base, sum2), twice);
+            let c_max = o.div(o.sub(base, diff2), twice);
+            let lo_free = o.le(c_min, o.add(o.sp(-1.0), o.mul(rounding, o.add(base, sum2))));
+            let hi_free = o.ge(c_max, o.sub(one, o.mul(rounding, o.add(base, diff2))));
+            let full = o.and(lo_free, hi_free);
+            // A crank: pseudo-angles from the crank at pose 1.
+            let tf1 = o.pseudo(e0x, e0y, e1x, e1y);
+            let tf2 = o.pseudo(e0x, e0y, e2x, e2y);
+            let no_zero = o.not(o.or(o.eq(tf1, zero), o.eq(tf2, zero)));
+            let ccw_f = o.and(no_zero, o.lt(tf1, tf2));
+            let cw_f = o.and(no_zero, o.gt(tf1, tf2));
+            let from_f = o.sel(ccw_f, zero, tf2);
+            let to_f = o.sel(ccw_f, tf2, four);
+            // A rocker: pseudo-angles from a direction in the dead zone.
+            let rx = o.sel(hi_free, o.neg(gx), gx);
+            let ry = o.sel(hi_free, o.neg(gy), gy);
+            let tr0 = o.pseudo(rx, ry, e0x, e0y);
+            let tr1 = o.pseudo(rx, ry, e1x, e1y);
+            let tr2 = o.pseudo(rx, ry, e2x, e2y);
+            let side0 = o.gt(o.cross(gx, gy, e0x, e0y), zero);
+            let side1 = o.gt(o.cross(gx, gy, e1x, e1y), zero);
+            let side2 = o.gt(o.cross(gx, gy, e2x, e2y), zero);
+            let same = o.not(o.or(o.xor(side0, side1), o.xor(side0, side2)));
+            let one_c = o.or(o.or(hi_free, lo_free), same);
+            let ccw_r = o.and(one_c, o.and(o.lt(tr0, tr1), o.lt(tr1, tr2)));
+            let cw_r = o.and(one_c, o.and(o.gt(tr0, tr1), o.gt(tr1, tr2)));
+            // Where the direction is defined no pseudo-angle is NaN, and
+            // `from`, `to` are only compared: a select is `f64::min`/`max`.
+            let from_r = o.sel(o.lt(tr2, tr0), tr2, tr0);
+            let to_r = o.sel(o.gt(tr2, tr0), tr2, tr0);
+            // Either case.
+            let rock = o.not(full);
+            let ccw = o.or(o.and(full, ccw_f), o.and(rock, ccw_r));
+            let cw = o.or(o.and(full, cw_f), o.and(rock, cw_r));
+            let one_circuit = o.or(full, one_c);
+            let (rx, ry) = (o.sel(full, e0x, rx), o.sel(full, e0y, ry));
+            let (from, to) = (o.sel(full, from_f, from_r), o.sel(full, to_f, to_r));
+            // The worst |cos mu| over the travel.
+            let k0 = o.add(o.mul(l1, l1), o.mul(l2, l2));
+            let k1 = o.mul(o.mul(two, l1), l2);
+            let k2 = o.add(o.mul(l3, l3), o.mul(l4, l4));
+            let inv = o.div(one, o.mul(o.mul(two, l3), l4));
+            let kk = [k0, k1, k2, inv];
+            let inv12 = o.div(one, o.mul(l1, l2));
+            let mut worst = o.fmax(
+                o.cos_mu(o.mul(o.dot(gx, gy, e0x, e0y), inv12), kk),
+                o.cos_mu(o.mul(o.dot(gx, gy, e2x, e2y), inv12), kk),
+            );
+            let at_g = o.inside(o.pseudo(rx, ry, gx, gy), from, to, full);
+            worst = o.sel(at_g, o.fmax(worst, o.cos_mu(one, kk)), worst);
+            let at_minus_g = o.inside(o.pseudo(rx, ry, o.neg(gx), o.neg(gy)), from, to, full);
+            worst = o.sel(at_minus_g, o.fmax(worst, o.cos_mu(o.sp(-1.0), kk)), worst);
+            // Link ratio and the members' length (`members_length`).
+            let longest = o.fmax(o.fmax(l1, l2), o.fmax(l3, l4));
+            let shortest = o.fmin(o.fmin(l1, l2), o.fmin(l3, l4));
+            // The Grashof class (`grashof_of`), as its code.
+            let lhs = o.add(shortest, longest);
+            let rhs = o.sub(total, lhs);
+            let change = o.le(o.abs(o.sub(lhs, rhs)), o.mul(rounding_eps, total));
+            let by_shortest = o.sel(
+                o.eq(l1, shortest),
+                o.sp(code(Grashof::DoubleCrank)),
+                o.sel(
+                    o.eq(l2, shortest),
+                    o.sp(code(Grashof::CrankRocker)),
+                    o.sel(
+                        o.eq(l3, shortest),
+                        o.sp(code(Grashof::DoubleRocker)),
+                        o.sp(code(Grashof::RockerCrank)),
+                    ),
+                ),
+            );
+            let grashof = o.sel(
+                change,
+                o.sp(code(Grashof::ChangePoint)),
+                o.sel(
+                    o.gt(lhs, rhs),
+                    o.sp(code(Grashof::TripleRocker)),
+                    by_shortest,
+                ),
+            );
+            let members = o.add(
+                o.add(total, o.norm(o.sub(px, qx), o.sub(py, qy))),
+                to_driven,
+            );
+            let flags = o.add(
+                o.add(o.flag(valid, VALID), o.flag(full, FULL)),
+                o.add(
+                    o.flag(one_circuit, ONE_CIRCUIT),
+                    o.add(o.flag(ccw, CCW), o.flag(cw, CW)),
+                ),
+            );
+
+            let at = c * n..(c + 1) * n;
+            s.partial_store_f64s(&mut out.qx[at.clone()], qx);
+            s.partial_store_f64s(&mut out.qy[at.clone()], qy);
+            s.partial_store_f64s(&mut out.l1[at.clone()], l1);
+            s.partial_store_f64s(&mut out.l2[at.clone()], l2);
+            s.partial_store_f64s(&mut out.l3[at.clone()], l3);
+            s.partial_store_f64s(&mut out.worst[at.clone()], worst);
+            s.partial_store_f64s(&mut out.ratio[at.clone()], o.div(longest, shortest));
+            s.partial_store_f64s(&mut out.members[at.clone()], members);
+            s.partial_store_f64s(&mut out.grashof[at.clone()], grashof);
+            s.partial_store_f64s(&mut out.flags[at], flags);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Pose;
+    use crate::design::map::Sampler;
+    use crate::design::{Constraints, DesignLimits};
+    use crate::geom::{Grid, Viewport};
+    use crate::synthesis::Task;
+    use proptest::prelude::*;
+
+    /// Every field of two samples, bit for bit.
+    fn same(a: &Sample, b: &Sample) -> bool {
+        a.valid == b.valid
+            && a.branch_free == b.branch_free
+            && a.grashof == b.grashof
+            && a.input_full == b.input_full
+            && a.direction == b.direction
+            && a.one_circuit == b.one_circuit
+            && a.min_transmission_rad.to_bits() == b.min_transmission_rad.to_bits()
+            && a.link_ratio.to_bits() == b.link_ratio.to_bits()
+            && a.size_ratio.to_bits() == b.size_ratio.to_bits()
+            && a.acceptable == b.acceptable
+    }
+
+    /// The kernel on each lane width, and as dispatched, against the
+    /// scalar path at every sample of `grid`; returns the samples checked.
+    fn check(task: &Task, c0: Point2<f64>, grid: &Grid) -> usize {
+        let limits = DesignLimits::default();
+        let sampler = Sampler::new(task, &limits, &Constraints::default()).unwrap();
+        let Ok(driven) = task.dyad_from_center(c0) else {
+            return 0;
+        };
+        let c = sampler.fixed_pivots(&driven);
+        let Some(k) = DrivingKernel::new(&sampler, driven, &c) else {
+            return 0;
+        };
+        let xs = DrivingKernel::padded_xs(grid);
+        let mut out = RowOut::new(&xs);
+        let widths: [&dyn Fn(f64, &mut RowOut); 5] = [
+            &|y, out| {
+                Lanes {
+                    k: &k,
+                    y,
+                    xs: &xs,
+                    out,
+                }
+                .with_simd(pulp::Scalar)
+            },
+            &|y, out| {
+                Lanes {
+                    k: &k,
+                    y,
+                    xs: &xs,
+                    out,
+                }
+                .with_simd(pulp::Scalar128b)
+            },
+            &|y, out| {
+                Lanes {
+                    k: &k,
+                    y,
+                    xs: &xs,
+                    out,
+                }
+                .with_simd(pulp::Scalar256b)
+            },
+            &|y, out| {
+                Lanes {
+                    k: &k,
+                    y,
+                    xs: &xs,
+                    out,
+                }
+                .with_simd(pulp::Scalar512b)
+            },
+            &|y, out| k.row(y, &xs, out),
+        ];
+        let mut n = 0;
+        for j in 0..grid.ny() {
+            let y = grid.y(j);
+            for lanes in widths {
+                lanes(y, &mut out);
+                for i in 0..grid.nx() {
+                    let a0 = Point2::new(grid.x(i), y);
+                    let free = (i + j) % 3 != 0;
+                    let want = sampler.driving_sample(a0, driven, &c, free);
+                    let got = k.sample(&out, i, a0, free);
+                    assert!(same(&want, &got), "sample ({i}, {j}) at {a0}");
+                    n += 1;
+                }
+            }
+        }
+        n
+    }
+
+    fn grid(x: (f64, f64), y: (f64, f64), nx: usize, ny: usize) -> Grid {
+        Grid::new(Viewport::new(x.0, x.1, y.0, y.1).unwrap(), nx, ny).unwrap()
+    }
+
+    /// A 3 x 3 grid whose middle sample is exactly `p`, if one is found.
+    fn through(p: Point2<f64>) -> Option<Grid> {
+        (0..40).map(|e| 0.5f64.powi(e)).find_map(|h| {
+            let g = grid(
+                (p.x - 3.0 * h, p.x + 3.0 * h),
+                (p.y - 3.0 * h, p.y + 3.0 * h),
+                3,
+                3,
+            );
+            (g.x(1) == p.x && g.y(1) == p.y).then_some(g)
+        })
+    }
+
+    #[test]
+    fn example_task_bit_for_bit() {
+        let task = crate::example::task();
+        let c0 = crate::example::driven_center();
+        let g = grid((-8.0, 8.0), (-8.0, 8.0), 67, 53);
+        assert_eq!(check(&task, c0, &g), 5 * 67 * 53);
+        // Samples exactly on the driven center (no ground link) and, where
+        // a grid can hit them, on the poles (no circle point).
+        let poles = task.filemon(c0).unwrap().cremona().unwrap().poles();
+        let mut hit = 0;
+        for p in [c0].into_iter().chain(poles) {
+            if let Some(g) = through(p) {
+                hit += 1;
+                assert_eq!(check(&task, c0, &g), 5 * 9);
+            }
+        }
+        assert!(hit >= 1);
+        // Far and huge candidates.
+        assert!(check(&task, c0, &grid((-1e12, 1e12), (-1e300, 1e300), 17, 13)) > 0);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        #[test]
+        fn random_tasks_bit_for_bit(
+            poses in proptest::collection::vec((-5.0..5.0f64, -5.0..5.0f64, -3.0..3.0f64), 3),
+            c0 in (-6.0..6.0f64, -6.0..6.0f64),
+            half in 0.5..40.0f64,
+            n in 1usize..23,
+        ) {
+            let poses: Vec<Pose> = poses.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect();
+            let Ok(task) = Task::new(&poses) else { return Ok(()); };
+            let grid = grid((-half, half), (-half * 0.7, half * 1.3), n, 9);
+            check(&task, Point2::new(c0.0, c0.1), &grid);
+        }
+    }
+}
