@@ -35,6 +35,7 @@ use core::sync::atomic::{AtomicUsize, Ordering};
 use nalgebra::Point2;
 use rayon::prelude::*;
 
+use crate::design::kernel::{DrivingKernel, RowOut};
 use crate::design::map::Sampler;
 use crate::design::rank::tie_order;
 use crate::design::{Constraints, DesignLimits};
@@ -186,14 +187,16 @@ impl Task {
         let total = (rows.end - rows.start) * nx;
         let mut cells = try_vec("a pivot atlas", total, AtlasCell::INVALID)?;
         let done = AtomicUsize::new(0);
+        let xs = DrivingKernel::padded_xs(driving);
         cells.par_iter_mut().enumerate().for_each_init(
-            || vec![false; driving.nx()],
-            |row, (k, cell)| {
+            || (vec![false; driving.nx()], RowOut::new(&xs)),
+            |(row, out), (k, cell)| {
                 if control.is_cancelled() {
                     return;
                 }
                 let (j, i) = (rows.start + k / nx, k % nx);
-                *cell = atlas_cell(self, &sampler, driven.point(i, j), driving, row);
+                let scratch = Scratch { xs: &xs, row, out };
+                *cell = atlas_cell(self, &sampler, driven.point(i, j), driving, scratch);
                 let d = done.fetch_add(1, Ordering::Relaxed) + 1;
                 control.report(d, total);
             },
@@ -206,15 +209,25 @@ impl Task {
     }
 }
 
-/// The cell of driven center `c0`; `row` is a buffer of `driving.nx()`
-/// flags.
+/// A worker's buffers for [`atlas_cell`].
+struct Scratch<'a> {
+    /// The driving grid's padded abscissae (`DrivingKernel::padded_xs`).
+    xs: &'a [f64],
+    /// The branch flags of a row.
+    row: &'a mut [bool],
+    /// The kernel's lanes for a row.
+    out: &'a mut RowOut,
+}
+
+/// The cell of driven center `c0`.
 fn atlas_cell(
     task: &Task,
     sampler: &Sampler<'_>,
     c0: Point2<f64>,
     driving: &Grid,
-    row: &mut [bool],
+    scratch: Scratch<'_>,
 ) -> AtlasCell {
+    let Scratch { xs, row, out } = scratch;
     let Ok(filemon) = task.filemon(c0) else {
         return AtlasCell::INVALID;
     };
@@ -233,16 +246,33 @@ fn atlas_cell(
     let mut top = f32::NEG_INFINITY;
     let mut run: Vec<(usize, f32)> = Vec::new();
     let nx = driving.nx();
+    let kernel = DrivingKernel::new(sampler, driven, &c);
     for j in 0..driving.ny() {
         branch.row(j, row);
+        if !row.contains(&true) {
+            continue;
+        }
+        if let Some(k) = &kernel {
+            k.row_where(driving.y(j), xs, row, out);
+        }
         for (i, _) in row.iter().enumerate().filter(|(_, f)| **f) {
-            let s = sampler.driving_sample(driving.point(i, j), driven, &c, true);
-            cell.branch_free += u64::from(s.branch_free);
-            if !s.acceptable {
+            let p = driving.point(i, j);
+            let judged = match &kernel {
+                Some(k) => k.acceptable_transmission(out, i, p),
+                None => {
+                    let s = sampler.driving_sample(p, driven, &c, true);
+                    s.valid
+                        .then_some(s.acceptable.then_some(s.min_transmission_rad))
+                }
+            };
+            let Some(acceptable) = judged else {
                 continue;
-            }
+            };
+            cell.branch_free += 1;
+            let Some(score) = acceptable else {
+                continue;
+            };
             cell.count += 1;
-            let score = s.min_transmission_rad;
             if score.is_nan() {
                 continue;
             }

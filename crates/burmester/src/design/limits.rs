@@ -131,15 +131,36 @@ impl DesignLimits {
     /// the link ratio and the input kind. The one acceptance test of the
     /// solution maps and the rankings.
     pub fn meets(&self, f: &LinkageFigures) -> bool {
-        f.one_circuit
-            && f.direction != Direction::None
-            && f.min_transmission >= self.min_transmission
-            && f.link_ratio <= self.max_link_ratio
+        self.meets_with(
+            f.one_circuit,
+            f.direction,
+            f.link_ratio,
+            f.input_full,
+            || f.min_transmission,
+        )
+    }
+
+    /// [`meets`](Self::meets) from the figures it reads, the minimum
+    /// transmission angle asked for last, only when everything else passes
+    /// (the map kernel computes it by an `acos`).
+    #[inline(always)]
+    pub(crate) fn meets_with(
+        &self,
+        one_circuit: bool,
+        direction: Direction,
+        link_ratio: f64,
+        input_full: bool,
+        min_transmission: impl FnOnce() -> f64,
+    ) -> bool {
+        one_circuit
+            && direction != Direction::None
+            && link_ratio <= self.max_link_ratio
             && match self.input {
                 InputRequirement::Any => true,
-                InputRequirement::Crank => f.input_full,
-                InputRequirement::Rocker => !f.input_full,
+                InputRequirement::Crank => input_full,
+                InputRequirement::Rocker => !input_full,
             }
+            && min_transmission() >= self.min_transmission
     }
 }
 

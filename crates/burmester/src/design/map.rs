@@ -274,6 +274,33 @@ impl<'a> Judge<'a> {
         self.sample_sized(f, branch_free, candidates, driving, driven, members)
     }
 
+    /// The `acceptable` column: branch-free, the limits met (`meets`, asked
+    /// only for a branch-free sample), every candidate on the base plate,
+    /// and the linkage clear of the obstacles.
+    #[inline(always)]
+    pub(crate) fn acceptable(
+        &self,
+        branch_free: bool,
+        meets: impl FnOnce() -> bool,
+        candidates: &[Point2<f64>],
+        driving: Dyad,
+        driven: Dyad,
+    ) -> bool {
+        branch_free
+            && meets()
+            && candidates.iter().all(|&c| self.prepared.pivot_ok(c))
+            && (self.prepared.obstacles.is_empty()
+                || self
+                    .task
+                    .four_bar(&driving, &driven)
+                    .is_ok_and(|fb| self.prepared.clearance_ok(&fb)))
+    }
+
+    /// The limits behind `acceptable`.
+    pub(crate) fn limits(&self) -> &DesignLimits {
+        self.limits
+    }
+
     /// [`sample`](Self::sample) of a linkage whose members' total length
     /// ([`members_length`]) is `members`.
     #[inline(always)]
@@ -286,14 +313,13 @@ impl<'a> Judge<'a> {
         driven: Dyad,
         members: f64,
     ) -> Sample {
-        let acceptable = branch_free
-            && self.limits.meets(&f)
-            && candidates.iter().all(|&c| self.prepared.pivot_ok(c))
-            && (self.prepared.obstacles.is_empty()
-                || self
-                    .task
-                    .four_bar(&driving, &driven)
-                    .is_ok_and(|fb| self.prepared.clearance_ok(&fb)));
+        let acceptable = self.acceptable(
+            branch_free,
+            || self.limits.meets(&f),
+            candidates,
+            driving,
+            driven,
+        );
         Sample {
             valid: true,
             branch_free,
