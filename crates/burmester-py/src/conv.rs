@@ -202,6 +202,27 @@ pub(crate) fn zeros<'py, T: Element>(
     py: Python<'py>,
     shape: &[usize],
 ) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
+    fresh(py, shape, "zeros")
+}
+
+/// A fresh C-contiguous NumPy array of `shape` for a map that writes every
+/// sample (as `out=` must be): a large one is made by `numpy.empty`, so it
+/// takes memory where NumPy's allocator would (pages already mapped for an
+/// array freed before, as `numpy.ones` does, instead of fresh zeroed pages
+/// faulted in one by one); a failed allocation is a `MemoryError`.
+pub(crate) fn for_map<'py, T: Element>(
+    py: Python<'py>,
+    shape: &[usize],
+) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
+    fresh(py, shape, "empty")
+}
+
+/// `numpy.<make>(shape, dtype)` for a large array, zeros for a small one.
+fn fresh<'py, T: Element>(
+    py: Python<'py>,
+    shape: &[usize],
+    make: &str,
+) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
     let bytes = shape
         .iter()
         .try_fold(size_of::<T>(), |acc, &d| acc.checked_mul(d));
@@ -210,7 +231,7 @@ pub(crate) fn zeros<'py, T: Element>(
     }
     let np = py.import("numpy")?;
     let kwargs = [("dtype", T::get_dtype(py))].into_py_dict(py)?;
-    np.call_method("zeros", (shape.to_vec(),), Some(&kwargs))?
+    np.call_method(make, (shape.to_vec(),), Some(&kwargs))?
         .cast_into::<PyArrayDyn<T>>()
         .map_err(PyErr::from)
 }

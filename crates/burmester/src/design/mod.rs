@@ -24,6 +24,10 @@
 //! columns over pairs of dyads along the center-point curve: every linkage
 //! of the task on one picture ([`pairs`]).
 //!
+//! The three-pose driving map and the [`atlas`] compute their samples on
+//! SIMD lanes (AVX2 where the CPU has it, chosen at run time by `pulp`),
+//! bit for bit what the per-sample scalar code gives.
+//!
 //! How each figure is computed is in [`linkage::figures`](crate::linkage::LinkageFigures);
 //! the constraints, the clearance check and its bound are in
 //! [`Constraints`]; the maps run on the tiled [`engine`](crate::engine).
