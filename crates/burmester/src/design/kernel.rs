@@ -135,8 +135,8 @@ impl<'s> DrivingKernel<'s> {
             origin: [origin.x, origin.y],
             scale,
             q13: [q13.x, q13.y],
-            half12: (c12, -1.0 * s12),
-            half13: (c13, -1.0 * s13),
+            half12: (c12, -s12),
+            half13: (c13, -s13),
             rot: [r1, r2],
             shift: [[t1.x, t1.y], [t2.x, t2.y]],
             c0: [driven.center.x, driven.center.y],
@@ -646,6 +646,9 @@ mod tests {
     use crate::synthesis::Task;
     use proptest::prelude::*;
 
+    /// Fills the lanes of the row at an ordinate.
+    type RowFn<'a> = dyn Fn(f64, &mut RowOut) + 'a;
+
     /// Every lane of a row, on the lanes of the caller's choice.
     fn lanes<'k, 'o>(
         k: &'k DrivingKernel<'k>,
@@ -708,7 +711,7 @@ mod tests {
         };
         let xs = DrivingKernel::padded_xs(grid);
         let mut out = RowOut::new(&xs);
-        let widths: [&dyn Fn(f64, &mut RowOut); 5] = [
+        let widths: [&RowFn<'_>; 5] = [
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar128b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar256b),
