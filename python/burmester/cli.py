@@ -263,7 +263,7 @@ def cmd_map(args: argparse.Namespace) -> int:
     cad = _is_cad(args.output)
     export = _export_module(args.output) if cad else None
     plot = None if cad else _plot_module()
-    if spec.driven_center is None:
+    if len(spec.poses) > 3:
         return _map_many(args, spec, plot, export, units)
     filemon = spec.filemon()
     view = spec.view
@@ -325,24 +325,31 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
                 f"{spec.source} has {n} poses"
             )
     task = spec.task()
+    driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
     if export is not None:
         if circle:
             raise UsageError("the circle-point plane of four poses is drawn as a picture (.png, .pdf); "
                              "the CAD export writes its center-point plane")
-        _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent, units=units)
+        _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent,
+                   driven=driven, units=units)
     elif circle:
         assert plot is not None
-        ax = plot.circle_curve_plane(task, spec.view.extent)
+        ax = plot.circle_curve_plane(task, spec.view.extent, driven=driven)
     else:
         assert plot is not None
-        ax = plot.burmester_plane(task, spec.view.extent)
+        ax = plot.burmester_plane(task, spec.view.extent, driven=driven)
     if n == 4:
-        arcs = task.order_arcs(*spec.view.extent, plane="circle" if circle else "center")
+        plane = "circle" if circle else "center"
+        arcs = task.order_arcs(*spec.view.extent, plane=plane)
         ordered = sum(1 for _, d, _ in arcs if d is not None)
         summary = (
-            f"{'circle' if circle else 'center'}-point curve of {spec.source}: {len(arcs)} pieces in "
+            f"{plane}-point curve of {spec.source}: {len(arcs)} pieces in "
             f"view, {ordered} of them with the crank meeting the poses in order"
         )
+        if driven is not None:
+            free = task.branch_free_arcs(driven, *spec.view.extent, plane=plane)
+            summary += (f"; {len(free)} arcs of driving dyads branch-free with the driven dyad at C0 "
+                        f"{_fmt_point(driven)}")
     else:
         pts = task.burmester_points()
         listed = ", ".join(_fmt_point(c) for c, _ in pts)

@@ -38,9 +38,11 @@ required::
 Four or five ``[[pose]]`` tables make a four- or five-position task (the
 Burmester curves and points, drawn by ``burmester map``): it takes only
 ``[[pose]]``, ``[view]`` and, for four poses, ``[limits]`` (those of the pair
-map, ``burmester pairs``); Filemon's construction is for three poses, so
-``[driven]`` is refused, and so is ``[limits]`` with five poses. Its default
-view is :func:`default_curve_view`.
+map, ``burmester pairs``) and an optional ``[driven]``: a driven dyad on the
+curves (``center`` on the center-point curve, or ``circle`` on the
+circle-point curve, each within the core's tolerance), for which ``burmester
+map`` draws the arcs of driving dyads branch-free with it. Five poses take
+neither. Its default view is :func:`default_curve_view`.
 
 The view becomes a :class:`burmester.Grid` and the limits a
 :class:`burmester.DesignLimits` (which validates them); older files may say
@@ -113,7 +115,8 @@ class TaskSpec:
     :class:`burmester.DesignLimits`)."""
 
     poses: Tuple[Tuple[float, float, float], ...]
-    #: The driven crank's fixed pivot; None for four or five poses.
+    #: The driven crank's fixed pivot: required for three poses, optional
+    #: for four (on the center-point curve), None for five.
     driven_center: Optional[Point]
     view: Grid
     limits: DesignLimits = field(default_factory=DesignLimits)
@@ -127,7 +130,7 @@ class TaskSpec:
         """Filemon's construction for the driven dyad. Raises
         :class:`TaskFileError` for a task of four or five poses (no driven
         dyad: only ``burmester map`` draws those)."""
-        if self.driven_center is None:
+        if len(self.poses) != 3 or self.driven_center is None:
             raise TaskFileError(
                 f"{self.source}: has {len(self.poses)} poses; Filemon's construction, the maps, "
                 "pivots and linkages need three (burmester map draws four or five poses)"
@@ -340,24 +343,8 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
         return _parse_many(r, doc, task, tuple(poses), source)
 
     # [driven]
-    driven = r.table(doc, "driven", required=True)
-    assert driven is not None
-    r.only_keys("driven", driven, ["center", "circle"])
-    if ("center" in driven) == ("circle" in driven):
-        found = "both" if "center" in driven else "neither"
-        raise r.fail(
-            "[driven]",
-            f"expected exactly one of center = [x, y] (the fixed pivot C0) or "
-            f"circle = [x, y] (the moving pivot C1 at pose 1), found {found}",
-        )
-    if "center" in driven:
-        center = r.point("driven.center", driven["center"])
-    else:
-        circle = r.point("driven.circle", driven["circle"])
-        try:
-            center = task.center_point(circle)
-        except burmester.BurmesterError as e:
-            raise r.fail("driven.circle", f"has no center point: {e}") from None
+    center = _driven(r, doc, task, required=True)
+    assert center is not None
     try:
         filemon = task.filemon(center)
     except burmester.BurmesterError as e:
@@ -429,25 +416,57 @@ def _view(r: _Reader, doc: Mapping[str, Any], default: Tuple[float, float, float
     return grid_for(xmin, xmax, ymin, ymax)
 
 
+def _driven(r: _Reader, doc: Mapping[str, Any], task: Task, required: bool) -> Optional[Point]:
+    """The driven dyad's fixed pivot ``C0`` of ``[driven]``: ``center``, or
+    the center point of ``circle``. For four poses both lie on their curves
+    (the center- and circle-point curves), within the core's tolerance."""
+    driven = r.table(doc, "driven", required=required)
+    if driven is None:
+        return None
+    r.only_keys("driven", driven, ["center", "circle"])
+    if ("center" in driven) == ("circle" in driven):
+        found = "both" if "center" in driven else "neither"
+        raise r.fail(
+            "[driven]",
+            f"expected exactly one of center = [x, y] (the fixed pivot C0) or "
+            f"circle = [x, y] (the moving pivot C1 at pose 1), found {found}",
+        )
+    if "center" in driven:
+        center = r.point("driven.center", driven["center"])
+        if len(task.poses) == 4:
+            try:
+                task.circle_point(center)
+            except burmester.BurmesterError as e:
+                raise r.fail("driven.center", f"is not a center point of the four poses: {e}") from None
+        return center
+    circle = r.point("driven.circle", driven["circle"])
+    try:
+        return task.center_point(circle)
+    except burmester.BurmesterError as e:
+        raise r.fail("driven.circle", f"has no center point: {e}") from None
+
+
 def _parse_many(
     r: _Reader, doc: Mapping[str, Any], task: Task, poses: Tuple[Tuple[float, float, float], ...], source: str
 ) -> TaskSpec:
-    """The rest of a task file of four or five poses: ``[view]``, and
-    ``[limits]`` for four (the pair map's)."""
-    for key in ("driven",) if len(poses) == 4 else ("driven", "limits"):
-        if key in doc:
-            what = "Filemon's construction and its maps" + (") or four (the pair map" if key == "limits" else "")
-            raise r.fail(
-                f"[{key}]",
-                f"is for three poses ({what}), found {len(poses)} poses; "
-                f"leave [{key}] out of a {'four- or ' if key == 'driven' else ''}five-pose task",
-            )
+    """The rest of a task file of four or five poses: ``[view]``, and for
+    four ``[limits]`` (the pair map's) and ``[driven]`` (a driven dyad on
+    the curve, whose branch-free driving arcs ``burmester map`` draws)."""
+    if len(poses) == 5:
+        for key, what in (("driven", "or four poses (a driven dyad on the center-point curve)"),
+                          ("limits", "or four poses (the pair map)")):
+            if key in doc:
+                raise r.fail(
+                    f"[{key}]",
+                    f"is for three ({what}), found 5 poses; leave [{key}] out of a five-pose task",
+                )
     try:
         default = default_curve_view(task)
     except burmester.BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     limits = _limits(r, doc) if len(poses) == 4 else DesignLimits()
-    return TaskSpec(poses, None, _view(r, doc, default), limits, source)
+    driven = _driven(r, doc, task, required=False) if len(poses) == 4 else None
+    return TaskSpec(poses, driven, _view(r, doc, default), limits, source)
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
@@ -498,7 +517,7 @@ def dumps(spec: TaskSpec) -> str:
         "",
     ]
     four_with_limits = len(spec.poses) == 4 and spec.limits != DesignLimits()
-    if spec.driven_center is None and not four_with_limits:
+    if len(spec.poses) > 3 and not four_with_limits:
         return "\n".join(lines)
     lim = spec.limits
     lines += [

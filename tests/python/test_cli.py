@@ -517,3 +517,37 @@ def test_map_of_four_and_five_poses(tmp_path, capsys):
     # Five poses list the four-bars of their Burmester points (test_four_five).
     assert main(["pivots", str(five), "--top", "1"]) == 0
     assert "Four-bars of the 4 Burmester points" in capsys.readouterr().out
+
+
+def test_four_pose_file_with_a_driven_dyad(tmp_path, capsys):
+    """A four-pose task file may name a driven dyad on the curve: ``map``
+    draws (and exports) the branch-free arcs of the driving dyads with it,
+    as many as Task.branch_free_arcs gives; the file round-trips."""
+    pytest.importorskip("matplotlib")
+    b0 = (4.0, 0.0)  # the known rocker's fixed pivot: a Burmester point, on the curve
+    four = tmp_path / "four.toml"
+    four.write_text(FOUR_TASK + "[driven]\ncenter = [4.0, 0.0]\n")
+    spec = taskfile.load(four)
+    assert spec.driven_center == pytest.approx(b0)
+    back = taskfile.loads(taskfile.dumps(spec))
+    assert back.driven_center == pytest.approx(b0) and np.allclose(back.poses, spec.poses, atol=1e-12)
+    task = spec.task()
+    c1 = task.circle_point(b0)
+    by_circle = taskfile.loads(FOUR_TASK + f"[driven]\ncircle = [{c1[0]!r}, {c1[1]!r}]\n")
+    assert by_circle.driven_center == pytest.approx(b0, abs=1e-9)
+    with pytest.raises(taskfile.TaskFileError, match="driven.center.*not a center point of the four poses"):
+        taskfile.loads(FOUR_TASK + "[driven]\ncenter = [5.0, 5.0]\n")
+    with pytest.raises(taskfile.TaskFileError, match=r"\[driven\].*found 5 poses"):
+        taskfile.loads(FOUR_TASK + FIFTH_POSE + "[driven]\ncenter = [4.0, 0.0]\n")
+    for plane in ("center", "circle"):
+        out = tmp_path / f"{plane}.png"
+        assert main(["map", str(four), "--plane", plane, "-o", str(out)]) == 0
+        text = capsys.readouterr().out
+        arcs = task.branch_free_arcs(b0, *spec.view.extent, plane=plane)
+        assert arcs and f"; {len(arcs)} arcs of driving dyads branch-free with the driven dyad at C0" in text
+    pytest.importorskip("ezdxf")
+    assert main(["map", str(four), "-o", str(tmp_path / "four.dxf")]) == 0
+    assert "branch-free with the driven dyad" in capsys.readouterr().out
+    import ezdxf
+    layers = {e.dxf.layer for e in ezdxf.readfile(tmp_path / "four.dxf").modelspace()}
+    assert {"BRANCH_FREE_ARCS", "DRIVEN_PIVOT"} <= layers
