@@ -327,11 +327,8 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     task = spec.task()
     driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
     if export is not None:
-        if circle:
-            raise UsageError("the circle-point plane of four poses is drawn as a picture (.png, .pdf); "
-                             "the CAD export writes its center-point plane")
         _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent,
-                   driven=driven, units=units)
+                   driven=driven, plane=args.plane, units=units)
     elif circle:
         assert plot is not None
         ax = plot.circle_curve_plane(task, spec.view.extent, driven=driven)

@@ -52,6 +52,7 @@ layer                     drawing      what
 ``DRIVEN_PIVOT``          center, 4    the driven crank's fixed pivot ``C0``
 ``BEST_PIVOTS``           center       given pivots (``pivots=``), numbered
 ``LINE_k``                circle       the line through ``C1`` and ``C'k``, k = 1, 2, 3
+                                       (and 4 in the circle plane of four poses)
 ``IMAGE_POLES``           circle       the image poles ``P12, P13, P'23``
 ``IMAGE_POLE_CIRCLE``     circle       the circle through them
 ``FIXED_PIVOT_IMAGES``    circle       ``C'1 = C0, C'2, C'3``
@@ -207,7 +208,7 @@ LAYERS: Dict[str, Layer] = {
     "GROUND": Layer(8, "#666666", "ground link A0 C0"),
     **{f"CONIC_{k}": Layer(a, c, f"Filemon line of pose {k} transformed")
        for k, (a, c) in _POSE_COLORS.items() if k <= 3},
-    **{f"LINE_{k}": Layer(a, c, f"line through C1 and C'{k}") for k, (a, c) in _POSE_COLORS.items() if k <= 3},
+    **{f"LINE_{k}": Layer(a, c, f"line through C1 and C'{k}") for k, (a, c) in _POSE_COLORS.items() if k <= 4},
     **{f"LINKAGE_{k}": Layer(a, c, f"the linkage at pose {k}") for k, (a, c) in _POSE_COLORS.items()},
     "BRANCH_FREE_ARCS": Layer(71, "#a1d99b", "driving pivots on the curve, branch-free with C0"),
     "CURVE_CCW": Layer(94, "#1a9850", "center points, crank meets the poses in order (ccw)"),
@@ -668,33 +669,58 @@ def _poses(d: _Drawing, poses: Sequence[Sequence[float]], flag: float, labels: b
         d.marker("POSES", (px, py), f"pose {k}", str(k) if labels else None)
 
 
-def _burmester_drawing(task: Task, extent: Extent, driven: Optional[Point], labels: bool) -> _Drawing:
+def _burmester_drawing(task: Task, extent: Extent, driven: Optional[Point], labels: bool,
+                       plane: str) -> _Drawing:
     n = len(task)
-    d = _Drawing(f"{n} poses: " + ("center-point curve" if n == 4 else "Burmester points"), extent)
+    circle = plane == "circle"
+    title = ("circle-point curve (coupler frame at pose 1)" if circle
+             else "center-point curve" if n == 4 else "Burmester points")
+    d = _Drawing(f"{n} poses: {title}", extent)
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
     if n == 4:
         if driven is not None:
-            for pts in task.branch_free_arcs(driven, *extent):
-                d.polyline("BRANCH_FREE_ARCS", pts, "branch-free driving pivots for C0")
-            d.marker("DRIVEN_PIVOT", driven, "driven crank's fixed pivot C0", "C0" if labels else None)
-        for order, direction, pts in task.order_arcs(*extent):
-            d.polyline(_ORDER_LAYERS[direction], pts, f"center-point curve, crank order {order}")
+            what = "circle points" if circle else "pivots"
+            for pts in task.branch_free_arcs(driven, *extent, plane=plane):
+                d.polyline("BRANCH_FREE_ARCS", pts, f"branch-free driving {what} for C0")
+            if circle:
+                _filemon_lines(d, task, driven, extent, labels)
+            else:
+                d.marker("DRIVEN_PIVOT", driven, "driven crank's fixed pivot C0", "C0" if labels else None)
+        for order, direction, pts in task.order_arcs(*extent, plane=plane):
+            d.polyline(_ORDER_LAYERS[direction], pts, f"{plane}-point curve, crank order {order}")
+        prime = "'" if circle else ""
         for q in task.coincidence_points():
-            if q.center is not None:
-                j, k = q.pair
-                d.marker("COINCIDENCE_POINTS", q.center, f"Q{j}{k}", f"Q{j}{k}" if labels else None)
+            point = q.circle if circle else q.center
+            if point is not None:
+                name = "Q{}{}{}".format(prime, *q.pair)
+                d.marker("COINCIDENCE_POINTS", point, name, name if labels else None)
     else:
         for curve, which in zip(task.burmester_curves(), ("1234", "1235")):
             for pts in curve.polylines(*extent):
                 d.polyline(f"CURVE_{which}", pts, f"center-point curve of poses {', '.join(which)}")
         for k, (center, _) in enumerate(task.burmester_points(), start=1):
             d.marker("BURMESTER_POINTS", center, f"Burmester point B{k}", f"B{k}" if labels else None)
-    for pole in task.poles:
-        if pole.point is not None:
-            i, j = pole.pair
-            d.marker("POLES", pole.point, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
+    if not circle:  # in the circle-point plane the poles P1k are the points Q'1k
+        for pole in task.poles:
+            if pole.point is not None:
+                i, j = pole.pair
+                d.marker("POLES", pole.point, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
     _poses(d, task.poses, 0.12 * task.scale, labels)
     return d
+
+
+def _filemon_lines(d: _Drawing, task: Task, driven: Point, extent: Extent, labels: bool) -> None:
+    """Four poses, circle-point plane: Filemon's construction for the driven
+    dyad of ``driven``, its lines through ``C1`` and ``C'k = D_k1(C0)``."""
+    c1 = task.circle_point(driven)
+    images = [task.displace(driven, k, 1) for k in range(1, len(task) + 1)]
+    for k, image in enumerate(images, start=1):
+        seg = clip_line(c1, (image[0] - c1[0], image[1] - c1[1]), extent) if image != c1 else None
+        if seg is not None:
+            d.polyline(f"LINE_{k}", seg, f"line C1 C'{k} (pose {k})")
+    for k, image in enumerate(images, start=1):
+        d.marker("FIXED_PIVOT_IMAGES", image, f"fixed pivot image C'{k}", f"C'{k}" if labels else None)
+    d.marker("DRIVEN_CIRCLE_POINT", c1, "driven crank's moving pivot C1", "C1" if labels else None)
 
 
 def _plane_drawing(filemon: Filemon, view: Optional[ViewLike], plane: str, grid: Optional[Tuple[int, int]],
@@ -1071,12 +1097,14 @@ def burmester_plane(
     view: Optional[ViewLike] = None,
     *,
     driven: Optional[Point] = None,
+    plane: str = "center",
     labels: bool = True,
     units: str = DEFAULT_UNITS,
 ) -> Path:
-    """Write the center-point plane of four or five poses to a DXF or SVG
-    file, by the path's suffix (what :func:`burmester.plot.burmester_plane`
-    draws).
+    """Write the center-point plane of four or five poses (or the
+    circle-point plane of four) to a DXF or SVG file, by the path's suffix
+    (what :func:`burmester.plot.burmester_plane` and
+    :func:`burmester.plot.circle_curve_plane` draw).
 
     **Four poses**: the center-point curve, every component in view, in
     pieces by the crank's order class (:meth:`burmester.Task.order_arcs`;
@@ -1087,7 +1115,14 @@ def burmester_plane(
     center-point curves of poses 1-4 and 1-2-3-5 (``CURVE_1234``,
     ``CURVE_1235``) and the Burmester points (``BURMESTER_POINTS``). Both:
     ``VIEW``, the finite poles (``POLES``), the poses (``POSES``), labels.
-    The curves are exact (the core's polylines, vertices on the curve).
+    **Four poses, ``plane="circle"``** (the coupler frame at pose 1): the
+    circle-point curve in the same layers by order, the circle points
+    ``Q'jk`` of the ``Q_jk`` (``COINCIDENCE_POINTS``; ``Q'1k`` is the pole
+    ``P1k``), the poses and, with ``driven``, the circle points of the
+    branch-free driving dyads (``BRANCH_FREE_ARCS``), Filemon's lines through
+    ``C1`` and ``C'k`` (``LINE_1`` to ``LINE_4``), ``C'k``
+    (``FIXED_PIVOT_IMAGES``) and ``C1`` (``DRIVEN_CIRCLE_POINT``). The curves
+    are exact (the core's polylines, vertices on the curve).
 
     Parameters:
         task: a :class:`burmester.Task` of four or five poses.
@@ -1095,6 +1130,7 @@ def burmester_plane(
         view: ``(xmin, xmax, ymin, ymax)`` or a :class:`burmester.Grid`;
             default: :func:`burmester.taskfile.default_curve_view`.
         driven: four poses: the driven dyad's center point ``C0``, on the curve.
+        plane: ``"center"`` or, for four poses, ``"circle"``.
         labels: write the names of the points (layer ``TEXT``).
         units: the unit of the lengths, recorded in the file: one of
             :data:`UNITS` (default :data:`DEFAULT_UNITS`).
@@ -1104,25 +1140,29 @@ def burmester_plane(
 
     Raises:
         burmester.InvalidInputError: a task of three poses (``cause ==
-            "needs_poses"``; export it with :func:`plane`), another suffix, a
+            "needs_poses"``; export it with :func:`plane`), the circle plane of
+            five poses (``"needs_poses"``), another plane, another suffix, a
             folder that does not exist, unknown units or a view that is not a view.
     """
-    return _burmester_to((".dxf", ".svg"), task, path, view, driven, labels, units)
+    return _burmester_to((".dxf", ".svg"), task, path, view, driven, plane, labels, units)
 
 
 def _burmester_to(suffixes: Sequence[str], task: Task, path: PathLike, view: Optional[ViewLike],
-                  driven: Optional[Point], labels: bool, units: str) -> Path:
+                  driven: Optional[Point], plane: str, labels: bool, units: str) -> Path:
     target = _target(path, suffixes)
     units = _units(units)
-    if len(task) not in (4, 5):
-        task.center_point_curve()  # the core's typed error, with its fields
+    if plane not in ("center", "circle"):
+        raise burmester.InvalidInputError(f"plane must be 'center' or 'circle', got {plane!r}")
+    if len(task) not in (4, 5) or plane == "circle":
+        # The core's typed error, with its fields (the circle-point curve: four poses).
+        task.circle_point_curve() if plane == "circle" else task.center_point_curve()
     if view is None:
         extent = default_curve_view(task)
     elif isinstance(view, Grid):
         extent = view.extent
     else:
         extent = _extent(view)
-    return _write(_burmester_drawing(task, extent, driven, labels), target, units)
+    return _write(_burmester_drawing(task, extent, driven, labels, plane), target, units)
 
 
 def burmester_plane_dxf(
@@ -1131,12 +1171,13 @@ def burmester_plane_dxf(
     view: Optional[ViewLike] = None,
     *,
     driven: Optional[Point] = None,
+    plane: str = "center",
     labels: bool = True,
     units: str = DEFAULT_UNITS,
 ) -> Path:
     """:func:`burmester_plane` to a ``.dxf`` file (another suffix is an
     InvalidInputError): the same arguments."""
-    return _burmester_to((".dxf",), task, path, view, driven, labels, units)
+    return _burmester_to((".dxf",), task, path, view, driven, plane, labels, units)
 
 
 def burmester_plane_svg(
@@ -1145,9 +1186,10 @@ def burmester_plane_svg(
     view: Optional[ViewLike] = None,
     *,
     driven: Optional[Point] = None,
+    plane: str = "center",
     labels: bool = True,
     units: str = DEFAULT_UNITS,
 ) -> Path:
     """:func:`burmester_plane` to an ``.svg`` file (another suffix is an
     InvalidInputError): the same arguments."""
-    return _burmester_to((".svg",), task, path, view, driven, labels, units)
+    return _burmester_to((".svg",), task, path, view, driven, plane, labels, units)

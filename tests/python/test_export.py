@@ -433,6 +433,46 @@ def test_four_poses_curve_by_crank_order_and_branch_free_arcs(tmp_path, task5):
     assert close(pivot, [(4, 0)])
 
 
+def test_four_poses_circle_plane(tmp_path, task5):
+    """The circle-point plane of four poses: the circle-point curve by crank
+    order (Task.order_arcs(plane="circle")), the circle points Q'jk, and for
+    a driven dyad the circle points of the branch-free driving dyads, C1 and
+    Filemon's four lines through C1 and C'k."""
+    task4 = burmester.Task(task5.poses[:4])
+    view = burmester.taskfile.default_curve_view(task4)
+    out = tmp_path / "circle.dxf"
+    export.burmester_plane(task4, out, view, driven=(4.0, 0.0), plane="circle")
+    doc = ezdxf.readfile(out)
+    check_valid(doc)
+    assert {"BRANCH_FREE_ARCS", "FIXED_PIVOT_IMAGES", "DRIVEN_CIRCLE_POINT", "COINCIDENCE_POINTS", "POSES",
+            "LINE_1", "LINE_2", "LINE_3", "LINE_4"} <= layers(doc)
+    assert "POLES" not in layers(doc) and "DRIVEN_PIVOT" not in layers(doc)
+    curve = task4.circle_point_curve()
+    arcs = task4.order_arcs(*view, plane="circle")
+    got = sum(len(polylines(doc, layer)) for layer in ("CURVE_CCW", "CURVE_CW", "CURVE_ORDER_DEFECT"))
+    assert got == len(arcs) > 0
+    for layer in ("CURVE_CCW", "CURVE_CW", "CURVE_ORDER_DEFECT", "BRANCH_FREE_ARCS"):
+        for pts, _ in polylines(doc, layer):
+            assert max(curve.distance(tuple(p)) for p in pts) < 1e-9, layer
+    c1 = task4.circle_point((4.0, 0.0))
+    assert close([c for c, _ in circles(doc, "DRIVEN_CIRCLE_POINT")], [c1])
+    images = [task4.displace((4.0, 0.0), k, 1) for k in range(1, 5)]
+    inside = [p for p in images if view[0] <= p[0] <= view[1] and view[2] <= p[1] <= view[3]]
+    assert close([c for c, _ in circles(doc, "FIXED_PIVOT_IMAGES")], inside)
+    for k in range(1, 5):
+        ((pts, _),) = polylines(doc, f"LINE_{k}")
+        (x0, y0), (x1, y1) = pts[0], pts[-1]
+        for p in (c1, images[k - 1]):
+            cross = (x1 - x0) * (p[1] - y0) - (y1 - y0) * (p[0] - x0)
+            assert abs(cross) <= 1e-9 * math.hypot(x1 - x0, y1 - y0) * (1 + math.dist(p, (x0, y0)))
+    # Five poses have no circle-point curve; other planes are refused.
+    with pytest.raises(burmester.InvalidInputError) as e:
+        export.burmester_plane(task5, tmp_path / "five.dxf", plane="circle")
+    assert e.value.cause == "needs_poses"
+    with pytest.raises(burmester.InvalidInputError, match="plane must be"):
+        export.burmester_plane(task4, tmp_path / "x.dxf", plane="coupler")
+
+
 def test_cli_map_of_five_poses_exports_the_burmester_points(tmp_path, capsys):
     out = tmp_path / "five.dxf"
     assert main(["map", str(EXAMPLES / "five.toml"), "-o", str(out)]) == 0
