@@ -138,6 +138,23 @@ pub(crate) fn run_blocks<R: Rows>(
     control: &Control<'_>,
     f: impl Fn(usize, R, usize) + Sync,
 ) -> Result<()> {
+    run_blocks_with(nx, ny, data, control, || (), |(), j, rows, n| f(j, rows, n))
+}
+
+/// [`run_blocks`] with a scratch value made by `init` once per block and
+/// lent to `f` for each of its rows (buffers a row's work reuses).
+///
+/// # Errors
+///
+/// As [`run_blocks`].
+pub(crate) fn run_blocks_with<R: Rows, S>(
+    nx: usize,
+    ny: usize,
+    data: R,
+    control: &Control<'_>,
+    init: impl Fn() -> S + Sync,
+    f: impl Fn(&mut S, usize, R, usize) + Sync,
+) -> Result<()> {
     let per = rows_per_block(nx, ny);
     let mut blocks = Vec::with_capacity(ny.div_ceil(per));
     let mut rest = data;
@@ -156,9 +173,10 @@ pub(crate) fn run_blocks<R: Rows>(
         // a row a small fraction of that.
         let mut rest = block;
         let mut finished = 0;
+        let mut scratch = init();
         while finished < n && !control.is_cancelled() {
             let (row, tail) = rest.split_rows(1);
-            f(j0 + finished, row, 1);
+            f(&mut scratch, j0 + finished, row, 1);
             rest = tail;
             finished += 1;
         }

@@ -753,13 +753,22 @@ impl Error {
 
 /// A vector of `n` copies of `value`, or [`Error::OutOfMemory`] when it
 /// cannot be allocated (instead of aborting the process).
-pub fn try_vec<T: Clone>(what: &'static str, n: usize, value: T) -> Result<Vec<T>> {
+pub fn try_vec<T: Clone + Send>(what: &'static str, n: usize, value: T) -> Result<Vec<T>> {
+    /// From this many bytes on the vector is filled on every core, so that
+    /// the first touch of its pages (the kernel zeroing them) is spread
+    /// over the threads instead of run before the parallel work starts.
+    const PARALLEL_FILL_BYTES: usize = 1 << 20;
     let mut v = Vec::new();
     v.try_reserve_exact(n).map_err(|_| Error::OutOfMemory {
         what,
         bytes: n.saturating_mul(core::mem::size_of::<T>()),
     })?;
-    v.resize(n, value);
+    if n.saturating_mul(core::mem::size_of::<T>()) >= PARALLEL_FILL_BYTES {
+        use rayon::iter::ParallelExtend;
+        v.par_extend(rayon::iter::repeat_n(value, n));
+    } else {
+        v.resize(n, value);
+    }
     Ok(v)
 }
 

@@ -25,7 +25,7 @@ use nalgebra::Point2;
 use pulp::{Arch, Simd, WithSimd};
 
 use crate::design::map::{ColumnsMut, Sample, Sampler};
-use crate::engine::{Control, run_blocks};
+use crate::engine::{Control, run_blocks_with};
 use crate::error::Result;
 use crate::geom::{Grid, PerPose};
 use crate::linkage::{Direction, Grashof, LinkageFigures};
@@ -286,18 +286,25 @@ impl<'s> DrivingKernel<'s> {
         control: &Control<'_>,
     ) -> Result<()> {
         let nx = grid.nx();
-        run_blocks(nx, grid.ny(), columns, control, |j0, mut block, rows| {
-            let mut out = RowOut::new(xs);
-            for r in 0..rows {
-                let j = j0 + r;
-                let y = grid.y(j);
-                self.row(y, xs, &mut out);
-                for (i, &x) in xs[..nx].iter().enumerate() {
-                    let s = self.sample(&out, i, Point2::new(x, y), branch[j * nx + i]);
-                    block.set(r * nx + i, s);
+        let init = || RowOut::new(xs);
+        run_blocks_with(
+            nx,
+            grid.ny(),
+            columns,
+            control,
+            init,
+            |out, j0, mut block, rows| {
+                for r in 0..rows {
+                    let j = j0 + r;
+                    let y = grid.y(j);
+                    self.row(y, xs, out);
+                    for (i, &x) in xs[..nx].iter().enumerate() {
+                        let s = self.sample(out, i, Point2::new(x, y), branch[j * nx + i]);
+                        block.set(r * nx + i, s);
+                    }
                 }
-            }
-        })
+            },
+        )
     }
 }
 
@@ -452,6 +459,12 @@ impl<S: Simd> Ops<S> {
     }
 }
 
+/// A padded row of values as whole SIMD vectors (no tail: [`PAD`]).
+#[inline(always)]
+fn lanes<S: Simd>(v: &mut [f64]) -> &mut [V<S>] {
+    S::as_mut_simd_f64s(v).0
+}
+
 impl WithSimd for Lanes<'_, '_> {
     type Output = ();
 
@@ -477,6 +490,15 @@ impl WithSimd for Lanes<'_, '_> {
         let n = S::F64_LANES;
         let (xs, _) = S::as_simd_f64s(self.xs);
         let out = self.out;
+        let (o_qx, o_qy, o_l1) = (
+            lanes::<S>(&mut out.qx),
+            lanes::<S>(&mut out.qy),
+            lanes::<S>(&mut out.l1),
+        );
+        let (o_l2, o_l3) = (lanes::<S>(&mut out.l2), lanes::<S>(&mut out.l3));
+        let (o_worst, o_ratio) = (lanes::<S>(&mut out.worst), lanes::<S>(&mut out.ratio));
+        let (o_members, o_flags) = (lanes::<S>(&mut out.members), lanes::<S>(&mut out.flags));
+        let o_grashof = lanes::<S>(&mut out.grashof);
         for (c, &x) in xs.iter().enumerate() {
             if let Some(needed) = self.needed {
                 let lanes = needed.get(c * n..((c + 1) * n).min(needed.len()));
@@ -621,17 +643,16 @@ impl WithSimd for Lanes<'_, '_> {
                 ),
             );
 
-            let at = c * n..(c + 1) * n;
-            s.partial_store_f64s(&mut out.qx[at.clone()], qx);
-            s.partial_store_f64s(&mut out.qy[at.clone()], qy);
-            s.partial_store_f64s(&mut out.l1[at.clone()], l1);
-            s.partial_store_f64s(&mut out.l2[at.clone()], l2);
-            s.partial_store_f64s(&mut out.l3[at.clone()], l3);
-            s.partial_store_f64s(&mut out.worst[at.clone()], worst);
-            s.partial_store_f64s(&mut out.ratio[at.clone()], o.div(longest, shortest));
-            s.partial_store_f64s(&mut out.members[at.clone()], members);
-            s.partial_store_f64s(&mut out.grashof[at.clone()], grashof);
-            s.partial_store_f64s(&mut out.flags[at], flags);
+            o_qx[c] = qx;
+            o_qy[c] = qy;
+            o_l1[c] = l1;
+            o_l2[c] = l2;
+            o_l3[c] = l3;
+            o_worst[c] = worst;
+            o_ratio[c] = o.div(longest, shortest);
+            o_members[c] = members;
+            o_grashof[c] = grashof;
+            o_flags[c] = flags;
         }
     }
 }
