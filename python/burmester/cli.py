@@ -28,7 +28,7 @@ import math
 import os
 import sys
 from pathlib import Path
-from typing import IO, TYPE_CHECKING, Any, Callable, Dict, List, NoReturn, Optional, Sequence, Tuple
+from typing import IO, TYPE_CHECKING, Any, Callable, Dict, List, Literal, NoReturn, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -336,7 +336,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
         assert plot is not None
         ax = plot.burmester_plane(task, spec.view.extent, driven=driven)
     if n == 4:
-        plane = "circle" if circle else "center"
+        plane: Literal["center", "circle"] = "circle" if circle else "center"
         arcs = task.order_arcs(*spec.view.extent, plane=plane)
         ordered = sum(1 for _, d, _ in arcs if d is not None)
         summary = (

@@ -670,7 +670,7 @@ def _poses(d: _Drawing, poses: Sequence[Sequence[float]], flag: float, labels: b
 
 
 def _burmester_drawing(task: Task, extent: Extent, driven: Optional[Point], labels: bool,
-                       plane: str) -> _Drawing:
+                       plane: Literal["center", "circle"]) -> _Drawing:
     n = len(task)
     circle = plane == "circle"
     title = ("circle-point curve (coupler frame at pose 1)" if circle
@@ -1097,7 +1097,7 @@ def burmester_plane(
     view: Optional[ViewLike] = None,
     *,
     driven: Optional[Point] = None,
-    plane: str = "center",
+    plane: Literal["center", "circle"] = "center",
     labels: bool = True,
     units: str = DEFAULT_UNITS,
 ) -> Path:
@@ -1148,7 +1148,8 @@ def burmester_plane(
 
 
 def _burmester_to(suffixes: Sequence[str], task: Task, path: PathLike, view: Optional[ViewLike],
-                  driven: Optional[Point], plane: str, labels: bool, units: str) -> Path:
+                  driven: Optional[Point], plane: Literal["center", "circle"], labels: bool,
+                  units: str) -> Path:
     target = _target(path, suffixes)
     units = _units(units)
     if plane not in ("center", "circle"):
@@ -1171,7 +1172,7 @@ def burmester_plane_dxf(
     view: Optional[ViewLike] = None,
     *,
     driven: Optional[Point] = None,
-    plane: str = "center",
+    plane: Literal["center", "circle"] = "center",
     labels: bool = True,
     units: str = DEFAULT_UNITS,
 ) -> Path:
@@ -1186,7 +1187,7 @@ def burmester_plane_svg(
     view: Optional[ViewLike] = None,
     *,
     driven: Optional[Point] = None,
-    plane: str = "center",
+    plane: Literal["center", "circle"] = "center",
     labels: bool = True,
     units: str = DEFAULT_UNITS,
 ) -> Path:

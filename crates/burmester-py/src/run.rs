@@ -46,48 +46,55 @@ pub(crate) fn run<T: Send>(
     let progress = progress.map(|p| p.clone().unbind());
     let mut raised: Option<PyErr> = None;
     let result = py.detach(|| {
-        std::thread::scope(|s| {
-            let (tx, rx) = mpsc::channel::<()>();
-            let (cancel, done, total) = (&cancel, &done, &total);
-            let worker = s.spawn(move || {
-                let hook = |d: usize, t: usize| {
-                    done.store(d, Ordering::Relaxed);
-                    total.store(t, Ordering::Relaxed);
-                };
-                let control = Control::new().with_cancel(cancel).with_progress(&hook);
-                let out = work(&control);
-                // The watcher may have stopped listening; nothing to do then.
-                let _ = tx.send(());
-                out
-            });
-            loop {
-                match rx.recv_timeout(POLL) {
-                    Ok(()) | Err(mpsc::RecvTimeoutError::Disconnected) => break,
-                    Err(mpsc::RecvTimeoutError::Timeout) => {}
-                }
-                if raised.is_some() {
-                    continue;
-                }
-                let r = Python::attach(|py| -> PyResult<()> {
-                    py.check_signals()?;
-                    if let Some(cb) = &progress {
-                        let t = total.load(Ordering::Relaxed);
-                        if t > 0 {
-                            cb.call1(py, (done.load(Ordering::Relaxed), t))?;
-                        }
-                    }
-                    Ok(())
+        // The work runs as a job of rayon's pool (whose threads it uses
+        // anyway): no thread is started per call. This thread waits in the
+        // scope's body, then for the job at the scope's end.
+        let mut out = None;
+        let finished = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            rayon::in_place_scope(|s| {
+                let (tx, rx) = mpsc::channel::<()>();
+                let (cancel, done, total) = (&cancel, &done, &total);
+                let out = &mut out;
+                s.spawn(move |_| {
+                    let hook = |d: usize, t: usize| {
+                        done.store(d, Ordering::Relaxed);
+                        total.store(t, Ordering::Relaxed);
+                    };
+                    let control = Control::new().with_cancel(cancel).with_progress(&hook);
+                    *out = Some(work(&control));
+                    // The watcher may have stopped listening; nothing to do then.
+                    let _ = tx.send(());
                 });
-                if let Err(e) = r {
-                    cancel.store(true, Ordering::Relaxed);
-                    raised = Some(e);
+                loop {
+                    match rx.recv_timeout(POLL) {
+                        Ok(()) | Err(mpsc::RecvTimeoutError::Disconnected) => break,
+                        Err(mpsc::RecvTimeoutError::Timeout) => {}
+                    }
+                    if raised.is_some() {
+                        continue;
+                    }
+                    let r = Python::attach(|py| -> PyResult<()> {
+                        py.check_signals()?;
+                        if let Some(cb) = &progress {
+                            let t = total.load(Ordering::Relaxed);
+                            if t > 0 {
+                                cb.call1(py, (done.load(Ordering::Relaxed), t))?;
+                            }
+                        }
+                        Ok(())
+                    });
+                    if let Err(e) = r {
+                        cancel.store(true, Ordering::Relaxed);
+                        raised = Some(e);
+                    }
                 }
-            }
-            worker.join()
-        })
+            })
+        }));
+        finished.map(|()| out)
     });
     let result = match result {
-        Ok(r) => r,
+        Ok(Some(r)) => r,
+        Ok(None) => unreachable!("the scope ends after its job"),
         Err(panic) => std::panic::resume_unwind(panic),
     };
     if let Some(e) = raised {
