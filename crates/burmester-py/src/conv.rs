@@ -205,12 +205,13 @@ pub(crate) fn zeros<'py, T: Element>(
     fresh(py, shape, "zeros")
 }
 
-/// A fresh C-contiguous NumPy array of `shape` for a map that writes every
-/// sample (as `out=` must be): a large one is made by `numpy.empty`, so it
-/// takes memory where NumPy's allocator would (pages already mapped for an
-/// array freed before, as `numpy.ones` does, instead of fresh zeroed pages
-/// faulted in one by one); a failed allocation is a `MemoryError`.
-pub(crate) fn for_map<'py, T: Element>(
+/// A fresh C-contiguous NumPy array of `shape` for results that write every
+/// element (a map, as `out=` must be, or a batch of solves): a large one is
+/// made by `numpy.empty`, so it takes memory where NumPy's allocator would
+/// (pages already mapped for an array freed before, as `numpy.ones` does,
+/// instead of fresh zeroed pages faulted in one by one, which also contend
+/// between threads); a failed allocation is a `MemoryError`.
+pub(crate) fn empty<'py, T: Element>(
     py: Python<'py>,
     shape: &[usize],
 ) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
@@ -236,7 +237,7 @@ fn fresh<'py, T: Element>(
         .map_err(PyErr::from)
 }
 
-/// Write access to an array made by [`zeros`].
+/// Write access to an array made by [`zeros`] or [`empty`].
 pub(crate) fn writer<'py, T: Element>(
     a: &Bound<'py, PyArrayDyn<T>>,
 ) -> PyResult<PyReadwriteArrayDyn<'py, T>> {

@@ -14,7 +14,7 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::conv::{FloatArray, PyPoint, Real, pt, slice_mut, writer, zeros};
+use crate::conv::{FloatArray, PyPoint, Real, empty, pt, slice_mut, writer};
 use crate::errors::{IntoPy, invalid};
 
 /// Parses `"open"` / `"crossed"`.
@@ -173,10 +173,11 @@ impl PyFourBar {
     ) -> PyResult<Arrays<'py>> {
         let mode = self::mode(mode)?;
         let (flat, shape) = (theta2s.values(), theta2s.shape());
+        // Every element is written (NaN and false where the loop does not close).
         let (t3, t4, ok) = (
-            zeros::<f64>(py, shape)?,
-            zeros::<f64>(py, shape)?,
-            zeros::<bool>(py, shape)?,
+            empty::<f64>(py, shape)?,
+            empty::<f64>(py, shape)?,
+            empty::<bool>(py, shape)?,
         );
         {
             let (mut t3_w, mut t4_w, mut ok_w) = (writer(&t3)?, writer(&t4)?, writer(&ok)?);
@@ -271,10 +272,11 @@ impl PyFourBar {
                 .py()?;
         }
         let (flat, shape) = (theta2s.values(), theta2s.shape());
+        // Every element is written (NaN and false where the loop does not close).
         let (xs, ys, ok) = (
-            zeros::<f64>(py, shape)?,
-            zeros::<f64>(py, shape)?,
-            zeros::<bool>(py, shape)?,
+            empty::<f64>(py, shape)?,
+            empty::<f64>(py, shape)?,
+            empty::<bool>(py, shape)?,
         );
         {
             let (mut xs_w, mut ys_w, mut ok_w) = (writer(&xs)?, writer(&ys)?, writer(&ok)?);

@@ -97,7 +97,7 @@ fn run_map<'py, T: Element + Copy + Send>(
     let (out, partial) = match out {
         Some(out) => (out, Some("out")),
         None => (
-            crate::conv::for_map::<T>(py, &[grid.ny(), grid.nx()])?.into_any(),
+            crate::conv::empty::<T>(py, &[grid.ny(), grid.nx()])?.into_any(),
             None,
         ),
     };
