@@ -35,7 +35,7 @@ use core::sync::atomic::{AtomicUsize, Ordering};
 use nalgebra::Point2;
 use rayon::prelude::*;
 
-use crate::design::kernel::{DrivingKernel, RowOut};
+use crate::design::kernel::{CosBand, DrivingKernel, RowOut};
 use crate::design::map::Sampler;
 use crate::design::rank::tie_order;
 use crate::design::{Constraints, DesignLimits};
@@ -247,6 +247,11 @@ fn atlas_cell(
     let mut run: Vec<(usize, f32)> = Vec::new();
     let nx = driving.nx();
     let kernel = DrivingKernel::new(sampler, driven, &c);
+    // The transmission limit, and the scores that may reach the best run
+    // (below it by more than TOP_SLACK, a score cannot tie after its
+    // rounding to f32).
+    let limit = CosBand::new(sampler.judge.limits().min_transmission);
+    let mut reach = CosBand::new(f64::NEG_INFINITY);
     for j in 0..driving.ny() {
         branch.row(j, row);
         if !row.contains(&true) {
@@ -257,15 +262,19 @@ fn atlas_cell(
         }
         for (i, _) in row.iter().enumerate().filter(|(_, f)| **f) {
             let p = driving.point(i, j);
-            let judged = match &kernel {
-                Some(k) => k.acceptable_transmission(out, i, p),
+            // Acceptable samples with their score where it may reach the
+            // run of the best (elsewhere no `acos` is taken).
+            let seen = match &kernel {
+                Some(k) => k
+                    .judge_for_atlas(out, i, p, &limit)
+                    .map(|a| a.map(|w| reach.may_reach(w).then(|| w.acos() as f32))),
                 None => {
                     let s = sampler.driving_sample(p, driven, &c, true);
                     s.valid
-                        .then_some(s.acceptable.then_some(s.min_transmission_rad))
+                        .then_some(s.acceptable.then_some(Some(s.min_transmission_rad)))
                 }
             };
-            let Some(acceptable) = judged else {
+            let Some(acceptable) = seen else {
                 continue;
             };
             cell.branch_free += 1;
@@ -273,12 +282,13 @@ fn atlas_cell(
                 continue;
             };
             cell.count += 1;
-            if score.is_nan() {
+            let Some(score) = score.filter(|s| !s.is_nan()) else {
                 continue;
-            }
+            };
             if score > top {
                 top = score;
                 run.retain(|&(_, v)| tied(top, v));
+                reach = CosBand::new(f64::from(top) - tolerance::RANK_TIE - TOP_SLACK);
             }
             if tied(top, score) {
                 run.push((j * nx + i, score));
@@ -302,6 +312,10 @@ fn atlas_cell(
     });
     cell
 }
+
+/// Radians below the best run's score under which a sample's score (an
+/// f32, rounded by at most 1e-7 rad) can neither tie nor lead.
+const TOP_SLACK: f64 = 1e-6;
 
 /// Whether `score` ties with the best score `top` (as `best_pivots` groups
 /// runs: the difference in `f64`).

@@ -43,6 +43,64 @@ const ONE_CIRCUIT: u8 = 4;
 const CCW: u8 = 8;
 const CW: u8 = 16;
 
+/// `acos(w) >= angle` for a worst `|cos mu|` `w` in `[0, 1]`, by
+/// thresholds on `w` away from the angle and the `acos` near it: the answer
+/// is the comparison of the `acos` itself (as [`DesignLimits::meets`]
+/// takes it) wherever libm's `acos` and `cos` are within a tenth of
+/// [`CosBand::SLACK`] of the true values, which they are by many orders of
+/// magnitude (glibc: 1 ulp, about `2e-16` rad here).
+///
+/// [`DesignLimits::meets`]: crate::DesignLimits::meets
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CosBand {
+    angle: f64,
+    /// Below `yes` the angle is surely reached; above `no` surely not.
+    yes: f64,
+    no: f64,
+}
+
+impl CosBand {
+    /// Radians either side of the angle where the `acos` is taken.
+    pub(crate) const SLACK: f64 = 1e-9;
+
+    /// The band about `angle` (radians). Outside `[1e-3, 2]` rad (where a
+    /// rounding of `cos` could move the thresholds by more than a small
+    /// part of the slack) every test takes the `acos`.
+    pub(crate) fn new(angle: f64) -> Self {
+        if !(1e-3..=2.0).contains(&angle) {
+            return CosBand {
+                angle,
+                yes: f64::NEG_INFINITY,
+                no: f64::INFINITY,
+            };
+        }
+        CosBand {
+            angle,
+            yes: (angle + Self::SLACK).cos(),
+            no: (angle - Self::SLACK).cos(),
+        }
+    }
+
+    /// Whether `acos(w) >= angle`.
+    #[inline(always)]
+    pub(crate) fn at_least(&self, w: f64) -> bool {
+        if w < self.yes {
+            true
+        } else if w > self.no {
+            false
+        } else {
+            w.acos() >= self.angle
+        }
+    }
+
+    /// Whether `acos(w)` may reach the angle (false only where it surely
+    /// does not).
+    #[inline(always)]
+    pub(crate) fn may_reach(&self, w: f64) -> bool {
+        w <= self.no
+    }
+}
+
 /// A Grashof class's code as a lane value.
 fn code(g: Grashof) -> f64 {
     f64::from(g.code())
@@ -171,8 +229,9 @@ impl<'s> DrivingKernel<'s> {
     }
 
     /// [`row`](Self::row) but only for the lanes of groups that hold a
-    /// sample where `needed` (one flag per column) is true; the others keep
-    /// what they held.
+    /// sample where `needed` (one flag per column) is true (the others keep
+    /// what they held), and only what
+    /// [`judge_for_atlas`](Self::judge_for_atlas) reads.
     #[inline]
     pub(crate) fn row_where(&self, y: f64, xs: &[f64], needed: &[bool], out: &mut RowOut) {
         Arch::new().dispatch(Lanes {
@@ -203,35 +262,34 @@ impl<'s> DrivingKernel<'s> {
     }
 
     /// What the atlas reads of a branch-free sample (column `i` of `out`,
-    /// candidate `a0`): `None` where the linkage does not exist, else its
-    /// minimum transmission angle as the map's column holds it where the
-    /// sample is acceptable (`Some(None)` where it is not). The `acos` is
-    /// taken only where every other test passes.
+    /// candidate `a0`): `None` where the linkage does not exist, else
+    /// `Some(Some(w))` where the sample is acceptable, `w` its worst
+    /// `|cos mu|` (its minimum transmission angle is `w.acos()`), and
+    /// `Some(None)` where it is not. The transmission limit is decided by
+    /// `band` without an `acos` away from it.
     #[inline]
-    pub(crate) fn acceptable_transmission(
+    pub(crate) fn judge_for_atlas(
         &self,
         out: &RowOut,
         i: usize,
         a0: Point2<f64>,
-    ) -> Option<Option<f32>> {
+        band: &CosBand,
+    ) -> Option<Option<f64>> {
         let (flags, direction) = Self::decode(out, i)?;
         let judge = &self.sampler.judge;
-        let mut min_transmission = f64::NAN;
+        let worst = out.worst[i];
         let meets = || {
-            judge.limits().meets_with(
+            judge.limits().meets_when(
                 flags & ONE_CIRCUIT != 0,
                 direction,
                 out.ratio[i],
                 flags & FULL != 0,
-                || {
-                    min_transmission = out.worst[i].acos();
-                    min_transmission
-                },
+                || band.at_least(worst),
             )
         };
         let driving = Dyad::new(a0, Point2::new(out.qx[i], out.qy[i]));
         let acceptable = judge.acceptable(true, meets, &[a0], driving, self.driven);
-        Some(acceptable.then_some(min_transmission as f32))
+        Some(acceptable.then_some(worst))
     }
 
     /// The sample of candidate `a0` (column `i` of the row in `out`) with
@@ -488,6 +546,9 @@ impl WithSimd for Lanes<'_, '_> {
         let yy = o.sp((self.y - k.origin[1]) / k.scale);
 
         let n = S::F64_LANES;
+        // The whole sample for a map; for the atlas (`needed`) only what
+        // `judge_for_atlas` reads.
+        let whole = self.needed.is_none();
         let (xs, _) = S::as_simd_f64s(self.xs);
         let out = self.out;
         let (o_qx, o_qy, o_l1) = (
@@ -602,39 +663,10 @@ impl WithSimd for Lanes<'_, '_> {
             worst = o.sel(at_g, o.fmax(worst, o.cos_mu(one, kk)), worst);
             let at_minus_g = o.inside(o.pseudo(rx, ry, o.neg(gx), o.neg(gy)), from, to, full);
             worst = o.sel(at_minus_g, o.fmax(worst, o.cos_mu(o.sp(-1.0), kk)), worst);
-            // Link ratio and the members' length (`members_length`).
+            // Link ratio; the Grashof class and the members' length
+            // (`members_length`) below, for a map.
             let longest = o.fmax(o.fmax(l1, l2), o.fmax(l3, l4));
             let shortest = o.fmin(o.fmin(l1, l2), o.fmin(l3, l4));
-            // The Grashof class (`grashof_of`), as its code.
-            let lhs = o.add(shortest, longest);
-            let rhs = o.sub(total, lhs);
-            let change = o.le(o.abs(o.sub(lhs, rhs)), o.mul(rounding_eps, total));
-            let by_shortest = o.sel(
-                o.eq(l1, shortest),
-                o.sp(code(Grashof::DoubleCrank)),
-                o.sel(
-                    o.eq(l2, shortest),
-                    o.sp(code(Grashof::CrankRocker)),
-                    o.sel(
-                        o.eq(l3, shortest),
-                        o.sp(code(Grashof::DoubleRocker)),
-                        o.sp(code(Grashof::RockerCrank)),
-                    ),
-                ),
-            );
-            let grashof = o.sel(
-                change,
-                o.sp(code(Grashof::ChangePoint)),
-                o.sel(
-                    o.gt(lhs, rhs),
-                    o.sp(code(Grashof::TripleRocker)),
-                    by_shortest,
-                ),
-            );
-            let members = o.add(
-                o.add(total, o.norm(o.sub(px, qx), o.sub(py, qy))),
-                to_driven,
-            );
             let flags = o.add(
                 o.add(o.flag(valid, VALID), o.flag(full, FULL)),
                 o.add(
@@ -645,14 +677,46 @@ impl WithSimd for Lanes<'_, '_> {
 
             o_qx[c] = qx;
             o_qy[c] = qy;
-            o_l1[c] = l1;
-            o_l2[c] = l2;
-            o_l3[c] = l3;
             o_worst[c] = worst;
             o_ratio[c] = o.div(longest, shortest);
-            o_members[c] = members;
-            o_grashof[c] = grashof;
             o_flags[c] = flags;
+            if whole {
+                // The Grashof class (`grashof_of`), as its code.
+                let lhs = o.add(shortest, longest);
+                let rhs = o.sub(total, lhs);
+                let change = o.le(o.abs(o.sub(lhs, rhs)), o.mul(rounding_eps, total));
+                let by_shortest = o.sel(
+                    o.eq(l1, shortest),
+                    o.sp(code(Grashof::DoubleCrank)),
+                    o.sel(
+                        o.eq(l2, shortest),
+                        o.sp(code(Grashof::CrankRocker)),
+                        o.sel(
+                            o.eq(l3, shortest),
+                            o.sp(code(Grashof::DoubleRocker)),
+                            o.sp(code(Grashof::RockerCrank)),
+                        ),
+                    ),
+                );
+                let grashof = o.sel(
+                    change,
+                    o.sp(code(Grashof::ChangePoint)),
+                    o.sel(
+                        o.gt(lhs, rhs),
+                        o.sp(code(Grashof::TripleRocker)),
+                        by_shortest,
+                    ),
+                );
+                let members = o.add(
+                    o.add(total, o.norm(o.sub(px, qx), o.sub(py, qy))),
+                    to_driven,
+                );
+                o_l1[c] = l1;
+                o_l2[c] = l2;
+                o_l3[c] = l3;
+                o_members[c] = members;
+                o_grashof[c] = grashof;
+            }
         }
     }
 }
@@ -761,12 +825,14 @@ mod tests {
             for (i, _) in needed.iter().enumerate().filter(|(_, f)| **f) {
                 let a0 = Point2::new(grid.x(i), y);
                 let want = sampler.driving_sample(a0, driven, &c, true);
-                let got = k.acceptable_transmission(&out, i, a0);
+                let band = CosBand::new(limits.min_transmission);
+                let got = k.judge_for_atlas(&out, i, a0, &band);
                 let want = want.valid.then_some(
                     want.acceptable
                         .then_some(want.min_transmission_rad.to_bits()),
                 );
-                assert_eq!(got.map(|a| a.map(f32::to_bits)), want, "({i}, {j}) at {a0}");
+                let got = got.map(|a| a.map(|w| (w.acos() as f32).to_bits()));
+                assert_eq!(got, want, "({i}, {j}) at {a0}");
                 n += 1;
             }
         }
@@ -809,6 +875,45 @@ mod tests {
         assert!(hit >= 1);
         // Far and huge candidates.
         assert!(check(&task, c0, &grid((-1e12, 1e12), (-1e300, 1e300), 17, 13)) > 0);
+    }
+
+    #[test]
+    fn cos_band_is_the_acos_comparison() {
+        let mut checked = 0;
+        for angle in [
+            0.0,
+            1e-12,
+            5e-4,
+            1e-3,
+            0.1,
+            30f64.to_radians(),
+            1.0,
+            89f64.to_radians(),
+            2.0,
+            3.0,
+        ] {
+            let band = CosBand::new(angle);
+            let c = angle.cos();
+            // Dense about the threshold (ulps and slacks away) and across [0, 1].
+            let near = (-3000..=3000).map(|k| c + f64::from(k) * 1e-13);
+            let ulps = (-50..=50).map(|k| c + f64::from(k) * f64::EPSILON * c.abs().max(1e-300));
+            let spread = (0..=2000).map(|k| f64::from(k) / 2000.0);
+            for w in near
+                .chain(ulps)
+                .chain(spread)
+                .filter(|w| (0.0..=1.0).contains(w))
+            {
+                assert_eq!(band.at_least(w), w.acos() >= angle, "angle {angle}, w {w}");
+                if !band.may_reach(w) {
+                    assert!(
+                        w.acos() < angle - 0.5 * CosBand::SLACK,
+                        "angle {angle}, w {w}"
+                    );
+                }
+                checked += 1;
+            }
+        }
+        assert!(checked > 50_000);
     }
 
     proptest! {

@@ -152,6 +152,23 @@ impl DesignLimits {
         input_full: bool,
         min_transmission: impl FnOnce() -> f64,
     ) -> bool {
+        self.meets_when(one_circuit, direction, link_ratio, input_full, || {
+            min_transmission() >= self.min_transmission
+        })
+    }
+
+    /// [`meets_with`](Self::meets_with) with the transmission test itself
+    /// given (`transmission_ok`: the minimum transmission angle is at least
+    /// the limit), asked last.
+    #[inline(always)]
+    pub(crate) fn meets_when(
+        &self,
+        one_circuit: bool,
+        direction: Direction,
+        link_ratio: f64,
+        input_full: bool,
+        transmission_ok: impl FnOnce() -> bool,
+    ) -> bool {
         one_circuit
             && direction != Direction::None
             && link_ratio <= self.max_link_ratio
@@ -160,7 +177,7 @@ impl DesignLimits {
                 InputRequirement::Crank => input_full,
                 InputRequirement::Rocker => !input_full,
             }
-            && min_transmission() >= self.min_transmission
+            && transmission_ok()
     }
 }
 
