@@ -24,6 +24,7 @@
 use nalgebra::Point2;
 use pulp::{Arch, Simd, WithSimd};
 
+use crate::design::InputRequirement;
 use crate::design::map::{ColumnsMut, Sample, Sampler};
 use crate::engine::{Control, run_blocks_with};
 use crate::error::Result;
@@ -42,6 +43,10 @@ const FULL: u8 = 2;
 const ONE_CIRCUIT: u8 = 4;
 const CCW: u8 = 8;
 const CW: u8 = 16;
+/// May meet the limits (atlas rows only): one circuit, a direction, the
+/// link ratio, the input kind, and a worst `|cos mu|` not surely past the
+/// transmission limit; without it the sample is surely not acceptable.
+const MAY_MEET: u8 = 32;
 
 /// `acos(w) >= angle` for a worst `|cos mu|` `w` in `[0, 1]`, by
 /// thresholds on `w` away from the angle and the `acos` near it: the answer
@@ -56,7 +61,7 @@ pub(crate) struct CosBand {
     angle: f64,
     /// Below `yes` the angle is surely reached; above `no` surely not.
     yes: f64,
-    no: f64,
+    pub(crate) no: f64,
 }
 
 impl CosBand {
@@ -167,6 +172,12 @@ pub(crate) struct DrivingKernel<'s> {
     to_driven: f64,
     point: [f64; 2],
     tiny: f64,
+    /// The limits as the atlas rows test them: the largest link ratio,
+    /// which input kinds pass (`[rocker, crank]`), and the worst `|cos mu|`
+    /// above which the transmission limit is surely missed.
+    max_ratio: f64,
+    input_ok: [bool; 2],
+    cos_no: f64,
 }
 
 impl<'s> DrivingKernel<'s> {
@@ -187,6 +198,7 @@ impl<'s> DrivingKernel<'s> {
         let rot_shift = |k: usize| sampler.motion.first_to_parts(k);
         let ((r1, t1), (r2, t2)) = (rot_shift(1), rot_shift(2));
         let point = sampler.judge.point();
+        let limits = sampler.judge.limits();
         Some(DrivingKernel {
             sampler,
             driven,
@@ -203,6 +215,13 @@ impl<'s> DrivingKernel<'s> {
             to_driven: (point - driven.circle).norm(),
             point: [point.x, point.y],
             tiny: sampler.judge.tiny,
+            max_ratio: limits.max_link_ratio,
+            input_ok: match limits.input {
+                InputRequirement::Any => [true, true],
+                InputRequirement::Crank => [false, true],
+                InputRequirement::Rocker => [true, false],
+            },
+            cos_no: CosBand::new(limits.min_transmission).no,
         })
     }
 
@@ -276,6 +295,9 @@ impl<'s> DrivingKernel<'s> {
         band: &CosBand,
     ) -> Option<Option<f64>> {
         let (flags, direction) = Self::decode(out, i)?;
+        if flags & MAY_MEET == 0 {
+            return Some(None);
+        }
         let judge = &self.sampler.judge;
         let worst = out.worst[i];
         let meets = || {
@@ -540,6 +562,7 @@ impl WithSimd for Lanes<'_, '_> {
         let (px, py) = (o.sp(k.point[0]), o.sp(k.point[1]));
         let (l4, tiny, to_driven) = (o.sp(k.l4), o.sp(k.tiny), o.sp(k.to_driven));
         let rounding_eps = o.sp(tolerance::ROUNDING_EPS * f64::EPSILON);
+        let (max_ratio, cos_no) = (o.sp(k.max_ratio), o.sp(k.cos_no));
         let [(r1c, r1s), (r2c, r2s)] = k.rot.map(|(c, s)| (o.sp(c), o.sp(s)));
         let [t1, t2] = k.shift.map(|t| t.map(|v| o.sp(v)));
         let y = o.sp(self.y);
@@ -675,11 +698,28 @@ impl WithSimd for Lanes<'_, '_> {
                 ),
             );
 
+            let ratio = o.div(longest, shortest);
             o_qx[c] = qx;
             o_qy[c] = qy;
             o_worst[c] = worst;
-            o_ratio[c] = o.div(longest, shortest);
-            o_flags[c] = flags;
+            o_ratio[c] = ratio;
+            if whole {
+                o_flags[c] = flags;
+            } else {
+                // The limits' cheap tests, as `meets_when` makes them.
+                let [rocker_ok, crank_ok] = k.input_ok;
+                let input = match (rocker_ok, crank_ok) {
+                    (true, true) => o.eq(zero, zero),
+                    (false, true) => full,
+                    (true, false) => o.not(full),
+                    (false, false) => o.not(o.eq(zero, zero)),
+                };
+                let may = o.and(
+                    o.and(o.and(valid, one_circuit), o.or(ccw, cw)),
+                    o.and(o.and(o.le(ratio, max_ratio), input), o.le(worst, cos_no)),
+                );
+                o_flags[c] = o.add(flags, o.flag(may, MAY_MEET));
+            }
             if whole {
                 // The Grashof class (`grashof_of`), as its code.
                 let lhs = o.add(shortest, longest);

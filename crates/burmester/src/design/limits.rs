@@ -131,35 +131,19 @@ impl DesignLimits {
     /// the link ratio and the input kind. The one acceptance test of the
     /// solution maps and the rankings.
     pub fn meets(&self, f: &LinkageFigures) -> bool {
-        self.meets_with(
+        self.meets_when(
             f.one_circuit,
             f.direction,
             f.link_ratio,
             f.input_full,
-            || f.min_transmission,
+            || f.min_transmission >= self.min_transmission,
         )
     }
 
-    /// [`meets`](Self::meets) from the figures it reads, the minimum
-    /// transmission angle asked for last, only when everything else passes
-    /// (the map kernel computes it by an `acos`).
-    #[inline(always)]
-    pub(crate) fn meets_with(
-        &self,
-        one_circuit: bool,
-        direction: Direction,
-        link_ratio: f64,
-        input_full: bool,
-        min_transmission: impl FnOnce() -> f64,
-    ) -> bool {
-        self.meets_when(one_circuit, direction, link_ratio, input_full, || {
-            min_transmission() >= self.min_transmission
-        })
-    }
-
-    /// [`meets_with`](Self::meets_with) with the transmission test itself
-    /// given (`transmission_ok`: the minimum transmission angle is at least
-    /// the limit), asked last.
+    /// [`meets`](Self::meets) from the figures it reads, the transmission
+    /// test given (`transmission_ok`: the minimum transmission angle is at
+    /// least the limit) and asked last: the atlas decides it mostly without
+    /// an `acos`.
     #[inline(always)]
     pub(crate) fn meets_when(
         &self,
