@@ -11,6 +11,12 @@
 //! Grashof class, one `acos`, the limits and constraints, the columns)
 //! runs in scalar code from the lanes' results.
 //!
+//! The atlas asks less of a row ([`DrivingKernel::row_where`]): only the
+//! groups of lanes that hold a branch-free sample, without the Grashof
+//! class and the size, and with a flag for the samples that may meet the
+//! limits; it decides the transmission limit by a band on the worst
+//! `|cos mu|` ([`CosBand`]), taking the `acos` only near the limit.
+//!
 //! The lanes come from [`pulp`], which picks at run time the widest
 //! instruction set the CPU has (AVX2 on x86-64-v3, scalar lanes
 //! elsewhere), with no `unsafe` in this crate: a portable wheel built for
