@@ -179,10 +179,10 @@ pub(crate) struct DrivingKernel<'s> {
     point: [f64; 2],
     tiny: f64,
     /// The limits as the atlas rows test them: the largest link ratio,
-    /// which input kinds pass (`[rocker, crank]`), and the worst `|cos mu|`
-    /// above which the transmission limit is surely missed.
+    /// the input kind, and the worst `|cos mu|` above which the
+    /// transmission limit is surely missed.
     max_ratio: f64,
-    input_ok: [bool; 2],
+    input: InputRequirement,
     cos_no: f64,
 }
 
@@ -222,11 +222,7 @@ impl<'s> DrivingKernel<'s> {
             point: [point.x, point.y],
             tiny: sampler.judge.tiny,
             max_ratio: limits.max_link_ratio,
-            input_ok: match limits.input {
-                InputRequirement::Any => [true, true],
-                InputRequirement::Crank => [false, true],
-                InputRequirement::Rocker => [true, false],
-            },
+            input: limits.input,
             cos_no: CosBand::new(limits.min_transmission).no,
         })
     }
@@ -713,12 +709,10 @@ impl WithSimd for Lanes<'_, '_> {
                 o_flags[c] = flags;
             } else {
                 // The limits' cheap tests, as `meets_when` makes them.
-                let [rocker_ok, crank_ok] = k.input_ok;
-                let input = match (rocker_ok, crank_ok) {
-                    (true, true) => o.eq(zero, zero),
-                    (false, true) => full,
-                    (true, false) => o.not(full),
-                    (false, false) => o.not(o.eq(zero, zero)),
+                let input = match k.input {
+                    InputRequirement::Any => o.eq(zero, zero),
+                    InputRequirement::Crank => full,
+                    InputRequirement::Rocker => o.not(full),
                 };
                 let may = o.and(
                     o.and(o.and(valid, one_circuit), o.or(ccw, cw)),
