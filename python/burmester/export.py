@@ -641,21 +641,30 @@ def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
         clipped = _clip_polygon(wedge, extent)
         if len(clipped) >= 3:
             d.regions.append(_Region("BRANCH_FREE", [clipped], "branch-free driving circle points"))
-    middle = filemon.middle_pose
-    for k, (point, direction) in enumerate(filemon.all_lines, start=1):
-        seg = clip_line(point, direction, extent)
-        if seg is not None:
-            d.polyline(f"LINE_{k}", seg, f"line C1 C'{k} (pose {k})" + (", middle" if k == middle else ""))
     task = filemon.task
     if has_pole_triangle(task):  # not with a pole at infinity
         for name, p in zip(("P12", "P13", "P'23"), task.image_poles()):
             d.marker("IMAGE_POLES", p, f"image pole {name}", name if labels else None)
         _circle_or_line(d, "IMAGE_POLE_CIRCLE", task.image_pole_circle(), extent, "image-pole circle")
-    for k, p in enumerate(filemon.fixed_pivot_images, start=1):
+    _filemon_construction(d, c1, filemon.all_lines, filemon.fixed_pivot_images, extent, labels,
+                          filemon.middle_pose)
+    return d
+
+
+def _filemon_construction(d: _Drawing, c1: Point, lines: Sequence[Tuple[Point, Point]],
+                          images: Sequence[Point], extent: Extent, labels: bool,
+                          middle: Optional[int] = None) -> None:
+    """Filemon's construction in the circle-point plane: its lines (``(point,
+    direction)``, one per pose, clipped to the view; layers ``LINE_k``), the
+    fixed pivot's images ``C'k`` and the driven circle point ``C1``."""
+    for k, (point, direction) in enumerate(lines, start=1):
+        seg = clip_line(point, direction, extent)
+        if seg is not None:
+            d.polyline(f"LINE_{k}", seg, f"line C1 C'{k} (pose {k})" + (", middle" if k == middle else ""))
+    for k, p in enumerate(images, start=1):
         name = f"C'{k}" + (" = C0" if k == 1 else "")
         d.marker("FIXED_PIVOT_IMAGES", p, f"fixed pivot image {name}", name if labels else None)
     d.marker("DRIVEN_CIRCLE_POINT", c1, "driven crank's moving pivot C1", "C1" if labels else None)
-    return d
 
 
 _ORDER_LAYERS = {"counterclockwise": "CURVE_CCW", "clockwise": "CURVE_CW", None: "CURVE_ORDER_DEFECT"}
@@ -714,13 +723,9 @@ def _filemon_lines(d: _Drawing, task: Task, driven: Point, extent: Extent, label
     dyad of ``driven``, its lines through ``C1`` and ``C'k = D_k1(C0)``."""
     c1 = task.circle_point(driven)
     images = [task.displace(driven, k, 1) for k in range(1, len(task) + 1)]
-    for k, image in enumerate(images, start=1):
-        seg = clip_line(c1, (image[0] - c1[0], image[1] - c1[1]), extent) if image != c1 else None
-        if seg is not None:
-            d.polyline(f"LINE_{k}", seg, f"line C1 C'{k} (pose {k})")
-    for k, image in enumerate(images, start=1):
-        d.marker("FIXED_PIVOT_IMAGES", image, f"fixed pivot image C'{k}", f"C'{k}" if labels else None)
-    d.marker("DRIVEN_CIRCLE_POINT", c1, "driven crank's moving pivot C1", "C1" if labels else None)
+    # A line per pose through C1 and C'k (clip_line draws none where they coincide).
+    lines = [(c1, (p[0] - c1[0], p[1] - c1[1])) for p in images]
+    _filemon_construction(d, c1, lines, images, extent, labels)
 
 
 def _plane_drawing(filemon: Filemon, view: Optional[ViewLike], plane: str, grid: Optional[Tuple[int, int]],
