@@ -79,6 +79,50 @@ impl Local {
     }
 }
 
+/// The local x of a row's columns, with where to look for a value among
+/// them: the columns are evenly spaced, so the index of a value is known
+/// to within rounding without a binary search.
+struct Columns<'a> {
+    xs: &'a [f64],
+    x0: f64,
+    /// Columns per local unit (zero for fewer than two columns).
+    per_unit: f64,
+}
+
+impl<'a> Columns<'a> {
+    fn new(xs: &'a [f64]) -> Self {
+        let n = xs.len();
+        let per_unit = if n < 2 {
+            0.0
+        } else {
+            (n - 1) as f64 / (xs[n - 1] - xs[0])
+        };
+        Columns {
+            xs,
+            x0: xs.first().copied().unwrap_or(0.0),
+            per_unit: if per_unit.is_finite() { per_unit } else { 0.0 },
+        }
+    }
+
+    /// `xs.partition_point(pred)` for a `pred` that holds below `v` and
+    /// fails above it (`x < v` or `x <= v`): the same index, found from
+    /// the estimate `(v - x0) per_unit` and a walk of the few columns that
+    /// rounding puts on the wrong side of it.
+    #[inline]
+    fn partition_point(&self, v: f64, pred: impl Fn(f64) -> bool) -> usize {
+        let n = self.xs.len();
+        // The cast saturates (NaN to 0); the walk corrects any estimate.
+        let mut i = (((v - self.x0) * self.per_unit) as usize).min(n);
+        while i > 0 && !pred(self.xs[i - 1]) {
+            i -= 1;
+        }
+        while i < n && pred(self.xs[i]) {
+            i += 1;
+        }
+        i
+    }
+}
+
 /// Whether two conic values make a branch-free point.
 #[inline(always)]
 fn free(g1: f64, g2: f64) -> bool {
@@ -440,10 +484,11 @@ fn conic_row(ca: &Conic, cb: &Conic, y: f64, xs: &[f64], out: &mut [bool]) {
     }
     // Sample index ranges [lo, hi) of the bands, one sample of margin on
     // each side, merged.
+    let cols = Columns::new(xs);
     let mut zones = [(0usize, 0usize); 4];
     for (z, &(lo, hi)) in zones.iter_mut().zip(&bands[..n]) {
-        let i0 = xs.partition_point(|&x| x < lo).saturating_sub(1);
-        let i1 = (xs.partition_point(|&x| x <= hi) + 1).min(xs.len());
+        let i0 = cols.partition_point(lo, |x| x < lo).saturating_sub(1);
+        let i1 = (cols.partition_point(hi, |x| x <= hi) + 1).min(xs.len());
         *z = (i0, i1.max(i0));
     }
     let zones = &mut zones[..n];
@@ -542,5 +587,73 @@ fn margin_row(ca: &Conic, cb: &Conic, y: f64, s: f64, xs: &[f64], out: &mut [f32
     let (ra, rb) = (RowGrad::new(ca, y), RowGrad::new(cb, y));
     for (o, &x) in out.iter_mut().zip(xs) {
         *o = margin_f32(margin_of(&ra, &rb, x, s));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Columns;
+    use proptest::prelude::*;
+
+    /// Columns as `Local` makes them: `(x_i - o) / s` on a grid.
+    fn columns(x0: f64, dx: f64, n: usize, o: f64, s: f64) -> Vec<f64> {
+        (0..n)
+            .map(|i| (x0 + (i as f64 + 0.5) * dx - o) / s)
+            .collect()
+    }
+
+    fn check(xs: &[f64], v: f64) {
+        let c = Columns::new(xs);
+        assert_eq!(
+            c.partition_point(v, |x| x < v),
+            xs.partition_point(|&x| x < v),
+            "x < {v}"
+        );
+        assert_eq!(
+            c.partition_point(v, |x| x <= v),
+            xs.partition_point(|&x| x <= v),
+            "x <= {v}"
+        );
+    }
+
+    #[test]
+    fn the_index_of_a_value_is_the_binary_search_s() {
+        // Values on, between and beyond the columns, and grids finer than
+        // the spacing of doubles (runs of equal columns).
+        for xs in [
+            columns(-8.0, 16.0 / 4096.0, 4096, 0.3, 1.7),
+            columns(1e8, 1e-9, 300, 0.0, 1.0),
+            columns(-1.0, 0.5, 1, 0.0, 1.0),
+            columns(-1.0, 0.5, 2, 0.0, 1.0),
+            Vec::new(),
+        ] {
+            let mut vs = vec![0.0, f64::INFINITY, f64::NEG_INFINITY, 1e300, -1e300];
+            for (i, &x) in xs.iter().enumerate().step_by(7) {
+                vs.extend([x, x.next_up(), x.next_down(), x + 1e-3 * (i as f64)]);
+            }
+            for v in vs {
+                check(&xs, v);
+            }
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn the_index_matches_on_random_grids(
+            x0 in -1e3f64..1e3,
+            dx in 1e-6f64..10.0,
+            n in 0usize..5000,
+            o in -1e3f64..1e3,
+            s in 1e-3f64..1e3,
+            t in -0.2f64..1.2,
+        ) {
+            let xs = columns(x0, dx, n, o, s);
+            let (lo, hi) = ((x0 - o) / s, (x0 + n as f64 * dx - o) / s);
+            let v = lo + t * (hi - lo);
+            check(&xs, v);
+            if let Some(&x) = xs.get((t.clamp(0.0, 1.0) * n as f64) as usize) {
+                check(&xs, x);
+            }
+        }
     }
 }
