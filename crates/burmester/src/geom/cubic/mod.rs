@@ -296,6 +296,30 @@ impl Cubic {
         [self.c[6], self.c[7], self.c[8], self.c[9]]
     }
 
+    /// A root `t` of `f(p + d t)` (local) refined by Newton steps on the
+    /// curve's own value: the restriction's coefficients lose the digits
+    /// that `p` far from the curve's frame cancels, the point's value does
+    /// not. A step is kept only while it lowers `|f|` (at most four).
+    pub(crate) fn refine_on_line(&self, p: Vector2<f64>, d: Vector2<f64>, mut t: f64) -> f64 {
+        let mut f = self.eval_local(p + d * t);
+        for _ in 0..4 {
+            if f == 0.0 {
+                break;
+            }
+            let slope = self.grad_local(p + d * t).dot(&d);
+            let next = t - f / slope;
+            if !next.is_finite() {
+                break;
+            }
+            let fn_ = self.eval_local(p + d * next);
+            if !(fn_.abs() < f.abs()) {
+                break;
+            }
+            (t, f) = (next, fn_);
+        }
+        t
+    }
+
     /// The restriction to the local line `p + t d`: `[a0, a1, a2, a3]` with
     /// `f(p + t d) = a0 + a1 t + a2 t^2 + a3 t^3` (exact for a cubic).
     pub(crate) fn restriction_local(&self, p: Vector2<f64>, d: Vector2<f64>) -> [f64; 4] {
@@ -418,7 +442,7 @@ impl Cubic {
         let coeffs = self.restriction_local(p, d);
         roots::real_roots(&coeffs)
             .into_iter()
-            .map(|r| self.global_of(p + d * r))
+            .map(|r| self.global_of(p + d * self.refine_on_line(p, d, r)))
             .filter(|q| q.x.is_finite() && q.y.is_finite())
             .collect()
     }

@@ -98,7 +98,7 @@ impl FilemonArcs {
             quadratic_roots(r[3], r[2], r[1])
                 .into_iter()
                 .filter(|t| t.abs() > 1e-12 * (1.0 + p.norm()))
-                .map(|t| curve.global_of(p + d * t))
+                .map(|t| curve.global_of(p + d * curve.refine_on_line(p, d, t)))
                 .filter(|q| q.x.is_finite() && q.y.is_finite())
                 .collect::<Vec<_>>()
         });
