@@ -54,6 +54,7 @@ pub mod error;
 pub mod example;
 pub mod geom;
 pub mod linkage;
+pub(crate) mod simd;
 pub mod synthesis;
 pub mod tolerance;
 

@@ -30,6 +30,8 @@
 use nalgebra::Point2;
 use pulp::{Arch, Simd, WithSimd};
 
+use crate::simd::{M, Ops, V};
+
 use crate::design::InputRequirement;
 use crate::design::map::{ColumnsMut, Sample, Sampler};
 use crate::engine::{Control, run_blocks_with};
@@ -400,115 +402,7 @@ struct Lanes<'k, 'o> {
     out: &'o mut RowOut,
 }
 
-/// The lane operations, each inlined into the dispatched function so that
-/// it compiles with the CPU's target features.
-#[derive(Clone, Copy)]
-struct Ops<S>(S);
-
-/// A mask of lanes.
-type M<S> = <S as Simd>::m64s;
-/// A vector of lanes.
-type V<S> = <S as Simd>::f64s;
-
 impl<S: Simd> Ops<S> {
-    #[inline(always)]
-    fn sp(self, v: f64) -> V<S> {
-        self.0.splat_f64s(v)
-    }
-    #[inline(always)]
-    fn add(self, a: V<S>, b: V<S>) -> V<S> {
-        self.0.add_f64s(a, b)
-    }
-    #[inline(always)]
-    fn sub(self, a: V<S>, b: V<S>) -> V<S> {
-        self.0.sub_f64s(a, b)
-    }
-    #[inline(always)]
-    fn mul(self, a: V<S>, b: V<S>) -> V<S> {
-        self.0.mul_f64s(a, b)
-    }
-    #[inline(always)]
-    fn div(self, a: V<S>, b: V<S>) -> V<S> {
-        self.0.div_f64s(a, b)
-    }
-    #[inline(always)]
-    fn neg(self, a: V<S>) -> V<S> {
-        self.0.neg_f64s(a)
-    }
-    #[inline(always)]
-    fn abs(self, a: V<S>) -> V<S> {
-        self.0.abs_f64s(a)
-    }
-    #[inline(always)]
-    fn lt(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.less_than_f64s(a, b)
-    }
-    #[inline(always)]
-    fn gt(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.greater_than_f64s(a, b)
-    }
-    #[inline(always)]
-    fn le(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.less_than_or_equal_f64s(a, b)
-    }
-    #[inline(always)]
-    fn ge(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.greater_than_or_equal_f64s(a, b)
-    }
-    #[inline(always)]
-    fn eq(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.equal_f64s(a, b)
-    }
-    #[inline(always)]
-    fn and(self, a: M<S>, b: M<S>) -> M<S> {
-        self.0.and_m64s(a, b)
-    }
-    #[inline(always)]
-    fn or(self, a: M<S>, b: M<S>) -> M<S> {
-        self.0.or_m64s(a, b)
-    }
-    #[inline(always)]
-    fn xor(self, a: M<S>, b: M<S>) -> M<S> {
-        self.0.xor_m64s(a, b)
-    }
-    #[inline(always)]
-    fn not(self, a: M<S>) -> M<S> {
-        self.0.not_m64s(a)
-    }
-    /// `m ? a : b` per lane.
-    #[inline(always)]
-    fn sel(self, m: M<S>, a: V<S>, b: V<S>) -> V<S> {
-        self.0.select_f64s(m, a, b)
-    }
-    /// The scalar path's `fmax` (`if a > b { a } else { b }`).
-    #[inline(always)]
-    fn fmax(self, a: V<S>, b: V<S>) -> V<S> {
-        self.sel(self.gt(a, b), a, b)
-    }
-    /// The scalar path's `fmin` (`if a < b { a } else { b }`).
-    #[inline(always)]
-    fn fmin(self, a: V<S>, b: V<S>) -> V<S> {
-        self.sel(self.lt(a, b), a, b)
-    }
-    #[inline(always)]
-    fn finite(self, a: V<S>) -> M<S> {
-        self.lt(self.abs(a), self.sp(f64::INFINITY))
-    }
-    /// `sqrt(x^2 + y^2)`, as nalgebra's `norm`.
-    #[inline(always)]
-    fn norm(self, x: V<S>, y: V<S>) -> V<S> {
-        self.0.sqrt_f64s(self.add(self.mul(x, x), self.mul(y, y)))
-    }
-    /// `r . v`.
-    #[inline(always)]
-    fn dot(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {
-        self.add(self.mul(rx, vx), self.mul(ry, vy))
-    }
-    /// `r x v`.
-    #[inline(always)]
-    fn cross(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {
-        self.sub(self.mul(rx, vy), self.mul(ry, vx))
-    }
     /// `pseudo_angle(r, v)`: the monotone pseudo-angle of `v` from `r`.
     #[inline(always)]
     fn pseudo(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {

@@ -43,11 +43,13 @@
 //! `pi` included, comes out of `atan2`. The lengths are scaled by the longest
 //! link first, so no product overflows or underflows at any size.
 //!
-//! The two `atan2` are evaluated together in two SIMD lanes (the `wide`
-//! crate, within about 1 ulp of a correctly rounded `atan2`); `sin` and `cos`
-//! of the input come from `libm`. [`FourBar::solve_into`] runs the same arithmetic
-//! four angles at a time (and in parallel on large inputs), so that it gives
-//! the bits of [`FourBar::solve`].
+//! The `atan2` is the crate's lane `atan2` (module `simd`: Cephes'
+//! rational approximation as Agner Fog's vector class library and `wide`
+//! write it, unfused, within 2 ulp of `libm`'s), here on plain `f64`;
+//! `sin` and `cos` of the input come from `libm`. [`FourBar::solve_into`]
+//! runs the same arithmetic on SIMD lanes picked at run time ([`pulp`]:
+//! four angles at a time with AVX2), and in parallel on large inputs, so
+//! that it gives the bits of [`FourBar::solve`] on every CPU.
 //!
 //! A toggle is reported where `|H|` is within rounding of zero:
 //! `|H| <= 8 eps ((L3 + L4)^2 + r^2)^2`. Since `sqrt(H) = 2 L3 L4 |sin mu|`
@@ -66,12 +68,14 @@
 use core::f64::consts::{PI, TAU};
 
 use nalgebra::{Point2, Vector2};
+use pulp::{Arch, Simd, WithSimd};
 use rayon::prelude::*;
 
 use crate::error::{AssemblyError, Error, InvalidInput, Result, finite, positive};
 use crate::geom::{cross, normalized, perp, point_is_finite, rotate, unit, wrap_angle};
 use crate::linkage::grashof::{InputBounds, grashof_of, input_bounds};
 use crate::linkage::{AngleInterval, Grashof, InputRange};
+use crate::simd::{Ops, Pair, atan2};
 use crate::tolerance;
 
 /// The two ways to close the loop at one input angle.
@@ -285,11 +289,6 @@ impl LoopVectors {
     }
 }
 
-/// The SIMD vector of the batch kernel's `atan2` (lane by lane the same
-/// algorithm as the two lanes of [`FourBar::solve`]).
-type SolveLanes = wide::f64x4;
-/// Angles per step of the batch kernel.
-const SOLVE_LANES: usize = 4;
 /// Angles per parallel task of [`FourBar::solve_into`].
 const SOLVE_CHUNK: usize = 1 << 12;
 /// From this many angles on, [`FourBar::solve_into`] runs in parallel.
@@ -541,8 +540,10 @@ impl FourBar {
         let diff = self.diff_n;
         let heron = (sum * sum - r2) * (r2 - diff * diff);
         let big = sum * sum + r2;
-        let tol = tolerance::ROUNDING_EPS * f64::EPSILON * big * big;
-        let h = sign * heron.max(0.0).sqrt();
+        let tol = LOOP_TOL * big * big;
+        // Not `max`, which may return either zero for `-0.0`: a select
+        // that the lanes of `solve_into` make the same way.
+        let h = sign * (if heron > 0.0 { heron } else { 0.0 }).sqrt();
         let n = perp(d) * h;
         LoopVectors {
             r2,
@@ -591,9 +592,13 @@ impl FourBar {
     #[inline]
     pub fn solve(&self, theta2: f64, mode: AssemblyMode) -> Result<Configuration> {
         let c = self.close(theta2, mode)?;
-        let [theta3, theta4] = wide::f64x2::new([c.v3.y, c.v4.y])
-            .atan2(wide::f64x2::new([c.v3.x, c.v4.x]))
-            .to_array();
+        // The lanes' `atan2` on two `wide` lanes: `solve_into`'s bits.
+        let [theta3, theta4] = atan2(
+            Pair,
+            wide::f64x2::new([c.v3.y, c.v4.y]),
+            wide::f64x2::new([c.v3.x, c.v4.x]),
+        )
+        .to_array();
         Ok(Configuration {
             theta2,
             theta3,
@@ -663,10 +668,10 @@ impl FourBar {
     }
 
     /// The batch kernel of [`solve_into`](Self::solve_into) on slices of
-    /// one length: [`SOLVE_LANES`] angles at a time in structure-of-arrays
-    /// form (`sin`/`cos` from `libm` per lane, the loop closure, both
-    /// `atan2` across the lanes, without branches), giving the same bits as
-    /// [`solve`](Self::solve).
+    /// one length: the loop closure and both `atan2` on SIMD lanes picked
+    /// at run time ([`pulp`]; `sin` and `cos` from `libm` lane by lane),
+    /// without branches, giving the bits of [`solve`](Self::solve) (every
+    /// lane operation is the scalar operation; module [`crate::simd`]).
     /// Returns how many closed.
     fn solve_chunk(
         &self,
@@ -676,60 +681,14 @@ impl FourBar {
         theta4: &mut [f64],
         valid: &mut [bool],
     ) -> usize {
-        const L: usize = SOLVE_LANES;
-        let sign = mode.sign();
-        let mut count = 0;
-        let blocks = theta2s
-            .chunks_exact(L)
-            .zip(theta3.chunks_exact_mut(L))
-            .zip(theta4.chunks_exact_mut(L))
-            .zip(valid.chunks_exact_mut(L));
-        for (((t, a), b), v) in blocks {
-            // `sin` and `cos` from `libm`, lane by lane, as `solve` takes
-            // them (the same bits; a SIMD polynomial on one lane made the
-            // single solve slower than `libm`).
-            let mut sin = [0.0; L];
-            let mut cos = [0.0; L];
-            for k in 0..L {
-                (sin[k], cos[k]) = libm::sincos(t[k]);
-            }
-            let (mut y3, mut x3, mut y4, mut x4) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
-            let mut ok = [false; L];
-            for k in 0..L {
-                let l = self.loop_vectors(cos[k], sin[k], sign);
-                // The checks of `close`, as one flag (NaN fails them).
-                ok[k] = t[k].abs() <= Self::MAX_ANGLE && l.heron >= -l.tol && !l.degenerate();
-                (y3[k], x3[k], y4[k], x4[k]) = (l.v3.y, l.v3.x, l.v4.y, l.v4.x);
-            }
-            let a3 = SolveLanes::new(y3).atan2(SolveLanes::new(x3)).to_array();
-            let a4 = SolveLanes::new(y4).atan2(SolveLanes::new(x4)).to_array();
-            for k in 0..L {
-                (a[k], b[k]) = if ok[k] {
-                    (a3[k], a4[k])
-                } else {
-                    (f64::NAN, f64::NAN)
-                };
-                v[k] = ok[k];
-                count += usize::from(ok[k]);
-            }
-        }
-        let done = theta2s.len() / L * L;
-        for (i, &t) in theta2s.iter().enumerate().skip(done) {
-            match self.solve(t, mode) {
-                Ok(c) => {
-                    theta3[i] = c.theta3;
-                    theta4[i] = c.theta4;
-                    valid[i] = true;
-                    count += 1;
-                }
-                Err(_) => {
-                    theta3[i] = f64::NAN;
-                    theta4[i] = f64::NAN;
-                    valid[i] = false;
-                }
-            }
-        }
-        count
+        Arch::new().dispatch(SolveLanes {
+            fb: self,
+            theta2s,
+            mode,
+            theta3,
+            theta4,
+            valid,
+        })
     }
 
     /// The joint positions of a configuration of this linkage.
@@ -905,12 +864,162 @@ fn angle_error(theta2: f64) -> Error {
     }
 }
 
+/// The rounding band of Heron's product, per `big^2` (`close`).
+const LOOP_TOL: f64 = tolerance::ROUNDING_EPS * f64::EPSILON;
+
+/// [`FourBar::solve_chunk`] on the lanes of one instruction set.
+struct SolveLanes<'a> {
+    fb: &'a FourBar,
+    theta2s: &'a [f64],
+    mode: AssemblyMode,
+    theta3: &'a mut [f64],
+    theta4: &'a mut [f64],
+    valid: &'a mut [bool],
+}
+
+impl WithSimd for SolveLanes<'_> {
+    type Output = usize;
+
+    #[inline(always)]
+    fn with_simd<S: Simd>(self, s: S) -> usize {
+        let (fb, o) = (self.fb, Ops(s));
+        let n = S::F64_LANES;
+        let (zero, one, nan) = (o.sp(0.0), o.sp(1.0), o.sp(f64::NAN));
+        let (gx, gy, c_n) = (o.sp(fb.g_vec.x), o.sp(fb.g_vec.y), o.sp(fb.c_n));
+        let (sum, diff, sq_diff) = (o.sp(fb.sum_n), o.sp(fb.diff_n), o.sp(fb.sq_diff_n));
+        let (sign, loop_tol) = (o.sp(self.mode.sign()), o.sp(LOOP_TOL));
+        let max_angle = o.sp(FourBar::MAX_ANGLE);
+        let (t_in, _) = S::as_simd_f64s(self.theta2s);
+        let (t3_out, _) = S::as_mut_simd_f64s(self.theta3);
+        let (t4_out, _) = S::as_mut_simd_f64s(self.theta4);
+        // One vector of scratch (at most 8 lanes of f64 on any CPU pulp
+        // knows; `as_simd` takes whole vectors only).
+        let mut buf = [[0.0f64; 8]; 2];
+        let mut count = 0;
+        for (c, (&t, (a, b))) in t_in
+            .iter()
+            .zip(t3_out.iter_mut().zip(t4_out.iter_mut()))
+            .enumerate()
+        {
+            let angles = &self.theta2s[c * n..(c + 1) * n];
+            for (k, &x) in angles.iter().enumerate() {
+                (buf[0][k], buf[1][k]) = libm::sincos(x);
+            }
+            let s2 = S::as_simd_f64s(&buf[0][..n]).0[0];
+            let c2 = S::as_simd_f64s(&buf[1][..n]).0[0];
+            // `loop_vectors`.
+            let dx = o.sub(gx, o.mul(c_n, c2));
+            let dy = o.sub(gy, o.mul(c_n, s2));
+            let r2 = o.add(o.mul(dx, dx), o.mul(dy, dy));
+            let sum2 = o.mul(sum, sum);
+            let heron = o.mul(o.sub(sum2, r2), o.sub(r2, o.mul(diff, diff)));
+            let big = o.add(sum2, r2);
+            let tol = o.mul(o.mul(loop_tol, big), big);
+            let root = s.sqrt_f64s(o.sel(o.gt(heron, zero), heron, zero));
+            let h = o.mul(sign, root);
+            let (nx, ny) = (o.mul(o.neg(dy), h), o.mul(dx, h));
+            let (k3, k4) = (o.add(sq_diff, r2), o.sub(sq_diff, r2));
+            let (x3, y3) = (o.add(o.mul(dx, k3), nx), o.add(o.mul(dy, k3), ny));
+            let (x4, y4) = (o.add(o.mul(dx, k4), nx), o.add(o.mul(dy, k4), ny));
+            // The checks of `close`, as one mask (NaN fails them).
+            let v3_zero = o.and(o.eq(x3, zero), o.eq(y3, zero));
+            let v4_zero = o.and(o.eq(x4, zero), o.eq(y4, zero));
+            let ok = o.and(
+                o.and(o.le(o.abs(t), max_angle), o.ge(heron, o.neg(tol))),
+                o.not(o.or(v3_zero, v4_zero)),
+            );
+            *a = o.sel(ok, atan2(o, y3, x3), nan);
+            *b = o.sel(ok, atan2(o, y4, x4), nan);
+            let (flags, _) = S::as_mut_simd_f64s(&mut buf[0][..n]);
+            flags[0] = o.sel(ok, one, zero);
+            let lanes = &mut self.valid[c * n..(c + 1) * n];
+            for (v, &f) in lanes.iter_mut().zip(&buf[0][..n]) {
+                *v = f != 0.0;
+                count += usize::from(*v);
+            }
+        }
+        let done = t_in.len() * n;
+        for (i, &t) in self.theta2s.iter().enumerate().skip(done) {
+            match fb.solve(t, self.mode) {
+                Ok(c) => {
+                    self.theta3[i] = c.theta3;
+                    self.theta4[i] = c.theta4;
+                    self.valid[i] = true;
+                    count += 1;
+                }
+                Err(_) => {
+                    self.theta3[i] = f64::NAN;
+                    self.theta4[i] = f64::NAN;
+                    self.valid[i] = false;
+                }
+            }
+        }
+        count
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn deg(x: f64) -> f64 {
         x.to_radians()
+    }
+
+    /// The batch kernel on every lane width (1, 2, 4, 8 and as dispatched)
+    /// gives `solve`'s bits, NaN where it fails, and the same count:
+    /// angles across several turns, at the input's limits and beyond
+    /// `MAX_ANGLE`, and lengths that leave a tail.
+    #[test]
+    fn solve_lanes_are_solve_on_every_width() {
+        let linkages = [
+            FourBar::new(3.0, 2.0, 1.5, 1.0).unwrap(),
+            FourBar::placed(4.0, 1.0, 3.0, 3.0, Point2::new(-2.0, 5.0), 2.5).unwrap(),
+            FourBar::new(1.0, 1.0, 2.0, 2.0).unwrap(),
+        ];
+        for fb in &linkages {
+            let mut ts: Vec<f64> = (0..1003).map(|k| -20.0 + 0.04 * k as f64).collect();
+            if let InputRange::Arc(arc) = fb.input_range() {
+                ts.extend([arc.start, arc.end, arc.start.next_up(), arc.end.next_down()]);
+            }
+            ts.extend([f64::NAN, f64::INFINITY, 2e9, -0.0, 0.0]);
+            for mode in AssemblyMode::BOTH {
+                let n = ts.len();
+                let run = |f: &dyn Fn(SolveLanes<'_>) -> usize| {
+                    let (mut t3, mut t4, mut ok) = (vec![0.0; n], vec![0.0; n], vec![false; n]);
+                    let count = f(SolveLanes {
+                        fb,
+                        theta2s: &ts,
+                        mode,
+                        theta3: &mut t3,
+                        theta4: &mut t4,
+                        valid: &mut ok,
+                    });
+                    (count, t3, t4, ok)
+                };
+                let widths: [&dyn Fn(SolveLanes<'_>) -> usize; 5] = [
+                    &|l| l.with_simd(pulp::Scalar),
+                    &|l| l.with_simd(pulp::Scalar128b),
+                    &|l| l.with_simd(pulp::Scalar256b),
+                    &|l| l.with_simd(pulp::Scalar512b),
+                    &|l| Arch::new().dispatch(l),
+                ];
+                for f in widths {
+                    let (count, t3, t4, ok) = run(f);
+                    assert_eq!(count, ok.iter().filter(|&&b| b).count());
+                    for (i, &t) in ts.iter().enumerate() {
+                        match fb.solve(t, mode) {
+                            Ok(c) => {
+                                assert!(ok[i], "{t}");
+                                assert_eq!(c.theta3.to_bits(), t3[i].to_bits(), "{t}");
+                                assert_eq!(c.theta4.to_bits(), t4[i].to_bits(), "{t}");
+                            }
+                            Err(_) => assert!(!ok[i] && t3[i].is_nan() && t4[i].is_nan(), "{t}"),
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]

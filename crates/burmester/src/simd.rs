@@ -1,0 +1,480 @@
+//! The lane operations shared by the SIMD kernels: the per-pivot kernel
+//! of the solution map ([`crate::design`]) and the batch position
+//! analysis ([`crate::linkage::FourBar::solve_into`]).
+//!
+//! Each is one IEEE operation of [`pulp`]'s lanes (or a select where the
+//! scalar code branches), inlined into the function `pulp` dispatches so
+//! that it compiles with the CPU's target features. On [`pulp::Scalar`]
+//! they are plain `f64` operations: the scalar paths call the same code,
+//! which is how a lane gives the scalar path's bits.
+
+use pulp::Simd;
+
+/// The lane operations, each inlined into the dispatched function so that
+/// it compiles with the CPU's target features.
+#[derive(Clone, Copy)]
+pub(crate) struct Ops<S>(pub(crate) S);
+
+/// A mask of lanes.
+pub(crate) type M<S> = <S as Simd>::m64s;
+/// A vector of lanes.
+pub(crate) type V<S> = <S as Simd>::f64s;
+
+impl<S: Simd> Ops<S> {
+    #[inline(always)]
+    pub(crate) fn sp(self, v: f64) -> V<S> {
+        self.0.splat_f64s(v)
+    }
+    #[inline(always)]
+    pub(crate) fn add(self, a: V<S>, b: V<S>) -> V<S> {
+        self.0.add_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn sub(self, a: V<S>, b: V<S>) -> V<S> {
+        self.0.sub_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn mul(self, a: V<S>, b: V<S>) -> V<S> {
+        self.0.mul_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn div(self, a: V<S>, b: V<S>) -> V<S> {
+        self.0.div_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn neg(self, a: V<S>) -> V<S> {
+        self.0.neg_f64s(a)
+    }
+    #[inline(always)]
+    pub(crate) fn abs(self, a: V<S>) -> V<S> {
+        self.0.abs_f64s(a)
+    }
+    #[inline(always)]
+    pub(crate) fn lt(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.less_than_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn gt(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.greater_than_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn le(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.less_than_or_equal_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn ge(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.greater_than_or_equal_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn eq(self, a: V<S>, b: V<S>) -> M<S> {
+        self.0.equal_f64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn and(self, a: M<S>, b: M<S>) -> M<S> {
+        self.0.and_m64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn or(self, a: M<S>, b: M<S>) -> M<S> {
+        self.0.or_m64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn xor(self, a: M<S>, b: M<S>) -> M<S> {
+        self.0.xor_m64s(a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn not(self, a: M<S>) -> M<S> {
+        self.0.not_m64s(a)
+    }
+    /// `m ? a : b` per lane.
+    #[inline(always)]
+    pub(crate) fn sel(self, m: M<S>, a: V<S>, b: V<S>) -> V<S> {
+        self.0.select_f64s(m, a, b)
+    }
+    /// The scalar path's `fmax` (`if a > b { a } else { b }`).
+    #[inline(always)]
+    pub(crate) fn fmax(self, a: V<S>, b: V<S>) -> V<S> {
+        self.sel(self.gt(a, b), a, b)
+    }
+    /// The scalar path's `fmin` (`if a < b { a } else { b }`).
+    #[inline(always)]
+    pub(crate) fn fmin(self, a: V<S>, b: V<S>) -> V<S> {
+        self.sel(self.lt(a, b), a, b)
+    }
+    #[inline(always)]
+    pub(crate) fn finite(self, a: V<S>) -> M<S> {
+        self.lt(self.abs(a), self.sp(f64::INFINITY))
+    }
+    /// `sqrt(x^2 + y^2)`, as nalgebra's `norm`.
+    #[inline(always)]
+    pub(crate) fn norm(self, x: V<S>, y: V<S>) -> V<S> {
+        self.0.sqrt_f64s(self.add(self.mul(x, x), self.mul(y, y)))
+    }
+    /// `r . v`.
+    #[inline(always)]
+    pub(crate) fn dot(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {
+        self.add(self.mul(rx, vx), self.mul(ry, vy))
+    }
+    /// `r x v`.
+    #[inline(always)]
+    pub(crate) fn cross(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {
+        self.sub(self.mul(rx, vy), self.mul(ry, vx))
+    }
+}
+
+/// The lane operations [`atan2`] is written against: those of [`Ops`] (on
+/// every lane width `pulp` dispatches to) and those of `wide::f64x2` (two
+/// lanes on the compiled target, for a single
+/// [`FourBar::solve`](crate::linkage::FourBar::solve) without a dispatch). Every one is an
+/// IEEE operation or a select, so both give the same bits.
+pub(crate) trait Lanes: Copy {
+    /// A vector of lanes.
+    type F: Copy;
+    /// A mask of lanes.
+    type M: Copy;
+    fn sp(self, v: f64) -> Self::F;
+    fn add(self, a: Self::F, b: Self::F) -> Self::F;
+    fn sub(self, a: Self::F, b: Self::F) -> Self::F;
+    fn mul(self, a: Self::F, b: Self::F) -> Self::F;
+    fn div(self, a: Self::F, b: Self::F) -> Self::F;
+    fn neg(self, a: Self::F) -> Self::F;
+    fn abs(self, a: Self::F) -> Self::F;
+    fn gt(self, a: Self::F, b: Self::F) -> Self::M;
+    fn ge(self, a: Self::F, b: Self::F) -> Self::M;
+    fn le(self, a: Self::F, b: Self::F) -> Self::M;
+    fn eq(self, a: Self::F, b: Self::F) -> Self::M;
+    fn and(self, a: Self::M, b: Self::M) -> Self::M;
+    /// `m ? a : b` per lane.
+    fn sel(self, m: Self::M, a: Self::F, b: Self::F) -> Self::F;
+    /// Whether the sign bit is set (`-0.0` included).
+    fn sign_negative(self, a: Self::F) -> Self::M;
+}
+
+macro_rules! forward {
+    ($($name:ident($($arg:ident: $t:ident),*) -> $r:ident;)*) => {
+        $(
+            #[inline(always)]
+            fn $name(self, $($arg: Self::$t),*) -> Self::$r {
+                Ops::$name(self, $($arg),*)
+            }
+        )*
+    };
+}
+
+impl<S: Simd> Lanes for Ops<S> {
+    type F = V<S>;
+    type M = M<S>;
+    #[inline(always)]
+    fn sp(self, v: f64) -> V<S> {
+        Ops::sp(self, v)
+    }
+    forward! {
+        add(a: F, b: F) -> F;
+        sub(a: F, b: F) -> F;
+        mul(a: F, b: F) -> F;
+        div(a: F, b: F) -> F;
+        neg(a: F) -> F;
+        abs(a: F) -> F;
+        gt(a: F, b: F) -> M;
+        ge(a: F, b: F) -> M;
+        le(a: F, b: F) -> M;
+        eq(a: F, b: F) -> M;
+        and(a: M, b: M) -> M;
+        sel(m: M, a: F, b: F) -> F;
+    }
+    /// Whether the sign bit is set (`-0.0` included).
+    #[inline(always)]
+    fn sign_negative(self, a: V<S>) -> M<S> {
+        let s = self.0;
+        let bits = s.transmute_i64s_u64s(s.transmute_u64s_f64s(a));
+        s.less_than_i64s(bits, s.splat_i64s(0))
+    }
+}
+
+/// Two lanes of `wide` on the compiled target (SSE2 on x86-64, NEON on
+/// aarch64): the single [`FourBar::solve`](crate::linkage::FourBar::solve).
+#[derive(Clone, Copy)]
+pub(crate) struct Pair;
+
+impl Lanes for Pair {
+    type F = wide::f64x2;
+    type M = wide::f64x2;
+    #[inline(always)]
+    fn sp(self, v: f64) -> wide::f64x2 {
+        wide::f64x2::splat(v)
+    }
+    #[inline(always)]
+    fn add(self, a: Self::F, b: Self::F) -> Self::F {
+        a + b
+    }
+    #[inline(always)]
+    fn sub(self, a: Self::F, b: Self::F) -> Self::F {
+        a - b
+    }
+    #[inline(always)]
+    fn mul(self, a: Self::F, b: Self::F) -> Self::F {
+        a * b
+    }
+    #[inline(always)]
+    fn div(self, a: Self::F, b: Self::F) -> Self::F {
+        a / b
+    }
+    #[inline(always)]
+    fn neg(self, a: Self::F) -> Self::F {
+        -a
+    }
+    #[inline(always)]
+    fn abs(self, a: Self::F) -> Self::F {
+        a.abs()
+    }
+    #[inline(always)]
+    fn gt(self, a: Self::F, b: Self::F) -> Self::M {
+        a.simd_gt(b)
+    }
+    #[inline(always)]
+    fn ge(self, a: Self::F, b: Self::F) -> Self::M {
+        a.simd_ge(b)
+    }
+    #[inline(always)]
+    fn le(self, a: Self::F, b: Self::F) -> Self::M {
+        a.simd_le(b)
+    }
+    #[inline(always)]
+    fn eq(self, a: Self::F, b: Self::F) -> Self::M {
+        a.simd_eq(b)
+    }
+    #[inline(always)]
+    fn and(self, a: Self::M, b: Self::M) -> Self::M {
+        a & b
+    }
+    #[inline(always)]
+    fn sel(self, m: Self::M, a: Self::F, b: Self::F) -> Self::F {
+        m.select(a, b)
+    }
+    #[inline(always)]
+    fn sign_negative(self, a: Self::F) -> Self::M {
+        a.is_sign_negative()
+    }
+}
+
+/// `atan2(y, x)` on each lane of `o`: the algorithm of `wide`'s `atan2` (Agner
+/// Fog's vector class library, Cephes' rational approximation in three
+/// ranges), with every `mul_add` an unfused multiply and add, so that
+/// it gives the same bits on every lane width and every CPU (`wide`
+/// fuses where the target has FMA). Within 2 ulp of the exact angle.
+#[inline(always)]
+pub(crate) fn atan2<L: Lanes>(o: L, y: L::F, x: L::F) -> L::F {
+    use core::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, SQRT_2};
+    const MORE_BITS: f64 = 6.123233995736766E-17;
+    const P: [f64; 5] = [
+        -64.85021904942025,
+        -122.88666844901361,
+        -75.00855792314705,
+        -16.157537187333652,
+        -0.8750608600031904,
+    ];
+    const Q: [f64; 5] = [
+        194.5506571482614,
+        485.3903996359137,
+        432.88106049129027,
+        165.02700983169885,
+        24.858464901423062,
+    ];
+    let (zero, one) = (o.sp(0.0), o.sp(1.0));
+    // `a * b + c`, unfused.
+    let ma = |a: L::F, b: L::F, c: L::F| o.add(o.mul(a, b), c);
+    // Into the first octant.
+    let (x1, y1) = (o.abs(x), o.abs(y));
+    let swap = o.gt(y1, x1);
+    let mut x2 = o.sel(swap, y1, x1);
+    let mut y2 = o.sel(swap, x1, y1);
+    // Both infinite: the octant's diagonal (`wide` masks them to 1.0).
+    let inf = o.sp(f64::INFINITY);
+    let both = o.and(o.eq(x1, inf), o.eq(y1, inf));
+    x2 = o.sel(both, one, x2);
+    y2 = o.sel(both, one, y2);
+    // x = y = 0 gives NaN here, replaced below.
+    let t = o.div(y2, x2);
+    let notbig = o.le(t, o.sp(SQRT_2 + 1.0));
+    let notsmall = o.ge(t, o.sp(0.66));
+    let s = o.sel(
+        notsmall,
+        o.sel(notbig, o.sp(FRAC_PI_4), o.sp(FRAC_PI_2)),
+        zero,
+    );
+    let fac = o.sel(
+        notsmall,
+        o.sel(notbig, o.sp(MORE_BITS * 0.5), o.sp(MORE_BITS)),
+        zero,
+    );
+    // small: z = t / 1; medium: (t - 1) / (t + 1); big: -1 / t.
+    let a = o.sel(notbig, t, zero);
+    let a = o.sel(notsmall, o.sub(a, one), a);
+    let b = o.sel(notbig, one, zero);
+    let b = o.sel(notsmall, o.add(b, t), b);
+    let z = o.div(a, b);
+    let zz = o.mul(z, z);
+    let [p0, p1, p2, p3, p4] = P.map(|c| o.sp(c));
+    let [q0, q1, q2, q3, q4] = Q.map(|c| o.sp(c));
+    let (z2, z4) = {
+        let z2 = o.mul(zz, zz);
+        (z2, o.mul(z2, z2))
+    };
+    let px = o.add(ma(ma(p3, zz, p2), z2, ma(p1, zz, p0)), o.mul(p4, z4));
+    let qx = ma(z2, ma(zz, q3, q2), ma(z4, o.add(q4, zz), ma(zz, q1, q0)));
+    let re = ma(o.div(px, qx), o.mul(z, zz), z);
+    let re = o.add(re, o.add(s, fac));
+    // Back into place.
+    let re = o.sel(swap, o.sub(o.sp(FRAC_PI_2), re), re);
+    let re = o.sel(o.and(o.eq(x, zero), o.eq(y, zero)), zero, re);
+    let re = o.sel(o.sign_negative(x), o.sub(o.sp(PI), re), re);
+    o.sel(o.sign_negative(y), o.neg(re), re)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Ops, Pair, V, atan2};
+    use pulp::Simd;
+
+    /// Units in the last place between two finite doubles of one sign.
+    fn ulps(a: f64, b: f64) -> u64 {
+        (a.to_bits() as i64 - b.to_bits() as i64).unsigned_abs()
+    }
+
+    fn inputs() -> Vec<(f64, f64)> {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut v = Vec::new();
+        for _ in 0..200_000 {
+            let u = |r: u64| (r >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            v.push((10.0 * u(next()), 10.0 * u(next())));
+            // Any finite magnitudes, both signs.
+            let e = |r: u64| f64::from_bits(r & 0x7fef_ffff_ffff_ffff);
+            v.push((e(next()), e(next())));
+        }
+        // Each range of the reduction and its edges, on both sides of the
+        // swap (t = 0.66, 1 + sqrt 2, 1).
+        for t in [
+            0.66,
+            0.66f64.next_down(),
+            2.414213562373095,
+            2.4142135623730954,
+            1.0,
+        ] {
+            for s in [1.0, -1.0] {
+                v.push((s * t, 1.0));
+                v.push((1.0, s * t));
+            }
+        }
+        v
+    }
+
+    #[test]
+    fn atan2_is_within_two_ulp_of_libm() {
+        let o = Ops(pulp::Scalar);
+        for (y, x) in inputs() {
+            let (got, want) = (atan2(o, y, x), libm::atan2(y, x));
+            if want.abs() < 1e-300 {
+                // Underflowing quotients: both at the smallest scales.
+                assert!(
+                    (got - want).abs() <= 1e-300,
+                    "atan2({y}, {x}) = {got}, not {want}"
+                );
+                continue;
+            }
+            assert_eq!(got.is_sign_negative(), want.is_sign_negative(), "{y} {x}");
+            assert!(ulps(got, want) <= 2, "atan2({y}, {x}) = {got}, not {want}");
+        }
+    }
+
+    #[test]
+    fn atan2_has_ieee_special_values() {
+        use core::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+        let o = Ops(pulp::Scalar);
+        let inf = f64::INFINITY;
+        let cases = [
+            (0.0, 0.0, 0.0),
+            (-0.0, 0.0, -0.0),
+            (0.0, -0.0, PI),
+            (-0.0, -0.0, -PI),
+            (1.0, 0.0, FRAC_PI_2),
+            (-1.0, 0.0, -FRAC_PI_2),
+            (0.0, -1.0, PI),
+            (-0.0, -1.0, -PI),
+            (inf, inf, FRAC_PI_4),
+            (-inf, inf, -FRAC_PI_4),
+            (inf, -inf, 3.0 * FRAC_PI_4),
+            (1.0, inf, 0.0),
+            (1.0, -inf, PI),
+            (inf, 1.0, FRAC_PI_2),
+        ];
+        for (y, x, want) in cases {
+            let got = atan2(o, y, x);
+            assert!(ulps(got, want) <= 1, "atan2({y}, {x}) = {got}, not {want}");
+        }
+        assert!(atan2(o, f64::NAN, 1.0).is_nan() && atan2(o, 1.0, f64::NAN).is_nan());
+    }
+
+    /// `wide`'s two lanes (the single solve) give the scalar bits.
+    #[test]
+    fn atan2_on_wide_pairs_is_the_scalar_bits() {
+        let o = Ops(pulp::Scalar);
+        let mut v = inputs();
+        for a in [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            f64::INFINITY,
+            -f64::INFINITY,
+            f64::NAN,
+        ] {
+            for b in [0.0, -0.0, 2.0, -2.0, f64::INFINITY, -f64::INFINITY] {
+                v.push((a, b));
+            }
+        }
+        for w in v.chunks_exact(2) {
+            let [(y0, x0), (y1, x1)] = [w[0], w[1]];
+            let pair = atan2(Pair, wide::f64x2::new([y0, y1]), wide::f64x2::new([x0, x1]));
+            for (got, (y, x)) in pair.to_array().into_iter().zip([(y0, x0), (y1, x1)]) {
+                let want = atan2(o, y, x);
+                assert!(
+                    got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                    "atan2({y}, {x}): {got} on a pair, {want} on a scalar"
+                );
+            }
+        }
+    }
+
+    /// Every lane width gives the scalar bits.
+    #[test]
+    fn atan2_lanes_are_the_scalar_bits() {
+        fn run<S: Simd>(s: S, ys: &[f64], xs: &[f64]) -> Vec<f64> {
+            let o = Ops(s);
+            let (yv, _) = S::as_simd_f64s(ys);
+            let (xv, _) = S::as_simd_f64s(xs);
+            let mut out = vec![0.0; ys.len()];
+            let (ov, _) = S::as_mut_simd_f64s(&mut out);
+            for ((r, &y), &x) in ov.iter_mut().zip(yv).zip(xv) {
+                let v: V<S> = atan2(o, y, x);
+                *r = v;
+            }
+            out
+        }
+        let (ys, xs): (Vec<f64>, Vec<f64>) = inputs().into_iter().take(4096).unzip();
+        let scalar = run(pulp::Scalar, &ys, &xs);
+        for lanes in [
+            run(pulp::Scalar128b, &ys, &xs),
+            run(pulp::Scalar256b, &ys, &xs),
+            run(pulp::Scalar512b, &ys, &xs),
+        ] {
+            for (a, b) in scalar.iter().zip(&lanes) {
+                assert_eq!(a.to_bits(), b.to_bits());
+            }
+        }
+    }
+}
