@@ -307,11 +307,17 @@ fn candidates(sub: &Motion) -> Vec<Vector2<f64>> {
 
 /// Newton's method on the four circle equations `a_k(G) . z = b_k(G)`
 /// (k = 2..5) in `(G, z)` (local), from the center `g0` and the circle point
-/// of its best pair of rows. `None` when it does not converge.
+/// of its best pair of rows. When the steps never pass the step test
+/// (a center tens of thousands of task sizes away, nearly a slider, whose
+/// position rounding leaves loose along one direction: the steps wander at
+/// rounding level) the iterate with the smallest equation residual is
+/// returned, and the caller keeps it only if its crank lengths agree to
+/// [`BURMESTER_RESIDUAL`]. `None` when a step is not finite.
 fn newton(m: &Motion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f64>)> {
     let mut g = g0;
     let mut z = m.form.solve(g, &[1, 2, 3, 4]).ok()?;
     let mut last = f64::INFINITY;
+    let mut best = (f64::INFINITY, g, z);
     for _ in 0..60 {
         let mut jac = Matrix4::zeros();
         let mut rhs = Vector4::zeros();
@@ -323,6 +329,10 @@ fn newton(m: &Motion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f64>)> 
             jac[(r, 1)] = dg.y;
             jac[(r, 2)] = a.x;
             jac[(r, 3)] = a.y;
+        }
+        let r = rhs.norm();
+        if r < best.0 {
+            best = (r, g, z);
         }
         let step = jac.full_piv_lu().solve(&rhs)?;
         if !step.iter().all(|v| v.is_finite()) {
@@ -337,7 +347,7 @@ fn newton(m: &Motion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f64>)> 
         }
         last = n;
     }
-    None
+    Some((best.1, best.2))
 }
 
 #[cfg(test)]
