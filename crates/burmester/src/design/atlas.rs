@@ -35,7 +35,7 @@ use core::sync::atomic::{AtomicUsize, Ordering};
 use nalgebra::Point2;
 use rayon::prelude::*;
 
-use crate::design::kernel::{CosBand, DrivingKernel, RowOut};
+use crate::design::kernel::{CosBand, DrivingKernel, RowOut, RowPre};
 use crate::design::map::Sampler;
 use crate::design::rank::tie_order;
 use crate::design::{Constraints, DesignLimits};
@@ -188,16 +188,17 @@ impl Task {
         let mut cells = try_vec("a pivot atlas", total, AtlasCell::INVALID)?;
         let done = AtomicUsize::new(0);
         let xs = DrivingKernel::padded_xs(driving);
-        cells.par_iter_mut().enumerate().for_each_init(
-            || (vec![false; driving.nx()], RowOut::new(&xs)),
-            |(row, out), (k, cell)| {
+        cells.par_chunks_mut(CHUNK).enumerate().for_each_init(
+            || Scratch::new(&xs, driving.nx()),
+            |scratch, (m, chunk)| {
                 if control.is_cancelled() {
                     return;
                 }
-                let (j, i) = (rows.start + k / nx, k % nx);
-                let scratch = Scratch { xs: &xs, row, out };
-                *cell = atlas_cell(self, &sampler, driven.point(i, j), driving, scratch);
-                let d = done.fetch_add(1, Ordering::Relaxed) + 1;
+                let centers: Vec<Point2<f64>> = (m * CHUNK..m * CHUNK + chunk.len())
+                    .map(|k| driven.point(k % nx, rows.start + k / nx))
+                    .collect();
+                atlas_chunk(self, &sampler, &centers, driving, scratch, chunk);
+                let d = done.fetch_add(chunk.len(), Ordering::Relaxed) + chunk.len();
                 control.report(d, total);
             },
         );
@@ -209,67 +210,166 @@ impl Task {
     }
 }
 
-/// A worker's buffers for [`atlas_cell`].
+/// Driven centers per parallel task: the driving candidates' lanes of a
+/// row ([`RowPre`]) are computed once for them all.
+const CHUNK: usize = 16;
+
+/// A worker's buffers for [`atlas_chunk`].
 struct Scratch<'a> {
     /// The driving grid's padded abscissae (`DrivingKernel::padded_xs`).
     xs: &'a [f64],
-    /// The branch flags of a row.
-    row: &'a mut [bool],
-    /// The kernel's lanes for a row.
-    out: &'a mut RowOut,
+    /// The groups of a row some center of the chunk needs.
+    union: Vec<bool>,
+    /// The driving candidates' lanes of a row.
+    pre: RowPre,
+    /// The kernel's lanes of a row for one center.
+    out: RowOut,
 }
 
-/// The cell of driven center `c0`.
-fn atlas_cell(
+impl<'a> Scratch<'a> {
+    fn new(xs: &'a [f64], nx: usize) -> Self {
+        Scratch {
+            xs,
+            union: vec![false; nx],
+            pre: RowPre::new(xs),
+            out: RowOut::new(xs),
+        }
+    }
+}
+
+/// The reduction of one driven center as the driving rows go by.
+struct Cell<'a> {
+    filemon: &'a Filemon,
+    driven: crate::synthesis::Dyad,
+    c: [Point2<f64>; 3],
+    branch: BranchRows<'a>,
+    kernel: Option<DrivingKernel<'a>>,
+    /// The branch flags of the current row.
+    row: Vec<bool>,
+    /// Whether the current row has a branch-free sample.
+    active: bool,
+    /// The acceptable samples within `RANK_TIE` of the best score so far:
+    /// exactly the first run of `best_pivots`' ranking once all are seen.
+    top: f32,
+    run: Vec<(usize, f32)>,
+    /// The scores that may reach the best run (below it by more than
+    /// `TOP_SLACK`, a score cannot tie after its rounding to f32).
+    reach: CosBand,
+    cell: AtlasCell,
+}
+
+/// The cells of driven centers `centers`, into `cells`: each as one solution
+/// map of the driving grid reduced (module docs), the rows of the driving
+/// grid taken in order for every center, the lanes of the driving
+/// candidates computed once per row for all of them.
+fn atlas_chunk(
     task: &Task,
     sampler: &Sampler<'_>,
-    c0: Point2<f64>,
+    centers: &[Point2<f64>],
     driving: &Grid,
-    scratch: Scratch<'_>,
-) -> AtlasCell {
-    let Scratch { xs, row, out } = scratch;
-    let Ok(filemon) = task.filemon(c0) else {
-        return AtlasCell::INVALID;
-    };
-    let driven = filemon.driven();
-    let c = sampler.fixed_pivots(&driven);
-    let branch = BranchRows::new(&filemon, driving);
-    let mut cell = AtlasCell {
-        valid: true,
-        ..AtlasCell::INVALID
-    };
-    if !branch.any() {
-        return cell;
-    }
-    // The acceptable samples within RANK_TIE of the best score so far:
-    // exactly the first run of `best_pivots`' ranking once all are seen.
-    let mut top = f32::NEG_INFINITY;
-    let mut run: Vec<(usize, f32)> = Vec::new();
-    let nx = driving.nx();
-    let kernel = DrivingKernel::new(sampler, driven, &c);
-    // The transmission limit, and the scores that may reach the best run
-    // (below it by more than TOP_SLACK, a score cannot tie after its
-    // rounding to f32).
+    scratch: &mut Scratch<'_>,
+    cells: &mut [AtlasCell],
+) {
+    let filemons: Vec<Option<Filemon>> = centers.iter().map(|&c0| task.filemon(c0).ok()).collect();
+    // The transmission limit.
     let limit = CosBand::new(sampler.judge.limits().min_transmission);
-    let mut reach = CosBand::new(f64::NEG_INFINITY);
-    for j in 0..driving.ny() {
-        branch.row(j, row);
-        if !row.contains(&true) {
+    let mut live: Vec<(usize, Cell<'_>)> = Vec::new();
+    for (m, f) in filemons.iter().enumerate() {
+        let Some(filemon) = f else {
+            cells[m] = AtlasCell::INVALID;
+            continue;
+        };
+        let driven = filemon.driven();
+        let c = sampler.fixed_pivots(&driven);
+        let branch = BranchRows::new(filemon, driving);
+        let cell = AtlasCell {
+            valid: true,
+            ..AtlasCell::INVALID
+        };
+        if !branch.any() {
+            cells[m] = cell;
             continue;
         }
-        if let Some(k) = &kernel {
-            k.row_where(driving.y(j), xs, row, out);
+        live.push((
+            m,
+            Cell {
+                filemon,
+                driven,
+                c,
+                branch,
+                kernel: DrivingKernel::new(sampler, driven, &c),
+                row: vec![false; driving.nx()],
+                active: false,
+                top: f32::NEG_INFINITY,
+                run: Vec::new(),
+                reach: CosBand::new(f64::NEG_INFINITY),
+                cell,
+            },
+        ));
+    }
+    let Scratch {
+        xs,
+        union,
+        pre,
+        out,
+    } = scratch;
+    let nx = driving.nx();
+    for j in 0..driving.ny() {
+        union.fill(false);
+        let mut any = false;
+        for (_, cell) in &mut live {
+            cell.branch.row(j, &mut cell.row);
+            cell.active = cell.row.contains(&true);
+            if cell.active {
+                any = true;
+                for (u, &f) in union.iter_mut().zip(&cell.row) {
+                    *u |= f;
+                }
+            }
         }
-        for (i, _) in row.iter().enumerate().filter(|(_, f)| **f) {
+        if !any {
+            continue;
+        }
+        let y = driving.y(j);
+        // Every center's kernel has the task's constants: any one fills
+        // the driving candidates' lanes.
+        if let Some(k) = live.iter().find_map(|(_, c)| c.kernel.as_ref()) {
+            k.pre_row(y, xs, union, pre);
+        }
+        for (_, cell) in live.iter_mut().filter(|(_, c)| c.active) {
+            if let Some(k) = &cell.kernel {
+                k.row_where(y, xs, &cell.row, pre, out);
+            }
+            cell.take_row(sampler, driving, j, nx, out, &limit);
+        }
+    }
+    for (m, mut cell) in live {
+        cells[m] = cell.finish(task, sampler, driving);
+    }
+}
+
+impl Cell<'_> {
+    /// The branch-free samples of row `j` (the kernel's lanes in `out`).
+    fn take_row(
+        &mut self,
+        sampler: &Sampler<'_>,
+        driving: &Grid,
+        j: usize,
+        nx: usize,
+        out: &RowOut,
+        limit: &CosBand,
+    ) {
+        for (i, _) in self.row.iter().enumerate().filter(|(_, f)| **f) {
             let p = driving.point(i, j);
             // Acceptable samples with their score where it may reach the
             // run of the best (elsewhere no `acos` is taken).
-            let seen = match &kernel {
+            let reach = &self.reach;
+            let seen = match &self.kernel {
                 Some(k) => k
-                    .judge_for_atlas(out, i, p, &limit)
+                    .judge_for_atlas(out, i, p, limit)
                     .map(|a| a.map(|w| reach.may_reach(w).then(|| w.acos() as f32))),
                 None => {
-                    let s = sampler.driving_sample(p, driven, &c, true);
+                    let s = sampler.driving_sample(p, self.driven, &self.c, true);
                     s.valid
                         .then_some(s.acceptable.then_some(Some(s.min_transmission_rad)))
                 }
@@ -277,40 +377,47 @@ fn atlas_cell(
             let Some(acceptable) = seen else {
                 continue;
             };
-            cell.branch_free += 1;
+            self.cell.branch_free += 1;
             let Some(score) = acceptable else {
                 continue;
             };
-            cell.count += 1;
+            self.cell.count += 1;
             let Some(score) = score.filter(|s| !s.is_nan()) else {
                 continue;
             };
-            if score > top {
-                top = score;
-                run.retain(|&(_, v)| tied(top, v));
-                reach = CosBand::new(f64::from(top) - tolerance::RANK_TIE - TOP_SLACK);
+            if score > self.top {
+                self.top = score;
+                let top = self.top;
+                self.run.retain(|&(_, v)| tied(top, v));
+                self.reach = CosBand::new(f64::from(top) - tolerance::RANK_TIE - TOP_SLACK);
             }
-            if tied(top, score) {
-                run.push((j * nx + i, score));
+            if tied(self.top, score) {
+                self.run.push((j * nx + i, score));
             }
         }
     }
-    cell.best = best(task, &filemon, sampler, driving, run).or_else(|| {
-        // No candidate of the first run has a linkage (not seen in
-        // practice): rank every acceptable sample, as `best_pivots` does.
-        (cell.count > 0)
-            .then(|| {
-                best(
-                    task,
-                    &filemon,
-                    sampler,
-                    driving,
-                    all_acceptable(&filemon, sampler, driving),
-                )
-            })
-            .flatten()
-    });
-    cell
+
+    /// The cell once every row is seen.
+    fn finish(&mut self, task: &Task, sampler: &Sampler<'_>, driving: &Grid) -> AtlasCell {
+        let mut cell = self.cell;
+        let run = core::mem::take(&mut self.run);
+        cell.best = best(task, self.filemon, sampler, driving, run).or_else(|| {
+            // No candidate of the first run has a linkage (not seen in
+            // practice): rank every acceptable sample, as `best_pivots` does.
+            (cell.count > 0)
+                .then(|| {
+                    best(
+                        task,
+                        self.filemon,
+                        sampler,
+                        driving,
+                        all_acceptable(self.filemon, sampler, driving),
+                    )
+                })
+                .flatten()
+        });
+        cell
+    }
 }
 
 /// Radians below the best run's score under which a sample's score (an

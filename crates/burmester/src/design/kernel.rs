@@ -15,7 +15,11 @@
 //! groups of lanes that hold a branch-free sample, without the Grashof
 //! class and the size, and with a flag for the samples that may meet the
 //! limits; it decides the transmission limit by a band on the worst
-//! `|cos mu|` ([`CosBand`]), taking the `acos` only near the limit.
+//! `|cos mu|` ([`CosBand`]), taking the `acos` only near the limit. What
+//! depends on the driving candidate alone (the circle point, the crank at
+//! the three poses, its length and pseudo-angles: [`RowPre`]) it computes
+//! once per row for a chunk of driven centers
+//! ([`DrivingKernel::pre_row`]), and each center's row reads it.
 //!
 //! The lanes come from [`pulp`], which picks at run time the widest
 //! instruction set the CPU has (AVX2 on x86-64-v3, scalar lanes
@@ -247,23 +251,97 @@ impl<'s> DrivingKernel<'s> {
             y,
             xs,
             needed: None,
+            pre: None,
             out,
         });
     }
 
     /// [`row`](Self::row) but only for the lanes of groups that hold a
     /// sample where `needed` (one flag per column) is true (the others keep
-    /// what they held), and only what
-    /// [`judge_for_atlas`](Self::judge_for_atlas) reads.
+    /// what they held), only what
+    /// [`judge_for_atlas`](Self::judge_for_atlas) reads, and with the
+    /// driving candidates' lanes taken from `pre` ([`pre_row`](Self::pre_row)
+    /// of the same row, for at least the groups `needed` asks for): the
+    /// same bits as computing them here.
     #[inline]
-    pub(crate) fn row_where(&self, y: f64, xs: &[f64], needed: &[bool], out: &mut RowOut) {
+    pub(crate) fn row_where(
+        &self,
+        y: f64,
+        xs: &[f64],
+        needed: &[bool],
+        pre: &RowPre,
+        out: &mut RowOut,
+    ) {
         Arch::new().dispatch(Lanes {
             k: self,
             y,
             xs,
             needed: Some(needed),
+            pre: Some(pre),
             out,
         });
+    }
+
+    /// The lanes of the row at ordinate `y` that depend on the driving
+    /// candidate only, for the groups with a sample where `needed` is
+    /// true, into `pre`. They use only the task's constants, so the
+    /// kernel of any driven dyad of one [`Sampler`] gives the same `pre`.
+    #[inline]
+    pub(crate) fn pre_row(&self, y: f64, xs: &[f64], needed: &[bool], pre: &mut RowPre) {
+        Arch::new().dispatch(PreLanes {
+            k: self,
+            y,
+            xs,
+            needed,
+            pre,
+        });
+    }
+
+    /// The driving candidates' lanes at abscissae `x`, ordinate `y`: the
+    /// circle point by the closed form (`circle_point_fast`), the crank at
+    /// the three poses (`Motion::first_to`), its length and pseudo-angles.
+    #[inline(always)]
+    fn driving_lanes<S: Simd>(&self, o: Ops<S>, x: V<S>, y: f64) -> Pre<S> {
+        let zero = o.sp(0.0);
+        let (ox, oy) = (o.sp(self.origin[0]), o.sp(self.origin[1]));
+        let scale = o.sp(self.scale);
+        let (q13x, q13y) = (o.sp(self.q13[0]), o.sp(self.q13[1]));
+        let (c12, s12) = (o.sp(self.half12.0), o.sp(self.half12.1));
+        let (c13, s13) = (o.sp(self.half13.0), o.sp(self.half13.1));
+        let [(r1c, r1s), (r2c, r2s)] = self.rot.map(|(c, s)| (o.sp(c), o.sp(s)));
+        let [t1, t2] = self.shift.map(|t| t.map(|v| o.sp(v)));
+        let yy = o.sp((y - self.origin[1]) / self.scale);
+        let y = o.sp(y);
+        let yx = o.div(o.sub(x, ox), scale);
+        let ux = o.sub(o.mul(c12, yx), o.mul(s12, yy));
+        let uy = o.add(o.mul(s12, yx), o.mul(c12, yy));
+        let (wx, wy) = (o.sub(yx, q13x), o.sub(yy, q13y));
+        let vx = o.sub(o.mul(c13, wx), o.mul(s13, wy));
+        let vy = o.add(o.mul(s13, wx), o.mul(c13, wy));
+        let den = o.cross(ux, uy, vx, vy);
+        let kappa = o.cross(q13x, q13y, vx, vy);
+        let t = o.mul(o.div(kappa, den), scale);
+        let qx = o.add(ox, o.mul(ux, t));
+        let qy = o.add(oy, o.mul(uy, t));
+        let has_q = o.and(o.and(o.finite(qx), o.finite(qy)), o.not(o.eq(den, zero)));
+        // The moving pivot at poses 2 and 3, and the crank at the three
+        // poses.
+        let a1x = o.add(o.sub(o.mul(r1c, qx), o.mul(r1s, qy)), t1[0]);
+        let a1y = o.add(o.add(o.mul(r1s, qx), o.mul(r1c, qy)), t1[1]);
+        let a2x = o.add(o.sub(o.mul(r2c, qx), o.mul(r2s, qy)), t2[0]);
+        let a2y = o.add(o.add(o.mul(r2s, qx), o.mul(r2c, qy)), t2[1]);
+        let (e0x, e0y) = (o.sub(qx, x), o.sub(qy, y));
+        let (e1x, e1y) = (o.sub(a1x, x), o.sub(a1y, y));
+        let (e2x, e2y) = (o.sub(a2x, x), o.sub(a2y, y));
+        Pre {
+            qx,
+            qy,
+            has_q,
+            e: [e0x, e0y, e1x, e1y, e2x, e2y],
+            l2: o.norm(e0x, e0y),
+            tf1: o.pseudo(e0x, e0y, e1x, e1y),
+            tf2: o.pseudo(e0x, e0y, e2x, e2y),
+        }
     }
 
     /// The flags and the driving direction of column `i` of `out`, or
@@ -399,7 +477,85 @@ struct Lanes<'k, 'o> {
     xs: &'o [f64],
     /// Compute only the groups of lanes with a needed sample.
     needed: Option<&'o [bool]>,
+    /// The lanes of the driving candidates alone, computed beforehand
+    /// ([`DrivingKernel::pre_row`]) for at least the needed groups.
+    pre: Option<&'o RowPre>,
     out: &'o mut RowOut,
+}
+
+/// The lanes of a row that depend on the driving candidate only, not on
+/// the driven dyad: the circle point, the crank at the three poses, its
+/// length, its pseudo-angles at poses 2 and 3. The atlas computes them once
+/// per row for a chunk of driven centers ([`DrivingKernel::pre_row`]).
+pub(crate) struct RowPre {
+    /// `qx, qy, has_q, e0x, e0y, e1x, e1y, e2x, e2y, l2, tf1, tf2`.
+    v: [Vec<f64>; 12],
+}
+
+impl RowPre {
+    /// Room for the padded row `xs` of [`DrivingKernel::padded_xs`].
+    pub(crate) fn new(xs: &[f64]) -> Self {
+        RowPre {
+            v: core::array::from_fn(|_| vec![0.0; xs.len()]),
+        }
+    }
+}
+
+/// [`RowPre`]'s values on one group of lanes.
+#[derive(Clone, Copy)]
+struct Pre<S: Simd> {
+    qx: V<S>,
+    qy: V<S>,
+    has_q: M<S>,
+    e: [V<S>; 6],
+    l2: V<S>,
+    tf1: V<S>,
+    tf2: V<S>,
+}
+
+/// The driving candidate's lanes into [`RowPre`] (pulp's entry point).
+struct PreLanes<'k, 'o> {
+    k: &'k DrivingKernel<'k>,
+    y: f64,
+    xs: &'o [f64],
+    needed: &'o [bool],
+    pre: &'o mut RowPre,
+}
+
+impl WithSimd for PreLanes<'_, '_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: Simd>(self, s: S) {
+        let o = Ops(s);
+        let n = S::F64_LANES;
+        let (xs, _) = S::as_simd_f64s(self.xs);
+        let [qx, qy, has_q, e0x, e0y, e1x, e1y, e2x, e2y, l2, tf1, tf2] = &mut self.pre.v;
+        let cols =
+            [qx, qy, has_q, e0x, e0y, e1x, e1y, e2x, e2y, l2, tf1, tf2].map(|v| lanes::<S>(v));
+        let [qx, qy, has_q, e0x, e0y, e1x, e1y, e2x, e2y, l2, tf1, tf2] = cols;
+        for (c, &x) in xs.iter().enumerate() {
+            if !group_needed(self.needed, c, n) {
+                continue;
+            }
+            let p = self.k.driving_lanes(o, x, self.y);
+            qx[c] = p.qx;
+            qy[c] = p.qy;
+            has_q[c] = o.sel(p.has_q, o.sp(1.0), o.sp(0.0));
+            [e0x[c], e0y[c], e1x[c], e1y[c], e2x[c], e2y[c]] = p.e;
+            l2[c] = p.l2;
+            tf1[c] = p.tf1;
+            tf2[c] = p.tf2;
+        }
+    }
+}
+
+/// Whether group `c` of `n` lanes holds a needed sample.
+#[inline(always)]
+fn group_needed(needed: &[bool], c: usize, n: usize) -> bool {
+    needed
+        .get(c * n..((c + 1) * n).min(needed.len()))
+        .is_some_and(|l| l.contains(&true))
 }
 
 impl<S: Simd> Ops<S> {
@@ -448,21 +604,13 @@ impl WithSimd for Lanes<'_, '_> {
     fn with_simd<S: Simd>(self, s: S) {
         let (k, o) = (self.k, Ops(s));
         let (zero, one, two, four) = (o.sp(0.0), o.sp(1.0), o.sp(2.0), o.sp(4.0));
-        let (ox, oy) = (o.sp(k.origin[0]), o.sp(k.origin[1]));
-        let scale = o.sp(k.scale);
-        let (q13x, q13y) = (o.sp(k.q13[0]), o.sp(k.q13[1]));
-        let (c12, s12) = (o.sp(k.half12.0), o.sp(k.half12.1));
-        let (c13, s13) = (o.sp(k.half13.0), o.sp(k.half13.1));
         let (c0x, c0y) = (o.sp(k.c0[0]), o.sp(k.c0[1]));
         let (c1x, c1y) = (o.sp(k.c1[0]), o.sp(k.c1[1]));
         let (px, py) = (o.sp(k.point[0]), o.sp(k.point[1]));
         let (l4, tiny, to_driven) = (o.sp(k.l4), o.sp(k.tiny), o.sp(k.to_driven));
         let rounding_eps = o.sp(tolerance::ROUNDING_EPS * f64::EPSILON);
         let (max_ratio, cos_no) = (o.sp(k.max_ratio), o.sp(k.cos_no));
-        let [(r1c, r1s), (r2c, r2s)] = k.rot.map(|(c, s)| (o.sp(c), o.sp(s)));
-        let [t1, t2] = k.shift.map(|t| t.map(|v| o.sp(v)));
         let y = o.sp(self.y);
-        let yy = o.sp((self.y - k.origin[1]) / k.scale);
 
         let n = S::F64_LANES;
         // The whole sample for a map; for the atlas (`needed`) only what
@@ -480,38 +628,38 @@ impl WithSimd for Lanes<'_, '_> {
         let (o_members, o_flags) = (lanes::<S>(&mut out.members), lanes::<S>(&mut out.flags));
         let o_grashof = lanes::<S>(&mut out.grashof);
         for (c, &x) in xs.iter().enumerate() {
-            if let Some(needed) = self.needed {
-                let lanes = needed.get(c * n..((c + 1) * n).min(needed.len()));
-                if !lanes.is_some_and(|l| l.contains(&true)) {
-                    continue;
-                }
+            if self
+                .needed
+                .is_some_and(|needed| !group_needed(needed, c, n))
+            {
+                continue;
             }
-            // The circle point by the closed form (`circle_point_fast`).
-            let yx = o.div(o.sub(x, ox), scale);
-            let ux = o.sub(o.mul(c12, yx), o.mul(s12, yy));
-            let uy = o.add(o.mul(s12, yx), o.mul(c12, yy));
-            let (wx, wy) = (o.sub(yx, q13x), o.sub(yy, q13y));
-            let vx = o.sub(o.mul(c13, wx), o.mul(s13, wy));
-            let vy = o.add(o.mul(s13, wx), o.mul(c13, wy));
-            let den = o.cross(ux, uy, vx, vy);
-            let kappa = o.cross(q13x, q13y, vx, vy);
-            let t = o.mul(o.div(kappa, den), scale);
-            let qx = o.add(ox, o.mul(ux, t));
-            let qy = o.add(oy, o.mul(uy, t));
-            let has_q = o.and(o.and(o.finite(qx), o.finite(qy)), o.not(o.eq(den, zero)));
-            // The moving pivot at poses 2 and 3 (`Motion::first_to`), and
-            // the crank at the three poses.
-            let a1x = o.add(o.sub(o.mul(r1c, qx), o.mul(r1s, qy)), t1[0]);
-            let a1y = o.add(o.add(o.mul(r1s, qx), o.mul(r1c, qy)), t1[1]);
-            let a2x = o.add(o.sub(o.mul(r2c, qx), o.mul(r2s, qy)), t2[0]);
-            let a2y = o.add(o.add(o.mul(r2s, qx), o.mul(r2c, qy)), t2[1]);
-            let (e0x, e0y) = (o.sub(qx, x), o.sub(qy, y));
-            let (e1x, e1y) = (o.sub(a1x, x), o.sub(a1y, y));
-            let (e2x, e2y) = (o.sub(a2x, x), o.sub(a2y, y));
+            let Pre {
+                qx,
+                qy,
+                has_q,
+                e: [e0x, e0y, e1x, e1y, e2x, e2y],
+                l2,
+                tf1,
+                tf2,
+            } = match self.pre {
+                None => k.driving_lanes(o, x, self.y),
+                Some(pre) => {
+                    let col = |i: usize| S::as_simd_f64s(&pre.v[i]).0[c];
+                    Pre {
+                        qx: col(0),
+                        qy: col(1),
+                        has_q: o.eq(col(2), one),
+                        e: [col(3), col(4), col(5), col(6), col(7), col(8)],
+                        l2: col(9),
+                        tf1: col(10),
+                        tf2: col(11),
+                    }
+                }
+            };
             // The lengths and whether the linkage exists (`figures`).
             let (gx, gy) = (o.sub(c0x, x), o.sub(c0y, y));
             let l1 = o.norm(gx, gy);
-            let l2 = o.norm(e0x, e0y);
             let l3 = o.norm(o.sub(c1x, qx), o.sub(c1y, qy));
             let total = o.add(o.add(o.add(l1, l2), l3), l4);
             let valid = o.and(
@@ -535,9 +683,7 @@ impl WithSimd for Lanes<'_, '_> {
             let lo_free = o.le(c_min, o.add(o.sp(-1.0), o.mul(rounding, o.add(base, sum2))));
             let hi_free = o.ge(c_max, o.sub(one, o.mul(rounding, o.add(base, diff2))));
             let full = o.and(lo_free, hi_free);
-            // A crank: pseudo-angles from the crank at pose 1.
-            let tf1 = o.pseudo(e0x, e0y, e1x, e1y);
-            let tf2 = o.pseudo(e0x, e0y, e2x, e2y);
+            // A crank: pseudo-angles `tf1`, `tf2` from the crank at pose 1.
             let no_zero = o.not(o.or(o.eq(tf1, zero), o.eq(tf2, zero)));
             let ccw_f = o.and(no_zero, o.lt(tf1, tf2));
             let cw_f = o.and(no_zero, o.gt(tf1, tf2));
@@ -680,6 +826,7 @@ mod tests {
             y,
             xs,
             needed: None,
+            pre: None,
             out,
         }
     }
@@ -730,12 +877,30 @@ mod tests {
         };
         let xs = DrivingKernel::padded_xs(grid);
         let mut out = RowOut::new(&xs);
-        let widths: [&RowFn<'_>; 5] = [
+        let all = vec![true; grid.nx()];
+        // The driving candidates' lanes computed beforehand (as the atlas
+        // does, dispatched) and read on other lane widths.
+        let with_pre = |y: f64, out: &mut RowOut, wide: bool| {
+            let mut pre = RowPre::new(&xs);
+            k.pre_row(y, &xs, &all, &mut pre);
+            let l = Lanes {
+                pre: Some(&pre),
+                ..lanes(&k, y, &xs, out)
+            };
+            if wide {
+                l.with_simd(pulp::Scalar512b);
+            } else {
+                l.with_simd(pulp::Scalar);
+            }
+        };
+        let widths: [&RowFn<'_>; 7] = [
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar128b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar256b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar512b),
             &|y, out| k.row(y, &xs, out),
+            &|y, out| with_pre(y, out, false),
+            &|y, out| with_pre(y, out, true),
         ];
         let mut n = 0;
         for j in 0..grid.ny() {
@@ -755,7 +920,16 @@ mod tests {
             // transmission angle only where the rest is acceptable.
             let needed: Vec<bool> = (0..grid.nx()).map(|i| (i * 7 + j) % 5 != 0).collect();
             let mut out = RowOut::new(&xs);
-            k.row_where(y, &xs, &needed, &mut out);
+            // The candidates' lanes for more groups than needed, as the
+            // atlas's union over a chunk of centers.
+            let mut pre = RowPre::new(&xs);
+            let more: Vec<bool> = needed
+                .iter()
+                .enumerate()
+                .map(|(i, &f)| f || i % 3 == 0)
+                .collect();
+            k.pre_row(y, &xs, &more, &mut pre);
+            k.row_where(y, &xs, &needed, &pre, &mut out);
             for (i, _) in needed.iter().enumerate().filter(|(_, f)| **f) {
                 let a0 = Point2::new(grid.x(i), y);
                 let want = sampler.driving_sample(a0, driven, &c, true);
