@@ -1307,10 +1307,7 @@ fn a_dyad_next_to_an_arc_end_is_not_judged_by_simulation() {
             0.0,
         ],
     };
-    let m = made(&p, 4, 0.05).unwrap();
-    let four = FourPositions::new(&m.poses).unwrap();
-    check_branch(&four, &m.b, 120).unwrap();
-    check_branch(&four, &m.a, 120).unwrap();
+    check_made_branch(&p);
 }
 
 /// Found by a proptest at 6000 cases: the line meets the conic almost
@@ -1414,10 +1411,7 @@ fn arc_ends_of_a_task_with_clustered_poles_have_their_centers() {
         start: 0.0,
         steps: [0.6742261564121641, 0.0, 0.0, 0.7657387520633812, 0.0],
     };
-    let m = made(&p, 4, 0.05).unwrap();
-    let four = FourPositions::new(&m.poses).unwrap();
-    check_branch(&four, &m.b, 120).unwrap();
-    check_branch(&four, &m.a, 120).unwrap();
+    check_made_branch(&p);
 }
 
 /// Found by a proptest at 8000 cases: the same task scaled by 1e-3 found
@@ -1496,4 +1490,12 @@ fn circle_points_tend_to_the_slider_s_along_a_slow_asymptote() {
     for w in gaps.windows(2) {
         assert!(w[1] < 0.2 * w[0], "{gaps:?}");
     }
+}
+
+/// [`check_branch`] for both dyads of the linkage `p` makes (four poses).
+fn check_made_branch(p: &LinkParams) {
+    let m = made(p, 4, 0.05).unwrap();
+    let four = FourPositions::new(&m.poses).unwrap();
+    check_branch(&four, &m.b, 120).unwrap();
+    check_branch(&four, &m.a, 120).unwrap();
 }
