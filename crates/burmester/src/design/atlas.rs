@@ -343,7 +343,7 @@ fn atlas_chunk(
             cell.take_row(sampler, driving, j, nx, out, &limit);
         }
     }
-    for (m, mut cell) in live {
+    for (m, cell) in live {
         cells[m] = cell.finish(task, sampler, driving);
     }
 }
@@ -398,10 +398,9 @@ impl Cell<'_> {
     }
 
     /// The cell once every row is seen.
-    fn finish(&mut self, task: &Task, sampler: &Sampler<'_>, driving: &Grid) -> AtlasCell {
+    fn finish(self, task: &Task, sampler: &Sampler<'_>, driving: &Grid) -> AtlasCell {
         let mut cell = self.cell;
-        let run = core::mem::take(&mut self.run);
-        cell.best = best(task, self.filemon, sampler, driving, run).or_else(|| {
+        cell.best = best(task, self.filemon, sampler, driving, self.run).or_else(|| {
             // No candidate of the first run has a linkage (not seen in
             // practice): rank every acceptable sample, as `best_pivots` does.
             (cell.count > 0)
