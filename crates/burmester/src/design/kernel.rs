@@ -530,10 +530,8 @@ impl WithSimd for PreLanes<'_, '_> {
         let o = Ops(s);
         let n = S::F64_LANES;
         let (xs, _) = S::as_simd_f64s(self.xs);
-        let [qx, qy, has_q, e0x, e0y, e1x, e1y, e2x, e2y, l2, tf1, tf2] = &mut self.pre.v;
-        let cols =
-            [qx, qy, has_q, e0x, e0y, e1x, e1y, e2x, e2y, l2, tf1, tf2].map(|v| lanes::<S>(v));
-        let [qx, qy, has_q, e0x, e0y, e1x, e1y, e2x, e2y, l2, tf1, tf2] = cols;
+        let [qx, qy, has_q, e0x, e0y, e1x, e1y, e2x, e2y, l2, tf1, tf2] =
+            self.pre.v.each_mut().map(|v| lanes::<S>(v));
         for (c, &x) in xs.iter().enumerate() {
             if !group_needed(self.needed, c, n) {
                 continue;

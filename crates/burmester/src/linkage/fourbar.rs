@@ -72,10 +72,10 @@ use pulp::{Arch, Simd, WithSimd};
 use rayon::prelude::*;
 
 use crate::error::{AssemblyError, Error, InvalidInput, Result, finite, positive};
-use crate::geom::{cross, normalized, perp, point_is_finite, rotate, unit, wrap_angle};
+use crate::geom::{cross, normalized, point_is_finite, rotate, unit, wrap_angle};
 use crate::linkage::grashof::{InputBounds, grashof_of, input_bounds};
 use crate::linkage::{AngleInterval, Grashof, InputRange};
-use crate::simd::{Ops, Pair, atan2};
+use crate::simd::{M, Ops, Pair, V, atan2};
 use crate::tolerance;
 
 /// The two ways to close the loop at one input angle.
@@ -265,27 +265,34 @@ struct Closed {
 }
 
 /// The arithmetic of closing the loop, before any check
-/// ([`FourBar::loop_vectors`]).
-#[derive(Debug, Clone, Copy)]
-struct LoopVectors {
+/// ([`FourBar::loop_vectors`]), on the lanes of `S` (plain `f64` for
+/// [`pulp::Scalar`]).
+#[derive(Clone, Copy)]
+struct LoopVectors<S: Simd> {
     /// `|O4 - A|^2`, in units of `scale^2`.
-    r2: f64,
+    r2: V<S>,
     /// Heron's product `H` (module docs).
-    heron: f64,
+    heron: V<S>,
     /// The rounding band of `H`.
-    tol: f64,
+    tol: V<S>,
     /// A vector along the coupler, `A -> B`.
-    v3: Vector2<f64>,
+    v3: [V<S>; 2],
     /// A vector along the rocker, `O4 -> B`.
-    v4: Vector2<f64>,
+    v4: [V<S>; 2],
 }
 
-impl LoopVectors {
+impl<S: Simd> LoopVectors<S> {
     /// Whether `v3` or `v4` vanished (the indeterminate case of
     /// [`FourBar::solve`]).
     #[inline(always)]
-    fn degenerate(&self) -> bool {
-        (self.v3.x == 0.0 && self.v3.y == 0.0) || (self.v4.x == 0.0 && self.v4.y == 0.0)
+    fn degenerate(&self, o: Ops<S>) -> M<S> {
+        let zero = o.sp(0.0);
+        let [x3, y3] = self.v3;
+        let [x4, y4] = self.v4;
+        o.or(
+            o.and(o.eq(x3, zero), o.eq(y3, zero)),
+            o.and(o.eq(x4, zero), o.eq(y4, zero)),
+        )
     }
 }
 
@@ -502,7 +509,8 @@ impl FourBar {
             return Err(angle_error(theta2));
         }
         let (s2, c2) = libm::sincos(theta2);
-        let l = self.loop_vectors(c2, s2, mode.sign());
+        let o = Ops(pulp::Scalar);
+        let l = self.loop_vectors(o, c2, s2, mode.sign());
         // One comparison catches both a loop that does not close and NaN
         // (from a non-finite angle). A crank tip on the output pivot
         // (`r2 == 0`) makes `v3` and `v4` zero, caught below.
@@ -513,13 +521,13 @@ impl FourBar {
         // Both vanish only when the crank tip is within rounding of the
         // output pivot of a linkage whose coupler equals its rocker (or the
         // products underflow there): every coupler angle closes the loop.
-        if l.degenerate() {
+        if l.degenerate(o) {
             return Err(indeterminate(theta2));
         }
         Ok(Closed {
             crank_dir: Vector2::new(c2, s2),
-            v3: l.v3,
-            v4: l.v4,
+            v3: Vector2::new(l.v3[0], l.v3[1]),
+            v4: Vector2::new(l.v4[0], l.v4[1]),
             // The one toggle criterion (module docs); the loop keeps the
             // asked mode's sign inside the band instead of snapping to the
             // toggle.
@@ -527,30 +535,39 @@ impl FourBar {
         })
     }
 
-    /// The arithmetic of [`close`](Self::close) for the crank direction
-    /// `(c2, s2)` and the mode's sign, without its checks: shared by
-    /// `close` and the batch kernel of [`solve_into`](Self::solve_into), so
-    /// that both give the same bits.
+    /// The arithmetic of [`close`](Self::close) for the crank directions
+    /// `(c2, s2)` and the mode's sign, without its checks, on the lanes of
+    /// `o`: shared by `close` (on [`pulp::Scalar`]) and the batch kernel
+    /// of [`solve_into`](Self::solve_into), so that both give the same
+    /// bits.
     #[inline(always)]
-    fn loop_vectors(&self, c2: f64, s2: f64, sign: f64) -> LoopVectors {
+    fn loop_vectors<S: Simd>(&self, o: Ops<S>, c2: V<S>, s2: V<S>, sign: f64) -> LoopVectors<S> {
         // d = O4 - A, in units of `scale`.
-        let d = Vector2::new(self.g_vec.x - self.c_n * c2, self.g_vec.y - self.c_n * s2);
-        let r2 = d.x * d.x + d.y * d.y;
-        let sum = self.sum_n;
-        let diff = self.diff_n;
-        let heron = (sum * sum - r2) * (r2 - diff * diff);
-        let big = sum * sum + r2;
-        let tol = LOOP_TOL * big * big;
-        // Not `max`, which may return either zero for `-0.0`: a select
-        // that the lanes of `solve_into` make the same way.
-        let h = sign * (if heron > 0.0 { heron } else { 0.0 }).sqrt();
-        let n = perp(d) * h;
+        let c_n = o.sp(self.c_n);
+        let dx = o.sub(o.sp(self.g_vec.x), o.mul(c_n, c2));
+        let dy = o.sub(o.sp(self.g_vec.y), o.mul(c_n, s2));
+        let r2 = o.add(o.mul(dx, dx), o.mul(dy, dy));
+        let (sum, diff) = (o.sp(self.sum_n), o.sp(self.diff_n));
+        let sum2 = o.mul(sum, sum);
+        let heron = o.mul(o.sub(sum2, r2), o.sub(r2, o.mul(diff, diff)));
+        let big = o.add(sum2, r2);
+        let tol = o.mul(o.mul(o.sp(LOOP_TOL), big), big);
+        // A select, not `max` (which may return either zero for `-0.0`).
+        let zero = o.sp(0.0);
+        let root = o.0.sqrt_f64s(o.sel(o.gt(heron, zero), heron, zero));
+        let h = o.mul(o.sp(sign), root);
+        // n = perp(d) h.
+        let (nx, ny) = (o.mul(o.neg(dy), h), o.mul(dx, h));
+        let (k3, k4) = (
+            o.add(o.sp(self.sq_diff_n), r2),
+            o.sub(o.sp(self.sq_diff_n), r2),
+        );
         LoopVectors {
             r2,
             heron,
             tol,
-            v3: d * (self.sq_diff_n + r2) + n,
-            v4: d * (self.sq_diff_n - r2) + n,
+            v3: [o.add(o.mul(dx, k3), nx), o.add(o.mul(dy, k3), ny)],
+            v4: [o.add(o.mul(dx, k4), nx), o.add(o.mul(dy, k4), ny)],
         }
     }
 
@@ -885,10 +902,8 @@ impl WithSimd for SolveLanes<'_> {
         let (fb, o) = (self.fb, Ops(s));
         let n = S::F64_LANES;
         let (zero, one, nan) = (o.sp(0.0), o.sp(1.0), o.sp(f64::NAN));
-        let (gx, gy, c_n) = (o.sp(fb.g_vec.x), o.sp(fb.g_vec.y), o.sp(fb.c_n));
-        let (sum, diff, sq_diff) = (o.sp(fb.sum_n), o.sp(fb.diff_n), o.sp(fb.sq_diff_n));
-        let (sign, loop_tol) = (o.sp(self.mode.sign()), o.sp(LOOP_TOL));
         let max_angle = o.sp(FourBar::MAX_ANGLE);
+        let sign = self.mode.sign();
         let (t_in, _) = S::as_simd_f64s(self.theta2s);
         let (t3_out, _) = S::as_mut_simd_f64s(self.theta3);
         let (t4_out, _) = S::as_mut_simd_f64s(self.theta4);
@@ -907,26 +922,12 @@ impl WithSimd for SolveLanes<'_> {
             }
             let s2 = S::as_simd_f64s(&buf[0][..n]).0[0];
             let c2 = S::as_simd_f64s(&buf[1][..n]).0[0];
-            // `loop_vectors`.
-            let dx = o.sub(gx, o.mul(c_n, c2));
-            let dy = o.sub(gy, o.mul(c_n, s2));
-            let r2 = o.add(o.mul(dx, dx), o.mul(dy, dy));
-            let sum2 = o.mul(sum, sum);
-            let heron = o.mul(o.sub(sum2, r2), o.sub(r2, o.mul(diff, diff)));
-            let big = o.add(sum2, r2);
-            let tol = o.mul(o.mul(loop_tol, big), big);
-            let root = s.sqrt_f64s(o.sel(o.gt(heron, zero), heron, zero));
-            let h = o.mul(sign, root);
-            let (nx, ny) = (o.mul(o.neg(dy), h), o.mul(dx, h));
-            let (k3, k4) = (o.add(sq_diff, r2), o.sub(sq_diff, r2));
-            let (x3, y3) = (o.add(o.mul(dx, k3), nx), o.add(o.mul(dy, k3), ny));
-            let (x4, y4) = (o.add(o.mul(dx, k4), nx), o.add(o.mul(dy, k4), ny));
+            let l = fb.loop_vectors(o, c2, s2, sign);
+            let ([x3, y3], [x4, y4]) = (l.v3, l.v4);
             // The checks of `close`, as one mask (NaN fails them).
-            let v3_zero = o.and(o.eq(x3, zero), o.eq(y3, zero));
-            let v4_zero = o.and(o.eq(x4, zero), o.eq(y4, zero));
             let ok = o.and(
-                o.and(o.le(o.abs(t), max_angle), o.ge(heron, o.neg(tol))),
-                o.not(o.or(v3_zero, v4_zero)),
+                o.and(o.le(o.abs(t), max_angle), o.ge(l.heron, o.neg(l.tol))),
+                o.not(l.degenerate(o)),
             );
             *a = o.sel(ok, atan2(o, y3, x3), nan);
             *b = o.sel(ok, atan2(o, y4, x4), nan);
