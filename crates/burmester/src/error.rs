@@ -772,6 +772,20 @@ pub fn try_vec<T: Clone + Send>(what: &'static str, n: usize, value: T) -> Resul
     Ok(v)
 }
 
+/// A vector of `n` zeros (`false`, `0`, `0.0`), or [`Error::OutOfMemory`]
+/// when it cannot be allocated: fresh pages from the allocator, which the
+/// first write touches (on the thread that writes it), with no pass that
+/// fills them first.
+pub(crate) fn try_zeroed_vec<T: bytemuck::Zeroable>(
+    what: &'static str,
+    n: usize,
+) -> Result<Vec<T>> {
+    bytemuck::allocation::try_zeroed_vec(n).map_err(|()| Error::OutOfMemory {
+        what,
+        bytes: n.saturating_mul(core::mem::size_of::<T>()),
+    })
+}
+
 /// Checks that `value` is finite.
 pub(crate) fn finite(name: &'static str, value: f64) -> Result<f64, InvalidInput> {
     if value.is_finite() {

@@ -50,6 +50,10 @@ impl<S: Simd> Ops<S> {
         self.0.abs_f64s(a)
     }
     #[inline(always)]
+    pub(crate) fn sqrt(self, a: V<S>) -> V<S> {
+        self.0.sqrt_f64s(a)
+    }
+    #[inline(always)]
     pub(crate) fn lt(self, a: V<S>, b: V<S>) -> M<S> {
         self.0.less_than_f64s(a, b)
     }
@@ -107,7 +111,7 @@ impl<S: Simd> Ops<S> {
     /// `sqrt(x^2 + y^2)`, as nalgebra's `norm`.
     #[inline(always)]
     pub(crate) fn norm(self, x: V<S>, y: V<S>) -> V<S> {
-        self.0.sqrt_f64s(self.add(self.mul(x, x), self.mul(y, y)))
+        self.sqrt(self.add(self.mul(x, x), self.mul(y, y)))
     }
     /// `r . v`.
     #[inline(always)]
@@ -138,6 +142,8 @@ pub(crate) trait Lanes: Copy {
     fn div(self, a: Self::F, b: Self::F) -> Self::F;
     fn neg(self, a: Self::F) -> Self::F;
     fn abs(self, a: Self::F) -> Self::F;
+    fn sqrt(self, a: Self::F) -> Self::F;
+    fn lt(self, a: Self::F, b: Self::F) -> Self::M;
     fn gt(self, a: Self::F, b: Self::F) -> Self::M;
     fn ge(self, a: Self::F, b: Self::F) -> Self::M;
     fn le(self, a: Self::F, b: Self::F) -> Self::M;
@@ -174,6 +180,8 @@ impl<S: Simd> Lanes for Ops<S> {
         div(a: F, b: F) -> F;
         neg(a: F) -> F;
         abs(a: F) -> F;
+        sqrt(a: F) -> F;
+        lt(a: F, b: F) -> M;
         gt(a: F, b: F) -> M;
         ge(a: F, b: F) -> M;
         le(a: F, b: F) -> M;
@@ -225,6 +233,14 @@ impl Lanes for Pair {
     #[inline(always)]
     fn abs(self, a: Self::F) -> Self::F {
         a.abs()
+    }
+    #[inline(always)]
+    fn sqrt(self, a: Self::F) -> Self::F {
+        a.sqrt()
+    }
+    #[inline(always)]
+    fn lt(self, a: Self::F, b: Self::F) -> Self::M {
+        a.simd_lt(b)
     }
     #[inline(always)]
     fn gt(self, a: Self::F, b: Self::F) -> Self::M {
@@ -330,9 +346,80 @@ pub(crate) fn atan2<L: Lanes>(o: L, y: L::F, x: L::F) -> L::F {
     o.sel(o.sign_negative(y), o.neg(re), re)
 }
 
+/// `acos(x)` on each lane of `o`: Cephes' method (`asin` of an argument
+/// at most 1/2 by `a + a^3 P(a^2) / Q(a^2)`, through `acos(x) =
+/// 2 asin(sqrt((1 - x) / 2))` above 1/2, `pi - 2 asin(sqrt((1 + x) / 2))`
+/// below -1/2 and `pi/2 - asin(x)` between), one rational function for
+/// every lane and the ranges picked by selects, so that it gives the same
+/// bits on every lane width and every CPU (libm's `acos` differs between
+/// platforms). Within 2 ulp of the exact angle; NaN outside `[-1, 1]`.
+#[inline(always)]
+pub(crate) fn acos<L: Lanes>(o: L, x: L::F) -> L::F {
+    use core::f64::consts::{FRAC_PI_2, FRAC_PI_4};
+    /// `pi/2` less its double: the bits `FRAC_PI_2` leaves out.
+    const MORE_BITS: f64 = 6.123233995736766e-17;
+    const P: [f64; 6] = [
+        0.004253011369004428,
+        -0.6019598008014124,
+        5.444622390564711,
+        -16.262479672107002,
+        19.562619833175948,
+        -8.198089802484825,
+    ];
+    /// With a leading coefficient 1.
+    const Q: [f64; 5] = [
+        -14.740913729888538,
+        70.49610280856842,
+        -147.1791292232726,
+        139.51056146574857,
+        -49.18853881490881,
+    ];
+    let half = o.sp(0.5);
+    let hi = o.gt(x, half);
+    let lo = o.lt(x, o.neg(half));
+    // The argument of asin, in [-1/2, 1/2]: sqrt((1 -+ x) / 2) outside
+    // [-1/2, 1/2] (exact differences by Sterbenz' lemma), x inside.
+    let hx = o.mul(half, x);
+    let a = o.sel(
+        hi,
+        o.sqrt(o.sub(half, hx)),
+        o.sel(lo, o.sqrt(o.add(half, hx)), x),
+    );
+    let zz = o.mul(a, a);
+    let horner = |c: &[f64], lead: Option<f64>| {
+        let mut r = o.sp(lead.unwrap_or(c[0]));
+        let rest = if lead.is_some() { c } else { &c[1..] };
+        for &k in rest {
+            r = o.add(o.mul(r, zz), o.sp(k));
+        }
+        r
+    };
+    let z = o.div(o.mul(zz, horner(&P, None)), horner(&Q, Some(1.0)));
+    let asin = o.add(o.mul(a, z), a);
+    let twice = o.add(asin, asin);
+    // Between: (pi/4 - asin) + the lost bits + pi/4, as Cephes.
+    let mid = o.add(
+        o.add(o.sub(o.sp(FRAC_PI_4), asin), o.sp(MORE_BITS)),
+        o.sp(FRAC_PI_4),
+    );
+    // Below: (pi/2 - 2 asin) + twice the lost bits + pi/2.
+    let below = o.add(
+        o.add(o.sub(o.sp(FRAC_PI_2), twice), o.sp(2.0 * MORE_BITS)),
+        o.sp(FRAC_PI_2),
+    );
+    o.sel(hi, twice, o.sel(lo, below, mid))
+}
+
+/// [`acos`] of one `f64`: the crate's `acos` wherever a result must be the
+/// lanes' bits (the minimum transmission angle).
+#[inline]
+pub(crate) fn acos1(x: f64) -> f64 {
+    acos(Ops(pulp::Scalar), x)
+}
+
 #[cfg(test)]
 mod tests {
-    use super::{Ops, Pair, V, atan2};
+    use super::{Ops, Pair, V, acos, atan2};
     use pulp::Simd;
 
     /// Units in the last place between two finite doubles of one sign.
@@ -475,6 +562,92 @@ mod tests {
             for (a, b) in scalar.iter().zip(&lanes) {
                 assert_eq!(a.to_bits(), b.to_bits());
             }
+        }
+    }
+
+    fn acos_inputs() -> Vec<f64> {
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut v = Vec::new();
+        for _ in 0..200_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let u = (state >> 11) as f64 / (1u64 << 53) as f64;
+            v.push(2.0 * u - 1.0);
+            // Near +-1, where the angle is small or near pi.
+            v.push(1.0 - u * u * u * 1e-6);
+            v.push(-1.0 + u * u * u * 1e-6);
+            // Tiny magnitudes.
+            v.push(f64::from_bits(state & 0x3e7f_ffff_ffff_ffff));
+        }
+        for t in [0.5f64, 1.0, 0.0, 1e-300, 5e-324] {
+            for s in [1.0, -1.0] {
+                v.extend([s * t, s * t.next_up(), s * t.next_down()]);
+            }
+        }
+        v.retain(|x| x.abs() <= 1.0);
+        v
+    }
+
+    #[test]
+    fn acos_is_within_two_ulp_of_libm() {
+        let o = Ops(pulp::Scalar);
+        let mut worst = 0;
+        for x in acos_inputs() {
+            let (got, want) = (acos(o, x), libm::acos(x));
+            let d = ulps(got, want);
+            worst = worst.max(d);
+            assert!(d <= 1, "acos({x}) = {got}, not {want}");
+        }
+        assert!(worst >= 1, "the inputs reach no rounding difference at all");
+        assert_eq!(acos(o, 1.0), 0.0);
+        assert_eq!(acos(o, -1.0), core::f64::consts::PI);
+        assert_eq!(acos(o, 0.0), core::f64::consts::FRAC_PI_2);
+        for x in [1.0f64.next_up(), (-1.0f64).next_down(), 2.0, -7.0, f64::NAN] {
+            assert!(acos(o, x).is_nan(), "acos({x}) is not NaN");
+        }
+        for x in [f64::INFINITY, -f64::INFINITY] {
+            assert!(acos(o, x).is_nan(), "acos({x}) is not NaN");
+        }
+    }
+
+    /// Every lane width and `wide`'s pairs give the scalar bits.
+    #[test]
+    fn acos_lanes_are_the_scalar_bits() {
+        fn run<S: Simd>(s: S, xs: &[f64]) -> Vec<f64> {
+            let o = Ops(s);
+            let (xv, _) = S::as_simd_f64s(xs);
+            let mut out = vec![0.0; xs.len()];
+            let (ov, _) = S::as_mut_simd_f64s(&mut out);
+            for (r, &x) in ov.iter_mut().zip(xv) {
+                let v: V<S> = acos(o, x);
+                *r = v;
+            }
+            out
+        }
+        let mut xs = acos_inputs();
+        xs.extend([2.0, -2.0, f64::NAN, f64::INFINITY]);
+        xs.truncate(xs.len() / 8 * 8);
+        let scalar = run(pulp::Scalar, &xs);
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+        for lanes in [
+            run(pulp::Scalar128b, &xs),
+            run(pulp::Scalar256b, &xs),
+            run(pulp::Scalar512b, &xs),
+        ] {
+            for (&a, &b) in scalar.iter().zip(&lanes) {
+                assert!(same(a, b), "{a} {b}");
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        if let Some(v3) = pulp::x86::V3::try_new() {
+            for (&a, &b) in scalar.iter().zip(&run(v3, &xs)) {
+                assert!(same(a, b), "{a} {b} (AVX2)");
+            }
+        }
+        for (w, want) in xs.chunks_exact(2).zip(scalar.chunks_exact(2)) {
+            let pair = acos(Pair, wide::f64x2::new([w[0], w[1]])).to_array();
+            assert!(same(pair[0], want[0]) && same(pair[1], want[1]));
         }
     }
 }

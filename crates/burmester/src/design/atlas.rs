@@ -367,7 +367,7 @@ impl Cell<'_> {
             let seen = match &self.kernel {
                 Some(k) => k
                     .judge_for_atlas(out, i, p, limit)
-                    .map(|a| a.map(|w| reach.may_reach(w).then(|| w.acos() as f32))),
+                    .map(|a| a.map(|w| reach.may_reach(w).then(|| crate::simd::acos1(w) as f32))),
                 None => {
                     let s = sampler.driving_sample(p, self.driven, &self.c, true);
                     s.valid

@@ -238,6 +238,11 @@ pub(crate) struct Prepared {
 }
 
 impl Prepared {
+    /// Whether there is nothing to test: no base plate, no obstacles.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.plate.is_none() && self.obstacles.is_empty()
+    }
+
     /// Whether the fixed pivot `p` is on the base plate.
     pub(crate) fn pivot_ok(&self, p: Point2<f64>) -> bool {
         self.plate

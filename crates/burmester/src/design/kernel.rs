@@ -34,14 +34,14 @@
 use nalgebra::Point2;
 use pulp::{Arch, Simd, WithSimd};
 
-use crate::simd::{M, Ops, V};
+use crate::simd::{M, Ops, V, acos, acos1};
 
 use crate::design::InputRequirement;
-use crate::design::map::{ColumnsMut, Sample, Sampler};
+use crate::design::map::{ColumnsMut, ColumnsRow, Sampler};
 use crate::engine::{Control, run_blocks_with};
 use crate::error::Result;
-use crate::geom::{Grid, PerPose};
-use crate::linkage::{Direction, Grashof, LinkageFigures};
+use crate::geom::Grid;
+use crate::linkage::{Direction, Grashof};
 use crate::synthesis::Dyad;
 use crate::synthesis::three::Maps;
 use crate::tolerance;
@@ -59,13 +59,18 @@ const CW: u8 = 16;
 /// link ratio, the input kind, and a worst `|cos mu|` not surely past the
 /// transmission limit; without it the sample is surely not acceptable.
 const MAY_MEET: u8 = 32;
+/// Meets the limits (map rows only): one circuit, a direction, the link
+/// ratio, the input kind and the minimum transmission angle, as
+/// [`DesignLimits::meets`](crate::DesignLimits::meets) tests them.
+const MEETS: u8 = 64;
 
 /// `acos(w) >= angle` for a worst `|cos mu|` `w` in `[0, 1]`, by
 /// thresholds on `w` away from the angle and the `acos` near it: the answer
 /// is the comparison of the `acos` itself (as [`DesignLimits::meets`]
-/// takes it) wherever libm's `acos` and `cos` are within a tenth of
-/// [`CosBand::SLACK`] of the true values, which they are by many orders of
-/// magnitude (glibc: 1 ulp, about `2e-16` rad here).
+/// takes it) wherever the crate's [`acos`](crate::simd::acos) and libm's
+/// `cos` are within a tenth of [`CosBand::SLACK`] of the true values, which
+/// they are by many orders of magnitude (2 ulp and 1 ulp, about `4e-16`
+/// rad here).
 ///
 /// [`DesignLimits::meets`]: crate::DesignLimits::meets
 #[derive(Debug, Clone, Copy)]
@@ -106,7 +111,7 @@ impl CosBand {
         } else if w > self.no {
             false
         } else {
-            w.acos() >= self.angle
+            acos1(w) >= self.angle
         }
     }
 
@@ -128,12 +133,12 @@ fn code(g: Grashof) -> f64 {
 pub(crate) struct RowOut {
     qx: Vec<f64>,
     qy: Vec<f64>,
-    l1: Vec<f64>,
-    l2: Vec<f64>,
-    l3: Vec<f64>,
     /// The largest `|cos mu|` over the travel (meaningless without a
     /// direction).
     worst: Vec<f64>,
+    /// `acos(worst)`, the minimum transmission angle ([`acos`]; whole rows
+    /// only).
+    mu: Vec<f64>,
     ratio: Vec<f64>,
     members: Vec<f64>,
     flags: Vec<f64>,
@@ -148,10 +153,8 @@ impl RowOut {
         RowOut {
             qx: v(),
             qy: v(),
-            l1: v(),
-            l2: v(),
-            l3: v(),
             worst: v(),
+            mu: v(),
             ratio: v(),
             members: v(),
             flags: v(),
@@ -190,6 +193,9 @@ pub(crate) struct DrivingKernel<'s> {
     max_ratio: f64,
     input: InputRequirement,
     cos_no: f64,
+    /// The transmission limit (radians) and `1 / Task::span`, for a map.
+    min_transmission: f64,
+    inv_span: f64,
 }
 
 impl<'s> DrivingKernel<'s> {
@@ -230,6 +236,8 @@ impl<'s> DrivingKernel<'s> {
             max_ratio: limits.max_link_ratio,
             input: limits.input,
             cos_no: CosBand::new(limits.min_transmission).no,
+            min_transmission: limits.min_transmission,
+            inv_span: sampler.judge.inv_span(),
         })
     }
 
@@ -396,44 +404,73 @@ impl<'s> DrivingKernel<'s> {
         Some(acceptable.then_some(worst))
     }
 
-    /// The sample of candidate `a0` (column `i` of the row in `out`) with
-    /// branch flag `branch_free`: [`Sampler::driving_sample`] bit for bit.
+    /// Writes the row at ordinate `y` (abscissae `xs`, branch flags
+    /// `branch`) from the lanes in `out` ([`row`](Self::row)) into `row`,
+    /// column by column: [`Sampler::driving_sample`] bit for bit at every
+    /// sample.
     #[inline]
-    pub(crate) fn sample(
+    pub(crate) fn write_row(
         &self,
         out: &RowOut,
-        i: usize,
-        a0: Point2<f64>,
-        branch_free: bool,
-    ) -> Sample {
-        let Some((flags, direction)) = Self::decode(out, i) else {
-            return Sample::INVALID;
-        };
-        let lengths = [out.l1[i], out.l2[i], out.l3[i], self.l4];
-        let min_transmission = if direction == Direction::None {
-            f64::NAN
+        y: f64,
+        xs: &[f64],
+        branch: &[bool],
+        row: ColumnsRow<'_>,
+    ) {
+        let nx = branch.len();
+        // The flags are small integers, zero where the linkage does not
+        // exist.
+        let flags: &[f64] = &out.flags[..nx];
+        let has = |f: f64, bit: u8| (f as u8) & bit != 0;
+        let nan = f32::NAN;
+        for (d, &f) in row.valid.iter_mut().zip(flags) {
+            *d = has(f, VALID);
+        }
+        for ((d, &f), &b) in row.branch_free.iter_mut().zip(flags).zip(branch) {
+            *d = b && has(f, VALID);
+        }
+        for ((d, &f), &g) in row.grashof.iter_mut().zip(flags).zip(&out.grashof) {
+            *d = if has(f, VALID) {
+                g as u8
+            } else {
+                crate::SolutionMap::GRASHOF_NONE
+            };
+        }
+        for (d, &f) in row.input_full.iter_mut().zip(flags) {
+            *d = has(f, FULL);
+        }
+        for (d, &f) in row.direction.iter_mut().zip(flags) {
+            *d = i8::from(has(f, CCW)) - i8::from(has(f, CW));
+        }
+        for (d, &f) in row.one_circuit.iter_mut().zip(flags) {
+            *d = has(f, ONE_CIRCUIT);
+        }
+        for ((d, &f), &mu) in row.min_transmission_rad.iter_mut().zip(flags).zip(&out.mu) {
+            *d = if has(f, CCW | CW) { mu as f32 } else { nan };
+        }
+        for ((d, &f), &r) in row.link_ratio.iter_mut().zip(flags).zip(&out.ratio) {
+            *d = if has(f, VALID) { r as f32 } else { nan };
+        }
+        for ((d, &f), &m) in row.size_ratio.iter_mut().zip(flags).zip(&out.members) {
+            *d = if has(f, VALID) {
+                (m * self.inv_span) as f32
+            } else {
+                nan
+            };
+        }
+        let judge = &self.sampler.judge;
+        let acceptable = row.acceptable.iter_mut().zip(flags).zip(branch);
+        if judge.unconstrained() {
+            for ((d, &f), &b) in acceptable {
+                *d = b && has(f, MEETS);
+            }
         } else {
-            out.worst[i].acos()
-        };
-        let f = LinkageFigures {
-            lengths,
-            grashof: Grashof::ALL[out.grashof[i] as usize],
-            input_full: flags & FULL != 0,
-            modes: PerPose::from_fn(3, |_| None),
-            direction,
-            one_circuit: flags & ONE_CIRCUIT != 0,
-            min_transmission,
-            link_ratio: out.ratio[i],
-        };
-        let q = Point2::new(out.qx[i], out.qy[i]);
-        self.sampler.judge.sample_sized(
-            f,
-            branch_free,
-            &[a0],
-            Dyad::new(a0, q),
-            self.driven,
-            out.members[i],
-        )
+            for (i, ((d, &f), &b)) in acceptable.enumerate() {
+                let a0 = Point2::new(xs[i], y);
+                let driving = Dyad::new(a0, Point2::new(out.qx[i], out.qy[i]));
+                *d = judge.acceptable(b, || has(f, MEETS), &[a0], driving, self.driven);
+            }
+        }
     }
 
     /// Fills the columns of a driving solution map over `grid` (`xs` its
@@ -460,10 +497,8 @@ impl<'s> DrivingKernel<'s> {
                     let j = j0 + r;
                     let y = grid.y(j);
                     self.row(y, xs, out);
-                    for (i, &x) in xs[..nx].iter().enumerate() {
-                        let s = self.sample(out, i, Point2::new(x, y), branch[j * nx + i]);
-                        block.set(r * nx + i, s);
-                    }
+                    let branch = &branch[j * nx..(j + 1) * nx];
+                    self.write_row(out, y, xs, branch, block.row(r));
                 }
             },
         )
@@ -608,6 +643,7 @@ impl WithSimd for Lanes<'_, '_> {
         let (l4, tiny, to_driven) = (o.sp(k.l4), o.sp(k.tiny), o.sp(k.to_driven));
         let rounding_eps = o.sp(tolerance::ROUNDING_EPS * f64::EPSILON);
         let (max_ratio, cos_no) = (o.sp(k.max_ratio), o.sp(k.cos_no));
+        let min_transmission = o.sp(k.min_transmission);
         let y = o.sp(self.y);
 
         let n = S::F64_LANES;
@@ -616,15 +652,10 @@ impl WithSimd for Lanes<'_, '_> {
         let whole = self.needed.is_none();
         let (xs, _) = S::as_simd_f64s(self.xs);
         let out = self.out;
-        let (o_qx, o_qy, o_l1) = (
-            lanes::<S>(&mut out.qx),
-            lanes::<S>(&mut out.qy),
-            lanes::<S>(&mut out.l1),
-        );
-        let (o_l2, o_l3) = (lanes::<S>(&mut out.l2), lanes::<S>(&mut out.l3));
+        let (o_qx, o_qy) = (lanes::<S>(&mut out.qx), lanes::<S>(&mut out.qy));
         let (o_worst, o_ratio) = (lanes::<S>(&mut out.worst), lanes::<S>(&mut out.ratio));
         let (o_members, o_flags) = (lanes::<S>(&mut out.members), lanes::<S>(&mut out.flags));
-        let o_grashof = lanes::<S>(&mut out.grashof);
+        let (o_grashof, o_mu) = (lanes::<S>(&mut out.grashof), lanes::<S>(&mut out.mu));
         for (c, &x) in xs.iter().enumerate() {
             if self
                 .needed
@@ -730,12 +761,17 @@ impl WithSimd for Lanes<'_, '_> {
             // (`members_length`) below, for a map.
             let longest = o.fmax(o.fmax(l1, l2), o.fmax(l3, l4));
             let shortest = o.fmin(o.fmin(l1, l2), o.fmin(l3, l4));
-            let flags = o.add(
-                o.add(o.flag(valid, VALID), o.flag(full, FULL)),
+            // Zero where the linkage does not exist.
+            let flags = o.sel(
+                valid,
                 o.add(
-                    o.flag(one_circuit, ONE_CIRCUIT),
-                    o.add(o.flag(ccw, CCW), o.flag(cw, CW)),
+                    o.add(o.flag(valid, VALID), o.flag(full, FULL)),
+                    o.add(
+                        o.flag(one_circuit, ONE_CIRCUIT),
+                        o.add(o.flag(ccw, CCW), o.flag(cw, CW)),
+                    ),
                 ),
+                zero,
             );
 
             let ratio = o.div(longest, shortest);
@@ -743,19 +779,24 @@ impl WithSimd for Lanes<'_, '_> {
             o_qy[c] = qy;
             o_worst[c] = worst;
             o_ratio[c] = ratio;
+            // The limits' tests but the transmission angle's, as
+            // `meets_when` makes them.
+            let input = match k.input {
+                InputRequirement::Any => o.eq(zero, zero),
+                InputRequirement::Crank => full,
+                InputRequirement::Rocker => o.not(full),
+            };
+            let limits = o.and(
+                o.and(o.and(valid, one_circuit), o.or(ccw, cw)),
+                o.and(o.le(ratio, max_ratio), input),
+            );
             if whole {
-                o_flags[c] = flags;
+                let mu = acos(o, worst);
+                o_mu[c] = mu;
+                let meets = o.and(limits, o.ge(mu, min_transmission));
+                o_flags[c] = o.add(flags, o.flag(meets, MEETS));
             } else {
-                // The limits' cheap tests, as `meets_when` makes them.
-                let input = match k.input {
-                    InputRequirement::Any => o.eq(zero, zero),
-                    InputRequirement::Crank => full,
-                    InputRequirement::Rocker => o.not(full),
-                };
-                let may = o.and(
-                    o.and(o.and(valid, one_circuit), o.or(ccw, cw)),
-                    o.and(o.and(o.le(ratio, max_ratio), input), o.le(worst, cos_no)),
-                );
+                let may = o.and(limits, o.le(worst, cos_no));
                 o_flags[c] = o.add(flags, o.flag(may, MAY_MEET));
             }
             if whole {
@@ -789,9 +830,6 @@ impl WithSimd for Lanes<'_, '_> {
                     o.add(total, o.norm(o.sub(px, qx), o.sub(py, qy))),
                     to_driven,
                 );
-                o_l1[c] = l1;
-                o_l2[c] = l2;
-                o_l3[c] = l3;
                 o_members[c] = members;
                 o_grashof[c] = grashof;
             }
@@ -803,7 +841,7 @@ impl WithSimd for Lanes<'_, '_> {
 mod tests {
     use super::*;
     use crate::Pose;
-    use crate::design::map::Sampler;
+    use crate::design::map::{Columns, Sample, Sampler};
     use crate::design::{Constraints, DesignLimits, InputRequirement};
     use crate::geom::{Grid, Viewport};
     use crate::synthesis::Task;
@@ -901,15 +939,18 @@ mod tests {
             &|y, out| with_pre(y, out, true),
         ];
         let mut n = 0;
+        let nx = grid.nx();
+        let mut row = Columns::for_overwrite(nx).unwrap();
         for j in 0..grid.ny() {
             let y = grid.y(j);
+            let branch: Vec<bool> = (0..nx).map(|i| (i + j) % 3 != 0).collect();
             for lanes in widths {
                 lanes(y, &mut out);
-                for i in 0..grid.nx() {
+                k.write_row(&out, y, &xs, &branch, row.rows(nx).row(0));
+                for (i, &free) in branch.iter().enumerate() {
                     let a0 = Point2::new(grid.x(i), y);
-                    let free = (i + j) % 3 != 0;
                     let want = sampler.driving_sample(a0, driven, &c, free);
-                    let got = k.sample(&out, i, a0, free);
+                    let got = row.sample(i);
                     assert!(same(&want, &got), "sample ({i}, {j}) at {a0}");
                     n += 1;
                 }
@@ -937,7 +978,7 @@ mod tests {
                     want.acceptable
                         .then_some(want.min_transmission_rad.to_bits()),
                 );
-                let got = got.map(|a| a.map(|w| (w.acos() as f32).to_bits()));
+                let got = got.map(|a| a.map(|w| (acos1(w) as f32).to_bits()));
                 assert_eq!(got, want, "({i}, {j}) at {a0}");
                 n += 1;
             }
@@ -1009,10 +1050,10 @@ mod tests {
                 .chain(spread)
                 .filter(|w| (0.0..=1.0).contains(w))
             {
-                assert_eq!(band.at_least(w), w.acos() >= angle, "angle {angle}, w {w}");
+                assert_eq!(band.at_least(w), acos1(w) >= angle, "angle {angle}, w {w}");
                 if !band.may_reach(w) {
                     assert!(
-                        w.acos() < angle - 0.5 * CosBand::SLACK,
+                        acos1(w) < angle - 0.5 * CosBand::SLACK,
                         "angle {angle}, w {w}"
                     );
                 }

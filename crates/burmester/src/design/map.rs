@@ -10,7 +10,7 @@ use crate::design::constraints::Prepared;
 use crate::design::kernel::DrivingKernel;
 use crate::design::{Constraints, DesignLimits};
 use crate::engine::{Control, Rows, run_blocks};
-use crate::error::{InvalidInput, Result, try_vec};
+use crate::error::{InvalidInput, Result, try_vec, try_zeroed_vec};
 use crate::geom::Grid;
 use crate::linkage::LinkageFigures;
 use crate::linkage::figures::figures;
@@ -74,11 +74,22 @@ macro_rules! define_columns {
             /// The names of the columns, in order.
             pub const NAMES: &'static [&'static str] = &[$(stringify!($name)),*];
 
-            /// `n` samples of "no linkage".
-            pub(crate) fn new(n: usize) -> Result<Self> {
+            /// Room for `n` samples, zeroed, for a fill that writes every
+            /// sample (each path does: a sample with no linkage is
+            /// [`Sample::INVALID`]); the pages are first touched by the
+            /// threads that write them.
+            pub(crate) fn for_overwrite(n: usize) -> Result<Self> {
                 Ok(Columns {
-                    $($name: try_vec("a solution map", n, $invalid)?,)*
+                    $($name: try_zeroed_vec("a solution map", n)?,)*
                 })
+            }
+
+            /// Sample `i`, every column.
+            #[cfg(test)]
+            pub(crate) fn sample(&self, i: usize) -> Sample {
+                Sample {
+                    $($name: self.$name[i],)*
+                }
             }
 
             pub(crate) fn rows(&mut self, nx: usize) -> ColumnsMut<'_> {
@@ -123,6 +134,21 @@ macro_rules! define_columns {
             pub(crate) fn set(&mut self, i: usize, s: Sample) {
                 $(self.$name[i] = s.$name;)*
             }
+
+            /// Row `r` of the block, every column.
+            #[inline(always)]
+            pub(crate) fn row(&mut self, r: usize) -> ColumnsRow<'_> {
+                let at = r * self.nx..(r + 1) * self.nx;
+                ColumnsRow {
+                    $($name: &mut self.$name[at.clone()],)*
+                }
+            }
+        }
+
+        /// One row of every column, for a writer that fills a row column
+        /// by column.
+        pub(crate) struct ColumnsRow<'a> {
+            $(pub(crate) $name: &'a mut [$ty],)*
         }
     };
 }
@@ -296,6 +322,17 @@ impl<'a> Judge<'a> {
                     .is_ok_and(|fb| self.prepared.clearance_ok(&fb)))
     }
 
+    /// `1 / Task::span`: the size ratio per length.
+    pub(crate) fn inv_span(&self) -> f64 {
+        self.inv_span
+    }
+
+    /// Whether `acceptable` is branch-free and the limits alone (no base
+    /// plate, no obstacles).
+    pub(crate) fn unconstrained(&self) -> bool {
+        self.prepared.is_empty()
+    }
+
     /// The limits behind `acceptable`.
     pub(crate) fn limits(&self) -> &DesignLimits {
         self.limits
@@ -447,7 +484,7 @@ impl Filemon {
         let driven = self.driven();
         let mut branch = try_vec("a branch map", grid.len(), false)?;
         self.branch_map_into(grid, Method::Conic, &mut branch, control)?;
-        let mut columns = Columns::new(grid.len())?;
+        let mut columns = Columns::for_overwrite(grid.len())?;
         let c = sampler.fixed_pivots(&driven);
         match DrivingKernel::new(&sampler, driven, &c) {
             Some(kernel) => {
@@ -500,7 +537,7 @@ impl Task {
             }
             .into());
         }
-        let mut columns = Columns::new(grid.len())?;
+        let mut columns = Columns::for_overwrite(grid.len())?;
         let a = sampler.fixed_pivots(driving);
         fill(grid, &mut columns, control, |_, c0| {
             let Some(c) = sampler.moving_pivots(c0) else {

@@ -154,7 +154,7 @@ impl Task {
     ) -> Result<PairMap> {
         let context = self.pair_context(n_driving, n_driven, limits, constraints)?;
         let judge = Judge::new(self, limits, constraints)?;
-        let mut columns = Columns::new(context.grid.len())?;
+        let mut columns = Columns::for_overwrite(context.grid.len())?;
         // The moving pivots at the four poses, once per sample of each axis.
         let motion = self.motion();
         let pivots = |d: &Option<CurveDyad>| {

@@ -277,7 +277,7 @@ pub(crate) fn figures<const MODES: bool, const N: usize>(
         if inside(-g) {
             worst = fmax(worst, cos_mu(-1.0));
         }
-        worst.acos()
+        crate::simd::acos1(worst)
     };
     let min = fmin(fmin(l1, l2), fmin(l3, l4));
     let max = fmax(fmax(l1, l2), fmax(l3, l4));
