@@ -144,6 +144,8 @@ pub(crate) struct RowOut {
     flags: Vec<f64>,
     /// The Grashof class's code.
     grashof: Vec<f64>,
+    /// The flags as bytes ([`DrivingKernel::write_row`]'s scratch).
+    codes: Vec<u8>,
 }
 
 impl RowOut {
@@ -159,6 +161,7 @@ impl RowOut {
             members: v(),
             flags: v(),
             grashof: v(),
+            codes: vec![0; xs.len()],
         }
     }
 }
@@ -253,11 +256,12 @@ impl<'s> DrivingKernel<'s> {
     /// The lanes of the row at ordinate `y` with abscissae `xs` (padded)
     /// into `out`, on the widest SIMD the CPU has.
     #[inline]
-    pub(crate) fn row(&self, y: f64, xs: &[f64], out: &mut RowOut) {
+    pub(crate) fn row(&self, y: f64, xs: &[f64], local: &[f64], out: &mut RowOut) {
         Arch::new().dispatch(Lanes {
             k: self,
             y,
             xs,
+            local: Some(local),
             needed: None,
             pre: None,
             out,
@@ -284,6 +288,7 @@ impl<'s> DrivingKernel<'s> {
             k: self,
             y,
             xs,
+            local: None,
             needed: Some(needed),
             pre: Some(pre),
             out,
@@ -305,11 +310,25 @@ impl<'s> DrivingKernel<'s> {
         });
     }
 
+    /// The abscissae `x` in the frame of the closed form for the circle
+    /// point.
+    #[inline(always)]
+    fn local_x<S: Simd>(&self, o: Ops<S>, x: V<S>) -> V<S> {
+        o.div(o.sub(x, o.sp(self.origin[0])), o.sp(self.scale))
+    }
+
+    /// [`local_x`](Self::local_x) of every abscissa of the padded row
+    /// `xs`, computed once for the rows of a map: the lanes' bits.
+    pub(crate) fn local_xs(&self, xs: &[f64]) -> Vec<f64> {
+        let o = Ops(pulp::Scalar);
+        xs.iter().map(|&x| self.local_x(o, x)).collect()
+    }
+
     /// The driving candidates' lanes at abscissae `x`, ordinate `y`: the
     /// circle point by the closed form (`circle_point_fast`), the crank at
     /// the three poses (`Motion::first_to`), its length and pseudo-angles.
     #[inline(always)]
-    fn driving_lanes<S: Simd>(&self, o: Ops<S>, x: V<S>, y: f64) -> Pre<S> {
+    fn driving_lanes<S: Simd>(&self, o: Ops<S>, x: V<S>, yx: V<S>, y: f64) -> Pre<S> {
         let zero = o.sp(0.0);
         let (ox, oy) = (o.sp(self.origin[0]), o.sp(self.origin[1]));
         let scale = o.sp(self.scale);
@@ -320,7 +339,6 @@ impl<'s> DrivingKernel<'s> {
         let [t1, t2] = self.shift.map(|t| t.map(|v| o.sp(v)));
         let yy = o.sp((y - self.origin[1]) / self.scale);
         let y = o.sp(y);
-        let yx = o.div(o.sub(x, ox), scale);
         let ux = o.sub(o.mul(c12, yx), o.mul(s12, yy));
         let uy = o.add(o.mul(s12, yx), o.mul(c12, yy));
         let (wx, wy) = (o.sub(yx, q13x), o.sub(yy, q13y));
@@ -411,64 +429,69 @@ impl<'s> DrivingKernel<'s> {
     #[inline]
     pub(crate) fn write_row(
         &self,
-        out: &RowOut,
+        out: &mut RowOut,
         y: f64,
         xs: &[f64],
         branch: &[bool],
         row: ColumnsRow<'_>,
     ) {
         let nx = branch.len();
-        // The flags are small integers, zero where the linkage does not
-        // exist.
-        let flags: &[f64] = &out.flags[..nx];
-        let has = |f: f64, bit: u8| (f as u8) & bit != 0;
+        // The flags, small integers (zero where the linkage does not
+        // exist), as bytes: the low bits of `f + 2^52` (in loops the
+        // compiler vectorises, unlike `as u8`'s saturating conversion).
+        let small = |f: f64| (f + 4_503_599_627_370_496.0).to_bits() as u8;
+        let codes = &mut out.codes[..nx];
+        for (c, &f) in codes.iter_mut().zip(&out.flags) {
+            *c = small(f);
+        }
+        let codes = &*codes;
         let nan = f32::NAN;
-        for (d, &f) in row.valid.iter_mut().zip(flags) {
-            *d = has(f, VALID);
+        for (d, &c) in row.valid.iter_mut().zip(codes) {
+            *d = c & VALID != 0;
         }
-        for ((d, &f), &b) in row.branch_free.iter_mut().zip(flags).zip(branch) {
-            *d = b && has(f, VALID);
+        for ((d, &c), &b) in row.branch_free.iter_mut().zip(codes).zip(branch) {
+            *d = b & (c & VALID != 0);
         }
-        for ((d, &f), &g) in row.grashof.iter_mut().zip(flags).zip(&out.grashof) {
-            *d = if has(f, VALID) {
-                g as u8
+        for ((d, &c), &g) in row.grashof.iter_mut().zip(codes).zip(&out.grashof) {
+            *d = if c & VALID != 0 {
+                small(g)
             } else {
                 crate::SolutionMap::GRASHOF_NONE
             };
         }
-        for (d, &f) in row.input_full.iter_mut().zip(flags) {
-            *d = has(f, FULL);
+        for (d, &c) in row.input_full.iter_mut().zip(codes) {
+            *d = c & FULL != 0;
         }
-        for (d, &f) in row.direction.iter_mut().zip(flags) {
-            *d = i8::from(has(f, CCW)) - i8::from(has(f, CW));
+        for (d, &c) in row.direction.iter_mut().zip(codes) {
+            *d = i8::from(c & CCW != 0) - i8::from(c & CW != 0);
         }
-        for (d, &f) in row.one_circuit.iter_mut().zip(flags) {
-            *d = has(f, ONE_CIRCUIT);
+        for (d, &c) in row.one_circuit.iter_mut().zip(codes) {
+            *d = c & ONE_CIRCUIT != 0;
         }
-        for ((d, &f), &mu) in row.min_transmission_rad.iter_mut().zip(flags).zip(&out.mu) {
-            *d = if has(f, CCW | CW) { mu as f32 } else { nan };
+        for ((d, &c), &mu) in row.min_transmission_rad.iter_mut().zip(codes).zip(&out.mu) {
+            *d = if c & (CCW | CW) != 0 { mu as f32 } else { nan };
         }
-        for ((d, &f), &r) in row.link_ratio.iter_mut().zip(flags).zip(&out.ratio) {
-            *d = if has(f, VALID) { r as f32 } else { nan };
+        for ((d, &c), &r) in row.link_ratio.iter_mut().zip(codes).zip(&out.ratio) {
+            *d = if c & VALID != 0 { r as f32 } else { nan };
         }
-        for ((d, &f), &m) in row.size_ratio.iter_mut().zip(flags).zip(&out.members) {
-            *d = if has(f, VALID) {
+        for ((d, &c), &m) in row.size_ratio.iter_mut().zip(codes).zip(&out.members) {
+            *d = if c & VALID != 0 {
                 (m * self.inv_span) as f32
             } else {
                 nan
             };
         }
         let judge = &self.sampler.judge;
-        let acceptable = row.acceptable.iter_mut().zip(flags).zip(branch);
+        let acceptable = row.acceptable.iter_mut().zip(codes).zip(branch);
         if judge.unconstrained() {
-            for ((d, &f), &b) in acceptable {
-                *d = b && has(f, MEETS);
+            for ((d, &c), &b) in acceptable {
+                *d = b & (c & MEETS != 0);
             }
         } else {
-            for (i, ((d, &f), &b)) in acceptable.enumerate() {
+            for (i, ((d, &c), &b)) in acceptable.enumerate() {
                 let a0 = Point2::new(xs[i], y);
                 let driving = Dyad::new(a0, Point2::new(out.qx[i], out.qy[i]));
-                *d = judge.acceptable(b, || has(f, MEETS), &[a0], driving, self.driven);
+                *d = judge.acceptable(b, || c & MEETS != 0, &[a0], driving, self.driven);
             }
         }
     }
@@ -485,6 +508,7 @@ impl<'s> DrivingKernel<'s> {
         control: &Control<'_>,
     ) -> Result<()> {
         let nx = grid.nx();
+        let local = self.local_xs(xs);
         let init = || RowOut::new(xs);
         run_blocks_with(
             nx,
@@ -496,7 +520,7 @@ impl<'s> DrivingKernel<'s> {
                 for r in 0..rows {
                     let j = j0 + r;
                     let y = grid.y(j);
-                    self.row(y, xs, out);
+                    self.row(y, xs, &local, out);
                     let branch = &branch[j * nx..(j + 1) * nx];
                     self.write_row(out, y, xs, branch, block.row(r));
                 }
@@ -510,6 +534,8 @@ struct Lanes<'k, 'o> {
     k: &'k DrivingKernel<'k>,
     y: f64,
     xs: &'o [f64],
+    /// [`DrivingKernel::local_xs`] of `xs`, or computed here.
+    local: Option<&'o [f64]>,
     /// Compute only the groups of lanes with a needed sample.
     needed: Option<&'o [bool]>,
     /// The lanes of the driving candidates alone, computed beforehand
@@ -571,7 +597,7 @@ impl WithSimd for PreLanes<'_, '_> {
             if !group_needed(self.needed, c, n) {
                 continue;
             }
-            let p = self.k.driving_lanes(o, x, self.y);
+            let p = self.k.driving_lanes(o, x, self.k.local_x(o, x), self.y);
             qx[c] = p.qx;
             qy[c] = p.qy;
             has_q[c] = o.sel(p.has_q, o.sp(1.0), o.sp(0.0));
@@ -603,6 +629,24 @@ impl<S: Simd> Ops<S> {
         let upper = self.sel(self.ge(y, zero), p, self.add(four, p));
         let t = self.sel(self.ge(x, zero), upper, self.sub(two, p));
         self.sel(self.eq(d, zero), zero, t)
+    }
+    /// `(pseudo(r, v), pseudo(r, -v))` with one division: negating `v`
+    /// negates the dot and cross products and the quotient exactly (a zero
+    /// may change sign, which no comparison of a pseudo-angle sees).
+    #[inline(always)]
+    fn pseudo_pm(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> (V<S>, V<S>) {
+        let (zero, two, four) = (self.sp(0.0), self.sp(2.0), self.sp(4.0));
+        let x = self.dot(rx, ry, vx, vy);
+        let y = self.cross(rx, ry, vx, vy);
+        let d = self.add(self.abs(x), self.abs(y));
+        let flat = self.eq(d, zero);
+        let angle = |x: V<S>, y: V<S>, p: V<S>| {
+            let upper = self.sel(self.ge(y, zero), p, self.add(four, p));
+            let t = self.sel(self.ge(x, zero), upper, self.sub(two, p));
+            self.sel(flat, zero, t)
+        };
+        let p = self.div(y, d);
+        (angle(x, y, p), angle(self.neg(x), self.neg(y), self.neg(p)))
     }
     /// `|cos mu|` at `c = cc` from `[k0, k1, k2, 1 / (2 L3 L4)]` (`figures`).
     #[inline(always)]
@@ -672,7 +716,13 @@ impl WithSimd for Lanes<'_, '_> {
                 tf1,
                 tf2,
             } = match self.pre {
-                None => k.driving_lanes(o, x, self.y),
+                None => {
+                    let yx = match self.local {
+                        Some(local) => S::as_simd_f64s(local).0[c],
+                        None => k.local_x(o, x),
+                    };
+                    k.driving_lanes(o, x, yx, self.y)
+                }
                 Some(pre) => {
                     let col = |i: usize| S::as_simd_f64s(&pre.v[i]).0[c];
                     Pre {
@@ -699,8 +749,12 @@ impl WithSimd for Lanes<'_, '_> {
                 o.and(o.gt(l4, tiny), o.finite(total)),
             );
             // The input bounds (`input_bounds`).
-            let m = o.fmax(l1, l2);
-            let (g, cr) = (o.div(l1, m), o.div(l2, m));
+            // `l1 / m` and `l2 / m` with `m` the larger: one of them is
+            // `m / m`, exactly 1 for every linkage that exists.
+            let l1_max = o.gt(l1, l2);
+            let m = o.sel(l1_max, l1, l2);
+            let r = o.div(o.sel(l1_max, l2, l1), m);
+            let (g, cr) = (o.sel(l1_max, one, r), o.sel(l1_max, r, one));
             let (l3m, l4m) = (o.div(l3, m), o.div(l4, m));
             let (sum, diff) = (o.add(l3m, l4m), o.sub(l3m, l4m));
             let base = o.add(o.mul(g, g), o.mul(cr, cr));
@@ -753,9 +807,10 @@ impl WithSimd for Lanes<'_, '_> {
                 o.cos_mu(o.mul(o.dot(gx, gy, e0x, e0y), inv12), kk),
                 o.cos_mu(o.mul(o.dot(gx, gy, e2x, e2y), inv12), kk),
             );
-            let at_g = o.inside(o.pseudo(rx, ry, gx, gy), from, to, full);
+            let (p_g, p_minus_g) = o.pseudo_pm(rx, ry, gx, gy);
+            let at_g = o.inside(p_g, from, to, full);
             worst = o.sel(at_g, o.fmax(worst, o.cos_mu(one, kk)), worst);
-            let at_minus_g = o.inside(o.pseudo(rx, ry, o.neg(gx), o.neg(gy)), from, to, full);
+            let at_minus_g = o.inside(p_minus_g, from, to, full);
             worst = o.sel(at_minus_g, o.fmax(worst, o.cos_mu(o.sp(-1.0), kk)), worst);
             // Link ratio; the Grashof class and the members' length
             // (`members_length`) below, for a map.
@@ -861,6 +916,7 @@ mod tests {
             k,
             y,
             xs,
+            local: None,
             needed: None,
             pre: None,
             out,
@@ -934,7 +990,7 @@ mod tests {
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar128b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar256b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar512b),
-            &|y, out| k.row(y, &xs, out),
+            &|y, out| k.row(y, &xs, &k.local_xs(&xs), out),
             &|y, out| with_pre(y, out, false),
             &|y, out| with_pre(y, out, true),
         ];
@@ -946,7 +1002,7 @@ mod tests {
             let branch: Vec<bool> = (0..nx).map(|i| (i + j) % 3 != 0).collect();
             for lanes in widths {
                 lanes(y, &mut out);
-                k.write_row(&out, y, &xs, &branch, row.rows(nx).row(0));
+                k.write_row(&mut out, y, &xs, &branch, row.rows(nx).row(0));
                 for (i, &free) in branch.iter().enumerate() {
                     let a0 = Point2::new(grid.x(i), y);
                     let want = sampler.driving_sample(a0, driven, &c, free);
