@@ -146,7 +146,6 @@ pub(crate) trait Lanes: Copy {
     fn lt(self, a: Self::F, b: Self::F) -> Self::M;
     fn gt(self, a: Self::F, b: Self::F) -> Self::M;
     fn ge(self, a: Self::F, b: Self::F) -> Self::M;
-    fn le(self, a: Self::F, b: Self::F) -> Self::M;
     fn eq(self, a: Self::F, b: Self::F) -> Self::M;
     fn and(self, a: Self::M, b: Self::M) -> Self::M;
     /// `m ? a : b` per lane.
@@ -184,7 +183,6 @@ impl<S: Simd> Lanes for Ops<S> {
         lt(a: F, b: F) -> M;
         gt(a: F, b: F) -> M;
         ge(a: F, b: F) -> M;
-        le(a: F, b: F) -> M;
         eq(a: F, b: F) -> M;
         and(a: M, b: M) -> M;
         sel(m: M, a: F, b: F) -> F;
@@ -249,10 +247,6 @@ impl Lanes for Pair {
     #[inline(always)]
     fn ge(self, a: Self::F, b: Self::F) -> Self::M {
         a.simd_ge(b)
-    }
-    #[inline(always)]
-    fn le(self, a: Self::F, b: Self::F) -> Self::M {
-        a.simd_le(b)
     }
     #[inline(always)]
     fn eq(self, a: Self::F, b: Self::F) -> Self::M {
