@@ -7,9 +7,15 @@
 //! worst `|cos mu|` over the travel (see
 //! [`LinkageFigures`](crate::LinkageFigures) for the method). Here the same
 //! arithmetic runs on SIMD lanes, one candidate per lane, every branch of
-//! the scalar code turned into a select; what is left per sample (the
-//! Grashof class, one `acos`, the limits and constraints, the columns)
-//! runs in scalar code from the lanes' results.
+//! the scalar code turned into a select, the Grashof class, the minimum
+//! transmission angle (the crate's own [`acos`]) and the limits included;
+//! [`DrivingKernel::write_row`] then writes a map's row column by column
+//! from the lanes' results (the constraints, where there are any, per
+//! sample). Where the scalar code's quotients can be had with fewer
+//! divisions and the same bits, the lanes take them so: `l1 / m` and
+//! `l2 / m` with one (the other is `m / m = 1`), the pseudo-angles of `g`
+//! and `-g` from one quotient, the candidates' abscissae in the closed
+//! form's frame once per map.
 //!
 //! The atlas asks less of a row ([`DrivingKernel::row_where`]): only the
 //! groups of lanes that hold a branch-free sample, without the Grashof

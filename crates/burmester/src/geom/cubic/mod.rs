@@ -296,13 +296,20 @@ impl Cubic {
         [self.c[6], self.c[7], self.c[8], self.c[9]]
     }
 
+    /// The most Newton steps of [`refine_on_line`](Self::refine_on_line).
+    const REFINE_STEPS: usize = 64;
+
     /// A root `t` of `f(p + d t)` (local) refined by Newton steps on the
     /// curve's own value: the restriction's coefficients lose the digits
     /// that `p` far from the curve's frame cancels, the point's value does
-    /// not. A step is kept only while it lowers `|f|` (at most four).
+    /// not. A step is kept only while it lowers `|f|`; from a root the
+    /// cancellation put units of the plane away (a line from a point
+    /// millions of task sizes out) Newton gains a factor of a few per step
+    /// before it turns quadratic, so it may take up to
+    /// [`REFINE_STEPS`](Self::REFINE_STEPS).
     pub(crate) fn refine_on_line(&self, p: Vector2<f64>, d: Vector2<f64>, mut t: f64) -> f64 {
         let mut f = self.eval_local(p + d * t);
-        for _ in 0..4 {
+        for _ in 0..Self::REFINE_STEPS {
             if f == 0.0 {
                 break;
             }
