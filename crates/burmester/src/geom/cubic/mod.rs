@@ -228,8 +228,20 @@ impl Cubic {
     /// Whether `p` is on the curve within the distance `tol`, and its
     /// first-order distance: on when the distance is at most `tol`, or when
     /// `f(p)` is zero within rounding (at a singular point the first-order
-    /// distance means nothing).
-    pub(crate) fn is_on(&self, p: Point2<f64>, tol: f64) -> (bool, f64) {
+    /// distance means nothing). The rule of
+    /// [`ON_CURVE_TOLERANCE`](crate::synthesis::curves::ON_CURVE_TOLERANCE).
+    ///
+    /// ```
+    /// use burmester::{Cubic, Point2};
+    ///
+    /// // The nodal cubic y^2 = x^2 (x + 1): singular at the origin.
+    /// let c = Cubic::new([0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0])?;
+    /// assert!(c.is_on(Point2::new(0.0, 0.0), 1e-9).0);
+    /// assert!(c.is_on(Point2::new(3.0, 6.0), 1e-9).0);
+    /// assert!(!c.is_on(Point2::new(3.0, 6.1), 1e-9).0);
+    /// # Ok::<(), burmester::Error>(())
+    /// ```
+    pub fn is_on(&self, p: Point2<f64>, tol: f64) -> (bool, f64) {
         let d = self.distance_estimate(p);
         if d <= tol {
             return (true, d);
