@@ -232,7 +232,8 @@ impl Cubic {
     /// [`ON_CURVE_TOLERANCE`](crate::synthesis::curves::ON_CURVE_TOLERANCE).
     ///
     /// ```
-    /// use burmester::{Cubic, Point2};
+    /// use burmester::Point2;
+    /// use burmester::geom::Cubic;
     ///
     /// // The nodal cubic y^2 = x^2 (x + 1): singular at the origin.
     /// let c = Cubic::new([0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0])?;
