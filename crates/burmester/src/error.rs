@@ -759,10 +759,8 @@ pub fn try_vec<T: Clone + Send>(what: &'static str, n: usize, value: T) -> Resul
     /// over the threads instead of run before the parallel work starts.
     const PARALLEL_FILL_BYTES: usize = 1 << 20;
     let mut v = Vec::new();
-    v.try_reserve_exact(n).map_err(|_| Error::OutOfMemory {
-        what,
-        bytes: n.saturating_mul(core::mem::size_of::<T>()),
-    })?;
+    v.try_reserve_exact(n)
+        .map_err(|_| out_of_memory::<T>(what, n))?;
     if n.saturating_mul(core::mem::size_of::<T>()) >= PARALLEL_FILL_BYTES {
         use rayon::iter::ParallelExtend;
         v.par_extend(rayon::iter::repeat_n(value, n));
@@ -780,10 +778,15 @@ pub(crate) fn try_zeroed_vec<T: bytemuck::Zeroable>(
     what: &'static str,
     n: usize,
 ) -> Result<Vec<T>> {
-    bytemuck::allocation::try_zeroed_vec(n).map_err(|()| Error::OutOfMemory {
+    bytemuck::allocation::try_zeroed_vec(n).map_err(|()| out_of_memory::<T>(what, n))
+}
+
+/// [`Error::OutOfMemory`] for `n` values of `T`.
+fn out_of_memory<T>(what: &'static str, n: usize) -> Error {
+    Error::OutOfMemory {
         what,
         bytes: n.saturating_mul(core::mem::size_of::<T>()),
-    })
+    }
 }
 
 /// Checks that `value` is finite.

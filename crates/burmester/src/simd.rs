@@ -357,8 +357,8 @@ pub(crate) fn acos<L: Lanes>(o: L, x: L::F) -> L::F {
         19.562619833175948,
         -8.198089802484825,
     ];
-    /// With a leading coefficient 1.
-    const Q: [f64; 5] = [
+    const Q: [f64; 6] = [
+        1.0,
         -14.740913729888538,
         70.49610280856842,
         -147.1791292232726,
@@ -377,15 +377,12 @@ pub(crate) fn acos<L: Lanes>(o: L, x: L::F) -> L::F {
         o.sel(lo, o.sqrt(o.add(half, hx)), x),
     );
     let zz = o.mul(a, a);
-    let horner = |c: &[f64], lead: Option<f64>| {
-        let mut r = o.sp(lead.unwrap_or(c[0]));
-        let rest = if lead.is_some() { c } else { &c[1..] };
-        for &k in rest {
-            r = o.add(o.mul(r, zz), o.sp(k));
-        }
-        r
+    let horner = |c: &[f64; 6]| {
+        c[1..]
+            .iter()
+            .fold(o.sp(c[0]), |r, &k| o.add(o.mul(r, zz), o.sp(k)))
     };
-    let z = o.div(o.mul(zz, horner(&P, None)), horner(&Q, Some(1.0)));
+    let z = o.div(o.mul(zz, horner(&P)), horner(&Q));
     let asin = o.add(o.mul(a, z), a);
     let twice = o.add(asin, asin);
     // Between: (pi/4 - asin) + the lost bits + pi/4, as Cephes.
