@@ -377,12 +377,7 @@ pub(crate) fn acos<L: Lanes>(o: L, x: L::F) -> L::F {
         o.sel(lo, o.sqrt(o.add(half, hx)), x),
     );
     let zz = o.mul(a, a);
-    let horner = |c: &[f64; 6]| {
-        c[1..]
-            .iter()
-            .fold(o.sp(c[0]), |r, &k| o.add(o.mul(r, zz), o.sp(k)))
-    };
-    let z = o.div(o.mul(zz, horner(&P)), horner(&Q));
+    let z = o.div(o.mul(zz, horner(o, zz, &P)), horner(o, zz, &Q));
     let asin = o.add(o.mul(a, z), a);
     let twice = o.add(asin, asin);
     // Between: (pi/4 - asin) + the lost bits + pi/4, as Cephes.
@@ -396,6 +391,18 @@ pub(crate) fn acos<L: Lanes>(o: L, x: L::F) -> L::F {
         o.sp(FRAC_PI_2),
     );
     o.sel(hi, twice, o.sel(lo, below, mid))
+}
+
+/// `c[0] z^5 + c[1] z^4 + ... + c[5]` by Horner's rule. A function, not a
+/// closure, and always inlined: an outlined call here leaves the caller's
+/// SIMD context (the solution map ran at half speed that way).
+#[inline(always)]
+fn horner<L: Lanes>(o: L, z: L::F, c: &[f64; 6]) -> L::F {
+    let mut r = o.sp(c[0]);
+    for &k in &c[1..] {
+        r = o.add(o.mul(r, z), o.sp(k));
+    }
+    r
 }
 
 /// [`acos`] of one `f64`: the crate's `acos` wherever a result must be the
