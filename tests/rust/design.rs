@@ -917,3 +917,73 @@ fn ties_go_to_the_more_compact_linkage() {
         assert!(c.size_ratio[at(&w[0])] <= c.size_ratio[at(&w[1])]);
     }
 }
+
+/// Two solution maps' columns, floats by their bits (NaN where invalid).
+fn same_columns(a: &burmester::design::Columns, b: &burmester::design::Columns) -> bool {
+    let bits = |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    a.valid == b.valid
+        && a.branch_free == b.branch_free
+        && a.grashof == b.grashof
+        && a.input_full == b.input_full
+        && a.direction == b.direction
+        && a.one_circuit == b.one_circuit
+        && bits(&a.min_transmission_rad) == bits(&b.min_transmission_rad)
+        && bits(&a.link_ratio) == bits(&b.link_ratio)
+        && bits(&a.size_ratio) == bits(&b.size_ratio)
+        && a.acceptable == b.acceptable
+}
+
+#[test]
+fn maps_into_reused_columns_are_the_fresh_maps_bit_for_bit() {
+    let t = burmester::example::task();
+    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 61, 47).unwrap();
+    let limits = DesignLimits::default();
+    let none = Constraints::none();
+    let control = Control::new();
+    // Another task's map leaves other values in every column: the map
+    // written over it must not depend on them.
+    let moved = t
+        .transformed(1.7, 0.3, burmester::Vector2::new(1.0, -2.0))
+        .unwrap();
+    let mut reused = example_map(&moved, Point2::new(2.0, -1.0), &g).columns;
+    for c0 in [Point2::new(-1.5, 2.5), Point2::new(3.0, 1.0)] {
+        let f = t.filemon(c0).unwrap();
+        let fresh = f.solution_map(&g, &limits, &none, &control).unwrap();
+        assert!(!same_columns(&reused, &fresh.columns));
+        let context = f
+            .solution_map_into(&g, &limits, &none, reused.as_out(), &control)
+            .unwrap();
+        assert_eq!(context, fresh.context);
+        assert!(same_columns(&reused, &fresh.columns), "driven center {c0}");
+    }
+    let driving = t.dyad_from_center(Point2::new(-3.0, 4.0)).unwrap();
+    let fresh = t
+        .driven_solution_map(&driving, &g, &limits, &none, &control)
+        .unwrap();
+    let context = t
+        .driven_solution_map_into(&driving, &g, &limits, &none, reused.as_out(), &control)
+        .unwrap();
+    assert_eq!(context, fresh.context);
+    assert!(same_columns(&reused, &fresh.columns));
+    // A column of the wrong length is a typed error naming it.
+    let mut short = fresh.columns.clone();
+    short.link_ratio.pop();
+    let f = t.filemon(Point2::new(-1.5, 2.5)).unwrap();
+    let err = f
+        .solution_map_into(&g, &limits, &none, short.as_out(), &control)
+        .unwrap_err();
+    assert!(
+        matches!(
+            err,
+            burmester::Error::InvalidInput(burmester::InvalidInput::LengthMismatch {
+                name: "column link_ratio",
+                ..
+            })
+        ),
+        "{err}"
+    );
+    assert!(
+        t.driven_solution_map_into(&driving, &g, &limits, &none, short.as_out(), &control)
+            .is_err()
+    );
+}

@@ -92,9 +92,49 @@ macro_rules! define_columns {
                 }
             }
 
-            pub(crate) fn rows(&mut self, nx: usize) -> ColumnsMut<'_> {
-                ColumnsMut {
+            /// Every column borrowed for writing: an earlier map's columns
+            /// to fill again with [`Filemon::solution_map_into`] or
+            /// [`Task::driven_solution_map_into`], without new pages.
+            pub fn as_out(&mut self) -> ColumnsOut<'_> {
+                ColumnsOut {
                     $($name: &mut self.$name,)*
+                }
+            }
+
+            #[cfg(test)]
+            pub(crate) fn rows(&mut self, nx: usize) -> ColumnsMut<'_> {
+                self.as_out().rows(nx)
+            }
+        }
+
+        /// A solution map's columns to write: one slice per column, each
+        /// of one value per grid sample, row-major. From
+        /// [`Columns::as_out`] (to reuse a map's memory) or from buffers
+        /// the caller allocates (the Python binding's NumPy arrays).
+        #[derive(Debug)]
+        pub struct ColumnsOut<'a> {
+            $($(#[$doc])* pub $name: &'a mut [$ty],)*
+        }
+
+        impl<'a> ColumnsOut<'a> {
+            /// Every column has `n` values.
+            pub(crate) fn check_len(&self, n: usize) -> Result<()> {
+                $(
+                    if self.$name.len() != n {
+                        return Err(InvalidInput::LengthMismatch {
+                            name: concat!("column ", stringify!($name)),
+                            expected: n,
+                            found: self.$name.len(),
+                        }
+                        .into());
+                    }
+                )*
+                Ok(())
+            }
+
+            pub(crate) fn rows(self, nx: usize) -> ColumnsMut<'a> {
+                ColumnsMut {
+                    $($name: self.$name,)*
                     nx,
                 }
             }
@@ -435,7 +475,7 @@ impl<'a> Sampler<'a> {
 pub(crate) fn fill_rows(
     nx: usize,
     ny: usize,
-    columns: &mut Columns,
+    columns: ColumnsOut<'_>,
     control: &Control<'_>,
     eval: impl Fn(usize, usize) -> Sample + Sync,
 ) -> Result<()> {
@@ -452,7 +492,7 @@ pub(crate) fn fill_rows(
 /// Fills a map's columns from `eval(k, point)`, over blocks of rows.
 fn fill(
     grid: &Grid,
-    columns: &mut Columns,
+    columns: ColumnsOut<'_>,
     control: &Control<'_>,
     eval: impl Fn(usize, Point2<f64>) -> Sample + Sync,
 ) -> Result<()> {
@@ -480,30 +520,53 @@ impl Filemon {
         constraints: &Constraints,
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
+        let mut columns = Columns::for_overwrite(grid.len())?;
+        let context =
+            self.solution_map_into(grid, limits, constraints, columns.as_out(), control)?;
+        Ok(SolutionMap { context, columns })
+    }
+
+    /// [`solution_map`](Self::solution_map) into columns the caller owns:
+    /// an earlier map's ([`Columns::as_out`]), so that a map recomputed as
+    /// a designer moves a pose or a pivot costs no fresh pages, or buffers
+    /// from another allocator. Every value of every column is written, the
+    /// same bits as `solution_map`'s; returns what the map was computed
+    /// for.
+    ///
+    /// # Errors
+    ///
+    /// As [`solution_map`](Self::solution_map), and
+    /// [`InvalidInput::LengthMismatch`] when a column does not have
+    /// `grid.len()` values. When cancelled the columns hold a partial map.
+    pub fn solution_map_into(
+        &self,
+        grid: &Grid,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        out: ColumnsOut<'_>,
+        control: &Control<'_>,
+    ) -> Result<MapContext> {
+        out.check_len(grid.len())?;
         let sampler = Sampler::new(self.task(), limits, constraints)?;
         let driven = self.driven();
         let mut branch = try_vec("a branch map", grid.len(), false)?;
         self.branch_map_into(grid, Method::Conic, &mut branch, control)?;
-        let mut columns = Columns::for_overwrite(grid.len())?;
         let c = sampler.fixed_pivots(&driven);
         match DrivingKernel::new(&sampler, driven, &c) {
             Some(kernel) => {
                 let xs = DrivingKernel::padded_xs(grid);
-                kernel.fill(grid, &xs, &branch, columns.rows(grid.nx()), control)?;
+                kernel.fill(grid, &xs, &branch, out.rows(grid.nx()), control)?;
             }
-            None => fill(grid, &mut columns, control, |k, a0| {
+            None => fill(grid, out, control, |k, a0| {
                 sampler.driving_sample(a0, driven, &c, branch[k])
             })?,
         }
-        Ok(SolutionMap {
-            context: MapContext {
-                grid: *grid,
-                task: *self.task(),
-                varying: Varying::Driving { driven },
-                limits: *limits,
-                constraints: constraints.clone(),
-            },
-            columns,
+        Ok(MapContext {
+            grid: *grid,
+            task: *self.task(),
+            varying: Varying::Driving { driven },
+            limits: *limits,
+            constraints: constraints.clone(),
         })
     }
 }
@@ -526,6 +589,36 @@ impl Task {
         constraints: &Constraints,
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
+        let mut columns = Columns::for_overwrite(grid.len())?;
+        let context = self.driven_solution_map_into(
+            driving,
+            grid,
+            limits,
+            constraints,
+            columns.as_out(),
+            control,
+        )?;
+        Ok(SolutionMap { context, columns })
+    }
+
+    /// [`driven_solution_map`](Self::driven_solution_map) into columns the
+    /// caller owns, as [`Filemon::solution_map_into`].
+    ///
+    /// # Errors
+    ///
+    /// As [`driven_solution_map`](Self::driven_solution_map), and
+    /// [`InvalidInput::LengthMismatch`] when a column does not have
+    /// `grid.len()` values.
+    pub fn driven_solution_map_into(
+        &self,
+        driving: &Dyad,
+        grid: &Grid,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        out: ColumnsOut<'_>,
+        control: &Control<'_>,
+    ) -> Result<MapContext> {
+        out.check_len(grid.len())?;
         let sampler = Sampler::new(self, limits, constraints)?;
         let d = self.dyad_from_center(driving.center)?;
         let spread = (d.circle - driving.circle).norm() / (self.scale() + driving.length());
@@ -537,9 +630,8 @@ impl Task {
             }
             .into());
         }
-        let mut columns = Columns::for_overwrite(grid.len())?;
         let a = sampler.fixed_pivots(driving);
-        fill(grid, &mut columns, control, |_, c0| {
+        fill(grid, out, control, |_, c0| {
             let Some(c) = sampler.moving_pivots(c0) else {
                 return Sample::INVALID;
             };
@@ -549,15 +641,12 @@ impl Task {
                 .judge
                 .sample(fig, free, &[c0], *driving, Dyad::new(c0, c[0]))
         })?;
-        Ok(SolutionMap {
-            context: MapContext {
-                grid: *grid,
-                task: *self,
-                varying: Varying::Driven { driving: *driving },
-                limits: *limits,
-                constraints: constraints.clone(),
-            },
-            columns,
+        Ok(MapContext {
+            grid: *grid,
+            task: *self,
+            varying: Varying::Driven { driving: *driving },
+            limits: *limits,
+            constraints: constraints.clone(),
         })
     }
 }

@@ -43,6 +43,6 @@ mod rank;
 pub use atlas::{AtlasBest, AtlasCell, PivotAtlas};
 pub use constraints::Constraints;
 pub use limits::{DesignLimits, InputRequirement};
-pub use map::{Columns, MapContext, SolutionMap, Varying};
+pub use map::{Columns, ColumnsOut, MapContext, SolutionMap, Varying};
 pub use pairs::{Pair, PairContext, PairMap};
 pub use rank::{Pivot, RankBy, RankColumns};

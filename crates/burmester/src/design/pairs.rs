@@ -162,7 +162,7 @@ impl Task {
         };
         let a: Vec<_> = context.driving.iter().map(pivots).collect();
         let c: Vec<_> = context.driven.iter().map(pivots).collect();
-        fill_rows(n_driving, n_driven, &mut columns, control, |j, i| {
+        fill_rows(n_driving, n_driven, columns.as_out(), control, |j, i| {
             let (Some((da, pa)), Some((dc, pc))) = (&a[i], &c[j]) else {
                 return Sample::INVALID;
             };
