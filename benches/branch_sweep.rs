@@ -8,7 +8,8 @@
 //! * `margin`: the signed margin map (f32);
 //! * `solution_map`: the designer's full map (branch, Grashof, order and
 //!   circuit, minimum transmission angle over the travel, link ratio,
-//!   acceptable mask), up to 1024^2;
+//!   acceptable mask), up to 1024^2, into fresh columns;
+//! * `solution_map_into`: the same into an earlier map's columns;
 //! * `memset`: filling a byte buffer of the same size, the physical floor
 //!   for writing the map.
 //!
@@ -72,6 +73,24 @@ fn sweep(c: &mut Criterion) {
                 b.iter(|| {
                     f.solution_map(black_box(&grid), &limits, &none, &control)
                         .unwrap()
+                })
+            });
+            // The same map into the columns of an earlier one: no fresh
+            // pages, like `direct` into its existing buffer.
+            let mut columns = f
+                .solution_map(&grid, &limits, &none, &control)
+                .unwrap()
+                .columns;
+            g.bench_with_input(BenchmarkId::new("solution_map_into", n), &n, |b, _| {
+                b.iter(|| {
+                    f.solution_map_into(
+                        black_box(&grid),
+                        &limits,
+                        &none,
+                        columns.as_out(),
+                        &control,
+                    )
+                    .unwrap()
                 })
             });
             g.bench_with_input(BenchmarkId::new("simulate", n), &n, |b, _| {

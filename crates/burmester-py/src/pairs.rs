@@ -1,6 +1,6 @@
 //! `burmester.PairMap` and `burmester.Pair` (the core's `design::pairs`).
 
-use burmester::{Constraints, Control, Pair, PairContext, PairMap, Point2, RankBy, Task};
+use burmester::{Constraints, Control, Pair, PairContext, Point2, RankBy, Task};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
@@ -373,15 +373,15 @@ pub(crate) fn pair_map(
     progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PyPairMap> {
     let watch = n_driving.saturating_mul(n_driven) >= WATCH_MIN_SAMPLES / 16;
-    let map: PairMap = run(py, watch, progress, None, |control: &Control<'_>| {
-        task.pair_map(
-            n_driving,
-            n_driven,
-            &opts.limits,
-            &opts.constraints,
-            control,
-        )
-    })?;
-    let shape = map.context.shape();
-    PyPairMap::from_parts(py, map.context, shape, map.columns)
+    // The context first: the arguments are checked before NumPy allocates.
+    let context = py
+        .detach(|| task.pair_context(n_driving, n_driven, &opts.limits, &opts.constraints))
+        .py()?;
+    let shape = context.shape();
+    PyPairMap::filled(py, shape, |out| {
+        run(py, watch, progress, None, |control: &Control<'_>| {
+            context.map_into(out, control)?;
+            Ok(context)
+        })
+    })
 }

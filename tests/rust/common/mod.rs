@@ -85,3 +85,28 @@ pub(crate) fn poses_on_both_arcs(f: &Filemon, a0: Point2<f64>) -> bool {
         _ => false,
     }
 }
+
+/// Every column's values as bits (NaN equals NaN).
+pub(crate) fn bits(c: &burmester::design::Columns) -> Vec<Vec<u64>> {
+    vec![
+        c.valid.iter().map(|&v| u64::from(v)).collect(),
+        c.branch_free.iter().map(|&v| u64::from(v)).collect(),
+        c.grashof.iter().map(|&v| u64::from(v)).collect(),
+        c.input_full.iter().map(|&v| u64::from(v)).collect(),
+        c.direction.iter().map(|&v| v as u8 as u64).collect(),
+        c.one_circuit.iter().map(|&v| u64::from(v)).collect(),
+        c.min_transmission_rad
+            .iter()
+            .map(|v| u64::from(v.to_bits()))
+            .collect(),
+        c.link_ratio
+            .iter()
+            .map(|v| u64::from(v.to_bits()))
+            .collect(),
+        c.size_ratio
+            .iter()
+            .map(|v| u64::from(v.to_bits()))
+            .collect(),
+        c.acceptable.iter().map(|&v| u64::from(v)).collect(),
+    ]
+}

@@ -33,7 +33,7 @@
 
 use nalgebra::Point2;
 
-use crate::design::map::{Columns, Judge, Sample, fill_rows};
+use crate::design::map::{Columns, ColumnsOut, Judge, Sample, fill_rows};
 use crate::design::rank::{RankColumns, rank_samples, signed_distances};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
@@ -153,23 +153,8 @@ impl Task {
         control: &Control<'_>,
     ) -> Result<PairMap> {
         let context = self.pair_context(n_driving, n_driven, limits, constraints)?;
-        let judge = Judge::new(self, limits, constraints)?;
         let mut columns = Columns::for_overwrite(context.grid.len())?;
-        // The moving pivots at the four poses, once per sample of each axis.
-        let motion = self.motion();
-        let pivots = |d: &Option<CurveDyad>| {
-            d.map(|d| (d.dyad(), [0, 1, 2, 3].map(|k| motion.first_to(k, d.circle))))
-        };
-        let a: Vec<_> = context.driving.iter().map(pivots).collect();
-        let c: Vec<_> = context.driven.iter().map(pivots).collect();
-        fill_rows(n_driving, n_driven, columns.as_out(), control, |j, i| {
-            let (Some((da, pa)), Some((dc, pc))) = (&a[i], &c[j]) else {
-                return Sample::INVALID;
-            };
-            let fig = figures::<true, 4>(da.center, pa, dc.center, pc, judge.tiny);
-            let free = fig.is_some_and(|f| f.branch_free());
-            judge.sample(fig, free, &[da.center, dc.center], *da, *dc)
-        })?;
+        context.map_into(columns.as_out(), control)?;
         Ok(PairMap { context, columns })
     }
 
@@ -221,6 +206,58 @@ impl Task {
 }
 
 impl PairContext {
+    /// The map of this context into columns the caller owns (each of
+    /// `grid.len()` values, row-major with a row per driven sample): what
+    /// [`Task::pair_map`] computes into fresh columns, the same bits, as
+    /// [`Filemon::solution_map_into`](crate::Filemon::solution_map_into)
+    /// for the three-pose map.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::LengthMismatch`]
+    /// when a column has another length (or the context's dyads do not
+    /// match its grid), [`InvalidInput::NeedsPoses`]
+    /// when its task does not have four poses, as [`Task::pair_map`] for
+    /// its limits and constraints; [`Error::Cancelled`](crate::Error::Cancelled).
+    pub fn map_into(&self, out: ColumnsOut<'_>, control: &Control<'_>) -> Result<()> {
+        // The fields are public: a context put together by hand must still
+        // be one `pair_context` could give.
+        if self.task.len() != 4 {
+            return Err(self.task.needs(4, "PairContext::map_into"));
+        }
+        for (name, expected, found) in [
+            ("context driving dyads", self.grid.nx(), self.driving.len()),
+            ("context driven dyads", self.grid.ny(), self.driven.len()),
+        ] {
+            if found != expected {
+                return Err(InvalidInput::LengthMismatch {
+                    name,
+                    expected,
+                    found,
+                }
+                .into());
+            }
+        }
+        out.check_len(self.grid.len())?;
+        let (n_driving, n_driven) = (self.driving.len(), self.driven.len());
+        let judge = Judge::new(&self.task, &self.limits, &self.constraints)?;
+        // The moving pivots at the four poses, once per sample of each axis.
+        let motion = self.task.motion();
+        let pivots = |d: &Option<CurveDyad>| {
+            d.map(|d| (d.dyad(), [0, 1, 2, 3].map(|k| motion.first_to(k, d.circle))))
+        };
+        let a: Vec<_> = self.driving.iter().map(pivots).collect();
+        let c: Vec<_> = self.driven.iter().map(pivots).collect();
+        fill_rows(n_driving, n_driven, out, control, |j, i| {
+            let (Some((da, pa)), Some((dc, pc))) = (&a[i], &c[j]) else {
+                return Sample::INVALID;
+            };
+            let fig = figures::<true, 4>(da.center, pa, dc.center, pc, judge.tiny);
+            let free = fig.is_some_and(|f| f.branch_free());
+            judge.sample(fig, free, &[da.center, dc.center], *da, *dc)
+        })
+    }
+
     /// `(n_driven, n_driving)`: the rows and the columns of the map.
     pub fn shape(&self) -> (usize, usize) {
         (self.grid.ny(), self.grid.nx())
