@@ -163,7 +163,8 @@ fn danger(c: &Conic, q: RowQuad, y: f64, out: &mut [(f64, f64); 2]) -> Option<us
         return Some(1);
     }
     let disc = l * l - 4.0 * a * k;
-    let v = -l / (2.0 * a);
+    let inv_a = 1.0 / a;
+    let v = -0.5 * l * inv_a;
     // Below this the sign between the roots (or whether they exist) is
     // within rounding: |g(vertex)| = |disc| / (4 |a|) against K M(vertex).
     let tol = K * (l * l + 4.0 * (a * k).abs()).max(4.0 * a.abs() * c.row_magnitude(v, y));
@@ -182,8 +183,14 @@ fn danger(c: &Conic, q: RowQuad, y: f64, out: &mut [(f64, f64); 2]) -> Option<us
     }
     let sq = disc.sqrt();
     let qq = -0.5 * (l + l.signum() * sq);
-    out[0] = width(qq / a)?;
-    out[1] = width(k / qq)?;
+    // The slope |2 a r + l| at either root is sqrt(disc).
+    let per_magnitude = K / sq;
+    let band = |r: f64| {
+        let w = c.row_magnitude(r, y) * per_magnitude;
+        (r.is_finite() && w.is_finite()).then_some((r - w, r + w))
+    };
+    out[0] = band(qq * inv_a)?;
+    out[1] = band(k / qq)?;
     Some(2)
 }
 
