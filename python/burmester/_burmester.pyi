@@ -1281,7 +1281,8 @@ class SolutionMap:
     """The solution-space map (from :meth:`Filemon.solution_map` or
     :meth:`Task.driven_solution_map`): one read-only NumPy array per column,
     of shape ``(ny, nx)``, row ``j`` for ``y_j``, like
-    :meth:`Filemon.branch_map` (handed to NumPy without a copy)."""
+    :meth:`Filemon.branch_map` (allocated by NumPy and filled in place by the
+    core, no copy)."""
 
     columns: list[str]
     """The names of the columns, in order."""
