@@ -284,3 +284,57 @@ proptest! {
         prop_assert!(compared > n * n / 4, "{}", compared);
     }
 }
+
+/// Samples right on a curve: grids placed so that a column falls on a
+/// crossing of a conic with the row (within rounding), fine enough that
+/// its neighbours are within a few ulps, match point by point: the samples
+/// inside a root's rounding band are evaluated, and the runs on either side
+/// of a band that holds no sample still end there.
+#[test]
+fn runs_match_pointwise_with_samples_on_the_curves() {
+    let mut runner = TestRunner::deterministic();
+    let mut crossings = 0;
+    for _ in 0..30 {
+        let f = common::filemon(&mut runner, 8.0);
+        let Some(conics) = f.conics() else { continue };
+        for c in conics {
+            for y in [-3.0, -0.7, 0.4, 2.5] {
+                let row = burmester::Line {
+                    point: Point2::new(0.0, y),
+                    direction: burmester::Vector2::new(1.0, 0.0),
+                };
+                for p in c.intersect_line(&row) {
+                    if !(p.x.abs() < 50.0) {
+                        continue;
+                    }
+                    crossings += 1;
+                    // Column 64 of 129 at p.x, row 2 of 5 at p.y, for cell
+                    // sizes from far above to far below p's spacing.
+                    for h in [1e-2, 1e-9, 1e-13, 1e-15] {
+                        let (dx, dy) = (h * (1.0 + p.x.abs()), h * (1.0 + p.y.abs()));
+                        let g = Grid::from_bounds(
+                            p.x - 64.5 * dx,
+                            p.x + 64.5 * dx,
+                            p.y - 2.5 * dy,
+                            p.y + 2.5 * dy,
+                            129,
+                            5,
+                        )
+                        .unwrap();
+                        let runs = f.branch_map(&g, Method::Conic);
+                        let mut pw = vec![false; g.len()];
+                        f.branch_map_pointwise_into(&g, &mut pw).unwrap();
+                        assert_eq!(runs, pw, "crossing {p}, cell {h}");
+                        for j in 0..5 {
+                            for i in [0, 63, 64, 65, 128] {
+                                let want = f.is_branch_free(g.point(i, j), Method::Conic).unwrap();
+                                assert_eq!(runs[j * 129 + i], want, "crossing {p}, cell {h}");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(crossings > 50, "{crossings} crossings");
+}

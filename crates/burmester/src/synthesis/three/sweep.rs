@@ -104,6 +104,16 @@ impl<'a> Columns<'a> {
         }
     }
 
+    /// `xs.partition_point(pred)` for a `pred` that holds on every column
+    /// before `i` (a walk up from `i`).
+    #[inline]
+    fn walk_from(&self, mut i: usize, pred: impl Fn(f64) -> bool) -> usize {
+        while i < self.xs.len() && pred(self.xs[i]) {
+            i += 1;
+        }
+        i
+    }
+
     /// `xs.partition_point(pred)` for a `pred` that holds below `v` and
     /// fails above it (`x < v` or `x <= v`): the same index, found from
     /// the estimate `(v - x0) per_unit` and a walk of the few columns that
@@ -478,25 +488,23 @@ fn pointwise_row(ca: &Conic, cb: &Conic, y: f64, xs: &[f64], out: &mut [bool]) {
 /// One row by runs (module docs).
 fn conic_row(ca: &Conic, cb: &Conic, y: f64, xs: &[f64], out: &mut [bool]) {
     let (qa, qb) = quads(ca, cb, y);
-    let mut bands = [(0.0, 0.0); 4];
     let (mut ra, mut rb) = ([(0.0, 0.0); 2], [(0.0, 0.0); 2]);
     let (Some(na), Some(nb)) = (danger(ca, qa, y, &mut ra), danger(cb, qb, y, &mut rb)) else {
         pointwise_row(ca, cb, y, xs, out);
         return;
     };
-    let mut n = 0;
-    for &b in ra[..na].iter().chain(&rb[..nb]) {
-        bands[n] = b;
-        n += 1;
-    }
-    // Sample index ranges [lo, hi) of the bands, one sample of margin on
-    // each side, merged.
+    // The samples inside each band, `[first >= lo, first > hi)` (exact
+    // partition points of the columns; empty where no sample falls inside,
+    // and a run still ends there). A sample outside every band has the
+    // exact sign of both quadratics, which does not change between two
+    // bands, so a run between them takes the value of its first sample.
     let cols = Columns::new(xs);
     let mut zones = [(0usize, 0usize); 4];
-    for (z, &(lo, hi)) in zones.iter_mut().zip(&bands[..n]) {
-        let i0 = cols.partition_point(lo, |x| x < lo).saturating_sub(1);
-        let i1 = (cols.partition_point(hi, |x| x <= hi) + 1).min(xs.len());
-        *z = (i0, i1.max(i0));
+    let mut n = 0;
+    for &(lo, hi) in ra[..na].iter().chain(&rb[..nb]) {
+        let i0 = cols.partition_point(lo, |x| x < lo);
+        zones[n] = (i0, cols.walk_from(i0, |x| x <= hi));
+        n += 1;
     }
     let zones = &mut zones[..n];
     zones.sort_unstable_by_key(|z| z.0);
