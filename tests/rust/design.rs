@@ -972,3 +972,33 @@ fn maps_into_reused_columns_are_the_fresh_maps_bit_for_bit() {
             .is_err()
     );
 }
+
+#[test]
+fn bad_arguments_are_reported_before_the_columns_are_allocated() {
+    // The largest grid: its columns would take gigabytes; invalid limits and
+    // a dyad that is not the task's are refused without allocating them.
+    let side = (Grid::MAX_POINTS as f64).sqrt() as usize;
+    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, side, side).unwrap();
+    let t = burmester::example::task();
+    let f = t.filemon(Point2::new(4.0, -1.0)).unwrap();
+    let mut bad = DesignLimits::default();
+    bad.max_link_ratio = 0.5;
+    let (none, control) = (Constraints::none(), Control::new());
+    let invalid = |r: burmester::Result<burmester::SolutionMap>| {
+        matches!(r, Err(burmester::Error::InvalidInput(_)))
+    };
+    assert!(invalid(f.solution_map(&g, &bad, &none, &control)));
+    let driving = t.dyad_from_center(Point2::new(-3.0, 4.0)).unwrap();
+    assert!(invalid(
+        t.driven_solution_map(&driving, &g, &bad, &none, &control)
+    ));
+    let not_a_dyad = Dyad::new(Point2::new(-3.0, 4.0), Point2::new(0.0, 0.0));
+    let limits = DesignLimits::default();
+    assert!(invalid(t.driven_solution_map(
+        &not_a_dyad,
+        &g,
+        &limits,
+        &none,
+        &control
+    )));
+}

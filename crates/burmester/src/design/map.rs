@@ -502,6 +502,24 @@ fn fill(
     })
 }
 
+impl MapContext {
+    fn new(
+        grid: &Grid,
+        task: &Task,
+        varying: Varying,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+    ) -> Self {
+        MapContext {
+            grid: *grid,
+            task: *task,
+            varying,
+            limits: *limits,
+            constraints: constraints.clone(),
+        }
+    }
+}
+
 impl Filemon {
     /// The solution-space map over candidate driving center points `A0`
     /// on `grid` (see [`design`](crate::design)), following `control`. The
@@ -520,10 +538,14 @@ impl Filemon {
         constraints: &Constraints,
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
+        // The arguments are checked before the columns are allocated.
+        let sampler = Sampler::new(self.task(), limits, constraints)?;
         let mut columns = Columns::for_overwrite(grid.len())?;
-        let context =
-            self.solution_map_into(grid, limits, constraints, columns.as_out(), control)?;
-        Ok(SolutionMap { context, columns })
+        self.fill_solution_map(&sampler, grid, columns.as_out(), control)?;
+        Ok(SolutionMap {
+            context: self.map_context(grid, limits, constraints),
+            columns,
+        })
     }
 
     /// [`solution_map`](Self::solution_map) into columns the caller owns:
@@ -546,28 +568,45 @@ impl Filemon {
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
-        out.check_len(grid.len())?;
         let sampler = Sampler::new(self.task(), limits, constraints)?;
+        out.check_len(grid.len())?;
+        self.fill_solution_map(&sampler, grid, out, control)?;
+        Ok(self.map_context(grid, limits, constraints))
+    }
+
+    fn map_context(
+        &self,
+        grid: &Grid,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+    ) -> MapContext {
+        let varying = Varying::Driving {
+            driven: self.driven(),
+        };
+        MapContext::new(grid, self.task(), varying, limits, constraints)
+    }
+
+    /// The columns of the map, the arguments checked.
+    fn fill_solution_map(
+        &self,
+        sampler: &Sampler<'_>,
+        grid: &Grid,
+        out: ColumnsOut<'_>,
+        control: &Control<'_>,
+    ) -> Result<()> {
         let driven = self.driven();
         let mut branch = try_vec("a branch map", grid.len(), false)?;
         self.branch_map_into(grid, Method::Conic, &mut branch, control)?;
         let c = sampler.fixed_pivots(&driven);
-        match DrivingKernel::new(&sampler, driven, &c) {
+        match DrivingKernel::new(sampler, driven, &c) {
             Some(kernel) => {
                 let xs = DrivingKernel::padded_xs(grid);
-                kernel.fill(grid, &xs, &branch, out.rows(grid.nx()), control)?;
+                kernel.fill(grid, &xs, &branch, out.rows(grid.nx()), control)
             }
             None => fill(grid, out, control, |k, a0| {
                 sampler.driving_sample(a0, driven, &c, branch[k])
-            })?,
+            }),
         }
-        Ok(MapContext {
-            grid: *grid,
-            task: *self.task(),
-            varying: Varying::Driving { driven },
-            limits: *limits,
-            constraints: constraints.clone(),
-        })
     }
 }
 
@@ -589,16 +628,15 @@ impl Task {
         constraints: &Constraints,
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
+        // The arguments are checked before the columns are allocated.
+        let sampler = self.driven_sampler(driving, limits, constraints)?;
         let mut columns = Columns::for_overwrite(grid.len())?;
-        let context = self.driven_solution_map_into(
-            driving,
-            grid,
-            limits,
-            constraints,
-            columns.as_out(),
-            control,
-        )?;
-        Ok(SolutionMap { context, columns })
+        self.fill_driven_map(&sampler, driving, grid, columns.as_out(), control)?;
+        let varying = Varying::Driven { driving: *driving };
+        Ok(SolutionMap {
+            context: MapContext::new(grid, self, varying, limits, constraints),
+            columns,
+        })
     }
 
     /// [`driven_solution_map`](Self::driven_solution_map) into columns the
@@ -618,7 +656,21 @@ impl Task {
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
+        let sampler = self.driven_sampler(driving, limits, constraints)?;
         out.check_len(grid.len())?;
+        self.fill_driven_map(&sampler, driving, grid, out, control)?;
+        let varying = Varying::Driven { driving: *driving };
+        Ok(MapContext::new(grid, self, varying, limits, constraints))
+    }
+
+    /// The sampler of the driven map, once the driving dyad is checked to
+    /// be one of this task.
+    fn driven_sampler<'a>(
+        &'a self,
+        driving: &Dyad,
+        limits: &'a DesignLimits,
+        constraints: &Constraints,
+    ) -> Result<Sampler<'a>> {
         let sampler = Sampler::new(self, limits, constraints)?;
         let d = self.dyad_from_center(driving.center)?;
         let spread = (d.circle - driving.circle).norm() / (self.scale() + driving.length());
@@ -630,6 +682,18 @@ impl Task {
             }
             .into());
         }
+        Ok(sampler)
+    }
+
+    /// The columns of the driven map, the arguments checked.
+    fn fill_driven_map(
+        &self,
+        sampler: &Sampler<'_>,
+        driving: &Dyad,
+        grid: &Grid,
+        out: ColumnsOut<'_>,
+        control: &Control<'_>,
+    ) -> Result<()> {
         let a = sampler.fixed_pivots(driving);
         fill(grid, out, control, |_, c0| {
             let Some(c) = sampler.moving_pivots(c0) else {
@@ -640,13 +704,6 @@ impl Task {
             sampler
                 .judge
                 .sample(fig, free, &[c0], *driving, Dyad::new(c0, c[0]))
-        })?;
-        Ok(MapContext {
-            grid: *grid,
-            task: *self,
-            varying: Varying::Driven { driving: *driving },
-            limits: *limits,
-            constraints: constraints.clone(),
         })
     }
 }
