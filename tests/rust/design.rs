@@ -981,8 +981,10 @@ fn bad_arguments_are_reported_before_the_columns_are_allocated() {
     let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, side, side).unwrap();
     let t = burmester::example::task();
     let f = t.filemon(Point2::new(4.0, -1.0)).unwrap();
-    let mut bad = DesignLimits::default();
-    bad.max_link_ratio = 0.5;
+    let bad = DesignLimits {
+        max_link_ratio: 0.5,
+        ..DesignLimits::default()
+    };
     let (none, control) = (Constraints::none(), Control::new());
     let invalid = |r: burmester::Result<burmester::SolutionMap>| {
         matches!(r, Err(burmester::Error::InvalidInput(_)))
