@@ -1,6 +1,7 @@
 """The solution-space map from Python: arrays, limits, constraints, best pivots."""
 
 import math
+import pickle
 
 import numpy as np
 import pytest
@@ -245,3 +246,21 @@ def test_pareto_front_is_nondominated(f):
     assert m.best_pivots(3, rank_by="pareto") == m.best_pivots(3, rank_by="pareto")
     with pytest.raises(InvalidInputError, match="balanced"):
         m.best_pivots(3, rank_by="beauty")  # type: ignore[arg-type]
+
+
+def test_large_maps_are_numpy_arrays_the_core_fills_in_place(f):
+    # Above 1 MiB a column is allocated by numpy.empty (huge pages on large
+    # arrays) and written by the core in place: the arrays own their data.
+    m = f.solution_map(*VP, 1100, 1000)
+    for name in m.columns:
+        a = getattr(m, name)
+        assert a.shape == (1000, 1100) and a.flags["C_CONTIGUOUS"] and a.flags["OWNDATA"], name
+        assert not a.flags["WRITEABLE"], name
+    assert np.array_equal(m.branch_free, f.branch_map(*VP, 1100, 1000))
+    assert not (m.acceptable & ~m.branch_free).any()
+    assert (m.grashof[~m.valid] == 255).all() and m.valid.any()
+    # Every value is written: the same map again (NumPy may hand back the
+    # pages of a freed one) is the same bits, and pickles to an equal map.
+    again = f.solution_map(*VP, 1100, 1000)
+    assert again == m
+    assert pickle.loads(pickle.dumps(m)) == m

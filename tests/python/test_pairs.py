@@ -195,3 +195,13 @@ def test_bad_input(task):
         m.best_pairs(3, rank_by="best")
     assert isinstance(m.best_pairs(0), list) and not m.best_pairs(0)
     assert burmester.Pair is type(task.pair_map(64).best_pairs(1)[0])
+
+
+def test_a_large_pair_map_is_numpy_arrays_the_core_fills_in_place(task):
+    m = task.pair_map(1100, 1000)
+    for col in PairMap.columns:
+        a = getattr(m, col)
+        assert a.shape == (1000, 1100) and a.flags["C_CONTIGUOUS"] and a.flags["OWNDATA"], col
+        assert not a.flags["WRITEABLE"], col
+    assert m.valid.any() and not (m.acceptable & ~m.branch_free).any()
+    assert task.pair_map(1100, 1000) == m
