@@ -295,8 +295,6 @@ pub(crate) fn atan2<L: Lanes>(o: L, y: L::F, x: L::F) -> L::F {
     /// are scaled by `2^-8` first (exactly: they are normal numbers there).
     const HUGE: f64 = 8.98846567431158e307; // 2^1023
     let zero = o.sp(0.0);
-    // `a * b + c`, unfused.
-    let ma = |a: L::F, b: L::F, c: L::F| o.add(o.mul(a, b), c);
     // Into the first octant: 0 <= y2 <= x2.
     let (x1, y1) = (o.abs(x), o.abs(y));
     let swap = o.gt(y1, x1);
@@ -326,9 +324,17 @@ pub(crate) fn atan2<L: Lanes>(o: L, y: L::F, x: L::F) -> L::F {
         let z2 = o.mul(zz, zz);
         (z2, o.mul(z2, z2))
     };
-    let px = o.add(ma(ma(p3, zz, p2), z2, ma(p1, zz, p0)), o.mul(p4, z4));
-    let qx = ma(z2, ma(zz, q3, q2), ma(z4, o.add(q4, zz), ma(zz, q1, q0)));
-    let re = ma(o.div(px, qx), o.mul(z, zz), z);
+    let px = o.add(
+        mul_add(o, mul_add(o, p3, zz, p2), z2, mul_add(o, p1, zz, p0)),
+        o.mul(p4, z4),
+    );
+    let qx = mul_add(
+        o,
+        z2,
+        mul_add(o, zz, q3, q2),
+        mul_add(o, z4, o.add(q4, zz), mul_add(o, zz, q1, q0)),
+    );
+    let re = mul_add(o, o.div(px, qx), o.mul(z, zz), z);
     let re = o.add(re, o.add(s, fac));
     // Back into place.
     let re = o.sel(swap, o.sub(o.sp(FRAC_PI_2), re), re);
@@ -391,6 +397,12 @@ pub(crate) fn acos<L: Lanes>(o: L, x: L::F) -> L::F {
         o.sp(FRAC_PI_2),
     );
     o.sel(hi, twice, o.sel(lo, below, mid))
+}
+
+/// `a * b + c`, unfused (the same bits on every lane width and CPU).
+#[inline(always)]
+fn mul_add<L: Lanes>(o: L, a: L::F, b: L::F, c: L::F) -> L::F {
+    o.add(o.mul(a, b), c)
 }
 
 /// `c[0] z^5 + c[1] z^4 + ... + c[5]` by Horner's rule. A function, not a
