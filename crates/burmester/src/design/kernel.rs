@@ -627,32 +627,36 @@ impl<S: Simd> Ops<S> {
     /// `pseudo_angle(r, v)`: the monotone pseudo-angle of `v` from `r`.
     #[inline(always)]
     fn pseudo(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> V<S> {
-        let (zero, two, four) = (self.sp(0.0), self.sp(2.0), self.sp(4.0));
         let x = self.dot(rx, ry, vx, vy);
         let y = self.cross(rx, ry, vx, vy);
         let d = self.add(self.abs(x), self.abs(y));
-        let p = self.div(y, d);
-        let upper = self.sel(self.ge(y, zero), p, self.add(four, p));
-        let t = self.sel(self.ge(x, zero), upper, self.sub(two, p));
-        self.sel(self.eq(d, zero), zero, t)
+        self.pseudo_of(x, y, self.div(y, d), self.eq(d, self.sp(0.0)))
     }
     /// `(pseudo(r, v), pseudo(r, -v))` with one division: negating `v`
     /// negates the dot and cross products and the quotient exactly (a zero
     /// may change sign, which no comparison of a pseudo-angle sees).
     #[inline(always)]
     fn pseudo_pm(self, rx: V<S>, ry: V<S>, vx: V<S>, vy: V<S>) -> (V<S>, V<S>) {
-        let (zero, two, four) = (self.sp(0.0), self.sp(2.0), self.sp(4.0));
         let x = self.dot(rx, ry, vx, vy);
         let y = self.cross(rx, ry, vx, vy);
         let d = self.add(self.abs(x), self.abs(y));
-        let flat = self.eq(d, zero);
-        let angle = |x: V<S>, y: V<S>, p: V<S>| {
-            let upper = self.sel(self.ge(y, zero), p, self.add(four, p));
-            let t = self.sel(self.ge(x, zero), upper, self.sub(two, p));
-            self.sel(flat, zero, t)
-        };
+        let flat = self.eq(d, self.sp(0.0));
         let p = self.div(y, d);
-        (angle(x, y, p), angle(self.neg(x), self.neg(y), self.neg(p)))
+        (
+            self.pseudo_of(x, y, p, flat),
+            self.pseudo_of(self.neg(x), self.neg(y), self.neg(p), flat),
+        )
+    }
+    /// The pseudo-angle from the dot product `x`, the cross product `y`,
+    /// their quotient `p = y / (|x| + |y|)`, and whether both are zero
+    /// (`flat`, the angle 0). A method, not a closure: always inlined into
+    /// the dispatched lanes.
+    #[inline(always)]
+    fn pseudo_of(self, x: V<S>, y: V<S>, p: V<S>, flat: M<S>) -> V<S> {
+        let (zero, two, four) = (self.sp(0.0), self.sp(2.0), self.sp(4.0));
+        let upper = self.sel(self.ge(y, zero), p, self.add(four, p));
+        let t = self.sel(self.ge(x, zero), upper, self.sub(two, p));
+        self.sel(flat, zero, t)
     }
     /// `|cos mu|` at `c = cc` from `[k0, k1, k2, 1 / (2 L3 L4)]` (`figures`).
     #[inline(always)]
