@@ -88,7 +88,7 @@ impl AtlasCell {
 
 /// The pivot-pair atlas: what it was computed for, and one
 /// [`AtlasCell`] per driven center, row-major.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct PivotAtlas {
     /// The task.
     pub task: Task,
@@ -102,6 +102,25 @@ pub struct PivotAtlas {
     pub constraints: Constraints,
     /// One cell per driven sample, row-major.
     pub cells: Vec<AtlasCell>,
+}
+
+/// The task, both grids, the limits and constraints, and how many driven
+/// centers have an acceptable driving pivot, not every cell.
+impl core::fmt::Debug for PivotAtlas {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("PivotAtlas")
+            .field("task", &self.task)
+            .field("driven", &self.driven)
+            .field("driving", &self.driving)
+            .field("limits", &self.limits)
+            .field("constraints", &self.constraints)
+            .field("cells", &self.cells.len())
+            .field(
+                "with_acceptable",
+                &self.cells.iter().filter(|c| c.count > 0).count(),
+            )
+            .finish()
+    }
 }
 
 impl PivotAtlas {

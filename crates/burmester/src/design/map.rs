@@ -247,12 +247,26 @@ pub struct MapContext {
 }
 
 /// The solution-space map: what it was computed for, and its columns.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct SolutionMap {
     /// What the map was computed for.
     pub context: MapContext,
     /// One value per grid sample of every figure.
     pub columns: Columns,
+}
+
+/// What the map was computed for and how many samples are acceptable, not
+/// every value of every column (those are [`SolutionMap::columns`]).
+impl core::fmt::Debug for SolutionMap {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let count = |c: &[bool]| c.iter().filter(|&&b| b).count();
+        f.debug_struct("SolutionMap")
+            .field("context", &self.context)
+            .field("samples", &self.columns.valid.len())
+            .field("branch_free", &count(&self.columns.branch_free))
+            .field("acceptable", &count(&self.columns.acceptable))
+            .finish()
+    }
 }
 
 impl SolutionMap {

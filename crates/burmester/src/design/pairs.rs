@@ -47,7 +47,7 @@ use crate::synthesis::{SynthesizedFourBar, Task};
 /// and the limits and constraints. Holds the per-pair logic (the linkage
 /// of a pair, the margins, the best pairs), so that the columns can live
 /// elsewhere (for example in NumPy).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct PairContext {
     /// The parameter plane: `x` the driving dyad's curve parameter (one
     /// column per sample), `y` the driven dyad's (one row per sample), both
@@ -65,14 +65,43 @@ pub struct PairContext {
     pub constraints: Constraints,
 }
 
+/// The parameter plane, the task, how many dyads each axis has, the
+/// limits and the constraints, not every dyad.
+impl core::fmt::Debug for PairContext {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("PairContext")
+            .field("grid", &self.grid)
+            .field("task", &self.task)
+            .field("driving_dyads", &self.driving.len())
+            .field("driven_dyads", &self.driven.len())
+            .field("limits", &self.limits)
+            .field("constraints", &self.constraints)
+            .finish()
+    }
+}
+
 /// The pair map: what it was computed for, and its columns (row-major,
 /// `n_driven` rows of `n_driving` pairs).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct PairMap {
     /// What the map was computed for.
     pub context: PairContext,
     /// One value per pair of every figure, as in the three-pose map.
     pub columns: Columns,
+}
+
+/// What the map was computed for and how many pairs are acceptable, not
+/// every value of every column (those are [`PairMap::columns`]).
+impl core::fmt::Debug for PairMap {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let count = |c: &[bool]| c.iter().filter(|&&b| b).count();
+        f.debug_struct("PairMap")
+            .field("context", &self.context)
+            .field("pairs", &self.columns.valid.len())
+            .field("branch_free", &count(&self.columns.branch_free))
+            .field("acceptable", &count(&self.columns.acceptable))
+            .finish()
+    }
 }
 
 /// A pair of dyads of a pair map with its linkage.

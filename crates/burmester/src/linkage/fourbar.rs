@@ -317,7 +317,7 @@ const SOLVE_PARALLEL_MIN: usize = 1 << 14;
 /// assert!((c.theta4.to_degrees() - 57.325).abs() < 5e-4);
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct FourBar {
     ground: f64,
     crank: f64,
@@ -335,6 +335,22 @@ pub struct FourBar {
     diff_n: f64,
     /// `(L3^2 - L4^2) / scale^2`.
     sq_diff_n: f64,
+}
+
+/// The lengths, the fixed pivots and the Grashof type, not the normalized
+/// quantities the solver keeps.
+impl core::fmt::Debug for FourBar {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("FourBar")
+            .field("ground", &self.ground)
+            .field("crank", &self.crank)
+            .field("coupler", &self.coupler)
+            .field("rocker", &self.rocker)
+            .field("input_pivot", &self.origin)
+            .field("output_pivot", &self.output_pivot())
+            .field("grashof", &self.grashof())
+            .finish()
+    }
 }
 
 impl FourBar {

@@ -46,13 +46,23 @@ use crate::tolerance;
 /// assert!((task.center_point(x)? - y).norm() < 1e-12);
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Task {
     motion: Motion,
     /// The unit of the relative tolerances (see [`Task::scale`]).
     scale: f64,
     /// The three-position maps (three poses only).
     three: Option<Maps>,
+}
+
+/// The poses and their poles, not the maps kept for three poses.
+impl core::fmt::Debug for Task {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Task")
+            .field("poses", &self.poses())
+            .field("poles", &self.poles())
+            .finish()
+    }
 }
 
 impl Task {

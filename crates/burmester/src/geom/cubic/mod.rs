@@ -94,12 +94,23 @@ const KIND_TOLERANCE: f64 = 1e-12;
 /// assert!(trace.components.iter().any(|k| k.closed));
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Cubic {
     /// Local coefficients, ascending order, largest magnitude 1.
     c: [f64; 10],
     origin: Point2<f64>,
     scale: f64,
+}
+
+/// The degree and the ten coefficients in world coordinates (the order of
+/// [`Cubic::coefficients`]), not the local frame the cubic is kept in.
+impl core::fmt::Debug for Cubic {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Cubic")
+            .field("degree", &self.degree())
+            .field("coefficients", &self.coefficients())
+            .finish()
+    }
 }
 
 impl LocalFrame for Cubic {

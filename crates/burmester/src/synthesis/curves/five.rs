@@ -53,11 +53,21 @@ pub struct BurmesterFourBar {
 /// `a_k(G) . z = b_k(G)` in the unknowns `(G, z)`, and kept when the five
 /// positions of its circle point are concyclic within
 /// [`BURMESTER_RESIDUAL`].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct FivePositions {
     motion: Motion,
     points: Vec<Dyad>,
     curves: [Cubic; 2],
+}
+
+/// The poses and the Burmester points, not the motion's internals.
+impl core::fmt::Debug for FivePositions {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("FivePositions")
+            .field("poses", &self.poses())
+            .field("burmester_points", &self.points)
+            .finish()
+    }
 }
 
 impl FivePositions {

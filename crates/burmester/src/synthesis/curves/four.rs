@@ -242,12 +242,23 @@ impl Compat {
 /// }
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct FourPositions {
     motion: Motion,
     center_curve: Cubic,
     circle_curve: Cubic,
     compat: Option<Compat>,
+}
+
+/// The poses and the two curves, not the motion's internals.
+impl core::fmt::Debug for FourPositions {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("FourPositions")
+            .field("poses", &self.poses())
+            .field("center_point_curve", &self.center_curve)
+            .field("circle_point_curve", &self.circle_curve)
+            .finish()
+    }
 }
 
 impl FourPositions {

@@ -50,7 +50,7 @@ pub(crate) enum MapDir {
 /// The three-position maps of a task of three poses: its poles, image
 /// poles, pole circles, and the exact maps between circle points and center
 /// points. Get it from [`Task::cremona`](crate::Task::cremona).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Cremona {
     motion: Motion,
     /// `P12, P13, P23`.
@@ -67,6 +67,16 @@ pub struct Cremona {
     /// `(cos, sin)` of `theta12/2` and `theta13/2`.
     half12: (f64, f64),
     half13: (f64, f64),
+}
+
+/// The poles `P12, P13, P23` and the image poles, not the local frame.
+impl core::fmt::Debug for Cremona {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Cremona")
+            .field("poles", &self.poles())
+            .field("image_poles", &self.image_poles())
+            .finish()
+    }
 }
 
 impl LocalFrame for Cremona {

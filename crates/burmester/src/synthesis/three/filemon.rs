@@ -124,7 +124,7 @@ fn rot_neg((c, s): (f64, f64)) -> Matrix2<f64> {
 
 /// Filemon's construction for a driven dyad of a three-pose task, with the
 /// transformed lines.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Filemon {
     task: Task,
     maps: Maps,
@@ -134,6 +134,20 @@ pub struct Filemon {
     /// The finite poles, then `C0`, in the first `n_special` entries.
     special: [Point2<f64>; 4],
     n_special: usize,
+}
+
+/// The task, the driven dyad `(C0, C1)`, the fixed pivot's images `C'k`
+/// and the two transformed Filemon lines (when the circle points are not
+/// all defective), not the maps and frames kept to evaluate them.
+impl core::fmt::Debug for Filemon {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Filemon")
+            .field("task", &self.task)
+            .field("driven", &self.driven())
+            .field("fixed_pivot_images", &self.fixed_pivot_images())
+            .field("conics", &self.conics())
+            .finish()
+    }
 }
 
 impl Task {
