@@ -51,6 +51,10 @@ Point = Tuple[float, float]
 Pose = Tuple[float, float, float]
 Line = Tuple[Point, Point]
 Extent = Tuple[float, float, float, float]
+#: A grid's six numbers ``(xmin, xmax, ymin, ymax, nx, ny)``: every
+#: grid-taking method takes a :class:`Grid`, this tuple, or the six numbers
+#: one by one.
+GridTuple = Tuple[float, float, float, float, int, int]
 Mode = Literal["open", "crossed"]
 Method = Literal["conic", "direct", "simulate"]
 BranchClass = Literal["free", "defective", "boundary"]
@@ -210,6 +214,10 @@ class Conic:
         each branch separately, never joined across infinity, the parts near
         the asymptotes included. ``tolerance`` is the largest chord error
         (default: a thousandth of the viewport's diagonal)."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): every
+        component in the frame the cubic is kept in; PNG bytes, or None
+        when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
@@ -741,7 +749,7 @@ class Task:
     def driven_solution_map(
         self,
         driving_center: Point,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         *,
         limits: Optional[DesignLimits] = None,
         min_transmission_deg: Optional[float] = None,
@@ -756,7 +764,7 @@ class Task:
         """The solution-space map the other way round: the driving dyad with
         this center point is fixed and the candidates are driven center
         points ``C0`` on ``grid`` (a :class:`Grid`, or its six numbers
-        ``xmin, xmax, ymin, ymax, nx, ny``); the branch-free flag is the sign
+        ``xmin, xmax, ymin, ymax, nx, ny`` as a tuple or one by one); the branch-free flag is the sign
         test at the poses. Keywords as :meth:`Filemon.solution_map`."""
     @overload
     def driven_solution_map(
@@ -965,7 +973,7 @@ class Filemon:
     @overload
     def branch_map(
         self,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         /,
         *,
         method: Method = "conic",
@@ -975,7 +983,7 @@ class Filemon:
         """Classify every candidate driving center point of a grid.
 
         ``grid`` is a :class:`Grid`, or its six numbers ``xmin, xmax, ymin,
-        ymax, nx, ny``; ``method`` (``"conic"``, ``"direct"`` or
+        ymax, nx, ny`` as a tuple or one by one; ``method`` (``"conic"``, ``"direct"`` or
         ``"simulate"``, as :meth:`is_branch_free`) may follow them
         positionally. The result has shape ``(ny, nx)``, row ``j`` for
         ``y_j``, True where strictly branch-free. Points on a curve, at a
@@ -995,7 +1003,7 @@ class Filemon:
     @overload
     def branch_map(
         self,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         method: Method,
         /,
         *,
@@ -1035,7 +1043,7 @@ class Filemon:
     @overload
     def margin_map(
         self,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         /,
         *,
         out: Optional[npt.NDArray[np.float32]] = None,
@@ -1064,7 +1072,7 @@ class Filemon:
     @overload
     def solution_map(
         self,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         /,
         *,
         limits: Optional[DesignLimits] = None,
@@ -1553,6 +1561,10 @@ class PairMap:
         """Every acceptable pair on the Pareto front of the minimum
         transmission angle and the size ratio, from the most compact to the
         best transmission."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`,
+        :func:`burmester.plot.pair_map`): PNG bytes, or None when matplotlib
+        is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod

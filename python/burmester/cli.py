@@ -69,32 +69,43 @@ class _Parser(argparse.ArgumentParser):
 
 
 class ProgressBar:
-    """A one-line text progress bar, redrawn in place on a terminal stream.
+    """A progress bar with the share done, the rate and the time left, drawn
+    in place on a terminal stream by tqdm.
 
     It is the ``progress(done, total)`` hook of the core's sweeps
     (:meth:`burmester.Filemon.branch_map`, :meth:`~burmester.Filemon.solution_map`):
     the sweep runs as one call, so its samples are those of a call without
-    a bar, bit for bit.
+    a bar, bit for bit. The bar opens on the first call and closes (ending
+    its line) when all rows are done, or on :meth:`close`.
     """
 
-    def __init__(self, stream: IO[str], label: str, width: int = 30) -> None:
+    def __init__(self, stream: IO[str], label: str, unit: str = "row", mininterval: float = 0.1) -> None:
         self.stream = stream
         self.label = label
-        self.width = width
-        self._shown = -1
+        self.unit = unit
+        self.mininterval = mininterval
+        self._bar: Any = None
 
     def __call__(self, done: int, total: int) -> None:
-        """Show ``done`` of ``total`` rows; a newline ends the bar when all are done."""
-        fraction = min(max(done / total, 0.0), 1.0) if total > 0 else 1.0
-        filled = round(self.width * fraction)
-        percent = round(100 * fraction)
-        if percent == self._shown:
+        """Show ``done`` of ``total`` rows."""
+        if self._bar is None:
+            from tqdm import tqdm
+
+            self._bar = tqdm(total=total, desc=self.label, unit=self.unit, file=self.stream,
+                             leave=True, dynamic_ncols=True, mininterval=self.mininterval)
+        bar = self._bar
+        if bar.disable:  # closed: the sweep is done
             return
-        self._shown = percent
-        bar = "#" * filled + " " * (self.width - filled)
-        end = "\n" if fraction >= 1.0 else ""
-        self.stream.write(f"\r{self.label} [{bar}] {percent:3d}%{end}")
-        self.stream.flush()
+        step = min(max(done, 0), total) - bar.n
+        if step > 0:
+            bar.update(step)
+        if done >= total:
+            bar.close()
+
+    def close(self) -> None:
+        """End the bar's line (an interrupted sweep leaves it open)."""
+        if self._bar is not None:
+            self._bar.close()
 
 
 def progress_for(grid: Grid, label: str, work_per_sample: int = 1) -> Optional[Progress]:
@@ -244,6 +255,29 @@ def _output(path: str, types: Sequence[str], force: bool) -> str:
     return path
 
 
+def table(columns: Sequence[Tuple[str, str]], rows: Sequence[Sequence[str]]) -> str:
+    """A text table drawn by rich: ``columns`` are ``(header, justify)``
+    with justify ``"left"`` or ``"right"``, ``rows`` the cells as text.
+    ASCII only, columns apart by ``|``, a rule under the header, as wide as
+    its content (not cut to the terminal: the output is for pipes too),
+    without trailing spaces."""
+    import io
+
+    from rich import box
+    from rich.console import Console
+    from rich.table import Table
+
+    t = Table(box=box.ASCII2, show_edge=False, pad_edge=False, highlight=False)
+    for header, justify in columns:
+        t.add_column(header, justify="right" if justify == "right" else "left", no_wrap=True)
+    for row in rows:
+        t.add_row(*row)
+    buf = io.StringIO()
+    Console(file=buf, width=100_000, color_system=None, highlight=False, emoji=False, markup=False,
+            force_terminal=False, legacy_windows=False).print(t)
+    return "\n".join(line.rstrip() for line in buf.getvalue().splitlines())
+
+
 def _fmt_point(p: Sequence[float]) -> str:
     """``(x, y)`` to three decimals; a coordinate that rounds to zero reads
     0.000, not -0.000."""
@@ -324,7 +358,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
                 f"{flag} is for three poses (Filemon's construction){' or four' if circle else ''}; "
                 f"{spec.source} has {n} poses"
             )
-    task = spec.task()
+    task = spec.task
     driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
     if export is not None:
         _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent,
@@ -397,7 +431,7 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     client = _atlas_client(args.scheduler)
     bar = progress_for(driven, "atlas", driving.size) if client is None else None
     try:
-        atlas = burmester.pivot_atlas(spec.task(), driven, driving, client=client,
+        atlas = burmester.pivot_atlas(spec.task, driven, driving, client=client,
                                       limits=spec.limits, progress=bar)
     finally:
         if client is not None:
@@ -433,30 +467,30 @@ def cmd_atlas(args: argparse.Namespace) -> int:
 
 
 def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "balanced") -> str:
-    """The text table of ``burmester pivots``."""
+    """The text table of ``burmester pivots``: a line naming the ranking,
+    the table (:func:`table`), a line saying what the columns mean."""
     head = pv.describe_ranking(ranked_by)
     if ranked_by != "margin":
         head += " (acceptable under the limits)"
-    span = spec.task().span
+    span = spec.task.span
+    columns = [("#", "right"), ("A0 (x, y)", "right"), ("size", "right"), ("margin", "right"),
+               ("ground", "right"), ("crank", "right"), ("coupler", "right"), ("rocker", "right"),
+               ("Grashof type", "left"), ("mu min", "right"), ("mu1", "right"), ("mu2", "right"),
+               ("mu3", "right"), ("drive", "left"), ("limits", "left")]
+    rows = []
+    for k, p in enumerate(pivots, start=1):
+        f = p.figures
+        mus = [f"{m:.0f}" if m is not None else "-" for m in pv.transmission_at_poses_deg(p.linkage)]
+        mt = f"{f.min_transmission_deg:.1f}" if f.min_transmission_deg is not None else "-"
+        drive = f"{f.direction} {f.modes[0] or ''}".strip()
+        bad = pv.violations(f, spec.limits)
+        rows.append([str(k), _fmt_point(p.center), _fmt_size(p.size_ratio), f"{p.margin:.3f}",
+                     *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, *mus, drive, "; ".join(bad) or "ok"])
     lines = [
         f"Driving pivots A0 for {spec.source} (task size {span:.3g}: the largest distance "
         f"between two poses), {head}",
-        f"{'#':>2} | {'A0 (x, y)':>18} | {'size':>6} | {'margin':>7} | {'ground':>7} {'crank':>7} "
-        f"{'coupler':>7} {'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'mu1':>4} {'mu2':>4} "
-        f"{'mu3':>4} | {'drive':<11} | limits",
+        table(columns, rows),
     ]
-    for k, p in enumerate(pivots, start=1):
-        f = p.figures
-        g, c, cp, r = f.lengths
-        mu = " ".join(f"{m:4.0f}" if m is not None else f"{'-':>4}" for m in pv.transmission_at_poses_deg(p.linkage))
-        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
-        drive = f"{f.direction} {f.modes[0] or ''}".strip()
-        bad = pv.violations(f, spec.limits)
-        lines.append(
-            f"{k:>2} | {_fmt_point(p.center):>18} | {_fmt_size(p.size_ratio)} | {p.margin:7.3f} | "
-            f"{g:7.3f} {c:7.3f} {cp:7.3f} "
-            f"{r:7.3f} | {f.grashof:<14} | {mt} | {mu} | {drive:<11} | {'; '.join(bad) or 'ok'}"
-        )
     if not pivots:
         lines.append("(no branch-free pivot in the view)")
     lim = spec.limits
@@ -472,13 +506,15 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "balan
 
 
 def _fmt_size(ratio: float) -> str:
-    """A size ratio as ``12.3x`` (six characters)."""
-    return f"{ratio:5.1f}x"
+    """A size ratio as ``12.3x``."""
+    return f"{ratio:.1f}x"
 
 
 def burmester_table(spec: TaskSpec, ranked: Sequence[pv.BurmesterLinkage], ranked_by: str) -> str:
-    """The text table of ``burmester pivots`` for five poses."""
-    task = spec.task()
+    """The text table of ``burmester pivots`` for five poses: the ranking,
+    the Burmester points, the table of their four-bars (:func:`table`),
+    what the columns mean."""
+    task = spec.task
     points = task.burmester_points()
     lines = [
         f"Four-bars of the {len(points)} Burmester points of {spec.source} (task size {task.span:.3g}), "
@@ -486,20 +522,18 @@ def burmester_table(spec: TaskSpec, ranked: Sequence[pv.BurmesterLinkage], ranke
     ]
     lines += [f"  B{k}: center {_fmt_point(c)}, circle point {_fmt_point(z)}"
               for k, (c, z) in enumerate(points, start=1)]
-    lines.append(
-        f"{'#':>2} | {'drive':>8} | {'size':>6} | {'ground':>7} {'crank':>7} {'coupler':>7} {'rocker':>7} | "
-        f"{'Grashof type':<14} | {'mu min':>6} | {'ratio':>5} | {'motion':<13} | limits"
-    )
+    columns = [("#", "right"), ("drive", "right"), ("size", "right"), ("ground", "right"),
+               ("crank", "right"), ("coupler", "right"), ("rocker", "right"), ("Grashof type", "left"),
+               ("mu min", "right"), ("ratio", "right"), ("motion", "left"), ("limits", "left")]
+    rows = []
     for k, b in enumerate(ranked, start=1):
         f = b.linkage.figures
-        g, c, cp, r = f.lengths
-        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
+        mt = f"{f.min_transmission_deg:.1f}" if f.min_transmission_deg is not None else "-"
         motion = f"{f.direction} {f.modes[0] or ''}".strip() if f.branch_free else "branch defect"
-        lines.append(
-            f"{k:>2} | {f'B{b.driving + 1} -> B{b.driven + 1}':>8} | {_fmt_size(b.linkage.size_ratio)} | "
-            f"{g:7.3f} {c:7.3f} {cp:7.3f} {r:7.3f} | {f.grashof:<14} | {mt} | {f.link_ratio:5.1f} | "
-            f"{motion:<13} | {'; '.join(b.violations) or 'ok'}"
-        )
+        rows.append([str(k), f"B{b.driving + 1} -> B{b.driven + 1}", _fmt_size(b.linkage.size_ratio),
+                     *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, f"{f.link_ratio:.1f}", motion,
+                     "; ".join(b.violations) or "ok"])
+    lines.append(table(columns, rows))
     if not ranked:
         lines.append("(no Burmester four-bar: the task has fewer than two real Burmester points)")
     lines.append("drive: the driving dyad's Burmester point -> the driven one's. size: the total length of the "
@@ -515,7 +549,7 @@ def _pivots_five(args: argparse.Namespace, spec: TaskSpec) -> int:
     if args.json:
         print(json.dumps(pv.report_burmester(spec, args.rank_by), indent=2))
     else:
-        ranked = pv.rank_burmester(spec.task(), spec.limits, args.rank_by)
+        ranked = pv.rank_burmester(spec.task, spec.limits, args.rank_by)
         print(burmester_table(spec, ranked[: args.top], args.rank_by))
     return 0
 
@@ -577,12 +611,12 @@ def cmd_linkage(args: argparse.Namespace) -> int:
     export = _export_module(out) if cad else None
     if len(spec.poses) == 5:
         sfb, what = _best_burmester_linkage(args, spec)
-        task = spec.task()
+        task = spec.task
     elif len(spec.poses) == 4:
         if args.pivot is not None:
             raise UsageError("--pivot is for three poses; a four-pose task draws its best pair of dyads "
                              "(see 'burmester pairs')")
-        task = spec.task()
+        task = spec.task
         best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1)
         if not best_pairs:
             raise UsageError(f"no acceptable pair of dyads for {spec.source}; see 'burmester pairs'")
@@ -631,7 +665,7 @@ def _best_burmester_linkage(args: argparse.Namespace, spec: TaskSpec) -> Tuple[b
     if args.pivot is not None:
         raise UsageError("five poses: the linkage is built from two Burmester points; drop --pivot "
                          "(burmester pivots lists them all)")
-    ranked = [b for b in pv.rank_burmester(spec.task(), spec.limits) if b.linkage.figures.direction != "none"]
+    ranked = [b for b in pv.rank_burmester(spec.task, spec.limits) if b.linkage.figures.direction != "none"]
     if not ranked:
         raise UsageError(f"{spec.source}: no four-bar of two Burmester points carries the coupler through "
                          "the five poses in order")
@@ -653,7 +687,7 @@ def _pair_map(spec: TaskSpec, samples: int) -> burmester.PairMap:
         raise UsageError(f"--samples must be from 2 to 20000, got {samples}")
     big = samples * samples >= PROGRESS_MIN_POINTS
     bar = ProgressBar(sys.stderr, "burmester: pair map") if big and sys.stderr.isatty() else None
-    return spec.task().pair_map(samples, limits=spec.limits, progress=bar)
+    return spec.task.pair_map(samples, limits=spec.limits, progress=bar)
 
 
 def _pair_record(p: burmester.Pair) -> Dict[str, Any]:
@@ -681,23 +715,23 @@ def _pair_record(p: burmester.Pair) -> Dict[str, Any]:
 
 
 def pair_table(spec: TaskSpec, pairs: Sequence[burmester.Pair], ranked_by: str) -> str:
-    """The text table of ``burmester pairs``."""
-    lines = [
-        f"Pairs of dyads for {spec.source} (task size {spec.task().span:.3g}), "
-        f"{pv.describe_ranking(ranked_by)} (acceptable under the limits)",
-        f"{'#':>2} | {'A0 (x, y)':>18} | {'C0 (x, y)':>18} | {'size':>6} | {'ground':>7} {'crank':>7} "
-        f"{'coupler':>7} {'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'drive':<11}",
-    ]
+    """The text table of ``burmester pairs``: the ranking, the table
+    (:func:`table`), what the columns mean."""
+    columns = [("#", "right"), ("A0 (x, y)", "right"), ("C0 (x, y)", "right"), ("size", "right"),
+               ("ground", "right"), ("crank", "right"), ("coupler", "right"), ("rocker", "right"),
+               ("Grashof type", "left"), ("mu min", "right"), ("drive", "left")]
+    rows = []
     for k, p in enumerate(pairs, start=1):
         f = p.figures
-        g, c, cp, r = f.lengths
-        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
+        mt = f"{f.min_transmission_deg:.1f}" if f.min_transmission_deg is not None else "-"
         drive = f"{f.direction} {f.modes[0] or ''}".strip()
-        lines.append(
-            f"{k:>2} | {_fmt_point(p.driving.center):>18} | {_fmt_point(p.driven.center):>18} | "
-            f"{_fmt_size(p.size_ratio)} | {g:7.3f} {c:7.3f} {cp:7.3f} {r:7.3f} | {f.grashof:<14} | "
-            f"{mt} | {drive:<11}"
-        )
+        rows.append([str(k), _fmt_point(p.driving.center), _fmt_point(p.driven.center), _fmt_size(p.size_ratio),
+                     *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, drive])
+    lines = [
+        f"Pairs of dyads for {spec.source} (task size {spec.task.span:.3g}), "
+        f"{pv.describe_ranking(ranked_by)} (acceptable under the limits)",
+        table(columns, rows),
+    ]
     if not pairs:
         lines.append("(no acceptable pair of dyads)")
     lim = spec.limits
@@ -743,31 +777,27 @@ MIN_STEP_DEG = 0.01
 
 
 def position_table(fourbar: burmester.FourBar, step_deg: float = 30.0) -> str:
-    """A text table of both assembly modes over a full turn of the input."""
-    lines = [
-        f"{fourbar!r}: {fourbar.grashof}",
-        f"{'theta2':>8} | {'open theta3':>11} {'theta4':>8} {'mu':>6} | "
-        f"{'crossed theta3':>14} {'theta4':>8} {'mu':>6}",
-    ]
+    """A text table (:func:`table`) of both assembly modes over a full turn
+    of the input."""
+    columns = [("theta2", "right"), ("open theta3", "right"), ("theta4", "right"), ("mu", "right"),
+               ("crossed theta3", "right"), ("theta4", "right"), ("mu", "right")]
     n = max(1, round(360.0 / step_deg))
     both: Tuple[Mode, Mode] = ("open", "crossed")
+    rows = []
     for k in range(n):
         t2 = k * 360.0 / n
-        row = f"{t2:8.1f} |"
+        row = [f"{t2:.1f}"]
         for mode in both:
             try:
                 c = fourbar.configuration(math.radians(t2), mode)
             except burmester.AssemblyError:
-                cell = f"{'(does not close)':>27}"
+                row += ["(does not close)", "", ""]
             else:
-                cell = (
-                    f"{math.degrees(c.theta3):{11 if mode == 'open' else 14}.3f} "
-                    f"{math.degrees(c.theta4):8.3f} {math.degrees(c.transmission_angle):6.1f}"
-                )
-            row += f" {cell} |"
-        lines.append(row.rstrip(" |"))
-    lines.append("angles in degrees; mu is the transmission angle")
-    return "\n".join(lines)
+                row += [f"{math.degrees(c.theta3):.3f}", f"{math.degrees(c.theta4):.3f}",
+                        f"{math.degrees(c.transmission_angle):.1f}"]
+        rows.append(row)
+    return "\n".join([f"{fourbar!r}: {fourbar.grashof}", table(columns, rows),
+                      "angles in degrees; mu is the transmission angle"])
 
 
 def cmd_solve(args: argparse.Namespace) -> int:

@@ -213,7 +213,7 @@ def report_burmester(spec: "TaskSpec", rank_by: "RankBy" = "balanced") -> Dict[s
     poses: its Burmester points and every four-bar of two of them,
     :func:`rank_burmester` order, each with its indices, score and
     :func:`linkage_dict`."""
-    task = spec.task()
+    task = spec.task
     lim = spec.limits
     return {
         "task": spec.source,

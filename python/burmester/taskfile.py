@@ -122,8 +122,10 @@ class TaskSpec:
     limits: DesignLimits = field(default_factory=DesignLimits)
     source: str = "<example>"
 
+    @property
     def task(self) -> Task:
-        """The :class:`burmester.Task` of the poses."""
+        """The :class:`burmester.Task` of the poses (a property, as the
+        results of the native classes are)."""
         return Task(list(self.poses))
 
     def filemon(self) -> Filemon:
@@ -135,7 +137,7 @@ class TaskSpec:
                 f"{self.source}: has {len(self.poses)} poses; Filemon's construction, the maps, "
                 "pivots and linkages need three (burmester map draws four or five poses)"
             )
-        return self.task().filemon(self.driven_center)
+        return self.task.filemon(self.driven_center)
 
 
 def example() -> TaskSpec:
@@ -492,39 +494,51 @@ def load(path: Union[str, Path]) -> TaskSpec:
 
 
 def dumps(spec: TaskSpec) -> str:
-    """The text of a task file for ``spec`` (angles written in degrees)."""
-    lines = [
-        "# burmester task file (TOML).",
-        "# Lengths in any one unit; angles in DEGREES, counter-clockwise from +x.",
-        "",
-    ]
+    """The text of a task file for ``spec`` (angles written in degrees),
+    with comments saying what each table and key is: the file
+    ``burmester example`` prints, to edit. Written by tomlkit (a
+    maintained TOML writer that keeps comments); :func:`loads` reads it
+    back to the same task."""
+    import tomlkit
+
+    def note(item: Any, text: str) -> Any:
+        """``item`` with the comment ``text`` after it, two spaces apart."""
+        item.comment(text)
+        item.trivia.comment_ws = "  "
+        return item
+
+    doc = tomlkit.document()
+    doc.add(tomlkit.comment("burmester task file (TOML)."))
+    doc.add(tomlkit.comment("Lengths in any one unit; angles in DEGREES, counter-clockwise from +x."))
+    doc.add(tomlkit.nl())
+    poses = tomlkit.aot()
     for k, (x, y, a) in enumerate(spec.poses, start=1):
-        note = ": x, y where the coupler point is, angle_deg the coupler's angle" if k == 1 else ""
-        lines += [f"[[pose]]  # pose {k}{note}", f"x = {x!r}", f"y = {y!r}", f"angle_deg = {math.degrees(a)!r}", ""]
+        what = ": x, y where the coupler point is, angle_deg the coupler's angle" if k == 1 else ""
+        pose = note(tomlkit.table(), f"pose {k}{what}")
+        pose.add("x", float(x))
+        pose.add("y", float(y))
+        pose.add("angle_deg", math.degrees(a))
+        poses.append(pose)
+    doc.add("pose", poses)
     if spec.driven_center is not None:
-        cx, cy = spec.driven_center
-        lines += [
-            "[driven]  # the driven dyad: its fixed pivot C0 (or circle = [x, y], its moving pivot at pose 1)",
-            f"center = [{cx!r}, {cy!r}]",
-            "",
-        ]
+        driven = note(tomlkit.table(),
+                      "the driven dyad: its fixed pivot C0 (or circle = [x, y], its moving pivot at pose 1)")
+        driven.add("center", [float(c) for c in spec.driven_center])
+        doc.add("driven", driven)
     v = spec.view
-    lines += [
-        "[view]  # the driving crank's center-point plane: drawn, and searched for pivots",
-        f"x = [{v.xmin!r}, {v.xmax!r}]  # xmin, xmax",
-        f"y = [{v.ymin!r}, {v.ymax!r}]  # ymin, ymax",
-        f"grid = [{v.nx}, {v.ny}]  # samples along x and y",
-        "",
-    ]
+    view = note(tomlkit.table(), "the driving crank's center-point plane: drawn, and searched for pivots")
+    view.add("x", note(tomlkit.item([v.xmin, v.xmax]), "xmin, xmax"))
+    view.add("y", note(tomlkit.item([v.ymin, v.ymax]), "ymin, ymax"))
+    view.add("grid", note(tomlkit.item([v.nx, v.ny]), "samples along x and y"))
+    doc.add("view", view)
     four_with_limits = len(spec.poses) == 4 and spec.limits != DesignLimits()
-    if len(spec.poses) > 3 and not four_with_limits:
-        return "\n".join(lines)
-    lim = spec.limits
-    lines += [
-        "[limits]  # what an acceptable linkage must meet",
-        f"min_transmission_deg = {lim.min_transmission_deg!r}  # over the whole travel through the poses, degrees",
-        f"max_link_ratio = {lim.max_link_ratio!r}  # longest link / shortest link",
-        f'input = "{lim.input}"  # the driving link: "any", "crank" (turns fully) or "rocker"',
-        "",
-    ]
-    return "\n".join(lines)
+    if len(spec.poses) == 3 or four_with_limits:
+        lim = spec.limits
+        limits = note(tomlkit.table(), "what an acceptable linkage must meet")
+        limits.add("min_transmission_deg", note(tomlkit.item(float(lim.min_transmission_deg)),
+                                                "over the whole travel through the poses, degrees"))
+        limits.add("max_link_ratio", note(tomlkit.item(float(lim.max_link_ratio)), "longest link / shortest link"))
+        limits.add("input", note(tomlkit.item(str(lim.input)),
+                                 'the driving link: "any", "crank" (turns fully) or "rocker"'))
+        doc.add("limits", limits)
+    return tomlkit.dumps(doc)

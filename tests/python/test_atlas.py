@@ -194,7 +194,7 @@ def test_cli_atlas_picture_json_and_errors(tmp_path, capsys):
     v = doc["view"]
     from burmester import taskfile
 
-    want = pivot_atlas(taskfile.example().task(), (*v["x"], *v["y"], 6, 5), (*v["x"], *v["y"], 20, 16),
+    want = pivot_atlas(taskfile.example().task, (*v["x"], *v["y"], 6, 5), (*v["x"], *v["y"], 20, 16),
                        min_transmission_deg=doc["limits"]["min_transmission_deg"],
                        max_link_ratio=doc["limits"]["max_link_ratio"], input=doc["limits"]["input"])
     assert doc["best"][0]["min_transmission_deg"] == want.best_pairs(1)[0].min_transmission_deg

@@ -384,7 +384,7 @@ def test_circle_plane_dxf(tmp_path, task, f):
 
 @pytest.fixture
 def task5():
-    return burmester.taskfile.load(EXAMPLES / "five.toml").task()
+    return burmester.taskfile.load(EXAMPLES / "five.toml").task
 
 
 def test_five_poses_burmester_points_on_both_curves(tmp_path, task5):
@@ -480,7 +480,7 @@ def test_cli_map_of_five_poses_exports_the_burmester_points(tmp_path, capsys):
     doc = ezdxf.readfile(out)
     assert {"CURVE_1234", "CURVE_1235", "BURMESTER_POINTS"} <= layers(doc)
     with pytest.raises(burmester.InvalidInputError, match="needs a task of"):
-        export.burmester_plane(burmester.taskfile.example().task(), tmp_path / "three.dxf")
+        export.burmester_plane(burmester.taskfile.example().task, tmp_path / "three.dxf")
 
 
 # ---------------------------------------------------------------------------

@@ -67,7 +67,7 @@ def test_optional_sections_and_the_driven_circle_point():
     assert spec.limits.min_transmission_deg == 30.0
     v = spec.view  # a default square view around the poles and the pivots
     assert v.xmax - v.xmin == pytest.approx(v.ymax - v.ymin) and (v.nx, v.ny) == (400, 400)
-    for p in [pole.point for pole in spec.task().poles] + [spec.driven_center]:
+    for p in [pole.point for pole in spec.task.poles] + [spec.driven_center]:
         assert v.xmin < p[0] < v.xmax and v.ymin < p[1] < v.ymax
     # The driven dyad by its circle point gives the same C0.
     c1 = spec.filemon().driven_circle
@@ -204,10 +204,10 @@ def test_four_and_five_pose_files():
     with pytest.raises(TaskFileError, match="has 4 poses"):
         spec.filemon()
     five = taskfile.loads(FOUR_POSES + "[[pose]]\nx = 1.0\ny = 4.0\nangle_deg = 120.0\n")
-    assert len(five.poses) == 5 and five.task().burmester_points() is not None
+    assert len(five.poses) == 5 and five.task.burmester_points() is not None
 
 
 def test_the_five_pose_example_file():
     spec = taskfile.load(EXAMPLE_FILE.parent / "five.toml")
     assert len(spec.poses) == 5 and spec.driven_center is None
-    assert len(spec.task().burmester_points()) == 4
+    assert len(spec.task.burmester_points()) == 4

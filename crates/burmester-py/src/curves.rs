@@ -419,6 +419,12 @@ impl PyCubic {
         self.evaluate(point)
     }
 
+    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
+    /// None without matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
     fn gradient(&self, point: PyPoint) -> PyResult<Xy> {
         let g = self
             .inner

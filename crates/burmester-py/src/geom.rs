@@ -4,7 +4,7 @@ use burmester::{Conic, Grid, Vector2, Viewport};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyList, PySequence, PyTuple};
 
 use crate::conv::{Count, FloatArray, PyPoint, Real, pt, slice_mut, writer, zeros};
 use crate::errors::{IntoPy, invalid};
@@ -125,26 +125,40 @@ fn extent(g: &Grid) -> (f64, f64, f64, f64) {
     (v.xmin, v.xmax, v.ymin, v.ymax)
 }
 
-/// A grid from the leading positional arguments of a call: a `Grid`, or the
-/// six numbers `xmin, xmax, ymin, ymax, nx, ny`. Returns the grid and how
-/// many arguments it took.
+/// A grid from the leading positional arguments of a call: a `Grid`, its
+/// six numbers `xmin, xmax, ymin, ymax, nx, ny` as one tuple or list (as
+/// `pivot_atlas` takes them), or the six numbers one by one. Returns the
+/// grid and how many arguments it took.
 pub(crate) fn grid_arg(args: &Bound<'_, PyTuple>) -> PyResult<(Grid, usize)> {
     let usage = || {
         PyTypeError::new_err(
-            "expected a grid: a burmester.Grid, or the six numbers xmin, xmax, ymin, ymax, nx, ny",
+            "expected a grid: a burmester.Grid, or its six numbers xmin, xmax, ymin, ymax, nx, ny \
+             (as a tuple or one by one)",
         )
     };
     let first = args.get_item(0).map_err(|_| usage())?;
     if let Ok(g) = first.cast::<PyGrid>() {
         return Ok((g.get().inner, 1));
     }
+    if first.is_instance_of::<PyTuple>() || first.is_instance_of::<PyList>() {
+        let six = first.cast::<PySequence>()?;
+        if six.len()? != 6 {
+            return Err(usage());
+        }
+        return Ok((six_numbers(|k| six.get_item(k))?, 1));
+    }
     if args.len() < 6 {
         return Err(usage());
     }
-    let num = |k: usize| -> PyResult<f64> { Ok(args.get_item(k)?.extract::<Real>()?.0) };
-    let count = |k: usize| -> PyResult<usize> { Ok(args.get_item(k)?.extract::<Count>()?.0) };
-    let g = Grid::from_bounds(num(0)?, num(1)?, num(2)?, num(3)?, count(4)?, count(5)?).py()?;
-    Ok((g, 6))
+    Ok((six_numbers(|k| args.get_item(k))?, 6))
+}
+
+/// The grid of six numbers `xmin, xmax, ymin, ymax, nx, ny`, the `k`-th
+/// from `item(k)`.
+fn six_numbers<'py>(item: impl Fn(usize) -> PyResult<Bound<'py, PyAny>>) -> PyResult<Grid> {
+    let num = |k: usize| -> PyResult<f64> { Ok(item(k)?.extract::<Real>()?.0) };
+    let count = |k: usize| -> PyResult<usize> { Ok(item(k)?.extract::<Count>()?.0) };
+    Grid::from_bounds(num(0)?, num(1)?, num(2)?, num(3)?, count(4)?, count(5)?).py()
 }
 
 /// A conic `A x^2 + B x y + C y^2 + D x + E y + F = 0`.

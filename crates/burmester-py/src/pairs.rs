@@ -222,6 +222,12 @@ fn dyads(v: &[Option<burmester::synthesis::curves::CurveDyad>]) -> Vec<Option<Py
 
 #[pymethods]
 impl PyPairMap {
+    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
+    /// None without matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
     /// The names of the Grashof codes, by code.
     #[classattr]
     fn grashof_names() -> Vec<&'static str> {
