@@ -214,10 +214,6 @@ class Conic:
         each branch separately, never joined across infinity, the parts near
         the asymptotes included. ``tolerance`` is the largest chord error
         (default: a thousandth of the viewport's diagonal)."""
-    def _repr_png_(self) -> Optional[bytes]:
-        """The picture Jupyter shows (see :mod:`burmester._display`): every
-        component in the frame the cubic is kept in; PNG bytes, or None
-        when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
@@ -282,6 +278,10 @@ class Cubic:
         first). ``tolerance`` is the largest chord error (default: a
         thousandth of the viewport's diagonal; 1e-9 to 1 times the
         diagonal)."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): every
+        component in the frame the cubic is kept in; PNG bytes, or None
+        when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
