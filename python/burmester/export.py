@@ -706,8 +706,12 @@ def _dimensions(d: _Drawing, sfb: SynthesizedFourBar) -> None:
             continue  # a coupler point on a joint: no side to dimension
         # To the left of p1 -> p2 is (-dy, dx): take the side away from the middle.
         left = -dy * (ref[0] - p1[0]) + dx * (ref[1] - p1[1]) > 0.0
+        offset = -2.5 if left else 2.5
+        if dx < 0.0 or (dx == 0.0 and dy < 0.0):
+            # Measured left to right (or upward), so that the text reads upright; the same side.
+            p1, p2, offset = p2, p1, -offset
         d.dimensions.append(_Dimension("aligned", (float(p1[0]), float(p1[1])), (float(p2[0]), float(p2[1])),
-                                       -2.5 if left else 2.5, f"{name}, pose 1"))
+                                       offset, f"{name}, pose 1"))
     for name, pivot in (("A0", o2), ("C0", o4)):
         at = (float(pivot[0]), float(pivot[1]))
         d.dimensions.append(_Dimension("x", at, at, 0.0, f"fixed pivot {name}: x from the origin"))
@@ -958,8 +962,9 @@ def _dxf_dimensions(doc: Any, d: _Drawing, text: float, units: str) -> None:
         attribs = {"layer": "DIMENSIONS"}
         if dim.kind == "aligned":
             # ezdxf's distance is to the left of p1 -> p2 when positive, as the offset.
+            # The unit as the dimension's own override too: ezdxf writes no DIMPOST into the style's record.
             made = msp.add_aligned_dim(dim.p1, dim.p2, distance=dim.offset * text, dimstyle="BURMESTER",
-                                       dxfattribs=attribs)
+                                       dxfattribs=attribs, override={"dimpost": f"<>{unit}"})
         else:
             sign = "-" if dim.measurement < 0.0 else ""
             end = place.points[-1]
@@ -995,7 +1000,7 @@ def _write_svg(d: _Drawing, path: Path, units: str) -> None:
     (x0, x1, y0, y1), marker, text = d.sizes(units)
     w, h = x1 - x0, y1 - y0
     size = max(w, h)
-    if units == "unitless":
+    if units not in _SVG_UNITS:  # unitless, or a unit SVG has no length for: 800 px along the larger side
         f, unit = 800.0 / max(w, h), ""
     else:
         f, unit = _SVG_UNITS[units]
@@ -1278,7 +1283,7 @@ def plane(
 
 def _plane_to(suffixes: Sequence[str], filemon: Filemon, path: PathLike, view: Optional[ViewLike], plane: str,
               grid: Optional[Tuple[int, int]], method: Method, free: Optional[npt.ArrayLike], over: _Overlays,
-              labels: bool, units: str) -> Path:
+              labels: bool, units: Optional[str]) -> Path:
     target = _target(path, suffixes)
     units = _units(units)
     return _write(_plane_drawing(filemon, view, plane, grid, method, free, over, labels), target, units)
@@ -1389,7 +1394,7 @@ def burmester_plane(
 
 def _burmester_to(suffixes: Sequence[str], task: Task, path: PathLike, view: Optional[ViewLike],
                   driven: Optional[Point], plane: Literal["center", "circle"], labels: bool,
-                  units: str) -> Path:
+                  units: Optional[str]) -> Path:
     target = _target(path, suffixes)
     units = _units(units)
     if plane not in ("center", "circle"):

@@ -86,14 +86,12 @@ def limits_dict(limits: DesignLimits) -> Dict[str, Any]:
 
 def describe_limits(limits: DesignLimits) -> str:
     """The limits in words, as every table prints them beside its verdicts:
-    ``"limits: transmission >= 30 deg, link ratio <= 10, any input (the
-    defaults)"``; ``(the defaults)`` only when they are
-    :class:`DesignLimits`'s, whether a task file gave them or not."""
-    text = (f"limits: transmission >= {limits.min_transmission_deg:g} deg, "
+    ``"limits: transmission >= 40 deg, link ratio <= 6, crank input"``,
+    or ``"default limits: ..."`` when they are :class:`DesignLimits`'s
+    defaults (whether a task file gave them or not)."""
+    which = "default limits" if limits == DesignLimits() else "limits"
+    return (f"{which}: transmission >= {limits.min_transmission_deg:g} deg, "
             f"link ratio <= {limits.max_link_ratio:g}, {limits.input} input")
-    if limits == DesignLimits():
-        text += " (the defaults)"
-    return text
 
 
 def default_spacing(grid: Grid) -> float:

@@ -52,6 +52,7 @@ try:
     from matplotlib.colors import ListedColormap
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle, Patch, PathPatch, Polygon
+    from matplotlib.text import Annotation
     from matplotlib.path import Path as MplPath
 except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     raise ImportError(
@@ -229,6 +230,19 @@ def _renderer(ax: Axes) -> Any:
         return None
 
 
+def _text_box(t: Any, renderer: Any) -> Any:
+    """A text's box on the screen, its background box's padding included
+    and an annotation's leader left out (a leader may cross a label)."""
+    from matplotlib.text import Text
+
+    if isinstance(t, Annotation):
+        t.update_positions(renderer)  # where its offset puts it now
+    box = Text.get_window_extent(t, renderer)
+    patch = t.get_bbox_patch()
+    pad = 0.3 * t.get_fontsize() * t.figure.dpi / 72.0 if patch is not None else 0.0
+    return box.expanded(1.0, 1.0).padded(pad)
+
+
 def _overlap(a: Any, b: Any) -> float:
     """The area two display boxes share (0 when apart)."""
     w = min(a.x1, b.x1) - max(a.x0, b.x0)
@@ -259,7 +273,7 @@ def label_lengths(ax: Axes, links: Sequence[Tuple[str, Sequence[float], Sequence
     if renderer is not None:
         from matplotlib.transforms import Bbox
 
-        taken = [t.get_window_extent(renderer) for t in ax.texts if t.get_visible() and t.get_text()]
+        taken = [_text_box(t, renderer) for t in ax.texts if t.get_visible() and t.get_text()]
         r = 6.0 * ax.figure.dpi / 72.0  # a marker: about 12 points across
         for x, y in ax.transData.transform(np.asarray(avoid, dtype=float).reshape(-1, 2)):
             taken.append(Bbox([[x - r, y - r], [x + r, y + r]]))
@@ -268,53 +282,45 @@ def label_lengths(ax: Axes, links: Sequence[Tuple[str, Sequence[float], Sequence
     for name, p, q in links:
         p_ = np.asarray(p, dtype=float)
         q_ = np.asarray(q, dtype=float)
-        length = float(np.hypot(*(q_ - p_)))
-        text = f"{name} {format_length(length, units)}"
-        # The link's direction on the screen, and its normal.
+        text = f"{name} {format_length(float(np.hypot(*(q_ - p_))), units)}"
+        # The link's normal on the screen (points across it).
         sp, sq = ax.transData.transform([p_, q_])
         d = sq - sp
         n = np.array([-d[1], d[0]]) / (float(np.hypot(*d)) or 1.0)
-        best: Optional[Tuple[float, Artist]] = None
-        for across in _ACROSS:
-            for t in _ALONG:
-                for side in (1.0, -1.0):
-                    at = p_ + t * (q_ - p_)
-                    off = side * across * n
-                    ha = "left" if off[0] > 2 else "right" if off[0] < -2 else "center"
-                    va = "bottom" if off[1] > 2 else "top" if off[1] < -2 else "center"
-                    art = ax.annotate(text, (float(at[0]), float(at[1])), xytext=(float(off[0]), float(off[1])),
-                                      textcoords="offset points", ha=ha, va=va, fontsize=fontsize, zorder=9,
-                                      color=color,
-                                      bbox={"boxstyle": "round,pad=0.2", "facecolor": "white",
-                                            "edgecolor": color, "linewidth": 0.5, "alpha": 0.85},
-                                      arrowprops={"arrowstyle": "-", "color": color, "lw": 0.6,
-                                                  "shrinkA": 0.0, "shrinkB": 0.0})
-                    if renderer is None:
-                        best = (0.0, art)
-                        break
-                    box = art.get_window_extent(renderer)
-                    cost = sum(_overlap(box, o) for o in taken)
-                    if inside is not None and not (box.x0 >= inside.x0 and box.x1 <= inside.x1
-                                                   and box.y0 >= inside.y0 and box.y1 <= inside.y1):
-                        cost += box.width * box.height
-                    if best is None or cost < best[0]:
-                        if best is not None:
-                            best[1].remove()
-                        best = (cost, art)
-                    else:
-                        art.remove()
-                    if cost == 0.0:
-                        break
-                if best is not None and (renderer is None or best[0] == 0.0):
-                    break
-            if best is not None and (renderer is None or best[0] == 0.0):
+        best: Optional[Tuple[float, Annotation]] = None
+        places = [(t, side * across * n) for across in _ACROSS for t in _ALONG for side in (1.0, -1.0)]
+        for t, off in places:
+            at = p_ + t * (q_ - p_)
+            ha = "left" if off[0] > 2 else "right" if off[0] < -2 else "center"
+            va = "bottom" if off[1] > 2 else "top" if off[1] < -2 else "center"
+            art = ax.annotate(text, (float(at[0]), float(at[1])), xytext=(float(off[0]), float(off[1])),
+                              textcoords="offset points", ha=ha, va=va, fontsize=fontsize, zorder=9, color=color,
+                              bbox={"boxstyle": "round,pad=0.2", "facecolor": "white", "edgecolor": color,
+                                    "linewidth": 0.5, "alpha": 0.85},
+                              arrowprops={"arrowstyle": "-", "color": color, "lw": 0.6, "shrinkA": 0.0,
+                                          "shrinkB": 0.0})
+            if renderer is None:  # nothing to measure with: the first place
+                best = (0.0, art)
+                break
+            box = _text_box(art, renderer)
+            cost = sum(_overlap(box, o) for o in taken)
+            if inside is not None and not (box.x0 >= inside.x0 and box.x1 <= inside.x1
+                                           and box.y0 >= inside.y0 and box.y1 <= inside.y1):
+                cost += box.width * box.height  # partly outside the axes: as bad as covering a label
+            if best is None or cost < best[0]:
+                if best is not None:
+                    best[1].remove()
+                best = (cost, art)
+            else:
+                art.remove()
+            if cost == 0.0:
                 break
         assert best is not None
-        art = best[1]
-        art.set_gid(gid)
+        chosen = best[1]
+        chosen.set_gid(gid)
         if renderer is not None:
-            taken.append(art.get_window_extent(renderer))
-        placed.append(art)
+            taken.append(_text_box(chosen, renderer))
+        placed.append(chosen)
     return placed
 
 

@@ -622,6 +622,14 @@ def dumps(spec: TaskSpec) -> str:
 
 
 def _toml_string(text: str) -> str:
-    """A TOML basic string of ``text`` (a unit name: printable, so only
-    backslashes and quotes need escaping)."""
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """A TOML basic string of ``text``: backslashes, quotes and control
+    characters escaped (``\\uXXXX``)."""
+    out = []
+    for c in text:
+        if c in ('"', "\\"):
+            out.append("\\" + c)
+        elif ord(c) < 0x20 or ord(c) == 0x7F:
+            out.append(f"\\u{ord(c):04X}")
+        else:
+            out.append(c)
+    return '"' + "".join(out) + '"'
