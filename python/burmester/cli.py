@@ -539,7 +539,7 @@ def burmester_table(spec: TaskSpec, ranked: Sequence[pv.BurmesterLinkage], ranke
     outside = describe_outside(outside_view([(f"B{k}", c) for k, (c, _) in enumerate(points, start=1)], extent),
                                extent, spec.units)
     if outside:
-        lines.append(f"note: {outside}: 'burmester map' draws the view, without them")
+        lines.append(f"note: {outside}; 'burmester map' draws only the view: widen [view] to see all")
     lines.append("drive: the driving dyad's Burmester point -> the driven one's. size: the total length of the "
                  "links in task sizes. mu min: smallest transmission angle over the travel through the five "
                  "poses. ok: meets the limits in the header")

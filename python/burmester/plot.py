@@ -29,6 +29,14 @@ editing; ``ax.figure.savefig("out.png")`` saves it. The artists carry gids
 ``"pole-circle"``, ...) to find and restyle them: ``[a for a in
 ax.get_children() if a.get_gid() == "poles"]``.
 
+Lengths: every drawing with lengths on its axes takes ``units="mm"`` (any
+unit name; :mod:`burmester.units`) and labels its axes ``x [mm]``, ``y
+[mm]`` (plain ``x``, ``y`` without one); :func:`linkage` and :func:`four_bar`
+label each link with its length (:func:`label_lengths`, gid
+``"link-length"``). Nothing is cut silently: a point a plane marks that
+lies outside its view is noted on the picture (:func:`note_outside`, gids
+``"out-of-view"`` and ``"out-of-view-marks"``).
+
 Colours follow the poses throughout: pose 1 red, pose 2 purple, pose 3 blue
 (pose 4 green, pose 5 brown);
 a transformed Filemon curve has the colour of its line's pose.
@@ -174,7 +182,8 @@ def note_outside(ax: Axes, extent: Extent, points: Sequence[Tuple[str, Optional[
                  units: Optional[str] = None) -> List[Tuple[str, Point]]:
     """Say on the picture which of the named points (``(name, (x, y))``,
     None for a point at infinity) lie outside the view ``extent``: a note
-    under the axes listing them with their coordinates (gid
+    in the corner of the axes with the fewest drawn points, listing them
+    with their coordinates (gid
     ``"out-of-view"``, the words of
     :func:`burmester.taskfile.describe_outside`) and, inside the view's
     edge, an arrow toward each, named (points in about the same direction
@@ -208,15 +217,33 @@ def note_outside(ax: Axes, extent: Extent, points: Sequence[Tuple[str, Optional[
         arrow.set_gid("out-of-view-marks")
     words = describe_outside(outside, extent, units).split(" ")
     lines, line = [], ""
-    for w in words:  # wrap at about 90 characters
-        if line and len(line) + 1 + len(w) > 90:
+    for w in words:  # wrap at about 60 characters
+        if line and len(line) + 1 + len(w) > 60:
             lines.append(line)
             line = w
         else:
             line = f"{line} {w}" if line else w
     lines.append(line)
-    note = ax.annotate("\n".join(lines), xy=(0.0, 0.0), xycoords="axes fraction", xytext=(0.0, -36.0),
-                       textcoords="offset points", fontsize=8, ha="left", va="top", color="#8a1c1c")
+    # Inside the axes (a note under them would run into a neighbouring
+    # axes), in the corner where the fewest drawn points are.
+    drawn = [np.asarray(a.get_xydata(), dtype=float).reshape(-1, 2) for a in ax.lines]
+    pts = np.vstack(drawn) if drawn else np.zeros((0, 2))
+    fx = (pts[:, 0] - x0) / (x1 - x0)
+    fy = (pts[:, 1] - y0) / (y1 - y0)
+    tall = 0.06 * len(lines)
+    corners = [(0.01, 0.01, "left", "bottom"), (0.99, 0.01, "right", "bottom"),
+               (0.01, 0.99, "left", "top"), (0.99, 0.99, "right", "top")]
+
+    def crowd(corner: Tuple[float, float, str, str]) -> int:
+        cx_, cy_, ha, va = corner
+        xs = (fx < 0.6) if ha == "left" else (fx > 0.4)
+        ys = (fy < tall + 0.02) if va == "bottom" else (fy > 0.98 - tall)
+        return int(np.count_nonzero(xs & ys))
+
+    ax_, ay_, ha, va = min(corners, key=crowd)
+    note = ax.text(ax_, ay_, "\n".join(lines), transform=ax.transAxes, fontsize=7, ha=ha, va=va,
+                   color="#8a1c1c", zorder=10, bbox={"boxstyle": "round,pad=0.3", "facecolor": "white",
+                                                     "edgecolor": "#8a1c1c", "linewidth": 0.6, "alpha": 0.9})
     note.set_gid("out-of-view")
     return outside
 
