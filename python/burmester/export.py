@@ -689,8 +689,10 @@ def _dimensions(d: _Drawing, sfb: SynthesizedFourBar) -> None:
     """The dimensions of a linkage (layer ``DIMENSIONS``): the ground
     ``A0 C0``, and at pose 1 the crank ``A0 A``, the coupler ``A B`` and its
     triangle's sides ``A P``, ``B P`` to the coupler point, and the rocker
-    ``C0 B`` (aligned, each on the side away from the linkage's middle, or
-    the coupler triangle's); the fixed pivots' x and y from the origin
+    ``C0 B`` (aligned), each dimension line 2.5, 5 or 7.5 text heights off
+    its link, on the side away from the linkage's middle (the coupler
+    triangle's for its sides) first, at the first place where its text
+    meets no text placed before; the fixed pivots' x and y from the origin
     (ordinates)."""
     theta2, mode = sfb.input_angles[0], sfb.modes[0] or "open"
     o2, a, b, o4 = sfb.fourbar.joints(theta2, mode)
@@ -698,15 +700,40 @@ def _dimensions(d: _Drawing, sfb: SynthesizedFourBar) -> None:
     p = (x, y)
     mid = ((o2[0] + a[0] + b[0] + o4[0]) / 4, (o2[1] + a[1] + b[1] + o4[1]) / 4)
     tri = ((a[0] + b[0] + p[0]) / 3, (a[1] + b[1] + p[1]) / 3)
+    x0, x1, y0, y1 = d.bounds()
+    text = _TEXT * (max(x1 - x0, y1 - y0) or 1.0)  # as the writers will size it
+    decimals = _dimension_decimals(d)
+    texts: List[Array] = []  # the placed texts, each as the centers of circles of radius 0.6 text along it
     for name, p1, p2, ref in (("ground A0 C0", o2, o4, mid), ("crank A0 A", o2, a, mid),
                               ("coupler A B", a, b, mid), ("coupler A P", a, p, tri),
                               ("coupler B P", b, p, tri), ("rocker C0 B", o4, b, mid)):
         dx, dy = p2[0] - p1[0], p2[1] - p1[1]
-        if math.hypot(dx, dy) == 0.0:
+        length = math.hypot(dx, dy)
+        if length == 0.0:
             continue  # a coupler point on a joint: no side to dimension
-        # To the left of p1 -> p2 is (-dy, dx): take the side away from the middle.
-        left = -dy * (ref[0] - p1[0]) + dx * (ref[1] - p1[1]) > 0.0
-        offset = -2.5 if left else 2.5
+        # To the left of p1 -> p2 is (-dy, dx): the side away from the middle first.
+        away = 1.0 if -dy * (ref[0] - p1[0]) + dx * (ref[1] - p1[1]) < 0.0 else -1.0
+        ux, uy = dx / length, dy / length
+        half = 0.5 * _CHAR * text * (len(f"{length:.{decimals}f}") + 4)  # the text, a unit included
+        along = np.linspace(-half, half, max(2, math.ceil(2 * half / text) + 1))
+        best: Optional[Tuple[int, float, Array]] = None
+        for level in (2.5, 5.0, 7.5):
+            for side in (away, -away):
+                offset = side * level
+                cx = (p1[0] + p2[0]) / 2 + (-uy) * (offset + math.copysign(0.8, offset)) * text
+                cy = (p1[1] + p2[1]) / 2 + ux * (offset + math.copysign(0.8, offset)) * text
+                circles = np.column_stack([cx + along * ux, cy + along * uy])
+                hits = sum(int(np.any(np.hypot(*(circles[:, None, :] - t[None, :, :]).transpose(2, 0, 1))
+                                      < 1.2 * text)) for t in texts)
+                if best is None or hits < best[0]:
+                    best = (hits, offset, circles)
+                if hits == 0:
+                    break
+            if best is not None and best[0] == 0:
+                break
+        assert best is not None
+        _, offset, circles = best
+        texts.append(circles)
         if dx < 0.0 or (dx == 0.0 and dy < 0.0):
             # Measured left to right (or upward), so that the text reads upright; the same side.
             p1, p2, offset = p2, p1, -offset

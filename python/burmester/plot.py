@@ -45,6 +45,7 @@ a transformed Filemon curve has the colour of its line's pose.
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Dict, List, Literal, Optional, Sequence, Tuple, Union
 
@@ -215,7 +216,8 @@ def note_outside(ax: Axes, extent: Extent, points: Sequence[Tuple[str, Optional[
             arrowprops={"arrowstyle": "->", "color": "0.2", "lw": 1.0},
         )
         arrow.set_gid("out-of-view-marks")
-    words = describe_outside(outside, extent, units).split(" ")
+    # Words to wrap at, a name and its coordinates ("B4 (28.569, -40.158)", "x [-6, 12],") kept whole.
+    words = re.findall(r"[^\s(\[]+ [(\[][^)\]]*[)\]],?|\S+", describe_outside(outside, extent, units))
     lines, line = [], ""
     for w in words:  # wrap at about 60 characters
         if line and len(line) + 1 + len(w) > 60:
