@@ -624,7 +624,8 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         task = spec.task()
         best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1)
         if not best_pairs:
-            raise UsageError(f"no acceptable pair of dyads for {spec.source}; see 'burmester pairs'")
+            raise UsageError(f"no acceptable pair of dyads for {spec.source} ({pv.describe_limits(spec.limits)}); "
+                             "see 'burmester pairs'")
         sfb = best_pairs[0].linkage
         what = f"the best pair of dyads, driving pivot A0 = {_fmt_point(best_pairs[0].driving.center)}"
     else:

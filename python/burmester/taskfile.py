@@ -275,7 +275,7 @@ def describe_outside(outside: Sequence[Tuple[str, Sequence[float]]], extent: Seq
     listed = ", ".join(f"{name} ({round(p[0], 3) + 0.0:.3f}, {round(p[1], 3) + 0.0:.3f})" for name, p in outside)
     verb = "lies" if len(outside) == 1 else "lie"
     unit = f" {units}" if units else ""
-    return f"{listed} {verb} outside the view x [{x0:g}, {x1:g}], y [{y0:g}, {y1:g}]{unit}"
+    return f"{listed} {verb} outside the view x [{x0:.4g}, {x1:.4g}], y [{y0:.4g}, {y1:.4g}]{unit}"
 
 
 # ---------------------------------------------------------------------------
@@ -589,6 +589,9 @@ def dumps(spec: TaskSpec) -> str:
     if spec.units is not None:
         lines.append(f"units = {_toml_string(spec.units)}  # the unit of the lengths: said in tables, on axes "
                      "and in CAD files, never scaled")
+    else:
+        lines.append('# units = "mm"  # the unit of the lengths, if you name one: said in tables, on axes '
+                     "and in CAD files")
     lines.append("")
     for k, (x, y, a) in enumerate(spec.poses, start=1):
         note = ": x, y where the coupler point is, angle_deg the coupler's angle" if k == 1 else ""
