@@ -351,8 +351,8 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     for flag, given in (("--plane circle", circle and n == 5), ("--design", args.design),
                         ("--pivots", args.pivots > 0)):
         if given:
-            what = ("three poses (Filemon's construction) or four (the circle-point curve)" if circle
-                    else "three poses (Filemon's construction)")
+            what = ("three poses (Filemon's construction) or four (the circle-point curve)"
+                    if flag == "--plane circle" else "three poses (Filemon's construction)")
             raise UsageError(f"{flag} is for {what}; {spec.source} has {n} poses")
     task = spec.task()
     driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
