@@ -80,6 +80,9 @@ def test_format_length_and_axis_labels():
     assert format_length(2.0 / 3.0, "m", 6) == "0.666667 m"
     assert axis_label("x", "mm") == "x [mm]" and axis_label("y") == "y"
     assert check_units("  mm ") == "mm" and check_units(None) is None and check_units("µm") == "µm"
+    longest = "m" * MAX_UNITS_LENGTH  # the documented maximum is accepted, in a file too
+    assert check_units(longest) == longest
+    assert taskfile.loads(f'units = "{longest}"\n' + LID.split("\n", 1)[1]).units == longest
 
 
 @pytest.mark.parametrize("value, words", [
