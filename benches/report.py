@@ -684,6 +684,68 @@ def machine() -> list[str]:
     ]
 
 
+SCALING = ROOT / "benches" / "scaling"
+
+
+def parse_scaling_log(path: Path) -> tuple[list[str], list[tuple[str, str, int, float, float, float]]]:
+    """The ``# `` header lines and the ``(label, bench, threads, low, mean, high)``
+    rows (ns) of a console log of the ``scaling`` bench; ``label`` is the last
+    ``== ...`` line before a row (empty when there is none)."""
+    header: list[str] = []
+    rows: list[tuple[str, str, int, float, float, float]] = []
+    label, name = "", None
+    units = {"ns": 1.0, "µs": 1e3, "us": 1e3, "ms": 1e6, "s": 1e9}
+    for line in path.read_text().splitlines():
+        if line.startswith("# "):
+            header.append(line[2:])
+        elif line.startswith("== "):
+            label = line[3:]
+        elif line.startswith("scaling/"):
+            name = line.split()[0]
+            if "time:" not in line:
+                continue
+        if "time:" in line and name is not None and "%" not in line:
+            v = line.split("[", 1)[1].split("]", 1)[0].split()
+            lo, mid, hi = (float(v[i]) * units[v[i + 1]] for i in (0, 2, 4))
+            bench, threads = name.rsplit("/", 1)
+            rows.append((label, bench.removeprefix("scaling/"), int(threads), lo, mid, hi))
+            name = None
+    return header, rows
+
+
+def scaling_lines() -> list[str]:
+    """Thread scaling from the committed logs of ``benches/scaling.rs`` run
+    on a many-core machine (this machine has too few cores to measure it)."""
+    logs = sorted(SCALING.glob("*.log")) if SCALING.exists() else []
+    if not logs:
+        return []
+    lines = [
+        "## Thread scaling (`scaling`, a 16-core machine)",
+        "",
+        "Not measured by `--run` (it needs many cores): `benches/scaling.rs` run on a",
+        "16-core machine, its console output committed in `benches/scaling/` and turned",
+        "into these tables by this script. Speed-up is the 1-thread mean over the",
+        "n-thread mean of the same run (a rayon pool of n threads around each call).",
+        "Goals (issue 13): the solution map >= 13x and `solve_into` (what",
+        "`FourBar.solve_many` runs) >= 10x at 16 threads.",
+        "",
+    ]
+    for log in logs:
+        header, rows = parse_scaling_log(log)
+        lines += [f"### `{log.name}`", ""]
+        lines += [f"- {h}" for h in header]
+        lines += ["", "| run | benchmark | threads | time | interval | speed-up |", "|---|---|---|---|---|---|"]
+        one = {(lab, b): mid for lab, b, t, _, mid, _ in rows if t == 1}
+        for lab, b, t, lo, mid, hi in rows:
+            base = one.get((lab, b))
+            up = f"{base / mid:.1f}x" if base else ""
+            lines.append(
+                f"| {lab} | `{b}` | {t} | {fmt_time(mid)} | {fmt_time(lo)} to {fmt_time(hi)} | {up} |"
+            )
+        lines.append("")
+    return lines
+
+
 def write(figures: dict[str, Figure]) -> str:
     lines = [
         "# Benchmarks",
@@ -733,6 +795,7 @@ def write(figures: dict[str, Figure]) -> str:
             lines.append("")
         if s.extra is not None:
             lines += s.extra(figures)
+    lines += scaling_lines()
     return "\n".join(lines)
 
 

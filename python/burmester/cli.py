@@ -23,6 +23,7 @@ unless given ``--force``.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import math
 import os
@@ -36,7 +37,8 @@ import burmester
 from burmester import pivots as pv
 from burmester import taskfile
 from burmester._burmester import Grid, Pivot
-from burmester.taskfile import TaskFileError, TaskSpec
+from burmester.taskfile import TaskFileError, TaskSpec, describe_outside, outside_view
+from burmester.units import check_units, format_length
 
 if TYPE_CHECKING:
     from types import ModuleType
@@ -133,7 +135,33 @@ def _with_grid(spec: TaskSpec, grid: Optional[Sequence[int]]) -> TaskSpec:
             raise UsageError(f"--grid {name} must be from 2 to 20000, got {n}")
     v = spec.view
     view = Grid(v.xmin, v.xmax, v.ymin, v.ymax, nx, ny)
-    return TaskSpec(spec.poses, spec.driven_center, view, spec.limits, spec.source)
+    return dataclasses.replace(spec, view=view)
+
+
+def _with_units(spec: TaskSpec, args: argparse.Namespace) -> TaskSpec:
+    """The task with ``--units`` (any unit name) in place of the task
+    file's ``units``, when given."""
+    given = getattr(args, "units", None)
+    if given is None:
+        return spec
+    try:
+        units = check_units(given, "--units")
+    except burmester.InvalidInputError as e:
+        raise UsageError(str(e)) from None
+    return dataclasses.replace(spec, units=units)
+
+
+def _lengths_in(spec: TaskSpec) -> str:
+    """``", lengths in mm"`` for a task with units; ``""`` without."""
+    return f", lengths in {spec.units}" if spec.units else ""
+
+
+def _outside_note(spec: TaskSpec, points: Sequence[Tuple[str, Optional[Sequence[float]]]]) -> str:
+    """``"; B3 (...) lies outside the view x [..], y [..]"`` for the named
+    points outside the task's view (``""`` when all are in it): what a
+    summary adds so that nothing is silently left out of a picture."""
+    text = describe_outside(outside_view(points, spec.view.extent), spec.view.extent, spec.units)
+    return f"; {text}" if text else ""
 
 
 def _solution_map(spec: TaskSpec, filemon: burmester.Filemon) -> burmester.SolutionMap:
@@ -208,15 +236,14 @@ def _export_module(path: str) -> ModuleType:
     return export
 
 
-def _units(args: argparse.Namespace) -> str:
-    """``--units``: for CAD exports only (default mm); ``--dpi`` refused for them."""
-    if args.units is not None and not _is_cad(args.output):
-        raise UsageError(f"--units is for CAD exports (.dxf, .svg), not {args.output}")
+def _units(args: argparse.Namespace, spec: TaskSpec) -> str:
+    """The unit a CAD export records: the task's (``--units``, else the
+    task file's ``units``), else mm; ``--dpi`` refused for a CAD export."""
     if args.dpi is not None and _is_cad(args.output):
         raise UsageError(
             f"--dpi is for pictures (.png, .pdf, ...); a CAD export ({args.output}) has exact coordinates"
         )
-    return "mm" if args.units is None else str(args.units)
+    return spec.units if spec.units is not None else "mm"
 
 
 #: ``--dpi`` of ``map`` and ``linkage`` when not given.
@@ -291,9 +318,9 @@ def _fmt_point(p: Sequence[float]) -> str:
 
 def cmd_map(args: argparse.Namespace) -> int:
     """``burmester map``: draw the center-point (or circle-point) plane."""
-    spec = _with_grid(_load(args.task), args.grid)  # the task file's errors first
+    spec = _with_units(_with_grid(_load(args.task), args.grid), args)  # the task file's errors first
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
-    units = _units(args)
+    units = _units(args, spec)
     cad = _is_cad(args.output)
     export = _export_module(args.output) if cad else None
     plot = None if cad else _plot_module()
@@ -306,8 +333,8 @@ def cmd_map(args: argparse.Namespace) -> int:
             _write_cad(export.plane, args.output, filemon, args.output, plane="circle", units=units)
         else:
             assert plot is not None
-            ax = plot.circle_plane(filemon)
-        summary = f"circle-point plane of {spec.source}"
+            ax = plot.circle_plane(filemon, units=spec.units)
+        summary = f"circle-point plane of {spec.source}{_lengths_in(spec)}"
     else:
         smap = _solution_map(spec, filemon) if args.design or args.pivots > 0 else None
         if smap is not None and args.method == "conic":
@@ -330,14 +357,18 @@ def cmd_map(args: argparse.Namespace) -> int:
         else:
             assert plot is not None
             ax = plot.center_plane(
-                filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission
+                filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission,
+                units=spec.units,
             )
         summary = (
-            f"center-point plane of {spec.source}: {100 * free.mean():.1f}% of the "
+            f"center-point plane of {spec.source}{_lengths_in(spec)}: {100 * free.mean():.1f}% of the "
             f"{view.nx} x {view.ny} grid is branch-free"
         )
         if smap is not None:
-            summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
+            summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable ({pv.describe_limits(spec.limits)})"
+        task = filemon.task
+        summary += _outside_note(spec, [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in task.poles]
+                                 + [("C0", filemon.driven_center)])
     if export is None:
         _save(ax.figure, args.output, _picture_dpi(args))
     print(f"wrote {args.output}: {summary}")
@@ -354,10 +385,9 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     for flag, given in (("--plane circle", circle and n == 5), ("--design", args.design),
                         ("--pivots", args.pivots > 0)):
         if given:
-            raise UsageError(
-                f"{flag} is for three poses (Filemon's construction){' or four' if circle else ''}; "
-                f"{spec.source} has {n} poses"
-            )
+            what = ("three poses (Filemon's construction) or four (the circle-point curve)"
+                    if flag == "--plane circle" else "three poses (Filemon's construction)")
+            raise UsageError(f"{flag} is for {what}; {spec.source} has {n} poses")
     task = spec.task
     driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
     if export is not None:
@@ -365,16 +395,16 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
                    driven=driven, plane=args.plane, units=units)
     elif circle:
         assert plot is not None
-        ax = plot.circle_curve_plane(task, spec.view.extent, driven=driven)
+        ax = plot.circle_curve_plane(task, spec.view.extent, driven=driven, units=spec.units)
     else:
         assert plot is not None
-        ax = plot.burmester_plane(task, spec.view.extent, driven=driven)
+        ax = plot.burmester_plane(task, spec.view.extent, driven=driven, units=spec.units)
     if n == 4:
         plane: Literal["center", "circle"] = "circle" if circle else "center"
         arcs = task.order_arcs(*spec.view.extent, plane=plane)
         ordered = sum(1 for _, d, _ in arcs if d is not None)
         summary = (
-            f"{plane}-point curve of {spec.source}: {len(arcs)} pieces in "
+            f"{plane}-point curve of {spec.source}{_lengths_in(spec)}: {len(arcs)} pieces in "
             f"view, {ordered} of them with the crank meeting the poses in order"
         )
         if driven is not None:
@@ -384,7 +414,9 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     else:
         pts = task.burmester_points()
         listed = ", ".join(_fmt_point(c) for c, _ in pts)
-        summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
+        summary = (f"Burmester points of {spec.source}{_lengths_in(spec)}: {len(pts)}"
+                   + (f": {listed}" if pts else ""))
+    summary += _outside_note(spec, taskfile.curve_plane_points(task, driven, args.plane))
     if export is None:
         _save(ax.figure, args.output, _picture_dpi(args))
     print(f"wrote {args.output}: {summary}")
@@ -414,7 +446,7 @@ def _atlas_client(address: Optional[str]) -> Any:
 def cmd_atlas(args: argparse.Namespace) -> int:
     """``burmester atlas``: the best driving pivot for every driven center."""
     output = args.output if args.output is not None else (None if args.json else "atlas.png")
-    spec = _load(args.task)  # the task file's errors first
+    spec = _with_units(_load(args.task), args)  # the task file's errors first
     if output is not None:
         _output(output, PICTURE_TYPES, args.force)
     v = spec.view
@@ -441,25 +473,22 @@ def cmd_atlas(args: argparse.Namespace) -> int:
         lim = spec.limits
         doc = {
             "task": spec.source,
+            "units": spec.units,
             "driven_grid": [driven.nx, driven.ny],
             "driving_grid": [driving.nx, driving.ny],
             "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax]},
-            "limits": {
-                "min_transmission_deg": lim.min_transmission_deg,
-                "max_link_ratio": lim.max_link_ratio,
-                "input": lim.input,
-            },
+            "limits": pv.limits_dict(lim),
             "valid": int(atlas.valid.sum()),
             "with_acceptable": int(np.count_nonzero(atlas.count)),
             "best": [p._asdict() for p in atlas.best_pairs(args.top)],
         }
         print(json.dumps(doc, indent=2))
     if plot is not None and output is not None:
-        ax = plot.atlas(atlas)
+        ax = plot.atlas(atlas, units=spec.units)
         ax.set_title(f"pivot-pair atlas of {spec.source}")
         _save(ax.figure, output, args.dpi)
         summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
-                   f"have an acceptable driving pivot")
+                   f"have an acceptable driving pivot ({pv.describe_limits(spec.limits)}{_lengths_in(spec)})")
         if best:
             summary += f"; best {best[0].min_transmission_deg:.1f} deg at C0 {_fmt_point(best[0].driven)}, A0 {_fmt_point(best[0].driving)}"
         print(f"wrote {output}: {summary}", file=sys.stderr if args.json else sys.stdout)
@@ -476,7 +505,7 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "balan
     columns = [("#", "right"), ("A0 (x, y)", "right"), ("size", "right"), ("margin", "right"),
                ("ground", "right"), ("crank", "right"), ("coupler", "right"), ("rocker", "right"),
                ("Grashof type", "left"), ("mu min", "right"), ("mu1", "right"), ("mu2", "right"),
-               ("mu3", "right"), ("drive", "left"), ("limits", "left")]
+               ("mu3", "right"), ("drive", "left"), (pv.describe_limits(spec.limits), "left")]
     rows = []
     for k, p in enumerate(pivots, start=1):
         f = p.figures
@@ -487,20 +516,22 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "balan
         rows.append([str(k), _fmt_point(p.center), _fmt_size(p.size_ratio), f"{p.margin:.3f}",
                      *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, *mus, drive, "; ".join(bad) or "ok"])
     lines = [
-        f"Driving pivots A0 for {spec.source} (task size {span:.3g}: the largest distance "
-        f"between two poses), {head}",
+        f"Driving pivots A0 for {spec.source} (task size {format_length(span, spec.units, 3)}: the largest "
+        f"distance between two poses{_lengths_in(spec)}), {head}",
         table(columns, rows),
     ]
     if not pivots:
         lines.append("(no branch-free pivot in the view)")
-    lim = spec.limits
+    c0 = spec.filemon().driven_center
+    outside = describe_outside(outside_view([("the driven pivot C0", c0)], spec.view.extent), spec.view.extent,
+                               spec.units)
+    if outside:
+        lines.append(f"note: {outside} (the view is where A0 is searched; C0 is the task's)")
     lines.append(
         "size: the total length of the links (the coupler as its triangle with the coupler "
         "point) in task sizes. mu min: smallest transmission angle over the travel 1 -> 2 -> 3; "
-        "mu1-3: at the poses "
-        f"(degrees). drive: input rotation and assembly mode. limits: transmission >= "
-        f"{lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
-        + ("" if lim.input == "any" else f", {lim.input} input")
+        "mu1-3: at the poses (degrees). drive: input rotation and assembly mode. ok: meets the "
+        "limits in the header"
     )
     return "\n".join(lines)
 
@@ -516,15 +547,18 @@ def burmester_table(spec: TaskSpec, ranked: Sequence[pv.BurmesterLinkage], ranke
     what the columns mean."""
     task = spec.task
     points = task.burmester_points()
+    extent = spec.view.extent
     lines = [
-        f"Four-bars of the {len(points)} Burmester points of {spec.source} (task size {task.span:.3g}), "
-        f"{pv.describe_ranking(ranked_by)}, acceptable ones first",
+        f"Four-bars of the {len(points)} Burmester points of {spec.source} (task size "
+        f"{format_length(task.span, spec.units, 3)}{_lengths_in(spec)}), {pv.describe_ranking(ranked_by)}, "
+        "acceptable ones first",
     ]
     lines += [f"  B{k}: center {_fmt_point(c)}, circle point {_fmt_point(z)}"
+              + ("" if taskfile.in_view(c, extent) else " (outside the view)")
               for k, (c, z) in enumerate(points, start=1)]
     columns = [("#", "right"), ("drive", "right"), ("size", "right"), ("ground", "right"),
                ("crank", "right"), ("coupler", "right"), ("rocker", "right"), ("Grashof type", "left"),
-               ("mu min", "right"), ("ratio", "right"), ("motion", "left"), ("limits", "left")]
+               ("mu min", "right"), ("ratio", "right"), ("motion", "left"), (pv.describe_limits(spec.limits), "left")]
     rows = []
     for k, b in enumerate(ranked, start=1):
         f = b.linkage.figures
@@ -536,8 +570,13 @@ def burmester_table(spec: TaskSpec, ranked: Sequence[pv.BurmesterLinkage], ranke
     lines.append(table(columns, rows))
     if not ranked:
         lines.append("(no Burmester four-bar: the task has fewer than two real Burmester points)")
+    outside = describe_outside(outside_view([(f"B{k}", c) for k, (c, _) in enumerate(points, start=1)], extent),
+                               extent, spec.units)
+    if outside:
+        lines.append(f"note: {outside}; 'burmester map' draws only the view: widen [view] to see all")
     lines.append("drive: the driving dyad's Burmester point -> the driven one's. size: the total length of the "
-                 "links in task sizes. mu min: smallest transmission angle over the travel through the five poses")
+                 "links in task sizes. mu min: smallest transmission angle over the travel through the five "
+                 "poses. ok: meets the limits in the header")
     return "\n".join(lines)
 
 
@@ -557,7 +596,7 @@ def _pivots_five(args: argparse.Namespace, spec: TaskSpec) -> int:
 def cmd_pivots(args: argparse.Namespace) -> int:
     """``burmester pivots``: rank the branch-free driving pivots (five
     poses: the four-bars of the Burmester points)."""
-    spec = _load(args.task)
+    spec = _with_units(_load(args.task), args)
     if len(spec.poses) == 5:
         return _pivots_five(args, spec)
     spec = _with_grid(spec, args.grid)
@@ -596,9 +635,9 @@ def cmd_batch(args: argparse.Namespace) -> int:
 
 def cmd_linkage(args: argparse.Namespace) -> int:
     """``burmester linkage``: draw or animate the four-bar of one driving pivot."""
-    spec = _load(args.task)  # the task file's errors first
+    spec = _with_units(_load(args.task), args)  # the task file's errors first
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
-    units = _units(args)
+    units = _units(args, spec)
     out: str = args.output
     cad = _is_cad(out)
     animated = out.lower().endswith(ANIMATION_TYPES)
@@ -619,7 +658,8 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         task = spec.task
         best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1)
         if not best_pairs:
-            raise UsageError(f"no acceptable pair of dyads for {spec.source}; see 'burmester pairs'")
+            raise UsageError(f"no acceptable pair of dyads for {spec.source} ({pv.describe_limits(spec.limits)}); "
+                             "see 'burmester pairs'")
         sfb = best_pairs[0].linkage
         what = f"the best pair of dyads, driving pivot A0 = {_fmt_point(best_pairs[0].driving.center)}"
     else:
@@ -641,7 +681,7 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         frames = 60 if args.frames is None else args.frames
         fps = 20 if args.fps is None else args.fps
         try:
-            anim = plot.animate(sfb, out, task=task, frames=frames, fps=fps)
+            anim = plot.animate(sfb, out, task=task, frames=frames, fps=fps, units=spec.units)
         except RuntimeError as e:
             raise UsageError(str(e)) from None
         except OSError as e:
@@ -651,10 +691,14 @@ def cmd_linkage(args: argparse.Namespace) -> int:
 
         plt.close("all")
     else:
-        ax = _plot_module().linkage(sfb, task=task)
+        ax = _plot_module().linkage(sfb, task=task, units=spec.units)
         _save(ax.figure, out, _picture_dpi(args))
     state = "branch-free" if sfb.branch_free else "has a branch defect"
-    print(f"wrote {out}: four-bar with {what}, {sfb.fourbar.grashof}, {state}")
+    lengths = ", ".join(f"{name} {format_length(v, spec.units)}"
+                        for name, v in zip(("ground", "crank", "coupler", "rocker"), sfb.fourbar.lengths))
+    pivots = [("A0", sfb.driving[0]), ("C0", sfb.driven[0])]
+    print(f"wrote {out}: four-bar with {what}, {sfb.fourbar.grashof}, {state}: {lengths}"
+          f"{_outside_note(spec, pivots)}")
     return 0
 
 
@@ -728,18 +772,21 @@ def pair_table(spec: TaskSpec, pairs: Sequence[burmester.Pair], ranked_by: str) 
         rows.append([str(k), _fmt_point(p.driving.center), _fmt_point(p.driven.center), _fmt_size(p.size_ratio),
                      *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, drive])
     lines = [
-        f"Pairs of dyads for {spec.source} (task size {spec.task.span:.3g}), "
-        f"{pv.describe_ranking(ranked_by)} (acceptable under the limits)",
+        f"Pairs of dyads for {spec.source} (task size {format_length(spec.task.span, spec.units, 3)}"
+        f"{_lengths_in(spec)}), {pv.describe_ranking(ranked_by)}, acceptable under the "
+        f"{pv.describe_limits(spec.limits)}",
         table(columns, rows),
     ]
     if not pairs:
         lines.append("(no acceptable pair of dyads)")
-    lim = spec.limits
+    named = [(f"{name} of pair {k}", p_) for k, p in enumerate(pairs, start=1)
+             for name, p_ in (("A0", p.driving.center), ("C0", p.driven.center))]
+    outside = describe_outside(outside_view(named, spec.view.extent), spec.view.extent, spec.units)
+    if outside:
+        lines.append(f"note: {outside} ('burmester map' draws the view)")
     lines.append(
         "A0, C0: the driving and driven fixed pivots. size: the total length of the links in task "
-        "sizes. mu min: smallest transmission angle over the travel 1 -> 2 -> 3 -> 4 (degrees). "
-        f"limits: transmission >= {lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
-        + ("" if lim.input == "any" else f", {lim.input} input")
+        "sizes. mu min: smallest transmission angle over the travel 1 -> 2 -> 3 -> 4 (degrees)."
     )
     return "\n".join(lines)
 
@@ -747,7 +794,7 @@ def pair_table(spec: TaskSpec, pairs: Sequence[burmester.Pair], ranked_by: str) 
 def cmd_pairs(args: argparse.Namespace) -> int:
     """``burmester pairs``: rank the pairs of dyads of a four-pose task (the
     pair map), and draw the map."""
-    spec = _load(args.task)  # the task file's errors first
+    spec = _with_units(_load(args.task), args)  # the task file's errors first
     if args.output is not None:
         _output(args.output, PICTURE_TYPES, args.force)
     pmap = _pair_map(spec, args.samples)
@@ -758,6 +805,8 @@ def cmd_pairs(args: argparse.Namespace) -> int:
     if args.json:
         doc = {
             "task": spec.source,
+            "units": spec.units,
+            "limits": pv.limits_dict(spec.limits),
             "samples": list(pmap.shape),
             "acceptable_fraction": float(np.mean(pmap.acceptable)),
             "branch_free_fraction": float(np.mean(pmap.branch_free)),
@@ -768,7 +817,7 @@ def cmd_pairs(args: argparse.Namespace) -> int:
         print(pair_table(spec, pairs, args.rank_by))
     if args.output is not None and not args.json:
         print(f"wrote {args.output}: pair map of {spec.source}, {pmap.shape[1]} x {pmap.shape[0]} pairs, "
-              f"{100 * np.mean(pmap.acceptable):.1f}% acceptable")
+              f"{100 * np.mean(pmap.acceptable):.1f}% acceptable ({pv.describe_limits(spec.limits)})")
     return 0
 
 
@@ -890,9 +939,14 @@ def _ranged(lo: int, hi: int) -> Callable[[str], int]:
     return parse
 
 
-#: ``--units`` of a CAD export (:data:`burmester.export.UNITS`, kept here so
-#: that ``burmester --help`` does not import the export module).
+#: The usual ``--units`` (:data:`burmester.export.UNITS`, kept here so
+#: that ``burmester --help`` does not import the export module); any other
+#: unit name is accepted too.
 UNIT_CHOICES = ("mm", "cm", "m", "in", "ft", "unitless")
+#: The help of ``--units``.
+UNITS_HELP = ("the unit of the task's lengths, any name (" + ", ".join(UNIT_CHOICES[:-1]) + ", ...), in place of "
+              "the task file's units = \"...\": said after the lengths printed, on the picture's axes and in a "
+              ".dxf or .svg (default: the task file's; none: bare numbers, and a CAD export records mm)")
 
 #: The range of ``--dpi`` (matplotlib cannot draw much past 2^16 pixels a side).
 MIN_DPI, MAX_DPI = 10, 2400
@@ -968,8 +1022,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "shaded darker, contours of the minimum transmission angle over the travel")
     p.add_argument("--dpi", type=_dpi, default=None,
                    help=f"resolution of a picture, dots per inch, {MIN_DPI} to {MAX_DPI} (default: 100)")
-    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
-                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_map)
 
@@ -991,6 +1044,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "minimum transmission angle; compact: the smallest linkage relative to the task; "
                    "pareto: the front of transmission and size, compact to transmitting")
     p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.set_defaults(func=cmd_pivots)
 
     p = sub.add_parser("pairs", help="four poses: rank the pairs of dyads (the pair map)",
@@ -1008,6 +1062,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also draw the pair map as a picture (.png, .pdf, ...; matplotlib)")
     p.add_argument("--dpi", type=_dpi, default=None,
                    help=f"resolution of the picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_pairs)
 
@@ -1027,8 +1082,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="animation frames per second, 1 to 240 (default: 20)")
     p.add_argument("--travel", type=_ranged(2, 10_000), default=None, metavar="N",
                    help="CAD export: also draw the linkage at N positions over its travel, 2 to 10000")
-    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
-                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--dpi", type=_dpi, default=None,
                    help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
@@ -1050,6 +1104,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--driving-grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
                    help=f"driving centers over the view (default: {ATLAS_DRIVING_GRID[0]} {ATLAS_DRIVING_GRID[1]})")
     p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_atlas)
 

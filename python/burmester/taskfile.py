@@ -6,6 +6,8 @@ limits a good linkage must meet. Only ``[[pose]]`` and ``[driven]`` are
 required::
 
     # Lengths in any one unit; angles in degrees, counter-clockwise from +x.
+    units = "mm"          # optional: the unit's name, said in tables, on axes, in CAD files
+
     [[pose]]              # pose 1: where the coupler point is, and the coupler's angle
     x = 0.0
     y = 0.0
@@ -35,14 +37,21 @@ required::
     max_link_ratio = 10.0
     input = "any"         # "any", "crank" (turns fully) or "rocker"
 
+``units`` (top level, before the tables) names the unit of every length
+in the file: any name (``"mm"``, ``"in"``, ``"m"``); it scales nothing, and
+is only said (see :mod:`burmester.units`). Without it lengths are bare
+numbers (CAD exports record millimetres unless told otherwise).
+
 Four or five ``[[pose]]`` tables make a four- or five-position task (the
-Burmester curves and points, drawn by ``burmester map``): it takes only
-``[[pose]]``, ``[view]`` and, for four poses, ``[limits]`` (those of the pair
-map, ``burmester pairs``) and an optional ``[driven]``: a driven dyad on the
-curves (``center`` on the center-point curve, or ``circle`` on the
-circle-point curve, each within the core's tolerance), for which ``burmester
-map`` draws the arcs of driving dyads branch-free with it. Five poses take
-neither. Its default view is :func:`default_curve_view`.
+Burmester curves and points, drawn by ``burmester map``): it takes
+``[[pose]]``, ``[view]``, ``[limits]`` (for four poses those of the pair map,
+``burmester pairs``; for five, those the four-bars of the Burmester points
+are judged by, ``burmester pivots``) and, for four poses, an optional
+``[driven]``: a driven dyad on the curves (``center`` on the center-point
+curve, or ``circle`` on the circle-point curve, each within the core's
+tolerance), for which ``burmester map`` draws the arcs of driving dyads
+branch-free with it. Five poses take no ``[driven]`` (their dyads are the
+Burmester points). Its default view is :func:`default_curve_view`.
 
 The view becomes a :class:`burmester.Grid` and the limits a
 :class:`burmester.DesignLimits` (which validates them); older files may say
@@ -62,6 +71,7 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import burmester
 from burmester._burmester import DesignLimits, Filemon, Grid, Task
+from burmester.units import check_units
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -121,6 +131,9 @@ class TaskSpec:
     view: Grid
     limits: DesignLimits = field(default_factory=DesignLimits)
     source: str = "<example>"
+    #: The unit of the task's lengths (``units = "mm"`` in the file), or
+    #: None: said in tables, on axes and in CAD files, never scaled.
+    units: Optional[str] = None
 
     @property
     def task(self) -> Task:
@@ -210,6 +223,63 @@ def default_circle_view(filemon: Filemon) -> Tuple[float, float, float, float]:
     return (cx - half, cx + half, cy - half, cy + half)
 
 
+def in_view(point: Sequence[float], extent: Sequence[float]) -> bool:
+    """Whether ``point`` lies in the view ``(xmin, xmax, ymin, ymax)``
+    (its edges included)."""
+    x0, x1, y0, y1 = extent
+    return x0 <= point[0] <= x1 and y0 <= point[1] <= y1
+
+
+def outside_view(points: Sequence[Tuple[str, Optional[Sequence[float]]]],
+                 extent: Sequence[float]) -> List[Tuple[str, Point]]:
+    """The named points (``(name, (x, y))``; None for a point at infinity,
+    left out) that lie outside the view ``(xmin, xmax, ymin, ymax)``, in
+    order: what a picture of that view cannot show, and the summary must
+    say."""
+    return [(name, (float(p[0]), float(p[1]))) for name, p in points
+            if p is not None and not in_view(p, extent)]
+
+
+def curve_plane_points(task: Task, driven: Optional[Point] = None,
+                       plane: str = "center") -> List[Tuple[str, Optional[Point]]]:
+    """The named points a picture of four or five poses marks (None for a
+    pole at infinity): the poses; in the center-point plane the poles, and
+    for four poses the points ``Q_jk`` and the driven pivot ``C0``, for five
+    the Burmester points ``Bk``; in the circle-point plane of four poses the
+    points ``Q'jk``, and for a driven dyad its ``C1`` and ``C'k``."""
+    circle = plane == "circle"
+    pts: List[Tuple[str, Optional[Point]]] = [(f"pose {k}", (q[0], q[1])) for k, q in enumerate(task.poses, start=1)]
+    if not circle:
+        pts += [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in task.poles]
+    if len(task) == 4:
+        prime = "'" if circle else ""
+        pts += [("Q{}{}{}".format(prime, *q.pair), q.circle if circle else q.center)
+                for q in task.coincidence_points()]
+        if driven is not None:
+            if circle:
+                pts.append(("C1", task.circle_point(driven)))
+                pts += [(f"C'{k}", task.displace(driven, k, 1)) for k in range(1, 5)]
+            else:
+                pts.append(("C0", driven))
+    elif len(task) == 5 and not circle:
+        pts += [(f"B{k}", c) for k, (c, _) in enumerate(task.burmester_points(), start=1)]
+    return pts
+
+
+def describe_outside(outside: Sequence[Tuple[str, Sequence[float]]], extent: Sequence[float],
+                     units: Optional[str] = None) -> str:
+    """The points outside the view in words, for a summary or a note on a
+    picture: ``"B3 (12.300, 40.100) lies outside the view x [-5, 5], y [-5,
+    5]"`` (``""`` when none)."""
+    if not outside:
+        return ""
+    x0, x1, y0, y1 = extent
+    listed = ", ".join(f"{name} ({round(p[0], 3) + 0.0:.3f}, {round(p[1], 3) + 0.0:.3f})" for name, p in outside)
+    verb = "lies" if len(outside) == 1 else "lie"
+    unit = f" {units}" if units else ""
+    return f"{listed} {verb} outside the view x [{x0:.4g}, {x1:.4g}], y [{y0:.4g}, {y1:.4g}]{unit}"
+
+
 # ---------------------------------------------------------------------------
 # Parsing
 
@@ -256,6 +326,8 @@ class _Reader:
                 hint = ""
                 if key in ("angle", "angle_rad", "theta", "phi"):
                     hint = "; angles in task files are in degrees: use angle_deg"
+                if key == "units":
+                    hint = "; units = \"...\" goes at the top of the file, before the first table"
                 expected = ", ".join(allowed)
                 raise self.fail(
                     f"{where}.{key}", f"unknown key (expected one of: {expected}){hint}"
@@ -312,9 +384,12 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     """
     r = _Reader(source)
     for key in doc:
-        if key not in ("pose", "driven", "view", "limits"):
+        if key not in ("pose", "driven", "view", "limits", "units"):
             hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
-            raise r.fail(key, f"unknown top-level key (expected [[pose]], [driven], [view], [limits]){hint}")
+            if key in ("unit", "length_unit", "lengths"):
+                hint = ' (the unit of the lengths is units = "mm")'
+            raise r.fail(key, f"unknown top-level key (expected units, [[pose]], [driven], [view], [limits]){hint}")
+    units = _units(r, doc)
 
     # [[pose]] x3 (the branch maps of Filemon's construction need three), or
     # x4, x5 (the Burmester curves and points)
@@ -342,7 +417,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     except burmester.BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     if len(poses) > 3:
-        return _parse_many(r, doc, task, tuple(poses), source)
+        return _parse_many(r, doc, task, tuple(poses), source, units)
 
     # [driven]
     center = _driven(r, doc, task, required=True)
@@ -356,7 +431,21 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     view = _view(r, doc, default_view(filemon).extent)
 
     limits = _limits(r, doc)
-    return TaskSpec(tuple(poses), center, view, limits, source)
+    return TaskSpec(tuple(poses), center, view, limits, source, units)
+
+
+def _units(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
+    """The top-level ``units`` (a unit name), or None when absent."""
+    if "units" not in doc:
+        return None
+    value = doc["units"]
+    if isinstance(value, dict):
+        raise r.fail("[units]", 'expected units = "mm" (a name, at the top of the file, before the tables), '
+                                "found a table")
+    try:
+        return check_units(value, "units")
+    except burmester.InvalidInputError as e:
+        raise r.fail("units", f"{e}; found {_describe(value)}") from None
 
 
 def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
@@ -449,26 +538,26 @@ def _driven(r: _Reader, doc: Mapping[str, Any], task: Task, required: bool) -> O
 
 
 def _parse_many(
-    r: _Reader, doc: Mapping[str, Any], task: Task, poses: Tuple[Tuple[float, float, float], ...], source: str
+    r: _Reader, doc: Mapping[str, Any], task: Task, poses: Tuple[Tuple[float, float, float], ...], source: str,
+    units: Optional[str] = None,
 ) -> TaskSpec:
-    """The rest of a task file of four or five poses: ``[view]``, and for
-    four ``[limits]`` (the pair map's) and ``[driven]`` (a driven dyad on
-    the curve, whose branch-free driving arcs ``burmester map`` draws)."""
-    if len(poses) == 5:
-        for key, what in (("driven", "or four poses (a driven dyad on the center-point curve)"),
-                          ("limits", "or four poses (the pair map)")):
-            if key in doc:
-                raise r.fail(
-                    f"[{key}]",
-                    f"is for three ({what}), found 5 poses; leave [{key}] out of a five-pose task",
-                )
+    """The rest of a task file of four or five poses: ``[view]``,
+    ``[limits]`` (the pair map's, or those the Burmester four-bars of five
+    poses are judged by) and, for four, ``[driven]`` (a driven dyad on the
+    curve, whose branch-free driving arcs ``burmester map`` draws)."""
+    if len(poses) == 5 and "driven" in doc:
+        raise r.fail(
+            "[driven]",
+            "is for three or four poses (a driven dyad on the center-point curve), found 5 poses: "
+            "the dyads of five poses are their Burmester points; leave [driven] out",
+        )
     try:
         default = default_curve_view(task)
     except burmester.BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
-    limits = _limits(r, doc) if len(poses) == 4 else DesignLimits()
+    limits = _limits(r, doc)
     driven = _driven(r, doc, task, required=False) if len(poses) == 4 else None
-    return TaskSpec(poses, driven, _view(r, doc, default), limits, source)
+    return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units)
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
@@ -510,6 +599,12 @@ def dumps(spec: TaskSpec) -> str:
     doc = tomlkit.document()
     doc.add(tomlkit.comment("burmester task file (TOML)."))
     doc.add(tomlkit.comment("Lengths in any one unit; angles in DEGREES, counter-clockwise from +x."))
+    if spec.units is not None:
+        doc.add("units", note(tomlkit.item(spec.units),
+                              "the unit of the lengths: said in tables, on axes and in CAD files, never scaled"))
+    else:
+        doc.add(tomlkit.comment('units = "mm"  # the unit of the lengths, if you name one: said in tables, on axes '
+                                "and in CAD files"))
     doc.add(tomlkit.nl())
     poses = tomlkit.aot()
     for k, (x, y, a) in enumerate(spec.poses, start=1):
@@ -531,8 +626,7 @@ def dumps(spec: TaskSpec) -> str:
     view.add("y", note(tomlkit.item([v.ymin, v.ymax]), "ymin, ymax"))
     view.add("grid", note(tomlkit.item([v.nx, v.ny]), "samples along x and y"))
     doc.add("view", view)
-    four_with_limits = len(spec.poses) == 4 and spec.limits != DesignLimits()
-    if len(spec.poses) == 3 or four_with_limits:
+    if len(spec.poses) == 3 or spec.limits != DesignLimits():  # four and five poses: when not the defaults
         lim = spec.limits
         limits = note(tomlkit.table(), "what an acceptable linkage must meet")
         limits.add("min_transmission_deg", note(tomlkit.item(float(lim.min_transmission_deg)),

@@ -3,8 +3,8 @@
 //! follow its progress and to cancel it.
 //!
 //! A grid's rows are split into blocks of about [`BLOCK_SAMPLES`] samples
-//! (at least eight blocks when the grid allows), which rayon runs in
-//! parallel. Before each row the engine checks the cancel flag (a block of
+//! (at least [`BLOCKS_PER_THREAD`] blocks per worker thread when the grid
+//! allows), which rayon runs in parallel. Before each row the engine checks the cancel flag (a block of
 //! costly samples can take seconds, a row a fraction of that); after each
 //! block it reports the rows done. Every sample is computed from its grid
 //! indices alone, so the result does not depend on the blocks, on the
@@ -95,10 +95,19 @@ impl<'a> Control<'a> {
     }
 }
 
+/// Blocks per worker thread the engine aims for: the cost of a sample
+/// varies across a map (branch-free regions cost the whole kernel, others
+/// little), so a few blocks per thread leave the threads idle at the end;
+/// with 32 per thread the last block to finish is a small share of a map's
+/// time on 16 threads (measured: `benches/scaling.rs`, BENCHMARKS.md).
+pub const BLOCKS_PER_THREAD: usize = 32;
+
 /// Rows per block for rows of `nx` samples: about [`BLOCK_SAMPLES`]
-/// samples, at least eight blocks when there are enough rows.
+/// samples, fewer where that would give fewer than [`BLOCKS_PER_THREAD`]
+/// blocks per thread of the current rayon pool (at least one row).
 pub(crate) fn rows_per_block(nx: usize, ny: usize) -> usize {
-    (BLOCK_SAMPLES / nx.max(1)).clamp(1, ny.div_ceil(8).max(1))
+    let blocks = BLOCKS_PER_THREAD * rayon::current_num_threads().max(1);
+    (BLOCK_SAMPLES / nx.max(1)).clamp(1, ny.div_ceil(blocks).max(1))
 }
 
 /// Data laid out in rows that can be split into blocks (one output array,
@@ -141,8 +150,10 @@ pub(crate) fn run_blocks<R: Rows>(
     run_blocks_with(nx, ny, data, control, || (), |(), j, rows, n| f(j, rows, n))
 }
 
-/// [`run_blocks`] with a scratch value made by `init` once per block and
-/// lent to `f` for each of its rows (buffers a row's work reuses).
+/// [`run_blocks`] with a scratch value made by `init` (once per worker's
+/// share of the blocks, not per block) and lent to `f` for each row (buffers
+/// a row's work reuses: `f` must not depend on what an earlier row left in
+/// them).
 ///
 /// # Errors
 ///
@@ -167,24 +178,25 @@ pub(crate) fn run_blocks_with<R: Rows, S>(
         j += n;
     }
     let done = AtomicUsize::new(0);
-    blocks.into_par_iter().for_each(|(j0, block, n)| {
-        // Row by row, checking the cancel flag before each: a block of
-        // costly samples (a solution map with obstacles) can take seconds,
-        // a row a small fraction of that.
-        let mut rest = block;
-        let mut finished = 0;
-        let mut scratch = init();
-        while finished < n && !control.is_cancelled() {
-            let (row, tail) = rest.split_rows(1);
-            f(&mut scratch, j0 + finished, row, 1);
-            rest = tail;
-            finished += 1;
-        }
-        if finished > 0 {
-            let d = done.fetch_add(finished, Ordering::Relaxed) + finished;
-            control.report(d, ny);
-        }
-    });
+    blocks
+        .into_par_iter()
+        .for_each_init(&init, |scratch, (j0, block, n)| {
+            // Row by row, checking the cancel flag before each: a block of
+            // costly samples (a solution map with obstacles) can take seconds,
+            // a row a small fraction of that.
+            let mut rest = block;
+            let mut finished = 0;
+            while finished < n && !control.is_cancelled() {
+                let (row, tail) = rest.split_rows(1);
+                f(scratch, j0 + finished, row, 1);
+                rest = tail;
+                finished += 1;
+            }
+            if finished > 0 {
+                let d = done.fetch_add(finished, Ordering::Relaxed) + finished;
+                control.report(d, ny);
+            }
+        });
     let done = done.into_inner();
     if done < ny {
         return Err(Error::Cancelled { done, total: ny });
