@@ -14,13 +14,28 @@
 pub const POINT: f64 = 1e-12;
 
 /// Two poses whose angles agree within this many radians (modulo `2 pi`)
-/// differ by a pure translation: their pole is at infinity. Above the
-/// bound the three-position maps run through the poles and keep a relative
-/// accuracy of a few `eps / theta` near the poses, about `1e-9` at this
-/// bound; at or below it they run by the linear form with the poses' own
-/// angles (no pole, no division by `theta`), so the maps change by `O(theta)`
-/// across the bound.
+/// differ by a pure translation: their pole is at infinity (what needs
+/// three finite poles, the pole triangle, is refused). The three-position
+/// maps do not switch here: they run by the linear form with the poses' own
+/// angles (no pole, no division by `theta`) wherever a pole lies farther
+/// than [`POLE_DISTANCE`] spans from the poses, which includes every pole
+/// at infinity, so they are the same maps on both sides of this bound.
 pub const MIN_ROTATION: f64 = 1e-6;
+
+/// The farthest the poles `P12` and `P13` may lie from pose 1's position,
+/// in units of the task's span (the largest distance between two pose
+/// positions), for a task of three poses to run its maps through the poles
+/// (Borm & Kim's closed form, [`Cremona`](crate::Cremona)); farther, a
+/// small rotation puts a pole far away and the closed form loses what it
+/// cancels (its relative error grows like `eps / theta`, a factor of about
+/// `0.5 / theta` over what rounding the input causes: `1e6` at `1e-6`
+/// rad), so the maps run by the linear form, which needs no pole and keeps
+/// the input's accuracy at every rotation (measured against mpmath from
+/// `1e-9` to 1 rad). A pole `8` spans away is a rotation of about `0.12`
+/// rad; the closed form is then within a factor of about `5` of the
+/// input's rounding. The choice is by this conditioning, not by the
+/// rotation alone; [`MIN_ROTATION`] still says where a pole is at infinity.
+pub const POLE_DISTANCE: f64 = 8.0;
 
 /// Factor of `f64::EPSILON` for the position analysis' rounding decisions,
 /// relative to the size of the quantities compared: a toggle (Heron's
