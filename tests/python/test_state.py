@@ -39,6 +39,25 @@ def test_far_cubic_gradient_is_finite():
     assert k > 0 and g[1] == pytest.approx(k * want[1], rel=1e-12)
 
 
+@settings(max_examples=300, deadline=None)
+@given(x=st.floats(allow_nan=False, allow_infinity=False),
+       y=st.floats(allow_nan=False, allow_infinity=False),
+       coefficients=st.lists(st.floats(-10, 10), min_size=10, max_size=10))
+def test_any_finite_point_has_a_finite_gradient(x, y, coefficients):
+    """Hypothesis (the target that would have found it): any finite point,
+    any cubic, a finite gradient, and ``|f| / |grad f|`` the distance."""
+    try:
+        c = burmester.Cubic(coefficients)
+    except burmester.BurmesterError:
+        return
+    g = c.gradient((x, y))
+    assert all(math.isfinite(v) for v in g), (x, y, g)
+    d, v = c.distance((x, y)), abs(c.evaluate((x, y)))
+    n = math.hypot(*g)
+    if v > 0 and n > 0 and math.isfinite(d) and d > 0:
+        assert v / n == pytest.approx(d, rel=1e-9)
+
+
 def refused(call):
     with pytest.raises(InvalidInputError) as e:
         call()
