@@ -308,10 +308,10 @@ pub(crate) fn check_state(
         if g == SolutionMap::GRASHOF_NONE {
             return bad("grashof", "no class for a valid sample".to_owned());
         }
-        if !(lr >= 1.0) {
+        if lr.is_nan() || lr < 1.0 {
             return bad("link_ratio", format!("{lr} (at least 1 for a linkage)"));
         }
-        if !(sr > 0.0) {
+        if sr.is_nan() || sr <= 0.0 {
             return bad("size_ratio", format!("{sr} (positive for a linkage)"));
         }
         if (d == 0) != mt.is_nan() || !(mt.is_nan() || (0.0..=half_pi).contains(&mt)) {

@@ -209,13 +209,20 @@ pub(crate) fn figures<const MODES: bool, const N: usize>(
     // The mode at a pose: the position analysis' loop at the pose's input
     // direction must close clear of a toggle (the test of `FourBar::solve`,
     // so the linkage assembles there in the mode reported), and the pose's
-    // own loop gives the mode, by the same band.
+    // own loop gives the mode, by the same band. A pose's loop clear of the
+    // band by a factor of 100 in sin(mu) (most of them) is clear in the
+    // position analysis' loop too, which differs from it by the synthesis'
+    // rounding, far inside that margin: decided without square roots.
     let modes = PerPose::from_fn(N, |k| {
-        if MODES && clear_of_toggle(lengths, c0 - a0, a[k] - a0) {
-            AssemblyMode::of_loop_within(c[k] - a[k], c[k] - c0, l1 + l2)
-        } else {
-            None
+        if !MODES {
+            return None;
         }
+        let (u, w) = (c[k] - a[k], c[k] - c0);
+        AssemblyMode::of_loop_well_clear(u, w, l1 + l2).or_else(|| {
+            clear_of_toggle(lengths, c0 - a0, a[k] - a0)
+                .then(|| AssemblyMode::of_loop_within(u, w, l1 + l2))
+                .flatten()
+        })
     });
     let grashof = grashof_of(lengths);
     let bounds = input_bounds(lengths);

@@ -151,7 +151,7 @@ impl AssemblyMode {
     /// ```
     #[inline(always)]
     pub fn of_loop(coupler: Vector2<f64>, rocker: Vector2<f64>) -> Option<Self> {
-        Self::of_loop_scaled(coupler, rocker, None)
+        Self::of_loop_scaled(coupler, rocker, None, 1.0)
     }
 
     /// [`of_loop`](Self::of_loop) for vectors formed from vectors of size
@@ -167,30 +167,70 @@ impl AssemblyMode {
     /// ```
     #[inline(always)]
     pub fn of_loop_within(coupler: Vector2<f64>, rocker: Vector2<f64>, reach: f64) -> Option<Self> {
-        Self::of_loop_scaled(coupler, rocker, Some(reach))
+        Self::of_loop_scaled(coupler, rocker, Some(reach), 1.0)
+    }
+
+    /// The mode of [`of_loop_within`](Self::of_loop_within) where the loop
+    /// is clear of its toggle band by a factor of 100 in `sin mu` (decided
+    /// by a bound without square roots), else `None`: the fast path of the
+    /// figures, which check the rest by the position analysis' loop. The
+    /// factor covers the difference between a pose's loop and the position
+    /// analysis' loop at the pose (the synthesis' rounding: lengths that
+    /// differ from pose 1's by up to about `1e4 eps` relative, which moves
+    /// `sin mu` near a toggle by the square root of that).
+    #[inline(always)]
+    pub(crate) fn of_loop_well_clear(
+        coupler: Vector2<f64>,
+        rocker: Vector2<f64>,
+        reach: f64,
+    ) -> Option<Self> {
+        Self::of_loop_scaled(coupler, rocker, Some(reach), 1e4)
     }
 
     /// [`of_loop_within`](Self::of_loop_within), the reach `|u| + |w|`
-    /// where `None` (taken after scaling, so that it does not overflow).
+    /// where `None` (taken after scaling, so that it does not overflow);
+    /// with `margin > 1`, only the mode of a loop clear of `margin` times
+    /// the bound without square roots (`None` otherwise).
     #[inline(always)]
     fn of_loop_scaled(
         coupler: Vector2<f64>,
         rocker: Vector2<f64>,
         reach: Option<f64>,
+        margin: f64,
     ) -> Option<Self> {
-        // In units of the largest component: no square overflows or
-        // underflows for any finite vectors.
+        // In units of the largest component where a four-fold product could
+        // leave the range of doubles (zero, NaN and infinite vectors: NaN).
         let m = (coupler.x.abs().max(coupler.y.abs())).max(rocker.x.abs().max(rocker.y.abs()));
-        let (u, w) = (coupler / m, rocker / m);
+        let k = if (SAFE_MIN..=SAFE_MAX).contains(&m) {
+            1.0
+        } else {
+            1.0 / m
+        };
+        let (u, w) = (coupler * k, rocker * k);
         let s = cross(u, w);
-        let (l3, l4) = (u.norm(), w.norm());
-        let (p, dot) = (l3 * l4, u.dot(&w));
+        let (u2, w2) = (u.norm_squared(), w.norm_squared());
+        let r2 = (u - w).norm_squared();
+        // A bound of the tolerance without square roots: A, B >= 0 with
+        // A + B = 4 |u| |w| <= 2 (u2 + w2), and each E below
+        // (|u| + |w|)^2 + r^2 + r^2 + rho^2 <= 2 (u2 + w2) + 2 r2 + rho^2.
+        let kk = tolerance::LOOP_EPS * f64::EPSILON;
+        let rho2 = reach.map_or(2.0 * (u2 + w2), |r| (r * k) * (r * k));
+        let e_up = 2.0 * (u2 + w2) + 2.0 * r2 + rho2;
+        let tol_up = kk * 2.0 * (u2 + w2) * e_up + kk * kk * e_up * e_up;
+        if 4.0 * s * s > margin * tol_up {
+            return AssemblyMode::from_sign(s);
+        }
+        if margin > 1.0 {
+            return None;
+        }
+        let (p, dot) = ((u2 * w2).sqrt(), u.dot(&w));
         // Heron's factors from the vectors (no cancellation of squares):
         // A = 2 L3 L4 (1 + cos phi), B = 2 L3 L4 (1 - cos phi).
         let (a, b) = (2.0 * (p + dot), 2.0 * (p - dot));
-        let r2 = (u - w).norm_squared();
-        let rho = reach.map_or(l3 + l4, |r| r / m);
-        let tol = tolerance::heron_tolerance(l3 + l4, l3 - l4, r2, rho, a, b);
+        // (L3 + L4)^2 and |L3^2 - L4^2| from the squares.
+        let (sum2, diffsum) = (u2 + w2 + 2.0 * p, (u2 - w2).abs());
+        let rho = reach.map_or_else(|| u2.sqrt() + w2.sqrt(), |r| r * k);
+        let tol = tolerance::heron_tolerance(sum2, diffsum, r2, rho, a, b);
         // Not `<=`: NaN (zero vectors, `m = 0`) is a toggle too (no mode).
         if 4.0 * s * s > tol {
             AssemblyMode::from_sign(s)
@@ -599,7 +639,8 @@ impl FourBar {
         let sum2 = o.mul(sum, sum);
         let (a, b) = (o.sub(sum2, r2), o.sub(r2, o.mul(diff, diff)));
         let heron = o.mul(a, b);
-        let tol = heron_tolerance(o, sum, diff, r2, o.sp(self.rho_n), a, b);
+        let diffsum = o.sp(self.sq_diff_n.abs());
+        let tol = heron_tolerance(o, sum2, diffsum, r2, o.sp(self.rho_n), a, b);
         // A select, not `max` (which may return either zero for `-0.0`).
         let zero = o.sp(0.0);
         let root = o.0.sqrt_f64s(o.sel(o.gt(heron, zero), heron, zero));
@@ -935,8 +976,8 @@ fn angle_error(theta2: f64) -> Error {
 #[inline(always)]
 fn heron_tolerance<S: Simd>(
     o: Ops<S>,
-    sum: V<S>,
-    diff: V<S>,
+    sum2: V<S>,
+    diffsum: V<S>,
     r2: V<S>,
     rho: V<S>,
     a: V<S>,
@@ -945,8 +986,8 @@ fn heron_tolerance<S: Simd>(
     let k = o.sp(tolerance::LOOP_EPS * f64::EPSILON);
     let r = o.0.sqrt_f64s(r2);
     let shared = o.add(r2, o.mul(o.mul(o.sp(2.0), r), rho));
-    let ea = o.add(o.mul(sum, sum), shared);
-    let eb = o.add(o.mul(o.abs(diff), sum), shared);
+    let ea = o.add(sum2, shared);
+    let eb = o.add(diffsum, shared);
     let first = o.mul(k, o.add(o.mul(o.abs(b), ea), o.mul(o.abs(a), eb)));
     o.add(first, o.mul(o.mul(o.mul(k, k), ea), eb))
 }
@@ -960,17 +1001,31 @@ fn heron_tolerance<S: Simd>(
 /// for NaN and for a zero direction.
 #[inline(always)]
 pub(crate) fn clear_of_toggle(lengths: [f64; 4], ground: Vector2<f64>, dir: Vector2<f64>) -> bool {
-    let scale = lengths.iter().copied().fold(0.0, f64::max);
-    let [g, c, l3, l4] = lengths.map(|l| l / scale);
-    let Some(e) = normalized(dir) else {
-        return false;
+    let [g, c, l3, l4] = lengths;
+    // In units of the longest link where a product of four lengths (Heron's
+    // product, its tolerance) could leave the range of doubles.
+    let m = g.max(c).max(l3).max(l4);
+    let k = if (SAFE_MIN..=SAFE_MAX).contains(&m) {
+        1.0
+    } else {
+        1.0 / m
     };
-    let d = ground / scale - e * c;
+    let (g, c, l3, l4) = (g * k, c * k, l3 * k, l4 * k);
+    let dir = dir * k;
+    // The crank tip as the position analysis puts it: the crank's length
+    // along the direction (a zero or NaN direction fails below).
+    let d = ground * k - dir * (c / dir.norm());
     let r2 = d.norm_squared();
     let (sum, diff) = (l3 + l4, l3 - l4);
     let (a, b) = (sum * sum - r2, r2 - diff * diff);
-    a * b > tolerance::heron_tolerance(sum, diff, r2, g + c, a, b)
+    a * b > tolerance::heron_tolerance(sum * sum, diff.abs() * sum, r2, g + c, a, b)
 }
+
+/// Magnitudes between which four-fold products (Heron's product of a loop
+/// and its tolerance) need no scaling.
+const SAFE_MIN: f64 = 1e-60;
+/// See [`SAFE_MIN`].
+const SAFE_MAX: f64 = 1e60;
 
 /// [`FourBar::solve_chunk`] on the lanes of one instruction set.
 struct SolveLanes<'a> {
@@ -1213,7 +1268,7 @@ mod tests {
         let mut x = 0.123_456_789_f64;
         let mut next = || {
             // A small LCG-free sequence: fractional parts of multiples.
-            x = (x * 997.0 + 0.318_309_886).fract();
+            x = (x * 997.0 + 0.271_828_18).fract();
             x
         };
         for _ in 0..2000 {
@@ -1222,6 +1277,7 @@ mod tests {
             let r2 = (sum * 1.5 * next()).powi(2) * 10f64.powi(-(next() * 8.0) as i32);
             let rho = 2.0 * next() + 1e-9;
             let (a, b) = (sum * sum - r2, r2 - diff * diff);
+            let (sum, diff) = (sum * sum, (diff * sum).abs());
             let want = tolerance::heron_tolerance(sum, diff, r2, rho, a, b);
             let o = Ops(pulp::Scalar);
             let got = heron_tolerance(o, sum, diff, r2, rho, a, b);

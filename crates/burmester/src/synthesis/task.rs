@@ -191,11 +191,12 @@ impl Task {
         let span = span_of(&motion);
         let far = length(poles[0] - p1).max(length(poles[1] - p1));
         if far > tolerance::POLE_DISTANCE * span {
+            let linear = Linear::new(motion, size, span);
             return Ok(Task {
                 motion,
                 scale: size,
-                three: Some(Maps::Linear(Linear::new(motion, size, span))),
-                far_poles: Some(cremona),
+                three: Some(Maps::Linear(linear)),
+                far_poles: Some(cremona.with_linear(linear)),
             });
         }
         Ok(Task {
