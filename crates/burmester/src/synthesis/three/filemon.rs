@@ -369,7 +369,8 @@ impl Filemon {
     /// simulate  agrees with direct farther than 1e-9 from the curves and the
     ///           pole circle, except that it also reports the circuit defect of
     ///           an input rocking in two arcs; a pose counts as reached within 1e-7
-    ///           task sizes and 1e-7 rad (tolerance::REACH)
+    ///           task sizes and 1e-7 rad (tolerance::REACH); a toggle at a design
+    ///           pose or on the way (tolerance::heron_tolerance) is Boundary
     /// ```
     ///
     /// Inside a band a point may be classified either way. The conic band
@@ -453,9 +454,14 @@ impl Filemon {
     fn classify_simulate(&self, a0: Point2<f64>) -> Result<Branch> {
         let fb = self.four_bar(a0)?;
         let modes = fb.modes();
+        // A toggle at a design pose (the figures' one band, which the
+        // position analysis shares) is the boundary, wherever it is.
         let Some(mode) = modes[0] else {
             return Ok(Branch::Boundary);
         };
+        if modes.iter().any(Option::is_none) {
+            return Ok(Branch::Boundary);
+        }
         let range = fb.fourbar.input_range();
         let poses = self.task.poses();
         let reach = tolerance::REACH * self.task.scale();
