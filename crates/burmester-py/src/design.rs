@@ -137,6 +137,7 @@ impl MapOptions {
                 obstacles: obstacles.unwrap_or_default().into_iter().map(pts).collect(),
                 link_width: link_width.0,
                 travel_samples: travel_samples.0,
+                envelope: None,
             },
         })
     }
@@ -587,6 +588,7 @@ impl PySolutionMap {
                 obstacles: constraints.1.into_iter().map(pts).collect(),
                 link_width: constraints.2,
                 travel_samples: constraints.3,
+                envelope: None,
             },
         };
         let shape = (context.grid.ny(), context.grid.nx());
