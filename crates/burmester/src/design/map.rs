@@ -384,11 +384,6 @@ impl<'a> Judge<'a> {
         self.prepared.is_empty() && !self.limits.limits_size()
     }
 
-    /// The prepared constraints.
-    pub(crate) fn prepared(&self) -> &Prepared {
-        &self.prepared
-    }
-
     /// The limits behind `acceptable`.
     pub(crate) fn limits(&self) -> &DesignLimits {
         self.limits
