@@ -14,6 +14,7 @@ figures stay as they were) and returned as PNG bytes:
 ``SynthesizedFourBar`` :func:`burmester.plot.linkage`: the linkage at the poses
 ``SolutionMap``       :func:`burmester.plot.solution_map`
 ``PivotAtlas``        :func:`burmester.plot.atlas`
+``Design``            :func:`burmester.plot.linkage` of its linkage
 ===================== =============================================
 
 matplotlib is imported when a picture is asked for, not before: ``import
@@ -54,6 +55,8 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
         return lambda ax: plot.solution_map(obj, ax=ax)
     if isinstance(obj, burmester.PivotAtlas):
         return lambda ax: plot.atlas(obj, ax=ax)
+    if isinstance(obj, burmester.Design):
+        return lambda ax: plot.linkage(obj.linkage, ax=ax)
     raise TypeError(f"no picture for a {type(obj).__name__}")
 
 

@@ -28,8 +28,8 @@ use proptest::test_runner::TestRunner;
 /// The design's coarse resolution in these tests (unoptimised builds).
 fn small(options: DesignOptions) -> DesignOptions {
     DesignOptions {
-        coarse_driven: 6,
-        coarse_driving: 20,
+        coarse_driven: 8,
+        coarse_driving: 24,
         coarse_pairs: 40,
         ..options
     }
@@ -196,7 +196,9 @@ fn check_report(t: &Task, o: &DesignOptions, designs: &[Design], sep: f64) {
 #[test]
 fn example_designs_beat_the_brute_force() {
     let t = example::task();
-    for rank_by in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
+    // (The other rankings against the brute force: the Python tests, on an
+    // optimised build.)
+    for rank_by in [RankBy::Balanced] {
         let o = small(DesignOptions {
             rank_by,
             ..DesignOptions::default()
@@ -218,7 +220,7 @@ fn random_three_pose_tasks_beat_the_brute_force() {
     let mut runner = TestRunner::deterministic();
     let mut compared = 0;
     let mut tried = 0;
-    while compared < 4 {
+    while compared < 3 {
         tried += 1;
         assert!(tried < 40);
         let t = task().new_tree(&mut runner).unwrap().current();

@@ -220,7 +220,7 @@ fn linkage_of(task: &Task, driving: (PyPoint, PyPoint), driven: (PyPoint, PyPoin
 }
 
 /// One answer of `burmester.design`.
-#[pyclass(frozen, name = "Design", module = "burmester")]
+#[pyclass(frozen, from_py_object, name = "Design", module = "burmester")]
 #[derive(Clone)]
 pub struct PyDesign {
     task: Task,
@@ -367,7 +367,7 @@ fn limit_of(name: &str) -> PyResult<Limit> {
 }
 
 /// A candidate that misses the limits by little (when nothing fits).
-#[pyclass(frozen, name = "NearMiss", module = "burmester")]
+#[pyclass(frozen, from_py_object, name = "NearMiss", module = "burmester")]
 #[derive(Clone)]
 pub struct PyNearMiss {
     task: Task,
@@ -666,8 +666,8 @@ macro_rules! design_fn {
         #[pyfunction]
         #[pyo3(signature = ($task $(, $arg)*, *, space = None, limits = None, rank_by = "balanced",
             top = Count(5), min_separation = None, coarse_driven = Count(12),
-            coarse_driving = Count(48), coarse_pairs = Count(120), starts = Count(12),
-            max_iterations = Count(400), progress = None))]
+            coarse_driving = Count(48), coarse_pairs = Count(120), starts = Count(32),
+            max_iterations = Count(1200), progress = None))]
         #[allow(clippy::too_many_arguments)]
         pub(crate) fn $name<$lt>(
             $py: Python<$lt>,
@@ -715,7 +715,8 @@ design_fn! {
 design_fn! {
     /// The three-pose coarse pass: the driven and driving grids and the
     /// keywords of `_atlas_tile`.
-    fn _design_plan<'py>(py, task; opts, _progress) -> Bound<'py, PyDict> {
+    fn _design_plan<'py>(py, task; opts, progress) -> Bound<'py, PyDict> {
+        let _ = progress;
         let plan = task.inner.design_plan(&opts).py()?;
         let d = PyDict::new(py);
         d.set_item("driven", PyGrid { inner: plan.driven })?;

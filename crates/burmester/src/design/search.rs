@@ -18,12 +18,15 @@
 //!   a `coarse_driving` grid), gives the starts: the cells by score, best
 //!   first, at least the separation apart. Each start is then **refined
 //!   continuously**: both pivots move together, `(A0, C0)` in the plane,
-//!   by Nelder–Mead (the `argmin` crate) on the exact score, a linkage
-//!   that is not acceptable costing a barrier, so the refined linkage stays
-//!   branch-free, in order, inside the limits and the space, and is not
-//!   bounded by the grid. The refinement runs twice (the second time from
-//!   the first's best with a simplex an eighth as large), which is the
-//!   usual cure for a simplex that collapsed early.
+//!   by Nelder–Mead (the `argmin` crate, its parameters adapted to the
+//!   dimension) on the exact score. A linkage that misses a limit costs its
+//!   score plus a penalty for its shortfall (so the simplex can slide along
+//!   a limit's boundary, where the best linkages usually are), one without
+//!   a feasible motion a barrier, and only acceptable linkages are kept: the
+//!   refined linkage is branch-free, in order, inside the limits and the
+//!   space, and not bounded by the grid. The refinement restarts a few times from its
+//!   best point with a fresh simplex (the usual cure for a simplex that
+//!   collapsed early along a constraint's boundary).
 //! * **Four poses**: the [pair map](crate::design::pairs) with
 //!   `coarse_pairs` samples along each axis, under the same limits and
 //!   space, gives the starts; each is refined along the two curve
@@ -99,10 +102,10 @@ pub struct DesignOptions {
     /// [`DesignOptions::MAX_COARSE_PAIRS`], default 120).
     pub coarse_pairs: usize,
     /// How many coarse starts are refined, at most (1 to
-    /// [`DesignOptions::MAX_STARTS`], default 12).
+    /// [`DesignOptions::MAX_STARTS`], default 32).
     pub starts: usize,
-    /// Nelder–Mead iterations per refinement, both rounds together (1 to
-    /// [`DesignOptions::MAX_ITERATIONS`], default 400).
+    /// Nelder–Mead iterations per refinement, all rounds together (1 to
+    /// [`DesignOptions::MAX_ITERATIONS`], default 1200).
     pub max_iterations: usize,
 }
 
@@ -117,8 +120,8 @@ impl Default for DesignOptions {
             coarse_driven: Self::DEFAULT_COARSE_DRIVEN,
             coarse_driving: Self::DEFAULT_COARSE_DRIVING,
             coarse_pairs: Self::DEFAULT_COARSE_PAIRS,
-            starts: 12,
-            max_iterations: 400,
+            starts: 32,
+            max_iterations: 1200,
         }
     }
 }
@@ -141,7 +144,7 @@ impl DesignOptions {
     /// The most refined starts.
     pub const MAX_STARTS: usize = 1000;
     /// The most Nelder–Mead iterations per refinement.
-    pub const MAX_ITERATIONS: usize = 100_000;
+    pub const MAX_ITERATIONS: usize = 20_000;
     /// The default minimum separation of two designs, in task sizes.
     pub const DEFAULT_SEPARATION: f64 = 0.2;
 
@@ -408,7 +411,11 @@ struct Verdict {
     size_ratio: f64,
     fails: u16,
     shortfall: f64,
+    /// The score, where acceptable.
     score: Option<f64>,
+    /// The score's formula on the figures, acceptable or not (where the
+    /// motion has a travel).
+    raw: Option<f64>,
 }
 
 impl Verdict {
@@ -456,6 +463,7 @@ impl<'a> Exact<'a> {
             fails: 0,
             shortfall: 0.0,
             score: None,
+            raw: None,
         };
         let fail = |v: &mut Verdict, limit: Limit, by: f64| {
             v.fails |= limit.bit();
@@ -528,17 +536,23 @@ impl<'a> Exact<'a> {
                 fail(&mut v, Limit::Envelope, 1.0);
             }
         }
+        v.raw = self
+            .rank_by
+            .score(f.min_transmission, size_ratio, f.link_ratio);
         if v.fails == 0 {
-            v.score = self
-                .rank_by
-                .score(f.min_transmission, size_ratio, f.link_ratio);
+            v.score = v.raw;
         }
         Some(v)
     }
 }
 
 /// The refinement's objective: the negated score of an acceptable
-/// linkage, [`BARRIER`] otherwise; keeps the best verdict seen.
+/// linkage; for one whose motion is feasible but that misses limits, the
+/// negated score's formula plus a penalty of [`PENALTY`] times its
+/// shortfall (relative to the score's size), so the simplex slides along a
+/// limit's boundary instead of stalling at it; [`BARRIER`] for one without
+/// a feasible motion (or no linkage). Keeps the best acceptable verdict
+/// seen: the answer is always acceptable.
 struct Objective<'a, F: Fn(&[f64]) -> Option<Verdict>> {
     eval: F,
     control: &'a Control<'a>,
@@ -555,9 +569,17 @@ impl<F: Fn(&[f64]) -> Option<Verdict>> CostFunction for Objective<'_, F> {
             return Ok(BARRIER);
         }
         self.evaluations.set(self.evaluations.get() + 1);
-        let Some(v) = (self.eval)(x).filter(Verdict::acceptable) else {
+        let Some(v) = (self.eval)(x) else {
             return Ok(BARRIER);
         };
+        if !v.acceptable() {
+            return Ok(match v.raw {
+                Some(raw) if v.motion_feasible() && v.shortfall.is_finite() => {
+                    -raw + PENALTY * (1.0 + raw.abs()) * v.shortfall
+                }
+                _ => BARRIER,
+            });
+        }
         let cost = -v.score.unwrap_or(f64::NAN);
         let mut best = self.best.borrow_mut();
         let better = match &*best {
@@ -574,8 +596,19 @@ impl<F: Fn(&[f64]) -> Option<Verdict>> CostFunction for Objective<'_, F> {
     }
 }
 
+/// The weight of a limit's relative shortfall in the refinement's cost
+/// (per unit of the score's size).
+const PENALTY: f64 = 4.0;
+
+/// Nelder–Mead rounds of a refinement: each restarts from the best point
+/// so far with the initial simplex scaled by its factor (a simplex that
+/// collapsed early, flat along a constraint's boundary, starts afresh),
+/// sharing the iterations.
+const ROUNDS: [f64; 6] = [1.0, 0.5, 0.25, 1.0, 0.125, 0.03125];
+
 /// Nelder–Mead from `x0` with initial steps `h` (one per coordinate), in
-/// two rounds; the best acceptable verdict and where, and the evaluations.
+/// the [`ROUNDS`]; the best acceptable verdict and where, and the
+/// evaluations.
 fn refine<F: Fn(&[f64]) -> Option<Verdict>>(
     eval: F,
     x0: &[f64],
@@ -583,7 +616,7 @@ fn refine<F: Fn(&[f64]) -> Option<Verdict>>(
     iterations: usize,
     control: &Control<'_>,
 ) -> (Option<(Vec<f64>, Verdict)>, usize) {
-    let objective = Objective {
+    let mut objective = Objective {
         eval,
         control,
         evaluations: Cell::new(0),
@@ -593,39 +626,42 @@ fn refine<F: Fn(&[f64]) -> Option<Verdict>>(
     if objective.cost(&x0.to_vec()).map_or(true, |c| c >= BARRIER) {
         return (None, objective.evaluations.get());
     }
-    let first = iterations.div_ceil(2);
-    let mut objective = objective;
-    for (round, budget) in [(0usize, first), (1, iterations - first)] {
+    let per_round = iterations.div_ceil(ROUNDS.len());
+    let mut left = iterations;
+    for scale in ROUNDS {
+        let budget = per_round.min(left);
         if budget == 0 || control.is_cancelled() {
             break;
         }
+        left -= budget;
         let from = match &*objective.best.borrow() {
             Some((_, x, _)) => x.clone(),
             None => x0.to_vec(),
         };
-        let scale = if round == 0 { 1.0 } else { 0.125 };
         let mut simplex = vec![from.clone()];
         for (k, hk) in h.iter().enumerate() {
             let mut v = from.clone();
             v[k] += hk * scale;
             simplex.push(v);
         }
-        let Ok(solver) = NelderMead::new(simplex).with_sd_tolerance(1e-13) else {
-            break;
+        // The expansion and shrink adapted to the dimension (Gao and Han,
+        // 2012; their contraction, above argmin's bound of 1/2 for n > 2,
+        // is left at 1/2).
+        let n = h.len() as f64;
+        let solver = NelderMead::new(simplex)
+            .with_sd_tolerance(1e-13)
+            .and_then(|s| s.with_gamma(1.0 + 2.0 / n))
+            .and_then(|s| s.with_sigma(1.0 - 1.0 / n));
+        let Ok(solver) = solver else {
+            unreachable!("the Nelder-Mead parameters are within argmin's bounds")
         };
         let run = Executor::new(objective, solver)
             .configure(|s| s.max_iters(budget as u64))
             .timer(false)
             .run();
-        match run {
-            Ok(mut r) => {
-                let problem = r.problem.take_problem();
-                match problem {
-                    Some(p) => objective = p,
-                    None => return (None, 0),
-                }
-            }
-            Err(_) => return (None, 0),
+        match run.ok().and_then(|mut r| r.problem.take_problem()) {
+            Some(p) => objective = p,
+            None => return (None, 0),
         }
     }
     let evaluations = objective.evaluations.get();
@@ -865,8 +901,12 @@ impl Task {
             })
             .collect();
         let starts = pick_starts(cand, sep, options.starts);
-        let (dx, dy) = (plan.driving.dx(), plan.driving.dy());
-        let h = [dx, dy, dx, dy];
+        let h = [
+            plan.driving.dx(),
+            plan.driving.dy(),
+            plan.driven.dx(),
+            plan.driven.dy(),
+        ];
         let eval = |x: &[f64]| {
             let a = self.dyad_from_center(Point2::new(x[0], x[1])).ok()?;
             let c = self.dyad_from_center(Point2::new(x[2], x[3])).ok()?;
