@@ -446,10 +446,16 @@ def _space(r: _Reader, doc: Mapping[str, Any]) -> Optional[Space]:
     try:
         return Space(**kw)
     except burmester.BurmesterError as e:
-        name = getattr(e, "name", "")
-        where = next((f"space.{k}" for k in keys if k in str(name)), "[space]")
-        if "pivot_box" in str(name):
-            where = "space.pivot_x" if "x" in str(name).split()[-1] else "space.pivot_y"
+        # The core names the field: "pivot_box xmax", "pivot_polygon",
+        # "envelope", "obstacle 2", "link_width", ...
+        name = str(getattr(e, "name", "") or "")
+        where = "[space]"
+        if name.startswith("pivot_box"):
+            where = "space.pivot_y" if name.endswith(("ymin", "ymax")) else "space.pivot_x"
+        elif name.startswith("obstacle"):
+            where = "space.obstacles"
+        elif name in keys:
+            where = f"space.{name}"
         raise r.fail(where, str(e)) from None
 
 

@@ -762,7 +762,9 @@ impl Task {
     /// ```
     /// use burmester::{Control, DesignOptions, RankBy, example};
     /// let task = example::task();
-    /// let report = task.design(&DesignOptions::default(), &Control::new())?;
+    /// // Fewer starts than the default, for a quick example.
+    /// let options = DesignOptions { starts: 4, ..DesignOptions::default() };
+    /// let report = task.design(&options, &Control::new())?;
     /// let best = &report.designs[0];
     /// assert!(best.linkage.figures.feasible());
     /// assert!(best.linkage.figures.min_transmission >= report.limits.min_transmission);
