@@ -58,11 +58,17 @@ fn design(c: &mut Criterion) {
     let brute = brute_force(&task, &options, &bx);
     let got = report.designs[0].score;
     println!("design best score {got:.6}, brute force (4x) best score {brute:.6}");
-    assert!(got >= brute, "the design ({got}) must match or beat the brute force ({brute})");
+    assert!(
+        got >= brute,
+        "the design ({got}) must match or beat the brute force ({brute})"
+    );
     let mut g = c.benchmark_group("design");
     g.sample_size(10);
     g.bench_function("example/design", |b| {
-        b.iter(|| task.design(black_box(&options), &control).expect("a design"))
+        b.iter(|| {
+            task.design(black_box(&options), &control)
+                .expect("a design")
+        })
     });
     g.bench_function("example/brute_force_4x", |b| {
         b.iter(|| brute_force(black_box(&task), &options, &bx))

@@ -13,7 +13,7 @@ Every class is immutable and pickles to an equal object (so tasks, Filemon
 constructions and maps can go to worker processes).
 """
 
-from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, final, overload
+from typing import Any, Callable, Iterator, Literal, Optional, Sequence, Tuple, Union, final, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -1215,8 +1215,12 @@ class DesignLimits:
     ``max_link_ratio``: the largest ratio of the longest to the shortest
     link, at least 1 (``math.inf``: no limit); ``input``: ``"any"``,
     ``"crank"`` (the driving link must turn fully) or ``"rocker"`` (it must
-    not). Raises :class:`InvalidInputError` (``cause == "outside_range"``,
-    with ``name``, ``value``, ``min``, ``max``) for a limit out of range.
+    not); ``max_size_ratio``: the largest linkage relative to the task (its
+    size, the total length of its members, over :attr:`Task.span`), at
+    least 1 (default ``math.inf``: no limit); ``max_link_length``: the
+    longest link in the task's units, above 0 (default ``math.inf``).
+    Raises :class:`InvalidInputError` (``cause == "outside_range"``, with
+    ``name``, ``value``, ``min``, ``max``) for a limit out of range.
     """
 
     def __new__(
@@ -1224,6 +1228,8 @@ class DesignLimits:
         min_transmission_deg: float = 30.0,
         max_link_ratio: float = 10.0,
         input: InputRequirement = "any",
+        max_size_ratio: float = ...,
+        max_link_length: float = ...,
     ) -> DesignLimits: ...
     @property
     def min_transmission_deg(self) -> float:
@@ -1827,7 +1833,8 @@ class DesignReport:
     def evaluations(self) -> int:
         """Linkages the refinements judged."""
     def __len__(self) -> int: ...
-    def __getitem__(self, index: int) -> Design: ...
+    def __getitem__(self, index: int, /) -> Design: ...
+    def __iter__(self) -> Iterator[Design]: ...
     @staticmethod
     def _from_state(
         task: Task,
@@ -1851,16 +1858,18 @@ def _design(
     space: Optional[Space] = None,
     limits: Optional[DesignLimits] = None,
     rank_by: RankBy = "balanced",
-    top: int = 5,
+    top: int = ...,
     min_separation: Optional[float] = None,
-    coarse_driven: int = 12,
-    coarse_driving: int = 48,
-    coarse_pairs: int = 120,
-    starts: int = 32,
-    max_iterations: int = 1200,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
-    """The design search in this process (see :func:`burmester.design`)."""
+    """The design search in this process (see :func:`burmester.design`,
+    whose defaults these keywords share: top 5, coarse_driven 12,
+    coarse_driving 48, coarse_pairs 120, starts 32, max_iterations 1200)."""
 
 def _design_plan(
     task: Task,
@@ -1868,13 +1877,13 @@ def _design_plan(
     space: Optional[Space] = None,
     limits: Optional[DesignLimits] = None,
     rank_by: RankBy = "balanced",
-    top: int = 5,
+    top: int = ...,
     min_separation: Optional[float] = None,
-    coarse_driven: int = 12,
-    coarse_driving: int = 48,
-    coarse_pairs: int = 120,
-    starts: int = 32,
-    max_iterations: int = 1200,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
     progress: Optional[Progress] = None,
 ) -> dict[str, Any]:
     """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
@@ -1887,13 +1896,13 @@ def _design_from_atlas(
     space: Optional[Space] = None,
     limits: Optional[DesignLimits] = None,
     rank_by: RankBy = "balanced",
-    top: int = 5,
+    top: int = ...,
     min_separation: Optional[float] = None,
-    coarse_driven: int = 12,
-    coarse_driving: int = 48,
-    coarse_pairs: int = 120,
-    starts: int = 32,
-    max_iterations: int = 1200,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere

@@ -14,7 +14,7 @@ the refinement runs here, with the same result as in process, bit for bit.
 from __future__ import annotations
 
 import importlib
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Dict, Optional
 
 from burmester._burmester import (
     DesignLimits,
@@ -71,7 +71,7 @@ def design(
     (``progress`` then counts those rows) and the refinement in this
     process; four and five poses always run in this process.
     """
-    kw = dict(space=space, limits=limits, rank_by=rank_by, top=top, min_separation=min_separation,
+    kw: Dict[str, Any] = dict(space=space, limits=limits, rank_by=rank_by, top=top, min_separation=min_separation,
               coarse_driven=coarse_driven, coarse_driving=coarse_driving, coarse_pairs=coarse_pairs,
               starts=starts, max_iterations=max_iterations)
     if client is None or len(task) != 3:

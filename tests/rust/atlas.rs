@@ -39,22 +39,18 @@ fn reference(
     let c = &map.columns;
     let count = c.acceptable.iter().filter(|&&a| a).count() as u64;
     let branch_free = c.branch_free.iter().filter(|&&a| a).count() as u64;
-    let best = map
-        .best_pivots(1, None, rank_by)
-        .unwrap()
-        .first()
-        .map(|p| {
-            let k = p.index.0 * driving.nx() + p.index.1;
-            burmester::AtlasBest {
-                driving: p.center,
-                index: p.index,
-                min_transmission_rad: c.min_transmission_rad[k],
-                link_ratio: c.link_ratio[k],
-                margin: p.margin,
-                size_ratio: c.size_ratio[k],
-                score: p.score,
-            }
-        });
+    let best = map.best_pivots(1, None, rank_by).unwrap().first().map(|p| {
+        let k = p.index.0 * driving.nx() + p.index.1;
+        burmester::AtlasBest {
+            driving: p.center,
+            index: p.index,
+            min_transmission_rad: c.min_transmission_rad[k],
+            link_ratio: c.link_ratio[k],
+            margin: p.margin,
+            size_ratio: c.size_ratio[k],
+            score: p.score,
+        }
+    });
     AtlasCell {
         valid: true,
         count,
@@ -181,8 +177,16 @@ fn any_tiling_gives_the_same_cells() {
         while j < driven.ny() {
             let end = (j + tile).min(driven.ny());
             cells.extend(
-                t.pivot_atlas_rows(&driven, j..end, &driving, &limits, &cons, by, &Control::new())
-                    .unwrap(),
+                t.pivot_atlas_rows(
+                    &driven,
+                    j..end,
+                    &driving,
+                    &limits,
+                    &cons,
+                    by,
+                    &Control::new(),
+                )
+                .unwrap(),
             );
             j = end;
         }
@@ -244,10 +248,15 @@ fn bad_input_and_cancel() {
         link_width: -1.0,
         ..Constraints::default()
     };
-    assert!(t.pivot_atlas(&g, &g, &l, &bad, by, &Control::new()).is_err());
+    assert!(
+        t.pivot_atlas(&g, &g, &l, &bad, by, &Control::new())
+            .is_err()
+    );
     // Rankings without a score are refused.
     for r in [RankBy::Pareto, RankBy::Margin] {
-        let e = t.pivot_atlas(&g, &g, &l, &c, r, &Control::new()).unwrap_err();
+        let e = t
+            .pivot_atlas(&g, &g, &l, &c, r, &Control::new())
+            .unwrap_err();
         assert_eq!(e.cause(), "unknown_name", "{e}");
     }
 }

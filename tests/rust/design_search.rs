@@ -16,8 +16,7 @@ use core::sync::atomic::AtomicBool;
 
 use burmester::{
     Constraints, Control, Design, DesignLimits, DesignOptions, Grid, InputRequirement, Limit,
-    PivotRegion, Point2, RankBy, SearchPoint, Space, SynthesizedFourBar, Task, Viewport,
-    example,
+    PivotRegion, Point2, RankBy, SearchPoint, Space, SynthesizedFourBar, Task, Viewport, example,
 };
 mod common;
 
@@ -28,9 +27,9 @@ use proptest::test_runner::TestRunner;
 /// The design's coarse resolution in these tests (unoptimised builds).
 fn small(options: DesignOptions) -> DesignOptions {
     DesignOptions {
-        coarse_driven: 8,
-        coarse_driving: 24,
-        coarse_pairs: 40,
+        coarse_driven: 5,
+        coarse_driving: 16,
+        coarse_pairs: 30,
         ..options
     }
 }
@@ -38,7 +37,11 @@ fn small(options: DesignOptions) -> DesignOptions {
 /// The best score of the brute force over both pivots: for every driven
 /// pivot of a grid `4 n_driven` a side over `bx`, the solution map over a
 /// driving grid `4 n_driving` a side, its best pivot by `rank_by`.
-fn brute_three(t: &Task, o: &DesignOptions, bx: &Viewport) -> Option<(f64, Point2<f64>, Point2<f64>)> {
+fn brute_three(
+    t: &Task,
+    o: &DesignOptions,
+    bx: &Viewport,
+) -> Option<(f64, Point2<f64>, Point2<f64>)> {
     let grid = |n: usize| {
         let (w, h) = bx.size();
         let (nx, ny) = if w >= h {
@@ -102,18 +105,14 @@ fn close(
 /// it reaches every pose in order (position and angle), that its
 /// transmission angle stays at least `limits.min_transmission` (to
 /// `1e-6` rad), and returns the samples' joints for further checks.
-fn drive(
-    t: &Task,
-    sfb: &SynthesizedFourBar,
-    limits: &DesignLimits,
-) -> Vec<[Point2<f64>; 5]> {
+fn drive(t: &Task, sfb: &SynthesizedFourBar, limits: &DesignLimits) -> Vec<[Point2<f64>; 5]> {
     let (a0, c0) = (sfb.driving.center, sfb.driven.center);
     let [_, l2, l3, l4] = sfb.figures.lengths;
     let stops = sfb.travel_stops().expect("a design has a travel");
     let span = t.span();
     let mut c = sfb.driven.circle;
     let (start, end) = (stops[0], stops[stops.len() - 1]);
-    let steps = 4000;
+    let steps = 1500;
     let mut out = Vec::new();
     let mut next_pose = 0;
     for s in 0..=steps {
@@ -136,7 +135,11 @@ fn drive(
         // The poses, in order, at their stops.
         while next_pose < stops.len() {
             let at = stops[next_pose];
-            let passed = if end >= start { theta >= at - 1e-12 } else { theta <= at + 1e-12 };
+            let passed = if end >= start {
+                theta >= at - 1e-12
+            } else {
+                theta <= at + 1e-12
+            };
             if !passed {
                 break;
             }
@@ -175,7 +178,10 @@ fn check_design(t: &Task, o: &DesignOptions, d: &Design) {
         InputRequirement::Any => {}
     }
     assert!(o.space.pivots.contains(l.driving.center) && o.space.pivots.contains(l.driven.center));
-    let want = o.rank_by.score(f.min_transmission, size, f.link_ratio).unwrap();
+    let want = o
+        .rank_by
+        .score(f.min_transmission, size, f.link_ratio)
+        .unwrap();
     assert_eq!(d.score, want);
     assert!(d.score >= d.coarse_score - 1e-6, "refinement lost score");
 }
@@ -220,7 +226,7 @@ fn random_three_pose_tasks_beat_the_brute_force() {
     let mut runner = TestRunner::deterministic();
     let mut compared = 0;
     let mut tried = 0;
-    while compared < 3 {
+    while compared < 2 {
         tried += 1;
         assert!(tried < 40);
         let t = task().new_tree(&mut runner).unwrap().current();
@@ -232,7 +238,10 @@ fn random_three_pose_tasks_beat_the_brute_force() {
             continue;
         };
         let got = r.designs.first().map_or(f64::NEG_INFINITY, |d| d.score);
-        assert!(got >= brute - 1e-6, "{t:?}: design {got} < brute force {brute}");
+        assert!(
+            got >= brute - 1e-6,
+            "{t:?}: design {got} < brute force {brute}"
+        );
         compared += 1;
     }
 }
@@ -288,7 +297,11 @@ fn four_pose_tasks_beat_the_finer_pair_map() {
             continue;
         };
         let got = r.designs.first().map_or(f64::NEG_INFINITY, |d| d.score);
-        assert!(got >= b.score - 1e-6, "{t:?}: design {got} < pair map {}", b.score);
+        assert!(
+            got >= b.score - 1e-6,
+            "{t:?}: design {got} < pair map {}",
+            b.score
+        );
         compared += 1;
     }
     assert!(compared >= 3, "only {compared} tasks compared");
@@ -371,7 +384,9 @@ fn the_space_bounds_both_pivots_and_the_motion() {
             envelope: Some(envelope.clone()),
             travel_samples: 32,
         },
-        limits: DesignLimits::default().with_size(30.0, f64::INFINITY).unwrap(),
+        limits: DesignLimits::default()
+            .with_size(30.0, f64::INFINITY)
+            .unwrap(),
         ..DesignOptions::default()
     });
     let r = t.design(&o, &Control::new()).unwrap();
@@ -527,11 +542,18 @@ fn bad_input_is_typed_and_names_the_field() {
     let e = with(&|o| o.limits.max_link_length = -1.0);
     assert!(e.to_string().contains("max_link_length"), "{e}");
     for (name, f) in [
-        ("top", &(|o: &mut DesignOptions| o.top = 0) as &dyn Fn(&mut DesignOptions)),
+        (
+            "top",
+            &(|o: &mut DesignOptions| o.top = 0) as &dyn Fn(&mut DesignOptions),
+        ),
         ("top", &|o| o.top = DesignOptions::MAX_TOP + 1),
         ("coarse_driven", &|o| o.coarse_driven = 1),
-        ("coarse_driving", &|o| o.coarse_driving = DesignOptions::MAX_COARSE_DRIVING + 1),
-        ("coarse_pairs", &|o| o.coarse_pairs = DesignOptions::MAX_COARSE_PAIRS + 1),
+        ("coarse_driving", &|o| {
+            o.coarse_driving = DesignOptions::MAX_COARSE_DRIVING + 1
+        }),
+        ("coarse_pairs", &|o| {
+            o.coarse_pairs = DesignOptions::MAX_COARSE_PAIRS + 1
+        }),
         ("starts", &|o| o.starts = 0),
         ("max_iterations", &|o| o.max_iterations = 0),
         ("min_separation", &|o| o.min_separation = Some(f64::NAN)),
@@ -565,7 +587,10 @@ fn cancelled_and_at_the_maxima() {
     let t = example::task();
     let stop = AtomicBool::new(true);
     let e = t
-        .design(&DesignOptions::default(), &Control::new().with_cancel(&stop))
+        .design(
+            &DesignOptions::default(),
+            &Control::new().with_cancel(&stop),
+        )
         .unwrap_err();
     assert_eq!(e.cause(), "cancelled");
     // Each count at its documented maximum (the others small).

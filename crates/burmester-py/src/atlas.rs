@@ -11,8 +11,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::conv::{Count, PyPoint, Real};
-use crate::errors::IntoPy;
 use crate::design::{MapOptions, PyDesignLimits};
+use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::run::{WATCH_MIN_SAMPLES, run};
 use crate::synthesis::PyTask;

@@ -43,7 +43,7 @@ mod _burmester {
     use crate::pairs::{PyPair, PyPairMap};
     #[pymodule_export]
     use crate::search::{
-        PyDesign, PyDesignReport, PyNearMiss, PySpace, _design, _design_from_atlas, _design_plan,
+        _design, _design_from_atlas, _design_plan, PyDesign, PyDesignReport, PyNearMiss, PySpace,
     };
     #[pymodule_export]
     use crate::synthesis::{PyFilemon, PyPole, PySynthesizedFourBar, PyTask};

@@ -5,8 +5,8 @@
 //! `_design_from_atlas` (the refinement of those cells).
 
 use burmester::{
-    AtlasBest, AtlasCell, Design, DesignOptions, DesignReport, Dyad, Limit, NearMiss,
-    PivotRegion, Point2, RankBy, SearchPoint, Space, Task, Viewport,
+    AtlasBest, AtlasCell, Design, DesignOptions, DesignReport, Dyad, Limit, NearMiss, PivotRegion,
+    Point2, RankBy, SearchPoint, Space, Task, Viewport,
 };
 use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyIndexError, PyTypeError};
@@ -198,9 +198,9 @@ fn point_of(kind: &str, v: [f64; 4]) -> PyResult<SearchPoint> {
 /// points.
 fn point_py<'py>(py: Python<'py>, p: &SearchPoint) -> PyResult<Bound<'py, PyAny>> {
     Ok(match *p {
-        SearchPoint::Pivots { driving, driven } => (pt(driving), pt(driven))
-            .into_pyobject(py)?
-            .into_any(),
+        SearchPoint::Pivots { driving, driven } => {
+            (pt(driving), pt(driven)).into_pyobject(py)?.into_any()
+        }
         SearchPoint::Parameters { driving, driven } => {
             (driving, driven).into_pyobject(py)?.into_any()
         }
@@ -211,7 +211,11 @@ fn point_py<'py>(py: Python<'py>, p: &SearchPoint) -> PyResult<Bound<'py, PyAny>
 }
 
 /// The linkage of two dyads of `task` (as built by the search).
-fn linkage_of(task: &Task, driving: (PyPoint, PyPoint), driven: (PyPoint, PyPoint)) -> PyResult<burmester::SynthesizedFourBar> {
+fn linkage_of(
+    task: &Task,
+    driving: (PyPoint, PyPoint),
+    driven: (PyPoint, PyPoint),
+) -> PyResult<burmester::SynthesizedFourBar> {
     task.four_bar(
         &Dyad::new(driving.0.0, driving.1.0),
         &Dyad::new(driven.0.0, driven.1.0),
@@ -311,7 +315,10 @@ impl PyDesign {
             },
         })
     }
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let d = &self.inner;
         let (kind, coarse) = point_state(&d.coarse);
         let (_, refined) = point_state(&d.refined);
@@ -410,12 +417,18 @@ impl PyNearMiss {
             inner: NearMiss {
                 linkage: linkage_of(&task.inner, driving, driven)?,
                 size_ratio,
-                misses: misses.iter().map(|m| limit_of(m)).collect::<PyResult<_>>()?,
+                misses: misses
+                    .iter()
+                    .map(|m| limit_of(m))
+                    .collect::<PyResult<_>>()?,
                 shortfall,
             },
         })
     }
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let m = &self.inner;
         let args = (
             PyTask { inner: self.task },
@@ -537,6 +550,9 @@ impl PyDesignReport {
     fn __len__(&self) -> usize {
         self.inner.designs.len()
     }
+    fn __iter__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyIterator>> {
+        pyo3::types::PyList::new(py, self.designs())?.try_iter()
+    }
     fn __getitem__(&self, index: isize) -> PyResult<PyDesign> {
         let n = self.inner.designs.len() as isize;
         let k = if index < 0 { index + n } else { index };
@@ -590,7 +606,10 @@ impl PyDesignReport {
             },
         })
     }
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let r = &self.inner;
         let args = (
             self.task(),
@@ -600,12 +619,20 @@ impl PyDesignReport {
             self.rank_by(),
             r.min_separation,
             self.search_box(),
-            (r.coarse_candidates, r.coarse_acceptable, r.evaluations, r.census),
+            (
+                r.coarse_candidates,
+                r.coarse_acceptable,
+                r.evaluations,
+                r.census,
+            ),
             self.rejections(),
             self.near_misses(),
         )
             .into_pyobject(py)?;
-        Ok((py.get_type::<PyDesignReport>().getattr("_from_state")?, args))
+        Ok((
+            py.get_type::<PyDesignReport>().getattr("_from_state")?,
+            args,
+        ))
     }
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other

@@ -399,7 +399,8 @@ impl Cell<'_> {
                 }),
                 None => {
                     let s = sampler.driving_sample(p, self.driven, &self.c, true);
-                    s.valid.then_some(s.acceptable.then_some(sample_score(&s, rank_by)))
+                    s.valid
+                        .then_some(s.acceptable.then_some(sample_score(&s, rank_by)))
                 }
             };
             let Some(acceptable) = seen else {
@@ -428,7 +429,13 @@ impl Cell<'_> {
     }
 
     /// The cell once every row is seen.
-    fn finish(self, task: &Task, sampler: &Sampler<'_>, driving: &Grid, rank_by: RankBy) -> AtlasCell {
+    fn finish(
+        self,
+        task: &Task,
+        sampler: &Sampler<'_>,
+        driving: &Grid,
+        rank_by: RankBy,
+    ) -> AtlasCell {
         let mut cell = self.cell;
         cell.best = best(task, self.filemon, sampler, driving, self.run).or_else(|| {
             // No candidate of the first run has a linkage (not seen in

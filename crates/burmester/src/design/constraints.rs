@@ -188,8 +188,18 @@ pub(crate) fn inside_polygon(poly: &[Point2<f64>], p: Point2<f64>) -> bool {
 /// crossing edges; [`InvalidInput::NotFinite`] for a non-finite vertex.
 pub(crate) fn check_simple_polygon(name: &str, pts: &[Point2<f64>]) -> Result<()> {
     for p in pts {
-        bounded("polygon vertex x", p.x, Constraints::MAX_COORDINATE, "rescale the polygon with the task")?;
-        bounded("polygon vertex y", p.y, Constraints::MAX_COORDINATE, "rescale the polygon with the task")?;
+        bounded(
+            "polygon vertex x",
+            p.x,
+            Constraints::MAX_COORDINATE,
+            "rescale the polygon with the task",
+        )?;
+        bounded(
+            "polygon vertex y",
+            p.y,
+            Constraints::MAX_COORDINATE,
+            "rescale the polygon with the task",
+        )?;
     }
     check_polygon(name, pts, true)?;
     Ok(())

@@ -433,7 +433,13 @@ impl<'s> DrivingKernel<'s> {
     /// of column `i` of `out` (candidate `a0`, worst `|cos mu|` `w`) as
     /// the solution map's `f32` columns hold them.
     #[inline]
-    pub(crate) fn ranked_at(&self, out: &RowOut, i: usize, a0: Point2<f64>, w: f64) -> (f32, f32, f32) {
+    pub(crate) fn ranked_at(
+        &self,
+        out: &RowOut,
+        i: usize,
+        a0: Point2<f64>,
+        w: f64,
+    ) -> (f32, f32, f32) {
         let (_, members) = self.lengths_at(out, i, a0);
         (
             acos1(w) as f32,
@@ -457,7 +463,12 @@ impl<'s> DrivingKernel<'s> {
         let a1 = Point2::new(qx[i], qy[i]);
         let c0 = self.driven.center;
         let c1 = Point2::new(self.c1[0], self.c1[1]);
-        let lengths = [(c0 - a0).norm(), (a1 - a0).norm(), (c1 - a1).norm(), (c1 - c0).norm()];
+        let lengths = [
+            (c0 - a0).norm(),
+            (a1 - a0).norm(),
+            (c1 - a1).norm(),
+            (c1 - c0).norm(),
+        ];
         let point = Point2::new(self.point[0], self.point[1]);
         let members = crate::synthesis::members_length(lengths, a1, self.driven.circle, point);
         (lengths, members)

@@ -135,8 +135,7 @@ impl DesignLimits {
     /// `max_link_length`.
     #[inline]
     pub fn meets_size(&self, lengths: [f64; 4], size_ratio: f64) -> bool {
-        size_ratio <= self.max_size_ratio
-            && lengths.iter().all(|&l| l <= self.max_link_length)
+        size_ratio <= self.max_size_ratio && lengths.iter().all(|&l| l <= self.max_link_length)
     }
 
     /// Checks the limits: a transmission angle in `[0, pi/2]`, a link ratio

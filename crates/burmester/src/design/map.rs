@@ -312,7 +312,11 @@ impl<'a> Judge<'a> {
         limits.validate()?;
         let prepared = constraints.prepare()?;
         if let Some(env) = &constraints.envelope {
-            if !task.poses().iter().all(|p| prepared.in_envelope(p.position)) {
+            if !task
+                .poses()
+                .iter()
+                .all(|p| prepared.in_envelope(p.position))
+            {
                 return Err(InvalidInput::Polygon {
                     name: "envelope".to_owned(),
                     vertices: env.len(),

@@ -54,7 +54,5 @@ pub use limits::{DesignLimits, InputRequirement};
 pub use map::{Columns, ColumnsOut, MapContext, SolutionMap, Varying};
 pub use pairs::{Pair, PairContext, PairMap};
 pub use rank::{Pivot, RankBy, RankColumns};
-pub use search::{
-    Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, SearchPoint,
-};
+pub use search::{Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, SearchPoint};
 pub use space::{PivotRegion, Space};

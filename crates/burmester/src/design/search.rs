@@ -914,15 +914,23 @@ impl Task {
             let c = self.dyad_from_center(Point2::new(x[2], x[3])).ok()?;
             exact.judge(&a, &c, false)
         };
-        let refined = self.refine_starts(&starts, &h, options, control, |s| {
-            let SearchPoint::Pivots { driving, driven } = s.point else {
-                return None;
-            };
-            Some(vec![driving.x, driving.y, driven.x, driven.y])
-        }, &eval, |x| SearchPoint::Pivots {
-            driving: Point2::new(x[0], x[1]),
-            driven: Point2::new(x[2], x[3]),
-        })?;
+        let refined = self.refine_starts(
+            &starts,
+            &h,
+            options,
+            control,
+            |s| {
+                let SearchPoint::Pivots { driving, driven } = s.point else {
+                    return None;
+                };
+                Some(vec![driving.x, driving.y, driven.x, driven.y])
+            },
+            &eval,
+            |x| SearchPoint::Pivots {
+                driving: Point2::new(x[0], x[1]),
+                driven: Point2::new(x[2], x[3]),
+            },
+        )?;
         report.evaluations = refined.iter().map(|d| d.evaluations).sum();
         report.designs = rank_designs(refined, sep, options.top);
         if report.designs.is_empty() {
@@ -996,7 +1004,8 @@ impl Task {
         let driven: Vec<Option<Dyad>> = (0..plan.driven.len())
             .map(|k| {
                 let nx = plan.driven.nx();
-                self.dyad_from_center(plan.driven.point(k % nx, k / nx)).ok()
+                self.dyad_from_center(plan.driven.point(k % nx, k / nx))
+                    .ok()
             })
             .collect();
         let pairs: Vec<(Dyad, Dyad)> = driven

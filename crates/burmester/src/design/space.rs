@@ -89,9 +89,7 @@ impl PivotRegion {
     pub fn contains(&self, p: Point2<f64>) -> bool {
         match self {
             PivotRegion::Anywhere => true,
-            PivotRegion::Box(v) => {
-                p.x >= v.xmin && p.x <= v.xmax && p.y >= v.ymin && p.y <= v.ymax
-            }
+            PivotRegion::Box(v) => p.x >= v.xmin && p.x <= v.xmax && p.y >= v.ymin && p.y <= v.ymax,
             PivotRegion::Polygon(poly) => crate::design::constraints::inside_polygon(poly, p),
         }
     }
