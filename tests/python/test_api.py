@@ -91,7 +91,8 @@ def samples():
 
 CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.Configuration, LinkageFigures, Pole,
            Task, Filemon, SynthesizedFourBar, DesignLimits, Pivot, SolutionMap, burmester.PivotAtlas,
-           burmester.AtlasPair, burmester.PairMap, burmester.Pair]
+           burmester.AtlasPair, burmester.PairMap, burmester.Pair, burmester.Space, burmester.Design,
+           burmester.NearMiss, burmester.DesignReport]
 
 
 # ---------------------------------------------------------------------------
@@ -186,12 +187,19 @@ PROPERTIES = {
              "extreme_poses middle_pose",
     SynthesizedFourBar: "fourbar size size_ratio driving driven input_angles modes coupler_point "
                         "coupler_angle_offset figures branch_free travel travel_stops",
-    DesignLimits: "min_transmission_deg max_link_ratio input",
+    DesignLimits: "min_transmission_deg max_link_ratio input max_size_ratio max_link_length",
     Pivot: "center index linkage figures margin size_ratio score ranked_by",
     SolutionMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                  "size_ratio acceptable grid extent shape varying fixed_dyad task limits",
-    burmester.PivotAtlas: "branch_free_fraction shape",
-    burmester.AtlasPair: "driven driving min_transmission_deg link_ratio margin n_acceptable driven_index driving_index",
+    burmester.PivotAtlas: "branch_free_fraction shape rank_by",
+    burmester.AtlasPair: "driven driving min_transmission_deg link_ratio margin n_acceptable driven_index driving_index "
+                         "score size_ratio",
+    burmester.Space: "region pivot_box pivot_polygon obstacles link_width envelope travel_samples",
+    burmester.Design: "linkage figures score size_ratio ranked_by driving_pivot driven_pivot found_by coarse refined "
+                      "coarse_score evaluations",
+    burmester.NearMiss: "linkage figures size_ratio misses shortfall",
+    burmester.DesignReport: "task designs near_misses rejections main_rejection census limits space rank_by "
+                            "min_separation search_box coarse_candidates coarse_acceptable evaluations",
     burmester.PairMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                        "size_ratio acceptable grid extent shape driving_dyads driven_dyads task limits",
     burmester.Pair: "driving driven index linkage figures margin size_ratio score ranked_by",
@@ -213,6 +221,7 @@ METHODS = {
     SolutionMap: "point linkage margin best_pivots pareto_front",
     burmester.PivotAtlas: "best_pairs",
     burmester.AtlasPair: "linkage",
+    burmester.Space: "contains_pivot search_box",
     burmester.PairMap: "linkage margins best_pairs pareto_front",
 }
 

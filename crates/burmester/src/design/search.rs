@@ -1077,7 +1077,7 @@ impl Task {
             .zip(counts)
             .filter(|(_, n)| *n > 0)
             .collect();
-        rejections.sort_by(|a, b| b.1.cmp(&a.1));
+        rejections.sort_by_key(|r| core::cmp::Reverse(r.1));
         report.rejections = rejections;
         misses.sort_by(|a, b| {
             a.shortfall
