@@ -46,7 +46,7 @@ def design(
     coarse_driving: int = 48,
     coarse_pairs: int = 120,
     starts: int = 32,
-    max_iterations: int = 1200,
+    max_iterations: int = 3000,
     tile_rows: Optional[int] = None,
 ) -> DesignReport:
     """The best linkages for ``task`` (three to five poses) inside ``space``

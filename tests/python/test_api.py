@@ -55,6 +55,9 @@ def samples():
     driven = t.driven_solution_map((-3.0, 4.0), Grid(*VP, 20, 16))
     (pivot,) = smap.best_pivots(1)
     atlas = burmester.pivot_atlas(t, (-6.0, 6.0, -6.0, 6.0, 4, 3), Grid(*VP, 16, 16), link_width=0.1)
+    space = burmester.Space(pivot_box=(-6.0, 6.0, -6.0, 6.0), link_width=0.1)
+    report = burmester.design(t, space=space, coarse_driven=4, coarse_driving=12, starts=4)
+    misses = burmester.design(t, limits=DesignLimits(85.0), coarse_driven=4, coarse_driving=12, starts=2)
     pmap = Task(BURMESTER_FIVE[:4]).pair_map(40, 36, min_transmission_deg=20.0,
                                              base_plate=[(-20, -20), (20, -20), (20, 20), (-20, 20)])
     return {
@@ -83,6 +86,10 @@ def samples():
         "SolutionMap": smap,
         "SolutionMap (driven)": driven,
         "PivotAtlas": atlas,
+        "Space": space,
+        "DesignReport": report,
+        "Design": report[0],
+        "NearMiss": misses.near_misses[0],
         "AtlasPair": atlas.best_pairs(1)[0],
         "PairMap": pmap,
         "Pair": pmap.best_pairs(1)[0],

@@ -204,7 +204,8 @@ fn example_designs_beat_the_brute_force() {
     let t = example::task();
     // (The other rankings against the brute force: the Python tests, on an
     // optimised build.)
-    for rank_by in [RankBy::Balanced] {
+    {
+        let rank_by = RankBy::Balanced;
         let o = small(DesignOptions {
             rank_by,
             ..DesignOptions::default()

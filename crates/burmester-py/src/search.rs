@@ -694,7 +694,7 @@ macro_rules! design_fn {
         #[pyo3(signature = ($task $(, $arg)*, *, space = None, limits = None, rank_by = "balanced",
             top = Count(5), min_separation = None, coarse_driven = Count(12),
             coarse_driving = Count(48), coarse_pairs = Count(120), starts = Count(32),
-            max_iterations = Count(1200), progress = None))]
+            max_iterations = Count(3000), progress = None))]
         #[allow(clippy::too_many_arguments)]
         pub(crate) fn $name<$lt>(
             $py: Python<$lt>,

@@ -105,7 +105,7 @@ pub struct DesignOptions {
     /// [`DesignOptions::MAX_STARTS`], default 32).
     pub starts: usize,
     /// Nelder–Mead iterations per refinement, all rounds together (1 to
-    /// [`DesignOptions::MAX_ITERATIONS`], default 1200).
+    /// [`DesignOptions::MAX_ITERATIONS`], default 3000).
     pub max_iterations: usize,
 }
 
@@ -121,7 +121,7 @@ impl Default for DesignOptions {
             coarse_driving: Self::DEFAULT_COARSE_DRIVING,
             coarse_pairs: Self::DEFAULT_COARSE_PAIRS,
             starts: 32,
-            max_iterations: 1200,
+            max_iterations: 3000,
         }
     }
 }
