@@ -45,7 +45,7 @@ def design(
     coarse_driven: int = 12,
     coarse_driving: int = 48,
     coarse_pairs: int = 120,
-    starts: int = 32,
+    starts: int = 48,
     max_iterations: int = 3000,
     tile_rows: Optional[int] = None,
 ) -> DesignReport:

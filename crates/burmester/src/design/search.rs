@@ -102,7 +102,7 @@ pub struct DesignOptions {
     /// [`DesignOptions::MAX_COARSE_PAIRS`], default 120).
     pub coarse_pairs: usize,
     /// How many coarse starts are refined, at most (1 to
-    /// [`DesignOptions::MAX_STARTS`], default 32).
+    /// [`DesignOptions::MAX_STARTS`], default 48).
     pub starts: usize,
     /// Nelder–Mead iterations per refinement, all rounds together (1 to
     /// [`DesignOptions::MAX_ITERATIONS`], default 3000).
@@ -120,7 +120,7 @@ impl Default for DesignOptions {
             coarse_driven: Self::DEFAULT_COARSE_DRIVEN,
             coarse_driving: Self::DEFAULT_COARSE_DRIVING,
             coarse_pairs: Self::DEFAULT_COARSE_PAIRS,
-            starts: 32,
+            starts: 48,
             max_iterations: 3000,
         }
     }
