@@ -293,6 +293,35 @@ SECTIONS.append(
 )
 
 
+SECTIONS.append(
+    Section(
+        title="From poses to the best linkage (`design`)",
+        benches=["design"],
+        prefixes=["design/"],
+        ratios=[
+            Ratio(
+                "brute force over both pivots at 4x resolution / `Task::design` (the design's "
+                "best score at least the brute force's, checked in the same run)",
+                "design/example/brute_force_4x",
+                "design/example/design",
+                ">= 10 (issue 22)",
+                lambda r: r >= 10.0,
+            ),
+        ],
+        note=(
+            "`Task::design` with its default options on the built-in example (balanced "
+            "ranking, default limits, pivots anywhere): the coarse pass (the pivot-pair atlas, "
+            "12 driven x 48 driving pivots along the search box's side), then 48 starts refined "
+            "by Nelder-Mead on the exact figures. The brute force is the loop a designer would "
+            "write: for every driven pivot of a 48 x 48 grid over the same box, the solution map "
+            "over 192 x 192 driving pivots and its best pivot by the same score (both grids four "
+            "times finer than the design's coarse pass). The bench asserts, before timing, that "
+            "the design's best score is at least the brute force's (it prints both)."
+        ),
+    )
+)
+
+
 SOLVE_MANY_SETUP = """
 import numpy as np
 from burmester._burmester import FourBar
@@ -799,12 +828,44 @@ def write(figures: dict[str, Figure]) -> str:
     return "\n".join(lines)
 
 
+def update_sections(text: str, sections: list[Section], figures: dict[str, Figure]) -> str:
+    """``text`` (a BENCHMARKS.md) with ``sections`` rewritten from
+    ``figures`` (appended where missing); the rest as it was."""
+    full = write(figures).split("\n")
+    for s in sections:
+        head = f"## {s.title}"
+        start = full.index(head)
+        end = next((k for k in range(start + 1, len(full)) if full[k].startswith("## ")), len(full))
+        block = "\n".join(full[start:end]).rstrip("\n") + "\n"
+        lines = text.split("\n")
+        if head in lines:
+            a = lines.index(head)
+            b = next((k for k in range(a + 1, len(lines)) if lines[k].startswith("## ")), len(lines))
+            text = "\n".join(lines[:a]) + "\n" + block + ("\n" + "\n".join(lines[b:]) if b < len(lines) else "")
+        else:
+            text = text.rstrip("\n") + "\n\n" + block
+    return text.rstrip("\n") + "\n"
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--run", action="store_true", help="run the benches first")
     ap.add_argument("--python-repeat", type=int, default=20)
+    ap.add_argument("--only", metavar="BENCH", default=None,
+                    help="run only the sections of this cargo bench and rewrite only them in "
+                    "BENCHMARKS.md (the other sections keep their figures of an earlier full run)")
     ap.add_argument("criterion_args", nargs="*", help="passed to criterion (after --)")
     args = ap.parse_args()
+    if args.only is not None:
+        sections = [s for s in SECTIONS if args.only in s.benches]
+        if not sections:
+            ap.error(f"no section runs the bench {args.only!r}")
+        run_benches(sections, args.criterion_args)
+        run_python(sections, args.python_repeat)
+        text = update_sections(OUT.read_text() if OUT.exists() else write({}), sections, load_criterion())
+        OUT.write_text(text)
+        print(text)
+        return 0
     if args.run:
         # Every figure of the report comes from this one run.
         shutil.rmtree(CRITERION, ignore_errors=True)

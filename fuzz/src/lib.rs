@@ -1303,6 +1303,7 @@ pub fn solution_map(data: &[u8]) {
             InputRequirement::Crank,
             InputRequirement::Rocker,
         ][usize::from(inp.byte()) % 3],
+        ..DesignLimits::default()
     };
     let polygon = |inp: &mut Input<'_>| -> Vec<Point2<f64>> {
         let n = inp.count(0, 5);
@@ -1329,6 +1330,7 @@ pub fn solution_map(data: &[u8]) {
             inp.nice().abs() * s * 0.1
         },
         travel_samples: inp.count(0, 16),
+        envelope: None,
     };
     let control = Control::new();
     match f.solution_map(&grid, &limits, &constraints, &control) {

@@ -18,17 +18,21 @@ from burmester._burmester import (
     Cubic,
     CurveDyad,
     DegenerateError,
+    Design,
     DesignLimits,
+    DesignReport,
     Filemon,
     FourBar,
     Grid,
     InvalidInputError,
     LinkageFigures,
+    NearMiss,
     Pair,
     PairMap,
     Pivot,
     Pole,
     SolutionMap,
+    Space,
     SynthesizedFourBar,
     Task,
     __version__,
@@ -36,6 +40,7 @@ from burmester._burmester import (
 )
 from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
 from burmester.batch import best_pivots_batch
+from burmester.design import design
 
 __all__ = [
     "AtlasPair",
@@ -64,5 +69,10 @@ __all__ = [
     "__version__",
     "best_pivots_batch",
     "clip_line",
+    "design",
+    "Design",
+    "DesignReport",
+    "NearMiss",
+    "Space",
     "pivot_atlas",
 ]

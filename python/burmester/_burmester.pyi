@@ -13,7 +13,7 @@ Every class is immutable and pickles to an equal object (so tasks, Filemon
 constructions and maps can go to worker processes).
 """
 
-from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, final, overload
+from typing import Any, Callable, Iterator, Literal, Optional, Sequence, Tuple, Union, final, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -42,6 +42,13 @@ __all__ = [
     "Task",
     "clip_line",
     "_atlas_tile",
+    "Space",
+    "Design",
+    "NearMiss",
+    "DesignReport",
+    "_design",
+    "_design_plan",
+    "_design_from_atlas",
     "__version__",
 ]
 
@@ -1216,8 +1223,12 @@ class DesignLimits:
     ``max_link_ratio``: the largest ratio of the longest to the shortest
     link, at least 1 (``math.inf``: no limit); ``input``: ``"any"``,
     ``"crank"`` (the driving link must turn fully) or ``"rocker"`` (it must
-    not). Raises :class:`InvalidInputError` (``cause == "outside_range"``,
-    with ``name``, ``value``, ``min``, ``max``) for a limit out of range.
+    not); ``max_size_ratio``: the largest linkage relative to the task (its
+    size, the total length of its members, over :attr:`Task.span`), at
+    least 1 (default ``math.inf``: no limit); ``max_link_length``: the
+    longest link in the task's units, above 0 (default ``math.inf``).
+    Raises :class:`InvalidInputError` (``cause == "outside_range"``, with
+    ``name``, ``value``, ``min``, ``max``) for a limit out of range.
     """
 
     def __new__(
@@ -1225,6 +1236,8 @@ class DesignLimits:
         min_transmission_deg: float = 30.0,
         max_link_ratio: float = 10.0,
         input: InputRequirement = "any",
+        max_size_ratio: float = ...,
+        max_link_length: float = ...,
     ) -> DesignLimits: ...
     @property
     def min_transmission_deg(self) -> float:
@@ -1235,8 +1248,14 @@ class DesignLimits:
     @property
     def input(self) -> InputRequirement:
         """Which input the design requires."""
+    @property
+    def max_size_ratio(self) -> float:
+        """The largest acceptable size ratio (``math.inf``: no limit)."""
+    @property
+    def max_link_length(self) -> float:
+        """The longest acceptable link, task units (``math.inf``: no limit)."""
     def __eq__(self, other: object, /) -> bool: ...
-    def __getnewargs__(self) -> Tuple[float, float, str]: ...
+    def __getnewargs__(self) -> Tuple[float, float, str, float, float]: ...
 
 @final
 class Pivot:
@@ -1595,6 +1614,8 @@ def _atlas_tile(
     obstacles: Optional[Sequence[Sequence[Point]]] = None,
     link_width: float = 0.0,
     travel_samples: int = 64,
+    rank_by: RankBy = "balanced",
+    envelope: Optional[Sequence[Point]] = None,
     threads: Optional[int] = None,
     progress: Optional[Progress] = None,
 ) -> dict[str, npt.NDArray[Any]]:
@@ -1602,5 +1623,299 @@ def _atlas_tile(
     grid, as arrays of shape ``(rows, nx)`` (``best_driving``,
     ``best_index``: ``(rows, nx, 2)``): ``valid``, ``count``,
     ``branch_free``, ``best_transmission_rad``, ``best_link_ratio``,
-    ``best_margin``, ``best_driving``, ``best_index``; on ``threads`` rayon
-    threads (default: all cores). See :func:`burmester.pivot_atlas`."""
+    ``best_margin``, ``best_size_ratio``, ``best_score``, ``best_driving``,
+    ``best_index``, each cell's best driving pivot by ``rank_by`` (a ranking
+    with a score); on ``threads`` rayon threads (default: all cores). See
+    :func:`burmester.pivot_atlas`."""
+
+# ---------------------------------------------------------------------------
+# The design search (the public API is burmester.design)
+
+FoundBy = Literal["pivots", "parameters", "burmester"]
+LimitName = Literal[
+    "branch_defect", "order", "transmission", "link_ratio", "input", "size_ratio",
+    "link_length", "pivot_region", "obstacles", "envelope",
+]
+
+@final
+class Space:
+    """The space a design must fit in: where both fixed pivots may go
+    (``pivot_box=(xmin, xmax, ymin, ymax)`` or a simple polygon
+    ``pivot_polygon=[(x, y), ...]``; neither: anywhere), convex
+    ``obstacles`` the moving links (capsules ``link_width`` wide) must clear
+    over the whole travel, and an ``envelope`` (a simple polygon) the moving
+    links and the coupler triangle with the coupler point must stay inside
+    over the whole travel (it must contain every pose). Both are checked
+    exactly over the travel (``travel_samples`` starting samples, then
+    halving with a certified bound). The largest linkage is a limit:
+    :attr:`DesignLimits.max_size_ratio`, :attr:`DesignLimits.max_link_length`.
+
+    Raises :class:`InvalidInputError` naming the field: an inverted or
+    empty box (``"pivot_box xmax"``), a polygon that is not simple
+    (``"pivot_polygon"``, ``"envelope"``), an obstacle without an area,
+    non-finite numbers."""
+
+    def __new__(
+        cls,
+        pivot_box: Optional[Extent] = None,
+        pivot_polygon: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        envelope: Optional[Sequence[Point]] = None,
+        travel_samples: int = 64,
+    ) -> Space: ...
+    @property
+    def region(self) -> Literal["anywhere", "box", "polygon"]:
+        """What bounds the pivots."""
+    @property
+    def pivot_box(self) -> Optional[Extent]:
+        """The pivot box, or None."""
+    @property
+    def pivot_polygon(self) -> Optional[list[Point]]:
+        """The pivot polygon, or None."""
+    @property
+    def obstacles(self) -> list[list[Point]]:
+        """The obstacles."""
+    @property
+    def link_width(self) -> float:
+        """The moving links' width."""
+    @property
+    def envelope(self) -> Optional[list[Point]]:
+        """The envelope, or None."""
+    @property
+    def travel_samples(self) -> int:
+        """Where the motion's checks start along the travel."""
+    def contains_pivot(self, p: Point) -> bool:
+        """Whether a fixed pivot may go at ``p``."""
+    def search_box(self, task: Task, limits: Optional[DesignLimits]) -> Extent:
+        """The box the three-pose coarse pass samples pivots in: the
+        region's bounds, or three task sizes around the poses, cut by the
+        size limit's reach."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs__(
+        self,
+    ) -> Tuple[Optional[Extent], Optional[list[Point]], list[list[Point]], float, Optional[list[Point]], int]: ...
+
+@final
+class Design:
+    """One answer of :func:`burmester.design`: a linkage that is
+    branch-free, carries the coupler through the poses in order on one
+    circuit, meets the limits and fits the space, judged on its exact
+    figures."""
+
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The linkage (its driving dyad drives)."""
+    @property
+    def figures(self) -> LinkageFigures:
+        """``linkage.figures``."""
+    @property
+    def score(self) -> float:
+        """Its score by the ranking (exact figures)."""
+    @property
+    def size_ratio(self) -> float:
+        """Its size over the task's."""
+    @property
+    def ranked_by(self) -> RankBy:
+        """What ranked it."""
+    @property
+    def driving_pivot(self) -> Point:
+        """The driving crank's fixed pivot ``A0``."""
+    @property
+    def driven_pivot(self) -> Point:
+        """The driven crank's fixed pivot ``C0``."""
+    @property
+    def found_by(self) -> FoundBy:
+        """What ``coarse`` and ``refined`` hold: the fixed pivots
+        ``(A0, C0)`` (three poses), the curve parameters ``(s_driving,
+        s_driven)`` (four) or the Burmester points' indices (five)."""
+    @property
+    def coarse(self) -> Any:
+        """Where the coarse pass found it."""
+    @property
+    def refined(self) -> Any:
+        """Where the refinement took it."""
+    @property
+    def coarse_score(self) -> float:
+        """The coarse sample's score."""
+    @property
+    def evaluations(self) -> int:
+        """Linkages its refinement judged."""
+    @staticmethod
+    def _from_state(
+        task: Task,
+        driving: Tuple[Point, Point],
+        driven: Tuple[Point, Point],
+        score: float,
+        size_ratio: float,
+        ranked_by: str,
+        kind: str,
+        coarse: Sequence[float],
+        refined: Sequence[float],
+        coarse_score: float,
+        evaluations: int,
+    ) -> Design:
+        """Rebuilds a design from its state (for pickling)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """The linkage's picture for Jupyter, or None without matplotlib."""
+
+@final
+class NearMiss:
+    """A candidate with a feasible motion that misses limits (listed when
+    nothing fits): ``shortfall`` is its worst relative shortfall."""
+
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The linkage."""
+    @property
+    def figures(self) -> LinkageFigures:
+        """``linkage.figures``."""
+    @property
+    def size_ratio(self) -> float:
+        """Its size over the task's."""
+    @property
+    def misses(self) -> list[LimitName]:
+        """The limits it misses."""
+    @property
+    def shortfall(self) -> float:
+        """How far it misses them (0 would be acceptable)."""
+    @staticmethod
+    def _from_state(
+        task: Task,
+        driving: Tuple[Point, Point],
+        driven: Tuple[Point, Point],
+        size_ratio: float,
+        misses: Sequence[str],
+        shortfall: float,
+    ) -> NearMiss:
+        """Rebuilds a near miss from its state (for pickling)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+
+@final
+class DesignReport:
+    """What :func:`burmester.design` found: a sequence of :class:`Design`,
+    best first and distinct (``len``, indexing, iteration), with the limits,
+    space and ranking it ran under. Without designs, ``rejections`` says how
+    many census candidates failed each limit (the most first) and
+    ``near_misses`` the nearest misses."""
+
+    @property
+    def task(self) -> Task:
+        """The task."""
+    @property
+    def designs(self) -> list[Design]:
+        """The designs, best first."""
+    @property
+    def near_misses(self) -> list[NearMiss]:
+        """When nothing fits: the nearest misses, nearest first."""
+    @property
+    def rejections(self) -> list[Tuple[LimitName, int]]:
+        """When nothing fits: census candidates failing each limit."""
+    @property
+    def main_rejection(self) -> Optional[LimitName]:
+        """The limit that rejected the most census candidates."""
+    @property
+    def census(self) -> int:
+        """Candidates the census judged (0 when designs were found)."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits used."""
+    @property
+    def space(self) -> Space:
+        """The space used."""
+    @property
+    def rank_by(self) -> RankBy:
+        """The ranking used."""
+    @property
+    def min_separation(self) -> float:
+        """The least distance between two designs' pivots."""
+    @property
+    def search_box(self) -> Optional[Extent]:
+        """Three poses: the coarse pass's box."""
+    @property
+    def coarse_candidates(self) -> int:
+        """Candidates of the coarse pass."""
+    @property
+    def coarse_acceptable(self) -> int:
+        """Of them acceptable."""
+    @property
+    def evaluations(self) -> int:
+        """Linkages the refinements judged."""
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: int, /) -> Design: ...
+    def __iter__(self) -> Iterator[Design]: ...
+    @staticmethod
+    def _from_state(
+        task: Task,
+        designs: Sequence[Design],
+        limits: DesignLimits,
+        space: Space,
+        rank_by: str,
+        min_separation: float,
+        search_box: Optional[Extent],
+        counts: Tuple[int, int, int, int],
+        rejections: Sequence[Tuple[str, int]],
+        near_misses: Sequence[NearMiss],
+    ) -> DesignReport:
+        """Rebuilds a report from its state (for pickling)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+
+def _design(
+    task: Task,
+    *,
+    space: Optional[Space] = None,
+    limits: Optional[DesignLimits] = None,
+    rank_by: RankBy = "balanced",
+    top: int = ...,
+    min_separation: Optional[float] = None,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
+    progress: Optional[Progress] = None,
+) -> DesignReport:
+    """The design search in this process (see :func:`burmester.design`,
+    whose defaults these keywords share: top 5, coarse_driven 12,
+    coarse_driving 48, coarse_pairs 120, starts 48, max_iterations 3000)."""
+
+def _design_plan(
+    task: Task,
+    *,
+    space: Optional[Space] = None,
+    limits: Optional[DesignLimits] = None,
+    rank_by: RankBy = "balanced",
+    top: int = ...,
+    min_separation: Optional[float] = None,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
+    progress: Optional[Progress] = None,
+) -> dict[str, Any]:
+    """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
+    ``atlas`` keywords of :func:`_atlas_tile`."""
+
+def _design_from_atlas(
+    task: Task,
+    arrays: dict[str, Any],
+    *,
+    space: Optional[Space] = None,
+    limits: Optional[DesignLimits] = None,
+    rank_by: RankBy = "balanced",
+    top: int = ...,
+    min_separation: Optional[float] = None,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
+    progress: Optional[Progress] = None,
+) -> DesignReport:
+    """The refinement of a three-pose coarse pass computed elsewhere
+    (``arrays``: :func:`_atlas_tile`'s arrays over the plan's driven grid)."""

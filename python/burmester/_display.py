@@ -16,6 +16,7 @@ figures stay as they were) and returned as PNG bytes:
 ``PairMap``           :func:`burmester.plot.pair_map`
 ``Cubic``             :func:`cubic`: every component in :func:`cubic_view`
 ``PivotAtlas``        :func:`burmester.plot.atlas`
+``Design``            :func:`burmester.plot.linkage` of its linkage
 ===================== =============================================
 
 matplotlib is imported when a picture is asked for, not before: ``import
@@ -60,6 +61,8 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
         return lambda ax: cubic(obj, ax)
     if isinstance(obj, burmester.PivotAtlas):
         return lambda ax: plot.atlas(obj, ax=ax)
+    if isinstance(obj, burmester.Design):
+        return lambda ax: plot.linkage(obj.linkage, ax=ax)
     raise TypeError(f"no picture for a {type(obj).__name__}")
 
 

@@ -2,6 +2,7 @@
 
 Commands::
 
+    burmester design [TASK.toml] -o best.png  # the best linkage for the poses (and [space]): both pivots searched
     burmester map [TASK.toml] -o map.png      # the center-point plane (Fig. 10/12)
     burmester map five.toml -o five.png       # four or five poses: the Burmester curve or points
     burmester pivots [TASK.toml] --top 5      # the best driving pivots, as a table (--json)
@@ -464,7 +465,7 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     bar = progress_for(driven, "atlas", driving.size) if client is None else None
     try:
         atlas = burmester.pivot_atlas(spec.task, driven, driving, client=client,
-                                      limits=spec.limits, progress=bar)
+                                      limits=spec.limits, rank_by=args.rank_by, progress=bar)
     finally:
         if client is not None:
             client.close()
@@ -478,6 +479,7 @@ def cmd_atlas(args: argparse.Namespace) -> int:
             "driving_grid": [driving.nx, driving.ny],
             "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax]},
             "limits": pv.limits_dict(lim),
+            "ranking": atlas.rank_by,
             "valid": int(atlas.valid.sum()),
             "with_acceptable": int(np.count_nonzero(atlas.count)),
             "best": [p._asdict() for p in atlas.best_pairs(args.top)],
@@ -488,9 +490,11 @@ def cmd_atlas(args: argparse.Namespace) -> int:
         ax.set_title(f"pivot-pair atlas of {spec.source}")
         _save(ax.figure, output, args.dpi)
         summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
-                   f"have an acceptable driving pivot ({pv.describe_limits(spec.limits)}{_lengths_in(spec)})")
+                   f"have an acceptable driving pivot ({pv.describe_limits(spec.limits)}{_lengths_in(spec)}); "
+                   f"{pv.describe_ranking(atlas.rank_by)}")
         if best:
-            summary += f"; best {best[0].min_transmission_deg:.1f} deg at C0 {_fmt_point(best[0].driven)}, A0 {_fmt_point(best[0].driving)}"
+            summary += (f"; best at C0 {_fmt_point(best[0].driven)}, A0 {_fmt_point(best[0].driving)}: "
+                        f"{best[0].min_transmission_deg:.1f} deg, {best[0].size_ratio:.1f}x the task's size")
         print(f"wrote {output}: {summary}", file=sys.stderr if args.json else sys.stdout)
     return 0
 
@@ -821,6 +825,205 @@ def cmd_pairs(args: argparse.Namespace) -> int:
     return 0
 
 
+# ---------------------------------------------------------------------------
+# burmester design: from poses (and a space) to the best linkage
+
+
+#: The rankings ``burmester design`` offers (those with a score).
+DESIGN_RANKINGS = ("balanced", "transmission", "compact")
+
+
+def _limits_words(lim: burmester.DesignLimits) -> str:
+    """The limits a design was judged by, in words (every one, printed)."""
+    words = [f"transmission >= {lim.min_transmission_deg:g} deg", f"link ratio <= {lim.max_link_ratio:g}",
+             f"{lim.input} input"]
+    if math.isfinite(lim.max_size_ratio):
+        words.append(f"size <= {lim.max_size_ratio:g}x the task")
+    if math.isfinite(lim.max_link_length):
+        words.append(f"links <= {lim.max_link_length:g} long")
+    return ", ".join(words)
+
+
+def _space_words(space: Optional[burmester.Space]) -> str:
+    """The space a design fits, in words."""
+    if space is None or (space.region == "anywhere" and not space.obstacles and space.envelope is None):
+        return "pivots anywhere"
+    words = []
+    if space.pivot_box is not None:
+        x0, x1, y0, y1 = space.pivot_box
+        words.append(f"pivots in x {x0:g}..{x1:g}, y {y0:g}..{y1:g}")
+    elif space.pivot_polygon is not None:
+        words.append(f"pivots in a polygon of {len(space.pivot_polygon)} vertices")
+    else:
+        words.append("pivots anywhere")
+    if space.obstacles:
+        words.append(f"{len(space.obstacles)} obstacle(s) cleared")
+    if space.envelope is not None:
+        words.append("inside the envelope")
+    if space.link_width:
+        words.append(f"links {space.link_width:g} wide")
+    return ", ".join(words)
+
+
+def design_table(spec: TaskSpec, report: burmester.DesignReport) -> str:
+    """The text table of ``burmester design``."""
+    task = spec.task
+    lines = [
+        f"Designs for {spec.source} ({len(task)} poses, task size {task.span:.4g}), "
+        f"{pv.describe_ranking(report.rank_by)}",
+        f"limits: {_limits_words(report.limits)}; space: {_space_words(report.space)}",
+    ]
+    head = (f"{'#':>2} | {'A0 (x, y)':>20} | {'C0 (x, y)':>20} | {'size':>6} | {'ground':>8} {'crank':>8} "
+            f"{'coupler':>8} {'rocker':>8} | {'Grashof type':<14} | {'mu min':>6} | {'ratio':>5} | "
+            f"{'drive':<11} | score")
+    if len(report):
+        lines.append(head)
+        for k, d in enumerate(report, start=1):
+            f = d.figures
+            g, c, cp, r = f.lengths
+            drive = f"{f.direction} {f.modes[0] or ''}".strip()
+            lines.append(
+                f"{k:>2} | {_fmt_point(d.driving_pivot):>20} | {_fmt_point(d.driven_pivot):>20} | "
+                f"{_fmt_size(d.size_ratio)} | {g:8.3f} {c:8.3f} {cp:8.3f} {r:8.3f} | {f.grashof:<14} | "
+                f"{f.min_transmission_deg:6.1f} | {f.link_ratio:5.2f} | {drive:<11} | {d.score:.4f}"
+            )
+        lines.append(
+            "A0: the driving crank's fixed pivot, C0: the driven one's. size: the total length of the "
+            "links (the coupler as its triangle with the coupler point) in task sizes. mu min: the "
+            "smallest transmission angle over the whole travel (degrees). Each is judged exactly, "
+            "refined from the best of a coarse search."
+        )
+        return "\n".join(lines)
+    main = report.main_rejection
+    rej = ", ".join(f"{name.replace('_', ' ')} {n}" for name, n in report.rejections)
+    lines.append(
+        f"No linkage fits. Of {report.census} candidates judged against every limit, the one "
+        f"rejecting the most is {main.replace('_', ' ') if main else 'none'} ({rej or 'none'}); "
+        "nothing was relaxed."
+    )
+    if report.near_misses:
+        lines.append("Nearest misses (a feasible motion, missing the limits by the least):")
+        lines.append(head.replace("score", "misses"))
+        for k, m in enumerate(report.near_misses, start=1):
+            f = m.figures
+            g, c, cp, r = f.lengths
+            a0, c0 = m.linkage.driving[0], m.linkage.driven[0]
+            drive = f"{f.direction} {f.modes[0] or ''}".strip()
+            bad = pv.violations(f, report.limits) + pv.size_violation(m.linkage, report.limits)
+            bad += [w.replace("_", " ") for w in m.misses if w in ("pivot_region", "obstacles", "envelope")]
+            mu = f.min_transmission_deg
+            lines.append(
+                f"{k:>2} | {_fmt_point(a0):>20} | {_fmt_point(c0):>20} | {_fmt_size(m.size_ratio)} | "
+                f"{g:8.3f} {c:8.3f} {cp:8.3f} {r:8.3f} | {f.grashof:<14} | "
+                f"{(f'{mu:6.1f}' if mu is not None else '     -')} | {f.link_ratio:5.2f} | {drive:<11} | "
+                f"{'; '.join(bad)}"
+            )
+    return "\n".join(lines)
+
+
+def design_document(spec: TaskSpec, report: burmester.DesignReport) -> Dict[str, Any]:
+    """The JSON document of ``burmester design --json``."""
+    lim, space = report.limits, report.space
+    return {
+        "task": spec.source,
+        "poses": len(spec.poses),
+        "span": spec.task.span,
+        "ranking": report.rank_by,
+        "limits": {
+            "min_transmission_deg": lim.min_transmission_deg,
+            "max_link_ratio": lim.max_link_ratio,
+            "input": lim.input,
+            "max_size_ratio": lim.max_size_ratio if math.isfinite(lim.max_size_ratio) else None,
+            "max_link_length": lim.max_link_length if math.isfinite(lim.max_link_length) else None,
+        },
+        "space": {
+            "region": space.region,
+            "pivot_box": space.pivot_box,
+            "pivot_polygon": space.pivot_polygon,
+            "obstacles": space.obstacles,
+            "link_width": space.link_width,
+            "envelope": space.envelope,
+        },
+        "search_box": report.search_box,
+        "coarse_candidates": report.coarse_candidates,
+        "coarse_acceptable": report.coarse_acceptable,
+        "evaluations": report.evaluations,
+        "min_separation": report.min_separation,
+        "designs": [
+            {"score": d.score, "found_by": d.found_by, "coarse": d.coarse, "refined": d.refined,
+             "coarse_score": d.coarse_score, **pv.linkage_dict(d.linkage, lim)}
+            for d in report
+        ],
+        "rejections": dict(report.rejections),
+        "census": report.census,
+        "near_misses": [
+            {"misses": m.misses, "shortfall": m.shortfall, **pv.linkage_dict(m.linkage, lim)}
+            for m in report.near_misses
+        ],
+    }
+
+
+def cmd_design(args: argparse.Namespace) -> int:
+    """``burmester design``: the best linkages for the task's poses inside its
+    space, both fixed pivots searched (three poses), drawn with ``-o``."""
+    spec = _load(args.task)  # the task file's errors first
+    out: Optional[str] = args.output
+    if out is not None:
+        _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+        units = _units(args)
+        animated = out.lower().endswith(ANIMATION_TYPES)
+        if not animated and (args.frames is not None or args.fps is not None):
+            raise UsageError(f"--frames and --fps are for animations (.gif, .mp4), not {out}")
+        export = _export_module(out) if _is_cad(out) else None
+        plot = None if export is not None else _plot_module()
+    elif args.units is not None or args.dpi is not None:
+        raise UsageError("--units and --dpi are for the drawing: give -o best.png (or .gif, .svg, .dxf)")
+    task = spec.task
+    client = _atlas_client(args.scheduler)
+    bar = (ProgressBar(sys.stderr, "burmester: design") if sys.stderr.isatty() and client is None
+           and len(spec.poses) < 5 else None)
+    try:
+        report = burmester.design(task, space=spec.space, limits=spec.limits, rank_by=args.rank_by,
+                                  top=args.top, client=client, progress=bar)
+    finally:
+        if client is not None:
+            client.close()
+    if args.json:
+        print(json.dumps(design_document(spec, report), indent=2))
+    else:
+        print(design_table(spec, report))
+    if out is None:
+        return 0
+    if not len(report):
+        print(f"nothing drawn: no linkage fits, so {out} was not written",
+              file=sys.stderr if args.json else sys.stdout)
+        return 0
+    sfb = report[0].linkage
+    if export is not None:
+        _write_cad(export.linkage, out, sfb, out, task=task, travel_samples=args.travel or 0, units=units)
+    elif animated:
+        assert plot is not None
+        try:
+            anim = plot.animate(sfb, out, task=task, frames=args.frames or 60, fps=args.fps or 20)
+        except RuntimeError as e:
+            raise UsageError(str(e)) from None
+        except OSError as e:
+            raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
+        del anim
+        import matplotlib.pyplot as plt
+
+        plt.close("all")
+    else:
+        assert plot is not None
+        ax = plot.linkage(sfb, task=task)
+        ax.set_title(f"best design of {spec.source} ({report.rank_by})")
+        _save(ax.figure, out, _picture_dpi(args))
+    f = sfb.figures
+    print(f"wrote {out}: the best design, {f.grashof}, {report[0].size_ratio:.1f}x the task's size, "
+          f"transmission >= {f.min_transmission_deg:.1f} deg", file=sys.stderr if args.json else sys.stdout)
+    return 0
+
+
 #: The finest ``solve --step``: 36,000 rows over a turn.
 MIN_STEP_DEG = 0.01
 
@@ -981,6 +1184,7 @@ def build_parser() -> argparse.ArgumentParser:
         ),
         epilog=(
             "examples:\n"
+            "  burmester design -o best.png        the best linkage for the built-in example's poses\n"
             "  burmester map -o map.png            center-point plane of the built-in example\n"
             "  burmester example > task.toml       a task file to edit\n"
             "  burmester map task.toml -o map.png  center-point plane of your task\n"
@@ -1025,6 +1229,38 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_map)
+
+    p = sub.add_parser("design", help="from poses (and a space) to the best linkage: both pivots searched",
+                       description="Search the best linkages for the task's poses: three poses search both "
+                       "fixed pivots (a coarse pass, then each candidate refined continuously on its exact "
+                       "figures), four poses both curve parameters, five poses every pair of Burmester "
+                       "points. Every design is branch-free, passes the poses in order on one circuit, meets "
+                       "the task file's [limits] (printed) and fits its [space]. A task file needs no "
+                       "[driven] table for this. When nothing fits, it says which limit rejected the most "
+                       "candidates and lists the nearest misses.")
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("--top", type=_ranged(1, 100), default=5, help="how many designs, 1 to 100 (default: 5)")
+    p.add_argument("--rank-by", choices=DESIGN_RANKINGS, default="balanced",
+                   help="balanced (default): sin(mu min) / sqrt(size x link ratio); transmission: the minimum "
+                   "transmission angle; compact: the smallest linkage relative to the task")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.add_argument("-o", "--output", default=None,
+                   help="also draw the best design: a picture (.png, .pdf, ...), an animation (.gif, .mp4) or "
+                   "a CAD export (.dxf, .svg)")
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
+                   help="animation frames from the first pose to the last, 2 to 10000 (default: 60)")
+    p.add_argument("--fps", type=_ranged(1, 240), default=None,
+                   help="animation frames per second, 1 to 240 (default: 20)")
+    p.add_argument("--travel", type=_ranged(2, 10_000), default=None, metavar="N",
+                   help="CAD export: also draw the linkage at N positions over its travel")
+    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
+                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
+    p.add_argument("--dpi", type=_dpi, default=None,
+                   help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                   help="run the three-pose coarse pass on a Dask cluster (tcp://host:8786); needs burmester[dask]")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
+    p.set_defaults(func=cmd_design)
 
     p = sub.add_parser("pivots", help="rank the acceptable driving pivots",
                        description="Rank the driving pivots A0 that are branch-free, pass the poses "
@@ -1103,6 +1339,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"driven centers over the view (default: {ATLAS_DRIVEN_GRID[0]} {ATLAS_DRIVEN_GRID[1]})")
     p.add_argument("--driving-grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
                    help=f"driving centers over the view (default: {ATLAS_DRIVING_GRID[0]} {ATLAS_DRIVING_GRID[1]})")
+    p.add_argument("--rank-by", choices=DESIGN_RANKINGS, default="balanced",
+                   help="how each driven center's best driving pivot is chosen: balanced (default), "
+                   "transmission or compact, as for 'burmester pivots'")
     p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")

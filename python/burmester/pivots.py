@@ -187,7 +187,17 @@ def violations(figures: LinkageFigures, limits: DesignLimits) -> List[str]:
         out.append("input is not a crank (it does not turn fully)")
     if limits.input == "rocker" and figures.input_full:
         out.append("input is not a rocker (it turns fully)")
+    if math.isfinite(limits.max_link_length) and max(figures.lengths) > limits.max_link_length:
+        out.append(f"a link {max(figures.lengths):.3g} long > {limits.max_link_length:g}")
     return out
+
+
+def size_violation(linkage: SynthesizedFourBar, limits: DesignLimits) -> List[str]:
+    """The size limit a linkage misses, in words (its size ratio over
+    :attr:`burmester.DesignLimits.max_size_ratio`), or nothing."""
+    if linkage.size_ratio > limits.max_size_ratio:
+        return [f"size {linkage.size_ratio:.1f}x > {limits.max_size_ratio:g}x"]
+    return []
 
 
 def linkage_dict(linkage: SynthesizedFourBar, limits: Optional[DesignLimits] = None) -> Dict[str, Any]:
@@ -214,7 +224,7 @@ def linkage_dict(linkage: SynthesizedFourBar, limits: Optional[DesignLimits] = N
         "modes": list(f.modes),
     }
     if limits is not None:
-        d["violations"] = violations(f, limits)
+        d["violations"] = violations(f, limits) + size_violation(linkage, limits)
     return d
 
 

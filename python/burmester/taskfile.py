@@ -42,6 +42,21 @@ in the file: any name (``"mm"``, ``"in"``, ``"m"``); it scales nothing, and
 is only said (see :mod:`burmester.units`). Without it lengths are bare
 numbers (CAD exports record millimetres unless told otherwise).
 
+Without ``[driven]``, a three-pose file leaves both fixed pivots to
+``burmester design``, which searches them (the other commands need a driven
+pivot). ``[limits]`` may also bound the linkage's size: ``max_size_ratio``
+(its size over the task's) and ``max_link_length`` (the longest link, in the
+task's units). A ``[space]`` table (any number of poses) says where the
+linkage may be, for ``burmester design``::
+
+    [space]
+    pivot_x = [-60.0, 60.0]          # both fixed pivots inside this box ...
+    pivot_y = [-120.0, -10.0]
+    # pivot_polygon = [[x, y], ...]  # ... or inside this simple polygon
+    obstacles = [[[0, 0], [10, 0], [10, 10]]]   # convex keep-out polygons
+    link_width = 8.0                 # the moving links' width
+    envelope = [[x, y], ...]         # the moving links stay inside (around the poses)
+
 Four or five ``[[pose]]`` tables make a four- or five-position task (the
 Burmester curves and points, drawn by ``burmester map``): it takes
 ``[[pose]]``, ``[view]``, ``[limits]`` (for four poses those of the pair map,
@@ -70,7 +85,7 @@ from pathlib import Path
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import burmester
-from burmester._burmester import DesignLimits, Filemon, Grid, Task
+from burmester._burmester import DesignLimits, Filemon, Grid, Space, Task
 from burmester.units import check_units
 
 if sys.version_info >= (3, 11):
@@ -134,6 +149,9 @@ class TaskSpec:
     #: The unit of the task's lengths (``units = "mm"`` in the file), or
     #: None: said in tables, on axes and in CAD files, never scaled.
     units: Optional[str] = None
+    #: Where the linkage may be (``[space]``), for ``burmester design``;
+    #: None: anywhere.
+    space: Optional[Space] = None
 
     @property
     def task(self) -> Task:
@@ -145,6 +163,12 @@ class TaskSpec:
         """Filemon's construction for the driven dyad. Raises
         :class:`TaskFileError` for a task of four or five poses (no driven
         dyad: only ``burmester map`` draws those)."""
+        if len(self.poses) == 3 and self.driven_center is None:
+            raise TaskFileError(
+                f"{self.source}: has no [driven] table: give the driven crank's fixed pivot "
+                "(center = [x, y]) for this command, or run 'burmester design', which searches "
+                "both fixed pivots"
+            )
         if len(self.poses) != 3 or self.driven_center is None:
             raise TaskFileError(
                 f"{self.source}: has {len(self.poses)} poses; Filemon's construction, the maps, "
@@ -191,6 +215,18 @@ def has_pole_triangle(task: Task) -> bool:
     differ by a pure translation): then it has a pole triangle, pole circles
     and image poles (``Task.pole_circle`` and the like raise otherwise)."""
     return len(task) == 3 and all(p.point is not None for p in task.poles)
+
+
+def default_task_view(task: Task, grid: int = DEFAULT_GRID) -> Grid:
+    """A square view around the poses and poles of a three-pose task
+    without a driven dyad, twice as wide as the box around them."""
+    pts: List[Point] = [p.point for p in task.poles if p.point is not None]
+    pts += [(p[0], p[1]) for p in task.poses]
+    xs = [p[0] for p in pts]
+    ys = [p[1] for p in pts]
+    cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    half = max(max(xs) - min(xs), max(ys) - min(ys), task.scale)
+    return Grid(cx - half, cx + half, cy - half, cy + half, grid, grid)
 
 
 def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> Grid:
@@ -384,11 +420,11 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     """
     r = _Reader(source)
     for key in doc:
-        if key not in ("pose", "driven", "view", "limits", "units"):
+        if key not in ("pose", "driven", "view", "limits", "space", "units"):
             hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
             if key in ("unit", "length_unit", "lengths"):
                 hint = ' (the unit of the lengths is units = "mm")'
-            raise r.fail(key, f"unknown top-level key (expected units, [[pose]], [driven], [view], [limits]){hint}")
+            raise r.fail(key, f"unknown top-level key (expected units, [[pose]], [driven], [view], [limits], [space]){hint}")
     units = _units(r, doc)
 
     # [[pose]] x3 (the branch maps of Filemon's construction need three), or
@@ -419,19 +455,22 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     if len(poses) > 3:
         return _parse_many(r, doc, task, tuple(poses), source, units)
 
-    # [driven]
-    center = _driven(r, doc, task, required=True)
-    assert center is not None
-    try:
-        filemon = task.filemon(center)
-    except burmester.BurmesterError as e:
-        raise r.fail("driven.center", f"cannot be used: {e}") from None
+    # [driven]: optional; without it `burmester design` searches both pivots
+    center = _driven(r, doc, task, required=False)
+    if center is not None:
+        try:
+            filemon = task.filemon(center)
+        except burmester.BurmesterError as e:
+            raise r.fail("driven.center", f"cannot be used: {e}") from None
+        default = default_view(filemon).extent
+    else:
+        default = default_task_view(task).extent
 
     # [view]
-    view = _view(r, doc, default_view(filemon).extent)
+    view = _view(r, doc, default)
 
     limits = _limits(r, doc)
-    return TaskSpec(tuple(poses), center, view, limits, source, units)
+    return TaskSpec(tuple(poses), center, view, limits, source, units=units, space=_space(r, doc))
 
 
 def _units(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
@@ -448,10 +487,72 @@ def _units(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
         raise r.fail("units", f"{e}; found {_describe(value)}") from None
 
 
+def _space(r: _Reader, doc: Mapping[str, Any]) -> Optional[Space]:
+    """The ``[space]`` table as a :class:`burmester.Space` (None when
+    absent)."""
+    t = r.table(doc, "space", required=False)
+    if t is None:
+        return None
+    keys = ["pivot_x", "pivot_y", "pivot_polygon", "obstacles", "link_width", "envelope",
+            "travel_samples"]
+    r.only_keys("space", t, keys)
+    if ("pivot_x" in t) != ("pivot_y" in t):
+        missing = "pivot_y" if "pivot_x" in t else "pivot_x"
+        raise r.fail(f"space.{missing}", "missing; give both pivot_x = [min, max] and pivot_y = [min, max]")
+    if "pivot_x" in t and "pivot_polygon" in t:
+        raise r.fail("[space]", "expected a pivot box (pivot_x, pivot_y) or a pivot_polygon, found both")
+
+    def polygon(key: str, value: object) -> List[Point]:
+        if not isinstance(value, list) or len(value) < 3:
+            raise r.fail(f"space.{key}", f"expected a polygon [[x, y], ...] of at least 3 points, "
+                                         f"found {_describe(value)}")
+        return [r.point(f"space.{key}[{k}]", p) for k, p in enumerate(value)]
+
+    kw: Dict[str, Any] = {}
+    if "pivot_x" in t:
+        x0, x1 = r.interval("space.pivot_x", t["pivot_x"])
+        y0, y1 = r.interval("space.pivot_y", t["pivot_y"])
+        kw["pivot_box"] = (x0, x1, y0, y1)
+    if "pivot_polygon" in t:
+        kw["pivot_polygon"] = polygon("pivot_polygon", t["pivot_polygon"])
+    if "obstacles" in t:
+        obs = t["obstacles"]
+        if not isinstance(obs, list):
+            raise r.fail("space.obstacles", f"expected a list of polygons, found {_describe(obs)}")
+        kw["obstacles"] = [polygon(f"obstacles[{k}]", o) for k, o in enumerate(obs)]
+    if "envelope" in t:
+        kw["envelope"] = polygon("envelope", t["envelope"])
+    if "link_width" in t:
+        w = r.number("space.link_width", t["link_width"], "a number (the links' width, task units)")
+        if w < 0:
+            raise r.fail("space.link_width", f"expected a width of at least 0, found {w:g}")
+        kw["link_width"] = w
+    if "travel_samples" in t:
+        n = t["travel_samples"]
+        if isinstance(n, bool) or not isinstance(n, int) or not 2 <= n <= 4096:
+            raise r.fail("space.travel_samples", f"expected a whole number from 2 to 4096, found {_describe(n)}")
+        kw["travel_samples"] = n
+    try:
+        return Space(**kw)
+    except burmester.BurmesterError as e:
+        # The core names the field: "pivot_box xmax", "pivot_polygon",
+        # "envelope", "obstacle 2", "link_width", ...
+        name = str(getattr(e, "name", "") or "")
+        where = "[space]"
+        if name.startswith("pivot_box"):
+            where = "space.pivot_y" if name.endswith(("ymin", "ymax")) else "space.pivot_x"
+        elif name.startswith("obstacle"):
+            where = "space.obstacles"
+        elif name in keys:
+            where = f"space.{name}"
+        raise r.fail(where, str(e)) from None
+
+
 def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
     """The ``[limits]`` table as a DesignLimits (the defaults when absent)."""
     lim_t = r.table(doc, "limits", required=False) or {}
-    keys = ["min_transmission_deg", "max_link_ratio", "input", "require_crank"]
+    keys = ["min_transmission_deg", "max_link_ratio", "input", "require_crank", "max_size_ratio",
+            "max_link_length"]
     r.only_keys("limits", lim_t, keys)
     defaults = DesignLimits()
     mu = defaults.min_transmission_deg
@@ -475,8 +576,14 @@ def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
         if not isinstance(crank, bool):
             raise r.fail("limits.require_crank", f"expected true or false, found {_describe(crank)}")
         input_ = "crank" if crank else "any"
+    sizes = []
+    for key in ("max_size_ratio", "max_link_length"):
+        v = math.inf
+        if key in lim_t:
+            v = r.number(f"limits.{key}", lim_t[key], "a number")
+        sizes.append(v)
     try:
-        limits = DesignLimits(mu, ratio, input_)
+        limits = DesignLimits(mu, ratio, input_, sizes[0], sizes[1])
     except burmester.InvalidInputError as e:
         # The core validates; its error names the limit and its range.
         if e.cause != "outside_range":
@@ -557,7 +664,7 @@ def _parse_many(
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     limits = _limits(r, doc)
     driven = _driven(r, doc, task, required=False) if len(poses) == 4 else None
-    return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units)
+    return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units=units, space=_space(r, doc))
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
@@ -634,5 +741,38 @@ def dumps(spec: TaskSpec) -> str:
         limits.add("max_link_ratio", note(tomlkit.item(float(lim.max_link_ratio)), "longest link / shortest link"))
         limits.add("input", note(tomlkit.item(str(lim.input)),
                                  'the driving link: "any", "crank" (turns fully) or "rocker"'))
+        if math.isfinite(lim.max_size_ratio):
+            limits.add("max_size_ratio", note(tomlkit.item(float(lim.max_size_ratio)),
+                                              "the linkage's size / the task's size"))
+        if math.isfinite(lim.max_link_length):
+            limits.add("max_link_length", note(tomlkit.item(float(lim.max_link_length)),
+                                               "the longest link, task units"))
         doc.add("limits", limits)
+    if spec.space is not None:
+        doc.add("space", _dump_space(spec.space, note))
     return tomlkit.dumps(doc)
+
+
+def _dump_space(space: Space, note: Any) -> Any:
+    """The ``[space]`` table (tomlkit), ``note`` adding a comment to an item."""
+    import tomlkit
+
+    def poly(p: Sequence[Point]) -> List[List[float]]:
+        return [[float(x), float(y)] for x, y in p]
+
+    t = note(tomlkit.table(), "where the linkage may be (burmester design)")
+    if space.pivot_box is not None:
+        x0, x1, y0, y1 = space.pivot_box
+        t.add("pivot_x", note(tomlkit.item([float(x0), float(x1)]), "both fixed pivots inside this box"))
+        t.add("pivot_y", tomlkit.item([float(y0), float(y1)]))
+    if space.pivot_polygon is not None:
+        t.add("pivot_polygon", tomlkit.item(poly(space.pivot_polygon)))
+    if space.obstacles:
+        t.add("obstacles", tomlkit.item([poly(o) for o in space.obstacles]))
+    if space.link_width:
+        t.add("link_width", float(space.link_width))
+    if space.envelope is not None:
+        t.add("envelope", tomlkit.item(poly(space.envelope)))
+    if space.travel_samples != 64:
+        t.add("travel_samples", int(space.travel_samples))
+    return t

@@ -55,6 +55,9 @@ def samples():
     driven = t.driven_solution_map((-3.0, 4.0), Grid(*VP, 20, 16))
     (pivot,) = smap.best_pivots(1)
     atlas = burmester.pivot_atlas(t, (-6.0, 6.0, -6.0, 6.0, 4, 3), Grid(*VP, 16, 16), link_width=0.1)
+    space = burmester.Space(pivot_box=(-6.0, 6.0, -6.0, 6.0), link_width=0.1)
+    report = burmester.design(t, space=space, coarse_driven=4, coarse_driving=12, starts=4)
+    misses = burmester.design(t, limits=DesignLimits(85.0), coarse_driven=4, coarse_driving=12, starts=2)
     pmap = Task(BURMESTER_FIVE[:4]).pair_map(40, 36, min_transmission_deg=20.0,
                                              base_plate=[(-20, -20), (20, -20), (20, 20), (-20, 20)])
     return {
@@ -83,6 +86,10 @@ def samples():
         "SolutionMap": smap,
         "SolutionMap (driven)": driven,
         "PivotAtlas": atlas,
+        "Space": space,
+        "DesignReport": report,
+        "Design": report[0],
+        "NearMiss": misses.near_misses[0],
         "AtlasPair": atlas.best_pairs(1)[0],
         "PairMap": pmap,
         "Pair": pmap.best_pairs(1)[0],
@@ -91,7 +98,8 @@ def samples():
 
 CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.Configuration, LinkageFigures, Pole,
            Task, Filemon, SynthesizedFourBar, DesignLimits, Pivot, SolutionMap, burmester.PivotAtlas,
-           burmester.AtlasPair, burmester.PairMap, burmester.Pair]
+           burmester.AtlasPair, burmester.PairMap, burmester.Pair, burmester.Space, burmester.Design,
+           burmester.NearMiss, burmester.DesignReport]
 
 
 # ---------------------------------------------------------------------------
@@ -186,12 +194,19 @@ PROPERTIES = {
              "extreme_poses middle_pose",
     SynthesizedFourBar: "fourbar size size_ratio driving driven input_angles modes coupler_point "
                         "coupler_angle_offset figures branch_free travel travel_stops",
-    DesignLimits: "min_transmission_deg max_link_ratio input",
+    DesignLimits: "min_transmission_deg max_link_ratio input max_size_ratio max_link_length",
     Pivot: "center index linkage figures margin size_ratio score ranked_by",
     SolutionMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                  "size_ratio acceptable grid extent shape varying fixed_dyad task limits",
-    burmester.PivotAtlas: "branch_free_fraction shape",
-    burmester.AtlasPair: "driven driving min_transmission_deg link_ratio margin n_acceptable driven_index driving_index",
+    burmester.PivotAtlas: "branch_free_fraction shape rank_by",
+    burmester.AtlasPair: "driven driving min_transmission_deg link_ratio margin n_acceptable driven_index driving_index "
+                         "score size_ratio",
+    burmester.Space: "region pivot_box pivot_polygon obstacles link_width envelope travel_samples",
+    burmester.Design: "linkage figures score size_ratio ranked_by driving_pivot driven_pivot found_by coarse refined "
+                      "coarse_score evaluations",
+    burmester.NearMiss: "linkage figures size_ratio misses shortfall",
+    burmester.DesignReport: "task designs near_misses rejections main_rejection census limits space rank_by "
+                            "min_separation search_box coarse_candidates coarse_acceptable evaluations",
     burmester.PairMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                        "size_ratio acceptable grid extent shape driving_dyads driven_dyads task limits",
     burmester.Pair: "driving driven index linkage figures margin size_ratio score ranked_by",
@@ -213,6 +228,7 @@ METHODS = {
     SolutionMap: "point linkage margin best_pivots pareto_front",
     burmester.PivotAtlas: "best_pairs",
     burmester.AtlasPair: "linkage",
+    burmester.Space: "contains_pivot search_box",
     burmester.PairMap: "linkage margins best_pairs pareto_front",
 }
 

@@ -86,7 +86,6 @@ def edit(old, new):
 BAD = [
     # (file text, words the message must contain)
     ("x = [", ["not valid TOML"]),
-    (GOOD.replace("[driven]\ncenter = [4.0, -1.0]\n", ""), ["[driven]", "missing"]),
     ("[driven]\ncenter = [0, 0]\n", ["[[pose]]", "missing", "three"]),
     (edit("[[pose]]\nx = 0\ny = 0.0\nangle_deg = 0.0\n", ""), ["3 to 5 poses", "found 2"]),
     ("[[pose]]\nx = 0\ny = 0\nangle_deg = 0\n" * 6, ["3 to 5 poses", "found 6"]),

@@ -3,7 +3,7 @@
 //! `PivotAtlas` class and the Dask glue are pure Python
 //! (`burmester/atlas.py`).
 
-use burmester::AtlasCell;
+use burmester::{AtlasCell, RankBy};
 use numpy::IntoPyArray;
 use numpy::ndarray::{Array2, Array3};
 use pyo3::exceptions::PyValueError;
@@ -12,6 +12,7 @@ use pyo3::types::PyDict;
 
 use crate::conv::{Count, PyPoint, Real};
 use crate::design::{MapOptions, PyDesignLimits};
+use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::run::{WATCH_MIN_SAMPLES, run};
 use crate::synthesis::PyTask;
@@ -23,11 +24,12 @@ use crate::synthesis::PyTask;
 #[pyfunction]
 #[pyo3(signature = (task, driven, row_start, row_end, driving, *, limits = None,
     min_transmission_deg = None, max_link_ratio = None, input = None, base_plate = None,
-    obstacles = None, link_width = Real(0.0), travel_samples = Count(64), threads = None,
-    progress = None),
+    obstacles = None, link_width = Real(0.0), travel_samples = Count(64), rank_by = "balanced",
+    envelope = None, threads = None, progress = None),
     text_signature = "(task, driven, row_start, row_end, driving, *, limits=None, \
     min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, obstacles=None, \
-    link_width=0.0, travel_samples=64, threads=None, progress=None)")]
+    link_width=0.0, travel_samples=64, rank_by='balanced', envelope=None, threads=None, \
+    progress=None)")]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn _atlas_tile<'py>(
     py: Python<'py>,
@@ -44,10 +46,13 @@ pub(crate) fn _atlas_tile<'py>(
     obstacles: Option<Vec<Vec<PyPoint>>>,
     link_width: Real,
     travel_samples: Count,
+    rank_by: &str,
+    envelope: Option<Vec<PyPoint>>,
     threads: Option<Count>,
     progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let opts = MapOptions::new(
+    let rank_by = rank_by.parse::<RankBy>().py()?;
+    let mut opts = MapOptions::new(
         limits,
         min_transmission_deg,
         max_link_ratio,
@@ -57,6 +62,7 @@ pub(crate) fn _atlas_tile<'py>(
         link_width,
         travel_samples,
     )?;
+    opts.constraints.envelope = envelope.map(|v| v.into_iter().map(|p| p.0).collect());
     let (t, dn, dv) = (task.inner, driven.inner, driving.inner);
     let (r0, r1) = (row_start.0, row_end.0);
     let pool = match threads {
@@ -75,8 +81,17 @@ pub(crate) fn _atlas_tile<'py>(
         progress,
         None,
         |control| {
-            let work =
-                || t.pivot_atlas_rows(&dn, r0..r1, &dv, &opts.limits, &opts.constraints, control);
+            let work = || {
+                t.pivot_atlas_rows(
+                    &dn,
+                    r0..r1,
+                    &dv,
+                    &opts.limits,
+                    &opts.constraints,
+                    rank_by,
+                    control,
+                )
+            };
             match &pool {
                 Some(p) => p.install(work),
                 None => work(),
@@ -108,6 +123,8 @@ pub(crate) fn _atlas_tile<'py>(
     )?;
     d.set_item("best_link_ratio", best(|b| f64::from(b.link_ratio)))?;
     d.set_item("best_margin", best(|b| b.margin))?;
+    d.set_item("best_size_ratio", best(|b| f64::from(b.size_ratio)))?;
+    d.set_item("best_score", best(|b| b.score))?;
     let mut driving_xy = Vec::with_capacity(rows * nx * 2);
     let mut index = Vec::with_capacity(rows * nx * 2);
     for c in &cells {

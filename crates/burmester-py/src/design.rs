@@ -35,11 +35,20 @@ pub struct PyDesignLimits {
 #[pymethods]
 impl PyDesignLimits {
     #[new]
-    #[pyo3(signature = (min_transmission_deg = Real(30.0), max_link_ratio = Real(10.0), input = "any"),
-        text_signature = "(min_transmission_deg=30.0, max_link_ratio=10.0, input='any')")]
-    fn new(min_transmission_deg: Real, max_link_ratio: Real, input: &str) -> PyResult<Self> {
+    #[pyo3(signature = (min_transmission_deg = Real(30.0), max_link_ratio = Real(10.0), input = "any",
+        max_size_ratio = Real(f64::INFINITY), max_link_length = Real(f64::INFINITY)),
+        text_signature = "(min_transmission_deg=30.0, max_link_ratio=10.0, input='any', \
+        max_size_ratio=inf, max_link_length=inf)")]
+    fn new(
+        min_transmission_deg: Real,
+        max_link_ratio: Real,
+        input: &str,
+        max_size_ratio: Real,
+        max_link_length: Real,
+    ) -> PyResult<Self> {
         let input = input.parse::<InputRequirement>().py()?;
         DesignLimits::from_degrees(min_transmission_deg.0, max_link_ratio.0, input)
+            .and_then(|l| l.with_size(max_size_ratio.0, max_link_length.0))
             .map(|inner| PyDesignLimits { inner })
             .py()
     }
@@ -58,16 +67,33 @@ impl PyDesignLimits {
     fn input(&self) -> &'static str {
         self.inner.input.as_str()
     }
-    fn __getnewargs__(&self) -> (f64, f64, &'static str) {
+    #[getter]
+    fn max_size_ratio(&self) -> f64 {
+        self.inner.max_size_ratio
+    }
+    #[getter]
+    fn max_link_length(&self) -> f64 {
+        self.inner.max_link_length
+    }
+    fn __getnewargs__(&self) -> (f64, f64, &'static str, f64, f64) {
         (
             self.min_transmission_deg(),
             self.inner.max_link_ratio,
             self.inner.input.as_str(),
+            self.inner.max_size_ratio,
+            self.inner.max_link_length,
         )
     }
     fn __repr__(&self) -> String {
+        let mut extra = String::new();
+        if self.inner.max_size_ratio.is_finite() {
+            extra += &format!(", max_size_ratio={:?}", self.inner.max_size_ratio);
+        }
+        if self.inner.max_link_length.is_finite() {
+            extra += &format!(", max_link_length={:?}", self.inner.max_link_length);
+        }
         format!(
-            "DesignLimits(min_transmission_deg={:?}, max_link_ratio={:?}, input='{}')",
+            "DesignLimits(min_transmission_deg={:?}, max_link_ratio={:?}, input='{}'{extra})",
             self.min_transmission_deg(),
             self.inner.max_link_ratio,
             self.inner.input.as_str()
@@ -137,6 +163,7 @@ impl MapOptions {
                 obstacles: obstacles.unwrap_or_default().into_iter().map(pts).collect(),
                 link_width: link_width.0,
                 travel_samples: travel_samples.0,
+                envelope: None,
             },
         })
     }
@@ -798,6 +825,7 @@ impl PySolutionMap {
                 obstacles: constraints.1.into_iter().map(pts).collect(),
                 link_width: constraints.2,
                 travel_samples: constraints.3,
+                envelope: None,
             },
         };
         check_context(py, &context)?;

@@ -20,6 +20,7 @@ mod geom;
 mod linkage;
 mod pairs;
 mod run;
+mod search;
 mod sweep;
 mod synthesis;
 
@@ -40,6 +41,10 @@ mod _burmester {
     use crate::linkage::{PyConfiguration, PyFourBar, PyLinkageFigures};
     #[pymodule_export]
     use crate::pairs::{PyPair, PyPairMap};
+    #[pymodule_export]
+    use crate::search::{
+        _design, _design_from_atlas, _design_plan, PyDesign, PyDesignReport, PyNearMiss, PySpace,
+    };
     #[pymodule_export]
     use crate::synthesis::{PyFilemon, PyPole, PySynthesizedFourBar, PyTask};
 

@@ -322,6 +322,7 @@ impl PyPairMap {
             obstacles: constraints.1.into_iter().map(pts).collect(),
             link_width: constraints.2,
             travel_samples: constraints.3,
+            envelope: None,
         };
         let (ny, nx) = (shape.0.0, shape.1.0);
         let context = py

@@ -88,6 +88,18 @@ impl<'a> Control<'a> {
         self.cancel.is_some_and(|c| c.load(Ordering::Relaxed))
     }
 
+    /// The same cancel flag with another progress hook (for a stage of a
+    /// longer computation that reports its own progress in its units).
+    pub(crate) fn with_hook<'b>(&self, hook: &'b (dyn Fn(usize, usize) + Sync)) -> Control<'b>
+    where
+        'a: 'b,
+    {
+        Control {
+            cancel: self.cancel,
+            progress: Some(hook),
+        }
+    }
+
     pub(crate) fn report(&self, done: usize, total: usize) {
         if let Some(p) = self.progress {
             p(done, total);

@@ -94,6 +94,9 @@ pub enum PolygonProblem {
     NoArea,
     /// Two of its edges cross: it is not a simple polygon.
     SelfIntersecting,
+    /// An envelope that leaves out a pose's coupler point (the coupler
+    /// must be inside it at every pose).
+    ExcludesPoses,
 }
 
 impl PolygonProblem {
@@ -103,6 +106,7 @@ impl PolygonProblem {
             PolygonProblem::TooFewVertices => "too few vertices",
             PolygonProblem::NoArea => "no area",
             PolygonProblem::SelfIntersecting => "self-intersecting",
+            PolygonProblem::ExcludesPoses => "excludes poses",
         }
     }
 }
@@ -113,6 +117,10 @@ impl fmt::Display for PolygonProblem {
             PolygonProblem::TooFewVertices => "it has fewer than 3 vertices",
             PolygonProblem::NoArea => "its vertices lie on one line, so it has no area",
             PolygonProblem::SelfIntersecting => "two of its edges cross (it is not simple)",
+            PolygonProblem::ExcludesPoses => {
+                "a pose's coupler point lies outside it, so no linkage can stay inside it \
+                 (draw it around every pose)"
+            }
         })
     }
 }

@@ -133,6 +133,10 @@ pub use design::{
     AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, Pair,
     PairContext, PairMap, Pivot, PivotAtlas, RankBy, SolutionMap, Varying,
 };
+pub use design::{
+    Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, PivotRegion, SearchPoint,
+    Space,
+};
 pub use engine::Control;
 pub use error::{AssemblyError, DegenerateError, Error, InvalidInput, Result};
 pub use geom::{CircleOrLine, Conic, ConicKind, Grid, Line, PerPose, Pose, Similarity, Viewport};

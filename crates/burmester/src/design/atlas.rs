@@ -7,14 +7,14 @@
 //! `C0`:
 //!
 //! * the number of acceptable driving pivots;
-//! * the best of them by
-//!   [`RankBy::Transmission`](crate::RankBy::Transmission) (the largest
-//!   minimum transmission angle over the travel, ties within
-//!   [`tolerance::RANK_TIE`] by the more compact linkage, the smaller size
-//!   ratio, then by the larger margin to the nearest branch-defect
-//!   boundary), exactly the first pivot of
-//!   [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(1, ..,
-//!   RankBy::Transmission)`, with its figures;
+//! * the best of them by a [`RankBy`] with a score
+//!   ([`Balanced`](RankBy::Balanced), the default of the Python binding,
+//!   [`Transmission`](RankBy::Transmission) or [`Compact`](RankBy::Compact);
+//!   scores within [`tolerance::RANK_TIE`] tie and go to the more compact
+//!   linkage, the smaller size ratio, then to the larger margin to the
+//!   nearest branch-defect boundary, as in the maps), exactly the first
+//!   pivot of [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(1,
+//!   .., rank_by)`, with its figures and score;
 //! * the number of branch-free driving samples (the map's `branch_free`
 //!   column).
 //!
@@ -38,7 +38,7 @@ use rayon::prelude::*;
 use crate::design::kernel::{CosBand, DrivingKernel, RowOut, RowPre};
 use crate::design::map::Sampler;
 use crate::design::rank::tie_order;
-use crate::design::{Constraints, DesignLimits};
+use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
 use crate::error::{Error, InvalidInput, Result, try_vec};
 use crate::geom::Grid;
@@ -61,6 +61,12 @@ pub struct AtlasBest {
     /// Its margin to the nearest branch-defect boundary
     /// ([`Filemon::margin`]).
     pub margin: f64,
+    /// The linkage's size relative to the task's (the solution map's
+    /// `size_ratio`).
+    pub size_ratio: f32,
+    /// Its score by the atlas's ranking ([`RankBy::score`] of the three
+    /// columns above, as the map's ranking reads them).
+    pub score: f64,
 }
 
 /// One driven center's reduced solution map.
@@ -100,6 +106,8 @@ pub struct PivotAtlas {
     pub limits: DesignLimits,
     /// The constraints behind `acceptable`.
     pub constraints: Constraints,
+    /// What chose each cell's best driving pivot.
+    pub rank_by: RankBy,
     /// One cell per driven sample, row-major.
     pub cells: Vec<AtlasCell>,
 }
@@ -145,7 +153,8 @@ impl Task {
     /// # Errors
     ///
     /// [`InvalidInput::NeedsPoses`] for a task of four or five poses;
-    /// [`InvalidInput`] for invalid limits or constraints;
+    /// [`InvalidInput`] for invalid limits or constraints, or a ranking
+    /// without a score ([`RankBy::Pareto`], [`RankBy::Margin`]);
     /// [`Error::OutOfMemory`]; [`Error::Cancelled`].
     pub fn pivot_atlas(
         &self,
@@ -153,6 +162,7 @@ impl Task {
         driving: &Grid,
         limits: &DesignLimits,
         constraints: &Constraints,
+        rank_by: RankBy,
         control: &Control<'_>,
     ) -> Result<PivotAtlas> {
         let cells = self.pivot_atlas_rows(
@@ -161,6 +171,7 @@ impl Task {
             driving,
             limits,
             constraints,
+            rank_by,
             control,
         )?;
         Ok(PivotAtlas {
@@ -169,6 +180,7 @@ impl Task {
             driving: *driving,
             limits: *limits,
             constraints: constraints.clone(),
+            rank_by,
             cells,
         })
     }
@@ -181,6 +193,7 @@ impl Task {
     ///
     /// As [`pivot_atlas`](Self::pivot_atlas);
     /// [`InvalidInput::OutsideRange`] for rows outside the driven grid.
+    #[allow(clippy::too_many_arguments)]
     pub fn pivot_atlas_rows(
         &self,
         driven: &Grid,
@@ -188,9 +201,11 @@ impl Task {
         driving: &Grid,
         limits: &DesignLimits,
         constraints: &Constraints,
+        rank_by: RankBy,
         control: &Control<'_>,
     ) -> Result<Vec<AtlasCell>> {
         self.three_poses("the pivot atlas")?;
+        check_scored(rank_by, "atlas ranking")?;
         if rows.start > rows.end || rows.end > driven.ny() {
             return Err(InvalidInput::OutsideRange {
                 name: "driven rows",
@@ -216,7 +231,7 @@ impl Task {
                 let centers: Vec<Point2<f64>> = (m * CHUNK..m * CHUNK + chunk.len())
                     .map(|k| driven.point(k % nx, rows.start + k / nx))
                     .collect();
-                atlas_chunk(self, &sampler, &centers, driving, scratch, chunk);
+                atlas_chunk(self, &sampler, &centers, driving, rank_by, scratch, chunk);
                 let d = done.fetch_add(chunk.len(), Ordering::Relaxed) + chunk.len();
                 control.report(d, total);
             },
@@ -269,8 +284,8 @@ struct Cell<'a> {
     active: bool,
     /// The acceptable samples within `RANK_TIE` of the best score so far:
     /// exactly the first run of `best_pivots`' ranking once all are seen.
-    top: f32,
-    run: Vec<(usize, f32)>,
+    top: f64,
+    run: Vec<(usize, f64)>,
     /// The scores that may reach the best run (below it by more than
     /// `TOP_SLACK`, a score cannot tie after its rounding to f32).
     reach: CosBand,
@@ -286,6 +301,7 @@ fn atlas_chunk(
     sampler: &Sampler<'_>,
     centers: &[Point2<f64>],
     driving: &Grid,
+    rank_by: RankBy,
     scratch: &mut Scratch<'_>,
     cells: &mut [AtlasCell],
 ) {
@@ -319,7 +335,7 @@ fn atlas_chunk(
                 kernel: DrivingKernel::new(sampler, driven, &c),
                 row: vec![false; driving.nx()],
                 active: false,
-                top: f32::NEG_INFINITY,
+                top: f64::NEG_INFINITY,
                 run: Vec::new(),
                 reach: CosBand::new(f64::NEG_INFINITY),
                 cell,
@@ -359,16 +375,17 @@ fn atlas_chunk(
             if let Some(k) = &cell.kernel {
                 k.row_where(y, xs, &cell.row, pre, out);
             }
-            cell.take_row(sampler, driving, j, nx, out, &limit);
+            cell.take_row(sampler, driving, j, nx, out, &limit, rank_by);
         }
     }
     for (m, cell) in live {
-        cells[m] = cell.finish(task, sampler, driving);
+        cells[m] = cell.finish(task, sampler, driving, rank_by);
     }
 }
 
 impl Cell<'_> {
     /// The branch-free samples of row `j` (the kernel's lanes in `out`).
+    #[allow(clippy::too_many_arguments)]
     fn take_row(
         &mut self,
         sampler: &Sampler<'_>,
@@ -377,20 +394,32 @@ impl Cell<'_> {
         nx: usize,
         out: &RowOut,
         limit: &CosBand,
+        rank_by: RankBy,
     ) {
+        let by_transmission = rank_by == RankBy::Transmission;
         for (i, _) in self.row.iter().enumerate().filter(|(_, f)| **f) {
             let p = driving.point(i, j);
             // Acceptable samples with their score where it may reach the
-            // run of the best (elsewhere no `acos` is taken).
+            // run of the best (by transmission: elsewhere no `acos` is
+            // taken).
             let reach = &self.reach;
             let seen = match &self.kernel {
-                Some(k) => k
-                    .judge_for_atlas(out, i, p, limit)
-                    .map(|a| a.map(|w| reach.may_reach(w).then(|| crate::simd::acos1(w) as f32))),
+                Some(k) => k.judge_for_atlas(out, i, p, limit).map(|a| {
+                    a.map(|w| {
+                        if by_transmission {
+                            reach
+                                .may_reach(w)
+                                .then(|| f64::from(crate::simd::acos1(w) as f32))
+                        } else {
+                            let (mu, ratio, size) = k.ranked_at(out, i, p, w);
+                            rank_by.score(f64::from(mu), f64::from(size), f64::from(ratio))
+                        }
+                    })
+                }),
                 None => {
                     let s = sampler.driving_sample(p, self.driven, &self.c, true);
                     s.valid
-                        .then_some(s.acceptable.then_some(Some(s.min_transmission_rad)))
+                        .then_some(s.acceptable.then_some(sample_score(&s, rank_by)))
                 }
             };
             let Some(acceptable) = seen else {
@@ -408,7 +437,9 @@ impl Cell<'_> {
                 self.top = score;
                 let top = self.top;
                 self.run.retain(|&(_, v)| tied(top, v));
-                self.reach = CosBand::new(f64::from(top) - tolerance::RANK_TIE - TOP_SLACK);
+                if by_transmission {
+                    self.reach = CosBand::new(top - tolerance::RANK_TIE - TOP_SLACK);
+                }
             }
             if tied(self.top, score) {
                 self.run.push((j * nx + i, score));
@@ -417,7 +448,13 @@ impl Cell<'_> {
     }
 
     /// The cell once every row is seen.
-    fn finish(self, task: &Task, sampler: &Sampler<'_>, driving: &Grid) -> AtlasCell {
+    fn finish(
+        self,
+        task: &Task,
+        sampler: &Sampler<'_>,
+        driving: &Grid,
+        rank_by: RankBy,
+    ) -> AtlasCell {
         let mut cell = self.cell;
         cell.best = best(task, self.filemon, sampler, driving, self.run).or_else(|| {
             // No candidate of the first run has a linkage (not seen in
@@ -429,13 +466,36 @@ impl Cell<'_> {
                         self.filemon,
                         sampler,
                         driving,
-                        all_acceptable(self.filemon, sampler, driving),
+                        all_acceptable(self.filemon, sampler, driving, rank_by),
                     )
                 })
                 .flatten()
         });
         cell
     }
+}
+
+/// The score of a sample by `rank_by`, from its columns as the map's
+/// ranking reads them (`None` where NaN).
+fn sample_score(s: &crate::design::map::Sample, rank_by: RankBy) -> Option<f64> {
+    rank_by.score(
+        f64::from(s.min_transmission_rad),
+        f64::from(s.size_ratio),
+        f64::from(s.link_ratio),
+    )
+}
+
+/// Checks that a ranking has a score (not the Pareto front or the margin).
+pub(crate) fn check_scored(rank_by: RankBy, what: &'static str) -> Result<()> {
+    if rank_by.score(1.0, 1.0, 1.0).is_none() {
+        return Err(InvalidInput::UnknownName {
+            what,
+            expected: "\"balanced\", \"transmission\" or \"compact\" (a ranking with a score)",
+            found: rank_by.as_str().to_owned(),
+        }
+        .into());
+    }
+    Ok(())
 }
 
 /// Radians below the best run's score under which a sample's score (an
@@ -445,12 +505,17 @@ const TOP_SLACK: f64 = 1e-6;
 /// Whether `score` ties with the best score `top` (as `best_pivots` groups
 /// runs: the difference in `f64`).
 #[inline]
-fn tied(top: f32, score: f32) -> bool {
-    (f64::from(top) - f64::from(score)).abs() <= tolerance::RANK_TIE
+fn tied(top: f64, score: f64) -> bool {
+    (top - score).abs() <= tolerance::RANK_TIE
 }
 
-/// Every acceptable sample with a transmission angle, `(k, score)`.
-fn all_acceptable(filemon: &Filemon, sampler: &Sampler<'_>, driving: &Grid) -> Vec<(usize, f32)> {
+/// Every acceptable sample with a score, `(k, score)`.
+fn all_acceptable(
+    filemon: &Filemon,
+    sampler: &Sampler<'_>,
+    driving: &Grid,
+    rank_by: RankBy,
+) -> Vec<(usize, f64)> {
     let driven = filemon.driven();
     let c = sampler.fixed_pivots(&driven);
     let branch = BranchRows::new(filemon, driving);
@@ -460,15 +525,15 @@ fn all_acceptable(filemon: &Filemon, sampler: &Sampler<'_>, driving: &Grid) -> V
         branch.row(j, &mut row);
         for (i, _) in row.iter().enumerate().filter(|(_, f)| **f) {
             let s = sampler.driving_sample(driving.point(i, j), driven, &c, true);
-            if s.acceptable && !s.min_transmission_rad.is_nan() {
-                out.push((j * driving.nx() + i, s.min_transmission_rad));
+            if let (true, Some(score)) = (s.acceptable, sample_score(&s, rank_by)) {
+                out.push((j * driving.nx() + i, score));
             }
         }
     }
     out
 }
 
-/// The first pivot `best_pivots(1, _, RankBy::Transmission)` takes from
+/// The first pivot `best_pivots(1, _, rank_by)` takes from
 /// the candidates `cand` (`(k, score)`, in sample order): sorted by score,
 /// runs of ties by size ratio then margin, the first with a linkage.
 fn best(
@@ -476,7 +541,7 @@ fn best(
     filemon: &Filemon,
     sampler: &Sampler<'_>,
     driving: &Grid,
-    mut cand: Vec<(usize, f32)>,
+    mut cand: Vec<(usize, f64)>,
 ) -> Option<AtlasBest> {
     let driven = filemon.driven();
     let c = sampler.fixed_pivots(&driven);
@@ -488,16 +553,16 @@ fn best(
         while j < cand.len() && tied(cand[i].1, cand[j].1) {
             j += 1;
         }
-        let mut run: Vec<(usize, f32, f64)> = cand[i..j]
+        let mut run: Vec<(usize, f32, f64, f64)> = cand[i..j]
             .iter()
-            .map(|&(k, _)| {
+            .map(|&(k, score)| {
                 let p = driving.point(k % nx, k / nx);
                 let size = sampler.driving_sample(p, driven, &c, true).size_ratio;
-                (k, size, filemon.margin_at(p))
+                (k, size, filemon.margin_at(p), score)
             })
             .collect();
         run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
-        for (k, _, margin) in run {
+        for (k, _, margin, score) in run {
             let p = driving.point(k % nx, k / nx);
             let linkage = task
                 .dyad_from_center(p)
@@ -510,6 +575,8 @@ fn best(
                     min_transmission_rad: s.min_transmission_rad,
                     link_ratio: s.link_ratio,
                     margin,
+                    size_ratio: s.size_ratio,
+                    score,
                 });
             }
         }

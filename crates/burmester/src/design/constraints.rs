@@ -23,11 +23,25 @@
 //! is a real collision) and otherwise the interval is halved, down to
 //! [`Constraints::MIN_STEP`]. Below that the linkage counts as colliding:
 //! "acceptable" never admits a linkage that is not certified clear.
+//!
+//! # An envelope the moving links stay inside
+//!
+//! An optional [`Constraints::envelope`] (a simple polygon: the machine's
+//! inside) must hold the moving parts over the whole travel: the crank,
+//! the rocker and the coupler as its triangle of the two moving pivots and
+//! the task's coupler point, each a capsule `link_width` wide. Its
+//! boundary has no holes, so the linkage (one connected chain from `A0` to
+//! `C0`) is inside exactly when the input pivot `A0` is inside and no
+//! capsule touches the boundary. The same halving over the travel decides
+//! it, with the coupler point's speed in the bound: the coupler turns at
+//! most `L2 / (L3 sin mu_min)` per radian of input, so a point at distance
+//! `d` from the crank joint moves at most `L2 (1 + d / L3) / sin mu_min`
+//! per radian, and so does every point of the triangle.
 
 use nalgebra::Point2;
 use parry2d_f64::math::Vector as PVector;
 use parry2d_f64::query::intersection_test;
-use parry2d_f64::shape::{Capsule, ConvexPolygon};
+use parry2d_f64::shape::{Capsule, ConvexPolygon, Segment};
 use parry2d_f64::utils::point_in_poly2d;
 
 use crate::error::{InvalidInput, PolygonProblem, Result, bounded, count_in, in_range};
@@ -53,6 +67,11 @@ pub struct Constraints {
     /// check starts (2 to [`Constraints::MAX_TRAVEL_SAMPLES`], default 64);
     /// between them it refines where needed (module docs).
     pub travel_samples: usize,
+    /// A simple polygon the moving links (crank, rocker and the coupler
+    /// triangle with the coupler point) must stay inside over the whole
+    /// travel, `link_width` wide (module docs); `None`: no envelope. It
+    /// must contain every pose's coupler point.
+    pub envelope: Option<Vec<Point2<f64>>>,
 }
 
 impl Default for Constraints {
@@ -62,6 +81,7 @@ impl Default for Constraints {
             obstacles: Vec::new(),
             link_width: 0.0,
             travel_samples: Self::DEFAULT_TRAVEL_SAMPLES,
+            envelope: None,
         }
     }
 }
@@ -101,6 +121,7 @@ impl Constraints {
             .iter()
             .flatten()
             .chain(self.obstacles.iter().flatten())
+            .chain(self.envelope.iter().flatten())
         {
             bounded("constraint vertex x", p.x, Self::MAX_COORDINATE, RESCALE)?;
             bounded("constraint vertex y", p.y, Self::MAX_COORDINATE, RESCALE)?;
@@ -114,6 +135,9 @@ impl Constraints {
         )?;
         if let Some(plate) = &self.base_plate {
             check_polygon("base_plate", plate, true)?;
+        }
+        if let Some(env) = &self.envelope {
+            check_polygon("envelope", env, true)?;
         }
         let mut obstacles = Vec::with_capacity(self.obstacles.len());
         for (k, o) in self.obstacles.iter().enumerate() {
@@ -135,10 +159,50 @@ impl Constraints {
                 .as_ref()
                 .map(|p| p.iter().map(|q| PVector::new(q.x, q.y)).collect()),
             obstacles,
+            envelope: self.envelope.as_ref().map(|e| {
+                let pts: Vec<PVector> = e.iter().map(|q| PVector::new(q.x, q.y)).collect();
+                let edges = (0..pts.len())
+                    .map(|k| Segment::new(pts[k], pts[(k + 1) % pts.len()]))
+                    .collect();
+                (pts, edges)
+            }),
             radius: 0.5 * width,
             samples,
         })
     }
+}
+
+/// Whether `p` lies inside the simple polygon `poly` (its boundary
+/// included, as parry's test takes it).
+pub(crate) fn inside_polygon(poly: &[Point2<f64>], p: Point2<f64>) -> bool {
+    let pts: Vec<PVector> = poly.iter().map(|q| PVector::new(q.x, q.y)).collect();
+    point_in_poly2d(PVector::new(p.x, p.y), &pts)
+}
+
+/// Checks a polygon that must be simple (a base plate, a region, an
+/// envelope), naming it `name`.
+///
+/// # Errors
+///
+/// [`InvalidInput::Polygon`] for fewer than three vertices, no area or
+/// crossing edges; [`InvalidInput::NotFinite`] for a non-finite vertex.
+pub(crate) fn check_simple_polygon(name: &str, pts: &[Point2<f64>]) -> Result<()> {
+    for p in pts {
+        bounded(
+            "polygon vertex x",
+            p.x,
+            Constraints::MAX_COORDINATE,
+            "rescale the polygon with the task",
+        )?;
+        bounded(
+            "polygon vertex y",
+            p.y,
+            Constraints::MAX_COORDINATE,
+            "rescale the polygon with the task",
+        )?;
+    }
+    check_polygon(name, pts, true)?;
+    Ok(())
 }
 
 /// Checks that a polygon has three vertices spanning an area and, when
@@ -233,14 +297,108 @@ fn self_intersects(pts: &[Point2<f64>]) -> bool {
 pub(crate) struct Prepared {
     plate: Option<Vec<PVector>>,
     pub(crate) obstacles: Vec<ConvexPolygon>,
+    /// The envelope's vertices and its boundary edges.
+    envelope: Option<(Vec<PVector>, Vec<Segment>)>,
     radius: f64,
     samples: usize,
 }
 
 impl Prepared {
-    /// Whether there is nothing to test: no base plate, no obstacles.
+    /// Whether there is nothing to test: no base plate, no obstacles, no
+    /// envelope.
     pub(crate) fn is_empty(&self) -> bool {
-        self.plate.is_none() && self.obstacles.is_empty()
+        self.plate.is_none() && self.obstacles.is_empty() && self.envelope.is_none()
+    }
+
+    /// Whether the motion must be checked (obstacles or an envelope).
+    pub(crate) fn checks_motion(&self) -> bool {
+        !self.obstacles.is_empty() || self.envelope.is_some()
+    }
+
+    /// Whether the linkage clears the obstacles and stays inside the
+    /// envelope over the whole travel (module docs).
+    pub(crate) fn motion_ok(&self, fb: &SynthesizedFourBar) -> bool {
+        self.clearance_ok(fb) && self.envelope_ok(fb)
+    }
+
+    /// Whether the envelope (if any) holds the point `p`.
+    pub(crate) fn in_envelope(&self, p: Point2<f64>) -> bool {
+        self.envelope
+            .as_ref()
+            .is_none_or(|(poly, _)| point_in_poly2d(PVector::new(p.x, p.y), poly))
+    }
+
+    /// Whether the moving parts stay inside the envelope over the whole
+    /// travel (module docs); true without an envelope.
+    pub(crate) fn envelope_ok(&self, fb: &SynthesizedFourBar) -> bool {
+        let Some((_, edges)) = &self.envelope else {
+            return true;
+        };
+        if !self.in_envelope(fb.driving.center) {
+            return false;
+        }
+        let (l2, l3) = (fb.fourbar.crank(), fb.figures.lengths[2]);
+        let d = fb.coupler_point.norm();
+        let Some(rate) = self.rate(fb, l2 * (1.0 + d / l3)) else {
+            return false;
+        };
+        let identity = parry2d_f64::math::Pose::identity();
+        let v = |p: Point2<f64>| PVector::new(p.x, p.y);
+        let radius = self.radius;
+        let clear_at = |mode: AssemblyMode, theta: f64, extra: f64| -> Option<bool> {
+            let j = fb.fourbar.joints_at(theta, mode).ok()?;
+            let c = fb.fourbar.solve(theta, mode).ok()?;
+            let p = fb.fourbar.coupler_point(&c, fb.coupler_point);
+            let links = [
+                (j.input_pivot, j.crank_joint),
+                (j.crank_joint, j.rocker_joint),
+                (j.crank_joint, p),
+                (j.rocker_joint, p),
+                (j.output_pivot, j.rocker_joint),
+            ];
+            for (a, b) in links {
+                let cap = Capsule::new(v(a), v(b), radius + extra);
+                for e in edges {
+                    let hit = intersection_test(&identity, &cap, &identity, e)
+                        .map_or(true, |r| r.intersecting);
+                    if hit {
+                        return Some(false);
+                    }
+                }
+            }
+            Some(true)
+        };
+        self.over_travel(fb, rate, &clear_at)
+    }
+
+    /// How fast (per radian of input) no point of the checked parts moves
+    /// faster than, from `speed`, the speed bound before the division by
+    /// the sine of the minimum transmission angle; `None` when that angle
+    /// is not positive (no bound).
+    fn rate(&self, fb: &SynthesizedFourBar, speed: f64) -> Option<f64> {
+        let sin_mu = fb.figures.min_transmission.sin();
+        (sin_mu > 0.0 && speed.is_finite()).then(|| speed / sin_mu)
+    }
+
+    /// Whether `clear_at(mode, theta, extra)` holds over the whole travel
+    /// (`rate`: the bound on how fast a checked point moves), checked at
+    /// the middles of `samples` intervals and refined by halves.
+    fn over_travel(
+        &self,
+        fb: &SynthesizedFourBar,
+        rate: f64,
+        clear_at: &dyn Fn(AssemblyMode, f64, f64) -> Option<bool>,
+    ) -> bool {
+        let (Some(Some(mode)), Some((start, span))) = (fb.modes().first().copied(), fb.travel())
+        else {
+            return false;
+        };
+        let n = self.samples;
+        let step = span / n as f64;
+        (0..n).all(|k| {
+            let mid = start + step * (k as f64 + 0.5);
+            interval_clear(clear_at, mode, mid, 0.5 * step.abs(), rate)
+        })
     }
 
     /// Whether the fixed pivot `p` is on the base plate.
@@ -286,49 +444,37 @@ impl Prepared {
         if self.obstacles.is_empty() {
             return true;
         }
-        let (Some(Some(mode)), Some((start, span))) = (fb.modes().first().copied(), fb.travel())
-        else {
-            return false;
-        };
-        let sin_mu = fb.figures.min_transmission.sin();
-        if sin_mu.is_nan() || sin_mu <= 0.0 {
-            return false;
-        }
         // Within `h` of a checked angle no point of a link moves farther
         // than `rate * h`.
-        let rate = fb.fourbar.crank() / sin_mu;
-        let n = self.samples;
-        let step = span / n as f64;
-        // n intervals of width |step|, each checked at its middle.
-        (0..n).all(|k| {
-            let mid = start + step * (k as f64 + 0.5);
-            self.interval_clear(fb, mode, mid, 0.5 * step.abs(), rate)
-        })
-    }
-
-    /// Whether the travel within `half` of `mid` is clear, refining by
-    /// halves where the inflated test cannot decide.
-    fn interval_clear(
-        &self,
-        fb: &SynthesizedFourBar,
-        mode: AssemblyMode,
-        mid: f64,
-        half: f64,
-        rate: f64,
-    ) -> bool {
-        match self.clear_at(fb, mode, mid, rate * half) {
-            Some(true) => return true,
-            None => return false,
-            Some(false) => {}
-        }
-        // A hit of the plain capsules is a collision.
-        if self.clear_at(fb, mode, mid, 0.0) != Some(true) || half < Constraints::MIN_STEP {
+        let Some(rate) = self.rate(fb, fb.fourbar.crank()) else {
             return false;
-        }
-        let q = 0.5 * half;
-        self.interval_clear(fb, mode, mid - q, q, rate)
-            && self.interval_clear(fb, mode, mid + q, q, rate)
+        };
+        let clear_at = |mode, theta, extra| self.clear_at(fb, mode, theta, extra);
+        self.over_travel(fb, rate, &clear_at)
     }
+}
+
+/// Whether the travel within `half` of `mid` is clear by `clear_at`,
+/// refining by halves where the inflated test cannot decide.
+fn interval_clear(
+    clear_at: &dyn Fn(AssemblyMode, f64, f64) -> Option<bool>,
+    mode: AssemblyMode,
+    mid: f64,
+    half: f64,
+    rate: f64,
+) -> bool {
+    match clear_at(mode, mid, rate * half) {
+        Some(true) => return true,
+        None => return false,
+        Some(false) => {}
+    }
+    // A hit of the plain capsules is a collision.
+    if clear_at(mode, mid, 0.0) != Some(true) || half < Constraints::MIN_STEP {
+        return false;
+    }
+    let q = 0.5 * half;
+    interval_clear(clear_at, mode, mid - q, q, rate)
+        && interval_clear(clear_at, mode, mid + q, q, rate)
 }
 
 #[cfg(test)]

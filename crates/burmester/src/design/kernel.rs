@@ -424,8 +424,67 @@ impl<'s> DrivingKernel<'s> {
             )
         };
         let driving = Dyad::new(a0, Point2::new(out.qx[i], out.qy[i]));
-        let acceptable = judge.acceptable(true, meets, &[a0], driving, self.driven);
+        let sized = || meets() && self.meets_size(&out.qx, &out.qy, i, a0);
+        let acceptable = judge.acceptable(true, sized, &[a0], driving, self.driven);
         Some(acceptable.then_some(worst))
+    }
+
+    /// The minimum transmission angle, the link ratio and the size ratio
+    /// of column `i` of `out` (candidate `a0`, worst `|cos mu|` `w`) as
+    /// the solution map's `f32` columns hold them.
+    #[inline]
+    pub(crate) fn ranked_at(
+        &self,
+        out: &RowOut,
+        i: usize,
+        a0: Point2<f64>,
+        w: f64,
+    ) -> (f32, f32, f32) {
+        let (_, members) = self.lengths_at(out, i, a0);
+        (
+            acos1(w) as f32,
+            out.ratio[i] as f32,
+            (members * self.inv_span) as f32,
+        )
+    }
+
+    /// The link lengths `[ground, crank, coupler, rocker]` and the members'
+    /// total length ([`members_length`](crate::synthesis::members_length))
+    /// of column `i` of `out` (candidate `a0`), as the scalar path
+    /// ([`Sampler::driving_sample`]) computes them.
+    #[inline]
+    pub(crate) fn lengths_at(&self, out: &RowOut, i: usize, a0: Point2<f64>) -> ([f64; 4], f64) {
+        self.lengths_of(&out.qx, &out.qy, i, a0)
+    }
+
+    /// [`lengths_at`](Self::lengths_at) from the circle points' columns.
+    #[inline]
+    fn lengths_of(&self, qx: &[f64], qy: &[f64], i: usize, a0: Point2<f64>) -> ([f64; 4], f64) {
+        let a1 = Point2::new(qx[i], qy[i]);
+        let c0 = self.driven.center;
+        let c1 = Point2::new(self.c1[0], self.c1[1]);
+        let lengths = [
+            (c0 - a0).norm(),
+            (a1 - a0).norm(),
+            (c1 - a1).norm(),
+            (c1 - c0).norm(),
+        ];
+        let point = Point2::new(self.point[0], self.point[1]);
+        let members = crate::synthesis::members_length(lengths, a1, self.driven.circle, point);
+        (lengths, members)
+    }
+
+    /// Whether column `i` (candidate `a0`, circle points `qx`, `qy`) is
+    /// within the limits' size bounds
+    /// ([`DesignLimits::meets_size`](crate::DesignLimits::meets_size)).
+    #[inline]
+    fn meets_size(&self, qx: &[f64], qy: &[f64], i: usize, a0: Point2<f64>) -> bool {
+        let limits = self.sampler.judge.limits();
+        if !limits.limits_size() {
+            return true;
+        }
+        let (lengths, members) = self.lengths_of(qx, qy, i, a0);
+        limits.meets_size(lengths, members * self.inv_span)
     }
 
     /// Writes the row at ordinate `y` (abscissae `xs`, branch flags
@@ -497,7 +556,8 @@ impl<'s> DrivingKernel<'s> {
             for (i, ((d, &c), &b)) in acceptable.enumerate() {
                 let a0 = Point2::new(xs[i], y);
                 let driving = Dyad::new(a0, Point2::new(out.qx[i], out.qy[i]));
-                *d = judge.acceptable(b, || c & MEETS != 0, &[a0], driving, self.driven);
+                let meets = || c & MEETS != 0 && self.meets_size(&out.qx, &out.qy, i, a0);
+                *d = judge.acceptable(b, meets, &[a0], driving, self.driven);
             }
         }
     }
@@ -956,11 +1016,18 @@ mod tests {
                 min_transmission: 0.0,
                 max_link_ratio: 4.0,
                 input: InputRequirement::Crank,
+                ..DesignLimits::default()
             },
             DesignLimits {
                 min_transmission: 50f64.to_radians(),
                 max_link_ratio: 1e300,
                 input: InputRequirement::Rocker,
+                ..DesignLimits::default()
+            },
+            DesignLimits {
+                max_size_ratio: 12.0,
+                max_link_length: 6.0,
+                ..DesignLimits::default()
             },
         ]
         .iter()

@@ -324,13 +324,28 @@ impl<'a> Judge<'a> {
         constraints: &Constraints,
     ) -> Result<Self> {
         limits.validate()?;
+        let prepared = constraints.prepare()?;
+        if let Some(env) = &constraints.envelope {
+            if !task
+                .poses()
+                .iter()
+                .all(|p| prepared.in_envelope(p.position))
+            {
+                return Err(InvalidInput::Polygon {
+                    name: "envelope".to_owned(),
+                    vertices: env.len(),
+                    problem: crate::error::PolygonProblem::ExcludesPoses,
+                }
+                .into());
+            }
+        }
         Ok(Judge {
             task,
             tiny: tolerance::POINT * task.scale(),
             point: task.poses()[0].position,
             inv_span: 1.0 / task.span(),
             limits,
-            prepared: constraints.prepare()?,
+            prepared,
         })
     }
 
@@ -369,11 +384,11 @@ impl<'a> Judge<'a> {
         branch_free
             && meets()
             && candidates.iter().all(|&c| self.prepared.pivot_ok(c))
-            && (self.prepared.obstacles.is_empty()
+            && (!self.prepared.checks_motion()
                 || self
                     .task
                     .four_bar(&driving, &driven)
-                    .is_ok_and(|fb| self.prepared.clearance_ok(&fb)))
+                    .is_ok_and(|fb| self.prepared.motion_ok(&fb)))
     }
 
     /// `1 / Task::span`: the size ratio per length.
@@ -382,9 +397,9 @@ impl<'a> Judge<'a> {
     }
 
     /// Whether `acceptable` is branch-free and the limits alone (no base
-    /// plate, no obstacles).
+    /// plate, no obstacles, no envelope, no size limits).
     pub(crate) fn unconstrained(&self) -> bool {
-        self.prepared.is_empty()
+        self.prepared.is_empty() && !self.limits.limits_size()
     }
 
     /// The limits behind `acceptable`.
@@ -406,7 +421,7 @@ impl<'a> Judge<'a> {
     ) -> Sample {
         let acceptable = self.acceptable(
             branch_free,
-            || self.limits.meets(&f),
+            || self.limits.meets(&f) && self.limits.meets_size(f.lengths, members * self.inv_span),
             candidates,
             driving,
             driven,

@@ -24,6 +24,12 @@
 //! columns over pairs of dyads along the center-point curve: every linkage
 //! of the task on one picture ([`pairs`]).
 //!
+//! [`Task::design`](crate::Task::design) puts it together: from the poses,
+//! the [`Space`] in the machine and the [`DesignLimits`] to the best
+//! linkages, searched over both fixed pivots (three poses), both curve
+//! parameters (four) or every pair of Burmester points (five), refined
+//! continuously on the exact figures ([`search`]).
+//!
 //! The three-pose driving map and the [`atlas`] compute their samples on
 //! SIMD lanes (AVX2 where the CPU has it, chosen at run time by `pulp`),
 //! bit for bit what the per-sample scalar code gives.
@@ -39,6 +45,8 @@ mod limits;
 mod map;
 pub mod pairs;
 mod rank;
+pub mod search;
+mod space;
 
 pub use atlas::{AtlasBest, AtlasCell, PivotAtlas};
 pub use constraints::Constraints;
@@ -46,3 +54,5 @@ pub use limits::{DesignLimits, InputRequirement};
 pub use map::{Columns, ColumnsOut, MapContext, SolutionMap, Varying};
 pub use pairs::{Pair, PairContext, PairMap};
 pub use rank::{Pivot, RankBy, RankColumns};
+pub use search::{Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, SearchPoint};
+pub use space::{PivotRegion, Space};
