@@ -88,6 +88,12 @@ impl<'a> Control<'a> {
         self.cancel.is_some_and(|c| c.load(Ordering::Relaxed))
     }
 
+    /// The cancel flag, if any (a computation made of parts passes it on to
+    /// each part's own control).
+    pub(crate) fn cancel_flag(&self) -> Option<&'a AtomicBool> {
+        self.cancel
+    }
+
     pub(crate) fn report(&self, done: usize, total: usize) {
         if let Some(p) = self.progress {
             p(done, total);
