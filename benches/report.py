@@ -559,6 +559,41 @@ SECTIONS.append(
 )
 
 
+SECTIONS.append(
+    Section(
+        title="A motor for a swinging input: the drive map (`drive_map`)",
+        benches=["drive_map"],
+        prefixes=["drive_map/"],
+        ratios=[
+            Ratio(
+                "drive map / solution map per sample, 1024^2 each, into given columns, same run",
+                "drive_map/drive_map_into/1024",
+                "drive_map/solution_map_into/1024",
+                "<= 2 (issue 23)",
+                lambda r: r <= 2.0,
+            ),
+            Ratio(
+                "drive map / solution map per sample, 256^2 each, into given columns, same run",
+                "drive_map/drive_map_into/256",
+                "drive_map/solution_map_into/256",
+                "<= 2 (issue 23)",
+                lambda r: r <= 2.0,
+            ),
+        ],
+        note=(
+            "`DriveContext::map` for the built-in example's best linkage by transmission (a "
+            "triple-rocker, its input swinging), the attachment at its input joint, candidate "
+            "crank pivots over a square of half-width 4 |A - A0| about A0, default limits, no "
+            "constraints; against the example's solution map (`Filemon::solution_map_into`) "
+            "over its view on a grid of the same size, in the same run. Each drive sample is "
+            "exact and closed form: the crank-rocker with the swing asked for, the drive "
+            "loop's minimum transmission over a full crank turn, the time ratio, the six-bar's "
+            "link and size ratios (scalar code, three square roots, one `acos` and one "
+            "`atan2`). `drive_map` allocates its columns; the `_into` figures reuse them."
+        ),
+    )
+)
+
 @dataclass
 class Figure:
     id: str

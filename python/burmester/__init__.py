@@ -19,6 +19,9 @@ from burmester._burmester import (
     CurveDyad,
     DegenerateError,
     DesignLimits,
+    Drive,
+    DriveError,
+    DriveMap,
     Filemon,
     FourBar,
     Grid,
@@ -28,11 +31,13 @@ from burmester._burmester import (
     PairMap,
     Pivot,
     Pole,
+    SixBar,
     SolutionMap,
     SynthesizedFourBar,
     Task,
     __version__,
     clip_line,
+    unit_time_ratio_crank_rocker,
 )
 from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
 from burmester.batch import best_pivots_batch
@@ -49,6 +54,9 @@ __all__ = [
     "CurveDyad",
     "DegenerateError",
     "DesignLimits",
+    "Drive",
+    "DriveError",
+    "DriveMap",
     "Filemon",
     "FourBar",
     "Grid",
@@ -58,6 +66,7 @@ __all__ = [
     "PairMap",
     "Pivot",
     "Pole",
+    "SixBar",
     "SolutionMap",
     "SynthesizedFourBar",
     "Task",
@@ -65,4 +74,5 @@ __all__ = [
     "best_pivots_batch",
     "clip_line",
     "pivot_atlas",
+    "unit_time_ratio_crank_rocker",
 ]

@@ -14,6 +14,8 @@ figures stay as they were) and returned as PNG bytes:
 ``SynthesizedFourBar`` :func:`burmester.plot.linkage`: the linkage at the poses
 ``SolutionMap``       :func:`burmester.plot.solution_map`
 ``PivotAtlas``        :func:`burmester.plot.atlas`
+``Drive``, ``SixBar`` :func:`burmester.plot.sixbar`
+``DriveMap``          :func:`burmester.plot.drive_map`
 ===================== =============================================
 
 matplotlib is imported when a picture is asked for, not before: ``import
@@ -54,6 +56,10 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
         return lambda ax: plot.solution_map(obj, ax=ax)
     if isinstance(obj, burmester.PivotAtlas):
         return lambda ax: plot.atlas(obj, ax=ax)
+    if isinstance(obj, (burmester.Drive, burmester.SixBar)):
+        return lambda ax: plot.sixbar(obj, ax=ax)
+    if isinstance(obj, burmester.DriveMap):
+        return lambda ax: plot.drive_map(obj, ax=ax)
     raise TypeError(f"no picture for a {type(obj).__name__}")
 
 

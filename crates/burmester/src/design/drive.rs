@@ -555,7 +555,7 @@ impl CrankRockerDesign {
 impl DriveContext {
     /// The largest number of samples of one side of an attachment search's
     /// drive map.
-    pub const MAX_SEARCH_SAMPLES: usize = 4096;
+    pub const MAX_SEARCH_SAMPLES: usize = 1024;
 
     /// The context of a drive map for `linkage` with the attachment `E` at
     /// `attachment` (where it is at pose 1, rigid with the input link), the
@@ -723,18 +723,24 @@ impl DriveContext {
     /// on the line through `E`'s two end positions, beyond the end of the
     /// first pose (`beyond_first`) or of the last, at the distance that
     /// gives the drive loop the minimum transmission angle
-    /// `drive_transmission` (radians) over a full turn. The map's sample
-    /// function evaluates it, so its figures are those of the map there.
+    /// `drive_transmission` (radians) over a full turn; `None`: halfway
+    /// between the limits' transmission angle and the best a time-ratio-1
+    /// drive reaches, `pi/2 - swing/2` (the smaller the angle, the smaller
+    /// the drive). The map's sample function evaluates it, so its figures
+    /// are those of the map there.
     ///
     /// # Errors
     ///
     /// [`InvalidInput::OutsideRange`] for a transmission angle outside
-    /// `(0, pi/2 - swing/2)`; as [`drive`](Self::drive).
-    pub fn classic(&self, beyond_first: bool, drive_transmission: f64) -> Result<Drive> {
+    /// `(0, pi/2 - swing/2)` (with `None`: a limit at or beyond it); as
+    /// [`drive`](Self::drive).
+    pub fn classic(&self, beyond_first: bool, drive_transmission: Option<f64>) -> Result<Drive> {
         let [pa, pb] = self.swing.arm;
         let rho = self.swing.rho;
         let swing = cross(pa, pb).abs().atan2(pa.dot(&pb));
-        let design = CrankRockerDesign::unit_time_ratio(rho, swing, drive_transmission)?;
+        let mu = drive_transmission
+            .unwrap_or(0.5 * (self.limits.min_transmission + FRAC_PI_2 - 0.5 * swing));
+        let design = CrankRockerDesign::unit_time_ratio(rho, swing, mu)?;
         let mid = self.swing.a0 + 0.5 * (pa + pb);
         let chord = pb - pa;
         let u = chord / chord.norm();
@@ -925,9 +931,18 @@ impl DriveJudge<'_> {
         };
         let s = direction.sign();
         let stops = c.linkage.travel_stops().ok_or(DriveError::NoTravel)?;
-        let slack = 1e-9;
+        // Near a limit position the crank angle of an input angle is ill
+        // conditioned (the input is stationary there): a few 1e-7 rad from
+        // a rounding of 1e-13; the pose itself is reached to second order.
+        let slack = 1e-6;
+        let last = stops.len() - 1;
         let mut angles = [0.0; crate::geom::MAX_POSES];
         for (k, &theta) in stops.iter().enumerate() {
+            if c.options.swing_margin == 0.0 && (k == 0 || k == last) {
+                // The stroke ends at the first and the last pose exactly.
+                angles[k] = start.crank_angle + if k == 0 { 0.0 } else { s * stroke };
+                continue;
+            }
             let best = six
                 .crank_angles_for_input(theta)
                 .into_iter()

@@ -661,7 +661,9 @@ impl SixBar {
             return Vec::new();
         }
         let x = (r * r + s * s - c * c) / (2.0 * r * s);
-        let slack = tolerance::ROUNDING_EPS * f64::EPSILON * 4.0;
+        // The rounding of `x` grows with `(r^2 + s^2 + c^2) / (r s)`: at a
+        // limit position of a drive with a long coupler it is many eps.
+        let slack = 2.0 * tolerance::ROUNDING_EPS * f64::EPSILON * (r * r + s * s + c * c) / (r * s);
         if !(x.abs() <= 1.0 + slack) {
             return Vec::new();
         }
