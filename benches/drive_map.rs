@@ -41,15 +41,8 @@ fn drive_map(c: &mut Criterion) {
     for n in [256usize, 1024] {
         g.throughput(Throughput::Elements((n * n) as u64));
         let grid = Grid::from_bounds(a0.x - h, a0.x + h, a0.y - h, a0.y + h, n, n).expect("grid");
-        let ctx = DriveContext::new(
-            &linkage,
-            e,
-            &grid,
-            &limits,
-            &DriveOptions::default(),
-            &none,
-        )
-        .expect("a drive context");
+        let ctx = DriveContext::new(&linkage, e, &grid, &limits, &DriveOptions::default(), &none)
+            .expect("a drive context");
         g.bench_with_input(BenchmarkId::new("drive_map", n), &n, |b, _| {
             b.iter(|| black_box(&ctx).map(&control).expect("the drive map"))
         });

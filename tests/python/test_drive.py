@@ -142,18 +142,28 @@ def test_bad_input_is_typed(rocker, dmap):
         burmester.SixBar((0, 0), (1, 0), (1, 1), (0, 0), (1, 1), (2, 1), (3, 0))
 
 
-def test_sixbar_from_joints():
-    six = burmester.SixBar(d0=(-1.0, 3.0), d=(-0.6, 3.0), e=(1.53, 1.29), a0=(0.0, 0.0), a=(1.53, 1.29),
-                           c=(2.6, 0.9), c0=(3.0, 0.0), p=(2.0, 1.5))
+def test_sixbar_from_joints(dmap):
+    d = dmap.best_drives(1)[0]
+    phi = d.pose_crank_angles[1] + 0.3
+    joints = d.sixbar.joints(phi)
+    six = burmester.SixBar(**dict(zip(("d0", "d", "e", "a0", "a", "c", "c0", "p"), joints)))
     assert six.crank_turns_fully and six.drive_grashof == "crank-rocker"
-    assert six.dead_positions == [] and six.time_ratio >= 1.0
-    j = six.joints(0.0)
-    for got, want in zip(j, [(-1.0, 3.0), (-0.6, 3.0), (1.53, 1.29), (0.0, 0.0), (1.53, 1.29), (2.6, 0.9),
-                             (3.0, 0.0), (2.0, 1.5)]):
-        assert math.dist(got, want) < 1e-12
+    assert six.dead_positions == [] and abs(six.time_ratio - d.time_ratio) < 1e-9
+    for t in np.linspace(0, 2 * math.pi, 13):
+        assert math.dist(six.pose_at(t)[:2], d.sixbar.pose_at(t)[:2]) < 1e-9 * d.task.span
+    for got, want in zip(six.joints(phi), joints):
+        assert math.dist(got, want) < 1e-9 * d.task.span
     xs, ys, ok = six.coupler_path(np.linspace(0, 2 * math.pi, 50))
     assert ok.all() and xs.shape == (50,)
     assert pickle.loads(pickle.dumps(six)) == six
+    # Joints of a six-bar whose drive swings the input past its dead positions.
+    odd = burmester.SixBar(d0=(-1.0, 3.0), d=(-0.6, 3.0), e=(1.53, 1.29), a0=(0.0, 0.0), a=(1.53, 1.29),
+                           c=(2.6, 0.9), c0=(3.0, 0.0), p=(2.0, 1.5))
+    assert not odd.crank_turns_fully and odd.min_transmission_deg is None
+    assert odd.dead_positions
+    with pytest.raises(burmester.AssemblyError):
+        for t in np.linspace(0, 2 * math.pi, 721):
+            odd.solve(t)
     with pytest.raises(burmester.DegenerateError):
         burmester.SixBar(d0=(0, 0), d=(0, 0), e=(1, 1), a0=(0, 1), a=(1, 1), c=(2, 1), c0=(3, 0))
 
@@ -183,8 +193,8 @@ CHILD = textwrap.dedent(
     print("started", flush=True)
     t0 = time.monotonic()
     try:
-        sfb.drive_map(a0[0] - 9, a0[0] + 9, a0[1] - 9, a0[1] + 9, 800, 800, min_transmission_deg=0,
-                      max_link_ratio=math.inf, obstacles=[wall], link_width=0.05, travel_samples=512)
+        sfb.drive_map(a0[0] - 9, a0[0] + 9, a0[1] - 9, a0[1] + 9, 1500, 1500, min_transmission_deg=0,
+                      max_link_ratio=math.inf, obstacles=[wall], link_width=0.05, travel_samples=128)
     except KeyboardInterrupt as e:
         print(json.dumps({{"message": str(e), "ran": time.monotonic() - t0}}), flush=True)
         raise

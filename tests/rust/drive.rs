@@ -130,12 +130,20 @@ impl Own {
     fn solve(&self, phi: f64, prev: &State) -> Option<State> {
         let dpt = self.d0 + unit(phi) * self.r;
         let ([e1, e2], g1) = circles(dpt, self.c, self.a0, self.rho)?;
-        let e = if (e1 - prev.e).norm() <= (e2 - prev.e).norm() { e1 } else { e2 };
+        let e = if (e1 - prev.e).norm() <= (e2 - prev.e).norm() {
+            e1
+        } else {
+            e2
+        };
         let v = e - self.a0;
         let theta2 = v.y.atan2(v.x) - self.delta;
         let a = self.a0 + unit(theta2) * self.l2;
         let ([c1, c2], g2) = circles(a, self.l3, self.c0, self.l4)?;
-        let c = if (c1 - prev.c).norm() <= (c2 - prev.c).norm() { c1 } else { c2 };
+        let c = if (c1 - prev.c).norm() <= (c2 - prev.c).norm() {
+            c1
+        } else {
+            c2
+        };
         Some(State {
             e,
             a,
@@ -248,7 +256,9 @@ fn check_drive(task: &Task, d: &Drive, steps: usize) -> Checked {
     let mut thetas = Vec::with_capacity(at.len());
     let scale = own.r.max(own.rho).max(own.l2).max(own.l4);
     for &(phi, pose) in &at {
-        let s = own.solve(phi, &prev).expect("the loops close over the whole turn");
+        let s = own
+            .solve(phi, &prev)
+            .expect("the loops close over the whole turn");
         // Continuous: no joint jumps more than a step's worth.
         let jump = (s.e - prev.e).norm().max((s.c - prev.c).norm());
         assert!(
@@ -289,12 +299,17 @@ fn check_drive(task: &Task, d: &Drive, steps: usize) -> Checked {
         .collect();
     let sgn = (d.linkage.travel().unwrap().1).signum();
     for w in travel.windows(2) {
-        assert!(wrap(w[1] - w[0]) * sgn >= -1e-12, "the input turns back between the poses");
+        assert!(
+            wrap(w[1] - w[0]) * sgn >= -1e-12,
+            "the input turns back between the poses"
+        );
     }
     // Refine each minimum by golden sections about its best step.
     let h = 2.0 * TAU / steps as f64;
     let near = |phi0: f64, pick: fn(&State) -> f64| {
-        let seed = own.solve(phi0, &prev_at(&own, &at, phi0, &first, dir, phis[0])).unwrap();
+        let seed = own
+            .solve(phi0, &prev_at(&own, &at, phi0, &first, dir, phis[0]))
+            .unwrap();
         golden(phi0 - h, phi0 + h, |phi| {
             own.solve(phi, &seed).map_or(f64::INFINITY, |s| pick(&s))
         })
@@ -308,7 +323,14 @@ fn check_drive(task: &Task, d: &Drive, steps: usize) -> Checked {
 }
 
 /// A state near crank angle `phi` on the tracked path (re-tracks from pose 1).
-fn prev_at(own: &Own, at: &[(f64, Option<usize>)], phi: f64, first: &State, dir: f64, phi0: f64) -> State {
+fn prev_at(
+    own: &Own,
+    at: &[(f64, Option<usize>)],
+    phi: f64,
+    first: &State,
+    dir: f64,
+    phi0: f64,
+) -> State {
     let mut prev = *first;
     for &(p, _) in at {
         if (p - phi0) * dir > (phi - phi0) * dir {
@@ -347,14 +369,22 @@ fn swinging_task(runner: &mut TestRunner, n: usize) -> (Task, SynthesizedFourBar
             continue;
         }
         let t0 = arc.start + from * (arc.span() - travel);
-        let mode = if crossed { AssemblyMode::Crossed } else { AssemblyMode::Open };
+        let mode = if crossed {
+            AssemblyMode::Crossed
+        } else {
+            AssemblyMode::Open
+        };
         let mut poses = Vec::new();
         let mut ok = true;
         let mut thetas = Vec::new();
         for k in 0..n {
             // Uneven spacing, in order.
             let f = (k as f64 / (n - 1) as f64).powf(1.3);
-            let t = if cw { t0 + travel * (1.0 - f) } else { t0 + travel * f };
+            let t = if cw {
+                t0 + travel * (1.0 - f)
+            } else {
+                t0 + travel * f
+            };
             thetas.push(t);
             let Ok(c) = fb.solve(t, mode) else {
                 ok = false;
@@ -371,7 +401,9 @@ fn swinging_task(runner: &mut TestRunner, n: usize) -> (Task, SynthesizedFourBar
         if !ok {
             continue;
         }
-        let Ok(task) = Task::from_xya(&poses) else { continue };
+        let Ok(task) = Task::from_xya(&poses) else {
+            continue;
+        };
         if task.span() < 0.2 {
             continue;
         }
@@ -399,7 +431,11 @@ fn anything() -> DesignLimits {
 
 /// The drive map of a random attachment of `sfb`, on a 48 x 48 grid about
 /// `A0`.
-fn random_context(runner: &mut TestRunner, sfb: &SynthesizedFourBar, margin: f64) -> Option<DriveContext> {
+fn random_context(
+    runner: &mut TestRunner,
+    sfb: &SynthesizedFourBar,
+    margin: f64,
+) -> Option<DriveContext> {
     let (ratio, angle) = (0.3f64..2.5, -PI..PI).new_tree(runner).unwrap().current();
     let a0 = sfb.driving.center;
     let e = a0 + rotate(sfb.driving.circle - a0, angle) * ratio;
@@ -574,9 +610,16 @@ fn closed_form_crank_rocker_is_the_textbook_one() {
             }
             mu = mu.min(c.transmission_angle());
         }
-        assert!((hi.0 - lo.0 - swing).abs() < 1e-9, "{gamma_deg}: swing {}", hi.0 - lo.0);
+        assert!(
+            (hi.0 - lo.0 - swing).abs() < 1e-9,
+            "{gamma_deg}: swing {}",
+            hi.0 - lo.0
+        );
         let stroke = (hi.1 - lo.1).rem_euclid(TAU);
-        assert!((stroke - PI).abs() < 2.0 * TAU / steps as f64, "{gamma_deg}: stroke {stroke}");
+        assert!(
+            (stroke - PI).abs() < 2.0 * TAU / steps as f64,
+            "{gamma_deg}: stroke {stroke}"
+        );
         assert!((mu - gamma).abs() < 1e-9, "{gamma_deg}: mu {mu}");
     }
 }
@@ -589,18 +632,25 @@ fn the_classic_drive_is_confirmed_by_the_map() {
     let mut done = 0;
     for case in 0..12 {
         let (task, sfb) = swinging_task(&mut runner, 3 + case % 3);
-        let Some(ctx) = random_context(&mut runner, &sfb, 0.02) else { continue };
+        let Some(ctx) = random_context(&mut runner, &sfb, 0.02) else {
+            continue;
+        };
         let [sa, sb] = ctx.swing();
         let best = PI / 2.0 - 0.5 * (sb - sa).abs();
         for beyond_first in [true, false] {
             let mu = 0.6 * best;
             let d = ctx.classic(beyond_first, Some(mu)).unwrap();
-            assert!((d.figures.time_ratio - 1.0).abs() < 1e-9, "{}", d.figures.time_ratio);
+            assert!(
+                (d.figures.time_ratio - 1.0).abs() < 1e-9,
+                "{}",
+                d.figures.time_ratio
+            );
             assert!((d.figures.drive_transmission - mu).abs() < 1e-9);
             assert!((d.figures.stroke - PI).abs() < 1e-9);
             // The map at that very point (a one-sample grid about it).
             let p = d.drive_pivot;
-            let g = Grid::from_bounds(p.x - 1e-3, p.x + 1e-3, p.y - 1e-3, p.y + 1e-3, 1, 1).unwrap();
+            let g =
+                Grid::from_bounds(p.x - 1e-3, p.x + 1e-3, p.y - 1e-3, p.y + 1e-3, 1, 1).unwrap();
             let m = ctx.with_grid(&g).map(&Control::new()).unwrap();
             assert!(m.columns.valid[0]);
             assert!((f64::from(m.columns.time_ratio[0]) - 1.0).abs() < 1e-6);
@@ -679,9 +729,18 @@ fn no_drive_says_why() {
     assert!(e.to_string().contains("swing_margin_deg"), "{e}");
     // Bad options.
     for o in [
-        DriveOptions { swing_margin: -0.1, ..DriveOptions::default() },
-        DriveOptions { swing_margin: f64::NAN, ..DriveOptions::default() },
-        DriveOptions { max_time_ratio: 0.5, ..DriveOptions::default() },
+        DriveOptions {
+            swing_margin: -0.1,
+            ..DriveOptions::default()
+        },
+        DriveOptions {
+            swing_margin: f64::NAN,
+            ..DriveOptions::default()
+        },
+        DriveOptions {
+            max_time_ratio: 0.5,
+            ..DriveOptions::default()
+        },
     ] {
         let e = DriveContext::new(&sfb, sfb.driving.circle, &grid, &limits, &o, &none).unwrap_err();
         assert!(matches!(e, Error::InvalidInput(_)), "{e}");
@@ -696,8 +755,15 @@ fn no_drive_says_why() {
         .filter_map(|p| f.four_bar(p).ok())
         .find(|l| !l.is_branch_free())
         .unwrap();
-    let e = DriveContext::new(&bad, bad.driving.circle, &grid, &limits, &DriveOptions::default(), &none)
-        .unwrap_err();
+    let e = DriveContext::new(
+        &bad,
+        bad.driving.circle,
+        &grid,
+        &limits,
+        &DriveOptions::default(),
+        &none,
+    )
+    .unwrap_err();
     assert_eq!(e, Error::Drive(DriveError::NoTravel));
     // A crank that turns more than half a turn between the poses.
     let crank = FourBar::new(4.0, 1.0, 3.0, 3.0).unwrap();
@@ -717,9 +783,19 @@ fn no_drive_says_why() {
         )
         .unwrap();
     assert!(l.figures.feasible() && l.figures.input_full);
-    let e = DriveContext::new(&l, l.driving.circle, &grid, &limits, &DriveOptions::default(), &none)
-        .unwrap_err();
-    assert!(matches!(e, Error::Drive(DriveError::TravelTooLarge { .. })), "{e}");
+    let e = DriveContext::new(
+        &l,
+        l.driving.circle,
+        &grid,
+        &limits,
+        &DriveOptions::default(),
+        &none,
+    )
+    .unwrap_err();
+    assert!(
+        matches!(e, Error::Drive(DriveError::TravelTooLarge { .. })),
+        "{e}"
+    );
     // Nothing acceptable: the error carries what was found.
     let strict = DesignLimits {
         min_transmission: 89f64.to_radians(),
@@ -769,15 +845,27 @@ fn constraints_hold_over_the_whole_turn() {
     // is farthest from the linkage: drives near it collide (their crank
     // sweeps it), the others may not.
     let far = |q: P| {
-        [sfb.driving.center, sfb.driving.circle, sfb.driven.center, sfb.driven.circle]
-            .iter()
-            .map(|p| (p - q).norm())
-            .fold(f64::INFINITY, f64::min)
+        [
+            sfb.driving.center,
+            sfb.driving.circle,
+            sfb.driven.center,
+            sfb.driven.circle,
+        ]
+        .iter()
+        .map(|p| (p - q).norm())
+        .fold(f64::INFINITY, f64::min)
     };
-    let probe = DriveContext::new(&sfb, e, &grid, &anything(), &DriveOptions::default(), &Constraints::none())
-        .unwrap()
-        .map(&Control::new())
-        .unwrap();
+    let probe = DriveContext::new(
+        &sfb,
+        e,
+        &grid,
+        &anything(),
+        &DriveOptions::default(),
+        &Constraints::none(),
+    )
+    .unwrap()
+    .map(&Control::new())
+    .unwrap();
     let o = (0..grid.len())
         .filter(|&k| probe.columns.valid[k])
         .map(|k| grid_point(&grid, k))
@@ -797,10 +885,24 @@ fn constraints_hold_over_the_whole_turn() {
         link_width: 0.0,
         travel_samples: 64,
     };
-    let ctx = DriveContext::new(&sfb, e, &grid, &anything(), &DriveOptions::default(), &constraints)
-        .unwrap();
-    let free = DriveContext::new(&sfb, e, &grid, &anything(), &DriveOptions::default(), &Constraints::none())
-        .unwrap();
+    let ctx = DriveContext::new(
+        &sfb,
+        e,
+        &grid,
+        &anything(),
+        &DriveOptions::default(),
+        &constraints,
+    )
+    .unwrap();
+    let free = DriveContext::new(
+        &sfb,
+        e,
+        &grid,
+        &anything(),
+        &DriveOptions::default(),
+        &Constraints::none(),
+    )
+    .unwrap();
     let map = ctx.map(&Control::new()).unwrap();
     let base = free.map(&Control::new()).unwrap();
     // Whether the segment a-b meets the open square (Liang-Barsky clipping).
@@ -829,7 +931,9 @@ fn constraints_hold_over_the_whole_turn() {
         t0 < t1
     };
     let (mut hit, mut clear) = (0, 0);
-    let candidates: Vec<usize> = (0..grid.len()).filter(|&k| base.columns.acceptable[k]).collect();
+    let candidates: Vec<usize> = (0..grid.len())
+        .filter(|&k| base.columns.acceptable[k])
+        .collect();
     for k in 0..grid.len() {
         if !base.columns.acceptable[k] {
             assert!(!map.columns.acceptable[k]);
@@ -838,7 +942,9 @@ fn constraints_hold_over_the_whole_turn() {
     // The 60 nearest the obstacle and 60 spread over the rest.
     let mut by_distance = candidates.clone();
     by_distance.sort_by(|&p, &q| {
-        (grid_point(&grid, p) - o).norm().total_cmp(&(grid_point(&grid, q) - o).norm())
+        (grid_point(&grid, p) - o)
+            .norm()
+            .total_cmp(&(grid_point(&grid, q) - o).norm())
     });
     let (near, rest) = by_distance.split_at(by_distance.len().min(60));
     let checked: Vec<usize> = near
@@ -868,7 +974,10 @@ fn constraints_hold_over_the_whole_turn() {
             .any(|&(a, b)| seg_hits(a, b))
         });
         if collides {
-            assert!(!map.columns.acceptable[k], "a collision was accepted at {k}");
+            assert!(
+                !map.columns.acceptable[k],
+                "a collision was accepted at {k}"
+            );
             hit += 1;
         } else if map.columns.acceptable[k] {
             clear += 1;
@@ -927,7 +1036,10 @@ fn attachment_search_ranks_and_stops() {
         &Control::new().with_cancel(&stop).with_progress(&hook),
     )
     .unwrap_err();
-    assert!(matches!(e, Error::Cancelled { done, total } if done < total), "{e}");
+    assert!(
+        matches!(e, Error::Cancelled { done, total } if done < total),
+        "{e}"
+    );
     // Rankings without a score are refused.
     let e = search_drives(
         &sfb,
@@ -957,7 +1069,8 @@ fn documented_maxima_and_cancelling() {
     let (_, sfb) = swinging_task(&mut runner, 3);
     let side = (Grid::MAX_POINTS as f64).sqrt() as usize;
     let a0 = sfb.driving.center;
-    let big = Grid::from_bounds(a0.x - 4.0, a0.x + 4.0, a0.y - 4.0, a0.y + 4.0, side, side).unwrap();
+    let big =
+        Grid::from_bounds(a0.x - 4.0, a0.x + 4.0, a0.y - 4.0, a0.y + 4.0, side, side).unwrap();
     let ctx = DriveContext::new(
         &sfb,
         sfb.driving.circle,
@@ -970,7 +1083,10 @@ fn documented_maxima_and_cancelling() {
     let stop = AtomicBool::new(true);
     let r = ctx.map(&Control::new().with_cancel(&stop));
     assert!(
-        matches!(r, Err(Error::Cancelled { done: 0, .. }) | Err(Error::OutOfMemory { .. })),
+        matches!(
+            r,
+            Err(Error::Cancelled { done: 0, .. }) | Err(Error::OutOfMemory { .. })
+        ),
         "{:?}",
         r.err()
     );
@@ -982,7 +1098,10 @@ fn documented_maxima_and_cancelling() {
         .with_grid(&g)
         .map(&Control::new().with_cancel(&stop).with_progress(&hook))
         .unwrap_err();
-    assert!(matches!(e, Error::Cancelled { done, total: 512 } if done < 512), "{e}");
+    assert!(
+        matches!(e, Error::Cancelled { done, total: 512 } if done < 512),
+        "{e}"
+    );
     // The most samples of a search side, on one attachment.
     let search = AttachmentSearch {
         ratios: vec![1.0],
@@ -1049,10 +1168,30 @@ fn figures_are_invariant_under_similarities() {
         )
         .unwrap();
     let a0 = sfb.driving.center;
-    for d0 in [a0 + Vector2::new(1.3, 2.9), a0 + Vector2::new(-2.2, 0.7), a0 + Vector2::new(0.4, -3.1)] {
+    for d0 in [
+        a0 + Vector2::new(1.3, 2.9),
+        a0 + Vector2::new(-2.2, 0.7),
+        a0 + Vector2::new(0.4, -3.1),
+    ] {
         let g = Grid::from_bounds(-1.0, 1.0, -1.0, 1.0, 1, 1).unwrap();
-        let c1 = DriveContext::new(&sfb, e, &g, &anything(), &DriveOptions::default(), &Constraints::none()).unwrap();
-        let c2 = DriveContext::new(&s2, tf(e), &g, &anything(), &DriveOptions::default(), &Constraints::none()).unwrap();
+        let c1 = DriveContext::new(
+            &sfb,
+            e,
+            &g,
+            &anything(),
+            &DriveOptions::default(),
+            &Constraints::none(),
+        )
+        .unwrap();
+        let c2 = DriveContext::new(
+            &s2,
+            tf(e),
+            &g,
+            &anything(),
+            &DriveOptions::default(),
+            &Constraints::none(),
+        )
+        .unwrap();
         match (c1.drive(d0), c2.drive(tf(d0))) {
             (Ok(x), Ok(y)) => {
                 let (f, h) = (x.figures, y.figures);
@@ -1092,23 +1231,48 @@ fn sixbar_from_joints_and_bad_input() {
     }
     let mut bad = j;
     bad.crank_joint = bad.drive_pivot;
-    assert_eq!(SixBar::from_joints(&bad).unwrap_err().cause(), "zero_length_link");
+    assert_eq!(
+        SixBar::from_joints(&bad).unwrap_err().cause(),
+        "zero_length_link"
+    );
     let mut bad = j;
     bad.coupler_point.x = f64::INFINITY;
-    assert!(matches!(SixBar::from_joints(&bad), Err(Error::InvalidInput(_))));
+    assert!(matches!(
+        SixBar::from_joints(&bad),
+        Err(Error::InvalidInput(_))
+    ));
     // A drive loop at a toggle: E on the line A0 D... coupler and rocker collinear.
     let mut bad = j;
     let d = bad.crank_joint;
     bad.attachment = Point2::from(d.coords * (2.0 / d.coords.norm()));
     bad.input_joint = bad.attachment;
-    assert_eq!(SixBar::from_joints(&bad).unwrap_err().cause(), "toggle_joints");
+    assert_eq!(
+        SixBar::from_joints(&bad).unwrap_err().cause(),
+        "toggle_joints"
+    );
     // A drive whose output pivot is not A0.
-    let drive = FourBar::from_pivots(Point2::new(-1.0, 3.0), Point2::new(0.5, 0.0), 0.4, 3.0, 2.0).unwrap();
-    let e = SixBar::new(drive, *six.motion(), 0.0, AssemblyMode::Open, AssemblyMode::Open).unwrap_err();
+    let drive =
+        FourBar::from_pivots(Point2::new(-1.0, 3.0), Point2::new(0.5, 0.0), 0.4, 3.0, 2.0).unwrap();
+    let e = SixBar::new(
+        drive,
+        *six.motion(),
+        0.0,
+        AssemblyMode::Open,
+        AssemblyMode::Open,
+    )
+    .unwrap_err();
     assert_eq!(e.cause(), "pivot_mismatch");
     // Beyond the drive's reach: the error of the loop.
-    let drive = FourBar::from_pivots(Point2::new(-1.0, 3.0), Point2::new(0.0, 0.0), 2.5, 1.0, 2.0).unwrap();
-    let six2 = SixBar::new(drive, *six.motion(), 0.0, AssemblyMode::Open, AssemblyMode::Open).unwrap();
+    let drive =
+        FourBar::from_pivots(Point2::new(-1.0, 3.0), Point2::new(0.0, 0.0), 2.5, 1.0, 2.0).unwrap();
+    let six2 = SixBar::new(
+        drive,
+        *six.motion(),
+        0.0,
+        AssemblyMode::Open,
+        AssemblyMode::Open,
+    )
+    .unwrap();
     assert!(!six2.crank_turns_fully());
     assert!(six2.min_transmission_angles().is_none());
     assert!(!six2.dead_positions().is_empty());

@@ -70,15 +70,7 @@ impl DriveArgs {
     ) -> PyResult<DriveContext> {
         let l = &linkage.inner;
         let e = attachment.map_or(l.driving.circle, |p| p.0);
-        DriveContext::new(
-            l,
-            e,
-            grid,
-            &self.limits,
-            &self.options,
-            &self.constraints,
-        )
-        .py()
+        DriveContext::new(l, e, grid, &self.limits, &self.options, &self.constraints).py()
     }
 }
 
@@ -175,7 +167,10 @@ impl PySixBar {
         .py()
     }
 
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let s = &self.inner;
         let args = (
             PyFourBar::from(*s.drive()),
@@ -441,7 +436,10 @@ impl PyDrive {
         Ok(PyDrive::of(d, linkage.task(), &ctx))
     }
 
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let d = &self.inner;
         let args = (
             PySynthesizedFourBar::new(self.task, d.linkage),
@@ -811,7 +809,10 @@ impl PyDriveMap {
     ) -> PyResult<PyDrive> {
         let d = self
             .context
-            .classic(beyond_first, drive_transmission_deg.map(|r| r.0.to_radians()))
+            .classic(
+                beyond_first,
+                drive_transmission_deg.map(|r| r.0.to_radians()),
+            )
             .py()?;
         Ok(PyDrive::of(d, self.task, &self.context))
     }
@@ -844,7 +845,10 @@ impl PyDriveMap {
         Self::from_columns(py, context, linkage.task(), columns)
     }
 
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let c = &self.context;
         let args = (
             self.linkage(),
@@ -924,7 +928,9 @@ impl PySynthesizedFourBar {
         let context = args.context(self, attachment, &g)?;
         let watch = g.len() >= WATCH_MIN_SAMPLES / 16;
         PyDriveMap::filled(py, context, self.task(), |ctx, out| {
-            run(py, watch, progress, None, |control| ctx.map_into(out, control))
+            run(py, watch, progress, None, |control| {
+                ctx.map_into(out, control)
+            })
         })
     }
 
@@ -998,7 +1004,10 @@ impl PySynthesizedFourBar {
         let a0 = self.inner.driving.center;
         let ctx = args.context(self, attachment, &point_grid(a0)?)?;
         let d = ctx
-            .classic(beyond_first, drive_transmission_deg.map(|r| r.0.to_radians()))
+            .classic(
+                beyond_first,
+                drive_transmission_deg.map(|r| r.0.to_radians()),
+            )
             .py()?;
         Ok(PyDrive::of(d, self.task(), &ctx))
     }
@@ -1109,7 +1118,11 @@ impl PySynthesizedFourBar {
                 control,
             )
         })?;
-        let ctx = args.context(self, Some(PyPoint(d.attachment)), &point_grid(d.drive_pivot)?)?;
+        let ctx = args.context(
+            self,
+            Some(PyPoint(d.attachment)),
+            &point_grid(d.drive_pivot)?,
+        )?;
         Ok(PyDrive::of(d, self.task(), &ctx))
     }
 }
@@ -1124,7 +1137,9 @@ fn search_of(
     let d = AttachmentSearch::default();
     AttachmentSearch {
         ratios: ratios.map_or(d.ratios, |v| v.into_iter().map(|r| r.0).collect()),
-        angles: angles_deg.map_or(d.angles, |v| v.into_iter().map(|r| r.0.to_radians()).collect()),
+        angles: angles_deg.map_or(d.angles, |v| {
+            v.into_iter().map(|r| r.0.to_radians()).collect()
+        }),
         reach: reach.0,
         samples: samples.0,
     }

@@ -34,11 +34,11 @@ mod _burmester {
     #[pymodule_export]
     use crate::design::{PyDesignLimits, PyPivot, PySolutionMap};
     #[pymodule_export]
-    use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
-    #[pymodule_export]
     use crate::drive::{PyDrive, PyDriveMap, PySixBar, unit_time_ratio_crank_rocker};
     #[pymodule_export]
     use crate::errors::DriveError;
+    #[pymodule_export]
+    use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
     #[pymodule_export]
     use crate::geom::{PyConic, PyGrid, clip_line};
     #[pymodule_export]

@@ -288,7 +288,11 @@ impl Prepared {
     /// Whether the segments, as capsules of the links' width inflated by
     /// `extra`, clear every obstacle (the six-bar's check over a crank
     /// turn, `design::drive`).
-    pub(crate) fn segments_clear(&self, segments: &[(Point2<f64>, Point2<f64>)], extra: f64) -> bool {
+    pub(crate) fn segments_clear(
+        &self,
+        segments: &[(Point2<f64>, Point2<f64>)],
+        extra: f64,
+    ) -> bool {
         let v = |p: Point2<f64>| PVector::new(p.x, p.y);
         let identity = parry2d_f64::math::Pose::identity();
         segments.iter().all(|&(a, b)| {

@@ -82,7 +82,7 @@ use nalgebra::{Point2, Vector2};
 use crate::design::constraints::Prepared;
 use crate::design::rank::{RankColumns, rank_samples, signed_distances, tie_order};
 use crate::design::{Constraints, DesignLimits, RankBy};
-use crate::engine::{Control, Rows, run_blocks};
+use crate::engine::{Control, Rows, run_blocks, run_blocks_polled};
 use crate::error::{
     DegenerateError, DriveError, InvalidInput, Result, count_in, finite_point, in_range,
     try_zeroed_vec,
@@ -224,8 +224,14 @@ impl Rows for RowsOfDrive<'_> {
     fn split_rows(self, rows: usize) -> (Self, Self) {
         let (a, b) = self.out.split_rows(rows * self.nx);
         (
-            RowsOfDrive { out: a, nx: self.nx },
-            RowsOfDrive { out: b, nx: self.nx },
+            RowsOfDrive {
+                out: a,
+                nx: self.nx,
+            },
+            RowsOfDrive {
+                out: b,
+                nx: self.nx,
+            },
         )
     }
 }
@@ -274,8 +280,20 @@ impl DriveOptions {
     ///
     /// [`InvalidInput::OutsideRange`] for a value out of its range or NaN.
     pub fn validate(&self) -> Result<()> {
-        in_range("swing_margin", self.swing_margin, 0.0, FRAC_PI_2, " radians")?;
-        in_range("max_time_ratio", self.max_time_ratio, 1.0, f64::INFINITY, "")?;
+        in_range(
+            "swing_margin",
+            self.swing_margin,
+            0.0,
+            FRAC_PI_2,
+            " radians",
+        )?;
+        in_range(
+            "max_time_ratio",
+            self.max_time_ratio,
+            1.0,
+            f64::INFINITY,
+            "",
+        )?;
         Ok(())
     }
 }
@@ -299,8 +317,8 @@ struct Swing {
     motion_mode: AssemblyMode,
     /// The motion loop's minimum transmission angle over the swing.
     motion_mu: f64,
-    /// The members that do not depend on `D0`: the motion linkage's, `rho`
-    /// and `|E - A|`.
+    /// The members that do not depend on `D0`: the motion linkage's and the
+    /// arm that carries `E` off the input link ([`SixBar::size`]).
     members: f64,
     /// The shortest and longest of the links that do not depend on `D0`.
     link_min: f64,
@@ -676,14 +694,29 @@ impl DriveContext {
         let judge = self.judge()?;
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let grid = &self.grid;
-        run_blocks(nx, ny, RowsOfDrive { out, nx }, control, |j0, mut block, rows| {
-            for r in 0..rows {
-                let y = grid.y(j0 + r);
-                for i in 0..nx {
-                    let s = judge.sample(Point2::new(grid.x(i), y));
-                    block.out.set(r * nx + i, s);
+        let rows = RowsOfDrive { out, nx };
+        if judge.prepared.obstacles.is_empty() {
+            return run_blocks(nx, ny, rows, control, |j0, mut block, n| {
+                for r in 0..n {
+                    let y = grid.y(j0 + r);
+                    for i in 0..nx {
+                        let s = judge.sample(Point2::new(grid.x(i), y));
+                        block.out.set(r * nx + i, s);
+                    }
                 }
+            });
+        }
+        // With obstacles a sample checks a full crank turn: the cancel flag
+        // is polled per sample, not only per row.
+        run_blocks_polled(nx, ny, rows, control, |j, mut row, control| {
+            let y = grid.y(j);
+            for i in 0..nx {
+                if control.is_cancelled() {
+                    return false;
+                }
+                row.out.set(i, judge.sample(Point2::new(grid.x(i), y)));
             }
+            true
         })
     }
 
@@ -785,7 +818,8 @@ impl DriveContext {
         };
         rc.check_len(n)?;
         let margins = core::cell::OnceCell::new();
-        let margin = |s: usize| margins.get_or_init(|| signed_distances(&self.grid, columns.valid))[s];
+        let margin =
+            |s: usize| margins.get_or_init(|| signed_distances(&self.grid, columns.valid))[s];
         let mut out: Vec<Drive> = Vec::new();
         rank_samples(n, rank_by, &rc, &margin, |s, m, score| {
             if out.len() >= k {
@@ -1106,7 +1140,8 @@ fn swing_of(
     };
     let motion_mu = acos1(fmin(arc_worst_cos(&linkage.fourbar, lo, width), 1.0));
     let ls = linkage.fourbar.lengths();
-    let side = (attachment - linkage.driving.circle).norm();
+    let arm_off =
+        crate::linkage::sixbar::attachment_arm(rho, delta, (linkage.driving.circle - a0).norm());
     Ok(Swing {
         a0,
         rho,
@@ -1115,7 +1150,7 @@ fn swing_of(
         arm: [arm_at(theta[0]), arm_at(theta[1])],
         motion_mode,
         motion_mu,
-        members: linkage.size() + rho + side,
+        members: linkage.size() + arm_off,
         link_min: ls.iter().copied().fold(rho, f64::min),
         link_max: ls.iter().copied().fold(rho, f64::max),
         inv_span: 1.0 / span_task,
@@ -1235,12 +1270,7 @@ impl AttachmentSearch {
             }
             .into());
         }
-        count_in(
-            "samples",
-            self.samples,
-            1,
-            DriveContext::MAX_SEARCH_SAMPLES,
-        )?;
+        count_in("samples", self.samples, 1, DriveContext::MAX_SEARCH_SAMPLES)?;
         Ok(())
     }
 
@@ -1350,9 +1380,10 @@ pub fn search_drives(
         }
     }
     drives.sort_by(|a, b| {
-        b.score
-            .total_cmp(&a.score)
-            .then(tie_order((a.figures.size_ratio as f32, 0.0), (b.figures.size_ratio as f32, 0.0)))
+        b.score.total_cmp(&a.score).then(tie_order(
+            (a.figures.size_ratio as f32, 0.0),
+            (b.figures.size_ratio as f32, 0.0),
+        ))
     });
     Ok(DriveSearch {
         drives,

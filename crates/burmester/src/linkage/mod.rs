@@ -11,6 +11,4 @@ pub use figures::{Direction, LinkageFigures};
 pub use fourbar::{AssemblyMode, Configuration, FourBar, Joints};
 pub(crate) use grashof::input_bounds;
 pub use grashof::{AngleInterval, Grashof, InputRange};
-pub use sixbar::{
-    LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths,
-};
+pub use sixbar::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};

@@ -193,7 +193,8 @@ pub struct SixBarLengths {
     /// `|C0 - A0|`: the motion loop's ground.
     pub ground: f64,
     /// `|E - A|`: the third side of the ternary input link `A0 A E` (zero
-    /// when `E` is `A`); a plate side, not a link, so not in the link ratio.
+    /// when `E` is `A`); a side of the plate, not a link, so not in the link
+    /// ratio.
     pub attachment_side: f64,
 }
 
@@ -270,7 +271,11 @@ impl SixBar {
         motion_mode: AssemblyMode,
     ) -> Result<Self> {
         let attachment_angle = finite("attachment angle", attachment_angle)?;
-        let size = drive.lengths().iter().chain(motion.lengths().iter()).sum::<f64>();
+        let size = drive
+            .lengths()
+            .iter()
+            .chain(motion.lengths().iter())
+            .sum::<f64>();
         let distance = (drive.output_pivot() - motion.input_pivot()).norm();
         let tolerance = 1e-9 * size;
         // NaN fails too.
@@ -373,11 +378,9 @@ impl SixBar {
             (j.rocker_joint - j.input_joint).norm(),
             (j.rocker_joint - j.output_pivot).norm(),
         )?;
-        let drive_mode = AssemblyMode::of_loop(
-            j.attachment - j.crank_joint,
-            j.attachment - j.input_pivot,
-        )
-        .ok_or(DriveError::ToggleJoints { which: "drive" })?;
+        let drive_mode =
+            AssemblyMode::of_loop(j.attachment - j.crank_joint, j.attachment - j.input_pivot)
+                .ok_or(DriveError::ToggleJoints { which: "drive" })?;
         let motion_mode = AssemblyMode::of_loop(
             j.rocker_joint - j.input_joint,
             j.rocker_joint - j.output_pivot,
@@ -456,17 +459,26 @@ impl SixBar {
         max / min
     }
 
-    /// The six-bar's size: the total length of its members, the eight links,
-    /// the plate side `|E - A|` and the coupler triangle's two sides to the
-    /// coupler point (as [`SynthesizedFourBar::size`](crate::SynthesizedFourBar::size)
-    /// counts a four-bar's).
+    /// The six-bar's size: the total length of its members. The motion
+    /// loop's as [`SynthesizedFourBar::size`](crate::SynthesizedFourBar::size)
+    /// counts a four-bar's (ground, input link, rocker and the coupler
+    /// triangle through the coupler point), the drive's ground `|A0 - D0|`,
+    /// crank and coupler, and the arm that carries `E` off the input link:
+    /// the distance from `E` to the segment `A0 A` (none when `E` is on the
+    /// link, so a drive pinned to the link itself adds only its three links).
     pub fn size(&self) -> f64 {
         let l = self.lengths();
         let cp = self.coupler_point;
-        l.links().iter().sum::<f64>()
-            + l.attachment_side
+        l.drive_ground
+            + l.crank
+            + l.drive_coupler
+            + l.input
+            + l.coupler
+            + l.output
+            + l.ground
             + cp.norm()
             + (cp - Vector2::new(l.coupler, 0.0)).norm()
+            + attachment_arm(l.rocker, self.attachment_angle, l.input)
     }
 
     /// The drive loop's Grashof type (a crank-rocker for a motor drive).
@@ -559,7 +571,9 @@ impl SixBar {
     pub fn crank_angles(&self, start: f64, samples: usize) -> Result<Vec<f64>> {
         let start = finite("start angle", start)?;
         let n = crate::error::count_in("samples", samples, 2, Self::MAX_SAMPLES)?;
-        Ok((0..n).map(|k| start + TAU * (k as f64 / n as f64)).collect())
+        Ok((0..n)
+            .map(|k| start + TAU * (k as f64 / n as f64))
+            .collect())
     }
 
     /// The drive's two limit positions (crank and coupler collinear, where
@@ -663,7 +677,8 @@ impl SixBar {
         let x = (r * r + s * s - c * c) / (2.0 * r * s);
         // The rounding of `x` grows with `(r^2 + s^2 + c^2) / (r s)`: at a
         // limit position of a drive with a long coupler it is many eps.
-        let slack = 2.0 * tolerance::ROUNDING_EPS * f64::EPSILON * (r * r + s * s + c * c) / (r * s);
+        let slack =
+            2.0 * tolerance::ROUNDING_EPS * f64::EPSILON * (r * r + s * s + c * c) / (r * s);
         if !(x.abs() <= 1.0 + slack) {
             return Vec::new();
         }
@@ -714,6 +729,16 @@ impl SixBar {
         out.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
         out
     }
+}
+
+/// The distance from `E = rho e^{i delta}` to the segment from `0` to `l2`
+/// (the input link `A0 A` in its own frame): the arm that carries the
+/// attachment off the link.
+pub(crate) fn attachment_arm(rho: f64, delta: f64, l2: f64) -> f64 {
+    let (s, c) = delta.sin_cos();
+    let (x, y) = (rho * c, rho * s);
+    let t = x.clamp(0.0, l2);
+    (x - t).hypot(y)
 }
 
 /// A joint's name in messages.
@@ -814,7 +839,10 @@ mod tests {
         let [e, f] = six.limit_positions().unwrap();
         for l in [e, f] {
             let c = six.solve(l.crank_angle).unwrap();
-            assert!(wrap_angle(c.rocker_angle() - l.rocker_angle).abs() < 1e-9, "{l:?}");
+            assert!(
+                wrap_angle(c.rocker_angle() - l.rocker_angle).abs() < 1e-9,
+                "{l:?}"
+            );
         }
         let n = 200_000;
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
