@@ -1269,6 +1269,9 @@ def _write_atomic(d: _Drawing, path: Path, units: str) -> Path:
     os.close(fd)
     try:
         _WRITERS[path.suffix.lower()](d, Path(tmp), units)
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)  # mkstemp's file is private; give it the usual mode
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):

@@ -1818,6 +1818,9 @@ def animate_sixbar(
     os.close(fd)
     try:
         anim.save(tmp, writer=writer, dpi=dpi)
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)  # mkstemp's file is private; give it the usual mode
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):

@@ -342,7 +342,8 @@ impl PySixBar {
         }
         Ok((xs, ys, ok))
     }
-    #[pyo3(signature = (start = Real(0.0), samples = Count(360)))]
+    #[pyo3(signature = (start = Real(0.0), samples = Count(360)),
+        text_signature = "($self, start=0.0, samples=360)")]
     fn crank_angles(&self, start: Real, samples: Count) -> PyResult<Vec<f64>> {
         self.inner.crank_angles(start.0, samples.0).py()
     }
@@ -571,7 +572,7 @@ impl PyDrive {
     fn stroke(&self) -> f64 {
         self.inner.figures.stroke
     }
-    #[pyo3(signature = (samples = Count(120)))]
+    #[pyo3(signature = (samples = Count(120)), text_signature = "($self, samples=120)")]
     fn turn_angles(&self, samples: Count) -> PyResult<Vec<f64>> {
         self.inner.turn_angles(samples.0).py()
     }
