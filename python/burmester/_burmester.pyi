@@ -1323,9 +1323,12 @@ class SynthesizedFourBar:
         progress: Optional[Progress] = None,
     ) -> Drive:
         """The best drive of :meth:`drive_search` with its defaults: a
-        motor for this linkage. Raises :class:`DriveError` saying why there
-        is none (``"no_acceptable_drive"`` with the best transmission angle
-        found, or why no drive can exist)."""
+        motor for this linkage (what ``burmester.design(..., input="motor")``
+        asks for a linkage whose input swings). The limits' ``input``
+        requirement does not apply: a drive's crank always turns fully.
+        Raises :class:`DriveError` saying why there is none
+        (``"no_acceptable_drive"`` with the best transmission angle found,
+        or why no drive can exist)."""
     def _repr_png_(self) -> Optional[bytes]:
         """The picture Jupyter shows (see :mod:`burmester._display`): PNG
         bytes, or None when matplotlib is not installed."""

@@ -82,6 +82,8 @@ def drive_table(drive: burmester.Drive, source: Optional[str] = None) -> str:
 
     travel = sfb.travel
     turns = f"the input turns {abs(math.degrees(travel[1])):.1f} deg from pose 1 to the last" if travel else ""
+    if f.input_full:
+        turns += " (its input turns fully: a motor could also turn it directly)"
     lines = [
         f"Motor drive for {source or 'the linkage'}: a {f.grashof} (A0 {p(sfb.driving[0])}, "
         f"C0 {p(sfb.driven[0])}); {turns}",

@@ -255,6 +255,10 @@ def test_pictures_and_export(tmp_path, dmap):
     with pytest.raises(burmester.InvalidInputError):
         export.sixbar(d, tmp_path / "six.png")
     with pytest.raises(burmester.InvalidInputError):
+        export.sixbar(d, tmp_path / "big.svg", turn_samples=export.MAX_SAMPLES + 1)
+    with pytest.raises(burmester.InvalidInputError):
+        bp.animate_sixbar(d, tmp_path / "x.gif", frames=bp.MAX_FRAMES + 1)
+    with pytest.raises(burmester.InvalidInputError):
         bp.animate_sixbar(d, tmp_path / "none" / "six.gif")
 
 

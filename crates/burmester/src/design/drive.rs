@@ -78,20 +78,21 @@
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use nalgebra::{Point2, Vector2};
+use pulp::{Arch, Simd, WithSimd};
 
 use crate::design::constraints::Prepared;
 use crate::design::rank::{RankColumns, rank_samples, signed_distances, tie_order};
 use crate::design::{Constraints, DesignLimits, RankBy};
-use crate::engine::{Control, Rows, run_blocks, run_blocks_polled};
+use crate::engine::{Control, Rows, run_blocks_polled, run_blocks_with};
 use crate::error::{
     DegenerateError, DriveError, InvalidInput, Result, count_in, finite_point, in_range,
     try_zeroed_vec,
 };
 use crate::geom::{Grid, PerPose, cross, unit, wrap_angle};
 use crate::linkage::grashof::{fmax, fmin};
-use crate::linkage::sixbar::{arc_worst_cos, drive_worst_cos};
+use crate::linkage::sixbar::arc_worst_cos;
 use crate::linkage::{AssemblyMode, Direction, FourBar, InputRange, SixBar};
-use crate::simd::acos1;
+use crate::simd::{M, Ops, V, acos, acos1, atan2};
 use crate::synthesis::SynthesizedFourBar;
 use crate::tolerance;
 
@@ -345,45 +346,182 @@ struct Eval {
 }
 
 impl Swing {
-    /// The figures of the drive with crank pivot `d0` (module docs), with
-    /// no check of the limits.
+    /// The figures of the drives with crank pivots `(x, y)` on the lanes of
+    /// `o` (module docs), with no check of the limits: the one arithmetic
+    /// of the map's SIMD rows and of the scalar path ([`eval`](Self::eval),
+    /// on [`pulp::Scalar`]), every lane operation the scalar one in the
+    /// same order (no fused multiply-add), so both give the same bits.
     #[inline(always)]
-    fn eval(&self, d0: Point2<f64>) -> Eval {
-        let w = d0 - self.a0;
+    fn lanes<S: Simd>(&self, o: Ops<S>, x: V<S>, y: V<S>) -> EvalLanes<S> {
         let [pa, pb] = self.arm;
-        let (ca, cb) = (cross(w, pa), cross(w, pb));
-        let (va, vb) = (pa - w, pb - w);
-        let (da, db) = (va.norm(), vb.norm());
-        let g = w.norm();
-        let r = 0.5 * (da - db).abs();
-        let c = 0.5 * (da + db);
-        let rho = self.rho;
-        let worst = drive_worst_cos(g, r, c, rho);
-        let drive_mu = acos1(fmin(worst, 1.0));
-        let tiny = self.tiny;
-        let valid = ca * cb > 0.0
-            && r > tiny
-            && g > tiny
-            && fmin(da, db) > tiny
-            && drive_mu > tolerance::TOGGLE_BAND;
+        let (pax, pay, pbx, pby) = (o.sp(pa.x), o.sp(pa.y), o.sp(pb.x), o.sp(pb.y));
+        let wx = o.sub(x, o.sp(self.a0.x));
+        let wy = o.sub(y, o.sp(self.a0.y));
+        let ca = o.cross(wx, wy, pax, pay);
+        let cb = o.cross(wx, wy, pbx, pby);
+        let (vax, vay) = (o.sub(pax, wx), o.sub(pay, wy));
+        let (vbx, vby) = (o.sub(pbx, wx), o.sub(pby, wy));
+        let da = o.norm(vax, vay);
+        let db = o.norm(vbx, vby);
+        let g = o.norm(wx, wy);
+        let half = o.sp(0.5);
+        let r = o.mul(half, o.abs(o.sub(da, db)));
+        let c = o.mul(half, o.add(da, db));
+        let rho = o.sp(self.rho);
+        // drive_worst_cos(g, r, c, rho), lane by lane.
+        let k = o.add(o.mul(c, c), o.mul(rho, rho));
+        let far = o.add(g, r);
+        let near = o.sub(g, r);
+        let worst = o.div(
+            o.fmax(
+                o.abs(o.sub(k, o.mul(far, far))),
+                o.abs(o.sub(k, o.mul(near, near))),
+            ),
+            o.mul(o.mul(o.sp(2.0), c), rho),
+        );
+        let drive_mu = acos(o, o.fmin(worst, o.sp(1.0)));
+        let (zero, tiny) = (o.sp(0.0), o.sp(self.tiny));
+        let valid = o.and(
+            o.and(o.gt(o.mul(ca, cb), zero), o.gt(r, tiny)),
+            o.and(
+                o.and(o.gt(g, tiny), o.gt(o.fmin(da, db), tiny)),
+                o.gt(drive_mu, o.sp(tolerance::TOGGLE_BAND)),
+            ),
+        );
         // The angle at D0 between E_a and E_b, in [0, pi].
-        let alpha = cross(va, vb).abs().atan2(va.dot(&vb));
-        let time_ratio = (PI + alpha) / (PI - alpha);
-        let lmax = fmax(fmax(self.link_max, g), fmax(r, c));
-        let lmin = fmin(fmin(self.link_min, g), fmin(r, c));
-        Eval {
+        let alpha = atan2(
+            o,
+            o.abs(o.cross(vax, vay, vbx, vby)),
+            o.dot(vax, vay, vbx, vby),
+        );
+        let pi = o.sp(PI);
+        let time_ratio = o.div(o.add(pi, alpha), o.sub(pi, alpha));
+        let lmax = o.fmax(o.fmax(o.sp(self.link_max), g), o.fmax(r, c));
+        let lmin = o.fmin(o.fmin(o.sp(self.link_min), g), o.fmin(r, c));
+        EvalLanes {
             valid,
             drive_mu,
-            mu: fmin(drive_mu, self.motion_mu),
+            mu: o.fmin(drive_mu, o.sp(self.motion_mu)),
             time_ratio,
-            link_ratio: lmax / lmin,
-            size_ratio: (self.members + g + r + c) * self.inv_span,
-            lengths: [g, r, c],
-            mode: if ca > 0.0 {
+            link_ratio: o.div(lmax, lmin),
+            size_ratio: o.mul(
+                o.add(o.add(o.add(o.sp(self.members), g), r), c),
+                o.sp(self.inv_span),
+            ),
+            g,
+            r,
+            c,
+            ca,
+        }
+    }
+
+    /// The figures of the drive with crank pivot `d0` ([`lanes`](Self::lanes)
+    /// on one scalar lane).
+    #[inline]
+    fn eval(&self, d0: Point2<f64>) -> Eval {
+        let e = self.lanes(Ops(pulp::Scalar), d0.x, d0.y);
+        Eval {
+            valid: e.valid,
+            drive_mu: e.drive_mu,
+            mu: e.mu,
+            time_ratio: e.time_ratio,
+            link_ratio: e.link_ratio,
+            size_ratio: e.size_ratio,
+            lengths: [e.g, e.r, e.c],
+            mode: if e.ca > 0.0 {
                 AssemblyMode::Crossed
             } else {
                 AssemblyMode::Open
             },
+        }
+    }
+}
+
+/// [`Swing::lanes`]'s figures on the lanes of `S`.
+#[derive(Clone, Copy)]
+struct EvalLanes<S: Simd> {
+    valid: M<S>,
+    drive_mu: V<S>,
+    mu: V<S>,
+    time_ratio: V<S>,
+    link_ratio: V<S>,
+    size_ratio: V<S>,
+    g: V<S>,
+    r: V<S>,
+    c: V<S>,
+    ca: V<S>,
+}
+
+/// Rows are padded to a multiple of the widest lane count (8, AVX-512).
+const PAD: usize = 8;
+
+/// One row's lanes, written by [`DriveRow`]: the figures and a flag per
+/// sample (`1` valid, `2` meets the limits and the time ratio).
+struct RowScratch {
+    xs: Vec<f64>,
+    flags: Vec<f64>,
+    mu: Vec<f64>,
+    drive_mu: Vec<f64>,
+    time_ratio: Vec<f64>,
+    link_ratio: Vec<f64>,
+    size_ratio: Vec<f64>,
+}
+
+impl RowScratch {
+    fn new(grid: &Grid) -> Self {
+        let nx = grid.nx();
+        let padded = nx.next_multiple_of(PAD);
+        let v = || vec![0.0; padded];
+        RowScratch {
+            xs: (0..padded).map(|i| grid.x(i.min(nx - 1))).collect(),
+            flags: v(),
+            mu: v(),
+            drive_mu: v(),
+            time_ratio: v(),
+            link_ratio: v(),
+            size_ratio: v(),
+        }
+    }
+}
+
+/// The lanes of one row at ordinate `y` (pulp's entry point).
+struct DriveRow<'a> {
+    swing: &'a Swing,
+    /// `[min transmission, max link ratio, max time ratio]`.
+    limits: [f64; 3],
+    y: f64,
+    out: &'a mut RowScratch,
+}
+
+impl WithSimd for DriveRow<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: Simd>(self, s: S) {
+        let o = Ops(s);
+        let out = self.out;
+        let y = o.sp(self.y);
+        let [mt, mr, mq] = self.limits.map(|v| o.sp(v));
+        let (one, two, zero) = (o.sp(1.0), o.sp(2.0), o.sp(0.0));
+        let xs = S::as_simd_f64s(&out.xs).0;
+        let flags = S::as_mut_simd_f64s(&mut out.flags).0;
+        let mu = S::as_mut_simd_f64s(&mut out.mu).0;
+        let drive_mu = S::as_mut_simd_f64s(&mut out.drive_mu).0;
+        let time_ratio = S::as_mut_simd_f64s(&mut out.time_ratio).0;
+        let link_ratio = S::as_mut_simd_f64s(&mut out.link_ratio).0;
+        let size_ratio = S::as_mut_simd_f64s(&mut out.size_ratio).0;
+        for (c, &x) in xs.iter().enumerate() {
+            let e = self.swing.lanes(o, x, y);
+            let meets = o.and(
+                o.and(e.valid, o.ge(e.mu, mt)),
+                o.and(o.le(e.link_ratio, mr), o.le(e.time_ratio, mq)),
+            );
+            flags[c] = o.add(o.sel(e.valid, one, zero), o.sel(meets, two, zero));
+            mu[c] = e.mu;
+            drive_mu[c] = e.drive_mu;
+            time_ratio[c] = e.time_ratio;
+            link_ratio[c] = e.link_ratio;
+            size_ratio[c] = e.size_ratio;
         }
     }
 }
@@ -696,13 +834,25 @@ impl DriveContext {
         let grid = &self.grid;
         let rows = RowsOfDrive { out, nx };
         if judge.prepared.obstacles.is_empty() {
-            return run_blocks(nx, ny, rows, control, |j0, mut block, n| {
+            // The rows on SIMD lanes (the scalar path's bits), then the
+            // columns from them; the base plate per sample where given.
+            let limits = [
+                self.limits.min_transmission,
+                self.limits.max_link_ratio,
+                self.options.max_time_ratio,
+            ];
+            let plate = !judge.prepared.is_empty();
+            let init = || RowScratch::new(grid);
+            return run_blocks_with(nx, ny, rows, control, init, |scratch, j0, mut block, n| {
                 for r in 0..n {
                     let y = grid.y(j0 + r);
-                    for i in 0..nx {
-                        let s = judge.sample(Point2::new(grid.x(i), y));
-                        block.out.set(r * nx + i, s);
-                    }
+                    Arch::new().dispatch(DriveRow {
+                        swing: &self.swing,
+                        limits,
+                        y,
+                        out: scratch,
+                    });
+                    judge.write_row(scratch, y, plate, &mut block.out, r * nx, nx);
                 }
             });
         }
@@ -916,6 +1066,59 @@ impl DriveJudge<'_> {
         self.context
             .sixbar(d0, e)
             .is_ok_and(|six| self.clear_over_turn(&six, e))
+    }
+
+    /// Writes the row at ordinate `y` from its lanes (`scratch`, filled by
+    /// [`DriveRow`]) into `out` from `base`: the samples [`sample`](Self::sample)
+    /// gives, bit for bit (the base plate tested per sample when `plate`).
+    #[inline]
+    fn write_row(
+        &self,
+        scratch: &RowScratch,
+        y: f64,
+        plate: bool,
+        out: &mut DriveColumnsOut<'_>,
+        base: usize,
+        nx: usize,
+    ) {
+        let nan = f32::NAN;
+        let code = |f: f64| f as u8;
+        let flags = &scratch.flags[..nx];
+        let pick = |v: &[f64], i: usize| {
+            if code(flags[i]) & 1 != 0 {
+                v[i] as f32
+            } else {
+                nan
+            }
+        };
+        for (i, d) in out.valid[base..base + nx].iter_mut().enumerate() {
+            *d = code(flags[i]) & 1 != 0;
+        }
+        for (i, d) in out.min_transmission_rad[base..base + nx]
+            .iter_mut()
+            .enumerate()
+        {
+            *d = pick(&scratch.mu, i);
+        }
+        for (i, d) in out.drive_transmission_rad[base..base + nx]
+            .iter_mut()
+            .enumerate()
+        {
+            *d = pick(&scratch.drive_mu, i);
+        }
+        for (i, d) in out.time_ratio[base..base + nx].iter_mut().enumerate() {
+            *d = pick(&scratch.time_ratio, i);
+        }
+        for (i, d) in out.link_ratio[base..base + nx].iter_mut().enumerate() {
+            *d = pick(&scratch.link_ratio, i);
+        }
+        for (i, d) in out.size_ratio[base..base + nx].iter_mut().enumerate() {
+            *d = pick(&scratch.size_ratio, i);
+        }
+        for (i, d) in out.acceptable[base..base + nx].iter_mut().enumerate() {
+            *d = code(flags[i]) & 2 != 0
+                && (!plate || self.prepared.pivot_ok(Point2::new(scratch.xs[i], y)));
+        }
     }
 
     /// One sample of the map.
@@ -1396,6 +1599,9 @@ pub fn search_drives(
 /// The best drive for `linkage` under the limits, the options and the
 /// constraints, by `rank_by` over the default [`AttachmentSearch`]: the
 /// function the one-call design calls for a linkage whose input swings.
+/// The limits' input requirement does not apply (a drive's crank always
+/// turns fully); their transmission angle and link ratio do, for both
+/// loops and the six-bar's links.
 ///
 /// # Errors
 ///
@@ -1452,6 +1658,95 @@ pub fn best_drive(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::linkage::sixbar::drive_worst_cos;
+
+    /// The drive map's rows on every lane width (1, 2, 4, 8 and as
+    /// dispatched) give the scalar path's bits, sample by sample.
+    #[test]
+    fn drive_lanes_are_the_scalar_path_on_every_width() {
+        let task = crate::example::task();
+        let f = task.filemon(crate::example::driven_center()).unwrap();
+        let grid = Grid::new(crate::example::viewport(), 60, 60).unwrap();
+        let limits = DesignLimits::default();
+        let none = Constraints::default();
+        let map = f
+            .solution_map(&grid, &limits, &none, &Control::new())
+            .unwrap();
+        let linkage = map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage;
+        let a0 = linkage.driving.center;
+        let g =
+            Grid::from_bounds(a0.x - 40.0, a0.x + 40.0, a0.y - 40.0, a0.y + 40.0, 37, 29).unwrap();
+        let opts = DriveOptions {
+            swing_margin: 0.02,
+            max_time_ratio: 1.3,
+        };
+        let ctx =
+            DriveContext::new(&linkage, linkage.driving.circle, &g, &limits, &opts, &none).unwrap();
+        let judge = ctx.judge().unwrap();
+        let lim = [
+            limits.min_transmission,
+            limits.max_link_ratio,
+            opts.max_time_ratio,
+        ];
+        let mut counts = [0usize; 2];
+        for j in 0..g.ny() {
+            let y = g.y(j);
+            let run = |f: &dyn Fn(DriveRow<'_>)| {
+                let mut scratch = RowScratch::new(&g);
+                f(DriveRow {
+                    swing: &ctx.swing,
+                    limits: lim,
+                    y,
+                    out: &mut scratch,
+                });
+                scratch
+            };
+            let widths: [&dyn Fn(DriveRow<'_>); 5] = [
+                &|r| r.with_simd(pulp::Scalar),
+                &|r| r.with_simd(pulp::Scalar128b),
+                &|r| r.with_simd(pulp::Scalar256b),
+                &|r| r.with_simd(pulp::Scalar512b),
+                &|r| Arch::new().dispatch(r),
+            ];
+            for w in widths {
+                let sc = run(w);
+                for i in 0..g.nx() {
+                    let d0 = Point2::new(g.x(i), y);
+                    let e = ctx.swing.eval(d0);
+                    let s = judge.sample(d0);
+                    let flag = sc.flags[i] as u8;
+                    assert_eq!(flag & 1 != 0, e.valid && s.valid, "{d0}");
+                    assert_eq!(flag & 2 != 0, s.acceptable, "{d0}");
+                    if e.valid {
+                        for (lane, scalar) in [
+                            (sc.mu[i], e.mu),
+                            (sc.drive_mu[i], e.drive_mu),
+                            (sc.time_ratio[i], e.time_ratio),
+                            (sc.link_ratio[i], e.link_ratio),
+                            (sc.size_ratio[i], e.size_ratio),
+                        ] {
+                            assert_eq!(lane.to_bits(), scalar.to_bits(), "{d0}");
+                        }
+                        counts[usize::from(s.acceptable)] += 1;
+                    }
+                }
+            }
+        }
+        assert!(counts[0] > 0 && counts[1] > 0, "{counts:?}");
+        // And the map itself is the samples.
+        let m = ctx.map(&Control::new()).unwrap();
+        for k in 0..g.len() {
+            let s = judge.sample(ctx.point(k));
+            assert_eq!(m.columns.valid[k], s.valid);
+            assert_eq!(m.columns.acceptable[k], s.acceptable);
+            assert_eq!(
+                m.columns.min_transmission_rad[k].to_bits(),
+                s.min_transmission_rad.to_bits()
+            );
+            assert_eq!(m.columns.time_ratio[k].to_bits(), s.time_ratio.to_bits());
+            assert_eq!(m.columns.size_ratio[k].to_bits(), s.size_ratio.to_bits());
+        }
+    }
 
     #[test]
     fn unit_time_ratio_matches_the_construction() {
