@@ -3,6 +3,7 @@
 
     python benches/report.py --run          # run the benches, then write the report
     python benches/report.py                # only write the report from target/criterion
+    python benches/report.py --run --only drive_map   # one section, the others kept
 
 ``--run`` runs ``cargo bench`` for every bench named in SECTIONS and, when the
 ``burmester`` package is importable, the Python-side timings that SECTIONS
@@ -585,11 +586,13 @@ SECTIONS.append(
             "triple-rocker, its input swinging), the attachment at its input joint, candidate "
             "crank pivots over a square of half-width 4 |A - A0| about A0, default limits, no "
             "constraints; against the example's solution map (`Filemon::solution_map_into`) "
-            "over its view on a grid of the same size, in the same run. Each drive sample is "
-            "exact and closed form: the crank-rocker with the swing asked for, the drive "
-            "loop's minimum transmission over a full crank turn, the time ratio, the six-bar's "
-            "link and size ratios (scalar code, three square roots, one `acos` and one "
-            "`atan2`). `drive_map` allocates its columns; the `_into` figures reuse them."
+            "over its view on a grid of the same size, in the same run, so their ratio is the "
+            "cost per sample of one over the other. Each drive sample is exact and closed form: "
+            "the crank-rocker with the swing asked for, the drive loop's minimum transmission "
+            "over a full crank turn, the time ratio, the six-bar's link and size ratios (three "
+            "square roots, one `acos`, one `atan2`), on SIMD lanes picked at run time like the "
+            "solution map's kernel (the scalar path's bits). `drive_map` allocates its columns; "
+            "the `_into` figures reuse them."
         ),
     )
 )
@@ -771,12 +774,58 @@ def write(figures: dict[str, Figure]) -> str:
     return "\n".join(lines)
 
 
+def section_text(text: str) -> dict[str, str]:
+    """The ``## `` sections of a report, by title, each with its heading."""
+    parts: dict[str, str] = {}
+    title = None
+    for block in text.split("\n## ")[1:]:
+        title, _, body = block.partition("\n")
+        parts[title] = "## " + title + "\n" + body.rstrip("\n") + "\n"
+    return parts
+
+
+def write_only(figures: dict[str, Figure], sections: list[Section]) -> str:
+    """The existing report with only ``sections`` rewritten from this run's
+    figures (added at the end when new); every other section is kept as it
+    was, and each rewritten one says when it was measured."""
+    old = OUT.read_text() if OUT.exists() else write({})
+    fresh = section_text(write(figures))
+    stamp = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+    head, _, _ = old.partition("\n## ")
+    kept = section_text(old)
+    for s in sections:
+        note = (f"(This section alone measured {stamp}, `python benches/report.py --run --only "
+                f"{' '.join(s.benches)}`; the others come from an earlier run. Its ratios are "
+                "within this one run.)\n\n")
+        body = fresh[s.title]
+        heading, _, rest = body.partition("\n\n")
+        kept[s.title] = heading + "\n\n" + note + rest
+    return head.rstrip("\n") + "\n\n" + "\n".join(kept.values()).rstrip("\n")
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--run", action="store_true", help="run the benches first")
+    ap.add_argument("--only", nargs="+", metavar="BENCH", default=None,
+                    help="only the sections of these cargo benches: run them (with --run) and rewrite "
+                         "their sections of BENCHMARKS.md, keeping the others")
     ap.add_argument("--python-repeat", type=int, default=20)
     ap.add_argument("criterion_args", nargs="*", help="passed to criterion (after --)")
     args = ap.parse_args()
+    if args.only is not None:
+        chosen = [s for s in SECTIONS if set(s.benches) & set(args.only)]
+        if not chosen:
+            ap.error(f"no section runs the benches {args.only}")
+        if args.run:
+            for s in chosen:
+                for b in s.benches:
+                    shutil.rmtree(CRITERION / b, ignore_errors=True)
+            run_benches(chosen, args.criterion_args)
+            run_python(chosen, args.python_repeat)
+        text = write_only(load_criterion(), chosen)
+        OUT.write_text(text + "\n")
+        print(text)
+        return 0
     if args.run:
         # Every figure of the report comes from this one run.
         shutil.rmtree(CRITERION, ignore_errors=True)
