@@ -820,6 +820,7 @@ impl PyDriveMap {
 
     /// Rebuilds a map from its state (for pickling).
     #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
     fn _from_state(
         py: Python<'_>,
         linkage: PySynthesizedFourBar,
@@ -882,250 +883,218 @@ impl PyDriveMap {
     }
 }
 
-/// The drive methods of `SynthesizedFourBar`.
-#[pymethods]
-impl PySynthesizedFourBar {
-    #[pyo3(signature = (*grid, attachment = None, limits = None, min_transmission_deg = None,
-        max_link_ratio = None, swing_margin_deg = Real(0.0), max_time_ratio = Real(f64::INFINITY),
-        base_plate = None, obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
-        progress = None),
-        text_signature = "($self, *grid, attachment=None, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=inf, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn drive_map(
-        &self,
-        py: Python<'_>,
-        grid: &Bound<'_, PyTuple>,
-        attachment: Option<PyPoint>,
-        limits: Option<PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Real,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyDriveMap> {
-        let (g, used) = grid_arg(grid)?;
-        if used != grid.len() {
-            return Err(PyTypeError::new_err(
-                "drive_map takes a grid (or its six numbers); the rest goes by keyword",
-            ));
-        }
-        let args = DriveArgs::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )?;
-        let context = args.context(self, attachment, &g)?;
-        let watch = g.len() >= WATCH_MIN_SAMPLES / 16;
-        PyDriveMap::filled(py, context, self.task(), |ctx, out| {
-            run(py, watch, progress, None, |control| {
-                ctx.map_into(out, control)
-            })
+// The drive methods of `SynthesizedFourBar` (its #[pymethods] block in
+// `synthesis.rs` delegates to these).
+
+/// `SynthesizedFourBar.drive_map` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn drive_map(
+    this: &PySynthesizedFourBar,
+    py: Python<'_>,
+    grid: &Bound<'_, PyTuple>,
+    attachment: Option<PyPoint>,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Real,
+    base_plate: Option<Vec<PyPoint>>,
+    obstacles: Option<Vec<Vec<PyPoint>>>,
+    link_width: Real,
+    travel_samples: Count,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyDriveMap> {
+    let (g, used) = grid_arg(grid)?;
+    if used != grid.len() {
+        return Err(PyTypeError::new_err(
+            "drive_map takes a grid (or its six numbers); the rest goes by keyword",
+        ));
+    }
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        base_plate,
+        obstacles,
+        link_width,
+        travel_samples,
+    )?;
+    let context = args.context(this, attachment, &g)?;
+    let watch = g.len() >= WATCH_MIN_SAMPLES / 16;
+    PyDriveMap::filled(py, context, this.task(), |ctx, out| {
+        run(py, watch, progress, None, |control| {
+            ctx.map_into(out, control)
         })
-    }
+    })
+}
 
-    #[pyo3(signature = (drive_pivot, attachment = None, *, limits = None,
-        min_transmission_deg = None, max_link_ratio = None, swing_margin_deg = Real(0.0),
-        max_time_ratio = Real(f64::INFINITY), base_plate = None, obstacles = None,
-        link_width = Real(0.0), travel_samples = Count(64)),
-        text_signature = "($self, drive_pivot, attachment=None, *, limits=None, \
-        min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
-        max_time_ratio=inf, base_plate=None, obstacles=None, link_width=0.0, travel_samples=64)")]
-    #[allow(clippy::too_many_arguments)]
-    fn drive(
-        &self,
-        drive_pivot: PyPoint,
-        attachment: Option<PyPoint>,
-        limits: Option<PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Real,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-    ) -> PyResult<PyDrive> {
-        let args = DriveArgs::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )?;
-        let ctx = args.context(self, attachment, &point_grid(drive_pivot.0)?)?;
-        let d = ctx.drive(drive_pivot.0).py()?;
-        Ok(PyDrive::of(d, self.task(), &ctx))
-    }
+/// `SynthesizedFourBar.drive` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn drive(
+    this: &PySynthesizedFourBar,
+    drive_pivot: PyPoint,
+    attachment: Option<PyPoint>,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Real,
+    base_plate: Option<Vec<PyPoint>>,
+    obstacles: Option<Vec<Vec<PyPoint>>>,
+    link_width: Real,
+    travel_samples: Count,
+) -> PyResult<PyDrive> {
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        base_plate,
+        obstacles,
+        link_width,
+        travel_samples,
+    )?;
+    let ctx = args.context(this, attachment, &point_grid(drive_pivot.0)?)?;
+    let d = ctx.drive(drive_pivot.0).py()?;
+    Ok(PyDrive::of(d, this.task(), &ctx))
+}
 
-    #[pyo3(signature = (attachment = None, *, beyond_first = true, drive_transmission_deg = None,
-        limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = Real(f64::INFINITY)),
-        text_signature = "($self, attachment=None, *, beyond_first=True, \
-        drive_transmission_deg=None, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=inf)")]
-    #[allow(clippy::too_many_arguments)]
-    fn classic_drive(
-        &self,
-        attachment: Option<PyPoint>,
-        beyond_first: bool,
-        drive_transmission_deg: Option<Real>,
-        limits: Option<PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Real,
-    ) -> PyResult<PyDrive> {
-        let args = DriveArgs::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            None,
-            None,
-            Real(0.0),
-            Count(Constraints::DEFAULT_TRAVEL_SAMPLES),
-        )?;
-        let a0 = self.inner.driving.center;
-        let ctx = args.context(self, attachment, &point_grid(a0)?)?;
-        let d = ctx
-            .classic(
-                beyond_first,
-                drive_transmission_deg.map(|r| r.0.to_radians()),
-            )
-            .py()?;
-        Ok(PyDrive::of(d, self.task(), &ctx))
-    }
+/// `SynthesizedFourBar.classic_drive` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn classic_drive(
+    this: &PySynthesizedFourBar,
+    attachment: Option<PyPoint>,
+    beyond_first: bool,
+    drive_transmission_deg: Option<Real>,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Real,
+) -> PyResult<PyDrive> {
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        None,
+        None,
+        Real(0.0),
+        Count(Constraints::DEFAULT_TRAVEL_SAMPLES),
+    )?;
+    let a0 = this.inner.driving.center;
+    let ctx = args.context(this, attachment, &point_grid(a0)?)?;
+    let d = ctx
+        .classic(
+            beyond_first,
+            drive_transmission_deg.map(|r| r.0.to_radians()),
+        )
+        .py()?;
+    Ok(PyDrive::of(d, this.task(), &ctx))
+}
 
-    #[pyo3(signature = (*, ratios = None, angles_deg = None, reach = Real(4.0),
-        samples = Count(96), limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = Real(f64::INFINITY), base_plate = None,
-        obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
-        rank_by = "balanced", progress = None),
-        text_signature = "($self, *, ratios=None, angles_deg=None, reach=4.0, samples=96, \
-        limits=None, min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
-        max_time_ratio=inf, base_plate=None, obstacles=None, link_width=0.0, \
-        travel_samples=64, rank_by='balanced', progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn drive_search(
-        &self,
-        py: Python<'_>,
-        ratios: Option<Vec<Real>>,
-        angles_deg: Option<Vec<Real>>,
-        reach: Real,
-        samples: Count,
-        limits: Option<PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Real,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        rank_by: &str,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<Vec<PyDrive>> {
-        let args = DriveArgs::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )?;
-        let search = search_of(ratios, angles_deg, reach, samples);
-        let (l, rank_by) = (self.inner, rank(rank_by)?);
-        let found = run(py, true, progress, None, |control| {
-            search_drives(
-                &l,
-                &search,
-                &args.limits,
-                &args.options,
-                &args.constraints,
-                rank_by,
-                control,
-            )
-        })?;
-        let ctx = args.context(self, None, &point_grid(l.driving.center)?)?;
-        Ok(found
-            .drives
-            .into_iter()
-            .map(|d| PyDrive::of(d, self.task(), &ctx))
-            .collect())
-    }
+/// `SynthesizedFourBar.drive_search` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn drive_search(
+    this: &PySynthesizedFourBar,
+    py: Python<'_>,
+    ratios: Option<Vec<Real>>,
+    angles_deg: Option<Vec<Real>>,
+    reach: Real,
+    samples: Count,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Real,
+    base_plate: Option<Vec<PyPoint>>,
+    obstacles: Option<Vec<Vec<PyPoint>>>,
+    link_width: Real,
+    travel_samples: Count,
+    rank_by: &str,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Vec<PyDrive>> {
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        base_plate,
+        obstacles,
+        link_width,
+        travel_samples,
+    )?;
+    let search = search_of(ratios, angles_deg, reach, samples);
+    let (l, rank_by) = (this.inner, rank(rank_by)?);
+    let found = run(py, true, progress, None, |control| {
+        search_drives(
+            &l,
+            &search,
+            &args.limits,
+            &args.options,
+            &args.constraints,
+            rank_by,
+            control,
+        )
+    })?;
+    let ctx = args.context(this, None, &point_grid(l.driving.center)?)?;
+    Ok(found
+        .drives
+        .into_iter()
+        .map(|d| PyDrive::of(d, this.task(), &ctx))
+        .collect())
+}
 
-    #[pyo3(signature = (*, limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = Real(f64::INFINITY), base_plate = None,
-        obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
-        rank_by = "balanced", progress = None),
-        text_signature = "($self, *, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=inf, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, rank_by='balanced', progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn best_drive(
-        &self,
-        py: Python<'_>,
-        limits: Option<PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Real,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        rank_by: &str,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyDrive> {
-        let args = DriveArgs::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )?;
-        let (l, rank_by) = (self.inner, rank(rank_by)?);
-        let d = run(py, true, progress, None, |control| {
-            burmester::design::best_drive(
-                &l,
-                &args.limits,
-                &args.options,
-                &args.constraints,
-                rank_by,
-                control,
-            )
-        })?;
-        let ctx = args.context(
-            self,
-            Some(PyPoint(d.attachment)),
-            &point_grid(d.drive_pivot)?,
-        )?;
-        Ok(PyDrive::of(d, self.task(), &ctx))
-    }
+/// `SynthesizedFourBar.best_drive` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn best_drive(
+    this: &PySynthesizedFourBar,
+    py: Python<'_>,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Real,
+    base_plate: Option<Vec<PyPoint>>,
+    obstacles: Option<Vec<Vec<PyPoint>>>,
+    link_width: Real,
+    travel_samples: Count,
+    rank_by: &str,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyDrive> {
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        base_plate,
+        obstacles,
+        link_width,
+        travel_samples,
+    )?;
+    let (l, rank_by) = (this.inner, rank(rank_by)?);
+    let d = run(py, true, progress, None, |control| {
+        burmester::design::best_drive(
+            &l,
+            &args.limits,
+            &args.options,
+            &args.constraints,
+            rank_by,
+            control,
+        )
+    })?;
+    let ctx = args.context(
+        this,
+        Some(PyPoint(d.attachment)),
+        &point_grid(d.drive_pivot)?,
+    )?;
+    Ok(PyDrive::of(d, this.task(), &ctx))
 }
 
 /// The attachment search of the Python keywords (the core checks it).

@@ -1302,6 +1302,8 @@ fn swing_of(
     let margin = options.swing_margin;
     let sign = span.signum();
     let swing = span.abs() + 2.0 * margin;
+    // NaN fails too.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     if !(swing < PI * (1.0 - 1e-9)) {
         return Err(DriveError::TravelTooLarge {
             travel_deg: span.abs().to_degrees(),
@@ -1325,6 +1327,8 @@ fn swing_of(
     let rho = arm.norm();
     let span_task = pose_span(linkage);
     let tiny = tolerance::POINT * span_task.max(linkage.fourbar.lengths()[0]);
+    // NaN fails too.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     if !(rho > tiny) {
         return Err(DegenerateError::ZeroLengthLink {
             what: "input link arm A0-E (the attachment is on A0)",

@@ -671,6 +671,8 @@ impl SixBar {
         let e = a0 + unit(psi) * rho;
         let w = e - d0;
         let s = w.norm();
+        // NaN fails too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
         if !(s > 0.0) {
             return Vec::new();
         }
@@ -679,6 +681,8 @@ impl SixBar {
         // limit position of a drive with a long coupler it is many eps.
         let slack =
             2.0 * tolerance::ROUNDING_EPS * f64::EPSILON * (r * r + s * s + c * c) / (r * s);
+        // NaN fails too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
         if !(x.abs() <= 1.0 + slack) {
             return Vec::new();
         }
