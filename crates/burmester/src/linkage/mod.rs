@@ -5,7 +5,7 @@
 pub(crate) mod figures;
 mod fourbar;
 pub(crate) mod grashof;
-pub(crate) mod sixbar;
+pub mod sixbar;
 
 pub use figures::{Direction, LinkageFigures};
 pub use fourbar::{AssemblyMode, Configuration, FourBar, Joints};
