@@ -1216,7 +1216,7 @@ class SynthesizedFourBar:
         min_transmission_deg: Optional[float] = None,
         max_link_ratio: Optional[float] = None,
         swing_margin_deg: float = 0.0,
-        max_time_ratio: float = ...,
+        max_time_ratio: Optional[float] = None,
         base_plate: Optional[Sequence[Point]] = None,
         obstacles: Optional[Sequence[Sequence[Point]]] = None,
         link_width: float = 0.0,
@@ -1235,7 +1235,7 @@ class SynthesizedFourBar:
         six-bar's link ratio and size ratio, and ``acceptable`` under the
         limits (transmission, link ratio), ``max_time_ratio`` and the
         constraints (``D0`` on ``base_plate``; the moving links clear of
-        ``obstacles`` over the whole turn). Releases the GIL; ``progress``
+        ``obstacles`` over the whole turn); ``max_time_ratio=None``: no limit. Releases the GIL; ``progress``
         and Ctrl-C as :meth:`Filemon.solution_map`.
 
         Raises :class:`DriveError` when no drive can exist (no travel, a
@@ -1251,7 +1251,7 @@ class SynthesizedFourBar:
         min_transmission_deg: Optional[float] = None,
         max_link_ratio: Optional[float] = None,
         swing_margin_deg: float = 0.0,
-        max_time_ratio: float = ...,
+        max_time_ratio: Optional[float] = None,
         base_plate: Optional[Sequence[Point]] = None,
         obstacles: Optional[Sequence[Sequence[Point]]] = None,
         link_width: float = 0.0,
@@ -1270,7 +1270,7 @@ class SynthesizedFourBar:
         min_transmission_deg: Optional[float] = None,
         max_link_ratio: Optional[float] = None,
         swing_margin_deg: float = 0.0,
-        max_time_ratio: float = ...,
+        max_time_ratio: Optional[float] = None,
     ) -> Drive:
         """The closed-form drive of time ratio 1 (Norton's construction,
         Brodell and Soni's equations): the crank pivot on the line through
@@ -1291,7 +1291,7 @@ class SynthesizedFourBar:
         min_transmission_deg: Optional[float] = None,
         max_link_ratio: Optional[float] = None,
         swing_margin_deg: float = 0.0,
-        max_time_ratio: float = ...,
+        max_time_ratio: Optional[float] = None,
         base_plate: Optional[Sequence[Point]] = None,
         obstacles: Optional[Sequence[Sequence[Point]]] = None,
         link_width: float = 0.0,
@@ -1314,7 +1314,7 @@ class SynthesizedFourBar:
         min_transmission_deg: Optional[float] = None,
         max_link_ratio: Optional[float] = None,
         swing_margin_deg: float = 0.0,
-        max_time_ratio: float = ...,
+        max_time_ratio: Optional[float] = None,
         base_plate: Optional[Sequence[Point]] = None,
         obstacles: Optional[Sequence[Sequence[Point]]] = None,
         link_width: float = 0.0,

@@ -36,7 +36,7 @@ impl DriveArgs {
         min_transmission_deg: Option<Real>,
         max_link_ratio: Option<Real>,
         swing_margin_deg: Real,
-        max_time_ratio: Real,
+        max_time_ratio: Option<Real>,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
         link_width: Real,
@@ -52,7 +52,8 @@ impl DriveArgs {
             link_width,
             travel_samples,
         )?;
-        let options = DriveOptions::from_degrees(swing_margin_deg.0, max_time_ratio.0).py()?;
+        let max_time_ratio = max_time_ratio.map_or(f64::INFINITY, |r| r.0);
+        let options = DriveOptions::from_degrees(swing_margin_deg.0, max_time_ratio).py()?;
         Ok(DriveArgs {
             limits: m.limits,
             options,
@@ -897,7 +898,7 @@ pub(crate) fn drive_map(
     min_transmission_deg: Option<Real>,
     max_link_ratio: Option<Real>,
     swing_margin_deg: Real,
-    max_time_ratio: Real,
+    max_time_ratio: Option<Real>,
     base_plate: Option<Vec<PyPoint>>,
     obstacles: Option<Vec<Vec<PyPoint>>>,
     link_width: Real,
@@ -940,7 +941,7 @@ pub(crate) fn drive(
     min_transmission_deg: Option<Real>,
     max_link_ratio: Option<Real>,
     swing_margin_deg: Real,
-    max_time_ratio: Real,
+    max_time_ratio: Option<Real>,
     base_plate: Option<Vec<PyPoint>>,
     obstacles: Option<Vec<Vec<PyPoint>>>,
     link_width: Real,
@@ -973,7 +974,7 @@ pub(crate) fn classic_drive(
     min_transmission_deg: Option<Real>,
     max_link_ratio: Option<Real>,
     swing_margin_deg: Real,
-    max_time_ratio: Real,
+    max_time_ratio: Option<Real>,
 ) -> PyResult<PyDrive> {
     let args = DriveArgs::new(
         limits,
@@ -1010,7 +1011,7 @@ pub(crate) fn drive_search(
     min_transmission_deg: Option<Real>,
     max_link_ratio: Option<Real>,
     swing_margin_deg: Real,
-    max_time_ratio: Real,
+    max_time_ratio: Option<Real>,
     base_plate: Option<Vec<PyPoint>>,
     obstacles: Option<Vec<Vec<PyPoint>>>,
     link_width: Real,
@@ -1059,7 +1060,7 @@ pub(crate) fn best_drive(
     min_transmission_deg: Option<Real>,
     max_link_ratio: Option<Real>,
     swing_margin_deg: Real,
-    max_time_ratio: Real,
+    max_time_ratio: Option<Real>,
     base_plate: Option<Vec<PyPoint>>,
     obstacles: Option<Vec<Vec<PyPoint>>>,
     link_width: Real,

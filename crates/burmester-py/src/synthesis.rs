@@ -1040,11 +1040,11 @@ impl PySynthesizedFourBar {
     // signatures here, the work in `crate::drive`.
 
     #[pyo3(signature = (*grid, attachment = None, limits = None, min_transmission_deg = None,
-        max_link_ratio = None, swing_margin_deg = Real(0.0), max_time_ratio = Real(f64::INFINITY),
+        max_link_ratio = None, swing_margin_deg = Real(0.0), max_time_ratio = None,
         base_plate = None, obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
         progress = None),
         text_signature = "($self, *grid, attachment=None, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=inf, base_plate=None, \
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
         obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
     #[allow(clippy::too_many_arguments)]
     fn drive_map(
@@ -1056,7 +1056,7 @@ impl PySynthesizedFourBar {
         min_transmission_deg: Option<Real>,
         max_link_ratio: Option<Real>,
         swing_margin_deg: Real,
-        max_time_ratio: Real,
+        max_time_ratio: Option<Real>,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
         link_width: Real,
@@ -1083,11 +1083,11 @@ impl PySynthesizedFourBar {
 
     #[pyo3(signature = (drive_pivot, attachment = None, *, limits = None,
         min_transmission_deg = None, max_link_ratio = None, swing_margin_deg = Real(0.0),
-        max_time_ratio = Real(f64::INFINITY), base_plate = None, obstacles = None,
+        max_time_ratio = None, base_plate = None, obstacles = None,
         link_width = Real(0.0), travel_samples = Count(64)),
         text_signature = "($self, drive_pivot, attachment=None, *, limits=None, \
         min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
-        max_time_ratio=inf, base_plate=None, obstacles=None, link_width=0.0, travel_samples=64)")]
+        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, travel_samples=64)")]
     #[allow(clippy::too_many_arguments)]
     fn drive(
         &self,
@@ -1097,7 +1097,7 @@ impl PySynthesizedFourBar {
         min_transmission_deg: Option<Real>,
         max_link_ratio: Option<Real>,
         swing_margin_deg: Real,
-        max_time_ratio: Real,
+        max_time_ratio: Option<Real>,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
         link_width: Real,
@@ -1121,10 +1121,10 @@ impl PySynthesizedFourBar {
 
     #[pyo3(signature = (attachment = None, *, beyond_first = true, drive_transmission_deg = None,
         limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = Real(f64::INFINITY)),
+        swing_margin_deg = Real(0.0), max_time_ratio = None),
         text_signature = "($self, attachment=None, *, beyond_first=True, \
         drive_transmission_deg=None, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=inf)")]
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None)")]
     #[allow(clippy::too_many_arguments)]
     fn classic_drive(
         &self,
@@ -1135,7 +1135,7 @@ impl PySynthesizedFourBar {
         min_transmission_deg: Option<Real>,
         max_link_ratio: Option<Real>,
         swing_margin_deg: Real,
-        max_time_ratio: Real,
+        max_time_ratio: Option<Real>,
     ) -> PyResult<crate::drive::PyDrive> {
         crate::drive::classic_drive(
             self,
@@ -1152,12 +1152,12 @@ impl PySynthesizedFourBar {
 
     #[pyo3(signature = (*, ratios = None, angles_deg = None, reach = Real(4.0),
         samples = Count(96), limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = Real(f64::INFINITY), base_plate = None,
+        swing_margin_deg = Real(0.0), max_time_ratio = None, base_plate = None,
         obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
         rank_by = "balanced", progress = None),
         text_signature = "($self, *, ratios=None, angles_deg=None, reach=4.0, samples=96, \
         limits=None, min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
-        max_time_ratio=inf, base_plate=None, obstacles=None, link_width=0.0, \
+        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, \
         travel_samples=64, rank_by='balanced', progress=None)")]
     #[allow(clippy::too_many_arguments)]
     fn drive_search(
@@ -1171,7 +1171,7 @@ impl PySynthesizedFourBar {
         min_transmission_deg: Option<Real>,
         max_link_ratio: Option<Real>,
         swing_margin_deg: Real,
-        max_time_ratio: Real,
+        max_time_ratio: Option<Real>,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
         link_width: Real,
@@ -1201,11 +1201,11 @@ impl PySynthesizedFourBar {
     }
 
     #[pyo3(signature = (*, limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = Real(f64::INFINITY), base_plate = None,
+        swing_margin_deg = Real(0.0), max_time_ratio = None, base_plate = None,
         obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
         rank_by = "balanced", progress = None),
         text_signature = "($self, *, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=inf, base_plate=None, \
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
         obstacles=None, link_width=0.0, travel_samples=64, rank_by='balanced', progress=None)")]
     #[allow(clippy::too_many_arguments)]
     fn best_drive(
@@ -1215,7 +1215,7 @@ impl PySynthesizedFourBar {
         min_transmission_deg: Option<Real>,
         max_link_ratio: Option<Real>,
         swing_margin_deg: Real,
-        max_time_ratio: Real,
+        max_time_ratio: Option<Real>,
         base_plate: Option<Vec<PyPoint>>,
         obstacles: Option<Vec<Vec<PyPoint>>>,
         link_width: Real,
