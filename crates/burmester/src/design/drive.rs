@@ -842,8 +842,10 @@ impl DriveContext {
                 self.options.max_time_ratio,
             ];
             let plate = !judge.prepared.is_empty();
-            let init = || RowScratch::new(grid);
+            // Made on a block's first row: a cancelled map allocates none.
+            let init = || None::<RowScratch>;
             return run_blocks_with(nx, ny, rows, control, init, |scratch, j0, mut block, n| {
+                let scratch = scratch.get_or_insert_with(|| RowScratch::new(grid));
                 for r in 0..n {
                     let y = grid.y(j0 + r);
                     Arch::new().dispatch(DriveRow {
