@@ -12,6 +12,7 @@ Commands::
     burmester atlas [TASK.toml] -o atlas.png  # both pivots at once: the best driving pivot per driven center
     burmester batch A.toml B.toml --top 5     # each task's best pivots, one JSON line per file
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
+    burmester drive [TASK.toml] -o six.gif    # a motor for the best linkage (an added dyad: a six-bar)
     burmester example > task.toml             # a task file to start from
 
 Without a task file, the commands use the built-in example. Without any
@@ -1173,6 +1174,96 @@ def _finite(text: str) -> float:
     return x
 
 
+# ---------------------------------------------------------------------------
+# burmester drive: a motor for a linkage whose input swings
+
+
+def _drive_linkage(args: argparse.Namespace, spec: TaskSpec) -> Tuple[burmester.SynthesizedFourBar, str]:
+    """The linkage ``burmester drive`` drives: the given pivot's, or the
+    best by ``--rank-by`` under the task's limits (three poses), the best
+    pair (four), the best Burmester linkage (five)."""
+    n = len(spec.poses)
+    if n == 5:
+        return _best_burmester_linkage(args, spec)
+    if n == 4:
+        if args.pivot is not None:
+            raise UsageError("--pivot is for three poses; a four-pose task drives its best pair of dyads")
+        best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1, rank_by=args.rank_by)
+        if not best_pairs:
+            raise UsageError(f"no acceptable pair of dyads for {spec.source}; see 'burmester pairs'")
+        return best_pairs[0].linkage, f"the best pair of dyads, A0 = {_fmt_point(best_pairs[0].driving.center)}"
+    filemon = spec.filemon()
+    if args.pivot is None:
+        best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view), args.rank_by)
+        if not best:
+            raise UsageError("no branch-free driving pivot in the view; give one with --pivot X Y")
+        pivot = best[0].center
+    else:
+        pivot = (args.pivot[0], args.pivot[1])
+    return filemon.four_bar(pivot), f"driving pivot A0 = {_fmt_point(pivot)}"
+
+
+def cmd_drive(args: argparse.Namespace) -> int:
+    """``burmester drive``: a motor for the task's linkage: the best added
+    dyad (the Watt II six-bar), as a table or JSON, drawn, animated or
+    exported."""
+    from burmester import drives
+
+    spec = _with_grid(_load(args.task), args.grid)
+    out: Optional[str] = args.output
+    if out is not None:
+        _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+        if args.map and (_is_cad(out) or out.lower().endswith(ANIMATION_TYPES)):
+            raise UsageError(f"--map draws a picture (.png, .pdf, ...), not {out}")
+    if not 0.0 <= args.margin < 90.0:
+        raise UsageError(f"--margin must be from 0 to 90 degrees, got {args.margin:g}")
+    if not args.max_time_ratio >= 1.0:
+        raise UsageError(f"--max-time-ratio must be at least 1, got {args.max_time_ratio:g}")
+    export = _export_module(out) if out is not None and _is_cad(out) and not args.map else None
+    sfb, what = _drive_linkage(args, spec)
+    bar = ProgressBar(sys.stderr, "burmester: drive search") if sys.stderr.isatty() else None
+    drive = sfb.best_drive(limits=spec.limits, swing_margin_deg=args.margin,
+                           max_time_ratio=args.max_time_ratio, rank_by=args.drive_rank_by,
+                           progress=bar)
+    if args.json:
+        doc = {
+            "task": spec.source,
+            "linkage": drives.linkage_record(sfb),
+            "drive": drives.drive_record(drive),
+        }
+        print(json.dumps(doc, indent=2))
+    else:
+        print(drives.drive_table(drive, f"{spec.source} ({what})"))
+    if out is None:
+        return 0
+    shown = sys.stderr if args.json else sys.stdout
+    if export is not None:
+        _write_cad(export.sixbar, out, drive, out, turn_samples=args.turn or 0, units=_units(args))
+    elif args.map:
+        plot = _plot_module()
+        e = drive.attachment
+        a0 = sfb.driving[0]
+        h = 1.25 * max(math.dist(a0, drive.drive_pivot), math.dist(a0, e))
+        dmap = sfb.drive_map(a0[0] - h, a0[0] + h, a0[1] - h, a0[1] + h, 400, 400, attachment=e,
+                             limits=spec.limits, swing_margin_deg=args.margin,
+                             max_time_ratio=args.max_time_ratio)
+        ax = plot.drive_map(dmap, rank_by=args.drive_rank_by)
+        _save(ax.figure, out, _picture_dpi(args))
+    elif out.lower().endswith(ANIMATION_TYPES):
+        plot = _plot_module()
+        try:
+            plot.animate_sixbar(drive, out, frames=args.frames or 120, fps=args.fps or 24)
+        except RuntimeError as err:
+            raise UsageError(str(err)) from None
+        except OSError as err:
+            raise UsageError(f"cannot write {out}: {err.strerror or err}") from None
+    else:
+        ax = _plot_module().sixbar(drive)
+        _save(ax.figure, out, _picture_dpi(args))
+    print(f"wrote {out}", file=shown)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``burmester`` command."""
     parser = _Parser(
@@ -1383,6 +1474,40 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", default=None, help="write to this .toml file instead of stdout")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_example)
+
+    p = sub.add_parser("drive", help="a motor for a linkage whose input swings: an added dyad (six-bar)",
+                       description="Find the best motor drive for the task's linkage: a crank-rocker "
+                                   "added to its input link (the Watt II six-bar), so a motor turning "
+                                   "a crank drives it through the poses.",
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("-o", "--output", default=None,
+                   help="also write the six-bar: a picture (.png, .pdf, ...), an animation over a "
+                        "crank turn (.gif, .mp4) or a CAD export (.dxf, .svg); with --map, the drive map")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
+                   help="three poses: the linkage's driving pivot A0 (default: the best by --rank-by)")
+    p.add_argument("--rank-by", choices=pv.RANKINGS, default="balanced",
+                   help="which linkage of the task to drive (default: balanced)")
+    p.add_argument("--drive-rank-by", choices=("balanced", "transmission", "compact"), default="balanced",
+                   help="which drive to pick (default: balanced)")
+    p.add_argument("--margin", type=_finite, default=0.0, metavar="DEG",
+                   help="swing the input this much beyond the first and last pose (default: 0, the "
+                        "strokes end at the poses)")
+    p.add_argument("--max-time-ratio", type=_finite, default=math.inf, metavar="Q",
+                   help="largest acceptable time ratio of the strokes (default: no limit)")
+    p.add_argument("--grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
+                   help="samples of the view when choosing the linkage")
+    p.add_argument("--map", action="store_true", help="-o draws the drive map of the best drive's attachment")
+    p.add_argument("--turn", type=_ranged(2, 10_000), default=None, metavar="N",
+                   help="CAD export: also draw the six-bar at N crank angles over a turn")
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None, help="animation: frames per crank turn (default 120)")
+    p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 24)")
+    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
+                   help="CAD export: the unit recorded (default mm)")
+    p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
+    p.set_defaults(func=cmd_drive)
     return parser
 
 

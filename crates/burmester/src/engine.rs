@@ -100,6 +100,12 @@ impl<'a> Control<'a> {
         }
     }
 
+    /// The cancel flag, if any (a computation made of parts passes it on to
+    /// each part's own control).
+    pub(crate) fn cancel_flag(&self) -> Option<&'a AtomicBool> {
+        self.cancel
+    }
+
     pub(crate) fn report(&self, done: usize, total: usize) {
         if let Some(p) = self.progress {
             p(done, total);
@@ -209,6 +215,57 @@ pub(crate) fn run_blocks_with<R: Rows, S>(
                 control.report(d, ny);
             }
         });
+    let done = done.into_inner();
+    if done < ny {
+        return Err(Error::Cancelled { done, total: ny });
+    }
+    Ok(())
+}
+
+/// [`run_blocks`] for rows whose samples can each take long (a drive map
+/// with obstacles checks a full crank turn per sample): `f(first_row, rows_data,
+/// rows)` returns whether it finished its row, and may stop early once the
+/// cancel flag is set (it gets `control` to poll); a row it did not finish
+/// is not counted as done.
+///
+/// # Errors
+///
+/// As [`run_blocks`].
+pub(crate) fn run_blocks_polled<R: Rows>(
+    nx: usize,
+    ny: usize,
+    data: R,
+    control: &Control<'_>,
+    f: impl Fn(usize, R, &Control<'_>) -> bool + Sync,
+) -> Result<()> {
+    let per = rows_per_block(nx, ny);
+    let mut blocks = Vec::with_capacity(ny.div_ceil(per));
+    let mut rest = data;
+    let mut j = 0;
+    while j < ny {
+        let n = per.min(ny - j);
+        let (block, tail) = rest.split_rows(n);
+        blocks.push((j, block, n));
+        rest = tail;
+        j += n;
+    }
+    let done = AtomicUsize::new(0);
+    blocks.into_par_iter().for_each(|(j0, block, n)| {
+        let mut rest = block;
+        let mut finished = 0;
+        while finished < n && !control.is_cancelled() {
+            let (row, tail) = rest.split_rows(1);
+            if !f(j0 + finished, row, control) {
+                break;
+            }
+            rest = tail;
+            finished += 1;
+        }
+        if finished > 0 {
+            let d = done.fetch_add(finished, Ordering::Relaxed) + finished;
+            control.report(d, ny);
+        }
+    });
     let done = done.into_inner();
     if done < ny {
         return Err(Error::Cancelled { done, total: ny });

@@ -438,6 +438,29 @@ impl Prepared {
         Some(true)
     }
 
+    /// How many intervals the clearance check starts from.
+    pub(crate) fn samples(&self) -> usize {
+        self.samples
+    }
+
+    /// Whether the segments, as capsules of the links' width inflated by
+    /// `extra`, clear every obstacle (the six-bar's check over a crank
+    /// turn, `design::drive`).
+    pub(crate) fn segments_clear(
+        &self,
+        segments: &[(Point2<f64>, Point2<f64>)],
+        extra: f64,
+    ) -> bool {
+        let v = |p: Point2<f64>| PVector::new(p.x, p.y);
+        let identity = parry2d_f64::math::Pose::identity();
+        segments.iter().all(|&(a, b)| {
+            let cap = Capsule::new(v(a), v(b), self.radius + extra);
+            self.obstacles.iter().all(|o| {
+                !intersection_test(&identity, &cap, &identity, o).map_or(true, |r| r.intersecting)
+            })
+        })
+    }
+
     /// Whether the moving links clear every obstacle over the whole travel
     /// (module docs).
     pub(crate) fn clearance_ok(&self, fb: &SynthesizedFourBar) -> bool {
