@@ -18,7 +18,9 @@
 
 use std::hint::black_box;
 
-use burmester::{AssemblyMode, Constraints, Control, DesignLimits, FourBar, Grid, Method, example};
+use burmester::{
+    AssemblyMode, Constraints, Control, DesignLimits, FourBar, Grid, Method, RankBy, example,
+};
 use criterion::{
     BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group, criterion_main,
 };
@@ -134,8 +136,16 @@ fn scaling(c: &mut Criterion) {
             |b, _| {
                 pool.install(|| {
                     b.iter(|| {
-                        task.pivot_atlas(&driven, &driving, &limits, &none, &control)
-                            .unwrap()
+                        task.pivot_atlas(
+                            &driven,
+                            &driving,
+                            &limits,
+                            &none,
+                            // The ranking of the measured logs.
+                            RankBy::Transmission,
+                            &control,
+                        )
+                        .unwrap()
                     })
                 })
             },

@@ -885,6 +885,7 @@ fn constraints_hold_over_the_whole_turn() {
         obstacles: vec![obstacle.clone()],
         link_width: 0.0,
         travel_samples: 64,
+        envelope: None,
     };
     let ctx = DriveContext::new(
         &sfb,
@@ -904,6 +905,29 @@ fn constraints_hold_over_the_whole_turn() {
         &Constraints::none(),
     )
     .unwrap();
+    // An envelope would go unchecked over the crank's turn: refused.
+    let big = 1e6;
+    let with_envelope = Constraints {
+        envelope: Some(vec![
+            P::new(-big, -big),
+            P::new(big, -big),
+            P::new(big, big),
+            P::new(-big, big),
+        ]),
+        ..Constraints::none()
+    };
+    let refused = DriveContext::new(
+        &sfb,
+        e,
+        &grid,
+        &anything(),
+        &DriveOptions::default(),
+        &with_envelope,
+    );
+    assert!(
+        matches!(&refused, Err(burmester::Error::InvalidInput(burmester::InvalidInput::UnknownName { found, .. })) if found == "envelope"),
+        "{refused:?}"
+    );
     let map = ctx.map(&Control::new()).unwrap();
     let base = free.map(&Control::new()).unwrap();
     // Whether the segment a-b meets the open square (Liang-Barsky clipping).

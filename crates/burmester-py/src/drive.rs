@@ -101,6 +101,7 @@ fn constraints_of(s: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize)) -> C
         obstacles: s.1.into_iter().map(pts).collect(),
         link_width: s.2,
         travel_samples: s.3,
+        envelope: None,
     }
 }
 

@@ -720,7 +720,8 @@ impl DriveContext {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] for invalid limits, options or constraints, or a
+    /// [`InvalidInput`] for invalid limits, options or constraints (an
+    /// envelope among them: it is not checked over the crank's turn), or a
     /// non-finite attachment; [`DriveError::NoTravel`] for a linkage
     /// that does not carry the coupler through its poses in order in one
     /// mode; [`DriveError::TravelTooLarge`] when the travel with its margins
@@ -738,6 +739,16 @@ impl DriveContext {
         limits.validate()?;
         options.validate()?;
         constraints.prepare()?;
+        if constraints.envelope.is_some() {
+            // The whole-turn checks cover the base plate and the obstacles;
+            // an envelope would go unchecked, so it is refused.
+            return Err(InvalidInput::UnknownName {
+                what: "drive constraint",
+                expected: "base_plate, obstacles, link_width and travel_samples (a drive map does not check an envelope)",
+                found: "envelope".to_owned(),
+            }
+            .into());
+        }
         finite_point(["attachment x", "attachment y"], attachment)?;
         let swing = swing_of(linkage, attachment, options)?;
         Ok(DriveContext {
