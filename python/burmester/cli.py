@@ -967,11 +967,11 @@ def design_document(spec: TaskSpec, report: burmester.DesignReport) -> Dict[str,
 def cmd_design(args: argparse.Namespace) -> int:
     """``burmester design``: the best linkages for the task's poses inside its
     space, both fixed pivots searched (three poses), drawn with ``-o``."""
-    spec = _load(args.task)  # the task file's errors first
+    spec = _with_units(_load(args.task), args)  # the task file's errors first
     out: Optional[str] = args.output
     if out is not None:
         _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
-        units = _units(args)
+        units = _units(args, spec)
         animated = out.lower().endswith(ANIMATION_TYPES)
         if not animated and (args.frames is not None or args.fps is not None):
             raise UsageError(f"--frames and --fps are for animations (.gif, .mp4), not {out}")
@@ -1209,7 +1209,7 @@ def cmd_drive(args: argparse.Namespace) -> int:
     exported."""
     from burmester import drives
 
-    spec = _with_grid(_load(args.task), args.grid)
+    spec = _with_units(_with_grid(_load(args.task), args.grid), args)
     out: Optional[str] = args.output
     if out is not None:
         _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
@@ -1238,7 +1238,7 @@ def cmd_drive(args: argparse.Namespace) -> int:
         return 0
     shown = sys.stderr if args.json else sys.stdout
     if export is not None:
-        _write_cad(export.sixbar, out, drive, out, turn_samples=args.turn or 0, units=_units(args))
+        _write_cad(export.sixbar, out, drive, out, turn_samples=args.turn or 0, units=_units(args, spec))
     elif args.map:
         plot = _plot_module()
         e = drive.attachment
@@ -1344,8 +1344,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="animation frames per second, 1 to 240 (default: 20)")
     p.add_argument("--travel", type=_ranged(2, 10_000), default=None, metavar="N",
                    help="CAD export: also draw the linkage at N positions over its travel")
-    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
-                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--dpi", type=_dpi, default=None,
                    help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--scheduler", metavar="ADDRESS", default=None,
@@ -1503,8 +1502,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="CAD export: also draw the six-bar at N crank angles over a turn")
     p.add_argument("--frames", type=_ranged(2, 10_000), default=None, help="animation: frames per crank turn (default 120)")
     p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 24)")
-    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
-                   help="CAD export: the unit recorded (default mm)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_drive)
