@@ -294,9 +294,10 @@ def pivot_atlas(
         rows: Optional[Progress] = None
         if progress is not None:
             cb = progress
-            # The kernel counts driven centers; report rows, as on Dask.
+            # The kernel counts driving rows over all driven centers (a
+            # center's map can take seconds); report driven rows, as on Dask.
             def rows(done: int, total: int) -> object:
-                return cb(done // dg.nx, dg.ny)
+                return cb(done * dg.ny // max(total, 1), dg.ny)
         arrays = dict(_atlas_tile(task, dg, 0, dg.ny, vg, progress=rows, **opts))
     else:
         try:

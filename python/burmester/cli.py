@@ -33,6 +33,7 @@ from typing import IO, TYPE_CHECKING, Any, Callable, Dict, List, Literal, NoRetu
 import numpy as np
 
 import burmester
+from burmester import _io
 from burmester import pivots as pv
 from burmester import taskfile
 from burmester._burmester import Grid, Pivot
@@ -156,13 +157,29 @@ def _plot_module() -> ModuleType:
     return plot
 
 
-def _save(fig: Any, path: str, dpi: int) -> None:
+def _written(path: str, force: bool, write: Callable[[Path], Any]) -> None:
+    """Write an output by ``write(tmp)`` through :mod:`burmester._io`: whole
+    to a temporary file beside it, moved into place when complete, never
+    replacing an existing file without ``--force`` (decided at the move);
+    on an error or Ctrl-C nothing is left and an existing file is kept."""
+    try:
+        with _io.atomic_path(path, overwrite=force) as tmp:
+            write(tmp)
+    except FileExistsError:
+        raise UsageError(
+            f"{path} exists (it was created while this command ran); give another file name, "
+            "or --force to replace it"
+        ) from None
+    except OSError as e:
+        kept = f"; {path} is unchanged" if Path(path).exists() else ""
+        raise UsageError(f"cannot write {path}: {e.strerror or e}{kept}") from None
+
+
+def _save(fig: Any, path: str, dpi: int, force: bool) -> None:
     import matplotlib.pyplot as plt
 
     try:
-        fig.savefig(path, dpi=dpi, bbox_inches="tight")
-    except OSError as e:
-        raise UsageError(f"cannot write {path}: {e.strerror or e}") from None
+        _written(path, force, lambda tmp: fig.savefig(tmp, dpi=dpi, bbox_inches="tight"))
     finally:
         plt.close(fig)
 
@@ -216,12 +233,10 @@ def _picture_dpi(args: argparse.Namespace) -> int:
     return DEFAULT_DPI if args.dpi is None else int(args.dpi)
 
 
-def _write_cad(write: Callable[..., Any], out: str, *args: Any, **kwargs: Any) -> None:
-    """Call an export function, turning a file system error into a UsageError."""
-    try:
-        write(*args, **kwargs)
-    except OSError as e:
-        raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
+def _write_cad(write: Callable[..., Any], out: str, force: bool, *args: Any, **kwargs: Any) -> None:
+    """Call an export function with the output ``out`` (among ``args``)
+    through :func:`_written`."""
+    _written(out, force, lambda tmp: write(*(tmp if a is out else a for a in args), **kwargs))
 
 
 def _output(path: str, types: Sequence[str], force: bool) -> str:
@@ -269,7 +284,8 @@ def cmd_map(args: argparse.Namespace) -> int:
     view = spec.view
     if args.plane == "circle":
         if export is not None:
-            _write_cad(export.plane, args.output, filemon, args.output, plane="circle", units=units)
+            _write_cad(export.plane, args.output, args.force, filemon, args.output, plane="circle",
+                       units=units)
         else:
             assert plot is not None
             ax = plot.circle_plane(filemon)
@@ -291,7 +307,7 @@ def cmd_map(args: argparse.Namespace) -> int:
             ranked, _ = pv.rank(smap, args.pivots, pv.default_spacing(view))
             marks = [p.center for p in ranked]
         if export is not None:
-            _write_cad(export.plane, args.output, filemon, args.output, view, free=free, pivots=marks,
+            _write_cad(export.plane, args.output, args.force, filemon, args.output, view, free=free, pivots=marks,
                        acceptable=acceptable, transmission=transmission, units=units)
         else:
             assert plot is not None
@@ -305,7 +321,7 @@ def cmd_map(args: argparse.Namespace) -> int:
         if smap is not None:
             summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
     if export is None:
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -327,7 +343,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     task = spec.task()
     driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
     if export is not None:
-        _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent,
+        _write_cad(export.burmester_plane, args.output, args.force, task, args.output, spec.view.extent,
                    driven=driven, plane=args.plane, units=units)
     elif circle:
         assert plot is not None
@@ -352,7 +368,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
         listed = ", ".join(_fmt_point(c) for c, _ in pts)
         summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
     if export is None:
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -423,7 +439,7 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     if plot is not None and output is not None:
         ax = plot.atlas(atlas)
         ax.set_title(f"pivot-pair atlas of {spec.source}")
-        _save(ax.figure, output, args.dpi)
+        _save(ax.figure, output, args.dpi, args.force)
         summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
                    f"have an acceptable driving pivot")
         if best:
@@ -601,24 +617,22 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         task = filemon.task
         what = f"driving pivot A0 = {_fmt_point(pivot)}"
     if export is not None:
-        _write_cad(export.linkage, out, sfb, out, task=task, travel_samples=args.travel or 0, units=units)
+        _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
+                   units=units)
     elif animated:
         plot = _plot_module()
         frames = 60 if args.frames is None else args.frames
         fps = 20 if args.fps is None else args.fps
         try:
-            anim = plot.animate(sfb, out, task=task, frames=frames, fps=fps)
+            _written(out, args.force, lambda tmp: plot.animate(sfb, tmp, task=task, frames=frames, fps=fps))
         except RuntimeError as e:
             raise UsageError(str(e)) from None
-        except OSError as e:
-            raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
-        del anim
         import matplotlib.pyplot as plt
 
         plt.close("all")
     else:
         ax = _plot_module().linkage(sfb, task=task)
-        _save(ax.figure, out, _picture_dpi(args))
+        _save(ax.figure, out, _picture_dpi(args), args.force)
     state = "branch-free" if sfb.branch_free else "has a branch defect"
     print(f"wrote {out}: four-bar with {what}, {sfb.fourbar.grashof}, {state}")
     return 0
@@ -720,7 +734,7 @@ def cmd_pairs(args: argparse.Namespace) -> int:
     pairs = pmap.best_pairs(args.top, rank_by=args.rank_by)
     if args.output is not None:
         ax = _plot_module().pair_map(pmap, pairs=args.top, rank_by=args.rank_by)
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     if args.json:
         doc = {
             "task": spec.source,
@@ -823,13 +837,7 @@ def cmd_example(args: argparse.Namespace) -> int:
         sys.stdout.write(text)
         return 0
     _output(args.output, (".toml",), args.force)
-    try:
-        with open(args.output, "w" if args.force else "x", encoding="utf-8") as fh:
-            fh.write(text)
-    except FileExistsError:
-        raise UsageError(f"{args.output} exists; give another file name, or --force to replace it") from None
-    except OSError as e:
-        raise UsageError(f"cannot write {args.output}: {e.strerror or e}") from None
+    _written(args.output, args.force, lambda tmp: tmp.write_text(text, encoding="utf-8"))
     print(f"wrote {args.output}")
     return 0
 

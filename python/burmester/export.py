@@ -123,6 +123,7 @@ import numpy as np
 import numpy.typing as npt
 
 import burmester
+from burmester import _io
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
     DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
@@ -869,7 +870,11 @@ _WRITERS = {".dxf": _write_dxf, ".svg": _write_svg}
 
 
 def _write(d: _Drawing, path: Path, units: str) -> Path:
-    _WRITERS[path.suffix.lower()](d, path, units)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io): a write error or Ctrl-C leaves no partial file and
+    # an existing one as it was.
+    with _io.atomic_path(path) as tmp:
+        _WRITERS[path.suffix.lower()](d, tmp, units)
     return path
 
 

@@ -59,6 +59,7 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     ) from e
 
 import burmester
+from burmester import _io
 from burmester._burmester import Filemon, Grid, PairMap, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
     DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
@@ -1135,7 +1136,20 @@ def animate(
 
     anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
     writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
-    anim.save(str(path), writer=writer, dpi=dpi)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io): Ctrl-C or a write error leaves no partial file.
+    with _io.atomic_path(path) as tmp:
+        try:
+            anim.save(str(tmp), writer=writer, dpi=dpi)
+        except Exception as e:
+            # The writer finishes its file in a `finally`; after Ctrl-C that
+            # can fail too (no frames yet) and hide the interrupt.
+            cause: Optional[BaseException] = e
+            while cause is not None:
+                if isinstance(cause, KeyboardInterrupt):
+                    raise cause from None
+                cause = cause.__context__
+            raise
     return anim
 
 

@@ -88,6 +88,26 @@ impl<'a> Control<'a> {
         self.cancel.is_some_and(|c| c.load(Ordering::Relaxed))
     }
 
+    /// The cancel flag, if any (for work that checks it deeper than the
+    /// engine's rows: a linkage's clearance, a ranking's selection).
+    pub(crate) fn cancel_flag(&self) -> Option<&'a AtomicBool> {
+        self.cancel
+    }
+
+    /// [`Error::Cancelled`] after `done` of `total` units when the cancel
+    /// flag is set.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Cancelled`] when the flag is set.
+    pub(crate) fn check(&self, done: usize, total: usize) -> Result<()> {
+        if self.is_cancelled() {
+            Err(Error::Cancelled { done, total })
+        } else {
+            Ok(())
+        }
+    }
+
     pub(crate) fn report(&self, done: usize, total: usize) {
         if let Some(p) = self.progress {
             p(done, total);
@@ -138,25 +158,29 @@ pub(crate) fn run_blocks<R: Rows>(
     control: &Control<'_>,
     f: impl Fn(usize, R, usize) + Sync,
 ) -> Result<()> {
-    run_blocks_with(nx, ny, data, control, || (), |(), j, rows, n| f(j, rows, n))
+    run_blocks_with(nx, ny, data, control, || Ok(()), |(), j, rows, n| f(j, rows, n))
 }
 
 /// [`run_blocks`] with a scratch value made by `init` once per block and
-/// lent to `f` for each of its rows (buffers a row's work reuses).
+/// lent to `f` for each of its rows (buffers a row's work reuses; `init`
+/// fails with [`Error::OutOfMemory`] when they cannot be allocated).
 ///
 /// # Errors
 ///
-/// As [`run_blocks`].
+/// As [`run_blocks`]; the first error of `init`.
 pub(crate) fn run_blocks_with<R: Rows, S>(
     nx: usize,
     ny: usize,
     data: R,
     control: &Control<'_>,
-    init: impl Fn() -> S + Sync,
+    init: impl Fn() -> Result<S> + Sync,
     f: impl Fn(&mut S, usize, R, usize) + Sync,
 ) -> Result<()> {
     let per = rows_per_block(nx, ny);
-    let mut blocks = Vec::with_capacity(ny.div_ceil(per));
+    let mut blocks = Vec::new();
+    blocks
+        .try_reserve_exact(ny.div_ceil(per))
+        .map_err(|_| crate::error::out_of_memory::<(usize, R, usize)>("blocks", ny / per))?;
     let mut rest = data;
     let mut j = 0;
     while j < ny {
@@ -167,13 +191,22 @@ pub(crate) fn run_blocks_with<R: Rows, S>(
         j += n;
     }
     let done = AtomicUsize::new(0);
+    let failed: std::sync::Mutex<Option<Error>> = std::sync::Mutex::new(None);
     blocks.into_par_iter().for_each(|(j0, block, n)| {
         // Row by row, checking the cancel flag before each: a block of
         // costly samples (a solution map with obstacles) can take seconds,
         // a row a small fraction of that.
         let mut rest = block;
         let mut finished = 0;
-        let mut scratch = init();
+        let mut scratch = match init() {
+            Ok(s) => s,
+            Err(e) => {
+                if let Ok(mut f) = failed.lock() {
+                    f.get_or_insert(e);
+                }
+                return;
+            }
+        };
         while finished < n && !control.is_cancelled() {
             let (row, tail) = rest.split_rows(1);
             f(&mut scratch, j0 + finished, row, 1);
@@ -185,8 +218,14 @@ pub(crate) fn run_blocks_with<R: Rows, S>(
             control.report(d, ny);
         }
     });
+    if let Some(e) = failed.into_inner().ok().flatten() {
+        return Err(e);
+    }
     let done = done.into_inner();
-    if done < ny {
+    // Work inside a row that checks the flag itself (a linkage's
+    // clearance) may have cut its last row short: a run during which the
+    // flag was set is cancelled even when every row was reached.
+    if done < ny || control.is_cancelled() {
         return Err(Error::Cancelled { done, total: ny });
     }
     Ok(())

@@ -24,6 +24,8 @@
 //! [`Constraints::MIN_STEP`]. Below that the linkage counts as colliding:
 //! "acceptable" never admits a linkage that is not certified clear.
 
+use core::sync::atomic::{AtomicBool, Ordering};
+
 use nalgebra::Point2;
 use parry2d_f64::math::Vector as PVector;
 use parry2d_f64::query::intersection_test;
@@ -76,6 +78,13 @@ impl Constraints {
     /// The largest magnitude of a vertex coordinate.
     pub const MAX_COORDINATE: f64 = 1e100;
 
+    /// The most vertices of one polygon (the base plate, an obstacle): each
+    /// candidate pivot is tested against every edge of the base plate and
+    /// each clearance test walks an obstacle's vertices, so the work grows
+    /// with them. A circle of a few hundred vertices is within `1e-4` of
+    /// its radius; approximate finer outlines.
+    pub const MAX_POLYGON_VERTICES: usize = 4096;
+
     /// The smallest input step (radians) of the clearance refinement: an
     /// interval that cannot be certified clear at this width counts as a
     /// collision.
@@ -92,8 +101,9 @@ impl Constraints {
     ///
     /// [`InvalidInput`] for a non-finite or too large vertex, a negative or
     /// non-finite `link_width`, a travel sample count out of range, a base
-    /// plate that is not a simple polygon with an area, or an obstacle
-    /// without an area.
+    /// plate that is not a simple polygon with an area, an obstacle
+    /// without an area, or a polygon of more than
+    /// [`Constraints::MAX_POLYGON_VERTICES`] vertices.
     pub(crate) fn prepare(&self) -> Result<Prepared> {
         const RESCALE: &str = "rescale the constraints with the task";
         for p in self
@@ -152,6 +162,9 @@ fn check_polygon(name: &str, pts: &[Point2<f64>], simple: bool) -> Result<(), In
     if pts.len() < 3 {
         return Err(bad(PolygonProblem::TooFewVertices));
     }
+    if pts.len() > Constraints::MAX_POLYGON_VERTICES {
+        return Err(bad(PolygonProblem::TooManyVertices));
+    }
     if !spans_area(pts) {
         return Err(bad(PolygonProblem::NoArea));
     }
@@ -185,7 +198,10 @@ fn spans_area(pts: &[Point2<f64>]) -> bool {
 }
 
 /// Whether two edges of the closed polygon cross or touch (adjacent edges
-/// share only their common vertex).
+/// share only their common vertex). The edges are swept by their smallest
+/// `x` so that only edges whose `x` extents overlap are compared: `n log n`
+/// for the outlines of parts, at most `n^2 / 2` tests (`n` is at most
+/// [`Constraints::MAX_POLYGON_VERTICES`]).
 fn self_intersects(pts: &[Point2<f64>]) -> bool {
     let n = pts.len();
     let edge = |i: usize| (pts[i], pts[(i + 1) % n]);
@@ -207,21 +223,32 @@ fn self_intersects(pts: &[Point2<f64>]) -> bool {
             || on(a, b, c)
             || on(a, b, d)
     };
+    let adjacent = |i: usize, j: usize| {
+        let (i, j) = (i.min(j), i.max(j));
+        j == i + 1 || (i == 0 && j == n - 1)
+    };
+    // Adjacent edges share a vertex; they overlap only if they fold back on
+    // each other along one line.
     for i in 0..n {
-        for j in i + 1..n {
-            if j == i + 1 || (i == 0 && j == n - 1) {
-                // Adjacent edges share a vertex; they overlap only if they
-                // fold back on each other along one line.
-                let (shared, p, q) = if j == i + 1 {
-                    (pts[j], pts[i], pts[(j + 1) % n])
-                } else {
-                    (pts[0], pts[1], pts[n - 1])
-                };
-                let (u, v) = (p - shared, q - shared);
-                if cross(u, v) == 0.0 && u.dot(&v) > 0.0 {
-                    return true;
-                }
-            } else if meet(edge(i), edge(j)) {
+        let (p, shared, q) = (pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n]);
+        let (u, v) = (p - shared, q - shared);
+        if cross(u, v) == 0.0 && u.dot(&v) > 0.0 {
+            return true;
+        }
+    }
+    let x_range = |i: usize| {
+        let (a, b) = edge(i);
+        (a.x.min(b.x), a.x.max(b.x))
+    };
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_unstable_by(|&a, &b| x_range(a).0.total_cmp(&x_range(b).0));
+    for (k, &i) in order.iter().enumerate() {
+        let right = x_range(i).1;
+        for &j in &order[k + 1..] {
+            if x_range(j).0 > right {
+                break;
+            }
+            if !adjacent(i, j) && meet(edge(i), edge(j)) {
                 return true;
             }
         }
@@ -281,8 +308,15 @@ impl Prepared {
     }
 
     /// Whether the moving links clear every obstacle over the whole travel
-    /// (module docs).
-    pub(crate) fn clearance_ok(&self, fb: &SynthesizedFourBar) -> bool {
+    /// (module docs). One test can take milliseconds to seconds (thousands
+    /// of travel samples, refined), so it checks `cancel` between
+    /// intervals and fails once it is set (the computation it serves is
+    /// then cancelled and its answer dropped).
+    pub(crate) fn clearance_ok(
+        &self,
+        fb: &SynthesizedFourBar,
+        cancel: Option<&AtomicBool>,
+    ) -> bool {
         if self.obstacles.is_empty() {
             return true;
         }
@@ -300,9 +334,10 @@ impl Prepared {
         let n = self.samples;
         let step = span / n as f64;
         // n intervals of width |step|, each checked at its middle.
+        let go = Go(cancel);
         (0..n).all(|k| {
             let mid = start + step * (k as f64 + 0.5);
-            self.interval_clear(fb, mode, mid, 0.5 * step.abs(), rate)
+            go.on() && self.interval_clear(fb, mode, mid, 0.5 * step.abs(), rate, go)
         })
     }
 
@@ -315,6 +350,7 @@ impl Prepared {
         mid: f64,
         half: f64,
         rate: f64,
+        go: Go<'_>,
     ) -> bool {
         match self.clear_at(fb, mode, mid, rate * half) {
             Some(true) => return true,
@@ -322,12 +358,27 @@ impl Prepared {
             Some(false) => {}
         }
         // A hit of the plain capsules is a collision.
-        if self.clear_at(fb, mode, mid, 0.0) != Some(true) || half < Constraints::MIN_STEP {
+        if self.clear_at(fb, mode, mid, 0.0) != Some(true)
+            || half < Constraints::MIN_STEP
+            || !go.on()
+        {
             return false;
         }
         let q = 0.5 * half;
-        self.interval_clear(fb, mode, mid - q, q, rate)
-            && self.interval_clear(fb, mode, mid + q, q, rate)
+        self.interval_clear(fb, mode, mid - q, q, rate, go)
+            && self.interval_clear(fb, mode, mid + q, q, rate, go)
+    }
+}
+
+/// Whether a clearance test may go on: its computation's cancel flag is
+/// not set.
+#[derive(Clone, Copy)]
+struct Go<'a>(Option<&'a AtomicBool>);
+
+impl Go<'_> {
+    #[inline]
+    fn on(self) -> bool {
+        self.0.is_none_or(|c| !c.load(Ordering::Relaxed))
     }
 }
 
