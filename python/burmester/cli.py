@@ -259,6 +259,72 @@ def _output(path: str, types: Sequence[str], force: bool) -> str:
     return path
 
 
+# ---------------------------------------------------------------------------
+# Memory: what cannot fit is refused before the work
+
+
+#: What a command holds at its peak besides its grid (the interpreter,
+#: NumPy, matplotlib), bytes.
+MEMORY_BASE = 128 * 2**20
+
+#: Peak bytes per grid sample (measured with ``ru_maxrss`` on 1000 x 1000
+#: and 2000 x 2000 grids, rounded up): a picture of the center-point plane
+#: (the branch map and matplotlib's image buffers, about 60), with the
+#: solution map overlaid (about 110), a CAD export (about 30), a solution
+#: map ranked (``pivots``, ``linkage``: about 20).
+MEMORY_PER_SAMPLE = {"picture": 64, "picture+design": 128, "cad": 32, "cad+design": 64, "ranking": 32}
+
+
+def _available_memory() -> Optional[int]:
+    """Bytes this process can still allocate: the memory the system has
+    available (``MemAvailable``) and what an address-space limit leaves,
+    whichever is less; None where neither can be read."""
+    avail: Optional[int] = None
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    avail = int(line.split()[1]) * 1024
+    except (OSError, ValueError):
+        pass
+    try:
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+        if soft != resource.RLIM_INFINITY:
+            used = 0
+            with open("/proc/self/status", encoding="ascii") as fh:
+                for line in fh:
+                    if line.startswith("VmSize:"):
+                        used = int(line.split()[1]) * 1024
+            left = max(0, soft - used)
+            avail = left if avail is None else min(avail, left)
+    except (ImportError, OSError, ValueError):
+        pass
+    return avail
+
+
+def _fmt_bytes(n: float) -> str:
+    return f"{n / 2**30:.1f} GB" if n >= 2**30 else f"{n / 2**20:.0f} MB"
+
+
+def _check_memory(nx: int, ny: int, kind: str, what: str, flag: str) -> None:
+    """Refuse up front a grid of ``nx`` by ``ny`` samples whose work of
+    ``kind`` (:data:`MEMORY_PER_SAMPLE`) cannot fit in the memory left,
+    saying how much it needs and what fits."""
+    per = MEMORY_PER_SAMPLE[kind]
+    need = MEMORY_BASE + nx * ny * per
+    avail = _available_memory()
+    if avail is None or need <= avail:
+        return
+    side = max(2, math.isqrt(max(0, avail - MEMORY_BASE) // per))
+    raise UsageError(
+        f"{what} on {nx} x {ny} samples needs about {_fmt_bytes(need)} of memory ({per} bytes a "
+        f"sample), more than the {_fmt_bytes(avail)} available; use a coarser {flag} (about "
+        f"{side} x {side} fits)"
+    )
+
+
 def _fmt_point(p: Sequence[float]) -> str:
     """``(x, y)`` to three decimals; a coordinate that rounds to zero reads
     0.000, not -0.000."""
@@ -276,6 +342,10 @@ def cmd_map(args: argparse.Namespace) -> int:
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
     units = _units(args)
     cad = _is_cad(args.output)
+    if len(spec.poses) == 3:  # the grid is the branch map's (four and five poses trace curves)
+        design = "+design" if args.design or args.pivots > 0 else ""
+        _check_memory(spec.view.nx, spec.view.ny, ("cad" if cad else "picture") + design,
+                      f"drawing {args.output}", "--grid")
     export = _export_module(args.output) if cad else None
     plot = None if cad else _plot_module()
     if len(spec.poses) > 3:
@@ -543,6 +613,7 @@ def cmd_pivots(args: argparse.Namespace) -> int:
     if len(spec.poses) == 5:
         return _pivots_five(args, spec)
     spec = _with_grid(spec, args.grid)
+    _check_memory(spec.view.nx, spec.view.ny, "ranking", "the solution map", "--grid")
     spacing = _spacing(spec, args.spacing)
     if args.json:
         doc = pv.report(spec, args.top, spacing, progress_for(spec.view, "solution map", 16), args.rank_by)
@@ -665,6 +736,7 @@ def _pair_map(spec: TaskSpec, samples: int) -> burmester.PairMap:
         raise UsageError(f"pairs is for four poses (the pair map); {spec.source} has {n} poses")
     if not 2 <= samples <= 20000:
         raise UsageError(f"--samples must be from 2 to 20000, got {samples}")
+    _check_memory(samples, samples, "ranking", "the pair map", "--samples")
     big = samples * samples >= PROGRESS_MIN_POINTS
     bar = ProgressBar(sys.stderr, "burmester: pair map") if big and sys.stderr.isatty() else None
     return spec.task().pair_map(samples, limits=spec.limits, progress=bar)
@@ -730,6 +802,7 @@ def cmd_pairs(args: argparse.Namespace) -> int:
     spec = _load(args.task)  # the task file's errors first
     if args.output is not None:
         _output(args.output, PICTURE_TYPES, args.force)
+        _check_memory(args.samples, args.samples, "picture", f"drawing {args.output}", "--samples")
     pmap = _pair_map(spec, args.samples)
     pairs = pmap.best_pairs(args.top, rank_by=args.rank_by)
     if args.output is not None:

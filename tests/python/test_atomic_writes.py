@@ -290,3 +290,42 @@ def test_ctrl_c_while_writing_leaves_no_partial_file(tmp_path, force):
     assert p.returncode == 130 and "interrupted" in err, (p.returncode, err)
     assert (out.read_bytes() == OLD) if force else not out.exists()
     assert leftovers(tmp_path) == (["l.gif"] if force else [])
+
+
+# ---------------------------------------------------------------------------
+# What cannot fit in memory is refused up front (issue 24, item 9:
+# `map --grid 20000 20000 -o x.png` grew to 24 GB and was killed)
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="RLIMIT_AS and /proc")
+@pytest.mark.parametrize("argv", [
+    ["map", "--grid", "20000", "20000", "-o", "{dir}/x.png"],
+    ["map", "--grid", "20000", "20000", "-o", "{dir}/x.dxf"],
+    ["pivots", "--grid", "20000", "20000"],
+])
+def test_a_grid_that_cannot_fit_is_refused_before_the_work(tmp_path, argv):
+    # A real limit: 2 GiB of address space for the command.
+    child = ("import resource, sys; resource.setrlimit(resource.RLIMIT_AS, (2**31, 2**31)); "
+             "from burmester.cli import main; sys.exit(main(sys.argv[1:]))")
+    args = [a.format(dir=tmp_path) for a in argv]
+    t0 = time.monotonic()
+    p = subprocess.run([sys.executable, "-c", child, *args], capture_output=True, text=True, timeout=120,
+                       env={**os.environ, "MPLBACKEND": "Agg"})
+    assert p.returncode == 2, (p.returncode, p.stderr[-2000:])
+    assert "on 20000 x 20000 samples needs about" in p.stderr and "use a coarser --grid" in p.stderr, p.stderr
+    assert "fits)" in p.stderr
+    assert leftovers(tmp_path) == []
+
+
+def test_the_memory_check_uses_the_memory_left(monkeypatch, tmp_path, capsys):
+    monkeypatch.setattr(cli, "_available_memory", lambda: 4 * 2**30)
+    out = tmp_path / "x.png"
+    assert cli.main(["map", "--grid", "20000", "20000", "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    # 128 MiB + 4e8 samples x 64 bytes = 24.0 GiB, against 4 GiB: the
+    # square that fits is sqrt((4 GiB - 128 MiB) / 64) = 8062 a side.
+    assert "needs about 24.0 GB of memory (64 bytes a sample), more than the 4.0 GB available" in err, err
+    assert "about 8062 x 8062 fits" in err, err
+    assert not out.exists()
+    # A grid that fits goes on.
+    assert cli.main(["map", "--grid", "100", "100", "-o", str(out)]) == 0 and out.exists()

@@ -195,6 +195,8 @@ impl Task {
         let per_cell = driving.ny();
         let total = cells_in_all.saturating_mul(per_cell);
         let done = AtomicUsize::new(0);
+        // The total at once, so that a follower sees the work begin.
+        control.report(0, total);
         let xs = DrivingKernel::padded_xs(driving)?;
         let failed: std::sync::Mutex<Option<Error>> = std::sync::Mutex::new(None);
         let fail = |e: Error| {
@@ -215,9 +217,7 @@ impl Task {
                 let centers: Vec<Point2<f64>> = (m * CHUNK..m * CHUNK + chunk.len())
                     .map(|k| driven.point(k % nx, rows.start + k / nx))
                     .collect();
-                let len = chunk.len();
-                let tick = |driving_rows: usize| {
-                    let units = driving_rows * len;
+                let tick = |units: usize| {
                     let d = done.fetch_add(units, Ordering::Relaxed) + units;
                     control.report(d, total);
                 };
@@ -293,9 +293,10 @@ struct Cell<'a> {
 /// The cells of driven centers `centers`, into `cells`: each as one solution
 /// map of the driving grid reduced (module docs), the rows of the driving
 /// grid taken in order for every center, the lanes of the driving
-/// candidates computed once per row for all of them. `tick(rows)` counts
-/// the driving rows done (for all the centers); it stops, leaving `cells`
-/// partly written and not counting the row it was in, once `control` is
+/// candidates computed once per row for all of them. `tick(units)` counts
+/// the driving rows done, one unit per row of one center (a center's row
+/// with obstacles can take seconds); it stops, leaving `cells` partly
+/// written and not counting the row it was in, once `control` is
 /// cancelled.
 ///
 /// # Errors
@@ -356,8 +357,9 @@ fn atlas_chunk(
         out,
     } = scratch;
     let nx = driving.nx();
+    // The centers without a row to reduce are done.
+    tick((centers.len() - live.len()) * driving.ny());
     if live.is_empty() {
-        tick(driving.ny());
         return Ok(());
     }
     for j in 0..driving.ny() {
@@ -377,7 +379,7 @@ fn atlas_chunk(
             }
         }
         if !any {
-            tick(1);
+            tick(live.len());
             continue;
         }
         let y = driving.y(j);
@@ -386,17 +388,18 @@ fn atlas_chunk(
         if let Some(k) = live.iter().find_map(|(_, c)| c.kernel.as_ref()) {
             k.pre_row(y, xs, union, pre);
         }
+        tick(live.iter().filter(|(_, c)| !c.active).count());
         for (_, cell) in live.iter_mut().filter(|(_, c)| c.active) {
             if let Some(k) = &cell.kernel {
                 k.row_where(y, xs, &cell.row, pre, out);
             }
             cell.take_row(sampler, driving, j, nx, out, &limit, control)?;
+            if control.is_cancelled() {
+                // A row cut short: not counted.
+                return Ok(());
+            }
+            tick(1);
         }
-        if control.is_cancelled() {
-            // A row cut short: not counted.
-            return Ok(());
-        }
-        tick(1);
     }
     for (m, cell) in live {
         cells[m] = cell.finish(task, sampler, driving, control)?;

@@ -412,6 +412,106 @@ mod tests {
         assert!(check_polygon("p", &spike, true).is_err());
     }
 
+    /// The check before the sweep: every pair of edges.
+    fn self_intersects_brute(pts: &[Point2<f64>]) -> bool {
+        let n = pts.len();
+        let orient = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| cross(b - a, c - a);
+        let on = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| {
+            orient(a, b, c) == 0.0
+                && c.x >= a.x.min(b.x)
+                && c.x <= a.x.max(b.x)
+                && c.y >= a.y.min(b.y)
+                && c.y <= a.y.max(b.y)
+        };
+        let meet = |(a, b): (Point2<f64>, Point2<f64>), (c, d): (Point2<f64>, Point2<f64>)| {
+            let (d1, d2) = (orient(c, d, a), orient(c, d, b));
+            let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+            ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+                && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+                || on(c, d, a)
+                || on(c, d, b)
+                || on(a, b, c)
+                || on(a, b, d)
+        };
+        let edge = |i: usize| (pts[i], pts[(i + 1) % n]);
+        for i in 0..n {
+            for j in i + 1..n {
+                if j == i + 1 || (i == 0 && j == n - 1) {
+                    let (shared, p, q) = if j == i + 1 {
+                        (pts[j], pts[i], pts[(j + 1) % n])
+                    } else {
+                        (pts[0], pts[1], pts[n - 1])
+                    };
+                    let (u, v) = (p - shared, q - shared);
+                    if cross(u, v) == 0.0 && u.dot(&v) > 0.0 {
+                        return true;
+                    }
+                } else if meet(edge(i), edge(j)) {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    #[test]
+    fn the_sweep_finds_what_every_pair_finds() {
+        // Polygons on a small integer lattice: crossings, touchings,
+        // collinear overlaps and folds come up often.
+        let mut x = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = move |m: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % m) as f64
+        };
+        let mut found = [0usize; 2];
+        for case in 0..20_000 {
+            let n = 3 + (case % 9);
+            let p: Vec<Point2<f64>> = (0..n).map(|_| Point2::new(next(5), next(5))).collect();
+            let want = self_intersects_brute(&p);
+            assert_eq!(self_intersects(&p), want, "{p:?}");
+            found[usize::from(want)] += 1;
+        }
+        assert!(found[0] > 1000 && found[1] > 1000, "{found:?}");
+    }
+
+    #[test]
+    fn a_large_polygon_is_checked_quickly_or_refused() {
+        // A circle of the most vertices allowed: checked (the sweep looks
+        // at edges whose x ranges overlap, not at every pair).
+        let n = Constraints::MAX_POLYGON_VERTICES;
+        let circle = |n: usize| -> Vec<Point2<f64>> {
+            (0..n)
+                .map(|k| {
+                    let t = core::f64::consts::TAU * k as f64 / n as f64;
+                    Point2::new(t.cos(), t.sin())
+                })
+                .collect()
+        };
+        let c = Constraints {
+            base_plate: Some(circle(n)),
+            obstacles: vec![circle(n)],
+            ..Constraints::default()
+        };
+        assert!(c.prepare().is_ok());
+        // One more vertex: refused, naming the bound.
+        let c = Constraints {
+            obstacles: vec![circle(n + 1)],
+            ..Constraints::default()
+        };
+        let e = c.prepare().err().expect("too many vertices");
+        assert!(matches!(
+            e,
+            crate::Error::InvalidInput(InvalidInput::Polygon {
+                problem: PolygonProblem::TooManyVertices,
+                ..
+            })
+        ));
+        let msg = e.to_string();
+        assert!(msg.contains("obstacle 1") && msg.contains("more than 4096 vertices"), "{msg}");
+    }
+
     #[test]
     fn bad_numbers_are_refused() {
         let c = |w: f64, n: usize| Constraints {

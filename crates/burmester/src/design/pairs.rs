@@ -35,7 +35,7 @@ use nalgebra::Point2;
 
 use crate::design::map::{Columns, ColumnsOut, Judge, Sample, fill_rows};
 use crate::design::rank::{
-    RankColumns, Separation, nearest_other, rank_samples, signed_distances_with,
+    Nearest, RankColumns, Separation, rank_samples, signed_distances_with,
 };
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
@@ -389,14 +389,15 @@ impl PairContext {
         columns.check_len(n)?;
         // Every margin for the margin ranking (a distance transform), a
         // search around each candidate for the others.
-        let all = if rank_by == RankBy::Margin {
+        let all = if rank_by == RankBy::Margin || k > crate::design::rank::MANY_MARGINS {
             Some(self.margins_with(columns.branch_free, control)?)
         } else {
             None
         };
-        let margin = |s: usize| match &all {
+        let nearest = Nearest::new(&self.grid, columns.branch_free);
+        let margin_of = |s: usize| match &all {
             Some(m) => m[s],
-            None => nearest_other(&self.grid, columns.branch_free, s),
+            None => nearest.get(s),
         };
         let span = self.task.span();
         let nx = self.grid.nx();
@@ -404,7 +405,7 @@ impl PairContext {
         let mut apart = Separation::new(&self.grid, sep);
         let mut out: Vec<Pair> = Vec::new();
         let mut failed = None;
-        rank_samples(n, rank_by, &columns, &margin, k, control, |s, margin, score| {
+        rank_samples(n, rank_by, &columns, &margin_of, k, control, |s, margin, score| {
             if out.len() >= k {
                 return false;
             }
@@ -413,6 +414,7 @@ impl PairContext {
                 return true;
             }
             if let (Some((driving, driven)), Ok(linkage)) = (self.dyads(s), self.linkage(s)) {
+                let margin = margin.unwrap_or_else(|| margin_of(s));
                 let pair = Pair {
                     driving,
                     driven,

@@ -244,7 +244,7 @@ impl MapContext {
             Varying::Driving { driven } => Filemon::new(&self.task, driven)
                 .ok()
                 .map_or(f64::NEG_INFINITY, |f| f.margin_at(self.point(k))),
-            Varying::Driven { .. } => nearest_other(&self.grid, branch_free, k),
+            Varying::Driven { .. } => Nearest::new(&self.grid, branch_free).get(k),
         }
     }
 
@@ -297,7 +297,7 @@ impl MapContext {
         };
         let n = self.grid.len();
         columns.check_len(n)?;
-        let margins = Margins::new(self, columns.branch_free, rank_by, control)?;
+        let margins = Margins::new(self, columns.branch_free, rank_by, k, control)?;
         let span = self.task.span();
         let nx = self.grid.nx();
         let mut apart = Separation::new(&self.grid, sep);
@@ -319,6 +319,7 @@ impl MapContext {
                     return true;
                 }
                 if let Ok(linkage) = self.linkage(s) {
+                    let margin = margin.unwrap_or_else(|| margins.get(s));
                     let pivot = Pivot {
                         center: p,
                         index: (s / nx, s % nx),
@@ -372,14 +373,16 @@ impl RankColumns<'_> {
 
 /// The ranking of the `n` samples of a map's `columns` by `rank_by` (see
 /// [`RankBy`]), shared by every map: offers each candidate, best first,
-/// to `take(sample, margin, score)`, which returns whether it wants more.
+/// to `take(sample, margin, score)`, which returns whether it wants more
+/// (`margin` is `None` where the ranking did not need it: `take` asks for
+/// it when it takes the candidate).
 /// Runs of scores within [`tolerance::RANK_TIE`] are offered by
 /// [`tie_order`] (the smaller size ratio, then the larger `margin`).
 ///
 /// The order is that of sorting every candidate by its key (score or
 /// margin, larger first; then the sample, smaller first), but the
 /// candidates are *selected*: the best `m` (about `want`, the number the
-/// caller expects to take; four times as many each time more are asked
+/// caller expects to take; eight times as many each time more are asked
 /// for) by a heap, `O(n log m)`, with the runs of ties at the end of them;
 /// the Pareto front sorts its candidates. The cancel flag of `control` is
 /// checked every [`POLL`] samples or candidates.
@@ -395,7 +398,7 @@ pub(crate) fn rank_samples(
     margin: &dyn Fn(usize) -> f64,
     want: usize,
     control: &Control<'_>,
-    mut take: impl FnMut(usize, f64, f64) -> bool,
+    mut take: impl FnMut(usize, Option<f64>, f64) -> bool,
 ) -> Result<()> {
     if rank_by == RankBy::Pareto {
         let mut cand: Vec<(usize, f32, f32)> = Vec::new();
@@ -422,7 +425,7 @@ pub(crate) fn rank_samples(
             poll(control, m, n)?;
             if mu > best {
                 best = mu;
-                if !take(s, margin(s), f64::from(mu)) {
+                if !take(s, None, f64::from(mu)) {
                     return Ok(());
                 }
             }
@@ -468,25 +471,36 @@ pub(crate) fn rank_samples(
                 i = j;
                 continue;
             }
+            if j - i == 1 {
+                // A candidate alone: its margin only for the margin ranking
+                // (its key); the caller asks for it when it takes one.
+                let (s, key) = list[i];
+                count += 1;
+                offered = count;
+                if !take(s, by_margin.then_some(key), key) {
+                    return Ok(());
+                }
+                i = j;
+                continue;
+            }
+            // A run of ties (scores only): by size, then margin.
             let mut run: Vec<(usize, f32, f64, f64)> = Vec::new();
-            for &(s, score) in &list[i..j] {
-                let item = (s, columns.size_ratio[s], margin(s), score);
+            for &(s, key) in &list[i..j] {
+                let item = (s, columns.size_ratio[s], margin(s), key);
                 try_push(&mut run, "a run of tied candidates", item)?;
             }
-            if tie.is_some() {
-                sort_polled(
-                    &mut run,
-                    |a, b| tie_order((a.1, a.2), (b.1, b.2)).then(a.0.cmp(&b.0)),
-                    control,
-                )?;
-            }
+            sort_polled(
+                &mut run,
+                |a, b| tie_order((a.1, a.2), (b.1, b.2)).then(a.0.cmp(&b.0)),
+                control,
+            )?;
             for (s, _, mg, score) in run {
                 count += 1;
                 if count <= offered {
                     continue;
                 }
                 offered = count;
-                if !take(s, mg, if by_margin { mg } else { score }) {
+                if !take(s, Some(mg), score) {
                     return Ok(());
                 }
             }
@@ -495,7 +509,11 @@ pub(crate) fn rank_samples(
         if complete || m >= n {
             return Ok(());
         }
-        m = m.saturating_mul(4).min(n);
+        // Eight times as many; past a quarter of the samples, all of them.
+        m = m.saturating_mul(8);
+        if m >= n / 4 {
+            m = n;
+        }
     }
 }
 
@@ -546,6 +564,19 @@ fn select(
     tie: Option<f64>,
     control: &Control<'_>,
 ) -> Result<(Vec<(usize, f64)>, f64, bool)> {
+    if m >= n {
+        // Every candidate: sorted, with no heap.
+        let mut list: Vec<(usize, f64)> = Vec::new();
+        for s in 0..n {
+            poll(control, s, n)?;
+            if let Some(v) = key(s) {
+                try_push(&mut list, "the candidates", (s, v))?;
+            }
+        }
+        sort_polled(&mut list, |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)), control)?;
+        let threshold = list.last().map_or(f64::NEG_INFINITY, |c| c.1);
+        return Ok((list, threshold, true));
+    }
     let mut heap: BinaryHeap<Worst> = BinaryHeap::new();
     heap.try_reserve_exact(m.saturating_add(1))
         .map_err(|_| out_of_memory::<Worst>("the best candidates", m))?;
@@ -732,13 +763,18 @@ pub(crate) fn tie_order(a: (f32, f64), b: (f32, f64)) -> core::cmp::Ordering {
     size(a.0).total_cmp(&size(b.0)).then(b.1.total_cmp(&a.1))
 }
 
+/// From this many results on, a ranking of a driven map computes every
+/// margin at once (a distance transform, `O(n)`) rather than each by a
+/// search around its sample.
+pub(crate) const MANY_MARGINS: usize = 1024;
+
 /// The margins of a map's samples, computing what they share once: the
 /// driving map's Filemon construction, or the driven map's distance
 /// transform (for the margin ranking, which needs every margin) or a
 /// search outwards from each sample (for the others, which need a few).
 struct Margins<'a> {
     context: &'a MapContext,
-    branch_free: &'a [bool],
+    nearest: Nearest<'a>,
     filemon: Option<Filemon>,
     distances: Option<Vec<f64>>,
 }
@@ -748,11 +784,12 @@ impl<'a> Margins<'a> {
         context: &'a MapContext,
         branch_free: &'a [bool],
         rank_by: RankBy,
+        want: usize,
         control: &Control<'_>,
     ) -> Result<Self> {
         let (filemon, distances) = match context.varying {
             Varying::Driving { driven } => (Filemon::new(&context.task, driven).ok(), None),
-            Varying::Driven { .. } if rank_by == RankBy::Margin => (
+            Varying::Driven { .. } if rank_by == RankBy::Margin || want > MANY_MARGINS => (
                 None,
                 Some(signed_distances_with(&context.grid, branch_free, control)?),
             ),
@@ -760,7 +797,7 @@ impl<'a> Margins<'a> {
         };
         Ok(Margins {
             context,
-            branch_free,
+            nearest: Nearest::new(&context.grid, branch_free),
             filemon,
             distances,
         })
@@ -774,55 +811,78 @@ impl<'a> Margins<'a> {
                 .map_or(f64::NEG_INFINITY, |f| f.margin_at(self.context.point(k))),
             Varying::Driven { .. } => match &self.distances {
                 Some(d) => d[k],
-                None => nearest_other(&self.context.grid, self.branch_free, k),
+                None => self.nearest.get(k),
             },
         }
     }
 }
 
-/// The signed distance from sample `k` to the nearest sample of the other
-/// class in `flags` (as [`signed_distances_with`] gives it, without its memory):
-/// the samples are searched in square rings around `k`, nearest first,
-/// until the ring is farther than the nearest found.
-pub(crate) fn nearest_other(grid: &Grid, flags: &[bool], k: usize) -> f64 {
-    let (nx, ny) = (grid.nx(), grid.ny());
-    let class = flags[k];
-    let sign = if class { 1.0 } else { -1.0 };
-    if !flags.contains(&!class) {
-        return sign * f64::INFINITY;
-    }
-    let (i0, j0) = ((k % nx) as i64, (k / nx) as i64);
-    let (h2x, h2y) = (grid.dx() * grid.dx(), grid.dy() * grid.dy());
-    let step = grid.dx().min(grid.dy());
-    let mut best = f64::INFINITY;
-    let visit = |i: i64, j: i64, best: &mut f64| {
-        if i < 0 || j < 0 || i >= nx as i64 || j >= ny as i64 {
-            return;
-        }
-        if flags[j as usize * nx + i as usize] != class {
-            let (di, dj) = ((i - i0) as f64, (j - j0) as f64);
-            // The transform's arithmetic: the column pass, then the row's.
-            let d2 = h2x * di * di + (h2y * dj * dj + 0.0);
-            *best = best.min(d2);
-        }
-    };
-    let reach = (nx.max(ny)) as i64;
-    for r in 1..=reach {
-        // Every sample of ring r is at least r steps away.
-        let near = r as f64 * step;
-        if near * near > best {
-            break;
-        }
-        for i in (i0 - r)..=(i0 + r) {
-            visit(i, j0 - r, &mut best);
-            visit(i, j0 + r, &mut best);
-        }
-        for j in (j0 - r + 1)..(j0 + r) {
-            visit(i0 - r, j, &mut best);
-            visit(i0 + r, j, &mut best);
+/// The signed distance from a sample to the nearest sample of the other
+/// class in `flags` (as [`signed_distances_with`] gives it, without its
+/// memory): the samples are searched in square rings around the sample,
+/// nearest first, until the ring is farther than the nearest found.
+pub(crate) struct Nearest<'a> {
+    grid: &'a Grid,
+    flags: &'a [bool],
+    /// Whether some sample is `false`, `true` (else the distance is
+    /// infinite).
+    has: [bool; 2],
+}
+
+impl<'a> Nearest<'a> {
+    /// For the samples of `grid` flagged `flags` (one pass over them).
+    pub(crate) fn new(grid: &'a Grid, flags: &'a [bool]) -> Self {
+        let any_false = flags.contains(&false);
+        let any_true = flags.contains(&true);
+        Nearest {
+            grid,
+            flags,
+            has: [any_false, any_true],
         }
     }
-    sign * best.sqrt()
+
+    /// The signed distance of sample `k`.
+    pub(crate) fn get(&self, k: usize) -> f64 {
+        let (grid, flags) = (self.grid, self.flags);
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let class = flags[k];
+        let sign = if class { 1.0 } else { -1.0 };
+        if !self.has[usize::from(!class)] {
+            return sign * f64::INFINITY;
+        }
+        let (i0, j0) = ((k % nx) as i64, (k / nx) as i64);
+        let (h2x, h2y) = (grid.dx() * grid.dx(), grid.dy() * grid.dy());
+        let step = grid.dx().min(grid.dy());
+        let mut best = f64::INFINITY;
+        let visit = |i: i64, j: i64, best: &mut f64| {
+            if i < 0 || j < 0 || i >= nx as i64 || j >= ny as i64 {
+                return;
+            }
+            if flags[j as usize * nx + i as usize] != class {
+                let (di, dj) = ((i - i0) as f64, (j - j0) as f64);
+                // The transform's arithmetic: the column pass, then the row's.
+                let d2 = h2x * di * di + (h2y * dj * dj + 0.0);
+                *best = best.min(d2);
+            }
+        };
+        let reach = (nx.max(ny)) as i64;
+        for r in 1..=reach {
+            // Every sample of ring r is at least r steps away.
+            let near = r as f64 * step;
+            if near * near > best {
+                break;
+            }
+            for i in (i0 - r)..=(i0 + r) {
+                visit(i, j0 - r, &mut best);
+                visit(i, j0 + r, &mut best);
+            }
+            for j in (j0 - r + 1)..(j0 + r) {
+                visit(i0 - r, j, &mut best);
+                visit(i0 + r, j, &mut best);
+            }
+        }
+        sign * best.sqrt()
+    }
 }
 
 /// For every sample, the Euclidean distance to the nearest sample of the
@@ -963,6 +1023,191 @@ fn transform_1d(f: &[f64], h: f64, out: &mut [f64], scratch: &mut Envelope) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    /// The ranking as it was before the selection (every candidate sorted):
+    /// the reference the selection must reproduce, offer for offer.
+    fn reference(
+        n: usize,
+        rank_by: RankBy,
+        columns: &RankColumns<'_>,
+        margin: &dyn Fn(usize) -> f64,
+    ) -> Vec<(usize, f64, f64)> {
+        let mut offered = Vec::new();
+        match rank_by {
+            RankBy::Margin => {
+                let mut cand: Vec<(usize, f64)> = (0..n)
+                    .filter(|&s| columns.valid[s] && columns.branch_free[s])
+                    .map(|s| (s, margin(s)))
+                    .collect();
+                cand.sort_by(|a, b| b.1.total_cmp(&a.1));
+                for (s, m) in cand {
+                    offered.push((s, m, m));
+                }
+            }
+            RankBy::Pareto => {
+                let mut cand: Vec<(usize, f32, f32)> = (0..n)
+                    .filter(|&s| {
+                        columns.acceptable[s]
+                            && !columns.min_transmission_rad[s].is_nan()
+                            && !columns.size_ratio[s].is_nan()
+                    })
+                    .map(|s| (s, columns.size_ratio[s], columns.min_transmission_rad[s]))
+                    .collect();
+                cand.sort_by(|a, b| a.1.total_cmp(&b.1).then(b.2.total_cmp(&a.2)));
+                let mut best = f32::NEG_INFINITY;
+                for (s, _, mu) in cand {
+                    if mu > best {
+                        best = mu;
+                        offered.push((s, margin(s), f64::from(mu)));
+                    }
+                }
+            }
+            _ => {
+                let mut cand: Vec<(usize, f64)> = (0..n)
+                    .filter(|&s| columns.acceptable[s])
+                    .filter_map(|s| Some((s, columns.score(s, rank_by)?)))
+                    .collect();
+                cand.sort_by(|a, b| b.1.total_cmp(&a.1));
+                let mut i = 0;
+                while i < cand.len() {
+                    let mut j = i + 1;
+                    while j < cand.len() && (cand[i].1 - cand[j].1).abs() <= tolerance::RANK_TIE {
+                        j += 1;
+                    }
+                    let mut run: Vec<(usize, f32, f64, f64)> = cand[i..j]
+                        .iter()
+                        .map(|&(s, score)| (s, columns.size_ratio[s], margin(s), score))
+                        .collect();
+                    run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
+                    for (s, _, m, score) in run {
+                        offered.push((s, m, score));
+                    }
+                    i = j;
+                }
+            }
+        }
+        offered
+    }
+
+    /// Columns of `n` samples from `seed`: few distinct values, so that
+    /// scores tie (exactly and within `RANK_TIE`) often.
+    fn columns_of(n: usize, seed: u64) -> (Vec<bool>, Vec<bool>, Vec<f32>, Vec<f32>, Vec<f32>, Vec<bool>) {
+        let mut x = seed | 1;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let mut c = (vec![], vec![], vec![], vec![], vec![], vec![]);
+        for _ in 0..n {
+            let r = next();
+            c.0.push(r % 7 != 0);
+            c.1.push(r % 5 != 0);
+            let mu = match (r >> 8) % 9 {
+                0 => f32::NAN,
+                k => 0.1 * k as f32 + if (r >> 16) % 3 == 0 { 1e-10 } else { 0.0 },
+            };
+            c.2.push(mu);
+            c.3.push(1.0 + ((r >> 20) % 4) as f32);
+            c.4.push(if (r >> 24) % 11 == 0 { f32::NAN } else { 1.0 + ((r >> 28) % 5) as f32 });
+            c.5.push(c.0.last() == Some(&true) && (r >> 32) % 3 != 0);
+        }
+        c
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        /// The selection offers what sorting every candidate offered, in
+        /// the same order, whatever the number wanted (each pass of a
+        /// larger selection repeats none).
+        #[test]
+        fn selection_offers_what_sorting_offered(
+            n in 0usize..3000, seed in any::<u64>(), want in 0usize..40, stop in 0usize..200,
+        ) {
+            let (valid, bf, mu, ratio, size, acc) = columns_of(n, seed);
+            let cols = RankColumns {
+                valid: &valid,
+                branch_free: &bf,
+                min_transmission_rad: &mu,
+                link_ratio: &ratio,
+                size_ratio: &size,
+                acceptable: &acc,
+            };
+            let margin = |s: usize| ((s * 7919) % 13) as f64 - 3.0;
+            for rank_by in RankBy::ALL {
+                let want_all = reference(n, rank_by, &cols, &margin);
+                let mut got = Vec::new();
+                rank_samples(n, rank_by, &cols, &margin, want, &Control::new(), |s, m, score| {
+                    // A margin the ranking computed is the margin.
+                    assert!(m.is_none_or(|m| m == margin(s)));
+                    got.push((s, margin(s), score));
+                    got.len() < stop
+                })
+                .unwrap();
+                let k = want_all.len().min(stop.max(1));
+                prop_assert_eq!(&got[..], &want_all[..k], "{:?}", rank_by);
+            }
+        }
+    }
+
+    #[test]
+    fn separation_is_the_brute_force_test() {
+        let grid = Grid::from_bounds(-3.0, 5.0, -1.0, 2.0, 40, 17).unwrap();
+        for sep in [0.0, 0.01, 0.1, 0.35, 1.0, 7.0, 1e6] {
+            let mut apart = Separation::new(&grid, sep);
+            let mut taken: Vec<Point2<f64>> = Vec::new();
+            for k in 0..grid.len() {
+                let s = (k * 389) % grid.len();
+                let p = grid.point(s % 40, s / 40);
+                let brute = taken.iter().all(|q| (q - p).norm() >= sep);
+                assert_eq!(apart.is_clear(p), brute, "sep {sep} at {p}");
+                if brute {
+                    apart.add(p).unwrap();
+                    taken.push(p);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_cancelled_selection_stops() {
+        static STOP: core::sync::atomic::AtomicBool = core::sync::atomic::AtomicBool::new(true);
+        let (valid, bf, mu, ratio, size, acc) = columns_of(100_000, 3);
+        let cols = RankColumns {
+            valid: &valid,
+            branch_free: &bf,
+            min_transmission_rad: &mu,
+            link_ratio: &ratio,
+            size_ratio: &size,
+            acceptable: &acc,
+        };
+        let control = Control::new().with_cancel(&STOP);
+        for rank_by in RankBy::ALL {
+            let r = rank_samples(100_000, rank_by, &cols, &|_| 1.0, 5, &control, |_, _, _| true);
+            assert!(matches!(r, Err(crate::Error::Cancelled { .. })), "{rank_by:?}");
+        }
+        let mut v: Vec<u32> = (0..100_000).rev().collect();
+        assert!(sort_polled(&mut v, |a, b| a.cmp(b), &control).is_err());
+        let mut v: Vec<u32> = (0..100_000).map(|k| (k * 7919) % 100_003).collect();
+        sort_polled(&mut v, |a, b| a.cmp(b), &Control::new()).unwrap();
+        assert!(v.windows(2).all(|w| w[0] <= w[1]));
+    }
+
+    #[test]
+    fn the_nearest_other_sample_is_the_transform() {
+        let grid = Grid::from_bounds(0.0, 7.0, 0.0, 1.5, 14, 9).unwrap();
+        let (_, flags, ..) = columns_of(grid.len(), 11);
+        let d = signed_distances_with(&grid, &flags, &Control::new()).unwrap();
+        for k in 0..grid.len() {
+            let got = Nearest::new(&grid, &flags).get(k);
+            assert!((got - d[k]).abs() <= 1e-12 * d[k].abs(), "{k}: {got} vs {}", d[k]);
+        }
+        let all = vec![false; grid.len()];
+        assert_eq!(Nearest::new(&grid, &all).get(3), f64::NEG_INFINITY);
+    }
 
     #[test]
     fn distance_transform_is_exact() {
