@@ -17,7 +17,10 @@ Without a task file, the commands use the built-in example. Without any
 arguments, ``burmester`` prints this help. Bad input exits with status 2 and
 a one-line message saying what to change; a missing optional dependency
 (matplotlib, ezdxf) exits with status 1. No command replaces an existing file
-unless given ``--force``.
+unless given ``--force``, decided when the finished file is moved into place
+(:mod:`burmester._io`): outputs are written whole beside their target, so a
+write error, a full disk or Ctrl-C leaves no partial file and keeps an
+existing one.
 """
 
 from __future__ import annotations
@@ -485,6 +488,8 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     try:
         atlas = burmester.pivot_atlas(spec.task(), driven, driving, client=client,
                                       limits=spec.limits, progress=bar)
+    except TimeoutError as e:  # a cluster without workers
+        raise UsageError(str(e)) from None
     finally:
         if client is not None:
             client.close()
@@ -635,6 +640,8 @@ def cmd_batch(args: argparse.Namespace) -> int:
     try:
         records = burmester.best_pivots_batch(args.tasks, client=client, top=args.top,
                                               spacing=args.spacing, rank_by=args.rank_by)
+    except TimeoutError as e:  # a cluster without workers
+        raise UsageError(str(e)) from None
     finally:
         if client is not None:
             client.close()

@@ -18,6 +18,10 @@ plane, to DXF (with ezdxf) and to SVG (with the standard library).
   best pivots), or its circle-point plane (Filemon's lines and branch-free
   double wedge, the image poles and their circle, ``C1`` and ``C'k``).
 
+Every file is written whole to a temporary file beside its target and moved
+into place when complete (:mod:`burmester._io`): a write error, a full disk
+or Ctrl-C leaves no partial file and an existing one as it was.
+
 Every coordinate comes from the core (joints, coupler paths, travel, conic
 polylines, poles, sectors); nothing is computed again here. Lengths are
 written as they are, in the task's unit, which ``units=`` records (DXF
@@ -908,7 +912,8 @@ def linkage(
         sfb: the four-bar, from :meth:`burmester.Filemon.four_bar` or
             :meth:`burmester.Task.four_bar`.
         path: the file to write, ending in ``.dxf`` or ``.svg`` (replaced if
-            it exists).
+            it exists; written whole to a temporary file beside it and moved
+            into place when complete, so an error leaves no partial file).
         task: the task, to mark the poses it asks for; default: the poses
             the linkage reaches at its input angles.
         travel_samples: also draw the linkage at this many input angles

@@ -448,10 +448,10 @@ pub enum DegenerateError {
         /// Second pose index (1-based).
         j: usize,
     },
-    /// The three poses are rotations about one point: all three poles
-    /// coincide, and every dyad has its center point there.
+    /// The poses are rotations about one point: all their poles coincide,
+    /// and every dyad has its center point there.
     #[error(
-        "the three poses are rotations about one point ({}, {}): all poles coincide there, so \
+        "the poses are rotations about one point ({}, {}): all poles coincide there, so \
          the synthesis is degenerate (every dyad is centered there); move one pose off that \
          rotation",
         Num(*.x), Num(*.y)

@@ -57,9 +57,12 @@ pub struct PairContext {
     pub grid: Grid,
     /// The task (four poses).
     pub task: Task,
-    /// The driving dyad of each column; `None` where it is at infinity.
+    /// The driving dyad of each column; `None` where it is at infinity
+    /// (or where [`Task::four_bar`] would refuse it: a sample of an
+    /// ill-conditioned task that misses the poses by more than the dyad
+    /// tolerance).
     pub driving: Vec<Option<CurveDyad>>,
-    /// The driven dyad of each row; `None` where it is at infinity.
+    /// The driven dyad of each row; `None` as for [`PairContext::driving`].
     pub driven: Vec<Option<CurveDyad>>,
     /// The limits behind `acceptable`.
     pub limits: DesignLimits,
@@ -106,6 +109,12 @@ impl Task {
     /// The most samples on one axis of a pair map.
     pub const MAX_PAIR_SAMPLES: usize = 10_000_000;
 
+    /// The smallest parameter length of a pair map
+    /// ([`FourPositions::parameter_length`], radians): a shorter range of
+    /// crank rotations (poses 1 and 2 closer than about `2e-7` task sizes)
+    /// is within the rounding of its own ends.
+    pub const MIN_PAIR_PARAMETER: f64 = 2e-6;
+
     /// The pair map of a four-pose task: every pair of `n_driving` driving
     /// dyads and `n_driven` driven dyads sampled along the center-point
     /// curve by its parameter (see the [module docs](crate::design::pairs)),
@@ -116,7 +125,9 @@ impl Task {
     /// [`InvalidInput::NeedsPoses`] unless the task has four poses; the
     /// errors of [`FourPositions::new`] and
     /// [`FourPositions::beta2_range`] (poses without a crank-rotation
-    /// parametrisation); [`InvalidInput::GridSize`] when a count is 0,
+    /// parametrisation); [`InvalidInput::TooSmall`] when the parameter
+    /// length is below [`Task::MIN_PAIR_PARAMETER`] (poses 1 and 2 nearly
+    /// coincide); [`InvalidInput::GridSize`] when a count is 0,
     /// above [`Task::MAX_PAIR_SAMPLES`], or the map has more than
     /// [`Grid::MAX_POINTS`] pairs; [`InvalidInput`] for invalid limits or
     /// constraints; [`Error::OutOfMemory`](crate::Error::OutOfMemory) when
@@ -217,14 +228,52 @@ impl Task {
         Judge::new(self, limits, constraints)?;
         let four = FourPositions::new(self.poses())?;
         let length = four.parameter_length()?;
+        // Poses 1 and 2 nearly alike leave the crank almost no rotation
+        // between them: a parameter plane too small to sample (its size is
+        // below the rounding of the range's ends).
+        if !(length >= Self::MIN_PAIR_PARAMETER) {
+            return Err(InvalidInput::TooSmall {
+                name: "the range of crank rotations from pose 1 to pose 2 (the pair map's \
+                       parameter, radians over both branches)",
+                value: length,
+                limit: Self::MIN_PAIR_PARAMETER,
+                hint: "poses 1 and 2 (nearly) coincide: move pose 2 away from pose 1, or list \
+                       the poses with two distinct ones first",
+            }
+            .into());
+        }
         Ok(PairContext {
             grid: Grid::from_bounds(0.0, length, 0.0, length, n_driving, n_driven)?,
             task: *self,
-            driving: four.parameter_samples_with(n_driving, control)?,
-            driven: four.parameter_samples_with(n_driven, control)?,
+            driving: self.buildable(four.parameter_samples_with(n_driving, control)?, control)?,
+            driven: self.buildable(four.parameter_samples_with(n_driven, control)?, control)?,
             limits: *limits,
             constraints: constraints.clone(),
         })
+    }
+}
+
+impl Task {
+    /// The dyads of `samples` that [`Task::four_bar`] accepts (they pass
+    /// the poses within [`tolerance::DYAD`](crate::tolerance::DYAD), their
+    /// crank has a length); `None` for the others. A sample of an
+    /// ill-conditioned task (poses 1 and 2 a hair apart) can miss by more
+    /// than rounding: a pair of it would be a linkage the library refuses.
+    fn buildable(
+        &self,
+        mut samples: Vec<Option<CurveDyad>>,
+        control: &Control<'_>,
+    ) -> Result<Vec<Option<CurveDyad>>> {
+        let n = samples.len();
+        for (i, d) in samples.iter_mut().enumerate() {
+            if i % (1 << 14) == 0 {
+                control.check(i, n)?;
+            }
+            if d.is_some_and(|d| self.check_dyad(&d.dyad(), "dyad").is_err()) {
+                *d = None;
+            }
+        }
+        Ok(samples)
     }
 }
 

@@ -270,14 +270,25 @@ impl FourPositions {
             return Err(errors::pose_count("FourPositions::new", 4, poses.len()));
         }
         let motion = Motion::new(poses)?;
+        // Four poses of one angle are translations: every pole is at
+        // infinity and no dyad passes them (the curve's equation is a
+        // nonzero constant, or vanishes).
+        if poses[1..]
+            .iter()
+            .all(|p| wrap_angle(p.angle - poses[0].angle) == 0.0)
+        {
+            return Err(errors::all_translations());
+        }
         let curve = |form: &super::motion::LinearForm| -> Result<Cubic> {
             let (f, mag) = form.cubic([1, 2, 3]);
             let max = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             if !(max > DEGENERATE_CURVE * mag) {
-                let p = motion
-                    .dehomogenize(motion.pole(0, 1))
-                    .unwrap_or(motion.origin);
-                return Err(errors::common_pole(p));
+                // Rotations about one point: their common pole (never the
+                // poses' centroid, which is no pole).
+                return match motion.dehomogenize(motion.pole(0, 1)) {
+                    Some(p) => Err(errors::common_pole(p)),
+                    None => Err(errors::all_translations()),
+                };
             }
             Ok(Cubic::from_local(f, motion.origin, motion.scale))
         };
