@@ -1430,7 +1430,6 @@ fn check_pivots(map: &SolutionMap, k: usize, min_separation: Option<f64>) {
     }
 }
 
-
 /// Limits from the input: raw numbers now and then, else in range.
 fn limits_of(inp: &mut Input<'_>) -> DesignLimits {
     DesignLimits {
@@ -1585,7 +1584,13 @@ pub fn pair_map(data: &[u8]) {
         last.fetch_max(d, Ordering::Relaxed);
     };
     let again = t
-        .pair_map(nd, nv, &limits, &constraints, &Control::new().with_progress(&hook))
+        .pair_map(
+            nd,
+            nv,
+            &limits,
+            &constraints,
+            &Control::new().with_progress(&hook),
+        )
         .expect("the same map with a progress hook");
     same("pair map with progress", &again, &map);
     assert!(matches!(
@@ -1595,19 +1600,23 @@ pub fn pair_map(data: &[u8]) {
     let c = &map.columns;
     for k in 0..n {
         if c.acceptable[k] {
-            let l = map.context.linkage(k).expect("an acceptable pair has a linkage");
+            let l = map
+                .context
+                .linkage(k)
+                .expect("an acceptable pair has a linkage");
             let (a, b) = map.context.dyads(k).expect("both dyads finite");
             same(
                 "the pair's linkage",
-                &t.four_bar(&a.dyad(), &b.dyad()).expect("four_bar of the dyads"),
+                &t.four_bar(&a.dyad(), &b.dyad())
+                    .expect("four_bar of the dyads"),
                 &l,
             );
             finite("size", l.size());
         }
     }
     let margins = map.margins().expect("margins of a small map");
-    for k in 0..n {
-        assert_eq!(margins[k] > 0.0, c.branch_free[k], "margin sign at {k}");
+    for (k, m) in margins.iter().enumerate() {
+        assert_eq!(*m > 0.0, c.branch_free[k], "margin sign at {k}");
     }
     let diag = map.context.grid.viewport().diagonal();
     for sep in [None, Some(0.0), Some(inp.nice().abs() * diag * 0.1)] {
@@ -1620,9 +1629,7 @@ pub fn pair_map(data: &[u8]) {
             continue;
         }
         for rank in RankBy::ALL {
-            let pairs = map
-                .best_pairs(k, sep, rank)
-                .expect("a valid separation");
+            let pairs = map.best_pairs(k, sep, rank).expect("a valid separation");
             assert!(pairs.len() <= k);
             let sep = sep.unwrap_or(0.02 * diag);
             let at = |p: &burmester::Pair| {
@@ -1636,7 +1643,12 @@ pub fn pair_map(data: &[u8]) {
                     RankBy::Margin => assert!(c.valid[s_] && c.branch_free[s_]),
                     _ => assert!(c.acceptable[s_]),
                 }
-                assert!(p.margin > 0.0, "pair {:?} by {rank:?}: margin {}", p.index, p.margin);
+                assert!(
+                    p.margin > 0.0,
+                    "pair {:?} by {rank:?}: margin {}",
+                    p.index,
+                    p.margin
+                );
                 assert_eq!(p.margin, margins[s_], "margin of {:?}", p.index);
                 for q in &pairs[..m] {
                     assert!((at(q) - at(p)).norm() >= sep, "pairs closer than {sep}");
@@ -1683,11 +1695,18 @@ pub fn atlas(data: &[u8]) {
             }
         }
     };
-    let Some(driven) = grid(&mut inp, 3) else { return };
-    let Some(driving) = grid(&mut inp, 8) else { return };
+    let Some(driven) = grid(&mut inp, 3) else {
+        return;
+    };
+    let Some(driving) = grid(&mut inp, 8) else {
+        return;
+    };
     let limits = limits_of(&mut inp);
     let constraints = constraints_of(&mut inp, &near, s);
     let limits = away_from_the_slow_class(limits, &constraints);
+    if std::env::var_os("FUZZ_DEBUG").is_some() {
+        eprintln!("{:?}\n{driven:?}\n{driving:?}\n{limits:?}\n{constraints:?}", t.poses());
+    }
     let last = AtomicUsize::new(0);
     let hook = |d: usize, total: usize| {
         assert!(d <= total);
@@ -1703,7 +1722,11 @@ pub fn atlas(data: &[u8]) {
         Ok(a) => a,
         Err(e) => return message(&e),
     };
-    assert_eq!(last.into_inner(), driven.len() * driving.ny(), "progress total");
+    assert_eq!(
+        last.into_inner(),
+        driven.len() * driving.ny(),
+        "progress total"
+    );
     assert_eq!(atlas.cells.len(), driven.len());
     for (k, cell) in atlas.cells.iter().enumerate() {
         let c0 = driven.point(k % driven.nx(), k / driven.nx());
@@ -1718,7 +1741,11 @@ pub fn atlas(data: &[u8]) {
         let col = &map.columns;
         let count = col.acceptable.iter().filter(|&&a| a).count() as u64;
         let free = col.branch_free.iter().filter(|&&a| a).count() as u64;
-        assert_eq!((cell.count, cell.branch_free), (count, free), "cell {k} at {c0}");
+        assert_eq!(
+            (cell.count, cell.branch_free),
+            (count, free),
+            "cell {k} at {c0}"
+        );
         let best = map
             .best_pivots(1, Some(0.0), RankBy::Transmission)
             .expect("best pivots");
@@ -1736,7 +1763,14 @@ pub fn atlas(data: &[u8]) {
     // Tiles: any split of the driven rows.
     let cut = inp.count(0, driven.ny());
     let mut tiled = t
-        .pivot_atlas_rows(&driven, 0..cut, &driving, &limits, &constraints, &Control::new())
+        .pivot_atlas_rows(
+            &driven,
+            0..cut,
+            &driving,
+            &limits,
+            &constraints,
+            &Control::new(),
+        )
         .expect("the first tile");
     tiled.extend(
         t.pivot_atlas_rows(

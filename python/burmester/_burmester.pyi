@@ -1535,10 +1535,12 @@ class PairMap:
     @property
     def driving_dyads(self) -> list[Optional[CurveDyad]]:
         """The driving dyad of each column (its ``beta2`` and ``branch`` give
-        its parameter); ``None`` where it is at infinity."""
+        its parameter); ``None`` where it is at infinity, or where
+        :meth:`Task.four_bar` would refuse it (a sample of an ill-conditioned
+        task that misses the poses by more than the dyad tolerance)."""
     @property
     def driven_dyads(self) -> list[Optional[CurveDyad]]:
-        """The driven dyad of each row; ``None`` where it is at infinity."""
+        """The driven dyad of each row; ``None`` as for :attr:`driving_dyads`."""
     @property
     def task(self) -> Task:
         """The task."""

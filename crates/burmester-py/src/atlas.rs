@@ -9,9 +9,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::conv::{Count, PyPoint, Real};
+use crate::conv::{empty, slice_mut, writer};
 use crate::design::{MapOptions, PyDesignLimits};
 use crate::geom::PyGrid;
-use crate::conv::{empty, slice_mut, writer};
 use crate::run::{WATCH_MIN_SAMPLES, run_in};
 use crate::synthesis::PyTask;
 
@@ -108,13 +108,22 @@ pub(crate) fn _atlas_tile<'py>(
     }
     let flat = [rows, nx];
     d.set_item("valid", column(py, &flat, &cells, |c| [c.valid; 2], 1)?)?;
-    d.set_item("count", column(py, &flat, &cells, |c| [c.count as i64; 2], 1)?)?;
+    d.set_item(
+        "count",
+        column(py, &flat, &cells, |c| [c.count as i64; 2], 1)?,
+    )?;
     d.set_item(
         "branch_free",
         column(py, &flat, &cells, |c| [c.branch_free as i64; 2], 1)?,
     )?;
     let best = |f: fn(&burmester::AtlasBest) -> f64| {
-        column(py, &flat, &cells, move |c| [c.best.as_ref().map_or(f64::NAN, f); 2], 1)
+        column(
+            py,
+            &flat,
+            &cells,
+            move |c| [c.best.as_ref().map_or(f64::NAN, f); 2],
+            1,
+        )
     };
     d.set_item(
         "best_transmission_rad",
@@ -129,7 +138,11 @@ pub(crate) fn _atlas_tile<'py>(
             py,
             &pairs,
             &cells,
-            |c| c.best.as_ref().map_or([f64::NAN; 2], |b| [b.driving.x, b.driving.y]),
+            |c| {
+                c.best
+                    .as_ref()
+                    .map_or([f64::NAN; 2], |b| [b.driving.x, b.driving.y])
+            },
             2,
         )?,
     )?;

@@ -18,6 +18,9 @@ pub struct PyGrid {
     pub(crate) inner: Grid,
 }
 
+/// The sample coordinates of a grid's columns and rows.
+type Axes<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
+
 #[pymethods]
 impl PyGrid {
     #[new]
@@ -76,7 +79,7 @@ impl PyGrid {
     fn cell_centers<'py>(
         &self,
         py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>)> {
+    ) -> PyResult<Axes<'py>> {
         let g = &self.inner;
         // NumPy allocates them (a failed allocation is a MemoryError).
         let axis = |n: usize, at: &dyn Fn(usize) -> f64| -> PyResult<Bound<'py, PyArray1<f64>>> {

@@ -8,10 +8,10 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::curves::PyCurveDyad;
+use crate::design::ranking_is_long;
 use crate::design::{MapOptions, PyDesignLimits, py_map_class};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::design::ranking_is_long;
 use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
 use crate::synthesis::{PySynthesizedFourBar, PyTask};
 
@@ -404,7 +404,13 @@ pub(crate) fn pair_map(
     // progress is the map's alone.
     let long = n_driving.saturating_add(n_driven) >= 1 << 14;
     let context = run_in(py, long, None, None, "dyads", |control| {
-        task.pair_context_with(n_driving, n_driven, &opts.limits, &opts.constraints, control)
+        task.pair_context_with(
+            n_driving,
+            n_driven,
+            &opts.limits,
+            &opts.constraints,
+            control,
+        )
     })?;
     let shape = context.shape();
     PyPairMap::filled(py, shape, |out| {

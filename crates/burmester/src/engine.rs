@@ -158,7 +158,14 @@ pub(crate) fn run_blocks<R: Rows>(
     control: &Control<'_>,
     f: impl Fn(usize, R, usize) + Sync,
 ) -> Result<()> {
-    run_blocks_with(nx, ny, data, control, || Ok(()), |(), j, rows, n| f(j, rows, n))
+    run_blocks_with(
+        nx,
+        ny,
+        data,
+        control,
+        || Ok(()),
+        |(), j, rows, n| f(j, rows, n),
+    )
 }
 
 /// [`run_blocks`] with a scratch value made by `init` once per block and

@@ -409,6 +409,7 @@ fn atlas_chunk(
 
 impl Cell<'_> {
     /// The branch-free samples of row `j` (the kernel's lanes in `out`).
+    #[allow(clippy::too_many_arguments)]
     fn take_row(
         &mut self,
         sampler: &Sampler<'_>,
@@ -457,7 +458,11 @@ impl Cell<'_> {
                 self.reach = CosBand::new(f64::from(top) - tolerance::RANK_TIE - TOP_SLACK);
             }
             if tied(self.top, score) {
-                try_push(&mut self.run, "the best driving pivots", (j * nx + i, score))?;
+                try_push(
+                    &mut self.run,
+                    "the best driving pivots",
+                    (j * nx + i, score),
+                )?;
             }
         }
         Ok(())

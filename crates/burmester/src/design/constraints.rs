@@ -509,7 +509,10 @@ mod tests {
             })
         ));
         let msg = e.to_string();
-        assert!(msg.contains("obstacle 1") && msg.contains("more than 4096 vertices"), "{msg}");
+        assert!(
+            msg.contains("obstacle 1") && msg.contains("more than 4096 vertices"),
+            "{msg}"
+        );
     }
 
     #[test]

@@ -263,7 +263,11 @@ impl<'s> DrivingKernel<'s> {
     pub(crate) fn padded_xs(grid: &Grid) -> Result<Vec<f64>> {
         let nx = grid.nx();
         let n = nx.next_multiple_of(PAD);
-        try_collect("a row's abscissae", n, (0..n).map(|i| grid.x(i.min(nx - 1))))
+        try_collect(
+            "a row's abscissae",
+            n,
+            (0..n).map(|i| grid.x(i.min(nx - 1))),
+        )
     }
 
     /// The lanes of the row at ordinate `y` with abscissae `xs` (padded)
@@ -338,7 +342,11 @@ impl<'s> DrivingKernel<'s> {
     /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
     pub(crate) fn local_xs(&self, xs: &[f64]) -> Result<Vec<f64>> {
         let o = Ops(pulp::Scalar);
-        try_collect("a row's abscissae", xs.len(), xs.iter().map(|&x| self.local_x(o, x)))
+        try_collect(
+            "a row's abscissae",
+            xs.len(),
+            xs.iter().map(|&x| self.local_x(o, x)),
+        )
     }
 
     /// The driving candidates' lanes at abscissae `x`, ordinate `y`: the

@@ -34,9 +34,7 @@
 use nalgebra::Point2;
 
 use crate::design::map::{Columns, ColumnsOut, Judge, Sample, fill_rows};
-use crate::design::rank::{
-    Nearest, RankColumns, Separation, rank_samples, signed_distances_with,
-};
+use crate::design::rank::{Nearest, RankColumns, Separation, rank_samples, signed_distances_with};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result, in_range, try_collect, try_push};
@@ -231,7 +229,7 @@ impl Task {
         // Poses 1 and 2 nearly alike leave the crank almost no rotation
         // between them: a parameter plane too small to sample (its size is
         // below the rounding of the range's ends).
-        if !(length >= Self::MIN_PAIR_PARAMETER) {
+        if length.is_nan() || length < Self::MIN_PAIR_PARAMETER {
             return Err(InvalidInput::TooSmall {
                 name: "the range of crank rotations from pose 1 to pose 2 (the pair map's \
                        parameter, radians over both branches)",
@@ -318,8 +316,16 @@ impl PairContext {
         let pivots = |d: &Option<CurveDyad>| {
             d.map(|d| (d.dyad(), [0, 1, 2, 3].map(|k| motion.first_to(k, d.circle))))
         };
-        let a = try_collect("the driving pivots", n_driving, self.driving.iter().map(pivots))?;
-        let c = try_collect("the driven pivots", n_driven, self.driven.iter().map(pivots))?;
+        let a = try_collect(
+            "the driving pivots",
+            n_driving,
+            self.driving.iter().map(pivots),
+        )?;
+        let c = try_collect(
+            "the driven pivots",
+            n_driven,
+            self.driven.iter().map(pivots),
+        )?;
         fill_rows(n_driving, n_driven, out, control, |j, i| {
             let (Some((da, pa)), Some((dc, pc))) = (&a[i], &c[j]) else {
                 return Sample::INVALID;
@@ -454,33 +460,43 @@ impl PairContext {
         let mut apart = Separation::new(&self.grid, sep);
         let mut out: Vec<Pair> = Vec::new();
         let mut failed = None;
-        rank_samples(n, rank_by, &columns, &margin_of, k, control, |s, margin, score| {
-            if out.len() >= k {
-                return false;
-            }
-            let p = at(s);
-            if !apart.is_clear(p) {
-                return true;
-            }
-            if let (Some((driving, driven)), Ok(linkage)) = (self.dyads(s), self.linkage(s)) {
-                let margin = margin.unwrap_or_else(|| margin_of(s));
-                let pair = Pair {
-                    driving,
-                    driven,
-                    index: (s / nx, s % nx),
-                    linkage,
-                    margin,
-                    size_ratio: linkage.size() / span,
-                    score,
-                    ranked_by: rank_by,
-                };
-                if let Err(e) = try_push(&mut out, "the best pairs", pair).and_then(|()| apart.add(p)) {
-                    failed = Some(e);
+        rank_samples(
+            n,
+            rank_by,
+            &columns,
+            &margin_of,
+            k,
+            control,
+            |s, margin, score| {
+                if out.len() >= k {
                     return false;
                 }
-            }
-            out.len() < k
-        })?;
+                let p = at(s);
+                if !apart.is_clear(p) {
+                    return true;
+                }
+                if let (Some((driving, driven)), Ok(linkage)) = (self.dyads(s), self.linkage(s)) {
+                    let margin = margin.unwrap_or_else(|| margin_of(s));
+                    let pair = Pair {
+                        driving,
+                        driven,
+                        index: (s / nx, s % nx),
+                        linkage,
+                        margin,
+                        size_ratio: linkage.size() / span,
+                        score,
+                        ranked_by: rank_by,
+                    };
+                    if let Err(e) =
+                        try_push(&mut out, "the best pairs", pair).and_then(|()| apart.add(p))
+                    {
+                        failed = Some(e);
+                        return false;
+                    }
+                }
+                out.len() < k
+            },
+        )?;
         failed.map_or(Ok(out), Err)
     }
 }

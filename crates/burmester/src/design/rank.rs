@@ -329,8 +329,8 @@ impl MapContext {
                         score,
                         ranked_by: rank_by,
                     };
-                    if let Err(e) = try_push(&mut out, "the best pivots", pivot)
-                        .and_then(|()| apart.add(p))
+                    if let Err(e) =
+                        try_push(&mut out, "the best pivots", pivot).and_then(|()| apart.add(p))
                     {
                         failed = Some(e);
                         return false;
@@ -417,7 +417,11 @@ pub(crate) fn rank_samples(
         // smaller (or as small and listed before) one.
         sort_polled(
             &mut cand,
-            |a, b| a.1.total_cmp(&b.1).then(b.2.total_cmp(&a.2)).then(a.0.cmp(&b.0)),
+            |a, b| {
+                a.1.total_cmp(&b.1)
+                    .then(b.2.total_cmp(&a.2))
+                    .then(a.0.cmp(&b.0))
+            },
             control,
         )?;
         let mut best = f32::NEG_INFINITY;
@@ -443,7 +447,11 @@ pub(crate) fn rank_samples(
         }
     };
     // Ties group only the scores (the margin ranking has no ties).
-    let tie = if by_margin { None } else { Some(tolerance::RANK_TIE) };
+    let tie = if by_margin {
+        None
+    } else {
+        Some(tolerance::RANK_TIE)
+    };
     let mut m = want.saturating_add(want / 4).saturating_add(16).min(n);
     // Candidates already offered (a pass with more of them offers these
     // again first, in the same order).
@@ -563,7 +571,7 @@ fn select(
     key: &dyn Fn(usize) -> Option<f64>,
     tie: Option<f64>,
     control: &Control<'_>,
-) -> Result<(Vec<(usize, f64)>, f64, bool)> {
+) -> Result<Selected> {
     if m >= n {
         // Every candidate: sorted, with no heap.
         let mut list: Vec<(usize, f64)> = Vec::new();
@@ -573,7 +581,11 @@ fn select(
                 try_push(&mut list, "the candidates", (s, v))?;
             }
         }
-        sort_polled(&mut list, |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)), control)?;
+        sort_polled(
+            &mut list,
+            |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)),
+            control,
+        )?;
         let threshold = list.last().map_or(f64::NEG_INFINITY, |c| c.1);
         return Ok((list, threshold, true));
     }
@@ -676,6 +688,13 @@ fn sort_polled<T: Copy>(
     Ok(())
 }
 
+/// The points taken, by the cell of [`Separation`] they lie in.
+type Cells = HashMap<(i64, i64), Vec<Point2<f64>>>;
+
+/// What [`select`] gives: the candidates `(sample, key)` best first, the
+/// `m`-th key, and whether they are all the candidates.
+type Selected = (Vec<(usize, f64)>, f64, bool);
+
 /// The points taken so far, to skip candidates closer than the separation
 /// to one of them: a hash of cells as wide as the separation, so each
 /// test looks at the points of nine cells (a cell holds at most four
@@ -686,7 +705,7 @@ pub(crate) struct Separation {
     /// `None`: no two samples can be closer than the separation (it is
     /// below half the grid's spacing), or cells would be too many for an
     /// integer index (a test then looks at every point).
-    cells: Option<HashMap<(i64, i64), Vec<Point2<f64>>>>,
+    cells: Option<Cells>,
     all: Vec<Point2<f64>>,
     trivial: bool,
 }
@@ -695,7 +714,7 @@ impl Separation {
     /// For candidates at the samples of `grid`, kept `sep` apart.
     pub(crate) fn new(grid: &Grid, sep: f64) -> Self {
         let v = grid.viewport();
-        let trivial = !(sep > 0.5 * grid.dx().min(grid.dy()));
+        let trivial = sep.is_nan() || sep <= 0.5 * grid.dx().min(grid.dy());
         let span = ((v.xmax - v.xmin) / sep).max((v.ymax - v.ymin) / sep);
         Separation {
             sep,
@@ -1092,7 +1111,18 @@ mod tests {
 
     /// Columns of `n` samples from `seed`: few distinct values, so that
     /// scores tie (exactly and within `RANK_TIE`) often.
-    fn columns_of(n: usize, seed: u64) -> (Vec<bool>, Vec<bool>, Vec<f32>, Vec<f32>, Vec<f32>, Vec<bool>) {
+    #[allow(clippy::type_complexity)]
+    fn columns_of(
+        n: usize,
+        seed: u64,
+    ) -> (
+        Vec<bool>,
+        Vec<bool>,
+        Vec<f32>,
+        Vec<f32>,
+        Vec<f32>,
+        Vec<bool>,
+    ) {
         let mut x = seed | 1;
         let mut next = move || {
             x ^= x << 13;
@@ -1111,7 +1141,11 @@ mod tests {
             };
             c.2.push(mu);
             c.3.push(1.0 + ((r >> 20) % 4) as f32);
-            c.4.push(if (r >> 24) % 11 == 0 { f32::NAN } else { 1.0 + ((r >> 28) % 5) as f32 });
+            c.4.push(if (r >> 24) % 11 == 0 {
+                f32::NAN
+            } else {
+                1.0 + ((r >> 28) % 5) as f32
+            });
             c.5.push(c.0.last() == Some(&true) && (r >> 32) % 3 != 0);
         }
         c
@@ -1186,8 +1220,13 @@ mod tests {
         };
         let control = Control::new().with_cancel(&STOP);
         for rank_by in RankBy::ALL {
-            let r = rank_samples(100_000, rank_by, &cols, &|_| 1.0, 5, &control, |_, _, _| true);
-            assert!(matches!(r, Err(crate::Error::Cancelled { .. })), "{rank_by:?}");
+            let r = rank_samples(100_000, rank_by, &cols, &|_| 1.0, 5, &control, |_, _, _| {
+                true
+            });
+            assert!(
+                matches!(r, Err(crate::Error::Cancelled { .. })),
+                "{rank_by:?}"
+            );
         }
         let mut v: Vec<u32> = (0..100_000).rev().collect();
         assert!(sort_polled(&mut v, |a, b| a.cmp(b), &control).is_err());
@@ -1201,9 +1240,13 @@ mod tests {
         let grid = Grid::from_bounds(0.0, 7.0, 0.0, 1.5, 14, 9).unwrap();
         let (_, flags, ..) = columns_of(grid.len(), 11);
         let d = signed_distances_with(&grid, &flags, &Control::new()).unwrap();
-        for k in 0..grid.len() {
+        for (k, &want) in d.iter().enumerate() {
             let got = Nearest::new(&grid, &flags).get(k);
-            assert!((got - d[k]).abs() <= 1e-12 * d[k].abs(), "{k}: {got} vs {}", d[k]);
+            assert!(
+                (got - want).abs() <= 1e-12 * want.abs(),
+                "{k}: {got} vs {}",
+                d[k]
+            );
         }
         let all = vec![false; grid.len()];
         assert_eq!(Nearest::new(&grid, &all).get(3), f64::NEG_INFINITY);
