@@ -29,7 +29,9 @@ import argparse
 import json
 import math
 import os
+import signal
 import sys
+import threading
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, Callable, Dict, List, Literal, NoReturn, Optional, Sequence, Tuple
 
@@ -1150,6 +1152,23 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _remember_sigint(seen: List[int]) -> Any:
+    """On the main thread, handle SIGINT as Python does (KeyboardInterrupt)
+    and note it in ``seen``; returns the handler it replaced (None
+    elsewhere, where signals cannot be handled)."""
+    if threading.current_thread() is not threading.main_thread():
+        return None
+
+    def on_sigint(signum: int, frame: Any) -> None:
+        seen.append(signum)
+        raise KeyboardInterrupt
+
+    try:
+        return signal.signal(signal.SIGINT, on_sigint)
+    except ValueError:
+        return None
+
+
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Entry point of ``python -m burmester`` and the ``burmester`` script.
 
@@ -1169,8 +1188,22 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         parser.print_help()
         return 0
     prog = f"burmester {args.command}"
+    # Ctrl-C is remembered: a library's C code that runs the signal handler
+    # may turn the KeyboardInterrupt into an error of its own (matplotlib:
+    # "Invalid affine transformation matrix"); after a SIGINT any error is
+    # the interruption.
+    interrupted: List[int] = []
+    previous = _remember_sigint(interrupted)
     try:
-        return int(args.func(args))
+        try:
+            return int(args.func(args))
+        except Exception:
+            if interrupted:
+                raise KeyboardInterrupt from None
+            raise
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGINT, previous)
     except (UsageError, TaskFileError, burmester.BurmesterError) as e:
         print(f"{prog}: error: {e}", file=sys.stderr)
         return 2

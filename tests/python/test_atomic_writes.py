@@ -329,3 +329,27 @@ def test_the_memory_check_uses_the_memory_left(monkeypatch, tmp_path, capsys):
     assert not out.exists()
     # A grid that fits goes on.
     assert cli.main(["map", "--grid", "100", "100", "-o", str(out)]) == 0 and out.exists()
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+def test_an_interrupt_a_library_turns_into_another_error_is_still_an_interrupt(tmp_path, monkeypatch, capsys):
+    # matplotlib's C code, running the signal handler, can replace the
+    # KeyboardInterrupt by "Invalid affine transformation matrix" (seen once
+    # in the SIGINT test above); the command still ends as interrupted.
+    import matplotlib.figure
+
+    def savefig(self, path, **kw):
+        Path(path).write_bytes(b"\x89PNG half")
+        try:
+            os.kill(os.getpid(), signal.SIGINT)
+            time.sleep(5)
+        except KeyboardInterrupt:
+            raise ValueError("Invalid affine transformation matrix") from None
+
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", savefig)
+    out = tmp_path / "x.png"
+    assert cli.main(["map", "--grid", "40", "40", "-o", str(out)]) == 130
+    assert "burmester map: interrupted" in capsys.readouterr().err
+    assert leftovers(tmp_path) == []
+    # The handler the command put in place is gone again.
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
