@@ -713,7 +713,9 @@ class Task:
         splits a run. Raises :class:`DegenerateError`
         (``"not_parametrizable"``) when the poses have no compatibility
         linkage, :class:`InvalidInputError` for ``samples`` outside 1 to
-        1e7."""
+        1e7. Ten million samples take seconds: the GIL is released and
+        Ctrl-C raises :class:`KeyboardInterrupt` within a fraction of a
+        second; dyads that cannot be allocated are a ``MemoryError``."""
     def order_arcs(
         self, xmin: float, xmax: float, ymin: float, ymax: float, *, plane: Literal["center", "circle"] = "center"
     ) -> list[Tuple[str, Optional[Literal["counterclockwise", "clockwise"]], FloatArray]]:
@@ -836,9 +838,12 @@ class Task:
         :meth:`Filemon.solution_map` (both pivots must lie on the base
         plate). Raises :class:`InvalidInputError` (``"needs_poses"``) unless
         the task has four poses, (``"grid_size"``) for a count of 0, above
-        1e7, or more than 2**32 pairs; :class:`DegenerateError`
+        1e7, or more than 2**32 pairs, (``"too_small"``) when poses 1 and 2
+        nearly coincide (the range of crank rotations between them, the
+        map's parameter, is below 2e-6 rad); :class:`DegenerateError`
         (``"not_parametrizable"``) when the poses have no compatibility
-        linkage."""
+        linkage, (``"all_translations"``) when the four poses have one
+        angle."""
     def line_to_conic(self, point: Point, direction: Point) -> Conic:
         """Three poses only: the exact image in the center-point plane of a
         line of the circle-point plane: a conic through the three poles."""
@@ -1126,8 +1131,11 @@ class Filemon:
         ``"rocker"``), not both. The constraints: the fixed pivot inside
         ``base_plate`` (a simple polygon), and the moving links, as capsules
         ``link_width`` wide, clear of ``obstacles`` (convex polygons) at
-        ``travel_samples`` input angles of the travel. The GIL is released,
-        ``progress`` and Ctrl-C as in :meth:`branch_map`."""
+        ``travel_samples`` input angles of the travel; each polygon has at
+        most 4096 vertices (``cause == "polygon"``, ``problem == "too many
+        vertices"`` beyond). The GIL is released, ``progress`` and Ctrl-C as
+        in :meth:`branch_map` (a linkage's clearance test checks for Ctrl-C
+        too)."""
     @overload
     def solution_map(
         self,
@@ -1546,7 +1554,11 @@ class SolutionMap:
 
         Scores within 1e-9 go to the smaller size ratio, then the larger margin. Candidates closer than
         ``min_separation`` (default: 2% of the viewport's diagonal) to a
-        better one are skipped, so the list offers distinct options."""
+        better one are skipped, so the list offers distinct options.
+
+        The candidates are selected, not sorted (``O(n log k)`` for ``n``
+        samples; the Pareto front sorts them); a large ``k`` or map releases
+        the GIL and Ctrl-C raises :class:`KeyboardInterrupt`."""
     def pareto_front(self) -> list[Pivot]:
         """Every acceptable candidate on the Pareto front of the minimum
         transmission angle (larger is better) and the size ratio (smaller is
@@ -1689,10 +1701,12 @@ class PairMap:
     @property
     def driving_dyads(self) -> list[Optional[CurveDyad]]:
         """The driving dyad of each column (its ``beta2`` and ``branch`` give
-        its parameter); ``None`` where it is at infinity."""
+        its parameter); ``None`` where it is at infinity, or where
+        :meth:`Task.four_bar` would refuse it (a sample of an ill-conditioned
+        task that misses the poses by more than the dyad tolerance)."""
     @property
     def driven_dyads(self) -> list[Optional[CurveDyad]]:
-        """The driven dyad of each row; ``None`` where it is at infinity."""
+        """The driven dyad of each row; ``None`` as for :attr:`driving_dyads`."""
     @property
     def task(self) -> Task:
         """The task."""
@@ -1701,7 +1715,8 @@ class PairMap:
         """The limits behind :attr:`acceptable`."""
     def linkage(self, j: int, i: int) -> SynthesizedFourBar:
         """The linkage of pair ``[j, i]`` (driven ``j``, driving ``i``):
-        ``task.four_bar`` of the two dyads."""
+        ``task.four_bar`` of the two dyads. Raises :class:`InvalidInputError`
+        (``cause == "grid_index"``) for an index outside the map, naming it."""
     def margins(self) -> FloatArray:
         """The signed margin of every pair, shape :attr:`shape`: the distance
         in the parameter plane (radians of crank rotation) to the nearest
@@ -1714,7 +1729,8 @@ class PairMap:
         rankings of :meth:`SolutionMap.best_pivots` (ties to the smaller
         linkage, then the larger margin of :meth:`margins`). Pairs closer
         than ``min_separation`` in the parameter plane (default: 2% of its
-        diagonal) to a better one are skipped."""
+        diagonal) to a better one are skipped. Selected in ``O(n log k)``,
+        Ctrl-C as :meth:`SolutionMap.best_pivots`."""
     def pareto_front(self) -> list[Pair]:
         """Every acceptable pair on the Pareto front of the minimum
         transmission angle and the size ratio, from the most compact to the

@@ -19,7 +19,10 @@ Without a task file, the commands use the built-in example. Without any
 arguments, ``burmester`` prints this help. Bad input exits with status 2 and
 a one-line message saying what to change; a missing optional dependency
 (matplotlib, ezdxf) exits with status 1. No command replaces an existing file
-unless given ``--force``.
+unless given ``--force``, decided when the finished file is moved into place
+(:mod:`burmester._io`): outputs are written whole beside their target, so a
+write error, a full disk or Ctrl-C leaves no partial file and keeps an
+existing one.
 """
 
 from __future__ import annotations
@@ -29,13 +32,16 @@ import dataclasses
 import json
 import math
 import os
+import signal
 import sys
+import threading
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, Callable, Dict, List, Literal, NoReturn, Optional, Sequence, Tuple
 
 import numpy as np
 
 import burmester
+from burmester import _io
 from burmester import pivots as pv
 from burmester import taskfile
 from burmester._burmester import Grid, Pivot
@@ -197,13 +203,29 @@ def _plot_module() -> ModuleType:
     return plot
 
 
-def _save(fig: Any, path: str, dpi: int) -> None:
+def _written(path: str, force: bool, write: Callable[[Path], Any]) -> None:
+    """Write an output by ``write(tmp)`` through :mod:`burmester._io`: whole
+    to a temporary file beside it, moved into place when complete, never
+    replacing an existing file without ``--force`` (decided at the move);
+    on an error or Ctrl-C nothing is left and an existing file is kept."""
+    try:
+        with _io.atomic_path(path, overwrite=force) as tmp:
+            write(tmp)
+    except FileExistsError:
+        raise UsageError(
+            f"{path} exists (it was created while this command ran); give another file name, "
+            "or --force to replace it"
+        ) from None
+    except OSError as e:
+        kept = f"; {path} is unchanged" if Path(path).exists() else ""
+        raise UsageError(f"cannot write {path}: {e.strerror or e}{kept}") from None
+
+
+def _save(fig: Any, path: str, dpi: int, force: bool) -> None:
     import matplotlib.pyplot as plt
 
     try:
-        fig.savefig(path, dpi=dpi, bbox_inches="tight")
-    except OSError as e:
-        raise UsageError(f"cannot write {path}: {e.strerror or e}") from None
+        _written(path, force, lambda tmp: fig.savefig(tmp, dpi=dpi, bbox_inches="tight"))
     finally:
         plt.close(fig)
 
@@ -256,12 +278,10 @@ def _picture_dpi(args: argparse.Namespace) -> int:
     return DEFAULT_DPI if args.dpi is None else int(args.dpi)
 
 
-def _write_cad(write: Callable[..., Any], out: str, *args: Any, **kwargs: Any) -> None:
-    """Call an export function, turning a file system error into a UsageError."""
-    try:
-        write(*args, **kwargs)
-    except OSError as e:
-        raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
+def _write_cad(write: Callable[..., Any], out: str, force: bool, *args: Any, **kwargs: Any) -> None:
+    """Call an export function with the output ``out`` (among ``args``)
+    through :func:`_written`."""
+    _written(out, force, lambda tmp: write(*(tmp if a is out else a for a in args), **kwargs))
 
 
 def _output(path: str, types: Sequence[str], force: bool) -> str:
@@ -307,6 +327,72 @@ def table(columns: Sequence[Tuple[str, str]], rows: Sequence[Sequence[str]]) -> 
     return "\n".join(line.rstrip() for line in buf.getvalue().splitlines())
 
 
+# ---------------------------------------------------------------------------
+# Memory: what cannot fit is refused before the work
+
+
+#: What a command holds at its peak besides its grid (the interpreter,
+#: NumPy, matplotlib), bytes.
+MEMORY_BASE = 128 * 2**20
+
+#: Peak bytes per grid sample (measured with ``ru_maxrss`` on 1000 x 1000
+#: and 2000 x 2000 grids, rounded up): a picture of the center-point plane
+#: (the branch map and matplotlib's image buffers, about 60), with the
+#: solution map overlaid (about 110), a CAD export (about 30), a solution
+#: map ranked (``pivots``, ``linkage``: about 20).
+MEMORY_PER_SAMPLE = {"picture": 64, "picture+design": 128, "cad": 32, "cad+design": 64, "ranking": 32}
+
+
+def _available_memory() -> Optional[int]:
+    """Bytes this process can still allocate: the memory the system has
+    available (``MemAvailable``) and what an address-space limit leaves,
+    whichever is less; None where neither can be read."""
+    avail: Optional[int] = None
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    avail = int(line.split()[1]) * 1024
+    except (OSError, ValueError):
+        pass
+    try:
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+        if soft != resource.RLIM_INFINITY:
+            used = 0
+            with open("/proc/self/status", encoding="ascii") as fh:
+                for line in fh:
+                    if line.startswith("VmSize:"):
+                        used = int(line.split()[1]) * 1024
+            left = max(0, soft - used)
+            avail = left if avail is None else min(avail, left)
+    except (ImportError, OSError, ValueError):
+        pass
+    return avail
+
+
+def _fmt_bytes(n: float) -> str:
+    return f"{n / 2**30:.1f} GB" if n >= 2**30 else f"{n / 2**20:.0f} MB"
+
+
+def _check_memory(nx: int, ny: int, kind: str, what: str, flag: str) -> None:
+    """Refuse up front a grid of ``nx`` by ``ny`` samples whose work of
+    ``kind`` (:data:`MEMORY_PER_SAMPLE`) cannot fit in the memory left,
+    saying how much it needs and what fits."""
+    per = MEMORY_PER_SAMPLE[kind]
+    need = MEMORY_BASE + nx * ny * per
+    avail = _available_memory()
+    if avail is None or need <= avail:
+        return
+    side = max(2, math.isqrt(max(0, avail - MEMORY_BASE) // per))
+    raise UsageError(
+        f"{what} on {nx} x {ny} samples needs about {_fmt_bytes(need)} of memory ({per} bytes a "
+        f"sample), more than the {_fmt_bytes(avail)} available; use a coarser {flag} (about "
+        f"{side} x {side} fits)"
+    )
+
+
 def _fmt_point(p: Sequence[float]) -> str:
     """``(x, y)`` to three decimals; a coordinate that rounds to zero reads
     0.000, not -0.000."""
@@ -324,6 +410,10 @@ def cmd_map(args: argparse.Namespace) -> int:
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
     units = _units(args, spec)
     cad = _is_cad(args.output)
+    if len(spec.poses) == 3:  # the grid is the branch map's (four and five poses trace curves)
+        design = "+design" if args.design or args.pivots > 0 else ""
+        _check_memory(spec.view.nx, spec.view.ny, ("cad" if cad else "picture") + design,
+                      f"drawing {args.output}", "--grid")
     export = _export_module(args.output) if cad else None
     plot = None if cad else _plot_module()
     if len(spec.poses) > 3:
@@ -332,7 +422,8 @@ def cmd_map(args: argparse.Namespace) -> int:
     view = spec.view
     if args.plane == "circle":
         if export is not None:
-            _write_cad(export.plane, args.output, filemon, args.output, plane="circle", units=units)
+            _write_cad(export.plane, args.output, args.force, filemon, args.output, plane="circle",
+                       units=units)
         else:
             assert plot is not None
             ax = plot.circle_plane(filemon, units=spec.units)
@@ -354,7 +445,7 @@ def cmd_map(args: argparse.Namespace) -> int:
             ranked, _ = pv.rank(smap, args.pivots, pv.default_spacing(view))
             marks = [p.center for p in ranked]
         if export is not None:
-            _write_cad(export.plane, args.output, filemon, args.output, view, free=free, pivots=marks,
+            _write_cad(export.plane, args.output, args.force, filemon, args.output, view, free=free, pivots=marks,
                        acceptable=acceptable, transmission=transmission, units=units)
         else:
             assert plot is not None
@@ -372,7 +463,7 @@ def cmd_map(args: argparse.Namespace) -> int:
         summary += _outside_note(spec, [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in task.poles]
                                  + [("C0", filemon.driven_center)])
     if export is None:
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -393,7 +484,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     task = spec.task
     driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
     if export is not None:
-        _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent,
+        _write_cad(export.burmester_plane, args.output, args.force, task, args.output, spec.view.extent,
                    driven=driven, plane=args.plane, units=units)
     elif circle:
         assert plot is not None
@@ -420,7 +511,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
                    + (f": {listed}" if pts else ""))
     summary += _outside_note(spec, taskfile.curve_plane_points(task, driven, args.plane))
     if export is None:
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -467,6 +558,8 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     try:
         atlas = burmester.pivot_atlas(spec.task, driven, driving, client=client,
                                       limits=spec.limits, rank_by=args.rank_by, progress=bar)
+    except TimeoutError as e:  # a cluster without workers
+        raise UsageError(str(e)) from None
     finally:
         if client is not None:
             client.close()
@@ -489,7 +582,7 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     if plot is not None and output is not None:
         ax = plot.atlas(atlas, units=spec.units)
         ax.set_title(f"pivot-pair atlas of {spec.source}")
-        _save(ax.figure, output, args.dpi)
+        _save(ax.figure, output, args.dpi, args.force)
         summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
                    f"have an acceptable driving pivot ({pv.describe_limits(spec.limits)}{_lengths_in(spec)}); "
                    f"{pv.describe_ranking(atlas.rank_by)}")
@@ -605,6 +698,7 @@ def cmd_pivots(args: argparse.Namespace) -> int:
     if len(spec.poses) == 5:
         return _pivots_five(args, spec)
     spec = _with_grid(spec, args.grid)
+    _check_memory(spec.view.nx, spec.view.ny, "ranking", "the solution map", "--grid")
     spacing = _spacing(spec, args.spacing)
     if args.json:
         doc = pv.report(spec, args.top, spacing, progress_for(spec.view, "solution map", 16), args.rank_by)
@@ -626,6 +720,8 @@ def cmd_batch(args: argparse.Namespace) -> int:
     try:
         records = burmester.best_pivots_batch(args.tasks, client=client, top=args.top,
                                               spacing=args.spacing, rank_by=args.rank_by)
+    except TimeoutError as e:  # a cluster without workers
+        raise UsageError(str(e)) from None
     finally:
         if client is not None:
             client.close()
@@ -680,24 +776,23 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         task = filemon.task
         what = f"driving pivot A0 = {_fmt_point(pivot)}"
     if export is not None:
-        _write_cad(export.linkage, out, sfb, out, task=task, travel_samples=args.travel or 0, units=units)
+        _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
+                   units=units)
     elif animated:
         plot = _plot_module()
         frames = 60 if args.frames is None else args.frames
         fps = 20 if args.fps is None else args.fps
         try:
-            anim = plot.animate(sfb, out, task=task, frames=frames, fps=fps, units=spec.units)
+            _written(out, args.force,
+                     lambda tmp: plot.animate(sfb, tmp, task=task, frames=frames, fps=fps, units=spec.units))
         except RuntimeError as e:
             raise UsageError(str(e)) from None
-        except OSError as e:
-            raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
-        del anim
         import matplotlib.pyplot as plt
 
         plt.close("all")
     else:
         ax = _plot_module().linkage(sfb, task=task, units=spec.units)
-        _save(ax.figure, out, _picture_dpi(args))
+        _save(ax.figure, out, _picture_dpi(args), args.force)
     state = "branch-free" if sfb.branch_free else "has a branch defect"
     lengths = ", ".join(f"{name} {format_length(v, spec.units)}"
                         for name, v in zip(("ground", "crank", "coupler", "rocker"), sfb.fourbar.lengths))
@@ -734,6 +829,7 @@ def _pair_map(spec: TaskSpec, samples: int) -> burmester.PairMap:
         raise UsageError(f"pairs is for four poses (the pair map); {spec.source} has {n} poses")
     if not 2 <= samples <= 20000:
         raise UsageError(f"--samples must be from 2 to 20000, got {samples}")
+    _check_memory(samples, samples, "ranking", "the pair map", "--samples")
     big = samples * samples >= PROGRESS_MIN_POINTS
     bar = ProgressBar(sys.stderr, "burmester: pair map") if big and sys.stderr.isatty() else None
     return spec.task.pair_map(samples, limits=spec.limits, progress=bar)
@@ -802,11 +898,12 @@ def cmd_pairs(args: argparse.Namespace) -> int:
     spec = _with_units(_load(args.task), args)  # the task file's errors first
     if args.output is not None:
         _output(args.output, PICTURE_TYPES, args.force)
+        _check_memory(args.samples, args.samples, "picture", f"drawing {args.output}", "--samples")
     pmap = _pair_map(spec, args.samples)
     pairs = pmap.best_pairs(args.top, rank_by=args.rank_by)
     if args.output is not None:
         ax = _plot_module().pair_map(pmap, pairs=args.top, rank_by=args.rank_by)
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     if args.json:
         doc = {
             "task": spec.source,
@@ -1001,24 +1098,23 @@ def cmd_design(args: argparse.Namespace) -> int:
         return 0
     sfb = report[0].linkage
     if export is not None:
-        _write_cad(export.linkage, out, sfb, out, task=task, travel_samples=args.travel or 0, units=units)
+        _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
+                   units=units)
     elif animated:
         assert plot is not None
         try:
-            anim = plot.animate(sfb, out, task=task, frames=args.frames or 60, fps=args.fps or 20)
+            _written(out, args.force, lambda tmp: plot.animate(sfb, tmp, task=task, frames=args.frames or 60,
+                                                               fps=args.fps or 20, units=spec.units))
         except RuntimeError as e:
             raise UsageError(str(e)) from None
-        except OSError as e:
-            raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
-        del anim
         import matplotlib.pyplot as plt
 
         plt.close("all")
     else:
         assert plot is not None
-        ax = plot.linkage(sfb, task=task)
+        ax = plot.linkage(sfb, task=task, units=spec.units)
         ax.set_title(f"best design of {spec.source} ({report.rank_by})")
-        _save(ax.figure, out, _picture_dpi(args))
+        _save(ax.figure, out, _picture_dpi(args), args.force)
     f = sfb.figures
     print(f"wrote {out}: the best design, {f.grashof}, {report[0].size_ratio:.1f}x the task's size, "
           f"transmission >= {f.min_transmission_deg:.1f} deg", file=sys.stderr if args.json else sys.stdout)
@@ -1106,13 +1202,7 @@ def cmd_example(args: argparse.Namespace) -> int:
         sys.stdout.write(text)
         return 0
     _output(args.output, (".toml",), args.force)
-    try:
-        with open(args.output, "w" if args.force else "x", encoding="utf-8") as fh:
-            fh.write(text)
-    except FileExistsError:
-        raise UsageError(f"{args.output} exists; give another file name, or --force to replace it") from None
-    except OSError as e:
-        raise UsageError(f"cannot write {args.output}: {e.strerror or e}") from None
+    _written(args.output, args.force, lambda tmp: tmp.write_text(text, encoding="utf-8"))
     print(f"wrote {args.output}")
     return 0
 
@@ -1238,7 +1328,7 @@ def cmd_drive(args: argparse.Namespace) -> int:
         return 0
     shown = sys.stderr if args.json else sys.stdout
     if export is not None:
-        _write_cad(export.sixbar, out, drive, out, turn_samples=args.turn or 0, units=_units(args, spec))
+        _write_cad(export.sixbar, out, args.force, drive, out, turn_samples=args.turn or 0, units=_units(args, spec))
     elif args.map:
         plot = _plot_module()
         e = drive.attachment
@@ -1248,18 +1338,17 @@ def cmd_drive(args: argparse.Namespace) -> int:
                              limits=spec.limits, swing_margin_deg=args.margin,
                              max_time_ratio=args.max_time_ratio)
         ax = plot.drive_map(dmap, rank_by=args.drive_rank_by)
-        _save(ax.figure, out, _picture_dpi(args))
+        _save(ax.figure, out, _picture_dpi(args), args.force)
     elif out.lower().endswith(ANIMATION_TYPES):
         plot = _plot_module()
         try:
-            plot.animate_sixbar(drive, out, frames=args.frames or 120, fps=args.fps or 24)
+            _written(out, args.force,
+                     lambda tmp: plot.animate_sixbar(drive, tmp, frames=args.frames or 120, fps=args.fps or 24))
         except RuntimeError as err:
             raise UsageError(str(err)) from None
-        except OSError as err:
-            raise UsageError(f"cannot write {out}: {err.strerror or err}") from None
     else:
         ax = _plot_module().sixbar(drive)
-        _save(ax.figure, out, _picture_dpi(args))
+        _save(ax.figure, out, _picture_dpi(args), args.force)
     print(f"wrote {out}", file=shown)
     return 0
 
@@ -1509,6 +1598,23 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _remember_sigint(seen: List[int]) -> Any:
+    """On the main thread, handle SIGINT as Python does (KeyboardInterrupt)
+    and note it in ``seen``; returns the handler it replaced (None
+    elsewhere, where signals cannot be handled)."""
+    if threading.current_thread() is not threading.main_thread():
+        return None
+
+    def on_sigint(signum: int, frame: Any) -> None:
+        seen.append(signum)
+        raise KeyboardInterrupt
+
+    try:
+        return signal.signal(signal.SIGINT, on_sigint)
+    except ValueError:
+        return None
+
+
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Entry point of ``python -m burmester`` and the ``burmester`` script.
 
@@ -1528,8 +1634,22 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         parser.print_help()
         return 0
     prog = f"burmester {args.command}"
+    # Ctrl-C is remembered: a library's C code that runs the signal handler
+    # may turn the KeyboardInterrupt into an error of its own (matplotlib:
+    # "Invalid affine transformation matrix"); after a SIGINT any error is
+    # the interruption.
+    interrupted: List[int] = []
+    previous = _remember_sigint(interrupted)
     try:
-        return int(args.func(args))
+        try:
+            return int(args.func(args))
+        except Exception:
+            if interrupted:
+                raise KeyboardInterrupt from None
+            raise
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGINT, previous)
     except (UsageError, TaskFileError, burmester.BurmesterError) as e:
         print(f"{prog}: error: {e}", file=sys.stderr)
         return 2

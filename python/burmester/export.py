@@ -18,6 +18,10 @@ plane, to DXF (with ezdxf) and to SVG (with the standard library).
   best pivots), or its circle-point plane (Filemon's lines and branch-free
   double wedge, the image poles and their circle, ``C1`` and ``C'k``).
 
+Every file is written whole to a temporary file beside its target and moved
+into place when complete (:mod:`burmester._io`): a write error, a full disk
+or Ctrl-C leaves no partial file and an existing one as it was.
+
 Every coordinate comes from the core (joints, coupler paths, travel, conic
 polylines, poles, sectors); nothing is computed again here. Lengths are
 written as they are, in the task's unit, which ``units=`` records (DXF
@@ -123,6 +127,7 @@ import numpy as np
 import numpy.typing as npt
 
 import burmester
+from burmester import _io
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
     DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
@@ -1112,7 +1117,11 @@ def _write(d: _Drawing, path: Path, units: str) -> Path:
         # A unit DXF may not know: its name written into the drawing (by both writers), in a corner.
         x0, _, y0, _ = d.bounds()
         d.labels.append(_Label((x0, y0), f"lengths in {units}"))
-    _WRITERS[path.suffix.lower()](d, path, units)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io): a write error or Ctrl-C leaves no partial file and
+    # an existing one as it was.
+    with _io.atomic_path(path) as tmp:
+        _WRITERS[path.suffix.lower()](d, tmp, units)
     return path
 
 
@@ -1157,7 +1166,8 @@ def linkage(
         sfb: the four-bar, from :meth:`burmester.Filemon.four_bar` or
             :meth:`burmester.Task.four_bar`.
         path: the file to write, ending in ``.dxf`` or ``.svg`` (replaced if
-            it exists).
+            it exists; written whole to a temporary file beside it and moved
+            into place when complete, so an error leaves no partial file).
         task: the task, to mark the poses it asks for; default: the poses
             the linkage reaches at its input angles.
         travel_samples: also draw the linkage at this many input angles
@@ -1527,26 +1537,6 @@ def _sixbar_drawing(drive: burmester.Drive, turn_samples: int, path_samples: int
     return d
 
 
-def _write_atomic(d: _Drawing, path: Path, units: str) -> Path:
-    """Write the drawing beside ``path`` and move it into place when complete."""
-    import os
-    import tempfile
-
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=str(path.parent))
-    os.close(fd)
-    try:
-        _WRITERS[path.suffix.lower()](d, Path(tmp), units)
-        mask = os.umask(0)
-        os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)  # mkstemp's file is private; give it the usual mode
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-    return path
-
-
 def sixbar(
     drive: burmester.Drive,
     path: PathLike,
@@ -1596,7 +1586,7 @@ def _sixbar_to(suffixes: Sequence[str], drive: burmester.Drive, path: PathLike, 
         raise TypeError(f"expected a burmester.Drive, got {type(drive).__name__}")
     target = _target(path, suffixes)
     units = _units(units)
-    return _write_atomic(_sixbar_drawing(drive, turn_samples, path_samples, labels), target, units)
+    return _write(_sixbar_drawing(drive, turn_samples, path_samples, labels), target, units)
 
 
 def sixbar_dxf(drive: burmester.Drive, path: PathLike, *, turn_samples: int = 0,

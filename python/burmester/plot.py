@@ -72,6 +72,7 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     ) from e
 
 import burmester
+from burmester import _io
 from burmester._burmester import Filemon, Grid, PairMap, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
     DEFAULT_GRID, curve_plane_points, default_circle_view, default_curve_view, default_view, describe_outside,
@@ -1386,7 +1387,20 @@ def animate(
 
     anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
     writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
-    anim.save(str(path), writer=writer, dpi=dpi)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io): Ctrl-C or a write error leaves no partial file.
+    with _io.atomic_path(path) as tmp:
+        try:
+            anim.save(str(tmp), writer=writer, dpi=dpi)
+        except Exception as e:
+            # The writer finishes its file in a `finally`; after Ctrl-C that
+            # can fail too (no frames yet) and hide the interrupt.
+            cause: Optional[BaseException] = e
+            while cause is not None:
+                if isinstance(cause, KeyboardInterrupt):
+                    raise cause from None
+                cause = cause.__context__
+            raise
     return anim
 
 
@@ -2028,8 +2042,6 @@ def animate_sixbar(
             not turn fully.
         RuntimeError: ``.mp4`` without ffmpeg.
     """
-    import os
-    import tempfile
 
     six, drive = _drive_of(obj)
     path = Path(path)
@@ -2085,18 +2097,11 @@ def animate_sixbar(
 
     anim = FuncAnimation(fig, update, frames=len(polys), interval=1000.0 / fps, blit=False)
     writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=suffix, dir=str(path.parent))
-    os.close(fd)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io), as animate writes.
     try:
-        anim.save(tmp, writer=writer, dpi=dpi)
-        mask = os.umask(0)
-        os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)  # mkstemp's file is private; give it the usual mode
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+        with _io.atomic_path(path) as tmp:
+            anim.save(str(tmp), writer=writer, dpi=dpi)
     finally:
         plt.close(fig)
     return anim

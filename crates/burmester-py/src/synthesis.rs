@@ -422,13 +422,23 @@ impl PyTask {
     }
 
     #[pyo3(signature = (samples = Count(200)), text_signature = "($self, samples=200)")]
-    fn curve_dyads(&self, py: Python<'_>, samples: Count) -> PyResult<Vec<Vec<PyCurveDyad>>> {
+    fn curve_dyads<'py>(
+        &self,
+        py: Python<'py>,
+        samples: Count,
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         let four = curves::four(&self.inner, "Task.curve_dyads")?;
-        let runs = py.detach(|| four.dyad_runs(samples.0)).py()?;
-        Ok(runs
-            .iter()
-            .map(|r| r.iter().map(Into::into).collect())
-            .collect())
+        // Ten million samples take seconds: Ctrl-C is watched.
+        let long = samples.0 >= 1 << 14;
+        let runs = crate::run::run_in(py, long, None, None, "dyads", |control| {
+            four.dyad_runs_with(samples.0, control)
+        })?;
+        crate::run::list_polled(py, &runs, |run| {
+            Ok(crate::run::list_polled(py, run, |d| {
+                Ok(Bound::new(py, PyCurveDyad::from(d))?.into_any())
+            })?
+            .into_any())
+        })
     }
 
     /// Four poses: the branch-free arcs of the center-point curve in view
@@ -458,7 +468,7 @@ impl PyTask {
                 arcs.free_center_arcs(&vp)
             }
         });
-        Ok(lines.iter().map(|l| curves::polyline(py, l)).collect())
+        lines.iter().map(|l| curves::polyline(py, l)).collect()
     }
 
     /// Four poses: the branch class (`"free"`, `"defective"`, `"boundary"`)
@@ -492,16 +502,15 @@ impl PyTask {
                 four.order_arcs(&vp)
             }
         });
-        Ok(arcs
-            .iter()
+        arcs.iter()
             .map(|a| {
-                (
+                Ok((
                     a.order.to_string(),
                     a.order.direction().map(|d| d.as_str()),
-                    curves::polyline(py, &a.points),
-                )
+                    curves::polyline(py, &a.points)?,
+                ))
             })
-            .collect())
+            .collect()
     }
 
     // Five poses: the Burmester points.
@@ -1023,7 +1032,8 @@ impl PySynthesizedFourBar {
         py: Python<'py>,
         samples: Count,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let v = self.inner.travel_angles(samples.0).py()?;
+        let sfb = self.inner;
+        let v = py.detach(|| sfb.travel_angles(samples.0)).py()?;
         let n = v.len();
         Ok(to_numpy(py, &[n], v))
     }

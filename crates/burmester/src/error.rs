@@ -101,31 +101,47 @@ pub enum PolygonProblem {
     /// An envelope that leaves out a pose's coupler point (the coupler
     /// must be inside it at every pose).
     ExcludesPoses,
+    /// More vertices than
+    /// [`Constraints::MAX_POLYGON_VERTICES`](crate::Constraints::MAX_POLYGON_VERTICES).
+    TooManyVertices,
 }
 
 impl PolygonProblem {
-    /// A short name: `"too few vertices"`, `"no area"`, `"self-intersecting"`.
+    /// A short name: `"too few vertices"`, `"no area"`, `"self-intersecting"`,
+    /// `"too many vertices"`.
     pub fn as_str(self) -> &'static str {
         match self {
             PolygonProblem::TooFewVertices => "too few vertices",
             PolygonProblem::NoArea => "no area",
             PolygonProblem::SelfIntersecting => "self-intersecting",
             PolygonProblem::ExcludesPoses => "excludes poses",
+            PolygonProblem::TooManyVertices => "too many vertices",
         }
     }
 }
 
 impl fmt::Display for PolygonProblem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            PolygonProblem::TooFewVertices => "it has fewer than 3 vertices",
-            PolygonProblem::NoArea => "its vertices lie on one line, so it has no area",
-            PolygonProblem::SelfIntersecting => "two of its edges cross (it is not simple)",
-            PolygonProblem::ExcludesPoses => {
-                "a pose's coupler point lies outside it, so no linkage can stay inside it \
-                 (draw it around every pose)"
+        const AREA: &str = "pass a simple polygon with an area";
+        match self {
+            PolygonProblem::TooFewVertices => write!(f, "it has fewer than 3 vertices; {AREA}"),
+            PolygonProblem::NoArea => {
+                write!(f, "its vertices lie on one line, so it has no area; {AREA}")
             }
-        })
+            PolygonProblem::SelfIntersecting => {
+                write!(f, "two of its edges cross (it is not simple); {AREA}")
+            }
+            PolygonProblem::ExcludesPoses => f.write_str(
+                "a pose's coupler point lies outside it, so no linkage can stay inside it \
+                 (draw it around every pose)",
+            ),
+            PolygonProblem::TooManyVertices => write!(
+                f,
+                "it has more than {} vertices; approximate it with fewer (a circle of a few \
+                 hundred vertices is within 1e-4 of its radius)",
+                crate::Constraints::MAX_POLYGON_VERTICES
+            ),
+        }
     }
 }
 
@@ -341,7 +357,7 @@ pub enum InvalidInput {
         tolerance: f64,
     },
     /// A polygon (a base plate, an obstacle) is not acceptable.
-    #[error("{name} is not a usable polygon: {problem}; pass a simple polygon with an area")]
+    #[error("{name} is not a usable polygon ({vertices} vertices): {problem}")]
     Polygon {
         /// Which polygon (for example `"base_plate"` or `"obstacle 2"`).
         name: String,
@@ -444,10 +460,10 @@ pub enum DegenerateError {
         /// Second pose index (1-based).
         j: usize,
     },
-    /// The three poses are rotations about one point: all three poles
-    /// coincide, and every dyad has its center point there.
+    /// The poses are rotations about one point: all their poles coincide,
+    /// and every dyad has its center point there.
     #[error(
-        "the three poses are rotations about one point ({}, {}): all poles coincide there, so \
+        "the poses are rotations about one point ({}, {}): all poles coincide there, so \
          the synthesis is degenerate (every dyad is centered there); move one pose off that \
          rotation",
         Num(*.x), Num(*.y)
@@ -940,8 +956,39 @@ pub(crate) fn try_zeroed_vec<T: bytemuck::Zeroable>(
     bytemuck::allocation::try_zeroed_vec(n).map_err(|()| out_of_memory::<T>(what, n))
 }
 
+/// The items of `items` (about `n` of them) in a vector whose memory is
+/// reserved fallibly: [`Error::OutOfMemory`] instead of an abort when it
+/// cannot be allocated. The collecting `collect()` of an iterator sized by
+/// the input.
+pub(crate) fn try_collect<T>(
+    what: &'static str,
+    n: usize,
+    items: impl IntoIterator<Item = T>,
+) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|_| out_of_memory::<T>(what, n))?;
+    for x in items {
+        try_push(&mut v, what, x)?;
+    }
+    Ok(v)
+}
+
+/// Pushes `x` onto `v`, growing it fallibly: [`Error::OutOfMemory`]
+/// instead of an abort when it cannot grow (a vector whose length the
+/// input decides).
+#[inline]
+pub(crate) fn try_push<T>(v: &mut Vec<T>, what: &'static str, x: T) -> Result<()> {
+    if v.len() == v.capacity() {
+        v.try_reserve(1)
+            .map_err(|_| out_of_memory::<T>(what, v.len().saturating_add(1)))?;
+    }
+    v.push(x);
+    Ok(())
+}
+
 /// [`Error::OutOfMemory`] for `n` values of `T`.
-fn out_of_memory<T>(what: &'static str, n: usize) -> Error {
+pub(crate) fn out_of_memory<T>(what: &'static str, n: usize) -> Error {
     Error::OutOfMemory {
         what,
         bytes: n.saturating_mul(core::mem::size_of::<T>()),

@@ -81,7 +81,7 @@ use nalgebra::{Point2, Vector2};
 use pulp::{Arch, Simd, WithSimd};
 
 use crate::design::constraints::Prepared;
-use crate::design::rank::{RankColumns, rank_samples, signed_distances, tie_order};
+use crate::design::rank::{RankColumns, rank_samples, signed_distances_with, tie_order};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::{Control, Rows, run_blocks_polled, run_blocks_with};
 use crate::error::{
@@ -854,7 +854,7 @@ impl DriveContext {
             ];
             let plate = !judge.prepared.is_empty();
             // Made on a block's first row: a cancelled map allocates none.
-            let init = || None::<RowScratch>;
+            let init = || Ok(None::<RowScratch>);
             return run_blocks_with(nx, ny, rows, control, init, |scratch, j0, mut block, n| {
                 let scratch = scratch.get_or_insert_with(|| RowScratch::new(grid));
                 for r in 0..n {
@@ -980,11 +980,13 @@ impl DriveContext {
             acceptable: columns.acceptable,
         };
         rc.check_len(n)?;
-        let margins = core::cell::OnceCell::new();
-        let margin =
-            |s: usize| margins.get_or_init(|| signed_distances(&self.grid, columns.valid))[s];
+        // A drive map is small (its grid at most MAX_GRID_SAMPLES): every
+        // margin at once, by the distance transform.
+        let control = Control::new();
+        let margins = signed_distances_with(&self.grid, columns.valid, &control)?;
+        let margin = |s: usize| margins[s];
         let mut out: Vec<Drive> = Vec::new();
-        rank_samples(n, rank_by, &rc, &margin, |s, m, score| {
+        rank_samples(n, rank_by, &rc, &margin, k, &control, |s, m, score| {
             if out.len() >= k {
                 return false;
             }
@@ -993,13 +995,13 @@ impl DriveContext {
                 return true;
             }
             if let Ok(mut d) = self.drive_at(s) {
-                d.margin = m;
+                d.margin = m.unwrap_or_else(|| margin(s));
                 d.score = score;
                 d.ranked_by = Some(rank_by);
                 out.push(d);
             }
             out.len() < k
-        });
+        })?;
         Ok(out)
     }
 }
