@@ -495,7 +495,26 @@ class Explorer:
         bp.linkage(st.linkage, task=st.task, ax=self.ax_linkage, legend=False)
         self._figures_text.set_text(self._footer())
         self._status_text.set_text("" if self.error is None else f"refused: {self.error}")
+        self._fit_footer()
         self.figure.canvas.draw_idle()
+
+    def _fit_footer(self) -> None:
+        """Keep the axes, their tick labels and x labels above the footer:
+        on a narrow figure the footer wraps to more lines, and the axes'
+        bottom rises by what it needs (never below the layout's 0.2)."""
+        get_renderer = getattr(self.figure.canvas, "get_renderer", None)
+        if get_renderer is None:
+            return
+        renderer = get_renderer()
+        height = self.figure.bbox.height
+        if height <= 0:
+            return
+        top = self._figures_text.get_window_extent(renderer).y1
+        below = max(ax.get_window_extent(renderer).y0 - ax.get_tightbbox(renderer).y0
+                    for ax in (self.ax_map, self.ax_linkage))
+        bottom = min(0.45, max(0.2, (top + below + 6.0) / height))
+        if abs(bottom - self.figure.subplotpars.bottom) > 1e-3:
+            self.figure.subplots_adjust(bottom=bottom)
 
     def verdict(self) -> str:
         """The linkage's verdict under the explorer's limits, in words: what

@@ -262,9 +262,9 @@ def test_the_command_line_draws_the_task_files_unit(tmp_path, monkeypatch, capsy
     seen = []
     real = cli._save
 
-    def spy(fig, path, dpi):
+    def spy(fig, path, *args):
         seen.append([(a.get_xlabel(), a.get_ylabel()) for a in fig.axes if a.get_xlabel()][0])
-        real(fig, path, dpi)
+        real(fig, path, *args)
 
     monkeypatch.setattr(cli, "_save", spy)
     lid = write(tmp_path, "lid.toml", LID)

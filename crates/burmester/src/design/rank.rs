@@ -461,7 +461,10 @@ pub(crate) fn rank_samples(
         let mut count = 0usize;
         let mut i = 0;
         while i < list.len() {
-            poll(control, i, list.len())?;
+            // Each candidate taken can cost a linkage (microseconds to
+            // milliseconds with obstacles): the flag (one atomic load) is
+            // checked before every one.
+            control.check(i, list.len())?;
             let start = list[i].1;
             // A run starting below the m-th key may miss members.
             if !complete && start.total_cmp(&threshold) == Ordering::Less {
@@ -503,6 +506,7 @@ pub(crate) fn rank_samples(
                 control,
             )?;
             for (s, _, mg, score) in run {
+                control.check(i, list.len())?;
                 count += 1;
                 if count <= offered {
                     continue;
@@ -610,7 +614,14 @@ fn select(
     if total <= m || tie.is_none() {
         list.try_reserve_exact(heap.len())
             .map_err(|_| out_of_memory::<(usize, f64)>("the best candidates", heap.len()))?;
-        list.extend(heap.into_sorted_vec().into_iter().map(|w| (w.0, w.1)));
+        // Sorted by pieces that check the flag (a heap's own sort of a
+        // million candidates takes a fraction of a second unpolled).
+        list.extend(heap.into_vec().into_iter().map(|w| (w.0, w.1)));
+        sort_polled(
+            &mut list,
+            |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)),
+            control,
+        )?;
         return Ok((list, threshold, total <= m));
     }
     drop(heap);
