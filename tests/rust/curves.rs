@@ -1678,3 +1678,488 @@ fn a_far_burmester_point_moves_with_the_task() {
     }
     assert_eq!(far, 1);
 }
+
+// ---------------------------------------------------------------------------
+// Issue 24: the branch-free arcs in any view (item 1), the library's own
+// points on its curves (item 4), the Burmester points near merging and of
+// degenerate tasks (items 2 and 3).
+// ---------------------------------------------------------------------------
+
+/// The poses of issue 24, item 1.
+fn issue24_arc_poses() -> Vec<Pose> {
+    [
+        (0.3870923432120442, -2.0070733230239854, -0.9799744195923201),
+        (1.5137605007600652, -2.3672949991117136, -1.0598686177589811),
+        (0.7569053408785356, -1.3360742238078, -1.2807591739581474),
+        (0.573766942241772, -1.346572992188627, -1.2235828399262854),
+    ]
+    .iter()
+    .map(|&(x, y, a)| Pose::new(x, y, a))
+    .collect()
+}
+
+/// Where `p` lies on the polylines: the line, the segment and the distance
+/// of the nearest segment.
+fn locate(lines: &[Vec<Point2<f64>>], p: Point2<f64>) -> Option<(usize, usize, f64)> {
+    let mut best: Option<(usize, usize, f64)> = None;
+    for (li, l) in lines.iter().enumerate() {
+        for (i, w) in l.windows(2).enumerate() {
+            let d = seg_dist(p, w[0], w[1]);
+            if best.is_none_or(|b| d < b.2) {
+                best = Some((li, i, d));
+            }
+        }
+    }
+    best
+}
+
+/// The branch-free arcs of `fa` in `view` (the circle-point plane or the
+/// center-point plane) against the curve traced 50 times finer and
+/// classified point by point (`curve_branch`): every point of the fine
+/// trace between two consecutive vertices of an arc is free, and every free
+/// point of the fine trace lies on an arc (away from the exact arc ends and
+/// `C0`/`C1`, within a millionth of the view of which the class is
+/// rounding). Returns the number of fine points checked.
+fn check_free_arcs_dense(
+    four: &FourPositions,
+    fa: &FilemonArcs,
+    view: &Viewport,
+    circle: bool,
+) -> Result<usize, TestCaseError> {
+    let (arcs, curve) = if circle {
+        (fa.free_circle_arcs(view), four.circle_point_curve())
+    } else {
+        (fa.free_center_arcs(view), four.center_point_curve())
+    };
+    let class = |p: Point2<f64>| -> Option<Branch> {
+        if circle {
+            Some(fa.classify_circle_point(p))
+        } else {
+            fa.classify_center_point(p).ok()
+        }
+    };
+    let mut marks: Vec<Point2<f64>> = fa
+        .arc_ends()
+        .iter()
+        .filter_map(|e| if circle { Some(e.circle) } else { e.center })
+        .collect();
+    let driven = fa.driven();
+    marks.push(if circle { driven.circle } else { driven.center });
+    let diag = (view.xmax - view.xmin).hypot(view.ymax - view.ymin);
+    let near_mark = |p: Point2<f64>| marks.iter().any(|m| (m - p).norm() <= 1e-6 * diag);
+    let fine = curve.trace(view, Some(2e-5 * diag)).polylines();
+    // Between two vertices of an arc: free.
+    for arc in &arcs {
+        for w in arc.windows(2) {
+            let (Some((la, sa, da)), Some((lb, sb, db))) =
+                (locate(&fine, w[0]), locate(&fine, w[1]))
+            else {
+                continue;
+            };
+            if la != lb || da > 1e-6 * diag || db > 1e-6 * diag {
+                continue;
+            }
+            let line = &fine[la];
+            let (lo, hi) = (sa.min(sb), sa.max(sb));
+            // The shorter way round a closed line.
+            let closed = line[0] == line[line.len() - 1];
+            let idx: Vec<usize> = if closed && 2 * (hi - lo) > line.len() {
+                (hi + 1..line.len()).chain(0..=lo).collect()
+            } else {
+                (lo + 1..=hi).collect()
+            };
+            for i in idx {
+                let p = line[i];
+                if near_mark(p) {
+                    continue;
+                }
+                let c = class(p);
+                prop_assert!(
+                    c == Some(Branch::Free) || c.is_none(),
+                    "the chord {} - {} of an arc passes {} ({:?}) in view {:?}",
+                    w[0],
+                    w[1],
+                    p,
+                    c,
+                    view
+                );
+            }
+        }
+    }
+    // Every free point on an arc.
+    let mut n = 0;
+    for p in fine.iter().flatten() {
+        if near_mark(*p) {
+            continue;
+        }
+        n += 1;
+        if class(*p) == Some(Branch::Free) {
+            let d = poly_dist(&arcs, *p);
+            prop_assert!(
+                d <= 2e-3 * diag,
+                "free point {} is {} from every arc in view {:?}",
+                p,
+                d,
+                view
+            );
+        }
+    }
+    Ok(n)
+}
+
+/// Driving dyads at vertices of the center-point arcs (and at fine points
+/// off them) against the built linkage: free on an arc, defective off.
+fn check_free_arcs_by_driving(
+    four: &FourPositions,
+    fa: &FilemonArcs,
+    view: &Viewport,
+) -> Result<(), TestCaseError> {
+    let driven = fa.driven();
+    let s = four.size();
+    let arcs = fa.free_center_arcs(view);
+    let fine = four.center_point_curve().polylines(view);
+    let diag = (view.xmax - view.xmin).hypot(view.ymax - view.ymin);
+    for p in fine.iter().flatten().step_by(5) {
+        if (p - driven.center).norm() < 1e-3 * s || p.coords.norm() > 1e3 * s {
+            continue;
+        }
+        let Ok(a) = four.dyad_from_center(*p) else {
+            continue;
+        };
+        if (a.circle - driven.circle).norm() < 1e-3 * s {
+            continue;
+        }
+        let Ok(drive) = four.drive(&a, &driven) else {
+            continue;
+        };
+        if drive.modes.iter().any(|m| m.is_none()) {
+            continue;
+        }
+        let on_arc = poly_dist(&arcs, *p) <= 1e-9 * diag;
+        if on_arc {
+            prop_assert!(
+                drive.is_branch_free(),
+                "{} is on an arc: {:?}",
+                p,
+                drive.modes
+            );
+        } else if !drive.is_branch_free() {
+            prop_assert!(fa.classify_center_point(*p).unwrap() != Branch::Free);
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn issue24_free_arcs_next_to_c0_are_the_same_in_every_view() {
+    let poses = issue24_arc_poses();
+    let four = FourPositions::new(&poses).unwrap();
+    let c0 = Point2::new(3.832759076400307, -0.5455110379995003);
+    let driven = four.dyad_from_center(c0).unwrap();
+    let fa = four.filemon(&driven).unwrap();
+    let big = Viewport::new(-15.84, 17.46, -18.42, 14.89).unwrap();
+    let small = Viewport::new(c0.x - 0.6, c0.x + 0.6, c0.y - 0.6, c0.y + 0.6).unwrap();
+    // The defective stretch from C0 to the arc end near (3.46561, -0.49479):
+    // the curve's point near (3.612795, -0.522647) is defective, and on no
+    // arc of either view.
+    let target = Point2::new(3.612795, -0.522647);
+    let curve = four.center_point_curve();
+    let m = curve
+        .intersect_line(&burmester::Line {
+            point: target,
+            direction: curve.gradient(target),
+        })
+        .into_iter()
+        .min_by(|a, b| (a - target).norm().total_cmp(&(b - target).norm()))
+        .unwrap();
+    assert!((m - target).norm() < 1e-6);
+    assert_eq!(fa.classify_center_point(m).unwrap(), Branch::Defective);
+    let a = four.dyad_from_center(m).unwrap();
+    assert!(!four.drive(&a, &driven).unwrap().is_branch_free());
+    for view in [&big, &small] {
+        let arcs = fa.free_center_arcs(view);
+        assert!(!arcs.is_empty());
+        assert!(poly_dist(&arcs, m) > 1e-3, "{view:?}");
+        // The arc next to C0 starts at the arc end, in both views.
+        let end = arcs
+            .iter()
+            .flat_map(|a| [a[0], a[a.len() - 1]])
+            .min_by(|a, b| (a - c0).norm().total_cmp(&(b - c0).norm()))
+            .unwrap();
+        assert!(
+            (end - Point2::new(3.46561, -0.49479)).norm() < 1e-4,
+            "{end} in {view:?}"
+        );
+        check_free_arcs_dense(&four, &fa, view, false).unwrap();
+        check_free_arcs_dense(&four, &fa, view, true).unwrap();
+        check_free_arcs_by_driving(&four, &fa, view).unwrap();
+    }
+}
+
+/// The driven center of random tasks and views: `t` picks a driven dyad
+/// on the curve, `view` a viewport (its center in task sizes from the
+/// centroid and its half-width in task sizes, or around `C0`).
+fn check_arcs_in_views(
+    poses: &[Pose],
+    pick: usize,
+    views: &[(f64, f64, f64, bool)],
+) -> Result<(), TestCaseError> {
+    let Ok(four) = FourPositions::new(poses) else {
+        return Ok(());
+    };
+    let Ok(runs) = four.dyad_runs(100) else {
+        return Ok(());
+    };
+    let all: Vec<_> = runs.iter().flatten().collect();
+    if all.is_empty() {
+        return Ok(());
+    }
+    let driven = all[pick % all.len()].dyad();
+    let s = four.size();
+    if !(driven.length() > 1e-2 * s && driven.length() < 1e3 * s) {
+        return Ok(());
+    }
+    let Ok(fa) = four.filemon(&driven) else {
+        return Ok(());
+    };
+    let c = centroid(four.poses());
+    for &(x, y, h, at_c0) in views {
+        let center = if at_c0 {
+            driven.center + Vector2::new(x, y) * (0.1 * h * s)
+        } else {
+            c + Vector2::new(x, y) * s
+        };
+        let r = h * s;
+        let view = Viewport::new(center.x - r, center.x + r, center.y - r, center.y + r).unwrap();
+        check_free_arcs_dense(&four, &fa, &view, false)?;
+        check_free_arcs_dense(&four, &fa, &view, true)?;
+        check_free_arcs_by_driving(&four, &fa, &view)?;
+    }
+    Ok(())
+}
+
+fn views() -> impl Strategy<Value = Vec<(f64, f64, f64, bool)>> {
+    prop::collection::vec(
+        (
+            -3.0f64..3.0,
+            -3.0f64..3.0,
+            prop_oneof![0.05f64..0.5, 0.5f64..8.0],
+            any::<bool>(),
+        ),
+        2,
+    )
+}
+
+proptest! {
+    #![proptest_config(cases(24))]
+
+    /// Item 1's target: the arcs against `curve_branch` on a fine trace
+    /// and against the built linkage, in views of any size and place
+    /// (around `C0` too).
+    #[test]
+    fn issue24_free_arcs_match_curve_branch_in_any_view(
+        p in link_params(), pick in 0usize..1000, v in views(), t in similarity(),
+    ) {
+        let m = made(&p, 4, 0.05);
+        prop_assume!(m.is_some());
+        let m = m.unwrap();
+        let moved: Vec<Pose> = m.poses.iter().map(|q| t.pose(q)).collect();
+        check_arcs_in_views(&moved, pick, &v)?;
+    }
+
+    #[test]
+    fn issue24_free_arcs_of_random_tasks_match_curve_branch(
+        poses in random_poses(4), pick in 0usize..1000, v in views(),
+    ) {
+        prop_assume!(rotations_at_least(&poses, 0.1));
+        check_arcs_in_views(&poses, pick, &v)?;
+    }
+}
+
+/// The poses of issue 24, item 4, moved by `(dx, dy)`.
+fn issue24_near_poses(dx: f64, dy: f64) -> Vec<Pose> {
+    [
+        (-0.701010693048561, 4.993010936525712, -1.3224198951516195),
+        (-1.2501494308566816, 4.943533773269543, -1.2288929794391865),
+        (-1.7983933700082968, 4.823460975776655, -1.1353740707007742),
+        (-2.3357200981193205, 4.631763723094262, -1.041618308198372),
+    ]
+    .iter()
+    .map(|&(x, y, a)| Pose::new(x + dx, y + dy, a))
+    .collect()
+}
+
+/// Every dyad the library puts on the curves is accepted back: the
+/// crank-rotation samples and parameter samples (the pair map's), the
+/// traced vertices of both curves, the poles and the arc ends. Returns how
+/// many points were checked.
+fn check_own_points(four: &FourPositions, n: usize) -> Result<usize, TestCaseError> {
+    let mut count = 0;
+    let mut dyads = Vec::new();
+    if let Ok(runs) = four.dyad_runs(n) {
+        dyads.extend(runs.into_iter().flatten());
+    }
+    if let Ok(samples) = four.parameter_samples(n) {
+        dyads.extend(samples.into_iter().flatten());
+    }
+    for d in &dyads {
+        count += 1;
+        let z = four.circle_point(d.center);
+        prop_assert!(
+            z.is_ok() || matches!(z, Err(Error::Degenerate(_))),
+            "center {} refused: {:?}",
+            d.center,
+            z
+        );
+        prop_assert!(four.curve_dyad(d.center).is_ok() || z.is_err());
+        let g = four.center_point(d.circle);
+        prop_assert!(
+            g.is_ok() || matches!(g, Err(Error::Degenerate(_))),
+            "circle point {} refused: {:?}",
+            d.circle,
+            g
+        );
+    }
+    let view = view_around(four, 4.0);
+    for g in four
+        .center_point_curve()
+        .polylines(&view)
+        .into_iter()
+        .flatten()
+    {
+        count += 1;
+        let z = four.circle_point(g);
+        prop_assert!(!matches!(z, Err(Error::InvalidInput(_))), "{}: {:?}", g, z);
+    }
+    for c in four
+        .circle_point_curve()
+        .polylines(&view)
+        .into_iter()
+        .flatten()
+    {
+        count += 1;
+        let g = four.center_point(c);
+        prop_assert!(!matches!(g, Err(Error::InvalidInput(_))), "{}: {:?}", c, g);
+    }
+    for p in four.poles().iter().filter_map(|p| p.point) {
+        count += 1;
+        let z = four.circle_point(p);
+        prop_assert!(
+            !matches!(z, Err(Error::InvalidInput(_))),
+            "pole {}: {:?}",
+            p,
+            z
+        );
+    }
+    for d in dyads.iter().step_by(dyads.len().max(8) / 8) {
+        if let Ok(fa) = four.filemon(&d.dyad()) {
+            for e in fa.arc_ends() {
+                count += 1;
+                let g = four.center_point(e.circle);
+                prop_assert!(
+                    !matches!(g, Err(Error::InvalidInput(_))),
+                    "{:?}: {:?}",
+                    e,
+                    g
+                );
+            }
+        }
+    }
+    Ok(count)
+}
+
+#[test]
+fn issue24_the_library_accepts_its_own_dyads_in_every_frame() {
+    for (dx, dy) in [(0.0, 0.0), (0.0, 1.0), (1e3, -1e3), (0.5, 0.25)] {
+        let four = FourPositions::new(&issue24_near_poses(dx, dy)).unwrap();
+        let runs = four.dyad_runs(200).unwrap();
+        let dyads: Vec<_> = runs.iter().flatten().collect();
+        assert_eq!(dyads.len(), 404);
+        for d in &dyads {
+            four.circle_point(d.center).unwrap();
+            four.curve_dyad(d.center).unwrap();
+            four.center_point(d.circle).unwrap();
+            let fa = four.filemon(&d.dyad());
+            assert!(!matches!(
+                fa,
+                Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
+            ));
+        }
+        // Pairs of them build (the drive of `four_bar`).
+        for w in dyads.windows(2).step_by(13) {
+            let r = four.drive(&w[0].dyad(), &w[1].dyad());
+            assert!(!matches!(
+                r,
+                Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
+            ));
+        }
+        check_own_points(&four, 200).unwrap();
+    }
+    // The on-curve test moves with the task: a point accepted in one frame
+    // is accepted moved, turned, scaled and mirrored.
+    let four = FourPositions::new(&issue24_near_poses(0.0, 0.0)).unwrap();
+    let dyads: Vec<_> = four.dyad_runs(200).unwrap().into_iter().flatten().collect();
+    for t in [
+        Similarity::new(1.0, 0.0, Vector2::new(0.0, 1.0)).unwrap(),
+        Similarity::new(1e3, 1.0, Vector2::new(-3.0, 7.0)).unwrap(),
+        Similarity::new(1e-3, -2.0, Vector2::new(0.1, 0.0))
+            .unwrap()
+            .mirrored(),
+    ] {
+        let moved: Vec<Pose> = four.poses().iter().map(|q| t.pose(q)).collect();
+        let f2 = FourPositions::new(&moved).unwrap();
+        for d in &dyads {
+            f2.circle_point(t.point(d.center)).unwrap();
+        }
+    }
+}
+
+/// Four poses that are nearly rotations about one point (the issue's
+/// case: the coefficients of the curves cancel to a thousandth of their
+/// terms and the curve has a nearly singular point): rotations about a
+/// random center by random small or large steps, each pose then moved by
+/// a random fraction (down to `1e-4`) of the task.
+fn near_rotations() -> impl Strategy<Value = Vec<Pose>> {
+    (
+        (-5.0f64..5.0, -5.0f64..5.0),
+        0.5f64..6.0,
+        -PI..PI,
+        prop::array::uniform3(prop_oneof![0.02f64..0.2, -0.2f64..-0.02, 0.2f64..2.0]),
+        prop::array::uniform4((-1.0f64..1.0, -1.0f64..1.0)),
+        -4.0f64..-1.0,
+    )
+        .prop_map(|(c, r, a0, steps, jitter, e)| {
+            let mut a = a0;
+            let mut out = Vec::new();
+            for k in 0..4 {
+                if k > 0 {
+                    a += steps[k - 1];
+                }
+                let j = 10f64.powf(e) * r;
+                let p = Point2::new(
+                    c.0 + r * a.cos() + j * jitter[k].0,
+                    c.1 + r * a.sin() + j * jitter[k].1,
+                );
+                out.push(Pose::new(p.x, p.y, a - 1.0));
+            }
+            out
+        })
+}
+
+proptest! {
+    #![proptest_config(cases(48))]
+
+    /// Item 4's target: every point the library computes on the curves is
+    /// accepted back by them, for tasks of nearly equal rotations (curves
+    /// with nearly singular points, coefficients that cancel) moved,
+    /// turned, scaled and mirrored anywhere.
+    #[test]
+    fn issue24_own_points_are_on_the_curves_in_any_frame(
+        poses in prop_oneof![near_rotations(), random_poses(4)],
+        t in similarity(),
+    ) {
+        let moved: Vec<Pose> = poses.iter().map(|q| t.pose(q)).collect();
+        let Ok(four) = FourPositions::new(&moved) else { return Ok(()); };
+        check_own_points(&four, 60)?;
+    }
+}

@@ -73,6 +73,22 @@ pub const RANK_TIE: f64 = 1e-9;
 /// slope) from a root of a conic has the root-free sign.
 pub const SWEEP_BAND_EPS: f64 = 64.0;
 
+// Four and five poses: the Burmester curves and points (issue 24).
+
+/// Factor of `f64::EPSILON` of the rounding band of a Burmester curve (the
+/// center-point or circle-point cubic of four poses) at a point: a point
+/// is on the curve when the curve's value there is within this many `eps`
+/// of the bound on its terms, `sum (|c_ij| + m_ij) |x|^i |y|^j`, where
+/// `m_ij` is the coefficient's own rounding scale (the exact expansion of
+/// the determinant from the poses with every number in magnitude). Over the
+/// gradient this is a distance: the curve's position is known only to
+/// within it, which near a nearly singular point of a curve of nearly equal
+/// rotations is thousands of times the rounding of the coefficients'
+/// largest. The points the library computes on the curves (the traced
+/// vertices, the crank-rotation dyads, the arc ends, the Burmester points)
+/// are within about a fifth of this band.
+pub const ON_CURVE_EPS: f64 = 64.0;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -16,6 +16,7 @@ use crate::error::Result;
 use crate::geom::{Cubic, LocalFrame, Pose, Viewport, wrap_angle};
 use crate::linkage::{AngleInterval, AssemblyMode, FourBar, InputRange};
 use crate::synthesis::Dyad;
+use crate::tolerance;
 
 /// The six pairs of four poses (0-based), in the order `12, 13, 14, 23, 24, 34`.
 const PAIRS: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
@@ -247,6 +248,11 @@ pub struct FourPositions {
     motion: Motion,
     center_curve: Cubic,
     circle_curve: Cubic,
+    /// Per coefficient of each stored curve (center, circle), the scale of
+    /// its rounding from the poses, in the units of the stored
+    /// coefficients (the expansion with every number in magnitude, over
+    /// the largest coefficient).
+    bounds: [[f64; 10]; 2],
     compat: Option<Compat>,
 }
 
@@ -269,8 +275,9 @@ impl FourPositions {
             return Err(errors::pose_count("FourPositions::new", 4, poses.len()));
         }
         let motion = Motion::new(poses)?;
-        let curve = |form: &super::motion::LinearForm| -> Result<Cubic> {
-            let (f, mag) = form.cubic([1, 2, 3]);
+        let curve = |form: &super::motion::LinearForm| -> Result<(Cubic, [f64; 10])> {
+            let (f, mags) = form.cubic_bounds([1, 2, 3]);
+            let mag = mags.iter().fold(0.0f64, |m, v| m.max(*v));
             let max = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             if !(max > DEGENERATE_CURVE * mag) {
                 let p = motion
@@ -278,15 +285,19 @@ impl FourPositions {
                     .unwrap_or(motion.origin);
                 return Err(errors::common_pole(p));
             }
-            Ok(Cubic::from_local(f, motion.origin, motion.scale))
+            Ok((
+                Cubic::from_local(f, motion.origin, motion.scale),
+                mags.map(|m| m / max),
+            ))
         };
-        let center_curve = curve(&motion.form)?;
-        let circle_curve = curve(&motion.form.inverse())?;
+        let (center_curve, center_bounds) = curve(&motion.form)?;
+        let (circle_curve, circle_bounds) = curve(&motion.form.inverse())?;
         let compat = Compat::new(&motion).ok();
         Ok(FourPositions {
             motion,
             center_curve,
             circle_curve,
+            bounds: [center_bounds, circle_bounds],
             compat,
         })
     }
@@ -330,11 +341,41 @@ impl FourPositions {
         Ok(self.motion.displace(z, i - 1, j - 1))
     }
 
-    /// The largest accepted distance of `p` from a curve:
-    /// [`ON_CURVE_TOLERANCE`] times the task size plus the distance of `p`
-    /// from the task's centroid.
-    fn on_curve_tolerance(&self, p: Point2<f64>) -> f64 {
-        ON_CURVE_TOLERANCE * (self.motion.scale + (p - self.motion.origin).norm())
+    /// Whether `p` lies on the center-point curve (`circle == false`) or
+    /// the circle-point curve, with its first-order distance from it and
+    /// the largest accepted distance (see [`ON_CURVE_TOLERANCE`]): the
+    /// larger of [`ON_CURVE_TOLERANCE`] times the task size plus the
+    /// distance of `p` from the task's centroid, and the rounding band of
+    /// the curve at `p` ([`tolerance::ON_CURVE_EPS`]): the curve's value
+    /// within that many `eps` of the bound on its terms (the rounding of
+    /// its coefficients from the poses and of the evaluation) over its
+    /// gradient, plus the rounding of the point's coordinates. A point
+    /// whose value is within the band is on the curve wherever the
+    /// gradient vanishes (a singular point).
+    pub(crate) fn on_curve(&self, p: Point2<f64>, circle: bool) -> (bool, f64, f64) {
+        let (curve, bounds) = if circle {
+            (&self.circle_curve, &self.bounds[1])
+        } else {
+            (&self.center_curve, &self.bounds[0])
+        };
+        let (origin, scale) = (self.motion.origin, self.motion.scale);
+        let dist = curve.distance_estimate(p);
+        let relative = ON_CURVE_TOLERANCE * (scale + (p - origin).norm());
+        let Some((f, bound, grad, m)) = curve.value_and_bound(p, bounds) else {
+            return (dist <= relative, dist, relative);
+        };
+        let band = tolerance::ON_CURVE_EPS * f64::EPSILON * bound;
+        // The point's own rounding: its coordinates and the frame's origin
+        // are known to half an ulp each.
+        let point =
+            tolerance::ON_CURVE_EPS * f64::EPSILON * (p.coords.norm() + origin.coords.norm());
+        let rounding = band / grad * m * scale + point;
+        let tol = if rounding.is_finite() {
+            relative.max(rounding)
+        } else {
+            relative
+        };
+        (dist <= tol || f.abs() <= band, dist, tol)
     }
 
     /// Checks a point and returns it in the local frame.
@@ -357,17 +398,17 @@ impl FourPositions {
     ///
     /// # Errors
     ///
-    /// [`crate::InvalidInput::CountOutOfRange`] when `center` is farther than
-    /// [`ON_CURVE_TOLERANCE`] (relative to the task size plus its distance
-    /// from the task) from the curve, with that distance;
+    /// [`crate::InvalidInput::OffCurve`] when `center` is not on the curve
+    /// by the rule of [`ON_CURVE_TOLERANCE`] (relative to the task size
+    /// plus its distance from the task, or the curve's rounding band
+    /// there), with its distance and the tolerance;
     /// [`crate::DegenerateError::AtInfinity`] where the circle point is at
     /// infinity; [`crate::DegenerateError::Undefined`] where a whole line of
     /// circle points passes the four poses; [`crate::InvalidInput`] for a
     /// non-finite point.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
         let g = self.local_point(center, ["center point x", "center point y"])?;
-        let tol = self.on_curve_tolerance(center);
-        let (on, dist) = self.center_curve.is_on(center, tol);
+        let (on, dist, tol) = self.on_curve(center, false);
         if !on {
             return Err(errors::off_curve("center point", dist, tol));
         }
@@ -396,8 +437,7 @@ impl FourPositions {
     /// center at infinity is a slider).
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
         let z = self.local_point(circle, ["circle point x", "circle point y"])?;
-        let tol = self.on_curve_tolerance(circle);
-        let (on, dist) = self.circle_curve.is_on(circle, tol);
+        let (on, dist, tol) = self.on_curve(circle, true);
         if !on {
             return Err(errors::off_curve("circle point", dist, tol));
         }

@@ -90,6 +90,15 @@ impl LinearForm {
     /// by its magnitude (the scale of its rounding and of a vanishing
     /// determinant).
     pub(crate) fn cubic(&self, rows: [usize; 3]) -> ([f64; 10], f64) {
+        let (out, mag) = self.cubic_bounds(rows);
+        (out, mag.iter().fold(0.0, |m: f64, v| m.max(*v)))
+    }
+
+    /// The exact expansion of [`cubic`](Self::cubic) and, per coefficient,
+    /// the same expansion with every number replaced by its magnitude: the
+    /// scale of that coefficient's rounding (of the rows from the poses
+    /// and of the expansion), in the same units.
+    pub(crate) fn cubic_bounds(&self, rows: [usize; 3]) -> ([f64; 10], [f64; 10]) {
         let r = rows.map(|k| self.row_poly(k));
         let ra = r.map(|row| row.map(|p| p.map(f64::abs)));
         let mut out = [0.0; 10];
@@ -110,7 +119,7 @@ impl LinearForm {
                 mag[i] += bound[i];
             }
         }
-        (out, mag.iter().fold(0.0, |m: f64, v| m.max(*v)))
+        (out, mag)
     }
 
     /// The form of the inverted motion (the ground seen from the coupler
