@@ -2163,3 +2163,589 @@ proptest! {
         check_own_points(&four, 60)?;
     }
 }
+
+/// The poses of issue 24, item 2: two real Burmester points and a pair of
+/// complex ones with an imaginary part of 2.3e-6 (mpmath reference,
+/// `tests/python/burmester_reference.py`).
+fn issue24_merging_poses(x5: f64) -> Vec<Pose> {
+    [
+        (-1.2496027059316173, 0.7130452692752762, -0.6572924231027988),
+        (0.27468559919591734, 0.7224592815050642, -3.019408291601917),
+        (-2.318244562336992, 2.2813029947864187, -1.6503688624061708),
+        (
+            -1.7723011037557788,
+            3.7378394481945625,
+            -0.11145257321306046,
+        ),
+        (x5, -0.03637049136529685, 1.09643912732506),
+    ]
+    .iter()
+    .map(|&(x, y, a)| Pose::new(x, y, a))
+    .collect()
+}
+
+/// Five poses in the frame of `t`.
+fn moved(poses: &[Pose], t: &Similarity) -> Vec<Pose> {
+    poses.iter().map(|q| t.pose(q)).collect()
+}
+
+/// Some frames: as given, moved, turned, scaled, mirrored.
+fn frames() -> Vec<Similarity> {
+    vec![
+        Similarity::new(1.0, 0.0, Vector2::zeros()).unwrap(),
+        Similarity::new(1.0, 0.0, Vector2::new(0.0, 1.0)).unwrap(),
+        Similarity::new(3.0, 0.0, Vector2::zeros()).unwrap(),
+        Similarity::new(1.0, 1.0, Vector2::new(0.3, -0.2)).unwrap(),
+        Similarity::new(1e-3, -2.5, Vector2::new(7.0, 5.0)).unwrap(),
+        Similarity::new(1e3, 0.7, Vector2::new(-4e3, 1e2))
+            .unwrap()
+            .mirrored(),
+        Similarity::new(1.0, 0.0, Vector2::new(1e6, -1e6)).unwrap(),
+    ]
+}
+
+/// The count with multiplicity: finite points and sliders.
+fn total(five: &FivePositions) -> usize {
+    five.burmester_points().len() + five.sliders().len()
+}
+
+#[test]
+fn issue24_nearly_merging_burmester_points_count_two_or_four() {
+    let want = [
+        Point2::new(2.1845468030272426, 3.9286531345231968),
+        Point2::new(9.309375812216743, 7.340419877156631),
+    ];
+    for t in frames() {
+        // A complex pair 2.3e-6 off the real plane: two points, in every frame.
+        let five =
+            FivePositions::new(&moved(&issue24_merging_poses(1.4085852732973474), &t)).unwrap();
+        let pts = five.burmester_points();
+        assert_eq!(pts.len(), 2, "{pts:?} in {t:?}");
+        assert!(five.sliders().is_empty());
+        for w in want {
+            let w = t.point(w);
+            assert!(
+                pts.iter()
+                    .any(|d| (d.center - w).norm() <= 1e-8 * (five.size() + w.coords.norm())),
+                "{w} not in {pts:?}"
+            );
+        }
+        // A hair away (pose 5 moved by 1.76e-10): the pair is real, 1.1e-8 to
+        // 6.4e-8 apart: four points, the near two within 1e-7 of where they
+        // merge (each listed, or one double point listed twice).
+        let mut x5 = 1.4085852731213095f64;
+        for _ in 0..14 {
+            let five = FivePositions::new(&moved(&issue24_merging_poses(x5), &t)).unwrap();
+            let pts = five.burmester_points();
+            assert_eq!(pts.len(), 4, "x5 = {x5:?}: {pts:?} in {t:?}");
+            let merge = t.point(Point2::new(-0.3808193887, 1.748174366));
+            let near = pts
+                .iter()
+                .filter(|d| (d.center - merge).norm() <= 1e-7 * (five.size() + merge.coords.norm()))
+                .count();
+            assert_eq!(near, 2, "x5 = {x5:?}: {pts:?}");
+            x5 = x5.next_up();
+        }
+    }
+}
+
+#[test]
+fn issue24_degenerate_five_pose_tasks_say_so_in_every_frame() {
+    let task = |p: &[(f64, f64, f64)]| -> Vec<Pose> {
+        p.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect()
+    };
+    // Poses 1, 2, 3 are rotations about (0, 0) (and a line of Burmester
+    // centers exists: sympy's Groebner basis).
+    let a = task(&[
+        (0.0, 0.0, 0.0),
+        (0.0, 0.0, 1.0),
+        (0.0, 0.0, 2.0),
+        (0.0, 1.0, 0.0),
+        (0.0, 1.0, 1.0),
+    ]);
+    for t in frames() {
+        let e = FivePositions::new(&moved(&a, &t)).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::Degenerate(DegenerateError::RotationsAboutOnePoint {
+                    i: 1,
+                    j: 2,
+                    k: 3,
+                    ..
+                })
+            ),
+            "{e:?} in {t:?}"
+        );
+        assert!(e.to_string().contains("rotations about one point"));
+    }
+    // Two pure translations and two poses at one position: one real
+    // Burmester point, at (0.4783670579, 49.79082622) (mpmath reference),
+    // and one at infinity (a slider), in every frame; no ghost.
+    let b = task(&[
+        (0.0, 0.0, 2.0),
+        (0.0, 1.0, 1.0),
+        (0.0, 0.0, 0.0),
+        (1.0, 1.0, 1.0),
+        (4.76953125, 0.0, 0.0),
+    ]);
+    for t in frames() {
+        let five = FivePositions::new(&moved(&b, &t)).unwrap();
+        let pts = five.burmester_points();
+        assert_eq!(pts.len(), 1, "{pts:?} in {t:?}");
+        let w = t.point(Point2::new(0.4783670578728627, 49.790826221674784));
+        assert!(
+            (pts[0].center - w).norm() <= 1e-8 * (five.size() + w.coords.norm()),
+            "{pts:?}"
+        );
+        assert_eq!(five.sliders().len(), 1, "{:?}", five.sliders());
+        check_slider(&five, &moved(&b, &t));
+    }
+    // Collinear positions: the reference point is a slider; three finite
+    // points (mpmath), in every frame, none beyond the task's scale.
+    let c = task(&[
+        (0.0, 0.0, 0.1),
+        (1.0, 0.0, 0.5),
+        (2.0, 0.0, 1.2),
+        (3.5, 0.0, 2.0),
+        (5.0, 0.0, -1.0),
+    ]);
+    let want = [
+        (1.028311028, 11.71531754),
+        (0.7822684224, 1.870124483),
+        (2.135913452, 1.304640045),
+    ];
+    for t in frames() {
+        let poses = moved(&c, &t);
+        let five = FivePositions::new(&poses).unwrap();
+        let pts = five.burmester_points();
+        assert_eq!(pts.len(), 3, "{pts:?} in {t:?}");
+        for (x, y) in want {
+            let w = t.point(Point2::new(x, y));
+            assert!(
+                pts.iter()
+                    .any(|d| (d.center - w).norm() <= 1e-8 * (five.size() + w.coords.norm())),
+                "{w}: {pts:?}"
+            );
+        }
+        assert_eq!(five.sliders().len(), 1);
+        check_slider(&five, &poses);
+        let s = five.sliders()[0];
+        assert!(
+            (s.circle - poses[0].position).norm() <= 1e-9 * five.size(),
+            "{s:?}"
+        );
+    }
+    // Cardan motion (a rod with its ends on two perpendicular lines): every
+    // point of the moving circle runs on a line, a family of sliders.
+    let cardan: Vec<Pose> = [0.3f64, 0.9, 1.4, 2.2, 2.9]
+        .iter()
+        .map(|&f| Pose::new(2.0 * f.cos(), 0.0, PI - f))
+        .collect();
+    for t in frames() {
+        let e = FivePositions::new(&moved(&cardan, &t)).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::Degenerate(DegenerateError::InfinitelyManyBurmesterPoints { .. })
+            ),
+            "{e:?} in {t:?}"
+        );
+    }
+    // Three poses of one angle on a line: every dyad through them is a slider.
+    let d = task(&[
+        (0.0, 0.0, 0.3),
+        (1.0, 0.0, 0.3),
+        (2.5, 0.0, 0.3),
+        (1.0, 2.0, 1.0),
+        (-1.0, 1.0, 2.0),
+    ]);
+    for t in frames() {
+        let e = FivePositions::new(&moved(&d, &t)).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::Degenerate(DegenerateError::CollinearTranslations { i: 1, j: 2, k: 3 })
+            ),
+            "{e:?}"
+        );
+    }
+}
+
+/// A slider's circle point has five collinear positions, on the line
+/// normal to its direction.
+fn check_slider(five: &FivePositions, poses: &[Pose]) {
+    for s in five.sliders() {
+        let p: Vec<Point2<f64>> = (1..=5)
+            .map(|k| five.displace(s.circle, 1, k).unwrap())
+            .collect();
+        for q in &p[1..] {
+            let off = (q - p[0]).dot(&s.direction);
+            assert!(off.abs() <= 1e-9 * five.size(), "{s:?}: {off}");
+        }
+        let _ = poses;
+    }
+}
+
+/// Whether a five-pose answer is sound on its own: the count with
+/// multiplicity (finite points and sliders) is 0, 2 or 4; every finite
+/// point's circle point is concyclic over the poses (a double point to
+/// the square of its rounding); every slider's circle point has collinear
+/// positions.
+fn check_five_sound(five: &FivePositions, poses: &[Pose]) -> Result<(), TestCaseError> {
+    let n = total(five);
+    prop_assert!(
+        n % 2 == 0 && n <= 4,
+        "count {}: {:?} {:?} poses {:?}",
+        n,
+        five.burmester_points(),
+        five.sliders(),
+        poses
+            .iter()
+            .map(|p| (p.position.x, p.position.y, p.angle))
+            .collect::<Vec<_>>()
+    );
+    for d in five.burmester_points() {
+        prop_assert!(spread(poses, d) <= 1e-8, "{:?}: {}", d, spread(poses, d));
+    }
+    for s in five.sliders() {
+        let p: Vec<Point2<f64>> = (1..=5)
+            .map(|k| five.displace(s.circle, 1, k).unwrap())
+            .collect();
+        let span = p.iter().map(|q| (q - p[0]).norm()).fold(0.0, f64::max);
+        for q in &p[1..] {
+            prop_assert!(
+                (q - p[0]).dot(&s.direction).abs() <= 1e-7 * span.max(five.size()),
+                "{:?}",
+                s
+            );
+        }
+    }
+    Ok(())
+}
+
+/// The points of `a` farther than `1e-2` (relative) from every other point
+/// of `a` are, moved by `t`, points of `b` (within `1e-6`), and the same
+/// for `b` back to `a`; the points nearer one another (a pair near
+/// merging, a double point: whether it is one is decided within rounding,
+/// which the frame changes) may be there or not, two at a time.
+fn check_separated_points_move(
+    a: &FivePositions,
+    b: &FivePositions,
+    t: &Similarity,
+) -> Result<(), TestCaseError> {
+    let separated = |f: &FivePositions| -> Vec<Point2<f64>> {
+        let pts = f.burmester_points();
+        let c = centroid(f.poses());
+        pts.iter()
+            .enumerate()
+            .filter(|(i, p)| {
+                let scale = f.size() + (p.center - c).norm();
+                pts.iter()
+                    .enumerate()
+                    .all(|(j, q)| j == *i || (q.center - p.center).norm() > 1e-2 * scale)
+            })
+            .map(|(_, p)| p.center)
+            .collect()
+    };
+    let (sa, sb) = (separated(a), separated(b));
+    let near = |p: Point2<f64>, q: Point2<f64>, f: &FivePositions| {
+        let d = (p - centroid(f.poses())).norm();
+        let rel = if d > 1e4 * f.size() { 1e-5 } else { 1e-6 };
+        (p - q).norm() <= rel * (f.size() + d)
+    };
+    for p in &sa {
+        let w = t.point(*p);
+        prop_assert!(
+            b.burmester_points().iter().any(|q| near(w, q.center, b)),
+            "{} (moved {}) not among {:?}; poses {:?} and {:?}",
+            p,
+            w,
+            b.burmester_points(),
+            a.poses()
+                .iter()
+                .map(|p| (p.position.x, p.position.y, p.angle))
+                .collect::<Vec<_>>(),
+            b.poses()
+                .iter()
+                .map(|p| (p.position.x, p.position.y, p.angle))
+                .collect::<Vec<_>>()
+        );
+    }
+    for q in &sb {
+        prop_assert!(
+            a.burmester_points()
+                .iter()
+                .any(|p| near(t.point(p.center), *q, b)),
+            "{} not among {:?} moved",
+            q,
+            a.burmester_points()
+        );
+    }
+    Ok(())
+}
+
+/// Tasks near a merge of two Burmester points: pose 5 moved along `dir` by
+/// `lambda` task sizes, `lambda` on a grid over `[-span, span]`; where the
+/// count changes between two neighbours, `lambda` is bisected to the
+/// spacing of doubles, and the tasks at the two ends and at `1e-4`,
+/// `1e-7`, `1e-10` and `1e-13` task sizes either side of the change are
+/// returned (pairs of points from `1e-2` apart to merged, real or complex).
+fn near_merges(poses: &[Pose], dir: Vector2<f64>, span: f64) -> Vec<Vec<Pose>> {
+    let size = FivePositions::new(poses).map(|f| f.size()).unwrap_or(1.0);
+    let at = |l: f64| {
+        let mut p = poses.to_vec();
+        p[4].position += dir * (l * size);
+        p
+    };
+    let count = |l: f64| FivePositions::new(&at(l)).ok().map(|f| total(&f));
+    let grid: Vec<f64> = (0..=40)
+        .map(|i| -span + 2.0 * span * i as f64 / 40.0)
+        .collect();
+    let counts: Vec<Option<usize>> = grid.iter().map(|&l| count(l)).collect();
+    for i in 0..40 {
+        let (Some(ca), Some(cb)) = (counts[i], counts[i + 1]) else {
+            continue;
+        };
+        if ca == cb {
+            continue;
+        }
+        let (mut lo, mut hi) = (grid[i], grid[i + 1]);
+        for _ in 0..60 {
+            let m = 0.5 * (lo + hi);
+            if !(m > lo && m < hi) {
+                break;
+            }
+            match count(m) {
+                Some(c) if c == ca => lo = m,
+                Some(_) => hi = m,
+                None => break,
+            }
+        }
+        let mut out = vec![at(lo), at(hi)];
+        for k in [4, 7, 10, 13] {
+            let d = 10f64.powi(-k);
+            out.push(at(lo - d));
+            out.push(at(hi + d));
+        }
+        return out;
+    }
+    Vec::new()
+}
+
+proptest! {
+    #![proptest_config(cases(24))]
+
+    /// Items 2 and 3's target for merging points: tasks bisected to where
+    /// two Burmester points merge (made from linkages, pose 5 moved), in
+    /// random frames: the count is 0, 2 or 4, every point concyclic, and
+    /// the points apart from the merging pair move with the task.
+    #[test]
+    fn issue24_burmester_points_near_merging_in_any_frame(
+        p in link_params(),
+        a in -PI..PI,
+        t in similarity(),
+    ) {
+        let m = made(&p, 5, 0.05);
+        prop_assume!(m.is_some());
+        let m = m.unwrap();
+        let tasks = near_merges(&m.poses, Vector2::new(a.cos(), a.sin()), 0.5);
+        for poses in tasks {
+            let Ok(five) = FivePositions::new(&poses) else { continue };
+            check_five_sound(&five, &poses)?;
+            let mv = moved(&poses, &t);
+            let Ok(other) = FivePositions::new(&mv) else { continue };
+            check_five_sound(&other, &mv)?;
+            check_separated_points_move(&five, &other, &t)?;
+        }
+    }
+}
+
+/// A degenerate five-pose task and what it must give: `kind` 0, three
+/// rotations about one point (poses `which`); 1, three poses of one angle
+/// on a line; 2, five positions on a line (the reference point a slider);
+/// 3, two pairs of poses of one angle and two poses at one position;
+/// 4, Cardan motion (a family of sliders).
+#[derive(Debug, Clone)]
+struct Degenerate {
+    kind: usize,
+    poses: Vec<Pose>,
+    which: [usize; 3],
+}
+
+fn degenerate_task() -> impl Strategy<Value = Degenerate> {
+    (
+        0usize..5,
+        (-3.0f64..3.0, -3.0f64..3.0),
+        (0.5f64..3.0, -PI..PI),
+        prop::array::uniform5((-1.0f64..1.0, -PI..PI)),
+        prop::array::uniform4((-3.0f64..3.0, -3.0f64..3.0)),
+        Just([0usize, 1, 2, 3, 4]).prop_shuffle(),
+    )
+        .prop_filter_map(
+            "rotations too close",
+            |(kind, c, (r, phi), v, extra, perm)| {
+                let c = Point2::new(c.0, c.1);
+                let arm = Vector2::new(r * phi.cos(), r * phi.sin());
+                let base: Vec<Pose> = match kind {
+                    0 => {
+                        // Rotations about c by angles at least 0.2 apart.
+                        let ang = [v[0].1, v[1].1, v[2].1];
+                        let ok = (0..3)
+                            .all(|i| (i + 1..3).all(|j| common::wrap(ang[i] - ang[j]).abs() > 0.2));
+                        if !ok {
+                            return None;
+                        }
+                        let mut p: Vec<Pose> = ang
+                            .iter()
+                            .map(|&a| {
+                                let (s, co) = a.sin_cos();
+                                Pose::new(
+                                    c.x + co * arm.x - s * arm.y,
+                                    c.y + s * arm.x + co * arm.y,
+                                    a + 0.3,
+                                )
+                            })
+                            .collect();
+                        p.push(Pose::new(extra[0].0, extra[0].1, v[3].1));
+                        p.push(Pose::new(extra[1].0, extra[1].1, v[4].1));
+                        p
+                    }
+                    1 => {
+                        let ts = [0.0, 0.4 + v[0].0.abs(), -0.4 - v[1].0.abs()];
+                        let mut p: Vec<Pose> = ts
+                            .iter()
+                            .map(|&t| Pose::new(c.x + t * arm.x, c.y + t * arm.y, v[2].1))
+                            .collect();
+                        p.push(Pose::new(extra[0].0, extra[0].1, v[3].1));
+                        p.push(Pose::new(extra[1].0, extra[1].1, v[4].1));
+                        p
+                    }
+                    2 => {
+                        let ts = [
+                            0.0,
+                            1.0,
+                            2.0 + v[0].0.abs(),
+                            -1.0 - v[1].0.abs(),
+                            3.5 + v[2].0.abs(),
+                        ];
+                        let ang = v.map(|x| x.1);
+                        let ok = (0..5)
+                            .all(|i| (i + 1..5).all(|j| common::wrap(ang[i] - ang[j]).abs() > 0.1));
+                        if !ok {
+                            return None;
+                        }
+                        ts.iter()
+                            .zip(ang)
+                            .map(|(&t, a)| Pose::new(c.x + t * arm.x, c.y + t * arm.y, a))
+                            .collect()
+                    }
+                    3 => {
+                        let (a1, a2, a3) = (v[0].1, v[1].1, v[2].1);
+                        let ok = [a1 - a2, a1 - a3, a2 - a3]
+                            .iter()
+                            .all(|d| common::wrap(*d).abs() > 0.1);
+                        if !ok {
+                            return None;
+                        }
+                        vec![
+                            Pose::new(c.x, c.y, a1),
+                            Pose::new(extra[0].0, extra[0].1, a2),
+                            Pose::new(c.x, c.y, a3),
+                            Pose::new(extra[1].0, extra[1].1, a2),
+                            Pose::new(extra[2].0, extra[2].1, a3),
+                        ]
+                    }
+                    _ => {
+                        let phis = v.map(|x| x.1);
+                        let ok = (0..5).all(|i| {
+                            (i + 1..5).all(|j| common::wrap(phis[i] - phis[j]).abs() > 0.1)
+                        });
+                        if !ok {
+                            return None;
+                        }
+                        // The rod's end on the x axis of a frame at c turned by phi.
+                        phis.iter()
+                            .map(|&f| {
+                                let e = Vector2::new(r * f.cos(), 0.0);
+                                let (s, co) = phi.sin_cos();
+                                Pose::new(
+                                    c.x + co * e.x - s * e.y,
+                                    c.y + s * e.x + co * e.y,
+                                    PI - f + phi,
+                                )
+                            })
+                            .collect()
+                    }
+                };
+                let poses: Vec<Pose> = perm.iter().map(|&i| base[i]).collect();
+                let mut which: Vec<usize> = (0..3)
+                    .map(|k| perm.iter().position(|&i| i == k).unwrap() + 1)
+                    .collect();
+                which.sort();
+                Some(Degenerate {
+                    kind,
+                    poses,
+                    which: [which[0], which[1], which[2]],
+                })
+            },
+        )
+}
+
+proptest! {
+    #![proptest_config(cases(96))]
+
+    /// Item 3's target: degenerate five-pose tasks (three rotations about
+    /// one point, three poses of one angle on a line, collinear positions,
+    /// pure translations with poses at one position, Cardan motion) in
+    /// random frames: a typed error naming the poses, or a sound answer
+    /// with a slider where the positions are collinear, the same in every
+    /// frame.
+    #[test]
+    fn issue24_degenerate_five_pose_tasks_in_any_frame(d in degenerate_task(), t in similarity()) {
+        let poses = moved(&d.poses, &t);
+        let r = FivePositions::new(&poses);
+        match d.kind {
+            0 => {
+                let [i, j, k] = d.which;
+                prop_assert!(
+                    matches!(r, Err(Error::Degenerate(DegenerateError::RotationsAboutOnePoint { i: a, j: b, k: c, .. })) if [a, b, c] == [i, j, k]),
+                    "{:?}", r
+                );
+            }
+            1 => {
+                let [i, j, k] = d.which;
+                prop_assert!(
+                    matches!(r, Err(Error::Degenerate(DegenerateError::CollinearTranslations { i: a, j: b, k: c })) if [a, b, c] == [i, j, k]),
+                    "{:?}", r
+                );
+            }
+            4 => {
+                prop_assert!(
+                    matches!(r, Err(Error::Degenerate(DegenerateError::InfinitelyManyBurmesterPoints { .. }))),
+                    "{:?}", r
+                );
+            }
+            _ => {
+                let Ok(five) = r else {
+                    // Only what the four-pose subsets refuse.
+                    prop_assert!(matches!(r, Err(Error::Degenerate(_))), "{:?}", r);
+                    return Ok(());
+                };
+                check_five_sound(&five, &poses)?;
+                if d.kind == 2 {
+                    prop_assert!(
+                        five.sliders().iter().any(|s| (s.circle - poses[0].position).norm() <= 1e-6 * five.size()),
+                        "{:?}", five.sliders()
+                    );
+                    prop_assert!(five.burmester_points().len() % 2 == 1);
+                }
+                // The same in the original frame.
+                let base = FivePositions::new(&d.poses).unwrap();
+                prop_assert_eq!(total(&base), total(&five));
+                prop_assert_eq!(base.sliders().len(), five.sliders().len());
+                check_separated_points_move(&base, &five, &t)?;
+            }
+        }
+    }
+}

@@ -514,6 +514,54 @@ pub enum DegenerateError {
         /// The crank rotation from pose 1 to pose 2, radians.
         beta2: f64,
     },
+    /// Three of five poses are rotations about one point (their three poles
+    /// coincide): every dyad through them has its center point there or
+    /// its moving pivot there, so the two center-point curves that the
+    /// Burmester points are the meets of share the zero circle about it
+    /// and the points are not isolated (issue 24).
+    #[error(
+        "poses {i}, {j} and {k} are rotations about one point ({}, {}): every dyad through them          has its center point or its moving pivot there, so the Burmester points of the five          poses are not isolated (the curves whose meets they are share a component); move or          rotate one of these poses off that rotation",
+        Num(*.x), Num(*.y)
+    )]
+    RotationsAboutOnePoint {
+        /// First pose (1-based).
+        i: usize,
+        /// Second pose (1-based).
+        j: usize,
+        /// Third pose (1-based).
+        k: usize,
+        /// x of the common pole.
+        x: f64,
+        /// y of the common pole.
+        y: f64,
+    },
+    /// Three of five poses have one angle and collinear positions: every
+    /// dyad through them is a slider (its moving pivot's three positions
+    /// lie on a line), so the center-point curves contain the line at
+    /// infinity and the Burmester points are not isolated (issue 24).
+    #[error(
+        "poses {i}, {j} and {k} have the same angle and positions on one line: every dyad          through them is a slider (its moving pivot's positions lie on a line), so the          Burmester points of the five poses are not isolated; rotate one of these poses or move          it off the line"
+    )]
+    CollinearTranslations {
+        /// First pose (1-based).
+        i: usize,
+        /// Second pose (1-based).
+        j: usize,
+        /// Third pose (1-based).
+        k: usize,
+    },
+    /// Five poses with infinitely many Burmester points: the center-point
+    /// curves of two four-pose subsets share a component (a line, a conic
+    /// or the whole curve), every point of which is the center of a dyad
+    /// through all five poses, or a center has a whole line of circle
+    /// points (issue 24).
+    #[error(
+        "the five poses have infinitely many Burmester points: {what}, so the dyads through all          five poses are not isolated; move or rotate a pose"
+    )]
+    InfinitelyManyBurmesterPoints {
+        /// What is shared (for example `"the center-point curves of poses 1, 2, 3, 4 and of         /// poses 1, 2, 3, 5 share a component"`).
+        what: &'static str,
+    },
     /// A dyad's center point and circle point coincide (a link of zero length).
     #[error(
         "the {what} has zero length: its ends coincide at ({}, {}); choose another point",
@@ -631,6 +679,11 @@ impl Error {
                 DegenerateError::AllTranslations => "all_translations",
                 DegenerateError::NotParametrizable => "not_parametrizable",
                 DegenerateError::SliderDyad { .. } => "slider_dyad",
+                DegenerateError::RotationsAboutOnePoint { .. } => "rotations_about_one_point",
+                DegenerateError::CollinearTranslations { .. } => "collinear_translations",
+                DegenerateError::InfinitelyManyBurmesterPoints { .. } => {
+                    "infinitely_many_burmester_points"
+                }
             },
             Error::Cancelled { .. } => "cancelled",
             Error::OutOfMemory { .. } => "out_of_memory",
@@ -744,6 +797,9 @@ impl Error {
                 DegenerateError::ZeroLengthLink { what, x, y } => fields!(what, x, y),
                 DegenerateError::AllTranslations | DegenerateError::NotParametrizable => vec![],
                 DegenerateError::SliderDyad { beta2 } => fields!(beta2),
+                DegenerateError::RotationsAboutOnePoint { i, j, k, x, y } => fields!(i, j, k, x, y),
+                DegenerateError::CollinearTranslations { i, j, k } => fields!(i, j, k),
+                DegenerateError::InfinitelyManyBurmesterPoints { what } => fields!(what),
             },
             Error::Cancelled { done, total } => fields!(done, total),
             Error::OutOfMemory { what, bytes } => fields!(what, bytes),

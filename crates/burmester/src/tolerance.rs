@@ -89,6 +89,25 @@ pub const SWEEP_BAND_EPS: f64 = 64.0;
 /// are within about a fifth of this band.
 pub const ON_CURVE_EPS: f64 = 64.0;
 
+/// Factor of `f64::EPSILON` of the rounding band of the elimination of the
+/// Burmester points of five poses: a value of the resultant (or of one of
+/// the forms it is made of) within this many `eps` of the bound on its
+/// terms (the same computation in magnitudes, with the rounding scales of
+/// the curves' coefficients and of the pole they are taken from) is zero.
+/// A critical point of the resultant where it is zero so is a double root:
+/// two Burmester points that merge, or a pair of complex ones, within
+/// rounding (a double point, listed twice). Where the whole resultant is
+/// zero so for every choice of the shared poses, the points are not
+/// isolated. A center farther than `1 / (BURMESTER_EPS eps)` task sizes
+/// (about `3e14`), where its rounding is of its own size, is at infinity
+/// (a slider).
+pub const BURMESTER_EPS: f64 = 16.0;
+
+/// Three poses whose three poles agree within this many task sizes (plus
+/// the poles' distance from the task) are rotations about one point: the
+/// Burmester points of five poses with them are not isolated.
+pub const BURMESTER_COMMON_POLE: f64 = 1e-9;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -38,7 +38,7 @@ mod order;
 mod split;
 
 pub use branch::{ArcEnd, FilemonArcs};
-pub use five::{BurmesterFourBar, FivePositions};
+pub use five::{BurmesterFourBar, BurmesterSlider, FivePositions};
 pub use four::{CoincidencePoint, CurveDyad, FourPositions, OrderArc, Pole};
 pub use order::{CrankOrder, Drive, Turn};
 

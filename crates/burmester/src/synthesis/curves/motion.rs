@@ -122,6 +122,55 @@ impl LinearForm {
         (out, mag)
     }
 
+    /// A first-order bound, per coefficient, on the change of the expansion
+    /// of [`cubic`](Self::cubic) when the poses' positions move by up to
+    /// `dp` (local units) and their angles by up to `da` (radians), over
+    /// `eps`-sized changes: the inputs' own rounding carried through the
+    /// determinant (a point's coordinates are known to half an ulp, so a
+    /// task far from the origin for its size is known only that well in
+    /// its own frame).
+    pub(crate) fn cubic_data_bounds(
+        &self,
+        rows: [usize; 3],
+        q1: Vector2<f64>,
+        dp: f64,
+        da: f64,
+    ) -> [f64; 10] {
+        let r = rows.map(|k| self.row_poly(k));
+        let ra = r.map(|row| row.map(|p| p.map(f64::abs)));
+        // The change of each entry: `t_k = q_k - R_k q_1` by `2 dp + da |q_1|`,
+        // `conj(R_k) t_k` by that and `da |t_k|`, the rotation parts by `da`.
+        let err = rows.map(|k| {
+            let t = self.trans[k].norm();
+            let et = 2.0 * dp + da * q1.norm();
+            let eck = et + da * t;
+            [[eck, da, da], [eck, da, da], [t * et, et, et]]
+        });
+        let mut out = [0.0; 10];
+        const PERMS: [[usize; 3]; 6] = [
+            [0, 1, 2],
+            [1, 2, 0],
+            [2, 0, 1],
+            [0, 2, 1],
+            [2, 1, 0],
+            [1, 0, 2],
+        ];
+        for p in PERMS {
+            let (a, b, c) = (ra[0][p[0]], ra[1][p[1]], ra[2][p[2]]);
+            let (ea, eb, ec) = (err[0][p[0]], err[1][p[1]], err[2][p[2]]);
+            for term in [
+                mul3(&mul2(&ea, &b), &c),
+                mul3(&mul2(&a, &eb), &c),
+                mul3(&mul2(&a, &b), &ec),
+            ] {
+                for i in 0..10 {
+                    out[i] += term[i];
+                }
+            }
+        }
+        out
+    }
+
     /// The form of the inverted motion (the ground seen from the coupler
     /// at pose 1): `D_1k^-1(w) = conj(R_k) w - conj(R_k) t_k`.
     pub(crate) fn inverse(&self) -> LinearForm {
@@ -249,6 +298,9 @@ pub(crate) struct Motion {
     /// `theta_1k`, wrapped into `(-pi, pi]`.
     pub(crate) theta: Vec<f64>,
     pub(crate) form: LinearForm,
+    /// How far the poses' own rounding may move them in this frame, over
+    /// `eps`: their positions (local units) and their angles (radians).
+    pub(crate) data_rounding: (f64, f64),
 }
 
 impl LocalFrame for Motion {
@@ -352,6 +404,11 @@ impl Motion {
             .zip(&pos)
             .map(|(&(c, s), &q)| q - rotate_cs(pos[0], c, s))
             .collect();
+        let far = poses
+            .iter()
+            .map(|p| p.position.x.abs().max(p.position.y.abs()))
+            .fold(0.0, f64::max);
+        let turn = poses.iter().map(|p| p.angle.abs()).fold(0.0, f64::max);
         Ok(Motion {
             poses: poses.to_vec(),
             origin,
@@ -359,6 +416,7 @@ impl Motion {
             pos,
             theta,
             form: LinearForm { rot, trans },
+            data_rounding: (far / scale, 2.0 * turn),
         })
     }
 
