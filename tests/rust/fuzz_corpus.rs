@@ -59,3 +59,13 @@ fn solution_map() {
 fn conic_polylines() {
     replay("conic_polylines", checks::conic_polylines);
 }
+
+#[test]
+fn curves() {
+    replay("curves", checks::curves);
+}
+
+#[test]
+fn burmester_points() {
+    replay("burmester_points", checks::burmester_points);
+}
