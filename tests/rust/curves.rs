@@ -2551,7 +2551,12 @@ proptest! {
         let m = m.unwrap();
         let tasks = near_merges(&m.poses, Vector2::new(a.cos(), a.sin()), 0.5);
         for poses in tasks {
-            let Ok(five) = FivePositions::new(&poses) else { continue };
+            let r = FivePositions::new(&poses);
+            prop_assert!(
+                !matches!(r, Err(Error::Degenerate(DegenerateError::UnresolvedBurmesterPoints { .. }))),
+                "{:?}: {:?}", poses, r
+            );
+            let Ok(five) = r else { continue };
             check_five_sound(&five, &poses)?;
             let mv = moved(&poses, &t);
             let Ok(other) = FivePositions::new(&mv) else { continue };
@@ -2747,5 +2752,55 @@ proptest! {
                 check_separated_points_move(&base, &five, &t)?;
             }
         }
+    }
+}
+
+/// Found by the `curves` fuzz target: three of four poses of one angle on
+/// a line. Every dyad through them is a slider; the curve was the line at
+/// infinity twice and a line of centers whose circle points are at
+/// infinity, and its traced points were refused by the on-curve test.
+#[test]
+fn issue24_three_of_four_poses_of_one_angle_on_a_line_are_degenerate() {
+    let poses = [
+        Pose::new(9.89296875e-8, -1.70703125e-8, 0.3),
+        Pose::new(9.892983203125e-8, -1.70703125e-8, 0.3),
+        Pose::new(9.89299765625e-8, -1.70703125e-8, 0.3),
+        Pose::new(9.893012109374999e-8, -1.70703125e-8, 0.0),
+    ];
+    let e = FourPositions::new(&poses).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::Degenerate(DegenerateError::CollinearTranslations { i: 1, j: 2, k: 3 })
+        ),
+        "{e:?}"
+    );
+}
+
+/// Found by the `curves` fuzz target: rotations of about 1e-7 rad between
+/// the poses. The crank-rotation formulas divide by the square of the
+/// angle; their dyads were off the curve by 15 task sizes (their three
+/// conditions off by half their terms) and refused by it. Now a dyad is
+/// given only when its conditions hold (after the Gauss-Newton
+/// corrections) to 1e-8 of their terms, and then it is on the curve.
+#[test]
+fn issue24_dyads_of_nearly_equal_angles_are_on_their_curve_or_not_given() {
+    let poses = [
+        Pose::new(1.015625e-22, -3.515625e-14, 5.296484375e-8),
+        Pose::new(
+            -5.537033081054664e-21,
+            -3.515624999999956e-14,
+            -1.07421875e-7,
+        ),
+        Pose::new(-1.897125244140626e-22, -3.515625e-14, 4.46796875e-8),
+        Pose::new(-1.7604827880859368e-21, -3.515624999999996e-14, 0.0),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    for d in four.dyad_runs(50).unwrap().into_iter().flatten() {
+        four.circle_point(d.center).unwrap();
+        assert!(spread(&poses, &d.dyad()) <= 1e-6, "{d:?}");
+    }
+    for d in four.parameter_samples(50).unwrap().into_iter().flatten() {
+        four.circle_point(d.center).unwrap();
     }
 }

@@ -520,7 +520,10 @@ pub enum DegenerateError {
     /// Burmester points are the meets of share the zero circle about it
     /// and the points are not isolated (issue 24).
     #[error(
-        "poses {i}, {j} and {k} are rotations about one point ({}, {}): every dyad through them          has its center point or its moving pivot there, so the Burmester points of the five          poses are not isolated (the curves whose meets they are share a component); move or          rotate one of these poses off that rotation",
+        "poses {i}, {j} and {k} are rotations about one point ({}, {}): every dyad through them \
+         has its center point or its moving pivot there, so the Burmester points of the five \
+         poses are not isolated (the curves whose meets they are share a component); move or \
+         rotate one of these poses off that rotation",
         Num(*.x), Num(*.y)
     )]
     RotationsAboutOnePoint {
@@ -535,12 +538,16 @@ pub enum DegenerateError {
         /// y of the common pole.
         y: f64,
     },
-    /// Three of five poses have one angle and collinear positions: every
-    /// dyad through them is a slider (its moving pivot's three positions
-    /// lie on a line), so the center-point curves contain the line at
-    /// infinity and the Burmester points are not isolated (issue 24).
+    /// Three of four or five poses have one angle and collinear positions:
+    /// every dyad through them is a slider (its moving pivot's three
+    /// positions lie on a line), so no finite center point passes them and
+    /// the center-point curves degenerate to the line at infinity (issue
+    /// 24).
     #[error(
-        "poses {i}, {j} and {k} have the same angle and positions on one line: every dyad          through them is a slider (its moving pivot's positions lie on a line), so the          Burmester points of the five poses are not isolated; rotate one of these poses or move          it off the line"
+        "poses {i}, {j} and {k} have the same angle and positions on one line: every dyad \
+         through them is a slider (its moving pivot's positions lie on a line), so no finite \
+         center point passes them and the center-point curves degenerate; rotate one of these \
+         poses or move it off the line"
     )]
     CollinearTranslations {
         /// First pose (1-based).
@@ -556,10 +563,26 @@ pub enum DegenerateError {
     /// through all five poses, or a center has a whole line of circle
     /// points (issue 24).
     #[error(
-        "the five poses have infinitely many Burmester points: {what}, so the dyads through all          five poses are not isolated; move or rotate a pose"
+        "the five poses have infinitely many Burmester points: {what}, so the dyads through all \
+         five poses are not isolated; move or rotate a pose"
     )]
     InfinitelyManyBurmesterPoints {
-        /// What is shared (for example `"the center-point curves of poses 1, 2, 3, 4 and of         /// poses 1, 2, 3, 5 share a component"`).
+        /// What is shared (for example `"the center-point curves of every two four-pose
+        /// subsets that share three poses have a common component"`).
+        what: &'static str,
+    },
+    /// Five poses whose Burmester points the elimination does not resolve
+    /// within rounding: from every choice of the shared poses a root of
+    /// the resultant gives no point, or the count is odd (the task is
+    /// within rounding of a degenerate one: nearly coincident poses or
+    /// poles, nearly equal angles) (issue 24).
+    #[error(
+        "the Burmester points of the five poses are not resolved within rounding: {what}; the \
+         task is within rounding of a degenerate one (nearly coincident poses or poles, nearly \
+         equal angles): move or rotate a pose"
+    )]
+    UnresolvedBurmesterPoints {
+        /// What failed.
         what: &'static str,
     },
     /// A dyad's center point and circle point coincide (a link of zero length).
@@ -684,6 +707,7 @@ impl Error {
                 DegenerateError::InfinitelyManyBurmesterPoints { .. } => {
                     "infinitely_many_burmester_points"
                 }
+                DegenerateError::UnresolvedBurmesterPoints { .. } => "unresolved_burmester_points",
             },
             Error::Cancelled { .. } => "cancelled",
             Error::OutOfMemory { .. } => "out_of_memory",
@@ -799,7 +823,8 @@ impl Error {
                 DegenerateError::SliderDyad { beta2 } => fields!(beta2),
                 DegenerateError::RotationsAboutOnePoint { i, j, k, x, y } => fields!(i, j, k, x, y),
                 DegenerateError::CollinearTranslations { i, j, k } => fields!(i, j, k),
-                DegenerateError::InfinitelyManyBurmesterPoints { what } => fields!(what),
+                DegenerateError::InfinitelyManyBurmesterPoints { what }
+                | DegenerateError::UnresolvedBurmesterPoints { what } => fields!(what),
             },
             Error::Cancelled { done, total } => fields!(done, total),
             Error::OutOfMemory { what, bytes } => fields!(what, bytes),

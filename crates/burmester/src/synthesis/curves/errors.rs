@@ -188,3 +188,8 @@ pub(crate) fn collinear_translations(poses: [usize; 3]) -> Error {
 pub(crate) fn infinitely_many(what: &'static str) -> Error {
     DegenerateError::InfinitelyManyBurmesterPoints { what }.into()
 }
+
+/// Five poses whose Burmester points the elimination does not resolve.
+pub(crate) fn unresolved(what: &'static str) -> Error {
+    DegenerateError::UnresolvedBurmesterPoints { what }.into()
+}

@@ -118,7 +118,10 @@ impl FivePositions {
     /// [`crate::DegenerateError::InfinitelyManyBurmesterPoints`] when the
     /// Burmester points are not isolated (the elimination vanishes
     /// identically within its rounding, a line of common center points, or
-    /// a center with a line of circle points).
+    /// a center with a line of circle points);
+    /// [`crate::DegenerateError::UnresolvedBurmesterPoints`] when no choice
+    /// of the shared poses gives a point for every root and an even count
+    /// (a task within rounding of a degenerate one).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         if poses.len() != 5 {
             return Err(errors::pose_count("FivePositions::new", 5, poses.len()));
@@ -167,8 +170,8 @@ impl FivePositions {
         // whose every root gives a Burmester point (or a slider) and whose
         // count is even is taken: a Burmester point near one of the shared
         // poles, in the direction of one, merges with it in that
-        // elimination and not in another. Failing that, the choice that
-        // lost the fewest roots.
+        // elimination and not in another. Failing every choice, the points
+        // are not resolved within rounding (a typed error).
         let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
         for a in 0..5 {
             for b in a + 1..5 {
@@ -200,6 +203,14 @@ impl FivePositions {
                 if clean {
                     break 'choices;
                 }
+            }
+        }
+        if let Some((lost, points, sliders)) = &fallback {
+            if *lost > 0 || (points.len() + sliders.len()) % 2 == 1 {
+                return Err(errors::unresolved(
+                    "from every choice of the shared poses a root of the elimination gives no \
+                     Burmester point, or the count with multiplicity is odd",
+                ));
             }
         }
         let Some((_, mut points, sliders)) = fallback else {
@@ -332,7 +343,8 @@ fn residual(m: &Motion, dyad: &Dyad) -> f64 {
 
 /// Three poses that make the Burmester points of five degenerate: three
 /// rotations about one point (their three poles coincide), or three poses
-/// of one angle with collinear positions.
+/// of one angle with collinear positions
+/// ([`Motion::collinear_translations`]).
 fn degenerate_triples(m: &Motion) -> Result<()> {
     let finite = |h: [f64; 3]| (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2]));
     for i in 0..5 {
@@ -349,18 +361,11 @@ fn degenerate_triples(m: &Motion) -> Result<()> {
                         ));
                     }
                 }
-                let same = |a: usize, b: usize| {
-                    wrap_angle(m.theta[a] - m.theta[b]).abs() <= COINCIDENT_POSES
-                };
-                if same(i, j) && same(i, k) {
-                    let (u, v) = (m.pos[j] - m.pos[i], m.pos[k] - m.pos[i]);
-                    let longest = u.norm_squared().max(v.norm_squared());
-                    if cross(u, v).abs() <= tolerance::COLLINEAR * longest {
-                        return Err(errors::collinear_translations([i + 1, j + 1, k + 1]));
-                    }
-                }
             }
         }
+    }
+    if let Some(t) = m.collinear_translations() {
+        return Err(errors::collinear_translations(t.map(|k| k + 1)));
     }
     Ok(())
 }
@@ -455,7 +460,8 @@ struct Elimination {
 impl Elimination {
     /// The elimination for `sub`; `None` when the resultant vanishes
     /// identically within its rounding (the curves share a component not
-    /// through `Q`, or a conic through it).
+    /// through `Q`, or a conic through it), or the cubic part of a curve
+    /// does (the line at infinity is a component of it).
     fn new(sub: &Motion) -> Option<Self> {
         let th = wrap_angle(sub.theta[1] - sub.theta[0]);
         let (sn, cs) = (0.5 * th).sin_cos();
@@ -590,6 +596,15 @@ impl Elimination {
             (v, e)
         };
         let ((nf, ef), (nh, eh)) = (normal(&ad), normal(&dd));
+        // A curve whose cubic part is zero within rounding has the line at
+        // infinity for a component (every direction a slider's): this
+        // choice is degenerate.
+        if [(nf, ef), (nh, eh)]
+            .iter()
+            .any(|(n, e)| negligible(n.x, e.x) && negligible(n.y, e.y))
+        {
+            return None;
+        }
         let common = negligible(
             cross(nf, nh),
             nf.x.abs() * eh.y + ef.x * nh.y.abs() + nf.y.abs() * eh.x + ef.y * nh.x.abs(),

@@ -89,6 +89,17 @@ impl CurveDyad {
     }
 }
 
+/// A dyad of the crank-rotation parametrisation whose three conditions,
+/// after the corrections, are off by more than this relative to their terms
+/// is not given ([`FourPositions::dyad_at`]): the formulas lost every digit.
+const POLISHED: f64 = 1e-8;
+
+/// The most distance from a curve (relative to the task size plus the
+/// point's distance from the task) at which a point whose dyad solves the
+/// three conditions within their rounding is on the curve
+/// ([`FourPositions::on_curve`]).
+const ON_CURVE_LOOSE: f64 = 1e-6;
+
 /// The crank-rotation parametrisation counts a dyad as at infinity when
 /// the best pair of its equations in `(W, Z)` is this close to singular
 /// (relative to the magnitude of the determinant's terms): its center point
@@ -269,12 +280,18 @@ impl FourPositions {
     /// for two equal poses (within [`super::COINCIDENT_POSES`]);
     /// [`crate::DegenerateError::CoincidentPoles`] when the poses are all
     /// rotations about one point (the curve vanishes identically, within
-    /// [`super::DEGENERATE_CURVE`]).
+    /// [`super::DEGENERATE_CURVE`]);
+    /// [`crate::DegenerateError::CollinearTranslations`] when three poses
+    /// have one angle and collinear positions (every dyad through them is a
+    /// slider: no finite center point).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         if poses.len() != 4 {
             return Err(errors::pose_count("FourPositions::new", 4, poses.len()));
         }
         let motion = Motion::new(poses)?;
+        if let Some(t) = motion.collinear_translations() {
+            return Err(errors::collinear_translations(t.map(|k| k + 1)));
+        }
         let curve = |form: &super::motion::LinearForm| -> Result<(Cubic, [f64; 10])> {
             let (f, mags) = form.cubic_bounds([1, 2, 3]);
             let mag = mags.iter().fold(0.0f64, |m, v| m.max(*v));
@@ -375,7 +392,25 @@ impl FourPositions {
         } else {
             relative
         };
-        (dist <= tol || f.abs() <= band, dist, tol)
+        if dist <= tol || f.abs() <= band {
+            return (true, dist, tol);
+        }
+        // Where the task is ill-conditioned (nearly equal angles, a point
+        // millions of task sizes out) a point of the curve is known only as
+        // well as its dyad solves the three conditions: within the rounding
+        // of their terms (with the circle point), and within a millionth.
+        let form = if circle {
+            self.motion.form.inverse()
+        } else {
+            self.motion.form.clone()
+        };
+        let v = self.motion.local_of(p);
+        let dg = (p.coords.norm() + origin.coords.norm()) / scale;
+        let solved = dist <= ON_CURVE_LOOSE * (scale + (p - origin).norm())
+            && form
+                .consistency(v, &[1, 2, 3], dg)
+                .is_some_and(|r| r <= tolerance::ON_CURVE_EPS);
+        (solved, dist, tol)
     }
 
     /// Checks a point and returns it in the local frame.
@@ -618,8 +653,11 @@ impl FourPositions {
     ///
     /// As [`FourPositions::beta2_range`]; [`crate::AssemblyError::OutOfReach`]
     /// when `beta2` is outside that range; [`crate::DegenerateError::AtInfinity`]
-    /// where the dyad's center point is at infinity; [`crate::InvalidInput`]
-    /// for a non-finite angle.
+    /// where the dyad's center point is at infinity;
+    /// [`crate::DegenerateError::NotParametrizable`] where the formulas lose
+    /// every digit (rotations between the poses of about `1e-7` rad: the
+    /// dyad's conditions are off by more than `1e-8` of their terms after
+    /// the corrections); [`crate::InvalidInput`] for a non-finite angle.
     pub fn dyad_at(&self, beta2: f64, branch: AssemblyMode) -> Result<CurveDyad> {
         let c = self.compat()?;
         let conf = c.fourbar.solve(beta2 + c.arg[0], branch)?;
@@ -630,7 +668,14 @@ impl FourPositions {
         let q1 = cx(self.motion.pos[0]);
         let zl = q1 - z;
         let gl = zl - w;
-        let (gl, zl) = self.polish(Vector2::new(gl.re, gl.im), Vector2::new(zl.re, zl.im));
+        let (gl, zl, residual) =
+            self.polish(Vector2::new(gl.re, gl.im), Vector2::new(zl.re, zl.im));
+        // Where the crank-rotation formulas lose every digit (rotations of
+        // 1e-7 rad: they divide by the square of the angle) and the
+        // corrections cannot mend it, there is no dyad to give.
+        if !(residual <= POLISHED) {
+            return Err(errors::no_parametrization());
+        }
         let center = self.motion.global_of(gl);
         let circle = self.motion.global_of(zl);
         let dyad = Dyad::new(center, circle);
@@ -643,36 +688,62 @@ impl FourPositions {
         })
     }
 
-    /// Two Gauss-Newton steps of a dyad `(g, z)` (local) onto the solutions
-    /// of the three equations `a_k(g) . z = b_k(g)` (the smallest change,
-    /// `-J^T (J J^T)^-1 F`), each kept only when it is a correction at the
-    /// level of rounding (below `1e-6` of the dyad's size).
-    fn polish(&self, mut g: Vector2<f64>, mut z: Vector2<f64>) -> (Vector2<f64>, Vector2<f64>) {
+    /// Gauss-Newton steps of a dyad `(g, z)` (local) onto the solutions of
+    /// the three equations `a_k(g) . z = b_k(g)` (the smallest change,
+    /// `-J^T (J J^T)^-1 F`), at most eight, each kept only when it is a
+    /// small correction (below `1e-4` of the dyad's size) that lowers the
+    /// residuals relative to their terms, until a step is at the level of
+    /// rounding. Where the task is ill-conditioned (nearly equal angles:
+    /// the crank-rotation formulas lose digits as the square of the angle)
+    /// the steps are what puts the dyad on the curve to rounding. Returns
+    /// the dyad and its largest residual relative to its terms.
+    fn polish(
+        &self,
+        mut g: Vector2<f64>,
+        mut z: Vector2<f64>,
+    ) -> (Vector2<f64>, Vector2<f64>, f64) {
         let form = &self.motion.form;
-        for _ in 0..2 {
+        let system = |g: Vector2<f64>, z: Vector2<f64>| {
             let mut jac = Matrix3x4::zeros();
             let mut res = Vector3::zeros();
+            let mut worst = 0.0f64;
             for (r, k) in (1..4).enumerate() {
                 let (a, b) = form.row(k, g);
                 let dg = form.row_dg(k, z);
                 res[r] = a.dot(&z) - b;
+                let terms = a.x.abs() * z.x.abs() + a.y.abs() * z.y.abs() + b.abs();
+                worst = worst.max(res[r].abs() / terms.max(f64::MIN_POSITIVE));
                 jac[(r, 0)] = dg.x;
                 jac[(r, 1)] = dg.y;
                 jac[(r, 2)] = a.x;
                 jac[(r, 3)] = a.y;
             }
+            (jac, res, worst)
+        };
+        let (mut jac, mut res, mut worst) = system(g, z);
+        for _ in 0..8 {
             let Some(y) = (jac * jac.transpose()).lu().solve(&res) else {
                 break;
             };
             let step = jac.transpose() * y;
             let size = 1.0 + g.norm() + z.norm();
-            if !(step.norm() <= 1e-6 * size) {
+            if !(step.norm() <= 1e-4 * size) {
                 break;
             }
-            g -= Vector2::new(step[0], step[1]);
-            z -= Vector2::new(step[2], step[3]);
+            let (g2, z2) = (
+                g - Vector2::new(step[0], step[1]),
+                z - Vector2::new(step[2], step[3]),
+            );
+            let (jac2, res2, worst2) = system(g2, z2);
+            if !(worst2 < worst) {
+                break;
+            }
+            (g, z, jac, res, worst) = (g2, z2, jac2, res2, worst2);
+            if step.norm() <= 4.0 * f64::EPSILON * size {
+                break;
+            }
         }
-        (g, z)
+        (g, z, worst)
     }
 
     /// The dyad of a center point on the curve, with its crank rotation

@@ -171,6 +171,34 @@ impl LinearForm {
         out
     }
 
+    /// How well `g` (local) solves the rows `ks` with the circle point of
+    /// their best conditioned pair: the largest residual `a_k(g) . z -
+    /// b_k(g)` over the bound on its terms in units of `eps` (the rows'
+    /// entries, `z`, and `g` itself known to `dg` plus its own rounding,
+    /// local units over `eps`, through the rows' derivative). `None` where
+    /// the rows have no unique circle point.
+    pub(crate) fn consistency(&self, g: Vector2<f64>, ks: &[usize], dg: f64) -> Option<f64> {
+        let z = self.solve(g, ks).ok()?;
+        let mut worst = 0.0f64;
+        for &k in ks {
+            let (ck, (mr, mi)) = self.parts(k);
+            let t = self.trans[k];
+            let (a, b) = self.row(k, g);
+            let (gx, gy) = (g.x.abs(), g.y.abs());
+            let ax = ck.x.abs() + mr.abs() * gx + mi.abs() * gy;
+            let ay = ck.y.abs() + mi.abs() * gx + mr.abs() * gy;
+            let bound = ax * z.x.abs()
+                + ay * z.y.abs()
+                + t.x.abs() * gx
+                + t.y.abs() * gy
+                + 0.5 * t.norm_squared()
+                + self.row_dg(k, z).norm() * (g.norm() + dg);
+            let r = (a.dot(&z) - b).abs() / (f64::EPSILON * bound);
+            worst = worst.max(if r.is_nan() { f64::INFINITY } else { r });
+        }
+        Some(worst)
+    }
+
     /// The form of the inverted motion (the ground seen from the coupler
     /// at pose 1): `D_1k^-1(w) = conj(R_k) w - conj(R_k) t_k`.
     pub(crate) fn inverse(&self) -> LinearForm {
@@ -418,6 +446,33 @@ impl Motion {
             form: LinearForm { rot, trans },
             data_rounding: (far / scale, 2.0 * turn),
         })
+    }
+
+    /// Three poses (0-based) of one angle (within
+    /// [`COINCIDENT_POSES`]) whose positions lie on a line (within
+    /// [`crate::tolerance::COLLINEAR`]), if any: every dyad through them is
+    /// a slider (its moving pivot's three positions are collinear), so no
+    /// finite center point passes them and the center-point curve is the
+    /// line at infinity, twice, and a line of centers at infinity.
+    pub(crate) fn collinear_translations(&self) -> Option<[usize; 3]> {
+        let n = self.poses.len();
+        let same = |a: usize, b: usize| {
+            wrap_angle(self.theta[a] - self.theta[b]).abs() <= COINCIDENT_POSES
+        };
+        for i in 0..n {
+            for j in i + 1..n {
+                for k in j + 1..n {
+                    if same(i, j) && same(i, k) {
+                        let (u, v) = (self.pos[j] - self.pos[i], self.pos[k] - self.pos[i]);
+                        let longest = u.norm_squared().max(v.norm_squared());
+                        if cross(u, v).abs() <= crate::tolerance::COLLINEAR * longest {
+                            return Some([i, j, k]);
+                        }
+                    }
+                }
+            }
+        }
+        None
     }
 
     /// `D_ij(z) = p_j + e^{i theta_ij} (z - p_i)` in the fixed frame
