@@ -2804,3 +2804,215 @@ fn issue24_dyads_of_nearly_equal_angles_are_on_their_curve_or_not_given() {
         four.circle_point(d.center).unwrap();
     }
 }
+
+/// Found by the `curves` fuzz target: four poses of one angle. Every dyad's
+/// crank is then one vector over the poses (its circle point's positions
+/// are the point translated), so a dyad passes the four only when the
+/// translations are concyclic; the curve degenerated to rounding and its
+/// traced points were refused. Now a typed error that says what to change,
+/// in any frame and at any size.
+#[test]
+fn issue24_four_poses_of_one_angle_are_all_translations() {
+    let found = [
+        Pose::new(2.211328125e-14, 2.911328125e-11, 0.02911328125),
+        Pose::new(2.911328125e-14, 2.924609375e-14, 0.02911328125),
+        Pose::new(1.1328125e-16, 2.911328125e-14, 0.02911328125),
+        Pose::new(2.9503906249999996e-14, 2.911328125e-14, 0.02911328125),
+    ];
+    // A lid moved without turning, in millimetres.
+    let lid = [
+        Pose::new(0.0, 0.0, 0.3),
+        Pose::new(120.0, 15.0, 0.3),
+        Pose::new(40.0, 90.0, 0.3),
+        Pose::new(70.0, 35.0, 0.3 + TAU),
+    ];
+    for (poses, size) in [(&found[..], 3e-11), (&lid[..], 100.0)] {
+        for t in frames_of_size(size) {
+            let e = FourPositions::new(&moved(poses, &t)).unwrap_err();
+            assert!(
+                matches!(e, Error::Degenerate(DegenerateError::AllTranslations)),
+                "{e:?}"
+            );
+            assert!(e.to_string().contains("rotate a pose"), "{e}");
+        }
+    }
+    // One pose turned by a thousandth of a radian: a proper task again.
+    let mut turned = lid;
+    turned[3] = Pose::new(70.0, 35.0, 0.301);
+    FourPositions::new(&turned).unwrap();
+}
+
+/// Found by the `curves` fuzz target: rotations of 2.6e-8 to 1e-6 rad. A
+/// crank-rotation dyad solved its three conditions to 1e-8 of their terms
+/// (accepted by `dyad_at`) but its center was off the curve by more than
+/// the on-curve test allows, so the library refused its own dyad. Now
+/// `dyad_at` gives a dyad only when the on-curve test takes its center and
+/// its circle point back; checked here by the crank lengths over the four
+/// poses, evaluated directly.
+#[test]
+fn issue24_dyads_of_nearly_equal_angles_are_taken_back_or_not_given() {
+    let poses = [
+        Pose::new(-2.228750000374531e-10, -1.15453125e-10, 3.141592653589793),
+        Pose::new(-2.2287500003745308e-10, -1.15453125e-10, 3.141592627696793),
+        Pose::new(-2.2287500003739538e-10, -1.15453125e-10, 3.141591653589793),
+        Pose::new(-2.2287500003745308e-10, -1.15453125e-10, 3.141592681089793),
+    ];
+    let off_curve = |r: &Result<Point2<f64>, Error>| {
+        matches!(r, Err(Error::InvalidInput(InvalidInput::OffCurve { .. })))
+    };
+    let mut total = 0;
+    for t in frames_of_size(1e-10) {
+        let moved_poses = moved(&poses, &t);
+        let four = FourPositions::new(&moved_poses).unwrap();
+        let mut dyads = Vec::new();
+        for k in 0..720 {
+            let beta2 = k as f64 * TAU / 720.0;
+            for mode in [AssemblyMode::Open, AssemblyMode::Crossed] {
+                if let Ok(d) = four.dyad_at(beta2, mode) {
+                    dyads.push(d);
+                }
+            }
+        }
+        let given = dyads.len();
+        if let Ok(runs) = four.dyad_runs(50) {
+            dyads.extend(runs.into_iter().flatten());
+        }
+        if let Ok(s) = four.parameter_samples(50) {
+            dyads.extend(s.into_iter().flatten());
+        }
+        total += given;
+        for d in &dyads {
+            let r = four.circle_point(d.center);
+            assert!(!off_curve(&r), "own center {} refused: {r:?}", d.center);
+            let r = four.center_point(d.circle);
+            assert!(
+                !off_curve(&r),
+                "own circle point {} refused: {r:?}",
+                d.circle
+            );
+            // The dyad's conditions: one crank length at the four poses,
+            // within a millionth of the crank plus the task, or within the
+            // rounding of the coordinates (the poses are nearly at one
+            // point: the task's size is a few ulps of its place).
+            let p1 = moved_poses[0];
+            let r: Vec<f64> = moved_poses
+                .iter()
+                .map(|p| {
+                    let (s, c) = (p.angle - p1.angle).sin_cos();
+                    let v = d.circle - p1.position;
+                    let q = p.position + Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y);
+                    (q - d.center).norm()
+                })
+                .collect();
+            let max = r.iter().copied().fold(0.0, f64::max);
+            let min = r.iter().copied().fold(f64::INFINITY, f64::min);
+            let place = d.center.coords.norm() + d.circle.coords.norm() + p1.position.coords.norm();
+            let band = 1e-6 * (max + four.size()) + 64.0 * f64::EPSILON * place;
+            assert!(max - min <= band, "{d:?}: {r:?}");
+        }
+    }
+    // Where the angles' digits allow (the task scaled up), some are given.
+    assert!(total > 0);
+}
+
+/// Found by the `curves` fuzz target: a driven dyad whose circle point is
+/// the first pose's reference point, on a line of centers. At `C1` every
+/// branch sign `cross(C'k - C1, A1 - C1)` is zero, so the class of a
+/// driving circle point there (and of the stretch of that line next to it)
+/// was decided by rounding. `C1` is a boundary (never free) within
+/// `tolerance::POINT` task sizes, in every frame, and no free arc passes
+/// it.
+#[test]
+fn issue24_the_driven_circle_point_is_a_boundary() {
+    let poses = [
+        Pose::new(8.66640625e-14, 7.33203125e-12, 0.0),
+        Pose::new(0.0, 0.0, 40.0),
+        Pose::new(0.0, 0.0, 7.33203125),
+        Pose::new(8.66640625e-14, 7.33203125e-12, 0.0101640625),
+    ];
+    let driven = Dyad::new(
+        Point2::new(4.3332031250003845e-14, 3.666015624999997e-12),
+        Point2::new(8.666406249999107e-14, 7.332031250000002e-12),
+    );
+    for t in frames_of_size(1e-11) {
+        let four = FourPositions::new(&moved(&poses, &t)).unwrap();
+        let size = four.size();
+        let d = Dyad::new(t.point(driven.center), t.point(driven.circle));
+        let arcs = four.filemon(&d).unwrap();
+        let c1 = arcs.driven().circle;
+        // Every sign vanishes at C1 (against their size a task away).
+        let far = arcs.circle_signs(c1 + Vector2::new(size, 0.0));
+        let scale = far.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        for s in arcs.circle_signs(c1) {
+            assert!(s.abs() <= 1e-12 * scale, "{s} against {scale}");
+        }
+        for k in 0..8 {
+            let a = k as f64 * PI / 4.0;
+            let p = c1 + Vector2::new(a.cos(), a.sin()) * (0.5e-12 * size);
+            assert_eq!(arcs.classify_circle_point(p), Branch::Boundary);
+        }
+        assert_eq!(arcs.classify_circle_point(c1), Branch::Boundary);
+        let h = 2.0 * size;
+        let vp = Viewport::new(c1.x - h, c1.x + h, c1.y - h, c1.y + h).unwrap();
+        for l in arcs.free_circle_arcs(&vp) {
+            for p in &l[1..l.len() - 1] {
+                assert!(
+                    (p - c1).norm() > 1e-12 * size,
+                    "a free arc passes C1 at {p}"
+                );
+            }
+        }
+    }
+}
+
+/// Found by the `curves` fuzz target: three nearly collinear translations
+/// and a pose turned by 2.3e-8 rad. The circle-point curve is a line times
+/// a conic whose terms other than the constant are rounding; the conic's
+/// kind (relative to its matrix's norm) said "degenerate" and a line was
+/// drawn across the view where the curve is not (a hundredth of the task
+/// away). Now every traced vertex is on the curve.
+#[test]
+fn issue24_a_line_times_a_constant_conic_traces_only_the_line() {
+    let poses = [
+        Pose::new(2.699609375e-11, -3.9062500000000004e-24, 2.274609375e-8),
+        Pose::new(-8.083593980090955e-11, -5.756572150067078e-19, 0.0),
+        Pose::new(2.7992185199090447e-11, -6.140595587567076e-19, 0.0),
+        Pose::new(2.6996091449090445e-11, -6.140595587567076e-19, 0.0),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let vp = Viewport::new(
+        -5.241228251844396e-13,
+        1.0983381238201081e-12,
+        -8.112309254473336e-13,
+        8.112300235572142e-13,
+    )
+    .unwrap();
+    let curve = four.circle_point_curve();
+    let lines = curve.polylines(&vp);
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    for l in &lines {
+        for &c in l {
+            assert!(on_curve(&curve, &four, c, 1.0), "{c} off the curve");
+            let g = four.center_point(c);
+            assert!(
+                !matches!(g, Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))),
+                "{c}: {g:?}"
+            );
+        }
+    }
+}
+
+/// Frames for a task of about `size`: as given, moved (by a few sizes),
+/// turned, scaled, mirrored; the moves are within the task's own digits.
+fn frames_of_size(size: f64) -> Vec<Similarity> {
+    vec![
+        Similarity::new(1.0, 0.0, Vector2::zeros()).unwrap(),
+        Similarity::new(1.0, 0.0, Vector2::new(0.0, 2.0 * size)).unwrap(),
+        Similarity::new(3.0, 0.0, Vector2::zeros()).unwrap(),
+        Similarity::new(1.0, 1.0, Vector2::new(0.3, -0.2) * size).unwrap(),
+        Similarity::new(1e-3, -2.5, Vector2::new(7.0, 5.0) * size).unwrap(),
+        Similarity::new(1e3, 0.7, Vector2::new(-4.0, 1.0) * size)
+            .unwrap()
+            .mirrored(),
+    ]
+}

@@ -783,6 +783,9 @@ fn edge_crossings(cubic: &Cubic, view: &View) -> Vec<Vector2<f64>> {
     for (m, h) in edges {
         let coeffs = cubic.restriction_local(m, h);
         for u in roots_in(&coeffs, -1.0, 1.0) {
+            // Refined on the curve's own value: the restriction's
+            // coefficients lose the digits that the edge's place cancels.
+            let u = cubic.refine_on_line(m, h, u).clamp(-1.0, 1.0);
             let mut x = m + h * u;
             // Exactly on the edge and inside the viewport.
             x.x = x.x.clamp(lo.x, hi.x);

@@ -188,8 +188,14 @@ impl FilemonArcs {
     }
 
     /// The branch class of a driving circle point `A1`: free when the four
-    /// signs agree, a boundary where one is zero (a toggle at a pose).
+    /// signs agree, a boundary where one is zero (a toggle at a pose) or
+    /// where `A1` is `C1` (within [`crate::tolerance::POINT`] task sizes:
+    /// every sign is zero there, and a curve with a line of centers whose
+    /// circle point is `C1` would otherwise be labelled by rounding).
     pub fn classify_circle_point(&self, a1: Point2<f64>) -> Branch {
+        if (a1 - self.driven.circle).norm() <= crate::tolerance::POINT * self.four.size() {
+            return Branch::Boundary;
+        }
         let s = self.circle_signs(a1);
         if s.iter().any(|&v| v == 0.0 || v.is_nan()) {
             Branch::Boundary
@@ -321,10 +327,16 @@ fn free_pieces(
                     }
                     free(piece[j].0)
                 };
-                let all: Vec<(Point2<f64>, Option<bool>)> =
-                    (0..n).map(|j| (piece[j].0, label_at(j))).collect();
+                // The labels by the points' bits (a lookup, not a search: a
+                // piece may have a million vertices).
+                let all: std::collections::HashMap<(u64, u64), Option<bool>> = (0..n)
+                    .map(|j| {
+                        let p = piece[j].0;
+                        ((p.x.to_bits(), p.y.to_bits()), label_at(j))
+                    })
+                    .collect();
                 let split = split_by(&[points], &cuts, |p| {
-                    all.iter().find(|(q, _)| *q == p).and_then(|(_, l)| *l)
+                    all.get(&(p.x.to_bits(), p.y.to_bits())).copied().flatten()
                 });
                 for (i, (l, pts)) in split.into_iter().enumerate() {
                     runs.push((l, pts, i == 0 && joinable));

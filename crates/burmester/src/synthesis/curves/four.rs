@@ -283,12 +283,21 @@ impl FourPositions {
     /// [`super::DEGENERATE_CURVE`]);
     /// [`crate::DegenerateError::CollinearTranslations`] when three poses
     /// have one angle and collinear positions (every dyad through them is a
-    /// slider: no finite center point).
+    /// slider: no finite center point);
+    /// [`crate::DegenerateError::AllTranslations`] when all four have one
+    /// angle (every dyad's crank is one vector: the curve degenerates).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         if poses.len() != 4 {
             return Err(errors::pose_count("FourPositions::new", 4, poses.len()));
         }
         let motion = Motion::new(poses)?;
+        if motion
+            .theta
+            .iter()
+            .all(|t| wrap_angle(*t).abs() <= super::COINCIDENT_POSES)
+        {
+            return Err(errors::all_translations());
+        }
         if let Some(t) = motion.collinear_translations() {
             return Err(errors::collinear_translations(t.map(|k| k + 1)));
         }
@@ -657,7 +666,9 @@ impl FourPositions {
     /// [`crate::DegenerateError::NotParametrizable`] where the formulas lose
     /// every digit (rotations between the poses of about `1e-7` rad: the
     /// dyad's conditions are off by more than `1e-8` of their terms after
-    /// the corrections); [`crate::InvalidInput`] for a non-finite angle.
+    /// the corrections, or its center or circle point is not on its curve
+    /// by [`FourPositions::circle_point`]'s test: a dyad given here is
+    /// always taken back); [`crate::InvalidInput`] for a non-finite angle.
     pub fn dyad_at(&self, beta2: f64, branch: AssemblyMode) -> Result<CurveDyad> {
         let c = self.compat()?;
         let conf = c.fourbar.solve(beta2 + c.arg[0], branch)?;
@@ -678,6 +689,11 @@ impl FourPositions {
         }
         let center = self.motion.global_of(gl);
         let circle = self.motion.global_of(zl);
+        // What the library gives it takes back: a dyad whose center or
+        // circle point the on-curve test refuses is not given.
+        if !(self.on_curve(center, false).0 && self.on_curve(circle, true).0) {
+            return Err(errors::no_parametrization());
+        }
         let dyad = Dyad::new(center, circle);
         Ok(CurveDyad {
             center,
