@@ -1561,7 +1561,8 @@ fn an_arc_end_from_a_far_circle_point_lies_on_the_curve() {
 
 /// Found by a proptest at 6000 cases: a sample of the compatibility
 /// linkage (a dyad to 1e-8 by its spread) 5.4 times the curve tolerance off
-/// the center-point cubic by first-order distance.
+/// the center-point cubic by first-order distance (no longer given: see the
+/// last assertion).
 #[test]
 fn a_compatibility_sample_is_near_the_cubic() {
     let poses = [
@@ -1583,10 +1584,11 @@ fn a_compatibility_sample_is_near_the_cubic() {
             n += 1;
         }
     }
-    assert!(
-        n > 1000 && worst > 1.0 && worst < 10.0,
-        "{n} samples, worst {worst}"
-    );
+    // Since `dyad_at` gives only dyads that the on-curve test takes back
+    // (issue 24), the samples that were up to 5.4 tolerances off by the
+    // first-order distance are not given: every sample is now within the
+    // tolerance by that distance alone (it was `1 < worst < 10`).
+    assert!(n > 1000 && worst <= 1.0, "{n} samples, worst {worst}");
 }
 
 /// Found by a proptest at 6000 cases: a linkage close to a kite (ground
@@ -2852,7 +2854,7 @@ fn issue24_four_poses_of_one_angle_are_all_translations() {
 #[test]
 fn issue24_dyads_of_nearly_equal_angles_are_taken_back_or_not_given() {
     let poses = [
-        Pose::new(-2.228750000374531e-10, -1.15453125e-10, 3.141592653589793),
+        Pose::new(-2.228750000374531e-10, -1.15453125e-10, PI),
         Pose::new(-2.2287500003745308e-10, -1.15453125e-10, 3.141592627696793),
         Pose::new(-2.2287500003739538e-10, -1.15453125e-10, 3.141591653589793),
         Pose::new(-2.2287500003745308e-10, -1.15453125e-10, 3.141592681089793),
@@ -2992,7 +2994,7 @@ fn issue24_a_line_times_a_constant_conic_traces_only_the_line() {
     assert_eq!(lines.len(), 1, "{lines:?}");
     for l in &lines {
         for &c in l {
-            assert!(on_curve(&curve, &four, c, 1.0), "{c} off the curve");
+            assert!(on_curve(curve, &four, c, 1.0), "{c} off the curve");
             let g = four.center_point(c);
             assert!(
                 !matches!(g, Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))),
@@ -3015,4 +3017,129 @@ fn frames_of_size(size: f64) -> Vec<Similarity> {
             .unwrap()
             .mirrored(),
     ]
+}
+
+/// Found by the `curves` fuzz target: a view 700 task sizes wide whose
+/// center is far from the curve. The tracer's pencil point (a vertex of the
+/// trace) was a root of the curve on a line from the view's center, found
+/// to the rounding of that distance: 0.0044 off the curve (against an
+/// on-curve tolerance of 6.6e-5, a task of size 66,000) and refused by
+/// `circle_point`. It is now refined by Newton on the curve's own value;
+/// every vertex is on the curve, in this view and in smaller ones.
+#[test]
+fn issue24_a_huge_view_traces_vertices_on_the_curve() {
+    let poses = [
+        Pose::new(65996.09375, -824.21875, 0.032996093750000004),
+        Pose::new(0.12496484375, 51.0078125, 2.84765625e-9),
+        Pose::new(-0.7421875, 35.15625, 35.15624999999609),
+        Pose::new(0.12496484375, 51.0078125, 73.16015625),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let curve = four.center_point_curve();
+    let (x0, x1, y0, y1) = (
+        -36827307.97171515,
+        8033420.454465505,
+        -36820774.80875893,
+        8039953.617421731,
+    );
+    let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+    let mut count = 0;
+    for k in [1.0, 1e-2, 1e-4] {
+        let (hx, hy) = (0.5 * (x1 - x0) * k, 0.5 * (y1 - y0) * k);
+        let vp = Viewport::new(cx - hx, cx + hx, cy - hy, cy + hy).unwrap();
+        for g in curve.polylines(&vp).into_iter().flatten() {
+            count += 1;
+            // Independent of the on-curve test: the first-order distance
+            // within the rounding of a task size.
+            assert!(curve.distance_estimate(g) <= 1e-9 * four.size(), "{g}");
+            let z = four.circle_point(g);
+            assert!(
+                !matches!(z, Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))),
+                "traced {g} refused: {z:?}"
+            );
+        }
+    }
+    assert!(count > 0);
+}
+
+/// Found by the `curves` fuzz target: a nearly singular circle-point curve
+/// with an oval 1.2e-14 across (a task of size 9.4e-8) at an arc end. The
+/// extreme Filemon line crosses the oval twice where the arc ends do not
+/// resolve it (two roots 6e-8 task sizes apart), so the classes changed
+/// between traced vertices; the free run was cut at the middle of that
+/// chord and so reached into the defective stretch. A free run now ends at
+/// a vertex or an exact mark. Checked against the branch signs
+/// `cross(C'k - C1, A1 - C1)` evaluated here, at points of the curve along
+/// every chord of every free arc.
+#[test]
+fn issue24_a_free_arc_never_ends_mid_chord_in_a_defective_stretch() {
+    let poses = [
+        Pose::new(-4.200390625e-14, -4.216796875e-14, -0.03816796875),
+        Pose::new(-4.216796875e-14, -4.25234375e-14, 0.04683203125),
+        Pose::new(-1.2524999999999999e-7, -6.401171875e-14, 34.1484375),
+        Pose::new(-4.216796875e-14, -4.25234375e-14, -42.88671875),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let driven = Dyad::new(
+        Point2::new(-3.7484288237342264e-14, -4.502291198845822e-14),
+        Point2::new(-2.8392127636848383e-7, 5.572602386567654e-7),
+    );
+    let arcs = four.filemon(&driven).unwrap();
+    let c1 = arcs.driven().circle;
+    let images = arcs.fixed_pivot_images();
+    let signs = |p: Point2<f64>| {
+        images.map(|c| {
+            let (u, v) = (c - c1, p - c1);
+            u.x * v.y - u.y * v.x
+        })
+    };
+    let curve = four.circle_point_curve();
+    let mut checked = 0;
+    let found = Viewport::new(
+        -9.39412168438642e-10,
+        9.393371998621672e-10,
+        -9.39419707062393e-10,
+        9.393296612384162e-10,
+    )
+    .unwrap();
+    let views = [1e-11, 1e-13].map(|h| Viewport::new(-h, h, -h, h).unwrap());
+    for vp in std::iter::once(found).chain(views) {
+        let diag = vp.diagonal();
+        let near = |p: Point2<f64>| {
+            (p - c1).norm() <= 1e-6 * diag
+                || arcs
+                    .arc_ends()
+                    .iter()
+                    .any(|e| (e.circle - p).norm() <= 1e-6 * diag)
+        };
+        for l in arcs.free_circle_arcs(&vp) {
+            for w in l.windows(2) {
+                for k in 0..=4 {
+                    let m = w[0] + (w[1] - w[0]) * (k as f64 / 4.0);
+                    let Some(q) = curve
+                        .intersect_line(&burmester::Line {
+                            point: m,
+                            direction: curve.gradient(m),
+                        })
+                        .into_iter()
+                        .min_by(|a, b| (a - m).norm().total_cmp(&(b - m).norm()))
+                    else {
+                        continue;
+                    };
+                    if near(q) || (q - m).norm() > 2e-3 * diag {
+                        continue;
+                    }
+                    let s = signs(q);
+                    assert!(
+                        s.iter().all(|v| *v > 0.0) || s.iter().all(|v| *v < 0.0),
+                        "{q} on the free chord {} - {} has signs {s:?}",
+                        w[0],
+                        w[1]
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 0);
 }

@@ -556,6 +556,10 @@ fn choose_point(cubic: &Cubic, center: Vector2<f64>, radius: f64) -> Option<Vect
             let w = Vector2::new(ang.cos(), ang.sin()) * radius.max(f64::MIN_POSITIVE);
             let coeffs = cubic.restriction_local(base, w);
             for u in real_roots(&coeffs) {
+                // Refined on the curve's own value: the base (the view's
+                // center) may be far from the curve, and the pencil's point
+                // is a vertex of the trace.
+                let u = cubic.refine_on_line(base, w, u);
                 let x = base + w * u;
                 if x.iter().all(|v| v.is_finite()) {
                     cands.push(x);

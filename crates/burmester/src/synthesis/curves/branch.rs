@@ -338,7 +338,26 @@ fn free_pieces(
                 let split = split_by(&[points], &cuts, |p| {
                     all.get(&(p.x.to_bits(), p.y.to_bits())).copied().flatten()
                 });
-                for (i, (l, pts)) in split.into_iter().enumerate() {
+                // A free run ends at a vertex or a mark, never at the middle
+                // of a chord where an unmarked change was cut: the change is
+                // somewhere on that chord, so half of it may be defective (a
+                // tiny oval of a nearly singular curve that crosses an
+                // extreme line where the arc ends do not resolve it).
+                let exact = |p: &Point2<f64>| {
+                    all.contains_key(&(p.x.to_bits(), p.y.to_bits())) || cuts.contains(p)
+                };
+                for (i, (l, mut pts)) in split.into_iter().enumerate() {
+                    if l {
+                        if pts.last().is_some_and(|p| !exact(p)) {
+                            pts.pop();
+                        }
+                        if pts.first().is_some_and(|p| !exact(p)) {
+                            pts.remove(0);
+                        }
+                        if pts.len() < 2 {
+                            continue;
+                        }
+                    }
                     runs.push((l, pts, i == 0 && joinable));
                 }
             }
