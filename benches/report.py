@@ -3,6 +3,7 @@
 
     python benches/report.py --run          # run the benches, then write the report
     python benches/report.py                # only write the report from target/criterion
+    python benches/report.py --run --only drive_map   # one section, the others kept
 
 ``--run`` runs ``cargo bench`` for every bench named in SECTIONS and, when the
 ``burmester`` package is importable, the Python-side timings that SECTIONS
@@ -293,6 +294,35 @@ SECTIONS.append(
 )
 
 
+SECTIONS.append(
+    Section(
+        title="From poses to the best linkage (`design`)",
+        benches=["design"],
+        prefixes=["design/"],
+        ratios=[
+            Ratio(
+                "brute force over both pivots at 4x resolution / `Task::design` (the design's "
+                "best score at least the brute force's, checked in the same run)",
+                "design/example/brute_force_4x",
+                "design/example/design",
+                ">= 10 (issue 22)",
+                lambda r: r >= 10.0,
+            ),
+        ],
+        note=(
+            "`Task::design` with its default options on the built-in example (balanced "
+            "ranking, default limits, pivots anywhere): the coarse pass (the pivot-pair atlas, "
+            "12 driven x 48 driving pivots along the search box's side), then 48 starts refined "
+            "by Nelder-Mead on the exact figures. The brute force is the loop a designer would "
+            "write: for every driven pivot of a 48 x 48 grid over the same box, the solution map "
+            "over 192 x 192 driving pivots and its best pivot by the same score (both grids four "
+            "times finer than the design's coarse pass). The bench asserts, before timing, that "
+            "the design's best score is at least the brute force's (it prints both)."
+        ),
+    )
+)
+
+
 SOLVE_MANY_SETUP = """
 import numpy as np
 from burmester._burmester import FourBar
@@ -559,6 +589,43 @@ SECTIONS.append(
 )
 
 
+SECTIONS.append(
+    Section(
+        title="A motor for a swinging input: the drive map (`drive_map`)",
+        benches=["drive_map"],
+        prefixes=["drive_map/"],
+        ratios=[
+            Ratio(
+                "drive map / solution map per sample, 1024^2 each, into given columns, same run",
+                "drive_map/drive_map_into/1024",
+                "drive_map/solution_map_into/1024",
+                "<= 2 (issue 23)",
+                lambda r: r <= 2.0,
+            ),
+            Ratio(
+                "drive map / solution map per sample, 256^2 each, into given columns, same run",
+                "drive_map/drive_map_into/256",
+                "drive_map/solution_map_into/256",
+                "<= 2 (issue 23)",
+                lambda r: r <= 2.0,
+            ),
+        ],
+        note=(
+            "`DriveContext::map` for the built-in example's best linkage by transmission (a "
+            "triple-rocker, its input swinging), the attachment at its input joint, candidate "
+            "crank pivots over a square of half-width 4 |A - A0| about A0, default limits, no "
+            "constraints; against the example's solution map (`Filemon::solution_map_into`) "
+            "over its view on a grid of the same size, in the same run, so their ratio is the "
+            "cost per sample of one over the other. Each drive sample is exact and closed form: "
+            "the crank-rocker with the swing asked for, the drive loop's minimum transmission "
+            "over a full crank turn, the time ratio, the six-bar's link and size ratios (three "
+            "square roots, one `acos`, one `atan2`), on SIMD lanes picked at run time like the "
+            "solution map's kernel (the scalar path's bits). `drive_map` allocates its columns; "
+            "the `_into` figures reuse them."
+        ),
+    )
+)
+
 @dataclass
 class Figure:
     id: str
@@ -684,6 +751,68 @@ def machine() -> list[str]:
     ]
 
 
+SCALING = ROOT / "benches" / "scaling"
+
+
+def parse_scaling_log(path: Path) -> tuple[list[str], list[tuple[str, str, int, float, float, float]]]:
+    """The ``# `` header lines and the ``(label, bench, threads, low, mean, high)``
+    rows (ns) of a console log of the ``scaling`` bench; ``label`` is the last
+    ``== ...`` line before a row (empty when there is none)."""
+    header: list[str] = []
+    rows: list[tuple[str, str, int, float, float, float]] = []
+    label, name = "", None
+    units = {"ns": 1.0, "µs": 1e3, "us": 1e3, "ms": 1e6, "s": 1e9}
+    for line in path.read_text().splitlines():
+        if line.startswith("# "):
+            header.append(line[2:])
+        elif line.startswith("== "):
+            label = line[3:]
+        elif line.startswith("scaling/"):
+            name = line.split()[0]
+            if "time:" not in line:
+                continue
+        if "time:" in line and name is not None and "%" not in line:
+            v = line.split("[", 1)[1].split("]", 1)[0].split()
+            lo, mid, hi = (float(v[i]) * units[v[i + 1]] for i in (0, 2, 4))
+            bench, threads = name.rsplit("/", 1)
+            rows.append((label, bench.removeprefix("scaling/"), int(threads), lo, mid, hi))
+            name = None
+    return header, rows
+
+
+def scaling_lines() -> list[str]:
+    """Thread scaling from the committed logs of ``benches/scaling.rs`` run
+    on a many-core machine (this machine has too few cores to measure it)."""
+    logs = sorted(SCALING.glob("*.log")) if SCALING.exists() else []
+    if not logs:
+        return []
+    lines = [
+        "## Thread scaling (`scaling`, a 16-core machine)",
+        "",
+        "Not measured by `--run` (it needs many cores): `benches/scaling.rs` run on a",
+        "16-core machine, its console output committed in `benches/scaling/` and turned",
+        "into these tables by this script. Speed-up is the 1-thread mean over the",
+        "n-thread mean of the same run (a rayon pool of n threads around each call).",
+        "Goals (issue 13): the solution map >= 13x and `solve_into` (what",
+        "`FourBar.solve_many` runs) >= 10x at 16 threads.",
+        "",
+    ]
+    for log in logs:
+        header, rows = parse_scaling_log(log)
+        lines += [f"### `{log.name}`", ""]
+        lines += [f"- {h}" for h in header]
+        lines += ["", "| run | benchmark | threads | time | interval | speed-up |", "|---|---|---|---|---|---|"]
+        one = {(lab, b): mid for lab, b, t, _, mid, _ in rows if t == 1}
+        for lab, b, t, lo, mid, hi in rows:
+            base = one.get((lab, b))
+            up = f"{base / mid:.1f}x" if base else ""
+            lines.append(
+                f"| {lab} | `{b}` | {t} | {fmt_time(mid)} | {fmt_time(lo)} to {fmt_time(hi)} | {up} |"
+            )
+        lines.append("")
+    return lines
+
+
 def write(figures: dict[str, Figure]) -> str:
     lines = [
         "# Benchmarks",
@@ -733,15 +862,62 @@ def write(figures: dict[str, Figure]) -> str:
             lines.append("")
         if s.extra is not None:
             lines += s.extra(figures)
+    lines += scaling_lines()
     return "\n".join(lines)
+
+
+def section_text(text: str) -> dict[str, str]:
+    """The ``## `` sections of a report, by title, each with its heading."""
+    parts: dict[str, str] = {}
+    title = None
+    for block in text.split("\n## ")[1:]:
+        title, _, body = block.partition("\n")
+        parts[title] = "## " + title + "\n" + body.rstrip("\n") + "\n"
+    return parts
+
+
+def write_only(figures: dict[str, Figure], sections: list[Section]) -> str:
+    """The existing report with only ``sections`` rewritten from this run's
+    figures (added at the end when new); every other section is kept as it
+    was, and each rewritten one says when it was measured."""
+    old = OUT.read_text() if OUT.exists() else write({})
+    fresh = section_text(write(figures))
+    stamp = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+    head, _, _ = old.partition("\n## ")
+    kept = section_text(old)
+    for s in sections:
+        note = (f"(This section alone measured {stamp}, `python benches/report.py --run --only "
+                f"{' '.join(s.benches)}`; the others come from an earlier run. Its ratios are "
+                "within this one run.)\n\n")
+        body = fresh[s.title]
+        heading, _, rest = body.partition("\n\n")
+        kept[s.title] = heading + "\n\n" + note + rest
+    return head.rstrip("\n") + "\n\n" + "\n".join(kept.values()).rstrip("\n")
 
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--run", action="store_true", help="run the benches first")
+    ap.add_argument("--only", nargs="+", metavar="BENCH", default=None,
+                    help="only the sections of these cargo benches: run them (with --run) and rewrite "
+                         "their sections of BENCHMARKS.md, keeping the others")
     ap.add_argument("--python-repeat", type=int, default=20)
     ap.add_argument("criterion_args", nargs="*", help="passed to criterion (after --)")
     args = ap.parse_args()
+    if args.only is not None:
+        chosen = [s for s in SECTIONS if set(s.benches) & set(args.only)]
+        if not chosen:
+            ap.error(f"no section runs the benches {args.only}")
+        if args.run:
+            for s in chosen:
+                for b in s.benches:
+                    shutil.rmtree(CRITERION / b, ignore_errors=True)
+            run_benches(chosen, args.criterion_args)
+            run_python(chosen, args.python_repeat)
+        text = write_only(load_criterion(), chosen)
+        OUT.write_text(text + "\n")
+        print(text)
+        return 0
     if args.run:
         # Every figure of the report comes from this one run.
         shutil.rmtree(CRITERION, ignore_errors=True)

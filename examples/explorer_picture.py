@@ -33,7 +33,7 @@ def drag(ex: Explorer, start: Tuple[float, float], end: Tuple[float, float], ste
 def main(out: Optional[Path] = None) -> Path:
     out = Path(__file__).resolve().parents[1] / "docs" / "explorer.png" if out is None else out
     spec = example()
-    ex = plot.explore(spec.task(), spec.driven_center, (-8, 8, -8, 8),
+    ex = plot.explore(spec.task, spec.driven_center, (-8, 8, -8, 8),
                       limits=burmester.DesignLimits(min_transmission_deg=35))
     ex.figure.canvas.draw()
     drag(ex, (2.0, 0.5), (2.3, 0.3))           # pose 2, a little right and down

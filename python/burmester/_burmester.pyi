@@ -13,7 +13,7 @@ Every class is immutable and pickles to an equal object (so tasks, Filemon
 constructions and maps can go to worker processes).
 """
 
-from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, final, overload
+from typing import Any, Callable, Iterator, Literal, Optional, Sequence, Tuple, Union, final, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -29,6 +29,9 @@ __all__ = [
     "Cubic",
     "CurveDyad",
     "DesignLimits",
+    "Drive",
+    "DriveError",
+    "DriveMap",
     "Filemon",
     "FourBar",
     "Grid",
@@ -37,11 +40,20 @@ __all__ = [
     "PairMap",
     "Pivot",
     "Pole",
+    "SixBar",
     "SolutionMap",
     "SynthesizedFourBar",
     "Task",
     "clip_line",
+    "unit_time_ratio_crank_rocker",
     "_atlas_tile",
+    "Space",
+    "Design",
+    "NearMiss",
+    "DesignReport",
+    "_design",
+    "_design_plan",
+    "_design_from_atlas",
     "__version__",
 ]
 
@@ -51,6 +63,10 @@ Point = Tuple[float, float]
 Pose = Tuple[float, float, float]
 Line = Tuple[Point, Point]
 Extent = Tuple[float, float, float, float]
+#: A grid's six numbers ``(xmin, xmax, ymin, ymax, nx, ny)``: every
+#: grid-taking method takes a :class:`Grid`, this tuple, or the six numbers
+#: one by one.
+GridTuple = Tuple[float, float, float, float, int, int]
 Mode = Literal["open", "crossed"]
 Method = Literal["conic", "direct", "simulate"]
 BranchClass = Literal["free", "defective", "boundary"]
@@ -105,6 +121,18 @@ class DegenerateError(BurmesterError):
     (``cause == "at_infinity"``, with its unit direction ``dir_x``,
     ``dir_y``; for example a center point on the pole circle), or the task
     has no unique answer (``"undefined"``, ``"coincident_poses"``, ...)."""
+
+class DriveError(BurmesterError):
+    """A six-bar cannot be built as asked, or a linkage cannot be driven
+    from a motor by an added dyad. ``cause`` says why: ``"no_travel"`` (the
+    linkage does not pass its poses in order), ``"travel_too_large"`` (its
+    input turns through 180 degrees or more with the margins: no
+    crank-rocker swings that far), ``"outside_input_range"`` (the margins
+    take the input past a dead position), ``"not_a_crank_rocker"`` (no drive
+    with its crank pivot there), ``"no_acceptable_drive"`` (none searched
+    meets the limits; with ``searched``, ``valid``,
+    ``best_transmission_deg`` and ``min_transmission_deg``),
+    ``"pivot_mismatch"``, ``"toggle_joints"``."""
 
 # ---------------------------------------------------------------------------
 # geom
@@ -274,6 +302,10 @@ class Cubic:
         first). ``tolerance`` is the largest chord error (default: a
         thousandth of the viewport's diagonal; 1e-9 to 1 times the
         diagonal)."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`): every
+        component in the frame the cubic is kept in; PNG bytes, or None
+        when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
@@ -681,7 +713,9 @@ class Task:
         splits a run. Raises :class:`DegenerateError`
         (``"not_parametrizable"``) when the poses have no compatibility
         linkage, :class:`InvalidInputError` for ``samples`` outside 1 to
-        1e7."""
+        1e7. Ten million samples take seconds: the GIL is released and
+        Ctrl-C raises :class:`KeyboardInterrupt` within a fraction of a
+        second; dyads that cannot be allocated are a ``MemoryError``."""
     def order_arcs(
         self, xmin: float, xmax: float, ymin: float, ymax: float, *, plane: Literal["center", "circle"] = "center"
     ) -> list[Tuple[str, Optional[Literal["counterclockwise", "clockwise"]], FloatArray]]:
@@ -754,7 +788,7 @@ class Task:
     def driven_solution_map(
         self,
         driving_center: Point,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         *,
         limits: Optional[DesignLimits] = None,
         min_transmission_deg: Optional[float] = None,
@@ -769,7 +803,7 @@ class Task:
         """The solution-space map the other way round: the driving dyad with
         this center point is fixed and the candidates are driven center
         points ``C0`` on ``grid`` (a :class:`Grid`, or its six numbers
-        ``xmin, xmax, ymin, ymax, nx, ny``); the branch-free flag is the sign
+        ``xmin, xmax, ymin, ymax, nx, ny`` as a tuple or one by one); the branch-free flag is the sign
         test at the poses. Keywords as :meth:`Filemon.solution_map`."""
     @overload
     def driven_solution_map(
@@ -817,9 +851,12 @@ class Task:
         :meth:`Filemon.solution_map` (both pivots must lie on the base
         plate). Raises :class:`InvalidInputError` (``"needs_poses"``) unless
         the task has four poses, (``"grid_size"``) for a count of 0, above
-        1e7, or more than 2**32 pairs; :class:`DegenerateError`
+        1e7, or more than 2**32 pairs, (``"too_small"``) when poses 1 and 2
+        nearly coincide (the range of crank rotations between them, the
+        map's parameter, is below 2e-6 rad); :class:`DegenerateError`
         (``"not_parametrizable"``) when the poses have no compatibility
-        linkage."""
+        linkage, (``"all_translations"``) when the four poses have one
+        angle."""
     def line_to_conic(self, point: Point, direction: Point) -> Conic:
         """Three poses only: the exact image in the center-point plane of a
         line of the circle-point plane: a conic through the three poles."""
@@ -978,7 +1015,7 @@ class Filemon:
     @overload
     def branch_map(
         self,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         /,
         *,
         method: Method = "conic",
@@ -988,7 +1025,7 @@ class Filemon:
         """Classify every candidate driving center point of a grid.
 
         ``grid`` is a :class:`Grid`, or its six numbers ``xmin, xmax, ymin,
-        ymax, nx, ny``; ``method`` (``"conic"``, ``"direct"`` or
+        ymax, nx, ny`` as a tuple or one by one; ``method`` (``"conic"``, ``"direct"`` or
         ``"simulate"``, as :meth:`is_branch_free`) may follow them
         positionally. The result has shape ``(ny, nx)``, row ``j`` for
         ``y_j``, True where strictly branch-free. Points on a curve, at a
@@ -1008,7 +1045,7 @@ class Filemon:
     @overload
     def branch_map(
         self,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         method: Method,
         /,
         *,
@@ -1048,7 +1085,7 @@ class Filemon:
     @overload
     def margin_map(
         self,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         /,
         *,
         out: Optional[npt.NDArray[np.float32]] = None,
@@ -1077,7 +1114,7 @@ class Filemon:
     @overload
     def solution_map(
         self,
-        grid: Grid,
+        grid: Union[Grid, GridTuple],
         /,
         *,
         limits: Optional[DesignLimits] = None,
@@ -1107,8 +1144,11 @@ class Filemon:
         ``"rocker"``), not both. The constraints: the fixed pivot inside
         ``base_plate`` (a simple polygon), and the moving links, as capsules
         ``link_width`` wide, clear of ``obstacles`` (convex polygons) at
-        ``travel_samples`` input angles of the travel. The GIL is released,
-        ``progress`` and Ctrl-C as in :meth:`branch_map`."""
+        ``travel_samples`` input angles of the travel; each polygon has at
+        most 4096 vertices (``cause == "polygon"``, ``problem == "too many
+        vertices"`` beyond). The GIL is released, ``progress`` and Ctrl-C as
+        in :meth:`branch_map` (a linkage's clearance test checks for Ctrl-C
+        too)."""
     @overload
     def solution_map(
         self,
@@ -1203,6 +1243,128 @@ class SynthesizedFourBar:
         :class:`InvalidInputError` for fewer than 2 samples."""
     def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
         """``(x, y, angle)`` of the task's coupler point when driven to ``theta2``."""
+    # Driving it from a motor by an added dyad (the Watt II six-bar).
+    def drive_map(
+        self,
+        *grid: Any,
+        attachment: Optional[Point] = None,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        progress: Optional[Progress] = None,
+    ) -> DriveMap:
+        """The drive map: for every candidate crank pivot ``D0`` on the grid
+        (a :class:`Grid` or its six numbers), the crank-rocker ``D0 D E A0``
+        whose rocker ``A0 E`` swings exactly over the input's travel from the
+        first pose to the last, extended by ``swing_margin_deg`` at each end
+        (``E``, the ``attachment``, is rigid with the input link; default:
+        the input joint ``A`` itself). Each sample is exact (closed form): a
+        drive exists where the line through ``A0`` and ``D0`` misses ``E``'s
+        swing; its columns are the minimum transmission angle of both loops
+        over a full crank turn, the drive's own, the time ratio, the
+        six-bar's link ratio and size ratio, and ``acceptable`` under the
+        limits (transmission, link ratio), ``max_time_ratio`` and the
+        constraints (``D0`` on ``base_plate``; the moving links clear of
+        ``obstacles`` over the whole turn); ``max_time_ratio=None``: no limit. Releases the GIL; ``progress``
+        and Ctrl-C as :meth:`Filemon.solution_map`.
+
+        Raises :class:`DriveError` when no drive can exist (no travel, a
+        travel of 180 degrees or more, margins past a dead position),
+        :class:`DegenerateError` for an attachment on ``A0``,
+        :class:`InvalidInputError` for bad limits, options or constraints."""
+    def drive(
+        self,
+        drive_pivot: Point,
+        attachment: Optional[Point] = None,
+        *,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+    ) -> Drive:
+        """The drive with its crank pivot at ``drive_pivot`` (one sample of
+        :meth:`drive_map`); :class:`DriveError` (``"not_a_crank_rocker"``)
+        where there is none."""
+    def classic_drive(
+        self,
+        attachment: Optional[Point] = None,
+        *,
+        beyond_first: bool = True,
+        drive_transmission_deg: Optional[float] = None,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+    ) -> Drive:
+        """The closed-form drive of time ratio 1 (Norton's construction,
+        Brodell and Soni's equations): the crank pivot on the line through
+        ``E``'s two end positions, beyond the first pose's end
+        (``beyond_first``) or the last's, at the distance that gives the
+        drive loop the transmission angle ``drive_transmission_deg`` over a
+        full turn (default: halfway between the limit and ``90 - swing/2``,
+        the best a time-ratio-1 drive reaches, at infinite size). Its figures
+        are the drive map's sample there."""
+    def drive_search(
+        self,
+        *,
+        ratios: Optional[Sequence[float]] = None,
+        angles_deg: Optional[Sequence[float]] = None,
+        reach: float = 4.0,
+        samples: int = 96,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        rank_by: RankBy = "balanced",
+        progress: Optional[Progress] = None,
+    ) -> list[Drive]:
+        """Searches attachments and crank pivots: ``E`` at ``ratio * |A - A0|``
+        from ``A0``, turned ``angle`` from the input link (along it at 0,
+        behind ``A0`` at 180), for every ratio (default 0.5, 1, 1.5, 2) and
+        angle (default every 30 degrees); for each, the drive map of
+        ``samples`` x ``samples`` crank pivots over the square of half-width
+        ``reach * |E - A0|`` about ``A0``. Returns the best acceptable drive
+        of each attachment that has one, best first by ``rank_by``
+        (``"balanced"``, ``"transmission"`` or ``"compact"``)."""
+    def best_drive(
+        self,
+        *,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        rank_by: RankBy = "balanced",
+        progress: Optional[Progress] = None,
+    ) -> Drive:
+        """The best drive of :meth:`drive_search` with its defaults: a
+        motor for this linkage (what ``burmester.design(..., input="motor")``
+        asks for a linkage whose input swings). The limits' ``input``
+        requirement does not apply: a drive's crank always turns fully.
+        Raises :class:`DriveError` saying why there is none
+        (``"no_acceptable_drive"`` with the best transmission angle found,
+        or why no drive can exist)."""
     def _repr_png_(self) -> Optional[bytes]:
         """The picture Jupyter shows (see :mod:`burmester._display`): PNG
         bytes, or None when matplotlib is not installed."""
@@ -1221,8 +1383,12 @@ class DesignLimits:
     ``max_link_ratio``: the largest ratio of the longest to the shortest
     link, at least 1 (``math.inf``: no limit); ``input``: ``"any"``,
     ``"crank"`` (the driving link must turn fully) or ``"rocker"`` (it must
-    not). Raises :class:`InvalidInputError` (``cause == "outside_range"``,
-    with ``name``, ``value``, ``min``, ``max``) for a limit out of range.
+    not); ``max_size_ratio``: the largest linkage relative to the task (its
+    size, the total length of its members, over :attr:`Task.span`), at
+    least 1 (default ``math.inf``: no limit); ``max_link_length``: the
+    longest link in the task's units, above 0 (default ``math.inf``).
+    Raises :class:`InvalidInputError` (``cause == "outside_range"``, with
+    ``name``, ``value``, ``min``, ``max``) for a limit out of range.
     """
 
     def __new__(
@@ -1230,6 +1396,8 @@ class DesignLimits:
         min_transmission_deg: float = 30.0,
         max_link_ratio: float = 10.0,
         input: InputRequirement = "any",
+        max_size_ratio: float = ...,
+        max_link_length: float = ...,
     ) -> DesignLimits: ...
     @property
     def min_transmission_deg(self) -> float:
@@ -1240,8 +1408,14 @@ class DesignLimits:
     @property
     def input(self) -> InputRequirement:
         """Which input the design requires."""
+    @property
+    def max_size_ratio(self) -> float:
+        """The largest acceptable size ratio (``math.inf``: no limit)."""
+    @property
+    def max_link_length(self) -> float:
+        """The longest acceptable link, task units (``math.inf``: no limit)."""
     def __eq__(self, other: object, /) -> bool: ...
-    def __getnewargs__(self) -> Tuple[float, float, str]: ...
+    def __getnewargs__(self) -> Tuple[float, float, str, float, float]: ...
 
 @final
 class Pivot:
@@ -1393,7 +1567,11 @@ class SolutionMap:
 
         Scores within 1e-9 go to the smaller size ratio, then the larger margin. Candidates closer than
         ``min_separation`` (default: 2% of the viewport's diagonal) to a
-        better one are skipped, so the list offers distinct options."""
+        better one are skipped, so the list offers distinct options.
+
+        The candidates are selected, not sorted (``O(n log k)`` for ``n``
+        samples; the Pareto front sorts them); a large ``k`` or map releases
+        the GIL and Ctrl-C raises :class:`KeyboardInterrupt`."""
     def pareto_front(self) -> list[Pivot]:
         """Every acceptable candidate on the Pareto front of the minimum
         transmission angle (larger is better) and the size ratio (smaller is
@@ -1536,10 +1714,12 @@ class PairMap:
     @property
     def driving_dyads(self) -> list[Optional[CurveDyad]]:
         """The driving dyad of each column (its ``beta2`` and ``branch`` give
-        its parameter); ``None`` where it is at infinity."""
+        its parameter); ``None`` where it is at infinity, or where
+        :meth:`Task.four_bar` would refuse it (a sample of an ill-conditioned
+        task that misses the poses by more than the dyad tolerance)."""
     @property
     def driven_dyads(self) -> list[Optional[CurveDyad]]:
-        """The driven dyad of each row; ``None`` where it is at infinity."""
+        """The driven dyad of each row; ``None`` as for :attr:`driving_dyads`."""
     @property
     def task(self) -> Task:
         """The task."""
@@ -1548,7 +1728,8 @@ class PairMap:
         """The limits behind :attr:`acceptable`."""
     def linkage(self, j: int, i: int) -> SynthesizedFourBar:
         """The linkage of pair ``[j, i]`` (driven ``j``, driving ``i``):
-        ``task.four_bar`` of the two dyads."""
+        ``task.four_bar`` of the two dyads. Raises :class:`InvalidInputError`
+        (``cause == "grid_index"``) for an index outside the map, naming it."""
     def margins(self) -> FloatArray:
         """The signed margin of every pair, shape :attr:`shape`: the distance
         in the parameter plane (radians of crank rotation) to the nearest
@@ -1561,11 +1742,16 @@ class PairMap:
         rankings of :meth:`SolutionMap.best_pivots` (ties to the smaller
         linkage, then the larger margin of :meth:`margins`). Pairs closer
         than ``min_separation`` in the parameter plane (default: 2% of its
-        diagonal) to a better one are skipped."""
+        diagonal) to a better one are skipped. Selected in ``O(n log k)``,
+        Ctrl-C as :meth:`SolutionMap.best_pivots`."""
     def pareto_front(self) -> list[Pair]:
         """Every acceptable pair on the Pareto front of the minimum
         transmission angle and the size ratio, from the most compact to the
         best transmission."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (see :mod:`burmester._display`,
+        :func:`burmester.plot.pair_map`): PNG bytes, or None when matplotlib
+        is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
@@ -1596,6 +1782,8 @@ def _atlas_tile(
     obstacles: Optional[Sequence[Sequence[Point]]] = None,
     link_width: float = 0.0,
     travel_samples: int = 64,
+    rank_by: RankBy = "balanced",
+    envelope: Optional[Sequence[Point]] = None,
     threads: Optional[int] = None,
     progress: Optional[Progress] = None,
 ) -> dict[str, npt.NDArray[Any]]:
@@ -1603,5 +1791,631 @@ def _atlas_tile(
     grid, as arrays of shape ``(rows, nx)`` (``best_driving``,
     ``best_index``: ``(rows, nx, 2)``): ``valid``, ``count``,
     ``branch_free``, ``best_transmission_rad``, ``best_link_ratio``,
-    ``best_margin``, ``best_driving``, ``best_index``; on ``threads`` rayon
-    threads (default: all cores). See :func:`burmester.pivot_atlas`."""
+    ``best_margin``, ``best_size_ratio``, ``best_score``, ``best_driving``,
+    ``best_index``, each cell's best driving pivot by ``rank_by`` (a ranking
+    with a score); on ``threads`` rayon threads (default: all cores). See
+    :func:`burmester.pivot_atlas`."""
+
+# ---------------------------------------------------------------------------
+# The design search (the public API is burmester.design)
+
+FoundBy = Literal["pivots", "parameters", "burmester"]
+LimitName = Literal[
+    "branch_defect", "order", "transmission", "link_ratio", "input", "size_ratio",
+    "link_length", "pivot_region", "obstacles", "envelope",
+]
+
+@final
+class Space:
+    """The space a design must fit in: where both fixed pivots may go
+    (``pivot_box=(xmin, xmax, ymin, ymax)`` or a simple polygon
+    ``pivot_polygon=[(x, y), ...]``; neither: anywhere), convex
+    ``obstacles`` the moving links (capsules ``link_width`` wide) must clear
+    over the whole travel, and an ``envelope`` (a simple polygon) the moving
+    links and the coupler triangle with the coupler point must stay inside
+    over the whole travel (it must contain every pose). Both are checked
+    exactly over the travel (``travel_samples`` starting samples, then
+    halving with a certified bound). The largest linkage is a limit:
+    :attr:`DesignLimits.max_size_ratio`, :attr:`DesignLimits.max_link_length`.
+
+    Raises :class:`InvalidInputError` naming the field: an inverted or
+    empty box (``"pivot_box xmax"``), a polygon that is not simple
+    (``"pivot_polygon"``, ``"envelope"``), an obstacle without an area,
+    non-finite numbers."""
+
+    def __new__(
+        cls,
+        pivot_box: Optional[Extent] = None,
+        pivot_polygon: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        envelope: Optional[Sequence[Point]] = None,
+        travel_samples: int = 64,
+    ) -> Space: ...
+    @property
+    def region(self) -> Literal["anywhere", "box", "polygon"]:
+        """What bounds the pivots."""
+    @property
+    def pivot_box(self) -> Optional[Extent]:
+        """The pivot box, or None."""
+    @property
+    def pivot_polygon(self) -> Optional[list[Point]]:
+        """The pivot polygon, or None."""
+    @property
+    def obstacles(self) -> list[list[Point]]:
+        """The obstacles."""
+    @property
+    def link_width(self) -> float:
+        """The moving links' width."""
+    @property
+    def envelope(self) -> Optional[list[Point]]:
+        """The envelope, or None."""
+    @property
+    def travel_samples(self) -> int:
+        """Where the motion's checks start along the travel."""
+    def contains_pivot(self, p: Point) -> bool:
+        """Whether a fixed pivot may go at ``p``."""
+    def search_box(self, task: Task, limits: Optional[DesignLimits]) -> Extent:
+        """The box the three-pose coarse pass samples pivots in: the
+        region's bounds, or three task sizes around the poses, cut by the
+        size limit's reach."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs__(
+        self,
+    ) -> Tuple[Optional[Extent], Optional[list[Point]], list[list[Point]], float, Optional[list[Point]], int]: ...
+
+@final
+class Design:
+    """One answer of :func:`burmester.design`: a linkage that is
+    branch-free, carries the coupler through the poses in order on one
+    circuit, meets the limits and fits the space, judged on its exact
+    figures."""
+
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The linkage (its driving dyad drives)."""
+    @property
+    def figures(self) -> LinkageFigures:
+        """``linkage.figures``."""
+    @property
+    def score(self) -> float:
+        """Its score by the ranking (exact figures)."""
+    @property
+    def size_ratio(self) -> float:
+        """Its size over the task's."""
+    @property
+    def ranked_by(self) -> RankBy:
+        """What ranked it."""
+    @property
+    def driving_pivot(self) -> Point:
+        """The driving crank's fixed pivot ``A0``."""
+    @property
+    def driven_pivot(self) -> Point:
+        """The driven crank's fixed pivot ``C0``."""
+    @property
+    def found_by(self) -> FoundBy:
+        """What ``coarse`` and ``refined`` hold: the fixed pivots
+        ``(A0, C0)`` (three poses), the curve parameters ``(s_driving,
+        s_driven)`` (four) or the Burmester points' indices (five)."""
+    @property
+    def coarse(self) -> Any:
+        """Where the coarse pass found it."""
+    @property
+    def refined(self) -> Any:
+        """Where the refinement took it."""
+    @property
+    def coarse_score(self) -> float:
+        """The coarse sample's score."""
+    @property
+    def evaluations(self) -> int:
+        """Linkages its refinement judged."""
+    @staticmethod
+    def _from_state(
+        task: Task,
+        driving: Tuple[Point, Point],
+        driven: Tuple[Point, Point],
+        score: float,
+        size_ratio: float,
+        ranked_by: str,
+        kind: str,
+        coarse: Sequence[float],
+        refined: Sequence[float],
+        coarse_score: float,
+        evaluations: int,
+    ) -> Design:
+        """Rebuilds a design from its state (for pickling)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """The linkage's picture for Jupyter, or None without matplotlib."""
+
+@final
+class NearMiss:
+    """A candidate with a feasible motion that misses limits (listed when
+    nothing fits): ``shortfall`` is its worst relative shortfall."""
+
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The linkage."""
+    @property
+    def figures(self) -> LinkageFigures:
+        """``linkage.figures``."""
+    @property
+    def size_ratio(self) -> float:
+        """Its size over the task's."""
+    @property
+    def misses(self) -> list[LimitName]:
+        """The limits it misses."""
+    @property
+    def shortfall(self) -> float:
+        """How far it misses them (0 would be acceptable)."""
+    @staticmethod
+    def _from_state(
+        task: Task,
+        driving: Tuple[Point, Point],
+        driven: Tuple[Point, Point],
+        size_ratio: float,
+        misses: Sequence[str],
+        shortfall: float,
+    ) -> NearMiss:
+        """Rebuilds a near miss from its state (for pickling)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+
+@final
+class DesignReport:
+    """What :func:`burmester.design` found: a sequence of :class:`Design`,
+    best first and distinct (``len``, indexing, iteration), with the limits,
+    space and ranking it ran under. Without designs, ``rejections`` says how
+    many census candidates failed each limit (the most first) and
+    ``near_misses`` the nearest misses."""
+
+    @property
+    def task(self) -> Task:
+        """The task."""
+    @property
+    def designs(self) -> list[Design]:
+        """The designs, best first."""
+    @property
+    def near_misses(self) -> list[NearMiss]:
+        """When nothing fits: the nearest misses, nearest first."""
+    @property
+    def rejections(self) -> list[Tuple[LimitName, int]]:
+        """When nothing fits: census candidates failing each limit."""
+    @property
+    def main_rejection(self) -> Optional[LimitName]:
+        """The limit that rejected the most census candidates."""
+    @property
+    def census(self) -> int:
+        """Candidates the census judged (0 when designs were found)."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits used."""
+    @property
+    def space(self) -> Space:
+        """The space used."""
+    @property
+    def rank_by(self) -> RankBy:
+        """The ranking used."""
+    @property
+    def min_separation(self) -> float:
+        """The least distance between two designs' pivots."""
+    @property
+    def search_box(self) -> Optional[Extent]:
+        """Three poses: the coarse pass's box."""
+    @property
+    def coarse_candidates(self) -> int:
+        """Candidates of the coarse pass."""
+    @property
+    def coarse_acceptable(self) -> int:
+        """Of them acceptable."""
+    @property
+    def evaluations(self) -> int:
+        """Linkages the refinements judged."""
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: int, /) -> Design: ...
+    def __iter__(self) -> Iterator[Design]: ...
+    @staticmethod
+    def _from_state(
+        task: Task,
+        designs: Sequence[Design],
+        limits: DesignLimits,
+        space: Space,
+        rank_by: str,
+        min_separation: float,
+        search_box: Optional[Extent],
+        counts: Tuple[int, int, int, int],
+        rejections: Sequence[Tuple[str, int]],
+        near_misses: Sequence[NearMiss],
+    ) -> DesignReport:
+        """Rebuilds a report from its state (for pickling)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+
+def _design(
+    task: Task,
+    *,
+    space: Optional[Space] = None,
+    limits: Optional[DesignLimits] = None,
+    rank_by: RankBy = "balanced",
+    top: int = ...,
+    min_separation: Optional[float] = None,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
+    progress: Optional[Progress] = None,
+) -> DesignReport:
+    """The design search in this process (see :func:`burmester.design`,
+    whose defaults these keywords share: top 5, coarse_driven 12,
+    coarse_driving 48, coarse_pairs 120, starts 48, max_iterations 3000)."""
+
+def _design_plan(
+    task: Task,
+    *,
+    space: Optional[Space] = None,
+    limits: Optional[DesignLimits] = None,
+    rank_by: RankBy = "balanced",
+    top: int = ...,
+    min_separation: Optional[float] = None,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
+    progress: Optional[Progress] = None,
+) -> dict[str, Any]:
+    """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
+    ``atlas`` keywords of :func:`_atlas_tile`."""
+
+def _design_from_atlas(
+    task: Task,
+    arrays: dict[str, Any],
+    *,
+    space: Optional[Space] = None,
+    limits: Optional[DesignLimits] = None,
+    rank_by: RankBy = "balanced",
+    top: int = ...,
+    min_separation: Optional[float] = None,
+    coarse_driven: int = ...,
+    coarse_driving: int = ...,
+    coarse_pairs: int = ...,
+    starts: int = ...,
+    max_iterations: int = ...,
+    progress: Optional[Progress] = None,
+) -> DesignReport:
+    """The refinement of a three-pose coarse pass computed elsewhere
+    (``arrays``: :func:`_atlas_tile`'s arrays over the plan's driven grid)."""
+
+# ---------------------------------------------------------------------------
+# A motor for a linkage whose input swings: the Watt II six-bar
+
+@final
+class SixBar:
+    """A Watt II six-bar: a drive four-bar ``D0 D E A0`` (the motor's crank
+    ``D0 D``, the drive coupler ``D E``, the rocker ``A0 E``) whose rocker is
+    rigid with the input link ``A0 A`` of a motion four-bar ``A0 A C C0``
+    (coupler ``A C`` carrying the coupler point ``P``, rocker ``C0 C``).
+
+    Built from where its joints are in one position (keywords only: the
+    letters name the joints); the lengths, each loop's assembly mode and the
+    angle of the ternary link ``A0 A E`` are read from them. ``p`` defaults
+    to ``C``. Raises :class:`DegenerateError` (``"zero_length_link"``) for
+    two joints of a link that coincide, :class:`DriveError`
+    (``"toggle_joints"``) for a loop at a toggle there.
+
+    The crank angle ``phi`` is absolute (the direction of ``D - D0``).
+    Position analysis solves the drive loop at ``phi`` and then the motion
+    loop at ``theta2 = psi - delta`` (``psi = arg(E - A0)``), both by
+    :meth:`FourBar.solve` in their own modes."""
+
+    def __new__(
+        cls, *, d0: Point, d: Point, e: Point, a0: Point, a: Point, c: Point, c0: Point,
+        p: Optional[Point] = None,
+    ) -> SixBar: ...
+    @staticmethod
+    def _from_parts(
+        drive: FourBar, motion: FourBar, attachment_angle: float, drive_mode: Mode,
+        motion_mode: Mode, coupler_point: Point, coupler_angle_offset: float,
+    ) -> SixBar:
+        """Rebuilds a six-bar from its two loops (for pickling)."""
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    @property
+    def drive(self) -> FourBar:
+        """The drive loop (input pivot ``D0``, output pivot ``A0``)."""
+    @property
+    def motion(self) -> FourBar:
+        """The motion loop (input pivot ``A0``, output pivot ``C0``)."""
+    @property
+    def drive_mode(self) -> Mode:
+        """The drive loop's assembly mode."""
+    @property
+    def motion_mode(self) -> Mode:
+        """The motion loop's assembly mode."""
+    @property
+    def attachment_angle(self) -> float:
+        """``delta = arg(E - A0) - arg(A - A0)``, radians."""
+    @property
+    def coupler_point(self) -> Point:
+        """The coupler point in the coupler's frame (origin ``A``, x toward ``C``)."""
+    @property
+    def coupler_angle_offset(self) -> float:
+        """The pose angle minus the coupler angle."""
+    @property
+    def drive_pivot(self) -> Point:
+        """``D0``, the motor's pivot."""
+    @property
+    def lengths(self) -> list[float]:
+        """The eight links: drive ground ``|A0 D0|``, crank, drive coupler,
+        rocker ``|A0 E|``, input ``|A0 A|``, coupler, output rocker, ground
+        ``|A0 C0|``."""
+    @property
+    def attachment_side(self) -> float:
+        """``|E - A|``, the third side of the ternary input link (0 when
+        ``E`` is ``A``)."""
+    @property
+    def link_ratio(self) -> float:
+        """Longest over shortest of the eight links."""
+    @property
+    def size(self) -> float:
+        """The total length of the members (the links, ``|E - A|`` and the
+        coupler triangle's sides to ``P``)."""
+    @property
+    def drive_grashof(self) -> GrashofType:
+        """The drive loop's Grashof type (``"crank-rocker"`` for a motor drive)."""
+    @property
+    def crank_turns_fully(self) -> bool:
+        """The drive is a crank-rocker and the motion loop's input stays
+        strictly inside its input range over the swing: the motor turns the
+        crank round and round, neither loop toggling."""
+    @property
+    def limit_positions(self) -> Optional[list[Tuple[float, float, float, bool]]]:
+        """The two limit positions (crank and drive coupler collinear, where
+        the input reverses), extended first: ``(crank_angle, rocker_angle,
+        input_angle, extended)``; None unless the drive is a crank-rocker."""
+    @property
+    def swing(self) -> Optional[Tuple[float, float]]:
+        """``(start, end)`` of the motion input's swing, counter-clockwise;
+        None unless the drive is a crank-rocker."""
+    @property
+    def stroke_angle(self) -> Optional[float]:
+        """The crank's turn from the extended limit position to the folded one."""
+    @property
+    def time_ratio(self) -> Optional[float]:
+        """The slower stroke over the faster at a constant crank speed (at least 1)."""
+    @property
+    def min_transmission_deg(self) -> Optional[Tuple[float, float]]:
+        """``(drive, motion)``: each loop's smallest transmission angle over
+        a full crank turn, degrees (exact); None unless the crank turns fully."""
+    @property
+    def dead_positions(self) -> list[float]:
+        """Crank angles where a loop toggles (empty when the crank turns fully)."""
+    def solve(self, phi: float) -> Tuple[float, float, float, float]:
+        """``(psi, theta2, theta3, theta4)`` at crank angle ``phi``: the
+        rocker ``A0 E``, the motion loop's input, coupler and rocker angles.
+        Raises :class:`AssemblyError` where a loop does not close."""
+    def transmission_angles(self, phi: float) -> Tuple[float, float]:
+        """``(drive, motion)`` transmission angles at ``phi``, radians in [0, pi/2]."""
+    def toggle(self, phi: float) -> bool:
+        """Whether a loop is at a toggle at ``phi``."""
+    def joints(self, phi: float) -> list[Point]:
+        """``[D0, D, E, A0, A, C, C0, P]`` at crank angle ``phi``."""
+    def pose_at(self, phi: float) -> Pose:
+        """``(x, y, angle)`` of the coupler point at crank angle ``phi``."""
+    def coupler_path(self, phis: ArrayLike) -> Tuple[FloatArray, FloatArray, BoolArray]:
+        """The coupler point at each crank angle: ``(xs, ys, valid)`` of the
+        input's shape (NaN and False where a loop does not close)."""
+    def crank_angles(self, start: float = 0.0, samples: int = 360) -> list[float]:
+        """``samples`` crank angles over one turn from ``start`` (2 to 2^20)."""
+    def crank_angles_for_input(self, theta2: float) -> list[float]:
+        """The crank angles (0, 1 or 2, one per stroke) at which the motion
+        loop's input is ``theta2``."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (:func:`burmester.plot.sixbar`)."""
+
+@final
+class Drive:
+    """A drive for a linkage: the six-bar, the crank angles at the poses and
+    what a designer checks (from :meth:`SynthesizedFourBar.best_drive`,
+    :meth:`DriveMap.best_drives`, :meth:`SynthesizedFourBar.drive`, ...)."""
+
+    @staticmethod
+    def _from_state(
+        linkage: SynthesizedFourBar, drive_pivot: Point, attachment: Point, limits: DesignLimits,
+        options: Tuple[float, float],
+        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        index: Optional[Tuple[int, int]], margin: float, score: float, ranked_by: Optional[str],
+    ) -> Drive:
+        """Rebuilds a drive from its state (for pickling)."""
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    @property
+    def sixbar(self) -> SixBar:
+        """The six-bar: the drive loop and the linkage as its motion loop."""
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The linkage driven."""
+    @property
+    def task(self) -> Task:
+        """The linkage's task."""
+    @property
+    def drive_pivot(self) -> Point:
+        """``D0``, the motor's crank pivot."""
+    @property
+    def attachment(self) -> Point:
+        """``E`` where it is at pose 1."""
+    @property
+    def pose_crank_angles(self) -> list[float]:
+        """The crank angle at each pose on the working stroke, from its start
+        in the motor's direction (monotone, unwrapped)."""
+    @property
+    def stroke_start(self) -> float:
+        """The crank angle where the working stroke starts (a limit position)."""
+    @property
+    def direction(self) -> Direction:
+        """The motor's direction: the one that makes the working stroke
+        (first pose to last) the slower."""
+    @property
+    def acceptable(self) -> bool:
+        """It meets the limits, the time ratio and the constraints it was
+        found under."""
+    @property
+    def index(self) -> Optional[Tuple[int, int]]:
+        """Its sample ``(j, i)`` in a drive map, if it came from one."""
+    @property
+    def margin(self) -> float:
+        """Its distance to the nearest map sample without a drive (NaN
+        unless it came from a map)."""
+    @property
+    def score(self) -> float:
+        """Its score by the ranking that chose it (NaN otherwise)."""
+    @property
+    def ranked_by(self) -> Optional[RankBy]:
+        """The ranking that chose it."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits it was judged under."""
+    @property
+    def swing_margin_deg(self) -> float:
+        """The swing margin at each end, degrees."""
+    @property
+    def min_transmission_deg(self) -> float:
+        """The smaller of both loops' minimum transmission angles over a full
+        crank turn, degrees."""
+    @property
+    def drive_transmission_deg(self) -> float:
+        """The drive loop's minimum over a full turn, degrees."""
+    @property
+    def motion_transmission_deg(self) -> float:
+        """The motion loop's minimum over the swing, degrees."""
+    @property
+    def time_ratio(self) -> float:
+        """The working stroke's time over the return's (at least 1)."""
+    @property
+    def link_ratio(self) -> float:
+        """The six-bar's longest over shortest link."""
+    @property
+    def size_ratio(self) -> float:
+        """The six-bar's size over the task's span."""
+    @property
+    def swing(self) -> Tuple[float, float]:
+        """The motion input's angle at the start and the end of the working
+        stroke (the travel extended by the margins)."""
+    @property
+    def stroke(self) -> float:
+        """The crank's turn over the working stroke, radians (pi at time ratio 1)."""
+    def turn_angles(self, samples: int = 120) -> list[float]:
+        """``samples`` crank angles over one turn from the working stroke's
+        start in the motor's direction."""
+    def pose_at(self, phi: float) -> Pose:
+        """``(x, y, angle)`` of the coupler point at crank angle ``phi``."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (:func:`burmester.plot.sixbar`)."""
+
+@final
+class DriveMap:
+    """A drive map (from :meth:`SynthesizedFourBar.drive_map`): one read-only
+    NumPy array per column, of shape ``(ny, nx)``, over candidate crank
+    pivots ``D0``."""
+
+    columns: list[str]
+    """The names of the columns, in order."""
+    @property
+    def valid(self) -> BoolArray:
+        """A drive exists: a crank-rocker whose rocker swings exactly over
+        the travel with its margins, the six-bar turning fully."""
+    @property
+    def min_transmission_rad(self) -> npt.NDArray[np.float32]:
+        """The smaller of both loops' minimum transmission angles over a
+        full crank turn, **radians**; NaN where there is no drive."""
+    @property
+    def drive_transmission_rad(self) -> npt.NDArray[np.float32]:
+        """The drive loop's own minimum over a full turn, radians."""
+    @property
+    def time_ratio(self) -> npt.NDArray[np.float32]:
+        """The slower stroke over the faster (at least 1)."""
+    @property
+    def link_ratio(self) -> npt.NDArray[np.float32]:
+        """The six-bar's longest over shortest link."""
+    @property
+    def size_ratio(self) -> npt.NDArray[np.float32]:
+        """The six-bar's size over the task's span."""
+    @property
+    def acceptable(self) -> BoolArray:
+        """A drive within the limits, the time ratio and the constraints."""
+    @property
+    def grid(self) -> Grid:
+        """The grid of candidate crank pivots."""
+    @property
+    def extent(self) -> Extent:
+        """``(xmin, xmax, ymin, ymax)``."""
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """``(ny, nx)``."""
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The linkage driven."""
+    @property
+    def attachment(self) -> Point:
+        """``E`` at pose 1."""
+    @property
+    def attachment_ends(self) -> Tuple[Point, Point]:
+        """Where ``E`` is at the two ends of the swing, the first pose's first."""
+    @property
+    def swing(self) -> Tuple[float, float]:
+        """The motion input's angle at the two ends of the swing."""
+    @property
+    def motion_transmission_deg(self) -> float:
+        """The motion loop's minimum transmission angle over the swing (the
+        same for every drive of the map), degrees."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits behind :attr:`acceptable`."""
+    @property
+    def swing_margin_deg(self) -> float:
+        """The swing margin at each end, degrees."""
+    @property
+    def max_time_ratio(self) -> float:
+        """The largest acceptable time ratio."""
+    def point(self, j: int, i: int) -> Point:
+        """The candidate crank pivot of sample ``[j, i]``."""
+    def drive(self, j: int, i: int) -> Drive:
+        """The drive of sample ``[j, i]`` (:class:`DriveError` where there is none)."""
+    def best_drives(
+        self, k: int = 5, min_separation: Optional[float] = None, rank_by: RankBy = "balanced"
+    ) -> list[Drive]:
+        """The ``k`` best drives, best first, by the rankings of
+        :meth:`SolutionMap.best_pivots` over the acceptable samples (``mu``
+        the smaller transmission angle of both loops, ``s`` the six-bar's
+        size ratio, ``r`` its link ratio); ``"margin"`` orders the valid
+        samples by their distance to the nearest sample without a drive."""
+    def pareto_front(self) -> list[Drive]:
+        """The acceptable drives on the Pareto front of transmission and size."""
+    def classic_drive(
+        self, beyond_first: bool = True, drive_transmission_deg: Optional[float] = None
+    ) -> Drive:
+        """The closed-form drive of time ratio 1 in this map's context (see
+        :meth:`SynthesizedFourBar.classic_drive`)."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (:func:`burmester.plot.drive_map`)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_state(
+        linkage: SynthesizedFourBar, attachment: Point, grid: Grid, limits: DesignLimits,
+        options: Tuple[float, float],
+        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        columns: dict[str, Any],
+    ) -> DriveMap:
+        """Rebuilds a map from its state (for pickling)."""
+
+def unit_time_ratio_crank_rocker(
+    rocker: float, swing_deg: float, min_transmission_deg: float
+) -> Tuple[float, float, float, float]:
+    """``(ground, crank, coupler, rocker)`` of the crank-rocker with time
+    ratio 1 whose rocker swings ``swing_deg`` and whose smallest
+    transmission angle over a full turn is ``min_transmission_deg`` (below
+    ``90 - swing_deg / 2``): Norton's construction (*Design of Machinery*,
+    Example 3-1), Brodell and Soni's equations."""

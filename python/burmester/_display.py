@@ -1,6 +1,6 @@
 """Pictures of the objects in Jupyter: the ``_repr_png_`` of ``Task``,
 ``Filemon``, ``FourBar``, ``SynthesizedFourBar``, ``SolutionMap`` (through
-the native classes) and ``PivotAtlas``.
+the native classes), ``PairMap``, ``Cubic`` and ``PivotAtlas``.
 
 Each picture is the object's natural figure from :mod:`burmester.plot`,
 drawn with the Agg renderer on a :class:`matplotlib.figure.Figure` of its
@@ -13,7 +13,12 @@ figures stay as they were) and returned as PNG bytes:
 ``FourBar``           :func:`burmester.plot.four_bar` (default input angle)
 ``SynthesizedFourBar`` :func:`burmester.plot.linkage`: the linkage at the poses
 ``SolutionMap``       :func:`burmester.plot.solution_map`
+``PairMap``           :func:`burmester.plot.pair_map`
+``Cubic``             :func:`cubic`: every component in :func:`cubic_view`
 ``PivotAtlas``        :func:`burmester.plot.atlas`
+``Design``            :func:`burmester.plot.linkage` of its linkage
+``Drive``, ``SixBar`` :func:`burmester.plot.sixbar`
+``DriveMap``          :func:`burmester.plot.drive_map`
 ===================== =============================================
 
 matplotlib is imported when a picture is asked for, not before: ``import
@@ -52,9 +57,48 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
         return lambda ax: plot.linkage(obj, ax=ax)
     if isinstance(obj, burmester.SolutionMap):
         return lambda ax: plot.solution_map(obj, ax=ax)
+    if isinstance(obj, burmester.PairMap):
+        return lambda ax: plot.pair_map(obj, ax=ax)
+    if isinstance(obj, burmester.Cubic):
+        return lambda ax: cubic(obj, ax)
     if isinstance(obj, burmester.PivotAtlas):
         return lambda ax: plot.atlas(obj, ax=ax)
+    if isinstance(obj, burmester.Design):
+        return lambda ax: plot.linkage(obj.linkage, ax=ax)
+    if isinstance(obj, (burmester.Drive, burmester.SixBar)):
+        return lambda ax: plot.sixbar(obj, ax=ax)
+    if isinstance(obj, burmester.DriveMap):
+        return lambda ax: plot.drive_map(obj, ax=ax)
     raise TypeError(f"no picture for a {type(obj).__name__}")
+
+
+#: Half the side of :func:`cubic_view`, in units of the cubic's own scale.
+CUBIC_VIEW_HALF = 4.0
+
+
+def cubic_view(curve: Any) -> Tuple[float, float, float, float]:
+    """The square ``(xmin, xmax, ymin, ymax)`` a cubic is drawn in: the
+    frame it is kept in (for a Burmester curve, about the task: its origin
+    and size, see :meth:`burmester.Cubic.__reduce__`), :data:`CUBIC_VIEW_HALF`
+    of its scale each way."""
+    _, (_, (ox, oy), scale) = curve.__reduce__()
+    h = CUBIC_VIEW_HALF * scale
+    return (ox - h, ox + h, oy - h, oy + h)
+
+
+def cubic(curve: Any, ax: Axes) -> Axes:
+    """Draw every component of a :class:`burmester.Cubic` in
+    :func:`cubic_view` (:meth:`burmester.Cubic.polylines`: exact, none
+    missed), one colour per component."""
+    xmin, xmax, ymin, ymax = view = cubic_view(curve)
+    for k, line in enumerate(curve.polylines(*view)):
+        ax.plot(line[:, 0], line[:, 1], color=f"C{k % 10}", lw=1.5)
+    ax.set_xlim(xmin, xmax)
+    ax.set_ylim(ymin, ymax)
+    ax.set_aspect("equal")
+    kind = "circular cubic" if curve.is_circular else f"curve of degree {curve.degree}"
+    ax.set_title(f"a {kind}")
+    return ax
 
 
 def figure(draw: Callable[[Axes], Any]) -> Figure:

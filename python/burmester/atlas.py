@@ -3,10 +3,11 @@
 For every candidate driven center point ``C0`` on a grid, the three-position
 solution map over candidate driving center points ``A0`` on another grid
 (``task.filemon(C0).solution_map(driving, ...)``), reduced to: the number of
-acceptable driving pivots, the best of them (the largest minimum
-transmission angle over the travel, ties by the margin to the nearest
-branch-defect boundary: exactly ``best_pivots(1)``), its driving center and
-figures, and the branch-free fraction.
+acceptable driving pivots, the best of them by ``rank_by`` (``"balanced"``
+by default, ``"transmission"`` or ``"compact"``; scores within ``1e-9`` tie
+and go to the smaller linkage, then the wider margin to the nearest
+branch-defect boundary: exactly ``best_pivots(1, rank_by=rank_by)``), its
+driving center, figures and score, and the branch-free fraction.
 
 The work is done by the native kernel one tile (rows of driven centers) at
 a time; :func:`pivot_atlas` runs it in this process (rayon threads, the GIL
@@ -35,7 +36,7 @@ Progress = Callable[[int, int], object]
 
 #: The arrays a tile returns, in order.
 _KEYS = ("valid", "count", "branch_free", "best_transmission_rad", "best_link_ratio",
-         "best_margin", "best_driving", "best_index")
+         "best_margin", "best_size_ratio", "best_score", "best_driving", "best_index")
 
 #: Driving-sample evaluations one thread does in about a second (measured:
 #: about 3.8e7 with the default limits in a release build on an AVX2 CPU with
@@ -44,6 +45,27 @@ _KEYS = ("valid", "count", "branch_free", "best_transmission_rad", "best_link_ra
 _SAMPLES_PER_SECOND = 30_000_000
 
 _DASK_MISSING = 'pivot_atlas(client=...) needs Dask: pip install "burmester[dask]"'
+
+#: Seconds a Dask client without workers is given for one to join before
+#: :func:`pivot_atlas` and :func:`burmester.best_pivots_batch` give up (a
+#: cluster without workers would wait for ever).
+DASK_WORKER_TIMEOUT = 30.0
+
+
+def _require_workers(client: Any) -> None:
+    """Return when the client's cluster has a worker; wait up to
+    :data:`DASK_WORKER_TIMEOUT` seconds for one to join, then raise
+    :class:`TimeoutError` saying so."""
+    if client.scheduler_info().get("workers"):
+        return
+    try:
+        client.wait_for_workers(1, timeout=DASK_WORKER_TIMEOUT)
+    except TimeoutError:
+        address = getattr(getattr(client, "scheduler", None), "address", None) or "the scheduler"
+        raise TimeoutError(
+            f"the Dask cluster at {address} has no workers (none joined in {DASK_WORKER_TIMEOUT:g} s), so "
+            "its tasks would wait for ever: start workers (dask worker <address>), or run without client="
+        ) from None
 
 
 def _grid(g: GridArg, what: str) -> Grid:
@@ -77,6 +99,10 @@ class AtlasPair(NamedTuple):
     """``(j, i)`` on the driven grid."""
     driving_index: Tuple[int, int]
     """``(j, i)`` on the driving grid."""
+    score: float = math.nan
+    """Its score by the atlas's ranking (``PivotAtlas.rank_by``)."""
+    size_ratio: float = math.nan
+    """The linkage's size over the task's."""
 
     def linkage(self, task: Task) -> SynthesizedFourBar:
         """The four-bar of this pair for ``task`` (the atlas's task)."""
@@ -99,12 +125,16 @@ class PivotAtlas:
     best_transmission_deg: npt.NDArray[np.float64]
     best_link_ratio: npt.NDArray[np.float64]
     best_margin: npt.NDArray[np.float64]
+    best_size_ratio: npt.NDArray[np.float64]
+    best_score: npt.NDArray[np.float64]
     best_driving: npt.NDArray[np.float64]
     best_index: npt.NDArray[np.int64]
 
     def __init__(self, task: Task, driven: Grid, driving: Grid, options: Dict[str, Any],
                  arrays: Dict[str, npt.NDArray[Any]]) -> None:
         self.task, self.driven, self.driving, self.options = task, driven, driving, dict(options)
+        self.best_size_ratio = arrays["best_size_ratio"]
+        self.best_score = arrays["best_score"]
         self.valid = arrays["valid"]
         self.count = arrays["count"]
         self.branch_free_count = arrays["branch_free"]
@@ -127,9 +157,16 @@ class PivotAtlas:
         """``(ny, nx)`` of the driven grid."""
         return self.driven.shape
 
+    @property
+    def rank_by(self) -> str:
+        """What chose each cell's best driving pivot (``"balanced"``,
+        ``"transmission"`` or ``"compact"``)."""
+        return str(self.options.get("rank_by", "balanced"))
+
     def _arrays(self) -> List[npt.NDArray[Any]]:
         return [self.valid, self.count, self.branch_free_count, self.best_transmission_deg,
-                self.best_link_ratio, self.best_margin, self.best_driving, self.best_index]
+                self.best_link_ratio, self.best_margin, self.best_size_ratio, self.best_score,
+                self.best_driving, self.best_index]
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, PivotAtlas):
@@ -144,16 +181,24 @@ class PivotAtlas:
     __hash__ = None  # type: ignore[assignment]
 
     def best_pairs(self, k: int = 5) -> List[AtlasPair]:
-        """The ``k`` best cells, best first: by the best transmission angle,
-        ties by the margin, then by row and column."""
+        """The ``k`` best cells, best first: by their best pivot's score
+        (:attr:`rank_by`), ties (scores within ``1e-9``, as the maps rank)
+        by the smaller linkage, then the wider margin, then by row and
+        column."""
         if k < 0:
             raise ValueError(f"k must be at least 0, got {k}")
-        js, iis = np.nonzero(~np.isnan(self.best_transmission_deg))
+        js, iis = np.nonzero(~np.isnan(self.best_score))
         if len(js) == 0 or k == 0:
             return []
-        t = self.best_transmission_deg[js, iis]
+        score = self.best_score[js, iis]
+        # Scores within the tie tolerance rank alike: bucket them by runs.
+        by = np.argsort(-score, kind="stable")
+        run = np.zeros(len(score), dtype=np.int64)
+        for n in range(1, len(by)):
+            run[by[n]] = run[by[n - 1]] + int(score[by[n - 1]] - score[by[n]] > 1e-9)
         m = self.best_margin[js, iis]
-        order = np.lexsort((iis, js, -m, -t))[:k]
+        size = self.best_size_ratio[js, iis]
+        order = np.lexsort((iis, js, -m, size, run))[:k]
         out = []
         for o in order:
             j, i = int(js[o]), int(iis[o])
@@ -167,6 +212,8 @@ class PivotAtlas:
                 n_acceptable=int(self.count[j, i]),
                 driven_index=(j, i),
                 driving_index=(dj, di),
+                score=float(self.best_score[j, i]),
+                size_ratio=float(self.best_size_ratio[j, i]),
             ))
         return out
 
@@ -182,15 +229,16 @@ class PivotAtlas:
         top = np.nanmax(self.best_transmission_deg) if n_best else math.nan
         return (f"PivotAtlas(driven={self.driven.nx}x{self.driven.ny}, "
                 f"driving={self.driving.nx}x{self.driving.ny}, valid={int(self.valid.sum())}, "
-                f"with_best={n_best}, best_transmission_deg={top:.6g})")
+                f"with_best={n_best}, best_transmission_deg={top:.6g}, rank_by={self.rank_by!r})")
 
 
 def _options(limits: Optional[DesignLimits], min_transmission_deg: Optional[float],
              max_link_ratio: Optional[float], input: Optional[str],
              base_plate: Optional[Sequence[Tuple[float, float]]],
              obstacles: Optional[Sequence[Sequence[Tuple[float, float]]]],
-             link_width: float, travel_samples: int) -> Dict[str, Any]:
-    opts: Dict[str, Any] = {"link_width": link_width, "travel_samples": travel_samples}
+             link_width: float, travel_samples: int, rank_by: str = "balanced") -> Dict[str, Any]:
+    opts: Dict[str, Any] = {"link_width": link_width, "travel_samples": travel_samples,
+                            "rank_by": rank_by}
     for name, v in (("limits", limits), ("min_transmission_deg", min_transmission_deg),
                     ("max_link_ratio", max_link_ratio), ("input", input)):
         if v is not None:
@@ -223,6 +271,7 @@ def _on_dask(client: Any, task: Task, driven: Grid, driving: Grid, opts: Dict[st
         distributed = importlib.import_module("distributed")
     except ImportError:
         raise ImportError(_DASK_MISSING) from None
+    _require_workers(client)
     workers = client.scheduler_info().get("workers", {})
     host_threads: Dict[str, int] = {}
     for addr, w in workers.items():
@@ -273,6 +322,7 @@ def pivot_atlas(
     obstacles: Optional[Sequence[Sequence[Tuple[float, float]]]] = None,
     link_width: float = 0.0,
     travel_samples: int = 64,
+    rank_by: str = "balanced",
     progress: Optional[Progress] = None,
     tile_rows: Optional[int] = None,
 ) -> PivotAtlas:
@@ -281,22 +331,28 @@ def pivot_atlas(
 
     ``driven`` and ``driving`` are :class:`burmester.Grid` objects or
     ``(xmin, xmax, ymin, ymax, nx, ny)``. The limit keywords are those of
-    :meth:`Filemon.solution_map`. Without ``client`` it runs in this process;
+    :meth:`Filemon.solution_map`; ``rank_by`` chooses each driven center's
+    best driving pivot (``"balanced"``, ``"transmission"`` or
+    ``"compact"``). Without ``client`` it runs in this process;
     with a ``dask.distributed.Client`` it runs as Dask tasks of
     ``tile_rows`` driven rows (default: about a second each), with the same
     result bit for bit. ``progress(done_rows, total_rows)`` is called as it
-    goes. Bad input raises the same errors either way, before any work.
+    goes. Bad input raises the same errors either way, before any work. A
+    client whose cluster has no workers is given
+    :data:`DASK_WORKER_TIMEOUT` seconds for one to join, then
+    :class:`TimeoutError` says so (its tasks would wait for ever).
     """
     dg, vg = _grid(driven, "driven"), _grid(driving, "driving")
     opts = _options(limits, min_transmission_deg, max_link_ratio, input, base_plate, obstacles,
-                    link_width, travel_samples)
+                    link_width, travel_samples, rank_by)
     if client is None:
         rows: Optional[Progress] = None
         if progress is not None:
             cb = progress
-            # The kernel counts driven centers; report rows, as on Dask.
+            # The kernel counts driving rows over all driven centers (a
+            # center's map can take seconds); report driven rows, as on Dask.
             def rows(done: int, total: int) -> object:
-                return cb(done // dg.nx, dg.ny)
+                return cb(done * dg.ny // max(total, 1), dg.ny)
         arrays = dict(_atlas_tile(task, dg, 0, dg.ny, vg, progress=rows, **opts))
     else:
         try:

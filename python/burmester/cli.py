@@ -2,6 +2,7 @@
 
 Commands::
 
+    burmester design [TASK.toml] -o best.png  # the best linkage for the poses (and [space]): both pivots searched
     burmester map [TASK.toml] -o map.png      # the center-point plane (Fig. 10/12)
     burmester map five.toml -o five.png       # four or five poses: the Burmester curve or points
     burmester pivots [TASK.toml] --top 5      # the best driving pivots, as a table (--json)
@@ -11,32 +12,41 @@ Commands::
     burmester atlas [TASK.toml] -o atlas.png  # both pivots at once: the best driving pivot per driven center
     burmester batch A.toml B.toml --top 5     # each task's best pivots, one JSON line per file
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
+    burmester drive [TASK.toml] -o six.gif    # a motor for the best linkage (an added dyad: a six-bar)
     burmester example > task.toml             # a task file to start from
 
 Without a task file, the commands use the built-in example. Without any
 arguments, ``burmester`` prints this help. Bad input exits with status 2 and
 a one-line message saying what to change; a missing optional dependency
 (matplotlib, ezdxf) exits with status 1. No command replaces an existing file
-unless given ``--force``.
+unless given ``--force``, decided when the finished file is moved into place
+(:mod:`burmester._io`): outputs are written whole beside their target, so a
+write error, a full disk or Ctrl-C leaves no partial file and keeps an
+existing one.
 """
 
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import math
 import os
+import signal
 import sys
+import threading
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, Callable, Dict, List, Literal, NoReturn, Optional, Sequence, Tuple
 
 import numpy as np
 
 import burmester
+from burmester import _io
 from burmester import pivots as pv
 from burmester import taskfile
 from burmester._burmester import Grid, Pivot
-from burmester.taskfile import TaskFileError, TaskSpec
+from burmester.taskfile import TaskFileError, TaskSpec, describe_outside, outside_view
+from burmester.units import check_units, format_length
 
 if TYPE_CHECKING:
     from types import ModuleType
@@ -69,32 +79,43 @@ class _Parser(argparse.ArgumentParser):
 
 
 class ProgressBar:
-    """A one-line text progress bar, redrawn in place on a terminal stream.
+    """A progress bar with the share done, the rate and the time left, drawn
+    in place on a terminal stream by tqdm.
 
     It is the ``progress(done, total)`` hook of the core's sweeps
     (:meth:`burmester.Filemon.branch_map`, :meth:`~burmester.Filemon.solution_map`):
     the sweep runs as one call, so its samples are those of a call without
-    a bar, bit for bit.
+    a bar, bit for bit. The bar opens on the first call and closes (ending
+    its line) when all rows are done, or on :meth:`close`.
     """
 
-    def __init__(self, stream: IO[str], label: str, width: int = 30) -> None:
+    def __init__(self, stream: IO[str], label: str, unit: str = "row", mininterval: float = 0.1) -> None:
         self.stream = stream
         self.label = label
-        self.width = width
-        self._shown = -1
+        self.unit = unit
+        self.mininterval = mininterval
+        self._bar: Any = None
 
     def __call__(self, done: int, total: int) -> None:
-        """Show ``done`` of ``total`` rows; a newline ends the bar when all are done."""
-        fraction = min(max(done / total, 0.0), 1.0) if total > 0 else 1.0
-        filled = round(self.width * fraction)
-        percent = round(100 * fraction)
-        if percent == self._shown:
+        """Show ``done`` of ``total`` rows."""
+        if self._bar is None:
+            from tqdm import tqdm
+
+            self._bar = tqdm(total=total, desc=self.label, unit=self.unit, file=self.stream,
+                             leave=True, dynamic_ncols=True, mininterval=self.mininterval)
+        bar = self._bar
+        if bar.disable:  # closed: the sweep is done
             return
-        self._shown = percent
-        bar = "#" * filled + " " * (self.width - filled)
-        end = "\n" if fraction >= 1.0 else ""
-        self.stream.write(f"\r{self.label} [{bar}] {percent:3d}%{end}")
-        self.stream.flush()
+        step = min(max(done, 0), total) - bar.n
+        if step > 0:
+            bar.update(step)
+        if done >= total:
+            bar.close()
+
+    def close(self) -> None:
+        """End the bar's line (an interrupted sweep leaves it open)."""
+        if self._bar is not None:
+            self._bar.close()
 
 
 def progress_for(grid: Grid, label: str, work_per_sample: int = 1) -> Optional[Progress]:
@@ -122,7 +143,33 @@ def _with_grid(spec: TaskSpec, grid: Optional[Sequence[int]]) -> TaskSpec:
             raise UsageError(f"--grid {name} must be from 2 to 20000, got {n}")
     v = spec.view
     view = Grid(v.xmin, v.xmax, v.ymin, v.ymax, nx, ny)
-    return TaskSpec(spec.poses, spec.driven_center, view, spec.limits, spec.source)
+    return dataclasses.replace(spec, view=view)
+
+
+def _with_units(spec: TaskSpec, args: argparse.Namespace) -> TaskSpec:
+    """The task with ``--units`` (any unit name) in place of the task
+    file's ``units``, when given."""
+    given = getattr(args, "units", None)
+    if given is None:
+        return spec
+    try:
+        units = check_units(given, "--units")
+    except burmester.InvalidInputError as e:
+        raise UsageError(str(e)) from None
+    return dataclasses.replace(spec, units=units)
+
+
+def _lengths_in(spec: TaskSpec) -> str:
+    """``", lengths in mm"`` for a task with units; ``""`` without."""
+    return f", lengths in {spec.units}" if spec.units else ""
+
+
+def _outside_note(spec: TaskSpec, points: Sequence[Tuple[str, Optional[Sequence[float]]]]) -> str:
+    """``"; B3 (...) lies outside the view x [..], y [..]"`` for the named
+    points outside the task's view (``""`` when all are in it): what a
+    summary adds so that nothing is silently left out of a picture."""
+    text = describe_outside(outside_view(points, spec.view.extent), spec.view.extent, spec.units)
+    return f"; {text}" if text else ""
 
 
 def _solution_map(spec: TaskSpec, filemon: burmester.Filemon) -> burmester.SolutionMap:
@@ -156,13 +203,29 @@ def _plot_module() -> ModuleType:
     return plot
 
 
-def _save(fig: Any, path: str, dpi: int) -> None:
+def _written(path: str, force: bool, write: Callable[[Path], Any]) -> None:
+    """Write an output by ``write(tmp)`` through :mod:`burmester._io`: whole
+    to a temporary file beside it, moved into place when complete, never
+    replacing an existing file without ``--force`` (decided at the move);
+    on an error or Ctrl-C nothing is left and an existing file is kept."""
+    try:
+        with _io.atomic_path(path, overwrite=force) as tmp:
+            write(tmp)
+    except FileExistsError:
+        raise UsageError(
+            f"{path} exists (it was created while this command ran); give another file name, "
+            "or --force to replace it"
+        ) from None
+    except OSError as e:
+        kept = f"; {path} is unchanged" if Path(path).exists() else ""
+        raise UsageError(f"cannot write {path}: {e.strerror or e}{kept}") from None
+
+
+def _save(fig: Any, path: str, dpi: int, force: bool) -> None:
     import matplotlib.pyplot as plt
 
     try:
-        fig.savefig(path, dpi=dpi, bbox_inches="tight")
-    except OSError as e:
-        raise UsageError(f"cannot write {path}: {e.strerror or e}") from None
+        _written(path, force, lambda tmp: fig.savefig(tmp, dpi=dpi, bbox_inches="tight"))
     finally:
         plt.close(fig)
 
@@ -197,15 +260,14 @@ def _export_module(path: str) -> ModuleType:
     return export
 
 
-def _units(args: argparse.Namespace) -> str:
-    """``--units``: for CAD exports only (default mm); ``--dpi`` refused for them."""
-    if args.units is not None and not _is_cad(args.output):
-        raise UsageError(f"--units is for CAD exports (.dxf, .svg), not {args.output}")
+def _units(args: argparse.Namespace, spec: TaskSpec) -> str:
+    """The unit a CAD export records: the task's (``--units``, else the
+    task file's ``units``), else mm; ``--dpi`` refused for a CAD export."""
     if args.dpi is not None and _is_cad(args.output):
         raise UsageError(
             f"--dpi is for pictures (.png, .pdf, ...); a CAD export ({args.output}) has exact coordinates"
         )
-    return "mm" if args.units is None else str(args.units)
+    return spec.units if spec.units is not None else "mm"
 
 
 #: ``--dpi`` of ``map`` and ``linkage`` when not given.
@@ -216,12 +278,10 @@ def _picture_dpi(args: argparse.Namespace) -> int:
     return DEFAULT_DPI if args.dpi is None else int(args.dpi)
 
 
-def _write_cad(write: Callable[..., Any], out: str, *args: Any, **kwargs: Any) -> None:
-    """Call an export function, turning a file system error into a UsageError."""
-    try:
-        write(*args, **kwargs)
-    except OSError as e:
-        raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
+def _write_cad(write: Callable[..., Any], out: str, force: bool, *args: Any, **kwargs: Any) -> None:
+    """Call an export function with the output ``out`` (among ``args``)
+    through :func:`_written`."""
+    _written(out, force, lambda tmp: write(*(tmp if a is out else a for a in args), **kwargs))
 
 
 def _output(path: str, types: Sequence[str], force: bool) -> str:
@@ -244,6 +304,95 @@ def _output(path: str, types: Sequence[str], force: bool) -> str:
     return path
 
 
+def table(columns: Sequence[Tuple[str, str]], rows: Sequence[Sequence[str]]) -> str:
+    """A text table drawn by rich: ``columns`` are ``(header, justify)``
+    with justify ``"left"`` or ``"right"``, ``rows`` the cells as text.
+    ASCII only, columns apart by ``|``, a rule under the header, as wide as
+    its content (not cut to the terminal: the output is for pipes too),
+    without trailing spaces."""
+    import io
+
+    from rich import box
+    from rich.console import Console
+    from rich.table import Table
+
+    t = Table(box=box.ASCII2, show_edge=False, pad_edge=False, highlight=False)
+    for header, justify in columns:
+        t.add_column(header, justify="right" if justify == "right" else "left", no_wrap=True)
+    for row in rows:
+        t.add_row(*row)
+    buf = io.StringIO()
+    Console(file=buf, width=100_000, color_system=None, highlight=False, emoji=False, markup=False,
+            force_terminal=False, legacy_windows=False).print(t)
+    return "\n".join(line.rstrip() for line in buf.getvalue().splitlines())
+
+
+# ---------------------------------------------------------------------------
+# Memory: what cannot fit is refused before the work
+
+
+#: What a command holds at its peak besides its grid (the interpreter,
+#: NumPy, matplotlib), bytes.
+MEMORY_BASE = 128 * 2**20
+
+#: Peak bytes per grid sample (measured with ``ru_maxrss`` on 1000 x 1000
+#: and 2000 x 2000 grids, rounded up): a picture of the center-point plane
+#: (the branch map and matplotlib's image buffers, about 60), with the
+#: solution map overlaid (about 110), a CAD export (about 30), a solution
+#: map ranked (``pivots``, ``linkage``: about 20).
+MEMORY_PER_SAMPLE = {"picture": 64, "picture+design": 128, "cad": 32, "cad+design": 64, "ranking": 32}
+
+
+def _available_memory() -> Optional[int]:
+    """Bytes this process can still allocate: the memory the system has
+    available (``MemAvailable``) and what an address-space limit leaves,
+    whichever is less; None where neither can be read."""
+    avail: Optional[int] = None
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    avail = int(line.split()[1]) * 1024
+    except (OSError, ValueError):
+        pass
+    try:
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+        if soft != resource.RLIM_INFINITY:
+            used = 0
+            with open("/proc/self/status", encoding="ascii") as fh:
+                for line in fh:
+                    if line.startswith("VmSize:"):
+                        used = int(line.split()[1]) * 1024
+            left = max(0, soft - used)
+            avail = left if avail is None else min(avail, left)
+    except (ImportError, OSError, ValueError):
+        pass
+    return avail
+
+
+def _fmt_bytes(n: float) -> str:
+    return f"{n / 2**30:.1f} GB" if n >= 2**30 else f"{n / 2**20:.0f} MB"
+
+
+def _check_memory(nx: int, ny: int, kind: str, what: str, flag: str) -> None:
+    """Refuse up front a grid of ``nx`` by ``ny`` samples whose work of
+    ``kind`` (:data:`MEMORY_PER_SAMPLE`) cannot fit in the memory left,
+    saying how much it needs and what fits."""
+    per = MEMORY_PER_SAMPLE[kind]
+    need = MEMORY_BASE + nx * ny * per
+    avail = _available_memory()
+    if avail is None or need <= avail:
+        return
+    side = max(2, math.isqrt(max(0, avail - MEMORY_BASE) // per))
+    raise UsageError(
+        f"{what} on {nx} x {ny} samples needs about {_fmt_bytes(need)} of memory ({per} bytes a "
+        f"sample), more than the {_fmt_bytes(avail)} available; use a coarser {flag} (about "
+        f"{side} x {side} fits)"
+    )
+
+
 def _fmt_point(p: Sequence[float]) -> str:
     """``(x, y)`` to three decimals; a coordinate that rounds to zero reads
     0.000, not -0.000."""
@@ -257,10 +406,14 @@ def _fmt_point(p: Sequence[float]) -> str:
 
 def cmd_map(args: argparse.Namespace) -> int:
     """``burmester map``: draw the center-point (or circle-point) plane."""
-    spec = _with_grid(_load(args.task), args.grid)  # the task file's errors first
+    spec = _with_units(_with_grid(_load(args.task), args.grid), args)  # the task file's errors first
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
-    units = _units(args)
+    units = _units(args, spec)
     cad = _is_cad(args.output)
+    if len(spec.poses) == 3:  # the grid is the branch map's (four and five poses trace curves)
+        design = "+design" if args.design or args.pivots > 0 else ""
+        _check_memory(spec.view.nx, spec.view.ny, ("cad" if cad else "picture") + design,
+                      f"drawing {args.output}", "--grid")
     export = _export_module(args.output) if cad else None
     plot = None if cad else _plot_module()
     if len(spec.poses) > 3:
@@ -269,11 +422,12 @@ def cmd_map(args: argparse.Namespace) -> int:
     view = spec.view
     if args.plane == "circle":
         if export is not None:
-            _write_cad(export.plane, args.output, filemon, args.output, plane="circle", units=units)
+            _write_cad(export.plane, args.output, args.force, filemon, args.output, plane="circle",
+                       units=units)
         else:
             assert plot is not None
-            ax = plot.circle_plane(filemon)
-        summary = f"circle-point plane of {spec.source}"
+            ax = plot.circle_plane(filemon, units=spec.units)
+        summary = f"circle-point plane of {spec.source}{_lengths_in(spec)}"
     else:
         smap = _solution_map(spec, filemon) if args.design or args.pivots > 0 else None
         if smap is not None and args.method == "conic":
@@ -291,21 +445,25 @@ def cmd_map(args: argparse.Namespace) -> int:
             ranked, _ = pv.rank(smap, args.pivots, pv.default_spacing(view))
             marks = [p.center for p in ranked]
         if export is not None:
-            _write_cad(export.plane, args.output, filemon, args.output, view, free=free, pivots=marks,
+            _write_cad(export.plane, args.output, args.force, filemon, args.output, view, free=free, pivots=marks,
                        acceptable=acceptable, transmission=transmission, units=units)
         else:
             assert plot is not None
             ax = plot.center_plane(
-                filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission
+                filemon, view, free=free, pivots=marks, acceptable=acceptable, transmission=transmission,
+                units=spec.units,
             )
         summary = (
-            f"center-point plane of {spec.source}: {100 * free.mean():.1f}% of the "
+            f"center-point plane of {spec.source}{_lengths_in(spec)}: {100 * free.mean():.1f}% of the "
             f"{view.nx} x {view.ny} grid is branch-free"
         )
         if smap is not None:
-            summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable"
+            summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable ({pv.describe_limits(spec.limits)})"
+        task = filemon.task
+        summary += _outside_note(spec, [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in task.poles]
+                                 + [("C0", filemon.driven_center)])
     if export is None:
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -320,27 +478,26 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     for flag, given in (("--plane circle", circle and n == 5), ("--design", args.design),
                         ("--pivots", args.pivots > 0)):
         if given:
-            raise UsageError(
-                f"{flag} is for three poses (Filemon's construction){' or four' if circle else ''}; "
-                f"{spec.source} has {n} poses"
-            )
-    task = spec.task()
+            what = ("three poses (Filemon's construction) or four (the circle-point curve)"
+                    if flag == "--plane circle" else "three poses (Filemon's construction)")
+            raise UsageError(f"{flag} is for {what}; {spec.source} has {n} poses")
+    task = spec.task
     driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
     if export is not None:
-        _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent,
+        _write_cad(export.burmester_plane, args.output, args.force, task, args.output, spec.view.extent,
                    driven=driven, plane=args.plane, units=units)
     elif circle:
         assert plot is not None
-        ax = plot.circle_curve_plane(task, spec.view.extent, driven=driven)
+        ax = plot.circle_curve_plane(task, spec.view.extent, driven=driven, units=spec.units)
     else:
         assert plot is not None
-        ax = plot.burmester_plane(task, spec.view.extent, driven=driven)
+        ax = plot.burmester_plane(task, spec.view.extent, driven=driven, units=spec.units)
     if n == 4:
         plane: Literal["center", "circle"] = "circle" if circle else "center"
         arcs = task.order_arcs(*spec.view.extent, plane=plane)
         ordered = sum(1 for _, d, _ in arcs if d is not None)
         summary = (
-            f"{plane}-point curve of {spec.source}: {len(arcs)} pieces in "
+            f"{plane}-point curve of {spec.source}{_lengths_in(spec)}: {len(arcs)} pieces in "
             f"view, {ordered} of them with the crank meeting the poses in order"
         )
         if driven is not None:
@@ -350,9 +507,11 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     else:
         pts = task.burmester_points()
         listed = ", ".join(_fmt_point(c) for c, _ in pts)
-        summary = f"Burmester points of {spec.source}: {len(pts)}" + (f": {listed}" if pts else "")
+        summary = (f"Burmester points of {spec.source}{_lengths_in(spec)}: {len(pts)}"
+                   + (f": {listed}" if pts else ""))
+    summary += _outside_note(spec, taskfile.curve_plane_points(task, driven, args.plane))
     if export is None:
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -380,7 +539,7 @@ def _atlas_client(address: Optional[str]) -> Any:
 def cmd_atlas(args: argparse.Namespace) -> int:
     """``burmester atlas``: the best driving pivot for every driven center."""
     output = args.output if args.output is not None else (None if args.json else "atlas.png")
-    spec = _load(args.task)  # the task file's errors first
+    spec = _with_units(_load(args.task), args)  # the task file's errors first
     if output is not None:
         _output(output, PICTURE_TYPES, args.force)
     v = spec.view
@@ -397,8 +556,10 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     client = _atlas_client(args.scheduler)
     bar = progress_for(driven, "atlas", driving.size) if client is None else None
     try:
-        atlas = burmester.pivot_atlas(spec.task(), driven, driving, client=client,
-                                      limits=spec.limits, progress=bar)
+        atlas = burmester.pivot_atlas(spec.task, driven, driving, client=client,
+                                      limits=spec.limits, rank_by=args.rank_by, progress=bar)
+    except TimeoutError as e:  # a cluster without workers
+        raise UsageError(str(e)) from None
     finally:
         if client is not None:
             client.close()
@@ -407,103 +568,113 @@ def cmd_atlas(args: argparse.Namespace) -> int:
         lim = spec.limits
         doc = {
             "task": spec.source,
+            "units": spec.units,
             "driven_grid": [driven.nx, driven.ny],
             "driving_grid": [driving.nx, driving.ny],
             "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax]},
-            "limits": {
-                "min_transmission_deg": lim.min_transmission_deg,
-                "max_link_ratio": lim.max_link_ratio,
-                "input": lim.input,
-            },
+            "limits": pv.limits_dict(lim),
+            "ranking": atlas.rank_by,
             "valid": int(atlas.valid.sum()),
             "with_acceptable": int(np.count_nonzero(atlas.count)),
             "best": [p._asdict() for p in atlas.best_pairs(args.top)],
         }
         print(json.dumps(doc, indent=2))
     if plot is not None and output is not None:
-        ax = plot.atlas(atlas)
+        ax = plot.atlas(atlas, units=spec.units)
         ax.set_title(f"pivot-pair atlas of {spec.source}")
-        _save(ax.figure, output, args.dpi)
+        _save(ax.figure, output, args.dpi, args.force)
         summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
-                   f"have an acceptable driving pivot")
+                   f"have an acceptable driving pivot ({pv.describe_limits(spec.limits)}{_lengths_in(spec)}); "
+                   f"{pv.describe_ranking(atlas.rank_by)}")
         if best:
-            summary += f"; best {best[0].min_transmission_deg:.1f} deg at C0 {_fmt_point(best[0].driven)}, A0 {_fmt_point(best[0].driving)}"
+            summary += (f"; best at C0 {_fmt_point(best[0].driven)}, A0 {_fmt_point(best[0].driving)}: "
+                        f"{best[0].min_transmission_deg:.1f} deg, {best[0].size_ratio:.1f}x the task's size")
         print(f"wrote {output}: {summary}", file=sys.stderr if args.json else sys.stdout)
     return 0
 
 
 def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "balanced") -> str:
-    """The text table of ``burmester pivots``."""
+    """The text table of ``burmester pivots``: a line naming the ranking,
+    the table (:func:`table`), a line saying what the columns mean."""
     head = pv.describe_ranking(ranked_by)
     if ranked_by != "margin":
         head += " (acceptable under the limits)"
-    span = spec.task().span
-    lines = [
-        f"Driving pivots A0 for {spec.source} (task size {span:.3g}: the largest distance "
-        f"between two poses), {head}",
-        f"{'#':>2} | {'A0 (x, y)':>18} | {'size':>6} | {'margin':>7} | {'ground':>7} {'crank':>7} "
-        f"{'coupler':>7} {'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'mu1':>4} {'mu2':>4} "
-        f"{'mu3':>4} | {'drive':<11} | limits",
-    ]
+    span = spec.task.span
+    columns = [("#", "right"), ("A0 (x, y)", "right"), ("size", "right"), ("margin", "right"),
+               ("ground", "right"), ("crank", "right"), ("coupler", "right"), ("rocker", "right"),
+               ("Grashof type", "left"), ("mu min", "right"), ("mu1", "right"), ("mu2", "right"),
+               ("mu3", "right"), ("drive", "left"), (pv.describe_limits(spec.limits), "left")]
+    rows = []
     for k, p in enumerate(pivots, start=1):
         f = p.figures
-        g, c, cp, r = f.lengths
-        mu = " ".join(f"{m:4.0f}" if m is not None else f"{'-':>4}" for m in pv.transmission_at_poses_deg(p.linkage))
-        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
+        mus = [f"{m:.0f}" if m is not None else "-" for m in pv.transmission_at_poses_deg(p.linkage)]
+        mt = f"{f.min_transmission_deg:.1f}" if f.min_transmission_deg is not None else "-"
         drive = f"{f.direction} {f.modes[0] or ''}".strip()
         bad = pv.violations(f, spec.limits)
-        lines.append(
-            f"{k:>2} | {_fmt_point(p.center):>18} | {_fmt_size(p.size_ratio)} | {p.margin:7.3f} | "
-            f"{g:7.3f} {c:7.3f} {cp:7.3f} "
-            f"{r:7.3f} | {f.grashof:<14} | {mt} | {mu} | {drive:<11} | {'; '.join(bad) or 'ok'}"
-        )
+        rows.append([str(k), _fmt_point(p.center), _fmt_size(p.size_ratio), f"{p.margin:.3f}",
+                     *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, *mus, drive, "; ".join(bad) or "ok"])
+    lines = [
+        f"Driving pivots A0 for {spec.source} (task size {format_length(span, spec.units, 3)}: the largest "
+        f"distance between two poses{_lengths_in(spec)}), {head}",
+        table(columns, rows),
+    ]
     if not pivots:
         lines.append("(no branch-free pivot in the view)")
-    lim = spec.limits
+    c0 = spec.filemon().driven_center
+    outside = describe_outside(outside_view([("the driven pivot C0", c0)], spec.view.extent), spec.view.extent,
+                               spec.units)
+    if outside:
+        lines.append(f"note: {outside} (the view is where A0 is searched; C0 is the task's)")
     lines.append(
         "size: the total length of the links (the coupler as its triangle with the coupler "
         "point) in task sizes. mu min: smallest transmission angle over the travel 1 -> 2 -> 3; "
-        "mu1-3: at the poses "
-        f"(degrees). drive: input rotation and assembly mode. limits: transmission >= "
-        f"{lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
-        + ("" if lim.input == "any" else f", {lim.input} input")
+        "mu1-3: at the poses (degrees). drive: input rotation and assembly mode. ok: meets the "
+        "limits in the header"
     )
     return "\n".join(lines)
 
 
 def _fmt_size(ratio: float) -> str:
-    """A size ratio as ``12.3x`` (six characters)."""
-    return f"{ratio:5.1f}x"
+    """A size ratio as ``12.3x``."""
+    return f"{ratio:.1f}x"
 
 
 def burmester_table(spec: TaskSpec, ranked: Sequence[pv.BurmesterLinkage], ranked_by: str) -> str:
-    """The text table of ``burmester pivots`` for five poses."""
-    task = spec.task()
+    """The text table of ``burmester pivots`` for five poses: the ranking,
+    the Burmester points, the table of their four-bars (:func:`table`),
+    what the columns mean."""
+    task = spec.task
     points = task.burmester_points()
+    extent = spec.view.extent
     lines = [
-        f"Four-bars of the {len(points)} Burmester points of {spec.source} (task size {task.span:.3g}), "
-        f"{pv.describe_ranking(ranked_by)}, acceptable ones first",
+        f"Four-bars of the {len(points)} Burmester points of {spec.source} (task size "
+        f"{format_length(task.span, spec.units, 3)}{_lengths_in(spec)}), {pv.describe_ranking(ranked_by)}, "
+        "acceptable ones first",
     ]
     lines += [f"  B{k}: center {_fmt_point(c)}, circle point {_fmt_point(z)}"
+              + ("" if taskfile.in_view(c, extent) else " (outside the view)")
               for k, (c, z) in enumerate(points, start=1)]
-    lines.append(
-        f"{'#':>2} | {'drive':>8} | {'size':>6} | {'ground':>7} {'crank':>7} {'coupler':>7} {'rocker':>7} | "
-        f"{'Grashof type':<14} | {'mu min':>6} | {'ratio':>5} | {'motion':<13} | limits"
-    )
+    columns = [("#", "right"), ("drive", "right"), ("size", "right"), ("ground", "right"),
+               ("crank", "right"), ("coupler", "right"), ("rocker", "right"), ("Grashof type", "left"),
+               ("mu min", "right"), ("ratio", "right"), ("motion", "left"), (pv.describe_limits(spec.limits), "left")]
+    rows = []
     for k, b in enumerate(ranked, start=1):
         f = b.linkage.figures
-        g, c, cp, r = f.lengths
-        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
+        mt = f"{f.min_transmission_deg:.1f}" if f.min_transmission_deg is not None else "-"
         motion = f"{f.direction} {f.modes[0] or ''}".strip() if f.branch_free else "branch defect"
-        lines.append(
-            f"{k:>2} | {f'B{b.driving + 1} -> B{b.driven + 1}':>8} | {_fmt_size(b.linkage.size_ratio)} | "
-            f"{g:7.3f} {c:7.3f} {cp:7.3f} {r:7.3f} | {f.grashof:<14} | {mt} | {f.link_ratio:5.1f} | "
-            f"{motion:<13} | {'; '.join(b.violations) or 'ok'}"
-        )
+        rows.append([str(k), f"B{b.driving + 1} -> B{b.driven + 1}", _fmt_size(b.linkage.size_ratio),
+                     *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, f"{f.link_ratio:.1f}", motion,
+                     "; ".join(b.violations) or "ok"])
+    lines.append(table(columns, rows))
     if not ranked:
         lines.append("(no Burmester four-bar: the task has fewer than two real Burmester points)")
+    outside = describe_outside(outside_view([(f"B{k}", c) for k, (c, _) in enumerate(points, start=1)], extent),
+                               extent, spec.units)
+    if outside:
+        lines.append(f"note: {outside}; 'burmester map' draws only the view: widen [view] to see all")
     lines.append("drive: the driving dyad's Burmester point -> the driven one's. size: the total length of the "
-                 "links in task sizes. mu min: smallest transmission angle over the travel through the five poses")
+                 "links in task sizes. mu min: smallest transmission angle over the travel through the five "
+                 "poses. ok: meets the limits in the header")
     return "\n".join(lines)
 
 
@@ -515,7 +686,7 @@ def _pivots_five(args: argparse.Namespace, spec: TaskSpec) -> int:
     if args.json:
         print(json.dumps(pv.report_burmester(spec, args.rank_by), indent=2))
     else:
-        ranked = pv.rank_burmester(spec.task(), spec.limits, args.rank_by)
+        ranked = pv.rank_burmester(spec.task, spec.limits, args.rank_by)
         print(burmester_table(spec, ranked[: args.top], args.rank_by))
     return 0
 
@@ -523,10 +694,11 @@ def _pivots_five(args: argparse.Namespace, spec: TaskSpec) -> int:
 def cmd_pivots(args: argparse.Namespace) -> int:
     """``burmester pivots``: rank the branch-free driving pivots (five
     poses: the four-bars of the Burmester points)."""
-    spec = _load(args.task)
+    spec = _with_units(_load(args.task), args)
     if len(spec.poses) == 5:
         return _pivots_five(args, spec)
     spec = _with_grid(spec, args.grid)
+    _check_memory(spec.view.nx, spec.view.ny, "ranking", "the solution map", "--grid")
     spacing = _spacing(spec, args.spacing)
     if args.json:
         doc = pv.report(spec, args.top, spacing, progress_for(spec.view, "solution map", 16), args.rank_by)
@@ -548,6 +720,8 @@ def cmd_batch(args: argparse.Namespace) -> int:
     try:
         records = burmester.best_pivots_batch(args.tasks, client=client, top=args.top,
                                               spacing=args.spacing, rank_by=args.rank_by)
+    except TimeoutError as e:  # a cluster without workers
+        raise UsageError(str(e)) from None
     finally:
         if client is not None:
             client.close()
@@ -562,9 +736,9 @@ def cmd_batch(args: argparse.Namespace) -> int:
 
 def cmd_linkage(args: argparse.Namespace) -> int:
     """``burmester linkage``: draw or animate the four-bar of one driving pivot."""
-    spec = _load(args.task)  # the task file's errors first
+    spec = _with_units(_load(args.task), args)  # the task file's errors first
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
-    units = _units(args)
+    units = _units(args, spec)
     out: str = args.output
     cad = _is_cad(out)
     animated = out.lower().endswith(ANIMATION_TYPES)
@@ -577,15 +751,16 @@ def cmd_linkage(args: argparse.Namespace) -> int:
     export = _export_module(out) if cad else None
     if len(spec.poses) == 5:
         sfb, what = _best_burmester_linkage(args, spec)
-        task = spec.task()
+        task = spec.task
     elif len(spec.poses) == 4:
         if args.pivot is not None:
             raise UsageError("--pivot is for three poses; a four-pose task draws its best pair of dyads "
                              "(see 'burmester pairs')")
-        task = spec.task()
+        task = spec.task
         best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1)
         if not best_pairs:
-            raise UsageError(f"no acceptable pair of dyads for {spec.source}; see 'burmester pairs'")
+            raise UsageError(f"no acceptable pair of dyads for {spec.source} ({pv.describe_limits(spec.limits)}); "
+                             "see 'burmester pairs'")
         sfb = best_pairs[0].linkage
         what = f"the best pair of dyads, driving pivot A0 = {_fmt_point(best_pairs[0].driving.center)}"
     else:
@@ -601,26 +776,29 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         task = filemon.task
         what = f"driving pivot A0 = {_fmt_point(pivot)}"
     if export is not None:
-        _write_cad(export.linkage, out, sfb, out, task=task, travel_samples=args.travel or 0, units=units)
+        _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
+                   units=units)
     elif animated:
         plot = _plot_module()
         frames = 60 if args.frames is None else args.frames
         fps = 20 if args.fps is None else args.fps
         try:
-            anim = plot.animate(sfb, out, task=task, frames=frames, fps=fps)
+            _written(out, args.force,
+                     lambda tmp: plot.animate(sfb, tmp, task=task, frames=frames, fps=fps, units=spec.units))
         except RuntimeError as e:
             raise UsageError(str(e)) from None
-        except OSError as e:
-            raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
-        del anim
         import matplotlib.pyplot as plt
 
         plt.close("all")
     else:
-        ax = _plot_module().linkage(sfb, task=task)
-        _save(ax.figure, out, _picture_dpi(args))
+        ax = _plot_module().linkage(sfb, task=task, units=spec.units)
+        _save(ax.figure, out, _picture_dpi(args), args.force)
     state = "branch-free" if sfb.branch_free else "has a branch defect"
-    print(f"wrote {out}: four-bar with {what}, {sfb.fourbar.grashof}, {state}")
+    lengths = ", ".join(f"{name} {format_length(v, spec.units)}"
+                        for name, v in zip(("ground", "crank", "coupler", "rocker"), sfb.fourbar.lengths))
+    pivots = [("A0", sfb.driving[0]), ("C0", sfb.driven[0])]
+    print(f"wrote {out}: four-bar with {what}, {sfb.fourbar.grashof}, {state}: {lengths}"
+          f"{_outside_note(spec, pivots)}")
     return 0
 
 
@@ -631,7 +809,7 @@ def _best_burmester_linkage(args: argparse.Namespace, spec: TaskSpec) -> Tuple[b
     if args.pivot is not None:
         raise UsageError("five poses: the linkage is built from two Burmester points; drop --pivot "
                          "(burmester pivots lists them all)")
-    ranked = [b for b in pv.rank_burmester(spec.task(), spec.limits) if b.linkage.figures.direction != "none"]
+    ranked = [b for b in pv.rank_burmester(spec.task, spec.limits) if b.linkage.figures.direction != "none"]
     if not ranked:
         raise UsageError(f"{spec.source}: no four-bar of two Burmester points carries the coupler through "
                          "the five poses in order")
@@ -651,9 +829,10 @@ def _pair_map(spec: TaskSpec, samples: int) -> burmester.PairMap:
         raise UsageError(f"pairs is for four poses (the pair map); {spec.source} has {n} poses")
     if not 2 <= samples <= 20000:
         raise UsageError(f"--samples must be from 2 to 20000, got {samples}")
+    _check_memory(samples, samples, "ranking", "the pair map", "--samples")
     big = samples * samples >= PROGRESS_MIN_POINTS
     bar = ProgressBar(sys.stderr, "burmester: pair map") if big and sys.stderr.isatty() else None
-    return spec.task().pair_map(samples, limits=spec.limits, progress=bar)
+    return spec.task.pair_map(samples, limits=spec.limits, progress=bar)
 
 
 def _pair_record(p: burmester.Pair) -> Dict[str, Any]:
@@ -681,31 +860,34 @@ def _pair_record(p: burmester.Pair) -> Dict[str, Any]:
 
 
 def pair_table(spec: TaskSpec, pairs: Sequence[burmester.Pair], ranked_by: str) -> str:
-    """The text table of ``burmester pairs``."""
-    lines = [
-        f"Pairs of dyads for {spec.source} (task size {spec.task().span:.3g}), "
-        f"{pv.describe_ranking(ranked_by)} (acceptable under the limits)",
-        f"{'#':>2} | {'A0 (x, y)':>18} | {'C0 (x, y)':>18} | {'size':>6} | {'ground':>7} {'crank':>7} "
-        f"{'coupler':>7} {'rocker':>7} | {'Grashof type':<14} | {'mu min':>6} | {'drive':<11}",
-    ]
+    """The text table of ``burmester pairs``: the ranking, the table
+    (:func:`table`), what the columns mean."""
+    columns = [("#", "right"), ("A0 (x, y)", "right"), ("C0 (x, y)", "right"), ("size", "right"),
+               ("ground", "right"), ("crank", "right"), ("coupler", "right"), ("rocker", "right"),
+               ("Grashof type", "left"), ("mu min", "right"), ("drive", "left")]
+    rows = []
     for k, p in enumerate(pairs, start=1):
         f = p.figures
-        g, c, cp, r = f.lengths
-        mt = f"{f.min_transmission_deg:6.1f}" if f.min_transmission_deg is not None else f"{'-':>6}"
+        mt = f"{f.min_transmission_deg:.1f}" if f.min_transmission_deg is not None else "-"
         drive = f"{f.direction} {f.modes[0] or ''}".strip()
-        lines.append(
-            f"{k:>2} | {_fmt_point(p.driving.center):>18} | {_fmt_point(p.driven.center):>18} | "
-            f"{_fmt_size(p.size_ratio)} | {g:7.3f} {c:7.3f} {cp:7.3f} {r:7.3f} | {f.grashof:<14} | "
-            f"{mt} | {drive:<11}"
-        )
+        rows.append([str(k), _fmt_point(p.driving.center), _fmt_point(p.driven.center), _fmt_size(p.size_ratio),
+                     *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, drive])
+    lines = [
+        f"Pairs of dyads for {spec.source} (task size {format_length(spec.task.span, spec.units, 3)}"
+        f"{_lengths_in(spec)}), {pv.describe_ranking(ranked_by)}, acceptable under the "
+        f"{pv.describe_limits(spec.limits)}",
+        table(columns, rows),
+    ]
     if not pairs:
         lines.append("(no acceptable pair of dyads)")
-    lim = spec.limits
+    named = [(f"{name} of pair {k}", p_) for k, p in enumerate(pairs, start=1)
+             for name, p_ in (("A0", p.driving.center), ("C0", p.driven.center))]
+    outside = describe_outside(outside_view(named, spec.view.extent), spec.view.extent, spec.units)
+    if outside:
+        lines.append(f"note: {outside} ('burmester map' draws the view)")
     lines.append(
         "A0, C0: the driving and driven fixed pivots. size: the total length of the links in task "
-        "sizes. mu min: smallest transmission angle over the travel 1 -> 2 -> 3 -> 4 (degrees). "
-        f"limits: transmission >= {lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
-        + ("" if lim.input == "any" else f", {lim.input} input")
+        "sizes. mu min: smallest transmission angle over the travel 1 -> 2 -> 3 -> 4 (degrees)."
     )
     return "\n".join(lines)
 
@@ -713,17 +895,20 @@ def pair_table(spec: TaskSpec, pairs: Sequence[burmester.Pair], ranked_by: str) 
 def cmd_pairs(args: argparse.Namespace) -> int:
     """``burmester pairs``: rank the pairs of dyads of a four-pose task (the
     pair map), and draw the map."""
-    spec = _load(args.task)  # the task file's errors first
+    spec = _with_units(_load(args.task), args)  # the task file's errors first
     if args.output is not None:
         _output(args.output, PICTURE_TYPES, args.force)
+        _check_memory(args.samples, args.samples, "picture", f"drawing {args.output}", "--samples")
     pmap = _pair_map(spec, args.samples)
     pairs = pmap.best_pairs(args.top, rank_by=args.rank_by)
     if args.output is not None:
         ax = _plot_module().pair_map(pmap, pairs=args.top, rank_by=args.rank_by)
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     if args.json:
         doc = {
             "task": spec.source,
+            "units": spec.units,
+            "limits": pv.limits_dict(spec.limits),
             "samples": list(pmap.shape),
             "acceptable_fraction": float(np.mean(pmap.acceptable)),
             "branch_free_fraction": float(np.mean(pmap.branch_free)),
@@ -734,7 +919,205 @@ def cmd_pairs(args: argparse.Namespace) -> int:
         print(pair_table(spec, pairs, args.rank_by))
     if args.output is not None and not args.json:
         print(f"wrote {args.output}: pair map of {spec.source}, {pmap.shape[1]} x {pmap.shape[0]} pairs, "
-              f"{100 * np.mean(pmap.acceptable):.1f}% acceptable")
+              f"{100 * np.mean(pmap.acceptable):.1f}% acceptable ({pv.describe_limits(spec.limits)})")
+    return 0
+
+
+# ---------------------------------------------------------------------------
+# burmester design: from poses (and a space) to the best linkage
+
+
+#: The rankings ``burmester design`` offers (those with a score).
+DESIGN_RANKINGS = ("balanced", "transmission", "compact")
+
+
+def _limits_words(lim: burmester.DesignLimits) -> str:
+    """The limits a design was judged by, in words (every one, printed)."""
+    words = [f"transmission >= {lim.min_transmission_deg:g} deg", f"link ratio <= {lim.max_link_ratio:g}",
+             f"{lim.input} input"]
+    if math.isfinite(lim.max_size_ratio):
+        words.append(f"size <= {lim.max_size_ratio:g}x the task")
+    if math.isfinite(lim.max_link_length):
+        words.append(f"links <= {lim.max_link_length:g} long")
+    return ", ".join(words)
+
+
+def _space_words(space: Optional[burmester.Space]) -> str:
+    """The space a design fits, in words."""
+    if space is None or (space.region == "anywhere" and not space.obstacles and space.envelope is None):
+        return "pivots anywhere"
+    words = []
+    if space.pivot_box is not None:
+        x0, x1, y0, y1 = space.pivot_box
+        words.append(f"pivots in x {x0:g}..{x1:g}, y {y0:g}..{y1:g}")
+    elif space.pivot_polygon is not None:
+        words.append(f"pivots in a polygon of {len(space.pivot_polygon)} vertices")
+    else:
+        words.append("pivots anywhere")
+    if space.obstacles:
+        words.append(f"{len(space.obstacles)} obstacle(s) cleared")
+    if space.envelope is not None:
+        words.append("inside the envelope")
+    if space.link_width:
+        words.append(f"links {space.link_width:g} wide")
+    return ", ".join(words)
+
+
+def design_table(spec: TaskSpec, report: burmester.DesignReport) -> str:
+    """The text table of ``burmester design``."""
+    task = spec.task
+    lines = [
+        f"Designs for {spec.source} ({len(task)} poses, task size {task.span:.4g}), "
+        f"{pv.describe_ranking(report.rank_by)}",
+        f"limits: {_limits_words(report.limits)}; space: {_space_words(report.space)}",
+    ]
+    head = (f"{'#':>2} | {'A0 (x, y)':>20} | {'C0 (x, y)':>20} | {'size':>6} | {'ground':>8} {'crank':>8} "
+            f"{'coupler':>8} {'rocker':>8} | {'Grashof type':<14} | {'mu min':>6} | {'ratio':>5} | "
+            f"{'drive':<11} | score")
+    if len(report):
+        lines.append(head)
+        for k, d in enumerate(report, start=1):
+            f = d.figures
+            g, c, cp, r = f.lengths
+            drive = f"{f.direction} {f.modes[0] or ''}".strip()
+            lines.append(
+                f"{k:>2} | {_fmt_point(d.driving_pivot):>20} | {_fmt_point(d.driven_pivot):>20} | "
+                f"{_fmt_size(d.size_ratio)} | {g:8.3f} {c:8.3f} {cp:8.3f} {r:8.3f} | {f.grashof:<14} | "
+                f"{f.min_transmission_deg:6.1f} | {f.link_ratio:5.2f} | {drive:<11} | {d.score:.4f}"
+            )
+        lines.append(
+            "A0: the driving crank's fixed pivot, C0: the driven one's. size: the total length of the "
+            "links (the coupler as its triangle with the coupler point) in task sizes. mu min: the "
+            "smallest transmission angle over the whole travel (degrees). Each is judged exactly, "
+            "refined from the best of a coarse search."
+        )
+        return "\n".join(lines)
+    main = report.main_rejection
+    rej = ", ".join(f"{name.replace('_', ' ')} {n}" for name, n in report.rejections)
+    lines.append(
+        f"No linkage fits. Of {report.census} candidates judged against every limit, the one "
+        f"rejecting the most is {main.replace('_', ' ') if main else 'none'} ({rej or 'none'}); "
+        "nothing was relaxed."
+    )
+    if report.near_misses:
+        lines.append("Nearest misses (a feasible motion, missing the limits by the least):")
+        lines.append(head.replace("score", "misses"))
+        for k, m in enumerate(report.near_misses, start=1):
+            f = m.figures
+            g, c, cp, r = f.lengths
+            a0, c0 = m.linkage.driving[0], m.linkage.driven[0]
+            drive = f"{f.direction} {f.modes[0] or ''}".strip()
+            bad = pv.violations(f, report.limits) + pv.size_violation(m.linkage, report.limits)
+            bad += [w.replace("_", " ") for w in m.misses if w in ("pivot_region", "obstacles", "envelope")]
+            mu = f.min_transmission_deg
+            lines.append(
+                f"{k:>2} | {_fmt_point(a0):>20} | {_fmt_point(c0):>20} | {_fmt_size(m.size_ratio)} | "
+                f"{g:8.3f} {c:8.3f} {cp:8.3f} {r:8.3f} | {f.grashof:<14} | "
+                f"{(f'{mu:6.1f}' if mu is not None else '     -')} | {f.link_ratio:5.2f} | {drive:<11} | "
+                f"{'; '.join(bad)}"
+            )
+    return "\n".join(lines)
+
+
+def design_document(spec: TaskSpec, report: burmester.DesignReport) -> Dict[str, Any]:
+    """The JSON document of ``burmester design --json``."""
+    lim, space = report.limits, report.space
+    return {
+        "task": spec.source,
+        "poses": len(spec.poses),
+        "span": spec.task.span,
+        "ranking": report.rank_by,
+        "limits": {
+            "min_transmission_deg": lim.min_transmission_deg,
+            "max_link_ratio": lim.max_link_ratio,
+            "input": lim.input,
+            "max_size_ratio": lim.max_size_ratio if math.isfinite(lim.max_size_ratio) else None,
+            "max_link_length": lim.max_link_length if math.isfinite(lim.max_link_length) else None,
+        },
+        "space": {
+            "region": space.region,
+            "pivot_box": space.pivot_box,
+            "pivot_polygon": space.pivot_polygon,
+            "obstacles": space.obstacles,
+            "link_width": space.link_width,
+            "envelope": space.envelope,
+        },
+        "search_box": report.search_box,
+        "coarse_candidates": report.coarse_candidates,
+        "coarse_acceptable": report.coarse_acceptable,
+        "evaluations": report.evaluations,
+        "min_separation": report.min_separation,
+        "designs": [
+            {"score": d.score, "found_by": d.found_by, "coarse": d.coarse, "refined": d.refined,
+             "coarse_score": d.coarse_score, **pv.linkage_dict(d.linkage, lim)}
+            for d in report
+        ],
+        "rejections": dict(report.rejections),
+        "census": report.census,
+        "near_misses": [
+            {"misses": m.misses, "shortfall": m.shortfall, **pv.linkage_dict(m.linkage, lim)}
+            for m in report.near_misses
+        ],
+    }
+
+
+def cmd_design(args: argparse.Namespace) -> int:
+    """``burmester design``: the best linkages for the task's poses inside its
+    space, both fixed pivots searched (three poses), drawn with ``-o``."""
+    spec = _with_units(_load(args.task), args)  # the task file's errors first
+    out: Optional[str] = args.output
+    if out is not None:
+        _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+        units = _units(args, spec)
+        animated = out.lower().endswith(ANIMATION_TYPES)
+        if not animated and (args.frames is not None or args.fps is not None):
+            raise UsageError(f"--frames and --fps are for animations (.gif, .mp4), not {out}")
+        export = _export_module(out) if _is_cad(out) else None
+        plot = None if export is not None else _plot_module()
+    elif args.units is not None or args.dpi is not None:
+        raise UsageError("--units and --dpi are for the drawing: give -o best.png (or .gif, .svg, .dxf)")
+    task = spec.task
+    client = _atlas_client(args.scheduler)
+    bar = (ProgressBar(sys.stderr, "burmester: design") if sys.stderr.isatty() and client is None
+           and len(spec.poses) < 5 else None)
+    try:
+        report = burmester.design(task, space=spec.space, limits=spec.limits, rank_by=args.rank_by,
+                                  top=args.top, client=client, progress=bar)
+    finally:
+        if client is not None:
+            client.close()
+    if args.json:
+        print(json.dumps(design_document(spec, report), indent=2))
+    else:
+        print(design_table(spec, report))
+    if out is None:
+        return 0
+    if not len(report):
+        print(f"nothing drawn: no linkage fits, so {out} was not written",
+              file=sys.stderr if args.json else sys.stdout)
+        return 0
+    sfb = report[0].linkage
+    if export is not None:
+        _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
+                   units=units)
+    elif animated:
+        assert plot is not None
+        try:
+            _written(out, args.force, lambda tmp: plot.animate(sfb, tmp, task=task, frames=args.frames or 60,
+                                                               fps=args.fps or 20, units=spec.units))
+        except RuntimeError as e:
+            raise UsageError(str(e)) from None
+        import matplotlib.pyplot as plt
+
+        plt.close("all")
+    else:
+        assert plot is not None
+        ax = plot.linkage(sfb, task=task, units=spec.units)
+        ax.set_title(f"best design of {spec.source} ({report.rank_by})")
+        _save(ax.figure, out, _picture_dpi(args), args.force)
+    f = sfb.figures
+    print(f"wrote {out}: the best design, {f.grashof}, {report[0].size_ratio:.1f}x the task's size, "
+          f"transmission >= {f.min_transmission_deg:.1f} deg", file=sys.stderr if args.json else sys.stdout)
     return 0
 
 
@@ -743,31 +1126,27 @@ MIN_STEP_DEG = 0.01
 
 
 def position_table(fourbar: burmester.FourBar, step_deg: float = 30.0) -> str:
-    """A text table of both assembly modes over a full turn of the input."""
-    lines = [
-        f"{fourbar!r}: {fourbar.grashof}",
-        f"{'theta2':>8} | {'open theta3':>11} {'theta4':>8} {'mu':>6} | "
-        f"{'crossed theta3':>14} {'theta4':>8} {'mu':>6}",
-    ]
+    """A text table (:func:`table`) of both assembly modes over a full turn
+    of the input."""
+    columns = [("theta2", "right"), ("open theta3", "right"), ("theta4", "right"), ("mu", "right"),
+               ("crossed theta3", "right"), ("theta4", "right"), ("mu", "right")]
     n = max(1, round(360.0 / step_deg))
     both: Tuple[Mode, Mode] = ("open", "crossed")
+    rows = []
     for k in range(n):
         t2 = k * 360.0 / n
-        row = f"{t2:8.1f} |"
+        row = [f"{t2:.1f}"]
         for mode in both:
             try:
                 c = fourbar.configuration(math.radians(t2), mode)
             except burmester.AssemblyError:
-                cell = f"{'(does not close)':>27}"
+                row += ["(does not close)", "", ""]
             else:
-                cell = (
-                    f"{math.degrees(c.theta3):{11 if mode == 'open' else 14}.3f} "
-                    f"{math.degrees(c.theta4):8.3f} {math.degrees(c.transmission_angle):6.1f}"
-                )
-            row += f" {cell} |"
-        lines.append(row.rstrip(" |"))
-    lines.append("angles in degrees; mu is the transmission angle")
-    return "\n".join(lines)
+                row += [f"{math.degrees(c.theta3):.3f}", f"{math.degrees(c.theta4):.3f}",
+                        f"{math.degrees(c.transmission_angle):.1f}"]
+        rows.append(row)
+    return "\n".join([f"{fourbar!r}: {fourbar.grashof}", table(columns, rows),
+                      "angles in degrees; mu is the transmission angle"])
 
 
 def cmd_solve(args: argparse.Namespace) -> int:
@@ -823,13 +1202,7 @@ def cmd_example(args: argparse.Namespace) -> int:
         sys.stdout.write(text)
         return 0
     _output(args.output, (".toml",), args.force)
-    try:
-        with open(args.output, "w" if args.force else "x", encoding="utf-8") as fh:
-            fh.write(text)
-    except FileExistsError:
-        raise UsageError(f"{args.output} exists; give another file name, or --force to replace it") from None
-    except OSError as e:
-        raise UsageError(f"cannot write {args.output}: {e.strerror or e}") from None
+    _written(args.output, args.force, lambda tmp: tmp.write_text(text, encoding="utf-8"))
     print(f"wrote {args.output}")
     return 0
 
@@ -860,9 +1233,14 @@ def _ranged(lo: int, hi: int) -> Callable[[str], int]:
     return parse
 
 
-#: ``--units`` of a CAD export (:data:`burmester.export.UNITS`, kept here so
-#: that ``burmester --help`` does not import the export module).
+#: The usual ``--units`` (:data:`burmester.export.UNITS`, kept here so
+#: that ``burmester --help`` does not import the export module); any other
+#: unit name is accepted too.
 UNIT_CHOICES = ("mm", "cm", "m", "in", "ft", "unitless")
+#: The help of ``--units``.
+UNITS_HELP = ("the unit of the task's lengths, any name (" + ", ".join(UNIT_CHOICES[:-1]) + ", ...), in place of "
+              "the task file's units = \"...\": said after the lengths printed, on the picture's axes and in a "
+              ".dxf or .svg (default: the task file's; none: bare numbers, and a CAD export records mm)")
 
 #: The range of ``--dpi`` (matplotlib cannot draw much past 2^16 pixels a side).
 MIN_DPI, MAX_DPI = 10, 2400
@@ -886,6 +1264,95 @@ def _finite(text: str) -> float:
     return x
 
 
+# ---------------------------------------------------------------------------
+# burmester drive: a motor for a linkage whose input swings
+
+
+def _drive_linkage(args: argparse.Namespace, spec: TaskSpec) -> Tuple[burmester.SynthesizedFourBar, str]:
+    """The linkage ``burmester drive`` drives: the given pivot's, or the
+    best by ``--rank-by`` under the task's limits (three poses), the best
+    pair (four), the best Burmester linkage (five)."""
+    n = len(spec.poses)
+    if n == 5:
+        return _best_burmester_linkage(args, spec)
+    if n == 4:
+        if args.pivot is not None:
+            raise UsageError("--pivot is for three poses; a four-pose task drives its best pair of dyads")
+        best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1, rank_by=args.rank_by)
+        if not best_pairs:
+            raise UsageError(f"no acceptable pair of dyads for {spec.source}; see 'burmester pairs'")
+        return best_pairs[0].linkage, f"the best pair of dyads, A0 = {_fmt_point(best_pairs[0].driving.center)}"
+    filemon = spec.filemon()
+    if args.pivot is None:
+        best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view), args.rank_by)
+        if not best:
+            raise UsageError("no branch-free driving pivot in the view; give one with --pivot X Y")
+        pivot = best[0].center
+    else:
+        pivot = (args.pivot[0], args.pivot[1])
+    return filemon.four_bar(pivot), f"driving pivot A0 = {_fmt_point(pivot)}"
+
+
+def cmd_drive(args: argparse.Namespace) -> int:
+    """``burmester drive``: a motor for the task's linkage: the best added
+    dyad (the Watt II six-bar), as a table or JSON, drawn, animated or
+    exported."""
+    from burmester import drives
+
+    spec = _with_units(_with_grid(_load(args.task), args.grid), args)
+    out: Optional[str] = args.output
+    if out is not None:
+        _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+        if args.map and (_is_cad(out) or out.lower().endswith(ANIMATION_TYPES)):
+            raise UsageError(f"--map draws a picture (.png, .pdf, ...), not {out}")
+    if not 0.0 <= args.margin < 90.0:
+        raise UsageError(f"--margin must be from 0 to 90 degrees, got {args.margin:g}")
+    if not args.max_time_ratio >= 1.0:
+        raise UsageError(f"--max-time-ratio must be at least 1, got {args.max_time_ratio:g}")
+    export = _export_module(out) if out is not None and _is_cad(out) and not args.map else None
+    sfb, what = _drive_linkage(args, spec)
+    bar = ProgressBar(sys.stderr, "burmester: drive search") if sys.stderr.isatty() else None
+    drive = sfb.best_drive(limits=spec.limits, swing_margin_deg=args.margin,
+                           max_time_ratio=args.max_time_ratio, rank_by=args.drive_rank_by,
+                           progress=bar)
+    if args.json:
+        doc = {
+            "task": spec.source,
+            "linkage": drives.linkage_record(sfb),
+            "drive": drives.drive_record(drive),
+        }
+        print(json.dumps(doc, indent=2))
+    else:
+        print(drives.drive_table(drive, f"{spec.source} ({what})"))
+    if out is None:
+        return 0
+    shown = sys.stderr if args.json else sys.stdout
+    if export is not None:
+        _write_cad(export.sixbar, out, args.force, drive, out, turn_samples=args.turn or 0, units=_units(args, spec))
+    elif args.map:
+        plot = _plot_module()
+        e = drive.attachment
+        a0 = sfb.driving[0]
+        h = 1.25 * max(math.dist(a0, drive.drive_pivot), math.dist(a0, e))
+        dmap = sfb.drive_map(a0[0] - h, a0[0] + h, a0[1] - h, a0[1] + h, 400, 400, attachment=e,
+                             limits=spec.limits, swing_margin_deg=args.margin,
+                             max_time_ratio=args.max_time_ratio)
+        ax = plot.drive_map(dmap, rank_by=args.drive_rank_by)
+        _save(ax.figure, out, _picture_dpi(args), args.force)
+    elif out.lower().endswith(ANIMATION_TYPES):
+        plot = _plot_module()
+        try:
+            _written(out, args.force,
+                     lambda tmp: plot.animate_sixbar(drive, tmp, frames=args.frames or 120, fps=args.fps or 24))
+        except RuntimeError as err:
+            raise UsageError(str(err)) from None
+    else:
+        ax = _plot_module().sixbar(drive)
+        _save(ax.figure, out, _picture_dpi(args), args.force)
+    print(f"wrote {out}", file=shown)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``burmester`` command."""
     parser = _Parser(
@@ -897,6 +1364,7 @@ def build_parser() -> argparse.ArgumentParser:
         ),
         epilog=(
             "examples:\n"
+            "  burmester design -o best.png        the best linkage for the built-in example's poses\n"
             "  burmester map -o map.png            center-point plane of the built-in example\n"
             "  burmester example > task.toml       a task file to edit\n"
             "  burmester map task.toml -o map.png  center-point plane of your task\n"
@@ -938,10 +1406,40 @@ def build_parser() -> argparse.ArgumentParser:
                    "shaded darker, contours of the minimum transmission angle over the travel")
     p.add_argument("--dpi", type=_dpi, default=None,
                    help=f"resolution of a picture, dots per inch, {MIN_DPI} to {MAX_DPI} (default: 100)")
-    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
-                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_map)
+
+    p = sub.add_parser("design", help="from poses (and a space) to the best linkage: both pivots searched",
+                       description="Search the best linkages for the task's poses: three poses search both "
+                       "fixed pivots (a coarse pass, then each candidate refined continuously on its exact "
+                       "figures), four poses both curve parameters, five poses every pair of Burmester "
+                       "points. Every design is branch-free, passes the poses in order on one circuit, meets "
+                       "the task file's [limits] (printed) and fits its [space]. A task file needs no "
+                       "[driven] table for this. When nothing fits, it says which limit rejected the most "
+                       "candidates and lists the nearest misses.")
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("--top", type=_ranged(1, 100), default=5, help="how many designs, 1 to 100 (default: 5)")
+    p.add_argument("--rank-by", choices=DESIGN_RANKINGS, default="balanced",
+                   help="balanced (default): sin(mu min) / sqrt(size x link ratio); transmission: the minimum "
+                   "transmission angle; compact: the smallest linkage relative to the task")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.add_argument("-o", "--output", default=None,
+                   help="also draw the best design: a picture (.png, .pdf, ...), an animation (.gif, .mp4) or "
+                   "a CAD export (.dxf, .svg)")
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
+                   help="animation frames from the first pose to the last, 2 to 10000 (default: 60)")
+    p.add_argument("--fps", type=_ranged(1, 240), default=None,
+                   help="animation frames per second, 1 to 240 (default: 20)")
+    p.add_argument("--travel", type=_ranged(2, 10_000), default=None, metavar="N",
+                   help="CAD export: also draw the linkage at N positions over its travel")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
+    p.add_argument("--dpi", type=_dpi, default=None,
+                   help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                   help="run the three-pose coarse pass on a Dask cluster (tcp://host:8786); needs burmester[dask]")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
+    p.set_defaults(func=cmd_design)
 
     p = sub.add_parser("pivots", help="rank the acceptable driving pivots",
                        description="Rank the driving pivots A0 that are branch-free, pass the poses "
@@ -961,6 +1459,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "minimum transmission angle; compact: the smallest linkage relative to the task; "
                    "pareto: the front of transmission and size, compact to transmitting")
     p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.set_defaults(func=cmd_pivots)
 
     p = sub.add_parser("pairs", help="four poses: rank the pairs of dyads (the pair map)",
@@ -978,6 +1477,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also draw the pair map as a picture (.png, .pdf, ...; matplotlib)")
     p.add_argument("--dpi", type=_dpi, default=None,
                    help=f"resolution of the picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_pairs)
 
@@ -997,8 +1497,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="animation frames per second, 1 to 240 (default: 20)")
     p.add_argument("--travel", type=_ranged(2, 10_000), default=None, metavar="N",
                    help="CAD export: also draw the linkage at N positions over its travel, 2 to 10000")
-    p.add_argument("--units", choices=UNIT_CHOICES, default=None,
-                   help="the unit of the task's lengths, recorded in a .dxf or .svg (default: mm)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--dpi", type=_dpi, default=None,
                    help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
@@ -1019,7 +1518,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"driven centers over the view (default: {ATLAS_DRIVEN_GRID[0]} {ATLAS_DRIVEN_GRID[1]})")
     p.add_argument("--driving-grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
                    help=f"driving centers over the view (default: {ATLAS_DRIVING_GRID[0]} {ATLAS_DRIVING_GRID[1]})")
+    p.add_argument("--rank-by", choices=DESIGN_RANKINGS, default="balanced",
+                   help="how each driven center's best driving pivot is chosen: balanced (default), "
+                   "transmission or compact, as for 'burmester pivots'")
     p.add_argument("--dpi", type=_dpi, default=100, help=f"resolution, {MIN_DPI} to {MAX_DPI} (default: 100)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_atlas)
 
@@ -1059,7 +1562,57 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", default=None, help="write to this .toml file instead of stdout")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_example)
+
+    p = sub.add_parser("drive", help="a motor for a linkage whose input swings: an added dyad (six-bar)",
+                       description="Find the best motor drive for the task's linkage: a crank-rocker "
+                                   "added to its input link (the Watt II six-bar), so a motor turning "
+                                   "a crank drives it through the poses.",
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("-o", "--output", default=None,
+                   help="also write the six-bar: a picture (.png, .pdf, ...), an animation over a "
+                        "crank turn (.gif, .mp4) or a CAD export (.dxf, .svg); with --map, the drive map")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
+                   help="three poses: the linkage's driving pivot A0 (default: the best by --rank-by)")
+    p.add_argument("--rank-by", choices=pv.RANKINGS, default="balanced",
+                   help="which linkage of the task to drive (default: balanced)")
+    p.add_argument("--drive-rank-by", choices=("balanced", "transmission", "compact"), default="balanced",
+                   help="which drive to pick (default: balanced)")
+    p.add_argument("--margin", type=_finite, default=0.0, metavar="DEG",
+                   help="swing the input this much beyond the first and last pose (default: 0, the "
+                        "strokes end at the poses)")
+    p.add_argument("--max-time-ratio", type=_finite, default=math.inf, metavar="Q",
+                   help="largest acceptable time ratio of the strokes (default: no limit)")
+    p.add_argument("--grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
+                   help="samples of the view when choosing the linkage")
+    p.add_argument("--map", action="store_true", help="-o draws the drive map of the best drive's attachment")
+    p.add_argument("--turn", type=_ranged(2, 10_000), default=None, metavar="N",
+                   help="CAD export: also draw the six-bar at N crank angles over a turn")
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None, help="animation: frames per crank turn (default 120)")
+    p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 24)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
+    p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
+    p.set_defaults(func=cmd_drive)
     return parser
+
+
+def _remember_sigint(seen: List[int]) -> Any:
+    """On the main thread, handle SIGINT as Python does (KeyboardInterrupt)
+    and note it in ``seen``; returns the handler it replaced (None
+    elsewhere, where signals cannot be handled)."""
+    if threading.current_thread() is not threading.main_thread():
+        return None
+
+    def on_sigint(signum: int, frame: Any) -> None:
+        seen.append(signum)
+        raise KeyboardInterrupt
+
+    try:
+        return signal.signal(signal.SIGINT, on_sigint)
+    except ValueError:
+        return None
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
@@ -1081,8 +1634,22 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         parser.print_help()
         return 0
     prog = f"burmester {args.command}"
+    # Ctrl-C is remembered: a library's C code that runs the signal handler
+    # may turn the KeyboardInterrupt into an error of its own (matplotlib:
+    # "Invalid affine transformation matrix"); after a SIGINT any error is
+    # the interruption.
+    interrupted: List[int] = []
+    previous = _remember_sigint(interrupted)
     try:
-        return int(args.func(args))
+        try:
+            return int(args.func(args))
+        except Exception:
+            if interrupted:
+                raise KeyboardInterrupt from None
+            raise
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGINT, previous)
     except (UsageError, TaskFileError, burmester.BurmesterError) as e:
         print(f"{prog}: error: {e}", file=sys.stderr)
         return 2

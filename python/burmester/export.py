@@ -18,6 +18,10 @@ plane, to DXF (with ezdxf) and to SVG (with the standard library).
   best pivots), or its circle-point plane (Filemon's lines and branch-free
   double wedge, the image poles and their circle, ``C1`` and ``C'k``).
 
+Every file is written whole to a temporary file beside its target and moved
+into place when complete (:mod:`burmester._io`): a write error, a full disk
+or Ctrl-C leaves no partial file and an existing one as it was.
+
 Every coordinate comes from the core (joints, coupler paths, travel, conic
 polylines, poles, sectors); nothing is computed again here. Lengths are
 written as they are, in the task's unit, which ``units=`` records (DXF
@@ -123,10 +127,12 @@ import numpy as np
 import numpy.typing as npt
 
 import burmester
+from burmester import _io
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
     DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
 )
+from burmester.units import check_units, dxf_imperial, dxf_units, format_length
 
 if TYPE_CHECKING:
     from burmester._burmester import Method, Mode
@@ -158,7 +164,10 @@ PathLike = Union[str, Path]
 ViewLike = Union[Grid, Sequence[float]]
 Plane = Literal["center", "circle"]
 
-#: Units a drawing may record, with their DXF ``$INSUNITS`` code.
+#: The usual units of a drawing, with their DXF ``$INSUNITS`` code (any
+#: other name is accepted too: :func:`burmester.units.dxf_units` gives the
+#: code of those ezdxf knows, and a drawing in a unit it does not know is
+#: unitless with the unit's name written into it).
 UNITS: Dict[str, int] = {"unitless": 0, "in": 1, "ft": 2, "mm": 4, "cm": 5, "m": 6}
 #: The units recorded unless told otherwise: the usual unit of mechanical drawings.
 DEFAULT_UNITS = "mm"
@@ -229,6 +238,7 @@ LAYERS: Dict[str, Layer] = {
     "BURMESTER_POINTS": Layer(2, "#e6ab02", "Burmester points (center points)"),
     "POSES": Layer(40, "#e66101", "poses: point and a flag along the coupler angle"),
     "PIVOTS": Layer(7, "#000000", "fixed pivots A0, C0"),
+    "DIMENSIONS": Layer(5, "#0b5394", "dimensions: link lengths at pose 1, fixed pivots from the origin"),
     "TEXT": Layer(250, "#404040", "labels"),
 }
 
@@ -278,6 +288,28 @@ class _Label:
 
 
 @dataclass
+class _Dimension:
+    """A dimension (layer ``DIMENSIONS``). ``"aligned"``: the distance from
+    ``p1`` to ``p2``, its dimension line ``offset`` text heights to the left
+    of ``p1 -> p2`` (negative: to the right). ``"x"``, ``"y"``: the
+    ordinate of ``p1`` from the origin, its leader running down (``x``) or
+    left (``y``) to beyond the drawing (``p2`` and ``offset`` unused)."""
+
+    kind: Literal["aligned", "x", "y"]
+    p1: Point
+    p2: Point
+    offset: float
+    title: str
+
+    @property
+    def measurement(self) -> float:
+        """What it measures: the length, or the coordinate."""
+        if self.kind == "aligned":
+            return math.hypot(self.p2[0] - self.p1[0], self.p2[1] - self.p1[1])
+        return self.p1[0] if self.kind == "x" else self.p1[1]
+
+
+@dataclass
 class _Drawing:
     """The things to draw, by layer, in model coordinates."""
 
@@ -289,6 +321,7 @@ class _Drawing:
     circles: List[_Circle] = field(default_factory=list)
     markers: List[_Marker] = field(default_factory=list)
     labels: List[_Label] = field(default_factory=list)
+    dimensions: List[_Dimension] = field(default_factory=list)
 
     def polyline(self, layer: str, points: npt.ArrayLike, title: str, closed: bool = False) -> None:
         self.polylines.append(_Polyline(layer, np.asarray(points, dtype=float).reshape(-1, 2), closed, title))
@@ -311,6 +344,8 @@ class _Drawing:
             used |= {r.layer, r.layer + "_FILL"}
         if self.labels:
             used.add("TEXT")
+        if self.dimensions:
+            used.add("DIMENSIONS")
         return [name for name in LAYERS if name in used]
 
     def bounds(self) -> Extent:
@@ -327,26 +362,109 @@ class _Drawing:
         lo, hi = allpts.min(axis=0), allpts.max(axis=0)
         return (float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]))
 
-    def sizes(self) -> Tuple[Extent, float, float]:
-        """``(extent, marker radius, text height)``: the bounds grown by the margin."""
+    def sizes(self, units: str = "unitless") -> Tuple[Extent, float, float]:
+        """``(extent, marker radius, text height)``: the bounds grown by the
+        margin, and around the dimensions' lines and texts (their texts
+        show ``units``)."""
         x0, x1, y0, y1 = self.bounds()
         size = max(x1 - x0, y1 - y0)
         if not size > 0.0:
             size = 1.0
         m = _MARGIN * size
-        return (x0 - m, x1 + m, y0 - m, y1 + m), _MARKER * size, _TEXT * size
+        text = _TEXT * size
+        ex = [x0 - m, x1 + m, y0 - m, y1 + m]
+        for place in self.dimension_layout(text, units):
+            (tx, ty), (hx, hy) = place.text_at, place.half
+            boxes = [(px, py, text, text) for px, py in place.points] + [(tx, ty, hx + text, hy + text)]
+            for px, py, rx, ry in boxes:
+                ex = [min(ex[0], px - rx), max(ex[1], px + rx), min(ex[2], py - ry), max(ex[3], py + ry)]
+        return (ex[0], ex[1], ex[2], ex[3]), _MARKER * size, text
+
+    def dimension_layout(self, text: float, units: str = "unitless") -> List["_DimensionPlace"]:
+        """Where each dimension goes for text height ``text``
+        (:class:`_DimensionPlace`): an aligned one's dimension line
+        ``offset`` text heights off the measured points, its text over the
+        line's middle; an ordinate's leader to beyond the geometry's bounds
+        (down for x, left for y), its text running on along the leader, a
+        row further out where it would meet one already placed."""
+        if not self.dimensions:
+            return []
+        x0, _, y0, _ = self.bounds()
+        decimals = _dimension_decimals(self)
+        out: List[_DimensionPlace] = []
+        placed: List[Tuple[str, int, float]] = []  # ordinates: kind, row, where across the leader
+        for dim in self.dimensions:
+            label = _dimension_text(dim, decimals, units)
+            length = _CHAR * text * len(label)  # the text's length, about
+            if dim.kind == "aligned":
+                dx, dy = dim.p2[0] - dim.p1[0], dim.p2[1] - dim.p1[1]
+                n = math.hypot(dx, dy) or 1.0
+                ux, uy = -dy / n, dx / n  # the unit normal to the left
+                ox, oy = ux * dim.offset * text, uy * dim.offset * text
+                a = (dim.p1[0] + ox, dim.p1[1] + oy)
+                b = (dim.p2[0] + ox, dim.p2[1] + oy)
+                side = 1.0 if dim.offset >= 0.0 else -1.0  # the text on the line's outer side
+                at = ((a[0] + b[0]) / 2 + side * ux * 0.8 * text, (a[1] + b[1]) / 2 + side * uy * 0.8 * text)
+                half = 0.5 * length + text
+                out.append(_DimensionPlace([a, b], at, (half, half), label))
+                continue
+            across = dim.p1[0] if dim.kind == "x" else dim.p1[1]
+            level = 0
+            while any(k == dim.kind and lv == level and abs(w - across) < 1.6 * text for k, lv, w in placed):
+                level += 1
+            placed.append((dim.kind, level, across))
+            reach = 3.0 * text + level * (length + 1.5 * text)
+            if dim.kind == "x":
+                end = (dim.p1[0], y0 - reach)
+                out.append(_DimensionPlace([end], (end[0], end[1] - 0.5 * text - 0.5 * length),
+                                           (0.6 * text, 0.5 * length), label))
+            else:
+                end = (x0 - reach, dim.p1[1])
+                out.append(_DimensionPlace([end], (end[0] - 0.5 * text - 0.5 * length, end[1]),
+                                           (0.5 * length, 0.6 * text), label))
+        return out
+
+
+class _DimensionPlace(NamedTuple):
+    """Where a dimension goes: ``points``, the dimension line's two ends
+    (aligned) or the leader's end (ordinate); ``text_at``, the text's middle
+    and ``half`` its half extent along x and y, about; ``label``, the text."""
+
+    points: List[Point]
+    text_at: Point
+    half: Tuple[float, float]
+    label: str
+
+
+_CHAR = 1.0  # a character's width, of the text height (at most, for the extent)
+
+
+def _dimension_decimals(d: _Drawing) -> int:
+    """Decimals of a dimension's text: about five significant digits of
+    the drawing's size (2 for a linkage of a few hundred mm), 0 to 8."""
+    x0, x1, y0, y1 = d.bounds()
+    size = max(x1 - x0, y1 - y0)
+    return min(8, max(0, 5 - math.ceil(math.log10(size)))) if size > 0.0 else 3
+
+
+def _dimension_text(dim: _Dimension, decimals: int, units: str) -> str:
+    """What a dimension shows: ``"40.81 mm"``, ``"x = -7.98 mm"``."""
+    unit = "" if units == "unitless" else f" {units}"
+    value = f"{abs(dim.measurement) if dim.kind != 'aligned' else dim.measurement:.{decimals}f}{unit}"
+    if dim.kind == "aligned":
+        return value
+    return f"{dim.kind} = {'-' if dim.measurement < 0.0 else ''}{value}"
 
 
 # ---------------------------------------------------------------------------
 # Checks
 
 
-def _units(units: str) -> str:
-    if units not in UNITS:
-        raise burmester.InvalidInputError(
-            f"units must be one of {', '.join(repr(u) for u in UNITS)}, got {units!r}"
-        )
-    return units
+def _units(units: Optional[str]) -> str:
+    """A unit name, checked (:func:`burmester.units.check_units`); None is
+    ``"unitless"``."""
+    name = check_units(units, "units")
+    return "unitless" if name is None else name
 
 
 def _samples(name: str, value: Any, lo: int) -> int:
@@ -521,7 +639,7 @@ def _input_arcs(sfb: SynthesizedFourBar) -> List[Tuple[float, float, bool]]:
 
 
 def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_samples: int,
-                     path_samples: int, labels: bool) -> _Drawing:
+                     path_samples: int, labels: bool, dimensions: bool = True) -> _Drawing:
     travel_samples = _samples("travel_samples", travel_samples, 0)
     if travel_samples == 1:
         raise burmester.InvalidInputError("travel_samples must be 0 (none) or at least 2, got 1")
@@ -567,7 +685,69 @@ def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_sampl
         sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)
     ]
     _poses(d, poses, 0.3 * min(fb.lengths), labels)
+    if dimensions:
+        _dimensions(d, sfb)
     return d
+
+
+def _dimensions(d: _Drawing, sfb: SynthesizedFourBar) -> None:
+    """The dimensions of a linkage (layer ``DIMENSIONS``): the ground
+    ``A0 C0``, and at pose 1 the crank ``A0 A``, the coupler ``A B`` and its
+    triangle's sides ``A P``, ``B P`` to the coupler point, and the rocker
+    ``C0 B`` (aligned), each dimension line 2.5, 5 or 7.5 text heights off
+    its link, on the side away from the linkage's middle (the coupler
+    triangle's for its sides) first, at the first place where its text
+    meets no text placed before; the fixed pivots' x and y from the origin
+    (ordinates)."""
+    theta2, mode = sfb.input_angles[0], sfb.modes[0] or "open"
+    o2, a, b, o4 = sfb.fourbar.joints(theta2, mode)
+    x, y, _ = sfb.pose_at(theta2, mode)
+    p = (x, y)
+    mid = ((o2[0] + a[0] + b[0] + o4[0]) / 4, (o2[1] + a[1] + b[1] + o4[1]) / 4)
+    tri = ((a[0] + b[0] + p[0]) / 3, (a[1] + b[1] + p[1]) / 3)
+    x0, x1, y0, y1 = d.bounds()
+    text = _TEXT * (max(x1 - x0, y1 - y0) or 1.0)  # as the writers will size it
+    decimals = _dimension_decimals(d)
+    texts: List[Array] = []  # the placed texts, each as the centers of circles of radius 0.6 text along it
+    for name, p1, p2, ref in (("ground A0 C0", o2, o4, mid), ("crank A0 A", o2, a, mid),
+                              ("coupler A B", a, b, mid), ("coupler A P", a, p, tri),
+                              ("coupler B P", b, p, tri), ("rocker C0 B", o4, b, mid)):
+        dx, dy = p2[0] - p1[0], p2[1] - p1[1]
+        length = math.hypot(dx, dy)
+        if length == 0.0:
+            continue  # a coupler point on a joint: no side to dimension
+        # To the left of p1 -> p2 is (-dy, dx): the side away from the middle first.
+        away = 1.0 if -dy * (ref[0] - p1[0]) + dx * (ref[1] - p1[1]) < 0.0 else -1.0
+        ux, uy = dx / length, dy / length
+        half = 0.5 * _CHAR * text * (len(f"{length:.{decimals}f}") + 4)  # the text, a unit included
+        along = np.linspace(-half, half, max(2, math.ceil(2 * half / text) + 1))
+        best: Optional[Tuple[int, float, Array]] = None
+        for level in (2.5, 5.0, 7.5):
+            for side in (away, -away):
+                offset = side * level
+                cx = (p1[0] + p2[0]) / 2 + (-uy) * (offset + math.copysign(0.8, offset)) * text
+                cy = (p1[1] + p2[1]) / 2 + ux * (offset + math.copysign(0.8, offset)) * text
+                circles = np.column_stack([cx + along * ux, cy + along * uy])
+                hits = sum(int(np.any(np.hypot(*(circles[:, None, :] - t[None, :, :]).transpose(2, 0, 1))
+                                      < 1.2 * text)) for t in texts)
+                if best is None or hits < best[0]:
+                    best = (hits, offset, circles)
+                if hits == 0:
+                    break
+            if best is not None and best[0] == 0:
+                break
+        assert best is not None
+        _, offset, circles = best
+        texts.append(circles)
+        if dx < 0.0 or (dx == 0.0 and dy < 0.0):
+            # Measured left to right (or upward), so that the text reads upright; the same side.
+            p1, p2, offset = p2, p1, -offset
+        d.dimensions.append(_Dimension("aligned", (float(p1[0]), float(p1[1])), (float(p2[0]), float(p2[1])),
+                                       offset, f"{name}, pose 1"))
+    for name, pivot in (("A0", o2), ("C0", o4)):
+        at = (float(pivot[0]), float(pivot[1]))
+        d.dimensions.append(_Dimension("x", at, at, 0.0, f"fixed pivot {name}: x from the origin"))
+        d.dimensions.append(_Dimension("y", at, at, 0.0, f"fixed pivot {name}: y from the origin"))
 
 
 # ---------------------------------------------------------------------------
@@ -758,10 +938,12 @@ def _write_dxf(d: _Drawing, path: Path, units: str) -> None:
         from ezdxf.filemanagement import new
     except ImportError:
         raise ImportError(_MISSING.format(what="ezdxf to write DXF")) from None
-    extent, marker, text = d.sizes()
+    extent, marker, text = d.sizes(units)
     doc = new("R2010")
-    doc.units = UNITS[units]
-    doc.header["$MEASUREMENT"] = 0 if units in ("in", "ft") else 1
+    code = dxf_units(units)
+    doc.units = 0 if code is None else code  # a unit ezdxf does not know: unitless, its name in the drawing
+    doc.header["$MEASUREMENT"] = 0 if code is not None and dxf_imperial(code) else 1
+    doc.header.custom_vars.append("UNITS", units)
     for name in d.layers():
         spec = LAYERS[name]
         layer = doc.layers.add(name, color=spec.aci, true_color=colors.rgb2int(_rgb(spec.color)))
@@ -783,11 +965,46 @@ def _write_dxf(d: _Drawing, path: Path, units: str) -> None:
     for t in d.labels:
         at = (t.point[0] + marker, t.point[1] + marker)
         msp.add_text(t.text, height=text, dxfattribs={"layer": "TEXT", "insert": at})
+    if d.dimensions:
+        _dxf_dimensions(doc, d, text, units)
     x0, x1, y0, y1 = extent
     msp.reset_limits((x0, y0), (x1, y1))
     msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))
     doc.set_modelspace_vport(height=y1 - y0, center=((x0 + x1) / 2, (y0 + y1) / 2))
     doc.saveas(path)
+
+
+def _dxf_dimensions(doc: Any, d: _Drawing, text: float, units: str) -> None:
+    """The drawing's dimensions as DXF DIMENSION entities (layer
+    ``DIMENSIONS``, dimension style ``BURMESTER``: text ``text`` high, the
+    unit after the number, an ordinate's sign before it), each rendered
+    (its block holds the lines, arrows and text, so that a reader that does
+    not compute dimensions shows them too)."""
+    unit = "" if units == "unitless" else f" {units}"
+    style = doc.dimstyles.new("BURMESTER")
+    for key, value in {
+        "dimtxt": text, "dimasz": 0.6 * text, "dimexo": 0.3 * text, "dimexe": 0.5 * text,
+        "dimgap": 0.3 * text, "dimdec": _dimension_decimals(d), "dimdsep": ord("."), "dimlfac": 1.0,
+        "dimpost": f"<>{unit}", "dimtad": 1, "dimtih": 0, "dimtoh": 0, "dimzin": 8,
+        "dimclrd": 256, "dimclre": 256, "dimclrt": 256, "dimtxsty": "Standard",
+    }.items():
+        style.dxf.set(key, value)
+    msp = doc.modelspace()
+    for dim, place in zip(d.dimensions, d.dimension_layout(text, units)):
+        attribs = {"layer": "DIMENSIONS"}
+        if dim.kind == "aligned":
+            # ezdxf's distance is to the left of p1 -> p2 when positive, as the offset.
+            # The unit as the dimension's own override too: ezdxf writes no DIMPOST into the style's record.
+            made = msp.add_aligned_dim(dim.p1, dim.p2, distance=dim.offset * text, dimstyle="BURMESTER",
+                                       dxfattribs=attribs, override={"dimpost": f"<>{unit}"})
+        else:
+            sign = "-" if dim.measurement < 0.0 else ""
+            end = place.points[-1]
+            offset = (end[0] - dim.p1[0], end[1] - dim.p1[1])
+            add = msp.add_ordinate_x_dim if dim.kind == "x" else msp.add_ordinate_y_dim
+            made = add(dim.p1, offset, dimstyle="BURMESTER", dxfattribs=attribs,
+                       override={"dimpost": f"{dim.kind} = {sign}<>{unit}"})
+        made.render()
 
 
 def _num(v: float) -> str:
@@ -812,10 +1029,10 @@ def _titled(parent: ET.Element, tag: str, attrib: Dict[str, str], title: str) ->
 
 def _write_svg(d: _Drawing, path: Path, units: str) -> None:
     """Write the drawing as SVG: a ``<g id=LAYER>`` per concept, y flipped, viewBox the extent."""
-    (x0, x1, y0, y1), marker, text = d.sizes()
+    (x0, x1, y0, y1), marker, text = d.sizes(units)
     w, h = x1 - x0, y1 - y0
     size = max(w, h)
-    if units == "unitless":
+    if units not in _SVG_UNITS:  # unitless, or a unit SVG has no length for: 800 px along the larger side
         f, unit = 800.0 / max(w, h), ""
     else:
         f, unit = _SVG_UNITS[units]
@@ -857,6 +1074,8 @@ def _write_svg(d: _Drawing, path: Path, units: str) -> None:
             if m.layer == name:
                 _titled(g, "circle", {"cx": _num(m.point[0]), "cy": _num(-m.point[1]), "r": _num(marker),
                                       "fill": spec.color, "fill-opacity": "0.35"}, m.title)
+        if name == "DIMENSIONS":
+            _svg_dimensions(g, d, text, units)
         if name == "TEXT":
             for t in d.labels:
                 el = ET.SubElement(g, "text", {"x": _num(t.point[0] + marker), "y": _num(-(t.point[1] + marker))})
@@ -865,11 +1084,44 @@ def _write_svg(d: _Drawing, path: Path, units: str) -> None:
     ET.ElementTree(svg).write(path, encoding="utf-8", xml_declaration=True)
 
 
+def _svg_dimensions(g: ET.Element, d: _Drawing, text: float, units: str) -> None:
+    """The drawing's dimensions in SVG, in the ``DIMENSIONS`` group, placed
+    as in DXF: per dimension a ``<g>`` (``data-kind``: aligned, x or y;
+    ``data-measurement``: the length or coordinate in full precision) with
+    its extension lines and dimension line, or its leader, as ``<line>``
+    elements, and its text (an x ordinate's upright, along its leader)."""
+    for dim, place in zip(d.dimensions, d.dimension_layout(text, units)):
+        el = _titled(g, "g", {"data-kind": dim.kind, "data-measurement": _num(dim.measurement)},
+                     f"{dim.title}: {place.label}")
+        if dim.kind == "aligned":
+            a, b = place.points
+            segments = [(dim.p1, a), (dim.p2, b), (a, b)]
+        else:
+            segments = [(dim.p1, place.points[0])]
+        for (ax_, ay_), (bx_, by_) in segments:
+            ET.SubElement(el, "line", {"x1": _num(ax_), "y1": _num(-ay_), "x2": _num(bx_), "y2": _num(-by_)})
+        tx, ty = place.text_at
+        attrib = {"x": _num(tx), "y": _num(-ty), "text-anchor": "middle", "dominant-baseline": "central",
+                  "font-family": "sans-serif", "font-size": _num(text), "stroke": "none",
+                  "fill": LAYERS["DIMENSIONS"].color}
+        if dim.kind == "x":
+            attrib["transform"] = f"rotate(-90 {_num(tx)} {_num(-ty)})"
+        ET.SubElement(el, "text", attrib).text = place.label
+
+
 _WRITERS = {".dxf": _write_dxf, ".svg": _write_svg}
 
 
 def _write(d: _Drawing, path: Path, units: str) -> Path:
-    _WRITERS[path.suffix.lower()](d, path, units)
+    if units not in UNITS:
+        # A unit DXF may not know: its name written into the drawing (by both writers), in a corner.
+        x0, _, y0, _ = d.bounds()
+        d.labels.append(_Label((x0, y0), f"lengths in {units}"))
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io): a write error or Ctrl-C leaves no partial file and
+    # an existing one as it was.
+    with _io.atomic_path(path) as tmp:
+        _WRITERS[path.suffix.lower()](d, tmp, units)
     return path
 
 
@@ -885,7 +1137,8 @@ def linkage(
     travel_samples: int = 0,
     path_samples: int = DEFAULT_PATH_SAMPLES,
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
+    dimensions: bool = True,
 ) -> Path:
     """Write a synthesized four-bar to a DXF or SVG file, by the path's suffix.
 
@@ -893,7 +1146,17 @@ def linkage(
     each pose k (in its assembly mode; a toggle drawn open), ``POSES``,
     ``COUPLER_CURVE``, ``COUPLER_PATH`` (when the linkage is feasible:
     :attr:`burmester.LinkageFigures.feasible`), ``TRAVEL`` (with
-    ``travel_samples``) and ``TEXT``. Every point is the core's:
+    ``travel_samples``), ``DIMENSIONS`` and ``TEXT``.
+
+    ``DIMENSIONS`` (with ``dimensions``): in DXF, true dimension entities
+    (ezdxf, dimension style ``BURMESTER``, the unit after the number): an
+    aligned dimension of each link at pose 1 (the ground ``A0 C0``, the
+    crank ``A0 A``, the coupler ``A B`` and the sides ``A P``, ``B P`` of its
+    triangle to the coupler point, the rocker ``C0 B``), and ordinate
+    dimensions of the fixed pivots' x and y from the origin; their
+    measurements are the exact lengths and coordinates. In SVG, the same
+    as lines and texts (a ``<g>`` each, with ``data-kind`` and
+    ``data-measurement``). Every point is the core's:
     :meth:`burmester.FourBar.joints` and :meth:`~burmester.SynthesizedFourBar.pose_at`
     at the input angles, :meth:`burmester.FourBar.coupler_path`,
     :attr:`~burmester.SynthesizedFourBar.travel_stops` and
@@ -903,7 +1166,8 @@ def linkage(
         sfb: the four-bar, from :meth:`burmester.Filemon.four_bar` or
             :meth:`burmester.Task.four_bar`.
         path: the file to write, ending in ``.dxf`` or ``.svg`` (replaced if
-            it exists).
+            it exists; written whole to a temporary file beside it and moved
+            into place when complete, so an error leaves no partial file).
         task: the task, to mark the poses it asks for; default: the poses
             the linkage reaches at its input angles.
         travel_samples: also draw the linkage at this many input angles
@@ -913,8 +1177,12 @@ def linkage(
             input (8 to :data:`MAX_SAMPLES`; default
             :data:`DEFAULT_PATH_SAMPLES`).
         labels: write ``A0``, ``C0`` and the pose numbers (layer ``TEXT``).
-        units: the unit of the lengths, recorded in the file: one of
-            :data:`UNITS` (default :data:`DEFAULT_UNITS`).
+        dimensions: dimension the links and the fixed pivots (layer ``DIMENSIONS``).
+        units: the unit of the lengths, recorded in the file (default
+            :data:`DEFAULT_UNITS`): any unit name (see
+            :func:`burmester.units.check_units`); DXF ``$INSUNITS`` and
+            ``$MEASUREMENT`` for a unit ezdxf knows, else unitless with
+            the name written into the drawing; None: unitless.
 
     Returns:
         The path written.
@@ -926,14 +1194,15 @@ def linkage(
             be driven through the poses in order (no travel).
         ImportError: ezdxf (for ``.dxf``) is not installed.
     """
-    return _linkage_to((".dxf", ".svg"), sfb, path, task, travel_samples, path_samples, labels, units)
+    return _linkage_to((".dxf", ".svg"), sfb, path, task, travel_samples, path_samples, labels, units, dimensions)
 
 
 def _linkage_to(suffixes: Sequence[str], sfb: SynthesizedFourBar, path: PathLike, task: Optional[Task],
-                travel_samples: int, path_samples: int, labels: bool, units: str) -> Path:
+                travel_samples: int, path_samples: int, labels: bool, units: Optional[str],
+                dimensions: bool = True) -> Path:
     target = _target(path, suffixes)
     units = _units(units)
-    return _write(_linkage_drawing(sfb, task, travel_samples, path_samples, labels), target, units)
+    return _write(_linkage_drawing(sfb, task, travel_samples, path_samples, labels, dimensions), target, units)
 
 
 def linkage_dxf(
@@ -944,11 +1213,12 @@ def linkage_dxf(
     travel_samples: int = 0,
     path_samples: int = DEFAULT_PATH_SAMPLES,
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
+    dimensions: bool = True,
 ) -> Path:
     """:func:`linkage` to a ``.dxf`` file (another suffix is an
     InvalidInputError): the same arguments."""
-    return _linkage_to((".dxf",), sfb, path, task, travel_samples, path_samples, labels, units)
+    return _linkage_to((".dxf",), sfb, path, task, travel_samples, path_samples, labels, units, dimensions)
 
 
 def linkage_svg(
@@ -959,11 +1229,12 @@ def linkage_svg(
     travel_samples: int = 0,
     path_samples: int = DEFAULT_PATH_SAMPLES,
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
+    dimensions: bool = True,
 ) -> Path:
     """:func:`linkage` to an ``.svg`` file (another suffix is an
     InvalidInputError): the same arguments."""
-    return _linkage_to((".svg",), sfb, path, task, travel_samples, path_samples, labels, units)
+    return _linkage_to((".svg",), sfb, path, task, travel_samples, path_samples, labels, units, dimensions)
 
 
 def plane(
@@ -980,7 +1251,7 @@ def plane(
     transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
     pivots: Optional[Sequence[Point]] = None,
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
 ) -> Path:
     """Write the driving crank's center-point or circle-point plane to a DXF
     or SVG file, by the path's suffix.
@@ -1026,8 +1297,11 @@ def plane(
         pivots: ``(x, y)`` points to mark, numbered from 1 (for example
             ``[p.center for p in smap.best_pivots()]``).
         labels: write the names of the points (layer ``TEXT``).
-        units: the unit of the lengths, recorded in the file: one of
-            :data:`UNITS` (default :data:`DEFAULT_UNITS`).
+        units: the unit of the lengths, recorded in the file (default
+            :data:`DEFAULT_UNITS`): any unit name (see
+            :func:`burmester.units.check_units`); DXF ``$INSUNITS`` and
+            ``$MEASUREMENT`` for a unit ezdxf knows, else unitless with
+            the name written into the drawing; None: unitless.
 
     Returns:
         The path written.
@@ -1046,7 +1320,7 @@ def plane(
 
 def _plane_to(suffixes: Sequence[str], filemon: Filemon, path: PathLike, view: Optional[ViewLike], plane: str,
               grid: Optional[Tuple[int, int]], method: Method, free: Optional[npt.ArrayLike], over: _Overlays,
-              labels: bool, units: str) -> Path:
+              labels: bool, units: Optional[str]) -> Path:
     target = _target(path, suffixes)
     units = _units(units)
     return _write(_plane_drawing(filemon, view, plane, grid, method, free, over, labels), target, units)
@@ -1066,7 +1340,7 @@ def plane_dxf(
     transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
     pivots: Optional[Sequence[Point]] = None,
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
 ) -> Path:
     """:func:`plane` to a ``.dxf`` file (another suffix is an
     InvalidInputError): the same arguments."""
@@ -1088,7 +1362,7 @@ def plane_svg(
     transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
     pivots: Optional[Sequence[Point]] = None,
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
 ) -> Path:
     """:func:`plane` to an ``.svg`` file (another suffix is an
     InvalidInputError): the same arguments."""
@@ -1104,7 +1378,7 @@ def burmester_plane(
     driven: Optional[Point] = None,
     plane: Literal["center", "circle"] = "center",
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
 ) -> Path:
     """Write the center-point plane of four or five poses (or the
     circle-point plane of four) to a DXF or SVG file, by the path's suffix
@@ -1137,8 +1411,11 @@ def burmester_plane(
         driven: four poses: the driven dyad's center point ``C0``, on the curve.
         plane: ``"center"`` or, for four poses, ``"circle"``.
         labels: write the names of the points (layer ``TEXT``).
-        units: the unit of the lengths, recorded in the file: one of
-            :data:`UNITS` (default :data:`DEFAULT_UNITS`).
+        units: the unit of the lengths, recorded in the file (default
+            :data:`DEFAULT_UNITS`): any unit name (see
+            :func:`burmester.units.check_units`); DXF ``$INSUNITS`` and
+            ``$MEASUREMENT`` for a unit ezdxf knows, else unitless with
+            the name written into the drawing; None: unitless.
 
     Returns:
         The path written.
@@ -1154,7 +1431,7 @@ def burmester_plane(
 
 def _burmester_to(suffixes: Sequence[str], task: Task, path: PathLike, view: Optional[ViewLike],
                   driven: Optional[Point], plane: Literal["center", "circle"], labels: bool,
-                  units: str) -> Path:
+                  units: Optional[str]) -> Path:
     target = _target(path, suffixes)
     units = _units(units)
     if plane not in ("center", "circle"):
@@ -1179,7 +1456,7 @@ def burmester_plane_dxf(
     driven: Optional[Point] = None,
     plane: Literal["center", "circle"] = "center",
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
 ) -> Path:
     """:func:`burmester_plane` to a ``.dxf`` file (another suffix is an
     InvalidInputError): the same arguments."""
@@ -1194,8 +1471,136 @@ def burmester_plane_svg(
     driven: Optional[Point] = None,
     plane: Literal["center", "circle"] = "center",
     labels: bool = True,
-    units: str = DEFAULT_UNITS,
+    units: Optional[str] = DEFAULT_UNITS,
 ) -> Path:
     """:func:`burmester_plane` to an ``.svg`` file (another suffix is an
     InvalidInputError): the same arguments."""
     return _burmester_to((".svg",), task, path, view, driven, plane, labels, units)
+
+
+# ---------------------------------------------------------------------------
+# The six-bar: a linkage driven from a motor by an added dyad
+
+LAYERS.update({
+    "CRANK_CIRCLE": Layer(30, "#fdae6b", "circle of the motor's crank joint D"),
+    "ATTACHMENT_ARC": Layer(30, "#fd8d3c", "E over a full crank turn (the swing)"),
+    "TURN": Layer(254, "#cccccc", "the six-bar sampled over a full crank turn"),
+    **{f"DRIVE_{k}": Layer(30, "#e6550d", f"the drive (crank D0 D, coupler D E) at pose {k}")
+       for k in _POSE_COLORS},
+})
+
+
+def _sixbar_links(d: _Drawing, six: burmester.SixBar, phi: float, layers: Tuple[str, str], what: str,
+                  joints: bool) -> None:
+    """The drive ``D0 D E``, the ternary input link ``A0 A E``, the coupler
+    triangle ``A C P`` and the rocker ``C C0`` at crank angle ``phi`` (the
+    core's joints)."""
+    d0, dj, e, a0, a, c, c0, p = six.joints(phi)
+    drive, motion = layers
+    d.polyline(drive, [d0, dj], f"crank D0 D, {what}")
+    d.polyline(drive, [dj, e], f"drive coupler D E, {what}")
+    d.polyline(motion, [a0, a, e], f"input link A0 A E, {what}", closed=True)
+    d.polyline(motion, [a, c, p], f"coupler A C P, {what}", closed=True)
+    d.polyline(motion, [c, c0], f"rocker C C0, {what}")
+    if joints:
+        for q, name in ((dj, "D"), (e, "E"), (a, "A"), (c, "C")):
+            d.marker(motion if name in ("A", "C") else drive, q, f"moving joint {name}, {what}")
+
+
+def _sixbar_drawing(drive: burmester.Drive, turn_samples: int, path_samples: int, labels: bool) -> _Drawing:
+    turn_samples = _samples("turn_samples", turn_samples, 0)
+    if turn_samples == 1:
+        raise burmester.InvalidInputError("turn_samples must be 0 (none) or at least 2, got 1")
+    path_samples = _samples("path_samples", path_samples, 8)
+    six = drive.sixbar
+    j = six.joints(drive.pose_crank_angles[0])
+    d0, a0, c0 = j[0], j[3], j[6]
+    d = _Drawing(f"six-bar: motor at D0 {d0}, A0 {a0}, C0 {c0}, time ratio {drive.time_ratio:.3f}")
+    d.polyline("GROUND", [d0, a0], "drive ground D0 A0")
+    d.polyline("GROUND", [a0, c0], "ground A0 C0")
+    for q, name in ((d0, "D0"), (a0, "A0"), (c0, "C0")):
+        d.marker("PIVOTS", q, f"fixed pivot {name}", name if labels else None)
+    d.circles.append(_Circle("CRANK_CIRCLE", (float(d0[0]), float(d0[1])), six.lengths[1], "crank circle"))
+    ts = np.asarray(drive.turn_angles(path_samples), dtype=float)
+    ts = np.append(ts, ts[0])
+    x, y, ok = six.coupler_path(ts)
+    for run in _runs(x, y, ok):
+        d.polyline("COUPLER_PATH", run, "coupler point over a full crank turn", closed=bool(ok.all()))
+    es = np.array([six.joints(float(t))[2] for t in ts])
+    d.polyline("ATTACHMENT_ARC", es, "E over a full crank turn")
+    if turn_samples:
+        for i, t in enumerate(drive.turn_angles(turn_samples), start=1):
+            _sixbar_links(d, six, t, ("TURN", "TURN"), f"crank sample {i} of {turn_samples}", False)
+    for k, phi in enumerate(drive.pose_crank_angles, start=1):
+        _sixbar_links(d, six, phi, (f"DRIVE_{k}", f"LINKAGE_{k}"), f"pose {k}", True)
+    _poses(d, drive.task.poses, 0.3 * min(six.motion.lengths), labels)
+    return d
+
+
+def sixbar(
+    drive: burmester.Drive,
+    path: PathLike,
+    *,
+    turn_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """Write a motor-driven six-bar (a :class:`burmester.Drive`) to a DXF
+    or SVG file, by the path's suffix, written beside it and moved into
+    place when complete.
+
+    Layers: ``GROUND`` (``D0 A0`` and ``A0 C0``), ``PIVOTS`` (``D0``, ``A0``,
+    ``C0``), ``CRANK_CIRCLE``, ``DRIVE_k`` (crank ``D0 D`` and drive coupler
+    ``D E`` at pose k) and ``LINKAGE_k`` (the input link ``A0 A E``, the
+    coupler triangle ``A C P`` and the rocker ``C C0`` at pose k),
+    ``COUPLER_PATH`` and ``ATTACHMENT_ARC`` (the coupler point and ``E`` over
+    a full crank turn), ``TURN`` (with ``turn_samples``), ``POSES`` and
+    ``TEXT``. Every point is the core's (:meth:`burmester.SixBar.joints`,
+    :meth:`burmester.SixBar.coupler_path`).
+
+    Parameters:
+        drive: the drive.
+        path: the file, ending in ``.dxf`` or ``.svg`` (replaced if it exists).
+        turn_samples: also draw the six-bar at this many crank angles over a
+            full turn (0: none; else 2 to :data:`MAX_SAMPLES`).
+        path_samples: samples of the paths per crank turn (8 to
+            :data:`MAX_SAMPLES`).
+        labels: write the pivots' names and the pose numbers.
+        units: the unit recorded (:data:`UNITS`).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: another suffix, a folder that does not
+            exist, unknown units or a sample count out of range.
+        ImportError: ezdxf (for ``.dxf``) is not installed.
+    """
+    return _sixbar_to((".dxf", ".svg"), drive, path, turn_samples, path_samples, labels, units)
+
+
+def _sixbar_to(suffixes: Sequence[str], drive: burmester.Drive, path: PathLike, turn_samples: int,
+               path_samples: int, labels: bool, units: str) -> Path:
+    if not isinstance(drive, burmester.Drive):
+        raise TypeError(f"expected a burmester.Drive, got {type(drive).__name__}")
+    target = _target(path, suffixes)
+    units = _units(units)
+    return _write(_sixbar_drawing(drive, turn_samples, path_samples, labels), target, units)
+
+
+def sixbar_dxf(drive: burmester.Drive, path: PathLike, *, turn_samples: int = 0,
+               path_samples: int = DEFAULT_PATH_SAMPLES, labels: bool = True,
+               units: str = DEFAULT_UNITS) -> Path:
+    """:func:`sixbar` to a ``.dxf`` file: the same arguments."""
+    return _sixbar_to((".dxf",), drive, path, turn_samples, path_samples, labels, units)
+
+
+def sixbar_svg(drive: burmester.Drive, path: PathLike, *, turn_samples: int = 0,
+               path_samples: int = DEFAULT_PATH_SAMPLES, labels: bool = True,
+               units: str = DEFAULT_UNITS) -> Path:
+    """:func:`sixbar` to an ``.svg`` file: the same arguments."""
+    return _sixbar_to((".svg",), drive, path, turn_samples, path_samples, labels, units)
+
+
+__all__ += ["sixbar", "sixbar_dxf", "sixbar_svg"]

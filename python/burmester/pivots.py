@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any, Dict, List, NamedTuple, Optional, Tuple
 
+from burmester.taskfile import in_view
 from burmester._burmester import (
     DesignLimits,
     Grid,
@@ -38,7 +39,7 @@ if TYPE_CHECKING:
     from burmester.taskfile import TaskSpec
 
 __all__ = ["RANKINGS", "BurmesterLinkage", "default_spacing", "rank", "rank_burmester", "check_ranking",
-           "describe_ranking", "transmission_at_poses_deg",
+           "describe_ranking", "describe_limits", "limits_dict", "transmission_at_poses_deg",
            "violations", "linkage_dict", "as_dict", "report", "report_burmester"]
 
 #: The rankings a designer chooses from (``"margin"`` is the fallback when
@@ -68,6 +69,29 @@ def check_ranking(rank_by: str) -> None:
 def describe_ranking(ranked_by: str) -> str:
     """What a ranking orders by, in words (for tables and reports)."""
     return _WORDS[ranked_by]
+
+
+def limits_dict(limits: DesignLimits) -> Dict[str, Any]:
+    """The limits as JSON: ``min_transmission_deg``, ``max_link_ratio``,
+    ``input`` and ``defaults`` (whether they are :class:`DesignLimits`'s
+    defaults). The ``"limits"`` of every ``--json`` document: the limits
+    its verdicts (``violations``, ``acceptable``) were judged by."""
+    return {
+        "min_transmission_deg": limits.min_transmission_deg,
+        "max_link_ratio": limits.max_link_ratio,
+        "input": limits.input,
+        "defaults": limits == DesignLimits(),
+    }
+
+
+def describe_limits(limits: DesignLimits) -> str:
+    """The limits in words, as every table prints them beside its verdicts:
+    ``"limits: transmission >= 40 deg, link ratio <= 6, crank input"``,
+    or ``"default limits: ..."`` when they are :class:`DesignLimits`'s
+    defaults (whether a task file gave them or not)."""
+    which = "default limits" if limits == DesignLimits() else "limits"
+    return (f"{which}: transmission >= {limits.min_transmission_deg:g} deg, "
+            f"link ratio <= {limits.max_link_ratio:g}, {limits.input} input")
 
 
 def default_spacing(grid: Grid) -> float:
@@ -163,7 +187,17 @@ def violations(figures: LinkageFigures, limits: DesignLimits) -> List[str]:
         out.append("input is not a crank (it does not turn fully)")
     if limits.input == "rocker" and figures.input_full:
         out.append("input is not a rocker (it turns fully)")
+    if math.isfinite(limits.max_link_length) and max(figures.lengths) > limits.max_link_length:
+        out.append(f"a link {max(figures.lengths):.3g} long > {limits.max_link_length:g}")
     return out
+
+
+def size_violation(linkage: SynthesizedFourBar, limits: DesignLimits) -> List[str]:
+    """The size limit a linkage misses, in words (its size ratio over
+    :attr:`burmester.DesignLimits.max_size_ratio`), or nothing."""
+    if linkage.size_ratio > limits.max_size_ratio:
+        return [f"size {linkage.size_ratio:.1f}x > {limits.max_size_ratio:g}x"]
+    return []
 
 
 def linkage_dict(linkage: SynthesizedFourBar, limits: Optional[DesignLimits] = None) -> Dict[str, Any]:
@@ -190,7 +224,7 @@ def linkage_dict(linkage: SynthesizedFourBar, limits: Optional[DesignLimits] = N
         "modes": list(f.modes),
     }
     if limits is not None:
-        d["violations"] = violations(f, limits)
+        d["violations"] = violations(f, limits) + size_violation(linkage, limits)
     return d
 
 
@@ -213,20 +247,23 @@ def report_burmester(spec: "TaskSpec", rank_by: "RankBy" = "balanced") -> Dict[s
     poses: its Burmester points and every four-bar of two of them,
     :func:`rank_burmester` order, each with its indices, score and
     :func:`linkage_dict`."""
-    task = spec.task()
+    task = spec.task
     lim = spec.limits
+    v = spec.view
+    extent = v.extent
+    points = task.burmester_points()
     return {
         "task": spec.source,
+        "units": spec.units,
         "span": task.span,
+        "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax]},
         "ranking": rank_by,
-        "limits": {
-            "min_transmission_deg": lim.min_transmission_deg,
-            "max_link_ratio": lim.max_link_ratio,
-            "input": lim.input,
-        },
-        "burmester_points": [{"center": list(c), "circle": list(z)} for c, z in task.burmester_points()],
+        "limits": limits_dict(lim),
+        "burmester_points": [{"center": list(c), "circle": list(z), "in_view": in_view(c, extent)}
+                             for c, z in points],
         "linkages": [
-            {"driving": b.driving, "driven": b.driven, "score": b.score, **linkage_dict(b.linkage, lim)}
+            {"driving": b.driving, "driven": b.driven, "score": b.score, **linkage_dict(b.linkage, lim),
+             "pivots_in_view": all(in_view(p, extent) for p in (b.linkage.driving[0], b.linkage.driven[0]))}
             for b in rank_burmester(task, lim, rank_by)
         ],
     }
@@ -252,13 +289,11 @@ def report(spec: "TaskSpec", top: int, spacing: Optional[float] = None,
     v, lim = spec.view, spec.limits
     return {
         "task": spec.source,
+        "units": spec.units,
         "span": smap.task.span,
         "view": {"x": [v.xmin, v.xmax], "y": [v.ymin, v.ymax], "grid": [v.nx, v.ny]},
-        "limits": {
-            "min_transmission_deg": lim.min_transmission_deg,
-            "max_link_ratio": lim.max_link_ratio,
-            "input": lim.input,
-        },
+        "driven_center_in_view": in_view(spec.filemon().driven_center, v.extent),
+        "limits": limits_dict(lim),
         "spacing": spacing,
         "ranking": ranked_by,
         "pivots": [as_dict(p, lim) for p in pivots],

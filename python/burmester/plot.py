@@ -21,6 +21,9 @@ of the Burmester curves and points of four and five poses.
   are the pictures the objects show in Jupyter (``_repr_png_``).
 - :func:`explore`: the interactive explorer (:mod:`burmester.explorer`):
   drag the poses and pivots, and the map and the linkage follow.
+- :func:`drive_map`, :func:`sixbar`, :func:`animate_sixbar`: a motor for a
+  linkage whose input swings (the Watt II six-bar): where the drive's crank
+  pivot may go, the six-bar at the poses, and a full crank turn animated.
 
 Needs matplotlib (``pip install "burmester[plot]"``). Every drawing function
 takes an optional ``ax`` to draw into and returns the Axes, so you can keep
@@ -28,6 +31,14 @@ editing; ``ax.figure.savefig("out.png")`` saves it. The artists carry gids
 (``"branch-map"``, ``"conic-1"`` ... ``"conic-3"`` by pose, ``"poles"``,
 ``"pole-circle"``, ...) to find and restyle them: ``[a for a in
 ax.get_children() if a.get_gid() == "poles"]``.
+
+Lengths: every drawing with lengths on its axes takes ``units="mm"`` (any
+unit name; :mod:`burmester.units`) and labels its axes ``x [mm]``, ``y
+[mm]`` (plain ``x``, ``y`` without one); :func:`linkage` and :func:`four_bar`
+label each link with its length (:func:`label_lengths`, gid
+``"link-length"``). Nothing is cut silently: a point a plane marks that
+lies outside its view is noted on the picture (:func:`note_outside`, gids
+``"out-of-view"`` and ``"out-of-view-marks"``).
 
 Colours follow the poses throughout: pose 1 red, pose 2 purple, pose 3 blue
 (pose 4 green, pose 5 brown);
@@ -37,6 +48,7 @@ a transformed Filemon curve has the colour of its line's pose.
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Dict, List, Literal, Optional, Sequence, Tuple, Union
 
@@ -52,6 +64,7 @@ try:
     from matplotlib.colors import ListedColormap
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle, Patch, PathPatch, Polygon
+    from matplotlib.text import Annotation
     from matplotlib.path import Path as MplPath
 except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     raise ImportError(
@@ -59,10 +72,13 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     ) from e
 
 import burmester
+from burmester import _io
 from burmester._burmester import Filemon, Grid, PairMap, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
-    DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
+    DEFAULT_GRID, curve_plane_points, default_circle_view, default_curve_view, default_view, describe_outside,
+    grid_for, has_pole_triangle, outside_view,
 )
+from burmester.units import format_length, label_axes
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -167,6 +183,189 @@ def _finish(ax: Axes, extent: Extent, legend: bool, handles: List[Any]) -> None:
         _legend(ax, handles)
 
 
+def note_outside(ax: Axes, extent: Extent, points: Sequence[Tuple[str, Optional[Sequence[float]]]],
+                 units: Optional[str] = None) -> List[Tuple[str, Point]]:
+    """Say on the picture which of the named points (``(name, (x, y))``,
+    None for a point at infinity) lie outside the view ``extent``: a note
+    in the corner of the axes with the fewest drawn points, listing them
+    with their coordinates (gid
+    ``"out-of-view"``, the words of
+    :func:`burmester.taskfile.describe_outside`) and, inside the view's
+    edge, an arrow toward each, named (points in about the same direction
+    share one; gid ``"out-of-view-marks"``). Returns the points outside
+    (empty: nothing drawn), so that a caller can say the same in words."""
+    outside = outside_view(points, extent)
+    if not outside:
+        return outside
+    x0, x1, y0, y1 = extent
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    hw, hh = (x1 - x0) / 2, (y1 - y0) / 2
+    groups: List[Tuple[Tuple[float, float], List[str]]] = []
+    for name, (px, py) in outside:
+        dx, dy = (px - cx) / hw, (py - cy) / hh  # in half-widths: the edge is where max(|dx|, |dy|) = 1
+        t = 1.0 / max(abs(dx), abs(dy))
+        at = (dx * t, dy * t)
+        for place, names in groups:
+            if math.hypot(place[0] - at[0], place[1] - at[1]) < 0.15:
+                names.append(name)
+                break
+        else:
+            groups.append((at, [name]))
+    for (ex, ey), names in groups:
+        tip = (cx + 0.98 * ex * hw, cy + 0.98 * ey * hh)
+        tail = (cx + 0.86 * ex * hw, cy + 0.86 * ey * hh)
+        arrow = ax.annotate(
+            ", ".join(names), xy=tip, xytext=tail, fontsize=7, color="0.2", ha="center", va="center", zorder=9,
+            bbox={"boxstyle": "round,pad=0.2", "facecolor": "white", "edgecolor": "0.6", "alpha": 0.85},
+            arrowprops={"arrowstyle": "->", "color": "0.2", "lw": 1.0},
+        )
+        arrow.set_gid("out-of-view-marks")
+    # Words to wrap at, a name and its coordinates ("B4 (28.569, -40.158)", "x [-6, 12],") kept whole.
+    words = re.findall(r"[^\s(\[]+ [(\[][^)\]]*[)\]],?|\S+", describe_outside(outside, extent, units))
+    lines, line = [], ""
+    for w in words:  # wrap at about 60 characters
+        if line and len(line) + 1 + len(w) > 60:
+            lines.append(line)
+            line = w
+        else:
+            line = f"{line} {w}" if line else w
+    lines.append(line)
+    # Inside the axes (a note under them would run into a neighbouring
+    # axes), in the corner where the fewest drawn points are.
+    drawn = [np.asarray(a.get_xydata(), dtype=float).reshape(-1, 2) for a in ax.lines]
+    pts = np.vstack(drawn) if drawn else np.zeros((0, 2))
+    fx = (pts[:, 0] - x0) / (x1 - x0)
+    fy = (pts[:, 1] - y0) / (y1 - y0)
+    tall = 0.06 * len(lines)
+    corners = [(0.01, 0.01, "left", "bottom"), (0.99, 0.01, "right", "bottom"),
+               (0.01, 0.99, "left", "top"), (0.99, 0.99, "right", "top")]
+
+    def crowd(corner: Tuple[float, float, str, str]) -> int:
+        cx_, cy_, ha, va = corner
+        xs = (fx < 0.6) if ha == "left" else (fx > 0.4)
+        ys = (fy < tall + 0.02) if va == "bottom" else (fy > 0.98 - tall)
+        return int(np.count_nonzero(xs & ys))
+
+    ax_, ay_, ha, va = min(corners, key=crowd)
+    note = ax.text(ax_, ay_, "\n".join(lines), transform=ax.transAxes, fontsize=7, ha=ha, va=va,
+                   color="#8a1c1c", zorder=10, bbox={"boxstyle": "round,pad=0.3", "facecolor": "white",
+                                                     "edgecolor": "#8a1c1c", "linewidth": 0.6, "alpha": 0.9})
+    note.set_gid("out-of-view")
+    return outside
+
+
+def _renderer(ax: Axes) -> Any:
+    """The figure's renderer, to measure text (None where the canvas has none)."""
+    get = getattr(ax.figure.canvas, "get_renderer", None)
+    try:
+        return get() if get is not None else None
+    except Exception:  # pragma: no cover - a backend without a renderer
+        return None
+
+
+def _text_box(t: Any, renderer: Any) -> Any:
+    """A text's box on the screen, its background box's padding included
+    and an annotation's leader left out (a leader may cross a label)."""
+    from matplotlib.text import Text
+
+    if isinstance(t, Annotation):
+        t.update_positions(renderer)  # where its offset puts it now
+    box = Text.get_window_extent(t, renderer)
+    patch = t.get_bbox_patch()
+    pad = 0.3 * t.get_fontsize() * t.figure.dpi / 72.0 if patch is not None else 0.0
+    return box.expanded(1.0, 1.0).padded(pad)
+
+
+def _overlap(a: Any, b: Any) -> float:
+    """The area two display boxes share (0 when apart)."""
+    w = min(a.x1, b.x1) - max(a.x0, b.x0)
+    h = min(a.y1, b.y1) - max(a.y0, b.y0)
+    return w * h if w > 0 and h > 0 else 0.0
+
+
+#: Where a link's length label may sit: fractions along the link, and
+#: offsets across it in points (tried in order, the first that overlaps
+#: nothing is taken).
+_ALONG = (0.5, 0.38, 0.62, 0.26, 0.74, 0.15, 0.85)
+_ACROSS = (8.0, 18.0, 30.0, 45.0)
+
+
+def label_lengths(ax: Axes, links: Sequence[Tuple[str, Sequence[float], Sequence[float]]],
+                  units: Optional[str] = None, gid: str = "link-length", fontsize: float = 8.0,
+                  color: str = "black", avoid: Sequence[Sequence[float]] = ()) -> List[Artist]:
+    """Label each link ``(name, p, q)`` with its name and length (``"crank
+    40 mm"``, :func:`burmester.units.format_length`) beside it, a thin
+    leader from the label to the link, placed so that no two labels
+    overlap, nor a label and a text already on the axes or a point of
+    ``avoid`` (markers), and each stays inside the axes: the first free
+    place of a few along the link (from its middle out) and across it
+    (either side, nearest first). The labels have gid ``gid``; set the
+    axes' limits first. Returns the labels."""
+    renderer = _renderer(ax)
+    taken = []
+    if renderer is not None:
+        from matplotlib.transforms import Bbox
+
+        taken = [_text_box(t, renderer) for t in ax.texts if t.get_visible() and t.get_text()]
+        r = 6.0 * ax.figure.dpi / 72.0  # a marker: about 12 points across
+        for x, y in ax.transData.transform(np.asarray(avoid, dtype=float).reshape(-1, 2)):
+            taken.append(Bbox([[x - r, y - r], [x + r, y + r]]))
+    inside = ax.get_window_extent(renderer) if renderer is not None else None
+    placed: List[Artist] = []
+    for name, p, q in links:
+        p_ = np.asarray(p, dtype=float)
+        q_ = np.asarray(q, dtype=float)
+        text = f"{name} {format_length(float(np.hypot(*(q_ - p_))), units)}"
+        # The link's normal on the screen (points across it).
+        sp, sq = ax.transData.transform([p_, q_])
+        d = sq - sp
+        n = np.array([-d[1], d[0]]) / (float(np.hypot(*d)) or 1.0)
+        best: Optional[Tuple[float, Annotation]] = None
+        places = [(t, side * across * n) for across in _ACROSS for t in _ALONG for side in (1.0, -1.0)]
+        for t, off in places:
+            at = p_ + t * (q_ - p_)
+            ha = "left" if off[0] > 2 else "right" if off[0] < -2 else "center"
+            va = "bottom" if off[1] > 2 else "top" if off[1] < -2 else "center"
+            art = ax.annotate(text, (float(at[0]), float(at[1])), xytext=(float(off[0]), float(off[1])),
+                              textcoords="offset points", ha=ha, va=va, fontsize=fontsize, zorder=9, color=color,
+                              bbox={"boxstyle": "round,pad=0.2", "facecolor": "white", "edgecolor": color,
+                                    "linewidth": 0.5, "alpha": 0.85},
+                              arrowprops={"arrowstyle": "-", "color": color, "lw": 0.6, "shrinkA": 0.0,
+                                          "shrinkB": 0.0})
+            if renderer is None:  # nothing to measure with: the first place
+                best = (0.0, art)
+                break
+            box = _text_box(art, renderer)
+            cost = sum(_overlap(box, o) for o in taken)
+            if inside is not None and not (box.x0 >= inside.x0 and box.x1 <= inside.x1
+                                           and box.y0 >= inside.y0 and box.y1 <= inside.y1):
+                cost += box.width * box.height  # partly outside the axes: as bad as covering a label
+            if best is None or cost < best[0]:
+                if best is not None:
+                    best[1].remove()
+                best = (cost, art)
+            else:
+                art.remove()
+            if cost == 0.0:
+                break
+        assert best is not None
+        chosen = best[1]
+        chosen.set_gid(gid)
+        if renderer is not None:
+            taken.append(_text_box(chosen, renderer))
+        placed.append(chosen)
+    return placed
+
+
+def link_segments(fb: burmester.FourBar, joints: Sequence[Sequence[float]]) -> List[Tuple[str, Sequence[float], Sequence[float]]]:
+    """``(name, p, q)`` of the four links of a four-bar at its joints
+    ``(O2, A, B, O4)`` (:meth:`burmester.FourBar.joints`): the ground
+    ``O2 O4``, the crank ``O2 A``, the coupler ``A B`` and the rocker
+    ``O4 B``; their lengths are ``fb.lengths``."""
+    o2, a, b, o4 = joints
+    return [("ground", o2, o4), ("crank", o2, a), ("coupler", a, b), ("rocker", o4, b)]
+
+
 #: Largest ``frames`` of :func:`animate` and :func:`drive_angles`.
 MAX_FRAMES = 10_000
 #: Largest ``fps`` of :func:`animate`.
@@ -253,6 +452,7 @@ def center_plane(
     pivots: Optional[Sequence[Point]] = None,
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw the driving crank's center-point plane, as in Borm & Kim's Fig. 10 and 12.
@@ -292,6 +492,8 @@ def center_plane(
             (gid ``"pivots"``).
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -391,8 +593,12 @@ def center_plane(
 
     if labels:
         ax.set_title("Driving crank center-point plane")
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
+    if labels or units:
+        label_axes(ax, units)
+    note_outside(ax, extent, [*named, ("C0", c0)]
+                 + [(str(k), p) for k, p in enumerate(np.asarray(pivots if pivots is not None else [],
+                                                                    dtype=float).reshape(-1, 2).tolist(), start=1)],
+                 units)
     _finish(ax, extent, legend, handles)
     return ax
 
@@ -493,6 +699,13 @@ def _draw_order_arcs(ax: Axes, task: Task, extent: Extent, plane: Literal["cente
                 _label(ax, p, f"Q{prime}{j}{k}", "0.3")
 
 
+def _note_curve_points(ax: Axes, task: Task, extent: Extent, driven: Optional[Point],
+                       plane: Literal["center", "circle"], units: Optional[str]) -> None:
+    """Four or five poses: :func:`note_outside` for the points the plane
+    marks (:func:`burmester.taskfile.curve_plane_points`)."""
+    note_outside(ax, extent, curve_plane_points(task, driven, plane), units)
+
+
 def burmester_plane(
     task: Task,
     view: Optional[Sequence[float]] = None,
@@ -500,6 +713,7 @@ def burmester_plane(
     driven: Optional[Point] = None,
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw the center-point plane of four or five poses.
@@ -530,6 +744,8 @@ def burmester_plane(
             the branch-free driving pivots.
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -593,8 +809,9 @@ def burmester_plane(
     if labels:
         what = "center-point curve" if n == 4 else "Burmester points"
         ax.set_title(f"{n} poses: {what}")
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
+    if labels or units:
+        label_axes(ax, units)
+    _note_curve_points(ax, task, extent, driven, "center", units)
     _finish(ax, extent, legend, handles)
     return ax
 
@@ -610,6 +827,7 @@ def circle_curve_plane(
     driven: Optional[Point] = None,
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw the circle-point plane of four poses (the coupler frame at pose 1).
@@ -637,6 +855,8 @@ def circle_curve_plane(
         driven: the driven dyad's center point ``C0``.
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -674,8 +894,9 @@ def circle_curve_plane(
     handles.append(_draw_poses(ax, task, labels))
     if labels:
         ax.set_title("4 poses: circle-point curve (coupler frame at pose 1)")
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
+    if labels or units:
+        label_axes(ax, units)
+    _note_curve_points(ax, task, extent, driven, "circle", units)
     _finish(ax, extent, legend, handles)
     return ax
 
@@ -809,6 +1030,7 @@ def circle_plane(
     *,
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw the driving crank's circle-point plane, as in Borm & Kim's Fig. 3 and 11.
@@ -829,6 +1051,8 @@ def circle_plane(
             default: a square around ``C1``, the ``C'k`` and the image poles.
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -897,8 +1121,10 @@ def circle_plane(
             _label(ax, p, f"C'{k}" + (" = C0" if k == 1 else ""), POSE_COLORS[k])
         _label(ax, c1, "C1")
         ax.set_title("Driving crank circle-point plane (pose 1)")
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
+    if labels or units:
+        label_axes(ax, units)
+    note_outside(ax, extent, list(zip(("P12", "P13", "P'23"), ip))
+                 + [(f"C'{k}", p) for k, p in enumerate(images, start=1)] + [("C1", c1)], units)
     _finish(ax, extent, legend, handles)
     return ax
 
@@ -962,6 +1188,7 @@ def linkage(
     coupler_curve: bool = True,
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a synthesized four-bar at the task's poses.
@@ -973,7 +1200,9 @@ def linkage(
     the coupler point) and the rocker (gids ``"linkage-k"`` and
     ``"coupler-k"``). The poses themselves are black markers, a dot and a flag
     along the coupler angle (gid ``"pose-k"``), so you can see the coupler
-    reach each one.
+    reach each one. With ``labels``, the links at pose 1 are labelled with
+    their names and lengths (``"crank 40 mm"``, gid ``"link-length"``,
+    placed by :func:`label_lengths` so that no two labels overlap).
 
     Parameters:
         sfb: the four-bar, from :meth:`burmester.Filemon.four_bar` or
@@ -983,6 +1212,8 @@ def linkage(
         coupler_curve: draw the coupler curve.
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -1006,9 +1237,21 @@ def linkage(
         state = "branch-free" if sfb.branch_free else "branch defect (modes differ)"
         count = {3: "three", 4: "four", 5: "five"}.get(len(sfb.input_angles), str(len(sfb.input_angles)))
         ax.set_title(f"Four-bar at the {count} poses: {sfb.fourbar.grashof}, {state}")
+    if labels or units:
+        label_axes(ax, units)
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.margins(0.08)
+    if labels:
+        # The link lengths, on the links at pose 1 (the axes' limits and
+        # aspect first: the labels are placed on the screen).
+        ax.apply_aspect()
+        theta2, mode1 = sfb.input_angles[0], sfb.modes[0] or "open"
+        joints = sfb.fourbar.joints(theta2, mode1)
+        poses_drawn = task.poses if task is not None else [sfb.pose_at(t, m or "open")
+                                                           for t, m in zip(sfb.input_angles, sfb.modes)]
+        label_lengths(ax, link_segments(sfb.fourbar, joints), units, color=POSE_COLORS[1],
+                      avoid=[*joints, *((q[0], q[1]) for q in poses_drawn)])
     if legend:
         _legend(ax)
     return ax
@@ -1054,6 +1297,7 @@ def animate(
     frames: int = 60,
     fps: int = 20,
     dpi: int = 80,
+    units: Optional[str] = None,
 ) -> FuncAnimation:
     """Write an animation of the four-bar driven through the poses.
 
@@ -1069,6 +1313,10 @@ def animate(
         frames: about how many frames from the first pose to the last.
         fps: frames per second.
         dpi: resolution of the frames.
+        units: the unit of the lengths (``"mm"``): on the axes (``x [mm]``)
+            and after the link lengths, which the title lists (``ground
+            100 mm, crank 40 mm, ...``; the links move, so their labels are
+            there rather than on them).
 
     Returns:
         The matplotlib animation (already saved).
@@ -1120,7 +1368,11 @@ def animate(
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
     ax.set_ylim(lo[1] - pad, hi[1] + pad)
     ax.set_aspect("equal")
-    ax.set_title(f"{sfb.fourbar.grashof}, driven through the poses ({mode})")
+    lengths = ", ".join(f"{name} {format_length(v, units)}"
+                        for name, v in zip(("ground", "crank", "coupler", "rocker"), sfb.fourbar.lengths))
+    title = ax.set_title(f"{sfb.fourbar.grashof}, driven through the poses ({mode})\n{lengths}", fontsize=10)
+    title.set_gid("link-lengths")
+    label_axes(ax, units)
     (chain_art,) = ax.plot([], [], color="#333333", linewidth=2.5, marker="o", markersize=5, zorder=8)
     chain_art.set_gid("moving-linkage")
     tri = Polygon(polys[0][1], closed=True, facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.6, zorder=8)
@@ -1135,7 +1387,20 @@ def animate(
 
     anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
     writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
-    anim.save(str(path), writer=writer, dpi=dpi)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io): Ctrl-C or a write error leaves no partial file.
+    with _io.atomic_path(path) as tmp:
+        try:
+            anim.save(str(tmp), writer=writer, dpi=dpi)
+        except Exception as e:
+            # The writer finishes its file in a `finally`; after Ctrl-C that
+            # can fail too (no frames yet) and hide the interrupt.
+            cause: Optional[BaseException] = e
+            while cause is not None:
+                if isinstance(cause, KeyboardInterrupt):
+                    raise cause from None
+                cause = cause.__context__
+            raise
     return anim
 
 
@@ -1149,6 +1414,7 @@ def poses(
     *,
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a task: its poses and poles.
@@ -1166,6 +1432,8 @@ def poses(
             (:func:`burmester.taskfile.default_curve_view`).
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -1197,8 +1465,10 @@ def poses(
         if at_infinity:
             title += " (at infinity: " + ", ".join(f"P{p.pair[0]}{p.pair[1]}" for p in at_infinity) + ")"
         ax.set_title(title)
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
+    if labels or units:
+        label_axes(ax, units)
+    note_outside(ax, extent, [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in finite]
+                 + [(f"pose {k}", q[:2]) for k, q in enumerate(task.poses, start=1)], units)
     _finish(ax, extent, legend, handles)
     return ax
 
@@ -1230,6 +1500,7 @@ def four_bar(
     *,
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a four-bar at one input angle.
@@ -1237,7 +1508,9 @@ def four_bar(
     Draws the ground (gid ``"ground"``), the fixed pivots (``"fixed-pivots"``),
     the chain ``O2 A B O4`` at ``theta2`` in ``mode`` (``"linkage"``), and the
     paths of the crank tip and the rocker tip over the input's range in that
-    mode (``"crank-path"``, ``"rocker-path"``).
+    mode (``"crank-path"``, ``"rocker-path"``). With ``labels``, each link
+    is labelled with its name and length (gid ``"link-length"``,
+    :func:`label_lengths`) and the title lists the four lengths.
 
     Parameters:
         fb: the four-bar.
@@ -1246,6 +1519,8 @@ def four_bar(
         mode: the assembly mode, ``"open"`` or ``"crossed"``.
         labels: write the names of the joints and a title.
         legend: draw a legend to the right of the axes.
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -1281,12 +1556,17 @@ def four_bar(
     if labels:
         for name, p in zip(("O2", "A", "B", "O4"), (o2, a, b, o4)):
             _label(ax, p, name)
-        l1, l2, l3, l4 = fb.lengths
-        ax.set_title(f"Four-bar ({fb.grashof}): ground {l1:.4g}, crank {l2:.4g}, coupler {l3:.4g}, rocker {l4:.4g}",
+        l1, l2, l3, l4 = (format_length(v, units) for v in fb.lengths)
+        ax.set_title(f"Four-bar ({fb.grashof}): ground {l1}, crank {l2}, coupler {l3}, rocker {l4}",
                      fontsize=10)
+    if labels or units:
+        label_axes(ax, units)
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.margins(0.08)
+    if labels:
+        ax.apply_aspect()  # the final limits: the length labels are placed on the screen
+        label_lengths(ax, link_segments(fb, (o2, a, b, o4)), units, avoid=[o2, a, b, o4])
     if legend:
         _legend(ax)
     return ax
@@ -1299,6 +1579,7 @@ def solution_map(
     transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a solution-space map: what ``burmester map --design`` draws.
@@ -1319,6 +1600,8 @@ def solution_map(
         transmission_levels: the contour levels, degrees.
         labels: write the names of the points and a title.
         legend: draw a legend to the right of the axes.
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -1331,7 +1614,7 @@ def solution_map(
         return center_plane(
             smap.task.filemon(fixed), smap.grid, free=smap.branch_free, acceptable=smap.acceptable,
             transmission=transmission, transmission_levels=transmission_levels, pivots=best or None,
-            labels=labels, legend=legend, ax=ax,
+            labels=labels, legend=legend, units=units, ax=ax,
         )
     ax = _new_axes(ax)
     extent = smap.extent
@@ -1366,8 +1649,10 @@ def solution_map(
         for k, p in enumerate(best, start=1):
             _label(ax, p, str(k))
         ax.set_title("Driven crank center-point plane")
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
+    if labels or units:
+        label_axes(ax, units)
+    note_outside(ax, extent, [("A0", fixed)] + [(str(k), p) for k, p in enumerate(best, start=1)]
+                 + [(f"pose {k}", q[:2]) for k, q in enumerate(smap.task.poses, start=1)], units)
     _finish(ax, extent, legend, handles)
     return ax
 
@@ -1377,6 +1662,7 @@ def atlas(
     *,
     labels: bool = True,
     legend: bool = True,
+    units: Optional[str] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a pivot-pair atlas: what ``burmester atlas`` draws.
@@ -1391,6 +1677,8 @@ def atlas(
         pivot_atlas: the atlas, from :func:`burmester.pivot_atlas`.
         labels: write the axis names and a title.
         legend: draw a legend (inside the axes).
+        units: the unit of the lengths (``"mm"``), written on the axes
+            (``x [mm]``); None: plain ``x`` and ``y``.
         ax: the Axes to draw into; default: a new figure.
 
     Returns:
@@ -1422,9 +1710,9 @@ def atlas(
     ax.set_ylim(driven.ymin, driven.ymax)
     ax.set_aspect("equal")
     if labels:
-        ax.set_xlabel("driven center x")
-        ax.set_ylabel("driven center y")
         ax.set_title("Pivot-pair atlas")
+    if labels or units:
+        label_axes(ax, units, "driven center x", "driven center y")
     return ax
 
 
@@ -1465,3 +1753,355 @@ def explore(
         task, driven_center, view, driving_center=driving_center, limits=limits, grid=grid,
         live=live, export_to=export_to, fig=fig,
     )
+
+
+# ---------------------------------------------------------------------------
+# The motor drive: the Watt II six-bar (a crank-rocker added to a linkage
+# whose input swings)
+
+#: Colours of the drive map's categories: no drive, a drive (the six-bar
+#: turns fully), a drive that meets the limits.
+DRIVE_MAP_CMAP = ListedColormap(["#eeeeee", "#c6dbef", "#4292c6"])
+#: Colour of the drive (crank, drive coupler) in the pictures of a six-bar.
+DRIVE_COLOR = "#e6550d"
+
+
+def _drive_of(obj: Any) -> Tuple[burmester.SixBar, Optional[burmester.Drive]]:
+    if isinstance(obj, burmester.Drive):
+        return obj.sixbar, obj
+    if isinstance(obj, burmester.SixBar):
+        return obj, None
+    raise TypeError(f"expected a burmester.Drive or a burmester.SixBar, got {type(obj).__name__}")
+
+
+def _sixbar_polys(six: burmester.SixBar, phi: float) -> Tuple[npt.NDArray[np.float64], ...]:
+    """``(drive, ternary, motion, coupler)`` at crank angle ``phi``: the
+    polyline D0-D-E, the input link's triangle A0-A-E, the polyline A-C-C0
+    and the coupler triangle A-C-P (the core's joints)."""
+    d0, d, e, a0, a, c, c0, p = (np.asarray(q, dtype=float) for q in six.joints(phi))
+    return (
+        np.array([d0, d, e]), np.array([a0, a, e]), np.array([a, c, c0]), np.array([a, c, p]),
+    )
+
+
+def _turn_angles(six: burmester.SixBar, drive: Optional[burmester.Drive], n: int) -> npt.NDArray[np.float64]:
+    if drive is not None:
+        return np.asarray(drive.turn_angles(n), dtype=float)
+    return np.asarray(six.crank_angles(0.0, n), dtype=float)
+
+
+def _draw_sixbar_static(ax: Axes, six: burmester.SixBar, drive: Optional[burmester.Drive],
+                        task: Optional[Task], curve: bool, labels: bool) -> List[Artist]:
+    """Fixed pivots, crank circle, E's swing, the coupler path over a turn
+    and the poses; returns legend handles."""
+    handles: List[Artist] = []
+    j = six.joints(drive.pose_crank_angles[0] if drive is not None else 0.0)
+    d0, a0, c0 = j[0], j[3], j[6]
+    r = six.lengths[1]
+    crank = Circle(d0, r, fill=False, color=DRIVE_COLOR, linestyle=":", linewidth=1.0, zorder=2,
+                   label="crank circle")
+    crank.set_gid("crank-circle")
+    ax.add_patch(crank)
+    handles.append(crank)
+    if curve:
+        ts = _turn_angles(six, drive, 720)
+        x, y, ok = six.coupler_path(ts)
+        (cc,) = ax.plot(x[ok], y[ok], color="0.55", linewidth=1.0, zorder=1,
+                        label="coupler path over a crank turn")
+        cc.set_gid("coupler-path")
+        handles.append(cc)
+        es = np.array([six.joints(float(t))[2] for t in ts[::4]])
+        (arc,) = ax.plot(es[:, 0], es[:, 1], color=DRIVE_COLOR, linewidth=1.0, alpha=0.6, zorder=1,
+                         label="E over a crank turn")
+        arc.set_gid("attachment-arc")
+        handles.append(arc)
+    (g,) = ax.plot([d0[0], a0[0], c0[0]], [d0[1], a0[1], c0[1]], color="0.3", linestyle="--",
+                   linewidth=1.0, zorder=2)
+    g.set_gid("ground")
+    handles.append(_markers(ax, [d0, a0, c0], "fixed-pivots", "fixed pivots D0 (motor), A0, C0",
+                            marker="^", markersize=10, color="0.2", zorder=6))
+    if drive is not None:
+        poses_ = task.poses if task is not None else drive.task.poses
+        flag = 0.3 * min(six.motion.lengths)
+        for k, pose in enumerate(poses_, start=1):
+            fx, fy = _flag(pose, flag)
+            (mk,) = ax.plot(fx, fy, color="black", linewidth=2.0, zorder=9)
+            mk.set_gid(f"pose-{k}")
+            (dot,) = ax.plot([pose[0]], [pose[1]], marker="o", markersize=5, color="black", zorder=9)
+            dot.set_gid(f"pose-{k}")
+            if labels:
+                _label(ax, (pose[0], pose[1]), str(k))
+    if labels:
+        _label(ax, d0, "D0")
+        _label(ax, a0, "A0")
+        _label(ax, c0, "C0")
+    return handles
+
+
+def _draw_sixbar_at(ax: Axes, six: burmester.SixBar, phi: float, color: str, gid: str,
+                    label: Optional[str], alpha: float = 0.25) -> Artist:
+    drive, ternary, motion, coupler = _sixbar_polys(six, phi)
+    (dl,) = ax.plot(drive[:, 0], drive[:, 1], color=DRIVE_COLOR, linewidth=1.8, marker="o",
+                    markersize=3, zorder=4)
+    dl.set_gid(f"drive-{gid}")
+    (ml,) = ax.plot(motion[:, 0], motion[:, 1], color=color, linewidth=2.0, marker="o", markersize=4,
+                    zorder=4, label=label)
+    ml.set_gid(f"linkage-{gid}")
+    for poly, name in ((ternary, "input"), (coupler, "coupler")):
+        tri = Polygon(poly, closed=True, facecolor=color, edgecolor=color, alpha=alpha, zorder=3)
+        tri.set_gid(f"{name}-{gid}")
+        ax.add_patch(tri)
+    return ml
+
+
+def sixbar(
+    obj: Union[burmester.Drive, burmester.SixBar],
+    *,
+    task: Optional[Task] = None,
+    coupler_path: bool = True,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a six-bar: a drive at the crank angles of its poses, or a
+    :class:`burmester.SixBar` at four crank angles a quarter turn apart.
+
+    Draws the fixed pivots ``D0`` (the motor), ``A0`` and ``C0``, the crank
+    circle (gid ``"crank-circle"``), the coupler point's path and ``E``'s
+    swing over a full crank turn (``"coupler-path"``, ``"attachment-arc"``),
+    and at each position the drive ``D0 D E`` (orange, ``"drive-k"``), the
+    ternary input link ``A0 A E`` and the coupler triangle ``A C P``
+    (``"input-k"``, ``"coupler-k"``) and the motion loop ``A C C0``
+    (``"linkage-k"``) in the pose's colour; the poses as black flags
+    (``"pose-k"``). Every point is the core's (:meth:`burmester.SixBar.joints`).
+
+    Parameters:
+        obj: a :class:`burmester.Drive` (from
+            :meth:`burmester.SynthesizedFourBar.best_drive`,
+            :meth:`burmester.DriveMap.best_drives`, ...) or a
+            :class:`burmester.SixBar`.
+        task: the task whose poses to mark (a drive knows its own).
+        coupler_path: draw the paths over a full crank turn.
+        labels: write the names of the pivots and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    six, drive = _drive_of(obj)
+    ax = _new_axes(ax, (7.5, 6.0))
+    handles = _draw_sixbar_static(ax, six, drive, task, coupler_path, labels)
+    if drive is not None:
+        for k, phi in enumerate(drive.pose_crank_angles, start=1):
+            handles.append(_draw_sixbar_at(
+                ax, six, phi, POSE_COLORS[k], str(k),
+                f"pose {k}: crank at {math.degrees(phi) % 360:.1f} deg",
+            ))
+    else:
+        for k in range(4):
+            phi = k * math.pi / 2
+            try:
+                handles.append(_draw_sixbar_at(ax, six, phi, POSE_COLORS[k + 1], str(k + 1),
+                                               f"crank at {90 * k} deg"))
+            except burmester.BurmesterError:
+                continue
+    if labels:
+        if drive is not None:
+            ax.set_title(
+                f"Driven by a motor: min transmission {drive.min_transmission_deg:.1f} deg, "
+                f"time ratio {drive.time_ratio:.2f}"
+            )
+        else:
+            ax.set_title(f"Six-bar: drive {six.drive_grashof}, "
+                         f"{'turns fully' if six.crank_turns_fully else 'does not turn fully'}")
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.margins(0.08)
+    if legend:
+        _legend(ax, handles)
+    return ax
+
+
+def drive_map(
+    dmap: burmester.DriveMap,
+    *,
+    best: int = 3,
+    rank_by: RankBy = "balanced",
+    transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a drive map: where the motor's crank pivot ``D0`` may go.
+
+    Shades the candidate pivots with a drive (the six-bar turns fully, gid
+    ``"drive-map"``) and those that meet the limits, draws contours of the
+    smaller minimum transmission angle of the two loops over a crank turn
+    (``"transmission"``), ``A0``, ``E``'s swing from the first pose's end to
+    the last (``"attachment-swing"``), the line through its two ends where
+    the time ratio is 1 (``"unit-time-ratio"``, the classic construction),
+    and the best drives by ``rank_by`` as numbered stars (``"drives"``).
+
+    Parameters:
+        dmap: the map (:meth:`burmester.SynthesizedFourBar.drive_map`).
+        best: how many of the best drives to mark (0: none).
+        rank_by: their ranking (:meth:`burmester.DriveMap.best_drives`).
+        transmission_levels: the contour levels, degrees.
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    ax = _new_axes(ax)
+    extent = dmap.extent
+    cat = np.where(dmap.acceptable, 2, np.where(dmap.valid, 1, 0)).astype(np.int8)
+    img = ax.imshow(cat, origin="lower", extent=extent, cmap=DRIVE_MAP_CMAP, vmin=0, vmax=2,
+                    interpolation="nearest", zorder=0)
+    img.set_gid("drive-map")
+    handles: List[Artist] = [
+        Patch(facecolor="#c6dbef", edgecolor="0.5", label="crank pivot with a drive"),
+        Patch(facecolor="#4292c6", edgecolor="0.5", label="a drive that meets the limits"),
+    ]
+    mu = np.degrees(dmap.min_transmission_rad)
+    if np.isfinite(mu).any():
+        xs, ys = dmap.grid.cell_centers()
+        cs = ax.contour(xs, ys, mu, levels=sorted(transmission_levels), colors="#636363",
+                        linewidths=0.8, zorder=3)
+        cs.set_gid("transmission")
+        ax.clabel(cs, fmt="%g°", fontsize=7)
+        handles.append(Line2D([], [], color="#636363", linewidth=0.8,
+                              label="min transmission of both loops, deg"))
+    a0 = dmap.linkage.driving[0]
+    ea, eb = dmap.attachment_ends
+    rho = math.dist(a0, ea)
+    t0 = math.atan2(ea[1] - a0[1], ea[0] - a0[0])
+    t1 = math.atan2(eb[1] - a0[1], eb[0] - a0[0])
+    sweep = (t1 - t0 + math.pi) % (2 * math.pi) - math.pi
+    ts = t0 + sweep * np.linspace(0.0, 1.0, 64)
+    (sw,) = ax.plot(a0[0] + rho * np.cos(ts), a0[1] + rho * np.sin(ts), color=DRIVE_COLOR,
+                    linewidth=2.5, zorder=5, label="E's swing (first pose to last)")
+    sw.set_gid("attachment-swing")
+    handles.append(sw)
+    seg = clip_line(ea, (eb[0] - ea[0], eb[1] - ea[1]), extent)
+    if seg:
+        (ln,) = ax.plot([seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]], color=DRIVE_COLOR,
+                        linestyle="--", linewidth=0.9, zorder=4, label="time ratio 1 (beyond the ends)")
+        ln.set_gid("unit-time-ratio")
+        handles.append(ln)
+    handles.append(_markers(ax, [a0], "input-pivot", "input pivot A0", marker="^", markersize=9,
+                            color="0.2", zorder=6))
+    drives = dmap.best_drives(best, rank_by=rank_by) if best > 0 else []
+    if drives:
+        handles.append(_markers(ax, [d.drive_pivot for d in drives], "drives", f"best drives ({rank_by})",
+                                marker="*", markersize=13, color="#ffd700", markeredgecolor="black",
+                                zorder=7))
+    if labels:
+        _label(ax, a0, "A0")
+        _label(ax, ea, "E1")
+        for k, d in enumerate(drives, start=1):
+            _label(ax, d.drive_pivot, str(k))
+        ax.set_title(f"Drive map: the motor's crank pivot D0 (swing margin {dmap.swing_margin_deg:g} deg)")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    _finish(ax, extent, legend, handles)
+    return ax
+
+
+def animate_sixbar(
+    obj: Union[burmester.Drive, burmester.SixBar],
+    path: Union[str, Path],
+    *,
+    task: Optional[Task] = None,
+    frames: int = 120,
+    fps: int = 24,
+    dpi: int = 80,
+) -> FuncAnimation:
+    """Write an animation of a six-bar over one full crank turn (the motor
+    turning at a constant speed), from pose 1 in the motor's direction for a
+    drive. The file is written beside ``path`` and moved into place when
+    complete.
+
+    Parameters:
+        obj: a :class:`burmester.Drive` or a :class:`burmester.SixBar` whose
+            crank turns fully.
+        path: ``.gif`` (Pillow) or ``.mp4`` (ffmpeg).
+        task: the task whose poses to mark (a drive knows its own).
+        frames: frames per crank turn (2 to :data:`MAX_FRAMES`).
+        fps: frames per second (1 to :data:`MAX_FPS`).
+        dpi: resolution (1 to :data:`MAX_DPI`).
+
+    Returns:
+        The matplotlib animation (already saved).
+
+    Raises:
+        burmester.InvalidInputError: another file type, a folder that does
+            not exist, a count out of range, or a six-bar whose crank does
+            not turn fully.
+        RuntimeError: ``.mp4`` without ffmpeg.
+    """
+
+    six, drive = _drive_of(obj)
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in (".gif", ".mp4"):
+        raise burmester.InvalidInputError(f"animation file must end in .gif or .mp4, got {path.name!r}")
+    frames = _count_in("frames", frames, 2, MAX_FRAMES)
+    fps = _count_in("fps", fps, 1, MAX_FPS)
+    dpi = _count_in("dpi", dpi, 1, MAX_DPI)
+    if not path.parent.is_dir():
+        raise burmester.InvalidInputError(
+            f"cannot write {path}: the folder {str(path.parent)!r} does not exist; create it first"
+        )
+    if not six.crank_turns_fully:
+        raise burmester.InvalidInputError(
+            "the six-bar's crank does not turn fully (its drive is not a crank-rocker, or a loop "
+            f"toggles at crank angles {[round(math.degrees(a), 2) for a in six.dead_positions]} deg)"
+        )
+    if suffix == ".mp4" and not matplotlib.animation.writers.is_available("ffmpeg"):
+        raise RuntimeError("writing .mp4 needs ffmpeg on the PATH; install it, or write a .gif")
+    angles = _turn_angles(six, drive, frames)
+    polys = [_sixbar_polys(six, float(t)) for t in angles]
+    fig, ax = plt.subplots(figsize=(6.0, 5.0))
+    _draw_sixbar_static(ax, six, drive, task, True, True)
+    allpts = np.vstack([np.vstack(p) for p in polys])
+    lo, hi = allpts.min(axis=0), allpts.max(axis=0)
+    pad = 0.08 * float(max(hi - lo))
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.set_aspect("equal")
+    title = "Six-bar over a crank turn"
+    if drive is not None:
+        title = f"Motor-driven: time ratio {drive.time_ratio:.2f}, min transmission {drive.min_transmission_deg:.0f} deg"
+    ax.set_title(title)
+    (drive_art,) = ax.plot([], [], color=DRIVE_COLOR, linewidth=2.5, marker="o", markersize=5, zorder=8)
+    drive_art.set_gid("moving-drive")
+    (motion_art,) = ax.plot([], [], color="#333333", linewidth=2.5, marker="o", markersize=5, zorder=8)
+    motion_art.set_gid("moving-linkage")
+    tern = Polygon(polys[0][1], closed=True, facecolor="#fdae6b", edgecolor="#e6550d", alpha=0.6, zorder=7)
+    tern.set_gid("moving-input")
+    ax.add_patch(tern)
+    tri = Polygon(polys[0][3], closed=True, facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.6, zorder=8)
+    tri.set_gid("moving-coupler")
+    ax.add_patch(tri)
+
+    def update(i: int) -> List[Artist]:
+        dr, te, mo, co = polys[i]
+        drive_art.set_data(dr[:, 0], dr[:, 1])
+        motion_art.set_data(mo[:, 0], mo[:, 1])
+        tern.set_xy(te)
+        tri.set_xy(co)
+        return [drive_art, motion_art, tern, tri]
+
+    anim = FuncAnimation(fig, update, frames=len(polys), interval=1000.0 / fps, blit=False)
+    writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io), as animate writes.
+    try:
+        with _io.atomic_path(path) as tmp:
+            anim.save(str(tmp), writer=writer, dpi=dpi)
+    finally:
+        plt.close(fig)
+    return anim

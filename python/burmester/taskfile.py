@@ -6,6 +6,8 @@ limits a good linkage must meet. Only ``[[pose]]`` and ``[driven]`` are
 required::
 
     # Lengths in any one unit; angles in degrees, counter-clockwise from +x.
+    units = "mm"          # optional: the unit's name, said in tables, on axes, in CAD files
+
     [[pose]]              # pose 1: where the coupler point is, and the coupler's angle
     x = 0.0
     y = 0.0
@@ -35,14 +37,36 @@ required::
     max_link_ratio = 10.0
     input = "any"         # "any", "crank" (turns fully) or "rocker"
 
+``units`` (top level, before the tables) names the unit of every length
+in the file: any name (``"mm"``, ``"in"``, ``"m"``); it scales nothing, and
+is only said (see :mod:`burmester.units`). Without it lengths are bare
+numbers (CAD exports record millimetres unless told otherwise).
+
+Without ``[driven]``, a three-pose file leaves both fixed pivots to
+``burmester design``, which searches them (the other commands need a driven
+pivot). ``[limits]`` may also bound the linkage's size: ``max_size_ratio``
+(its size over the task's) and ``max_link_length`` (the longest link, in the
+task's units). A ``[space]`` table (any number of poses) says where the
+linkage may be, for ``burmester design``::
+
+    [space]
+    pivot_x = [-60.0, 60.0]          # both fixed pivots inside this box ...
+    pivot_y = [-120.0, -10.0]
+    # pivot_polygon = [[x, y], ...]  # ... or inside this simple polygon
+    obstacles = [[[0, 0], [10, 0], [10, 10]]]   # convex keep-out polygons
+    link_width = 8.0                 # the moving links' width
+    envelope = [[x, y], ...]         # the moving links stay inside (around the poses)
+
 Four or five ``[[pose]]`` tables make a four- or five-position task (the
-Burmester curves and points, drawn by ``burmester map``): it takes only
-``[[pose]]``, ``[view]`` and, for four poses, ``[limits]`` (those of the pair
-map, ``burmester pairs``) and an optional ``[driven]``: a driven dyad on the
-curves (``center`` on the center-point curve, or ``circle`` on the
-circle-point curve, each within the core's tolerance), for which ``burmester
-map`` draws the arcs of driving dyads branch-free with it. Five poses take
-neither. Its default view is :func:`default_curve_view`.
+Burmester curves and points, drawn by ``burmester map``): it takes
+``[[pose]]``, ``[view]``, ``[limits]`` (for four poses those of the pair map,
+``burmester pairs``; for five, those the four-bars of the Burmester points
+are judged by, ``burmester pivots``) and, for four poses, an optional
+``[driven]``: a driven dyad on the curves (``center`` on the center-point
+curve, or ``circle`` on the circle-point curve, each within the core's
+tolerance), for which ``burmester map`` draws the arcs of driving dyads
+branch-free with it. Five poses take no ``[driven]`` (their dyads are the
+Burmester points). Its default view is :func:`default_curve_view`.
 
 The view becomes a :class:`burmester.Grid` and the limits a
 :class:`burmester.DesignLimits` (which validates them); older files may say
@@ -61,7 +85,8 @@ from pathlib import Path
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import burmester
-from burmester._burmester import DesignLimits, Filemon, Grid, Task
+from burmester._burmester import DesignLimits, Filemon, Grid, Space, Task
+from burmester.units import check_units
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -121,21 +146,35 @@ class TaskSpec:
     view: Grid
     limits: DesignLimits = field(default_factory=DesignLimits)
     source: str = "<example>"
+    #: The unit of the task's lengths (``units = "mm"`` in the file), or
+    #: None: said in tables, on axes and in CAD files, never scaled.
+    units: Optional[str] = None
+    #: Where the linkage may be (``[space]``), for ``burmester design``;
+    #: None: anywhere.
+    space: Optional[Space] = None
 
+    @property
     def task(self) -> Task:
-        """The :class:`burmester.Task` of the poses."""
+        """The :class:`burmester.Task` of the poses (a property, as the
+        results of the native classes are)."""
         return Task(list(self.poses))
 
     def filemon(self) -> Filemon:
         """Filemon's construction for the driven dyad. Raises
         :class:`TaskFileError` for a task of four or five poses (no driven
         dyad: only ``burmester map`` draws those)."""
+        if len(self.poses) == 3 and self.driven_center is None:
+            raise TaskFileError(
+                f"{self.source}: has no [driven] table: give the driven crank's fixed pivot "
+                "(center = [x, y]) for this command, or run 'burmester design', which searches "
+                "both fixed pivots"
+            )
         if len(self.poses) != 3 or self.driven_center is None:
             raise TaskFileError(
                 f"{self.source}: has {len(self.poses)} poses; Filemon's construction, the maps, "
                 "pivots and linkages need three (burmester map draws four or five poses)"
             )
-        return self.task().filemon(self.driven_center)
+        return self.task.filemon(self.driven_center)
 
 
 def example() -> TaskSpec:
@@ -178,6 +217,18 @@ def has_pole_triangle(task: Task) -> bool:
     return len(task) == 3 and all(p.point is not None for p in task.poles)
 
 
+def default_task_view(task: Task, grid: int = DEFAULT_GRID) -> Grid:
+    """A square view around the poses and poles of a three-pose task
+    without a driven dyad, twice as wide as the box around them."""
+    pts: List[Point] = [p.point for p in task.poles if p.point is not None]
+    pts += [(p[0], p[1]) for p in task.poses]
+    xs = [p[0] for p in pts]
+    ys = [p[1] for p in pts]
+    cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    half = max(max(xs) - min(xs), max(ys) - min(ys), task.scale)
+    return Grid(cx - half, cx + half, cy - half, cy + half, grid, grid)
+
+
 def default_view(filemon: Filemon, grid: int = DEFAULT_GRID) -> Grid:
     """A square view around the poles, the task's points and both pivots of the
     driven dyad, twice as wide as the box around them, with ``grid`` samples
@@ -206,6 +257,63 @@ def default_circle_view(filemon: Filemon) -> Tuple[float, float, float, float]:
     cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
     half = max(max(xs) - min(xs), max(ys) - min(ys), filemon.task.scale) * 0.75
     return (cx - half, cx + half, cy - half, cy + half)
+
+
+def in_view(point: Sequence[float], extent: Sequence[float]) -> bool:
+    """Whether ``point`` lies in the view ``(xmin, xmax, ymin, ymax)``
+    (its edges included)."""
+    x0, x1, y0, y1 = extent
+    return x0 <= point[0] <= x1 and y0 <= point[1] <= y1
+
+
+def outside_view(points: Sequence[Tuple[str, Optional[Sequence[float]]]],
+                 extent: Sequence[float]) -> List[Tuple[str, Point]]:
+    """The named points (``(name, (x, y))``; None for a point at infinity,
+    left out) that lie outside the view ``(xmin, xmax, ymin, ymax)``, in
+    order: what a picture of that view cannot show, and the summary must
+    say."""
+    return [(name, (float(p[0]), float(p[1]))) for name, p in points
+            if p is not None and not in_view(p, extent)]
+
+
+def curve_plane_points(task: Task, driven: Optional[Point] = None,
+                       plane: str = "center") -> List[Tuple[str, Optional[Point]]]:
+    """The named points a picture of four or five poses marks (None for a
+    pole at infinity): the poses; in the center-point plane the poles, and
+    for four poses the points ``Q_jk`` and the driven pivot ``C0``, for five
+    the Burmester points ``Bk``; in the circle-point plane of four poses the
+    points ``Q'jk``, and for a driven dyad its ``C1`` and ``C'k``."""
+    circle = plane == "circle"
+    pts: List[Tuple[str, Optional[Point]]] = [(f"pose {k}", (q[0], q[1])) for k, q in enumerate(task.poses, start=1)]
+    if not circle:
+        pts += [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in task.poles]
+    if len(task) == 4:
+        prime = "'" if circle else ""
+        pts += [("Q{}{}{}".format(prime, *q.pair), q.circle if circle else q.center)
+                for q in task.coincidence_points()]
+        if driven is not None:
+            if circle:
+                pts.append(("C1", task.circle_point(driven)))
+                pts += [(f"C'{k}", task.displace(driven, k, 1)) for k in range(1, 5)]
+            else:
+                pts.append(("C0", driven))
+    elif len(task) == 5 and not circle:
+        pts += [(f"B{k}", c) for k, (c, _) in enumerate(task.burmester_points(), start=1)]
+    return pts
+
+
+def describe_outside(outside: Sequence[Tuple[str, Sequence[float]]], extent: Sequence[float],
+                     units: Optional[str] = None) -> str:
+    """The points outside the view in words, for a summary or a note on a
+    picture: ``"B3 (12.300, 40.100) lies outside the view x [-5, 5], y [-5,
+    5]"`` (``""`` when none)."""
+    if not outside:
+        return ""
+    x0, x1, y0, y1 = extent
+    listed = ", ".join(f"{name} ({round(p[0], 3) + 0.0:.3f}, {round(p[1], 3) + 0.0:.3f})" for name, p in outside)
+    verb = "lies" if len(outside) == 1 else "lie"
+    unit = f" {units}" if units else ""
+    return f"{listed} {verb} outside the view x [{x0:.4g}, {x1:.4g}], y [{y0:.4g}, {y1:.4g}]{unit}"
 
 
 # ---------------------------------------------------------------------------
@@ -254,6 +362,8 @@ class _Reader:
                 hint = ""
                 if key in ("angle", "angle_rad", "theta", "phi"):
                     hint = "; angles in task files are in degrees: use angle_deg"
+                if key == "units":
+                    hint = "; units = \"...\" goes at the top of the file, before the first table"
                 expected = ", ".join(allowed)
                 raise self.fail(
                     f"{where}.{key}", f"unknown key (expected one of: {expected}){hint}"
@@ -262,7 +372,16 @@ class _Reader:
     def number(self, where: str, value: object, what: str = "a number") -> float:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.fail(where, f"expected {what}, found {_describe(value)}")
-        x = float(value)
+        try:
+            x = float(value)
+        except OverflowError:
+            # An integer beyond a float's range (about 1.8e308).
+            digits = len(str(abs(int(value))))
+            raise self.fail(
+                where,
+                f"expected {what} within +-1.8e308, found an integer of {digits} digits; "
+                "write the value you mean (as a float, for example 1.5e30)",
+            ) from None
         if not math.isfinite(x):
             raise self.fail(where, f"expected a finite number, found {value}")
         return x
@@ -297,7 +416,8 @@ class _Reader:
             if isinstance(n, bool) or not isinstance(n, int):
                 raise self.fail(f"{where}[{i}]", f"expected a whole number, found {_describe(n)}")
             if not 2 <= n <= 20000:
-                raise self.fail(f"{where}[{i}]", f"expected 2 to 20000 samples, found {n}")
+                found = str(n) if len(str(n)) <= 20 else f"an integer of {len(str(abs(n)))} digits"
+                raise self.fail(f"{where}[{i}]", f"expected 2 to 20000 samples, found {found}")
             out.append(n)
         return out[0], out[1]
 
@@ -310,9 +430,12 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     """
     r = _Reader(source)
     for key in doc:
-        if key not in ("pose", "driven", "view", "limits"):
+        if key not in ("pose", "driven", "view", "limits", "space", "units"):
             hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
-            raise r.fail(key, f"unknown top-level key (expected [[pose]], [driven], [view], [limits]){hint}")
+            if key in ("unit", "length_unit", "lengths"):
+                hint = ' (the unit of the lengths is units = "mm")'
+            raise r.fail(key, f"unknown top-level key (expected units, [[pose]], [driven], [view], [limits], [space]){hint}")
+    units = _units(r, doc)
 
     # [[pose]] x3 (the branch maps of Filemon's construction need three), or
     # x4, x5 (the Burmester curves and points)
@@ -340,27 +463,106 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     except burmester.BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     if len(poses) > 3:
-        return _parse_many(r, doc, task, tuple(poses), source)
+        return _parse_many(r, doc, task, tuple(poses), source, units)
 
-    # [driven]
-    center = _driven(r, doc, task, required=True)
-    assert center is not None
-    try:
-        filemon = task.filemon(center)
-    except burmester.BurmesterError as e:
-        raise r.fail("driven.center", f"cannot be used: {e}") from None
+    # [driven]: optional; without it `burmester design` searches both pivots
+    center = _driven(r, doc, task, required=False)
+    if center is not None:
+        try:
+            filemon = task.filemon(center)
+        except burmester.BurmesterError as e:
+            raise r.fail("driven.center", f"cannot be used: {e}") from None
+        default = default_view(filemon).extent
+    else:
+        default = default_task_view(task).extent
 
     # [view]
-    view = _view(r, doc, default_view(filemon).extent)
+    view = _view(r, doc, default)
 
     limits = _limits(r, doc)
-    return TaskSpec(tuple(poses), center, view, limits, source)
+    return TaskSpec(tuple(poses), center, view, limits, source, units=units, space=_space(r, doc))
+
+
+def _units(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
+    """The top-level ``units`` (a unit name), or None when absent."""
+    if "units" not in doc:
+        return None
+    value = doc["units"]
+    if isinstance(value, dict):
+        raise r.fail("[units]", 'expected units = "mm" (a name, at the top of the file, before the tables), '
+                                "found a table")
+    try:
+        return check_units(value, "units")
+    except burmester.InvalidInputError as e:
+        raise r.fail("units", f"{e}; found {_describe(value)}") from None
+
+
+def _space(r: _Reader, doc: Mapping[str, Any]) -> Optional[Space]:
+    """The ``[space]`` table as a :class:`burmester.Space` (None when
+    absent)."""
+    t = r.table(doc, "space", required=False)
+    if t is None:
+        return None
+    keys = ["pivot_x", "pivot_y", "pivot_polygon", "obstacles", "link_width", "envelope",
+            "travel_samples"]
+    r.only_keys("space", t, keys)
+    if ("pivot_x" in t) != ("pivot_y" in t):
+        missing = "pivot_y" if "pivot_x" in t else "pivot_x"
+        raise r.fail(f"space.{missing}", "missing; give both pivot_x = [min, max] and pivot_y = [min, max]")
+    if "pivot_x" in t and "pivot_polygon" in t:
+        raise r.fail("[space]", "expected a pivot box (pivot_x, pivot_y) or a pivot_polygon, found both")
+
+    def polygon(key: str, value: object) -> List[Point]:
+        if not isinstance(value, list) or len(value) < 3:
+            raise r.fail(f"space.{key}", f"expected a polygon [[x, y], ...] of at least 3 points, "
+                                         f"found {_describe(value)}")
+        return [r.point(f"space.{key}[{k}]", p) for k, p in enumerate(value)]
+
+    kw: Dict[str, Any] = {}
+    if "pivot_x" in t:
+        x0, x1 = r.interval("space.pivot_x", t["pivot_x"])
+        y0, y1 = r.interval("space.pivot_y", t["pivot_y"])
+        kw["pivot_box"] = (x0, x1, y0, y1)
+    if "pivot_polygon" in t:
+        kw["pivot_polygon"] = polygon("pivot_polygon", t["pivot_polygon"])
+    if "obstacles" in t:
+        obs = t["obstacles"]
+        if not isinstance(obs, list):
+            raise r.fail("space.obstacles", f"expected a list of polygons, found {_describe(obs)}")
+        kw["obstacles"] = [polygon(f"obstacles[{k}]", o) for k, o in enumerate(obs)]
+    if "envelope" in t:
+        kw["envelope"] = polygon("envelope", t["envelope"])
+    if "link_width" in t:
+        w = r.number("space.link_width", t["link_width"], "a number (the links' width, task units)")
+        if w < 0:
+            raise r.fail("space.link_width", f"expected a width of at least 0, found {w:g}")
+        kw["link_width"] = w
+    if "travel_samples" in t:
+        n = t["travel_samples"]
+        if isinstance(n, bool) or not isinstance(n, int) or not 2 <= n <= 4096:
+            raise r.fail("space.travel_samples", f"expected a whole number from 2 to 4096, found {_describe(n)}")
+        kw["travel_samples"] = n
+    try:
+        return Space(**kw)
+    except burmester.BurmesterError as e:
+        # The core names the field: "pivot_box xmax", "pivot_polygon",
+        # "envelope", "obstacle 2", "link_width", ...
+        name = str(getattr(e, "name", "") or "")
+        where = "[space]"
+        if name.startswith("pivot_box"):
+            where = "space.pivot_y" if name.endswith(("ymin", "ymax")) else "space.pivot_x"
+        elif name.startswith("obstacle"):
+            where = "space.obstacles"
+        elif name in keys:
+            where = f"space.{name}"
+        raise r.fail(where, str(e)) from None
 
 
 def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
     """The ``[limits]`` table as a DesignLimits (the defaults when absent)."""
     lim_t = r.table(doc, "limits", required=False) or {}
-    keys = ["min_transmission_deg", "max_link_ratio", "input", "require_crank"]
+    keys = ["min_transmission_deg", "max_link_ratio", "input", "require_crank", "max_size_ratio",
+            "max_link_length"]
     r.only_keys("limits", lim_t, keys)
     defaults = DesignLimits()
     mu = defaults.min_transmission_deg
@@ -384,8 +586,14 @@ def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
         if not isinstance(crank, bool):
             raise r.fail("limits.require_crank", f"expected true or false, found {_describe(crank)}")
         input_ = "crank" if crank else "any"
+    sizes = []
+    for key in ("max_size_ratio", "max_link_length"):
+        v = math.inf
+        if key in lim_t:
+            v = r.number(f"limits.{key}", lim_t[key], "a number")
+        sizes.append(v)
     try:
-        limits = DesignLimits(mu, ratio, input_)
+        limits = DesignLimits(mu, ratio, input_, sizes[0], sizes[1])
     except burmester.InvalidInputError as e:
         # The core validates; its error names the limit and its range.
         if e.cause != "outside_range":
@@ -447,30 +655,33 @@ def _driven(r: _Reader, doc: Mapping[str, Any], task: Task, required: bool) -> O
 
 
 def _parse_many(
-    r: _Reader, doc: Mapping[str, Any], task: Task, poses: Tuple[Tuple[float, float, float], ...], source: str
+    r: _Reader, doc: Mapping[str, Any], task: Task, poses: Tuple[Tuple[float, float, float], ...], source: str,
+    units: Optional[str] = None,
 ) -> TaskSpec:
-    """The rest of a task file of four or five poses: ``[view]``, and for
-    four ``[limits]`` (the pair map's) and ``[driven]`` (a driven dyad on
-    the curve, whose branch-free driving arcs ``burmester map`` draws)."""
-    if len(poses) == 5:
-        for key, what in (("driven", "or four poses (a driven dyad on the center-point curve)"),
-                          ("limits", "or four poses (the pair map)")):
-            if key in doc:
-                raise r.fail(
-                    f"[{key}]",
-                    f"is for three ({what}), found 5 poses; leave [{key}] out of a five-pose task",
-                )
+    """The rest of a task file of four or five poses: ``[view]``,
+    ``[limits]`` (the pair map's, or those the Burmester four-bars of five
+    poses are judged by) and, for four, ``[driven]`` (a driven dyad on the
+    curve, whose branch-free driving arcs ``burmester map`` draws)."""
+    if len(poses) == 5 and "driven" in doc:
+        raise r.fail(
+            "[driven]",
+            "is for three or four poses (a driven dyad on the center-point curve), found 5 poses: "
+            "the dyads of five poses are their Burmester points; leave [driven] out",
+        )
     try:
         default = default_curve_view(task)
     except burmester.BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
-    limits = _limits(r, doc) if len(poses) == 4 else DesignLimits()
+    limits = _limits(r, doc)
     driven = _driven(r, doc, task, required=False) if len(poses) == 4 else None
-    return TaskSpec(poses, driven, _view(r, doc, default), limits, source)
+    return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units=units, space=_space(r, doc))
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
-    """A :class:`TaskSpec` from the text of a task file."""
+    """A :class:`TaskSpec` from the text of a task file (a leading UTF-8
+    byte-order mark, which some editors write, is ignored)."""
+    if text.startswith("\ufeff"):
+        text = text[1:]
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
@@ -492,39 +703,101 @@ def load(path: Union[str, Path]) -> TaskSpec:
 
 
 def dumps(spec: TaskSpec) -> str:
-    """The text of a task file for ``spec`` (angles written in degrees)."""
-    lines = [
-        "# burmester task file (TOML).",
-        "# Lengths in any one unit; angles in DEGREES, counter-clockwise from +x.",
-        "",
-    ]
+    """The text of a task file for ``spec`` (angles written in degrees),
+    with comments saying what each table and key is: the file
+    ``burmester example`` prints, to edit. Written by tomlkit (a
+    maintained TOML writer that keeps comments); :func:`loads` reads it
+    back to the same task."""
+    import tomlkit
+
+    def note(item: Any, text: str) -> Any:
+        """``item`` with the comment ``text`` after it, two spaces apart."""
+        item.comment(text)
+        item.trivia.comment_ws = "  "
+        return item
+
+    doc = tomlkit.document()
+    doc.add(tomlkit.comment("burmester task file (TOML)."))
+    doc.add(tomlkit.comment("Lengths in any one unit; angles in DEGREES, counter-clockwise from +x."))
+    if spec.units is not None:
+        doc.add("units", note(tomlkit.item(spec.units),
+                              "the unit of the lengths: said in tables, on axes and in CAD files, never scaled"))
+    else:
+        doc.add(tomlkit.comment('units = "mm"  # the unit of the lengths, if you name one: said in tables, on axes '
+                                "and in CAD files"))
+    doc.add(tomlkit.nl())
+    poses = tomlkit.aot()
     for k, (x, y, a) in enumerate(spec.poses, start=1):
-        note = ": x, y where the coupler point is, angle_deg the coupler's angle" if k == 1 else ""
-        lines += [f"[[pose]]  # pose {k}{note}", f"x = {x!r}", f"y = {y!r}", f"angle_deg = {math.degrees(a)!r}", ""]
+        what = ": x, y where the coupler point is, angle_deg the coupler's angle" if k == 1 else ""
+        pose = note(tomlkit.table(), f"pose {k}{what}")
+        pose.add("x", float(x))
+        pose.add("y", float(y))
+        pose.add("angle_deg", math.degrees(a))
+        poses.append(pose)
+    doc.add("pose", poses)
     if spec.driven_center is not None:
-        cx, cy = spec.driven_center
-        lines += [
-            "[driven]  # the driven dyad: its fixed pivot C0 (or circle = [x, y], its moving pivot at pose 1)",
-            f"center = [{cx!r}, {cy!r}]",
-            "",
-        ]
+        driven = note(tomlkit.table(),
+                      "the driven dyad: its fixed pivot C0 (or circle = [x, y], its moving pivot at pose 1)")
+        driven.add("center", [float(c) for c in spec.driven_center])
+        doc.add("driven", driven)
     v = spec.view
-    lines += [
-        "[view]  # the driving crank's center-point plane: drawn, and searched for pivots",
-        f"x = [{v.xmin!r}, {v.xmax!r}]  # xmin, xmax",
-        f"y = [{v.ymin!r}, {v.ymax!r}]  # ymin, ymax",
-        f"grid = [{v.nx}, {v.ny}]  # samples along x and y",
-        "",
-    ]
-    four_with_limits = len(spec.poses) == 4 and spec.limits != DesignLimits()
-    if len(spec.poses) > 3 and not four_with_limits:
-        return "\n".join(lines)
-    lim = spec.limits
-    lines += [
-        "[limits]  # what an acceptable linkage must meet",
-        f"min_transmission_deg = {lim.min_transmission_deg!r}  # over the whole travel through the poses, degrees",
-        f"max_link_ratio = {lim.max_link_ratio!r}  # longest link / shortest link",
-        f'input = "{lim.input}"  # the driving link: "any", "crank" (turns fully) or "rocker"',
-        "",
-    ]
-    return "\n".join(lines)
+    view = note(tomlkit.table(), "the driving crank's center-point plane: drawn, and searched for pivots")
+    view.add("x", note(tomlkit.item([v.xmin, v.xmax]), "xmin, xmax"))
+    view.add("y", note(tomlkit.item([v.ymin, v.ymax]), "ymin, ymax"))
+    view.add("grid", note(tomlkit.item([v.nx, v.ny]), "samples along x and y"))
+    doc.add("view", view)
+    if len(spec.poses) == 3 or spec.limits != DesignLimits():  # four and five poses: when not the defaults
+        lim = spec.limits
+        limits = note(tomlkit.table(), "what an acceptable linkage must meet")
+        limits.add("min_transmission_deg", note(tomlkit.item(float(lim.min_transmission_deg)),
+                                                "over the whole travel through the poses, degrees"))
+        limits.add("max_link_ratio", note(tomlkit.item(float(lim.max_link_ratio)), "longest link / shortest link"))
+        limits.add("input", note(tomlkit.item(str(lim.input)),
+                                 'the driving link: "any", "crank" (turns fully) or "rocker"'))
+        if math.isfinite(lim.max_size_ratio):
+            limits.add("max_size_ratio", note(tomlkit.item(float(lim.max_size_ratio)),
+                                              "the linkage's size / the task's size"))
+        if math.isfinite(lim.max_link_length):
+            limits.add("max_link_length", note(tomlkit.item(float(lim.max_link_length)),
+                                               "the longest link, task units"))
+        doc.add("limits", limits)
+    if spec.space is not None:
+        doc.add("space", _dump_space(spec.space, note))
+    return tomlkit.dumps(doc)
+
+
+def _dump_space(space: Space, note: Any) -> Any:
+    """The ``[space]`` table (tomlkit), ``note`` adding a comment to an item."""
+    import tomlkit
+
+    def poly(p: Sequence[Point]) -> List[List[float]]:
+        return [[float(x), float(y)] for x, y in p]
+
+    t = note(tomlkit.table(), "where the linkage may be (burmester design)")
+    if space.pivot_box is not None:
+        x0, x1, y0, y1 = space.pivot_box
+        t.add("pivot_x", note(tomlkit.item([float(x0), float(x1)]), "both fixed pivots inside this box"))
+        t.add("pivot_y", tomlkit.item([float(y0), float(y1)]))
+    if space.pivot_polygon is not None:
+        t.add("pivot_polygon", tomlkit.item(poly(space.pivot_polygon)))
+    if space.obstacles:
+        t.add("obstacles", tomlkit.item([poly(o) for o in space.obstacles]))
+    if space.link_width:
+        t.add("link_width", float(space.link_width))
+    if space.envelope is not None:
+        t.add("envelope", tomlkit.item(poly(space.envelope)))
+    if space.travel_samples != 64:
+        t.add("travel_samples", int(space.travel_samples))
+    return t
+
+
+def save(spec: TaskSpec, path: Union[str, Path], *, overwrite: bool = True) -> Path:
+    """Write ``spec`` as a task file (:func:`dumps`) to ``path``: whole to a
+    temporary file beside it, moved into place when complete
+    (:mod:`burmester._io`), so a write error or Ctrl-C leaves no partial
+    file. ``overwrite=False`` raises :class:`FileExistsError` when ``path``
+    exists at the move (an existing file is never replaced). Returns the
+    path."""
+    from burmester import _io
+
+    return _io.write_text(path, dumps(spec), overwrite=overwrite)

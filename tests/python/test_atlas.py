@@ -48,7 +48,7 @@ def test_cells_equal_the_reduced_solution_maps(atlas):
             assert atlas.valid[j, i]
             assert atlas.count[j, i] == int(m.acceptable.sum())
             assert atlas.branch_free_fraction[j, i] == m.branch_free.sum() / DRIVING.size
-            best = m.best_pivots(1, rank_by="transmission")
+            best = m.best_pivots(1, rank_by=atlas.rank_by)
             if not best:
                 assert math.isnan(atlas.best_transmission_deg[j, i])
                 assert np.isnan(atlas.best_driving[j, i]).all()
@@ -58,6 +58,8 @@ def test_cells_equal_the_reduced_solution_maps(atlas):
             assert tuple(atlas.best_driving[j, i]) == p.center
             assert tuple(atlas.best_index[j, i]) == p.index
             assert atlas.best_transmission_deg[j, i] == np.degrees(np.float64(m.min_transmission_rad[p.index]))
+            assert atlas.best_score[j, i] == p.score
+            assert atlas.best_size_ratio[j, i] == np.float64(m.size_ratio[p.index])
             assert atlas.best_margin[j, i] == p.margin
             assert atlas.best_link_ratio[j, i] == np.float64(m.link_ratio[p.index])
     assert with_best >= 20
@@ -74,11 +76,18 @@ def test_grid_tuples_and_grids_agree(atlas):
 def test_best_pairs_pickle_and_repr(atlas):
     pairs = atlas.best_pairs(3)
     assert len(pairs) == 3
-    top = np.nanmax(atlas.best_transmission_deg)
-    assert pairs[0].min_transmission_deg == top
-    assert pairs[0].min_transmission_deg >= pairs[1].min_transmission_deg >= pairs[2].min_transmission_deg
+    # By the atlas's ranking (balanced by default), best first.
+    assert atlas.rank_by == "balanced"
+    assert pairs[0].score == np.nanmax(atlas.best_score)
+    assert pairs[0].score >= pairs[1].score >= pairs[2].score
     lk = pairs[0].linkage(Task(POSES))
     assert abs(lk.figures.min_transmission_deg - pairs[0].min_transmission_deg) < 1e-3
+    assert abs(lk.score("balanced") - pairs[0].score) < 1e-6
+    # By transmission, the old order.
+    by_mu = pivot_atlas(Task(POSES), DRIVEN, DRIVING, rank_by="transmission", **LIMITS)
+    top = by_mu.best_pairs(2)
+    assert top[0].min_transmission_deg == np.nanmax(by_mu.best_transmission_deg)
+    assert by_mu.rank_by == "transmission" and "rank_by='transmission'" in repr(by_mu)
     back = pickle.loads(pickle.dumps(atlas))
     assert back == atlas and repr(back) == repr(atlas)
     assert "PivotAtlas(driven=7x6" in repr(atlas)
@@ -194,7 +203,7 @@ def test_cli_atlas_picture_json_and_errors(tmp_path, capsys):
     v = doc["view"]
     from burmester import taskfile
 
-    want = pivot_atlas(taskfile.example().task(), (*v["x"], *v["y"], 6, 5), (*v["x"], *v["y"], 20, 16),
+    want = pivot_atlas(taskfile.example().task, (*v["x"], *v["y"], 6, 5), (*v["x"], *v["y"], 20, 16),
                        min_transmission_deg=doc["limits"]["min_transmission_deg"],
                        max_link_ratio=doc["limits"]["max_link_ratio"], input=doc["limits"]["input"])
     assert doc["best"][0]["min_transmission_deg"] == want.best_pairs(1)[0].min_transmission_deg

@@ -107,12 +107,14 @@ def test_pivots_table_and_json(capsys):
     table = capsys.readouterr().out.splitlines()
     assert table[0].startswith(f"Driving pivots A0 for {EXAMPLE_FILE}")
     assert "minimum transmission angle over the travel" in table[0]
-    assert [ln.split("|")[0].strip() for ln in table[2:5]] == ["1", "2", "3"]
+    assert set(table[2]) == {"-", "+"}  # the rule under the header
+    assert [ln.split("|")[0].strip() for ln in table[3:6]] == ["1", "2", "3"]
 
     assert main(["pivots", "--top", "4", "--json", "--rank-by", "transmission"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["ranking"] == "transmission" and doc["spacing"] == pytest.approx(1.6)
-    assert doc["limits"] == {"min_transmission_deg": 30.0, "max_link_ratio": 10.0, "input": "any"}
+    assert doc["limits"] == {"min_transmission_deg": 30.0, "max_link_ratio": 10.0, "input": "any", "defaults": True}
+    assert doc["units"] is None  # the example gives no unit
     listed = doc["pivots"]
     assert len(listed) == 4
     scores = [p["min_transmission_deg"] for p in listed]
@@ -171,7 +173,7 @@ def test_pivots_fall_back_to_the_margin_when_nothing_meets_the_limits(tmp_path, 
 def test_pivots_say_the_size_and_the_ranking(capsys):
     spec = taskfile.example()
     smap = spec.filemon().solution_map(spec.view)
-    span = spec.task().span
+    span = spec.task.span
     assert main(["pivots", "--top", "3", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["ranking"] == "balanced" and doc["span"] == span
@@ -187,7 +189,7 @@ def test_pivots_say_the_size_and_the_ranking(capsys):
     table = capsys.readouterr().out.splitlines()
     assert "balanced score" in table[0] and f"task size {span:.3g}" in table[0]
     assert "size" in table[1].split("|")[2]
-    sizes = [float(ln.split("|")[2].strip().rstrip("x")) for ln in table[2:5]]
+    sizes = [float(ln.split("|")[2].strip().rstrip("x")) for ln in table[3:6]]
     assert sizes == pytest.approx([q.size_ratio for q in want], abs=0.05)
     # The Pareto front, from compact to transmitting.
     assert main(["pivots", "--top", "4", "--rank-by", "pareto", "--json"]) == 0
@@ -340,7 +342,8 @@ def test_progress_bar_gets_the_samples_of_one_call_bit_for_bit():
     assert np.array_equal(with_bar, whole)
     assert seen and seen[-1] == (3001, 3001) and all(t == 3001 for _, t in seen)
     assert [d for d, _ in seen] == sorted(d for d, _ in seen)
-    assert buf.getvalue().endswith("100%\n")
+    last = buf.getvalue().split("\r")[-1]
+    assert last.startswith("burmester: branch map: 100%|") and "3001/3001" in last and last.endswith("\n")
     mm = f.margin_map(g, progress=lambda d, t: None)
     assert np.array_equal(mm.view(np.uint32), f.margin_map(g).view(np.uint32))
     s1 = f.solution_map(Grid(-8.0, 8.0, -8.0, 8.0, 300, 301), progress=lambda d, t: None)
@@ -348,13 +351,27 @@ def test_progress_bar_gets_the_samples_of_one_call_bit_for_bit():
 
 
 def test_progress_bar_draws_in_place():
+    """tqdm draws the bar in place (a carriage return before each redraw),
+    with the rows done, the rate and the time left, and ends its line when
+    all rows are done; later calls draw nothing."""
     buf = io.StringIO()
-    bar = cli.ProgressBar(buf, "burmester: branch map", width=10)
+    bar = cli.ProgressBar(buf, "burmester: branch map", mininterval=0.0)
     for done in (0, 50, 50, 100):
         bar(done, 100)
     text = buf.getvalue()
-    assert text.count("\r") == 3 and text.endswith("[##########] 100%\n")  # an unchanged percentage is not redrawn
-    assert "[#####     ]  50%" in text
+    frames = text.split("\r")[1:]
+    assert frames and text.endswith("\n") and text.count("\n") == 1
+    half = [f for f in frames if " 50%|" in f]
+    assert half and "50/100" in half[0] and "<" in half[0]  # elapsed<left (the ETA)
+    assert frames[-1].startswith("burmester: branch map: 100%|") and "100/100" in frames[-1]
+    bar(100, 100)
+    assert buf.getvalue() == text
+    # An interrupted sweep's bar is ended by close().
+    buf2 = io.StringIO()
+    bar2 = cli.ProgressBar(buf2, "x", mininterval=0.0)
+    bar2(3, 10)
+    bar2.close()
+    assert buf2.getvalue().endswith("\n") and "3/10" in buf2.getvalue().split("\r")[-1]
 
 
 def test_progress_only_for_large_grids_on_a_terminal(monkeypatch):
@@ -531,7 +548,7 @@ def test_four_pose_file_with_a_driven_dyad(tmp_path, capsys):
     assert spec.driven_center == pytest.approx(b0)
     back = taskfile.loads(taskfile.dumps(spec))
     assert back.driven_center == pytest.approx(b0) and np.allclose(back.poses, spec.poses, atol=1e-12)
-    task = spec.task()
+    task = spec.task
     c1 = task.circle_point(b0)
     by_circle = taskfile.loads(FOUR_TASK + f"[driven]\ncircle = [{c1[0]!r}, {c1[1]!r}]\n")
     assert by_circle.driven_center == pytest.approx(b0, abs=1e-9)

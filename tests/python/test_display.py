@@ -3,6 +3,7 @@ that they leave pyplot alone, and that matplotlib is imported only when a
 picture is asked for."""
 
 import io
+import math
 import subprocess
 import sys
 
@@ -42,7 +43,16 @@ def make(name):
         "driving-map": lambda: f.solution_map(GRID, min_transmission_deg=35),
         "driven-map": lambda: task.driven_solution_map(A0, GRID),
         "atlas": lambda: burmester.pivot_atlas(task, (-8, 8, -8, 8, 12, 12), (-8, 8, -8, 8, 32, 32)),
+        "pairmap": lambda: Task(FOUR).pair_map(64),
+        "cubic": lambda: Task(FOUR).center_point_curve(),
     }[name]()
+
+
+# Four poses of a crank-rocker's coupler (pivots (0, 0) and (4, 0); the README's).
+FOUR = [(1.049199280691, 2.279426358634, math.radians(45.220037141544)),
+        (0.734502065472, 3.198658887874, math.radians(26.633426990744)),
+        (-0.378159188147, 3.063048993013, math.radians(21.786789298262)),
+        (-1.268710439724, 2.051150142014, math.radians(27.048624103934))]
 
 
 #: Colours each picture must contain (RGB of the library's palette).
@@ -56,6 +66,8 @@ COLOURS = {
     "driving-map": [bp.FREE_COLOR, bp.ACCEPT_COLOR],
     "driven-map": [bp.FREE_COLOR, "#ff7f0e"],
     "atlas": ["#fde725"],  # viridis at 90 degrees, the colour bar's top
+    "pairmap": [bp.FREE_COLOR, bp.ACCEPT_COLOR],
+    "cubic": ["#1f77b4"],  # the first component's colour (C0)
 }
 
 
@@ -177,6 +189,33 @@ def test_ipython_shows_the_picture():
     sfb = make("linkage")
     assert png(sfb) == sfb._repr_png_()
     assert png(make("atlas")).startswith(PNG_SIGNATURE)
+
+
+def test_cubic_picture_draws_every_component_in_its_frame():
+    curve = make("cubic")
+    ax = display.cubic(curve, Figure().add_subplot())
+    view = display.cubic_view(curve)
+    assert ax.get_xlim() == view[:2] and ax.get_ylim() == view[2:]
+    lines = [ln.get_xydata() for ln in ax.get_lines()]
+    want = curve.polylines(*view)
+    assert len(lines) == len(want) >= 1
+    for got, line in zip(lines, want):
+        np.testing.assert_array_equal(got, line)
+        assert max(abs(curve(tuple(p))) for p in got[:: max(1, len(got) // 50)]) < 1e-9
+    # The view is the frame the cubic is kept in: the poles of the task lie in it.
+    for p in Task(FOUR).poles:
+        if p.point is not None and math.dist(p.point, (0, 0)) < 5:
+            assert view[0] < p.point[0] < view[1] and view[2] < p.point[1] < view[3]
+
+
+def test_pair_map_picture_is_the_plot_functions():
+    pmap = make("pairmap")
+    fig = Figure(figsize=display.FIGSIZE, dpi=display.DPI)
+    FigureCanvasAgg(fig)
+    bp.pair_map(pmap, ax=fig.add_subplot())
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=display.DPI, bbox_inches="tight", pad_inches=display.PAD_INCHES)
+    assert np.array_equal(decode(pmap._repr_png_()), decode(buf.getvalue()))
 
 
 def test_no_picture_for_other_objects():

@@ -52,10 +52,10 @@ def layers(doc):
 
 
 def svg_groups(path):
-    """``{id: <g> element}`` of an SVG file, and its root."""
+    """``{id: <g> element}`` of an SVG file's layers (the root's groups), and its root."""
     root = ET.parse(path).getroot()
     assert root.tag == f"{SVG}svg"
-    return {g.get("id"): g for g in root.iter(f"{SVG}g")}, root
+    return {g.get("id"): g for g in root.findall(f"{SVG}g")}, root
 
 
 def svg_rings(d):
@@ -84,9 +84,22 @@ def find(items, first=None, last=None, n=None):
     return hits[0]
 
 
+def dimension_points(doc):
+    """The corners of the box around the DIMENSION entities as drawn (their
+    lines, arrows and texts: ezdxf's bounding box of their blocks)."""
+    from ezdxf import bbox
+
+    dims = doc.modelspace().query("DIMENSION")
+    if not len(dims):
+        return []
+    box = bbox.extents(dims, fast=True)
+    return [np.array(box.extmin)[:2], np.array(box.extmax)[:2]]
+
+
 def all_points(doc):
     pts = [pts for layer in layers(doc) for pts, _ in polylines(doc, layer)]
     pts += [c[None, :] for layer in layers(doc) for c, _ in circles(doc, layer)]
+    pts += [p[None, :] for p in dimension_points(doc)]
     return np.vstack(pts)
 
 
@@ -127,7 +140,7 @@ def sfb(f):
 
 
 LINKAGE_LAYERS = {"GROUND", "PIVOTS", "LINKAGE_1", "LINKAGE_2", "LINKAGE_3", "POSES", "COUPLER_CURVE",
-                  "COUPLER_PATH", "TRAVEL", "TEXT"}
+                  "COUPLER_PATH", "TRAVEL", "DIMENSIONS", "TEXT"}
 
 
 def test_linkage_dxf_holds_the_cores_linkage_at_each_pose(tmp_path, task, sfb):
@@ -384,7 +397,7 @@ def test_circle_plane_dxf(tmp_path, task, f):
 
 @pytest.fixture
 def task5():
-    return burmester.taskfile.load(EXAMPLES / "five.toml").task()
+    return burmester.taskfile.load(EXAMPLES / "five.toml").task
 
 
 def test_five_poses_burmester_points_on_both_curves(tmp_path, task5):
@@ -480,7 +493,7 @@ def test_cli_map_of_five_poses_exports_the_burmester_points(tmp_path, capsys):
     doc = ezdxf.readfile(out)
     assert {"CURVE_1234", "CURVE_1235", "BURMESTER_POINTS"} <= layers(doc)
     with pytest.raises(burmester.InvalidInputError, match="needs a task of"):
-        export.burmester_plane(burmester.taskfile.example().task(), tmp_path / "three.dxf")
+        export.burmester_plane(burmester.taskfile.example().task, tmp_path / "three.dxf")
 
 
 # ---------------------------------------------------------------------------
@@ -490,7 +503,9 @@ def test_cli_map_of_five_poses_exports_the_burmester_points(tmp_path, capsys):
 @pytest.mark.parametrize(
     "call, words",
     [
-        (lambda s, f, d: export.linkage(s, d / "a.dxf", units="furlong"), ["units must be one of", "'mm'"]),
+        (lambda s, f, d: export.linkage(s, d / "a.dxf", units=""), ["units must be a unit name", "empty name"]),
+        (lambda s, f, d: export.linkage(s, d / "a.dxf", units="m\nm"), ["units", "control characters"]),
+        (lambda s, f, d: export.plane(f, d / "a.svg", units=4), ["units must be a unit name", "(int)"]),
         (lambda s, f, d: export.linkage(s, d / "a.dxf", travel_samples=-1), ["travel_samples", "from 0"]),
         (lambda s, f, d: export.linkage(s, d / "a.dxf", travel_samples=1), ["0 (none) or at least 2"]),
         (lambda s, f, d: export.linkage(s, d / "a.dxf", path_samples=0), ["path_samples", "from 8"]),
@@ -590,10 +605,10 @@ def test_cli_linkage_writes_svg_with_travel(tmp_path, capsys):
         (["linkage", "--frames", "5", "-o", "{tmp}/l.dxf"], ["--frames is for animations", "--travel N"]),
         (["linkage", "--fps", "5", "-o", "{tmp}/l.svg"], ["--fps is for animations"]),
         (["linkage", "--travel", "5", "-o", "{tmp}/l.png"], ["--travel is for CAD exports"]),
-        (["map", "--units", "in", "-o", "{tmp}/m.png"], ["--units is for CAD exports"]),
+        (["map", "--units", "", "-o", "{tmp}/m.png"], ["--units must be a unit name", "empty name"]),
         (["map", "--dpi", "300", "-o", "{tmp}/m.svg"], ["--dpi is for pictures"]),
         (["linkage", "--dpi", "300", "-o", "{tmp}/l.dxf"], ["--dpi is for pictures"]),
-        (["map", "--units", "yard", "-o", "{tmp}/m.dxf"], ["invalid choice: 'yard'"]),
+        (["map", "--units", "m[m]", "-o", "{tmp}/m.dxf"], ["--units", "brackets"]),
         (["linkage", "--pivot", "0", "0", "--travel", "3", "-o", "{tmp}/l.dxf"], ["no travel to sample"]),
     ],
 )

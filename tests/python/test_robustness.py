@@ -452,6 +452,19 @@ def _on_curve(conic, p, n):
     return (p[0] + lo * n[0], p[1] + lo * n[1])
 
 
+def _toggle_band(l3, l4, r2, rho):
+    """The documented toggle band in |sin mu| (issue 28,
+    ``tolerance::heron_tolerance``): the rounding of the loop closure, with
+    ``rho`` the ground plus the crank. It replaced ``sqrt(8 eps) ((L3 +
+    L4)^2 + r^2) / (2 L3 L4)``, which grows like ``L3 / L4``."""
+    k = 4 * np.finfo(float).eps
+    r = math.sqrt(r2)
+    a, b = (l3 + l4) ** 2 - r2, r2 - (l3 - l4) ** 2
+    ea = (l3 + l4) ** 2 + r2 + 2 * r * rho
+    eb = abs(l3 - l4) * (l3 + l4) + r2 + 2 * r * rho
+    return math.sqrt(k * (abs(b) * ea + abs(a) * eb) + k * k * ea * eb) / (2 * l3 * l4)
+
+
 def test_modes_and_configuration_toggle_agree_and_poses_are_reached_near_toggles():
     # Driving pivots at 1e-2 down to 1e-11 task sizes from the transformed
     # Filemon curves, where a design pose is at a toggle. Once the modes
@@ -463,7 +476,6 @@ def test_modes_and_configuration_toggle_agree_and_poses_are_reached_near_toggles
 
     f = example().filemon()
     scale = f.task.scale
-    band = math.sqrt(8 * np.finfo(float).eps)
     checked = toggles = 0
     for conic in f.conics:
         for line in conic.polylines(-8, 8, -8, 8):
@@ -492,7 +504,7 @@ def test_modes_and_configuration_toggle_agree_and_poses_are_reached_near_toggles
                                 _, a, b, o4 = fb.joints(theta, m)
                                 l3, l4 = fb.coupler, fb.rocker
                                 r2 = (o4[0] - a[0]) ** 2 + (o4[1] - a[1]) ** 2
-                                tau = band * ((l3 + l4) ** 2 + r2) / (2 * l3 * l4)
+                                tau = _toggle_band(l3, l4, r2, fb.ground + fb.crank)
                                 sin_mu = math.sin(c.transmission_angle)
                                 if sin_mu < 0.5 * tau:
                                     assert c.toggle and mode is None, (a0, k, sin_mu, tau)

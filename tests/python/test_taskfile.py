@@ -67,7 +67,7 @@ def test_optional_sections_and_the_driven_circle_point():
     assert spec.limits.min_transmission_deg == 30.0
     v = spec.view  # a default square view around the poles and the pivots
     assert v.xmax - v.xmin == pytest.approx(v.ymax - v.ymin) and (v.nx, v.ny) == (400, 400)
-    for p in [pole.point for pole in spec.task().poles] + [spec.driven_center]:
+    for p in [pole.point for pole in spec.task.poles] + [spec.driven_center]:
         assert v.xmin < p[0] < v.xmax and v.ymin < p[1] < v.ymax
     # The driven dyad by its circle point gives the same C0.
     c1 = spec.filemon().driven_circle
@@ -86,15 +86,23 @@ def edit(old, new):
 BAD = [
     # (file text, words the message must contain)
     ("x = [", ["not valid TOML"]),
-    (GOOD.replace("[driven]\ncenter = [4.0, -1.0]\n", ""), ["[driven]", "missing"]),
     ("[driven]\ncenter = [0, 0]\n", ["[[pose]]", "missing", "three"]),
     (edit("[[pose]]\nx = 0\ny = 0.0\nangle_deg = 0.0\n", ""), ["3 to 5 poses", "found 2"]),
     ("[[pose]]\nx = 0\ny = 0\nangle_deg = 0\n" * 6, ["3 to 5 poses", "found 6"]),
     (GOOD.replace("[driven]", "[[pose]]\nx = 5.0\ny = 1.0\nangle_deg = 80.0\n[driven]"),
      ["driven.center", "not a center point of the four poses"]),
-    (GOOD.replace("[driven]\ncenter = [4.0, -1.0]\n",
-                  "[[pose]]\nx = 5.0\ny = 1.0\nangle_deg = 80.0\n[[pose]]\nx = 1.0\ny = 4.0\nangle_deg = 120.0\n"),
-     ["[limits]", "is for three", "four poses (the pair map)", "found 5 poses"]),
+    (GOOD.replace("[driven]",
+                  "[[pose]]\nx = 5.0\ny = 1.0\nangle_deg = 80.0\n[[pose]]\nx = 1.0\ny = 4.0\nangle_deg = 120.0\n"
+                  "[driven]"),
+     ["[driven]", "is for three or four poses (a driven dyad on the center-point curve), found 5 poses",
+      "leave [driven] out"]),
+    (GOOD.replace("[[pose]]", 'units = ""\n[[pose]]', 1), ["units", "empty name", "'' (a string)"]),
+    (GOOD.replace("[[pose]]", "units = 4\n[[pose]]", 1), ["units", "unit name", "4 (an integer)"]),
+    (GOOD.replace("[[pose]]", 'units = "m]m"\n[[pose]]', 1), ["units", "brackets"]),
+    (GOOD.replace("[[pose]]", 'units = "%s"\n[[pose]]' % ("m" * 33), 1), ["units", "at most 32 characters"]),
+    (GOOD.replace("[[pose]]", "[units]\nname = 'mm'\n[[pose]]", 1), ["[units]", 'expected units = "mm"']),
+    (GOOD + 'units = "mm"\n', ["limits.units", "unknown key", "at the top of the file"]),
+    (GOOD.replace("[[pose]]", 'unit = "mm"\n[[pose]]', 1), ["unit", "unknown top-level key", 'units = "mm"']),
     (edit("angle_deg = 22.918311805232932", 'angle_deg = "23"'),
      ["pose 2.angle_deg", "expected a number", "'23' (a string)"]),
     (edit("angle_deg = 22.918311805232932", "angle = 0.4"), ["pose 2.angle", "unknown key", "angle_deg"]),
@@ -204,10 +212,10 @@ def test_four_and_five_pose_files():
     with pytest.raises(TaskFileError, match="has 4 poses"):
         spec.filemon()
     five = taskfile.loads(FOUR_POSES + "[[pose]]\nx = 1.0\ny = 4.0\nangle_deg = 120.0\n")
-    assert len(five.poses) == 5 and five.task().burmester_points() is not None
+    assert len(five.poses) == 5 and five.task.burmester_points() is not None
 
 
 def test_the_five_pose_example_file():
     spec = taskfile.load(EXAMPLE_FILE.parent / "five.toml")
     assert len(spec.poses) == 5 and spec.driven_center is None
-    assert len(spec.task().burmester_points()) == 4
+    assert len(spec.task.burmester_points()) == 4

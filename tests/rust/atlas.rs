@@ -1,8 +1,9 @@
 //! The pivot-pair atlas against the solution maps it reduces: at random
 //! driven centers of random tasks, the count, the branch-free count and
 //! the best driving pivot equal those of `task.filemon(C0).solution_map`
-//! over the same driving grid (`best_pivots(1, _, Transmission)`); any
-//! tiling of the driven grid gives the same cells, bit for bit.
+//! over the same driving grid (`best_pivots(1, _, rank_by)`, for every
+//! ranking with a score, with and without size limits); any tiling of the
+//! driven grid gives the same cells, bit for bit.
 
 use burmester::{
     AtlasCell, Constraints, Control, DesignLimits, Grid, InputRequirement, Point2, RankBy, Task,
@@ -18,8 +19,17 @@ fn lenient() -> DesignLimits {
     DesignLimits::from_degrees(20.0, 20.0, InputRequirement::Any).unwrap()
 }
 
+/// The rankings with a score.
+const SCORED: [RankBy; 3] = [RankBy::Balanced, RankBy::Transmission, RankBy::Compact];
+
 /// The cell from the full solution map at `c0`.
-fn reference(t: &Task, c0: Point2<f64>, driving: &Grid, limits: &DesignLimits) -> AtlasCell {
+fn reference(
+    t: &Task,
+    c0: Point2<f64>,
+    driving: &Grid,
+    limits: &DesignLimits,
+    rank_by: RankBy,
+) -> AtlasCell {
     let Ok(f) = t.filemon(c0) else {
         return AtlasCell::INVALID;
     };
@@ -29,20 +39,18 @@ fn reference(t: &Task, c0: Point2<f64>, driving: &Grid, limits: &DesignLimits) -
     let c = &map.columns;
     let count = c.acceptable.iter().filter(|&&a| a).count() as u64;
     let branch_free = c.branch_free.iter().filter(|&&a| a).count() as u64;
-    let best = map
-        .best_pivots(1, None, RankBy::Transmission)
-        .unwrap()
-        .first()
-        .map(|p| {
-            let k = p.index.0 * driving.nx() + p.index.1;
-            burmester::AtlasBest {
-                driving: p.center,
-                index: p.index,
-                min_transmission_rad: c.min_transmission_rad[k],
-                link_ratio: c.link_ratio[k],
-                margin: p.margin,
-            }
-        });
+    let best = map.best_pivots(1, None, rank_by).unwrap().first().map(|p| {
+        let k = p.index.0 * driving.nx() + p.index.1;
+        burmester::AtlasBest {
+            driving: p.center,
+            index: p.index,
+            min_transmission_rad: c.min_transmission_rad[k],
+            link_ratio: c.link_ratio[k],
+            margin: p.margin,
+            size_ratio: c.size_ratio[k],
+            score: p.score,
+        }
+    });
     AtlasCell {
         valid: true,
         count,
@@ -65,6 +73,8 @@ fn same(a: &AtlasCell, b: &AtlasCell) -> bool {
                     b.min_transmission_rad.to_bits(),
                     b.link_ratio.to_bits(),
                     b.margin.to_bits(),
+                    b.size_ratio.to_bits(),
+                    b.score.to_bits(),
                 )
             }),
         )
@@ -75,11 +85,17 @@ fn same(a: &AtlasCell, b: &AtlasCell) -> bool {
 #[test]
 fn cells_equal_the_reduced_solution_maps() {
     let mut runner = TestRunner::deterministic();
-    let limits = lenient();
     let mut with_best = 0;
     let mut checked = 0;
     while checked < 24 {
         let t = task().new_tree(&mut runner).unwrap().current();
+        let rank_by = SCORED[checked % 3];
+        // Every other task also bounds the linkage's size.
+        let limits = if checked % 2 == 0 {
+            lenient()
+        } else {
+            lenient().with_size(25.0, 12.0).unwrap()
+        };
         let driven = Grid::from_bounds(-6.0, 6.0, -6.0, 6.0, 3, 2).unwrap();
         let driving = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 41, 37).unwrap();
         let atlas = t
@@ -88,12 +104,14 @@ fn cells_equal_the_reduced_solution_maps() {
                 &driving,
                 &limits,
                 &Constraints::default(),
+                rank_by,
                 &Control::new(),
             )
             .unwrap();
+        assert_eq!(atlas.rank_by, rank_by);
         for k in 0..driven.len() {
             let c0 = driven.point(k % driven.nx(), k / driven.nx());
-            let want = reference(&t, c0, &driving, &limits);
+            let want = reference(&t, c0, &driving, &limits, rank_by);
             assert!(
                 same(&atlas.cells[k], &want),
                 "{t:?} C0 {c0:?}: {:?} vs {want:?}",
@@ -113,7 +131,8 @@ fn random_driven_centers_of_the_example() {
     let mut runner = TestRunner::deterministic();
     let driving = Grid::new(example::viewport(), 48, 40).unwrap();
     let limits = DesignLimits::default();
-    for _ in 0..12 {
+    for n in 0..12 {
+        let rank_by = SCORED[n % 3];
         let (x, y) = (-6.0f64..6.0, -6.0f64..6.0)
             .new_tree(&mut runner)
             .unwrap()
@@ -128,10 +147,11 @@ fn random_driven_centers_of_the_example() {
                 &driving,
                 &limits,
                 &Constraints::default(),
+                rank_by,
                 &Control::new(),
             )
             .unwrap();
-        let want = reference(&t, c0, &driving, &limits);
+        let want = reference(&t, c0, &driving, &limits, rank_by);
         assert!(
             same(&cells[0], &want),
             "C0 {c0:?}: {:?} vs {want:?}",
@@ -146,8 +166,9 @@ fn any_tiling_gives_the_same_cells() {
     let driven = Grid::new(example::viewport(), 9, 7).unwrap();
     let driving = Grid::new(example::viewport(), 30, 24).unwrap();
     let (limits, cons) = (lenient(), Constraints::default());
+    let by = RankBy::Balanced;
     let whole = t
-        .pivot_atlas(&driven, &driving, &limits, &cons, &Control::new())
+        .pivot_atlas(&driven, &driving, &limits, &cons, by, &Control::new())
         .unwrap();
     assert!(whole.cells.iter().any(|c| c.best.is_some()));
     for tile in [1, 2, 3, 7] {
@@ -156,8 +177,16 @@ fn any_tiling_gives_the_same_cells() {
         while j < driven.ny() {
             let end = (j + tile).min(driven.ny());
             cells.extend(
-                t.pivot_atlas_rows(&driven, j..end, &driving, &limits, &cons, &Control::new())
-                    .unwrap(),
+                t.pivot_atlas_rows(
+                    &driven,
+                    j..end,
+                    &driving,
+                    &limits,
+                    &cons,
+                    by,
+                    &Control::new(),
+                )
+                .unwrap(),
             );
             j = end;
         }
@@ -189,6 +218,7 @@ fn driven_centers_without_filemon_are_invalid() {
             &driving,
             &DesignLimits::default(),
             &Constraints::default(),
+            RankBy::Balanced,
             &Control::new(),
         )
         .unwrap();
@@ -200,19 +230,33 @@ fn bad_input_and_cancel() {
     use core::sync::atomic::AtomicBool;
     let t = example::task();
     let g = Grid::new(example::viewport(), 4, 4).unwrap();
-    let (l, c) = (DesignLimits::default(), Constraints::default());
+    let (l, c, by) = (
+        DesignLimits::default(),
+        Constraints::default(),
+        RankBy::Balanced,
+    );
     assert!(
-        t.pivot_atlas_rows(&g, 2..5, &g, &l, &c, &Control::new())
+        t.pivot_atlas_rows(&g, 2..5, &g, &l, &c, by, &Control::new())
             .is_err()
     );
     let stop = AtomicBool::new(true);
     let e = t
-        .pivot_atlas(&g, &g, &l, &c, &Control::new().with_cancel(&stop))
+        .pivot_atlas(&g, &g, &l, &c, by, &Control::new().with_cancel(&stop))
         .unwrap_err();
     assert!(matches!(e, burmester::Error::Cancelled { done: 0, .. }));
     let bad = Constraints {
         link_width: -1.0,
         ..Constraints::default()
     };
-    assert!(t.pivot_atlas(&g, &g, &l, &bad, &Control::new()).is_err());
+    assert!(
+        t.pivot_atlas(&g, &g, &l, &bad, by, &Control::new())
+            .is_err()
+    );
+    // Rankings without a score are refused.
+    for r in [RankBy::Pareto, RankBy::Margin] {
+        let e = t
+            .pivot_atlas(&g, &g, &l, &c, r, &Control::new())
+            .unwrap_err();
+        assert_eq!(e.cause(), "unknown_name", "{e}");
+    }
 }

@@ -5,7 +5,7 @@
 //! |---|---|
 //! | pure translation between two of three poses | accepted, its pole `Pole::AtInfinity`: the maps, Filemon's construction and the solution maps run by the linear form (`tests/rust/translation.rs`); what needs three finite poles (`Task::cremona`: pole triangle, pole circles, image poles) is `DegenerateError::PureTranslation`; with four or five poses accepted too |
 //! | all three poses with one angle | rejected: `DegenerateError::AllTranslations` (every crank the same vector: parallelograms at their change point) |
-//! | a rotation just above `tolerance::MIN_ROTATION` | accepted; maps accurate to a few `eps / theta` of the poses' spread (1e-9 measured at the bound) |
+//! | a rotation just above `tolerance::MIN_ROTATION` | accepted; its pole is finite (the pole triangle exists) but far, so the maps run by the linear form (`tolerance::POLE_DISTANCE`) and keep the input's accuracy (`tests/python/test_conditioning.py`) |
 //! | coincident poses | rejected: `DegenerateError::CoincidentPoses` |
 //! | rotations about one point (coincident poles) | rejected: `DegenerateError::CoincidentPoles` |
 //! | collinear poles | only in the translation limit (a pole at infinity: the linear form); `CircleOrLine::Line` for collinear points given directly |

@@ -265,6 +265,7 @@ fn limits_and_input_requirements_filter_the_mask() {
         min_transmission: 0.0,
         max_link_ratio: f64::INFINITY,
         input: InputRequirement::Any,
+        ..DesignLimits::default()
     };
     let base = f
         .solution_map(&g, &loose, &Constraints::none(), &Control::new())
@@ -279,6 +280,7 @@ fn limits_and_input_requirements_filter_the_mask() {
         min_transmission: 40f64.to_radians(),
         max_link_ratio: 5.0,
         input: InputRequirement::Crank,
+        ..DesignLimits::default()
     };
     let m = f
         .solution_map(&g, &strict, &Constraints::none(), &Control::new())
@@ -441,6 +443,7 @@ fn constraints_match_direct_geometry() {
         min_transmission: 0.0,
         max_link_ratio: f64::INFINITY,
         input: InputRequirement::Any,
+        ..DesignLimits::default()
     };
     let free = f
         .solution_map(&g, &loose, &Constraints::none(), &Control::new())
@@ -466,6 +469,7 @@ fn constraints_match_direct_geometry() {
         obstacles: vec![obstacle.clone()],
         link_width: 0.3,
         travel_samples: 48,
+        envelope: None,
     };
     let m = f
         .solution_map(&g, &loose, &cons, &Control::new())

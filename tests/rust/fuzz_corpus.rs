@@ -69,3 +69,13 @@ fn curves() {
 fn burmester_points() {
     replay("burmester_points", checks::burmester_points);
 }
+
+#[test]
+fn pair_map() {
+    replay("pair_map", checks::pair_map);
+}
+
+#[test]
+fn atlas() {
+    replay("atlas", checks::atlas);
+}

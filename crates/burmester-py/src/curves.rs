@@ -10,7 +10,7 @@
 use burmester::geom::Cubic;
 use burmester::synthesis::curves::{CoincidencePoint, CurveDyad, FivePositions, FourPositions};
 use burmester::{Dyad, InvalidInput, Point2, Task, Viewport};
-use numpy::{IntoPyArray, PyArray2};
+use numpy::PyArray2;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -107,6 +107,74 @@ fn check_name(what: &str, value: Option<&str>, allowed: [&str; 2]) -> PyResult<(
     }
 }
 
+/// The error of a pickled record that no record holds.
+fn bad_state(what: &str, detail: String) -> PyErr {
+    crate::errors::invalid(
+        "inconsistent_state",
+        format!(
+            "unpickling a {what}: {detail}; the pickle was damaged or not made by burmester: \
+             compute it again"
+        ),
+    )
+}
+
+/// Refuses the fields of a pickled `CurveDyad` that no dyad has: a point
+/// or a rotation that is not finite, a rotation outside `(-pi, pi]`, an
+/// order that is not the poses `1` to `4` from pose 1, or a direction that
+/// is not the order's.
+fn check_curve_dyad_state(
+    center: Point2<f64>,
+    circle: Point2<f64>,
+    beta2: f64,
+    order: &str,
+    direction: Option<&str>,
+) -> PyResult<()> {
+    let finite = [center.x, center.y, circle.x, circle.y, beta2]
+        .iter()
+        .all(|v| v.is_finite());
+    if !finite {
+        return Err(bad_state(
+            "CurveDyad",
+            "a point or beta2 that is not finite".into(),
+        ));
+    }
+    if !(beta2 > -core::f64::consts::PI && beta2 <= core::f64::consts::PI) {
+        return Err(bad_state(
+            "CurveDyad",
+            format!("beta2 = {beta2} outside (-pi, pi]"),
+        ));
+    }
+    let seq: Option<Vec<usize>> = order.split('-').map(|k| k.parse().ok()).collect();
+    let n = 4;
+    let valid = seq.as_ref().is_some_and(|seq| {
+        let mut sorted = seq.clone();
+        sorted.sort_unstable();
+        seq.len() == n && seq[0] == 1 && sorted == (1..=n).collect::<Vec<_>>()
+    });
+    let Some(seq) = seq.filter(|_| valid) else {
+        return Err(bad_state(
+            "CurveDyad",
+            format!("the order {order:?} (the poses 1 to 4, pose 1 first, as \"1-3-2-4\")"),
+        ));
+    };
+    let want = if seq.iter().enumerate().all(|(i, &k)| k == i + 1) {
+        Some("counterclockwise")
+    } else if seq[1..].iter().enumerate().all(|(i, &k)| k == n - i) {
+        Some("clockwise")
+    } else {
+        None
+    };
+    if direction != want {
+        return Err(bad_state(
+            "CurveDyad",
+            format!(
+                "the direction {direction:?} with the order {order:?} (its direction is {want:?})"
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// A dyad of four poses with its place on the curves: its crank rotation
 /// from pose 1 to pose 2, its solution branch and its crank order.
 #[pyclass(frozen, eq, from_py_object, name = "CurveDyad", module = "burmester")]
@@ -151,6 +219,7 @@ impl PyCurveDyad {
             direction.as_deref(),
             ["counterclockwise", "clockwise"],
         )?;
+        check_curve_dyad_state(center.0, circle.0, beta2.0, &order, direction.as_deref())?;
         Ok(PyCurveDyad {
             center: pt(center.0),
             circle: pt(circle.0),
@@ -252,12 +321,30 @@ impl PyCoincidencePoint {
         pair: (usize, usize),
         center: Option<PyPoint>,
         circle: Option<PyPoint>,
-    ) -> Self {
-        PyCoincidencePoint {
+    ) -> PyResult<Self> {
+        // Q_jk of four poses: 1 <= j < k <= 4, finite points (None: at
+        // infinity).
+        if !(1 <= pair.0 && pair.0 < pair.1 && pair.1 <= 4) {
+            return Err(bad_state(
+                "CoincidencePoint",
+                format!("the pair {pair:?} (1 <= j < k <= 4)"),
+            ));
+        }
+        let finite = |p: &Option<PyPoint>| {
+            p.as_ref()
+                .is_none_or(|p| p.0.x.is_finite() && p.0.y.is_finite())
+        };
+        if !(finite(&center) && finite(&circle)) {
+            return Err(bad_state(
+                "CoincidencePoint",
+                "a point that is not finite".into(),
+            ));
+        }
+        Ok(PyCoincidencePoint {
             pair,
             center: center.map(|p| pt(p.0)),
             circle: circle.map(|p| pt(p.0)),
-        }
+        })
     }
 
     #[allow(clippy::type_complexity)]
@@ -300,11 +387,19 @@ impl PyCoincidencePoint {
 }
 
 /// A polyline as an `(n, 2)` array.
-pub(crate) fn polyline<'py>(py: Python<'py>, l: &[Point2<f64>]) -> Bound<'py, PyArray2<f64>> {
-    let flat: Vec<f64> = l.iter().flat_map(|p| [p.x, p.y]).collect();
-    numpy::ndarray::Array2::from_shape_vec((l.len(), 2), flat)
-        .expect("two coordinates per point")
-        .into_pyarray(py)
+/// NumPy allocates it (a failed allocation is a `MemoryError`).
+pub(crate) fn polyline<'py>(
+    py: Python<'py>,
+    l: &[Point2<f64>],
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let a = crate::conv::empty::<f64>(py, &[l.len(), 2])?;
+    {
+        let mut w = crate::conv::writer(&a)?;
+        for (o, p) in crate::conv::slice_mut(&mut w).chunks_exact_mut(2).zip(l) {
+            o.copy_from_slice(&[p.x, p.y]);
+        }
+    }
+    a.cast_into::<PyArray2<f64>>().map_err(PyErr::from)
 }
 
 /// A viewport from its four numbers.
@@ -419,6 +514,12 @@ impl PyCubic {
         self.evaluate(point)
     }
 
+    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
+    /// None without matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
     fn gradient(&self, point: PyPoint) -> PyResult<Xy> {
         let g = self
             .inner
@@ -487,7 +588,7 @@ impl PyCubic {
         };
         let c = self.inner;
         let trace = py.detach(|| c.trace(&vp, tolerance));
-        Ok(trace.polylines().iter().map(|l| polyline(py, l)).collect())
+        trace.polylines().iter().map(|l| polyline(py, l)).collect()
     }
 
     fn __repr__(&self) -> String {

@@ -14,7 +14,7 @@ use pyo3::types::{PyDict, PyTuple};
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::run::{WATCH_MIN_SAMPLES, run};
+use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
 use crate::synthesis::{PySynthesizedFourBar, PyTask, dyad_tuple};
 
 type Xy = (f64, f64);
@@ -35,11 +35,20 @@ pub struct PyDesignLimits {
 #[pymethods]
 impl PyDesignLimits {
     #[new]
-    #[pyo3(signature = (min_transmission_deg = Real(30.0), max_link_ratio = Real(10.0), input = "any"),
-        text_signature = "(min_transmission_deg=30.0, max_link_ratio=10.0, input='any')")]
-    fn new(min_transmission_deg: Real, max_link_ratio: Real, input: &str) -> PyResult<Self> {
+    #[pyo3(signature = (min_transmission_deg = Real(30.0), max_link_ratio = Real(10.0), input = "any",
+        max_size_ratio = Real(f64::INFINITY), max_link_length = Real(f64::INFINITY)),
+        text_signature = "(min_transmission_deg=30.0, max_link_ratio=10.0, input='any', \
+        max_size_ratio=inf, max_link_length=inf)")]
+    fn new(
+        min_transmission_deg: Real,
+        max_link_ratio: Real,
+        input: &str,
+        max_size_ratio: Real,
+        max_link_length: Real,
+    ) -> PyResult<Self> {
         let input = input.parse::<InputRequirement>().py()?;
         DesignLimits::from_degrees(min_transmission_deg.0, max_link_ratio.0, input)
+            .and_then(|l| l.with_size(max_size_ratio.0, max_link_length.0))
             .map(|inner| PyDesignLimits { inner })
             .py()
     }
@@ -58,16 +67,33 @@ impl PyDesignLimits {
     fn input(&self) -> &'static str {
         self.inner.input.as_str()
     }
-    fn __getnewargs__(&self) -> (f64, f64, &'static str) {
+    #[getter]
+    fn max_size_ratio(&self) -> f64 {
+        self.inner.max_size_ratio
+    }
+    #[getter]
+    fn max_link_length(&self) -> f64 {
+        self.inner.max_link_length
+    }
+    fn __getnewargs__(&self) -> (f64, f64, &'static str, f64, f64) {
         (
             self.min_transmission_deg(),
             self.inner.max_link_ratio,
             self.inner.input.as_str(),
+            self.inner.max_size_ratio,
+            self.inner.max_link_length,
         )
     }
     fn __repr__(&self) -> String {
+        let mut extra = String::new();
+        if self.inner.max_size_ratio.is_finite() {
+            extra += &format!(", max_size_ratio={:?}", self.inner.max_size_ratio);
+        }
+        if self.inner.max_link_length.is_finite() {
+            extra += &format!(", max_link_length={:?}", self.inner.max_link_length);
+        }
         format!(
-            "DesignLimits(min_transmission_deg={:?}, max_link_ratio={:?}, input='{}')",
+            "DesignLimits(min_transmission_deg={:?}, max_link_ratio={:?}, input='{}'{extra})",
             self.min_transmission_deg(),
             self.inner.max_link_ratio,
             self.inner.input.as_str()
@@ -137,9 +163,30 @@ impl MapOptions {
                 obstacles: obstacles.unwrap_or_default().into_iter().map(pts).collect(),
                 link_width: link_width.0,
                 travel_samples: travel_samples.0,
+                envelope: None,
             },
         })
     }
+}
+
+/// The values of a column (a pickled map's), copied into memory reserved
+/// fallibly (a `MemoryError` rather than an abort).
+pub(crate) fn collect_column<T: Copy>(v: &numpy::ndarray::ArrayView2<'_, T>) -> PyResult<Vec<T>> {
+    let mut out = Vec::new();
+    out.try_reserve_exact(v.len()).map_err(|_| {
+        pyo3::exceptions::PyMemoryError::new_err(format!(
+            "a map column of {} values cannot be allocated",
+            v.len()
+        ))
+    })?;
+    out.extend(v.iter().copied());
+    Ok(out)
+}
+
+/// Whether ranking `n` samples for `k` results can take long enough to
+/// watch for Ctrl-C (a few milliseconds and more).
+pub(crate) fn ranking_is_long(n: usize, k: usize) -> bool {
+    n >= 1 << 16 || k >= 1 << 12
 }
 
 /// A column of a map as a read-only NumPy array of shape `(ny, nx)`,
@@ -154,6 +201,206 @@ pub(crate) fn readonly<T: Element>(
         .into_pyarray(py);
     set_readonly(a.as_any())?;
     Ok(a.unbind())
+}
+
+/// A column of a pickled map, read without trusting its values: its dtype
+/// and shape checked (a `TypeError` otherwise), and a bool column read as
+/// its bytes, since NumPy keeps any byte in a bool array and only 0 and 1
+/// are bools (a `bool` of another byte is undefined behaviour in Rust).
+pub(crate) trait StateColumn: Sized {
+    /// The column `name`, of shape `shape`, from `item`.
+    fn read(
+        item: Bound<'_, PyAny>,
+        name: &'static str,
+        shape: (usize, usize),
+    ) -> PyResult<Vec<Self>>;
+}
+
+/// The values of a 2-d array of `T` of shape `shape`, in row-major order.
+fn read_plain<T: Element + Copy>(
+    item: Bound<'_, PyAny>,
+    name: &'static str,
+    shape: (usize, usize),
+) -> PyResult<Vec<T>> {
+    let a = item.cast_into::<PyArray2<T>>().map_err(|e| {
+        PyTypeError::new_err(format!(
+            "column {name} of a pickled map: {}",
+            PyErr::from(e)
+        ))
+    })?;
+    let ro = a.readonly();
+    let v = ro.as_array();
+    if v.shape() != [shape.0, shape.1] {
+        return Err(PyTypeError::new_err(format!(
+            "column {name} of a pickled map has shape {:?}, not the map's {:?}",
+            v.shape(),
+            [shape.0, shape.1]
+        )));
+    }
+    collect_column(&v)
+}
+
+macro_rules! plain_state_column {
+    ($($t:ty),*) => {$(
+        impl StateColumn for $t {
+            fn read(
+                item: Bound<'_, PyAny>,
+                name: &'static str,
+                shape: (usize, usize),
+            ) -> PyResult<Vec<Self>> {
+                read_plain::<$t>(item, name, shape)
+            }
+        }
+    )*};
+}
+plain_state_column!(u8, i8, f32);
+
+impl StateColumn for bool {
+    fn read(
+        item: Bound<'_, PyAny>,
+        name: &'static str,
+        shape: (usize, usize),
+    ) -> PyResult<Vec<Self>> {
+        // The dtype first (no element is read), then the bytes.
+        let a = item.cast_into::<PyArray2<bool>>().map_err(|e| {
+            PyTypeError::new_err(format!(
+                "column {name} of a pickled map: {}",
+                PyErr::from(e)
+            ))
+        })?;
+        let bytes = a.as_any().call_method1("view", ("u1",))?;
+        let v = read_plain::<u8>(bytes, name, shape)?;
+        if let Some(k) = v.iter().position(|&b| b > 1) {
+            return Err(bad_state(
+                name,
+                k,
+                shape.1,
+                format!("the byte {} (a bool is 0 or 1)", v[k]),
+            ));
+        }
+        Ok(v.into_iter().map(|b| b == 1).collect())
+    }
+}
+
+/// The error of a pickled map whose column `name` holds, at sample `k` of
+/// rows of `nx`, what `what` says.
+fn bad_state(name: &str, k: usize, nx: usize, what: String) -> PyErr {
+    crate::errors::invalid(
+        "inconsistent_state",
+        format!(
+            "unpickling a map: column {name} holds {what} at row {}, column {}, which no map \
+             holds; the pickle was damaged or not made by burmester: compute the map again",
+            k / nx,
+            k % nx
+        ),
+    )
+}
+
+/// Refuses the columns of a pickled map that no map holds: a Grashof code
+/// that names no class, a direction other than -1, 0, 1, an angle outside
+/// `[0, pi/2]`, a ratio below 1, an invalid sample with values, a valid one
+/// without them, a travel without a direction (or the other way round), an
+/// acceptable sample that is not branch-free, feasible and within the
+/// limits. (The bool bytes are checked as they are read.)
+pub(crate) fn check_state(
+    c: &burmester::design::Columns,
+    nx: usize,
+    limits: &DesignLimits,
+) -> PyResult<()> {
+    use burmester::{Grashof, SolutionMap};
+    // f32 columns hold the f64 figures rounded: allow their rounding.
+    let slack = 1.0 + 4.0 * f64::from(f32::EPSILON);
+    let half_pi = core::f64::consts::FRAC_PI_2 as f32;
+    for k in 0..c.valid.len() {
+        let bad = |name: &str, what: String| Err(bad_state(name, k, nx, what));
+        let (g, d) = (c.grashof[k], c.direction[k]);
+        if usize::from(g) >= Grashof::ALL.len() && g != SolutionMap::GRASHOF_NONE {
+            return bad(
+                "grashof",
+                format!(
+                    "the code {g} (Grashof codes are 0 to {} and {} for none)",
+                    Grashof::ALL.len() - 1,
+                    SolutionMap::GRASHOF_NONE
+                ),
+            );
+        }
+        if !(-1..=1).contains(&d) {
+            return bad(
+                "direction",
+                format!("the code {d} (directions are -1, 0 and 1)"),
+            );
+        }
+        let (mt, lr, sr) = (c.min_transmission_rad[k], c.link_ratio[k], c.size_ratio[k]);
+        if !c.valid[k] {
+            // Sample::INVALID, every column.
+            let empty = !c.branch_free[k]
+                && g == SolutionMap::GRASHOF_NONE
+                && !c.input_full[k]
+                && d == 0
+                && !c.one_circuit[k]
+                && mt.is_nan()
+                && lr.is_nan()
+                && sr.is_nan()
+                && !c.acceptable[k];
+            if !empty {
+                return bad(
+                    "valid",
+                    "false with other columns set (a sample without a linkage holds false, 0, \
+                     NaN and the Grashof code 255)"
+                        .to_owned(),
+                );
+            }
+            continue;
+        }
+        if g == SolutionMap::GRASHOF_NONE {
+            return bad("grashof", "no class for a valid sample".to_owned());
+        }
+        if lr.is_nan() || lr < 1.0 {
+            return bad("link_ratio", format!("{lr} (at least 1 for a linkage)"));
+        }
+        if sr.is_nan() || sr <= 0.0 {
+            return bad("size_ratio", format!("{sr} (positive for a linkage)"));
+        }
+        if (d == 0) != mt.is_nan() || !(mt.is_nan() || (0.0..=half_pi).contains(&mt)) {
+            return bad(
+                "min_transmission_rad",
+                format!(
+                    "{mt} with the direction {d} (an angle in [0, pi/2] with a direction, NaN \
+                     without)"
+                ),
+            );
+        }
+        if c.input_full[k] && !c.one_circuit[k] {
+            return bad(
+                "one_circuit",
+                "false for an input that turns fully (one circuit)".to_owned(),
+            );
+        }
+        if !c.one_circuit[k] && d != 0 {
+            return bad("direction", format!("{d} for poses on two circuits (0)"));
+        }
+        if c.acceptable[k] {
+            let input_ok = match limits.input {
+                InputRequirement::Any => true,
+                InputRequirement::Crank => c.input_full[k],
+                InputRequirement::Rocker => !c.input_full[k],
+            };
+            let meets = c.branch_free[k]
+                && d != 0
+                && input_ok
+                && f64::from(lr) <= limits.max_link_ratio * slack
+                && f64::from(mt) * slack >= limits.min_transmission;
+            if !meets {
+                return bad(
+                    "acceptable",
+                    "true for a sample that is not branch-free, feasible and within the map's \
+                     limits"
+                        .to_owned(),
+                );
+            }
+        }
+    }
+    Ok(())
 }
 
 /// `a.setflags(write=False)`.
@@ -271,17 +518,13 @@ macro_rules! py_map_class {
                         let item = columns.get_item(stringify!($name))?.ok_or_else(|| {
                             pyo3::exceptions::PyTypeError::new_err(concat!("missing column ", stringify!($name)))
                         })?;
-                        let a = item.cast_into::<PyArray2<$ty>>().map_err(PyErr::from)?;
-                        let ro = a.readonly();
-                        let v = ro.as_array();
-                        if v.shape() != [shape.0, shape.1] {
-                            return Err(pyo3::exceptions::PyTypeError::new_err(concat!(
-                                "column ", stringify!($name), " does not have the map's shape"
-                            )));
-                        }
-                        v.iter().copied().collect()
+                        <$ty as $crate::design::StateColumn>::read(item, stringify!($name), shape)?
                     };
                 )*
+                // Values and rows a map can hold, and nothing else.
+                let cols = burmester::design::Columns { $($name,)* };
+                $crate::design::check_state(&cols, shape.1, &context.limits)?;
+                let burmester::design::Columns { $($name,)* } = cols;
                 Ok($cls {
                     $($name: $crate::design::readonly(py, shape, $name)?,)*
                     context,
@@ -363,6 +606,21 @@ impl PyPivot {
         score: Real,
         ranked_by: &str,
     ) -> PyResult<Self> {
+        // A pivot is one of its linkage's fixed pivots.
+        let l = &linkage.inner;
+        if center.0 != l.driving.center && center.0 != l.driven.center {
+            return Err(crate::errors::invalid(
+                "inconsistent_state",
+                format!(
+                    "a Pivot at ({}, {}) with a linkage whose fixed pivots are {:?} and {:?}: \
+                     the pivot must be one of them",
+                    center.0.x,
+                    center.0.y,
+                    pt(l.driving.center),
+                    pt(l.driven.center)
+                ),
+            ));
+        }
         Ok(PyPivot {
             center: pt(center.0),
             index: (index.0.0, index.1.0),
@@ -455,19 +713,23 @@ impl PyPivot {
 
 impl PySolutionMap {
     /// The `k` best pivots by `rank_by`, reading the NumPy columns in place.
-    fn ranked(
+    fn ranked<'py>(
         &self,
-        py: Python<'_>,
+        py: Python<'py>,
         k: usize,
         min_separation: Option<f64>,
         rank_by: RankBy,
-    ) -> PyResult<Vec<PyPivot>> {
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         let ctx = &self.context;
+        let watch = ranking_is_long(ctx.grid.len(), k);
         let pivots = self.with_rank_columns(py, |cols| {
-            py.detach(|| ctx.best_pivots(k, min_separation, rank_by, cols))
-                .py()
+            run_in(py, watch, None, None, "samples", |control| {
+                ctx.best_pivots_with(k, min_separation, rank_by, cols, control)
+            })
         })?;
-        Ok(pivots.iter().map(|p| PyPivot::of(ctx.task, p)).collect())
+        list_polled(py, &pivots, |p| {
+            Ok(Bound::new(py, PyPivot::of(ctx.task, p))?.into_any())
+        })
     }
 }
 
@@ -539,17 +801,17 @@ impl PySolutionMap {
     }
     #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
         text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_pivots(
+    fn best_pivots<'py>(
         &self,
-        py: Python<'_>,
+        py: Python<'py>,
         k: Count,
         min_separation: Option<Real>,
         rank_by: &str,
-    ) -> PyResult<Vec<PyPivot>> {
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         let rank_by = rank_by.parse::<RankBy>().py()?;
         self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
     }
-    fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyPivot>> {
+    fn pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
     }
 
@@ -587,8 +849,10 @@ impl PySolutionMap {
                 obstacles: constraints.1.into_iter().map(pts).collect(),
                 link_width: constraints.2,
                 travel_samples: constraints.3,
+                envelope: None,
             },
         };
+        check_context(py, &context)?;
         let shape = (context.grid.ny(), context.grid.nx());
         Self::from_columns(py, context, shape, columns)
     }
@@ -638,6 +902,39 @@ impl PySolutionMap {
         let (ny, nx) = self.shape();
         format!("<SolutionMap {} pivots, {ny} x {nx}>", self.varying())
     }
+}
+
+/// Refuses the context of a pickled map that no map has: a fixed dyad that
+/// is not the task's (a driving map's driven dyad is the task's dyad of its
+/// center, bit for bit; a driven map's driving dyad must be a dyad of the
+/// task), or limits and constraints a map refuses. The core decides, on a
+/// map of one sample of the grid's view (its checks come before any work).
+fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
+    let v = c.grid.viewport();
+    let probe = Grid::from_bounds(v.xmin, v.xmax, v.ymin, v.ymax, 1, 1).py()?;
+    let control = burmester::Control::new();
+    py.detach(|| match c.varying {
+        Varying::Driving { driven } => {
+            let f = c.task.filemon(driven.center)?;
+            if f.driven() != driven {
+                return Ok(Err(()));
+            }
+            f.solution_map(&probe, &c.limits, &c.constraints, &control)
+                .map(|_| Ok(()))
+        }
+        Varying::Driven { driving } => c
+            .task
+            .driven_solution_map(&driving, &probe, &c.limits, &c.constraints, &control)
+            .map(|_| Ok(())),
+    })
+    .py()?
+    .map_err(|()| {
+        crate::errors::invalid(
+            "inconsistent_state",
+            "unpickling a map: its driven dyad is not the task's dyad of its center; the \
+             pickle was damaged or not made by burmester: compute the map again",
+        )
+    })
 }
 
 /// `Filemon.solution_map`.

@@ -1,5 +1,5 @@
 //! Pictures in Jupyter: the `_repr_png_` of `Task`, `Filemon`, `FourBar`,
-//! `SynthesizedFourBar` and `SolutionMap`.
+//! `SynthesizedFourBar`, `SolutionMap`, `PairMap` and `Cubic`.
 //!
 //! The binding draws nothing itself: each method hands the object to the
 //! pure-Python `burmester._display.repr_png`, which imports matplotlib only

@@ -1,10 +1,10 @@
 //! `burmester.Grid` and `burmester.Conic` (the core's `geom`).
 
 use burmester::{Conic, Grid, Vector2, Viewport};
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn};
+use numpy::{PyArray1, PyArray2, PyArrayDyn};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyList, PySequence, PyTuple};
 
 use crate::conv::{Count, FloatArray, PyPoint, Real, pt, slice_mut, writer, zeros};
 use crate::errors::{IntoPy, invalid};
@@ -17,6 +17,9 @@ type Xy = (f64, f64);
 pub struct PyGrid {
     pub(crate) inner: Grid,
 }
+
+/// The sample coordinates of a grid's columns and rows.
+type Axes<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
 
 #[pymethods]
 impl PyGrid {
@@ -73,14 +76,20 @@ impl PyGrid {
     }
 
     /// `(xs, ys)`: the sample coordinates of the columns and of the rows.
-    fn cell_centers<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>) {
+    fn cell_centers<'py>(&self, py: Python<'py>) -> PyResult<Axes<'py>> {
         let g = &self.inner;
-        let xs: Vec<f64> = (0..g.nx()).map(|i| g.x(i)).collect();
-        let ys: Vec<f64> = (0..g.ny()).map(|j| g.y(j)).collect();
-        (xs.into_pyarray(py), ys.into_pyarray(py))
+        // NumPy allocates them (a failed allocation is a MemoryError).
+        let axis = |n: usize, at: &dyn Fn(usize) -> f64| -> PyResult<Bound<'py, PyArray1<f64>>> {
+            let a = crate::conv::empty::<f64>(py, &[n])?;
+            {
+                let mut w = crate::conv::writer(&a)?;
+                for (k, o) in crate::conv::slice_mut(&mut w).iter_mut().enumerate() {
+                    *o = at(k);
+                }
+            }
+            a.cast_into::<PyArray1<f64>>().map_err(PyErr::from)
+        };
+        Ok((axis(g.nx(), &|i| g.x(i))?, axis(g.ny(), &|j| g.y(j))?))
     }
 
     /// The sample `[j, i]`: `(x_i, y_j)`.
@@ -125,26 +134,40 @@ fn extent(g: &Grid) -> (f64, f64, f64, f64) {
     (v.xmin, v.xmax, v.ymin, v.ymax)
 }
 
-/// A grid from the leading positional arguments of a call: a `Grid`, or the
-/// six numbers `xmin, xmax, ymin, ymax, nx, ny`. Returns the grid and how
-/// many arguments it took.
+/// A grid from the leading positional arguments of a call: a `Grid`, its
+/// six numbers `xmin, xmax, ymin, ymax, nx, ny` as one tuple or list (as
+/// `pivot_atlas` takes them), or the six numbers one by one. Returns the
+/// grid and how many arguments it took.
 pub(crate) fn grid_arg(args: &Bound<'_, PyTuple>) -> PyResult<(Grid, usize)> {
     let usage = || {
         PyTypeError::new_err(
-            "expected a grid: a burmester.Grid, or the six numbers xmin, xmax, ymin, ymax, nx, ny",
+            "expected a grid: a burmester.Grid, or its six numbers xmin, xmax, ymin, ymax, nx, ny \
+             (as a tuple or one by one)",
         )
     };
     let first = args.get_item(0).map_err(|_| usage())?;
     if let Ok(g) = first.cast::<PyGrid>() {
         return Ok((g.get().inner, 1));
     }
+    if first.is_instance_of::<PyTuple>() || first.is_instance_of::<PyList>() {
+        let six = first.cast::<PySequence>()?;
+        if six.len()? != 6 {
+            return Err(usage());
+        }
+        return Ok((six_numbers(|k| six.get_item(k))?, 1));
+    }
     if args.len() < 6 {
         return Err(usage());
     }
-    let num = |k: usize| -> PyResult<f64> { Ok(args.get_item(k)?.extract::<Real>()?.0) };
-    let count = |k: usize| -> PyResult<usize> { Ok(args.get_item(k)?.extract::<Count>()?.0) };
-    let g = Grid::from_bounds(num(0)?, num(1)?, num(2)?, num(3)?, count(4)?, count(5)?).py()?;
-    Ok((g, 6))
+    Ok((six_numbers(|k| args.get_item(k))?, 6))
+}
+
+/// The grid of six numbers `xmin, xmax, ymin, ymax, nx, ny`, the `k`-th
+/// from `item(k)`.
+fn six_numbers<'py>(item: impl Fn(usize) -> PyResult<Bound<'py, PyAny>>) -> PyResult<Grid> {
+    let num = |k: usize| -> PyResult<f64> { Ok(item(k)?.extract::<Real>()?.0) };
+    let count = |k: usize| -> PyResult<usize> { Ok(item(k)?.extract::<Count>()?.0) };
+    Grid::from_bounds(num(0)?, num(1)?, num(2)?, num(3)?, count(4)?, count(5)?).py()
 }
 
 /// A conic `A x^2 + B x y + C y^2 + D x + E y + F = 0`.
@@ -269,15 +292,10 @@ impl PyConic {
         let tolerance = tolerance.map(|t| t.0);
         let c = self.inner;
         let lines = py.detach(|| c.polylines(&vp, tolerance)).py()?;
-        Ok(lines
-            .into_iter()
-            .map(|l| {
-                let flat: Vec<f64> = l.iter().flat_map(|p| [p.x, p.y]).collect();
-                numpy::ndarray::Array2::from_shape_vec((l.len(), 2), flat)
-                    .expect("two coordinates per point")
-                    .into_pyarray(py)
-            })
-            .collect())
+        lines
+            .iter()
+            .map(|l| crate::curves::polyline(py, l))
+            .collect()
     }
 
     fn __repr__(&self) -> String {

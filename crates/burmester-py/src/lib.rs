@@ -15,11 +15,13 @@ mod conv;
 mod curves;
 mod design;
 mod display;
+mod drive;
 mod errors;
 mod geom;
 mod linkage;
 mod pairs;
 mod run;
+mod search;
 mod sweep;
 mod synthesis;
 
@@ -33,6 +35,10 @@ mod _burmester {
     #[pymodule_export]
     use crate::design::{PyDesignLimits, PyPivot, PySolutionMap};
     #[pymodule_export]
+    use crate::drive::{PyDrive, PyDriveMap, PySixBar, unit_time_ratio_crank_rocker};
+    #[pymodule_export]
+    use crate::errors::DriveError;
+    #[pymodule_export]
     use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
     #[pymodule_export]
     use crate::geom::{PyConic, PyGrid, clip_line};
@@ -40,6 +46,10 @@ mod _burmester {
     use crate::linkage::{PyConfiguration, PyFourBar, PyLinkageFigures};
     #[pymodule_export]
     use crate::pairs::{PyPair, PyPairMap};
+    #[pymodule_export]
+    use crate::search::{
+        _design, _design_from_atlas, _design_plan, PyDesign, PyDesignReport, PyNearMiss, PySpace,
+    };
     #[pymodule_export]
     use crate::synthesis::{PyFilemon, PyPole, PySynthesizedFourBar, PyTask};
 

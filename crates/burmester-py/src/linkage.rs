@@ -437,6 +437,53 @@ impl PyLinkageFigures {
         if !(1..=burmester::geom::MAX_POSES).contains(&modes.len()) {
             return Err(invalid("count_out_of_range", "figures need 1 to 5 modes"));
         }
+        // What the lengths decide must be what they decide, and the rest
+        // must hang together (figures no linkage has are refused).
+        let fb = FourBar::new(lengths[0], lengths[1], lengths[2], lengths[3]).py()?;
+        let bad = |what: String| {
+            Err(invalid(
+                "inconsistent_state",
+                format!(
+                    "unpickling linkage figures: {what}; the pickle was damaged or not made by \
+                     burmester: compute the figures again"
+                ),
+            ))
+        };
+        if fb.grashof() != grashof {
+            return bad(format!(
+                "the Grashof type {:?} is not the lengths' ({:?})",
+                grashof.as_str(),
+                fb.grashof().as_str()
+            ));
+        }
+        if fb.input_turns_fully() != input_full {
+            return bad(format!("input_full {input_full} is not the lengths'"));
+        }
+        if link_ratio.to_bits() != fb.link_ratio().to_bits() {
+            return bad(format!(
+                "the link ratio {link_ratio} is not the lengths' ({})",
+                fb.link_ratio()
+            ));
+        }
+        if input_full && !one_circuit {
+            return bad("an input that turns fully on two circuits".to_owned());
+        }
+        if !one_circuit && direction != Direction::None {
+            return bad(format!(
+                "a direction {:?} on two circuits",
+                direction.as_str()
+            ));
+        }
+        let angle_ok = (0.0..=core::f64::consts::FRAC_PI_2).contains(&min_transmission);
+        if (direction == Direction::None) != min_transmission.is_nan()
+            || !(min_transmission.is_nan() || angle_ok)
+        {
+            return bad(format!(
+                "the minimum transmission angle {min_transmission} with the direction {:?} (an \
+                 angle in [0, pi/2] with a direction, NaN without)",
+                direction.as_str()
+            ));
+        }
         Ok(PyLinkageFigures {
             inner: LinkageFigures {
                 lengths,

@@ -14,13 +14,28 @@
 pub const POINT: f64 = 1e-12;
 
 /// Two poses whose angles agree within this many radians (modulo `2 pi`)
-/// differ by a pure translation: their pole is at infinity. Above the
-/// bound the three-position maps run through the poles and keep a relative
-/// accuracy of a few `eps / theta` near the poses, about `1e-9` at this
-/// bound; at or below it they run by the linear form with the poses' own
-/// angles (no pole, no division by `theta`), so the maps change by `O(theta)`
-/// across the bound.
+/// differ by a pure translation: their pole is at infinity (what needs
+/// three finite poles, the pole triangle, is refused). The three-position
+/// maps do not switch here: they run by the linear form with the poses' own
+/// angles (no pole, no division by `theta`) wherever a pole lies farther
+/// than [`POLE_DISTANCE`] spans from the poses, which includes every pole
+/// at infinity, so they are the same maps on both sides of this bound.
 pub const MIN_ROTATION: f64 = 1e-6;
+
+/// The farthest the poles `P12` and `P13` may lie from pose 1's position,
+/// in units of the task's span (the largest distance between two pose
+/// positions), for a task of three poses to run its maps through the poles
+/// (Borm & Kim's closed form, [`Cremona`](crate::Cremona)); farther, a
+/// small rotation puts a pole far away and the closed form loses what it
+/// cancels (its relative error grows like `eps / theta`, a factor of about
+/// `0.5 / theta` over what rounding the input causes: `1e6` at `1e-6`
+/// rad), so the maps run by the linear form, which needs no pole and keeps
+/// the input's accuracy at every rotation (measured against mpmath from
+/// `1e-9` to 1 rad). A pole `8` spans away is a rotation of about `0.12`
+/// rad; the closed form is then within a factor of about `5` of the
+/// input's rounding. The choice is by this conditioning, not by the
+/// rotation alone; [`MIN_ROTATION`] still says where a pole is at infinity.
+pub const POLE_DISTANCE: f64 = 8.0;
 
 /// Factor of `f64::EPSILON` for the position analysis' rounding decisions,
 /// relative to the size of the quantities compared: a toggle (Heron's
@@ -34,14 +49,14 @@ pub const ROUNDING_EPS: f64 = 8.0;
 /// three-position map at infinity (its denominator).
 pub const CROSS_EPS: f64 = 16.0;
 
-/// The one toggle criterion, `sqrt(ROUNDING_EPS eps)`: a loop with coupler
-/// `L3`, rocker `L4` and crank tip to output pivot `r` is at a toggle where
-/// its transmission angle `mu` has
-/// `|sin mu| <= TOGGLE_BAND ((L3 + L4)^2 + r^2) / (2 L3 L4)` (about `1e-7`
-/// rad when `L3` and `L4` are alike). It is Heron's product within
-/// [`ROUNDING_EPS`] of zero, restated in angle terms; both
-/// [`FourBar::solve`](crate::FourBar::solve) and the mode of a built linkage
-/// at a pose ([`AssemblyMode::of_loop`](crate::AssemblyMode::of_loop)) use it.
+/// `sqrt(ROUNDING_EPS eps)`, the earlier toggle band's factor: Heron's
+/// product within [`ROUNDING_EPS`] of `((L3 + L4)^2 + r^2)^2`, in angle
+/// terms `|sin mu| <= TOGGLE_BAND ((L3 + L4)^2 + r^2) / (2 L3 L4)`. That
+/// band grows like `L3 / L4` and called a 49 degree transmission angle a
+/// toggle at a link ratio of `5e7`; the crate's one toggle criterion is now
+/// [`heron_tolerance`] (whose band is about `1e-7` rad, like this one, when
+/// `L3` and `L4` are alike). Kept as the scale of a toggle band for links
+/// of one size.
 pub const TOGGLE_BAND: f64 = 4.214_684_851_089_403_5e-8;
 
 /// Relative tolerance of "collinear": three points whose doubled triangle
@@ -107,6 +122,125 @@ pub const BURMESTER_EPS: f64 = 16.0;
 /// the poles' distance from the task) are rotations about one point: the
 /// Burmester points of five poses with them are not isolated.
 pub const BURMESTER_COMMON_POLE: f64 = 1e-9;
+
+/// Factor of `f64::EPSILON` of the loop closure's rounding, in the crate's
+/// one toggle criterion [`heron_tolerance`] (derived there). The measured
+/// rounding of Heron's product stays below `0.6 eps` times the bound's
+/// terms (2,000 positions near the dead positions of linkages with link
+/// ratios from 1 to `1e9`, against mpmath at 300 bits), so this factor
+/// leaves a margin of about 8: the computed toggle decision is the exact
+/// one wherever `|sin mu|` lies outside `[band / 2, 2 band]`.
+pub const LOOP_EPS: f64 = 4.0;
+
+/// The one toggle criterion of the crate: the rounding band of Heron's
+/// product of a loop closure. [`FourBar::solve`](crate::FourBar::solve)
+/// reports a toggle (and accepts a loop that just fails to close) within
+/// it, [`AssemblyMode::of_loop`](crate::AssemblyMode::of_loop) gives no
+/// mode within it, and so the figures at a design pose, the three-pose
+/// `simulate` classifier and the solution maps, which take their modes from
+/// those two.
+///
+/// Arguments, in any one unit (the band is homogeneous of degree 4):
+/// `sum2 = (L3 + L4)^2` and `diffsum = |L3^2 - L4^2| = |L3 - L4| (L3 + L4)`
+/// of the coupler `L3` and the rocker `L4`, `r2 = r^2` with `r` the
+/// distance from the crank tip `A` to the output pivot `O4`, `rho` the size
+/// of the vectors `r` was formed from (`L1 + L2`, ground and crank, in the
+/// position analysis), and Heron's two factors
+/// `a = (L3 + L4)^2 - r^2` and `b = r^2 - (L3 - L4)^2` as the caller
+/// computed them.
+///
+/// # Derivation
+///
+/// ```text
+/// The loop closes where the crank tip A and the output pivot O4, at
+/// distance r, can be joined by the coupler L3 and the rocker L4 meeting at
+/// the rocker tip B: where Heron's product
+///
+///     H = A B,    A = (L3 + L4)^2 - r^2,    B = r^2 - (L3 - L4)^2
+///
+/// is not negative. With phi = theta4 - theta3 the angle from the coupler
+/// to the rocker (the transmission angle mu has |sin mu| = |sin phi|),
+///
+///     A = 2 L3 L4 (1 + cos phi),   B = 2 L3 L4 (1 - cos phi),
+///     H = 16 area(A B O4)^2 = (2 L3 L4 sin mu)^2,
+///
+/// so A = 0 at the extended toggle (r = L3 + L4) and B = 0 at the folded
+/// one (r = |L3 - L4|). The position analysis forms d = O4 - A =
+/// L1 e^{i theta1} - L2 e^{i theta2} from two vectors of lengths L1 and L2:
+/// each component of d is off by up to about eps rho, rho = L1 + L2, so
+/// r^2 = |d|^2 by up to about eps (2 sqrt(2) r rho + r^2). The lengths are
+/// rounded to eps relative (scaled by the longest link), and A and B are
+/// differences of squares:
+///
+///     err(A) <~ eps E_A,    E_A = (L3 + L4)^2 + r^2 + 2 r rho
+///     err(B) <~ eps E_B,    E_B = |L3 - L4| (L3 + L4) + r^2 + 2 r rho
+///     err(H) <~ |B| err(A) + |A| err(B) + err(A) err(B)
+///
+/// up to factors of a few, which LOOP_EPS covers (measured: below 0.6).
+/// Where H is within that of zero, the rounding cannot tell the loop's two
+/// modes apart, nor a loop that just closes from one that just does not.
+/// The criterion: the loop is at a toggle where
+///
+///     |H| <= tol = k (|B| E_A + |A| E_B) + k^2 E_A E_B,    k = LOOP_EPS eps,
+///
+/// in angle terms, since sqrt(H) = 2 L3 L4 |sin mu|,
+///
+///     |sin mu| <= band = sqrt(tol) / (2 L3 L4).
+///
+/// At the extended and the folded toggle (A = 0, B = 4 L3 L4; B = 0,
+/// A = 4 L3 L4) the band is
+///
+///     band = sqrt(LOOP_EPS eps E_A / (L3 L4)),   sqrt(LOOP_EPS eps E_B / (L3 L4)),
+///
+/// and between them it lies below the larger of the two. For four links
+/// of one size that is about 1e-7 (the width of the earlier band
+/// TOGGLE_BAND ((L3 + L4)^2 + r^2) / (2 L3 L4), which grew like L3 / L4);
+/// it grows like the square root of the link ratio: for a long crank and
+/// coupler (L2 ~ L3) on a short rocker, sqrt(4 LOOP_EPS eps L3 / L4) to
+/// sqrt(6 LOOP_EPS eps L3 / L4) (short to long ground), the square root of
+/// the rocker angle's rounding eps (L2 + L3) / L4 away from a toggle, about
+/// 2e-3 at a link ratio of 1e9. A transmission angle of 3 degrees is a
+/// toggle only beyond link ratios of about 5e11.
+///
+/// The mode of a built loop from its coupler and rocker vectors
+/// (AssemblyMode::of_loop) tests 4 cross(u, w)^2 = H against the same tol,
+/// with A = 2 (|u| |w| + u . w), B = 2 (|u| |w| - u . w), r = |u - w| and
+/// rho the size of the vectors u and w came from.
+/// ```
+///
+/// Returns `tol`; NaN input gives NaN (every comparison with it fails, so
+/// a NaN loop is neither closed nor clear of a toggle).
+#[inline(always)]
+pub fn heron_tolerance(sum2: f64, diffsum: f64, r2: f64, rho: f64, a: f64, b: f64) -> f64 {
+    let k = LOOP_EPS * f64::EPSILON;
+    let r = r2.sqrt();
+    let shared = r2 + 2.0 * r * rho;
+    let ea = sum2 + shared;
+    let eb = diffsum + shared;
+    k * (b.abs() * ea + a.abs() * eb) + k * k * ea * eb
+}
+
+/// The toggle band of [`heron_tolerance`] in angle terms: a loop with
+/// coupler `l3`, rocker `l4`, crank tip to output pivot `r` and `rho` the
+/// size of the vectors `r` was formed from (`L1 + L2` in the position
+/// analysis) is at a toggle where `|sin mu| <= toggle_band(l3, l4, r, rho)`
+/// (`mu` the transmission angle). For tables, tests and messages; the
+/// decisions compare Heron's product with [`heron_tolerance`] directly.
+pub fn toggle_band(l3: f64, l4: f64, r: f64, rho: f64) -> f64 {
+    let m = l3.max(l4).max(r).max(rho);
+    let (l3, l4, r, rho) = (l3 / m, l4 / m, r / m, rho / m);
+    let (sum, diff) = (l3 + l4, l3 - l4);
+    let r2 = r * r;
+    let tol = heron_tolerance(
+        sum * sum,
+        diff.abs() * sum,
+        r2,
+        rho,
+        sum * sum - r2,
+        r2 - diff * diff,
+    );
+    tol.sqrt() / (2.0 * l3 * l4)
+}
 
 #[cfg(test)]
 mod tests {

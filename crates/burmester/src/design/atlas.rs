@@ -7,14 +7,14 @@
 //! `C0`:
 //!
 //! * the number of acceptable driving pivots;
-//! * the best of them by
-//!   [`RankBy::Transmission`](crate::RankBy::Transmission) (the largest
-//!   minimum transmission angle over the travel, ties within
-//!   [`tolerance::RANK_TIE`] by the more compact linkage, the smaller size
-//!   ratio, then by the larger margin to the nearest branch-defect
-//!   boundary), exactly the first pivot of
-//!   [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(1, ..,
-//!   RankBy::Transmission)`, with its figures;
+//! * the best of them by a [`RankBy`] with a score
+//!   ([`Balanced`](RankBy::Balanced), the default of the Python binding,
+//!   [`Transmission`](RankBy::Transmission) or [`Compact`](RankBy::Compact);
+//!   scores within [`tolerance::RANK_TIE`] tie and go to the more compact
+//!   linkage, the smaller size ratio, then to the larger margin to the
+//!   nearest branch-defect boundary, as in the maps), exactly the first
+//!   pivot of [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(1,
+//!   .., rank_by)`, with its figures and score;
 //! * the number of branch-free driving samples (the map's `branch_free`
 //!   column).
 //!
@@ -38,9 +38,9 @@ use rayon::prelude::*;
 use crate::design::kernel::{CosBand, DrivingKernel, RowOut, RowPre};
 use crate::design::map::Sampler;
 use crate::design::rank::tie_order;
-use crate::design::{Constraints, DesignLimits};
+use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
-use crate::error::{Error, InvalidInput, Result, try_vec};
+use crate::error::{Error, InvalidInput, Result, try_push, try_vec};
 use crate::geom::Grid;
 use crate::synthesis::Task;
 use crate::synthesis::three::{BranchRows, Filemon};
@@ -61,6 +61,12 @@ pub struct AtlasBest {
     /// Its margin to the nearest branch-defect boundary
     /// ([`Filemon::margin`]).
     pub margin: f64,
+    /// The linkage's size relative to the task's (the solution map's
+    /// `size_ratio`).
+    pub size_ratio: f32,
+    /// Its score by the atlas's ranking ([`RankBy::score`] of the three
+    /// columns above, as the map's ranking reads them).
+    pub score: f64,
 }
 
 /// One driven center's reduced solution map.
@@ -88,7 +94,7 @@ impl AtlasCell {
 
 /// The pivot-pair atlas: what it was computed for, and one
 /// [`AtlasCell`] per driven center, row-major.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct PivotAtlas {
     /// The task.
     pub task: Task,
@@ -100,8 +106,29 @@ pub struct PivotAtlas {
     pub limits: DesignLimits,
     /// The constraints behind `acceptable`.
     pub constraints: Constraints,
+    /// What chose each cell's best driving pivot.
+    pub rank_by: RankBy,
     /// One cell per driven sample, row-major.
     pub cells: Vec<AtlasCell>,
+}
+
+/// The task, both grids, the limits and constraints, and how many driven
+/// centers have an acceptable driving pivot, not every cell.
+impl core::fmt::Debug for PivotAtlas {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("PivotAtlas")
+            .field("task", &self.task)
+            .field("driven", &self.driven)
+            .field("driving", &self.driving)
+            .field("limits", &self.limits)
+            .field("constraints", &self.constraints)
+            .field("cells", &self.cells.len())
+            .field(
+                "with_acceptable",
+                &self.cells.iter().filter(|c| c.count > 0).count(),
+            )
+            .finish()
+    }
 }
 
 impl PivotAtlas {
@@ -120,13 +147,17 @@ impl PivotAtlas {
 impl Task {
     /// The pivot-pair atlas over driven centers on `driven`, each reduced
     /// from its solution map over `driving` (module docs of
-    /// [`atlas`](crate::design::atlas)), in parallel, following `control`
-    /// (progress counts driven centers).
+    /// [`atlas`](crate::design::atlas)), in parallel, following `control`:
+    /// progress counts driving rows over all driven centers
+    /// (`driving.ny()` per driven center, so it moves within a center
+    /// whose map takes seconds), and the cancel flag is checked before
+    /// every driving sample and inside the clearance tests.
     ///
     /// # Errors
     ///
     /// [`InvalidInput::NeedsPoses`] for a task of four or five poses;
-    /// [`InvalidInput`] for invalid limits or constraints;
+    /// [`InvalidInput`] for invalid limits or constraints, or a ranking
+    /// without a score ([`RankBy::Pareto`], [`RankBy::Margin`]);
     /// [`Error::OutOfMemory`]; [`Error::Cancelled`].
     pub fn pivot_atlas(
         &self,
@@ -134,6 +165,7 @@ impl Task {
         driving: &Grid,
         limits: &DesignLimits,
         constraints: &Constraints,
+        rank_by: RankBy,
         control: &Control<'_>,
     ) -> Result<PivotAtlas> {
         let cells = self.pivot_atlas_rows(
@@ -142,6 +174,7 @@ impl Task {
             driving,
             limits,
             constraints,
+            rank_by,
             control,
         )?;
         Ok(PivotAtlas {
@@ -150,6 +183,7 @@ impl Task {
             driving: *driving,
             limits: *limits,
             constraints: constraints.clone(),
+            rank_by,
             cells,
         })
     }
@@ -162,6 +196,7 @@ impl Task {
     ///
     /// As [`pivot_atlas`](Self::pivot_atlas);
     /// [`InvalidInput::OutsideRange`] for rows outside the driven grid.
+    #[allow(clippy::too_many_arguments)]
     pub fn pivot_atlas_rows(
         &self,
         driven: &Grid,
@@ -169,9 +204,11 @@ impl Task {
         driving: &Grid,
         limits: &DesignLimits,
         constraints: &Constraints,
+        rank_by: RankBy,
         control: &Control<'_>,
     ) -> Result<Vec<AtlasCell>> {
         self.three_poses("the pivot atlas")?;
+        check_scored(rank_by, "atlas ranking")?;
         if rows.start > rows.end || rows.end > driven.ny() {
             return Err(InvalidInput::OutsideRange {
                 name: "driven rows",
@@ -182,29 +219,58 @@ impl Task {
             }
             .into());
         }
-        let sampler = Sampler::new(self, limits, constraints)?;
+        let sampler = Sampler::new(self, limits, constraints)?.with_control(control);
         let nx = driven.nx();
-        let total = (rows.end - rows.start) * nx;
-        let mut cells = try_vec("a pivot atlas", total, AtlasCell::INVALID)?;
+        let cells_in_all = (rows.end - rows.start) * nx;
+        let mut cells = try_vec("a pivot atlas", cells_in_all, AtlasCell::INVALID)?;
+        // Progress counts the driving rows over all driven centers: a
+        // driven center's map can take seconds (obstacles, thousands of
+        // travel samples), a driving row of it a small part of that.
+        let per_cell = driving.ny();
+        let total = cells_in_all.saturating_mul(per_cell);
         let done = AtomicUsize::new(0);
-        let xs = DrivingKernel::padded_xs(driving);
+        // The total at once, so that a follower sees the work begin.
+        control.report(0, total);
+        let xs = DrivingKernel::padded_xs(driving)?;
+        let failed: std::sync::Mutex<Option<Error>> = std::sync::Mutex::new(None);
+        let fail = |e: Error| {
+            if let Ok(mut f) = failed.lock() {
+                f.get_or_insert(e);
+            }
+        };
         cells.par_chunks_mut(CHUNK).enumerate().for_each_init(
             || Scratch::new(&xs, driving.nx()),
             |scratch, (m, chunk)| {
                 if control.is_cancelled() {
                     return;
                 }
+                let scratch = match scratch {
+                    Ok(s) => s,
+                    Err(e) => return fail(e.clone()),
+                };
                 let centers: Vec<Point2<f64>> = (m * CHUNK..m * CHUNK + chunk.len())
                     .map(|k| driven.point(k % nx, rows.start + k / nx))
                     .collect();
-                atlas_chunk(self, &sampler, &centers, driving, scratch, chunk);
-                let d = done.fetch_add(chunk.len(), Ordering::Relaxed) + chunk.len();
-                control.report(d, total);
+                let tick = |units: usize| {
+                    let d = done.fetch_add(units, Ordering::Relaxed) + units;
+                    control.report(d, total);
+                };
+                if let Err(e) = atlas_chunk(
+                    self, &sampler, &centers, driving, rank_by, scratch, chunk, control, &tick,
+                ) {
+                    fail(e);
+                }
             },
         );
+        if let Some(e) = failed.into_inner().ok().flatten() {
+            return Err(e);
+        }
         let done = done.into_inner();
-        if done < total {
-            return Err(Error::Cancelled { done, total });
+        if done < total || control.is_cancelled() {
+            return Err(Error::Cancelled {
+                done: done.min(total.saturating_sub(1)),
+                total,
+            });
         }
         Ok(cells)
     }
@@ -227,13 +293,13 @@ struct Scratch<'a> {
 }
 
 impl<'a> Scratch<'a> {
-    fn new(xs: &'a [f64], nx: usize) -> Self {
-        Scratch {
+    fn new(xs: &'a [f64], nx: usize) -> Result<Self> {
+        Ok(Scratch {
             xs,
-            union: vec![false; nx],
-            pre: RowPre::new(xs),
-            out: RowOut::new(xs),
-        }
+            union: try_vec("a driving row", nx, false)?,
+            pre: RowPre::new(xs)?,
+            out: RowOut::new(xs)?,
+        })
     }
 }
 
@@ -250,8 +316,8 @@ struct Cell<'a> {
     active: bool,
     /// The acceptable samples within `RANK_TIE` of the best score so far:
     /// exactly the first run of `best_pivots`' ranking once all are seen.
-    top: f32,
-    run: Vec<(usize, f32)>,
+    top: f64,
+    run: Vec<(usize, f64)>,
     /// The scores that may reach the best run (below it by more than
     /// `TOP_SLACK`, a score cannot tie after its rounding to f32).
     reach: CosBand,
@@ -261,15 +327,27 @@ struct Cell<'a> {
 /// The cells of driven centers `centers`, into `cells`: each as one solution
 /// map of the driving grid reduced (module docs), the rows of the driving
 /// grid taken in order for every center, the lanes of the driving
-/// candidates computed once per row for all of them.
+/// candidates computed once per row for all of them. `tick(units)` counts
+/// the driving rows done, one unit per row of one center (a center's row
+/// with obstacles can take seconds); it stops, leaving `cells` partly
+/// written and not counting the row it was in, once `control` is
+/// cancelled.
+///
+/// # Errors
+///
+/// [`Error::OutOfMemory`] for the buffers of a driving row.
+#[allow(clippy::too_many_arguments)]
 fn atlas_chunk(
     task: &Task,
     sampler: &Sampler<'_>,
     centers: &[Point2<f64>],
     driving: &Grid,
+    rank_by: RankBy,
     scratch: &mut Scratch<'_>,
     cells: &mut [AtlasCell],
-) {
+    control: &Control<'_>,
+    tick: &dyn Fn(usize),
+) -> Result<()> {
     let filemons: Vec<Option<Filemon>> = centers.iter().map(|&c0| task.filemon(c0).ok()).collect();
     // The transmission limit.
     let limit = CosBand::new(sampler.judge.limits().min_transmission);
@@ -281,7 +359,7 @@ fn atlas_chunk(
         };
         let driven = filemon.driven();
         let c = sampler.fixed_pivots(&driven);
-        let branch = BranchRows::new(filemon, driving);
+        let branch = BranchRows::new(filemon, driving)?;
         let cell = AtlasCell {
             valid: true,
             ..AtlasCell::INVALID
@@ -298,9 +376,9 @@ fn atlas_chunk(
                 c,
                 branch,
                 kernel: DrivingKernel::new(sampler, driven, &c),
-                row: vec![false; driving.nx()],
+                row: try_vec("a driving row", driving.nx(), false)?,
                 active: false,
-                top: f32::NEG_INFINITY,
+                top: f64::NEG_INFINITY,
                 run: Vec::new(),
                 reach: CosBand::new(f64::NEG_INFINITY),
                 cell,
@@ -314,7 +392,15 @@ fn atlas_chunk(
         out,
     } = scratch;
     let nx = driving.nx();
+    // The centers without a row to reduce are done.
+    tick((centers.len() - live.len()) * driving.ny());
+    if live.is_empty() {
+        return Ok(());
+    }
     for j in 0..driving.ny() {
+        if control.is_cancelled() {
+            return Ok(());
+        }
         union.fill(false);
         let mut any = false;
         for (_, cell) in &mut live {
@@ -328,6 +414,7 @@ fn atlas_chunk(
             }
         }
         if !any {
+            tick(live.len());
             continue;
         }
         let y = driving.y(j);
@@ -336,20 +423,28 @@ fn atlas_chunk(
         if let Some(k) = live.iter().find_map(|(_, c)| c.kernel.as_ref()) {
             k.pre_row(y, xs, union, pre);
         }
+        tick(live.iter().filter(|(_, c)| !c.active).count());
         for (_, cell) in live.iter_mut().filter(|(_, c)| c.active) {
             if let Some(k) = &cell.kernel {
                 k.row_where(y, xs, &cell.row, pre, out);
             }
-            cell.take_row(sampler, driving, j, nx, out, &limit);
+            cell.take_row(sampler, driving, j, nx, out, &limit, rank_by, control)?;
+            if control.is_cancelled() {
+                // A row cut short: not counted.
+                return Ok(());
+            }
+            tick(1);
         }
     }
     for (m, cell) in live {
-        cells[m] = cell.finish(task, sampler, driving);
+        cells[m] = cell.finish(task, sampler, driving, rank_by, control)?;
     }
+    Ok(())
 }
 
 impl Cell<'_> {
     /// The branch-free samples of row `j` (the kernel's lanes in `out`).
+    #[allow(clippy::too_many_arguments)]
     fn take_row(
         &mut self,
         sampler: &Sampler<'_>,
@@ -358,20 +453,38 @@ impl Cell<'_> {
         nx: usize,
         out: &RowOut,
         limit: &CosBand,
-    ) {
+        rank_by: RankBy,
+        control: &Control<'_>,
+    ) -> Result<()> {
+        let by_transmission = rank_by == RankBy::Transmission;
         for (i, _) in self.row.iter().enumerate().filter(|(_, f)| **f) {
+            // A sample with obstacles can take milliseconds (its clearance
+            // over the travel), a row of them seconds.
+            if control.is_cancelled() {
+                return Ok(());
+            }
             let p = driving.point(i, j);
             // Acceptable samples with their score where it may reach the
-            // run of the best (elsewhere no `acos` is taken).
+            // run of the best (by transmission: elsewhere no `acos` is
+            // taken).
             let reach = &self.reach;
             let seen = match &self.kernel {
-                Some(k) => k
-                    .judge_for_atlas(out, i, p, limit)
-                    .map(|a| a.map(|w| reach.may_reach(w).then(|| crate::simd::acos1(w) as f32))),
+                Some(k) => k.judge_for_atlas(out, i, p, limit).map(|a| {
+                    a.map(|w| {
+                        if by_transmission {
+                            reach
+                                .may_reach(w)
+                                .then(|| f64::from(crate::simd::acos1(w) as f32))
+                        } else {
+                            let (mu, ratio, size) = k.ranked_at(out, i, p, w);
+                            rank_by.score(f64::from(mu), f64::from(size), f64::from(ratio))
+                        }
+                    })
+                }),
                 None => {
                     let s = sampler.driving_sample(p, self.driven, &self.c, true);
                     s.valid
-                        .then_some(s.acceptable.then_some(Some(s.min_transmission_rad)))
+                        .then_some(s.acceptable.then_some(sample_score(&s, rank_by)))
                 }
             };
             let Some(acceptable) = seen else {
@@ -389,34 +502,63 @@ impl Cell<'_> {
                 self.top = score;
                 let top = self.top;
                 self.run.retain(|&(_, v)| tied(top, v));
-                self.reach = CosBand::new(f64::from(top) - tolerance::RANK_TIE - TOP_SLACK);
+                if by_transmission {
+                    self.reach = CosBand::new(top - tolerance::RANK_TIE - TOP_SLACK);
+                }
             }
             if tied(self.top, score) {
-                self.run.push((j * nx + i, score));
+                try_push(
+                    &mut self.run,
+                    "the best driving pivots",
+                    (j * nx + i, score),
+                )?;
             }
         }
+        Ok(())
     }
 
     /// The cell once every row is seen.
-    fn finish(self, task: &Task, sampler: &Sampler<'_>, driving: &Grid) -> AtlasCell {
+    fn finish(
+        self,
+        task: &Task,
+        sampler: &Sampler<'_>,
+        driving: &Grid,
+        rank_by: RankBy,
+        control: &Control<'_>,
+    ) -> Result<AtlasCell> {
         let mut cell = self.cell;
-        cell.best = best(task, self.filemon, sampler, driving, self.run).or_else(|| {
+        cell.best = best(task, self.filemon, sampler, driving, self.run);
+        if cell.best.is_none() && cell.count > 0 {
             // No candidate of the first run has a linkage (not seen in
             // practice): rank every acceptable sample, as `best_pivots` does.
-            (cell.count > 0)
-                .then(|| {
-                    best(
-                        task,
-                        self.filemon,
-                        sampler,
-                        driving,
-                        all_acceptable(self.filemon, sampler, driving),
-                    )
-                })
-                .flatten()
-        });
-        cell
+            let all = all_acceptable(self.filemon, sampler, driving, rank_by, control)?;
+            cell.best = best(task, self.filemon, sampler, driving, all);
+        }
+        Ok(cell)
     }
+}
+
+/// The score of a sample by `rank_by`, from its columns as the map's
+/// ranking reads them (`None` where NaN).
+fn sample_score(s: &crate::design::map::Sample, rank_by: RankBy) -> Option<f64> {
+    rank_by.score(
+        f64::from(s.min_transmission_rad),
+        f64::from(s.size_ratio),
+        f64::from(s.link_ratio),
+    )
+}
+
+/// Checks that a ranking has a score (not the Pareto front or the margin).
+pub(crate) fn check_scored(rank_by: RankBy, what: &'static str) -> Result<()> {
+    if rank_by.score(1.0, 1.0, 1.0).is_none() {
+        return Err(InvalidInput::UnknownName {
+            what,
+            expected: "\"balanced\", \"transmission\" or \"compact\" (a ranking with a score)",
+            found: rank_by.as_str().to_owned(),
+        }
+        .into());
+    }
+    Ok(())
 }
 
 /// Radians below the best run's score under which a sample's score (an
@@ -426,30 +568,48 @@ const TOP_SLACK: f64 = 1e-6;
 /// Whether `score` ties with the best score `top` (as `best_pivots` groups
 /// runs: the difference in `f64`).
 #[inline]
-fn tied(top: f32, score: f32) -> bool {
-    (f64::from(top) - f64::from(score)).abs() <= tolerance::RANK_TIE
+fn tied(top: f64, score: f64) -> bool {
+    (top - score).abs() <= tolerance::RANK_TIE
 }
 
-/// Every acceptable sample with a transmission angle, `(k, score)`.
-fn all_acceptable(filemon: &Filemon, sampler: &Sampler<'_>, driving: &Grid) -> Vec<(usize, f32)> {
+/// Every acceptable sample with a score, `(k, score)`.
+/// Empty once `control` is cancelled (the atlas is then cancelled too).
+///
+/// # Errors
+///
+/// [`Error::OutOfMemory`].
+fn all_acceptable(
+    filemon: &Filemon,
+    sampler: &Sampler<'_>,
+    driving: &Grid,
+    rank_by: RankBy,
+    control: &Control<'_>,
+) -> Result<Vec<(usize, f64)>> {
     let driven = filemon.driven();
     let c = sampler.fixed_pivots(&driven);
-    let branch = BranchRows::new(filemon, driving);
-    let mut row = vec![false; driving.nx()];
+    let branch = BranchRows::new(filemon, driving)?;
+    let mut row = try_vec("a driving row", driving.nx(), false)?;
     let mut out = Vec::new();
     for j in 0..driving.ny() {
+        if control.is_cancelled() {
+            return Ok(Vec::new());
+        }
         branch.row(j, &mut row);
         for (i, _) in row.iter().enumerate().filter(|(_, f)| **f) {
             let s = sampler.driving_sample(driving.point(i, j), driven, &c, true);
-            if s.acceptable && !s.min_transmission_rad.is_nan() {
-                out.push((j * driving.nx() + i, s.min_transmission_rad));
+            if let (true, Some(score)) = (s.acceptable, sample_score(&s, rank_by)) {
+                try_push(
+                    &mut out,
+                    "the acceptable driving pivots",
+                    (j * driving.nx() + i, score),
+                )?;
             }
         }
     }
-    out
+    Ok(out)
 }
 
-/// The first pivot `best_pivots(1, _, RankBy::Transmission)` takes from
+/// The first pivot `best_pivots(1, _, rank_by)` takes from
 /// the candidates `cand` (`(k, score)`, in sample order): sorted by score,
 /// runs of ties by size ratio then margin, the first with a linkage.
 fn best(
@@ -457,7 +617,7 @@ fn best(
     filemon: &Filemon,
     sampler: &Sampler<'_>,
     driving: &Grid,
-    mut cand: Vec<(usize, f32)>,
+    mut cand: Vec<(usize, f64)>,
 ) -> Option<AtlasBest> {
     let driven = filemon.driven();
     let c = sampler.fixed_pivots(&driven);
@@ -469,16 +629,16 @@ fn best(
         while j < cand.len() && tied(cand[i].1, cand[j].1) {
             j += 1;
         }
-        let mut run: Vec<(usize, f32, f64)> = cand[i..j]
+        let mut run: Vec<(usize, f32, f64, f64)> = cand[i..j]
             .iter()
-            .map(|&(k, _)| {
+            .map(|&(k, score)| {
                 let p = driving.point(k % nx, k / nx);
                 let size = sampler.driving_sample(p, driven, &c, true).size_ratio;
-                (k, size, filemon.margin_at(p))
+                (k, size, filemon.margin_at(p), score)
             })
             .collect();
         run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
-        for (k, _, margin) in run {
+        for (k, _, margin, score) in run {
             let p = driving.point(k % nx, k / nx);
             let linkage = task
                 .dyad_from_center(p)
@@ -491,6 +651,8 @@ fn best(
                     min_transmission_rad: s.min_transmission_rad,
                     link_ratio: s.link_ratio,
                     margin,
+                    size_ratio: s.size_ratio,
+                    score,
                 });
             }
         }

@@ -45,7 +45,7 @@ use crate::simd::{M, Ops, V, acos, acos1};
 use crate::design::InputRequirement;
 use crate::design::map::{ColumnsMut, ColumnsRow, Sampler};
 use crate::engine::{Control, run_blocks_with};
-use crate::error::Result;
+use crate::error::{Result, try_collect, try_vec};
 use crate::geom::Grid;
 use crate::linkage::{Direction, Grashof};
 use crate::synthesis::Dyad;
@@ -156,19 +156,23 @@ pub(crate) struct RowOut {
 
 impl RowOut {
     /// Room for the padded row `xs` of [`DrivingKernel::padded_xs`].
-    pub(crate) fn new(xs: &[f64]) -> Self {
-        let v = || vec![0.0; xs.len()];
-        RowOut {
-            qx: v(),
-            qy: v(),
-            worst: v(),
-            mu: v(),
-            ratio: v(),
-            members: v(),
-            flags: v(),
-            grashof: v(),
-            codes: vec![0; xs.len()],
-        }
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn new(xs: &[f64]) -> Result<Self> {
+        let v = || try_vec("a row's lanes", xs.len(), 0.0);
+        Ok(RowOut {
+            qx: v()?,
+            qy: v()?,
+            worst: v()?,
+            mu: v()?,
+            ratio: v()?,
+            members: v()?,
+            flags: v()?,
+            grashof: v()?,
+            codes: try_vec("a row's lanes", xs.len(), 0)?,
+        })
     }
 }
 
@@ -252,11 +256,18 @@ impl<'s> DrivingKernel<'s> {
 
     /// The abscissae of `grid`'s columns, padded with the last to a
     /// multiple of the widest lane count.
-    pub(crate) fn padded_xs(grid: &Grid) -> Vec<f64> {
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn padded_xs(grid: &Grid) -> Result<Vec<f64>> {
         let nx = grid.nx();
-        (0..nx.next_multiple_of(PAD))
-            .map(|i| grid.x(i.min(nx - 1)))
-            .collect()
+        let n = nx.next_multiple_of(PAD);
+        try_collect(
+            "a row's abscissae",
+            n,
+            (0..n).map(|i| grid.x(i.min(nx - 1))),
+        )
     }
 
     /// The lanes of the row at ordinate `y` with abscissae `xs` (padded)
@@ -325,9 +336,17 @@ impl<'s> DrivingKernel<'s> {
 
     /// [`local_x`](Self::local_x) of every abscissa of the padded row
     /// `xs`, computed once for the rows of a map: the lanes' bits.
-    pub(crate) fn local_xs(&self, xs: &[f64]) -> Vec<f64> {
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn local_xs(&self, xs: &[f64]) -> Result<Vec<f64>> {
         let o = Ops(pulp::Scalar);
-        xs.iter().map(|&x| self.local_x(o, x)).collect()
+        try_collect(
+            "a row's abscissae",
+            xs.len(),
+            xs.iter().map(|&x| self.local_x(o, x)),
+        )
     }
 
     /// The driving candidates' lanes at abscissae `x`, ordinate `y`: the
@@ -424,8 +443,67 @@ impl<'s> DrivingKernel<'s> {
             )
         };
         let driving = Dyad::new(a0, Point2::new(out.qx[i], out.qy[i]));
-        let acceptable = judge.acceptable(true, meets, &[a0], driving, self.driven);
+        let sized = || meets() && self.meets_size(&out.qx, &out.qy, i, a0);
+        let acceptable = judge.acceptable(true, sized, &[a0], driving, self.driven);
         Some(acceptable.then_some(worst))
+    }
+
+    /// The minimum transmission angle, the link ratio and the size ratio
+    /// of column `i` of `out` (candidate `a0`, worst `|cos mu|` `w`) as
+    /// the solution map's `f32` columns hold them.
+    #[inline]
+    pub(crate) fn ranked_at(
+        &self,
+        out: &RowOut,
+        i: usize,
+        a0: Point2<f64>,
+        w: f64,
+    ) -> (f32, f32, f32) {
+        let (_, members) = self.lengths_at(out, i, a0);
+        (
+            acos1(w) as f32,
+            out.ratio[i] as f32,
+            (members * self.inv_span) as f32,
+        )
+    }
+
+    /// The link lengths `[ground, crank, coupler, rocker]` and the members'
+    /// total length ([`members_length`](crate::synthesis::members_length))
+    /// of column `i` of `out` (candidate `a0`), as the scalar path
+    /// ([`Sampler::driving_sample`]) computes them.
+    #[inline]
+    pub(crate) fn lengths_at(&self, out: &RowOut, i: usize, a0: Point2<f64>) -> ([f64; 4], f64) {
+        self.lengths_of(&out.qx, &out.qy, i, a0)
+    }
+
+    /// [`lengths_at`](Self::lengths_at) from the circle points' columns.
+    #[inline]
+    fn lengths_of(&self, qx: &[f64], qy: &[f64], i: usize, a0: Point2<f64>) -> ([f64; 4], f64) {
+        let a1 = Point2::new(qx[i], qy[i]);
+        let c0 = self.driven.center;
+        let c1 = Point2::new(self.c1[0], self.c1[1]);
+        let lengths = [
+            (c0 - a0).norm(),
+            (a1 - a0).norm(),
+            (c1 - a1).norm(),
+            (c1 - c0).norm(),
+        ];
+        let point = Point2::new(self.point[0], self.point[1]);
+        let members = crate::synthesis::members_length(lengths, a1, self.driven.circle, point);
+        (lengths, members)
+    }
+
+    /// Whether column `i` (candidate `a0`, circle points `qx`, `qy`) is
+    /// within the limits' size bounds
+    /// ([`DesignLimits::meets_size`](crate::DesignLimits::meets_size)).
+    #[inline]
+    fn meets_size(&self, qx: &[f64], qy: &[f64], i: usize, a0: Point2<f64>) -> bool {
+        let limits = self.sampler.judge.limits();
+        if !limits.limits_size() {
+            return true;
+        }
+        let (lengths, members) = self.lengths_of(qx, qy, i, a0);
+        limits.meets_size(lengths, members * self.inv_span)
     }
 
     /// Writes the row at ordinate `y` (abscissae `xs`, branch flags
@@ -497,7 +575,8 @@ impl<'s> DrivingKernel<'s> {
             for (i, ((d, &c), &b)) in acceptable.enumerate() {
                 let a0 = Point2::new(xs[i], y);
                 let driving = Dyad::new(a0, Point2::new(out.qx[i], out.qy[i]));
-                *d = judge.acceptable(b, || c & MEETS != 0, &[a0], driving, self.driven);
+                let meets = || c & MEETS != 0 && self.meets_size(&out.qx, &out.qy, i, a0);
+                *d = judge.acceptable(b, meets, &[a0], driving, self.driven);
             }
         }
     }
@@ -514,7 +593,7 @@ impl<'s> DrivingKernel<'s> {
         control: &Control<'_>,
     ) -> Result<()> {
         let nx = grid.nx();
-        let local = self.local_xs(xs);
+        let local = self.local_xs(xs)?;
         let init = || RowOut::new(xs);
         run_blocks_with(
             nx,
@@ -561,10 +640,16 @@ pub(crate) struct RowPre {
 
 impl RowPre {
     /// Room for the padded row `xs` of [`DrivingKernel::padded_xs`].
-    pub(crate) fn new(xs: &[f64]) -> Self {
-        RowPre {
-            v: core::array::from_fn(|_| vec![0.0; xs.len()]),
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn new(xs: &[f64]) -> Result<Self> {
+        let mut v: [Vec<f64>; 12] = Default::default();
+        for lane in &mut v {
+            *lane = try_vec("a row's lanes", xs.len(), 0.0)?;
         }
+        Ok(RowPre { v })
     }
 }
 
@@ -956,11 +1041,18 @@ mod tests {
                 min_transmission: 0.0,
                 max_link_ratio: 4.0,
                 input: InputRequirement::Crank,
+                ..DesignLimits::default()
             },
             DesignLimits {
                 min_transmission: 50f64.to_radians(),
                 max_link_ratio: 1e300,
                 input: InputRequirement::Rocker,
+                ..DesignLimits::default()
+            },
+            DesignLimits {
+                max_size_ratio: 12.0,
+                max_link_length: 6.0,
+                ..DesignLimits::default()
             },
         ]
         .iter()
@@ -977,13 +1069,13 @@ mod tests {
         let Some(k) = DrivingKernel::new(&sampler, driven, &c) else {
             return 0;
         };
-        let xs = DrivingKernel::padded_xs(grid);
-        let mut out = RowOut::new(&xs);
+        let xs = DrivingKernel::padded_xs(grid).unwrap();
+        let mut out = RowOut::new(&xs).unwrap();
         let all = vec![true; grid.nx()];
         // The driving candidates' lanes computed beforehand (as the atlas
         // does, dispatched) and read on other lane widths.
         let with_pre = |y: f64, out: &mut RowOut, wide: bool| {
-            let mut pre = RowPre::new(&xs);
+            let mut pre = RowPre::new(&xs).unwrap();
             k.pre_row(y, &xs, &all, &mut pre);
             let l = Lanes {
                 pre: Some(&pre),
@@ -1000,7 +1092,7 @@ mod tests {
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar128b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar256b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar512b),
-            &|y, out| k.row(y, &xs, &k.local_xs(&xs), out),
+            &|y, out| k.row(y, &xs, &k.local_xs(&xs).unwrap(), out),
             &|y, out| with_pre(y, out, false),
             &|y, out| with_pre(y, out, true),
         ];
@@ -1024,10 +1116,10 @@ mod tests {
             // The atlas's path: only the needed groups of lanes, the
             // transmission angle only where the rest is acceptable.
             let needed: Vec<bool> = (0..grid.nx()).map(|i| (i * 7 + j) % 5 != 0).collect();
-            let mut out = RowOut::new(&xs);
+            let mut out = RowOut::new(&xs).unwrap();
             // The candidates' lanes for more groups than needed, as the
             // atlas's union over a chunk of centers.
-            let mut pre = RowPre::new(&xs);
+            let mut pre = RowPre::new(&xs).unwrap();
             let more: Vec<bool> = needed
                 .iter()
                 .enumerate()

@@ -54,6 +54,14 @@ pub struct DesignLimits {
     pub max_link_ratio: f64,
     /// Which input is required (default: any).
     pub input: InputRequirement,
+    /// The largest acceptable size ratio: the linkage's size (the total
+    /// length of its members, [`SynthesizedFourBar::size`](crate::SynthesizedFourBar::size))
+    /// over the task's ([`Task::span`](crate::Task::span)); scale-free
+    /// (default: infinity, no limit).
+    pub max_size_ratio: f64,
+    /// The longest acceptable link (ground, crank, coupler or rocker), in
+    /// the task's units (default: infinity, no limit).
+    pub max_link_length: f64,
 }
 
 impl Default for DesignLimits {
@@ -62,6 +70,8 @@ impl Default for DesignLimits {
             min_transmission: 30f64.to_radians(),
             max_link_ratio: 10.0,
             input: InputRequirement::Any,
+            max_size_ratio: f64::INFINITY,
+            max_link_length: f64::INFINITY,
         }
     }
 }
@@ -90,13 +100,47 @@ impl DesignLimits {
             min_transmission: min_transmission_deg.to_radians(),
             max_link_ratio,
             input,
+            ..DesignLimits::default()
         };
         limits.validate()?;
         Ok(limits)
     }
 
+    /// The same limits with the largest size ratio and the longest link
+    /// (task units) given (infinity: no limit), validated.
+    ///
+    /// # Errors
+    ///
+    /// As [`DesignLimits::validate`].
+    pub fn with_size(self, max_size_ratio: f64, max_link_length: f64) -> Result<Self> {
+        let limits = DesignLimits {
+            max_size_ratio,
+            max_link_length,
+            ..self
+        };
+        limits.validate()?;
+        Ok(limits)
+    }
+
+    /// Whether the limits bound the linkage's size (a finite
+    /// [`max_size_ratio`](Self::max_size_ratio) or
+    /// [`max_link_length`](Self::max_link_length)).
+    pub fn limits_size(&self) -> bool {
+        self.max_size_ratio.is_finite() || self.max_link_length.is_finite()
+    }
+
+    /// Whether a linkage with link lengths `lengths` and size ratio
+    /// `size_ratio` (its size over the task's) is within the size limits:
+    /// `size_ratio <= max_size_ratio` and every link at most
+    /// `max_link_length`.
+    #[inline]
+    pub fn meets_size(&self, lengths: [f64; 4], size_ratio: f64) -> bool {
+        size_ratio <= self.max_size_ratio && lengths.iter().all(|&l| l <= self.max_link_length)
+    }
+
     /// Checks the limits: a transmission angle in `[0, pi/2]`, a link ratio
-    /// of at least 1 (infinity allowed: no limit).
+    /// of at least 1 (infinity allowed: no limit), a size ratio of at least
+    /// 1 and a link length above 0 (infinity allowed for both).
     ///
     /// # Errors
     ///
@@ -116,6 +160,20 @@ impl DesignLimits {
             f64::INFINITY,
             "",
         )?;
+        in_range(
+            "max_size_ratio",
+            self.max_size_ratio,
+            1.0,
+            f64::INFINITY,
+            " (the linkage's size over the task's)",
+        )?;
+        if self.max_link_length.is_nan() || self.max_link_length <= 0.0 {
+            return Err(InvalidInput::NotPositive {
+                name: "max_link_length",
+                value: self.max_link_length,
+            }
+            .into());
+        }
         Ok(())
     }
 
@@ -175,7 +233,7 @@ mod tests {
         let l = |t: f64, r: f64| DesignLimits {
             min_transmission: t,
             max_link_ratio: r,
-            input: InputRequirement::Any,
+            ..DesignLimits::default()
         };
         assert!(l(2.0, 10.0).validate().is_err());
         assert!(l(0.1, 0.5).validate().is_err());
@@ -184,6 +242,16 @@ mod tests {
         assert!(DesignLimits::from_degrees(95.0, 10.0, InputRequirement::Any).is_err());
         let e = DesignLimits::from_degrees(f64::NAN, 10.0, InputRequirement::Any).unwrap_err();
         assert!(e.to_string().contains("min_transmission_deg"), "{e}");
+        let d = DesignLimits::default();
+        assert!(d.with_size(0.5, 1.0).is_err());
+        assert!(d.with_size(f64::NAN, 1.0).is_err());
+        assert!(d.with_size(2.0, 0.0).is_err());
+        assert!(d.with_size(2.0, f64::NAN).is_err());
+        let s = d.with_size(5.0, 3.0).unwrap();
+        assert!(s.limits_size() && !d.limits_size());
+        assert!(s.meets_size([1.0, 2.0, 3.0, 1.0], 5.0));
+        assert!(!s.meets_size([1.0, 2.0, 3.1, 1.0], 4.0));
+        assert!(!s.meets_size([1.0, 2.0, 3.0, 1.0], 5.1));
         assert_eq!(
             "Crank".parse::<InputRequirement>().unwrap(),
             InputRequirement::Crank

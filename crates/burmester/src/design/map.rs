@@ -4,6 +4,8 @@
 //! the core's [`Columns`] and per-sample record are generated from that
 //! list, and so is the Python binding's class.
 
+use core::sync::atomic::AtomicBool;
+
 use nalgebra::Point2;
 
 use crate::design::constraints::Prepared;
@@ -247,12 +249,26 @@ pub struct MapContext {
 }
 
 /// The solution-space map: what it was computed for, and its columns.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct SolutionMap {
     /// What the map was computed for.
     pub context: MapContext,
     /// One value per grid sample of every figure.
     pub columns: Columns,
+}
+
+/// What the map was computed for and how many samples are acceptable, not
+/// every value of every column (those are [`SolutionMap::columns`]).
+impl core::fmt::Debug for SolutionMap {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let count = |c: &[bool]| c.iter().filter(|&&b| b).count();
+        f.debug_struct("SolutionMap")
+            .field("context", &self.context)
+            .field("samples", &self.columns.valid.len())
+            .field("branch_free", &count(&self.columns.branch_free))
+            .field("acceptable", &count(&self.columns.acceptable))
+            .finish()
+    }
 }
 
 impl SolutionMap {
@@ -294,6 +310,8 @@ pub(crate) struct Judge<'a> {
     inv_span: f64,
     limits: &'a DesignLimits,
     prepared: Prepared,
+    /// The cancel flag of the computation (a clearance test checks it).
+    cancel: Option<&'a AtomicBool>,
 }
 
 impl Judge<'_> {
@@ -310,14 +328,36 @@ impl<'a> Judge<'a> {
         constraints: &Constraints,
     ) -> Result<Self> {
         limits.validate()?;
+        let prepared = constraints.prepare()?;
+        if let Some(env) = &constraints.envelope {
+            if !task
+                .poses()
+                .iter()
+                .all(|p| prepared.in_envelope(p.position))
+            {
+                return Err(InvalidInput::Polygon {
+                    name: "envelope".to_owned(),
+                    vertices: env.len(),
+                    problem: crate::error::PolygonProblem::ExcludesPoses,
+                }
+                .into());
+            }
+        }
         Ok(Judge {
             task,
             tiny: tolerance::POINT * task.scale(),
             point: task.poses()[0].position,
             inv_span: 1.0 / task.span(),
             limits,
-            prepared: constraints.prepare()?,
+            prepared,
+            cancel: None,
         })
+    }
+
+    /// The judge, its clearance tests stopping once `control` is cancelled.
+    pub(crate) fn with_control(mut self, control: &Control<'a>) -> Self {
+        self.cancel = control.cancel_flag();
+        self
     }
 
     /// The sample for figures `fig` with branch flag `branch_free`, where
@@ -355,11 +395,11 @@ impl<'a> Judge<'a> {
         branch_free
             && meets()
             && candidates.iter().all(|&c| self.prepared.pivot_ok(c))
-            && (self.prepared.obstacles.is_empty()
+            && (!self.prepared.checks_motion()
                 || self
                     .task
                     .four_bar(&driving, &driven)
-                    .is_ok_and(|fb| self.prepared.clearance_ok(&fb)))
+                    .is_ok_and(|fb| self.prepared.motion_ok(&fb, self.cancel)))
     }
 
     /// `1 / Task::span`: the size ratio per length.
@@ -368,9 +408,9 @@ impl<'a> Judge<'a> {
     }
 
     /// Whether `acceptable` is branch-free and the limits alone (no base
-    /// plate, no obstacles).
+    /// plate, no obstacles, no envelope, no size limits).
     pub(crate) fn unconstrained(&self) -> bool {
-        self.prepared.is_empty()
+        self.prepared.is_empty() && !self.limits.limits_size()
     }
 
     /// The limits behind `acceptable`.
@@ -392,7 +432,7 @@ impl<'a> Judge<'a> {
     ) -> Sample {
         let acceptable = self.acceptable(
             branch_free,
-            || self.limits.meets(&f),
+            || self.limits.meets(&f) && self.limits.meets_size(f.lengths, members * self.inv_span),
             candidates,
             driving,
             driven,
@@ -433,6 +473,13 @@ impl<'a> Sampler<'a> {
             maps,
             motion: task.motion(),
         })
+    }
+
+    /// The sampler, its clearance tests stopping once `control` is
+    /// cancelled.
+    pub(crate) fn with_control(mut self, control: &Control<'a>) -> Self {
+        self.judge = self.judge.with_control(control);
+        self
     }
 
     /// The moving pivot at the three poses of the dyad centered at `p` (its
@@ -539,7 +586,7 @@ impl Filemon {
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
-        let sampler = Sampler::new(self.task(), limits, constraints)?;
+        let sampler = Sampler::new(self.task(), limits, constraints)?.with_control(control);
         let mut columns = Columns::for_overwrite(grid.len())?;
         self.fill_solution_map(&sampler, grid, columns.as_out(), control)?;
         Ok(SolutionMap {
@@ -568,7 +615,7 @@ impl Filemon {
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
-        let sampler = Sampler::new(self.task(), limits, constraints)?;
+        let sampler = Sampler::new(self.task(), limits, constraints)?.with_control(control);
         out.check_len(grid.len())?;
         self.fill_solution_map(&sampler, grid, out, control)?;
         Ok(self.map_context(grid, limits, constraints))
@@ -600,7 +647,7 @@ impl Filemon {
         let c = sampler.fixed_pivots(&driven);
         match DrivingKernel::new(sampler, driven, &c) {
             Some(kernel) => {
-                let xs = DrivingKernel::padded_xs(grid);
+                let xs = DrivingKernel::padded_xs(grid)?;
                 kernel.fill(grid, &xs, &branch, out.rows(grid.nx()), control)
             }
             None => fill(grid, out, control, |k, a0| {
@@ -629,7 +676,9 @@ impl Task {
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
-        let sampler = self.driven_sampler(driving, limits, constraints)?;
+        let sampler = self
+            .driven_sampler(driving, limits, constraints)?
+            .with_control(control);
         let mut columns = Columns::for_overwrite(grid.len())?;
         self.fill_driven_map(&sampler, driving, grid, columns.as_out(), control)?;
         let varying = Varying::Driven { driving: *driving };
@@ -656,7 +705,9 @@ impl Task {
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
-        let sampler = self.driven_sampler(driving, limits, constraints)?;
+        let sampler = self
+            .driven_sampler(driving, limits, constraints)?
+            .with_control(control);
         out.check_len(grid.len())?;
         self.fill_driven_map(&sampler, driving, grid, out, control)?;
         let varying = Varying::Driven { driving: *driving };

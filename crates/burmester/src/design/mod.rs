@@ -24,6 +24,12 @@
 //! columns over pairs of dyads along the center-point curve: every linkage
 //! of the task on one picture ([`pairs`]).
 //!
+//! [`Task::design`](crate::Task::design) puts it together: from the poses,
+//! the [`Space`] in the machine and the [`DesignLimits`] to the best
+//! linkages, searched over both fixed pivots (three poses), both curve
+//! parameters (four) or every pair of Burmester points (five), refined
+//! continuously on the exact figures ([`search`]).
+//!
 //! The three-pose driving map and the [`atlas`] compute their samples on
 //! SIMD lanes (AVX2 where the CPU has it, chosen at run time by `pulp`),
 //! bit for bit what the per-sample scalar code gives.
@@ -31,18 +37,31 @@
 //! How each figure is computed is in [`linkage::figures`](crate::linkage::LinkageFigures);
 //! the constraints, the clearance check and its bound are in
 //! [`Constraints`]; the maps run on the tiled [`engine`](crate::engine).
+//!
+//! A linkage whose input only swings is driven from a motor by an added
+//! dyad: [`drive`] maps the candidate crank pivots of that dyad (the Watt
+//! II six-bar, [`SixBar`](crate::SixBar)) and ranks them the same way.
 
 pub mod atlas;
 mod constraints;
+pub mod drive;
 mod kernel;
 mod limits;
 mod map;
 pub mod pairs;
 mod rank;
+pub mod search;
+mod space;
 
 pub use atlas::{AtlasBest, AtlasCell, PivotAtlas};
 pub use constraints::Constraints;
+pub use drive::{
+    AttachmentSearch, CrankRockerDesign, Drive, DriveColumns, DriveColumnsOut, DriveContext,
+    DriveFigures, DriveMap, DriveOptions, DriveRankColumns, DriveSearch, best_drive, search_drives,
+};
 pub use limits::{DesignLimits, InputRequirement};
 pub use map::{Columns, ColumnsOut, MapContext, SolutionMap, Varying};
 pub use pairs::{Pair, PairContext, PairMap};
 pub use rank::{Pivot, RankBy, RankColumns};
+pub use search::{Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, SearchPoint};
+pub use space::{PivotRegion, Space};

@@ -81,7 +81,7 @@ impl core::fmt::Display for ConicKind {
 /// assert!(h.evaluate(Point2::new(1.0, 0.0)).abs() < 1e-15);
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Conic {
     /// Local coefficients `[A, B, C, D, E, F]`, max magnitude 1.
     q: [f64; 6],
@@ -89,6 +89,18 @@ pub struct Conic {
     scale: f64,
     /// A point on the conic, local, if one is known exactly.
     known: Option<Vector2<f64>>,
+}
+
+/// The kind and the coefficients `[A, B, C, D, E, F]` of
+/// `A x^2 + B x y + C y^2 + D x + E y + F = 0` in world coordinates, not
+/// the local frame the conic is kept in.
+impl core::fmt::Debug for Conic {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Conic")
+            .field("kind", &self.kind())
+            .field("coefficients", &self.coefficients())
+            .finish()
+    }
 }
 
 impl LocalFrame for Conic {

@@ -83,13 +83,24 @@ impl Viewport {
 }
 
 /// A grid of sample points at cell centers over a viewport.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Grid {
     viewport: Viewport,
     nx: usize,
     ny: usize,
     dx: f64,
     dy: f64,
+}
+
+/// The viewport and the sample counts, not the derived cell size.
+impl core::fmt::Debug for Grid {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Grid")
+            .field("viewport", &self.viewport)
+            .field("nx", &self.nx)
+            .field("ny", &self.ny)
+            .finish()
+    }
 }
 
 impl Grid {

@@ -14,6 +14,12 @@
 //! input rocks about `theta1`, `theta1` otherwise, which both arcs of a
 //! Grashof double-rocker avoid).
 //!
+//! * **Modes.** The assembly mode at a pose is the sign of
+//!   `sin(theta4 - theta3)` of the pose's loop, where the position
+//!   analysis' loop at the pose's input direction closes clear of a toggle
+//!   (the one criterion, [`crate::tolerance::heron_tolerance`], with the
+//!   ground and crank as the loop's reach), and `None` (a toggle) otherwise:
+//!   a pose with a mode assembles in it.
 //! * **Order.** A crank that turns fully must meet the poses in the cyclic
 //!   order `1, 2, ..., n` in one direction: their pseudo-angles from pose 1
 //!   strictly increase (counter-clockwise) or strictly decrease
@@ -37,6 +43,7 @@
 use nalgebra::{Point2, Vector2};
 
 use crate::geom::{PerPose, cross};
+use crate::linkage::fourbar::clear_of_toggle;
 use crate::linkage::grashof::{fmax, fmin, grashof_of};
 use crate::linkage::{AssemblyMode, Grashof, input_bounds};
 
@@ -199,12 +206,23 @@ pub(crate) fn figures<const MODES: bool, const N: usize>(
     if !(l1 > tiny && l2 > tiny && l3 > tiny && l4 > tiny && (l1 + l2 + l3 + l4).is_finite()) {
         return None;
     }
+    // The mode at a pose: the position analysis' loop at the pose's input
+    // direction must close clear of a toggle (the test of `FourBar::solve`,
+    // so the linkage assembles there in the mode reported), and the pose's
+    // own loop gives the mode, by the same band. A pose's loop clear of the
+    // band by a factor of 100 in sin(mu) (most of them) is clear in the
+    // position analysis' loop too, which differs from it by the synthesis'
+    // rounding, far inside that margin: decided without square roots.
     let modes = PerPose::from_fn(N, |k| {
-        if MODES {
-            AssemblyMode::of_loop(c[k] - a[k], c[k] - c0)
-        } else {
-            None
+        if !MODES {
+            return None;
         }
+        let (u, w) = (c[k] - a[k], c[k] - c0);
+        AssemblyMode::of_loop_well_clear(u, w, l1 + l2).or_else(|| {
+            clear_of_toggle(lengths, c0 - a0, a[k] - a0)
+                .then(|| AssemblyMode::of_loop_within(u, w, l1 + l2))
+                .flatten()
+        })
     });
     let grashof = grashof_of(lengths);
     let bounds = input_bounds(lengths);

@@ -51,19 +51,24 @@
 //! four angles at a time with AVX2), and in parallel on large inputs, so
 //! that it gives the bits of [`FourBar::solve`] on every CPU.
 //!
-//! A toggle is reported where `|H|` is within rounding of zero:
-//! `|H| <= 8 eps ((L3 + L4)^2 + r^2)^2`. Since `sqrt(H) = 2 L3 L4 |sin mu|`
-//! (`mu` the transmission angle), this is the one toggle criterion of the
-//! crate, in angle terms (see [`AssemblyMode::of_loop`], which decides the
-//! mode of a built linkage at a pose by the same bound):
+//! A toggle is reported where `|H|` is within its rounding of zero, the
+//! crate's one toggle criterion [`tolerance::heron_tolerance`] (derived
+//! there): `|H| <= tol`, with the rounding of `r` taken from the ground and
+//! the crank it is formed from (`rho = L1 + L2`). Since
+//! `sqrt(H) = 2 L3 L4 |sin mu|` (`mu` the transmission angle), in angle
+//! terms (see [`AssemblyMode::of_loop`], which decides the mode of a built
+//! linkage at a pose by the same bound):
 //!
 //! ```text
-//! |sin mu| <= TOGGLE_BAND ((L3 + L4)^2 + r^2) / (2 L3 L4),   TOGGLE_BAND = sqrt(8 eps)
+//! |sin mu| <= sqrt(tol) / (2 L3 L4)       (tolerance::toggle_band)
 //! ```
 //!
-//! about `1e-7` rad for a coupler and rocker of similar lengths. Inside the
-//! band the answer keeps the asked mode's sign (the loop is not snapped to
-//! the toggle), so a pose reached there is still reached to rounding.
+//! about `1e-7` rad for links of one size, growing like the square root of
+//! the link ratio (`2e-3` at `1e9`): the width of the rounding, not more. A
+//! loop that misses closing by less than `tol` (`H >= -tol`) closes at the
+//! toggle. Inside the band the answer keeps the asked mode's sign (the loop
+//! is not snapped to the toggle), so a pose reached there is still reached
+//! to rounding.
 
 use core::f64::consts::{PI, TAU};
 
@@ -130,9 +135,11 @@ impl AssemblyMode {
     /// rocker joint) and its rocker vector (output pivot to rocker joint):
     /// the sign of `cross(coupler, rocker)`, the sign of
     /// `sin(theta4 - theta3)`; `None` (a toggle) where the transmission
-    /// angle is within the crate's one toggle band (module docs):
-    /// `|cross(u, w)| <= TOGGLE_BAND ((|u| + |w|)^2 + |u - w|^2) / 2`, the
-    /// bound under which [`FourBar::solve`] reports `toggle`. The one
+    /// angle is within the crate's one toggle band (module docs,
+    /// [`tolerance::heron_tolerance`]): `4 cross(u, w)^2 <= tol`, the bound
+    /// under which [`FourBar::solve`] reports `toggle`, with the vectors'
+    /// own size `|u| + |w|` as the size they were formed from
+    /// ([`of_loop_within`](Self::of_loop_within) takes it). The one
     /// assembly-mode test of the crate: the synthesized linkages and the
     /// solution maps use it at every pose.
     ///
@@ -144,12 +151,88 @@ impl AssemblyMode {
     /// ```
     #[inline(always)]
     pub fn of_loop(coupler: Vector2<f64>, rocker: Vector2<f64>) -> Option<Self> {
-        let s = cross(coupler, rocker);
-        let (u2, w2) = (coupler.norm_squared(), rocker.norm_squared());
-        // (|u| + |w|)^2 + |u - w|^2, the `sum^2 + r^2` of `FourBar::solve`.
-        let big = u2 + w2 + 2.0 * (u2 * w2).sqrt() + (coupler - rocker).norm_squared();
-        // Not `<=`: NaN is a toggle too (no mode).
-        if s.abs() > 0.5 * tolerance::TOGGLE_BAND * big {
+        Self::of_loop_scaled(coupler, rocker, None, 1.0)
+    }
+
+    /// [`of_loop`](Self::of_loop) for vectors formed from vectors of size
+    /// up to `reach` (the ground plus the crank, `L1 + L2`, for the loop
+    /// of a linkage: the `rho` of [`tolerance::heron_tolerance`]), whose
+    /// rounding widens the band as it widens [`FourBar::solve`]'s.
+    ///
+    /// ```
+    /// use burmester::{AssemblyMode, Vector2};
+    /// // A 49 degree transmission angle on links 1e7 apart has a mode.
+    /// let (u, w) = (Vector2::new(1.0, 0.0), Vector2::new(-0.65e-7, 0.76e-7));
+    /// assert_eq!(AssemblyMode::of_loop_within(u, w, 2.0), Some(AssemblyMode::Open));
+    /// ```
+    #[inline(always)]
+    pub fn of_loop_within(coupler: Vector2<f64>, rocker: Vector2<f64>, reach: f64) -> Option<Self> {
+        Self::of_loop_scaled(coupler, rocker, Some(reach), 1.0)
+    }
+
+    /// The mode of [`of_loop_within`](Self::of_loop_within) where the loop
+    /// is clear of its toggle band by a factor of 100 in `sin mu` (decided
+    /// by a bound without square roots), else `None`: the fast path of the
+    /// figures, which check the rest by the position analysis' loop. The
+    /// factor covers the difference between a pose's loop and the position
+    /// analysis' loop at the pose (the synthesis' rounding: lengths that
+    /// differ from pose 1's by up to about `1e4 eps` relative, which moves
+    /// `sin mu` near a toggle by the square root of that).
+    #[inline(always)]
+    pub(crate) fn of_loop_well_clear(
+        coupler: Vector2<f64>,
+        rocker: Vector2<f64>,
+        reach: f64,
+    ) -> Option<Self> {
+        Self::of_loop_scaled(coupler, rocker, Some(reach), 1e4)
+    }
+
+    /// [`of_loop_within`](Self::of_loop_within), the reach `|u| + |w|`
+    /// where `None` (taken after scaling, so that it does not overflow);
+    /// with `margin > 1`, only the mode of a loop clear of `margin` times
+    /// the bound without square roots (`None` otherwise).
+    #[inline(always)]
+    fn of_loop_scaled(
+        coupler: Vector2<f64>,
+        rocker: Vector2<f64>,
+        reach: Option<f64>,
+        margin: f64,
+    ) -> Option<Self> {
+        // In units of the largest component where a four-fold product could
+        // leave the range of doubles (zero, NaN and infinite vectors: NaN).
+        let m = (coupler.x.abs().max(coupler.y.abs())).max(rocker.x.abs().max(rocker.y.abs()));
+        let k = if (SAFE_MIN..=SAFE_MAX).contains(&m) {
+            1.0
+        } else {
+            1.0 / m
+        };
+        let (u, w) = (coupler * k, rocker * k);
+        let s = cross(u, w);
+        let (u2, w2) = (u.norm_squared(), w.norm_squared());
+        let r2 = (u - w).norm_squared();
+        // A bound of the tolerance without square roots: A, B >= 0 with
+        // A + B = 4 |u| |w| <= 2 (u2 + w2), and each E below
+        // (|u| + |w|)^2 + r^2 + r^2 + rho^2 <= 2 (u2 + w2) + 2 r2 + rho^2.
+        let kk = tolerance::LOOP_EPS * f64::EPSILON;
+        let rho2 = reach.map_or(2.0 * (u2 + w2), |r| (r * k) * (r * k));
+        let e_up = 2.0 * (u2 + w2) + 2.0 * r2 + rho2;
+        let tol_up = kk * 2.0 * (u2 + w2) * e_up + kk * kk * e_up * e_up;
+        if 4.0 * s * s > margin * tol_up {
+            return AssemblyMode::from_sign(s);
+        }
+        if margin > 1.0 {
+            return None;
+        }
+        let (p, dot) = ((u2 * w2).sqrt(), u.dot(&w));
+        // Heron's factors from the vectors (no cancellation of squares):
+        // A = 2 L3 L4 (1 + cos phi), B = 2 L3 L4 (1 - cos phi).
+        let (a, b) = (2.0 * (p + dot), 2.0 * (p - dot));
+        // (L3 + L4)^2 and |L3^2 - L4^2| from the squares.
+        let (sum2, diffsum) = (u2 + w2 + 2.0 * p, (u2 - w2).abs());
+        let rho = reach.map_or_else(|| u2.sqrt() + w2.sqrt(), |r| r * k);
+        let tol = tolerance::heron_tolerance(sum2, diffsum, r2, rho, a, b);
+        // Not `<=`: NaN (zero vectors, `m = 0`) is a toggle too (no mode).
+        if 4.0 * s * s > tol {
             AssemblyMode::from_sign(s)
         } else {
             None
@@ -317,7 +400,7 @@ const SOLVE_PARALLEL_MIN: usize = 1 << 14;
 /// assert!((c.theta4.to_degrees() - 57.325).abs() < 5e-4);
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct FourBar {
     ground: f64,
     crank: f64,
@@ -335,6 +418,26 @@ pub struct FourBar {
     diff_n: f64,
     /// `(L3^2 - L4^2) / scale^2`.
     sq_diff_n: f64,
+    /// `(L1 + L2) / scale`: the size of the vectors the crank tip's
+    /// distance to the output pivot is formed from (the `rho` of
+    /// [`tolerance::heron_tolerance`]).
+    rho_n: f64,
+}
+
+/// The lengths, the fixed pivots and the Grashof type, not the normalized
+/// quantities the solver keeps.
+impl core::fmt::Debug for FourBar {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("FourBar")
+            .field("ground", &self.ground)
+            .field("crank", &self.crank)
+            .field("coupler", &self.coupler)
+            .field("rocker", &self.rocker)
+            .field("input_pivot", &self.origin)
+            .field("output_pivot", &self.output_pivot())
+            .field("grashof", &self.grashof())
+            .finish()
+    }
 }
 
 impl FourBar {
@@ -427,6 +530,7 @@ impl FourBar {
             sum_n: l3 + l4,
             diff_n: l3 - l4,
             sq_diff_n: (l3 - l4) * (l3 + l4),
+            rho_n: g + c,
         })
     }
 
@@ -549,9 +653,10 @@ impl FourBar {
         let r2 = o.add(o.mul(dx, dx), o.mul(dy, dy));
         let (sum, diff) = (o.sp(self.sum_n), o.sp(self.diff_n));
         let sum2 = o.mul(sum, sum);
-        let heron = o.mul(o.sub(sum2, r2), o.sub(r2, o.mul(diff, diff)));
-        let big = o.add(sum2, r2);
-        let tol = o.mul(o.mul(o.sp(LOOP_TOL), big), big);
+        let (a, b) = (o.sub(sum2, r2), o.sub(r2, o.mul(diff, diff)));
+        let heron = o.mul(a, b);
+        let diffsum = o.sp(self.sq_diff_n.abs());
+        let tol = heron_tolerance(o, sum2, diffsum, r2, o.sp(self.rho_n), a, b);
         // A select, not `max` (which may return either zero for `-0.0`).
         let zero = o.sp(0.0);
         let root = o.0.sqrt_f64s(o.sel(o.gt(heron, zero), heron, zero));
@@ -881,8 +986,62 @@ fn angle_error(theta2: f64) -> Error {
     }
 }
 
-/// The rounding band of Heron's product, per `big^2` (`close`).
-const LOOP_TOL: f64 = tolerance::ROUNDING_EPS * f64::EPSILON;
+/// [`tolerance::heron_tolerance`] on the lanes of `o`: the same
+/// operations in the same order (no fused multiply-add), so the same bits
+/// (checked by `heron_tolerance_lanes_are_the_criterion`).
+#[inline(always)]
+fn heron_tolerance<S: Simd>(
+    o: Ops<S>,
+    sum2: V<S>,
+    diffsum: V<S>,
+    r2: V<S>,
+    rho: V<S>,
+    a: V<S>,
+    b: V<S>,
+) -> V<S> {
+    let k = o.sp(tolerance::LOOP_EPS * f64::EPSILON);
+    let r = o.0.sqrt_f64s(r2);
+    let shared = o.add(r2, o.mul(o.mul(o.sp(2.0), r), rho));
+    let ea = o.add(sum2, shared);
+    let eb = o.add(diffsum, shared);
+    let first = o.mul(k, o.add(o.mul(o.abs(b), ea), o.mul(o.abs(a), eb)));
+    o.add(first, o.mul(o.mul(o.mul(k, k), ea), eb))
+}
+
+/// Whether the loop of a linkage with lengths `[ground, crank, coupler,
+/// rocker]`, ground vector `ground` (input pivot to output pivot) and the
+/// crank along `dir` closes clear of a toggle: Heron's product beyond
+/// [`tolerance::heron_tolerance`], the test of [`FourBar::solve`]'s
+/// `toggle` (and of its loop that does not close) on the same arithmetic,
+/// with the crank's direction from the vector instead of an angle. False
+/// for NaN and for a zero direction.
+#[inline(always)]
+pub(crate) fn clear_of_toggle(lengths: [f64; 4], ground: Vector2<f64>, dir: Vector2<f64>) -> bool {
+    let [g, c, l3, l4] = lengths;
+    // In units of the longest link where a product of four lengths (Heron's
+    // product, its tolerance) could leave the range of doubles.
+    let m = g.max(c).max(l3).max(l4);
+    let k = if (SAFE_MIN..=SAFE_MAX).contains(&m) {
+        1.0
+    } else {
+        1.0 / m
+    };
+    let (g, c, l3, l4) = (g * k, c * k, l3 * k, l4 * k);
+    let dir = dir * k;
+    // The crank tip as the position analysis puts it: the crank's length
+    // along the direction (a zero or NaN direction fails below).
+    let d = ground * k - dir * (c / dir.norm());
+    let r2 = d.norm_squared();
+    let (sum, diff) = (l3 + l4, l3 - l4);
+    let (a, b) = (sum * sum - r2, r2 - diff * diff);
+    a * b > tolerance::heron_tolerance(sum * sum, diff.abs() * sum, r2, g + c, a, b)
+}
+
+/// Magnitudes between which four-fold products (Heron's product of a loop
+/// and its tolerance) need no scaling.
+const SAFE_MIN: f64 = 1e-60;
+/// See [`SAFE_MIN`].
+const SAFE_MAX: f64 = 1e60;
 
 /// [`FourBar::solve_chunk`] on the lanes of one instruction set.
 struct SolveLanes<'a> {
@@ -1116,6 +1275,84 @@ mod tests {
             }
         }
         assert!(toggles > 50, "the band was reached ({toggles} times)");
+    }
+
+    /// The lanes' Heron tolerance is `tolerance::heron_tolerance`, bit for
+    /// bit, on every lane width (the one criterion, written twice).
+    #[test]
+    fn heron_tolerance_lanes_are_the_criterion() {
+        let mut x = 0.123_456_789_f64;
+        let mut next = || {
+            // A small LCG-free sequence: fractional parts of multiples.
+            x = (x * 997.0 + 0.271_828_18).fract();
+            x
+        };
+        for _ in 0..2000 {
+            let sum = 2.0 * next();
+            let diff = sum * (2.0 * next() - 1.0) * next();
+            let r2 = (sum * 1.5 * next()).powi(2) * 10f64.powi(-(next() * 8.0) as i32);
+            let rho = 2.0 * next() + 1e-9;
+            let (a, b) = (sum * sum - r2, r2 - diff * diff);
+            let (sum, diff) = (sum * sum, (diff * sum).abs());
+            let want = tolerance::heron_tolerance(sum, diff, r2, rho, a, b);
+            let o = Ops(pulp::Scalar);
+            let got = heron_tolerance(o, sum, diff, r2, rho, a, b);
+            assert_eq!(got.to_bits(), want.to_bits(), "{sum} {diff} {r2} {rho}");
+            struct Lanes([f64; 6], f64);
+            impl WithSimd for Lanes {
+                type Output = ();
+                #[inline(always)]
+                fn with_simd<S: Simd>(self, s: S) {
+                    let o = Ops(s);
+                    let [sum, diff, r2, rho, a, b] = self.0.map(|v| o.sp(v));
+                    let t = heron_tolerance(o, sum, diff, r2, rho, a, b);
+                    let mut out = [0.0f64; 8];
+                    let n = S::F64_LANES;
+                    S::as_mut_simd_f64s(&mut out[..n]).0[0] = t;
+                    for v in &out[..n] {
+                        assert_eq!(v.to_bits(), self.1.to_bits());
+                    }
+                }
+            }
+            Arch::new().dispatch(Lanes([sum, diff, r2, rho, a, b], want));
+        }
+    }
+
+    /// Issue 28's linkage (crank and coupler 4.6e7 times the rocker): the
+    /// earlier band grew like `L3 / L4` and called every position a
+    /// toggle; the loop's rounding allows a band of about `5e-4` in
+    /// `sin mu`, so the transmission angles of 49 to 57 degrees at its
+    /// poses are not toggles, while positions within the band of its dead
+    /// positions are.
+    #[test]
+    fn long_links_on_a_short_rocker_keep_their_modes() {
+        let fb = FourBar::from_pivots(
+            Point2::new(79.35079574269099, 74.89249517819286),
+            Point2::new(0.9270498928708832, -2.456011695005893),
+            1502669804.6436944,
+            1502669676.747299,
+            32.832706862152556,
+        )
+        .unwrap();
+        let mut reached = 0;
+        for t in (0..2000).map(|k| -PI + TAU * k as f64 / 2000.0) {
+            for mode in AssemblyMode::BOTH {
+                let Ok(c) = fb.solve(t, mode) else { continue };
+                let mu = c.transmission_angle();
+                // The band is about 4e-4 here (`tolerance::toggle_band`).
+                if mu > 2e-3 {
+                    assert!(!c.toggle, "{t}: {}", mu.to_degrees());
+                } else if mu < 1e-4 {
+                    assert!(c.toggle, "{t}: {}", mu.to_degrees());
+                }
+                reached += 1;
+            }
+        }
+        assert!(reached > 100, "{reached}");
+        for &t0 in &fb.input_range().dead_positions() {
+            let c = fb.solve(t0, AssemblyMode::Open).unwrap();
+            assert!(c.toggle, "{t0}");
+        }
     }
 
     #[test]

@@ -66,7 +66,7 @@ impl Branch {
 
 /// Filemon's construction in the circle-point plane for a driven dyad: one
 /// line per pose through `C1`, the extreme ones, and the branch signs.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct FilemonLines {
     driven: Dyad,
     /// `C'_k = D_k1(C0)`.
@@ -75,6 +75,18 @@ pub struct FilemonLines {
     /// their half-plane: first and last are the extremes. `None` when they
     /// do not lie in an open half-plane.
     order: Option<PerPose<usize>>,
+}
+
+/// The driven dyad and the fixed pivot's images `C'k`, not the sort order
+/// kept.
+impl core::fmt::Debug for FilemonLines {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("FilemonLines")
+            .field("driven", &self.driven)
+            .field("fixed_pivot_images", &self.c_prime)
+            .field("all_defective", &self.all_defective())
+            .finish()
+    }
 }
 
 impl FilemonLines {

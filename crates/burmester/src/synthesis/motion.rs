@@ -58,13 +58,23 @@ impl Pole {
 /// The motion of the coupler through a task's poses: the displacements
 /// `D_1k(z) = R_k z + t_k`, which carry any coupler point from pose 1 to
 /// pose `k`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Motion {
     poses: PerPose<Pose>,
     /// `(cos, sin)` of `theta_1k`.
     rot: PerPose<(f64, f64)>,
     /// `t_k = p_k - R_k p_1`.
     shift: PerPose<Vector2<f64>>,
+}
+
+/// The poses and their poles, not the rotations and shifts kept.
+impl core::fmt::Debug for Motion {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Motion")
+            .field("poses", &self.poses())
+            .field("poles", &self.poles())
+            .finish()
+    }
 }
 
 impl Motion {

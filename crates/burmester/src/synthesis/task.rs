@@ -46,13 +46,27 @@ use crate::tolerance;
 /// assert!((task.center_point(x)? - y).norm() < 1e-12);
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Task {
     motion: Motion,
     /// The unit of the relative tolerances (see [`Task::scale`]).
     scale: f64,
     /// The three-position maps (three poses only).
     three: Option<Maps>,
+    /// The maps through the poles of a task of three finite poles whose
+    /// maps run by the linear form (a pole far from the poses): its pole
+    /// triangle and circles ([`Task::cremona`]).
+    far_poles: Option<Cremona>,
+}
+
+/// The poses and their poles, not the maps kept for three poses.
+impl core::fmt::Debug for Task {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Task")
+            .field("poses", &self.poses())
+            .field("poles", &self.poles())
+            .finish()
+    }
 }
 
 impl Task {
@@ -96,7 +110,13 @@ impl Task {
     /// a three-pose task with such a pair runs its maps by the linear form
     /// with the poses' own angles (a rotation below the bound is not
     /// rounded to zero, so the maps stay those of the given poses and vary
-    /// continuously across the bound).
+    /// continuously across the bound). So does a three-pose task whose pole
+    /// `P12` or `P13` lies farther than [`tolerance::POLE_DISTANCE`] spans
+    /// from pose 1 (a small rotation), where the closed form through the
+    /// poles would lose about `0.5 / theta` times the accuracy the input
+    /// allows; its [`Task::cremona`] (the pole triangle and circles) is
+    /// still there. The form is chosen by that conditioning, so the maps
+    /// keep the input's accuracy at every rotation.
     pub fn new(poses: &[Pose]) -> Result<Self> {
         let n = poses.len();
         if !(Self::MIN_POSES..=Self::MAX_POSES).contains(&n) {
@@ -174,10 +194,26 @@ impl Task {
             .into());
         }
         Self::check_scale(size)?;
+        let cremona = Cremona::new(motion, poles, size);
+        // Through the poles where they lie near the poses; else by the
+        // linear form, which cancels nothing (tolerance::POLE_DISTANCE).
+        let p1 = motion.poses()[0].position;
+        let span = span_of(&motion);
+        let far = length(poles[0] - p1).max(length(poles[1] - p1));
+        if far > tolerance::POLE_DISTANCE * span {
+            let linear = Linear::new(motion, size, span);
+            return Ok(Task {
+                motion,
+                scale: size,
+                three: Some(Maps::Linear(linear)),
+                far_poles: Some(cremona.with_linear(linear)),
+            });
+        }
         Ok(Task {
             motion,
             scale: size,
-            three: Some(Maps::Poles(Cremona::new(motion, poles, size))),
+            three: Some(Maps::Poles(cremona)),
+            far_poles: None,
         })
     }
 
@@ -208,7 +244,8 @@ impl Task {
         Ok(Task {
             motion,
             scale: size,
-            three: Some(Maps::Linear(Linear::new(motion, size))),
+            three: Some(Maps::Linear(Linear::new(motion, size, span_of(&motion)))),
+            far_poles: None,
         })
     }
 
@@ -241,6 +278,7 @@ impl Task {
             motion,
             scale: size,
             three: None,
+            far_poles: None,
         })
     }
 
@@ -302,11 +340,7 @@ impl Task {
     /// it, which [`Task::new`] rejects). The unit of
     /// [`SynthesizedFourBar::size`](crate::SynthesizedFourBar::size) ratios.
     pub fn span(&self) -> f64 {
-        let p = self.motion.poses();
-        self.motion
-            .pairs()
-            .map(|(i, j)| length(p[j - 1].position - p[i - 1].position))
-            .fold(0.0, f64::max)
+        span_of(&self.motion)
     }
 
     /// The three-position maps through the poles (pole triangle and
@@ -321,13 +355,13 @@ impl Task {
     /// [`Task::center_point`]), Filemon's construction and the solution maps
     /// work for such a task.
     pub fn cremona(&self) -> Result<&Cremona> {
-        match &self.three {
-            Some(Maps::Poles(c)) => Ok(c),
-            Some(Maps::Linear(l)) => {
-                let (i, j) = l.translation();
+        match (&self.three, &self.far_poles) {
+            (Some(Maps::Poles(c)), _) | (_, Some(c)) => Ok(c),
+            (Some(Maps::Linear(l)), None) => {
+                let (i, j) = l.translation().unwrap_or((1, 2));
                 Err(DegenerateError::PureTranslation { i, j }.into())
             }
-            None => Err(self.needs(3, "Task::cremona")),
+            (None, None) => Err(self.needs(3, "Task::cremona")),
         }
     }
 
@@ -457,6 +491,15 @@ impl Task {
     pub fn transformed(&self, factor: f64, angle: f64, offset: Vector2<f64>) -> Result<Self> {
         self.transformed_by(&Similarity::new(factor, angle, offset)?)
     }
+}
+
+/// The largest distance between two pose positions ([`Task::span`]).
+fn span_of(motion: &Motion) -> f64 {
+    let p = motion.poses();
+    motion
+        .pairs()
+        .map(|(i, j)| length(p[j - 1].position - p[i - 1].position))
+        .fold(0.0, f64::max)
 }
 
 #[cfg(test)]

@@ -94,12 +94,23 @@ const KIND_TOLERANCE: f64 = 1e-12;
 /// assert!(trace.components.iter().any(|k| k.closed));
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Cubic {
     /// Local coefficients, ascending order, largest magnitude 1.
     c: [f64; 10],
     origin: Point2<f64>,
     scale: f64,
+}
+
+/// The degree and the ten coefficients in world coordinates (the order of
+/// [`Cubic::coefficients`]), not the local frame the cubic is kept in.
+impl core::fmt::Debug for Cubic {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Cubic")
+            .field("degree", &self.degree())
+            .field("coefficients", &self.coefficients())
+            .finish()
+    }
 }
 
 impl LocalFrame for Cubic {
@@ -429,9 +440,19 @@ impl Cubic {
     }
 
     /// The gradient of `f` at `p`, in the fixed frame (with the factor of
-    /// [`Cubic::evaluate`]).
+    /// [`Cubic::evaluate`]: a point more than `1e100` units of the frame
+    /// away, where the value is `f(p) / m^3`, has the gradient
+    /// `grad f(p) / m^3`, so that `|f| / |grad f|` keeps its meaning).
+    /// Finite for every finite point.
     pub fn gradient(&self, p: Point2<f64>) -> Vector2<f64> {
-        self.grad_local(self.local_of(p)) / self.scale
+        let (u, m) = self.local_scaled(p);
+        if m == 1.0 {
+            return self.grad_local(u) / self.scale;
+        }
+        // grad f(u m) = m^2 grad_scaled, in fixed units over `scale`; over
+        // `m^3`: grad_scaled / (m scale), with `m scale` the point's
+        // distance from the frame's origin (finite).
+        self.grad_scaled(u, m) / (m * self.scale)
     }
 
     /// First-order distance from `p` to the curve, `|f| / |grad f|`:
@@ -545,6 +566,48 @@ mod tests {
     fn folium() -> Cubic {
         // y^2 = x^3 - x
         Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap()
+    }
+
+    /// Issue 24, item 7: the gradient at a far point was `inf - inf`
+    /// (NaN) where the value was scaled; now it has the value's factor:
+    /// finite for every finite point, along the gradient's direction, and
+    /// the same where both forms apply.
+    #[test]
+    fn far_gradients_are_scaled_like_the_value() {
+        let c = Cubic::new(core::array::from_fn(|k| k as f64)).unwrap();
+        for p in [
+            Point2::new(-1e308, 1e308),
+            Point2::new(f64::MAX, -f64::MAX),
+            Point2::new(1e200, 3e150),
+            Point2::new(-1e101, 2e101),
+        ] {
+            let g = c.gradient(p);
+            assert!(
+                g.x.is_finite() && g.y.is_finite() && g != Vector2::zeros(),
+                "{p}: {g}"
+            );
+            // Far out the cubic part decides the direction.
+            let (u, _) = c.local_scaled(p);
+            let k = c.c;
+            let cubic = Vector2::new(
+                3.0 * k[6] * u.x * u.x + 2.0 * k[7] * u.x * u.y + k[8] * u.y * u.y,
+                k[7] * u.x * u.x + 2.0 * k[8] * u.x * u.y + 3.0 * k[9] * u.y * u.y,
+            );
+            // Directions by a scale-safe norm: the gradient with the
+            // value's factor is tiny out there (subnormal at 1e308).
+            let unit = |v: Vector2<f64>| {
+                let w = v / v.x.abs().max(v.y.abs());
+                w / w.norm()
+            };
+            assert!((unit(g) - unit(cubic)).norm() < 1e-9, "{p}: {g} vs {cubic}");
+            // |f| / |grad f| is the distance estimate's value.
+            let d = c.evaluate(p).abs() / g.x.hypot(g.y);
+            let e = c.distance_estimate(p);
+            assert!((d - e).abs() <= 1e-12 * e, "{p}: {d} vs {e}");
+        }
+        // Near points: the plain gradient, bit for bit.
+        let p = Point2::new(0.3, -2.0);
+        assert_eq!(c.gradient(p), c.grad_local(c.local_of(p)) / c.scale);
     }
 
     #[test]

@@ -79,12 +79,23 @@ pub struct BurmesterFourBar {
 /// positions of its circle point are concyclic within
 /// [`BURMESTER_RESIDUAL`] (scaled by `(L / D)^2` for a center `D` away from
 /// positions spanning `L`, where a stretch of a line is as concyclic).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct FivePositions {
     motion: Motion,
     points: Vec<Dyad>,
     sliders: Vec<BurmesterSlider>,
     curves: [Cubic; 2],
+}
+
+/// The poses and the Burmester points, not the motion's internals.
+impl core::fmt::Debug for FivePositions {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("FivePositions")
+            .field("poses", &self.poses())
+            .field("burmester_points", &self.points)
+            .field("sliders", &self.sliders)
+            .finish()
+    }
 }
 
 /// A Burmester point at infinity: a circle point whose five positions lie

@@ -47,7 +47,7 @@ impl core::fmt::Display for Turn {
 /// `1, n, ..., 2` (clockwise); see [`CrankOrder::direction`]. Along a
 /// center-point curve the order changes only where two crank positions
 /// coincide (the points `Q_jk` of four poses).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub struct CrankOrder {
     seq: [u8; 5],
     len: u8,
@@ -104,6 +104,13 @@ impl CrankOrder {
         } else {
             None
         }
+    }
+}
+
+/// The pose numbers as the designer reads them, `CrankOrder(1-2-3-4)`.
+impl core::fmt::Debug for CrankOrder {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "CrankOrder({self})")
     }
 }
 

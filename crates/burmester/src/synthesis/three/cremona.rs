@@ -38,6 +38,7 @@ use nalgebra::{Point2, Vector2};
 use crate::error::{DegenerateError, InvalidInput, Result, finite_point};
 use crate::geom::{CircleOrLine, LocalFrame, cross, rotate_cs};
 use crate::synthesis::motion::Motion;
+use crate::synthesis::three::Linear;
 use crate::tolerance;
 
 /// Which way a point is mapped, for error messages.
@@ -50,7 +51,7 @@ pub(crate) enum MapDir {
 /// The three-position maps of a task of three poses: its poles, image
 /// poles, pole circles, and the exact maps between circle points and center
 /// points. Get it from [`Task::cremona`](crate::Task::cremona).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Cremona {
     motion: Motion,
     /// `P12, P13, P23`.
@@ -67,6 +68,20 @@ pub struct Cremona {
     /// `(cos, sin)` of `theta12/2` and `theta13/2`.
     half12: (f64, f64),
     half13: (f64, f64),
+    /// The linear form, for a task whose pole `P12` or `P13` lies farther
+    /// than [`tolerance::POLE_DISTANCE`] spans from the poses: the maps
+    /// run by it (the task's own maps), not through the far pole.
+    linear: Option<Linear>,
+}
+
+/// The poles `P12, P13, P23` and the image poles, not the local frame.
+impl core::fmt::Debug for Cremona {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Cremona")
+            .field("poles", &self.poles())
+            .field("image_poles", &self.image_poles())
+            .finish()
+    }
 }
 
 impl LocalFrame for Cremona {
@@ -96,6 +111,15 @@ impl Cremona {
             q23: (poles[2] - origin) / scale,
             half12: half(motion.rotation0(0, 1)),
             half13: half(motion.rotation0(0, 2)),
+            linear: None,
+        }
+    }
+
+    /// The same, its maps run by `linear` (a pole far from the poses).
+    pub(crate) fn with_linear(self, linear: Linear) -> Self {
+        Cremona {
+            linear: Some(linear),
+            ..self
         }
     }
 
@@ -180,7 +204,12 @@ impl Cremona {
     }
 
     /// The circle point (moving pivot at pose 1) whose center point (fixed
-    /// pivot) is `center`.
+    /// pivot) is `center`: by the closed form through the poles, or, for a
+    /// task whose pole `P12` or `P13` lies farther than
+    /// [`tolerance::POLE_DISTANCE`] spans from the poses (a small rotation),
+    /// by the linear form, which does not cancel the digits a far pole
+    /// would (the task's own maps, [`Task::circle_point`](crate::Task::circle_point),
+    /// bit for bit).
     ///
     /// # Errors
     ///
@@ -191,11 +220,15 @@ impl Cremona {
     /// for a non-finite point, [`InvalidInput::Overflow`] for a point
     /// more than about `1e300` task sizes away.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
-        self.map(center, MapDir::CenterToCircle)
+        match &self.linear {
+            Some(l) => l.circle_point(center),
+            None => self.map(center, MapDir::CenterToCircle),
+        }
     }
 
     /// The center point (fixed pivot) of the circle point (moving pivot at
-    /// pose 1) `circle`.
+    /// pose 1) `circle` (through the poles or by the linear form, as
+    /// [`Cremona::circle_point`]).
     ///
     /// # Errors
     ///
@@ -206,7 +239,10 @@ impl Cremona {
     /// [`InvalidInput::Overflow`] for a point more than about `1e300`
     /// task sizes away.
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
-        self.map(circle, MapDir::CircleToCenter)
+        match &self.linear {
+            Some(l) => l.center_point(circle),
+            None => self.map(circle, MapDir::CircleToCenter),
+        }
     }
 
     /// The map of a local point of ordinary size (see

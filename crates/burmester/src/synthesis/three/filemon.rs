@@ -124,7 +124,7 @@ fn rot_neg((c, s): (f64, f64)) -> Matrix2<f64> {
 
 /// Filemon's construction for a driven dyad of a three-pose task, with the
 /// transformed lines.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Filemon {
     task: Task,
     maps: Maps,
@@ -134,6 +134,20 @@ pub struct Filemon {
     /// The finite poles, then `C0`, in the first `n_special` entries.
     special: [Point2<f64>; 4],
     n_special: usize,
+}
+
+/// The task, the driven dyad `(C0, C1)`, the fixed pivot's images `C'k`
+/// and the two transformed Filemon lines (when the circle points are not
+/// all defective), not the maps and frames kept to evaluate them.
+impl core::fmt::Debug for Filemon {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Filemon")
+            .field("task", &self.task)
+            .field("driven", &self.driven())
+            .field("fixed_pivot_images", &self.fixed_pivot_images())
+            .field("conics", &self.conics())
+            .finish()
+    }
 }
 
 impl Task {
@@ -355,7 +369,8 @@ impl Filemon {
     /// simulate  agrees with direct farther than 1e-9 from the curves and the
     ///           pole circle, except that it also reports the circuit defect of
     ///           an input rocking in two arcs; a pose counts as reached within 1e-7
-    ///           task sizes and 1e-7 rad (tolerance::REACH)
+    ///           task sizes and 1e-7 rad (tolerance::REACH); a toggle at a design
+    ///           pose or on the way (tolerance::heron_tolerance) is Boundary
     /// ```
     ///
     /// Inside a band a point may be classified either way. The conic band
@@ -439,9 +454,14 @@ impl Filemon {
     fn classify_simulate(&self, a0: Point2<f64>) -> Result<Branch> {
         let fb = self.four_bar(a0)?;
         let modes = fb.modes();
+        // A toggle at a design pose (the figures' one band, which the
+        // position analysis shares) is the boundary, wherever it is.
         let Some(mode) = modes[0] else {
             return Ok(Branch::Boundary);
         };
+        if modes.iter().any(Option::is_none) {
+            return Ok(Branch::Boundary);
+        }
         let range = fb.fourbar.input_range();
         let poses = self.task.poses();
         let reach = tolerance::REACH * self.task.scale();

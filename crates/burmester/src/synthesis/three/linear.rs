@@ -1,5 +1,6 @@
 //! The three-position maps from the linear form, for tasks with a pure
-//! translation between two poses (a pole at infinity).
+//! translation between two poses (a pole at infinity) or a pole far from
+//! the poses (a small rotation).
 //!
 //! # Why a second path
 //!
@@ -7,10 +8,15 @@
 //! Kim's closed form). That form is fast, its results are what the tests
 //! and the reference pictures of tasks with finite poles are made of, bit
 //! for bit, and the dense solution maps depend on its speed; but it needs
-//! all three poles finite. When two poses differ by a pure translation (one
-//! pole at infinity) the task uses this form instead; a task with three
-//! finite poles never does. The two give the same points up to rounding
-//! where both apply (the crate's tests compare them across the threshold).
+//! all three poles finite, and it is well conditioned only where `P12` and
+//! `P13` lie near the poses: a pole `D` away (a rotation of about
+//! `span / D`) costs it a factor of about `D / span` in relative accuracy,
+//! which it cancels away. When two poses differ by a pure translation (one
+//! pole at infinity), or `P12` or `P13` lies farther than
+//! [`tolerance::POLE_DISTANCE`] spans from pose 1, the task uses this form
+//! instead, which keeps the accuracy the input allows at every rotation.
+//! The two give the same points up to rounding where both apply (the
+//! crate's tests compare them across the switch).
 //!
 //! # The linear form (Sandor & Erdman, *Advanced Mechanism Design*)
 //!
@@ -51,10 +57,13 @@
 //!
 //! # Numerics
 //!
-//! Everything runs in a local frame whose origin is a finite pole (`P12`,
-//! or `P13` when `P12` is at infinity), where `t_k` is exactly zero for that
-//! pose, so every transformed curve passes exactly through the origin; the
-//! unit is the task's [`scale`](crate::Task::scale). The rotations are the
+//! Everything runs in a local frame whose origin is a finite pole near the
+//! poses (`P12`, or else `P13`, within [`tolerance::POLE_DISTANCE`] spans
+//! of pose 1), where `t_k` is exactly zero for that pose, so every
+//! transformed curve passes exactly through the origin; when neither is
+//! near, pose 1's position (no curve point is known exactly then, but no
+//! far origin cancels the digits of the points near the poses). The unit
+//! is the task's [`scale`](crate::Task::scale). The rotations are the
 //! poses' own (a rotation within [`tolerance::MIN_ROTATION`] is not rounded
 //! to zero), so the maps are those of the given poses.
 
@@ -84,8 +93,12 @@ pub(crate) struct Linear {
     poles: [Option<Point2<f64>>; 3],
     /// `[P12, P13, P'23]`, `P'23 = D_21(P23)`, `None` at infinity.
     image_poles: [Option<Point2<f64>>; 3],
-    /// The first pair (1-based) whose pole is at infinity.
-    translation: (usize, usize),
+    /// The first pair (1-based) whose pole is at infinity; `None` when
+    /// the three poles are finite (the form was chosen for a far pole).
+    translation: Option<(usize, usize)>,
+    /// Whether the origin is a pole (`P12` or `P13`), which every
+    /// transformed curve passes through exactly.
+    origin_is_pole: bool,
 }
 
 impl LocalFrame for Linear {
@@ -96,24 +109,30 @@ impl LocalFrame for Linear {
 }
 
 impl Linear {
-    /// The maps of a validated three-pose motion with at least one pole at
-    /// infinity and at least one finite pole; `scale` is the task's scale.
-    pub(crate) fn new(motion: Motion, scale: f64) -> Self {
+    /// The maps of a validated three-pose motion with at least one finite
+    /// pole (and a pole at infinity, or one farther than
+    /// [`tolerance::POLE_DISTANCE`] spans from pose 1); `scale` is the
+    /// task's scale, `span` the largest distance between two pose
+    /// positions.
+    pub(crate) fn new(motion: Motion, scale: f64, span: f64) -> Self {
         let all = motion.poles();
         let poles = [0, 1, 2].map(|k| all[k].finite());
         let translation = motion
             .pairs()
             .zip(&all)
             .find(|(_, p)| matches!(p, Pole::AtInfinity { .. }))
-            .map_or((1, 2), |(pair, _)| pair);
-        // The origin: P12, else P13 (one of them is finite, since the three
-        // rotations of a task with a finite pole cannot all be zero while
-        // theta_23 = theta_13 - theta_12 is not).
-        let (origin, exact) = match (poles[0], poles[1]) {
+            .map(|(pair, _)| pair);
+        // The origin: P12, else P13, where near the poses (then that row is
+        // exactly zero); else pose 1's position (no row is exactly zero
+        // there, and no far origin costs the near points their digits).
+        let p1 = motion.poses()[0].position;
+        let near = |p: Option<Point2<f64>>| {
+            p.filter(|q| (q - p1).norm() <= tolerance::POLE_DISTANCE * span)
+        };
+        let (origin, exact) = match (near(poles[0]), near(poles[1])) {
             (Some(p), _) => (p, 0),
             (None, Some(p)) => (p, 1),
-            // P23 only: any origin; no row is exactly zero there.
-            (None, None) => (motion.poses()[0].position, 2),
+            (None, None) => (p1, 2),
         };
         let rot = [1, 2].map(|k| {
             let (s, c) = motion.rotation0(0, k).sin_cos();
@@ -139,6 +158,7 @@ impl Linear {
             poles,
             image_poles,
             translation,
+            origin_is_pole: exact < 2,
         }
     }
 
@@ -147,8 +167,9 @@ impl Linear {
         self.poles
     }
 
-    /// The first pair of poses (1-based) that differ by a pure translation.
-    pub(crate) fn translation(&self) -> (usize, usize) {
+    /// The first pair of poses (1-based) that differ by a pure
+    /// translation; `None` when the three poles are finite.
+    pub(crate) fn translation(&self) -> Option<(usize, usize)> {
         self.translation
     }
 
@@ -308,9 +329,9 @@ impl Linear {
         let l = h2 * e3 + t3 * h02 - (h3 * e2 + t2 * h03) - det_l * cdc;
         let f = e3 * h02 - e2 * h03 - det_f * cdc;
         let q = [k[(0, 0)], k[(0, 1)] + k[(1, 0)], k[(1, 1)], l.x, l.y, f];
-        // The origin is a finite pole when P12 or P13 is finite (then f is
+        // The origin is a finite pole when it is P12 or P13 (then f is
         // exactly zero); else no point is known exactly.
-        let known = (self.poles[0].is_some() || self.poles[1].is_some()).then(Vector2::zeros);
+        let known = self.origin_is_pole.then(Vector2::zeros);
         Conic::local(q, self.origin, self.scale, known)
     }
 }

@@ -1,0 +1,831 @@
+//! `burmester.Space`, `burmester.Design`, `burmester.NearMiss`,
+//! `burmester.DesignReport` and the native half of `burmester.design`
+//! (the core's `design::search`): `_design` (the whole search in process),
+//! `_design_plan` (the three-pose coarse pass a Dask client computes) and
+//! `_design_from_atlas` (the refinement of those cells).
+
+use burmester::{
+    AtlasBest, AtlasCell, Design, DesignOptions, DesignReport, Dyad, Limit, NearMiss, PivotRegion,
+    Point2, RankBy, SearchPoint, Space, Task, Viewport,
+};
+use numpy::{PyArrayDyn, PyArrayMethods};
+use pyo3::exceptions::{PyIndexError, PyTypeError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+
+use crate::conv::{Count, PyPoint, Real, pt};
+use crate::design::PyDesignLimits;
+use crate::errors::IntoPy;
+use crate::geom::PyGrid;
+use crate::run::run;
+use crate::synthesis::{PySynthesizedFourBar, PyTask, dyad_tuple};
+
+type Xy = (f64, f64);
+type Box4 = (f64, f64, f64, f64);
+
+fn pts(v: Vec<PyPoint>) -> Vec<Point2<f64>> {
+    v.into_iter().map(|p| p.0).collect()
+}
+
+fn xys(v: &[Point2<f64>]) -> Vec<Xy> {
+    v.iter().map(|p| pt(*p)).collect()
+}
+
+/// The space a design must fit in.
+#[pyclass(frozen, eq, from_py_object, name = "Space", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub struct PySpace {
+    pub(crate) inner: Space,
+}
+
+#[pymethods]
+impl PySpace {
+    #[new]
+    #[pyo3(signature = (pivot_box = None, pivot_polygon = None, obstacles = None,
+        link_width = Real(0.0), envelope = None, travel_samples = Count(64)),
+        text_signature = "(pivot_box=None, pivot_polygon=None, obstacles=None, link_width=0.0, \
+        envelope=None, travel_samples=64)")]
+    fn new(
+        pivot_box: Option<(Real, Real, Real, Real)>,
+        pivot_polygon: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: Real,
+        envelope: Option<Vec<PyPoint>>,
+        travel_samples: Count,
+    ) -> PyResult<Self> {
+        let pivots = match (pivot_box, pivot_polygon) {
+            (Some(_), Some(_)) => {
+                return Err(PyTypeError::new_err(
+                    "pass either pivot_box=(xmin, xmax, ymin, ymax) or pivot_polygon=[(x, y), ...], \
+                     not both",
+                ));
+            }
+            (Some((a, b, c, d)), None) => PivotRegion::boxed(a.0, b.0, c.0, d.0).py()?,
+            (None, Some(p)) => PivotRegion::Polygon(pts(p)),
+            (None, None) => PivotRegion::Anywhere,
+        };
+        let inner = Space {
+            pivots,
+            obstacles: obstacles.unwrap_or_default().into_iter().map(pts).collect(),
+            link_width: link_width.0,
+            envelope: envelope.map(pts),
+            travel_samples: travel_samples.0,
+        };
+        inner.check().py()?;
+        Ok(PySpace { inner })
+    }
+    /// `"anywhere"`, `"box"` or `"polygon"`.
+    #[getter]
+    fn region(&self) -> &'static str {
+        self.inner.pivots.as_str()
+    }
+    #[getter]
+    fn pivot_box(&self) -> Option<Box4> {
+        match &self.inner.pivots {
+            PivotRegion::Box(v) => Some((v.xmin, v.xmax, v.ymin, v.ymax)),
+            _ => None,
+        }
+    }
+    #[getter]
+    fn pivot_polygon(&self) -> Option<Vec<Xy>> {
+        match &self.inner.pivots {
+            PivotRegion::Polygon(p) => Some(xys(p)),
+            _ => None,
+        }
+    }
+    #[getter]
+    fn obstacles(&self) -> Vec<Vec<Xy>> {
+        self.inner.obstacles.iter().map(|o| xys(o)).collect()
+    }
+    #[getter]
+    fn link_width(&self) -> f64 {
+        self.inner.link_width
+    }
+    #[getter]
+    fn envelope(&self) -> Option<Vec<Xy>> {
+        self.inner.envelope.as_deref().map(xys)
+    }
+    #[getter]
+    fn travel_samples(&self) -> usize {
+        self.inner.travel_samples
+    }
+    fn contains_pivot(&self, p: PyPoint) -> bool {
+        self.inner.pivots.contains(p.0)
+    }
+    fn search_box(&self, task: &PyTask, limits: Option<PyDesignLimits>) -> Box4 {
+        let l = limits.map(|l| l.inner).unwrap_or_default();
+        let v = self.inner.search_box(&task.inner, &l);
+        (v.xmin, v.xmax, v.ymin, v.ymax)
+    }
+    #[allow(clippy::type_complexity)]
+    fn __getnewargs__(
+        &self,
+    ) -> (
+        Option<Box4>,
+        Option<Vec<Xy>>,
+        Vec<Vec<Xy>>,
+        f64,
+        Option<Vec<Xy>>,
+        usize,
+    ) {
+        (
+            self.pivot_box(),
+            self.pivot_polygon(),
+            self.obstacles(),
+            self.inner.link_width,
+            self.envelope(),
+            self.inner.travel_samples,
+        )
+    }
+    fn __repr__(&self) -> String {
+        let mut parts = Vec::new();
+        if let Some(b) = self.pivot_box() {
+            parts.push(format!("pivot_box={b:?}"));
+        }
+        if let Some(p) = self.pivot_polygon() {
+            parts.push(format!("pivot_polygon=<{} vertices>", p.len()));
+        }
+        if !self.inner.obstacles.is_empty() {
+            parts.push(format!("obstacles=<{}>", self.inner.obstacles.len()));
+        }
+        if self.inner.link_width != 0.0 {
+            parts.push(format!("link_width={:?}", self.inner.link_width));
+        }
+        if let Some(e) = &self.inner.envelope {
+            parts.push(format!("envelope=<{} vertices>", e.len()));
+        }
+        format!("Space({})", parts.join(", "))
+    }
+}
+
+/// A search point as `(kind, values)` (for pickling).
+fn point_state(p: &SearchPoint) -> (&'static str, [f64; 4]) {
+    match *p {
+        SearchPoint::Pivots { driving, driven } => {
+            ("pivots", [driving.x, driving.y, driven.x, driven.y])
+        }
+        SearchPoint::Parameters { driving, driven } => ("parameters", [driving, driven, 0.0, 0.0]),
+        SearchPoint::Burmester { driving, driven } => {
+            ("burmester", [driving as f64, driven as f64, 0.0, 0.0])
+        }
+    }
+}
+
+fn point_of(kind: &str, v: [f64; 4]) -> PyResult<SearchPoint> {
+    Ok(match kind {
+        "pivots" => SearchPoint::Pivots {
+            driving: Point2::new(v[0], v[1]),
+            driven: Point2::new(v[2], v[3]),
+        },
+        "parameters" => SearchPoint::Parameters {
+            driving: v[0],
+            driven: v[1],
+        },
+        "burmester" => SearchPoint::Burmester {
+            driving: v[0] as usize,
+            driven: v[1] as usize,
+        },
+        other => {
+            return Err(PyTypeError::new_err(format!(
+                "unknown search point kind {other:?}"
+            )));
+        }
+    })
+}
+
+/// A search point for Python: `((ax, ay), (cx, cy))` for pivots,
+/// `(s_driving, s_driven)` for curve parameters, `(i, j)` for Burmester
+/// points.
+fn point_py<'py>(py: Python<'py>, p: &SearchPoint) -> PyResult<Bound<'py, PyAny>> {
+    Ok(match *p {
+        SearchPoint::Pivots { driving, driven } => {
+            (pt(driving), pt(driven)).into_pyobject(py)?.into_any()
+        }
+        SearchPoint::Parameters { driving, driven } => {
+            (driving, driven).into_pyobject(py)?.into_any()
+        }
+        SearchPoint::Burmester { driving, driven } => {
+            (driving, driven).into_pyobject(py)?.into_any()
+        }
+    })
+}
+
+/// The linkage of two dyads of `task` (as built by the search).
+fn linkage_of(
+    task: &Task,
+    driving: (PyPoint, PyPoint),
+    driven: (PyPoint, PyPoint),
+) -> PyResult<burmester::SynthesizedFourBar> {
+    task.four_bar(
+        &Dyad::new(driving.0.0, driving.1.0),
+        &Dyad::new(driven.0.0, driven.1.0),
+    )
+    .py()
+}
+
+/// One answer of `burmester.design`.
+#[pyclass(frozen, from_py_object, name = "Design", module = "burmester")]
+#[derive(Clone)]
+pub struct PyDesign {
+    task: Task,
+    inner: Design,
+}
+
+#[pymethods]
+impl PyDesign {
+    #[getter]
+    fn linkage(&self) -> PySynthesizedFourBar {
+        PySynthesizedFourBar::new(self.task, self.inner.linkage)
+    }
+    #[getter]
+    fn figures(&self) -> crate::linkage::PyLinkageFigures {
+        self.linkage().figures()
+    }
+    #[getter]
+    fn score(&self) -> f64 {
+        self.inner.score
+    }
+    #[getter]
+    fn size_ratio(&self) -> f64 {
+        self.inner.size_ratio
+    }
+    #[getter]
+    fn ranked_by(&self) -> &'static str {
+        self.inner.ranked_by.as_str()
+    }
+    /// The driving dyad's fixed pivot `A0` (its crank drives).
+    #[getter]
+    fn driving_pivot(&self) -> Xy {
+        pt(self.inner.linkage.driving.center)
+    }
+    /// The driven dyad's fixed pivot `C0`.
+    #[getter]
+    fn driven_pivot(&self) -> Xy {
+        pt(self.inner.linkage.driven.center)
+    }
+    /// `"pivots"`, `"parameters"` or `"burmester"`: what `coarse` and
+    /// `refined` are.
+    #[getter]
+    fn found_by(&self) -> &'static str {
+        point_state(&self.inner.coarse).0
+    }
+    #[getter]
+    fn coarse<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        point_py(py, &self.inner.coarse)
+    }
+    #[getter]
+    fn refined<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        point_py(py, &self.inner.refined)
+    }
+    #[getter]
+    fn coarse_score(&self) -> f64 {
+        self.inner.coarse_score
+    }
+    #[getter]
+    fn evaluations(&self) -> usize {
+        self.inner.evaluations
+    }
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn _from_state(
+        task: PyTask,
+        driving: (PyPoint, PyPoint),
+        driven: (PyPoint, PyPoint),
+        score: f64,
+        size_ratio: f64,
+        ranked_by: &str,
+        kind: &str,
+        coarse: [f64; 4],
+        refined: [f64; 4],
+        coarse_score: f64,
+        evaluations: usize,
+    ) -> PyResult<Self> {
+        let linkage = linkage_of(&task.inner, driving, driven)?;
+        Ok(PyDesign {
+            task: task.inner,
+            inner: Design {
+                linkage,
+                score,
+                size_ratio,
+                ranked_by: ranked_by.parse::<RankBy>().py()?,
+                coarse: point_of(kind, coarse)?,
+                refined: point_of(kind, refined)?,
+                coarse_score,
+                evaluations,
+            },
+        })
+    }
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let d = &self.inner;
+        let (kind, coarse) = point_state(&d.coarse);
+        let (_, refined) = point_state(&d.refined);
+        let args = (
+            PyTask { inner: self.task },
+            dyad_tuple(&d.linkage.driving),
+            dyad_tuple(&d.linkage.driven),
+            d.score,
+            d.size_ratio,
+            d.ranked_by.as_str(),
+            kind,
+            coarse,
+            refined,
+            d.coarse_score,
+            d.evaluations,
+        )
+            .into_pyobject(py)?;
+        Ok((py.get_type::<PyDesign>().getattr("_from_state")?, args))
+    }
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<PyDesign>()
+            .is_ok_and(|o| o.get().task == self.task && o.get().inner == self.inner)
+    }
+    /// A picture for Jupyter: the linkage at the poses, or None without
+    /// matplotlib.
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+    fn __repr__(&self) -> String {
+        let f = &self.inner.linkage.figures;
+        format!(
+            "<Design {} A0=({:.6}, {:.6}) C0=({:.6}, {:.6}) min_transmission_deg={:.3} \
+             size_ratio={:.3} score={:.6} by {}>",
+            f.grashof,
+            self.inner.linkage.driving.center.x,
+            self.inner.linkage.driving.center.y,
+            self.inner.linkage.driven.center.x,
+            self.inner.linkage.driven.center.y,
+            f.min_transmission.to_degrees(),
+            self.inner.size_ratio,
+            self.inner.score,
+            self.inner.ranked_by.as_str()
+        )
+    }
+}
+
+fn limit_of(name: &str) -> PyResult<Limit> {
+    Limit::ALL
+        .into_iter()
+        .find(|l| l.as_str() == name)
+        .ok_or_else(|| PyTypeError::new_err(format!("unknown limit {name:?}")))
+}
+
+/// A candidate that misses the limits by little (when nothing fits).
+#[pyclass(frozen, from_py_object, name = "NearMiss", module = "burmester")]
+#[derive(Clone)]
+pub struct PyNearMiss {
+    task: Task,
+    inner: NearMiss,
+}
+
+#[pymethods]
+impl PyNearMiss {
+    #[getter]
+    fn linkage(&self) -> PySynthesizedFourBar {
+        PySynthesizedFourBar::new(self.task, self.inner.linkage)
+    }
+    #[getter]
+    fn figures(&self) -> crate::linkage::PyLinkageFigures {
+        self.linkage().figures()
+    }
+    #[getter]
+    fn size_ratio(&self) -> f64 {
+        self.inner.size_ratio
+    }
+    #[getter]
+    fn misses(&self) -> Vec<&'static str> {
+        self.inner.misses.iter().map(|l| l.as_str()).collect()
+    }
+    #[getter]
+    fn shortfall(&self) -> f64 {
+        self.inner.shortfall
+    }
+    #[staticmethod]
+    fn _from_state(
+        task: PyTask,
+        driving: (PyPoint, PyPoint),
+        driven: (PyPoint, PyPoint),
+        size_ratio: f64,
+        misses: Vec<String>,
+        shortfall: f64,
+    ) -> PyResult<Self> {
+        Ok(PyNearMiss {
+            task: task.inner,
+            inner: NearMiss {
+                linkage: linkage_of(&task.inner, driving, driven)?,
+                size_ratio,
+                misses: misses
+                    .iter()
+                    .map(|m| limit_of(m))
+                    .collect::<PyResult<_>>()?,
+                shortfall,
+            },
+        })
+    }
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let m = &self.inner;
+        let args = (
+            PyTask { inner: self.task },
+            dyad_tuple(&m.linkage.driving),
+            dyad_tuple(&m.linkage.driven),
+            m.size_ratio,
+            self.misses(),
+            m.shortfall,
+        )
+            .into_pyobject(py)?;
+        Ok((py.get_type::<PyNearMiss>().getattr("_from_state")?, args))
+    }
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<PyNearMiss>()
+            .is_ok_and(|o| o.get().task == self.task && o.get().inner == self.inner)
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "<NearMiss misses {} by {:.4} size_ratio={:.3}>",
+            self.misses().join(", "),
+            self.inner.shortfall,
+            self.inner.size_ratio
+        )
+    }
+}
+
+/// What `burmester.design` found: a sequence of `Design`s, best first, and
+/// what the search ran under.
+#[pyclass(frozen, sequence, name = "DesignReport", module = "burmester")]
+#[derive(Clone)]
+pub struct PyDesignReport {
+    task: Task,
+    inner: DesignReport,
+}
+
+#[pymethods]
+impl PyDesignReport {
+    #[getter]
+    fn task(&self) -> PyTask {
+        PyTask { inner: self.task }
+    }
+    #[getter]
+    fn designs(&self) -> Vec<PyDesign> {
+        self.inner
+            .designs
+            .iter()
+            .map(|d| PyDesign {
+                task: self.task,
+                inner: *d,
+            })
+            .collect()
+    }
+    #[getter]
+    fn near_misses(&self) -> Vec<PyNearMiss> {
+        self.inner
+            .near_misses
+            .iter()
+            .map(|m| PyNearMiss {
+                task: self.task,
+                inner: m.clone(),
+            })
+            .collect()
+    }
+    #[getter]
+    fn rejections(&self) -> Vec<(&'static str, usize)> {
+        self.inner
+            .rejections
+            .iter()
+            .map(|(l, n)| (l.as_str(), *n))
+            .collect()
+    }
+    #[getter]
+    fn main_rejection(&self) -> Option<&'static str> {
+        self.inner.main_rejection().map(|l| l.as_str())
+    }
+    #[getter]
+    fn census(&self) -> usize {
+        self.inner.census
+    }
+    #[getter]
+    fn limits(&self) -> PyDesignLimits {
+        PyDesignLimits {
+            inner: self.inner.limits,
+        }
+    }
+    #[getter]
+    fn space(&self) -> PySpace {
+        PySpace {
+            inner: self.inner.space.clone(),
+        }
+    }
+    #[getter]
+    fn rank_by(&self) -> &'static str {
+        self.inner.rank_by.as_str()
+    }
+    #[getter]
+    fn min_separation(&self) -> f64 {
+        self.inner.min_separation
+    }
+    #[getter]
+    fn search_box(&self) -> Option<Box4> {
+        self.inner
+            .search_box
+            .map(|v| (v.xmin, v.xmax, v.ymin, v.ymax))
+    }
+    #[getter]
+    fn coarse_candidates(&self) -> usize {
+        self.inner.coarse_candidates
+    }
+    #[getter]
+    fn coarse_acceptable(&self) -> usize {
+        self.inner.coarse_acceptable
+    }
+    #[getter]
+    fn evaluations(&self) -> usize {
+        self.inner.evaluations
+    }
+    fn __len__(&self) -> usize {
+        self.inner.designs.len()
+    }
+    fn __iter__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyIterator>> {
+        pyo3::types::PyList::new(py, self.designs())?.try_iter()
+    }
+    fn __getitem__(&self, index: isize) -> PyResult<PyDesign> {
+        let n = self.inner.designs.len() as isize;
+        let k = if index < 0 { index + n } else { index };
+        if !(0..n).contains(&k) {
+            return Err(PyIndexError::new_err(format!(
+                "design index {index} out of range for {n} designs"
+            )));
+        }
+        Ok(PyDesign {
+            task: self.task,
+            inner: self.inner.designs[k as usize],
+        })
+    }
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn _from_state(
+        task: PyTask,
+        designs: Vec<PyDesign>,
+        limits: PyDesignLimits,
+        space: PySpace,
+        rank_by: &str,
+        min_separation: f64,
+        search_box: Option<Box4>,
+        counts: (usize, usize, usize, usize),
+        rejections: Vec<(String, usize)>,
+        near_misses: Vec<PyNearMiss>,
+    ) -> PyResult<Self> {
+        Ok(PyDesignReport {
+            task: task.inner,
+            inner: DesignReport {
+                designs: designs.into_iter().map(|d| d.inner).collect(),
+                limits: limits.inner,
+                space: space.inner,
+                rank_by: rank_by.parse::<RankBy>().py()?,
+                min_separation,
+                search_box: search_box.map(|(xmin, xmax, ymin, ymax)| Viewport {
+                    xmin,
+                    xmax,
+                    ymin,
+                    ymax,
+                }),
+                coarse_candidates: counts.0,
+                coarse_acceptable: counts.1,
+                evaluations: counts.2,
+                rejections: rejections
+                    .iter()
+                    .map(|(l, n)| Ok((limit_of(l)?, *n)))
+                    .collect::<PyResult<_>>()?,
+                census: counts.3,
+                near_misses: near_misses.into_iter().map(|m| m.inner).collect(),
+            },
+        })
+    }
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let r = &self.inner;
+        let args = (
+            self.task(),
+            self.designs(),
+            self.limits(),
+            self.space(),
+            self.rank_by(),
+            r.min_separation,
+            self.search_box(),
+            (
+                r.coarse_candidates,
+                r.coarse_acceptable,
+                r.evaluations,
+                r.census,
+            ),
+            self.rejections(),
+            self.near_misses(),
+        )
+            .into_pyobject(py)?;
+        Ok((
+            py.get_type::<PyDesignReport>().getattr("_from_state")?,
+            args,
+        ))
+    }
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<PyDesignReport>()
+            .is_ok_and(|o| o.get().task == self.task && o.get().inner == self.inner)
+    }
+    fn __repr__(&self) -> String {
+        match self.inner.designs.first() {
+            Some(d) => format!(
+                "<DesignReport {} designs by {}, best score {:.6}>",
+                self.inner.designs.len(),
+                self.inner.rank_by.as_str(),
+                d.score
+            ),
+            None => format!(
+                "<DesignReport no design; {} near misses, most rejected by {}>",
+                self.inner.near_misses.len(),
+                self.main_rejection().unwrap_or("none")
+            ),
+        }
+    }
+}
+
+/// The options of `burmester.design` from its keywords.
+#[allow(clippy::too_many_arguments)]
+fn options(
+    space: Option<PySpace>,
+    limits: Option<PyDesignLimits>,
+    rank_by: &str,
+    top: Count,
+    min_separation: Option<Real>,
+    coarse_driven: Count,
+    coarse_driving: Count,
+    coarse_pairs: Count,
+    starts: Count,
+    max_iterations: Count,
+) -> PyResult<DesignOptions> {
+    Ok(DesignOptions {
+        limits: limits.map(|l| l.inner).unwrap_or_default(),
+        space: space.map(|s| s.inner).unwrap_or_default(),
+        rank_by: rank_by.parse::<RankBy>().py()?,
+        top: top.0,
+        min_separation: min_separation.map(|r| r.0),
+        coarse_driven: coarse_driven.0,
+        coarse_driving: coarse_driving.0,
+        coarse_pairs: coarse_pairs.0,
+        starts: starts.0,
+        max_iterations: max_iterations.0,
+    })
+}
+
+/// Defines a native design function: the keywords of `burmester.design`
+/// (after `task` and the function's own positional arguments) parsed into
+/// `opts`, then `$body`.
+macro_rules! design_fn {
+    ($(#[$m:meta])* fn $name:ident<$lt:lifetime>($py:ident, $task:ident $(, $arg:ident: $ty:ty)*; $opts:ident, $progress:ident) -> $ret:ty $body:block) => {
+        $(#[$m])*
+        #[pyfunction]
+        #[pyo3(signature = ($task $(, $arg)*, *, space = None, limits = None, rank_by = "balanced",
+            top = Count(5), min_separation = None, coarse_driven = Count(12),
+            coarse_driving = Count(48), coarse_pairs = Count(120), starts = Count(48),
+            max_iterations = Count(3000), progress = None))]
+        #[allow(clippy::too_many_arguments)]
+        pub(crate) fn $name<$lt>(
+            $py: Python<$lt>,
+            $task: &PyTask,
+            $($arg: $ty,)*
+            space: Option<PySpace>,
+            limits: Option<PyDesignLimits>,
+            rank_by: &str,
+            top: Count,
+            min_separation: Option<Real>,
+            coarse_driven: Count,
+            coarse_driving: Count,
+            coarse_pairs: Count,
+            starts: Count,
+            max_iterations: Count,
+            $progress: Option<&Bound<$lt, PyAny>>,
+        ) -> PyResult<$ret> {
+            let $opts = options(
+                space,
+                limits,
+                rank_by,
+                top,
+                min_separation,
+                coarse_driven,
+                coarse_driving,
+                coarse_pairs,
+                starts,
+                max_iterations,
+            )?;
+            $body
+        }
+    };
+}
+
+design_fn! {
+    /// The whole search in this process (the GIL released, progress in
+    /// thousandths, Ctrl-C).
+    fn _design<'py>(py, task; opts, progress) -> PyDesignReport {
+        let t = task.inner;
+        let report = run(py, true, progress, None, |c| t.design(&opts, c))?;
+        Ok(PyDesignReport { task: t, inner: report })
+    }
+}
+
+design_fn! {
+    /// The three-pose coarse pass: the driven and driving grids and the
+    /// keywords of `_atlas_tile`.
+    fn _design_plan<'py>(py, task; opts, progress) -> Bound<'py, PyDict> {
+        let _ = progress;
+        let plan = task.inner.design_plan(&opts).py()?;
+        let d = PyDict::new(py);
+        d.set_item("driven", PyGrid { inner: plan.driven })?;
+        d.set_item("driving", PyGrid { inner: plan.driving })?;
+        let kw = PyDict::new(py);
+        kw.set_item("limits", PyDesignLimits { inner: opts.limits })?;
+        let c = &plan.constraints;
+        kw.set_item("base_plate", c.base_plate.as_deref().map(xys))?;
+        kw.set_item("obstacles", c.obstacles.iter().map(|o| xys(o)).collect::<Vec<_>>())?;
+        kw.set_item("link_width", c.link_width)?;
+        kw.set_item("travel_samples", c.travel_samples)?;
+        kw.set_item("envelope", c.envelope.as_deref().map(xys))?;
+        kw.set_item("rank_by", opts.rank_by.as_str())?;
+        d.set_item("atlas", kw)?;
+        Ok(d)
+    }
+}
+
+/// A column of `arrays` as f64 values.
+fn column(arrays: &Bound<'_, PyDict>, name: &str) -> PyResult<Vec<f64>> {
+    let item = arrays
+        .get_item(name)?
+        .ok_or_else(|| PyTypeError::new_err(format!("missing atlas array {name}")))?;
+    let a = item
+        .call_method1("astype", ("float64",))?
+        .cast_into::<PyArrayDyn<f64>>()
+        .map_err(PyErr::from)?;
+    let ro = a.readonly();
+    Ok(ro.as_array().iter().copied().collect())
+}
+
+/// Atlas cells from the arrays `_atlas_tile` returns (concatenated).
+fn cells_of(arrays: &Bound<'_, PyDict>) -> PyResult<Vec<AtlasCell>> {
+    let valid = column(arrays, "valid")?;
+    let count = column(arrays, "count")?;
+    let branch_free = column(arrays, "branch_free")?;
+    let mu = column(arrays, "best_transmission_rad")?;
+    let ratio = column(arrays, "best_link_ratio")?;
+    let margin = column(arrays, "best_margin")?;
+    let size = column(arrays, "best_size_ratio")?;
+    let score = column(arrays, "best_score")?;
+    let xy = column(arrays, "best_driving")?;
+    let index = column(arrays, "best_index")?;
+    let n = valid.len();
+    for (name, len, want) in [
+        ("count", count.len(), n),
+        ("branch_free", branch_free.len(), n),
+        ("best_score", score.len(), n),
+        ("best_driving", xy.len(), 2 * n),
+        ("best_index", index.len(), 2 * n),
+    ] {
+        if len != want {
+            return Err(PyTypeError::new_err(format!(
+                "atlas array {name} has {len} values, expected {want}"
+            )));
+        }
+    }
+    Ok((0..n)
+        .map(|k| AtlasCell {
+            valid: valid[k] != 0.0,
+            count: count[k] as u64,
+            branch_free: branch_free[k] as u64,
+            best: (!score[k].is_nan()).then(|| AtlasBest {
+                driving: Point2::new(xy[2 * k], xy[2 * k + 1]),
+                index: (index[2 * k] as usize, index[2 * k + 1] as usize),
+                min_transmission_rad: mu[k] as f32,
+                link_ratio: ratio[k] as f32,
+                margin: margin[k],
+                size_ratio: size[k] as f32,
+                score: score[k],
+            }),
+        })
+        .collect())
+}
+
+design_fn! {
+    /// The refinement of a three-pose coarse pass computed elsewhere:
+    /// `arrays` are `_atlas_tile`'s arrays over the plan's driven grid.
+    fn _design_from_atlas<'py>(py, task, arrays: &Bound<'py, PyDict>; opts, progress) -> PyDesignReport {
+        let cells = cells_of(arrays)?;
+        let t = task.inner;
+        let report = run(py, true, progress, None, |c| t.design_from_atlas(&opts, &cells, c))?;
+        Ok(PyDesignReport { task: t, inner: report })
+    }
+}

@@ -1,0 +1,1259 @@
+//! From poses to the best buildable linkage in one call: [`Task::design`].
+//!
+//! A designer brings poses, the space in the machine and the limits a
+//! linkage must meet; the search answers with the best linkages, ranked by
+//! one [`RankBy`] score, each branch-free, carrying the coupler through
+//! the poses in order on one circuit, meeting the [`DesignLimits`] and
+//! fitting the [`Space`]. Every answer is judged on the exact linkage
+//! ([`Task::four_bar`]: the assembly modes at the poses, the minimum
+//! transmission angle over the whole travel, the clearance and the
+//! envelope over the whole travel), not on a grid sample.
+//!
+//! # How
+//!
+//! * **Three poses**: both fixed pivots are free. A coarse pass over pivot
+//!   pairs, the [pivot-pair atlas](crate::design::atlas) over the search
+//!   box ([`Space::search_box`]: a `coarse_driven` grid of driven pivots
+//!   `C0`, each with its best driving pivot `A0` by the ranking's score on
+//!   a `coarse_driving` grid), gives the starts: the cells by score, best
+//!   first, at least the separation apart. Each start is then **refined
+//!   continuously**: both pivots move together, `(A0, C0)` in the plane,
+//!   by Nelder–Mead (the `argmin` crate, its parameters adapted to the
+//!   dimension) on the exact score. A linkage that misses a limit costs its
+//!   score plus a penalty for its shortfall (so the simplex can slide along
+//!   a limit's boundary, where the best linkages usually are), one without
+//!   a feasible motion a barrier, and only acceptable linkages are kept: the
+//!   refined linkage is branch-free, in order, inside the limits and the
+//!   space, and not bounded by the grid. The refinement restarts a few times from its
+//!   best point with a fresh simplex (the usual cure for a simplex that
+//!   collapsed early along a constraint's boundary).
+//! * **Four poses**: the [pair map](crate::design::pairs) with
+//!   `coarse_pairs` samples along each axis, under the same limits and
+//!   space, gives the starts; each is refined along the two curve
+//!   parameters (the crank rotations of both dyads,
+//!   [`FourPositions::dyad_at_parameter`]).
+//! * **Five poses**: every ordered pair of Burmester points, judged the
+//!   same way (there is nothing to refine).
+//!
+//! The answers are **distinct**: a design whose fixed pivots are both
+//! within the minimum separation ([`DesignOptions::min_separation`],
+//! default [`DesignOptions::DEFAULT_SEPARATION`] task sizes) of a better
+//! one's is dropped, so the list offers different linkages, not
+//! neighbours of one. Scores within
+//! [`tolerance::RANK_TIE`](crate::tolerance::RANK_TIE) tie and go to the
+//! smaller linkage.
+//!
+//! # When nothing fits
+//!
+//! The report has no designs, never an error and never a silent
+//! relaxation of a limit: it says which limit rejected the most candidates
+//! of a census (every candidate of a coarse grid judged against every
+//! limit, [`DesignReport::rejections`]) and lists the nearest misses: the
+//! candidates whose motion is feasible (branch-free, in order on one
+//! circuit) that miss the limits by the least ([`NearMiss::shortfall`]).
+
+use core::cell::{Cell, RefCell};
+use core::sync::atomic::{AtomicUsize, Ordering};
+
+use argmin::core::{CostFunction, Error as ArgminError, Executor};
+use argmin::solver::neldermead::NelderMead;
+use nalgebra::Point2;
+use rayon::prelude::*;
+
+use crate::design::atlas::check_scored;
+use crate::design::constraints::Prepared;
+use crate::design::rank::tie_order;
+use crate::design::space::{PivotRegion, Space};
+use crate::design::{AtlasCell, DesignLimits, InputRequirement, RankBy};
+use crate::engine::Control;
+use crate::error::{Error, InvalidInput, Result, count_in, in_range};
+use crate::geom::{Grid, Viewport};
+use crate::linkage::Direction;
+use crate::synthesis::curves::{FivePositions, FourPositions};
+use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
+use crate::tolerance;
+
+/// What to search for and how finely (see the [module docs](self)).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignOptions {
+    /// The limits every design meets.
+    pub limits: DesignLimits,
+    /// The space every design fits.
+    pub space: Space,
+    /// The score the designs are ranked by: [`RankBy::Balanced`]
+    /// (default), [`RankBy::Transmission`] or [`RankBy::Compact`].
+    pub rank_by: RankBy,
+    /// How many designs to return, at most (1 to
+    /// [`DesignOptions::MAX_TOP`], default 5).
+    pub top: usize,
+    /// The least distance, in the task's units, by which a design's fixed
+    /// pivots (one of them at least) differ from a better design's;
+    /// `None`: [`DesignOptions::DEFAULT_SEPARATION`] task sizes
+    /// ([`Task::span`]).
+    pub min_separation: Option<f64>,
+    /// Three poses: driven pivots along the longer side of the coarse
+    /// pass's box (2 to [`DesignOptions::MAX_COARSE_DRIVEN`], default 12).
+    pub coarse_driven: usize,
+    /// Three poses: driving pivots along the longer side of the coarse
+    /// pass's box, for each driven pivot (2 to
+    /// [`DesignOptions::MAX_COARSE_DRIVING`], default 48).
+    pub coarse_driving: usize,
+    /// Four poses: samples along each axis of the coarse pair map (2 to
+    /// [`DesignOptions::MAX_COARSE_PAIRS`], default 120).
+    pub coarse_pairs: usize,
+    /// How many coarse starts are refined, at most (1 to
+    /// [`DesignOptions::MAX_STARTS`], default 48).
+    pub starts: usize,
+    /// Nelder–Mead iterations per refinement, all rounds together (1 to
+    /// [`DesignOptions::MAX_ITERATIONS`], default 3000).
+    pub max_iterations: usize,
+}
+
+impl Default for DesignOptions {
+    fn default() -> Self {
+        DesignOptions {
+            limits: DesignLimits::default(),
+            space: Space::default(),
+            rank_by: RankBy::Balanced,
+            top: 5,
+            min_separation: None,
+            coarse_driven: Self::DEFAULT_COARSE_DRIVEN,
+            coarse_driving: Self::DEFAULT_COARSE_DRIVING,
+            coarse_pairs: Self::DEFAULT_COARSE_PAIRS,
+            starts: 48,
+            max_iterations: 3000,
+        }
+    }
+}
+
+impl DesignOptions {
+    /// The most designs one search returns.
+    pub const MAX_TOP: usize = 100;
+    /// The default coarse driven pivots along the box's longer side.
+    pub const DEFAULT_COARSE_DRIVEN: usize = 12;
+    /// The most coarse driven pivots along the box's longer side.
+    pub const MAX_COARSE_DRIVEN: usize = 64;
+    /// The default coarse driving pivots along the box's longer side.
+    pub const DEFAULT_COARSE_DRIVING: usize = 48;
+    /// The most coarse driving pivots along the box's longer side.
+    pub const MAX_COARSE_DRIVING: usize = 256;
+    /// The default samples per axis of the four-pose coarse pair map.
+    pub const DEFAULT_COARSE_PAIRS: usize = 120;
+    /// The most samples per axis of the four-pose coarse pair map.
+    pub const MAX_COARSE_PAIRS: usize = 2000;
+    /// The most refined starts.
+    pub const MAX_STARTS: usize = 1000;
+    /// The most Nelder–Mead iterations per refinement.
+    pub const MAX_ITERATIONS: usize = 20_000;
+    /// The default minimum separation of two designs, in task sizes.
+    pub const DEFAULT_SEPARATION: f64 = 0.2;
+
+    /// Checks the options (the space and limits against `task` too).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::CountOutOfRange`] naming the count out of range;
+    /// [`InvalidInput::OutsideRange`] for a negative or non-finite
+    /// separation; [`InvalidInput::UnknownName`] for a ranking without a
+    /// score; as [`Space::validate`].
+    pub fn validate(&self, task: &Task) -> Result<()> {
+        count_in("top", self.top, 1, Self::MAX_TOP)?;
+        count_in(
+            "coarse_driven",
+            self.coarse_driven,
+            2,
+            Self::MAX_COARSE_DRIVEN,
+        )?;
+        count_in(
+            "coarse_driving",
+            self.coarse_driving,
+            2,
+            Self::MAX_COARSE_DRIVING,
+        )?;
+        count_in("coarse_pairs", self.coarse_pairs, 2, Self::MAX_COARSE_PAIRS)?;
+        count_in("starts", self.starts, 1, Self::MAX_STARTS)?;
+        count_in(
+            "max_iterations",
+            self.max_iterations,
+            1,
+            Self::MAX_ITERATIONS,
+        )?;
+        if let Some(s) = self.min_separation {
+            in_range("min_separation", s, 0.0, f64::MAX, "")?;
+        }
+        check_scored(self.rank_by, "design ranking")?;
+        self.space.validate(task, &self.limits)
+    }
+
+    /// The separation in the task's units.
+    fn separation(&self, task: &Task) -> f64 {
+        self.min_separation
+            .unwrap_or(Self::DEFAULT_SEPARATION * task.span())
+    }
+}
+
+/// Where the search found a design, or started from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SearchPoint {
+    /// Three poses: the fixed pivots.
+    Pivots {
+        /// The driving pivot `A0`.
+        driving: Point2<f64>,
+        /// The driven pivot `C0`.
+        driven: Point2<f64>,
+    },
+    /// Four poses: the curve parameters of both dyads
+    /// ([`FourPositions::dyad_at_parameter`]).
+    Parameters {
+        /// The driving dyad's.
+        driving: f64,
+        /// The driven dyad's.
+        driven: f64,
+    },
+    /// Five poses: the indices of the Burmester points
+    /// ([`FivePositions::burmester_points`]).
+    Burmester {
+        /// The driving dyad's.
+        driving: usize,
+        /// The driven dyad's.
+        driven: usize,
+    },
+}
+
+/// One answer of the search.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Design {
+    /// The linkage: its driving dyad drives ([`SynthesizedFourBar::driving`]).
+    pub linkage: SynthesizedFourBar,
+    /// Its score by the ranking ([`RankBy::score`] of its exact figures).
+    pub score: f64,
+    /// Its size over the task's ([`SynthesizedFourBar::size`] over
+    /// [`Task::span`]).
+    pub size_ratio: f64,
+    /// What ranked it.
+    pub ranked_by: RankBy,
+    /// Where the coarse pass found it.
+    pub coarse: SearchPoint,
+    /// Where the refinement took it (the linkage's own place).
+    pub refined: SearchPoint,
+    /// The coarse sample's score (the grid's `f32` columns).
+    pub coarse_score: f64,
+    /// How many linkages its refinement judged.
+    pub evaluations: usize,
+}
+
+/// A limit or a check a candidate can fail.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Limit {
+    /// The poses are in different assembly modes (or one is a toggle).
+    BranchDefect,
+    /// No input direction carries the coupler through the poses in order
+    /// on one circuit.
+    Order,
+    /// The minimum transmission angle over the travel is below the limit.
+    Transmission,
+    /// The link ratio is above the limit.
+    LinkRatio,
+    /// The input is not of the required kind (crank or rocker).
+    Input,
+    /// The linkage is larger, relative to the task, than allowed.
+    SizeRatio,
+    /// A link is longer than allowed.
+    LinkLength,
+    /// A fixed pivot is outside the pivot region.
+    PivotRegion,
+    /// A moving link hits an obstacle over the travel.
+    Obstacles,
+    /// A moving part leaves the envelope over the travel.
+    Envelope,
+}
+
+impl Limit {
+    /// Every limit, in the order they are checked.
+    pub const ALL: [Limit; 10] = [
+        Limit::BranchDefect,
+        Limit::Order,
+        Limit::Transmission,
+        Limit::LinkRatio,
+        Limit::Input,
+        Limit::SizeRatio,
+        Limit::LinkLength,
+        Limit::PivotRegion,
+        Limit::Obstacles,
+        Limit::Envelope,
+    ];
+
+    /// A short name: `"branch_defect"`, `"order"`, `"transmission"`,
+    /// `"link_ratio"`, `"input"`, `"size_ratio"`, `"link_length"`,
+    /// `"pivot_region"`, `"obstacles"` or `"envelope"`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Limit::BranchDefect => "branch_defect",
+            Limit::Order => "order",
+            Limit::Transmission => "transmission",
+            Limit::LinkRatio => "link_ratio",
+            Limit::Input => "input",
+            Limit::SizeRatio => "size_ratio",
+            Limit::LinkLength => "link_length",
+            Limit::PivotRegion => "pivot_region",
+            Limit::Obstacles => "obstacles",
+            Limit::Envelope => "envelope",
+        }
+    }
+
+    fn bit(self) -> u16 {
+        1 << (self as u16)
+    }
+}
+
+/// A candidate whose motion is feasible but that misses limits.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NearMiss {
+    /// The linkage.
+    pub linkage: SynthesizedFourBar,
+    /// Its size over the task's.
+    pub size_ratio: f64,
+    /// The limits it misses.
+    pub misses: Vec<Limit>,
+    /// By how much, the worst of its relative shortfalls: the transmission
+    /// angle's `(limit - mu) / limit`, the link ratio's, size ratio's and
+    /// link length's `value / limit - 1`, a pivot's distance outside the
+    /// region over the task's size, and 1 for the wrong input kind, an
+    /// obstacle hit or the envelope left. Smaller is nearer.
+    pub shortfall: f64,
+}
+
+/// What [`Task::design`] found, and what it searched under.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignReport {
+    /// The designs, best first, distinct (module docs); empty when nothing
+    /// fits.
+    pub designs: Vec<Design>,
+    /// The limits used.
+    pub limits: DesignLimits,
+    /// The space used.
+    pub space: Space,
+    /// What ranked the designs.
+    pub rank_by: RankBy,
+    /// The least distance between two designs' pivots (task units).
+    pub min_separation: f64,
+    /// Three poses: the box of the coarse pass ([`Space::search_box`]).
+    pub search_box: Option<Viewport>,
+    /// Candidates the coarse pass judged (pivot pairs, pairs of dyads, or
+    /// ordered pairs of Burmester points).
+    pub coarse_candidates: usize,
+    /// Of them acceptable.
+    pub coarse_acceptable: usize,
+    /// Linkages the refinements judged.
+    pub evaluations: usize,
+    /// When there are no designs: how many census candidates failed each
+    /// limit, the most first (a candidate may fail several); empty
+    /// otherwise.
+    pub rejections: Vec<(Limit, usize)>,
+    /// When there are no designs: how many candidates the census judged.
+    pub census: usize,
+    /// When there are no designs: the nearest misses, nearest first, at
+    /// most `top`, distinct as the designs are.
+    pub near_misses: Vec<NearMiss>,
+}
+
+impl DesignReport {
+    /// The limit that rejected the most census candidates, if any.
+    pub fn main_rejection(&self) -> Option<Limit> {
+        self.rejections.first().map(|r| r.0)
+    }
+}
+
+/// What the three-pose coarse pass computes: the atlas of `driven` ×
+/// `driving` over the search box under the limits and `constraints` (the
+/// space's), ranked by the options' ranking. A distributed caller computes
+/// it ([`Task::pivot_atlas_rows`] in tiles) and hands the cells to
+/// [`Task::design_from_atlas`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignPlan {
+    /// The box of the coarse pass.
+    pub search_box: Viewport,
+    /// The coarse driven pivots.
+    pub driven: Grid,
+    /// The coarse driving pivots of each.
+    pub driving: Grid,
+    /// The constraints of the atlas (the space's).
+    pub constraints: crate::design::Constraints,
+}
+
+/// The cost of a linkage that is not acceptable (a barrier; finite, so the
+/// simplex's statistics stay numbers).
+const BARRIER: f64 = 1e300;
+
+/// Driving pivots along the longer side of the census grid, for each
+/// coarse driven pivot.
+const CENSUS_DRIVING: usize = 20;
+
+/// Dyads along the curve of a four-pose census.
+const CENSUS_PAIRS: usize = 100;
+
+/// A grid over `v` with `n` samples along the longer side (at least 2
+/// along the shorter).
+fn grid_over(v: &Viewport, n: usize) -> Result<Grid> {
+    let (w, h) = v.size();
+    let (nx, ny) = if w >= h {
+        (n, ((n as f64 * h / w).round() as usize).max(2))
+    } else {
+        (((n as f64 * w / h).round() as usize).max(2), n)
+    };
+    Grid::new(*v, nx, ny)
+}
+
+/// The verdict of the exact judge on one linkage.
+#[derive(Clone)]
+struct Verdict {
+    linkage: SynthesizedFourBar,
+    size_ratio: f64,
+    fails: u16,
+    shortfall: f64,
+    /// The score, where acceptable.
+    score: Option<f64>,
+    /// The score's formula on the figures, acceptable or not (where the
+    /// motion has a travel).
+    raw: Option<f64>,
+}
+
+impl Verdict {
+    fn acceptable(&self) -> bool {
+        self.fails == 0 && self.score.is_some()
+    }
+
+    fn motion_feasible(&self) -> bool {
+        self.fails & (Limit::BranchDefect.bit() | Limit::Order.bit()) == 0
+    }
+}
+
+/// The exact judge: the limits and the space on the exact linkage.
+struct Exact<'a> {
+    task: &'a Task,
+    limits: DesignLimits,
+    rank_by: RankBy,
+    region: &'a PivotRegion,
+    prepared: Prepared,
+    span: f64,
+    /// The search's cancel flag: a clearance test over the travel checks
+    /// it between intervals (one test can take long).
+    cancel: Option<&'a std::sync::atomic::AtomicBool>,
+}
+
+impl<'a> Exact<'a> {
+    fn new(task: &'a Task, options: &'a DesignOptions, control: &Control<'a>) -> Result<Self> {
+        Ok(Exact {
+            cancel: control.cancel_flag(),
+            task,
+            limits: options.limits,
+            rank_by: options.rank_by,
+            region: &options.space.pivots,
+            prepared: options.space.constraints().prepare()?,
+            span: task.span(),
+        })
+    }
+
+    /// The verdict on the linkage of two dyads (`None`: no linkage). With
+    /// `all` every limit is checked (a census), else it stops at the first
+    /// failure.
+    fn judge(&self, driving: &Dyad, driven: &Dyad, all: bool) -> Option<Verdict> {
+        let linkage = self.task.four_bar(driving, driven).ok()?;
+        let f = linkage.figures;
+        let size_ratio = linkage.size() / self.span;
+        let mut v = Verdict {
+            linkage,
+            size_ratio,
+            fails: 0,
+            shortfall: 0.0,
+            score: None,
+            raw: None,
+        };
+        let fail = |v: &mut Verdict, limit: Limit, by: f64| {
+            v.fails |= limit.bit();
+            v.shortfall = v.shortfall.max(by);
+        };
+        if !f.branch_free() {
+            fail(&mut v, Limit::BranchDefect, f64::INFINITY);
+        }
+        if f.direction == Direction::None || !f.one_circuit {
+            fail(&mut v, Limit::Order, f64::INFINITY);
+        }
+        if v.fails != 0 && !all {
+            return Some(v);
+        }
+        let lim = &self.limits;
+        let mu = f.min_transmission;
+        if !mu.is_nan() && mu < lim.min_transmission {
+            fail(
+                &mut v,
+                Limit::Transmission,
+                (lim.min_transmission - mu) / lim.min_transmission,
+            );
+        }
+        if f.link_ratio > lim.max_link_ratio {
+            fail(
+                &mut v,
+                Limit::LinkRatio,
+                f.link_ratio / lim.max_link_ratio - 1.0,
+            );
+        }
+        let input_ok = match lim.input {
+            InputRequirement::Any => true,
+            InputRequirement::Crank => f.input_full,
+            InputRequirement::Rocker => !f.input_full,
+        };
+        if !input_ok {
+            fail(&mut v, Limit::Input, 1.0);
+        }
+        if size_ratio > lim.max_size_ratio {
+            fail(
+                &mut v,
+                Limit::SizeRatio,
+                size_ratio / lim.max_size_ratio - 1.0,
+            );
+        }
+        let longest = f.lengths.iter().copied().fold(0.0, f64::max);
+        if longest > lim.max_link_length {
+            fail(
+                &mut v,
+                Limit::LinkLength,
+                longest / lim.max_link_length - 1.0,
+            );
+        }
+        let outside = self
+            .region
+            .distance_outside(driving.center)
+            .max(self.region.distance_outside(driven.center));
+        if !self.region.contains(driving.center) || !self.region.contains(driven.center) {
+            fail(&mut v, Limit::PivotRegion, outside / self.span);
+        }
+        if v.fails != 0 && !all {
+            return Some(v);
+        }
+        // The motion's checks need a feasible motion.
+        if v.motion_feasible() {
+            if !self.prepared.clearance_ok(&v.linkage, self.cancel) {
+                fail(&mut v, Limit::Obstacles, 1.0);
+            }
+            if (v.fails == 0 || all) && !self.prepared.envelope_ok(&v.linkage, self.cancel) {
+                fail(&mut v, Limit::Envelope, 1.0);
+            }
+        }
+        v.raw = self
+            .rank_by
+            .score(f.min_transmission, size_ratio, f.link_ratio);
+        if v.fails == 0 {
+            v.score = v.raw;
+        }
+        Some(v)
+    }
+}
+
+/// The refinement's objective: the negated score of an acceptable
+/// linkage; for one whose motion is feasible but that misses limits, the
+/// negated score's formula plus a penalty of [`PENALTY`] times its
+/// shortfall (relative to the score's size), so the simplex slides along a
+/// limit's boundary instead of stalling at it; [`BARRIER`] for one without
+/// a feasible motion (or no linkage). Keeps the best acceptable verdict
+/// seen: the answer is always acceptable.
+struct Objective<'a, F: Fn(&[f64]) -> Option<Verdict>> {
+    eval: F,
+    control: &'a Control<'a>,
+    evaluations: Cell<usize>,
+    best: RefCell<Option<(f64, Vec<f64>, Verdict)>>,
+}
+
+impl<F: Fn(&[f64]) -> Option<Verdict>> CostFunction for Objective<'_, F> {
+    type Param = Vec<f64>;
+    type Output = f64;
+
+    fn cost(&self, x: &Self::Param) -> core::result::Result<f64, ArgminError> {
+        if self.control.is_cancelled() || !x.iter().all(|v| v.is_finite()) {
+            return Ok(BARRIER);
+        }
+        self.evaluations.set(self.evaluations.get() + 1);
+        let Some(v) = (self.eval)(x) else {
+            return Ok(BARRIER);
+        };
+        if !v.acceptable() {
+            return Ok(match v.raw {
+                Some(raw) if v.motion_feasible() && v.shortfall.is_finite() => {
+                    -raw + PENALTY * (1.0 + raw.abs()) * v.shortfall
+                }
+                _ => BARRIER,
+            });
+        }
+        let cost = -v.score.unwrap_or(f64::NAN);
+        let mut best = self.best.borrow_mut();
+        let better = match &*best {
+            None => true,
+            Some((c, _, b)) => {
+                cost < *c - tolerance::RANK_TIE
+                    || (cost <= *c + tolerance::RANK_TIE && v.size_ratio < b.size_ratio)
+            }
+        };
+        if better {
+            *best = Some((cost, x.clone(), v));
+        }
+        Ok(cost)
+    }
+}
+
+/// The weight of a limit's relative shortfall in the refinement's cost
+/// (per unit of the score's size).
+const PENALTY: f64 = 4.0;
+
+/// Nelder–Mead rounds of a refinement: each restarts from the best point
+/// so far with the initial simplex scaled by its factor (a simplex that
+/// collapsed early, flat along a constraint's boundary, starts afresh),
+/// sharing the iterations.
+const ROUNDS: [f64; 6] = [1.0, 0.5, 0.25, 1.0, 0.125, 0.03125];
+
+/// Nelder–Mead from `x0` with initial steps `h` (one per coordinate), in
+/// the [`ROUNDS`]; the best acceptable verdict and where, and the
+/// evaluations.
+fn refine<F: Fn(&[f64]) -> Option<Verdict>>(
+    eval: F,
+    x0: &[f64],
+    h: &[f64],
+    iterations: usize,
+    control: &Control<'_>,
+) -> (Option<(Vec<f64>, Verdict)>, usize) {
+    let mut objective = Objective {
+        eval,
+        control,
+        evaluations: Cell::new(0),
+        best: RefCell::new(None),
+    };
+    // The start must be acceptable.
+    if objective.cost(&x0.to_vec()).map_or(true, |c| c >= BARRIER) {
+        return (None, objective.evaluations.get());
+    }
+    let per_round = iterations.div_ceil(ROUNDS.len());
+    let mut left = iterations;
+    for scale in ROUNDS {
+        let budget = per_round.min(left);
+        if budget == 0 || control.is_cancelled() {
+            break;
+        }
+        left -= budget;
+        let from = match &*objective.best.borrow() {
+            Some((_, x, _)) => x.clone(),
+            None => x0.to_vec(),
+        };
+        let mut simplex = vec![from.clone()];
+        for (k, hk) in h.iter().enumerate() {
+            let mut v = from.clone();
+            v[k] += hk * scale;
+            simplex.push(v);
+        }
+        // The expansion and shrink adapted to the dimension (Gao and Han,
+        // 2012; their contraction, above argmin's bound of 1/2 for n > 2,
+        // is left at 1/2).
+        let n = h.len() as f64;
+        let solver = NelderMead::new(simplex)
+            .with_sd_tolerance(1e-13)
+            .and_then(|s| s.with_gamma(1.0 + 2.0 / n))
+            .and_then(|s| s.with_sigma(1.0 - 1.0 / n));
+        let Ok(solver) = solver else {
+            unreachable!("the Nelder-Mead parameters are within argmin's bounds")
+        };
+        let run = Executor::new(objective, solver)
+            .configure(|s| s.max_iters(budget as u64))
+            .timer(false)
+            .run();
+        match run.ok().and_then(|mut r| r.problem.take_problem()) {
+            Some(p) => objective = p,
+            None => return (None, 0),
+        }
+    }
+    let evaluations = objective.evaluations.get();
+    let best = objective.best.into_inner().map(|(_, x, v)| (x, v));
+    (best, evaluations)
+}
+
+/// The distance between two designs: the larger of their driving pivots'
+/// and driven pivots' distances.
+fn apart(a: &SynthesizedFourBar, b: &SynthesizedFourBar) -> f64 {
+    (a.driving.center - b.driving.center)
+        .norm()
+        .max((a.driven.center - b.driven.center).norm())
+}
+
+/// A coarse start: where, its pivots, its coarse score and size ratio.
+#[derive(Debug, Clone, Copy)]
+struct Start {
+    point: SearchPoint,
+    driving: Point2<f64>,
+    driven: Point2<f64>,
+    score: f64,
+    size: f64,
+}
+
+/// The starts by score (ties to the smaller size ratio, then in the given
+/// order), at least `sep` apart, at most `n`.
+fn pick_starts(mut cand: Vec<Start>, sep: f64, n: usize) -> Vec<Start> {
+    cand.sort_by(|a, b| {
+        if (a.score - b.score).abs() <= tolerance::RANK_TIE {
+            tie_order((a.size as f32, 0.0), (b.size as f32, 0.0))
+        } else {
+            b.score.total_cmp(&a.score)
+        }
+    });
+    let mut out: Vec<Start> = Vec::new();
+    for c in cand {
+        if out.len() >= n {
+            break;
+        }
+        let far = out.iter().all(|o| {
+            (o.driving - c.driving)
+                .norm()
+                .max((o.driven - c.driven).norm())
+                >= sep
+        });
+        if far {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// The designs, best first (ties to the smaller size), at least `sep`
+/// apart, at most `top`.
+fn rank_designs(mut all: Vec<Design>, sep: f64, top: usize) -> Vec<Design> {
+    all.sort_by(|a, b| {
+        if (a.score - b.score).abs() <= tolerance::RANK_TIE {
+            a.size_ratio.total_cmp(&b.size_ratio)
+        } else {
+            b.score.total_cmp(&a.score)
+        }
+    });
+    let mut out: Vec<Design> = Vec::new();
+    for d in all {
+        if out.len() >= top {
+            break;
+        }
+        if out.iter().all(|o| apart(&o.linkage, &d.linkage) >= sep) {
+            out.push(d);
+        }
+    }
+    out
+}
+
+/// Progress of the whole search in thousandths: the coarse pass the first
+/// 800, the refinements the rest.
+const PROGRESS: usize = 1000;
+const COARSE_SHARE: usize = 800;
+
+impl Task {
+    /// The best linkages for this task inside the options' space under its
+    /// limits, ranked by its score (see the [module
+    /// docs](crate::design::search)), following `control` (progress in
+    /// thousandths of the whole search; cancelling stops the coarse pass
+    /// at its next row and a refinement at its next step).
+    ///
+    /// # Errors
+    ///
+    /// As [`DesignOptions::validate`]; [`Error::Cancelled`];
+    /// [`Error::OutOfMemory`]; for four or five poses the errors of
+    /// [`FourPositions::new`] and [`FivePositions::new`] (poses without a
+    /// crank-rotation parametrisation or Burmester points). An empty answer
+    /// is not an error: see [`DesignReport::rejections`].
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use burmester::{Control, DesignOptions, RankBy, example};
+    /// let task = example::task();
+    /// // Fewer starts than the default, for a quick example.
+    /// let options = DesignOptions { starts: 4, ..DesignOptions::default() };
+    /// let report = task.design(&options, &Control::new())?;
+    /// let best = &report.designs[0];
+    /// assert!(best.linkage.figures.feasible());
+    /// assert!(best.linkage.figures.min_transmission >= report.limits.min_transmission);
+    /// assert_eq!(best.ranked_by, RankBy::Balanced);
+    /// # Ok::<(), burmester::Error>(())
+    /// ```
+    pub fn design(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
+        options.validate(self)?;
+        match self.len() {
+            3 => {
+                let plan = self.plan(options)?;
+                let hook = |d: usize, t: usize| {
+                    control.report(COARSE_SHARE * d / t.max(1), PROGRESS);
+                };
+                let atlas = self.pivot_atlas(
+                    &plan.driven,
+                    &plan.driving,
+                    &options.limits,
+                    &plan.constraints,
+                    options.rank_by,
+                    &control.with_hook(&hook),
+                )?;
+                self.refine_three(options, &plan, &atlas.cells, control)
+            }
+            4 => self.design_four(options, control),
+            _ => self.design_five(options, control),
+        }
+    }
+
+    /// The coarse pass of a three-pose [`design`](Self::design): the
+    /// atlas's grids and constraints, for a caller that computes it
+    /// elsewhere (in tiles, on a cluster) and finishes with
+    /// [`design_from_atlas`](Self::design_from_atlas).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NeedsPoses`] unless the task has three poses; as
+    /// [`DesignOptions::validate`].
+    pub fn design_plan(&self, options: &DesignOptions) -> Result<DesignPlan> {
+        if self.len() != 3 {
+            return Err(self.needs(3, "Task::design_plan"));
+        }
+        options.validate(self)?;
+        self.plan(options)
+    }
+
+    fn plan(&self, options: &DesignOptions) -> Result<DesignPlan> {
+        let search_box = options.space.search_box(self, &options.limits);
+        Ok(DesignPlan {
+            search_box,
+            driven: grid_over(&search_box, options.coarse_driven)?,
+            driving: grid_over(&search_box, options.coarse_driving)?,
+            constraints: options.space.constraints(),
+        })
+    }
+
+    /// A three-pose [`design`](Self::design) from its coarse pass computed
+    /// elsewhere: `cells` are the atlas cells of
+    /// [`design_plan`](Self::design_plan)'s grids (row-major over its
+    /// driven grid), as [`Task::pivot_atlas`] gives them with the plan's
+    /// constraints, the options' limits and ranking. The same cells give
+    /// the same report, bit for bit.
+    ///
+    /// # Errors
+    ///
+    /// As [`design_plan`](Self::design_plan);
+    /// [`InvalidInput::LengthMismatch`] for cells of another count than the
+    /// plan's driven grid; [`Error::Cancelled`].
+    pub fn design_from_atlas(
+        &self,
+        options: &DesignOptions,
+        cells: &[AtlasCell],
+        control: &Control<'_>,
+    ) -> Result<DesignReport> {
+        let plan = self.design_plan(options)?;
+        if cells.len() != plan.driven.len() {
+            return Err(InvalidInput::LengthMismatch {
+                name: "atlas cells",
+                expected: plan.driven.len(),
+                found: cells.len(),
+            }
+            .into());
+        }
+        self.refine_three(options, &plan, cells, control)
+    }
+
+    /// The empty report of `options`, to fill.
+    fn report(&self, options: &DesignOptions, search_box: Option<Viewport>) -> DesignReport {
+        DesignReport {
+            designs: Vec::new(),
+            limits: options.limits,
+            space: options.space.clone(),
+            rank_by: options.rank_by,
+            min_separation: options.separation(self),
+            search_box,
+            coarse_candidates: 0,
+            coarse_acceptable: 0,
+            evaluations: 0,
+            rejections: Vec::new(),
+            census: 0,
+            near_misses: Vec::new(),
+        }
+    }
+
+    /// Refines the starts of three poses' coarse cells.
+    fn refine_three(
+        &self,
+        options: &DesignOptions,
+        plan: &DesignPlan,
+        cells: &[AtlasCell],
+        control: &Control<'_>,
+    ) -> Result<DesignReport> {
+        let exact = Exact::new(self, options, control)?;
+        let sep = options.separation(self);
+        let region = &options.space.pivots;
+        let mut report = self.report(options, Some(plan.search_box));
+        report.coarse_candidates = plan.driven.len() * plan.driving.len();
+        report.coarse_acceptable = cells.iter().map(|c| c.count as usize).sum();
+        let nx = plan.driven.nx();
+        let cand: Vec<Start> = cells
+            .iter()
+            .enumerate()
+            .filter_map(|(k, c)| {
+                let b = c.best?;
+                let driven = plan.driven.point(k % nx, k / nx);
+                region.contains(driven).then_some(Start {
+                    point: SearchPoint::Pivots {
+                        driving: b.driving,
+                        driven,
+                    },
+                    driving: b.driving,
+                    driven,
+                    score: b.score,
+                    size: f64::from(b.size_ratio),
+                })
+            })
+            .collect();
+        let starts = pick_starts(cand, sep, options.starts);
+        let h = [
+            plan.driving.dx(),
+            plan.driving.dy(),
+            plan.driven.dx(),
+            plan.driven.dy(),
+        ];
+        let eval = |x: &[f64]| {
+            let a = self.dyad_from_center(Point2::new(x[0], x[1])).ok()?;
+            let c = self.dyad_from_center(Point2::new(x[2], x[3])).ok()?;
+            exact.judge(&a, &c, false)
+        };
+        let refined = self.refine_starts(
+            &starts,
+            &h,
+            options,
+            control,
+            |s| {
+                let SearchPoint::Pivots { driving, driven } = s.point else {
+                    return None;
+                };
+                Some(vec![driving.x, driving.y, driven.x, driven.y])
+            },
+            &eval,
+            |x| SearchPoint::Pivots {
+                driving: Point2::new(x[0], x[1]),
+                driven: Point2::new(x[2], x[3]),
+            },
+        )?;
+        report.evaluations = refined.iter().map(|d| d.evaluations).sum();
+        report.designs = rank_designs(refined, sep, options.top);
+        if report.designs.is_empty() {
+            self.census_three(&exact, options, plan, &mut report, control)?;
+        }
+        control.report(PROGRESS, PROGRESS);
+        Ok(report)
+    }
+
+    /// Refines every start (in parallel), each from `x0(start)` with steps
+    /// `h`, judging points by `eval` and naming them by `at`.
+    #[allow(clippy::too_many_arguments)]
+    fn refine_starts(
+        &self,
+        starts: &[Start],
+        h: &[f64],
+        options: &DesignOptions,
+        control: &Control<'_>,
+        x0: impl Fn(&Start) -> Option<Vec<f64>> + Sync,
+        eval: &(dyn Fn(&[f64]) -> Option<Verdict> + Sync),
+        at: impl Fn(&[f64]) -> SearchPoint + Sync,
+    ) -> Result<Vec<Design>> {
+        let done = AtomicUsize::new(0);
+        let n = starts.len().max(1);
+        let out: Vec<Option<Design>> = starts
+            .par_iter()
+            .map(|s| {
+                let x = x0(s)?;
+                let (best, evaluations) = refine(eval, &x, h, options.max_iterations, control);
+                let d = done.fetch_add(1, Ordering::Relaxed) + 1;
+                control.report(COARSE_SHARE + (PROGRESS - COARSE_SHARE) * d / n, PROGRESS);
+                let (xb, v) = best?;
+                Some(Design {
+                    linkage: v.linkage,
+                    score: v.score?,
+                    size_ratio: v.size_ratio,
+                    ranked_by: options.rank_by,
+                    coarse: s.point,
+                    refined: at(&xb),
+                    coarse_score: s.score,
+                    evaluations,
+                })
+            })
+            .collect();
+        if control.is_cancelled() {
+            return Err(Error::Cancelled {
+                done: done.into_inner(),
+                total: starts.len(),
+            });
+        }
+        Ok(out.into_iter().flatten().collect())
+    }
+
+    /// The census of a three-pose search that found nothing: every coarse
+    /// driven pivot with a grid of driving pivots, judged on every limit.
+    fn census_three(
+        &self,
+        exact: &Exact<'_>,
+        options: &DesignOptions,
+        plan: &DesignPlan,
+        report: &mut DesignReport,
+        control: &Control<'_>,
+    ) -> Result<()> {
+        let driving = grid_over(&plan.search_box, CENSUS_DRIVING)?;
+        let dyads: Vec<Option<Dyad>> = (0..driving.len())
+            .map(|k| {
+                self.dyad_from_center(driving.point(k % driving.nx(), k / driving.nx()))
+                    .ok()
+            })
+            .collect();
+        let driven: Vec<Option<Dyad>> = (0..plan.driven.len())
+            .map(|k| {
+                let nx = plan.driven.nx();
+                self.dyad_from_center(plan.driven.point(k % nx, k / nx))
+                    .ok()
+            })
+            .collect();
+        let pairs: Vec<(Dyad, Dyad)> = driven
+            .iter()
+            .flatten()
+            .flat_map(|c| dyads.iter().flatten().map(move |a| (*a, *c)))
+            .collect();
+        self.census(exact, options, &pairs, report, control)
+    }
+
+    /// Judges every pair on every limit into the report's rejections and
+    /// near misses.
+    fn census(
+        &self,
+        exact: &Exact<'_>,
+        options: &DesignOptions,
+        pairs: &[(Dyad, Dyad)],
+        report: &mut DesignReport,
+        control: &Control<'_>,
+    ) -> Result<()> {
+        const CHUNK: usize = 256;
+        let results: Vec<(Vec<usize>, usize, Vec<Verdict>)> = pairs
+            .par_chunks(CHUNK)
+            .map(|chunk| {
+                let mut counts = vec![0usize; Limit::ALL.len()];
+                let mut judged = 0;
+                let mut misses = Vec::new();
+                if control.is_cancelled() {
+                    return (counts, judged, misses);
+                }
+                for (a, c) in chunk {
+                    let Some(v) = exact.judge(a, c, true) else {
+                        continue;
+                    };
+                    judged += 1;
+                    for (k, l) in Limit::ALL.iter().enumerate() {
+                        if v.fails & l.bit() != 0 {
+                            counts[k] += 1;
+                        }
+                    }
+                    if v.motion_feasible() && v.fails != 0 {
+                        misses.push(v);
+                    }
+                }
+                // Keep the chunk's nearest few.
+                misses.sort_by(|a, b| a.shortfall.total_cmp(&b.shortfall));
+                misses.truncate(4 * options.top);
+                (counts, judged, misses)
+            })
+            .collect();
+        if control.is_cancelled() {
+            return Err(Error::Cancelled {
+                done: 0,
+                total: pairs.len(),
+            });
+        }
+        let mut counts = vec![0usize; Limit::ALL.len()];
+        let mut misses = Vec::new();
+        for (c, j, m) in results {
+            for (t, v) in counts.iter_mut().zip(c) {
+                *t += v;
+            }
+            report.census += j;
+            misses.extend(m);
+        }
+        let mut rejections: Vec<(Limit, usize)> = Limit::ALL
+            .iter()
+            .copied()
+            .zip(counts)
+            .filter(|(_, n)| *n > 0)
+            .collect();
+        rejections.sort_by_key(|r| core::cmp::Reverse(r.1));
+        report.rejections = rejections;
+        misses.sort_by(|a, b| {
+            a.shortfall
+                .total_cmp(&b.shortfall)
+                .then(a.size_ratio.total_cmp(&b.size_ratio))
+        });
+        let sep = report.min_separation;
+        let mut near: Vec<NearMiss> = Vec::new();
+        for v in misses {
+            if near.len() >= options.top {
+                break;
+            }
+            if near.iter().all(|o| apart(&o.linkage, &v.linkage) >= sep) {
+                near.push(NearMiss {
+                    linkage: v.linkage,
+                    size_ratio: v.size_ratio,
+                    misses: Limit::ALL
+                        .iter()
+                        .copied()
+                        .filter(|l| v.fails & l.bit() != 0)
+                        .collect(),
+                    shortfall: v.shortfall,
+                });
+            }
+        }
+        report.near_misses = near;
+        Ok(())
+    }
+
+    /// Four poses: the coarse pair map, refined along the curve parameters.
+    fn design_four(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
+        let exact = Exact::new(self, options, control)?;
+        let sep = options.separation(self);
+        let four = FourPositions::new(self.poses())?;
+        let length = four.parameter_length()?;
+        let n = options.coarse_pairs;
+        let hook = |d: usize, t: usize| control.report(COARSE_SHARE * d / t.max(1), PROGRESS);
+        let map = self.pair_map(
+            n,
+            n,
+            &options.limits,
+            &options.space.constraints(),
+            &control.with_hook(&hook),
+        )?;
+        let mut report = self.report(options, None);
+        let c = &map.columns;
+        report.coarse_candidates = c.valid.iter().filter(|v| **v).count();
+        report.coarse_acceptable = c.acceptable.iter().filter(|v| **v).count();
+        let grid = map.context.grid;
+        let cand: Vec<Start> = (0..grid.len())
+            .filter(|&k| c.acceptable[k])
+            .filter_map(|k| {
+                let (a, d) = map.context.dyads(k)?;
+                let score = options.rank_by.score(
+                    f64::from(c.min_transmission_rad[k]),
+                    f64::from(c.size_ratio[k]),
+                    f64::from(c.link_ratio[k]),
+                )?;
+                Some(Start {
+                    point: SearchPoint::Parameters {
+                        driving: grid.x(k % n),
+                        driven: grid.y(k / n),
+                    },
+                    driving: a.center,
+                    driven: d.center,
+                    score,
+                    size: f64::from(c.size_ratio[k]),
+                })
+            })
+            .collect();
+        let starts = pick_starts(cand, sep, options.starts);
+        let step = length / n as f64;
+        let eval = |x: &[f64]| {
+            if !(0.0..=length).contains(&x[0]) || !(0.0..=length).contains(&x[1]) {
+                return None;
+            }
+            let a = four.dyad_at_parameter(x[0]).ok()?;
+            let d = four.dyad_at_parameter(x[1]).ok()?;
+            exact.judge(&a.dyad(), &d.dyad(), false)
+        };
+        let refined = self.refine_starts(
+            &starts,
+            &[step, step],
+            options,
+            control,
+            |s| match s.point {
+                SearchPoint::Parameters { driving, driven } => Some(vec![driving, driven]),
+                _ => None,
+            },
+            &eval,
+            |x| SearchPoint::Parameters {
+                driving: x[0],
+                driven: x[1],
+            },
+        )?;
+        report.evaluations = refined.iter().map(|d| d.evaluations).sum();
+        report.designs = rank_designs(refined, sep, options.top);
+        if report.designs.is_empty() {
+            let m = CENSUS_PAIRS.min(n);
+            let dyads: Vec<Dyad> = four
+                .parameter_samples(m)?
+                .into_iter()
+                .flatten()
+                .map(|d| d.dyad())
+                .collect();
+            let pairs: Vec<(Dyad, Dyad)> = dyads
+                .iter()
+                .enumerate()
+                .flat_map(|(i, a)| {
+                    dyads
+                        .iter()
+                        .enumerate()
+                        .filter(move |(j, _)| *j != i)
+                        .map(move |(_, c)| (*a, *c))
+                })
+                .collect();
+            self.census(&exact, options, &pairs, &mut report, control)?;
+        }
+        control.report(PROGRESS, PROGRESS);
+        Ok(report)
+    }
+
+    /// Five poses: every ordered pair of Burmester points.
+    fn design_five(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
+        let exact = Exact::new(self, options, control)?;
+        let sep = options.separation(self);
+        let five = FivePositions::new(self.poses())?;
+        let points = five.burmester_points();
+        let mut report = self.report(options, None);
+        let mut all = Vec::new();
+        let mut pairs = Vec::new();
+        for (i, a) in points.iter().enumerate() {
+            for (j, c) in points.iter().enumerate() {
+                if i == j {
+                    continue;
+                }
+                if control.is_cancelled() {
+                    return Err(Error::Cancelled {
+                        done: pairs.len(),
+                        total: points.len() * points.len().saturating_sub(1),
+                    });
+                }
+                pairs.push((*a, *c));
+                let Some(v) = exact.judge(a, c, false) else {
+                    continue;
+                };
+                report.coarse_candidates += 1;
+                if let (true, Some(score)) = (v.acceptable(), v.score) {
+                    report.coarse_acceptable += 1;
+                    let at = SearchPoint::Burmester {
+                        driving: i,
+                        driven: j,
+                    };
+                    all.push(Design {
+                        linkage: v.linkage,
+                        score,
+                        size_ratio: v.size_ratio,
+                        ranked_by: options.rank_by,
+                        coarse: at,
+                        refined: at,
+                        coarse_score: score,
+                        evaluations: 1,
+                    });
+                }
+            }
+        }
+        report.evaluations = report.coarse_candidates;
+        report.designs = rank_designs(all, sep, options.top);
+        if report.designs.is_empty() {
+            self.census(&exact, options, &pairs, &mut report, control)?;
+        }
+        control.report(PROGRESS, PROGRESS);
+        Ok(report)
+    }
+}

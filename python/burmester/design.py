@@ -1,0 +1,90 @@
+"""From poses to the best buildable linkage in one call: :func:`design`.
+
+The search itself is the core's (``Task::design``): for three poses a coarse
+pass over both fixed pivots (the pivot-pair atlas, ranked by the chosen
+score) whose best cells are refined continuously on the exact figures (both
+pivots moved together by Nelder-Mead, staying branch-free, in order, inside
+the limits and the space); for four poses the pair map, refined along both
+curve parameters; for five poses every ordered pair of Burmester points.
+This module only adds the Dask route of the three-pose coarse pass: with
+``client=`` the atlas tiles run as Dask tasks (:mod:`burmester.atlas`) and
+the refinement runs here, with the same result as in process, bit for bit.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import Any, Callable, Dict, Optional
+
+from burmester._burmester import (
+    DesignLimits,
+    DesignReport,
+    Space,
+    Task,
+    _atlas_tile,
+    _design,
+    _design_from_atlas,
+    _design_plan,
+)
+
+__all__ = ["design"]
+
+Progress = Callable[[int, int], object]
+
+
+def design(
+    task: Task,
+    *,
+    space: Optional[Space] = None,
+    limits: Optional[DesignLimits] = None,
+    rank_by: str = "balanced",
+    top: int = 5,
+    client: Any = None,
+    progress: Optional[Progress] = None,
+    min_separation: Optional[float] = None,
+    coarse_driven: int = 12,
+    coarse_driving: int = 48,
+    coarse_pairs: int = 120,
+    starts: int = 48,
+    max_iterations: int = 3000,
+    tile_rows: Optional[int] = None,
+) -> DesignReport:
+    """The best linkages for ``task`` (three to five poses) inside ``space``
+    (a :class:`burmester.Space`; default: pivots anywhere, no obstacles)
+    under ``limits`` (a :class:`burmester.DesignLimits`; default: its
+    defaults, which the report carries), ranked by ``rank_by``
+    (``"balanced"``, ``"transmission"`` or ``"compact"``).
+
+    Returns a :class:`burmester.DesignReport`: a sequence of at most ``top``
+    :class:`burmester.Design` records, best first, each a different linkage
+    (its fixed pivots at least ``min_separation`` from a better one's;
+    default a fifth of the task's size). When nothing fits it is empty and
+    says which limit rejected the most candidates (``rejections``) and the
+    nearest misses (``near_misses``); no limit is ever relaxed.
+
+    ``coarse_driven`` and ``coarse_driving`` (three poses) and
+    ``coarse_pairs`` (four) set the coarse pass; ``starts`` of its best
+    cells are refined with ``max_iterations`` Nelder-Mead iterations each.
+    ``progress(done, total)`` follows the search (in thousandths) and
+    Ctrl-C stops it. With ``client`` (a ``dask.distributed.Client``) the
+    three-pose coarse pass runs as Dask tasks of ``tile_rows`` driven rows
+    (``progress`` then counts those rows) and the refinement in this
+    process; four and five poses always run in this process.
+    """
+    kw: Dict[str, Any] = dict(space=space, limits=limits, rank_by=rank_by, top=top, min_separation=min_separation,
+              coarse_driven=coarse_driven, coarse_driving=coarse_driving, coarse_pairs=coarse_pairs,
+              starts=starts, max_iterations=max_iterations)
+    if client is None or len(task) != 3:
+        return _design(task, progress=progress, **kw)
+    from burmester.atlas import _DASK_MISSING, _on_dask
+
+    try:
+        importlib.import_module("distributed")
+    except ImportError:
+        raise ImportError(_DASK_MISSING) from None
+    # Validates everything here, with in-process errors, before any task.
+    plan = _design_plan(task, **kw)
+    driven, driving, opts = plan["driven"], plan["driving"], dict(plan["atlas"])
+    _atlas_tile(task, driven, 0, 0, driving, **opts)
+    arrays = _on_dask(client, task, driven, driving, opts, progress, tile_rows)
+    return _design_from_atlas(task, arrays, **kw)
