@@ -743,18 +743,31 @@ class Task:
         Filemon's construction with four lines, the arc ends exact (each line
         meets the circle-point curve in the roots of one quadratic).
         ``plane="circle"``: the same driving dyads' circle points, pieces of
-        the circle-point curve."""
+        the circle-point curve. The arc ends and ``C0`` (never free) are
+        vertices of the traced curve, so the arcs are the same in every view:
+        those of a smaller view are those of a larger one, clipped."""
     def curve_branch(self, driven_center: Point, center: Point) -> BranchClass:
         """Four poses only: the branch class of the driving dyad of
         ``center`` (on the curve) with the driven dyad of ``driven_center``:
         ``"free"`` (one assembly mode at the four poses), ``"defective"``, or
         ``"boundary"`` (a toggle at a pose)."""
     def burmester_points(self) -> list[Tuple[Point, Point]]:
-        """Five poses only: the Burmester points as dyads ``(center, circle)``
-        (none, two or four; nearest the task first): the circle point's five
-        positions are concyclic about the center to about 1e-14. Raises
-        :class:`DegenerateError` when four poses are rotations about one point
-        or all poses have one angle."""
+        """Five poses only: the Burmester points with a finite center, as
+        dyads ``(center, circle)`` (nearest the task first): the circle
+        point's five positions are concyclic about the center to about 1e-14.
+        Two, four or none; a double point (two points that merge, or a pair
+        of complex ones, within the rounding of the elimination) is listed
+        twice, as two equal dyads. A Burmester point at infinity (a slider: a
+        circle point whose five positions are collinear, as the reference
+        point of poses with collinear positions) is not listed, so such tasks
+        have one or three. The count does not depend on the frame the poses
+        are given in. Raises :class:`DegenerateError` when the points are not
+        isolated: four poses rotations about one point (``cause``
+        ``"coincident_poles"``), three (``"rotations_about_one_point"``, with
+        the poses ``i``, ``j``, ``k``), three of one angle on a line
+        (``"collinear_translations"``), or a common component of the curves
+        (``"infinitely_many_burmester_points"``, for example Cardan motion);
+        or when all poses have one angle."""
     def burmester_curves(self) -> Tuple[Cubic, Cubic]:
         """Five poses only: the center-point curves of poses 1, 2, 3, 4 and
         1, 2, 3, 5; the Burmester centers are their common points other than

@@ -1561,7 +1561,8 @@ fn an_arc_end_from_a_far_circle_point_lies_on_the_curve() {
 
 /// Found by a proptest at 6000 cases: a sample of the compatibility
 /// linkage (a dyad to 1e-8 by its spread) 5.4 times the curve tolerance off
-/// the center-point cubic by first-order distance.
+/// the center-point cubic by first-order distance (no longer given: see the
+/// last assertion).
 #[test]
 fn a_compatibility_sample_is_near_the_cubic() {
     let poses = [
@@ -1583,10 +1584,11 @@ fn a_compatibility_sample_is_near_the_cubic() {
             n += 1;
         }
     }
-    assert!(
-        n > 1000 && worst > 1.0 && worst < 10.0,
-        "{n} samples, worst {worst}"
-    );
+    // Since `dyad_at` gives only dyads that the on-curve test takes back
+    // (issue 24), the samples that were up to 5.4 tolerances off by the
+    // first-order distance are not given: every sample is now within the
+    // tolerance by that distance alone (it was `1 < worst < 10`).
+    assert!(n > 1000 && worst <= 1.0, "{n} samples, worst {worst}");
 }
 
 /// Found by a proptest at 6000 cases: a linkage close to a kite (ground
@@ -1677,4 +1679,1467 @@ fn a_far_burmester_point_moves_with_the_task() {
         }
     }
     assert_eq!(far, 1);
+}
+
+// ---------------------------------------------------------------------------
+// Issue 24: the branch-free arcs in any view (item 1), the library's own
+// points on its curves (item 4), the Burmester points near merging and of
+// degenerate tasks (items 2 and 3).
+// ---------------------------------------------------------------------------
+
+/// The poses of issue 24, item 1.
+fn issue24_arc_poses() -> Vec<Pose> {
+    [
+        (0.3870923432120442, -2.0070733230239854, -0.9799744195923201),
+        (1.5137605007600652, -2.3672949991117136, -1.0598686177589811),
+        (0.7569053408785356, -1.3360742238078, -1.2807591739581474),
+        (0.573766942241772, -1.346572992188627, -1.2235828399262854),
+    ]
+    .iter()
+    .map(|&(x, y, a)| Pose::new(x, y, a))
+    .collect()
+}
+
+/// Where `p` lies on the polylines: the line, the segment and the distance
+/// of the nearest segment.
+fn locate(lines: &[Vec<Point2<f64>>], p: Point2<f64>) -> Option<(usize, usize, f64)> {
+    let mut best: Option<(usize, usize, f64)> = None;
+    for (li, l) in lines.iter().enumerate() {
+        for (i, w) in l.windows(2).enumerate() {
+            let d = seg_dist(p, w[0], w[1]);
+            if best.is_none_or(|b| d < b.2) {
+                best = Some((li, i, d));
+            }
+        }
+    }
+    best
+}
+
+/// The branch-free arcs of `fa` in `view` (the circle-point plane or the
+/// center-point plane) against the curve traced 50 times finer and
+/// classified point by point (`curve_branch`): every point of the fine
+/// trace between two consecutive vertices of an arc is free, and every free
+/// point of the fine trace lies on an arc (away from the exact arc ends and
+/// `C0`/`C1`, within a millionth of the view of which the class is
+/// rounding). Returns the number of fine points checked.
+fn check_free_arcs_dense(
+    four: &FourPositions,
+    fa: &FilemonArcs,
+    view: &Viewport,
+    circle: bool,
+) -> Result<usize, TestCaseError> {
+    let (arcs, curve) = if circle {
+        (fa.free_circle_arcs(view), four.circle_point_curve())
+    } else {
+        (fa.free_center_arcs(view), four.center_point_curve())
+    };
+    let class = |p: Point2<f64>| -> Option<Branch> {
+        if circle {
+            Some(fa.classify_circle_point(p))
+        } else {
+            fa.classify_center_point(p).ok()
+        }
+    };
+    let mut marks: Vec<Point2<f64>> = fa
+        .arc_ends()
+        .iter()
+        .filter_map(|e| if circle { Some(e.circle) } else { e.center })
+        .collect();
+    let driven = fa.driven();
+    marks.push(if circle { driven.circle } else { driven.center });
+    let diag = (view.xmax - view.xmin).hypot(view.ymax - view.ymin);
+    let near_mark = |p: Point2<f64>| marks.iter().any(|m| (m - p).norm() <= 1e-6 * diag);
+    let fine = curve.trace(view, Some(2e-5 * diag)).polylines();
+    // Between two vertices of an arc: free.
+    for arc in &arcs {
+        for w in arc.windows(2) {
+            let (Some((la, sa, da)), Some((lb, sb, db))) =
+                (locate(&fine, w[0]), locate(&fine, w[1]))
+            else {
+                continue;
+            };
+            if la != lb || da > 1e-6 * diag || db > 1e-6 * diag {
+                continue;
+            }
+            let line = &fine[la];
+            let (lo, hi) = (sa.min(sb), sa.max(sb));
+            // The shorter way round a closed line.
+            let closed = line[0] == line[line.len() - 1];
+            let idx: Vec<usize> = if closed && 2 * (hi - lo) > line.len() {
+                (hi + 1..line.len()).chain(0..=lo).collect()
+            } else {
+                (lo + 1..=hi).collect()
+            };
+            for i in idx {
+                let p = line[i];
+                if near_mark(p) {
+                    continue;
+                }
+                let c = class(p);
+                prop_assert!(
+                    c == Some(Branch::Free) || c.is_none(),
+                    "the chord {} - {} of an arc passes {} ({:?}) in view {:?}",
+                    w[0],
+                    w[1],
+                    p,
+                    c,
+                    view
+                );
+            }
+        }
+    }
+    // Every free point on an arc.
+    let mut n = 0;
+    for p in fine.iter().flatten() {
+        if near_mark(*p) {
+            continue;
+        }
+        n += 1;
+        if class(*p) == Some(Branch::Free) {
+            let d = poly_dist(&arcs, *p);
+            prop_assert!(
+                d <= 2e-3 * diag,
+                "free point {} is {} from every arc in view {:?}",
+                p,
+                d,
+                view
+            );
+        }
+    }
+    Ok(n)
+}
+
+/// Driving dyads at vertices of the center-point arcs (and at fine points
+/// off them) against the built linkage: free on an arc, defective off.
+fn check_free_arcs_by_driving(
+    four: &FourPositions,
+    fa: &FilemonArcs,
+    view: &Viewport,
+) -> Result<(), TestCaseError> {
+    let driven = fa.driven();
+    let s = four.size();
+    let arcs = fa.free_center_arcs(view);
+    let fine = four.center_point_curve().polylines(view);
+    let diag = (view.xmax - view.xmin).hypot(view.ymax - view.ymin);
+    for p in fine.iter().flatten().step_by(5) {
+        if (p - driven.center).norm() < 1e-3 * s || p.coords.norm() > 1e3 * s {
+            continue;
+        }
+        let Ok(a) = four.dyad_from_center(*p) else {
+            continue;
+        };
+        if (a.circle - driven.circle).norm() < 1e-3 * s {
+            continue;
+        }
+        let Ok(drive) = four.drive(&a, &driven) else {
+            continue;
+        };
+        if drive.modes.iter().any(|m| m.is_none()) {
+            continue;
+        }
+        let on_arc = poly_dist(&arcs, *p) <= 1e-9 * diag;
+        if on_arc {
+            prop_assert!(
+                drive.is_branch_free(),
+                "{} is on an arc: {:?}",
+                p,
+                drive.modes
+            );
+        } else if !drive.is_branch_free() {
+            prop_assert!(fa.classify_center_point(*p).unwrap() != Branch::Free);
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn issue24_free_arcs_next_to_c0_are_the_same_in_every_view() {
+    let poses = issue24_arc_poses();
+    let four = FourPositions::new(&poses).unwrap();
+    let c0 = Point2::new(3.832759076400307, -0.5455110379995003);
+    let driven = four.dyad_from_center(c0).unwrap();
+    let fa = four.filemon(&driven).unwrap();
+    let big = Viewport::new(-15.84, 17.46, -18.42, 14.89).unwrap();
+    let small = Viewport::new(c0.x - 0.6, c0.x + 0.6, c0.y - 0.6, c0.y + 0.6).unwrap();
+    // The defective stretch from C0 to the arc end near (3.46561, -0.49479):
+    // the curve's point near (3.612795, -0.522647) is defective, and on no
+    // arc of either view.
+    let target = Point2::new(3.612795, -0.522647);
+    let curve = four.center_point_curve();
+    let m = curve
+        .intersect_line(&burmester::Line {
+            point: target,
+            direction: curve.gradient(target),
+        })
+        .into_iter()
+        .min_by(|a, b| (a - target).norm().total_cmp(&(b - target).norm()))
+        .unwrap();
+    assert!((m - target).norm() < 1e-6);
+    assert_eq!(fa.classify_center_point(m).unwrap(), Branch::Defective);
+    let a = four.dyad_from_center(m).unwrap();
+    assert!(!four.drive(&a, &driven).unwrap().is_branch_free());
+    for view in [&big, &small] {
+        let arcs = fa.free_center_arcs(view);
+        assert!(!arcs.is_empty());
+        assert!(poly_dist(&arcs, m) > 1e-3, "{view:?}");
+        // The arc next to C0 starts at the arc end, in both views.
+        let end = arcs
+            .iter()
+            .flat_map(|a| [a[0], a[a.len() - 1]])
+            .min_by(|a, b| (a - c0).norm().total_cmp(&(b - c0).norm()))
+            .unwrap();
+        assert!(
+            (end - Point2::new(3.46561, -0.49479)).norm() < 1e-4,
+            "{end} in {view:?}"
+        );
+        check_free_arcs_dense(&four, &fa, view, false).unwrap();
+        check_free_arcs_dense(&four, &fa, view, true).unwrap();
+        check_free_arcs_by_driving(&four, &fa, view).unwrap();
+    }
+}
+
+/// The driven center of random tasks and views: `t` picks a driven dyad
+/// on the curve, `view` a viewport (its center in task sizes from the
+/// centroid and its half-width in task sizes, or around `C0`).
+fn check_arcs_in_views(
+    poses: &[Pose],
+    pick: usize,
+    views: &[(f64, f64, f64, bool)],
+) -> Result<(), TestCaseError> {
+    let Ok(four) = FourPositions::new(poses) else {
+        return Ok(());
+    };
+    let Ok(runs) = four.dyad_runs(100) else {
+        return Ok(());
+    };
+    let all: Vec<_> = runs.iter().flatten().collect();
+    if all.is_empty() {
+        return Ok(());
+    }
+    let driven = all[pick % all.len()].dyad();
+    let s = four.size();
+    if !(driven.length() > 1e-2 * s && driven.length() < 1e3 * s) {
+        return Ok(());
+    }
+    let Ok(fa) = four.filemon(&driven) else {
+        return Ok(());
+    };
+    let c = centroid(four.poses());
+    for &(x, y, h, at_c0) in views {
+        let center = if at_c0 {
+            driven.center + Vector2::new(x, y) * (0.1 * h * s)
+        } else {
+            c + Vector2::new(x, y) * s
+        };
+        let r = h * s;
+        let view = Viewport::new(center.x - r, center.x + r, center.y - r, center.y + r).unwrap();
+        check_free_arcs_dense(&four, &fa, &view, false)?;
+        check_free_arcs_dense(&four, &fa, &view, true)?;
+        check_free_arcs_by_driving(&four, &fa, &view)?;
+    }
+    Ok(())
+}
+
+fn views() -> impl Strategy<Value = Vec<(f64, f64, f64, bool)>> {
+    prop::collection::vec(
+        (
+            -3.0f64..3.0,
+            -3.0f64..3.0,
+            prop_oneof![0.05f64..0.5, 0.5f64..8.0],
+            any::<bool>(),
+        ),
+        2,
+    )
+}
+
+proptest! {
+    #![proptest_config(cases(24))]
+
+    /// Item 1's target: the arcs against `curve_branch` on a fine trace
+    /// and against the built linkage, in views of any size and place
+    /// (around `C0` too).
+    #[test]
+    fn issue24_free_arcs_match_curve_branch_in_any_view(
+        p in link_params(), pick in 0usize..1000, v in views(), t in similarity(),
+    ) {
+        let m = made(&p, 4, 0.05);
+        prop_assume!(m.is_some());
+        let m = m.unwrap();
+        let moved: Vec<Pose> = m.poses.iter().map(|q| t.pose(q)).collect();
+        check_arcs_in_views(&moved, pick, &v)?;
+    }
+
+    #[test]
+    fn issue24_free_arcs_of_random_tasks_match_curve_branch(
+        poses in random_poses(4), pick in 0usize..1000, v in views(),
+    ) {
+        prop_assume!(rotations_at_least(&poses, 0.1));
+        check_arcs_in_views(&poses, pick, &v)?;
+    }
+}
+
+/// The poses of issue 24, item 4, moved by `(dx, dy)`.
+fn issue24_near_poses(dx: f64, dy: f64) -> Vec<Pose> {
+    [
+        (-0.701010693048561, 4.993010936525712, -1.3224198951516195),
+        (-1.2501494308566816, 4.943533773269543, -1.2288929794391865),
+        (-1.7983933700082968, 4.823460975776655, -1.1353740707007742),
+        (-2.3357200981193205, 4.631763723094262, -1.041618308198372),
+    ]
+    .iter()
+    .map(|&(x, y, a)| Pose::new(x + dx, y + dy, a))
+    .collect()
+}
+
+/// Every dyad the library puts on the curves is accepted back: the
+/// crank-rotation samples and parameter samples (the pair map's), the
+/// traced vertices of both curves, the poles and the arc ends. Returns how
+/// many points were checked.
+fn check_own_points(four: &FourPositions, n: usize) -> Result<usize, TestCaseError> {
+    let mut count = 0;
+    let mut dyads = Vec::new();
+    if let Ok(runs) = four.dyad_runs(n) {
+        dyads.extend(runs.into_iter().flatten());
+    }
+    if let Ok(samples) = four.parameter_samples(n) {
+        dyads.extend(samples.into_iter().flatten());
+    }
+    for d in &dyads {
+        count += 1;
+        let z = four.circle_point(d.center);
+        prop_assert!(
+            z.is_ok() || matches!(z, Err(Error::Degenerate(_))),
+            "center {} refused: {:?}",
+            d.center,
+            z
+        );
+        prop_assert!(four.curve_dyad(d.center).is_ok() || z.is_err());
+        let g = four.center_point(d.circle);
+        prop_assert!(
+            g.is_ok() || matches!(g, Err(Error::Degenerate(_))),
+            "circle point {} refused: {:?}",
+            d.circle,
+            g
+        );
+    }
+    let view = view_around(four, 4.0);
+    for g in four
+        .center_point_curve()
+        .polylines(&view)
+        .into_iter()
+        .flatten()
+    {
+        count += 1;
+        let z = four.circle_point(g);
+        prop_assert!(!matches!(z, Err(Error::InvalidInput(_))), "{}: {:?}", g, z);
+    }
+    for c in four
+        .circle_point_curve()
+        .polylines(&view)
+        .into_iter()
+        .flatten()
+    {
+        count += 1;
+        let g = four.center_point(c);
+        prop_assert!(!matches!(g, Err(Error::InvalidInput(_))), "{}: {:?}", c, g);
+    }
+    for p in four.poles().iter().filter_map(|p| p.point) {
+        count += 1;
+        let z = four.circle_point(p);
+        prop_assert!(
+            !matches!(z, Err(Error::InvalidInput(_))),
+            "pole {}: {:?}",
+            p,
+            z
+        );
+    }
+    for d in dyads.iter().step_by(dyads.len().max(8) / 8) {
+        if let Ok(fa) = four.filemon(&d.dyad()) {
+            for e in fa.arc_ends() {
+                count += 1;
+                let g = four.center_point(e.circle);
+                prop_assert!(
+                    !matches!(g, Err(Error::InvalidInput(_))),
+                    "{:?}: {:?}",
+                    e,
+                    g
+                );
+            }
+        }
+    }
+    Ok(count)
+}
+
+#[test]
+fn issue24_the_library_accepts_its_own_dyads_in_every_frame() {
+    for (dx, dy) in [(0.0, 0.0), (0.0, 1.0), (1e3, -1e3), (0.5, 0.25)] {
+        let four = FourPositions::new(&issue24_near_poses(dx, dy)).unwrap();
+        let runs = four.dyad_runs(200).unwrap();
+        let dyads: Vec<_> = runs.iter().flatten().collect();
+        assert_eq!(dyads.len(), 404);
+        for d in &dyads {
+            four.circle_point(d.center).unwrap();
+            four.curve_dyad(d.center).unwrap();
+            four.center_point(d.circle).unwrap();
+            let fa = four.filemon(&d.dyad());
+            assert!(!matches!(
+                fa,
+                Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
+            ));
+        }
+        // Pairs of them build (the drive of `four_bar`).
+        for w in dyads.windows(2).step_by(13) {
+            let r = four.drive(&w[0].dyad(), &w[1].dyad());
+            assert!(!matches!(
+                r,
+                Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
+            ));
+        }
+        check_own_points(&four, 200).unwrap();
+    }
+    // The on-curve test moves with the task: a point accepted in one frame
+    // is accepted moved, turned, scaled and mirrored.
+    let four = FourPositions::new(&issue24_near_poses(0.0, 0.0)).unwrap();
+    let dyads: Vec<_> = four.dyad_runs(200).unwrap().into_iter().flatten().collect();
+    for t in [
+        Similarity::new(1.0, 0.0, Vector2::new(0.0, 1.0)).unwrap(),
+        Similarity::new(1e3, 1.0, Vector2::new(-3.0, 7.0)).unwrap(),
+        Similarity::new(1e-3, -2.0, Vector2::new(0.1, 0.0))
+            .unwrap()
+            .mirrored(),
+    ] {
+        let moved: Vec<Pose> = four.poses().iter().map(|q| t.pose(q)).collect();
+        let f2 = FourPositions::new(&moved).unwrap();
+        for d in &dyads {
+            f2.circle_point(t.point(d.center)).unwrap();
+        }
+    }
+}
+
+/// Four poses that are nearly rotations about one point (the issue's
+/// case: the coefficients of the curves cancel to a thousandth of their
+/// terms and the curve has a nearly singular point): rotations about a
+/// random center by random small or large steps, each pose then moved by
+/// a random fraction (down to `1e-4`) of the task.
+fn near_rotations() -> impl Strategy<Value = Vec<Pose>> {
+    (
+        (-5.0f64..5.0, -5.0f64..5.0),
+        0.5f64..6.0,
+        -PI..PI,
+        prop::array::uniform3(prop_oneof![0.02f64..0.2, -0.2f64..-0.02, 0.2f64..2.0]),
+        prop::array::uniform4((-1.0f64..1.0, -1.0f64..1.0)),
+        -4.0f64..-1.0,
+    )
+        .prop_map(|(c, r, a0, steps, jitter, e)| {
+            let mut a = a0;
+            let mut out = Vec::new();
+            for k in 0..4 {
+                if k > 0 {
+                    a += steps[k - 1];
+                }
+                let j = 10f64.powf(e) * r;
+                let p = Point2::new(
+                    c.0 + r * a.cos() + j * jitter[k].0,
+                    c.1 + r * a.sin() + j * jitter[k].1,
+                );
+                out.push(Pose::new(p.x, p.y, a - 1.0));
+            }
+            out
+        })
+}
+
+proptest! {
+    #![proptest_config(cases(48))]
+
+    /// Item 4's target: every point the library computes on the curves is
+    /// accepted back by them, for tasks of nearly equal rotations (curves
+    /// with nearly singular points, coefficients that cancel) moved,
+    /// turned, scaled and mirrored anywhere.
+    #[test]
+    fn issue24_own_points_are_on_the_curves_in_any_frame(
+        poses in prop_oneof![near_rotations(), random_poses(4)],
+        t in similarity(),
+    ) {
+        let moved: Vec<Pose> = poses.iter().map(|q| t.pose(q)).collect();
+        let Ok(four) = FourPositions::new(&moved) else { return Ok(()); };
+        check_own_points(&four, 60)?;
+    }
+}
+
+/// The poses of issue 24, item 2: two real Burmester points and a pair of
+/// complex ones with an imaginary part of 2.3e-6 (mpmath reference,
+/// `tests/python/burmester_reference.py`).
+fn issue24_merging_poses(x5: f64) -> Vec<Pose> {
+    [
+        (-1.2496027059316173, 0.7130452692752762, -0.6572924231027988),
+        (0.27468559919591734, 0.7224592815050642, -3.019408291601917),
+        (-2.318244562336992, 2.2813029947864187, -1.6503688624061708),
+        (
+            -1.7723011037557788,
+            3.7378394481945625,
+            -0.11145257321306046,
+        ),
+        (x5, -0.03637049136529685, 1.09643912732506),
+    ]
+    .iter()
+    .map(|&(x, y, a)| Pose::new(x, y, a))
+    .collect()
+}
+
+/// Five poses in the frame of `t`.
+fn moved(poses: &[Pose], t: &Similarity) -> Vec<Pose> {
+    poses.iter().map(|q| t.pose(q)).collect()
+}
+
+/// Some frames: as given, moved, turned, scaled, mirrored.
+fn frames() -> Vec<Similarity> {
+    vec![
+        Similarity::new(1.0, 0.0, Vector2::zeros()).unwrap(),
+        Similarity::new(1.0, 0.0, Vector2::new(0.0, 1.0)).unwrap(),
+        Similarity::new(3.0, 0.0, Vector2::zeros()).unwrap(),
+        Similarity::new(1.0, 1.0, Vector2::new(0.3, -0.2)).unwrap(),
+        Similarity::new(1e-3, -2.5, Vector2::new(7.0, 5.0)).unwrap(),
+        Similarity::new(1e3, 0.7, Vector2::new(-4e3, 1e2))
+            .unwrap()
+            .mirrored(),
+        Similarity::new(1.0, 0.0, Vector2::new(1e6, -1e6)).unwrap(),
+    ]
+}
+
+/// The count with multiplicity: finite points and sliders.
+fn total(five: &FivePositions) -> usize {
+    five.burmester_points().len() + five.sliders().len()
+}
+
+#[test]
+fn issue24_nearly_merging_burmester_points_count_two_or_four() {
+    let want = [
+        Point2::new(2.1845468030272426, 3.9286531345231968),
+        Point2::new(9.309375812216743, 7.340419877156631),
+    ];
+    for t in frames() {
+        // A complex pair 2.3e-6 off the real plane: two points, in every frame.
+        let five =
+            FivePositions::new(&moved(&issue24_merging_poses(1.4085852732973474), &t)).unwrap();
+        let pts = five.burmester_points();
+        assert_eq!(pts.len(), 2, "{pts:?} in {t:?}");
+        assert!(five.sliders().is_empty());
+        for w in want {
+            let w = t.point(w);
+            assert!(
+                pts.iter()
+                    .any(|d| (d.center - w).norm() <= 1e-8 * (five.size() + w.coords.norm())),
+                "{w} not in {pts:?}"
+            );
+        }
+        // A hair away (pose 5 moved by 1.76e-10): the pair is real, 1.1e-8 to
+        // 6.4e-8 apart: four points, the near two within 1e-7 of where they
+        // merge (each listed, or one double point listed twice).
+        let mut x5 = 1.4085852731213095f64;
+        for _ in 0..14 {
+            let five = FivePositions::new(&moved(&issue24_merging_poses(x5), &t)).unwrap();
+            let pts = five.burmester_points();
+            assert_eq!(pts.len(), 4, "x5 = {x5:?}: {pts:?} in {t:?}");
+            let merge = t.point(Point2::new(-0.3808193887, 1.748174366));
+            let near = pts
+                .iter()
+                .filter(|d| (d.center - merge).norm() <= 1e-7 * (five.size() + merge.coords.norm()))
+                .count();
+            assert_eq!(near, 2, "x5 = {x5:?}: {pts:?}");
+            x5 = x5.next_up();
+        }
+    }
+}
+
+#[test]
+fn issue24_degenerate_five_pose_tasks_say_so_in_every_frame() {
+    let task = |p: &[(f64, f64, f64)]| -> Vec<Pose> {
+        p.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect()
+    };
+    // Poses 1, 2, 3 are rotations about (0, 0) (and a line of Burmester
+    // centers exists: sympy's Groebner basis).
+    let a = task(&[
+        (0.0, 0.0, 0.0),
+        (0.0, 0.0, 1.0),
+        (0.0, 0.0, 2.0),
+        (0.0, 1.0, 0.0),
+        (0.0, 1.0, 1.0),
+    ]);
+    for t in frames() {
+        let e = FivePositions::new(&moved(&a, &t)).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::Degenerate(DegenerateError::RotationsAboutOnePoint {
+                    i: 1,
+                    j: 2,
+                    k: 3,
+                    ..
+                })
+            ),
+            "{e:?} in {t:?}"
+        );
+        assert!(e.to_string().contains("rotations about one point"));
+    }
+    // Two pure translations and two poses at one position: one real
+    // Burmester point, at (0.4783670579, 49.79082622) (mpmath reference),
+    // and one at infinity (a slider), in every frame; no ghost.
+    let b = task(&[
+        (0.0, 0.0, 2.0),
+        (0.0, 1.0, 1.0),
+        (0.0, 0.0, 0.0),
+        (1.0, 1.0, 1.0),
+        (4.76953125, 0.0, 0.0),
+    ]);
+    for t in frames() {
+        let five = FivePositions::new(&moved(&b, &t)).unwrap();
+        let pts = five.burmester_points();
+        assert_eq!(pts.len(), 1, "{pts:?} in {t:?}");
+        let w = t.point(Point2::new(0.4783670578728627, 49.790826221674784));
+        assert!(
+            (pts[0].center - w).norm() <= 1e-8 * (five.size() + w.coords.norm()),
+            "{pts:?}"
+        );
+        assert_eq!(five.sliders().len(), 1, "{:?}", five.sliders());
+        check_slider(&five, &moved(&b, &t));
+    }
+    // Collinear positions: the reference point is a slider; three finite
+    // points (mpmath), in every frame, none beyond the task's scale.
+    let c = task(&[
+        (0.0, 0.0, 0.1),
+        (1.0, 0.0, 0.5),
+        (2.0, 0.0, 1.2),
+        (3.5, 0.0, 2.0),
+        (5.0, 0.0, -1.0),
+    ]);
+    let want = [
+        (1.028311028, 11.71531754),
+        (0.7822684224, 1.870124483),
+        (2.135913452, 1.304640045),
+    ];
+    for t in frames() {
+        let poses = moved(&c, &t);
+        let five = FivePositions::new(&poses).unwrap();
+        let pts = five.burmester_points();
+        assert_eq!(pts.len(), 3, "{pts:?} in {t:?}");
+        for (x, y) in want {
+            let w = t.point(Point2::new(x, y));
+            assert!(
+                pts.iter()
+                    .any(|d| (d.center - w).norm() <= 1e-8 * (five.size() + w.coords.norm())),
+                "{w}: {pts:?}"
+            );
+        }
+        assert_eq!(five.sliders().len(), 1);
+        check_slider(&five, &poses);
+        let s = five.sliders()[0];
+        assert!(
+            (s.circle - poses[0].position).norm() <= 1e-9 * five.size(),
+            "{s:?}"
+        );
+    }
+    // Cardan motion (a rod with its ends on two perpendicular lines): every
+    // point of the moving circle runs on a line, a family of sliders.
+    let cardan: Vec<Pose> = [0.3f64, 0.9, 1.4, 2.2, 2.9]
+        .iter()
+        .map(|&f| Pose::new(2.0 * f.cos(), 0.0, PI - f))
+        .collect();
+    for t in frames() {
+        let e = FivePositions::new(&moved(&cardan, &t)).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::Degenerate(DegenerateError::InfinitelyManyBurmesterPoints { .. })
+            ),
+            "{e:?} in {t:?}"
+        );
+    }
+    // Three poses of one angle on a line: every dyad through them is a slider.
+    let d = task(&[
+        (0.0, 0.0, 0.3),
+        (1.0, 0.0, 0.3),
+        (2.5, 0.0, 0.3),
+        (1.0, 2.0, 1.0),
+        (-1.0, 1.0, 2.0),
+    ]);
+    for t in frames() {
+        let e = FivePositions::new(&moved(&d, &t)).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::Degenerate(DegenerateError::CollinearTranslations { i: 1, j: 2, k: 3 })
+            ),
+            "{e:?}"
+        );
+    }
+}
+
+/// A slider's circle point has five collinear positions, on the line
+/// normal to its direction.
+fn check_slider(five: &FivePositions, poses: &[Pose]) {
+    for s in five.sliders() {
+        let p: Vec<Point2<f64>> = (1..=5)
+            .map(|k| five.displace(s.circle, 1, k).unwrap())
+            .collect();
+        for q in &p[1..] {
+            let off = (q - p[0]).dot(&s.direction);
+            assert!(off.abs() <= 1e-9 * five.size(), "{s:?}: {off}");
+        }
+        let _ = poses;
+    }
+}
+
+/// Whether a five-pose answer is sound on its own: the count with
+/// multiplicity (finite points and sliders) is 0, 2 or 4; every finite
+/// point's circle point is concyclic over the poses (a double point to
+/// the square of its rounding); every slider's circle point has collinear
+/// positions.
+fn check_five_sound(five: &FivePositions, poses: &[Pose]) -> Result<(), TestCaseError> {
+    let n = total(five);
+    prop_assert!(
+        n % 2 == 0 && n <= 4,
+        "count {}: {:?} {:?} poses {:?}",
+        n,
+        five.burmester_points(),
+        five.sliders(),
+        poses
+            .iter()
+            .map(|p| (p.position.x, p.position.y, p.angle))
+            .collect::<Vec<_>>()
+    );
+    for d in five.burmester_points() {
+        prop_assert!(spread(poses, d) <= 1e-8, "{:?}: {}", d, spread(poses, d));
+    }
+    for s in five.sliders() {
+        let p: Vec<Point2<f64>> = (1..=5)
+            .map(|k| five.displace(s.circle, 1, k).unwrap())
+            .collect();
+        let span = p.iter().map(|q| (q - p[0]).norm()).fold(0.0, f64::max);
+        for q in &p[1..] {
+            prop_assert!(
+                (q - p[0]).dot(&s.direction).abs() <= 1e-7 * span.max(five.size()),
+                "{:?}",
+                s
+            );
+        }
+    }
+    Ok(())
+}
+
+/// The points of `a` farther than `1e-2` (relative) from every other point
+/// of `a` are, moved by `t`, points of `b` (within `1e-6`), and the same
+/// for `b` back to `a`; the points nearer one another (a pair near
+/// merging, a double point: whether it is one is decided within rounding,
+/// which the frame changes) may be there or not, two at a time.
+fn check_separated_points_move(
+    a: &FivePositions,
+    b: &FivePositions,
+    t: &Similarity,
+) -> Result<(), TestCaseError> {
+    let separated = |f: &FivePositions| -> Vec<Point2<f64>> {
+        let pts = f.burmester_points();
+        let c = centroid(f.poses());
+        pts.iter()
+            .enumerate()
+            .filter(|(i, p)| {
+                let scale = f.size() + (p.center - c).norm();
+                pts.iter()
+                    .enumerate()
+                    .all(|(j, q)| j == *i || (q.center - p.center).norm() > 1e-2 * scale)
+            })
+            .map(|(_, p)| p.center)
+            .collect()
+    };
+    let (sa, sb) = (separated(a), separated(b));
+    let near = |p: Point2<f64>, q: Point2<f64>, f: &FivePositions| {
+        let d = (p - centroid(f.poses())).norm();
+        let rel = if d > 1e4 * f.size() { 1e-5 } else { 1e-6 };
+        (p - q).norm() <= rel * (f.size() + d)
+    };
+    for p in &sa {
+        let w = t.point(*p);
+        prop_assert!(
+            b.burmester_points().iter().any(|q| near(w, q.center, b)),
+            "{} (moved {}) not among {:?}; poses {:?} and {:?}",
+            p,
+            w,
+            b.burmester_points(),
+            a.poses()
+                .iter()
+                .map(|p| (p.position.x, p.position.y, p.angle))
+                .collect::<Vec<_>>(),
+            b.poses()
+                .iter()
+                .map(|p| (p.position.x, p.position.y, p.angle))
+                .collect::<Vec<_>>()
+        );
+    }
+    for q in &sb {
+        prop_assert!(
+            a.burmester_points()
+                .iter()
+                .any(|p| near(t.point(p.center), *q, b)),
+            "{} not among {:?} moved",
+            q,
+            a.burmester_points()
+        );
+    }
+    Ok(())
+}
+
+/// Tasks near a merge of two Burmester points: pose 5 moved along `dir` by
+/// `lambda` task sizes, `lambda` on a grid over `[-span, span]`; where the
+/// count changes between two neighbours, `lambda` is bisected to the
+/// spacing of doubles, and the tasks at the two ends and at `1e-4`,
+/// `1e-7`, `1e-10` and `1e-13` task sizes either side of the change are
+/// returned (pairs of points from `1e-2` apart to merged, real or complex).
+fn near_merges(poses: &[Pose], dir: Vector2<f64>, span: f64) -> Vec<Vec<Pose>> {
+    let size = FivePositions::new(poses).map(|f| f.size()).unwrap_or(1.0);
+    let at = |l: f64| {
+        let mut p = poses.to_vec();
+        p[4].position += dir * (l * size);
+        p
+    };
+    let count = |l: f64| FivePositions::new(&at(l)).ok().map(|f| total(&f));
+    let grid: Vec<f64> = (0..=40)
+        .map(|i| -span + 2.0 * span * i as f64 / 40.0)
+        .collect();
+    let counts: Vec<Option<usize>> = grid.iter().map(|&l| count(l)).collect();
+    for i in 0..40 {
+        let (Some(ca), Some(cb)) = (counts[i], counts[i + 1]) else {
+            continue;
+        };
+        if ca == cb {
+            continue;
+        }
+        let (mut lo, mut hi) = (grid[i], grid[i + 1]);
+        for _ in 0..60 {
+            let m = 0.5 * (lo + hi);
+            if !(m > lo && m < hi) {
+                break;
+            }
+            match count(m) {
+                Some(c) if c == ca => lo = m,
+                Some(_) => hi = m,
+                None => break,
+            }
+        }
+        let mut out = vec![at(lo), at(hi)];
+        for k in [4, 7, 10, 13] {
+            let d = 10f64.powi(-k);
+            out.push(at(lo - d));
+            out.push(at(hi + d));
+        }
+        return out;
+    }
+    Vec::new()
+}
+
+proptest! {
+    #![proptest_config(cases(24))]
+
+    /// Items 2 and 3's target for merging points: tasks bisected to where
+    /// two Burmester points merge (made from linkages, pose 5 moved), in
+    /// random frames: the count is 0, 2 or 4, every point concyclic, and
+    /// the points apart from the merging pair move with the task.
+    #[test]
+    fn issue24_burmester_points_near_merging_in_any_frame(
+        p in link_params(),
+        a in -PI..PI,
+        t in similarity(),
+    ) {
+        let m = made(&p, 5, 0.05);
+        prop_assume!(m.is_some());
+        let m = m.unwrap();
+        let tasks = near_merges(&m.poses, Vector2::new(a.cos(), a.sin()), 0.5);
+        for poses in tasks {
+            let r = FivePositions::new(&poses);
+            prop_assert!(
+                !matches!(r, Err(Error::Degenerate(DegenerateError::UnresolvedBurmesterPoints { .. }))),
+                "{:?}: {:?}", poses, r
+            );
+            let Ok(five) = r else { continue };
+            check_five_sound(&five, &poses)?;
+            let mv = moved(&poses, &t);
+            let Ok(other) = FivePositions::new(&mv) else { continue };
+            check_five_sound(&other, &mv)?;
+            check_separated_points_move(&five, &other, &t)?;
+        }
+    }
+}
+
+/// A degenerate five-pose task and what it must give: `kind` 0, three
+/// rotations about one point (poses `which`); 1, three poses of one angle
+/// on a line; 2, five positions on a line (the reference point a slider);
+/// 3, two pairs of poses of one angle and two poses at one position;
+/// 4, Cardan motion (a family of sliders).
+#[derive(Debug, Clone)]
+struct Degenerate {
+    kind: usize,
+    poses: Vec<Pose>,
+    which: [usize; 3],
+}
+
+fn degenerate_task() -> impl Strategy<Value = Degenerate> {
+    (
+        0usize..5,
+        (-3.0f64..3.0, -3.0f64..3.0),
+        (0.5f64..3.0, -PI..PI),
+        prop::array::uniform5((-1.0f64..1.0, -PI..PI)),
+        prop::array::uniform4((-3.0f64..3.0, -3.0f64..3.0)),
+        Just([0usize, 1, 2, 3, 4]).prop_shuffle(),
+    )
+        .prop_filter_map(
+            "rotations too close",
+            |(kind, c, (r, phi), v, extra, perm)| {
+                let c = Point2::new(c.0, c.1);
+                let arm = Vector2::new(r * phi.cos(), r * phi.sin());
+                let base: Vec<Pose> = match kind {
+                    0 => {
+                        // Rotations about c by angles at least 0.2 apart.
+                        let ang = [v[0].1, v[1].1, v[2].1];
+                        let ok = (0..3)
+                            .all(|i| (i + 1..3).all(|j| common::wrap(ang[i] - ang[j]).abs() > 0.2));
+                        if !ok {
+                            return None;
+                        }
+                        let mut p: Vec<Pose> = ang
+                            .iter()
+                            .map(|&a| {
+                                let (s, co) = a.sin_cos();
+                                Pose::new(
+                                    c.x + co * arm.x - s * arm.y,
+                                    c.y + s * arm.x + co * arm.y,
+                                    a + 0.3,
+                                )
+                            })
+                            .collect();
+                        p.push(Pose::new(extra[0].0, extra[0].1, v[3].1));
+                        p.push(Pose::new(extra[1].0, extra[1].1, v[4].1));
+                        p
+                    }
+                    1 => {
+                        let ts = [0.0, 0.4 + v[0].0.abs(), -0.4 - v[1].0.abs()];
+                        let mut p: Vec<Pose> = ts
+                            .iter()
+                            .map(|&t| Pose::new(c.x + t * arm.x, c.y + t * arm.y, v[2].1))
+                            .collect();
+                        p.push(Pose::new(extra[0].0, extra[0].1, v[3].1));
+                        p.push(Pose::new(extra[1].0, extra[1].1, v[4].1));
+                        p
+                    }
+                    2 => {
+                        let ts = [
+                            0.0,
+                            1.0,
+                            2.0 + v[0].0.abs(),
+                            -1.0 - v[1].0.abs(),
+                            3.5 + v[2].0.abs(),
+                        ];
+                        let ang = v.map(|x| x.1);
+                        let ok = (0..5)
+                            .all(|i| (i + 1..5).all(|j| common::wrap(ang[i] - ang[j]).abs() > 0.1));
+                        if !ok {
+                            return None;
+                        }
+                        ts.iter()
+                            .zip(ang)
+                            .map(|(&t, a)| Pose::new(c.x + t * arm.x, c.y + t * arm.y, a))
+                            .collect()
+                    }
+                    3 => {
+                        let (a1, a2, a3) = (v[0].1, v[1].1, v[2].1);
+                        let ok = [a1 - a2, a1 - a3, a2 - a3]
+                            .iter()
+                            .all(|d| common::wrap(*d).abs() > 0.1);
+                        if !ok {
+                            return None;
+                        }
+                        vec![
+                            Pose::new(c.x, c.y, a1),
+                            Pose::new(extra[0].0, extra[0].1, a2),
+                            Pose::new(c.x, c.y, a3),
+                            Pose::new(extra[1].0, extra[1].1, a2),
+                            Pose::new(extra[2].0, extra[2].1, a3),
+                        ]
+                    }
+                    _ => {
+                        let phis = v.map(|x| x.1);
+                        let ok = (0..5).all(|i| {
+                            (i + 1..5).all(|j| common::wrap(phis[i] - phis[j]).abs() > 0.1)
+                        });
+                        if !ok {
+                            return None;
+                        }
+                        // The rod's end on the x axis of a frame at c turned by phi.
+                        phis.iter()
+                            .map(|&f| {
+                                let e = Vector2::new(r * f.cos(), 0.0);
+                                let (s, co) = phi.sin_cos();
+                                Pose::new(
+                                    c.x + co * e.x - s * e.y,
+                                    c.y + s * e.x + co * e.y,
+                                    PI - f + phi,
+                                )
+                            })
+                            .collect()
+                    }
+                };
+                let poses: Vec<Pose> = perm.iter().map(|&i| base[i]).collect();
+                let mut which: Vec<usize> = (0..3)
+                    .map(|k| perm.iter().position(|&i| i == k).unwrap() + 1)
+                    .collect();
+                which.sort();
+                Some(Degenerate {
+                    kind,
+                    poses,
+                    which: [which[0], which[1], which[2]],
+                })
+            },
+        )
+}
+
+proptest! {
+    #![proptest_config(cases(96))]
+
+    /// Item 3's target: degenerate five-pose tasks (three rotations about
+    /// one point, three poses of one angle on a line, collinear positions,
+    /// pure translations with poses at one position, Cardan motion) in
+    /// random frames: a typed error naming the poses, or a sound answer
+    /// with a slider where the positions are collinear, the same in every
+    /// frame.
+    #[test]
+    fn issue24_degenerate_five_pose_tasks_in_any_frame(d in degenerate_task(), t in similarity()) {
+        let poses = moved(&d.poses, &t);
+        let r = FivePositions::new(&poses);
+        match d.kind {
+            0 => {
+                let [i, j, k] = d.which;
+                prop_assert!(
+                    matches!(r, Err(Error::Degenerate(DegenerateError::RotationsAboutOnePoint { i: a, j: b, k: c, .. })) if [a, b, c] == [i, j, k]),
+                    "{:?}", r
+                );
+            }
+            1 => {
+                let [i, j, k] = d.which;
+                prop_assert!(
+                    matches!(r, Err(Error::Degenerate(DegenerateError::CollinearTranslations { i: a, j: b, k: c })) if [a, b, c] == [i, j, k]),
+                    "{:?}", r
+                );
+            }
+            4 => {
+                prop_assert!(
+                    matches!(r, Err(Error::Degenerate(DegenerateError::InfinitelyManyBurmesterPoints { .. }))),
+                    "{:?}", r
+                );
+            }
+            _ => {
+                let Ok(five) = r else {
+                    // Only what the four-pose subsets refuse.
+                    prop_assert!(matches!(r, Err(Error::Degenerate(_))), "{:?}", r);
+                    return Ok(());
+                };
+                check_five_sound(&five, &poses)?;
+                if d.kind == 2 {
+                    prop_assert!(
+                        five.sliders().iter().any(|s| (s.circle - poses[0].position).norm() <= 1e-6 * five.size()),
+                        "{:?}", five.sliders()
+                    );
+                    prop_assert!(five.burmester_points().len() % 2 == 1);
+                }
+                // The same in the original frame.
+                let base = FivePositions::new(&d.poses).unwrap();
+                prop_assert_eq!(total(&base), total(&five));
+                prop_assert_eq!(base.sliders().len(), five.sliders().len());
+                check_separated_points_move(&base, &five, &t)?;
+            }
+        }
+    }
+}
+
+/// Found by the `curves` fuzz target: three of four poses of one angle on
+/// a line. Every dyad through them is a slider; the curve was the line at
+/// infinity twice and a line of centers whose circle points are at
+/// infinity, and its traced points were refused by the on-curve test.
+#[test]
+fn issue24_three_of_four_poses_of_one_angle_on_a_line_are_degenerate() {
+    let poses = [
+        Pose::new(9.89296875e-8, -1.70703125e-8, 0.3),
+        Pose::new(9.892983203125e-8, -1.70703125e-8, 0.3),
+        Pose::new(9.89299765625e-8, -1.70703125e-8, 0.3),
+        Pose::new(9.893012109374999e-8, -1.70703125e-8, 0.0),
+    ];
+    let e = FourPositions::new(&poses).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::Degenerate(DegenerateError::CollinearTranslations { i: 1, j: 2, k: 3 })
+        ),
+        "{e:?}"
+    );
+}
+
+/// Found by the `curves` fuzz target: rotations of about 1e-7 rad between
+/// the poses. The crank-rotation formulas divide by the square of the
+/// angle; their dyads were off the curve by 15 task sizes (their three
+/// conditions off by half their terms) and refused by it. Now a dyad is
+/// given only when its conditions hold (after the Gauss-Newton
+/// corrections) to 1e-8 of their terms, and then it is on the curve.
+#[test]
+fn issue24_dyads_of_nearly_equal_angles_are_on_their_curve_or_not_given() {
+    let poses = [
+        Pose::new(1.015625e-22, -3.515625e-14, 5.296484375e-8),
+        Pose::new(
+            -5.537033081054664e-21,
+            -3.515624999999956e-14,
+            -1.07421875e-7,
+        ),
+        Pose::new(-1.897125244140626e-22, -3.515625e-14, 4.46796875e-8),
+        Pose::new(-1.7604827880859368e-21, -3.515624999999996e-14, 0.0),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    for d in four.dyad_runs(50).unwrap().into_iter().flatten() {
+        four.circle_point(d.center).unwrap();
+        assert!(spread(&poses, &d.dyad()) <= 1e-6, "{d:?}");
+    }
+    for d in four.parameter_samples(50).unwrap().into_iter().flatten() {
+        four.circle_point(d.center).unwrap();
+    }
+}
+
+/// Found by the `curves` fuzz target: four poses of one angle. Every dyad's
+/// crank is then one vector over the poses (its circle point's positions
+/// are the point translated), so a dyad passes the four only when the
+/// translations are concyclic; the curve degenerated to rounding and its
+/// traced points were refused. Now a typed error that says what to change,
+/// in any frame and at any size.
+#[test]
+fn issue24_four_poses_of_one_angle_are_all_translations() {
+    let found = [
+        Pose::new(2.211328125e-14, 2.911328125e-11, 0.02911328125),
+        Pose::new(2.911328125e-14, 2.924609375e-14, 0.02911328125),
+        Pose::new(1.1328125e-16, 2.911328125e-14, 0.02911328125),
+        Pose::new(2.9503906249999996e-14, 2.911328125e-14, 0.02911328125),
+    ];
+    // A lid moved without turning, in millimetres.
+    let lid = [
+        Pose::new(0.0, 0.0, 0.3),
+        Pose::new(120.0, 15.0, 0.3),
+        Pose::new(40.0, 90.0, 0.3),
+        Pose::new(70.0, 35.0, 0.3 + TAU),
+    ];
+    for (poses, size) in [(&found[..], 3e-11), (&lid[..], 100.0)] {
+        for t in frames_of_size(size) {
+            let e = FourPositions::new(&moved(poses, &t)).unwrap_err();
+            assert!(
+                matches!(e, Error::Degenerate(DegenerateError::AllTranslations)),
+                "{e:?}"
+            );
+            assert!(e.to_string().contains("rotate a pose"), "{e}");
+        }
+    }
+    // One pose turned by a thousandth of a radian: a proper task again.
+    let mut turned = lid;
+    turned[3] = Pose::new(70.0, 35.0, 0.301);
+    FourPositions::new(&turned).unwrap();
+}
+
+/// Found by the `curves` fuzz target: rotations of 2.6e-8 to 1e-6 rad. A
+/// crank-rotation dyad solved its three conditions to 1e-8 of their terms
+/// (accepted by `dyad_at`) but its center was off the curve by more than
+/// the on-curve test allows, so the library refused its own dyad. Now
+/// `dyad_at` gives a dyad only when the on-curve test takes its center and
+/// its circle point back; checked here by the crank lengths over the four
+/// poses, evaluated directly.
+#[test]
+fn issue24_dyads_of_nearly_equal_angles_are_taken_back_or_not_given() {
+    let poses = [
+        Pose::new(-2.228750000374531e-10, -1.15453125e-10, PI),
+        Pose::new(-2.2287500003745308e-10, -1.15453125e-10, 3.141592627696793),
+        Pose::new(-2.2287500003739538e-10, -1.15453125e-10, 3.141591653589793),
+        Pose::new(-2.2287500003745308e-10, -1.15453125e-10, 3.141592681089793),
+    ];
+    let off_curve = |r: &Result<Point2<f64>, Error>| {
+        matches!(r, Err(Error::InvalidInput(InvalidInput::OffCurve { .. })))
+    };
+    let mut total = 0;
+    for t in frames_of_size(1e-10) {
+        let moved_poses = moved(&poses, &t);
+        let four = FourPositions::new(&moved_poses).unwrap();
+        let mut dyads = Vec::new();
+        for k in 0..720 {
+            let beta2 = k as f64 * TAU / 720.0;
+            for mode in [AssemblyMode::Open, AssemblyMode::Crossed] {
+                if let Ok(d) = four.dyad_at(beta2, mode) {
+                    dyads.push(d);
+                }
+            }
+        }
+        let given = dyads.len();
+        if let Ok(runs) = four.dyad_runs(50) {
+            dyads.extend(runs.into_iter().flatten());
+        }
+        if let Ok(s) = four.parameter_samples(50) {
+            dyads.extend(s.into_iter().flatten());
+        }
+        total += given;
+        for d in &dyads {
+            let r = four.circle_point(d.center);
+            assert!(!off_curve(&r), "own center {} refused: {r:?}", d.center);
+            let r = four.center_point(d.circle);
+            assert!(
+                !off_curve(&r),
+                "own circle point {} refused: {r:?}",
+                d.circle
+            );
+            // The dyad's conditions: one crank length at the four poses,
+            // within a millionth of the crank plus the task, or within the
+            // rounding of the coordinates (the poses are nearly at one
+            // point: the task's size is a few ulps of its place).
+            let p1 = moved_poses[0];
+            let r: Vec<f64> = moved_poses
+                .iter()
+                .map(|p| {
+                    let (s, c) = (p.angle - p1.angle).sin_cos();
+                    let v = d.circle - p1.position;
+                    let q = p.position + Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y);
+                    (q - d.center).norm()
+                })
+                .collect();
+            let max = r.iter().copied().fold(0.0, f64::max);
+            let min = r.iter().copied().fold(f64::INFINITY, f64::min);
+            let place = d.center.coords.norm() + d.circle.coords.norm() + p1.position.coords.norm();
+            let band = 1e-6 * (max + four.size()) + 64.0 * f64::EPSILON * place;
+            assert!(max - min <= band, "{d:?}: {r:?}");
+        }
+    }
+    // Where the angles' digits allow (the task scaled up), some are given.
+    assert!(total > 0);
+}
+
+/// Found by the `curves` fuzz target: a driven dyad whose circle point is
+/// the first pose's reference point, on a line of centers. At `C1` every
+/// branch sign `cross(C'k - C1, A1 - C1)` is zero, so the class of a
+/// driving circle point there (and of the stretch of that line next to it)
+/// was decided by rounding. `C1` is a boundary (never free) within
+/// `tolerance::POINT` task sizes, in every frame, and no free arc passes
+/// it.
+#[test]
+fn issue24_the_driven_circle_point_is_a_boundary() {
+    let poses = [
+        Pose::new(8.66640625e-14, 7.33203125e-12, 0.0),
+        Pose::new(0.0, 0.0, 40.0),
+        Pose::new(0.0, 0.0, 7.33203125),
+        Pose::new(8.66640625e-14, 7.33203125e-12, 0.0101640625),
+    ];
+    let driven = Dyad::new(
+        Point2::new(4.3332031250003845e-14, 3.666015624999997e-12),
+        Point2::new(8.666406249999107e-14, 7.332031250000002e-12),
+    );
+    for t in frames_of_size(1e-11) {
+        let four = FourPositions::new(&moved(&poses, &t)).unwrap();
+        let size = four.size();
+        let d = Dyad::new(t.point(driven.center), t.point(driven.circle));
+        let arcs = four.filemon(&d).unwrap();
+        let c1 = arcs.driven().circle;
+        // Every sign vanishes at C1 (against their size a task away).
+        let far = arcs.circle_signs(c1 + Vector2::new(size, 0.0));
+        let scale = far.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        for s in arcs.circle_signs(c1) {
+            assert!(s.abs() <= 1e-12 * scale, "{s} against {scale}");
+        }
+        for k in 0..8 {
+            let a = k as f64 * PI / 4.0;
+            let p = c1 + Vector2::new(a.cos(), a.sin()) * (0.5e-12 * size);
+            assert_eq!(arcs.classify_circle_point(p), Branch::Boundary);
+        }
+        assert_eq!(arcs.classify_circle_point(c1), Branch::Boundary);
+        let h = 2.0 * size;
+        let vp = Viewport::new(c1.x - h, c1.x + h, c1.y - h, c1.y + h).unwrap();
+        for l in arcs.free_circle_arcs(&vp) {
+            for p in &l[1..l.len() - 1] {
+                assert!(
+                    (p - c1).norm() > 1e-12 * size,
+                    "a free arc passes C1 at {p}"
+                );
+            }
+        }
+    }
+}
+
+/// Found by the `curves` fuzz target: three nearly collinear translations
+/// and a pose turned by 2.3e-8 rad. The circle-point curve is a line times
+/// a conic whose terms other than the constant are rounding; the conic's
+/// kind (relative to its matrix's norm) said "degenerate" and a line was
+/// drawn across the view where the curve is not (a hundredth of the task
+/// away). Now every traced vertex is on the curve.
+#[test]
+fn issue24_a_line_times_a_constant_conic_traces_only_the_line() {
+    let poses = [
+        Pose::new(2.699609375e-11, -3.9062500000000004e-24, 2.274609375e-8),
+        Pose::new(-8.083593980090955e-11, -5.756572150067078e-19, 0.0),
+        Pose::new(2.7992185199090447e-11, -6.140595587567076e-19, 0.0),
+        Pose::new(2.6996091449090445e-11, -6.140595587567076e-19, 0.0),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let vp = Viewport::new(
+        -5.241228251844396e-13,
+        1.0983381238201081e-12,
+        -8.112309254473336e-13,
+        8.112300235572142e-13,
+    )
+    .unwrap();
+    let curve = four.circle_point_curve();
+    let lines = curve.polylines(&vp);
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    for l in &lines {
+        for &c in l {
+            assert!(on_curve(curve, &four, c, 1.0), "{c} off the curve");
+            let g = four.center_point(c);
+            assert!(
+                !matches!(g, Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))),
+                "{c}: {g:?}"
+            );
+        }
+    }
+}
+
+/// Frames for a task of about `size`: as given, moved (by a few sizes),
+/// turned, scaled, mirrored; the moves are within the task's own digits.
+fn frames_of_size(size: f64) -> Vec<Similarity> {
+    vec![
+        Similarity::new(1.0, 0.0, Vector2::zeros()).unwrap(),
+        Similarity::new(1.0, 0.0, Vector2::new(0.0, 2.0 * size)).unwrap(),
+        Similarity::new(3.0, 0.0, Vector2::zeros()).unwrap(),
+        Similarity::new(1.0, 1.0, Vector2::new(0.3, -0.2) * size).unwrap(),
+        Similarity::new(1e-3, -2.5, Vector2::new(7.0, 5.0) * size).unwrap(),
+        Similarity::new(1e3, 0.7, Vector2::new(-4.0, 1.0) * size)
+            .unwrap()
+            .mirrored(),
+    ]
+}
+
+/// Found by the `curves` fuzz target: a view 700 task sizes wide whose
+/// center is far from the curve. The tracer's pencil point (a vertex of the
+/// trace) was a root of the curve on a line from the view's center, found
+/// to the rounding of that distance: 0.0044 off the curve (against an
+/// on-curve tolerance of 6.6e-5, a task of size 66,000) and refused by
+/// `circle_point`. It is now refined by Newton on the curve's own value;
+/// every vertex is on the curve, in this view and in smaller ones.
+#[test]
+fn issue24_a_huge_view_traces_vertices_on_the_curve() {
+    let poses = [
+        Pose::new(65996.09375, -824.21875, 0.032996093750000004),
+        Pose::new(0.12496484375, 51.0078125, 2.84765625e-9),
+        Pose::new(-0.7421875, 35.15625, 35.15624999999609),
+        Pose::new(0.12496484375, 51.0078125, 73.16015625),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let curve = four.center_point_curve();
+    let (x0, x1, y0, y1) = (
+        -36827307.97171515,
+        8033420.454465505,
+        -36820774.80875893,
+        8039953.617421731,
+    );
+    let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+    let mut count = 0;
+    for k in [1.0, 1e-2, 1e-4] {
+        let (hx, hy) = (0.5 * (x1 - x0) * k, 0.5 * (y1 - y0) * k);
+        let vp = Viewport::new(cx - hx, cx + hx, cy - hy, cy + hy).unwrap();
+        for g in curve.polylines(&vp).into_iter().flatten() {
+            count += 1;
+            // Independent of the on-curve test: the first-order distance
+            // within the rounding of a task size.
+            assert!(curve.distance_estimate(g) <= 1e-9 * four.size(), "{g}");
+            let z = four.circle_point(g);
+            assert!(
+                !matches!(z, Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))),
+                "traced {g} refused: {z:?}"
+            );
+        }
+    }
+    assert!(count > 0);
+}
+
+/// Found by the `curves` fuzz target: a nearly singular circle-point curve
+/// with an oval 1.2e-14 across (a task of size 9.4e-8) at an arc end. The
+/// extreme Filemon line crosses the oval twice where the arc ends do not
+/// resolve it (two roots 6e-8 task sizes apart), so the classes changed
+/// between traced vertices; the free run was cut at the middle of that
+/// chord and so reached into the defective stretch. A free run now ends at
+/// a vertex or an exact mark. Checked against the branch signs
+/// `cross(C'k - C1, A1 - C1)` evaluated here, at points of the curve along
+/// every chord of every free arc.
+#[test]
+fn issue24_a_free_arc_never_ends_mid_chord_in_a_defective_stretch() {
+    let poses = [
+        Pose::new(-4.200390625e-14, -4.216796875e-14, -0.03816796875),
+        Pose::new(-4.216796875e-14, -4.25234375e-14, 0.04683203125),
+        Pose::new(-1.2524999999999999e-7, -6.401171875e-14, 34.1484375),
+        Pose::new(-4.216796875e-14, -4.25234375e-14, -42.88671875),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let driven = Dyad::new(
+        Point2::new(-3.7484288237342264e-14, -4.502291198845822e-14),
+        Point2::new(-2.8392127636848383e-7, 5.572602386567654e-7),
+    );
+    let arcs = four.filemon(&driven).unwrap();
+    let c1 = arcs.driven().circle;
+    let images = arcs.fixed_pivot_images();
+    let signs = |p: Point2<f64>| {
+        images.map(|c| {
+            let (u, v) = (c - c1, p - c1);
+            u.x * v.y - u.y * v.x
+        })
+    };
+    let curve = four.circle_point_curve();
+    let mut checked = 0;
+    let found = Viewport::new(
+        -9.39412168438642e-10,
+        9.393371998621672e-10,
+        -9.39419707062393e-10,
+        9.393296612384162e-10,
+    )
+    .unwrap();
+    let views = [1e-11, 1e-13].map(|h| Viewport::new(-h, h, -h, h).unwrap());
+    for vp in std::iter::once(found).chain(views) {
+        let diag = vp.diagonal();
+        let near = |p: Point2<f64>| {
+            (p - c1).norm() <= 1e-6 * diag
+                || arcs
+                    .arc_ends()
+                    .iter()
+                    .any(|e| (e.circle - p).norm() <= 1e-6 * diag)
+        };
+        for l in arcs.free_circle_arcs(&vp) {
+            for w in l.windows(2) {
+                for k in 0..=4 {
+                    let m = w[0] + (w[1] - w[0]) * (k as f64 / 4.0);
+                    let Some(q) = curve
+                        .intersect_line(&burmester::Line {
+                            point: m,
+                            direction: curve.gradient(m),
+                        })
+                        .into_iter()
+                        .min_by(|a, b| (a - m).norm().total_cmp(&(b - m).norm()))
+                    else {
+                        continue;
+                    };
+                    if near(q) || (q - m).norm() > 2e-3 * diag {
+                        continue;
+                    }
+                    let s = signs(q);
+                    assert!(
+                        s.iter().all(|v| *v > 0.0) || s.iter().all(|v| *v < 0.0),
+                        "{q} on the free chord {} - {} has signs {s:?}",
+                        w[0],
+                        w[1]
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 0);
 }

@@ -61,6 +61,16 @@ fn conic_polylines() {
 }
 
 #[test]
+fn curves() {
+    replay("curves", checks::curves);
+}
+
+#[test]
+fn burmester_points() {
+    replay("burmester_points", checks::burmester_points);
+}
+
+#[test]
 fn pair_map() {
     replay("pair_map", checks::pair_map);
 }

@@ -542,6 +542,77 @@ pub enum DegenerateError {
         /// The crank rotation from pose 1 to pose 2, radians.
         beta2: f64,
     },
+    /// Three of five poses are rotations about one point (their three poles
+    /// coincide): every dyad through them has its center point there or
+    /// its moving pivot there, so the two center-point curves that the
+    /// Burmester points are the meets of share the zero circle about it
+    /// and the points are not isolated (issue 24).
+    #[error(
+        "poses {i}, {j} and {k} are rotations about one point ({}, {}): every dyad through them \
+         has its center point or its moving pivot there, so the Burmester points of the five \
+         poses are not isolated (the curves whose meets they are share a component); move or \
+         rotate one of these poses off that rotation",
+        Num(*.x), Num(*.y)
+    )]
+    RotationsAboutOnePoint {
+        /// First pose (1-based).
+        i: usize,
+        /// Second pose (1-based).
+        j: usize,
+        /// Third pose (1-based).
+        k: usize,
+        /// x of the common pole.
+        x: f64,
+        /// y of the common pole.
+        y: f64,
+    },
+    /// Three of four or five poses have one angle and collinear positions:
+    /// every dyad through them is a slider (its moving pivot's three
+    /// positions lie on a line), so no finite center point passes them and
+    /// the center-point curves degenerate to the line at infinity (issue
+    /// 24).
+    #[error(
+        "poses {i}, {j} and {k} have the same angle and positions on one line: every dyad \
+         through them is a slider (its moving pivot's positions lie on a line), so no finite \
+         center point passes them and the center-point curves degenerate; rotate one of these \
+         poses or move it off the line"
+    )]
+    CollinearTranslations {
+        /// First pose (1-based).
+        i: usize,
+        /// Second pose (1-based).
+        j: usize,
+        /// Third pose (1-based).
+        k: usize,
+    },
+    /// Five poses with infinitely many Burmester points: the center-point
+    /// curves of two four-pose subsets share a component (a line, a conic
+    /// or the whole curve), every point of which is the center of a dyad
+    /// through all five poses, or a center has a whole line of circle
+    /// points (issue 24).
+    #[error(
+        "the five poses have infinitely many Burmester points: {what}, so the dyads through all \
+         five poses are not isolated; move or rotate a pose"
+    )]
+    InfinitelyManyBurmesterPoints {
+        /// What is shared (for example `"the center-point curves of every two four-pose
+        /// subsets that share three poses have a common component"`).
+        what: &'static str,
+    },
+    /// Five poses whose Burmester points the elimination does not resolve
+    /// within rounding: from every choice of the shared poses a root of
+    /// the resultant gives no point, or the count is odd (the task is
+    /// within rounding of a degenerate one: nearly coincident poses or
+    /// poles, nearly equal angles) (issue 24).
+    #[error(
+        "the Burmester points of the five poses are not resolved within rounding: {what}; the \
+         task is within rounding of a degenerate one (nearly coincident poses or poles, nearly \
+         equal angles): move or rotate a pose"
+    )]
+    UnresolvedBurmesterPoints {
+        /// What failed.
+        what: &'static str,
+    },
     /// A dyad's center point and circle point coincide (a link of zero length).
     #[error(
         "the {what} has zero length: its ends coincide at ({}, {}); choose another point",
@@ -660,6 +731,12 @@ impl Error {
                 DegenerateError::AllTranslations => "all_translations",
                 DegenerateError::NotParametrizable => "not_parametrizable",
                 DegenerateError::SliderDyad { .. } => "slider_dyad",
+                DegenerateError::RotationsAboutOnePoint { .. } => "rotations_about_one_point",
+                DegenerateError::CollinearTranslations { .. } => "collinear_translations",
+                DegenerateError::InfinitelyManyBurmesterPoints { .. } => {
+                    "infinitely_many_burmester_points"
+                }
+                DegenerateError::UnresolvedBurmesterPoints { .. } => "unresolved_burmester_points",
             },
             Error::Cancelled { .. } => "cancelled",
             Error::OutOfMemory { .. } => "out_of_memory",
@@ -774,6 +851,10 @@ impl Error {
                 DegenerateError::ZeroLengthLink { what, x, y } => fields!(what, x, y),
                 DegenerateError::AllTranslations | DegenerateError::NotParametrizable => vec![],
                 DegenerateError::SliderDyad { beta2 } => fields!(beta2),
+                DegenerateError::RotationsAboutOnePoint { i, j, k, x, y } => fields!(i, j, k, x, y),
+                DegenerateError::CollinearTranslations { i, j, k } => fields!(i, j, k),
+                DegenerateError::InfinitelyManyBurmesterPoints { what }
+                | DegenerateError::UnresolvedBurmesterPoints { what } => fields!(what),
             },
             Error::Cancelled { done, total } => fields!(done, total),
             Error::OutOfMemory { what, bytes } => fields!(what, bytes),

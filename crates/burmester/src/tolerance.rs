@@ -88,6 +88,41 @@ pub const RANK_TIE: f64 = 1e-9;
 /// slope) from a root of a conic has the root-free sign.
 pub const SWEEP_BAND_EPS: f64 = 64.0;
 
+// Four and five poses: the Burmester curves and points (issue 24).
+
+/// Factor of `f64::EPSILON` of the rounding band of a Burmester curve (the
+/// center-point or circle-point cubic of four poses) at a point: a point
+/// is on the curve when the curve's value there is within this many `eps`
+/// of the bound on its terms, `sum (|c_ij| + m_ij) |x|^i |y|^j`, where
+/// `m_ij` is the coefficient's own rounding scale (the exact expansion of
+/// the determinant from the poses with every number in magnitude). Over the
+/// gradient this is a distance: the curve's position is known only to
+/// within it, which near a nearly singular point of a curve of nearly equal
+/// rotations is thousands of times the rounding of the coefficients'
+/// largest. The points the library computes on the curves (the traced
+/// vertices, the crank-rotation dyads, the arc ends, the Burmester points)
+/// are within about a fifth of this band.
+pub const ON_CURVE_EPS: f64 = 64.0;
+
+/// Factor of `f64::EPSILON` of the rounding band of the elimination of the
+/// Burmester points of five poses: a value of the resultant (or of one of
+/// the forms it is made of) within this many `eps` of the bound on its
+/// terms (the same computation in magnitudes, with the rounding scales of
+/// the curves' coefficients and of the pole they are taken from) is zero.
+/// A critical point of the resultant where it is zero so is a double root:
+/// two Burmester points that merge, or a pair of complex ones, within
+/// rounding (a double point, listed twice). Where the whole resultant is
+/// zero so for every choice of the shared poses, the points are not
+/// isolated. A center farther than `1 / (BURMESTER_EPS eps)` task sizes
+/// (about `3e14`), where its rounding is of its own size, is at infinity
+/// (a slider).
+pub const BURMESTER_EPS: f64 = 16.0;
+
+/// Three poses whose three poles agree within this many task sizes (plus
+/// the poles' distance from the task) are rotations about one point: the
+/// Burmester points of five poses with them are not isolated.
+pub const BURMESTER_COMMON_POLE: f64 = 1e-9;
+
 /// Factor of `f64::EPSILON` of the loop closure's rounding, in the crate's
 /// one toggle criterion [`heron_tolerance`] (derived there). The measured
 /// rounding of Heron's product stays below `0.6 eps` times the bound's

@@ -560,6 +560,9 @@ impl Conic {
         } / self.scale;
         let lo = self.local_of(Point2::new(viewport.xmin, viewport.ymin));
         let hi = self.local_of(Point2::new(viewport.xmax, viewport.ymax));
+        if self.misses_box(lo, hi) {
+            return Ok(Vec::new());
+        }
         let aabb = Aabb::new(
             parry2d_f64::math::Vector::new(lo.x, lo.y),
             parry2d_f64::math::Vector::new(hi.x, hi.y),
@@ -597,6 +600,23 @@ impl Conic {
             .into_iter()
             .map(|pl| pl.into_iter().map(|v| self.global_of(v)).collect())
             .collect())
+    }
+
+    /// Whether the conic has no point in the local box `[lo, hi]`: its
+    /// constant term outweighs a bound of the rest over the box (taken
+    /// about the local origin, so over a larger box). The kind's relative
+    /// test cannot say this: a constant term that dominates the rest (a
+    /// quotient conic of a cubic whose other terms are rounding) makes the
+    /// matrix singular within `1e-12` of its norm, and its "line pair" would
+    /// be drawn where the curve is not.
+    fn misses_box(&self, lo: Vector2<f64>, hi: Vector2<f64>) -> bool {
+        let [a, b, c, d, e, f] = self.q;
+        let rx = lo.x.abs().max(hi.x.abs());
+        let ry = lo.y.abs().max(hi.y.abs());
+        let rest =
+            a.abs() * rx * rx + b.abs() * rx * ry + c.abs() * ry * ry + d.abs() * rx + e.abs() * ry;
+        // Well beyond the rounding of either side; false for NaN or infinity.
+        f.abs() > rest * (1.0 + 1e-9)
     }
 
     /// The lines of a degenerate conic (local point and direction).
@@ -966,6 +986,45 @@ mod tests {
         );
         assert!(Conic::new(0.0, 0.0, 0.0, 0.0, 0.0, 1.0).is_err());
         assert!(Conic::new(f64::NAN, 0.0, 0.0, 0.0, 0.0, 1.0).is_err());
+    }
+
+    /// Found through the `curves` fuzz target (issue 24): a constant term
+    /// that dominates terms of rounding size. The matrix is singular within
+    /// `1e-12` of its norm, so the kind is "degenerate", and a line pair
+    /// was drawn across a view where the conic has no point (its value is
+    /// near 1 all over it). A conic that passes the view is still drawn.
+    #[test]
+    fn a_dominant_constant_term_draws_nothing() {
+        let c = Conic::new(
+            0.0,
+            -4.235164736271502e-21,
+            -2.4397873920804114e-20,
+            0.0,
+            1.6940658945086007e-21,
+            1.000000000000001,
+        )
+        .unwrap();
+        assert_eq!(c.kind(), ConicKind::Degenerate);
+        for h in [0.01, 1.0, 1e6] {
+            let vp = Viewport::new(-h, h, -h, h).unwrap();
+            for i in 0..=20 {
+                for j in 0..=20 {
+                    let p = Point2::new(-h + 0.1 * h * i as f64, -h + 0.1 * h * j as f64);
+                    assert!(c.evaluate(p) > 0.99, "{p}");
+                }
+            }
+            assert!(c.polylines(&vp, None).unwrap().is_empty());
+        }
+        // The same terms about a conic that passes the view: drawn, on it.
+        let pair = Conic::new(1.0, 0.0, -1.0, 0.0, 0.0, 1e-30).unwrap();
+        let lines = pair.polylines(&vp(), None).unwrap();
+        assert!(!lines.is_empty());
+        let circle = Conic::new(1.0, 0.0, 1.0, 0.0, 0.0, -1e-6).unwrap();
+        let lines = circle.polylines(&vp(), None).unwrap();
+        assert!(!lines.is_empty());
+        for p in lines.iter().flatten() {
+            assert!((p.coords.norm() - 1e-3).abs() <= 1e-5, "{p}");
+        }
     }
 
     #[test]

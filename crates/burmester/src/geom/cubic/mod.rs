@@ -236,11 +236,45 @@ impl Cubic {
             + x * (c[1] + y * (c[4] + y * c[8]) + x * (c[3] + y * c[7] + x * c[6]))
     }
 
+    /// The value and the rounding scale of the curve at `p` when its local
+    /// coefficients are each known to within `err` (in the units of the
+    /// stored coefficients, whose largest is 1): `(f, B, |grad f|, m)` with
+    /// `f` as [`Cubic::evaluate`] (`f(u m) / m^3`, `m` of
+    /// [`LocalFrame::local_scaled`], 1 for points within `1e100` frame
+    /// units), `B = sum (|c_ij| + err_ij) |u|^i |v|^j` the bound on the
+    /// terms of that evaluation in the same scaling, and the gradient's
+    /// length (local units) in the same scaling (`grad f(u m) / m^2`).
+    /// `None` for a point whose local coordinates are not finite.
+    pub(crate) fn value_and_bound(
+        &self,
+        p: Point2<f64>,
+        err: &[f64; 10],
+    ) -> Option<(f64, f64, f64, f64)> {
+        let (u, m) = self.local_scaled(p);
+        if !(u.iter().all(|v| v.is_finite()) && m.is_finite()) {
+            return None;
+        }
+        let f = self.eval_scaled(u, m);
+        let g = self.grad_scaled(u, m).norm();
+        let a: [f64; 10] = core::array::from_fn(|i| self.c[i].abs() + err[i]);
+        let (x, y) = (u.x.abs(), u.y.abs());
+        let cubic = a[6] * x * x * x + a[7] * x * x * y + a[8] * x * y * y + a[9] * y * y * y;
+        let quad = a[3] * x * x + a[4] * x * y + a[5] * y * y;
+        let lin = a[1] * x + a[2] * y;
+        let bound = if m == 1.0 {
+            cubic + quad + lin + a[0]
+        } else {
+            cubic + (quad + (lin + a[0] / m) / m) / m
+        };
+        Some((f, bound, g, m))
+    }
+
     /// Whether `p` is on the curve within the distance `tol`, and its
     /// first-order distance: on when the distance is at most `tol`, or when
     /// `f(p)` is zero within rounding (at a singular point the first-order
-    /// distance means nothing). The rule of
-    /// [`ON_CURVE_TOLERANCE`](crate::synthesis::curves::ON_CURVE_TOLERANCE).
+    /// distance means nothing). The four-pose curves use this rule with a
+    /// band derived from their coefficients' rounding
+    /// ([`ON_CURVE_TOLERANCE`](crate::synthesis::curves::ON_CURVE_TOLERANCE)).
     ///
     /// ```
     /// use burmester::Point2;
@@ -498,6 +532,23 @@ impl Cubic {
             .filter(|t| t.is_finite() && *t > 0.0)
             .unwrap_or(viewport.diagonal() * Self::DEFAULT_TOLERANCE);
         trace::trace(self, viewport, tol)
+    }
+
+    /// The polylines of [`Cubic::polylines`] with the given points of the
+    /// curve as vertices (see `trace::trace_marked`), each vertex with the
+    /// index of the mark it is: the pieces between two marks are the
+    /// curve's own, whatever the viewport.
+    pub(crate) fn polylines_marked(
+        &self,
+        viewport: &Viewport,
+        marks: &[Point2<f64>],
+    ) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
+        trace::trace_marked(
+            self,
+            viewport,
+            viewport.diagonal() * Self::DEFAULT_TOLERANCE,
+            marks,
+        )
     }
 
     /// The polylines of [`Cubic::trace`] with the default tolerance, every

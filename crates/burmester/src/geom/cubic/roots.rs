@@ -88,6 +88,118 @@ pub(crate) fn roots_in(p: &[f64], lo: f64, hi: f64) -> Vec<f64> {
     roots
 }
 
+/// The real roots in `[lo, hi]` of a function known as a polynomial `p`
+/// and, more accurately, by `value(x) = (v, band)`: its value and the
+/// rounding band of that value (zero within rounding where `|v| <= band`).
+/// Sorted, each with its multiplicity (1 or 2). Between the critical points
+/// of `p` the function is monotone (to rounding): a change of sign of `v`
+/// between two of them is a simple root (found by bisection on `v`); a
+/// critical point where `v` is zero within its band is a double root (two
+/// roots that merge, or a pair of complex roots, within rounding). So the
+/// count with multiplicity changes only where the data decide it. A root
+/// within rounding of `lo` or `hi` is simple unless it is a critical point:
+/// search a wider interval than the one wanted.
+pub(crate) fn roots_in_mult(
+    p: &[f64],
+    lo: f64,
+    hi: f64,
+    value: &dyn Fn(f64) -> (f64, f64),
+) -> Vec<(f64, usize)> {
+    let mut n = p.len();
+    while n > 0 && p[n - 1] == 0.0 {
+        n -= 1;
+    }
+    let p = &p[..n];
+    if n <= 1 || !(lo <= hi) || p.iter().any(|c| !c.is_finite()) {
+        return Vec::new();
+    }
+    let crit = roots_in(&derivative(p), lo, hi);
+    let mut knots = Vec::with_capacity(crit.len() + 2);
+    knots.push((lo, false));
+    knots.extend(
+        crit.into_iter()
+            .filter(|&c| c > lo && c < hi)
+            .map(|c| (c, true)),
+    );
+    knots.push((hi, false));
+    let vals: Vec<(f64, bool)> = knots
+        .iter()
+        .map(|&(k, _)| {
+            let (v, band) = value(k);
+            (v, v.abs() <= band)
+        })
+        .collect();
+    let mut roots = Vec::new();
+    for (&(k, critical), &(_, zero)) in knots.iter().zip(&vals) {
+        if zero {
+            roots.push((k, if critical { 2 } else { 1 }));
+        }
+    }
+    for i in 0..knots.len() - 1 {
+        let ((va, za), (vb, zb)) = (vals[i], vals[i + 1]);
+        if za || zb || (va < 0.0) == (vb < 0.0) {
+            continue;
+        }
+        // Bisection on the accurate value.
+        let (mut a, mut b) = (knots[i].0, knots[i + 1].0);
+        let mut fa = va;
+        for _ in 0..200 {
+            let m = 0.5 * (a + b);
+            if !(m > a && m < b) {
+                break;
+            }
+            let (v, _) = value(m);
+            if v == 0.0 {
+                a = m;
+                b = m;
+                break;
+            }
+            if (v < 0.0) == (fa < 0.0) {
+                a = m;
+                fa = v;
+            } else {
+                b = m;
+            }
+        }
+        roots.push((0.5 * (a + b), 1));
+    }
+    roots.sort_by(|x, y| x.0.total_cmp(&y.0));
+    roots.dedup_by(|x, y| (x.0 - y.0).abs() <= 4.0 * f64::EPSILON * x.0.abs().max(y.0.abs()));
+    roots
+}
+
+/// The real roots of a binary form with their multiplicity, as angles in
+/// `[0, pi)`, sorted, with its accurate value and rounding band at a
+/// direction given by `value(wx, wy)` (see [`roots_in_mult`]). The two charts
+/// of [`form_roots`], each searched beyond its half (`|u| <= 3/2`) so that
+/// no root of the half lies at an end of the interval searched.
+pub(crate) fn form_roots_mult(
+    f: &[f64],
+    value: &dyn Fn(f64, f64) -> (f64, f64),
+) -> Vec<(f64, usize)> {
+    if f.iter().all(|&c| c == 0.0) || f.iter().any(|c| !c.is_finite()) {
+        return Vec::new();
+    }
+    let mut angles: Vec<(f64, usize)> = roots_in_mult(f, -1.5, 1.5, &|u| value(1.0, u))
+        .into_iter()
+        .filter(|(u, _)| u.abs() <= 1.0)
+        .map(|(u, m)| (u.atan().rem_euclid(PI), m))
+        .collect();
+    let rev: Vec<f64> = f.iter().rev().copied().collect();
+    angles.extend(
+        roots_in_mult(&rev, -1.5, 1.5, &|v| value(v, 1.0))
+            .into_iter()
+            .filter(|(v, _)| v.abs() < 1.0)
+            .map(|(v, m)| (1.0f64.atan2(v), m)),
+    );
+    angles.sort_by(|a, b| a.0.total_cmp(&b.0));
+    angles.dedup_by(|x, y| (x.0 - y.0).abs() <= 1e-13);
+    if angles.len() > 1 && angles[0].0 + PI - angles[angles.len() - 1].0 <= 1e-13 {
+        angles.pop();
+    }
+    angles
+}
+
 /// `p(x)` and `p'(x)` by Horner's scheme.
 #[inline]
 fn eval_with_slope(p: &[f64], x: f64) -> (f64, f64) {

@@ -236,11 +236,96 @@ impl View {
     }
 }
 
+/// A vertex of a marked trace (local): the point, and the index of the
+/// mark it is (`None` for a vertex of the sampling or an edge crossing).
+type Marked = (Vector2<f64>, Option<usize>);
+
 pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace {
+    let (trace, _) = trace_impl(cubic, viewport, tol, &[]);
+    trace
+}
+
+/// The polylines of [`trace`] with given points of the curve made
+/// vertices: each mark inside the viewport is placed on its loop by the
+/// pencil's parameter (as an edge crossing is) and the loop is sampled from
+/// knot to knot, so the mark is a vertex, exactly, between the curve's own
+/// points on either side of it. Every vertex comes with the index of the
+/// mark it is. A mark that cannot be placed on a loop (a singular point,
+/// a curve traced as a line and a conic) is inserted into the nearest
+/// chord within the chord tolerance, if any.
+pub(super) fn trace_marked(
+    cubic: &Cubic,
+    viewport: &Viewport,
+    tol: f64,
+    marks: &[Point2<f64>],
+) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
+    let local: Vec<Vector2<f64>> = marks.iter().map(|m| cubic.local_of(*m)).collect();
+    let (trace, marked) = trace_impl(cubic, viewport, tol, &local);
+    let mut out: Vec<Vec<(Point2<f64>, Option<usize>)>> = match marked {
+        Some(lines) => lines
+            .into_iter()
+            .map(|l| {
+                l.into_iter()
+                    .map(|(v, m)| match m {
+                        Some(k) => (marks[k], Some(k)),
+                        None => (cubic.global_of(v), None),
+                    })
+                    .collect()
+            })
+            .collect(),
+        None => trace
+            .polylines()
+            .into_iter()
+            .map(|l| l.into_iter().map(|p| (p, None)).collect())
+            .collect(),
+    };
+    // Marks not placed on a loop: into the nearest chord.
+    let placed: Vec<bool> = (0..marks.len())
+        .map(|k| out.iter().flatten().any(|(_, m)| *m == Some(k)))
+        .collect();
+    let inside = |p: &Point2<f64>| {
+        p.x >= viewport.xmin && p.x <= viewport.xmax && p.y >= viewport.ymin && p.y <= viewport.ymax
+    };
+    for (k, m) in marks.iter().enumerate() {
+        if placed[k] || !inside(m) || !(m.x.is_finite() && m.y.is_finite()) {
+            continue;
+        }
+        let mut best: Option<(f64, usize, usize)> = None;
+        for (li, l) in out.iter().enumerate() {
+            for (i, w) in l.windows(2).enumerate() {
+                let (a, b) = (w[0].0, w[1].0);
+                let ab = b - a;
+                let u =
+                    ((m - a).dot(&ab) / ab.norm_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+                let d = (a + ab * u - m).norm();
+                if best.is_none_or(|(bd, ..)| d < bd) {
+                    best = Some((d, li, i));
+                }
+            }
+        }
+        if let Some((d, li, i)) = best {
+            if d <= trace.tolerance {
+                out[li].insert(i + 1, (*m, Some(k)));
+            }
+        }
+    }
+    out
+}
+
+/// [`trace`], and with marks the polylines with the marks as vertices
+/// (`None` when the curve was traced as a line and a conic).
+#[allow(clippy::type_complexity)]
+fn trace_impl(
+    cubic: &Cubic,
+    viewport: &Viewport,
+    tol: f64,
+    marks: &[Vector2<f64>],
+) -> (CubicTrace, Option<Vec<Vec<Marked>>>) {
     let empty = CubicTrace {
         components: Vec::new(),
         tolerance: tol,
     };
+    let empty = (empty, None);
     let lo = cubic.local_of(Point2::new(viewport.xmin, viewport.ymin));
     let hi = cubic.local_of(Point2::new(viewport.xmax, viewport.ymax));
     let finite = lo.iter().chain(hi.iter()).all(|v| v.is_finite());
@@ -266,7 +351,7 @@ pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace 
     };
     if tangent_is_component(cubic, q, radius) {
         if let Some(t) = trace_factored(cubic, q, viewport, &view) {
-            return t;
+            return (t, None);
         }
     }
     let g = cubic.grad_local(q);
@@ -288,9 +373,20 @@ pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace 
             on_loop[k].push((lambda, x));
         }
     }
+    // Each mark inside the viewport on its loop.
+    let mut marks_on: Vec<Vec<(f64, Vector2<f64>, usize)>> = vec![Vec::new(); loops.len()];
+    for (k, &x) in marks.iter().enumerate() {
+        if x.iter().all(|v| v.is_finite()) && view.inside(x) {
+            if let Some((lp, lambda)) = place(&pencil, &loops, x, &view) {
+                marks_on[lp].push((lambda, x, k));
+            }
+        }
+    }
+    let mut marked_lines: Vec<Vec<Marked>> = Vec::new();
     let mut components = Vec::with_capacity(loops.len() + 1);
-    for (lp, mut cs) in loops.iter().zip(on_loop) {
+    for ((lp, mut cs), mut ms) in loops.iter().zip(on_loop).zip(marks_on) {
         cs.sort_by(|a, b| a.0.total_cmp(&b.0));
+        ms.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut polylines = Vec::new();
         let mut closed = false;
         if cs.is_empty() {
@@ -302,7 +398,20 @@ pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace 
                     pencil.point(sm, sheet_m, tangent_m, view.tol),
                 ) {
                     if view.inside(pm) {
-                        polylines.extend(sample(&pencil, lp, 0.0, lp.period(), p0, p0, &view));
+                        if ms.is_empty() {
+                            let lines = sample(&pencil, lp, 0.0, lp.period(), p0, p0, &view);
+                            marked_lines.extend(untagged(&lines));
+                            polylines.extend(lines);
+                        } else {
+                            // From the first mark around to it again.
+                            let mut knots: Vec<(f64, Vector2<f64>, Option<usize>)> =
+                                ms.iter().map(|&(l, x, k)| (l, x, Some(k))).collect();
+                            let (l0, x0, k0) = ms[0];
+                            knots.push((l0 + lp.period(), x0, Some(k0)));
+                            let lines = sample_knots(&pencil, lp, &knots, &view);
+                            polylines.extend(lines.iter().map(|l| l.iter().map(|v| v.0).collect()));
+                            marked_lines.extend(lines);
+                        }
                         closed = true;
                     }
                 }
@@ -322,7 +431,31 @@ pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace 
                 let (sm, sheet, tangent) = lp.at(0.5 * (la + lb));
                 match pencil.point(sm, sheet, tangent, view.tol) {
                     Some(pm) if view.inside(pm) => {
-                        polylines.extend(sample(&pencil, lp, la, lb, xa, xb, &view));
+                        // The marks on the way (their parameter lifted into
+                        // `(la, lb)`).
+                        let mut knots = vec![(la, xa, None)];
+                        let mut inner: Vec<(f64, Vector2<f64>, Option<usize>)> = ms
+                            .iter()
+                            .flat_map(|&(l, x, k)| {
+                                [l, l + lp.period()]
+                                    .into_iter()
+                                    .filter(move |&l| l > la && l < lb)
+                                    .map(move |l| (l, x, Some(k)))
+                            })
+                            .collect();
+                        inner.sort_by(|a, b| a.0.total_cmp(&b.0));
+                        let plain = inner.is_empty();
+                        knots.extend(inner);
+                        knots.push((lb, xb, None));
+                        if plain {
+                            let lines = sample(&pencil, lp, la, lb, xa, xb, &view);
+                            marked_lines.extend(untagged(&lines));
+                            polylines.extend(lines);
+                        } else {
+                            let lines = sample_knots(&pencil, lp, &knots, &view);
+                            polylines.extend(lines.iter().map(|l| l.iter().map(|v| v.0).collect()));
+                            marked_lines.extend(lines);
+                        }
                     }
                     _ => {}
                 }
@@ -339,10 +472,76 @@ pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace 
             closed,
         });
     }
-    CubicTrace {
-        components,
-        tolerance: view.tol * cubic.scale,
+    marked_lines.retain(|l| l.len() >= 2 && l.iter().any(|p| p.0 != l[0].0));
+    (
+        CubicTrace {
+            components,
+            tolerance: view.tol * cubic.scale,
+        },
+        Some(marked_lines),
+    )
+}
+
+/// Polylines with no marks.
+fn untagged(lines: &[Vec<Vector2<f64>>]) -> Vec<Vec<Marked>> {
+    lines
+        .iter()
+        .map(|l| l.iter().map(|&v| (v, None)).collect())
+        .collect()
+}
+
+/// Samples a loop from knot to knot (parameters increasing; the points
+/// given exactly, each with its mark), joined into polylines through the
+/// knots: each knot is a vertex, with its mark.
+fn sample_knots(
+    pencil: &Pencil<'_>,
+    lp: &Loop,
+    knots: &[(f64, Vector2<f64>, Option<usize>)],
+    view: &View,
+) -> Vec<Vec<Marked>> {
+    let mut out: Vec<Vec<Marked>> = Vec::new();
+    let mut current: Vec<Marked> = Vec::new();
+    for w in knots.windows(2) {
+        let ((la, xa, ta), (lb, xb, tb)) = (w[0], w[1]);
+        if !(lb > la) {
+            continue;
+        }
+        let pieces = sample(pencil, lp, la, lb, xa, xb, view);
+        let last = pieces.len().saturating_sub(1);
+        for (i, piece) in pieces.into_iter().enumerate() {
+            let n = piece.len();
+            let tagged: Vec<Marked> = piece
+                .into_iter()
+                .enumerate()
+                .map(|(j, v)| {
+                    let tag = if i == 0 && j == 0 && v == xa {
+                        ta
+                    } else if i == last && j + 1 == n && v == xb {
+                        tb
+                    } else {
+                        None
+                    };
+                    (v, tag)
+                })
+                .collect();
+            let joins = current
+                .last()
+                .zip(tagged.first())
+                .is_some_and(|(a, b)| a.0 == b.0 && a.1.is_some() && a.1 == b.1);
+            if joins {
+                current.extend(tagged.into_iter().skip(1));
+            } else {
+                if current.len() >= 2 {
+                    out.push(core::mem::take(&mut current));
+                }
+                current = tagged;
+            }
+        }
     }
+    if current.len() >= 2 {
+        out.push(current);
+    }
+    out
 }
 
 /// A point of the curve near the viewport and away from singular points:
@@ -357,6 +556,10 @@ fn choose_point(cubic: &Cubic, center: Vector2<f64>, radius: f64) -> Option<Vect
             let w = Vector2::new(ang.cos(), ang.sin()) * radius.max(f64::MIN_POSITIVE);
             let coeffs = cubic.restriction_local(base, w);
             for u in real_roots(&coeffs) {
+                // Refined on the curve's own value: the base (the view's
+                // center) may be far from the curve, and the pencil's point
+                // is a vertex of the trace.
+                let u = cubic.refine_on_line(base, w, u);
                 let x = base + w * u;
                 if x.iter().all(|v| v.is_finite()) {
                     cands.push(x);
@@ -584,6 +787,9 @@ fn edge_crossings(cubic: &Cubic, view: &View) -> Vec<Vector2<f64>> {
     for (m, h) in edges {
         let coeffs = cubic.restriction_local(m, h);
         for u in roots_in(&coeffs, -1.0, 1.0) {
+            // Refined on the curve's own value: the restriction's
+            // coefficients lose the digits that the edge's place cancels.
+            let u = cubic.refine_on_line(m, h, u).clamp(-1.0, 1.0);
             let mut x = m + h * u;
             // Exactly on the edge and inside the viewport.
             x.x = x.x.clamp(lo.x, hi.x);

@@ -188,8 +188,14 @@ impl FilemonArcs {
     }
 
     /// The branch class of a driving circle point `A1`: free when the four
-    /// signs agree, a boundary where one is zero (a toggle at a pose).
+    /// signs agree, a boundary where one is zero (a toggle at a pose) or
+    /// where `A1` is `C1` (within [`crate::tolerance::POINT`] task sizes:
+    /// every sign is zero there, and a curve with a line of centers whose
+    /// circle point is `C1` would otherwise be labelled by rounding).
     pub fn classify_circle_point(&self, a1: Point2<f64>) -> Branch {
+        if (a1 - self.driven.circle).norm() <= crate::tolerance::POINT * self.four.size() {
+            return Branch::Boundary;
+        }
         let s = self.circle_signs(a1);
         if s.iter().any(|&v| v == 0.0 || v.is_nan()) {
             Branch::Boundary
@@ -210,38 +216,195 @@ impl FilemonArcs {
         Ok(self.classify_circle_point(self.four.circle_point(a0)?))
     }
 
-    /// The branch-free arcs of the circle-point curve in view: the traced
-    /// curve ([`crate::geom::Cubic::trace`], default tolerance) cut where
-    /// the class changes, each cut replaced by the exact arc end (or `C1`)
-    /// it lies at.
+    /// The branch-free arcs of the circle-point curve in view.
+    ///
+    /// The class of a driving circle point changes only where it crosses
+    /// an extreme Filemon line (the exact arc ends) and at `C1` (where
+    /// every sign is zero; never free). The traced curve
+    /// ([`crate::geom::Cubic::trace`], default tolerance) is sampled with
+    /// those points as vertices, exactly (placed on the curve by the
+    /// tracer's own parameter), so each piece between two of them is a
+    /// stretch of the curve of one class, labelled by its vertices; the
+    /// free pieces are joined across the arc ends they share and cut at
+    /// `C1`. The arcs are the same in every view: the arcs of a smaller
+    /// view are those of a larger one, clipped.
     pub fn free_circle_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        let mut cuts: Vec<Point2<f64>> = self.ends.iter().map(|e| e.circle).collect();
-        cuts.push(self.driven.circle);
-        let polylines = self.four.circle_point_curve().polylines(viewport);
-        free_runs(split_by(&polylines, &cuts, |p| {
+        let mut marks: Vec<Point2<f64>> = self.ends.iter().map(|e| e.circle).collect();
+        marks.push(self.driven.circle);
+        let lines = self
+            .four
+            .circle_point_curve()
+            .polylines_marked(viewport, &marks);
+        free_pieces(&lines, marks.len() - 1, |p| {
             Some(self.classify_circle_point(p) == Branch::Free)
-        }))
+        })
     }
 
     /// The branch-free arcs of the center-point curve in view (the driving
-    /// center points whose dyads pass the poses in one assembly mode), cut
-    /// at the centers of the exact arc ends (and at `C0`).
+    /// center points whose dyads pass the poses in one assembly mode): as
+    /// [`free_circle_arcs`](Self::free_circle_arcs), with the centers of
+    /// the exact arc ends and `C0` (never free) as the vertices where the
+    /// class may change, each traced point classified by its circle point.
     pub fn free_center_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        let mut cuts: Vec<Point2<f64>> = self.ends.iter().filter_map(|e| e.center).collect();
-        cuts.push(self.driven.center);
-        let polylines = self.four.center_point_curve().polylines(viewport);
-        free_runs(split_by(&polylines, &cuts, |p| {
-            Some(self.classify_center_point(p) == Ok(Branch::Free))
-        }))
+        let mut marks: Vec<Point2<f64>> = self.ends.iter().filter_map(|e| e.center).collect();
+        marks.push(self.driven.center);
+        let lines = self
+            .four
+            .center_point_curve()
+            .polylines_marked(viewport, &marks);
+        free_pieces(&lines, marks.len() - 1, |p| {
+            self.classify_center_point(p)
+                .ok()
+                .map(|b| b == Branch::Free)
+        })
     }
 }
 
-/// The polylines of the runs labelled free.
-fn free_runs(runs: Vec<(bool, Vec<Point2<f64>>)>) -> Vec<Vec<Point2<f64>>> {
-    runs.into_iter()
-        .filter(|(free, _)| *free)
-        .map(|(_, p)| p)
-        .collect()
+/// The free arcs of polylines whose marked vertices (`Some(index)`) are
+/// the only places where the label can change: each polyline is cut at its
+/// marks into pieces, a piece is labelled by the majority of its vertices
+/// between the marks (a piece whose labels disagree, where a change was not
+/// marked, is cut where they change, as [`split_by`] does), and
+/// consecutive free pieces are joined except at the mark `never` (never
+/// free), also around a closed polyline.
+fn free_pieces(
+    lines: &[Vec<(Point2<f64>, Option<usize>)>],
+    never: usize,
+    free: impl Fn(Point2<f64>) -> Option<bool>,
+) -> Vec<Vec<Point2<f64>>> {
+    let mut out = Vec::new();
+    for line in lines {
+        if line.len() < 2 {
+            continue;
+        }
+        // Cut at the marks.
+        let mut pieces: Vec<&[(Point2<f64>, Option<usize>)]> = Vec::new();
+        let mut start = 0;
+        for i in 1..line.len() {
+            if line[i].1.is_some() || i + 1 == line.len() {
+                pieces.push(&line[start..=i]);
+                start = i;
+            }
+        }
+        // Each piece's runs of one label; `joins` tells whether a run may
+        // be joined to the run before it (they meet at a mark other than
+        // `never`).
+        let mut runs: Vec<(bool, Vec<Point2<f64>>, bool)> = Vec::new();
+        for piece in pieces {
+            let inner: Vec<Point2<f64>> = piece
+                .iter()
+                .enumerate()
+                .filter(|(j, v)| v.1.is_none() || (*j != 0 && *j + 1 != piece.len()))
+                .map(|(_, v)| v.0)
+                .collect();
+            let labels: Vec<Option<bool>> = inner.iter().map(|&p| free(p)).collect();
+            let joinable = piece[0].1.is_some_and(|k| k != never);
+            let (yes, no) = labels.iter().fold((0, 0), |(y, n), l| match l {
+                Some(true) => (y + 1, n),
+                Some(false) => (y, n + 1),
+                None => (y, n),
+            });
+            let points: Vec<Point2<f64>> = piece.iter().map(|v| v.0).collect();
+            if yes + no == labels.len() && (yes == 0 || no == 0) && !labels.is_empty() {
+                runs.push((yes > 0, points, joinable));
+            } else {
+                // Labels disagree or are missing: cut where they change.
+                let cuts: Vec<Point2<f64>> = piece
+                    .iter()
+                    .filter(|v| v.1.is_some())
+                    .map(|v| v.0)
+                    .collect();
+                // A mark at an end takes the label of its neighbour.
+                let n = piece.len();
+                let label_at = |j: usize| -> Option<bool> {
+                    let j = if piece[j].1.is_some() && n > 2 {
+                        if j == 0 { 1 } else { n - 2 }
+                    } else {
+                        j
+                    };
+                    if piece[j].1.is_some() {
+                        return None;
+                    }
+                    free(piece[j].0)
+                };
+                // The labels by the points' bits (a lookup, not a search: a
+                // piece may have a million vertices).
+                let all: std::collections::HashMap<(u64, u64), Option<bool>> = (0..n)
+                    .map(|j| {
+                        let p = piece[j].0;
+                        ((p.x.to_bits(), p.y.to_bits()), label_at(j))
+                    })
+                    .collect();
+                let split = split_by(&[points], &cuts, |p| {
+                    all.get(&(p.x.to_bits(), p.y.to_bits())).copied().flatten()
+                });
+                // A free run ends at a vertex or a mark, never at the middle
+                // of a chord where an unmarked change was cut: the change is
+                // somewhere on that chord, so half of it may be defective (a
+                // tiny oval of a nearly singular curve that crosses an
+                // extreme line where the arc ends do not resolve it).
+                let exact = |p: &Point2<f64>| {
+                    all.contains_key(&(p.x.to_bits(), p.y.to_bits())) || cuts.contains(p)
+                };
+                for (i, (l, mut pts)) in split.into_iter().enumerate() {
+                    if l {
+                        if pts.last().is_some_and(|p| !exact(p)) {
+                            pts.pop();
+                        }
+                        if pts.first().is_some_and(|p| !exact(p)) {
+                            pts.remove(0);
+                        }
+                        if pts.len() < 2 {
+                            continue;
+                        }
+                    }
+                    runs.push((l, pts, i == 0 && joinable));
+                }
+            }
+        }
+        // Join free runs that meet at a mark other than `never`.
+        let mut joined: Vec<Vec<Point2<f64>>> = Vec::new();
+        let mut open: Option<Vec<Point2<f64>>> = None;
+        for (is_free, pts, joins) in runs {
+            match (&mut open, is_free) {
+                (Some(cur), true) if joins && cur.last() == pts.first() => {
+                    cur.extend(pts.into_iter().skip(1));
+                }
+                (_, true) => {
+                    if let Some(done) = open.take() {
+                        joined.push(done);
+                    }
+                    open = Some(pts);
+                }
+                (_, false) => {
+                    if let Some(done) = open.take() {
+                        joined.push(done);
+                    }
+                }
+            }
+        }
+        if let Some(done) = open {
+            joined.push(done);
+        }
+        // Around a closed polyline: the last free run goes on into the
+        // first when they meet at the polyline's start (not a mark, or a
+        // mark other than `never`).
+        let closed = line[0].0 == line[line.len() - 1].0;
+        let start_ok = line[0].1.is_none_or(|k| k != never);
+        if closed && start_ok && joined.len() >= 2 {
+            let first_at_start = joined[0].first() == Some(&line[0].0);
+            let last_at_end = joined[joined.len() - 1].last() == Some(&line[0].0);
+            if first_at_start && last_at_end {
+                let first = joined.remove(0);
+                if let Some(last) = joined.last_mut() {
+                    last.extend(first.into_iter().skip(1));
+                }
+            }
+        }
+        out.extend(joined);
+    }
+    out.retain(|l| l.len() >= 2);
+    out
 }
 
 /// The order of directions by angle when they lie in an open half-plane

@@ -164,3 +164,32 @@ pub(crate) fn bad_driven() -> Error {
     }
     .into()
 }
+
+/// Three of five poses are rotations about one point `p` (1-based poses).
+pub(crate) fn rotations_about_one_point(poses: [usize; 3], p: Point2<f64>) -> Error {
+    let [i, j, k] = poses;
+    DegenerateError::RotationsAboutOnePoint {
+        i,
+        j,
+        k,
+        x: p.x,
+        y: p.y,
+    }
+    .into()
+}
+
+/// Three of five poses with one angle and collinear positions (1-based).
+pub(crate) fn collinear_translations(poses: [usize; 3]) -> Error {
+    let [i, j, k] = poses;
+    DegenerateError::CollinearTranslations { i, j, k }.into()
+}
+
+/// Five poses whose Burmester points are not isolated.
+pub(crate) fn infinitely_many(what: &'static str) -> Error {
+    DegenerateError::InfinitelyManyBurmesterPoints { what }.into()
+}
+
+/// Five poses whose Burmester points the elimination does not resolve.
+pub(crate) fn unresolved(what: &'static str) -> Error {
+    DegenerateError::UnresolvedBurmesterPoints { what }.into()
+}

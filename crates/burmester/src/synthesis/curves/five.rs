@@ -4,13 +4,14 @@
 use nalgebra::{Matrix4, Point2, Vector2, Vector4};
 
 use super::errors;
-use super::motion::Motion;
+use super::motion::{Failure, Motion};
 use super::order::{Drive, drive};
 use super::{BURMESTER_RESIDUAL, COINCIDENT_POSES, DEGENERATE_CURVE};
 use crate::error::Result;
-use crate::geom::cubic::roots::{form_eval, form_mul, form_roots, form_sub, quadratic_roots};
-use crate::geom::{Cubic, LocalFrame, Pose, wrap_angle};
+use crate::geom::cubic::roots::{form_eval, form_mul, form_roots_mult, form_sub, quadratic_roots};
+use crate::geom::{Cubic, LocalFrame, Pose, cross, perp, wrap_angle};
 use crate::synthesis::Dyad;
+use crate::tolerance;
 
 /// A four-bar made of two Burmester dyads, classified for either dyad
 /// driving.
@@ -46,17 +47,43 @@ pub struct BurmesterFourBar {
 /// R(w) = (a g - c d)^2 - (a e - b d)(b g - c e)
 /// ```
 ///
-/// vanishes: a binary form of degree 8, whose real roots (found exactly,
-/// as roots of a polynomial on bounded intervals) are the directions from
-/// `Q` to `P_ik`, `P_jk` and the (at most four) real Burmester points. Each
-/// candidate is finished by Newton's method on the four circle equations
+/// vanishes: a binary form of degree 8, whose real roots are the
+/// directions from `Q` to `P_ik`, `P_jk` and the (at most four) real
+/// Burmester points (the other two roots are the circular points'). Along
+/// each the two quadratics share one root (both when they are
+/// proportional: two points on one line), or the root is at infinity where
+/// both curves have it as their asymptotic direction (a slider).
+///
+/// # Within rounding: double points, points at infinity, degenerate tasks
+///
+/// Every form carries a first-order bound on its rounding (the curves'
+/// coefficients from the poses, `Q`, each product), so `R` is evaluated
+/// with its rounding band ([`crate::tolerance::BURMESTER_EPS`]): its roots
+/// are found between its critical points, and a critical point where `R`
+/// is zero within the band is a **double root**: two Burmester points that
+/// merge, or a pair of complex ones, within rounding. It gives a double
+/// point, listed twice, so that the count with multiplicity (finite points
+/// and [`sliders`](FivePositions::sliders)) is 0, 2 or 4 in every frame.
+/// The curves share a point at infinity (a slider) when their asymptotic
+/// directions agree within the rounding of the computation and of the poses
+/// themselves (in the frame they are given in); a resultant that vanishes
+/// identically within that rounding for every choice of the shared poses
+/// means the points are not isolated (a typed error), as do three poses
+/// that are rotations about one point, or of one angle on a line. The
+/// elimination is taken from the best conditioned pole and the other
+/// choices in turn until every root gives a point: a Burmester point next
+/// to a shared pole merges with it in one elimination and not in another.
+///
+/// Each point is finished by Newton's method on the four circle equations
 /// `a_k(G) . z = b_k(G)` in the unknowns `(G, z)`, and kept when the five
 /// positions of its circle point are concyclic within
-/// [`BURMESTER_RESIDUAL`].
+/// [`BURMESTER_RESIDUAL`] (scaled by `(L / D)^2` for a center `D` away from
+/// positions spanning `L`, where a stretch of a line is as concyclic).
 #[derive(Clone, PartialEq)]
 pub struct FivePositions {
     motion: Motion,
     points: Vec<Dyad>,
+    sliders: Vec<BurmesterSlider>,
     curves: [Cubic; 2],
 }
 
@@ -66,8 +93,22 @@ impl core::fmt::Debug for FivePositions {
         f.debug_struct("FivePositions")
             .field("poses", &self.poses())
             .field("burmester_points", &self.points)
+            .field("sliders", &self.sliders)
             .finish()
     }
+}
+
+/// A Burmester point at infinity: a circle point whose five positions lie
+/// on a line (a slider: its crank's center point is at infinity in
+/// `direction`, and the moving pivot runs along the normal of
+/// `direction`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BurmesterSlider {
+    /// The circle point (the moving pivot at pose 1).
+    pub circle: Point2<f64>,
+    /// The unit direction in which the center point is at infinity (the
+    /// slider's line is normal to it); defined up to sign.
+    pub direction: Vector2<f64>,
 }
 
 impl FivePositions {
@@ -79,8 +120,19 @@ impl FivePositions {
     /// poses; the errors of [`super::FourPositions::new`] for the poses
     /// (four of them rotations about one point give
     /// [`crate::DegenerateError::CoincidentPoles`]: a continuum of dyads);
-    /// [`crate::DegenerateError::AllTranslations`] when all poses have one angle (a
-    /// pure translation).
+    /// [`crate::DegenerateError::AllTranslations`] when all poses have one
+    /// angle (a pure translation);
+    /// [`crate::DegenerateError::RotationsAboutOnePoint`] when three poses
+    /// are rotations about one point;
+    /// [`crate::DegenerateError::CollinearTranslations`] when three poses
+    /// have one angle and collinear positions;
+    /// [`crate::DegenerateError::InfinitelyManyBurmesterPoints`] when the
+    /// Burmester points are not isolated (the elimination vanishes
+    /// identically within its rounding, a line of common center points, or
+    /// a center with a line of circle points);
+    /// [`crate::DegenerateError::UnresolvedBurmesterPoints`] when no choice
+    /// of the shared poses gives a point for every root and an even count
+    /// (a task within rounding of a degenerate one).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         if poses.len() != 5 {
             return Err(errors::pose_count("FivePositions::new", 5, poses.len()));
@@ -98,13 +150,10 @@ impl FivePositions {
                 }
             }
         }
-        let (s, i, j) = best;
+        let (s, _, _) = best;
         if !(s > COINCIDENT_POSES) {
             return Err(errors::all_translations());
         }
-        let rest: Vec<usize> = (0..5).filter(|&k| k != i && k != j).collect();
-        let order = [i, j, rest[0], rest[1], rest[2]];
-        let sub = Motion::new(&order.map(|k| poses[k]))?;
         // Every four-pose curve must be proper: four poses that are all
         // rotations about one point leave a continuum of Burmester dyads.
         let rest = Motion::new(&poses[1..])?;
@@ -123,39 +172,65 @@ impl FivePositions {
                 return Err(errors::common_pole(p));
             }
         }
-        let mut candidates = candidates(&sub);
-        candidates
-            .iter_mut()
-            .for_each(|p| *p = motion.local_of(sub.global_of(*p)));
-        // Excluded: the three poles shared by the two cubics.
-        let excluded: Vec<Point2<f64>> = [(0, 1), (0, 2), (1, 2)]
-            .iter()
-            .filter_map(|&(a, b)| sub.dehomogenize(sub.pole(a, b)))
-            .collect();
-        let mut points: Vec<Dyad> = Vec::new();
-        for g0 in candidates {
-            let Some((g, z)) = newton(&motion, g0) else {
-                continue;
-            };
-            let dyad = Dyad::new(motion.global_of(g), motion.global_of(z));
-            let size = motion.scale + (dyad.center - motion.origin).norm();
-            if excluded
-                .iter()
-                .any(|p| (p - dyad.center).norm() <= 1e-9 * size)
-            {
-                continue;
+        degenerate_triples(&motion)?;
+        // The elimination from a pole `P_ij` shared by the curves of poses
+        // `i, j, k, l` and `i, j, k, m`: the best conditioned pole first,
+        // with each of the other three poses as `k`, then the other poles.
+        // A choice whose resultant vanishes identically is skipped (every
+        // choice does exactly when the points are not isolated); the first
+        // whose every root gives a Burmester point (or a slider) and whose
+        // count is even is taken: a Burmester point near one of the shared
+        // poles, in the direction of one, merges with it in that
+        // elimination and not in another. Failing every choice, the points
+        // are not resolved within rounding (a typed error).
+        let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
+        for a in 0..5 {
+            for b in a + 1..5 {
+                let s = (0.5 * wrap_angle(motion.theta[b] - motion.theta[a]))
+                    .sin()
+                    .abs();
+                if s > COINCIDENT_POSES {
+                    pairs.push((s, a, b));
+                }
             }
-            if residual(&motion, &dyad) > BURMESTER_RESIDUAL {
-                continue;
-            }
-            if points
-                .iter()
-                .any(|q| (q.center - dyad.center).norm() <= 1e-7 * size)
-            {
-                continue;
-            }
-            points.push(dyad);
         }
+        pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
+        let mut fallback: Option<(usize, Vec<Dyad>, Vec<BurmesterSlider>)> = None;
+        'choices: for &(_, i, j) in &pairs {
+            let others: Vec<usize> = (0..5).filter(|&k| k != i && k != j).collect();
+            for r in 0..3 {
+                let k = others[r];
+                let l: Vec<usize> = others.iter().copied().filter(|&x| x != k).collect();
+                let order = [i, j, k, l[0], l[1]];
+                let sub = Motion::new(&order.map(|x| poses[x]))?;
+                let Some(elim) = Elimination::new(&sub) else {
+                    continue;
+                };
+                let (points, sliders, lost) = elim.points(&sub, &motion)?;
+                let clean = lost == 0 && (points.len() + sliders.len()) % 2 == 0;
+                if fallback.as_ref().is_none_or(|f| lost < f.0) || clean {
+                    fallback = Some((lost, points, sliders));
+                }
+                if clean {
+                    break 'choices;
+                }
+            }
+        }
+        if let Some((lost, points, sliders)) = &fallback {
+            if *lost > 0 || (points.len() + sliders.len()) % 2 == 1 {
+                return Err(errors::unresolved(
+                    "from every choice of the shared poses a root of the elimination gives no \
+                     Burmester point, or the count with multiplicity is odd",
+                ));
+            }
+        }
+        let Some((_, mut points, sliders)) = fallback else {
+            return Err(errors::infinitely_many(
+                "the center-point curves of every two four-pose subsets that share three poses \
+                 have a common component (a curve of Burmester centers, or the line at \
+                 infinity: a family of sliders)",
+            ));
+        };
         points.sort_by(|a, b| {
             (a.center - motion.origin)
                 .norm()
@@ -169,6 +244,7 @@ impl FivePositions {
         Ok(FivePositions {
             motion,
             points,
+            sliders,
             curves,
         })
     }
@@ -184,11 +260,25 @@ impl FivePositions {
         self.motion.scale
     }
 
-    /// The real Burmester points as dyads (center point, circle point at
-    /// pose 1): none, two or four in practice (at most four), nearest the
-    /// task first.
+    /// The real Burmester points with a finite center, as dyads (center
+    /// point, circle point at pose 1), nearest the task first.
+    ///
+    /// With the [`sliders`](Self::sliders) (the Burmester points at
+    /// infinity) they number 0, 2 or 4: a double point (two points that
+    /// merge, or a pair of complex points, within the rounding of the
+    /// elimination: see the type's docs) is listed twice, as two equal
+    /// dyads. So five poses with collinear positions (whose reference point
+    /// is a slider) have 1 or 3 finite points and one slider. The count
+    /// does not depend on the frame the poses are given in.
     pub fn burmester_points(&self) -> &[Dyad] {
         &self.points
+    }
+
+    /// The real Burmester points at infinity (a double one listed twice):
+    /// the circle points whose five positions are collinear (see
+    /// [`burmester_points`](Self::burmester_points) for the count).
+    pub fn sliders(&self) -> &[BurmesterSlider] {
+        &self.sliders
     }
 
     /// The center-point curves of poses `1, 2, 3, 4` and `1, 2, 3, 5`: the
@@ -262,57 +352,532 @@ fn residual(m: &Motion, dyad: &Dyad) -> f64 {
     }
 }
 
-/// Candidate Burmester centers (local frame of `sub`): the points of the
-/// first cubic along the real roots of the resultant form from `P12`.
-fn candidates(sub: &Motion) -> Vec<Vector2<f64>> {
-    let h12 = sub.pole(0, 1);
-    if h12[2] == 0.0 {
-        return Vec::new();
-    }
-    let q = Vector2::new(h12[0] / h12[2], h12[1] / h12[2]);
-    let (f, _) = sub.form.cubic([1, 2, 3]);
-    let (h, _) = sub.form.cubic([1, 2, 4]);
-    let origin = Point2::origin();
-    let (f, h) = (
-        Cubic::from_local(f, origin, 1.0),
-        Cubic::from_local(h, origin, 1.0),
-    );
-    let forms = |k: &Cubic| {
-        let g = k.grad_local(q);
-        let hh = k.hessian_local(q);
-        (
-            k.cubic_form().to_vec(),
-            vec![0.5 * hh[0], hh[1], 0.5 * hh[2]],
-            vec![g.x, g.y],
-        )
-    };
-    let (a, b, c) = forms(&f);
-    let (d, e, g) = forms(&h);
-    let agcd = form_sub(&form_mul(&a, &g), &form_mul(&c, &d));
-    let aebd = form_sub(&form_mul(&a, &e), &form_mul(&b, &d));
-    let bgce = form_sub(&form_mul(&b, &g), &form_mul(&c, &e));
-    let res = form_sub(&form_mul(&agcd, &agcd), &form_mul(&aebd, &bgce));
-    let mut out = Vec::new();
-    for s in form_roots(&res) {
-        let (sn, cs) = s.sin_cos();
-        let (fa, fb, fc) = (
-            form_eval(&a, cs, sn),
-            form_eval(&b, cs, sn),
-            form_eval(&c, cs, sn),
-        );
-        let mut ts = quadratic_roots(fa, fb, fc);
-        if ts.is_empty() && fa != 0.0 {
-            // A double root lost to rounding.
-            ts.push(-fb / (2.0 * fa));
-        }
-        for t in ts {
-            let p = q + Vector2::new(cs, sn) * t;
-            if p.iter().all(|v| v.is_finite()) {
-                out.push(p);
+/// Three poses that make the Burmester points of five degenerate: three
+/// rotations about one point (their three poles coincide), or three poses
+/// of one angle with collinear positions
+/// ([`Motion::collinear_translations`]).
+fn degenerate_triples(m: &Motion) -> Result<()> {
+    let finite = |h: [f64; 3]| (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2]));
+    for i in 0..5 {
+        for j in i + 1..5 {
+            for k in j + 1..5 {
+                let poles = [m.pole(i, j), m.pole(i, k), m.pole(j, k)].map(finite);
+                if let [Some(a), Some(b), Some(c)] = poles {
+                    let size = 1.0 + a.norm().max(b.norm()).max(c.norm());
+                    let spread = (a - b).norm().max((a - c).norm()).max((b - c).norm());
+                    if spread <= tolerance::BURMESTER_COMMON_POLE * size {
+                        return Err(errors::rotations_about_one_point(
+                            [i + 1, j + 1, k + 1],
+                            m.global_of((a + b + c) / 3.0),
+                        ));
+                    }
+                }
             }
         }
     }
-    out
+    if let Some(t) = m.collinear_translations() {
+        return Err(errors::collinear_translations(t.map(|k| k + 1)));
+    }
+    Ok(())
+}
+
+/// A binary form with a first-order bound on its rounding error, in units
+/// of `eps`: per coefficient, a nonnegative form `e` such that the value at
+/// `w` is off by at most about `eps e(|w|)` (the inputs' own rounding scales
+/// carried through the products and differences, and the rounding of each
+/// operation).
+#[derive(Debug, Clone)]
+struct Bounded {
+    v: Vec<f64>,
+    e: Vec<f64>,
+}
+
+impl Bounded {
+    fn abs(&self) -> Vec<f64> {
+        self.v.iter().map(|x| x.abs()).collect()
+    }
+
+    fn mul(&self, o: &Bounded) -> Bounded {
+        let (a, b) = (self.abs(), o.abs());
+        let first = form_mul(&a, &o.e);
+        let second = form_mul(&self.e, &b);
+        let terms = form_mul(&a, &b);
+        Bounded {
+            v: form_mul(&self.v, &o.v),
+            e: (0..first.len())
+                .map(|i| first[i] + second[i] + terms[i])
+                .collect(),
+        }
+    }
+
+    fn sub(&self, o: &Bounded) -> Bounded {
+        Bounded {
+            v: form_sub(&self.v, &o.v),
+            e: (0..self.v.len())
+                .map(|i| self.e[i] + o.e[i] + self.v[i].abs() + o.v[i].abs())
+                .collect(),
+        }
+    }
+
+    /// The value at `w` and its error bound (in units of `eps`, with the
+    /// rounding of the evaluation).
+    fn at(&self, w: Vector2<f64>) -> (f64, f64) {
+        let (ax, ay) = (w.x.abs(), w.y.abs());
+        (
+            form_eval(&self.v, w.x, w.y),
+            form_eval(&self.e, ax, ay) + form_eval(&self.abs(), ax, ay),
+        )
+    }
+}
+
+/// Whether a value is zero within the rounding band of its bound.
+fn negligible(v: f64, bound: f64) -> bool {
+    v.abs() <= tolerance::BURMESTER_EPS * f64::EPSILON * bound
+}
+
+/// A shared pole of the two cubics other than `Q`: a point (local) or a
+/// direction at infinity.
+#[derive(Debug, Clone, Copy)]
+enum SharedPole {
+    At(Vector2<f64>),
+    Infinite(Vector2<f64>),
+}
+
+/// A common point of the two cubics found along a line from `Q`.
+#[derive(Debug, Clone, Copy)]
+enum Common {
+    At(Vector2<f64>),
+    Infinite(Vector2<f64>),
+}
+
+/// The elimination of the Burmester centers of five poses from the
+/// center-point curves `f` of poses `1, 2, 3, 4` and `h` of poses
+/// `1, 2, 3, 5` (of the ordered `sub`), along the lines through their
+/// common point `Q = P12` (see [`FivePositions`]), with the rounding bound
+/// of every form.
+struct Elimination {
+    q: Vector2<f64>,
+    /// `a, b, c` of `f` and `d, e, g` of `h` along the line `Q + t w`.
+    forms: [Bounded; 6],
+    /// The resultant `R(w)`.
+    r: Bounded,
+    /// `P13` and `P23`.
+    poles: [SharedPole; 2],
+    /// The real asymptotic direction the two curves share (within
+    /// rounding), if any: a common point at infinity.
+    asymptote: Option<Vector2<f64>>,
+}
+
+impl Elimination {
+    /// The elimination for `sub`; `None` when the resultant vanishes
+    /// identically within its rounding (the curves share a component not
+    /// through `Q`, or a conic through it), or the cubic part of a curve
+    /// does (the line at infinity is a component of it).
+    fn new(sub: &Motion) -> Option<Self> {
+        let th = wrap_angle(sub.theta[1] - sub.theta[0]);
+        let (sn, cs) = (0.5 * th).sin_cos();
+        if sn == 0.0 {
+            return None;
+        }
+        let mid = (sub.pos[0] + sub.pos[1]) * 0.5;
+        let half = (sub.pos[1] - sub.pos[0]) * 0.5;
+        let cot = cs / sn;
+        let q = mid + perp(half) * cot;
+        // The rounding scale of `Q` (in units of eps): the midpoint, and the
+        // cotangent of the half angle times the half chord.
+        let dq = 4.0 * (mid.norm() + half.norm() * (cot.abs() + th.abs() / (2.0 * sn * sn)));
+        // The inputs' own rounding in this frame (a point's coordinates are
+        // known to half an ulp, an angle too): carried with the rounding of
+        // the coefficients, so that what is decided within rounding (a
+        // double root, a common point at infinity, a resultant that
+        // vanishes) is decided alike for the task moved, turned or scaled.
+        let (dp, da) = sub.data_rounding;
+        let at_q = |rows: [usize; 3], with_data: bool| -> [Bounded; 3] {
+            let (c, m) = sub.form.cubic_bounds(rows);
+            let data = sub.form.cubic_data_bounds(rows, sub.pos[0], dp, da);
+            let top = c.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            let top = if top > 0.0 && top.is_finite() {
+                top
+            } else {
+                1.0
+            };
+            let w = if with_data { 1.0 } else { 0.0 };
+            let m: [f64; 10] = core::array::from_fn(|i| (m[i] + w * data[i]) / top);
+            let c = c.map(|v| v / top);
+            let (x, y) = (q.x, q.y);
+            let (ax, ay) = (x.abs(), y.abs());
+            let grad = |c: &[f64; 10], x: f64, y: f64| {
+                [
+                    c[1] + 2.0 * c[3] * x
+                        + c[4] * y
+                        + 3.0 * c[6] * x * x
+                        + 2.0 * c[7] * x * y
+                        + c[8] * y * y,
+                    c[2] + c[4] * x
+                        + 2.0 * c[5] * y
+                        + c[7] * x * x
+                        + 2.0 * c[8] * x * y
+                        + 3.0 * c[9] * y * y,
+                ]
+            };
+            let hess = |c: &[f64; 10], x: f64, y: f64| {
+                [
+                    2.0 * c[3] + 6.0 * c[6] * x + 2.0 * c[7] * y,
+                    c[4] + 2.0 * c[7] * x + 2.0 * c[8] * y,
+                    2.0 * c[5] + 2.0 * c[8] * x + 6.0 * c[9] * y,
+                ]
+            };
+            let g = grad(&c, x, y);
+            let h = hess(&c, x, y);
+            // The error scale of each coefficient: its own rounding (the
+            // expansion in magnitudes) and that of the evaluation.
+            let ca = c.map(f64::abs);
+            let cm: [f64; 10] = core::array::from_fn(|i| m[i] + ca[i]);
+            let gm0 = grad(&cm, ax, ay);
+            let hm0 = hess(&cm, ax, ay);
+            // And `Q`'s rounding, through the next derivative.
+            let third = [
+                6.0 * cm[6] + 2.0 * cm[7],
+                2.0 * cm[7] + 2.0 * cm[8],
+                2.0 * cm[8] + 6.0 * cm[9],
+            ];
+            let hm = [0, 1, 2].map(|i| hm0[i] + third[i] * dq);
+            let gm = [
+                gm0[0] + (hm0[0] + hm0[1]) * dq,
+                gm0[1] + (hm0[1] + hm0[2]) * dq,
+            ];
+            [
+                Bounded {
+                    v: vec![c[6], c[7], c[8], c[9]],
+                    e: vec![m[6], m[7], m[8], m[9]],
+                },
+                Bounded {
+                    v: vec![0.5 * h[0], h[1], 0.5 * h[2]],
+                    e: vec![0.5 * hm[0], hm[1], 0.5 * hm[2]],
+                },
+                Bounded {
+                    v: g.to_vec(),
+                    e: gm.to_vec(),
+                },
+            ]
+        };
+        // The forms with the rounding of the computation, which decides the
+        // roots (a double root where the resultant touches zero within it),
+        // and with the inputs' rounding too, which decides what must not
+        // depend on the frame: a resultant that vanishes, a common point at
+        // infinity.
+        let [a, b, c] = at_q([1, 2, 3], false);
+        let [d, e, g] = at_q([1, 2, 4], false);
+        let [ad, bd, cd] = at_q([1, 2, 3], true);
+        let [dd, ed, gd] = at_q([1, 2, 4], true);
+        let resultant = |[a, b, c, d, e, g]: [&Bounded; 6]| {
+            let agcd = a.mul(g).sub(&c.mul(d));
+            let aebd = a.mul(e).sub(&b.mul(d));
+            let bgce = b.mul(g).sub(&c.mul(e));
+            agcd.mul(&agcd).sub(&aebd.mul(&bgce))
+        };
+        let r = resultant([&a, &b, &c, &d, &e, &g]);
+        let rd = resultant([&ad, &bd, &cd, &dd, &ed, &gd]);
+        if rd
+            .v
+            .iter()
+            .zip(&rd.e)
+            .all(|(v, e)| negligible(*v, *e + v.abs()))
+            || r.v.iter().any(|v| !v.is_finite())
+        {
+            return None;
+        }
+        let shared = |j: usize, k: usize| {
+            let h = sub.pole(j, k);
+            if h[2] != 0.0 {
+                SharedPole::At(Vector2::new(h[0] / h[2], h[1] / h[2]))
+            } else {
+                let d = Vector2::new(h[0], h[1]);
+                SharedPole::Infinite(d / d.norm())
+            }
+        };
+        // The cubic part of a circular cubic is `(x^2 + y^2)(alpha x + beta y)`:
+        // its real asymptotic direction is normal to `(alpha, beta)`.
+        let normal = |k: &Bounded| {
+            let v = Vector2::new(0.5 * (k.v[0] + k.v[2]), 0.5 * (k.v[1] + k.v[3]));
+            let e = Vector2::new(
+                0.5 * (k.e[0] + k.e[2] + k.v[0].abs() + k.v[2].abs()),
+                0.5 * (k.e[1] + k.e[3] + k.v[1].abs() + k.v[3].abs()),
+            );
+            (v, e)
+        };
+        let ((nf, ef), (nh, eh)) = (normal(&ad), normal(&dd));
+        // A curve whose cubic part is zero within rounding has the line at
+        // infinity for a component (every direction a slider's): this
+        // choice is degenerate.
+        if [(nf, ef), (nh, eh)]
+            .iter()
+            .any(|(n, e)| negligible(n.x, e.x) && negligible(n.y, e.y))
+        {
+            return None;
+        }
+        let common = negligible(
+            cross(nf, nh),
+            nf.x.abs() * eh.y + ef.x * nh.y.abs() + nf.y.abs() * eh.x + ef.y * nh.x.abs(),
+        );
+        let n = if nf.norm() >= nh.norm() { nf } else { nh };
+        let asymptote = (common && n.norm() > 0.0).then(|| perp(n) / n.norm());
+        Some(Elimination {
+            q,
+            forms: [a, b, c, d, e, g],
+            r,
+            poles: [shared(0, 2), shared(1, 2)],
+            asymptote,
+        })
+    }
+
+    /// The Burmester points and sliders of this elimination (`motion` the
+    /// task's own), each finished on the four circle equations and checked
+    /// ([`polish`]), with the count with multiplicity of the roots that gave
+    /// none (lost).
+    fn points(
+        &self,
+        sub: &Motion,
+        motion: &Motion,
+    ) -> Result<(Vec<Dyad>, Vec<BurmesterSlider>, usize)> {
+        let (finite, infinite) = self.solve()?;
+        let mut points = Vec::new();
+        let mut lost = 0;
+        for (g0, mult) in finite {
+            let g0 = motion.local_of(sub.global_of(g0));
+            match polish(motion, g0, mult)? {
+                Some(dyad) => points.extend(core::iter::repeat_n(dyad, mult)),
+                None => lost += mult,
+            }
+        }
+        let mut sliders = Vec::new();
+        for (u, mult) in infinite {
+            let circle = motion
+                .form
+                .solve_at_infinity(u, &[1, 2, 3, 4])
+                .ok()
+                .map(|z| motion.global_of(z))
+                .filter(|c| c.x.is_finite() && c.y.is_finite());
+            match circle {
+                Some(circle) => sliders.extend(core::iter::repeat_n(
+                    BurmesterSlider {
+                        circle,
+                        direction: u,
+                    },
+                    mult,
+                )),
+                None => lost += mult,
+            }
+        }
+        Ok((points, sliders, lost))
+    }
+
+    /// The resultant at `w` from the forms' values there (more accurate
+    /// than its expanded coefficients, whose terms cancel), and its
+    /// rounding band: [`tolerance::BURMESTER_EPS`] `eps` times a
+    /// first-order bound on its error (the forms' own errors through the
+    /// products, and the rounding of each).
+    fn resultant_at(&self, w: Vector2<f64>) -> (f64, f64) {
+        let [a, b, c, d, e, g] = self.forms.clone().map(|f| f.at(w));
+        // A product and a difference of `(value, error)` pairs.
+        let mul = |x: (f64, f64), y: (f64, f64)| {
+            let v = x.0 * y.0;
+            (v, x.0.abs() * y.1 + x.1 * y.0.abs() + v.abs())
+        };
+        let sub = |x: (f64, f64), y: (f64, f64)| {
+            let v = x.0 - y.0;
+            (v, x.1 + y.1 + v.abs())
+        };
+        let x = sub(mul(a, g), mul(c, d));
+        let y = sub(mul(a, e), mul(b, d));
+        let z = sub(mul(b, g), mul(c, e));
+        let r = sub(mul(x, x), mul(y, z));
+        (r.0, tolerance::BURMESTER_EPS * f64::EPSILON * r.1)
+    }
+
+    /// The common points of the two curves other than `Q`, `P13`, `P23`
+    /// and the circular points: `(centers (local), multiplicity)` and
+    /// `(directions at infinity, multiplicity)`.
+    ///
+    /// Each real root of the resultant (with its multiplicity: a double
+    /// root where it touches zero within its rounding) is a direction from
+    /// `Q` along which the two quadratics share a root: one, `t = (a g - c
+    /// d) / (b d - a e)`; both when the quadratics are proportional
+    /// (two common points on one line); at infinity when `a` and `d` vanish
+    /// (both curves' asymptotic direction). The poles `P13`, `P23` are
+    /// among them once each and are taken out.
+    #[allow(clippy::type_complexity)]
+    fn solve(&self) -> Result<(Vec<(Vector2<f64>, usize)>, Vec<(Vector2<f64>, usize)>)> {
+        let roots = form_roots_mult(&self.r.v, &|wx, wy| self.resultant_at(Vector2::new(wx, wy)));
+        let mut used = [false; 2];
+        let mut finite = Vec::new();
+        let mut infinite = Vec::new();
+        let far = 1.0 / (tolerance::BURMESTER_EPS * f64::EPSILON);
+        // The root of the common asymptotic direction: the nearest.
+        let gap = |s: f64, u: f64| {
+            let d = (s - u).rem_euclid(core::f64::consts::PI);
+            d.min(core::f64::consts::PI - d)
+        };
+        let at_infinity = self.asymptote.and_then(|u| {
+            let su = u.y.atan2(u.x);
+            roots
+                .iter()
+                .enumerate()
+                .map(|(i, &(s, _))| (i, gap(s, su)))
+                .filter(|&(_, g)| g <= ASYMPTOTE_MATCH)
+                .min_by(|x, y| x.1.total_cmp(&y.1))
+                .map(|(i, _)| i)
+        });
+        for (index, (s, mult)) in roots.into_iter().enumerate() {
+            let w = match (at_infinity == Some(index), self.asymptote) {
+                (true, Some(u)) => u,
+                _ => Vector2::new(s.cos(), s.sin()),
+            };
+            let [(av, am), (bv, bm), (cv, cm), (dv, dm), (ev, em), (gv, gm)] =
+                self.forms.clone().map(|f| f.at(w));
+            let line_f = negligible(av, am) && negligible(bv, bm) && negligible(cv, cm);
+            let line_h = negligible(dv, dm) && negligible(ev, em) && negligible(gv, gm);
+            if line_f && line_h {
+                return Err(errors::infinitely_many(
+                    "a line through a pole of three of them lies on the center-point curves of \
+                     two four-pose subsets (every point of it is a Burmester center)",
+                ));
+            }
+            // First-order error bounds of products (units of eps).
+            let pb = |x: (f64, f64), y: (f64, f64)| x.0.abs() * y.1 + x.1 * y.0.abs();
+            let (a, b, c) = ((av, am), (bv, bm), (cv, cm));
+            let (d, e, g) = ((dv, dm), (ev, em), (gv, gm));
+            let mut cands: Vec<Common> = Vec::new();
+            if at_infinity == Some(index)
+                || (self.asymptote.is_none() && negligible(av, am) && negligible(dv, dm))
+            {
+                cands.push(Common::Infinite(w));
+                // A finite common root on the same line as well.
+                if mult >= 2 && negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b)) && bv != 0.0 {
+                    cands.push(Common::At(self.q + w * (-cv / bv)));
+                }
+            } else {
+                let num = av * gv - cv * dv;
+                let den = bv * dv - av * ev;
+                if negligible(den, pb(b, d) + pb(a, e)) && negligible(num, pb(a, g) + pb(c, d)) {
+                    for t in quadratic_roots(av, bv, cv) {
+                        cands.push(Common::At(self.q + w * t));
+                    }
+                } else {
+                    // The root of `f`'s quadratic where `h`'s is nearest zero
+                    // (relative to its terms): accurate for far points too,
+                    // where the formula's numerator and denominator cancel.
+                    let rel = |t: f64| {
+                        (dv * t * t + ev * t + gv).abs()
+                            / (dv.abs() * t * t + ev.abs() * t.abs() + gv.abs())
+                    };
+                    let t = quadratic_roots(av, bv, cv)
+                        .into_iter()
+                        .filter(|t| t.is_finite())
+                        .min_by(|x, y| rel(*x).total_cmp(&rel(*y)))
+                        .unwrap_or(num / den);
+                    if t.is_finite() && t.abs() <= far {
+                        cands.push(Common::At(self.q + w * t));
+                    } else {
+                        cands.push(Common::Infinite(w));
+                    }
+                }
+            }
+            let each = if cands.len() == 1 { mult } else { 1 };
+            for cand in cands {
+                let mut m = each;
+                for (k, pole) in self.poles.iter().enumerate() {
+                    if used[k] || m == 0 {
+                        continue;
+                    }
+                    let hit = match (cand, pole) {
+                        (Common::At(p), SharedPole::At(x)) => {
+                            (p - x).norm() <= POLE_MATCH * (1.0 + x.norm())
+                        }
+                        (Common::Infinite(u), SharedPole::Infinite(x)) => {
+                            cross(u, *x).abs() <= POLE_MATCH
+                        }
+                        _ => false,
+                    };
+                    if hit {
+                        used[k] = true;
+                        m -= 1;
+                    }
+                }
+                if m > 0 {
+                    match cand {
+                        Common::At(p) => finite.push((p, m)),
+                        Common::Infinite(u) => infinite.push((u, m)),
+                    }
+                }
+            }
+        }
+        Ok((finite, infinite))
+    }
+}
+
+/// A shared pole and a common point found along a line from `Q` are the
+/// same when they agree within this (local units, plus the pole's distance;
+/// radians for directions at infinity).
+const POLE_MATCH: f64 = 1e-6;
+
+/// The root of the resultant nearest the curves' common asymptotic
+/// direction, within this many radians, is that common point at infinity.
+const ASYMPTOTE_MATCH: f64 = 1e-6;
+
+/// A Burmester center found by the elimination (local, `motion`'s frame),
+/// finished by Newton's method on the four circle equations (kept only
+/// when it lowers the crank-length spread and stays near: a double point
+/// is as well placed as its rounding allows), and checked: `None` when
+/// its crank length varies by more than [`BURMESTER_RESIDUAL`] (not a
+/// Burmester point) or its circle point is at infinity.
+///
+/// # Errors
+///
+/// [`crate::DegenerateError::InfinitelyManyBurmesterPoints`] when the four
+/// equations leave a whole line of circle points at the center.
+fn polish(m: &Motion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>> {
+    let z0 = match m.form.solve(g0, &[1, 2, 3, 4]) {
+        Ok(z) => z,
+        Err(Failure::Undefined) => {
+            return Err(errors::infinitely_many(
+                "a Burmester center has a whole line of circle points (the four conditions at \
+                 it are one)",
+            ));
+        }
+        Err(Failure::AtInfinity(_)) => return Ok(None),
+    };
+    let start = Dyad::new(m.global_of(g0), m.global_of(z0));
+    let mut best = (residual(m, &start), start);
+    if let Some((g, z)) = newton(m, g0) {
+        let d = Dyad::new(m.global_of(g), m.global_of(z));
+        let reach = if mult > 1 { 1e-6 } else { 1e-3 } * (1.0 + g0.norm());
+        let r = residual(m, &d);
+        if (g - g0).norm() <= reach && r <= best.0 {
+            best = (r, d);
+        }
+    }
+    // The crank-length spread of a point `D` task sizes out along the
+    // normal of a line through the positions is about `(L / D)^2` (`L` the
+    // span of the positions): far out, a Burmester point is told from a
+    // stretch of line only that well, and rounding allows `64 eps` of the
+    // coordinates over the crank's length.
+    let (r, d) = best;
+    let positions: Vec<Point2<f64>> = (0..m.poses.len())
+        .map(|k| m.displace(d.circle, 0, k))
+        .collect();
+    let span = positions
+        .iter()
+        .flat_map(|a| positions.iter().map(move |b| (a - b).norm()))
+        .fold(0.0, f64::max);
+    let radius = (d.center - d.circle).norm().max(span);
+    let coords = positions
+        .iter()
+        .map(|p| p.coords.norm())
+        .fold(d.center.coords.norm(), f64::max);
+    let allowed = (BURMESTER_RESIDUAL * (span / radius).powi(2))
+        .max(64.0 * f64::EPSILON * (1.0 + coords / radius));
+    Ok((r <= allowed).then_some(d))
 }
 
 /// Newton's method on the four circle equations `a_k(G) . z = b_k(G)`

@@ -17,6 +17,7 @@ use crate::error::{Result, out_of_memory, try_push};
 use crate::geom::{Cubic, LocalFrame, Pose, Viewport, wrap_angle};
 use crate::linkage::{AngleInterval, AssemblyMode, FourBar, InputRange};
 use crate::synthesis::Dyad;
+use crate::tolerance;
 
 /// The six pairs of four poses (0-based), in the order `12, 13, 14, 23, 24, 34`.
 const PAIRS: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
@@ -88,6 +89,17 @@ impl CurveDyad {
         Dyad::new(self.center, self.circle)
     }
 }
+
+/// A dyad of the crank-rotation parametrisation whose three conditions,
+/// after the corrections, are off by more than this relative to their terms
+/// is not given ([`FourPositions::dyad_at`]): the formulas lost every digit.
+const POLISHED: f64 = 1e-8;
+
+/// The most distance from a curve (relative to the task size plus the
+/// point's distance from the task) at which a point whose dyad solves the
+/// three conditions within their rounding is on the curve
+/// ([`FourPositions::on_curve`]).
+const ON_CURVE_LOOSE: f64 = 1e-6;
 
 /// The crank-rotation parametrisation counts a dyad as at infinity when
 /// the best pair of its equations in `(W, Z)` is this close to singular
@@ -248,6 +260,11 @@ pub struct FourPositions {
     motion: Motion,
     center_curve: Cubic,
     circle_curve: Cubic,
+    /// Per coefficient of each stored curve (center, circle), the scale of
+    /// its rounding from the poses, in the units of the stored
+    /// coefficients (the expansion with every number in magnitude, over
+    /// the largest coefficient).
+    bounds: [[f64; 10]; 2],
     compat: Option<Compat>,
 }
 
@@ -275,7 +292,12 @@ impl FourPositions {
     /// for two equal poses (within [`super::COINCIDENT_POSES`]);
     /// [`crate::DegenerateError::CoincidentPoles`] when the poses are all
     /// rotations about one point (the curve vanishes identically, within
-    /// [`super::DEGENERATE_CURVE`]).
+    /// [`super::DEGENERATE_CURVE`]);
+    /// [`crate::DegenerateError::CollinearTranslations`] when three poses
+    /// have one angle and collinear positions (every dyad through them is a
+    /// slider: no finite center point);
+    /// [`crate::DegenerateError::AllTranslations`] when all four have one
+    /// angle (every dyad's crank is one vector: the curve degenerates).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         if poses.len() != 4 {
             return Err(errors::pose_count("FourPositions::new", 4, poses.len()));
@@ -284,14 +306,19 @@ impl FourPositions {
         // Four poses of one angle are translations: every pole is at
         // infinity and no dyad passes them (the curve's equation is a
         // nonzero constant, or vanishes).
-        if poses[1..]
+        if motion
+            .theta
             .iter()
-            .all(|p| wrap_angle(p.angle - poses[0].angle) == 0.0)
+            .all(|t| wrap_angle(*t).abs() <= super::COINCIDENT_POSES)
         {
             return Err(errors::all_translations());
         }
-        let curve = |form: &super::motion::LinearForm| -> Result<Cubic> {
-            let (f, mag) = form.cubic([1, 2, 3]);
+        if let Some(t) = motion.collinear_translations() {
+            return Err(errors::collinear_translations(t.map(|k| k + 1)));
+        }
+        let curve = |form: &super::motion::LinearForm| -> Result<(Cubic, [f64; 10])> {
+            let (f, mags) = form.cubic_bounds([1, 2, 3]);
+            let mag = mags.iter().fold(0.0f64, |m, v| m.max(*v));
             let max = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             if !(max > DEGENERATE_CURVE * mag) {
                 // Rotations about one point: their common pole (never the
@@ -301,15 +328,19 @@ impl FourPositions {
                     None => Err(errors::all_translations()),
                 };
             }
-            Ok(Cubic::from_local(f, motion.origin, motion.scale))
+            Ok((
+                Cubic::from_local(f, motion.origin, motion.scale),
+                mags.map(|m| m / max),
+            ))
         };
-        let center_curve = curve(&motion.form)?;
-        let circle_curve = curve(&motion.form.inverse())?;
+        let (center_curve, center_bounds) = curve(&motion.form)?;
+        let (circle_curve, circle_bounds) = curve(&motion.form.inverse())?;
         let compat = Compat::new(&motion).ok();
         Ok(FourPositions {
             motion,
             center_curve,
             circle_curve,
+            bounds: [center_bounds, circle_bounds],
             compat,
         })
     }
@@ -353,11 +384,59 @@ impl FourPositions {
         Ok(self.motion.displace(z, i - 1, j - 1))
     }
 
-    /// The largest accepted distance of `p` from a curve:
-    /// [`ON_CURVE_TOLERANCE`] times the task size plus the distance of `p`
-    /// from the task's centroid.
-    fn on_curve_tolerance(&self, p: Point2<f64>) -> f64 {
-        ON_CURVE_TOLERANCE * (self.motion.scale + (p - self.motion.origin).norm())
+    /// Whether `p` lies on the center-point curve (`circle == false`) or
+    /// the circle-point curve, with its first-order distance from it and
+    /// the largest accepted distance (see [`ON_CURVE_TOLERANCE`]): the
+    /// larger of [`ON_CURVE_TOLERANCE`] times the task size plus the
+    /// distance of `p` from the task's centroid, and the rounding band of
+    /// the curve at `p` ([`tolerance::ON_CURVE_EPS`]): the curve's value
+    /// within that many `eps` of the bound on its terms (the rounding of
+    /// its coefficients from the poses and of the evaluation) over its
+    /// gradient, plus the rounding of the point's coordinates. A point
+    /// whose value is within the band is on the curve wherever the
+    /// gradient vanishes (a singular point).
+    pub(crate) fn on_curve(&self, p: Point2<f64>, circle: bool) -> (bool, f64, f64) {
+        let (curve, bounds) = if circle {
+            (&self.circle_curve, &self.bounds[1])
+        } else {
+            (&self.center_curve, &self.bounds[0])
+        };
+        let (origin, scale) = (self.motion.origin, self.motion.scale);
+        let dist = curve.distance_estimate(p);
+        let relative = ON_CURVE_TOLERANCE * (scale + (p - origin).norm());
+        let Some((f, bound, grad, m)) = curve.value_and_bound(p, bounds) else {
+            return (dist <= relative, dist, relative);
+        };
+        let band = tolerance::ON_CURVE_EPS * f64::EPSILON * bound;
+        // The point's own rounding: its coordinates and the frame's origin
+        // are known to half an ulp each.
+        let point =
+            tolerance::ON_CURVE_EPS * f64::EPSILON * (p.coords.norm() + origin.coords.norm());
+        let rounding = band / grad * m * scale + point;
+        let tol = if rounding.is_finite() {
+            relative.max(rounding)
+        } else {
+            relative
+        };
+        if dist <= tol || f.abs() <= band {
+            return (true, dist, tol);
+        }
+        // Where the task is ill-conditioned (nearly equal angles, a point
+        // millions of task sizes out) a point of the curve is known only as
+        // well as its dyad solves the three conditions: within the rounding
+        // of their terms (with the circle point), and within a millionth.
+        let form = if circle {
+            self.motion.form.inverse()
+        } else {
+            self.motion.form.clone()
+        };
+        let v = self.motion.local_of(p);
+        let dg = (p.coords.norm() + origin.coords.norm()) / scale;
+        let solved = dist <= ON_CURVE_LOOSE * (scale + (p - origin).norm())
+            && form
+                .consistency(v, &[1, 2, 3], dg)
+                .is_some_and(|r| r <= tolerance::ON_CURVE_EPS);
+        (solved, dist, tol)
     }
 
     /// Checks a point and returns it in the local frame.
@@ -380,17 +459,17 @@ impl FourPositions {
     ///
     /// # Errors
     ///
-    /// [`crate::InvalidInput::CountOutOfRange`] when `center` is farther than
-    /// [`ON_CURVE_TOLERANCE`] (relative to the task size plus its distance
-    /// from the task) from the curve, with that distance;
+    /// [`crate::InvalidInput::OffCurve`] when `center` is not on the curve
+    /// by the rule of [`ON_CURVE_TOLERANCE`] (relative to the task size
+    /// plus its distance from the task, or the curve's rounding band
+    /// there), with its distance and the tolerance;
     /// [`crate::DegenerateError::AtInfinity`] where the circle point is at
     /// infinity; [`crate::DegenerateError::Undefined`] where a whole line of
     /// circle points passes the four poses; [`crate::InvalidInput`] for a
     /// non-finite point.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
         let g = self.local_point(center, ["center point x", "center point y"])?;
-        let tol = self.on_curve_tolerance(center);
-        let (on, dist) = self.center_curve.is_on(center, tol);
+        let (on, dist, tol) = self.on_curve(center, false);
         if !on {
             return Err(errors::off_curve("center point", dist, tol));
         }
@@ -419,8 +498,7 @@ impl FourPositions {
     /// center at infinity is a slider).
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
         let z = self.local_point(circle, ["circle point x", "circle point y"])?;
-        let tol = self.on_curve_tolerance(circle);
-        let (on, dist) = self.circle_curve.is_on(circle, tol);
+        let (on, dist, tol) = self.on_curve(circle, true);
         if !on {
             return Err(errors::off_curve("circle point", dist, tol));
         }
@@ -601,8 +679,13 @@ impl FourPositions {
     ///
     /// As [`FourPositions::beta2_range`]; [`crate::AssemblyError::OutOfReach`]
     /// when `beta2` is outside that range; [`crate::DegenerateError::AtInfinity`]
-    /// where the dyad's center point is at infinity; [`crate::InvalidInput`]
-    /// for a non-finite angle.
+    /// where the dyad's center point is at infinity;
+    /// [`crate::DegenerateError::NotParametrizable`] where the formulas lose
+    /// every digit (rotations between the poses of about `1e-7` rad: the
+    /// dyad's conditions are off by more than `1e-8` of their terms after
+    /// the corrections, or its center or circle point is not on its curve
+    /// by [`FourPositions::circle_point`]'s test: a dyad given here is
+    /// always taken back); [`crate::InvalidInput`] for a non-finite angle.
     pub fn dyad_at(&self, beta2: f64, branch: AssemblyMode) -> Result<CurveDyad> {
         let c = self.compat()?;
         let conf = c.fourbar.solve(beta2 + c.arg[0], branch)?;
@@ -613,9 +696,21 @@ impl FourPositions {
         let q1 = cx(self.motion.pos[0]);
         let zl = q1 - z;
         let gl = zl - w;
-        let (gl, zl) = self.polish(Vector2::new(gl.re, gl.im), Vector2::new(zl.re, zl.im));
+        let (gl, zl, residual) =
+            self.polish(Vector2::new(gl.re, gl.im), Vector2::new(zl.re, zl.im));
+        // Where the crank-rotation formulas lose every digit (rotations of
+        // 1e-7 rad: they divide by the square of the angle) and the
+        // corrections cannot mend it, there is no dyad to give.
+        if !(residual <= POLISHED) {
+            return Err(errors::no_parametrization());
+        }
         let center = self.motion.global_of(gl);
         let circle = self.motion.global_of(zl);
+        // What the library gives it takes back: a dyad whose center or
+        // circle point the on-curve test refuses is not given.
+        if !(self.on_curve(center, false).0 && self.on_curve(circle, true).0) {
+            return Err(errors::no_parametrization());
+        }
         let dyad = Dyad::new(center, circle);
         Ok(CurveDyad {
             center,
@@ -626,36 +721,62 @@ impl FourPositions {
         })
     }
 
-    /// Two Gauss-Newton steps of a dyad `(g, z)` (local) onto the solutions
-    /// of the three equations `a_k(g) . z = b_k(g)` (the smallest change,
-    /// `-J^T (J J^T)^-1 F`), each kept only when it is a correction at the
-    /// level of rounding (below `1e-6` of the dyad's size).
-    fn polish(&self, mut g: Vector2<f64>, mut z: Vector2<f64>) -> (Vector2<f64>, Vector2<f64>) {
+    /// Gauss-Newton steps of a dyad `(g, z)` (local) onto the solutions of
+    /// the three equations `a_k(g) . z = b_k(g)` (the smallest change,
+    /// `-J^T (J J^T)^-1 F`), at most eight, each kept only when it is a
+    /// small correction (below `1e-4` of the dyad's size) that lowers the
+    /// residuals relative to their terms, until a step is at the level of
+    /// rounding. Where the task is ill-conditioned (nearly equal angles:
+    /// the crank-rotation formulas lose digits as the square of the angle)
+    /// the steps are what puts the dyad on the curve to rounding. Returns
+    /// the dyad and its largest residual relative to its terms.
+    fn polish(
+        &self,
+        mut g: Vector2<f64>,
+        mut z: Vector2<f64>,
+    ) -> (Vector2<f64>, Vector2<f64>, f64) {
         let form = &self.motion.form;
-        for _ in 0..2 {
+        let system = |g: Vector2<f64>, z: Vector2<f64>| {
             let mut jac = Matrix3x4::zeros();
             let mut res = Vector3::zeros();
+            let mut worst = 0.0f64;
             for (r, k) in (1..4).enumerate() {
                 let (a, b) = form.row(k, g);
                 let dg = form.row_dg(k, z);
                 res[r] = a.dot(&z) - b;
+                let terms = a.x.abs() * z.x.abs() + a.y.abs() * z.y.abs() + b.abs();
+                worst = worst.max(res[r].abs() / terms.max(f64::MIN_POSITIVE));
                 jac[(r, 0)] = dg.x;
                 jac[(r, 1)] = dg.y;
                 jac[(r, 2)] = a.x;
                 jac[(r, 3)] = a.y;
             }
+            (jac, res, worst)
+        };
+        let (mut jac, mut res, mut worst) = system(g, z);
+        for _ in 0..8 {
             let Some(y) = (jac * jac.transpose()).lu().solve(&res) else {
                 break;
             };
             let step = jac.transpose() * y;
             let size = 1.0 + g.norm() + z.norm();
-            if !(step.norm() <= 1e-6 * size) {
+            if !(step.norm() <= 1e-4 * size) {
                 break;
             }
-            g -= Vector2::new(step[0], step[1]);
-            z -= Vector2::new(step[2], step[3]);
+            let (g2, z2) = (
+                g - Vector2::new(step[0], step[1]),
+                z - Vector2::new(step[2], step[3]),
+            );
+            let (jac2, res2, worst2) = system(g2, z2);
+            if !(worst2 < worst) {
+                break;
+            }
+            (g, z, jac, res, worst) = (g2, z2, jac2, res2, worst2);
+            if step.norm() <= 4.0 * f64::EPSILON * size {
+                break;
+            }
         }
-        (g, z)
+        (g, z, worst)
     }
 
     /// The dyad of a center point on the curve, with its crank rotation

@@ -38,17 +38,22 @@ mod order;
 mod split;
 
 pub use branch::{ArcEnd, FilemonArcs};
-pub use five::{BurmesterFourBar, FivePositions};
+pub use five::{BurmesterFourBar, BurmesterSlider, FivePositions};
 pub use four::{CoincidencePoint, CurveDyad, FourPositions, OrderArc, Pole};
 pub use order::{CrankOrder, Drive, Turn};
 
 /// A point lies on a curve when its first-order distance from it
 /// ([`crate::geom::Cubic::distance_estimate`]) is at most this times the task
 /// size ([`FourPositions::size`]) plus the point's distance from the
-/// centroid of the pose points (or when the curve's value there is zero
-/// within rounding: at a singular point the first-order distance means
-/// nothing). Points of the traced curves, poles and Burmester points are
-/// within rounding (about `1e-15`) of their curves.
+/// centroid of the pose points, or at most the curve's rounding band there
+/// ([`crate::tolerance::ON_CURVE_EPS`]: the rounding of the curve's
+/// coefficients from the poses and of its evaluation, over the gradient,
+/// plus the rounding of the point's coordinates), or when the curve's value
+/// there is within that band (at a singular point the first-order distance
+/// means nothing). The band is what covers the library's own points where
+/// the curve is ill-conditioned (poses that are nearly rotations about one
+/// point, a nearly singular point of the curve): it moves, turns and
+/// scales with the task.
 pub const ON_CURVE_TOLERANCE: f64 = 1e-9;
 
 /// Two poses are the same when their points agree within this times the

@@ -90,6 +90,15 @@ impl LinearForm {
     /// by its magnitude (the scale of its rounding and of a vanishing
     /// determinant).
     pub(crate) fn cubic(&self, rows: [usize; 3]) -> ([f64; 10], f64) {
+        let (out, mag) = self.cubic_bounds(rows);
+        (out, mag.iter().fold(0.0, |m: f64, v| m.max(*v)))
+    }
+
+    /// The exact expansion of [`cubic`](Self::cubic) and, per coefficient,
+    /// the same expansion with every number replaced by its magnitude: the
+    /// scale of that coefficient's rounding (of the rows from the poses
+    /// and of the expansion), in the same units.
+    pub(crate) fn cubic_bounds(&self, rows: [usize; 3]) -> ([f64; 10], [f64; 10]) {
         let r = rows.map(|k| self.row_poly(k));
         let ra = r.map(|row| row.map(|p| p.map(f64::abs)));
         let mut out = [0.0; 10];
@@ -110,7 +119,84 @@ impl LinearForm {
                 mag[i] += bound[i];
             }
         }
-        (out, mag.iter().fold(0.0, |m: f64, v| m.max(*v)))
+        (out, mag)
+    }
+
+    /// A first-order bound, per coefficient, on the change of the expansion
+    /// of [`cubic`](Self::cubic) when the poses' positions move by up to
+    /// `dp` (local units) and their angles by up to `da` (radians), over
+    /// `eps`-sized changes: the inputs' own rounding carried through the
+    /// determinant (a point's coordinates are known to half an ulp, so a
+    /// task far from the origin for its size is known only that well in
+    /// its own frame).
+    pub(crate) fn cubic_data_bounds(
+        &self,
+        rows: [usize; 3],
+        q1: Vector2<f64>,
+        dp: f64,
+        da: f64,
+    ) -> [f64; 10] {
+        let r = rows.map(|k| self.row_poly(k));
+        let ra = r.map(|row| row.map(|p| p.map(f64::abs)));
+        // The change of each entry: `t_k = q_k - R_k q_1` by `2 dp + da |q_1|`,
+        // `conj(R_k) t_k` by that and `da |t_k|`, the rotation parts by `da`.
+        let err = rows.map(|k| {
+            let t = self.trans[k].norm();
+            let et = 2.0 * dp + da * q1.norm();
+            let eck = et + da * t;
+            [[eck, da, da], [eck, da, da], [t * et, et, et]]
+        });
+        let mut out = [0.0; 10];
+        const PERMS: [[usize; 3]; 6] = [
+            [0, 1, 2],
+            [1, 2, 0],
+            [2, 0, 1],
+            [0, 2, 1],
+            [2, 1, 0],
+            [1, 0, 2],
+        ];
+        for p in PERMS {
+            let (a, b, c) = (ra[0][p[0]], ra[1][p[1]], ra[2][p[2]]);
+            let (ea, eb, ec) = (err[0][p[0]], err[1][p[1]], err[2][p[2]]);
+            for term in [
+                mul3(&mul2(&ea, &b), &c),
+                mul3(&mul2(&a, &eb), &c),
+                mul3(&mul2(&a, &b), &ec),
+            ] {
+                for i in 0..10 {
+                    out[i] += term[i];
+                }
+            }
+        }
+        out
+    }
+
+    /// How well `g` (local) solves the rows `ks` with the circle point of
+    /// their best conditioned pair: the largest residual `a_k(g) . z -
+    /// b_k(g)` over the bound on its terms in units of `eps` (the rows'
+    /// entries, `z`, and `g` itself known to `dg` plus its own rounding,
+    /// local units over `eps`, through the rows' derivative). `None` where
+    /// the rows have no unique circle point.
+    pub(crate) fn consistency(&self, g: Vector2<f64>, ks: &[usize], dg: f64) -> Option<f64> {
+        let z = self.solve(g, ks).ok()?;
+        let mut worst = 0.0f64;
+        for &k in ks {
+            let (ck, (mr, mi)) = self.parts(k);
+            let t = self.trans[k];
+            let (a, b) = self.row(k, g);
+            let (gx, gy) = (g.x.abs(), g.y.abs());
+            let ax = ck.x.abs() + mr.abs() * gx + mi.abs() * gy;
+            let ay = ck.y.abs() + mi.abs() * gx + mr.abs() * gy;
+            let bound = ax * z.x.abs()
+                + ay * z.y.abs()
+                + t.x.abs() * gx
+                + t.y.abs() * gy
+                + 0.5 * t.norm_squared()
+                + self.row_dg(k, z).norm() * (g.norm() + dg);
+            let r = (a.dot(&z) - b).abs() / (f64::EPSILON * bound);
+            worst = worst.max(if r.is_nan() { f64::INFINITY } else { r });
+        }
+        Some(worst)
     }
 
     /// The form of the inverted motion (the ground seen from the coupler
@@ -240,6 +326,9 @@ pub(crate) struct Motion {
     /// `theta_1k`, wrapped into `(-pi, pi]`.
     pub(crate) theta: Vec<f64>,
     pub(crate) form: LinearForm,
+    /// How far the poses' own rounding may move them in this frame, over
+    /// `eps`: their positions (local units) and their angles (radians).
+    pub(crate) data_rounding: (f64, f64),
 }
 
 impl LocalFrame for Motion {
@@ -343,6 +432,11 @@ impl Motion {
             .zip(&pos)
             .map(|(&(c, s), &q)| q - rotate_cs(pos[0], c, s))
             .collect();
+        let far = poses
+            .iter()
+            .map(|p| p.position.x.abs().max(p.position.y.abs()))
+            .fold(0.0, f64::max);
+        let turn = poses.iter().map(|p| p.angle.abs()).fold(0.0, f64::max);
         Ok(Motion {
             poses: poses.to_vec(),
             origin,
@@ -350,7 +444,35 @@ impl Motion {
             pos,
             theta,
             form: LinearForm { rot, trans },
+            data_rounding: (far / scale, 2.0 * turn),
         })
+    }
+
+    /// Three poses (0-based) of one angle (within
+    /// [`COINCIDENT_POSES`]) whose positions lie on a line (within
+    /// [`crate::tolerance::COLLINEAR`]), if any: every dyad through them is
+    /// a slider (its moving pivot's three positions are collinear), so no
+    /// finite center point passes them and the center-point curve is the
+    /// line at infinity, twice, and a line of centers at infinity.
+    pub(crate) fn collinear_translations(&self) -> Option<[usize; 3]> {
+        let n = self.poses.len();
+        let same = |a: usize, b: usize| {
+            wrap_angle(self.theta[a] - self.theta[b]).abs() <= COINCIDENT_POSES
+        };
+        for i in 0..n {
+            for j in i + 1..n {
+                for k in j + 1..n {
+                    if same(i, j) && same(i, k) {
+                        let (u, v) = (self.pos[j] - self.pos[i], self.pos[k] - self.pos[i]);
+                        let longest = u.norm_squared().max(v.norm_squared());
+                        if cross(u, v).abs() <= crate::tolerance::COLLINEAR * longest {
+                            return Some([i, j, k]);
+                        }
+                    }
+                }
+            }
+        }
+        None
     }
 
     /// `D_ij(z) = p_j + e^{i theta_ij} (z - p_i)` in the fixed frame
