@@ -3,6 +3,7 @@
 
     python benches/report.py --run          # run the benches, then write the report
     python benches/report.py                # only write the report from target/criterion
+    python benches/report.py --run --only drive_map   # one section, the others kept
 
 ``--run`` runs ``cargo bench`` for every bench named in SECTIONS and, when the
 ``burmester`` package is importable, the Python-side timings that SECTIONS
@@ -588,6 +589,43 @@ SECTIONS.append(
 )
 
 
+SECTIONS.append(
+    Section(
+        title="A motor for a swinging input: the drive map (`drive_map`)",
+        benches=["drive_map"],
+        prefixes=["drive_map/"],
+        ratios=[
+            Ratio(
+                "drive map / solution map per sample, 1024^2 each, into given columns, same run",
+                "drive_map/drive_map_into/1024",
+                "drive_map/solution_map_into/1024",
+                "<= 2 (issue 23)",
+                lambda r: r <= 2.0,
+            ),
+            Ratio(
+                "drive map / solution map per sample, 256^2 each, into given columns, same run",
+                "drive_map/drive_map_into/256",
+                "drive_map/solution_map_into/256",
+                "<= 2 (issue 23)",
+                lambda r: r <= 2.0,
+            ),
+        ],
+        note=(
+            "`DriveContext::map` for the built-in example's best linkage by transmission (a "
+            "triple-rocker, its input swinging), the attachment at its input joint, candidate "
+            "crank pivots over a square of half-width 4 |A - A0| about A0, default limits, no "
+            "constraints; against the example's solution map (`Filemon::solution_map_into`) "
+            "over its view on a grid of the same size, in the same run, so their ratio is the "
+            "cost per sample of one over the other. Each drive sample is exact and closed form: "
+            "the crank-rocker with the swing asked for, the drive loop's minimum transmission "
+            "over a full crank turn, the time ratio, the six-bar's link and size ratios (three "
+            "square roots, one `acos`, one `atan2`), on SIMD lanes picked at run time like the "
+            "solution map's kernel (the scalar path's bits). `drive_map` allocates its columns; "
+            "the `_into` figures reuse them."
+        ),
+    )
+)
+
 @dataclass
 class Figure:
     id: str
@@ -828,42 +866,56 @@ def write(figures: dict[str, Figure]) -> str:
     return "\n".join(lines)
 
 
-def update_sections(text: str, sections: list[Section], figures: dict[str, Figure]) -> str:
-    """``text`` (a BENCHMARKS.md) with ``sections`` rewritten from
-    ``figures`` (appended where missing); the rest as it was."""
-    full = write(figures).split("\n")
+def section_text(text: str) -> dict[str, str]:
+    """The ``## `` sections of a report, by title, each with its heading."""
+    parts: dict[str, str] = {}
+    title = None
+    for block in text.split("\n## ")[1:]:
+        title, _, body = block.partition("\n")
+        parts[title] = "## " + title + "\n" + body.rstrip("\n") + "\n"
+    return parts
+
+
+def write_only(figures: dict[str, Figure], sections: list[Section]) -> str:
+    """The existing report with only ``sections`` rewritten from this run's
+    figures (added at the end when new); every other section is kept as it
+    was, and each rewritten one says when it was measured."""
+    old = OUT.read_text() if OUT.exists() else write({})
+    fresh = section_text(write(figures))
+    stamp = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+    head, _, _ = old.partition("\n## ")
+    kept = section_text(old)
     for s in sections:
-        head = f"## {s.title}"
-        start = full.index(head)
-        end = next((k for k in range(start + 1, len(full)) if full[k].startswith("## ")), len(full))
-        block = "\n".join(full[start:end]).rstrip("\n") + "\n"
-        lines = text.split("\n")
-        if head in lines:
-            a = lines.index(head)
-            b = next((k for k in range(a + 1, len(lines)) if lines[k].startswith("## ")), len(lines))
-            text = "\n".join(lines[:a]) + "\n" + block + ("\n" + "\n".join(lines[b:]) if b < len(lines) else "")
-        else:
-            text = text.rstrip("\n") + "\n\n" + block
-    return text.rstrip("\n") + "\n"
+        note = (f"(This section alone measured {stamp}, `python benches/report.py --run --only "
+                f"{' '.join(s.benches)}`; the others come from an earlier run. Its ratios are "
+                "within this one run.)\n\n")
+        body = fresh[s.title]
+        heading, _, rest = body.partition("\n\n")
+        kept[s.title] = heading + "\n\n" + note + rest
+    return head.rstrip("\n") + "\n\n" + "\n".join(kept.values()).rstrip("\n")
 
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--run", action="store_true", help="run the benches first")
+    ap.add_argument("--only", nargs="+", metavar="BENCH", default=None,
+                    help="only the sections of these cargo benches: run them (with --run) and rewrite "
+                         "their sections of BENCHMARKS.md, keeping the others")
     ap.add_argument("--python-repeat", type=int, default=20)
-    ap.add_argument("--only", metavar="BENCH", default=None,
-                    help="run only the sections of this cargo bench and rewrite only them in "
-                    "BENCHMARKS.md (the other sections keep their figures of an earlier full run)")
     ap.add_argument("criterion_args", nargs="*", help="passed to criterion (after --)")
     args = ap.parse_args()
     if args.only is not None:
-        sections = [s for s in SECTIONS if args.only in s.benches]
-        if not sections:
-            ap.error(f"no section runs the bench {args.only!r}")
-        run_benches(sections, args.criterion_args)
-        run_python(sections, args.python_repeat)
-        text = update_sections(OUT.read_text() if OUT.exists() else write({}), sections, load_criterion())
-        OUT.write_text(text)
+        chosen = [s for s in SECTIONS if set(s.benches) & set(args.only)]
+        if not chosen:
+            ap.error(f"no section runs the benches {args.only}")
+        if args.run:
+            for s in chosen:
+                for b in s.benches:
+                    shutil.rmtree(CRITERION / b, ignore_errors=True)
+            run_benches(chosen, args.criterion_args)
+            run_python(chosen, args.python_repeat)
+        text = write_only(load_criterion(), chosen)
+        OUT.write_text(text + "\n")
         print(text)
         return 0
     if args.run:

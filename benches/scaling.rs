@@ -142,6 +142,7 @@ fn scaling(c: &mut Criterion) {
                             &driving,
                             &limits,
                             &none,
+                            // The ranking of the measured logs.
                             RankBy::Transmission,
                             &control,
                         )

@@ -1192,8 +1192,12 @@ pub fn conic_polylines(data: &[u8]) {
 /// Checks the arrays of a solution map: lengths, and the documented
 /// relations between them (no unflagged NaN).
 fn check_solution_map(map: &SolutionMap) {
-    let n = map.context.grid.len();
-    let c = &map.columns;
+    check_columns(&map.columns, map.context.grid.len(), &map.context.limits);
+}
+
+/// The documented relations between the columns of a map of `n` samples
+/// under `limits` (the solution map's, the pair map's).
+fn check_columns(c: &burmester::design::Columns, n: usize, limits: &DesignLimits) {
     for len in [
         c.valid.len(),
         c.branch_free.len(),
@@ -1214,7 +1218,6 @@ fn check_solution_map(map: &SolutionMap) {
             assert!(
                 c.valid[k] && c.branch_free[k] && direction != Direction::None && c.one_circuit[k]
             );
-            let limits = &map.context.limits;
             let t = f64::from(c.min_transmission_rad[k]);
             // The limits hold in f64; the column is rounded to f32.
             assert!(
@@ -1427,4 +1430,381 @@ fn check_pivots(map: &SolutionMap, k: usize, min_separation: Option<f64>) {
             Err(Error::InvalidInput(InvalidInput::OutsideRange { .. }))
         ));
     }
+}
+
+/// Limits from the input: raw numbers now and then, else in range.
+fn limits_of(inp: &mut Input<'_>) -> DesignLimits {
+    DesignLimits {
+        min_transmission: if inp.byte() % 4 == 0 {
+            inp.num()
+        } else {
+            inp.nice().abs() % 1.5
+        },
+        max_link_ratio: if inp.byte() % 4 == 0 {
+            inp.num()
+        } else {
+            1.0 + inp.nice().abs()
+        },
+        input: [
+            InputRequirement::Any,
+            InputRequirement::Crank,
+            InputRequirement::Rocker,
+        ][usize::from(inp.byte()) % 3],
+        ..DesignLimits::default()
+    }
+}
+
+/// Constraints from the input around `near` (a point of the task scaled
+/// by `s`): polygons of up to five vertices (raw or near), a link width,
+/// up to 16 travel samples (0 and 1 are refused).
+fn constraints_of(
+    inp: &mut Input<'_>,
+    near: &dyn Fn(&mut Input<'_>) -> Point2<f64>,
+    s: f64,
+) -> Constraints {
+    let polygon = |inp: &mut Input<'_>| -> Vec<Point2<f64>> {
+        let n = inp.count(0, 5);
+        (0..n)
+            .map(|_| {
+                if inp.byte() % 4 == 0 {
+                    inp.point()
+                } else {
+                    near(inp)
+                }
+            })
+            .collect()
+    };
+    Constraints {
+        base_plate: if inp.byte() % 2 == 0 {
+            Some(polygon(inp))
+        } else {
+            None
+        },
+        obstacles: (0..inp.count(0, 2)).map(|_| polygon(inp)).collect(),
+        link_width: if inp.byte() % 3 == 0 {
+            inp.num()
+        } else {
+            inp.nice().abs() * s * 0.1
+        },
+        travel_samples: inp.count(0, 16),
+        // The envelope (design's `Space`) is exercised by the design
+        // search's tests, not here.
+        envelope: None,
+    }
+}
+
+/// The limits, with a transmission limit of at least 0.05 rad where
+/// there are obstacles: below it the clearance refinement takes `1 /
+/// sin(mu_min)` times the work (the open class of `fuzz/README.md`, slow
+/// by design), which would make every input a timeout.
+fn away_from_the_slow_class(mut limits: DesignLimits, c: &Constraints) -> DesignLimits {
+    if !c.obstacles.is_empty() && (0.0..0.05).contains(&limits.min_transmission) {
+        limits.min_transmission = 0.05;
+    }
+    limits
+}
+
+/// Four poses: raw, or moderate with a chosen near-degeneracy (poses 1 and
+/// 2 nearly alike, one angle, a repeated angle, scaled).
+fn four_poses(inp: &mut Input<'_>) -> Option<Task> {
+    let mut p: Vec<Pose> = if inp.byte() % 4 == 0 {
+        (0..4).map(|_| pose(inp)).collect()
+    } else {
+        (0..4)
+            .map(|_| Pose::new(inp.nice(), inp.nice(), inp.nice()))
+            .collect()
+    };
+    match inp.byte() % 8 {
+        0 => {
+            // Poses 1 and 2 a hair apart.
+            let e = 10f64.powi(-i32::from(inp.byte() % 16));
+            p[1] = Pose::new(
+                p[0].position.x + inp.nice() * e,
+                p[0].position.y + inp.nice() * e,
+                p[0].angle + inp.nice() * e,
+            );
+        }
+        1 => {
+            // One angle.
+            for k in 1..4 {
+                p[k].angle = p[0].angle;
+            }
+        }
+        2 => {
+            // Two poses of one angle.
+            let (i, j) = (usize::from(inp.byte()) % 4, usize::from(inp.byte()) % 4);
+            p[j].angle = p[i].angle;
+        }
+        3 => {
+            let k = 10f64.powi(i32::from(inp.byte() % 25) - 12);
+            for q in &mut p {
+                q.position = Point2::from(q.position.coords * k);
+            }
+        }
+        _ => {}
+    }
+    match Task::new(&p) {
+        Ok(t) => Some(t),
+        Err(e) => {
+            message(&e);
+            None
+        }
+    }
+}
+
+/// The four-position pair map on small grids of both axes, with arbitrary
+/// limits and constraints: the column relations; a progress hook changes
+/// nothing and a cancelled map is `Cancelled`; each acceptable pair's
+/// linkage exists and is `Task::four_bar` of its dyads; the margins' sign
+/// is the branch flag; the best pairs of every ranking are what their
+/// ranking admits, in order, apart.
+pub fn pair_map(data: &[u8]) {
+    let mut inp = Input::new(data);
+    let Some(t) = four_poses(&mut inp) else {
+        return;
+    };
+    let s = t.scale();
+    let o = t.poses()[0].position;
+    let near = |inp: &mut Input<'_>| o + Vector2::new(inp.nice(), inp.nice()) * s;
+    let (nd, nv) = (inp.count(0, 12), inp.count(0, 12));
+    let limits = limits_of(&mut inp);
+    let constraints = constraints_of(&mut inp, &near, s);
+    let limits = away_from_the_slow_class(limits, &constraints);
+    if std::env::var_os("FUZZ_DEBUG").is_some() {
+        eprintln!("{:?}\n{nd} x {nv}\n{limits:?}\n{constraints:?}", t.poses());
+    }
+    let map = match t.pair_map(nd, nv, &limits, &constraints, &Control::new()) {
+        Ok(m) => m,
+        Err(e) => return message(&e),
+    };
+    let n = nd * nv;
+    assert_eq!(map.context.shape(), (nv, nd));
+    assert_eq!(
+        (map.context.driving.len(), map.context.driven.len()),
+        (nd, nv)
+    );
+    check_columns(&map.columns, n, &limits);
+    // Progress and cancelling.
+    let last = AtomicUsize::new(0);
+    let hook = |d: usize, _t: usize| {
+        last.fetch_max(d, Ordering::Relaxed);
+    };
+    let again = t
+        .pair_map(
+            nd,
+            nv,
+            &limits,
+            &constraints,
+            &Control::new().with_progress(&hook),
+        )
+        .expect("the same map with a progress hook");
+    same("pair map with progress", &again, &map);
+    assert!(matches!(
+        t.pair_map(nd, nv, &limits, &constraints, &cancelled()),
+        Err(Error::Cancelled { .. })
+    ));
+    let c = &map.columns;
+    for k in 0..n {
+        if c.acceptable[k] {
+            let l = map
+                .context
+                .linkage(k)
+                .expect("an acceptable pair has a linkage");
+            let (a, b) = map.context.dyads(k).expect("both dyads finite");
+            same(
+                "the pair's linkage",
+                &t.four_bar(&a.dyad(), &b.dyad())
+                    .expect("four_bar of the dyads"),
+                &l,
+            );
+            finite("size", l.size());
+        }
+    }
+    let margins = map.margins().expect("margins of a small map");
+    for (k, m) in margins.iter().enumerate() {
+        assert_eq!(*m > 0.0, c.branch_free[k], "margin sign at {k}");
+    }
+    let diag = map.context.grid.viewport().diagonal();
+    for sep in [None, Some(0.0), Some(inp.nice().abs() * diag * 0.1)] {
+        let k = inp.count(0, 4);
+        if sep.is_some_and(|s| !s.is_finite()) {
+            assert!(matches!(
+                map.best_pairs(k, sep, RankBy::Balanced),
+                Err(Error::InvalidInput(InvalidInput::OutsideRange { .. }))
+            ));
+            continue;
+        }
+        for rank in RankBy::ALL {
+            let pairs = map.best_pairs(k, sep, rank).expect("a valid separation");
+            assert!(pairs.len() <= k);
+            let sep = sep.unwrap_or(0.02 * diag);
+            let at = |p: &burmester::Pair| {
+                Point2::new(map.context.grid.x(p.index.1), map.context.grid.y(p.index.0))
+            };
+            for (m, p) in pairs.iter().enumerate() {
+                let s_ = p.index.0 * nd + p.index.1;
+                assert!(s_ < n);
+                assert_eq!(p.ranked_by, rank);
+                match rank {
+                    RankBy::Margin => assert!(c.valid[s_] && c.branch_free[s_]),
+                    _ => assert!(c.acceptable[s_]),
+                }
+                assert!(
+                    p.margin > 0.0,
+                    "pair {:?} by {rank:?}: margin {}",
+                    p.index,
+                    p.margin
+                );
+                assert_eq!(p.margin, margins[s_], "margin of {:?}", p.index);
+                for q in &pairs[..m] {
+                    assert!((at(q) - at(p)).norm() >= sep, "pairs closer than {sep}");
+                    match rank {
+                        RankBy::Pareto => assert!(q.score < p.score, "front out of order"),
+                        _ => assert!(q.score >= p.score - 2e-9, "scores out of order"),
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The pivot-pair atlas with constraints on small grids anywhere: each
+/// valid cell is its driven center's solution map reduced (the count of
+/// acceptable samples, of branch-free ones, and the first pivot of
+/// `best_pivots(1, 0, Transmission)`), an invalid cell has no Filemon
+/// construction; any split of the driven rows gives the same cells; a
+/// cancelled atlas is `Cancelled`; progress reaches its total.
+pub fn atlas(data: &[u8]) {
+    let mut inp = Input::new(data);
+    let Some(t) = task(&mut inp) else { return };
+    let s = t.scale();
+    let p12 = finite_poles(&t)[0];
+    let near = |inp: &mut Input<'_>| p12 + Vector2::new(inp.nice(), inp.nice()) * s;
+    let grid = |inp: &mut Input<'_>, most: usize| -> Option<Grid> {
+        let (a, b) = if inp.byte() % 4 == 0 {
+            (inp.point(), inp.point())
+        } else {
+            (near(inp), near(inp))
+        };
+        let vp = match Viewport::new(a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)) {
+            Ok(v) => v,
+            Err(e) => {
+                message(&e);
+                return None;
+            }
+        };
+        match Grid::new(vp, inp.count(1, most), inp.count(1, most)) {
+            Ok(g) => Some(g),
+            Err(e) => {
+                message(&e);
+                None
+            }
+        }
+    };
+    let Some(driven) = grid(&mut inp, 3) else {
+        return;
+    };
+    let Some(driving) = grid(&mut inp, 8) else {
+        return;
+    };
+    let limits = limits_of(&mut inp);
+    let constraints = constraints_of(&mut inp, &near, s);
+    let limits = away_from_the_slow_class(limits, &constraints);
+    if std::env::var_os("FUZZ_DEBUG").is_some() {
+        eprintln!(
+            "{:?}\n{driven:?}\n{driving:?}\n{limits:?}\n{constraints:?}",
+            t.poses()
+        );
+    }
+    let last = AtomicUsize::new(0);
+    let hook = |d: usize, total: usize| {
+        assert!(d <= total);
+        last.fetch_max(d, Ordering::Relaxed);
+    };
+    let atlas = match t.pivot_atlas(
+        &driven,
+        &driving,
+        &limits,
+        &constraints,
+        RankBy::Transmission,
+        &Control::new().with_progress(&hook),
+    ) {
+        Ok(a) => a,
+        Err(e) => return message(&e),
+    };
+    assert_eq!(
+        last.into_inner(),
+        driven.len() * driving.ny(),
+        "progress total"
+    );
+    assert_eq!(atlas.cells.len(), driven.len());
+    for (k, cell) in atlas.cells.iter().enumerate() {
+        let c0 = driven.point(k % driven.nx(), k / driven.nx());
+        let Ok(f) = t.filemon(c0) else {
+            assert_eq!(*cell, burmester::AtlasCell::INVALID, "cell {k}");
+            continue;
+        };
+        assert!(cell.valid, "cell {k} at {c0}");
+        let map = f
+            .solution_map(&driving, &limits, &constraints, &Control::new())
+            .expect("the atlas's own map");
+        let col = &map.columns;
+        let count = col.acceptable.iter().filter(|&&a| a).count() as u64;
+        let free = col.branch_free.iter().filter(|&&a| a).count() as u64;
+        assert_eq!(
+            (cell.count, cell.branch_free),
+            (count, free),
+            "cell {k} at {c0}"
+        );
+        let best = map
+            .best_pivots(1, Some(0.0), RankBy::Transmission)
+            .expect("best pivots");
+        match (&cell.best, best.first()) {
+            (None, None) => {}
+            (Some(b), Some(p)) => {
+                assert_eq!(b.index, p.index, "cell {k}: best pivot");
+                assert_eq!(b.driving, p.center);
+                assert_eq!(f64::from(b.min_transmission_rad), p.score);
+                assert_eq!(b.margin, p.margin);
+            }
+            (a, b) => panic!("cell {k}: atlas best {a:?}, map best {b:?}"),
+        }
+    }
+    // Tiles: any split of the driven rows.
+    let cut = inp.count(0, driven.ny());
+    let mut tiled = t
+        .pivot_atlas_rows(
+            &driven,
+            0..cut,
+            &driving,
+            &limits,
+            &constraints,
+            RankBy::Transmission,
+            &Control::new(),
+        )
+        .expect("the first tile");
+    tiled.extend(
+        t.pivot_atlas_rows(
+            &driven,
+            cut..driven.ny(),
+            &driving,
+            &limits,
+            &constraints,
+            RankBy::Transmission,
+            &Control::new(),
+        )
+        .expect("the second tile"),
+    );
+    same("tiled atlas", &tiled, &atlas.cells);
+    assert!(matches!(
+        t.pivot_atlas(
+            &driven,
+            &driving,
+            &limits,
+            &constraints,
+            RankBy::Transmission,
+            &cancelled()
+        ),
+        Err(Error::Cancelled { .. })
+    ));
 }

@@ -21,6 +21,9 @@ from burmester._burmester import (
     Design,
     DesignLimits,
     DesignReport,
+    Drive,
+    DriveError,
+    DriveMap,
     Filemon,
     FourBar,
     Grid,
@@ -31,12 +34,14 @@ from burmester._burmester import (
     PairMap,
     Pivot,
     Pole,
+    SixBar,
     SolutionMap,
     Space,
     SynthesizedFourBar,
     Task,
     __version__,
     clip_line,
+    unit_time_ratio_crank_rocker,
 )
 from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
 from burmester.batch import best_pivots_batch
@@ -54,6 +59,9 @@ __all__ = [
     "CurveDyad",
     "DegenerateError",
     "DesignLimits",
+    "Drive",
+    "DriveError",
+    "DriveMap",
     "Filemon",
     "FourBar",
     "Grid",
@@ -63,6 +71,7 @@ __all__ = [
     "PairMap",
     "Pivot",
     "Pole",
+    "SixBar",
     "SolutionMap",
     "SynthesizedFourBar",
     "Task",
@@ -75,4 +84,5 @@ __all__ = [
     "NearMiss",
     "Space",
     "pivot_atlas",
+    "unit_time_ratio_crank_rocker",
 ]

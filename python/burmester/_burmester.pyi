@@ -29,6 +29,9 @@ __all__ = [
     "Cubic",
     "CurveDyad",
     "DesignLimits",
+    "Drive",
+    "DriveError",
+    "DriveMap",
     "Filemon",
     "FourBar",
     "Grid",
@@ -37,10 +40,12 @@ __all__ = [
     "PairMap",
     "Pivot",
     "Pole",
+    "SixBar",
     "SolutionMap",
     "SynthesizedFourBar",
     "Task",
     "clip_line",
+    "unit_time_ratio_crank_rocker",
     "_atlas_tile",
     "Space",
     "Design",
@@ -116,6 +121,18 @@ class DegenerateError(BurmesterError):
     (``cause == "at_infinity"``, with its unit direction ``dir_x``,
     ``dir_y``; for example a center point on the pole circle), or the task
     has no unique answer (``"undefined"``, ``"coincident_poses"``, ...)."""
+
+class DriveError(BurmesterError):
+    """A six-bar cannot be built as asked, or a linkage cannot be driven
+    from a motor by an added dyad. ``cause`` says why: ``"no_travel"`` (the
+    linkage does not pass its poses in order), ``"travel_too_large"`` (its
+    input turns through 180 degrees or more with the margins: no
+    crank-rocker swings that far), ``"outside_input_range"`` (the margins
+    take the input past a dead position), ``"not_a_crank_rocker"`` (no drive
+    with its crank pivot there), ``"no_acceptable_drive"`` (none searched
+    meets the limits; with ``searched``, ``valid``,
+    ``best_transmission_deg`` and ``min_transmission_deg``),
+    ``"pivot_mismatch"``, ``"toggle_joints"``."""
 
 # ---------------------------------------------------------------------------
 # geom
@@ -713,7 +730,9 @@ class Task:
         splits a run. Raises :class:`DegenerateError`
         (``"not_parametrizable"``) when the poses have no compatibility
         linkage, :class:`InvalidInputError` for ``samples`` outside 1 to
-        1e7."""
+        1e7. Ten million samples take seconds: the GIL is released and
+        Ctrl-C raises :class:`KeyboardInterrupt` within a fraction of a
+        second; dyads that cannot be allocated are a ``MemoryError``."""
     def order_arcs(
         self, xmin: float, xmax: float, ymin: float, ymax: float, *, plane: Literal["center", "circle"] = "center"
     ) -> list[Tuple[str, Optional[Literal["counterclockwise", "clockwise"]], FloatArray]]:
@@ -836,9 +855,12 @@ class Task:
         :meth:`Filemon.solution_map` (both pivots must lie on the base
         plate). Raises :class:`InvalidInputError` (``"needs_poses"``) unless
         the task has four poses, (``"grid_size"``) for a count of 0, above
-        1e7, or more than 2**32 pairs; :class:`DegenerateError`
+        1e7, or more than 2**32 pairs, (``"too_small"``) when poses 1 and 2
+        nearly coincide (the range of crank rotations between them, the
+        map's parameter, is below 2e-6 rad); :class:`DegenerateError`
         (``"not_parametrizable"``) when the poses have no compatibility
-        linkage."""
+        linkage, (``"all_translations"``) when the four poses have one
+        angle."""
     def line_to_conic(self, point: Point, direction: Point) -> Conic:
         """Three poses only: the exact image in the center-point plane of a
         line of the circle-point plane: a conic through the three poles."""
@@ -1126,8 +1148,11 @@ class Filemon:
         ``"rocker"``), not both. The constraints: the fixed pivot inside
         ``base_plate`` (a simple polygon), and the moving links, as capsules
         ``link_width`` wide, clear of ``obstacles`` (convex polygons) at
-        ``travel_samples`` input angles of the travel. The GIL is released,
-        ``progress`` and Ctrl-C as in :meth:`branch_map`."""
+        ``travel_samples`` input angles of the travel; each polygon has at
+        most 4096 vertices (``cause == "polygon"``, ``problem == "too many
+        vertices"`` beyond). The GIL is released, ``progress`` and Ctrl-C as
+        in :meth:`branch_map` (a linkage's clearance test checks for Ctrl-C
+        too)."""
     @overload
     def solution_map(
         self,
@@ -1222,6 +1247,128 @@ class SynthesizedFourBar:
         :class:`InvalidInputError` for fewer than 2 samples."""
     def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
         """``(x, y, angle)`` of the task's coupler point when driven to ``theta2``."""
+    # Driving it from a motor by an added dyad (the Watt II six-bar).
+    def drive_map(
+        self,
+        *grid: Any,
+        attachment: Optional[Point] = None,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        progress: Optional[Progress] = None,
+    ) -> DriveMap:
+        """The drive map: for every candidate crank pivot ``D0`` on the grid
+        (a :class:`Grid` or its six numbers), the crank-rocker ``D0 D E A0``
+        whose rocker ``A0 E`` swings exactly over the input's travel from the
+        first pose to the last, extended by ``swing_margin_deg`` at each end
+        (``E``, the ``attachment``, is rigid with the input link; default:
+        the input joint ``A`` itself). Each sample is exact (closed form): a
+        drive exists where the line through ``A0`` and ``D0`` misses ``E``'s
+        swing; its columns are the minimum transmission angle of both loops
+        over a full crank turn, the drive's own, the time ratio, the
+        six-bar's link ratio and size ratio, and ``acceptable`` under the
+        limits (transmission, link ratio), ``max_time_ratio`` and the
+        constraints (``D0`` on ``base_plate``; the moving links clear of
+        ``obstacles`` over the whole turn); ``max_time_ratio=None``: no limit. Releases the GIL; ``progress``
+        and Ctrl-C as :meth:`Filemon.solution_map`.
+
+        Raises :class:`DriveError` when no drive can exist (no travel, a
+        travel of 180 degrees or more, margins past a dead position),
+        :class:`DegenerateError` for an attachment on ``A0``,
+        :class:`InvalidInputError` for bad limits, options or constraints."""
+    def drive(
+        self,
+        drive_pivot: Point,
+        attachment: Optional[Point] = None,
+        *,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+    ) -> Drive:
+        """The drive with its crank pivot at ``drive_pivot`` (one sample of
+        :meth:`drive_map`); :class:`DriveError` (``"not_a_crank_rocker"``)
+        where there is none."""
+    def classic_drive(
+        self,
+        attachment: Optional[Point] = None,
+        *,
+        beyond_first: bool = True,
+        drive_transmission_deg: Optional[float] = None,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+    ) -> Drive:
+        """The closed-form drive of time ratio 1 (Norton's construction,
+        Brodell and Soni's equations): the crank pivot on the line through
+        ``E``'s two end positions, beyond the first pose's end
+        (``beyond_first``) or the last's, at the distance that gives the
+        drive loop the transmission angle ``drive_transmission_deg`` over a
+        full turn (default: halfway between the limit and ``90 - swing/2``,
+        the best a time-ratio-1 drive reaches, at infinite size). Its figures
+        are the drive map's sample there."""
+    def drive_search(
+        self,
+        *,
+        ratios: Optional[Sequence[float]] = None,
+        angles_deg: Optional[Sequence[float]] = None,
+        reach: float = 4.0,
+        samples: int = 96,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        rank_by: RankBy = "balanced",
+        progress: Optional[Progress] = None,
+    ) -> list[Drive]:
+        """Searches attachments and crank pivots: ``E`` at ``ratio * |A - A0|``
+        from ``A0``, turned ``angle`` from the input link (along it at 0,
+        behind ``A0`` at 180), for every ratio (default 0.5, 1, 1.5, 2) and
+        angle (default every 30 degrees); for each, the drive map of
+        ``samples`` x ``samples`` crank pivots over the square of half-width
+        ``reach * |E - A0|`` about ``A0``. Returns the best acceptable drive
+        of each attachment that has one, best first by ``rank_by``
+        (``"balanced"``, ``"transmission"`` or ``"compact"``)."""
+    def best_drive(
+        self,
+        *,
+        limits: Optional[DesignLimits] = None,
+        min_transmission_deg: Optional[float] = None,
+        max_link_ratio: Optional[float] = None,
+        swing_margin_deg: float = 0.0,
+        max_time_ratio: Optional[float] = None,
+        base_plate: Optional[Sequence[Point]] = None,
+        obstacles: Optional[Sequence[Sequence[Point]]] = None,
+        link_width: float = 0.0,
+        travel_samples: int = 64,
+        rank_by: RankBy = "balanced",
+        progress: Optional[Progress] = None,
+    ) -> Drive:
+        """The best drive of :meth:`drive_search` with its defaults: a
+        motor for this linkage (what ``burmester.design(..., input="motor")``
+        asks for a linkage whose input swings). The limits' ``input``
+        requirement does not apply: a drive's crank always turns fully.
+        Raises :class:`DriveError` saying why there is none
+        (``"no_acceptable_drive"`` with the best transmission angle found,
+        or why no drive can exist)."""
     def _repr_png_(self) -> Optional[bytes]:
         """The picture Jupyter shows (see :mod:`burmester._display`): PNG
         bytes, or None when matplotlib is not installed."""
@@ -1434,7 +1581,11 @@ class SolutionMap:
 
         Scores within 1e-9 go to the smaller size ratio, then the larger margin. Candidates closer than
         ``min_separation`` (default: 2% of the viewport's diagonal) to a
-        better one are skipped, so the list offers distinct options."""
+        better one are skipped, so the list offers distinct options.
+
+        The candidates are selected, not sorted (``O(n log k)`` for ``n``
+        samples; the Pareto front sorts them); a large ``k`` or map releases
+        the GIL and Ctrl-C raises :class:`KeyboardInterrupt`."""
     def pareto_front(self) -> list[Pivot]:
         """Every acceptable candidate on the Pareto front of the minimum
         transmission angle (larger is better) and the size ratio (smaller is
@@ -1577,10 +1728,12 @@ class PairMap:
     @property
     def driving_dyads(self) -> list[Optional[CurveDyad]]:
         """The driving dyad of each column (its ``beta2`` and ``branch`` give
-        its parameter); ``None`` where it is at infinity."""
+        its parameter); ``None`` where it is at infinity, or where
+        :meth:`Task.four_bar` would refuse it (a sample of an ill-conditioned
+        task that misses the poses by more than the dyad tolerance)."""
     @property
     def driven_dyads(self) -> list[Optional[CurveDyad]]:
-        """The driven dyad of each row; ``None`` where it is at infinity."""
+        """The driven dyad of each row; ``None`` as for :attr:`driving_dyads`."""
     @property
     def task(self) -> Task:
         """The task."""
@@ -1589,7 +1742,8 @@ class PairMap:
         """The limits behind :attr:`acceptable`."""
     def linkage(self, j: int, i: int) -> SynthesizedFourBar:
         """The linkage of pair ``[j, i]`` (driven ``j``, driving ``i``):
-        ``task.four_bar`` of the two dyads."""
+        ``task.four_bar`` of the two dyads. Raises :class:`InvalidInputError`
+        (``cause == "grid_index"``) for an index outside the map, naming it."""
     def margins(self) -> FloatArray:
         """The signed margin of every pair, shape :attr:`shape`: the distance
         in the parameter plane (radians of crank rotation) to the nearest
@@ -1602,7 +1756,8 @@ class PairMap:
         rankings of :meth:`SolutionMap.best_pivots` (ties to the smaller
         linkage, then the larger margin of :meth:`margins`). Pairs closer
         than ``min_separation`` in the parameter plane (default: 2% of its
-        diagonal) to a better one are skipped."""
+        diagonal) to a better one are skipped. Selected in ``O(n log k)``,
+        Ctrl-C as :meth:`SolutionMap.best_pivots`."""
     def pareto_front(self) -> list[Pair]:
         """Every acceptable pair on the Pareto front of the minimum
         transmission angle and the size ratio, from the most compact to the
@@ -1946,3 +2101,335 @@ def _design_from_atlas(
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere
     (``arrays``: :func:`_atlas_tile`'s arrays over the plan's driven grid)."""
+
+# ---------------------------------------------------------------------------
+# A motor for a linkage whose input swings: the Watt II six-bar
+
+@final
+class SixBar:
+    """A Watt II six-bar: a drive four-bar ``D0 D E A0`` (the motor's crank
+    ``D0 D``, the drive coupler ``D E``, the rocker ``A0 E``) whose rocker is
+    rigid with the input link ``A0 A`` of a motion four-bar ``A0 A C C0``
+    (coupler ``A C`` carrying the coupler point ``P``, rocker ``C0 C``).
+
+    Built from where its joints are in one position (keywords only: the
+    letters name the joints); the lengths, each loop's assembly mode and the
+    angle of the ternary link ``A0 A E`` are read from them. ``p`` defaults
+    to ``C``. Raises :class:`DegenerateError` (``"zero_length_link"``) for
+    two joints of a link that coincide, :class:`DriveError`
+    (``"toggle_joints"``) for a loop at a toggle there.
+
+    The crank angle ``phi`` is absolute (the direction of ``D - D0``).
+    Position analysis solves the drive loop at ``phi`` and then the motion
+    loop at ``theta2 = psi - delta`` (``psi = arg(E - A0)``), both by
+    :meth:`FourBar.solve` in their own modes."""
+
+    def __new__(
+        cls, *, d0: Point, d: Point, e: Point, a0: Point, a: Point, c: Point, c0: Point,
+        p: Optional[Point] = None,
+    ) -> SixBar: ...
+    @staticmethod
+    def _from_parts(
+        drive: FourBar, motion: FourBar, attachment_angle: float, drive_mode: Mode,
+        motion_mode: Mode, coupler_point: Point, coupler_angle_offset: float,
+    ) -> SixBar:
+        """Rebuilds a six-bar from its two loops (for pickling)."""
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    @property
+    def drive(self) -> FourBar:
+        """The drive loop (input pivot ``D0``, output pivot ``A0``)."""
+    @property
+    def motion(self) -> FourBar:
+        """The motion loop (input pivot ``A0``, output pivot ``C0``)."""
+    @property
+    def drive_mode(self) -> Mode:
+        """The drive loop's assembly mode."""
+    @property
+    def motion_mode(self) -> Mode:
+        """The motion loop's assembly mode."""
+    @property
+    def attachment_angle(self) -> float:
+        """``delta = arg(E - A0) - arg(A - A0)``, radians."""
+    @property
+    def coupler_point(self) -> Point:
+        """The coupler point in the coupler's frame (origin ``A``, x toward ``C``)."""
+    @property
+    def coupler_angle_offset(self) -> float:
+        """The pose angle minus the coupler angle."""
+    @property
+    def drive_pivot(self) -> Point:
+        """``D0``, the motor's pivot."""
+    @property
+    def lengths(self) -> list[float]:
+        """The eight links: drive ground ``|A0 D0|``, crank, drive coupler,
+        rocker ``|A0 E|``, input ``|A0 A|``, coupler, output rocker, ground
+        ``|A0 C0|``."""
+    @property
+    def attachment_side(self) -> float:
+        """``|E - A|``, the third side of the ternary input link (0 when
+        ``E`` is ``A``)."""
+    @property
+    def link_ratio(self) -> float:
+        """Longest over shortest of the eight links."""
+    @property
+    def size(self) -> float:
+        """The total length of the members (the links, ``|E - A|`` and the
+        coupler triangle's sides to ``P``)."""
+    @property
+    def drive_grashof(self) -> GrashofType:
+        """The drive loop's Grashof type (``"crank-rocker"`` for a motor drive)."""
+    @property
+    def crank_turns_fully(self) -> bool:
+        """The drive is a crank-rocker and the motion loop's input stays
+        strictly inside its input range over the swing: the motor turns the
+        crank round and round, neither loop toggling."""
+    @property
+    def limit_positions(self) -> Optional[list[Tuple[float, float, float, bool]]]:
+        """The two limit positions (crank and drive coupler collinear, where
+        the input reverses), extended first: ``(crank_angle, rocker_angle,
+        input_angle, extended)``; None unless the drive is a crank-rocker."""
+    @property
+    def swing(self) -> Optional[Tuple[float, float]]:
+        """``(start, end)`` of the motion input's swing, counter-clockwise;
+        None unless the drive is a crank-rocker."""
+    @property
+    def stroke_angle(self) -> Optional[float]:
+        """The crank's turn from the extended limit position to the folded one."""
+    @property
+    def time_ratio(self) -> Optional[float]:
+        """The slower stroke over the faster at a constant crank speed (at least 1)."""
+    @property
+    def min_transmission_deg(self) -> Optional[Tuple[float, float]]:
+        """``(drive, motion)``: each loop's smallest transmission angle over
+        a full crank turn, degrees (exact); None unless the crank turns fully."""
+    @property
+    def dead_positions(self) -> list[float]:
+        """Crank angles where a loop toggles (empty when the crank turns fully)."""
+    def solve(self, phi: float) -> Tuple[float, float, float, float]:
+        """``(psi, theta2, theta3, theta4)`` at crank angle ``phi``: the
+        rocker ``A0 E``, the motion loop's input, coupler and rocker angles.
+        Raises :class:`AssemblyError` where a loop does not close."""
+    def transmission_angles(self, phi: float) -> Tuple[float, float]:
+        """``(drive, motion)`` transmission angles at ``phi``, radians in [0, pi/2]."""
+    def toggle(self, phi: float) -> bool:
+        """Whether a loop is at a toggle at ``phi``."""
+    def joints(self, phi: float) -> list[Point]:
+        """``[D0, D, E, A0, A, C, C0, P]`` at crank angle ``phi``."""
+    def pose_at(self, phi: float) -> Pose:
+        """``(x, y, angle)`` of the coupler point at crank angle ``phi``."""
+    def coupler_path(self, phis: ArrayLike) -> Tuple[FloatArray, FloatArray, BoolArray]:
+        """The coupler point at each crank angle: ``(xs, ys, valid)`` of the
+        input's shape (NaN and False where a loop does not close)."""
+    def crank_angles(self, start: float = 0.0, samples: int = 360) -> list[float]:
+        """``samples`` crank angles over one turn from ``start`` (2 to 2^20)."""
+    def crank_angles_for_input(self, theta2: float) -> list[float]:
+        """The crank angles (0, 1 or 2, one per stroke) at which the motion
+        loop's input is ``theta2``."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (:func:`burmester.plot.sixbar`)."""
+
+@final
+class Drive:
+    """A drive for a linkage: the six-bar, the crank angles at the poses and
+    what a designer checks (from :meth:`SynthesizedFourBar.best_drive`,
+    :meth:`DriveMap.best_drives`, :meth:`SynthesizedFourBar.drive`, ...)."""
+
+    @staticmethod
+    def _from_state(
+        linkage: SynthesizedFourBar, drive_pivot: Point, attachment: Point, limits: DesignLimits,
+        options: Tuple[float, float],
+        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        index: Optional[Tuple[int, int]], margin: float, score: float, ranked_by: Optional[str],
+    ) -> Drive:
+        """Rebuilds a drive from its state (for pickling)."""
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    @property
+    def sixbar(self) -> SixBar:
+        """The six-bar: the drive loop and the linkage as its motion loop."""
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The linkage driven."""
+    @property
+    def task(self) -> Task:
+        """The linkage's task."""
+    @property
+    def drive_pivot(self) -> Point:
+        """``D0``, the motor's crank pivot."""
+    @property
+    def attachment(self) -> Point:
+        """``E`` where it is at pose 1."""
+    @property
+    def pose_crank_angles(self) -> list[float]:
+        """The crank angle at each pose on the working stroke, from its start
+        in the motor's direction (monotone, unwrapped)."""
+    @property
+    def stroke_start(self) -> float:
+        """The crank angle where the working stroke starts (a limit position)."""
+    @property
+    def direction(self) -> Direction:
+        """The motor's direction: the one that makes the working stroke
+        (first pose to last) the slower."""
+    @property
+    def acceptable(self) -> bool:
+        """It meets the limits, the time ratio and the constraints it was
+        found under."""
+    @property
+    def index(self) -> Optional[Tuple[int, int]]:
+        """Its sample ``(j, i)`` in a drive map, if it came from one."""
+    @property
+    def margin(self) -> float:
+        """Its distance to the nearest map sample without a drive (NaN
+        unless it came from a map)."""
+    @property
+    def score(self) -> float:
+        """Its score by the ranking that chose it (NaN otherwise)."""
+    @property
+    def ranked_by(self) -> Optional[RankBy]:
+        """The ranking that chose it."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits it was judged under."""
+    @property
+    def swing_margin_deg(self) -> float:
+        """The swing margin at each end, degrees."""
+    @property
+    def min_transmission_deg(self) -> float:
+        """The smaller of both loops' minimum transmission angles over a full
+        crank turn, degrees."""
+    @property
+    def drive_transmission_deg(self) -> float:
+        """The drive loop's minimum over a full turn, degrees."""
+    @property
+    def motion_transmission_deg(self) -> float:
+        """The motion loop's minimum over the swing, degrees."""
+    @property
+    def time_ratio(self) -> float:
+        """The working stroke's time over the return's (at least 1)."""
+    @property
+    def link_ratio(self) -> float:
+        """The six-bar's longest over shortest link."""
+    @property
+    def size_ratio(self) -> float:
+        """The six-bar's size over the task's span."""
+    @property
+    def swing(self) -> Tuple[float, float]:
+        """The motion input's angle at the start and the end of the working
+        stroke (the travel extended by the margins)."""
+    @property
+    def stroke(self) -> float:
+        """The crank's turn over the working stroke, radians (pi at time ratio 1)."""
+    def turn_angles(self, samples: int = 120) -> list[float]:
+        """``samples`` crank angles over one turn from the working stroke's
+        start in the motor's direction."""
+    def pose_at(self, phi: float) -> Pose:
+        """``(x, y, angle)`` of the coupler point at crank angle ``phi``."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (:func:`burmester.plot.sixbar`)."""
+
+@final
+class DriveMap:
+    """A drive map (from :meth:`SynthesizedFourBar.drive_map`): one read-only
+    NumPy array per column, of shape ``(ny, nx)``, over candidate crank
+    pivots ``D0``."""
+
+    columns: list[str]
+    """The names of the columns, in order."""
+    @property
+    def valid(self) -> BoolArray:
+        """A drive exists: a crank-rocker whose rocker swings exactly over
+        the travel with its margins, the six-bar turning fully."""
+    @property
+    def min_transmission_rad(self) -> npt.NDArray[np.float32]:
+        """The smaller of both loops' minimum transmission angles over a
+        full crank turn, **radians**; NaN where there is no drive."""
+    @property
+    def drive_transmission_rad(self) -> npt.NDArray[np.float32]:
+        """The drive loop's own minimum over a full turn, radians."""
+    @property
+    def time_ratio(self) -> npt.NDArray[np.float32]:
+        """The slower stroke over the faster (at least 1)."""
+    @property
+    def link_ratio(self) -> npt.NDArray[np.float32]:
+        """The six-bar's longest over shortest link."""
+    @property
+    def size_ratio(self) -> npt.NDArray[np.float32]:
+        """The six-bar's size over the task's span."""
+    @property
+    def acceptable(self) -> BoolArray:
+        """A drive within the limits, the time ratio and the constraints."""
+    @property
+    def grid(self) -> Grid:
+        """The grid of candidate crank pivots."""
+    @property
+    def extent(self) -> Extent:
+        """``(xmin, xmax, ymin, ymax)``."""
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """``(ny, nx)``."""
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The linkage driven."""
+    @property
+    def attachment(self) -> Point:
+        """``E`` at pose 1."""
+    @property
+    def attachment_ends(self) -> Tuple[Point, Point]:
+        """Where ``E`` is at the two ends of the swing, the first pose's first."""
+    @property
+    def swing(self) -> Tuple[float, float]:
+        """The motion input's angle at the two ends of the swing."""
+    @property
+    def motion_transmission_deg(self) -> float:
+        """The motion loop's minimum transmission angle over the swing (the
+        same for every drive of the map), degrees."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits behind :attr:`acceptable`."""
+    @property
+    def swing_margin_deg(self) -> float:
+        """The swing margin at each end, degrees."""
+    @property
+    def max_time_ratio(self) -> float:
+        """The largest acceptable time ratio."""
+    def point(self, j: int, i: int) -> Point:
+        """The candidate crank pivot of sample ``[j, i]``."""
+    def drive(self, j: int, i: int) -> Drive:
+        """The drive of sample ``[j, i]`` (:class:`DriveError` where there is none)."""
+    def best_drives(
+        self, k: int = 5, min_separation: Optional[float] = None, rank_by: RankBy = "balanced"
+    ) -> list[Drive]:
+        """The ``k`` best drives, best first, by the rankings of
+        :meth:`SolutionMap.best_pivots` over the acceptable samples (``mu``
+        the smaller transmission angle of both loops, ``s`` the six-bar's
+        size ratio, ``r`` its link ratio); ``"margin"`` orders the valid
+        samples by their distance to the nearest sample without a drive."""
+    def pareto_front(self) -> list[Drive]:
+        """The acceptable drives on the Pareto front of transmission and size."""
+    def classic_drive(
+        self, beyond_first: bool = True, drive_transmission_deg: Optional[float] = None
+    ) -> Drive:
+        """The closed-form drive of time ratio 1 in this map's context (see
+        :meth:`SynthesizedFourBar.classic_drive`)."""
+    def _repr_png_(self) -> Optional[bytes]:
+        """The picture Jupyter shows (:func:`burmester.plot.drive_map`)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_state(
+        linkage: SynthesizedFourBar, attachment: Point, grid: Grid, limits: DesignLimits,
+        options: Tuple[float, float],
+        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        columns: dict[str, Any],
+    ) -> DriveMap:
+        """Rebuilds a map from its state (for pickling)."""
+
+def unit_time_ratio_crank_rocker(
+    rocker: float, swing_deg: float, min_transmission_deg: float
+) -> Tuple[float, float, float, float]:
+    """``(ground, crank, coupler, rocker)`` of the crank-rocker with time
+    ratio 1 whose rocker swings ``swing_deg`` and whose smallest
+    transmission angle over a full turn is ``min_transmission_deg`` (below
+    ``90 - swing_deg / 2``): Norton's construction (*Design of Machinery*,
+    Example 3-1), Brodell and Soni's equations."""

@@ -17,6 +17,8 @@ figures stay as they were) and returned as PNG bytes:
 ``Cubic``             :func:`cubic`: every component in :func:`cubic_view`
 ``PivotAtlas``        :func:`burmester.plot.atlas`
 ``Design``            :func:`burmester.plot.linkage` of its linkage
+``Drive``, ``SixBar`` :func:`burmester.plot.sixbar`
+``DriveMap``          :func:`burmester.plot.drive_map`
 ===================== =============================================
 
 matplotlib is imported when a picture is asked for, not before: ``import
@@ -63,6 +65,10 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
         return lambda ax: plot.atlas(obj, ax=ax)
     if isinstance(obj, burmester.Design):
         return lambda ax: plot.linkage(obj.linkage, ax=ax)
+    if isinstance(obj, (burmester.Drive, burmester.SixBar)):
+        return lambda ax: plot.sixbar(obj, ax=ax)
+    if isinstance(obj, burmester.DriveMap):
+        return lambda ax: plot.drive_map(obj, ax=ax)
     raise TypeError(f"no picture for a {type(obj).__name__}")
 
 

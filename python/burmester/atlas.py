@@ -46,6 +46,27 @@ _SAMPLES_PER_SECOND = 30_000_000
 
 _DASK_MISSING = 'pivot_atlas(client=...) needs Dask: pip install "burmester[dask]"'
 
+#: Seconds a Dask client without workers is given for one to join before
+#: :func:`pivot_atlas` and :func:`burmester.best_pivots_batch` give up (a
+#: cluster without workers would wait for ever).
+DASK_WORKER_TIMEOUT = 30.0
+
+
+def _require_workers(client: Any) -> None:
+    """Return when the client's cluster has a worker; wait up to
+    :data:`DASK_WORKER_TIMEOUT` seconds for one to join, then raise
+    :class:`TimeoutError` saying so."""
+    if client.scheduler_info().get("workers"):
+        return
+    try:
+        client.wait_for_workers(1, timeout=DASK_WORKER_TIMEOUT)
+    except TimeoutError:
+        address = getattr(getattr(client, "scheduler", None), "address", None) or "the scheduler"
+        raise TimeoutError(
+            f"the Dask cluster at {address} has no workers (none joined in {DASK_WORKER_TIMEOUT:g} s), so "
+            "its tasks would wait for ever: start workers (dask worker <address>), or run without client="
+        ) from None
+
 
 def _grid(g: GridArg, what: str) -> Grid:
     if isinstance(g, Grid):
@@ -250,6 +271,7 @@ def _on_dask(client: Any, task: Task, driven: Grid, driving: Grid, opts: Dict[st
         distributed = importlib.import_module("distributed")
     except ImportError:
         raise ImportError(_DASK_MISSING) from None
+    _require_workers(client)
     workers = client.scheduler_info().get("workers", {})
     host_threads: Dict[str, int] = {}
     for addr, w in workers.items():
@@ -315,7 +337,10 @@ def pivot_atlas(
     with a ``dask.distributed.Client`` it runs as Dask tasks of
     ``tile_rows`` driven rows (default: about a second each), with the same
     result bit for bit. ``progress(done_rows, total_rows)`` is called as it
-    goes. Bad input raises the same errors either way, before any work.
+    goes. Bad input raises the same errors either way, before any work. A
+    client whose cluster has no workers is given
+    :data:`DASK_WORKER_TIMEOUT` seconds for one to join, then
+    :class:`TimeoutError` says so (its tasks would wait for ever).
     """
     dg, vg = _grid(driven, "driven"), _grid(driving, "driving")
     opts = _options(limits, min_transmission_deg, max_link_ratio, input, base_plate, obstacles,
@@ -324,9 +349,10 @@ def pivot_atlas(
         rows: Optional[Progress] = None
         if progress is not None:
             cb = progress
-            # The kernel counts driven centers; report rows, as on Dask.
+            # The kernel counts driving rows over all driven centers (a
+            # center's map can take seconds); report driven rows, as on Dask.
             def rows(done: int, total: int) -> object:
-                return cb(done // dg.nx, dg.ny)
+                return cb(done * dg.ny // max(total, 1), dg.ny)
         arrays = dict(_atlas_tile(task, dg, 0, dg.ny, vg, progress=rows, **opts))
     else:
         try:

@@ -95,6 +95,9 @@ def best_pivots_batch(
         importlib.import_module("distributed")
     except ImportError:
         raise ImportError(_DASK_MISSING) from None
+    from burmester.atlas import _require_workers
+
+    _require_workers(client)
     run = uuid.uuid4().hex
     futures = {
         n: client.submit(_one, s, top, spacing, rank_by, key=f"burmester-batch-{run}-{n}", retries=2)

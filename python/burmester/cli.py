@@ -12,13 +12,17 @@ Commands::
     burmester atlas [TASK.toml] -o atlas.png  # both pivots at once: the best driving pivot per driven center
     burmester batch A.toml B.toml --top 5     # each task's best pivots, one JSON line per file
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
+    burmester drive [TASK.toml] -o six.gif    # a motor for the best linkage (an added dyad: a six-bar)
     burmester example > task.toml             # a task file to start from
 
 Without a task file, the commands use the built-in example. Without any
 arguments, ``burmester`` prints this help. Bad input exits with status 2 and
 a one-line message saying what to change; a missing optional dependency
 (matplotlib, ezdxf) exits with status 1. No command replaces an existing file
-unless given ``--force``.
+unless given ``--force``, decided when the finished file is moved into place
+(:mod:`burmester._io`): outputs are written whole beside their target, so a
+write error, a full disk or Ctrl-C leaves no partial file and keeps an
+existing one.
 """
 
 from __future__ import annotations
@@ -28,13 +32,16 @@ import dataclasses
 import json
 import math
 import os
+import signal
 import sys
+import threading
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, Callable, Dict, List, Literal, NoReturn, Optional, Sequence, Tuple
 
 import numpy as np
 
 import burmester
+from burmester import _io
 from burmester import pivots as pv
 from burmester import taskfile
 from burmester._burmester import Grid, Pivot
@@ -203,13 +210,29 @@ def _plot_module() -> ModuleType:
     return plot
 
 
-def _save(fig: Any, path: str, dpi: int) -> None:
+def _written(path: str, force: bool, write: Callable[[Path], Any]) -> None:
+    """Write an output by ``write(tmp)`` through :mod:`burmester._io`: whole
+    to a temporary file beside it, moved into place when complete, never
+    replacing an existing file without ``--force`` (decided at the move);
+    on an error or Ctrl-C nothing is left and an existing file is kept."""
+    try:
+        with _io.atomic_path(path, overwrite=force) as tmp:
+            write(tmp)
+    except FileExistsError:
+        raise UsageError(
+            f"{path} exists (it was created while this command ran); give another file name, "
+            "or --force to replace it"
+        ) from None
+    except OSError as e:
+        kept = f"; {path} is unchanged" if Path(path).exists() else ""
+        raise UsageError(f"cannot write {path}: {e.strerror or e}{kept}") from None
+
+
+def _save(fig: Any, path: str, dpi: int, force: bool) -> None:
     import matplotlib.pyplot as plt
 
     try:
-        fig.savefig(path, dpi=dpi, bbox_inches="tight")
-    except OSError as e:
-        raise UsageError(f"cannot write {path}: {e.strerror or e}") from None
+        _written(path, force, lambda tmp: fig.savefig(tmp, dpi=dpi, bbox_inches="tight"))
     finally:
         plt.close(fig)
 
@@ -262,12 +285,10 @@ def _picture_dpi(args: argparse.Namespace) -> int:
     return DEFAULT_DPI if args.dpi is None else int(args.dpi)
 
 
-def _write_cad(write: Callable[..., Any], out: str, *args: Any, **kwargs: Any) -> None:
-    """Call an export function, turning a file system error into a UsageError."""
-    try:
-        write(*args, **kwargs)
-    except OSError as e:
-        raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
+def _write_cad(write: Callable[..., Any], out: str, force: bool, *args: Any, **kwargs: Any) -> None:
+    """Call an export function with the output ``out`` (among ``args``)
+    through :func:`_written`."""
+    _written(out, force, lambda tmp: write(*(tmp if a is out else a for a in args), **kwargs))
 
 
 def _output(path: str, types: Sequence[str], force: bool) -> str:
@@ -313,6 +334,72 @@ def table(columns: Sequence[Tuple[str, str]], rows: Sequence[Sequence[str]]) -> 
     return "\n".join(line.rstrip() for line in buf.getvalue().splitlines())
 
 
+# ---------------------------------------------------------------------------
+# Memory: what cannot fit is refused before the work
+
+
+#: What a command holds at its peak besides its grid (the interpreter,
+#: NumPy, matplotlib), bytes.
+MEMORY_BASE = 128 * 2**20
+
+#: Peak bytes per grid sample (measured with ``ru_maxrss`` on 1000 x 1000
+#: and 2000 x 2000 grids, rounded up): a picture of the center-point plane
+#: (the branch map and matplotlib's image buffers, about 60), with the
+#: solution map overlaid (about 110), a CAD export (about 30), a solution
+#: map ranked (``pivots``, ``linkage``: about 20).
+MEMORY_PER_SAMPLE = {"picture": 64, "picture+design": 128, "cad": 32, "cad+design": 64, "ranking": 32}
+
+
+def _available_memory() -> Optional[int]:
+    """Bytes this process can still allocate: the memory the system has
+    available (``MemAvailable``) and what an address-space limit leaves,
+    whichever is less; None where neither can be read."""
+    avail: Optional[int] = None
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    avail = int(line.split()[1]) * 1024
+    except (OSError, ValueError):
+        pass
+    try:
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+        if soft != resource.RLIM_INFINITY:
+            used = 0
+            with open("/proc/self/status", encoding="ascii") as fh:
+                for line in fh:
+                    if line.startswith("VmSize:"):
+                        used = int(line.split()[1]) * 1024
+            left = max(0, soft - used)
+            avail = left if avail is None else min(avail, left)
+    except (ImportError, OSError, ValueError):
+        pass
+    return avail
+
+
+def _fmt_bytes(n: float) -> str:
+    return f"{n / 2**30:.1f} GB" if n >= 2**30 else f"{n / 2**20:.0f} MB"
+
+
+def _check_memory(nx: int, ny: int, kind: str, what: str, flag: str) -> None:
+    """Refuse up front a grid of ``nx`` by ``ny`` samples whose work of
+    ``kind`` (:data:`MEMORY_PER_SAMPLE`) cannot fit in the memory left,
+    saying how much it needs and what fits."""
+    per = MEMORY_PER_SAMPLE[kind]
+    need = MEMORY_BASE + nx * ny * per
+    avail = _available_memory()
+    if avail is None or need <= avail:
+        return
+    side = max(2, math.isqrt(max(0, avail - MEMORY_BASE) // per))
+    raise UsageError(
+        f"{what} on {nx} x {ny} samples needs about {_fmt_bytes(need)} of memory ({per} bytes a "
+        f"sample), more than the {_fmt_bytes(avail)} available; use a coarser {flag} (about "
+        f"{side} x {side} fits)"
+    )
+
+
 def _fmt_point(p: Sequence[float]) -> str:
     """``(x, y)`` to three decimals; a coordinate that rounds to zero reads
     0.000, not -0.000."""
@@ -330,6 +417,10 @@ def cmd_map(args: argparse.Namespace) -> int:
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
     units = _units(args, spec)
     cad = _is_cad(args.output)
+    if len(spec.poses) == 3:  # the grid is the branch map's (four and five poses trace curves)
+        design = "+design" if args.design or args.pivots > 0 else ""
+        _check_memory(spec.view.nx, spec.view.ny, ("cad" if cad else "picture") + design,
+                      f"drawing {args.output}", "--grid")
     export = _export_module(args.output) if cad else None
     plot = None if cad else _plot_module()
     if len(spec.poses) > 3:
@@ -338,7 +429,8 @@ def cmd_map(args: argparse.Namespace) -> int:
     view = spec.view
     if args.plane == "circle":
         if export is not None:
-            _write_cad(export.plane, args.output, filemon, args.output, plane="circle", units=units)
+            _write_cad(export.plane, args.output, args.force, filemon, args.output, plane="circle",
+                       units=units)
         else:
             assert plot is not None
             ax = plot.circle_plane(filemon, units=spec.units)
@@ -360,7 +452,7 @@ def cmd_map(args: argparse.Namespace) -> int:
             ranked, _ = pv.rank(smap, args.pivots, pv.default_spacing(view))
             marks = [p.center for p in ranked]
         if export is not None:
-            _write_cad(export.plane, args.output, filemon, args.output, view, free=free, pivots=marks,
+            _write_cad(export.plane, args.output, args.force, filemon, args.output, view, free=free, pivots=marks,
                        acceptable=acceptable, transmission=transmission, units=units)
         else:
             assert plot is not None
@@ -378,7 +470,7 @@ def cmd_map(args: argparse.Namespace) -> int:
         summary += _outside_note(spec, [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in task.poles]
                                  + [("C0", filemon.driven_center)])
     if export is None:
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -399,7 +491,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
     task = spec.task
     driven = spec.driven_center  # four poses: a driven dyad on the curve, or None
     if export is not None:
-        _write_cad(export.burmester_plane, args.output, task, args.output, spec.view.extent,
+        _write_cad(export.burmester_plane, args.output, args.force, task, args.output, spec.view.extent,
                    driven=driven, plane=args.plane, units=units)
     elif circle:
         assert plot is not None
@@ -426,7 +518,7 @@ def _map_many(args: argparse.Namespace, spec: TaskSpec, plot: Optional[ModuleTyp
                    + (f": {listed}" if pts else ""))
     summary += _outside_note(spec, taskfile.curve_plane_points(task, driven, args.plane))
     if export is None:
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     print(f"wrote {args.output}: {summary}")
     return 0
 
@@ -473,6 +565,8 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     try:
         atlas = burmester.pivot_atlas(spec.task, driven, driving, client=client,
                                       limits=spec.limits, rank_by=args.rank_by, progress=bar)
+    except TimeoutError as e:  # a cluster without workers
+        raise UsageError(str(e)) from None
     finally:
         if client is not None:
             client.close()
@@ -495,7 +589,7 @@ def cmd_atlas(args: argparse.Namespace) -> int:
     if plot is not None and output is not None:
         ax = plot.atlas(atlas, units=spec.units)
         ax.set_title(f"pivot-pair atlas of {spec.source}")
-        _save(ax.figure, output, args.dpi)
+        _save(ax.figure, output, args.dpi, args.force)
         summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
                    f"have an acceptable driving pivot ({_limits_text(spec)}{_lengths_in(spec)}); "
                    f"{pv.describe_ranking(atlas.rank_by)}")
@@ -611,6 +705,7 @@ def cmd_pivots(args: argparse.Namespace) -> int:
     if len(spec.poses) == 5:
         return _pivots_five(args, spec)
     spec = _with_grid(spec, args.grid)
+    _check_memory(spec.view.nx, spec.view.ny, "ranking", "the solution map", "--grid")
     spacing = _spacing(spec, args.spacing)
     if args.json:
         doc = pv.report(spec, args.top, spacing, progress_for(spec.view, "solution map", 16), args.rank_by)
@@ -632,6 +727,8 @@ def cmd_batch(args: argparse.Namespace) -> int:
     try:
         records = burmester.best_pivots_batch(args.tasks, client=client, top=args.top,
                                               spacing=args.spacing, rank_by=args.rank_by)
+    except TimeoutError as e:  # a cluster without workers
+        raise UsageError(str(e)) from None
     finally:
         if client is not None:
             client.close()
@@ -686,24 +783,23 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         task = filemon.task
         what = f"driving pivot A0 = {_fmt_point(pivot)}"
     if export is not None:
-        _write_cad(export.linkage, out, sfb, out, task=task, travel_samples=args.travel or 0, units=units)
+        _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
+                   units=units)
     elif animated:
         plot = _plot_module()
         frames = 60 if args.frames is None else args.frames
         fps = 20 if args.fps is None else args.fps
         try:
-            anim = plot.animate(sfb, out, task=task, frames=frames, fps=fps, units=spec.units)
+            _written(out, args.force,
+                     lambda tmp: plot.animate(sfb, tmp, task=task, frames=frames, fps=fps, units=spec.units))
         except RuntimeError as e:
             raise UsageError(str(e)) from None
-        except OSError as e:
-            raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
-        del anim
         import matplotlib.pyplot as plt
 
         plt.close("all")
     else:
         ax = _plot_module().linkage(sfb, task=task, units=spec.units)
-        _save(ax.figure, out, _picture_dpi(args))
+        _save(ax.figure, out, _picture_dpi(args), args.force)
     state = "branch-free" if sfb.branch_free else "has a branch defect"
     lengths = ", ".join(f"{name} {format_length(v, spec.units)}"
                         for name, v in zip(("ground", "crank", "coupler", "rocker"), sfb.fourbar.lengths))
@@ -740,6 +836,7 @@ def _pair_map(spec: TaskSpec, samples: int) -> burmester.PairMap:
         raise UsageError(f"pairs is for four poses (the pair map); {spec.source} has {n} poses")
     if not 2 <= samples <= 20000:
         raise UsageError(f"--samples must be from 2 to 20000, got {samples}")
+    _check_memory(samples, samples, "ranking", "the pair map", "--samples")
     big = samples * samples >= PROGRESS_MIN_POINTS
     bar = ProgressBar(sys.stderr, "burmester: pair map") if big and sys.stderr.isatty() else None
     return spec.task.pair_map(samples, limits=spec.limits, progress=bar)
@@ -808,11 +905,12 @@ def cmd_pairs(args: argparse.Namespace) -> int:
     spec = _with_units(_load(args.task), args)  # the task file's errors first
     if args.output is not None:
         _output(args.output, PICTURE_TYPES, args.force)
+        _check_memory(args.samples, args.samples, "picture", f"drawing {args.output}", "--samples")
     pmap = _pair_map(spec, args.samples)
     pairs = pmap.best_pairs(args.top, rank_by=args.rank_by)
     if args.output is not None:
         ax = _plot_module().pair_map(pmap, pairs=args.top, rank_by=args.rank_by)
-        _save(ax.figure, args.output, _picture_dpi(args))
+        _save(ax.figure, args.output, _picture_dpi(args), args.force)
     if args.json:
         doc = {
             "task": spec.source,
@@ -995,17 +1093,15 @@ def cmd_design(args: argparse.Namespace) -> int:
         return 0
     sfb = report[0].linkage
     if export is not None:
-        _write_cad(export.linkage, out, sfb, out, task=task, travel_samples=args.travel or 0, units=units)
+        _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
+                   units=units)
     elif animated:
         assert plot is not None
         try:
-            anim = plot.animate(sfb, out, task=task, frames=args.frames or 60, fps=args.fps or 20,
-                                units=spec.units)
+            _written(out, args.force, lambda tmp: plot.animate(sfb, tmp, task=task, frames=args.frames or 60,
+                                                               fps=args.fps or 20, units=spec.units))
         except RuntimeError as e:
             raise UsageError(str(e)) from None
-        except OSError as e:
-            raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
-        del anim
         import matplotlib.pyplot as plt
 
         plt.close("all")
@@ -1013,7 +1109,7 @@ def cmd_design(args: argparse.Namespace) -> int:
         assert plot is not None
         ax = plot.linkage(sfb, task=task, units=spec.units)
         ax.set_title(f"best design of {spec.source} ({report.rank_by})")
-        _save(ax.figure, out, _picture_dpi(args))
+        _save(ax.figure, out, _picture_dpi(args), args.force)
     f = sfb.figures
     lengths = ", ".join(f"{name} {format_length(v, spec.units)}"
                         for name, v in zip(("ground", "crank", "coupler", "rocker"), f.lengths))
@@ -1103,13 +1199,7 @@ def cmd_example(args: argparse.Namespace) -> int:
         sys.stdout.write(text)
         return 0
     _output(args.output, (".toml",), args.force)
-    try:
-        with open(args.output, "w" if args.force else "x", encoding="utf-8") as fh:
-            fh.write(text)
-    except FileExistsError:
-        raise UsageError(f"{args.output} exists; give another file name, or --force to replace it") from None
-    except OSError as e:
-        raise UsageError(f"cannot write {args.output}: {e.strerror or e}") from None
+    _written(args.output, args.force, lambda tmp: tmp.write_text(text, encoding="utf-8"))
     print(f"wrote {args.output}")
     return 0
 
@@ -1169,6 +1259,95 @@ def _finite(text: str) -> float:
     if not math.isfinite(x):
         raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
     return x
+
+
+# ---------------------------------------------------------------------------
+# burmester drive: a motor for a linkage whose input swings
+
+
+def _drive_linkage(args: argparse.Namespace, spec: TaskSpec) -> Tuple[burmester.SynthesizedFourBar, str]:
+    """The linkage ``burmester drive`` drives: the given pivot's, or the
+    best by ``--rank-by`` under the task's limits (three poses), the best
+    pair (four), the best Burmester linkage (five)."""
+    n = len(spec.poses)
+    if n == 5:
+        return _best_burmester_linkage(args, spec)
+    if n == 4:
+        if args.pivot is not None:
+            raise UsageError("--pivot is for three poses; a four-pose task drives its best pair of dyads")
+        best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1, rank_by=args.rank_by)
+        if not best_pairs:
+            raise UsageError(f"no acceptable pair of dyads for {spec.source}; see 'burmester pairs'")
+        return best_pairs[0].linkage, f"the best pair of dyads, A0 = {_fmt_point(best_pairs[0].driving.center)}"
+    filemon = spec.filemon()
+    if args.pivot is None:
+        best, _ = pv.rank(_solution_map(spec, filemon), 1, pv.default_spacing(spec.view), args.rank_by)
+        if not best:
+            raise UsageError("no branch-free driving pivot in the view; give one with --pivot X Y")
+        pivot = best[0].center
+    else:
+        pivot = (args.pivot[0], args.pivot[1])
+    return filemon.four_bar(pivot), f"driving pivot A0 = {_fmt_point(pivot)}"
+
+
+def cmd_drive(args: argparse.Namespace) -> int:
+    """``burmester drive``: a motor for the task's linkage: the best added
+    dyad (the Watt II six-bar), as a table or JSON, drawn, animated or
+    exported."""
+    from burmester import drives
+
+    spec = _with_units(_with_grid(_load(args.task), args.grid), args)
+    out: Optional[str] = args.output
+    if out is not None:
+        _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+        if args.map and (_is_cad(out) or out.lower().endswith(ANIMATION_TYPES)):
+            raise UsageError(f"--map draws a picture (.png, .pdf, ...), not {out}")
+    if not 0.0 <= args.margin < 90.0:
+        raise UsageError(f"--margin must be from 0 to 90 degrees, got {args.margin:g}")
+    if not args.max_time_ratio >= 1.0:
+        raise UsageError(f"--max-time-ratio must be at least 1, got {args.max_time_ratio:g}")
+    export = _export_module(out) if out is not None and _is_cad(out) and not args.map else None
+    sfb, what = _drive_linkage(args, spec)
+    bar = ProgressBar(sys.stderr, "burmester: drive search") if sys.stderr.isatty() else None
+    drive = sfb.best_drive(limits=spec.limits, swing_margin_deg=args.margin,
+                           max_time_ratio=args.max_time_ratio, rank_by=args.drive_rank_by,
+                           progress=bar)
+    if args.json:
+        doc = {
+            "task": spec.source,
+            "linkage": drives.linkage_record(sfb),
+            "drive": drives.drive_record(drive),
+        }
+        print(json.dumps(doc, indent=2))
+    else:
+        print(drives.drive_table(drive, f"{spec.source} ({what})"))
+    if out is None:
+        return 0
+    shown = sys.stderr if args.json else sys.stdout
+    if export is not None:
+        _write_cad(export.sixbar, out, args.force, drive, out, turn_samples=args.turn or 0, units=_units(args, spec))
+    elif args.map:
+        plot = _plot_module()
+        e = drive.attachment
+        a0 = sfb.driving[0]
+        h = 1.25 * max(math.dist(a0, drive.drive_pivot), math.dist(a0, e))
+        dmap = sfb.drive_map(a0[0] - h, a0[0] + h, a0[1] - h, a0[1] + h, 400, 400, attachment=e,
+                             limits=spec.limits, swing_margin_deg=args.margin,
+                             max_time_ratio=args.max_time_ratio)
+        ax = plot.drive_map(dmap, rank_by=args.drive_rank_by)
+        _save(ax.figure, out, _picture_dpi(args), args.force)
+    elif out.lower().endswith(ANIMATION_TYPES):
+        plot = _plot_module()
+        try:
+            _written(out, args.force,
+                     lambda tmp: plot.animate_sixbar(drive, tmp, frames=args.frames or 120, fps=args.fps or 24))
+        except RuntimeError as err:
+            raise UsageError(str(err)) from None
+    else:
+        ax = _plot_module().sixbar(drive)
+        _save(ax.figure, out, _picture_dpi(args), args.force)
+    print(f"wrote {out}", file=shown)
+    return 0
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -1380,7 +1559,57 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", default=None, help="write to this .toml file instead of stdout")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_example)
+
+    p = sub.add_parser("drive", help="a motor for a linkage whose input swings: an added dyad (six-bar)",
+                       description="Find the best motor drive for the task's linkage: a crank-rocker "
+                                   "added to its input link (the Watt II six-bar), so a motor turning "
+                                   "a crank drives it through the poses.",
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("task", nargs="?", metavar="TASK.toml", help=task_help)
+    p.add_argument("-o", "--output", default=None,
+                   help="also write the six-bar: a picture (.png, .pdf, ...), an animation over a "
+                        "crank turn (.gif, .mp4) or a CAD export (.dxf, .svg); with --map, the drive map")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
+                   help="three poses: the linkage's driving pivot A0 (default: the best by --rank-by)")
+    p.add_argument("--rank-by", choices=pv.RANKINGS, default="balanced",
+                   help="which linkage of the task to drive (default: balanced)")
+    p.add_argument("--drive-rank-by", choices=("balanced", "transmission", "compact"), default="balanced",
+                   help="which drive to pick (default: balanced)")
+    p.add_argument("--margin", type=_finite, default=0.0, metavar="DEG",
+                   help="swing the input this much beyond the first and last pose (default: 0, the "
+                        "strokes end at the poses)")
+    p.add_argument("--max-time-ratio", type=_finite, default=math.inf, metavar="Q",
+                   help="largest acceptable time ratio of the strokes (default: no limit)")
+    p.add_argument("--grid", nargs=2, type=_positive_int, metavar=("NX", "NY"),
+                   help="samples of the view when choosing the linkage")
+    p.add_argument("--map", action="store_true", help="-o draws the drive map of the best drive's attachment")
+    p.add_argument("--turn", type=_ranged(2, 10_000), default=None, metavar="N",
+                   help="CAD export: also draw the six-bar at N crank angles over a turn")
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None, help="animation: frames per crank turn (default 120)")
+    p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 24)")
+    p.add_argument("--units", default=None, metavar="NAME", help=UNITS_HELP)
+    p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
+    p.add_argument("--force", action="store_true", help="replace the output file if it exists")
+    p.set_defaults(func=cmd_drive)
     return parser
+
+
+def _remember_sigint(seen: List[int]) -> Any:
+    """On the main thread, handle SIGINT as Python does (KeyboardInterrupt)
+    and note it in ``seen``; returns the handler it replaced (None
+    elsewhere, where signals cannot be handled)."""
+    if threading.current_thread() is not threading.main_thread():
+        return None
+
+    def on_sigint(signum: int, frame: Any) -> None:
+        seen.append(signum)
+        raise KeyboardInterrupt
+
+    try:
+        return signal.signal(signal.SIGINT, on_sigint)
+    except ValueError:
+        return None
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
@@ -1402,8 +1631,22 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         parser.print_help()
         return 0
     prog = f"burmester {args.command}"
+    # Ctrl-C is remembered: a library's C code that runs the signal handler
+    # may turn the KeyboardInterrupt into an error of its own (matplotlib:
+    # "Invalid affine transformation matrix"); after a SIGINT any error is
+    # the interruption.
+    interrupted: List[int] = []
+    previous = _remember_sigint(interrupted)
     try:
-        return int(args.func(args))
+        try:
+            return int(args.func(args))
+        except Exception:
+            if interrupted:
+                raise KeyboardInterrupt from None
+            raise
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGINT, previous)
     except (UsageError, TaskFileError, burmester.BurmesterError) as e:
         print(f"{prog}: error: {e}", file=sys.stderr)
         return 2

@@ -67,9 +67,11 @@ from matplotlib.patches import Patch
 from matplotlib.text import Annotation, Text
 
 import burmester
+from burmester import _io
+from burmester import pivots as pv
 from burmester import plot as bp
 from burmester._burmester import DesignLimits, Filemon, Grid, SolutionMap, SynthesizedFourBar, Task
-from burmester.taskfile import TaskSpec, dumps
+from burmester.taskfile import TaskSpec, save as save_task
 
 __all__ = ["ANGLE_STEP_DEG", "EXPLORE_SAMPLES", "LIVE_SAMPLES", "PICK_PIXELS", "Explorer"]
 
@@ -196,7 +198,7 @@ class Explorer:
         self.figure.clear()
         self.ax_map: Axes = self.figure.add_subplot(1, 2, 1)
         self.ax_linkage: Axes = self.figure.add_subplot(1, 2, 2)
-        self.figure.subplots_adjust(left=0.06, right=0.98, top=0.9, bottom=0.17, wspace=0.15)
+        self.figure.subplots_adjust(left=0.06, right=0.98, top=0.9, bottom=0.2, wspace=0.15)
         self._map_artists: List[Artist] = []
         self._build()
         self._draw_state()
@@ -356,8 +358,11 @@ class Explorer:
             raise burmester.InvalidInputError(
                 f"cannot write {p}: the folder {str(p.parent)!r} does not exist; create it first"
             )
+        # Each file whole to a temporary file beside it, moved into place
+        # when complete (burmester._io).
         if suffix in (".png", ".pdf"):
-            self.figure.savefig(p, dpi=dpi)
+            with _io.atomic_path(p) as tmp:
+                self.figure.savefig(tmp, dpi=dpi)
         elif suffix == ".toml":
             spec = TaskSpec(
                 poses=tuple((x, y, a) for x, y, a in self.task.poses),
@@ -366,7 +371,7 @@ class Explorer:
                 limits=self.limits,
                 source="<explorer>",
             )
-            p.write_text(dumps(spec), encoding="utf-8")
+            save_task(spec, p)
         else:
             from burmester import export  # ezdxf only for .dxf, and only now
 
@@ -443,12 +448,16 @@ class Explorer:
             "drag the poses (dots: move, squares: turn), C0 (triangle) and A0 (star)", fontsize=9,
         )
         self.figure.suptitle("Driving crank center-point plane and the linkage")
-        self._figures_text: Text = self.figure.text(0.06, 0.075, "", fontsize=9, va="center", family="monospace")
+        # The footer: the figures and the verdict under the limits, wrapped
+        # to the figure's width (_footer), above the status line.
+        self._figures_text: Text = self.figure.text(
+            0.06, 0.05, "", fontsize=9, va="bottom", family="monospace", wrap=True
+        )
         self._figures_text.set_gid("figures")
-        self._status_text: Text = self.figure.text(0.06, 0.025, "", fontsize=9, va="center", color="#b2182b")
+        self._status_text: Text = self.figure.text(0.06, 0.015, "", fontsize=9, va="bottom", color="#b2182b")
         self._status_text.set_gid("status")
         self._help_text: Text = self.figure.text(
-            0.98, 0.025, "keys: b best pivot, r reset, e save", fontsize=8, ha="right", va="center", color="0.4",
+            0.98, 0.015, "keys: b best pivot, r reset, e save", fontsize=8, ha="right", va="bottom", color="0.4",
         )
         self._help_text.set_gid("help")
         self._flag_length = 0.06 * max(extent[1] - extent[0], extent[3] - extent[2])
@@ -484,20 +493,42 @@ class Explorer:
 
         self.ax_linkage.clear()
         bp.linkage(st.linkage, task=st.task, ax=self.ax_linkage, legend=False)
+        self._figures_text.set_text(self._footer())
+        self._status_text.set_text("" if self.error is None else f"refused: {self.error}")
+        self.figure.canvas.draw_idle()
+
+    def verdict(self) -> str:
+        """The linkage's verdict under the explorer's limits, in words: what
+        :attr:`burmester.SolutionMap.acceptable` decides for it
+        (:func:`burmester.pivots.violations`), ``"acceptable under the
+        limits (...)"`` or ``"not acceptable: ..."`` with every limit it
+        misses."""
+        lim = self.limits
+        bad = pv.violations(self._state.linkage.figures, lim)
+        if bad:
+            return "not acceptable: " + "; ".join(bad)
+        need = f"transmission >= {lim.min_transmission_deg:g} deg, link ratio <= {lim.max_link_ratio:g}"
+        if lim.input != "any":
+            need += f", {lim.input} input"
+        return f"acceptable under the limits ({need})"
+
+    def _footer(self) -> str:
+        """The footer's text: the linkage's figures, then :meth:`verdict`
+        (the text is wrapped to the figure's width when drawn)."""
+        st = self._state
         fig = st.linkage.figures
         mt = fig.min_transmission_deg
         turns = "turns fully" if fig.input_full else "rocks"
-        self._figures_text.set_text(
-            f"A0 {_fmt(st.driving_center)}  C0 {_fmt(st.filemon.driven_center)}  "
-            f"{fig.grashof}, input {turns};  min transmission "
-            + ("-" if mt is None else f"{mt:.1f} deg")
-            + f";  direction {fig.direction or 'none'};  "
-            + ("feasible" if fig.feasible else "not feasible")
-            + ";  " + ("branch-free" if fig.branch_free else "branch defect")
-            + f";  link ratio {fig.link_ratio:.3g}"
-        )
-        self._status_text.set_text("" if self.error is None else f"refused: {self.error}")
-        self.figure.canvas.draw_idle()
+        parts = [
+            f"A0 {_fmt(st.driving_center)}  C0 {_fmt(st.filemon.driven_center)}  {fig.grashof}, input {turns}",
+            "min transmission " + ("-" if mt is None else f"{mt:.1f} deg"),
+            f"direction {fig.direction or 'none'}",
+            "branch-free" if fig.branch_free else "branch defect",
+            f"link ratio {fig.link_ratio:.3g}",
+        ]
+        # Two lines, each wrapped by matplotlib to the figure's width
+        # (``wrap=True``) when the figure is narrow.
+        return ";  ".join(parts) + "\n" + self.verdict()
 
     def _draw_handles(self, poses: Sequence[Sequence[float]], c0: Point, a0: Point) -> None:
         for k, (x, y, a) in enumerate(poses):

@@ -18,6 +18,10 @@ plane, to DXF (with ezdxf) and to SVG (with the standard library).
   best pivots), or its circle-point plane (Filemon's lines and branch-free
   double wedge, the image poles and their circle, ``C1`` and ``C'k``).
 
+Every file is written whole to a temporary file beside its target and moved
+into place when complete (:mod:`burmester._io`): a write error, a full disk
+or Ctrl-C leaves no partial file and an existing one as it was.
+
 Every coordinate comes from the core (joints, coupler paths, travel, conic
 polylines, poles, sectors); nothing is computed again here. Lengths are
 written as they are, in the task's unit, which ``units=`` records (DXF
@@ -123,6 +127,7 @@ import numpy as np
 import numpy.typing as npt
 
 import burmester
+from burmester import _io
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
     DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
@@ -1112,7 +1117,11 @@ def _write(d: _Drawing, path: Path, units: str) -> Path:
         # A unit DXF may not know: its name written into the drawing (by both writers), in a corner.
         x0, _, y0, _ = d.bounds()
         d.labels.append(_Label((x0, y0), f"lengths in {units}"))
-    _WRITERS[path.suffix.lower()](d, path, units)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io): a write error or Ctrl-C leaves no partial file and
+    # an existing one as it was.
+    with _io.atomic_path(path) as tmp:
+        _WRITERS[path.suffix.lower()](d, tmp, units)
     return path
 
 
@@ -1157,7 +1166,8 @@ def linkage(
         sfb: the four-bar, from :meth:`burmester.Filemon.four_bar` or
             :meth:`burmester.Task.four_bar`.
         path: the file to write, ending in ``.dxf`` or ``.svg`` (replaced if
-            it exists).
+            it exists; written whole to a temporary file beside it and moved
+            into place when complete, so an error leaves no partial file).
         task: the task, to mark the poses it asks for; default: the poses
             the linkage reaches at its input angles.
         travel_samples: also draw the linkage at this many input angles
@@ -1466,3 +1476,131 @@ def burmester_plane_svg(
     """:func:`burmester_plane` to an ``.svg`` file (another suffix is an
     InvalidInputError): the same arguments."""
     return _burmester_to((".svg",), task, path, view, driven, plane, labels, units)
+
+
+# ---------------------------------------------------------------------------
+# The six-bar: a linkage driven from a motor by an added dyad
+
+LAYERS.update({
+    "CRANK_CIRCLE": Layer(30, "#fdae6b", "circle of the motor's crank joint D"),
+    "ATTACHMENT_ARC": Layer(30, "#fd8d3c", "E over a full crank turn (the swing)"),
+    "TURN": Layer(254, "#cccccc", "the six-bar sampled over a full crank turn"),
+    **{f"DRIVE_{k}": Layer(30, "#e6550d", f"the drive (crank D0 D, coupler D E) at pose {k}")
+       for k in _POSE_COLORS},
+})
+
+
+def _sixbar_links(d: _Drawing, six: burmester.SixBar, phi: float, layers: Tuple[str, str], what: str,
+                  joints: bool) -> None:
+    """The drive ``D0 D E``, the ternary input link ``A0 A E``, the coupler
+    triangle ``A C P`` and the rocker ``C C0`` at crank angle ``phi`` (the
+    core's joints)."""
+    d0, dj, e, a0, a, c, c0, p = six.joints(phi)
+    drive, motion = layers
+    d.polyline(drive, [d0, dj], f"crank D0 D, {what}")
+    d.polyline(drive, [dj, e], f"drive coupler D E, {what}")
+    d.polyline(motion, [a0, a, e], f"input link A0 A E, {what}", closed=True)
+    d.polyline(motion, [a, c, p], f"coupler A C P, {what}", closed=True)
+    d.polyline(motion, [c, c0], f"rocker C C0, {what}")
+    if joints:
+        for q, name in ((dj, "D"), (e, "E"), (a, "A"), (c, "C")):
+            d.marker(motion if name in ("A", "C") else drive, q, f"moving joint {name}, {what}")
+
+
+def _sixbar_drawing(drive: burmester.Drive, turn_samples: int, path_samples: int, labels: bool) -> _Drawing:
+    turn_samples = _samples("turn_samples", turn_samples, 0)
+    if turn_samples == 1:
+        raise burmester.InvalidInputError("turn_samples must be 0 (none) or at least 2, got 1")
+    path_samples = _samples("path_samples", path_samples, 8)
+    six = drive.sixbar
+    j = six.joints(drive.pose_crank_angles[0])
+    d0, a0, c0 = j[0], j[3], j[6]
+    d = _Drawing(f"six-bar: motor at D0 {d0}, A0 {a0}, C0 {c0}, time ratio {drive.time_ratio:.3f}")
+    d.polyline("GROUND", [d0, a0], "drive ground D0 A0")
+    d.polyline("GROUND", [a0, c0], "ground A0 C0")
+    for q, name in ((d0, "D0"), (a0, "A0"), (c0, "C0")):
+        d.marker("PIVOTS", q, f"fixed pivot {name}", name if labels else None)
+    d.circles.append(_Circle("CRANK_CIRCLE", (float(d0[0]), float(d0[1])), six.lengths[1], "crank circle"))
+    ts = np.asarray(drive.turn_angles(path_samples), dtype=float)
+    ts = np.append(ts, ts[0])
+    x, y, ok = six.coupler_path(ts)
+    for run in _runs(x, y, ok):
+        d.polyline("COUPLER_PATH", run, "coupler point over a full crank turn", closed=bool(ok.all()))
+    es = np.array([six.joints(float(t))[2] for t in ts])
+    d.polyline("ATTACHMENT_ARC", es, "E over a full crank turn")
+    if turn_samples:
+        for i, t in enumerate(drive.turn_angles(turn_samples), start=1):
+            _sixbar_links(d, six, t, ("TURN", "TURN"), f"crank sample {i} of {turn_samples}", False)
+    for k, phi in enumerate(drive.pose_crank_angles, start=1):
+        _sixbar_links(d, six, phi, (f"DRIVE_{k}", f"LINKAGE_{k}"), f"pose {k}", True)
+    _poses(d, drive.task.poses, 0.3 * min(six.motion.lengths), labels)
+    return d
+
+
+def sixbar(
+    drive: burmester.Drive,
+    path: PathLike,
+    *,
+    turn_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    units: str = DEFAULT_UNITS,
+) -> Path:
+    """Write a motor-driven six-bar (a :class:`burmester.Drive`) to a DXF
+    or SVG file, by the path's suffix, written beside it and moved into
+    place when complete.
+
+    Layers: ``GROUND`` (``D0 A0`` and ``A0 C0``), ``PIVOTS`` (``D0``, ``A0``,
+    ``C0``), ``CRANK_CIRCLE``, ``DRIVE_k`` (crank ``D0 D`` and drive coupler
+    ``D E`` at pose k) and ``LINKAGE_k`` (the input link ``A0 A E``, the
+    coupler triangle ``A C P`` and the rocker ``C C0`` at pose k),
+    ``COUPLER_PATH`` and ``ATTACHMENT_ARC`` (the coupler point and ``E`` over
+    a full crank turn), ``TURN`` (with ``turn_samples``), ``POSES`` and
+    ``TEXT``. Every point is the core's (:meth:`burmester.SixBar.joints`,
+    :meth:`burmester.SixBar.coupler_path`).
+
+    Parameters:
+        drive: the drive.
+        path: the file, ending in ``.dxf`` or ``.svg`` (replaced if it exists).
+        turn_samples: also draw the six-bar at this many crank angles over a
+            full turn (0: none; else 2 to :data:`MAX_SAMPLES`).
+        path_samples: samples of the paths per crank turn (8 to
+            :data:`MAX_SAMPLES`).
+        labels: write the pivots' names and the pose numbers.
+        units: the unit recorded (:data:`UNITS`).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: another suffix, a folder that does not
+            exist, unknown units or a sample count out of range.
+        ImportError: ezdxf (for ``.dxf``) is not installed.
+    """
+    return _sixbar_to((".dxf", ".svg"), drive, path, turn_samples, path_samples, labels, units)
+
+
+def _sixbar_to(suffixes: Sequence[str], drive: burmester.Drive, path: PathLike, turn_samples: int,
+               path_samples: int, labels: bool, units: str) -> Path:
+    if not isinstance(drive, burmester.Drive):
+        raise TypeError(f"expected a burmester.Drive, got {type(drive).__name__}")
+    target = _target(path, suffixes)
+    units = _units(units)
+    return _write(_sixbar_drawing(drive, turn_samples, path_samples, labels), target, units)
+
+
+def sixbar_dxf(drive: burmester.Drive, path: PathLike, *, turn_samples: int = 0,
+               path_samples: int = DEFAULT_PATH_SAMPLES, labels: bool = True,
+               units: str = DEFAULT_UNITS) -> Path:
+    """:func:`sixbar` to a ``.dxf`` file: the same arguments."""
+    return _sixbar_to((".dxf",), drive, path, turn_samples, path_samples, labels, units)
+
+
+def sixbar_svg(drive: burmester.Drive, path: PathLike, *, turn_samples: int = 0,
+               path_samples: int = DEFAULT_PATH_SAMPLES, labels: bool = True,
+               units: str = DEFAULT_UNITS) -> Path:
+    """:func:`sixbar` to an ``.svg`` file: the same arguments."""
+    return _sixbar_to((".svg",), drive, path, turn_samples, path_samples, labels, units)
+
+
+__all__ += ["sixbar", "sixbar_dxf", "sixbar_svg"]

@@ -21,6 +21,9 @@ of the Burmester curves and points of four and five poses.
   are the pictures the objects show in Jupyter (``_repr_png_``).
 - :func:`explore`: the interactive explorer (:mod:`burmester.explorer`):
   drag the poses and pivots, and the map and the linkage follow.
+- :func:`drive_map`, :func:`sixbar`, :func:`animate_sixbar`: a motor for a
+  linkage whose input swings (the Watt II six-bar): where the drive's crank
+  pivot may go, the six-bar at the poses, and a full crank turn animated.
 
 Needs matplotlib (``pip install "burmester[plot]"``). Every drawing function
 takes an optional ``ax`` to draw into and returns the Axes, so you can keep
@@ -69,6 +72,7 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     ) from e
 
 import burmester
+from burmester import _io
 from burmester._burmester import Filemon, Grid, PairMap, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
     DEFAULT_GRID, curve_plane_points, default_circle_view, default_curve_view, default_view, describe_outside,
@@ -1383,7 +1387,20 @@ def animate(
 
     anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
     writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
-    anim.save(str(path), writer=writer, dpi=dpi)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io): Ctrl-C or a write error leaves no partial file.
+    with _io.atomic_path(path) as tmp:
+        try:
+            anim.save(str(tmp), writer=writer, dpi=dpi)
+        except Exception as e:
+            # The writer finishes its file in a `finally`; after Ctrl-C that
+            # can fail too (no frames yet) and hide the interrupt.
+            cause: Optional[BaseException] = e
+            while cause is not None:
+                if isinstance(cause, KeyboardInterrupt):
+                    raise cause from None
+                cause = cause.__context__
+            raise
     return anim
 
 
@@ -1736,3 +1753,355 @@ def explore(
         task, driven_center, view, driving_center=driving_center, limits=limits, grid=grid,
         live=live, export_to=export_to, fig=fig,
     )
+
+
+# ---------------------------------------------------------------------------
+# The motor drive: the Watt II six-bar (a crank-rocker added to a linkage
+# whose input swings)
+
+#: Colours of the drive map's categories: no drive, a drive (the six-bar
+#: turns fully), a drive that meets the limits.
+DRIVE_MAP_CMAP = ListedColormap(["#eeeeee", "#c6dbef", "#4292c6"])
+#: Colour of the drive (crank, drive coupler) in the pictures of a six-bar.
+DRIVE_COLOR = "#e6550d"
+
+
+def _drive_of(obj: Any) -> Tuple[burmester.SixBar, Optional[burmester.Drive]]:
+    if isinstance(obj, burmester.Drive):
+        return obj.sixbar, obj
+    if isinstance(obj, burmester.SixBar):
+        return obj, None
+    raise TypeError(f"expected a burmester.Drive or a burmester.SixBar, got {type(obj).__name__}")
+
+
+def _sixbar_polys(six: burmester.SixBar, phi: float) -> Tuple[npt.NDArray[np.float64], ...]:
+    """``(drive, ternary, motion, coupler)`` at crank angle ``phi``: the
+    polyline D0-D-E, the input link's triangle A0-A-E, the polyline A-C-C0
+    and the coupler triangle A-C-P (the core's joints)."""
+    d0, d, e, a0, a, c, c0, p = (np.asarray(q, dtype=float) for q in six.joints(phi))
+    return (
+        np.array([d0, d, e]), np.array([a0, a, e]), np.array([a, c, c0]), np.array([a, c, p]),
+    )
+
+
+def _turn_angles(six: burmester.SixBar, drive: Optional[burmester.Drive], n: int) -> npt.NDArray[np.float64]:
+    if drive is not None:
+        return np.asarray(drive.turn_angles(n), dtype=float)
+    return np.asarray(six.crank_angles(0.0, n), dtype=float)
+
+
+def _draw_sixbar_static(ax: Axes, six: burmester.SixBar, drive: Optional[burmester.Drive],
+                        task: Optional[Task], curve: bool, labels: bool) -> List[Artist]:
+    """Fixed pivots, crank circle, E's swing, the coupler path over a turn
+    and the poses; returns legend handles."""
+    handles: List[Artist] = []
+    j = six.joints(drive.pose_crank_angles[0] if drive is not None else 0.0)
+    d0, a0, c0 = j[0], j[3], j[6]
+    r = six.lengths[1]
+    crank = Circle(d0, r, fill=False, color=DRIVE_COLOR, linestyle=":", linewidth=1.0, zorder=2,
+                   label="crank circle")
+    crank.set_gid("crank-circle")
+    ax.add_patch(crank)
+    handles.append(crank)
+    if curve:
+        ts = _turn_angles(six, drive, 720)
+        x, y, ok = six.coupler_path(ts)
+        (cc,) = ax.plot(x[ok], y[ok], color="0.55", linewidth=1.0, zorder=1,
+                        label="coupler path over a crank turn")
+        cc.set_gid("coupler-path")
+        handles.append(cc)
+        es = np.array([six.joints(float(t))[2] for t in ts[::4]])
+        (arc,) = ax.plot(es[:, 0], es[:, 1], color=DRIVE_COLOR, linewidth=1.0, alpha=0.6, zorder=1,
+                         label="E over a crank turn")
+        arc.set_gid("attachment-arc")
+        handles.append(arc)
+    (g,) = ax.plot([d0[0], a0[0], c0[0]], [d0[1], a0[1], c0[1]], color="0.3", linestyle="--",
+                   linewidth=1.0, zorder=2)
+    g.set_gid("ground")
+    handles.append(_markers(ax, [d0, a0, c0], "fixed-pivots", "fixed pivots D0 (motor), A0, C0",
+                            marker="^", markersize=10, color="0.2", zorder=6))
+    if drive is not None:
+        poses_ = task.poses if task is not None else drive.task.poses
+        flag = 0.3 * min(six.motion.lengths)
+        for k, pose in enumerate(poses_, start=1):
+            fx, fy = _flag(pose, flag)
+            (mk,) = ax.plot(fx, fy, color="black", linewidth=2.0, zorder=9)
+            mk.set_gid(f"pose-{k}")
+            (dot,) = ax.plot([pose[0]], [pose[1]], marker="o", markersize=5, color="black", zorder=9)
+            dot.set_gid(f"pose-{k}")
+            if labels:
+                _label(ax, (pose[0], pose[1]), str(k))
+    if labels:
+        _label(ax, d0, "D0")
+        _label(ax, a0, "A0")
+        _label(ax, c0, "C0")
+    return handles
+
+
+def _draw_sixbar_at(ax: Axes, six: burmester.SixBar, phi: float, color: str, gid: str,
+                    label: Optional[str], alpha: float = 0.25) -> Artist:
+    drive, ternary, motion, coupler = _sixbar_polys(six, phi)
+    (dl,) = ax.plot(drive[:, 0], drive[:, 1], color=DRIVE_COLOR, linewidth=1.8, marker="o",
+                    markersize=3, zorder=4)
+    dl.set_gid(f"drive-{gid}")
+    (ml,) = ax.plot(motion[:, 0], motion[:, 1], color=color, linewidth=2.0, marker="o", markersize=4,
+                    zorder=4, label=label)
+    ml.set_gid(f"linkage-{gid}")
+    for poly, name in ((ternary, "input"), (coupler, "coupler")):
+        tri = Polygon(poly, closed=True, facecolor=color, edgecolor=color, alpha=alpha, zorder=3)
+        tri.set_gid(f"{name}-{gid}")
+        ax.add_patch(tri)
+    return ml
+
+
+def sixbar(
+    obj: Union[burmester.Drive, burmester.SixBar],
+    *,
+    task: Optional[Task] = None,
+    coupler_path: bool = True,
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a six-bar: a drive at the crank angles of its poses, or a
+    :class:`burmester.SixBar` at four crank angles a quarter turn apart.
+
+    Draws the fixed pivots ``D0`` (the motor), ``A0`` and ``C0``, the crank
+    circle (gid ``"crank-circle"``), the coupler point's path and ``E``'s
+    swing over a full crank turn (``"coupler-path"``, ``"attachment-arc"``),
+    and at each position the drive ``D0 D E`` (orange, ``"drive-k"``), the
+    ternary input link ``A0 A E`` and the coupler triangle ``A C P``
+    (``"input-k"``, ``"coupler-k"``) and the motion loop ``A C C0``
+    (``"linkage-k"``) in the pose's colour; the poses as black flags
+    (``"pose-k"``). Every point is the core's (:meth:`burmester.SixBar.joints`).
+
+    Parameters:
+        obj: a :class:`burmester.Drive` (from
+            :meth:`burmester.SynthesizedFourBar.best_drive`,
+            :meth:`burmester.DriveMap.best_drives`, ...) or a
+            :class:`burmester.SixBar`.
+        task: the task whose poses to mark (a drive knows its own).
+        coupler_path: draw the paths over a full crank turn.
+        labels: write the names of the pivots and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    six, drive = _drive_of(obj)
+    ax = _new_axes(ax, (7.5, 6.0))
+    handles = _draw_sixbar_static(ax, six, drive, task, coupler_path, labels)
+    if drive is not None:
+        for k, phi in enumerate(drive.pose_crank_angles, start=1):
+            handles.append(_draw_sixbar_at(
+                ax, six, phi, POSE_COLORS[k], str(k),
+                f"pose {k}: crank at {math.degrees(phi) % 360:.1f} deg",
+            ))
+    else:
+        for k in range(4):
+            phi = k * math.pi / 2
+            try:
+                handles.append(_draw_sixbar_at(ax, six, phi, POSE_COLORS[k + 1], str(k + 1),
+                                               f"crank at {90 * k} deg"))
+            except burmester.BurmesterError:
+                continue
+    if labels:
+        if drive is not None:
+            ax.set_title(
+                f"Driven by a motor: min transmission {drive.min_transmission_deg:.1f} deg, "
+                f"time ratio {drive.time_ratio:.2f}"
+            )
+        else:
+            ax.set_title(f"Six-bar: drive {six.drive_grashof}, "
+                         f"{'turns fully' if six.crank_turns_fully else 'does not turn fully'}")
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.margins(0.08)
+    if legend:
+        _legend(ax, handles)
+    return ax
+
+
+def drive_map(
+    dmap: burmester.DriveMap,
+    *,
+    best: int = 3,
+    rank_by: RankBy = "balanced",
+    transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
+    labels: bool = True,
+    legend: bool = True,
+    ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a drive map: where the motor's crank pivot ``D0`` may go.
+
+    Shades the candidate pivots with a drive (the six-bar turns fully, gid
+    ``"drive-map"``) and those that meet the limits, draws contours of the
+    smaller minimum transmission angle of the two loops over a crank turn
+    (``"transmission"``), ``A0``, ``E``'s swing from the first pose's end to
+    the last (``"attachment-swing"``), the line through its two ends where
+    the time ratio is 1 (``"unit-time-ratio"``, the classic construction),
+    and the best drives by ``rank_by`` as numbered stars (``"drives"``).
+
+    Parameters:
+        dmap: the map (:meth:`burmester.SynthesizedFourBar.drive_map`).
+        best: how many of the best drives to mark (0: none).
+        rank_by: their ranking (:meth:`burmester.DriveMap.best_drives`).
+        transmission_levels: the contour levels, degrees.
+        labels: write the names of the points and a title.
+        legend: draw a legend to the right of the axes.
+        ax: the Axes to draw into; default: a new figure.
+
+    Returns:
+        The Axes.
+    """
+    ax = _new_axes(ax)
+    extent = dmap.extent
+    cat = np.where(dmap.acceptable, 2, np.where(dmap.valid, 1, 0)).astype(np.int8)
+    img = ax.imshow(cat, origin="lower", extent=extent, cmap=DRIVE_MAP_CMAP, vmin=0, vmax=2,
+                    interpolation="nearest", zorder=0)
+    img.set_gid("drive-map")
+    handles: List[Artist] = [
+        Patch(facecolor="#c6dbef", edgecolor="0.5", label="crank pivot with a drive"),
+        Patch(facecolor="#4292c6", edgecolor="0.5", label="a drive that meets the limits"),
+    ]
+    mu = np.degrees(dmap.min_transmission_rad)
+    if np.isfinite(mu).any():
+        xs, ys = dmap.grid.cell_centers()
+        cs = ax.contour(xs, ys, mu, levels=sorted(transmission_levels), colors="#636363",
+                        linewidths=0.8, zorder=3)
+        cs.set_gid("transmission")
+        ax.clabel(cs, fmt="%g°", fontsize=7)
+        handles.append(Line2D([], [], color="#636363", linewidth=0.8,
+                              label="min transmission of both loops, deg"))
+    a0 = dmap.linkage.driving[0]
+    ea, eb = dmap.attachment_ends
+    rho = math.dist(a0, ea)
+    t0 = math.atan2(ea[1] - a0[1], ea[0] - a0[0])
+    t1 = math.atan2(eb[1] - a0[1], eb[0] - a0[0])
+    sweep = (t1 - t0 + math.pi) % (2 * math.pi) - math.pi
+    ts = t0 + sweep * np.linspace(0.0, 1.0, 64)
+    (sw,) = ax.plot(a0[0] + rho * np.cos(ts), a0[1] + rho * np.sin(ts), color=DRIVE_COLOR,
+                    linewidth=2.5, zorder=5, label="E's swing (first pose to last)")
+    sw.set_gid("attachment-swing")
+    handles.append(sw)
+    seg = clip_line(ea, (eb[0] - ea[0], eb[1] - ea[1]), extent)
+    if seg:
+        (ln,) = ax.plot([seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]], color=DRIVE_COLOR,
+                        linestyle="--", linewidth=0.9, zorder=4, label="time ratio 1 (beyond the ends)")
+        ln.set_gid("unit-time-ratio")
+        handles.append(ln)
+    handles.append(_markers(ax, [a0], "input-pivot", "input pivot A0", marker="^", markersize=9,
+                            color="0.2", zorder=6))
+    drives = dmap.best_drives(best, rank_by=rank_by) if best > 0 else []
+    if drives:
+        handles.append(_markers(ax, [d.drive_pivot for d in drives], "drives", f"best drives ({rank_by})",
+                                marker="*", markersize=13, color="#ffd700", markeredgecolor="black",
+                                zorder=7))
+    if labels:
+        _label(ax, a0, "A0")
+        _label(ax, ea, "E1")
+        for k, d in enumerate(drives, start=1):
+            _label(ax, d.drive_pivot, str(k))
+        ax.set_title(f"Drive map: the motor's crank pivot D0 (swing margin {dmap.swing_margin_deg:g} deg)")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    _finish(ax, extent, legend, handles)
+    return ax
+
+
+def animate_sixbar(
+    obj: Union[burmester.Drive, burmester.SixBar],
+    path: Union[str, Path],
+    *,
+    task: Optional[Task] = None,
+    frames: int = 120,
+    fps: int = 24,
+    dpi: int = 80,
+) -> FuncAnimation:
+    """Write an animation of a six-bar over one full crank turn (the motor
+    turning at a constant speed), from pose 1 in the motor's direction for a
+    drive. The file is written beside ``path`` and moved into place when
+    complete.
+
+    Parameters:
+        obj: a :class:`burmester.Drive` or a :class:`burmester.SixBar` whose
+            crank turns fully.
+        path: ``.gif`` (Pillow) or ``.mp4`` (ffmpeg).
+        task: the task whose poses to mark (a drive knows its own).
+        frames: frames per crank turn (2 to :data:`MAX_FRAMES`).
+        fps: frames per second (1 to :data:`MAX_FPS`).
+        dpi: resolution (1 to :data:`MAX_DPI`).
+
+    Returns:
+        The matplotlib animation (already saved).
+
+    Raises:
+        burmester.InvalidInputError: another file type, a folder that does
+            not exist, a count out of range, or a six-bar whose crank does
+            not turn fully.
+        RuntimeError: ``.mp4`` without ffmpeg.
+    """
+
+    six, drive = _drive_of(obj)
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in (".gif", ".mp4"):
+        raise burmester.InvalidInputError(f"animation file must end in .gif or .mp4, got {path.name!r}")
+    frames = _count_in("frames", frames, 2, MAX_FRAMES)
+    fps = _count_in("fps", fps, 1, MAX_FPS)
+    dpi = _count_in("dpi", dpi, 1, MAX_DPI)
+    if not path.parent.is_dir():
+        raise burmester.InvalidInputError(
+            f"cannot write {path}: the folder {str(path.parent)!r} does not exist; create it first"
+        )
+    if not six.crank_turns_fully:
+        raise burmester.InvalidInputError(
+            "the six-bar's crank does not turn fully (its drive is not a crank-rocker, or a loop "
+            f"toggles at crank angles {[round(math.degrees(a), 2) for a in six.dead_positions]} deg)"
+        )
+    if suffix == ".mp4" and not matplotlib.animation.writers.is_available("ffmpeg"):
+        raise RuntimeError("writing .mp4 needs ffmpeg on the PATH; install it, or write a .gif")
+    angles = _turn_angles(six, drive, frames)
+    polys = [_sixbar_polys(six, float(t)) for t in angles]
+    fig, ax = plt.subplots(figsize=(6.0, 5.0))
+    _draw_sixbar_static(ax, six, drive, task, True, True)
+    allpts = np.vstack([np.vstack(p) for p in polys])
+    lo, hi = allpts.min(axis=0), allpts.max(axis=0)
+    pad = 0.08 * float(max(hi - lo))
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.set_aspect("equal")
+    title = "Six-bar over a crank turn"
+    if drive is not None:
+        title = f"Motor-driven: time ratio {drive.time_ratio:.2f}, min transmission {drive.min_transmission_deg:.0f} deg"
+    ax.set_title(title)
+    (drive_art,) = ax.plot([], [], color=DRIVE_COLOR, linewidth=2.5, marker="o", markersize=5, zorder=8)
+    drive_art.set_gid("moving-drive")
+    (motion_art,) = ax.plot([], [], color="#333333", linewidth=2.5, marker="o", markersize=5, zorder=8)
+    motion_art.set_gid("moving-linkage")
+    tern = Polygon(polys[0][1], closed=True, facecolor="#fdae6b", edgecolor="#e6550d", alpha=0.6, zorder=7)
+    tern.set_gid("moving-input")
+    ax.add_patch(tern)
+    tri = Polygon(polys[0][3], closed=True, facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.6, zorder=8)
+    tri.set_gid("moving-coupler")
+    ax.add_patch(tri)
+
+    def update(i: int) -> List[Artist]:
+        dr, te, mo, co = polys[i]
+        drive_art.set_data(dr[:, 0], dr[:, 1])
+        motion_art.set_data(mo[:, 0], mo[:, 1])
+        tern.set_xy(te)
+        tri.set_xy(co)
+        return [drive_art, motion_art, tern, tri]
+
+    anim = FuncAnimation(fig, update, frames=len(polys), interval=1000.0 / fps, blit=False)
+    writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
+    # Whole to a temporary file beside it, moved into place when complete
+    # (burmester._io), as animate writes.
+    try:
+        with _io.atomic_path(path) as tmp:
+            anim.save(str(tmp), writer=writer, dpi=dpi)
+    finally:
+        plt.close(fig)
+    return anim

@@ -376,7 +376,16 @@ class _Reader:
     def number(self, where: str, value: object, what: str = "a number") -> float:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.fail(where, f"expected {what}, found {_describe(value)}")
-        x = float(value)
+        try:
+            x = float(value)
+        except OverflowError:
+            # An integer beyond a float's range (about 1.8e308).
+            digits = len(str(abs(int(value))))
+            raise self.fail(
+                where,
+                f"expected {what} within +-1.8e308, found an integer of {digits} digits; "
+                "write the value you mean (as a float, for example 1.5e30)",
+            ) from None
         if not math.isfinite(x):
             raise self.fail(where, f"expected a finite number, found {value}")
         return x
@@ -411,7 +420,8 @@ class _Reader:
             if isinstance(n, bool) or not isinstance(n, int):
                 raise self.fail(f"{where}[{i}]", f"expected a whole number, found {_describe(n)}")
             if not 2 <= n <= 20000:
-                raise self.fail(f"{where}[{i}]", f"expected 2 to 20000 samples, found {n}")
+                found = str(n) if len(str(n)) <= 20 else f"an integer of {len(str(abs(n)))} digits"
+                raise self.fail(f"{where}[{i}]", f"expected 2 to 20000 samples, found {found}")
             out.append(n)
         return out[0], out[1]
 
@@ -675,7 +685,10 @@ def _parse_many(
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
-    """A :class:`TaskSpec` from the text of a task file."""
+    """A :class:`TaskSpec` from the text of a task file (a leading UTF-8
+    byte-order mark, which some editors write, is ignored)."""
+    if text.startswith("\ufeff"):
+        text = text[1:]
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
@@ -785,3 +798,15 @@ def _dump_space(space: Space, note: Any) -> Any:
     if space.travel_samples != 64:
         t.add("travel_samples", int(space.travel_samples))
     return t
+
+
+def save(spec: TaskSpec, path: Union[str, Path], *, overwrite: bool = True) -> Path:
+    """Write ``spec`` as a task file (:func:`dumps`) to ``path``: whole to a
+    temporary file beside it, moved into place when complete
+    (:mod:`burmester._io`), so a write error or Ctrl-C leaves no partial
+    file. ``overwrite=False`` raises :class:`FileExistsError` when ``path``
+    exists at the move (an existing file is never replaced). Returns the
+    path."""
+    from burmester import _io
+
+    return _io.write_text(path, dumps(spec), overwrite=overwrite)

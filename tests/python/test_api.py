@@ -60,6 +60,13 @@ def samples():
     misses = burmester.design(t, limits=DesignLimits(85.0), coarse_driven=4, coarse_driving=12, starts=2)
     pmap = Task(BURMESTER_FIVE[:4]).pair_map(40, 36, min_transmission_deg=20.0,
                                              base_plate=[(-20, -20), (20, -20), (20, 20), (-20, 20)])
+    # A motor for the example's best linkage by transmission (its input swings).
+    rocker = f.solution_map(Grid(*VP, 100, 100)).best_pivots(1, rank_by="transmission")[0].linkage
+    a0 = rocker.driving[0]
+    dmap = rocker.drive_map(a0[0] - 40, a0[0] + 40, a0[1] - 40, a0[1] + 40, 24, 20, min_transmission_deg=10,
+                            base_plate=[(a0[0] - 50, a0[1] - 50), (a0[0] + 50, a0[1] - 50), (a0[0], a0[1] + 50)],
+                            obstacles=[[(0.0, -3.0), (1.0, -3.0), (0.5, -2.0)]], link_width=0.1, travel_samples=16)
+    valid = [(j, i) for j in range(20) for i in range(24) if dmap.valid[j, i]]
     return {
         "Grid": Grid(*VP, 30, 20),
         "Conic": f.conics[0],
@@ -93,13 +100,18 @@ def samples():
         "AtlasPair": atlas.best_pairs(1)[0],
         "PairMap": pmap,
         "Pair": pmap.best_pairs(1)[0],
+        "DriveMap": dmap,
+        "Drive": dmap.drive(*valid[len(valid) // 2]),
+        "Drive (best)": rocker.best_drive(),
+        "SixBar": rocker.best_drive().sixbar,
     }
 
 
 CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.Configuration, LinkageFigures, Pole,
            Task, Filemon, SynthesizedFourBar, DesignLimits, Pivot, SolutionMap, burmester.PivotAtlas,
            burmester.AtlasPair, burmester.PairMap, burmester.Pair, burmester.Space, burmester.Design,
-           burmester.NearMiss, burmester.DesignReport]
+           burmester.NearMiss, burmester.DesignReport,
+           burmester.SixBar, burmester.Drive, burmester.DriveMap]
 
 
 # ---------------------------------------------------------------------------
@@ -210,6 +222,15 @@ PROPERTIES = {
     burmester.PairMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                        "size_ratio acceptable grid extent shape driving_dyads driven_dyads task limits",
     burmester.Pair: "driving driven index linkage figures margin size_ratio score ranked_by",
+    burmester.SixBar: "drive motion drive_mode motion_mode attachment_angle coupler_point coupler_angle_offset "
+                      "drive_pivot lengths attachment_side link_ratio size drive_grashof crank_turns_fully "
+                      "limit_positions swing stroke_angle time_ratio min_transmission_deg dead_positions",
+    burmester.Drive: "sixbar linkage task drive_pivot attachment pose_crank_angles stroke_start direction "
+                     "acceptable index margin score ranked_by limits swing_margin_deg min_transmission_deg "
+                     "drive_transmission_deg motion_transmission_deg time_ratio link_ratio size_ratio swing stroke",
+    burmester.DriveMap: "valid min_transmission_rad drive_transmission_rad time_ratio link_ratio size_ratio "
+                        "acceptable grid extent shape linkage attachment attachment_ends swing "
+                        "motion_transmission_deg limits swing_margin_deg max_time_ratio",
 }
 
 #: Methods of each class: they take arguments, can fail, or do real work.
@@ -224,12 +245,15 @@ METHODS = {
           "curve_dyad curve_dyads order_arcs branch_free_arcs curve_branch burmester_points burmester_curves burmester_four_bars",
     Filemon: "line_conic is_branch_free classify classify_circle_point circle_signs conic_values four_bar "
              "branch_map margin_map margin solution_map",
-    SynthesizedFourBar: "travel_angles pose_at score",
+    SynthesizedFourBar: "travel_angles pose_at score drive_map drive classic_drive drive_search best_drive",
     SolutionMap: "point linkage margin best_pivots pareto_front",
     burmester.PivotAtlas: "best_pairs",
     burmester.AtlasPair: "linkage",
     burmester.Space: "contains_pivot search_box",
     burmester.PairMap: "linkage margins best_pairs pareto_front",
+    burmester.SixBar: "solve transmission_angles toggle joints pose_at coupler_path crank_angles crank_angles_for_input",
+    burmester.Drive: "turn_angles pose_at",
+    burmester.DriveMap: "point drive best_drives pareto_front classic_drive",
 }
 
 #: Methods without arguments, and why each is a method.
@@ -248,6 +272,7 @@ NO_ARGUMENT_METHODS = {
     (SolutionMap, "pareto_front"): "does work: scans every sample and builds each linkage on the front",
     (burmester.PairMap, "margins"): "does work: a distance transform over every pair",
     (burmester.PairMap, "pareto_front"): "does work: scans every pair and builds each linkage on the front",
+    (burmester.DriveMap, "pareto_front"): "does work: scans every sample and builds each drive on the front",
 }
 
 
@@ -264,6 +289,8 @@ def test_naming_rule(cls):
     for name in methods:
         assert _kind(cls, name) == "method", (cls.__name__, name)
     attrs = {"columns", "grashof_names"} if cls in (SolutionMap, burmester.PairMap) else set()
+    if cls is burmester.DriveMap:
+        attrs = {"columns"}
     for name in attrs:
         assert _kind(cls, name) == "class attribute"
     # Nothing public is left unclassified.

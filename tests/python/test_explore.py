@@ -183,7 +183,10 @@ def test_dragging_a0_changes_the_linkage_and_its_figures(ex):
     assert fig.grashof in words
     assert f"min transmission {fig.min_transmission_deg:.1f} deg" in words
     assert ("branch-free" if fig.branch_free else "branch defect") in words
-    assert ("not feasible" not in words) == fig.feasible
+    # The verdict under the explorer's limits (issue 24: it said "feasible").
+    flat = " ".join(words.split())
+    assert ex.verdict() in flat
+    assert ("not acceptable" in flat) == bool(burmester.pivots.violations(fig, ex.limits))
     for k, (theta, mode) in enumerate(zip(expected.input_angles, expected.modes), start=1):
         (chain,) = by_gid(ex.ax_linkage, f"linkage-{k}")
         np.testing.assert_allclose(chain.get_xydata(), expected.fourbar.joints(theta, mode or "open"))
@@ -486,3 +489,57 @@ def test_works_on_the_jupyter_widget_canvas():
     code = IPYMPL_SESSION.format(poses=POSES, c0=C0)
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.split("\n")[:3] == ["ipympl.backend_nbagg", "True", "[2.4, 0.8, 0.4] None"]
+
+
+def _acceptable_but_for_transmission(m, limit_deg):
+    """A driving pivot of map ``m`` that is branch-free and feasible, within
+    the link ratio, but whose minimum transmission angle is below
+    ``limit_deg`` (and above 20 degrees)."""
+    mu = np.degrees(m.min_transmission_rad)
+    ok = m.branch_free & (m.direction != 0) & m.one_circuit & (m.link_ratio <= 10)
+    js, iis = np.nonzero(ok & (mu > 20) & (mu < limit_deg - 2))
+    assert len(js), "no such pivot on the grid"
+    return m.point(int(js[0]), int(iis[0]))
+
+
+def test_the_footer_gives_the_verdict_under_the_limits():
+    # A linkage that is feasible and branch-free but transmits worse than
+    # the limit: the footer said "feasible", read as a pass.
+    limits = burmester.DesignLimits(min_transmission_deg=35.0)
+    e = bp.explore(Task(POSES), C0, VIEW, limits=limits)
+    a0 = _acceptable_but_for_transmission(e.solution_map, 35.0)
+    e.move_driving_center(a0)
+    fig = e.linkage().figures
+    assert fig.feasible and fig.branch_free and fig.min_transmission_deg < 35.0
+    (text,) = [t for t in e.figure.texts if t.get_gid() == "figures"]
+    words = " ".join(text.get_text().split())
+    assert "not acceptable:" in words and f"transmission {fig.min_transmission_deg:.0f} < 35 deg" in words
+    assert "feasible" not in words.replace("not acceptable", "")
+    # Under a looser limit the same linkage is acceptable.
+    e2 = bp.explore(Task(POSES), C0, VIEW, limits=burmester.DesignLimits(min_transmission_deg=15.0))
+    e2.move_driving_center(a0)
+    (text2,) = [t for t in e2.figure.texts if t.get_gid() == "figures"]
+    assert "acceptable under the limits (transmission >= 15 deg, link ratio <= 10)" in " ".join(
+        text2.get_text().split())
+
+
+@pytest.mark.parametrize("width", [13.0, 8.0])
+def test_the_footer_stays_inside_the_figure(width):
+    # A linkage that misses several limits has the longest verdict.
+    limits = burmester.DesignLimits(min_transmission_deg=80.0, max_link_ratio=1.5, input="crank")
+    fig = plt.figure(figsize=(width, 6.2))
+    e = bp.explore(Task(POSES), C0, VIEW, limits=limits, fig=fig)
+    e.move_driving_center((-7.5, -7.5))
+    e.figure.canvas.draw()
+    renderer = e.figure.canvas.get_renderer()
+    box = e.figure.bbox
+    for t in e.figure.texts:
+        if not t.get_text():
+            continue
+        b = t.get_window_extent(renderer)
+        assert box.x0 <= b.x0 and b.x1 <= box.x1 and box.y0 <= b.y0 and b.y1 <= box.y1, (t.get_gid(), b, box)
+    # Nor over the axes' labels.
+    (text,) = [t for t in e.figure.texts if t.get_gid() == "figures"]
+    top = text.get_window_extent(renderer).y1
+    for ax in (e.ax_map, e.ax_linkage):
+        assert top <= ax.get_tightbbox(renderer).y0 + 1.0

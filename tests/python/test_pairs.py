@@ -189,8 +189,11 @@ def test_bad_input(task):
     with pytest.raises(InvalidInputError):
         task.pair_map(-1)
     m = task.pair_map(8)
-    with pytest.raises(IndexError):
-        m.linkage(8, 0)
+    # A typed error naming the index (issue 24: it was an IndexError).
+    for j, i, name in ((8, 0, "j (the driven sample)"), (0, 8, "i (the driving sample)")):
+        with pytest.raises(InvalidInputError, match=r"must be from 0 to 7") as e:
+            m.linkage(j, i)
+        assert e.value.cause == "grid_index" and name in str(e.value)
     with pytest.raises(InvalidInputError):
         m.best_pairs(3, rank_by="best")
     assert isinstance(m.best_pairs(0), list) and not m.best_pairs(0)

@@ -59,3 +59,13 @@ fn solution_map() {
 fn conic_polylines() {
     replay("conic_polylines", checks::conic_polylines);
 }
+
+#[test]
+fn pair_map() {
+    replay("pair_map", checks::pair_map);
+}
+
+#[test]
+fn atlas() {
+    replay("atlas", checks::atlas);
+}

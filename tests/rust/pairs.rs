@@ -328,7 +328,7 @@ fn best_pairs_rebuild_their_linkages_and_rank_by_score() {
         );
     }
     // Margins: positive exactly on the branch-free cells.
-    let margins = m.margins();
+    let margins = m.margins().unwrap();
     for (k, &free) in m.columns.branch_free.iter().enumerate() {
         assert_eq!(margins[k] > 0.0, free);
     }

@@ -4,17 +4,16 @@
 //! (`burmester/atlas.py`).
 
 use burmester::{AtlasCell, RankBy};
-use numpy::IntoPyArray;
-use numpy::ndarray::{Array2, Array3};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::conv::{Count, PyPoint, Real};
+use crate::conv::{empty, slice_mut, writer};
 use crate::design::{MapOptions, PyDesignLimits};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::run::{WATCH_MIN_SAMPLES, run};
+use crate::run::{WATCH_MIN_SAMPLES, run_in};
 use crate::synthesis::PyTask;
 
 /// The cells of rows `row_start..row_end` of the driven grid, as a dict of
@@ -75,11 +74,14 @@ pub(crate) fn _atlas_tile<'py>(
         None => None,
     };
     let samples = r1.saturating_sub(r0) * dn.nx() * dv.len();
-    let cells = run(
+    // Progress counts the driving rows over all driven centers (a center's
+    // map can take seconds); the interrupt message says so.
+    let cells = run_in(
         py,
         samples >= WATCH_MIN_SAMPLES,
         progress,
         None,
+        "driving rows (over all driven centers)",
         |control| {
             let work = || {
                 t.pivot_atlas_rows(
@@ -99,57 +101,81 @@ pub(crate) fn _atlas_tile<'py>(
         },
     )?;
     let (rows, nx) = (r1 - r0, dn.nx());
-    let col = |f: &dyn Fn(&AtlasCell) -> f64| -> Array2<f64> {
-        Array2::from_shape_vec((rows, nx), cells.iter().map(f).collect()).expect("one per cell")
-    };
     let d = PyDict::new(py);
-    let valid = Array2::from_shape_vec((rows, nx), cells.iter().map(|c| c.valid).collect())
-        .expect("one per cell");
-    let ints = |f: &dyn Fn(&AtlasCell) -> i64| -> Array2<i64> {
-        Array2::from_shape_vec((rows, nx), cells.iter().map(f).collect()).expect("one per cell")
-    };
-    d.set_item("valid", valid.into_pyarray(py))?;
-    d.set_item("count", ints(&|c| c.count as i64).into_pyarray(py))?;
+    // Each column a NumPy array (a failed allocation is a MemoryError),
+    // filled from the cells.
+    fn column<'py, T: numpy::Element + Copy>(
+        py: Python<'py>,
+        shape: &[usize],
+        cells: &[AtlasCell],
+        f: impl Fn(&AtlasCell) -> [T; 2],
+        per_cell: usize,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let a = empty::<T>(py, shape)?;
+        {
+            let mut w = writer(&a)?;
+            let out = slice_mut(&mut w);
+            for (o, c) in out.chunks_exact_mut(per_cell).zip(cells) {
+                o.copy_from_slice(&f(c)[..per_cell]);
+            }
+        }
+        Ok(a.into_any())
+    }
+    let flat = [rows, nx];
+    d.set_item("valid", column(py, &flat, &cells, |c| [c.valid; 2], 1)?)?;
+    d.set_item(
+        "count",
+        column(py, &flat, &cells, |c| [c.count as i64; 2], 1)?,
+    )?;
     d.set_item(
         "branch_free",
-        ints(&|c| c.branch_free as i64).into_pyarray(py),
+        column(py, &flat, &cells, |c| [c.branch_free as i64; 2], 1)?,
     )?;
     let best = |f: fn(&burmester::AtlasBest) -> f64| {
-        col(&|c: &AtlasCell| c.best.as_ref().map_or(f64::NAN, f)).into_pyarray(py)
+        column(
+            py,
+            &flat,
+            &cells,
+            move |c| [c.best.as_ref().map_or(f64::NAN, f); 2],
+            1,
+        )
     };
     d.set_item(
         "best_transmission_rad",
-        best(|b| f64::from(b.min_transmission_rad)),
+        best(|b| f64::from(b.min_transmission_rad))?,
     )?;
-    d.set_item("best_link_ratio", best(|b| f64::from(b.link_ratio)))?;
-    d.set_item("best_margin", best(|b| b.margin))?;
-    d.set_item("best_size_ratio", best(|b| f64::from(b.size_ratio)))?;
-    d.set_item("best_score", best(|b| b.score))?;
-    let mut driving_xy = Vec::with_capacity(rows * nx * 2);
-    let mut index = Vec::with_capacity(rows * nx * 2);
-    for c in &cells {
-        match &c.best {
-            Some(b) => {
-                driving_xy.extend([b.driving.x, b.driving.y]);
-                index.extend([b.index.0 as i64, b.index.1 as i64]);
-            }
-            None => {
-                driving_xy.extend([f64::NAN, f64::NAN]);
-                index.extend([-1, -1]);
-            }
-        }
-    }
+    d.set_item("best_link_ratio", best(|b| f64::from(b.link_ratio))?)?;
+    d.set_item("best_margin", best(|b| b.margin)?)?;
+    d.set_item("best_size_ratio", best(|b| f64::from(b.size_ratio))?)?;
+    d.set_item("best_score", best(|b| b.score)?)?;
+    let pairs = [rows, nx, 2];
     d.set_item(
         "best_driving",
-        Array3::from_shape_vec((rows, nx, 2), driving_xy)
-            .expect("two per cell")
-            .into_pyarray(py),
+        column(
+            py,
+            &pairs,
+            &cells,
+            |c| {
+                c.best
+                    .as_ref()
+                    .map_or([f64::NAN; 2], |b| [b.driving.x, b.driving.y])
+            },
+            2,
+        )?,
     )?;
     d.set_item(
         "best_index",
-        Array3::from_shape_vec((rows, nx, 2), index)
-            .expect("two per cell")
-            .into_pyarray(py),
+        column(
+            py,
+            &pairs,
+            &cells,
+            |c| {
+                c.best
+                    .as_ref()
+                    .map_or([-1; 2], |b| [b.index.0 as i64, b.index.1 as i64])
+            },
+            2,
+        )?,
     )?;
     Ok(d)
 }

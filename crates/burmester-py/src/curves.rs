@@ -10,7 +10,7 @@
 use burmester::geom::Cubic;
 use burmester::synthesis::curves::{CoincidencePoint, CurveDyad, FivePositions, FourPositions};
 use burmester::{Dyad, InvalidInput, Point2, Task, Viewport};
-use numpy::{IntoPyArray, PyArray2};
+use numpy::PyArray2;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -387,11 +387,19 @@ impl PyCoincidencePoint {
 }
 
 /// A polyline as an `(n, 2)` array.
-pub(crate) fn polyline<'py>(py: Python<'py>, l: &[Point2<f64>]) -> Bound<'py, PyArray2<f64>> {
-    let flat: Vec<f64> = l.iter().flat_map(|p| [p.x, p.y]).collect();
-    numpy::ndarray::Array2::from_shape_vec((l.len(), 2), flat)
-        .expect("two coordinates per point")
-        .into_pyarray(py)
+/// NumPy allocates it (a failed allocation is a `MemoryError`).
+pub(crate) fn polyline<'py>(
+    py: Python<'py>,
+    l: &[Point2<f64>],
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let a = crate::conv::empty::<f64>(py, &[l.len(), 2])?;
+    {
+        let mut w = crate::conv::writer(&a)?;
+        for (o, p) in crate::conv::slice_mut(&mut w).chunks_exact_mut(2).zip(l) {
+            o.copy_from_slice(&[p.x, p.y]);
+        }
+    }
+    a.cast_into::<PyArray2<f64>>().map_err(PyErr::from)
 }
 
 /// A viewport from its four numbers.
@@ -580,7 +588,7 @@ impl PyCubic {
         };
         let c = self.inner;
         let trace = py.detach(|| c.trace(&vp, tolerance));
-        Ok(trace.polylines().iter().map(|l| polyline(py, l)).collect())
+        trace.polylines().iter().map(|l| polyline(py, l)).collect()
     }
 
     fn __repr__(&self) -> String {

@@ -14,7 +14,7 @@ use pyo3::types::{PyDict, PyTuple};
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::run::{WATCH_MIN_SAMPLES, run};
+use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
 use crate::synthesis::{PySynthesizedFourBar, PyTask, dyad_tuple};
 
 type Xy = (f64, f64);
@@ -180,6 +180,26 @@ impl MapOptions {
     }
 }
 
+/// The values of a column (a pickled map's), copied into memory reserved
+/// fallibly (a `MemoryError` rather than an abort).
+pub(crate) fn collect_column<T: Copy>(v: &numpy::ndarray::ArrayView2<'_, T>) -> PyResult<Vec<T>> {
+    let mut out = Vec::new();
+    out.try_reserve_exact(v.len()).map_err(|_| {
+        pyo3::exceptions::PyMemoryError::new_err(format!(
+            "a map column of {} values cannot be allocated",
+            v.len()
+        ))
+    })?;
+    out.extend(v.iter().copied());
+    Ok(out)
+}
+
+/// Whether ranking `n` samples for `k` results can take long enough to
+/// watch for Ctrl-C (a few milliseconds and more).
+pub(crate) fn ranking_is_long(n: usize, k: usize) -> bool {
+    n >= 1 << 16 || k >= 1 << 12
+}
+
 /// A column of a map as a read-only NumPy array of shape `(ny, nx)`,
 /// taking the buffer (no copy).
 pub(crate) fn readonly<T: Element>(
@@ -228,7 +248,7 @@ fn read_plain<T: Element + Copy>(
             [shape.0, shape.1]
         )));
     }
-    Ok(v.iter().copied().collect())
+    collect_column(&v)
 }
 
 macro_rules! plain_state_column {
@@ -704,19 +724,23 @@ impl PyPivot {
 
 impl PySolutionMap {
     /// The `k` best pivots by `rank_by`, reading the NumPy columns in place.
-    fn ranked(
+    fn ranked<'py>(
         &self,
-        py: Python<'_>,
+        py: Python<'py>,
         k: usize,
         min_separation: Option<f64>,
         rank_by: RankBy,
-    ) -> PyResult<Vec<PyPivot>> {
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         let ctx = &self.context;
+        let watch = ranking_is_long(ctx.grid.len(), k);
         let pivots = self.with_rank_columns(py, |cols| {
-            py.detach(|| ctx.best_pivots(k, min_separation, rank_by, cols))
-                .py()
+            run_in(py, watch, None, None, "samples", |control| {
+                ctx.best_pivots_with(k, min_separation, rank_by, cols, control)
+            })
         })?;
-        Ok(pivots.iter().map(|p| PyPivot::of(ctx.task, p)).collect())
+        list_polled(py, &pivots, |p| {
+            Ok(Bound::new(py, PyPivot::of(ctx.task, p))?.into_any())
+        })
     }
 }
 
@@ -788,17 +812,17 @@ impl PySolutionMap {
     }
     #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
         text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_pivots(
+    fn best_pivots<'py>(
         &self,
-        py: Python<'_>,
+        py: Python<'py>,
         k: Count,
         min_separation: Option<Real>,
         rank_by: &str,
-    ) -> PyResult<Vec<PyPivot>> {
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         let rank_by = rank_by.parse::<RankBy>().py()?;
         self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
     }
-    fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyPivot>> {
+    fn pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
     }
 

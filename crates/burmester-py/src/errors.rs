@@ -33,6 +33,12 @@ create_exception!(
     BurmesterError,
     "The geometry is degenerate: an answer lies at infinity, or the task has no unique answer."
 );
+create_exception!(
+    burmester,
+    DriveError,
+    BurmesterError,
+    "A six-bar cannot be built as asked, or a linkage cannot be driven from a motor by an added dyad (its cause says why)."
+);
 
 /// Maps a core error to its Python exception, with its cause and fields as
 /// attributes.
@@ -42,6 +48,7 @@ pub(crate) fn to_py(e: burmester::Error) -> PyErr {
         burmester::Error::InvalidInput(_) => InvalidInputError::new_err(msg),
         burmester::Error::Assembly(_) => AssemblyError::new_err(msg),
         burmester::Error::Degenerate(_) => DegenerateError::new_err(msg),
+        burmester::Error::Drive(_) => DriveError::new_err(msg),
         burmester::Error::Cancelled { .. } => PyKeyboardInterrupt::new_err(msg),
         burmester::Error::OutOfMemory { .. } => PyMemoryError::new_err(msg),
         _ => BurmesterError::new_err(msg),

@@ -1,7 +1,7 @@
 //! `burmester.Grid` and `burmester.Conic` (the core's `geom`).
 
 use burmester::{Conic, Grid, Vector2, Viewport};
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayDyn};
+use numpy::{PyArray1, PyArray2, PyArrayDyn};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PySequence, PyTuple};
@@ -17,6 +17,9 @@ type Xy = (f64, f64);
 pub struct PyGrid {
     pub(crate) inner: Grid,
 }
+
+/// The sample coordinates of a grid's columns and rows.
+type Axes<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
 
 #[pymethods]
 impl PyGrid {
@@ -73,14 +76,20 @@ impl PyGrid {
     }
 
     /// `(xs, ys)`: the sample coordinates of the columns and of the rows.
-    fn cell_centers<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>) {
+    fn cell_centers<'py>(&self, py: Python<'py>) -> PyResult<Axes<'py>> {
         let g = &self.inner;
-        let xs: Vec<f64> = (0..g.nx()).map(|i| g.x(i)).collect();
-        let ys: Vec<f64> = (0..g.ny()).map(|j| g.y(j)).collect();
-        (xs.into_pyarray(py), ys.into_pyarray(py))
+        // NumPy allocates them (a failed allocation is a MemoryError).
+        let axis = |n: usize, at: &dyn Fn(usize) -> f64| -> PyResult<Bound<'py, PyArray1<f64>>> {
+            let a = crate::conv::empty::<f64>(py, &[n])?;
+            {
+                let mut w = crate::conv::writer(&a)?;
+                for (k, o) in crate::conv::slice_mut(&mut w).iter_mut().enumerate() {
+                    *o = at(k);
+                }
+            }
+            a.cast_into::<PyArray1<f64>>().map_err(PyErr::from)
+        };
+        Ok((axis(g.nx(), &|i| g.x(i))?, axis(g.ny(), &|j| g.y(j))?))
     }
 
     /// The sample `[j, i]`: `(x_i, y_j)`.
@@ -283,15 +292,10 @@ impl PyConic {
         let tolerance = tolerance.map(|t| t.0);
         let c = self.inner;
         let lines = py.detach(|| c.polylines(&vp, tolerance)).py()?;
-        Ok(lines
-            .into_iter()
-            .map(|l| {
-                let flat: Vec<f64> = l.iter().flat_map(|p| [p.x, p.y]).collect();
-                numpy::ndarray::Array2::from_shape_vec((l.len(), 2), flat)
-                    .expect("two coordinates per point")
-                    .into_pyarray(py)
-            })
-            .collect())
+        lines
+            .iter()
+            .map(|l| crate::curves::polyline(py, l))
+            .collect()
     }
 
     fn __repr__(&self) -> String {

@@ -15,6 +15,7 @@ mod conv;
 mod curves;
 mod design;
 mod display;
+mod drive;
 mod errors;
 mod geom;
 mod linkage;
@@ -33,6 +34,10 @@ mod _burmester {
     use crate::curves::{PyCoincidencePoint, PyCubic, PyCurveDyad};
     #[pymodule_export]
     use crate::design::{PyDesignLimits, PyPivot, PySolutionMap};
+    #[pymodule_export]
+    use crate::drive::{PyDrive, PyDriveMap, PySixBar, unit_time_ratio_crank_rocker};
+    #[pymodule_export]
+    use crate::errors::DriveError;
     #[pymodule_export]
     use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
     #[pymodule_export]

@@ -4,14 +4,15 @@ use burmester::{Constraints, Control, Pair, PairContext, Point2, RankBy, Task};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
+use pyo3::types::{PyDict, PyList, PyTuple};
 
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::curves::PyCurveDyad;
+use crate::design::ranking_is_long;
 use crate::design::{MapOptions, PyDesignLimits, py_map_class};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::run::{WATCH_MIN_SAMPLES, run};
+use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
 use crate::synthesis::{PySynthesizedFourBar, PyTask};
 
 macro_rules! py_pair_map {
@@ -189,35 +190,57 @@ impl PyPair {
 
 impl PyPairMap {
     /// The `k` best pairs by `rank_by`, reading the NumPy columns in place.
-    fn ranked(
+    fn ranked<'py>(
         &self,
-        py: Python<'_>,
+        py: Python<'py>,
         k: usize,
         min_separation: Option<f64>,
         rank_by: RankBy,
-    ) -> PyResult<Vec<PyPair>> {
+    ) -> PyResult<Bound<'py, PyList>> {
         let ctx = &self.context;
+        let watch = ranking_is_long(ctx.grid.len(), k);
         let pairs = self.with_rank_columns(py, |cols| {
-            py.detach(|| ctx.best_pairs(k, min_separation, rank_by, cols))
-                .py()
+            run_in(py, watch, None, None, "samples", |control| {
+                ctx.best_pairs_with(k, min_separation, rank_by, cols, control)
+            })
         })?;
-        Ok(pairs.iter().map(|p| PyPair::of(ctx.task, p)).collect())
+        list_polled(py, &pairs, |p| {
+            Ok(Bound::new(py, PyPair::of(ctx.task, p))?.into_any())
+        })
     }
 
+    /// The row-major index of pair `[j, i]`, or `InvalidInputError` naming
+    /// the index out of range.
     fn index(&self, j: Count, i: Count) -> PyResult<usize> {
         let (ny, nx) = self.context.shape();
-        if j.0 >= ny || i.0 >= nx {
-            return Err(pyo3::exceptions::PyIndexError::new_err(format!(
-                "pair ({}, {}) is outside the map's shape ({ny}, {nx})",
-                j.0, i.0
-            )));
+        for (name, v, n, what) in [("j", j.0, ny, "driven"), ("i", i.0, nx, "driving")] {
+            if v >= n {
+                return Err(crate::errors::invalid(
+                    "grid_index",
+                    format!(
+                        "pair ({}, {}) is outside the map of shape ({ny}, {nx}): {name} (the \
+                         {what} sample) must be from 0 to {}; pass indices within it",
+                        j.0,
+                        i.0,
+                        n - 1
+                    ),
+                ));
+            }
         }
         Ok(j.0 * nx + i.0)
     }
 }
 
-fn dyads(v: &[Option<burmester::synthesis::curves::CurveDyad>]) -> Vec<Option<PyCurveDyad>> {
-    v.iter().map(|d| d.as_ref().map(Into::into)).collect()
+/// The dyads of an axis as a Python list (`None` at infinity), built
+/// with Ctrl-C honoured (ten million of them take seconds).
+fn dyads<'py>(
+    py: Python<'py>,
+    v: &[Option<burmester::synthesis::curves::CurveDyad>],
+) -> PyResult<Bound<'py, PyList>> {
+    list_polled(py, v, |d| match d {
+        Some(d) => Ok(Bound::new(py, PyCurveDyad::from(d))?.into_any()),
+        None => Ok(py.None().into_bound(py)),
+    })
 }
 
 #[pymethods]
@@ -254,12 +277,12 @@ impl PyPairMap {
         self.context.shape()
     }
     #[getter]
-    fn driving_dyads(&self) -> Vec<Option<PyCurveDyad>> {
-        dyads(&self.context.driving)
+    fn driving_dyads<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        dyads(py, &self.context.driving)
     }
     #[getter]
-    fn driven_dyads(&self) -> Vec<Option<PyCurveDyad>> {
-        dyads(&self.context.driven)
+    fn driven_dyads<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        dyads(py, &self.context.driven)
     }
     #[getter]
     fn task(&self) -> PyTask {
@@ -284,24 +307,27 @@ impl PyPairMap {
         let bf = self.branch_free.bind(py).readonly();
         let bf = bf.as_slice()?;
         let ctx = &self.context;
-        let m = py.detach(|| ctx.margins(bf));
+        let watch = ctx.grid.len() >= 1 << 16;
+        let m = run_in(py, watch, None, None, "lines", |control| {
+            ctx.margins_with(bf, control)
+        })?;
         Ok(Array2::from_shape_vec(ctx.shape(), m)
             .expect("one value per pair")
             .into_pyarray(py))
     }
     #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
         text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_pairs(
+    fn best_pairs<'py>(
         &self,
-        py: Python<'_>,
+        py: Python<'py>,
         k: Count,
         min_separation: Option<Real>,
         rank_by: &str,
-    ) -> PyResult<Vec<PyPair>> {
+    ) -> PyResult<Bound<'py, PyList>> {
         let rank_by = rank_by.parse::<RankBy>().py()?;
         self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
     }
-    fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyPair>> {
+    fn pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
     }
 
@@ -381,9 +407,18 @@ pub(crate) fn pair_map(
 ) -> PyResult<PyPairMap> {
     let watch = n_driving.saturating_mul(n_driven) >= WATCH_MIN_SAMPLES / 16;
     // The context first: the arguments are checked before NumPy allocates.
-    let context = py
-        .detach(|| task.pair_context(n_driving, n_driven, &opts.limits, &opts.constraints))
-        .py()?;
+    // Its dyads take seconds for millions of samples: Ctrl-C is watched,
+    // progress is the map's alone.
+    let long = n_driving.saturating_add(n_driven) >= 1 << 14;
+    let context = run_in(py, long, None, None, "dyads", |control| {
+        task.pair_context_with(
+            n_driving,
+            n_driven,
+            &opts.limits,
+            &opts.constraints,
+            control,
+        )
+    })?;
     let shape = context.shape();
     PyPairMap::filled(py, shape, |out| {
         run(py, watch, progress, None, |control: &Control<'_>| {

@@ -37,6 +37,20 @@ pub(crate) fn run<T: Send>(
     partial: Option<&str>,
     work: impl FnOnce(&Control<'_>) -> burmester::Result<T> + Send,
 ) -> PyResult<T> {
+    run_in(py, watch, progress, partial, "rows", work)
+}
+
+/// [`run`] of work whose progress counts `unit` (`"rows"`, `"samples"`,
+/// `"driving rows over all driven centers"`), the word the interrupt
+/// message uses.
+pub(crate) fn run_in<T: Send>(
+    py: Python<'_>,
+    watch: bool,
+    progress: Option<&Bound<'_, PyAny>>,
+    partial: Option<&str>,
+    unit: &str,
+    work: impl FnOnce(&Control<'_>) -> burmester::Result<T> + Send,
+) -> PyResult<T> {
     if !watch && progress.is_none() {
         return py.detach(|| work(&Control::new())).py();
     }
@@ -107,10 +121,11 @@ pub(crate) fn run<T: Send>(
             let (d, t) = (done.load(Ordering::Relaxed), total.load(Ordering::Relaxed));
             let msg = match partial {
                 Some(what) => format!(
-                    "interrupted after {d} of {t} rows; {what} holds a partial result (the rows \
+                    "interrupted after {d} of {t} {unit}; {what} holds a partial result (the rows \
                      not reached keep their old values)"
                 ),
-                None => format!("interrupted after {d} of {t} rows"),
+                None if t == 0 => "interrupted".to_owned(),
+                None => format!("interrupted after {d} of {t} {unit}"),
             };
             return Err(PyKeyboardInterrupt::new_err(msg));
         }
@@ -123,4 +138,29 @@ pub(crate) fn run<T: Send>(
         }
     }
     result.py()
+}
+
+/// Items converted to Python objects between two runs of the signal
+/// handlers in [`list_polled`].
+const LIST_POLL: usize = 4096;
+
+/// A Python list of `items`, each made by `make`, running the signal
+/// handlers every few thousand items: a list of millions of objects takes
+/// seconds to build, and Ctrl-C stops it (`KeyboardInterrupt`). The list
+/// grows by Python's allocator, so a failed allocation is a
+/// `MemoryError`.
+pub(crate) fn list_polled<'py, T>(
+    py: Python<'py>,
+    items: impl IntoIterator<Item = T>,
+    mut make: impl FnMut(T) -> PyResult<Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+    use pyo3::types::{PyList, PyListMethods};
+    let list = PyList::empty(py);
+    for (n, item) in items.into_iter().enumerate() {
+        if n % LIST_POLL == LIST_POLL - 1 {
+            py.check_signals()?;
+        }
+        list.append(make(item)?)?;
+    }
+    Ok(list)
 }

@@ -422,13 +422,23 @@ impl PyTask {
     }
 
     #[pyo3(signature = (samples = Count(200)), text_signature = "($self, samples=200)")]
-    fn curve_dyads(&self, py: Python<'_>, samples: Count) -> PyResult<Vec<Vec<PyCurveDyad>>> {
+    fn curve_dyads<'py>(
+        &self,
+        py: Python<'py>,
+        samples: Count,
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         let four = curves::four(&self.inner, "Task.curve_dyads")?;
-        let runs = py.detach(|| four.dyad_runs(samples.0)).py()?;
-        Ok(runs
-            .iter()
-            .map(|r| r.iter().map(Into::into).collect())
-            .collect())
+        // Ten million samples take seconds: Ctrl-C is watched.
+        let long = samples.0 >= 1 << 14;
+        let runs = crate::run::run_in(py, long, None, None, "dyads", |control| {
+            four.dyad_runs_with(samples.0, control)
+        })?;
+        crate::run::list_polled(py, &runs, |run| {
+            Ok(crate::run::list_polled(py, run, |d| {
+                Ok(Bound::new(py, PyCurveDyad::from(d))?.into_any())
+            })?
+            .into_any())
+        })
     }
 
     /// Four poses: the branch-free arcs of the center-point curve in view
@@ -458,7 +468,7 @@ impl PyTask {
                 arcs.free_center_arcs(&vp)
             }
         });
-        Ok(lines.iter().map(|l| curves::polyline(py, l)).collect())
+        lines.iter().map(|l| curves::polyline(py, l)).collect()
     }
 
     /// Four poses: the branch class (`"free"`, `"defective"`, `"boundary"`)
@@ -492,16 +502,15 @@ impl PyTask {
                 four.order_arcs(&vp)
             }
         });
-        Ok(arcs
-            .iter()
+        arcs.iter()
             .map(|a| {
-                (
+                Ok((
                     a.order.to_string(),
                     a.order.direction().map(|d| d.as_str()),
-                    curves::polyline(py, &a.points),
-                )
+                    curves::polyline(py, &a.points)?,
+                ))
             })
-            .collect())
+            .collect()
     }
 
     // Five poses: the Burmester points.
@@ -1023,7 +1032,8 @@ impl PySynthesizedFourBar {
         py: Python<'py>,
         samples: Count,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let v = self.inner.travel_angles(samples.0).py()?;
+        let sfb = self.inner;
+        let v = py.detach(|| sfb.travel_angles(samples.0)).py()?;
         let n = v.len();
         Ok(to_numpy(py, &[n], v))
     }
@@ -1034,6 +1044,210 @@ impl PySynthesizedFourBar {
             .pose_at(theta2.0, crate::linkage::mode(mode)?)
             .py()?;
         Ok((p.position.x, p.position.y, p.angle))
+    }
+
+    // Driving it from a motor by an added dyad (the Watt II six-bar): the
+    // signatures here, the work in `crate::drive`.
+
+    #[pyo3(signature = (*grid, attachment = None, limits = None, min_transmission_deg = None,
+        max_link_ratio = None, swing_margin_deg = Real(0.0), max_time_ratio = None,
+        base_plate = None, obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
+        progress = None),
+        text_signature = "($self, *grid, attachment=None, limits=None, min_transmission_deg=None, \
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+    #[allow(clippy::too_many_arguments)]
+    fn drive_map(
+        &self,
+        py: Python<'_>,
+        grid: &Bound<'_, PyTuple>,
+        attachment: Option<PyPoint>,
+        limits: Option<crate::design::PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        swing_margin_deg: Real,
+        max_time_ratio: Option<Real>,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: Real,
+        travel_samples: Count,
+        progress: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<crate::drive::PyDriveMap> {
+        crate::drive::drive_map(
+            self,
+            py,
+            grid,
+            attachment,
+            limits,
+            min_transmission_deg,
+            max_link_ratio,
+            swing_margin_deg,
+            max_time_ratio,
+            base_plate,
+            obstacles,
+            link_width,
+            travel_samples,
+            progress,
+        )
+    }
+
+    #[pyo3(signature = (drive_pivot, attachment = None, *, limits = None,
+        min_transmission_deg = None, max_link_ratio = None, swing_margin_deg = Real(0.0),
+        max_time_ratio = None, base_plate = None, obstacles = None,
+        link_width = Real(0.0), travel_samples = Count(64)),
+        text_signature = "($self, drive_pivot, attachment=None, *, limits=None, \
+        min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
+        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, travel_samples=64)")]
+    #[allow(clippy::too_many_arguments)]
+    fn drive(
+        &self,
+        drive_pivot: PyPoint,
+        attachment: Option<PyPoint>,
+        limits: Option<crate::design::PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        swing_margin_deg: Real,
+        max_time_ratio: Option<Real>,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: Real,
+        travel_samples: Count,
+    ) -> PyResult<crate::drive::PyDrive> {
+        crate::drive::drive(
+            self,
+            drive_pivot,
+            attachment,
+            limits,
+            min_transmission_deg,
+            max_link_ratio,
+            swing_margin_deg,
+            max_time_ratio,
+            base_plate,
+            obstacles,
+            link_width,
+            travel_samples,
+        )
+    }
+
+    #[pyo3(signature = (attachment = None, *, beyond_first = true, drive_transmission_deg = None,
+        limits = None, min_transmission_deg = None, max_link_ratio = None,
+        swing_margin_deg = Real(0.0), max_time_ratio = None),
+        text_signature = "($self, attachment=None, *, beyond_first=True, \
+        drive_transmission_deg=None, limits=None, min_transmission_deg=None, \
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None)")]
+    #[allow(clippy::too_many_arguments)]
+    fn classic_drive(
+        &self,
+        attachment: Option<PyPoint>,
+        beyond_first: bool,
+        drive_transmission_deg: Option<Real>,
+        limits: Option<crate::design::PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        swing_margin_deg: Real,
+        max_time_ratio: Option<Real>,
+    ) -> PyResult<crate::drive::PyDrive> {
+        crate::drive::classic_drive(
+            self,
+            attachment,
+            beyond_first,
+            drive_transmission_deg,
+            limits,
+            min_transmission_deg,
+            max_link_ratio,
+            swing_margin_deg,
+            max_time_ratio,
+        )
+    }
+
+    #[pyo3(signature = (*, ratios = None, angles_deg = None, reach = Real(4.0),
+        samples = Count(96), limits = None, min_transmission_deg = None, max_link_ratio = None,
+        swing_margin_deg = Real(0.0), max_time_ratio = None, base_plate = None,
+        obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
+        rank_by = "balanced", progress = None),
+        text_signature = "($self, *, ratios=None, angles_deg=None, reach=4.0, samples=96, \
+        limits=None, min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
+        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, \
+        travel_samples=64, rank_by='balanced', progress=None)")]
+    #[allow(clippy::too_many_arguments)]
+    fn drive_search(
+        &self,
+        py: Python<'_>,
+        ratios: Option<Vec<Real>>,
+        angles_deg: Option<Vec<Real>>,
+        reach: Real,
+        samples: Count,
+        limits: Option<crate::design::PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        swing_margin_deg: Real,
+        max_time_ratio: Option<Real>,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: Real,
+        travel_samples: Count,
+        rank_by: &str,
+        progress: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Vec<crate::drive::PyDrive>> {
+        crate::drive::drive_search(
+            self,
+            py,
+            ratios,
+            angles_deg,
+            reach,
+            samples,
+            limits,
+            min_transmission_deg,
+            max_link_ratio,
+            swing_margin_deg,
+            max_time_ratio,
+            base_plate,
+            obstacles,
+            link_width,
+            travel_samples,
+            rank_by,
+            progress,
+        )
+    }
+
+    #[pyo3(signature = (*, limits = None, min_transmission_deg = None, max_link_ratio = None,
+        swing_margin_deg = Real(0.0), max_time_ratio = None, base_plate = None,
+        obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
+        rank_by = "balanced", progress = None),
+        text_signature = "($self, *, limits=None, min_transmission_deg=None, \
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64, rank_by='balanced', progress=None)")]
+    #[allow(clippy::too_many_arguments)]
+    fn best_drive(
+        &self,
+        py: Python<'_>,
+        limits: Option<crate::design::PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        swing_margin_deg: Real,
+        max_time_ratio: Option<Real>,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: Real,
+        travel_samples: Count,
+        rank_by: &str,
+        progress: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<crate::drive::PyDrive> {
+        crate::drive::best_drive(
+            self,
+            py,
+            limits,
+            min_transmission_deg,
+            max_link_ratio,
+            swing_margin_deg,
+            max_time_ratio,
+            base_plate,
+            obstacles,
+            link_width,
+            travel_samples,
+            rank_by,
+            progress,
+        )
     }
     /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
     /// None without matplotlib.

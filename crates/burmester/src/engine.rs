@@ -100,6 +100,26 @@ impl<'a> Control<'a> {
         }
     }
 
+    /// The cancel flag, if any (a computation made of parts passes it on to
+    /// each part's own control).
+    pub(crate) fn cancel_flag(&self) -> Option<&'a AtomicBool> {
+        self.cancel
+    }
+
+    /// [`Error::Cancelled`] after `done` of `total` units when the cancel
+    /// flag is set.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Cancelled`] when the flag is set.
+    pub(crate) fn check(&self, done: usize, total: usize) -> Result<()> {
+        if self.is_cancelled() {
+            Err(Error::Cancelled { done, total })
+        } else {
+            Ok(())
+        }
+    }
+
     pub(crate) fn report(&self, done: usize, total: usize) {
         if let Some(p) = self.progress {
             p(done, total);
@@ -151,7 +171,8 @@ impl<T: Send> Rows for RowsOf<'_, T> {
 /// # Errors
 ///
 /// [`Error::Cancelled`] when the cancel flag stopped it before every row
-/// was done.
+/// was done; [`Error::OutOfMemory`] when the list of blocks cannot be
+/// allocated.
 pub(crate) fn run_blocks<R: Rows>(
     nx: usize,
     ny: usize,
@@ -159,27 +180,24 @@ pub(crate) fn run_blocks<R: Rows>(
     control: &Control<'_>,
     f: impl Fn(usize, R, usize) + Sync,
 ) -> Result<()> {
-    run_blocks_with(nx, ny, data, control, || (), |(), j, rows, n| f(j, rows, n))
+    run_blocks_with(
+        nx,
+        ny,
+        data,
+        control,
+        || Ok(()),
+        |(), j, rows, n| f(j, rows, n),
+    )
 }
 
-/// [`run_blocks`] with a scratch value made by `init` (once per worker's
-/// share of the blocks, not per block) and lent to `f` for each row (buffers
-/// a row's work reuses: `f` must not depend on what an earlier row left in
-/// them).
-///
-/// # Errors
-///
-/// As [`run_blocks`].
-pub(crate) fn run_blocks_with<R: Rows, S>(
-    nx: usize,
-    ny: usize,
-    data: R,
-    control: &Control<'_>,
-    init: impl Fn() -> S + Sync,
-    f: impl Fn(&mut S, usize, R, usize) + Sync,
-) -> Result<()> {
+/// The blocks of rows of `data`: `(first_row, rows_data, rows)`, sized by
+/// [`rows_per_block`].
+fn blocks_of<R: Rows>(nx: usize, ny: usize, data: R) -> Result<Vec<(usize, R, usize)>> {
     let per = rows_per_block(nx, ny);
-    let mut blocks = Vec::with_capacity(ny.div_ceil(per));
+    let mut blocks = Vec::new();
+    blocks
+        .try_reserve_exact(ny.div_ceil(per))
+        .map_err(|_| crate::error::out_of_memory::<(usize, R, usize)>("blocks", ny / per))?;
     let mut rest = data;
     let mut j = 0;
     while j < ny {
@@ -189,10 +207,56 @@ pub(crate) fn run_blocks_with<R: Rows, S>(
         rest = tail;
         j += n;
     }
+    Ok(blocks)
+}
+
+/// The end of a run over blocks: [`Error::Cancelled`] unless every row was
+/// done and the flag stayed clear (work inside a row that checks the flag
+/// itself, a linkage's clearance, may have cut its last row short: a run
+/// during which the flag was set is cancelled even when every row was
+/// reached).
+fn finish(done: usize, ny: usize, control: &Control<'_>) -> Result<()> {
+    if done < ny || control.is_cancelled() {
+        return Err(Error::Cancelled { done, total: ny });
+    }
+    Ok(())
+}
+
+/// [`run_blocks`] with a scratch value made by `init` (once per worker's
+/// share of the blocks, not per block) and lent to `f` for each row (buffers
+/// a row's work reuses: `f` must not depend on what an earlier row left in
+/// them); `init` fails with [`Error::OutOfMemory`] when they cannot be
+/// allocated.
+///
+/// # Errors
+///
+/// As [`run_blocks`]; the first error of `init`.
+pub(crate) fn run_blocks_with<R: Rows, S>(
+    nx: usize,
+    ny: usize,
+    data: R,
+    control: &Control<'_>,
+    init: impl Fn() -> Result<S> + Sync,
+    f: impl Fn(&mut S, usize, R, usize) + Sync,
+) -> Result<()> {
+    let blocks = blocks_of(nx, ny, data)?;
+    // The total from the start: an interrupt before the first block ends
+    // can say how far the work got.
+    control.report(0, ny);
     let done = AtomicUsize::new(0);
-    blocks
-        .into_par_iter()
-        .for_each_init(&init, |scratch, (j0, block, n)| {
+    let failed: std::sync::Mutex<Option<Error>> = std::sync::Mutex::new(None);
+    blocks.into_par_iter().for_each_init(
+        || init().map_err(Some),
+        |scratch, (j0, block, n)| {
+            let scratch = match scratch {
+                Ok(s) => s,
+                Err(e) => {
+                    if let (Some(e), Ok(mut f)) = (e.take(), failed.lock()) {
+                        f.get_or_insert(e);
+                    }
+                    return;
+                }
+            };
             // Row by row, checking the cancel flag before each: a block of
             // costly samples (a solution map with obstacles) can take seconds,
             // a row a small fraction of that.
@@ -208,12 +272,52 @@ pub(crate) fn run_blocks_with<R: Rows, S>(
                 let d = done.fetch_add(finished, Ordering::Relaxed) + finished;
                 control.report(d, ny);
             }
-        });
-    let done = done.into_inner();
-    if done < ny {
-        return Err(Error::Cancelled { done, total: ny });
+        },
+    );
+    if let Some(e) = failed.into_inner().ok().flatten() {
+        return Err(e);
     }
-    Ok(())
+    finish(done.into_inner(), ny, control)
+}
+
+/// [`run_blocks`] for rows whose samples can each take long (a drive map
+/// with obstacles checks a full crank turn per sample): `f(first_row, rows_data,
+/// rows)` returns whether it finished its row, and may stop early once the
+/// cancel flag is set (it gets `control` to poll); a row it did not finish
+/// is not counted as done.
+///
+/// # Errors
+///
+/// As [`run_blocks`].
+pub(crate) fn run_blocks_polled<R: Rows>(
+    nx: usize,
+    ny: usize,
+    data: R,
+    control: &Control<'_>,
+    f: impl Fn(usize, R, &Control<'_>) -> bool + Sync,
+) -> Result<()> {
+    let blocks = blocks_of(nx, ny, data)?;
+    // The total from the start: an interrupt before the first block ends
+    // can say how far the work got.
+    control.report(0, ny);
+    let done = AtomicUsize::new(0);
+    blocks.into_par_iter().for_each(|(j0, block, n)| {
+        let mut rest = block;
+        let mut finished = 0;
+        while finished < n && !control.is_cancelled() {
+            let (row, tail) = rest.split_rows(1);
+            if !f(j0 + finished, row, control) {
+                break;
+            }
+            rest = tail;
+            finished += 1;
+        }
+        if finished > 0 {
+            let d = done.fetch_add(finished, Ordering::Relaxed) + finished;
+            control.report(d, ny);
+        }
+    });
+    finish(done.into_inner(), ny, control)
 }
 
 /// Calls `f(j, row)` for every row `j` of `out` (`nx` values each), in

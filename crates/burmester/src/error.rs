@@ -65,6 +65,10 @@ pub enum Error {
         /// How many bytes it needs.
         bytes: usize,
     },
+    /// A six-bar cannot be built as asked, or a linkage cannot be driven
+    /// from a motor by an added dyad.
+    #[error(transparent)]
+    Drive(#[from] DriveError),
 }
 
 /// A number in a message: short (at most 17 significant digits, in
@@ -97,31 +101,47 @@ pub enum PolygonProblem {
     /// An envelope that leaves out a pose's coupler point (the coupler
     /// must be inside it at every pose).
     ExcludesPoses,
+    /// More vertices than
+    /// [`Constraints::MAX_POLYGON_VERTICES`](crate::Constraints::MAX_POLYGON_VERTICES).
+    TooManyVertices,
 }
 
 impl PolygonProblem {
-    /// A short name: `"too few vertices"`, `"no area"`, `"self-intersecting"`.
+    /// A short name: `"too few vertices"`, `"no area"`, `"self-intersecting"`,
+    /// `"too many vertices"`.
     pub fn as_str(self) -> &'static str {
         match self {
             PolygonProblem::TooFewVertices => "too few vertices",
             PolygonProblem::NoArea => "no area",
             PolygonProblem::SelfIntersecting => "self-intersecting",
             PolygonProblem::ExcludesPoses => "excludes poses",
+            PolygonProblem::TooManyVertices => "too many vertices",
         }
     }
 }
 
 impl fmt::Display for PolygonProblem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            PolygonProblem::TooFewVertices => "it has fewer than 3 vertices",
-            PolygonProblem::NoArea => "its vertices lie on one line, so it has no area",
-            PolygonProblem::SelfIntersecting => "two of its edges cross (it is not simple)",
-            PolygonProblem::ExcludesPoses => {
-                "a pose's coupler point lies outside it, so no linkage can stay inside it \
-                 (draw it around every pose)"
+        const AREA: &str = "pass a simple polygon with an area";
+        match self {
+            PolygonProblem::TooFewVertices => write!(f, "it has fewer than 3 vertices; {AREA}"),
+            PolygonProblem::NoArea => {
+                write!(f, "its vertices lie on one line, so it has no area; {AREA}")
             }
-        })
+            PolygonProblem::SelfIntersecting => {
+                write!(f, "two of its edges cross (it is not simple); {AREA}")
+            }
+            PolygonProblem::ExcludesPoses => f.write_str(
+                "a pose's coupler point lies outside it, so no linkage can stay inside it \
+                 (draw it around every pose)",
+            ),
+            PolygonProblem::TooManyVertices => write!(
+                f,
+                "it has more than {} vertices; approximate it with fewer (a circle of a few \
+                 hundred vertices is within 1e-4 of its radius)",
+                crate::Constraints::MAX_POLYGON_VERTICES
+            ),
+        }
     }
 }
 
@@ -337,7 +357,7 @@ pub enum InvalidInput {
         tolerance: f64,
     },
     /// A polygon (a base plate, an obstacle) is not acceptable.
-    #[error("{name} is not a usable polygon: {problem}; pass a simple polygon with an area")]
+    #[error("{name} is not a usable polygon ({vertices} vertices): {problem}")]
     Polygon {
         /// Which polygon (for example `"base_plate"` or `"obstacle 2"`).
         name: String,
@@ -440,10 +460,10 @@ pub enum DegenerateError {
         /// Second pose index (1-based).
         j: usize,
     },
-    /// The three poses are rotations about one point: all three poles
-    /// coincide, and every dyad has its center point there.
+    /// The poses are rotations about one point: all their poles coincide,
+    /// and every dyad has its center point there.
     #[error(
-        "the three poses are rotations about one point ({}, {}): all poles coincide there, so \
+        "the poses are rotations about one point ({}, {}): all poles coincide there, so \
          the synthesis is degenerate (every dyad is centered there); move one pose off that \
          rotation",
         Num(*.x), Num(*.y)
@@ -595,6 +615,7 @@ impl Error {
             Error::Degenerate(_) => "degenerate",
             Error::Cancelled { .. } => "cancelled",
             Error::OutOfMemory { .. } => "memory",
+            Error::Drive(_) => "drive",
         }
     }
 
@@ -642,6 +663,7 @@ impl Error {
             },
             Error::Cancelled { .. } => "cancelled",
             Error::OutOfMemory { .. } => "out_of_memory",
+            Error::Drive(e) => e.cause(),
         }
     }
 
@@ -755,6 +777,151 @@ impl Error {
             },
             Error::Cancelled { done, total } => fields!(done, total),
             Error::OutOfMemory { what, bytes } => fields!(what, bytes),
+            Error::Drive(e) => e.fields(),
+        }
+    }
+}
+
+/// Why a six-bar cannot be built as asked, or a synthesized linkage
+/// cannot be driven from a motor by an added dyad (the drive dyad of the
+/// Watt II six-bar, [`SixBar`](crate::SixBar)).
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum DriveError {
+    /// The drive loop's output pivot is not the motion loop's input pivot.
+    #[error(
+        "the drive loop's output pivot is {} from the motion loop's input pivot A0, more than {}; \
+         build the drive from D0 to A0 (FourBar::from_pivots)",
+        Num(*.distance), Num(*.tolerance)
+    )]
+    PivotMismatch {
+        /// How far apart they are.
+        distance: f64,
+        /// The tolerance (`1e-9` of the sum of the links).
+        tolerance: f64,
+    },
+    /// A loop is at a toggle in the joints given, so its mode is undefined.
+    #[error(
+        "the {which} loop is at a toggle in the joints given (its coupler and rocker are \
+         collinear), so its assembly mode is undefined; give the joints of a position off the \
+         toggle"
+    )]
+    ToggleJoints {
+        /// `"drive"` or `"motion"`.
+        which: &'static str,
+    },
+    /// The linkage does not carry the coupler through its poses in order.
+    #[error(
+        "the linkage does not carry the coupler through its poses in order in one assembly mode \
+         (a branch, order or circuit defect), so no drive can; pick a feasible linkage \
+         (figures.feasible)"
+    )]
+    NoTravel,
+    /// The input link's travel with the margins is too wide for the
+    /// rocker of a crank-rocker.
+    #[error(
+        "the input link turns {} degrees from the first pose to the last, {} degrees with the \
+         swing margin of {} degrees at each end; the rocker of a crank-rocker swings less than 180 \
+         degrees: reduce swing_margin_deg, or pick a linkage with a shorter travel",
+        Num(*.travel_deg), Num(*.swing_deg), Num(*.margin_deg)
+    )]
+    TravelTooLarge {
+        /// The travel from the first pose to the last, degrees.
+        travel_deg: f64,
+        /// The swing, travel and margins, degrees.
+        swing_deg: f64,
+        /// The margin at each end, degrees.
+        margin_deg: f64,
+    },
+    /// The swing with its margins leaves the motion loop's input range.
+    #[error(
+        "the swing margin of {} degrees leaves the motion loop's input range: its input link can \
+         turn only {} degrees before the first pose and {} degrees past the last before the loop \
+         toggles; give a swing_margin_deg below both",
+        Num(*.margin_deg), Num(*.before_deg), Num(*.after_deg)
+    )]
+    OutsideInputRange {
+        /// The margin asked for, degrees.
+        margin_deg: f64,
+        /// The room before the first pose, degrees.
+        before_deg: f64,
+        /// The room past the last pose, degrees.
+        after_deg: f64,
+    },
+    /// The drive pivot gives no crank-rocker with the swing asked for.
+    #[error(
+        "a drive pivot at ({}, {}) gives no crank-rocker with this swing: the line through it and \
+         A0 meets the arc that E swings on (or the drive has a link of no length); move it (the \
+         drive map's valid column shows where a drive exists)",
+        Num(*.x), Num(*.y)
+    )]
+    NotACrankRocker {
+        /// The drive pivot's x.
+        x: f64,
+        /// The drive pivot's y.
+        y: f64,
+    },
+    /// No drive searched meets the limits and constraints.
+    #[error(
+        "no acceptable drive among {searched} candidates ({valid} of them crank-rocker drives); the \
+         best minimum transmission angle over a crank turn is {} degrees, the limit {} degrees; \
+         relax the limits (min_transmission_deg, max_link_ratio, max_time_ratio), the \
+         constraints or the swing margin, or search more attachments",
+        Num(*.best_transmission_deg), Num(*.min_transmission_deg)
+    )]
+    NoAcceptableDrive {
+        /// Candidate drives examined.
+        searched: usize,
+        /// Of them, crank-rocker drives that turn the six-bar fully.
+        valid: usize,
+        /// The best minimum transmission angle among those, degrees (NaN
+        /// when there were none).
+        best_transmission_deg: f64,
+        /// The limit, degrees.
+        min_transmission_deg: f64,
+    },
+}
+
+impl DriveError {
+    /// The variant's name (the Python exception's `cause`).
+    pub fn cause(&self) -> &'static str {
+        match self {
+            DriveError::PivotMismatch { .. } => "pivot_mismatch",
+            DriveError::ToggleJoints { .. } => "toggle_joints",
+            DriveError::NoTravel => "no_travel",
+            DriveError::TravelTooLarge { .. } => "travel_too_large",
+            DriveError::OutsideInputRange { .. } => "outside_input_range",
+            DriveError::NotACrankRocker { .. } => "not_a_crank_rocker",
+            DriveError::NoAcceptableDrive { .. } => "no_acceptable_drive",
+        }
+    }
+
+    /// The variant's fields by name, as data.
+    pub fn fields(&self) -> Vec<(&'static str, Field)> {
+        match self {
+            DriveError::PivotMismatch {
+                distance,
+                tolerance,
+            } => fields!(distance, tolerance),
+            DriveError::ToggleJoints { which } => fields!(which),
+            DriveError::NoTravel => vec![],
+            DriveError::TravelTooLarge {
+                travel_deg,
+                swing_deg,
+                margin_deg,
+            } => fields!(travel_deg, swing_deg, margin_deg),
+            DriveError::OutsideInputRange {
+                margin_deg,
+                before_deg,
+                after_deg,
+            } => fields!(margin_deg, before_deg, after_deg),
+            DriveError::NotACrankRocker { x, y } => fields!(x, y),
+            DriveError::NoAcceptableDrive {
+                searched,
+                valid,
+                best_transmission_deg,
+                min_transmission_deg,
+            } => fields!(searched, valid, best_transmission_deg, min_transmission_deg),
         }
     }
 }
@@ -789,8 +956,39 @@ pub(crate) fn try_zeroed_vec<T: bytemuck::Zeroable>(
     bytemuck::allocation::try_zeroed_vec(n).map_err(|()| out_of_memory::<T>(what, n))
 }
 
+/// The items of `items` (about `n` of them) in a vector whose memory is
+/// reserved fallibly: [`Error::OutOfMemory`] instead of an abort when it
+/// cannot be allocated. The collecting `collect()` of an iterator sized by
+/// the input.
+pub(crate) fn try_collect<T>(
+    what: &'static str,
+    n: usize,
+    items: impl IntoIterator<Item = T>,
+) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|_| out_of_memory::<T>(what, n))?;
+    for x in items {
+        try_push(&mut v, what, x)?;
+    }
+    Ok(v)
+}
+
+/// Pushes `x` onto `v`, growing it fallibly: [`Error::OutOfMemory`]
+/// instead of an abort when it cannot grow (a vector whose length the
+/// input decides).
+#[inline]
+pub(crate) fn try_push<T>(v: &mut Vec<T>, what: &'static str, x: T) -> Result<()> {
+    if v.len() == v.capacity() {
+        v.try_reserve(1)
+            .map_err(|_| out_of_memory::<T>(what, v.len().saturating_add(1)))?;
+    }
+    v.push(x);
+    Ok(())
+}
+
 /// [`Error::OutOfMemory`] for `n` values of `T`.
-fn out_of_memory<T>(what: &'static str, n: usize) -> Error {
+pub(crate) fn out_of_memory<T>(what: &'static str, n: usize) -> Error {
     Error::OutOfMemory {
         what,
         bytes: n.saturating_mul(core::mem::size_of::<T>()),

@@ -138,12 +138,13 @@ pub use design::{
     Space,
 };
 pub use engine::Control;
-pub use error::{AssemblyError, DegenerateError, Error, InvalidInput, Result};
+pub use error::{AssemblyError, DegenerateError, DriveError, Error, InvalidInput, Result};
 pub use geom::{CircleOrLine, Conic, ConicKind, Grid, Line, PerPose, Pose, Similarity, Viewport};
 pub use linkage::{
     AngleInterval, AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, Joints,
     LinkageFigures,
 };
+pub use linkage::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};
 pub use nalgebra::{Point2, Vector2};
 pub use synthesis::three::{Cremona, Filemon, Method};
 pub use synthesis::{Branch, Dyad, FilemonLines, Motion, Pole, SynthesizedFourBar, Task};

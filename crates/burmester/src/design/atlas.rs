@@ -40,7 +40,7 @@ use crate::design::map::Sampler;
 use crate::design::rank::tie_order;
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
-use crate::error::{Error, InvalidInput, Result, try_vec};
+use crate::error::{Error, InvalidInput, Result, try_push, try_vec};
 use crate::geom::Grid;
 use crate::synthesis::Task;
 use crate::synthesis::three::{BranchRows, Filemon};
@@ -147,8 +147,11 @@ impl PivotAtlas {
 impl Task {
     /// The pivot-pair atlas over driven centers on `driven`, each reduced
     /// from its solution map over `driving` (module docs of
-    /// [`atlas`](crate::design::atlas)), in parallel, following `control`
-    /// (progress counts driven centers).
+    /// [`atlas`](crate::design::atlas)), in parallel, following `control`:
+    /// progress counts driving rows over all driven centers
+    /// (`driving.ny()` per driven center, so it moves within a center
+    /// whose map takes seconds), and the cancel flag is checked before
+    /// every driving sample and inside the clearance tests.
     ///
     /// # Errors
     ///
@@ -216,29 +219,58 @@ impl Task {
             }
             .into());
         }
-        let sampler = Sampler::new(self, limits, constraints)?;
+        let sampler = Sampler::new(self, limits, constraints)?.with_control(control);
         let nx = driven.nx();
-        let total = (rows.end - rows.start) * nx;
-        let mut cells = try_vec("a pivot atlas", total, AtlasCell::INVALID)?;
+        let cells_in_all = (rows.end - rows.start) * nx;
+        let mut cells = try_vec("a pivot atlas", cells_in_all, AtlasCell::INVALID)?;
+        // Progress counts the driving rows over all driven centers: a
+        // driven center's map can take seconds (obstacles, thousands of
+        // travel samples), a driving row of it a small part of that.
+        let per_cell = driving.ny();
+        let total = cells_in_all.saturating_mul(per_cell);
         let done = AtomicUsize::new(0);
-        let xs = DrivingKernel::padded_xs(driving);
+        // The total at once, so that a follower sees the work begin.
+        control.report(0, total);
+        let xs = DrivingKernel::padded_xs(driving)?;
+        let failed: std::sync::Mutex<Option<Error>> = std::sync::Mutex::new(None);
+        let fail = |e: Error| {
+            if let Ok(mut f) = failed.lock() {
+                f.get_or_insert(e);
+            }
+        };
         cells.par_chunks_mut(CHUNK).enumerate().for_each_init(
             || Scratch::new(&xs, driving.nx()),
             |scratch, (m, chunk)| {
                 if control.is_cancelled() {
                     return;
                 }
+                let scratch = match scratch {
+                    Ok(s) => s,
+                    Err(e) => return fail(e.clone()),
+                };
                 let centers: Vec<Point2<f64>> = (m * CHUNK..m * CHUNK + chunk.len())
                     .map(|k| driven.point(k % nx, rows.start + k / nx))
                     .collect();
-                atlas_chunk(self, &sampler, &centers, driving, rank_by, scratch, chunk);
-                let d = done.fetch_add(chunk.len(), Ordering::Relaxed) + chunk.len();
-                control.report(d, total);
+                let tick = |units: usize| {
+                    let d = done.fetch_add(units, Ordering::Relaxed) + units;
+                    control.report(d, total);
+                };
+                if let Err(e) = atlas_chunk(
+                    self, &sampler, &centers, driving, rank_by, scratch, chunk, control, &tick,
+                ) {
+                    fail(e);
+                }
             },
         );
+        if let Some(e) = failed.into_inner().ok().flatten() {
+            return Err(e);
+        }
         let done = done.into_inner();
-        if done < total {
-            return Err(Error::Cancelled { done, total });
+        if done < total || control.is_cancelled() {
+            return Err(Error::Cancelled {
+                done: done.min(total.saturating_sub(1)),
+                total,
+            });
         }
         Ok(cells)
     }
@@ -261,13 +293,13 @@ struct Scratch<'a> {
 }
 
 impl<'a> Scratch<'a> {
-    fn new(xs: &'a [f64], nx: usize) -> Self {
-        Scratch {
+    fn new(xs: &'a [f64], nx: usize) -> Result<Self> {
+        Ok(Scratch {
             xs,
-            union: vec![false; nx],
-            pre: RowPre::new(xs),
-            out: RowOut::new(xs),
-        }
+            union: try_vec("a driving row", nx, false)?,
+            pre: RowPre::new(xs)?,
+            out: RowOut::new(xs)?,
+        })
     }
 }
 
@@ -295,7 +327,16 @@ struct Cell<'a> {
 /// The cells of driven centers `centers`, into `cells`: each as one solution
 /// map of the driving grid reduced (module docs), the rows of the driving
 /// grid taken in order for every center, the lanes of the driving
-/// candidates computed once per row for all of them.
+/// candidates computed once per row for all of them. `tick(units)` counts
+/// the driving rows done, one unit per row of one center (a center's row
+/// with obstacles can take seconds); it stops, leaving `cells` partly
+/// written and not counting the row it was in, once `control` is
+/// cancelled.
+///
+/// # Errors
+///
+/// [`Error::OutOfMemory`] for the buffers of a driving row.
+#[allow(clippy::too_many_arguments)]
 fn atlas_chunk(
     task: &Task,
     sampler: &Sampler<'_>,
@@ -304,7 +345,9 @@ fn atlas_chunk(
     rank_by: RankBy,
     scratch: &mut Scratch<'_>,
     cells: &mut [AtlasCell],
-) {
+    control: &Control<'_>,
+    tick: &dyn Fn(usize),
+) -> Result<()> {
     let filemons: Vec<Option<Filemon>> = centers.iter().map(|&c0| task.filemon(c0).ok()).collect();
     // The transmission limit.
     let limit = CosBand::new(sampler.judge.limits().min_transmission);
@@ -316,7 +359,7 @@ fn atlas_chunk(
         };
         let driven = filemon.driven();
         let c = sampler.fixed_pivots(&driven);
-        let branch = BranchRows::new(filemon, driving);
+        let branch = BranchRows::new(filemon, driving)?;
         let cell = AtlasCell {
             valid: true,
             ..AtlasCell::INVALID
@@ -333,7 +376,7 @@ fn atlas_chunk(
                 c,
                 branch,
                 kernel: DrivingKernel::new(sampler, driven, &c),
-                row: vec![false; driving.nx()],
+                row: try_vec("a driving row", driving.nx(), false)?,
                 active: false,
                 top: f64::NEG_INFINITY,
                 run: Vec::new(),
@@ -349,7 +392,15 @@ fn atlas_chunk(
         out,
     } = scratch;
     let nx = driving.nx();
+    // The centers without a row to reduce are done.
+    tick((centers.len() - live.len()) * driving.ny());
+    if live.is_empty() {
+        return Ok(());
+    }
     for j in 0..driving.ny() {
+        if control.is_cancelled() {
+            return Ok(());
+        }
         union.fill(false);
         let mut any = false;
         for (_, cell) in &mut live {
@@ -363,6 +414,7 @@ fn atlas_chunk(
             }
         }
         if !any {
+            tick(live.len());
             continue;
         }
         let y = driving.y(j);
@@ -371,16 +423,23 @@ fn atlas_chunk(
         if let Some(k) = live.iter().find_map(|(_, c)| c.kernel.as_ref()) {
             k.pre_row(y, xs, union, pre);
         }
+        tick(live.iter().filter(|(_, c)| !c.active).count());
         for (_, cell) in live.iter_mut().filter(|(_, c)| c.active) {
             if let Some(k) = &cell.kernel {
                 k.row_where(y, xs, &cell.row, pre, out);
             }
-            cell.take_row(sampler, driving, j, nx, out, &limit, rank_by);
+            cell.take_row(sampler, driving, j, nx, out, &limit, rank_by, control)?;
+            if control.is_cancelled() {
+                // A row cut short: not counted.
+                return Ok(());
+            }
+            tick(1);
         }
     }
     for (m, cell) in live {
-        cells[m] = cell.finish(task, sampler, driving, rank_by);
+        cells[m] = cell.finish(task, sampler, driving, rank_by, control)?;
     }
+    Ok(())
 }
 
 impl Cell<'_> {
@@ -395,9 +454,15 @@ impl Cell<'_> {
         out: &RowOut,
         limit: &CosBand,
         rank_by: RankBy,
-    ) {
+        control: &Control<'_>,
+    ) -> Result<()> {
         let by_transmission = rank_by == RankBy::Transmission;
         for (i, _) in self.row.iter().enumerate().filter(|(_, f)| **f) {
+            // A sample with obstacles can take milliseconds (its clearance
+            // over the travel), a row of them seconds.
+            if control.is_cancelled() {
+                return Ok(());
+            }
             let p = driving.point(i, j);
             // Acceptable samples with their score where it may reach the
             // run of the best (by transmission: elsewhere no `acos` is
@@ -442,9 +507,14 @@ impl Cell<'_> {
                 }
             }
             if tied(self.top, score) {
-                self.run.push((j * nx + i, score));
+                try_push(
+                    &mut self.run,
+                    "the best driving pivots",
+                    (j * nx + i, score),
+                )?;
             }
         }
+        Ok(())
     }
 
     /// The cell once every row is seen.
@@ -454,24 +524,17 @@ impl Cell<'_> {
         sampler: &Sampler<'_>,
         driving: &Grid,
         rank_by: RankBy,
-    ) -> AtlasCell {
+        control: &Control<'_>,
+    ) -> Result<AtlasCell> {
         let mut cell = self.cell;
-        cell.best = best(task, self.filemon, sampler, driving, self.run).or_else(|| {
+        cell.best = best(task, self.filemon, sampler, driving, self.run);
+        if cell.best.is_none() && cell.count > 0 {
             // No candidate of the first run has a linkage (not seen in
             // practice): rank every acceptable sample, as `best_pivots` does.
-            (cell.count > 0)
-                .then(|| {
-                    best(
-                        task,
-                        self.filemon,
-                        sampler,
-                        driving,
-                        all_acceptable(self.filemon, sampler, driving, rank_by),
-                    )
-                })
-                .flatten()
-        });
-        cell
+            let all = all_acceptable(self.filemon, sampler, driving, rank_by, control)?;
+            cell.best = best(task, self.filemon, sampler, driving, all);
+        }
+        Ok(cell)
     }
 }
 
@@ -510,27 +573,40 @@ fn tied(top: f64, score: f64) -> bool {
 }
 
 /// Every acceptable sample with a score, `(k, score)`.
+/// Empty once `control` is cancelled (the atlas is then cancelled too).
+///
+/// # Errors
+///
+/// [`Error::OutOfMemory`].
 fn all_acceptable(
     filemon: &Filemon,
     sampler: &Sampler<'_>,
     driving: &Grid,
     rank_by: RankBy,
-) -> Vec<(usize, f64)> {
+    control: &Control<'_>,
+) -> Result<Vec<(usize, f64)>> {
     let driven = filemon.driven();
     let c = sampler.fixed_pivots(&driven);
-    let branch = BranchRows::new(filemon, driving);
-    let mut row = vec![false; driving.nx()];
+    let branch = BranchRows::new(filemon, driving)?;
+    let mut row = try_vec("a driving row", driving.nx(), false)?;
     let mut out = Vec::new();
     for j in 0..driving.ny() {
+        if control.is_cancelled() {
+            return Ok(Vec::new());
+        }
         branch.row(j, &mut row);
         for (i, _) in row.iter().enumerate().filter(|(_, f)| **f) {
             let s = sampler.driving_sample(driving.point(i, j), driven, &c, true);
             if let (true, Some(score)) = (s.acceptable, sample_score(&s, rank_by)) {
-                out.push((j * driving.nx() + i, score));
+                try_push(
+                    &mut out,
+                    "the acceptable driving pivots",
+                    (j * driving.nx() + i, score),
+                )?;
             }
         }
     }
-    out
+    Ok(out)
 }
 
 /// The first pivot `best_pivots(1, _, rank_by)` takes from

@@ -38,6 +38,8 @@
 //! `d` from the crank joint moves at most `L2 (1 + d / L3) / sin mu_min`
 //! per radian, and so does every point of the triangle.
 
+use core::sync::atomic::{AtomicBool, Ordering};
+
 use nalgebra::Point2;
 use parry2d_f64::math::Vector as PVector;
 use parry2d_f64::query::intersection_test;
@@ -96,6 +98,13 @@ impl Constraints {
     /// The largest magnitude of a vertex coordinate.
     pub const MAX_COORDINATE: f64 = 1e100;
 
+    /// The most vertices of one polygon (the base plate, an obstacle): each
+    /// candidate pivot is tested against every edge of the base plate and
+    /// each clearance test walks an obstacle's vertices, so the work grows
+    /// with them. A circle of a few hundred vertices is within `1e-4` of
+    /// its radius; approximate finer outlines.
+    pub const MAX_POLYGON_VERTICES: usize = 4096;
+
     /// The smallest input step (radians) of the clearance refinement: an
     /// interval that cannot be certified clear at this width counts as a
     /// collision.
@@ -112,8 +121,9 @@ impl Constraints {
     ///
     /// [`InvalidInput`] for a non-finite or too large vertex, a negative or
     /// non-finite `link_width`, a travel sample count out of range, a base
-    /// plate that is not a simple polygon with an area, or an obstacle
-    /// without an area.
+    /// plate that is not a simple polygon with an area, an obstacle
+    /// without an area, or a polygon of more than
+    /// [`Constraints::MAX_POLYGON_VERTICES`] vertices.
     pub(crate) fn prepare(&self) -> Result<Prepared> {
         const RESCALE: &str = "rescale the constraints with the task";
         for p in self
@@ -216,6 +226,9 @@ fn check_polygon(name: &str, pts: &[Point2<f64>], simple: bool) -> Result<(), In
     if pts.len() < 3 {
         return Err(bad(PolygonProblem::TooFewVertices));
     }
+    if pts.len() > Constraints::MAX_POLYGON_VERTICES {
+        return Err(bad(PolygonProblem::TooManyVertices));
+    }
     if !spans_area(pts) {
         return Err(bad(PolygonProblem::NoArea));
     }
@@ -249,7 +262,10 @@ fn spans_area(pts: &[Point2<f64>]) -> bool {
 }
 
 /// Whether two edges of the closed polygon cross or touch (adjacent edges
-/// share only their common vertex).
+/// share only their common vertex). The edges are swept by their smallest
+/// `x` so that only edges whose `x` extents overlap are compared: `n log n`
+/// for the outlines of parts, at most `n^2 / 2` tests (`n` is at most
+/// [`Constraints::MAX_POLYGON_VERTICES`]).
 fn self_intersects(pts: &[Point2<f64>]) -> bool {
     let n = pts.len();
     let edge = |i: usize| (pts[i], pts[(i + 1) % n]);
@@ -271,21 +287,32 @@ fn self_intersects(pts: &[Point2<f64>]) -> bool {
             || on(a, b, c)
             || on(a, b, d)
     };
+    let adjacent = |i: usize, j: usize| {
+        let (i, j) = (i.min(j), i.max(j));
+        j == i + 1 || (i == 0 && j == n - 1)
+    };
+    // Adjacent edges share a vertex; they overlap only if they fold back on
+    // each other along one line.
     for i in 0..n {
-        for j in i + 1..n {
-            if j == i + 1 || (i == 0 && j == n - 1) {
-                // Adjacent edges share a vertex; they overlap only if they
-                // fold back on each other along one line.
-                let (shared, p, q) = if j == i + 1 {
-                    (pts[j], pts[i], pts[(j + 1) % n])
-                } else {
-                    (pts[0], pts[1], pts[n - 1])
-                };
-                let (u, v) = (p - shared, q - shared);
-                if cross(u, v) == 0.0 && u.dot(&v) > 0.0 {
-                    return true;
-                }
-            } else if meet(edge(i), edge(j)) {
+        let (p, shared, q) = (pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n]);
+        let (u, v) = (p - shared, q - shared);
+        if cross(u, v) == 0.0 && u.dot(&v) > 0.0 {
+            return true;
+        }
+    }
+    let x_range = |i: usize| {
+        let (a, b) = edge(i);
+        (a.x.min(b.x), a.x.max(b.x))
+    };
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_unstable_by(|&a, &b| x_range(a).0.total_cmp(&x_range(b).0));
+    for (k, &i) in order.iter().enumerate() {
+        let right = x_range(i).1;
+        for &j in &order[k + 1..] {
+            if x_range(j).0 > right {
+                break;
+            }
+            if !adjacent(i, j) && meet(edge(i), edge(j)) {
                 return true;
             }
         }
@@ -317,8 +344,8 @@ impl Prepared {
 
     /// Whether the linkage clears the obstacles and stays inside the
     /// envelope over the whole travel (module docs).
-    pub(crate) fn motion_ok(&self, fb: &SynthesizedFourBar) -> bool {
-        self.clearance_ok(fb) && self.envelope_ok(fb)
+    pub(crate) fn motion_ok(&self, fb: &SynthesizedFourBar, cancel: Option<&AtomicBool>) -> bool {
+        self.clearance_ok(fb, cancel) && self.envelope_ok(fb, cancel)
     }
 
     /// Whether the envelope (if any) holds the point `p`.
@@ -330,7 +357,7 @@ impl Prepared {
 
     /// Whether the moving parts stay inside the envelope over the whole
     /// travel (module docs); true without an envelope.
-    pub(crate) fn envelope_ok(&self, fb: &SynthesizedFourBar) -> bool {
+    pub(crate) fn envelope_ok(&self, fb: &SynthesizedFourBar, cancel: Option<&AtomicBool>) -> bool {
         let Some((_, edges)) = &self.envelope else {
             return true;
         };
@@ -368,7 +395,7 @@ impl Prepared {
             }
             Some(true)
         };
-        self.over_travel(fb, rate, &clear_at)
+        self.over_travel(fb, rate, &clear_at, Go(cancel))
     }
 
     /// How fast (per radian of input) no point of the checked parts moves
@@ -382,12 +409,14 @@ impl Prepared {
 
     /// Whether `clear_at(mode, theta, extra)` holds over the whole travel
     /// (`rate`: the bound on how fast a checked point moves), checked at
-    /// the middles of `samples` intervals and refined by halves.
+    /// the middles of `samples` intervals and refined by halves; false
+    /// once `go` says the computation was cancelled.
     fn over_travel(
         &self,
         fb: &SynthesizedFourBar,
         rate: f64,
         clear_at: &dyn Fn(AssemblyMode, f64, f64) -> Option<bool>,
+        go: Go<'_>,
     ) -> bool {
         let (Some(Some(mode)), Some((start, span))) = (fb.modes().first().copied(), fb.travel())
         else {
@@ -397,7 +426,7 @@ impl Prepared {
         let step = span / n as f64;
         (0..n).all(|k| {
             let mid = start + step * (k as f64 + 0.5);
-            interval_clear(clear_at, mode, mid, 0.5 * step.abs(), rate)
+            go.on() && interval_clear(clear_at, mode, mid, 0.5 * step.abs(), rate, go)
         })
     }
 
@@ -438,9 +467,39 @@ impl Prepared {
         Some(true)
     }
 
+    /// How many intervals the clearance check starts from.
+    pub(crate) fn samples(&self) -> usize {
+        self.samples
+    }
+
+    /// Whether the segments, as capsules of the links' width inflated by
+    /// `extra`, clear every obstacle (the six-bar's check over a crank
+    /// turn, `design::drive`).
+    pub(crate) fn segments_clear(
+        &self,
+        segments: &[(Point2<f64>, Point2<f64>)],
+        extra: f64,
+    ) -> bool {
+        let v = |p: Point2<f64>| PVector::new(p.x, p.y);
+        let identity = parry2d_f64::math::Pose::identity();
+        segments.iter().all(|&(a, b)| {
+            let cap = Capsule::new(v(a), v(b), self.radius + extra);
+            self.obstacles.iter().all(|o| {
+                !intersection_test(&identity, &cap, &identity, o).map_or(true, |r| r.intersecting)
+            })
+        })
+    }
+
     /// Whether the moving links clear every obstacle over the whole travel
-    /// (module docs).
-    pub(crate) fn clearance_ok(&self, fb: &SynthesizedFourBar) -> bool {
+    /// (module docs). One test can take milliseconds to seconds (thousands
+    /// of travel samples, refined), so it checks `cancel` between
+    /// intervals and fails once it is set (the computation it serves is
+    /// then cancelled and its answer dropped).
+    pub(crate) fn clearance_ok(
+        &self,
+        fb: &SynthesizedFourBar,
+        cancel: Option<&AtomicBool>,
+    ) -> bool {
         if self.obstacles.is_empty() {
             return true;
         }
@@ -450,7 +509,19 @@ impl Prepared {
             return false;
         };
         let clear_at = |mode, theta, extra| self.clear_at(fb, mode, theta, extra);
-        self.over_travel(fb, rate, &clear_at)
+        self.over_travel(fb, rate, &clear_at, Go(cancel))
+    }
+}
+
+/// Whether a clearance test may go on: its computation's cancel flag is
+/// not set.
+#[derive(Clone, Copy)]
+struct Go<'a>(Option<&'a AtomicBool>);
+
+impl Go<'_> {
+    #[inline]
+    fn on(self) -> bool {
+        self.0.is_none_or(|c| !c.load(Ordering::Relaxed))
     }
 }
 
@@ -462,6 +533,7 @@ fn interval_clear(
     mid: f64,
     half: f64,
     rate: f64,
+    go: Go<'_>,
 ) -> bool {
     match clear_at(mode, mid, rate * half) {
         Some(true) => return true,
@@ -469,12 +541,12 @@ fn interval_clear(
         Some(false) => {}
     }
     // A hit of the plain capsules is a collision.
-    if clear_at(mode, mid, 0.0) != Some(true) || half < Constraints::MIN_STEP {
+    if clear_at(mode, mid, 0.0) != Some(true) || half < Constraints::MIN_STEP || !go.on() {
         return false;
     }
     let q = 0.5 * half;
-    interval_clear(clear_at, mode, mid - q, q, rate)
-        && interval_clear(clear_at, mode, mid + q, q, rate)
+    interval_clear(clear_at, mode, mid - q, q, rate, go)
+        && interval_clear(clear_at, mode, mid + q, q, rate, go)
 }
 
 #[cfg(test)]
@@ -505,6 +577,109 @@ mod tests {
         assert!(check_polygon("p", &line[..2], true).is_err());
         let spike = pts(&[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 1.0]]);
         assert!(check_polygon("p", &spike, true).is_err());
+    }
+
+    /// The check before the sweep: every pair of edges.
+    fn self_intersects_brute(pts: &[Point2<f64>]) -> bool {
+        let n = pts.len();
+        let orient = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| cross(b - a, c - a);
+        let on = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| {
+            orient(a, b, c) == 0.0
+                && c.x >= a.x.min(b.x)
+                && c.x <= a.x.max(b.x)
+                && c.y >= a.y.min(b.y)
+                && c.y <= a.y.max(b.y)
+        };
+        let meet = |(a, b): (Point2<f64>, Point2<f64>), (c, d): (Point2<f64>, Point2<f64>)| {
+            let (d1, d2) = (orient(c, d, a), orient(c, d, b));
+            let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+            ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+                && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+                || on(c, d, a)
+                || on(c, d, b)
+                || on(a, b, c)
+                || on(a, b, d)
+        };
+        let edge = |i: usize| (pts[i], pts[(i + 1) % n]);
+        for i in 0..n {
+            for j in i + 1..n {
+                if j == i + 1 || (i == 0 && j == n - 1) {
+                    let (shared, p, q) = if j == i + 1 {
+                        (pts[j], pts[i], pts[(j + 1) % n])
+                    } else {
+                        (pts[0], pts[1], pts[n - 1])
+                    };
+                    let (u, v) = (p - shared, q - shared);
+                    if cross(u, v) == 0.0 && u.dot(&v) > 0.0 {
+                        return true;
+                    }
+                } else if meet(edge(i), edge(j)) {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    #[test]
+    fn the_sweep_finds_what_every_pair_finds() {
+        // Polygons on a small integer lattice: crossings, touchings,
+        // collinear overlaps and folds come up often.
+        let mut x = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = move |m: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % m) as f64
+        };
+        let mut found = [0usize; 2];
+        for case in 0..20_000 {
+            let n = 3 + (case % 9);
+            let p: Vec<Point2<f64>> = (0..n).map(|_| Point2::new(next(5), next(5))).collect();
+            let want = self_intersects_brute(&p);
+            assert_eq!(self_intersects(&p), want, "{p:?}");
+            found[usize::from(want)] += 1;
+        }
+        assert!(found[0] > 1000 && found[1] > 1000, "{found:?}");
+    }
+
+    #[test]
+    fn a_large_polygon_is_checked_quickly_or_refused() {
+        // A circle of the most vertices allowed: checked (the sweep looks
+        // at edges whose x ranges overlap, not at every pair).
+        let n = Constraints::MAX_POLYGON_VERTICES;
+        let circle = |n: usize| -> Vec<Point2<f64>> {
+            (0..n)
+                .map(|k| {
+                    let t = core::f64::consts::TAU * k as f64 / n as f64;
+                    Point2::new(t.cos(), t.sin())
+                })
+                .collect()
+        };
+        let c = Constraints {
+            base_plate: Some(circle(n)),
+            obstacles: vec![circle(n)],
+            ..Constraints::default()
+        };
+        assert!(c.prepare().is_ok());
+        // One more vertex: refused, naming the bound.
+        let c = Constraints {
+            obstacles: vec![circle(n + 1)],
+            ..Constraints::default()
+        };
+        let e = c.prepare().err().expect("too many vertices");
+        assert!(matches!(
+            e,
+            crate::Error::InvalidInput(InvalidInput::Polygon {
+                problem: PolygonProblem::TooManyVertices,
+                ..
+            })
+        ));
+        let msg = e.to_string();
+        assert!(
+            msg.contains("obstacle 1") && msg.contains("more than 4096 vertices"),
+            "{msg}"
+        );
     }
 
     #[test]

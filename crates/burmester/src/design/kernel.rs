@@ -45,7 +45,7 @@ use crate::simd::{M, Ops, V, acos, acos1};
 use crate::design::InputRequirement;
 use crate::design::map::{ColumnsMut, ColumnsRow, Sampler};
 use crate::engine::{Control, run_blocks_with};
-use crate::error::Result;
+use crate::error::{Result, try_collect, try_vec};
 use crate::geom::Grid;
 use crate::linkage::{Direction, Grashof};
 use crate::synthesis::Dyad;
@@ -159,20 +159,24 @@ pub(crate) struct RowOut {
 
 impl RowOut {
     /// Room for the padded row `xs` of [`DrivingKernel::padded_xs`].
-    pub(crate) fn new(xs: &[f64]) -> Self {
-        let v = || vec![0.0; xs.len()];
-        RowOut {
-            qx: v(),
-            qy: v(),
-            worst: v(),
-            mu: v(),
-            ratio: v(),
-            margin: v(),
-            members: v(),
-            flags: v(),
-            grashof: v(),
-            codes: vec![0; xs.len()],
-        }
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn new(xs: &[f64]) -> Result<Self> {
+        let v = || try_vec("a row's lanes", xs.len(), 0.0);
+        Ok(RowOut {
+            qx: v()?,
+            qy: v()?,
+            worst: v()?,
+            mu: v()?,
+            ratio: v()?,
+            margin: v()?,
+            members: v()?,
+            flags: v()?,
+            grashof: v()?,
+            codes: try_vec("a row's lanes", xs.len(), 0)?,
+        })
     }
 }
 
@@ -258,11 +262,18 @@ impl<'s> DrivingKernel<'s> {
 
     /// The abscissae of `grid`'s columns, padded with the last to a
     /// multiple of the widest lane count.
-    pub(crate) fn padded_xs(grid: &Grid) -> Vec<f64> {
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn padded_xs(grid: &Grid) -> Result<Vec<f64>> {
         let nx = grid.nx();
-        (0..nx.next_multiple_of(PAD))
-            .map(|i| grid.x(i.min(nx - 1)))
-            .collect()
+        let n = nx.next_multiple_of(PAD);
+        try_collect(
+            "a row's abscissae",
+            n,
+            (0..n).map(|i| grid.x(i.min(nx - 1))),
+        )
     }
 
     /// The lanes of the row at ordinate `y` with abscissae `xs` (padded)
@@ -331,9 +342,17 @@ impl<'s> DrivingKernel<'s> {
 
     /// [`local_x`](Self::local_x) of every abscissa of the padded row
     /// `xs`, computed once for the rows of a map: the lanes' bits.
-    pub(crate) fn local_xs(&self, xs: &[f64]) -> Vec<f64> {
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn local_xs(&self, xs: &[f64]) -> Result<Vec<f64>> {
         let o = Ops(pulp::Scalar);
-        xs.iter().map(|&x| self.local_x(o, x)).collect()
+        try_collect(
+            "a row's abscissae",
+            xs.len(),
+            xs.iter().map(|&x| self.local_x(o, x)),
+        )
     }
 
     /// The driving candidates' lanes at abscissae `x`, ordinate `y`: the
@@ -581,7 +600,7 @@ impl<'s> DrivingKernel<'s> {
         control: &Control<'_>,
     ) -> Result<()> {
         let nx = grid.nx();
-        let local = self.local_xs(xs);
+        let local = self.local_xs(xs)?;
         let init = || RowOut::new(xs);
         run_blocks_with(
             nx,
@@ -628,10 +647,16 @@ pub(crate) struct RowPre {
 
 impl RowPre {
     /// Room for the padded row `xs` of [`DrivingKernel::padded_xs`].
-    pub(crate) fn new(xs: &[f64]) -> Self {
-        RowPre {
-            v: core::array::from_fn(|_| vec![0.0; xs.len()]),
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn new(xs: &[f64]) -> Result<Self> {
+        let mut v: [Vec<f64>; 12] = Default::default();
+        for lane in &mut v {
+            *lane = try_vec("a row's lanes", xs.len(), 0.0)?;
         }
+        Ok(RowPre { v })
     }
 }
 
@@ -1069,13 +1094,13 @@ mod tests {
         let Some(k) = DrivingKernel::new(&sampler, driven, &c) else {
             return 0;
         };
-        let xs = DrivingKernel::padded_xs(grid);
-        let mut out = RowOut::new(&xs);
+        let xs = DrivingKernel::padded_xs(grid).unwrap();
+        let mut out = RowOut::new(&xs).unwrap();
         let all = vec![true; grid.nx()];
         // The driving candidates' lanes computed beforehand (as the atlas
         // does, dispatched) and read on other lane widths.
         let with_pre = |y: f64, out: &mut RowOut, wide: bool| {
-            let mut pre = RowPre::new(&xs);
+            let mut pre = RowPre::new(&xs).unwrap();
             k.pre_row(y, &xs, &all, &mut pre);
             let l = Lanes {
                 pre: Some(&pre),
@@ -1092,7 +1117,7 @@ mod tests {
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar128b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar256b),
             &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar512b),
-            &|y, out| k.row(y, &xs, &k.local_xs(&xs), out),
+            &|y, out| k.row(y, &xs, &k.local_xs(&xs).unwrap(), out),
             &|y, out| with_pre(y, out, false),
             &|y, out| with_pre(y, out, true),
         ];
@@ -1116,10 +1141,10 @@ mod tests {
             // The atlas's path: only the needed groups of lanes, the
             // transmission angle only where the rest is acceptable.
             let needed: Vec<bool> = (0..grid.nx()).map(|i| (i * 7 + j) % 5 != 0).collect();
-            let mut out = RowOut::new(&xs);
+            let mut out = RowOut::new(&xs).unwrap();
             // The candidates' lanes for more groups than needed, as the
             // atlas's union over a chunk of centers.
-            let mut pre = RowPre::new(&xs);
+            let mut pre = RowPre::new(&xs).unwrap();
             let more: Vec<bool> = needed
                 .iter()
                 .enumerate()

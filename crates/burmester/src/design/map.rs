@@ -4,6 +4,8 @@
 //! the core's [`Columns`] and per-sample record are generated from that
 //! list, and so is the Python binding's class.
 
+use core::sync::atomic::AtomicBool;
+
 use nalgebra::Point2;
 
 use crate::design::constraints::Prepared;
@@ -308,6 +310,8 @@ pub(crate) struct Judge<'a> {
     inv_span: f64,
     limits: &'a DesignLimits,
     prepared: Prepared,
+    /// The cancel flag of the computation (a clearance test checks it).
+    cancel: Option<&'a AtomicBool>,
 }
 
 impl Judge<'_> {
@@ -346,7 +350,14 @@ impl<'a> Judge<'a> {
             inv_span: 1.0 / task.span(),
             limits,
             prepared,
+            cancel: None,
         })
+    }
+
+    /// The judge, its clearance tests stopping once `control` is cancelled.
+    pub(crate) fn with_control(mut self, control: &Control<'a>) -> Self {
+        self.cancel = control.cancel_flag();
+        self
     }
 
     /// The sample for figures `fig` with branch flag `branch_free`, where
@@ -388,7 +399,7 @@ impl<'a> Judge<'a> {
                 || self
                     .task
                     .four_bar(&driving, &driven)
-                    .is_ok_and(|fb| self.prepared.motion_ok(&fb)))
+                    .is_ok_and(|fb| self.prepared.motion_ok(&fb, self.cancel)))
     }
 
     /// `1 / Task::span`: the size ratio per length.
@@ -462,6 +473,13 @@ impl<'a> Sampler<'a> {
             maps,
             motion: task.motion(),
         })
+    }
+
+    /// The sampler, its clearance tests stopping once `control` is
+    /// cancelled.
+    pub(crate) fn with_control(mut self, control: &Control<'a>) -> Self {
+        self.judge = self.judge.with_control(control);
+        self
     }
 
     /// The moving pivot at the three poses of the dyad centered at `p` (its
@@ -568,7 +586,7 @@ impl Filemon {
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
-        let sampler = Sampler::new(self.task(), limits, constraints)?;
+        let sampler = Sampler::new(self.task(), limits, constraints)?.with_control(control);
         let mut columns = Columns::for_overwrite(grid.len())?;
         self.fill_solution_map(&sampler, grid, columns.as_out(), control)?;
         Ok(SolutionMap {
@@ -597,7 +615,7 @@ impl Filemon {
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
-        let sampler = Sampler::new(self.task(), limits, constraints)?;
+        let sampler = Sampler::new(self.task(), limits, constraints)?.with_control(control);
         out.check_len(grid.len())?;
         self.fill_solution_map(&sampler, grid, out, control)?;
         Ok(self.map_context(grid, limits, constraints))
@@ -629,7 +647,7 @@ impl Filemon {
         let c = sampler.fixed_pivots(&driven);
         match DrivingKernel::new(sampler, driven, &c) {
             Some(kernel) => {
-                let xs = DrivingKernel::padded_xs(grid);
+                let xs = DrivingKernel::padded_xs(grid)?;
                 kernel.fill(grid, &xs, &branch, out.rows(grid.nx()), control)
             }
             None => fill(grid, out, control, |k, a0| {
@@ -658,7 +676,9 @@ impl Task {
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
-        let sampler = self.driven_sampler(driving, limits, constraints)?;
+        let sampler = self
+            .driven_sampler(driving, limits, constraints)?
+            .with_control(control);
         let mut columns = Columns::for_overwrite(grid.len())?;
         self.fill_driven_map(&sampler, driving, grid, columns.as_out(), control)?;
         let varying = Varying::Driven { driving: *driving };
@@ -685,7 +705,9 @@ impl Task {
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
-        let sampler = self.driven_sampler(driving, limits, constraints)?;
+        let sampler = self
+            .driven_sampler(driving, limits, constraints)?
+            .with_control(control);
         out.check_len(grid.len())?;
         self.fill_driven_map(&sampler, driving, grid, out, control)?;
         let varying = Varying::Driven { driving: *driving };

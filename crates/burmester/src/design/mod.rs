@@ -37,9 +37,14 @@
 //! How each figure is computed is in [`linkage::figures`](crate::linkage::LinkageFigures);
 //! the constraints, the clearance check and its bound are in
 //! [`Constraints`]; the maps run on the tiled [`engine`](crate::engine).
+//!
+//! A linkage whose input only swings is driven from a motor by an added
+//! dyad: [`drive`] maps the candidate crank pivots of that dyad (the Watt
+//! II six-bar, [`SixBar`](crate::SixBar)) and ranks them the same way.
 
 pub mod atlas;
 mod constraints;
+pub mod drive;
 mod kernel;
 mod limits;
 mod map;
@@ -50,6 +55,10 @@ mod space;
 
 pub use atlas::{AtlasBest, AtlasCell, PivotAtlas};
 pub use constraints::Constraints;
+pub use drive::{
+    AttachmentSearch, CrankRockerDesign, Drive, DriveColumns, DriveColumnsOut, DriveContext,
+    DriveFigures, DriveMap, DriveOptions, DriveRankColumns, DriveSearch, best_drive, search_drives,
+};
 pub use limits::{DesignLimits, InputRequirement};
 pub use map::{Columns, ColumnsOut, MapContext, SolutionMap, Varying};
 pub use pairs::{Pair, PairContext, PairMap};

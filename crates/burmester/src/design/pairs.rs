@@ -34,10 +34,10 @@
 use nalgebra::Point2;
 
 use crate::design::map::{Columns, ColumnsOut, Judge, Sample, fill_rows};
-use crate::design::rank::{RankColumns, rank_samples, signed_distances};
+use crate::design::rank::{Nearest, RankColumns, Separation, rank_samples, signed_distances_with};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
-use crate::error::{InvalidInput, Result, in_range};
+use crate::error::{InvalidInput, Result, in_range, try_collect, try_push};
 use crate::geom::Grid;
 use crate::linkage::figures::figures;
 use crate::synthesis::curves::{CurveDyad, FourPositions};
@@ -55,9 +55,12 @@ pub struct PairContext {
     pub grid: Grid,
     /// The task (four poses).
     pub task: Task,
-    /// The driving dyad of each column; `None` where it is at infinity.
+    /// The driving dyad of each column; `None` where it is at infinity
+    /// (or where [`Task::four_bar`] would refuse it: a sample of an
+    /// ill-conditioned task that misses the poses by more than the dyad
+    /// tolerance).
     pub driving: Vec<Option<CurveDyad>>,
-    /// The driven dyad of each row; `None` where it is at infinity.
+    /// The driven dyad of each row; `None` as for [`PairContext::driving`].
     pub driven: Vec<Option<CurveDyad>>,
     /// The limits behind `acceptable`.
     pub limits: DesignLimits,
@@ -133,6 +136,12 @@ impl Task {
     /// The most samples on one axis of a pair map.
     pub const MAX_PAIR_SAMPLES: usize = 10_000_000;
 
+    /// The smallest parameter length of a pair map
+    /// ([`FourPositions::parameter_length`], radians): a shorter range of
+    /// crank rotations (poses 1 and 2 closer than about `2e-7` task sizes)
+    /// is within the rounding of its own ends.
+    pub const MIN_PAIR_PARAMETER: f64 = 2e-6;
+
     /// The pair map of a four-pose task: every pair of `n_driving` driving
     /// dyads and `n_driven` driven dyads sampled along the center-point
     /// curve by its parameter (see the [module docs](crate::design::pairs)),
@@ -143,7 +152,9 @@ impl Task {
     /// [`InvalidInput::NeedsPoses`] unless the task has four poses; the
     /// errors of [`FourPositions::new`] and
     /// [`FourPositions::beta2_range`] (poses without a crank-rotation
-    /// parametrisation); [`InvalidInput::GridSize`] when a count is 0,
+    /// parametrisation); [`InvalidInput::TooSmall`] when the parameter
+    /// length is below [`Task::MIN_PAIR_PARAMETER`] (poses 1 and 2 nearly
+    /// coincide); [`InvalidInput::GridSize`] when a count is 0,
     /// above [`Task::MAX_PAIR_SAMPLES`], or the map has more than
     /// [`Grid::MAX_POINTS`] pairs; [`InvalidInput`] for invalid limits or
     /// constraints; [`Error::OutOfMemory`](crate::Error::OutOfMemory) when
@@ -202,6 +213,27 @@ impl Task {
         limits: &DesignLimits,
         constraints: &Constraints,
     ) -> Result<PairContext> {
+        self.pair_context_with(n_driving, n_driven, limits, constraints, &Control::new())
+    }
+
+    /// [`pair_context`](Self::pair_context) following `control` (the
+    /// dyads of both axes are computed with
+    /// [`FourPositions::parameter_samples_with`]: ten million of them take
+    /// seconds).
+    ///
+    /// # Errors
+    ///
+    /// As [`pair_context`](Self::pair_context);
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when the dyads
+    /// cannot be allocated; [`Error::Cancelled`](crate::Error::Cancelled).
+    pub fn pair_context_with(
+        &self,
+        n_driving: usize,
+        n_driven: usize,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        control: &Control<'_>,
+    ) -> Result<PairContext> {
         if self.len() != 4 {
             return Err(self.needs(4, "Task::pair_map"));
         }
@@ -223,14 +255,52 @@ impl Task {
         Judge::new(self, limits, constraints)?;
         let four = FourPositions::new(self.poses())?;
         let length = four.parameter_length()?;
+        // Poses 1 and 2 nearly alike leave the crank almost no rotation
+        // between them: a parameter plane too small to sample (its size is
+        // below the rounding of the range's ends).
+        if length.is_nan() || length < Self::MIN_PAIR_PARAMETER {
+            return Err(InvalidInput::TooSmall {
+                name: "the range of crank rotations from pose 1 to pose 2 (the pair map's \
+                       parameter, radians over both branches)",
+                value: length,
+                limit: Self::MIN_PAIR_PARAMETER,
+                hint: "poses 1 and 2 (nearly) coincide: move pose 2 away from pose 1, or list \
+                       the poses with two distinct ones first",
+            }
+            .into());
+        }
         Ok(PairContext {
             grid: Grid::from_bounds(0.0, length, 0.0, length, n_driving, n_driven)?,
             task: *self,
-            driving: four.parameter_samples(n_driving)?,
-            driven: four.parameter_samples(n_driven)?,
+            driving: self.buildable(four.parameter_samples_with(n_driving, control)?, control)?,
+            driven: self.buildable(four.parameter_samples_with(n_driven, control)?, control)?,
             limits: *limits,
             constraints: constraints.clone(),
         })
+    }
+}
+
+impl Task {
+    /// The dyads of `samples` that [`Task::four_bar`] accepts (they pass
+    /// the poses within [`tolerance::DYAD`](crate::tolerance::DYAD), their
+    /// crank has a length); `None` for the others. A sample of an
+    /// ill-conditioned task (poses 1 and 2 a hair apart) can miss by more
+    /// than rounding: a pair of it would be a linkage the library refuses.
+    fn buildable(
+        &self,
+        mut samples: Vec<Option<CurveDyad>>,
+        control: &Control<'_>,
+    ) -> Result<Vec<Option<CurveDyad>>> {
+        let n = samples.len();
+        for (i, d) in samples.iter_mut().enumerate() {
+            if i % (1 << 14) == 0 {
+                control.check(i, n)?;
+            }
+            if d.is_some_and(|d| self.check_dyad(&d.dyad(), "dyad").is_err()) {
+                *d = None;
+            }
+        }
+        Ok(samples)
     }
 }
 
@@ -269,14 +339,22 @@ impl PairContext {
         }
         out.check_len(self.grid.len())?;
         let (n_driving, n_driven) = (self.driving.len(), self.driven.len());
-        let judge = Judge::new(&self.task, &self.limits, &self.constraints)?;
+        let judge = Judge::new(&self.task, &self.limits, &self.constraints)?.with_control(control);
         // The moving pivots at the four poses, once per sample of each axis.
         let motion = self.task.motion();
         let pivots = |d: &Option<CurveDyad>| {
             d.map(|d| (d.dyad(), [0, 1, 2, 3].map(|k| motion.first_to(k, d.circle))))
         };
-        let a: Vec<_> = self.driving.iter().map(pivots).collect();
-        let c: Vec<_> = self.driven.iter().map(pivots).collect();
+        let a = try_collect(
+            "the driving pivots",
+            n_driving,
+            self.driving.iter().map(pivots),
+        )?;
+        let c = try_collect(
+            "the driven pivots",
+            n_driven,
+            self.driven.iter().map(pivots),
+        )?;
         fill_rows(n_driving, n_driven, out, control, |j, i| {
             let (Some((da, pa)), Some((dc, pc))) = (&a[i], &c[j]) else {
                 return Sample::INVALID;
@@ -327,8 +405,23 @@ impl PairContext {
     /// branch-free, negative elsewhere, infinite where the other class is
     /// empty (the exact Euclidean distance transform over the whole map,
     /// as for the driven three-pose map).
-    pub fn margins(&self, branch_free: &[bool]) -> Vec<f64> {
-        signed_distances(&self.grid, branch_free)
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when the
+    /// transform's buffers cannot be allocated.
+    pub fn margins(&self, branch_free: &[bool]) -> Result<Vec<f64>> {
+        self.margins_with(branch_free, &Control::new())
+    }
+
+    /// [`margins`](Self::margins) following `control` (the cancel flag is
+    /// checked every few thousand samples of work).
+    ///
+    /// # Errors
+    ///
+    /// As [`margins`](Self::margins); [`Error::Cancelled`](crate::Error::Cancelled).
+    pub fn margins_with(&self, branch_free: &[bool], control: &Control<'_>) -> Result<Vec<f64>> {
+        signed_distances_with(&self.grid, branch_free, control)
     }
 
     /// The `k` best pairs, best first, from the map's columns, by `rank_by`
@@ -351,44 +444,89 @@ impl PairContext {
         rank_by: RankBy,
         columns: RankColumns<'_>,
     ) -> Result<Vec<Pair>> {
+        self.best_pairs_with(k, min_separation, rank_by, columns, &Control::new())
+    }
+
+    /// [`best_pairs`](Self::best_pairs) following `control` (the cancel
+    /// flag checked every few thousand samples and candidates; the
+    /// candidates selected, `O(n log k)`, as
+    /// [`MapContext::best_pivots_with`](crate::MapContext::best_pivots_with)).
+    ///
+    /// # Errors
+    ///
+    /// As [`best_pairs`](Self::best_pairs);
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory);
+    /// [`Error::Cancelled`](crate::Error::Cancelled).
+    pub fn best_pairs_with(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+        columns: RankColumns<'_>,
+        control: &Control<'_>,
+    ) -> Result<Vec<Pair>> {
         let sep = match min_separation {
             Some(s) => in_range("min_separation", s, 0.0, f64::MAX, "")?,
             None => 0.02 * self.grid.viewport().diagonal(),
         };
         let n = self.grid.len();
         columns.check_len(n)?;
-        let margins = core::cell::OnceCell::new();
-        let margin = |s: usize| margins.get_or_init(|| self.margins(columns.branch_free))[s];
+        // Every margin for the margin ranking (a distance transform), a
+        // search around each candidate for the others.
+        let all = if rank_by == RankBy::Margin || k > crate::design::rank::MANY_MARGINS {
+            Some(self.margins_with(columns.branch_free, control)?)
+        } else {
+            None
+        };
+        let nearest = Nearest::new(&self.grid, columns.branch_free);
+        let margin_of = |s: usize| match &all {
+            Some(m) => m[s],
+            None => nearest.get(s),
+        };
         let span = self.task.span();
         let nx = self.grid.nx();
         let at = |s: usize| Point2::new(self.grid.x(s % nx), self.grid.y(s / nx));
+        let mut apart = Separation::new(&self.grid, sep);
         let mut out: Vec<Pair> = Vec::new();
-        rank_samples(n, rank_by, &columns, &margin, |s, margin, score| {
-            if out.len() >= k {
-                return false;
-            }
-            let p = at(s);
-            if out
-                .iter()
-                .any(|q| (at(q.index.0 * nx + q.index.1) - p).norm() < sep)
-            {
-                return true;
-            }
-            if let (Some((driving, driven)), Ok(linkage)) = (self.dyads(s), self.linkage(s)) {
-                out.push(Pair {
-                    driving,
-                    driven,
-                    index: (s / nx, s % nx),
-                    linkage,
-                    margin,
-                    size_ratio: linkage.size() / span,
-                    score,
-                    ranked_by: rank_by,
-                });
-            }
-            out.len() < k
-        });
-        Ok(out)
+        let mut failed = None;
+        rank_samples(
+            n,
+            rank_by,
+            &columns,
+            &margin_of,
+            k,
+            control,
+            |s, margin, score| {
+                if out.len() >= k {
+                    return false;
+                }
+                let p = at(s);
+                if !apart.is_clear(p) {
+                    return true;
+                }
+                if let (Some((driving, driven)), Ok(linkage)) = (self.dyads(s), self.linkage(s)) {
+                    let margin = margin.unwrap_or_else(|| margin_of(s));
+                    let pair = Pair {
+                        driving,
+                        driven,
+                        index: (s / nx, s % nx),
+                        linkage,
+                        margin,
+                        size_ratio: linkage.size() / span,
+                        score,
+                        ranked_by: rank_by,
+                    };
+                    if let Err(e) =
+                        try_push(&mut out, "the best pairs", pair).and_then(|()| apart.add(p))
+                    {
+                        failed = Some(e);
+                        return false;
+                    }
+                }
+                out.len() < k
+            },
+        )?;
+        failed.map_or(Ok(out), Err)
     }
 }
 
@@ -427,7 +565,11 @@ impl PairMap {
     }
 
     /// The signed margin of every pair (see [`PairContext::margins`]).
-    pub fn margins(&self) -> Vec<f64> {
+    ///
+    /// # Errors
+    ///
+    /// As [`PairContext::margins`].
+    pub fn margins(&self) -> Result<Vec<f64>> {
         self.context.margins(&self.columns.branch_free)
     }
 

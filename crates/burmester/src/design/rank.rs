@@ -1,12 +1,15 @@
 //! Ranking candidate pivots of a solution map, and the margin of a sample
 //! to the nearest branch-defect boundary.
 
+use core::cmp::Ordering;
 use core::str::FromStr;
+use std::collections::{BinaryHeap, HashMap};
 
 use nalgebra::Point2;
 
 use crate::design::{MapContext, SolutionMap, Varying};
-use crate::error::{InvalidInput, Result, in_range};
+use crate::engine::Control;
+use crate::error::{InvalidInput, Result, in_range, out_of_memory, try_push, try_vec};
 use crate::geom::Grid;
 use crate::synthesis::SynthesizedFourBar;
 use crate::synthesis::three::Filemon;
@@ -198,6 +201,23 @@ impl SolutionMap {
             .best_pivots(k, min_separation, rank_by, self.rank_columns())
     }
 
+    /// [`best_pivots`](Self::best_pivots) following `control` (see
+    /// [`MapContext::best_pivots_with`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`MapContext::best_pivots_with`].
+    pub fn best_pivots_with(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+        control: &Control<'_>,
+    ) -> Result<Vec<Pivot>> {
+        self.context
+            .best_pivots_with(k, min_separation, rank_by, self.rank_columns(), control)
+    }
+
     /// The whole Pareto front of the acceptable candidates over the minimum
     /// transmission angle and the size ratio, from the most compact to the
     /// best transmission: `best_pivots(usize::MAX, Some(0.0),
@@ -217,9 +237,15 @@ impl MapContext {
     /// distance to the nearest transformed Filemon curve
     /// ([`Filemon::margin`]); for candidate driven pivots, the distance to
     /// the nearest sample of the other class in `branch_free` (exact
-    /// Euclidean, over the whole grid: infinite when there is none).
+    /// Euclidean, over the whole grid: infinite when there is none), found
+    /// by a search outwards from the sample (no memory sized by the grid).
     pub fn margin(&self, k: usize, branch_free: &[bool]) -> f64 {
-        Margins::new(self, branch_free).get(k)
+        match self.varying {
+            Varying::Driving { driven } => Filemon::new(&self.task, driven)
+                .ok()
+                .map_or(f64::NEG_INFINITY, |f| f.margin_at(self.point(k))),
+            Varying::Driven { .. } => Nearest::new(&self.grid, branch_free).get(k),
+        }
     }
 
     /// The `k` best candidates, best first, from the map's columns, by
@@ -230,11 +256,15 @@ impl MapContext {
     /// `None`: 2% of the viewport's diagonal); candidates without a
     /// linkage are skipped.
     ///
+    /// The candidates are selected, not sorted: `O(n log k)` for `n`
+    /// samples (the Pareto front sorts its candidates, `O(n log n)`).
+    ///
     /// # Errors
     ///
     /// [`InvalidInput::OutsideRange`] for a negative or non-finite
     /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-    /// another length than the grid.
+    /// another length than the grid;
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
     pub fn best_pivots(
         &self,
         k: usize,
@@ -242,31 +272,55 @@ impl MapContext {
         rank_by: RankBy,
         columns: RankColumns<'_>,
     ) -> Result<Vec<Pivot>> {
+        self.best_pivots_with(k, min_separation, rank_by, columns, &Control::new())
+    }
+
+    /// [`best_pivots`](Self::best_pivots) following `control`: the cancel
+    /// flag is checked every few thousand samples and candidates; progress
+    /// is not reported.
+    ///
+    /// # Errors
+    ///
+    /// As [`best_pivots`](Self::best_pivots);
+    /// [`Error::Cancelled`](crate::Error::Cancelled).
+    pub fn best_pivots_with(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+        columns: RankColumns<'_>,
+        control: &Control<'_>,
+    ) -> Result<Vec<Pivot>> {
         let sep = match min_separation {
             Some(s) => in_range("min_separation", s, 0.0, f64::MAX, "")?,
             None => 0.02 * self.grid.viewport().diagonal(),
         };
         let n = self.grid.len();
         columns.check_len(n)?;
-        let margins = Margins::new(self, columns.branch_free);
+        let margins = Margins::new(self, columns.branch_free, rank_by, k, control)?;
         let span = self.task.span();
+        let nx = self.grid.nx();
+        let mut apart = Separation::new(&self.grid, sep);
         let mut out: Vec<Pivot> = Vec::new();
+        let mut failed = None;
         rank_samples(
             n,
             rank_by,
             &columns,
             &|s| margins.get(s),
+            k,
+            control,
             |s, margin, score| {
                 if out.len() >= k {
                     return false;
                 }
                 let p = self.point(s);
-                if out.iter().any(|q| (q.center - p).norm() < sep) {
+                if !apart.is_clear(p) {
                     return true;
                 }
                 if let Ok(linkage) = self.linkage(s) {
-                    let nx = self.grid.nx();
-                    out.push(Pivot {
+                    let margin = margin.unwrap_or_else(|| margins.get(s));
+                    let pivot = Pivot {
                         center: p,
                         index: (s / nx, s % nx),
                         linkage,
@@ -274,12 +328,18 @@ impl MapContext {
                         size_ratio: linkage.size() / span,
                         score,
                         ranked_by: rank_by,
-                    });
+                    };
+                    if let Err(e) =
+                        try_push(&mut out, "the best pivots", pivot).and_then(|()| apart.add(p))
+                    {
+                        failed = Some(e);
+                        return false;
+                    }
                 }
                 out.len() < k
             },
-        );
-        Ok(out)
+        )?;
+        failed.map_or(Ok(out), Err)
     }
 }
 
@@ -313,77 +373,403 @@ impl RankColumns<'_> {
 
 /// The ranking of the `n` samples of a map's `columns` by `rank_by` (see
 /// [`RankBy`]), shared by every map: offers each candidate, best first,
-/// to `take(sample, margin, score)`, which returns whether it wants more.
+/// to `take(sample, margin, score)`, which returns whether it wants more
+/// (`margin` is `None` where the ranking did not need it: `take` asks for
+/// it when it takes the candidate).
 /// Runs of scores within [`tolerance::RANK_TIE`] are offered by
 /// [`tie_order`] (the smaller size ratio, then the larger `margin`).
+///
+/// The order is that of sorting every candidate by its key (score or
+/// margin, larger first; then the sample, smaller first), but the
+/// candidates are *selected*: the best `m` (about `want`, the number the
+/// caller expects to take; eight times as many each time more are asked
+/// for) by a heap, `O(n log m)`, with the runs of ties at the end of them;
+/// the Pareto front sorts its candidates. The cancel flag of `control` is
+/// checked every [`POLL`] samples or candidates.
+///
+/// # Errors
+///
+/// [`Error::OutOfMemory`](crate::Error::OutOfMemory);
+/// [`Error::Cancelled`](crate::Error::Cancelled) (its counts are samples).
 pub(crate) fn rank_samples(
     n: usize,
     rank_by: RankBy,
     columns: &RankColumns<'_>,
     margin: &dyn Fn(usize) -> f64,
-    mut take: impl FnMut(usize, f64, f64) -> bool,
-) {
-    match rank_by {
-        RankBy::Margin => {
-            let mut cand: Vec<(usize, f64)> = (0..n)
-                .filter(|&s| columns.valid[s] && columns.branch_free[s])
-                .map(|s| (s, margin(s)))
-                .collect();
-            cand.sort_by(|a, b| b.1.total_cmp(&a.1));
-            for (s, m) in cand {
-                if !take(s, m, m) {
-                    return;
+    want: usize,
+    control: &Control<'_>,
+    mut take: impl FnMut(usize, Option<f64>, f64) -> bool,
+) -> Result<()> {
+    if rank_by == RankBy::Pareto {
+        let mut cand: Vec<(usize, f32, f32)> = Vec::new();
+        for s in 0..n {
+            poll(control, s, n)?;
+            if columns.acceptable[s]
+                && !columns.min_transmission_rad[s].is_nan()
+                && !columns.size_ratio[s].is_nan()
+            {
+                let c = (s, columns.size_ratio[s], columns.min_transmission_rad[s]);
+                try_push(&mut cand, "the Pareto candidates", c)?;
+            }
+        }
+        // By size, ties by the better transmission, then by sample: a
+        // candidate is on the front when it transmits better than every
+        // smaller (or as small and listed before) one.
+        sort_polled(
+            &mut cand,
+            |a, b| {
+                a.1.total_cmp(&b.1)
+                    .then(b.2.total_cmp(&a.2))
+                    .then(a.0.cmp(&b.0))
+            },
+            control,
+        )?;
+        let mut best = f32::NEG_INFINITY;
+        for (m, (s, _, mu)) in cand.into_iter().enumerate() {
+            poll(control, m, n)?;
+            if mu > best {
+                best = mu;
+                if !take(s, None, f64::from(mu)) {
+                    return Ok(());
                 }
             }
         }
-        RankBy::Pareto => {
-            let mut cand: Vec<(usize, f32, f32)> = (0..n)
-                .filter(|&s| {
-                    columns.acceptable[s]
-                        && !columns.min_transmission_rad[s].is_nan()
-                        && !columns.size_ratio[s].is_nan()
-                })
-                .map(|s| (s, columns.size_ratio[s], columns.min_transmission_rad[s]))
-                .collect();
-            // By size, ties by the better transmission: a candidate is
-            // on the front when it transmits better than every smaller
-            // (or as small and listed before) one.
-            cand.sort_by(|a, b| a.1.total_cmp(&b.1).then(b.2.total_cmp(&a.2)));
-            let mut best = f32::NEG_INFINITY;
-            for (s, _, mu) in cand {
-                if mu > best {
-                    best = mu;
-                    if !take(s, margin(s), f64::from(mu)) {
-                        return;
-                    }
-                }
-            }
+        return Ok(());
+    }
+    let by_margin = rank_by == RankBy::Margin;
+    let key = |s: usize| -> Option<f64> {
+        if by_margin {
+            (columns.valid[s] && columns.branch_free[s]).then(|| margin(s))
+        } else if columns.acceptable[s] {
+            columns.score(s, rank_by)
+        } else {
+            None
         }
-        _ => {
-            let mut cand: Vec<(usize, f64)> = (0..n)
-                .filter(|&s| columns.acceptable[s])
-                .filter_map(|s| Some((s, columns.score(s, rank_by)?)))
-                .collect();
-            cand.sort_by(|a, b| b.1.total_cmp(&a.1));
-            let mut i = 0;
-            while i < cand.len() {
-                // A run of equal scores: the smaller, then the wider
-                // margin first.
-                let mut j = i + 1;
-                while j < cand.len() && (cand[i].1 - cand[j].1).abs() <= tolerance::RANK_TIE {
+    };
+    // Ties group only the scores (the margin ranking has no ties).
+    let tie = if by_margin {
+        None
+    } else {
+        Some(tolerance::RANK_TIE)
+    };
+    let mut m = want.saturating_add(want / 4).saturating_add(16).min(n);
+    // Candidates already offered (a pass with more of them offers these
+    // again first, in the same order).
+    let mut offered = 0usize;
+    loop {
+        let (list, threshold, complete) = select(n, m, &key, tie, control)?;
+        let mut count = 0usize;
+        let mut i = 0;
+        while i < list.len() {
+            poll(control, i, list.len())?;
+            let start = list[i].1;
+            // A run starting below the m-th key may miss members.
+            if !complete && start.total_cmp(&threshold) == Ordering::Less {
+                break;
+            }
+            let mut j = i + 1;
+            if let Some(t) = tie {
+                while j < list.len() && (start - list[j].1).abs() <= t {
                     j += 1;
                 }
-                let mut run: Vec<(usize, f32, f64, f64)> = cand[i..j]
-                    .iter()
-                    .map(|&(s, score)| (s, columns.size_ratio[s], margin(s), score))
-                    .collect();
-                run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
-                for (s, _, m, score) in run {
-                    if !take(s, m, score) {
-                        return;
-                    }
+            }
+            if count + (j - i) <= offered {
+                // Offered by an earlier pass.
+                count += j - i;
+                i = j;
+                continue;
+            }
+            if j - i == 1 {
+                // A candidate alone: its margin only for the margin ranking
+                // (its key); the caller asks for it when it takes one.
+                let (s, key) = list[i];
+                count += 1;
+                offered = count;
+                if !take(s, by_margin.then_some(key), key) {
+                    return Ok(());
                 }
                 i = j;
+                continue;
+            }
+            // A run of ties (scores only): by size, then margin.
+            let mut run: Vec<(usize, f32, f64, f64)> = Vec::new();
+            for &(s, key) in &list[i..j] {
+                let item = (s, columns.size_ratio[s], margin(s), key);
+                try_push(&mut run, "a run of tied candidates", item)?;
+            }
+            sort_polled(
+                &mut run,
+                |a, b| tie_order((a.1, a.2), (b.1, b.2)).then(a.0.cmp(&b.0)),
+                control,
+            )?;
+            for (s, _, mg, score) in run {
+                count += 1;
+                if count <= offered {
+                    continue;
+                }
+                offered = count;
+                if !take(s, Some(mg), score) {
+                    return Ok(());
+                }
+            }
+            i = j;
+        }
+        if complete || m >= n {
+            return Ok(());
+        }
+        // Eight times as many; past a quarter of the samples, all of them.
+        m = m.saturating_mul(8);
+        if m >= n / 4 {
+            m = n;
+        }
+    }
+}
+
+/// Samples or candidates between two checks of the cancel flag.
+const POLL: usize = 1 << 14;
+
+/// Checks the cancel flag every [`POLL`] steps.
+#[inline]
+fn poll(control: &Control<'_>, i: usize, n: usize) -> Result<()> {
+    if i % POLL == 0 {
+        control.check(i, n)?;
+    }
+    Ok(())
+}
+
+/// A candidate in a selection heap: the worse is the greater, so that the
+/// top of the (max-)heap is the one to drop.
+#[derive(Clone, Copy)]
+struct Worst(usize, f64);
+
+impl PartialEq for Worst {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Worst {}
+impl PartialOrd for Worst {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Worst {
+    fn cmp(&self, other: &Self) -> Ordering {
+        // Better: the larger key, then the smaller sample.
+        other.1.total_cmp(&self.1).then(self.0.cmp(&other.0))
+    }
+}
+
+/// The best candidates of `key` (`None`: not a candidate), best first
+/// (the larger key, then the smaller sample): the best `m` and, when
+/// `tie` is given, every candidate within `tie` below the `m`-th (so the
+/// runs of ties starting at or above it are whole). Returns them with the
+/// `m`-th key and whether they are all the candidates.
+fn select(
+    n: usize,
+    m: usize,
+    key: &dyn Fn(usize) -> Option<f64>,
+    tie: Option<f64>,
+    control: &Control<'_>,
+) -> Result<Selected> {
+    if m >= n {
+        // Every candidate: sorted, with no heap.
+        let mut list: Vec<(usize, f64)> = Vec::new();
+        for s in 0..n {
+            poll(control, s, n)?;
+            if let Some(v) = key(s) {
+                try_push(&mut list, "the candidates", (s, v))?;
+            }
+        }
+        sort_polled(
+            &mut list,
+            |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)),
+            control,
+        )?;
+        let threshold = list.last().map_or(f64::NEG_INFINITY, |c| c.1);
+        return Ok((list, threshold, true));
+    }
+    let mut heap: BinaryHeap<Worst> = BinaryHeap::new();
+    heap.try_reserve_exact(m.saturating_add(1))
+        .map_err(|_| out_of_memory::<Worst>("the best candidates", m))?;
+    let mut total = 0usize;
+    for s in 0..n {
+        poll(control, s, n)?;
+        let Some(v) = key(s) else { continue };
+        total += 1;
+        let c = Worst(s, v);
+        if heap.len() < m {
+            heap.push(c);
+        } else if heap.peek().is_some_and(|w| c < *w) {
+            heap.pop();
+            heap.push(c);
+        }
+    }
+    let threshold = heap.peek().map_or(f64::NEG_INFINITY, |w| w.1);
+    let mut list: Vec<(usize, f64)> = Vec::new();
+    if total <= m || tie.is_none() {
+        list.try_reserve_exact(heap.len())
+            .map_err(|_| out_of_memory::<(usize, f64)>("the best candidates", heap.len()))?;
+        list.extend(heap.into_sorted_vec().into_iter().map(|w| (w.0, w.1)));
+        return Ok((list, threshold, total <= m));
+    }
+    drop(heap);
+    let t = tie.unwrap_or(0.0);
+    let low = threshold - t;
+    for s in 0..n {
+        poll(control, s, n)?;
+        if let Some(v) = key(s) {
+            if v >= low || v.total_cmp(&threshold) != Ordering::Less {
+                try_push(&mut list, "the best candidates", (s, v))?;
+            }
+        }
+    }
+    sort_polled(
+        &mut list,
+        |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)),
+        control,
+    )?;
+    let complete = list.len() == total;
+    Ok((list, threshold, complete))
+}
+
+/// Sorts `v` by `cmp` (a total order), checking the cancel flag between
+/// pieces of the work: sorted runs of [`POLL`] values, merged pairwise.
+fn sort_polled<T: Copy>(
+    v: &mut Vec<T>,
+    cmp: impl Fn(&T, &T) -> Ordering,
+    control: &Control<'_>,
+) -> Result<()> {
+    let n = v.len();
+    if n <= POLL {
+        v.sort_unstable_by(&cmp);
+        return Ok(());
+    }
+    for (m, chunk) in v.chunks_mut(POLL).enumerate() {
+        control.check(m * POLL, n)?;
+        chunk.sort_unstable_by(&cmp);
+    }
+    let mut buf: Vec<T> = Vec::new();
+    buf.try_reserve_exact(n)
+        .map_err(|_| out_of_memory::<T>("a sort buffer", n))?;
+    let mut src = core::mem::take(v);
+    let mut width = POLL;
+    while width < n {
+        buf.clear();
+        let mut start = 0;
+        while start < n {
+            let mid = (start + width).min(n);
+            let end = (start + 2 * width).min(n);
+            let (a, b) = (&src[start..mid], &src[mid..end]);
+            let (mut i, mut j) = (0, 0);
+            while i < a.len() && j < b.len() {
+                if (i + j) % POLL == 0 {
+                    if let Err(e) = control.check(start + i + j, n) {
+                        *v = src;
+                        return Err(e);
+                    }
+                }
+                if cmp(&b[j], &a[i]) == Ordering::Less {
+                    buf.push(b[j]);
+                    j += 1;
+                } else {
+                    buf.push(a[i]);
+                    i += 1;
+                }
+            }
+            buf.extend_from_slice(&a[i..]);
+            buf.extend_from_slice(&b[j..]);
+            start = end;
+        }
+        core::mem::swap(&mut src, &mut buf);
+        width *= 2;
+    }
+    *v = src;
+    Ok(())
+}
+
+/// The points taken, by the cell of [`Separation`] they lie in.
+type Cells = HashMap<(i64, i64), Vec<Point2<f64>>>;
+
+/// What [`select`] gives: the candidates `(sample, key)` best first, the
+/// `m`-th key, and whether they are all the candidates.
+type Selected = (Vec<(usize, f64)>, f64, bool);
+
+/// The points taken so far, to skip candidates closer than the separation
+/// to one of them: a hash of cells as wide as the separation, so each
+/// test looks at the points of nine cells (a cell holds at most four
+/// points that far apart).
+pub(crate) struct Separation {
+    sep: f64,
+    origin: Point2<f64>,
+    /// `None`: no two samples can be closer than the separation (it is
+    /// below half the grid's spacing), or cells would be too many for an
+    /// integer index (a test then looks at every point).
+    cells: Option<Cells>,
+    all: Vec<Point2<f64>>,
+    trivial: bool,
+}
+
+impl Separation {
+    /// For candidates at the samples of `grid`, kept `sep` apart.
+    pub(crate) fn new(grid: &Grid, sep: f64) -> Self {
+        let v = grid.viewport();
+        let trivial = sep.is_nan() || sep <= 0.5 * grid.dx().min(grid.dy());
+        let span = ((v.xmax - v.xmin) / sep).max((v.ymax - v.ymin) / sep);
+        Separation {
+            sep,
+            origin: Point2::new(v.xmin, v.ymin),
+            cells: (!trivial && span < 1e15).then(HashMap::new),
+            all: Vec::new(),
+            trivial,
+        }
+    }
+
+    fn cell(&self, p: Point2<f64>) -> (i64, i64) {
+        (
+            ((p.x - self.origin.x) / self.sep).floor() as i64,
+            ((p.y - self.origin.y) / self.sep).floor() as i64,
+        )
+    }
+
+    /// Whether `p` is at least the separation from every point taken.
+    pub(crate) fn is_clear(&self, p: Point2<f64>) -> bool {
+        if self.trivial {
+            return true;
+        }
+        let far = |q: &Point2<f64>| (q - p).norm() >= self.sep;
+        match &self.cells {
+            None => self.all.iter().all(far),
+            Some(cells) => {
+                let (cx, cy) = self.cell(p);
+                (-1..=1).all(|dx| {
+                    (-1..=1).all(|dy| {
+                        cells
+                            .get(&(cx.saturating_add(dx), cy.saturating_add(dy)))
+                            .is_none_or(|v| v.iter().all(far))
+                    })
+                })
+            }
+        }
+    }
+
+    /// Takes `p`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    pub(crate) fn add(&mut self, p: Point2<f64>) -> Result<()> {
+        if self.trivial {
+            return Ok(());
+        }
+        let key = self.cell(p);
+        match &mut self.cells {
+            None => try_push(&mut self.all, "the pivots taken", p),
+            Some(cells) => {
+                cells
+                    .try_reserve(1)
+                    .map_err(|_| out_of_memory::<Point2<f64>>("the pivots taken", cells.len()))?;
+                try_push(cells.entry(key).or_default(), "the pivots taken", p)
             }
         }
     }
@@ -396,26 +782,44 @@ pub(crate) fn tie_order(a: (f32, f64), b: (f32, f64)) -> core::cmp::Ordering {
     size(a.0).total_cmp(&size(b.0)).then(b.1.total_cmp(&a.1))
 }
 
-/// The margins of a map's samples, computing what they share once.
+/// From this many results on, a ranking of a driven map computes every
+/// margin at once (a distance transform, `O(n)`) rather than each by a
+/// search around its sample.
+pub(crate) const MANY_MARGINS: usize = 1024;
+
+/// The margins of a map's samples, computing what they share once: the
+/// driving map's Filemon construction, or the driven map's distance
+/// transform (for the margin ranking, which needs every margin) or a
+/// search outwards from each sample (for the others, which need a few).
 struct Margins<'a> {
     context: &'a MapContext,
-    branch_free: &'a [bool],
+    nearest: Nearest<'a>,
     filemon: Option<Filemon>,
-    distances: core::cell::OnceCell<Vec<f64>>,
+    distances: Option<Vec<f64>>,
 }
 
 impl<'a> Margins<'a> {
-    fn new(context: &'a MapContext, branch_free: &'a [bool]) -> Self {
-        let filemon = match context.varying {
-            Varying::Driving { driven } => Filemon::new(&context.task, driven).ok(),
-            Varying::Driven { .. } => None,
+    fn new(
+        context: &'a MapContext,
+        branch_free: &'a [bool],
+        rank_by: RankBy,
+        want: usize,
+        control: &Control<'_>,
+    ) -> Result<Self> {
+        let (filemon, distances) = match context.varying {
+            Varying::Driving { driven } => (Filemon::new(&context.task, driven).ok(), None),
+            Varying::Driven { .. } if rank_by == RankBy::Margin || want > MANY_MARGINS => (
+                None,
+                Some(signed_distances_with(&context.grid, branch_free, control)?),
+            ),
+            Varying::Driven { .. } => (None, None),
         };
-        Margins {
+        Ok(Margins {
             context,
-            branch_free,
+            nearest: Nearest::new(&context.grid, branch_free),
             filemon,
-            distances: core::cell::OnceCell::new(),
-        }
+            distances,
+        })
     }
 
     fn get(&self, k: usize) -> f64 {
@@ -424,10 +828,79 @@ impl<'a> Margins<'a> {
                 .filemon
                 .as_ref()
                 .map_or(f64::NEG_INFINITY, |f| f.margin_at(self.context.point(k))),
-            Varying::Driven { .. } => self
-                .distances
-                .get_or_init(|| signed_distances(&self.context.grid, self.branch_free))[k],
+            Varying::Driven { .. } => match &self.distances {
+                Some(d) => d[k],
+                None => self.nearest.get(k),
+            },
         }
+    }
+}
+
+/// The signed distance from a sample to the nearest sample of the other
+/// class in `flags` (as [`signed_distances_with`] gives it, without its
+/// memory): the samples are searched in square rings around the sample,
+/// nearest first, until the ring is farther than the nearest found.
+pub(crate) struct Nearest<'a> {
+    grid: &'a Grid,
+    flags: &'a [bool],
+    /// Whether some sample is `false`, `true` (else the distance is
+    /// infinite).
+    has: [bool; 2],
+}
+
+impl<'a> Nearest<'a> {
+    /// For the samples of `grid` flagged `flags` (one pass over them).
+    pub(crate) fn new(grid: &'a Grid, flags: &'a [bool]) -> Self {
+        let any_false = flags.contains(&false);
+        let any_true = flags.contains(&true);
+        Nearest {
+            grid,
+            flags,
+            has: [any_false, any_true],
+        }
+    }
+
+    /// The signed distance of sample `k`.
+    pub(crate) fn get(&self, k: usize) -> f64 {
+        let (grid, flags) = (self.grid, self.flags);
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let class = flags[k];
+        let sign = if class { 1.0 } else { -1.0 };
+        if !self.has[usize::from(!class)] {
+            return sign * f64::INFINITY;
+        }
+        let (i0, j0) = ((k % nx) as i64, (k / nx) as i64);
+        let (h2x, h2y) = (grid.dx() * grid.dx(), grid.dy() * grid.dy());
+        let step = grid.dx().min(grid.dy());
+        let mut best = f64::INFINITY;
+        let visit = |i: i64, j: i64, best: &mut f64| {
+            if i < 0 || j < 0 || i >= nx as i64 || j >= ny as i64 {
+                return;
+            }
+            if flags[j as usize * nx + i as usize] != class {
+                let (di, dj) = ((i - i0) as f64, (j - j0) as f64);
+                // The transform's arithmetic: the column pass, then the row's.
+                let d2 = h2x * di * di + (h2y * dj * dj + 0.0);
+                *best = best.min(d2);
+            }
+        };
+        let reach = (nx.max(ny)) as i64;
+        for r in 1..=reach {
+            // Every sample of ring r is at least r steps away.
+            let near = r as f64 * step;
+            if near * near > best {
+                break;
+            }
+            for i in (i0 - r)..=(i0 + r) {
+                visit(i, j0 - r, &mut best);
+                visit(i, j0 + r, &mut best);
+            }
+            for j in (j0 - r + 1)..(j0 + r) {
+                visit(i0 - r, j, &mut best);
+                visit(i0 + r, j, &mut best);
+            }
+        }
+        sign * best.sqrt()
     }
 }
 
@@ -436,30 +909,55 @@ impl<'a> Margins<'a> {
 /// false, infinite when the other class is empty): the exact distance
 /// transform of Felzenszwalb and Huttenlocher, separable over columns and
 /// rows, in the grid's units.
-pub(crate) fn signed_distances(grid: &Grid, flags: &[bool]) -> Vec<f64> {
+///
+/// # Errors
+///
+/// [`Error::OutOfMemory`](crate::Error::OutOfMemory);
+/// [`Error::Cancelled`](crate::Error::Cancelled) (checked every few
+/// columns and rows; its counts are the passes' lines).
+pub(crate) fn signed_distances_with(
+    grid: &Grid,
+    flags: &[bool],
+    control: &Control<'_>,
+) -> Result<Vec<f64>> {
+    const WHAT: &str = "a distance transform";
     let (nx, ny) = (grid.nx(), grid.ny());
-    let mut out = vec![0.0; nx * ny];
+    let lines = 2 * (nx + ny);
+    let mut done = 0;
+    let mut out = try_vec(WHAT, nx * ny, 0.0)?;
+    let mut d = try_vec(WHAT, nx * ny, 0.0)?;
+    let mut col = try_vec(WHAT, ny, 0.0)?;
+    let mut tmp = try_vec(WHAT, ny.max(nx), 0.0)?;
+    let mut scratch = Envelope::new(ny.max(nx))?;
+    // The flag is checked about every POLL samples of work.
+    let check = |done: usize, len: usize| -> Result<()> {
+        if done % (POLL / len.max(1)).max(1) == 0 {
+            control.check(done, lines)?;
+        }
+        Ok(())
+    };
     for class in [true, false] {
         // Squared distance from the samples of `class` to the nearest of
         // the other class.
-        let mut d: Vec<f64> = flags
-            .iter()
-            .map(|&f| if f == class { f64::INFINITY } else { 0.0 })
-            .collect();
-        let mut col = vec![0.0; ny];
-        let mut tmp = vec![0.0; ny.max(nx)];
+        for (v, &f) in d.iter_mut().zip(flags) {
+            *v = if f == class { f64::INFINITY } else { 0.0 };
+        }
         for i in 0..nx {
+            check(done, ny)?;
+            done += 1;
             for j in 0..ny {
                 col[j] = d[j * nx + i];
             }
-            transform_1d(&col, grid.dy(), &mut tmp[..ny]);
+            transform_1d(&col, grid.dy(), &mut tmp[..ny], &mut scratch);
             for j in 0..ny {
                 d[j * nx + i] = tmp[j];
             }
         }
         for j in 0..ny {
+            check(done, nx)?;
+            done += 1;
             let row = &mut d[j * nx..(j + 1) * nx];
-            transform_1d(row, grid.dx(), &mut tmp[..nx]);
+            transform_1d(row, grid.dx(), &mut tmp[..nx], &mut scratch);
             row.copy_from_slice(&tmp[..nx]);
         }
         for (k, &f) in flags.iter().enumerate() {
@@ -469,17 +967,38 @@ pub(crate) fn signed_distances(grid: &Grid, flags: &[bool]) -> Vec<f64> {
             }
         }
     }
-    out
+    Ok(out)
+}
+
+/// The buffers of [`transform_1d`], allocated once.
+struct Envelope {
+    v: Vec<usize>,
+    z: Vec<f64>,
+}
+
+impl Envelope {
+    fn new(n: usize) -> Result<Self> {
+        const WHAT: &str = "a distance transform";
+        let mut v = Vec::new();
+        v.try_reserve_exact(n)
+            .map_err(|_| out_of_memory::<usize>(WHAT, n))?;
+        let mut z = Vec::new();
+        z.try_reserve_exact(n + 1)
+            .map_err(|_| out_of_memory::<f64>(WHAT, n + 1))?;
+        Ok(Envelope { v, z })
+    }
 }
 
 /// `out[p] = min_q (h^2 (p - q)^2 + f[q])`: the lower envelope of
 /// parabolas (Felzenszwalb and Huttenlocher), `O(n)`.
-fn transform_1d(f: &[f64], h: f64, out: &mut [f64]) {
+fn transform_1d(f: &[f64], h: f64, out: &mut [f64], scratch: &mut Envelope) {
     let n = f.len();
     let h2 = h * h;
-    // Vertices of the envelope's parabolas and the boundaries between them.
-    let mut v: Vec<usize> = Vec::with_capacity(n);
-    let mut z: Vec<f64> = Vec::with_capacity(n + 1);
+    // Vertices of the envelope's parabolas and the boundaries between them
+    // (`n` and `n + 1` at most: reserved).
+    let Envelope { v, z } = scratch;
+    v.clear();
+    z.clear();
     for q in 0..n {
         if f[q].is_infinite() {
             continue;
@@ -523,6 +1042,215 @@ fn transform_1d(f: &[f64], h: f64, out: &mut [f64]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    /// The ranking as it was before the selection (every candidate sorted):
+    /// the reference the selection must reproduce, offer for offer.
+    fn reference(
+        n: usize,
+        rank_by: RankBy,
+        columns: &RankColumns<'_>,
+        margin: &dyn Fn(usize) -> f64,
+    ) -> Vec<(usize, f64, f64)> {
+        let mut offered = Vec::new();
+        match rank_by {
+            RankBy::Margin => {
+                let mut cand: Vec<(usize, f64)> = (0..n)
+                    .filter(|&s| columns.valid[s] && columns.branch_free[s])
+                    .map(|s| (s, margin(s)))
+                    .collect();
+                cand.sort_by(|a, b| b.1.total_cmp(&a.1));
+                for (s, m) in cand {
+                    offered.push((s, m, m));
+                }
+            }
+            RankBy::Pareto => {
+                let mut cand: Vec<(usize, f32, f32)> = (0..n)
+                    .filter(|&s| {
+                        columns.acceptable[s]
+                            && !columns.min_transmission_rad[s].is_nan()
+                            && !columns.size_ratio[s].is_nan()
+                    })
+                    .map(|s| (s, columns.size_ratio[s], columns.min_transmission_rad[s]))
+                    .collect();
+                cand.sort_by(|a, b| a.1.total_cmp(&b.1).then(b.2.total_cmp(&a.2)));
+                let mut best = f32::NEG_INFINITY;
+                for (s, _, mu) in cand {
+                    if mu > best {
+                        best = mu;
+                        offered.push((s, margin(s), f64::from(mu)));
+                    }
+                }
+            }
+            _ => {
+                let mut cand: Vec<(usize, f64)> = (0..n)
+                    .filter(|&s| columns.acceptable[s])
+                    .filter_map(|s| Some((s, columns.score(s, rank_by)?)))
+                    .collect();
+                cand.sort_by(|a, b| b.1.total_cmp(&a.1));
+                let mut i = 0;
+                while i < cand.len() {
+                    let mut j = i + 1;
+                    while j < cand.len() && (cand[i].1 - cand[j].1).abs() <= tolerance::RANK_TIE {
+                        j += 1;
+                    }
+                    let mut run: Vec<(usize, f32, f64, f64)> = cand[i..j]
+                        .iter()
+                        .map(|&(s, score)| (s, columns.size_ratio[s], margin(s), score))
+                        .collect();
+                    run.sort_by(|a, b| tie_order((a.1, a.2), (b.1, b.2)));
+                    for (s, _, m, score) in run {
+                        offered.push((s, m, score));
+                    }
+                    i = j;
+                }
+            }
+        }
+        offered
+    }
+
+    /// Columns of `n` samples from `seed`: few distinct values, so that
+    /// scores tie (exactly and within `RANK_TIE`) often.
+    #[allow(clippy::type_complexity)]
+    fn columns_of(
+        n: usize,
+        seed: u64,
+    ) -> (
+        Vec<bool>,
+        Vec<bool>,
+        Vec<f32>,
+        Vec<f32>,
+        Vec<f32>,
+        Vec<bool>,
+    ) {
+        let mut x = seed | 1;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let mut c = (vec![], vec![], vec![], vec![], vec![], vec![]);
+        for _ in 0..n {
+            let r = next();
+            c.0.push(r % 7 != 0);
+            c.1.push(r % 5 != 0);
+            let mu = match (r >> 8) % 9 {
+                0 => f32::NAN,
+                k => 0.1 * k as f32 + if (r >> 16) % 3 == 0 { 1e-10 } else { 0.0 },
+            };
+            c.2.push(mu);
+            c.3.push(1.0 + ((r >> 20) % 4) as f32);
+            c.4.push(if (r >> 24) % 11 == 0 {
+                f32::NAN
+            } else {
+                1.0 + ((r >> 28) % 5) as f32
+            });
+            c.5.push(c.0.last() == Some(&true) && (r >> 32) % 3 != 0);
+        }
+        c
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        /// The selection offers what sorting every candidate offered, in
+        /// the same order, whatever the number wanted (each pass of a
+        /// larger selection repeats none).
+        #[test]
+        fn selection_offers_what_sorting_offered(
+            n in 0usize..3000, seed in any::<u64>(), want in 0usize..40, stop in 0usize..200,
+        ) {
+            let (valid, bf, mu, ratio, size, acc) = columns_of(n, seed);
+            let cols = RankColumns {
+                valid: &valid,
+                branch_free: &bf,
+                min_transmission_rad: &mu,
+                link_ratio: &ratio,
+                size_ratio: &size,
+                acceptable: &acc,
+            };
+            let margin = |s: usize| ((s * 7919) % 13) as f64 - 3.0;
+            for rank_by in RankBy::ALL {
+                let want_all = reference(n, rank_by, &cols, &margin);
+                let mut got = Vec::new();
+                rank_samples(n, rank_by, &cols, &margin, want, &Control::new(), |s, m, score| {
+                    // A margin the ranking computed is the margin.
+                    assert!(m.is_none_or(|m| m == margin(s)));
+                    got.push((s, margin(s), score));
+                    got.len() < stop
+                })
+                .unwrap();
+                let k = want_all.len().min(stop.max(1));
+                prop_assert_eq!(&got[..], &want_all[..k], "{:?}", rank_by);
+            }
+        }
+    }
+
+    #[test]
+    fn separation_is_the_brute_force_test() {
+        let grid = Grid::from_bounds(-3.0, 5.0, -1.0, 2.0, 40, 17).unwrap();
+        for sep in [0.0, 0.01, 0.1, 0.35, 1.0, 7.0, 1e6] {
+            let mut apart = Separation::new(&grid, sep);
+            let mut taken: Vec<Point2<f64>> = Vec::new();
+            for k in 0..grid.len() {
+                let s = (k * 389) % grid.len();
+                let p = grid.point(s % 40, s / 40);
+                let brute = taken.iter().all(|q| (q - p).norm() >= sep);
+                assert_eq!(apart.is_clear(p), brute, "sep {sep} at {p}");
+                if brute {
+                    apart.add(p).unwrap();
+                    taken.push(p);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_cancelled_selection_stops() {
+        static STOP: core::sync::atomic::AtomicBool = core::sync::atomic::AtomicBool::new(true);
+        let (valid, bf, mu, ratio, size, acc) = columns_of(100_000, 3);
+        let cols = RankColumns {
+            valid: &valid,
+            branch_free: &bf,
+            min_transmission_rad: &mu,
+            link_ratio: &ratio,
+            size_ratio: &size,
+            acceptable: &acc,
+        };
+        let control = Control::new().with_cancel(&STOP);
+        for rank_by in RankBy::ALL {
+            let r = rank_samples(100_000, rank_by, &cols, &|_| 1.0, 5, &control, |_, _, _| {
+                true
+            });
+            assert!(
+                matches!(r, Err(crate::Error::Cancelled { .. })),
+                "{rank_by:?}"
+            );
+        }
+        let mut v: Vec<u32> = (0..100_000).rev().collect();
+        assert!(sort_polled(&mut v, |a, b| a.cmp(b), &control).is_err());
+        let mut v: Vec<u32> = (0..100_000).map(|k| (k * 7919) % 100_003).collect();
+        sort_polled(&mut v, |a, b| a.cmp(b), &Control::new()).unwrap();
+        assert!(v.windows(2).all(|w| w[0] <= w[1]));
+    }
+
+    #[test]
+    fn the_nearest_other_sample_is_the_transform() {
+        let grid = Grid::from_bounds(0.0, 7.0, 0.0, 1.5, 14, 9).unwrap();
+        let (_, flags, ..) = columns_of(grid.len(), 11);
+        let d = signed_distances_with(&grid, &flags, &Control::new()).unwrap();
+        for (k, &want) in d.iter().enumerate() {
+            let got = Nearest::new(&grid, &flags).get(k);
+            assert!(
+                (got - want).abs() <= 1e-12 * want.abs(),
+                "{k}: {got} vs {}",
+                d[k]
+            );
+        }
+        let all = vec![false; grid.len()];
+        assert_eq!(Nearest::new(&grid, &all).get(3), f64::NEG_INFINITY);
+    }
 
     #[test]
     fn distance_transform_is_exact() {
@@ -531,7 +1259,7 @@ mod tests {
         for k in [3, 30, 47, 69] {
             flags[k] = false;
         }
-        let d = signed_distances(&grid, &flags);
+        let d = signed_distances_with(&grid, &flags, &Control::new()).unwrap();
         for k in 0..grid.len() {
             let p = grid.point(k % 14, k / 14);
             let brute = (0..grid.len())
@@ -541,7 +1269,7 @@ mod tests {
             let want = if flags[k] { brute } else { -brute };
             assert!((d[k] - want).abs() < 1e-12, "{k}: {} vs {want}", d[k]);
         }
-        let all = signed_distances(&grid, &vec![true; grid.len()]);
+        let all = signed_distances_with(&grid, &vec![true; grid.len()], &Control::new()).unwrap();
         assert!(all.iter().all(|v| *v == f64::INFINITY));
     }
 }

@@ -442,11 +442,15 @@ struct Exact<'a> {
     region: &'a PivotRegion,
     prepared: Prepared,
     span: f64,
+    /// The search's cancel flag: a clearance test over the travel checks
+    /// it between intervals (one test can take long).
+    cancel: Option<&'a std::sync::atomic::AtomicBool>,
 }
 
 impl<'a> Exact<'a> {
-    fn new(task: &'a Task, options: &'a DesignOptions) -> Result<Self> {
+    fn new(task: &'a Task, options: &'a DesignOptions, control: &Control<'a>) -> Result<Self> {
         Ok(Exact {
+            cancel: control.cancel_flag(),
             task,
             limits: options.limits,
             rank_by: options.rank_by,
@@ -558,10 +562,10 @@ impl<'a> Exact<'a> {
         }
         // The motion's checks need a feasible motion.
         if v.motion_feasible() {
-            if !self.prepared.clearance_ok(&v.linkage) {
+            if !self.prepared.clearance_ok(&v.linkage, self.cancel) {
                 fail(&mut v, Limit::Obstacles, 1.0);
             }
-            if (v.fails == 0 || all) && !self.prepared.envelope_ok(&v.linkage) {
+            if (v.fails == 0 || all) && !self.prepared.envelope_ok(&v.linkage, self.cancel) {
                 fail(&mut v, Limit::Envelope, 1.0);
             }
         }
@@ -991,7 +995,7 @@ impl Task {
         cells: &[AtlasCell],
         control: &Control<'_>,
     ) -> Result<DesignReport> {
-        let exact = Exact::new(self, options)?;
+        let exact = Exact::new(self, options, control)?;
         let sep = options.separation(self);
         let region = &options.space.pivots;
         let mut report = self.report(options, Some(plan.search_box));
@@ -1230,7 +1234,7 @@ impl Task {
 
     /// Four poses: the coarse pair map, refined along the curve parameters.
     fn design_four(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
-        let exact = Exact::new(self, options)?;
+        let exact = Exact::new(self, options, control)?;
         let sep = options.separation(self);
         let four = FourPositions::new(self.poses())?;
         let length = four.parameter_length()?;
@@ -1323,7 +1327,7 @@ impl Task {
 
     /// Five poses: every ordered pair of Burmester points.
     fn design_five(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
-        let exact = Exact::new(self, options)?;
+        let exact = Exact::new(self, options, control)?;
         let sep = options.separation(self);
         let five = FivePositions::new(self.poses())?;
         let points = five.burmester_points();

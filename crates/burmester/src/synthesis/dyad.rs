@@ -199,7 +199,7 @@ impl Task {
     /// Checks that `dyad` is a dyad of this task: its moving pivot stays at
     /// one distance from its fixed pivot over the poses (within
     /// [`tolerance::DYAD`]), and it has a length.
-    fn check_dyad(&self, dyad: &Dyad, which: &'static str) -> Result<()> {
+    pub(crate) fn check_dyad(&self, dyad: &Dyad, which: &'static str) -> Result<()> {
         let d = self.moving_pivots(dyad).map(|p| (p - dyad.center).norm());
         let size = d.iter().copied().fold(0.0, f64::max);
         if !size.is_finite() {

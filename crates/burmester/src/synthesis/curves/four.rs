@@ -12,7 +12,8 @@ use super::motion::{Failure, Motion, cross3};
 use super::order::{CrankOrder, Drive, check_dyad, crank_angles, drive};
 use super::split::split_by;
 use super::{DEGENERATE_CURVE, ON_CURVE_TOLERANCE};
-use crate::error::Result;
+use crate::engine::Control;
+use crate::error::{Result, out_of_memory, try_push};
 use crate::geom::{Cubic, LocalFrame, Pose, Viewport, wrap_angle};
 use crate::linkage::{AngleInterval, AssemblyMode, FourBar, InputRange};
 use crate::synthesis::Dyad;
@@ -280,14 +281,25 @@ impl FourPositions {
             return Err(errors::pose_count("FourPositions::new", 4, poses.len()));
         }
         let motion = Motion::new(poses)?;
+        // Four poses of one angle are translations: every pole is at
+        // infinity and no dyad passes them (the curve's equation is a
+        // nonzero constant, or vanishes).
+        if poses[1..]
+            .iter()
+            .all(|p| wrap_angle(p.angle - poses[0].angle) == 0.0)
+        {
+            return Err(errors::all_translations());
+        }
         let curve = |form: &super::motion::LinearForm| -> Result<Cubic> {
             let (f, mag) = form.cubic([1, 2, 3]);
             let max = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             if !(max > DEGENERATE_CURVE * mag) {
-                let p = motion
-                    .dehomogenize(motion.pole(0, 1))
-                    .unwrap_or(motion.origin);
-                return Err(errors::common_pole(p));
+                // Rotations about one point: their common pole (never the
+                // poses' centroid, which is no pole).
+                return match motion.dehomogenize(motion.pole(0, 1)) {
+                    Some(p) => Err(errors::common_pole(p)),
+                    None => Err(errors::all_translations()),
+                };
             }
             Ok(Cubic::from_local(f, motion.origin, motion.scale))
         };
@@ -681,38 +693,67 @@ impl FourPositions {
     /// As [`FourPositions::beta2_range`]; [`crate::InvalidInput::CountOutOfRange`]
     /// when `samples` is 0 or more than ten million.
     pub fn dyad_runs(&self, samples: usize) -> Result<Vec<Vec<CurveDyad>>> {
-        if samples == 0 || samples > 10_000_000 {
-            return Err(errors::count("samples", samples, 1, 10_000_000));
+        self.dyad_runs_with(samples, &Control::new())
+    }
+
+    /// [`dyad_runs`](Self::dyad_runs) following `control`: the cancel flag
+    /// is checked every 1024 dyads (about a millisecond), progress counts them
+    /// (about twice `samples` in all, one pass per solution branch).
+    ///
+    /// # Errors
+    ///
+    /// As [`dyad_runs`](Self::dyad_runs); [`crate::Error::OutOfMemory`]
+    /// when the dyads cannot be allocated; [`crate::Error::Cancelled`].
+    pub fn dyad_runs_with(
+        &self,
+        samples: usize,
+        control: &Control<'_>,
+    ) -> Result<Vec<Vec<CurveDyad>>> {
+        const WHAT: &str = "the dyads along the curve";
+        if samples == 0 || samples > Self::MAX_SAMPLES {
+            return Err(errors::count("samples", samples, 1, Self::MAX_SAMPLES));
         }
-        let intervals: Vec<(f64, f64)> = match self.beta2_range()? {
-            InputRange::Full => vec![(-PI, PI)],
-            InputRange::Arc(a) => vec![(a.start, a.end)],
-            InputRange::TwoArcs(a, b) => vec![(a.start, a.end), (b.start, b.end)],
-        };
-        let total: f64 = intervals.iter().map(|(a, b)| b - a).sum();
+        let intervals = self.beta2_arcs()?;
+        let total_len: f64 = intervals.iter().map(|(a, b)| b - a).sum();
+        let counts: Vec<usize> = intervals
+            .iter()
+            .map(|&(lo, hi)| ((samples as f64 * (hi - lo) / total_len).round() as usize).max(2))
+            .collect();
+        let total = 2 * counts.iter().map(|n| n + 1).sum::<usize>();
+        let mut done = 0;
         let mut runs = Vec::new();
         for branch in AssemblyMode::BOTH {
-            for &(lo, hi) in &intervals {
-                let n = ((samples as f64 * (hi - lo) / total).round() as usize).max(2);
-                let mut run = Vec::with_capacity(n + 1);
+            for (&(lo, hi), &n) in intervals.iter().zip(&counts) {
+                let mut run = try_vec_of(WHAT, n + 1)?;
                 for i in 0..=n {
+                    if done % POLL_SAMPLES == 0 {
+                        control.check(done, total)?;
+                        control.report(done, total);
+                    }
+                    done += 1;
                     let beta = lo + (hi - lo) * (i as f64 / n as f64);
                     match self.dyad_at(beta, branch) {
                         Ok(d) => run.push(d),
                         Err(_) => {
                             if !run.is_empty() {
-                                runs.push(core::mem::take(&mut run));
+                                try_push(&mut runs, WHAT, core::mem::take(&mut run))?;
+                                run = try_vec_of(WHAT, n - i)?;
                             }
                         }
                     }
                 }
                 if !run.is_empty() {
-                    runs.push(run);
+                    try_push(&mut runs, WHAT, run)?;
                 }
             }
         }
+        control.report(total, total);
         Ok(runs)
     }
+
+    /// The most samples of [`dyad_runs`](Self::dyad_runs) and
+    /// [`parameter_samples`](Self::parameter_samples): ten million.
+    pub const MAX_SAMPLES: usize = 10_000_000;
 
     /// The arcs of `beta_2` over which the compatibility linkage closes
     /// ([`FourPositions::beta2_range`]) as `(start, end)`, in order.
@@ -788,14 +829,38 @@ impl FourPositions {
     /// As [`FourPositions::beta2_range`]; [`crate::InvalidInput::CountOutOfRange`]
     /// when `n` is 0 or more than ten million.
     pub fn parameter_samples(&self, n: usize) -> Result<Vec<Option<CurveDyad>>> {
-        if n == 0 || n > 10_000_000 {
-            return Err(errors::count("samples", n, 1, 10_000_000));
+        self.parameter_samples_with(n, &Control::new())
+    }
+
+    /// [`parameter_samples`](Self::parameter_samples) following `control`
+    /// (the cancel flag checked every 1024 samples, progress
+    /// counting them).
+    ///
+    /// # Errors
+    ///
+    /// As [`parameter_samples`](Self::parameter_samples);
+    /// [`crate::Error::OutOfMemory`] when the samples cannot be allocated;
+    /// [`crate::Error::Cancelled`].
+    pub fn parameter_samples_with(
+        &self,
+        n: usize,
+        control: &Control<'_>,
+    ) -> Result<Vec<Option<CurveDyad>>> {
+        if n == 0 || n > Self::MAX_SAMPLES {
+            return Err(errors::count("samples", n, 1, Self::MAX_SAMPLES));
         }
         let length = self.parameter_length()?;
         let step = length / n as f64;
-        Ok((0..n)
-            .map(|i| self.dyad_at_parameter((i as f64 + 0.5) * step).ok())
-            .collect())
+        let mut out = try_vec_of("the dyads of the curve parameter", n)?;
+        for i in 0..n {
+            if i % POLL_SAMPLES == 0 {
+                control.check(i, n)?;
+                control.report(i, n);
+            }
+            out.push(self.dyad_at_parameter((i as f64 + 0.5) * step).ok());
+        }
+        control.report(n, n);
+        Ok(out)
     }
 
     /// The four-bar of a driving and a driven dyad of the four poses, with
@@ -824,6 +889,19 @@ impl FourPositions {
         check_dyad(&self.motion, driven, "driven dyad")?;
         FilemonArcs::new(self, driven)
     }
+}
+
+/// Dyads computed between two checks of the cancel flag (and progress
+/// reports) by [`FourPositions::dyad_runs_with`] and
+/// [`FourPositions::parameter_samples_with`]: about a millisecond of work.
+pub(crate) const POLL_SAMPLES: usize = 1024;
+
+/// An empty vector with room for `n` values, reserved fallibly.
+fn try_vec_of<T>(what: &'static str, n: usize) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|_| out_of_memory::<T>(what, n))?;
+    Ok(v)
 }
 
 /// The runs of `polylines` of one crank order (`order` of a point, `None`

@@ -42,7 +42,7 @@ use crate::engine::{Control, for_rows};
 use crate::error::finite_point;
 use crate::tolerance;
 
-use crate::error::Result;
+use crate::error::{Result, try_collect};
 use crate::geom::FAR;
 use crate::geom::{Conic, Grid};
 use crate::synthesis::three::{Filemon, Method};
@@ -56,13 +56,14 @@ struct Local {
 }
 
 impl Local {
-    fn new(c: &Conic, grid: &Grid) -> Self {
+    fn new(c: &Conic, grid: &Grid) -> Result<Self> {
         let (o, s) = c.frame();
-        Local {
+        let xs = (0..grid.nx()).map(|i| (grid.x(i) - o.x) / s);
+        Ok(Local {
             oy: o.y,
             s,
-            xs: (0..grid.nx()).map(|i| (grid.x(i) - o.x) / s).collect(),
-        }
+            xs: try_collect("a row's abscissae", grid.nx(), xs)?,
+        })
     }
 
     #[inline]
@@ -215,16 +216,16 @@ pub(crate) struct BranchRows<'a> {
 }
 
 impl<'a> BranchRows<'a> {
-    pub(crate) fn new(filemon: &'a Filemon, grid: &'a Grid) -> Self {
-        let conics = filemon.conics().map(|[ca, cb]| {
-            let local = Local::new(&ca, grid);
-            ([ca, cb], local)
-        });
-        BranchRows {
+    pub(crate) fn new(filemon: &'a Filemon, grid: &'a Grid) -> Result<Self> {
+        let conics = match filemon.conics() {
+            Some([ca, cb]) => Some(([ca, cb], Local::new(&ca, grid)?)),
+            None => None,
+        };
+        Ok(BranchRows {
             filemon,
             grid,
             conics,
-        }
+        })
     }
 
     /// Whether some sample can be branch-free (not every circle point is
@@ -290,7 +291,7 @@ impl Filemon {
         };
         match method {
             Method::Conic => {
-                let local = Local::new(&ca, grid);
+                let local = Local::new(&ca, grid)?;
                 for_rows(grid.nx(), out, control, |j, row| {
                     if local.far_row(grid, j) {
                         self.far_row_map(grid, j, row);
@@ -325,7 +326,7 @@ impl Filemon {
             out.fill(false);
             return Ok(());
         };
-        let local = Local::new(&ca, grid);
+        let local = Local::new(&ca, grid)?;
         for_rows(grid.nx(), out, &Control::new(), |j, row| {
             if local.far_row(grid, j) {
                 self.far_row_map(grid, j, row);
@@ -420,7 +421,7 @@ impl Filemon {
                 row.fill(f32::NEG_INFINITY)
             });
         };
-        let local = Local::new(&ca, grid);
+        let local = Local::new(&ca, grid)?;
         for_rows(grid.nx(), out, control, |j, row| {
             if local.far_row(grid, j) {
                 for (i, o) in row.iter_mut().enumerate() {

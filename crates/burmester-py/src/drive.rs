@@ -1,0 +1,1134 @@
+//! `burmester.SixBar`, `burmester.DriveMap` and `burmester.Drive`, and the
+//! drive methods of `SynthesizedFourBar` (the core's `linkage::sixbar` and
+//! `design::drive`): a motor for a linkage whose input swings.
+
+use burmester::design::{
+    AttachmentSearch, Drive, DriveColumnsOut, DriveContext, DriveOptions, search_drives,
+};
+use burmester::{Constraints, DesignLimits, Grid, Point2, RankBy, SixBar, SixBarJoints, Task};
+use numpy::{PyArray2, PyArrayDyn, PyArrayMethods};
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+
+use crate::conv::{Count, FloatArray, PyPoint, Real, empty, pt, slice_mut, writer};
+use crate::design::{MapOptions, PyDesignLimits, readonly, same_column, set_readonly};
+use crate::errors::IntoPy;
+use crate::geom::{PyGrid, grid_arg, vec2};
+use crate::linkage::{PyFourBar, mode};
+use crate::run::{WATCH_MIN_SAMPLES, run};
+use crate::synthesis::{PySynthesizedFourBar, PyTask};
+
+type Xy = (f64, f64);
+
+/// The drive options of the Python keywords: the limits (a `DesignLimits`
+/// or its keywords), the swing margin and time ratio, the constraints.
+struct DriveArgs {
+    limits: DesignLimits,
+    options: DriveOptions,
+    constraints: Constraints,
+}
+
+impl DriveArgs {
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        limits: Option<PyDesignLimits>,
+        min_transmission_deg: Option<Real>,
+        max_link_ratio: Option<Real>,
+        swing_margin_deg: Real,
+        max_time_ratio: Option<Real>,
+        base_plate: Option<Vec<PyPoint>>,
+        obstacles: Option<Vec<Vec<PyPoint>>>,
+        link_width: Real,
+        travel_samples: Count,
+    ) -> PyResult<Self> {
+        let m = MapOptions::new(
+            limits,
+            min_transmission_deg,
+            max_link_ratio,
+            None,
+            base_plate,
+            obstacles,
+            link_width,
+            travel_samples,
+        )?;
+        let max_time_ratio = max_time_ratio.map_or(f64::INFINITY, |r| r.0);
+        let options = DriveOptions::from_degrees(swing_margin_deg.0, max_time_ratio).py()?;
+        Ok(DriveArgs {
+            limits: m.limits,
+            options,
+            constraints: m.constraints,
+        })
+    }
+
+    /// The context of `linkage` on `grid` with the attachment (default: the
+    /// input joint `A` at pose 1).
+    fn context(
+        &self,
+        linkage: &PySynthesizedFourBar,
+        attachment: Option<PyPoint>,
+        grid: &Grid,
+    ) -> PyResult<DriveContext> {
+        let l = &linkage.inner;
+        let e = attachment.map_or(l.driving.circle, |p| p.0);
+        DriveContext::new(l, e, grid, &self.limits, &self.options, &self.constraints).py()
+    }
+}
+
+/// A one-sample grid about `p` (the context of a single drive).
+fn point_grid(p: Point2<f64>) -> PyResult<Grid> {
+    let h = 1.0 + p.x.abs().max(p.y.abs());
+    Grid::from_bounds(p.x - h, p.x + h, p.y - h, p.y + h, 1, 1).py()
+}
+
+/// The constraints as plain data (for pickling).
+type ConstraintState = (Option<Vec<Xy>>, Vec<Vec<Xy>>, f64, usize);
+
+fn constraint_state(c: &Constraints) -> ConstraintState {
+    let pts = |v: &[Point2<f64>]| v.iter().map(|p| pt(*p)).collect::<Vec<_>>();
+    (
+        c.base_plate.as_deref().map(pts),
+        c.obstacles.iter().map(|o| pts(o)).collect(),
+        c.link_width,
+        c.travel_samples,
+    )
+}
+
+fn constraints_of(s: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize)) -> Constraints {
+    let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<_>>();
+    Constraints {
+        base_plate: s.0.map(pts),
+        obstacles: s.1.into_iter().map(pts).collect(),
+        link_width: s.2,
+        travel_samples: s.3,
+        envelope: None,
+    }
+}
+
+fn rank(s: &str) -> PyResult<RankBy> {
+    s.parse::<RankBy>().py()
+}
+
+/// A Watt II six-bar: a drive four-bar `D0 D E A0` turning the input link
+/// `A0 A E` of a motion four-bar `A0 A C C0`.
+#[pyclass(frozen, name = "SixBar", module = "burmester")]
+#[derive(Clone)]
+pub struct PySixBar {
+    pub(crate) inner: SixBar,
+}
+
+#[pymethods]
+impl PySixBar {
+    #[new]
+    #[pyo3(signature = (*, d0, d, e, a0, a, c, c0, p = None),
+        text_signature = "(*, d0, d, e, a0, a, c, c0, p=None)")]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        d0: PyPoint,
+        d: PyPoint,
+        e: PyPoint,
+        a0: PyPoint,
+        a: PyPoint,
+        c: PyPoint,
+        c0: PyPoint,
+        p: Option<PyPoint>,
+    ) -> PyResult<Self> {
+        let j = SixBarJoints {
+            drive_pivot: d0.0,
+            crank_joint: d.0,
+            attachment: e.0,
+            input_pivot: a0.0,
+            input_joint: a.0,
+            rocker_joint: c.0,
+            output_pivot: c0.0,
+            coupler_point: p.map_or(c.0, |q| q.0),
+        };
+        SixBar::from_joints(&j).map(|inner| PySixBar { inner }).py()
+    }
+
+    /// Rebuilds a six-bar from its parts (for pickling).
+    #[staticmethod]
+    fn _from_parts(
+        drive: &Bound<'_, PyFourBar>,
+        motion: &Bound<'_, PyFourBar>,
+        attachment_angle: f64,
+        drive_mode: &str,
+        motion_mode: &str,
+        coupler_point: PyPoint,
+        coupler_angle_offset: f64,
+    ) -> PyResult<Self> {
+        SixBar::new(
+            drive.get().inner,
+            motion.get().inner,
+            attachment_angle,
+            mode(drive_mode)?,
+            mode(motion_mode)?,
+        )
+        .and_then(|s| s.with_coupler_point(coupler_point.0.coords, coupler_angle_offset))
+        .map(|inner| PySixBar { inner })
+        .py()
+    }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let s = &self.inner;
+        let args = (
+            PyFourBar::from(*s.drive()),
+            PyFourBar::from(*s.motion()),
+            s.attachment_angle(),
+            s.drive_mode().as_str(),
+            s.motion_mode().as_str(),
+            vec2(s.coupler_point()),
+            s.coupler_angle_offset(),
+        )
+            .into_pyobject(py)?;
+        Ok((py.get_type::<PySixBar>().getattr("_from_parts")?, args))
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<PySixBar>()
+            .is_ok_and(|o| o.get().inner == self.inner)
+    }
+
+    #[getter]
+    fn drive(&self) -> PyFourBar {
+        (*self.inner.drive()).into()
+    }
+    #[getter]
+    fn motion(&self) -> PyFourBar {
+        (*self.inner.motion()).into()
+    }
+    #[getter]
+    fn drive_mode(&self) -> &'static str {
+        self.inner.drive_mode().as_str()
+    }
+    #[getter]
+    fn motion_mode(&self) -> &'static str {
+        self.inner.motion_mode().as_str()
+    }
+    #[getter]
+    fn attachment_angle(&self) -> f64 {
+        self.inner.attachment_angle()
+    }
+    #[getter]
+    fn coupler_point(&self) -> Xy {
+        vec2(self.inner.coupler_point())
+    }
+    #[getter]
+    fn coupler_angle_offset(&self) -> f64 {
+        self.inner.coupler_angle_offset()
+    }
+    #[getter]
+    fn drive_pivot(&self) -> Xy {
+        pt(self.inner.drive_pivot())
+    }
+    #[getter]
+    fn lengths(&self) -> [f64; 8] {
+        self.inner.lengths().links()
+    }
+    #[getter]
+    fn attachment_side(&self) -> f64 {
+        self.inner.lengths().attachment_side
+    }
+    #[getter]
+    fn link_ratio(&self) -> f64 {
+        self.inner.link_ratio()
+    }
+    #[getter]
+    fn size(&self) -> f64 {
+        self.inner.size()
+    }
+    #[getter]
+    fn drive_grashof(&self) -> &'static str {
+        self.inner.drive_grashof().as_str()
+    }
+    #[getter]
+    fn crank_turns_fully(&self) -> bool {
+        self.inner.crank_turns_fully()
+    }
+    #[getter]
+    fn limit_positions(&self) -> Option<Vec<(f64, f64, f64, bool)>> {
+        self.inner.limit_positions().map(|l| {
+            l.iter()
+                .map(|p| (p.crank_angle, p.rocker_angle, p.input_angle, p.extended))
+                .collect()
+        })
+    }
+    #[getter]
+    fn swing(&self) -> Option<Xy> {
+        self.inner.swing().map(|s| (s.start, s.end))
+    }
+    #[getter]
+    fn stroke_angle(&self) -> Option<f64> {
+        self.inner.stroke_angle()
+    }
+    #[getter]
+    fn time_ratio(&self) -> Option<f64> {
+        self.inner.time_ratio()
+    }
+    #[getter]
+    fn min_transmission_deg(&self) -> Option<Xy> {
+        self.inner
+            .min_transmission_angles()
+            .map(|[a, b]| (a.to_degrees(), b.to_degrees()))
+    }
+    #[getter]
+    fn dead_positions(&self) -> Vec<f64> {
+        self.inner.dead_positions()
+    }
+
+    /// `(psi, theta2, theta3, theta4)` at crank angle `phi`.
+    fn solve(&self, phi: Real) -> PyResult<(f64, f64, f64, f64)> {
+        let c = self.inner.solve(phi.0).py()?;
+        Ok((
+            c.rocker_angle(),
+            c.input_angle(),
+            c.motion.theta3,
+            c.motion.theta4,
+        ))
+    }
+    fn transmission_angles(&self, phi: Real) -> PyResult<Xy> {
+        let [a, b] = self.inner.solve(phi.0).py()?.transmission_angles();
+        Ok((a, b))
+    }
+    fn toggle(&self, phi: Real) -> PyResult<bool> {
+        Ok(self.inner.solve(phi.0).py()?.toggle())
+    }
+    #[allow(clippy::type_complexity)]
+    fn joints(&self, phi: Real) -> PyResult<[Xy; 8]> {
+        let j = self.inner.joints_at(phi.0).py()?;
+        Ok(j.to_array().map(pt))
+    }
+    fn pose_at(&self, phi: Real) -> PyResult<(f64, f64, f64)> {
+        let p = self.inner.pose_at(phi.0).py()?;
+        Ok((p.position.x, p.position.y, p.angle))
+    }
+    /// The coupler point over crank angles: `(xs, ys, valid)` arrays of
+    /// their shape (NaN and False where a loop does not close).
+    #[allow(clippy::type_complexity)]
+    fn coupler_path<'py>(
+        &self,
+        py: Python<'py>,
+        phis: FloatArray<'py>,
+    ) -> PyResult<(
+        Bound<'py, PyArrayDyn<f64>>,
+        Bound<'py, PyArrayDyn<f64>>,
+        Bound<'py, PyArrayDyn<bool>>,
+    )> {
+        let (flat, shape) = (phis.values(), phis.shape());
+        let (xs, ys, ok) = (
+            empty::<f64>(py, shape)?,
+            empty::<f64>(py, shape)?,
+            empty::<bool>(py, shape)?,
+        );
+        {
+            let (mut xw, mut yw, mut ow) = (writer(&xs)?, writer(&ys)?, writer(&ok)?);
+            let (xs_s, ys_s, ok_s) = (slice_mut(&mut xw), slice_mut(&mut yw), slice_mut(&mut ow));
+            let six = self.inner;
+            py.detach(|| {
+                for (((p, x), y), v) in six
+                    .coupler_path(flat.iter().copied())
+                    .zip(xs_s)
+                    .zip(ys_s)
+                    .zip(ok_s)
+                {
+                    (*x, *y, *v) = match p {
+                        Ok(p) => (p.x, p.y, true),
+                        Err(_) => (f64::NAN, f64::NAN, false),
+                    };
+                }
+            });
+        }
+        Ok((xs, ys, ok))
+    }
+    #[pyo3(signature = (start = Real(0.0), samples = Count(360)),
+        text_signature = "($self, start=0.0, samples=360)")]
+    fn crank_angles(&self, start: Real, samples: Count) -> PyResult<Vec<f64>> {
+        self.inner.crank_angles(start.0, samples.0).py()
+    }
+    fn crank_angles_for_input(&self, theta2: Real) -> Vec<f64> {
+        self.inner.crank_angles_for_input(theta2.0)
+    }
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+    fn __repr__(&self) -> String {
+        let l = self.inner.lengths();
+        format!(
+            "<SixBar drive {} (crank={:.6} coupler={:.6} rocker={:.6} ground={:.6}) turns_fully={}>",
+            self.inner.drive_grashof(),
+            l.crank,
+            l.drive_coupler,
+            l.rocker,
+            l.drive_ground,
+            if self.inner.crank_turns_fully() {
+                "True"
+            } else {
+                "False"
+            }
+        )
+    }
+}
+
+/// A drive for a linkage (from a drive map, a pivot or the closed form).
+#[pyclass(frozen, name = "Drive", module = "burmester")]
+#[derive(Clone)]
+pub struct PyDrive {
+    pub(crate) inner: Drive,
+    task: Task,
+    limits: DesignLimits,
+    options: DriveOptions,
+    constraints: Constraints,
+}
+
+impl PyDrive {
+    fn of(d: Drive, task: Task, ctx: &DriveContext) -> Self {
+        PyDrive {
+            inner: d,
+            task,
+            limits: *ctx.limits(),
+            options: *ctx.options(),
+            constraints: ctx.constraints().clone(),
+        }
+    }
+}
+
+fn bits(v: f64) -> u64 {
+    v.to_bits()
+}
+
+#[pymethods]
+impl PyDrive {
+    /// Rebuilds a drive from its state (for pickling).
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn _from_state(
+        linkage: PySynthesizedFourBar,
+        drive_pivot: PyPoint,
+        attachment: PyPoint,
+        limits: PyDesignLimits,
+        options: (f64, f64),
+        constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+        index: Option<(usize, usize)>,
+        margin: f64,
+        score: f64,
+        ranked_by: Option<&str>,
+    ) -> PyResult<Self> {
+        let options = DriveOptions {
+            swing_margin: options.0,
+            max_time_ratio: options.1,
+        };
+        let constraints = constraints_of(constraints);
+        let ctx = DriveContext::new(
+            &linkage.inner,
+            attachment.0,
+            &point_grid(drive_pivot.0)?,
+            &limits.inner,
+            &options,
+            &constraints,
+        )
+        .py()?;
+        let mut d = ctx.drive(drive_pivot.0).py()?;
+        d.index = index;
+        d.margin = margin;
+        d.score = score;
+        d.ranked_by = ranked_by.map(rank).transpose()?;
+        Ok(PyDrive::of(d, linkage.task(), &ctx))
+    }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let d = &self.inner;
+        let args = (
+            PySynthesizedFourBar::new(self.task, d.linkage),
+            pt(d.drive_pivot),
+            pt(d.attachment),
+            PyDesignLimits { inner: self.limits },
+            (self.options.swing_margin, self.options.max_time_ratio),
+            constraint_state(&self.constraints),
+            d.index,
+            d.margin,
+            d.score,
+            d.ranked_by.map(|r| r.as_str()),
+        )
+            .into_pyobject(py)?;
+        Ok((py.get_type::<PyDrive>().getattr("_from_state")?, args))
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other.cast::<PyDrive>().is_ok_and(|o| {
+            let (a, b) = (&o.get().inner, &self.inner);
+            PySynthesizedFourBar::new(o.get().task, a.linkage)
+                == PySynthesizedFourBar::new(self.task, b.linkage)
+                && a.sixbar == b.sixbar
+                && a.drive_pivot == b.drive_pivot
+                && a.attachment == b.attachment
+                && a.index == b.index
+                && bits(a.margin) == bits(b.margin)
+                && bits(a.score) == bits(b.score)
+                && a.ranked_by == b.ranked_by
+                && a.acceptable == b.acceptable
+                && o.get().limits == self.limits
+                && o.get().options == self.options
+                && o.get().constraints == self.constraints
+        })
+    }
+
+    #[getter]
+    fn sixbar(&self) -> PySixBar {
+        PySixBar {
+            inner: self.inner.sixbar,
+        }
+    }
+    #[getter]
+    fn linkage(&self) -> PySynthesizedFourBar {
+        PySynthesizedFourBar::new(self.task, self.inner.linkage)
+    }
+    #[getter]
+    fn task(&self) -> PyTask {
+        PyTask { inner: self.task }
+    }
+    #[getter]
+    fn drive_pivot(&self) -> Xy {
+        pt(self.inner.drive_pivot)
+    }
+    #[getter]
+    fn attachment(&self) -> Xy {
+        pt(self.inner.attachment)
+    }
+    #[getter]
+    fn pose_crank_angles(&self) -> Vec<f64> {
+        self.inner.pose_crank_angles.to_vec()
+    }
+    #[getter]
+    fn stroke_start(&self) -> f64 {
+        self.inner.stroke_start
+    }
+    #[getter]
+    fn direction(&self) -> &'static str {
+        self.inner.direction.as_str()
+    }
+    #[getter]
+    fn acceptable(&self) -> bool {
+        self.inner.acceptable
+    }
+    #[getter]
+    fn index(&self) -> Option<(usize, usize)> {
+        self.inner.index
+    }
+    #[getter]
+    fn margin(&self) -> f64 {
+        self.inner.margin
+    }
+    #[getter]
+    fn score(&self) -> f64 {
+        self.inner.score
+    }
+    #[getter]
+    fn ranked_by(&self) -> Option<&'static str> {
+        self.inner.ranked_by.map(|r| r.as_str())
+    }
+    #[getter]
+    fn limits(&self) -> PyDesignLimits {
+        PyDesignLimits { inner: self.limits }
+    }
+    #[getter]
+    fn swing_margin_deg(&self) -> f64 {
+        self.options.swing_margin.to_degrees()
+    }
+    #[getter]
+    fn min_transmission_deg(&self) -> f64 {
+        self.inner.figures.min_transmission.to_degrees()
+    }
+    #[getter]
+    fn drive_transmission_deg(&self) -> f64 {
+        self.inner.figures.drive_transmission.to_degrees()
+    }
+    #[getter]
+    fn motion_transmission_deg(&self) -> f64 {
+        self.inner.figures.motion_transmission.to_degrees()
+    }
+    #[getter]
+    fn time_ratio(&self) -> f64 {
+        self.inner.figures.time_ratio
+    }
+    #[getter]
+    fn link_ratio(&self) -> f64 {
+        self.inner.figures.link_ratio
+    }
+    #[getter]
+    fn size_ratio(&self) -> f64 {
+        self.inner.figures.size_ratio
+    }
+    #[getter]
+    fn swing(&self) -> Xy {
+        let [a, b] = self.inner.figures.swing;
+        (a, b)
+    }
+    #[getter]
+    fn stroke(&self) -> f64 {
+        self.inner.figures.stroke
+    }
+    #[pyo3(signature = (samples = Count(120)), text_signature = "($self, samples=120)")]
+    fn turn_angles(&self, samples: Count) -> PyResult<Vec<f64>> {
+        self.inner.turn_angles(samples.0).py()
+    }
+    fn pose_at(&self, phi: Real) -> PyResult<(f64, f64, f64)> {
+        self.sixbar().pose_at(phi)
+    }
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+    fn __repr__(&self) -> String {
+        let d = &self.inner;
+        let f = &d.figures;
+        format!(
+            "<Drive drive_pivot=({:.6}, {:.6}) min_transmission_deg={:.3} time_ratio={:.3} \
+             size_ratio={:.3} acceptable={}>",
+            d.drive_pivot.x,
+            d.drive_pivot.y,
+            f.min_transmission.to_degrees(),
+            f.time_ratio,
+            f.size_ratio,
+            if d.acceptable { "True" } else { "False" }
+        )
+    }
+}
+
+macro_rules! py_drive_map {
+    ($($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
+        /// A drive map (see the stub for the docs).
+        #[pyclass(frozen, name = "DriveMap", module = "burmester")]
+        pub struct PyDriveMap {
+            context: DriveContext,
+            task: Task,
+            $($(#[$doc])* #[pyo3(get)] $name: Py<PyArray2<$ty>>,)*
+        }
+
+        impl PyDriveMap {
+            /// A map whose columns NumPy allocates and `fill` writes.
+            fn filled(
+                py: Python<'_>,
+                context: DriveContext,
+                task: Task,
+                fill: impl FnOnce(&DriveContext, DriveColumnsOut<'_>) -> PyResult<()>,
+            ) -> PyResult<Self> {
+                let shape = [context.grid().ny(), context.grid().nx()];
+                $(
+                    let $name = empty::<$ty>(py, &shape)?
+                        .cast_into::<PyArray2<$ty>>()
+                        .map_err(PyErr::from)?;
+                )*
+                {
+                    $(let mut $name = $name.readwrite();)*
+                    fill(&context, DriveColumnsOut {
+                        $($name: $name.as_slice_mut()?,)*
+                    })?;
+                }
+                $(set_readonly($name.as_any())?;)*
+                Ok(PyDriveMap {
+                    context,
+                    task,
+                    $($name: $name.unbind(),)*
+                })
+            }
+
+            fn column_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+                let d = PyDict::new(py);
+                $(d.set_item(stringify!($name), self.$name.clone_ref(py))?;)*
+                Ok(d)
+            }
+
+            fn from_columns(
+                py: Python<'_>,
+                context: DriveContext,
+                task: Task,
+                columns: &Bound<'_, PyDict>,
+            ) -> PyResult<Self> {
+                let shape = (context.grid().ny(), context.grid().nx());
+                $(
+                    let $name: Vec<$ty> = {
+                        let item = columns.get_item(stringify!($name))?.ok_or_else(|| {
+                            PyTypeError::new_err(concat!("missing column ", stringify!($name)))
+                        })?;
+                        let a = item.cast_into::<PyArray2<$ty>>().map_err(PyErr::from)?;
+                        let ro = a.readonly();
+                        let v = ro.as_array();
+                        if v.shape() != [shape.0, shape.1] {
+                            return Err(PyTypeError::new_err(concat!(
+                                "column ", stringify!($name), " does not have the map's shape"
+                            )));
+                        }
+                        v.iter().copied().collect()
+                    };
+                )*
+                Ok(PyDriveMap {
+                    context,
+                    task,
+                    $($name: readonly(py, shape, $name)?,)*
+                })
+            }
+
+            fn same_columns(&self, py: Python<'_>, other: &Self) -> bool {
+                true $(&& same_column(py, &self.$name, &other.$name))*
+            }
+        }
+    };
+}
+
+burmester::drive_map_columns!(py_drive_map);
+
+impl PyDriveMap {
+    /// The `k` best drives, reading the NumPy columns in place.
+    fn ranked(
+        &self,
+        py: Python<'_>,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+    ) -> PyResult<Vec<PyDrive>> {
+        let valid = self.valid.bind(py).readonly();
+        let mt = self.min_transmission_rad.bind(py).readonly();
+        let lr = self.link_ratio.bind(py).readonly();
+        let sr = self.size_ratio.bind(py).readonly();
+        let acc = self.acceptable.bind(py).readonly();
+        let cols = burmester::design::DriveRankColumns {
+            valid: valid.as_slice()?,
+            min_transmission_rad: mt.as_slice()?,
+            link_ratio: lr.as_slice()?,
+            size_ratio: sr.as_slice()?,
+            acceptable: acc.as_slice()?,
+        };
+        let ctx = &self.context;
+        let drives = py
+            .detach(|| ctx.best_drives(k, min_separation, rank_by, cols))
+            .py()?;
+        Ok(drives
+            .into_iter()
+            .map(|d| PyDrive::of(d, self.task, ctx))
+            .collect())
+    }
+
+    fn sample(&self, j: Count, i: Count) -> PyResult<usize> {
+        PyGrid {
+            inner: *self.context.grid(),
+        }
+        .point(j, i)?;
+        Ok(j.0 * self.context.grid().nx() + i.0)
+    }
+}
+
+#[pymethods]
+impl PyDriveMap {
+    /// The names of the columns, in order.
+    #[classattr]
+    fn columns() -> Vec<&'static str> {
+        burmester::design::DriveColumns::NAMES.to_vec()
+    }
+    #[getter]
+    fn grid(&self) -> PyGrid {
+        PyGrid {
+            inner: *self.context.grid(),
+        }
+    }
+    #[getter]
+    fn extent(&self) -> (f64, f64, f64, f64) {
+        let v = self.context.grid().viewport();
+        (v.xmin, v.xmax, v.ymin, v.ymax)
+    }
+    #[getter]
+    fn shape(&self) -> (usize, usize) {
+        (self.context.grid().ny(), self.context.grid().nx())
+    }
+    #[getter]
+    fn linkage(&self) -> PySynthesizedFourBar {
+        PySynthesizedFourBar::new(self.task, *self.context.linkage())
+    }
+    #[getter]
+    fn attachment(&self) -> Xy {
+        pt(self.context.attachment())
+    }
+    #[getter]
+    fn attachment_ends(&self) -> (Xy, Xy) {
+        let [a, b] = self.context.attachment_ends();
+        (pt(a), pt(b))
+    }
+    #[getter]
+    fn swing(&self) -> Xy {
+        let [a, b] = self.context.swing();
+        (a, b)
+    }
+    #[getter]
+    fn motion_transmission_deg(&self) -> f64 {
+        self.context.motion_transmission().to_degrees()
+    }
+    #[getter]
+    fn limits(&self) -> PyDesignLimits {
+        PyDesignLimits {
+            inner: *self.context.limits(),
+        }
+    }
+    #[getter]
+    fn swing_margin_deg(&self) -> f64 {
+        self.context.options().swing_margin.to_degrees()
+    }
+    #[getter]
+    fn max_time_ratio(&self) -> f64 {
+        self.context.options().max_time_ratio
+    }
+    fn point(&self, j: Count, i: Count) -> PyResult<Xy> {
+        self.grid().point(j, i)
+    }
+    fn drive(&self, j: Count, i: Count) -> PyResult<PyDrive> {
+        let k = self.sample(j, i)?;
+        let d = self.context.drive_at(k).py()?;
+        Ok(PyDrive::of(d, self.task, &self.context))
+    }
+    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
+        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
+    fn best_drives(
+        &self,
+        py: Python<'_>,
+        k: Count,
+        min_separation: Option<Real>,
+        rank_by: &str,
+    ) -> PyResult<Vec<PyDrive>> {
+        self.ranked(py, k.0, min_separation.map(|r| r.0), rank(rank_by)?)
+    }
+    fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyDrive>> {
+        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
+    }
+    /// The closed-form drive of time ratio 1 in this map's context.
+    #[pyo3(signature = (beyond_first = true, drive_transmission_deg = None))]
+    fn classic_drive(
+        &self,
+        beyond_first: bool,
+        drive_transmission_deg: Option<Real>,
+    ) -> PyResult<PyDrive> {
+        let d = self
+            .context
+            .classic(
+                beyond_first,
+                drive_transmission_deg.map(|r| r.0.to_radians()),
+            )
+            .py()?;
+        Ok(PyDrive::of(d, self.task, &self.context))
+    }
+
+    /// Rebuilds a map from its state (for pickling).
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    fn _from_state(
+        py: Python<'_>,
+        linkage: PySynthesizedFourBar,
+        attachment: PyPoint,
+        grid: PyGrid,
+        limits: PyDesignLimits,
+        options: (f64, f64),
+        constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+        columns: &Bound<'_, PyDict>,
+    ) -> PyResult<Self> {
+        let options = DriveOptions {
+            swing_margin: options.0,
+            max_time_ratio: options.1,
+        };
+        let context = DriveContext::new(
+            &linkage.inner,
+            attachment.0,
+            &grid.inner,
+            &limits.inner,
+            &options,
+            &constraints_of(constraints),
+        )
+        .py()?;
+        Self::from_columns(py, context, linkage.task(), columns)
+    }
+
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let c = &self.context;
+        let args = (
+            self.linkage(),
+            pt(c.attachment()),
+            self.grid(),
+            self.limits(),
+            (c.options().swing_margin, c.options().max_time_ratio),
+            constraint_state(c.constraints()),
+            self.column_dict(py)?,
+        )
+            .into_pyobject(py)?;
+        Ok((py.get_type::<PyDriveMap>().getattr("_from_state")?, args))
+    }
+
+    fn __eq__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> bool {
+        other.cast::<PyDriveMap>().is_ok_and(|o| {
+            o.get().context == self.context
+                && o.get().task == self.task
+                && self.same_columns(py, o.get())
+        })
+    }
+
+    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::display::repr_png(slf.as_any())
+    }
+
+    fn __repr__(&self) -> String {
+        let (ny, nx) = self.shape();
+        format!("<DriveMap drive pivots, {ny} x {nx}>")
+    }
+}
+
+// The drive methods of `SynthesizedFourBar` (its #[pymethods] block in
+// `synthesis.rs` delegates to these).
+
+/// `SynthesizedFourBar.drive_map` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn drive_map(
+    this: &PySynthesizedFourBar,
+    py: Python<'_>,
+    grid: &Bound<'_, PyTuple>,
+    attachment: Option<PyPoint>,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Option<Real>,
+    base_plate: Option<Vec<PyPoint>>,
+    obstacles: Option<Vec<Vec<PyPoint>>>,
+    link_width: Real,
+    travel_samples: Count,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyDriveMap> {
+    let (g, used) = grid_arg(grid)?;
+    if used != grid.len() {
+        return Err(PyTypeError::new_err(
+            "drive_map takes a grid (or its six numbers); the rest goes by keyword",
+        ));
+    }
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        base_plate,
+        obstacles,
+        link_width,
+        travel_samples,
+    )?;
+    let context = args.context(this, attachment, &g)?;
+    let watch = g.len() >= WATCH_MIN_SAMPLES / 16;
+    PyDriveMap::filled(py, context, this.task(), |ctx, out| {
+        run(py, watch, progress, None, |control| {
+            ctx.map_into(out, control)
+        })
+    })
+}
+
+/// `SynthesizedFourBar.drive` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn drive(
+    this: &PySynthesizedFourBar,
+    drive_pivot: PyPoint,
+    attachment: Option<PyPoint>,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Option<Real>,
+    base_plate: Option<Vec<PyPoint>>,
+    obstacles: Option<Vec<Vec<PyPoint>>>,
+    link_width: Real,
+    travel_samples: Count,
+) -> PyResult<PyDrive> {
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        base_plate,
+        obstacles,
+        link_width,
+        travel_samples,
+    )?;
+    let ctx = args.context(this, attachment, &point_grid(drive_pivot.0)?)?;
+    let d = ctx.drive(drive_pivot.0).py()?;
+    Ok(PyDrive::of(d, this.task(), &ctx))
+}
+
+/// `SynthesizedFourBar.classic_drive` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn classic_drive(
+    this: &PySynthesizedFourBar,
+    attachment: Option<PyPoint>,
+    beyond_first: bool,
+    drive_transmission_deg: Option<Real>,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Option<Real>,
+) -> PyResult<PyDrive> {
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        None,
+        None,
+        Real(0.0),
+        Count(Constraints::DEFAULT_TRAVEL_SAMPLES),
+    )?;
+    let a0 = this.inner.driving.center;
+    let ctx = args.context(this, attachment, &point_grid(a0)?)?;
+    let d = ctx
+        .classic(
+            beyond_first,
+            drive_transmission_deg.map(|r| r.0.to_radians()),
+        )
+        .py()?;
+    Ok(PyDrive::of(d, this.task(), &ctx))
+}
+
+/// `SynthesizedFourBar.drive_search` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn drive_search(
+    this: &PySynthesizedFourBar,
+    py: Python<'_>,
+    ratios: Option<Vec<Real>>,
+    angles_deg: Option<Vec<Real>>,
+    reach: Real,
+    samples: Count,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Option<Real>,
+    base_plate: Option<Vec<PyPoint>>,
+    obstacles: Option<Vec<Vec<PyPoint>>>,
+    link_width: Real,
+    travel_samples: Count,
+    rank_by: &str,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Vec<PyDrive>> {
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        base_plate,
+        obstacles,
+        link_width,
+        travel_samples,
+    )?;
+    let search = search_of(ratios, angles_deg, reach, samples);
+    let (l, rank_by) = (this.inner, rank(rank_by)?);
+    let found = run(py, true, progress, None, |control| {
+        search_drives(
+            &l,
+            &search,
+            &args.limits,
+            &args.options,
+            &args.constraints,
+            rank_by,
+            control,
+        )
+    })?;
+    let ctx = args.context(this, None, &point_grid(l.driving.center)?)?;
+    Ok(found
+        .drives
+        .into_iter()
+        .map(|d| PyDrive::of(d, this.task(), &ctx))
+        .collect())
+}
+
+/// `SynthesizedFourBar.best_drive` (the binding's method delegates here).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn best_drive(
+    this: &PySynthesizedFourBar,
+    py: Python<'_>,
+    limits: Option<PyDesignLimits>,
+    min_transmission_deg: Option<Real>,
+    max_link_ratio: Option<Real>,
+    swing_margin_deg: Real,
+    max_time_ratio: Option<Real>,
+    base_plate: Option<Vec<PyPoint>>,
+    obstacles: Option<Vec<Vec<PyPoint>>>,
+    link_width: Real,
+    travel_samples: Count,
+    rank_by: &str,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyDrive> {
+    let args = DriveArgs::new(
+        limits,
+        min_transmission_deg,
+        max_link_ratio,
+        swing_margin_deg,
+        max_time_ratio,
+        base_plate,
+        obstacles,
+        link_width,
+        travel_samples,
+    )?;
+    let (l, rank_by) = (this.inner, rank(rank_by)?);
+    let d = run(py, true, progress, None, |control| {
+        burmester::design::best_drive(
+            &l,
+            &args.limits,
+            &args.options,
+            &args.constraints,
+            rank_by,
+            control,
+        )
+    })?;
+    let ctx = args.context(
+        this,
+        Some(PyPoint(d.attachment)),
+        &point_grid(d.drive_pivot)?,
+    )?;
+    Ok(PyDrive::of(d, this.task(), &ctx))
+}
+
+/// The attachment search of the Python keywords (the core checks it).
+fn search_of(
+    ratios: Option<Vec<Real>>,
+    angles_deg: Option<Vec<Real>>,
+    reach: Real,
+    samples: Count,
+) -> AttachmentSearch {
+    let d = AttachmentSearch::default();
+    AttachmentSearch {
+        ratios: ratios.map_or(d.ratios, |v| v.into_iter().map(|r| r.0).collect()),
+        angles: angles_deg.map_or(d.angles, |v| {
+            v.into_iter().map(|r| r.0.to_radians()).collect()
+        }),
+        reach: reach.0,
+        samples: samples.0,
+    }
+}
+
+/// `burmester.unit_time_ratio_crank_rocker`: the closed form.
+#[pyfunction]
+pub(crate) fn unit_time_ratio_crank_rocker(
+    rocker: Real,
+    swing_deg: Real,
+    min_transmission_deg: Real,
+) -> PyResult<(f64, f64, f64, f64)> {
+    let d = burmester::design::CrankRockerDesign::unit_time_ratio(
+        rocker.0,
+        swing_deg.0.to_radians(),
+        min_transmission_deg.0.to_radians(),
+    )
+    .py()?;
+    Ok((d.ground, d.crank, d.coupler, d.rocker))
+}
