@@ -422,6 +422,11 @@ class FourBar:
     def link_ratio(self) -> float:
         """Ratio of the longest to the shortest link."""
     @property
+    def grashof_margin(self) -> float:
+        """How far the linkage is from the Grashof change point,
+        ``|s + l - p - q| / (s + l + p + q)`` in [0, 1) (see
+        :attr:`LinkageFigures.grashof_margin`)."""
+    @property
     def grashof(self) -> GrashofType:
         """Grashof type, the input being the crank link: ``"crank-rocker"``,
         ``"double-crank"``, ``"rocker-crank"``, ``"double-rocker"``
@@ -512,6 +517,18 @@ class LinkageFigures:
     @property
     def link_ratio(self) -> float:
         """Longest over shortest link."""
+    @property
+    def grashof_margin(self) -> float:
+        """How far the linkage is from the Grashof change point, as a part of
+        the links' total length: ``|s + l - p - q| / (s + l + p + q)`` in
+        [0, 1) (``s`` the shortest link, ``l`` the longest). Zero at a change
+        point (every kite, two pairs of equal adjacent links, is one), where
+        the type flips with the smallest error of a link and a fully turning
+        input passes the flat position where the linkage can switch
+        circuits. The type holds for every set of link errors adding up to
+        less than the margin times the links' total length (each link off by
+        less than the margin times its own length);
+        :attr:`DesignLimits.min_grashof_margin` is the limit on it."""
     @property
     def branch_free(self) -> bool:
         """Every pose in one assembly mode (no branch defect, no toggle at a pose)."""
@@ -1386,7 +1403,13 @@ class DesignLimits:
     not); ``max_size_ratio``: the largest linkage relative to the task (its
     size, the total length of its members, over :attr:`Task.span`), at
     least 1 (default ``math.inf``: no limit); ``max_link_length``: the
-    longest link in the task's units, above 0 (default ``math.inf``).
+    longest link in the task's units, above 0 (default ``math.inf``);
+    ``min_grashof_margin``: the smallest distance from the Grashof change
+    point, :attr:`LinkageFigures.grashof_margin`, in [0, 1] (default 0.01:
+    every link may be off by 1% of its length, 1 mm on a 100 mm link,
+    without the type flipping; 0: no limit). A change-point linkage (every
+    kite) is one no designer builds: the balanced score's even links would
+    otherwise pull the best designs onto it.
     Raises :class:`InvalidInputError` (``cause == "outside_range"``, with
     ``name``, ``value``, ``min``, ``max``) for a limit out of range.
     """
@@ -1398,6 +1421,7 @@ class DesignLimits:
         input: InputRequirement = "any",
         max_size_ratio: float = ...,
         max_link_length: float = ...,
+        min_grashof_margin: float = 0.01,
     ) -> DesignLimits: ...
     @property
     def min_transmission_deg(self) -> float:
@@ -1414,8 +1438,11 @@ class DesignLimits:
     @property
     def max_link_length(self) -> float:
         """The longest acceptable link, task units (``math.inf``: no limit)."""
+    @property
+    def min_grashof_margin(self) -> float:
+        """The smallest acceptable Grashof margin (0: no limit)."""
     def __eq__(self, other: object, /) -> bool: ...
-    def __getnewargs__(self) -> Tuple[float, float, str, float, float]: ...
+    def __getnewargs__(self) -> Tuple[float, float, str, float, float, float]: ...
 
 @final
 class Pivot:
@@ -1801,8 +1828,8 @@ def _atlas_tile(
 
 FoundBy = Literal["pivots", "parameters", "burmester"]
 LimitName = Literal[
-    "branch_defect", "order", "transmission", "link_ratio", "input", "size_ratio",
-    "link_length", "pivot_region", "obstacles", "envelope",
+    "branch_defect", "order", "transmission", "link_ratio", "input", "grashof_margin",
+    "size_ratio", "link_length", "pivot_region", "obstacles", "envelope",
 ]
 
 @final
