@@ -2059,7 +2059,7 @@ def _design(
     starts: int = ...,
     max_iterations: int = ...,
     input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
-    swing_margin_deg: float = 0.0,
+    swing_margin_deg: float = ...,
     max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
@@ -2081,7 +2081,7 @@ def _design_plan(
     starts: int = ...,
     max_iterations: int = ...,
     input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
-    swing_margin_deg: float = 0.0,
+    swing_margin_deg: float = ...,
     max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> dict[str, Any]:
@@ -2103,7 +2103,7 @@ def _design_from_atlas(
     starts: int = ...,
     max_iterations: int = ...,
     input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
-    swing_margin_deg: float = 0.0,
+    swing_margin_deg: float = ...,
     max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
