@@ -222,7 +222,7 @@ def test_library_writers_replace_whole_files(tmp_path):
     from burmester import export
 
     sfb = spec.filemon().four_bar((-3.0, 4.0))
-    export.linkage(sfb, tmp_path / "l.svg", task=spec.task())
+    export.linkage(sfb, tmp_path / "l.svg", task=spec.task)
     assert (tmp_path / "l.svg").read_text().startswith("<?xml")
     assert leftovers(tmp_path) == ["l.svg", "task.toml"]
 

@@ -240,6 +240,9 @@ pub(crate) fn run_blocks_with<R: Rows, S>(
     f: impl Fn(&mut S, usize, R, usize) + Sync,
 ) -> Result<()> {
     let blocks = blocks_of(nx, ny, data)?;
+    // The total from the start: an interrupt before the first block ends
+    // can say how far the work got.
+    control.report(0, ny);
     let done = AtomicUsize::new(0);
     let failed: std::sync::Mutex<Option<Error>> = std::sync::Mutex::new(None);
     blocks.into_par_iter().for_each_init(
@@ -294,6 +297,9 @@ pub(crate) fn run_blocks_polled<R: Rows>(
     f: impl Fn(usize, R, &Control<'_>) -> bool + Sync,
 ) -> Result<()> {
     let blocks = blocks_of(nx, ny, data)?;
+    // The total from the start: an interrupt before the first block ends
+    // can say how far the work got.
+    control.report(0, ny);
     let done = AtomicUsize::new(0);
     blocks.into_par_iter().for_each(|(j0, block, n)| {
         let mut rest = block;
