@@ -40,7 +40,7 @@
 //! default [`DesignOptions::DEFAULT_SEPARATION`] task sizes) of a better
 //! one's is dropped, so the list offers different linkages, not
 //! neighbours of one. Scores within
-//! [`tolerance::RANK_TIE`](crate::tolerance::RANK_TIE) tie and go to the
+//! [`tolerance::RANK_TIE`] tie and go to the
 //! smaller linkage.
 //!
 //! # With a motor
