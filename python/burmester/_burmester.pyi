@@ -1936,6 +1936,14 @@ class Design:
     @property
     def evaluations(self) -> int:
         """Linkages its refinement judged."""
+    @property
+    def drive(self) -> Optional[Drive]:
+        """With a motor (``design(..., input="motor")``): the drive added to
+        a linkage whose input swings, the six-bar a motor turns through the
+        poses (found under the report's limits, ranking and space: the
+        drive's crank pivot on the pivot region, its links clear of the
+        obstacles over a full crank turn); None without a motor, or when the
+        input turns fully (the motor turns it directly)."""
     @staticmethod
     def _from_state(
         task: Task,
@@ -1949,6 +1957,7 @@ class Design:
         refined: Sequence[float],
         coarse_score: float,
         evaluations: int,
+        drive: Optional[Drive] = None,
     ) -> Design:
         """Rebuilds a design from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2039,6 +2048,21 @@ class DesignReport:
     @property
     def evaluations(self) -> int:
         """Linkages the refinements judged."""
+    @property
+    def undriven(self) -> int:
+        """With a motor: candidates passed over because no drive for them
+        was acceptable (each would otherwise have been a design); 0
+        without a motor."""
+    @property
+    def motor(self) -> bool:
+        """Whether the designs were searched with a motor
+        (``input="motor"``)."""
+    @property
+    def swing_margin_deg(self) -> Optional[float]:
+        """The motor's swing margin, degrees (None without a motor)."""
+    @property
+    def max_time_ratio(self) -> Optional[float]:
+        """The motor's largest time ratio (None without a motor)."""
     def __len__(self) -> int: ...
     def __getitem__(self, index: int, /) -> Design: ...
     def __iter__(self) -> Iterator[Design]: ...
@@ -2054,6 +2078,8 @@ class DesignReport:
         counts: Tuple[int, int, int, int],
         rejections: Sequence[Tuple[str, int]],
         near_misses: Sequence[NearMiss],
+        motor: Optional[Tuple[float, float]] = None,
+        undriven: int = 0,
     ) -> DesignReport:
         """Rebuilds a report from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2072,6 +2098,9 @@ def _design(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
+    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    swing_margin_deg: float = ...,
+    max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The design search in this process (see :func:`burmester.design`,
@@ -2091,6 +2120,9 @@ def _design_plan(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
+    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    swing_margin_deg: float = ...,
+    max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> dict[str, Any]:
     """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
@@ -2110,6 +2142,9 @@ def _design_from_atlas(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
+    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    swing_margin_deg: float = ...,
+    max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere

@@ -1049,10 +1049,59 @@ def design_document(spec: TaskSpec, report: burmester.DesignReport) -> Dict[str,
     }
 
 
+def motor_table(report: burmester.DesignReport) -> str:
+    """The motor section of ``burmester design --motor``: for each design its
+    drive (:func:`burmester.drives.drive_table`) or that its input turns
+    fully, and the designs passed over for want of a drive."""
+    from burmester import drives
+
+    ratio = report.max_time_ratio
+    lines = [
+        f"With a motor (swing margin {report.swing_margin_deg or 0.0:g} deg, time ratio "
+        f"{'no limit' if ratio is None or math.isinf(ratio) else f'<= {ratio:g}'}):"
+    ]
+    for k, d in enumerate(report, start=1):
+        if d.drive is None:
+            lines.append(f"Design {k}: its input turns fully: the motor turns it at A0 "
+                         f"{_fmt_point(d.driving_pivot)} directly.")
+        else:
+            lines.append(drives.drive_table(d.drive, f"design {k}"))
+    if report.undriven:
+        lines.append(f"{report.undriven} candidate design(s) passed over: no acceptable drive for them under "
+                     "these limits and this space.")
+    return "\n".join(lines)
+
+
+def _motor_document(doc: Dict[str, Any], report: burmester.DesignReport) -> Dict[str, Any]:
+    """``doc`` (:func:`design_document`) with each design's ``"drive"``
+    (None where the input turns fully) and the motor's options."""
+    from burmester import drives
+
+    for entry, d in zip(doc["designs"], report):
+        entry["drive"] = drives.drive_record(d.drive) if d.drive is not None else None
+    ratio = report.max_time_ratio
+    doc["motor"] = {
+        "swing_margin_deg": report.swing_margin_deg,
+        "max_time_ratio": None if ratio is None or math.isinf(ratio) else ratio,
+        "undriven": report.undriven,
+    }
+    return doc
+
+
 def cmd_design(args: argparse.Namespace) -> int:
     """``burmester design``: the best linkages for the task's poses inside its
-    space, both fixed pivots searched (three poses), drawn with ``-o``."""
+    space, both fixed pivots searched (three poses), drawn with ``-o``; with
+    ``--motor`` each design whose input swings carries its drive (the
+    six-bar), which ``-o`` then draws, animates or exports."""
     spec = _with_units(_load(args.task), args)  # the task file's errors first
+    margin = args.margin if args.margin is not None else 0.0
+    max_time_ratio = args.max_time_ratio if args.max_time_ratio is not None else math.inf
+    if not args.motor and (args.margin is not None or args.max_time_ratio is not None):
+        raise UsageError("--margin and --max-time-ratio set the motor's drive: give --motor with them")
+    if not 0.0 <= margin < 90.0:
+        raise UsageError(f"--margin must be from 0 to 90 degrees, got {margin:g}")
+    if not max_time_ratio >= 1.0:
+        raise UsageError(f"--max-time-ratio must be at least 1, got {max_time_ratio:g}")
     out: Optional[str] = args.output
     export: Optional[ModuleType] = None
     plot: Optional[ModuleType] = None
@@ -1077,14 +1126,19 @@ def cmd_design(args: argparse.Namespace) -> int:
            and len(spec.poses) < 5 else None)
     try:
         report = burmester.design(task, space=spec.space, limits=spec.limits, rank_by=args.rank_by,
-                                  top=args.top, client=client, progress=bar)
+                                  top=args.top, client=client, progress=bar,
+                                  input="motor" if args.motor else None, swing_margin_deg=margin,
+                                  max_time_ratio=max_time_ratio)
     finally:
         if client is not None:
             client.close()
     if args.json:
-        print(json.dumps(design_document(spec, report), indent=2))
+        doc = design_document(spec, report)
+        print(json.dumps(_motor_document(doc, report) if report.motor else doc, indent=2))
     else:
         print(design_table(spec, report))
+        if report.motor:
+            print(motor_table(report))
     if out is None:
         return 0
     said = sys.stderr if args.json else sys.stdout
@@ -1092,6 +1146,10 @@ def cmd_design(args: argparse.Namespace) -> int:
         print(f"nothing drawn: no linkage fits, so {out} was not written", file=said)
         return 0
     sfb = report[0].linkage
+    drive = report[0].drive
+    if drive is not None:
+        _draw_design_drive(args, drive, out, export, plot, units, animated)
+        return 0
     if export is not None:
         _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
                    units=units)
@@ -1116,6 +1174,32 @@ def cmd_design(args: argparse.Namespace) -> int:
     print(f"wrote {out}: the best design, {f.grashof}, {report[0].size_ratio:.1f}x the task's size, "
           f"transmission >= {f.min_transmission_deg:.1f} deg: {lengths}", file=said)
     return 0
+
+
+def _draw_design_drive(args: argparse.Namespace, drive: burmester.Drive, out: str, export: Optional[ModuleType],
+                       plot: Optional[ModuleType], units: str, animated: bool) -> None:
+    """``design --motor -o``: the best design's six-bar drawn (at its poses),
+    animated over a crank turn or exported, as ``burmester drive`` does."""
+    if export is not None:
+        _write_cad(export.sixbar, out, args.force, drive, out, turn_samples=args.travel or 0, units=units)
+    elif animated:
+        assert plot is not None
+        try:
+            _written(out, args.force,
+                     lambda tmp: plot.animate_sixbar(drive, tmp, frames=args.frames or 120, fps=args.fps or 24))
+        except RuntimeError as e:
+            raise UsageError(str(e)) from None
+        import matplotlib.pyplot as plt
+
+        plt.close("all")
+    else:
+        assert plot is not None
+        ax = plot.sixbar(drive)
+        ax.set_title(f"best design with its motor drive ({drive.ranked_by or 'drive'})")
+        _save(ax.figure, out, _picture_dpi(args), args.force)
+    print(f"wrote {out}: the best design's six-bar, motor crank at {_fmt_point(drive.drive_pivot)}, "
+          f"transmission >= {drive.min_transmission_deg:.1f} deg over a crank turn, time ratio "
+          f"{drive.time_ratio:.3f}", file=sys.stderr if args.json else sys.stdout)
 
 
 #: The finest ``solve --step``: 36,000 rows over a turn.
@@ -1435,6 +1519,16 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--scheduler", metavar="ADDRESS", default=None,
                    help="run the three-pose coarse pass on a Dask cluster (tcp://host:8786); needs burmester[dask]")
+    p.add_argument("--motor", action="store_true",
+                   help="every design turned by a motor: one whose input swings gets the best added crank-rocker "
+                   "(the six-bar; the limits and the space apply to it too; -o then draws, animates over a "
+                   "crank turn (--frames per turn, default 120) or exports the six-bar, --travel N giving N "
+                   "crank angles of a CAD export); one "
+                   "without an acceptable drive is passed over")
+    p.add_argument("--margin", type=_finite, default=None, metavar="DEG",
+                   help="with --motor: swing the input this much beyond the first and last pose (default: 0)")
+    p.add_argument("--max-time-ratio", type=_finite, default=None, metavar="R",
+                   help="with --motor: largest acceptable time ratio of the strokes (default: no limit)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_design)
 

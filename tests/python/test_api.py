@@ -215,10 +215,11 @@ PROPERTIES = {
                          "score size_ratio",
     burmester.Space: "region pivot_box pivot_polygon obstacles link_width envelope travel_samples",
     burmester.Design: "linkage figures score size_ratio ranked_by driving_pivot driven_pivot found_by coarse refined "
-                      "coarse_score evaluations",
+                      "coarse_score evaluations drive",
     burmester.NearMiss: "linkage figures size_ratio misses shortfall",
     burmester.DesignReport: "task designs near_misses rejections main_rejection census limits space rank_by "
-                            "min_separation search_box coarse_candidates coarse_acceptable evaluations",
+                            "min_separation search_box coarse_candidates coarse_acceptable evaluations "
+                            "undriven motor swing_margin_deg max_time_ratio",
     burmester.PairMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                        "size_ratio acceptable grid extent shape driving_dyads driven_dyads task limits",
     burmester.Pair: "driving driven index linkage figures margin size_ratio score ranked_by",

@@ -43,6 +43,30 @@
 //! [`tolerance::RANK_TIE`] tie and go to the
 //! smaller linkage.
 //!
+//! # With a motor
+//!
+//! With [`DesignOptions::motor`] every design returned can be turned by a
+//! motor. A design whose input turns fully
+//! ([`LinkageFigures::input_full`](crate::LinkageFigures::input_full)) is
+//! driven at its input directly ([`Design::drive`] `None`); one whose input
+//! swings gets the best drive of [`best_drive`](crate::design::best_drive)
+//! ([`Design::drive`]): a crank-rocker added to its input link (the Watt II
+//! six-bar), under the same limits (their input requirement aside: the
+//! drive's crank always turns fully; the transmission angle for both loops
+//! over a full crank turn, the link ratio, the size ratio and the longest
+//! link for the whole six-bar), the motor's [`DriveOptions`] (swing margin,
+//! time ratio), the same ranking and the space's constraints without the
+//! envelope: the drive dyad is checked against the obstacles and the base
+//! plate (the pivot region) over the whole crank turn, while the envelope
+//! applies to the four-bar over its travel, as without a motor. A design
+//! for which no drive is acceptable is passed over
+//! ([`DesignReport::undriven`] counts them) and the next distinct
+//! candidate is taken, so up to `top` designs are still returned; the
+//! drives are searched lazily, in rank order, only for candidates that
+//! pass the separation test. The limits' input requirement still filters
+//! the four-bars: with [`InputRequirement::Crank`] no drive is ever
+//! needed, with [`InputRequirement::Rocker`] every design gets one.
+//!
 //! # When nothing fits
 //!
 //! The report has no designs, never an error and never a silent
@@ -62,6 +86,7 @@ use rayon::prelude::*;
 
 use crate::design::atlas::check_scored;
 use crate::design::constraints::Prepared;
+use crate::design::drive::{Drive, DriveOptions};
 use crate::design::rank::tie_order;
 use crate::design::space::{PivotRegion, Space};
 use crate::design::{AtlasCell, DesignLimits, InputRequirement, RankBy};
@@ -72,6 +97,8 @@ use crate::linkage::Direction;
 use crate::synthesis::curves::{FivePositions, FourPositions};
 use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
 use crate::tolerance;
+
+mod motor;
 
 /// What to search for and how finely (see the [module docs](self)).
 #[derive(Debug, Clone, PartialEq)]
@@ -107,6 +134,10 @@ pub struct DesignOptions {
     /// Nelder–Mead iterations per refinement, all rounds together (1 to
     /// [`DesignOptions::MAX_ITERATIONS`], default 3000).
     pub max_iterations: usize,
+    /// With `Some`, every design can be turned by a motor: one whose input
+    /// swings gets the best drive under these options ([`Design::drive`];
+    /// module docs, "With a motor"); default `None`: the four-bars alone.
+    pub motor: Option<DriveOptions>,
 }
 
 impl Default for DesignOptions {
@@ -122,6 +153,7 @@ impl Default for DesignOptions {
             coarse_pairs: Self::DEFAULT_COARSE_PAIRS,
             starts: 48,
             max_iterations: 3000,
+            motor: None,
         }
     }
 }
@@ -155,7 +187,8 @@ impl DesignOptions {
     /// [`InvalidInput::CountOutOfRange`] naming the count out of range;
     /// [`InvalidInput::OutsideRange`] for a negative or non-finite
     /// separation; [`InvalidInput::UnknownName`] for a ranking without a
-    /// score; as [`Space::validate`].
+    /// score; as [`Space::validate`]; as [`DriveOptions::validate`] for the
+    /// motor's options.
     pub fn validate(&self, task: &Task) -> Result<()> {
         count_in("top", self.top, 1, Self::MAX_TOP)?;
         count_in(
@@ -182,6 +215,9 @@ impl DesignOptions {
             in_range("min_separation", s, 0.0, f64::MAX, "")?;
         }
         check_scored(self.rank_by, "design ranking")?;
+        if let Some(motor) = &self.motor {
+            motor.validate()?;
+        }
         self.space.validate(task, &self.limits)
     }
 
@@ -240,6 +276,11 @@ pub struct Design {
     pub coarse_score: f64,
     /// How many linkages its refinement judged.
     pub evaluations: usize,
+    /// With a motor ([`DesignOptions::motor`]): the drive added to a
+    /// linkage whose input swings (the six-bar a motor turns through the
+    /// poses, [`best_drive`](crate::design::best_drive)); `None` without a
+    /// motor, or when the input turns fully (the motor turns it directly).
+    pub drive: Option<Drive>,
 }
 
 /// A limit or a check a candidate can fail.
@@ -361,6 +402,13 @@ pub struct DesignReport {
     /// When there are no designs: the nearest misses, nearest first, at
     /// most `top`, distinct as the designs are.
     pub near_misses: Vec<NearMiss>,
+    /// The motor's options, where the designs were searched with one
+    /// ([`DesignOptions::motor`]).
+    pub motor: Option<DriveOptions>,
+    /// With a motor: the candidates passed over because no drive for them
+    /// was acceptable (each would have been a design: acceptable and
+    /// distinct from the better designs); 0 without a motor.
+    pub undriven: usize,
 }
 
 impl DesignReport {
@@ -836,13 +884,7 @@ fn pick_starts(mut cand: Vec<Start>, sep: f64, n: usize) -> Vec<Start> {
 /// The designs, best first (ties to the smaller size), at least `sep`
 /// apart, at most `top`.
 fn rank_designs(mut all: Vec<Design>, sep: f64, top: usize) -> Vec<Design> {
-    all.sort_by(|a, b| {
-        if (a.score - b.score).abs() <= tolerance::RANK_TIE {
-            a.size_ratio.total_cmp(&b.size_ratio)
-        } else {
-            b.score.total_cmp(&a.score)
-        }
-    });
+    sort_designs(&mut all);
     let mut out: Vec<Design> = Vec::new();
     for d in all {
         if out.len() >= top {
@@ -853,6 +895,17 @@ fn rank_designs(mut all: Vec<Design>, sep: f64, top: usize) -> Vec<Design> {
         }
     }
     out
+}
+
+/// The designs best first (ties to the smaller size).
+fn sort_designs(all: &mut [Design]) {
+    all.sort_by(|a, b| {
+        if (a.score - b.score).abs() <= tolerance::RANK_TIE {
+            a.size_ratio.total_cmp(&b.size_ratio)
+        } else {
+            b.score.total_cmp(&a.score)
+        }
+    });
 }
 
 /// Progress of the whole search in thousandths: the coarse pass the first
@@ -984,6 +1037,8 @@ impl Task {
             rejections: Vec::new(),
             census: 0,
             near_misses: Vec::new(),
+            motor: options.motor,
+            undriven: 0,
         }
     }
 
@@ -1050,7 +1105,7 @@ impl Task {
             },
         )?;
         report.evaluations = refined.iter().map(|d| d.evaluations).sum();
-        report.designs = rank_designs(refined, sep, options.top);
+        report.designs = self.finish_designs(refined, options, &mut report, control)?;
         if report.designs.is_empty() {
             self.census_three(&exact, options, plan, &mut report, control)?;
         }
@@ -1097,6 +1152,7 @@ impl Task {
                     refined: at(&xb),
                     coarse_score: s.score,
                     evaluations,
+                    drive: None,
                 })
             })
             .collect();
@@ -1299,7 +1355,7 @@ impl Task {
             },
         )?;
         report.evaluations = refined.iter().map(|d| d.evaluations).sum();
-        report.designs = rank_designs(refined, sep, options.top);
+        report.designs = self.finish_designs(refined, options, &mut report, control)?;
         if report.designs.is_empty() {
             let m = CENSUS_PAIRS.min(n);
             let dyads: Vec<Dyad> = four
@@ -1328,7 +1384,6 @@ impl Task {
     /// Five poses: every ordered pair of Burmester points.
     fn design_five(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
         let exact = Exact::new(self, options, control)?;
-        let sep = options.separation(self);
         let five = FivePositions::new(self.poses())?;
         let points = five.burmester_points();
         let mut report = self.report(options, None);
@@ -1365,12 +1420,13 @@ impl Task {
                         refined: at,
                         coarse_score: score,
                         evaluations: 1,
+                        drive: None,
                     });
                 }
             }
         }
         report.evaluations = report.coarse_candidates;
-        report.designs = rank_designs(all, sep, options.top);
+        report.designs = self.finish_designs(all, options, &mut report, control)?;
         if report.designs.is_empty() {
             self.census(&exact, options, &pairs, &mut report, control)?;
         }
