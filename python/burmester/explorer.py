@@ -510,8 +510,11 @@ class Explorer:
         if height <= 0:
             return
         top = self._figures_text.get_window_extent(renderer).y1
-        below = max(ax.get_window_extent(renderer).y0 - ax.get_tightbbox(renderer).y0
-                    for ax in (self.ax_map, self.ax_linkage))
+        below = 0.0
+        for ax in (self.ax_map, self.ax_linkage):
+            tight = ax.get_tightbbox(renderer)
+            if tight is not None:
+                below = max(below, ax.get_window_extent(renderer).y0 - tight.y0)
         bottom = min(0.45, max(0.2, (top + below + 6.0) / height))
         if abs(bottom - self.figure.subplotpars.bottom) > 1e-3:
             self.figure.subplots_adjust(bottom=bottom)
