@@ -10,7 +10,8 @@
 //! * `solve_into/1000000`: position analysis of 10^6 input angles (the
 //!   batch kernel, parallel over chunks of 4096);
 //! * `atlas/32x256`: the pivot-pair atlas, 32^2 driven centers by 256^2
-//!   driving samples each.
+//!   driving samples each, ranked by transmission (as when the logs in
+//!   `benches/scaling/` were taken, before the atlas took any ranking).
 //!
 //! Run it on a machine with many cores; `benches/report.py` lists it when
 //! its output is present. Throughput is in samples (angles for

@@ -422,6 +422,11 @@ class FourBar:
     def link_ratio(self) -> float:
         """Ratio of the longest to the shortest link."""
     @property
+    def grashof_margin(self) -> float:
+        """How far the linkage is from the Grashof change point,
+        ``|s + l - p - q| / (s + l + p + q)`` in [0, 1) (see
+        :attr:`LinkageFigures.grashof_margin`)."""
+    @property
     def grashof(self) -> GrashofType:
         """Grashof type, the input being the crank link: ``"crank-rocker"``,
         ``"double-crank"``, ``"rocker-crank"``, ``"double-rocker"``
@@ -512,6 +517,18 @@ class LinkageFigures:
     @property
     def link_ratio(self) -> float:
         """Longest over shortest link."""
+    @property
+    def grashof_margin(self) -> float:
+        """How far the linkage is from the Grashof change point, as a part of
+        the links' total length: ``|s + l - p - q| / (s + l + p + q)`` in
+        [0, 1) (``s`` the shortest link, ``l`` the longest). Zero at a change
+        point (every kite, two pairs of equal adjacent links, is one), where
+        the type flips with the smallest error of a link and a fully turning
+        input passes the flat position where the linkage can switch
+        circuits. The type holds for every set of link errors adding up to
+        less than the margin times the links' total length (each link off by
+        less than the margin times its own length);
+        :attr:`DesignLimits.min_grashof_margin` is the limit on it."""
     @property
     def branch_free(self) -> bool:
         """Every pose in one assembly mode (no branch defect, no toggle at a pose)."""
@@ -1386,7 +1403,13 @@ class DesignLimits:
     not); ``max_size_ratio``: the largest linkage relative to the task (its
     size, the total length of its members, over :attr:`Task.span`), at
     least 1 (default ``math.inf``: no limit); ``max_link_length``: the
-    longest link in the task's units, above 0 (default ``math.inf``).
+    longest link in the task's units, above 0 (default ``math.inf``);
+    ``min_grashof_margin``: the smallest distance from the Grashof change
+    point, :attr:`LinkageFigures.grashof_margin`, in [0, 1] (default 0.01:
+    every link may be off by 1% of its length, 1 mm on a 100 mm link,
+    without the type flipping; 0: no limit). A change-point linkage (every
+    kite) is one no designer builds: the balanced score's even links would
+    otherwise pull the best designs onto it.
     Raises :class:`InvalidInputError` (``cause == "outside_range"``, with
     ``name``, ``value``, ``min``, ``max``) for a limit out of range.
     """
@@ -1398,6 +1421,7 @@ class DesignLimits:
         input: InputRequirement = "any",
         max_size_ratio: float = ...,
         max_link_length: float = ...,
+        min_grashof_margin: float = 0.01,
     ) -> DesignLimits: ...
     @property
     def min_transmission_deg(self) -> float:
@@ -1414,8 +1438,11 @@ class DesignLimits:
     @property
     def max_link_length(self) -> float:
         """The longest acceptable link, task units (``math.inf``: no limit)."""
+    @property
+    def min_grashof_margin(self) -> float:
+        """The smallest acceptable Grashof margin (0: no limit)."""
     def __eq__(self, other: object, /) -> bool: ...
-    def __getnewargs__(self) -> Tuple[float, float, str, float, float]: ...
+    def __getnewargs__(self) -> Tuple[float, float, str, float, float, float]: ...
 
 @final
 class Pivot:
@@ -1801,8 +1828,8 @@ def _atlas_tile(
 
 FoundBy = Literal["pivots", "parameters", "burmester"]
 LimitName = Literal[
-    "branch_defect", "order", "transmission", "link_ratio", "input", "size_ratio",
-    "link_length", "pivot_region", "obstacles", "envelope",
+    "branch_defect", "order", "transmission", "link_ratio", "input", "grashof_margin",
+    "size_ratio", "link_length", "pivot_region", "obstacles", "envelope",
 ]
 
 @final
@@ -1909,6 +1936,14 @@ class Design:
     @property
     def evaluations(self) -> int:
         """Linkages its refinement judged."""
+    @property
+    def drive(self) -> Optional[Drive]:
+        """With a motor (``design(..., input="motor")``): the drive added to
+        a linkage whose input swings, the six-bar a motor turns through the
+        poses (found under the report's limits, ranking and space: the
+        drive's crank pivot on the pivot region, its links clear of the
+        obstacles over a full crank turn); None without a motor, or when the
+        input turns fully (the motor turns it directly)."""
     @staticmethod
     def _from_state(
         task: Task,
@@ -1922,6 +1957,7 @@ class Design:
         refined: Sequence[float],
         coarse_score: float,
         evaluations: int,
+        drive: Optional[Drive] = None,
     ) -> Design:
         """Rebuilds a design from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2012,6 +2048,21 @@ class DesignReport:
     @property
     def evaluations(self) -> int:
         """Linkages the refinements judged."""
+    @property
+    def undriven(self) -> int:
+        """With a motor: candidates passed over because no drive for them
+        was acceptable (each would otherwise have been a design); 0
+        without a motor."""
+    @property
+    def motor(self) -> bool:
+        """Whether the designs were searched with a motor
+        (``input="motor"``)."""
+    @property
+    def swing_margin_deg(self) -> Optional[float]:
+        """The motor's swing margin, degrees (None without a motor)."""
+    @property
+    def max_time_ratio(self) -> Optional[float]:
+        """The motor's largest time ratio (None without a motor)."""
     def __len__(self) -> int: ...
     def __getitem__(self, index: int, /) -> Design: ...
     def __iter__(self) -> Iterator[Design]: ...
@@ -2027,6 +2078,8 @@ class DesignReport:
         counts: Tuple[int, int, int, int],
         rejections: Sequence[Tuple[str, int]],
         near_misses: Sequence[NearMiss],
+        motor: Optional[Tuple[float, float]] = None,
+        undriven: int = 0,
     ) -> DesignReport:
         """Rebuilds a report from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2045,6 +2098,9 @@ def _design(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
+    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    swing_margin_deg: float = ...,
+    max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The design search in this process (see :func:`burmester.design`,
@@ -2064,6 +2120,9 @@ def _design_plan(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
+    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    swing_margin_deg: float = ...,
+    max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> dict[str, Any]:
     """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
@@ -2083,6 +2142,9 @@ def _design_from_atlas(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
+    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    swing_margin_deg: float = ...,
+    max_time_ratio: Optional[float] = None,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere

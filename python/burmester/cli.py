@@ -164,6 +164,13 @@ def _lengths_in(spec: TaskSpec) -> str:
     return f", lengths in {spec.units}" if spec.units else ""
 
 
+def _limits_text(spec: TaskSpec) -> str:
+    """Every limit of the task in words, lengths in its unit
+    (:func:`burmester.pivots.describe_limits`): what a table prints beside
+    its verdicts."""
+    return pv.describe_limits(spec.limits, spec.units)
+
+
 def _outside_note(spec: TaskSpec, points: Sequence[Tuple[str, Optional[Sequence[float]]]]) -> str:
     """``"; B3 (...) lies outside the view x [..], y [..]"`` for the named
     points outside the task's view (``""`` when all are in it): what a
@@ -458,7 +465,7 @@ def cmd_map(args: argparse.Namespace) -> int:
             f"{view.nx} x {view.ny} grid is branch-free"
         )
         if smap is not None:
-            summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable ({pv.describe_limits(spec.limits)})"
+            summary += f", {100 * np.mean(smap.acceptable):.1f}% acceptable ({_limits_text(spec)})"
         task = filemon.task
         summary += _outside_note(spec, [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in task.poles]
                                  + [("C0", filemon.driven_center)])
@@ -584,7 +591,7 @@ def cmd_atlas(args: argparse.Namespace) -> int:
         ax.set_title(f"pivot-pair atlas of {spec.source}")
         _save(ax.figure, output, args.dpi, args.force)
         summary = (f"{int(np.count_nonzero(atlas.count))} of {driven.size} driven centers "
-                   f"have an acceptable driving pivot ({pv.describe_limits(spec.limits)}{_lengths_in(spec)}); "
+                   f"have an acceptable driving pivot ({_limits_text(spec)}{_lengths_in(spec)}); "
                    f"{pv.describe_ranking(atlas.rank_by)}")
         if best:
             summary += (f"; best at C0 {_fmt_point(best[0].driven)}, A0 {_fmt_point(best[0].driving)}: "
@@ -603,14 +610,14 @@ def pivot_table(spec: TaskSpec, pivots: Sequence[Pivot], ranked_by: str = "balan
     columns = [("#", "right"), ("A0 (x, y)", "right"), ("size", "right"), ("margin", "right"),
                ("ground", "right"), ("crank", "right"), ("coupler", "right"), ("rocker", "right"),
                ("Grashof type", "left"), ("mu min", "right"), ("mu1", "right"), ("mu2", "right"),
-               ("mu3", "right"), ("drive", "left"), (pv.describe_limits(spec.limits), "left")]
+               ("mu3", "right"), ("drive", "left"), (_limits_text(spec), "left")]
     rows = []
     for k, p in enumerate(pivots, start=1):
         f = p.figures
         mus = [f"{m:.0f}" if m is not None else "-" for m in pv.transmission_at_poses_deg(p.linkage)]
         mt = f"{f.min_transmission_deg:.1f}" if f.min_transmission_deg is not None else "-"
         drive = f"{f.direction} {f.modes[0] or ''}".strip()
-        bad = pv.violations(f, spec.limits)
+        bad = pv.linkage_violations(p.linkage, spec.limits, spec.units)
         rows.append([str(k), _fmt_point(p.center), _fmt_size(p.size_ratio), f"{p.margin:.3f}",
                      *(f"{v:.3f}" for v in f.lengths), f.grashof, mt, *mus, drive, "; ".join(bad) or "ok"])
     lines = [
@@ -656,7 +663,7 @@ def burmester_table(spec: TaskSpec, ranked: Sequence[pv.BurmesterLinkage], ranke
               for k, (c, z) in enumerate(points, start=1)]
     columns = [("#", "right"), ("drive", "right"), ("size", "right"), ("ground", "right"),
                ("crank", "right"), ("coupler", "right"), ("rocker", "right"), ("Grashof type", "left"),
-               ("mu min", "right"), ("ratio", "right"), ("motion", "left"), (pv.describe_limits(spec.limits), "left")]
+               ("mu min", "right"), ("ratio", "right"), ("motion", "left"), (_limits_text(spec), "left")]
     rows = []
     for k, b in enumerate(ranked, start=1):
         f = b.linkage.figures
@@ -759,7 +766,7 @@ def cmd_linkage(args: argparse.Namespace) -> int:
         task = spec.task
         best_pairs = _pair_map(spec, PAIR_SAMPLES).best_pairs(1)
         if not best_pairs:
-            raise UsageError(f"no acceptable pair of dyads for {spec.source} ({pv.describe_limits(spec.limits)}); "
+            raise UsageError(f"no acceptable pair of dyads for {spec.source} ({_limits_text(spec)}); "
                              "see 'burmester pairs'")
         sfb = best_pairs[0].linkage
         what = f"the best pair of dyads, driving pivot A0 = {_fmt_point(best_pairs[0].driving.center)}"
@@ -875,7 +882,7 @@ def pair_table(spec: TaskSpec, pairs: Sequence[burmester.Pair], ranked_by: str) 
     lines = [
         f"Pairs of dyads for {spec.source} (task size {format_length(spec.task.span, spec.units, 3)}"
         f"{_lengths_in(spec)}), {pv.describe_ranking(ranked_by)}, acceptable under the "
-        f"{pv.describe_limits(spec.limits)}",
+        f"{_limits_text(spec)}",
         table(columns, rows),
     ]
     if not pairs:
@@ -919,7 +926,7 @@ def cmd_pairs(args: argparse.Namespace) -> int:
         print(pair_table(spec, pairs, args.rank_by))
     if args.output is not None and not args.json:
         print(f"wrote {args.output}: pair map of {spec.source}, {pmap.shape[1]} x {pmap.shape[0]} pairs, "
-              f"{100 * np.mean(pmap.acceptable):.1f}% acceptable ({pv.describe_limits(spec.limits)})")
+              f"{100 * np.mean(pmap.acceptable):.1f}% acceptable ({_limits_text(spec)})")
     return 0
 
 
@@ -931,25 +938,14 @@ def cmd_pairs(args: argparse.Namespace) -> int:
 DESIGN_RANKINGS = ("balanced", "transmission", "compact")
 
 
-def _limits_words(lim: burmester.DesignLimits) -> str:
-    """The limits a design was judged by, in words (every one, printed)."""
-    words = [f"transmission >= {lim.min_transmission_deg:g} deg", f"link ratio <= {lim.max_link_ratio:g}",
-             f"{lim.input} input"]
-    if math.isfinite(lim.max_size_ratio):
-        words.append(f"size <= {lim.max_size_ratio:g}x the task")
-    if math.isfinite(lim.max_link_length):
-        words.append(f"links <= {lim.max_link_length:g} long")
-    return ", ".join(words)
-
-
-def _space_words(space: Optional[burmester.Space]) -> str:
-    """The space a design fits, in words."""
+def _space_words(space: Optional[burmester.Space], units: Optional[str] = None) -> str:
+    """The space a design fits, in words (lengths with ``units``)."""
     if space is None or (space.region == "anywhere" and not space.obstacles and space.envelope is None):
         return "pivots anywhere"
     words = []
     if space.pivot_box is not None:
         x0, x1, y0, y1 = space.pivot_box
-        words.append(f"pivots in x {x0:g}..{x1:g}, y {y0:g}..{y1:g}")
+        words.append(f"pivots in x {x0:g}..{x1:g}, y {y0:g}..{y1:g}" + (f" {units}" if units else ""))
     elif space.pivot_polygon is not None:
         words.append(f"pivots in a polygon of {len(space.pivot_polygon)} vertices")
     else:
@@ -959,63 +955,60 @@ def _space_words(space: Optional[burmester.Space]) -> str:
     if space.envelope is not None:
         words.append("inside the envelope")
     if space.link_width:
-        words.append(f"links {space.link_width:g} wide")
+        words.append(f"links {format_length(space.link_width, units)} wide")
     return ", ".join(words)
 
 
+def _design_row(k: int, linkage: burmester.SynthesizedFourBar, size_ratio: float, last: str) -> List[str]:
+    """One row of :func:`design_table`: the pivots, size, lengths, type,
+    transmission, link ratio, drive, and ``last`` (the score, or what a
+    near miss misses)."""
+    f = linkage.figures
+    mu = f.min_transmission_deg
+    drive = f"{f.direction} {f.modes[0] or ''}".strip() if f.branch_free else "branch defect"
+    return [str(k), _fmt_point(linkage.driving[0]), _fmt_point(linkage.driven[0]), _fmt_size(size_ratio),
+            *(f"{v:.3f}" for v in f.lengths), f.grashof, f"{mu:.1f}" if mu is not None else "-",
+            f"{f.link_ratio:.2f}", drive, last]
+
+
 def design_table(spec: TaskSpec, report: burmester.DesignReport) -> str:
-    """The text table of ``burmester design``."""
+    """The text table of ``burmester design``: the task and ranking, the
+    limits and the space every verdict was judged by, the designs (or the
+    nearest misses with what each misses), what the columns mean."""
     task = spec.task
     lines = [
-        f"Designs for {spec.source} ({len(task)} poses, task size {task.span:.4g}), "
-        f"{pv.describe_ranking(report.rank_by)}",
-        f"limits: {_limits_words(report.limits)}; space: {_space_words(report.space)}",
+        f"Designs for {spec.source} ({len(task)} poses, task size {format_length(task.span, spec.units, 3)}: "
+        f"the largest distance between two poses{_lengths_in(spec)}), {pv.describe_ranking(report.rank_by)}",
+        f"{pv.describe_limits(report.limits, spec.units)}; space: {_space_words(report.space, spec.units)}",
     ]
-    head = (f"{'#':>2} | {'A0 (x, y)':>20} | {'C0 (x, y)':>20} | {'size':>6} | {'ground':>8} {'crank':>8} "
-            f"{'coupler':>8} {'rocker':>8} | {'Grashof type':<14} | {'mu min':>6} | {'ratio':>5} | "
-            f"{'drive':<11} | score")
+    columns = [("#", "right"), ("A0 (x, y)", "right"), ("C0 (x, y)", "right"), ("size", "right"),
+               ("ground", "right"), ("crank", "right"), ("coupler", "right"), ("rocker", "right"),
+               ("Grashof type", "left"), ("mu min", "right"), ("ratio", "right"), ("drive", "left")]
     if len(report):
-        lines.append(head)
-        for k, d in enumerate(report, start=1):
-            f = d.figures
-            g, c, cp, r = f.lengths
-            drive = f"{f.direction} {f.modes[0] or ''}".strip()
-            lines.append(
-                f"{k:>2} | {_fmt_point(d.driving_pivot):>20} | {_fmt_point(d.driven_pivot):>20} | "
-                f"{_fmt_size(d.size_ratio)} | {g:8.3f} {c:8.3f} {cp:8.3f} {r:8.3f} | {f.grashof:<14} | "
-                f"{f.min_transmission_deg:6.1f} | {f.link_ratio:5.2f} | {drive:<11} | {d.score:.4f}"
-            )
+        rows = [_design_row(k, d.linkage, d.size_ratio, f"{d.score:.4f}") for k, d in enumerate(report, start=1)]
+        lines.append(table(columns + [("score", "right")], rows))
         lines.append(
             "A0: the driving crank's fixed pivot, C0: the driven one's. size: the total length of the "
             "links (the coupler as its triangle with the coupler point) in task sizes. mu min: the "
-            "smallest transmission angle over the whole travel (degrees). Each is judged exactly, "
-            "refined from the best of a coarse search."
+            "smallest transmission angle over the whole travel (degrees). ratio: longest link / shortest. "
+            "Each meets the limits above, judged exactly, refined from the best of a coarse search."
         )
-        return "\n".join(lines)
-    main = report.main_rejection
-    rej = ", ".join(f"{name.replace('_', ' ')} {n}" for name, n in report.rejections)
-    lines.append(
-        f"No linkage fits. Of {report.census} candidates judged against every limit, the one "
-        f"rejecting the most is {main.replace('_', ' ') if main else 'none'} ({rej or 'none'}); "
-        "nothing was relaxed."
-    )
-    if report.near_misses:
-        lines.append("Nearest misses (a feasible motion, missing the limits by the least):")
-        lines.append(head.replace("score", "misses"))
-        for k, m in enumerate(report.near_misses, start=1):
-            f = m.figures
-            g, c, cp, r = f.lengths
-            a0, c0 = m.linkage.driving[0], m.linkage.driven[0]
-            drive = f"{f.direction} {f.modes[0] or ''}".strip()
-            bad = pv.violations(f, report.limits) + pv.size_violation(m.linkage, report.limits)
-            bad += [w.replace("_", " ") for w in m.misses if w in ("pivot_region", "obstacles", "envelope")]
-            mu = f.min_transmission_deg
-            lines.append(
-                f"{k:>2} | {_fmt_point(a0):>20} | {_fmt_point(c0):>20} | {_fmt_size(m.size_ratio)} | "
-                f"{g:8.3f} {c:8.3f} {cp:8.3f} {r:8.3f} | {f.grashof:<14} | "
-                f"{(f'{mu:6.1f}' if mu is not None else '     -')} | {f.link_ratio:5.2f} | {drive:<11} | "
-                f"{'; '.join(bad)}"
-            )
+    else:
+        main = report.main_rejection
+        rej = ", ".join(f"{name.replace('_', ' ')} {n}" for name, n in report.rejections)
+        lines.append(
+            f"No linkage fits. Of {report.census} candidates judged against every limit, the one "
+            f"rejecting the most is {main.replace('_', ' ') if main else 'none'} ({rej or 'none'}); "
+            "nothing was relaxed."
+        )
+        if report.near_misses:
+            lines.append("Nearest misses (a feasible motion, missing the limits by the least):")
+            rows = []
+            for k, m in enumerate(report.near_misses, start=1):
+                bad = pv.linkage_violations(m.linkage, report.limits, spec.units)
+                bad += [w.replace("_", " ") for w in m.misses if w in ("pivot_region", "obstacles", "envelope")]
+                rows.append(_design_row(k, m.linkage, m.size_ratio, "; ".join(bad)))
+            lines.append(table(columns + [("misses", "left")], rows))
     return "\n".join(lines)
 
 
@@ -1024,16 +1017,11 @@ def design_document(spec: TaskSpec, report: burmester.DesignReport) -> Dict[str,
     lim, space = report.limits, report.space
     return {
         "task": spec.source,
+        "units": spec.units,
         "poses": len(spec.poses),
         "span": spec.task.span,
         "ranking": report.rank_by,
-        "limits": {
-            "min_transmission_deg": lim.min_transmission_deg,
-            "max_link_ratio": lim.max_link_ratio,
-            "input": lim.input,
-            "max_size_ratio": lim.max_size_ratio if math.isfinite(lim.max_size_ratio) else None,
-            "max_link_length": lim.max_link_length if math.isfinite(lim.max_link_length) else None,
-        },
+        "limits": pv.limits_dict(lim),
         "space": {
             "region": space.region,
             "pivot_box": space.pivot_box,
@@ -1061,42 +1049,107 @@ def design_document(spec: TaskSpec, report: burmester.DesignReport) -> Dict[str,
     }
 
 
+def motor_table(report: burmester.DesignReport) -> str:
+    """The motor section of ``burmester design --motor``: for each design its
+    drive (:func:`burmester.drives.drive_table`) or that its input turns
+    fully, and the designs passed over for want of a drive."""
+    from burmester import drives
+
+    ratio = report.max_time_ratio
+    lines = [
+        f"With a motor (swing margin {report.swing_margin_deg or 0.0:g} deg, time ratio "
+        f"{'no limit' if ratio is None or math.isinf(ratio) else f'<= {ratio:g}'}):"
+    ]
+    for k, d in enumerate(report, start=1):
+        if d.drive is None:
+            lines.append(f"Design {k}: its input turns fully: the motor turns it at A0 "
+                         f"{_fmt_point(d.driving_pivot)} directly.")
+        else:
+            lines.append(drives.drive_table(d.drive, f"design {k}"))
+    if report.undriven:
+        lines.append(f"{report.undriven} candidate design(s) passed over: no acceptable drive for them under "
+                     "these limits and this space.")
+    return "\n".join(lines)
+
+
+def _motor_document(doc: Dict[str, Any], report: burmester.DesignReport) -> Dict[str, Any]:
+    """``doc`` (:func:`design_document`) with each design's ``"drive"``
+    (None where the input turns fully) and the motor's options."""
+    from burmester import drives
+
+    for entry, d in zip(doc["designs"], report):
+        entry["drive"] = drives.drive_record(d.drive) if d.drive is not None else None
+    ratio = report.max_time_ratio
+    doc["motor"] = {
+        "swing_margin_deg": report.swing_margin_deg,
+        "max_time_ratio": None if ratio is None or math.isinf(ratio) else ratio,
+        "undriven": report.undriven,
+    }
+    return doc
+
+
 def cmd_design(args: argparse.Namespace) -> int:
     """``burmester design``: the best linkages for the task's poses inside its
-    space, both fixed pivots searched (three poses), drawn with ``-o``."""
+    space, both fixed pivots searched (three poses), drawn with ``-o``; with
+    ``--motor`` each design whose input swings carries its drive (the
+    six-bar), which ``-o`` then draws, animates or exports."""
     spec = _with_units(_load(args.task), args)  # the task file's errors first
+    margin = args.margin if args.margin is not None else 0.0
+    max_time_ratio = args.max_time_ratio if args.max_time_ratio is not None else math.inf
+    if not args.motor and (args.margin is not None or args.max_time_ratio is not None):
+        raise UsageError("--margin and --max-time-ratio set the motor's drive: give --motor with them")
+    if not 0.0 <= margin < 90.0:
+        raise UsageError(f"--margin must be from 0 to 90 degrees, got {margin:g}")
+    if not max_time_ratio >= 1.0:
+        raise UsageError(f"--max-time-ratio must be at least 1, got {max_time_ratio:g}")
     out: Optional[str] = args.output
+    export: Optional[ModuleType] = None
+    plot: Optional[ModuleType] = None
+    animated = False
     if out is not None:
         _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
         units = _units(args, spec)
         animated = out.lower().endswith(ANIMATION_TYPES)
-        if not animated and (args.frames is not None or args.fps is not None):
-            raise UsageError(f"--frames and --fps are for animations (.gif, .mp4), not {out}")
+        for flag, given in (("--frames", args.frames), ("--fps", args.fps)):
+            if given is not None and not animated:
+                raise UsageError(f"{flag} is for animations (.gif, .mp4), not {out}")
+        if args.travel is not None and not _is_cad(out):
+            raise UsageError(f"--travel is for CAD exports (.dxf, .svg), not {out}")
         export = _export_module(out) if _is_cad(out) else None
         plot = None if export is not None else _plot_module()
-    elif args.units is not None or args.dpi is not None:
-        raise UsageError("--units and --dpi are for the drawing: give -o best.png (or .gif, .svg, .dxf)")
+    elif args.dpi is not None or args.frames is not None or args.fps is not None or args.travel is not None:
+        raise UsageError("--dpi, --frames, --fps and --travel are for the drawing: give -o best.png "
+                         "(or .gif, .svg, .dxf)")
     task = spec.task
     client = _atlas_client(args.scheduler)
     bar = (ProgressBar(sys.stderr, "burmester: design") if sys.stderr.isatty() and client is None
            and len(spec.poses) < 5 else None)
     try:
         report = burmester.design(task, space=spec.space, limits=spec.limits, rank_by=args.rank_by,
-                                  top=args.top, client=client, progress=bar)
+                                  top=args.top, client=client, progress=bar,
+                                  input="motor" if args.motor else None, swing_margin_deg=margin,
+                                  max_time_ratio=max_time_ratio)
     finally:
         if client is not None:
             client.close()
     if args.json:
-        print(json.dumps(design_document(spec, report), indent=2))
+        doc = design_document(spec, report)
+        print(json.dumps(_motor_document(doc, report) if report.motor else doc, indent=2))
     else:
         print(design_table(spec, report))
+        if report.motor:
+            print(motor_table(report))
     if out is None:
         return 0
+    said = sys.stderr if args.json else sys.stdout
     if not len(report):
-        print(f"nothing drawn: no linkage fits, so {out} was not written",
-              file=sys.stderr if args.json else sys.stdout)
+        print(f"nothing drawn: no linkage fits, so {out} was not written", file=said)
         return 0
     sfb = report[0].linkage
+    drive = report[0].drive
+    if drive is not None:
+        _draw_design_drive(args, drive, out, export, plot, units, animated)
+        return 0
     if export is not None:
         _write_cad(export.linkage, out, args.force, sfb, out, task=task, travel_samples=args.travel or 0,
                    units=units)
@@ -1116,9 +1169,37 @@ def cmd_design(args: argparse.Namespace) -> int:
         ax.set_title(f"best design of {spec.source} ({report.rank_by})")
         _save(ax.figure, out, _picture_dpi(args), args.force)
     f = sfb.figures
+    lengths = ", ".join(f"{name} {format_length(v, spec.units)}"
+                        for name, v in zip(("ground", "crank", "coupler", "rocker"), f.lengths))
     print(f"wrote {out}: the best design, {f.grashof}, {report[0].size_ratio:.1f}x the task's size, "
-          f"transmission >= {f.min_transmission_deg:.1f} deg", file=sys.stderr if args.json else sys.stdout)
+          f"transmission >= {f.min_transmission_deg:.1f} deg: {lengths}", file=said)
     return 0
+
+
+def _draw_design_drive(args: argparse.Namespace, drive: burmester.Drive, out: str, export: Optional[ModuleType],
+                       plot: Optional[ModuleType], units: str, animated: bool) -> None:
+    """``design --motor -o``: the best design's six-bar drawn (at its poses),
+    animated over a crank turn or exported, as ``burmester drive`` does."""
+    if export is not None:
+        _write_cad(export.sixbar, out, args.force, drive, out, turn_samples=args.travel or 0, units=units)
+    elif animated:
+        assert plot is not None
+        try:
+            _written(out, args.force,
+                     lambda tmp: plot.animate_sixbar(drive, tmp, frames=args.frames or 120, fps=args.fps or 24))
+        except RuntimeError as e:
+            raise UsageError(str(e)) from None
+        import matplotlib.pyplot as plt
+
+        plt.close("all")
+    else:
+        assert plot is not None
+        ax = plot.sixbar(drive)
+        ax.set_title(f"best design with its motor drive ({drive.ranked_by or 'drive'})")
+        _save(ax.figure, out, _picture_dpi(args), args.force)
+    print(f"wrote {out}: the best design's six-bar, motor crank at {_fmt_point(drive.drive_pivot)}, "
+          f"transmission >= {drive.min_transmission_deg:.1f} deg over a crank turn, time ratio "
+          f"{drive.time_ratio:.3f}", file=sys.stderr if args.json else sys.stdout)
 
 
 #: The finest ``solve --step``: 36,000 rows over a turn.
@@ -1438,6 +1519,16 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
     p.add_argument("--scheduler", metavar="ADDRESS", default=None,
                    help="run the three-pose coarse pass on a Dask cluster (tcp://host:8786); needs burmester[dask]")
+    p.add_argument("--motor", action="store_true",
+                   help="every design turned by a motor: one whose input swings gets the best added crank-rocker "
+                   "(the six-bar; the limits and the space apply to it too; -o then draws, animates over a "
+                   "crank turn (--frames per turn, default 120) or exports the six-bar, --travel N giving N "
+                   "crank angles of a CAD export); one "
+                   "without an acceptable drive is passed over")
+    p.add_argument("--margin", type=_finite, default=None, metavar="DEG",
+                   help="with --motor: swing the input this much beyond the first and last pose (default: 0)")
+    p.add_argument("--max-time-ratio", type=_finite, default=None, metavar="R",
+                   help="with --motor: largest acceptable time ratio of the strokes (default: no limit)")
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
     p.set_defaults(func=cmd_design)
 

@@ -9,12 +9,19 @@ curve parameters; for five poses every ordered pair of Burmester points.
 This module only adds the Dask route of the three-pose coarse pass: with
 ``client=`` the atlas tiles run as Dask tasks (:mod:`burmester.atlas`) and
 the refinement runs here, with the same result as in process, bit for bit.
+
+With ``input="motor"`` every design can be turned by a motor: a design whose
+input swings carries the best drive the core finds for it
+(:attr:`burmester.Design.drive`, the Watt II six-bar of an added
+crank-rocker), one without an acceptable drive is passed over
+(:attr:`burmester.DesignReport.undriven`).
 """
 
 from __future__ import annotations
 
 import importlib
-from typing import Any, Callable, Dict, Optional
+import math
+from typing import Any, Callable, Dict, Literal, Optional
 
 from burmester._burmester import (
     DesignLimits,
@@ -48,6 +55,9 @@ def design(
     starts: int = 48,
     max_iterations: int = 3000,
     tile_rows: Optional[int] = None,
+    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    swing_margin_deg: float = 0.0,
+    max_time_ratio: float = math.inf,
 ) -> DesignReport:
     """The best linkages for ``task`` (three to five poses) inside ``space``
     (a :class:`burmester.Space`; default: pivots anywhere, no obstacles)
@@ -70,10 +80,26 @@ def design(
     three-pose coarse pass runs as Dask tasks of ``tile_rows`` driven rows
     (``progress`` then counts those rows) and the refinement in this
     process; four and five poses always run in this process.
+
+    ``input`` overrides the limits' input requirement: ``"any"``,
+    ``"crank"`` (the input turns fully) or ``"rocker"``; ``None`` (default)
+    keeps the limits' own. ``"motor"`` takes any input and makes every
+    design motor-driven: one whose input swings gets its best drive
+    (:attr:`burmester.Design.drive`: a crank-rocker added to the input link,
+    searched under the same limits, ranking and space: the drive's crank
+    pivot on the space's pivot region and its links clear of the obstacles
+    over a full crank turn; the envelope applies to the four-bar over its
+    travel), with ``swing_margin_deg`` (the input swings that far beyond the
+    first and last pose) and ``max_time_ratio`` (slower stroke over faster);
+    a design without an acceptable drive is passed over for the next
+    distinct one (counted in :attr:`burmester.DesignReport.undriven`).
+    Both are refused without ``input="motor"``. A bad ``input`` raises
+    :class:`burmester.InvalidInputError`.
     """
     kw: Dict[str, Any] = dict(space=space, limits=limits, rank_by=rank_by, top=top, min_separation=min_separation,
               coarse_driven=coarse_driven, coarse_driving=coarse_driving, coarse_pairs=coarse_pairs,
-              starts=starts, max_iterations=max_iterations)
+              starts=starts, max_iterations=max_iterations, input=input, swing_margin_deg=swing_margin_deg,
+              max_time_ratio=max_time_ratio)
     if client is None or len(task) != 3:
         return _design(task, progress=progress, **kw)
     from burmester.atlas import _DASK_MISSING, _on_dask

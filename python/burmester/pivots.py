@@ -23,6 +23,7 @@ import math
 from typing import TYPE_CHECKING, Any, Dict, List, NamedTuple, Optional, Tuple
 
 from burmester.taskfile import in_view
+from burmester.units import format_length
 from burmester._burmester import (
     DesignLimits,
     Grid,
@@ -40,7 +41,8 @@ if TYPE_CHECKING:
 
 __all__ = ["RANKINGS", "BurmesterLinkage", "default_spacing", "rank", "rank_burmester", "check_ranking",
            "describe_ranking", "describe_limits", "limits_dict", "transmission_at_poses_deg",
-           "violations", "linkage_dict", "as_dict", "report", "report_burmester"]
+           "violations", "size_violation", "linkage_violations", "linkage_dict", "as_dict", "report",
+           "report_burmester"]
 
 #: The rankings a designer chooses from (``"margin"`` is the fallback when
 #: nothing is acceptable), the default first.
@@ -73,25 +75,37 @@ def describe_ranking(ranked_by: str) -> str:
 
 def limits_dict(limits: DesignLimits) -> Dict[str, Any]:
     """The limits as JSON: ``min_transmission_deg``, ``max_link_ratio``,
-    ``input`` and ``defaults`` (whether they are :class:`DesignLimits`'s
-    defaults). The ``"limits"`` of every ``--json`` document: the limits
-    its verdicts (``violations``, ``acceptable``) were judged by."""
+    ``input``, ``min_grashof_margin``, ``max_size_ratio`` and
+    ``max_link_length`` (None: no limit) and ``defaults`` (whether they are
+    :class:`DesignLimits`'s defaults). The ``"limits"`` of every ``--json``
+    document: every limit its verdicts (``violations``, ``acceptable``)
+    were judged by."""
     return {
         "min_transmission_deg": limits.min_transmission_deg,
         "max_link_ratio": limits.max_link_ratio,
         "input": limits.input,
+        "min_grashof_margin": limits.min_grashof_margin,
+        "max_size_ratio": limits.max_size_ratio if math.isfinite(limits.max_size_ratio) else None,
+        "max_link_length": limits.max_link_length if math.isfinite(limits.max_link_length) else None,
         "defaults": limits == DesignLimits(),
     }
 
 
-def describe_limits(limits: DesignLimits) -> str:
-    """The limits in words, as every table prints them beside its verdicts:
-    ``"limits: transmission >= 40 deg, link ratio <= 6, crank input"``,
-    or ``"default limits: ..."`` when they are :class:`DesignLimits`'s
-    defaults (whether a task file gave them or not)."""
+def describe_limits(limits: DesignLimits, units: Optional[str] = None) -> str:
+    """Every limit in words, as every table prints them beside its verdicts:
+    ``"limits: transmission >= 40 deg, link ratio <= 6, crank input,
+    Grashof margin >= 0.01, size <= 5x the task, links <= 120 mm"`` (the
+    size limits only when given, lengths with ``units``), or ``"default
+    limits: ..."`` when they are :class:`DesignLimits`'s defaults (whether
+    a task file gave them or not)."""
     which = "default limits" if limits == DesignLimits() else "limits"
-    return (f"{which}: transmission >= {limits.min_transmission_deg:g} deg, "
-            f"link ratio <= {limits.max_link_ratio:g}, {limits.input} input")
+    words = [f"transmission >= {limits.min_transmission_deg:g} deg", f"link ratio <= {limits.max_link_ratio:g}",
+             f"{limits.input} input", f"Grashof margin >= {limits.min_grashof_margin:g}"]
+    if math.isfinite(limits.max_size_ratio):
+        words.append(f"size <= {limits.max_size_ratio:g}x the task")
+    if math.isfinite(limits.max_link_length):
+        words.append(f"links <= {format_length(limits.max_link_length, units)}")
+    return f"{which}: " + ", ".join(words)
 
 
 def default_spacing(grid: Grid) -> float:
@@ -148,7 +162,7 @@ def rank_burmester(task: Task, limits: DesignLimits, rank_by: "RankBy" = "balanc
             f"\"compact\", got {rank_by!r}"
         )
     out = [
-        BurmesterLinkage(i, j, sfb, sfb.score(rank_by), violations(sfb.figures, limits))
+        BurmesterLinkage(i, j, sfb, sfb.score(rank_by), linkage_violations(sfb, limits))
         for i, j, sfb in task.burmester_four_bars()
     ]
     out.sort(key=lambda b: (bool(b.violations), b.score is None, -(b.score or 0.0)))
@@ -168,7 +182,7 @@ def transmission_at_poses_deg(linkage: SynthesizedFourBar) -> List[Optional[floa
     return out
 
 
-def violations(figures: LinkageFigures, limits: DesignLimits) -> List[str]:
+def violations(figures: LinkageFigures, limits: DesignLimits, units: Optional[str] = None) -> List[str]:
     """The limits a linkage misses, in words (empty when it meets them all):
     the words for what :attr:`burmester.SolutionMap.acceptable` decides."""
     out = []
@@ -187,8 +201,12 @@ def violations(figures: LinkageFigures, limits: DesignLimits) -> List[str]:
         out.append("input is not a crank (it does not turn fully)")
     if limits.input == "rocker" and figures.input_full:
         out.append("input is not a rocker (it turns fully)")
+    if figures.grashof_margin < limits.min_grashof_margin:
+        out.append(f"Grashof margin {figures.grashof_margin:.2g} < {limits.min_grashof_margin:g} "
+                   "(near the change point s + l = p + q)")
     if math.isfinite(limits.max_link_length) and max(figures.lengths) > limits.max_link_length:
-        out.append(f"a link {max(figures.lengths):.3g} long > {limits.max_link_length:g}")
+        out.append(f"a link {format_length(max(figures.lengths), units, 3)} long > "
+                   f"{format_length(limits.max_link_length, units)}")
     return out
 
 
@@ -198,6 +216,13 @@ def size_violation(linkage: SynthesizedFourBar, limits: DesignLimits) -> List[st
     if linkage.size_ratio > limits.max_size_ratio:
         return [f"size {linkage.size_ratio:.1f}x > {limits.max_size_ratio:g}x"]
     return []
+
+
+def linkage_violations(linkage: SynthesizedFourBar, limits: DesignLimits, units: Optional[str] = None) -> List[str]:
+    """Every limit a linkage misses, in words: :func:`violations` of its
+    figures and :func:`size_violation`; empty exactly when it meets every
+    limit :func:`describe_limits` prints."""
+    return violations(linkage.figures, limits, units) + size_violation(linkage, limits)
 
 
 def linkage_dict(linkage: SynthesizedFourBar, limits: Optional[DesignLimits] = None) -> Dict[str, Any]:
@@ -218,13 +243,14 @@ def linkage_dict(linkage: SynthesizedFourBar, limits: Optional[DesignLimits] = N
         "grashof": f.grashof,
         "input_full": f.input_full,
         "link_ratio": f.link_ratio,
+        "grashof_margin": f.grashof_margin,
         "transmission_deg": transmission_at_poses_deg(linkage),
         "min_transmission_deg": f.min_transmission_deg,
         "direction": f.direction,
         "modes": list(f.modes),
     }
     if limits is not None:
-        d["violations"] = violations(f, limits) + size_violation(linkage, limits)
+        d["violations"] = linkage_violations(linkage, limits)
     return d
 
 

@@ -36,6 +36,7 @@ required::
     min_transmission_deg = 30.0
     max_link_ratio = 10.0
     input = "any"         # "any", "crank" (turns fully) or "rocker"
+    min_grashof_margin = 0.01   # |s + l - p - q| / link sum: off the change point
 
 ``units`` (top level, before the tables) names the unit of every length
 in the file: any name (``"mm"``, ``"in"``, ``"m"``); it scales nothing, and
@@ -44,8 +45,11 @@ numbers (CAD exports record millimetres unless told otherwise).
 
 Without ``[driven]``, a three-pose file leaves both fixed pivots to
 ``burmester design``, which searches them (the other commands need a driven
-pivot). ``[limits]`` may also bound the linkage's size: ``max_size_ratio``
-(its size over the task's) and ``max_link_length`` (the longest link, in the
+pivot). ``min_grashof_margin`` (default 0.01) keeps every acceptable
+linkage off the Grashof change point ``s + l = p + q``
+(:attr:`burmester.LinkageFigures.grashof_margin`; 0: no limit).
+``[limits]`` may also bound the linkage's size: ``max_size_ratio`` (its
+size over the task's) and ``max_link_length`` (the longest link, in the
 task's units). A ``[space]`` table (any number of poses) says where the
 linkage may be, for ``burmester design``::
 
@@ -561,8 +565,8 @@ def _space(r: _Reader, doc: Mapping[str, Any]) -> Optional[Space]:
 def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
     """The ``[limits]`` table as a DesignLimits (the defaults when absent)."""
     lim_t = r.table(doc, "limits", required=False) or {}
-    keys = ["min_transmission_deg", "max_link_ratio", "input", "require_crank", "max_size_ratio",
-            "max_link_length"]
+    keys = ["min_transmission_deg", "max_link_ratio", "input", "require_crank", "min_grashof_margin",
+            "max_size_ratio", "max_link_length"]
     r.only_keys("limits", lim_t, keys)
     defaults = DesignLimits()
     mu = defaults.min_transmission_deg
@@ -592,8 +596,11 @@ def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
         if key in lim_t:
             v = r.number(f"limits.{key}", lim_t[key], "a number")
         sizes.append(v)
+    margin = defaults.min_grashof_margin
+    if "min_grashof_margin" in lim_t:
+        margin = r.number("limits.min_grashof_margin", lim_t["min_grashof_margin"], "a number")
     try:
-        limits = DesignLimits(mu, ratio, input_, sizes[0], sizes[1])
+        limits = DesignLimits(mu, ratio, input_, sizes[0], sizes[1], margin)
     except burmester.InvalidInputError as e:
         # The core validates; its error names the limit and its range.
         if e.cause != "outside_range":
@@ -754,6 +761,8 @@ def dumps(spec: TaskSpec) -> str:
         limits.add("max_link_ratio", note(tomlkit.item(float(lim.max_link_ratio)), "longest link / shortest link"))
         limits.add("input", note(tomlkit.item(str(lim.input)),
                                  'the driving link: "any", "crank" (turns fully) or "rocker"'))
+        limits.add("min_grashof_margin", note(tomlkit.item(float(lim.min_grashof_margin)),
+                                              "|s + l - p - q| / link sum: off the change point"))
         if math.isfinite(lim.max_size_ratio):
             limits.add("max_size_ratio", note(tomlkit.item(float(lim.max_size_ratio)),
                                               "the linkage's size / the task's size"))

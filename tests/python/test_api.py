@@ -196,17 +196,17 @@ PROPERTIES = {
     CoincidencePoint: "pair center circle",
     CurveDyad: "center circle dyad beta2 branch order direction",
     FourBar: "ground crank coupler rocker lengths input_pivot output_pivot ground_angle link_ratio grashof "
-             "input_turns_fully input_range dead_positions",
+             "input_turns_fully input_range dead_positions grashof_margin",
     burmester.Configuration: "theta2 theta3 theta4 mode toggle transmission_angle coupler_rocker_angle",
     LinkageFigures: "lengths grashof input_full modes direction one_circuit min_transmission_deg link_ratio "
-                    "branch_free feasible",
+                    "branch_free feasible grashof_margin",
     Pole: "pair point direction at_infinity",
     Task: "poses rotations scale span poles",
     Filemon: "task driven_center driven_circle fixed_pivot_images all_defective lines all_lines sectors conics "
              "extreme_poses middle_pose",
     SynthesizedFourBar: "fourbar size size_ratio driving driven input_angles modes coupler_point "
                         "coupler_angle_offset figures branch_free travel travel_stops",
-    DesignLimits: "min_transmission_deg max_link_ratio input max_size_ratio max_link_length",
+    DesignLimits: "min_transmission_deg max_link_ratio input max_size_ratio max_link_length min_grashof_margin",
     Pivot: "center index linkage figures margin size_ratio score ranked_by",
     SolutionMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                  "size_ratio acceptable grid extent shape varying fixed_dyad task limits",
@@ -215,10 +215,11 @@ PROPERTIES = {
                          "score size_ratio",
     burmester.Space: "region pivot_box pivot_polygon obstacles link_width envelope travel_samples",
     burmester.Design: "linkage figures score size_ratio ranked_by driving_pivot driven_pivot found_by coarse refined "
-                      "coarse_score evaluations",
+                      "coarse_score evaluations drive",
     burmester.NearMiss: "linkage figures size_ratio misses shortfall",
     burmester.DesignReport: "task designs near_misses rejections main_rejection census limits space rank_by "
-                            "min_separation search_box coarse_candidates coarse_acceptable evaluations",
+                            "min_separation search_box coarse_candidates coarse_acceptable evaluations "
+                            "undriven motor swing_margin_deg max_time_ratio",
     burmester.PairMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
                        "size_ratio acceptable grid extent shape driving_dyads driven_dyads task limits",
     burmester.Pair: "driving driven index linkage figures margin size_ratio score ranked_by",

@@ -113,7 +113,9 @@ def test_pivots_table_and_json(capsys):
     assert main(["pivots", "--top", "4", "--json", "--rank-by", "transmission"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["ranking"] == "transmission" and doc["spacing"] == pytest.approx(1.6)
-    assert doc["limits"] == {"min_transmission_deg": 30.0, "max_link_ratio": 10.0, "input": "any", "defaults": True}
+    assert doc["limits"] == {"min_transmission_deg": 30.0, "max_link_ratio": 10.0, "input": "any",
+                             "min_grashof_margin": 0.01, "max_size_ratio": None, "max_link_length": None,
+                             "defaults": True}
     assert doc["units"] is None  # the example gives no unit
     listed = doc["pivots"]
     assert len(listed) == 4

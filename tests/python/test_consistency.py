@@ -81,7 +81,7 @@ def test_the_task_file_writer_keeps_comments_and_round_trips():
                              burmester.DesignLimits(40.0, 6.5, "crank"), "<four>")
     text = taskfile.dumps(four)
     doc = tomllib.loads(text)
-    assert doc["limits"] == {"min_transmission_deg": 40.0, "max_link_ratio": 6.5, "input": "crank"}
+    assert doc["limits"] == {"min_transmission_deg": 40.0, "max_link_ratio": 6.5, "input": "crank", "min_grashof_margin": 0.01}
     back = taskfile.loads(text)
     assert back.view == four.view and back.limits == four.limits
     assert np.allclose(back.poses, four.poses, rtol=1e-15, atol=0)

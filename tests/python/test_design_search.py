@@ -374,3 +374,94 @@ def test_dask_coarse_pass_equals_in_process(client):
     assert got == want
     with pytest.raises(InvalidInputError):
         burmester.design(t, client=client, top=0)
+
+
+def _margin_here(lengths):
+    """|s + l - p - q| / (s + l + p + q), computed here."""
+    s, p, q, l = sorted(lengths)
+    return abs(s + l - p - q) / (s + l + p + q)
+
+
+def _task_of(lengths, a0, thetas):
+    """Three coupler poses of the four-bar ``lengths`` with its input pivot
+    at ``a0`` (ground along +x), in the mode whose coupler turns (a kite's
+    other mode folds its rocker joint onto the input pivot, a
+    parallelogram's translates); the task and the output pivot."""
+    g, c, cp, r = lengths
+    fb = burmester.FourBar(ground=g, crank=c, coupler=cp, rocker=r, origin=a0)
+    for mode in ("open", "crossed"):
+        poses = [(*fb.coupler_point(t, (0.6, 0.9), mode), fb.solve(t, mode)[0]) for t in thetas]
+        if all(math.dist(fb.joints(t, mode)[2], a0) > 1e-6 for t in thetas):
+            try:
+                return Task(poses), fb.output_pivot
+            except burmester.BurmesterError:
+                continue
+    raise AssertionError(f"{lengths}: no mode turns the coupler")
+
+
+@pytest.mark.parametrize("lengths, thetas, at_change", [
+    ((4.0, 2.5, 2.5, 4.0), (1.0, 1.5, 2.0), True),     # kite: ground = rocker, crank = coupler
+    ((4.0, 2.0, 4.0, 2.0), (0.8, 1.4, 2.0), True),     # parallelogram's crossed mode
+    ((4.0, 2.5, 2.5, 4.2), (1.0, 1.5, 2.0), False),    # the kite 5% off: margin 0.015
+])
+def test_change_point_linkages_are_refused_under_the_default_margin(lengths, thetas, at_change):
+    """A task made from a change-point linkage: rebuilt from its pivots, its
+    margin (the figures, FourBar) is |s + l - p - q| / total; the default
+    limits refuse it for that alone (the map's cell at its pivot, the
+    words of pivots.violations), a margin of 0 accepts it."""
+    from burmester import pivots as pv
+
+    g = Grid(-1.0, 1.0, -1.0, 1.0, 3, 3)
+    a0 = g.point(1, 1)
+    t, c0 = _task_of(lengths, a0, thetas)
+    sfb = t.four_bar(a0, c0)
+    f = sfb.figures
+    assert f.lengths == pytest.approx(lengths, abs=1e-9)
+    assert f.grashof_margin == pytest.approx(_margin_here(f.lengths), abs=1e-15)
+    l1, l2, l3, l4 = lengths
+    fb = burmester.FourBar(ground=l1, crank=l2, coupler=l3, rocker=l4)
+    assert fb.grashof_margin == pytest.approx(_margin_here(lengths), abs=1e-15)
+    assert (f.grashof_margin < 1e-9) == at_change
+    none = DesignLimits(min_grashof_margin=0)
+    assert pv.violations(f, none) == []
+    words = pv.violations(f, DesignLimits())
+    assert (words != []) == at_change
+    if at_change:
+        assert len(words) == 1 and "Grashof margin" in words[0] and "change point" in words[0]
+    filemon = t.filemon(c0)
+    for limits, want in [(DesignLimits(), not at_change), (none, True)]:
+        m = filemon.solution_map(g, limits=limits)
+        assert m.branch_free[1, 1] and m.acceptable[1, 1] == want, (lengths, limits)
+
+
+def test_the_built_in_example_and_the_hood_keep_off_the_change_point():
+    """The README's example and examples/hood.toml at the design's defaults:
+    with no margin the best is a kite (two pairs of equal links: what the
+    margin is for); with the default margin every design keeps at least 1%
+    of its links' total off the change point (measured here) and the best
+    loses little score. Best of each printed (pytest -s) for the record."""
+    from burmester import taskfile
+
+    spec = taskfile.load(HOOD)
+    lim = spec.limits
+    hood_none = DesignLimits(lim.min_transmission_deg, lim.max_link_ratio, lim.input, lim.max_size_ratio,
+                             lim.max_link_length, 0.0)
+    assert lim.min_grashof_margin == 0.01
+    for name, t, kw, kw0 in [
+        ("example", Task(POSES), {}, {"limits": DesignLimits(min_grashof_margin=0)}),
+        ("hood", spec.task, {"space": spec.space, "limits": lim}, {"space": spec.space, "limits": hood_none}),
+    ]:
+        r, r0 = burmester.design(t, **kw), burmester.design(t, **kw0)
+        kite = r0[0].figures.lengths
+        assert _margin_here(kite) < 1e-9, kite
+        g, c, cp, rk = kite
+        assert g == pytest.approx(c, rel=1e-6) and cp == pytest.approx(rk, rel=1e-6)
+        assert len(r)
+        check(t, r, kw.get("space"))
+        for d in r:
+            assert _margin_here(d.figures.lengths) >= 0.01 - 1e-12, d.figures.lengths
+        assert 0.95 * r0[0].score <= r[0].score <= r0[0].score + 1e-9
+        f = r[0].figures
+        print(f"{name}: {[round(v, 3) for v in f.lengths]} {f.grashof}, mu {f.min_transmission_deg:.1f}, "
+              f"size {r[0].size_ratio:.2f}, margin {f.grashof_margin:.4f}, score {r[0].score:.4f} "
+              f"(no margin: {[round(v, 3) for v in kite]}, {r0[0].score:.4f})")

@@ -172,3 +172,61 @@ def test_ctrl_c_during_the_first_array_call_of_a_process_is_a_keyboard_interrupt
             p.kill()
     assert "Panic" not in err and "panicked" not in err, err
     assert p.returncode == 0 and out.strip() == "interrupted", (p.returncode, out, err)
+
+
+#: The child for burmester.design: a search that takes seconds (the coarse
+#: pass at its largest grids, then many refinements), interrupted in the
+#: coarse pass or in the refinement.
+DESIGN_CHILD = textwrap.dedent(
+    """
+    import json, sys, time
+    import burmester
+    t = burmester.Task({poses!r})
+    said = []
+
+    def progress(done, total):
+        if done > 800 and not said:
+            said.append(print("refining", flush=True))
+
+    if sys.argv[1] == "coarse":
+        kw = dict(coarse_driven=64, coarse_driving=256, starts=4)
+    else:
+        # A quick coarse pass, then 1000 refinements of 20000 iterations.
+        kw = dict(coarse_driven=16, coarse_driving=32, starts=1000, min_separation=0.0,
+                  max_iterations=20000, progress=progress)
+    print("started", flush=True)
+    t0 = time.monotonic()
+    try:
+        burmester.design(t, **kw)
+    except KeyboardInterrupt as e:
+        print(json.dumps({{"message": str(e), "ran": time.monotonic() - t0}}), flush=True)
+        raise
+    print(json.dumps({{"finished": time.monotonic() - t0}}), flush=True)
+    """
+).format(poses=POSES)
+
+
+@pytest.mark.parametrize("phase", ["coarse", "refine"])
+def test_ctrl_c_stops_design_within_half_a_second(phase):
+    p = subprocess.Popen(
+        [sys.executable, "-c", DESIGN_CHILD, phase],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=os.path.dirname(__file__),
+    )
+    try:
+        assert p.stdout.readline().strip() == "started", p.stderr.read()
+        if phase == "refine":
+            # The progress hook says when the refinement has begun.
+            assert p.stdout.readline().strip() == "refining", p.stderr.read()
+        time.sleep(0.3)
+        sent = time.monotonic()
+        p.send_signal(signal.SIGINT)
+        line = p.stdout.readline()
+        latency = time.monotonic() - sent
+        _, err = p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    report = json.loads(line)
+    assert "finished" not in report, "the search ended before the signal; make it longer"
+    assert latency < 0.5, latency
+    assert p.returncode == -signal.SIGINT and "KeyboardInterrupt" in err

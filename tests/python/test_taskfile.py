@@ -129,6 +129,12 @@ BAD = [
     (edit("require_crank = true", 'require_crank = "yes"'),
      ["limits.require_crank", "true or false", "'yes' (a string)"]),
     (edit("require_crank = true", "min_transmission = 30"), ["limits.min_transmission", "unknown key"]),
+    (edit("require_crank = true", "require_crank = true\nmin_grashof_margin = 1.5"),
+     ["limits.min_grashof_margin", "expected 0 to 1", "found 1.5"]),
+    (edit("require_crank = true", "require_crank = true\nmin_grashof_margin = -0.1"),
+     ["limits.min_grashof_margin", "expected 0 to 1", "found -0.1"]),
+    (edit("require_crank = true", 'require_crank = true\nmin_grashof_margin = "x"'),
+     ["limits.min_grashof_margin", "expected a number"]),
     (GOOD + "\n[poses]\nx = 1\n", ["poses", "unknown top-level key", "[[pose]]"]),
 ]
 

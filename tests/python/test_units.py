@@ -556,7 +556,9 @@ def test_five_pose_verdicts_are_judged_by_the_printed_limits(tmp_path, capsys):
     assert limits == DesignLimits(45.0, 3.0, "any") and not default
     assert main(["pivots", str(five), "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
-    assert doc["limits"] == {"min_transmission_deg": 45.0, "max_link_ratio": 3.0, "input": "any", "defaults": False}
+    assert doc["limits"] == {"min_transmission_deg": 45.0, "max_link_ratio": 3.0, "input": "any",
+                             "min_grashof_margin": 0.01, "max_size_ratio": None, "max_link_length": None,
+                             "defaults": False}
     rows = [ln for ln in table.splitlines() if re.match(r"^\s*\d+ \| B", ln)]
     assert len(rows) == len(doc["linkages"]) == 12
     oks = 0
@@ -580,10 +582,11 @@ def test_three_pose_verdicts_and_the_default_limits(tmp_path, capsys):
     limits, default = printed_limits(header)
     assert limits == DesignLimits() and default  # no [limits] in the file: the defaults, said so
     assert "lengths in mm" in table.splitlines()[0] and "task size 93.9 mm" in table.splitlines()[0]
-    for row in table.splitlines()[2:7]:
+    mu_col = [c.strip() for c in header.split("|")].index("mu min")
+    for row in table.splitlines()[3:8]:
         cells = [c.strip() for c in row.split("|")]
         if cells[-1] == "ok":
-            assert float(cells[6]) >= limits.min_transmission_deg
+            assert float(cells[mu_col]) >= limits.min_transmission_deg
     strict = write(tmp_path, "strict.toml", LID + "[limits]\nmin_transmission_deg = 38.5\nmax_link_ratio = 4\n")
     assert main(["pivots", str(strict), "--top", "5"]) == 0
     table = capsys.readouterr().out

@@ -265,6 +265,9 @@ fn limits_and_input_requirements_filter_the_mask() {
         min_transmission: 0.0,
         max_link_ratio: f64::INFINITY,
         input: InputRequirement::Any,
+        // No margin in either (the map has no margin column to filter by
+        // here; the margin's own tests are in design_search.rs).
+        min_grashof_margin: 0.0,
         ..DesignLimits::default()
     };
     let base = f
@@ -280,6 +283,7 @@ fn limits_and_input_requirements_filter_the_mask() {
         min_transmission: 40f64.to_radians(),
         max_link_ratio: 5.0,
         input: InputRequirement::Crank,
+        min_grashof_margin: 0.0,
         ..DesignLimits::default()
     };
     let m = f

@@ -19,8 +19,9 @@ use burmester::design::{
     search_drives,
 };
 use burmester::{
-    AssemblyMode, Constraints, Control, DesignLimits, DriveError, Dyad, Error, FourBar, Grid,
-    InputRange, Point2, RankBy, SixBar, SixBarJoints, SynthesizedFourBar, Task, Vector2,
+    AssemblyMode, Constraints, Control, DesignLimits, DesignOptions, DriveError, Dyad, Error,
+    FourBar, Grid, InputRange, Point2, RankBy, SixBar, SixBarJoints, SynthesizedFourBar, Task,
+    Vector2,
 };
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
@@ -1302,4 +1303,270 @@ fn sixbar_from_joints_and_bad_input() {
     assert!(six2.min_transmission_angles().is_none());
     assert!(!six2.dead_positions().is_empty());
     assert!((0..360).any(|k| six2.solve((k as f64).to_radians()).is_err()));
+}
+
+/// The six-bar's size over the task's and its longest link, from its own
+/// link lengths (not the map's columns).
+fn sixbar_size(task: &Task, d: &Drive) -> (f64, f64) {
+    let longest = d.sixbar.lengths().links().into_iter().fold(0.0, f64::max);
+    (d.sixbar.size() / task.span(), longest)
+}
+
+/// Under finite size limits (the six-bar's size ratio and longest link), a
+/// drive map accepts no sample whose six-bar, built as a drive, is larger,
+/// and accepts every sample comfortably inside them that it accepts
+/// without them.
+#[test]
+fn size_limits_bound_every_acceptable_drive() {
+    let mut runner = TestRunner::new(common::config(1));
+    let (mut inside, mut cut, mut cases) = (0usize, 0usize, 0usize);
+    for case in 0..8 {
+        let (task, sfb) = swinging_task(&mut runner, 3 + case % 3);
+        let Some(free) = random_context(&mut runner, &sfb, 0.0) else {
+            continue;
+        };
+        let fmap = free.map(&Control::new()).unwrap();
+        // Limits through the middle of the valid drives.
+        let (mut sizes, mut longest) = (Vec::new(), Vec::new());
+        for k in (0..free.grid().len()).step_by(5) {
+            if fmap.columns.valid[k] {
+                let (s, l) = sixbar_size(&task, &free.drive_at(k).unwrap());
+                sizes.push(s);
+                longest.push(l);
+            }
+        }
+        if sizes.len() < 10 {
+            continue;
+        }
+        cases += 1;
+        sizes.sort_by(f64::total_cmp);
+        longest.sort_by(f64::total_cmp);
+        let (max_size, max_link) = (sizes[sizes.len() / 2], longest[longest.len() * 2 / 3]);
+        let limits = anything().with_size(max_size, max_link).unwrap();
+        let ctx = DriveContext::new(
+            &sfb,
+            free.attachment(),
+            free.grid(),
+            &limits,
+            &DriveOptions::default(),
+            &Constraints::none(),
+        )
+        .unwrap();
+        let map = ctx.map(&Control::new()).unwrap();
+        for k in 0..ctx.grid().len() {
+            if !map.columns.valid[k] {
+                continue;
+            }
+            let d = ctx.drive_at(k).unwrap();
+            let (s, l) = sixbar_size(&task, &d);
+            assert_eq!(d.acceptable, map.columns.acceptable[k]);
+            if map.columns.acceptable[k] {
+                assert!(s <= max_size * (1.0 + 1e-9), "size {s} over {max_size}");
+                assert!(l <= max_link * (1.0 + 1e-12), "link {l} over {max_link}");
+                inside += 1;
+            } else if fmap.columns.acceptable[k]
+                && s < max_size * (1.0 - 1e-9)
+                && l < max_link * (1.0 - 1e-12)
+            {
+                panic!("sample {k} is inside the size limits but not acceptable");
+            } else {
+                cut += 1;
+            }
+        }
+        // The best drive under the limits keeps them too.
+        if let Ok(d) = best_drive(
+            &sfb,
+            &limits,
+            &DriveOptions::default(),
+            &Constraints::none(),
+            RankBy::Balanced,
+            &Control::new(),
+        ) {
+            let (s, l) = sixbar_size(&task, &d);
+            assert!(s <= max_size * (1.0 + 1e-9) && l <= max_link * (1.0 + 1e-12));
+        }
+    }
+    eprintln!("{cases} maps: {inside} samples inside the size limits, {cut} cut");
+    assert!(
+        cases >= 4 && inside > 100 && cut > 100,
+        "{cases} {inside} {cut}"
+    );
+}
+
+/// A design search with a motor on the example by the balanced score
+/// (whose second design on these small coarse grids is a triple-rocker,
+/// its input swinging 56 degrees): small coarse grids, few starts.
+fn motor_options(motor: DriveOptions, input: burmester::InputRequirement) -> DesignOptions {
+    DesignOptions {
+        rank_by: RankBy::Balanced,
+        coarse_driven: 5,
+        coarse_driving: 16,
+        starts: 12,
+        limits: DesignLimits {
+            input,
+            ..DesignLimits::default()
+        },
+        motor: Some(motor),
+        ..DesignOptions::default()
+    }
+}
+
+/// With a motor every design either turns fully or has a drive whose
+/// six-bar, driven through a full crank turn by this file's own solver,
+/// reaches every pose in order on one stroke with both loops' transmission
+/// angles at least the limit; the designs are those of the search without
+/// a motor when none is passed over.
+#[test]
+fn design_with_a_motor_turns_every_design() {
+    let task = burmester::example::task();
+    let options = motor_options(DriveOptions::default(), burmester::InputRequirement::Any);
+    let report = task.design(&options, &Control::new()).unwrap();
+    assert!(!report.designs.is_empty());
+    assert_eq!(report.motor, Some(DriveOptions::default()));
+    let limit = report.limits.min_transmission;
+    let mut driven = 0;
+    for d in &report.designs {
+        let f = &d.linkage.figures;
+        match &d.drive {
+            None => assert!(f.input_full, "a swinging design without a drive"),
+            Some(drive) => {
+                assert!(!f.input_full, "a drive for a crank");
+                assert_eq!(drive.linkage, d.linkage);
+                assert!(drive.acceptable && drive.sixbar.crank_turns_fully());
+                let got = check_drive(&task, drive, 20_000);
+                assert!(
+                    got.drive_min >= limit - 1e-9,
+                    "drive loop {}",
+                    got.drive_min
+                );
+                assert!(
+                    got.motion_min >= limit - 1e-9,
+                    "motion loop {}",
+                    got.motion_min
+                );
+                assert!((got.drive_min - drive.figures.drive_transmission).abs() < 1e-6);
+                assert!((got.motion_min - drive.figures.motion_transmission).abs() < 1e-6);
+                driven += 1;
+            }
+        }
+    }
+    assert!(driven >= 1, "no design needed a drive");
+    eprintln!(
+        "{} designs, {driven} driven, {} passed over",
+        report.designs.len(),
+        report.undriven
+    );
+    if report.undriven == 0 {
+        let plain = task
+            .design(
+                &DesignOptions {
+                    motor: None,
+                    ..options.clone()
+                },
+                &Control::new(),
+            )
+            .unwrap();
+        let a: Vec<_> = plain.designs.iter().map(|d| d.linkage).collect();
+        let b: Vec<_> = report.designs.iter().map(|d| d.linkage).collect();
+        assert_eq!(a, b, "a motor changed the designs without passing any over");
+        assert!(plain.designs.iter().all(|d| d.drive.is_none()));
+    }
+}
+
+/// A time ratio no drive reaches (1 with a swing margin) passes every
+/// swinging design over: counted, fewer designs, never an error; with a
+/// rocker input required nothing is left.
+#[test]
+fn impossible_drives_are_passed_over() {
+    let task = burmester::example::task();
+    let impossible = DriveOptions::from_degrees(5.0, 1.0).unwrap();
+    let feasible = task
+        .design(
+            &motor_options(DriveOptions::default(), burmester::InputRequirement::Any),
+            &Control::new(),
+        )
+        .unwrap();
+    let any = task
+        .design(
+            &motor_options(impossible, burmester::InputRequirement::Any),
+            &Control::new(),
+        )
+        .unwrap();
+    assert!(any.undriven >= 1, "nothing passed over");
+    assert!(
+        any.designs
+            .iter()
+            .all(|d| d.linkage.figures.input_full && d.drive.is_none())
+    );
+    let swinging = feasible
+        .designs
+        .iter()
+        .filter(|d| d.drive.is_some())
+        .count();
+    assert!(swinging >= 1);
+    assert!(any.designs.len() <= feasible.designs.len());
+    let rockers = task
+        .design(
+            &motor_options(impossible, burmester::InputRequirement::Rocker),
+            &Control::new(),
+        )
+        .unwrap();
+    assert!(rockers.designs.is_empty() && rockers.undriven >= 1);
+    // The input requirement still filters the four-bars: cranks need no
+    // drive.
+    let cranks = task
+        .design(
+            &motor_options(impossible, burmester::InputRequirement::Crank),
+            &Control::new(),
+        )
+        .unwrap();
+    assert_eq!(cranks.undriven, 0);
+    assert!(cranks.designs.iter().all(|d| d.linkage.figures.input_full));
+}
+
+/// The motor's options are checked, the most designs are allowed, and a
+/// cancelled search says so.
+#[test]
+fn motor_design_bounds_and_cancelling() {
+    let task = burmester::example::task();
+    let bad = DesignOptions {
+        motor: Some(DriveOptions {
+            swing_margin: -0.1,
+            max_time_ratio: 2.0,
+        }),
+        ..DesignOptions::default()
+    };
+    let e = task.design(&bad, &Control::new()).unwrap_err();
+    assert!(e.to_string().contains("swing_margin"), "{e}");
+    let bad = DesignOptions {
+        motor: Some(DriveOptions {
+            swing_margin: 0.0,
+            max_time_ratio: 0.5,
+        }),
+        ..DesignOptions::default()
+    };
+    let e = task.design(&bad, &Control::new()).unwrap_err();
+    assert!(e.to_string().contains("max_time_ratio"), "{e}");
+    // The most designs.
+    let most = DesignOptions {
+        top: DesignOptions::MAX_TOP,
+        ..motor_options(DriveOptions::default(), burmester::InputRequirement::Any)
+    };
+    let r = task.design(&most, &Control::new()).unwrap();
+    assert!(!r.designs.is_empty() && r.designs.len() <= DesignOptions::MAX_TOP);
+    assert!(
+        r.designs
+            .iter()
+            .all(|d| d.linkage.figures.input_full || d.drive.is_some())
+    );
+    let too_many = DesignOptions {
+        top: DesignOptions::MAX_TOP + 1,
+        ..most.clone()
+    };
+    assert!(task.design(&too_many, &Control::new()).is_err());
+    let stop = AtomicBool::new(true);
+    let e = task
+        .design(&most, &Control::new().with_cancel(&stop))
+        .unwrap_err();
+    assert!(matches!(e, Error::Cancelled { .. }), "{e}");
 }

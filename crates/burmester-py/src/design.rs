@@ -36,19 +36,22 @@ pub struct PyDesignLimits {
 impl PyDesignLimits {
     #[new]
     #[pyo3(signature = (min_transmission_deg = Real(30.0), max_link_ratio = Real(10.0), input = "any",
-        max_size_ratio = Real(f64::INFINITY), max_link_length = Real(f64::INFINITY)),
+        max_size_ratio = Real(f64::INFINITY), max_link_length = Real(f64::INFINITY),
+        min_grashof_margin = Real(DesignLimits::DEFAULT_GRASHOF_MARGIN)),
         text_signature = "(min_transmission_deg=30.0, max_link_ratio=10.0, input='any', \
-        max_size_ratio=inf, max_link_length=inf)")]
+        max_size_ratio=inf, max_link_length=inf, min_grashof_margin=0.01)")]
     fn new(
         min_transmission_deg: Real,
         max_link_ratio: Real,
         input: &str,
         max_size_ratio: Real,
         max_link_length: Real,
+        min_grashof_margin: Real,
     ) -> PyResult<Self> {
         let input = input.parse::<InputRequirement>().py()?;
         DesignLimits::from_degrees(min_transmission_deg.0, max_link_ratio.0, input)
             .and_then(|l| l.with_size(max_size_ratio.0, max_link_length.0))
+            .and_then(|l| l.with_grashof_margin(min_grashof_margin.0))
             .map(|inner| PyDesignLimits { inner })
             .py()
     }
@@ -75,13 +78,18 @@ impl PyDesignLimits {
     fn max_link_length(&self) -> f64 {
         self.inner.max_link_length
     }
-    fn __getnewargs__(&self) -> (f64, f64, &'static str, f64, f64) {
+    #[getter]
+    fn min_grashof_margin(&self) -> f64 {
+        self.inner.min_grashof_margin
+    }
+    fn __getnewargs__(&self) -> (f64, f64, &'static str, f64, f64, f64) {
         (
             self.min_transmission_deg(),
             self.inner.max_link_ratio,
             self.inner.input.as_str(),
             self.inner.max_size_ratio,
             self.inner.max_link_length,
+            self.inner.min_grashof_margin,
         )
     }
     fn __repr__(&self) -> String {
@@ -91,6 +99,9 @@ impl PyDesignLimits {
         }
         if self.inner.max_link_length.is_finite() {
             extra += &format!(", max_link_length={:?}", self.inner.max_link_length);
+        }
+        if self.inner.min_grashof_margin != DesignLimits::DEFAULT_GRASHOF_MARGIN {
+            extra += &format!(", min_grashof_margin={:?}", self.inner.min_grashof_margin);
         }
         format!(
             "DesignLimits(min_transmission_deg={:?}, max_link_ratio={:?}, input='{}'{extra})",

@@ -385,6 +385,24 @@ pub struct PyDrive {
 }
 
 impl PyDrive {
+    /// A drive found for `task`'s linkage under these limits, options and
+    /// constraints (a design's, `burmester.design(..., input="motor")`).
+    pub(crate) fn found(
+        d: Drive,
+        task: Task,
+        limits: DesignLimits,
+        options: DriveOptions,
+        constraints: Constraints,
+    ) -> Self {
+        PyDrive {
+            inner: d,
+            task,
+            limits,
+            options,
+            constraints,
+        }
+    }
+
     fn of(d: Drive, task: Task, ctx: &DriveContext) -> Self {
         PyDrive {
             inner: d,

@@ -149,6 +149,11 @@ impl PyFourBar {
         self.inner.link_ratio()
     }
 
+    #[getter]
+    fn grashof_margin(&self) -> f64 {
+        self.inner.grashof_margin()
+    }
+
     #[pyo3(signature = (theta2, mode = "open"))]
     fn solve(&self, theta2: Real, mode: &str) -> PyResult<(f64, f64)> {
         let c = self.inner.solve(theta2.0, self::mode(mode)?).py()?;
@@ -558,6 +563,10 @@ impl PyLinkageFigures {
     #[getter]
     fn link_ratio(&self) -> f64 {
         self.inner.link_ratio
+    }
+    #[getter]
+    fn grashof_margin(&self) -> f64 {
+        self.inner.grashof_margin()
     }
     #[getter]
     fn branch_free(&self) -> bool {

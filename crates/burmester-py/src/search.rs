@@ -2,11 +2,15 @@
 //! `burmester.DesignReport` and the native half of `burmester.design`
 //! (the core's `design::search`): `_design` (the whole search in process),
 //! `_design_plan` (the three-pose coarse pass a Dask client computes) and
-//! `_design_from_atlas` (the refinement of those cells).
+//! `_design_from_atlas` (the refinement of those cells). With
+//! `input="motor"` the designs whose input swings carry their drive
+//! (`burmester.Drive`).
 
+use burmester::design::DriveOptions;
 use burmester::{
-    AtlasBest, AtlasCell, Design, DesignOptions, DesignReport, Dyad, Limit, NearMiss, PivotRegion,
-    Point2, RankBy, SearchPoint, Space, Task, Viewport,
+    AtlasBest, AtlasCell, Constraints, Design, DesignLimits, DesignOptions, DesignReport, Dyad,
+    InputRequirement, InvalidInput, Limit, NearMiss, PivotRegion, Point2, RankBy, SearchPoint,
+    Space, Task, Viewport,
 };
 use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyIndexError, PyTypeError};
@@ -15,6 +19,7 @@ use pyo3::types::{PyDict, PyTuple};
 
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::design::PyDesignLimits;
+use crate::drive::PyDrive;
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::run::run;
@@ -229,6 +234,32 @@ fn linkage_of(
 pub struct PyDesign {
     task: Task,
     inner: Design,
+    /// The drive with what it was found under (`inner.drive` for Python).
+    drive: Option<PyDrive>,
+}
+
+impl PyDesign {
+    /// A design of `report` (its drive, if any, with the limits, the motor's
+    /// options and the constraints it was found under).
+    fn of(task: Task, report: &DesignReport, d: &Design) -> Self {
+        let drive = d.drive.map(|drive| {
+            PyDrive::found(
+                drive,
+                task,
+                report.limits,
+                report.motor.unwrap_or_default(),
+                Constraints {
+                    envelope: None,
+                    ..report.space.constraints()
+                },
+            )
+        });
+        PyDesign {
+            task,
+            inner: *d,
+            drive,
+        }
+    }
 }
 
 #[pymethods]
@@ -285,8 +316,16 @@ impl PyDesign {
     fn evaluations(&self) -> usize {
         self.inner.evaluations
     }
+    /// With a motor: the drive of a linkage whose input swings (None
+    /// without a motor, or when the input turns fully).
+    #[getter]
+    fn drive(&self) -> Option<PyDrive> {
+        self.drive.clone()
+    }
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (task, driving, driven, score, size_ratio, ranked_by, kind, coarse, refined,
+        coarse_score, evaluations, drive = None))]
     fn _from_state(
         task: PyTask,
         driving: (PyPoint, PyPoint),
@@ -299,9 +338,12 @@ impl PyDesign {
         refined: [f64; 4],
         coarse_score: f64,
         evaluations: usize,
+        drive: Option<Bound<'_, PyDrive>>,
     ) -> PyResult<Self> {
         let linkage = linkage_of(&task.inner, driving, driven)?;
+        let drive = drive.map(|d| d.get().clone());
         Ok(PyDesign {
+            drive: drive.clone(),
             task: task.inner,
             inner: Design {
                 linkage,
@@ -312,6 +354,7 @@ impl PyDesign {
                 refined: point_of(kind, refined)?,
                 coarse_score,
                 evaluations,
+                drive: drive.map(|d| d.inner),
             },
         })
     }
@@ -334,6 +377,7 @@ impl PyDesign {
             refined,
             d.coarse_score,
             d.evaluations,
+            self.drive.clone(),
         )
             .into_pyobject(py)?;
         Ok((py.get_type::<PyDesign>().getattr("_from_state")?, args))
@@ -476,10 +520,7 @@ impl PyDesignReport {
         self.inner
             .designs
             .iter()
-            .map(|d| PyDesign {
-                task: self.task,
-                inner: *d,
-            })
+            .map(|d| PyDesign::of(self.task, &self.inner, d))
             .collect()
     }
     #[getter]
@@ -547,6 +588,26 @@ impl PyDesignReport {
     fn evaluations(&self) -> usize {
         self.inner.evaluations
     }
+    /// With a motor: the candidates passed over for want of a drive.
+    #[getter]
+    fn undriven(&self) -> usize {
+        self.inner.undriven
+    }
+    /// Whether the designs were searched with a motor (`input="motor"`).
+    #[getter]
+    fn motor(&self) -> bool {
+        self.inner.motor.is_some()
+    }
+    /// The motor's swing margin, degrees (None without a motor).
+    #[getter]
+    fn swing_margin_deg(&self) -> Option<f64> {
+        self.inner.motor.map(|m| m.swing_margin.to_degrees())
+    }
+    /// The motor's largest time ratio (None without a motor).
+    #[getter]
+    fn max_time_ratio(&self) -> Option<f64> {
+        self.inner.motor.map(|m| m.max_time_ratio)
+    }
     fn __len__(&self) -> usize {
         self.inner.designs.len()
     }
@@ -561,13 +622,16 @@ impl PyDesignReport {
                 "design index {index} out of range for {n} designs"
             )));
         }
-        Ok(PyDesign {
-            task: self.task,
-            inner: self.inner.designs[k as usize],
-        })
+        Ok(PyDesign::of(
+            self.task,
+            &self.inner,
+            &self.inner.designs[k as usize],
+        ))
     }
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (task, designs, limits, space, rank_by, min_separation, search_box, counts,
+        rejections, near_misses, motor = None, undriven = 0))]
     fn _from_state(
         task: PyTask,
         designs: Vec<PyDesign>,
@@ -579,6 +643,8 @@ impl PyDesignReport {
         counts: (usize, usize, usize, usize),
         rejections: Vec<(String, usize)>,
         near_misses: Vec<PyNearMiss>,
+        motor: Option<(f64, f64)>,
+        undriven: usize,
     ) -> PyResult<Self> {
         Ok(PyDesignReport {
             task: task.inner,
@@ -603,6 +669,11 @@ impl PyDesignReport {
                     .collect::<PyResult<_>>()?,
                 census: counts.3,
                 near_misses: near_misses.into_iter().map(|m| m.inner).collect(),
+                motor: motor.map(|(swing_margin, max_time_ratio)| DriveOptions {
+                    swing_margin,
+                    max_time_ratio,
+                }),
+                undriven,
             },
         })
     }
@@ -627,6 +698,8 @@ impl PyDesignReport {
             ),
             self.rejections(),
             self.near_misses(),
+            r.motor.map(|m| (m.swing_margin, m.max_time_ratio)),
+            r.undriven,
         )
             .into_pyobject(py)?;
         Ok((
@@ -669,9 +742,15 @@ fn options(
     coarse_pairs: Count,
     starts: Count,
     max_iterations: Count,
+    input: Option<&str>,
+    swing_margin_deg: Real,
+    max_time_ratio: Option<Real>,
 ) -> PyResult<DesignOptions> {
+    let mut limits = limits.map(|l| l.inner).unwrap_or_default();
+    let motor = motor_of(&mut limits, input, swing_margin_deg, max_time_ratio)?;
     Ok(DesignOptions {
-        limits: limits.map(|l| l.inner).unwrap_or_default(),
+        limits,
+        motor,
         space: space.map(|s| s.inner).unwrap_or_default(),
         rank_by: rank_by.parse::<RankBy>().py()?,
         top: top.0,
@@ -684,6 +763,53 @@ fn options(
     })
 }
 
+/// The motor's options of `input` (`"motor"`: any input, drives attached)
+/// and `limits.input` as `input` asks (`None`: the limits' own).
+fn motor_of(
+    limits: &mut DesignLimits,
+    input: Option<&str>,
+    swing_margin_deg: Real,
+    max_time_ratio: Option<Real>,
+) -> PyResult<Option<DriveOptions>> {
+    let Some(input) = input else {
+        return no_motor(swing_margin_deg, max_time_ratio, "None").map(|_| None);
+    };
+    if input.eq_ignore_ascii_case("motor") {
+        limits.input = InputRequirement::Any;
+        let q = max_time_ratio.map_or(f64::INFINITY, |r| r.0);
+        return DriveOptions::from_degrees(swing_margin_deg.0, q)
+            .py()
+            .map(Some);
+    }
+    limits.input = input.parse::<InputRequirement>().map_err(|_| {
+        crate::errors::to_py(
+            InvalidInput::UnknownName {
+                what: "input",
+                expected: "\"any\", \"crank\", \"rocker\" or \"motor\" (or None: the limits' own)",
+                found: input.to_owned(),
+            }
+            .into(),
+        )
+    })?;
+    no_motor(swing_margin_deg, max_time_ratio, input).map(|_| None)
+}
+
+/// Refuses the motor's options without a motor.
+fn no_motor(swing_margin_deg: Real, max_time_ratio: Option<Real>, input: &str) -> PyResult<()> {
+    let q = max_time_ratio.map_or(f64::INFINITY, |r| r.0);
+    if swing_margin_deg.0 != 0.0 || q != f64::INFINITY {
+        return Err(crate::errors::invalid(
+            "needs_motor",
+            format!(
+                "swing_margin_deg and max_time_ratio set the motor's drive; pass input=\"motor\" \
+                 with them (got input={input:?}, swing_margin_deg={}, max_time_ratio={q})",
+                swing_margin_deg.0
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// Defines a native design function: the keywords of `burmester.design`
 /// (after `task` and the function's own positional arguments) parsed into
 /// `opts`, then `$body`.
@@ -694,7 +820,8 @@ macro_rules! design_fn {
         #[pyo3(signature = ($task $(, $arg)*, *, space = None, limits = None, rank_by = "balanced",
             top = Count(5), min_separation = None, coarse_driven = Count(12),
             coarse_driving = Count(48), coarse_pairs = Count(120), starts = Count(48),
-            max_iterations = Count(3000), progress = None))]
+            max_iterations = Count(3000), input = None, swing_margin_deg = Real(0.0),
+            max_time_ratio = None, progress = None))]
         #[allow(clippy::too_many_arguments)]
         pub(crate) fn $name<$lt>(
             $py: Python<$lt>,
@@ -710,6 +837,9 @@ macro_rules! design_fn {
             coarse_pairs: Count,
             starts: Count,
             max_iterations: Count,
+            input: Option<&str>,
+            swing_margin_deg: Real,
+            max_time_ratio: Option<Real>,
             $progress: Option<&Bound<$lt, PyAny>>,
         ) -> PyResult<$ret> {
             let $opts = options(
@@ -723,6 +853,9 @@ macro_rules! design_fn {
                 coarse_pairs,
                 starts,
                 max_iterations,
+                input,
+                swing_margin_deg,
+                max_time_ratio,
             )?;
             $body
         }

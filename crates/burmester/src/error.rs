@@ -945,10 +945,11 @@ pub enum DriveError {
     /// No drive searched meets the limits and constraints.
     #[error(
         "no acceptable drive among {searched} candidates ({valid} of them crank-rocker drives); the \
-         best minimum transmission angle over a crank turn is {} degrees, the limit {} degrees; \
-         relax the limits (min_transmission_deg, max_link_ratio, max_time_ratio), the \
-         constraints or the swing margin, or search more attachments",
-        Num(*.best_transmission_deg), Num(*.min_transmission_deg)
+         best minimum transmission angle over a crank turn is {:.1} degrees, the limit {:.1} \
+         degrees; relax the limits (min_transmission_deg, max_link_ratio, max_time_ratio, \
+         max_size_ratio, max_link_length), the constraints or the swing margin, or search more \
+         attachments",
+        .best_transmission_deg, .min_transmission_deg
     )]
     NoAcceptableDrive {
         /// Candidate drives examined.

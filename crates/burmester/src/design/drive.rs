@@ -53,7 +53,8 @@
 //!   turns so that the working stroke, first pose to last, is the slower;
 //! * the six-bar's link ratio, its size over the task's span, and
 //!   `acceptable`: valid, the limits ([`DesignLimits`]: transmission, link
-//!   ratio), the time ratio at most `max_time_ratio`, `D0` on the base
+//!   ratio, and the six-bar's size ratio and longest link against
+//!   `max_size_ratio` and `max_link_length`), the time ratio at most `max_time_ratio`, `D0` on the base
 //!   plate and the moving links clear of the obstacles over the whole
 //!   crank turn (the clearance bound of [`Constraints`] with the speed of
 //!   the six-bar's fastest joint per unit crank angle).
@@ -339,6 +340,8 @@ struct Eval {
     time_ratio: f64,
     link_ratio: f64,
     size_ratio: f64,
+    /// The six-bar's longest link.
+    lmax: f64,
     /// `[g, r, c]`.
     lengths: [f64; 3],
     /// The drive loop's mode.
@@ -404,6 +407,7 @@ impl Swing {
             mu: o.fmin(drive_mu, o.sp(self.motion_mu)),
             time_ratio,
             link_ratio: o.div(lmax, lmin),
+            lmax,
             size_ratio: o.mul(
                 o.add(o.add(o.add(o.sp(self.members), g), r), c),
                 o.sp(self.inv_span),
@@ -427,6 +431,7 @@ impl Swing {
             time_ratio: e.time_ratio,
             link_ratio: e.link_ratio,
             size_ratio: e.size_ratio,
+            lmax: e.lmax,
             lengths: [e.g, e.r, e.c],
             mode: if e.ca > 0.0 {
                 AssemblyMode::Crossed
@@ -445,6 +450,7 @@ struct EvalLanes<S: Simd> {
     mu: V<S>,
     time_ratio: V<S>,
     link_ratio: V<S>,
+    lmax: V<S>,
     size_ratio: V<S>,
     g: V<S>,
     r: V<S>,
@@ -487,8 +493,9 @@ impl RowScratch {
 /// The lanes of one row at ordinate `y` (pulp's entry point).
 struct DriveRow<'a> {
     swing: &'a Swing,
-    /// `[min transmission, max link ratio, max time ratio]`.
-    limits: [f64; 3],
+    /// `[min transmission, max link ratio, max time ratio, max size ratio,
+    /// max link length]`.
+    limits: [f64; 5],
     y: f64,
     out: &'a mut RowScratch,
 }
@@ -501,7 +508,7 @@ impl WithSimd for DriveRow<'_> {
         let o = Ops(s);
         let out = self.out;
         let y = o.sp(self.y);
-        let [mt, mr, mq] = self.limits.map(|v| o.sp(v));
+        let [mt, mr, mq, ms, ml] = self.limits.map(|v| o.sp(v));
         let (one, two, zero) = (o.sp(1.0), o.sp(2.0), o.sp(0.0));
         let xs = S::as_simd_f64s(&out.xs).0;
         let flags = S::as_mut_simd_f64s(&mut out.flags).0;
@@ -513,8 +520,11 @@ impl WithSimd for DriveRow<'_> {
         for (c, &x) in xs.iter().enumerate() {
             let e = self.swing.lanes(o, x, y);
             let meets = o.and(
-                o.and(e.valid, o.ge(e.mu, mt)),
-                o.and(o.le(e.link_ratio, mr), o.le(e.time_ratio, mq)),
+                o.and(
+                    o.and(e.valid, o.ge(e.mu, mt)),
+                    o.and(o.le(e.link_ratio, mr), o.le(e.time_ratio, mq)),
+                ),
+                o.and(o.le(e.size_ratio, ms), o.le(e.lmax, ml)),
             );
             flags[c] = o.add(o.sel(e.valid, one, zero), o.sel(meets, two, zero));
             mu[c] = e.mu;
@@ -847,11 +857,7 @@ impl DriveContext {
         if judge.prepared.obstacles.is_empty() {
             // The rows on SIMD lanes (the scalar path's bits), then the
             // columns from them; the base plate per sample where given.
-            let limits = [
-                self.limits.min_transmission,
-                self.limits.max_link_ratio,
-                self.options.max_time_ratio,
-            ];
+            let limits = self.lane_limits();
             let plate = !judge.prepared.is_empty();
             // Made on a block's first row: a cancelled map allocates none.
             let init = || Ok(None::<RowScratch>);
@@ -881,6 +887,17 @@ impl DriveContext {
             }
             true
         })
+    }
+
+    /// The limits of [`DriveRow`]'s lanes.
+    fn lane_limits(&self) -> [f64; 5] {
+        [
+            self.limits.min_transmission,
+            self.limits.max_link_ratio,
+            self.options.max_time_ratio,
+            self.limits.max_size_ratio,
+            self.limits.max_link_length,
+        ]
     }
 
     /// The prepared limits and constraints.
@@ -1058,8 +1075,9 @@ struct DriveJudge<'a> {
 }
 
 impl DriveJudge<'_> {
-    /// Whether the figures meet the limits and the time ratio (not the
-    /// constraints).
+    /// Whether the figures meet the limits (transmission, link ratio, the
+    /// six-bar's size ratio and longest link) and the time ratio (not the
+    /// constraints): [`DriveRow`]'s `meets`, comparison for comparison.
     #[inline(always)]
     fn meets(&self, e: &Eval) -> bool {
         let c = self.context;
@@ -1067,6 +1085,8 @@ impl DriveJudge<'_> {
             && e.mu >= c.limits.min_transmission
             && e.link_ratio <= c.limits.max_link_ratio
             && e.time_ratio <= c.options.max_time_ratio
+            && e.size_ratio <= c.limits.max_size_ratio
+            && e.lmax <= c.limits.max_link_length
     }
 
     /// Whether `d0` is on the base plate and the six-bar of the drive clear
@@ -1620,7 +1640,9 @@ pub fn search_drives(
 /// function the one-call design calls for a linkage whose input swings.
 /// The limits' input requirement does not apply (a drive's crank always
 /// turns fully); their transmission angle and link ratio do, for both
-/// loops and the six-bar's links.
+/// loops and the six-bar's links, and their size ratio and longest link
+/// for the whole six-bar (its size over the task's span, and every link of
+/// both loops).
 ///
 /// # Errors
 ///
@@ -1680,16 +1702,17 @@ mod tests {
     use crate::linkage::sixbar::drive_worst_cos;
 
     /// The drive map's rows on every lane width (1, 2, 4, 8 and as
-    /// dispatched) give the scalar path's bits, sample by sample.
+    /// dispatched) give the scalar path's bits, sample by sample, with and
+    /// without finite size limits (the six-bar's size ratio and longest
+    /// link).
     #[test]
     fn drive_lanes_are_the_scalar_path_on_every_width() {
         let task = crate::example::task();
         let f = task.filemon(crate::example::driven_center()).unwrap();
         let grid = Grid::new(crate::example::viewport(), 60, 60).unwrap();
-        let limits = DesignLimits::default();
         let none = Constraints::default();
         let map = f
-            .solution_map(&grid, &limits, &none, &Control::new())
+            .solution_map(&grid, &DesignLimits::default(), &none, &Control::new())
             .unwrap();
         let linkage = map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage;
         let a0 = linkage.driving.center;
@@ -1699,19 +1722,46 @@ mod tests {
             swing_margin: 0.02,
             max_time_ratio: 1.3,
         };
-        let ctx =
-            DriveContext::new(&linkage, linkage.driving.circle, &g, &limits, &opts, &none).unwrap();
+        let context = |limits: &DesignLimits| {
+            DriveContext::new(&linkage, linkage.driving.circle, &g, limits, &opts, &none).unwrap()
+        };
+        // Size limits that cut through the valid samples: the medians of
+        // their size ratios and longest links.
+        let free = context(&DesignLimits::default());
+        let (mut sizes, mut longest) = (Vec::new(), Vec::new());
+        for k in 0..g.len() {
+            let e = free.swing.eval(free.point(k));
+            if e.valid {
+                sizes.push(e.size_ratio);
+                longest.push(e.lmax);
+            }
+        }
+        sizes.sort_by(f64::total_cmp);
+        longest.sort_by(f64::total_cmp);
+        let (size, length) = (sizes[sizes.len() / 2], longest[longest.len() / 2]);
+        let d = DesignLimits::default();
+        for limits in [
+            d,
+            d.with_size(size, f64::INFINITY).unwrap(),
+            d.with_size(f64::INFINITY, length).unwrap(),
+            d.with_size(size, length).unwrap(),
+        ] {
+            let counts = lanes_against_scalar(&context(&limits), &g);
+            assert!(counts[0] > 0 && counts[1] > 0, "{counts:?} {limits:?}");
+        }
+    }
+
+    /// Checks every row of `ctx`'s grid on every lane width against the
+    /// scalar path and the map; counts the valid samples, not acceptable
+    /// and acceptable.
+    fn lanes_against_scalar(ctx: &DriveContext, g: &Grid) -> [usize; 2] {
         let judge = ctx.judge().unwrap();
-        let lim = [
-            limits.min_transmission,
-            limits.max_link_ratio,
-            opts.max_time_ratio,
-        ];
+        let lim = ctx.lane_limits();
         let mut counts = [0usize; 2];
         for j in 0..g.ny() {
             let y = g.y(j);
             let run = |f: &dyn Fn(DriveRow<'_>)| {
-                let mut scratch = RowScratch::new(&g);
+                let mut scratch = RowScratch::new(g);
                 f(DriveRow {
                     swing: &ctx.swing,
                     limits: lim,
@@ -1751,7 +1801,6 @@ mod tests {
                 }
             }
         }
-        assert!(counts[0] > 0 && counts[1] > 0, "{counts:?}");
         // And the map itself is the samples.
         let m = ctx.map(&Control::new()).unwrap();
         for k in 0..g.len() {
@@ -1765,6 +1814,7 @@ mod tests {
             assert_eq!(m.columns.time_ratio[k].to_bits(), s.time_ratio.to_bits());
             assert_eq!(m.columns.size_ratio[k].to_bits(), s.size_ratio.to_bits());
         }
+        counts
     }
 
     #[test]

@@ -62,11 +62,12 @@ const ONE_CIRCUIT: u8 = 4;
 const CCW: u8 = 8;
 const CW: u8 = 16;
 /// May meet the limits (atlas rows only): one circuit, a direction, the
-/// link ratio, the input kind, and a worst `|cos mu|` not surely past the
+/// link ratio, the Grashof margin, the input kind, and a worst `|cos mu|` not surely past the
 /// transmission limit; without it the sample is surely not acceptable.
 const MAY_MEET: u8 = 32;
 /// Meets the limits (map rows only): one circuit, a direction, the link
-/// ratio, the input kind and the minimum transmission angle, as
+/// ratio, the Grashof margin, the input kind and the minimum transmission
+/// angle, as
 /// [`DesignLimits::meets`](crate::DesignLimits::meets) tests them.
 const MEETS: u8 = 64;
 
@@ -146,6 +147,8 @@ pub(crate) struct RowOut {
     /// only).
     mu: Vec<f64>,
     ratio: Vec<f64>,
+    /// The Grashof margin (`grashof_margin_of`).
+    margin: Vec<f64>,
     members: Vec<f64>,
     flags: Vec<f64>,
     /// The Grashof class's code.
@@ -168,6 +171,7 @@ impl RowOut {
             worst: v()?,
             mu: v()?,
             ratio: v()?,
+            margin: v()?,
             members: v()?,
             flags: v()?,
             grashof: v()?,
@@ -201,10 +205,11 @@ pub(crate) struct DrivingKernel<'s> {
     point: [f64; 2],
     tiny: f64,
     /// The limits as the atlas rows test them: the largest link ratio,
-    /// the input kind, and the worst `|cos mu|` above which the
-    /// transmission limit is surely missed.
+    /// the input kind, the smallest Grashof margin, and the worst
+    /// `|cos mu|` above which the transmission limit is surely missed.
     max_ratio: f64,
     input: InputRequirement,
+    min_margin: f64,
     cos_no: f64,
     /// The transmission limit (radians) and `1 / Task::span`, for a map.
     min_transmission: f64,
@@ -248,6 +253,7 @@ impl<'s> DrivingKernel<'s> {
             tiny: sampler.judge.tiny,
             max_ratio: limits.max_link_ratio,
             input: limits.input,
+            min_margin: limits.min_grashof_margin,
             cos_no: CosBand::new(limits.min_transmission).no,
             min_transmission: limits.min_transmission,
             inv_span: sampler.judge.inv_span(),
@@ -439,6 +445,7 @@ impl<'s> DrivingKernel<'s> {
                 direction,
                 out.ratio[i],
                 flags & FULL != 0,
+                out.margin[i],
                 || band.at_least(worst),
             )
         };
@@ -782,6 +789,7 @@ impl WithSimd for Lanes<'_, '_> {
         let (l4, tiny, to_driven) = (o.sp(k.l4), o.sp(k.tiny), o.sp(k.to_driven));
         let rounding_eps = o.sp(tolerance::ROUNDING_EPS * f64::EPSILON);
         let (max_ratio, cos_no) = (o.sp(k.max_ratio), o.sp(k.cos_no));
+        let min_margin = o.sp(k.min_margin);
         let min_transmission = o.sp(k.min_transmission);
         let y = o.sp(self.y);
 
@@ -793,6 +801,7 @@ impl WithSimd for Lanes<'_, '_> {
         let out = self.out;
         let (o_qx, o_qy) = (lanes::<S>(&mut out.qx), lanes::<S>(&mut out.qy));
         let (o_worst, o_ratio) = (lanes::<S>(&mut out.worst), lanes::<S>(&mut out.ratio));
+        let o_margin = lanes::<S>(&mut out.margin);
         let (o_members, o_flags) = (lanes::<S>(&mut out.members), lanes::<S>(&mut out.flags));
         let (o_grashof, o_mu) = (lanes::<S>(&mut out.grashof), lanes::<S>(&mut out.mu));
         for (c, &x) in xs.iter().enumerate() {
@@ -907,10 +916,14 @@ impl WithSimd for Lanes<'_, '_> {
             worst = o.sel(at_g, o.fmax(worst, o.cos_mu(one, kk)), worst);
             let at_minus_g = o.inside(p_minus_g, from, to, full);
             worst = o.sel(at_minus_g, o.fmax(worst, o.cos_mu(o.sp(-1.0), kk)), worst);
-            // Link ratio; the Grashof class and the members' length
-            // (`members_length`) below, for a map.
+            // Link ratio, Grashof margin (`grashof_margin_of`); the Grashof
+            // class and the members' length (`members_length`) below, for
+            // a map.
             let longest = o.fmax(o.fmax(l1, l2), o.fmax(l3, l4));
             let shortest = o.fmin(o.fmin(l1, l2), o.fmin(l3, l4));
+            let lhs = o.add(shortest, longest);
+            let rhs = o.sub(total, lhs);
+            let margin = o.div(o.abs(o.sub(lhs, rhs)), total);
             // Zero where the linkage does not exist.
             let flags = o.sel(
                 valid,
@@ -929,6 +942,7 @@ impl WithSimd for Lanes<'_, '_> {
             o_qy[c] = qy;
             o_worst[c] = worst;
             o_ratio[c] = ratio;
+            o_margin[c] = margin;
             // The limits' tests but the transmission angle's, as
             // `meets_when` makes them.
             let input = match k.input {
@@ -938,7 +952,10 @@ impl WithSimd for Lanes<'_, '_> {
             };
             let limits = o.and(
                 o.and(o.and(valid, one_circuit), o.or(ccw, cw)),
-                o.and(o.le(ratio, max_ratio), input),
+                o.and(
+                    o.and(o.le(ratio, max_ratio), o.ge(margin, min_margin)),
+                    input,
+                ),
             );
             if whole {
                 let mu = acos(o, worst);
@@ -951,8 +968,6 @@ impl WithSimd for Lanes<'_, '_> {
             }
             if whole {
                 // The Grashof class (`grashof_of`), as its code.
-                let lhs = o.add(shortest, longest);
-                let rhs = o.sub(total, lhs);
                 let change = o.le(o.abs(o.sub(lhs, rhs)), o.mul(rounding_eps, total));
                 let by_shortest = o.sel(
                     o.eq(l1, shortest),
@@ -1052,6 +1067,16 @@ mod tests {
             DesignLimits {
                 max_size_ratio: 12.0,
                 max_link_length: 6.0,
+                ..DesignLimits::default()
+            },
+            DesignLimits {
+                min_grashof_margin: 0.0,
+                ..DesignLimits::default()
+            },
+            DesignLimits {
+                min_transmission: 0.0,
+                max_link_ratio: f64::INFINITY,
+                min_grashof_margin: 0.15,
                 ..DesignLimits::default()
             },
         ]

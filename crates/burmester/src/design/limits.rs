@@ -62,6 +62,15 @@ pub struct DesignLimits {
     /// The longest acceptable link (ground, crank, coupler or rocker), in
     /// the task's units (default: infinity, no limit).
     pub max_link_length: f64,
+    /// The smallest acceptable distance from the Grashof change point,
+    /// [`LinkageFigures::grashof_margin`]: `|s + l - p - q|` over the links'
+    /// total length (default [`DesignLimits::DEFAULT_GRASHOF_MARGIN`], 1%;
+    /// 0: no limit). A change-point linkage (every kite) is one no designer
+    /// builds: its type flips with the smallest error of a link, and a
+    /// fully turning input passes the flat position where it can switch
+    /// circuits. The margin keeps the type for every set of link errors
+    /// adding up to less than it times the links' total length.
+    pub min_grashof_margin: f64,
 }
 
 impl Default for DesignLimits {
@@ -72,11 +81,21 @@ impl Default for DesignLimits {
             input: InputRequirement::Any,
             max_size_ratio: f64::INFINITY,
             max_link_length: f64::INFINITY,
+            min_grashof_margin: Self::DEFAULT_GRASHOF_MARGIN,
         }
     }
 }
 
 impl DesignLimits {
+    /// The default [`min_grashof_margin`](Self::min_grashof_margin): 0.01,
+    /// a tolerance of 1% of each link's length (1 mm on a 100 mm link)
+    /// that cannot reach the change point. A laser-cut or stamped link
+    /// holds its hole distance to about 0.2 mm and a machined one to
+    /// 0.05 mm; the rest is for clearance in the joints and deflection.
+    /// Four links each off by 1% of its length in the worst directions
+    /// move `s + l - p - q` by at most 1% of the links' total length.
+    pub const DEFAULT_GRASHOF_MARGIN: f64 = 0.01;
+
     /// Limits with the transmission angle in degrees (as designers give
     /// it), validated.
     ///
@@ -122,6 +141,22 @@ impl DesignLimits {
         Ok(limits)
     }
 
+    /// The same limits with the smallest distance from the Grashof change
+    /// point given ([`min_grashof_margin`](Self::min_grashof_margin); 0: no
+    /// limit), validated.
+    ///
+    /// # Errors
+    ///
+    /// As [`DesignLimits::validate`].
+    pub fn with_grashof_margin(self, min_grashof_margin: f64) -> Result<Self> {
+        let limits = DesignLimits {
+            min_grashof_margin,
+            ..self
+        };
+        limits.validate()?;
+        Ok(limits)
+    }
+
     /// Whether the limits bound the linkage's size (a finite
     /// [`max_size_ratio`](Self::max_size_ratio) or
     /// [`max_link_length`](Self::max_link_length)).
@@ -140,7 +175,8 @@ impl DesignLimits {
 
     /// Checks the limits: a transmission angle in `[0, pi/2]`, a link ratio
     /// of at least 1 (infinity allowed: no limit), a size ratio of at least
-    /// 1 and a link length above 0 (infinity allowed for both).
+    /// 1, a link length above 0 (infinity allowed for both) and a Grashof
+    /// margin in `[0, 1]`.
     ///
     /// # Errors
     ///
@@ -174,6 +210,13 @@ impl DesignLimits {
             }
             .into());
         }
+        in_range(
+            "min_grashof_margin",
+            self.min_grashof_margin,
+            0.0,
+            1.0,
+            " (|s + l - p - q| over the links' total length)",
+        )?;
         Ok(())
     }
 
@@ -186,14 +229,15 @@ impl DesignLimits {
     /// [`accepts`](Self::accepts) but for the branch flag, which a
     /// three-pose driving map takes from its exact conic sweep instead of
     /// the modes: one circuit, a driving direction, the transmission angle,
-    /// the link ratio and the input kind. The one acceptance test of the
-    /// solution maps and the rankings.
+    /// the link ratio, the input kind and the Grashof margin. The one
+    /// acceptance test of the solution maps and the rankings.
     pub fn meets(&self, f: &LinkageFigures) -> bool {
         self.meets_when(
             f.one_circuit,
             f.direction,
             f.link_ratio,
             f.input_full,
+            f.grashof_margin(),
             || f.min_transmission >= self.min_transmission,
         )
     }
@@ -209,11 +253,13 @@ impl DesignLimits {
         direction: Direction,
         link_ratio: f64,
         input_full: bool,
+        grashof_margin: f64,
         transmission_ok: impl FnOnce() -> bool,
     ) -> bool {
         one_circuit
             && direction != Direction::None
             && link_ratio <= self.max_link_ratio
+            && grashof_margin >= self.min_grashof_margin
             && match self.input {
                 InputRequirement::Any => true,
                 InputRequirement::Crank => input_full,
@@ -252,6 +298,13 @@ mod tests {
         assert!(s.meets_size([1.0, 2.0, 3.0, 1.0], 5.0));
         assert!(!s.meets_size([1.0, 2.0, 3.1, 1.0], 4.0));
         assert!(!s.meets_size([1.0, 2.0, 3.0, 1.0], 5.1));
+        assert_eq!(d.min_grashof_margin, DesignLimits::DEFAULT_GRASHOF_MARGIN);
+        assert!(d.with_grashof_margin(-0.1).is_err());
+        assert!(d.with_grashof_margin(f64::NAN).is_err());
+        assert!(d.with_grashof_margin(1.5).is_err());
+        let e = d.with_grashof_margin(2.0).unwrap_err();
+        assert!(e.to_string().contains("min_grashof_margin"), "{e}");
+        assert_eq!(d.with_grashof_margin(0.0).unwrap().min_grashof_margin, 0.0);
         assert_eq!(
             "Crank".parse::<InputRequirement>().unwrap(),
             InputRequirement::Crank

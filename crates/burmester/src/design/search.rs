@@ -40,8 +40,32 @@
 //! default [`DesignOptions::DEFAULT_SEPARATION`] task sizes) of a better
 //! one's is dropped, so the list offers different linkages, not
 //! neighbours of one. Scores within
-//! [`tolerance::RANK_TIE`](crate::tolerance::RANK_TIE) tie and go to the
+//! [`tolerance::RANK_TIE`] tie and go to the
 //! smaller linkage.
+//!
+//! # With a motor
+//!
+//! With [`DesignOptions::motor`] every design returned can be turned by a
+//! motor. A design whose input turns fully
+//! ([`LinkageFigures::input_full`](crate::LinkageFigures::input_full)) is
+//! driven at its input directly ([`Design::drive`] `None`); one whose input
+//! swings gets the best drive of [`best_drive`](crate::design::best_drive)
+//! ([`Design::drive`]): a crank-rocker added to its input link (the Watt II
+//! six-bar), under the same limits (their input requirement aside: the
+//! drive's crank always turns fully; the transmission angle for both loops
+//! over a full crank turn, the link ratio, the size ratio and the longest
+//! link for the whole six-bar), the motor's [`DriveOptions`] (swing margin,
+//! time ratio), the same ranking and the space's constraints without the
+//! envelope: the drive dyad is checked against the obstacles and the base
+//! plate (the pivot region) over the whole crank turn, while the envelope
+//! applies to the four-bar over its travel, as without a motor. A design
+//! for which no drive is acceptable is passed over
+//! ([`DesignReport::undriven`] counts them) and the next distinct
+//! candidate is taken, so up to `top` designs are still returned; the
+//! drives are searched lazily, in rank order, only for candidates that
+//! pass the separation test. The limits' input requirement still filters
+//! the four-bars: with [`InputRequirement::Crank`] no drive is ever
+//! needed, with [`InputRequirement::Rocker`] every design gets one.
 //!
 //! # When nothing fits
 //!
@@ -62,6 +86,7 @@ use rayon::prelude::*;
 
 use crate::design::atlas::check_scored;
 use crate::design::constraints::Prepared;
+use crate::design::drive::{Drive, DriveOptions};
 use crate::design::rank::tie_order;
 use crate::design::space::{PivotRegion, Space};
 use crate::design::{AtlasCell, DesignLimits, InputRequirement, RankBy};
@@ -72,6 +97,8 @@ use crate::linkage::Direction;
 use crate::synthesis::curves::{FivePositions, FourPositions};
 use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
 use crate::tolerance;
+
+mod motor;
 
 /// What to search for and how finely (see the [module docs](self)).
 #[derive(Debug, Clone, PartialEq)]
@@ -107,6 +134,10 @@ pub struct DesignOptions {
     /// Nelder–Mead iterations per refinement, all rounds together (1 to
     /// [`DesignOptions::MAX_ITERATIONS`], default 3000).
     pub max_iterations: usize,
+    /// With `Some`, every design can be turned by a motor: one whose input
+    /// swings gets the best drive under these options ([`Design::drive`];
+    /// module docs, "With a motor"); default `None`: the four-bars alone.
+    pub motor: Option<DriveOptions>,
 }
 
 impl Default for DesignOptions {
@@ -122,6 +153,7 @@ impl Default for DesignOptions {
             coarse_pairs: Self::DEFAULT_COARSE_PAIRS,
             starts: 48,
             max_iterations: 3000,
+            motor: None,
         }
     }
 }
@@ -155,7 +187,8 @@ impl DesignOptions {
     /// [`InvalidInput::CountOutOfRange`] naming the count out of range;
     /// [`InvalidInput::OutsideRange`] for a negative or non-finite
     /// separation; [`InvalidInput::UnknownName`] for a ranking without a
-    /// score; as [`Space::validate`].
+    /// score; as [`Space::validate`]; as [`DriveOptions::validate`] for the
+    /// motor's options.
     pub fn validate(&self, task: &Task) -> Result<()> {
         count_in("top", self.top, 1, Self::MAX_TOP)?;
         count_in(
@@ -182,6 +215,9 @@ impl DesignOptions {
             in_range("min_separation", s, 0.0, f64::MAX, "")?;
         }
         check_scored(self.rank_by, "design ranking")?;
+        if let Some(motor) = &self.motor {
+            motor.validate()?;
+        }
         self.space.validate(task, &self.limits)
     }
 
@@ -240,6 +276,11 @@ pub struct Design {
     pub coarse_score: f64,
     /// How many linkages its refinement judged.
     pub evaluations: usize,
+    /// With a motor ([`DesignOptions::motor`]): the drive added to a
+    /// linkage whose input swings (the six-bar a motor turns through the
+    /// poses, [`best_drive`](crate::design::best_drive)); `None` without a
+    /// motor, or when the input turns fully (the motor turns it directly).
+    pub drive: Option<Drive>,
 }
 
 /// A limit or a check a candidate can fail.
@@ -256,6 +297,9 @@ pub enum Limit {
     LinkRatio,
     /// The input is not of the required kind (crank or rocker).
     Input,
+    /// The linkage is nearer the Grashof change point than allowed
+    /// ([`DesignLimits::min_grashof_margin`]).
+    GrashofMargin,
     /// The linkage is larger, relative to the task, than allowed.
     SizeRatio,
     /// A link is longer than allowed.
@@ -270,12 +314,13 @@ pub enum Limit {
 
 impl Limit {
     /// Every limit, in the order they are checked.
-    pub const ALL: [Limit; 10] = [
+    pub const ALL: [Limit; 11] = [
         Limit::BranchDefect,
         Limit::Order,
         Limit::Transmission,
         Limit::LinkRatio,
         Limit::Input,
+        Limit::GrashofMargin,
         Limit::SizeRatio,
         Limit::LinkLength,
         Limit::PivotRegion,
@@ -284,7 +329,7 @@ impl Limit {
     ];
 
     /// A short name: `"branch_defect"`, `"order"`, `"transmission"`,
-    /// `"link_ratio"`, `"input"`, `"size_ratio"`, `"link_length"`,
+    /// `"link_ratio"`, `"input"`, `"grashof_margin"`, `"size_ratio"`, `"link_length"`,
     /// `"pivot_region"`, `"obstacles"` or `"envelope"`.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -293,6 +338,7 @@ impl Limit {
             Limit::Transmission => "transmission",
             Limit::LinkRatio => "link_ratio",
             Limit::Input => "input",
+            Limit::GrashofMargin => "grashof_margin",
             Limit::SizeRatio => "size_ratio",
             Limit::LinkLength => "link_length",
             Limit::PivotRegion => "pivot_region",
@@ -316,7 +362,8 @@ pub struct NearMiss {
     /// The limits it misses.
     pub misses: Vec<Limit>,
     /// By how much, the worst of its relative shortfalls: the transmission
-    /// angle's `(limit - mu) / limit`, the link ratio's, size ratio's and
+    /// angle's `(limit - mu) / limit`, the Grashof margin's
+    /// `(limit - margin) / limit`, the link ratio's, size ratio's and
     /// link length's `value / limit - 1`, a pivot's distance outside the
     /// region over the task's size, and 1 for the wrong input kind, an
     /// obstacle hit or the envelope left. Smaller is nearer.
@@ -355,6 +402,13 @@ pub struct DesignReport {
     /// When there are no designs: the nearest misses, nearest first, at
     /// most `top`, distinct as the designs are.
     pub near_misses: Vec<NearMiss>,
+    /// The motor's options, where the designs were searched with one
+    /// ([`DesignOptions::motor`]).
+    pub motor: Option<DriveOptions>,
+    /// With a motor: the candidates passed over because no drive for them
+    /// was acceptable (each would have been a design: acceptable and
+    /// distinct from the better designs); 0 without a motor.
+    pub undriven: usize,
 }
 
 impl DesignReport {
@@ -458,6 +512,18 @@ impl<'a> Exact<'a> {
     /// `all` every limit is checked (a census), else it stops at the first
     /// failure.
     fn judge(&self, driving: &Dyad, driven: &Dyad, all: bool) -> Option<Verdict> {
+        self.judge_with(driving, driven, all, self.limits.min_grashof_margin)
+    }
+
+    /// [`judge`](Self::judge) with the Grashof margin `min_margin` in
+    /// place of the limits' own (a refinement's relaxed phase passes 0).
+    fn judge_with(
+        &self,
+        driving: &Dyad,
+        driven: &Dyad,
+        all: bool,
+        min_margin: f64,
+    ) -> Option<Verdict> {
         let linkage = self.task.four_bar(driving, driven).ok()?;
         let f = linkage.figures;
         let size_ratio = linkage.size() / self.span;
@@ -506,6 +572,14 @@ impl<'a> Exact<'a> {
         if !input_ok {
             fail(&mut v, Limit::Input, 1.0);
         }
+        let margin = f.grashof_margin();
+        if margin < min_margin {
+            fail(
+                &mut v,
+                Limit::GrashofMargin,
+                (min_margin - margin) / min_margin,
+            );
+        }
         if size_ratio > lim.max_size_ratio {
             fail(
                 &mut v,
@@ -528,7 +602,10 @@ impl<'a> Exact<'a> {
         if !self.region.contains(driving.center) || !self.region.contains(driven.center) {
             fail(&mut v, Limit::PivotRegion, outside / self.span);
         }
-        if v.fails != 0 && !all {
+        // A linkage missing only the Grashof margin goes on to its raw
+        // score: the refinement's penalty then slopes off the change
+        // point instead of walling it off.
+        if v.fails & !Limit::GrashofMargin.bit() != 0 && !all {
             return Some(v);
         }
         // The motion's checks need a feasible motion.
@@ -555,16 +632,24 @@ impl<'a> Exact<'a> {
 /// negated score's formula plus a penalty of [`PENALTY`] times its
 /// shortfall (relative to the score's size), so the simplex slides along a
 /// limit's boundary instead of stalling at it; [`BARRIER`] for one without
-/// a feasible motion (or no linkage). Keeps the best acceptable verdict
-/// seen: the answer is always acceptable.
-struct Objective<'a, F: Fn(&[f64]) -> Option<Verdict>> {
+/// a feasible motion (or no linkage). Points are judged with the Grashof
+/// margin `judged_margin` (the limits' own, or 0 in a relaxed phase of
+/// [`refine`]). Keeps the best verdict seen that meets every limit with
+/// the limits' own margin `strict_margin`: the answer is always
+/// acceptable.
+struct Objective<'a, F: Fn(&[f64], f64) -> Option<Verdict>> {
     eval: F,
     control: &'a Control<'a>,
     evaluations: Cell<usize>,
+    judged_margin: f64,
+    strict_margin: f64,
     best: RefCell<Option<(f64, Vec<f64>, Verdict)>>,
+    /// The best point of the current phase (acceptable as judged) and its
+    /// cost: where its rounds restart.
+    phase_best: RefCell<Option<(f64, Vec<f64>, f64)>>,
 }
 
-impl<F: Fn(&[f64]) -> Option<Verdict>> CostFunction for Objective<'_, F> {
+impl<F: Fn(&[f64], f64) -> Option<Verdict>> CostFunction for Objective<'_, F> {
     type Param = Vec<f64>;
     type Output = f64;
 
@@ -573,7 +658,7 @@ impl<F: Fn(&[f64]) -> Option<Verdict>> CostFunction for Objective<'_, F> {
             return Ok(BARRIER);
         }
         self.evaluations.set(self.evaluations.get() + 1);
-        let Some(v) = (self.eval)(x) else {
+        let Some(v) = (self.eval)(x, self.judged_margin) else {
             return Ok(BARRIER);
         };
         if !v.acceptable() {
@@ -585,6 +670,25 @@ impl<F: Fn(&[f64]) -> Option<Verdict>> CostFunction for Objective<'_, F> {
             });
         }
         let cost = -v.score.unwrap_or(f64::NAN);
+        {
+            // The same rule as the best's below: a relaxed phase refines
+            // as a search without the margin would.
+            let mut phase = self.phase_best.borrow_mut();
+            let better = match &*phase {
+                None => true,
+                Some((c, _, size)) => {
+                    cost < *c - tolerance::RANK_TIE
+                        || (cost <= *c + tolerance::RANK_TIE && v.size_ratio < *size)
+                }
+            };
+            if better {
+                *phase = Some((cost, x.clone(), v.size_ratio));
+            }
+        }
+        // Judged with a relaxed margin, acceptable only at the limits' own.
+        if v.linkage.figures.grashof_margin() < self.strict_margin {
+            return Ok(cost);
+        }
         let mut best = self.best.borrow_mut();
         let better = match &*best {
             None => true,
@@ -613,23 +717,80 @@ const ROUNDS: [f64; 6] = [1.0, 0.5, 0.25, 1.0, 0.125, 0.03125];
 /// Nelder–Mead from `x0` with initial steps `h` (one per coordinate), in
 /// the [`ROUNDS`]; the best acceptable verdict and where, and the
 /// evaluations.
-fn refine<F: Fn(&[f64]) -> Option<Verdict>>(
+///
+/// With a Grashof margin in the limits (`strict_margin > 0`) the
+/// refinement is continued: after those rounds, the [`ROUNDS`] from `x0`
+/// judged without the margin (`iterations` more: as a search without it
+/// would refine), then the [`ROUNDS`] judged with it from where that phase
+/// ended (half of `iterations` more). The best linkages of a task often
+/// lie along the change point's ridge `s + l = p + q` (kites, whose even
+/// links the balanced score favours), which the margin cuts out of the
+/// acceptable set: refined with the margin alone, the simplex stops short
+/// of the band around the ridge (the hood of `examples/hood.toml` gave
+/// 0.338 against 0.419 continued). The relaxed phase walks the ridge (and
+/// passes linkages meeting the margin that a search without it finds);
+/// the strict phase, whose cost slopes off the ridge (a linkage missing
+/// only the margin gets [`PENALTY`], not [`BARRIER`]), steps off to the
+/// nearest linkage meeting the margin. Only linkages meeting every limit,
+/// the margin included, are kept (the start is one), so the answer is
+/// never worse than the start nor than the first rounds alone.
+fn refine<F: Fn(&[f64], f64) -> Option<Verdict>>(
     eval: F,
     x0: &[f64],
     h: &[f64],
     iterations: usize,
+    strict_margin: f64,
     control: &Control<'_>,
 ) -> (Option<(Vec<f64>, Verdict)>, usize) {
     let mut objective = Objective {
         eval,
         control,
         evaluations: Cell::new(0),
+        judged_margin: strict_margin,
+        strict_margin,
         best: RefCell::new(None),
+        phase_best: RefCell::new(None),
     };
     // The start must be acceptable.
     if objective.cost(&x0.to_vec()).map_or(true, |c| c >= BARRIER) {
         return (None, objective.evaluations.get());
     }
+    let Some(o) = rounds(objective, x0, h, iterations, false, control) else {
+        return (None, 0);
+    };
+    objective = o;
+    if strict_margin > 0.0 {
+        objective.judged_margin = 0.0;
+        *objective.phase_best.get_mut() = None;
+        let Some(o) = rounds(objective, x0, h, iterations, true, control) else {
+            return (None, 0);
+        };
+        objective = o;
+        let ridge = objective.phase_best.get_mut().take().map(|(_, x, _)| x);
+        objective.judged_margin = strict_margin;
+        let from = ridge.unwrap_or_else(|| x0.to_vec());
+        let Some(o) = rounds(objective, &from, h, iterations.div_ceil(2), true, control) else {
+            return (None, 0);
+        };
+        objective = o;
+    }
+    let evaluations = objective.evaluations.get();
+    let best = objective.best.into_inner().map(|(_, x, v)| (x, v));
+    (best, evaluations)
+}
+
+/// The [`ROUNDS`] of Nelder–Mead from `x0` (after the first round, from
+/// the best acceptable point, or with `from_phase` the phase's best),
+/// `iterations` shared between them; the objective back (`None` where the
+/// solver failed).
+fn rounds<'a, F: Fn(&[f64], f64) -> Option<Verdict>>(
+    mut objective: Objective<'a, F>,
+    x0: &[f64],
+    h: &[f64],
+    iterations: usize,
+    from_phase: bool,
+    control: &Control<'_>,
+) -> Option<Objective<'a, F>> {
     let per_round = iterations.div_ceil(ROUNDS.len());
     let mut left = iterations;
     for scale in ROUNDS {
@@ -638,10 +799,16 @@ fn refine<F: Fn(&[f64]) -> Option<Verdict>>(
             break;
         }
         left -= budget;
-        let from = match &*objective.best.borrow() {
-            Some((_, x, _)) => x.clone(),
-            None => x0.to_vec(),
+        let at = if from_phase {
+            objective
+                .phase_best
+                .borrow()
+                .as_ref()
+                .map(|(_, x, _)| x.clone())
+        } else {
+            objective.best.borrow().as_ref().map(|(_, x, _)| x.clone())
         };
+        let from = at.unwrap_or_else(|| x0.to_vec());
         let mut simplex = vec![from.clone()];
         for (k, hk) in h.iter().enumerate() {
             let mut v = from.clone();
@@ -663,14 +830,9 @@ fn refine<F: Fn(&[f64]) -> Option<Verdict>>(
             .configure(|s| s.max_iters(budget as u64))
             .timer(false)
             .run();
-        match run.ok().and_then(|mut r| r.problem.take_problem()) {
-            Some(p) => objective = p,
-            None => return (None, 0),
-        }
+        objective = run.ok().and_then(|mut r| r.problem.take_problem())?;
     }
-    let evaluations = objective.evaluations.get();
-    let best = objective.best.into_inner().map(|(_, x, v)| (x, v));
-    (best, evaluations)
+    Some(objective)
 }
 
 /// The distance between two designs: the larger of their driving pivots'
@@ -722,13 +884,7 @@ fn pick_starts(mut cand: Vec<Start>, sep: f64, n: usize) -> Vec<Start> {
 /// The designs, best first (ties to the smaller size), at least `sep`
 /// apart, at most `top`.
 fn rank_designs(mut all: Vec<Design>, sep: f64, top: usize) -> Vec<Design> {
-    all.sort_by(|a, b| {
-        if (a.score - b.score).abs() <= tolerance::RANK_TIE {
-            a.size_ratio.total_cmp(&b.size_ratio)
-        } else {
-            b.score.total_cmp(&a.score)
-        }
-    });
+    sort_designs(&mut all);
     let mut out: Vec<Design> = Vec::new();
     for d in all {
         if out.len() >= top {
@@ -739,6 +895,17 @@ fn rank_designs(mut all: Vec<Design>, sep: f64, top: usize) -> Vec<Design> {
         }
     }
     out
+}
+
+/// The designs best first (ties to the smaller size).
+fn sort_designs(all: &mut [Design]) {
+    all.sort_by(|a, b| {
+        if (a.score - b.score).abs() <= tolerance::RANK_TIE {
+            a.size_ratio.total_cmp(&b.size_ratio)
+        } else {
+            b.score.total_cmp(&a.score)
+        }
+    });
 }
 
 /// Progress of the whole search in thousandths: the coarse pass the first
@@ -870,6 +1037,8 @@ impl Task {
             rejections: Vec::new(),
             census: 0,
             near_misses: Vec::new(),
+            motor: options.motor,
+            undriven: 0,
         }
     }
 
@@ -913,10 +1082,10 @@ impl Task {
             plan.driven.dx(),
             plan.driven.dy(),
         ];
-        let eval = |x: &[f64]| {
+        let eval = |x: &[f64], margin: f64| {
             let a = self.dyad_from_center(Point2::new(x[0], x[1])).ok()?;
             let c = self.dyad_from_center(Point2::new(x[2], x[3])).ok()?;
-            exact.judge(&a, &c, false)
+            exact.judge_with(&a, &c, false, margin)
         };
         let refined = self.refine_starts(
             &starts,
@@ -936,7 +1105,7 @@ impl Task {
             },
         )?;
         report.evaluations = refined.iter().map(|d| d.evaluations).sum();
-        report.designs = rank_designs(refined, sep, options.top);
+        report.designs = self.finish_designs(refined, options, &mut report, control)?;
         if report.designs.is_empty() {
             self.census_three(&exact, options, plan, &mut report, control)?;
         }
@@ -954,7 +1123,7 @@ impl Task {
         options: &DesignOptions,
         control: &Control<'_>,
         x0: impl Fn(&Start) -> Option<Vec<f64>> + Sync,
-        eval: &(dyn Fn(&[f64]) -> Option<Verdict> + Sync),
+        eval: &(dyn Fn(&[f64], f64) -> Option<Verdict> + Sync),
         at: impl Fn(&[f64]) -> SearchPoint + Sync,
     ) -> Result<Vec<Design>> {
         let done = AtomicUsize::new(0);
@@ -963,7 +1132,14 @@ impl Task {
             .par_iter()
             .map(|s| {
                 let x = x0(s)?;
-                let (best, evaluations) = refine(eval, &x, h, options.max_iterations, control);
+                let (best, evaluations) = refine(
+                    eval,
+                    &x,
+                    h,
+                    options.max_iterations,
+                    options.limits.min_grashof_margin,
+                    control,
+                );
                 let d = done.fetch_add(1, Ordering::Relaxed) + 1;
                 control.report(COARSE_SHARE + (PROGRESS - COARSE_SHARE) * d / n, PROGRESS);
                 let (xb, v) = best?;
@@ -976,6 +1152,7 @@ impl Task {
                     refined: at(&xb),
                     coarse_score: s.score,
                     evaluations,
+                    drive: None,
                 })
             })
             .collect();
@@ -1154,13 +1331,13 @@ impl Task {
             .collect();
         let starts = pick_starts(cand, sep, options.starts);
         let step = length / n as f64;
-        let eval = |x: &[f64]| {
+        let eval = |x: &[f64], margin: f64| {
             if !(0.0..=length).contains(&x[0]) || !(0.0..=length).contains(&x[1]) {
                 return None;
             }
             let a = four.dyad_at_parameter(x[0]).ok()?;
             let d = four.dyad_at_parameter(x[1]).ok()?;
-            exact.judge(&a.dyad(), &d.dyad(), false)
+            exact.judge_with(&a.dyad(), &d.dyad(), false, margin)
         };
         let refined = self.refine_starts(
             &starts,
@@ -1178,7 +1355,7 @@ impl Task {
             },
         )?;
         report.evaluations = refined.iter().map(|d| d.evaluations).sum();
-        report.designs = rank_designs(refined, sep, options.top);
+        report.designs = self.finish_designs(refined, options, &mut report, control)?;
         if report.designs.is_empty() {
             let m = CENSUS_PAIRS.min(n);
             let dyads: Vec<Dyad> = four
@@ -1207,7 +1384,6 @@ impl Task {
     /// Five poses: every ordered pair of Burmester points.
     fn design_five(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
         let exact = Exact::new(self, options, control)?;
-        let sep = options.separation(self);
         let five = FivePositions::new(self.poses())?;
         let points = five.burmester_points();
         let mut report = self.report(options, None);
@@ -1244,12 +1420,13 @@ impl Task {
                         refined: at,
                         coarse_score: score,
                         evaluations: 1,
+                        drive: None,
                     });
                 }
             }
         }
         report.evaluations = report.coarse_candidates;
-        report.designs = rank_designs(all, sep, options.top);
+        report.designs = self.finish_designs(all, options, &mut report, control)?;
         if report.designs.is_empty() {
             self.census(&exact, options, &pairs, &mut report, control)?;
         }

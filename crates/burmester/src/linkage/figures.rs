@@ -149,6 +149,25 @@ impl LinkageFigures {
     pub fn input_rocks(&self) -> bool {
         !self.input_full
     }
+
+    /// How far the linkage is from the Grashof change point, as a part of
+    /// the links' total length:
+    ///
+    /// ```text
+    /// |s + l - p - q| / (s + l + p + q)     in [0, 1)
+    /// ```
+    ///
+    /// (`s` shortest, `l` longest). Zero at a change point (every kite, two
+    /// pairs of equal adjacent links, is one), where the type flips with
+    /// the smallest error of a link and a fully turning input passes the
+    /// flat position in which the linkage can switch circuits. The type
+    /// holds for every set of link errors adding up to less than the margin
+    /// times the links' total length (each link off by less than the margin
+    /// times its own length); [`DesignLimits::min_grashof_margin`](crate::DesignLimits::min_grashof_margin)
+    /// is the limit on it.
+    pub fn grashof_margin(&self) -> f64 {
+        super::grashof::grashof_margin_of(self.lengths)
+    }
 }
 
 /// A monotone pseudo-angle of `v` measured counter-clockwise from `r`, in

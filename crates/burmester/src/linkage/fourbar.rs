@@ -903,6 +903,13 @@ impl FourBar {
         grashof_of(self.lengths())
     }
 
+    /// How far the linkage is from the Grashof change point:
+    /// `|s + l - p - q| / (s + l + p + q)` (see
+    /// [`LinkageFigures::grashof_margin`](crate::LinkageFigures::grashof_margin)).
+    pub fn grashof_margin(&self) -> f64 {
+        crate::linkage::grashof::grashof_margin_of(self.lengths())
+    }
+
     /// Where the input link can be: all the way round, or the arcs between
     /// its dead positions.
     ///

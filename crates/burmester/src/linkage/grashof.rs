@@ -191,6 +191,36 @@ pub(crate) fn grashof_of(lengths: [f64; 4]) -> Grashof {
     }
 }
 
+/// The Grashof margin of the positive, finite lengths `[ground, crank,
+/// coupler, rocker]`: how far the linkage is from the change point, as a
+/// part of the links' total length,
+///
+/// ```text
+/// margin = |s + l - p - q| / (s + l + p + q)     in [0, 1)
+/// ```
+///
+/// with `s` the shortest, `l` the longest and `p`, `q` the other two links
+/// (zero at a change point, such as every kite: two pairs of equal
+/// adjacent links). The sum is the tolerance it stands for: along any
+/// change of the lengths, `s + l - p - q` (continuous, and on each piece
+/// of the order of the links a sum of the four lengths with signs `+ + - -`)
+/// moves by at most the sum of the links' errors, so the type (and the
+/// linkage's distance from a change point) survives every error of the
+/// links that adds up to less than `margin` times their total length: in
+/// particular every link off by less than `margin` times its own length.
+/// Computed as [`grashof_of`] sums (the same bits in the solution maps'
+/// lanes).
+#[inline(always)]
+pub(crate) fn grashof_margin_of(lengths: [f64; 4]) -> f64 {
+    let [l1, l2, l3, l4] = lengths;
+    let max = fmax(fmax(l1, l2), fmax(l3, l4));
+    let min = fmin(fmin(l1, l2), fmin(l3, l4));
+    let sum = l1 + l2 + l3 + l4;
+    let lhs = min + max;
+    let rhs = sum - lhs;
+    (lhs - rhs).abs() / sum
+}
+
 /// `max(a, b)` for numbers known not to be NaN (no branch on NaN).
 #[inline(always)]
 pub(crate) fn fmax(a: f64, b: f64) -> f64 {
