@@ -313,7 +313,7 @@ SECTIONS.append(
             "`Task::design` with its default options on the built-in example (balanced "
             "ranking, default limits with the Grashof margin of 0.01, pivots anywhere): the "
             "coarse pass (the pivot-pair atlas, 12 driven x 48 driving pivots along the search "
-            "box's side), then 48 starts refined by Nelder-Mead on the exact figures (up to 1000 "
+            "box's side), then 48 starts refined by Nelder-Mead on the exact figures (up to 3000 "
             "iterations each, in three phases across the margin's band). The brute force is the "
             "loop a designer would "
             "write: for every driven pivot of a 48 x 48 grid over the same box, the solution map "

@@ -53,7 +53,7 @@ def design(
     coarse_driving: int = 48,
     coarse_pairs: int = 120,
     starts: int = 48,
-    max_iterations: int = 1000,
+    max_iterations: int = 3000,
     tile_rows: Optional[int] = None,
     input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
     swing_margin_deg: float = 0.0,

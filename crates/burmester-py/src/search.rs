@@ -820,7 +820,7 @@ macro_rules! design_fn {
         #[pyo3(signature = ($task $(, $arg)*, *, space = None, limits = None, rank_by = "balanced",
             top = Count(5), min_separation = None, coarse_driven = Count(12),
             coarse_driving = Count(48), coarse_pairs = Count(120), starts = Count(48),
-            max_iterations = Count(1000), input = None, swing_margin_deg = Real(0.0),
+            max_iterations = Count(3000), input = None, swing_margin_deg = Real(0.0),
             max_time_ratio = None, progress = None))]
         #[allow(clippy::too_many_arguments)]
         pub(crate) fn $name<$lt>(

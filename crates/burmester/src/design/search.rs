@@ -132,7 +132,7 @@ pub struct DesignOptions {
     /// [`DesignOptions::MAX_STARTS`], default 48).
     pub starts: usize,
     /// Nelder–Mead iterations per refinement, all rounds together (1 to
-    /// [`DesignOptions::MAX_ITERATIONS`], default 1000).
+    /// [`DesignOptions::MAX_ITERATIONS`], default 3000).
     pub max_iterations: usize,
     /// With `Some`, every design can be turned by a motor: one whose input
     /// swings gets the best drive under these options ([`Design::drive`];
@@ -152,7 +152,7 @@ impl Default for DesignOptions {
             coarse_driving: Self::DEFAULT_COARSE_DRIVING,
             coarse_pairs: Self::DEFAULT_COARSE_PAIRS,
             starts: 48,
-            max_iterations: 1000,
+            max_iterations: 3000,
             motor: None,
         }
     }
