@@ -2107,7 +2107,7 @@ def _design(
 ) -> DesignReport:
     """The design search in this process (see :func:`burmester.design`,
     whose defaults these keywords share: top 5, coarse_driven 12,
-    coarse_driving 48, coarse_pairs 120, starts 48, max_iterations 1000)."""
+    coarse_driving 48, coarse_pairs 120, starts 48, max_iterations 3000)."""
 
 def _design_plan(
     task: Task,
