@@ -314,7 +314,7 @@ SECTIONS.append(
             "ranking, default limits with the Grashof margin of 0.01, pivots anywhere): the "
             "coarse pass (the pivot-pair atlas, 12 driven x 48 driving pivots along the search "
             "box's side), then 48 starts refined by Nelder-Mead on the exact figures (up to 3000 "
-            "iterations each, in three phases across the margin's band). The brute force is the "
+            "iterations each, and two more phases across the margin's band where the first met it). The brute force is the "
             "loop a designer would "
             "write: for every driven pivot of a 48 x 48 grid over the same box, the solution map "
             "over 192 x 192 driving pivots and its best pivot by the same score (both grids four "
