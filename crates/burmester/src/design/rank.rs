@@ -585,11 +585,7 @@ fn select(
                 try_push(&mut list, "the candidates", (s, v))?;
             }
         }
-        sort_polled(
-            &mut list,
-            |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)),
-            control,
-        )?;
+        best_first(&mut list, control)?;
         let threshold = list.last().map_or(f64::NEG_INFINITY, |c| c.1);
         return Ok((list, threshold, true));
     }
@@ -617,11 +613,7 @@ fn select(
         // Sorted by pieces that check the flag (a heap's own sort of a
         // million candidates takes a fraction of a second unpolled).
         list.extend(heap.into_vec().into_iter().map(|w| (w.0, w.1)));
-        sort_polled(
-            &mut list,
-            |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)),
-            control,
-        )?;
+        best_first(&mut list, control)?;
         return Ok((list, threshold, total <= m));
     }
     drop(heap);
@@ -635,13 +627,19 @@ fn select(
             }
         }
     }
-    sort_polled(
-        &mut list,
-        |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)),
-        control,
-    )?;
+    best_first(&mut list, control)?;
     let complete = list.len() == total;
     Ok((list, threshold, complete))
+}
+
+/// Sorts candidates `(sample, key)` best first: the larger key, then the
+/// smaller sample ([`sort_polled`]).
+fn best_first(list: &mut Vec<(usize, f64)>, control: &Control<'_>) -> Result<()> {
+    sort_polled(
+        list,
+        |a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)),
+        control,
+    )
 }
 
 /// Sorts `v` by `cmp` (a total order), checking the cancel flag between

@@ -169,12 +169,8 @@ impl InputRange {
 /// class in the order ground, crank, coupler, rocker.
 #[inline(always)]
 pub(crate) fn grashof_of(lengths: [f64; 4]) -> Grashof {
-    let [l1, l2, l3, l4] = lengths;
-    let max = fmax(fmax(l1, l2), fmax(l3, l4));
-    let min = fmin(fmin(l1, l2), fmin(l3, l4));
-    let sum = l1 + l2 + l3 + l4;
-    let lhs = min + max;
-    let rhs = sum - lhs;
+    let [l1, l2, l3, _] = lengths;
+    let Sides { min, lhs, rhs, sum } = sides(lengths);
     let tol = tolerance::ROUNDING_EPS * f64::EPSILON * sum;
     if (lhs - rhs).abs() <= tol {
         Grashof::ChangePoint
@@ -212,13 +208,34 @@ pub(crate) fn grashof_of(lengths: [f64; 4]) -> Grashof {
 /// lanes).
 #[inline(always)]
 pub(crate) fn grashof_margin_of(lengths: [f64; 4]) -> f64 {
+    let Sides { lhs, rhs, sum, .. } = sides(lengths);
+    (lhs - rhs).abs() / sum
+}
+
+/// The two sides of Grashof's inequality of `[ground, crank, coupler,
+/// rocker]`: `s + l` and `p + q`, with the shortest link and the sum (one
+/// arithmetic for [`grashof_of`] and [`grashof_margin_of`], the same
+/// operations in the same order as the solution maps' lanes).
+struct Sides {
+    min: f64,
+    lhs: f64,
+    rhs: f64,
+    sum: f64,
+}
+
+#[inline(always)]
+fn sides(lengths: [f64; 4]) -> Sides {
     let [l1, l2, l3, l4] = lengths;
     let max = fmax(fmax(l1, l2), fmax(l3, l4));
     let min = fmin(fmin(l1, l2), fmin(l3, l4));
     let sum = l1 + l2 + l3 + l4;
     let lhs = min + max;
-    let rhs = sum - lhs;
-    (lhs - rhs).abs() / sum
+    Sides {
+        min,
+        lhs,
+        rhs: sum - lhs,
+        sum,
+    }
 }
 
 /// `max(a, b)` for numbers known not to be NaN (no branch on NaN).
