@@ -85,7 +85,8 @@ def test_sdist_has_both_licences():
 
 
 def test_crate_has_both_licences():
-    crate = one(ROOT / "target" / "package", f"burmester-{VERSION}.crate")
+    target = Path(os.environ.get("CARGO_TARGET_DIR") or ROOT / "target")  # where cargo package wrote it
+    crate = one(target / "package", f"burmester-{VERSION}.crate")
     with tarfile.open(crate) as t:
         names = t.getnames()
         for name in LICENCES:
