@@ -2156,10 +2156,50 @@ pub fn burmester_points(data: &[u8]) {
         )
     };
     let (ca, cb) = (c(&five), c(&other));
+    // The task perturbed, in its own frame, by the rounding of the frame
+    // change (4 ulps of each coordinate and angle in the other frame,
+    // brought back), in four sign patterns. A point that this perturbation
+    // alone moves beyond a hundredth of the tolerance is ill-conditioned at the
+    // rounding of the frame change (see fuzz/README.md: nearly equal angles,
+    // poses at one position): no frame can reproduce it, so it is not
+    // compared. A decision that depends on the frame is the same for the
+    // perturbed tasks and the task, and still shows in the other frame.
+    let perturbed: Vec<Option<FivePositions>> = [(1.0, 0), (-1.0, 0), (1.0, 1), (-1.0, 1)]
+        .iter()
+        .map(|&(sign, shift)| {
+            let q: Vec<Pose> = poses
+                .iter()
+                .enumerate()
+                .map(|(k, p)| {
+                    let e = 4.0 * f64::EPSILON;
+                    let dp = e * (p.position.coords.norm() + t.offset.norm() / t.factor);
+                    let da = e * (p.angle.abs() + t.angle.abs());
+                    let s = |c: usize| {
+                        if (k * (3 + shift) + c * (1 + shift)) % 2 == 0 {
+                            sign
+                        } else {
+                            -sign
+                        }
+                    };
+                    Pose::new(
+                        p.position.x + s(0) * dp,
+                        p.position.y + s(1) * dp,
+                        p.angle + s(2) * da,
+                    )
+                })
+                .collect();
+            FivePositions::new(&q).ok()
+        })
+        .collect();
     let pts = five.burmester_points();
     for (i, p) in pts.iter().enumerate() {
+        // A center or a circle point beyond 1e4 task sizes: a point at
+        // infinity in the fixed or the moving plane within rounding (the
+        // library reports a far center as a slider from `3e14` task sizes
+        // out; a far circle point it reports as it finds it: open, see
+        // fuzz/README.md).
         let d = (p.center - ca).norm();
-        if d > 1e4 * size {
+        if d > 1e4 * size || (p.circle - ca).norm() > 1e4 * size {
             continue;
         }
         let alone = pts
@@ -2169,6 +2209,16 @@ pub fn burmester_points(data: &[u8]) {
         if !alone {
             continue;
         }
+        let stable = perturbed.iter().all(|a| {
+            a.as_ref().is_some_and(|a| {
+                a.burmester_points()
+                    .iter()
+                    .any(|q| (q.center - p.center).norm() <= 1e-8 * (size + d))
+            })
+        });
+        if !stable {
+            continue;
+        }
         let w = t.point(p.center);
         let sb = other.size() + (w - cb).norm();
         assert!(
@@ -2176,8 +2226,11 @@ pub fn burmester_points(data: &[u8]) {
                 .burmester_points()
                 .iter()
                 .any(|q| (q.center - w).norm() <= 1e-6 * sb),
-            "{} (moved {w}) not among {:?}",
+            "{} ({} task sizes away, circle point {} task sizes; moved {w}) not among {:?} \
+             (poses {poses:?}, moved {moved:?})",
             p.center,
+            d / size,
+            (p.circle - ca).norm() / size,
             other.burmester_points()
         );
     }

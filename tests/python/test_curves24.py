@@ -201,6 +201,35 @@ CASE_B = [(0, 0, 2), (0, 1, 1), (0, 0, 0), (1, 1, 1), (4.76953125, 0, 0)]
 COLLINEAR = [(0, 0, 0.1), (1, 0, 0.5), (2, 0, 1.2), (3.5, 0, 2.0), (5, 0, -1)]
 
 
+# Fuzz inputs of `burmester_points` that counted 6, 8 and 10 points (pairs
+# of poses of one angle or half a turn apart): now at most four, or refused
+# as unresolved within rounding; what is answered is the reference's.
+COUNT_ABOVE_FOUR = [
+    [(0.000100609375, 0.0, 0.0), (-0.007399390625, 0.0, 0.0), (6.09375e-7, 0.0, math.pi),
+     (0.000100609375, 0.0, math.pi), (0.0003147686403589793, 2.2204460492503132e-20, -2.4306e-6)],
+    [(1e-6, 0.0, 0.0), (-25.444, 1e-6, math.pi), (0.0, 2.220446049250313e-22, 1e-12),
+     (-1.6e-19, 1e-6, 1.0), (1e-6, 1e-6, 1.0)],
+    [(1.0, 0.0, 0.0), (-74.0, 0.0, 0.0), (0.0, 0.0, math.pi), (1.0, 0.0, math.pi),
+     (math.pi, 2.220446049250313e-16, 1.4e-11)],
+    [(1.0, 0.0, 0.0), (-10.0, 1.0, math.pi), (0.0, 2.220446049250313e-16, 2.220446049250313e-16),
+     (-1.6e-13, 1.0, 1.0), (1.0, 1.0, 1.0)],
+]
+
+
+@pytest.mark.parametrize("poses", COUNT_ABOVE_FOUR, ids=["count-10", "count-6", "count-6b", "count-6c"])
+def test_a_count_above_four_is_refused_or_the_reference_s(poses):
+    ref, _ = reference.real_points(poses)
+    t = Task(poses)
+    try:
+        pts = [c for c, _ in t.burmester_points()]
+    except DegenerateError as e:
+        assert e.cause == "unresolved_burmester_points", e
+        return
+    assert len(pts) <= 4, pts
+    for p in pts:
+        assert any(close(p, r, t.scale, 1e-7) for r in ref), (p, ref)
+
+
 @pytest.mark.parametrize("poses", [CASE_B, COLLINEAR], ids=["translations", "collinear"])
 def test_points_with_one_at_infinity_match_the_reference_in_every_frame(poses):
     ref, inf = reference.real_points(poses)

@@ -3143,3 +3143,171 @@ fn issue24_a_free_arc_never_ends_mid_chord_in_a_defective_stretch() {
     }
     assert!(checked > 0);
 }
+
+/// The circle point's five positions (the dyad's moving pivot at each pose),
+/// computed here from the poses.
+fn positions_of(poses: &[Pose], circle: Point2<f64>) -> Vec<Point2<f64>> {
+    let p1 = poses[0];
+    poses
+        .iter()
+        .map(|p| {
+            let (s, c) = (p.angle - p1.angle).sin_cos();
+            let v = circle - p1.position;
+            p.position + Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y)
+        })
+        .collect()
+}
+
+/// Issue 24, five poses (fuzz inputs of `burmester_points`, kept in
+/// `fuzz/regressions/burmester_points/`): tasks with pairs of poses of one
+/// angle or half a turn apart, where the elimination's rounding band held
+/// several critical points of the resultant (each a double root) and a
+/// root gave a finite point and a slider, counted 6, 8 and 10 Burmester
+/// points; others gave sliders whose five positions were far off any line.
+/// Now the count with multiplicity is at most four and even, or the task
+/// is refused as unresolved within rounding; every point is concyclic and
+/// every slider's positions are on its line, both computed here from the
+/// poses.
+#[test]
+fn issue24_five_pose_counts_never_exceed_four_and_sliders_are_on_their_lines() {
+    let tasks: [[(f64, f64, f64); 5]; 8] = [
+        // count 10
+        [
+            (0.000100609375, 0.0, 0.0),
+            (-0.007399390625, 0.0, 0.0),
+            (6.09375e-7, 0.0, PI),
+            (0.000100609375, 0.0, PI),
+            (0.0003147686403589793, 2.2204460492503132e-20, -2.4306e-6),
+        ],
+        // count 6
+        [
+            (1e-6, 0.0, 0.0),
+            (-25.444, 1e-6, PI),
+            (0.0, 2.220446049250313e-22, 1e-12),
+            (-1.6e-19, 1e-6, 1.0),
+            (1e-6, 1e-6, 1.0),
+        ],
+        // count 8
+        [
+            (1e-12, -1e-10, PI),
+            (1e-12, -1e-10, 2.220446049250313e-16),
+            (-9.998001598555674e-25, 1e-12, PI),
+            (0.0, 2.220446049250313e-28, 2.220446049250313e-16),
+            (-4.977795539507508e-26, -2.5444e-19, 4.712656542480727e-13),
+        ],
+        // count 6, a moderate task
+        [
+            (1.0, 0.0, 0.0),
+            (-74.0, 0.0, 0.0),
+            (0.0, 0.0, PI),
+            (1.0, 0.0, PI),
+            (PI, 2.220446049250313e-16, 1.4e-11),
+        ],
+        // count 6
+        [
+            (1.0, 0.0, 0.0),
+            (-10.0, 1.0, PI),
+            (0.0, 2.220446049250313e-16, 2.220446049250313e-16),
+            (-1.6e-13, 1.0, 1.0),
+            (1.0, 1.0, 1.0),
+        ],
+        // a slider off its line by 8e-19 in a task of 1e-12
+        [
+            (1e-12, 1e-12, PI),
+            (0.0, 0.0, 2.220446049250313e-16),
+            (-5e-26, -2.5444e-19, 0.0),
+            (0.0, 0.0, 1.0),
+            (9.999999999999999e-19, 1e-12, 1.0),
+        ],
+        // a slider off its line by 2.6e9 in a task of 3e10
+        [
+            (10000000000.0, 10000000000.0, 1e-6),
+            (10000000000.0, 10000000000.0, 1.0),
+            (10000.000000609374, 31415926535.89793, 1.0),
+            (10000.000000609374, 31415926535.89793, TAU),
+            (62831853071.79586, -97000000000.00002, 1.0000013e-6),
+        ],
+        // a slider off its line by 1731 in a task of 1800
+        [
+            (0.0, 2.220446049250313e-15, 2.220446049250313e-16),
+            (-9.998001598555676e-12, 10.0, 1.0),
+            (10.0, 31.41592653589793, 0.0),
+            (
+                2.220446049250313e-15,
+                2.220446049250313e-15,
+                -2.089800158765785e-12,
+            ),
+            (-1817.03125, 10.0, 1.0),
+        ],
+    ];
+    let mut answered = 0;
+    for t in tasks {
+        let poses: Vec<Pose> = t.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect();
+        let f = match FivePositions::new(&poses) {
+            Ok(f) => f,
+            Err(Error::Degenerate(DegenerateError::UnresolvedBurmesterPoints { .. })) => continue,
+            Err(e) => panic!("{t:?}: {e}"),
+        };
+        answered += 1;
+        let n = f.burmester_points().len() + f.sliders().len();
+        assert!(n % 2 == 0 && n <= 4, "{t:?}: count {n}: {f:?}");
+        for d in f.burmester_points() {
+            assert!(spread(&poses, d) <= 1e-8, "{t:?}: {d:?} not concyclic");
+        }
+        for s in f.sliders() {
+            let p = positions_of(&poses, s.circle);
+            let span = p.iter().map(|q| (q - p[0]).norm()).fold(0.0, f64::max);
+            let coords = p.iter().map(|q| q.coords.norm()).fold(0.0, f64::max);
+            for q in &p[1..] {
+                let off = (q - p[0]).dot(&s.direction).abs();
+                assert!(
+                    off <= 1e-9 * span + 1e3 * f64::EPSILON * coords,
+                    "{t:?}: {s:?} off its line by {off} (span {span})"
+                );
+            }
+        }
+    }
+    // Not every task refused: the slider tasks and the moderate count-6
+    // task with a half turn answer.
+    assert!(answered >= 1, "every task refused");
+}
+
+/// Issue 24, five poses: a task (a fuzz input that counted 6) whose
+/// Burmester points the exact elimination of `tests/python/burmester_reference.py`
+/// (sympy, mpmath to 40 digits) gives as (-5, 0.5), (-4.5, 0.5) and two
+/// points about 1e9 task sizes out (on either side, along the y axis: at
+/// infinity within rounding, two sliders).
+#[test]
+fn issue24_a_count_six_task_has_the_reference_s_points() {
+    let poses = [
+        Pose::new(1.0, 0.0, 0.0),
+        Pose::new(-10.0, 1.0, PI),
+        Pose::new(0.0, 2.220446049250313e-16, 2.220446049250313e-16),
+        Pose::new(-1.6e-13, 1.0, 1.0),
+        Pose::new(1.0, 1.0, 1.0),
+    ];
+    let f = FivePositions::new(&poses).unwrap();
+    let reference = [
+        Point2::new(-5.000000000000414, 0.49999999999991657),
+        Point2::new(-4.499999999999627, 0.49999999999991607),
+    ];
+    let n = f.burmester_points().len() + f.sliders().len();
+    assert_eq!(n, 4, "{f:?}");
+    for r in reference {
+        assert!(
+            f.burmester_points()
+                .iter()
+                .any(|d| (d.center - r).norm() <= 1e-9),
+            "{r} not among {f:?}"
+        );
+    }
+    // The other two: far along the y axis, as points or as sliders.
+    for d in f.burmester_points() {
+        if reference.iter().all(|r| (d.center - r).norm() > 1e-9) {
+            assert!(d.center.y.abs() > 1e8 && d.center.x.abs() < 1.0, "{d:?}");
+        }
+    }
+    for s in f.sliders() {
+        assert!(s.direction.x.abs() < 1e-6, "{s:?}");
+    }
+}

@@ -66,7 +66,14 @@ pub struct BurmesterFourBar {
 /// and [`sliders`](FivePositions::sliders)) is 0, 2 or 4 in every frame.
 /// The curves share a point at infinity (a slider) when their asymptotic
 /// directions agree within the rounding of the computation and of the poses
-/// themselves (in the frame they are given in); a resultant that vanishes
+/// themselves (in the frame they are given in), and the slider's circle
+/// point, solved from two of the conditions at infinity, has its five
+/// positions on a line (within [`BURMESTER_RESIDUAL`] of their span: a root
+/// near a common asymptotic direction by rounding can give one far off any
+/// line, and gives no point then). An elimination whose count with
+/// multiplicity is above four (two cubics meet in nine points, five of them
+/// known: more is its rounding band holding several critical points of the
+/// resultant, each a double root) is not taken. A resultant that vanishes
 /// identically within that rounding for every choice of the shared poses
 /// means the points are not isolated (a typed error), as do three poses
 /// that are rotations about one point, or of one angle on a line. The
@@ -131,8 +138,11 @@ impl FivePositions {
     /// identically within its rounding, a line of common center points, or
     /// a center with a line of circle points);
     /// [`crate::DegenerateError::UnresolvedBurmesterPoints`] when no choice
-    /// of the shared poses gives a point for every root and an even count
-    /// (a task within rounding of a degenerate one).
+    /// of the shared poses gives a point (or a slider whose five positions
+    /// are on its line) for every root and an even count of at most four
+    /// (a task within rounding of a degenerate one, such as pairs of poses
+    /// of one angle or half a turn apart, where the resultant's rounding
+    /// band holds several of its critical points).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         if poses.len() != 5 {
             return Err(errors::pose_count("FivePositions::new", 5, poses.len()));
@@ -207,7 +217,14 @@ impl FivePositions {
                     continue;
                 };
                 let (points, sliders, lost) = elim.points(&sub, &motion)?;
-                let clean = lost == 0 && (points.len() + sliders.len()) % 2 == 0;
+                // Two cubics meet in nine points: `Q`, `P13`, `P23`, the two
+                // circular points and at most four Burmester points. More
+                // (double roots of the resultant declared within a band wide
+                // enough to hold several critical points, or one root read
+                // as a finite point and a slider) is this elimination's
+                // rounding, not an answer.
+                let total = points.len() + sliders.len();
+                let clean = lost == 0 && total % 2 == 0 && total <= MAX_POINTS;
                 if fallback.as_ref().is_none_or(|f| lost < f.0) || clean {
                     fallback = Some((lost, points, sliders));
                 }
@@ -217,10 +234,11 @@ impl FivePositions {
             }
         }
         if let Some((lost, points, sliders)) = &fallback {
-            if *lost > 0 || (points.len() + sliders.len()) % 2 == 1 {
+            let total = points.len() + sliders.len();
+            if *lost > 0 || total % 2 == 1 || total > MAX_POINTS {
                 return Err(errors::unresolved(
                     "from every choice of the shared poses a root of the elimination gives no \
-                     Burmester point, or the count with multiplicity is odd",
+                     Burmester point, or the count with multiplicity is odd or above four",
                 ));
             }
         }
@@ -652,20 +670,13 @@ impl Elimination {
         }
         let mut sliders = Vec::new();
         for (u, mult) in infinite {
-            let circle = motion
+            let slider = motion
                 .form
                 .solve_at_infinity(u, &[1, 2, 3, 4])
                 .ok()
-                .map(|z| motion.global_of(z))
-                .filter(|c| c.x.is_finite() && c.y.is_finite());
-            match circle {
-                Some(circle) => sliders.extend(core::iter::repeat_n(
-                    BurmesterSlider {
-                        circle,
-                        direction: u,
-                    },
-                    mult,
-                )),
+                .and_then(|z| check_slider(motion, z, u));
+            match slider {
+                Some(s) => sliders.extend(core::iter::repeat_n(s, mult)),
                 None => lost += mult,
             }
         }
@@ -816,6 +827,11 @@ impl Elimination {
     }
 }
 
+/// The most Burmester points (with multiplicity, sliders included) five
+/// poses can have: the nine common points of two cubics less `Q`, `P13`,
+/// `P23` and the two circular points.
+const MAX_POINTS: usize = 4;
+
 /// A shared pole and a common point found along a line from `Q` are the
 /// same when they agree within this (local units, plus the pole's distance;
 /// radians for directions at infinity).
@@ -878,6 +894,56 @@ fn polish(m: &Motion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>> {
     let allowed = (BURMESTER_RESIDUAL * (span / radius).powi(2))
         .max(64.0 * f64::EPSILON * (1.0 + coords / radius));
     Ok((r <= allowed).then_some(d))
+}
+
+/// A slider found by the elimination (circle point `z` local, direction
+/// `u`), checked as [`polish`] checks a finite point: the circle point's
+/// five positions must lie on a line normal to `u` within
+/// [`BURMESTER_RESIDUAL`] of their span (or the rounding of their
+/// coordinates, `64 eps`). The circle point is solved from two of the four
+/// conditions at infinity; those two alone do not make its positions
+/// collinear, and a root of the resultant within rounding of a common
+/// asymptotic direction (a near-degenerate task) can give a circle point
+/// whose positions are far off any line. `None` then (the root gives no
+/// Burmester point), and for a circle point not finite.
+fn check_slider(m: &Motion, z: Vector2<f64>, u: Vector2<f64>) -> Option<BurmesterSlider> {
+    let circle = m.global_of(z);
+    if !(circle.x.is_finite() && circle.y.is_finite() && u.x.is_finite() && u.y.is_finite()) {
+        return None;
+    }
+    let p: Vec<Point2<f64>> = (0..m.poses.len())
+        .map(|k| m.displace(circle, 0, k))
+        .collect();
+    let span = p
+        .iter()
+        .flat_map(|a| p.iter().map(move |b| (a - b).norm()))
+        .fold(0.0, f64::max);
+    let coords = p.iter().map(|q| q.coords.norm()).fold(0.0, f64::max);
+    // The line's normal from the positions themselves (the root's direction
+    // is known only to the resultant's conditioning): from the first
+    // position to the farthest, which must be `u`'s within the loose
+    // match of a root to the asymptote.
+    let far = p
+        .iter()
+        .max_by(|a, b| (*a - p[0]).norm().total_cmp(&(*b - p[0]).norm()))
+        .map_or(Vector2::zeros(), |q| q - p[0]);
+    if !(far.norm() > 0.0) {
+        return None;
+    }
+    let n = perp(far) / far.norm();
+    let n = if n.dot(&u) < 0.0 { -n } else { n };
+    if !(cross(n, u).abs() <= 1e-3) {
+        return None;
+    }
+    let off = p[1..]
+        .iter()
+        .map(|q| (q - p[0]).dot(&n).abs())
+        .fold(0.0, f64::max);
+    let allowed = (BURMESTER_RESIDUAL * span).max(64.0 * f64::EPSILON * coords);
+    (off <= allowed).then_some(BurmesterSlider {
+        circle,
+        direction: n,
+    })
 }
 
 /// Newton's method on the four circle equations `a_k(G) . z = b_k(G)`
