@@ -785,7 +785,7 @@ class Task:
         (``"collinear_translations"``), or a common component of the curves
         (``"infinitely_many_burmester_points"``, for example Cardan motion);
         or when all poses have one angle; and where no choice of the shared
-        poses gives a clean elimination (an even count:
+        poses gives a clean elimination (an even count of at most four:
         ``"unresolved_burmester_points"``, nearly coincident poses or angles)."""
     def burmester_curves(self) -> Tuple[Cubic, Cubic]:
         """Five poses only: the center-point curves of poses 1, 2, 3, 4 and
