@@ -261,14 +261,9 @@ fn spans_area(pts: &[Point2<f64>]) -> bool {
             .any(|q| cross(d, q - p0).abs() > tolerance::COLLINEAR * extent)
 }
 
-/// Whether two edges of the closed polygon cross or touch (adjacent edges
-/// share only their common vertex). The edges are swept by their smallest
-/// `x` so that only edges whose `x` extents overlap are compared: `n log n`
-/// for the outlines of parts, at most `n^2 / 2` tests (`n` is at most
-/// [`Constraints::MAX_POLYGON_VERTICES`]).
-fn self_intersects(pts: &[Point2<f64>]) -> bool {
-    let n = pts.len();
-    let edge = |i: usize| (pts[i], pts[(i + 1) % n]);
+/// Whether the segments `a b` and `c d` meet: they cross, or an end of one
+/// lies on the other (exact orientation tests).
+fn segments_meet((a, b): (Point2<f64>, Point2<f64>), (c, d): (Point2<f64>, Point2<f64>)) -> bool {
     let orient = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| cross(b - a, c - a);
     let on = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| {
         orient(a, b, c) == 0.0
@@ -277,16 +272,25 @@ fn self_intersects(pts: &[Point2<f64>]) -> bool {
             && c.y >= a.y.min(b.y)
             && c.y <= a.y.max(b.y)
     };
-    let meet = |(a, b): (Point2<f64>, Point2<f64>), (c, d): (Point2<f64>, Point2<f64>)| {
-        let (d1, d2) = (orient(c, d, a), orient(c, d, b));
-        let (d3, d4) = (orient(a, b, c), orient(a, b, d));
-        ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
-            && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
-            || on(c, d, a)
-            || on(c, d, b)
-            || on(a, b, c)
-            || on(a, b, d)
-    };
+    let (d1, d2) = (orient(c, d, a), orient(c, d, b));
+    let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+    ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+        || on(c, d, a)
+        || on(c, d, b)
+        || on(a, b, c)
+        || on(a, b, d)
+}
+
+/// Whether two edges of the closed polygon cross or touch (adjacent edges
+/// share only their common vertex). The edges are swept by their smallest
+/// `x` so that only edges whose `x` extents overlap are compared: `n log n`
+/// for the outlines of parts, at most `n^2 / 2` tests (`n` is at most
+/// [`Constraints::MAX_POLYGON_VERTICES`]).
+fn self_intersects(pts: &[Point2<f64>]) -> bool {
+    let n = pts.len();
+    let edge = |i: usize| (pts[i], pts[(i + 1) % n]);
+    let meet = segments_meet;
     let adjacent = |i: usize, j: usize| {
         let (i, j) = (i.min(j), i.max(j));
         j == i + 1 || (i == 0 && j == n - 1)
@@ -582,24 +586,7 @@ mod tests {
     /// The check before the sweep: every pair of edges.
     fn self_intersects_brute(pts: &[Point2<f64>]) -> bool {
         let n = pts.len();
-        let orient = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| cross(b - a, c - a);
-        let on = |a: Point2<f64>, b: Point2<f64>, c: Point2<f64>| {
-            orient(a, b, c) == 0.0
-                && c.x >= a.x.min(b.x)
-                && c.x <= a.x.max(b.x)
-                && c.y >= a.y.min(b.y)
-                && c.y <= a.y.max(b.y)
-        };
-        let meet = |(a, b): (Point2<f64>, Point2<f64>), (c, d): (Point2<f64>, Point2<f64>)| {
-            let (d1, d2) = (orient(c, d, a), orient(c, d, b));
-            let (d3, d4) = (orient(a, b, c), orient(a, b, d));
-            ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
-                && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
-                || on(c, d, a)
-                || on(c, d, b)
-                || on(a, b, c)
-                || on(a, b, d)
-        };
+        let meet = segments_meet;
         let edge = |i: usize| (pts[i], pts[(i + 1) % n]);
         for i in 0..n {
             for j in i + 1..n {
