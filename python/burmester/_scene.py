@@ -14,18 +14,23 @@ the drawing modules.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List, Literal, NamedTuple, Optional, Sequence, Tuple
+import math
+from typing import TYPE_CHECKING, Any, List, Literal, NamedTuple, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
 
 from burmester import _view
-from burmester._burmester import Drive, SixBar, SynthesizedFourBar, Task, clip_line
+from burmester._burmester import (
+    Drive, Filemon, Grid, InvalidInputError, SixBar, SynthesizedFourBar, Task, clip_line,
+)
 from burmester._view import ViewLike
-from burmester.taskfile import default_curve_view
+from burmester.taskfile import (
+    DEFAULT_GRID, default_circle_view, default_curve_view, default_view, has_pole_triangle,
+)
 
 if TYPE_CHECKING:
-    import numpy as np
-    import numpy.typing as npt
-
-    from burmester._burmester import Mode
+    from burmester._burmester import Method, Mode
 
     Array = npt.NDArray[np.float64]
 
@@ -248,3 +253,93 @@ def sixbar_scene(six: SixBar, drive: Optional[Drive], task: Optional[Task] = Non
         poses = list(task.poses if task is not None else drive.task.poses)
     angles = list(drive.pose_crank_angles) if drive is not None else []
     return SixBarScene(j[0], j[3], j[6], six.lengths[1], poses, 0.3 * min(six.motion.lengths), angles)
+
+
+def conics(filemon: Filemon, extent: Extent) -> List[Tuple[int, str, List[Array]]]:
+    """Filemon's three lines transformed into the center-point plane
+    (``CONIC_k``): ``(pose, kind, polylines in extent)`` for each, every
+    branch; none when every driving pivot is defective."""
+    extreme = filemon.extreme_poses
+    if extreme is None:
+        return []
+    return [(pose, conic.kind, list(conic.polylines(*extent))) for pose, conic in zip(extreme, filemon.conics)]
+
+
+class CenterScene(NamedTuple):
+    """The driving crank's center-point plane of three poses: what
+    :func:`burmester.plot.center_plane` and :func:`burmester.export.plane`
+    draw (each shades the branch map its own way)."""
+
+    grid: Grid
+    #: Branch-free driving pivots on the grid (``BRANCH_FREE``).
+    free: npt.NDArray[np.bool_]
+    #: Branch-free pivots that also meet the limits (``ACCEPTABLE``), when given.
+    acceptable: Optional[npt.NDArray[np.bool_]]
+    #: The minimum transmission angle, degrees (``TRANSMISSION``), when given.
+    transmission: Optional[npt.NDArray[np.float64]]
+    #: Every pole, named ``P12``, ``P13``, ``P23`` (None at infinity; ``POLES``).
+    poles: List[Tuple[str, Optional[Point]]]
+    #: Three finite poles: the pole triangle and circle are drawn
+    #: (``POLE_TRIANGLE``, ``POLE_CIRCLE``).
+    pole_triangle: bool
+    #: The driven crank's fixed pivot ``C0`` (``DRIVEN_PIVOT``).
+    c0: Point
+
+
+def center_scene(filemon: Filemon, view: Optional[ViewLike], samples: Optional[Sequence[Any]], method: Method,
+                 free: Optional[npt.ArrayLike], acceptable: Optional[npt.ArrayLike],
+                 transmission: Optional[npt.ArrayLike], side: int = DEFAULT_GRID) -> CenterScene:
+    """The :class:`CenterScene` of ``filemon`` over ``view`` (a Grid, four
+    numbers with ``side`` samples along the longer side, or None: the default
+    view), ``samples = (nx, ny)`` when given, else a given ``free`` map's
+    shape over four numbers; the branch map of ``method`` unless ``free`` is
+    given. Each given map must have the grid's shape (InvalidInputError)."""
+    if free is not None and samples is None and not isinstance(view, Grid):
+        shape = np.shape(free)
+        if len(shape) != 2:
+            raise InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {shape}")
+        samples = (shape[1], shape[0])
+    g = _view.view_grid(view, samples, lambda: default_view(filemon, side), side)
+    given = _view.on_grid("free", free, g)
+    free_b = (filemon.branch_map(g, method=method) if given is None else given).astype(bool)
+    acc = _view.on_grid("acceptable", acceptable, g)
+    trans = _view.on_grid("transmission", transmission, g)
+    task = filemon.task
+    poles = [(f"P{i}{j}", p.point) for p, (i, j) in ((p, p.pair) for p in task.poles)]
+    return CenterScene(g, free_b, None if acc is None else acc.astype(bool),
+                       None if trans is None else np.asarray(trans, dtype=float), poles,
+                       has_pole_triangle(task), filemon.driven_center)
+
+
+class CircleScene(NamedTuple):
+    """The driving crank's circle-point plane of three poses (the coupler
+    frame at pose 1): what :func:`burmester.plot.circle_plane` and
+    :func:`burmester.export.plane` (``plane="circle"``) draw."""
+
+    extent: Extent
+    #: Filemon's sectors about ``C1``, ``(start, end, branch-free)``
+    #: (:attr:`burmester.Filemon.sectors`; ``BRANCH_FREE``).
+    sectors: List[Tuple[float, float, bool]]
+    #: A radius about ``C1`` beyond every corner of the view: a sector's
+    #: wedge of this radius covers its part of the view.
+    radius: float
+    #: Filemon's construction: ``C1``, ``C'k`` and the lines through them.
+    construction: Construction
+    #: The middle pose's line (drawn dashed), if any.
+    middle: Optional[int]
+    #: The image poles ``P12, P13, P'23`` (``IMAGE_POLES``); none with a pole at infinity.
+    image_poles: List[Point]
+
+
+def circle_scene(filemon: Filemon, view: Optional[ViewLike]) -> CircleScene:
+    """The :class:`CircleScene` of ``filemon`` in ``view`` (default:
+    :func:`burmester.taskfile.default_circle_view`)."""
+    extent = default_circle_view(filemon) if view is None else _view.extent(view)
+    c1 = filemon.driven_circle
+    corners = [(x, y) for x in extent[:2] for y in extent[2:]]
+    radius = 2.0 * max(math.hypot(x - c1[0], y - c1[1]) for x, y in corners) + 1.0
+    made = construction(c1, filemon.all_lines, filemon.fixed_pivot_images, extent)
+    task = filemon.task
+    # A task with a pure translation between two poses has no image poles.
+    images = list(task.image_poles()) if has_pole_triangle(task) else []
+    return CircleScene(extent, list(filemon.sectors), radius, made, filemon.middle_pose, images)

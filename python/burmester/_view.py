@@ -16,6 +16,9 @@ from __future__ import annotations
 
 from typing import Any, Callable, Optional, Sequence, Tuple, Union
 
+import numpy as np
+import numpy.typing as npt
+
 from burmester._burmester import Grid, InvalidInputError
 
 Extent = Tuple[float, float, float, float]
@@ -98,3 +101,14 @@ def view_grid(view: Optional[ViewLike], samples: Optional[Sequence[Any]], defaul
     else:
         g = grid_for(*extent(view), side)
     return g if samples is None else resample(g, samples)
+
+
+def on_grid(name: str, array: Optional[npt.ArrayLike], g: Grid) -> Optional[npt.NDArray[Any]]:
+    """``array`` as a NumPy array of the grid's shape ``(ny, nx)``
+    (InvalidInputError naming ``name`` otherwise), or None when not given."""
+    if array is None:
+        return None
+    a = np.asarray(array)
+    if a.shape != g.shape:
+        raise InvalidInputError(f"{name} must have the grid's shape (ny, nx) = {g.shape}, got {a.shape}")
+    return a

@@ -136,9 +136,6 @@ import numpy.typing as npt
 import burmester
 from burmester import _io, _scene, _view
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
-from burmester.taskfile import (
-    DEFAULT_GRID, default_circle_view, default_curve_view, default_view, has_pole_triangle,
-)
 from burmester.units import check_units, dxf_imperial, dxf_units, format_length
 
 if TYPE_CHECKING:
@@ -502,13 +499,6 @@ def _target(path: PathLike, suffixes: Sequence[str]) -> Path:
     return p
 
 
-def _mask(name: str, array: npt.ArrayLike, shape: Tuple[int, int]) -> npt.NDArray[np.bool_]:
-    a = np.asarray(array)
-    if a.shape != shape:
-        raise burmester.InvalidInputError(f"{name} must have the grid's shape (ny, nx) = {shape}, got {a.shape}")
-    return a.astype(bool)
-
-
 # ---------------------------------------------------------------------------
 # Geometry helpers (drawing only: the core gives the points)
 
@@ -735,56 +725,48 @@ class _Overlays(NamedTuple):
     pivots: Optional[Sequence[Point]]
 
 
-def _center_drawing(filemon: Filemon, grid: Grid, method: Method, free: Optional[npt.ArrayLike],
-                    over: _Overlays, labels: bool) -> _Drawing:
+def _center_drawing(sc: _scene.CenterScene, filemon: Filemon, pivots: Optional[Sequence[Point]],
+                    levels: Sequence[float], labels: bool) -> _Drawing:
+    grid = sc.grid
     extent = grid.extent
     d = _Drawing("driving crank center-point plane", extent)
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
-    free_b = _mask("free", free, grid.shape) if free is not None else filemon.branch_map(grid, method=method)
-    for rings in _regions(grid, free_b):
+    for rings in _regions(grid, sc.free):
         d.regions.append(_Region("BRANCH_FREE", rings, "branch-free driving pivots"))
-    if over.acceptable is not None:
-        for rings in _regions(grid, free_b & _mask("acceptable", over.acceptable, grid.shape)):
+    if sc.acceptable is not None:
+        for rings in _regions(grid, sc.free & sc.acceptable):
             d.regions.append(_Region("ACCEPTABLE", rings, "branch-free and acceptable driving pivots"))
-    if over.transmission is not None:
-        values = np.asarray(over.transmission, dtype=float)
-        if values.shape != grid.shape:
-            raise burmester.InvalidInputError(
-                f"transmission must have the grid's shape (ny, nx) = {grid.shape}, got {values.shape}"
-            )
+    values = sc.transmission
+    if values is not None:
         longest: Dict[float, Array] = {}
-        for level, line in _contours(grid, values, over.levels):
+        for level, line in _contours(grid, values, levels):
             d.polyline("TRANSMISSION", line, f"transmission angle {level:g} deg")
             if len(line) > len(longest.get(level, ())):
                 longest[level] = line
         if labels:  # each level once, at the middle of its longest piece
             for level, line in longest.items():
                 d.labels.append(_Label((float(line[len(line) // 2][0]), float(line[len(line) // 2][1])), f"{level:g}"))
-    extreme = filemon.extreme_poses
-    if extreme is not None:
-        for pose, conic in zip(extreme, filemon.conics):
-            for pl in conic.polylines(*extent):
-                d.polyline(f"CONIC_{pose}", pl, f"Filemon line {pose} transformed ({conic.kind})")
-    task = filemon.task
-    poles = [(p.pair, p.point) for p in task.poles if p.point is not None]
-    for (i, j), p in poles:
-        d.marker("POLES", p, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
-    if has_pole_triangle(task):  # not with a pole at infinity
+    for pose, kind, polylines in _scene.conics(filemon, extent):
+        for pl in polylines:
+            d.polyline(f"CONIC_{pose}", pl, f"Filemon line {pose} transformed ({kind})")
+    poles = [(name, p) for name, p in sc.poles if p is not None]
+    for name, p in poles:
+        d.marker("POLES", p, f"pole {name}", name if labels else None)
+    if sc.pole_triangle:  # not with a pole at infinity
         d.polyline("POLE_TRIANGLE", [p for _, p in poles], "pole triangle", closed=True)
-        _circle_or_line(d, "POLE_CIRCLE", task.pole_circle(), extent, "pole circle")
-    d.marker("DRIVEN_PIVOT", filemon.driven_center, "driven crank's fixed pivot C0", "C0" if labels else None)
-    for k, p in enumerate(over.pivots or [], start=1):
+        _circle_or_line(d, "POLE_CIRCLE", filemon.task.pole_circle(), extent, "pole circle")
+    d.marker("DRIVEN_PIVOT", sc.c0, "driven crank's fixed pivot C0", "C0" if labels else None)
+    for k, p in enumerate(pivots or [], start=1):
         d.marker("BEST_PIVOTS", p, f"driving pivot {k}", str(k) if labels else None)
     return d
 
 
-def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
+def _circle_drawing(sc: _scene.CircleScene, task: Task, labels: bool) -> _Drawing:
+    extent = sc.extent
     d = _Drawing("driving crank circle-point plane (pose 1)", extent)
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
-    c1 = filemon.driven_circle
-    corners = _rectangle(extent)
-    radius = 2.0 * float(np.max(np.hypot(corners[:, 0] - c1[0], corners[:, 1] - c1[1]))) + 1.0
-    for a0, a1, is_free in filemon.sectors:
+    c1, radius = sc.construction.c1, sc.radius
+    for a0, a1, is_free in sc.sectors:
         if not is_free:
             continue
         # Arc points 5 degrees apart at this radius lie outside the view, so the clipped wedge is exact.
@@ -793,13 +775,11 @@ def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
         clipped = _clip_polygon(wedge, extent)
         if len(clipped) >= 3:
             d.regions.append(_Region("BRANCH_FREE", [clipped], "branch-free driving circle points"))
-    task = filemon.task
-    if has_pole_triangle(task):  # not with a pole at infinity
-        for name, p in zip(("P12", "P13", "P'23"), task.image_poles()):
+    if sc.image_poles:  # not with a pole at infinity
+        for name, p in zip(("P12", "P13", "P'23"), sc.image_poles):
             d.marker("IMAGE_POLES", p, f"image pole {name}", name if labels else None)
         _circle_or_line(d, "IMAGE_POLE_CIRCLE", task.image_pole_circle(), extent, "image-pole circle")
-    made = _scene.construction(c1, filemon.all_lines, filemon.fixed_pivot_images, extent)
-    _filemon_construction(d, made, labels, filemon.middle_pose)
+    _filemon_construction(d, sc.construction, labels, sc.middle)
     return d
 
 
@@ -860,17 +840,11 @@ def _curve_drawing(task: Task, view: Optional[ViewLike], driven: Optional[Point]
 def _plane_drawing(filemon: Filemon, view: Optional[ViewLike], plane: str, grid: Optional[Tuple[int, int]],
                    method: Method, free: Optional[npt.ArrayLike], over: _Overlays, labels: bool) -> _Drawing:
     if plane == "circle":
-        extent = default_circle_view(filemon) if view is None else _view.extent(view)
-        return _circle_drawing(filemon, extent, labels)
+        return _circle_drawing(_scene.circle_scene(filemon, view), filemon.task, labels)
     if plane != "center":
         raise burmester.InvalidInputError(f"plane must be 'center' or 'circle', got {plane!r}")
-    if free is not None and grid is None and not isinstance(view, Grid):
-        shape = np.shape(free)
-        if len(shape) != 2:
-            raise burmester.InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {shape}")
-        grid = (shape[1], shape[0])
-    g = _view.view_grid(view, grid, lambda: default_view(filemon), DEFAULT_GRID)
-    return _center_drawing(filemon, g, method, free, over, labels)
+    sc = _scene.center_scene(filemon, view, grid, method, free, over.acceptable, over.transmission)
+    return _center_drawing(sc, filemon, over.pivots, over.levels, labels)
 
 
 # ---------------------------------------------------------------------------

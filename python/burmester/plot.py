@@ -81,8 +81,7 @@ import burmester
 from burmester import _io, _scene, _view
 from burmester._burmester import Filemon, Grid, PairMap, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
-    DEFAULT_GRID, curve_plane_points, default_circle_view, default_curve_view, default_view, describe_outside,
-    grid_for, has_pole_triangle, outside_view,
+    DEFAULT_GRID, curve_plane_points, default_curve_view, default_view, describe_outside, outside_view,
 )
 from burmester.units import format_length, label_axes
 
@@ -376,17 +375,6 @@ def _count_in(name: str, value: Any, lo: int, hi: int) -> int:
     return int(value)
 
 
-def _check_shape(name: str, array: Optional[npt.ArrayLike], shape: Tuple[int, int]) -> Optional[np.ndarray]:
-    if array is None:
-        return None
-    a = np.asarray(array)
-    if a.shape != shape:
-        raise burmester.InvalidInputError(
-            f"{name} must have the grid's shape (ny, nx) = {shape}, got {a.shape}"
-        )
-    return a
-
-
 def draw_conics(ax: Axes, filemon: Filemon, extent: Extent) -> List[Artist]:
     """The transformed Filemon curves clipped to ``extent``, every branch,
     in the colour of their line's pose (gid ``"conic-k"``; the first branch
@@ -399,16 +387,14 @@ def draw_conics(ax: Axes, filemon: Filemon, extent: Extent) -> List[Artist]:
         )
         note.set_gid("all-defective")
         return [note]
-    extreme = filemon.extreme_poses
-    assert extreme is not None
     drawn: List[Artist] = []
-    for pose, conic in zip(extreme, filemon.conics):
+    for pose, kind, polylines in _scene.conics(filemon, extent):
         color = POSE_COLORS[pose]
-        for k, pl in enumerate(conic.polylines(*extent)):
+        for k, pl in enumerate(polylines):
             (line,) = ax.plot(pl[:, 0], pl[:, 1], color=color, linewidth=1.6, zorder=3)
             line.set_gid(f"conic-{pose}")
             if k == 0:
-                line.set_label(f"Filemon line {pose} transformed ({conic.kind})")
+                line.set_label(f"Filemon line {pose} transformed ({kind})")
             drawn.append(line)
     return drawn
 
@@ -486,20 +472,10 @@ def center_plane(
     Returns:
         The Axes.
     """
-    if free is not None and grid is None and not isinstance(view, Grid):
-        free_shape = np.shape(free)
-        if len(free_shape) != 2:
-            raise burmester.InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {free_shape}")
-        grid = (free_shape[1], free_shape[0])
-    v = _as_grid(filemon, view, grid)
+    sc = _scene.center_scene(filemon, view, grid, method, free, acceptable, transmission)
+    v = sc.grid
     extent = v.extent
-    shape = v.shape
-    free_a = _check_shape("free", free, shape)
-    if free_a is None:
-        free_a = filemon.branch_map(v, method=method)
-    free_b = free_a.astype(bool)
-    acc = _check_shape("acceptable", acceptable, shape)
-    trans = _check_shape("transmission", transmission, shape)
+    free_b, acc, trans = sc.free, sc.acceptable, sc.transmission
 
     ax = _new_axes(ax)
     img = ax.imshow(
@@ -527,9 +503,9 @@ def center_plane(
     # with a pure translation between two poses (a pole at infinity) there
     # is no triangle or circle: only the finite poles are drawn.
     task = filemon.task
-    named = [(f"P{i}{j}", p.point) for p, (i, j) in zip(task.poles, ((1, 2), (1, 3), (2, 3)))]
+    named = sc.poles
     poles = [pt for _, pt in named if pt is not None]
-    if len(poles) == 3:
+    if sc.pole_triangle:
         for a, b in ((0, 1), (1, 2), (2, 0)):
             seg = clip_line(poles[a], (poles[b][0] - poles[a][0], poles[b][1] - poles[a][1]), extent)
             if seg:
@@ -548,7 +524,7 @@ def center_plane(
         handles.append(tri)
         handles.append(_draw_circle(ax, task.pole_circle(), extent, "pole-circle", "pole circle"))
     handles.append(_markers(ax, poles, "poles", "poles", marker="o", markersize=5, color=POLE_COLOR, zorder=5))
-    c0 = filemon.driven_center
+    c0 = sc.c0
     handles.append(_markers(
         ax, [c0], "driven-pivot", "driven crank's fixed pivot C0",
         marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=5,
@@ -563,7 +539,7 @@ def center_plane(
     if trans is not None:
         xs, ys = v.cell_centers()
         cs = ax.contour(
-            xs, ys, np.asarray(trans, dtype=float), levels=sorted(transmission_levels),
+            xs, ys, trans, levels=sorted(transmission_levels),
             colors="#636363", linewidths=0.8, zorder=3,
         )
         cs.set_gid("transmission")
@@ -973,12 +949,10 @@ def circle_plane(
     Returns:
         The Axes.
     """
-    extent = default_circle_view(filemon) if view is None else _as_grid(filemon, view, None).extent
+    sc = _scene.circle_scene(filemon, view)
+    extent, c1 = sc.extent, sc.construction.c1
     ax = _new_axes(ax)
-    c1 = filemon.driven_circle
-    corners = [(x, y) for x in extent[:2] for y in extent[2:]]
-    radius = 2.0 * max(math.hypot(x - c1[0], y - c1[1]) for x, y in corners) + 1.0
-    free, defective = filemon_wedges(filemon, radius)
+    free, defective = filemon_wedges(filemon, sc.radius)
     handles: List[Artist] = []
     if free:
         patch = PathPatch(
@@ -998,9 +972,8 @@ def circle_plane(
         ax.add_patch(hatch)
         handles.append(hatch)
 
-    middle = filemon.middle_pose
-    for k, (point, direction) in enumerate(filemon.all_lines, start=1):
-        seg = clip_line(point, direction, extent)
+    middle = sc.middle
+    for k, seg in enumerate(sc.construction.lines, start=1):
         if seg is None:
             continue
         (line,) = ax.plot(
@@ -1011,8 +984,7 @@ def circle_plane(
         line.set_gid(f"line-{k}")
         handles.append(line)
 
-    # A task with a pure translation between two poses has no image poles.
-    ip: List[Tuple[float, float]] = list(filemon.task.image_poles()) if has_pole_triangle(filemon.task) else []
+    ip = sc.image_poles
     if ip:
         handles.append(_draw_circle(
             ax, filemon.task.image_pole_circle(), extent, "image-pole-circle", "image-pole circle",
@@ -1020,7 +992,7 @@ def circle_plane(
         handles.append(_markers(
             ax, ip, "image-poles", "image poles", marker="s", markersize=5, color=POLE_COLOR, zorder=5,
         ))
-    images = filemon.fixed_pivot_images
+    images = sc.construction.images
     handles.append(_markers(
         ax, images, "fixed-pivot-images", "fixed pivot seen from the coupler, C'k",
         marker="^", markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=5,
