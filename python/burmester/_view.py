@@ -7,9 +7,10 @@ The core's :class:`burmester.Grid` checks the numbers (finite bounds,
 ``xmin < xmax``, ``ymin < ymax``, the sample counts); this module only
 unpacks what it is given, and bounds a grid's ``(nx, ny)`` given on its
 own (:func:`resample`: 2 to :data:`MAX_SIDE`, as the CAD export always had).
-Every error is a :class:`InvalidInputError` (a ``ValueError``);
-an argument that is not a view or a grid at all (a string, three numbers)
-raises :class:`ViewTypeError`, which is also a ``TypeError``.
+Every error is a :class:`burmester.InvalidInputError` (a ``ValueError``);
+an argument that is not a view or a grid at all (a string, three numbers,
+a sample count that is not an int) raises :class:`ViewTypeError`, which is
+also a ``TypeError``.
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ MAX_SIDE = 100_000
 
 class ViewTypeError(InvalidInputError, TypeError):
     """A view or grid that is not one (not a Grid, nor a sequence of the
-    right count of numbers): an :class:`InvalidInputError` and a
+    right count of numbers): a :class:`burmester.InvalidInputError` and a
     ``TypeError``."""
 
     cause = "viewport"
@@ -80,7 +81,7 @@ def resample(g: Grid, samples: Sequence[Any], what: str = "grid", most: int = MA
     counts = []
     for name, n in zip((f"{what} nx", f"{what} ny"), samples):
         if isinstance(n, bool) or not hasattr(n, "__index__"):
-            raise TypeError(f"{name} must be an int, got {type(n).__name__}")
+            raise ViewTypeError(f"{name} must be an int, got {type(n).__name__}")
         if not 2 <= int(n) <= most:
             raise InvalidInputError(f"{name} must be from 2 to {most}, got {int(n)}")
         counts.append(int(n))
