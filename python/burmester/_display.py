@@ -47,28 +47,19 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
     import burmester
     from burmester import plot
 
-    if isinstance(obj, burmester.Task):
-        return lambda ax: plot.poses(obj, ax=ax)
-    if isinstance(obj, burmester.Filemon):
-        return lambda ax: plot.center_plane(obj, ax=ax)
-    if isinstance(obj, burmester.FourBar):
-        return lambda ax: plot.four_bar(obj, ax=ax)
-    if isinstance(obj, burmester.SynthesizedFourBar):
-        return lambda ax: plot.linkage(obj, ax=ax)
-    if isinstance(obj, burmester.SolutionMap):
-        return lambda ax: plot.solution_map(obj, ax=ax)
-    if isinstance(obj, burmester.PairMap):
-        return lambda ax: plot.pair_map(obj, ax=ax)
-    if isinstance(obj, burmester.Cubic):
-        return lambda ax: cubic(obj, ax)
-    if isinstance(obj, burmester.PivotAtlas):
-        return lambda ax: plot.atlas(obj, ax=ax)
-    if isinstance(obj, burmester.Design):
-        return lambda ax: plot.linkage(obj.linkage, ax=ax)
-    if isinstance(obj, (burmester.Drive, burmester.SixBar)):
-        return lambda ax: plot.sixbar(obj, ax=ax)
-    if isinstance(obj, burmester.DriveMap):
-        return lambda ax: plot.drive_map(obj, ax=ax)
+    # The picture of each kind: its type's name in burmester, the plot function's name (in order).
+    pictures = (("Task", "poses"), ("Filemon", "center_plane"), ("FourBar", "four_bar"),
+                ("SynthesizedFourBar", "linkage"), ("SolutionMap", "solution_map"), ("PairMap", "pair_map"),
+                ("Cubic", None), ("PivotAtlas", "atlas"), ("Design", "linkage"), ("Drive", "sixbar"),
+                ("SixBar", "sixbar"), ("DriveMap", "drive_map"))
+    for kind, name in pictures:
+        if not isinstance(obj, getattr(burmester, kind)):
+            continue
+        if name is None:
+            return lambda ax: cubic(obj, ax)
+        draw = getattr(plot, name)
+        shown = obj.linkage if isinstance(obj, burmester.Design) else obj
+        return lambda ax: draw(shown, ax=ax)
     raise TypeError(f"no picture for a {type(obj).__name__}")
 
 

@@ -27,6 +27,7 @@ from typing import Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tu
 import numpy as np
 import numpy.typing as npt
 
+from burmester import _view
 from burmester._burmester import DesignLimits, Grid, SynthesizedFourBar, Task, _atlas_tile
 
 __all__ = ["AtlasPair", "PivotAtlas", "pivot_atlas"]
@@ -66,18 +67,6 @@ def _require_workers(client: Any) -> None:
             f"the Dask cluster at {address} has no workers (none joined in {DASK_WORKER_TIMEOUT:g} s), so "
             "its tasks would wait for ever: start workers (dask worker <address>), or run without client="
         ) from None
-
-
-def _grid(g: GridArg, what: str) -> Grid:
-    if isinstance(g, Grid):
-        return g
-    try:
-        x0, x1, y0, y1, nx, ny = g
-    except (TypeError, ValueError):
-        raise TypeError(
-            f"{what}: expected a burmester.Grid or (xmin, xmax, ymin, ymax, nx, ny), got {g!r}"
-        ) from None
-    return Grid(float(x0), float(x1), float(y0), float(y1), int(nx), int(ny))
 
 
 class AtlasPair(NamedTuple):
@@ -342,7 +331,7 @@ def pivot_atlas(
     :data:`DASK_WORKER_TIMEOUT` seconds for one to join, then
     :class:`TimeoutError` says so (its tasks would wait for ever).
     """
-    dg, vg = _grid(driven, "driven"), _grid(driving, "driving")
+    dg, vg = _view.grid(driven, "driven"), _view.grid(driving, "driving")
     opts = _options(limits, min_transmission_deg, max_link_ratio, input, base_plate, obstacles,
                     link_width, travel_samples, rank_by)
     if client is None:

@@ -27,6 +27,11 @@ polylines, poles, sectors); nothing is computed again here. Lengths are
 written as they are, in the task's unit, which ``units=`` records (DXF
 ``$INSUNITS``, SVG ``width``/``height``); it does not scale anything.
 
+**Units.** ``units=`` (default :data:`DEFAULT_UNITS`) takes any unit name
+(see :func:`burmester.units.check_units`): DXF ``$INSUNITS`` and
+``$MEASUREMENT`` for a unit ezdxf knows, else unitless with the name
+written into the drawing; None: unitless.
+
 One layer (DXF) or ``<g id=...>`` group (SVG) per concept, with the same
 names in both, each in its own colour (drawings: ``center`` and ``circle``,
 the planes of three poses, ``4``/``5`` four or five poses, ``linkage``):
@@ -117,25 +122,28 @@ Needs ezdxf for DXF and contourpy for the regions (both in
 
 from __future__ import annotations
 
+import functools
+import inspect
 import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Dict, Iterator, List, Literal, NamedTuple, Optional, Sequence, Tuple, Union, cast
+from typing import TYPE_CHECKING, Any, Callable, Dict, Iterator, List, Literal, NamedTuple, Optional, Sequence, Tuple, Union, cast
 
 import numpy as np
 import numpy.typing as npt
 
 import burmester
-from burmester import _io
+from burmester import _io, _scene, _view
 from burmester._burmester import Filemon, Grid, SynthesizedFourBar, Task, clip_line
-from burmester.taskfile import (
-    DEFAULT_GRID, default_circle_view, default_curve_view, default_view, grid_for, has_pole_triangle,
-)
 from burmester.units import check_units, dxf_imperial, dxf_units, format_length
 
 if TYPE_CHECKING:
+    from typing_extensions import ParamSpec
+
     from burmester._burmester import Method, Mode
+
+    _P = ParamSpec("_P")
 
 __all__ = [
     "DEFAULT_PATH_SAMPLES",
@@ -491,45 +499,6 @@ def _target(path: PathLike, suffixes: Sequence[str]) -> Path:
     return p
 
 
-def _extent(view: Any) -> Extent:
-    """``(xmin, xmax, ymin, ymax)`` from a sequence of four finite numbers
-    with ``xmin < xmax`` and ``ymin < ymax``, or InvalidInputError."""
-    try:
-        xmin, xmax, ymin, ymax = (float(t) for t in view)
-    except (TypeError, ValueError):
-        raise burmester.InvalidInputError(
-            f"view must be a burmester.Grid or (xmin, xmax, ymin, ymax), got {view!r}"
-        ) from None
-    if not (math.isfinite(xmin + xmax + ymin + ymax) and xmin < xmax and ymin < ymax):
-        raise burmester.InvalidInputError(
-            f"view must be (xmin, xmax, ymin, ymax), finite, with xmin < xmax and ymin < ymax, got {tuple(view)}"
-        )
-    return (xmin, xmax, ymin, ymax)
-
-
-def _view(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[int, int]]) -> Grid:
-    """A Grid from a Grid, ``(xmin, xmax, ymin, ymax)`` (400 samples along
-    the longer side) or None (the default view), ``grid = (nx, ny)`` samples
-    when given."""
-    if view is None:
-        g = default_view(filemon)
-    elif isinstance(view, Grid):
-        g = view
-    else:
-        g = grid_for(*_extent(view), DEFAULT_GRID)
-    if grid is not None:
-        nx, ny = (_samples(name, n, 2) for name, n in zip(("grid nx", "grid ny"), grid))
-        g = Grid(g.xmin, g.xmax, g.ymin, g.ymax, nx, ny)
-    return g
-
-
-def _mask(name: str, array: npt.ArrayLike, shape: Tuple[int, int]) -> npt.NDArray[np.bool_]:
-    a = np.asarray(array)
-    if a.shape != shape:
-        raise burmester.InvalidInputError(f"{name} must have the grid's shape (ny, nx) = {shape}, got {a.shape}")
-    return a.astype(bool)
-
-
 # ---------------------------------------------------------------------------
 # Geometry helpers (drawing only: the core gives the points)
 
@@ -617,13 +586,11 @@ def _runs(x: Array, y: Array, valid: npt.NDArray[np.bool_]) -> Iterator[Array]:
 # The linkage
 
 
-def _links(d: _Drawing, layer: str, sfb: SynthesizedFourBar, theta2: float, mode: Mode, what: str,
-           joints: bool) -> None:
-    """Crank, coupler triangle and rocker at ``theta2`` (from the core's joints)."""
-    o2, a, b, o4 = sfb.fourbar.joints(theta2, mode)
-    x, y, _ = sfb.pose_at(theta2, mode)
+def _links(d: _Drawing, layer: str, at: _scene.Position, what: str, joints: bool) -> None:
+    """Crank, coupler triangle and rocker of a position (the core's joints)."""
+    o2, a, b, o4, p = at
     d.polyline(layer, [o2, a], f"crank A0 A, {what}")
-    d.polyline(layer, [a, b, (x, y)], f"coupler A B P, {what}", closed=True)
+    d.polyline(layer, [a, b, p], f"coupler A B P, {what}", closed=True)
     d.polyline(layer, [b, o4], f"rocker B C0, {what}")
     if joints:
         d.marker(layer, a, f"moving pivot A, {what}")
@@ -652,8 +619,9 @@ def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_sampl
             "(travel_samples=0, no --travel) or choose another driving pivot"
         )
     fb = sfb.fourbar
-    a0, c0 = sfb.driving[0], sfb.driven[0]
-    n = len(sfb.input_angles)
+    sc = _scene.linkage_scene(sfb, task)
+    a0, c0 = sc.a0, sc.c0
+    n = len(sc.at_poses)
     d = _Drawing(f"four-bar at {n} poses: {fb.grashof}, A0 {a0}, C0 {c0}")
     d.polyline("GROUND", [a0, c0], "ground A0 C0")
     d.marker("PIVOTS", a0, "fixed pivot A0", "A0" if labels else None)
@@ -676,21 +644,18 @@ def _linkage_drawing(sfb: SynthesizedFourBar, task: Optional[Task], travel_sampl
                 d.polyline("COUPLER_PATH", run, f"coupler path, pose {k} to pose {k + 1}")
         if travel_samples:
             for i, t in enumerate(sfb.travel_angles(travel_samples).tolist(), start=1):
-                _links(d, "TRAVEL", sfb, t, mode, f"travel sample {i} of {travel_samples}", False)
+                _links(d, "TRAVEL", _scene.position(sfb, t, mode), f"travel sample {i} of {travel_samples}", False)
 
-    for k, (theta2, m) in enumerate(zip(sfb.input_angles, sfb.modes), start=1):
-        _links(d, f"LINKAGE_{k}", sfb, theta2, m or "open", f"pose {k} ({m or 'toggle'})", True)
+    for k, (_, m, at) in enumerate(sc.at_poses, start=1):
+        _links(d, f"LINKAGE_{k}", at, f"pose {k} ({m or 'toggle'})", True)
 
-    poses = task.poses if task is not None else [
-        sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)
-    ]
-    _poses(d, poses, 0.3 * min(fb.lengths), labels)
+    _poses(d, sc.poses, sc.flag, labels)
     if dimensions:
-        _dimensions(d, sfb)
+        _dimensions(d, sc.at_poses[0].position)
     return d
 
 
-def _dimensions(d: _Drawing, sfb: SynthesizedFourBar) -> None:
+def _dimensions(d: _Drawing, pose1: _scene.Position) -> None:
     """The dimensions of a linkage (layer ``DIMENSIONS``): the ground
     ``A0 C0``, and at pose 1 the crank ``A0 A``, the coupler ``A B`` and its
     triangle's sides ``A P``, ``B P`` to the coupler point, and the rocker
@@ -699,10 +664,7 @@ def _dimensions(d: _Drawing, sfb: SynthesizedFourBar) -> None:
     triangle's for its sides) first, at the first place where its text
     meets no text placed before; the fixed pivots' x and y from the origin
     (ordinates)."""
-    theta2, mode = sfb.input_angles[0], sfb.modes[0] or "open"
-    o2, a, b, o4 = sfb.fourbar.joints(theta2, mode)
-    x, y, _ = sfb.pose_at(theta2, mode)
-    p = (x, y)
+    o2, a, b, o4, p = pose1
     mid = ((o2[0] + a[0] + b[0] + o4[0]) / 4, (o2[1] + a[1] + b[1] + o4[1]) / 4)
     tri = ((a[0] + b[0] + p[0]) / 3, (a[1] + b[1] + p[1]) / 3)
     x0, x1, y0, y1 = d.bounds()
@@ -763,56 +725,48 @@ class _Overlays(NamedTuple):
     pivots: Optional[Sequence[Point]]
 
 
-def _center_drawing(filemon: Filemon, grid: Grid, method: Method, free: Optional[npt.ArrayLike],
-                    over: _Overlays, labels: bool) -> _Drawing:
+def _center_drawing(sc: _scene.CenterScene, filemon: Filemon, pivots: Optional[Sequence[Point]],
+                    levels: Sequence[float], labels: bool) -> _Drawing:
+    grid = sc.grid
     extent = grid.extent
     d = _Drawing("driving crank center-point plane", extent)
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
-    free_b = _mask("free", free, grid.shape) if free is not None else filemon.branch_map(grid, method=method)
-    for rings in _regions(grid, free_b):
+    for rings in _regions(grid, sc.free):
         d.regions.append(_Region("BRANCH_FREE", rings, "branch-free driving pivots"))
-    if over.acceptable is not None:
-        for rings in _regions(grid, free_b & _mask("acceptable", over.acceptable, grid.shape)):
+    if sc.acceptable is not None:
+        for rings in _regions(grid, sc.free & sc.acceptable):
             d.regions.append(_Region("ACCEPTABLE", rings, "branch-free and acceptable driving pivots"))
-    if over.transmission is not None:
-        values = np.asarray(over.transmission, dtype=float)
-        if values.shape != grid.shape:
-            raise burmester.InvalidInputError(
-                f"transmission must have the grid's shape (ny, nx) = {grid.shape}, got {values.shape}"
-            )
+    values = sc.transmission
+    if values is not None:
         longest: Dict[float, Array] = {}
-        for level, line in _contours(grid, values, over.levels):
+        for level, line in _contours(grid, values, levels):
             d.polyline("TRANSMISSION", line, f"transmission angle {level:g} deg")
             if len(line) > len(longest.get(level, ())):
                 longest[level] = line
         if labels:  # each level once, at the middle of its longest piece
             for level, line in longest.items():
                 d.labels.append(_Label((float(line[len(line) // 2][0]), float(line[len(line) // 2][1])), f"{level:g}"))
-    extreme = filemon.extreme_poses
-    if extreme is not None:
-        for pose, conic in zip(extreme, filemon.conics):
-            for pl in conic.polylines(*extent):
-                d.polyline(f"CONIC_{pose}", pl, f"Filemon line {pose} transformed ({conic.kind})")
-    task = filemon.task
-    poles = [(p.pair, p.point) for p in task.poles if p.point is not None]
-    for (i, j), p in poles:
-        d.marker("POLES", p, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
-    if has_pole_triangle(task):  # not with a pole at infinity
+    for pose, kind, polylines in _scene.conics(filemon, extent):
+        for pl in polylines:
+            d.polyline(f"CONIC_{pose}", pl, f"Filemon line {pose} transformed ({kind})")
+    poles = [(name, p) for name, p in sc.poles if p is not None]
+    for name, p in poles:
+        d.marker("POLES", p, f"pole {name}", name if labels else None)
+    if sc.pole_triangle:  # not with a pole at infinity
         d.polyline("POLE_TRIANGLE", [p for _, p in poles], "pole triangle", closed=True)
-        _circle_or_line(d, "POLE_CIRCLE", task.pole_circle(), extent, "pole circle")
-    d.marker("DRIVEN_PIVOT", filemon.driven_center, "driven crank's fixed pivot C0", "C0" if labels else None)
-    for k, p in enumerate(over.pivots or [], start=1):
+        _circle_or_line(d, "POLE_CIRCLE", filemon.task.pole_circle(), extent, "pole circle")
+    d.marker("DRIVEN_PIVOT", sc.c0, "driven crank's fixed pivot C0", "C0" if labels else None)
+    for k, p in enumerate(pivots or [], start=1):
         d.marker("BEST_PIVOTS", p, f"driving pivot {k}", str(k) if labels else None)
     return d
 
 
-def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
+def _circle_drawing(sc: _scene.CircleScene, task: Task, labels: bool) -> _Drawing:
+    extent = sc.extent
     d = _Drawing("driving crank circle-point plane (pose 1)", extent)
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
-    c1 = filemon.driven_circle
-    corners = _rectangle(extent)
-    radius = 2.0 * float(np.max(np.hypot(corners[:, 0] - c1[0], corners[:, 1] - c1[1]))) + 1.0
-    for a0, a1, is_free in filemon.sectors:
+    c1, radius = sc.construction.c1, sc.radius
+    for a0, a1, is_free in sc.sectors:
         if not is_free:
             continue
         # Arc points 5 degrees apart at this radius lie outside the view, so the clipped wedge is exact.
@@ -821,33 +775,26 @@ def _circle_drawing(filemon: Filemon, extent: Extent, labels: bool) -> _Drawing:
         clipped = _clip_polygon(wedge, extent)
         if len(clipped) >= 3:
             d.regions.append(_Region("BRANCH_FREE", [clipped], "branch-free driving circle points"))
-    task = filemon.task
-    if has_pole_triangle(task):  # not with a pole at infinity
-        for name, p in zip(("P12", "P13", "P'23"), task.image_poles()):
+    if sc.image_poles:  # not with a pole at infinity
+        for name, p in zip(("P12", "P13", "P'23"), sc.image_poles):
             d.marker("IMAGE_POLES", p, f"image pole {name}", name if labels else None)
         _circle_or_line(d, "IMAGE_POLE_CIRCLE", task.image_pole_circle(), extent, "image-pole circle")
-    _filemon_construction(d, c1, filemon.all_lines, filemon.fixed_pivot_images, extent, labels,
-                          filemon.middle_pose)
+    _filemon_construction(d, sc.construction, labels, sc.middle)
     return d
 
 
-def _filemon_construction(d: _Drawing, c1: Point, lines: Sequence[Tuple[Point, Point]],
-                          images: Sequence[Point], extent: Extent, labels: bool,
-                          middle: Optional[int] = None) -> None:
-    """Filemon's construction in the circle-point plane: its lines (``(point,
-    direction)``, one per pose, clipped to the view; layers ``LINE_k``), the
-    fixed pivot's images ``C'k`` and the driven circle point ``C1``."""
-    for k, (point, direction) in enumerate(lines, start=1):
-        seg = clip_line(point, direction, extent)
+def _filemon_construction(d: _Drawing, made: _scene.Construction, labels: bool, middle: Optional[int] = None) -> None:
+    """Filemon's construction in the circle-point plane: its lines (one per
+    pose, clipped to the view; layers ``LINE_k``), the fixed pivot's images
+    ``C'k`` and the driven circle point ``C1``."""
+    for k, seg in enumerate(made.lines, start=1):
         if seg is not None:
             d.polyline(f"LINE_{k}", seg, f"line C1 C'{k} (pose {k})" + (", middle" if k == middle else ""))
-    for k, p in enumerate(images, start=1):
+    for k, p in enumerate(made.images, start=1):
         name = f"C'{k}" + (" = C0" if k == 1 else "")
         d.marker("FIXED_PIVOT_IMAGES", p, f"fixed pivot image {name}", name if labels else None)
-    d.marker("DRIVEN_CIRCLE_POINT", c1, "driven crank's moving pivot C1", "C1" if labels else None)
+    d.marker("DRIVEN_CIRCLE_POINT", made.c1, "driven crank's moving pivot C1", "C1" if labels else None)
 
-
-_ORDER_LAYERS = {"counterclockwise": "CURVE_CCW", "clockwise": "CURVE_CW", None: "CURVE_ORDER_DEFECT"}
 
 
 def _poses(d: _Drawing, poses: Sequence[Sequence[float]], flag: float, labels: bool) -> None:
@@ -858,69 +805,46 @@ def _poses(d: _Drawing, poses: Sequence[Sequence[float]], flag: float, labels: b
         d.marker("POSES", (px, py), f"pose {k}", str(k) if labels else None)
 
 
-def _burmester_drawing(task: Task, extent: Extent, driven: Optional[Point], labels: bool,
-                       plane: Literal["center", "circle"]) -> _Drawing:
-    n = len(task)
-    circle = plane == "circle"
-    title = ("circle-point curve (coupler frame at pose 1)" if circle
-             else "center-point curve" if n == 4 else "Burmester points")
-    d = _Drawing(f"{n} poses: {title}", extent)
+def _curve_drawing(task: Task, view: Optional[ViewLike], driven: Optional[Point], labels: bool,
+                   plane: Plane) -> _Drawing:
+    """The scene of a plane of four or five poses (:func:`burmester._scene.curve_scene`) as a drawing."""
+    if plane not in ("center", "circle"):
+        raise burmester.InvalidInputError(f"plane must be 'center' or 'circle', got {plane!r}")
+    sc = _scene.curve_scene(task, view, driven, plane)
+    extent = sc.extent
+    d = _Drawing(f"{sc.n_poses} poses: {sc.title}", extent)
     d.polyline("VIEW", _rectangle(extent), "view", closed=True)
-    if n == 4:
-        if driven is not None:
-            what = "circle points" if circle else "pivots"
-            for pts in task.branch_free_arcs(driven, *extent, plane=plane):
-                d.polyline("BRANCH_FREE_ARCS", pts, f"branch-free driving {what} for C0")
-            if circle:
-                _filemon_lines(d, task, driven, extent, labels)
-            else:
-                d.marker("DRIVEN_PIVOT", driven, "driven crank's fixed pivot C0", "C0" if labels else None)
-        for order, direction, pts in task.order_arcs(*extent, plane=plane):
-            d.polyline(_ORDER_LAYERS[direction], pts, f"{plane}-point curve, crank order {order}")
-        prime = "'" if circle else ""
-        for q in task.coincidence_points():
-            point = q.circle if circle else q.center
-            if point is not None:
-                name = "Q{}{}{}".format(prime, *q.pair)
-                d.marker("COINCIDENCE_POINTS", point, name, name if labels else None)
-    else:
-        for curve, which in zip(task.burmester_curves(), ("1234", "1235")):
-            for pts in curve.polylines(*extent):
-                d.polyline(f"CURVE_{which}", pts, f"center-point curve of poses {', '.join(which)}")
-        for k, (center, _) in enumerate(task.burmester_points(), start=1):
-            d.marker("BURMESTER_POINTS", center, f"Burmester point B{k}", f"B{k}" if labels else None)
-    if not circle:  # in the circle-point plane the poles P1k are the points Q'1k
-        for pole in task.poles:
-            if pole.point is not None:
-                i, j = pole.pair
-                d.marker("POLES", pole.point, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
+    what = "circle points" if plane == "circle" else "pivots"
+    for pts in sc.free_arcs:
+        d.polyline("BRANCH_FREE_ARCS", pts, f"branch-free driving {what} for C0")
+    if sc.construction is not None:
+        _filemon_construction(d, sc.construction, labels)
+    if sc.driven is not None:
+        d.marker("DRIVEN_PIVOT", sc.driven, "driven crank's fixed pivot C0", "C0" if labels else None)
+    for order, direction, pts in sc.order_arcs:
+        d.polyline(_scene.ORDER_LAYERS[direction], pts, f"{plane}-point curve, crank order {order}")
+    for pair, point in sc.coincidence:
+        name = "Q{}{}{}".format(sc.prime, *pair)
+        d.marker("COINCIDENCE_POINTS", point, name, name if labels else None)
+    for which, polylines in sc.curves:
+        for pts in polylines:
+            d.polyline(f"CURVE_{which}", pts, f"center-point curve of poses {', '.join(which)}")
+    for k, center in enumerate(sc.burmester_points, start=1):
+        d.marker("BURMESTER_POINTS", center, f"Burmester point B{k}", f"B{k}" if labels else None)
+    for (i, j), point in sc.poles:
+        d.marker("POLES", point, f"pole P{i}{j}", f"P{i}{j}" if labels else None)
     _poses(d, task.poses, 0.12 * task.scale, labels)
     return d
-
-
-def _filemon_lines(d: _Drawing, task: Task, driven: Point, extent: Extent, labels: bool) -> None:
-    """Four poses, circle-point plane: Filemon's construction for the driven
-    dyad of ``driven``, its lines through ``C1`` and ``C'k = D_k1(C0)``."""
-    c1 = task.circle_point(driven)
-    images = [task.displace(driven, k, 1) for k in range(1, len(task) + 1)]
-    # A line per pose through C1 and C'k (clip_line draws none where they coincide).
-    lines = [(c1, (p[0] - c1[0], p[1] - c1[1])) for p in images]
-    _filemon_construction(d, c1, lines, images, extent, labels)
 
 
 def _plane_drawing(filemon: Filemon, view: Optional[ViewLike], plane: str, grid: Optional[Tuple[int, int]],
                    method: Method, free: Optional[npt.ArrayLike], over: _Overlays, labels: bool) -> _Drawing:
     if plane == "circle":
-        extent = default_circle_view(filemon) if view is None else _view(filemon, view, None).extent
-        return _circle_drawing(filemon, extent, labels)
+        return _circle_drawing(_scene.circle_scene(filemon, view), filemon.task, labels)
     if plane != "center":
         raise burmester.InvalidInputError(f"plane must be 'center' or 'circle', got {plane!r}")
-    if free is not None and grid is None and not isinstance(view, Grid):
-        shape = np.shape(free)
-        if len(shape) != 2:
-            raise burmester.InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {shape}")
-        grid = (shape[1], shape[0])
-    return _center_drawing(filemon, _view(filemon, view, grid), method, free, over, labels)
+    sc = _scene.center_scene(filemon, view, grid, method, free, over.acceptable, over.transmission)
+    return _center_drawing(sc, filemon, over.pivots, over.levels, labels)
 
 
 # ---------------------------------------------------------------------------
@@ -1125,6 +1049,30 @@ def _write(d: _Drawing, path: Path, units: str) -> Path:
     return path
 
 
+def _export(path: PathLike, units: Optional[str], drawing: Callable[[], _Drawing]) -> Path:
+    """The checked target (``.dxf`` or ``.svg``) and units first, then the
+    drawing, written (:func:`_write`)."""
+    target = _target(path, (".dxf", ".svg"))
+    checked = _units(units)
+    return _write(drawing(), target, checked)
+
+
+def _only(suffix: str, export: Callable[_P, Path]) -> Callable[_P, Path]:
+    """``export`` for one suffix: another is an InvalidInputError (``linkage_dxf``
+    is :func:`linkage` for ``.dxf`` files); the same arguments."""
+    signature = inspect.signature(export)
+
+    @functools.wraps(export)
+    def only(*args: _P.args, **kwargs: _P.kwargs) -> Path:
+        _target(signature.bind(*args, **kwargs).arguments["path"], (suffix,))
+        return export(*args, **kwargs)
+
+    only.__name__ = only.__qualname__ = f"{export.__name__}_{suffix[1:]}"
+    only.__doc__ = (f":func:`{export.__name__}` to a ``{suffix}`` file (another suffix is an "
+                    "InvalidInputError): the same arguments.")
+    return only
+
+
 # ---------------------------------------------------------------------------
 # The public functions
 
@@ -1178,11 +1126,7 @@ def linkage(
             :data:`DEFAULT_PATH_SAMPLES`).
         labels: write ``A0``, ``C0`` and the pose numbers (layer ``TEXT``).
         dimensions: dimension the links and the fixed pivots (layer ``DIMENSIONS``).
-        units: the unit of the lengths, recorded in the file (default
-            :data:`DEFAULT_UNITS`): any unit name (see
-            :func:`burmester.units.check_units`); DXF ``$INSUNITS`` and
-            ``$MEASUREMENT`` for a unit ezdxf knows, else unitless with
-            the name written into the drawing; None: unitless.
+        units: the unit of the lengths, recorded in the file (the module's *Units*).
 
     Returns:
         The path written.
@@ -1194,47 +1138,7 @@ def linkage(
             be driven through the poses in order (no travel).
         ImportError: ezdxf (for ``.dxf``) is not installed.
     """
-    return _linkage_to((".dxf", ".svg"), sfb, path, task, travel_samples, path_samples, labels, units, dimensions)
-
-
-def _linkage_to(suffixes: Sequence[str], sfb: SynthesizedFourBar, path: PathLike, task: Optional[Task],
-                travel_samples: int, path_samples: int, labels: bool, units: Optional[str],
-                dimensions: bool = True) -> Path:
-    target = _target(path, suffixes)
-    units = _units(units)
-    return _write(_linkage_drawing(sfb, task, travel_samples, path_samples, labels, dimensions), target, units)
-
-
-def linkage_dxf(
-    sfb: SynthesizedFourBar,
-    path: PathLike,
-    *,
-    task: Optional[Task] = None,
-    travel_samples: int = 0,
-    path_samples: int = DEFAULT_PATH_SAMPLES,
-    labels: bool = True,
-    units: Optional[str] = DEFAULT_UNITS,
-    dimensions: bool = True,
-) -> Path:
-    """:func:`linkage` to a ``.dxf`` file (another suffix is an
-    InvalidInputError): the same arguments."""
-    return _linkage_to((".dxf",), sfb, path, task, travel_samples, path_samples, labels, units, dimensions)
-
-
-def linkage_svg(
-    sfb: SynthesizedFourBar,
-    path: PathLike,
-    *,
-    task: Optional[Task] = None,
-    travel_samples: int = 0,
-    path_samples: int = DEFAULT_PATH_SAMPLES,
-    labels: bool = True,
-    units: Optional[str] = DEFAULT_UNITS,
-    dimensions: bool = True,
-) -> Path:
-    """:func:`linkage` to an ``.svg`` file (another suffix is an
-    InvalidInputError): the same arguments."""
-    return _linkage_to((".svg",), sfb, path, task, travel_samples, path_samples, labels, units, dimensions)
+    return _export(path, units, lambda: _linkage_drawing(sfb, task, travel_samples, path_samples, labels, dimensions))
 
 
 def plane(
@@ -1297,11 +1201,7 @@ def plane(
         pivots: ``(x, y)`` points to mark, numbered from 1 (for example
             ``[p.center for p in smap.best_pivots()]``).
         labels: write the names of the points (layer ``TEXT``).
-        units: the unit of the lengths, recorded in the file (default
-            :data:`DEFAULT_UNITS`): any unit name (see
-            :func:`burmester.units.check_units`); DXF ``$INSUNITS`` and
-            ``$MEASUREMENT`` for a unit ezdxf knows, else unitless with
-            the name written into the drawing; None: unitless.
+        units: the unit of the lengths, recorded in the file (the module's *Units*).
 
     Returns:
         The path written.
@@ -1315,59 +1215,7 @@ def plane(
         ImportError: ezdxf (for ``.dxf``) or contourpy is not installed.
     """
     over = _Overlays(acceptable, transmission, transmission_levels, pivots)
-    return _plane_to((".dxf", ".svg"), filemon, path, view, plane, grid, method, free, over, labels, units)
-
-
-def _plane_to(suffixes: Sequence[str], filemon: Filemon, path: PathLike, view: Optional[ViewLike], plane: str,
-              grid: Optional[Tuple[int, int]], method: Method, free: Optional[npt.ArrayLike], over: _Overlays,
-              labels: bool, units: Optional[str]) -> Path:
-    target = _target(path, suffixes)
-    units = _units(units)
-    return _write(_plane_drawing(filemon, view, plane, grid, method, free, over, labels), target, units)
-
-
-def plane_dxf(
-    filemon: Filemon,
-    path: PathLike,
-    view: Optional[ViewLike] = None,
-    *,
-    plane: Plane = "center",
-    grid: Optional[Tuple[int, int]] = None,
-    method: Method = "conic",
-    free: Optional[npt.ArrayLike] = None,
-    acceptable: Optional[npt.ArrayLike] = None,
-    transmission: Optional[npt.ArrayLike] = None,
-    transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
-    pivots: Optional[Sequence[Point]] = None,
-    labels: bool = True,
-    units: Optional[str] = DEFAULT_UNITS,
-) -> Path:
-    """:func:`plane` to a ``.dxf`` file (another suffix is an
-    InvalidInputError): the same arguments."""
-    over = _Overlays(acceptable, transmission, transmission_levels, pivots)
-    return _plane_to((".dxf",), filemon, path, view, plane, grid, method, free, over, labels, units)
-
-
-def plane_svg(
-    filemon: Filemon,
-    path: PathLike,
-    view: Optional[ViewLike] = None,
-    *,
-    plane: Plane = "center",
-    grid: Optional[Tuple[int, int]] = None,
-    method: Method = "conic",
-    free: Optional[npt.ArrayLike] = None,
-    acceptable: Optional[npt.ArrayLike] = None,
-    transmission: Optional[npt.ArrayLike] = None,
-    transmission_levels: Sequence[float] = DEFAULT_TRANSMISSION_LEVELS,
-    pivots: Optional[Sequence[Point]] = None,
-    labels: bool = True,
-    units: Optional[str] = DEFAULT_UNITS,
-) -> Path:
-    """:func:`plane` to an ``.svg`` file (another suffix is an
-    InvalidInputError): the same arguments."""
-    over = _Overlays(acceptable, transmission, transmission_levels, pivots)
-    return _plane_to((".svg",), filemon, path, view, plane, grid, method, free, over, labels, units)
+    return _export(path, units, lambda: _plane_drawing(filemon, view, plane, grid, method, free, over, labels))
 
 
 def burmester_plane(
@@ -1411,11 +1259,7 @@ def burmester_plane(
         driven: four poses: the driven dyad's center point ``C0``, on the curve.
         plane: ``"center"`` or, for four poses, ``"circle"``.
         labels: write the names of the points (layer ``TEXT``).
-        units: the unit of the lengths, recorded in the file (default
-            :data:`DEFAULT_UNITS`): any unit name (see
-            :func:`burmester.units.check_units`); DXF ``$INSUNITS`` and
-            ``$MEASUREMENT`` for a unit ezdxf knows, else unitless with
-            the name written into the drawing; None: unitless.
+        units: the unit of the lengths, recorded in the file (the module's *Units*).
 
     Returns:
         The path written.
@@ -1426,56 +1270,7 @@ def burmester_plane(
             five poses (``"needs_poses"``), another plane, another suffix, a
             folder that does not exist, unknown units or a view that is not a view.
     """
-    return _burmester_to((".dxf", ".svg"), task, path, view, driven, plane, labels, units)
-
-
-def _burmester_to(suffixes: Sequence[str], task: Task, path: PathLike, view: Optional[ViewLike],
-                  driven: Optional[Point], plane: Literal["center", "circle"], labels: bool,
-                  units: Optional[str]) -> Path:
-    target = _target(path, suffixes)
-    units = _units(units)
-    if plane not in ("center", "circle"):
-        raise burmester.InvalidInputError(f"plane must be 'center' or 'circle', got {plane!r}")
-    if len(task) not in (4, 5) or plane == "circle":
-        # The core's typed error, with its fields (the circle-point curve: four poses).
-        task.circle_point_curve() if plane == "circle" else task.center_point_curve()
-    if view is None:
-        extent = default_curve_view(task)
-    elif isinstance(view, Grid):
-        extent = view.extent
-    else:
-        extent = _extent(view)
-    return _write(_burmester_drawing(task, extent, driven, labels, plane), target, units)
-
-
-def burmester_plane_dxf(
-    task: Task,
-    path: PathLike,
-    view: Optional[ViewLike] = None,
-    *,
-    driven: Optional[Point] = None,
-    plane: Literal["center", "circle"] = "center",
-    labels: bool = True,
-    units: Optional[str] = DEFAULT_UNITS,
-) -> Path:
-    """:func:`burmester_plane` to a ``.dxf`` file (another suffix is an
-    InvalidInputError): the same arguments."""
-    return _burmester_to((".dxf",), task, path, view, driven, plane, labels, units)
-
-
-def burmester_plane_svg(
-    task: Task,
-    path: PathLike,
-    view: Optional[ViewLike] = None,
-    *,
-    driven: Optional[Point] = None,
-    plane: Literal["center", "circle"] = "center",
-    labels: bool = True,
-    units: Optional[str] = DEFAULT_UNITS,
-) -> Path:
-    """:func:`burmester_plane` to an ``.svg`` file (another suffix is an
-    InvalidInputError): the same arguments."""
-    return _burmester_to((".svg",), task, path, view, driven, plane, labels, units)
+    return _export(path, units, lambda: _curve_drawing(task, view, driven, labels, plane))
 
 
 # ---------------------------------------------------------------------------
@@ -1513,14 +1308,14 @@ def _sixbar_drawing(drive: burmester.Drive, turn_samples: int, path_samples: int
         raise burmester.InvalidInputError("turn_samples must be 0 (none) or at least 2, got 1")
     path_samples = _samples("path_samples", path_samples, 8)
     six = drive.sixbar
-    j = six.joints(drive.pose_crank_angles[0])
-    d0, a0, c0 = j[0], j[3], j[6]
+    sc = _scene.sixbar_scene(six, drive)
+    d0, a0, c0 = sc.d0, sc.a0, sc.c0
     d = _Drawing(f"six-bar: motor at D0 {d0}, A0 {a0}, C0 {c0}, time ratio {drive.time_ratio:.3f}")
     d.polyline("GROUND", [d0, a0], "drive ground D0 A0")
     d.polyline("GROUND", [a0, c0], "ground A0 C0")
     for q, name in ((d0, "D0"), (a0, "A0"), (c0, "C0")):
         d.marker("PIVOTS", q, f"fixed pivot {name}", name if labels else None)
-    d.circles.append(_Circle("CRANK_CIRCLE", (float(d0[0]), float(d0[1])), six.lengths[1], "crank circle"))
+    d.circles.append(_Circle("CRANK_CIRCLE", (float(d0[0]), float(d0[1])), sc.crank_radius, "crank circle"))
     ts = np.asarray(drive.turn_angles(path_samples), dtype=float)
     ts = np.append(ts, ts[0])
     x, y, ok = six.coupler_path(ts)
@@ -1531,9 +1326,9 @@ def _sixbar_drawing(drive: burmester.Drive, turn_samples: int, path_samples: int
     if turn_samples:
         for i, t in enumerate(drive.turn_angles(turn_samples), start=1):
             _sixbar_links(d, six, t, ("TURN", "TURN"), f"crank sample {i} of {turn_samples}", False)
-    for k, phi in enumerate(drive.pose_crank_angles, start=1):
+    for k, phi in enumerate(sc.pose_angles, start=1):
         _sixbar_links(d, six, phi, (f"DRIVE_{k}", f"LINKAGE_{k}"), f"pose {k}", True)
-    _poses(d, drive.task.poses, 0.3 * min(six.motion.lengths), labels)
+    _poses(d, sc.poses, sc.flag, labels)
     return d
 
 
@@ -1577,30 +1372,15 @@ def sixbar(
             exist, unknown units or a sample count out of range.
         ImportError: ezdxf (for ``.dxf``) is not installed.
     """
-    return _sixbar_to((".dxf", ".svg"), drive, path, turn_samples, path_samples, labels, units)
-
-
-def _sixbar_to(suffixes: Sequence[str], drive: burmester.Drive, path: PathLike, turn_samples: int,
-               path_samples: int, labels: bool, units: str) -> Path:
     if not isinstance(drive, burmester.Drive):
         raise TypeError(f"expected a burmester.Drive, got {type(drive).__name__}")
-    target = _target(path, suffixes)
-    units = _units(units)
-    return _write(_sixbar_drawing(drive, turn_samples, path_samples, labels), target, units)
-
-
-def sixbar_dxf(drive: burmester.Drive, path: PathLike, *, turn_samples: int = 0,
-               path_samples: int = DEFAULT_PATH_SAMPLES, labels: bool = True,
-               units: str = DEFAULT_UNITS) -> Path:
-    """:func:`sixbar` to a ``.dxf`` file: the same arguments."""
-    return _sixbar_to((".dxf",), drive, path, turn_samples, path_samples, labels, units)
-
-
-def sixbar_svg(drive: burmester.Drive, path: PathLike, *, turn_samples: int = 0,
-               path_samples: int = DEFAULT_PATH_SAMPLES, labels: bool = True,
-               units: str = DEFAULT_UNITS) -> Path:
-    """:func:`sixbar` to an ``.svg`` file: the same arguments."""
-    return _sixbar_to((".svg",), drive, path, turn_samples, path_samples, labels, units)
+    return _export(path, units, lambda: _sixbar_drawing(drive, turn_samples, path_samples, labels))
 
 
 __all__ += ["sixbar", "sixbar_dxf", "sixbar_svg"]
+
+# Each drawing for one suffix: the same arguments, another suffix an InvalidInputError.
+linkage_dxf, linkage_svg = _only(".dxf", linkage), _only(".svg", linkage)
+plane_dxf, plane_svg = _only(".dxf", plane), _only(".svg", plane)
+burmester_plane_dxf, burmester_plane_svg = _only(".dxf", burmester_plane), _only(".svg", burmester_plane)
+sixbar_dxf, sixbar_svg = _only(".dxf", sixbar), _only(".svg", sixbar)

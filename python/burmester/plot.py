@@ -32,6 +32,12 @@ editing; ``ax.figure.savefig("out.png")`` saves it. The artists carry gids
 ``"pole-circle"``, ...) to find and restyle them: ``[a for a in
 ax.get_children() if a.get_gid() == "poles"]``.
 
+Common parameters: ``labels`` (default True) writes the names of the
+points (or joints) and a title; ``legend`` (default True) draws a legend to
+the right of the axes; ``units``, the unit of the lengths (``"mm"``), is
+written on the axes (``x [mm]``; None: plain ``x`` and ``y``); ``ax`` is the
+Axes to draw into (default: a new figure).
+
 Lengths: every drawing with lengths on its axes takes ``units="mm"`` (any
 unit name; :mod:`burmester.units`) and labels its axes ``x [mm]``, ``y
 [mm]`` (plain ``x``, ``y`` without one); :func:`linkage` and :func:`four_bar`
@@ -72,11 +78,10 @@ except ImportError as e:  # pragma: no cover - exercised in a subprocess test
     ) from e
 
 import burmester
-from burmester import _io
+from burmester import _io, _scene, _view
 from burmester._burmester import Filemon, Grid, PairMap, SynthesizedFourBar, Task, clip_line
 from burmester.taskfile import (
-    DEFAULT_GRID, curve_plane_points, default_circle_view, default_curve_view, default_view, describe_outside,
-    grid_for, has_pole_triangle, outside_view,
+    DEFAULT_GRID, curve_plane_points, default_curve_view, default_view, describe_outside, outside_view,
 )
 from burmester.units import format_length, label_axes
 
@@ -110,21 +115,8 @@ def _as_grid(filemon: Filemon, view: Optional[ViewLike], grid: Optional[Tuple[in
              samples: int = DEFAULT_GRID) -> Grid:
     """A :class:`burmester.Grid` from a Grid, an ``(xmin, xmax, ymin, ymax)``
     sequence or None (the default view), both with ``samples`` along the
-    longer side, or ``grid = (nx, ny)`` samples when given."""
-    if view is None:
-        g = default_view(filemon, samples)
-    elif isinstance(view, Grid):
-        g = view
-    else:
-        xmin, xmax, ymin, ymax = (float(t) for t in view)
-        if not (xmin < xmax and ymin < ymax):
-            raise burmester.InvalidInputError(
-                f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
-            )
-        g = grid_for(xmin, xmax, ymin, ymax, samples)
-    if grid is not None:
-        g = Grid(g.xmin, g.xmax, g.ymin, g.ymax, int(grid[0]), int(grid[1]))
-    return g
+    longer side, or ``grid = (nx, ny)`` samples when given (:mod:`burmester._view`)."""
+    return _view.view_grid(view, grid, lambda: default_view(filemon, samples), samples)
 
 
 def _new_axes(ax: Optional[Axes], figsize: Tuple[float, float] = (8.0, 6.4)) -> Axes:
@@ -383,17 +375,6 @@ def _count_in(name: str, value: Any, lo: int, hi: int) -> int:
     return int(value)
 
 
-def _check_shape(name: str, array: Optional[npt.ArrayLike], shape: Tuple[int, int]) -> Optional[np.ndarray]:
-    if array is None:
-        return None
-    a = np.asarray(array)
-    if a.shape != shape:
-        raise burmester.InvalidInputError(
-            f"{name} must have the grid's shape (ny, nx) = {shape}, got {a.shape}"
-        )
-    return a
-
-
 def draw_conics(ax: Axes, filemon: Filemon, extent: Extent) -> List[Artist]:
     """The transformed Filemon curves clipped to ``extent``, every branch,
     in the colour of their line's pose (gid ``"conic-k"``; the first branch
@@ -406,16 +387,14 @@ def draw_conics(ax: Axes, filemon: Filemon, extent: Extent) -> List[Artist]:
         )
         note.set_gid("all-defective")
         return [note]
-    extreme = filemon.extreme_poses
-    assert extreme is not None
     drawn: List[Artist] = []
-    for pose, conic in zip(extreme, filemon.conics):
+    for pose, kind, polylines in _scene.conics(filemon, extent):
         color = POSE_COLORS[pose]
-        for k, pl in enumerate(conic.polylines(*extent)):
+        for k, pl in enumerate(polylines):
             (line,) = ax.plot(pl[:, 0], pl[:, 1], color=color, linewidth=1.6, zorder=3)
             line.set_gid(f"conic-{pose}")
             if k == 0:
-                line.set_label(f"Filemon line {pose} transformed ({conic.kind})")
+                line.set_label(f"Filemon line {pose} transformed ({kind})")
             drawn.append(line)
     return drawn
 
@@ -450,10 +429,7 @@ def center_plane(
     transmission: Optional[npt.ArrayLike] = None,
     transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
     pivots: Optional[Sequence[Point]] = None,
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw the driving crank's center-point plane, as in Borm & Kim's Fig. 10 and 12.
 
@@ -490,29 +466,16 @@ def center_plane(
             labelled contours at ``transmission_levels`` (gid ``"transmission"``).
         pivots: optional ``(x, y)`` points, best first: drawn as numbered stars
             (gid ``"pivots"``).
-        labels: write the names of the points and a title.
-        legend: draw a legend to the right of the axes.
-        units: the unit of the lengths (``"mm"``), written on the axes
-            (``x [mm]``); None: plain ``x`` and ``y``.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the points).
 
     Returns:
         The Axes.
     """
-    if free is not None and grid is None and not isinstance(view, Grid):
-        free_shape = np.shape(free)
-        if len(free_shape) != 2:
-            raise burmester.InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {free_shape}")
-        grid = (free_shape[1], free_shape[0])
-    v = _as_grid(filemon, view, grid)
+    sc = _scene.center_scene(filemon, view, grid, method, free, acceptable, transmission)
+    v = sc.grid
     extent = v.extent
-    shape = v.shape
-    free_a = _check_shape("free", free, shape)
-    if free_a is None:
-        free_a = filemon.branch_map(v, method=method)
-    free_b = free_a.astype(bool)
-    acc = _check_shape("acceptable", acceptable, shape)
-    trans = _check_shape("transmission", transmission, shape)
+    free_b, acc, trans = sc.free, sc.acceptable, sc.transmission
 
     ax = _new_axes(ax)
     img = ax.imshow(
@@ -540,9 +503,9 @@ def center_plane(
     # with a pure translation between two poses (a pole at infinity) there
     # is no triangle or circle: only the finite poles are drawn.
     task = filemon.task
-    named = [(f"P{i}{j}", p.point) for p, (i, j) in zip(task.poles, ((1, 2), (1, 3), (2, 3)))]
+    named = sc.poles
     poles = [pt for _, pt in named if pt is not None]
-    if len(poles) == 3:
+    if sc.pole_triangle:
         for a, b in ((0, 1), (1, 2), (2, 0)):
             seg = clip_line(poles[a], (poles[b][0] - poles[a][0], poles[b][1] - poles[a][1]), extent)
             if seg:
@@ -561,7 +524,7 @@ def center_plane(
         handles.append(tri)
         handles.append(_draw_circle(ax, task.pole_circle(), extent, "pole-circle", "pole circle"))
     handles.append(_markers(ax, poles, "poles", "poles", marker="o", markersize=5, color=POLE_COLOR, zorder=5))
-    c0 = filemon.driven_center
+    c0 = sc.c0
     handles.append(_markers(
         ax, [c0], "driven-pivot", "driven crank's fixed pivot C0",
         marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=5,
@@ -576,7 +539,7 @@ def center_plane(
     if trans is not None:
         xs, ys = v.cell_centers()
         cs = ax.contour(
-            xs, ys, np.asarray(trans, dtype=float), levels=sorted(transmission_levels),
+            xs, ys, trans, levels=sorted(transmission_levels),
             colors="#636363", linewidths=0.8, zorder=3,
         )
         cs.set_gid("transmission")
@@ -624,42 +587,18 @@ BURMESTER_COLOR = "#ffd700"
 
 def _draw_poses(ax: Axes, task: Task, labels: bool) -> Artist:
     """The poses as black dots with a flag along the coupler angle (gid ``"poses"``)."""
-    flag = 0.12 * task.scale
-    art: Optional[Artist] = None
-    for k, pose in enumerate(task.poses, start=1):
-        fx, fy = _flag(pose, flag)
-        (mk,) = ax.plot(fx, fy, color="black", linewidth=2.0, zorder=6)
-        mk.set_gid("poses")
-        (dot,) = ax.plot([pose[0]], [pose[1]], marker="o", markersize=4, color="black", zorder=6)
-        dot.set_gid("poses")
-        art = dot
-        if labels:
-            _label(ax, (pose[0], pose[1]), str(k))
+    art = _draw_flags(ax, task.poses, 0.12 * task.scale, labels, 6, "poses", 4)
     assert art is not None
     art.set_label("poses (coupler point and angle)")
     return art
 
 
-def _curve_extent(task: Task, view: Optional[Sequence[float]]) -> Extent:
-    """The extent of a four- or five-pose plane: ``view`` checked, or the
-    default around the task (:func:`burmester.taskfile.default_curve_view`)."""
-    if view is None:
-        return default_curve_view(task)
-    xmin, xmax, ymin, ymax = (float(t) for t in view)
-    if not (xmin < xmax and ymin < ymax):
-        raise burmester.InvalidInputError(
-            f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
-        )
-    return (xmin, xmax, ymin, ymax)
-
-
-def _draw_free_arcs(ax: Axes, task: Task, driven: Point, extent: Extent, plane: Literal["center", "circle"],
-                    handles: List[Any]) -> None:
+def _draw_free_arcs(ax: Axes, sc: _scene.CurveScene, handles: List[Any]) -> None:
     """Four poses: the branch-free arcs of the driving dyads for the driven
-    dyad of ``driven`` as a wide band under the curve of ``plane``
-    (``"center"`` or ``"circle"``; gid ``"branch-free-arcs"``)."""
-    what = "pivots" if plane == "center" else "circle points"
-    for k, pts in enumerate(task.branch_free_arcs(driven, *extent, plane=plane)):
+    dyad as a wide band under the curve of the scene's plane (gid
+    ``"branch-free-arcs"``)."""
+    what = "pivots" if sc.plane == "center" else "circle points"
+    for k, pts in enumerate(sc.free_arcs):
         (band,) = ax.plot(pts[:, 0], pts[:, 1], color=FREE_COLOR, linewidth=9.0,
                           solid_capstyle="butt", zorder=2)
         band.set_gid("branch-free-arcs")
@@ -668,35 +607,31 @@ def _draw_free_arcs(ax: Axes, task: Task, driven: Point, extent: Extent, plane: 
             handles.append(band)
 
 
-def _draw_order_arcs(ax: Axes, task: Task, extent: Extent, plane: Literal["center", "circle"], labels: bool,
-                     handles: List[Any]) -> None:
-    """Four poses: the curve of ``plane`` (``"center"`` or ``"circle"``) cut
-    by crank order and coloured by it (gid ``"center-point-curve"`` or
-    ``"circle-point-curve"``), and the points ``Q_jk`` (their circle points
-    ``Q'jk`` in the circle-point plane; gid ``"coincidence-points"``)."""
-    circle = plane == "circle"
+def _draw_order_arcs(ax: Axes, sc: _scene.CurveScene, labels: bool, handles: List[Any]) -> None:
+    """Four poses: the curve of the scene's plane cut by crank order and
+    coloured by it (gid ``"center-point-curve"`` or ``"circle-point-curve"``),
+    and the points ``Q_jk`` (their circle points ``Q'jk`` in the
+    circle-point plane; gid ``"coincidence-points"``)."""
+    circle = sc.plane == "circle"
     labelled: Dict[Optional[str], bool] = {}
-    for _, direction, pts in task.order_arcs(*extent, plane=plane):
+    for _, direction, pts in sc.order_arcs:
         (line,) = ax.plot(pts[:, 0], pts[:, 1], color=ORDER_COLORS[direction], linewidth=2.0, zorder=3)
-        line.set_gid(f"{plane}-point-curve")
+        line.set_gid(f"{sc.plane}-point-curve")
         if direction not in labelled:
             labelled[direction] = True
             label = ORDER_LABELS[direction]
             line.set_label(label.replace("center points", "circle points") if circle else label)
             handles.append(line)
-    points = ((q.pair, q.circle if circle else q.center) for q in task.coincidence_points())
-    qs = [(pair, p) for pair, p in points if p is not None]
-    if qs:
+    if sc.coincidence:
         legend = ("Q'jk: moving pivot on P_jk at poses j, k" if circle
                   else "Q_jk: crank positions j, k coincide")
         handles.append(_markers(
-            ax, [p for _, p in qs], "coincidence-points", legend,
+            ax, [p for _, p in sc.coincidence], "coincidence-points", legend,
             marker="D", markersize=6, color="white", markeredgecolor="black", zorder=5,
         ))
         if labels:
-            prime = "'" if circle else ""
-            for (j, k), p in qs:
-                _label(ax, p, f"Q{prime}{j}{k}", "0.3")
+            for (j, k), p in sc.coincidence:
+                _label(ax, p, f"Q{sc.prime}{j}{k}", "0.3")
 
 
 def _note_curve_points(ax: Axes, task: Task, extent: Extent, driven: Optional[Point],
@@ -706,15 +641,81 @@ def _note_curve_points(ax: Axes, task: Task, extent: Extent, driven: Optional[Po
     note_outside(ax, extent, curve_plane_points(task, driven, plane), units)
 
 
+def _curve_plane(task: Task, view: Optional[Sequence[float]], driven: Optional[Point], plane: _scene.Plane,
+                 labels: bool, legend: bool, units: Optional[str], ax: Optional[Axes]) -> Axes:
+    """:func:`burmester_plane` (``plane="center"``) or :func:`circle_curve_plane`
+    (``"circle"``): the scene (:func:`burmester._scene.curve_scene`) drawn, bottom first."""
+    sc = _scene.curve_scene(task, view, driven, plane)
+    extent = sc.extent
+    ax = _new_axes(ax)
+    handles: List[Any] = []
+    _draw_free_arcs(ax, sc, handles)
+    made = sc.construction
+    if made is not None:
+        for k, seg in enumerate(made.lines, start=1):
+            if seg is None:
+                continue
+            (line,) = ax.plot([seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]], color=POSE_COLORS[k],
+                              linewidth=0.9, zorder=2, label=f"line C1 C'{k} (pose {k})")
+            line.set_gid(f"filemon-line-{k}")
+            handles.append(line)
+        handles.append(_markers(ax, made.images, "fixed-pivot-images", "C'k = D_k1(C0)", marker="^",
+                                markersize=6, color="white", markeredgecolor="#ff7f0e", zorder=5))
+        handles.append(_markers(ax, [made.c1], "driven-circle-point", "driven crank's circle point C1", marker="o",
+                                markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=6))
+        if labels:
+            _label(ax, made.c1, "C1")
+            for k, image in enumerate(made.images, start=1):
+                _label(ax, image, f"C'{k}", "0.3")
+    if sc.driven is not None:
+        handles.append(_markers(
+            ax, [sc.driven], "driven-pivot", "driven crank's fixed pivot C0",
+            marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=6,
+        ))
+        if labels:
+            _label(ax, sc.driven, "C0")
+    _draw_order_arcs(ax, sc, labels, handles)
+    for which, polylines in sc.curves:
+        first = True
+        for pl in polylines:
+            (line,) = ax.plot(pl[:, 0], pl[:, 1], color="#2166ac" if which == "1234" else "#b2182b",
+                              linestyle="-" if which == "1234" else "--", linewidth=1.4, zorder=3)
+            line.set_gid(f"curve-{which}")
+            if first:
+                line.set_label(f"center-point curve of poses {', '.join(which)}")
+                handles.append(line)
+                first = False
+    if sc.burmester_points:
+        handles.append(_markers(
+            ax, sc.burmester_points, "burmester-points", "Burmester points (center points)",
+            marker="*", markersize=15, color=BURMESTER_COLOR, markeredgecolor="black", zorder=7,
+        ))
+        if labels:
+            for k, c in enumerate(sc.burmester_points, start=1):
+                _label(ax, c, f"B{k}")
+    if sc.poles:
+        handles.append(_markers(
+            ax, [p for _, p in sc.poles], "poles", "poles", marker="o", markersize=5, color=POLE_COLOR, zorder=5,
+        ))
+        if labels:
+            for (i, j), p in sc.poles:
+                _label(ax, p, f"P{i}{j}")
+    handles.append(_draw_poses(ax, task, labels))
+    if labels:
+        ax.set_title(f"{sc.n_poses} poses: {sc.title}")
+    if labels or units:
+        label_axes(ax, units)
+    _note_curve_points(ax, task, extent, driven, plane, units)
+    _finish(ax, extent, legend, handles)
+    return ax
+
+
 def burmester_plane(
     task: Task,
     view: Optional[Sequence[float]] = None,
     *,
     driven: Optional[Point] = None,
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw the center-point plane of four or five poses.
 
@@ -742,11 +743,8 @@ def burmester_plane(
             :func:`burmester.taskfile.default_curve_view`.
         driven: four poses: the driven dyad's center point ``C0``, to show
             the branch-free driving pivots.
-        labels: write the names of the points and a title.
-        legend: draw a legend to the right of the axes.
-        units: the unit of the lengths (``"mm"``), written on the axes
-            (``x [mm]``); None: plain ``x`` and ``y``.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the points).
 
     Returns:
         The Axes.
@@ -756,80 +754,16 @@ def burmester_plane(
             "needs_poses"``; draw it with :func:`center_plane`), or an empty
             view.
     """
-    n = len(task)
-    if n not in (4, 5):
-        # The core's typed error, with its fields.
-        task.center_point_curve()
-    extent = _curve_extent(task, view)
-    ax = _new_axes(ax)
-    handles: List[Any] = []
-    if n == 4 and driven is not None:
-        _draw_free_arcs(ax, task, driven, extent, "center", handles)
-        handles.append(_markers(
-            ax, [driven], "driven-pivot", "driven crank's fixed pivot C0",
-            marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=6,
-        ))
-        if labels:
-            _label(ax, driven, "C0")
-    if n == 4:
-        _draw_order_arcs(ax, task, extent, "center", labels, handles)
-    else:
-        curve_a, curve_b = task.burmester_curves()
-        for curve, gid, name, style in (
-            (curve_a, "curve-1234", "center-point curve of poses 1, 2, 3, 4", "-"),
-            (curve_b, "curve-1235", "center-point curve of poses 1, 2, 3, 5", "--"),
-        ):
-            first = True
-            for pl in curve.polylines(*extent):
-                (line,) = ax.plot(pl[:, 0], pl[:, 1], color="#2166ac" if gid == "curve-1234" else "#b2182b",
-                                  linestyle=style, linewidth=1.4, zorder=3)
-                line.set_gid(gid)
-                if first:
-                    line.set_label(name)
-                    handles.append(line)
-                    first = False
-        points = task.burmester_points()
-        if points:
-            handles.append(_markers(
-                ax, [c for c, _ in points], "burmester-points", "Burmester points (center points)",
-                marker="*", markersize=15, color=BURMESTER_COLOR, markeredgecolor="black", zorder=7,
-            ))
-            if labels:
-                for k, (c, _) in enumerate(points, start=1):
-                    _label(ax, c, f"B{k}")
-    poles = [(p.pair, p.point) for p in task.poles if p.point is not None]
-    if poles:
-        handles.append(_markers(
-            ax, [p for _, p in poles], "poles", "poles", marker="o", markersize=5, color=POLE_COLOR, zorder=5,
-        ))
-        if labels:
-            for (i, j), p in poles:
-                _label(ax, p, f"P{i}{j}")
-    handles.append(_draw_poses(ax, task, labels))
-    if labels:
-        what = "center-point curve" if n == 4 else "Burmester points"
-        ax.set_title(f"{n} poses: {what}")
-    if labels or units:
-        label_axes(ax, units)
-    _note_curve_points(ax, task, extent, driven, "center", units)
-    _finish(ax, extent, legend, handles)
-    return ax
+    return _curve_plane(task, view, driven, "center", labels, legend, units, ax)
 
 
 # ---------------------------------------------------------------------------
 # The circle-point plane
 
 
-def circle_curve_plane(
-    task: Task,
-    view: Optional[Sequence[float]] = None,
-    *,
-    driven: Optional[Point] = None,
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
-) -> Axes:
+def circle_curve_plane(task: Task, view: Optional[Sequence[float]] = None, *, driven: Optional[Point] = None,
+                       labels: bool = True, legend: bool = True, units: Optional[str] = None,
+                       ax: Optional[Axes] = None) -> Axes:
     """Draw the circle-point plane of four poses (the coupler frame at pose 1).
 
     The circle-point curve, every component in view, cut into pieces of
@@ -853,11 +787,8 @@ def circle_curve_plane(
         view: ``(xmin, xmax, ymin, ymax)``; default:
             :func:`burmester.taskfile.default_curve_view`.
         driven: the driven dyad's center point ``C0``.
-        labels: write the names of the points and a title.
-        legend: draw a legend to the right of the axes.
-        units: the unit of the lengths (``"mm"``), written on the axes
-            (``x [mm]``); None: plain ``x`` and ``y``.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the points).
 
     Returns:
         The Axes.
@@ -866,39 +797,7 @@ def circle_curve_plane(
         burmester.InvalidInputError: a task of three or five poses
             (``cause == "needs_poses"``), or an empty view.
     """
-    task.circle_point_curve()  # the core's typed error for three or five poses
-    extent = _curve_extent(task, view)
-    ax = _new_axes(ax)
-    handles: List[Any] = []
-    if driven is not None:
-        c1 = task.circle_point(driven)
-        _draw_free_arcs(ax, task, driven, extent, "circle", handles)
-        images = [task.displace(driven, k, 1) for k in range(1, 5)]
-        for k, image in enumerate(images, start=1):
-            seg = clip_line(c1, (image[0] - c1[0], image[1] - c1[1]), extent) if image != c1 else None
-            if seg is None:
-                continue
-            (line,) = ax.plot([seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]], color=POSE_COLORS[k],
-                              linewidth=0.9, zorder=2, label=f"line C1 C'{k} (pose {k})")
-            line.set_gid(f"filemon-line-{k}")
-            handles.append(line)
-        handles.append(_markers(ax, images, "fixed-pivot-images", "C'k = D_k1(C0)", marker="^",
-                                markersize=6, color="white", markeredgecolor="#ff7f0e", zorder=5))
-        handles.append(_markers(ax, [c1], "driven-circle-point", "driven crank's circle point C1", marker="o",
-                                markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=6))
-        if labels:
-            _label(ax, c1, "C1")
-            for k, image in enumerate(images, start=1):
-                _label(ax, image, f"C'{k}", "0.3")
-    _draw_order_arcs(ax, task, extent, "circle", labels, handles)
-    handles.append(_draw_poses(ax, task, labels))
-    if labels:
-        ax.set_title("4 poses: circle-point curve (coupler frame at pose 1)")
-    if labels or units:
-        label_axes(ax, units)
-    _note_curve_points(ax, task, extent, driven, "circle", units)
-    _finish(ax, extent, legend, handles)
-    return ax
+    return _curve_plane(task, view, driven, "circle", labels, legend, units, ax)
 
 
 # ---------------------------------------------------------------------------
@@ -917,9 +816,7 @@ def pair_map(
     pairs: Optional[int] = 5,
     rank_by: RankBy = "balanced",
     transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
-    labels: bool = True,
-    legend: bool = True,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a four-pose pair map (:meth:`burmester.Task.pair_map`): every
     linkage of the task on one picture.
@@ -1028,10 +925,7 @@ def circle_plane(
     filemon: Filemon,
     view: Optional[ViewLike] = None,
     *,
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw the driving crank's circle-point plane, as in Borm & Kim's Fig. 3 and 11.
 
@@ -1049,21 +943,16 @@ def circle_plane(
         filemon: Filemon's construction for the driven dyad.
         view: ``(xmin, xmax, ymin, ymax)`` or a :class:`burmester.Grid`;
             default: a square around ``C1``, the ``C'k`` and the image poles.
-        labels: write the names of the points and a title.
-        legend: draw a legend to the right of the axes.
-        units: the unit of the lengths (``"mm"``), written on the axes
-            (``x [mm]``); None: plain ``x`` and ``y``.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the points).
 
     Returns:
         The Axes.
     """
-    extent = default_circle_view(filemon) if view is None else _as_grid(filemon, view, None).extent
+    sc = _scene.circle_scene(filemon, view)
+    extent, c1 = sc.extent, sc.construction.c1
     ax = _new_axes(ax)
-    c1 = filemon.driven_circle
-    corners = [(x, y) for x in extent[:2] for y in extent[2:]]
-    radius = 2.0 * max(math.hypot(x - c1[0], y - c1[1]) for x, y in corners) + 1.0
-    free, defective = filemon_wedges(filemon, radius)
+    free, defective = filemon_wedges(filemon, sc.radius)
     handles: List[Artist] = []
     if free:
         patch = PathPatch(
@@ -1083,9 +972,8 @@ def circle_plane(
         ax.add_patch(hatch)
         handles.append(hatch)
 
-    middle = filemon.middle_pose
-    for k, (point, direction) in enumerate(filemon.all_lines, start=1):
-        seg = clip_line(point, direction, extent)
+    middle = sc.middle
+    for k, seg in enumerate(sc.construction.lines, start=1):
         if seg is None:
             continue
         (line,) = ax.plot(
@@ -1096,8 +984,7 @@ def circle_plane(
         line.set_gid(f"line-{k}")
         handles.append(line)
 
-    # A task with a pure translation between two poses has no image poles.
-    ip: List[Tuple[float, float]] = list(filemon.task.image_poles()) if has_pole_triangle(filemon.task) else []
+    ip = sc.image_poles
     if ip:
         handles.append(_draw_circle(
             ax, filemon.task.image_pole_circle(), extent, "image-pole-circle", "image-pole circle",
@@ -1105,7 +992,7 @@ def circle_plane(
         handles.append(_markers(
             ax, ip, "image-poles", "image poles", marker="s", markersize=5, color=POLE_COLOR, zorder=5,
         ))
-    images = filemon.fixed_pivot_images
+    images = sc.construction.images
     handles.append(_markers(
         ax, images, "fixed-pivot-images", "fixed pivot seen from the coupler, C'k",
         marker="^", markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=5,
@@ -1138,11 +1025,88 @@ def _flag(pose: Tuple[float, float, float], length: float) -> Tuple[List[float],
     return [x, x + length * math.cos(a)], [y, y + length * math.sin(a)]
 
 
-def _draw_static(ax: Axes, sfb: SynthesizedFourBar, task: Optional[Task], curve: bool, labels: bool) -> float:
-    """Ground pivots, coupler curve and the pose markers; returns the flag length."""
+def _animation_target(path: Union[str, Path], frames: int, fps: int, dpi: int) -> Tuple[Path, int, int, int]:
+    """The animation's path (``.gif`` or ``.mp4``, in a folder that exists)
+    and its counts, checked; InvalidInputError otherwise."""
+    path = Path(path)
+    if path.suffix.lower() not in (".gif", ".mp4"):
+        raise burmester.InvalidInputError(f"animation file must end in .gif or .mp4, got {path.name!r}")
+    frames = _count_in("frames", frames, 2, MAX_FRAMES)
+    fps = _count_in("fps", fps, 1, MAX_FPS)
+    dpi = _count_in("dpi", dpi, 1, MAX_DPI)
+    if not path.parent.is_dir():
+        raise burmester.InvalidInputError(
+            f"cannot write {path}: the folder {str(path.parent)!r} does not exist; create it first"
+        )
+    return path, frames, fps, dpi
+
+
+def _check_ffmpeg(path: Path) -> None:
+    """RuntimeError for an ``.mp4`` without ffmpeg on the PATH."""
+    if path.suffix.lower() == ".mp4" and not matplotlib.animation.writers.is_available("ffmpeg"):
+        raise RuntimeError("writing .mp4 needs ffmpeg on the PATH; install it, or write a .gif")
+
+
+def _around_data(ax: Axes, labels: bool, units: Optional[str]) -> None:
+    """Axis names (with ``labels`` or ``units``), equal aspect, limits
+    around the data with a margin of 8 %."""
+    if labels or units:
+        label_axes(ax, units)
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.margins(0.08)
+
+
+def _fit_frames(ax: Axes, polys: Sequence[Sequence[npt.NDArray[np.float64]]]) -> None:
+    """Limits around every frame's polylines, 8 % of the larger side
+    beyond, equal aspect: the moving linkage stays in view."""
+    allpts = np.vstack([np.vstack(p) for p in polys])
+    lo, hi = allpts.min(axis=0), allpts.max(axis=0)
+    pad = 0.08 * float(max(hi - lo))
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.set_aspect("equal")
+
+
+def _save_animation(anim: FuncAnimation, path: Path, fps: int, dpi: int) -> None:
+    """Write ``anim`` (GIF by Pillow, MP4 by ffmpeg) whole to a temporary
+    file beside ``path``, moved into place when complete (burmester._io):
+    Ctrl-C or a write error leaves no partial file."""
+    writer = PillowWriter(fps=fps) if path.suffix.lower() == ".gif" else FFMpegWriter(fps=fps)
+    with _io.atomic_path(path) as tmp:
+        try:
+            anim.save(str(tmp), writer=writer, dpi=dpi)
+        except Exception as e:
+            # The writer finishes its file in a `finally`; after Ctrl-C that
+            # can fail too (no frames yet) and hide the interrupt.
+            cause: Optional[BaseException] = e
+            while cause is not None:
+                if isinstance(cause, KeyboardInterrupt):
+                    raise cause from None
+                cause = cause.__context__
+            raise
+
+
+def _draw_flags(ax: Axes, poses: Sequence[Sequence[float]], flag: float, labels: bool, zorder: int,
+                gid: Optional[str] = None, markersize: float = 5) -> Optional[Artist]:
+    """Each pose as a dot with a flag along its angle (gid ``gid``, or
+    ``"pose-k"``), numbered with ``labels``; returns the last dot."""
+    dot: Optional[Artist] = None
+    for k, pose in enumerate(poses, start=1):
+        fx, fy = _flag((pose[0], pose[1], pose[2]), flag)
+        (mk,) = ax.plot(fx, fy, color="black", linewidth=2.0, zorder=zorder)
+        mk.set_gid(gid or f"pose-{k}")
+        (dot,) = ax.plot([pose[0]], [pose[1]], marker="o", markersize=markersize, color="black", zorder=zorder)
+        dot.set_gid(gid or f"pose-{k}")
+        if labels:
+            _label(ax, (pose[0], pose[1]), str(k))
+    return dot
+
+
+def _draw_static(ax: Axes, sfb: SynthesizedFourBar, sc: _scene.LinkageScene, curve: bool, labels: bool) -> None:
+    """Ground pivots, coupler curve and the pose markers of the scene."""
     fb = sfb.fourbar
-    a0, c0 = sfb.driving[0], sfb.driven[0]
-    flag = 0.3 * min(fb.lengths)
+    a0, c0 = sc.a0, sc.c0
     if curve:
         mode = sfb.modes[0] or "open"
         ts = np.linspace(0.0, 2 * math.pi, 1441)
@@ -1155,30 +1119,20 @@ def _draw_static(ax: Axes, sfb: SynthesizedFourBar, task: Optional[Task], curve:
         ax, [a0, c0], "fixed-pivots", "fixed pivots A0, C0",
         marker="^", markersize=10, color="0.2", zorder=6,
     )
-    poses = task.poses if task is not None else [
-        sfb.pose_at(t, m or "open") for t, m in zip(sfb.input_angles, sfb.modes)
-    ]
-    for k, pose in enumerate(poses, start=1):
-        fx, fy = _flag(pose, flag)
-        (mk,) = ax.plot(fx, fy, color="black", linewidth=2.0, zorder=7)
-        mk.set_gid(f"pose-{k}")
-        (dot,) = ax.plot([pose[0]], [pose[1]], marker="o", markersize=5, color="black", zorder=7)
-        dot.set_gid(f"pose-{k}")
-        if labels:
-            _label(ax, (pose[0], pose[1]), str(k))
+    _draw_flags(ax, sc.poses, sc.flag, labels, 7)
     if labels:
         _label(ax, a0, "A0")
         _label(ax, c0, "C0")
-    return flag
 
 
 def _linkage_polys(sfb: SynthesizedFourBar, theta2: float, mode: Mode) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """``(chain, coupler)``: the polyline O2-A-B-O4 and the coupler triangle A-B-P."""
-    o2, a, b, o4 = sfb.fourbar.joints(theta2, mode)
-    x, y, _ = sfb.pose_at(theta2, mode)
-    chain = np.array([o2, a, b, o4], dtype=float)
-    coupler = np.array([a, b, (x, y)], dtype=float)
-    return chain, coupler
+    return _chain_and_coupler(_scene.position(sfb, theta2, mode))
+
+
+def _chain_and_coupler(at: _scene.Position) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """``(chain, coupler)`` of a position: the polyline O2-A-B-O4 and the coupler triangle A-B-P."""
+    return np.array(at[:4], dtype=float), np.array([at.a, at.b, at.p], dtype=float)
 
 
 def linkage(
@@ -1186,10 +1140,7 @@ def linkage(
     *,
     task: Optional[Task] = None,
     coupler_curve: bool = True,
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a synthesized four-bar at the task's poses.
 
@@ -1210,20 +1161,17 @@ def linkage(
         task: the task, to mark the poses it asks for; default: the poses the
             linkage reaches at its input angles.
         coupler_curve: draw the coupler curve.
-        labels: write the names of the points and a title.
-        legend: draw a legend to the right of the axes.
-        units: the unit of the lengths (``"mm"``), written on the axes
-            (``x [mm]``); None: plain ``x`` and ``y``.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the points).
 
     Returns:
         The Axes.
     """
     ax = _new_axes(ax, (7.5, 6.0))
-    _draw_static(ax, sfb, task, coupler_curve, labels)
-    for k, (theta2, mode) in enumerate(zip(sfb.input_angles, sfb.modes), start=1):
-        m = mode or "open"
-        chain, coupler = _linkage_polys(sfb, theta2, m)
+    sc = _scene.linkage_scene(sfb, task)
+    _draw_static(ax, sfb, sc, coupler_curve, labels)
+    for k, (theta2, mode, at) in enumerate(sc.at_poses, start=1):
+        chain, coupler = _chain_and_coupler(at)
         color = POSE_COLORS[k]
         (ln,) = ax.plot(
             chain[:, 0], chain[:, 1], color=color, linewidth=2.0, marker="o", markersize=4,
@@ -1235,23 +1183,16 @@ def linkage(
         ax.add_patch(tri)
     if labels:
         state = "branch-free" if sfb.branch_free else "branch defect (modes differ)"
-        count = {3: "three", 4: "four", 5: "five"}.get(len(sfb.input_angles), str(len(sfb.input_angles)))
+        count = _scene.count_word(len(sfb.input_angles)).lower()
         ax.set_title(f"Four-bar at the {count} poses: {sfb.fourbar.grashof}, {state}")
-    if labels or units:
-        label_axes(ax, units)
-    ax.set_aspect("equal")
-    ax.autoscale_view()
-    ax.margins(0.08)
+    _around_data(ax, labels, units)
     if labels:
         # The link lengths, on the links at pose 1 (the axes' limits and
         # aspect first: the labels are placed on the screen).
         ax.apply_aspect()
-        theta2, mode1 = sfb.input_angles[0], sfb.modes[0] or "open"
-        joints = sfb.fourbar.joints(theta2, mode1)
-        poses_drawn = task.poses if task is not None else [sfb.pose_at(t, m or "open")
-                                                           for t, m in zip(sfb.input_angles, sfb.modes)]
+        joints = sc.at_poses[0].position[:4]
         label_lengths(ax, link_segments(sfb.fourbar, joints), units, color=POSE_COLORS[1],
-                      avoid=[*joints, *((q[0], q[1]) for q in poses_drawn)])
+                      avoid=[*joints, *((q[0], q[1]) for q in sc.poses)])
     if legend:
         _legend(ax)
     return ax
@@ -1294,9 +1235,7 @@ def animate(
     path: Union[str, Path],
     *,
     task: Optional[Task] = None,
-    frames: int = 60,
-    fps: int = 20,
-    dpi: int = 80,
+    frames: int = 60, fps: int = 20, dpi: int = 80,
     units: Optional[str] = None,
 ) -> FuncAnimation:
     """Write an animation of the four-bar driven through the poses.
@@ -1331,19 +1270,8 @@ def animate(
             (1 to :data:`MAX_DPI`) is out of range.
         RuntimeError: ``.mp4`` was asked for and ffmpeg is not installed.
     """
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix not in (".gif", ".mp4"):
-        raise burmester.InvalidInputError(f"animation file must end in .gif or .mp4, got {path.name!r}")
-    frames = _count_in("frames", frames, 2, MAX_FRAMES)
-    fps = _count_in("fps", fps, 1, MAX_FPS)
-    dpi = _count_in("dpi", dpi, 1, MAX_DPI)
-    if not path.parent.is_dir():
-        raise burmester.InvalidInputError(
-            f"cannot write {path}: the folder {str(path.parent)!r} does not exist; create it first"
-        )
-    if suffix == ".mp4" and not matplotlib.animation.writers.is_available("ffmpeg"):
-        raise RuntimeError("writing .mp4 needs ffmpeg on the PATH; install it, or write a .gif")
+    path, frames, fps, dpi = _animation_target(path, frames, fps, dpi)
+    _check_ffmpeg(path)
     figures = sfb.figures
     if not figures.branch_free:
         raise burmester.AssemblyError(
@@ -1360,14 +1288,9 @@ def animate(
     sequence = np.concatenate([angles, angles[-2:0:-1]])
 
     fig, ax = plt.subplots(figsize=(6.0, 5.0))
-    _draw_static(ax, sfb, task, True, True)
+    _draw_static(ax, sfb, _scene.linkage_scene(sfb, task), True, True)
     polys = [_linkage_polys(sfb, float(t), mode) for t in sequence]
-    allpts = np.vstack([np.vstack(p) for p in polys])
-    lo, hi = allpts.min(axis=0), allpts.max(axis=0)
-    pad = 0.08 * float(max(hi - lo))
-    ax.set_xlim(lo[0] - pad, hi[0] + pad)
-    ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_aspect("equal")
+    _fit_frames(ax, polys)
     lengths = ", ".join(f"{name} {format_length(v, units)}"
                         for name, v in zip(("ground", "crank", "coupler", "rocker"), sfb.fourbar.lengths))
     title = ax.set_title(f"{sfb.fourbar.grashof}, driven through the poses ({mode})\n{lengths}", fontsize=10)
@@ -1386,21 +1309,7 @@ def animate(
         return [chain_art, tri]
 
     anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
-    writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
-    # Whole to a temporary file beside it, moved into place when complete
-    # (burmester._io): Ctrl-C or a write error leaves no partial file.
-    with _io.atomic_path(path) as tmp:
-        try:
-            anim.save(str(tmp), writer=writer, dpi=dpi)
-        except Exception as e:
-            # The writer finishes its file in a `finally`; after Ctrl-C that
-            # can fail too (no frames yet) and hide the interrupt.
-            cause: Optional[BaseException] = e
-            while cause is not None:
-                if isinstance(cause, KeyboardInterrupt):
-                    raise cause from None
-                cause = cause.__context__
-            raise
+    _save_animation(anim, path, fps, dpi)
     return anim
 
 
@@ -1408,15 +1317,8 @@ def animate(
 # One object at a glance: the pictures of the notebook display
 
 
-def poses(
-    task: Task,
-    view: Optional[Sequence[float]] = None,
-    *,
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
-) -> Axes:
+def poses(task: Task, view: Optional[Sequence[float]] = None, *, labels: bool = True, legend: bool = True,
+          units: Optional[str] = None, ax: Optional[Axes] = None) -> Axes:
     """Draw a task: its poses and poles.
 
     Draws each pose as a dot with a flag along the coupler angle (gid
@@ -1430,22 +1332,18 @@ def poses(
         view: ``(xmin, xmax, ymin, ymax)``; default: a square around the
             poses and the poles near them
             (:func:`burmester.taskfile.default_curve_view`).
-        labels: write the names of the points and a title.
-        legend: draw a legend to the right of the axes.
-        units: the unit of the lengths (``"mm"``), written on the axes
-            (``x [mm]``); None: plain ``x`` and ``y``.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the points).
 
     Returns:
         The Axes.
     """
-    extent: Extent = default_curve_view(task) if view is None else _as_extent(view)
+    extent: Extent = default_curve_view(task) if view is None else _view.extent(view)
     ax = _new_axes(ax, (7.0, 6.0))
     handles: List[Artist] = [_draw_poses(ax, task, labels)]
-    finite = [p for p in task.poles if p.point is not None]
-    at_infinity = [p for p in task.poles if p.point is None]
-    pts = [p.point for p in finite if p.point is not None]
-    if len(task) == 3:
+    sc = _scene.poses_scene(task)
+    pts = [p for _, p in sc.poles]
+    if sc.pole_triangle:
         tri = np.array(pts + pts[:1], dtype=float)
         (side,) = ax.plot(tri[:, 0], tri[:, 1], color=POLE_COLOR, linewidth=1.0, zorder=4, label="pole triangle")
         side.set_gid("pole-triangle")
@@ -1456,32 +1354,20 @@ def poses(
             ax, pts, "poles", "poles",
             marker="o", markersize=5, color=POLE_COLOR, zorder=5,
         ))
+    names = [(f"P{i}{j}", p) for (i, j), p in sc.poles]
     if labels:
-        for pole in finite:
-            assert pole.point is not None
-            _label(ax, pole.point, f"P{pole.pair[0]}{pole.pair[1]}")
-        count = {3: "Three", 4: "Four", 5: "Five"}[len(task)]
-        title = f"{count} poses and their poles"
-        if at_infinity:
-            title += " (at infinity: " + ", ".join(f"P{p.pair[0]}{p.pair[1]}" for p in at_infinity) + ")"
+        for name, p in names:
+            _label(ax, p, name)
+        title = f"{sc.count_word} poses and their poles"
+        if sc.at_infinity:
+            title += " (at infinity: " + ", ".join(f"P{i}{j}" for i, j in sc.at_infinity) + ")"
         ax.set_title(title)
     if labels or units:
         label_axes(ax, units)
-    note_outside(ax, extent, [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in finite]
-                 + [(f"pose {k}", q[:2]) for k, q in enumerate(task.poses, start=1)], units)
+    points: List[Tuple[str, Optional[Sequence[float]]]] = list(names)
+    note_outside(ax, extent, points + [(f"pose {k}", q[:2]) for k, q in enumerate(task.poses, start=1)], units)
     _finish(ax, extent, legend, handles)
     return ax
-
-
-def _as_extent(view: ViewLike) -> Extent:
-    if isinstance(view, Grid):
-        return view.extent
-    xmin, xmax, ymin, ymax = (float(t) for t in view)
-    if not (xmin < xmax and ymin < ymax):
-        raise burmester.InvalidInputError(
-            f"view must be (xmin, xmax, ymin, ymax) with xmin < xmax and ymin < ymax, got {tuple(view)}"
-        )
-    return (xmin, xmax, ymin, ymax)
 
 
 def _default_input_angle(fb: burmester.FourBar) -> float:
@@ -1498,10 +1384,7 @@ def four_bar(
     theta2: Optional[float] = None,
     mode: Mode = "open",
     *,
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a four-bar at one input angle.
 
@@ -1517,11 +1400,8 @@ def four_bar(
         theta2: the input angle, radians; default: 0 when the input turns
             fully, else the middle of its first arc (:attr:`FourBar.input_range`).
         mode: the assembly mode, ``"open"`` or ``"crossed"``.
-        labels: write the names of the joints and a title.
-        legend: draw a legend to the right of the axes.
-        units: the unit of the lengths (``"mm"``), written on the axes
-            (``x [mm]``); None: plain ``x`` and ``y``.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the joints).
 
     Returns:
         The Axes.
@@ -1559,11 +1439,7 @@ def four_bar(
         l1, l2, l3, l4 = (format_length(v, units) for v in fb.lengths)
         ax.set_title(f"Four-bar ({fb.grashof}): ground {l1}, crank {l2}, coupler {l3}, rocker {l4}",
                      fontsize=10)
-    if labels or units:
-        label_axes(ax, units)
-    ax.set_aspect("equal")
-    ax.autoscale_view()
-    ax.margins(0.08)
+    _around_data(ax, labels, units)
     if labels:
         ax.apply_aspect()  # the final limits: the length labels are placed on the screen
         label_lengths(ax, link_segments(fb, (o2, a, b, o4)), units, avoid=[o2, a, b, o4])
@@ -1577,10 +1453,7 @@ def solution_map(
     *,
     pivots: int = 3,
     transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a solution-space map: what ``burmester map --design`` draws.
 
@@ -1598,11 +1471,8 @@ def solution_map(
         smap: the map.
         pivots: how many of the best pivots to mark (0: none).
         transmission_levels: the contour levels, degrees.
-        labels: write the names of the points and a title.
-        legend: draw a legend to the right of the axes.
-        units: the unit of the lengths (``"mm"``), written on the axes
-            (``x [mm]``); None: plain ``x`` and ``y``.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the points).
 
     Returns:
         The Axes.
@@ -1660,10 +1530,7 @@ def solution_map(
 def atlas(
     pivot_atlas: burmester.PivotAtlas,
     *,
-    labels: bool = True,
-    legend: bool = True,
-    units: Optional[str] = None,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a pivot-pair atlas: what ``burmester atlas`` draws.
 
@@ -1795,10 +1662,9 @@ def _draw_sixbar_static(ax: Axes, six: burmester.SixBar, drive: Optional[burmest
     """Fixed pivots, crank circle, E's swing, the coupler path over a turn
     and the poses; returns legend handles."""
     handles: List[Artist] = []
-    j = six.joints(drive.pose_crank_angles[0] if drive is not None else 0.0)
-    d0, a0, c0 = j[0], j[3], j[6]
-    r = six.lengths[1]
-    crank = Circle(d0, r, fill=False, color=DRIVE_COLOR, linestyle=":", linewidth=1.0, zorder=2,
+    sc = _scene.sixbar_scene(six, drive, task)
+    d0, a0, c0 = sc.d0, sc.a0, sc.c0
+    crank = Circle(d0, sc.crank_radius, fill=False, color=DRIVE_COLOR, linestyle=":", linewidth=1.0, zorder=2,
                    label="crank circle")
     crank.set_gid("crank-circle")
     ax.add_patch(crank)
@@ -1820,17 +1686,7 @@ def _draw_sixbar_static(ax: Axes, six: burmester.SixBar, drive: Optional[burmest
     g.set_gid("ground")
     handles.append(_markers(ax, [d0, a0, c0], "fixed-pivots", "fixed pivots D0 (motor), A0, C0",
                             marker="^", markersize=10, color="0.2", zorder=6))
-    if drive is not None:
-        poses_ = task.poses if task is not None else drive.task.poses
-        flag = 0.3 * min(six.motion.lengths)
-        for k, pose in enumerate(poses_, start=1):
-            fx, fy = _flag(pose, flag)
-            (mk,) = ax.plot(fx, fy, color="black", linewidth=2.0, zorder=9)
-            mk.set_gid(f"pose-{k}")
-            (dot,) = ax.plot([pose[0]], [pose[1]], marker="o", markersize=5, color="black", zorder=9)
-            dot.set_gid(f"pose-{k}")
-            if labels:
-                _label(ax, (pose[0], pose[1]), str(k))
+    _draw_flags(ax, sc.poses, sc.flag, labels, 9)
     if labels:
         _label(ax, d0, "D0")
         _label(ax, a0, "A0")
@@ -1859,9 +1715,7 @@ def sixbar(
     *,
     task: Optional[Task] = None,
     coupler_path: bool = True,
-    labels: bool = True,
-    legend: bool = True,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a six-bar: a drive at the crank angles of its poses, or a
     :class:`burmester.SixBar` at four crank angles a quarter turn apart.
@@ -1882,9 +1736,8 @@ def sixbar(
             :class:`burmester.SixBar`.
         task: the task whose poses to mark (a drive knows its own).
         coupler_path: draw the paths over a full crank turn.
-        labels: write the names of the pivots and a title.
-        legend: draw a legend to the right of the axes.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, ax: as every drawing (the module's *Common parameters*; the
+            labels name the pivots).
 
     Returns:
         The Axes.
@@ -1929,9 +1782,7 @@ def drive_map(
     best: int = 3,
     rank_by: RankBy = "balanced",
     transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
-    labels: bool = True,
-    legend: bool = True,
-    ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a drive map: where the motor's crank pivot ``D0`` may go.
 
@@ -1948,9 +1799,8 @@ def drive_map(
         best: how many of the best drives to mark (0: none).
         rank_by: their ranking (:meth:`burmester.DriveMap.best_drives`).
         transmission_levels: the contour levels, degrees.
-        labels: write the names of the points and a title.
-        legend: draw a legend to the right of the axes.
-        ax: the Axes to draw into; default: a new figure.
+        labels, legend, ax: as every drawing (the module's *Common parameters*; the
+            labels name the points).
 
     Returns:
         The Axes.
@@ -2015,9 +1865,7 @@ def animate_sixbar(
     path: Union[str, Path],
     *,
     task: Optional[Task] = None,
-    frames: int = 120,
-    fps: int = 24,
-    dpi: int = 80,
+    frames: int = 120, fps: int = 24, dpi: int = 80,
 ) -> FuncAnimation:
     """Write an animation of a six-bar over one full crank turn (the motor
     turning at a constant speed), from pose 1 in the motor's direction for a
@@ -2044,34 +1892,18 @@ def animate_sixbar(
     """
 
     six, drive = _drive_of(obj)
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix not in (".gif", ".mp4"):
-        raise burmester.InvalidInputError(f"animation file must end in .gif or .mp4, got {path.name!r}")
-    frames = _count_in("frames", frames, 2, MAX_FRAMES)
-    fps = _count_in("fps", fps, 1, MAX_FPS)
-    dpi = _count_in("dpi", dpi, 1, MAX_DPI)
-    if not path.parent.is_dir():
-        raise burmester.InvalidInputError(
-            f"cannot write {path}: the folder {str(path.parent)!r} does not exist; create it first"
-        )
+    path, frames, fps, dpi = _animation_target(path, frames, fps, dpi)
     if not six.crank_turns_fully:
         raise burmester.InvalidInputError(
             "the six-bar's crank does not turn fully (its drive is not a crank-rocker, or a loop "
             f"toggles at crank angles {[round(math.degrees(a), 2) for a in six.dead_positions]} deg)"
         )
-    if suffix == ".mp4" and not matplotlib.animation.writers.is_available("ffmpeg"):
-        raise RuntimeError("writing .mp4 needs ffmpeg on the PATH; install it, or write a .gif")
+    _check_ffmpeg(path)
     angles = _turn_angles(six, drive, frames)
     polys = [_sixbar_polys(six, float(t)) for t in angles]
     fig, ax = plt.subplots(figsize=(6.0, 5.0))
     _draw_sixbar_static(ax, six, drive, task, True, True)
-    allpts = np.vstack([np.vstack(p) for p in polys])
-    lo, hi = allpts.min(axis=0), allpts.max(axis=0)
-    pad = 0.08 * float(max(hi - lo))
-    ax.set_xlim(lo[0] - pad, hi[0] + pad)
-    ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_aspect("equal")
+    _fit_frames(ax, polys)
     title = "Six-bar over a crank turn"
     if drive is not None:
         title = f"Motor-driven: time ratio {drive.time_ratio:.2f}, min transmission {drive.min_transmission_deg:.0f} deg"
@@ -2096,12 +1928,8 @@ def animate_sixbar(
         return [drive_art, motion_art, tern, tri]
 
     anim = FuncAnimation(fig, update, frames=len(polys), interval=1000.0 / fps, blit=False)
-    writer = PillowWriter(fps=fps) if suffix == ".gif" else FFMpegWriter(fps=fps)
-    # Whole to a temporary file beside it, moved into place when complete
-    # (burmester._io), as animate writes.
     try:
-        with _io.atomic_path(path) as tmp:
-            anim.save(str(tmp), writer=writer, dpi=dpi)
+        _save_animation(anim, path, fps, dpi)
     finally:
         plt.close(fig)
     return anim

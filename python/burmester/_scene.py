@@ -1,0 +1,345 @@
+"""What a picture shows, built once for both renderers (issue 25): the
+matplotlib pictures (:mod:`burmester.plot`) and the CAD export
+(:mod:`burmester.export`, DXF and SVG) draw the same scene, each in its own
+style.
+
+A scene holds the things to draw in task coordinates, each under the
+name of its CAD layer (the table in :mod:`burmester.export`): every point
+and polyline comes from the core, computed here and nowhere else. The
+choice by pose count (three poses: the poles' triangle and circle; four:
+the center-point curve by crank order; five: the Burmester points) is made
+here, in :func:`poses_scene` and :func:`curve_scene`, and nowhere else in
+the drawing modules.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any, List, Literal, NamedTuple, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+from burmester import _view
+from burmester._burmester import (
+    Drive, Filemon, Grid, InvalidInputError, SixBar, SynthesizedFourBar, Task, clip_line,
+)
+from burmester._view import ViewLike
+from burmester.taskfile import (
+    DEFAULT_GRID, default_circle_view, default_curve_view, default_view, has_pole_triangle,
+)
+
+if TYPE_CHECKING:
+    from burmester._burmester import Method, Mode
+
+    Array = npt.NDArray[np.float64]
+
+Point = Tuple[float, float]
+Extent = Tuple[float, float, float, float]
+Pair = Tuple[int, int]
+Segment = Tuple[Point, Point]
+Plane = Literal["center", "circle"]
+
+#: A pose count's word, for titles.
+COUNT_WORDS = {3: "Three", 4: "Four", 5: "Five"}
+
+#: The layer of each crank-order class of a curve of four poses (the
+#: direction of :meth:`burmester.Task.order_arcs`).
+ORDER_LAYERS = {"counterclockwise": "CURVE_CCW", "clockwise": "CURVE_CW", None: "CURVE_ORDER_DEFECT"}
+
+
+class PosesScene(NamedTuple):
+    """A task at a glance: its poses and poles."""
+
+    #: ``"Three"``, ``"Four"`` or ``"Five"`` poses.
+    count_word: str
+    #: The finite poles, ``((j, k), point)`` (layer ``POLES``).
+    poles: List[Tuple[Pair, Point]]
+    #: The poles at infinity (a pure translation between two poses).
+    at_infinity: List[Pair]
+    #: Three poses: the pole triangle and the pole circle are drawn.
+    pole_triangle: bool
+
+
+def poses_scene(task: Task) -> PosesScene:
+    """The poses and poles of ``task`` (three to five poses)."""
+    poles = [(p.pair, p.point) for p in task.poles if p.point is not None]
+    at_infinity = [p.pair for p in task.poles if p.point is None]
+    return PosesScene(count_word(len(task)), poles, at_infinity, len(task) == 3)
+
+
+def count_word(n: int) -> str:
+    """``"Three"``, ``"Four"``, ``"Five"`` (poses), or ``n`` in digits."""
+    return COUNT_WORDS.get(n, str(n))
+
+
+class Construction(NamedTuple):
+    """Filemon's construction for a driven dyad in the circle-point plane
+    of four poses: its circle point ``C1`` (layer ``DRIVEN_CIRCLE_POINT``),
+    the fixed pivot's images ``C'k = D_k1(C0)`` (``FIXED_PIVOT_IMAGES``) and
+    the lines through ``C1`` and ``C'k`` clipped to the view (``LINE_k``;
+    None where ``C'k`` is ``C1`` or the line misses the view)."""
+
+    c1: Point
+    images: List[Point]
+    lines: List[Optional[Segment]]
+
+
+def construction(c1: Point, lines: Sequence[Tuple[Point, Point]], images: Sequence[Point],
+                 extent: Extent) -> Construction:
+    """A :class:`Construction` from its lines as ``(point, direction)``,
+    clipped to ``extent`` (a line of no direction is none)."""
+    segments = [clip_line(p, d, extent) if d != (0.0, 0.0) else None for p, d in lines]
+    return Construction(c1, list(images), segments)
+
+
+class CurveScene(NamedTuple):
+    """The center- or circle-point plane of four or five poses: what
+    :func:`burmester.plot.burmester_plane`,
+    :func:`burmester.plot.circle_curve_plane` and
+    :func:`burmester.export.burmester_plane` draw, bottom first."""
+
+    plane: Plane
+    #: The number of poses.
+    n_poses: int
+    extent: Extent
+    #: ``"center-point curve"``, ``"Burmester points"`` or ``"circle-point
+    #: curve (coupler frame at pose 1)"``.
+    title: str
+    #: Four poses with a driven dyad: the driving pivots (or their circle
+    #: points) branch-free with it (``BRANCH_FREE_ARCS``).
+    free_arcs: List[Array]
+    #: Four poses, center plane: the driven dyad's fixed pivot (``DRIVEN_PIVOT``).
+    driven: Optional[Point]
+    #: Four poses, circle plane, with a driven dyad: Filemon's construction.
+    construction: Optional[Construction]
+    #: Four poses: the curve in pieces ``(order, direction, points)`` by the
+    #: crank's order class (layers :data:`ORDER_LAYERS`).
+    order_arcs: List[Tuple[str, Optional[str], Array]]
+    #: Four poses: the points ``Q_jk`` (their circle points ``Q'jk`` in the
+    #: circle plane), ``((j, k), point)`` (``COINCIDENCE_POINTS``).
+    coincidence: List[Tuple[Pair, Point]]
+    #: Five poses: the center-point curves of poses 1-2-3-4 and 1-2-3-5,
+    #: ``(which, polylines)`` (``CURVE_1234``, ``CURVE_1235``).
+    curves: List[Tuple[str, List[Array]]]
+    #: Five poses: the Burmester points' center points (``BURMESTER_POINTS``).
+    burmester_points: List[Point]
+    #: The center plane: the finite poles, ``((j, k), point)`` (``POLES``).
+    poles: List[Tuple[Pair, Point]]
+
+    @property
+    def prime(self) -> str:
+        """``"'"`` in the circle plane (``Q'jk``), else ``""``."""
+        return "'" if self.plane == "circle" else ""
+
+
+def curve_scene(task: Task, view: Optional[ViewLike], driven: Optional[Point], plane: Plane) -> CurveScene:
+    """The :class:`CurveScene` of ``task`` in ``view`` (default:
+    :func:`burmester.taskfile.default_curve_view`). Raises the core's typed
+    error (``cause == "needs_poses"``) for a task the plane has no curve for
+    (the circle plane: four poses; the center plane: four or five), then
+    the view's (:mod:`burmester._view`)."""
+    if plane == "circle":
+        task.circle_point_curve()
+    elif len(task) not in (4, 5):
+        task.center_point_curve()
+    extent = default_curve_view(task) if view is None else _view.extent(view)
+    circle = plane == "circle"
+    four = len(task) == 4
+    arcs: List[Array] = []
+    made: Optional[Construction] = None
+    if four and driven is not None:
+        arcs = list(task.branch_free_arcs(driven, *extent, plane=plane))
+        if circle:
+            c1 = task.circle_point(driven)
+            images = [task.displace(driven, k, 1) for k in range(1, len(task) + 1)]
+            made = construction(c1, [(c1, (p[0] - c1[0], p[1] - c1[1])) for p in images], images, extent)
+    order_arcs: List[Tuple[str, Optional[str], Array]] = []
+    coincidence: List[Tuple[Pair, Point]] = []
+    curves: List[Tuple[str, List[Array]]] = []
+    points: List[Point] = []
+    if four:
+        order_arcs = list(task.order_arcs(*extent, plane=plane))
+        for q in task.coincidence_points():
+            p = q.circle if circle else q.center
+            if p is not None:
+                coincidence.append((q.pair, p))
+        title = "circle-point curve (coupler frame at pose 1)" if circle else "center-point curve"
+    else:
+        curves = [(which, list(curve.polylines(*extent)))
+                  for curve, which in zip(task.burmester_curves(), ("1234", "1235"))]
+        points = [center for center, _ in task.burmester_points()]
+        title = "Burmester points"
+    # In the circle-point plane the poles P1k are the points Q'1k.
+    poles = [] if circle else [(p.pair, p.point) for p in task.poles if p.point is not None]
+    return CurveScene(plane, len(task), extent, title, arcs, driven if four and not circle else None, made,
+                      order_arcs, coincidence, curves, points, poles)
+
+
+class Position(NamedTuple):
+    """A four-bar at one input angle (the core's joints): ``A0``, ``A``,
+    ``B``, ``C0`` and the coupler point ``P``."""
+
+    a0: Point
+    a: Point
+    b: Point
+    c0: Point
+    p: Point
+
+
+def position(sfb: SynthesizedFourBar, theta2: float, mode: Mode) -> Position:
+    """``sfb`` at input angle ``theta2`` in assembly ``mode``."""
+    o2, a, b, o4 = sfb.fourbar.joints(theta2, mode)
+    x, y, _ = sfb.pose_at(theta2, mode)
+    return Position(o2, a, b, o4, (x, y))
+
+
+class AtPose(NamedTuple):
+    """The linkage at pose k: its input angle, its assembly mode (None: a
+    toggle, drawn open) and its :class:`Position` (layer ``LINKAGE_k``)."""
+
+    theta2: float
+    mode: Optional[Mode]
+    position: Position
+
+
+class LinkageScene(NamedTuple):
+    """A synthesized four-bar at its poses: what
+    :func:`burmester.plot.linkage` and :func:`burmester.export.linkage` draw
+    (each adds its own coupler curve)."""
+
+    #: The fixed pivots (layer ``PIVOTS``, the ground ``GROUND`` between them).
+    a0: Point
+    c0: Point
+    #: The poses marked (``POSES``): the task's, or those the linkage reaches.
+    poses: List[Tuple[float, float, float]]
+    #: A pose's flag length: 0.3 of the shortest link.
+    flag: float
+    #: The linkage at each pose, in order.
+    at_poses: List[AtPose]
+
+
+def linkage_scene(sfb: SynthesizedFourBar, task: Optional[Task]) -> LinkageScene:
+    """The :class:`LinkageScene` of ``sfb`` with the poses of ``task`` (default: those it reaches)."""
+    at = [AtPose(t, m, position(sfb, t, m or "open")) for t, m in zip(sfb.input_angles, sfb.modes)]
+    poses = list(task.poses) if task is not None else [sfb.pose_at(t, m or "open")
+                                                      for t, m in zip(sfb.input_angles, sfb.modes)]
+    return LinkageScene(sfb.driving[0], sfb.driven[0], poses, 0.3 * min(sfb.fourbar.lengths), at)
+
+
+class SixBarScene(NamedTuple):
+    """A six-bar (the Watt II of a drive): what :func:`burmester.plot.sixbar`
+    and :func:`burmester.export.sixbar` draw under the moving links."""
+
+    #: The fixed pivots: the motor's ``D0``, ``A0`` and ``C0`` (``PIVOTS``).
+    d0: Point
+    a0: Point
+    c0: Point
+    #: The radius of the motor crank's circle about ``D0`` (``CRANK_CIRCLE``).
+    crank_radius: float
+    #: The poses (``POSES``): the task's, or the drive's; none without a drive.
+    poses: List[Tuple[float, float, float]]
+    #: A pose's flag length: 0.3 of the four-bar's shortest link.
+    flag: float
+    #: The crank angle at each pose (a drive's), in order.
+    pose_angles: List[float]
+
+
+def sixbar_scene(six: SixBar, drive: Optional[Drive], task: Optional[Task] = None) -> SixBarScene:
+    """The :class:`SixBarScene` of ``six`` (of ``drive`` when given)."""
+    j = six.joints(drive.pose_crank_angles[0] if drive is not None else 0.0)
+    poses: List[Tuple[float, float, float]] = []
+    if drive is not None:
+        poses = list(task.poses if task is not None else drive.task.poses)
+    angles = list(drive.pose_crank_angles) if drive is not None else []
+    return SixBarScene(j[0], j[3], j[6], six.lengths[1], poses, 0.3 * min(six.motion.lengths), angles)
+
+
+def conics(filemon: Filemon, extent: Extent) -> List[Tuple[int, str, List[Array]]]:
+    """Filemon's three lines transformed into the center-point plane
+    (``CONIC_k``): ``(pose, kind, polylines in extent)`` for each, every
+    branch; none when every driving pivot is defective."""
+    extreme = filemon.extreme_poses
+    if extreme is None:
+        return []
+    return [(pose, conic.kind, list(conic.polylines(*extent))) for pose, conic in zip(extreme, filemon.conics)]
+
+
+class CenterScene(NamedTuple):
+    """The driving crank's center-point plane of three poses: what
+    :func:`burmester.plot.center_plane` and :func:`burmester.export.plane`
+    draw (each shades the branch map its own way)."""
+
+    grid: Grid
+    #: Branch-free driving pivots on the grid (``BRANCH_FREE``).
+    free: npt.NDArray[np.bool_]
+    #: Branch-free pivots that also meet the limits (``ACCEPTABLE``), when given.
+    acceptable: Optional[npt.NDArray[np.bool_]]
+    #: The minimum transmission angle, degrees (``TRANSMISSION``), when given.
+    transmission: Optional[npt.NDArray[np.float64]]
+    #: Every pole, named ``P12``, ``P13``, ``P23`` (None at infinity; ``POLES``).
+    poles: List[Tuple[str, Optional[Point]]]
+    #: Three finite poles: the pole triangle and circle are drawn
+    #: (``POLE_TRIANGLE``, ``POLE_CIRCLE``).
+    pole_triangle: bool
+    #: The driven crank's fixed pivot ``C0`` (``DRIVEN_PIVOT``).
+    c0: Point
+
+
+def center_scene(filemon: Filemon, view: Optional[ViewLike], samples: Optional[Sequence[Any]], method: Method,
+                 free: Optional[npt.ArrayLike], acceptable: Optional[npt.ArrayLike],
+                 transmission: Optional[npt.ArrayLike], side: int = DEFAULT_GRID) -> CenterScene:
+    """The :class:`CenterScene` of ``filemon`` over ``view`` (a Grid, four
+    numbers with ``side`` samples along the longer side, or None: the default
+    view), ``samples = (nx, ny)`` when given, else a given ``free`` map's
+    shape over four numbers; the branch map of ``method`` unless ``free`` is
+    given. Each given map must have the grid's shape (InvalidInputError)."""
+    if free is not None and samples is None and not isinstance(view, Grid):
+        shape = np.shape(free)
+        if len(shape) != 2:
+            raise InvalidInputError(f"free must be a 2-D array (ny, nx), got shape {shape}")
+        samples = (shape[1], shape[0])
+    g = _view.view_grid(view, samples, lambda: default_view(filemon, side), side)
+    given = _view.on_grid("free", free, g)
+    free_b = (filemon.branch_map(g, method=method) if given is None else given).astype(bool)
+    acc = _view.on_grid("acceptable", acceptable, g)
+    trans = _view.on_grid("transmission", transmission, g)
+    task = filemon.task
+    poles = [(f"P{i}{j}", p.point) for p, (i, j) in ((p, p.pair) for p in task.poles)]
+    return CenterScene(g, free_b, None if acc is None else acc.astype(bool),
+                       None if trans is None else np.asarray(trans, dtype=float), poles,
+                       has_pole_triangle(task), filemon.driven_center)
+
+
+class CircleScene(NamedTuple):
+    """The driving crank's circle-point plane of three poses (the coupler
+    frame at pose 1): what :func:`burmester.plot.circle_plane` and
+    :func:`burmester.export.plane` (``plane="circle"``) draw."""
+
+    extent: Extent
+    #: Filemon's sectors about ``C1``, ``(start, end, branch-free)``
+    #: (:attr:`burmester.Filemon.sectors`; ``BRANCH_FREE``).
+    sectors: List[Tuple[float, float, bool]]
+    #: A radius about ``C1`` beyond every corner of the view: a sector's
+    #: wedge of this radius covers its part of the view.
+    radius: float
+    #: Filemon's construction: ``C1``, ``C'k`` and the lines through them.
+    construction: Construction
+    #: The middle pose's line (drawn dashed), if any.
+    middle: Optional[int]
+    #: The image poles ``P12, P13, P'23`` (``IMAGE_POLES``); none with a pole at infinity.
+    image_poles: List[Point]
+
+
+def circle_scene(filemon: Filemon, view: Optional[ViewLike]) -> CircleScene:
+    """The :class:`CircleScene` of ``filemon`` in ``view`` (default:
+    :func:`burmester.taskfile.default_circle_view`)."""
+    extent = default_circle_view(filemon) if view is None else _view.extent(view)
+    c1 = filemon.driven_circle
+    corners = [(x, y) for x in extent[:2] for y in extent[2:]]
+    radius = 2.0 * max(math.hypot(x - c1[0], y - c1[1]) for x, y in corners) + 1.0
+    made = construction(c1, filemon.all_lines, filemon.fixed_pivot_images, extent)
+    task = filemon.task
+    # A task with a pure translation between two poses has no image poles.
+    images = list(task.image_poles()) if has_pole_triangle(task) else []
+    return CircleScene(extent, list(filemon.sectors), radius, made, filemon.middle_pose, images)
