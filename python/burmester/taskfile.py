@@ -302,7 +302,7 @@ def curve_plane_points(task: Task, driven: Optional[Point] = None,
         if driven is not None:
             if circle:
                 pts.append(("C1", task.circle_point(driven)))
-                pts += [(f"C'{k}", task.displace(driven, k, 1)) for k in range(1, 5)]
+                pts += [(f"C'{k}", task.displace(driven, k, 1)) for k in range(1, count.poses + 1)]
             else:
                 pts.append(("C0", driven))
     elif count.burmester_points and not circle:

@@ -51,6 +51,7 @@ from burmester.taskfile import TaskFileError
 __all__ = ["ProgressBar", "UNIT_CHOICES", "UsageError", "base", "build_parser", "commands", "files", "main",
            "parser", "progress_for", "table", "tables"]
 
+
 def _remember_sigint(seen: List[int]) -> Any:
     """On the main thread, handle SIGINT as Python does (KeyboardInterrupt)
     and note it in ``seen``; returns the handler it replaced (None
@@ -74,17 +75,17 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     Returns the exit status: 0 on success, 2 for bad input (with a one-line
     message on stderr saying what to change), 1 when matplotlib or ezdxf is missing.
     """
-    parser = build_parser()
+    command_line = build_parser()
     args_list = list(sys.argv[1:] if argv is None else argv)
     if not args_list:
-        parser.print_help()
+        command_line.print_help()
         return 0
     try:
-        args = parser.parse_args(args_list)
+        args = command_line.parse_args(args_list)
     except SystemExit as e:  # argparse: --help, --version, or a usage error (already printed)
         return int(e.code or 0) if not isinstance(e.code, str) else 2
     if args.command is None:
-        parser.print_help()
+        command_line.print_help()
         return 0
     prog = f"burmester {args.command}"
     # Ctrl-C is remembered: a library's C code that runs the signal handler

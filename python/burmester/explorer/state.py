@@ -166,7 +166,11 @@ class ExplorerState:
         return changed
 
     # ------------------------------------------------------------------
-    # Handles
+    # Handles and labels
+
+    def pole_names(self) -> List[str]:
+        """The poles' labels, ``"P12"``, ``"P13"``, ..., in the task's order."""
+        return ["P{}{}".format(*p.pair) for p in self.now.task.poles]
 
     def handle_points(self) -> List[Tuple[str, Point]]:
         """Every handle's name and position, in the order a tie is broken."""

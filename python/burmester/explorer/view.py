@@ -295,7 +295,7 @@ class Explorer:
         (self._a0,) = ax.plot([], [], linestyle="none", marker="*", markersize=16, color="#ffd700",
                               markeredgecolor="black", zorder=9)
         self._a0.set_gid("driving-pivot")
-        for name in ("P12", "P13", "P23"):
+        for name in self.state.pole_names():
             self._labels[name] = ax.annotate(
                 name, (0.0, 0.0), xytext=(4, 4), textcoords="offset points", fontsize=8, zorder=6,
             )
@@ -355,7 +355,7 @@ class Explorer:
             poles = [p for _, p in finite]
             self._poles.set_data([p[0] for p in poles], [p[1] for p in poles])
             shown = {f"P{i}{j}": p for (i, j), p in finite}
-            for name in ("P12", "P13", "P23"):
+            for name in self.state.pole_names():
                 self._labels[name].set_visible(name in shown)
                 if name in shown:
                     self._labels[name].xy = shown[name]
