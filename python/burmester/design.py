@@ -23,6 +23,7 @@ import importlib
 import math
 from typing import Any, Callable, Dict, Literal, Optional
 
+from burmester import _counts as counts
 from burmester._burmester import (
     DesignLimits,
     DesignReport,
@@ -100,7 +101,7 @@ def design(
               coarse_driven=coarse_driven, coarse_driving=coarse_driving, coarse_pairs=coarse_pairs,
               starts=starts, max_iterations=max_iterations, input=input, swing_margin_deg=swing_margin_deg,
               max_time_ratio=max_time_ratio)
-    if client is None or len(task) != 3:
+    if client is None or not counts.of(task).filemon:  # the coarse pass on Dask is the atlas's
         return _design(task, progress=progress, **kw)
     from burmester.atlas import _DASK_MISSING, _on_dask
 

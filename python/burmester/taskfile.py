@@ -89,6 +89,7 @@ from pathlib import Path
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import burmester
+from burmester import _counts as counts
 from burmester._burmester import DesignLimits, Filemon, Grid, Space, Task
 from burmester.units import check_units
 
@@ -167,13 +168,14 @@ class TaskSpec:
         """Filemon's construction for the driven dyad. Raises
         :class:`TaskFileError` for a task of four or five poses (no driven
         dyad: only ``burmester map`` draws those)."""
-        if len(self.poses) == 3 and self.driven_center is None:
+        offers = counts.of(self.poses).filemon
+        if offers and self.driven_center is None:
             raise TaskFileError(
                 f"{self.source}: has no [driven] table: give the driven crank's fixed pivot "
                 "(center = [x, y]) for this command, or run 'burmester design', which searches "
                 "both fixed pivots"
             )
-        if len(self.poses) != 3 or self.driven_center is None:
+        if not offers or self.driven_center is None:
             raise TaskFileError(
                 f"{self.source}: has {len(self.poses)} poses; Filemon's construction, the maps, "
                 "pivots and linkages need three (burmester map draws four or five poses)"
@@ -202,9 +204,10 @@ def default_curve_view(task: Task) -> Tuple[float, float, float, float]:
     cy = sum(p[1] for p in poses) / len(poses)
     scale = task.scale
     pts: List[Point] = list(poses) + [p.point for p in task.poles if p.point is not None]
-    if len(task) == 4:
+    count = counts.of(task)
+    if count.curves:
         pts += [q.center for q in task.coincidence_points() if q.center is not None]
-    elif len(task) == 5:
+    elif count.burmester_points:
         pts += [b[0] for b in task.burmester_points()]
     near = [p for p in pts if math.hypot(p[0] - cx, p[1] - cy) <= 8.0 * scale]
     xs = [p[0] for p in near]
@@ -218,7 +221,7 @@ def has_pole_triangle(task: Task) -> bool:
     """Whether a task of three poses has three finite poles (no two poses
     differ by a pure translation): then it has a pole triangle, pole circles
     and image poles (``Task.pole_circle`` and the like raise otherwise)."""
-    return len(task) == 3 and all(p.point is not None for p in task.poles)
+    return counts.of(task).filemon and all(p.point is not None for p in task.poles)
 
 
 def default_task_view(task: Task, grid: int = DEFAULT_GRID) -> Grid:
@@ -291,17 +294,18 @@ def curve_plane_points(task: Task, driven: Optional[Point] = None,
     pts: List[Tuple[str, Optional[Point]]] = [(f"pose {k}", (q[0], q[1])) for k, q in enumerate(task.poses, start=1)]
     if not circle:
         pts += [(f"P{p.pair[0]}{p.pair[1]}", p.point) for p in task.poles]
-    if len(task) == 4:
+    count = counts.of(task)
+    if count.curves:
         prime = "'" if circle else ""
         pts += [("Q{}{}{}".format(prime, *q.pair), q.circle if circle else q.center)
                 for q in task.coincidence_points()]
         if driven is not None:
             if circle:
                 pts.append(("C1", task.circle_point(driven)))
-                pts += [(f"C'{k}", task.displace(driven, k, 1)) for k in range(1, 5)]
+                pts += [(f"C'{k}", task.displace(driven, k, 1)) for k in range(1, count.poses + 1)]
             else:
                 pts.append(("C0", driven))
-    elif len(task) == 5 and not circle:
+    elif count.burmester_points and not circle:
         pts += [(f"B{k}", c) for k, (c, _) in enumerate(task.burmester_points(), start=1)]
     return pts
 
@@ -466,7 +470,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
         task = Task(poses)
     except burmester.BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
-    if len(poses) > 3:
+    if not counts.of(poses).filemon:
         return _parse_many(r, doc, task, tuple(poses), source, units)
 
     # [driven]: optional; without it `burmester design` searches both pivots
@@ -648,7 +652,7 @@ def _driven(r: _Reader, doc: Mapping[str, Any], task: Task, required: bool) -> O
         )
     if "center" in driven:
         center = r.point("driven.center", driven["center"])
-        if len(task.poses) == 4:
+        if counts.of(task).curves:
             try:
                 task.circle_point(center)
             except burmester.BurmesterError as e:
@@ -669,7 +673,8 @@ def _parse_many(
     ``[limits]`` (the pair map's, or those the Burmester four-bars of five
     poses are judged by) and, for four, ``[driven]`` (a driven dyad on the
     curve, whose branch-free driving arcs ``burmester map`` draws)."""
-    if len(poses) == 5 and "driven" in doc:
+    count = counts.of(poses)
+    if not count.driven and "driven" in doc:
         raise r.fail(
             "[driven]",
             "is for three or four poses (a driven dyad on the center-point curve), found 5 poses: "
@@ -680,7 +685,7 @@ def _parse_many(
     except burmester.BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     limits = _limits(r, doc)
-    driven = _driven(r, doc, task, required=False) if len(poses) == 4 else None
+    driven = _driven(r, doc, task, required=False) if count.driven else None
     return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units=units, space=_space(r, doc))
 
 
@@ -753,7 +758,7 @@ def dumps(spec: TaskSpec) -> str:
     view.add("y", note(tomlkit.item([v.ymin, v.ymax]), "ymin, ymax"))
     view.add("grid", note(tomlkit.item([v.nx, v.ny]), "samples along x and y"))
     doc.add("view", view)
-    if len(spec.poses) == 3 or spec.limits != DesignLimits():  # four and five poses: when not the defaults
+    if counts.of(spec.poses).filemon or spec.limits != DesignLimits():  # four and five poses: when not the defaults
         lim = spec.limits
         limits = note(tomlkit.table(), "what an acceptable linkage must meet")
         limits.add("min_transmission_deg", note(tomlkit.item(float(lim.min_transmission_deg)),

@@ -318,7 +318,7 @@ def test_a_grid_that_cannot_fit_is_refused_before_the_work(tmp_path, argv):
 
 
 def test_the_memory_check_uses_the_memory_left(monkeypatch, tmp_path, capsys):
-    monkeypatch.setattr(cli, "_available_memory", lambda: 4 * 2**30)
+    monkeypatch.setattr(cli.base, "_available_memory", lambda: 4 * 2**30)
     out = tmp_path / "x.png"
     assert cli.main(["map", "--grid", "20000", "20000", "-o", str(out)]) == 2
     err = capsys.readouterr().err

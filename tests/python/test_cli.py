@@ -488,7 +488,7 @@ def test_a_map_too_large_for_memory_is_one_line_and_status_2(monkeypatch, tmp_pa
 
     def no_memory(*args, **kwargs):
         raise MemoryError
-    monkeypatch.setattr(cli, "_solution_map", no_memory)
+    monkeypatch.setattr(cli.commands, "_solution_map", no_memory)
     assert main(["map", "--design", "-o", str(tmp_path / "m.png")]) == 2
     err = capsys.readouterr().err
     assert err.strip().splitlines() == ["burmester map: error: not enough memory for this; use a coarser --grid"]

@@ -266,7 +266,7 @@ def test_the_command_line_draws_the_task_files_unit(tmp_path, monkeypatch, capsy
         seen.append([(a.get_xlabel(), a.get_ylabel()) for a in fig.axes if a.get_xlabel()][0])
         real(fig, path, *args)
 
-    monkeypatch.setattr(cli, "_save", spy)
+    monkeypatch.setattr(cli.commands, "_save", spy)
     lid = write(tmp_path, "lid.toml", LID)
     five = write(tmp_path, "five.toml", 'units = "cm"\n' + FIVE)
     runs = [
