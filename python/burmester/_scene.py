@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any, List, Literal, NamedTuple, Optional, Sequ
 import numpy as np
 import numpy.typing as npt
 
-from burmester import _view
+from burmester import _counts, _view
 from burmester._burmester import (
     Drive, Filemon, Grid, InvalidInputError, SixBar, SynthesizedFourBar, Task, clip_line,
 )
@@ -39,9 +39,6 @@ Extent = Tuple[float, float, float, float]
 Pair = Tuple[int, int]
 Segment = Tuple[Point, Point]
 Plane = Literal["center", "circle"]
-
-#: A pose count's word, for titles.
-COUNT_WORDS = {3: "Three", 4: "Four", 5: "Five"}
 
 #: The layer of each crank-order class of a curve of four poses (the
 #: direction of :meth:`burmester.Task.order_arcs`).
@@ -65,12 +62,13 @@ def poses_scene(task: Task) -> PosesScene:
     """The poses and poles of ``task`` (three to five poses)."""
     poles = [(p.pair, p.point) for p in task.poles if p.point is not None]
     at_infinity = [p.pair for p in task.poles if p.point is None]
-    return PosesScene(count_word(len(task)), poles, at_infinity, len(task) == 3)
+    return PosesScene(count_word(len(task)), poles, at_infinity, _counts.of(task).filemon)
 
 
 def count_word(n: int) -> str:
     """``"Three"``, ``"Four"``, ``"Five"`` (poses), or ``n`` in digits."""
-    return COUNT_WORDS.get(n, str(n))
+    row = _counts.COUNTS.get(n)
+    return str(n) if row is None else row.word.capitalize()
 
 
 class Construction(NamedTuple):
@@ -141,11 +139,11 @@ def curve_scene(task: Task, view: Optional[ViewLike], driven: Optional[Point], p
     the view's (:mod:`burmester._view`)."""
     if plane == "circle":
         task.circle_point_curve()
-    elif len(task) not in (4, 5):
+    elif _counts.of(task).filemon:
         task.center_point_curve()
     extent = default_curve_view(task) if view is None else _view.extent(view)
     circle = plane == "circle"
-    four = len(task) == 4
+    four = _counts.of(task).curves
     arcs: List[Array] = []
     made: Optional[Construction] = None
     if four and driven is not None:

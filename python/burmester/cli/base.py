@@ -12,6 +12,7 @@ from typing import IO, TYPE_CHECKING, Any, Optional, Sequence, Tuple
 
 import burmester
 from burmester import _counts as counts
+from burmester import _view
 from burmester import pivots as pv
 from burmester import taskfile
 from burmester._burmester import Grid
@@ -94,12 +95,10 @@ def _load(path: Optional[str]) -> TaskSpec:
 def _with_grid(spec: TaskSpec, grid: Optional[Sequence[int]]) -> TaskSpec:
     if grid is None:
         return spec
-    nx, ny = grid
-    for name, n in (("NX", nx), ("NY", ny)):
-        if not 2 <= n <= 20000:
-            raise UsageError(f"--grid {name} must be from 2 to 20000, got {n}")
-    v = spec.view
-    view = Grid(v.xmin, v.xmax, v.ymin, v.ymax, nx, ny)
+    try:
+        view = _view.resample(spec.view, grid, "--grid", most=20000)
+    except burmester.InvalidInputError as e:
+        raise UsageError(str(e)) from None
     return dataclasses.replace(spec, view=view)
 
 
