@@ -147,3 +147,110 @@ fn sd(s: &[(Point, f64)]) -> f64 {
     let mean: f64 = s.iter().map(|(_, c)| *c).sum::<f64>() / n;
     (1.0 / (n - 1.0) * s.iter().map(|(_, c)| (*c - mean).powi(2)).sum::<f64>()).sqrt()
 }
+
+#[cfg(test)]
+mod tests {
+    use core::cell::RefCell;
+
+    use argmin::core::{CostFunction, Error, Executor};
+    use argmin::solver::neldermead::NelderMead;
+
+    use super::*;
+
+    /// A valley with a wall (a barrier like the refinement's), a kink
+    /// and a plateau: every branch of a step is taken.
+    fn f(x: &[f64]) -> f64 {
+        if x[0] > 1.3 {
+            return 1e300;
+        }
+        let mut c = 0.0;
+        for w in x.windows(2) {
+            c += 100.0 * (w[1] - w[0] * w[0]).powi(2) + (1.0 - w[0]).powi(2);
+        }
+        c + 0.1 * x.iter().map(|v| v.abs()).sum::<f64>()
+    }
+
+    /// Records every point judged.
+    struct Recorded(RefCell<Vec<Vec<f64>>>);
+
+    impl CostFunction for Recorded {
+        type Param = Vec<f64>;
+        type Output = f64;
+        fn cost(&self, x: &Vec<f64>) -> Result<f64, Error> {
+            self.0.borrow_mut().push(x.clone());
+            Ok(f(x))
+        }
+    }
+
+    /// The same points judged, bit for bit, as `argmin`'s `NelderMead`
+    /// under its `Executor`, in two and four dimensions, ending at the
+    /// iteration limit and at the tolerance.
+    #[test]
+    fn steps_are_argmins() {
+        // (40 iterations from (-1.2, -0.9) end at the limit, far from the
+        // valley's floor; the others at the tolerance or the limit.)
+        for (dim, iters, tol) in [
+            (2, 40, 1e-13),
+            (2, 3000, 1e-13),
+            (4, 2000, 1e-13),
+            (4, 5000, 1e-6),
+        ] {
+            let n = dim as f64;
+            let k = Coefficients {
+                alpha: 1.0,
+                gamma: 1.0 + 2.0 / n,
+                rho: 0.5,
+                sigma: 1.0 - 1.0 / n,
+            };
+            let x0: Vec<f64> = (0..dim).map(|i| -1.2 + 0.3 * i as f64).collect();
+            let mut start = vec![x0.clone()];
+            for i in 0..dim {
+                let mut v = x0.clone();
+                v[i] += 0.4;
+                start.push(v);
+            }
+            let solver = NelderMead::new(start.clone())
+                .with_sd_tolerance(tol)
+                .and_then(|s| s.with_gamma(k.gamma))
+                .and_then(|s| s.with_sigma(k.sigma))
+                .unwrap();
+            let theirs = Executor::new(Recorded(RefCell::new(Vec::new())), solver)
+                .configure(|s| s.max_iters(iters))
+                .timer(false)
+                .run()
+                .unwrap()
+                .problem
+                .take_problem()
+                .unwrap()
+                .0
+                .into_inner();
+            let pts: Vec<Point> = start
+                .iter()
+                .map(|v| {
+                    let mut p = [0.0; MAX_DIM];
+                    p[..dim].copy_from_slice(v);
+                    p
+                })
+                .collect();
+            let mut ours = Vec::new();
+            let end = minimize(
+                &pts,
+                dim,
+                k,
+                tol,
+                iters as usize,
+                |p| {
+                    ours.push(p[..dim].to_vec());
+                    f(&p[..dim])
+                },
+                || false,
+            );
+            assert_eq!(end, End::Done);
+            assert_eq!(ours.len(), theirs.len(), "{dim}: evaluations");
+            for (a, b) in ours.iter().zip(&theirs) {
+                let same = a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
+                assert!(same, "{dim}: {a:?} != {b:?}");
+            }
+        }
+    }
+}
