@@ -100,7 +100,7 @@ use crate::tolerance;
 mod motor;
 mod simplex;
 
-use simplex::{Coefficients, End, MAX_DIM, Point};
+use simplex::{End, MAX_DIM, Point};
 
 /// What to search for and how finely (see the [module docs](self)).
 #[derive(Debug, Clone, PartialEq)]
@@ -755,13 +755,11 @@ fn refine<F: Fn(&[f64], f64) -> Option<Verdict>>(
     strict_margin: f64,
     control: &Control<'_>,
 ) -> (Option<(Vec<f64>, Verdict)>, usize) {
-    let dim = x0.len();
-    assert!(
-        dim <= MAX_DIM && h.len() == dim,
-        "a refinement has at most {MAX_DIM} coordinates and a step for each"
-    );
+    // Two (four poses) or four (three poses) coordinates, a step each.
+    let dim = x0.len().min(MAX_DIM);
+    debug_assert!(x0.len() == dim && h.len() == dim);
     let mut start: Point = [0.0; MAX_DIM];
-    start[..dim].copy_from_slice(x0);
+    start[..dim].copy_from_slice(&x0[..dim]);
     let mut objective = Objective {
         eval,
         control,
@@ -819,16 +817,6 @@ fn rounds<'a, F: Fn(&[f64], f64) -> Option<Verdict>>(
     control: &Control<'_>,
 ) -> Option<Objective<'a, F>> {
     let dim = objective.dim;
-    // The expansion and shrink adapted to the dimension (Gao and Han,
-    // 2012; their contraction, above the classic bound of 1/2 for n > 2,
-    // is left at 1/2).
-    let n = dim as f64;
-    let k = Coefficients {
-        alpha: 1.0,
-        gamma: 1.0 + 2.0 / n,
-        rho: 0.5,
-        sigma: 1.0 - 1.0 / n,
-    };
     let per_round = iterations.div_ceil(ROUNDS.len());
     let mut left = iterations;
     for scale in ROUNDS {
@@ -844,13 +832,12 @@ fn rounds<'a, F: Fn(&[f64], f64) -> Option<Verdict>>(
         };
         let from = at.unwrap_or(*x0);
         let mut simplex = [from; MAX_DIM + 1];
-        for (k, hk) in h.iter().enumerate() {
+        for (k, hk) in h.iter().take(dim).enumerate() {
             simplex[k + 1][k] += hk * scale;
         }
         let end = simplex::minimize(
             &simplex[..=dim],
             dim,
-            k,
             1e-13,
             budget,
             |p| objective.cost(p),

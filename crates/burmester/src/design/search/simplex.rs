@@ -18,13 +18,13 @@ pub(super) const MAX_DIM: usize = 4;
 /// A point of the simplex (its first `dim` coordinates used).
 pub(super) type Point = [f64; MAX_DIM];
 
-/// Nelder–Mead's coefficients: reflection, expansion, contraction, shrink.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Coefficients {
-    pub(super) alpha: f64,
-    pub(super) gamma: f64,
-    pub(super) rho: f64,
-    pub(super) sigma: f64,
+/// Nelder–Mead's coefficients adapted to the dimension `dim`: reflection
+/// 1, expansion `1 + 2 / dim`, contraction 1/2, shrink `1 - 1 / dim` (Gao
+/// and Han, 2012; their contraction, above the classic bound of 1/2 for
+/// `dim > 2`, is left at 1/2).
+pub(super) fn coefficients(dim: usize) -> [f64; 4] {
+    let n = dim as f64;
+    [1.0, 1.0 + 2.0 / n, 0.5, 1.0 - 1.0 / n]
 }
 
 /// How a run of [`minimize`] ended.
@@ -38,14 +38,13 @@ pub(super) enum End {
     Failed,
 }
 
-/// Minimises `cost` from the simplex `start` (`dim + 1` points) for at
-/// most `max_iters` iterations, ending early when the sample standard
+/// Minimises `cost` from the simplex `start` (`dim + 1` points), with the
+/// [`coefficients`] of `dim`, for at most `max_iters` iterations, ending early when the sample standard
 /// deviation of the simplex's costs is under `sd_tolerance` or `stop()`
 /// (checked before each iteration) is true.
 pub(super) fn minimize(
     start: &[Point],
     dim: usize,
-    k: Coefficients,
     sd_tolerance: f64,
     max_iters: usize,
     mut cost: impl FnMut(&Point) -> f64,
@@ -53,6 +52,7 @@ pub(super) fn minimize(
 ) -> End {
     let n = start.len();
     debug_assert!(n == dim + 1 && dim <= MAX_DIM);
+    let [alpha, gamma, rho, sigma] = coefficients(dim);
     let mut s: [(Point, f64); MAX_DIM + 1] = [([0.0; MAX_DIM], f64::NAN); MAX_DIM + 1];
     for (slot, p) in s.iter_mut().zip(start) {
         *slot = (*p, cost(p));
@@ -84,13 +84,13 @@ pub(super) fn minimize(
             *v *= inv;
         }
         let (best, second_worst, worst) = (s[0].1, s[n - 2].1, s[n - 1]);
-        let xr = step(&x0, &x0, &worst.0, k.alpha);
+        let xr = step(&x0, &x0, &worst.0, alpha);
         let xr_cost = cost(&xr);
         let last = n - 1;
         if xr_cost < second_worst && xr_cost >= best {
             s[last] = (xr, xr_cost);
         } else if xr_cost < best {
-            let xe = step(&x0, &xr, &x0, k.gamma);
+            let xe = step(&x0, &xr, &x0, gamma);
             let xe_cost = cost(&xe);
             s[last] = if xe_cost < xr_cost {
                 (xe, xe_cost)
@@ -102,18 +102,18 @@ pub(super) fn minimize(
             // worst); kept if no worse than what it contracts, else a
             // shrink.
             let (xc, keep) = if xr_cost < worst.1 {
-                let xc = step(&x0, &xr, &x0, k.rho);
+                let xc = step(&x0, &xr, &x0, rho);
                 let c = cost(&xc);
                 ((xc, c), c <= xr_cost)
             } else {
-                let xc = step(&x0, &worst.0, &x0, k.rho);
+                let xc = step(&x0, &worst.0, &x0, rho);
                 let c = cost(&xc);
                 ((xc, c), c < worst.1)
             };
             if keep {
                 s[last] = xc;
             } else {
-                shrink(s, dim, k.sigma, &mut cost);
+                shrink(s, dim, sigma, &mut cost);
             }
         } else {
             return End::Failed;
@@ -195,13 +195,7 @@ mod tests {
             (4, 2000, 1e-13),
             (4, 5000, 1e-6),
         ] {
-            let n = dim as f64;
-            let k = Coefficients {
-                alpha: 1.0,
-                gamma: 1.0 + 2.0 / n,
-                rho: 0.5,
-                sigma: 1.0 - 1.0 / n,
-            };
+            let [_, gamma, _, sigma] = coefficients(dim);
             let x0: Vec<f64> = (0..dim).map(|i| -1.2 + 0.3 * i as f64).collect();
             let mut start = vec![x0.clone()];
             for i in 0..dim {
@@ -211,8 +205,8 @@ mod tests {
             }
             let solver = NelderMead::new(start.clone())
                 .with_sd_tolerance(tol)
-                .and_then(|s| s.with_gamma(k.gamma))
-                .and_then(|s| s.with_sigma(k.sigma))
+                .and_then(|s| s.with_gamma(gamma))
+                .and_then(|s| s.with_sigma(sigma))
                 .unwrap();
             let theirs = Executor::new(Recorded(RefCell::new(Vec::new())), solver)
                 .configure(|s| s.max_iters(iters))
@@ -236,7 +230,6 @@ mod tests {
             let end = minimize(
                 &pts,
                 dim,
-                k,
                 tol,
                 iters as usize,
                 |p| {
