@@ -75,8 +75,8 @@ pub(super) fn minimize(
         // scaled by 1 / dim.
         let mut x0 = s[0].0;
         for p in &s[1..n - 1] {
-            for i in 0..dim {
-                x0[i] += p.0[i];
+            for (c, v) in x0[..dim].iter_mut().zip(&p.0) {
+                *c += v;
             }
         }
         let inv = 1.0 / (n - 1) as f64;
