@@ -18,8 +18,9 @@
 //!   a `coarse_driving` grid), gives the starts: the cells by score, best
 //!   first, at least the separation apart. Each start is then **refined
 //!   continuously**: both pivots move together, `(A0, C0)` in the plane,
-//!   by Nelder–Mead (the `argmin` crate, its parameters adapted to the
-//!   dimension) on the exact score. A linkage that misses a limit costs its
+//!   by Nelder–Mead (the steps of the `argmin` crate's, without its
+//!   per-step allocations, its parameters adapted to the dimension) on
+//!   the exact score. A linkage that misses a limit costs its
 //!   score plus a penalty for its shortfall (so the simplex can slide along
 //!   a limit's boundary, where the best linkages usually are), one without
 //!   a feasible motion a barrier, and only acceptable linkages are kept: the
@@ -79,8 +80,6 @@
 use core::cell::{Cell, RefCell};
 use core::sync::atomic::{AtomicUsize, Ordering};
 
-use argmin::core::{CostFunction, Error as ArgminError, Executor};
-use argmin::solver::neldermead::NelderMead;
 use nalgebra::Point2;
 use rayon::prelude::*;
 
@@ -99,6 +98,9 @@ use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
 use crate::tolerance;
 
 mod motor;
+mod simplex;
+
+use simplex::{End, MAX_DIM, Point};
 
 /// What to search for and how finely (see the [module docs](self)).
 #[derive(Debug, Clone, PartialEq)]
@@ -640,41 +642,42 @@ impl<'a> Exact<'a> {
 struct Objective<'a, F: Fn(&[f64], f64) -> Option<Verdict>> {
     eval: F,
     control: &'a Control<'a>,
+    /// The points' coordinates ([`MAX_DIM`] at most).
+    dim: usize,
     evaluations: Cell<usize>,
     judged_margin: f64,
     strict_margin: f64,
-    best: RefCell<Option<(f64, Vec<f64>, Verdict)>>,
+    best: RefCell<Option<(f64, Point, Verdict)>>,
     /// The best point of the current phase (acceptable as judged) and its
     /// cost: where its rounds restart.
-    phase_best: RefCell<Option<(f64, Vec<f64>, f64)>>,
+    phase_best: RefCell<Option<(f64, Point, f64)>>,
     /// Whether a point judged so far missed the Grashof margin: the band
     /// around the change point was met (else the relaxed phases cannot
     /// find what the first missed, and are skipped).
     met_margin: Cell<bool>,
 }
 
-impl<F: Fn(&[f64], f64) -> Option<Verdict>> CostFunction for Objective<'_, F> {
-    type Param = Vec<f64>;
-    type Output = f64;
-
-    fn cost(&self, x: &Self::Param) -> core::result::Result<f64, ArgminError> {
+impl<F: Fn(&[f64], f64) -> Option<Verdict>> Objective<'_, F> {
+    /// The cost of the point `p` (its first `dim` coordinates).
+    fn cost(&self, p: &Point) -> f64 {
+        let x = &p[..self.dim];
         if self.control.is_cancelled() || !x.iter().all(|v| v.is_finite()) {
-            return Ok(BARRIER);
+            return BARRIER;
         }
         self.evaluations.set(self.evaluations.get() + 1);
         let Some(v) = (self.eval)(x, self.judged_margin) else {
-            return Ok(BARRIER);
+            return BARRIER;
         };
         if !v.acceptable() {
             if v.fails & Limit::GrashofMargin.bit() != 0 {
                 self.met_margin.set(true);
             }
-            return Ok(match v.raw {
+            return match v.raw {
                 Some(raw) if v.motion_feasible() && v.shortfall.is_finite() => {
                     -raw + PENALTY * (1.0 + raw.abs()) * v.shortfall
                 }
                 _ => BARRIER,
-            });
+            };
         }
         let cost = -v.score.unwrap_or(f64::NAN);
         {
@@ -689,12 +692,12 @@ impl<F: Fn(&[f64], f64) -> Option<Verdict>> CostFunction for Objective<'_, F> {
                 }
             };
             if better {
-                *phase = Some((cost, x.clone(), v.size_ratio));
+                *phase = Some((cost, *p, v.size_ratio));
             }
         }
         // Judged with a relaxed margin, acceptable only at the limits' own.
         if v.linkage.figures.grashof_margin() < self.strict_margin {
-            return Ok(cost);
+            return cost;
         }
         let mut best = self.best.borrow_mut();
         let better = match &*best {
@@ -705,9 +708,9 @@ impl<F: Fn(&[f64], f64) -> Option<Verdict>> CostFunction for Objective<'_, F> {
             }
         };
         if better {
-            *best = Some((cost, x.clone(), v));
+            *best = Some((cost, *p, v));
         }
-        Ok(cost)
+        cost
     }
 }
 
@@ -752,9 +755,15 @@ fn refine<F: Fn(&[f64], f64) -> Option<Verdict>>(
     strict_margin: f64,
     control: &Control<'_>,
 ) -> (Option<(Vec<f64>, Verdict)>, usize) {
+    // Two (four poses) or four (three poses) coordinates, a step each.
+    let dim = x0.len().min(MAX_DIM);
+    debug_assert!(x0.len() == dim && h.len() == dim);
+    let mut start: Point = [0.0; MAX_DIM];
+    start[..dim].copy_from_slice(&x0[..dim]);
     let mut objective = Objective {
         eval,
         control,
+        dim,
         evaluations: Cell::new(0),
         judged_margin: strict_margin,
         strict_margin,
@@ -763,10 +772,10 @@ fn refine<F: Fn(&[f64], f64) -> Option<Verdict>>(
         met_margin: Cell::new(false),
     };
     // The start must be acceptable.
-    if objective.cost(&x0.to_vec()).map_or(true, |c| c >= BARRIER) {
+    if objective.cost(&start) >= BARRIER {
         return (None, objective.evaluations.get());
     }
-    let Some(o) = rounds(objective, x0, h, iterations, false, control) else {
+    let Some(o) = rounds(objective, &start, h, iterations, false, control) else {
         return (None, 0);
     };
     objective = o;
@@ -775,20 +784,23 @@ fn refine<F: Fn(&[f64], f64) -> Option<Verdict>>(
     if strict_margin > 0.0 && objective.met_margin.get() {
         objective.judged_margin = 0.0;
         *objective.phase_best.get_mut() = None;
-        let Some(o) = rounds(objective, x0, h, iterations, true, control) else {
+        let Some(o) = rounds(objective, &start, h, iterations, true, control) else {
             return (None, 0);
         };
         objective = o;
         let ridge = objective.phase_best.get_mut().take().map(|(_, x, _)| x);
         objective.judged_margin = strict_margin;
-        let from = ridge.unwrap_or_else(|| x0.to_vec());
+        let from = ridge.unwrap_or(start);
         let Some(o) = rounds(objective, &from, h, iterations.div_ceil(2), true, control) else {
             return (None, 0);
         };
         objective = o;
     }
     let evaluations = objective.evaluations.get();
-    let best = objective.best.into_inner().map(|(_, x, v)| (x, v));
+    let best = objective
+        .best
+        .into_inner()
+        .map(|(_, x, v)| (x[..dim].to_vec(), v));
     (best, evaluations)
 }
 
@@ -797,13 +809,14 @@ fn refine<F: Fn(&[f64], f64) -> Option<Verdict>>(
 /// `iterations` shared between them; the objective back (`None` where the
 /// solver failed).
 fn rounds<'a, F: Fn(&[f64], f64) -> Option<Verdict>>(
-    mut objective: Objective<'a, F>,
-    x0: &[f64],
+    objective: Objective<'a, F>,
+    x0: &Point,
     h: &[f64],
     iterations: usize,
     from_phase: bool,
     control: &Control<'_>,
 ) -> Option<Objective<'a, F>> {
+    let dim = objective.dim;
     let per_round = iterations.div_ceil(ROUNDS.len());
     let mut left = iterations;
     for scale in ROUNDS {
@@ -813,37 +826,26 @@ fn rounds<'a, F: Fn(&[f64], f64) -> Option<Verdict>>(
         }
         left -= budget;
         let at = if from_phase {
-            objective
-                .phase_best
-                .borrow()
-                .as_ref()
-                .map(|(_, x, _)| x.clone())
+            objective.phase_best.borrow().as_ref().map(|(_, x, _)| *x)
         } else {
-            objective.best.borrow().as_ref().map(|(_, x, _)| x.clone())
+            objective.best.borrow().as_ref().map(|(_, x, _)| *x)
         };
-        let from = at.unwrap_or_else(|| x0.to_vec());
-        let mut simplex = vec![from.clone()];
-        for (k, hk) in h.iter().enumerate() {
-            let mut v = from.clone();
-            v[k] += hk * scale;
-            simplex.push(v);
+        let from = at.unwrap_or(*x0);
+        let mut simplex = [from; MAX_DIM + 1];
+        for (k, hk) in h.iter().take(dim).enumerate() {
+            simplex[k + 1][k] += hk * scale;
         }
-        // The expansion and shrink adapted to the dimension (Gao and Han,
-        // 2012; their contraction, above argmin's bound of 1/2 for n > 2,
-        // is left at 1/2).
-        let n = h.len() as f64;
-        let solver = NelderMead::new(simplex)
-            .with_sd_tolerance(1e-13)
-            .and_then(|s| s.with_gamma(1.0 + 2.0 / n))
-            .and_then(|s| s.with_sigma(1.0 - 1.0 / n));
-        let Ok(solver) = solver else {
-            unreachable!("the Nelder-Mead parameters are within argmin's bounds")
-        };
-        let run = Executor::new(objective, solver)
-            .configure(|s| s.max_iters(budget as u64))
-            .timer(false)
-            .run();
-        objective = run.ok().and_then(|mut r| r.problem.take_problem())?;
+        let end = simplex::minimize(
+            &simplex[..=dim],
+            dim,
+            1e-13,
+            budget,
+            |p| objective.cost(p),
+            || control.is_cancelled(),
+        );
+        if end == End::Failed {
+            return None;
+        }
     }
     Some(objective)
 }
