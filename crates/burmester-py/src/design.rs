@@ -584,6 +584,35 @@ burmester::solution_map_columns!(py_solution_map);
 /// `margin`, `score` and `ranked_by` they read.
 macro_rules! ranked_getters {
     ($cls:ident) => {
+        impl $cls {
+            /// The same ranking of the same linkage as `o` (floats by their
+            /// bits), for `__eq__`.
+            fn same_ranking(&self, o: &Self) -> bool {
+                o.index == self.index
+                    && o.linkage == self.linkage
+                    && o.margin.to_bits() == self.margin.to_bits()
+                    && o.score.to_bits() == self.score.to_bits()
+                    && o.ranked_by == self.ranked_by
+            }
+
+            /// The end of the repr: the Grashof class, the transmission,
+            /// the size ratio and the ranking.
+            fn ranked_repr(&self) -> String {
+                let f = &self.linkage.inner.figures;
+                let mu = if f.min_transmission.is_nan() {
+                    "None".to_owned()
+                } else {
+                    format!("{:.3}", f.min_transmission.to_degrees())
+                };
+                let size = self.linkage.size_ratio();
+                let by = self.ranked_by.as_str();
+                format!(
+                    "{} min_transmission_deg={mu} size_ratio={size:.3} by {by}",
+                    f.grashof
+                )
+            }
+        }
+
         #[pymethods]
         impl $cls {
             #[getter]
@@ -707,29 +736,15 @@ impl PyPivot {
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other.cast::<PyPivot>().is_ok_and(|o| {
             let o = o.get();
-            o.center == self.center
-                && o.index == self.index
-                && o.linkage == self.linkage
-                && o.margin.to_bits() == self.margin.to_bits()
-                && o.score.to_bits() == self.score.to_bits()
-                && o.ranked_by == self.ranked_by
+            o.center == self.center && self.same_ranking(o)
         })
     }
     fn __repr__(&self) -> String {
-        let f = &self.linkage.inner.figures;
+        let (x, y) = self.center;
+        let index = self.index;
         format!(
-            "<Pivot center=({:.6}, {:.6}) index={:?} {} min_transmission_deg={} size_ratio={:.3} by {}>",
-            self.center.0,
-            self.center.1,
-            self.index,
-            f.grashof,
-            if f.min_transmission.is_nan() {
-                "None".to_owned()
-            } else {
-                format!("{:.3}", f.min_transmission.to_degrees())
-            },
-            self.linkage.size_ratio(),
-            self.ranked_by.as_str()
+            "<Pivot center=({x:.6}, {y:.6}) index={index:?} {}>",
+            self.ranked_repr()
         )
     }
 }

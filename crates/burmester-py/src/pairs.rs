@@ -130,34 +130,19 @@ impl PyPair {
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other.cast::<PyPair>().is_ok_and(|o| {
             let o = o.get();
-            o.driving == self.driving
-                && o.driven == self.driven
-                && o.index == self.index
-                && o.linkage == self.linkage
-                && o.margin.to_bits() == self.margin.to_bits()
-                && o.score.to_bits() == self.score.to_bits()
-                && o.ranked_by == self.ranked_by
+            o.driving == self.driving && o.driven == self.driven && self.same_ranking(o)
         })
     }
     fn __repr__(&self) -> String {
-        let f = &self.linkage.inner.figures;
         let (a, c) = (self.driving.center, self.driven.center);
+        let index = self.index;
         format!(
-            "<Pair driving=({:.6}, {:.6}) driven=({:.6}, {:.6}) index={:?} {} \
-             min_transmission_deg={} size_ratio={:.3} by {}>",
+            "<Pair driving=({:.6}, {:.6}) driven=({:.6}, {:.6}) index={index:?} {}>",
             a.0,
             a.1,
             c.0,
             c.1,
-            self.index,
-            f.grashof,
-            if f.min_transmission.is_nan() {
-                "None".to_owned()
-            } else {
-                format!("{:.3}", f.min_transmission.to_degrees())
-            },
-            self.linkage.size_ratio(),
-            self.ranked_by.as_str()
+            self.ranked_repr()
         )
     }
 }

@@ -146,6 +146,19 @@ fn fresh(
     Ok(SolutionMap { context, columns })
 }
 
+/// What a map of `grid` into the caller's columns `out` gives: `out`
+/// checked to hold the grid, filled by `fill`, and `context`.
+fn into(
+    grid: &Grid,
+    context: MapContext,
+    out: ColumnsOut<'_>,
+    fill: impl FnOnce(ColumnsOut<'_>) -> Result<()>,
+) -> Result<MapContext> {
+    out.check_len(grid.len())?;
+    fill(out)?;
+    Ok(context)
+}
+
 impl Filemon {
     /// The solution-space map over candidate driving center points `A0`
     /// on `grid` (see [`design`](crate::design)), following `control`. The
@@ -195,9 +208,10 @@ impl Filemon {
     ) -> Result<MapContext> {
         let options = CheckedOptions::new(limits, constraints)?;
         let sampler = Sampler::new(self.task(), &options)?.with_control(control);
-        out.check_len(grid.len())?;
-        self.fill_solution_map(&sampler, grid, out, control)?;
-        Ok(self.map_context(grid, limits, constraints))
+        let context = self.map_context(grid, limits, constraints);
+        into(grid, context, out, |out| {
+            self.fill_solution_map(&sampler, grid, out, control)
+        })
     }
 
     fn map_context(
@@ -275,13 +289,13 @@ impl Task {
         control: &Control<'_>,
     ) -> Result<MapContext> {
         let options = CheckedOptions::new(limits, constraints)?;
-        let sampler = self
-            .driven_sampler(driving, &options)?
-            .with_control(control);
-        out.check_len(grid.len())?;
-        self.fill_driven_map(&sampler, driving, grid, out, control)?;
+        let sampler = self.driven_sampler(driving, &options)?;
         let varying = Varying::Driven { driving: *driving };
-        Ok(MapContext::new(grid, self, varying, limits, constraints))
+        let context = MapContext::new(grid, self, varying, limits, constraints);
+        into(grid, context, out, |out| {
+            let sampler = sampler.with_control(control);
+            self.fill_driven_map(&sampler, driving, grid, out, control)
+        })
     }
 
     /// The sampler of the driven map, once the driving dyad is checked to
