@@ -13,10 +13,13 @@ Every class is immutable and pickles to an equal object (so tasks, Filemon
 constructions and maps can go to worker processes).
 """
 
-from typing import Any, Callable, Iterator, Literal, Optional, Sequence, Tuple, Union, final, overload
+from typing import (
+    Any, Callable, Iterator, Literal, Optional, Sequence, Tuple, TypedDict, Union, final, overload,
+)
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import Unpack
 
 __all__ = [
     "AssemblyError",
@@ -83,6 +86,51 @@ ArrayLike = Union[npt.ArrayLike, Sequence[float]]
 #: a sweep runs (the GIL released in between); an exception it raises stops
 #: the sweep and is raised by the call.
 Progress = Callable[[int, int], object]
+
+class LimitOptions(TypedDict, total=False):
+    """The limits keywords of the maps and drives (each may be left out):
+    ``limits=DesignLimits(...)``, or its keywords ``min_transmission_deg``
+    (default 30) and ``max_link_ratio`` (default 10), not both."""
+
+    limits: Optional[DesignLimits]
+    min_transmission_deg: Optional[float]
+    max_link_ratio: Optional[float]
+
+class DriveMapOptions(LimitOptions, total=False):
+    """The limits keywords and the constraints: the fixed pivot inside
+    ``base_plate`` (a simple polygon; default: anywhere), the moving links,
+    as capsules ``link_width`` wide (default 0.0), clear of ``obstacles``
+    (convex polygons) at ``travel_samples`` input angles of the travel
+    (default 64)."""
+
+    base_plate: Optional[Sequence[Point]]
+    obstacles: Optional[Sequence[Sequence[Point]]]
+    link_width: float
+    travel_samples: int
+
+class _DriveKeywords(TypedDict, total=False):
+    """A drive's own keywords: ``swing_margin_deg`` (default 0.0), the
+    rocker's swing extended at each end, and ``max_time_ratio`` (default
+    None: no limit)."""
+
+    swing_margin_deg: float
+    max_time_ratio: Optional[float]
+
+class DriveOptions(DriveMapOptions, _DriveKeywords, total=False):
+    """The keywords of the drives (:meth:`SynthesizedFourBar.drive_map` and
+    the others): the limits but ``input``, the constraints and the drive's
+    own."""
+
+class ClassicDriveOptions(LimitOptions, _DriveKeywords, total=False):
+    """The keywords of :meth:`SynthesizedFourBar.classic_drive`: the limits
+    but ``input`` and the drive's own."""
+
+class MapOptions(DriveMapOptions, total=False):
+    """The map option keywords of the solution maps, the pair map and the
+    atlas: those of :class:`DriveMapOptions` and ``input`` (``"any"``, the
+    default, ``"crank"`` or ``"rocker"``; one of the limits' keywords)."""
+
+    input: Optional[InputRequirement]
 
 # ---------------------------------------------------------------------------
 # Errors
@@ -809,15 +857,8 @@ class Task:
         driving_center: Point,
         grid: Union[Grid, GridTuple],
         *,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        input: Optional[InputRequirement] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
         progress: Optional[Progress] = None,
+        **options: Unpack[MapOptions],
     ) -> SolutionMap:
         """The solution-space map the other way round: the driving dyad with
         this center point is fixed and the candidates are driven center
@@ -835,30 +876,16 @@ class Task:
         nx: int,
         ny: int,
         *,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        input: Optional[InputRequirement] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
         progress: Optional[Progress] = None,
+        **options: Unpack[MapOptions],
     ) -> SolutionMap: ...
     def pair_map(
         self,
         n_driving: int = 256,
         n_driven: Optional[int] = None,
         *,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        input: Optional[InputRequirement] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
         progress: Optional[Progress] = None,
+        **options: Unpack[MapOptions],
     ) -> PairMap:
         """Four poses only: the pair map, every linkage of the task on one
         picture. ``n_driving`` driving dyads and ``n_driven`` (default: as
@@ -1136,15 +1163,8 @@ class Filemon:
         grid: Union[Grid, GridTuple],
         /,
         *,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        input: Optional[InputRequirement] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
         progress: Optional[Progress] = None,
+        **options: Unpack[MapOptions],
     ) -> SolutionMap:
         """The designer's solution-space map over candidate driving center
         points ``A0`` on a grid (as :meth:`branch_map`).
@@ -1179,15 +1199,8 @@ class Filemon:
         ny: int,
         /,
         *,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        input: Optional[InputRequirement] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
         progress: Optional[Progress] = None,
+        **options: Unpack[MapOptions],
     ) -> SolutionMap: ...
     def _repr_png_(self) -> Optional[bytes]:
         """The picture Jupyter shows (see :mod:`burmester._display`): PNG
@@ -1267,16 +1280,8 @@ class SynthesizedFourBar:
         self,
         *grid: Any,
         attachment: Optional[Point] = None,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        swing_margin_deg: float = 0.0,
-        max_time_ratio: Optional[float] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
         progress: Optional[Progress] = None,
+        **options: Unpack[DriveOptions],
     ) -> DriveMap:
         """The drive map: for every candidate crank pivot ``D0`` on the grid
         (a :class:`Grid` or its six numbers), the crank-rocker ``D0 D E A0``
@@ -1301,16 +1306,7 @@ class SynthesizedFourBar:
         self,
         drive_pivot: Point,
         attachment: Optional[Point] = None,
-        *,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        swing_margin_deg: float = 0.0,
-        max_time_ratio: Optional[float] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
+        **options: Unpack[DriveOptions],
     ) -> Drive:
         """The drive with its crank pivot at ``drive_pivot`` (one sample of
         :meth:`drive_map`); :class:`DriveError` (``"not_a_crank_rocker"``)
@@ -1321,11 +1317,7 @@ class SynthesizedFourBar:
         *,
         beyond_first: bool = True,
         drive_transmission_deg: Optional[float] = None,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        swing_margin_deg: float = 0.0,
-        max_time_ratio: Optional[float] = None,
+        **options: Unpack[ClassicDriveOptions],
     ) -> Drive:
         """The closed-form drive of time ratio 1 (Norton's construction,
         Brodell and Soni's equations): the crank pivot on the line through
@@ -1342,17 +1334,9 @@ class SynthesizedFourBar:
         angles_deg: Optional[Sequence[float]] = None,
         reach: float = 4.0,
         samples: int = 96,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        swing_margin_deg: float = 0.0,
-        max_time_ratio: Optional[float] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
         rank_by: RankBy = "balanced",
         progress: Optional[Progress] = None,
+        **options: Unpack[DriveOptions],
     ) -> list[Drive]:
         """Searches attachments and crank pivots: ``E`` at ``ratio * |A - A0|``
         from ``A0``, turned ``angle`` from the input link (along it at 0,
@@ -1365,17 +1349,9 @@ class SynthesizedFourBar:
     def best_drive(
         self,
         *,
-        limits: Optional[DesignLimits] = None,
-        min_transmission_deg: Optional[float] = None,
-        max_link_ratio: Optional[float] = None,
-        swing_margin_deg: float = 0.0,
-        max_time_ratio: Optional[float] = None,
-        base_plate: Optional[Sequence[Point]] = None,
-        obstacles: Optional[Sequence[Sequence[Point]]] = None,
-        link_width: float = 0.0,
-        travel_samples: int = 64,
         rank_by: RankBy = "balanced",
         progress: Optional[Progress] = None,
+        **options: Unpack[DriveOptions],
     ) -> Drive:
         """The best drive of :meth:`drive_search` with its defaults: a
         motor for this linkage (what ``burmester.design(..., input="motor")``
@@ -1803,18 +1779,11 @@ def _atlas_tile(
     row_end: int,
     driving: Grid,
     *,
-    limits: Optional[DesignLimits] = None,
-    min_transmission_deg: Optional[float] = None,
-    max_link_ratio: Optional[float] = None,
-    input: Optional[InputRequirement] = None,
-    base_plate: Optional[Sequence[Point]] = None,
-    obstacles: Optional[Sequence[Sequence[Point]]] = None,
-    link_width: float = 0.0,
-    travel_samples: int = 64,
     rank_by: RankBy = "balanced",
     envelope: Optional[Sequence[Point]] = None,
     threads: Optional[int] = None,
     progress: Optional[Progress] = None,
+    **options: Unpack[MapOptions],
 ) -> dict[str, npt.NDArray[Any]]:
     """Rows ``row_start..row_end`` of the pivot-pair atlas over the driven
     grid, as arrays of shape ``(rows, nx)`` (``best_driving``,

@@ -22,13 +22,20 @@ import importlib
 import math
 import os
 import uuid
-from typing import Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
+from typing import (
+    TYPE_CHECKING, Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union,
+)
 
 import numpy as np
 import numpy.typing as npt
 
 from burmester import _view
 from burmester._burmester import DesignLimits, Grid, SynthesizedFourBar, Task, _atlas_tile
+
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
+    from burmester._burmester import MapOptions
 
 __all__ = ["AtlasPair", "PivotAtlas", "pivot_atlas"]
 
@@ -221,21 +228,15 @@ class PivotAtlas:
                 f"with_best={n_best}, best_transmission_deg={top:.6g}, rank_by={self.rank_by!r})")
 
 
-def _options(limits: Optional[DesignLimits], min_transmission_deg: Optional[float],
-             max_link_ratio: Optional[float], input: Optional[str],
-             base_plate: Optional[Sequence[Tuple[float, float]]],
-             obstacles: Optional[Sequence[Sequence[Tuple[float, float]]]],
-             link_width: float, travel_samples: int, rank_by: str = "balanced") -> Dict[str, Any]:
-    opts: Dict[str, Any] = {"link_width": link_width, "travel_samples": travel_samples,
-                            "rank_by": rank_by}
-    for name, v in (("limits", limits), ("min_transmission_deg", min_transmission_deg),
-                    ("max_link_ratio", max_link_ratio), ("input", input)):
-        if v is not None:
-            opts[name] = v
-    if base_plate is not None:
-        opts["base_plate"] = [tuple(p) for p in base_plate]
-    if obstacles is not None:
-        opts["obstacles"] = [[tuple(p) for p in o] for o in obstacles]
+def _options(options: MapOptions, rank_by: str) -> Dict[str, Any]:
+    """The keywords of :func:`_atlas_tile`: the map options with the
+    defaults of those that have one spelled out, the polygons as tuples."""
+    opts: Dict[str, Any] = {"link_width": 0.0, "travel_samples": 64, "rank_by": rank_by}
+    opts.update((k, v) for k, v in options.items() if v is not None)
+    if "base_plate" in opts:
+        opts["base_plate"] = [tuple(p) for p in opts["base_plate"]]
+    if "obstacles" in opts:
+        opts["obstacles"] = [[tuple(p) for p in o] for o in opts["obstacles"]]
     return opts
 
 
@@ -303,17 +304,10 @@ def pivot_atlas(
     driving: GridArg,
     *,
     client: Any = None,
-    limits: Optional[DesignLimits] = None,
-    min_transmission_deg: Optional[float] = None,
-    max_link_ratio: Optional[float] = None,
-    input: Optional[str] = None,
-    base_plate: Optional[Sequence[Tuple[float, float]]] = None,
-    obstacles: Optional[Sequence[Sequence[Tuple[float, float]]]] = None,
-    link_width: float = 0.0,
-    travel_samples: int = 64,
     rank_by: str = "balanced",
     progress: Optional[Progress] = None,
     tile_rows: Optional[int] = None,
+    **options: Unpack[MapOptions],
 ) -> PivotAtlas:
     """The pivot-pair atlas of a three-pose ``task``: for every driven center
     on ``driven``, its solution map over ``driving`` reduced (module docs).
@@ -332,8 +326,7 @@ def pivot_atlas(
     :class:`TimeoutError` says so (its tasks would wait for ever).
     """
     dg, vg = _view.grid(driven, "driven"), _view.grid(driving, "driving")
-    opts = _options(limits, min_transmission_deg, max_link_ratio, input, base_plate, obstacles,
-                    link_width, travel_samples, rank_by)
+    opts = _options(options, rank_by)
     if client is None:
         rows: Optional[Progress] = None
         if progress is not None:

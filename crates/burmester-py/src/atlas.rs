@@ -8,23 +8,21 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::conv::{Count, PyPoint, Real};
+use crate::classes::PyTask;
+use crate::conv::{Count, PyPoint};
 use crate::conv::{empty, slice_mut, writer};
-use crate::design::{MapOptions, PyDesignLimits};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
+use crate::options::{Keys, MapOptions};
 use crate::run::{WATCH_MIN_SAMPLES, run_in};
-use crate::synthesis::PyTask;
 
 /// The cells of rows `row_start..row_end` of the driven grid, as a dict of
 /// NumPy arrays of shape `(rows, nx)` (`best_driving` and `best_index`:
 /// `(rows, nx, 2)`), computed on `threads` rayon threads (default: the
 /// global pool).
 #[pyfunction]
-#[pyo3(signature = (task, driven, row_start, row_end, driving, *, limits = None,
-    min_transmission_deg = None, max_link_ratio = None, input = None, base_plate = None,
-    obstacles = None, link_width = Real(0.0), travel_samples = Count(64), rank_by = "balanced",
-    envelope = None, threads = None, progress = None),
+#[pyo3(signature = (task, driven, row_start, row_end, driving, *, rank_by = "balanced",
+    envelope = None, threads = None, progress = None, **options),
     text_signature = "(task, driven, row_start, row_end, driving, *, limits=None, \
     min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, obstacles=None, \
     link_width=0.0, travel_samples=64, rank_by='balanced', envelope=None, threads=None, \
@@ -37,30 +35,14 @@ pub(crate) fn _atlas_tile<'py>(
     row_start: Count,
     row_end: Count,
     driving: &PyGrid,
-    limits: Option<PyDesignLimits>,
-    min_transmission_deg: Option<Real>,
-    max_link_ratio: Option<Real>,
-    input: Option<&str>,
-    base_plate: Option<Vec<PyPoint>>,
-    obstacles: Option<Vec<Vec<PyPoint>>>,
-    link_width: Real,
-    travel_samples: Count,
     rank_by: &str,
     envelope: Option<Vec<PyPoint>>,
     threads: Option<Count>,
     progress: Option<&Bound<'py, PyAny>>,
+    options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let rank_by = rank_by.parse::<RankBy>().py()?;
-    let mut opts = MapOptions::new(
-        limits,
-        min_transmission_deg,
-        max_link_ratio,
-        input,
-        base_plate,
-        obstacles,
-        link_width,
-        travel_samples,
-    )?;
+    let mut opts = MapOptions::from_kwargs("_atlas_tile", options, Keys::MAP)?;
     opts.constraints.envelope = envelope.map(|v| v.into_iter().map(|p| p.0).collect());
     let (t, dn, dv) = (task.inner, driven.inner, driving.inner);
     let (r0, r1) = (row_start.0, row_end.0);

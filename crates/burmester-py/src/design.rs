@@ -2,8 +2,8 @@
 //! (the core's `design`).
 
 use burmester::{
-    Constraints, DesignLimits, Dyad, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2,
-    RankBy, Task, Varying,
+    DesignLimits, Dyad, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2, RankBy, Task,
+    Varying,
 };
 use numpy::ndarray::Array2;
 use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods};
@@ -11,26 +11,15 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
+use crate::classes::{PyDesignLimits, PyFilemon, PySynthesizedFourBar, PyTask, dyad_tuple};
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
+use crate::geom::grid_arg;
+use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
 use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
-use crate::synthesis::{PySynthesizedFourBar, PyTask, dyad_tuple};
 
 type Xy = (f64, f64);
-
-/// The designer's limits behind the `acceptable` mask.
-#[pyclass(
-    frozen,
-    eq,
-    from_py_object,
-    name = "DesignLimits",
-    module = "burmester"
-)]
-#[derive(Clone, PartialEq)]
-pub struct PyDesignLimits {
-    pub(crate) inner: DesignLimits,
-}
 
 #[pymethods]
 impl PyDesignLimits {
@@ -120,64 +109,6 @@ fn shortest_degrees(rad: f64) -> f64 {
         .filter_map(|digits| format!("{deg:.digits$e}").parse::<f64>().ok())
         .find(|d| d.to_radians() == rad)
         .unwrap_or(deg)
-}
-
-/// The keyword arguments of the solution maps: the limits (a
-/// `DesignLimits`, or its three keywords) and the constraints.
-pub(crate) struct MapOptions {
-    pub(crate) limits: DesignLimits,
-    pub(crate) constraints: Constraints,
-}
-
-impl MapOptions {
-    /// The options from the Python keywords; the core validates them.
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn new(
-        limits: Option<PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        input: Option<&str>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-    ) -> PyResult<Self> {
-        let limits = match limits {
-            Some(l) => {
-                if min_transmission_deg.is_some() || max_link_ratio.is_some() || input.is_some() {
-                    return Err(PyTypeError::new_err(
-                        "pass either limits=DesignLimits(...) or the keywords \
-                         min_transmission_deg, max_link_ratio and input, not both",
-                    ));
-                }
-                l.inner
-            }
-            None => {
-                let d = DesignLimits::default();
-                let input = match input {
-                    Some(s) => s.parse::<InputRequirement>().py()?,
-                    None => d.input,
-                };
-                DesignLimits::from_degrees(
-                    min_transmission_deg.map_or(d.min_transmission.to_degrees(), |r| r.0),
-                    max_link_ratio.map_or(d.max_link_ratio, |r| r.0),
-                    input,
-                )
-                .py()?
-            }
-        };
-        let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<Point2<f64>>>();
-        Ok(MapOptions {
-            limits,
-            constraints: Constraints {
-                base_plate: base_plate.map(pts),
-                obstacles: obstacles.unwrap_or_default().into_iter().map(pts).collect(),
-                link_width: link_width.0,
-                travel_samples: travel_samples.0,
-                envelope: None,
-            },
-        })
-    }
 }
 
 /// The values of a column (a pickled map's), copied into memory reserved
@@ -542,8 +473,14 @@ macro_rules! py_map_class {
                 })
             }
 
-            fn same_columns(&self, py: Python<'_>, other: &Self) -> bool {
-                true $(&& $crate::design::same_column(py, &self.$name, &other.$name))*
+            /// Equal to `other` (a Python object): a map of the same class,
+            /// context and columns (`__eq__`).
+            fn equals(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> bool {
+                other.cast::<$cls>().is_ok_and(|o| {
+                    let o = o.get();
+                    o.context == self.context
+                        $(&& $crate::design::same_column(py, &self.$name, &o.$name))*
+                })
             }
 
             /// The columns a ranking reads, borrowed from the arrays, passed
@@ -569,6 +506,67 @@ macro_rules! py_map_class {
                 })
             }
         }
+
+        /// What every map with the solution map's columns offers Python
+        /// (each map's own methods are in its module).
+        #[pymethods]
+        impl $cls {
+            /// The names of the Grashof codes, by code.
+            #[classattr]
+            fn grashof_names() -> Vec<&'static str> {
+                burmester::Grashof::ALL.iter().map(|g| g.as_str()).collect()
+            }
+            /// The names of the columns, in order.
+            #[classattr]
+            fn columns() -> Vec<&'static str> {
+                burmester::design::Columns::NAMES.to_vec()
+            }
+            #[getter]
+            fn grid(&self) -> $crate::geom::PyGrid {
+                $crate::geom::PyGrid {
+                    inner: self.context.grid,
+                }
+            }
+            #[getter]
+            fn extent(&self) -> (f64, f64, f64, f64) {
+                let v = self.context.grid.viewport();
+                (v.xmin, v.xmax, v.ymin, v.ymax)
+            }
+            #[getter]
+            fn shape(&self) -> (usize, usize) {
+                (self.context.grid.ny(), self.context.grid.nx())
+            }
+            #[getter]
+            fn task(&self) -> $crate::classes::PyTask {
+                $crate::classes::PyTask {
+                    inner: self.context.task,
+                }
+            }
+            #[getter]
+            fn limits(&self) -> $crate::classes::PyDesignLimits {
+                $crate::classes::PyDesignLimits {
+                    inner: self.context.limits,
+                }
+            }
+            fn __reduce__<'py>(
+                &self,
+                py: Python<'py>,
+            ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, pyo3::types::PyTuple>)> {
+                let from_state = py.get_type::<$cls>().getattr("_from_state")?;
+                Ok((from_state, self.state(py)?))
+            }
+            fn pareto_front<'py>(
+                &self,
+                py: Python<'py>,
+            ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+                self.ranked(py, usize::MAX, Some(0.0), burmester::RankBy::Pareto)
+            }
+            /// A picture for Jupyter: PNG bytes drawn by `burmester._display`,
+            /// or None without matplotlib.
+            fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+                $crate::display::repr_png(slf.as_any())
+            }
+        }
     };
 }
 pub(crate) use py_map_class;
@@ -580,6 +578,77 @@ macro_rules! py_solution_map {
 }
 
 burmester::solution_map_columns!(py_solution_map);
+
+/// The getters a ranked sample of a map shares (`Pivot`, `Pair`): a
+/// `#[pymethods]` block for `$cls`, whose fields `index`, `linkage`,
+/// `margin`, `score` and `ranked_by` they read.
+macro_rules! ranked_getters {
+    ($cls:ident) => {
+        impl $cls {
+            /// The same ranking of the same linkage as `o` (floats by their
+            /// bits), for `__eq__`.
+            fn same_ranking(&self, o: &Self) -> bool {
+                o.index == self.index
+                    && o.linkage == self.linkage
+                    && o.margin.to_bits() == self.margin.to_bits()
+                    && o.score.to_bits() == self.score.to_bits()
+                    && o.ranked_by == self.ranked_by
+            }
+
+            /// The end of the repr: the Grashof class, the transmission,
+            /// the size ratio and the ranking.
+            fn ranked_repr(&self) -> String {
+                let f = &self.linkage.inner.figures;
+                let mu = if f.min_transmission.is_nan() {
+                    "None".to_owned()
+                } else {
+                    format!("{:.3}", f.min_transmission.to_degrees())
+                };
+                let size = self.linkage.size_ratio();
+                let by = self.ranked_by.as_str();
+                format!(
+                    "{} min_transmission_deg={mu} size_ratio={size:.3} by {by}",
+                    f.grashof
+                )
+            }
+        }
+
+        #[pymethods]
+        impl $cls {
+            #[getter]
+            fn index(&self) -> (usize, usize) {
+                self.index
+            }
+            #[getter]
+            fn linkage(&self) -> $crate::classes::PySynthesizedFourBar {
+                self.linkage.clone()
+            }
+            #[getter]
+            fn figures(&self) -> $crate::linkage::PyLinkageFigures {
+                self.linkage.figures()
+            }
+            #[getter]
+            fn margin(&self) -> f64 {
+                self.margin
+            }
+            #[getter]
+            fn size_ratio(&self) -> f64 {
+                self.linkage.size_ratio()
+            }
+            #[getter]
+            fn score(&self) -> f64 {
+                self.score
+            }
+            #[getter]
+            fn ranked_by(&self) -> &'static str {
+                self.ranked_by.as_str()
+            }
+        }
+    };
+}
+pub(crate) use ranked_getters;
+
+ranked_getters!(PyPivot);
 
 /// A candidate pivot of a solution map with its linkage.
 #[pyclass(frozen, name = "Pivot", module = "burmester")]
@@ -645,34 +714,6 @@ impl PyPivot {
     fn center(&self) -> Xy {
         self.center
     }
-    #[getter]
-    fn index(&self) -> (usize, usize) {
-        self.index
-    }
-    #[getter]
-    fn linkage(&self) -> PySynthesizedFourBar {
-        self.linkage.clone()
-    }
-    #[getter]
-    fn figures(&self) -> crate::linkage::PyLinkageFigures {
-        self.linkage.figures()
-    }
-    #[getter]
-    fn margin(&self) -> f64 {
-        self.margin
-    }
-    #[getter]
-    fn size_ratio(&self) -> f64 {
-        self.linkage.size_ratio()
-    }
-    #[getter]
-    fn score(&self) -> f64 {
-        self.score
-    }
-    #[getter]
-    fn ranked_by(&self) -> &'static str {
-        self.ranked_by.as_str()
-    }
     fn __getnewargs__(
         &self,
     ) -> (
@@ -695,34 +736,40 @@ impl PyPivot {
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other.cast::<PyPivot>().is_ok_and(|o| {
             let o = o.get();
-            o.center == self.center
-                && o.index == self.index
-                && o.linkage == self.linkage
-                && o.margin.to_bits() == self.margin.to_bits()
-                && o.score.to_bits() == self.score.to_bits()
-                && o.ranked_by == self.ranked_by
+            o.center == self.center && self.same_ranking(o)
         })
     }
     fn __repr__(&self) -> String {
-        let f = &self.linkage.inner.figures;
+        let (x, y) = self.center;
+        let index = self.index;
         format!(
-            "<Pivot center=({:.6}, {:.6}) index={:?} {} min_transmission_deg={} size_ratio={:.3} by {}>",
-            self.center.0,
-            self.center.1,
-            self.index,
-            f.grashof,
-            if f.min_transmission.is_nan() {
-                "None".to_owned()
-            } else {
-                format!("{:.3}", f.min_transmission.to_degrees())
-            },
-            self.linkage.size_ratio(),
-            self.ranked_by.as_str()
+            "<Pivot center=({x:.6}, {y:.6}) index={index:?} {}>",
+            self.ranked_repr()
         )
     }
 }
 
 impl PySolutionMap {
+    /// The arguments of `_from_state` (for pickling).
+    fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        let c = &self.context;
+        let fixed = dyad_tuple(&c.varying.fixed());
+        let grid = PyGrid { inner: c.grid };
+        let (task, limits) = (self.task(), self.limits());
+        let columns = self.column_dict(py)?;
+        let constraints = constraint_state(&c.constraints);
+        (
+            grid,
+            task,
+            c.varying.as_str(),
+            fixed,
+            limits,
+            constraints,
+            columns,
+        )
+            .into_pyobject(py)
+    }
+
     /// The `k` best pivots by `rank_by`, reading the NumPy columns in place.
     fn ranked<'py>(
         &self,
@@ -746,31 +793,6 @@ impl PySolutionMap {
 
 #[pymethods]
 impl PySolutionMap {
-    /// The names of the Grashof codes, by code.
-    #[classattr]
-    fn grashof_names() -> Vec<&'static str> {
-        burmester::Grashof::ALL.iter().map(|g| g.as_str()).collect()
-    }
-    /// The names of the columns, in order.
-    #[classattr]
-    fn columns() -> Vec<&'static str> {
-        burmester::design::Columns::NAMES.to_vec()
-    }
-    #[getter]
-    fn grid(&self) -> PyGrid {
-        PyGrid {
-            inner: self.context.grid,
-        }
-    }
-    #[getter]
-    fn extent(&self) -> (f64, f64, f64, f64) {
-        let v = self.context.grid.viewport();
-        (v.xmin, v.xmax, v.ymin, v.ymax)
-    }
-    #[getter]
-    fn shape(&self) -> (usize, usize) {
-        (self.context.grid.ny(), self.context.grid.nx())
-    }
     #[getter]
     fn varying(&self) -> &'static str {
         self.context.varying.as_str()
@@ -778,18 +800,6 @@ impl PySolutionMap {
     #[getter]
     fn fixed_dyad(&self) -> (Xy, Xy) {
         dyad_tuple(&self.context.varying.fixed())
-    }
-    #[getter]
-    fn task(&self) -> PyTask {
-        PyTask {
-            inner: self.context.task,
-        }
-    }
-    #[getter]
-    fn limits(&self) -> PyDesignLimits {
-        PyDesignLimits {
-            inner: self.context.limits,
-        }
     }
     fn point(&self, j: Count, i: Count) -> PyResult<Xy> {
         self.grid().point(j, i)
@@ -822,9 +832,6 @@ impl PySolutionMap {
         let rank_by = rank_by.parse::<RankBy>().py()?;
         self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
     }
-    fn pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyList>> {
-        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
-    }
 
     /// Rebuilds a map from its state (for pickling).
     #[staticmethod]
@@ -849,64 +856,20 @@ impl PySolutionMap {
                 )));
             }
         };
-        let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<_>>();
         let context = MapContext {
             grid: grid.inner,
             task: task.inner,
             varying,
             limits: limits.inner,
-            constraints: Constraints {
-                base_plate: constraints.0.map(pts),
-                obstacles: constraints.1.into_iter().map(pts).collect(),
-                link_width: constraints.2,
-                travel_samples: constraints.3,
-                envelope: None,
-            },
+            constraints: constraints_of(constraints),
         };
         check_context(py, &context)?;
         let shape = (context.grid.ny(), context.grid.nx());
         Self::from_columns(py, context, shape, columns)
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let c = &self.context;
-        let pts = |v: &[Point2<f64>]| v.iter().map(|p| pt(*p)).collect::<Vec<_>>();
-        let constraints = (
-            c.constraints.base_plate.as_deref().map(pts),
-            c.constraints
-                .obstacles
-                .iter()
-                .map(|o| pts(o))
-                .collect::<Vec<_>>(),
-            c.constraints.link_width,
-            c.constraints.travel_samples,
-        );
-        let args = (
-            self.grid(),
-            self.task(),
-            self.varying(),
-            self.fixed_dyad(),
-            self.limits(),
-            constraints,
-            self.column_dict(py)?,
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PySolutionMap>().getattr("_from_state")?, args))
-    }
-
     fn __eq__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> bool {
-        other
-            .cast::<PySolutionMap>()
-            .is_ok_and(|o| o.get().context == self.context && self.same_columns(py, o.get()))
-    }
-
-    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
-    /// None without matplotlib.
-    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        crate::display::repr_png(slf.as_any())
+        self.equals(py, other)
     }
 
     fn __repr__(&self) -> String {
@@ -948,8 +911,62 @@ fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
     })
 }
 
+/// The solution maps of `Filemon` (candidate driving pivots).
+#[pymethods]
+impl PyFilemon {
+    #[pyo3(signature = (*grid, progress = None, **options),
+        text_signature = "($self, *grid, limits=None, min_transmission_deg=None, \
+        max_link_ratio=None, input=None, base_plate=None, obstacles=None, link_width=0.0, \
+        travel_samples=64, progress=None)")]
+    fn solution_map(
+        &self,
+        py: Python<'_>,
+        grid: &Bound<'_, PyTuple>,
+        progress: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PySolutionMap> {
+        let what = "solution_map takes a grid (or its six numbers); the limits go by keyword";
+        let g = grid_alone(grid, what)?;
+        let opts = MapOptions::from_kwargs("Filemon.solution_map", options, Keys::MAP)?;
+        solution_map(py, self.inner, g, opts, progress)
+    }
+}
+
+/// The driven solution map of `Task` (candidate driven pivots).
+#[pymethods]
+impl PyTask {
+    #[pyo3(signature = (driving_center, *grid, progress = None, **options),
+        text_signature = "($self, driving_center, *grid, limits=None, \
+        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+    fn driven_solution_map(
+        &self,
+        py: Python<'_>,
+        driving_center: PyPoint,
+        grid: &Bound<'_, PyTuple>,
+        progress: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PySolutionMap> {
+        let what = "driven_solution_map takes the driving center and a grid (or its six numbers)";
+        let g = grid_alone(grid, what)?;
+        let opts = MapOptions::from_kwargs("Task.driven_solution_map", options, Keys::MAP)?;
+        driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
+    }
+}
+
+/// The grid of a map's positional arguments `grid` (a `Grid`, its tuple
+/// or its six numbers) and nothing else; a `TypeError` saying `what` the
+/// method takes otherwise.
+pub(crate) fn grid_alone(grid: &Bound<'_, PyTuple>, what: &'static str) -> PyResult<Grid> {
+    let (g, used) = grid_arg(grid)?;
+    if used != grid.len() {
+        return Err(PyTypeError::new_err(what));
+    }
+    Ok(g)
+}
+
 /// `Filemon.solution_map`.
-pub(crate) fn solution_map(
+fn solution_map(
     py: Python<'_>,
     f: Filemon,
     grid: Grid,
@@ -965,7 +982,7 @@ pub(crate) fn solution_map(
 }
 
 /// `Task.driven_solution_map`.
-pub(crate) fn driven_solution_map(
+fn driven_solution_map(
     py: Python<'_>,
     task: Task,
     driving_center: Point2<f64>,

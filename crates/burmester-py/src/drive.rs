@@ -11,13 +11,14 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
+use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask};
 use crate::conv::{Count, FloatArray, PyPoint, Real, empty, pt, slice_mut, writer};
-use crate::design::{MapOptions, PyDesignLimits, readonly, same_column, set_readonly};
+use crate::design::{grid_alone, readonly, same_column, set_readonly};
 use crate::errors::IntoPy;
-use crate::geom::{PyGrid, grid_arg, vec2};
+use crate::geom::{PyGrid, vec2};
 use crate::linkage::{PyFourBar, mode};
+use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
 use crate::run::{WATCH_MIN_SAMPLES, run};
-use crate::synthesis::{PySynthesizedFourBar, PyTask};
 
 type Xy = (f64, f64);
 
@@ -30,30 +31,11 @@ struct DriveArgs {
 }
 
 impl DriveArgs {
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        limits: Option<PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Option<Real>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-    ) -> PyResult<Self> {
-        let m = MapOptions::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            None,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )?;
-        let max_time_ratio = max_time_ratio.map_or(f64::INFINITY, |r| r.0);
-        let options = DriveOptions::from_degrees(swing_margin_deg.0, max_time_ratio).py()?;
+    /// The drive options of the keywords `options` of drive method
+    /// `method`, which accepts `keys`.
+    fn new(method: &str, options: Option<&Bound<'_, PyDict>>, keys: Keys) -> PyResult<Self> {
+        let m = MapOptions::from_kwargs(method, options, keys)?;
+        let options = DriveOptions::from_degrees(m.swing_margin_deg, m.max_time_ratio).py()?;
         Ok(DriveArgs {
             limits: m.limits,
             options,
@@ -79,30 +61,6 @@ impl DriveArgs {
 fn point_grid(p: Point2<f64>) -> PyResult<Grid> {
     let h = 1.0 + p.x.abs().max(p.y.abs());
     Grid::from_bounds(p.x - h, p.x + h, p.y - h, p.y + h, 1, 1).py()
-}
-
-/// The constraints as plain data (for pickling).
-type ConstraintState = (Option<Vec<Xy>>, Vec<Vec<Xy>>, f64, usize);
-
-fn constraint_state(c: &Constraints) -> ConstraintState {
-    let pts = |v: &[Point2<f64>]| v.iter().map(|p| pt(*p)).collect::<Vec<_>>();
-    (
-        c.base_plate.as_deref().map(pts),
-        c.obstacles.iter().map(|o| pts(o)).collect(),
-        c.link_width,
-        c.travel_samples,
-    )
-}
-
-fn constraints_of(s: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize)) -> Constraints {
-    let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<_>>();
-    Constraints {
-        base_plate: s.0.map(pts),
-        obstacles: s.1.into_iter().map(pts).collect(),
-        link_width: s.2,
-        travel_samples: s.3,
-        envelope: None,
-    }
 }
 
 fn rank(s: &str) -> PyResult<RankBy> {
@@ -903,44 +861,107 @@ impl PyDriveMap {
     }
 }
 
-// The drive methods of `SynthesizedFourBar` (its #[pymethods] block in
-// `synthesis.rs` delegates to these).
+/// The drive methods of `SynthesizedFourBar`: driving it from a motor by
+/// an added dyad (the Watt II six-bar).
+#[pymethods]
+impl PySynthesizedFourBar {
+    #[pyo3(signature = (*grid, attachment = None, progress = None,
+        **options),
+        text_signature = "($self, *grid, attachment=None, limits=None, min_transmission_deg=None, \
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+    fn drive_map(
+        &self,
+        py: Python<'_>,
+        grid: &Bound<'_, PyTuple>,
+        attachment: Option<PyPoint>,
+        progress: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyDriveMap> {
+        let args = DriveArgs::new("SynthesizedFourBar.drive_map", options, Keys::DRIVE)?;
+        drive_map(self, py, grid, attachment, args, progress)
+    }
+
+    #[pyo3(signature = (drive_pivot, attachment = None, **options),
+        text_signature = "($self, drive_pivot, attachment=None, *, limits=None, \
+        min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
+        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, travel_samples=64)")]
+    fn drive(
+        &self,
+        drive_pivot: PyPoint,
+        attachment: Option<PyPoint>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyDrive> {
+        let args = DriveArgs::new("SynthesizedFourBar.drive", options, Keys::DRIVE)?;
+        drive(self, drive_pivot, attachment, args)
+    }
+
+    #[pyo3(signature = (attachment = None, *, beyond_first = true, drive_transmission_deg = None,
+        **options),
+        text_signature = "($self, attachment=None, *, beyond_first=True, \
+        drive_transmission_deg=None, limits=None, min_transmission_deg=None, \
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None)")]
+    fn classic_drive(
+        &self,
+        attachment: Option<PyPoint>,
+        beyond_first: bool,
+        drive_transmission_deg: Option<Real>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyDrive> {
+        let args = DriveArgs::new("SynthesizedFourBar.classic_drive", options, Keys::CLASSIC)?;
+        classic_drive(self, attachment, beyond_first, drive_transmission_deg, args)
+    }
+
+    #[pyo3(signature = (*, ratios = None, angles_deg = None, reach = Real(4.0),
+        samples = Count(96), rank_by = "balanced", progress = None, **options),
+        text_signature = "($self, *, ratios=None, angles_deg=None, reach=4.0, samples=96, \
+        limits=None, min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
+        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, \
+        travel_samples=64, rank_by='balanced', progress=None)")]
+    #[allow(clippy::too_many_arguments)]
+    fn drive_search(
+        &self,
+        py: Python<'_>,
+        ratios: Option<Vec<Real>>,
+        angles_deg: Option<Vec<Real>>,
+        reach: Real,
+        samples: Count,
+        rank_by: &str,
+        progress: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Vec<PyDrive>> {
+        let args = DriveArgs::new("SynthesizedFourBar.drive_search", options, Keys::DRIVE)?;
+        let search = search_of(ratios, angles_deg, reach, samples);
+        drive_search(self, py, search, args, rank_by, progress)
+    }
+
+    #[pyo3(signature = (*, rank_by = "balanced", progress = None, **options),
+        text_signature = "($self, *, limits=None, min_transmission_deg=None, \
+        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64, rank_by='balanced', progress=None)")]
+    fn best_drive(
+        &self,
+        py: Python<'_>,
+        rank_by: &str,
+        progress: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyDrive> {
+        let args = DriveArgs::new("SynthesizedFourBar.best_drive", options, Keys::DRIVE)?;
+        best_drive(self, py, args, rank_by, progress)
+    }
+}
 
 /// `SynthesizedFourBar.drive_map` (the binding's method delegates here).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn drive_map(
+fn drive_map(
     this: &PySynthesizedFourBar,
     py: Python<'_>,
     grid: &Bound<'_, PyTuple>,
     attachment: Option<PyPoint>,
-    limits: Option<PyDesignLimits>,
-    min_transmission_deg: Option<Real>,
-    max_link_ratio: Option<Real>,
-    swing_margin_deg: Real,
-    max_time_ratio: Option<Real>,
-    base_plate: Option<Vec<PyPoint>>,
-    obstacles: Option<Vec<Vec<PyPoint>>>,
-    link_width: Real,
-    travel_samples: Count,
+    args: DriveArgs,
     progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PyDriveMap> {
-    let (g, used) = grid_arg(grid)?;
-    if used != grid.len() {
-        return Err(PyTypeError::new_err(
-            "drive_map takes a grid (or its six numbers); the rest goes by keyword",
-        ));
-    }
-    let args = DriveArgs::new(
-        limits,
-        min_transmission_deg,
-        max_link_ratio,
-        swing_margin_deg,
-        max_time_ratio,
-        base_plate,
-        obstacles,
-        link_width,
-        travel_samples,
-    )?;
+    let what = "drive_map takes a grid (or its six numbers); the rest goes by keyword";
+    let g = grid_alone(grid, what)?;
     let context = args.context(this, attachment, &g)?;
     let watch = g.len() >= WATCH_MIN_SAMPLES / 16;
     PyDriveMap::filled(py, context, this.task(), |ctx, out| {
@@ -951,61 +972,25 @@ pub(crate) fn drive_map(
 }
 
 /// `SynthesizedFourBar.drive` (the binding's method delegates here).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn drive(
+fn drive(
     this: &PySynthesizedFourBar,
     drive_pivot: PyPoint,
     attachment: Option<PyPoint>,
-    limits: Option<PyDesignLimits>,
-    min_transmission_deg: Option<Real>,
-    max_link_ratio: Option<Real>,
-    swing_margin_deg: Real,
-    max_time_ratio: Option<Real>,
-    base_plate: Option<Vec<PyPoint>>,
-    obstacles: Option<Vec<Vec<PyPoint>>>,
-    link_width: Real,
-    travel_samples: Count,
+    args: DriveArgs,
 ) -> PyResult<PyDrive> {
-    let args = DriveArgs::new(
-        limits,
-        min_transmission_deg,
-        max_link_ratio,
-        swing_margin_deg,
-        max_time_ratio,
-        base_plate,
-        obstacles,
-        link_width,
-        travel_samples,
-    )?;
     let ctx = args.context(this, attachment, &point_grid(drive_pivot.0)?)?;
     let d = ctx.drive(drive_pivot.0).py()?;
     Ok(PyDrive::of(d, this.task(), &ctx))
 }
 
 /// `SynthesizedFourBar.classic_drive` (the binding's method delegates here).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn classic_drive(
+fn classic_drive(
     this: &PySynthesizedFourBar,
     attachment: Option<PyPoint>,
     beyond_first: bool,
     drive_transmission_deg: Option<Real>,
-    limits: Option<PyDesignLimits>,
-    min_transmission_deg: Option<Real>,
-    max_link_ratio: Option<Real>,
-    swing_margin_deg: Real,
-    max_time_ratio: Option<Real>,
+    args: DriveArgs,
 ) -> PyResult<PyDrive> {
-    let args = DriveArgs::new(
-        limits,
-        min_transmission_deg,
-        max_link_ratio,
-        swing_margin_deg,
-        max_time_ratio,
-        None,
-        None,
-        Real(0.0),
-        Count(Constraints::DEFAULT_TRAVEL_SAMPLES),
-    )?;
     let a0 = this.inner.driving.center;
     let ctx = args.context(this, attachment, &point_grid(a0)?)?;
     let d = ctx
@@ -1018,38 +1003,14 @@ pub(crate) fn classic_drive(
 }
 
 /// `SynthesizedFourBar.drive_search` (the binding's method delegates here).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn drive_search(
+fn drive_search(
     this: &PySynthesizedFourBar,
     py: Python<'_>,
-    ratios: Option<Vec<Real>>,
-    angles_deg: Option<Vec<Real>>,
-    reach: Real,
-    samples: Count,
-    limits: Option<PyDesignLimits>,
-    min_transmission_deg: Option<Real>,
-    max_link_ratio: Option<Real>,
-    swing_margin_deg: Real,
-    max_time_ratio: Option<Real>,
-    base_plate: Option<Vec<PyPoint>>,
-    obstacles: Option<Vec<Vec<PyPoint>>>,
-    link_width: Real,
-    travel_samples: Count,
+    search: AttachmentSearch,
+    args: DriveArgs,
     rank_by: &str,
     progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Vec<PyDrive>> {
-    let args = DriveArgs::new(
-        limits,
-        min_transmission_deg,
-        max_link_ratio,
-        swing_margin_deg,
-        max_time_ratio,
-        base_plate,
-        obstacles,
-        link_width,
-        travel_samples,
-    )?;
-    let search = search_of(ratios, angles_deg, reach, samples);
     let (l, rank_by) = (this.inner, rank(rank_by)?);
     let found = run(py, true, progress, None, |control| {
         search_drives(
@@ -1071,33 +1032,13 @@ pub(crate) fn drive_search(
 }
 
 /// `SynthesizedFourBar.best_drive` (the binding's method delegates here).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn best_drive(
+fn best_drive(
     this: &PySynthesizedFourBar,
     py: Python<'_>,
-    limits: Option<PyDesignLimits>,
-    min_transmission_deg: Option<Real>,
-    max_link_ratio: Option<Real>,
-    swing_margin_deg: Real,
-    max_time_ratio: Option<Real>,
-    base_plate: Option<Vec<PyPoint>>,
-    obstacles: Option<Vec<Vec<PyPoint>>>,
-    link_width: Real,
-    travel_samples: Count,
+    args: DriveArgs,
     rank_by: &str,
     progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<PyDrive> {
-    let args = DriveArgs::new(
-        limits,
-        min_transmission_deg,
-        max_link_ratio,
-        swing_margin_deg,
-        max_time_ratio,
-        base_plate,
-        obstacles,
-        link_width,
-        travel_samples,
-    )?;
     let (l, rank_by) = (this.inner, rank(rank_by)?);
     let d = run(py, true, progress, None, |control| {
         burmester::design::best_drive(

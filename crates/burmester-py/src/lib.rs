@@ -11,6 +11,7 @@
 use pyo3::prelude::*;
 
 mod atlas;
+mod classes;
 mod conv;
 mod curves;
 mod design;
@@ -19,6 +20,7 @@ mod drive;
 mod errors;
 mod geom;
 mod linkage;
+mod options;
 mod pairs;
 mod run;
 mod search;
@@ -31,9 +33,11 @@ mod _burmester {
     #[pymodule_export]
     use crate::atlas::_atlas_tile;
     #[pymodule_export]
+    use crate::classes::{PyDesignLimits, PyFilemon, PySynthesizedFourBar, PyTask};
+    #[pymodule_export]
     use crate::curves::{PyCoincidencePoint, PyCubic, PyCurveDyad};
     #[pymodule_export]
-    use crate::design::{PyDesignLimits, PyPivot, PySolutionMap};
+    use crate::design::{PyPivot, PySolutionMap};
     #[pymodule_export]
     use crate::drive::{PyDrive, PyDriveMap, PySixBar, unit_time_ratio_crank_rocker};
     #[pymodule_export]
@@ -51,7 +55,7 @@ mod _burmester {
         _design, _design_from_atlas, _design_plan, PyDesign, PyDesignReport, PyNearMiss, PySpace,
     };
     #[pymodule_export]
-    use crate::synthesis::{PyFilemon, PyPole, PySynthesizedFourBar, PyTask};
+    use crate::synthesis::PyPole;
 
     #[pymodule_init]
     fn init(m: &pyo3::Bound<'_, pyo3::types::PyModule>) -> pyo3::PyResult<()> {

@@ -1,19 +1,19 @@
 //! `burmester.PairMap` and `burmester.Pair` (the core's `design::pairs`).
 
-use burmester::{Constraints, Control, Pair, PairContext, Point2, RankBy, Task};
+use burmester::{Control, Pair, PairContext, Point2, RankBy, Task};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 
-use crate::conv::{Count, PyPoint, Real, pt};
+use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask};
+use crate::conv::{Count, PyPoint, Real};
 use crate::curves::PyCurveDyad;
 use crate::design::ranking_is_long;
-use crate::design::{MapOptions, PyDesignLimits, py_map_class};
+use crate::design::{py_map_class, ranked_getters};
 use crate::errors::IntoPy;
-use crate::geom::PyGrid;
+use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
 use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
-use crate::synthesis::{PySynthesizedFourBar, PyTask};
 
 macro_rules! py_pair_map {
     ($($t:tt)*) => {
@@ -22,6 +22,8 @@ macro_rules! py_pair_map {
 }
 
 burmester::solution_map_columns!(py_pair_map);
+
+ranked_getters!(PyPair);
 
 /// A pair of dyads of a pair map with its linkage.
 #[pyclass(frozen, name = "Pair", module = "burmester")]
@@ -80,34 +82,6 @@ impl PyPair {
     fn driven(&self) -> PyCurveDyad {
         self.driven.clone()
     }
-    #[getter]
-    fn index(&self) -> (usize, usize) {
-        self.index
-    }
-    #[getter]
-    fn linkage(&self) -> PySynthesizedFourBar {
-        self.linkage.clone()
-    }
-    #[getter]
-    fn figures(&self) -> crate::linkage::PyLinkageFigures {
-        self.linkage.figures()
-    }
-    #[getter]
-    fn margin(&self) -> f64 {
-        self.margin
-    }
-    #[getter]
-    fn size_ratio(&self) -> f64 {
-        self.linkage.size_ratio()
-    }
-    #[getter]
-    fn score(&self) -> f64 {
-        self.score
-    }
-    #[getter]
-    fn ranked_by(&self) -> &'static str {
-        self.ranked_by.as_str()
-    }
     /// Rebuilds a pair from its task and fields (for pickling): the
     /// linkage from the two dyads exactly as they were (not from their
     /// centers alone, which would round the circle points again).
@@ -156,39 +130,38 @@ impl PyPair {
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other.cast::<PyPair>().is_ok_and(|o| {
             let o = o.get();
-            o.driving == self.driving
-                && o.driven == self.driven
-                && o.index == self.index
-                && o.linkage == self.linkage
-                && o.margin.to_bits() == self.margin.to_bits()
-                && o.score.to_bits() == self.score.to_bits()
-                && o.ranked_by == self.ranked_by
+            o.driving == self.driving && o.driven == self.driven && self.same_ranking(o)
         })
     }
     fn __repr__(&self) -> String {
-        let f = &self.linkage.inner.figures;
         let (a, c) = (self.driving.center, self.driven.center);
+        let index = self.index;
         format!(
-            "<Pair driving=({:.6}, {:.6}) driven=({:.6}, {:.6}) index={:?} {} \
-             min_transmission_deg={} size_ratio={:.3} by {}>",
+            "<Pair driving=({:.6}, {:.6}) driven=({:.6}, {:.6}) index={index:?} {}>",
             a.0,
             a.1,
             c.0,
             c.1,
-            self.index,
-            f.grashof,
-            if f.min_transmission.is_nan() {
-                "None".to_owned()
-            } else {
-                format!("{:.3}", f.min_transmission.to_degrees())
-            },
-            self.linkage.size_ratio(),
-            self.ranked_by.as_str()
+            self.ranked_repr()
         )
     }
 }
 
 impl PyPairMap {
+    /// The arguments of `_from_state` (for pickling).
+    fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        let constraints = constraint_state(&self.context.constraints);
+        let columns = self.column_dict(py)?;
+        (
+            self.task(),
+            self.shape(),
+            self.limits(),
+            constraints,
+            columns,
+        )
+            .into_pyobject(py)
+    }
+
     /// The `k` best pairs by `rank_by`, reading the NumPy columns in place.
     fn ranked<'py>(
         &self,
@@ -245,37 +218,6 @@ fn dyads<'py>(
 
 #[pymethods]
 impl PyPairMap {
-    /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
-    /// None without matplotlib.
-    fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        crate::display::repr_png(slf.as_any())
-    }
-
-    /// The names of the Grashof codes, by code.
-    #[classattr]
-    fn grashof_names() -> Vec<&'static str> {
-        burmester::Grashof::ALL.iter().map(|g| g.as_str()).collect()
-    }
-    /// The names of the columns, in order.
-    #[classattr]
-    fn columns() -> Vec<&'static str> {
-        burmester::design::Columns::NAMES.to_vec()
-    }
-    #[getter]
-    fn grid(&self) -> PyGrid {
-        PyGrid {
-            inner: self.context.grid,
-        }
-    }
-    #[getter]
-    fn extent(&self) -> (f64, f64, f64, f64) {
-        let v = self.context.grid.viewport();
-        (v.xmin, v.xmax, v.ymin, v.ymax)
-    }
-    #[getter]
-    fn shape(&self) -> (usize, usize) {
-        self.context.shape()
-    }
     #[getter]
     fn driving_dyads<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         dyads(py, &self.context.driving)
@@ -283,18 +225,6 @@ impl PyPairMap {
     #[getter]
     fn driven_dyads<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         dyads(py, &self.context.driven)
-    }
-    #[getter]
-    fn task(&self) -> PyTask {
-        PyTask {
-            inner: self.context.task,
-        }
-    }
-    #[getter]
-    fn limits(&self) -> PyDesignLimits {
-        PyDesignLimits {
-            inner: self.context.limits,
-        }
     }
     fn linkage(&self, j: Count, i: Count) -> PyResult<PySynthesizedFourBar> {
         let k = self.index(j, i)?;
@@ -327,9 +257,6 @@ impl PyPairMap {
         let rank_by = rank_by.parse::<RankBy>().py()?;
         self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
     }
-    fn pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
-    }
 
     /// Rebuilds a map from its state (for pickling): the samples are
     /// recomputed from the task (the same bits), the columns copied.
@@ -342,14 +269,7 @@ impl PyPairMap {
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
         columns: &Bound<'_, PyDict>,
     ) -> PyResult<Self> {
-        let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<_>>();
-        let constraints = Constraints {
-            base_plate: constraints.0.map(pts),
-            obstacles: constraints.1.into_iter().map(pts).collect(),
-            link_width: constraints.2,
-            travel_samples: constraints.3,
-            envelope: None,
-        };
+        let constraints = constraints_of(constraints);
         let (ny, nx) = (shape.0.0, shape.1.0);
         let context = py
             .detach(|| task.inner.pair_context(nx, ny, &limits.inner, &constraints))
@@ -357,37 +277,8 @@ impl PyPairMap {
         Self::from_columns(py, context, (ny, nx), columns)
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let c = &self.context;
-        let pts = |v: &[Point2<f64>]| v.iter().map(|p| pt(*p)).collect::<Vec<_>>();
-        let constraints = (
-            c.constraints.base_plate.as_deref().map(pts),
-            c.constraints
-                .obstacles
-                .iter()
-                .map(|o| pts(o))
-                .collect::<Vec<_>>(),
-            c.constraints.link_width,
-            c.constraints.travel_samples,
-        );
-        let args = (
-            self.task(),
-            self.shape(),
-            self.limits(),
-            constraints,
-            self.column_dict(py)?,
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PyPairMap>().getattr("_from_state")?, args))
-    }
-
     fn __eq__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> bool {
-        other
-            .cast::<PyPairMap>()
-            .is_ok_and(|o| o.get().context == self.context && self.same_columns(py, o.get()))
+        self.equals(py, other)
     }
 
     fn __repr__(&self) -> String {
@@ -396,8 +287,30 @@ impl PyPairMap {
     }
 }
 
+/// The pair map of `Task` (four poses).
+#[pymethods]
+impl PyTask {
+    /// Four poses: the pair map (see the stub).
+    #[pyo3(signature = (n_driving = Count(256), n_driven = None, *, progress = None, **options),
+        text_signature = "($self, n_driving=256, n_driven=None, *, limits=None, \
+        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
+        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+    fn pair_map(
+        &self,
+        py: Python<'_>,
+        n_driving: Count,
+        n_driven: Option<Count>,
+        progress: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyPairMap> {
+        let opts = MapOptions::from_kwargs("Task.pair_map", options, Keys::MAP)?;
+        let n_driven = n_driven.map_or(n_driving.0, |n| n.0);
+        pair_map(py, self.inner, n_driving.0, n_driven, opts, progress)
+    }
+}
+
 /// `Task.pair_map`.
-pub(crate) fn pair_map(
+fn pair_map(
     py: Python<'_>,
     task: Task,
     n_driving: usize,

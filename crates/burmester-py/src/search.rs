@@ -17,13 +17,12 @@ use pyo3::exceptions::{PyIndexError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
+use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask, dyad_tuple};
 use crate::conv::{Count, PyPoint, Real, pt};
-use crate::design::PyDesignLimits;
 use crate::drive::PyDrive;
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::run::run;
-use crate::synthesis::{PySynthesizedFourBar, PyTask, dyad_tuple};
 
 type Xy = (f64, f64);
 type Box4 = (f64, f64, f64, f64);
@@ -228,6 +227,32 @@ fn linkage_of(
     .py()
 }
 
+/// The state readers a found linkage shares (`Design`, `NearMiss`): a
+/// `#[pymethods]` block for `$cls`, whose `task` and `inner` (with
+/// `linkage` and `size_ratio`) they read.
+macro_rules! found_linkage_getters {
+    ($cls:ident) => {
+        #[pymethods]
+        impl $cls {
+            #[getter]
+            fn linkage(&self) -> PySynthesizedFourBar {
+                PySynthesizedFourBar::new(self.task, self.inner.linkage)
+            }
+            #[getter]
+            fn figures(&self) -> crate::linkage::PyLinkageFigures {
+                self.linkage().figures()
+            }
+            #[getter]
+            fn size_ratio(&self) -> f64 {
+                self.inner.size_ratio
+            }
+        }
+    };
+}
+
+found_linkage_getters!(PyDesign);
+found_linkage_getters!(PyNearMiss);
+
 /// One answer of `burmester.design`.
 #[pyclass(frozen, from_py_object, name = "Design", module = "burmester")]
 #[derive(Clone)]
@@ -265,20 +290,8 @@ impl PyDesign {
 #[pymethods]
 impl PyDesign {
     #[getter]
-    fn linkage(&self) -> PySynthesizedFourBar {
-        PySynthesizedFourBar::new(self.task, self.inner.linkage)
-    }
-    #[getter]
-    fn figures(&self) -> crate::linkage::PyLinkageFigures {
-        self.linkage().figures()
-    }
-    #[getter]
     fn score(&self) -> f64 {
         self.inner.score
-    }
-    #[getter]
-    fn size_ratio(&self) -> f64 {
-        self.inner.size_ratio
     }
     #[getter]
     fn ranked_by(&self) -> &'static str {
@@ -427,18 +440,6 @@ pub struct PyNearMiss {
 
 #[pymethods]
 impl PyNearMiss {
-    #[getter]
-    fn linkage(&self) -> PySynthesizedFourBar {
-        PySynthesizedFourBar::new(self.task, self.inner.linkage)
-    }
-    #[getter]
-    fn figures(&self) -> crate::linkage::PyLinkageFigures {
-        self.linkage().figures()
-    }
-    #[getter]
-    fn size_ratio(&self) -> f64 {
-        self.inner.size_ratio
-    }
     #[getter]
     fn misses(&self) -> Vec<&'static str> {
         self.inner.misses.iter().map(|l| l.as_str()).collect()

@@ -1,19 +1,17 @@
 //! `burmester.Task`, `Pole`, `Filemon` and `SynthesizedFourBar` (the core's
 //! `synthesis`).
 
-use burmester::{
-    CircleOrLine, Cremona, Dyad, Filemon, Line, Point2, Pole, Pose, SynthesizedFourBar, Task,
-};
+use burmester::{CircleOrLine, Cremona, Line, Point2, Pole, Pose, Task};
 use numpy::{PyArray2, PyArrayDyn};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PySequence, PyTuple};
 
+use crate::classes::{PyFilemon, PySynthesizedFourBar, PyTask, dyad_tuple};
 use crate::conv::{
     Count, FloatArray, PyPoint, Real, points, pt, slice_mut, to_numpy, writer, zeros,
 };
 use crate::curves::{self, PyCoincidencePoint, PyCubic, PyCurveDyad};
-use crate::design::MapOptions;
 use crate::errors::IntoPy;
 use crate::geom::{PyConic, grid_arg, vec2};
 use crate::linkage::{PyFourBar, PyLinkageFigures};
@@ -42,11 +40,6 @@ fn circle_dict<'py>(py: Python<'py>, c: CircleOrLine) -> PyResult<Bound<'py, PyD
 
 fn line_tuple(l: &Line) -> (Xy, Xy) {
     (pt(l.point), vec2(l.direction))
-}
-
-/// `(center, circle)` of a dyad for Python.
-pub(crate) fn dyad_tuple(d: &Dyad) -> (Xy, Xy) {
-    (pt(d.center), pt(d.circle))
 }
 
 /// Maps an array of points with `f`, returning the mapped points (NaN where
@@ -213,13 +206,6 @@ impl PyPole {
             _ => format!("Pole(({i}, {j}))"),
         }
     }
-}
-
-/// Three to five poses of the coupler.
-#[pyclass(frozen, eq, from_py_object, name = "Task", module = "burmester")]
-#[derive(Clone, PartialEq)]
-pub struct PyTask {
-    pub(crate) inner: Task,
 }
 
 impl PyTask {
@@ -563,84 +549,6 @@ impl PyTask {
             .py()
     }
 
-    #[pyo3(signature = (driving_center, *grid, limits = None, min_transmission_deg = None,
-        max_link_ratio = None, input = None, base_plate = None, obstacles = None,
-        link_width = Real(0.0), travel_samples = Count(64), progress = None),
-        text_signature = "($self, driving_center, *grid, limits=None, \
-        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn driven_solution_map(
-        &self,
-        py: Python<'_>,
-        driving_center: PyPoint,
-        grid: &Bound<'_, PyTuple>,
-        limits: Option<crate::design::PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        input: Option<&str>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<crate::design::PySolutionMap> {
-        let (g, used) = grid_arg(grid)?;
-        if used != grid.len() {
-            return Err(PyTypeError::new_err(
-                "driven_solution_map takes the driving center and a grid (or its six numbers)",
-            ));
-        }
-        let opts = MapOptions::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            input,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )?;
-        crate::design::driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
-    }
-
-    /// Four poses: the pair map (see the stub).
-    #[pyo3(signature = (n_driving = Count(256), n_driven = None, *, limits = None,
-        min_transmission_deg = None, max_link_ratio = None, input = None, base_plate = None,
-        obstacles = None, link_width = Real(0.0), travel_samples = Count(64), progress = None),
-        text_signature = "($self, n_driving=256, n_driven=None, *, limits=None, \
-        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn pair_map(
-        &self,
-        py: Python<'_>,
-        n_driving: Count,
-        n_driven: Option<Count>,
-        limits: Option<crate::design::PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        input: Option<&str>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<crate::pairs::PyPairMap> {
-        let opts = MapOptions::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            input,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )?;
-        let n_driven = n_driven.map_or(n_driving.0, |n| n.0);
-        crate::pairs::pair_map(py, self.inner, n_driving.0, n_driven, opts, progress)
-    }
-
     fn line_to_conic(&self, point: PyPoint, direction: PyPoint) -> PyResult<PyConic> {
         self.inner
             .line_to_conic(&Line {
@@ -665,13 +573,6 @@ impl PyTask {
             .collect();
         format!("Task([{}])", p.join(", "))
     }
-}
-
-/// Filemon's construction for a driven dyad, and its transformed conics.
-#[pyclass(frozen, eq, name = "Filemon", module = "burmester")]
-#[derive(Clone, PartialEq)]
-pub struct PyFilemon {
-    pub(crate) inner: Filemon,
 }
 
 #[pymethods]
@@ -826,46 +727,6 @@ impl PyFilemon {
         self.inner.margin(center.0).py()
     }
 
-    #[pyo3(signature = (*grid, limits = None, min_transmission_deg = None,
-        max_link_ratio = None, input = None, base_plate = None, obstacles = None,
-        link_width = Real(0.0), travel_samples = Count(64), progress = None),
-        text_signature = "($self, *grid, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, input=None, base_plate=None, obstacles=None, link_width=0.0, \
-        travel_samples=64, progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn solution_map(
-        &self,
-        py: Python<'_>,
-        grid: &Bound<'_, PyTuple>,
-        limits: Option<crate::design::PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        input: Option<&str>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<crate::design::PySolutionMap> {
-        let (g, used) = grid_arg(grid)?;
-        if used != grid.len() {
-            return Err(PyTypeError::new_err(
-                "solution_map takes a grid (or its six numbers); the limits go by keyword",
-            ));
-        }
-        let opts = MapOptions::new(
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            input,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )?;
-        crate::design::solution_map(py, self.inner, g, opts, progress)
-    }
-
     fn four_bar(&self, driving_center: PyPoint) -> PyResult<PySynthesizedFourBar> {
         self.inner
             .four_bar(driving_center.0)
@@ -896,44 +757,6 @@ impl PyFilemon {
 
 fn method(s: &str) -> PyResult<burmester::Method> {
     s.parse::<burmester::Method>().py()
-}
-
-/// A four-bar built from a driving and a driven dyad of a task.
-#[pyclass(
-    frozen,
-    from_py_object,
-    name = "SynthesizedFourBar",
-    module = "burmester"
-)]
-#[derive(Clone)]
-pub struct PySynthesizedFourBar {
-    pub(crate) inner: SynthesizedFourBar,
-    /// The task it was built for (for pickling).
-    task: Task,
-}
-
-impl PySynthesizedFourBar {
-    pub(crate) fn new(task: Task, inner: SynthesizedFourBar) -> Self {
-        PySynthesizedFourBar { inner, task }
-    }
-
-    /// The task it was built for.
-    pub(crate) fn task(&self) -> Task {
-        self.task
-    }
-}
-
-/// Equal when built from the same task and dyads, bit for bit: the linkage
-/// and its figures are a function of them (figures that are NaN, as the
-/// transmission of a linkage without a travel, would make a field-wise
-/// comparison say a linkage differs from itself).
-impl PartialEq for PySynthesizedFourBar {
-    fn eq(&self, other: &Self) -> bool {
-        let bits = |d: &Dyad| [d.center.x, d.center.y, d.circle.x, d.circle.y].map(f64::to_bits);
-        self.task == other.task
-            && bits(&self.inner.driving) == bits(&other.inner.driving)
-            && bits(&self.inner.driven) == bits(&other.inner.driven)
-    }
 }
 
 #[pymethods]
@@ -1046,209 +869,6 @@ impl PySynthesizedFourBar {
         Ok((p.position.x, p.position.y, p.angle))
     }
 
-    // Driving it from a motor by an added dyad (the Watt II six-bar): the
-    // signatures here, the work in `crate::drive`.
-
-    #[pyo3(signature = (*grid, attachment = None, limits = None, min_transmission_deg = None,
-        max_link_ratio = None, swing_margin_deg = Real(0.0), max_time_ratio = None,
-        base_plate = None, obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
-        progress = None),
-        text_signature = "($self, *grid, attachment=None, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn drive_map(
-        &self,
-        py: Python<'_>,
-        grid: &Bound<'_, PyTuple>,
-        attachment: Option<PyPoint>,
-        limits: Option<crate::design::PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Option<Real>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<crate::drive::PyDriveMap> {
-        crate::drive::drive_map(
-            self,
-            py,
-            grid,
-            attachment,
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-            progress,
-        )
-    }
-
-    #[pyo3(signature = (drive_pivot, attachment = None, *, limits = None,
-        min_transmission_deg = None, max_link_ratio = None, swing_margin_deg = Real(0.0),
-        max_time_ratio = None, base_plate = None, obstacles = None,
-        link_width = Real(0.0), travel_samples = Count(64)),
-        text_signature = "($self, drive_pivot, attachment=None, *, limits=None, \
-        min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
-        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, travel_samples=64)")]
-    #[allow(clippy::too_many_arguments)]
-    fn drive(
-        &self,
-        drive_pivot: PyPoint,
-        attachment: Option<PyPoint>,
-        limits: Option<crate::design::PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Option<Real>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-    ) -> PyResult<crate::drive::PyDrive> {
-        crate::drive::drive(
-            self,
-            drive_pivot,
-            attachment,
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-        )
-    }
-
-    #[pyo3(signature = (attachment = None, *, beyond_first = true, drive_transmission_deg = None,
-        limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = None),
-        text_signature = "($self, attachment=None, *, beyond_first=True, \
-        drive_transmission_deg=None, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn classic_drive(
-        &self,
-        attachment: Option<PyPoint>,
-        beyond_first: bool,
-        drive_transmission_deg: Option<Real>,
-        limits: Option<crate::design::PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Option<Real>,
-    ) -> PyResult<crate::drive::PyDrive> {
-        crate::drive::classic_drive(
-            self,
-            attachment,
-            beyond_first,
-            drive_transmission_deg,
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-        )
-    }
-
-    #[pyo3(signature = (*, ratios = None, angles_deg = None, reach = Real(4.0),
-        samples = Count(96), limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = None, base_plate = None,
-        obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
-        rank_by = "balanced", progress = None),
-        text_signature = "($self, *, ratios=None, angles_deg=None, reach=4.0, samples=96, \
-        limits=None, min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
-        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, \
-        travel_samples=64, rank_by='balanced', progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn drive_search(
-        &self,
-        py: Python<'_>,
-        ratios: Option<Vec<Real>>,
-        angles_deg: Option<Vec<Real>>,
-        reach: Real,
-        samples: Count,
-        limits: Option<crate::design::PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Option<Real>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        rank_by: &str,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<Vec<crate::drive::PyDrive>> {
-        crate::drive::drive_search(
-            self,
-            py,
-            ratios,
-            angles_deg,
-            reach,
-            samples,
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-            rank_by,
-            progress,
-        )
-    }
-
-    #[pyo3(signature = (*, limits = None, min_transmission_deg = None, max_link_ratio = None,
-        swing_margin_deg = Real(0.0), max_time_ratio = None, base_plate = None,
-        obstacles = None, link_width = Real(0.0), travel_samples = Count(64),
-        rank_by = "balanced", progress = None),
-        text_signature = "($self, *, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, rank_by='balanced', progress=None)")]
-    #[allow(clippy::too_many_arguments)]
-    fn best_drive(
-        &self,
-        py: Python<'_>,
-        limits: Option<crate::design::PyDesignLimits>,
-        min_transmission_deg: Option<Real>,
-        max_link_ratio: Option<Real>,
-        swing_margin_deg: Real,
-        max_time_ratio: Option<Real>,
-        base_plate: Option<Vec<PyPoint>>,
-        obstacles: Option<Vec<Vec<PyPoint>>>,
-        link_width: Real,
-        travel_samples: Count,
-        rank_by: &str,
-        progress: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<crate::drive::PyDrive> {
-        crate::drive::best_drive(
-            self,
-            py,
-            limits,
-            min_transmission_deg,
-            max_link_ratio,
-            swing_margin_deg,
-            max_time_ratio,
-            base_plate,
-            obstacles,
-            link_width,
-            travel_samples,
-            rank_by,
-            progress,
-        )
-    }
     /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
     /// None without matplotlib.
     fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {

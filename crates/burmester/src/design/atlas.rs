@@ -35,8 +35,9 @@ use core::sync::atomic::{AtomicUsize, Ordering};
 use nalgebra::Point2;
 use rayon::prelude::*;
 
-use crate::design::kernel::{CosBand, DrivingKernel, RowOut, RowPre};
-use crate::design::map::Sampler;
+use crate::design::judge::Sampler;
+use crate::design::kernel::{self, AtlasAsk, CosBand, DrivingRows, RowOut, RowPre, sample_score};
+use crate::design::options::CheckedOptions;
 use crate::design::rank::tie_order;
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
@@ -219,7 +220,8 @@ impl Task {
             }
             .into());
         }
-        let sampler = Sampler::new(self, limits, constraints)?.with_control(control);
+        let options = CheckedOptions::new(limits, constraints)?;
+        let sampler = Sampler::new(self, &options)?.with_control(control);
         let nx = driven.nx();
         let cells_in_all = (rows.end - rows.start) * nx;
         let mut cells = try_vec("a pivot atlas", cells_in_all, AtlasCell::INVALID)?;
@@ -231,7 +233,7 @@ impl Task {
         let done = AtomicUsize::new(0);
         // The total at once, so that a follower sees the work begin.
         control.report(0, total);
-        let xs = DrivingKernel::padded_xs(driving)?;
+        let xs = kernel::padded_xs(driving)?;
         let failed: std::sync::Mutex<Option<Error>> = std::sync::Mutex::new(None);
         let fail = |e: Error| {
             if let Ok(mut f) = failed.lock() {
@@ -282,7 +284,7 @@ const CHUNK: usize = 16;
 
 /// A worker's buffers for [`atlas_chunk`].
 struct Scratch<'a> {
-    /// The driving grid's padded abscissae (`DrivingKernel::padded_xs`).
+    /// The driving grid's padded abscissae (`kernel::padded_xs`).
     xs: &'a [f64],
     /// The groups of a row some center of the chunk needs.
     union: Vec<bool>,
@@ -306,10 +308,8 @@ impl<'a> Scratch<'a> {
 /// The reduction of one driven center as the driving rows go by.
 struct Cell<'a> {
     filemon: &'a Filemon,
-    driven: crate::synthesis::Dyad,
-    c: [Point2<f64>; 3],
     branch: BranchRows<'a>,
-    kernel: Option<DrivingKernel<'a>>,
+    kernel: Box<dyn DrivingRows + 'a>,
     /// The branch flags of the current row.
     row: Vec<bool>,
     /// Whether the current row has a branch-free sample.
@@ -372,10 +372,8 @@ fn atlas_chunk(
             m,
             Cell {
                 filemon,
-                driven,
-                c,
                 branch,
-                kernel: DrivingKernel::new(sampler, driven, &c),
+                kernel: kernel::for_driven(sampler, driven, &c),
                 row: try_vec("a driving row", driving.nx(), false)?,
                 active: false,
                 top: f64::NEG_INFINITY,
@@ -420,15 +418,13 @@ fn atlas_chunk(
         let y = driving.y(j);
         // Every center's kernel has the task's constants: any one fills
         // the driving candidates' lanes.
-        if let Some(k) = live.iter().find_map(|(_, c)| c.kernel.as_ref()) {
-            k.pre_row(y, xs, union, pre);
+        if let Some((_, c)) = live.first() {
+            c.kernel.pre_row(y, xs, union, pre);
         }
         tick(live.iter().filter(|(_, c)| !c.active).count());
         for (_, cell) in live.iter_mut().filter(|(_, c)| c.active) {
-            if let Some(k) = &cell.kernel {
-                k.row_where(y, xs, &cell.row, pre, out);
-            }
-            cell.take_row(sampler, driving, j, nx, out, &limit, rank_by, control)?;
+            cell.kernel.row_where(y, xs, &cell.row, pre, out);
+            cell.take_row(driving, j, nx, out, &limit, rank_by, control)?;
             if control.is_cancelled() {
                 // A row cut short: not counted.
                 return Ok(());
@@ -447,7 +443,6 @@ impl Cell<'_> {
     #[allow(clippy::too_many_arguments)]
     fn take_row(
         &mut self,
-        sampler: &Sampler<'_>,
         driving: &Grid,
         j: usize,
         nx: usize,
@@ -467,26 +462,12 @@ impl Cell<'_> {
             // Acceptable samples with their score where it may reach the
             // run of the best (by transmission: elsewhere no `acos` is
             // taken).
-            let reach = &self.reach;
-            let seen = match &self.kernel {
-                Some(k) => k.judge_for_atlas(out, i, p, limit).map(|a| {
-                    a.map(|w| {
-                        if by_transmission {
-                            reach
-                                .may_reach(w)
-                                .then(|| f64::from(crate::simd::acos1(w) as f32))
-                        } else {
-                            let (mu, ratio, size) = k.ranked_at(out, i, p, w);
-                            rank_by.score(f64::from(mu), f64::from(size), f64::from(ratio))
-                        }
-                    })
-                }),
-                None => {
-                    let s = sampler.driving_sample(p, self.driven, &self.c, true);
-                    s.valid
-                        .then_some(s.acceptable.then_some(sample_score(&s, rank_by)))
-                }
+            let ask = AtlasAsk {
+                limit,
+                rank_by,
+                reach: &self.reach,
             };
+            let seen = self.kernel.atlas_sample(out, i, p, &ask);
             let Some(acceptable) = seen else {
                 continue;
             };
@@ -536,16 +517,6 @@ impl Cell<'_> {
         }
         Ok(cell)
     }
-}
-
-/// The score of a sample by `rank_by`, from its columns as the map's
-/// ranking reads them (`None` where NaN).
-fn sample_score(s: &crate::design::map::Sample, rank_by: RankBy) -> Option<f64> {
-    rank_by.score(
-        f64::from(s.min_transmission_rad),
-        f64::from(s.size_ratio),
-        f64::from(s.link_ratio),
-    )
 }
 
 /// Checks that a ranking has a score (not the Pareto front or the margin).

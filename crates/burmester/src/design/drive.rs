@@ -81,13 +81,13 @@ use core::f64::consts::{FRAC_PI_2, PI, TAU};
 use nalgebra::{Point2, Vector2};
 use pulp::{Arch, Simd, WithSimd};
 
+use crate::design::columns::map_column_types;
 use crate::design::constraints::Prepared;
 use crate::design::rank::{RankColumns, rank_samples, signed_distances_with, tie_order};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::{Control, Rows, run_blocks_polled, run_blocks_with};
 use crate::error::{
     DegenerateError, DriveError, InvalidInput, Result, count_in, finite_point, in_range,
-    try_zeroed_vec,
 };
 use crate::geom::{Grid, PerPose, cross, unit, wrap_angle};
 use crate::linkage::grashof::{fmax, fmin};
@@ -130,68 +130,23 @@ macro_rules! drive_map_columns {
 }
 
 macro_rules! define_drive_columns {
+    ($($t:tt)*) => {
+        map_column_types!(
+            DriveColumns,
+            DriveColumnsOut,
+            DriveSample,
+            "a drive map",
+            "The columns of a drive map: one value per grid sample, row-major.",
+            "A drive map's columns to write: one slice per column, one value per grid \
+             sample, row-major.";
+            $($t)*
+        );
+        define_drive_rows! { $($t)* }
+    };
+}
+
+macro_rules! define_drive_rows {
     ($($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
-        /// The columns of a drive map: one value per grid sample, row-major.
-        #[derive(Debug, Clone, PartialEq)]
-        pub struct DriveColumns {
-            $($(#[$doc])* pub $name: Vec<$ty>,)*
-        }
-
-        impl DriveColumns {
-            /// The names of the columns, in order.
-            pub const NAMES: &'static [&'static str] = &[$(stringify!($name)),*];
-
-            /// Room for `n` samples, zeroed (every sample is written).
-            fn for_overwrite(n: usize) -> Result<Self> {
-                Ok(DriveColumns {
-                    $($name: try_zeroed_vec("a drive map", n)?,)*
-                })
-            }
-
-            /// Every column borrowed for writing (to fill again with
-            /// [`DriveContext::map_into`], without new pages).
-            pub fn as_out(&mut self) -> DriveColumnsOut<'_> {
-                DriveColumnsOut {
-                    $($name: &mut self.$name,)*
-                }
-            }
-        }
-
-        /// A drive map's columns to write: one slice per column, one value
-        /// per grid sample, row-major.
-        #[derive(Debug)]
-        pub struct DriveColumnsOut<'a> {
-            $($(#[$doc])* pub $name: &'a mut [$ty],)*
-        }
-
-        impl<'a> DriveColumnsOut<'a> {
-            fn check_len(&self, n: usize) -> Result<()> {
-                $(
-                    if self.$name.len() != n {
-                        return Err(InvalidInput::LengthMismatch {
-                            name: concat!("column ", stringify!($name)),
-                            expected: n,
-                            found: self.$name.len(),
-                        }
-                        .into());
-                    }
-                )*
-                Ok(())
-            }
-        }
-
-        /// One sample's values.
-        #[derive(Clone, Copy)]
-        struct DriveSample {
-            $($name: $ty,)*
-        }
-
-        impl DriveSample {
-            const INVALID: DriveSample = DriveSample {
-                $($name: $invalid,)*
-            };
-        }
-
         impl<'a> Rows for DriveColumnsOut<'a> {
             fn split_rows(self, rows: usize) -> (Self, Self) {
                 // `rows` is in units of `nx` samples: the caller passes

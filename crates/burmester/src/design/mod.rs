@@ -43,24 +43,28 @@
 //! II six-bar, [`SixBar`](crate::SixBar)) and ranks them the same way.
 
 pub mod atlas;
+mod columns;
 mod constraints;
 pub mod drive;
+mod judge;
 mod kernel;
 mod limits;
 mod map;
+mod options;
 pub mod pairs;
 mod rank;
 pub mod search;
 mod space;
 
 pub use atlas::{AtlasBest, AtlasCell, PivotAtlas};
+pub use columns::{Columns, ColumnsOut};
 pub use constraints::Constraints;
 pub use drive::{
     AttachmentSearch, CrankRockerDesign, Drive, DriveColumns, DriveColumnsOut, DriveContext,
     DriveFigures, DriveMap, DriveOptions, DriveRankColumns, DriveSearch, best_drive, search_drives,
 };
 pub use limits::{DesignLimits, InputRequirement};
-pub use map::{Columns, ColumnsOut, MapContext, SolutionMap, Varying};
+pub use map::{MapContext, SolutionMap, Varying};
 pub use pairs::{Pair, PairContext, PairMap};
 pub use rank::{Pivot, RankBy, RankColumns};
 pub use search::{Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, SearchPoint};

@@ -31,13 +31,13 @@
 //! [`Task::four_bar`]. A pair of a dyad with itself (the same parameter on
 //! both axes) is not a linkage (its ground has no length): invalid.
 
-use nalgebra::Point2;
-
-use crate::design::map::{Columns, ColumnsOut, Judge, Sample, fill_rows};
-use crate::design::rank::{Nearest, RankColumns, Separation, rank_samples, signed_distances_with};
+use crate::design::columns::{Columns, ColumnsOut, Sample};
+use crate::design::judge::{Judge, fill_rows};
+use crate::design::options::CheckedOptions;
+use crate::design::rank::{Offer, RankColumns, RankedContext, best_with, signed_distances_with};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
-use crate::error::{InvalidInput, Result, in_range, try_collect, try_push};
+use crate::error::{InvalidInput, Result, try_collect};
 use crate::geom::Grid;
 use crate::linkage::figures::figures;
 use crate::synthesis::curves::{CurveDyad, FourPositions};
@@ -252,7 +252,7 @@ impl Task {
             }
             .into());
         }
-        Judge::new(self, limits, constraints)?;
+        Judge::new(self, &CheckedOptions::new(limits, constraints)?)?;
         let four = FourPositions::new(self.poses())?;
         let length = four.parameter_length()?;
         // Poses 1 and 2 nearly alike leave the crank almost no rotation
@@ -339,7 +339,8 @@ impl PairContext {
         }
         out.check_len(self.grid.len())?;
         let (n_driving, n_driven) = (self.driving.len(), self.driven.len());
-        let judge = Judge::new(&self.task, &self.limits, &self.constraints)?.with_control(control);
+        let options = CheckedOptions::new(&self.limits, &self.constraints)?;
+        let judge = Judge::new(&self.task, &options)?.with_control(control);
         // The moving pivots at the four poses, once per sample of each axis.
         let motion = self.task.motion();
         let pivots = |d: &Option<CurveDyad>| {
@@ -465,83 +466,42 @@ impl PairContext {
         columns: RankColumns<'_>,
         control: &Control<'_>,
     ) -> Result<Vec<Pair>> {
-        let sep = match min_separation {
-            Some(s) => in_range("min_separation", s, 0.0, f64::MAX, "")?,
-            None => 0.02 * self.grid.viewport().diagonal(),
-        };
-        let n = self.grid.len();
-        columns.check_len(n)?;
-        // Every margin for the margin ranking (a distance transform), a
-        // search around each candidate for the others.
-        let all = if rank_by == RankBy::Margin || k > crate::design::rank::MANY_MARGINS {
-            Some(self.margins_with(columns.branch_free, control)?)
-        } else {
-            None
-        };
-        let nearest = Nearest::new(&self.grid, columns.branch_free);
-        let margin_of = |s: usize| match &all {
-            Some(m) => m[s],
-            None => nearest.get(s),
-        };
-        let span = self.task.span();
-        let nx = self.grid.nx();
-        let at = |s: usize| Point2::new(self.grid.x(s % nx), self.grid.y(s / nx));
-        let mut apart = Separation::new(&self.grid, sep);
-        let mut out: Vec<Pair> = Vec::new();
-        let mut failed = None;
-        rank_samples(
-            n,
-            rank_by,
-            &columns,
-            &margin_of,
-            k,
-            control,
-            |s, margin, score| {
-                if out.len() >= k {
-                    return false;
-                }
-                let p = at(s);
-                if !apart.is_clear(p) {
-                    return true;
-                }
-                if let (Some((driving, driven)), Ok(linkage)) = (self.dyads(s), self.linkage(s)) {
-                    let margin = margin.unwrap_or_else(|| margin_of(s));
-                    let pair = Pair {
-                        driving,
-                        driven,
-                        index: (s / nx, s % nx),
-                        linkage,
-                        margin,
-                        size_ratio: linkage.size() / span,
-                        score,
-                        ranked_by: rank_by,
-                    };
-                    if let Err(e) =
-                        try_push(&mut out, "the best pairs", pair).and_then(|()| apart.add(p))
-                    {
-                        failed = Some(e);
-                        return false;
-                    }
-                }
-                out.len() < k
-            },
-        )?;
-        failed.map_or(Ok(out), Err)
+        best_with(self, k, min_separation, rank_by, columns, control)
+    }
+}
+
+impl RankedContext for PairContext {
+    type Item = Pair;
+    const WHAT: &'static str = "the best pairs";
+
+    fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    fn filemon(&self) -> Option<Option<crate::synthesis::three::Filemon>> {
+        None
+    }
+
+    fn item(&self, o: &Offer<'_>) -> Option<Pair> {
+        let ((driving, driven), linkage) = (self.dyads(o.s)?, self.linkage(o.s).ok()?);
+        let (index, margin, size_ratio) = o.placed(self.grid.nx(), &linkage, self.task.span());
+        Some(Pair {
+            driving,
+            driven,
+            index,
+            linkage,
+            margin,
+            size_ratio,
+            score: o.score,
+            ranked_by: o.rank_by,
+        })
     }
 }
 
 impl PairMap {
     /// The columns a ranking reads.
     pub fn rank_columns(&self) -> RankColumns<'_> {
-        let c = &self.columns;
-        RankColumns {
-            valid: &c.valid,
-            branch_free: &c.branch_free,
-            min_transmission_rad: &c.min_transmission_rad,
-            link_ratio: &c.link_ratio,
-            size_ratio: &c.size_ratio,
-            acceptable: &c.acceptable,
-        }
+        self.columns.rank_columns()
     }
 
     /// The linkage of pair `(j, i)`: driven sample `j`, driving sample `i`.

@@ -7,7 +7,7 @@ use std::collections::{BinaryHeap, HashMap};
 
 use nalgebra::Point2;
 
-use crate::design::{MapContext, SolutionMap, Varying};
+use crate::design::{Columns, MapContext, SolutionMap, Varying};
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result, in_range, out_of_memory, try_push, try_vec};
 use crate::geom::Grid;
@@ -167,18 +167,24 @@ impl RankColumns<'_> {
     }
 }
 
+impl Columns {
+    /// The columns a ranking reads.
+    pub fn rank_columns(&self) -> RankColumns<'_> {
+        RankColumns {
+            valid: &self.valid,
+            branch_free: &self.branch_free,
+            min_transmission_rad: &self.min_transmission_rad,
+            link_ratio: &self.link_ratio,
+            size_ratio: &self.size_ratio,
+            acceptable: &self.acceptable,
+        }
+    }
+}
+
 impl SolutionMap {
     /// The columns a ranking reads.
     pub fn rank_columns(&self) -> RankColumns<'_> {
-        let c = &self.columns;
-        RankColumns {
-            valid: &c.valid,
-            branch_free: &c.branch_free,
-            min_transmission_rad: &c.min_transmission_rad,
-            link_ratio: &c.link_ratio,
-            size_ratio: &c.size_ratio,
-            acceptable: &c.acceptable,
-        }
+        self.columns.rank_columns()
     }
 
     /// The signed margin of sample `k` (see [`MapContext::margin`]).
@@ -291,56 +297,152 @@ impl MapContext {
         columns: RankColumns<'_>,
         control: &Control<'_>,
     ) -> Result<Vec<Pivot>> {
-        let sep = match min_separation {
-            Some(s) => in_range("min_separation", s, 0.0, f64::MAX, "")?,
-            None => 0.02 * self.grid.viewport().diagonal(),
-        };
-        let n = self.grid.len();
-        columns.check_len(n)?;
-        let margins = Margins::new(self, columns.branch_free, rank_by, k, control)?;
-        let span = self.task.span();
-        let nx = self.grid.nx();
-        let mut apart = Separation::new(&self.grid, sep);
-        let mut out: Vec<Pivot> = Vec::new();
-        let mut failed = None;
-        rank_samples(
-            n,
-            rank_by,
-            &columns,
-            &|s| margins.get(s),
-            k,
-            control,
-            |s, margin, score| {
-                if out.len() >= k {
+        best_with(self, k, min_separation, rank_by, columns, control)
+    }
+}
+
+/// What the rankings of a map need of its context: the pivot map's
+/// ([`MapContext`]) and the pair map's
+/// ([`PairContext`](crate::design::PairContext)). Every ranking of a map
+/// is [`best_with`] over it.
+pub(crate) trait RankedContext {
+    /// A ranked sample with its linkage ([`Pivot`], [`Pair`](crate::design::Pair)).
+    type Item;
+    /// What the results are called (for an allocation that fails).
+    const WHAT: &'static str;
+    /// The grid of the samples (separations are measured on it).
+    fn grid(&self) -> &Grid;
+    /// The driving map's Filemon construction, for the margins: `Some`
+    /// (the construction, or `None` when it fails) for a map over
+    /// candidate driving pivots, `None` for the others (their margins are
+    /// distances to the other class on the grid).
+    fn filemon(&self) -> Option<Option<Filemon>>;
+    /// The result of the sample `offer` offers, with its linkage; `None`
+    /// where it has none.
+    fn item(&self, offer: &Offer<'_>) -> Option<Self::Item>;
+}
+
+/// A sample a ranking offers a map's context ([`RankedContext::item`]).
+pub(crate) struct Offer<'a> {
+    /// The sample, row-major.
+    pub(crate) s: usize,
+    /// Its score (see [`Pivot::score`]).
+    pub(crate) score: f64,
+    /// The ranking.
+    pub(crate) rank_by: RankBy,
+    /// Its margin, computed when asked.
+    margin: &'a dyn Fn() -> f64,
+}
+
+impl Offer<'_> {
+    /// The sample's `(row, column)` on a grid of `nx` columns, its margin
+    /// and the size ratio of its linkage `l` on a task of span `span`.
+    pub(crate) fn placed(&self, nx: usize, l: &SynthesizedFourBar, span: f64) -> Placed {
+        ((self.s / nx, self.s % nx), (self.margin)(), l.size() / span)
+    }
+}
+
+/// What [`Offer::placed`] gives: the index, the margin, the size ratio.
+pub(crate) type Placed = ((usize, usize), f64, f64);
+
+impl RankedContext for MapContext {
+    type Item = Pivot;
+    const WHAT: &'static str = "the best pivots";
+
+    fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    fn filemon(&self) -> Option<Option<Filemon>> {
+        match self.varying {
+            Varying::Driving { driven } => Some(Filemon::new(&self.task, driven).ok()),
+            Varying::Driven { .. } => None,
+        }
+    }
+
+    fn item(&self, o: &Offer<'_>) -> Option<Pivot> {
+        let linkage = self.linkage(o.s).ok()?;
+        let (index, margin, size_ratio) = o.placed(self.grid.nx(), &linkage, self.task.span());
+        let (score, ranked_by) = (o.score, o.rank_by);
+        let center = self.point(o.s);
+        Some(Pivot {
+            center,
+            index,
+            linkage,
+            margin,
+            size_ratio,
+            score,
+            ranked_by,
+        })
+    }
+}
+
+/// The `k` best results of a map with context `ctx`, best first, from its
+/// `columns`, by `rank_by` (as [`MapContext::best_pivots_with`] says),
+/// following `control`.
+///
+/// # Errors
+///
+/// As [`MapContext::best_pivots_with`].
+pub(crate) fn best_with<C: RankedContext>(
+    ctx: &C,
+    k: usize,
+    min_separation: Option<f64>,
+    rank_by: RankBy,
+    columns: RankColumns<'_>,
+    control: &Control<'_>,
+) -> Result<Vec<C::Item>> {
+    let grid = ctx.grid();
+    let sep = match min_separation {
+        Some(s) => in_range("min_separation", s, 0.0, f64::MAX, "")?,
+        None => 0.02 * grid.viewport().diagonal(),
+    };
+    let n = grid.len();
+    columns.check_len(n)?;
+    let margins = Margins::new(
+        grid,
+        ctx.filemon(),
+        columns.branch_free,
+        rank_by,
+        k,
+        control,
+    )?;
+    let nx = grid.nx();
+    let mut apart = Separation::new(grid, sep);
+    let mut out: Vec<C::Item> = Vec::new();
+    let mut failed = None;
+    rank_samples(
+        n,
+        rank_by,
+        &columns,
+        &|s| margins.get(s),
+        k,
+        control,
+        |s, margin, score| {
+            if out.len() >= k {
+                return false;
+            }
+            let p = grid.point(s % nx, s / nx);
+            if !apart.is_clear(p) {
+                return true;
+            }
+            let margin = || margin.unwrap_or_else(|| margins.get(s));
+            let offer = Offer {
+                s,
+                score,
+                rank_by,
+                margin: &margin,
+            };
+            if let Some(item) = ctx.item(&offer) {
+                if let Err(e) = try_push(&mut out, C::WHAT, item).and_then(|()| apart.add(p)) {
+                    failed = Some(e);
                     return false;
                 }
-                let p = self.point(s);
-                if !apart.is_clear(p) {
-                    return true;
-                }
-                if let Ok(linkage) = self.linkage(s) {
-                    let margin = margin.unwrap_or_else(|| margins.get(s));
-                    let pivot = Pivot {
-                        center: p,
-                        index: (s / nx, s % nx),
-                        linkage,
-                        margin,
-                        size_ratio: linkage.size() / span,
-                        score,
-                        ranked_by: rank_by,
-                    };
-                    if let Err(e) =
-                        try_push(&mut out, "the best pivots", pivot).and_then(|()| apart.add(p))
-                    {
-                        failed = Some(e);
-                        return false;
-                    }
-                }
-                out.len() < k
-            },
-        )?;
-        failed.map_or(Ok(out), Err)
-    }
+            }
+            out.len() < k
+        },
+    )?;
+    failed.map_or(Ok(out), Err)
 }
 
 impl RankColumns<'_> {
@@ -797,50 +899,47 @@ pub(crate) fn tie_order(a: (f32, f64), b: (f32, f64)) -> core::cmp::Ordering {
 pub(crate) const MANY_MARGINS: usize = 1024;
 
 /// The margins of a map's samples, computing what they share once: the
-/// driving map's Filemon construction, or the driven map's distance
-/// transform (for the margin ranking, which needs every margin) or a
-/// search outwards from each sample (for the others, which need a few).
+/// driving map's Filemon construction, or the distance transform of the
+/// other maps (for the margin ranking, which needs every margin, and for
+/// many results) or a search outwards from each sample (for a few).
 struct Margins<'a> {
-    context: &'a MapContext,
+    grid: &'a Grid,
     nearest: Nearest<'a>,
-    filemon: Option<Filemon>,
+    /// `Some` for a driving map (see [`RankedContext::filemon`]).
+    filemon: Option<Option<Filemon>>,
     distances: Option<Vec<f64>>,
 }
 
 impl<'a> Margins<'a> {
     fn new(
-        context: &'a MapContext,
+        grid: &'a Grid,
+        filemon: Option<Option<Filemon>>,
         branch_free: &'a [bool],
         rank_by: RankBy,
         want: usize,
         control: &Control<'_>,
     ) -> Result<Self> {
-        let (filemon, distances) = match context.varying {
-            Varying::Driving { driven } => (Filemon::new(&context.task, driven).ok(), None),
-            Varying::Driven { .. } if rank_by == RankBy::Margin || want > MANY_MARGINS => (
-                None,
-                Some(signed_distances_with(&context.grid, branch_free, control)?),
-            ),
-            Varying::Driven { .. } => (None, None),
+        let distances = if filemon.is_none() && (rank_by == RankBy::Margin || want > MANY_MARGINS) {
+            Some(signed_distances_with(grid, branch_free, control)?)
+        } else {
+            None
         };
         Ok(Margins {
-            context,
-            nearest: Nearest::new(&context.grid, branch_free),
+            grid,
+            nearest: Nearest::new(grid, branch_free),
             filemon,
             distances,
         })
     }
 
     fn get(&self, k: usize) -> f64 {
-        match self.context.varying {
-            Varying::Driving { .. } => self
-                .filemon
-                .as_ref()
-                .map_or(f64::NEG_INFINITY, |f| f.margin_at(self.context.point(k))),
-            Varying::Driven { .. } => match &self.distances {
-                Some(d) => d[k],
-                None => self.nearest.get(k),
-            },
+        let nx = self.grid.nx();
+        match (&self.filemon, &self.distances) {
+            (Some(f), _) => f.as_ref().map_or(f64::NEG_INFINITY, |f| {
+                f.margin_at(self.grid.point(k % nx, k / nx))
+            }),
+            (None, Some(d)) => d[k],
+            (None, None) => self.nearest.get(k),
         }
     }
 }

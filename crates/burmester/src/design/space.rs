@@ -9,7 +9,8 @@
 use nalgebra::Point2;
 
 use crate::design::constraints::check_simple_polygon;
-use crate::design::map::Judge;
+use crate::design::judge::Judge;
+use crate::design::options::CheckedOptions;
 use crate::design::{Constraints, DesignLimits};
 use crate::error::{InvalidInput, Result, finite};
 use crate::geom::Viewport;
@@ -235,7 +236,7 @@ impl Space {
     /// [`DesignLimits::validate`] and of the constraints' numbers.
     pub fn validate(&self, task: &Task, limits: &DesignLimits) -> Result<()> {
         self.pivots.validate()?;
-        Judge::new(task, limits, &self.constraints())?;
+        Judge::new(task, &CheckedOptions::new(limits, &self.constraints())?)?;
         Ok(())
     }
 

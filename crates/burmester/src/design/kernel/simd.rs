@@ -1,5 +1,6 @@
-//! The per-pivot kernel of the three-pose driving solution map and of the
-//! pivot atlas, vectorised across a row of candidate driving centers.
+//! The SIMD backend of the per-pivot kernel ([`DrivingRows`]) of the
+//! three-pose driving solution map and of the pivot atlas, vectorised
+//! across a row of candidate driving centers.
 //!
 //! [`Sampler::driving_sample`] computes one sample at a time: the circle
 //! point by the closed form, the moving pivot at the three poses, the
@@ -43,7 +44,10 @@ use pulp::{Arch, Simd, WithSimd};
 use crate::simd::{M, Ops, V, acos, acos1};
 
 use crate::design::InputRequirement;
-use crate::design::map::{ColumnsMut, ColumnsRow, Sampler};
+use crate::design::RankBy;
+use crate::design::columns::{ColumnsMut, ColumnsOut, ColumnsRow};
+use crate::design::judge::Sampler;
+use crate::design::kernel::{AtlasAsk, DrivingRows, Seen};
 use crate::engine::{Control, run_blocks_with};
 use crate::error::{Result, try_collect, try_vec};
 use crate::geom::Grid;
@@ -621,6 +625,38 @@ impl<'s> DrivingKernel<'s> {
     }
 }
 
+impl DrivingRows for DrivingKernel<'_> {
+    fn fill(&self, g: &Grid, b: &[bool], out: ColumnsOut<'_>, c: &Control<'_>) -> Result<()> {
+        let xs = DrivingKernel::padded_xs(g)?;
+        DrivingKernel::fill(self, g, &xs, b, out.rows(g.nx()), c)
+    }
+
+    fn pre_row(&self, y: f64, xs: &[f64], needed: &[bool], pre: &mut RowPre) {
+        DrivingKernel::pre_row(self, y, xs, needed, pre);
+    }
+
+    fn row_where(&self, y: f64, xs: &[f64], needed: &[bool], pre: &RowPre, out: &mut RowOut) {
+        DrivingKernel::row_where(self, y, xs, needed, pre, out);
+    }
+
+    #[inline]
+    fn atlas_sample(&self, out: &RowOut, i: usize, a0: Point2<f64>, ask: &AtlasAsk<'_>) -> Seen {
+        let rank_by = ask.rank_by;
+        self.judge_for_atlas(out, i, a0, ask.limit).map(|a| {
+            a.map(|w| {
+                if rank_by == RankBy::Transmission {
+                    ask.reach
+                        .may_reach(w)
+                        .then(|| f64::from(crate::simd::acos1(w) as f32))
+                } else {
+                    let (mu, ratio, size) = self.ranked_at(out, i, a0, w);
+                    rank_by.score(f64::from(mu), f64::from(size), f64::from(ratio))
+                }
+            })
+        })
+    }
+}
+
 /// One row of lanes (pulp's entry point).
 struct Lanes<'k, 'o> {
     k: &'k DrivingKernel<'k>,
@@ -1006,7 +1042,9 @@ impl WithSimd for Lanes<'_, '_> {
 mod tests {
     use super::*;
     use crate::Pose;
-    use crate::design::map::{Columns, Sample, Sampler};
+    use crate::design::columns::{Columns, Sample};
+    use crate::design::judge::Sampler;
+    use crate::design::options::CheckedOptions;
     use crate::design::{Constraints, DesignLimits, InputRequirement};
     use crate::geom::{Grid, Viewport};
     use crate::synthesis::Task;
@@ -1086,7 +1124,8 @@ mod tests {
     }
 
     fn check_with(task: &Task, c0: Point2<f64>, grid: &Grid, limits: &DesignLimits) -> usize {
-        let sampler = Sampler::new(task, limits, &Constraints::default()).unwrap();
+        let options = CheckedOptions::new(limits, &Constraints::default()).unwrap();
+        let sampler = Sampler::new(task, &options).unwrap();
         let Ok(driven) = task.dyad_from_center(c0) else {
             return 0;
         };
