@@ -32,26 +32,13 @@ use burmester::synthesis::curves::{FivePositions, FourPositions};
 use burmester::{Point2, Pose, Vector2, Viewport};
 use criterion::{Criterion, criterion_group, criterion_main};
 
-/// The worked example of the notes: five poses of a known crank-rocker.
-fn example_poses() -> [Pose; 5] {
-    let d = |x: f64, y: f64, a: f64| Pose::new(x, y, a.to_radians());
-    [
-        d(1.049199280691, 2.279426358634, 45.220037141544),
-        d(0.734502065472, 3.198658887874, 26.633426990744),
-        d(-0.378159188147, 3.063048993013, 21.786789298262),
-        d(-1.268710439724, 2.051150142014, 27.048624103934),
-        d(-1.411118156972, 0.597429126400, 48.044287536536),
-    ]
-}
+#[path = "../tests/rust/common/mod.rs"]
+mod common;
 
-fn centroid(poses: &[Pose]) -> Point2<f64> {
-    let n = poses.len() as f64;
-    Point2::from(
-        poses
-            .iter()
-            .fold(Vector2::zeros(), |a, p| a + p.position.coords / n),
-    )
-}
+// The worked example of the notes: five poses of a known crank-rocker.
+use common::notes_poses as example_poses;
+
+use common::centroid;
 
 /// The size of a task as the library measures it: the largest distance of a
 /// pose point from their centroid.

@@ -6,21 +6,17 @@
 
 use std::hint::black_box;
 
-use burmester::{Constraints, Control, DesignLimits, Pose, Task};
+use burmester::{Constraints, Control, DesignLimits, Task};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 /// Poses 1-4 of the worked example: the coupler of the crank-rocker
 /// `A0 = (0, 0)`, `B0 = (4, 0)`.
 fn task() -> Task {
-    let d = |x: f64, y: f64, a: f64| Pose::new(x, y, a.to_radians());
-    Task::new(&[
-        d(1.049199280691, 2.279426358634, 45.220037141544),
-        d(0.734502065472, 3.198658887874, 26.633426990744),
-        d(-0.378159188147, 3.063048993013, 21.786789298262),
-        d(-1.268710439724, 2.051150142014, 27.048624103934),
-    ])
-    .expect("the example's poses")
+    Task::new(&common::notes_poses()[..4]).expect("the example's poses")
 }
+
+#[path = "../tests/rust/common/mod.rs"]
+mod common;
 
 fn pair_map(c: &mut Criterion) {
     let task = task();

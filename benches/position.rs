@@ -14,6 +14,8 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 use four_bar::NormFourBar;
 use four_bar::mech::{CurveGen, Stat, fb::UnNorm};
 
+mod shared;
+
 const SWEEP: usize = 3600;
 
 /// Norton's Example 4-1 with a coupler point (mm).
@@ -63,16 +65,7 @@ fn sweep(c: &mut Criterion) {
     let mut g = c.benchmark_group("position/sweep");
     g.throughput(Throughput::Elements(SWEEP as u64));
     g.bench_function(BenchmarkId::new("solve_into", SWEEP), |b| {
-        b.iter(|| {
-            fb.solve_into(
-                black_box(&angles),
-                AssemblyMode::Open,
-                &mut t3,
-                &mut t4,
-                &mut ok,
-            )
-            .unwrap()
-        })
+        b.iter(|| shared::solve_into(&fb, &angles, &mut t3, &mut t4, &mut ok))
     });
     g.bench_function(BenchmarkId::new("four_bar_pos", SWEEP), |b| {
         b.iter(|| {

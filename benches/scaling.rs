@@ -19,12 +19,12 @@
 
 use std::hint::black_box;
 
-use burmester::{
-    AssemblyMode, Constraints, Control, DesignLimits, FourBar, Grid, Method, RankBy, example,
-};
+use burmester::{Constraints, Control, DesignLimits, FourBar, Grid, Method, RankBy, example};
 use criterion::{
     BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group, criterion_main,
 };
+
+mod shared;
 
 /// 1, 2, 4, ... up to the available cores, and the core count itself.
 fn thread_counts() -> Vec<usize> {
@@ -81,14 +81,14 @@ fn scaling(c: &mut Criterion) {
                 |b, _| {
                     pool.install(|| {
                         b.iter(|| {
-                            f.solution_map_into(
-                                black_box(&grid),
+                            shared::solution_map_into(
+                                &f,
+                                &grid,
                                 &limits,
                                 &none,
-                                columns.as_out(),
+                                &mut columns,
                                 &control,
                             )
-                            .unwrap()
                         })
                     })
                 },
@@ -115,16 +115,7 @@ fn scaling(c: &mut Criterion) {
             &threads,
             |b, _| {
                 pool.install(|| {
-                    b.iter(|| {
-                        fb.solve_into(
-                            black_box(&angles),
-                            AssemblyMode::Open,
-                            &mut t3,
-                            &mut t4,
-                            &mut ok,
-                        )
-                        .unwrap()
-                    })
+                    b.iter(|| shared::solve_into(&fb, &angles, &mut t3, &mut t4, &mut ok))
                 })
             },
         );

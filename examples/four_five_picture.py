@@ -1,7 +1,6 @@
 """Writes docs/four-five.png, the README's picture of four and five poses:
 ``python examples/four_five_picture.py`` (needs the ``plot`` extra)."""
 
-import math
 from pathlib import Path
 
 import matplotlib
@@ -9,27 +8,16 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import burmester  # noqa: E402
 from burmester import plot  # noqa: E402
-
-# The known crank-rocker of the README and of the four- and five-position notes.
-FB = burmester.FourBar.from_pivots((0, 0), (4, 0), 1.5, 3.5, 3.0)
-
-
-def pose(deg: float) -> tuple:
-    """The coupler pose at a crank angle: the point (1, 1.5) in the frame at
-    the crank joint A, x toward the rocker joint B."""
-    _, a, b, _ = FB.joints(math.radians(deg))
-    phi = math.atan2(b[1] - a[1], b[0] - a[0])
-    return (a[0] + math.cos(phi) - 1.5 * math.sin(phi), a[1] + math.sin(phi) + 1.5 * math.cos(phi), phi)
+from notes_linkage import task  # noqa: E402
 
 
 def main() -> None:
     out = Path(__file__).resolve().parents[1] / "docs" / "four-five.png"
     fig, (left, right) = plt.subplots(2, 1, figsize=(8.0, 11.0))
-    four = burmester.Task([pose(d) for d in (20, 70, 120, 170)])
+    four = task(20, 70, 120, 170)
     plot.burmester_plane(four, (-6, 12, -5, 8), driven=(4.0, 0.0), ax=left)   # the known rocker's pivot
-    plot.burmester_plane(burmester.Task([pose(d) for d in (20, 70, 120, 170, 230)]), (-6, 12, -5, 8), ax=right)
+    plot.burmester_plane(task(20, 70, 120, 170, 230), (-6, 12, -5, 8), ax=right)
     fig.savefig(out, dpi=72, bbox_inches="tight")
     print(f"wrote {out} ({out.stat().st_size // 1024} KiB)")
 

@@ -349,18 +349,27 @@ fn task(inp: &mut Input<'_>) -> Option<Task> {
                     }
                 }
                 // Scaled.
-                3 => {
-                    let k = 10f64.powi(i32::from(inp.byte() % 25) - 12);
-                    for q in &mut p {
-                        q.position = Point2::from(q.position.coords * k);
-                    }
-                }
+                3 => scale(inp, &mut p),
                 _ => {}
             }
             p
         }
     };
-    match Task::new(&poses) {
+    task_of(&poses)
+}
+
+/// The poses' positions scaled by a power of ten from `1e-12` to `1e12`.
+fn scale(inp: &mut Input<'_>, poses: &mut [Pose]) {
+    let k = 10f64.powi(i32::from(inp.byte() % 25) - 12);
+    for q in poses {
+        q.position = Point2::from(q.position.coords * k);
+    }
+}
+
+/// The task of `poses`, or none when they are refused (with a message
+/// that passes [`message`]'s checks).
+fn task_of(poses: &[Pose]) -> Option<Task> {
+    match Task::new(poses) {
         Ok(t) => Some(t),
         Err(e) => {
             message(&e);
@@ -1290,24 +1299,7 @@ pub fn solution_map(data: &[u8]) {
         Ok(g) => g,
         Err(e) => return message(&e),
     };
-    let limits = DesignLimits {
-        min_transmission: if inp.byte() % 4 == 0 {
-            inp.num()
-        } else {
-            inp.nice().abs() % 1.5
-        },
-        max_link_ratio: if inp.byte() % 4 == 0 {
-            inp.num()
-        } else {
-            1.0 + inp.nice().abs()
-        },
-        input: [
-            InputRequirement::Any,
-            InputRequirement::Crank,
-            InputRequirement::Rocker,
-        ][usize::from(inp.byte()) % 3],
-        ..DesignLimits::default()
-    };
+    let limits = limits_of(&mut inp);
     let polygon = |inp: &mut Input<'_>| -> Vec<Point2<f64>> {
         let n = inp.count(0, 5);
         (0..n)
@@ -1535,21 +1527,10 @@ fn four_poses(inp: &mut Input<'_>) -> Option<Task> {
             let (i, j) = (usize::from(inp.byte()) % 4, usize::from(inp.byte()) % 4);
             p[j].angle = p[i].angle;
         }
-        3 => {
-            let k = 10f64.powi(i32::from(inp.byte() % 25) - 12);
-            for q in &mut p {
-                q.position = Point2::from(q.position.coords * k);
-            }
-        }
+        3 => scale(inp, &mut p),
         _ => {}
     }
-    match Task::new(&p) {
-        Ok(t) => Some(t),
-        Err(e) => {
-            message(&e);
-            None
-        }
-    }
+    task_of(&p)
 }
 
 /// The four-position pair map on small grids of both axes, with arbitrary
@@ -1965,29 +1946,27 @@ pub fn curves(data: &[u8]) {
         Viewport::new(c.x - h, c.x + h, c.y - h, c.y + h).ok()
     };
     if let Some(vp) = view(&mut inp, Point2::from(o)) {
-        for g in four
-            .center_point_curve()
-            .polylines(&vp)
-            .into_iter()
-            .flatten()
-        {
-            let z = four.circle_point(g);
-            assert!(
-                !off_curve(&z),
-                "traced {g} refused: {z:?} (poses {poses:?}, view {vp:?})"
-            );
-        }
-        for c in four
-            .circle_point_curve()
-            .polylines(&vp)
-            .into_iter()
-            .flatten()
-        {
-            let g = four.center_point(c);
-            assert!(
-                !off_curve(&g),
-                "traced circle point {c} refused: {g:?} (poses {poses:?}, view {vp:?})"
-            );
+        // Every traced point of each curve is taken by its map.
+        type Map = fn(&FourPositions, Point2<f64>) -> burmester::Result<Point2<f64>>;
+        for (curve, map, what) in [
+            (
+                four.center_point_curve(),
+                FourPositions::circle_point as Map,
+                "",
+            ),
+            (
+                four.circle_point_curve(),
+                FourPositions::center_point,
+                "circle point ",
+            ),
+        ] {
+            for p in curve.polylines(&vp).into_iter().flatten() {
+                let r = map(&four, p);
+                assert!(
+                    !off_curve(&r),
+                    "traced {what}{p} refused: {r:?} (poses {poses:?}, view {vp:?})"
+                );
+            }
         }
     }
     if dyads.is_empty() {

@@ -1,5 +1,13 @@
 """Shared fixtures: the built-in example task, its driven crank and view."""
 
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import time
+
 import pytest
 
 import burmester
@@ -8,6 +16,46 @@ import burmester
 POSES = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
 C0 = (4.0, -1.0)
 VP = (-8.0, 8.0, -8.0, 8.0)
+
+#: Four poses of a crank-rocker's coupler (pivots (0, 0) and (4, 0); the
+#: notes' worked example and the README's).
+FOUR = [(1.049199280691, 2.279426358634, math.radians(45.220037141544)),
+        (0.734502065472, 3.198658887874, math.radians(26.633426990744)),
+        (-0.378159188147, 3.063048993013, math.radians(21.786789298262)),
+        (-1.268710439724, 2.051150142014, math.radians(27.048624103934))]
+
+
+def circumcenter(a, b, c):
+    """The center of the circle through the points ``a``, ``b``, ``c``
+    (the tests' own construction, independent of the crate's)."""
+    ux, uy = b[0] - a[0], b[1] - a[1]
+    vx, vy = c[0] - a[0], c[1] - a[1]
+    d = 2.0 * (ux * vy - uy * vx)
+    uu, vv = ux * ux + uy * uy, vx * vx + vy * vy
+    return (a[0] + (vy * uu - uy * vv) / d, a[1] + (ux * vv - vx * uu) / d)
+
+
+def interrupt_child(child, *args, after=0.3, timeout=60, ready=()):
+    """Run ``python -c child *args`` here, wait for its line ``started``
+    (then for each line of ``ready`` in turn), send it SIGINT ``after``
+    seconds later and read the line it reports: (that line as JSON,
+    seconds from the signal to the line, return code, stderr)."""
+    p = subprocess.Popen([sys.executable, "-c", child, *args], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, cwd=os.path.dirname(__file__))
+    try:
+        assert p.stdout.readline().strip() == "started", p.stderr.read()
+        for expected in ready:
+            assert p.stdout.readline().strip() == expected, p.stderr.read()
+        time.sleep(after)
+        sent = time.monotonic()
+        p.send_signal(signal.SIGINT)
+        line = p.stdout.readline()
+        latency = time.monotonic() - sent
+        _, err = p.communicate(timeout=timeout)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    return json.loads(line), latency, p.returncode, err
 
 
 @pytest.fixture

@@ -260,13 +260,10 @@ METHODS = {
 #: Methods without arguments, and why each is a method.
 NO_ARGUMENT_METHODS = {
     (Grid, "cell_centers"): "does work: allocates two arrays",
-    (Task, "image_poles"): "fails for four or five poses",
-    (Task, "pole_circle"): "fails for four or five poses",
-    (Task, "image_pole_circle"): "fails for four or five poses",
-    (Task, "pole_triangle_angles"): "fails for four or five poses",
-    (Task, "center_point_curve"): "fails for three or five poses",
-    (Task, "circle_point_curve"): "fails for three or five poses",
-    (Task, "coincidence_points"): "fails for three or five poses",
+    **{(Task, name): "fails for four or five poses"
+       for name in ("image_poles", "pole_circle", "image_pole_circle", "pole_triangle_angles")},
+    **{(Task, name): "fails for three or five poses"
+       for name in ("center_point_curve", "circle_point_curve", "coincidence_points")},
     (Task, "burmester_points"): "fails for three or four poses; does work",
     (Task, "burmester_curves"): "fails for three or four poses",
     (Task, "burmester_four_bars"): "fails for three or four poses; does work",

@@ -21,6 +21,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import burmester
+from conftest import circumcenter
 
 mp = pytest.importorskip("mpmath")
 mp.mp.prec = 200
@@ -37,14 +38,6 @@ def displace(p_from, p_to, z):
     c, s = mp.cos(aj - ai), mp.sin(aj - ai)
     dx, dy = z[0] - xi, z[1] - yi
     return (xj + c * dx - s * dy, yj + s * dx + c * dy)
-
-
-def circumcenter(a, b, c):
-    ax, ay = b[0] - a[0], b[1] - a[1]
-    bx, by = c[0] - a[0], c[1] - a[1]
-    den = 2 * (ax * by - ay * bx)
-    na, nb = ax * ax + ay * ay, bx * bx + by * by
-    return (a[0] + (by * na - ay * nb) / den, a[1] + (ax * nb - bx * na) / den)
 
 
 def exact_circle(poses, y):

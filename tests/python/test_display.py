@@ -22,6 +22,7 @@ import burmester  # noqa: E402
 import burmester._display as display  # noqa: E402
 import burmester.plot as bp  # noqa: E402
 from burmester import Grid, Task  # noqa: E402
+from conftest import FOUR  # noqa: E402
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 POSES = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
@@ -47,12 +48,6 @@ def make(name):
         "cubic": lambda: Task(FOUR).center_point_curve(),
     }[name]()
 
-
-# Four poses of a crank-rocker's coupler (pivots (0, 0) and (4, 0); the README's).
-FOUR = [(1.049199280691, 2.279426358634, math.radians(45.220037141544)),
-        (0.734502065472, 3.198658887874, math.radians(26.633426990744)),
-        (-0.378159188147, 3.063048993013, math.radians(21.786789298262)),
-        (-1.268710439724, 2.051150142014, math.radians(27.048624103934))]
 
 
 #: Colours each picture must contain (RGB of the library's palette).

@@ -6,13 +6,10 @@ and that what the records say is what the six-bar does."""
 
 import json
 import math
-import os
 import pickle
 import signal
-import subprocess
 import sys
 import textwrap
-import time
 
 import numpy as np
 import pytest
@@ -20,7 +17,7 @@ import pytest
 import burmester
 from burmester import Grid
 from burmester.cli import main
-from conftest import C0, POSES, VP
+from conftest import C0, POSES, VP, interrupt_child
 
 
 @pytest.fixture(scope="module")
@@ -205,23 +202,10 @@ CHILD = textwrap.dedent(
 
 @pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
 def test_ctrl_c_stops_a_drive_map():
-    p = subprocess.Popen([sys.executable, "-c", CHILD], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                         text=True, cwd=os.path.dirname(__file__))
-    try:
-        assert p.stdout.readline().strip() == "started", p.stderr.read()
-        time.sleep(0.5)
-        sent = time.monotonic()
-        p.send_signal(signal.SIGINT)
-        line = p.stdout.readline()
-        latency = time.monotonic() - sent
-        _, err = p.communicate(timeout=60)
-    finally:
-        if p.poll() is None:
-            p.kill()
-    report = json.loads(line)
+    report, latency, returncode, err = interrupt_child(CHILD, after=0.5)
     assert "finished" not in report, "the map ended before the signal; make it longer"
     assert latency < 0.5, latency
-    assert p.returncode == -signal.SIGINT and "KeyboardInterrupt" in err
+    assert returncode == -signal.SIGINT and "KeyboardInterrupt" in err
     assert "interrupted after" in report["message"]
 
 

@@ -2,7 +2,6 @@
 with KeyboardInterrupt, says what it left in out=, and the progress hook
 sees the same samples as one call without it."""
 
-import json
 import os
 import signal
 import subprocess
@@ -15,7 +14,7 @@ import pytest
 
 import burmester
 from burmester import Grid
-from conftest import C0, POSES, VP
+from conftest import C0, POSES, VP, interrupt_child
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
 
@@ -59,23 +58,7 @@ CHILD = textwrap.dedent(
 def interrupt(kind, out="none", after=0.3):
     """Run the child, send SIGINT ``after`` seconds into the sweep: (report,
     seconds from the signal to the report, return code, stderr)."""
-    p = subprocess.Popen(
-        [sys.executable, "-c", CHILD, kind, out],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-        cwd=os.path.dirname(__file__),
-    )
-    try:
-        assert p.stdout.readline().strip() == "started", p.stderr.read()
-        time.sleep(after)
-        sent = time.monotonic()
-        p.send_signal(signal.SIGINT)
-        line = p.stdout.readline()
-        latency = time.monotonic() - sent
-        _, err = p.communicate(timeout=60)
-    finally:
-        if p.poll() is None:
-            p.kill()
-    return json.loads(line), latency, p.returncode, err
+    return interrupt_child(CHILD, kind, out, after=after)
 
 
 @pytest.mark.parametrize("kind", ["branch", "solution"])
@@ -208,25 +191,9 @@ DESIGN_CHILD = textwrap.dedent(
 
 @pytest.mark.parametrize("phase", ["coarse", "refine"])
 def test_ctrl_c_stops_design_within_half_a_second(phase):
-    p = subprocess.Popen(
-        [sys.executable, "-c", DESIGN_CHILD, phase],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=os.path.dirname(__file__),
-    )
-    try:
-        assert p.stdout.readline().strip() == "started", p.stderr.read()
-        if phase == "refine":
-            # The progress hook says when the refinement has begun.
-            assert p.stdout.readline().strip() == "refining", p.stderr.read()
-        time.sleep(0.3)
-        sent = time.monotonic()
-        p.send_signal(signal.SIGINT)
-        line = p.stdout.readline()
-        latency = time.monotonic() - sent
-        _, err = p.communicate(timeout=60)
-    finally:
-        if p.poll() is None:
-            p.kill()
-    report = json.loads(line)
+    # With "refine", the progress hook says when the refinement has begun.
+    ready = ["refining"] if phase == "refine" else []
+    report, latency, returncode, err = interrupt_child(DESIGN_CHILD, phase, ready=ready)
     assert "finished" not in report, "the search ended before the signal; make it longer"
     assert latency < 0.5, latency
-    assert p.returncode == -signal.SIGINT and "KeyboardInterrupt" in err
+    assert returncode == -signal.SIGINT and "KeyboardInterrupt" in err

@@ -4,27 +4,17 @@ starts; SIGINT must raise KeyboardInterrupt within half a second, with a
 message that counts what it counts. And the quadratic selection and
 polygon checks that made some of them take minutes are gone."""
 
-import json
 import math
-import os
 import signal
-import subprocess
 import sys
 import textwrap
-import time
 
 import pytest
 
 import burmester
-from conftest import C0, POSES, VP
+from conftest import C0, FOUR, POSES, VP, interrupt_child
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
-
-#: Four poses of a crank-rocker's coupler (the notes' worked example).
-FOUR = [(1.049199280691, 2.279426358634, math.radians(45.220037141544)),
-        (0.734502065472, 3.198658887874, math.radians(26.633426990744)),
-        (-0.378159188147, 3.063048993013, math.radians(21.786789298262)),
-        (-1.268710439724, 2.051150142014, math.radians(27.048624103934))]
 
 CHILD = textwrap.dedent(
     """
@@ -69,20 +59,7 @@ CHILD = textwrap.dedent(
 
 
 def interrupt(kind, after=0.3):
-    p = subprocess.Popen([sys.executable, "-c", CHILD, kind], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, cwd=os.path.dirname(__file__))
-    try:
-        assert p.stdout.readline().strip() == "started", p.stderr.read()
-        time.sleep(after)
-        sent = time.monotonic()
-        p.send_signal(signal.SIGINT)
-        line = p.stdout.readline()
-        latency = time.monotonic() - sent
-        _, err = p.communicate(timeout=120)
-    finally:
-        if p.poll() is None:
-            p.kill()
-    return json.loads(line), latency, p.returncode, err
+    return interrupt_child(CHILD, kind, after=after, timeout=120)
 
 
 @pytest.mark.parametrize("kind", ["atlas", "solution", "best_pairs", "best_pivots", "pareto", "curve_dyads"])

@@ -7,7 +7,6 @@ the fallible path: the core's ``try_vec`` family, NumPy's allocator, or
 Python's."""
 
 import json
-import math
 import os
 import subprocess
 import sys
@@ -15,14 +14,9 @@ import textwrap
 
 import pytest
 
-from conftest import C0, POSES, VP
+from conftest import C0, FOUR, POSES, VP
 
 pytestmark = pytest.mark.skipif(sys.platform != "linux", reason="RLIMIT_AS and /proc")
-
-FOUR = [(1.049199280691, 2.279426358634, math.radians(45.220037141544)),
-        (0.734502065472, 3.198658887874, math.radians(26.633426990744)),
-        (-0.378159188147, 3.063048993013, math.radians(21.786789298262)),
-        (-1.268710439724, 2.051150142014, math.radians(27.048624103934))]
 
 #: The child: builds what the call needs (small), uses every thread once
 #: (rayon's pool, allocators), then limits its address space to what it

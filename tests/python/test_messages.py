@@ -10,11 +10,7 @@ import pytest
 import burmester
 from burmester import DegenerateError, InvalidInputError, Task, cli, taskfile
 from burmester.taskfile import TaskFileError
-
-FOUR = [(1.049199280691, 2.279426358634, math.radians(45.220037141544)),
-        (0.734502065472, 3.198658887874, math.radians(26.633426990744)),
-        (-0.378159188147, 3.063048993013, math.radians(21.786789298262)),
-        (-1.268710439724, 2.051150142014, math.radians(27.048624103934))]
+from conftest import FOUR
 
 
 def test_four_poses_of_one_angle_are_translations_not_rotations_about_their_centroid():

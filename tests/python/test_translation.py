@@ -8,6 +8,7 @@ import pytest
 
 import burmester
 from burmester import DegenerateError, Grid, Task
+from conftest import circumcenter
 
 # Poses 1 and 2 have one angle: a pure translation by (2, 0.5).
 TRANSLATED = [(0.0, 0.0, 0.3), (2.0, 0.5, 0.3), (3.0, 2.0, 1.1)]
@@ -20,14 +21,6 @@ def carry(poses, k, z):
     c, s = math.cos(a), math.sin(a)
     dx, dy = z[0] - poses[0][0], z[1] - poses[0][1]
     return (poses[k][0] + c * dx - s * dy, poses[k][1] + s * dx + c * dy)
-
-
-def circumcenter(a, b, c):
-    ux, uy = b[0] - a[0], b[1] - a[1]
-    vx, vy = c[0] - a[0], c[1] - a[1]
-    d = 2.0 * (ux * vy - uy * vx)
-    uu, vv = ux * ux + uy * uy, vx * vx + vy * vy
-    return (a[0] + (vy * uu - uy * vv) / d, a[1] + (ux * vv - vx * uu) / d)
 
 
 def test_a_translation_is_a_task_whose_pole_is_a_direction():

@@ -15,6 +15,27 @@ use common::task;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
 
+/// The cells of the first row of driven centers of `t`'s atlas, without
+/// constraints.
+fn first_row(
+    t: &Task,
+    driven: &Grid,
+    driving: &Grid,
+    limits: &DesignLimits,
+    rank_by: RankBy,
+) -> Vec<AtlasCell> {
+    t.pivot_atlas_rows(
+        driven,
+        0..1,
+        driving,
+        limits,
+        &Constraints::default(),
+        rank_by,
+        &Control::new(),
+    )
+    .unwrap()
+}
+
 fn lenient() -> DesignLimits {
     DesignLimits::from_degrees(20.0, 20.0, InputRequirement::Any).unwrap()
 }
@@ -140,17 +161,7 @@ fn random_driven_centers_of_the_example() {
         // A one-sample driven grid at the random center.
         let driven = Grid::from_bounds(x - 0.5, x + 0.5, y - 0.5, y + 0.5, 1, 1).unwrap();
         let c0 = driven.point(0, 0);
-        let cells = t
-            .pivot_atlas_rows(
-                &driven,
-                0..1,
-                &driving,
-                &limits,
-                &Constraints::default(),
-                rank_by,
-                &Control::new(),
-            )
-            .unwrap();
+        let cells = first_row(&t, &driven, &driving, &limits, rank_by);
         let want = reference(&t, c0, &driving, &limits, rank_by);
         assert!(
             same(&cells[0], &want),
@@ -211,17 +222,13 @@ fn driven_centers_without_filemon_are_invalid() {
     let driven = Grid::from_bounds(p.x - 1.0, p.x + 1.0, p.y - 1.0, p.y + 1.0, 1, 1).unwrap();
     assert_eq!(driven.point(0, 0), p);
     let driving = Grid::new(example::viewport(), 10, 10).unwrap();
-    let cells = t
-        .pivot_atlas_rows(
-            &driven,
-            0..1,
-            &driving,
-            &DesignLimits::default(),
-            &Constraints::default(),
-            RankBy::Balanced,
-            &Control::new(),
-        )
-        .unwrap();
+    let cells = first_row(
+        &t,
+        &driven,
+        &driving,
+        &DesignLimits::default(),
+        RankBy::Balanced,
+    );
     assert_eq!(cells[0], AtlasCell::INVALID);
 }
 

@@ -176,14 +176,7 @@ fn rotations_at_least(poses: &[Pose], min: f64) -> bool {
 // Small geometric helpers.
 // ---------------------------------------------------------------------------
 
-fn centroid(poses: &[Pose]) -> Point2<f64> {
-    let n = poses.len() as f64;
-    Point2::from(
-        poses
-            .iter()
-            .fold(Vector2::zeros(), |a, p| a + p.position.coords / n),
-    )
-}
+use common::centroid;
 
 /// A square viewport of half-width `h` task sizes around the poses.
 fn view_around(four: &FourPositions, h: f64) -> Viewport {
@@ -226,17 +219,7 @@ fn check_order_arcs(
     Ok(())
 }
 
-/// Distance from `p` to the segment `a b`.
-fn seg_dist(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
-    let ab = b - a;
-    let l2 = ab.norm_squared();
-    let u = if l2 > 0.0 {
-        ((p - a).dot(&ab) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (a + ab * u - p).norm()
-}
+use common::seg_dist;
 
 /// Distance from `p` to the nearest chord of `polylines`.
 fn poly_dist(polylines: &[Vec<Point2<f64>>], p: Point2<f64>) -> f64 {
@@ -254,19 +237,27 @@ fn poly_dist(polylines: &[Vec<Point2<f64>>], p: Point2<f64>) -> f64 {
 
 /// The relative spread of the crank length of a dyad over the poses.
 fn spread(poses: &[Pose], d: &Dyad) -> f64 {
+    let (_, min, max) = crank_lengths(poses, d.center, d.circle);
+    (max - min) / max
+}
+
+/// The distances of a dyad's moving pivot (its circle point `circle`
+/// carried from pose 1 to each pose) from its center `center`: each, the
+/// smallest, the largest.
+fn crank_lengths(poses: &[Pose], center: Point2<f64>, circle: Point2<f64>) -> (Vec<f64>, f64, f64) {
     let p1 = poses[0];
     let r: Vec<f64> = poses
         .iter()
         .map(|p| {
             let (s, c) = (p.angle - p1.angle).sin_cos();
-            let v = d.circle - p1.position;
+            let v = circle - p1.position;
             let q = p.position + Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y);
-            (q - d.center).norm()
+            (q - center).norm()
         })
         .collect();
     let max = r.iter().copied().fold(0.0, f64::max);
     let min = r.iter().copied().fold(f64::INFINITY, f64::min);
-    (max - min) / max
+    (r, min, max)
 }
 
 /// Whether `p` is within the on-curve tolerance of `curve` for `four`.
@@ -282,17 +273,8 @@ fn on_curve(curve: &Cubic, four: &FourPositions, p: Point2<f64>, factor: f64) ->
 // The worked example.
 // ---------------------------------------------------------------------------
 
-/// The notes' worked example (positions-4-5.md, section 6).
-fn example_poses() -> [Pose; 5] {
-    let d = |x: f64, y: f64, a: f64| Pose::new(x, y, a.to_radians());
-    [
-        d(1.049199280691, 2.279426358634, 45.220037141544),
-        d(0.734502065472, 3.198658887874, 26.633426990744),
-        d(-0.378159188147, 3.063048993013, 21.786789298262),
-        d(-1.268710439724, 2.051150142014, 27.048624103934),
-        d(-1.411118156972, 0.597429126400, 48.044287536536),
-    ]
-}
+// The notes' worked example (positions-4-5.md, section 6).
+use common::notes_poses as example_poses;
 
 #[test]
 fn the_worked_example_has_its_four_burmester_points() {
@@ -2906,17 +2888,7 @@ fn issue24_dyads_of_nearly_equal_angles_are_taken_back_or_not_given() {
             // rounding of the coordinates (the poses are nearly at one
             // point: the task's size is a few ulps of its place).
             let p1 = moved_poses[0];
-            let r: Vec<f64> = moved_poses
-                .iter()
-                .map(|p| {
-                    let (s, c) = (p.angle - p1.angle).sin_cos();
-                    let v = d.circle - p1.position;
-                    let q = p.position + Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y);
-                    (q - d.center).norm()
-                })
-                .collect();
-            let max = r.iter().copied().fold(0.0, f64::max);
-            let min = r.iter().copied().fold(f64::INFINITY, f64::min);
+            let (r, min, max) = crank_lengths(&moved_poses, d.center, d.circle);
             let place = d.center.coords.norm() + d.circle.coords.norm() + p1.position.coords.norm();
             let band = 1e-6 * (max + four.size()) + 64.0 * f64::EPSILON * place;
             assert!(max - min <= band, "{d:?}: {r:?}");

@@ -3,10 +3,15 @@
 //! quantities kept inside, and never every value of a map.
 
 use burmester::synthesis::curves::{FivePositions, FourPositions};
-use burmester::{
-    AssemblyMode, Constraints, Control, DesignLimits, FourBar, Grid, Point2, Pose, RankBy, Task,
-    Viewport,
-};
+use burmester::{AssemblyMode, DesignLimits, FourBar, Grid, Point2, Pose, RankBy, Task, Viewport};
+mod common;
+
+/// `value`'s debug text contains `want` and no internals.
+fn shows(value: &impl std::fmt::Debug, want: &str) {
+    let text = format!("{value:?}");
+    assert!(text.contains(want), "{text}");
+    no_internals(&text);
+}
 
 fn no_internals(text: &str) {
     for inner in [
@@ -74,14 +79,7 @@ fn task_filemon_and_maps_show_what_they_are_for() {
         format!("{grid:?}"),
         "Grid { viewport: Viewport { xmin: -8.0, xmax: 8.0, ymin: -8.0, ymax: 8.0 }, nx: 64, ny: 48 }"
     );
-    let map = filemon
-        .solution_map(
-            &grid,
-            &DesignLimits::default(),
-            &Constraints::default(),
-            &Control::new(),
-        )
-        .unwrap();
+    let map = common::solution_map(&filemon, &grid, &DesignLimits::default());
     let text = format!("{map:?}");
     let acceptable = map.columns.acceptable.iter().filter(|&&b| b).count();
     assert!(text.contains(&format!("samples: {}", 64 * 48)), "{text}");
@@ -112,22 +110,15 @@ fn curves_show_poses_curves_and_points() {
     };
     let four: Vec<Pose> = [20.0, 70.0, 120.0, 170.0].map(pose).to_vec();
     let curves = FourPositions::new(&four).unwrap();
-    let text = format!("{curves:?}");
-    assert!(
-        text.contains("center_point_curve: Cubic { degree: 3, coefficients: ["),
-        "{text}"
+    shows(
+        &curves,
+        "center_point_curve: Cubic { degree: 3, coefficients: [",
     );
-    no_internals(&text);
     let dyad = curves.curve_dyad(Point2::origin()).unwrap();
     let text = format!("{dyad:?}");
     assert!(text.contains("CrankOrder(1-2-3-4)"), "{text}");
 
     let five: Vec<Pose> = [20.0, 70.0, 120.0, 170.0, 230.0].map(pose).to_vec();
     let points = FivePositions::new(&five).unwrap();
-    let text = format!("{points:?}");
-    assert!(
-        text.contains("burmester_points: [Dyad { center: "),
-        "{text}"
-    );
-    no_internals(&text);
+    shows(&points, "burmester_points: [Dyad { center: ");
 }

@@ -19,12 +19,29 @@ use std::f64::consts::PI;
 
 use burmester::tolerance::MIN_ROTATION;
 use burmester::{
-    Branch, CircleOrLine, ConicKind, Cremona, DegenerateError, Error, Grid, InvalidInput, Line,
-    Method, Point2, Pole, Pose, Task, Vector2, Viewport,
+    Branch, CircleOrLine, ConicKind, Cremona, DegenerateError, Error, Filemon, Grid, InvalidInput,
+    Line, Method, Point2, Pole, Pose, Task, Vector2, Viewport,
 };
 
 fn example() -> Task {
     burmester::example::task()
+}
+
+/// The conic and the direct classifier agree at every point of `ys` off
+/// the band about the curves (the margin more than `1e-7` task sizes) and
+/// off the pole circle; a failure names the point after `label`.
+fn classifiers_agree_off_the_band(t: &Task, f: &Filemon, ys: &[Point2<f64>], label: &str) {
+    for &y in ys {
+        if f.margin(y).unwrap().abs() > 1e-7 * t.scale()
+            && cremona(t).pole_circle().side(y).abs() > 1e-6
+        {
+            assert_eq!(
+                f.classify(y, Method::Conic).unwrap(),
+                f.classify(y, Method::Direct).unwrap(),
+                "{label}at {y}"
+            );
+        }
+    }
 }
 
 /// The three-position maps of a three-pose task.
@@ -237,17 +254,8 @@ fn a_driven_center_on_the_pole_circle_has_its_circle_point_at_infinity() {
                 assert!(g.distance_estimate(*p) < 1e-9 * t.scale());
             }
         }
-        for y in points(Point2::new(1.0, 0.0), 6.0, 200) {
-            if f.margin(y).unwrap().abs() > 1e-7 * t.scale()
-                && cremona(&t).pole_circle().side(y).abs() > 1e-6
-            {
-                assert_eq!(
-                    f.classify(y, Method::Conic).unwrap(),
-                    f.classify(y, Method::Direct).unwrap(),
-                    "off = {off}, at {y}"
-                );
-            }
-        }
+        let near = points(Point2::new(1.0, 0.0), 6.0, 200);
+        classifiers_agree_off_the_band(&t, &f, &near, &format!("off = {off}, "));
     }
 }
 
@@ -322,17 +330,7 @@ fn a_filemon_line_tangent_to_the_image_pole_circle_gives_a_parabola() {
     let vp = Viewport::new(-10.0, 10.0, -10.0, 10.0).unwrap();
     assert_eq!(g.polylines(&vp, None).unwrap().len(), 1);
     // The classifiers still agree off the band.
-    for y in points(Point2::new(0.0, 0.0), 8.0, 300) {
-        if f.margin(y).unwrap().abs() > 1e-7 * t.scale()
-            && cremona(&t).pole_circle().side(y).abs() > 1e-6
-        {
-            assert_eq!(
-                f.classify(y, Method::Conic).unwrap(),
-                f.classify(y, Method::Direct).unwrap(),
-                "at {y}"
-            );
-        }
-    }
+    classifiers_agree_off_the_band(&t, &f, &points(Point2::new(0.0, 0.0), 8.0, 300), "");
 }
 
 #[test]

@@ -13,7 +13,7 @@ use burmester::{
 };
 mod common;
 
-use common::{bits, filemon, task, wrap};
+use common::{bits, filemon, solution_map, task, wrap};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
 
@@ -217,9 +217,7 @@ fn map_samples_match_the_linkage_at_each_point() {
         let f = filemon(&mut runner, 6.0);
         let g = Grid::from_bounds(-9.0, 9.0, -8.0, 8.0, 41, 37).unwrap();
         let limits = DesignLimits::default();
-        let map = f
-            .solution_map(&g, &limits, &Constraints::none(), &Control::new())
-            .unwrap();
+        let map = solution_map(&f, &g, &limits);
         let m = &map.columns;
         let branch = f.branch_map(&g, Method::Conic);
         assert_eq!(m.branch_free, branch);
@@ -270,10 +268,7 @@ fn limits_and_input_requirements_filter_the_mask() {
         min_grashof_margin: 0.0,
         ..DesignLimits::default()
     };
-    let base = f
-        .solution_map(&g, &loose, &Constraints::none(), &Control::new())
-        .unwrap()
-        .columns;
+    let base = solution_map(&f, &g, &loose).columns;
     for k in 0..g.len() {
         let feasible =
             base.valid[k] && base.branch_free[k] && base.direction[k] != 0 && base.one_circuit[k];
@@ -286,10 +281,7 @@ fn limits_and_input_requirements_filter_the_mask() {
         min_grashof_margin: 0.0,
         ..DesignLimits::default()
     };
-    let m = f
-        .solution_map(&g, &strict, &Constraints::none(), &Control::new())
-        .unwrap()
-        .columns;
+    let m = solution_map(&f, &g, &strict).columns;
     for k in 0..g.len() {
         let want = base.acceptable[k]
             && f64::from(base.min_transmission_rad[k]) >= 40f64.to_radians()
@@ -449,9 +441,7 @@ fn constraints_match_direct_geometry() {
         input: InputRequirement::Any,
         ..DesignLimits::default()
     };
-    let free = f
-        .solution_map(&g, &loose, &Constraints::none(), &Control::new())
-        .unwrap();
+    let free = solution_map(&f, &g, &loose);
     // An L-shaped (non-convex) base plate.
     let plate: Vec<Point2<f64>> = [
         (-8.0, -8.0),
@@ -515,14 +505,7 @@ fn best_pivots_are_acceptable_ordered_separated_and_pass_the_poses() {
     let t = burmester::example::task();
     let f = t.filemon(burmester::example::driven_center()).unwrap();
     let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 200, 200).unwrap();
-    let map = f
-        .solution_map(
-            &g,
-            &DesignLimits::default(),
-            &Constraints::none(),
-            &Control::new(),
-        )
-        .unwrap();
+    let map = solution_map(&f, &g, &DesignLimits::default());
     let best = map.best_pivots(5, None, RankBy::Transmission).unwrap();
     assert!(!best.is_empty());
     let sep = 0.02 * g.viewport().diagonal();
@@ -681,15 +664,19 @@ fn bad_limits_and_constraints_are_typed_errors() {
 
 /// The solution map of the built-in example over a square view.
 fn example_map(t: &Task, c0: Point2<f64>, g: &Grid) -> burmester::SolutionMap {
-    t.filemon(c0)
-        .unwrap()
-        .solution_map(
-            g,
-            &DesignLimits::default(),
-            &Constraints::none(),
-            &Control::new(),
-        )
-        .unwrap()
+    solution_map(&t.filemon(c0).unwrap(), g, &DesignLimits::default())
+}
+
+/// The built-in example's task and driven center, and an `n` by `n` grid
+/// over `[-8, 8]^2`.
+fn example_square(n: usize) -> (Task, Point2<f64>, Grid) {
+    let t = burmester::example::task();
+    let c0 = burmester::example::driven_center();
+    (
+        t,
+        c0,
+        Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, n, n).unwrap(),
+    )
 }
 
 /// The total length of a linkage's members from its joints at pose 1: the
@@ -711,9 +698,7 @@ fn members(t: &Task, l: &SynthesizedFourBar) -> f64 {
 
 #[test]
 fn size_ratio_is_the_members_over_the_span_and_scale_free() {
-    let t = burmester::example::task();
-    let c0 = burmester::example::driven_center();
-    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 60, 60).unwrap();
+    let (t, c0, g) = example_square(60);
     let map = example_map(&t, c0, &g);
     // The span: the largest distance between two pose positions.
     let p = t.poses();
@@ -759,9 +744,7 @@ fn size_ratio_is_the_members_over_the_span_and_scale_free() {
 
 #[test]
 fn rankings_order_by_their_documented_scores() {
-    let t = burmester::example::task();
-    let c0 = burmester::example::driven_center();
-    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 120, 120).unwrap();
+    let (t, c0, g) = example_square(120);
     let map = example_map(&t, c0, &g);
     let c = &map.columns;
     let acceptable: Vec<usize> = (0..g.len()).filter(|&k| c.acceptable[k]).collect();
@@ -827,9 +810,8 @@ fn rankings_order_by_their_documented_scores() {
 
 #[test]
 fn the_pareto_front_is_exactly_the_nondominated_acceptable_samples() {
-    let t = burmester::example::task();
-    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 100, 100).unwrap();
-    let map = example_map(&t, burmester::example::driven_center(), &g);
+    let (t, c0, g) = example_square(100);
+    let map = example_map(&t, c0, &g);
     let c = &map.columns;
     let front = map.pareto_front().unwrap();
     assert!(front.len() >= 3, "{}", front.len());
@@ -897,9 +879,8 @@ fn ties_go_to_the_more_compact_linkage() {
     // Columns from outside the core (as NumPy's): every acceptable sample
     // given the same transmission angle, so all tie and the ranking by
     // transmission orders them by size, smallest first.
-    let t = burmester::example::task();
-    let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 60, 60).unwrap();
-    let map = example_map(&t, burmester::example::driven_center(), &g);
+    let (t, c0, g) = example_square(60);
+    let map = example_map(&t, c0, &g);
     let c = &map.columns;
     let flat: Vec<f32> = c
         .min_transmission_rad

@@ -246,30 +246,33 @@ fn random_three_pose_tasks_pass_their_poses() {
     assert!(with_designs >= 2);
 }
 
+/// The notes' crank-rocker: pivots `(0, 0)` and `(4, 0)`, crank 1.5,
+/// coupler 3.5, rocker 3.
+fn notes_four_bar() -> burmester::FourBar {
+    burmester::FourBar::from_pivots(Point2::new(0.0, 0.0), Point2::new(4.0, 0.0), 1.5, 3.5, 3.0)
+        .unwrap()
+}
+
+/// The pose `[x, y, angle]` of the coupler of `fb` (open mode) at the
+/// input angle `th`: the point `(1, 1.5)` in the coupler's frame at the
+/// crank joint.
+fn coupler_pose(fb: &burmester::FourBar, th: f64) -> [f64; 3] {
+    let c = fb.solve(th, burmester::AssemblyMode::Open).unwrap();
+    let j = fb.joints_at(th, burmester::AssemblyMode::Open).unwrap();
+    let p = j.crank_joint + nalgebra::Rotation2::new(c.theta3) * nalgebra::Vector2::new(1.0, 1.5);
+    [p.x, p.y, c.theta3]
+}
+
 /// Four poses from a crank-rocker (`A0 = (0, 0)`, `B0 = (4, 0)`), turned
 /// and moved at random.
 fn four_poses(runner: &mut TestRunner) -> Task {
-    let fb = burmester::FourBar::from_pivots(
-        Point2::new(0.0, 0.0),
-        Point2::new(4.0, 0.0),
-        1.5,
-        3.5,
-        3.0,
-    )
-    .unwrap();
+    let fb = notes_four_bar();
     let (start, step, turn, dx) = (0.0f64..6.0, 0.5f64..1.2, -3.0f64..3.0, -3.0f64..3.0)
         .new_tree(runner)
         .unwrap()
         .current();
     let poses: Vec<[f64; 3]> = (0..4)
-        .map(|k| {
-            let th = start + step * k as f64;
-            let c = fb.solve(th, burmester::AssemblyMode::Open).unwrap();
-            let j = fb.joints_at(th, burmester::AssemblyMode::Open).unwrap();
-            let p = j.crank_joint
-                + nalgebra::Rotation2::new(c.theta3) * nalgebra::Vector2::new(1.0, 1.5);
-            [p.x, p.y, c.theta3]
-        })
+        .map(|k| coupler_pose(&fb, start + step * k as f64))
         .collect();
     Task::from_xya(&poses)
         .unwrap()
@@ -309,24 +312,10 @@ fn four_pose_tasks_beat_the_finer_pair_map() {
 
 #[test]
 fn five_poses_judge_every_pair_of_burmester_points() {
-    let fb = burmester::FourBar::from_pivots(
-        Point2::new(0.0, 0.0),
-        Point2::new(4.0, 0.0),
-        1.5,
-        3.5,
-        3.0,
-    )
-    .unwrap();
+    let fb = notes_four_bar();
     let poses: Vec<[f64; 3]> = [20.0f64, 70.0, 120.0, 170.0, 230.0]
         .iter()
-        .map(|d| {
-            let th = d.to_radians();
-            let c = fb.solve(th, burmester::AssemblyMode::Open).unwrap();
-            let j = fb.joints_at(th, burmester::AssemblyMode::Open).unwrap();
-            let p = j.crank_joint
-                + nalgebra::Rotation2::new(c.theta3) * nalgebra::Vector2::new(1.0, 1.5);
-            [p.x, p.y, c.theta3]
-        })
+        .map(|d| coupler_pose(&fb, d.to_radians()))
         .collect();
     let t = Task::from_xya(&poses).unwrap();
     let o = DesignOptions::default();

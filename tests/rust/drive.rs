@@ -421,6 +421,68 @@ fn swinging_task(runner: &mut TestRunner, n: usize) -> (Task, SynthesizedFourBar
     }
 }
 
+/// [`best_drive`] of `sfb` under `limits` by the balanced ranking, with
+/// the default options and no constraints.
+fn balanced_drive(sfb: &SynthesizedFourBar, limits: &DesignLimits) -> Result<Drive, Error> {
+    best_drive(
+        sfb,
+        limits,
+        &DriveOptions::default(),
+        &Constraints::none(),
+        RankBy::Balanced,
+        &Control::new(),
+    )
+}
+
+/// The six-bar of `drive` and the motion loop of `six`, both loops open,
+/// the drive's input at 0.
+fn open_six_bar(drive: FourBar, six: &SixBar) -> Result<SixBar, Error> {
+    SixBar::new(
+        drive,
+        *six.motion(),
+        0.0,
+        AssemblyMode::Open,
+        AssemblyMode::Open,
+    )
+}
+
+/// The drive context of `sfb` attached at `e` on `grid`, with [`anything`]
+/// as its limits and the default options.
+fn anything_context(
+    sfb: &SynthesizedFourBar,
+    e: Point2<f64>,
+    grid: &Grid,
+    constraints: &Constraints,
+) -> Result<DriveContext, Error> {
+    DriveContext::new(
+        sfb,
+        e,
+        grid,
+        &anything(),
+        &DriveOptions::default(),
+        constraints,
+    )
+}
+
+/// [`search_drives`] of `sfb` with [`anything`] as its limits, the default
+/// options and no constraints.
+fn search_anything(
+    sfb: &SynthesizedFourBar,
+    search: &AttachmentSearch,
+    rank_by: RankBy,
+    control: &Control<'_>,
+) -> Result<burmester::design::DriveSearch, Error> {
+    search_drives(
+        sfb,
+        search,
+        &anything(),
+        &DriveOptions::default(),
+        &Constraints::none(),
+        rank_by,
+        control,
+    )
+}
+
 /// Limits under which every drive is acceptable.
 fn anything() -> DesignLimits {
     DesignLimits {
@@ -684,15 +746,7 @@ fn the_examples_triple_rocker_gets_a_motor() {
     let best = map.best_pivots(1, None, RankBy::Transmission).unwrap();
     let sfb = best[0].linkage;
     assert_eq!(sfb.figures.grashof, burmester::Grashof::TripleRocker);
-    let d = best_drive(
-        &sfb,
-        &limits,
-        &DriveOptions::default(),
-        &Constraints::none(),
-        RankBy::Balanced,
-        &Control::new(),
-    )
-    .unwrap();
+    let d = balanced_drive(&sfb, &limits).unwrap();
     assert!(d.acceptable && d.sixbar.crank_turns_fully());
     assert!(d.figures.min_transmission >= limits.min_transmission);
     let got = check_drive(&task, &d, 20_000);
@@ -803,15 +857,7 @@ fn no_drive_says_why() {
         min_transmission: 89f64.to_radians(),
         ..DesignLimits::default()
     };
-    let e = best_drive(
-        &sfb,
-        &strict,
-        &DriveOptions::default(),
-        &none,
-        RankBy::Balanced,
-        &Control::new(),
-    )
-    .unwrap_err();
+    let e = balanced_drive(&sfb, &strict).unwrap_err();
     match e {
         Error::Drive(DriveError::NoAcceptableDrive {
             searched,
@@ -857,17 +903,10 @@ fn constraints_hold_over_the_whole_turn() {
         .map(|p| (p - q).norm())
         .fold(f64::INFINITY, f64::min)
     };
-    let probe = DriveContext::new(
-        &sfb,
-        e,
-        &grid,
-        &anything(),
-        &DriveOptions::default(),
-        &Constraints::none(),
-    )
-    .unwrap()
-    .map(&Control::new())
-    .unwrap();
+    let probe = anything_context(&sfb, e, &grid, &Constraints::none())
+        .unwrap()
+        .map(&Control::new())
+        .unwrap();
     let o = (0..grid.len())
         .filter(|&k| probe.columns.valid[k])
         .map(|k| grid_point(&grid, k))
@@ -888,24 +927,8 @@ fn constraints_hold_over_the_whole_turn() {
         travel_samples: 64,
         envelope: None,
     };
-    let ctx = DriveContext::new(
-        &sfb,
-        e,
-        &grid,
-        &anything(),
-        &DriveOptions::default(),
-        &constraints,
-    )
-    .unwrap();
-    let free = DriveContext::new(
-        &sfb,
-        e,
-        &grid,
-        &anything(),
-        &DriveOptions::default(),
-        &Constraints::none(),
-    )
-    .unwrap();
+    let ctx = anything_context(&sfb, e, &grid, &constraints).unwrap();
+    let free = anything_context(&sfb, e, &grid, &Constraints::none()).unwrap();
     // An envelope would go unchecked over the crank's turn: refused.
     let big = 1e6;
     let with_envelope = Constraints {
@@ -917,14 +940,7 @@ fn constraints_hold_over_the_whole_turn() {
         ]),
         ..Constraints::none()
     };
-    let refused = DriveContext::new(
-        &sfb,
-        e,
-        &grid,
-        &anything(),
-        &DriveOptions::default(),
-        &with_envelope,
-    );
+    let refused = anything_context(&sfb, e, &grid, &with_envelope);
     assert!(
         matches!(&refused, Err(burmester::Error::InvalidInput(burmester::InvalidInput::UnknownName { found, .. })) if found == "envelope"),
         "{refused:?}"
@@ -1033,12 +1049,9 @@ fn attachment_search_ranks_and_stops() {
         assert!(d <= t && t == 12 * 32);
         last.fetch_max(d, Ordering::Relaxed);
     };
-    let found = search_drives(
+    let found = search_anything(
         &sfb,
         &search,
-        &anything(),
-        &DriveOptions::default(),
-        &Constraints::none(),
         RankBy::Balanced,
         &Control::new().with_progress(&hook),
     )
@@ -1052,12 +1065,9 @@ fn attachment_search_ranks_and_stops() {
     // Cancelled after the first progress report.
     let stop = AtomicBool::new(false);
     let hook = |_: usize, _: usize| stop.store(true, Ordering::Relaxed);
-    let e = search_drives(
+    let e = search_anything(
         &sfb,
         &search,
-        &anything(),
-        &DriveOptions::default(),
-        &Constraints::none(),
         RankBy::Balanced,
         &Control::new().with_cancel(&stop).with_progress(&hook),
     )
@@ -1067,16 +1077,7 @@ fn attachment_search_ranks_and_stops() {
         "{e}"
     );
     // Rankings without a score are refused.
-    let e = search_drives(
-        &sfb,
-        &search,
-        &anything(),
-        &DriveOptions::default(),
-        &Constraints::none(),
-        RankBy::Pareto,
-        &Control::new(),
-    )
-    .unwrap_err();
+    let e = search_anything(&sfb, &search, RankBy::Pareto, &Control::new()).unwrap_err();
     assert!(matches!(e, Error::InvalidInput(_)));
     let mut bad = search.clone();
     bad.samples = DriveContext::MAX_SEARCH_SAMPLES + 1;
@@ -1135,16 +1136,7 @@ fn documented_maxima_and_cancelling() {
         reach: 4.0,
         samples: DriveContext::MAX_SEARCH_SAMPLES,
     };
-    let found = search_drives(
-        &sfb,
-        &search,
-        &anything(),
-        &DriveOptions::default(),
-        &Constraints::none(),
-        RankBy::Compact,
-        &Control::new(),
-    )
-    .unwrap();
+    let found = search_anything(&sfb, &search, RankBy::Compact, &Control::new()).unwrap();
     assert_eq!(found.searched, DriveContext::MAX_SEARCH_SAMPLES.pow(2));
     // The most crank angles of a turn.
     if let Some(d) = found.drives.first() {
@@ -1200,24 +1192,8 @@ fn figures_are_invariant_under_similarities() {
         a0 + Vector2::new(0.4, -3.1),
     ] {
         let g = Grid::from_bounds(-1.0, 1.0, -1.0, 1.0, 1, 1).unwrap();
-        let c1 = DriveContext::new(
-            &sfb,
-            e,
-            &g,
-            &anything(),
-            &DriveOptions::default(),
-            &Constraints::none(),
-        )
-        .unwrap();
-        let c2 = DriveContext::new(
-            &s2,
-            tf(e),
-            &g,
-            &anything(),
-            &DriveOptions::default(),
-            &Constraints::none(),
-        )
-        .unwrap();
+        let c1 = anything_context(&sfb, e, &g, &Constraints::none()).unwrap();
+        let c2 = anything_context(&s2, tf(e), &g, &Constraints::none()).unwrap();
         match (c1.drive(d0), c2.drive(tf(d0))) {
             (Ok(x), Ok(y)) => {
                 let (f, h) = (x.figures, y.figures);
@@ -1279,26 +1255,12 @@ fn sixbar_from_joints_and_bad_input() {
     // A drive whose output pivot is not A0.
     let drive =
         FourBar::from_pivots(Point2::new(-1.0, 3.0), Point2::new(0.5, 0.0), 0.4, 3.0, 2.0).unwrap();
-    let e = SixBar::new(
-        drive,
-        *six.motion(),
-        0.0,
-        AssemblyMode::Open,
-        AssemblyMode::Open,
-    )
-    .unwrap_err();
+    let e = open_six_bar(drive, &six).unwrap_err();
     assert_eq!(e.cause(), "pivot_mismatch");
     // Beyond the drive's reach: the error of the loop.
     let drive =
         FourBar::from_pivots(Point2::new(-1.0, 3.0), Point2::new(0.0, 0.0), 2.5, 1.0, 2.0).unwrap();
-    let six2 = SixBar::new(
-        drive,
-        *six.motion(),
-        0.0,
-        AssemblyMode::Open,
-        AssemblyMode::Open,
-    )
-    .unwrap();
+    let six2 = open_six_bar(drive, &six).unwrap();
     assert!(!six2.crank_turns_fully());
     assert!(six2.min_transmission_angles().is_none());
     assert!(!six2.dead_positions().is_empty());
@@ -1374,14 +1336,7 @@ fn size_limits_bound_every_acceptable_drive() {
             }
         }
         // The best drive under the limits keeps them too.
-        if let Ok(d) = best_drive(
-            &sfb,
-            &limits,
-            &DriveOptions::default(),
-            &Constraints::none(),
-            RankBy::Balanced,
-            &Control::new(),
-        ) {
+        if let Ok(d) = balanced_drive(&sfb, &limits) {
             let (s, l) = sixbar_size(&task, &d);
             assert!(s <= max_size * (1.0 + 1e-9) && l <= max_link * (1.0 + 1e-12));
         }

@@ -30,52 +30,26 @@ fn replay(target: &str, check: fn(&[u8])) {
     assert!(count > 0, "{target}: no corpus files found");
 }
 
-#[test]
-fn fourbar() {
-    replay("fourbar", checks::fourbar);
+/// One test per fuzz target, named after it, replaying its files through
+/// its check.
+macro_rules! replay_targets {
+    ($($target:ident),* $(,)?) => {$(
+        #[test]
+        fn $target() {
+            replay(stringify!($target), checks::$target);
+        }
+    )*};
 }
 
-#[test]
-fn task_maps() {
-    replay("task_maps", checks::task_maps);
-}
-
-#[test]
-fn filemon_classify() {
-    replay("filemon_classify", checks::filemon_classify);
-}
-
-#[test]
-fn conic() {
-    replay("conic", checks::conic);
-}
-
-#[test]
-fn solution_map() {
-    replay("solution_map", checks::solution_map);
-}
-
-#[test]
-fn conic_polylines() {
-    replay("conic_polylines", checks::conic_polylines);
-}
-
-#[test]
-fn curves() {
-    replay("curves", checks::curves);
-}
-
-#[test]
-fn burmester_points() {
-    replay("burmester_points", checks::burmester_points);
-}
-
-#[test]
-fn pair_map() {
-    replay("pair_map", checks::pair_map);
-}
-
-#[test]
-fn atlas() {
-    replay("atlas", checks::atlas);
-}
+replay_targets!(
+    fourbar,
+    task_maps,
+    filemon_classify,
+    conic,
+    solution_map,
+    conic_polylines,
+    curves,
+    burmester_points,
+    pair_map,
+    atlas,
+);

@@ -21,13 +21,8 @@ use burmester::{
 /// The notes' worked example (positions-4-5.md, section 6): four poses of
 /// the coupler of the crank-rocker `A0 = (0, 0)`, `B0 = (4, 0)`.
 fn example_poses() -> [Pose; 4] {
-    let d = |x: f64, y: f64, a: f64| Pose::new(x, y, a.to_radians());
-    [
-        d(1.049199280691, 2.279426358634, 45.220037141544),
-        d(0.734502065472, 3.198658887874, 26.633426990744),
-        d(-0.378159188147, 3.063048993013, 21.786789298262),
-        d(-1.268710439724, 2.051150142014, 27.048624103934),
-    ]
+    let [p1, p2, p3, p4, _] = common::notes_poses();
+    [p1, p2, p3, p4]
 }
 
 fn example_task() -> Task {
@@ -35,14 +30,31 @@ fn example_task() -> Task {
 }
 
 fn map(task: &Task, n_driving: usize, n_driven: usize) -> PairMap {
+    map_with(task, n_driving, n_driven, &Control::new()).unwrap()
+}
+
+/// The example task's curves, and its pair map (as [`map`]).
+fn four_and_map(n_driving: usize, n_driven: usize) -> (FourPositions, PairMap) {
+    let task = example_task();
+    let four = FourPositions::new(task.poses()).unwrap();
+    (four, map(&task, n_driving, n_driven))
+}
+
+/// The pair map of `task` at the default limits, with no constraints,
+/// under `control`.
+fn map_with(
+    task: &Task,
+    n_driving: usize,
+    n_driven: usize,
+    control: &Control<'_>,
+) -> Result<PairMap, Error> {
     task.pair_map(
         n_driving,
         n_driven,
         &DesignLimits::default(),
         &Constraints::default(),
-        &Control::new(),
+        control,
     )
-    .unwrap()
 }
 
 /// The sample of `samples` whose center is nearest `p`, and its distance.
@@ -161,9 +173,7 @@ fn a_dyad_with_itself_is_no_linkage() {
 
 #[test]
 fn branch_free_cells_agree_with_filemons_four_lines() {
-    let task = example_task();
-    let four = FourPositions::new(task.poses()).unwrap();
-    let m = map(&task, 400, 40);
+    let (four, m) = four_and_map(400, 40);
     let ctx = &m.context;
     let nx = ctx.grid.nx();
     let (mut free, mut defective) = (0, 0);
@@ -196,9 +206,7 @@ fn branch_free_cells_agree_with_filemons_four_lines() {
 
 #[test]
 fn the_direction_of_a_turning_crank_is_its_crank_order() {
-    let task = example_task();
-    let four = FourPositions::new(task.poses()).unwrap();
-    let m = map(&task, 300, 30);
+    let (four, m) = four_and_map(300, 30);
     let ctx = &m.context;
     let nx = ctx.grid.nx();
     let mut seen = [0usize; 3];
@@ -261,15 +269,7 @@ fn the_map_does_not_depend_on_the_threads_or_the_progress_hook() {
         assert_eq!(total, 257);
         rows.fetch_max(done, Ordering::Relaxed);
     };
-    let followed = task
-        .pair_map(
-            300,
-            257,
-            &DesignLimits::default(),
-            &Constraints::default(),
-            &Control::new().with_progress(&hook),
-        )
-        .unwrap();
+    let followed = map_with(&task, 300, 257, &Control::new().with_progress(&hook)).unwrap();
     assert_eq!(rows.into_inner(), 257);
     assert_eq!(bits(&followed.columns), bits(&many.columns));
 }
@@ -374,15 +374,7 @@ fn bad_input_gives_typed_errors() {
 fn a_cancelled_map_stops_with_cancelled() {
     let task = example_task();
     let stop = AtomicBool::new(true);
-    let e = task
-        .pair_map(
-            64,
-            64,
-            &DesignLimits::default(),
-            &Constraints::default(),
-            &Control::new().with_cancel(&stop),
-        )
-        .unwrap_err();
+    let e = map_with(&task, 64, 64, &Control::new().with_cancel(&stop)).unwrap_err();
     assert_eq!(e, Error::Cancelled { done: 0, total: 64 });
 }
 

@@ -98,30 +98,36 @@ fn linkage() -> impl Strategy<Value = FourBar> {
         })
 }
 
+/// `fb` at the input angle `t2_deg` degrees, in the open and the crossed
+/// mode: `[theta3, theta4]` in degrees rounded to `1 / per_degree`, to the
+/// printed digits.
+fn assert_printed(fb: FourBar, t2_deg: f64, per_degree: f64, open: [f64; 2], crossed: [f64; 2]) {
+    let t2 = t2_deg.to_radians();
+    let round = |x: f64| (x.to_degrees() * per_degree).round() / per_degree;
+    let o = fb.solve(t2, AssemblyMode::Open).unwrap();
+    assert_eq!(round(o.theta3), open[0]);
+    assert_eq!(round(o.theta4), open[1]);
+    let c = fb.solve(t2, AssemblyMode::Crossed).unwrap();
+    assert_eq!(round(c.theta3), crossed[0]);
+    assert_eq!(round(c.theta4), crossed[1]);
+}
+
 #[test]
 fn norton_example_4_1_to_printed_digits() {
     let fb = FourBar::new(100.0, 40.0, 120.0, 80.0).unwrap();
-    let t2 = 40f64.to_radians();
-    let round3 = |x: f64| (x.to_degrees() * 1e3).round() / 1e3;
-    let o = fb.solve(t2, AssemblyMode::Open).unwrap();
-    assert_eq!(round3(o.theta3), 20.298);
-    assert_eq!(round3(o.theta4), 57.325);
-    let c = fb.solve(t2, AssemblyMode::Crossed).unwrap();
-    assert_eq!(round3(c.theta3), -60.978);
-    assert_eq!(round3(c.theta4), -98.005);
+    assert_printed(fb, 40.0, 1e3, [20.298, 57.325], [-60.978, -98.005]);
 }
 
 #[test]
 fn second_cross_check_to_printed_digits() {
     let fb = FourBar::new(4.0, 1.0, 3.0, 3.0).unwrap();
-    let t2 = 60f64.to_radians();
-    let round9 = |x: f64| (x.to_degrees() * 1e9).round() / 1e9;
-    let o = fb.solve(t2, AssemblyMode::Open).unwrap();
-    assert_eq!(round9(o.theta3), 39.165923859);
-    assert_eq!(round9(o.theta4), 113.038303645);
-    let c = fb.solve(t2, AssemblyMode::Crossed).unwrap();
-    assert_eq!(round9(c.theta3), -66.961696355);
-    assert_eq!(round9(c.theta4), -140.834076141);
+    assert_printed(
+        fb,
+        60.0,
+        1e9,
+        [39.165923859, 113.038303645],
+        [-66.961696355, -140.834076141],
+    );
 }
 
 #[test]

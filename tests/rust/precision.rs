@@ -70,6 +70,16 @@ fn rot_neg(c: &BigRational, s: &BigRational, w: &V) -> V {
     (c * &w.0 + s * &w.1, c * &w.1 - s * &w.0)
 }
 
+/// A random construction, its task, its exact reference, the task's scale
+/// and the construction's Filemon lines and conics.
+fn case(runner: &mut TestRunner) -> (Filemon, Task, Exact, f64, [Line; 2], [Conic; 2]) {
+    let f = filemon(runner, 8.0);
+    let t = *f.task();
+    let ex = Exact::new(&t, &f);
+    let (lines, conics) = (f.lines().unwrap(), f.conics().unwrap());
+    (f, t, ex, t.scale(), lines, conics)
+}
+
 /// The closed form's parameters, exactly as doubles.
 struct Exact {
     origin: Point2<f64>,
@@ -139,12 +149,7 @@ fn conic_signs_match_the_exact_closed_form_outside_the_band() {
     let mut checked = 0usize;
     let mut wrong_inside = 0usize;
     for _ in 0..24 {
-        let f = filemon(&mut runner, 8.0);
-        let t = *f.task();
-        let ex = Exact::new(&t, &f);
-        let s = t.scale();
-        let [la, lb] = f.lines().unwrap();
-        let [ga, gb] = f.conics().unwrap();
+        let (_, t, ex, s, [la, lb], [ga, gb]) = case(&mut runner);
         for (line, g) in [(la, ga), (lb, gb)] {
             for k in 0..12 {
                 // A line through a point near the poles, in some direction.
@@ -200,12 +205,7 @@ fn classify_matches_the_exact_classification_at_random_points() {
     let mut runner = TestRunner::deterministic();
     let mut checked = 0;
     for _ in 0..30 {
-        let f = filemon(&mut runner, 8.0);
-        let t = *f.task();
-        let ex = Exact::new(&t, &f);
-        let s = t.scale();
-        let [la, lb] = f.lines().unwrap();
-        let [ga, gb] = f.conics().unwrap();
+        let (f, t, ex, s, [la, lb], [ga, gb]) = case(&mut runner);
         for _ in 0..100 {
             let (x, y) = (-8.0f64..8.0, -8.0f64..8.0)
                 .new_tree(&mut runner)

@@ -17,13 +17,14 @@ const CASES: u32 = 2000;
 
 fn wrap_half(a: f64) -> f64 {
     // modulo pi into (-pi/2, pi/2]
-    let mut r = a % PI;
+    let r = a % PI;
     if r > PI / 2.0 {
-        r -= PI;
+        r - PI
     } else if r <= -PI / 2.0 {
-        r += PI;
+        r + PI
+    } else {
+        r
     }
-    r
 }
 
 /// Well-conditioned random tasks: rotations between poses at least 0.1 rad
@@ -527,13 +528,4 @@ proptest! {
     }
 }
 
-fn seg_dist(c: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
-    let ab = b - a;
-    let l2 = ab.norm_squared();
-    let t = if l2 > 0.0 {
-        ((c - a).dot(&ab) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (a + ab * t - c).norm()
-}
+use common::seg_dist;

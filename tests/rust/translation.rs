@@ -7,9 +7,10 @@
 use std::f64::consts::PI;
 
 use burmester::{
-    AssemblyMode, Constraints, Control, DegenerateError, DesignLimits, Error, FourBar, Grid,
-    Method, Point2, Pole, Pose, Similarity, Task, Vector2,
+    AssemblyMode, DegenerateError, DesignLimits, Error, Filemon, FourBar, Grid, Method, Point2,
+    Pole, Pose, Similarity, Task, Vector2,
 };
+mod common;
 
 /// `D_1k(z) = p_k + e^{i (phi_k - phi_1)} (z - p_1)`, written here from the
 /// poses (not through the crate's motion).
@@ -33,6 +34,24 @@ fn poses(xya: &[[f64; 3]]) -> Vec<Pose> {
 
 /// Two poses, 1-based.
 type Pair = (usize, usize);
+
+/// A task of [`translation_tasks`]: as given, as a task, its driven
+/// center and its Filemon construction.
+type Translated = (Vec<[f64; 3]>, Task, Point2<f64>, Filemon);
+
+/// Each of [`translation_tasks`] as given, as a task, and its Filemon
+/// construction for the driven center `(4, -1)` (with that center).
+fn translated_filemons() -> Vec<Translated> {
+    translation_tasks()
+        .into_iter()
+        .map(|(xya, _)| {
+            let t = Task::from_xya(&xya).unwrap();
+            let c0 = Point2::new(4.0, -1.0);
+            let f = t.filemon(c0).unwrap();
+            (xya, t, c0, f)
+        })
+        .collect()
+}
 
 /// Tasks with a pure translation between poses (1,2), (1,3), (2,3), one
 /// with a turn of a whole revolution, and one with two pairs within the
@@ -333,10 +352,7 @@ fn branch_maps_agree_with_the_built_linkages() {
 
 #[test]
 fn the_conics_are_exact_on_the_transformed_lines() {
-    for (xya, _) in translation_tasks() {
-        let t = Task::from_xya(&xya).unwrap();
-        let c0 = Point2::new(4.0, -1.0);
-        let f = t.filemon(c0).unwrap();
+    for (xya, t, _, f) in translated_filemons() {
         for (k, line) in f.all_lines().iter().enumerate() {
             let conic = f.line_conic(k + 1).unwrap();
             // The curve passes through the finite poles and C0.
@@ -420,10 +436,7 @@ fn a_rotation_below_and_above_the_bound_gives_nearby_maps() {
 
 #[test]
 fn translated_tasks_are_invariant_under_similarities() {
-    for (xya, _) in translation_tasks() {
-        let t = Task::from_xya(&xya).unwrap();
-        let c0 = Point2::new(4.0, -1.0);
-        let f = t.filemon(c0).unwrap();
+    for (_, t, c0, f) in translated_filemons() {
         for sim in [
             Similarity::new(2.5, 0.7, Vector2::new(-3.0, 11.0)).unwrap(),
             Similarity::new(1e-3, -2.0, Vector2::new(5.0, 0.0)).unwrap(),
@@ -458,9 +471,7 @@ fn the_solution_map_runs_on_a_translated_task() {
     let f = t.filemon(Point2::new(4.0, -1.0)).unwrap();
     let g = Grid::from_bounds(-8.0, 10.0, -8.0, 10.0, 40, 40).unwrap();
     let limits = DesignLimits::default();
-    let map = f
-        .solution_map(&g, &limits, &Constraints::none(), &Control::new())
-        .unwrap();
+    let map = common::solution_map(&f, &g, &limits);
     let m = &map.columns;
     assert_eq!(m.branch_free, f.branch_map(&g, Method::Conic));
     let (mut valid, mut acceptable) = (0, 0);

@@ -15,44 +15,43 @@ create_exception!(
     PyValueError,
     "Base of every error raised by burmester (a ValueError)."
 );
-create_exception!(
-    burmester,
-    InvalidInputError,
-    BurmesterError,
-    "A number or name passed in is not acceptable: NaN, infinite, zero or negative length, unknown name."
-);
-create_exception!(
-    burmester,
-    AssemblyError,
-    BurmesterError,
-    "The linkage cannot be assembled as asked (the loop does not close)."
-);
-create_exception!(
-    burmester,
-    DegenerateError,
-    BurmesterError,
-    "The geometry is degenerate: an answer lies at infinity, or the task has no unique answer."
-);
-create_exception!(
-    burmester,
-    DriveError,
-    BurmesterError,
-    "A six-bar cannot be built as asked, or a linkage cannot be driven from a motor by an added dyad (its cause says why)."
-);
+/// The one table of the binding's exceptions: each kind of core error (a
+/// variant of `burmester::Error` that wraps an enum of causes) and the
+/// `BurmesterError` subclass it raises, with its docstring. Causes and
+/// fields come from the core's one list of errors (`burmester::error`).
+macro_rules! exceptions {
+    ($($Kind:ident => $Class:ident: $doc:literal,)*) => {
+        $(create_exception!(burmester, $Class, BurmesterError, $doc);)*
+
+        /// The Python exception of a core error, with its message: the
+        /// kind's class, `KeyboardInterrupt` for a cancelled computation,
+        /// `MemoryError` for an allocation that failed.
+        fn exception(e: &burmester::Error, msg: String) -> PyErr {
+            match e {
+                $(burmester::Error::$Kind(_) => $Class::new_err(msg),)*
+                burmester::Error::Cancelled { .. } => PyKeyboardInterrupt::new_err(msg),
+                burmester::Error::OutOfMemory { .. } => PyMemoryError::new_err(msg),
+                _ => BurmesterError::new_err(msg),
+            }
+        }
+    };
+}
+
+exceptions! {
+    InvalidInput => InvalidInputError:
+        "A number or name passed in is not acceptable: NaN, infinite, zero or negative length, unknown name.",
+    Assembly => AssemblyError:
+        "The linkage cannot be assembled as asked (the loop does not close).",
+    Degenerate => DegenerateError:
+        "The geometry is degenerate: an answer lies at infinity, or the task has no unique answer.",
+    Drive => DriveError:
+        "A six-bar cannot be built as asked, or a linkage cannot be driven from a motor by an added dyad (its cause says why).",
+}
 
 /// Maps a core error to its Python exception, with its cause and fields as
 /// attributes.
 pub(crate) fn to_py(e: burmester::Error) -> PyErr {
-    let msg = e.to_string();
-    let err = match e {
-        burmester::Error::InvalidInput(_) => InvalidInputError::new_err(msg),
-        burmester::Error::Assembly(_) => AssemblyError::new_err(msg),
-        burmester::Error::Degenerate(_) => DegenerateError::new_err(msg),
-        burmester::Error::Drive(_) => DriveError::new_err(msg),
-        burmester::Error::Cancelled { .. } => PyKeyboardInterrupt::new_err(msg),
-        burmester::Error::OutOfMemory { .. } => PyMemoryError::new_err(msg),
-        _ => BurmesterError::new_err(msg),
-    };
+    let err = exception(&e, e.to_string());
     Python::attach(|py| {
         let value = err.value(py);
         // Setting attributes on a fresh exception object cannot fail in

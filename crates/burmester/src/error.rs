@@ -29,48 +29,6 @@ use thiserror::Error;
 /// Result type of the crate.
 pub type Result<T, E = Error> = core::result::Result<T, E>;
 
-/// Any error of the crate.
-#[derive(Debug, Clone, PartialEq, Error)]
-#[non_exhaustive]
-pub enum Error {
-    /// An argument is not acceptable.
-    #[error(transparent)]
-    InvalidInput(#[from] InvalidInput),
-    /// The linkage cannot be assembled as asked.
-    #[error(transparent)]
-    Assembly(#[from] AssemblyError),
-    /// The geometry is degenerate (an answer at infinity, or no unique answer).
-    #[error(transparent)]
-    Degenerate(#[from] DegenerateError),
-    /// The computation was cancelled through its [`Control`](crate::Control)
-    /// before it finished; nothing it was filling holds a complete answer.
-    #[error(
-        "the computation was cancelled after {done} of {total} rows; run it again to get a \
-         complete result"
-    )]
-    Cancelled {
-        /// Rows (or other units of work) finished when it stopped.
-        done: usize,
-        /// Rows in all.
-        total: usize,
-    },
-    /// A buffer sized by the input could not be allocated.
-    #[error(
-        "{what} needs {bytes} bytes, more than can be allocated; ask for fewer samples (a smaller \
-         grid) or split the work"
-    )]
-    OutOfMemory {
-        /// What was being allocated.
-        what: &'static str,
-        /// How many bytes it needs.
-        bytes: usize,
-    },
-    /// A six-bar cannot be built as asked, or a linkage cannot be driven
-    /// from a motor by an added dyad.
-    #[error(transparent)]
-    Drive(#[from] DriveError),
-}
-
 /// A number in a message: short (at most 17 significant digits, in
 /// scientific notation when very large or very small), so that a huge value
 /// never fills a message with hundreds of digits.
@@ -145,6 +103,211 @@ impl fmt::Display for PolygonProblem {
     }
 }
 
+/// The value of a field of an error, for bindings ([`Error::fields`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Field {
+    /// A number.
+    Float(f64),
+    /// A count or an index.
+    Int(usize),
+    /// A name or a description.
+    Str(String),
+}
+
+impl From<&f64> for Field {
+    fn from(v: &f64) -> Self {
+        Field::Float(*v)
+    }
+}
+
+impl From<&usize> for Field {
+    fn from(v: &usize) -> Self {
+        Field::Int(*v)
+    }
+}
+
+impl From<&str> for Field {
+    fn from(v: &str) -> Self {
+        Field::Str(v.to_owned())
+    }
+}
+
+impl From<&&str> for Field {
+    fn from(v: &&str) -> Self {
+        Field::Str((*v).to_owned())
+    }
+}
+
+impl From<&String> for Field {
+    fn from(v: &String) -> Self {
+        Field::Str(v.clone())
+    }
+}
+
+/// `name` in snake case: an underscore before every capital but the first,
+/// every capital lowered (`"NotADyad"` gives `"not_a_dyad"`); `N` is its
+/// length ([`snake_case_len`]).
+const fn snake_case<const N: usize>(name: &str) -> [u8; N] {
+    let name = name.as_bytes();
+    let mut out = [0u8; N];
+    let (mut i, mut o) = (0, 0);
+    while i < name.len() {
+        let c = name[i];
+        if c.is_ascii_uppercase() && i > 0 {
+            out[o] = b'_';
+            o += 1;
+        }
+        out[o] = c.to_ascii_lowercase();
+        o += 1;
+        i += 1;
+    }
+    out
+}
+
+/// The length of `name` in snake case ([`snake_case`]).
+const fn snake_case_len(name: &str) -> usize {
+    let name = name.as_bytes();
+    let mut n = name.len();
+    let mut i = 1;
+    while i < name.len() {
+        if name[i].is_ascii_uppercase() {
+            n += 1;
+        }
+        i += 1;
+    }
+    n
+}
+
+/// The one list of the crate's errors. Each enum is written once, as
+/// `thiserror` reads it (its messages in `#[error]`), and from that list
+/// come the enum, its `cause()` (the variant's name in snake case) and its
+/// `fields()` (the variant's fields by name, in order, each as a [`Field`];
+/// `field: type => expression` gives the field as that expression
+/// instead). A variant that wraps another error (`Kind(#[from] Inner)`)
+/// takes its cause and fields from it. A new error is one variant here.
+macro_rules! error_enums {
+    ($(
+        $(#[$attr:meta])*
+        pub enum $Enum:ident {
+            $(
+                $(#[$vattr:meta])*
+                $Variant:ident
+                $(( $(#[$iattr:meta])* $Inner:ty ))?
+                $({
+                    $( $(#[$fattr:meta])* $field:ident: $fty:ty $(=> $conv:expr)? ),* $(,)?
+                })?
+            ),* $(,)?
+        }
+    )*) => {$(
+        $(#[$attr])*
+        pub enum $Enum {
+            $(
+                $(#[$vattr])*
+                $Variant
+                $(( $(#[$iattr])* $Inner ))?
+                $({ $( $(#[$fattr])* $field: $fty, )* })?,
+            )*
+        }
+
+        impl $Enum {
+            /// The cause: the variant's name in snake case (for example
+            /// `"not_finite"`, `"out_of_reach"`, `"at_infinity"`); the
+            /// Python exception's `cause`.
+            pub fn cause(&self) -> &'static str {
+                match self {
+                    $(error_enums!(@pattern $Enum $Variant inner $(($Inner))?) => {
+                        error_enums!(@cause $Variant inner $(($Inner))?)
+                    })*
+                }
+            }
+
+            /// The variant's fields by name, as data (the Python binding
+            /// sets them as attributes of its exceptions).
+            pub fn fields(&self) -> Vec<(&'static str, Field)> {
+                match self {
+                    $(error_enums!(
+                        @pattern $Enum $Variant inner $(($Inner))? $({ $($field)* })?
+                    ) => error_enums!(
+                        @fields inner $(($Inner))? $({ $($field $(=> $conv)?;)* })?
+                    ),)*
+                }
+            }
+        }
+    )*};
+    (@pattern $Enum:ident $Variant:ident $inner:ident ($Inner:ty)) => {
+        $Enum::$Variant($inner)
+    };
+    (@pattern $Enum:ident $Variant:ident $inner:ident $({ $($field:ident)* })?) => {
+        $Enum::$Variant { $($($field,)*)? .. }
+    };
+    (@cause $Variant:ident $inner:ident ($Inner:ty)) => {
+        $inner.cause()
+    };
+    (@cause $Variant:ident $inner:ident) => {{
+        const NAME: &str = stringify!($Variant);
+        const BYTES: [u8; snake_case_len(NAME)] = snake_case(NAME);
+        const CAUSE: &str = match core::str::from_utf8(&BYTES) {
+            Ok(cause) => cause,
+            Err(_) => panic!("a variant's name is ASCII"),
+        };
+        CAUSE
+    }};
+    (@fields $inner:ident ($Inner:ty)) => {
+        $inner.fields()
+    };
+    (@fields $inner:ident $({ $($field:ident $(=> $conv:expr)?;)* })?) => {
+        vec![$($((stringify!($field), error_enums!(@field $field $(=> $conv)?)),)*)?]
+    };
+    (@field $field:ident => $conv:expr) => {
+        Field::from($conv)
+    };
+    (@field $field:ident) => {
+        Field::from($field)
+    };
+}
+error_enums! {
+/// Any error of the crate.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// An argument is not acceptable.
+    #[error(transparent)]
+    InvalidInput(#[from] InvalidInput),
+    /// The linkage cannot be assembled as asked.
+    #[error(transparent)]
+    Assembly(#[from] AssemblyError),
+    /// The geometry is degenerate (an answer at infinity, or no unique answer).
+    #[error(transparent)]
+    Degenerate(#[from] DegenerateError),
+    /// The computation was cancelled through its [`Control`](crate::Control)
+    /// before it finished; nothing it was filling holds a complete answer.
+    #[error(
+        "the computation was cancelled after {done} of {total} rows; run it again to get a \
+         complete result"
+    )]
+    Cancelled {
+        /// Rows (or other units of work) finished when it stopped.
+        done: usize,
+        /// Rows in all.
+        total: usize,
+    },
+    /// A buffer sized by the input could not be allocated.
+    #[error(
+        "{what} needs {bytes} bytes, more than can be allocated; ask for fewer samples (a smaller \
+         grid) or split the work"
+    )]
+    OutOfMemory {
+        /// What was being allocated.
+        what: &'static str,
+        /// How many bytes it needs.
+        bytes: usize,
+    },
+    /// A six-bar cannot be built as asked, or a linkage cannot be driven
+    /// from a motor by an added dyad.
+    #[error(transparent)]
+    Drive(#[from] DriveError),
+}
+
 /// An argument is not acceptable: change it.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -180,8 +343,8 @@ pub enum InvalidInput {
         /// The largest accepted value (infinity: no upper limit).
         max: f64,
         /// The unit of the range, with a leading space (for example
-        /// `" degrees"`), or empty.
-        unit: &'static str,
+        /// `" degrees"`), or empty (as a field: without the space).
+        unit: &'static str => unit.trim(),
     },
     /// A magnitude exceeds the documented limit past which the arithmetic
     /// could overflow or lose its precision.
@@ -363,8 +526,8 @@ pub enum InvalidInput {
         name: String,
         /// How many vertices it has.
         vertices: usize,
-        /// What is wrong.
-        problem: PolygonProblem,
+        /// What is wrong (as a field: [`PolygonProblem::as_str`]).
+        problem: PolygonProblem => problem.as_str(),
     },
     /// A result would not be representable (it overflows), although every
     /// input is finite: the input is too far from the task or the linkage.
@@ -628,241 +791,6 @@ pub enum DegenerateError {
     },
 }
 
-/// The value of a field of an error, for bindings ([`Error::fields`]).
-#[derive(Debug, Clone, PartialEq)]
-pub enum Field {
-    /// A number.
-    Float(f64),
-    /// A count or an index.
-    Int(usize),
-    /// A name or a description.
-    Str(String),
-}
-
-impl From<&f64> for Field {
-    fn from(v: &f64) -> Self {
-        Field::Float(*v)
-    }
-}
-
-impl From<&usize> for Field {
-    fn from(v: &usize) -> Self {
-        Field::Int(*v)
-    }
-}
-
-impl From<&str> for Field {
-    fn from(v: &str) -> Self {
-        Field::Str(v.to_owned())
-    }
-}
-
-impl From<&&str> for Field {
-    fn from(v: &&str) -> Self {
-        Field::Str((*v).to_owned())
-    }
-}
-
-impl From<&String> for Field {
-    fn from(v: &String) -> Self {
-        Field::Str(v.clone())
-    }
-}
-
-/// `vec![("name", Field::from(value)), ...]`.
-macro_rules! fields {
-    ($($name:ident),* $(,)?) => {
-        vec![$((stringify!($name), Field::from($name))),*]
-    };
-}
-
-impl Error {
-    /// A short name of the kind: `"invalid input"`, `"assembly"`,
-    /// `"degenerate"`, `"cancelled"` or `"memory"`.
-    pub fn kind(&self) -> &'static str {
-        match self {
-            Error::InvalidInput(_) => "invalid input",
-            Error::Assembly(_) => "assembly",
-            Error::Degenerate(_) => "degenerate",
-            Error::Cancelled { .. } => "cancelled",
-            Error::OutOfMemory { .. } => "memory",
-            Error::Drive(_) => "drive",
-        }
-    }
-
-    /// The cause: the variant's name in snake case (for example
-    /// `"not_finite"`, `"out_of_reach"`, `"at_infinity"`).
-    pub fn cause(&self) -> &'static str {
-        match self {
-            Error::InvalidInput(e) => match e {
-                InvalidInput::NotFinite { .. } => "not_finite",
-                InvalidInput::NotPositive { .. } => "not_positive",
-                InvalidInput::OutsideRange { .. } => "outside_range",
-                InvalidInput::TooLarge { .. } => "too_large",
-                InvalidInput::TooSmall { .. } => "too_small",
-                InvalidInput::CountOutOfRange { .. } => "count_out_of_range",
-                InvalidInput::UnknownName { .. } => "unknown_name",
-                InvalidInput::LengthMismatch { .. } => "length_mismatch",
-                InvalidInput::PoseCount { .. } => "pose_count",
-                InvalidInput::NeedsPoses { .. } => "needs_poses",
-                InvalidInput::PoseIndex { .. } => "pose_index",
-                InvalidInput::GridSize { .. } => "grid_size",
-                InvalidInput::Viewport { .. } => "viewport",
-                InvalidInput::ZeroDirection { .. } => "zero_direction",
-                InvalidInput::ConicCoefficients => "conic_coefficients",
-                InvalidInput::CubicCoefficients => "cubic_coefficients",
-                InvalidInput::OffCurve { .. } => "off_curve",
-                InvalidInput::NotADyad { .. } => "not_a_dyad",
-                InvalidInput::Polygon { .. } => "polygon",
-                InvalidInput::Overflow { .. } => "overflow",
-            },
-            Error::Assembly(e) => match e {
-                AssemblyError::NeverCloses { .. } => "never_closes",
-                AssemblyError::OutOfReach { .. } => "out_of_reach",
-                AssemblyError::Indeterminate { .. } => "indeterminate",
-            },
-            Error::Degenerate(e) => match e {
-                DegenerateError::CoincidentPoses { .. } => "coincident_poses",
-                DegenerateError::PureTranslation { .. } => "pure_translation",
-                DegenerateError::CoincidentPoles { .. } => "coincident_poles",
-                DegenerateError::AtInfinity { .. } => "at_infinity",
-                DegenerateError::Undefined { .. } => "undefined",
-                DegenerateError::ZeroLengthLink { .. } => "zero_length_link",
-                DegenerateError::AllTranslations => "all_translations",
-                DegenerateError::NotParametrizable => "not_parametrizable",
-                DegenerateError::SliderDyad { .. } => "slider_dyad",
-                DegenerateError::RotationsAboutOnePoint { .. } => "rotations_about_one_point",
-                DegenerateError::CollinearTranslations { .. } => "collinear_translations",
-                DegenerateError::InfinitelyManyBurmesterPoints { .. } => {
-                    "infinitely_many_burmester_points"
-                }
-                DegenerateError::UnresolvedBurmesterPoints { .. } => "unresolved_burmester_points",
-            },
-            Error::Cancelled { .. } => "cancelled",
-            Error::OutOfMemory { .. } => "out_of_memory",
-            Error::Drive(e) => e.cause(),
-        }
-    }
-
-    /// The variant's fields by name, as data (the Python binding sets them
-    /// as attributes of its exceptions).
-    pub fn fields(&self) -> Vec<(&'static str, Field)> {
-        match self {
-            Error::InvalidInput(e) => match e {
-                InvalidInput::NotFinite { name, value }
-                | InvalidInput::NotPositive { name, value } => fields!(name, value),
-                InvalidInput::OutsideRange {
-                    name,
-                    value,
-                    min,
-                    max,
-                    unit,
-                } => {
-                    let unit = unit.trim();
-                    fields!(name, value, min, max, unit)
-                }
-                InvalidInput::TooLarge {
-                    name,
-                    value,
-                    limit,
-                    hint,
-                }
-                | InvalidInput::TooSmall {
-                    name,
-                    value,
-                    limit,
-                    hint,
-                } => fields!(name, value, limit, hint),
-                InvalidInput::CountOutOfRange {
-                    name,
-                    value,
-                    min,
-                    max,
-                } => fields!(name, value, min, max),
-                InvalidInput::UnknownName {
-                    what,
-                    expected,
-                    found,
-                } => fields!(what, expected, found),
-                InvalidInput::LengthMismatch {
-                    name,
-                    expected,
-                    found,
-                } => fields!(name, expected, found),
-                InvalidInput::PoseCount { found, min, max } => fields!(found, min, max),
-                InvalidInput::NeedsPoses {
-                    method,
-                    required,
-                    found,
-                } => fields!(method, required, found),
-                InvalidInput::PoseIndex { index, count } => fields!(index, count),
-                InvalidInput::GridSize { nx, ny, max } => fields!(nx, ny, max),
-                InvalidInput::Viewport {
-                    xmin,
-                    xmax,
-                    ymin,
-                    ymax,
-                } => fields!(xmin, xmax, ymin, ymax),
-                InvalidInput::ZeroDirection { name, x, y } => fields!(name, x, y),
-                InvalidInput::ConicCoefficients | InvalidInput::CubicCoefficients => vec![],
-                InvalidInput::OffCurve {
-                    what,
-                    distance,
-                    tolerance,
-                } => fields!(what, distance, tolerance),
-                InvalidInput::NotADyad {
-                    which,
-                    spread,
-                    tolerance,
-                } => fields!(which, spread, tolerance),
-                InvalidInput::Polygon {
-                    name,
-                    vertices,
-                    problem,
-                } => {
-                    let problem = problem.as_str();
-                    fields!(name, vertices, problem)
-                }
-                InvalidInput::Overflow { what, hint } => fields!(what, hint),
-            },
-            Error::Assembly(e) => match e {
-                AssemblyError::NeverCloses { longest, others } => fields!(longest, others),
-                AssemblyError::OutOfReach {
-                    theta2,
-                    distance,
-                    min_reach,
-                    max_reach,
-                } => fields!(theta2, distance, min_reach, max_reach),
-                AssemblyError::Indeterminate { theta2 } => fields!(theta2),
-            },
-            Error::Degenerate(e) => match e {
-                DegenerateError::CoincidentPoses { i, j }
-                | DegenerateError::PureTranslation { i, j } => fields!(i, j),
-                DegenerateError::CoincidentPoles { x, y } => fields!(x, y),
-                DegenerateError::AtInfinity {
-                    what,
-                    curve,
-                    x,
-                    y,
-                    dir_x,
-                    dir_y,
-                } => fields!(what, curve, x, y, dir_x, dir_y),
-                DegenerateError::Undefined { what, at, x, y } => fields!(what, at, x, y),
-                DegenerateError::ZeroLengthLink { what, x, y } => fields!(what, x, y),
-                DegenerateError::AllTranslations | DegenerateError::NotParametrizable => vec![],
-                DegenerateError::SliderDyad { beta2 } => fields!(beta2),
-                DegenerateError::RotationsAboutOnePoint { i, j, k, x, y } => fields!(i, j, k, x, y),
-                DegenerateError::CollinearTranslations { i, j, k } => fields!(i, j, k),
-                DegenerateError::InfinitelyManyBurmesterPoints { what }
-                | DegenerateError::UnresolvedBurmesterPoints { what } => fields!(what),
-            },
-            Error::Cancelled { done, total } => fields!(done, total),
-            Error::OutOfMemory { what, bytes } => fields!(what, bytes),
-            Error::Drive(e) => e.fields(),
-        }
-    }
-}
-
 /// Why a six-bar cannot be built as asked, or a synthesized linkage
 /// cannot be driven from a motor by an added dyad (the drive dyad of the
 /// Watt II six-bar, [`SixBar`](crate::SixBar)).
@@ -963,47 +891,19 @@ pub enum DriveError {
         min_transmission_deg: f64,
     },
 }
+}
 
-impl DriveError {
-    /// The variant's name (the Python exception's `cause`).
-    pub fn cause(&self) -> &'static str {
+impl Error {
+    /// A short name of the kind: `"invalid input"`, `"assembly"`,
+    /// `"degenerate"`, `"cancelled"` or `"memory"`.
+    pub fn kind(&self) -> &'static str {
         match self {
-            DriveError::PivotMismatch { .. } => "pivot_mismatch",
-            DriveError::ToggleJoints { .. } => "toggle_joints",
-            DriveError::NoTravel => "no_travel",
-            DriveError::TravelTooLarge { .. } => "travel_too_large",
-            DriveError::OutsideInputRange { .. } => "outside_input_range",
-            DriveError::NotACrankRocker { .. } => "not_a_crank_rocker",
-            DriveError::NoAcceptableDrive { .. } => "no_acceptable_drive",
-        }
-    }
-
-    /// The variant's fields by name, as data.
-    pub fn fields(&self) -> Vec<(&'static str, Field)> {
-        match self {
-            DriveError::PivotMismatch {
-                distance,
-                tolerance,
-            } => fields!(distance, tolerance),
-            DriveError::ToggleJoints { which } => fields!(which),
-            DriveError::NoTravel => vec![],
-            DriveError::TravelTooLarge {
-                travel_deg,
-                swing_deg,
-                margin_deg,
-            } => fields!(travel_deg, swing_deg, margin_deg),
-            DriveError::OutsideInputRange {
-                margin_deg,
-                before_deg,
-                after_deg,
-            } => fields!(margin_deg, before_deg, after_deg),
-            DriveError::NotACrankRocker { x, y } => fields!(x, y),
-            DriveError::NoAcceptableDrive {
-                searched,
-                valid,
-                best_transmission_deg,
-                min_transmission_deg,
-            } => fields!(searched, valid, best_transmission_deg, min_transmission_deg),
+            Error::InvalidInput(_) => "invalid input",
+            Error::Assembly(_) => "assembly",
+            Error::Degenerate(_) => "degenerate",
+            Error::Cancelled { .. } => "cancelled",
+            Error::OutOfMemory { .. } => "memory",
+            Error::Drive(_) => "drive",
         }
     }
 }
@@ -1144,16 +1044,13 @@ pub(crate) fn count_in(
     min: usize,
     max: usize,
 ) -> Result<usize, InvalidInput> {
-    if (min..=max).contains(&value) {
-        Ok(value)
-    } else {
-        Err(InvalidInput::CountOutOfRange {
-            name,
-            value,
-            min,
-            max,
-        })
-    }
+    let error = InvalidInput::CountOutOfRange {
+        name,
+        value,
+        min,
+        max,
+    };
+    (min..=max).contains(&value).then_some(value).ok_or(error)
 }
 
 /// Checks that a point is finite, naming its coordinates `"{what} x"` and
@@ -1231,6 +1128,80 @@ mod tests {
         assert_eq!(
             e.fields(),
             vec![("done", Field::Int(3)), ("total", Field::Int(9))]
+        );
+    }
+
+    #[test]
+    fn causes_and_fields_come_from_the_one_list() {
+        // The causes are the variants' names in snake case, also where a
+        // name has one-letter words or the variant has no fields.
+        let cases: [(Error, &str); 7] = [
+            (
+                InvalidInput::NotADyad {
+                    which: "driving dyad",
+                    spread: 0.1,
+                    tolerance: 1e-9,
+                }
+                .into(),
+                "not_a_dyad",
+            ),
+            (InvalidInput::ConicCoefficients.into(), "conic_coefficients"),
+            (
+                DriveError::NotACrankRocker { x: 1.0, y: 2.0 }.into(),
+                "not_a_crank_rocker",
+            ),
+            (DriveError::NoTravel.into(), "no_travel"),
+            (
+                DegenerateError::InfinitelyManyBurmesterPoints { what: "w" }.into(),
+                "infinitely_many_burmester_points",
+            ),
+            (
+                AssemblyError::Indeterminate { theta2: 0.5 }.into(),
+                "indeterminate",
+            ),
+            (
+                Error::OutOfMemory {
+                    what: "a grid",
+                    bytes: 8,
+                },
+                "out_of_memory",
+            ),
+        ];
+        for (e, cause) in cases {
+            assert_eq!(e.cause(), cause, "{e:?}");
+        }
+        assert_eq!(InvalidInput::CubicCoefficients.fields(), vec![]);
+        assert_eq!(DriveError::NoTravel.fields(), vec![]);
+        // A field given as an expression of the list: the unit without its
+        // leading space, the polygon's problem by its short name.
+        let e: Error = in_range("angle", 400.0, 0.0, 360.0, " degrees")
+            .unwrap_err()
+            .into();
+        assert_eq!(
+            e.fields(),
+            vec![
+                ("name", Field::Str("angle".into())),
+                ("value", Field::Float(400.0)),
+                ("min", Field::Float(0.0)),
+                ("max", Field::Float(360.0)),
+                ("unit", Field::Str("degrees".into())),
+            ]
+        );
+        assert!(e.to_string().contains("360 degrees"), "{e}");
+        let e: Error = InvalidInput::Polygon {
+            name: "obstacle 2".into(),
+            vertices: 2,
+            problem: PolygonProblem::TooFewVertices,
+        }
+        .into();
+        assert_eq!(e.cause(), "polygon");
+        assert_eq!(
+            e.fields(),
+            vec![
+                ("name", Field::Str("obstacle 2".into())),
+                ("vertices", Field::Int(2)),
+                ("problem", Field::Str("too few vertices".into())),
+            ]
         );
     }
 }

@@ -242,6 +242,31 @@ pub fn toggle_band(l3: f64, l4: f64, r: f64, rho: f64) -> f64 {
     tol.sqrt() / (2.0 * l3 * l4)
 }
 
+// Tolerances of `geom` and `design` (issue 25: moved here from the modules
+// that use them, under the names those modules keep as aliases).
+
+/// Relative size (against the largest coefficient, which is 1) below which
+/// a cubic's coefficient counts as zero for
+/// [`Cubic::degree`](crate::geom::Cubic::degree) and
+/// [`Cubic::is_circular`](crate::geom::Cubic::is_circular).
+pub const CUBIC_KIND: f64 = 1e-12;
+
+/// A polynomial's value within this many machine epsilons of the magnitude
+/// of its terms (`sum |p_i| |x|^i`) counts as zero (the real roots of the
+/// cubic's polynomials: a critical point there is a double root).
+pub const ROOT_ZERO_EPS: f64 = 32.0;
+
+/// Radians either side of a transmission-angle limit where the design
+/// kernel takes the `acos` of the worst `|cos mu|` instead of comparing it
+/// with the limit's cosines (its `CosBand`): far larger than the rounding
+/// of `acos` and `cos` (about `4e-16` rad), so the comparison is the
+/// `acos`'s own.
+pub const COS_SLACK: f64 = 1e-9;
+
+/// Radians below the best run's score under which an atlas sample's score
+/// (an f32, rounded by at most `1e-7` rad) can neither tie nor lead.
+pub const TOP_SLACK: f64 = 1e-6;
+
 #[cfg(test)]
 mod tests {
     use super::*;

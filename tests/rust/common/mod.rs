@@ -1,12 +1,59 @@
 //! Helpers shared by the integration tests (each test crate uses some).
 #![allow(dead_code)]
 
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::PI;
 
-use burmester::{AngleInterval, Filemon, InputRange, Point2, Task};
+use burmester::{
+    AngleInterval, Constraints, Control, DesignLimits, Filemon, Grid, InputRange, Point2, Pose,
+    SolutionMap, Task, Vector2,
+};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
+
+/// The notes' worked example (positions-4-5.md, section 6): five poses of
+/// the coupler of the crank-rocker `A0 = (0, 0)`, `B0 = (4, 0)`.
+pub(crate) fn notes_poses() -> [Pose; 5] {
+    let d = |x: f64, y: f64, a: f64| Pose::new(x, y, a.to_radians());
+    [
+        d(1.049199280691, 2.279426358634, 45.220037141544),
+        d(0.734502065472, 3.198658887874, 26.633426990744),
+        d(-0.378159188147, 3.063048993013, 21.786789298262),
+        d(-1.268710439724, 2.051150142014, 27.048624103934),
+        d(-1.411118156972, 0.597429126400, 48.044287536536),
+    ]
+}
+
+/// The solution map of `f` on `g` under `limits`, with no constraints.
+pub(crate) fn solution_map(f: &Filemon, g: &Grid, limits: &DesignLimits) -> SolutionMap {
+    f.solution_map(g, limits, &Constraints::none(), &Control::new())
+        .unwrap()
+}
+
+/// The centroid of the poses' positions.
+pub(crate) fn centroid(poses: &[Pose]) -> Point2<f64> {
+    let n = poses.len() as f64;
+    Point2::from(
+        poses
+            .iter()
+            .fold(Vector2::zeros(), |a, p| a + p.position.coords / n),
+    )
+}
+
+/// Distance from `p` to the segment `a b` (to `a` when the segment is a
+/// point).
+pub(crate) fn seg_dist(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
+    let (ab, ap) = (b - a, p - a);
+    // The parameter of the foot of the perpendicular: NaN for a point.
+    let t = ap.dot(&ab) / ab.norm_squared();
+    if t.is_nan() || t <= 0.0 {
+        ap.norm()
+    } else if t >= 1.0 {
+        (p - b).norm()
+    } else {
+        (ap - ab * t).norm()
+    }
+}
 
 /// Proptest settings: `cases` cases, no regression files (the tests live
 /// outside the crate's source tree).
@@ -19,15 +66,8 @@ pub(crate) fn config(cases: u32) -> ProptestConfig {
 }
 
 /// `a` wrapped into `(-pi, pi]`.
-pub(crate) fn wrap(a: f64) -> f64 {
-    let mut a = a % TAU;
-    if a > PI {
-        a -= TAU;
-    } else if a <= -PI {
-        a += TAU;
-    }
-    a
-}
+#[allow(unused_imports)]
+pub(crate) use burmester::geom::wrap_angle as wrap;
 
 /// Well-conditioned random tasks: poses within 5 of the origin, rotations
 /// between poses at least 0.1 rad (mod 2 pi), poles within 300 of the

@@ -534,7 +534,7 @@ pub(crate) fn check_scored(rank_by: RankBy, what: &'static str) -> Result<()> {
 
 /// Radians below the best run's score under which a sample's score (an
 /// f32, rounded by at most 1e-7 rad) can neither tie nor lead.
-const TOP_SLACK: f64 = 1e-6;
+const TOP_SLACK: f64 = tolerance::TOP_SLACK;
 
 /// Whether `score` ties with the best score `top` (as `best_pivots` groups
 /// runs: the difference in `f64`).

@@ -30,7 +30,7 @@ use crate::error::{InvalidInput, Result, finite};
 use crate::geom::{Line, LocalFrame, Viewport, cross};
 
 /// Relative tolerance of the kind tests (parabola, degenerate).
-const KIND_TOLERANCE: f64 = 1e-12;
+const KIND_TOLERANCE: f64 = crate::tolerance::CONIC_KIND;
 
 /// The kind of a conic.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

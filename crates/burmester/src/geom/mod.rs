@@ -54,7 +54,7 @@ pub(crate) fn unit(angle: f64) -> Vector2<f64> {
 
 /// `angle` wrapped into `(-pi, pi]`.
 #[inline]
-pub(crate) fn wrap_angle(angle: f64) -> f64 {
+pub fn wrap_angle(angle: f64) -> f64 {
     use core::f64::consts::{PI, TAU};
     let mut a = angle % TAU;
     if a > PI {

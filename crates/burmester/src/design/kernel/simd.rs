@@ -94,7 +94,7 @@ pub(crate) struct CosBand {
 
 impl CosBand {
     /// Radians either side of the angle where the `acos` is taken.
-    pub(crate) const SLACK: f64 = 1e-9;
+    pub(crate) const SLACK: f64 = crate::tolerance::COS_SLACK;
 
     /// The band about `angle` (radians). Outside `[1e-3, 2]` rad (where a
     /// rounding of `cos` could move the thresholds by more than a small

@@ -76,7 +76,7 @@ pub use trace::{CubicComponent, CubicTrace};
 /// Relative size (against the largest coefficient, which is 1) below which
 /// a coefficient counts as zero for [`Cubic::degree`] and
 /// [`Cubic::is_circular`].
-const KIND_TOLERANCE: f64 = 1e-12;
+const KIND_TOLERANCE: f64 = crate::tolerance::CUBIC_KIND;
 
 /// A plane cubic curve `f(x, y) = 0` (see the module docs for the order of
 /// the coefficients).

@@ -16,7 +16,7 @@ use core::f64::consts::PI;
 
 /// A value within this many machine epsilons of the magnitude of its terms
 /// (`sum |p_i| |x|^i`) counts as zero.
-const ZERO_FACTOR: f64 = 32.0;
+const ZERO_FACTOR: f64 = crate::tolerance::ROOT_ZERO_EPS;
 
 /// Horner evaluation of `p` at `x`.
 #[inline]
