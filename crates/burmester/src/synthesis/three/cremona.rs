@@ -35,7 +35,7 @@ use core::f64::consts::PI;
 
 use nalgebra::{Point2, Vector2};
 
-use crate::error::{DegenerateError, InvalidInput, Result, finite_point};
+use crate::error::{DegenerateError, Result};
 use crate::geom::{CircleOrLine, LocalFrame, cross, rotate_cs};
 use crate::synthesis::motion::Motion;
 use crate::synthesis::three::Linear;
@@ -74,22 +74,13 @@ pub struct Cremona {
     linear: Option<Linear>,
 }
 
-/// The poles `P12, P13, P23` and the image poles, not the local frame.
-impl core::fmt::Debug for Cremona {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Cremona")
-            .field("poles", &self.poles())
-            .field("image_poles", &self.image_poles())
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The poles `P12, P13, P23` and the image poles, not the local frame.
+    Cremona,
+    s => poles: s.poles(), image_poles: s.image_poles(),
+);
 
-impl LocalFrame for Cremona {
-    #[inline]
-    fn frame(&self) -> (Point2<f64>, f64) {
-        (self.origin, self.scale)
-    }
-}
+crate::geom::local_frame!(Cremona);
 
 impl Cremona {
     /// The maps of a validated three-pose motion whose poles are finite,
@@ -299,15 +290,12 @@ impl Cremona {
                 ["circle point x", "circle point y"],
             ),
         };
-        finite_point(names, p)?;
-        let y = self.local_of(p);
-        if !(y.x.is_finite() && y.y.is_finite()) {
-            return Err(InvalidInput::Overflow {
-                what: "the point in the task's frame",
-                hint: "pass a point within about 1e300 task sizes (Task::scale) of the poles",
-            }
-            .into());
-        }
+        let y = super::local_input(
+            self,
+            names,
+            p,
+            "pass a point within about 1e300 task sizes (Task::scale) of the poles",
+        )?;
         let sign = match dir {
             MapDir::CenterToCircle => -1.0,
             MapDir::CircleToCenter => 1.0,

@@ -69,7 +69,7 @@
 
 use nalgebra::{Matrix2, Point2, Vector2};
 
-use crate::error::{DegenerateError, InvalidInput, Result, finite_point};
+use crate::error::{DegenerateError, Result};
 use crate::geom::{Conic, LocalFrame, cross, normalized, perp, rotate_cs};
 use crate::synthesis::motion::{Motion, Pole};
 use crate::synthesis::three::cremona::MapDir;
@@ -101,12 +101,7 @@ pub(crate) struct Linear {
     origin_is_pole: bool,
 }
 
-impl LocalFrame for Linear {
-    #[inline]
-    fn frame(&self) -> (Point2<f64>, f64) {
-        (self.origin, self.scale)
-    }
-}
+crate::geom::local_frame!(Linear);
 
 impl Linear {
     /// The maps of a validated three-pose motion with at least one finite
@@ -243,15 +238,12 @@ impl Linear {
                 ],
             ),
         };
-        finite_point(names, p)?;
-        let y = self.local_of(p);
-        if !(y.x.is_finite() && y.y.is_finite()) {
-            return Err(InvalidInput::Overflow {
-                what: "the point in the task's frame",
-                hint: "pass a point within about 1e300 task sizes (Task::scale) of the poses",
-            }
-            .into());
-        }
+        let y = super::local_input(
+            self,
+            names,
+            p,
+            "pass a point within about 1e300 task sizes (Task::scale) of the poses",
+        )?;
         let m = y.x.abs().max(y.y.abs()).max(1.0);
         for (pole, at) in special.iter().zip(labels) {
             if let Some(q) = pole {
