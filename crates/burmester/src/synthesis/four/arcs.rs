@@ -120,7 +120,7 @@ impl FilemonArcs {
                 .collect(),
         };
         Ok(FilemonArcs {
-            four: four.clone(),
+            four: *four,
             driven: *driven,
             c_prime,
             order,

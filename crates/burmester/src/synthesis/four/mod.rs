@@ -437,7 +437,7 @@ impl FourPositions {
         let form = if circle {
             self.motion.form.inverse()
         } else {
-            self.motion.form.clone()
+            self.motion.form
         };
         let v = self.motion.local_of(p);
         let dg = (p.coords.norm() + origin.coords.norm()) / scale;

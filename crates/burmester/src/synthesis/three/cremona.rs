@@ -138,7 +138,7 @@ impl Cremona {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::PoseIndex`] when `k` is not 1, 2 or 3.
+    /// [`crate::InvalidInput::PoseIndex`] when `k` is not 1, 2 or 3.
     pub fn image_poles_in(&self, k: usize) -> Result<[Point2<f64>; 3]> {
         let k = self.motion.index(k)?;
         let pairs = [(0, 1), (0, 2), (1, 2)];
@@ -207,8 +207,8 @@ impl Cremona {
     /// [`DegenerateError::AtInfinity`] when `center` is on the pole circle
     /// (the answer lies at infinity; the error carries its direction);
     /// [`DegenerateError::Undefined`] when `center` is at a pole (a whole
-    /// line of circle points has it as center); [`InvalidInput::NotFinite`]
-    /// for a non-finite point, [`InvalidInput::Overflow`] for a point
+    /// line of circle points has it as center); [`crate::InvalidInput::NotFinite`]
+    /// for a non-finite point, [`crate::InvalidInput::Overflow`] for a point
     /// more than about `1e300` task sizes away.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
         match &self.linear {
@@ -226,8 +226,8 @@ impl Cremona {
     /// [`DegenerateError::AtInfinity`] when `circle` is on the image-pole
     /// circle (the center point is at infinity: a slider);
     /// [`DegenerateError::Undefined`] at an image pole;
-    /// [`InvalidInput::NotFinite`] for a non-finite point,
-    /// [`InvalidInput::Overflow`] for a point more than about `1e300`
+    /// [`crate::InvalidInput::NotFinite`] for a non-finite point,
+    /// [`crate::InvalidInput::Overflow`] for a point more than about `1e300`
     /// task sizes away.
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
         match &self.linear {
