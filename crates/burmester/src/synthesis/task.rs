@@ -522,12 +522,7 @@ impl Task {
     /// five poses; the errors of [`FourPositions::new`].
     pub fn four_positions(&self, method: &'static str) -> Result<&FourPositions> {
         match &self.part {
-            Part::Four(Some(four)) => Ok(four),
-            // Refused when the task was made: the same error again (the
-            // curves are a function of the poses).
-            Part::Four(None) => Err(FourPositions::of(self.poses())
-                .err()
-                .unwrap_or_else(|| self.needs(4, method))),
+            Part::Four(four) => self.kept(four.as_ref(), FourPositions::of, method),
             _ => Err(self.needs(4, method)),
         }
     }
@@ -540,13 +535,25 @@ impl Task {
     /// [`InvalidInput::NeedsPoses`] naming `method` for a task of three or
     /// four poses; the errors of [`FivePositions::new`].
     pub fn five_positions(&self, method: &'static str) -> Result<&FivePositions> {
-        match &self.part {
-            Part::Five(Some(five)) => Ok(five),
-            Part::Five(None) => Err(FivePositions::of(self.poses())
+        let Part::Five(five) = &self.part else {
+            return Err(self.needs(5, method));
+        };
+        self.kept(five.as_ref(), FivePositions::of, method)
+    }
+
+    /// The part kept when the task was made or, refused then, the same
+    /// error again (the part is a function of the poses).
+    fn kept<'a, T>(
+        &self,
+        part: Option<&'a T>,
+        build: fn(&[Pose]) -> Result<T>,
+        method: &'static str,
+    ) -> Result<&'a T> {
+        part.ok_or_else(|| {
+            build(self.poses())
                 .err()
-                .unwrap_or_else(|| self.needs(5, method))),
-            _ => Err(self.needs(5, method)),
-        }
+                .unwrap_or_else(|| self.needs(self.len(), method))
+        })
     }
 
     /// Checks that the task maps points between the planes
