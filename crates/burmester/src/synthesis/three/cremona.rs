@@ -324,13 +324,7 @@ impl Cremona {
                     (MapDir::CircleToCenter, _) => "the image pole P'23",
                     (_, n) => n,
                 };
-                return Err(DegenerateError::Undefined {
-                    what,
-                    at,
-                    x: p.x,
-                    y: p.y,
-                }
-                .into());
+                return Err(crate::synthesis::errors::undefined(what, at, p));
             }
         }
         let un = u.norm();

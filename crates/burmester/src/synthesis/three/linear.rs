@@ -249,13 +249,7 @@ impl Linear {
             if let Some(q) = pole {
                 let d = self.local_of(*q) - y;
                 if d.x.abs().max(d.y.abs()) <= tolerance::POINT * m {
-                    return Err(DegenerateError::Undefined {
-                        what,
-                        at,
-                        x: p.x,
-                        y: p.y,
-                    }
-                    .into());
+                    return Err(crate::synthesis::errors::undefined(what, at, p));
                 }
             }
         }
