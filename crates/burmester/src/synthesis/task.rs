@@ -49,7 +49,7 @@ use crate::tolerance;
 /// assert!((task.center_point(x)? - y).norm() < 1e-12);
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Clone, Copy)]
 pub struct Task {
     motion: Motion,
     /// The unit of the relative tolerances (see [`Task::scale`]).
@@ -63,7 +63,7 @@ pub struct Task {
 /// `five/`).
 // One per task, copied with it (a task is `Copy`): no box for the larger.
 #[allow(clippy::large_enum_variant)]
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Clone, Copy)]
 enum Part {
     /// Three poses: the maps between the planes, and the maps through the
     /// poles of a task whose maps run by the linear form (a pole far from
@@ -77,6 +77,25 @@ enum Part {
     Four(Option<FourPositions>),
     /// Five poses: the Burmester points; `None` when they are refused.
     Five(Option<FivePositions>),
+}
+
+/// Equal poses: the motion, the scale and the three-pose maps compared, not
+/// the curves or points of four or five poses (which the poses determine).
+impl PartialEq for Task {
+    fn eq(&self, other: &Self) -> bool {
+        let parts = match (&self.part, &other.part) {
+            (
+                Part::Three { maps, far_poles },
+                Part::Three {
+                    maps: m,
+                    far_poles: f,
+                },
+            ) => maps == m && far_poles == f,
+            (Part::Four(_), Part::Four(_)) | (Part::Five(_), Part::Five(_)) => true,
+            _ => false,
+        };
+        parts && self.motion == other.motion && self.scale == other.scale
+    }
 }
 
 crate::geom::debug_shows!(
