@@ -35,7 +35,7 @@ use core::f64::consts::PI;
 
 use nalgebra::{Point2, Vector2};
 
-use crate::error::{DegenerateError, Result};
+use crate::error::Result;
 use crate::geom::{CircleOrLine, LocalFrame, cross, rotate_cs};
 use crate::synthesis::motion::Motion;
 use crate::synthesis::three::Linear;
@@ -204,9 +204,9 @@ impl Cremona {
     ///
     /// # Errors
     ///
-    /// [`DegenerateError::AtInfinity`] when `center` is on the pole circle
+    /// [`crate::DegenerateError::AtInfinity`] when `center` is on the pole circle
     /// (the answer lies at infinity; the error carries its direction);
-    /// [`DegenerateError::Undefined`] when `center` is at a pole (a whole
+    /// [`crate::DegenerateError::Undefined`] when `center` is at a pole (a whole
     /// line of circle points has it as center); [`crate::InvalidInput::NotFinite`]
     /// for a non-finite point, [`crate::InvalidInput::Overflow`] for a point
     /// more than about `1e300` task sizes away.
@@ -223,9 +223,9 @@ impl Cremona {
     ///
     /// # Errors
     ///
-    /// [`DegenerateError::AtInfinity`] when `circle` is on the image-pole
+    /// [`crate::DegenerateError::AtInfinity`] when `circle` is on the image-pole
     /// circle (the center point is at infinity: a slider);
-    /// [`DegenerateError::Undefined`] at an image pole;
+    /// [`crate::DegenerateError::Undefined`] at an image pole;
     /// [`crate::InvalidInput::NotFinite`] for a non-finite point,
     /// [`crate::InvalidInput::Overflow`] for a point more than about `1e300`
     /// task sizes away.
@@ -328,23 +328,16 @@ impl Cremona {
             }
         }
         let un = u.norm();
-        let at_infinity = |d: Vector2<f64>| DegenerateError::AtInfinity {
-            what,
-            curve,
-            x: p.x,
-            y: p.y,
-            dir_x: d.x,
-            dir_y: d.y,
-        };
+        let at_infinity = |d| crate::synthesis::errors::at_infinity(what, curve, p, d);
         if den.abs() <= tolerance::CROSS_EPS * f64::EPSILON * un * v.norm() {
             let d = if kappa * den < 0.0 { -u / un } else { u / un };
-            return Err(at_infinity(d).into());
+            return Err(at_infinity(d));
         }
         let out = self.global_of(u * (kappa / den) * m);
         if out.x.is_finite() && out.y.is_finite() {
             Ok(out)
         } else {
-            Err(at_infinity(u / un).into())
+            Err(at_infinity(u / un))
         }
     }
 }

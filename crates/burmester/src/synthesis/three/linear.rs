@@ -69,7 +69,7 @@
 
 use nalgebra::{Matrix2, Point2, Vector2};
 
-use crate::error::{DegenerateError, Result};
+use crate::error::Result;
 use crate::geom::{Conic, LocalFrame, cross, normalized, perp, rotate_cs};
 use crate::synthesis::motion::{Motion, Pole};
 use crate::synthesis::three::cremona::MapDir;
@@ -267,23 +267,16 @@ impl Linear {
                 // perpendicular to them.
                 normalized(perp(a)).unwrap_or_else(Vector2::x)
             });
-            DegenerateError::AtInfinity {
-                what,
-                curve,
-                x: p.x,
-                y: p.y,
-                dir_x: d.x,
-                dir_y: d.y,
-            }
+            crate::synthesis::errors::at_infinity(what, curve, p, d)
         };
         if den.abs() <= tolerance::CROSS_EPS * f64::EPSILON * a.norm() * b.norm() {
-            return Err(at_infinity().into());
+            return Err(at_infinity());
         }
         let out = self.global_of(y + n * (k / (2.0 * den)));
         if out.x.is_finite() && out.y.is_finite() {
             Ok(out)
         } else {
-            Err(at_infinity().into())
+            Err(at_infinity())
         }
     }
 
