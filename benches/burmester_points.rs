@@ -28,7 +28,7 @@ use std::f64::consts::TAU;
 use std::hint::black_box;
 use std::path::PathBuf;
 
-use burmester::synthesis::curves::{FivePositions, FourPositions};
+use burmester::synthesis::{FivePositions, FourPositions};
 use burmester::{Point2, Pose, Vector2, Viewport};
 use criterion::{Criterion, criterion_group, criterion_main};
 

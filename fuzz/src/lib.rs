@@ -1797,7 +1797,7 @@ pub fn atlas(data: &[u8]) {
 // ---------------------------------------------------------------------------
 
 use burmester::Similarity;
-use burmester::synthesis::curves::{FilemonArcs, FivePositions, FourPositions};
+use burmester::synthesis::{FilemonArcs, FivePositions, FourPositions};
 
 /// `n` poses: raw numbers, or moderate ones with a chosen structure: nearly
 /// rotations about one point (curves whose coefficients cancel), three

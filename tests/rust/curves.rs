@@ -11,9 +11,8 @@ use std::f64::consts::{PI, TAU};
 mod common;
 
 use burmester::geom::Cubic;
-use burmester::synthesis::curves::{
-    Drive, FilemonArcs, FivePositions, FourPositions, ON_CURVE_TOLERANCE, Turn,
-};
+use burmester::synthesis::{Drive, FilemonArcs, FivePositions, FourPositions, Turn};
+use burmester::tolerance::ON_CURVE_TOLERANCE;
 use burmester::{
     AssemblyMode, Branch, DegenerateError, Dyad, Error, FourBar, InvalidInput, Point2, Pose,
     Similarity, Task, Vector2, Viewport,
@@ -190,7 +189,7 @@ fn view_around(four: &FourPositions, h: f64) -> Viewport {
 /// (`dyad_of`) has the piece's order, away from ties of two crank angles.
 fn check_order_arcs(
     four: &FourPositions,
-    arcs: &[burmester::synthesis::curves::OrderArc],
+    arcs: &[burmester::synthesis::OrderArc],
     cuts: &[Point2<f64>],
     dyad_of: impl Fn(Point2<f64>) -> Dyad,
 ) -> Result<(), TestCaseError> {

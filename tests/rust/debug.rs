@@ -2,7 +2,7 @@
 //! pivots, poses, poles, modes, counts), not the normalized or cached
 //! quantities kept inside, and never every value of a map.
 
-use burmester::synthesis::curves::{FivePositions, FourPositions};
+use burmester::synthesis::{FivePositions, FourPositions};
 use burmester::{AssemblyMode, DesignLimits, FourBar, Grid, Point2, Pose, RankBy, Task, Viewport};
 mod common;
 

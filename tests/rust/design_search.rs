@@ -328,7 +328,7 @@ fn five_poses_judge_every_pair_of_burmester_points() {
             && matches!(d.refined, SearchPoint::Burmester { .. })
     }));
     // Every acceptable ordered pair by the exact figures is found.
-    let points = burmester::synthesis::curves::FivePositions::new(t.poses())
+    let points = burmester::synthesis::FivePositions::new(t.poses())
         .unwrap()
         .burmester_points()
         .to_vec();

@@ -12,7 +12,7 @@ mod common;
 use common::bits;
 
 use burmester::design::PairMap;
-use burmester::synthesis::curves::{FourPositions, Turn};
+use burmester::synthesis::{FourPositions, Turn};
 use burmester::{
     Branch, Constraints, Control, DesignLimits, Direction, Error, InvalidInput, Point2, Pose,
     RankBy, Task,
@@ -58,10 +58,7 @@ fn map_with(
 }
 
 /// The sample of `samples` whose center is nearest `p`, and its distance.
-fn nearest(
-    samples: &[Option<burmester::synthesis::curves::CurveDyad>],
-    p: Point2<f64>,
-) -> (usize, f64) {
+fn nearest(samples: &[Option<burmester::synthesis::CurveDyad>], p: Point2<f64>) -> (usize, f64) {
     samples
         .iter()
         .enumerate()

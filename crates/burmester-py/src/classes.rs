@@ -18,14 +18,14 @@ pub(crate) fn dyad_tuple(d: &Dyad) -> (Xy, Xy) {
 /// Three to five poses of the coupler.
 #[pyclass(frozen, eq, from_py_object, name = "Task", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyTask {
+pub(crate) struct PyTask {
     pub(crate) inner: Task,
 }
 
 /// Filemon's construction for a driven dyad, and its transformed conics.
 #[pyclass(frozen, eq, name = "Filemon", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyFilemon {
+pub(crate) struct PyFilemon {
     pub(crate) inner: Filemon,
 }
 
@@ -76,6 +76,6 @@ impl PartialEq for PySynthesizedFourBar {
     module = "burmester"
 )]
 #[derive(Clone, PartialEq)]
-pub struct PyDesignLimits {
+pub(crate) struct PyDesignLimits {
     pub(crate) inner: DesignLimits,
 }

@@ -1,15 +1,14 @@
-//! `burmester.Cubic` and the four- and five-pose methods of `burmester.Task`
-//! (the core's `geom::Cubic` and `synthesis::curves`).
+//! `burmester.Cubic` and the records of the four-pose methods of
+//! `burmester.Task` (the core's `geom::Cubic` and `synthesis::four`).
 //!
 //! The `Task` methods themselves are in `synthesis` (one `#[pymethods]`
-//! block per class); the work they share is here: building the core's
-//! `FourPositions` / `FivePositions` from a task with the typed
-//! `NeedsPoses` error, the dyad of a center point for any pose count, and
-//! the conversions of the core's records to Python values.
+//! block per class); they take the curves and points from the core's
+//! `Task`, which keeps them. Here are the conversions of the core's records
+//! to Python values.
 
 use burmester::geom::Cubic;
-use burmester::synthesis::curves::{CoincidencePoint, CurveDyad, FivePositions, FourPositions};
-use burmester::{Dyad, InvalidInput, Point2, Task, Viewport};
+use burmester::synthesis::{CoincidencePoint, CurveDyad};
+use burmester::{InvalidInput, Point2, Viewport};
 use numpy::PyArray2;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -19,82 +18,6 @@ use crate::conv::{PyPoint, Real, pt};
 use crate::errors::{IntoPy, to_py};
 
 type Xy = (f64, f64);
-
-/// The typed error of a method that needs a task of `required` poses.
-pub(crate) fn needs(task: &Task, required: usize, method: &'static str) -> PyErr {
-    to_py(
-        InvalidInput::NeedsPoses {
-            method,
-            required,
-            found: task.len(),
-        }
-        .into(),
-    )
-}
-
-/// The curves of a task of four poses.
-pub(crate) fn four(task: &Task, method: &'static str) -> PyResult<FourPositions> {
-    if task.len() != 4 {
-        return Err(needs(task, 4, method));
-    }
-    FourPositions::new(task.poses()).py()
-}
-
-/// The Burmester points of a task of five poses.
-pub(crate) fn five(task: &Task, method: &'static str) -> PyResult<FivePositions> {
-    if task.len() != 5 {
-        return Err(needs(task, 5, method));
-    }
-    FivePositions::new(task.poses()).py()
-}
-
-/// Whether two points agree within `1e-7` of the task's size plus their
-/// distance from the first pose (a Burmester point typed back in).
-fn near(task: &Task, a: Point2<f64>, b: Point2<f64>) -> bool {
-    let p1 = task.poses()[0].position;
-    (a - b).norm() <= 1e-7 * (task.scale() + (a - p1).norm())
-}
-
-/// The dyad of a center point, for any pose count: three poses by the
-/// closed-form map; four by the center-point curve (an error with the
-/// distance when it is off the curve); five by the Burmester point it is
-/// (within `1e-7` relative), else by the curve of poses 1 to 4 (a point
-/// that is not a Burmester point then fails the five-pose dyad check of
-/// `Task::four_bar`).
-pub(crate) fn dyad_of(task: &Task, center: Point2<f64>, method: &'static str) -> PyResult<Dyad> {
-    match task.len() {
-        3 => task.dyad_from_center(center).py(),
-        4 => four(task, method)?.dyad_from_center(center).py(),
-        _ => {
-            let five = five(task, method)?;
-            if let Some(d) = five
-                .burmester_points()
-                .iter()
-                .find(|d| near(task, d.center, center))
-            {
-                return Ok(*d);
-            }
-            let d = FourPositions::new(&task.poses()[..4])
-                .py()?
-                .dyad_from_center(center)
-                .py()?;
-            let spread = five.residual(&d);
-            let tolerance = burmester::synthesis::curves::DYAD_TOLERANCE;
-            // A NaN spread (a dyad at infinity) fails too.
-            if spread.is_nan() || spread > tolerance {
-                return Err(to_py(
-                    InvalidInput::NotADyad {
-                        which: "dyad of this center point (not a Burmester point)",
-                        spread,
-                        tolerance,
-                    }
-                    .into(),
-                ));
-            }
-            Ok(d)
-        }
-    }
-}
 
 /// The names of an optional assembly mode, checked (for `_from_fields`).
 fn check_name(what: &str, value: Option<&str>, allowed: [&str; 2]) -> PyResult<()> {
@@ -179,7 +102,7 @@ fn check_curve_dyad_state(
 /// from pose 1 to pose 2, its solution branch and its crank order.
 #[pyclass(frozen, eq, from_py_object, name = "CurveDyad", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyCurveDyad {
+pub(crate) struct PyCurveDyad {
     pub(crate) center: Xy,
     pub(crate) circle: Xy,
     beta2: f64,
@@ -297,7 +220,7 @@ impl PyCurveDyad {
 /// positions at poses `j` and `k` coincide, with its circle point.
 #[pyclass(frozen, eq, name = "CoincidencePoint", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyCoincidencePoint {
+pub(crate) struct PyCoincidencePoint {
     pair: (usize, usize),
     center: Option<Xy>,
     circle: Option<Xy>,
@@ -439,7 +362,7 @@ fn finite_point(p: PyPoint, what: [&'static str; 2]) -> PyResult<Point2<f64>> {
 /// curves of four poses.
 #[pyclass(frozen, eq, name = "Cubic", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyCubic {
+pub(crate) struct PyCubic {
     pub(crate) inner: Cubic,
 }
 

@@ -14,7 +14,7 @@ type Xy = (f64, f64);
 /// A grid of sample points at cell centers over a viewport.
 #[pyclass(frozen, eq, from_py_object, name = "Grid", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyGrid {
+pub(crate) struct PyGrid {
     pub(crate) inner: Grid,
 }
 
@@ -173,7 +173,7 @@ fn six_numbers<'py>(item: impl Fn(usize) -> PyResult<Bound<'py, PyAny>>) -> PyRe
 /// A conic `A x^2 + B x y + C y^2 + D x + E y + F = 0`.
 #[pyclass(frozen, eq, name = "Conic", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyConic {
+pub(crate) struct PyConic {
     pub(crate) inner: Conic,
 }
 

@@ -406,7 +406,7 @@ impl PyConfiguration {
 /// What a designer checks of one linkage that must pass a task's poses.
 #[pyclass(frozen, eq, name = "LinkageFigures", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyLinkageFigures {
+pub(crate) struct PyLinkageFigures {
     pub(crate) inner: LinkageFigures,
 }
 

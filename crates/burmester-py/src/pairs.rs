@@ -208,7 +208,7 @@ impl PyPairMap {
 /// with Ctrl-C honoured (ten million of them take seconds).
 fn dyads<'py>(
     py: Python<'py>,
-    v: &[Option<burmester::synthesis::curves::CurveDyad>],
+    v: &[Option<burmester::synthesis::CurveDyad>],
 ) -> PyResult<Bound<'py, PyList>> {
     list_polled(py, v, |d| match d {
         Some(d) => Ok(Bound::new(py, PyCurveDyad::from(d))?.into_any()),

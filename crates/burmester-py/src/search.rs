@@ -38,7 +38,7 @@ fn xys(v: &[Point2<f64>]) -> Vec<Xy> {
 /// The space a design must fit in.
 #[pyclass(frozen, eq, from_py_object, name = "Space", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PySpace {
+pub(crate) struct PySpace {
     pub(crate) inner: Space,
 }
 

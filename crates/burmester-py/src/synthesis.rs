@@ -1,6 +1,7 @@
 //! `burmester.Task`, `Pole`, `Filemon` and `SynthesizedFourBar` (the core's
 //! `synthesis`).
 
+use burmester::synthesis::{FivePositions, FourPositions};
 use burmester::{CircleOrLine, Cremona, Line, Point2, Pole, Pose, Task};
 use numpy::{PyArray2, PyArrayDyn};
 use pyo3::exceptions::PyTypeError;
@@ -123,7 +124,7 @@ fn poses_arg(ob: &Bound<'_, PyAny>) -> PyResult<Vec<Pose>> {
 /// direction in which it lies at infinity.
 #[pyclass(frozen, eq, name = "Pole", module = "burmester")]
 #[derive(Clone, PartialEq)]
-pub struct PyPole {
+pub(crate) struct PyPole {
     pair: (usize, usize),
     point: Option<Xy>,
     direction: Option<Xy>,
@@ -213,19 +214,12 @@ impl PyTask {
         self.inner.cremona().py()
     }
 
-    /// A task of three poses, or the `needs_poses` error naming `method`.
-    fn three_poses(&self, method: &'static str) -> PyResult<()> {
-        if self.inner.len() == 3 {
-            return Ok(());
-        }
-        Err(crate::errors::to_py(
-            burmester::InvalidInput::NeedsPoses {
-                method,
-                required: 3,
-                found: self.inner.len(),
-            }
-            .into(),
-        ))
+    fn four(&self, method: &'static str) -> PyResult<&FourPositions> {
+        self.inner.four_positions(method).py()
+    }
+
+    fn five(&self, method: &'static str) -> PyResult<&FivePositions> {
+        self.inner.five_positions(method).py()
     }
 }
 
@@ -323,19 +317,11 @@ impl PyTask {
     }
 
     fn circle_point(&self, center: PyPoint) -> PyResult<Xy> {
-        if self.inner.len() == 4 {
-            let four = curves::four(&self.inner, "Task.circle_point")?;
-            return four.circle_point(center.0).map(pt).py();
-        }
-        self.inner.circle_point(center.0).map(pt).py()
+        self.inner.circle_point_of(center.0).map(pt).py()
     }
 
     fn center_point(&self, circle: PyPoint) -> PyResult<Xy> {
-        if self.inner.len() == 4 {
-            let four = curves::four(&self.inner, "Task.center_point")?;
-            return four.center_point(circle.0).map(pt).py();
-        }
-        self.inner.center_point(circle.0).map(pt).py()
+        self.inner.center_point_of(circle.0).map(pt).py()
     }
 
     fn circle_points<'py>(
@@ -343,15 +329,10 @@ impl PyTask {
         py: Python<'py>,
         centers: FloatArray<'py>,
     ) -> PyResult<MappedPoints<'py>> {
-        if self.inner.len() == 4 {
-            let four = curves::four(&self.inner, "Task.circle_points")?;
-            return map_points(py, centers, move |p| four.circle_point(p));
-        }
         // A task of five poses is a misuse, not a point without an answer:
         // raise instead of a mask of False.
-        self.three_poses("Task.circle_points")?;
-        let t = self.inner;
-        map_points(py, centers, move |p| t.circle_point(p))
+        self.inner.check_point_maps("Task.circle_points").py()?;
+        map_points(py, centers, |p| self.inner.circle_point_of(p))
     }
 
     fn center_points<'py>(
@@ -359,38 +340,33 @@ impl PyTask {
         py: Python<'py>,
         circles: FloatArray<'py>,
     ) -> PyResult<MappedPoints<'py>> {
-        if self.inner.len() == 4 {
-            let four = curves::four(&self.inner, "Task.center_points")?;
-            return map_points(py, circles, move |p| four.center_point(p));
-        }
         // A task of five poses is a misuse, not a point without an answer:
         // raise instead of a mask of False.
-        self.three_poses("Task.center_points")?;
-        let t = self.inner;
-        map_points(py, circles, move |p| t.center_point(p))
+        self.inner.check_point_maps("Task.center_points").py()?;
+        map_points(py, circles, |p| self.inner.center_point_of(p))
     }
 
     fn dyad(&self, center: PyPoint) -> PyResult<(Xy, Xy)> {
-        let d = curves::dyad_of(&self.inner, center.0, "Task.dyad")?;
+        let d = self.inner.dyad(center.0).py()?;
         Ok(dyad_tuple(&d))
     }
 
     fn crank_angles(&self, center: PyPoint) -> PyResult<Vec<f64>> {
-        let d = curves::dyad_of(&self.inner, center.0, "Task.crank_angles")?;
+        let d = self.inner.dyad(center.0).py()?;
         Ok(self.inner.crank_angles(&d).to_vec())
     }
 
     // Four poses: the Burmester curves.
 
     fn center_point_curve(&self) -> PyResult<PyCubic> {
-        let four = curves::four(&self.inner, "Task.center_point_curve")?;
+        let four = self.four("Task.center_point_curve")?;
         Ok(PyCubic {
             inner: *four.center_point_curve(),
         })
     }
 
     fn circle_point_curve(&self) -> PyResult<PyCubic> {
-        let four = curves::four(&self.inner, "Task.circle_point_curve")?;
+        let four = self.four("Task.circle_point_curve")?;
         Ok(PyCubic {
             inner: *four.circle_point_curve(),
         })
@@ -398,12 +374,12 @@ impl PyTask {
 
     /// The six points `Q_jk` (pairs `12, 13, 14, 23, 24, 34`).
     fn coincidence_points(&self) -> PyResult<Vec<PyCoincidencePoint>> {
-        let four = curves::four(&self.inner, "Task.coincidence_points")?;
+        let four = self.four("Task.coincidence_points")?;
         Ok(four.coincidence_points().iter().map(Into::into).collect())
     }
 
     fn curve_dyad(&self, center: PyPoint) -> PyResult<PyCurveDyad> {
-        let four = curves::four(&self.inner, "Task.curve_dyad")?;
+        let four = self.four("Task.curve_dyad")?;
         Ok((&four.curve_dyad(center.0).py()?).into())
     }
 
@@ -413,7 +389,7 @@ impl PyTask {
         py: Python<'py>,
         samples: Count,
     ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
-        let four = curves::four(&self.inner, "Task.curve_dyads")?;
+        let four = self.four("Task.curve_dyads")?;
         // Ten million samples take seconds: Ctrl-C is watched.
         let long = samples.0 >= 1 << 14;
         let runs = crate::run::run_in(py, long, None, None, "dyads", |control| {
@@ -442,7 +418,7 @@ impl PyTask {
         ymax: Real,
         plane: &str,
     ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-        let four = curves::four(&self.inner, "Task.branch_free_arcs")?;
+        let four = self.four("Task.branch_free_arcs")?;
         let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
         let circle = curves::circle_plane(plane)?;
         let driven = four.dyad_from_center(driven_center.0).py()?;
@@ -461,7 +437,7 @@ impl PyTask {
     /// of a driving center point on the curve for the driven dyad with
     /// `driven_center`.
     fn curve_branch(&self, driven_center: PyPoint, center: PyPoint) -> PyResult<&'static str> {
-        let four = curves::four(&self.inner, "Task.curve_branch")?;
+        let four = self.four("Task.curve_branch")?;
         let driven = four.dyad_from_center(driven_center.0).py()?;
         let arcs = four.filemon(&driven).py()?;
         Ok(arcs.classify_center_point(center.0).py()?.as_str())
@@ -478,7 +454,7 @@ impl PyTask {
         ymax: Real,
         plane: &str,
     ) -> PyResult<Vec<(String, Option<&'static str>, Bound<'py, PyArray2<f64>>)>> {
-        let four = curves::four(&self.inner, "Task.order_arcs")?;
+        let four = self.four("Task.order_arcs")?;
         let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
         let circle = curves::circle_plane(plane)?;
         let arcs = py.detach(|| {
@@ -502,31 +478,23 @@ impl PyTask {
     // Five poses: the Burmester points.
 
     fn burmester_points(&self) -> PyResult<Vec<(Xy, Xy)>> {
-        let five = curves::five(&self.inner, "Task.burmester_points")?;
+        let five = self.five("Task.burmester_points")?;
         Ok(five.burmester_points().iter().map(dyad_tuple).collect())
     }
 
     fn burmester_curves(&self) -> PyResult<(PyCubic, PyCubic)> {
-        let five = curves::five(&self.inner, "Task.burmester_curves")?;
+        let five = self.five("Task.burmester_curves")?;
         let [a, b] = five.center_point_curves();
         Ok((PyCubic { inner: a }, PyCubic { inner: b }))
     }
 
     fn burmester_four_bars(&self) -> PyResult<Vec<(usize, usize, PySynthesizedFourBar)>> {
-        let five = curves::five(&self.inner, "Task.burmester_four_bars")?;
-        let pts = five.burmester_points();
-        let mut out = Vec::new();
-        for (i, a) in pts.iter().enumerate() {
-            for (j, c) in pts.iter().enumerate() {
-                if i == j {
-                    continue;
-                }
-                if let Ok(fb) = self.inner.four_bar(a, c) {
-                    out.push((i, j, PySynthesizedFourBar::new(self.inner, fb)));
-                }
-            }
-        }
-        Ok(out)
+        let bars = self.inner.burmester_four_bars("Task.burmester_four_bars");
+        Ok(bars
+            .py()?
+            .into_iter()
+            .map(|(i, j, fb)| (i, j, PySynthesizedFourBar::new(self.inner, fb)))
+            .collect())
     }
 
     fn filemon(&self, driven_center: PyPoint) -> PyResult<PyFilemon> {
@@ -541,10 +509,8 @@ impl PyTask {
         driving_center: PyPoint,
         driven_center: PyPoint,
     ) -> PyResult<PySynthesizedFourBar> {
-        let a = curves::dyad_of(&self.inner, driving_center.0, "Task.four_bar")?;
-        let c = curves::dyad_of(&self.inner, driven_center.0, "Task.four_bar")?;
         self.inner
-            .four_bar(&a, &c)
+            .four_bar_of(driving_center.0, driven_center.0)
             .map(|inner| PySynthesizedFourBar::new(self.inner, inner))
             .py()
     }

@@ -12,7 +12,7 @@
 //! cargo run --release -p burmester --example four_five_pose
 //! ```
 
-use burmester::synthesis::curves::{FivePositions, FourPositions};
+use burmester::synthesis::{FivePositions, FourPositions};
 use burmester::{
     AssemblyMode, Constraints, Control, DesignLimits, FourBar, Point2, Pose, RankBy, Task,
 };

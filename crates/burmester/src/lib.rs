@@ -95,7 +95,7 @@
 //! (`examples/four_five_pose.rs` prints the whole of it).
 //!
 //! ```
-//! use burmester::synthesis::curves::{FivePositions, FourPositions};
+//! use burmester::synthesis::{FivePositions, FourPositions};
 //! use burmester::{AssemblyMode, FourBar, Point2, Pose, Task};
 //! let fb = FourBar::from_pivots(Point2::origin(), Point2::new(4.0, 0.0), 1.5, 3.5, 3.0)?;
 //! let pose = |deg: f64| -> burmester::Result<Pose> {

@@ -267,6 +267,42 @@ pub const COS_SLACK: f64 = 1e-9;
 /// (an f32, rounded by at most `1e-7` rad) can neither tie nor lead.
 pub const TOP_SLACK: f64 = 1e-6;
 
+// The four- and five-pose synthesis (`synthesis::four`, `synthesis::five`).
+
+/// A point lies on a curve when its first-order distance from it
+/// ([`crate::geom::Cubic::distance_estimate`]) is at most this times the task
+/// size ([`FourPositions::size`](crate::synthesis::FourPositions::size)) plus
+/// the point's distance from the centroid of the pose points, or at most the
+/// curve's rounding band there ([`ON_CURVE_EPS`]: the rounding of the curve's
+/// coefficients from the poses and of its evaluation, over the gradient,
+/// plus the rounding of the point's coordinates), or when the curve's value
+/// there is within that band (at a singular point the first-order distance
+/// means nothing). The band is what covers the library's own points where
+/// the curve is ill-conditioned (poses that are nearly rotations about one
+/// point, a nearly singular point of the curve): it moves, turns and
+/// scales with the task.
+pub const ON_CURVE_TOLERANCE: f64 = 1e-9;
+
+/// Two poses are the same when their points agree within this times the
+/// task size and their angles within this many radians (modulo `2 pi`).
+pub const COINCIDENT_POSES: f64 = 1e-12;
+
+/// A curve vanishes identically (the poses are rotations about one point)
+/// when every coefficient of its exact expansion is at most this times the
+/// largest coefficient of the same expansion with every term taken in
+/// magnitude (the scale of its rounding).
+pub const DEGENERATE_CURVE: f64 = 1e-12;
+
+/// A Burmester point is kept when the crank length of its dyad varies over
+/// the five poses by at most this relative amount (`(max - min) / max`);
+/// the points found are concyclic to about `1e-14`.
+pub const BURMESTER_RESIDUAL: f64 = 1e-10;
+
+/// A center point given for a dyad of five poses is the Burmester point
+/// whose center lies within this times the task's scale plus its distance
+/// from pose 1 (a Burmester point typed back in).
+pub const NEAR_BURMESTER_POINT: f64 = 1e-7;
+
 #[cfg(test)]
 mod tests {
     use super::*;

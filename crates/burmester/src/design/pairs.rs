@@ -40,7 +40,7 @@ use crate::engine::Control;
 use crate::error::{InvalidInput, Result, try_collect};
 use crate::geom::Grid;
 use crate::linkage::figures::figures;
-use crate::synthesis::curves::{CurveDyad, FourPositions};
+use crate::synthesis::{CurveDyad, FourPositions};
 use crate::synthesis::{SynthesizedFourBar, Task};
 
 /// What a pair map was computed for: the task, the samples of both axes,

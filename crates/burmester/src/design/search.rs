@@ -93,8 +93,8 @@ use crate::engine::Control;
 use crate::error::{Error, InvalidInput, Result, count_in, in_range};
 use crate::geom::{Grid, Viewport};
 use crate::linkage::Direction;
-use crate::synthesis::curves::{FivePositions, FourPositions};
 use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
+use crate::synthesis::{FivePositions, FourPositions};
 use crate::tolerance;
 
 mod motor;

@@ -91,24 +91,15 @@ pub struct Conic {
     known: Option<Vector2<f64>>,
 }
 
-/// The kind and the coefficients `[A, B, C, D, E, F]` of
-/// `A x^2 + B x y + C y^2 + D x + E y + F = 0` in world coordinates, not
-/// the local frame the conic is kept in.
-impl core::fmt::Debug for Conic {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Conic")
-            .field("kind", &self.kind())
-            .field("coefficients", &self.coefficients())
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The kind and the coefficients `[A, B, C, D, E, F]` of
+    /// `A x^2 + B x y + C y^2 + D x + E y + F = 0` in world coordinates, not
+    /// the local frame the conic is kept in.
+    Conic,
+    s => kind: s.kind(), coefficients: s.coefficients(),
+);
 
-impl LocalFrame for Conic {
-    #[inline]
-    fn frame(&self) -> (Point2<f64>, f64) {
-        (self.origin, self.scale)
-    }
-}
+crate::geom::local_frame!(Conic);
 
 impl Conic {
     /// A conic from its coefficients in the fixed frame.

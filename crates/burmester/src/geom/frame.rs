@@ -45,3 +45,17 @@ pub(crate) trait LocalFrame {
         (w / mw, mw / scale)
     }
 }
+
+/// [`LocalFrame`] for a type that keeps its frame in the fields `origin`
+/// and `scale`.
+macro_rules! local_frame {
+    ($ty:ident) => {
+        impl $crate::geom::LocalFrame for $ty {
+            #[inline]
+            fn frame(&self) -> (nalgebra::Point2<f64>, f64) {
+                (self.origin, self.scale)
+            }
+        }
+    };
+}
+pub(crate) use local_frame;

@@ -92,16 +92,11 @@ pub struct Grid {
     dy: f64,
 }
 
-/// The viewport and the sample counts, not the derived cell size.
-impl core::fmt::Debug for Grid {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Grid")
-            .field("viewport", &self.viewport)
-            .field("nx", &self.nx)
-            .field("ny", &self.ny)
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The viewport and the sample counts, not the derived cell size.
+    Grid,
+    s => viewport: s.viewport, nx: s.nx, ny: s.ny,
+);
 
 impl Grid {
     /// The largest number of samples a grid may have (`2^32`).

@@ -9,13 +9,15 @@ mod frame;
 mod grid;
 mod line;
 mod pose;
+mod show;
 
 pub use conic::{Conic, ConicKind};
 pub use cubic::Cubic;
-pub(crate) use frame::{FAR, LocalFrame};
+pub(crate) use frame::{FAR, LocalFrame, local_frame};
 pub use grid::{Grid, Viewport};
 pub use line::{CircleOrLine, Line};
 pub use pose::{MAX_POSES, PerPose, Pose, Similarity};
+pub(crate) use show::{debug_shows, str_names};
 
 use nalgebra::{Point2, Vector2};
 

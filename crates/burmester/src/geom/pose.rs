@@ -178,6 +178,21 @@ impl<T: Copy> PerPose<T> {
         Self::from_fn(values.len(), |k| values[k])
     }
 
+    /// At most [`MAX_POSES`] values, possibly none (a few results per task,
+    /// kept inline), with `fill` in the rest of the room.
+    ///
+    /// # Panics
+    ///
+    /// If the slice is longer than [`MAX_POSES`].
+    pub(crate) fn up_to(values: &[T], fill: T) -> Self {
+        let mut items = [fill; MAX_POSES];
+        items[..values.len()].copy_from_slice(values);
+        PerPose {
+            items,
+            len: values.len() as u8,
+        }
+    }
+
     /// `g` applied to every value.
     pub fn map<U: Copy>(&self, mut g: impl FnMut(T) -> U) -> PerPose<U> {
         PerPose::from_fn(self.len(), |k| g(self.items[k]))

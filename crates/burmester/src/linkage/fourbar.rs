@@ -238,21 +238,15 @@ impl AssemblyMode {
             None
         }
     }
+}
 
+crate::geom::str_names!(
     /// `"open"` or `"crossed"`.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            AssemblyMode::Open => "open",
-            AssemblyMode::Crossed => "crossed",
-        }
+    AssemblyMode {
+        Open => "open",
+        Crossed => "crossed",
     }
-}
-
-impl core::fmt::Display for AssemblyMode {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(self.as_str())
-    }
-}
+);
 
 impl core::str::FromStr for AssemblyMode {
     type Err = InvalidInput;

@@ -75,7 +75,7 @@ use core::f64::consts::{PI, TAU};
 
 use nalgebra::{Point2, Vector2};
 
-use crate::error::{DegenerateError, DriveError, InvalidInput, Result, finite};
+use crate::error::{DriveError, InvalidInput, Result, finite};
 use crate::geom::{Pose, point_is_finite, rotate, unit, wrap_angle};
 use crate::linkage::grashof::{fmax, fmin};
 use crate::linkage::{AngleInterval, AssemblyMode, Configuration, FourBar, Grashof, InputRange};
@@ -322,7 +322,7 @@ impl SixBar {
     /// # Errors
     ///
     /// [`InvalidInput::NotFinite`] for a non-finite coordinate;
-    /// [`DegenerateError::ZeroLengthLink`] for two joints of a link (or two
+    /// [`crate::DegenerateError::ZeroLengthLink`] for two joints of a link (or two
     /// fixed pivots) that coincide; [`DriveError::ToggleJoints`] when a
     /// loop is at a toggle in the given position (its mode is undefined);
     /// the errors of [`FourBar::from_pivots`] (a linkage too large).
@@ -354,16 +354,7 @@ impl SixBar {
             (j.output_pivot, j.rocker_joint, "rocker C0-C"),
             (j.input_pivot, j.output_pivot, "ground A0-C0"),
         ];
-        for (a, b, what) in links {
-            if (a - b).norm() <= tiny {
-                return Err(DegenerateError::ZeroLengthLink {
-                    what,
-                    x: a.x,
-                    y: a.y,
-                }
-                .into());
-            }
-        }
+        super::nonzero_links(links, tiny)?;
         let drive = FourBar::from_pivots(
             j.drive_pivot,
             j.input_pivot,

@@ -77,17 +77,12 @@ pub struct FilemonLines {
     order: Option<PerPose<usize>>,
 }
 
-/// The driven dyad and the fixed pivot's images `C'k`, not the sort order
-/// kept.
-impl core::fmt::Debug for FilemonLines {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("FilemonLines")
-            .field("driven", &self.driven)
-            .field("fixed_pivot_images", &self.c_prime)
-            .field("all_defective", &self.all_defective())
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The driven dyad and the fixed pivot's images `C'k`, not the sort order
+    /// kept.
+    FilemonLines,
+    s => driven: s.driven, fixed_pivot_images: s.c_prime, all_defective: s.all_defective(),
+);
 
 impl FilemonLines {
     /// Filemon's construction for a driven dyad of `task`.

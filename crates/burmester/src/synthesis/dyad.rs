@@ -308,19 +308,13 @@ pub(crate) fn members_length(
 /// [`DegenerateError::ZeroLengthLink`] when the ground or the coupler is
 /// within `tiny` of zero; errors of [`FourBar::from_pivots`].
 pub(crate) fn linkage_of(driving: &Dyad, driven: &Dyad, tiny: f64) -> Result<FourBar> {
-    for (a, b, what) in [
-        (driving.center, driven.center, "ground link"),
-        (driving.circle, driven.circle, "coupler link"),
-    ] {
-        if (a - b).norm() <= tiny {
-            return Err(DegenerateError::ZeroLengthLink {
-                what,
-                x: a.x,
-                y: a.y,
-            }
-            .into());
-        }
-    }
+    crate::linkage::nonzero_links(
+        [
+            (driving.center, driven.center, "ground link"),
+            (driving.circle, driven.circle, "coupler link"),
+        ],
+        tiny,
+    )?;
     FourBar::from_pivots(
         driving.center,
         driven.center,

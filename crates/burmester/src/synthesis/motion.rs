@@ -67,15 +67,11 @@ pub struct Motion {
     shift: PerPose<Vector2<f64>>,
 }
 
-/// The poses and their poles, not the rotations and shifts kept.
-impl core::fmt::Debug for Motion {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Motion")
-            .field("poses", &self.poses())
-            .field("poles", &self.poles())
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The poses and their poles, not the rotations and shifts kept.
+    Motion,
+    s => poses: s.poses(), poles: s.poles(),
+);
 
 impl Motion {
     /// The motion through `poses` (validated by [`Task::new`](crate::Task::new)).

@@ -1,6 +1,8 @@
-//! The task: three to five poses of the coupler, validated, with their
-//! motion (displacements and poles) and, for three poses, the maps between
-//! circle points and center points.
+//! The task: three to five poses of the coupler, validated once, with their
+//! motion (displacements and poles) and the part for their count, built
+//! once: for three poses the maps between circle points and center points,
+//! for four the Burmester curves, for five the Burmester points. The
+//! methods that mean one thing for any count dispatch on that part.
 //!
 //! The **circle-point plane** holds coupler points written where they are at
 //! pose 1; the **center-point plane** is the fixed frame. A dyad's center
@@ -14,6 +16,7 @@ use crate::error::{DegenerateError, InvalidInput, Result, bounded};
 use crate::geom::{PerPose, Pose, Similarity, length};
 use crate::synthesis::motion::{Motion, Pole};
 use crate::synthesis::three::{Cremona, Linear, Maps};
+use crate::synthesis::{Dyad, FivePositions, FourPositions, SynthesizedFourBar};
 use crate::tolerance;
 
 /// Three to five poses of the coupler, validated, with their motion.
@@ -46,28 +49,60 @@ use crate::tolerance;
 /// assert!((task.center_point(x)? - y).norm() < 1e-12);
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Clone, Copy)]
 pub struct Task {
     motion: Motion,
     /// The unit of the relative tolerances (see [`Task::scale`]).
     scale: f64,
-    /// The three-position maps (three poses only).
-    three: Option<Maps>,
-    /// The maps through the poles of a task of three finite poles whose
-    /// maps run by the linear form (a pole far from the poses): its pole
-    /// triangle and circles ([`Task::cremona`]).
-    far_poles: Option<Cremona>,
+    /// What the task holds for its pose count.
+    part: Part,
 }
 
-/// The poses and their poles, not the maps kept for three poses.
-impl core::fmt::Debug for Task {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Task")
-            .field("poses", &self.poses())
-            .field("poles", &self.poles())
-            .finish()
+/// What a task holds for its number of poses, built once with it: a new
+/// pose count is a new arm here (and a folder beside `three/`, `four/`,
+/// `five/`).
+// One per task, copied with it (a task is `Copy`): no box for the larger.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy)]
+enum Part {
+    /// Three poses: the maps between the planes, and the maps through the
+    /// poles of a task whose maps run by the linear form (a pole far from
+    /// the poses): its pole triangle and circles ([`Task::cremona`]).
+    Three {
+        maps: Maps,
+        far_poles: Option<Cremona>,
+    },
+    /// Four poses: the Burmester curves; `None` when the poses have none
+    /// (the error is made again where they are asked for).
+    Four(Option<FourPositions>),
+    /// Five poses: the Burmester points; `None` when they are refused.
+    Five(Option<FivePositions>),
+}
+
+/// Equal poses: the motion, the scale and the three-pose maps compared, not
+/// the curves or points of four or five poses (which the poses determine).
+impl PartialEq for Task {
+    fn eq(&self, other: &Self) -> bool {
+        let parts = match (&self.part, &other.part) {
+            (
+                Part::Three { maps, far_poles },
+                Part::Three {
+                    maps: m,
+                    far_poles: f,
+                },
+            ) => maps == m && far_poles == f,
+            (Part::Four(_), Part::Four(_)) | (Part::Five(_), Part::Five(_)) => true,
+            _ => false,
+        };
+        parts && self.motion == other.motion && self.scale == other.scale
     }
 }
+
+crate::geom::debug_shows!(
+    /// The poses and their poles, not the part kept for their count.
+    Task,
+    s => poses: s.poses(), poles: s.poles(),
+);
 
 impl Task {
     /// The fewest poses of a task.
@@ -127,24 +162,7 @@ impl Task {
             }
             .into());
         }
-        const NAMES: [[&str; 3]; 5] = [
-            ["pose 1 x", "pose 1 y", "pose 1 angle"],
-            ["pose 2 x", "pose 2 y", "pose 2 angle"],
-            ["pose 3 x", "pose 3 y", "pose 3 angle"],
-            ["pose 4 x", "pose 4 y", "pose 4 angle"],
-            ["pose 5 x", "pose 5 y", "pose 5 angle"],
-        ];
-        const RESCALE: &str = "rescale the task (the maps are invariant under scaling)";
-        for (p, names) in poses.iter().zip(NAMES) {
-            bounded(names[0], p.position.x, Self::MAX_COORDINATE, RESCALE)?;
-            bounded(names[1], p.position.y, Self::MAX_COORDINATE, RESCALE)?;
-            bounded(
-                names[2],
-                p.angle,
-                Self::MAX_ANGLE,
-                "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)",
-            )?;
-        }
+        check_poses(poses)?;
         let motion = Motion::new(PerPose::from_slice(poses));
         for (i, j) in motion.pairs() {
             let (a, b) = (&poses[i - 1], &poses[j - 1]);
@@ -205,15 +223,19 @@ impl Task {
             return Ok(Task {
                 motion,
                 scale: size,
-                three: Some(Maps::Linear(linear)),
-                far_poles: Some(cremona.with_linear(linear)),
+                part: Part::Three {
+                    maps: Maps::Linear(linear),
+                    far_poles: Some(cremona.with_linear(linear)),
+                },
             });
         }
         Ok(Task {
             motion,
             scale: size,
-            three: Some(Maps::Poles(cremona)),
-            far_poles: None,
+            part: Part::Three {
+                maps: Maps::Poles(cremona),
+                far_poles: None,
+            },
         })
     }
 
@@ -244,8 +266,10 @@ impl Task {
         Ok(Task {
             motion,
             scale: size,
-            three: Some(Maps::Linear(Linear::new(motion, size, span_of(&motion)))),
-            far_poles: None,
+            part: Part::Three {
+                maps: Maps::Linear(Linear::new(motion, size, span_of(&motion))),
+                far_poles: None,
+            },
         })
     }
 
@@ -277,8 +301,11 @@ impl Task {
         Ok(Task {
             motion,
             scale: size,
-            three: None,
-            far_poles: None,
+            part: if p.len() == 4 {
+                Part::Four(FourPositions::of(p).ok())
+            } else {
+                Part::Five(FivePositions::of(p).ok())
+            },
         })
     }
 
@@ -355,19 +382,31 @@ impl Task {
     /// [`Task::center_point`]), Filemon's construction and the solution maps
     /// work for such a task.
     pub fn cremona(&self) -> Result<&Cremona> {
-        match (&self.three, &self.far_poles) {
-            (Some(Maps::Poles(c)), _) | (_, Some(c)) => Ok(c),
-            (Some(Maps::Linear(l)), None) => {
+        match &self.part {
+            Part::Three {
+                maps: Maps::Poles(c),
+                ..
+            }
+            | Part::Three {
+                far_poles: Some(c), ..
+            } => Ok(c),
+            Part::Three {
+                maps: Maps::Linear(l),
+                ..
+            } => {
                 let (i, j) = l.translation().unwrap_or((1, 2));
                 Err(DegenerateError::PureTranslation { i, j }.into())
             }
-            (None, None) => Err(self.needs(3, "Task::cremona")),
+            _ => Err(self.needs(3, "Task::cremona")),
         }
     }
 
     /// The three-position maps, whichever form the task uses.
     pub(crate) fn maps(&self) -> Option<&Maps> {
-        self.three.as_ref()
+        match &self.part {
+            Part::Three { maps, .. } => Some(maps),
+            _ => None,
+        }
     }
 
     /// The error of a method that needs `required` poses.
@@ -424,8 +463,7 @@ impl Task {
     /// two finite poles when the third is at infinity);
     /// [`InvalidInput::NeedsPoses`] for a task of another number of poses.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
-        self.three
-            .as_ref()
+        self.maps()
             .ok_or_else(|| self.needs(3, "Task::circle_point"))?
             .circle_point(center)
     }
@@ -439,8 +477,7 @@ impl Task {
     /// As [`Cremona::center_point`]; [`InvalidInput::NeedsPoses`] for a
     /// task of another number of poses.
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
-        self.three
-            .as_ref()
+        self.maps()
             .ok_or_else(|| self.needs(3, "Task::center_point"))?
             .center_point(circle)
     }
@@ -491,6 +528,235 @@ impl Task {
     pub fn transformed(&self, factor: f64, angle: f64, offset: Vector2<f64>) -> Result<Self> {
         self.transformed_by(&Similarity::new(factor, angle, offset)?)
     }
+}
+
+/// The part for the pose count, and what dispatches on it.
+impl Task {
+    /// The Burmester curves of a task of four poses (built with the task).
+    /// `method` names the caller in the error.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NeedsPoses`] naming `method` for a task of three or
+    /// five poses; the errors of [`FourPositions::new`].
+    pub fn four_positions(&self, method: &'static str) -> Result<&FourPositions> {
+        match &self.part {
+            Part::Four(four) => self.kept(four.as_ref(), FourPositions::of, method),
+            _ => Err(self.needs(4, method)),
+        }
+    }
+
+    /// The Burmester points of a task of five poses (built with the task).
+    /// `method` names the caller in the error.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NeedsPoses`] naming `method` for a task of three or
+    /// four poses; the errors of [`FivePositions::new`].
+    pub fn five_positions(&self, method: &'static str) -> Result<&FivePositions> {
+        let Part::Five(five) = &self.part else {
+            return Err(self.needs(5, method));
+        };
+        self.kept(five.as_ref(), FivePositions::of, method)
+    }
+
+    /// The part kept when the task was made or, refused then, the same
+    /// error again (the part is a function of the poses).
+    fn kept<'a, T>(
+        &self,
+        part: Option<&'a T>,
+        build: fn(&[Pose]) -> Result<T>,
+        method: &'static str,
+    ) -> Result<&'a T> {
+        part.ok_or_else(|| {
+            build(self.poses())
+                .err()
+                .unwrap_or_else(|| self.needs(self.len(), method))
+        })
+    }
+
+    /// Checks that the task maps points between the planes
+    /// ([`Task::circle_point_of`], [`Task::center_point_of`]): three poses
+    /// (the closed-form maps) or four whose curves exist.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NeedsPoses`] naming `method` for five poses (whose
+    /// dyads are finitely many: [`Task::dyad`]); for four, the errors of
+    /// [`FourPositions::new`].
+    pub fn check_point_maps(&self, method: &'static str) -> Result<()> {
+        match &self.part {
+            Part::Three { .. } => Ok(()),
+            Part::Four(_) => self.four_positions(method).map(|_| ()),
+            Part::Five(_) => Err(self.needs(3, method)),
+        }
+    }
+
+    /// The circle point of a center point for three poses (the closed-form
+    /// map, [`Task::circle_point`]) or four (on the center-point curve,
+    /// [`FourPositions::circle_point`]).
+    ///
+    /// # Errors
+    ///
+    /// As those; [`InvalidInput::NeedsPoses`] for five poses.
+    pub fn circle_point_of(&self, center: Point2<f64>) -> Result<Point2<f64>> {
+        match &self.part {
+            Part::Four(_) => self
+                .four_positions("Task::circle_point_of")?
+                .circle_point(center),
+            _ => self.circle_point(center),
+        }
+    }
+
+    /// The center point of a circle point for three poses (the closed-form
+    /// map, [`Task::center_point`]) or four (on the circle-point curve,
+    /// [`FourPositions::center_point`]).
+    ///
+    /// # Errors
+    ///
+    /// As those; [`InvalidInput::NeedsPoses`] for five poses.
+    pub fn center_point_of(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
+        match &self.part {
+            Part::Four(_) => self
+                .four_positions("Task::center_point_of")?
+                .center_point(circle),
+            _ => self.center_point(circle),
+        }
+    }
+
+    /// The dyad of a center point, for any pose count: three poses by the
+    /// closed-form map; four by the center-point curve (an error with the
+    /// distance when it is off the curve); five by the Burmester point it
+    /// is (within [`tolerance::NEAR_BURMESTER_POINT`] relative), else by
+    /// the curve of poses 1 to 4, refused unless the dyad passes all five
+    /// poses (within [`tolerance::DYAD`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::dyad_from_center`], [`FourPositions::dyad_from_center`];
+    /// for five poses the errors of [`FivePositions::new`] and
+    /// [`InvalidInput::NotADyad`] for a center point that is not a
+    /// Burmester point.
+    pub fn dyad(&self, center: Point2<f64>) -> Result<Dyad> {
+        match &self.part {
+            Part::Three { .. } => self.dyad_from_center(center),
+            Part::Four(_) => self.four_positions("Task::dyad")?.dyad_from_center(center),
+            Part::Five(_) => {
+                let five = self.five_positions("Task::dyad")?;
+                let p1 = self.poses()[0].position;
+                let near = |a: Point2<f64>| {
+                    (a - center).norm()
+                        <= tolerance::NEAR_BURMESTER_POINT * (self.scale() + (a - p1).norm())
+                };
+                if let Some(d) = five.burmester_points().iter().find(|d| near(d.center)) {
+                    return Ok(*d);
+                }
+                let d = FourPositions::of(&self.poses()[..4])?.dyad_from_center(center)?;
+                let spread = five.residual(&d);
+                // A NaN spread (a dyad at infinity) fails too.
+                if spread.is_nan() || spread > tolerance::DYAD {
+                    let which = "dyad of this center point (not a Burmester point)";
+                    return Err(crate::synthesis::errors::not_a_dyad(which, spread));
+                }
+                Ok(d)
+            }
+        }
+    }
+
+    /// The four-bar of the dyads of two center points ([`Task::dyad`] of
+    /// each, then [`Task::four_bar`]), for any pose count.
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::dyad`] and [`Task::four_bar`].
+    pub fn four_bar_of(
+        &self,
+        driving_center: Point2<f64>,
+        driven_center: Point2<f64>,
+    ) -> Result<SynthesizedFourBar> {
+        let driving = self.dyad(driving_center)?;
+        let driven = self.dyad(driven_center)?;
+        self.four_bar(&driving, &driven)
+    }
+
+    /// The four-bars of every ordered pair of Burmester points of a task of
+    /// five poses, `(driving index, driven index, four-bar)` with the
+    /// indices into [`FivePositions::burmester_points`]; a pair whose
+    /// four-bar cannot be built (a link of zero length) is left out.
+    ///
+    /// # Errors
+    ///
+    /// As [`Task::five_positions`].
+    pub fn burmester_four_bars(
+        &self,
+        method: &'static str,
+    ) -> Result<Vec<(usize, usize, SynthesizedFourBar)>> {
+        let five = self.five_positions(method)?;
+        let points = five.burmester_points();
+        let mut out = Vec::new();
+        for (i, a) in points.iter().enumerate() {
+            for (j, c) in points.iter().enumerate() {
+                if i == j {
+                    continue;
+                }
+                if let Ok(fb) = self.four_bar(a, c) {
+                    out.push((i, j, fb));
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// Checks every number of `poses` (at most [`Task::MAX_POSES`]): finite,
+/// coordinates within [`Task::MAX_COORDINATE`] and angles within
+/// [`Task::MAX_ANGLE`] in magnitude. The one check of the poses, for a task
+/// and for the curves and points built from poses alone.
+///
+/// # Errors
+///
+/// [`InvalidInput::NotFinite`] or [`InvalidInput::TooLarge`] naming the
+/// pose and the number.
+pub(crate) fn check_poses(poses: &[Pose]) -> Result<()> {
+    const NAMES: [[&str; 3]; 5] = [
+        ["pose 1 x", "pose 1 y", "pose 1 angle"],
+        ["pose 2 x", "pose 2 y", "pose 2 angle"],
+        ["pose 3 x", "pose 3 y", "pose 3 angle"],
+        ["pose 4 x", "pose 4 y", "pose 4 angle"],
+        ["pose 5 x", "pose 5 y", "pose 5 angle"],
+    ];
+    const RESCALE: &str = "rescale the task (the maps are invariant under scaling)";
+    for (p, names) in poses.iter().zip(NAMES) {
+        bounded(names[0], p.position.x, Task::MAX_COORDINATE, RESCALE)?;
+        bounded(names[1], p.position.y, Task::MAX_COORDINATE, RESCALE)?;
+        bounded(
+            names[2],
+            p.angle,
+            Task::MAX_ANGLE,
+            "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)",
+        )?;
+    }
+    Ok(())
+}
+
+/// What `build` makes of exactly `count` poses given alone (not by a
+/// task): the count checked (the error naming `method`), then the one check
+/// of the poses ([`check_poses`]).
+pub(crate) fn of_poses<T>(
+    poses: &[Pose],
+    count: usize,
+    method: &'static str,
+    build: fn(&[Pose]) -> Result<T>,
+) -> Result<T> {
+    if poses.len() != count {
+        return Err(crate::synthesis::errors::pose_count(
+            method,
+            count,
+            poses.len(),
+        ));
+    }
+    check_poses(poses)?;
+    build(poses)
 }
 
 /// The largest distance between two pose positions ([`Task::span`]).

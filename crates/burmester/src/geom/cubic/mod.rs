@@ -102,23 +102,14 @@ pub struct Cubic {
     scale: f64,
 }
 
-/// The degree and the ten coefficients in world coordinates (the order of
-/// [`Cubic::coefficients`]), not the local frame the cubic is kept in.
-impl core::fmt::Debug for Cubic {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Cubic")
-            .field("degree", &self.degree())
-            .field("coefficients", &self.coefficients())
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The degree and the ten coefficients in world coordinates (the order of
+    /// [`Cubic::coefficients`]), not the local frame the cubic is kept in.
+    Cubic,
+    s => degree: s.degree(), coefficients: s.coefficients(),
+);
 
-impl LocalFrame for Cubic {
-    #[inline]
-    fn frame(&self) -> (Point2<f64>, f64) {
-        (self.origin, self.scale)
-    }
-}
+crate::geom::local_frame!(Cubic);
 
 impl Cubic {
     /// The default chord tolerance of [`Cubic::trace`] and
@@ -274,7 +265,7 @@ impl Cubic {
     /// `f(p)` is zero within rounding (at a singular point the first-order
     /// distance means nothing). The four-pose curves use this rule with a
     /// band derived from their coefficients' rounding
-    /// ([`ON_CURVE_TOLERANCE`](crate::synthesis::curves::ON_CURVE_TOLERANCE)).
+    /// ([`ON_CURVE_TOLERANCE`](crate::tolerance::ON_CURVE_TOLERANCE)).
     ///
     /// ```
     /// use burmester::Point2;
@@ -301,51 +292,19 @@ impl Cubic {
     /// The gradient at a local point (local units).
     #[inline]
     pub(crate) fn grad_local(&self, v: Vector2<f64>) -> Vector2<f64> {
-        let c = &self.c;
-        let (x, y) = (v.x, v.y);
-        Vector2::new(
-            c[1] + 2.0 * c[3] * x
-                + c[4] * y
-                + 3.0 * c[6] * x * x
-                + 2.0 * c[7] * x * y
-                + c[8] * y * y,
-            c[2] + c[4] * x
-                + 2.0 * c[5] * y
-                + c[7] * x * x
-                + 2.0 * c[8] * x * y
-                + 3.0 * c[9] * y * y,
-        )
+        Vector2::from(gradient(&self.c, v.x, v.y))
     }
 
     /// A bound on the terms of the gradient at a local point.
     pub(crate) fn grad_magnitude_local(&self, v: Vector2<f64>) -> f64 {
-        let c = self.c.map(f64::abs);
-        let (x, y) = (v.x.abs(), v.y.abs());
-        let gx = c[1]
-            + 2.0 * c[3] * x
-            + c[4] * y
-            + 3.0 * c[6] * x * x
-            + 2.0 * c[7] * x * y
-            + c[8] * y * y;
-        let gy = c[2]
-            + c[4] * x
-            + 2.0 * c[5] * y
-            + c[7] * x * x
-            + 2.0 * c[8] * x * y
-            + 3.0 * c[9] * y * y;
+        let [gx, gy] = gradient(&self.c.map(f64::abs), v.x.abs(), v.y.abs());
         gx.hypot(gy)
     }
 
     /// The Hessian `[fxx, fxy, fyy]` at a local point.
     #[inline]
     pub(crate) fn hessian_local(&self, v: Vector2<f64>) -> [f64; 3] {
-        let c = &self.c;
-        let (x, y) = (v.x, v.y);
-        [
-            2.0 * c[3] + 6.0 * c[6] * x + 2.0 * c[7] * y,
-            c[4] + 2.0 * c[7] * x + 2.0 * c[8] * y,
-            2.0 * c[5] + 2.0 * c[8] * x + 6.0 * c[9] * y,
-        ]
+        hessian(&self.c, v.x, v.y)
     }
 
     /// The cubic part as a binary form `[c30, c21, c12, c03]`.
@@ -557,6 +516,27 @@ impl Cubic {
     pub fn polylines(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
         self.trace(viewport, None).polylines()
     }
+}
+
+/// The gradient `[fx, fy]` at `(x, y)` of the cubic with the ascending
+/// coefficients `c` (`c00, c10, c01, c20, c11, c02, c30, c21, c12, c03`).
+#[inline]
+pub(crate) fn gradient(c: &[f64; 10], x: f64, y: f64) -> [f64; 2] {
+    [
+        c[1] + 2.0 * c[3] * x + c[4] * y + 3.0 * c[6] * x * x + 2.0 * c[7] * x * y + c[8] * y * y,
+        c[2] + c[4] * x + 2.0 * c[5] * y + c[7] * x * x + 2.0 * c[8] * x * y + 3.0 * c[9] * y * y,
+    ]
+}
+
+/// The Hessian `[fxx, fxy, fyy]` at `(x, y)` of the cubic with the
+/// ascending coefficients `c`.
+#[inline]
+pub(crate) fn hessian(c: &[f64; 10], x: f64, y: f64) -> [f64; 3] {
+    [
+        2.0 * c[3] + 6.0 * c[6] * x + 2.0 * c[7] * y,
+        c[4] + 2.0 * c[7] * x + 2.0 * c[8] * y,
+        2.0 * c[5] + 2.0 * c[8] * x + 6.0 * c[9] * y,
+    ]
 }
 
 #[cfg(test)]

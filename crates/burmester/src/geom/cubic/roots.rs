@@ -42,17 +42,25 @@ fn is_zero_at(p: &[f64], x: f64) -> bool {
     eval(p, x).abs() <= ZERO_FACTOR * f64::EPSILON * magnitude(p, x)
 }
 
-/// The real roots of `p` in `[lo, hi]`, sorted. A double root (a critical
-/// point where `p` vanishes within rounding) is reported once.
-pub(crate) fn roots_in(p: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+/// `p` without its leading zero coefficients, or `None` when there is no
+/// root to look for in `[lo, hi]`: a constant, an empty (or NaN) interval,
+/// a coefficient that is not finite.
+fn trimmed(p: &[f64], lo: f64, hi: f64) -> Option<&[f64]> {
     let mut n = p.len();
     while n > 0 && p[n - 1] == 0.0 {
         n -= 1;
     }
     let p = &p[..n];
-    if n <= 1 || !(lo <= hi) || p.iter().any(|c| !c.is_finite()) {
+    (n > 1 && lo <= hi && p.iter().all(|c| c.is_finite())).then_some(p)
+}
+
+/// The real roots of `p` in `[lo, hi]`, sorted. A double root (a critical
+/// point where `p` vanishes within rounding) is reported once.
+pub(crate) fn roots_in(p: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+    let Some(p) = trimmed(p, lo, hi) else {
         return Vec::new();
-    }
+    };
+    let n = p.len();
     if n == 2 {
         let r = -p[0] / p[1];
         return if r >= lo && r <= hi {
@@ -105,14 +113,9 @@ pub(crate) fn roots_in_mult(
     hi: f64,
     value: &dyn Fn(f64) -> (f64, f64),
 ) -> Vec<(f64, usize)> {
-    let mut n = p.len();
-    while n > 0 && p[n - 1] == 0.0 {
-        n -= 1;
-    }
-    let p = &p[..n];
-    if n <= 1 || !(lo <= hi) || p.iter().any(|c| !c.is_finite()) {
+    let Some(p) = trimmed(p, lo, hi) else {
         return Vec::new();
-    }
+    };
     let crit = roots_in(&derivative(p), lo, hi);
     let mut knots = Vec::with_capacity(crit.len() + 2);
     knots.push((lo, false));

@@ -35,7 +35,7 @@ use core::f64::consts::PI;
 
 use nalgebra::{Point2, Vector2};
 
-use crate::error::{DegenerateError, InvalidInput, Result, finite_point};
+use crate::error::Result;
 use crate::geom::{CircleOrLine, LocalFrame, cross, rotate_cs};
 use crate::synthesis::motion::Motion;
 use crate::synthesis::three::Linear;
@@ -74,22 +74,13 @@ pub struct Cremona {
     linear: Option<Linear>,
 }
 
-/// The poles `P12, P13, P23` and the image poles, not the local frame.
-impl core::fmt::Debug for Cremona {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Cremona")
-            .field("poles", &self.poles())
-            .field("image_poles", &self.image_poles())
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The poles `P12, P13, P23` and the image poles, not the local frame.
+    Cremona,
+    s => poles: s.poles(), image_poles: s.image_poles(),
+);
 
-impl LocalFrame for Cremona {
-    #[inline]
-    fn frame(&self) -> (Point2<f64>, f64) {
-        (self.origin, self.scale)
-    }
-}
+crate::geom::local_frame!(Cremona);
 
 impl Cremona {
     /// The maps of a validated three-pose motion whose poles are finite,
@@ -147,7 +138,7 @@ impl Cremona {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::PoseIndex`] when `k` is not 1, 2 or 3.
+    /// [`crate::InvalidInput::PoseIndex`] when `k` is not 1, 2 or 3.
     pub fn image_poles_in(&self, k: usize) -> Result<[Point2<f64>; 3]> {
         let k = self.motion.index(k)?;
         let pairs = [(0, 1), (0, 2), (1, 2)];
@@ -213,11 +204,11 @@ impl Cremona {
     ///
     /// # Errors
     ///
-    /// [`DegenerateError::AtInfinity`] when `center` is on the pole circle
+    /// [`crate::DegenerateError::AtInfinity`] when `center` is on the pole circle
     /// (the answer lies at infinity; the error carries its direction);
-    /// [`DegenerateError::Undefined`] when `center` is at a pole (a whole
-    /// line of circle points has it as center); [`InvalidInput::NotFinite`]
-    /// for a non-finite point, [`InvalidInput::Overflow`] for a point
+    /// [`crate::DegenerateError::Undefined`] when `center` is at a pole (a whole
+    /// line of circle points has it as center); [`crate::InvalidInput::NotFinite`]
+    /// for a non-finite point, [`crate::InvalidInput::Overflow`] for a point
     /// more than about `1e300` task sizes away.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
         match &self.linear {
@@ -232,11 +223,11 @@ impl Cremona {
     ///
     /// # Errors
     ///
-    /// [`DegenerateError::AtInfinity`] when `circle` is on the image-pole
+    /// [`crate::DegenerateError::AtInfinity`] when `circle` is on the image-pole
     /// circle (the center point is at infinity: a slider);
-    /// [`DegenerateError::Undefined`] at an image pole;
-    /// [`InvalidInput::NotFinite`] for a non-finite point,
-    /// [`InvalidInput::Overflow`] for a point more than about `1e300`
+    /// [`crate::DegenerateError::Undefined`] at an image pole;
+    /// [`crate::InvalidInput::NotFinite`] for a non-finite point,
+    /// [`crate::InvalidInput::Overflow`] for a point more than about `1e300`
     /// task sizes away.
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
         match &self.linear {
@@ -299,15 +290,12 @@ impl Cremona {
                 ["circle point x", "circle point y"],
             ),
         };
-        finite_point(names, p)?;
-        let y = self.local_of(p);
-        if !(y.x.is_finite() && y.y.is_finite()) {
-            return Err(InvalidInput::Overflow {
-                what: "the point in the task's frame",
-                hint: "pass a point within about 1e300 task sizes (Task::scale) of the poles",
-            }
-            .into());
-        }
+        let y = super::local_input(
+            self,
+            names,
+            p,
+            "pass a point within about 1e300 task sizes (Task::scale) of the poles",
+        )?;
         let sign = match dir {
             MapDir::CenterToCircle => -1.0,
             MapDir::CircleToCenter => 1.0,
@@ -336,33 +324,20 @@ impl Cremona {
                     (MapDir::CircleToCenter, _) => "the image pole P'23",
                     (_, n) => n,
                 };
-                return Err(DegenerateError::Undefined {
-                    what,
-                    at,
-                    x: p.x,
-                    y: p.y,
-                }
-                .into());
+                return Err(crate::synthesis::errors::undefined(what, at, p));
             }
         }
         let un = u.norm();
-        let at_infinity = |d: Vector2<f64>| DegenerateError::AtInfinity {
-            what,
-            curve,
-            x: p.x,
-            y: p.y,
-            dir_x: d.x,
-            dir_y: d.y,
-        };
+        let at_infinity = |d| crate::synthesis::errors::at_infinity(what, curve, p, d);
         if den.abs() <= tolerance::CROSS_EPS * f64::EPSILON * un * v.norm() {
             let d = if kappa * den < 0.0 { -u / un } else { u / un };
-            return Err(at_infinity(d).into());
+            return Err(at_infinity(d));
         }
         let out = self.global_of(u * (kappa / den) * m);
         if out.x.is_finite() && out.y.is_finite() {
             Ok(out)
         } else {
-            Err(at_infinity(u / un).into())
+            Err(at_infinity(u / un))
         }
     }
 }

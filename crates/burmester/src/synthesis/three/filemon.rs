@@ -136,19 +136,17 @@ pub struct Filemon {
     n_special: usize,
 }
 
-/// The task, the driven dyad `(C0, C1)`, the fixed pivot's images `C'k`
-/// and the two transformed Filemon lines (when the circle points are not
-/// all defective), not the maps and frames kept to evaluate them.
-impl core::fmt::Debug for Filemon {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Filemon")
-            .field("task", &self.task)
-            .field("driven", &self.driven())
-            .field("fixed_pivot_images", &self.fixed_pivot_images())
-            .field("conics", &self.conics())
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The task, the driven dyad `(C0, C1)`, the fixed pivot's images `C'k`
+    /// and the two transformed Filemon lines (when the circle points are not
+    /// all defective), not the maps and frames kept to evaluate them.
+    Filemon,
+    s =>
+        task: s.task,
+        driven: s.driven(),
+        fixed_pivot_images: s.fixed_pivot_images(),
+        conics: s.conics(),
+);
 
 impl Task {
     /// The exact image in the center-point plane of a line of the
@@ -188,9 +186,9 @@ impl Task {
     /// [`Task::circle_point`] (the driven center point must be off the pole
     /// circle and the finite poles); as [`Filemon::new`].
     pub fn filemon(&self, driven_center: Point2<f64>) -> Result<Filemon> {
-        self.three_poses("Task::filemon")?;
-        let driven = self.dyad_from_center(driven_center)?;
-        Filemon::new(self, driven)
+        let maps = self.three_poses("Task::filemon")?;
+        let driven = Dyad::new(driven_center, maps.circle_point(driven_center)?);
+        Filemon::with_maps(self, *maps, driven)
     }
 
     /// The three-position maps, or the error naming `method`.
@@ -207,7 +205,12 @@ impl Filemon {
     /// [`InvalidInput::NeedsPoses`] for a task of four or five poses; as
     /// [`FilemonLines::new`].
     pub fn new(task: &Task, driven: Dyad) -> Result<Self> {
-        let maps = *task.three_poses("Filemon::new")?;
+        Self::with_maps(task, *task.three_poses("Filemon::new")?, driven)
+    }
+
+    /// Filemon's construction with the task's three-position maps (checked
+    /// once by the caller).
+    fn with_maps(task: &Task, maps: Maps, driven: Dyad) -> Result<Self> {
         let lines = FilemonLines::new(task, driven)?;
         let c1 = driven.circle;
         let conics = [0, 1, 2].map(|k| maps.line_conic(c1, lines.all_lines()[k].direction));

@@ -69,7 +69,7 @@
 
 use nalgebra::{Matrix2, Point2, Vector2};
 
-use crate::error::{DegenerateError, InvalidInput, Result, finite_point};
+use crate::error::Result;
 use crate::geom::{Conic, LocalFrame, cross, normalized, perp, rotate_cs};
 use crate::synthesis::motion::{Motion, Pole};
 use crate::synthesis::three::cremona::MapDir;
@@ -101,12 +101,7 @@ pub(crate) struct Linear {
     origin_is_pole: bool,
 }
 
-impl LocalFrame for Linear {
-    #[inline]
-    fn frame(&self) -> (Point2<f64>, f64) {
-        (self.origin, self.scale)
-    }
-}
+crate::geom::local_frame!(Linear);
 
 impl Linear {
     /// The maps of a validated three-pose motion with at least one finite
@@ -243,27 +238,18 @@ impl Linear {
                 ],
             ),
         };
-        finite_point(names, p)?;
-        let y = self.local_of(p);
-        if !(y.x.is_finite() && y.y.is_finite()) {
-            return Err(InvalidInput::Overflow {
-                what: "the point in the task's frame",
-                hint: "pass a point within about 1e300 task sizes (Task::scale) of the poses",
-            }
-            .into());
-        }
+        let y = super::local_input(
+            self,
+            names,
+            p,
+            "pass a point within about 1e300 task sizes (Task::scale) of the poses",
+        )?;
         let m = y.x.abs().max(y.y.abs()).max(1.0);
         for (pole, at) in special.iter().zip(labels) {
             if let Some(q) = pole {
                 let d = self.local_of(*q) - y;
                 if d.x.abs().max(d.y.abs()) <= tolerance::POINT * m {
-                    return Err(DegenerateError::Undefined {
-                        what,
-                        at,
-                        x: p.x,
-                        y: p.y,
-                    }
-                    .into());
+                    return Err(crate::synthesis::errors::undefined(what, at, p));
                 }
             }
         }
@@ -281,23 +267,16 @@ impl Linear {
                 // perpendicular to them.
                 normalized(perp(a)).unwrap_or_else(Vector2::x)
             });
-            DegenerateError::AtInfinity {
-                what,
-                curve,
-                x: p.x,
-                y: p.y,
-                dir_x: d.x,
-                dir_y: d.y,
-            }
+            crate::synthesis::errors::at_infinity(what, curve, p, d)
         };
         if den.abs() <= tolerance::CROSS_EPS * f64::EPSILON * a.norm() * b.norm() {
-            return Err(at_infinity().into());
+            return Err(at_infinity());
         }
         let out = self.global_of(y + n * (k / (2.0 * den)));
         if out.x.is_finite() && out.y.is_finite() {
             Ok(out)
         } else {
-            Err(at_infinity().into())
+            Err(at_infinity())
         }
     }
 

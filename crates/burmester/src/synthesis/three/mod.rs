@@ -22,7 +22,29 @@ pub(crate) use linear::Linear;
 pub(crate) use sweep::BranchRows;
 
 use crate::Result;
-use crate::geom::Conic;
+use crate::error::{InvalidInput, finite_point};
+use crate::geom::{Conic, LocalFrame};
+
+/// A point passed to a map, in the map's local frame: finite (its
+/// coordinates named by `names`) and representable there (else
+/// [`InvalidInput::Overflow`] with `hint`).
+fn local_input(
+    frame: &impl LocalFrame,
+    names: [&'static str; 2],
+    p: Point2<f64>,
+    hint: &'static str,
+) -> Result<Vector2<f64>> {
+    finite_point(names, p)?;
+    let y = frame.local_of(p);
+    if !(y.x.is_finite() && y.y.is_finite()) {
+        return Err(InvalidInput::Overflow {
+            what: "the point in the task's frame",
+            hint,
+        }
+        .into());
+    }
+    Ok(y)
+}
 
 /// The three-position maps of a task: through the poles, or by the linear
 /// form when a pole is at infinity.

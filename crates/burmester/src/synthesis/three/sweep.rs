@@ -255,7 +255,7 @@ impl Filemon {
     pub fn branch_map(&self, grid: &Grid, method: Method) -> Vec<bool> {
         let mut out = vec![false; grid.len()];
         // The buffer fits and nothing cancels: this cannot fail.
-        let _ = self.fill_branch_map(grid, method, &mut out, &Control::new());
+        let _ = self.branch_map_into(grid, method, &mut out, &Control::new());
         out
     }
 
@@ -276,16 +276,6 @@ impl Filemon {
         control: &Control<'_>,
     ) -> Result<()> {
         grid.check_len(out.len())?;
-        self.fill_branch_map(grid, method, out, control)
-    }
-
-    fn fill_branch_map(
-        &self,
-        grid: &Grid,
-        method: Method,
-        out: &mut [bool],
-        control: &Control<'_>,
-    ) -> Result<()> {
         let Some([ca, cb]) = self.conics() else {
             return for_rows(grid.nx(), out, control, |_, row| row.fill(false));
         };

@@ -5,14 +5,14 @@ use core::f64::consts::{PI, TAU};
 
 use nalgebra::{Point2, Vector2};
 
-use super::errors;
-use super::four::FourPositions;
+use super::FourPositions;
 use super::split::split_by;
 use crate::error::Result;
 use crate::geom::cubic::roots::quadratic_roots;
 use crate::geom::{Line, LocalFrame, Viewport, cross, normalized};
 use crate::synthesis::Branch;
 use crate::synthesis::Dyad;
+use crate::synthesis::errors;
 
 /// An end of a branch-free arc: where an extreme Filemon line meets the
 /// circle-point curve (besides `C1`), and the center point of that dyad.
@@ -120,7 +120,7 @@ impl FilemonArcs {
                 .collect(),
         };
         Ok(FilemonArcs {
-            four: four.clone(),
+            four: *four,
             driven: *driven,
             c_prime,
             order,
@@ -229,15 +229,8 @@ impl FilemonArcs {
     /// `C1`. The arcs are the same in every view: the arcs of a smaller
     /// view are those of a larger one, clipped.
     pub fn free_circle_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        let mut marks: Vec<Point2<f64>> = self.ends.iter().map(|e| e.circle).collect();
-        marks.push(self.driven.circle);
-        let lines = self
-            .four
-            .circle_point_curve()
-            .polylines_marked(viewport, &marks);
-        free_pieces(&lines, marks.len() - 1, |p| {
-            Some(self.classify_circle_point(p) == Branch::Free)
-        })
+        let marks = self.ends.iter().map(|e| e.circle).collect();
+        self.free_arcs(viewport, marks, true)
     }
 
     /// The branch-free arcs of the center-point curve in view (the driving
@@ -246,16 +239,34 @@ impl FilemonArcs {
     /// the exact arc ends and `C0` (never free) as the vertices where the
     /// class may change, each traced point classified by its circle point.
     pub fn free_center_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        let mut marks: Vec<Point2<f64>> = self.ends.iter().filter_map(|e| e.center).collect();
-        marks.push(self.driven.center);
-        let lines = self
-            .four
-            .center_point_curve()
-            .polylines_marked(viewport, &marks);
+        let marks = self.ends.iter().filter_map(|e| e.center).collect();
+        self.free_arcs(viewport, marks, false)
+    }
+
+    /// The free arcs of one curve (the circle-point curve when `circle`)
+    /// with `marks` (the exact arc ends in its plane) and the driven dyad's
+    /// point there as the vertices where the class may change.
+    fn free_arcs(
+        &self,
+        viewport: &Viewport,
+        mut marks: Vec<Point2<f64>>,
+        circle: bool,
+    ) -> Vec<Vec<Point2<f64>>> {
+        let (curve, driven) = if circle {
+            (self.four.circle_point_curve(), self.driven.circle)
+        } else {
+            (self.four.center_point_curve(), self.driven.center)
+        };
+        marks.push(driven);
+        let lines = curve.polylines_marked(viewport, &marks);
         free_pieces(&lines, marks.len() - 1, |p| {
-            self.classify_center_point(p)
-                .ok()
-                .map(|b| b == Branch::Free)
+            if circle {
+                Some(self.classify_circle_point(p) == Branch::Free)
+            } else {
+                self.classify_center_point(p)
+                    .ok()
+                    .map(|b| b == Branch::Free)
+            }
         })
     }
 }

@@ -2,29 +2,36 @@
 //! them, the crank-rotation parametrisation, the points where two crank
 //! positions coincide, and the four-bar of two dyads.
 
+// Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
+// branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+mod arcs;
+mod split;
+
 use core::f64::consts::PI;
 
 use nalgebra::{Complex, Matrix3x4, Point2, Vector2, Vector3};
 
-use super::branch::FilemonArcs;
-use super::errors;
-use super::motion::{Failure, Motion, cross3};
-use super::order::{CrankOrder, Drive, check_dyad, crank_angles, drive};
-use super::split::split_by;
-use super::{DEGENERATE_CURVE, ON_CURVE_TOLERANCE};
 use crate::engine::Control;
 use crate::error::{Result, out_of_memory, try_push};
 use crate::geom::{Cubic, LocalFrame, Pose, Viewport, wrap_angle};
 use crate::linkage::{AngleInterval, AssemblyMode, FourBar, InputRange};
 use crate::synthesis::Dyad;
+use crate::synthesis::errors;
+use crate::synthesis::local::{Failure, LocalMotion, cross3};
+use crate::synthesis::order::{CrankOrder, Drive, check_dyad, crank_angles, drive};
+use crate::synthesis::task::of_poses;
 use crate::tolerance;
+pub use arcs::{ArcEnd, FilemonArcs};
+use split::split_by;
 
 /// The six pairs of four poses (0-based), in the order `12, 13, 14, 23, 24, 34`.
 const PAIRS: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
 
 /// A pole `P_jk` of two poses.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pole {
+pub struct PairPole {
     /// The two poses (1-based, `j < k`).
     pub poses: [usize; 2],
     /// The pole; `None` when it is at infinity (the two poses differ by a
@@ -137,7 +144,7 @@ fn cx(v: Vector2<f64>) -> Complex<f64> {
 }
 
 impl Compat {
-    fn new(m: &Motion) -> Result<Self> {
+    fn new(m: &LocalMotion) -> Result<Self> {
         let e = [1, 2, 3].map(|k| Complex::from_polar(1.0, m.theta[k]) - 1.0);
         let delta = [1, 2, 3].map(|k| cx(m.pos[k] - m.pos[0]));
         let d2 = e[1] * delta[2] - e[2] * delta[1];
@@ -146,7 +153,10 @@ impl Compat {
         let d1 = -(d2 + d3 + d4);
         let lengths = [d1, d2, d3, d4].map(|d| d.norm());
         let size = lengths.iter().copied().fold(0.0, f64::max);
-        if lengths.iter().any(|&l| !(l > DEGENERATE_CURVE * size)) {
+        if lengths
+            .iter()
+            .any(|&l| !(l > tolerance::DEGENERATE_CURVE * size))
+        {
             return Err(errors::no_parametrization());
         }
         let g = -d1;
@@ -231,7 +241,7 @@ impl Compat {
 ///
 /// ```
 /// use burmester::{Pose, Viewport};
-/// use burmester::synthesis::curves::FourPositions;
+/// use burmester::synthesis::FourPositions;
 /// let four = FourPositions::new(&[
 ///     Pose::new(1.0, 2.0, 0.3),
 ///     Pose::new(2.5, 1.0, 0.9),
@@ -255,9 +265,9 @@ impl Compat {
 /// }
 /// # Ok::<(), burmester::Error>(())
 /// ```
-#[derive(Clone, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct FourPositions {
-    motion: Motion,
+    motion: LocalMotion,
     center_curve: Cubic,
     circle_curve: Cubic,
     /// Per coefficient of each stored curve (center, circle), the scale of
@@ -268,16 +278,11 @@ pub struct FourPositions {
     compat: Option<Compat>,
 }
 
-/// The poses and the two curves, not the motion's internals.
-impl core::fmt::Debug for FourPositions {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("FourPositions")
-            .field("poses", &self.poses())
-            .field("center_point_curve", &self.center_curve)
-            .field("circle_point_curve", &self.circle_curve)
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The poses and the two curves, not the motion's internals.
+    FourPositions,
+    s => poses: s.poses(), center_point_curve: s.center_curve, circle_point_curve: s.circle_curve,
+);
 
 impl FourPositions {
     /// The curves of four poses.
@@ -289,38 +294,42 @@ impl FourPositions {
     /// beyond [`crate::Task::MAX_COORDINATE`], angles beyond
     /// [`crate::Task::MAX_ANGLE`], a task smaller than
     /// [`crate::Task::MIN_SCALE`]; [`crate::DegenerateError::CoincidentPoses`]
-    /// for two equal poses (within [`super::COINCIDENT_POSES`]);
+    /// for two equal poses (within [`crate::tolerance::COINCIDENT_POSES`]);
     /// [`crate::DegenerateError::CoincidentPoles`] when the poses are all
     /// rotations about one point (the curve vanishes identically, within
-    /// [`super::DEGENERATE_CURVE`]);
+    /// [`crate::tolerance::DEGENERATE_CURVE`]);
     /// [`crate::DegenerateError::CollinearTranslations`] when three poses
     /// have one angle and collinear positions (every dyad through them is a
     /// slider: no finite center point);
     /// [`crate::DegenerateError::AllTranslations`] when all four have one
     /// angle (every dyad's crank is one vector: the curve degenerates).
     pub fn new(poses: &[Pose]) -> Result<Self> {
-        if poses.len() != 4 {
-            return Err(errors::pose_count("FourPositions::new", 4, poses.len()));
-        }
-        let motion = Motion::new(poses)?;
+        of_poses(poses, 4, "FourPositions::new", Self::of)
+    }
+
+    /// The curves of four poses that passed the one check of the poses
+    /// ([`check_poses`](crate::synthesis::task::check_poses): a task's, or
+    /// four of a task's five).
+    pub(crate) fn of(poses: &[Pose]) -> Result<Self> {
+        let motion = LocalMotion::new(poses)?;
         // Four poses of one angle are translations: every pole is at
         // infinity and no dyad passes them (the curve's equation is a
         // nonzero constant, or vanishes).
         if motion
             .theta
             .iter()
-            .all(|t| wrap_angle(*t).abs() <= super::COINCIDENT_POSES)
+            .all(|t| wrap_angle(*t).abs() <= tolerance::COINCIDENT_POSES)
         {
             return Err(errors::all_translations());
         }
         if let Some(t) = motion.collinear_translations() {
             return Err(errors::collinear_translations(t.map(|k| k + 1)));
         }
-        let curve = |form: &super::motion::LinearForm| -> Result<(Cubic, [f64; 10])> {
+        let curve = |form: &crate::synthesis::local::LinearForm| -> Result<(Cubic, [f64; 10])> {
             let (f, mags) = form.cubic_bounds([1, 2, 3]);
             let mag = mags.iter().fold(0.0f64, |m, v| m.max(*v));
             let max = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-            if !(max > DEGENERATE_CURVE * mag) {
+            if !(max > tolerance::DEGENERATE_CURVE * mag) {
                 // Rotations about one point: their common pole (never the
                 // poses' centroid, which is no pole).
                 return match motion.dehomogenize(motion.pole(0, 1)) {
@@ -345,7 +354,7 @@ impl FourPositions {
         })
     }
 
-    pub(crate) fn motion(&self) -> &Motion {
+    pub(crate) fn motion(&self) -> &LocalMotion {
         &self.motion
     }
 
@@ -386,8 +395,8 @@ impl FourPositions {
 
     /// Whether `p` lies on the center-point curve (`circle == false`) or
     /// the circle-point curve, with its first-order distance from it and
-    /// the largest accepted distance (see [`ON_CURVE_TOLERANCE`]): the
-    /// larger of [`ON_CURVE_TOLERANCE`] times the task size plus the
+    /// the largest accepted distance (see [`tolerance::ON_CURVE_TOLERANCE`]): the
+    /// larger of [`tolerance::ON_CURVE_TOLERANCE`] times the task size plus the
     /// distance of `p` from the task's centroid, and the rounding band of
     /// the curve at `p` ([`tolerance::ON_CURVE_EPS`]): the curve's value
     /// within that many `eps` of the bound on its terms (the rounding of
@@ -403,7 +412,7 @@ impl FourPositions {
         };
         let (origin, scale) = (self.motion.origin, self.motion.scale);
         let dist = curve.distance_estimate(p);
-        let relative = ON_CURVE_TOLERANCE * (scale + (p - origin).norm());
+        let relative = tolerance::ON_CURVE_TOLERANCE * (scale + (p - origin).norm());
         let Some((f, bound, grad, m)) = curve.value_and_bound(p, bounds) else {
             return (dist <= relative, dist, relative);
         };
@@ -428,7 +437,7 @@ impl FourPositions {
         let form = if circle {
             self.motion.form.inverse()
         } else {
-            self.motion.form.clone()
+            self.motion.form
         };
         let v = self.motion.local_of(p);
         let dg = (p.coords.norm() + origin.coords.norm()) / scale;
@@ -460,7 +469,7 @@ impl FourPositions {
     /// # Errors
     ///
     /// [`crate::InvalidInput::OffCurve`] when `center` is not on the curve
-    /// by the rule of [`ON_CURVE_TOLERANCE`] (relative to the task size
+    /// by the rule of [`tolerance::ON_CURVE_TOLERANCE`] (relative to the task size
     /// plus its distance from the task, or the curve's rounding band
     /// there), with its distance and the tolerance;
     /// [`crate::DegenerateError::AtInfinity`] where the circle point is at
@@ -468,25 +477,7 @@ impl FourPositions {
     /// circle points passes the four poses; [`crate::InvalidInput`] for a
     /// non-finite point.
     pub fn circle_point(&self, center: Point2<f64>) -> Result<Point2<f64>> {
-        let g = self.local_point(center, ["center point x", "center point y"])?;
-        let (on, dist, tol) = self.on_curve(center, false);
-        if !on {
-            return Err(errors::off_curve("center point", dist, tol));
-        }
-        match self.motion.form.solve(g, &[1, 2, 3]) {
-            Ok(z) => Ok(self.motion.global_of(z)),
-            Err(Failure::AtInfinity(d)) => Err(errors::at_infinity(
-                "circle point",
-                "center-point curve where its circle point is at infinity",
-                center,
-                d,
-            )),
-            Err(Failure::Undefined) => Err(errors::undefined(
-                "circle point",
-                "a point where the four conditions leave a line of circle points",
-                center,
-            )),
-        }
+        self.other_point(center, false)
     }
 
     /// The center point (fixed pivot) of a circle point on the circle-point
@@ -497,24 +488,43 @@ impl FourPositions {
     /// As [`FourPositions::circle_point`], for the circle-point curve (a
     /// center at infinity is a slider).
     pub fn center_point(&self, circle: Point2<f64>) -> Result<Point2<f64>> {
-        let z = self.local_point(circle, ["circle point x", "circle point y"])?;
-        let (on, dist, tol) = self.on_curve(circle, true);
-        if !on {
-            return Err(errors::off_curve("circle point", dist, tol));
-        }
-        match self.motion.form.inverse().solve(z, &[1, 2, 3]) {
-            Ok(g) => Ok(self.motion.global_of(g)),
-            Err(Failure::AtInfinity(d)) => Err(errors::at_infinity(
+        self.other_point(circle, true)
+    }
+
+    /// The point of the other plane of `p`, on the center-point curve or
+    /// (`from_circle`) on the circle-point curve.
+    fn other_point(&self, p: Point2<f64>, from_circle: bool) -> Result<Point2<f64>> {
+        let (given, what, curve, undefined, form) = if from_circle {
+            (
+                "circle point",
                 "center point",
                 "circle-point curve where its center point is at infinity (a slider)",
-                circle,
-                d,
-            )),
-            Err(Failure::Undefined) => Err(errors::undefined(
-                "center point",
                 "a point where the four conditions leave a line of center points",
-                circle,
-            )),
+                self.motion.form.inverse(),
+            )
+        } else {
+            (
+                "center point",
+                "circle point",
+                "center-point curve where its circle point is at infinity",
+                "a point where the four conditions leave a line of circle points",
+                self.motion.form,
+            )
+        };
+        let names = if from_circle {
+            ["circle point x", "circle point y"]
+        } else {
+            ["center point x", "center point y"]
+        };
+        let v = self.local_point(p, names)?;
+        let (on, dist, tol) = self.on_curve(p, from_circle);
+        if !on {
+            return Err(errors::off_curve(given, dist, tol));
+        }
+        match form.solve(v, &[1, 2, 3]) {
+            Ok(q) => Ok(self.motion.global_of(q)),
+            Err(Failure::AtInfinity(d)) => Err(errors::at_infinity(what, curve, p, d)),
+            Err(Failure::Undefined) => Err(errors::undefined(what, undefined, p)),
         }
     }
 
@@ -603,8 +613,8 @@ impl FourPositions {
 
     /// The six poles `P_jk`, in the order `12, 13, 14, 23, 24, 34`. They lie
     /// on the center-point curve.
-    pub fn poles(&self) -> [Pole; 6] {
-        PAIRS.map(|(j, k)| Pole {
+    pub fn poles(&self) -> [PairPole; 6] {
+        PAIRS.map(|(j, k)| PairPole {
             poses: [j + 1, k + 1],
             point: self.motion.dehomogenize(self.motion.pole(j, k)),
         })
@@ -939,20 +949,6 @@ impl FourPositions {
         self.dyad_at(beta, branch)
     }
 
-    /// `n` samples of the curve parameter, at the middles of `n` equal
-    /// steps of `[0, parameter_length)` (so never at a toggle):
-    /// `s_i = (i + 1/2) parameter_length / n`, with each one's dyad
-    /// ([`FourPositions::dyad_at_parameter`]), `None` where it is at
-    /// infinity.
-    ///
-    /// # Errors
-    ///
-    /// As [`FourPositions::beta2_range`]; [`crate::InvalidInput::CountOutOfRange`]
-    /// when `n` is 0 or more than ten million.
-    pub fn parameter_samples(&self, n: usize) -> Result<Vec<Option<CurveDyad>>> {
-        self.parameter_samples_with(n, &Control::new())
-    }
-
     /// [`parameter_samples`](Self::parameter_samples) following `control`
     /// (the cancel flag checked every 1024 samples, progress
     /// counting them).
@@ -984,13 +980,27 @@ impl FourPositions {
         Ok(out)
     }
 
+    /// `n` samples of the curve parameter, at the middles of `n` equal
+    /// steps of `[0, parameter_length)` (so never at a toggle):
+    /// `s_i = (i + 1/2) parameter_length / n`, with each one's dyad
+    /// ([`FourPositions::dyad_at_parameter`]), `None` where it is at
+    /// infinity.
+    ///
+    /// # Errors
+    ///
+    /// As [`FourPositions::beta2_range`]; [`crate::InvalidInput::CountOutOfRange`]
+    /// when `n` is 0 or more than ten million.
+    pub fn parameter_samples(&self, n: usize) -> Result<Vec<Option<CurveDyad>>> {
+        self.parameter_samples_with(n, &Control::new())
+    }
+
     /// The four-bar of a driving and a driven dyad of the four poses, with
     /// its input angles, assembly modes and crank order at each pose.
     ///
     /// # Errors
     ///
     /// [`crate::InvalidInput::CountOutOfRange`] when a dyad does not pass the four
-    /// poses (its crank length varies by more than [`super::DYAD_TOLERANCE`]);
+    /// poses (its crank length varies by more than [`crate::tolerance::DYAD`]);
     /// [`crate::DegenerateError::ZeroLengthLink`] for a link of zero length;
     /// errors of [`FourBar::from_pivots`].
     pub fn drive(&self, driving: &Dyad, driven: &Dyad) -> Result<Drive> {

@@ -2,9 +2,14 @@
 //! here, so that the variants can be swapped for dedicated ones in one
 //! place.
 
+// Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
+// branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{DegenerateError, Error, InvalidInput};
+use crate::tolerance;
 
 /// A slice of poses of the wrong length for a method that needs `required`.
 pub(crate) fn pose_count(method: &'static str, required: usize, found: usize) -> Error {
@@ -24,17 +29,6 @@ pub(crate) fn not_finite(name: &'static str, value: f64) -> Error {
 /// A 1-based pose index out of range.
 pub(crate) fn pose_index(index: usize, count: usize) -> Error {
     InvalidInput::PoseIndex { index, count }.into()
-}
-
-/// A magnitude beyond its documented limit.
-pub(crate) fn too_large(name: &'static str, value: f64, limit: f64, hint: &'static str) -> Error {
-    InvalidInput::TooLarge {
-        name,
-        value,
-        limit,
-        hint,
-    }
-    .into()
 }
 
 /// A task smaller than [`Task::MIN_SCALE`](crate::Task::MIN_SCALE).
@@ -85,7 +79,7 @@ pub(crate) fn not_a_dyad(which: &'static str, spread: f64) -> Error {
     InvalidInput::NotADyad {
         which,
         spread,
-        tolerance: super::DYAD_TOLERANCE,
+        tolerance: tolerance::DYAD,
     }
     .into()
 }

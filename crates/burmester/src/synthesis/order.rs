@@ -1,17 +1,21 @@
 //! The order in which a crank meets the poses, and the four-bar built from
 //! two dyads of `n` poses with its branch and order classification.
 
+// Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
+// branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use core::f64::consts::TAU;
 
 use nalgebra::Point2;
 
 use super::errors;
-use super::motion::Motion;
-use super::{COINCIDENT_POSES, DYAD_TOLERANCE};
 use crate::error::Result;
 use crate::geom::cross;
 use crate::linkage::{AssemblyMode, FourBar, Grashof, InputRange};
 use crate::synthesis::Dyad;
+use crate::synthesis::local::LocalMotion;
+use crate::tolerance;
 
 /// A direction of turning.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -22,21 +26,13 @@ pub enum Turn {
     Clockwise,
 }
 
-impl Turn {
+crate::geom::str_names!(
     /// `"counterclockwise"` or `"clockwise"`.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Turn::Counterclockwise => "counterclockwise",
-            Turn::Clockwise => "clockwise",
-        }
+    Turn {
+        Counterclockwise => "counterclockwise",
+        Clockwise => "clockwise",
     }
-}
-
-impl core::fmt::Display for Turn {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(self.as_str())
-    }
-}
+);
 
 /// The cyclic order of a crank's positions at the poses: the pose numbers
 /// (1-based) met going counter-clockwise round the fixed pivot from the
@@ -200,7 +196,7 @@ impl Drive {
 }
 
 /// The crank angles `arg(D_1k(circle) - center)` of a dyad at every pose.
-pub(crate) fn crank_angles(m: &Motion, dyad: &Dyad) -> Vec<f64> {
+pub(crate) fn crank_angles(m: &LocalMotion, dyad: &Dyad) -> Vec<f64> {
     (0..m.poses.len())
         .map(|k| {
             let v = m.displace(dyad.circle, 0, k) - dyad.center;
@@ -210,8 +206,8 @@ pub(crate) fn crank_angles(m: &Motion, dyad: &Dyad) -> Vec<f64> {
 }
 
 /// Checks that `dyad` passes every pose: its crank length is the same at
-/// every pose within [`DYAD_TOLERANCE`] of the crank plus the task size.
-pub(crate) fn check_dyad(m: &Motion, dyad: &Dyad, what: &'static str) -> Result<()> {
+/// every pose within [`tolerance::DYAD`] of the crank plus the task size.
+pub(crate) fn check_dyad(m: &LocalMotion, dyad: &Dyad, what: &'static str) -> Result<()> {
     for v in [dyad.center.x, dyad.center.y, dyad.circle.x, dyad.circle.y] {
         if !v.is_finite() {
             return Err(errors::not_finite(what, v));
@@ -225,20 +221,21 @@ pub(crate) fn check_dyad(m: &Motion, dyad: &Dyad, what: &'static str) -> Result<
     if !max.is_finite() {
         return Err(errors::not_finite(what, max));
     }
-    if max <= COINCIDENT_POSES * m.scale {
+    if max <= tolerance::COINCIDENT_POSES * m.scale {
         return Err(errors::zero_length(what, dyad.center));
     }
-    if max - min > DYAD_TOLERANCE * (max + m.scale) {
+    if max - min > tolerance::DYAD * (max + m.scale) {
         return Err(errors::not_a_dyad(what, (max - min) / max));
     }
     Ok(())
 }
 
 /// The four-bar of a driving and a driven dyad of the motion's poses.
-pub(crate) fn drive(m: &Motion, driving: &Dyad, driven: &Dyad) -> Result<Drive> {
+pub(crate) fn drive(m: &LocalMotion, driving: &Dyad, driven: &Dyad) -> Result<Drive> {
     check_dyad(m, driving, "driving dyad")?;
     check_dyad(m, driven, "driven dyad")?;
-    let fourbar = crate::synthesis::dyad::linkage_of(driving, driven, COINCIDENT_POSES * m.scale)?;
+    let fourbar =
+        crate::synthesis::dyad::linkage_of(driving, driven, tolerance::COINCIDENT_POSES * m.scale)?;
     let n = m.poses.len();
     let a: Vec<Point2<f64>> = (0..n).map(|k| m.displace(driving.circle, 0, k)).collect();
     let c: Vec<Point2<f64>> = (0..n).map(|k| m.displace(driven.circle, 0, k)).collect();

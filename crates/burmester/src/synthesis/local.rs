@@ -1,14 +1,45 @@
-//! The motion of `n` poses relative to pose 1, in a local frame, and the
-//! linear form of the dyad condition (see the module docs of
-//! [`crate::synthesis::curves`]).
+//! The motion of `n` poses relative to pose 1 in a local frame, and the
+//! linear form of the dyad condition, for the four- and five-pose synthesis
+//! ([`crate::synthesis::four`], [`crate::synthesis::five`]).
+//!
+//! Everything works from the poses alone: with
+//! `D_1k(z) = R_k z + t_k`, `R_k = e^{i theta_1k}`, `t_k = p_k - R_k p_1`, a
+//! dyad (center point `G`, circle point `z` at pose 1) passes pose `k` when
+//! `|D_1k(z) - G| = |z - G|`, which expands (the `|z|^2` and `|G|^2` terms
+//! cancel) to one equation linear in `z` for fixed `G`, and linear in `G`
+//! for fixed `z`:
+//!
+//! ```text
+//! a_k(G) . z = b_k(G),   a_k(G) = conj(R_k) t_k + (1 - conj(R_k)) G,   b_k(G) = t_k . G - |t_k|^2 / 2
+//! ```
+//!
+//! No pole appears, so a pure translation between two poses needs no
+//! special case. Three poses give one circle point per center point (the
+//! maps of [`crate::Task`]); four give the cubic curves of
+//! [`FourPositions`](crate::synthesis::FourPositions); five give the
+//! finitely many Burmester points of
+//! [`FivePositions`](crate::synthesis::FivePositions).
+//!
+//! All the arithmetic runs in a local frame (origin the centroid of the
+//! pose points, unit their largest distance from it), so results move,
+//! turn and scale with the task.
+
+// Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
+// branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use nalgebra::{Point2, Vector2};
 
-use super::COINCIDENT_POSES;
 use super::errors;
 use crate::error::Result;
-use crate::geom::{LocalFrame, Pose, cross, perp, rotate_cs, wrap_angle};
+use crate::geom::{LocalFrame, PerPose, Pose, cross, perp, rotate_cs, wrap_angle};
 use crate::synthesis::Task;
+use crate::tolerance;
+
+/// The six orders of three rows, the even ones first (a 3x3 determinant's
+/// terms).
+#[rustfmt::skip]
+const PERMS: [[usize; 3]; 6] = [[0, 1, 2], [1, 2, 0], [2, 0, 1], [0, 2, 1], [2, 1, 0], [1, 0, 2]];
 
 /// Why a row solve has no unique answer.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,12 +62,12 @@ pub(crate) enum Failure {
 ///
 /// (complex products, read as 2-vectors). It is linear in `z` for fixed
 /// `g` and linear in `g` for fixed `z`.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct LinearForm {
     /// `(cos, sin)` of the rotation of each displacement.
-    rot: Vec<(f64, f64)>,
+    rot: PerPose<(f64, f64)>,
     /// The translation `t_k` of each displacement.
-    trans: Vec<Vector2<f64>>,
+    trans: PerPose<Vector2<f64>>,
 }
 
 /// An affine polynomial `[c, x, y]` of the plane.
@@ -147,14 +178,6 @@ impl LinearForm {
             [[eck, da, da], [eck, da, da], [t * et, et, et]]
         });
         let mut out = [0.0; 10];
-        const PERMS: [[usize; 3]; 6] = [
-            [0, 1, 2],
-            [1, 2, 0],
-            [2, 0, 1],
-            [0, 2, 1],
-            [2, 1, 0],
-            [1, 0, 2],
-        ];
         for p in PERMS {
             let (a, b, c) = (ra[0][p[0]], ra[1][p[1]], ra[2][p[2]]);
             let (ea, eb, ec) = (err[0][p[0]], err[1][p[1]], err[2][p[2]]);
@@ -203,13 +226,11 @@ impl LinearForm {
     /// at pose 1): `D_1k^-1(w) = conj(R_k) w - conj(R_k) t_k`.
     pub(crate) fn inverse(&self) -> LinearForm {
         LinearForm {
-            rot: self.rot.iter().map(|&(c, s)| (c, -s)).collect(),
-            trans: self
-                .rot
-                .iter()
-                .zip(&self.trans)
-                .map(|(&(c, s), &t)| -rotate_cs(t, c, -s))
-                .collect(),
+            rot: self.rot.map(|(c, s)| (c, -s)),
+            trans: PerPose::from_fn(self.rot.len(), |k| {
+                let (c, s) = self.rot[k];
+                -rotate_cs(self.trans[k], c, -s)
+            }),
         }
     }
 
@@ -298,95 +319,51 @@ fn mul2(p: &Affine, q: &Affine) -> [f64; 6] {
     ]
 }
 
-/// `q a` for a quadratic `q` and an affine `a`: a cubic, ascending.
+/// `q a` for a quadratic `q` and an affine `a`: a cubic, ascending (the
+/// terms of each degree on one line).
+#[rustfmt::skip]
 fn mul3(q: &[f64; 6], a: &Affine) -> [f64; 10] {
     [
         q[0] * a[0],
-        q[0] * a[1] + q[1] * a[0],
-        q[0] * a[2] + q[2] * a[0],
-        q[1] * a[1] + q[3] * a[0],
-        q[1] * a[2] + q[2] * a[1] + q[4] * a[0],
-        q[2] * a[2] + q[5] * a[0],
-        q[3] * a[1],
-        q[3] * a[2] + q[4] * a[1],
-        q[4] * a[2] + q[5] * a[1],
-        q[5] * a[2],
+        q[0] * a[1] + q[1] * a[0], q[0] * a[2] + q[2] * a[0],
+        q[1] * a[1] + q[3] * a[0], q[1] * a[2] + q[2] * a[1] + q[4] * a[0], q[2] * a[2] + q[5] * a[0],
+        q[3] * a[1], q[3] * a[2] + q[4] * a[1], q[4] * a[2] + q[5] * a[1], q[5] * a[2],
     ]
 }
 
 /// `n` poses, validated, in a local frame (origin the centroid of the pose
 /// points, unit their largest distance from it), with the linear form.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Motion {
-    pub(crate) poses: Vec<Pose>,
+// Inline, not on the heap: a task keeps its curves or points (and so this)
+// and stays `Copy`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LocalMotion {
+    pub(crate) poses: PerPose<Pose>,
     pub(crate) origin: Point2<f64>,
     pub(crate) scale: f64,
     /// The pose points in the local frame.
-    pub(crate) pos: Vec<Vector2<f64>>,
+    pub(crate) pos: PerPose<Vector2<f64>>,
     /// `theta_1k`, wrapped into `(-pi, pi]`.
-    pub(crate) theta: Vec<f64>,
+    pub(crate) theta: PerPose<f64>,
     pub(crate) form: LinearForm,
     /// How far the poses' own rounding may move them in this frame, over
     /// `eps`: their positions (local units) and their angles (radians).
     pub(crate) data_rounding: (f64, f64),
 }
 
-impl LocalFrame for Motion {
-    #[inline]
-    fn frame(&self) -> (Point2<f64>, f64) {
-        (self.origin, self.scale)
-    }
-}
+crate::geom::local_frame!(LocalMotion);
 
-impl Motion {
-    /// The motion of `poses` (at most five).
+impl LocalMotion {
+    /// The motion of two to five `poses` that passed the one check of the
+    /// poses ([`check_poses`](crate::synthesis::task::check_poses): finite,
+    /// within the task's bounds).
     ///
     /// # Errors
     ///
-    /// Non-finite numbers, coordinates or angles beyond
-    /// [`Task::MAX_COORDINATE`] or [`Task::MAX_ANGLE`], a task smaller than
-    /// [`Task::MIN_SCALE`], two coincident poses, or poses that are all
-    /// rotations about one point.
+    /// What the local frame itself needs: two poses that coincide within
+    /// [`tolerance::COINCIDENT_POSES`], poses all at one point, or a frame
+    /// smaller than [`Task::MIN_SCALE`].
     pub(crate) fn new(poses: &[Pose]) -> Result<Self> {
-        const NAMES: [[&str; 3]; 5] = [
-            ["pose 1 x", "pose 1 y", "pose 1 angle"],
-            ["pose 2 x", "pose 2 y", "pose 2 angle"],
-            ["pose 3 x", "pose 3 y", "pose 3 angle"],
-            ["pose 4 x", "pose 4 y", "pose 4 angle"],
-            ["pose 5 x", "pose 5 y", "pose 5 angle"],
-        ];
-        if poses.len() > NAMES.len() || poses.len() < 2 {
-            return Err(errors::pose_count(
-                "the Burmester curves",
-                NAMES.len(),
-                poses.len(),
-            ));
-        }
-        for (p, n) in poses.iter().zip(NAMES) {
-            for (name, v) in [(n[0], p.position.x), (n[1], p.position.y), (n[2], p.angle)] {
-                if !v.is_finite() {
-                    return Err(errors::not_finite(name, v));
-                }
-            }
-            if p.angle.abs() > Task::MAX_ANGLE {
-                return Err(errors::too_large(
-                    n[2],
-                    p.angle,
-                    Task::MAX_ANGLE,
-                    "reduce it modulo 2 pi",
-                ));
-            }
-            for (name, v) in [(n[0], p.position.x), (n[1], p.position.y)] {
-                if v.abs() > Task::MAX_COORDINATE {
-                    return Err(errors::too_large(
-                        name,
-                        v,
-                        Task::MAX_COORDINATE,
-                        "rescale the task",
-                    ));
-                }
-            }
-        }
+        debug_assert!((2..=crate::geom::MAX_POSES).contains(&poses.len()));
         let n = poses.len() as f64;
         let origin = Point2::from(
             poses
@@ -401,7 +378,7 @@ impl Motion {
             for j in i + 1..poses.len() {
                 let d = (poses[j].position - poses[i].position).norm();
                 let a = wrap_angle(poses[j].angle - poses[i].angle).abs();
-                if d <= COINCIDENT_POSES * scale && a <= COINCIDENT_POSES {
+                if d <= tolerance::COINCIDENT_POSES * scale && a <= tolerance::COINCIDENT_POSES {
                     return Err(errors::coincident_poses(i + 1, j + 1));
                 }
             }
@@ -412,33 +389,24 @@ impl Motion {
         if scale < Task::MIN_SCALE {
             return Err(errors::too_small(scale, Task::MIN_SCALE));
         }
-        let pos: Vec<Vector2<f64>> = poses
-            .iter()
-            .map(|p| (p.position - origin) / scale)
-            .collect();
-        let theta: Vec<f64> = poses
-            .iter()
-            .map(|p| wrap_angle(p.angle - poses[0].angle))
-            .collect();
-        let rot: Vec<(f64, f64)> = theta
-            .iter()
-            .map(|t| {
-                let (s, c) = t.sin_cos();
-                (c, s)
-            })
-            .collect();
-        let trans = rot
-            .iter()
-            .zip(&pos)
-            .map(|(&(c, s), &q)| q - rotate_cs(pos[0], c, s))
-            .collect();
+        let poses = PerPose::from_slice(poses);
+        let pos = poses.map(|p| (p.position - origin) / scale);
+        let theta = poses.map(|p| wrap_angle(p.angle - poses[0].angle));
+        let rot = theta.map(|t| {
+            let (s, c) = t.sin_cos();
+            (c, s)
+        });
+        let trans = PerPose::from_fn(poses.len(), |k| {
+            let (c, s) = rot[k];
+            pos[k] - rotate_cs(pos[0], c, s)
+        });
         let far = poses
             .iter()
             .map(|p| p.position.x.abs().max(p.position.y.abs()))
             .fold(0.0, f64::max);
         let turn = poses.iter().map(|p| p.angle.abs()).fold(0.0, f64::max);
-        Ok(Motion {
-            poses: poses.to_vec(),
+        Ok(LocalMotion {
+            poses,
             origin,
             scale,
             pos,
@@ -449,7 +417,7 @@ impl Motion {
     }
 
     /// Three poses (0-based) of one angle (within
-    /// [`COINCIDENT_POSES`]) whose positions lie on a line (within
+    /// [`tolerance::COINCIDENT_POSES`]) whose positions lie on a line (within
     /// [`crate::tolerance::COLLINEAR`]), if any: every dyad through them is
     /// a slider (its moving pivot's three positions are collinear), so no
     /// finite center point passes them and the center-point curve is the
@@ -457,7 +425,7 @@ impl Motion {
     pub(crate) fn collinear_translations(&self) -> Option<[usize; 3]> {
         let n = self.poses.len();
         let same = |a: usize, b: usize| {
-            wrap_angle(self.theta[a] - self.theta[b]).abs() <= COINCIDENT_POSES
+            wrap_angle(self.theta[a] - self.theta[b]).abs() <= tolerance::COINCIDENT_POSES
         };
         for i in 0..n {
             for j in i + 1..n {
@@ -536,8 +504,8 @@ fn unit3(h: [f64; 3]) -> [f64; 3] {
 mod tests {
     use super::*;
 
-    fn motion() -> Motion {
-        Motion::new(&[
+    fn motion() -> LocalMotion {
+        LocalMotion::new(&[
             Pose::new(1.0, 2.0, 0.3),
             Pose::new(2.5, 1.0, 0.9),
             Pose::new(0.5, -1.0, -0.4),

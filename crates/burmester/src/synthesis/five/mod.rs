@@ -1,16 +1,21 @@
 //! Five poses: the Burmester points (every real one) and the four-bars of
 //! their pairs.
 
+// Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
+// branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use nalgebra::{Matrix4, Point2, Vector2, Vector4};
 
-use super::errors;
-use super::motion::{Failure, Motion};
-use super::order::{Drive, drive};
-use super::{BURMESTER_RESIDUAL, COINCIDENT_POSES, DEGENERATE_CURVE};
 use crate::error::Result;
 use crate::geom::cubic::roots::{form_eval, form_mul, form_roots_mult, form_sub, quadratic_roots};
-use crate::geom::{Cubic, LocalFrame, Pose, cross, perp, wrap_angle};
+use crate::geom::cubic::{gradient as grad, hessian as hess};
+use crate::geom::{Cubic, LocalFrame, PerPose, Pose, cross, perp, wrap_angle};
 use crate::synthesis::Dyad;
+use crate::synthesis::errors;
+use crate::synthesis::local::{Failure, LocalMotion};
+use crate::synthesis::order::{Drive, drive};
+use crate::synthesis::task::of_poses;
 use crate::tolerance;
 
 /// A four-bar made of two Burmester dyads, classified for either dyad
@@ -68,7 +73,7 @@ pub struct BurmesterFourBar {
 /// directions agree within the rounding of the computation and of the poses
 /// themselves (in the frame they are given in), and the slider's circle
 /// point, solved from two of the conditions at infinity, has its five
-/// positions on a line (within [`BURMESTER_RESIDUAL`] of their span: a root
+/// positions on a line (within [`tolerance::BURMESTER_RESIDUAL`] of their span: a root
 /// near a common asymptotic direction by rounding can give one far off any
 /// line, and gives no point then). An elimination whose count with
 /// multiplicity is above four (two cubics meet in nine points, five of them
@@ -84,26 +89,24 @@ pub struct BurmesterFourBar {
 /// Each point is finished by Newton's method on the four circle equations
 /// `a_k(G) . z = b_k(G)` in the unknowns `(G, z)`, and kept when the five
 /// positions of its circle point are concyclic within
-/// [`BURMESTER_RESIDUAL`] (scaled by `(L / D)^2` for a center `D` away from
-/// positions spanning `L`, where a stretch of a line is as concyclic).
-#[derive(Clone, PartialEq)]
+/// [`tolerance::BURMESTER_RESIDUAL`] (scaled by `(L / D)^2` for a center
+/// `D` away from positions spanning `L`, where a stretch of a line is as
+/// concyclic).
+#[derive(Clone, Copy, PartialEq)]
 pub struct FivePositions {
-    motion: Motion,
-    points: Vec<Dyad>,
-    sliders: Vec<BurmesterSlider>,
+    motion: LocalMotion,
+    // At most four in all (`MAX_POINTS`), inline: a task keeps them and
+    // stays `Copy`.
+    points: PerPose<Dyad>,
+    sliders: PerPose<BurmesterSlider>,
     curves: [Cubic; 2],
 }
 
-/// The poses and the Burmester points, not the motion's internals.
-impl core::fmt::Debug for FivePositions {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("FivePositions")
-            .field("poses", &self.poses())
-            .field("burmester_points", &self.points)
-            .field("sliders", &self.sliders)
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The poses and the Burmester points, not the motion's internals.
+    FivePositions,
+    s => poses: s.poses(), burmester_points: s.points, sliders: s.sliders,
+);
 
 /// A Burmester point at infinity: a circle point whose five positions lie
 /// on a line (a slider: its crank's center point is at infinity in
@@ -144,10 +147,14 @@ impl FivePositions {
     /// of one angle or half a turn apart, where the resultant's rounding
     /// band holds several of its critical points).
     pub fn new(poses: &[Pose]) -> Result<Self> {
-        if poses.len() != 5 {
-            return Err(errors::pose_count("FivePositions::new", 5, poses.len()));
-        }
-        let motion = Motion::new(poses)?;
+        of_poses(poses, 5, "FivePositions::new", Self::of)
+    }
+
+    /// The Burmester points of five poses that passed the one check of the
+    /// poses ([`check_poses`](crate::synthesis::task::check_poses): a
+    /// task's).
+    pub(crate) fn of(poses: &[Pose]) -> Result<Self> {
+        let motion = LocalMotion::new(poses)?;
         // The pair with the best conditioned pole.
         let mut best = (0.0, 0, 1);
         for i in 0..5 {
@@ -161,12 +168,12 @@ impl FivePositions {
             }
         }
         let (s, _, _) = best;
-        if !(s > COINCIDENT_POSES) {
+        if !(s > tolerance::COINCIDENT_POSES) {
             return Err(errors::all_translations());
         }
         // Every four-pose curve must be proper: four poses that are all
         // rotations about one point leave a continuum of Burmester dyads.
-        let rest = Motion::new(&poses[1..])?;
+        let rest = LocalMotion::new(&poses[1..])?;
         let subsets = [
             (&motion, [1, 2, 3]),
             (&motion, [1, 2, 4]),
@@ -177,7 +184,7 @@ impl FivePositions {
         for (m, rows) in subsets {
             let (f, mag) = m.form.cubic(rows);
             let max = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-            if !(max > DEGENERATE_CURVE * mag) {
+            if !(max > tolerance::DEGENERATE_CURVE * mag) {
                 let p = m.dehomogenize(m.pole(0, rows[0])).unwrap_or(m.origin);
                 return Err(errors::common_pole(p));
             }
@@ -199,7 +206,7 @@ impl FivePositions {
                 let s = (0.5 * wrap_angle(motion.theta[b] - motion.theta[a]))
                     .sin()
                     .abs();
-                if s > COINCIDENT_POSES {
+                if s > tolerance::COINCIDENT_POSES {
                     pairs.push((s, a, b));
                 }
             }
@@ -212,7 +219,7 @@ impl FivePositions {
                 let k = others[r];
                 let l: Vec<usize> = others.iter().copied().filter(|&x| x != k).collect();
                 let order = [i, j, k, l[0], l[1]];
-                let sub = Motion::new(&order.map(|x| poses[x]))?;
+                let sub = LocalMotion::new(&order.map(|x| poses[x]))?;
                 let Some(elim) = Elimination::new(&sub) else {
                     continue;
                 };
@@ -259,10 +266,17 @@ impl FivePositions {
             Cubic::from_local(f, motion.origin, motion.scale)
         };
         let curves = [curve([1, 2, 3]), curve([1, 2, 4])];
+        let none = Point2::origin();
         Ok(FivePositions {
             motion,
-            points,
-            sliders,
+            points: PerPose::up_to(&points, Dyad::new(none, none)),
+            sliders: PerPose::up_to(
+                &sliders,
+                BurmesterSlider {
+                    circle: none,
+                    direction: Vector2::zeros(),
+                },
+            ),
             curves,
         })
     }
@@ -357,7 +371,7 @@ impl FivePositions {
 }
 
 /// `(max - min) / max` of the crank lengths over the poses.
-fn residual(m: &Motion, dyad: &Dyad) -> f64 {
+fn residual(m: &LocalMotion, dyad: &Dyad) -> f64 {
     let d: Vec<f64> = (0..m.poses.len())
         .map(|k| (m.displace(dyad.circle, 0, k) - dyad.center).norm())
         .collect();
@@ -373,8 +387,8 @@ fn residual(m: &Motion, dyad: &Dyad) -> f64 {
 /// Three poses that make the Burmester points of five degenerate: three
 /// rotations about one point (their three poles coincide), or three poses
 /// of one angle with collinear positions
-/// ([`Motion::collinear_translations`]).
-fn degenerate_triples(m: &Motion) -> Result<()> {
+/// ([`LocalMotion::collinear_translations`]).
+fn degenerate_triples(m: &LocalMotion) -> Result<()> {
     let finite = |h: [f64; 3]| (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2]));
     for i in 0..5 {
         for j in i + 1..5 {
@@ -491,7 +505,7 @@ impl Elimination {
     /// identically within its rounding (the curves share a component not
     /// through `Q`, or a conic through it), or the cubic part of a curve
     /// does (the line at infinity is a component of it).
-    fn new(sub: &Motion) -> Option<Self> {
+    fn new(sub: &LocalMotion) -> Option<Self> {
         let th = wrap_angle(sub.theta[1] - sub.theta[0]);
         let (sn, cs) = (0.5 * th).sin_cos();
         if sn == 0.0 {
@@ -524,27 +538,6 @@ impl Elimination {
             let c = c.map(|v| v / top);
             let (x, y) = (q.x, q.y);
             let (ax, ay) = (x.abs(), y.abs());
-            let grad = |c: &[f64; 10], x: f64, y: f64| {
-                [
-                    c[1] + 2.0 * c[3] * x
-                        + c[4] * y
-                        + 3.0 * c[6] * x * x
-                        + 2.0 * c[7] * x * y
-                        + c[8] * y * y,
-                    c[2] + c[4] * x
-                        + 2.0 * c[5] * y
-                        + c[7] * x * x
-                        + 2.0 * c[8] * x * y
-                        + 3.0 * c[9] * y * y,
-                ]
-            };
-            let hess = |c: &[f64; 10], x: f64, y: f64| {
-                [
-                    2.0 * c[3] + 6.0 * c[6] * x + 2.0 * c[7] * y,
-                    c[4] + 2.0 * c[7] * x + 2.0 * c[8] * y,
-                    2.0 * c[5] + 2.0 * c[8] * x + 6.0 * c[9] * y,
-                ]
-            };
             let g = grad(&c, x, y);
             let h = hess(&c, x, y);
             // The error scale of each coefficient: its own rounding (the
@@ -655,8 +648,8 @@ impl Elimination {
     /// none (lost).
     fn points(
         &self,
-        sub: &Motion,
-        motion: &Motion,
+        sub: &LocalMotion,
+        motion: &LocalMotion,
     ) -> Result<(Vec<Dyad>, Vec<BurmesterSlider>, usize)> {
         let (finite, infinite) = self.solve()?;
         let mut points = Vec::new();
@@ -845,14 +838,14 @@ const ASYMPTOTE_MATCH: f64 = 1e-6;
 /// finished by Newton's method on the four circle equations (kept only
 /// when it lowers the crank-length spread and stays near: a double point
 /// is as well placed as its rounding allows), and checked: `None` when
-/// its crank length varies by more than [`BURMESTER_RESIDUAL`] (not a
+/// its crank length varies by more than [`tolerance::BURMESTER_RESIDUAL`] (not a
 /// Burmester point) or its circle point is at infinity.
 ///
 /// # Errors
 ///
 /// [`crate::DegenerateError::InfinitelyManyBurmesterPoints`] when the four
 /// equations leave a whole line of circle points at the center.
-fn polish(m: &Motion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>> {
+fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>> {
     let z0 = match m.form.solve(g0, &[1, 2, 3, 4]) {
         Ok(z) => z,
         Err(Failure::Undefined) => {
@@ -891,7 +884,7 @@ fn polish(m: &Motion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>> {
         .iter()
         .map(|p| p.coords.norm())
         .fold(d.center.coords.norm(), f64::max);
-    let allowed = (BURMESTER_RESIDUAL * (span / radius).powi(2))
+    let allowed = (tolerance::BURMESTER_RESIDUAL * (span / radius).powi(2))
         .max(64.0 * f64::EPSILON * (1.0 + coords / radius));
     Ok((r <= allowed).then_some(d))
 }
@@ -899,14 +892,14 @@ fn polish(m: &Motion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>> {
 /// A slider found by the elimination (circle point `z` local, direction
 /// `u`), checked as [`polish`] checks a finite point: the circle point's
 /// five positions must lie on a line normal to `u` within
-/// [`BURMESTER_RESIDUAL`] of their span (or the rounding of their
+/// [`tolerance::BURMESTER_RESIDUAL`] of their span (or the rounding of their
 /// coordinates, `64 eps`). The circle point is solved from two of the four
 /// conditions at infinity; those two alone do not make its positions
 /// collinear, and a root of the resultant within rounding of a common
 /// asymptotic direction (a near-degenerate task) can give a circle point
 /// whose positions are far off any line. `None` then (the root gives no
 /// Burmester point), and for a circle point not finite.
-fn check_slider(m: &Motion, z: Vector2<f64>, u: Vector2<f64>) -> Option<BurmesterSlider> {
+fn check_slider(m: &LocalMotion, z: Vector2<f64>, u: Vector2<f64>) -> Option<BurmesterSlider> {
     let circle = m.global_of(z);
     if !(circle.x.is_finite() && circle.y.is_finite() && u.x.is_finite() && u.y.is_finite()) {
         return None;
@@ -939,7 +932,7 @@ fn check_slider(m: &Motion, z: Vector2<f64>, u: Vector2<f64>) -> Option<Burmeste
         .iter()
         .map(|q| (q - p[0]).dot(&n).abs())
         .fold(0.0, f64::max);
-    let allowed = (BURMESTER_RESIDUAL * span).max(64.0 * f64::EPSILON * coords);
+    let allowed = (tolerance::BURMESTER_RESIDUAL * span).max(64.0 * f64::EPSILON * coords);
     (off <= allowed).then_some(BurmesterSlider {
         circle,
         direction: n,
@@ -953,8 +946,8 @@ fn check_slider(m: &Motion, z: Vector2<f64>, u: Vector2<f64>) -> Option<Burmeste
 /// position rounding leaves loose along one direction: the steps wander at
 /// rounding level) the iterate with the smallest equation residual is
 /// returned, and the caller keeps it only if its crank lengths agree to
-/// [`BURMESTER_RESIDUAL`]. `None` when a step is not finite.
-fn newton(m: &Motion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f64>)> {
+/// [`tolerance::BURMESTER_RESIDUAL`]. `None` when a step is not finite.
+fn newton(m: &LocalMotion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f64>)> {
     let mut g = g0;
     let mut z = m.form.solve(g, &[1, 2, 3, 4]).ok()?;
     let mut last = f64::INFINITY;
@@ -993,7 +986,7 @@ fn newton(m: &Motion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f64>)> 
 
 #[cfg(test)]
 mod tests {
-    use super::super::motion::cross3;
+    use crate::synthesis::local::cross3;
 
     #[test]
     fn homogeneous_cross_is_the_meet() {
