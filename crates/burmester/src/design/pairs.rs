@@ -401,7 +401,7 @@ impl PairContext {
     }
 
     /// The signed margin of every pair: the distance in the parameter
-    /// plane (radians of crank rotation, [`PairContext::grid`]) to the
+    /// plane (radians of crank rotation, the context's `grid`) to the
     /// nearest pair of the other class in `branch_free`, positive where
     /// branch-free, negative elsewhere, infinite where the other class is
     /// empty (the exact Euclidean distance transform over the whole map,
