@@ -253,7 +253,7 @@ impl Task {
             .into());
         }
         Judge::new(self, &CheckedOptions::new(limits, constraints)?)?;
-        let four = FourPositions::new(self.poses())?;
+        let four: &FourPositions = self.four_positions("Task::pair_map")?;
         let length = four.parameter_length()?;
         // Poses 1 and 2 nearly alike leave the crank almost no rotation
         // between them: a parameter plane too small to sample (its size is

@@ -1307,7 +1307,7 @@ impl Task {
     fn design_four(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
         let exact = Exact::new(self, options, control)?;
         let sep = options.separation(self);
-        let four = FourPositions::new(self.poses())?;
+        let four: &FourPositions = self.four_positions("Task::design")?;
         let length = four.parameter_length()?;
         let n = options.coarse_pairs;
         let hook = |d: usize, t: usize| control.report(COARSE_SHARE * d / t.max(1), PROGRESS);
@@ -1399,7 +1399,7 @@ impl Task {
     /// Five poses: every ordered pair of Burmester points.
     fn design_five(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
         let exact = Exact::new(self, options, control)?;
-        let five = FivePositions::new(self.poses())?;
+        let five: &FivePositions = self.five_positions("Task::design")?;
         let points = five.burmester_points();
         let mut report = self.report(options, None);
         let mut all = Vec::new();
