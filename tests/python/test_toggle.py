@@ -92,7 +92,10 @@ def check_position(fb, theta2):
             # a quarter of the band's tolerance (|H| > tol / 4).
             assert h < -tol / 4, (fb, theta2, float(h / tol))
             continue
-        assert h > -4 * tol, (fb, theta2, float(h / tol))
+        # A returned position closes the exact loop within the band's
+        # tolerance (``>=``: a folded rhombus whose crank tip is exactly on
+        # the output pivot has H = tol = 0, an exact toggle).
+        assert h >= -4 * tol, (fb, theta2, float(h), float(tol))
         if c.toggle:
             toggled = True
             assert sin_mu <= 2 * band, (fb, theta2, float(sin_mu), float(band))
@@ -152,6 +155,24 @@ def test_the_band_is_the_root_of_the_rounding_not_the_link_ratio():
         l3, l4 = fb.coupler, fb.rocker
         old = math.sqrt(8 * 2.0**-52) * 2 * (l3 + l4) ** 2 / (2 * l3 * l4)
         assert old > 1.0
+
+
+def test_a_folded_rhombus_exactly_at_its_fold_is_a_toggle_or_indeterminate():
+    """Hypothesis found it: the unit rhombus at ground angle 2.5 driven to
+    the ground angle (its crank tip on the output pivot, H = tol = 0
+    exactly) is either refused as indeterminate or a toggle, in both
+    modes."""
+    fb = burmester.FourBar(ground=1.0, crank=1.0, coupler=1.0, rocker=1.0,
+                           origin=(0.0, 0.0), ground_angle=2.5)
+    assert fb.dead_positions == []
+    h, tol, *_ = exact_loop(fb, 2.5)
+    assert h == 0 and tol == 0
+    check_position(fb, 2.5)
+    for mode in ("open", "crossed"):
+        try:
+            assert fb.configuration(2.5, mode).toggle
+        except burmester.AssemblyError as e:
+            assert e.cause == "indeterminate"
 
 
 @st.composite

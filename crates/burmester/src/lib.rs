@@ -147,7 +147,9 @@ pub use linkage::{
 pub use linkage::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};
 pub use nalgebra::{Point2, Vector2};
 pub use synthesis::three::{Cremona, Filemon, Method};
-pub use synthesis::{Branch, Dyad, FilemonLines, Motion, Pole, SynthesizedFourBar, Task};
+pub use synthesis::{
+    Branch, Dyad, DyadKind, FilemonLines, Motion, Pole, SliderDyad, SynthesizedFourBar, Task,
+};
 
 /// The README's Rust examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -13,7 +13,9 @@
 //! - `dyad.rs`: dyads and the four-bar of two; `branch.rs`: the branch
 //!   class and Filemon's construction with one line per pose; `order.rs`:
 //!   the order in which a crank meets the poses and the drives of a
-//!   four-bar of two dyads.
+//!   four-bar of two dyads; `slider.rs`: the slider dyad (a pin on a
+//!   straight guide, the center at infinity) and [`DyadKind`], the one
+//!   place a new kind of dyad is added.
 
 mod branch;
 mod dyad;
@@ -23,6 +25,7 @@ pub mod four;
 mod local;
 pub mod motion;
 mod order;
+mod slider;
 mod task;
 pub mod three;
 
@@ -35,4 +38,5 @@ pub use four::{
 };
 pub use motion::{Motion, Pole};
 pub use order::{CrankOrder, Drive, Turn};
+pub use slider::{DyadKind, SliderDyad};
 pub use task::Task;
