@@ -1715,7 +1715,7 @@ def sixbar(
     *,
     task: Optional[Task] = None,
     coupler_path: bool = True,
-    labels: bool = True, legend: bool = True, ax: Optional[Axes] = None,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
 ) -> Axes:
     """Draw a six-bar: a drive at the crank angles of its poses, or a
     :class:`burmester.SixBar` at four crank angles a quarter turn apart.
@@ -1728,6 +1728,9 @@ def sixbar(
     (``"input-k"``, ``"coupler-k"``) and the motion loop ``A C C0``
     (``"linkage-k"``) in the pose's colour; the poses as black flags
     (``"pose-k"``). Every point is the core's (:meth:`burmester.SixBar.joints`).
+    With ``labels``, the moving links at the first position drawn are
+    labelled with their names and lengths (``"crank 40 mm"``, gid
+    ``"link-length"``, as :func:`linkage` does).
 
     Parameters:
         obj: a :class:`burmester.Drive` (from
@@ -1736,8 +1739,8 @@ def sixbar(
             :class:`burmester.SixBar`.
         task: the task whose poses to mark (a drive knows its own).
         coupler_path: draw the paths over a full crank turn.
-        labels, legend, ax: as every drawing (the module's *Common parameters*; the
-            labels name the pivots).
+        labels, legend, units, ax: as every drawing (the module's *Common parameters*; the
+            labels name the pivots and the links).
 
     Returns:
         The Axes.
@@ -1745,12 +1748,14 @@ def sixbar(
     six, drive = _drive_of(obj)
     ax = _new_axes(ax, (7.5, 6.0))
     handles = _draw_sixbar_static(ax, six, drive, task, coupler_path, labels)
+    drawn: List[Tuple[float, str]] = []
     if drive is not None:
         for k, phi in enumerate(drive.pose_crank_angles, start=1):
             handles.append(_draw_sixbar_at(
                 ax, six, phi, POSE_COLORS[k], str(k),
                 f"pose {k}: crank at {math.degrees(phi) % 360:.1f} deg",
             ))
+            drawn.append((phi, POSE_COLORS[k]))
     else:
         for k in range(4):
             phi = k * math.pi / 2
@@ -1759,6 +1764,7 @@ def sixbar(
                                                f"crank at {90 * k} deg"))
             except burmester.BurmesterError:
                 continue
+            drawn.append((phi, POSE_COLORS[k + 1]))
     if labels:
         if drive is not None:
             ax.set_title(
@@ -1768,9 +1774,16 @@ def sixbar(
         else:
             ax.set_title(f"Six-bar: drive {six.drive_grashof}, "
                          f"{'turns fully' if six.crank_turns_fully else 'does not turn fully'}")
-    ax.set_aspect("equal")
-    ax.autoscale_view()
-    ax.margins(0.08)
+    _around_data(ax, labels, units)
+    if labels and drawn:
+        # The link lengths, on the links at the first position drawn (the
+        # axes' limits and aspect first: the labels are placed on the screen).
+        ax.apply_aspect()
+        phi, color = drawn[0]
+        d0, d, e, a0, a, c, c0, _ = (tuple(map(float, q)) for q in six.joints(phi))
+        links = [("crank", d0, d), ("drive coupler", d, e), ("input", a0, a), ("coupler", a, c),
+                 ("rocker", c, c0)]
+        label_lengths(ax, links, units, color=color, avoid=[d0, d, e, a0, a, c, c0])
     if legend:
         _legend(ax, handles)
     return ax

@@ -246,6 +246,31 @@ def test_pictures_and_export(tmp_path, dmap):
         bp.animate_sixbar(d, tmp_path / "none" / "six.gif")
 
 
+def test_the_sixbar_picture_has_units_and_link_lengths(dmap):
+    """The six-bar picture labels its axes with the unit and its moving
+    links with their lengths (issue 22: every picture in the task's units),
+    the lengths read back equal to the core's joints at the first pose."""
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    import burmester.plot as bp
+
+    d = dmap.best_drives(1)[0]
+    ax = bp.sixbar(d, units="mm")
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("x [mm]", "y [mm]")
+    labels = {t.get_text().rsplit(" ", 2)[0]: float(t.get_text().split()[-2])
+              for t in ax.texts if t.get_gid() == "link-length"}
+    d0, dd, e, a0, a, c, c0, _ = d.sixbar.joints(d.pose_crank_angles[0])
+    want = {"crank": math.dist(d0, dd), "drive coupler": math.dist(dd, e), "input": math.dist(a0, a),
+            "coupler": math.dist(a, c), "rocker": math.dist(c, c0)}
+    assert labels.keys() == want.keys()
+    for name, v in want.items():
+        assert math.isclose(labels[name], v, rel_tol=2e-3), (name, labels[name], v)
+    ax = bp.sixbar(d.sixbar, labels=False)
+    assert ax.get_xlabel() == "" and not [t for t in ax.texts if t.get_gid() == "link-length"]
+    plt.close("all")
+
+
 def test_cli_drive(tmp_path, capsys):
     assert main(["drive", "--rank-by", "transmission", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)

@@ -507,7 +507,7 @@ def _draw_sixbar(args: argparse.Namespace, drive: burmester.Drive, out: str, exp
         _animated(out, args.force,
                   lambda tmp: plot.animate_sixbar(drive, tmp, frames=args.frames or 120, fps=args.fps or 24))
         return
-    ax = plot.sixbar(drive)
+    ax = plot.sixbar(drive, units=units)
     if title is not None:
         ax.set_title(title)
     _save(ax.figure, out, _picture_dpi(args), args.force)
