@@ -76,13 +76,14 @@ def describe_ranking(ranked_by: str) -> str:
 def limits_dict(limits: DesignLimits) -> Dict[str, Any]:
     """The limits as JSON: ``min_transmission_deg``, ``max_link_ratio``,
     ``input``, ``min_grashof_margin``, ``max_size_ratio`` and
-    ``max_link_length`` (None: no limit) and ``defaults`` (whether they are
+    ``max_link_length`` (the last three None: no limit; JSON has no
+    infinity) and ``defaults`` (whether they are
     :class:`DesignLimits`'s defaults). The ``"limits"`` of every ``--json``
     document: every limit its verdicts (``violations``, ``acceptable``)
     were judged by."""
     return {
         "min_transmission_deg": limits.min_transmission_deg,
-        "max_link_ratio": limits.max_link_ratio,
+        "max_link_ratio": limits.max_link_ratio if math.isfinite(limits.max_link_ratio) else None,
         "input": limits.input,
         "min_grashof_margin": limits.min_grashof_margin,
         "max_size_ratio": limits.max_size_ratio if math.isfinite(limits.max_size_ratio) else None,

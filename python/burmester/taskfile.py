@@ -377,7 +377,9 @@ class _Reader:
                     f"{where}.{key}", f"unknown key (expected one of: {expected}){hint}"
                 )
 
-    def number(self, where: str, value: object, what: str = "a number") -> float:
+    def number(self, where: str, value: object, what: str = "a number", no_limit: bool = False) -> float:
+        """A number; ``no_limit``: TOML's ``inf`` is accepted too (a limit
+        that does not bind, as the core's ``DesignLimits`` takes it)."""
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.fail(where, f"expected {what}, found {_describe(value)}")
         try:
@@ -390,8 +392,11 @@ class _Reader:
                 f"expected {what} within +-1.8e308, found an integer of {digits} digits; "
                 "write the value you mean (as a float, for example 1.5e30)",
             ) from None
+        if no_limit and x == math.inf:
+            return x
         if not math.isfinite(x):
-            raise self.fail(where, f"expected a finite number, found {value}")
+            hint = " (or inf: no limit)" if no_limit else ""
+            raise self.fail(where, f"expected a finite number{hint}, found {value}")
         return x
 
     def required_number(self, where: str, table: Mapping[str, Any], key: str, what: str) -> float:
@@ -578,7 +583,7 @@ def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
         mu = r.number("limits.min_transmission_deg", lim_t["min_transmission_deg"], "a number of degrees")
     ratio = defaults.max_link_ratio
     if "max_link_ratio" in lim_t:
-        ratio = r.number("limits.max_link_ratio", lim_t["max_link_ratio"], "a number")
+        ratio = r.number("limits.max_link_ratio", lim_t["max_link_ratio"], "a number", no_limit=True)
     if "input" in lim_t and "require_crank" in lim_t:
         raise r.fail(
             "[limits]", 'expected one of input = "any" | "crank" | "rocker" or require_crank, found both'
@@ -598,7 +603,7 @@ def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
     for key in ("max_size_ratio", "max_link_length"):
         v = math.inf
         if key in lim_t:
-            v = r.number(f"limits.{key}", lim_t[key], "a number")
+            v = r.number(f"limits.{key}", lim_t[key], "a number", no_limit=True)
         sizes.append(v)
     margin = defaults.min_grashof_margin
     if "min_grashof_margin" in lim_t:

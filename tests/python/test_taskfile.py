@@ -225,3 +225,29 @@ def test_the_five_pose_example_file():
     spec = taskfile.load(EXAMPLE_FILE.parent / "five.toml")
     assert len(spec.poses) == 5 and spec.driven_center is None
     assert len(spec.task.burmester_points()) == 4
+
+
+@pytest.mark.parametrize("field", ["max_link_ratio", "max_size_ratio", "max_link_length"])
+def test_limits_without_a_bound_round_trip(field):
+    """A limit the core takes as infinite (no bound) is written as TOML's
+    ``inf`` (or left out where that is its default) and read back equal;
+    the JSON of the limits says None (JSON has no infinity)."""
+    import dataclasses
+    import json
+
+    from burmester import pivots
+
+    base = DesignLimits(max_link_ratio=8.0, max_size_ratio=5.0, max_link_length=40.0)
+    lim = DesignLimits(**{**{k: getattr(base, k) for k in ("max_link_ratio", "max_size_ratio", "max_link_length")},
+                          field: math.inf})
+    spec = dataclasses.replace(taskfile.example(), limits=lim)
+    back = taskfile.loads(taskfile.dumps(spec))
+    assert back.limits == lim
+    doc = json.loads(json.dumps(pivots.limits_dict(lim), allow_nan=False))
+    assert doc[field] is None
+    with pytest.raises(TaskFileError, match=r"finite number \(or inf: no limit\), found -inf"):
+        taskfile.loads(taskfile.dumps(spec).replace(f"{field} = inf", f"{field} = -inf")
+                       if field == "max_link_ratio" else
+                       taskfile.dumps(spec).replace("[limits]", f"[limits]\n{field} = -inf"))
+    with pytest.raises(TaskFileError, match="expected a finite number, found inf"):
+        taskfile.loads(taskfile.dumps(spec).replace("min_transmission_deg = 30.0", "min_transmission_deg = inf"))
