@@ -30,7 +30,7 @@ import numpy as np
 import numpy.typing as npt
 
 from burmester import _view
-from burmester._burmester import DesignLimits, Grid, SynthesizedFourBar, Task, _atlas_tile
+from burmester._burmester import DesignLimits, Grid, InvalidInputError, SynthesizedFourBar, Task, _atlas_tile
 
 if TYPE_CHECKING:
     from typing_extensions import Unpack
@@ -158,6 +158,68 @@ class PivotAtlas:
         """What chose each cell's best driving pivot (``"balanced"``,
         ``"transmission"`` or ``"compact"``)."""
         return str(self.options.get("rank_by", "balanced"))
+
+    #: Each array's attribute, dtype and trailing shape (after ``(ny, nx)``).
+    _LAYOUT: Tuple[Tuple[str, Any, Tuple[int, ...]], ...] = (
+        ("valid", np.bool_, ()), ("count", np.int64, ()), ("branch_free_count", np.int64, ()),
+        ("best_transmission_deg", np.float64, ()), ("best_link_ratio", np.float64, ()),
+        ("best_margin", np.float64, ()), ("best_size_ratio", np.float64, ()),
+        ("best_score", np.float64, ()), ("best_driving", np.float64, (2,)), ("best_index", np.int64, (2,)),
+    )
+
+    def __setstate__(self, state: Dict[str, Any]) -> None:
+        """Unpickling: the state is checked before it is taken (issue 24,
+        item 7: no object holds state no atlas has)."""
+        self.__dict__.clear()
+        self.__dict__.update(state)
+        try:
+            self._check()
+        except InvalidInputError:
+            self.__dict__.clear()
+            raise
+
+    def _check(self) -> None:
+        """Refuse state that no atlas has, with an
+        :class:`~burmester.InvalidInputError` of cause
+        ``"inconsistent_state"``: the types of the task and grids, every
+        array's dtype and shape against the driven grid, counts within the
+        driving grid, best indices inside it, the ranking's name."""
+        def bad(what: str) -> InvalidInputError:
+            e = InvalidInputError(f"a PivotAtlas's pickled state is inconsistent: {what}; "
+                                  "unpickle only what pivot_atlas wrote")
+            e.cause = "inconsistent_state"
+            return e
+
+        missing = {"task", "driven", "driving", "options"} - self.__dict__.keys()
+        missing |= {name for name, _, _ in self._LAYOUT} - self.__dict__.keys()
+        if missing:
+            raise bad(f"it lacks {', '.join(sorted(missing))}")
+        if not isinstance(self.task, Task) or not isinstance(self.driven, Grid) \
+                or not isinstance(self.driving, Grid) or not isinstance(self.options, dict):
+            raise bad("task, driven, driving and options must be a Task, two Grids and a dict")
+        if self.options.get("rank_by", "balanced") not in ("balanced", "transmission", "compact"):
+            raise bad(f"rank_by {self.options.get('rank_by')!r} is not a ranking")
+        shape = self.driven.shape
+        for name, dtype, tail in self._LAYOUT:
+            a = getattr(self, name)
+            if not isinstance(a, np.ndarray) or a.dtype != dtype or a.shape != shape + tail:
+                got = f"{a.dtype} {a.shape}" if isinstance(a, np.ndarray) else type(a).__name__
+                raise bad(f"{name} must be {np.dtype(dtype)} of shape {shape + tail}, got {got}")
+        n = self.driving.size
+        for name in ("count", "branch_free_count"):
+            a = getattr(self, name)
+            if a.size and (a.min() < 0 or a.max() > n):
+                raise bad(f"{name} must be from 0 to the driving grid's {n} samples")
+        if np.any(self.branch_free_count < self.count):
+            raise bad("count (acceptable pivots) exceeds branch_free_count")
+        has = self.best_index[..., 0] >= 0
+        ny, nx = self.driving.shape
+        if np.any(has & ~self.valid) or np.any(has & ((self.best_index[..., 0] >= ny)
+                                                      | (self.best_index[..., 1] < 0)
+                                                      | (self.best_index[..., 1] >= nx))):
+            raise bad("best_index must index the driving grid, and only at valid cells")
+        if np.any(np.isnan(self.best_score) != ~has):
+            raise bad("best_score must be a number exactly where best_index is set")
 
     def _arrays(self) -> List[npt.NDArray[Any]]:
         return [self.valid, self.count, self.branch_free_count, self.best_transmission_deg,

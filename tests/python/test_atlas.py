@@ -260,3 +260,40 @@ def test_cli_atlas_on_a_running_scheduler(client, capsys):
     assert main(["atlas", *small, "--scheduler", "tcp://127.0.0.1:9"]) == 2
     err = capsys.readouterr().err
     assert "cannot reach the Dask scheduler" in err and err.count("\n") == 1
+
+
+def test_unpickling_refuses_state_no_atlas_has():
+    """Issue 24, item 7 for the Python-side PivotAtlas: pickled state whose
+    arrays do not fit its grids, counts beyond the driving grid, a best
+    index outside it or where the cell is not valid, a score without an
+    index, an unknown ranking, or a missing part is refused with
+    ``InvalidInputError(cause="inconsistent_state")``; the true state loads."""
+    atlas = pivot_atlas(Task(POSES), Grid(-8, 8, -8, 8, 6, 5), Grid(-8, 8, -8, 8, 30, 30))
+    assert pickle.loads(pickle.dumps(atlas)) == atlas
+    j, i = np.argwhere(atlas.best_index[..., 0] >= 0)[0]
+
+    def tampered(edit):
+        state = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in atlas.__dict__.items()}
+        state["options"] = dict(state["options"])
+        edit(state)
+        blob = pickle.dumps(atlas)
+        back = pickle.loads(blob)  # a fresh object to hand the tampered state
+        with pytest.raises(InvalidInputError) as e:
+            back.__setstate__(state)
+        assert e.value.cause == "inconsistent_state" and "PivotAtlas" in str(e.value), e.value
+        return str(e.value)
+
+    assert "count" in tampered(lambda s: s["count"].__setitem__((j, i), 10**6))
+    assert "shape" in tampered(lambda s: s.__setitem__("best_score", s["best_score"][:, :-1]))
+    assert "int64" in tampered(lambda s: s.__setitem__("best_index", s["best_index"].astype(np.int32)))
+    assert "best_index" in tampered(lambda s: s["best_index"].__setitem__((j, i, 1), 30))
+    assert "best_index" in tampered(lambda s: s["valid"].__setitem__((j, i), False))
+    assert "best_score" in tampered(lambda s: s["best_score"].__setitem__((j, i), np.nan))
+    assert "rank_by" in tampered(lambda s: s["options"].__setitem__("rank_by", "fastest"))
+    assert "lacks" in tampered(lambda s: s.pop("driving"))
+    assert "Task" in tampered(lambda s: s.__setitem__("task", "not a task"))
+    # A pickle stream carrying bad state is refused when loaded.
+    bad = pickle.loads(pickle.dumps(atlas))
+    bad.__dict__["best_margin"] = bad.best_margin.astype(np.float32)
+    with pytest.raises(InvalidInputError):
+        pickle.loads(pickle.dumps(bad))
