@@ -43,9 +43,8 @@
 use nalgebra::{Point2, Vector2};
 
 use crate::geom::{PerPose, cross};
-use crate::linkage::fourbar::clear_of_toggle;
 use crate::linkage::grashof::{fmax, fmin, grashof_of};
-use crate::linkage::{AssemblyMode, Grashof, input_bounds};
+use crate::linkage::{AssemblyMode, FourBar, Grashof, input_bounds};
 
 /// The input rotation that carries the coupler through the poses in order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -225,23 +224,24 @@ pub(crate) fn figures<const MODES: bool, const N: usize>(
     if !(l1 > tiny && l2 > tiny && l3 > tiny && l4 > tiny && (l1 + l2 + l3 + l4).is_finite()) {
         return None;
     }
-    // The mode at a pose: the position analysis' loop at the pose's input
-    // direction must close clear of a toggle (the test of `FourBar::solve`,
-    // so the linkage assembles there in the mode reported), and the pose's
-    // own loop gives the mode, by the same band. A pose's loop clear of the
-    // band by a factor of 100 in sin(mu) (most of them) is clear in the
-    // position analysis' loop too, which differs from it by the synthesis'
-    // rounding, far inside that margin: decided without square roots.
+    // The mode at a pose: a pose's own loop clear of the toggle band by a
+    // factor of 100 in sin(mu) (most of them) is clear in the position
+    // analysis' loop too, which differs from it by the synthesis' rounding,
+    // far inside that margin: its sign is the mode, decided without square
+    // roots. Otherwise the position analysis itself decides: the linkage
+    // `FourBar::from_pivots(a0, c0, l2, l3, l4)` (what `Task::four_bar`
+    // builds) at the pose's input angle has a mode exactly when
+    // `FourBar::solve` closes its loop clear of a toggle there, and the mode
+    // is the one whose rocker joint is the pose's (the nearer of the two),
+    // so that a reported mode always assembles and reaches the pose, and a
+    // toggle is reported exactly where the position analysis reports one.
     let modes = PerPose::from_fn(N, |k| {
         if !MODES {
             return None;
         }
         let (u, w) = (c[k] - a[k], c[k] - c0);
-        AssemblyMode::of_loop_well_clear(u, w, l1 + l2).or_else(|| {
-            clear_of_toggle(lengths, c0 - a0, a[k] - a0)
-                .then(|| AssemblyMode::of_loop_within(u, w, l1 + l2))
-                .flatten()
-        })
+        AssemblyMode::of_loop_well_clear(u, w, l1 + l2)
+            .or_else(|| mode_by_position_analysis(a0, c0, [l2, l3, l4], a[k], c[k]))
     });
     let grashof = grashof_of(lengths);
     let bounds = input_bounds(lengths);
@@ -327,6 +327,37 @@ pub(crate) fn figures<const MODES: bool, const N: usize>(
         one_circuit,
         min_transmission,
         link_ratio: max / min,
+    })
+}
+
+/// The assembly mode at a pose near a toggle, by the position analysis:
+/// the linkage with input pivot `a0`, output pivot `c0` and lengths
+/// `[crank, coupler, rocker]` driven to the direction of `a - a0`; `None`
+/// where [`FourBar::solve`] finds no position clear of a toggle there (out
+/// of reach, indeterminate, or within the band), else the mode whose
+/// rocker joint is nearer `c`, the pose's moving pivot.
+#[cold]
+fn mode_by_position_analysis(
+    a0: Point2<f64>,
+    c0: Point2<f64>,
+    [crank, coupler, rocker]: [f64; 3],
+    a: Point2<f64>,
+    c: Point2<f64>,
+) -> Option<AssemblyMode> {
+    let fb = FourBar::from_pivots(a0, c0, crank, coupler, rocker).ok()?;
+    let v = a - a0;
+    let theta2 = v.y.atan2(v.x);
+    let [open, crossed] = AssemblyMode::BOTH.map(|m| fb.solve(theta2, m).ok());
+    let (open, crossed) = (open?, crossed?);
+    // The toggle flag is the loop's, the same in both modes.
+    if open.toggle || crossed.toggle {
+        return None;
+    }
+    let d = |q: &crate::linkage::Configuration| (fb.joints(q).rocker_joint - c).norm_squared();
+    Some(if d(&open) <= d(&crossed) {
+        AssemblyMode::Open
+    } else {
+        AssemblyMode::Crossed
     })
 }
 

@@ -1009,35 +1009,6 @@ fn heron_tolerance<S: Simd>(
     o.add(first, o.mul(o.mul(o.mul(k, k), ea), eb))
 }
 
-/// Whether the loop of a linkage with lengths `[ground, crank, coupler,
-/// rocker]`, ground vector `ground` (input pivot to output pivot) and the
-/// crank along `dir` closes clear of a toggle: Heron's product beyond
-/// [`tolerance::heron_tolerance`], the test of [`FourBar::solve`]'s
-/// `toggle` (and of its loop that does not close) on the same arithmetic,
-/// with the crank's direction from the vector instead of an angle. False
-/// for NaN and for a zero direction.
-#[inline(always)]
-pub(crate) fn clear_of_toggle(lengths: [f64; 4], ground: Vector2<f64>, dir: Vector2<f64>) -> bool {
-    let [g, c, l3, l4] = lengths;
-    // In units of the longest link where a product of four lengths (Heron's
-    // product, its tolerance) could leave the range of doubles.
-    let m = g.max(c).max(l3).max(l4);
-    let k = if (SAFE_MIN..=SAFE_MAX).contains(&m) {
-        1.0
-    } else {
-        1.0 / m
-    };
-    let (g, c, l3, l4) = (g * k, c * k, l3 * k, l4 * k);
-    let dir = dir * k;
-    // The crank tip as the position analysis puts it: the crank's length
-    // along the direction (a zero or NaN direction fails below).
-    let d = ground * k - dir * (c / dir.norm());
-    let r2 = d.norm_squared();
-    let (sum, diff) = (l3 + l4, l3 - l4);
-    let (a, b) = (sum * sum - r2, r2 - diff * diff);
-    a * b > tolerance::heron_tolerance(sum * sum, diff.abs() * sum, r2, g + c, a, b)
-}
-
 /// Magnitudes between which four-fold products (Heron's product of a loop
 /// and its tolerance) need no scaling.
 const SAFE_MIN: f64 = 1e-60;
