@@ -9,8 +9,18 @@ import sys
 import time
 
 import pytest
+from hypothesis import settings
 
 import burmester
+
+# Hypothesis draws the same examples on every run of the test command (the
+# README's, which CI runs): a run's verdict depends on the code, not on the
+# draw. Set BURMESTER_EXPLORE=1 to draw fresh examples (a search for new
+# cases, as the fuzz rounds are); a case found that way is pinned as a test
+# of its own.
+settings.register_profile("reproducible", derandomize=True)
+settings.register_profile("explore", derandomize=False)
+settings.load_profile("explore" if os.environ.get("BURMESTER_EXPLORE") else "reproducible")
 
 #: The example's poses (x, y, angle in radians), driven center and view.
 POSES = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
