@@ -34,7 +34,7 @@
 //! construction with `C0 = C1 + R n`, `R -> ∞` (`C'_k - C1` turns to
 //! `R n_k`). Everything else (the extreme lines, the double wedge, the
 //! classes) is as for a revolute driven dyad: the only place the kind
-//! enters is [`DyadKind::filemon_lines`].
+//! enters is `DyadKind::filemon_lines`, one match on the kind.
 
 use nalgebra::{Point2, Vector2};
 
@@ -226,7 +226,7 @@ impl FilemonLines {
     ///
     /// # Errors
     ///
-    /// As [`DyadKind::filemon_lines`]: a crank with no length
+    /// A crank with no length
     /// ([`DegenerateError::ZeroLengthLink`]) or whose fixed pivot's image
     /// `C'_k` overflows or coincides with its circle point
     /// ([`InvalidInput::Overflow`]); a slider whose circle point is not
