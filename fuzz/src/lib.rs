@@ -725,8 +725,8 @@ pub fn filemon_classify(data: &[u8]) {
     };
     let c1 = f.driven_circle();
     finite_pt("C1", c1);
-    assert_eq!(f.driven(), Dyad::new(c0, c1));
-    for p in f.fixed_pivot_images() {
+    assert_eq!(f.driven(), Dyad::new(c0, c1).into());
+    for p in f.fixed_pivot_images().into_iter().flatten() {
         if inp.moderate {
             finite_pt("C'", p);
         }
@@ -2023,10 +2023,10 @@ fn check_free_arcs(four: &FourPositions, arcs: &FilemonArcs, vp: &Viewport) {
             .iter()
             .filter_map(|e| if circle { Some(e.circle) } else { e.center })
             .collect();
-        marks.push(if circle {
-            arcs.driven().circle
+        marks.extend(if circle {
+            Some(arcs.driven().circle())
         } else {
-            arcs.driven().center
+            arcs.driven().finite_center()
         });
         let near_mark = |p: Point2<f64>| marks.iter().any(|m| (m - p).norm() <= 1e-6 * diag);
         let class = |p: Point2<f64>| {

@@ -35,12 +35,15 @@ from burmester._burmester import (
     Pivot,
     Pole,
     SixBar,
+    SliderFilemon,
     SolutionMap,
     Space,
     SynthesizedFourBar,
     Task,
     __version__,
     clip_line,
+    slider_branch_free_arcs,
+    slider_curve_branch,
     unit_time_ratio_crank_rocker,
 )
 from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
@@ -72,6 +75,7 @@ __all__ = [
     "Pivot",
     "Pole",
     "SixBar",
+    "SliderFilemon",
     "SolutionMap",
     "SynthesizedFourBar",
     "Task",
@@ -84,5 +88,7 @@ __all__ = [
     "NearMiss",
     "Space",
     "pivot_atlas",
+    "slider_branch_free_arcs",
+    "slider_curve_branch",
     "unit_time_ratio_crank_rocker",
 ]

@@ -44,10 +44,13 @@ __all__ = [
     "Pivot",
     "Pole",
     "SixBar",
+    "SliderFilemon",
     "SolutionMap",
     "SynthesizedFourBar",
     "Task",
     "clip_line",
+    "slider_branch_free_arcs",
+    "slider_curve_branch",
     "unit_time_ratio_crank_rocker",
     "_atlas_tile",
     "Space",
@@ -1207,6 +1210,136 @@ class Filemon:
         bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
+
+@final
+class SliderFilemon:
+    """Filemon's construction for a slider driven dyad of a three-pose task:
+    the pin ``C1`` on a straight ground guide of direction ``u`` (the
+    dyad's center at infinity along the normal ``n = i u``), and the lines
+    transformed exactly into conics in the driving crank's center-point
+    plane.
+
+    The line of pose ``k`` runs through ``C1`` in the direction ``n_k``, the
+    guide's normal seen from the coupler frame of pose 1 while at pose
+    ``k``; the branch sign of a driving circle point ``A1`` is
+    ``cross(n_k, A1 - C1) = <C1 - A1, u_k>``: which side of the
+    perpendicular to the guide through the crank pin the slider pin is on
+    (the slider-crank's assembly mode). It is the limit of :class:`Filemon`
+    with ``C0 = C1 + R n``, ``R`` to infinity. ``circle`` must be a slider
+    point of the task (its three positions on the guide, within 1e-9 of the
+    task's size): else :class:`InvalidInputError` (``cause``
+    ``"not_a_dyad"``); a zero guide is :class:`InvalidInputError` too.
+    """
+
+    def __new__(cls, task: Task, circle: Point, guide: Point) -> SliderFilemon: ...
+    @property
+    def task(self) -> Task:
+        """The task."""
+    @property
+    def circle(self) -> Point:
+        """``C1``, the slider's pin at pose 1 (a point of the guide)."""
+    @property
+    def guide(self) -> Point:
+        """The guide's unit direction ``u``."""
+    @property
+    def normal(self) -> Point:
+        """``n = i u``, where the dyad's center is at infinity."""
+    @property
+    def directions(self) -> list[Point]:
+        """The lines' unit directions ``n_k``, ``k = 1, 2, 3``."""
+    @property
+    def all_defective(self) -> bool:
+        """True when every driving circle point has a branch defect (the
+        directions ``n_k`` do not lie in an open half-plane); then
+        :attr:`lines` and :attr:`conics` are empty."""
+    @property
+    def lines(self) -> list[Line]:
+        """The two Filemon lines (the extreme ones), each ``(C1, n_k)``."""
+    @property
+    def all_lines(self) -> list[Line]:
+        """The three lines ``(C1, n_k)``."""
+    @property
+    def sectors(self) -> list[Tuple[float, float, bool]]:
+        """The sectors around ``C1`` cut by the lines, as
+        :attr:`Filemon.sectors`."""
+    @property
+    def conics(self) -> list[Conic]:
+        """The two transformed Filemon lines: conics through the finite
+        poles (empty when all are defective)."""
+    @property
+    def extreme_poses(self) -> Optional[Tuple[int, int]]:
+        """The poses (1-based) whose lines are the Filemon lines."""
+    @property
+    def middle_pose(self) -> Optional[int]:
+        """The pose whose line lies between the Filemon lines."""
+    def line_conic(self, pose: int) -> Conic:
+        """The transformed line of pose ``k`` (any of the three)."""
+    def classify(self, center: Point, method: Method = "conic") -> BranchClass:
+        """The branch class of a driving center point: ``"conic"`` (the signs
+        of the two conics) or ``"direct"`` (its circle point, then the signs
+        at the three poses). ``"simulate"`` drives a four-bar and raises
+        :class:`InvalidInputError` (``cause`` ``"driven_kind"``) here."""
+    def classify_circle_point(self, circle: Point) -> BranchClass:
+        """Filemon's test of a driving circle point in the circle-point plane."""
+    def circle_signs(self, circle: Point) -> list[float]:
+        """``cross(n_k, A1 - C1)`` for ``k = 1, 2, 3``."""
+    def conic_values(self, center: Point) -> Optional[Tuple[float, float]]:
+        """The two conics' values at a center point (None when all defective)."""
+    @overload
+    def branch_map(
+        self,
+        grid: Union[Grid, GridTuple],
+        /,
+        *,
+        method: Method = "conic",
+        out: Optional[BoolArray] = None,
+        progress: Optional[Progress] = None,
+    ) -> BoolArray:
+        """Classify every candidate driving center point of a grid, as
+        :meth:`Filemon.branch_map` (``"conic"`` or ``"direct"``; the
+        method by name only). Shape ``(ny, nx)``, True where strictly
+        branch-free."""
+    @overload
+    def branch_map(
+        self,
+        xmin: float,
+        xmax: float,
+        ymin: float,
+        ymax: float,
+        nx: int,
+        ny: int,
+        /,
+        *,
+        method: Method = "conic",
+        out: Optional[BoolArray] = None,
+        progress: Optional[Progress] = None,
+    ) -> BoolArray: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+
+def slider_branch_free_arcs(
+    task: Task,
+    circle: Point,
+    guide: Point,
+    xmin: float,
+    xmax: float,
+    ymin: float,
+    ymax: float,
+    *,
+    plane: Literal["center", "circle"] = "center",
+) -> list[FloatArray]:
+    """Four poses: the branch-free arcs in view of the center-point curve
+    (``plane="circle"``: the circle-point curve) for the slider driven dyad
+    with pin ``circle`` at pose 1 on a guide along ``guide``, as
+    :meth:`Task.branch_free_arcs` (Filemon's four lines through ``C1`` in
+    the directions ``n_k``, exact arc ends). :class:`InvalidInputError` for
+    a task of three or five poses, a zero guide, or a pin whose four
+    positions are not on the guide (``cause`` ``"not_a_dyad"``)."""
+
+def slider_curve_branch(task: Task, circle: Point, guide: Point, center: Point) -> BranchClass:
+    """Four poses: the branch class of a driving center point on the
+    center-point curve for the slider driven dyad ``(circle, guide)``, as
+    :meth:`Task.curve_branch`."""
 
 @final
 class SynthesizedFourBar:

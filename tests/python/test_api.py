@@ -67,6 +67,11 @@ def samples():
                             base_plate=[(a0[0] - 50, a0[1] - 50), (a0[0] + 50, a0[1] - 50), (a0[0], a0[1] + 50)],
                             obstacles=[[(0.0, -3.0), (1.0, -3.0), (0.5, -2.0)]], link_width=0.1, travel_samples=16)
     valid = [(j, i) for j in range(20) for i in range(24) if dmap.valid[j, i]]
+    # A slider point of t (on the image-pole circle) and its guide.
+    ipc = t.image_pole_circle()
+    b1 = (ipc["center"][0] + ipc["radius"], ipc["center"][1])
+    b3 = t.displace(b1, 1, 3)
+    slider = burmester.SliderFilemon(t, b1, (b3[0] - b1[0], b3[1] - b1[1]))
     return {
         "Grid": Grid(*VP, 30, 20),
         "Conic": f.conics[0],
@@ -87,6 +92,7 @@ def samples():
         "Task (4 poses)": Task(FOUR),
         "Task (5 poses)": Task(FIVE),
         "Filemon": f,
+        "SliderFilemon": slider,
         "SynthesizedFourBar": sfb,
         "DesignLimits": DesignLimits(35.5, 4.0, "rocker"),
         "Pivot": pivot,
@@ -111,7 +117,8 @@ CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.C
            Task, Filemon, SynthesizedFourBar, DesignLimits, Pivot, SolutionMap, burmester.PivotAtlas,
            burmester.AtlasPair, burmester.PairMap, burmester.Pair, burmester.Space, burmester.Design,
            burmester.NearMiss, burmester.DesignReport,
-           burmester.SixBar, burmester.Drive, burmester.DriveMap]
+           burmester.SixBar, burmester.Drive, burmester.DriveMap,
+           burmester.SliderFilemon]
 
 
 # ---------------------------------------------------------------------------
@@ -232,6 +239,8 @@ PROPERTIES = {
     burmester.DriveMap: "valid min_transmission_rad drive_transmission_rad time_ratio link_ratio size_ratio "
                         "acceptable grid extent shape linkage attachment attachment_ends swing "
                         "motion_transmission_deg limits swing_margin_deg max_time_ratio",
+    burmester.SliderFilemon: "task circle guide normal directions all_defective lines all_lines sectors conics "
+                             "extreme_poses middle_pose",
 }
 
 #: Methods of each class: they take arguments, can fail, or do real work.
@@ -255,6 +264,7 @@ METHODS = {
     burmester.SixBar: "solve transmission_angles toggle joints pose_at coupler_path crank_angles crank_angles_for_input",
     burmester.Drive: "turn_angles pose_at",
     burmester.DriveMap: "point drive best_drives pareto_front classic_drive",
+    burmester.SliderFilemon: "line_conic classify classify_circle_point circle_signs conic_values branch_map",
 }
 
 #: Methods without arguments, and why each is a method.

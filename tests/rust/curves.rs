@@ -1726,7 +1726,7 @@ fn check_free_arcs_dense(
         .iter()
         .filter_map(|e| if circle { Some(e.circle) } else { e.center })
         .collect();
-    let driven = fa.driven();
+    let driven = fa.driven().crank("the test").unwrap();
     marks.push(if circle { driven.circle } else { driven.center });
     let diag = (view.xmax - view.xmin).hypot(view.ymax - view.ymin);
     let near_mark = |p: Point2<f64>| marks.iter().any(|m| (m - p).norm() <= 1e-6 * diag);
@@ -1797,7 +1797,7 @@ fn check_free_arcs_by_driving(
     fa: &FilemonArcs,
     view: &Viewport,
 ) -> Result<(), TestCaseError> {
-    let driven = fa.driven();
+    let driven = fa.driven().crank("the test").unwrap();
     let s = four.size();
     let arcs = fa.free_center_arcs(view);
     let fine = four.center_point_curve().polylines(view);
@@ -2921,7 +2921,7 @@ fn issue24_the_driven_circle_point_is_a_boundary() {
         let size = four.size();
         let d = Dyad::new(t.point(driven.center), t.point(driven.circle));
         let arcs = four.filemon(&d).unwrap();
-        let c1 = arcs.driven().circle;
+        let c1 = arcs.driven().circle();
         // Every sign vanishes at C1 (against their size a task away).
         let far = arcs.circle_signs(c1 + Vector2::new(size, 0.0));
         let scale = far.iter().map(|v| v.abs()).fold(0.0, f64::max);
@@ -3065,8 +3065,8 @@ fn issue24_a_free_arc_never_ends_mid_chord_in_a_defective_stretch() {
         Point2::new(-2.8392127636848383e-7, 5.572602386567654e-7),
     );
     let arcs = four.filemon(&driven).unwrap();
-    let c1 = arcs.driven().circle;
-    let images = arcs.fixed_pivot_images();
+    let c1 = arcs.driven().circle();
+    let images = arcs.fixed_pivot_images().unwrap();
     let signs = |p: Point2<f64>| {
         images.map(|c| {
             let (u, v) = (c - c1, p - c1);

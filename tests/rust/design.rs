@@ -230,7 +230,10 @@ fn map_samples_match_the_linkage_at_each_point() {
             if !m.valid[k] {
                 continue;
             }
-            let fig = f.task().linkage_figures(&fb.driving, &f.driven()).unwrap();
+            let fig = f
+                .task()
+                .linkage_figures(&fb.driving, &f.driven_crank("the test").unwrap())
+                .unwrap();
             assert_eq!(Grashof::from_code(m.grashof[k]), Some(fig.grashof), "{p}");
             assert_eq!(m.direction[k], fig.direction.code(), "{p}");
             assert_eq!(m.one_circuit[k], fig.one_circuit);

@@ -690,7 +690,10 @@ fn change_point_linkages_are_refused_under_the_default_margin() {
         let (t, c0) = poses_of(lengths, a0, thetas);
         let f = t.filemon(c0).unwrap();
         let sfb = t
-            .four_bar(&t.dyad_from_center(a0).unwrap(), &f.driven())
+            .four_bar(
+                &t.dyad_from_center(a0).unwrap(),
+                &f.driven_crank("the test").unwrap(),
+            )
             .unwrap();
         let fig = sfb.figures;
         for (got, want) in fig.lengths.iter().zip(lengths) {
@@ -753,7 +756,7 @@ fn the_grashof_margin_is_the_distance_from_the_change_point() {
             let Ok(d) = t.dyad_from_center(Point2::new(a.0, a.1)) else {
                 continue;
             };
-            let Ok(sfb) = t.four_bar(&d, &f.driven()) else {
+            let Ok(sfb) = t.four_bar(&d, &f.driven_crank("the test").unwrap()) else {
                 continue;
             };
             let (a0, a1) = (sfb.driving.center, sfb.driving.circle);

@@ -81,7 +81,7 @@ fn runs_match_pointwise_at_the_poles_and_c0() {
             .unwrap()
             .poles()
             .iter()
-            .chain([&f.driven().center])
+            .chain(&f.driven().finite_center())
         {
             let r = 1e-6 * t.scale();
             let g = Grid::from_bounds(p.x - r, p.x + r, p.y - r, p.y + r, 257, 257).unwrap();
@@ -245,7 +245,7 @@ proptest! {
         if mirror { sim = sim.mirrored(); }
         let poses: Vec<Pose> = t.poses().iter().map(|p| sim.pose(p)).collect();
         let t2 = Task::new(&poses).unwrap();
-        let f2 = t2.filemon(sim.point(f.driven().center)).unwrap();
+        let f2 = t2.filemon(sim.point(f.driven().finite_center().unwrap())).unwrap();
         let n = 96;
         let half = 8.0;
         let g1 = Grid::from_bounds(-half, half, -half, half, n, n).unwrap();

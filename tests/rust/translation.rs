@@ -483,7 +483,9 @@ fn the_solution_map_runs_on_a_translated_task() {
         // Each valid sample's linkage is the one built from its dyads, with
         // the same figures.
         let fb = map.context.linkage(k).unwrap();
-        let fig = t.linkage_figures(&fb.driving, &f.driven()).unwrap();
+        let fig = t
+            .linkage_figures(&fb.driving, &f.driven_crank("the test").unwrap())
+            .unwrap();
         assert_eq!(m.link_ratio[k], fig.link_ratio as f32);
         assert_eq!(m.acceptable[k], m.branch_free[k] && limits.meets(&fig));
         if m.acceptable[k] {

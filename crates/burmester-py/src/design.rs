@@ -890,7 +890,7 @@ fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
     py.detach(|| match c.varying {
         Varying::Driving { driven } => {
             let f = c.task.filemon(driven.center)?;
-            if f.driven() != driven {
+            if f.driven() != driven.into() {
                 return Ok(Err(()));
             }
             f.solution_map(&probe, &c.limits, &c.constraints, &control)

@@ -24,6 +24,7 @@ mod options;
 mod pairs;
 mod run;
 mod search;
+mod slider_branch;
 mod sweep;
 mod synthesis;
 
@@ -54,6 +55,8 @@ mod _burmester {
     use crate::search::{
         _design, _design_from_atlas, _design_plan, PyDesign, PyDesignReport, PyNearMiss, PySpace,
     };
+    #[pymodule_export]
+    use crate::slider_branch::{PySliderFilemon, slider_branch_free_arcs, slider_curve_branch};
     #[pymodule_export]
     use crate::synthesis::PyPole;
 

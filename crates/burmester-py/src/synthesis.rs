@@ -545,7 +545,8 @@ impl PyTask {
 impl PyFilemon {
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (Xy,))> {
         let task = Bound::new(py, self.task())?;
-        Ok((task.getattr("filemon")?, (pt(self.inner.driven().center),)))
+        let c0 = self.inner.driven_crank("Filemon").py()?.center;
+        Ok((task.getattr("filemon")?, (pt(c0),)))
     }
 
     #[getter]
@@ -556,8 +557,14 @@ impl PyFilemon {
     }
 
     #[getter]
-    fn driven_center(&self) -> Xy {
-        pt(self.inner.driven().center)
+    fn driven_center(&self) -> PyResult<Xy> {
+        // A Filemon is made from a driven center point (Task.filemon): a
+        // crank; a slider's construction is a SliderFilemon.
+        Ok(pt(self
+            .inner
+            .driven_crank("Filemon.driven_center")
+            .py()?
+            .center))
     }
 
     #[getter]
@@ -566,9 +573,10 @@ impl PyFilemon {
     }
 
     #[getter]
-    fn fixed_pivot_images(&self) -> (Xy, Xy, Xy) {
-        let [a, b, c] = self.inner.fixed_pivot_images();
-        (pt(a), pt(b), pt(c))
+    fn fixed_pivot_images(&self) -> Option<(Xy, Xy, Xy)> {
+        // Always there for a crank (every Filemon is one).
+        let [a, b, c] = self.inner.fixed_pivot_images()?;
+        Some((pt(a), pt(b), pt(c)))
     }
 
     #[getter]
@@ -707,7 +715,11 @@ impl PyFilemon {
     }
 
     fn __repr__(&self) -> String {
-        let c0 = self.inner.driven().center;
+        let c0 = self
+            .inner
+            .driven()
+            .finite_center()
+            .unwrap_or(Point2::new(f64::NAN, f64::NAN));
         format!(
             "<Filemon driven_center=({:?}, {:?}) all_defective={}>",
             c0.x,

@@ -477,6 +477,18 @@ pub enum InvalidInput {
         /// Its y.
         y: f64,
     },
+    /// An operation that needs a revolute driven dyad (a crank) was given a
+    /// dyad of another kind (a slider).
+    #[error(
+        "{what} needs a revolute driven dyad (a crank), not a {found}; with a slider driven dyad \
+         use the conic or direct branch classification and the branch map"
+    )]
+    DrivenKind {
+        /// What needs a crank.
+        what: &'static str,
+        /// The kind given (`"slider"`).
+        found: &'static str,
+    },
     /// The quadratic and linear coefficients of a conic are all zero.
     #[error(
         "a conic needs A, B, C, D or E nonzero (all are zero); pass the coefficients of a curve"

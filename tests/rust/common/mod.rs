@@ -115,7 +115,9 @@ pub(crate) fn filemon(runner: &mut TestRunner, half: f64) -> Filemon {
             .unwrap()
             .current();
         if let Ok(f) = t.filemon(Point2::new(c.0, c.1)) {
-            if !f.all_defective() && (f.driven_circle() - f.driven().center).norm() > 1e-3 {
+            if !f.all_defective()
+                && (f.driven_circle() - f.driven_crank("the test").unwrap().center).norm() > 1e-3
+            {
                 return f;
             }
         }

@@ -357,7 +357,11 @@ fn atlas_chunk(
             cells[m] = AtlasCell::INVALID;
             continue;
         };
-        let driven = filemon.driven();
+        // The atlas's Filemons are made from driven center points: cranks.
+        let Ok(driven) = filemon.driven_crank("the atlas") else {
+            cells[m] = AtlasCell::INVALID;
+            continue;
+        };
         let c = sampler.fixed_pivots(&driven);
         let branch = BranchRows::new(filemon, driving)?;
         let cell = AtlasCell {
@@ -556,7 +560,7 @@ fn all_acceptable(
     rank_by: RankBy,
     control: &Control<'_>,
 ) -> Result<Vec<(usize, f64)>> {
-    let driven = filemon.driven();
+    let driven = filemon.driven_crank("the atlas")?;
     let c = sampler.fixed_pivots(&driven);
     let branch = BranchRows::new(filemon, driving)?;
     let mut row = try_vec("a driving row", driving.nx(), false)?;
@@ -590,7 +594,7 @@ fn best(
     driving: &Grid,
     mut cand: Vec<(usize, f64)>,
 ) -> Option<AtlasBest> {
-    let driven = filemon.driven();
+    let driven = filemon.driven_crank("the atlas").ok()?;
     let c = sampler.fixed_pivots(&driven);
     let nx = driving.nx();
     cand.sort_by(|a, b| b.1.total_cmp(&a.1));

@@ -16,6 +16,10 @@ use crate::synthesis::three::{Filemon, Method};
 use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
 use crate::tolerance;
 
+/// What the solution map of a Filemon needs a crank for (the error of a
+/// slider driven dyad).
+const MAP_NEEDS_CRANK: &str = "the solution map (its figures are a four-bar's)";
+
 /// Which pivot a solution map varies.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Varying {
@@ -168,6 +172,9 @@ impl Filemon {
     /// # Errors
     ///
     /// [`InvalidInput`] for invalid limits or constraints;
+    /// [`InvalidInput::DrivenKind`] for a slider driven dyad (its figures
+    /// are a slider-crank's; its branch map is
+    /// [`branch_map`](Self::branch_map));
     /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when the columns
     /// cannot be allocated; [`Error::Cancelled`](crate::Error::Cancelled).
     pub fn solution_map(
@@ -179,10 +186,11 @@ impl Filemon {
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
         let options = CheckedOptions::new(limits, constraints)?;
+        let driven = self.driven_crank(MAP_NEEDS_CRANK)?;
         let sampler = Sampler::new(self.task(), &options)?.with_control(control);
-        let context = self.map_context(grid, limits, constraints);
+        let context = self.map_context(driven, grid, limits, constraints);
         fresh(grid, context, |out| {
-            self.fill_solution_map(&sampler, grid, out, control)
+            self.fill_solution_map(driven, &sampler, grid, out, control)
         })
     }
 
@@ -207,34 +215,34 @@ impl Filemon {
         control: &Control<'_>,
     ) -> Result<MapContext> {
         let options = CheckedOptions::new(limits, constraints)?;
+        let driven = self.driven_crank(MAP_NEEDS_CRANK)?;
         let sampler = Sampler::new(self.task(), &options)?.with_control(control);
-        let context = self.map_context(grid, limits, constraints);
+        let context = self.map_context(driven, grid, limits, constraints);
         into(grid, context, out, |out| {
-            self.fill_solution_map(&sampler, grid, out, control)
+            self.fill_solution_map(driven, &sampler, grid, out, control)
         })
     }
 
     fn map_context(
         &self,
+        driven: Dyad,
         grid: &Grid,
         limits: &DesignLimits,
         constraints: &Constraints,
     ) -> MapContext {
-        let varying = Varying::Driving {
-            driven: self.driven(),
-        };
+        let varying = Varying::Driving { driven };
         MapContext::new(grid, self.task(), varying, limits, constraints)
     }
 
     /// The columns of the map, the arguments checked.
     fn fill_solution_map(
         &self,
+        driven: Dyad,
         sampler: &Sampler<'_>,
         grid: &Grid,
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<()> {
-        let driven = self.driven();
         let mut branch = try_vec("a branch map", grid.len(), false)?;
         self.branch_map_into(grid, Method::Conic, &mut branch, control)?;
         let c = sampler.fixed_pivots(&driven);

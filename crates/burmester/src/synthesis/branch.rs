@@ -16,12 +16,32 @@
 //! (Which poses give the extreme lines varies with the task.) If the
 //! directions `C'_k - C1` do not lie in an open half-plane, every driving
 //! circle point has a branch defect ([`FilemonLines::all_defective`]).
+//!
+//! # A slider as the driven dyad
+//!
+//! With the driven dyad a slider (a pin `C1` on a ground guide of unit
+//! direction `u`, [`SliderDyad`]), its center is at infinity along the
+//! normal `n = i·u`, and the line of pose `k` runs through `C1` in the
+//! direction `n_k = e^{-i(θ_k - θ_1)} n`: the guide's normal seen from the
+//! coupler frame of pose 1 while at pose `k`. The branch sign is then
+//!
+//! ```text
+//! s_k = sign cross(n_k, A1 - C1) = sign <C1 - A1, u_k>,   u_k = e^{-i(θ_k - θ_1)} u
+//! ```
+//!
+//! the side of the perpendicular to the guide through `A` on which the pin
+//! lies (the slider-crank's assembly mode), and the limit of the revolute
+//! construction with `C0 = C1 + R n`, `R -> ∞` (`C'_k - C1` turns to
+//! `R n_k`). Everything else (the extreme lines, the double wedge, the
+//! classes) is as for a revolute driven dyad: the only place the kind
+//! enters is `DyadKind::filemon_lines`, one match on the kind.
 
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{DegenerateError, InvalidInput, Result};
-use crate::geom::{Line, PerPose, cross, normalized};
-use crate::synthesis::{Dyad, Task};
+use crate::geom::{Line, PerPose, cross, normalized, rotate_cs};
+use crate::synthesis::motion::Motion;
+use crate::synthesis::{DyadKind, SliderDyad, Task};
 use crate::tolerance;
 
 /// The branch class of a driving center point (or circle point).
@@ -68,9 +88,13 @@ impl Branch {
 /// line per pose through `C1`, the extreme ones, and the branch signs.
 #[derive(Clone, Copy, PartialEq)]
 pub struct FilemonLines {
-    driven: Dyad,
-    /// `C'_k = D_k1(C0)`.
-    c_prime: PerPose<Point2<f64>>,
+    driven: DyadKind,
+    /// The direction of each pose's line: `C'_k - C1` for a revolute
+    /// driven dyad, `n_k` for a slider.
+    dirs: PerPose<Vector2<f64>>,
+    /// `C'_k = D_k1(C0)` for a revolute driven dyad; `None` for a slider
+    /// (its center is at infinity).
+    c_prime: Option<PerPose<Point2<f64>>>,
     /// Pose indices (0-based) sorted by the angle of `C'_k - C1` within
     /// their half-plane: first and last are the extremes. `None` when they
     /// do not lie in an open half-plane.
@@ -78,66 +102,186 @@ pub struct FilemonLines {
 }
 
 crate::geom::debug_shows!(
-    /// The driven dyad and the fixed pivot's images `C'k`, not the sort order
-    /// kept.
+    /// The driven dyad, the fixed pivot's images `C'k` (none for a slider)
+    /// and the lines' directions, not the sort order kept.
     FilemonLines,
-    s => driven: s.driven, fixed_pivot_images: s.c_prime, all_defective: s.all_defective(),
+    s => driven: s.driven, fixed_pivot_images: s.c_prime, directions: s.dirs,
+        all_defective: s.all_defective(),
 );
 
-impl FilemonLines {
-    /// Filemon's construction for a driven dyad of `task`.
+impl DyadKind {
+    /// The center point where it is finite: `C0` for a crank, `None` for a
+    /// slider (its center is at infinity along the guide's normal).
+    pub fn finite_center(&self) -> Option<Point2<f64>> {
+        match self {
+            DyadKind::Revolute(d) => Some(d.center),
+            DyadKind::Slider(_) => None,
+        }
+    }
+
+    /// The crank, or the error naming `what` (which needs a crank) for a
+    /// dyad of another kind.
     ///
     /// # Errors
     ///
-    /// [`DegenerateError::ZeroLengthLink`] when the dyad has no length
-    /// (within [`tolerance::POINT`]); [`InvalidInput::Overflow`] when an
-    /// image `C'_k` of its fixed pivot overflows or coincides with its
-    /// circle point.
-    pub fn new(task: &Task, driven: Dyad) -> Result<Self> {
-        if driven.length() <= tolerance::POINT * task.scale() {
-            return Err(DegenerateError::ZeroLengthLink {
-                what: "driven crank",
-                x: driven.center.x,
-                y: driven.center.y,
+    /// [`InvalidInput::DrivenKind`] when the dyad is not a crank.
+    pub fn crank(&self, what: &'static str) -> Result<crate::synthesis::Dyad> {
+        match self {
+            DyadKind::Revolute(d) => Ok(*d),
+            DyadKind::Slider(_) => Err(InvalidInput::DrivenKind {
+                what,
+                found: self.as_str(),
             }
-            .into());
+            .into()),
         }
-        let motion = task.motion();
-        let c1 = driven.circle;
-        let c_prime = PerPose::from_fn(motion.len(), |k| motion.displace0(driven.center, k, 0));
-        let dirs = c_prime.map(|c| c - c1);
-        if dirs.iter().any(|d| normalized(*d).is_none()) {
-            return Err(InvalidInput::Overflow {
-                what: "a direction C'k - C1 of Filemon's construction",
-                hint: "the driven pivot's images C'k = D_k1(C0) must be finite and apart from \
-                       its circle point C1: choose a driven center point nearer the task",
-            }
-            .into());
-        }
-        Ok(FilemonLines {
-            driven,
-            c_prime,
-            order: half_plane_order(&dirs),
-        })
     }
 
-    /// The driven dyad `(C0, C1)`.
-    pub fn driven(&self) -> Dyad {
+    /// Filemon's construction ([`FilemonLines`]) of this driven dyad for
+    /// `motion`: the directions of the lines through the circle point `C1`,
+    /// one per pose, and the fixed pivot's images `C'_k = D_k1(C0)` where
+    /// the center is finite (a slider's guide is kept normalized). The
+    /// directions: `C'_k - C1` for a crank, the guide's
+    /// normal seen from the coupler frame of pose 1 at pose `k`,
+    /// `n_k = e^{-i(θ_k - θ_1)} n`, for a slider (the limit of the crank's
+    /// direction as its center goes to infinity along `n`; see
+    /// [`FilemonLines`]). `scale` is the task's size. The one place where
+    /// Filemon's construction depends on the dyad's kind.
+    ///
+    /// # Errors
+    ///
+    /// A crank: [`DegenerateError::ZeroLengthLink`] when it has no length
+    /// (within [`tolerance::POINT`]), [`InvalidInput::Overflow`] when an
+    /// image `C'_k` overflows or coincides with `C1`. A slider:
+    /// [`InvalidInput::NotFinite`] for a circle point that is not finite,
+    /// [`InvalidInput::ZeroDirection`] for a zero or non-finite guide,
+    /// [`InvalidInput::NotADyad`] when the pin's positions `D_1k(C1)` are
+    /// not on the guide (farther than [`tolerance::DYAD`] times the task's
+    /// size plus the pin's travel): not a slider dyad of the task.
+    pub(crate) fn filemon_lines(&self, motion: &Motion, scale: f64) -> Result<FilemonLines> {
+        match self {
+            DyadKind::Revolute(driven) => {
+                if driven.length() <= tolerance::POINT * scale {
+                    return Err(DegenerateError::ZeroLengthLink {
+                        what: "driven crank",
+                        x: driven.center.x,
+                        y: driven.center.y,
+                    }
+                    .into());
+                }
+                let c1 = driven.circle;
+                let c_prime =
+                    PerPose::from_fn(motion.len(), |k| motion.displace0(driven.center, k, 0));
+                let dirs = c_prime.map(|c| c - c1);
+                if dirs.iter().any(|d| normalized(*d).is_none()) {
+                    return Err(InvalidInput::Overflow {
+                        what: "a direction C'k - C1 of Filemon's construction",
+                        hint: "the driven pivot's images C'k = D_k1(C0) must be finite and apart \
+                               from its circle point C1: choose a driven center point nearer the \
+                               task",
+                    }
+                    .into());
+                }
+                Ok(FilemonLines::of(*self, dirs, Some(c_prime)))
+            }
+            DyadKind::Slider(slider) => {
+                let s = SliderDyad::new(slider.circle, slider.guide)?;
+                // Kept as given when already unit (normalizing again may move
+                // the last bit).
+                let s = if (slider.guide.norm() - 1.0).abs() <= 4.0 * f64::EPSILON {
+                    *slider
+                } else {
+                    s
+                };
+                // The pin's positions D_1k(C1) must lie on the guide.
+                let (off, travel) = (0..motion.len())
+                    .map(|k| {
+                        let p = motion.first_to(k, s.circle) - s.circle;
+                        (cross(s.guide, p).abs(), p.norm())
+                    })
+                    .fold((0.0f64, 0.0f64), |a, b| (a.0.max(b.0), a.1.max(b.1)));
+                let spread = off / (scale + travel);
+                if spread.is_nan() || spread > tolerance::DYAD {
+                    return Err(InvalidInput::NotADyad {
+                        which: "slider driven dyad (its pin's positions are off its guide)",
+                        spread,
+                        tolerance: tolerance::DYAD,
+                    }
+                    .into());
+                }
+                let n = s.normal();
+                let poses = motion.poses();
+                let dirs = PerPose::from_fn(motion.len(), |k| {
+                    let (sin, cos) = (poses[0].angle - poses[k].angle).sin_cos();
+                    rotate_cs(n, cos, sin)
+                });
+                Ok(FilemonLines::of(s.into(), dirs, None))
+            }
+        }
+    }
+}
+
+impl FilemonLines {
+    /// Filemon's construction for a driven dyad of `task`: a crank
+    /// ([`Dyad`](crate::synthesis::Dyad)) or a slider ([`SliderDyad`]).
+    ///
+    /// # Errors
+    ///
+    /// A crank with no length
+    /// ([`DegenerateError::ZeroLengthLink`]) or whose fixed pivot's image
+    /// `C'_k` overflows or coincides with its circle point
+    /// ([`InvalidInput::Overflow`]); a slider whose circle point is not
+    /// finite ([`InvalidInput::NotFinite`]) or whose guide is zero
+    /// ([`InvalidInput::ZeroDirection`]), or whose pin's positions are not
+    /// on its guide ([`InvalidInput::NotADyad`]).
+    pub fn new(task: &Task, driven: impl Into<DyadKind>) -> Result<Self> {
+        Self::of_motion(task.motion(), task.scale(), driven.into())
+    }
+
+    /// [`new`](Self::new) for a motion of any number of poses and its
+    /// size `scale`.
+    pub(crate) fn of_motion(motion: &Motion, scale: f64, driven: DyadKind) -> Result<Self> {
+        driven.filemon_lines(motion, scale)
+    }
+
+    /// The construction from its checked directions (and the fixed pivot's
+    /// images of a crank).
+    fn of(
+        driven: DyadKind,
+        dirs: PerPose<Vector2<f64>>,
+        c_prime: Option<PerPose<Point2<f64>>>,
+    ) -> Self {
+        FilemonLines {
+            driven,
+            dirs,
+            c_prime,
+            order: half_plane_order(&dirs),
+        }
+    }
+
+    /// The driven dyad: `(C0, C1)` for a crank, `(C1, u)` for a slider.
+    pub fn driven(&self) -> DyadKind {
         self.driven
     }
 
-    /// `C'_k = D_k1(C0)`, one per pose.
-    pub fn fixed_pivot_images(&self) -> PerPose<Point2<f64>> {
+    /// `C'_k = D_k1(C0)`, one per pose; `None` for a slider (its center is
+    /// at infinity).
+    pub fn fixed_pivot_images(&self) -> Option<PerPose<Point2<f64>>> {
         self.c_prime
     }
 
-    /// The lines through `C1` and `C'_k`, directions `C'_k - C1`, one per
-    /// pose.
+    /// The directions of the lines, one per pose: `C'_k - C1` for a crank,
+    /// the unit `n_k = e^{-i(θ_k - θ_1)} n` for a slider.
+    pub fn directions(&self) -> PerPose<Vector2<f64>> {
+        self.dirs
+    }
+
+    /// The lines through `C1`, one per pose, directions
+    /// [`directions`](Self::directions).
     pub fn all_lines(&self) -> PerPose<Line> {
-        let c1 = self.driven.circle;
-        self.c_prime.map(|c| Line {
+        let c1 = self.driven.circle();
+        self.dirs.map(|d| Line {
             point: c1,
-            direction: c - c1,
+            direction: d,
         })
     }
 
@@ -175,7 +319,7 @@ impl FilemonLines {
     /// defective): the double wedge between the Filemon lines.
     pub fn sectors(&self) -> Vec<(f64, f64, bool)> {
         use core::f64::consts::{PI, TAU};
-        let dirs = self.all_lines().map(|l| l.direction);
+        let dirs = self.dirs;
         let mut angles: Vec<f64> = dirs
             .iter()
             .flat_map(|d| {
@@ -203,11 +347,12 @@ impl FilemonLines {
             .collect()
     }
 
-    /// The branch signs `cross(C'_k - C1, A1 - C1)` of a driving circle
-    /// point, one per pose.
+    /// The branch signs `cross(d_k, A1 - C1)` of a driving circle point,
+    /// one per pose (`d_k` the [`directions`](Self::directions): for a
+    /// slider `cross(n_k, A1 - C1) = <C1 - A1, u_k>`).
     pub fn circle_signs(&self, a1: Point2<f64>) -> PerPose<f64> {
-        let c1 = self.driven.circle;
-        self.c_prime.map(|c| cross(c - c1, a1 - c1))
+        let c1 = self.driven.circle();
+        self.dirs.map(|d| cross(d, a1 - c1))
     }
 
     /// The branch class of a driving circle point `A1` (Filemon's test in

@@ -1,18 +1,17 @@
 //! Filemon's construction with four lines, and the exact ends of the
 //! branch-free arcs of the circle-point curve.
 
-use core::f64::consts::{PI, TAU};
-
-use nalgebra::{Point2, Vector2};
+use nalgebra::Point2;
 
 use super::FourPositions;
 use super::split::split_by;
 use crate::error::Result;
 use crate::geom::cubic::roots::quadratic_roots;
-use crate::geom::{Line, LocalFrame, Viewport, cross, normalized};
-use crate::synthesis::Branch;
-use crate::synthesis::Dyad;
+use crate::geom::{Line, LocalFrame, PerPose, Viewport, normalized};
+use crate::synthesis::branch::FilemonLines;
 use crate::synthesis::errors;
+use crate::synthesis::motion::Motion;
+use crate::synthesis::{Branch, DyadKind};
 
 /// An end of a branch-free arc: where an extreme Filemon line meets the
 /// circle-point curve (besides `C1`), and the center point of that dyad.
@@ -27,7 +26,10 @@ pub struct ArcEnd {
     pub center: Option<Point2<f64>>,
 }
 
-/// Filemon's construction for a driven dyad `(C0, C1)` of four poses.
+/// Filemon's construction for a driven dyad of four poses: a crank
+/// `(C0, C1)` or a slider `(C1, u)` (its lines run through `C1` in the
+/// directions `n_k`, see [`FilemonLines`]; everything below holds with
+/// `n_k` for `C'_k - C1`).
 ///
 /// # The lines and the double wedge
 ///
@@ -63,10 +65,10 @@ pub struct ArcEnd {
 #[derive(Debug, Clone, PartialEq)]
 pub struct FilemonArcs {
     four: FourPositions,
-    driven: Dyad,
-    c_prime: [Point2<f64>; 4],
-    /// The poses (0-based) sorted by the angle of `C'_k - C1` within their
-    /// half-plane; `None` when they do not lie in an open half-plane.
+    /// The lines, their directions and order (any kind of driven dyad).
+    lines: FilemonLines,
+    /// The poses (0-based) sorted by the angle of the directions within
+    /// their half-plane; `None` when they do not lie in an open half-plane.
     order: Option<[usize; 4]>,
     /// The other points of each line on the circle-point curve.
     meets: [Vec<Point2<f64>>; 4],
@@ -74,21 +76,24 @@ pub struct FilemonArcs {
 }
 
 impl FilemonArcs {
-    /// The construction for a driven dyad of `four`.
+    /// The construction for a driven dyad of `four` (checked to pass the
+    /// poses by the caller).
     ///
     /// # Errors
     ///
-    /// [`crate::InvalidInput::OutOfRange`] when an image `C'_k` is not
-    /// finite or coincides with `C1`.
-    pub(crate) fn new(four: &FourPositions, driven: &Dyad) -> Result<Self> {
-        let m = four.motion();
-        let c1 = driven.circle;
-        let c_prime = [0, 1, 2, 3].map(|k| m.displace(driven.center, k, 0));
-        let mut dirs = [Vector2::zeros(); 4];
-        for (d, c) in dirs.iter_mut().zip(&c_prime) {
-            *d = normalized(c - c1).ok_or_else(errors::bad_driven)?;
+    /// As [`FilemonLines::new`] (for a crank, an image `C'_k` that is not
+    /// finite or coincides with `C1` is [`crate::InvalidInput::Overflow`]).
+    pub(crate) fn new(four: &FourPositions, driven: DyadKind) -> Result<Self> {
+        let motion = Motion::new(PerPose::from_slice(four.poses()));
+        let lines = FilemonLines::of_motion(&motion, four.size(), driven)?;
+        let c1 = driven.circle();
+        let mut dirs = [nalgebra::Vector2::zeros(); 4];
+        for (d, v) in dirs.iter_mut().zip(lines.directions().iter()) {
+            *d = normalized(*v).ok_or_else(errors::bad_driven)?;
         }
-        let order = half_plane_order(&dirs);
+        let order = lines
+            .pose_order()
+            .map(|o| [o[0] - 1, o[1] - 1, o[2] - 1, o[3] - 1]);
         let curve = four.circle_point_curve();
         let p = curve.local_of(c1);
         let meets = dirs.map(|d| {
@@ -121,34 +126,41 @@ impl FilemonArcs {
         };
         Ok(FilemonArcs {
             four: *four,
-            driven: *driven,
-            c_prime,
+            lines,
             order,
             meets,
             ends,
         })
     }
 
-    /// The driven dyad `(C0, C1)`.
-    pub fn driven(&self) -> Dyad {
-        self.driven
+    /// The driven dyad: `(C0, C1)` for a crank, `(C1, u)` for a slider.
+    pub fn driven(&self) -> DyadKind {
+        self.lines.driven()
     }
 
-    /// `[C'_1, ..., C'_4]`, `C'_k = D_k1(C0)`.
-    pub fn fixed_pivot_images(&self) -> [Point2<f64>; 4] {
-        self.c_prime
+    /// The construction in the circle-point plane (lines, directions,
+    /// extremes, signs), as for any number of poses.
+    pub fn construction(&self) -> &FilemonLines {
+        &self.lines
     }
 
-    /// The four lines through `C1` and `C'_k` (directions `C'_k - C1`).
+    /// `[C'_1, ..., C'_4]`, `C'_k = D_k1(C0)`; `None` for a slider (its
+    /// center is at infinity).
+    pub fn fixed_pivot_images(&self) -> Option<[Point2<f64>; 4]> {
+        self.lines
+            .fixed_pivot_images()
+            .map(|c| [c[0], c[1], c[2], c[3]])
+    }
+
+    /// The four lines through `C1` (directions `C'_k - C1` for a crank,
+    /// `n_k` for a slider).
     pub fn all_lines(&self) -> [Line; 4] {
-        self.c_prime.map(|c| Line {
-            point: self.driven.circle,
-            direction: c - self.driven.circle,
-        })
+        let l = self.lines.all_lines();
+        [l[0], l[1], l[2], l[3]]
     }
 
     /// Whether every driving circle point has a branch defect (the
-    /// directions `C'_k - C1` do not lie in an open half-plane).
+    /// lines' directions do not lie in an open half-plane).
     pub fn all_defective(&self) -> bool {
         self.order.is_none()
     }
@@ -181,10 +193,11 @@ impl FilemonArcs {
         &self.ends
     }
 
-    /// The branch signs `cross(C'_k - C1, A1 - C1)` of a driving circle point.
+    /// The branch signs `cross(d_k, A1 - C1)` of a driving circle point
+    /// (`d_k = C'_k - C1` for a crank, `n_k` for a slider).
     pub fn circle_signs(&self, a1: Point2<f64>) -> [f64; 4] {
-        let c1 = self.driven.circle;
-        self.c_prime.map(|c| cross(c - c1, a1 - c1))
+        let s = self.lines.circle_signs(a1);
+        [s[0], s[1], s[2], s[3]]
     }
 
     /// The branch class of a driving circle point `A1`: free when the four
@@ -193,7 +206,7 @@ impl FilemonArcs {
     /// every sign is zero there, and a curve with a line of centers whose
     /// circle point is `C1` would otherwise be labelled by rounding).
     pub fn classify_circle_point(&self, a1: Point2<f64>) -> Branch {
-        if (a1 - self.driven.circle).norm() <= crate::tolerance::POINT * self.four.size() {
+        if (a1 - self.driven().circle()).norm() <= crate::tolerance::POINT * self.four.size() {
             return Branch::Boundary;
         }
         let s = self.circle_signs(a1);
@@ -236,8 +249,9 @@ impl FilemonArcs {
     /// The branch-free arcs of the center-point curve in view (the driving
     /// center points whose dyads pass the poses in one assembly mode): as
     /// [`free_circle_arcs`](Self::free_circle_arcs), with the centers of
-    /// the exact arc ends and `C0` (never free) as the vertices where the
-    /// class may change, each traced point classified by its circle point.
+    /// the exact arc ends and `C0` (never free; a slider has none) as the
+    /// vertices where the class may change, each traced point classified by
+    /// its circle point.
     pub fn free_center_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
         let marks = self.ends.iter().filter_map(|e| e.center).collect();
         self.free_arcs(viewport, marks, false)
@@ -252,14 +266,18 @@ impl FilemonArcs {
         mut marks: Vec<Point2<f64>>,
         circle: bool,
     ) -> Vec<Vec<Point2<f64>>> {
-        let (curve, driven) = if circle {
-            (self.four.circle_point_curve(), self.driven.circle)
+        let driven = self.driven();
+        let (curve, at) = if circle {
+            (self.four.circle_point_curve(), Some(driven.circle()))
         } else {
-            (self.four.center_point_curve(), self.driven.center)
+            (self.four.center_point_curve(), driven.finite_center())
         };
-        marks.push(driven);
+        // The driven dyad's point (never free) is the last mark; a slider
+        // has no center point, and no mark is `never` then.
+        let never = at.map_or(usize::MAX, |_| marks.len());
+        marks.extend(at);
         let lines = curve.polylines_marked(viewport, &marks);
-        free_pieces(&lines, marks.len() - 1, |p| {
+        free_pieces(&lines, never, |p| {
             if circle {
                 Some(self.classify_circle_point(p) == Branch::Free)
             } else {
@@ -416,50 +434,4 @@ fn free_pieces(
     }
     out.retain(|l| l.len() >= 2);
     out
-}
-
-/// The order of directions by angle when they lie in an open half-plane
-/// (extremes first and last), else `None`.
-fn half_plane_order(d: &[Vector2<f64>; 4]) -> Option<[usize; 4]> {
-    let ang = d.map(|v| v.y.atan2(v.x));
-    let mut idx = [0usize, 1, 2, 3];
-    idx.sort_by(|&a, &b| ang[a].total_cmp(&ang[b]));
-    // The directions lie in an open half-plane iff the largest circular gap
-    // between consecutive angles exceeds pi; the run starts after it.
-    let gaps = [0, 1, 2, 3].map(|i| {
-        if i < 3 {
-            ang[idx[i + 1]] - ang[idx[i]]
-        } else {
-            ang[idx[0]] + TAU - ang[idx[3]]
-        }
-    });
-    let (k, &gap) = gaps
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .unwrap_or((0, &0.0));
-    if gap <= PI {
-        return None;
-    }
-    let start = (k + 1) % 4;
-    Some([0, 1, 2, 3].map(|i| idx[(start + i) % 4]))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn half_plane_order_finds_the_extremes() {
-        let v = |a: f64| Vector2::new(a.cos(), a.sin());
-        assert_eq!(
-            half_plane_order(&[v(0.1), v(0.5), v(0.3), v(0.2)]),
-            Some([0, 3, 2, 1])
-        );
-        assert_eq!(
-            half_plane_order(&[v(3.0), v(-3.0), v(2.5), v(-2.9)]),
-            Some([2, 0, 1, 3])
-        );
-        assert_eq!(half_plane_order(&[v(0.0), v(2.2), v(-2.2), v(0.1)]), None);
-    }
 }

@@ -17,11 +17,11 @@ use crate::engine::Control;
 use crate::error::{Result, out_of_memory, try_push};
 use crate::geom::{Cubic, LocalFrame, Pose, Viewport, wrap_angle};
 use crate::linkage::{AngleInterval, AssemblyMode, FourBar, InputRange};
-use crate::synthesis::Dyad;
 use crate::synthesis::errors;
 use crate::synthesis::local::{Failure, LocalMotion, cross3};
 use crate::synthesis::order::{CrankOrder, Drive, check_dyad, crank_angles, drive};
 use crate::synthesis::task::of_poses;
+use crate::synthesis::{Dyad, DyadKind, SliderDyad};
 use crate::tolerance;
 pub use arcs::{ArcEnd, FilemonArcs};
 use split::split_by;
@@ -352,10 +352,6 @@ impl FourPositions {
             bounds: [center_bounds, circle_bounds],
             compat,
         })
-    }
-
-    pub(crate) fn motion(&self) -> &LocalMotion {
-        &self.motion
     }
 
     /// The four poses.
@@ -1018,7 +1014,23 @@ impl FourPositions {
     /// [`crate::DegenerateError::ZeroLengthLink`] for a crank of zero length.
     pub fn filemon(&self, driven: &Dyad) -> Result<FilemonArcs> {
         check_dyad(&self.motion, driven, "driven dyad")?;
-        FilemonArcs::new(self, driven)
+        FilemonArcs::new(self, DyadKind::Revolute(*driven))
+    }
+
+    /// [`filemon`](Self::filemon) for a slider driven dyad: the pin `C1`
+    /// on a ground guide of direction `u`; the lines run through `C1` in
+    /// the directions `n_k` (see [`crate::FilemonLines`]).
+    ///
+    /// # Errors
+    ///
+    /// [`crate::InvalidInput::NotFinite`] or
+    /// [`crate::InvalidInput::ZeroDirection`] for a circle point or guide
+    /// that is not finite or zero; [`crate::InvalidInput::NotADyad`] when
+    /// the pin's four positions `D_1k(C1)` are not on the guide (within
+    /// [`crate::tolerance::DYAD`] of the task's size and the pin's travel):
+    /// pass a slider point of the task and its guide.
+    pub fn slider_filemon(&self, driven: &SliderDyad) -> Result<FilemonArcs> {
+        FilemonArcs::new(self, DyadKind::Slider(*driven))
     }
 }
 

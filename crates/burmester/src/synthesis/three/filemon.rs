@@ -38,7 +38,7 @@ use crate::geom::{Conic, Line, LocalFrame, cross, normalized, wrap_angle};
 use crate::linkage::{AngleInterval, InputRange};
 use crate::synthesis::branch::{Branch, FilemonLines};
 use crate::synthesis::three::{Cremona, Maps};
-use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
+use crate::synthesis::{Dyad, DyadKind, SynthesizedFourBar, Task};
 use crate::tolerance;
 
 /// How to decide whether a driving center point is free of the branch defect.
@@ -51,7 +51,8 @@ pub enum Method {
     /// The circle point of the point, then the branch sign at the three
     /// poses.
     Direct,
-    /// Build the four-bar and drive it: from each pose to the next, the
+    /// Build the four-bar and drive it (a revolute driven dyad only): from
+    /// each pose to the next, the
     /// input turns (either way, reversing between poses as needed) inside
     /// its input range in pose 1's assembly mode, in steps of at most
     /// `pi/8`, every step solved by the position analysis, and the coupler
@@ -131,14 +132,15 @@ pub struct Filemon {
     lines: FilemonLines,
     /// The transformed line of each pose's direction, `g_k`.
     conics: [Conic; 3],
-    /// The finite poles, then `C0`, in the first `n_special` entries.
+    /// The finite poles, then `C0` (for a revolute driven dyad), in the
+    /// first `n_special` entries.
     special: [Point2<f64>; 4],
     n_special: usize,
 }
 
 crate::geom::debug_shows!(
-    /// The task, the driven dyad `(C0, C1)`, the fixed pivot's images `C'k`
-    /// and the two transformed Filemon lines (when the circle points are not
+    /// The task, the driven dyad (`(C0, C1)`, or a slider's `(C1, u)`), the
+    /// fixed pivot's images `C'k` (none for a slider) and the two transformed Filemon lines (when the circle points are not
     /// all defective), not the maps and frames kept to evaluate them.
     Filemon,
     s =>
@@ -188,7 +190,7 @@ impl Task {
     pub fn filemon(&self, driven_center: Point2<f64>) -> Result<Filemon> {
         let maps = self.three_poses("Task::filemon")?;
         let driven = Dyad::new(driven_center, maps.circle_point(driven_center)?);
-        Filemon::with_maps(self, *maps, driven)
+        Filemon::with_maps(self, *maps, driven.into())
     }
 
     /// The three-position maps, or the error naming `method`.
@@ -198,36 +200,46 @@ impl Task {
 }
 
 impl Filemon {
-    /// Filemon's construction for a driven dyad of a three-pose `task`.
+    /// Filemon's construction for a driven dyad of a three-pose `task`: a
+    /// crank ([`Dyad`]) or a slider ([`crate::SliderDyad`]; its lines run
+    /// through `C1` in the directions `n_k`, see [`FilemonLines`], and
+    /// their transforms are conics through the finite poles, with the same
+    /// sign test as for a crank).
     ///
     /// # Errors
     ///
     /// [`InvalidInput::NeedsPoses`] for a task of four or five poses; as
     /// [`FilemonLines::new`].
-    pub fn new(task: &Task, driven: Dyad) -> Result<Self> {
-        Self::with_maps(task, *task.three_poses("Filemon::new")?, driven)
+    pub fn new(task: &Task, driven: impl Into<DyadKind>) -> Result<Self> {
+        Self::with_maps(task, *task.three_poses("Filemon::new")?, driven.into())
     }
 
     /// Filemon's construction with the task's three-position maps (checked
     /// once by the caller).
-    fn with_maps(task: &Task, maps: Maps, driven: Dyad) -> Result<Self> {
+    fn with_maps(task: &Task, maps: Maps, driven: DyadKind) -> Result<Self> {
         let lines = FilemonLines::new(task, driven)?;
-        let c1 = driven.circle;
+        let c1 = driven.circle();
         let conics = [0, 1, 2].map(|k| maps.line_conic(c1, lines.all_lines()[k].direction));
-        let mut special = [driven.center; 4];
+        let mut special = [c1; 4];
         let mut n_special = 0;
-        for p in maps.poles().into_iter().flatten() {
+        // Every transformed line through C1 passes through the center point
+        // of C1: C0 for a crank; at infinity for a slider.
+        for p in maps
+            .poles()
+            .into_iter()
+            .flatten()
+            .chain(driven.finite_center())
+        {
             special[n_special] = p;
             n_special += 1;
         }
-        special[n_special] = driven.center;
         Ok(Filemon {
             task: *task,
             maps,
             lines,
             conics,
             special,
-            n_special: n_special + 1,
+            n_special,
         })
     }
 
@@ -251,23 +263,34 @@ impl Filemon {
         &self.lines
     }
 
-    /// The driven dyad `(C0, C1)`.
-    pub fn driven(&self) -> Dyad {
+    /// The driven dyad: `(C0, C1)` for a crank, `(C1, u)` for a slider.
+    pub fn driven(&self) -> DyadKind {
         self.lines.driven()
     }
 
-    /// `C1`, the driven crank's circle point (moving pivot at pose 1).
+    /// The driven crank `(C0, C1)`, or the error naming `what` (which needs
+    /// a crank) for another kind of driven dyad.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::DrivenKind`] when the driven dyad is not a crank.
+    pub fn driven_crank(&self, what: &'static str) -> Result<Dyad> {
+        self.lines.driven().crank(what)
+    }
+
+    /// `C1`, the driven dyad's circle point (moving pivot at pose 1).
     pub fn driven_circle(&self) -> Point2<f64> {
-        self.lines.driven().circle
+        self.lines.driven().circle()
     }
 
-    /// `[C'_1, C'_2, C'_3]`, `C'_k = D_k1(C0)`.
-    pub fn fixed_pivot_images(&self) -> [Point2<f64>; 3] {
-        let c = self.lines.fixed_pivot_images();
-        [c[0], c[1], c[2]]
+    /// `[C'_1, C'_2, C'_3]`, `C'_k = D_k1(C0)`; `None` for a slider (its
+    /// center is at infinity).
+    pub fn fixed_pivot_images(&self) -> Option<[Point2<f64>; 3]> {
+        self.lines.fixed_pivot_images().map(|c| [c[0], c[1], c[2]])
     }
 
-    /// The three lines through `C1` and `C'_k`, directions `C'_k - C1`.
+    /// The three lines through `C1` in the directions of the poses (see
+    /// [`FilemonLines::directions`]): for a crank through `C'_k`.
     pub fn all_lines(&self) -> [Line; 3] {
         let l = self.lines.all_lines();
         [l[0], l[1], l[2]]
@@ -419,7 +442,8 @@ impl Filemon {
 
     /// The points every transformed curve passes through: the finite
     /// poles among `P12, P13, P23` (all three unless two poses differ by a
-    /// pure translation), then `C0`.
+    /// pure translation), then `C0` (for a crank; a slider's is at
+    /// infinity).
     pub fn special_points(&self) -> &[Point2<f64>] {
         &self.special[..self.n_special]
     }
@@ -455,6 +479,7 @@ impl Filemon {
 
     /// Drives the linkage from pose to pose ([`Method::Simulate`]).
     fn classify_simulate(&self, a0: Point2<f64>) -> Result<Branch> {
+        self.driven_crank("the simulate branch method")?;
         let fb = self.four_bar(a0)?;
         let modes = fb.modes();
         // A toggle at a design pose (the figures' one band, which the
@@ -502,10 +527,13 @@ impl Filemon {
     ///
     /// # Errors
     ///
-    /// As [`Task::circle_point`] and [`Task::four_bar`].
+    /// [`InvalidInput::DrivenKind`] for a slider driven dyad (a
+    /// slider-crank, not a four-bar); as [`Task::circle_point`] and
+    /// [`Task::four_bar`].
     pub fn four_bar(&self, driving_center: Point2<f64>) -> Result<SynthesizedFourBar> {
+        let driven = self.driven_crank("Filemon::four_bar")?;
         let driving = self.task.dyad_from_center(driving_center)?;
-        self.task.four_bar(&driving, &self.driven())
+        self.task.four_bar(&driving, &driven)
     }
 }
 

@@ -1,0 +1,591 @@
+//! The branch problem with a slider as the driven dyad (issue 27, part 2):
+//! Filemon's lines through `C1` in the directions `n_k`, their exact
+//! transforms into the driving crank's center-point plane, the branch map,
+//! and the four-pose arcs, checked against
+//!
+//! * tasks made from known slider-cranks (the generating crank is free);
+//! * an independent slider-crank solver written here (crank `A0 A`,
+//!   coupler `A B`, `B` on the guide), driven densely by crank angle from
+//!   pose to pose: which assembly mode reaches each pose, and whether the
+//!   crank can turn there without a dead position;
+//! * the revolute construction with `C0 = C1 + R n`, `R -> ∞` (a second
+//!   method that must agree in the limit);
+//! * the circle-point-plane classification (thousands of random samples);
+//! * moving, rotating and scaling the task.
+
+use std::f64::consts::{PI, TAU};
+
+use burmester::{
+    Branch, Control, Dyad, DyadKind, Error, Filemon, FilemonLines, Grid, InvalidInput, Method,
+    Point2, Pose, SliderDyad, Task, Vector2, Viewport,
+};
+
+/// A small deterministic generator (splitmix64), so the cases are the same
+/// on every run.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn range(&mut self, a: f64, b: f64) -> f64 {
+        a + (b - a) * self.next()
+    }
+}
+
+fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+/// A slider-crank: crank `A0 A` of length `r`, coupler `A B` of length `l`,
+/// the pin `B` on the guide through `g` along the unit `u`.
+#[derive(Clone, Copy, Debug)]
+struct SliderCrank {
+    a0: Point2<f64>,
+    r: f64,
+    l: f64,
+    g: Point2<f64>,
+    u: Vector2<f64>,
+}
+
+impl SliderCrank {
+    fn pin(&self, phi: f64) -> Point2<f64> {
+        self.a0 + self.r * Vector2::new(phi.cos(), phi.sin())
+    }
+
+    /// `(p, q, disc)` at crank angle `phi`: the pin's positions are
+    /// `g + (p ± sqrt(disc)) u`, `q` is the crank pin's signed distance from
+    /// the guide, `disc = l^2 - q^2` (negative: the loop does not close).
+    fn parts(&self, phi: f64) -> (f64, f64, f64) {
+        let a = self.pin(phi) - self.g;
+        let q = cross(self.u, a);
+        (self.u.dot(&a), q, self.l * self.l - q * q)
+    }
+
+    /// The slider pin at crank angle `phi` in assembly mode `mode` (`±1`,
+    /// the sign of `<B - A, u>`), or `None` where the loop does not close.
+    fn slider(&self, phi: f64, mode: f64) -> Option<Point2<f64>> {
+        let (p, _, disc) = self.parts(phi);
+        (disc >= 0.0).then(|| self.g + (p + mode * disc.sqrt()) * self.u)
+    }
+
+    /// Whether the crank turns from `from` to `to` (either way round)
+    /// without the loop opening or reaching a dead position, checked every
+    /// 1e-3 rad.
+    fn can_turn(&self, from: f64, to: f64) -> bool {
+        let d = (to - from).rem_euclid(TAU);
+        [d, d - TAU].iter().any(|&delta| {
+            let n = (delta.abs() / 1e-3).ceil().max(1.0) as usize;
+            (0..=n).all(|s| self.parts(from + delta * s as f64 / n as f64).2 > 0.0)
+        })
+    }
+}
+
+/// `D_1k(z)` of a list of poses, written here from the definition.
+fn displace(poses: &[Pose], k: usize, z: Point2<f64>) -> Point2<f64> {
+    let (p1, pk) = (poses[0], poses[k]);
+    let t = pk.angle - p1.angle;
+    let v = z - p1.position;
+    pk.position + Vector2::new(t.cos() * v.x - t.sin() * v.y, t.sin() * v.x + t.cos() * v.y)
+}
+
+/// The coupler pose (the crank pin, the coupler's angle) of a slider-crank
+/// at crank angle `phi` in mode `mode`.
+fn pose_of(sc: &SliderCrank, phi: f64, mode: f64) -> Option<Pose> {
+    let a = sc.pin(phi);
+    let b = sc.slider(phi, mode)?;
+    let d = b - a;
+    Some(Pose::new(a.x, a.y, d.y.atan2(d.x)))
+}
+
+/// A random slider-crank and `n` crank angles it passes in one mode
+/// without a dead position between them: its task (the coupler's poses),
+/// the slider dyad `(B1, u)` and the generating crank.
+fn random_slider_crank(rng: &mut Rng, n: usize) -> (Task, SliderDyad, SliderCrank) {
+    loop {
+        let ang = rng.range(-PI, PI);
+        let sc = SliderCrank {
+            a0: Point2::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)),
+            r: rng.range(0.4, 1.2),
+            l: rng.range(1.5, 3.5),
+            g: Point2::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5)),
+            u: Vector2::new(ang.cos(), ang.sin()),
+        };
+        let mode = if rng.next() < 0.5 { 1.0 } else { -1.0 };
+        let mut phis = vec![rng.range(-PI, PI)];
+        for _ in 1..n {
+            let last = phis[phis.len() - 1];
+            phis.push(last + rng.range(0.35, 1.0));
+        }
+        let ok = phis.windows(2).all(|w| sc.can_turn(w[0], w[1]))
+            && phis.iter().all(|&p| sc.parts(p).2 > 0.05 * sc.l * sc.l);
+        if !ok {
+            continue;
+        }
+        let poses: Vec<Pose> = phis
+            .iter()
+            .map(|&p| pose_of(&sc, p, mode).unwrap())
+            .collect();
+        let Ok(task) = Task::new(&poses) else {
+            continue;
+        };
+        let b1 = sc.slider(phis[0], mode).unwrap();
+        let slider = SliderDyad::new(b1, sc.u).unwrap();
+        return (task, slider, sc);
+    }
+}
+
+/// What driving the slider-crank of a driving center point densely says.
+#[derive(Debug, PartialEq)]
+enum Driven {
+    /// Every pose reached in one mode, the crank turning between them.
+    Free,
+    /// The poses need different assembly modes.
+    Defective,
+    /// One mode throughout, but the crank cannot turn between two poses
+    /// (they lie on separate arcs of a rocking crank: a circuit defect,
+    /// which no sign test sees).
+    Circuit,
+    /// A pose within rounding of a dead position: not compared.
+    Near,
+}
+
+/// Builds the slider-crank of the driving dyad `(a0, a1)` and the slider
+/// `(b1, u)` of `poses` and drives it: the mode that reaches each pose at
+/// its crank angle (independent of the library: the solver above, the
+/// displacements from the poses).
+fn drive(poses: &[Pose], a0: Point2<f64>, a1: Point2<f64>, slider: &SliderDyad) -> Driven {
+    let b1 = slider.circle;
+    let sc = SliderCrank {
+        a0,
+        r: (a1 - a0).norm(),
+        l: (b1 - a1).norm(),
+        g: b1,
+        u: slider.guide,
+    };
+    let mut modes = Vec::new();
+    let mut phis = Vec::new();
+    for k in 0..poses.len() {
+        let (a, b) = (displace(poses, k, a1), displace(poses, k, b1));
+        let phi = (a.y - a0.y).atan2(a.x - a0.x);
+        // Which of the two solutions at this crank angle is the pose's pin.
+        let (p, _, disc) = sc.parts(phi);
+        let t = sc.u.dot(&(b - sc.g));
+        if disc <= 1e-6 * sc.l * sc.l || (t - p).abs() <= 1e-6 * sc.l {
+            return Driven::Near;
+        }
+        let mode = (t - p).signum();
+        let b_mode = sc.slider(phi, mode).unwrap();
+        assert!(
+            (b_mode - b).norm() <= 1e-7 * (1.0 + sc.l + b.coords.norm()),
+            "the pose's pin is a solution at its crank angle: {b_mode} vs {b}"
+        );
+        modes.push(mode);
+        phis.push(phi);
+    }
+    if modes.iter().any(|&m| m != modes[0]) {
+        return Driven::Defective;
+    }
+    if phis.windows(2).all(|w| sc.can_turn(w[0], w[1])) {
+        Driven::Free
+    } else {
+        Driven::Circuit
+    }
+}
+
+/// Whether `e` is `InvalidInput` with this cause.
+fn cause_of(e: &Error) -> &'static str {
+    match e {
+        Error::InvalidInput(i) => i.cause(),
+        other => panic!("expected invalid input, got {other:?}"),
+    }
+}
+
+#[test]
+fn the_generating_crank_of_a_known_slider_crank_is_free() {
+    let mut rng = Rng(1);
+    for _ in 0..200 {
+        let (task, slider, sc) = random_slider_crank(&mut rng, 3);
+        let f = Filemon::new(&task, slider).unwrap();
+        assert!(f.fixed_pivot_images().is_none());
+        assert_eq!(f.driven(), DyadKind::Slider(slider));
+        // The crank's circle point is its pin at pose 1.
+        let a1 = task.circle_point(sc.a0).unwrap();
+        assert!((a1 - task.poses()[0].position).norm() < 1e-8 * (1.0 + a1.coords.norm()));
+        for m in [Method::Conic, Method::Direct] {
+            assert_eq!(f.classify(sc.a0, m).unwrap(), Branch::Free, "{m:?}");
+        }
+    }
+}
+
+#[test]
+fn verdicts_agree_with_driving_the_built_slider_crank() {
+    let mut rng = Rng(2);
+    let (mut compared, mut free, mut defective, mut circuit, mut near) = (0, 0, 0, 0, 0);
+    for _ in 0..60 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let f = Filemon::new(&task, slider).unwrap();
+        for _ in 0..100 {
+            let a0 = Point2::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0));
+            let Ok(a1) = task.circle_point(a0) else {
+                continue;
+            };
+            if (a1 - a0).norm() > 1e4 {
+                continue;
+            }
+            let conic = f.classify(a0, Method::Conic).unwrap();
+            let direct = f.classify(a0, Method::Direct).unwrap();
+            match drive(task.poses(), a0, a1, &slider) {
+                Driven::Near => near += 1,
+                Driven::Free => {
+                    assert_eq!((conic, direct), (Branch::Free, Branch::Free), "{a0}");
+                    free += 1;
+                }
+                Driven::Defective => {
+                    assert_eq!(
+                        (conic, direct),
+                        (Branch::Defective, Branch::Defective),
+                        "{a0}"
+                    );
+                    defective += 1;
+                }
+                Driven::Circuit => {
+                    // One mode at every pose: the sign tests say free.
+                    assert_eq!((conic, direct), (Branch::Free, Branch::Free), "{a0}");
+                    circuit += 1;
+                }
+            }
+            compared += 1;
+        }
+    }
+    eprintln!(
+        "slider-crank drive: {compared} compared: {free} free, {defective} defective, \
+         {circuit} circuit, {near} near a dead position or toggle"
+    );
+    assert!(free > 500 && defective > 500 && near * 50 < compared);
+}
+
+#[test]
+fn slider_lines_are_the_limit_of_the_revolute_construction() {
+    let mut rng = Rng(3);
+    for _ in 0..100 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let lines = FilemonLines::new(&task, slider).unwrap();
+        let n = slider.normal();
+        for r in [1e3, 1e5, 1e7] {
+            let c0 = slider.circle + r * n;
+            let rev = FilemonLines::new(&task, Dyad::new(c0, slider.circle)).unwrap();
+            for (d, e) in lines.directions().iter().zip(rev.directions().iter()) {
+                let angle = cross(*d, *e).atan2(d.dot(e)).abs();
+                assert!(angle < 20.0 / r, "direction off by {angle} at R = {r}");
+            }
+            // The extreme lines and the classes agree away from the lines.
+            if rng.next() < 0.5 || r < 1e7 {
+                continue;
+            }
+            assert_eq!(lines.extreme_poses(), rev.extreme_poses());
+            for _ in 0..200 {
+                let a1 = Point2::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
+                let s = lines.circle_signs(a1);
+                let dist = s.iter().fold(f64::INFINITY, |m, v| m.min(v.abs()));
+                if dist < 1e-4 {
+                    continue;
+                }
+                assert_eq!(
+                    lines.classify_circle_point(a1),
+                    rev.classify_circle_point(a1)
+                );
+                let t = rev.circle_signs(a1);
+                for (a, b) in s.iter().zip(t.iter()) {
+                    assert_eq!(a.signum(), b.signum());
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn slider_conics_are_the_limit_of_the_revolute_conics() {
+    // The real dyads of the task whose centers run off along n: their
+    // circle points approach the slider point and their conic
+    // classification the slider's (the center-point plane's limit).
+    let mut rng = Rng(4);
+    let (mut compared, mut skipped, mut worst) = (0, 0, 0.0f64);
+    for _ in 0..40 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let f = Filemon::new(&task, slider).unwrap();
+        // The circle point of C0 = C1 + R n approaches C1 as 1/R.
+        let gap = |r: f64| {
+            let c0 = slider.circle + r * slider.normal();
+            task.filemon(c0)
+                .map(|rev| ((rev.driven_circle() - slider.circle).norm(), rev))
+        };
+        // (Farther out, the rounding of a far center's circle point, about
+        // 1e-16 R, overtakes the 1/R.)
+        let (Ok((gap5, _)), Ok((gap6, _)), Ok((gap7, rev))) = (gap(1e5), gap(1e6), gap(1e7)) else {
+            continue;
+        };
+        worst = worst.max(gap7);
+        assert!(gap7 < 1e-3, "{gap7}");
+        assert!(
+            gap6 * 5.0 < gap5 || gap5 < 1e-9,
+            "{gap6} at 1e6, {gap5} at 1e5"
+        );
+        for _ in 0..100 {
+            let a0 = Point2::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0));
+            if f.margin(a0).unwrap().abs() < 1e-3 {
+                skipped += 1;
+                continue;
+            }
+            assert_eq!(
+                f.classify(a0, Method::Conic).unwrap(),
+                rev.classify(a0, Method::Conic).unwrap(),
+                "{a0}"
+            );
+            compared += 1;
+        }
+    }
+    eprintln!(
+        "conic limit (R = 1e7): circle points within {worst:e} of C1; {compared} compared, \
+         {skipped} within 1e-3 of a curve"
+    );
+    assert!(compared > 3000);
+}
+
+#[test]
+fn conic_classification_agrees_with_the_circle_point_plane() {
+    let mut rng = Rng(5);
+    let (mut compared, mut band) = (0, 0);
+    for _ in 0..50 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let f = Filemon::new(&task, slider).unwrap();
+        let lines = f.construction();
+        for _ in 0..100 {
+            let a0 = Point2::new(rng.range(-6.0, 6.0), rng.range(-6.0, 6.0));
+            let Ok(a1) = task.circle_point(a0) else {
+                continue;
+            };
+            let conic = f.classify(a0, Method::Conic).unwrap();
+            let circle = lines.classify_circle_point(a1);
+            // Within rounding of a line in the circle-point plane the two
+            // may differ.
+            let s = lines.circle_signs(a1);
+            let dist = s.iter().fold(f64::INFINITY, |m, v| m.min(v.abs()));
+            if dist <= 1e-9 * (1.0 + (a1 - slider.circle).norm()) {
+                band += 1;
+                continue;
+            }
+            assert_eq!(conic, circle, "{a0} (circle point {a1})");
+            compared += 1;
+        }
+    }
+    eprintln!("conic vs circle plane: {compared} compared, {band} in the band");
+    assert!(compared > 4900);
+}
+
+#[test]
+fn branch_map_is_the_pointwise_classification() {
+    let mut rng = Rng(6);
+    for _ in 0..10 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let f = Filemon::new(&task, slider).unwrap();
+        let grid = Grid::from_bounds(-4.0, 4.0, -3.0, 3.5, 97, 83).unwrap();
+        for method in [Method::Conic, Method::Direct] {
+            let map = f.branch_map(&grid, method);
+            for j in 0..grid.ny() {
+                for i in 0..grid.nx() {
+                    let p = grid.point(i, j);
+                    let want = f.classify(p, method).is_ok_and(|b| b.is_free());
+                    assert_eq!(map[j * grid.nx() + i], want, "{method:?} at {p}");
+                }
+            }
+        }
+        let free = f
+            .branch_map(&grid, Method::Conic)
+            .iter()
+            .filter(|&&b| b)
+            .count();
+        assert!(free > 0 || f.all_defective());
+    }
+}
+
+#[test]
+fn invariant_under_moving_rotating_and_scaling() {
+    let mut rng = Rng(7);
+    let mut compared = 0;
+    for _ in 0..30 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let f = Filemon::new(&task, slider).unwrap();
+        let (s, rot, t) = (
+            10f64.powf(rng.range(-3.0, 3.0)),
+            rng.range(-PI, PI),
+            Vector2::new(rng.range(-1e3, 1e3), rng.range(-1e3, 1e3)),
+        );
+        let (c, sn) = (rot.cos(), rot.sin());
+        let turn = |v: Vector2<f64>| Vector2::new(c * v.x - sn * v.y, sn * v.x + c * v.y);
+        let map = |p: Point2<f64>| Point2::from(turn(p.coords) * s + t);
+        let poses: Vec<Pose> = task
+            .poses()
+            .iter()
+            .map(|p| {
+                let q = map(p.position);
+                Pose::new(q.x, q.y, p.angle + rot)
+            })
+            .collect();
+        let moved = Task::new(&poses).unwrap();
+        let ms = SliderDyad::new(map(slider.circle), turn(slider.guide)).unwrap();
+        let g = Filemon::new(&moved, ms).unwrap();
+        assert_eq!(f.all_defective(), g.all_defective());
+        assert_eq!(f.extreme_poses(), g.extreme_poses());
+        for _ in 0..100 {
+            let a0 = Point2::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0));
+            if f.margin(a0).unwrap().abs() < 1e-6 {
+                continue;
+            }
+            assert_eq!(
+                f.classify(a0, Method::Conic).unwrap(),
+                g.classify(map(a0), Method::Conic).unwrap()
+            );
+            compared += 1;
+        }
+    }
+    assert!(compared > 2500);
+}
+
+#[test]
+fn slider_errors_are_typed() {
+    let mut rng = Rng(8);
+    let (task, slider, sc) = random_slider_crank(&mut rng, 3);
+    let zero = SliderDyad {
+        circle: slider.circle,
+        guide: Vector2::zeros(),
+    };
+    let e = Filemon::new(&task, zero).unwrap_err();
+    assert_eq!(cause_of(&e), "zero_direction");
+    let nan = SliderDyad {
+        circle: Point2::new(f64::NAN, 0.0),
+        guide: slider.guide,
+    };
+    assert_eq!(
+        cause_of(&Filemon::new(&task, nan).unwrap_err()),
+        "not_finite"
+    );
+    // A guide that is not the line of the pin's positions.
+    let off = SliderDyad::new(slider.circle, slider.normal()).unwrap();
+    let e = Filemon::new(&task, off).unwrap_err();
+    assert_eq!(cause_of(&e), "not_a_dyad");
+    assert!(e.to_string().contains("slider"), "{e}");
+    // What needs a four-bar refuses a slider, saying why.
+    let f = Filemon::new(&task, slider).unwrap();
+    for e in [
+        f.classify(sc.a0, Method::Simulate).unwrap_err(),
+        f.four_bar(sc.a0).unwrap_err(),
+        f.solution_map(
+            &Grid::from_bounds(-1.0, 1.0, -1.0, 1.0, 4, 4).unwrap(),
+            &Default::default(),
+            &burmester::Constraints::none(),
+            &Control::new(),
+        )
+        .unwrap_err(),
+    ] {
+        assert_eq!(cause_of(&e), "driven_kind");
+        assert!(e.to_string().contains("slider"), "{e}");
+    }
+    let grid = Grid::from_bounds(-1.0, 1.0, -1.0, 1.0, 4, 4).unwrap();
+    let mut out = vec![false; grid.len()];
+    let e = f
+        .branch_map_into(&grid, Method::Simulate, &mut out, &Control::new())
+        .unwrap_err();
+    assert_eq!(cause_of(&e), "driven_kind");
+    // Four poses: the three-pose construction is refused, the four-pose
+    // one takes the slider.
+    let (four, slider4, _) = random_slider_crank(&mut rng, 4);
+    assert_eq!(
+        cause_of(&Filemon::new(&four, slider4).unwrap_err()),
+        "needs_poses"
+    );
+    assert!(matches!(
+        InvalidInput::ZeroDirection {
+            name: "",
+            x: 0.0,
+            y: 0.0
+        }
+        .cause(),
+        "zero_direction"
+    ));
+}
+
+#[test]
+fn four_poses_arcs_agree_with_driving_the_slider_crank() {
+    let mut rng = Rng(9);
+    let (mut compared, mut free, mut defective, mut circuit, mut near) = (0, 0, 0, 0, 0);
+    let mut tasks = 0;
+    while tasks < 30 {
+        let (task, slider, sc) = random_slider_crank(&mut rng, 4);
+        let Ok(four) = task.four_positions("test") else {
+            continue;
+        };
+        tasks += 1;
+        let arcs = four.slider_filemon(&slider).unwrap();
+        assert!(arcs.fixed_pivot_images().is_none());
+        // The generating crank is on the center-point curve and free.
+        assert_eq!(arcs.classify_center_point(sc.a0).unwrap(), Branch::Free);
+        // The arc ends: on the circle-point curve and on their pose's line.
+        let curve = four.circle_point_curve();
+        for e in arcs.arc_ends() {
+            let line = arcs.all_lines()[e.pose - 1];
+            let off = cross(line.direction, e.circle - line.point).abs();
+            assert!(off < 1e-8 * (1.0 + (e.circle - line.point).norm()), "{off}");
+            let g = curve.gradient(e.circle).norm();
+            assert!(curve.evaluate(e.circle).abs() <= 1e-8 * g * (1.0 + e.circle.coords.norm()));
+        }
+        // Points of the center-point curve: the class against the drive.
+        let vp = Viewport::new(-5.0, 5.0, -5.0, 5.0).unwrap();
+        for line in four.center_point_curve().polylines(&vp) {
+            for a0 in line.iter().step_by(3) {
+                let Ok(a1) = four.circle_point(*a0) else {
+                    continue;
+                };
+                if (a1 - a0).norm() > 1e4 || (a1 - slider.circle).norm() < 1e-6 {
+                    continue;
+                }
+                let class = arcs.classify_center_point(*a0).unwrap();
+                match drive(task.poses(), *a0, a1, &slider) {
+                    Driven::Near => near += 1,
+                    Driven::Free => {
+                        assert_eq!(class, Branch::Free, "{a0}");
+                        free += 1;
+                    }
+                    Driven::Defective => {
+                        assert_eq!(class, Branch::Defective, "{a0}");
+                        defective += 1;
+                    }
+                    Driven::Circuit => {
+                        assert_eq!(class, Branch::Free, "{a0}");
+                        circuit += 1;
+                    }
+                }
+                compared += 1;
+            }
+        }
+        // The free arcs' points are free.
+        for arc in arcs.free_center_arcs(&vp) {
+            for p in arc.iter().skip(1).step_by(5) {
+                if let Ok(b) = arcs.classify_center_point(*p) {
+                    assert_ne!(b, Branch::Defective, "{p}");
+                }
+            }
+        }
+    }
+    eprintln!(
+        "four poses: {compared} curve points: {free} free, {defective} defective, \
+         {circuit} circuit, {near} near"
+    );
+    assert!(free > 200 && defective > 100);
+}
