@@ -470,7 +470,7 @@ impl FourBar {
         ground_angle: f64,
     ) -> Result<Self> {
         let ([ground, crank, coupler, rocker], scale) =
-            Self::checked(ground, crank, coupler, rocker, origin, ground_angle)?;
+            Self::checked([ground, crank, coupler, rocker], origin, ground_angle)?;
         let [g, c, l3, l4] = [ground, crank, coupler, rocker].map(|l| l / scale);
         Ok(FourBar {
             ground,
@@ -492,10 +492,7 @@ impl FourBar {
     /// The checks of [`FourBar::placed`], in its order: its lengths and
     /// their largest (`scale`), or its error.
     fn checked(
-        ground: f64,
-        crank: f64,
-        coupler: f64,
-        rocker: f64,
+        [ground, crank, coupler, rocker]: [f64; 4],
         origin: Point2<f64>,
         ground_angle: f64,
     ) -> Result<([f64; 4], f64)> {
@@ -582,7 +579,7 @@ impl FourBar {
         rocker: f64,
         origin: Point2<f64>,
     ) -> bool {
-        Self::checked(ground, crank, coupler, rocker, origin, 0.0).is_ok()
+        Self::checked([ground, crank, coupler, rocker], origin, 0.0).is_ok()
     }
 
     /// Ground length `L1` (input pivot to output pivot).
