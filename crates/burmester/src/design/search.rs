@@ -92,13 +92,16 @@ use crate::design::{AtlasCell, DesignLimits, InputRequirement, RankBy};
 use crate::engine::Control;
 use crate::error::{Error, InvalidInput, Result, count_in, in_range};
 use crate::geom::{Grid, Viewport};
-use crate::linkage::Direction;
+use crate::linkage::{Direction, LinkageFigures};
 use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
 use crate::synthesis::{FivePositions, FourPositions};
 use crate::tolerance;
 
 mod motor;
 mod simplex;
+
+#[cfg(test)]
+mod judge_equal;
 
 use simplex::{End, MAX_DIM, Point};
 
@@ -460,10 +463,14 @@ fn grid_over(v: &Viewport, n: usize) -> Result<Grid> {
     Grid::new(*v, nx, ny)
 }
 
-/// The verdict of the exact judge on one linkage.
+/// The verdict of the exact judge on one linkage: its dyads and figures
+/// (the linkage itself is built, by [`Task::four_bar`], only for the
+/// verdicts kept).
 #[derive(Clone)]
 struct Verdict {
-    linkage: SynthesizedFourBar,
+    driving: Dyad,
+    driven: Dyad,
+    figures: LinkageFigures,
     size_ratio: f64,
     fails: u16,
     shortfall: f64,
@@ -481,6 +488,12 @@ impl Verdict {
 
     fn motion_feasible(&self) -> bool {
         self.fails & (Limit::BranchDefect.bit() | Limit::Order.bit()) == 0
+    }
+
+    /// The linkage judged (`None` never, in fact: the judge gave no
+    /// verdict where [`Task::four_bar`] fails).
+    fn linkage(&self, task: &Task) -> Option<SynthesizedFourBar> {
+        task.four_bar(&self.driving, &self.driven).ok()
     }
 }
 
@@ -526,11 +539,27 @@ impl<'a> Exact<'a> {
         all: bool,
         min_margin: f64,
     ) -> Option<Verdict> {
-        let linkage = self.task.four_bar(driving, driven).ok()?;
-        let f = linkage.figures;
-        let size_ratio = linkage.size() / self.span;
+        let (figures, size) = self.task.four_bar_figures(driving, driven)?;
+        self.verdict(driving, driven, figures, size, all, min_margin)
+    }
+
+    /// The verdict on the linkage of two dyads with figures `f` and size
+    /// `size` ([`SynthesizedFourBar::size`]), as
+    /// [`judge_with`](Self::judge_with).
+    fn verdict(
+        &self,
+        driving: &Dyad,
+        driven: &Dyad,
+        f: LinkageFigures,
+        size: f64,
+        all: bool,
+        min_margin: f64,
+    ) -> Option<Verdict> {
+        let size_ratio = size / self.span;
         let mut v = Verdict {
-            linkage,
+            driving: *driving,
+            driven: *driven,
+            figures: f,
             size_ratio,
             fails: 0,
             shortfall: 0.0,
@@ -610,12 +639,13 @@ impl<'a> Exact<'a> {
         if v.fails & !Limit::GrashofMargin.bit() != 0 && !all {
             return Some(v);
         }
-        // The motion's checks need a feasible motion.
-        if v.motion_feasible() {
-            if !self.prepared.clearance_ok(&v.linkage, self.cancel) {
+        // The motion's checks need a feasible motion (and the linkage).
+        if v.motion_feasible() && self.prepared.checks_motion() {
+            let linkage = v.linkage(self.task)?;
+            if !self.prepared.clearance_ok(&linkage, self.cancel) {
                 fail(&mut v, Limit::Obstacles, 1.0);
             }
-            if (v.fails == 0 || all) && !self.prepared.envelope_ok(&v.linkage, self.cancel) {
+            if (v.fails == 0 || all) && !self.prepared.envelope_ok(&linkage, self.cancel) {
                 fail(&mut v, Limit::Envelope, 1.0);
             }
         }
@@ -696,7 +726,7 @@ impl<F: Fn(&[f64], f64) -> Option<Verdict>> Objective<'_, F> {
             }
         }
         // Judged with a relaxed margin, acceptable only at the limits' own.
-        if v.linkage.figures.grashof_margin() < self.strict_margin {
+        if v.figures.grashof_margin() < self.strict_margin {
             return cost;
         }
         let mut best = self.best.borrow_mut();
@@ -1159,7 +1189,7 @@ impl Task {
                 control.report(COARSE_SHARE + (PROGRESS - COARSE_SHARE) * d / n, PROGRESS);
                 let (xb, v) = best?;
                 Some(Design {
-                    linkage: v.linkage,
+                    linkage: v.linkage(self)?,
                     score: v.score?,
                     size_ratio: v.size_ratio,
                     ranked_by: options.rank_by,
@@ -1286,9 +1316,12 @@ impl Task {
             if near.len() >= options.top {
                 break;
             }
-            if near.iter().all(|o| apart(&o.linkage, &v.linkage) >= sep) {
+            let Some(linkage) = v.linkage(self) else {
+                continue;
+            };
+            if near.iter().all(|o| apart(&o.linkage, &linkage) >= sep) {
                 near.push(NearMiss {
-                    linkage: v.linkage,
+                    linkage,
                     size_ratio: v.size_ratio,
                     misses: Limit::ALL
                         .iter()
@@ -1421,13 +1454,16 @@ impl Task {
                 };
                 report.coarse_candidates += 1;
                 if let (true, Some(score)) = (v.acceptable(), v.score) {
+                    let Some(linkage) = v.linkage(self) else {
+                        continue;
+                    };
                     report.coarse_acceptable += 1;
                     let at = SearchPoint::Burmester {
                         driving: i,
                         driven: j,
                     };
                     all.push(Design {
-                        linkage: v.linkage,
+                        linkage,
                         score,
                         size_ratio: v.size_ratio,
                         ranked_by: options.rank_by,

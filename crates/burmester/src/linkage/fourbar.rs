@@ -469,13 +469,40 @@ impl FourBar {
         origin: Point2<f64>,
         ground_angle: f64,
     ) -> Result<Self> {
+        let ([ground, crank, coupler, rocker], scale) =
+            Self::checked([ground, crank, coupler, rocker], origin, ground_angle)?;
+        let [g, c, l3, l4] = [ground, crank, coupler, rocker].map(|l| l / scale);
+        Ok(FourBar {
+            ground,
+            crank,
+            coupler,
+            rocker,
+            origin,
+            ground_angle,
+            scale,
+            g_vec: unit(ground_angle) * g,
+            c_n: c,
+            sum_n: l3 + l4,
+            diff_n: l3 - l4,
+            sq_diff_n: (l3 - l4) * (l3 + l4),
+            rho_n: g + c,
+        })
+    }
+
+    /// The checks of [`FourBar::placed`], in its order: its lengths and
+    /// their largest (`scale`), or its error.
+    fn checked(
+        [ground, crank, coupler, rocker]: [f64; 4],
+        origin: Point2<f64>,
+        ground_angle: f64,
+    ) -> Result<([f64; 4], f64)> {
         let ground = positive("ground length", ground)?;
         let crank = positive("crank length", crank)?;
         let coupler = positive("coupler length", coupler)?;
         let rocker = positive("rocker length", rocker)?;
         finite("origin x", origin.x)?;
         finite("origin y", origin.y)?;
-        let ground_angle = finite("ground angle", ground_angle)?;
+        finite("ground angle", ground_angle)?;
         let links = [ground, crank, coupler, rocker];
         let scale = links.iter().copied().fold(0.0, f64::max);
         // Every joint lies within `extent` of the fixed frame's origin; past
@@ -511,21 +538,7 @@ impl FourBar {
             }
             .into());
         }
-        Ok(FourBar {
-            ground,
-            crank,
-            coupler,
-            rocker,
-            origin,
-            ground_angle,
-            scale,
-            g_vec: unit(ground_angle) * g,
-            c_n: c,
-            sum_n: l3 + l4,
-            diff_n: l3 - l4,
-            sq_diff_n: (l3 - l4) * (l3 + l4),
-            rho_n: g + c,
-        })
+        Ok((links, scale))
     }
 
     /// A four-bar between two given fixed pivots: the ground length and
@@ -555,6 +568,18 @@ impl FourBar {
         let d = output_pivot - input_pivot;
         let ground = d.norm();
         Self::placed(ground, crank, coupler, rocker, input_pivot, d.y.atan2(d.x))
+    }
+
+    /// Whether [`FourBar::placed`] builds a linkage of these lengths at
+    /// `origin`: its checks, at a finite ground angle.
+    pub(crate) fn lengths_ok(
+        ground: f64,
+        crank: f64,
+        coupler: f64,
+        rocker: f64,
+        origin: Point2<f64>,
+    ) -> bool {
+        Self::checked([ground, crank, coupler, rocker], origin, 0.0).is_ok()
     }
 
     /// Ground length `L1` (input pivot to output pivot).

@@ -18,7 +18,7 @@ use nalgebra::{Point2, Vector2};
 
 use crate::error::{DegenerateError, InvalidInput, Result, count_in};
 use crate::geom::{PerPose, Pose, rotate};
-use crate::linkage::figures::figures_of;
+use crate::linkage::figures::{figures, figures_of};
 use crate::linkage::{AssemblyMode, Direction, FourBar, LinkageFigures};
 use crate::synthesis::Task;
 use crate::tolerance;
@@ -200,7 +200,13 @@ impl Task {
     /// one distance from its fixed pivot over the poses (within
     /// [`tolerance::DYAD`]), and it has a length.
     pub(crate) fn check_dyad(&self, dyad: &Dyad, which: &'static str) -> Result<()> {
-        let d = self.moving_pivots(dyad).map(|p| (p - dyad.center).norm());
+        self.check_dyad_at(dyad, &self.moving_pivots(dyad), which)
+    }
+
+    /// [`check_dyad`](Self::check_dyad) of a dyad whose moving pivot is at
+    /// `at` at the poses.
+    fn check_dyad_at(&self, dyad: &Dyad, at: &[Point2<f64>], which: &'static str) -> Result<()> {
+        let d = PerPose::from_fn(at.len(), |k| (at[k] - dyad.center).norm());
         let size = d.iter().copied().fold(0.0, f64::max);
         if !size.is_finite() {
             return Err(InvalidInput::Overflow {
@@ -244,11 +250,11 @@ impl Task {
     /// (coincident pivots, a crank of zero length, or coincident moving
     /// pivots); errors of [`FourBar::from_pivots`].
     pub fn four_bar(&self, driving: &Dyad, driven: &Dyad) -> Result<SynthesizedFourBar> {
-        self.check_dyad(driving, "driving dyad")?;
-        self.check_dyad(driven, "driven dyad")?;
-        let fourbar = linkage_of(driving, driven, tolerance::POINT * self.scale())?;
         let a = self.moving_pivots(driving);
         let c = self.moving_pivots(driven);
+        self.check_dyad_at(driving, &a, "driving dyad")?;
+        self.check_dyad_at(driven, &c, "driven dyad")?;
+        let fourbar = linkage_of(driving, driven, tolerance::POINT * self.scale())?;
         let input_angles = a.map(|p| {
             let v = p - driving.center;
             v.y.atan2(v.x)
@@ -259,18 +265,81 @@ impl Task {
                 hint: "pass dyads nearer the task",
             },
         )?;
-        let ac = c[0] - a[0];
-        let theta3 = ac.y.atan2(ac.x);
-        let pose1 = self.poses()[0];
+        let (theta3, coupler_point) = self.coupler_frame(a[0], c[0]);
         Ok(SynthesizedFourBar {
             fourbar,
             driving: *driving,
             driven: *driven,
             input_angles,
-            coupler_point: rotate(pose1.position - a[0], -theta3),
-            coupler_angle_offset: pose1.angle - theta3,
+            coupler_point,
+            coupler_angle_offset: self.poses()[0].angle - theta3,
             figures,
         })
+    }
+
+    /// The coupler's angle `theta3` at pose 1 of a linkage whose moving
+    /// pivots are at `a1`, `c1` there, and the task's coupler point in the
+    /// coupler's frame ([`SynthesizedFourBar::coupler_point`]).
+    fn coupler_frame(&self, a1: Point2<f64>, c1: Point2<f64>) -> (f64, Vector2<f64>) {
+        let ac = c1 - a1;
+        let theta3 = ac.y.atan2(ac.x);
+        (theta3, rotate(self.poses()[0].position - a1, -theta3))
+    }
+
+    /// The figures of [`four_bar`](Self::four_bar)'s linkage and its
+    /// [`SynthesizedFourBar::size`], bit for bit, or `None` exactly where
+    /// `four_bar` fails: the same checks and arithmetic without what the
+    /// figures and the size do not need (the ground angle, the input
+    /// angles, the moving pivots a second time). The design search's exact
+    /// judge, which builds the linkage only for the few it keeps.
+    pub(crate) fn four_bar_figures(
+        &self,
+        driving: &Dyad,
+        driven: &Dyad,
+    ) -> Option<(LinkageFigures, f64)> {
+        match self.len() {
+            3 => self.four_bar_figures_n::<3>(driving, driven),
+            4 => self.four_bar_figures_n::<4>(driving, driven),
+            5 => self.four_bar_figures_n::<5>(driving, driven),
+            _ => None,
+        }
+    }
+
+    /// [`four_bar_figures`](Self::four_bar_figures) of a task of `N` poses.
+    #[inline]
+    fn four_bar_figures_n<const N: usize>(
+        &self,
+        driving: &Dyad,
+        driven: &Dyad,
+    ) -> Option<(LinkageFigures, f64)> {
+        let m = self.motion();
+        let a: [Point2<f64>; N] = core::array::from_fn(|k| m.first_to(k, driving.circle));
+        let c: [Point2<f64>; N] = core::array::from_fn(|k| m.first_to(k, driven.circle));
+        self.check_dyad_at(driving, &a, "driving dyad").ok()?;
+        self.check_dyad_at(driven, &c, "driven dyad").ok()?;
+        let figures = figures::<true, N>(driving.center, &a, driven.center, &c, 0.0)?;
+        // The checks of `linkage_of` on the figures' lengths, which are its
+        // lengths: with both dyads checked their points are finite, and the
+        // moving pivots at pose 1 are the circle points (up to a zero's
+        // sign); its ground angle is finite with its ground's length.
+        let [ground, crank, coupler, rocker] = figures.lengths;
+        let tiny = tolerance::POINT * self.scale();
+        if ground <= tiny
+            || coupler <= tiny
+            || !FourBar::lengths_ok(ground, crank, coupler, rocker, driving.center)
+        {
+            return None;
+        }
+        // `SynthesizedFourBar::size`: the coupler point placed back from
+        // the coupler's frame along the circle points' direction, which is
+        // `theta3`'s own unless a zero's sign differs.
+        let (theta3, coupler_point) = self.coupler_frame(a[0], c[0]);
+        let (pa, pc) = (driving.circle, driven.circle);
+        let (ac, ac1) = (pc - pa, c[0] - a[0]);
+        let same = ac.x.to_bits() == ac1.x.to_bits() && ac.y.to_bits() == ac1.y.to_bits();
+        let angle = if same { theta3 } else { ac.y.atan2(ac.x) };
+        let p = pa + rotate(coupler_point, angle);
+        Some((figures, members_length(figures.lengths, pa, pc, p)))
     }
 
     /// The figures of the linkage built from a driving and a driven dyad of
