@@ -88,9 +88,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
-import burmester
 from burmester import _counts as counts
-from burmester._burmester import DesignLimits, Filemon, Grid, Space, Task
+from burmester._burmester import BurmesterError, DesignLimits, Filemon, Grid, InvalidInputError, Space, Task
 from burmester.units import check_units
 
 if sys.version_info >= (3, 11):
@@ -473,7 +472,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
         poses.append((x, y, math.radians(a)))
     try:
         task = Task(poses)
-    except burmester.BurmesterError as e:
+    except BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     if not counts.of(poses).filemon:
         return _parse_many(r, doc, task, tuple(poses), source, units)
@@ -483,7 +482,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     if center is not None:
         try:
             filemon = task.filemon(center)
-        except burmester.BurmesterError as e:
+        except BurmesterError as e:
             raise r.fail("driven.center", f"cannot be used: {e}") from None
         default = default_view(filemon).extent
     else:
@@ -506,7 +505,7 @@ def _units(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
                                 "found a table")
     try:
         return check_units(value, "units")
-    except burmester.InvalidInputError as e:
+    except InvalidInputError as e:
         raise r.fail("units", f"{e}; found {_describe(value)}") from None
 
 
@@ -557,7 +556,7 @@ def _space(r: _Reader, doc: Mapping[str, Any]) -> Optional[Space]:
         kw["travel_samples"] = n
     try:
         return Space(**kw)
-    except burmester.BurmesterError as e:
+    except BurmesterError as e:
         # The core names the field: "pivot_box xmax", "pivot_polygon",
         # "envelope", "obstacle 2", "link_width", ...
         name = str(getattr(e, "name", "") or "")
@@ -610,7 +609,7 @@ def _limits(r: _Reader, doc: Mapping[str, Any]) -> DesignLimits:
         margin = r.number("limits.min_grashof_margin", lim_t["min_grashof_margin"], "a number")
     try:
         limits = DesignLimits(mu, ratio, input_, sizes[0], sizes[1], margin)
-    except burmester.InvalidInputError as e:
+    except InvalidInputError as e:
         # The core validates; its error names the limit and its range.
         if e.cause != "outside_range":
             raise r.fail("[limits]", str(e)) from None
@@ -660,13 +659,13 @@ def _driven(r: _Reader, doc: Mapping[str, Any], task: Task, required: bool) -> O
         if counts.of(task).curves:
             try:
                 task.circle_point(center)
-            except burmester.BurmesterError as e:
+            except BurmesterError as e:
                 raise r.fail("driven.center", f"is not a center point of the four poses: {e}") from None
         return center
     circle = r.point("driven.circle", driven["circle"])
     try:
         return task.center_point(circle)
-    except burmester.BurmesterError as e:
+    except BurmesterError as e:
         raise r.fail("driven.circle", f"has no center point: {e}") from None
 
 
@@ -687,7 +686,7 @@ def _parse_many(
         )
     try:
         default = default_curve_view(task)
-    except burmester.BurmesterError as e:
+    except BurmesterError as e:
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     limits = _limits(r, doc)
     driven = _driven(r, doc, task, required=False) if count.driven else None

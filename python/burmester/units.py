@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any, Dict, Optional, Tuple
 
-import burmester
+from burmester._burmester import InvalidInputError
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -52,21 +52,21 @@ def check_units(units: Any, where: str = "units") -> Optional[str]:
     if units is None:
         return None
     if not isinstance(units, str):
-        raise burmester.InvalidInputError(
+        raise InvalidInputError(
             f'{where} must be a unit name such as "mm" or "in", got {units!r} ({type(units).__name__})'
         )
     name = units.strip()
     if not name:
-        raise burmester.InvalidInputError(
+        raise InvalidInputError(
             f'{where} must be a unit name such as "mm" or "in", got an empty name; leave it out for no unit'
         )
     if len(name) > MAX_UNITS_LENGTH:
-        raise burmester.InvalidInputError(
+        raise InvalidInputError(
             f"{where} must be at most {MAX_UNITS_LENGTH} characters, got {len(name)} ({name[:12]!r}...)"
         )
     bad = [c for c in name if not c.isprintable() or c in "[]"]
     if bad:
-        raise burmester.InvalidInputError(
+        raise InvalidInputError(
             f"{where} must be a plain unit name without control characters or brackets, got {name!r}"
         )
     return name

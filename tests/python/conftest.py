@@ -92,3 +92,16 @@ def client():
     yield c
     c.close()
     cluster.close()
+
+
+def task_toml(poses, driven, x, y, grid, units=None, sep="\n"):
+    """The text of a task file (TOML) of three or more ``poses`` ``(x, y,
+    angle_deg)``, the driven pivot and the view, numbers as Python writes
+    them; ``sep`` between the tables (``"\\n"`` for a blank line, ``""`` for
+    none). The one writer of the tests' task files (the parser's own tests
+    keep their literal text)."""
+    tables = [f'units = "{units}"\n'] if units is not None else []
+    tables += [f"[[pose]]\nx = {px!r}\ny = {py!r}\nangle_deg = {a!r}\n" for px, py, a in poses]
+    tables.append(f"[driven]\ncenter = [{driven[0]!r}, {driven[1]!r}]\n")
+    tables.append(f"[view]\nx = [{x[0]!r}, {x[1]!r}]\ny = [{y[0]!r}, {y[1]!r}]\ngrid = [{grid[0]}, {grid[1]}]\n")
+    return sep.join(tables)

@@ -8,7 +8,7 @@ import pytest
 
 import burmester
 from burmester import DegenerateError, Grid, Task
-from conftest import circumcenter
+from conftest import circumcenter, task_toml
 
 # Poses 1 and 2 have one angle: a pure translation by (2, 0.5).
 TRANSLATED = [(0.0, 0.0, 0.3), (2.0, 0.5, 0.3), (3.0, 2.0, 1.1)]
@@ -108,30 +108,8 @@ def test_the_solution_map_and_margin_work():
     assert f.four_bar((float(xs[i]), float(ys[j]))).branch_free
 
 
-TASK_FILE = """
-[[pose]]
-x = 0.0
-y = 0.0
-angle_deg = 17.0
-
-[[pose]]
-x = 2.0
-y = 0.5
-angle_deg = 17.0
-
-[[pose]]
-x = 3.0
-y = 2.0
-angle_deg = 63.0
-
-[driven]
-center = [4.0, -1.0]
-
-[view]
-x = [-8.0, 10.0]
-y = [-8.0, 10.0]
-grid = [120, 120]
-"""
+TASK_FILE = "\n" + task_toml([(0.0, 0.0, 17.0), (2.0, 0.5, 17.0), (3.0, 2.0, 63.0)], driven=(4.0, -1.0),
+                              x=(-8.0, 10.0), y=(-8.0, 10.0), grid=(120, 120))
 
 
 def test_the_cli_draws_a_task_with_a_translation(tmp_path):

@@ -24,37 +24,15 @@ from burmester.taskfile import TaskFileError
 from burmester.units import (
     MAX_UNITS_LENGTH, axis_label, check_units, dxf_imperial, dxf_units, format_length,
 )
+from conftest import task_toml
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 SVG = "{http://www.w3.org/2000/svg}"
 
 #: A lid in millimetres (examples/lid.toml): closed, half open, open, about
 #: 94 mm of travel; the driven pivot C0 below the hinge line.
-LID = """units = "mm"
-
-[[pose]]
-x = 0.0
-y = 0.0
-angle_deg = 0.0
-
-[[pose]]
-x = 28.0
-y = 38.0
-angle_deg = 35.0
-
-[[pose]]
-x = 40.0
-y = 85.0
-angle_deg = 80.0
-
-[driven]
-center = [60.0, -40.0]
-
-[view]
-x = [-150.0, 150.0]
-y = [-150.0, 150.0]
-grid = [200, 200]
-"""
+LID = task_toml([(0.0, 0.0, 0.0), (28.0, 38.0, 35.0), (40.0, 85.0, 80.0)], driven=(60.0, -40.0),
+                x=(-150.0, 150.0), y=(-150.0, 150.0), grid=(200, 200), units="mm")
 
 #: The five poses of examples/five.toml (its fourth Burmester point B4 =
 #: (28.569, -40.158) lies far outside its default view).

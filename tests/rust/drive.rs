@@ -811,16 +811,12 @@ fn no_drive_says_why() {
         .filter_map(|p| f.four_bar(p).ok())
         .find(|l| !l.is_branch_free())
         .unwrap();
-    let e = DriveContext::new(
-        &bad,
-        bad.driving.circle,
-        &grid,
-        &limits,
-        &DriveOptions::default(),
-        &none,
-    )
-    .unwrap_err();
-    assert_eq!(e, Error::Drive(DriveError::NoTravel));
+    // What a linkage's context at its own driving circle point refuses.
+    let refused = |l: &SynthesizedFourBar| {
+        let o = DriveOptions::default();
+        DriveContext::new(l, l.driving.circle, &grid, &limits, &o, &none).unwrap_err()
+    };
+    assert_eq!(refused(&bad), Error::Drive(DriveError::NoTravel));
     // A crank that turns more than half a turn between the poses.
     let crank = FourBar::new(4.0, 1.0, 3.0, 3.0).unwrap();
     let (t1, t2, t3) = (0.0f64, 1.6, 3.3);
@@ -839,15 +835,7 @@ fn no_drive_says_why() {
         )
         .unwrap();
     assert!(l.figures.feasible() && l.figures.input_full);
-    let e = DriveContext::new(
-        &l,
-        l.driving.circle,
-        &grid,
-        &limits,
-        &DriveOptions::default(),
-        &none,
-    )
-    .unwrap_err();
+    let e = refused(&l);
     assert!(
         matches!(e, Error::Drive(DriveError::TravelTooLarge { .. })),
         "{e}"

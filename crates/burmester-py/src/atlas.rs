@@ -130,34 +130,22 @@ pub(crate) fn _atlas_tile<'py>(
     d.set_item("best_margin", best(|b| b.margin)?)?;
     d.set_item("best_size_ratio", best(|b| f64::from(b.size_ratio))?)?;
     d.set_item("best_score", best(|b| b.score)?)?;
+    // The two-value columns of each cell's best driving pivot (`none`
+    // where the cell has none).
+    fn best_pair<'py, T: numpy::Element + Copy>(
+        py: Python<'py>,
+        shape: &[usize],
+        cells: &[AtlasCell],
+        none: [T; 2],
+        f: impl Fn(&burmester::AtlasBest) -> [T; 2],
+    ) -> PyResult<Bound<'py, PyAny>> {
+        column(py, shape, cells, |c| c.best.as_ref().map_or(none, &f), 2)
+    }
     let pairs = [rows, nx, 2];
-    d.set_item(
-        "best_driving",
-        column(
-            py,
-            &pairs,
-            &cells,
-            |c| {
-                c.best
-                    .as_ref()
-                    .map_or([f64::NAN; 2], |b| [b.driving.x, b.driving.y])
-            },
-            2,
-        )?,
-    )?;
-    d.set_item(
-        "best_index",
-        column(
-            py,
-            &pairs,
-            &cells,
-            |c| {
-                c.best
-                    .as_ref()
-                    .map_or([-1; 2], |b| [b.index.0 as i64, b.index.1 as i64])
-            },
-            2,
-        )?,
-    )?;
+    let driving = |b: &burmester::AtlasBest| [b.driving.x, b.driving.y];
+    let driving = best_pair(py, &pairs, &cells, [f64::NAN; 2], driving)?;
+    d.set_item("best_driving", driving)?;
+    let index = |b: &burmester::AtlasBest| [b.index.0 as i64, b.index.1 as i64];
+    d.set_item("best_index", best_pair(py, &pairs, &cells, [-1; 2], index)?)?;
     Ok(d)
 }

@@ -252,6 +252,50 @@ pub(crate) fn slice_mut<'a, T: Element>(w: &'a mut PyReadwriteArrayDyn<'_, T>) -
         .expect("numpy.zeros makes a C-contiguous array")
 }
 
+/// A bool as Python writes it (`True`, `False`), for reprs.
+pub(crate) fn py_bool(b: bool) -> &'static str {
+    if b { "True" } else { "False" }
+}
+
+/// Two float arrays and a mask, as NumPy arrays of one shape.
+pub(crate) type Arrays<'py> = (
+    Bound<'py, PyArrayDyn<f64>>,
+    Bound<'py, PyArrayDyn<f64>>,
+    Bound<'py, PyArrayDyn<bool>>,
+);
+
+/// Two float arrays and a mask of `shape` (made by [`empty`]), filled by
+/// `fill` with the GIL released; `fill` must write every element.
+pub(crate) fn fill_arrays<'py>(
+    py: Python<'py>,
+    shape: &[usize],
+    fill: impl FnOnce(&mut [f64], &mut [f64], &mut [bool]) + Send,
+) -> PyResult<Arrays<'py>> {
+    let (a, b, ok) = (empty(py, shape)?, empty(py, shape)?, empty(py, shape)?);
+    {
+        let (mut aw, mut bw, mut ow) = (writer(&a)?, writer(&b)?, writer(&ok)?);
+        let (a_s, b_s, ok_s) = (slice_mut(&mut aw), slice_mut(&mut bw), slice_mut(&mut ow));
+        py.detach(|| fill(a_s, b_s, ok_s));
+    }
+    Ok((a, b, ok))
+}
+
+/// The points of `path` into `xs`, `ys` and `ok` (NaN, NaN and false where
+/// a point is an error, such as a loop that does not close).
+pub(crate) fn write_points<E>(
+    path: impl Iterator<Item = Result<burmester::Point2<f64>, E>>,
+    xs: &mut [f64],
+    ys: &mut [f64],
+    ok: &mut [bool],
+) {
+    for (((p, x), y), valid) in path.zip(xs).zip(ys).zip(ok) {
+        (*x, *y, *valid) = match p {
+            Ok(p) => (p.x, p.y, true),
+            Err(_) => (f64::NAN, f64::NAN, false),
+        };
+    }
+}
+
 /// A point `(x, y)` from Python: any sequence of two numbers (tuple, list,
 /// NumPy array).
 #[derive(Debug, Clone, Copy)]

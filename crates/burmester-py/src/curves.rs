@@ -16,6 +16,8 @@ use pyo3::types::PyTuple;
 
 use crate::conv::{PyPoint, Real, pt};
 use crate::errors::{IntoPy, to_py};
+use crate::getters::getters;
+use crate::pickle::{Reduced, reduce_to};
 
 type Xy = (f64, f64);
 
@@ -153,10 +155,7 @@ impl PyCurveDyad {
         })
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let args = (
             self.center,
             self.circle,
@@ -164,9 +163,8 @@ impl PyCurveDyad {
             self.branch.clone(),
             self.order.clone(),
             self.direction.clone(),
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PyCurveDyad>().getattr("_from_fields")?, args))
+        );
+        reduce_to::<PyCurveDyad>(py, "_from_fields", args)
     }
 
     /// The center point (fixed pivot), on the center-point curve.
@@ -183,10 +181,6 @@ impl PyCurveDyad {
     #[getter]
     fn dyad(&self) -> (Xy, Xy) {
         (self.center, self.circle)
-    }
-    #[getter]
-    fn beta2(&self) -> f64 {
-        self.beta2
     }
     #[getter]
     fn branch(&self) -> Option<&str> {
@@ -215,6 +209,10 @@ impl PyCurveDyad {
         )
     }
 }
+
+getters!(PyCurveDyad {
+    f64: beta2;
+});
 
 /// A point `Q_jk` of the center-point curve of four poses where the crank
 /// positions at poses `j` and `k` coincide, with its circle point.
@@ -270,31 +268,15 @@ impl PyCoincidencePoint {
         })
     }
 
-    #[allow(clippy::type_complexity)]
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let args = (self.pair, self.center, self.circle).into_pyobject(py)?;
-        Ok((
-            py.get_type::<PyCoincidencePoint>()
-                .getattr("_from_fields")?,
-            args,
-        ))
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
+        let args = (self.pair, self.center, self.circle);
+        reduce_to::<PyCoincidencePoint>(py, "_from_fields", args)
     }
 
     /// `(j, k)`, 1-based.
     #[getter]
     fn pair(&self) -> (usize, usize) {
         self.pair
-    }
-    #[getter]
-    fn center(&self) -> Option<Xy> {
-        self.center
-    }
-    #[getter]
-    fn circle(&self) -> Option<Xy> {
-        self.circle
     }
 
     fn __repr__(&self) -> String {
@@ -308,6 +290,10 @@ impl PyCoincidencePoint {
         )
     }
 }
+
+getters!(PyCoincidencePoint {
+    Option<Xy>: center, circle;
+});
 
 /// A polyline as an `(n, 2)` array.
 /// NumPy allocates it (a failed allocation is a `MemoryError`).
@@ -391,14 +377,9 @@ impl PyCubic {
             .py()
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let (c, o, s) = self.inner.local_coefficients();
-        let f = py.get_type::<PyCubic>().getattr("_from_parts")?;
-        let args = (c.to_vec(), pt(o), s).into_pyobject(py)?;
-        Ok((f, args))
+        reduce_to::<PyCubic>(py, "_from_parts", (c.to_vec(), pt(o), s))
     }
 
     /// The ten coefficients in the fixed frame (defined up to a positive
@@ -406,16 +387,6 @@ impl PyCubic {
     #[getter]
     fn coefficients<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         PyTuple::new(py, self.inner.coefficients())
-    }
-
-    #[getter]
-    fn degree(&self) -> usize {
-        self.inner.degree()
-    }
-
-    #[getter]
-    fn is_circular(&self) -> bool {
-        self.inner.is_circular()
     }
 
     #[getter]
@@ -524,3 +495,8 @@ impl PyCubic {
         format!("Cubic([{}])", c.join(", "))
     }
 }
+
+getters!(PyCubic, inner {
+    fn usize: degree;
+    fn bool: is_circular;
+});

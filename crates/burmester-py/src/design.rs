@@ -16,8 +16,9 @@ use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::geom::grid_arg;
+use crate::getters::getters;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
-use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
+use crate::run::{WATCH_MIN_SAMPLES, run};
 
 type Xy = (f64, f64);
 
@@ -51,26 +52,6 @@ impl PyDesignLimits {
     fn min_transmission_deg(&self) -> f64 {
         shortest_degrees(self.inner.min_transmission)
     }
-    #[getter]
-    fn max_link_ratio(&self) -> f64 {
-        self.inner.max_link_ratio
-    }
-    #[getter]
-    fn input(&self) -> &'static str {
-        self.inner.input.as_str()
-    }
-    #[getter]
-    fn max_size_ratio(&self) -> f64 {
-        self.inner.max_size_ratio
-    }
-    #[getter]
-    fn max_link_length(&self) -> f64 {
-        self.inner.max_link_length
-    }
-    #[getter]
-    fn min_grashof_margin(&self) -> f64 {
-        self.inner.min_grashof_margin
-    }
     fn __getnewargs__(&self) -> (f64, f64, &'static str, f64, f64, f64) {
         (
             self.min_transmission_deg(),
@@ -100,6 +81,11 @@ impl PyDesignLimits {
         )
     }
 }
+
+getters!(PyDesignLimits, inner {
+    f64: max_link_ratio, max_size_ratio, max_link_length, min_grashof_margin;
+    str: input;
+});
 
 /// The shortest decimal (at most 17 significant digits) whose conversion to
 /// radians is `rad`; `rad` in degrees when none is.
@@ -400,7 +386,7 @@ pub(crate) fn same_column<T: Element + Bits>(
 /// of shape `(rows, columns)`: the one definition of how a map's columns
 /// cross to Python, for every map that has them.
 macro_rules! py_map_class {
-    ($cls:ident, $pyname:literal, $ctx:ty;
+    ($cls:ident, $pyname:literal, $ctx:ty, $best:ident => $item:ident;
      $($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
         /// A map with the solution map's columns (see the stub for the docs).
         #[pyclass(frozen, name = $pyname, module = "burmester")]
@@ -410,6 +396,26 @@ macro_rules! py_map_class {
         }
 
         impl $cls {
+            /// The `k` best samples by `rank_by` (`$item` records), reading
+            /// the NumPy columns in place.
+            fn ranked<'py>(
+                &self,
+                py: Python<'py>,
+                k: usize,
+                min_separation: Option<f64>,
+                rank_by: burmester::RankBy,
+            ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+                let ctx = &self.context;
+                let watch = $crate::design::ranking_is_long(ctx.grid.len(), k);
+                let best = self.with_rank_columns(py, |cols| {
+                    $crate::run::run_in(py, watch, None, None, "samples", |control| {
+                        ctx.$best(k, min_separation, rank_by, cols, control)
+                    })
+                })?;
+                $crate::run::list_polled(py, &best, |b| {
+                    Ok(Bound::new(py, $item::of(ctx.task, b))?.into_any())
+                })
+            }
             /// A map whose columns NumPy allocates (`numpy.empty`: pages
             /// mapped lazily, huge pages asked for on large arrays, as for
             /// a fresh branch map), `fill` writes (the core's `_into` map)
@@ -548,12 +554,8 @@ macro_rules! py_map_class {
                     inner: self.context.limits,
                 }
             }
-            fn __reduce__<'py>(
-                &self,
-                py: Python<'py>,
-            ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, pyo3::types::PyTuple>)> {
-                let from_state = py.get_type::<$cls>().getattr("_from_state")?;
-                Ok((from_state, self.state(py)?))
+            fn __reduce__<'py>(&self, py: Python<'py>) -> $crate::pickle::Reduced<'py> {
+                $crate::pickle::reduce_to::<$cls>(py, "_from_state", self.state(py)?)
             }
             fn pareto_front<'py>(
                 &self,
@@ -573,7 +575,7 @@ pub(crate) use py_map_class;
 
 macro_rules! py_solution_map {
     ($($t:tt)*) => {
-        py_map_class!(PySolutionMap, "SolutionMap", MapContext; $($t)*);
+        py_map_class!(PySolutionMap, "SolutionMap", MapContext, best_pivots_with => PyPivot; $($t)*);
     };
 }
 
@@ -710,10 +712,6 @@ impl PyPivot {
             ranked_by: ranked_by.parse::<RankBy>().py()?,
         })
     }
-    #[getter]
-    fn center(&self) -> Xy {
-        self.center
-    }
     fn __getnewargs__(
         &self,
     ) -> (
@@ -749,6 +747,10 @@ impl PyPivot {
     }
 }
 
+getters!(PyPivot {
+    Xy: center;
+});
+
 impl PySolutionMap {
     /// The arguments of `_from_state` (for pickling).
     fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
@@ -769,34 +771,10 @@ impl PySolutionMap {
         )
             .into_pyobject(py)
     }
-
-    /// The `k` best pivots by `rank_by`, reading the NumPy columns in place.
-    fn ranked<'py>(
-        &self,
-        py: Python<'py>,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
-        let ctx = &self.context;
-        let watch = ranking_is_long(ctx.grid.len(), k);
-        let pivots = self.with_rank_columns(py, |cols| {
-            run_in(py, watch, None, None, "samples", |control| {
-                ctx.best_pivots_with(k, min_separation, rank_by, cols, control)
-            })
-        })?;
-        list_polled(py, &pivots, |p| {
-            Ok(Bound::new(py, PyPivot::of(ctx.task, p))?.into_any())
-        })
-    }
 }
 
 #[pymethods]
 impl PySolutionMap {
-    #[getter]
-    fn varying(&self) -> &'static str {
-        self.context.varying.as_str()
-    }
     #[getter]
     fn fixed_dyad(&self) -> (Xy, Xy) {
         dyad_tuple(&self.context.varying.fixed())
@@ -877,6 +855,10 @@ impl PySolutionMap {
         format!("<SolutionMap {} pivots, {ny} x {nx}>", self.varying())
     }
 }
+
+getters!(PySolutionMap, context {
+    str: varying;
+});
 
 /// Refuses the context of a pickled map that no map has: a fixed dyad that
 /// is not the task's (a driving map's driven dyad is the task's dyad of its

@@ -6,18 +6,22 @@ use burmester::design::{
     AttachmentSearch, Drive, DriveColumnsOut, DriveContext, DriveOptions, search_drives,
 };
 use burmester::{Constraints, DesignLimits, Grid, Point2, RankBy, SixBar, SixBarJoints, Task};
-use numpy::{PyArray2, PyArrayDyn, PyArrayMethods};
+use numpy::{PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask};
-use crate::conv::{Count, FloatArray, PyPoint, Real, empty, pt, slice_mut, writer};
+use crate::conv::{
+    Arrays, Count, FloatArray, PyPoint, Real, empty, fill_arrays, pt, py_bool, write_points,
+};
 use crate::design::{grid_alone, readonly, same_column, set_readonly};
 use crate::errors::IntoPy;
 use crate::geom::{PyGrid, vec2};
+use crate::getters::getters;
 use crate::linkage::{PyFourBar, mode};
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
+use crate::pickle::{Reduced, reduce_to};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
 type Xy = (f64, f64);
@@ -127,10 +131,7 @@ impl PySixBar {
         .py()
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let s = &self.inner;
         let args = (
             PyFourBar::from(*s.drive()),
@@ -140,9 +141,8 @@ impl PySixBar {
             s.motion_mode().as_str(),
             vec2(s.coupler_point()),
             s.coupler_angle_offset(),
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PySixBar>().getattr("_from_parts")?, args))
+        );
+        reduce_to::<PySixBar>(py, "_from_parts", args)
     }
 
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
@@ -160,52 +160,12 @@ impl PySixBar {
         (*self.inner.motion()).into()
     }
     #[getter]
-    fn drive_mode(&self) -> &'static str {
-        self.inner.drive_mode().as_str()
-    }
-    #[getter]
-    fn motion_mode(&self) -> &'static str {
-        self.inner.motion_mode().as_str()
-    }
-    #[getter]
-    fn attachment_angle(&self) -> f64 {
-        self.inner.attachment_angle()
-    }
-    #[getter]
-    fn coupler_point(&self) -> Xy {
-        vec2(self.inner.coupler_point())
-    }
-    #[getter]
-    fn coupler_angle_offset(&self) -> f64 {
-        self.inner.coupler_angle_offset()
-    }
-    #[getter]
-    fn drive_pivot(&self) -> Xy {
-        pt(self.inner.drive_pivot())
-    }
-    #[getter]
     fn lengths(&self) -> [f64; 8] {
         self.inner.lengths().links()
     }
     #[getter]
     fn attachment_side(&self) -> f64 {
         self.inner.lengths().attachment_side
-    }
-    #[getter]
-    fn link_ratio(&self) -> f64 {
-        self.inner.link_ratio()
-    }
-    #[getter]
-    fn size(&self) -> f64 {
-        self.inner.size()
-    }
-    #[getter]
-    fn drive_grashof(&self) -> &'static str {
-        self.inner.drive_grashof().as_str()
-    }
-    #[getter]
-    fn crank_turns_fully(&self) -> bool {
-        self.inner.crank_turns_fully()
     }
     #[getter]
     fn limit_positions(&self) -> Option<Vec<(f64, f64, f64, bool)>> {
@@ -220,22 +180,10 @@ impl PySixBar {
         self.inner.swing().map(|s| (s.start, s.end))
     }
     #[getter]
-    fn stroke_angle(&self) -> Option<f64> {
-        self.inner.stroke_angle()
-    }
-    #[getter]
-    fn time_ratio(&self) -> Option<f64> {
-        self.inner.time_ratio()
-    }
-    #[getter]
     fn min_transmission_deg(&self) -> Option<Xy> {
         self.inner
             .min_transmission_angles()
             .map(|[a, b]| (a.to_degrees(), b.to_degrees()))
-    }
-    #[getter]
-    fn dead_positions(&self) -> Vec<f64> {
-        self.inner.dead_positions()
     }
 
     /// `(psi, theta2, theta3, theta4)` at crank angle `phi`.
@@ -266,41 +214,12 @@ impl PySixBar {
     }
     /// The coupler point over crank angles: `(xs, ys, valid)` arrays of
     /// their shape (NaN and False where a loop does not close).
-    #[allow(clippy::type_complexity)]
-    fn coupler_path<'py>(
-        &self,
-        py: Python<'py>,
-        phis: FloatArray<'py>,
-    ) -> PyResult<(
-        Bound<'py, PyArrayDyn<f64>>,
-        Bound<'py, PyArrayDyn<f64>>,
-        Bound<'py, PyArrayDyn<bool>>,
-    )> {
+    fn coupler_path<'py>(&self, py: Python<'py>, phis: FloatArray<'py>) -> PyResult<Arrays<'py>> {
         let (flat, shape) = (phis.values(), phis.shape());
-        let (xs, ys, ok) = (
-            empty::<f64>(py, shape)?,
-            empty::<f64>(py, shape)?,
-            empty::<bool>(py, shape)?,
-        );
-        {
-            let (mut xw, mut yw, mut ow) = (writer(&xs)?, writer(&ys)?, writer(&ok)?);
-            let (xs_s, ys_s, ok_s) = (slice_mut(&mut xw), slice_mut(&mut yw), slice_mut(&mut ow));
-            let six = self.inner;
-            py.detach(|| {
-                for (((p, x), y), v) in six
-                    .coupler_path(flat.iter().copied())
-                    .zip(xs_s)
-                    .zip(ys_s)
-                    .zip(ok_s)
-                {
-                    (*x, *y, *v) = match p {
-                        Ok(p) => (p.x, p.y, true),
-                        Err(_) => (f64::NAN, f64::NAN, false),
-                    };
-                }
-            });
-        }
-        Ok((xs, ys, ok))
+        let six = self.inner;
+        fill_arrays(py, shape, |xs, ys, ok| {
+            write_points(six.coupler_path(flat.iter().copied()), xs, ys, ok);
+        })
     }
     #[pyo3(signature = (start = Real(0.0), samples = Count(360)),
         text_signature = "($self, start=0.0, samples=360)")]
@@ -322,14 +241,20 @@ impl PySixBar {
             l.drive_coupler,
             l.rocker,
             l.drive_ground,
-            if self.inner.crank_turns_fully() {
-                "True"
-            } else {
-                "False"
-            }
+            py_bool(self.inner.crank_turns_fully())
         )
     }
 }
+
+getters!(PySixBar, inner {
+    fn str: drive_mode, motion_mode, drive_grashof;
+    fn f64: attachment_angle, coupler_angle_offset, link_ratio, size;
+    fn Xy = vec2: coupler_point;
+    fn Xy = pt: drive_pivot;
+    fn bool: crank_turns_fully;
+    fn Option<f64>: stroke_angle, time_ratio;
+    fn Vec<f64>: dead_positions;
+});
 
 /// A drive for a linkage (from a drive map, a pivot or the closed form).
 #[pyclass(frozen, name = "Drive", module = "burmester")]
@@ -415,10 +340,7 @@ impl PyDrive {
         Ok(PyDrive::of(d, linkage.task(), &ctx))
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let d = &self.inner;
         let args = (
             PySynthesizedFourBar::new(self.task, d.linkage),
@@ -431,9 +353,8 @@ impl PyDrive {
             d.margin,
             d.score,
             d.ranked_by.map(|r| r.as_str()),
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PyDrive>().getattr("_from_state")?, args))
+        );
+        reduce_to::<PyDrive>(py, "_from_state", args)
     }
 
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
@@ -470,40 +391,8 @@ impl PyDrive {
         PyTask { inner: self.task }
     }
     #[getter]
-    fn drive_pivot(&self) -> Xy {
-        pt(self.inner.drive_pivot)
-    }
-    #[getter]
-    fn attachment(&self) -> Xy {
-        pt(self.inner.attachment)
-    }
-    #[getter]
     fn pose_crank_angles(&self) -> Vec<f64> {
         self.inner.pose_crank_angles.to_vec()
-    }
-    #[getter]
-    fn stroke_start(&self) -> f64 {
-        self.inner.stroke_start
-    }
-    #[getter]
-    fn direction(&self) -> &'static str {
-        self.inner.direction.as_str()
-    }
-    #[getter]
-    fn acceptable(&self) -> bool {
-        self.inner.acceptable
-    }
-    #[getter]
-    fn index(&self) -> Option<(usize, usize)> {
-        self.inner.index
-    }
-    #[getter]
-    fn margin(&self) -> f64 {
-        self.inner.margin
-    }
-    #[getter]
-    fn score(&self) -> f64 {
-        self.inner.score
     }
     #[getter]
     fn ranked_by(&self) -> Option<&'static str> {
@@ -571,10 +460,18 @@ impl PyDrive {
             f.min_transmission.to_degrees(),
             f.time_ratio,
             f.size_ratio,
-            if d.acceptable { "True" } else { "False" }
+            py_bool(d.acceptable)
         )
     }
 }
+
+getters!(PyDrive, inner {
+    Xy = pt: drive_pivot, attachment;
+    f64: stroke_start, margin, score;
+    str: direction;
+    bool: acceptable;
+    Option<(usize, usize)>: index;
+});
 
 macro_rules! py_drive_map {
     ($($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
@@ -726,10 +623,6 @@ impl PyDriveMap {
         PySynthesizedFourBar::new(self.task, *self.context.linkage())
     }
     #[getter]
-    fn attachment(&self) -> Xy {
-        pt(self.context.attachment())
-    }
-    #[getter]
     fn attachment_ends(&self) -> (Xy, Xy) {
         let [a, b] = self.context.attachment_ends();
         (pt(a), pt(b))
@@ -825,10 +718,7 @@ impl PyDriveMap {
         Self::from_columns(py, context, linkage.task(), columns)
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let c = &self.context;
         let args = (
             self.linkage(),
@@ -838,9 +728,8 @@ impl PyDriveMap {
             (c.options().swing_margin, c.options().max_time_ratio),
             constraint_state(c.constraints()),
             self.column_dict(py)?,
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PyDriveMap>().getattr("_from_state")?, args))
+        );
+        reduce_to::<PyDriveMap>(py, "_from_state", args)
     }
 
     fn __eq__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> bool {
@@ -860,6 +749,10 @@ impl PyDriveMap {
         format!("<DriveMap drive pivots, {ny} x {nx}>")
     }
 }
+
+getters!(PyDriveMap, context {
+    fn Xy = pt: attachment;
+});
 
 /// The drive methods of `SynthesizedFourBar`: driving it from a motor by
 /// an added dyad (the Watt II six-bar).

@@ -8,6 +8,8 @@ use pyo3::types::{PyList, PySequence, PyTuple};
 
 use crate::conv::{Count, FloatArray, PyPoint, Real, pt, slice_mut, writer, zeros};
 use crate::errors::{IntoPy, invalid};
+use crate::getters::getters;
+use crate::pickle::{Reduced, reduce_to};
 
 type Xy = (f64, f64);
 
@@ -30,38 +32,6 @@ impl PyGrid {
             .py()
     }
 
-    #[getter]
-    fn xmin(&self) -> f64 {
-        self.inner.viewport().xmin
-    }
-    #[getter]
-    fn xmax(&self) -> f64 {
-        self.inner.viewport().xmax
-    }
-    #[getter]
-    fn ymin(&self) -> f64 {
-        self.inner.viewport().ymin
-    }
-    #[getter]
-    fn ymax(&self) -> f64 {
-        self.inner.viewport().ymax
-    }
-    #[getter]
-    fn nx(&self) -> usize {
-        self.inner.nx()
-    }
-    #[getter]
-    fn ny(&self) -> usize {
-        self.inner.ny()
-    }
-    #[getter]
-    fn dx(&self) -> f64 {
-        self.inner.dx()
-    }
-    #[getter]
-    fn dy(&self) -> f64 {
-        self.inner.dy()
-    }
     #[getter]
     fn extent(&self) -> (f64, f64, f64, f64) {
         extent(&self.inner)
@@ -128,6 +98,15 @@ impl PyGrid {
         )
     }
 }
+
+getters!(PyGrid, [inner.viewport()] {
+    f64: xmin, xmax, ymin, ymax;
+});
+
+getters!(PyGrid, inner {
+    fn usize: nx, ny;
+    fn f64: dx, dy;
+});
 
 fn extent(g: &Grid) -> (f64, f64, f64, f64) {
     let v = g.viewport();
@@ -200,14 +179,10 @@ impl PyConic {
             .py()
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let (q, o, s, k) = self.inner.to_parts();
-        let f = py.get_type::<PyConic>().getattr("_from_parts")?;
-        let args = (q, pt(o), s, k.map(|k| (k.x, k.y))).into_pyobject(py)?;
-        Ok((f, args))
+        let args = (q, pt(o), s, k.map(|k| (k.x, k.y)));
+        reduce_to::<PyConic>(py, "_from_parts", args)
     }
 
     #[getter]
@@ -217,18 +192,8 @@ impl PyConic {
     }
 
     #[getter]
-    fn kind(&self) -> &'static str {
-        self.inner.kind().as_str()
-    }
-
-    #[getter]
     fn center(&self) -> Option<Xy> {
         self.inner.center().map(pt)
-    }
-
-    #[getter]
-    fn axis_angle(&self) -> f64 {
-        self.inner.axis_angle()
     }
 
     #[getter]
@@ -306,6 +271,11 @@ impl PyConic {
         )
     }
 }
+
+getters!(PyConic, inner {
+    fn str: kind;
+    fn f64: axis_angle;
+});
 
 /// `(x, y)` of a vector for Python.
 pub(crate) fn vec2(v: Vector2<f64>) -> Xy {

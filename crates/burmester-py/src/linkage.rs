@@ -9,13 +9,14 @@ use burmester::{
     AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, LinkageFigures, PerPose,
     Point2,
 };
-use numpy::PyArrayDyn;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::conv::{FloatArray, PyPoint, Real, empty, pt, slice_mut, writer};
+use crate::conv::{Arrays, FloatArray, PyPoint, Real, fill_arrays, pt, py_bool, write_points};
 use crate::errors::{IntoPy, invalid};
+use crate::getters::getters;
+use crate::pickle::{Reduced, reduce_to};
 
 /// Parses `"open"` / `"crossed"`.
 pub(crate) fn mode(s: &str) -> PyResult<AssemblyMode> {
@@ -34,12 +35,6 @@ impl From<FourBar> for PyFourBar {
         PyFourBar { inner }
     }
 }
-
-type Arrays<'py> = (
-    Bound<'py, PyArrayDyn<f64>>,
-    Bound<'py, PyArrayDyn<f64>>,
-    Bound<'py, PyArrayDyn<bool>>,
-);
 
 #[pymethods]
 impl PyFourBar {
@@ -111,47 +106,9 @@ impl PyFourBar {
     }
 
     #[getter]
-    fn ground(&self) -> f64 {
-        self.inner.ground()
-    }
-    #[getter]
-    fn crank(&self) -> f64 {
-        self.inner.crank()
-    }
-    #[getter]
-    fn coupler(&self) -> f64 {
-        self.inner.coupler()
-    }
-    #[getter]
-    fn rocker(&self) -> f64 {
-        self.inner.rocker()
-    }
-    #[getter]
     fn lengths(&self) -> (f64, f64, f64, f64) {
         let [a, b, c, d] = self.inner.lengths();
         (a, b, c, d)
-    }
-    #[getter]
-    fn input_pivot(&self) -> (f64, f64) {
-        pt(self.inner.input_pivot())
-    }
-    #[getter]
-    fn output_pivot(&self) -> (f64, f64) {
-        pt(self.inner.output_pivot())
-    }
-    #[getter]
-    fn ground_angle(&self) -> f64 {
-        self.inner.ground_angle()
-    }
-
-    #[getter]
-    fn link_ratio(&self) -> f64 {
-        self.inner.link_ratio()
-    }
-
-    #[getter]
-    fn grashof_margin(&self) -> f64 {
-        self.inner.grashof_margin()
     }
 
     #[pyo3(signature = (theta2, mode = "open"))]
@@ -178,34 +135,12 @@ impl PyFourBar {
     ) -> PyResult<Arrays<'py>> {
         let mode = self::mode(mode)?;
         let (flat, shape) = (theta2s.values(), theta2s.shape());
-        // Every element is written (NaN and false where the loop does not close).
-        let (t3, t4, ok) = (
-            empty::<f64>(py, shape)?,
-            empty::<f64>(py, shape)?,
-            empty::<bool>(py, shape)?,
-        );
-        {
-            let (mut t3_w, mut t4_w, mut ok_w) = (writer(&t3)?, writer(&t4)?, writer(&ok)?);
-            let (t3_s, t4_s, ok_s) = (
-                slice_mut(&mut t3_w),
-                slice_mut(&mut t4_w),
-                slice_mut(&mut ok_w),
-            );
-            let fb = self.inner;
-            // Lengths agree by construction, so this cannot fail.
-            let _ = py.detach(|| fb.solve_into(flat, mode, t3_s, t4_s, ok_s));
-        }
-        Ok((t3, t4, ok))
-    }
-
-    #[getter]
-    fn grashof(&self) -> &'static str {
-        self.inner.grashof().as_str()
-    }
-
-    #[getter]
-    fn input_turns_fully(&self) -> bool {
-        self.inner.input_turns_fully()
+        let fb = self.inner;
+        // Every element is written (NaN and false where the loop does not
+        // close); the lengths agree by construction, so this cannot fail.
+        fill_arrays(py, shape, |t3, t4, ok| {
+            let _ = fb.solve_into(flat, mode, t3, t4, ok);
+        })
     }
 
     /// `None` when the input turns fully, else a list of `(start, end)` arcs.
@@ -277,31 +212,15 @@ impl PyFourBar {
                 .py()?;
         }
         let (flat, shape) = (theta2s.values(), theta2s.shape());
-        // Every element is written (NaN and false where the loop does not close).
-        let (xs, ys, ok) = (
-            empty::<f64>(py, shape)?,
-            empty::<f64>(py, shape)?,
-            empty::<bool>(py, shape)?,
-        );
-        {
-            let (mut xs_w, mut ys_w, mut ok_w) = (writer(&xs)?, writer(&ys)?, writer(&ok)?);
-            let (xs_s, ys_s, ok_s) = (
-                slice_mut(&mut xs_w),
-                slice_mut(&mut ys_w),
-                slice_mut(&mut ok_w),
+        let fb = self.inner;
+        fill_arrays(py, shape, |xs, ys, ok| {
+            write_points(
+                fb.coupler_path(local, flat.iter().copied(), mode),
+                xs,
+                ys,
+                ok,
             );
-            let fb = self.inner;
-            py.detach(|| {
-                let path = fb.coupler_path(local, flat.iter().copied(), mode);
-                for (((p, x), y), valid) in path.zip(xs_s).zip(ys_s).zip(ok_s) {
-                    (*x, *y, *valid) = match p {
-                        Ok(p) => (p.x, p.y, true),
-                        Err(_) => (f64::NAN, f64::NAN, false),
-                    };
-                }
-            });
-        }
-        Ok((xs, ys, ok))
+        })
     }
 
     /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
@@ -333,6 +252,13 @@ impl PyFourBar {
     }
 }
 
+getters!(PyFourBar, inner {
+    fn f64: ground, crank, coupler, rocker, ground_angle, link_ratio, grashof_margin;
+    fn (f64, f64) = pt: input_pivot, output_pivot;
+    fn str: grashof;
+    fn bool: input_turns_fully;
+});
+
 /// One solved position of a four-bar.
 #[pyclass(frozen, name = "Configuration", module = "burmester")]
 #[derive(Clone)]
@@ -344,34 +270,6 @@ pub struct PyConfiguration {
 
 #[pymethods]
 impl PyConfiguration {
-    #[getter]
-    fn theta2(&self) -> f64 {
-        self.inner.theta2
-    }
-    #[getter]
-    fn theta3(&self) -> f64 {
-        self.inner.theta3
-    }
-    #[getter]
-    fn theta4(&self) -> f64 {
-        self.inner.theta4
-    }
-    #[getter]
-    fn mode(&self) -> &'static str {
-        self.inner.mode.as_str()
-    }
-    #[getter]
-    fn toggle(&self) -> bool {
-        self.inner.toggle
-    }
-    #[getter]
-    fn transmission_angle(&self) -> f64 {
-        self.inner.transmission_angle()
-    }
-    #[getter]
-    fn coupler_rocker_angle(&self) -> f64 {
-        self.inner.coupler_rocker_angle()
-    }
     fn __repr__(&self) -> String {
         let c = &self.inner;
         format!(
@@ -380,7 +278,7 @@ impl PyConfiguration {
             c.theta3,
             c.theta4,
             c.mode.as_str(),
-            if c.toggle { "True" } else { "False" }
+            py_bool(c.toggle)
         )
     }
 
@@ -402,6 +300,13 @@ impl PyConfiguration {
         ))
     }
 }
+
+getters!(PyConfiguration, inner {
+    f64: theta2, theta3, theta4;
+    str: mode;
+    bool: toggle;
+    fn f64: transmission_angle, coupler_rocker_angle;
+});
 
 /// What a designer checks of one linkage that must pass a task's poses.
 #[pyclass(frozen, eq, name = "LinkageFigures", module = "burmester")]
@@ -503,10 +408,7 @@ impl PyLinkageFigures {
         })
     }
 
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let f = &self.inner;
         let args = (
             f.lengths,
@@ -517,12 +419,8 @@ impl PyLinkageFigures {
             f.one_circuit,
             f.min_transmission,
             f.link_ratio,
-        )
-            .into_pyobject(py)?;
-        Ok((
-            py.get_type::<PyLinkageFigures>().getattr("_from_fields")?,
-            args,
-        ))
+        );
+        reduce_to::<PyLinkageFigures>(py, "_from_fields", args)
     }
 
     /// `(ground, crank, coupler, rocker)`.
@@ -530,14 +428,6 @@ impl PyLinkageFigures {
     fn lengths(&self) -> (f64, f64, f64, f64) {
         let [a, b, c, d] = self.inner.lengths;
         (a, b, c, d)
-    }
-    #[getter]
-    fn grashof(&self) -> &'static str {
-        self.inner.grashof.as_str()
-    }
-    #[getter]
-    fn input_full(&self) -> bool {
-        self.inner.input_full
     }
     #[getter]
     fn modes(&self) -> Modes {
@@ -548,33 +438,9 @@ impl PyLinkageFigures {
             .collect()
     }
     #[getter]
-    fn direction(&self) -> &'static str {
-        self.inner.direction.as_str()
-    }
-    #[getter]
-    fn one_circuit(&self) -> bool {
-        self.inner.one_circuit
-    }
-    #[getter]
     fn min_transmission_deg(&self) -> Option<f64> {
         let t = self.inner.min_transmission;
         (!t.is_nan()).then(|| t.to_degrees())
-    }
-    #[getter]
-    fn link_ratio(&self) -> f64 {
-        self.inner.link_ratio
-    }
-    #[getter]
-    fn grashof_margin(&self) -> f64 {
-        self.inner.grashof_margin()
-    }
-    #[getter]
-    fn branch_free(&self) -> bool {
-        self.inner.branch_free()
-    }
-    #[getter]
-    fn feasible(&self) -> bool {
-        self.inner.feasible()
     }
     fn __repr__(&self) -> String {
         let f = &self.inner;
@@ -582,10 +448,18 @@ impl PyLinkageFigures {
             "<LinkageFigures {} direction={} branch_free={} min_transmission_deg={} link_ratio={:.3}>",
             f.grashof,
             f.direction,
-            if f.branch_free() { "True" } else { "False" },
+            py_bool(f.branch_free()),
             self.min_transmission_deg()
                 .map_or("None".to_owned(), |t| format!("{t:.3}")),
             f.link_ratio
         )
     }
 }
+
+getters!(PyLinkageFigures, inner {
+    str: grashof, direction;
+    bool: input_full, one_circuit;
+    f64: link_ratio;
+    fn f64: grashof_margin;
+    fn bool: branch_free, feasible;
+});

@@ -9,15 +9,15 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask};
 use crate::conv::{Count, PyPoint, Real};
 use crate::curves::PyCurveDyad;
-use crate::design::ranking_is_long;
 use crate::design::{py_map_class, ranked_getters};
 use crate::errors::IntoPy;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
+use crate::pickle::{Reduced, reduce_to};
 use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
 
 macro_rules! py_pair_map {
     ($($t:tt)*) => {
-        py_map_class!(PyPairMap, "PairMap", PairContext; $($t)*);
+        py_map_class!(PyPairMap, "PairMap", PairContext, best_pairs_with => PyPair; $($t)*);
     };
 }
 
@@ -109,10 +109,7 @@ impl PyPair {
             .py()?;
         Self::new(driving, driven, index, linkage, margin, score, ranked_by)
     }
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let args = (
             PyTask {
                 inner: self.linkage.task(),
@@ -123,9 +120,8 @@ impl PyPair {
             self.margin,
             self.score,
             self.ranked_by.as_str(),
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PyPair>().getattr("_from_state")?, args))
+        );
+        reduce_to::<PyPair>(py, "_from_state", args)
     }
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other.cast::<PyPair>().is_ok_and(|o| {
@@ -160,26 +156,6 @@ impl PyPairMap {
             columns,
         )
             .into_pyobject(py)
-    }
-
-    /// The `k` best pairs by `rank_by`, reading the NumPy columns in place.
-    fn ranked<'py>(
-        &self,
-        py: Python<'py>,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-    ) -> PyResult<Bound<'py, PyList>> {
-        let ctx = &self.context;
-        let watch = ranking_is_long(ctx.grid.len(), k);
-        let pairs = self.with_rank_columns(py, |cols| {
-            run_in(py, watch, None, None, "samples", |control| {
-                ctx.best_pairs_with(k, min_separation, rank_by, cols, control)
-            })
-        })?;
-        list_polled(py, &pairs, |p| {
-            Ok(Bound::new(py, PyPair::of(ctx.task, p))?.into_any())
-        })
     }
 
     /// The row-major index of pair `[j, i]`, or `InvalidInputError` naming

@@ -15,13 +15,15 @@ use burmester::{
 use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyIndexError, PyTypeError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
+use pyo3::types::PyDict;
 
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask, dyad_tuple};
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::drive::PyDrive;
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
+use crate::getters::getters;
+use crate::pickle::{Reduced, reduce_to};
 use crate::run::run;
 
 type Xy = (f64, f64);
@@ -102,16 +104,8 @@ impl PySpace {
         self.inner.obstacles.iter().map(|o| xys(o)).collect()
     }
     #[getter]
-    fn link_width(&self) -> f64 {
-        self.inner.link_width
-    }
-    #[getter]
     fn envelope(&self) -> Option<Vec<Xy>> {
         self.inner.envelope.as_deref().map(xys)
-    }
-    #[getter]
-    fn travel_samples(&self) -> usize {
-        self.inner.travel_samples
     }
     fn contains_pivot(&self, p: PyPoint) -> bool {
         self.inner.pivots.contains(p.0)
@@ -161,6 +155,11 @@ impl PySpace {
         format!("Space({})", parts.join(", "))
     }
 }
+
+getters!(PySpace, inner {
+    f64: link_width;
+    usize: travel_samples;
+});
 
 /// A search point as `(kind, values)` (for pickling).
 fn point_state(p: &SearchPoint) -> (&'static str, [f64; 4]) {
@@ -289,14 +288,6 @@ impl PyDesign {
 
 #[pymethods]
 impl PyDesign {
-    #[getter]
-    fn score(&self) -> f64 {
-        self.inner.score
-    }
-    #[getter]
-    fn ranked_by(&self) -> &'static str {
-        self.inner.ranked_by.as_str()
-    }
     /// The driving dyad's fixed pivot `A0` (its crank drives).
     #[getter]
     fn driving_pivot(&self) -> Xy {
@@ -320,14 +311,6 @@ impl PyDesign {
     #[getter]
     fn refined<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         point_py(py, &self.inner.refined)
-    }
-    #[getter]
-    fn coarse_score(&self) -> f64 {
-        self.inner.coarse_score
-    }
-    #[getter]
-    fn evaluations(&self) -> usize {
-        self.inner.evaluations
     }
     /// With a motor: the drive of a linkage whose input swings (None
     /// without a motor, or when the input turns fully).
@@ -371,10 +354,7 @@ impl PyDesign {
             },
         })
     }
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let d = &self.inner;
         let (kind, coarse) = point_state(&d.coarse);
         let (_, refined) = point_state(&d.refined);
@@ -391,9 +371,8 @@ impl PyDesign {
             d.coarse_score,
             d.evaluations,
             self.drive.clone(),
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PyDesign>().getattr("_from_state")?, args))
+        );
+        reduce_to::<PyDesign>(py, "_from_state", args)
     }
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other
@@ -423,6 +402,12 @@ impl PyDesign {
     }
 }
 
+getters!(PyDesign, inner {
+    f64: score, coarse_score;
+    str: ranked_by;
+    usize: evaluations;
+});
+
 fn limit_of(name: &str) -> PyResult<Limit> {
     Limit::ALL
         .into_iter()
@@ -443,10 +428,6 @@ impl PyNearMiss {
     #[getter]
     fn misses(&self) -> Vec<&'static str> {
         self.inner.misses.iter().map(|l| l.as_str()).collect()
-    }
-    #[getter]
-    fn shortfall(&self) -> f64 {
-        self.inner.shortfall
     }
     #[staticmethod]
     fn _from_state(
@@ -470,10 +451,7 @@ impl PyNearMiss {
             },
         })
     }
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let m = &self.inner;
         let args = (
             PyTask { inner: self.task },
@@ -482,9 +460,8 @@ impl PyNearMiss {
             m.size_ratio,
             self.misses(),
             m.shortfall,
-        )
-            .into_pyobject(py)?;
-        Ok((py.get_type::<PyNearMiss>().getattr("_from_state")?, args))
+        );
+        reduce_to::<PyNearMiss>(py, "_from_state", args)
     }
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other
@@ -500,6 +477,10 @@ impl PyNearMiss {
         )
     }
 }
+
+getters!(PyNearMiss, inner {
+    f64: shortfall;
+});
 
 /// What `burmester.design` found: a sequence of `Design`s, best first, and
 /// what the search ran under.
@@ -548,10 +529,6 @@ impl PyDesignReport {
         self.inner.main_rejection().map(|l| l.as_str())
     }
     #[getter]
-    fn census(&self) -> usize {
-        self.inner.census
-    }
-    #[getter]
     fn limits(&self) -> PyDesignLimits {
         PyDesignLimits {
             inner: self.inner.limits,
@@ -564,30 +541,10 @@ impl PyDesignReport {
         }
     }
     #[getter]
-    fn rank_by(&self) -> &'static str {
-        self.inner.rank_by.as_str()
-    }
-    #[getter]
-    fn min_separation(&self) -> f64 {
-        self.inner.min_separation
-    }
-    #[getter]
     fn search_box(&self) -> Option<Box4> {
         self.inner
             .search_box
             .map(|v| (v.xmin, v.xmax, v.ymin, v.ymax))
-    }
-    #[getter]
-    fn coarse_candidates(&self) -> usize {
-        self.inner.coarse_candidates
-    }
-    #[getter]
-    fn coarse_acceptable(&self) -> usize {
-        self.inner.coarse_acceptable
-    }
-    #[getter]
-    fn evaluations(&self) -> usize {
-        self.inner.evaluations
     }
     /// With a motor: the candidates passed over for want of a drive.
     #[getter]
@@ -678,10 +635,7 @@ impl PyDesignReport {
             },
         })
     }
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
         let r = &self.inner;
         let args = (
             self.task(),
@@ -701,12 +655,8 @@ impl PyDesignReport {
             self.near_misses(),
             r.motor.map(|m| (m.swing_margin, m.max_time_ratio)),
             r.undriven,
-        )
-            .into_pyobject(py)?;
-        Ok((
-            py.get_type::<PyDesignReport>().getattr("_from_state")?,
-            args,
-        ))
+        );
+        reduce_to::<PyDesignReport>(py, "_from_state", args)
     }
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other
@@ -729,6 +679,12 @@ impl PyDesignReport {
         }
     }
 }
+
+getters!(PyDesignReport, inner {
+    usize: census, coarse_candidates, coarse_acceptable, evaluations;
+    str: rank_by;
+    f64: min_separation;
+});
 
 /// The options of `burmester.design` from its keywords.
 #[allow(clippy::too_many_arguments)]
@@ -811,53 +767,56 @@ fn no_motor(swing_margin_deg: Real, max_time_ratio: Option<Real>, input: &str) -
     Ok(())
 }
 
+/// Calls `$callback! { $header ... }` with the keywords of
+/// `burmester.design` after its positional arguments, each as
+/// `name: [type] = [default],`, in [`options`]' order: the one list of
+/// their types and defaults.
+macro_rules! design_keywords {
+    ($callback:ident! $header:tt) => {
+        $callback! { $header
+            space: [Option<PySpace>] = [None],
+            limits: [Option<PyDesignLimits>] = [None],
+            rank_by: [&str] = ["balanced"],
+            top: [Count] = [Count(5)],
+            min_separation: [Option<Real>] = [None],
+            coarse_driven: [Count] = [Count(12)],
+            coarse_driving: [Count] = [Count(48)],
+            coarse_pairs: [Count] = [Count(120)],
+            starts: [Count] = [Count(48)],
+            max_iterations: [Count] = [Count(3000)],
+            input: [Option<&str>] = [None],
+            swing_margin_deg: [Real] = [Real(0.0)],
+            max_time_ratio: [Option<Real>] = [None],
+        }
+    };
+}
+
 /// Defines a native design function: the keywords of `burmester.design`
 /// (after `task` and the function's own positional arguments) parsed into
 /// `opts`, then `$body`.
 macro_rules! design_fn {
-    ($(#[$m:meta])* fn $name:ident<$lt:lifetime>($py:ident, $task:ident $(, $arg:ident: $ty:ty)*; $opts:ident, $progress:ident) -> $ret:ty $body:block) => {
+    ($($header:tt)*) => {
+        design_keywords!(design_fn_with! { $($header)* });
+    };
+}
+
+/// [`design_fn`] with the keywords.
+macro_rules! design_fn_with {
+    ({ $(#[$m:meta])* fn $name:ident<$lt:lifetime>($py:ident, $task:ident $(, $arg:ident: $ty:ty)*;
+        $opts:ident, $progress:ident) -> $ret:ty $body:block }
+     $($k:ident: [$($t:tt)*] = [$($d:tt)*],)*) => {
         $(#[$m])*
         #[pyfunction]
-        #[pyo3(signature = ($task $(, $arg)*, *, space = None, limits = None, rank_by = "balanced",
-            top = Count(5), min_separation = None, coarse_driven = Count(12),
-            coarse_driving = Count(48), coarse_pairs = Count(120), starts = Count(48),
-            max_iterations = Count(3000), input = None, swing_margin_deg = Real(0.0),
-            max_time_ratio = None, progress = None))]
+        #[pyo3(signature = ($task $(, $arg)*, *, $($k = $($d)*,)* progress = None))]
         #[allow(clippy::too_many_arguments)]
         pub(crate) fn $name<$lt>(
             $py: Python<$lt>,
             $task: &PyTask,
             $($arg: $ty,)*
-            space: Option<PySpace>,
-            limits: Option<PyDesignLimits>,
-            rank_by: &str,
-            top: Count,
-            min_separation: Option<Real>,
-            coarse_driven: Count,
-            coarse_driving: Count,
-            coarse_pairs: Count,
-            starts: Count,
-            max_iterations: Count,
-            input: Option<&str>,
-            swing_margin_deg: Real,
-            max_time_ratio: Option<Real>,
+            $($k: $($t)*,)*
             $progress: Option<&Bound<$lt, PyAny>>,
         ) -> PyResult<$ret> {
-            let $opts = options(
-                space,
-                limits,
-                rank_by,
-                top,
-                min_separation,
-                coarse_driven,
-                coarse_driving,
-                coarse_pairs,
-                starts,
-                max_iterations,
-                input,
-                swing_margin_deg,
-                max_time_ratio,
-            )?;
+            let $opts = options($($k,)*)?;
             $body
         }
     };

@@ -10,17 +10,18 @@ use pyo3::types::{PyDict, PySequence, PyTuple};
 
 use crate::classes::{PyFilemon, PySynthesizedFourBar, PyTask, dyad_tuple};
 use crate::conv::{
-    Count, FloatArray, PyPoint, Real, points, pt, slice_mut, to_numpy, writer, zeros,
+    Count, FloatArray, PyPoint, Real, points, pt, py_bool, slice_mut, to_numpy, writer, zeros,
 };
 use crate::curves::{self, PyCoincidencePoint, PyCubic, PyCurveDyad};
 use crate::errors::IntoPy;
 use crate::geom::{PyConic, grid_arg, vec2};
+use crate::getters::getters;
 use crate::linkage::{PyFourBar, PyLinkageFigures};
 
 type Xy = (f64, f64);
 
 /// Mapped points (NaN where undefined) and their validity mask.
-type MappedPoints<'py> = (Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>);
+type MappedPoints<'py> = PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>)>;
 
 fn circle_dict<'py>(py: Python<'py>, c: CircleOrLine) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -43,14 +44,20 @@ fn line_tuple(l: &Line) -> (Xy, Xy) {
     (pt(l.point), vec2(l.direction))
 }
 
-/// Maps an array of points with `f`, returning the mapped points (NaN where
-/// it fails) and a validity mask. A C-contiguous float64 input is read in
-/// place and the results are written straight into the returned arrays.
+/// Maps an array of points with the task's map `f` (for the Python method
+/// `method`), returning the mapped points (NaN where it fails) and a
+/// validity mask. A C-contiguous float64 input is read in place and the
+/// results are written straight into the returned arrays.
 fn map_points<'py>(
     py: Python<'py>,
+    task: &Task,
+    method: &'static str,
     input: FloatArray<'py>,
-    f: impl Fn(Point2<f64>) -> burmester::Result<Point2<f64>> + Send + Sync,
-) -> PyResult<MappedPoints<'py>> {
+    f: impl Fn(&Task, Point2<f64>) -> burmester::Result<Point2<f64>> + Send + Sync,
+) -> MappedPoints<'py> {
+    // A task of five poses is a misuse, not a point without an answer:
+    // raise instead of a mask of False.
+    task.check_point_maps(method).py()?;
     let pts = points(&input)?;
     let mut shape = pts.lead.clone();
     shape.push(2);
@@ -61,7 +68,7 @@ fn map_points<'py>(
         let (out_s, ok_s) = (slice_mut(&mut out_w), slice_mut(&mut ok_w));
         py.detach(|| {
             for ((p, q), valid) in pts.iter().zip(out_s.chunks_exact_mut(2)).zip(ok_s) {
-                match f(p) {
+                match f(task, p) {
                     Ok(r) => {
                         q.copy_from_slice(&[r.x, r.y]);
                         *valid = true;
@@ -185,14 +192,6 @@ impl PyPole {
         self.pair
     }
     #[getter]
-    fn point(&self) -> Option<Xy> {
-        self.point
-    }
-    #[getter]
-    fn direction(&self) -> Option<Xy> {
-        self.direction
-    }
-    #[getter]
     fn at_infinity(&self) -> bool {
         self.point.is_none()
     }
@@ -208,6 +207,10 @@ impl PyPole {
         }
     }
 }
+
+getters!(PyPole {
+    Option<Xy>: point, direction;
+});
 
 impl PyTask {
     fn cremona(&self) -> PyResult<&Cremona> {
@@ -247,21 +250,6 @@ impl PyTask {
             .iter()
             .map(|p| (p.position.x, p.position.y, p.angle))
             .collect()
-    }
-
-    #[getter]
-    fn rotations(&self) -> Vec<f64> {
-        self.inner.rotations()
-    }
-
-    #[getter]
-    fn scale(&self) -> f64 {
-        self.inner.scale()
-    }
-
-    #[getter]
-    fn span(&self) -> f64 {
-        self.inner.span()
     }
 
     #[getter]
@@ -324,26 +312,24 @@ impl PyTask {
         self.inner.center_point_of(circle.0).map(pt).py()
     }
 
-    fn circle_points<'py>(
-        &self,
-        py: Python<'py>,
-        centers: FloatArray<'py>,
-    ) -> PyResult<MappedPoints<'py>> {
-        // A task of five poses is a misuse, not a point without an answer:
-        // raise instead of a mask of False.
-        self.inner.check_point_maps("Task.circle_points").py()?;
-        map_points(py, centers, |p| self.inner.circle_point_of(p))
+    fn circle_points<'py>(&self, py: Python<'py>, centers: FloatArray<'py>) -> MappedPoints<'py> {
+        map_points(
+            py,
+            &self.inner,
+            "Task.circle_points",
+            centers,
+            Task::circle_point_of,
+        )
     }
 
-    fn center_points<'py>(
-        &self,
-        py: Python<'py>,
-        circles: FloatArray<'py>,
-    ) -> PyResult<MappedPoints<'py>> {
-        // A task of five poses is a misuse, not a point without an answer:
-        // raise instead of a mask of False.
-        self.inner.check_point_maps("Task.center_points").py()?;
-        map_points(py, circles, |p| self.inner.center_point_of(p))
+    fn center_points<'py>(&self, py: Python<'py>, circles: FloatArray<'py>) -> MappedPoints<'py> {
+        map_points(
+            py,
+            &self.inner,
+            "Task.center_points",
+            circles,
+            Task::center_point_of,
+        )
     }
 
     fn dyad(&self, center: PyPoint) -> PyResult<(Xy, Xy)> {
@@ -541,6 +527,11 @@ impl PyTask {
     }
 }
 
+getters!(PyTask, inner {
+    fn Vec<f64>: rotations;
+    fn f64: scale, span;
+});
+
 #[pymethods]
 impl PyFilemon {
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (Xy,))> {
@@ -568,20 +559,10 @@ impl PyFilemon {
     }
 
     #[getter]
-    fn driven_circle(&self) -> Xy {
-        pt(self.inner.driven_circle())
-    }
-
-    #[getter]
     fn fixed_pivot_images(&self) -> Option<(Xy, Xy, Xy)> {
         // Always there for a crank (every Filemon is one).
         let [a, b, c] = self.inner.fixed_pivot_images()?;
         Some((pt(a), pt(b), pt(c)))
-    }
-
-    #[getter]
-    fn all_defective(&self) -> bool {
-        self.inner.all_defective()
     }
 
     #[getter]
@@ -724,14 +705,15 @@ impl PyFilemon {
             "<Filemon driven_center=({:?}, {:?}) all_defective={}>",
             c0.x,
             c0.y,
-            if self.inner.all_defective() {
-                "True"
-            } else {
-                "False"
-            }
+            py_bool(self.inner.all_defective())
         )
     }
 }
+
+getters!(PyFilemon, inner {
+    fn Xy = pt: driven_circle;
+    fn bool: all_defective;
+});
 
 fn method(s: &str) -> PyResult<burmester::Method> {
     s.parse::<burmester::Method>().py()
@@ -754,10 +736,6 @@ impl PySynthesizedFourBar {
     #[getter]
     fn fourbar(&self) -> PyFourBar {
         self.inner.fourbar.into()
-    }
-    #[getter]
-    fn size(&self) -> f64 {
-        self.inner.size()
     }
     #[getter]
     pub(crate) fn size_ratio(&self) -> f64 {
@@ -799,14 +777,6 @@ impl PySynthesizedFourBar {
             .iter()
             .map(|m| m.map(|m| m.as_str()))
             .collect()
-    }
-    #[getter]
-    fn coupler_point(&self) -> Xy {
-        vec2(self.inner.coupler_point)
-    }
-    #[getter]
-    fn coupler_angle_offset(&self) -> f64 {
-        self.inner.coupler_angle_offset
     }
     #[getter]
     pub(crate) fn figures(&self) -> PyLinkageFigures {
@@ -858,11 +828,13 @@ impl PySynthesizedFourBar {
         format!(
             "<SynthesizedFourBar ground={l1:.6} crank={l2:.6} coupler={l3:.6} rocker={l4:.6} \
              branch_free={}>",
-            if self.inner.is_branch_free() {
-                "True"
-            } else {
-                "False"
-            }
+            py_bool(self.inner.is_branch_free())
         )
     }
 }
+
+getters!(PySynthesizedFourBar, inner {
+    fn f64: size;
+    Xy = vec2: coupler_point;
+    f64: coupler_angle_offset;
+});

@@ -1036,16 +1036,27 @@ pub(crate) fn in_range(
     max: f64,
     unit: &'static str,
 ) -> Result<f64, InvalidInput> {
-    if (min..=max).contains(&value) {
-        Ok(value)
-    } else {
-        Err(InvalidInput::OutsideRange {
-            name,
-            value,
-            min,
-            max,
-            unit,
-        })
+    let inside = (min..=max).contains(&value);
+    inside
+        .then_some(value)
+        .ok_or_else(|| outside(name, value, [min, max], unit))
+}
+
+/// The error of a `value` outside `[min, max]` (or the open interval, as
+/// `unit` says).
+pub(crate) fn outside(
+    name: &'static str,
+    value: f64,
+    range: [f64; 2],
+    unit: &'static str,
+) -> InvalidInput {
+    let [min, max] = range;
+    InvalidInput::OutsideRange {
+        name,
+        value,
+        min,
+        max,
+        unit,
     }
 }
 

@@ -87,7 +87,7 @@ use crate::design::rank::{RankColumns, rank_samples, signed_distances_with, tie_
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::{Control, Rows, run_blocks_polled, run_blocks_with};
 use crate::error::{
-    DegenerateError, DriveError, InvalidInput, Result, count_in, finite_point, in_range,
+    DegenerateError, DriveError, InvalidInput, Result, count_in, finite_point, in_range, outside,
 };
 use crate::geom::{Grid, PerPose, cross, unit, wrap_angle};
 use crate::linkage::grashof::{fmax, fmin};
@@ -610,6 +610,15 @@ pub struct CrankRockerDesign {
     pub min_transmission: f64,
 }
 
+/// Checks that the angle `value` is in the open interval `(0, max)` (NaN
+/// is not), `unit` saying so in the message.
+fn open_angle(name: &'static str, value: f64, max: f64, unit: &'static str) -> Result<f64> {
+    let inside = value > 0.0 && value < max;
+    inside
+        .then_some(value)
+        .ok_or_else(|| outside(name, value, [0.0, max], unit).into())
+}
+
 impl CrankRockerDesign {
     /// The crank-rocker with time ratio 1 whose rocker of length `rocker`
     /// swings through `swing` radians and whose minimum transmission angle
@@ -639,27 +648,10 @@ impl CrankRockerDesign {
     /// ```
     pub fn unit_time_ratio(rocker: f64, swing: f64, min_transmission: f64) -> Result<Self> {
         let rocker = crate::error::positive("rocker length", rocker)?;
-        if !(swing > 0.0 && swing < PI) {
-            return Err(InvalidInput::OutsideRange {
-                name: "swing",
-                value: swing,
-                min: 0.0,
-                max: PI,
-                unit: " radians (exclusive)",
-            }
-            .into());
-        }
+        let swing = open_angle("swing", swing, PI, " radians (exclusive)")?;
         let best = FRAC_PI_2 - 0.5 * swing;
-        if !(min_transmission > 0.0 && min_transmission < best) {
-            return Err(InvalidInput::OutsideRange {
-                name: "min_transmission",
-                value: min_transmission,
-                min: 0.0,
-                max: best,
-                unit: " radians (exclusive; pi/2 - swing/2 is reached only at infinite size)",
-            }
-            .into());
-        }
+        let why = " radians (exclusive; pi/2 - swing/2 is reached only at infinite size)";
+        let min_transmission = open_angle("min_transmission", min_transmission, best, why)?;
         let (h, m) = (rocker * (0.5 * swing).sin(), rocker * (0.5 * swing).cos());
         let q = rocker * min_transmission.cos() / h;
         let t = m / (q * q - 1.0).sqrt();

@@ -1219,18 +1219,7 @@ mod tests {
 
     /// Columns of `n` samples from `seed`: few distinct values, so that
     /// scores tie (exactly and within `RANK_TIE`) often.
-    #[allow(clippy::type_complexity)]
-    fn columns_of(
-        n: usize,
-        seed: u64,
-    ) -> (
-        Vec<bool>,
-        Vec<bool>,
-        Vec<f32>,
-        Vec<f32>,
-        Vec<f32>,
-        Vec<bool>,
-    ) {
+    fn columns_of(n: usize, seed: u64) -> Columns {
         let mut x = seed | 1;
         let mut next = move || {
             x ^= x << 13;
@@ -1238,23 +1227,24 @@ mod tests {
             x ^= x << 17;
             x
         };
-        let mut c = (vec![], vec![], vec![], vec![], vec![], vec![]);
+        let mut c = Columns::for_overwrite(0).unwrap();
         for _ in 0..n {
             let r = next();
-            c.0.push(r % 7 != 0);
-            c.1.push(r % 5 != 0);
+            c.valid.push(r % 7 != 0);
+            c.branch_free.push(r % 5 != 0);
             let mu = match (r >> 8) % 9 {
                 0 => f32::NAN,
                 k => 0.1 * k as f32 + if (r >> 16) % 3 == 0 { 1e-10 } else { 0.0 },
             };
-            c.2.push(mu);
-            c.3.push(1.0 + ((r >> 20) % 4) as f32);
-            c.4.push(if (r >> 24) % 11 == 0 {
+            c.min_transmission_rad.push(mu);
+            c.link_ratio.push(1.0 + ((r >> 20) % 4) as f32);
+            c.size_ratio.push(if (r >> 24) % 11 == 0 {
                 f32::NAN
             } else {
                 1.0 + ((r >> 28) % 5) as f32
             });
-            c.5.push(c.0.last() == Some(&true) && (r >> 32) % 3 != 0);
+            c.acceptable
+                .push(c.valid.last() == Some(&true) && (r >> 32) % 3 != 0);
         }
         c
     }
@@ -1269,15 +1259,8 @@ mod tests {
         fn selection_offers_what_sorting_offered(
             n in 0usize..3000, seed in any::<u64>(), want in 0usize..40, stop in 0usize..200,
         ) {
-            let (valid, bf, mu, ratio, size, acc) = columns_of(n, seed);
-            let cols = RankColumns {
-                valid: &valid,
-                branch_free: &bf,
-                min_transmission_rad: &mu,
-                link_ratio: &ratio,
-                size_ratio: &size,
-                acceptable: &acc,
-            };
+            let columns = columns_of(n, seed);
+            let cols = columns.rank_columns();
             let margin = |s: usize| ((s * 7919) % 13) as f64 - 3.0;
             for rank_by in RankBy::ALL {
                 let want_all = reference(n, rank_by, &cols, &margin);
@@ -1317,15 +1300,8 @@ mod tests {
     #[test]
     fn a_cancelled_selection_stops() {
         static STOP: core::sync::atomic::AtomicBool = core::sync::atomic::AtomicBool::new(true);
-        let (valid, bf, mu, ratio, size, acc) = columns_of(100_000, 3);
-        let cols = RankColumns {
-            valid: &valid,
-            branch_free: &bf,
-            min_transmission_rad: &mu,
-            link_ratio: &ratio,
-            size_ratio: &size,
-            acceptable: &acc,
-        };
+        let columns = columns_of(100_000, 3);
+        let cols = columns.rank_columns();
         let control = Control::new().with_cancel(&STOP);
         for rank_by in RankBy::ALL {
             let r = rank_samples(100_000, rank_by, &cols, &|_| 1.0, 5, &control, |_, _, _| {
@@ -1346,7 +1322,7 @@ mod tests {
     #[test]
     fn the_nearest_other_sample_is_the_transform() {
         let grid = Grid::from_bounds(0.0, 7.0, 0.0, 1.5, 14, 9).unwrap();
-        let (_, flags, ..) = columns_of(grid.len(), 11);
+        let flags = columns_of(grid.len(), 11).branch_free;
         let d = signed_distances_with(&grid, &flags, &Control::new()).unwrap();
         for (k, &want) in d.iter().enumerate() {
             let got = Nearest::new(&grid, &flags).get(k);
