@@ -22,6 +22,8 @@ import numpy.typing as npt
 from typing_extensions import Unpack
 
 __all__ = [
+    "Actuator",
+    "ActuatorMap",
     "AssemblyError",
     "BurmesterError",
     "DegenerateError",
@@ -2505,6 +2507,7 @@ def unit_time_ratio_crank_rocker(
     ``90 - swing_deg / 2``): Norton's construction (*Design of Machinery*,
     Example 3-1), Brodell and Soni's equations."""
 
+@final
 class Actuator:
     """A linear actuator added between a ground pivot and a point of a
     moving link of a four-bar (from :meth:`SynthesizedFourBar.actuator` or
@@ -2601,6 +2604,7 @@ class Actuator:
     ) -> Actuator:
         """Rebuilds a placement from its state (for pickling)."""
 
+@final
 class ActuatorMap:
     """An actuator placement map (from
     :meth:`SynthesizedFourBar.actuator_map`): one read-only NumPy array per

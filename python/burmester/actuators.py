@@ -259,6 +259,8 @@ def draw_actuator(a: burmester.Actuator, *, ax: Optional["Axes"] = None, legend:
                 linewidth=2.0, markersize=4, zorder=4, label=f"pose {k + 1}", gid=f"linkage-{k + 1}")
         ax.fill([ja[0], jb[0], x], [ja[1], jb[1], y], color=c, alpha=0.15, zorder=3)
         q, _ = a.at(t)
+        if a.link == "coupler":  # the bracket that carries Q on the coupler
+            ax.plot([ja[0], q[0], jb[0]], [ja[1], q[1], jb[1]], "--", color=c, linewidth=1.0, zorder=4)
         body, rod = cylinder(a.ground, q, a.min_length, a.stroke, w)
         ax.fill(body[:, 0], body[:, 1], facecolor="0.35", edgecolor="black", linewidth=0.8,
                 zorder=6, alpha=0.9, gid=f"actuator-body-{k + 1}")

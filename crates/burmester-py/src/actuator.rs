@@ -195,7 +195,7 @@ impl PyActuator {
 
     /// `(theta2, x, y, s)` arrays over the travel, `samples` input angles
     /// from the first pose to the last.
-    #[pyo3(signature = (samples = Count(64)))]
+    #[pyo3(signature = (samples = Count(64)), text_signature = "($self, samples=64)")]
     #[allow(clippy::type_complexity)]
     fn travel<'py>(
         &self,
