@@ -71,22 +71,90 @@ fn point_grid(p: Point2<f64>) -> PyResult<Grid> {
     Grid::from_bounds(p.x - h, p.x + h, p.y - h, p.y + h, 1, 1).py()
 }
 
-/// An actuator placement and its figures.
+/// An actuator placement and its figures (read-only attributes, see the
+/// stub).
 #[pyclass(frozen, name = "Actuator", module = "burmester")]
 pub struct PyActuator {
     inner: Actuator,
     task: Task,
     context: ActuatorContext,
+    #[pyo3(get)]
+    link: &'static str,
+    #[pyo3(get)]
+    ground: Xy,
+    #[pyo3(get)]
+    point: Xy,
+    #[pyo3(get)]
+    pose_lengths: Vec<f64>,
+    #[pyo3(get)]
+    turning_points: Vec<f64>,
+    /// `(monotone, extends, acceptable)`.
+    flags: (bool, bool, bool),
+    /// `(min_length, max_length, stroke, stroke_ratio)`.
+    lengths: [f64; 4],
+    /// `(min_transmission_deg, worst_angle, link_ratio, size_ratio, margin,
+    /// score, max_stroke_ratio)`.
+    figures: [f64; 7],
 }
 
 impl PyActuator {
     fn of(inner: Actuator, task: Task, context: &ActuatorContext) -> Self {
+        let a = &inner;
         PyActuator {
-            inner,
+            link: a.link.as_str(),
+            ground: pt(a.ground),
+            point: pt(a.point),
+            pose_lengths: a.pose_lengths.to_vec(),
+            turning_points: a.turning_points.clone(),
+            flags: (a.monotone, a.extends, a.acceptable),
+            lengths: [a.min_length, a.max_length, a.stroke, a.stroke_ratio],
+            figures: [
+                a.min_transmission.to_degrees(),
+                a.worst_angle,
+                a.link_ratio,
+                a.size_ratio,
+                a.margin,
+                a.score,
+                context.options().max_stroke_ratio,
+            ],
             task,
             context: context.clone(),
+            inner,
         }
     }
+}
+
+/// The figures by name, each a getter of one element of
+/// [`PyActuator`]'s arrays.
+macro_rules! actuator_getters {
+    ($($name:ident: $ty:ty = $field:ident $(. $idx:tt)? $([$at:literal])?;)*) => {
+        #[pymethods]
+        impl PyActuator {
+            $(
+                #[getter]
+                fn $name(&self) -> $ty {
+                    self.$field $(.$idx)? $([$at])?
+                }
+            )*
+        }
+    };
+}
+
+actuator_getters! {
+    monotone: bool = flags.0;
+    extends: bool = flags.1;
+    acceptable: bool = flags.2;
+    min_length: f64 = lengths[0];
+    max_length: f64 = lengths[1];
+    stroke: f64 = lengths[2];
+    stroke_ratio: f64 = lengths[3];
+    min_transmission_deg: f64 = figures[0];
+    worst_angle: f64 = figures[1];
+    link_ratio: f64 = figures[2];
+    size_ratio: f64 = figures[3];
+    margin: f64 = figures[4];
+    score: f64 = figures[5];
+    max_stroke_ratio: f64 = figures[6];
 }
 
 #[pymethods]
@@ -96,88 +164,12 @@ impl PyActuator {
         PySynthesizedFourBar::new(self.task, self.inner.linkage)
     }
     #[getter]
-    fn link(&self) -> &'static str {
-        self.inner.link.as_str()
-    }
-    #[getter]
-    fn ground(&self) -> Xy {
-        pt(self.inner.ground)
-    }
-    #[getter]
-    fn point(&self) -> Xy {
-        pt(self.inner.point)
-    }
-    #[getter]
-    fn pose_lengths(&self) -> Vec<f64> {
-        self.inner.pose_lengths.to_vec()
-    }
-    #[getter]
-    fn monotone(&self) -> bool {
-        self.inner.monotone
-    }
-    #[getter]
-    fn extends(&self) -> bool {
-        self.inner.extends
-    }
-    #[getter]
-    fn turning_points(&self) -> Vec<f64> {
-        self.inner.turning_points.clone()
-    }
-    #[getter]
-    fn min_length(&self) -> f64 {
-        self.inner.min_length
-    }
-    #[getter]
-    fn max_length(&self) -> f64 {
-        self.inner.max_length
-    }
-    #[getter]
-    fn stroke(&self) -> f64 {
-        self.inner.stroke
-    }
-    #[getter]
-    fn stroke_ratio(&self) -> f64 {
-        self.inner.stroke_ratio
-    }
-    #[getter]
-    fn min_transmission_deg(&self) -> f64 {
-        self.inner.min_transmission.to_degrees()
-    }
-    #[getter]
-    fn worst_angle(&self) -> f64 {
-        self.inner.worst_angle
-    }
-    #[getter]
-    fn link_ratio(&self) -> f64 {
-        self.inner.link_ratio
-    }
-    #[getter]
-    fn size_ratio(&self) -> f64 {
-        self.inner.size_ratio
-    }
-    #[getter]
-    fn acceptable(&self) -> bool {
-        self.inner.acceptable
-    }
-    #[getter]
     fn index(&self) -> Option<(usize, usize)> {
         self.inner.index
     }
     #[getter]
-    fn margin(&self) -> f64 {
-        self.inner.margin
-    }
-    #[getter]
-    fn score(&self) -> f64 {
-        self.inner.score
-    }
-    #[getter]
     fn ranked_by(&self) -> Option<&'static str> {
         self.inner.ranked_by.map(RankBy::as_str)
-    }
-    #[getter]
-    fn max_stroke_ratio(&self) -> f64 {
-        self.context.options().max_stroke_ratio
     }
     #[getter]
     fn limits(&self) -> PyDesignLimits {
@@ -378,17 +370,14 @@ macro_rules! py_actuator_map {
 burmester::actuator_map_columns!(py_actuator_map);
 
 impl PyActuatorMap {
+    /// The `k` best placements at least `sep` apart by `by`.
     fn ranked(
         &self,
         py: Python<'_>,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
+        (k, sep, by): (usize, Option<f64>, RankBy),
     ) -> PyResult<Vec<PyActuator>> {
         let map = &self.map;
-        let found = py
-            .detach(|| map.best_placements(k, min_separation, rank_by))
-            .py()?;
+        let found = py.detach(|| map.best_placements(k, sep, by)).py()?;
         Ok(found
             .into_iter()
             .map(|a| PyActuator::of(a, self.task, &map.context))
@@ -478,10 +467,10 @@ impl PyActuatorMap {
         rank_by: &str,
     ) -> PyResult<Vec<PyActuator>> {
         let rank_by = rank_by.parse::<RankBy>().py()?;
-        self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
+        self.ranked(py, (k.0, min_separation.map(|r| r.0), rank_by))
     }
     fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyActuator>> {
-        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
+        self.ranked(py, (usize::MAX, Some(0.0), RankBy::Pareto))
     }
 
     /// Rebuilds a map from its state (for pickling): computed again.
