@@ -261,10 +261,9 @@ impl PyActuator {
             let (a, b) = (&o.get().inner, &self.inner);
             // NaN margins and scores compare equal by their bits.
             let same = |x: f64, y: f64| x.to_bits() == y.to_bits();
-            let mut x = a.clone();
-            x.margin = b.margin;
-            x.score = b.score;
-            x == *b
+            let (mut x, mut y) = (a.clone(), b.clone());
+            (x.margin, x.score, y.margin, y.score) = (0.0, 0.0, 0.0, 0.0);
+            x == y
                 && same(a.margin, b.margin)
                 && same(a.score, b.score)
                 && o.get().task == self.task
