@@ -2,7 +2,7 @@
 //!
 //! Each linkage is made from a known four-bar (the task is its coupler at
 //! three to five input angles), so the travel is known. The test drives the
-//! built four-bar densely by its input angle (20 000 steps), places the
+//! built four-bar densely by its input angle (8 000 steps), places the
 //! moving point on the link by its own frame (from the joints, not the
 //! crate's `LinkPoint`), and computes `s = |Q - G|` and the velocity of `Q`
 //! by central differences: the sign changes of the differences of `s` are
@@ -248,7 +248,7 @@ fn placements_agree_with_dense_driving() {
             let ctx = context(&sfb, link, q, &one_grid(g));
             let Ok(a) = ctx.placement(g) else { continue };
             let own = Own::new(&sfb, link, q);
-            let d = dense(&sfb, &own, g, 20_000);
+            let d = dense(&sfb, &own, g, 8_000);
             // Pairs of turning points closer than the placement's sampling
             // are documented as possibly missed.
             let sampled = ctx.travel_angles()[1] - ctx.travel_angles()[0];
