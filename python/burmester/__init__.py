@@ -49,6 +49,8 @@ from burmester._burmester import (
 from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
 from burmester.batch import best_pivots_batch
 from burmester.design import design
+from burmester._burmester import Actuator, ActuatorMap
+from burmester.actuators import design_actuator
 
 __all__ = [
     "AtlasPair",
@@ -91,4 +93,7 @@ __all__ = [
     "slider_branch_free_arcs",
     "slider_curve_branch",
     "unit_time_ratio_crank_rocker",
+    "Actuator",
+    "ActuatorMap",
+    "design_actuator",
 ]

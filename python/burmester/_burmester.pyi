@@ -22,6 +22,8 @@ import numpy.typing as npt
 from typing_extensions import Unpack
 
 __all__ = [
+    "Actuator",
+    "ActuatorMap",
     "AssemblyError",
     "BurmesterError",
     "DegenerateError",
@@ -127,6 +129,13 @@ class DriveOptions(DriveMapOptions, _DriveKeywords, total=False):
 class ClassicDriveOptions(LimitOptions, _DriveKeywords, total=False):
     """The keywords of :meth:`SynthesizedFourBar.classic_drive`: the limits
     but ``input`` and the drive's own."""
+
+class ActuatorMapOptions(LimitOptions, total=False):
+    """The keywords of the actuator placements
+    (:meth:`SynthesizedFourBar.actuator_map`): the limits but ``input`` (the
+    actuator drives) and ``base_plate`` (the ground pivot inside it)."""
+
+    base_plate: Optional[Sequence[Point]]
 
 class MapOptions(DriveMapOptions, total=False):
     """The map option keywords of the solution maps, the pair map and the
@@ -1493,6 +1502,51 @@ class SynthesizedFourBar:
         Raises :class:`DriveError` saying why there is none
         (``"no_acceptable_drive"`` with the best transmission angle found,
         or why no drive can exist)."""
+    # Driving it by a linear actuator added between the ground and a link.
+    def actuator_map(
+        self,
+        *grid: Any,
+        link: Literal["coupler", "crank", "rocker"] = "coupler",
+        point: Optional[Point] = None,
+        max_stroke_ratio: float = 1.8,
+        samples: int = 256,
+        progress: Optional[Progress] = None,
+        **options: Unpack[ActuatorMapOptions],
+    ) -> ActuatorMap:
+        """The actuator placement map: for every candidate ground pivot
+        ``G`` on the grid (a :class:`Grid` or its six numbers), a linear
+        actuator from ``G`` to ``point`` (where it is at pose 1) of ``link``
+        (default: the coupler's ``A C`` middle, the crank's ``A``, the
+        rocker's ``C``), added to this four-bar (whose own branch and order
+        verdicts stand: it must be feasible). Each sample samples the travel
+        from the first pose to the last at ``samples`` input angles (8 to
+        16384): whether the length ``s = |Q - G|`` is monotone (no sign
+        change of ``ds/dtheta2``), the stroke and the stroke ratio (longest
+        over shortest, at most ``max_stroke_ratio``; a cylinder's is below
+        2), the actuator's minimum force transmission angle (90 degrees
+        minus the angle between its line and the velocity of ``Q``; at
+        least the limits' ``min_transmission_deg``), the link and size
+        ratios with the actuator, and ``acceptable``. At most 2**20 samples
+        (1024 x 1024). Releases the GIL; ``progress`` and Ctrl-C as
+        :meth:`Filemon.solution_map`.
+
+        Raises :class:`DriveError` (``"no_travel"``) for an infeasible
+        linkage, :class:`DegenerateError` for a point on the crank's or the
+        rocker's fixed pivot, :class:`InvalidInputError` for bad options (an
+        unknown link, a stroke ratio limit below 1, a grid too large)."""
+    def actuator(
+        self,
+        ground: Point,
+        link: Literal["coupler", "crank", "rocker"] = "coupler",
+        point: Optional[Point] = None,
+        max_stroke_ratio: float = 1.8,
+        samples: int = 256,
+        **options: Unpack[ActuatorMapOptions],
+    ) -> Actuator:
+        """The actuator from the ground pivot ``ground`` (see
+        :meth:`actuator_map`), its turning points refined by bisection and
+        its minimum transmission angle by golden section. Raises
+        :class:`DegenerateError` for a ground pivot on the point's path."""
     def _repr_png_(self) -> Optional[bytes]:
         """The picture Jupyter shows (see :mod:`burmester._display`): PNG
         bytes, or None when matplotlib is not installed."""
@@ -2585,3 +2639,194 @@ def unit_time_ratio_crank_rocker(
     transmission angle over a full turn is ``min_transmission_deg`` (below
     ``90 - swing_deg / 2``): Norton's construction (*Design of Machinery*,
     Example 3-1), Brodell and Soni's equations."""
+
+@final
+class Actuator:
+    """A linear actuator added between a ground pivot and a point of a
+    moving link of a four-bar (from :meth:`SynthesizedFourBar.actuator` or
+    :meth:`ActuatorMap.best_placements`). Lengths in the task's units,
+    angles in radians unless named ``_deg``."""
+
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The four-bar it drives."""
+    @property
+    def link(self) -> str:
+        """``"coupler"``, ``"crank"`` or ``"rocker"``."""
+    @property
+    def ground(self) -> Tuple[float, float]:
+        """The ground pivot ``G``."""
+    @property
+    def point(self) -> Tuple[float, float]:
+        """The moving point ``Q``, where it is at pose 1."""
+    @property
+    def pose_lengths(self) -> list[float]:
+        """The actuator's length at each pose (exact)."""
+    @property
+    def monotone(self) -> bool:
+        """Its length is monotone from the first pose to the last."""
+    @property
+    def extends(self) -> bool:
+        """Its length grows from the first pose to the last."""
+    @property
+    def turning_points(self) -> list[float]:
+        """The input angles inside the travel where ``ds/dtheta2`` changes
+        sign (dead points; empty when monotone)."""
+    @property
+    def min_length(self) -> float:
+        """The shortest length over the travel (closed)."""
+    @property
+    def max_length(self) -> float:
+        """The longest length over the travel (open)."""
+    @property
+    def stroke(self) -> float:
+        """``max_length - min_length``."""
+    @property
+    def stroke_ratio(self) -> float:
+        """``max_length / min_length``."""
+    @property
+    def min_transmission_deg(self) -> float:
+        """The minimum force transmission angle over the travel, degrees
+        (0 when not monotone)."""
+    @property
+    def worst_angle(self) -> float:
+        """The input angle where it is reached, radians."""
+    @property
+    def link_ratio(self) -> float:
+        """The longest over the shortest member, the actuator among them."""
+    @property
+    def size_ratio(self) -> float:
+        """The linkage and the open actuator over the task's span."""
+    @property
+    def acceptable(self) -> bool:
+        """Monotone and within the limits it was placed under."""
+    @property
+    def index(self) -> Optional[Tuple[int, int]]:
+        """Its sample ``(j, i)`` in a map, if it came from one."""
+    @property
+    def margin(self) -> float:
+        """Its distance to the nearest non-monotone sample, grid units (NaN
+        when not from a map)."""
+    @property
+    def score(self) -> float:
+        """Its score by the ranking that chose it (NaN otherwise)."""
+    @property
+    def ranked_by(self) -> Optional[str]:
+        """The ranking that chose it."""
+    @property
+    def max_stroke_ratio(self) -> float:
+        """The stroke ratio limit it was placed under."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits it was placed under."""
+    def at(self, theta2: float) -> Tuple[Tuple[float, float], float]:
+        """``((x, y), s)``: the moving point and the length at input angle
+        ``theta2``."""
+    def travel(
+        self, samples: int = 64
+    ) -> Tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+        """``(theta2, x, y, s)`` over the travel, first pose to last."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_state(
+        linkage: SynthesizedFourBar, point: Point, ground: Point, limits: DesignLimits,
+        options: Tuple[str, float, int],
+        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        extra: Tuple[Optional[Tuple[int, int]], float, float, Optional[str]],
+    ) -> Actuator:
+        """Rebuilds a placement from its state (for pickling)."""
+
+@final
+class ActuatorMap:
+    """An actuator placement map (from
+    :meth:`SynthesizedFourBar.actuator_map`): one read-only NumPy array per
+    column, of shape ``(ny, nx)``, over candidate ground pivots ``G``."""
+
+    columns: list[str]
+    """The names of the columns, in order."""
+    @property
+    def valid(self) -> BoolArray:
+        """The actuator has a length over the whole travel."""
+    @property
+    def monotone(self) -> BoolArray:
+        """Its length is monotone from the first pose to the last."""
+    @property
+    def extends(self) -> BoolArray:
+        """Its length grows from the first pose to the last."""
+    @property
+    def min_transmission_rad(self) -> npt.NDArray[np.float32]:
+        """The minimum force transmission angle over the sampled travel,
+        **radians**; NaN where not valid."""
+    @property
+    def stroke_ratio(self) -> npt.NDArray[np.float32]:
+        """Longest over shortest length over the travel."""
+    @property
+    def stroke(self) -> npt.NDArray[np.float32]:
+        """Longest minus shortest length."""
+    @property
+    def closed_length(self) -> npt.NDArray[np.float32]:
+        """The shortest length."""
+    @property
+    def link_ratio(self) -> npt.NDArray[np.float32]:
+        """Longest over shortest member, the actuator among them."""
+    @property
+    def size_ratio(self) -> npt.NDArray[np.float32]:
+        """The linkage and the open actuator over the task's span."""
+    @property
+    def acceptable(self) -> BoolArray:
+        """Monotone and within the limits and the base plate."""
+    @property
+    def grid(self) -> Grid:
+        """The grid of candidate ground pivots."""
+    @property
+    def extent(self) -> Tuple[float, float, float, float]:
+        """``(xmin, xmax, ymin, ymax)``."""
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """``(ny, nx)``."""
+    @property
+    def linkage(self) -> SynthesizedFourBar:
+        """The four-bar driven."""
+    @property
+    def link(self) -> str:
+        """The link the actuator acts on."""
+    @property
+    def point(self) -> Tuple[float, float]:
+        """The moving point ``Q`` at pose 1."""
+    @property
+    def point_at_poses(self) -> list[Tuple[float, float]]:
+        """Where ``Q`` is at each pose."""
+    @property
+    def limits(self) -> DesignLimits:
+        """The limits behind ``acceptable``."""
+    @property
+    def max_stroke_ratio(self) -> float:
+        """The stroke ratio limit."""
+    @property
+    def samples(self) -> int:
+        """The input angles sampling the travel."""
+    def ground(self, j: int, i: int) -> Tuple[float, float]:
+        """The candidate ground pivot of sample ``(j, i)``."""
+    def placement(self, j: int, i: int) -> Actuator:
+        """The placement of sample ``(j, i)`` (refined)."""
+    def best_placements(
+        self, /, k: int = 5, min_separation: Optional[float] = None,
+        rank_by: RankBy = "balanced",
+    ) -> list[Actuator]:
+        """The ``k`` best placements by ``rank_by`` over the acceptable
+        samples (``"margin"``: the monotone ones by their distance to the
+        nearest non-monotone sample), at least ``min_separation`` apart
+        (default 2% of the view's diagonal)."""
+    def pareto_front(self) -> list[Actuator]:
+        """The acceptable placements on the Pareto front of transmission
+        and size."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_state(
+        linkage: SynthesizedFourBar, point: Point, grid: Grid, limits: DesignLimits,
+        options: Tuple[str, float, int],
+        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+    ) -> ActuatorMap:
+        """Rebuilds a map from its state (for pickling): computed again."""

@@ -72,6 +72,7 @@ def samples():
     b1 = (ipc["center"][0] + ipc["radius"], ipc["center"][1])
     b3 = t.displace(b1, 1, 3)
     slider = burmester.SliderFilemon(t, b1, (b3[0] - b1[0], b3[1] - b1[1]))
+    amap = rocker.actuator_map(*VP, 24, 24)
     return {
         "Grid": Grid(*VP, 30, 20),
         "Conic": f.conics[0],
@@ -110,6 +111,8 @@ def samples():
         "Drive": dmap.drive(*valid[len(valid) // 2]),
         "Drive (best)": rocker.best_drive(),
         "SixBar": rocker.best_drive().sixbar,
+        "ActuatorMap": amap,
+        "Actuator": amap.placement(*np.argwhere(amap.valid)[0]),
     }
 
 
@@ -118,7 +121,7 @@ CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.C
            burmester.AtlasPair, burmester.PairMap, burmester.Pair, burmester.Space, burmester.Design,
            burmester.NearMiss, burmester.DesignReport,
            burmester.SixBar, burmester.Drive, burmester.DriveMap,
-           burmester.SliderFilemon]
+           burmester.SliderFilemon, burmester.Actuator, burmester.ActuatorMap]
 
 
 # ---------------------------------------------------------------------------
@@ -241,6 +244,12 @@ PROPERTIES = {
                         "motion_transmission_deg limits swing_margin_deg max_time_ratio",
     burmester.SliderFilemon: "task circle guide normal directions all_defective lines all_lines sectors conics "
                              "extreme_poses middle_pose",
+    burmester.Actuator: "linkage link ground point pose_lengths monotone extends turning_points min_length "
+                        "max_length stroke stroke_ratio min_transmission_deg worst_angle link_ratio size_ratio "
+                        "acceptable index margin score ranked_by max_stroke_ratio limits",
+    burmester.ActuatorMap: "valid monotone extends min_transmission_rad stroke_ratio stroke closed_length "
+                           "link_ratio size_ratio acceptable grid extent shape linkage link point "
+                           "point_at_poses limits max_stroke_ratio samples",
 }
 
 #: Methods of each class: they take arguments, can fail, or do real work.
@@ -255,7 +264,8 @@ METHODS = {
           "curve_dyad curve_dyads order_arcs branch_free_arcs curve_branch burmester_points burmester_curves burmester_four_bars",
     Filemon: "line_conic is_branch_free classify classify_circle_point circle_signs conic_values four_bar "
              "branch_map margin_map margin solution_map",
-    SynthesizedFourBar: "travel_angles pose_at score drive_map drive classic_drive drive_search best_drive",
+    SynthesizedFourBar: "travel_angles pose_at score drive_map drive classic_drive drive_search best_drive "
+                        "actuator_map actuator",
     SolutionMap: "point linkage margin best_pivots pareto_front",
     burmester.PivotAtlas: "best_pairs",
     burmester.AtlasPair: "linkage",
@@ -265,6 +275,8 @@ METHODS = {
     burmester.Drive: "turn_angles pose_at",
     burmester.DriveMap: "point drive best_drives pareto_front classic_drive",
     burmester.SliderFilemon: "line_conic classify classify_circle_point circle_signs conic_values branch_map",
+    burmester.Actuator: "at travel",
+    burmester.ActuatorMap: "ground placement best_placements pareto_front",
 }
 
 #: Methods without arguments, and why each is a method.
@@ -281,6 +293,7 @@ NO_ARGUMENT_METHODS = {
     (burmester.PairMap, "margins"): "does work: a distance transform over every pair",
     (burmester.PairMap, "pareto_front"): "does work: scans every pair and builds each linkage on the front",
     (burmester.DriveMap, "pareto_front"): "does work: scans every sample and builds each drive on the front",
+    (burmester.ActuatorMap, "pareto_front"): "does work: scans every sample and places each actuator on the front",
 }
 
 
@@ -297,7 +310,7 @@ def test_naming_rule(cls):
     for name in methods:
         assert _kind(cls, name) == "method", (cls.__name__, name)
     attrs = {"columns", "grashof_names"} if cls in (SolutionMap, burmester.PairMap) else set()
-    if cls is burmester.DriveMap:
+    if cls in (burmester.DriveMap, burmester.ActuatorMap):
         attrs = {"columns"}
     for name in attrs:
         assert _kind(cls, name) == "class attribute"

@@ -10,6 +10,7 @@
 
 use pyo3::prelude::*;
 
+mod actuator;
 mod atlas;
 mod classes;
 mod conv;
@@ -33,6 +34,8 @@ mod synthesis;
 /// The native core of the `burmester` package.
 #[pymodule]
 mod _burmester {
+    #[pymodule_export]
+    use crate::actuator::{PyActuator, PyActuatorMap};
     #[pymodule_export]
     use crate::atlas::_atlas_tile;
     #[pymodule_export]

@@ -101,6 +101,17 @@ impl Keys {
         travel_samples: false,
         ..Keys::DRIVE
     };
+    /// An actuator's: the limits but `input` (the actuator drives), and
+    /// the base plate (its ground pivot's only constraint).
+    pub(crate) const ACTUATOR: Keys = Keys {
+        base_plate: true,
+        obstacles: false,
+        link_width: false,
+        travel_samples: false,
+        swing_margin_deg: false,
+        max_time_ratio: false,
+        ..Keys::CLASSIC
+    };
 }
 
 /// `value` as a `T` (`None` as no value where `none` says it may be), a

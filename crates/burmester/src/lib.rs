@@ -140,6 +140,7 @@ pub use design::{
 pub use engine::Control;
 pub use error::{AssemblyError, DegenerateError, DriveError, Error, InvalidInput, Result};
 pub use geom::{CircleOrLine, Conic, ConicKind, Grid, Line, PerPose, Pose, Similarity, Viewport};
+pub use linkage::{ActuatorLink, LinkPoint};
 pub use linkage::{
     AngleInterval, AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, Joints,
     LinkageFigures,

@@ -670,3 +670,54 @@ def cmd_drive(args: argparse.Namespace) -> int:
         _draw_sixbar(args, drive, out, export, None, _units(args, spec), args.turn)
     print(f"wrote {out}", file=shown)
     return 0
+
+
+def cmd_actuator(args: argparse.Namespace) -> int:
+    """``burmester actuator``: a linear actuator for the task's best design:
+    its placement map and the best placement, as a table or JSON, drawn
+    with ``-o``."""
+    from burmester import actuators
+
+    spec = _with_units(_load(args.task), args)
+    out: Optional[str] = args.output
+    if out is not None:
+        _output(out, _types(PICTURE_TYPES), args.force)
+    link = args.link
+    point = (args.point[0], args.point[1]) if args.point is not None else None
+    ratio = args.max_stroke_ratio
+    if not ratio >= 1.0:
+        raise UsageError(f"--max-stroke-ratio must be at least 1, got {ratio:g}")
+    report = burmester.design(spec.task, space=spec.space, limits=spec.limits, top=1)
+    if not len(report):
+        raise UsageError(f"no linkage fits {spec.source}; see 'burmester design'")
+    sfb = report[0].linkage
+    lim = spec.limits
+    if args.max_size_ratio is not None:
+        lim = burmester.DesignLimits(lim.min_transmission_deg, lim.max_link_ratio, lim.input,
+                                     args.max_size_ratio, lim.max_link_length, lim.min_grashof_margin)
+    nx, ny = args.map_grid
+    amap = actuators.actuator_map(sfb, None, (nx, ny), link=link, point=point, max_stroke_ratio=ratio,
+                                  limits=lim)
+    best = amap.best_placements(1, rank_by=args.actuator_rank_by)
+    if not best:
+        mono = int(np.count_nonzero(amap.monotone))
+        raise UsageError(f"no acceptable actuator placement for {spec.source}: {mono} of {amap.monotone.size} "
+                         f"ground pivots give a monotone stroke; try another --point or --link, or relax "
+                         f"--max-stroke-ratio or the limits")
+    a = best[0]
+    if args.json:
+        doc = {"task": spec.source, "actuator": actuators.actuator_record(a)}
+        print(json.dumps(doc, indent=2))
+    else:
+        print(actuators.actuator_table(a, f"{spec.source} (its best design)", spec.units or ""))
+    if out is None:
+        return 0
+    import matplotlib.pyplot as plt
+
+    fig, (left, right) = plt.subplots(1, 2, figsize=(15.0, 6.2))
+    actuators.draw_map(amap, best=3, rank_by=args.actuator_rank_by, ax=left)
+    actuators.draw_actuator(a, ax=right)
+    fig.tight_layout()
+    _save(fig, out, _picture_dpi(args), args.force)
+    print(f"wrote {out}", file=sys.stderr if args.json else sys.stdout)
+    return 0

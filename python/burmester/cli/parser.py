@@ -16,6 +16,7 @@ from burmester.cli.commands import (
     cmd_batch,
     cmd_design,
     cmd_drive,
+    cmd_actuator,
     cmd_example,
     cmd_linkage,
     cmd_map,
@@ -187,7 +188,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"burmester {burmester.__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for add in (_add_map, _add_design, _add_pivots, _add_pairs, _add_linkage, _add_atlas, _add_batch, _add_solve,
-                _add_example, _add_drive):
+                _add_example, _add_drive, _add_actuator):
         add(sub)
     return parser
 
@@ -417,3 +418,34 @@ def _add_drive(sub: _Commands) -> None:
     p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
     _force_arg(p)
     p.set_defaults(func=cmd_drive)
+
+
+def _add_actuator(sub: _Commands) -> None:
+    p = sub.add_parser("actuator", help="a linear actuator (cylinder, gas strut) to drive the task's linkage",
+                       description="Place a linear actuator between a ground pivot and a point of a moving "
+                                   "link of the task's best design (the one-call design): the placement map "
+                                   "over ground pivots (monotone stroke, stroke ratio, force transmission "
+                                   "angle, size) and the best placement.",
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    _task_arg(p)
+    p.add_argument("-o", "--output", default=None,
+                   help="also draw the placement map and the chosen design (.png, .pdf, ...)")
+    _json_arg(p)
+    p.add_argument("--link", choices=("coupler", "crank", "rocker"), default="coupler",
+                   help="the link the actuator acts on (default: coupler)")
+    p.add_argument("--point", nargs=2, type=_finite, metavar=("X", "Y"),
+                   help="the actuator's moving point where it is at pose 1 (default: the middle of the "
+                        "coupler's A C, the crank's A or the rocker's C)")
+    p.add_argument("--max-stroke-ratio", type=_finite, default=1.8, metavar="R",
+                   help="largest acceptable open over closed length (default: 1.8; a cylinder's is below 2)")
+    p.add_argument("--max-size-ratio", type=_finite, default=None, metavar="R",
+                   help="largest size of the linkage with the open actuator over the task's span "
+                        "(default: the task's limits')")
+    p.add_argument("--actuator-rank-by", choices=("balanced", "transmission", "compact", "margin"),
+                   default="balanced", help="which placement to pick (default: balanced)")
+    p.add_argument("--map-grid", nargs=2, type=_ranged(2, 1024), default=(200, 200), metavar=("NX", "NY"),
+                   help="ground pivots sampled over the map's view (default: 200 200)")
+    _units_arg(p)
+    p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
+    _force_arg(p)
+    p.set_defaults(func=cmd_actuator)

@@ -1373,7 +1373,7 @@ fn room(fb: &FourBar, start: f64, span: f64) -> (f64, f64) {
 
 /// The task's span from the poses the linkage reaches: the largest
 /// distance between two of them.
-fn pose_span(linkage: &SynthesizedFourBar) -> f64 {
+pub(crate) fn pose_span(linkage: &SynthesizedFourBar) -> f64 {
     let mode = linkage.modes()[0].unwrap_or(AssemblyMode::Open);
     let pts: Vec<Point2<f64>> = linkage
         .input_angles

@@ -42,6 +42,7 @@
 //! dyad: [`drive`] maps the candidate crank pivots of that dyad (the Watt
 //! II six-bar, [`SixBar`](crate::SixBar)) and ranks them the same way.
 
+pub mod actuator;
 pub mod atlas;
 mod columns;
 mod constraints;
@@ -56,6 +57,10 @@ mod rank;
 pub mod search;
 mod space;
 
+pub use actuator::{
+    Actuator, ActuatorColumns, ActuatorColumnsOut, ActuatorContext, ActuatorMap, ActuatorOptions,
+    ActuatorRankColumns,
+};
 pub use atlas::{AtlasBest, AtlasCell, PivotAtlas};
 pub use columns::{Columns, ColumnsOut};
 pub use constraints::Constraints;

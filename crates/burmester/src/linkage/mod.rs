@@ -2,11 +2,13 @@
 //! range, and the figures a designer checks; the Watt II six-bar that
 //! drives a four-bar's swinging input from a motor ([`SixBar`]).
 
+pub mod actuator;
 pub(crate) mod figures;
 mod fourbar;
 pub(crate) mod grashof;
 pub mod sixbar;
 
+pub use actuator::{ActuatorLink, LinkPoint};
 pub use figures::{Direction, LinkageFigures};
 pub use fourbar::{AssemblyMode, Configuration, FourBar, Joints};
 pub(crate) use grashof::input_bounds;

@@ -1,0 +1,282 @@
+"""A linear actuator as the input: placing it, in words, and in a picture.
+
+The numbers are the core's (:meth:`burmester.SynthesizedFourBar.actuator_map`,
+:class:`burmester.ActuatorMap`, :class:`burmester.Actuator`); this module
+picks a view, formats and draws them. The actuator is drawn as a cylinder:
+a body from the ground pivot ``G`` and a rod to the moving point ``Q``,
+coaxial rectangles whose lengths follow from the stroke (the body holds
+the retracted rod).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+import burmester
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
+    from burmester._burmester import RankBy
+
+Point = Tuple[float, float]
+Extent = Tuple[float, float, float, float]
+
+#: How much of the closed length the body takes (the rest: the rod's eye).
+BODY_SHARE = 0.85
+#: How far the piston stays inside the body at full extension, as a share
+#: of the closed length.
+PISTON_OVERLAP = 0.05
+
+
+def _linkage_of(obj: Any) -> burmester.SynthesizedFourBar:
+    """The four-bar of a :class:`burmester.SynthesizedFourBar` or of a
+    design (anything with a ``linkage``)."""
+    if isinstance(obj, burmester.SynthesizedFourBar):
+        return obj
+    sfb = getattr(obj, "linkage", None)
+    if isinstance(sfb, burmester.SynthesizedFourBar):
+        return sfb
+    raise TypeError(f"expected a SynthesizedFourBar or a design with a linkage, got {type(obj).__name__}")
+
+
+def default_view(sfb: burmester.SynthesizedFourBar, reach: float = 1.0) -> Extent:
+    """A square view about the linkage over its travel: its pivots and the
+    moving joints at the poses, widened by ``reach`` times its size on each
+    side (where a strut's ground pivot may go)."""
+    pts = [sfb.driving[0], sfb.driven[0]]
+    mode = sfb.modes[0] or "open"
+    for t in sfb.input_angles:
+        _, a, b, _ = sfb.fourbar.joints(t, mode)
+        x, y, _ = sfb.pose_at(t, mode)
+        pts += [a, b, (x, y)]
+    xs = [p[0] for p in pts]
+    ys = [p[1] for p in pts]
+    cx, cy = 0.5 * (min(xs) + max(xs)), 0.5 * (min(ys) + max(ys))
+    h = 0.5 * max(max(xs) - min(xs), max(ys) - min(ys)) * (1.0 + 2.0 * reach)
+    return (cx - h, cx + h, cy - h, cy + h)
+
+
+def actuator_map(
+    linkage: Any,
+    view: Optional[Sequence[float]] = None,
+    samples: Tuple[int, int] = (200, 200),
+    **options: Any,
+) -> burmester.ActuatorMap:
+    """The placement map of an actuator for ``linkage`` (a
+    :class:`burmester.SynthesizedFourBar` or a design) over ``view``
+    (default :func:`default_view`) on ``samples`` ``(nx, ny)``; ``options``
+    as :meth:`burmester.SynthesizedFourBar.actuator_map` (``link``,
+    ``point``, ``max_stroke_ratio``, the limits, ``base_plate``)."""
+    sfb = _linkage_of(linkage)
+    v = tuple(view) if view is not None else default_view(sfb)
+    return sfb.actuator_map(*v, *samples, **options)
+
+
+def design_actuator(
+    linkage: Any,
+    view: Optional[Sequence[float]] = None,
+    *,
+    samples: Tuple[int, int] = (200, 200),
+    rank_by: "RankBy" = "balanced",
+    **options: Any,
+) -> burmester.Actuator:
+    """The best actuator for ``linkage`` (a
+    :class:`burmester.SynthesizedFourBar`, or the design
+    :func:`burmester.design` returns): its placement map over ``view``
+    (:func:`actuator_map`) and the best placement by ``rank_by``. Raises
+    :class:`burmester.DriveError` (``"no_acceptable_actuator"``-like: its
+    message says what to relax) when no sample is acceptable."""
+    amap = actuator_map(linkage, view, samples, **options)
+    best = amap.best_placements(1, rank_by=rank_by)
+    if not best:
+        mono = int(np.count_nonzero(amap.monotone))
+        raise burmester.InvalidInputError(
+            f"no acceptable actuator placement in the view ({mono} of {amap.monotone.size} ground "
+            f"pivots give a monotone stroke); widen the view, move the point, or relax "
+            f"max_stroke_ratio ({amap.max_stroke_ratio:g}) or min_transmission_deg "
+            f"({amap.limits.min_transmission_deg:g})"
+        )
+    return best[0]
+
+
+def cylinder(ground: Point, q: Point, closed: float, stroke: float,
+             width: float) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """``(body, rod)``: the actuator from ``ground`` to ``q`` as two coaxial
+    rectangles (closed polygons of 5 points): the body from the ground
+    pivot, ``BODY_SHARE`` of the ``closed`` length long and ``width`` wide;
+    the rod from ``q`` back into the body, long enough to stay
+    ``PISTON_OVERLAP`` of the closed length inside it at full extension
+    (``stroke`` beyond closed), half as wide."""
+    g = np.asarray(ground, dtype=float)
+    p = np.asarray(q, dtype=float)
+    d = p - g
+    s = float(np.hypot(*d))
+    u = d / s
+    n = np.array([-u[1], u[0]])
+    body = BODY_SHARE * closed
+    rod = min(stroke + (1.0 - BODY_SHARE + PISTON_OVERLAP) * closed, s)
+
+    def rect(a: npt.NDArray[np.float64], b: npt.NDArray[np.float64], w: float) -> npt.NDArray[np.float64]:
+        h = 0.5 * w * n
+        return np.array([a + h, b + h, b - h, a - h, a + h])
+
+    return rect(g, g + u * body, width), rect(p - u * rod, p, 0.45 * width)
+
+
+def actuator_record(a: burmester.Actuator) -> Dict[str, Any]:
+    """A placement as a JSON-ready dict (angles in degrees)."""
+    return {
+        "link": a.link,
+        "ground": [a.ground[0], a.ground[1]],
+        "point": [a.point[0], a.point[1]],
+        "pose_lengths": list(a.pose_lengths),
+        "monotone": a.monotone,
+        "extends": a.extends,
+        "turning_points_deg": [math.degrees(t) for t in a.turning_points],
+        "closed_length": a.min_length,
+        "open_length": a.max_length,
+        "stroke": a.stroke,
+        "stroke_ratio": a.stroke_ratio,
+        "max_stroke_ratio": a.max_stroke_ratio,
+        "min_transmission_deg": a.min_transmission_deg,
+        "link_ratio": a.link_ratio,
+        "size_ratio": a.size_ratio,
+        "acceptable": a.acceptable,
+        "ranked_by": a.ranked_by,
+    }
+
+
+def actuator_table(a: burmester.Actuator, source: Optional[str] = None, units: str = "") -> str:
+    """A placement in words: where it goes and what a designer checks."""
+    u = f" {units}" if units else ""
+
+    def p(q: Sequence[float]) -> str:
+        return f"({q[0] + 0.0:.1f}, {q[1] + 0.0:.1f})"
+
+    sfb = a.linkage
+    f = sfb.figures
+    lines = [
+        f"Linear actuator for {source or 'the linkage'}: a {f.grashof} (A0 {p(sfb.driving[0])}, "
+        f"C0 {p(sfb.driven[0])}), its own transmission {f.min_transmission_deg:.1f} deg over the travel",
+        f"  ground pivot G {p(a.ground)}, on the {a.link} at Q {p(a.point)} (pose 1)",
+        f"  length at the poses: " + ", ".join(f"{s:.1f}{u}" for s in a.pose_lengths)
+        + f" ({'extends' if a.extends else 'retracts'} from the first to the last)",
+        f"  closed {a.min_length:.1f}{u}, open {a.max_length:.1f}{u}: stroke {a.stroke:.1f}{u}, "
+        f"stroke ratio {a.stroke_ratio:.3f} (limit {a.max_stroke_ratio:g})",
+    ]
+    if a.monotone:
+        lines.append(f"  monotone over the travel; force transmission at least {a.min_transmission_deg:.1f} deg "
+                     f"(limit {a.limits.min_transmission_deg:g})")
+    else:
+        lines.append("  NOT monotone: the length turns back at input angle(s) "
+                     + ", ".join(f"{math.degrees(t):.1f} deg" for t in a.turning_points))
+    lines.append(f"  link ratio {a.link_ratio:.2f}, size {a.size_ratio:.1f}x the task, "
+                 f"{'acceptable' if a.acceptable else 'NOT acceptable'} under the limits")
+    return "\n".join(lines)
+
+
+def draw_map(amap: burmester.ActuatorMap, *, best: int = 3, rank_by: "RankBy" = "balanced",
+             transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
+             ax: Optional["Axes"] = None, legend: bool = True) -> "Axes":
+    """Draw an actuator placement map: the ground pivots with a monotone
+    stroke (light), those that meet the limits (dark), contours of the
+    actuator's minimum force transmission angle, the moving point's path,
+    the linkage's pivots and the best placements as numbered stars."""
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8.0, 6.4))
+    extent = amap.extent
+    cat = np.where(amap.acceptable, 2, np.where(amap.monotone, 1, 0)).astype(np.int8)
+    cmap = ListedColormap(["#f7f7f7", "#c7e9c0", "#41ab5d"])
+    img = ax.imshow(cat, origin="lower", extent=extent, cmap=cmap, vmin=0, vmax=2,
+                    interpolation="nearest", zorder=0)
+    img.set_gid("actuator-map")
+    handles: List[Any] = [
+        Patch(facecolor="#c7e9c0", edgecolor="0.5", label="monotone stroke"),
+        Patch(facecolor="#41ab5d", edgecolor="0.5", label="meets the limits"),
+    ]
+    mu = np.degrees(np.where(amap.monotone, amap.min_transmission_rad, np.nan))
+    if np.isfinite(mu).any():
+        xs, ys = amap.grid.cell_centers()
+        cs = ax.contour(xs, ys, mu, levels=sorted(transmission_levels), colors="#636363",
+                        linewidths=0.8, zorder=3)
+        cs.set_gid("transmission")
+        ax.clabel(cs, fmt="%g°", fontsize=7)
+    sfb = amap.linkage
+    placements = amap.best_placements(best, rank_by=rank_by) if best > 0 else []
+    if placements:
+        _, xq, yq, _ = placements[0].travel(96)
+        (path,) = ax.plot(xq, yq, color="#d94801", linewidth=2.5, zorder=5,
+                          label=f"Q's path on the {amap.link}")
+        path.set_gid("point-path")
+        handles.append(path)
+        stars = np.array([a.ground for a in placements])
+        (st,) = ax.plot(stars[:, 0], stars[:, 1], "*", markersize=13, color="#ffd700",
+                        markeredgecolor="black", zorder=7, label=f"best ground pivots ({rank_by})")
+        handles.append(st)
+        for k, a in enumerate(placements, start=1):
+            ax.annotate(str(k), a.ground, textcoords="offset points", xytext=(6, 6), fontsize=9)
+    piv = np.array([sfb.driving[0], sfb.driven[0]])
+    (pv,) = ax.plot(piv[:, 0], piv[:, 1], "^", color="0.2", markersize=9, zorder=6,
+                    label="four-bar pivots A0, C0")
+    handles.append(pv)
+    ax.set_xlim(extent[0], extent[1])
+    ax.set_ylim(extent[2], extent[3])
+    ax.set_aspect("equal")
+    ax.set_title(f"Actuator map: the ground pivot G (stroke ratio at most {amap.max_stroke_ratio:g})")
+    if legend:
+        ax.legend(handles=handles, loc="lower left", fontsize="x-small")
+    return ax
+
+
+def draw_actuator(a: burmester.Actuator, *, ax: Optional["Axes"] = None, legend: bool = True,
+                  width: Optional[float] = None) -> "Axes":
+    """Draw the linkage at its poses with the actuator as a cylinder (body
+    and rod) at each: the four-bar's links, the coupler, the actuator's
+    ground pivot and moving point."""
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8.0, 6.4))
+    sfb = a.linkage
+    mode = sfb.modes[0] or "open"
+    poses = list(sfb.input_angles)
+    w = width if width is not None else 0.06 * a.min_length
+    colors = ["#2171b5", "#6a51a3", "#cb181d", "#238b45", "#d94801"]
+    for k, t in enumerate(poses):
+        c = colors[k % len(colors)]
+        o2, ja, jb, o4 = sfb.fourbar.joints(t, mode)
+        x, y, _ = sfb.pose_at(t, mode)
+        ax.plot([o2[0], ja[0], jb[0], o4[0]], [o2[1], ja[1], jb[1], o4[1]], "-o", color=c,
+                linewidth=2.0, markersize=4, zorder=4, label=f"pose {k + 1}", gid=f"linkage-{k + 1}")
+        ax.fill([ja[0], jb[0], x], [ja[1], jb[1], y], color=c, alpha=0.15, zorder=3)
+        q, _ = a.at(t)
+        if a.link == "coupler":  # the bracket that carries Q on the coupler
+            ax.plot([ja[0], q[0], jb[0]], [ja[1], q[1], jb[1]], "--", color=c, linewidth=1.0, zorder=4)
+        body, rod = cylinder(a.ground, q, a.min_length, a.stroke, w)
+        ax.fill(body[:, 0], body[:, 1], facecolor="0.35", edgecolor="black", linewidth=0.8,
+                zorder=6, alpha=0.9, gid=f"actuator-body-{k + 1}")
+        ax.fill(rod[:, 0], rod[:, 1], facecolor="#bdbdbd", edgecolor="black", linewidth=0.8,
+                zorder=5, gid=f"actuator-rod-{k + 1}")
+        ax.plot([q[0]], [q[1]], "o", color=c, markersize=5, zorder=7)
+    _, xq, yq, _ = a.travel(96)
+    ax.plot(xq, yq, ":", color="#d94801", linewidth=1.2, zorder=2, label="Q's path")
+    ax.plot([a.ground[0]], [a.ground[1]], "^", color="black", markersize=10, zorder=8,
+            label="actuator ground pivot G")
+    piv = np.array([sfb.driving[0], sfb.driven[0]])
+    ax.plot(piv[:, 0], piv[:, 1], "^", color="0.2", markersize=9, zorder=8)
+    ax.set_aspect("equal")
+    ax.autoscale()
+    ax.set_title(f"The {a.link} driven by a cylinder: stroke {a.stroke:.0f}, ratio {a.stroke_ratio:.2f}, "
+                 f"force transmission \u2265 {a.min_transmission_deg:.0f}\u00b0")
+    if legend:
+        ax.legend(loc="lower left", fontsize="x-small")
+    return ax

@@ -1,0 +1,618 @@
+//! A linear actuator added to a synthesized four-bar, against dense driving.
+//!
+//! Each linkage is made from a known four-bar (the task is its coupler at
+//! three to five input angles), so the travel is known. The test drives the
+//! built four-bar densely by its input angle (8 000 steps), places the
+//! moving point on the link by its own frame (from the joints, not the
+//! crate's `LinkPoint`), and computes `s = |Q - G|` and the velocity of `Q`
+//! by central differences: the sign changes of the differences of `s` are
+//! the turning points, the extreme lengths the stroke, and the smallest
+//! angle between the actuator's line and the normal to the velocity the
+//! transmission angle. The placement's figures must agree.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+use std::sync::atomic::AtomicBool;
+
+use burmester::design::{ActuatorContext, ActuatorOptions};
+use burmester::{
+    ActuatorLink, AssemblyMode, Constraints, Control, DegenerateError, DesignLimits, DriveError,
+    Dyad, Error, FourBar, Grid, InputRange, InvalidInput, Point2, RankBy, SynthesizedFourBar, Task,
+    Vector2,
+};
+use proptest::prelude::*;
+use proptest::strategy::ValueTree;
+use proptest::test_runner::TestRunner;
+
+mod common;
+
+type P = Point2<f64>;
+
+fn rot(v: Vector2<f64>, a: f64) -> Vector2<f64> {
+    let (s, c) = a.sin_cos();
+    Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y)
+}
+
+/// A task made from a known four-bar at `n` input angles over part of its
+/// input range, and its linkage; `None` where it is not feasible.
+fn known(
+    fb: &FourBar,
+    mode: AssemblyMode,
+    from: f64,
+    width: f64,
+    n: usize,
+) -> Option<(Task, SynthesizedFourBar)> {
+    let arc = match fb.input_range() {
+        InputRange::Full => (0.0, 2.0 * PI),
+        InputRange::Arc(a) | InputRange::TwoArcs(a, _) => (a.start, a.span()),
+    };
+    let travel = (width * arc.1).min(2.0);
+    let t0 = arc.0 + from * (arc.1 - travel);
+    let mut poses = Vec::new();
+    let mut thetas = Vec::new();
+    for k in 0..n {
+        let t = t0 + travel * (k as f64 / (n - 1) as f64);
+        let c = fb.solve(t, mode).ok()?;
+        if c.transmission_angle() < 0.15 {
+            return None;
+        }
+        let p = fb.joints(&c).coupler_point(Vector2::new(0.6, 0.9));
+        poses.push([p.x, p.y, c.theta3]);
+        thetas.push(t);
+    }
+    let task = Task::from_xya(&poses).ok()?;
+    let a1 = fb.input_pivot() + rot(Vector2::x(), thetas[0]) * fb.crank();
+    let c1 = fb.joints_at(thetas[0], mode).ok()?.rocker_joint;
+    let sfb = task
+        .four_bar(
+            &Dyad::new(fb.input_pivot(), a1),
+            &Dyad::new(fb.output_pivot(), c1),
+        )
+        .ok()?;
+    sfb.figures.feasible().then_some((task, sfb))
+}
+
+/// A random feasible linkage from a known four-bar.
+fn random_linkage(runner: &mut TestRunner) -> (Task, SynthesizedFourBar) {
+    loop {
+        let ((l1, l2, l3, l4), (ox, oy, ga), (from, width), crossed, n) = (
+            (1.0f64..4.0, 0.5f64..3.0, 0.5f64..3.5, 0.5f64..3.0),
+            (-2.0f64..2.0, -2.0f64..2.0, -PI..PI),
+            (0.0f64..1.0, 0.2f64..0.8),
+            any::<bool>(),
+            3usize..=5,
+        )
+            .new_tree(runner)
+            .unwrap()
+            .current();
+        let Ok(fb) = FourBar::placed(l1, l2, l3, l4, Point2::new(ox, oy), ga) else {
+            continue;
+        };
+        let mode = if crossed {
+            AssemblyMode::Crossed
+        } else {
+            AssemblyMode::Open
+        };
+        if let Some(found) = known(&fb, mode, from, width, n) {
+            return found;
+        }
+    }
+}
+
+/// The test's own point of `link` at input angle `t`: fixed in the link's
+/// frame taken from the joints at `t0`.
+struct Own {
+    fb: FourBar,
+    mode: AssemblyMode,
+    link: ActuatorLink,
+    local: Vector2<f64>,
+}
+
+impl Own {
+    fn frame(&self, t: f64) -> (P, f64) {
+        let c = self.fb.solve(t, self.mode).unwrap();
+        let j = self.fb.joints(&c);
+        match self.link {
+            ActuatorLink::Crank => (
+                j.input_pivot,
+                (j.crank_joint - j.input_pivot)
+                    .y
+                    .atan2((j.crank_joint - j.input_pivot).x),
+            ),
+            ActuatorLink::Coupler => {
+                let d = j.rocker_joint - j.crank_joint;
+                (j.crank_joint, d.y.atan2(d.x))
+            }
+            ActuatorLink::Rocker => {
+                let d = j.rocker_joint - j.output_pivot;
+                (j.output_pivot, d.y.atan2(d.x))
+            }
+        }
+    }
+    fn new(sfb: &SynthesizedFourBar, link: ActuatorLink, q: P) -> Self {
+        let mode = sfb.modes()[0].unwrap();
+        let mut o = Own {
+            fb: sfb.fourbar,
+            mode,
+            link,
+            local: Vector2::zeros(),
+        };
+        let (origin, a) = o.frame(sfb.travel_stops().unwrap()[0]);
+        o.local = rot(q - origin, -a);
+        o
+    }
+    fn at(&self, t: f64) -> P {
+        let (origin, a) = self.frame(t);
+        origin + rot(self.local, a)
+    }
+}
+
+/// What dense driving finds for the ground pivot `g`.
+struct Dense {
+    turning: Vec<f64>,
+    s_min: f64,
+    s_max: f64,
+    mu_min: f64,
+    step: f64,
+}
+
+fn dense(sfb: &SynthesizedFourBar, own: &Own, g: P, steps: usize) -> Dense {
+    let (start, span) = sfb.travel().unwrap();
+    let h = 1e-6 * span.signum();
+    let mut s = Vec::with_capacity(steps + 1);
+    let mut mu_min = f64::INFINITY;
+    for k in 0..=steps {
+        let t = start + span * k as f64 / steps as f64;
+        let q = own.at(t);
+        let d = q - g;
+        s.push(d.norm());
+        let v = (own.at(t + h) - own.at(t - h)) / (2.0 * h);
+        let beta = (d.x * v.y - d.y * v.x).abs().atan2(d.dot(&v).abs());
+        mu_min = mu_min.min(FRAC_PI_2 - beta);
+    }
+    let mut turning = Vec::new();
+    for k in 1..steps {
+        let (a, b) = (s[k] - s[k - 1], s[k + 1] - s[k]);
+        if a * b < 0.0 {
+            turning.push(start + span * k as f64 / steps as f64);
+        }
+    }
+    // The extreme lengths refined by ternary search about the extreme
+    // samples (the samples alone are off by the square of the step).
+    let angle = |k: usize| start + span * k.min(steps) as f64 / steps as f64;
+    let refine = |sign: f64| {
+        let k = (0..=steps)
+            .max_by(|&a, &b| (sign * s[a]).total_cmp(&(sign * s[b])))
+            .unwrap();
+        let f = |t: f64| sign * (own.at(t) - g).norm();
+        let (mut lo, mut hi) = (angle(k.saturating_sub(1)), angle(k + 1));
+        for _ in 0..100 {
+            let (a, b) = (lo + (hi - lo) / 3.0, hi - (hi - lo) / 3.0);
+            if f(a) < f(b) {
+                lo = a;
+            } else {
+                hi = b;
+            }
+        }
+        (own.at(0.5 * (lo + hi)) - g).norm()
+    };
+    let s_max = refine(1.0).max(s.iter().copied().fold(0.0, f64::max));
+    let s_min = refine(-1.0).min(s.iter().copied().fold(f64::INFINITY, f64::min));
+    Dense {
+        turning,
+        s_min,
+        s_max,
+        mu_min,
+        step: (span / steps as f64).abs(),
+    }
+}
+
+fn context(sfb: &SynthesizedFourBar, link: ActuatorLink, q: P, grid: &Grid) -> ActuatorContext {
+    let options = ActuatorOptions {
+        link,
+        ..ActuatorOptions::default()
+    };
+    ActuatorContext::new(
+        sfb,
+        q,
+        grid,
+        &DesignLimits::default(),
+        &options,
+        &Constraints::none(),
+    )
+    .unwrap()
+}
+
+fn one_grid(p: P) -> Grid {
+    Grid::from_bounds(p.x - 1.0, p.x + 1.0, p.y - 1.0, p.y + 1.0, 1, 1).unwrap()
+}
+
+/// Placements at random ground pivots agree with dense driving: the
+/// monotone verdict and the turning points, the stroke, the transmission
+/// angle.
+#[test]
+fn placements_agree_with_dense_driving() {
+    let mut runner = TestRunner::new(common::config(1));
+    let (mut checked, mut turning, mut monotone) = (0, 0, 0);
+    for case in 0..40 {
+        let (task, sfb) = random_linkage(&mut runner);
+        let link = ActuatorLink::ALL[case % 3];
+        let c = common::centroid(task.poses());
+        let r = task.span();
+        for _ in 0..5 {
+            let (qx, qy, gx, gy) = (-1.0f64..1.0, -1.0f64..1.0, -2.0f64..2.0, -2.0f64..2.0)
+                .new_tree(&mut runner)
+                .unwrap()
+                .current();
+            let q = sfb.driving.circle + Vector2::new(qx, qy) * r;
+            let g = c + Vector2::new(gx, gy) * r;
+            let ctx = context(&sfb, link, q, &one_grid(g));
+            let Ok(a) = ctx.placement(g) else { continue };
+            let own = Own::new(&sfb, link, q);
+            let d = dense(&sfb, &own, g, 8_000);
+            // Pairs of turning points closer than the placement's sampling
+            // are documented as possibly missed.
+            let sampled = ctx.travel_angles()[1] - ctx.travel_angles()[0];
+            let close = d
+                .turning
+                .windows(2)
+                .any(|w| (w[1] - w[0]).abs() < 2.0 * sampled.abs());
+            if close {
+                continue;
+            }
+            checked += 1;
+            assert_eq!(
+                a.monotone,
+                d.turning.is_empty(),
+                "case {case}: {:?} vs {:?}",
+                a.turning_points,
+                d.turning
+            );
+            assert_eq!(a.turning_points.len(), d.turning.len());
+            for (x, y) in a.turning_points.iter().zip(&d.turning) {
+                assert!((x - y).abs() <= 2.0 * d.step, "turning point {x} vs {y}");
+            }
+            if a.monotone {
+                monotone += 1;
+            } else {
+                turning += 1;
+                assert_eq!(a.min_transmission, 0.0);
+            }
+            let tol = 1e-7 * d.s_max;
+            assert!(
+                (a.min_length - d.s_min).abs() < tol,
+                "{} {}",
+                a.min_length,
+                d.s_min
+            );
+            assert!((a.max_length - d.s_max).abs() < tol);
+            assert!((a.stroke_ratio - d.s_max / d.s_min).abs() < 1e-6 * a.stroke_ratio);
+            if a.monotone {
+                assert!(
+                    (a.min_transmission - d.mu_min).abs() < 1e-5,
+                    "mu {} vs dense {}",
+                    a.min_transmission,
+                    d.mu_min
+                );
+            }
+            // Not monotone: the length turns back where the line is normal
+            // to the velocity, or where the point stops (a rocker at its
+            // limit position); the placement's minimum is 0 by definition.
+            // The lengths at the poses are exact.
+            for (k, &t) in sfb.travel_stops().unwrap().iter().enumerate() {
+                assert!(((own.at(t) - g).norm() - a.pose_lengths[k]).abs() < 1e-9 * d.s_max);
+            }
+            // Extending: the last pose's length is the longer.
+            if a.monotone {
+                let l = a.pose_lengths;
+                assert_eq!(a.extends, l[l.len() - 1] > l[0]);
+            }
+        }
+    }
+    assert!(
+        checked >= 150 && turning >= 20 && monotone >= 20,
+        "{checked} {turning} {monotone}"
+    );
+}
+
+/// A ground pivot on the line through `Q` normal to its velocity at an
+/// interior pose makes `ds/dtheta2` vanish there: not monotone, with the
+/// turning point at that pose.
+#[test]
+fn a_pivot_on_the_normal_at_an_interior_pose_is_not_monotone() {
+    let mut runner = TestRunner::new(common::config(1));
+    let mut n = 0;
+    while n < 30 {
+        let (task, sfb) = random_linkage(&mut runner);
+        let stops = sfb.travel_stops().unwrap();
+        let link = ActuatorLink::ALL[n % 3];
+        let q = sfb.driving.circle
+            + (sfb.driven.circle - sfb.driving.circle) * 0.4
+            + Vector2::new(0.0, 0.3 * task.span());
+        let probe = context(&sfb, link, q, &one_grid(q));
+        let lp = probe
+            .placement(q + Vector2::new(10.0, 10.0) * task.span())
+            .unwrap();
+        let tm = stops[1];
+        let (qm, _) = lp.at(tm).unwrap();
+        let (_, v) = lp.link_point().at(tm).unwrap();
+        if v.norm() < 1e-3 * task.span() {
+            continue;
+        }
+        let normal = Vector2::new(-v.y, v.x) / v.norm();
+        for t in [0.8, -0.8] {
+            let g = qm + normal * t * task.span();
+            let a = probe.placement(g).unwrap();
+            assert!(!a.monotone);
+            assert_eq!(a.min_transmission, 0.0);
+            let near = a.turning_points.iter().any(|x| (x - tm).abs() < 1e-9);
+            assert!(near, "{:?} vs {tm}", a.turning_points);
+        }
+        n += 1;
+    }
+}
+
+/// The map's samples are the placements' sampled figures; the best
+/// placements are acceptable, monotone, in order and apart.
+#[test]
+fn map_and_ranking_agree_with_placements() {
+    let mut runner = TestRunner::new(common::config(1));
+    let mut ranked = 0;
+    for case in 0..8 {
+        let (task, sfb) = random_linkage(&mut runner);
+        let link = ActuatorLink::ALL[case % 3];
+        let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.5;
+        let c = common::centroid(task.poses());
+        let r = 2.0 * task.span();
+        let grid = Grid::from_bounds(c.x - r, c.x + r, c.y - r, c.y + r, 40, 30).unwrap();
+        let limits = DesignLimits {
+            min_transmission: 20f64.to_radians(),
+            ..DesignLimits::default()
+        };
+        let options = ActuatorOptions {
+            link,
+            max_stroke_ratio: 2.5,
+            ..ActuatorOptions::default()
+        };
+        let ctx =
+            ActuatorContext::new(&sfb, q, &grid, &limits, &options, &Constraints::none()).unwrap();
+        let map = ctx.map(&Control::new()).unwrap();
+        let cols = &map.columns;
+        for k in (0..grid.len()).step_by(7) {
+            let Ok(a) = ctx.placement_at(k) else {
+                assert!(!cols.valid[k]);
+                continue;
+            };
+            assert!(cols.valid[k]);
+            assert_eq!(cols.monotone[k], a.monotone);
+            assert_eq!(cols.extends[k], a.extends);
+            // Refined: never above the sampled minimum.
+            assert!(a.min_transmission <= f64::from(cols.min_transmission_rad[k]) + 1e-6);
+            if a.monotone {
+                assert!(
+                    (f64::from(cols.stroke_ratio[k]) - a.stroke_ratio).abs()
+                        < 1e-5 * a.stroke_ratio
+                );
+                assert!(
+                    (f64::from(cols.closed_length[k]) - a.min_length).abs() < 1e-5 * a.max_length
+                );
+            }
+        }
+        for rank_by in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
+            let best = map.best_placements(5, None, rank_by).unwrap();
+            for w in best.windows(2) {
+                assert!(w[0].score >= w[1].score);
+                assert!((w[0].ground - w[1].ground).norm() >= 0.02 * grid.viewport().diagonal());
+            }
+            for a in &best {
+                ranked += 1;
+                assert!(a.monotone && a.acceptable, "{a:?}");
+                assert!(a.stroke_ratio <= 2.5 + 1e-9);
+                let (j, i) = a.index.unwrap();
+                assert!(map.columns.acceptable[j * grid.nx() + i]);
+            }
+        }
+        let margin = map.best_placements(3, None, RankBy::Margin).unwrap();
+        assert!(margin.iter().all(|a| a.monotone && a.margin > 0.0));
+    }
+    assert!(ranked > 0);
+}
+
+/// Moving, rotating and scaling the linkage, the point and the pivot keeps
+/// every figure (lengths scale).
+#[test]
+fn figures_are_invariant_under_similarities() {
+    let mut runner = TestRunner::new(common::config(1));
+    for case in 0..20 {
+        let (task, sfb) = random_linkage(&mut runner);
+        let link = ActuatorLink::ALL[case % 3];
+        let (sx, sy, sa, ss, gx, gy) = (
+            -5.0f64..5.0,
+            -5.0f64..5.0,
+            -PI..PI,
+            0.1f64..10.0,
+            -1.5f64..1.5,
+            -1.5f64..1.5,
+        )
+            .new_tree(&mut runner)
+            .unwrap()
+            .current();
+        let map = |p: P| Point2::from(rot(p.coords, sa) * ss + Vector2::new(sx, sy));
+        let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.3;
+        let g = common::centroid(task.poses()) + Vector2::new(gx, gy) * task.span();
+        let poses: Vec<[f64; 3]> = task
+            .poses()
+            .iter()
+            .map(|p| {
+                let m = map(p.position);
+                [m.x, m.y, p.angle + sa]
+            })
+            .collect();
+        let task2 = Task::from_xya(&poses).unwrap();
+        let sfb2 = task2
+            .four_bar(
+                &Dyad::new(map(sfb.driving.center), map(sfb.driving.circle)),
+                &Dyad::new(map(sfb.driven.center), map(sfb.driven.circle)),
+            )
+            .unwrap();
+        let a = context(&sfb, link, q, &one_grid(g)).placement(g).unwrap();
+        let b = context(&sfb2, link, map(q), &one_grid(map(g)))
+            .placement(map(g))
+            .unwrap();
+        assert_eq!(a.monotone, b.monotone);
+        assert_eq!(a.turning_points.len(), b.turning_points.len());
+        assert!((a.stroke_ratio - b.stroke_ratio).abs() < 1e-9 * a.stroke_ratio);
+        assert!((a.stroke * ss - b.stroke).abs() < 1e-8 * b.max_length);
+        assert!((a.min_transmission - b.min_transmission).abs() < 1e-7);
+        assert!((a.size_ratio - b.size_ratio).abs() < 1e-9 * a.size_ratio);
+        assert!((a.link_ratio - b.link_ratio).abs() < 1e-9 * a.link_ratio);
+    }
+}
+
+/// Bad input: typed errors saying what to change.
+#[test]
+fn bad_input_gives_typed_errors() {
+    let mut runner = TestRunner::new(common::config(1));
+    let (task, sfb) = random_linkage(&mut runner);
+    let q = sfb.driven.circle;
+    let g = one_grid(common::centroid(task.poses()));
+    let limits = DesignLimits::default();
+    let none = Constraints::none();
+    let new =
+        |o: &ActuatorOptions, c: &Constraints| ActuatorContext::new(&sfb, q, &g, &limits, o, c);
+    let bad = ActuatorOptions {
+        max_stroke_ratio: 0.5,
+        ..ActuatorOptions::default()
+    };
+    assert!(matches!(
+        new(&bad, &none),
+        Err(Error::InvalidInput(InvalidInput::OutsideRange {
+            name: "max_stroke_ratio",
+            ..
+        }))
+    ));
+    let bad = ActuatorOptions {
+        max_stroke_ratio: f64::NAN,
+        ..ActuatorOptions::default()
+    };
+    assert!(new(&bad, &none).is_err());
+    for n in [2, ActuatorOptions::MAX_TRAVEL_SAMPLES + 1] {
+        let bad = ActuatorOptions {
+            travel_samples: n,
+            ..ActuatorOptions::default()
+        };
+        assert!(matches!(
+            new(&bad, &none),
+            Err(Error::InvalidInput(InvalidInput::CountOutOfRange { .. }))
+        ));
+    }
+    let obstacles = Constraints {
+        obstacles: vec![vec![P::new(0.0, 0.0), P::new(1.0, 0.0), P::new(0.0, 1.0)]],
+        ..Constraints::none()
+    };
+    let e = new(&ActuatorOptions::default(), &obstacles).unwrap_err();
+    assert!(matches!(
+        e,
+        Error::InvalidInput(InvalidInput::UnknownName { .. })
+    ));
+    assert!(e.to_string().contains("base_plate"), "{e}");
+    // A point on the crank's fixed pivot does not move.
+    let crank = ActuatorOptions {
+        link: ActuatorLink::Crank,
+        ..ActuatorOptions::default()
+    };
+    let e = ActuatorContext::new(&sfb, sfb.driving.center, &g, &limits, &crank, &none).unwrap_err();
+    assert!(
+        matches!(e, Error::Degenerate(DegenerateError::ZeroLengthLink { .. })),
+        "{e}"
+    );
+    let nan = ActuatorContext::new(
+        &sfb,
+        P::new(f64::NAN, 0.0),
+        &g,
+        &limits,
+        &ActuatorOptions::default(),
+        &none,
+    );
+    assert!(matches!(
+        nan,
+        Err(Error::InvalidInput(InvalidInput::NotFinite { .. }))
+    ));
+    // The ground pivot on the point's path: no actuator.
+    let ctx = new(&ActuatorOptions::default(), &none).unwrap();
+    let e = ctx.placement(q).unwrap_err();
+    assert!(
+        matches!(e, Error::Degenerate(DegenerateError::ZeroLengthLink { .. })),
+        "{e}"
+    );
+    assert!(ctx.placement(P::new(f64::INFINITY, 0.0)).is_err());
+    // An infeasible linkage: the four-bar's own verdict stands.
+    let mut infeasible = sfb;
+    infeasible.figures.one_circuit = false;
+    let e = ActuatorContext::new(
+        &infeasible,
+        q,
+        &g,
+        &limits,
+        &ActuatorOptions::default(),
+        &none,
+    )
+    .unwrap_err();
+    assert_eq!(e, Error::Drive(DriveError::NoTravel));
+    let map = ctx.map(&Control::new()).unwrap();
+    assert!(matches!(
+        map.best_placements(1, Some(-1.0), RankBy::Balanced),
+        Err(Error::InvalidInput(InvalidInput::OutsideRange { .. }))
+    ));
+}
+
+/// The documented maximum grid is mapped; one more row is refused; a
+/// cancelled map stops.
+#[test]
+fn documented_maximum_grid_and_cancelling() {
+    let mut runner = TestRunner::new(common::config(1));
+    let (task, sfb) = random_linkage(&mut runner);
+    let c = common::centroid(task.poses());
+    let r = 2.0 * task.span();
+    let options = ActuatorOptions {
+        travel_samples: ActuatorOptions::MIN_TRAVEL_SAMPLES,
+        ..ActuatorOptions::default()
+    };
+    let side = 1024;
+    assert_eq!(side * side, ActuatorContext::MAX_GRID_SAMPLES);
+    let grid = Grid::from_bounds(c.x - r, c.x + r, c.y - r, c.y + r, side, side).unwrap();
+    // The middle of the coupler's A C: it does not stop over the travel
+    // (C does where the rocker reverses).
+    let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.5;
+    let limits = DesignLimits::default();
+    let none = Constraints::none();
+    let ctx = ActuatorContext::new(&sfb, q, &grid, &limits, &options, &none).unwrap();
+    let map = ctx.map(&Control::new()).unwrap();
+    assert_eq!(map.columns.valid.len(), side * side);
+    let valid = map.columns.valid.iter().filter(|&&m| m).count();
+    let mono = map.columns.monotone.iter().filter(|&&m| m).count();
+    assert!(
+        mono > 0,
+        "{valid} valid, {mono} monotone of {}",
+        side * side
+    );
+    assert!(map.columns.monotone.iter().any(|&m| !m));
+    let big = Grid::from_bounds(c.x - r, c.x + r, c.y - r, c.y + r, side, side + 1).unwrap();
+    assert!(matches!(
+        ActuatorContext::new(&sfb, q, &big, &limits, &options, &none),
+        Err(Error::InvalidInput(InvalidInput::GridSize { .. }))
+    ));
+    let stop = AtomicBool::new(true);
+    let e = ctx.map(&Control::new().with_cancel(&stop)).unwrap_err();
+    assert!(matches!(e, Error::Cancelled { .. }));
+    // The most travel samples.
+    let most = ActuatorOptions {
+        travel_samples: ActuatorOptions::MAX_TRAVEL_SAMPLES,
+        ..ActuatorOptions::default()
+    };
+    let one = one_grid(c);
+    let a = ActuatorContext::new(&sfb, q, &one, &limits, &most, &none)
+        .unwrap()
+        .placement(c + Vector2::new(0.0, -r))
+        .unwrap();
+    assert!(a.max_length > 0.0);
+}
