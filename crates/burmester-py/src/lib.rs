@@ -24,6 +24,7 @@ mod options;
 mod pairs;
 mod run;
 mod search;
+mod slider;
 mod sweep;
 mod synthesis;
 
@@ -54,6 +55,8 @@ mod _burmester {
     use crate::search::{
         _design, _design_from_atlas, _design_plan, PyDesign, PyDesignReport, PyNearMiss, PySpace,
     };
+    #[pymodule_export]
+    use crate::slider::{PySliderConfiguration, PySliderCrank, PySynthesizedSliderCrank};
     #[pymodule_export]
     use crate::synthesis::PyPole;
 
