@@ -1997,6 +1997,13 @@ def slider_crank(
         _draw_guide(ax, sc, obj.input_angles[0], first)
         for k, (t, m) in enumerate(zip(obj.input_angles, modes), start=1):
             _draw_slider_at(ax, sc, t, m or first, POSE_COLORS[k], f"linkage-{k}", alpha=0.85)
+            # The coupler plate: the crank tip, the slider pin and the task's coupler point.
+            _, tip, pin = sc.joints(t, m or first)
+            px, py, _ = obj.pose_at(t, m or first)
+            plate = Polygon(np.array([tip, pin, (px, py)]), closed=True, facecolor=POSE_COLORS[k],
+                            edgecolor=POSE_COLORS[k], alpha=0.15, zorder=3)
+            plate.set_gid(f"coupler-{k}")
+            ax.add_patch(plate)
         if obj.travel is not None:
             ts = np.array(obj.travel_angles(361))
             xs, ys, ok = sc.coupler_path(obj.coupler_point, ts, first)
@@ -2071,7 +2078,7 @@ def animate_slider_crank(
     fig, ax = plt.subplots(figsize=(6.0, 5.0))
     slider_crank(s, labels=False, legend=False, units=units, ax=ax)
     for art in list(ax.get_children()):
-        if getattr(art, "get_gid", lambda: None)() and str(art.get_gid()).startswith("linkage-"):
+        if str(art.get_gid()).startswith(("linkage-", "coupler-")):
             art.remove()
     scenes = [_scene.slider_scene(sc, t, mode) for t in sequence]
     polys = [(np.array([x.pivot, x.crank_joint, x.slider_joint]), np.array(x.block)) for x in scenes]
