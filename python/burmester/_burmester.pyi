@@ -63,6 +63,9 @@ __all__ = [
     "_design_plan",
     "_design_from_atlas",
     "__version__",
+    "SliderConfiguration",
+    "SliderCrank",
+    "SynthesizedSliderCrank",
 ]
 
 __version__: str
@@ -863,6 +866,19 @@ class Task:
     def four_bar(self, driving_center: Point, driven_center: Point) -> SynthesizedFourBar:
         """The four-bar built from the dyads with these center points (their
         circle points as :meth:`dyad`), with its figures at every pose."""
+    def slider_crank(
+        self, driving: Tuple[Point, Point], driven: Tuple[Point, Point]
+    ) -> SynthesizedSliderCrank:
+        """The slider-crank of the driving crank ``(A0, A1)`` (its circle
+        point ``A1`` a circle point of ``A0``) and the driven slider
+        ``(C1, u)``: its pin ``C1`` at pose 1 and the guide's direction
+        ``u`` (the guide is the line through ``C1`` along ``u``; ``u`` need
+        not be unit). Raises :class:`InvalidInputError` (``cause``
+        ``"not_a_dyad"``) when ``A1`` is not a circle point of ``A0``, or
+        (``"not_a_slider"``) when the slider's positions over the poses
+        leave its guide (take a slider point of the task and the line
+        through its positions), and :class:`DegenerateError` for a coupler
+        of no length."""
     @overload
     def driven_solution_map(
         self,
@@ -2830,3 +2846,215 @@ class ActuatorMap:
         constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
     ) -> ActuatorMap:
         """Rebuilds a map from its state (for pickling): computed again."""
+
+# slider linkages (issue 27)
+
+@final
+class SliderConfiguration:
+    """One solved position of a slider-crank (from :meth:`SliderCrank.solve`)."""
+
+    @property
+    def theta2(self) -> float:
+        """The crank angle, as given."""
+    @property
+    def theta3(self) -> float:
+        """The coupler angle (from the crank tip ``A`` to the slider pin
+        ``B``), in (-pi, pi]."""
+    @property
+    def slider(self) -> float:
+        """The slider's position: ``B``'s signed distance along the guide's
+        direction from the foot of the perpendicular from the crank pivot."""
+    @property
+    def mode(self) -> Mode:
+        """The assembly mode asked for."""
+    @property
+    def toggle(self) -> bool:
+        """True at a toggle (a dead position of the crank: the coupler
+        perpendicular to the guide), where both modes coincide."""
+    @property
+    def transmission_angle(self) -> float:
+        """The angle between the coupler and the normal to the guide, in
+        [0, pi/2] radians (pi/2 ideal, 0 at a dead position)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+
+@final
+class SliderCrank:
+    """A slider-crank (RRRP): a crank about ``pivot`` (``A0``), a coupler,
+    and a slider pin on a straight guide fixed to the ground, the line
+    through ``guide_point`` in the direction ``guide``.
+
+    Parts go by keyword only: ``SliderCrank(crank=..., coupler=...,
+    guide_point=(x, y), guide=(1, 0), pivot=(0, 0))``.
+
+    The two assembly modes carry the four-bar's names in the limit of a
+    rocker pivot far along the guide's normal ``n = i·u``: ``"open"`` where
+    the slider pin is behind the foot of the perpendicular from the crank
+    tip (``<B - A, u> < 0``; Norton's first solution ``theta3_1`` of the
+    offset slider-crank, eq. 4.16a), ``"crossed"`` where it is ahead (so a
+    slider ahead of the crank along ``guide``, the usual layout, is
+    ``"crossed"``). Turning the guide's direction round swaps the names.
+
+    Raises :class:`InvalidInputError` for a length that is not positive and
+    finite, a point that is not finite, a zero direction or a linkage
+    larger than 1e300, and :class:`AssemblyError` (``cause``
+    ``"guide_out_of_reach"``) when the guide is farther from the pivot than
+    crank and coupler reach.
+    """
+
+    def __new__(
+        cls,
+        *,
+        crank: float,
+        coupler: float,
+        guide_point: Point,
+        guide: Point = (1.0, 0.0),
+        pivot: Point = (0.0, 0.0),
+    ) -> "SliderCrank": ...
+    def __getnewargs_ex__(self) -> Tuple[Tuple[()], dict[str, Any]]: ...
+    @property
+    def crank(self) -> float:
+        """The crank length ``r``."""
+    @property
+    def coupler(self) -> float:
+        """The coupler length ``l``."""
+    @property
+    def pivot(self) -> Point:
+        """The crank pivot ``A0``."""
+    @property
+    def guide(self) -> Point:
+        """The guide's unit direction ``u``."""
+    @property
+    def guide_normal(self) -> Point:
+        """The guide's unit normal ``n = i·u``."""
+    @property
+    def foot(self) -> Point:
+        """The foot of the perpendicular from the pivot to the guide: where
+        the slider's position is zero."""
+    @property
+    def offset(self) -> float:
+        """``e``: the pivot's signed distance from the guide (along ``n``)."""
+    @property
+    def link_ratio(self) -> float:
+        """Longest over shortest of the crank and the coupler."""
+    @property
+    def turns_fully(self) -> bool:
+        """Whether the crank turns fully: ``r + |e| <= l``."""
+    @property
+    def input_range(self) -> Optional[list[Tuple[float, float]]]:
+        """None when the crank turns fully, else its ``(start, end)`` arcs
+        (counter-clockwise), bounded by the dead positions where the coupler
+        is perpendicular to the guide."""
+    @property
+    def dead_positions(self) -> list[float]:
+        """The crank angles that bound the input range (empty for a crank
+        that turns fully): the dead positions of a crank input."""
+    @property
+    def collinear_positions(self) -> list[Tuple[float, float, Mode]]:
+        """``(theta2, slider, mode)`` where crank and coupler are collinear
+        (``|B - A0| = l + r`` or ``|l - r|``): the slider's limit positions,
+        the dead positions of a slider input."""
+    def guide_point(self, slider: float) -> Point:
+        """The point of the guide at this slider position."""
+    def solve(self, theta2: float, mode: Mode = "open") -> SliderConfiguration:
+        """The position at crank angle ``theta2``. Raises
+        :class:`AssemblyError` (``cause`` ``"slider_out_of_reach"``) where
+        the crank tip is farther from the guide than the coupler is long,
+        :class:`InvalidInputError` for an angle that is not finite or beyond
+        1e9 in magnitude."""
+    def joints(self, theta2: float, mode: Mode = "open") -> Tuple[Point, Point, Point]:
+        """``(A0, A, B)``: the crank pivot, the crank tip and the slider pin."""
+    def coupler_point(self, theta2: float, point: Point, mode: Mode = "open") -> Point:
+        """Where the coupler point ``point`` (in the coupler frame: origin at
+        the crank tip, x toward the slider pin) is."""
+    def coupler_path(
+        self, point: Point, theta2s: ArrayLike, mode: Mode = "open"
+    ) -> Tuple[FloatArray, FloatArray, BoolArray]:
+        """``(xs, ys, ok)`` of the coupler point over the crank angles (NaN
+        and False where the loop does not close); arrays of the input's
+        shape. Raises :class:`InvalidInputError` for a point that is not
+        finite and ``MemoryError`` when the arrays cannot be allocated."""
+    def limits(self, mode: Mode = "open") -> Tuple[Tuple[float, float], Tuple[float, float]]:
+        """``((theta2, slider), (theta2, slider))``: the lowest and the
+        highest slider position in ``mode`` over the input range."""
+    def stroke(self, mode: Mode = "open") -> float:
+        """The distance between the :meth:`limits`; for a crank that turns
+        fully ``sqrt((l + r)^2 - e^2) - sqrt((l - r)^2 - e^2)``."""
+    def __eq__(self, other: object, /) -> bool: ...
+
+@final
+class SynthesizedSliderCrank:
+    """A slider-crank built from a driving crank ``(A0, A1)`` and a driven
+    slider ``(C1, u)`` of a task (:meth:`Task.slider_crank`); driving it to
+    ``input_angles[k]`` in ``modes[k]`` places the task's coupler point and
+    angle at pose ``k + 1``."""
+
+    @property
+    def linkage(self) -> SliderCrank:
+        """The linkage (crank pivot ``A0``, the guide through ``C1``)."""
+    @property
+    def driving(self) -> Tuple[Point, Point]:
+        """``(A0, A1)``."""
+    @property
+    def driven(self) -> Tuple[Point, Point]:
+        """``(C1, u)``: the slider's pin at pose 1 and the guide's unit
+        direction."""
+    @property
+    def input_angles(self) -> list[float]:
+        """The crank angle at each pose, in (-pi, pi]."""
+    @property
+    def modes(self) -> list[Optional[Mode]]:
+        """The assembly mode at each pose (None at a toggle)."""
+    @property
+    def slider_positions(self) -> list[float]:
+        """The slider's position at each pose."""
+    @property
+    def coupler_point(self) -> Point:
+        """The task's coupler point in the coupler frame."""
+    @property
+    def coupler_angle_offset(self) -> float:
+        """Task coupler angle minus the linkage's theta3."""
+    @property
+    def direction(self) -> Direction:
+        """The crank rotation that carries the coupler through the poses in
+        order (``"none"``: an order defect or poses on two circuits)."""
+    @property
+    def one_circuit(self) -> bool:
+        """Whether the crank angles at the poses lie on one arc of its range."""
+    @property
+    def min_transmission_deg(self) -> Optional[float]:
+        """The smallest transmission angle over the travel, degrees; None
+        without a travel."""
+    @property
+    def stroke_used(self) -> Optional[float]:
+        """How far the slider runs along its guide over the travel; None
+        without a travel or with a branch defect."""
+    @property
+    def size(self) -> float:
+        """Crank, coupler, the two other sides of the coupler triangle, the
+        offset and the guide length the slider runs on."""
+    @property
+    def size_ratio(self) -> float:
+        """:attr:`size` over the task's :attr:`Task.span`."""
+    @property
+    def branch_free(self) -> bool:
+        """Whether the poses are all in one assembly mode (none at a toggle)."""
+    @property
+    def feasible(self) -> bool:
+        """Branch-free, on one circuit and with a driving direction."""
+    @property
+    def order(self) -> str:
+        """The cyclic order of the crank's positions, ``"1-2-3"``."""
+    @property
+    def travel(self) -> Optional[Tuple[float, float]]:
+        """``(start, span)`` of the crank's travel through the poses, or None."""
+    @property
+    def travel_stops(self) -> Optional[list[float]]:
+        """The crank angle at each pose along the travel, unwrapped, or None."""
+    def travel_angles(self, samples: int) -> FloatArray:
+        """``samples`` crank angles evenly spaced over the travel, both ends
+        included (2 to 2**20; empty without a travel)."""
+    def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
+        """The coupler pose ``(x, y, angle)`` at crank angle ``theta2``."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...

@@ -30,7 +30,7 @@ from burmester.taskfile import (
 )
 
 if TYPE_CHECKING:
-    from burmester._burmester import Method, Mode
+    from burmester._burmester import Method, Mode, SliderCrank, SynthesizedSliderCrank
 
     Array = npt.NDArray[np.float64]
 
@@ -341,3 +341,56 @@ def circle_scene(filemon: Filemon, view: Optional[ViewLike]) -> CircleScene:
     # A task with a pure translation between two poses has no image poles.
     images = list(task.image_poles()) if has_pole_triangle(task) else []
     return CircleScene(extent, list(filemon.sectors), radius, made, filemon.middle_pose, images)
+
+
+# ---------------------------------------------------------------------------
+# Slider linkages (issue 27)
+
+
+class SliderScene(NamedTuple):
+    """A slider-crank at one crank angle: the crank pivot, the crank tip
+    and the slider pin, the guide drawn as a line over the slider's limit
+    positions with a margin (layer ``GUIDE``), and the slider as a block
+    along the guide around its pin (layer ``SLIDER``)."""
+
+    pivot: Point
+    crank_joint: Point
+    slider_joint: Point
+    #: The guide's two ends.
+    guide: Segment
+    #: The block's four corners.
+    block: List[Point]
+
+
+def slider_scene(sc: "SliderCrank", theta2: float, mode: "Mode") -> SliderScene:
+    """The slider-crank ``sc`` at ``theta2`` in ``mode`` (AssemblyError where
+    the loop does not close there)."""
+    pivot, a, b = sc.joints(theta2, mode)
+    (_, lo), (_, hi) = sc.limits(mode)
+    size = sc.crank + sc.coupler
+    margin = 0.15 * size
+    guide = (sc.guide_point(lo - margin), sc.guide_point(hi + margin))
+    (ux, uy), (nx, ny) = sc.guide, sc.guide_normal
+    w, h = 0.09 * size, 0.05 * size
+    block = [(b[0] + su * w * ux + sn * h * nx, b[1] + su * w * uy + sn * h * ny)
+             for su, sn in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    return SliderScene(pivot, a, b, guide, block)
+
+
+def slider_crank_pose_angles(s: "SynthesizedSliderCrank", frames: int) -> List[float]:
+    """About ``frames`` crank angles from pose 1 through the poses in order
+    to the last, the poses' own angles among them (the drive of a picture
+    or an animation); InvalidInputError for a linkage without a travel."""
+    stops = s.travel_stops
+    if stops is None:
+        raise InvalidInputError(
+            "the slider-crank does not pass its poses in order in one mode (a branch, order or "
+            "circuit defect), so it has no travel to draw; pick a feasible one (.feasible)"
+        )
+    angles: List[float] = []
+    total = abs(stops[-1] - stops[0]) or 1.0
+    for t0, t1 in zip(stops[:-1], stops[1:]):
+        n = max(2, int(round(frames * abs(t1 - t0) / total)))
+        angles.extend(float(t) for t in np.linspace(t0, t1, n)[:-1])
+    angles.append(float(stops[-1]))
+    return angles

@@ -24,6 +24,9 @@ of the Burmester curves and points of four and five poses.
 - :func:`drive_map`, :func:`sixbar`, :func:`animate_sixbar`: a motor for a
   linkage whose input swings (the Watt II six-bar): where the drive's crank
   pivot may go, the six-bar at the poses, and a full crank turn animated.
+- :func:`slider_crank`, :func:`animate_slider_crank`: a slider-crank (the
+  guide as a line, the slider as a block on it), alone or synthesized for a
+  task at its poses, and driven through them.
 
 Needs matplotlib (``pip install "burmester[plot]"``). Every drawing function
 takes an optional ``ax`` to draw into and returns the Axes, so you can keep
@@ -1945,4 +1948,166 @@ def animate_sixbar(
         _save_animation(anim, path, fps, dpi)
     finally:
         plt.close(fig)
+    return anim
+
+
+# ---------------------------------------------------------------------------
+# Slider linkages (issue 27)
+
+
+def _draw_slider_at(ax: Axes, sc: burmester.SliderCrank, theta2: float, mode: Mode, color: str, gid: str,
+                    alpha: float = 1.0, zorder: int = 4) -> Tuple[Line2D, Polygon]:
+    """The chain ``A0 A B`` and the slider block at ``theta2`` (gids
+    ``gid`` and ``gid + "-block"``)."""
+    s = _scene.slider_scene(sc, theta2, mode)
+    chain = np.array([s.pivot, s.crank_joint, s.slider_joint], dtype=float)
+    (ln,) = ax.plot(chain[:, 0], chain[:, 1], color=color, linewidth=2.2, marker="o", markersize=5,
+                    alpha=alpha, zorder=zorder)
+    ln.set_gid(gid)
+    block = Polygon(np.array(s.block), closed=True, facecolor="#bdbdbd", edgecolor=color, alpha=alpha,
+                    zorder=zorder - 1)
+    block.set_gid(gid + "-block")
+    ax.add_patch(block)
+    return ln, block
+
+
+def _draw_guide(ax: Axes, sc: burmester.SliderCrank, theta2: float, mode: Mode) -> None:
+    """The guide (gid ``"guide"``) and the crank pivot (``"fixed-pivots"``)."""
+    s = _scene.slider_scene(sc, theta2, mode)
+    (g0, g1) = s.guide
+    (gl,) = ax.plot([g0[0], g1[0]], [g0[1], g1[1]], color="0.3", linewidth=1.2, zorder=2, label="guide")
+    gl.set_gid("guide")
+    _markers(ax, [s.pivot], "fixed-pivots", "crank pivot A0", marker="^", markersize=10, color="0.2", zorder=6)
+
+
+def slider_crank(
+    obj: Union[burmester.SliderCrank, burmester.SynthesizedSliderCrank],
+    theta2: Optional[float] = None,
+    mode: Mode = "open",
+    *,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw a slider-crank: the guide as a line (gid ``"guide"``), the
+    slider as a block on it (``"linkage-block"``), the crank and coupler
+    (``"linkage"``) and the crank pivot (``"fixed-pivots"``).
+
+    A :class:`burmester.SliderCrank` is drawn at ``theta2`` (default: 0 when
+    the crank turns fully, else the middle of its first arc) in ``mode``,
+    with the crank tip's path. A :class:`burmester.SynthesizedSliderCrank`
+    is drawn at each of its poses (pose colours, gid ``"linkage-k"``), with
+    the task's poses as flags (``"pose-k"``) and the coupler point's path
+    over the travel (``"coupler-curve"``); ``theta2`` and ``mode`` are then
+    unused.
+
+    Raises:
+        burmester.AssemblyError: the loop does not close at ``theta2``.
+    """
+    ax = _new_axes(ax, (7.0, 6.0))
+    if isinstance(obj, burmester.SynthesizedSliderCrank):
+        sc = obj.linkage
+        modes = obj.modes
+        first: Mode = modes[0] or "open"
+        _draw_guide(ax, sc, obj.input_angles[0], first)
+        for k, (t, m) in enumerate(zip(obj.input_angles, modes), start=1):
+            _draw_slider_at(ax, sc, t, m or first, POSE_COLORS[k], f"linkage-{k}", alpha=0.85)
+            # The coupler plate: the crank tip, the slider pin and the task's coupler point.
+            _, tip, pin = sc.joints(t, m or first)
+            px, py, _ = obj.pose_at(t, m or first)
+            plate = Polygon(np.array([tip, pin, (px, py)]), closed=True, facecolor=POSE_COLORS[k],
+                            edgecolor=POSE_COLORS[k], alpha=0.15, zorder=3)
+            plate.set_gid(f"coupler-{k}")
+            ax.add_patch(plate)
+        if obj.travel is not None:
+            ts = np.array(obj.travel_angles(361))
+            xs, ys, ok = sc.coupler_path(obj.coupler_point, ts, first)
+            (cc,) = ax.plot(xs[ok], ys[ok], color="#ff7f0e", linewidth=1.2, zorder=3, label="coupler curve")
+            cc.set_gid("coupler-curve")
+        poses = [obj.pose_at(t, m or first) for t, m in zip(obj.input_angles, modes)]
+        _draw_flags(ax, poses, 0.12 * (sc.crank + sc.coupler), labels, zorder=7)
+        if labels:
+            r, l = format_length(sc.crank, units), format_length(sc.coupler, units)
+            stroke = "" if obj.stroke_used is None else f", stroke used {format_length(obj.stroke_used, units)}"
+            ax.set_title(f"Slider-crank: crank {r}, coupler {l}{stroke}\nmodes {modes}, direction {obj.direction}",
+                         fontsize=10)
+    else:
+        sc = obj
+        arcs = sc.input_range
+        t = (0.0 if not arcs else arcs[0][0] + 0.5 * ((arcs[0][1] - arcs[0][0]) % (2 * math.pi))) \
+            if theta2 is None else float(theta2)
+        _draw_guide(ax, sc, t, mode)
+        for k, (lo, hi) in enumerate(arcs or [(0.0, 2 * math.pi)]):
+            span = (hi - lo) % (2 * math.pi) or 2 * math.pi
+            xs, ys, ok = sc.coupler_path((0.0, 0.0), lo + np.linspace(0.0, span, 721), mode)
+            (cp,) = ax.plot(xs[ok], ys[ok], color="0.6", linewidth=0.8, zorder=1,
+                            label="crank tip path" if k == 0 else None)
+            cp.set_gid("crank-path")
+        arts = _draw_slider_at(ax, sc, t, mode, POSE_COLORS[3], "linkage")
+        arts[0].set_label(f"theta2 = {math.degrees(t):.1f} deg, {mode}")
+        if labels:
+            s = _scene.slider_scene(sc, t, mode)
+            for name, p in zip(("A0", "A", "B"), (s.pivot, s.crank_joint, s.slider_joint)):
+                _label(ax, p, name)
+            ax.set_title(f"Slider-crank: crank {format_length(sc.crank, units)}, coupler "
+                         f"{format_length(sc.coupler, units)}, offset {format_length(sc.offset, units)}, "
+                         f"stroke {format_length(sc.stroke(mode), units)}", fontsize=10)
+    _around_data(ax, labels, units)
+    if legend:
+        _legend(ax)
+    return ax
+
+
+def animate_slider_crank(
+    s: burmester.SynthesizedSliderCrank,
+    path: Union[str, Path],
+    *,
+    frames: int = 60, fps: int = 20, dpi: int = 80,
+    units: Optional[str] = None,
+) -> FuncAnimation:
+    """Write an animation of a synthesized slider-crank driven by its crank
+    from pose 1 through the poses in order and back (``.gif`` or ``.mp4``):
+    the moving chain (gid ``"moving-linkage"``) and slider block
+    (``"moving-linkage-block"``) over the guide, the poses and the coupler
+    curve (as :func:`slider_crank`).
+
+    Raises:
+        burmester.InvalidInputError: the linkage has no travel through the
+            poses in order in one mode (:attr:`SynthesizedSliderCrank.feasible`
+            is False), the file type is neither ``.gif`` nor ``.mp4``, its
+            folder does not exist, or ``frames``, ``fps`` or ``dpi`` is out of
+            range (as :func:`animate`).
+        RuntimeError: ``.mp4`` was asked for and ffmpeg is not installed.
+    """
+    path, frames, fps, dpi = _animation_target(path, frames, fps, dpi)
+    _check_ffmpeg(path)
+    if not s.feasible:
+        raise burmester.InvalidInputError(
+            f"the slider-crank meets its poses in modes {s.modes} and direction {s.direction!r}: it "
+            "cannot be driven through them in order in one mode; pick a feasible one (.feasible)"
+        )
+    angles = _scene.slider_crank_pose_angles(s, frames)
+    sequence = angles + angles[-2:0:-1]
+    mode: Mode = s.modes[0] or "open"
+    sc = s.linkage
+    fig, ax = plt.subplots(figsize=(6.0, 5.0))
+    slider_crank(s, labels=False, legend=False, units=units, ax=ax)
+    for art in list(ax.get_children()):
+        if str(art.get_gid()).startswith(("linkage-", "coupler-")):
+            art.remove()
+    scenes = [_scene.slider_scene(sc, t, mode) for t in sequence]
+    polys = [(np.array([x.pivot, x.crank_joint, x.slider_joint]), np.array(x.block)) for x in scenes]
+    _fit_frames(ax, polys)
+    label_axes(ax, units)
+    ax.set_title(f"Slider-crank driven through the poses ({mode}): crank {format_length(sc.crank, units)}, "
+                 f"coupler {format_length(sc.coupler, units)}", fontsize=10)
+    # The moving chain and block: drawn at the first frame, moved by each.
+    moving = _draw_slider_at(ax, sc, sequence[0], mode, "#333333", "moving-linkage", zorder=8)
+
+    def update(i: int) -> List[Artist]:
+        chain, corners = polys[i]
+        moving[0].set_data(chain[:, 0], chain[:, 1])
+        moving[1].set_xy(corners)
+        return [moving[0], moving[1]]
+
+    anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
+    _save_animation(anim, path, fps, dpi)
     return anim

@@ -123,6 +123,35 @@ CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.C
            burmester.SixBar, burmester.Drive, burmester.DriveMap,
            burmester.SliderFilemon, burmester.Actuator, burmester.ActuatorMap]
 
+# Slider linkages (issue 27): their samples, classes, properties and methods.
+_SLIDER_TASK = [(0.0, 0.0, 0.0), (2.0, 0.5, 0.4), (3.0, 2.0, 1.1)]
+
+
+def _slider_samples():
+    sc = burmester.SliderCrank(crank=1.0, coupler=3.0, guide_point=(0.0, 0.4), guide=(math.cos(0.2), math.sin(0.2)))
+    t, poses = None, []
+    for t2 in (0.2, 1.0, 2.1, 3.0):
+        c = sc.solve(t2)
+        x, y = sc.coupler_point(t2, (0.5, 0.7))
+        poses.append((x, y, c.theta3 + 0.3))
+    t = Task(poses)
+    _, a1, b1 = sc.joints(0.2)
+    return {
+        "SliderCrank": sc,
+        "SliderConfiguration": sc.solve(0.7, "crossed"),
+        "SynthesizedSliderCrank": t.slider_crank(((0.0, 0.0), a1), (b1, sc.guide)),
+    }
+
+
+_samples_base = samples
+
+
+def samples():  # noqa: F811 (the base samples and the slider linkages')
+    return {**_samples_base(), **_slider_samples()}
+
+
+CLASSES += [burmester.SliderCrank, burmester.SliderConfiguration, burmester.SynthesizedSliderCrank]
+
 
 # ---------------------------------------------------------------------------
 # Pickling
@@ -278,6 +307,18 @@ METHODS = {
     burmester.Actuator: "at travel",
     burmester.ActuatorMap: "ground placement best_placements pareto_front",
 }
+
+# Slider linkages (issue 27).
+PROPERTIES[burmester.SliderCrank] = (
+    "crank coupler pivot guide guide_normal foot offset link_ratio turns_fully input_range dead_positions "
+    "collinear_positions")
+PROPERTIES[burmester.SliderConfiguration] = "theta2 theta3 slider mode toggle transmission_angle"
+PROPERTIES[burmester.SynthesizedSliderCrank] = (
+    "linkage driving driven input_angles modes slider_positions coupler_point coupler_angle_offset direction "
+    "one_circuit min_transmission_deg stroke_used size size_ratio branch_free feasible order travel travel_stops")
+METHODS[burmester.SliderCrank] = "guide_point solve joints coupler_point coupler_path limits stroke"
+METHODS[burmester.SynthesizedSliderCrank] = "travel_angles pose_at"
+METHODS[Task] += " slider_crank"
 
 #: Methods without arguments, and why each is a method.
 NO_ARGUMENT_METHODS = {

@@ -27,6 +27,7 @@ mod pairs;
 mod pickle;
 mod run;
 mod search;
+mod slider;
 mod slider_branch;
 mod sweep;
 mod synthesis;
@@ -60,6 +61,8 @@ mod _burmester {
     use crate::search::{
         _design, _design_from_atlas, _design_plan, PyDesign, PyDesignReport, PyNearMiss, PySpace,
     };
+    #[pymodule_export]
+    use crate::slider::{PySliderConfiguration, PySliderCrank, PySynthesizedSliderCrank};
     #[pymodule_export]
     use crate::slider_branch::{PySliderFilemon, slider_branch_free_arcs, slider_curve_branch};
     #[pymodule_export]

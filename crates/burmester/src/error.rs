@@ -550,6 +550,23 @@ pub enum InvalidInput {
         /// What to do about it.
         hint: &'static str,
     },
+    /// A slider dyad passed to a task is not a slider of it: its pin's
+    /// positions over the poses leave its guide.
+    #[error(
+        "the {which} is not a slider of the task: its pin's positions over the poses leave the \
+         guide by {} (relative to the task's size), more than {}; take a slider point of the task \
+         (a point whose positions are collinear) with the guide through its positions",
+        Num(*.spread), Num(*.tolerance)
+    )]
+    NotASlider {
+        /// Which dyad (`"driven slider"`).
+        which: &'static str,
+        /// The largest distance of a position from the guide, relative to
+        /// the task's size.
+        spread: f64,
+        /// The tolerance ([`tolerance::DYAD`](crate::tolerance::DYAD)).
+        tolerance: f64,
+    },
 }
 
 /// The linkage cannot be assembled as asked.
@@ -598,6 +615,36 @@ pub enum AssemblyError {
     Indeterminate {
         /// The input angle, in radians.
         theta2: f64,
+    },
+    /// A slider-crank's guide is farther from its crank pivot than crank
+    /// and coupler reach: no crank angle closes the loop.
+    #[error(
+        "the slider-crank can never be assembled: its guide is {} from the crank pivot, farther \
+         than crank and coupler reach together ({}); move the guide nearer the pivot or lengthen \
+         the crank or the coupler",
+        Num(*.offset), Num(*.reach)
+    )]
+    GuideOutOfReach {
+        /// The pivot's distance from the guide.
+        offset: f64,
+        /// Crank plus coupler.
+        reach: f64,
+    },
+    /// At this crank angle the crank tip of a slider-crank is farther from
+    /// the guide than the coupler is long.
+    #[error(
+        "the slider-crank's loop does not close at theta2 = {} rad: the crank tip is {} from the \
+         guide, farther than the coupler's length {}; choose a crank angle inside the input range \
+         (SliderCrank::input_range)",
+        Num(*.theta2), Num(*.height), Num(*.coupler)
+    )]
+    SliderOutOfReach {
+        /// The crank angle, in radians.
+        theta2: f64,
+        /// The crank tip's distance from the guide.
+        height: f64,
+        /// The coupler's length.
+        coupler: f64,
     },
 }
 

@@ -146,7 +146,9 @@ pub use linkage::{
     LinkageFigures,
 };
 pub use linkage::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};
+pub use linkage::{SliderConfiguration, SliderCrank, SliderJoints, SliderLimit};
 pub use nalgebra::{Point2, Vector2};
+pub use synthesis::SynthesizedSliderCrank;
 pub use synthesis::three::{Cremona, Filemon, Method};
 pub use synthesis::{
     Branch, Dyad, DyadKind, FilemonLines, Motion, Pole, SliderDyad, SynthesizedFourBar, Task,

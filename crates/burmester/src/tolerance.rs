@@ -303,6 +303,42 @@ pub const BURMESTER_RESIDUAL: f64 = 1e-10;
 /// from pose 1 (a Burmester point typed back in).
 pub const NEAR_BURMESTER_POINT: f64 = 1e-7;
 
+// The slider-crank (issue 27, `linkage::slider`).
+
+/// The toggle band of a slider-crank's loop: the rounding of
+/// `H = (l - h) (l + h)`, `l` the coupler and `h` the crank tip's height
+/// over the guide, `rho` the size of the vectors `h` was formed from (the
+/// crank plus the offset), all in one unit. `sqrt(H) = |<B - A, u>| =
+/// l sin mu` (`mu` the transmission angle, the angle between the coupler
+/// and the guide's normal), so the loop is at a toggle where `|H| <= tol`,
+/// in angle terms `sin mu <= sqrt(tol) / l`.
+///
+/// # Derivation
+///
+/// ```text
+/// h = e + r <d, n> is off by up to about eps rho (the offset, and the
+/// crank times its rounded direction), l by eps l, so each factor of H,
+/// l - h and l + h, by up to about eps E with E = l + |h| + rho, and
+///
+///     err(H) <~ eps E (|l - h| + |l + h|) + (eps E)^2.
+///
+/// With LOOP_EPS (the four-bar's factor, the same margin over the
+/// measured rounding):
+///
+///     tol = k E (|l - h| + |l + h|) + k^2 E^2,    k = LOOP_EPS eps.
+///
+/// At the toggle (h = +-l) the band is sin mu <= sqrt(2 k E / l), about
+/// 2e-7 rad for links of one size (the four-bar's, heron_tolerance).
+/// ```
+///
+/// NaN input gives NaN.
+#[inline]
+pub fn slider_tolerance(l: f64, h: f64, rho: f64) -> f64 {
+    let k = LOOP_EPS * f64::EPSILON;
+    let e = l + h.abs() + rho;
+    k * e * ((l - h).abs() + (l + h).abs()) + k * k * e * e
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -250,53 +250,12 @@ pub(crate) fn figures<const MODES: bool, const N: usize>(
     let g = ground;
     let e: [Vector2<f64>; N] = core::array::from_fn(|k| a[k] - a0);
     let last = N - 1;
-    // The travel as pseudo-angles from a reference outside it: [from, to].
-    let (reference, direction, one_circuit, from, to) = if full {
-        let t: [f64; N] = core::array::from_fn(|k| pseudo_angle(e[0], e[k]));
-        // Pose 1 at 0, the others strictly after it one way round.
-        let dir = if t[1..].contains(&0.0) {
-            Direction::None
-        } else {
-            monotone(&t[1..])
-        };
-        let (from, to) = if dir == Direction::Ccw {
-            (0.0, t[last])
-        } else {
-            (t[last], 4.0)
-        };
-        (e[0], dir, true, from, to)
-    } else {
-        // The dead zone: around -g when the input rocks about g, around g
-        // otherwise (one arc about g + pi, or the two arcs off the ground line).
-        let reference = if hi_free { -g } else { g };
-        let t: [f64; N] = core::array::from_fn(|k| pseudo_angle(reference, e[k]));
-        let one_circuit = if !hi_free && !lo_free {
-            // Two arcs: one on each side of the ground line.
-            let side = cross(g, e[0]) > 0.0;
-            e.iter().all(|ek| (cross(g, *ek) > 0.0) == side)
-        } else {
-            true
-        };
-        let dir = if one_circuit {
-            monotone(&t)
-        } else {
-            Direction::None
-        };
-        (
-            reference,
-            dir,
-            one_circuit,
-            t[0].min(t[last]),
-            t[0].max(t[last]),
-        )
-    };
+    let trav = travel(&e, g, lo_free, hi_free);
+    let (direction, one_circuit) = (trav.direction, trav.one_circuit);
     let min_transmission = if direction == Direction::None {
         f64::NAN
     } else {
-        let inside = |v: Vector2<f64>| {
-            let p = pseudo_angle(reference, v);
-            (p >= from && p <= to) || (full && p == 0.0)
-        };
+        let inside = |v: Vector2<f64>| trav.contains(v);
         // |cos mu| at c = cos(theta - theta1) (module docs).
         let k0 = l1 * l1 + l2 * l2;
         let k1 = 2.0 * l1 * l2;
@@ -385,6 +344,96 @@ pub(crate) fn figures_of(
         4 => run::<4>(a0, a, c0, c, tiny),
         5 => run::<5>(a0, a, c0, c, tiny),
         _ => None,
+    }
+}
+
+/// The travel of an input link through the poses, as pseudo-angles from a
+/// reference direction outside it (module docs: order and circuit).
+pub(crate) struct Travel {
+    /// The direction the pseudo-angles are measured from.
+    pub(crate) reference: Vector2<f64>,
+    /// The direction that carries the input through the poses in order.
+    pub(crate) direction: Direction,
+    /// Whether the poses lie on one circuit.
+    pub(crate) one_circuit: bool,
+    /// The travel's ends, `from <= to`, as pseudo-angles from `reference`.
+    pub(crate) from: f64,
+    /// See `from`.
+    pub(crate) to: f64,
+    /// Whether the input turns fully.
+    pub(crate) full: bool,
+}
+
+impl Travel {
+    /// Whether the direction `v` lies on the travel.
+    #[inline(always)]
+    pub(crate) fn contains(&self, v: Vector2<f64>) -> bool {
+        let p = pseudo_angle(self.reference, v);
+        (p >= self.from && p <= self.to) || (self.full && p == 0.0)
+    }
+}
+
+/// The [`Travel`] of an input whose directions at the poses are `e` (any
+/// lengths), whose range is symmetric about the axis `g` (the ground line
+/// of a four-bar, the guide's normal of a slider-crank: the input closes
+/// where `c = cos(theta - arg g)` lies in `[c_min, c_max]`), with
+/// `lo_free` (`c_min <= -1`) and `hi_free` (`c_max >= 1`).
+#[inline(always)]
+pub(crate) fn travel<const N: usize>(
+    e: &[Vector2<f64>; N],
+    g: Vector2<f64>,
+    lo_free: bool,
+    hi_free: bool,
+) -> Travel {
+    let full = lo_free && hi_free;
+    let last = N - 1;
+    // The travel as pseudo-angles from a reference outside it: [from, to].
+    let (reference, direction, one_circuit, from, to) = if full {
+        let t: [f64; N] = core::array::from_fn(|k| pseudo_angle(e[0], e[k]));
+        // Pose 1 at 0, the others strictly after it one way round.
+        let dir = if t[1..].contains(&0.0) {
+            Direction::None
+        } else {
+            monotone(&t[1..])
+        };
+        let (from, to) = if dir == Direction::Ccw {
+            (0.0, t[last])
+        } else {
+            (t[last], 4.0)
+        };
+        (e[0], dir, true, from, to)
+    } else {
+        // The dead zone: around -g when the input rocks about g, around g
+        // otherwise (one arc about g + pi, or the two arcs off the ground line).
+        let reference = if hi_free { -g } else { g };
+        let t: [f64; N] = core::array::from_fn(|k| pseudo_angle(reference, e[k]));
+        let one_circuit = if !hi_free && !lo_free {
+            // Two arcs: one on each side of the ground line.
+            let side = cross(g, e[0]) > 0.0;
+            e.iter().all(|ek| (cross(g, *ek) > 0.0) == side)
+        } else {
+            true
+        };
+        let dir = if one_circuit {
+            monotone(&t)
+        } else {
+            Direction::None
+        };
+        (
+            reference,
+            dir,
+            one_circuit,
+            t[0].min(t[last]),
+            t[0].max(t[last]),
+        )
+    };
+    Travel {
+        reference,
+        direction,
+        one_circuit,
+        from,
+        to,
+        full,
     }
 }
 

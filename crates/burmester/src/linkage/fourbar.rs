@@ -895,21 +895,8 @@ impl FourBar {
         I: IntoIterator<Item = f64>,
         I::IntoIter: 'a,
     {
-        let local_ok = finite("coupler point u", local.x)
-            .and_then(|_| finite("coupler point v", local.y))
-            .map_err(Error::from);
-        theta2s.into_iter().map(move |t| {
-            local_ok.clone()?;
-            let p = self.joints_at(t, mode)?.coupler_point(local);
-            if point_is_finite(&p) {
-                Ok(p)
-            } else {
-                Err(InvalidInput::Overflow {
-                    what: "the coupler point's position",
-                    hint: "pass a coupler point nearer the coupler",
-                }
-                .into())
-            }
+        crate::linkage::coupler_path_of(local, theta2s, move |t| {
+            Ok(self.joints_at(t, mode)?.coupler_point(local))
         })
     }
 

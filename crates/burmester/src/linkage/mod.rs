@@ -7,6 +7,7 @@ pub(crate) mod figures;
 mod fourbar;
 pub(crate) mod grashof;
 pub mod sixbar;
+mod slider;
 
 pub use actuator::{ActuatorLink, LinkPoint};
 pub use figures::{Direction, LinkageFigures};
@@ -14,6 +15,7 @@ pub use fourbar::{AssemblyMode, Configuration, FourBar, Joints};
 pub(crate) use grashof::input_bounds;
 pub use grashof::{AngleInterval, Grashof, InputRange};
 pub use sixbar::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};
+pub use slider::{SliderConfiguration, SliderCrank, SliderJoints, SliderLimit};
 
 /// Refuses a link of no length: the first pair of joints `(a, b, name)`
 /// within `tiny` of each other.
@@ -36,4 +38,39 @@ pub(crate) fn nonzero_links<const N: usize>(
         }
     }
     Ok(())
+}
+
+/// The path of a coupler point `local` over the input angles `theta2s`,
+/// lazily, `at(t)` placing it at the angle `t` (a linkage's
+/// `coupler_path`): an error where `at` fails, [`InvalidInput::NotFinite`]
+/// for every item where `local` is not finite, and
+/// [`InvalidInput::Overflow`] where the position overflows.
+///
+/// [`InvalidInput::NotFinite`]: crate::InvalidInput::NotFinite
+/// [`InvalidInput::Overflow`]: crate::InvalidInput::Overflow
+pub(crate) fn coupler_path_of<'a, I>(
+    local: nalgebra::Vector2<f64>,
+    theta2s: I,
+    at: impl Fn(f64) -> crate::Result<nalgebra::Point2<f64>> + 'a,
+) -> impl Iterator<Item = crate::Result<nalgebra::Point2<f64>>> + 'a
+where
+    I: IntoIterator<Item = f64>,
+    I::IntoIter: 'a,
+{
+    let local_ok = crate::error::finite("coupler point u", local.x)
+        .and_then(|_| crate::error::finite("coupler point v", local.y))
+        .map_err(crate::Error::from);
+    theta2s.into_iter().map(move |t| {
+        local_ok.clone()?;
+        let p = at(t)?;
+        if crate::geom::point_is_finite(&p) {
+            Ok(p)
+        } else {
+            Err(crate::InvalidInput::Overflow {
+                what: "the coupler point's position",
+                hint: "pass a coupler point nearer the coupler",
+            }
+            .into())
+        }
+    })
 }

@@ -119,13 +119,7 @@ impl SynthesizedFourBar {
     /// (positive counter-clockwise); `None` when no direction carries the
     /// coupler through the poses in order ([`Direction::None`]).
     pub fn travel(&self) -> Option<(f64, f64)> {
-        let t = &self.input_angles;
-        let span = (t[t.len() - 1] - t[0]).rem_euclid(TAU);
-        match self.figures.direction {
-            Direction::Ccw => Some((t[0], span)),
-            Direction::Cw => Some((t[0], span - TAU)),
-            Direction::None => None,
-        }
+        travel_of(&self.input_angles, self.figures.direction)
     }
 
     /// The input angle at each pose along the [`travel`](Self::travel),
@@ -133,13 +127,7 @@ impl SynthesizedFourBar {
     /// in the travel's direction (so the poses' angles are exact stops of a
     /// drive); `None` when there is no travel.
     pub fn travel_stops(&self) -> Option<PerPose<f64>> {
-        let (start, span) = self.travel()?;
-        let t = &self.input_angles;
-        Some(PerPose::from_fn(t.len(), |k| {
-            let d = (t[k] - t[0]).rem_euclid(TAU);
-            let d = if span < 0.0 && d > 0.0 { d - TAU } else { d };
-            start + d
-        }))
+        travel_stops_of(&self.input_angles, self.travel()?)
     }
 
     /// `samples` input angles evenly spaced over the [`travel`](Self::travel),
@@ -152,14 +140,48 @@ impl SynthesizedFourBar {
     /// [`InvalidInput::NeedsPoses`]-free: a linkage without a feasible
     /// direction gives an empty list.
     pub fn travel_angles(&self, samples: usize) -> Result<Vec<f64>> {
-        let n = count_in("travel samples", samples, 2, Self::MAX_TRAVEL_SAMPLES)?;
-        Ok(match self.travel() {
-            Some((start, span)) => (0..n)
-                .map(|k| start + span * (k as f64 / (n - 1) as f64))
-                .collect(),
-            None => Vec::new(),
-        })
+        travel_angles_of(self.travel(), samples, Self::MAX_TRAVEL_SAMPLES)
     }
+}
+
+/// The travel of an input whose angles at the poses are `t` and whose
+/// feasible direction is `direction` ([`SynthesizedFourBar::travel`]).
+pub(crate) fn travel_of(t: &PerPose<f64>, direction: Direction) -> Option<(f64, f64)> {
+    let span = (t[t.len() - 1] - t[0]).rem_euclid(TAU);
+    match direction {
+        Direction::Ccw => Some((t[0], span)),
+        Direction::Cw => Some((t[0], span - TAU)),
+        Direction::None => None,
+    }
+}
+
+/// The input angles `t` unwrapped along the travel `(start, span)`
+/// ([`SynthesizedFourBar::travel_stops`]).
+pub(crate) fn travel_stops_of(t: &PerPose<f64>, (start, span): (f64, f64)) -> Option<PerPose<f64>> {
+    Some(PerPose::from_fn(t.len(), |k| {
+        let d = (t[k] - t[0]).rem_euclid(TAU);
+        let d = if span < 0.0 && d > 0.0 { d - TAU } else { d };
+        start + d
+    }))
+}
+
+/// `samples` angles evenly spaced over a travel, both ends included, at
+/// most `max` ([`SynthesizedFourBar::travel_angles`]); empty without a
+/// travel.
+pub(crate) fn travel_angles_of(
+    travel: Option<(f64, f64)>,
+    samples: usize,
+    max: usize,
+) -> Result<Vec<f64>> {
+    let n = count_in("travel samples", samples, 2, max)?;
+    Ok(match travel {
+        Some((start, span)) => crate::error::try_collect(
+            "travel angles",
+            n,
+            (0..n).map(|k| start + span * (k as f64 / (n - 1) as f64)),
+        )?,
+        None => Vec::new(),
+    })
 }
 
 impl Task {

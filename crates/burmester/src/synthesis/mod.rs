@@ -26,6 +26,7 @@ mod local;
 pub mod motion;
 mod order;
 mod slider;
+mod slider_crank;
 mod task;
 pub mod three;
 
@@ -39,4 +40,5 @@ pub use four::{
 pub use motion::{Motion, Pole};
 pub use order::{CrankOrder, Drive, Turn};
 pub use slider::{DyadKind, SliderDyad};
+pub use slider_crank::SynthesizedSliderCrank;
 pub use task::Task;

@@ -1,0 +1,326 @@
+//! The slider-crank of a task: a driving crank `(A0, A1)` and a driven
+//! slider `C1` on its guide ([`SliderDyad`]), with what it takes to drive
+//! it through the task's poses.
+//!
+//! At pose `k` the moving pivots are `A_k = D_1k(A1)` and `C_k = D_1k(C1)`
+//! (on the guide). The input angle is `arg(A_k - A0)`; the assembly mode is
+//! the sign of `<C_k - A_k, u>` named as the position analysis names it
+//! ([`SliderCrank`]: [`AssemblyMode::Open`] where it is negative). Seen in
+//! the coupler frame at pose 1 that is the notes' formula
+//! `mode_k = sign <C1 - A1, u_k>`, `u_k = e^{-i(theta_k - theta_1)} u`
+//! (the coupler turned back to pose 1 carries `C_k - A_k` to `C1 - A1`
+//! and `u` to `u_k`). The order is the driving crank's: a crank that turns
+//! fully must meet the poses in cyclic order one way round, a rocking one
+//! monotonically inside one arc of its range (the four-bar's logic,
+//! `linkage::figures::travel`, with the guide's normal for the ground
+//! line).
+
+use nalgebra::{Point2, Vector2};
+
+use crate::error::{InvalidInput, Result};
+use crate::geom::{PerPose, Pose, cross, perp, rotate};
+use crate::linkage::figures::{Travel, travel};
+use crate::linkage::{AssemblyMode, Direction, SliderCrank};
+use crate::synthesis::dyad::{travel_angles_of, travel_of, travel_stops_of};
+use crate::synthesis::{CrankOrder, Dyad, DyadKind, SliderDyad, Task};
+use crate::tolerance;
+
+impl DyadKind {
+    /// The assembly mode of a linkage whose driving crank's joint is at
+    /// `crank_joint` and whose driven dyad (this one) has its moving pivot
+    /// at `joint`; `reach` the size of the vectors the loop was formed
+    /// from (ground plus crank of a four-bar, crank plus offset of a
+    /// slider-crank). A crank: the sign of `cross(joint - crank_joint,
+    /// joint - center)` ([`AssemblyMode::of_loop_within`]); a slider: the
+    /// sign of `<crank_joint - joint, u>` ([`AssemblyMode::of_slider`], the
+    /// limit of the crank's as its center goes to infinity along the
+    /// guide's normal). `None` at a toggle.
+    pub fn assembly_mode(
+        &self,
+        crank_joint: Point2<f64>,
+        joint: Point2<f64>,
+        reach: f64,
+    ) -> Option<AssemblyMode> {
+        match self {
+            DyadKind::Revolute(d) => {
+                AssemblyMode::of_loop_within(joint - crank_joint, joint - d.center, reach)
+            }
+            DyadKind::Slider(s) => AssemblyMode::of_slider(joint - crank_joint, s.guide, reach),
+        }
+    }
+}
+
+/// A slider-crank built from a driving crank and a driven slider of a
+/// task, with its input angle and assembly mode at each pose, its order
+/// and what a designer checks (module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SynthesizedSliderCrank {
+    /// The linkage: crank pivot `A0`, the guide through `C1`.
+    pub linkage: SliderCrank,
+    /// The driving dyad `(A0, A1)`.
+    pub driving: Dyad,
+    /// The driven slider (`C1` on its guide).
+    pub driven: SliderDyad,
+    /// The crank angle at each pose (absolute, radians, in `(-pi, pi]`).
+    pub input_angles: PerPose<f64>,
+    /// The assembly mode at each pose; `None` where the pose is at a
+    /// toggle (the coupler perpendicular to the guide).
+    pub modes: PerPose<Option<AssemblyMode>>,
+    /// The slider's position at each pose (as
+    /// [`SliderConfiguration::slider`](crate::SliderConfiguration::slider)).
+    pub slider_positions: PerPose<f64>,
+    /// The task's coupler point in the coupler frame (origin at the crank
+    /// joint `A`, x-axis toward the slider pin).
+    pub coupler_point: Vector2<f64>,
+    /// The task's coupler angle minus the coupler angle `theta3`.
+    pub coupler_angle_offset: f64,
+    /// The crank rotation that carries the coupler from pose 1 through the
+    /// poses in order to the last.
+    pub direction: Direction,
+    /// Whether the crank angles at the poses lie on one circuit (one arc
+    /// of the input range; always true for a crank that turns fully).
+    pub one_circuit: bool,
+    /// The smallest transmission angle over the travel, radians in
+    /// `[0, pi/2]`; NaN without a travel.
+    pub min_transmission: f64,
+    /// The slider's travel along the guide over the crank's travel from
+    /// the first pose to the last (its highest minus its lowest position
+    /// there); NaN without a travel or with a branch defect.
+    pub stroke_used: f64,
+}
+
+impl SynthesizedSliderCrank {
+    /// The most crank angles [`travel_angles`](Self::travel_angles) returns.
+    pub const MAX_TRAVEL_SAMPLES: usize = 1 << 20;
+
+    /// Whether every pose is in one assembly mode (no branch defect, no
+    /// toggle at a pose).
+    pub fn is_branch_free(&self) -> bool {
+        match self.modes.first() {
+            Some(Some(m)) => self.modes.iter().all(|x| *x == Some(*m)),
+            _ => false,
+        }
+    }
+
+    /// Whether the motion through the poses in order is feasible:
+    /// branch-free, one circuit and a driving direction.
+    pub fn feasible(&self) -> bool {
+        self.is_branch_free() && self.one_circuit && self.direction != Direction::None
+    }
+
+    /// The cyclic order of the crank's positions at the poses.
+    pub fn order(&self) -> CrankOrder {
+        CrankOrder::from_angles(&self.input_angles)
+    }
+
+    /// The linkage's size: crank, coupler, the two other sides of the
+    /// coupler triangle (the moving pivots and the task's coupler point),
+    /// the offset (the ground from the pivot to the guide) and the length
+    /// of guide the slider runs on over the travel (the
+    /// [`stroke_used`](Self::stroke_used); the spread of the slider's
+    /// positions at the poses where that is NaN).
+    pub fn size(&self) -> f64 {
+        let (a, c) = (self.driving.circle, self.driven.circle);
+        let ac = c - a;
+        let p = a + rotate(self.coupler_point, ac.y.atan2(ac.x));
+        let s = &self.slider_positions;
+        let guide = if self.stroke_used.is_nan() {
+            let hi = s.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            let lo = s.iter().copied().fold(f64::INFINITY, f64::min);
+            hi - lo
+        } else {
+            self.stroke_used
+        };
+        self.linkage.crank()
+            + self.linkage.coupler()
+            + (p - a).norm()
+            + (p - c).norm()
+            + self.linkage.offset().abs()
+            + guide
+    }
+
+    /// The coupler pose (the task's coupler point and angle) when the
+    /// crank is driven to `theta2` in `mode`.
+    ///
+    /// # Errors
+    ///
+    /// As [`SliderCrank::solve`].
+    pub fn pose_at(&self, theta2: f64, mode: AssemblyMode) -> Result<Pose> {
+        let c = self.linkage.solve(theta2, mode)?;
+        Ok(Pose {
+            position: self.linkage.coupler_point(&c, self.coupler_point),
+            angle: c.theta3 + self.coupler_angle_offset,
+        })
+    }
+
+    /// The travel: the crank angle at pose 1 and the signed angle the
+    /// crank turns through the poses to the last (positive
+    /// counter-clockwise); `None` without a driving direction.
+    pub fn travel(&self) -> Option<(f64, f64)> {
+        travel_of(&self.input_angles, self.direction)
+    }
+
+    /// The crank angle at each pose along the [`travel`](Self::travel),
+    /// unwrapped (monotone from the angle at pose 1); `None` without a
+    /// travel.
+    pub fn travel_stops(&self) -> Option<PerPose<f64>> {
+        travel_stops_of(&self.input_angles, self.travel()?)
+    }
+
+    /// `samples` crank angles evenly spaced over the travel, both ends
+    /// included; empty without a travel.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::CountOutOfRange`] for fewer than 2 or more than
+    /// [`SynthesizedSliderCrank::MAX_TRAVEL_SAMPLES`] samples;
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when they cannot
+    /// be allocated.
+    pub fn travel_angles(&self, samples: usize) -> Result<Vec<f64>> {
+        travel_angles_of(self.travel(), samples, Self::MAX_TRAVEL_SAMPLES)
+    }
+}
+
+/// [`travel`] for 3 to 5 directions.
+fn travel_n(e: &[Vector2<f64>], g: Vector2<f64>, lo: bool, hi: bool) -> Option<Travel> {
+    match e.len() {
+        3 => Some(travel::<3>(e.try_into().ok()?, g, lo, hi)),
+        4 => Some(travel::<4>(e.try_into().ok()?, g, lo, hi)),
+        5 => Some(travel::<5>(e.try_into().ok()?, g, lo, hi)),
+        _ => None,
+    }
+}
+
+impl Task {
+    /// The slider-crank built from a driving crank `(A0, A1)` and a driven
+    /// slider (`C1` on its guide), with its crank angle, assembly mode and
+    /// slider position at each pose, its order and figures.
+    ///
+    /// Driving the returned linkage to `input_angles[k]` in `modes[k]`
+    /// places the task's coupler point and angle at pose `k + 1`
+    /// ([`SynthesizedSliderCrank::pose_at`]).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotADyad`] when the driving dyad's circle point is
+    /// not a circle point of its center (build it with
+    /// [`Task::dyad_from_center`]); [`InvalidInput::NotASlider`] when the
+    /// slider's positions over the poses leave its guide (take a slider
+    /// point of the task and the line through its positions);
+    /// [`DegenerateError::ZeroLengthLink`](crate::DegenerateError::ZeroLengthLink)
+    /// for a crank or coupler of no length; errors of [`SliderCrank::new`].
+    pub fn slider_crank(
+        &self,
+        driving: &Dyad,
+        driven: &SliderDyad,
+    ) -> Result<SynthesizedSliderCrank> {
+        self.check_dyad(driving, "driving dyad")?;
+        let c = self.motion().positions(driven.circle);
+        let u = driven.guide;
+        let reach_c = c.iter().map(|p| (p - c[0]).norm()).fold(0.0, f64::max);
+        let off = c
+            .iter()
+            .map(|p| cross(u, p - c[0]).abs())
+            .fold(0.0, f64::max);
+        let spread = off / (reach_c + self.scale());
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(spread <= tolerance::DYAD) {
+            return Err(InvalidInput::NotASlider {
+                which: "driven slider",
+                spread,
+                tolerance: tolerance::DYAD,
+            }
+            .into());
+        }
+        crate::linkage::nonzero_links(
+            [(driving.circle, driven.circle, "coupler link")],
+            tolerance::POINT * self.scale(),
+        )?;
+        let a0 = driving.center;
+        let linkage = SliderCrank::new(
+            a0,
+            driving.length(),
+            (driven.circle - driving.circle).norm(),
+            driven.circle,
+            u,
+        )?;
+        let a = self.motion().positions(driving.circle);
+        let input_angles = a.map(|p| {
+            let v = p - a0;
+            v.y.atan2(v.x)
+        });
+        let reach = linkage.crank() + linkage.offset().abs();
+        let kind = DyadKind::Slider(*driven);
+        let modes = PerPose::from_fn(a.len(), |k| {
+            let m = kind.assembly_mode(a[k], c[k], reach)?;
+            // The position analysis' loop at the pose's crank angle must
+            // assemble clear of its toggle too (as the four-bar's figures).
+            let sol = linkage.solve(input_angles[k], m).ok()?;
+            (!sol.toggle).then_some(m)
+        });
+        let foot = linkage.foot();
+        let slider_positions = c.map(|p| (p - foot).dot(&u));
+        let (lo, hi) = linkage.free_ends();
+        let n = perp(u);
+        let e: Vec<Vector2<f64>> = a.iter().map(|p| p - a0).collect();
+        let trav = travel_n(&e, n, lo, hi).ok_or(InvalidInput::PoseCount {
+            found: a.len(),
+            min: 3,
+            max: 5,
+        })?;
+        let last = e.len() - 1;
+        let branch_free =
+            matches!(modes.first(), Some(Some(m)) if modes.iter().all(|x| *x == Some(*m)));
+        let (min_transmission, stroke_used) = if trav.direction == Direction::None {
+            (f64::NAN, f64::NAN)
+        } else {
+            // cos mu = |h| / l with h = e + r <d, n>, convex in <d, n>: its
+            // largest value on the travel is at an end or where the crank
+            // passes +-n (as the four-bar's figures).
+            let (r, l, off) = (linkage.crank(), linkage.coupler(), linkage.offset());
+            let cos_mu = |dn: f64| ((off + r * dn).abs() / l).min(1.0);
+            let unit_dn = |v: Vector2<f64>| v.dot(&n) / v.norm();
+            let mut worst = cos_mu(unit_dn(e[0])).max(cos_mu(unit_dn(e[last])));
+            for (dir, dn) in [(n, 1.0), (-n, -1.0)] {
+                if trav.contains(dir) {
+                    worst = worst.max(cos_mu(dn));
+                }
+            }
+            let stroke = match modes[0] {
+                Some(mode) if branch_free => {
+                    let (mut lo_s, mut hi_s) = (
+                        slider_positions[0].min(slider_positions[last]),
+                        slider_positions[0].max(slider_positions[last]),
+                    );
+                    for (p, m) in linkage.collinear_positions() {
+                        let d = Vector2::new(p.theta2.cos(), p.theta2.sin());
+                        if m == mode && trav.contains(d) {
+                            lo_s = lo_s.min(p.slider);
+                            hi_s = hi_s.max(p.slider);
+                        }
+                    }
+                    hi_s - lo_s
+                }
+                _ => f64::NAN,
+            };
+            (worst.acos(), stroke)
+        };
+        let ac = c[0] - a[0];
+        let theta3 = ac.y.atan2(ac.x);
+        let pose1 = self.poses()[0];
+        Ok(SynthesizedSliderCrank {
+            linkage,
+            driving: *driving,
+            driven: *driven,
+            input_angles,
+            modes,
+            slider_positions,
+            coupler_point: rotate(pose1.position - a[0], -theta3),
+            coupler_angle_offset: pose1.angle - theta3,
+            direction: trav.direction,
+            one_circuit: trav.one_circuit,
+            min_transmission,
+            stroke_used,
+        })
+    }
+}
