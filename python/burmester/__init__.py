@@ -46,6 +46,7 @@ from burmester._burmester import (
 from burmester.atlas import AtlasPair, PivotAtlas, pivot_atlas
 from burmester.batch import best_pivots_batch
 from burmester.design import design
+from burmester._burmester import InvertedSlider, SliderDyad
 
 __all__ = [
     "AtlasPair",
@@ -85,4 +86,6 @@ __all__ = [
     "Space",
     "pivot_atlas",
     "unit_time_ratio_crank_rocker",
+    "InvertedSlider",
+    "SliderDyad",
 ]

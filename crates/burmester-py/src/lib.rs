@@ -24,6 +24,7 @@ mod options;
 mod pairs;
 mod run;
 mod search;
+mod slider_dyads;
 mod sweep;
 mod synthesis;
 
@@ -54,6 +55,8 @@ mod _burmester {
     use crate::search::{
         _design, _design_from_atlas, _design_plan, PyDesign, PyDesignReport, PyNearMiss, PySpace,
     };
+    #[pymodule_export]
+    use crate::slider_dyads::{PyInvertedSlider, PySliderDyad};
     #[pymodule_export]
     use crate::synthesis::PyPole;
 

@@ -146,6 +146,7 @@ pub use linkage::{
 };
 pub use linkage::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};
 pub use nalgebra::{Point2, Vector2};
+pub use synthesis::InvertedSlider;
 pub use synthesis::three::{Cremona, Filemon, Method};
 pub use synthesis::{
     Branch, Dyad, DyadKind, FilemonLines, Motion, Pole, SliderDyad, SynthesizedFourBar, Task,
