@@ -58,6 +58,8 @@ __all__ = [
     "_design_plan",
     "_design_from_atlas",
     "__version__",
+    "InvertedSlider",
+    "SliderDyad",
 ]
 
 __version__: str
@@ -965,7 +967,7 @@ class SliderDyad:
     (normalized; :class:`InvalidInputError` for a zero or non-finite one).
     Pickles to an equal object."""
 
-    def __init__(self, circle: Point, guide: Point) -> None: ...
+    def __new__(cls, circle: Point, guide: Point) -> SliderDyad: ...
     @property
     def circle(self) -> Point:
         """The pin (moving pivot) at pose 1, a point of the guide."""
@@ -991,7 +993,7 @@ class InvertedSlider:
     line at pose 1 runs through ``swivel`` along the unit ``direction``.
     Pickles to an equal object."""
 
-    def __init__(self, swivel: Point, direction: Point) -> None: ...
+    def __new__(cls, swivel: Point, direction: Point) -> InvertedSlider: ...
     @property
     def swivel(self) -> Point:
         """The swivel: the fixed pivot, in the ground."""

@@ -86,6 +86,8 @@ def samples():
         "Task": t,
         "Task (4 poses)": Task(FOUR),
         "Task (5 poses)": Task(FIVE),
+        "SliderDyad": Task(POSES).slider_dyads(5)[2],
+        "InvertedSlider": Task(POSES).inverted_sliders(5)[2],
         "Filemon": f,
         "SynthesizedFourBar": sfb,
         "DesignLimits": DesignLimits(35.5, 4.0, "rocker"),
@@ -112,6 +114,7 @@ CLASSES = [Grid, Conic, Cubic, CoincidencePoint, CurveDyad, FourBar, burmester.C
            burmester.AtlasPair, burmester.PairMap, burmester.Pair, burmester.Space, burmester.Design,
            burmester.NearMiss, burmester.DesignReport,
            burmester.SixBar, burmester.Drive, burmester.DriveMap]
+CLASSES += [burmester.SliderDyad, burmester.InvertedSlider]  # issue 27 (ssynth27)
 
 
 # ---------------------------------------------------------------------------
@@ -234,6 +237,10 @@ PROPERTIES = {
                         "motion_transmission_deg limits swing_margin_deg max_time_ratio",
 }
 
+# Issue 27 (ssynth27): the slider records.
+PROPERTIES[burmester.SliderDyad] = "circle guide normal"
+PROPERTIES[burmester.InvertedSlider] = "swivel direction"
+
 #: Methods of each class: they take arguments, can fail, or do real work.
 METHODS = {
     Grid: "cell_centers point nearest",
@@ -257,6 +264,10 @@ METHODS = {
     burmester.DriveMap: "point drive best_drives pareto_front classic_drive",
 }
 
+# Issue 27 (ssynth27): slider dyads and inverted sliders.
+METHODS[Task] += " slider_circle slider_dyads slider_dyad inverted inverted_sliders inverted_slider"
+METHODS[burmester.InvertedSlider] = "body_line_at"
+
 #: Methods without arguments, and why each is a method.
 NO_ARGUMENT_METHODS = {
     (Grid, "cell_centers"): "does work: allocates two arrays",
@@ -272,6 +283,11 @@ NO_ARGUMENT_METHODS = {
     (burmester.PairMap, "pareto_front"): "does work: scans every pair and builds each linkage on the front",
     (burmester.DriveMap, "pareto_front"): "does work: scans every sample and builds each drive on the front",
 }
+
+
+# Issue 27 (ssynth27).
+NO_ARGUMENT_METHODS[(Task, "slider_circle")] = "fails for four or five poses"
+NO_ARGUMENT_METHODS[(Task, "inverted")] = "can fail (the inverted poses are checked as a task's); does work"
 
 
 def _public(cls):
