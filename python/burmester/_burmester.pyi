@@ -990,26 +990,28 @@ class InvertedSlider:
     through one fixed pivot, the swivel, at every pose (a slotted coupler on
     a ground pin, a rod through a swivelling sleeve); from
     :meth:`Task.inverted_sliders` and :meth:`Task.inverted_slider`. The body
-    line at pose 1 runs through ``swivel`` along the unit ``direction``.
+    line at pose 1 runs through ``swivel`` along the unit ``direction``
+    (normalized; :class:`InvalidInputError` for a zero or non-finite one).
     Pickles to an equal object."""
 
     def __new__(cls, swivel: Point, direction: Point) -> InvertedSlider: ...
-    @property
-    def swivel(self) -> Point:
-        """The swivel: the fixed pivot, in the ground."""
-    @property
-    def direction(self) -> Point:
-        """The unit direction of the body line at pose 1."""
     def body_line_at(self, task: Task, k: int) -> Tuple[Point, Point]:
         """``(point, direction)`` of the body line at pose ``k`` (1-based) of
         ``task``: the line at pose 1 moved with the body; it passes through
         the swivel. :class:`InvalidInputError` (``"pose_index"``) for an
         index out of range."""
-    def __eq__(self, other: object, /) -> bool: ...
-    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @property
+    def swivel(self) -> Point:
+        """The swivel: the fixed pivot, in the ground."""
+    @property
+    def direction(self) -> Point:
+        """The unit direction of the body line where it is at pose 1 (at
+        pose ``k`` it is turned with the body: :meth:`body_line_at`)."""
     @staticmethod
     def _from_fields(swivel: Point, direction: Point) -> InvertedSlider:
         """Rebuilds a record from its fields (for pickling), bit for bit."""
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    def __eq__(self, other: object, /) -> bool: ...
 
 @final
 class CoincidencePoint:

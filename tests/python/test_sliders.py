@@ -15,19 +15,9 @@ from hypothesis import strategies as st
 
 import burmester
 from burmester import BurmesterError, InvalidInputError, InvertedSlider, SliderDyad, Task
+from test_four_five import NOTES_POSES  # a crank-rocker's five poses: four finite Burmester points
 
 ANGLES = (0.3, 0.9, 1.6, 2.2, 2.9)
-
-# positions-4-5.md, section 6: five poses of a crank-rocker's coupler (angles
-# in degrees), whose four Burmester points are all finite.
-NOTES_POSES = [
-    (1.049199280691, 2.279426358634, 45.220037141544),
-    (0.734502065472, 3.198658887874, 26.633426990744),
-    (-0.378159188147, 3.063048993013, 21.786789298262),
-    (-1.268710439724, 2.051150142014, 27.048624103934),
-    (-1.411118156972, 0.597429126400, 48.044287536536),
-]
-
 
 def turn(v, a):
     c, s = math.cos(a), math.sin(a)

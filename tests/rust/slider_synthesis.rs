@@ -140,6 +140,21 @@ fn check_on_guides(task: &Task, sliders: &[SliderDyad], tol: f64) {
     }
 }
 
+/// The slider dyad of `task` (four or five poses) whose pin is the
+/// slider-crank's pin at the first crank angle, with the known guide;
+/// every slider dyad's positions on its guide within `tol`.
+fn known_slider(task: &Task, sc: &SliderCrank, tol: f64) -> SliderDyad {
+    let b1 = sc.pin(ANGLES[0]);
+    let sliders = task.slider_dyads(1).unwrap();
+    check_on_guides(task, &sliders, tol);
+    let found = *sliders
+        .iter()
+        .find(|s| (s.circle - b1).norm() < 10.0 * tol * task.span())
+        .unwrap_or_else(|| panic!("{b1} not among {sliders:?}"));
+    assert!(parallel(found.guide, sc.u, 10.0 * tol));
+    found
+}
+
 #[test]
 fn slider_crank_pin_is_on_the_slider_circle_of_three_poses() {
     let sc = slider_crank();
@@ -176,14 +191,7 @@ fn slider_crank_pin_is_a_slider_point_of_four_poses() {
     let sc = slider_crank();
     let task = Task::new(&sc.poses(&ANGLES[..4]).unwrap()).unwrap();
     let b1 = sc.pin(ANGLES[0]);
-    let sliders = task.slider_dyads(1).unwrap();
-    assert!(!sliders.is_empty());
-    check_on_guides(&task, &sliders, 1e-10);
-    let found = sliders
-        .iter()
-        .find(|s| (s.circle - b1).norm() < 1e-9 * task.span())
-        .unwrap_or_else(|| panic!("{b1} not among {sliders:?}"));
-    assert!(parallel(found.guide, sc.u, 1e-9));
+    let found = known_slider(&task, &sc, 1e-10);
     // The same through the curve's own list, and checked back.
     let four = task.four_positions("test").unwrap();
     assert!(
@@ -193,7 +201,7 @@ fn slider_crank_pin_is_a_slider_point_of_four_poses() {
     );
     assert_eq!(
         task.slider_dyad(b1 + Vector2::new(1e-12, 0.0)).unwrap(),
-        *found
+        found
     );
     let e = task.slider_dyad(b1 + Vector2::new(0.1, 0.0)).unwrap_err();
     assert_eq!(e.cause(), "not_a_slider_point", "{e}");
@@ -205,13 +213,7 @@ fn slider_crank_pin_is_a_slider_burmester_point_of_five_poses() {
     let sc = slider_crank();
     let task = Task::new(&sc.poses(&ANGLES).unwrap()).unwrap();
     let b1 = sc.pin(ANGLES[0]);
-    let sliders = task.slider_dyads(1).unwrap();
-    check_on_guides(&task, &sliders, 1e-9);
-    let found = sliders
-        .iter()
-        .find(|s| (s.circle - b1).norm() < 1e-8 * task.span())
-        .unwrap_or_else(|| panic!("{b1} not among {sliders:?}"));
-    assert!(parallel(found.guide, sc.u, 1e-8));
+    known_slider(&task, &sc, 1e-9);
     // The conversion from the five-pose type keeps the normal.
     let five = task.five_positions("test").unwrap();
     for bs in five.sliders() {

@@ -19,7 +19,8 @@ type Xy = (f64, f64);
 /// not one of burmester's.
 fn check_state(what: &str, p: Point2<f64>, d: Vector2<f64>) -> PyResult<()> {
     let finite = [p.x, p.y, d.x, d.y].iter().all(|v| v.is_finite());
-    if !finite || !((d.norm() - 1.0).abs() <= 1e-12) {
+    // A NaN norm is not finite: refused by the first test.
+    if !finite || (d.norm() - 1.0).abs() > 1e-12 {
         return Err(crate::errors::invalid(
             "inconsistent_state",
             format!(
@@ -31,141 +32,110 @@ fn check_state(what: &str, p: Point2<f64>, d: Vector2<f64>) -> PyResult<()> {
     Ok(())
 }
 
-/// A slider dyad: a pin on a straight guide fixed to the ground (a
-/// revolute dyad whose center point is at infinity).
-#[pyclass(frozen, eq, from_py_object, name = "SliderDyad", module = "burmester")]
-#[derive(Clone, PartialEq)]
-pub(crate) struct PySliderDyad {
-    pub(crate) inner: SliderDyad,
+/// A Python record of a core value that is a point and a unit direction
+/// (its two fields): the class, its constructor (checked as a
+/// [`SliderDyad`]'s pin and guide, the direction normalized), its pickling
+/// (bit for bit, through `_from_fields`), its two getters and its repr.
+macro_rules! point_direction_record {
+    (
+        $(#[$doc:meta])*
+        $Py:ident($Core:ident, $name:literal) {
+            $(#[$pdoc:meta])* $point:ident,
+            $(#[$ddoc:meta])* $direction:ident $(,)?
+        }
+    ) => {
+        $(#[$doc])*
+        #[pyclass(frozen, eq, from_py_object, name = $name, module = "burmester")]
+        #[derive(Clone, PartialEq)]
+        pub(crate) struct $Py {
+            pub(crate) inner: $Core,
+        }
+
+        #[pymethods]
+        impl $Py {
+            #[new]
+            fn new($point: PyPoint, $direction: PyPoint) -> PyResult<Self> {
+                let s = SliderDyad::new($point.0, $direction.0.coords).py()?;
+                Ok($Py { inner: $Core::from(s) })
+            }
+
+            /// Rebuilds a record from its fields (for pickling), bit for bit.
+            #[staticmethod]
+            fn _from_fields($point: PyPoint, $direction: PyPoint) -> PyResult<Self> {
+                check_state($name, $point.0, $direction.0.coords)?;
+                let inner = $Core { $point: $point.0, $direction: $direction.0.coords };
+                Ok($Py { inner })
+            }
+
+            fn __reduce__<'py>(
+                &self,
+                py: Python<'py>,
+            ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+                let args = (pt(self.inner.$point), vec2(self.inner.$direction)).into_pyobject(py)?;
+                Ok((py.get_type::<$Py>().getattr("_from_fields")?, args))
+            }
+
+            $(#[$pdoc])*
+            #[getter]
+            fn $point(&self) -> Xy {
+                pt(self.inner.$point)
+            }
+
+            $(#[$ddoc])*
+            #[getter]
+            fn $direction(&self) -> Xy {
+                vec2(self.inner.$direction)
+            }
+
+            fn __repr__(&self) -> String {
+                let (p, d) = (self.inner.$point, self.inner.$direction);
+                format!(
+                    concat!($name, "(", stringify!($point), "=({:?}, {:?}), ",
+                        stringify!($direction), "=({:?}, {:?}))"),
+                    p.x, p.y, d.x, d.y
+                )
+            }
+        }
+    };
+}
+
+point_direction_record! {
+    /// A slider dyad: a pin on a straight guide fixed to the ground (a
+    /// revolute dyad whose center point is at infinity).
+    PySliderDyad(SliderDyad, "SliderDyad") {
+        /// The pin (moving pivot) at pose 1, a point of the guide.
+        circle,
+        /// The guide's unit direction.
+        guide,
+    }
+}
+
+point_direction_record! {
+    /// An inverted slider: a line of the moving body that passes through a
+    /// fixed pivot (the swivel) at every pose.
+    PyInvertedSlider(InvertedSlider, "InvertedSlider") {
+        /// The swivel: the fixed pivot the body line passes through.
+        swivel,
+        /// The unit direction of the body line at pose 1.
+        direction,
+    }
 }
 
 #[pymethods]
 impl PySliderDyad {
-    #[new]
-    fn new(circle: PyPoint, guide: PyPoint) -> PyResult<Self> {
-        let inner = SliderDyad::new(circle.0, guide.0.coords).py()?;
-        Ok(PySliderDyad { inner })
-    }
-
-    /// Rebuilds a record from its fields (for pickling), bit for bit.
-    #[staticmethod]
-    fn _from_fields(circle: PyPoint, guide: PyPoint) -> PyResult<Self> {
-        check_state("SliderDyad", circle.0, guide.0.coords)?;
-        Ok(PySliderDyad {
-            inner: SliderDyad {
-                circle: circle.0,
-                guide: guide.0.coords,
-            },
-        })
-    }
-
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let args = (pt(self.inner.circle), vec2(self.inner.guide)).into_pyobject(py)?;
-        Ok((py.get_type::<PySliderDyad>().getattr("_from_fields")?, args))
-    }
-
-    /// The pin (moving pivot) at pose 1, a point of the guide.
-    #[getter]
-    fn circle(&self) -> Xy {
-        pt(self.inner.circle)
-    }
-
-    /// The guide's unit direction.
-    #[getter]
-    fn guide(&self) -> Xy {
-        vec2(self.inner.guide)
-    }
-
     /// The guide's unit normal, where the center point is at infinity.
     #[getter]
     fn normal(&self) -> Xy {
         vec2(self.inner.normal())
     }
-
-    fn __repr__(&self) -> String {
-        let (c, u) = (self.inner.circle, self.inner.guide);
-        format!(
-            "SliderDyad(circle=({:?}, {:?}), guide=({:?}, {:?}))",
-            c.x, c.y, u.x, u.y
-        )
-    }
-}
-
-/// An inverted slider: a line of the moving body that passes through a
-/// fixed pivot (the swivel) at every pose.
-#[pyclass(
-    frozen,
-    eq,
-    from_py_object,
-    name = "InvertedSlider",
-    module = "burmester"
-)]
-#[derive(Clone, PartialEq)]
-pub(crate) struct PyInvertedSlider {
-    pub(crate) inner: InvertedSlider,
 }
 
 #[pymethods]
 impl PyInvertedSlider {
-    #[new]
-    fn new(swivel: PyPoint, direction: PyPoint) -> PyResult<Self> {
-        // The same checks as a slider dyad's (its pin and guide).
-        let s = SliderDyad::new(swivel.0, direction.0.coords).py()?;
-        Ok(PyInvertedSlider {
-            inner: InvertedSlider::from(s),
-        })
-    }
-
-    /// Rebuilds a record from its fields (for pickling), bit for bit.
-    #[staticmethod]
-    fn _from_fields(swivel: PyPoint, direction: PyPoint) -> PyResult<Self> {
-        check_state("InvertedSlider", swivel.0, direction.0.coords)?;
-        Ok(PyInvertedSlider {
-            inner: InvertedSlider {
-                swivel: swivel.0,
-                direction: direction.0.coords,
-            },
-        })
-    }
-
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let args = (pt(self.inner.swivel), vec2(self.inner.direction)).into_pyobject(py)?;
-        Ok((
-            py.get_type::<PyInvertedSlider>().getattr("_from_fields")?,
-            args,
-        ))
-    }
-
-    /// The swivel: the fixed pivot the body line passes through.
-    #[getter]
-    fn swivel(&self) -> Xy {
-        pt(self.inner.swivel)
-    }
-
-    /// The unit direction of the body line at pose 1.
-    #[getter]
-    fn direction(&self) -> Xy {
-        vec2(self.inner.direction)
-    }
-
     /// `(point, direction)` of the body line at pose `k` of `task`.
     fn body_line_at(&self, task: PyTask, k: Count) -> PyResult<(Xy, Xy)> {
         let l = self.inner.body_line_at(&task.inner, k.0).py()?;
         Ok((pt(l.point), vec2(l.direction)))
-    }
-
-    fn __repr__(&self) -> String {
-        let (s, d) = (self.inner.swivel, self.inner.direction);
-        format!(
-            "InvertedSlider(swivel=({:?}, {:?}), direction=({:?}, {:?}))",
-            s.x, s.y, d.x, d.y
-        )
     }
 }
 

@@ -35,6 +35,10 @@
 //! [`FourPositions::slider_circle_points`]: crate::FourPositions::slider_circle_points
 //! [`FivePositions::sliders`]: crate::FivePositions::sliders
 
+// Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
+// branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{InvalidInput, Result, finite_point, out_of_memory};
@@ -471,10 +475,12 @@ impl Task {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Error;
+
+    /// The three poses of [`Task`]'s example.
+    const POSES: [[f64; 3]; 3] = [[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]];
 
     fn task3() -> Task {
-        Task::from_xya(&[[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap()
+        Task::from_xya(&POSES).unwrap()
     }
 
     #[test]
@@ -494,7 +500,7 @@ mod tests {
         let e = t.slider_dyad(Point2::new(40.0, 40.0)).unwrap_err();
         assert_eq!(e.cause(), "not_a_slider_point", "{e}");
         assert!(e.to_string().contains("slider circle"), "{e}");
-        assert!(matches!(e, Error::InvalidInput(_)));
+        assert!(matches!(e, crate::Error::InvalidInput(_)));
         assert_eq!(t.slider_dyads(0).unwrap_err().cause(), "count_out_of_range");
         assert!(t.slider_dyads(Task::MAX_SLIDER_SAMPLES + 1).is_err());
     }

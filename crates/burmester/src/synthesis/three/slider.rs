@@ -31,6 +31,10 @@
 //!
 //! [`Cremona::image_pole_circle`]: crate::Cremona::image_pole_circle
 
+// Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
+// branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use core::f64::consts::PI;
 
 use nalgebra::{Point2, Vector2};
