@@ -30,10 +30,10 @@
 //! slider point when the pose positions are collinear and none is
 //! otherwise; there is nothing to choose between.
 //!
-//! [`FourPositions`]: crate::FourPositions
-//! [`FivePositions`]: crate::FivePositions
-//! [`FourPositions::slider_circle_points`]: crate::FourPositions::slider_circle_points
-//! [`FivePositions::sliders`]: crate::FivePositions::sliders
+//! [`FourPositions`]: crate::synthesis::FourPositions
+//! [`FivePositions`]: crate::synthesis::FivePositions
+//! [`FourPositions::slider_circle_points`]: crate::synthesis::FourPositions::slider_circle_points
+//! [`FivePositions::sliders`]: crate::synthesis::FivePositions::sliders
 
 // Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
 // branch.
@@ -176,8 +176,8 @@ impl Task {
     /// point's distance from pose 1 (the rounding of a nearly degenerate
     /// task) is left out.
     ///
-    /// [`FourPositions::slider_circle_points`]: crate::FourPositions::slider_circle_points
-    /// [`FivePositions::sliders`]: crate::FivePositions::sliders
+    /// [`FourPositions::slider_circle_points`]: crate::synthesis::FourPositions::slider_circle_points
+    /// [`FivePositions::sliders`]: crate::synthesis::FivePositions::sliders
     ///
     /// # Errors
     ///
