@@ -930,7 +930,7 @@ class Task:
         pose 1); four poses, the slider points of the circle-point curve;
         five poses, the slider Burmester points (an empty list when every
         real Burmester point is finite). Each pin's positions lie on its
-        guide. ``samples`` from 1 to 100000 (else
+        guide. ``samples`` from 1 to 10000 (else
         :class:`InvalidInputError`, ``"count_out_of_range"``), used for three
         poses only. Four or five poses without curves or points raise the
         errors of :meth:`center_point_curve` / :meth:`burmester_points`."""

@@ -131,9 +131,10 @@ const SWIVEL: Asked = Asked {
 /// Slider dyads and inverted sliders.
 impl Task {
     /// The most samples [`Task::slider_dyads`] and
-    /// [`Task::inverted_sliders`] take (a list of this many is built in a
-    /// few milliseconds).
-    pub const MAX_SLIDER_SAMPLES: usize = 100_000;
+    /// [`Task::inverted_sliders`] take: a list of this many is built, and
+    /// handed to Python, in well under a tenth of a second, so the call
+    /// needs no cancellation (a designer looks at tens or hundreds).
+    pub const MAX_SLIDER_SAMPLES: usize = 10_000;
 
     /// The slider circle of three poses: the points of the moving plane
     /// (written where they are at pose 1) whose three positions are
