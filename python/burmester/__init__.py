@@ -54,6 +54,7 @@ from burmester.batch import best_pivots_batch
 from burmester.design import design
 from burmester._burmester import Actuator, ActuatorMap
 from burmester.actuators import design_actuator
+from burmester._burmester import InvertedSlider, SliderDyad
 
 __all__ = [
     "AtlasPair",
@@ -102,4 +103,6 @@ __all__ = [
     "SliderConfiguration",
     "SliderCrank",
     "SynthesizedSliderCrank",
+    "InvertedSlider",
+    "SliderDyad",
 ]

@@ -66,6 +66,8 @@ __all__ = [
     "SliderConfiguration",
     "SliderCrank",
     "SynthesizedSliderCrank",
+    "InvertedSlider",
+    "SliderDyad",
 ]
 
 __version__: str
@@ -939,6 +941,105 @@ class Task:
         bytes, or None when matplotlib is not installed."""
     def __eq__(self, other: object, /) -> bool: ...
     def __getnewargs__(self) -> Tuple[list[Pose]]: ...
+    # Slider dyads and inverted sliders (issue 27).
+    def slider_circle(self) -> dict[str, Any]:
+        """Three poses only: the slider circle, the circle points whose three
+        positions are collinear: the circle through P12, P13 and the image
+        pole P'23 (``{"kind": "circle", "center": (x, y), "radius": r}``), or
+        a line (``{"kind": "line", "point", "direction"}``) when two poses
+        differ by a pure translation. Computed from the collinearity
+        condition in a frame at pose 1, so it holds at small rotations and
+        with a pole at infinity. Raises :class:`InvalidInputError`
+        (``"needs_poses"``) for four or five poses."""
+    def slider_dyads(self, samples: int = 200) -> list[SliderDyad]:
+        """The slider dyads (a pin on a straight guide fixed to the ground):
+        three poses, ``samples`` of them along :meth:`slider_circle` (at
+        equal angles from its point nearest pose 1; on a line crowded near
+        pose 1); four poses, the slider points of the circle-point curve;
+        five poses, the slider Burmester points (an empty list when every
+        real Burmester point is finite). Each pin's positions lie on its
+        guide. ``samples`` from 1 to 10000 (else
+        :class:`InvalidInputError`, ``"count_out_of_range"``), used for three
+        poses only. Four or five poses without curves or points raise the
+        errors of :meth:`center_point_curve` / :meth:`burmester_points`."""
+    def slider_dyad(self, circle: Point) -> SliderDyad:
+        """The slider dyad whose pin is at ``circle`` at pose 1, its guide the
+        line through the pin's positions. Three poses: ``circle`` must lie on
+        :meth:`slider_circle` (within 1e-9 of the task's scale plus its
+        distance from pose 1); four or five: it must be one of
+        :meth:`slider_dyads` (within 1e-7 relative). Else
+        :class:`InvalidInputError` with ``cause`` ``"not_a_slider_point"``
+        (fields ``distance``, ``tolerance``, ``hint``) or, where the task has
+        none, ``"no_slider_point"`` (field ``why``)."""
+    def inverted(self) -> Task:
+        """The inverted task: the ground's motion seen from the body, pose
+        ``k`` replaced by the inverse displacement ``D_k1`` (pose 1 becomes
+        ``(0, 0, 0)``), so its moving plane at pose 1 is the ground."""
+    def inverted_sliders(self, samples: int = 200) -> list[InvertedSlider]:
+        """The inverted sliders (a line of the body through a fixed swivel
+        at every pose): the slider dyads of :meth:`inverted`, each pin a
+        swivel in the ground and each guide the body line at pose 1. Three
+        poses: ``samples`` along the pole circle (through P12, P13, P23).
+        Errors as :meth:`slider_dyads`."""
+    def inverted_slider(self, swivel: Point) -> InvertedSlider:
+        """The inverted slider whose swivel is ``swivel``, checked as
+        :meth:`slider_dyad` checks a pin (three poses: on the pole circle);
+        the errors name the swivel point."""
+
+@final
+class SliderDyad:
+    """A slider dyad: a pin on a straight guide fixed to the ground, the
+    revolute dyad whose center point is at infinity (from
+    :meth:`Task.slider_dyads` and :meth:`Task.slider_dyad`). ``circle`` is the
+    pin at pose 1, on the guide; ``guide`` the guide's unit direction
+    (normalized; :class:`InvalidInputError` for a zero or non-finite one).
+    Pickles to an equal object."""
+
+    def __new__(cls, circle: Point, guide: Point) -> SliderDyad: ...
+    @property
+    def circle(self) -> Point:
+        """The pin (moving pivot) at pose 1, a point of the guide."""
+    @property
+    def guide(self) -> Point:
+        """The guide's unit direction."""
+    @property
+    def normal(self) -> Point:
+        """The guide's unit normal (the guide turned by +90 degrees): where
+        the center point is at infinity."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    @staticmethod
+    def _from_fields(circle: Point, guide: Point) -> SliderDyad:
+        """Rebuilds a record from its fields (for pickling), bit for bit."""
+
+@final
+class InvertedSlider:
+    """An inverted slider: a line fixed in the moving body that passes
+    through one fixed pivot, the swivel, at every pose (a slotted coupler on
+    a ground pin, a rod through a swivelling sleeve); from
+    :meth:`Task.inverted_sliders` and :meth:`Task.inverted_slider`. The body
+    line at pose 1 runs through ``swivel`` along the unit ``direction``
+    (normalized; :class:`InvalidInputError` for a zero or non-finite one).
+    Pickles to an equal object."""
+
+    def __new__(cls, swivel: Point, direction: Point) -> InvertedSlider: ...
+    def body_line_at(self, task: Task, k: int) -> Tuple[Point, Point]:
+        """``(point, direction)`` of the body line at pose ``k`` (1-based) of
+        ``task``: the line at pose 1 moved with the body; it passes through
+        the swivel. :class:`InvalidInputError` (``"pose_index"``) for an
+        index out of range."""
+    @property
+    def swivel(self) -> Point:
+        """The swivel: the fixed pivot, in the ground."""
+    @property
+    def direction(self) -> Point:
+        """The unit direction of the body line where it is at pose 1 (at
+        pose ``k`` it is turned with the body: :meth:`body_line_at`)."""
+    @staticmethod
+    def _from_fields(swivel: Point, direction: Point) -> InvertedSlider:
+        """Rebuilds a record from its fields (for pickling), bit for bit."""
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+    def __eq__(self, other: object, /) -> bool: ...
 
 @final
 class CoincidencePoint:

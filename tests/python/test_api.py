@@ -92,6 +92,8 @@ def samples():
         "Task": t,
         "Task (4 poses)": Task(FOUR),
         "Task (5 poses)": Task(FIVE),
+        "SliderDyad": Task(POSES).slider_dyads(5)[2],
+        "InvertedSlider": Task(POSES).inverted_sliders(5)[2],
         "Filemon": f,
         "SliderFilemon": slider,
         "SynthesizedFourBar": sfb,
@@ -151,6 +153,7 @@ def samples():  # noqa: F811 (the base samples and the slider linkages')
 
 
 CLASSES += [burmester.SliderCrank, burmester.SliderConfiguration, burmester.SynthesizedSliderCrank]
+CLASSES += [burmester.SliderDyad, burmester.InvertedSlider]  # issue 27 (ssynth27)
 
 
 # ---------------------------------------------------------------------------
@@ -281,6 +284,10 @@ PROPERTIES = {
                            "point_at_poses limits max_stroke_ratio samples",
 }
 
+# Issue 27 (ssynth27): the slider records.
+PROPERTIES[burmester.SliderDyad] = "circle guide normal"
+PROPERTIES[burmester.InvertedSlider] = "swivel direction"
+
 #: Methods of each class: they take arguments, can fail, or do real work.
 METHODS = {
     Grid: "cell_centers point nearest",
@@ -319,6 +326,9 @@ PROPERTIES[burmester.SynthesizedSliderCrank] = (
 METHODS[burmester.SliderCrank] = "guide_point solve joints coupler_point coupler_path limits stroke"
 METHODS[burmester.SynthesizedSliderCrank] = "travel_angles pose_at"
 METHODS[Task] += " slider_crank"
+# Issue 27 (ssynth27): slider dyads and inverted sliders.
+METHODS[Task] += " slider_circle slider_dyads slider_dyad inverted inverted_sliders inverted_slider"
+METHODS[burmester.InvertedSlider] = "body_line_at"
 
 #: Methods without arguments, and why each is a method.
 NO_ARGUMENT_METHODS = {
@@ -336,6 +346,11 @@ NO_ARGUMENT_METHODS = {
     (burmester.DriveMap, "pareto_front"): "does work: scans every sample and builds each drive on the front",
     (burmester.ActuatorMap, "pareto_front"): "does work: scans every sample and places each actuator on the front",
 }
+
+
+# Issue 27 (ssynth27).
+NO_ARGUMENT_METHODS[(Task, "slider_circle")] = "fails for four or five poses"
+NO_ARGUMENT_METHODS[(Task, "inverted")] = "can fail (the inverted poses are checked as a task's); does work"
 
 
 def _public(cls):

@@ -29,6 +29,7 @@ mod run;
 mod search;
 mod slider;
 mod slider_branch;
+mod slider_dyads;
 mod sweep;
 mod synthesis;
 
@@ -65,6 +66,8 @@ mod _burmester {
     use crate::slider::{PySliderConfiguration, PySliderCrank, PySynthesizedSliderCrank};
     #[pymodule_export]
     use crate::slider_branch::{PySliderFilemon, slider_branch_free_arcs, slider_curve_branch};
+    #[pymodule_export]
+    use crate::slider_dyads::{PyInvertedSlider, PySliderDyad};
     #[pymodule_export]
     use crate::synthesis::PyPole;
 

@@ -23,7 +23,7 @@ type Xy = (f64, f64);
 /// Mapped points (NaN where undefined) and their validity mask.
 type MappedPoints<'py> = PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>)>;
 
-fn circle_dict<'py>(py: Python<'py>, c: CircleOrLine) -> PyResult<Bound<'py, PyDict>> {
+pub(crate) fn circle_dict<'py>(py: Python<'py>, c: CircleOrLine) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     match c {
         CircleOrLine::Circle { center, radius } => {

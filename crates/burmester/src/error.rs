@@ -567,6 +567,41 @@ pub enum InvalidInput {
         /// The tolerance ([`tolerance::DYAD`](crate::tolerance::DYAD)).
         tolerance: f64,
     },
+    /// A point asked for as a slider point (a circle point whose positions
+    /// at the poses are collinear: the pin of a slider dyad, or the swivel
+    /// of an inverted slider) is not one: for three poses it is off the
+    /// slider circle, for four or five poses it is none of the finitely
+    /// many slider points (issue 27).
+    #[error(
+        "({}, {}) is not a {what} of the task: it is {} from the nearest one, more than the \
+         tolerance of {}; {hint}",
+        Num(*.x), Num(*.y), Num(*.distance), Num(*.tolerance)
+    )]
+    NotASliderPoint {
+        /// What was asked for (`"slider point"` or `"swivel point"`).
+        what: &'static str,
+        /// x of the point given.
+        x: f64,
+        /// y of the point given.
+        y: f64,
+        /// Its distance from the slider circle (three poses) or from the
+        /// nearest slider point (four or five poses; infinite when there
+        /// is none).
+        distance: f64,
+        /// The largest distance accepted.
+        tolerance: f64,
+        /// What to change (which points are slider points).
+        hint: &'static str,
+    },
+    /// A slider point (or an inverted slider's swivel point) was asked for
+    /// where the task has none (issue 27).
+    #[error("the task has no {what}: {why}")]
+    NoSliderPoint {
+        /// What was asked for (`"slider point"` or `"swivel point"`).
+        what: &'static str,
+        /// Why there is none, and what to change.
+        why: &'static str,
+    },
 }
 
 /// The linkage cannot be assembled as asked.

@@ -148,6 +148,7 @@ pub use linkage::{
 pub use linkage::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};
 pub use linkage::{SliderConfiguration, SliderCrank, SliderJoints, SliderLimit};
 pub use nalgebra::{Point2, Vector2};
+pub use synthesis::InvertedSlider;
 pub use synthesis::SynthesizedSliderCrank;
 pub use synthesis::three::{Cremona, Filemon, Method};
 pub use synthesis::{

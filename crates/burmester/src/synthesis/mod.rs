@@ -15,7 +15,9 @@
 //!   the order in which a crank meets the poses and the drives of a
 //!   four-bar of two dyads; `slider.rs`: the slider dyad (a pin on a
 //!   straight guide, the center at infinity) and [`DyadKind`], the one
-//!   place a new kind of dyad is added.
+//!   place a new kind of dyad is added; `task_slider.rs`: the slider dyads
+//!   and inverted sliders of a task ([`Task::slider_dyads`],
+//!   [`InvertedSlider`]).
 
 mod branch;
 mod dyad;
@@ -28,6 +30,7 @@ mod order;
 mod slider;
 mod slider_crank;
 mod task;
+mod task_slider;
 pub mod three;
 
 pub use branch::{Branch, FilemonLines};
@@ -42,3 +45,4 @@ pub use order::{CrankOrder, Drive, Turn};
 pub use slider::{DyadKind, SliderDyad};
 pub use slider_crank::SynthesizedSliderCrank;
 pub use task::Task;
+pub use task_slider::InvertedSlider;

@@ -598,12 +598,22 @@ impl FourPositions {
     /// linear form's rows divided by `|G|`, which tend to
     /// `(1 - conj(R_k)) u . z = t_k . u`, exact.
     pub fn slider_circle_points(&self) -> Vec<Point2<f64>> {
+        self.slider_circles().into_iter().map(|(p, _)| p).collect()
+    }
+
+    /// [`slider_circle_points`](Self::slider_circle_points), each with the
+    /// unit asymptotic direction `u` of the center-point curve it belongs
+    /// to (where its center point is at infinity; its guide is normal to
+    /// `u`).
+    pub(crate) fn slider_circles(&self) -> Vec<(Point2<f64>, Vector2<f64>)> {
         self.center_curve
             .asymptotic_directions()
             .into_iter()
-            .filter_map(|u| self.motion.form.solve_at_infinity(u, &[1, 2, 3]).ok())
-            .map(|z| self.motion.global_of(z))
-            .filter(|p| p.x.is_finite() && p.y.is_finite())
+            .filter_map(|u| {
+                let z = self.motion.form.solve_at_infinity(u, &[1, 2, 3]).ok()?;
+                Some((self.motion.global_of(z), u))
+            })
+            .filter(|(p, _)| p.x.is_finite() && p.y.is_finite())
             .collect()
     }
 

@@ -12,6 +12,7 @@
 mod cremona;
 mod filemon;
 mod linear;
+mod slider;
 mod sweep;
 
 use nalgebra::{Point2, Vector2};
@@ -19,6 +20,7 @@ use nalgebra::{Point2, Vector2};
 pub use cremona::Cremona;
 pub use filemon::{Filemon, Method};
 pub(crate) use linear::Linear;
+pub(crate) use slider::SliderLocus;
 pub(crate) use sweep::BranchRows;
 
 use crate::Result;
