@@ -65,7 +65,7 @@ fn task_filemon_and_maps_show_what_they_are_for() {
     let filemon = task.filemon(Point2::new(4.0, -1.0)).unwrap();
     let text = format!("{filemon:?}");
     assert!(
-        text.contains("driven: Dyad { center: [4.0, -1.0]"),
+        text.contains("driven: Revolute(Dyad { center: [4.0, -1.0]"),
         "{text}"
     );
     assert!(
