@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
-import burmester
+from burmester._burmester import Actuator, ActuatorMap, InvalidInputError, SynthesizedFourBar
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -33,18 +33,18 @@ BODY_SHARE = 0.85
 PISTON_OVERLAP = 0.05
 
 
-def _linkage_of(obj: Any) -> burmester.SynthesizedFourBar:
+def _linkage_of(obj: Any) -> SynthesizedFourBar:
     """The four-bar of a :class:`burmester.SynthesizedFourBar` or of a
     design (anything with a ``linkage``)."""
-    if isinstance(obj, burmester.SynthesizedFourBar):
+    if isinstance(obj, SynthesizedFourBar):
         return obj
     sfb = getattr(obj, "linkage", None)
-    if isinstance(sfb, burmester.SynthesizedFourBar):
+    if isinstance(sfb, SynthesizedFourBar):
         return sfb
     raise TypeError(f"expected a SynthesizedFourBar or a design with a linkage, got {type(obj).__name__}")
 
 
-def default_view(sfb: burmester.SynthesizedFourBar, reach: float = 1.0) -> Extent:
+def default_view(sfb: SynthesizedFourBar, reach: float = 1.0) -> Extent:
     """A square view about the linkage over its travel: its pivots and the
     moving joints at the poses, widened by ``reach`` times its size on each
     side (where a strut's ground pivot may go)."""
@@ -66,7 +66,7 @@ def actuator_map(
     view: Optional[Sequence[float]] = None,
     samples: Tuple[int, int] = (200, 200),
     **options: Any,
-) -> burmester.ActuatorMap:
+) -> ActuatorMap:
     """The placement map of an actuator for ``linkage`` (a
     :class:`burmester.SynthesizedFourBar` or a design) over ``view``
     (default :func:`default_view`) on ``samples`` ``(nx, ny)``; ``options``
@@ -84,7 +84,7 @@ def design_actuator(
     samples: Tuple[int, int] = (200, 200),
     rank_by: "RankBy" = "balanced",
     **options: Any,
-) -> burmester.Actuator:
+) -> Actuator:
     """The best actuator for ``linkage`` (a
     :class:`burmester.SynthesizedFourBar`, or the design
     :func:`burmester.design` returns): its placement map over ``view``
@@ -95,7 +95,7 @@ def design_actuator(
     best = amap.best_placements(1, rank_by=rank_by)
     if not best:
         mono = int(np.count_nonzero(amap.monotone))
-        raise burmester.InvalidInputError(
+        raise InvalidInputError(
             f"no acceptable actuator placement in the view ({mono} of {amap.monotone.size} ground "
             f"pivots give a monotone stroke); widen the view, move the point, or relax "
             f"max_stroke_ratio ({amap.max_stroke_ratio:g}) or min_transmission_deg "
@@ -128,7 +128,7 @@ def cylinder(ground: Point, q: Point, closed: float, stroke: float,
     return rect(g, g + u * body, width), rect(p - u * rod, p, 0.45 * width)
 
 
-def actuator_record(a: burmester.Actuator) -> Dict[str, Any]:
+def actuator_record(a: Actuator) -> Dict[str, Any]:
     """A placement as a JSON-ready dict (angles in degrees)."""
     return {
         "link": a.link,
@@ -151,7 +151,7 @@ def actuator_record(a: burmester.Actuator) -> Dict[str, Any]:
     }
 
 
-def actuator_table(a: burmester.Actuator, source: Optional[str] = None, units: str = "") -> str:
+def actuator_table(a: Actuator, source: Optional[str] = None, units: str = "") -> str:
     """A placement in words: where it goes and what a designer checks."""
     u = f" {units}" if units else ""
 
@@ -180,7 +180,7 @@ def actuator_table(a: burmester.Actuator, source: Optional[str] = None, units: s
     return "\n".join(lines)
 
 
-def draw_map(amap: burmester.ActuatorMap, *, best: int = 3, rank_by: "RankBy" = "balanced",
+def draw_map(amap: ActuatorMap, *, best: int = 3, rank_by: "RankBy" = "balanced",
              transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
              ax: Optional["Axes"] = None, legend: bool = True) -> "Axes":
     """Draw an actuator placement map: the ground pivots with a monotone
@@ -237,7 +237,7 @@ def draw_map(amap: burmester.ActuatorMap, *, best: int = 3, rank_by: "RankBy" = 
     return ax
 
 
-def draw_actuator(a: burmester.Actuator, *, ax: Optional["Axes"] = None, legend: bool = True,
+def draw_actuator(a: Actuator, *, ax: Optional["Axes"] = None, legend: bool = True,
                   width: Optional[float] = None) -> "Axes":
     """Draw the linkage at its poses with the actuator as a cylinder (body
     and rod) at each: the four-bar's links, the coupler, the actuator's
