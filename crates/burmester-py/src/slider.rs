@@ -12,7 +12,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::PyTask;
-use crate::conv::{Count, FloatArray, PyPoint, Real, pt, to_numpy};
+use crate::conv::{
+    Arrays, Count, FloatArray, PyPoint, Real, fill_arrays, pt, to_numpy, write_points,
+};
 use crate::errors::IntoPy;
 use crate::linkage::mode;
 
@@ -89,12 +91,6 @@ impl From<SliderCrank> for PySliderCrank {
     }
 }
 
-type PathArrays<'py> = (
-    Bound<'py, PyArrayDyn<f64>>,
-    Bound<'py, PyArrayDyn<f64>>,
-    Bound<'py, PyArrayDyn<bool>>,
-);
-
 #[pymethods]
 impl PySliderCrank {
     #[new]
@@ -166,7 +162,7 @@ impl PySliderCrank {
         point: PyPoint,
         theta2s: FloatArray<'py>,
         mode: &str,
-    ) -> PyResult<PathArrays<'py>> {
+    ) -> PyResult<Arrays<'py>> {
         let m = self::mode(mode)?;
         let local = point.0.coords;
         // A bad point is an exception, not a path of NaN.
@@ -174,27 +170,11 @@ impl PySliderCrank {
         if let Some(Err(e @ burmester::Error::InvalidInput(_))) = first {
             return Err(e).py();
         }
-        let (flat, shape) = (theta2s.values(), theta2s.shape().to_vec());
+        let (flat, shape) = (theta2s.values(), theta2s.shape());
         let sc = self.inner;
-        let (xs, ys, ok) = py
-            .detach(|| -> burmester::Result<_> {
-                let n = flat.len();
-                let mut xs = burmester::error::try_vec("coupler path x", n, f64::NAN)?;
-                let mut ys = burmester::error::try_vec("coupler path y", n, f64::NAN)?;
-                let mut ok = burmester::error::try_vec("coupler path flags", n, false)?;
-                for (i, p) in sc.coupler_path(local, flat.iter().copied(), m).enumerate() {
-                    if let Ok(p) = p {
-                        (xs[i], ys[i], ok[i]) = (p.x, p.y, true);
-                    }
-                }
-                Ok((xs, ys, ok))
-            })
-            .py()?;
-        Ok((
-            to_numpy(py, &shape, xs),
-            to_numpy(py, &shape, ys),
-            to_numpy(py, &shape, ok),
-        ))
+        fill_arrays(py, shape, |xs, ys, ok| {
+            write_points(sc.coupler_path(local, flat.iter().copied(), m), xs, ys, ok);
+        })
     }
 
     /// `((theta2, slider), (theta2, slider))`: the lowest and the highest
