@@ -3,9 +3,9 @@
 //! dyad (the core's `Filemon` and `FilemonArcs` for a `SliderDyad`). Thin:
 //! converts and delegates.
 
+use burmester::SliderDyad;
 use burmester::synthesis::FilemonArcs;
 use burmester::synthesis::three::Filemon;
-use burmester::{Line, SliderDyad};
 use numpy::PyArray2;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -16,6 +16,7 @@ use crate::conv::{Count, PyPoint, Real, pt};
 use crate::curves;
 use crate::errors::IntoPy;
 use crate::geom::{PyConic, grid_arg, vec2};
+use crate::synthesis::line_tuple;
 
 type Xy = (f64, f64);
 
@@ -29,10 +30,6 @@ pub(crate) struct PySliderFilemon {
     inner: Filemon,
     /// The slider as the construction keeps it (the guide normalized).
     slider: SliderDyad,
-}
-
-fn line(l: &Line) -> (Xy, Xy) {
-    (pt(l.point), vec2(l.direction))
 }
 
 #[pymethods]
@@ -89,12 +86,17 @@ impl PySliderFilemon {
 
     #[getter]
     fn lines(&self) -> Vec<(Xy, Xy)> {
-        self.inner.lines().iter().flatten().map(line).collect()
+        self.inner
+            .lines()
+            .iter()
+            .flatten()
+            .map(line_tuple)
+            .collect()
     }
 
     #[getter]
     fn all_lines(&self) -> Vec<(Xy, Xy)> {
-        self.inner.all_lines().iter().map(line).collect()
+        self.inner.all_lines().iter().map(line_tuple).collect()
     }
 
     #[getter]

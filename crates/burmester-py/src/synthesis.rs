@@ -40,7 +40,7 @@ pub(crate) fn circle_dict<'py>(py: Python<'py>, c: CircleOrLine) -> PyResult<Bou
     Ok(d)
 }
 
-fn line_tuple(l: &Line) -> (Xy, Xy) {
+pub(crate) fn line_tuple(l: &Line) -> (Xy, Xy) {
     (pt(l.point), vec2(l.direction))
 }
 
