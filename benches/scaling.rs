@@ -11,7 +11,16 @@
 //!   batch kernel, parallel over chunks of 4096);
 //! * `atlas/32x256`: the pivot-pair atlas, 32^2 driven centers by 256^2
 //!   driving samples each, ranked by transmission (as when the logs in
-//!   `benches/scaling/` were taken, before the atlas took any ranking).
+//!   `benches/scaling/` were taken, before the atlas took any ranking);
+//! * `design/example`: the one-call design (`Task::design`, balanced
+//!   ranking, default options) of the built-in example;
+//! * `pair_map/512`: the four-position pair map, 512^2 pairs of dyads of
+//!   poses 1-4 of the notes' worked example;
+//! * `drive_map/1024`: the drive map of the example's best linkage by
+//!   transmission, 1024^2 crank pivots (as in the `drive_map` bench);
+//! * `actuator_map/256`: the actuator map of that linkage, the actuator on
+//!   the coupler at the middle of `A C`, 256^2 ground pivots, 256 travel
+//!   samples each.
 //!
 //! Run it on a machine with many cores; `benches/report.py` lists it when
 //! its output is present. Throughput is in samples (angles for
@@ -19,12 +28,18 @@
 
 use std::hint::black_box;
 
-use burmester::{Constraints, Control, DesignLimits, FourBar, Grid, Method, RankBy, example};
+use burmester::design::{
+    ActuatorContext, ActuatorOptions, DesignOptions, DriveContext, DriveOptions,
+};
+use burmester::{Constraints, Control, DesignLimits, FourBar, Grid, Method, RankBy, Task, example};
 use criterion::{
     BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group, criterion_main,
 };
 
 mod shared;
+
+#[path = "../tests/rust/common/mod.rs"]
+mod common;
 
 /// 1, 2, 4, ... up to the available cores, and the core count itself.
 fn thread_counts() -> Vec<usize> {
@@ -63,6 +78,43 @@ fn scaling(c: &mut Criterion) {
         vec![0.0; n_angles],
         vec![false; n_angles],
     );
+    let task4 = Task::new(&common::notes_poses()[..4]).expect("the notes' poses 1-4");
+    let design_options = DesignOptions {
+        rank_by: RankBy::Balanced,
+        ..DesignOptions::default()
+    };
+    // The drive map's and the actuator map's linkage: the example's best by
+    // transmission on a 400^2 view (the `drive_map` bench's).
+    let view = Grid::new(vp, 400, 400).unwrap();
+    let linkage = f
+        .solution_map(&view, &limits, &none, &control)
+        .unwrap()
+        .best_pivots(1, None, RankBy::Transmission)
+        .unwrap()[0]
+        .linkage;
+    let (a0, e) = (linkage.driving.center, linkage.driving.circle);
+    let h = 4.0 * (e - a0).norm();
+    let drive_grid = Grid::from_bounds(a0.x - h, a0.x + h, a0.y - h, a0.y + h, 1024, 1024).unwrap();
+    let drive = DriveContext::new(
+        &linkage,
+        e,
+        &drive_grid,
+        &limits,
+        &DriveOptions::default(),
+        &none,
+    )
+    .unwrap();
+    let q = nalgebra::center(&linkage.driving.circle, &linkage.driven.circle);
+    let act_grid = Grid::from_bounds(a0.x - h, a0.x + h, a0.y - h, a0.y + h, 256, 256).unwrap();
+    let actuator = ActuatorContext::new(
+        &linkage,
+        q,
+        &act_grid,
+        &limits,
+        &ActuatorOptions::default(),
+        &none,
+    )
+    .unwrap();
     let mut g = c.benchmark_group("scaling");
     g.sampling_mode(SamplingMode::Flat);
     g.sample_size(10);
@@ -141,6 +193,42 @@ fn scaling(c: &mut Criterion) {
                     })
                 })
             },
+        );
+        g.throughput(Throughput::Elements(1));
+        g.bench_with_input(
+            BenchmarkId::new("design/example", threads),
+            &threads,
+            |b, _| {
+                pool.install(|| {
+                    b.iter(|| task.design(black_box(&design_options), &control).unwrap())
+                })
+            },
+        );
+        g.throughput(Throughput::Elements(512 * 512));
+        g.bench_with_input(
+            BenchmarkId::new("pair_map/512", threads),
+            &threads,
+            |b, _| {
+                pool.install(|| {
+                    b.iter(|| {
+                        task4
+                            .pair_map(black_box(512), 512, &limits, &none, &control)
+                            .unwrap()
+                    })
+                })
+            },
+        );
+        g.throughput(Throughput::Elements(drive_grid.len() as u64));
+        g.bench_with_input(
+            BenchmarkId::new("drive_map/1024", threads),
+            &threads,
+            |b, _| pool.install(|| b.iter(|| black_box(&drive).map(&control).unwrap())),
+        );
+        g.throughput(Throughput::Elements(act_grid.len() as u64));
+        g.bench_with_input(
+            BenchmarkId::new("actuator_map/256", threads),
+            &threads,
+            |b, _| pool.install(|| b.iter(|| black_box(&actuator).map(&control).unwrap())),
         );
     }
     g.finish();
