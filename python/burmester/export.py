@@ -245,8 +245,9 @@ LAYERS: Dict[str, Layer] = {
     "COINCIDENCE_POINTS": Layer(251, "#4d4d4d", "Q_jk: crank positions j and k coincide"),
     "BURMESTER_POINTS": Layer(2, "#e6ab02", "Burmester points (center points)"),
     "POSES": Layer(40, "#e66101", "poses: point and a flag along the coupler angle"),
-    "PIVOTS": Layer(7, "#000000", "fixed pivots A0, C0"),
-    "DIMENSIONS": Layer(5, "#0b5394", "dimensions: link lengths at pose 1, fixed pivots from the origin"),
+    "PIVOTS": Layer(7, "#000000", "fixed pivots A0, C0 (and an actuator's ground pivot G)"),
+    "DIMENSIONS": Layer(5, "#0b5394", "dimensions: link lengths at pose 1, fixed pivots from the origin "
+                       "(an actuator: its pin-to-pin lengths at the first and last pose)"),
     "TEXT": Layer(250, "#404040", "labels"),
 }
 
