@@ -1588,12 +1588,12 @@ def actuator(
     a: burmester.Actuator,
     path: PathLike,
     *,
+    units: Optional[str] = DEFAULT_UNITS,
     width: Optional[float] = None,
-    travel_samples: int = 0,
-    path_samples: int = DEFAULT_PATH_SAMPLES,
     labels: bool = True,
     dimensions: bool = True,
-    units: Optional[str] = DEFAULT_UNITS,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
 ) -> Path:
     """Write a four-bar driven by a linear actuator (a
     :class:`burmester.Actuator`) to a DXF or SVG file, by the path's

@@ -2067,10 +2067,7 @@ def slider_crank(
             ax.set_title(f"Slider-crank: crank {format_length(sc.crank, units)}, coupler "
                          f"{format_length(sc.coupler, units)}, offset {format_length(sc.offset, units)}, "
                          f"stroke {format_length(sc.stroke(mode), units)}", fontsize=10)
-    _around_data(ax, labels, units)
-    if legend:
-        _legend(ax)
-    return ax
+    return _framed(ax, labels, legend, units)
 
 
 def animate_slider_crank(
@@ -2153,6 +2150,12 @@ def slider_dyad(dyad: burmester.SliderDyad, task: Optional[Task] = None, *, labe
         u = dyad.guide
         ax.set_title(f"Slider dyad: pin C1 ({format_length(c[0], units)}, {format_length(c[1], units)}), "
                      f"guide at {math.degrees(math.atan2(u[1], u[0])):.1f} deg", fontsize=10)
+    return _framed(ax, labels, legend, units)
+
+
+def _framed(ax: Axes, labels: bool, legend: bool, units: Optional[str]) -> Axes:
+    """The picture's frame: axis names, limits around the data
+    (:func:`_around_data`) and the legend; returns ``ax``."""
     _around_data(ax, labels, units)
     if legend:
         _legend(ax)
@@ -2231,17 +2234,18 @@ def animate_actuator(
         ax.set_title(f"Driven by a cylinder on the {a.link}: {format_length(a.min_length, units)} closed, "
                      f"stroke {format_length(a.stroke, units)}\n{state}, force transmission at least "
                      f"{a.min_transmission_deg:.0f} deg", fontsize=10)
-        (chain_art,) = ax.plot([], [], color="#333333", linewidth=2.5, marker="o", markersize=5, zorder=8)
-        chain_art.set_gid("moving-linkage")
-        tri = Polygon(polys[0][1], closed=True, facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.6, zorder=8)
-        tri.set_gid("moving-coupler")
-        ax.add_patch(tri)
-        body = Polygon(polys[0][2], closed=True, facecolor="0.35", edgecolor="black", linewidth=0.8, zorder=10)
-        body.set_gid("moving-actuator-body")
-        ax.add_patch(body)
-        rod = Polygon(polys[0][3], closed=True, facecolor="#bdbdbd", edgecolor="black", linewidth=0.8, zorder=9)
-        rod.set_gid("moving-actuator-rod")
-        ax.add_patch(rod)
+        (chain_art,) = ax.plot([], [], color="#333333", linewidth=2.5, marker="o", markersize=5, zorder=8,
+                               gid="moving-linkage")
+        patches: List[Polygon] = []
+        for k, (gid, style) in enumerate((
+            ("moving-coupler", dict(facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.6, zorder=8)),
+            ("moving-actuator-body", dict(facecolor="0.35", edgecolor="black", linewidth=0.8, zorder=10)),
+            ("moving-actuator-rod", dict(facecolor="#bdbdbd", edgecolor="black", linewidth=0.8, zorder=9)),
+        ), start=1):
+            patch = Polygon(polys[0][k], closed=True, gid=gid, **style)
+            ax.add_patch(patch)
+            patches.append(patch)
+        tri, body, rod = patches
 
         def update(i: int) -> List[Artist]:
             chain, coupler, b, r = polys[i]

@@ -891,16 +891,14 @@ def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
             kw[key] = t[key]
     if "point" in t:
         kw["point"] = r.point("actuator.point", t["point"])
-    if "max_stroke_ratio" in t:
-        ratio = r.number("actuator.max_stroke_ratio", t["max_stroke_ratio"], "a number (open over closed length)")
-        if ratio < 1.0:
-            raise r.fail("actuator.max_stroke_ratio", f"expected at least 1 (open over closed length), found {ratio:g}")
-        kw["max_stroke_ratio"] = ratio
-    if "max_size_ratio" in t:
-        size = r.number("actuator.max_size_ratio", t["max_size_ratio"], "a number", no_limit=True)
-        if not size > 0.0:
-            raise r.fail("actuator.max_size_ratio", f"expected a ratio above 0 (or inf: no limit), found {size:g}")
-        kw["max_size_ratio"] = size
+    # Each ratio: (its lowest value, whether that is allowed, what it is), TOML's inf for no size limit.
+    for key, (low, closed, what) in (("max_stroke_ratio", (1.0, True, "at least 1 (open over closed length)")),
+                                     ("max_size_ratio", (0.0, False, "a ratio above 0 (or inf: no limit)"))):
+        if key in t:
+            value = r.number(f"actuator.{key}", t[key], "a number", no_limit=key == "max_size_ratio")
+            if value < low or (value == low and not closed):
+                raise r.fail(f"actuator.{key}", f"expected {what}, found {value:g}")
+            kw[key] = value
     if ("x" in t) != ("y" in t):
         missing = "y" if "x" in t else "x"
         raise r.fail(f"actuator.{missing}", "missing; give both x = [min, max] and y = [min, max] (where the "

@@ -39,6 +39,13 @@ def measurements(doc):
     return [e.get_measurement() for e in doc.modelspace().query("DIMENSION")]
 
 
+def assert_svg_is_dxf(doc, svg, layers):
+    """Each layer's SVG paths are its DXF polylines, y flipped back."""
+    for layer in layers:
+        for x, y in zip(polylines(doc, layer), svg_paths(svg, layer)):
+            np.testing.assert_allclose(y, x, atol=1e-12)
+
+
 def svg_paths(path, layer):
     """The polylines of an SVG layer in model coordinates (y flipped back)."""
     root = ET.parse(path).getroot()
@@ -110,10 +117,7 @@ def test_slider_crank_dxf_is_the_hand_made_linkage_at_its_poses(tmp_path, known)
 def test_slider_crank_svg_is_the_dxf_upright(tmp_path, known):
     sc, angles, s = known
     d = ezdxf.readfile(export.slider_crank(s, tmp_path / "s.dxf"))
-    svg = export.slider_crank(s, tmp_path / "s.svg")
-    for layer in ("GUIDE", "SLIDER", "LINKAGE_2"):
-        for a, b in zip(polylines(d, layer), svg_paths(svg, layer)):
-            np.testing.assert_allclose(b, a, atol=1e-12)
+    assert_svg_is_dxf(d, export.slider_crank(s, tmp_path / "s.svg"), ("GUIDE", "SLIDER", "LINKAGE_2"))
 
 
 def test_a_slider_crank_alone_at_an_angle(tmp_path, known):
@@ -185,10 +189,8 @@ def test_actuator_dxf_holds_the_strut_at_the_poses(tmp_path, strut):
     got = [m for m in measurements(doc) if isinstance(m, float)]
     for want in (a.min_length, a.max_length):
         assert min(abs(m - want) for m in got) < 1e-9
-    svg = export.actuator(a, tmp_path / "strut.svg")
-    for layer in ("ACTUATOR_AXIS", "ACTUATOR_BODY", "ACTUATOR_ROD"):
-        for x, y in zip(polylines(doc, layer), svg_paths(svg, layer)):
-            np.testing.assert_allclose(y, x, atol=1e-12)
+    assert_svg_is_dxf(doc, export.actuator(a, tmp_path / "strut.svg"), ("ACTUATOR_AXIS", "ACTUATOR_BODY",
+                                                                          "ACTUATOR_ROD"))
 
 
 def test_actuator_export_at_the_documented_maximum_and_its_errors(tmp_path, strut):
@@ -311,19 +313,25 @@ def test_the_actuator_table_round_trips():
     assert taskfile.load(HOOD).actuator.grid == (320, 320)
 
 
+#: A bad line of [actuator] | the field its error names | words of the message.
+BAD_LINES = r"""
+link = "slider"                  | actuator.link             | "coupler", "crank", "rocker"
+rank_by = "best"                 | actuator.rank_by          | "margin"
+point = [1.0]                    | actuator.point            | [x, y]
+max_stroke_ratio = 0.9           | actuator.max_stroke_ratio | at least 1
+max_stroke_ratio = nan           | actuator.max_stroke_ratio | finite
+max_size_ratio = 0               | actuator.max_size_ratio   | above 0
+x = [1.0, 2.0]                   | actuator.y                | missing
+x = [2.0, 1.0]\ny = [0.0, 1.0]   | actuator.x                | min < max
+grid = [1025, 10]                | actuator.grid[0]          | 2 to 1024
+grid = [10, 1]                   | actuator.grid[1]          | 2 to 20000
+base_plate = [[0, 0], [1, 0]]    | actuator.base_plate       | at least 3 points
+stroke = 10                      | actuator.stroke           | unknown key
+"""
+
+
 @pytest.mark.parametrize("line, where, words", [
-    ('link = "slider"', "actuator.link", '"coupler", "crank", "rocker"'),
-    ('rank_by = "best"', "actuator.rank_by", '"margin"'),
-    ("point = [1.0]", "actuator.point", "[x, y]"),
-    ("max_stroke_ratio = 0.9", "actuator.max_stroke_ratio", "at least 1"),
-    ("max_stroke_ratio = nan", "actuator.max_stroke_ratio", "finite"),
-    ("max_size_ratio = 0", "actuator.max_size_ratio", "above 0"),
-    ("x = [1.0, 2.0]", "actuator.y", "missing"),
-    ("x = [2.0, 1.0]\ny = [0.0, 1.0]", "actuator.x", "min < max"),
-    ("grid = [1025, 10]", "actuator.grid[0]", "2 to 1024"),
-    ("grid = [10, 1]", "actuator.grid[1]", "2 to 20000"),
-    ("base_plate = [[0, 0], [1, 0]]", "actuator.base_plate", "at least 3 points"),
-    ("stroke = 10", "actuator.stroke", "unknown key"),
+    tuple(part.strip().replace("\\n", "\n") for part in row.split("|")) for row in BAD_LINES.strip().splitlines()
 ])
 def test_a_bad_actuator_table_names_the_field(line, where, words):
     with pytest.raises(taskfile.TaskFileError) as e:
