@@ -876,13 +876,13 @@ def _write_dxf(d: _Drawing, path: Path, units: str) -> None:
     msp = doc.modelspace()
     for r in d.regions:
         for ring in r.rings:
-            msp.add_lwpolyline(ring.tolist(), close=True, dxfattribs={"layer": r.layer})
+            _lwpolyline(msp, ring, True, r.layer)
         hatch = msp.add_hatch(color=colors.BYLAYER, dxfattribs={"layer": r.layer + "_FILL"})
         for k, ring in enumerate(r.rings):
             flags = const.BOUNDARY_PATH_EXTERNAL if k == 0 else const.BOUNDARY_PATH_DEFAULT
             hatch.paths.add_polyline_path(ring.tolist(), is_closed=True, flags=flags)
     for p in d.polylines:
-        msp.add_lwpolyline(p.points.tolist(), close=p.closed, dxfattribs={"layer": p.layer})
+        _lwpolyline(msp, p.points, p.closed, p.layer)
     for c in d.circles:
         msp.add_circle(c.center, c.radius, dxfattribs={"layer": c.layer})
     for m in d.markers:
@@ -897,6 +897,16 @@ def _write_dxf(d: _Drawing, path: Path, units: str) -> None:
     msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))
     doc.set_modelspace_vport(height=y1 - y0, center=((x0 + x1) / 2, (y0 + y1) / 2))
     doc.saveas(path)
+
+
+def _lwpolyline(msp: Any, points: Array, closed: bool, layer: str) -> None:
+    """An LWPOLYLINE of ``points`` ``(n, 2)`` on ``layer``, its vertices
+    set in one step: ezdxf's ``add_lwpolyline`` appends them one at a
+    time, each copying those before (quadratic: 100 000 vertices took
+    minutes)."""
+    pl = msp.add_lwpolyline([], close=closed, dxfattribs={"layer": layer})
+    # ezdxf's vertex layout: x, y, start width, end width, bulge.
+    pl.lwpoints.set(np.column_stack([np.asarray(points, dtype=float).reshape(-1, 2), np.zeros((len(points), 3))]))
 
 
 def _dxf_dimensions(doc: Any, d: _Drawing, text: float, units: str) -> None:

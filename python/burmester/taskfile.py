@@ -860,6 +860,7 @@ class ActuatorSpec:
         y = [-200.0, 200.0]          # ... ymin, ymax (default: about the linkage)
         grid = [320, 320]            # ground pivots sampled along x and y, 2 to 1024 each
         base_plate = [[-150, -100], [50, -100], [50, 0], [-150, 0]]   # G inside this polygon
+        width = 18.0                 # the cylinder's body as drawn and exported (default: 0.06 of its closed length)
     """
 
     link: Literal["coupler", "crank", "rocker"] = "coupler"
@@ -873,6 +874,9 @@ class ActuatorSpec:
     view: Optional[Tuple[float, float, float, float]] = None
     grid: Tuple[int, int] = (200, 200)
     base_plate: Optional[Tuple[Point, ...]] = None
+    #: The cylinder's width in the pictures, the animation and the CAD
+    #: export (its rod is 0.45 of it); None: 0.06 of its closed length.
+    width: Optional[float] = None
 
 
 def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
@@ -881,7 +885,7 @@ def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
     if t is None:
         return None
     r.only_keys("actuator", t, ["link", "point", "max_stroke_ratio", "max_size_ratio", "rank_by", "x", "y",
-                                "grid", "base_plate"])
+                                "grid", "base_plate", "width"])
     kw: Dict[str, Any] = {}
     for key, allowed in (("link", ACTUATOR_LINKS), ("rank_by", ACTUATOR_RANKINGS)):
         if key in t:
@@ -891,9 +895,10 @@ def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
             kw[key] = t[key]
     if "point" in t:
         kw["point"] = r.point("actuator.point", t["point"])
-    # Each ratio: (its lowest value, whether that is allowed, what it is), TOML's inf for no size limit.
+    # Each number: (its lowest value, whether that is allowed, what it is), TOML's inf for no size limit.
     for key, (low, closed, what) in (("max_stroke_ratio", (1.0, True, "at least 1 (open over closed length)")),
-                                     ("max_size_ratio", (0.0, False, "a ratio above 0 (or inf: no limit)"))):
+                                     ("max_size_ratio", (0.0, False, "a ratio above 0 (or inf: no limit)")),
+                                     ("width", (0.0, False, "a width above 0 (task units)"))):
         if key in t:
             value = r.number(f"actuator.{key}", t[key], "a number", no_limit=key == "max_size_ratio")
             if value < low or (value == low and not closed):
@@ -941,4 +946,6 @@ def _dump_actuator(a: ActuatorSpec, note: Any) -> Any:
     if a.base_plate is not None:
         t.add("base_plate", note(tomlkit.item([[float(x), float(y)] for x, y in a.base_plate]),
                                  "G inside this polygon"))
+    if a.width is not None:
+        t.add("width", note(tomlkit.item(float(a.width)), "the cylinder's width as drawn and exported"))
     return t

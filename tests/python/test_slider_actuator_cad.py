@@ -289,6 +289,7 @@ x = [-5.0, 5.0]
 y = [-4.0, 6.0]
 grid = [1024, 1024]
 base_plate = [[-5, -4], [5, -4], [0, 6]]
+width = 0.5
 """
 
 
@@ -300,7 +301,7 @@ def test_the_actuator_table_round_trips():
     spec = taskfile.loads(three_poses(ACTUATOR))
     t = spec.actuator
     assert t == taskfile.ActuatorSpec("rocker", (1.5, -2.0), 1.6, math.inf, "margin", (-5.0, 5.0, -4.0, 6.0),
-                                      (1024, 1024), ((-5.0, -4.0), (5.0, -4.0), (0.0, 6.0)))
+                                      (1024, 1024), ((-5.0, -4.0), (5.0, -4.0), (0.0, 6.0)), 0.5)
     again = taskfile.loads(taskfile.dumps(spec))
     assert again == spec
     # The defaults, written out and read back.
@@ -327,6 +328,7 @@ grid = [1025, 10]                | actuator.grid[0]          | 2 to 1024
 grid = [10, 1]                   | actuator.grid[1]          | 2 to 20000
 base_plate = [[0, 0], [1, 0]]    | actuator.base_plate       | at least 3 points
 stroke = 10                      | actuator.stroke           | unknown key
+width = -1                       | actuator.width            | above 0
 """
 
 
@@ -355,9 +357,18 @@ def test_the_cli_reads_the_table_and_the_flags_override_it(tmp_path, capsys):
     assert json.loads(capsys.readouterr().out)["actuator"]["max_stroke_ratio"] == 1.9
     # -o writes the CAD export and the animation too.
     out = tmp_path / "strut.dxf"
-    assert main(["actuator", str(HOOD), "--map-grid", "64", "64", "-o", str(out)]) == 0
+    assert main(["actuator", str(HOOD), "--map-grid", "64", "64", "-o", str(out), "--width", "18"]) == 0
     doc = ezdxf.readfile(out)
     (axis, *_) = polylines(doc, "ACTUATOR_AXIS")
     assert np.allclose(axis, [(gx, gy), (-40.0, -20.0)])
+    body = polylines(doc, "ACTUATOR_BODY")[0]
+    assert np.linalg.norm(body[1] - body[2]) == pytest.approx(18.0)  # the --width asked for
+    gif = tmp_path / "strut.gif"
+    assert main(["actuator", str(HOOD), "--map-grid", "32", "32", "-o", str(gif), "--frames", "4", "--fps", "4",
+                 "--dpi", "40"]) == 0
+    from PIL import Image
+
+    with Image.open(gif) as im:
+        assert im.n_frames >= 6 and im.size[0] < 400  # the frames, at the --dpi asked for
     assert main(["actuator", str(HOOD), "--map-grid", "64", "64", "-o", str(tmp_path / "b.dxf"), "--frames", "5"]) == 2
     assert "--frames is for animations" in capsys.readouterr().err

@@ -720,6 +720,9 @@ def cmd_actuator(args: argparse.Namespace) -> int:
                          f"ground pivots give a monotone stroke; try another --point or --link, or relax "
                          f"--max-stroke-ratio or the limits")
     a = best[0]
+    width = args.width if args.width is not None else table.width
+    if width is not None and not width > 0.0:
+        raise UsageError(f"--width must be above 0, got {width:g}")
     if args.json:
         doc = {"task": spec.source, "actuator": actuators.actuator_record(a)}
         print(json.dumps(doc, indent=2))
@@ -728,18 +731,19 @@ def cmd_actuator(args: argparse.Namespace) -> int:
     if out is None:
         return 0
     if export is not None:
-        _write_cad(export.actuator, out, args.force, a, out, units=_units(args, spec))
+        _write_cad(export.actuator, out, args.force, a, out, units=_units(args, spec), width=width)
     elif out.lower().endswith(ANIMATION_TYPES):
         plot = _plot_module()
         _animated(out, args.force, lambda tmp: plot.animate_actuator(a, tmp, frames=args.frames or 60,
-                                                                     fps=args.fps or 20, units=spec.units))
+                                                                     fps=args.fps or 20, width=width,
+                                                                     dpi=args.dpi or 80, units=spec.units))
     else:
         _plot_module()
         import matplotlib.pyplot as plt
 
         fig, (left, right) = plt.subplots(1, 2, figsize=(15.0, 6.2))
         actuators.draw_map(amap, best=3, rank_by=rank_by, ax=left, units=spec.units)
-        actuators.draw_actuator(a, ax=right, units=spec.units)
+        actuators.draw_actuator(a, ax=right, units=spec.units, width=width)
         fig.tight_layout()
         _save(fig, out, _picture_dpi(args), args.force)
     print(f"wrote {out}", file=sys.stderr if args.json else sys.stdout)

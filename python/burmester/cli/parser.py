@@ -449,6 +449,9 @@ def _add_actuator(sub: _Commands) -> None:
                    default=None, help="which placement to pick (default: [actuator] rank_by, else balanced)")
     p.add_argument("--map-grid", nargs=2, type=_ranged(2, 1024), default=None, metavar=("NX", "NY"),
                    help="ground pivots sampled over the map's view (default: [actuator] grid, else 200 200)")
+    p.add_argument("--width", type=_finite, default=None, metavar="W",
+                   help="the cylinder's width as drawn and exported (default: [actuator] width, else 0.06 "
+                        "of its closed length)")
     p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
                    help="animation: frames from the first pose to the last (default 60)")
     p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 20)")
