@@ -372,3 +372,44 @@ def test_the_cli_reads_the_table_and_the_flags_override_it(tmp_path, capsys):
         assert im.n_frames >= 6 and im.size[0] < 400  # the frames, at the --dpi asked for
     assert main(["actuator", str(HOOD), "--map-grid", "64", "64", "-o", str(tmp_path / "b.dxf"), "--frames", "5"]) == 2
     assert "--frames is for animations" in capsys.readouterr().err
+
+
+def test_slider_crank_export_at_the_documented_maximum(tmp_path, known):
+    sc, angles, s = known
+    doc = ezdxf.readfile(export.slider_crank(s, tmp_path / "max.dxf", path_samples=export.MAX_SAMPLES))
+    stops = s.travel_stops
+    pieces = polylines(doc, "COUPLER_PATH")
+    assert len(pieces) == len(angles) - 1
+    for (a, b), piece in zip(zip(stops[:-1], stops[1:]), pieces):
+        assert len(piece) == math.ceil(export.MAX_SAMPLES * abs(b - a) / (2 * math.pi)) + 1
+        # Each leg runs from a pose's coupler point to the next (the hand-made linkage's).
+        np.testing.assert_allclose(piece[[0, -1]], [sc.coupler_point(a, (0.5, 0.7), "open"),
+                                                    sc.coupler_point(b, (0.5, 0.7), "open")], atol=1e-9)
+    with pytest.raises(burmester.InvalidInputError, match="path_samples"):
+        export.slider_crank(s, tmp_path / "x.svg", path_samples=7)
+
+
+def test_slider_dyad_picture_puts_the_pins_on_its_guide(known):
+    import matplotlib.pyplot as plt
+
+    sc, angles, s = known
+    task = Task([s.pose_at(t, "open") for t in angles])
+    dyad = task.slider_dyad(s.driven[0])
+    ax = plot.slider_dyad(dyad, task, units="mm")
+    (guide,) = [a for a in ax.get_children() if a.get_gid() == "guide"]
+    ends = guide.get_xydata()
+    (pins,) = [a for a in ax.get_children() if a.get_gid() == "slider-positions"]
+    for k, pin in enumerate(pins.get_xydata(), start=2):
+        _, _, b = sc.joints(angles[k - 1], "open")  # the hand-made slider's pin at pose k
+        np.testing.assert_allclose(pin, b, atol=1e-9)
+        assert on_guide(sc, pin) < 1e-9
+    assert max(on_guide(sc, p) for p in ends) < 1e-9
+    assert ax.get_xlabel() == "x [mm]"
+    plt.close(ax.figure)
+
+
+def test_the_actuator_table_pickles_to_an_equal_object():
+    import pickle
+
+    spec = taskfile.load(HOOD)
+    assert pickle.loads(pickle.dumps(spec.actuator)) == spec.actuator
