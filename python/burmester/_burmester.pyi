@@ -1007,6 +1007,8 @@ class SliderDyad:
         """The guide's unit normal (the guide turned by +90 degrees): where
         the center point is at infinity."""
     def __eq__(self, other: object, /) -> bool: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
     def _from_fields(circle: Point, guide: Point) -> SliderDyad:
@@ -2844,6 +2846,8 @@ class Actuator:
     ) -> Tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
         """``(theta2, x, y, s)`` over the travel, first pose to last."""
     def __eq__(self, other: object, /) -> bool: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
     def _from_state(
@@ -2939,6 +2943,8 @@ class ActuatorMap:
         """The acceptable placements on the Pareto front of transmission
         and size."""
     def __eq__(self, other: object, /) -> bool: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
     def _from_state(
@@ -3082,6 +3088,8 @@ class SliderCrank:
         """The distance between the :meth:`limits`; for a crank that turns
         fully ``sqrt((l + r)^2 - e^2) - sqrt((l - r)^2 - e^2)``."""
     def __eq__(self, other: object, /) -> bool: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
 
 @final
 class SynthesizedSliderCrank:
@@ -3158,4 +3166,6 @@ class SynthesizedSliderCrank:
     def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
         """The coupler pose ``(x, y, angle)`` at crank angle ``theta2``."""
     def __eq__(self, other: object, /) -> bool: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
     def __reduce__(self) -> Tuple[Any, ...]: ...

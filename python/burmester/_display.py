@@ -19,6 +19,11 @@ figures stay as they were) and returned as PNG bytes:
 ``Design``            :func:`burmester.plot.linkage` of its linkage
 ``Drive``, ``SixBar`` :func:`burmester.plot.sixbar`
 ``DriveMap``          :func:`burmester.plot.drive_map`
+``SliderCrank``       :func:`burmester.plot.slider_crank` (alone)
+``SynthesizedSliderCrank`` :func:`burmester.plot.slider_crank` (at its poses)
+``SliderDyad``        :func:`burmester.plot.slider_dyad`
+``Actuator``          :func:`burmester.actuators.draw_actuator`
+``ActuatorMap``       :func:`burmester.actuators.draw_map`
 ===================== =============================================
 
 matplotlib is imported when a picture is asked for, not before: ``import
@@ -28,6 +33,7 @@ None and IPython shows the object's ``repr`` instead.
 
 from __future__ import annotations
 
+import importlib
 import io
 from typing import TYPE_CHECKING, Any, Callable, Optional, Tuple
 
@@ -51,13 +57,16 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
     pictures = (("Task", "poses"), ("Filemon", "center_plane"), ("FourBar", "four_bar"),
                 ("SynthesizedFourBar", "linkage"), ("SolutionMap", "solution_map"), ("PairMap", "pair_map"),
                 ("Cubic", None), ("PivotAtlas", "atlas"), ("Design", "linkage"), ("Drive", "sixbar"),
-                ("SixBar", "sixbar"), ("DriveMap", "drive_map"))
+                ("SixBar", "sixbar"), ("DriveMap", "drive_map"), ("SliderCrank", "slider_crank"),
+                ("SynthesizedSliderCrank", "slider_crank"), ("SliderDyad", "slider_dyad"),
+                ("Actuator", "actuators.draw_actuator"), ("ActuatorMap", "actuators.draw_map"))
     for kind, name in pictures:
         if not isinstance(obj, getattr(burmester, kind)):
             continue
         if name is None:
             return lambda ax: cubic(obj, ax)
-        draw = getattr(plot, name)
+        module, _, function = name.rpartition(".")
+        draw = getattr(importlib.import_module(f"burmester.{module}") if module else plot, function)
         shown = obj.linkage if isinstance(obj, burmester.Design) else obj
         return lambda ax: draw(shown, ax=ax)
     raise TypeError(f"no picture for a {type(obj).__name__}")

@@ -30,7 +30,7 @@ from burmester.taskfile import (
 )
 
 if TYPE_CHECKING:
-    from burmester._burmester import Method, Mode, SliderCrank, SynthesizedSliderCrank
+    from burmester._burmester import Actuator, Method, Mode, SliderCrank, SliderDyad, SynthesizedSliderCrank
 
     Array = npt.NDArray[np.float64]
 
@@ -394,3 +394,159 @@ def slider_crank_pose_angles(s: "SynthesizedSliderCrank", frames: int) -> List[f
         angles.extend(float(t) for t in np.linspace(t0, t1, n)[:-1])
     angles.append(float(stops[-1]))
     return angles
+
+
+def slider_crank_angle(sc: "SliderCrank", theta2: Optional[float]) -> float:
+    """The crank angle a slider-crank alone is drawn at: ``theta2`` when
+    given, else 0 when the crank turns fully, else the middle of its first
+    arc (:attr:`burmester.SliderCrank.input_range`)."""
+    if theta2 is not None:
+        return float(theta2)
+    arcs = sc.input_range
+    return 0.0 if not arcs else arcs[0][0] + 0.5 * ((arcs[0][1] - arcs[0][0]) % (2 * math.pi))
+
+
+class SliderAtPose(NamedTuple):
+    """A synthesized slider-crank at pose k: its crank angle, its mode (None:
+    a toggle, drawn in the first pose's mode), the :class:`SliderScene`
+    there and the coupler point (the coupler plate is ``A B P``)."""
+
+    theta2: float
+    mode: Optional["Mode"]
+    scene: SliderScene
+    p: Point
+
+
+class SynthesizedSliderScene(NamedTuple):
+    """A synthesized slider-crank at its poses: what
+    :func:`burmester.plot.slider_crank` and
+    :func:`burmester.export.slider_crank` draw. The guide (layer ``GUIDE``)
+    is the first pose's scene's."""
+
+    #: The mode of pose 1 (``"open"`` at a toggle): the coupler path's.
+    mode: "Mode"
+    at_poses: List[SliderAtPose]
+    #: The poses the linkage reaches (``POSES``), and a flag's length.
+    poses: List[Tuple[float, float, float]]
+    flag: float
+
+
+def synthesized_slider_scene(s: "SynthesizedSliderCrank") -> SynthesizedSliderScene:
+    """The :class:`SynthesizedSliderScene` of ``s``."""
+    sc = s.linkage
+    first: "Mode" = s.modes[0] or "open"
+    at: List[SliderAtPose] = []
+    poses: List[Tuple[float, float, float]] = []
+    for t, m in zip(s.input_angles, s.modes):
+        x, y, a = s.pose_at(t, m or first)
+        at.append(SliderAtPose(t, m, slider_scene(sc, t, m or first), (x, y)))
+        poses.append((x, y, a))
+    return SynthesizedSliderScene(first, at, poses, 0.12 * (sc.crank + sc.coupler))
+
+
+def slider_dyad_guide(dyad: "SliderDyad", task: Optional[Task] = None) -> Segment:
+    """The stretch of a slider dyad's guide to draw: over the pin's
+    positions at the poses of ``task`` (:meth:`burmester.Task.displace` of
+    the pin), 15 % of their span beyond each end; without a task, or where
+    the pin stays put, the pin's distance from the origin (at least 1) each
+    way."""
+    c = dyad.circle
+    u = dyad.guide
+    along = [0.0]
+    if task is not None:
+        for k in range(2, len(task) + 1):
+            p = task.displace(c, 1, k)
+            along.append((p[0] - c[0]) * u[0] + (p[1] - c[1]) * u[1])
+    lo, hi = min(along), max(along)
+    span = hi - lo
+    if not span > 0.0:
+        half = max(1.0, math.hypot(*c))
+        lo, hi, span = -half, half, 0.0
+    lo, hi = lo - 0.15 * span, hi + 0.15 * span
+    return ((c[0] + lo * u[0], c[1] + lo * u[1]), (c[0] + hi * u[0], c[1] + hi * u[1]))
+
+
+# ---------------------------------------------------------------------------
+# The linear actuator (issue 27)
+
+#: How much of the closed length the cylinder's body takes (the rest: the rod's eye).
+BODY_SHARE = 0.85
+#: How far the piston stays inside the body at full extension, as a share
+#: of the closed length.
+PISTON_OVERLAP = 0.05
+#: The cylinder's width by default, of its closed length.
+CYLINDER_WIDTH = 0.06
+
+
+def cylinder(ground: Sequence[float], q: Sequence[float], closed: float, stroke: float,
+             width: float) -> Tuple["Array", "Array"]:
+    """``(body, rod)``: the actuator from ``ground`` to ``q`` as two coaxial
+    rectangles (closed polygons of 5 points): the body from the ground
+    pivot, :data:`BODY_SHARE` of the ``closed`` length long and ``width``
+    wide; the rod from ``q`` back into the body, long enough to stay
+    :data:`PISTON_OVERLAP` of the closed length inside it at full extension
+    (``stroke`` beyond closed), 0.45 ``width`` wide."""
+    g = np.asarray(ground, dtype=float)
+    p = np.asarray(q, dtype=float)
+    d = p - g
+    s = float(np.hypot(*d))
+    u = d / s
+    n = np.array([-u[1], u[0]])
+    body = BODY_SHARE * closed
+    rod = min(stroke + (1.0 - BODY_SHARE + PISTON_OVERLAP) * closed, s)
+
+    def rect(a: "Array", b: "Array", w: float) -> "Array":
+        h = 0.5 * w * n
+        return np.array([a + h, b + h, b - h, a - h, a + h])
+
+    return rect(g, g + u * body, width), rect(p - u * rod, p, 0.45 * width)
+
+
+class ActuatorAt(NamedTuple):
+    """An actuator-driven four-bar at one input angle: the four-bar's
+    :class:`Position`, the actuator's moving point ``Q`` and length, and
+    its cylinder (layers ``ACTUATOR_BODY``, ``ACTUATOR_ROD``;
+    :func:`cylinder`)."""
+
+    theta2: float
+    position: Position
+    q: Point
+    length: float
+    body: "Array"
+    rod: "Array"
+
+
+def actuator_at(a: "Actuator", theta2: float, width: float) -> ActuatorAt:
+    """``a`` at input angle ``theta2`` (the mode of its linkage's pose 1),
+    its cylinder ``width`` wide: the core's joints
+    (:meth:`burmester.FourBar.joints`, :meth:`burmester.Actuator.at`)."""
+    sfb = a.linkage
+    q, s = a.at(theta2)
+    body, rod = cylinder(a.ground, q, a.min_length, a.stroke, width)
+    return ActuatorAt(theta2, position(sfb, theta2, sfb.modes[0] or "open"), q, s, body, rod)
+
+
+class ActuatorScene(NamedTuple):
+    """A four-bar driven by a linear actuator, at its poses: what
+    :func:`burmester.actuators.draw_actuator`,
+    :func:`burmester.actuators.animate` and
+    :func:`burmester.export.actuator` draw (the four-bar as
+    :class:`LinkageScene`)."""
+
+    linkage: LinkageScene
+    #: The actuator's ground pivot ``G`` (layer ``PIVOTS``).
+    ground: Point
+    #: ``"coupler"``, ``"crank"`` or ``"rocker"``: the link ``Q`` is on.
+    link: str
+    #: The cylinder's width.
+    width: float
+    #: The actuator at each pose, in order.
+    at_poses: List[ActuatorAt]
+
+
+def actuator_scene(a: "Actuator", width: Optional[float] = None) -> ActuatorScene:
+    """The :class:`ActuatorScene` of ``a``, its cylinder ``width`` wide
+    (default :data:`CYLINDER_WIDTH` of its closed length)."""
+    w = CYLINDER_WIDTH * a.min_length if width is None else float(width)
+    at = [actuator_at(a, t, w) for t in a.linkage.input_angles]
+    return ActuatorScene(linkage_scene(a.linkage, None), a.ground, a.link, w, at)

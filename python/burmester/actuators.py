@@ -16,7 +16,9 @@ from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
+from burmester import _scene
 from burmester._burmester import Actuator, ActuatorMap, InvalidInputError, SynthesizedFourBar
+from burmester.units import label_axes
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -26,11 +28,11 @@ if TYPE_CHECKING:
 Point = Tuple[float, float]
 Extent = Tuple[float, float, float, float]
 
-#: How much of the closed length the body takes (the rest: the rod's eye).
-BODY_SHARE = 0.85
-#: How far the piston stays inside the body at full extension, as a share
-#: of the closed length.
-PISTON_OVERLAP = 0.05
+#: The cylinder's proportions (:func:`cylinder`), kept in :mod:`burmester._scene`.
+BODY_SHARE = _scene.BODY_SHARE
+PISTON_OVERLAP = _scene.PISTON_OVERLAP
+#: The cylinder's geometry, computed once for the pictures, the animation and the CAD export.
+cylinder = _scene.cylinder
 
 
 def _linkage_of(obj: Any) -> SynthesizedFourBar:
@@ -104,30 +106,6 @@ def design_actuator(
     return best[0]
 
 
-def cylinder(ground: Point, q: Point, closed: float, stroke: float,
-             width: float) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
-    """``(body, rod)``: the actuator from ``ground`` to ``q`` as two coaxial
-    rectangles (closed polygons of 5 points): the body from the ground
-    pivot, ``BODY_SHARE`` of the ``closed`` length long and ``width`` wide;
-    the rod from ``q`` back into the body, long enough to stay
-    ``PISTON_OVERLAP`` of the closed length inside it at full extension
-    (``stroke`` beyond closed), half as wide."""
-    g = np.asarray(ground, dtype=float)
-    p = np.asarray(q, dtype=float)
-    d = p - g
-    s = float(np.hypot(*d))
-    u = d / s
-    n = np.array([-u[1], u[0]])
-    body = BODY_SHARE * closed
-    rod = min(stroke + (1.0 - BODY_SHARE + PISTON_OVERLAP) * closed, s)
-
-    def rect(a: npt.NDArray[np.float64], b: npt.NDArray[np.float64], w: float) -> npt.NDArray[np.float64]:
-        h = 0.5 * w * n
-        return np.array([a + h, b + h, b - h, a - h, a + h])
-
-    return rect(g, g + u * body, width), rect(p - u * rod, p, 0.45 * width)
-
-
 def actuator_record(a: Actuator) -> Dict[str, Any]:
     """A placement as a JSON-ready dict (angles in degrees)."""
     return {
@@ -182,34 +160,24 @@ def actuator_table(a: Actuator, source: Optional[str] = None, units: str = "") -
 
 def draw_map(amap: ActuatorMap, *, best: int = 3, rank_by: "RankBy" = "balanced",
              transmission_levels: Sequence[float] = (30.0, 45.0, 60.0, 75.0),
-             ax: Optional["Axes"] = None, legend: bool = True) -> "Axes":
+             ax: Optional["Axes"] = None, legend: bool = True, units: Optional[str] = None) -> "Axes":
     """Draw an actuator placement map: the ground pivots with a monotone
     stroke (light), those that meet the limits (dark), contours of the
-    actuator's minimum force transmission angle, the moving point's path,
-    the linkage's pivots and the best placements as numbered stars."""
+    actuator's minimum force transmission angle (shaded and contoured by
+    :func:`burmester.plot.placement_map`, as the drive map is), the moving
+    point's path, the linkage's pivots and the best placements as numbered
+    stars; the axes say ``units`` (``x [mm]``)."""
     import matplotlib.pyplot as plt
-    from matplotlib.colors import ListedColormap
-    from matplotlib.patches import Patch
+
+    from burmester import plot
 
     if ax is None:
         _, ax = plt.subplots(figsize=(8.0, 6.4))
     extent = amap.extent
-    cat = np.where(amap.acceptable, 2, np.where(amap.monotone, 1, 0)).astype(np.int8)
-    cmap = ListedColormap(["#f7f7f7", "#c7e9c0", "#41ab5d"])
-    img = ax.imshow(cat, origin="lower", extent=extent, cmap=cmap, vmin=0, vmax=2,
-                    interpolation="nearest", zorder=0)
-    img.set_gid("actuator-map")
-    handles: List[Any] = [
-        Patch(facecolor="#c7e9c0", edgecolor="0.5", label="monotone stroke"),
-        Patch(facecolor="#41ab5d", edgecolor="0.5", label="meets the limits"),
-    ]
     mu = np.degrees(np.where(amap.monotone, amap.min_transmission_rad, np.nan))
-    if np.isfinite(mu).any():
-        xs, ys = amap.grid.cell_centers()
-        cs = ax.contour(xs, ys, mu, levels=sorted(transmission_levels), colors="#636363",
-                        linewidths=0.8, zorder=3)
-        cs.set_gid("transmission")
-        ax.clabel(cs, fmt="%g°", fontsize=7)
+    handles: List[Any] = plot.placement_map(ax, amap.grid, amap.monotone, amap.acceptable, mu, plot.ACTUATOR_MAP_CMAP,
+                                            ("monotone stroke", "meets the limits"), "actuator-map",
+                                            transmission_levels)
     sfb = amap.linkage
     placements = amap.best_placements(best, rank_by=rank_by) if best > 0 else []
     if placements:
@@ -231,6 +199,7 @@ def draw_map(amap: ActuatorMap, *, best: int = 3, rank_by: "RankBy" = "balanced"
     ax.set_xlim(extent[0], extent[1])
     ax.set_ylim(extent[2], extent[3])
     ax.set_aspect("equal")
+    label_axes(ax, units)
     ax.set_title(f"Actuator map: the ground pivot G (stroke ratio at most {amap.max_stroke_ratio:g})")
     if legend:
         ax.legend(handles=handles, loc="lower left", fontsize="x-small")
@@ -238,44 +207,43 @@ def draw_map(amap: ActuatorMap, *, best: int = 3, rank_by: "RankBy" = "balanced"
 
 
 def draw_actuator(a: Actuator, *, ax: Optional["Axes"] = None, legend: bool = True,
-                  width: Optional[float] = None) -> "Axes":
+                  width: Optional[float] = None, units: Optional[str] = None) -> "Axes":
     """Draw the linkage at its poses with the actuator as a cylinder (body
     and rod) at each: the four-bar's links, the coupler, the actuator's
-    ground pivot and moving point."""
+    ground pivot and moving point (the scene of
+    :func:`burmester._scene.actuator_scene`, which the CAD export and the
+    animation draw too); the axes say ``units`` (``x [mm]``)."""
     import matplotlib.pyplot as plt
 
     if ax is None:
         _, ax = plt.subplots(figsize=(8.0, 6.4))
-    sfb = a.linkage
-    mode = sfb.modes[0] or "open"
-    poses = list(sfb.input_angles)
-    w = width if width is not None else 0.06 * a.min_length
+    scene = _scene.actuator_scene(a, width)
     colors = ["#2171b5", "#6a51a3", "#cb181d", "#238b45", "#d94801"]
-    for k, t in enumerate(poses):
+    for k, at in enumerate(scene.at_poses):
         c = colors[k % len(colors)]
-        o2, ja, jb, o4 = sfb.fourbar.joints(t, mode)
-        x, y, _ = sfb.pose_at(t, mode)
+        o2, ja, jb, o4, p = at.position
         ax.plot([o2[0], ja[0], jb[0], o4[0]], [o2[1], ja[1], jb[1], o4[1]], "-o", color=c,
                 linewidth=2.0, markersize=4, zorder=4, label=f"pose {k + 1}", gid=f"linkage-{k + 1}")
-        ax.fill([ja[0], jb[0], x], [ja[1], jb[1], y], color=c, alpha=0.15, zorder=3)
-        q, _ = a.at(t)
+        ax.fill([ja[0], jb[0], p[0]], [ja[1], jb[1], p[1]], color=c, alpha=0.15, zorder=3)
+        q = at.q
         if a.link == "coupler":  # the bracket that carries Q on the coupler
             ax.plot([ja[0], q[0], jb[0]], [ja[1], q[1], jb[1]], "--", color=c, linewidth=1.0, zorder=4)
-        body, rod = cylinder(a.ground, q, a.min_length, a.stroke, w)
-        ax.fill(body[:, 0], body[:, 1], facecolor="0.35", edgecolor="black", linewidth=0.8,
+        ax.fill(at.body[:, 0], at.body[:, 1], facecolor="0.35", edgecolor="black", linewidth=0.8,
                 zorder=6, alpha=0.9, gid=f"actuator-body-{k + 1}")
-        ax.fill(rod[:, 0], rod[:, 1], facecolor="#bdbdbd", edgecolor="black", linewidth=0.8,
+        ax.fill(at.rod[:, 0], at.rod[:, 1], facecolor="#bdbdbd", edgecolor="black", linewidth=0.8,
                 zorder=5, gid=f"actuator-rod-{k + 1}")
         ax.plot([q[0]], [q[1]], "o", color=c, markersize=5, zorder=7)
     _, xq, yq, _ = a.travel(96)
     ax.plot(xq, yq, ":", color="#d94801", linewidth=1.2, zorder=2, label="Q's path")
     ax.plot([a.ground[0]], [a.ground[1]], "^", color="black", markersize=10, zorder=8,
             label="actuator ground pivot G")
-    piv = np.array([sfb.driving[0], sfb.driven[0]])
+    piv = np.array([scene.linkage.a0, scene.linkage.c0])
     ax.plot(piv[:, 0], piv[:, 1], "^", color="0.2", markersize=9, zorder=8)
     ax.set_aspect("equal")
     ax.autoscale()
-    ax.set_title(f"The {a.link} driven by a cylinder: stroke {a.stroke:.0f}, ratio {a.stroke_ratio:.2f}, "
+    label_axes(ax, units)
+    u = f" {units}" if units else ""
+    ax.set_title(f"The {a.link} driven by a cylinder: stroke {a.stroke:.0f}{u}, ratio {a.stroke_ratio:.2f}, "
                  f"force transmission \u2265 {a.min_transmission_deg:.0f}\u00b0")
     if legend:
         ax.legend(loc="lower left", fontsize="x-small")

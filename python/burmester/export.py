@@ -245,8 +245,9 @@ LAYERS: Dict[str, Layer] = {
     "COINCIDENCE_POINTS": Layer(251, "#4d4d4d", "Q_jk: crank positions j and k coincide"),
     "BURMESTER_POINTS": Layer(2, "#e6ab02", "Burmester points (center points)"),
     "POSES": Layer(40, "#e66101", "poses: point and a flag along the coupler angle"),
-    "PIVOTS": Layer(7, "#000000", "fixed pivots A0, C0"),
-    "DIMENSIONS": Layer(5, "#0b5394", "dimensions: link lengths at pose 1, fixed pivots from the origin"),
+    "PIVOTS": Layer(7, "#000000", "fixed pivots A0, C0 (and an actuator's ground pivot G)"),
+    "DIMENSIONS": Layer(5, "#0b5394", "dimensions: link lengths at pose 1, fixed pivots from the origin "
+                       "(an actuator: its pin-to-pin lengths at the first and last pose)"),
     "TEXT": Layer(250, "#404040", "labels"),
 }
 
@@ -875,13 +876,13 @@ def _write_dxf(d: _Drawing, path: Path, units: str) -> None:
     msp = doc.modelspace()
     for r in d.regions:
         for ring in r.rings:
-            msp.add_lwpolyline(ring.tolist(), close=True, dxfattribs={"layer": r.layer})
+            _lwpolyline(msp, ring, True, r.layer)
         hatch = msp.add_hatch(color=colors.BYLAYER, dxfattribs={"layer": r.layer + "_FILL"})
         for k, ring in enumerate(r.rings):
             flags = const.BOUNDARY_PATH_EXTERNAL if k == 0 else const.BOUNDARY_PATH_DEFAULT
             hatch.paths.add_polyline_path(ring.tolist(), is_closed=True, flags=flags)
     for p in d.polylines:
-        msp.add_lwpolyline(p.points.tolist(), close=p.closed, dxfattribs={"layer": p.layer})
+        _lwpolyline(msp, p.points, p.closed, p.layer)
     for c in d.circles:
         msp.add_circle(c.center, c.radius, dxfattribs={"layer": c.layer})
     for m in d.markers:
@@ -896,6 +897,16 @@ def _write_dxf(d: _Drawing, path: Path, units: str) -> None:
     msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))
     doc.set_modelspace_vport(height=y1 - y0, center=((x0 + x1) / 2, (y0 + y1) / 2))
     doc.saveas(path)
+
+
+def _lwpolyline(msp: Any, points: Array, closed: bool, layer: str) -> None:
+    """An LWPOLYLINE of ``points`` ``(n, 2)`` on ``layer``, its vertices
+    set in one step: ezdxf's ``add_lwpolyline`` appends them one at a
+    time, each copying those before (quadratic: 100 000 vertices took
+    minutes)."""
+    pl = msp.add_lwpolyline([], close=closed, dxfattribs={"layer": layer})
+    # ezdxf's vertex layout: x, y, start width, end width, bulge.
+    pl.lwpoints.set(np.column_stack([np.asarray(points, dtype=float).reshape(-1, 2), np.zeros((len(points), 3))]))
 
 
 def _dxf_dimensions(doc: Any, d: _Drawing, text: float, units: str) -> None:
@@ -1384,3 +1395,256 @@ linkage_dxf, linkage_svg = _only(".dxf", linkage), _only(".svg", linkage)
 plane_dxf, plane_svg = _only(".dxf", plane), _only(".svg", plane)
 burmester_plane_dxf, burmester_plane_svg = _only(".dxf", burmester_plane), _only(".svg", burmester_plane)
 sixbar_dxf, sixbar_svg = _only(".dxf", sixbar), _only(".svg", sixbar)
+
+
+# ---------------------------------------------------------------------------
+# Slider linkages and the linear actuator (issue 27)
+
+LAYERS.update({
+    "GUIDE": Layer(8, "#4d4d4d", "the slider's guide: a straight line fixed to the ground"),
+    "SLIDER": Layer(9, "#969696", "the slider block on its guide, at each pose"),
+    "ACTUATOR_PATH": Layer(30, "#d94801", "the actuator's moving point Q over the travel"),
+    "ACTUATOR_AXIS": Layer(30, "#d94801", "the actuator's axis, ground pivot G to moving point Q, at each pose"),
+    "ACTUATOR_BODY": Layer(250, "#595959", "the actuator's body (cylinder) from G, at each pose"),
+    "ACTUATOR_ROD": Layer(252, "#bdbdbd", "the actuator's rod to Q, at each pose"),
+})
+
+
+def _slider_links(d: _Drawing, layer: str, s: _scene.SliderScene, p: Optional[Point], what: str) -> None:
+    """Crank ``A0 A``, the coupler ``A B`` (with a coupler point ``p``: the
+    plate ``A B P``), the joints ``A`` and ``B`` (layer ``layer``) and the
+    slider block (``SLIDER``) of a slider-crank position (the core's joints)."""
+    d.polyline(layer, [s.pivot, s.crank_joint], f"crank A0 A, {what}")
+    if p is None:
+        d.polyline(layer, [s.crank_joint, s.slider_joint], f"coupler A B, {what}")
+    else:
+        d.polyline(layer, [s.crank_joint, s.slider_joint, p], f"coupler A B P, {what}", closed=True)
+    d.marker(layer, s.crank_joint, f"moving pivot A, {what}")
+    d.marker(layer, s.slider_joint, f"slider pin B, {what}")
+    d.polyline("SLIDER", s.block, f"slider block, {what}", closed=True)
+
+
+def _aligned(d: _Drawing, name: str, p1: Sequence[float], p2: Sequence[float], offset: float) -> None:
+    """An aligned dimension of ``p1 p2`` (none when they coincide), measured
+    left to right so that its text reads upright, ``offset`` text heights to
+    the left of ``p1 -> p2`` as given."""
+    dx, dy = p2[0] - p1[0], p2[1] - p1[1]
+    if dx == 0.0 and dy == 0.0:
+        return
+    if dx < 0.0 or (dx == 0.0 and dy < 0.0):
+        p1, p2, offset = p2, p1, -offset
+    d.dimensions.append(_Dimension("aligned", (float(p1[0]), float(p1[1])), (float(p2[0]), float(p2[1])),
+                                   offset, name))
+
+
+def _ordinates(d: _Drawing, name: str, point: Sequence[float]) -> None:
+    """Ordinate dimensions of a fixed pivot's x and y from the origin."""
+    at = (float(point[0]), float(point[1]))
+    d.dimensions.append(_Dimension("x", at, at, 0.0, f"fixed pivot {name}: x from the origin"))
+    d.dimensions.append(_Dimension("y", at, at, 0.0, f"fixed pivot {name}: y from the origin"))
+
+
+def _slider_drawing(obj: Union[burmester.SliderCrank, burmester.SynthesizedSliderCrank], theta2: Optional[float],
+                    mode: Mode, travel_samples: int, path_samples: int, labels: bool, dimensions: bool) -> _Drawing:
+    travel_samples = _samples("travel_samples", travel_samples, 0)
+    if travel_samples == 1:
+        raise burmester.InvalidInputError("travel_samples must be 0 (none) or at least 2, got 1")
+    path_samples = _samples("path_samples", path_samples, 8)
+    if isinstance(obj, burmester.SynthesizedSliderCrank):
+        sc = obj.linkage
+        scene = _scene.synthesized_slider_scene(obj)
+        first = scene.at_poses[0]
+        if travel_samples and obj.travel is None:
+            raise burmester.AssemblyError(
+                "the slider-crank cannot be driven from pose 1 through the poses in order in one mode "
+                "(a branch, order or circuit defect), so it has no travel to sample: draw it without "
+                "travel samples (travel_samples=0)"
+            )
+        at: List[Tuple[str, _scene.SliderScene, Optional[Point], str]] = [
+            (f"LINKAGE_{k}", x.scene, x.p, f"pose {k} ({x.mode or 'toggle'})")
+            for k, x in enumerate(scene.at_poses, start=1)]
+        guide_scene, pose1_p = first.scene, first.p
+        title = f"slider-crank at {len(at)} poses: crank {sc.crank:g}, coupler {sc.coupler:g}, A0 {sc.pivot}"
+    else:
+        sc = obj
+        t = _scene.slider_crank_angle(sc, theta2)
+        guide_scene = _scene.slider_scene(sc, t, mode)
+        at = [("LINKAGE_1", guide_scene, None, f"crank angle {math.degrees(t):.2f} deg ({mode})")]
+        pose1_p = None
+        title = f"slider-crank: crank {sc.crank:g}, coupler {sc.coupler:g}, offset {sc.offset:g}, A0 {sc.pivot}"
+    d = _Drawing(title)
+    d.polyline("GUIDE", guide_scene.guide, "guide")
+    d.marker("PIVOTS", sc.pivot, "crank pivot A0", "A0" if labels else None)
+    if isinstance(obj, burmester.SynthesizedSliderCrank):
+        stops = obj.travel_stops
+        if stops is not None:
+            for k, (a, b) in enumerate(zip(stops[:-1], stops[1:]), start=1):
+                count = max(2, math.ceil(path_samples * abs(b - a) / (2.0 * math.pi)))
+                x, y, ok = sc.coupler_path(obj.coupler_point, np.linspace(a, b, count + 1), scene.mode)
+                for run in _runs(x, y, ok):
+                    d.polyline("COUPLER_PATH", run, f"coupler path, pose {k} to pose {k + 1}")
+            if travel_samples:
+                for i, t in enumerate(obj.travel_angles(travel_samples).tolist(), start=1):
+                    what = f"travel sample {i} of {travel_samples}"
+                    s = _scene.slider_scene(sc, t, scene.mode)
+                    d.polyline("TRAVEL", [s.pivot, s.crank_joint, s.slider_joint], f"crank and coupler, {what}")
+    for layer, s, p, what in at:
+        _slider_links(d, layer, s, p, what)
+    if isinstance(obj, burmester.SynthesizedSliderCrank):
+        _poses(d, scene.poses, scene.flag, labels)
+    if dimensions:
+        s = guide_scene
+        _aligned(d, "crank A0 A, pose 1", s.pivot, s.crank_joint, 2.5)
+        _aligned(d, "coupler A B, pose 1", s.crank_joint, s.slider_joint, 2.5)
+        if pose1_p is not None:
+            _aligned(d, "coupler A P, pose 1", s.crank_joint, pose1_p, -2.5)
+            _aligned(d, "coupler B P, pose 1", s.slider_joint, pose1_p, -2.5)
+        _aligned(d, "offset: A0 to the guide", sc.pivot, sc.foot, 2.5)
+        _ordinates(d, "A0", sc.pivot)
+    return d
+
+
+def slider_crank(
+    obj: Union[burmester.SliderCrank, burmester.SynthesizedSliderCrank],
+    path: PathLike,
+    theta2: Optional[float] = None,
+    mode: Mode = "open",
+    *,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    dimensions: bool = True,
+    units: Optional[str] = DEFAULT_UNITS,
+) -> Path:
+    """Write a slider-crank to a DXF or SVG file, by the path's suffix
+    (what :func:`burmester.plot.slider_crank` draws), written beside it and
+    moved into place when complete.
+
+    Layers: ``GUIDE`` (the guide, over the slider's limit positions with a
+    margin: :func:`burmester._scene.slider_scene`), ``PIVOTS`` (``A0``),
+    ``LINKAGE_k`` (the crank ``A0 A``, the coupler ``A B``, or the plate
+    ``A B P`` to the task's coupler point, and the joints ``A`` and ``B`` at
+    pose k; a :class:`burmester.SliderCrank` alone: ``LINKAGE_1`` at
+    ``theta2``), ``SLIDER`` (the slider block around ``B``, each pose),
+    ``POSES``, ``COUPLER_PATH`` (the coupler point over the travel, pose k
+    to k + 1), ``TRAVEL`` (with ``travel_samples``), ``DIMENSIONS`` (at pose
+    1: the crank, the coupler and its plate's sides, the offset from ``A0``
+    to the guide's foot :attr:`burmester.SliderCrank.foot`; ``A0``'s
+    ordinates) and ``TEXT``. Every point is the core's
+    (:meth:`burmester.SliderCrank.joints`,
+    :meth:`~burmester.SliderCrank.coupler_path`,
+    :meth:`burmester.SynthesizedSliderCrank.pose_at`).
+
+    Parameters:
+        obj: a :class:`burmester.SynthesizedSliderCrank` (drawn at its
+            poses; ``theta2`` and ``mode`` unused) or a
+            :class:`burmester.SliderCrank` (drawn at ``theta2``, default as
+            :func:`burmester.plot.slider_crank`, in ``mode``).
+        path: the file, ending in ``.dxf`` or ``.svg`` (replaced if it exists).
+        travel_samples: a synthesized one: also draw crank and coupler at
+            this many crank angles over the travel (0: none; else 2 to
+            :data:`MAX_SAMPLES`).
+        path_samples: samples of the coupler path per crank turn (8 to
+            :data:`MAX_SAMPLES`).
+        labels: write ``A0`` and the pose numbers.
+        dimensions: dimension the links, the offset and ``A0``.
+        units: the unit recorded (the module's *Units*).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: another suffix, a folder that does not
+            exist, unknown units or a sample count out of range.
+        burmester.AssemblyError: the loop does not close at ``theta2``, or
+            ``travel_samples`` for a linkage without a travel.
+        ImportError: ezdxf (for ``.dxf``) is not installed.
+    """
+    if not isinstance(obj, (burmester.SliderCrank, burmester.SynthesizedSliderCrank)):
+        raise TypeError(f"expected a burmester.SliderCrank or SynthesizedSliderCrank, got {type(obj).__name__}")
+    return _export(path, units, lambda: _slider_drawing(obj, theta2, mode, travel_samples, path_samples,
+                                                        labels, dimensions))
+
+
+def _actuator_drawing(a: burmester.Actuator, width: Optional[float], travel_samples: int, path_samples: int,
+                      labels: bool, dimensions: bool) -> _Drawing:
+    sfb = a.linkage
+    d = _linkage_drawing(sfb, None, travel_samples, path_samples, labels, dimensions)
+    scene = _scene.actuator_scene(a, width)
+    d.title = (f"four-bar driven by a linear actuator on the {a.link}: G {a.ground}, closed {a.min_length:g}, "
+               f"open {a.max_length:g}, stroke {a.stroke:g}")
+    d.marker("PIVOTS", a.ground, "actuator ground pivot G", "G" if labels else None)
+    _, xq, yq, _ = a.travel(path_samples)
+    d.polyline("ACTUATOR_PATH", np.column_stack([xq, yq]), "actuator point Q over the travel")
+    for k, at in enumerate(scene.at_poses, start=1):
+        what = f"pose {k}, length {at.length:g}"
+        d.polyline("ACTUATOR_AXIS", [a.ground, at.q], f"actuator axis G Q, {what}")
+        d.polyline("ACTUATOR_BODY", at.body[:-1], f"actuator body, {what}", closed=True)
+        d.polyline("ACTUATOR_ROD", at.rod[:-1], f"actuator rod, {what}", closed=True)
+        d.marker("ACTUATOR_AXIS", at.q, f"actuator point Q, {what}")
+        if a.link == "coupler":  # the bracket that carries Q on the coupler
+            p = at.position
+            d.polyline(f"LINKAGE_{k}", [p.a, at.q, p.b], f"bracket A Q B on the coupler, pose {k}")
+    if dimensions:
+        last = len(scene.at_poses)
+        _aligned(d, "actuator G Q at pose 1 (pin to pin)", a.ground, scene.at_poses[0].q, -2.5)
+        if last > 1:
+            _aligned(d, f"actuator G Q at pose {last} (pin to pin)", a.ground, scene.at_poses[-1].q, 2.5)
+        _ordinates(d, "G", a.ground)
+    return d
+
+
+def actuator(
+    a: burmester.Actuator,
+    path: PathLike,
+    *,
+    units: Optional[str] = DEFAULT_UNITS,
+    width: Optional[float] = None,
+    labels: bool = True,
+    dimensions: bool = True,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+) -> Path:
+    """Write a four-bar driven by a linear actuator (a
+    :class:`burmester.Actuator`) to a DXF or SVG file, by the path's
+    suffix, written beside it and moved into place when complete.
+
+    The four-bar's layers as :func:`linkage` draws them (at the poses it
+    reaches), and: ``PIVOTS`` also holds the actuator's ground pivot ``G``;
+    ``ACTUATOR_AXIS`` the line ``G Q`` at each pose (its length the
+    actuator's pin-to-pin length there, :attr:`burmester.Actuator.pose_lengths`)
+    and ``Q``; ``ACTUATOR_BODY`` and ``ACTUATOR_ROD`` the cylinder at each
+    pose (closed outlines, :func:`burmester._scene.cylinder`: the body
+    0.85 of the closed length from ``G``, the rod to ``Q``);
+    ``ACTUATOR_PATH``, ``Q`` over the travel (:meth:`burmester.Actuator.travel`);
+    with ``link == "coupler"`` the bracket ``A Q B`` in ``LINKAGE_k``;
+    ``DIMENSIONS`` adds the pin-to-pin lengths at the first and last pose
+    and ``G``'s ordinates.
+
+    Parameters:
+        a: the actuator.
+        path: the file, ending in ``.dxf`` or ``.svg`` (replaced if it exists).
+        width: the cylinder's width (default 0.06 of its closed length).
+        travel_samples, path_samples, labels, dimensions, units: as
+            :func:`linkage` (``path_samples``, 8 to :data:`MAX_SAMPLES`,
+            also samples ``Q``'s path over the travel).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: another suffix, a folder that does not
+            exist, unknown units or a sample count out of range.
+        burmester.AssemblyError: ``travel_samples`` for a four-bar without a travel.
+        ImportError: ezdxf (for ``.dxf``) is not installed.
+    """
+    if not isinstance(a, burmester.Actuator):
+        raise TypeError(f"expected a burmester.Actuator, got {type(a).__name__}")
+    return _export(path, units, lambda: _actuator_drawing(a, width, travel_samples, path_samples, labels,
+                                                          dimensions))
+
+
+__all__ += ["actuator", "actuator_dxf", "actuator_svg", "slider_crank", "slider_crank_dxf", "slider_crank_svg"]
+
+slider_crank_dxf, slider_crank_svg = _only(".dxf", slider_crank), _only(".svg", slider_crank)
+actuator_dxf, actuator_svg = _only(".dxf", actuator), _only(".svg", actuator)

@@ -70,7 +70,7 @@ try:
     from matplotlib.animation import FFMpegWriter, FuncAnimation, PillowWriter
     from matplotlib.artist import Artist
     from matplotlib.axes import Axes
-    from matplotlib.colors import ListedColormap
+    from matplotlib.colors import ListedColormap, to_hex
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle, Patch, PathPatch, Polygon
     from matplotlib.text import Annotation
@@ -1632,6 +1632,8 @@ def explore(
 #: Colours of the drive map's categories: no drive, a drive (the six-bar
 #: turns fully), a drive that meets the limits.
 DRIVE_MAP_CMAP = ListedColormap(["#eeeeee", "#c6dbef", "#4292c6"])
+#: The actuator map's shading: no monotone stroke, a monotone stroke, one that meets the limits.
+ACTUATOR_MAP_CMAP = ListedColormap(["#f7f7f7", "#c7e9c0", "#41ab5d"])
 #: Colour of the drive (crank, drive coupler) in the pictures of a six-bar.
 DRIVE_COLOR = "#e6550d"
 
@@ -1792,6 +1794,36 @@ def sixbar(
     return ax
 
 
+def placement_map(ax: Axes, grid: Grid, possible: npt.ArrayLike, acceptable: npt.ArrayLike,
+                  transmission_deg: npt.ArrayLike, cmap: ListedColormap, names: Tuple[str, str], gid: str,
+                  transmission_levels: Sequence[float], transmission_name: Optional[str] = None) -> List[Artist]:
+    """Shade a map of candidate pivots and contour its transmission angle:
+    the image of three categories (none, ``possible``, ``acceptable``: the
+    colours of ``cmap``, gid ``gid``) over the grid's extent and the
+    contours of ``transmission_deg`` (degrees, NaN where undefined) at
+    ``transmission_levels``, labelled (gid ``"transmission"``). Returns the
+    legend handles: a patch for each of the two categories (``names``) and,
+    with ``transmission_name``, a line for the contours. The drive map
+    (:func:`drive_map`) and the actuator map
+    (:func:`burmester.actuators.draw_map`) are drawn by it."""
+    cat = np.where(acceptable, 2, np.where(possible, 1, 0)).astype(np.int8)
+    img = ax.imshow(cat, origin="lower", extent=grid.extent, cmap=cmap, vmin=0, vmax=2,
+                    interpolation="nearest", zorder=0)
+    img.set_gid(gid)
+    handles: List[Artist] = [Patch(facecolor=to_hex(cmap(k)), edgecolor="0.5", label=name)
+                             for k, name in zip((1, 2), names)]
+    mu = np.asarray(transmission_deg, dtype=float)
+    if np.isfinite(mu).any():
+        xs, ys = grid.cell_centers()
+        cs = ax.contour(xs, ys, mu, levels=sorted(transmission_levels), colors="#636363",
+                        linewidths=0.8, zorder=3)
+        cs.set_gid("transmission")
+        ax.clabel(cs, fmt="%g°", fontsize=7)
+        if transmission_name is not None:
+            handles.append(Line2D([], [], color="#636363", linewidth=0.8, label=transmission_name))
+    return handles
+
+
 def drive_map(
     dmap: burmester.DriveMap,
     *,
@@ -1823,23 +1855,9 @@ def drive_map(
     """
     ax = _new_axes(ax)
     extent = dmap.extent
-    cat = np.where(dmap.acceptable, 2, np.where(dmap.valid, 1, 0)).astype(np.int8)
-    img = ax.imshow(cat, origin="lower", extent=extent, cmap=DRIVE_MAP_CMAP, vmin=0, vmax=2,
-                    interpolation="nearest", zorder=0)
-    img.set_gid("drive-map")
-    handles: List[Artist] = [
-        Patch(facecolor="#c6dbef", edgecolor="0.5", label="crank pivot with a drive"),
-        Patch(facecolor="#4292c6", edgecolor="0.5", label="a drive that meets the limits"),
-    ]
-    mu = np.degrees(dmap.min_transmission_rad)
-    if np.isfinite(mu).any():
-        xs, ys = dmap.grid.cell_centers()
-        cs = ax.contour(xs, ys, mu, levels=sorted(transmission_levels), colors="#636363",
-                        linewidths=0.8, zorder=3)
-        cs.set_gid("transmission")
-        ax.clabel(cs, fmt="%g°", fontsize=7)
-        handles.append(Line2D([], [], color="#636363", linewidth=0.8,
-                              label="min transmission of both loops, deg"))
+    handles = placement_map(ax, dmap.grid, dmap.valid, dmap.acceptable, np.degrees(dmap.min_transmission_rad),
+                            DRIVE_MAP_CMAP, ("crank pivot with a drive", "a drive that meets the limits"),
+                            "drive-map", transmission_levels, "min transmission of both loops, deg")
     a0 = dmap.linkage.driving[0]
     ea, eb = dmap.attachment_ends
     rho = math.dist(a0, ea)
@@ -2032,8 +2050,7 @@ def slider_crank(
     else:
         sc = obj
         arcs = sc.input_range
-        t = (0.0 if not arcs else arcs[0][0] + 0.5 * ((arcs[0][1] - arcs[0][0]) % (2 * math.pi))) \
-            if theta2 is None else float(theta2)
+        t = _scene.slider_crank_angle(sc, theta2)
         _draw_guide(ax, sc, t, mode)
         for k, (lo, hi) in enumerate(arcs or [(0.0, 2 * math.pi)]):
             span = (hi - lo) % (2 * math.pi) or 2 * math.pi
@@ -2050,10 +2067,7 @@ def slider_crank(
             ax.set_title(f"Slider-crank: crank {format_length(sc.crank, units)}, coupler "
                          f"{format_length(sc.coupler, units)}, offset {format_length(sc.offset, units)}, "
                          f"stroke {format_length(sc.stroke(mode), units)}", fontsize=10)
-    _around_data(ax, labels, units)
-    if legend:
-        _legend(ax)
-    return ax
+    return _framed(ax, labels, legend, units)
 
 
 def animate_slider_crank(
@@ -2110,4 +2124,139 @@ def animate_slider_crank(
 
     anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
     _save_animation(anim, path, fps, dpi)
+    return anim
+
+
+def slider_dyad(dyad: burmester.SliderDyad, task: Optional[Task] = None, *, labels: bool = True,
+                legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None) -> Axes:
+    """Draw a slider dyad: its guide as a line (gid ``"guide"``, over the
+    pin's positions at the poses of ``task`` when given:
+    :func:`burmester._scene.slider_dyad_guide`), the pin ``C1`` at pose 1
+    (``"slider-pin"``) and, with ``task``, the pin at the other poses
+    (``"slider-positions"``) and the poses (``"pose-k"``)."""
+    ax = _new_axes(ax, (7.0, 6.0))
+    (g0, g1) = _scene.slider_dyad_guide(dyad, task)
+    (gl,) = ax.plot([g0[0], g1[0]], [g0[1], g1[1]], color="0.3", linewidth=1.2, zorder=2, label="guide")
+    gl.set_gid("guide")
+    c = dyad.circle
+    _markers(ax, [c], "slider-pin", "pin C1 (pose 1)", marker="s", markersize=9, color=POSE_COLORS[1], zorder=6)
+    if task is not None:
+        pins = [task.displace(c, 1, k) for k in range(2, len(task) + 1)]
+        _markers(ax, pins, "slider-positions", "pin at the other poses", marker="s", markersize=7,
+                 color=POSE_COLORS[3], zorder=5)
+        _draw_flags(ax, task.poses, 0.12 * task.scale, labels, zorder=7)
+    if labels:
+        _label(ax, c, "C1")
+        u = dyad.guide
+        ax.set_title(f"Slider dyad: pin C1 ({format_length(c[0], units)}, {format_length(c[1], units)}), "
+                     f"guide at {math.degrees(math.atan2(u[1], u[0])):.1f} deg", fontsize=10)
+    return _framed(ax, labels, legend, units)
+
+
+def _framed(ax: Axes, labels: bool, legend: bool, units: Optional[str]) -> Axes:
+    """The picture's frame: axis names, limits around the data
+    (:func:`_around_data`) and the legend; returns ``ax``."""
+    _around_data(ax, labels, units)
+    if legend:
+        _legend(ax)
+    return ax
+
+
+def animate_actuator(
+    a: burmester.Actuator,
+    path: Union[str, Path],
+    *,
+    frames: int = 60, fps: int = 20, dpi: int = 80,
+    width: Optional[float] = None,
+    units: Optional[str] = None,
+) -> FuncAnimation:
+    """Write an animation of a four-bar driven by a linear actuator: the
+    cylinder extends (or retracts) from pose 1 through the poses in order
+    and back, so the animation loops (``.gif`` or ``.mp4``). The moving
+    linkage (gid ``"moving-linkage"``, ``"moving-coupler"``) and the
+    cylinder's body and rod (``"moving-actuator-body"``,
+    ``"moving-actuator-rod"``) are drawn over the coupler curve, the poses,
+    ``Q``'s path (``"point-path"``) and the ground pivot ``G``
+    (``"actuator-ground"``); the coupler carries ``Q`` on a bracket ``A Q B``
+    when the actuator acts on it; every position is the core's
+    (:func:`burmester._scene.actuator_at`). The file is written beside
+    ``path`` and moved into place when complete (Ctrl-C leaves none).
+
+    Parameters:
+        a: the actuator (:meth:`burmester.SynthesizedFourBar.actuator`,
+            :meth:`burmester.ActuatorMap.best_placements`,
+            :func:`burmester.design_actuator`).
+        path: ``.gif`` (Pillow) or ``.mp4`` (ffmpeg).
+        frames: about how many frames from the first pose to the last (2
+            to :data:`MAX_FRAMES`; :func:`drive_angles`).
+        fps: frames per second (1 to :data:`MAX_FPS`).
+        dpi: resolution (1 to :data:`MAX_DPI`).
+        width: the cylinder's width (default: 0.06 of its closed length).
+        units: the unit of the lengths: on the axes and in the title.
+
+    Returns:
+        The matplotlib animation (already saved).
+
+    Raises:
+        burmester.AssemblyError: the four-bar has no travel through the
+            poses in order (:attr:`burmester.LinkageFigures.feasible`).
+        burmester.InvalidInputError: another file type, a folder that does
+            not exist, or a count out of range.
+        RuntimeError: ``.mp4`` without ffmpeg.
+    """
+    if not isinstance(a, burmester.Actuator):
+        raise TypeError(f"expected a burmester.Actuator, got {type(a).__name__}")
+    path, frames, fps, dpi = _animation_target(path, frames, fps, dpi)
+    _check_ffmpeg(path)
+    sfb = a.linkage
+    angles, _ = drive_angles(sfb, frames)
+    sequence = np.concatenate([angles, angles[-2:0:-1]])
+    scene = _scene.actuator_scene(a, width)
+    frames_at = [_scene.actuator_at(a, float(t), scene.width) for t in sequence]
+    fig, ax = plt.subplots(figsize=(6.0, 5.0))
+    try:
+        _draw_static(ax, sfb, scene.linkage, True, True)
+        _, xq, yq, _ = a.travel(96)
+        (qp,) = ax.plot(xq, yq, ":", color="#d94801", linewidth=1.2, zorder=2, label="Q's path")
+        qp.set_gid("point-path")
+        _markers(ax, [a.ground], "actuator-ground", "actuator ground pivot G", marker="^", markersize=10,
+                 color="black", zorder=9)
+        _label(ax, a.ground, "G")
+        # The chain A0 A B C0, the coupler A B P (with the bracket A Q B when Q is on it), the cylinder.
+        bracket = a.link == "coupler"
+        polys = [(np.array(f.position[:4], dtype=float),
+                  np.array([f.position.a, f.position.b, f.position.p]
+                           + ([f.position.b, f.q, f.position.a] if bracket else [])),
+                  f.body, f.rod) for f in frames_at]
+        _fit_frames(ax, polys)
+        label_axes(ax, units)
+        state = "monotone" if a.monotone else "NOT monotone"
+        ax.set_title(f"Driven by a cylinder on the {a.link}: {format_length(a.min_length, units)} closed, "
+                     f"stroke {format_length(a.stroke, units)}\n{state}, force transmission at least "
+                     f"{a.min_transmission_deg:.0f} deg", fontsize=10)
+        (chain_art,) = ax.plot([], [], color="#333333", linewidth=2.5, marker="o", markersize=5, zorder=8,
+                               gid="moving-linkage")
+        patches: List[Polygon] = []
+        for k, (gid, style) in enumerate((
+            ("moving-coupler", dict(facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.6, zorder=8)),
+            ("moving-actuator-body", dict(facecolor="0.35", edgecolor="black", linewidth=0.8, zorder=10)),
+            ("moving-actuator-rod", dict(facecolor="#bdbdbd", edgecolor="black", linewidth=0.8, zorder=9)),
+        ), start=1):
+            patch = Polygon(polys[0][k], closed=True, gid=gid, **style)
+            ax.add_patch(patch)
+            patches.append(patch)
+        tri, body, rod = patches
+
+        def update(i: int) -> List[Artist]:
+            chain, coupler, b, r = polys[i]
+            chain_art.set_data(chain[:, 0], chain[:, 1])
+            tri.set_xy(coupler)
+            body.set_xy(b)
+            rod.set_xy(r)
+            return [chain_art, tri, body, rod]
+
+        anim = FuncAnimation(fig, update, frames=len(polys), interval=1000.0 / fps, blit=False)
+        _save_animation(anim, path, fps, dpi)
+    finally:
+        plt.close(fig)
     return anim

@@ -86,11 +86,14 @@ import math
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, List, Literal, Mapping, Optional, Sequence, Tuple, Union
 
 from burmester import _counts as counts
 from burmester._burmester import BurmesterError, DesignLimits, Filemon, Grid, InvalidInputError, Space, Task
 from burmester.units import check_units
+
+if TYPE_CHECKING:
+    from burmester._burmester import RankBy
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -156,6 +159,9 @@ class TaskSpec:
     #: Where the linkage may be (``[space]``), for ``burmester design``;
     #: None: anywhere.
     space: Optional[Space] = None
+    #: A linear actuator to place (``[actuator]``), for ``burmester
+    #: actuator``; None: the command's defaults.
+    actuator: Optional["ActuatorSpec"] = None
 
     @property
     def task(self) -> Task:
@@ -442,11 +448,12 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     """
     r = _Reader(source)
     for key in doc:
-        if key not in ("pose", "driven", "view", "limits", "space", "units"):
+        if key not in ("pose", "driven", "view", "limits", "space", "units", "actuator"):
             hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
             if key in ("unit", "length_unit", "lengths"):
                 hint = ' (the unit of the lengths is units = "mm")'
-            raise r.fail(key, f"unknown top-level key (expected units, [[pose]], [driven], [view], [limits], [space]){hint}")
+            raise r.fail(key, f"unknown top-level key (expected units, [[pose]], [driven], [view], [limits], [space], "
+                              f"[actuator]){hint}")
     units = _units(r, doc)
 
     # [[pose]] x3 (the branch maps of Filemon's construction need three), or
@@ -492,7 +499,8 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     view = _view(r, doc, default)
 
     limits = _limits(r, doc)
-    return TaskSpec(tuple(poses), center, view, limits, source, units=units, space=_space(r, doc))
+    return TaskSpec(tuple(poses), center, view, limits, source, units=units, space=_space(r, doc),
+                    actuator=_actuator(r, doc))
 
 
 def _units(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
@@ -690,7 +698,8 @@ def _parse_many(
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     limits = _limits(r, doc)
     driven = _driven(r, doc, task, required=False) if count.driven else None
-    return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units=units, space=_space(r, doc))
+    return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units=units, space=_space(r, doc),
+                    actuator=_actuator(r, doc))
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
@@ -781,6 +790,8 @@ def dumps(spec: TaskSpec) -> str:
         doc.add("limits", limits)
     if spec.space is not None:
         doc.add("space", _dump_space(spec.space, note))
+    if spec.actuator is not None:
+        doc.add("actuator", _dump_actuator(spec.actuator, note))
     return tomlkit.dumps(doc)
 
 
@@ -819,3 +830,122 @@ def save(spec: TaskSpec, path: Union[str, Path], *, overwrite: bool = True) -> P
     from burmester import _io
 
     return _io.write_text(path, dumps(spec), overwrite=overwrite)
+
+
+# ---------------------------------------------------------------------------
+# [actuator]: a linear actuator to place (issue 27)
+
+#: The links an actuator may act on, and the rankings of its placements
+#: (as ``burmester actuator``'s ``--link`` and ``--actuator-rank-by``).
+ACTUATOR_LINKS = ("coupler", "crank", "rocker")
+ACTUATOR_RANKINGS = ("balanced", "transmission", "compact", "margin")
+#: Largest samples of the ground-pivot grid along x and along y (``grid``;
+#: the core's map takes at most 2**20 samples in all).
+MAX_ACTUATOR_GRID = 1024
+
+
+@dataclass(frozen=True)
+class ActuatorSpec:
+    """The ``[actuator]`` table: a linear actuator (a cylinder, a gas
+    strut) for ``burmester actuator`` to place on the task's linkage. Every
+    field has the command's default; its flags override them::
+
+        [actuator]
+        link = "coupler"             # the link it acts on: "coupler", "crank" or "rocker"
+        point = [-40.0, -20.0]       # its moving point Q at pose 1 (default: the link's middle)
+        max_stroke_ratio = 1.8       # open over closed length, at least 1 (a cylinder's is below 2)
+        max_size_ratio = 8.0         # the linkage with the open actuator over the task's span
+        rank_by = "balanced"         # "balanced", "transmission", "compact" or "margin"
+        x = [-250.0, 150.0]          # where its ground pivot G is searched: xmin, xmax ...
+        y = [-200.0, 200.0]          # ... ymin, ymax (default: about the linkage)
+        grid = [320, 320]            # ground pivots sampled along x and y, 2 to 1024 each
+        base_plate = [[-150, -100], [50, -100], [50, 0], [-150, 0]]   # G inside this polygon
+        width = 18.0                 # the cylinder's body as drawn and exported (default: 0.06 of its closed length)
+    """
+
+    link: Literal["coupler", "crank", "rocker"] = "coupler"
+    point: Optional[Point] = None
+    max_stroke_ratio: float = 1.8
+    #: None: the task's ``[limits]`` ``max_size_ratio``.
+    max_size_ratio: Optional[float] = None
+    rank_by: "RankBy" = "balanced"
+    #: ``(xmin, xmax, ymin, ymax)`` of the ground pivots searched; None:
+    #: :func:`burmester.actuators.default_view`.
+    view: Optional[Tuple[float, float, float, float]] = None
+    grid: Tuple[int, int] = (200, 200)
+    base_plate: Optional[Tuple[Point, ...]] = None
+    #: The cylinder's width in the pictures, the animation and the CAD
+    #: export (its rod is 0.45 of it); None: 0.06 of its closed length.
+    width: Optional[float] = None
+
+
+def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
+    """The ``[actuator]`` table as an :class:`ActuatorSpec` (None when absent)."""
+    t = r.table(doc, "actuator", required=False)
+    if t is None:
+        return None
+    r.only_keys("actuator", t, ["link", "point", "max_stroke_ratio", "max_size_ratio", "rank_by", "x", "y",
+                                "grid", "base_plate", "width"])
+    kw: Dict[str, Any] = {}
+    for key, allowed in (("link", ACTUATOR_LINKS), ("rank_by", ACTUATOR_RANKINGS)):
+        if key in t:
+            if t[key] not in allowed:
+                names = ", ".join(f'"{a}"' for a in allowed)
+                raise r.fail(f"actuator.{key}", f"expected one of {names}, found {_describe(t[key])}")
+            kw[key] = t[key]
+    if "point" in t:
+        kw["point"] = r.point("actuator.point", t["point"])
+    # Each number: (its lowest value, whether that is allowed, what it is), TOML's inf for no size limit.
+    for key, (low, closed, what) in (("max_stroke_ratio", (1.0, True, "at least 1 (open over closed length)")),
+                                     ("max_size_ratio", (0.0, False, "a ratio above 0 (or inf: no limit)")),
+                                     ("width", (0.0, False, "a width above 0 (task units)"))):
+        if key in t:
+            value = r.number(f"actuator.{key}", t[key], "a number", no_limit=key == "max_size_ratio")
+            if value < low or (value == low and not closed):
+                raise r.fail(f"actuator.{key}", f"expected {what}, found {value:g}")
+            kw[key] = value
+    if ("x" in t) != ("y" in t):
+        missing = "y" if "x" in t else "x"
+        raise r.fail(f"actuator.{missing}", "missing; give both x = [min, max] and y = [min, max] (where the "
+                                            "ground pivot is searched), or neither")
+    if "x" in t:
+        kw["view"] = (*r.interval("actuator.x", t["x"]), *r.interval("actuator.y", t["y"]))
+    if "grid" in t:
+        nx, ny = r.grid("actuator.grid", t["grid"])
+        for k, n in enumerate((nx, ny)):
+            if n > MAX_ACTUATOR_GRID:
+                raise r.fail(f"actuator.grid[{k}]", f"expected 2 to {MAX_ACTUATOR_GRID} ground pivots, found {n}")
+        kw["grid"] = (nx, ny)
+    if "base_plate" in t:
+        plate = t["base_plate"]
+        if not isinstance(plate, list) or len(plate) < 3:
+            raise r.fail("actuator.base_plate", f"expected a polygon [[x, y], ...] of at least 3 points, "
+                                                f"found {_describe(plate)}")
+        kw["base_plate"] = tuple(r.point(f"actuator.base_plate[{k}]", p) for k, p in enumerate(plate))
+    return ActuatorSpec(**kw)
+
+
+def _dump_actuator(a: ActuatorSpec, note: Any) -> Any:
+    """The ``[actuator]`` table (tomlkit), ``note`` adding a comment to an item."""
+    import tomlkit
+
+    t = note(tomlkit.table(), "a linear actuator to place (burmester actuator; its flags override these)")
+    t.add("link", note(tomlkit.item(a.link), 'the link it acts on: "coupler", "crank" or "rocker"'))
+    if a.point is not None:
+        t.add("point", note(tomlkit.item([float(c) for c in a.point]), "its moving point Q at pose 1"))
+    t.add("max_stroke_ratio", note(tomlkit.item(float(a.max_stroke_ratio)), "open over closed length"))
+    if a.max_size_ratio is not None:
+        t.add("max_size_ratio", note(tomlkit.item(float(a.max_size_ratio)),
+                                     "the linkage with the open actuator over the task's span"))
+    t.add("rank_by", note(tomlkit.item(a.rank_by), '"balanced", "transmission", "compact" or "margin"'))
+    if a.view is not None:
+        x0, x1, y0, y1 = a.view
+        t.add("x", note(tomlkit.item([float(x0), float(x1)]), "where its ground pivot G is searched"))
+        t.add("y", tomlkit.item([float(y0), float(y1)]))
+    t.add("grid", note(tomlkit.item([int(a.grid[0]), int(a.grid[1])]), "ground pivots sampled along x and y"))
+    if a.base_plate is not None:
+        t.add("base_plate", note(tomlkit.item([[float(x), float(y)] for x, y in a.base_plate]),
+                                 "G inside this polygon"))
+    if a.width is not None:
+        t.add("width", note(tomlkit.item(float(a.width)), "the cylinder's width as drawn and exported"))
+    return t

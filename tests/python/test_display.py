@@ -46,7 +46,27 @@ def make(name):
         "atlas": lambda: burmester.pivot_atlas(task, (-8, 8, -8, 8, 12, 12), (-8, 8, -8, 8, 32, 32)),
         "pairmap": lambda: Task(FOUR).pair_map(64),
         "cubic": lambda: Task(FOUR).center_point_curve(),
+        "slider-crank": lambda: burmester.SliderCrank(crank=30.0, coupler=100.0, guide_point=(0.0, 10.0)),
+        "synthesized-slider-crank": _synthesized_slider_crank,
+        "slider-dyad": lambda: burmester.SliderDyad((1.0, 2.0), (0.6, 0.8)),
+        "actuator": lambda: _strut()[1],
+        "actuator-map": lambda: _strut()[0],
     }[name]()
+
+
+def _synthesized_slider_crank():
+    """A slider-crank synthesized back from three poses of a known one."""
+    sc = burmester.SliderCrank(crank=1.0, coupler=3.0, guide_point=(0.0, 0.4))
+    poses = [(*sc.coupler_point(t, (0.5, 0.7)), sc.solve(t).theta3 + 0.3) for t in (0.2, 1.0, 2.1)]
+    _, a1, b1 = sc.joints(0.2)
+    return Task(poses).slider_crank(((0.0, 0.0), a1), (b1, sc.guide))
+
+
+def _strut():
+    """An actuator map over the README's linkage and its best placement."""
+    sfb = Task(POSES).filemon(C0).four_bar(A0)
+    amap = sfb.actuator_map(-10.0, 10.0, -10.0, 10.0, 48, 48, max_stroke_ratio=2.5, min_transmission_deg=10)
+    return amap, amap.best_placements(1)[0]
 
 
 
@@ -63,6 +83,11 @@ COLOURS = {
     "atlas": ["#fde725"],  # viridis at 90 degrees, the colour bar's top
     "pairmap": [bp.FREE_COLOR, bp.ACCEPT_COLOR],
     "cubic": ["#1f77b4"],  # the first component's colour (C0)
+    "slider-crank": [bp.POSE_COLORS[3]],
+    "synthesized-slider-crank": [bp.POSE_COLORS[1], bp.POSE_COLORS[2], bp.POSE_COLORS[3]],
+    "slider-dyad": [bp.POSE_COLORS[1]],
+    "actuator": ["#2171b5", "#595959"],  # pose 1's linkage, the cylinder's body
+    "actuator-map": ["#c7e9c0", "#41ab5d"],  # monotone, acceptable
 }
 
 

@@ -1,5 +1,7 @@
 //! Pictures in Jupyter: the `_repr_png_` of `Task`, `Filemon`, `FourBar`,
-//! `SynthesizedFourBar`, `SolutionMap`, `PairMap` and `Cubic`.
+//! `SynthesizedFourBar`, `SolutionMap`, `PairMap` and `Cubic` (and, by
+//! `repr_png_for!`, `SliderCrank`, `SynthesizedSliderCrank`, `SliderDyad`,
+//! `Actuator` and `ActuatorMap`).
 //!
 //! The binding draws nothing itself: each method hands the object to the
 //! pure-Python `burmester._display.repr_png`, which imports matplotlib only
@@ -14,3 +16,29 @@ pub(crate) fn repr_png(obj: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let display = obj.py().import("burmester._display")?;
     Ok(display.call_method1("repr_png", (obj,))?.unbind())
 }
+
+/// `_repr_png_` for each class named: the picture `burmester._display`
+/// draws for it (one method, [`repr_png`], for every class; issue 27's
+/// slider and actuator classes use it through this macro).
+macro_rules! repr_png_for {
+    ($($ty:ty),* $(,)?) => {
+        $(
+            #[pymethods]
+            impl $ty {
+                /// A picture for Jupyter: PNG bytes drawn by
+                /// `burmester._display`, or None without matplotlib.
+                fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+                    repr_png(slf.as_any())
+                }
+            }
+        )*
+    };
+}
+
+repr_png_for!(
+    crate::slider::PySliderCrank,
+    crate::slider::PySynthesizedSliderCrank,
+    crate::slider_dyads::PySliderDyad,
+    crate::actuator::PyActuator,
+    crate::actuator::PyActuatorMap,
+);

@@ -674,37 +674,55 @@ def cmd_drive(args: argparse.Namespace) -> int:
 
 def cmd_actuator(args: argparse.Namespace) -> int:
     """``burmester actuator``: a linear actuator for the task's best design:
-    its placement map and the best placement, as a table or JSON, drawn
-    with ``-o``."""
+    its placement map and the best placement, as a table or JSON; with
+    ``-o``, drawn (the map and the design, ``.png`` ...), exported (the
+    design with its cylinder, ``.dxf``, ``.svg``) or animated (``.gif``,
+    ``.mp4``). The task file's ``[actuator]`` table gives the defaults;
+    the flags override it."""
     from burmester import actuators
+    from burmester.taskfile import ActuatorSpec
 
     spec = _with_units(_load(args.task), args)
     out: Optional[str] = args.output
+    export: Optional[ModuleType] = None
     if out is not None:
-        _output(out, _types(PICTURE_TYPES), args.force)
-    link = args.link
-    point = (args.point[0], args.point[1]) if args.point is not None else None
-    ratio = args.max_stroke_ratio
+        _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+        animated = out.lower().endswith(ANIMATION_TYPES)
+        for flag, value in (("--frames", args.frames), ("--fps", args.fps)):
+            if value is not None and not animated:
+                raise UsageError(f"{flag} is for animations (.gif, .mp4), not {out}")
+        export = _export_module(out) if _is_cad(out) else None
+    table = spec.actuator or ActuatorSpec()
+    link = args.link or table.link
+    given = args.point if args.point is not None else table.point
+    point = (given[0], given[1]) if given is not None else None
+    ratio = args.max_stroke_ratio if args.max_stroke_ratio is not None else table.max_stroke_ratio
     if not ratio >= 1.0:
         raise UsageError(f"--max-stroke-ratio must be at least 1, got {ratio:g}")
+    rank_by = args.actuator_rank_by or table.rank_by
     report = burmester.design(spec.task, space=spec.space, limits=spec.limits, top=1)
     if not len(report):
         raise UsageError(f"no linkage fits {spec.source}; see 'burmester design'")
     sfb = report[0].linkage
     lim = spec.limits
-    if args.max_size_ratio is not None:
+    size = args.max_size_ratio if args.max_size_ratio is not None else table.max_size_ratio
+    if size is not None:
         lim = burmester.DesignLimits(lim.min_transmission_deg, lim.max_link_ratio, lim.input,
-                                     args.max_size_ratio, lim.max_link_length, lim.min_grashof_margin)
-    nx, ny = args.map_grid
-    amap = actuators.actuator_map(sfb, None, (nx, ny), link=link, point=point, max_stroke_ratio=ratio,
-                                  limits=lim)
-    best = amap.best_placements(1, rank_by=args.actuator_rank_by)
+                                     size, lim.max_link_length, lim.min_grashof_margin)
+    nx, ny = args.map_grid if args.map_grid is not None else table.grid
+    plate = list(table.base_plate) if table.base_plate is not None else None
+    amap = actuators.actuator_map(sfb, table.view, (nx, ny), link=link, point=point, max_stroke_ratio=ratio,
+                                  limits=lim, base_plate=plate)
+    best = amap.best_placements(1, rank_by=rank_by)
     if not best:
         mono = int(np.count_nonzero(amap.monotone))
         raise UsageError(f"no acceptable actuator placement for {spec.source}: {mono} of {amap.monotone.size} "
                          f"ground pivots give a monotone stroke; try another --point or --link, or relax "
                          f"--max-stroke-ratio or the limits")
     a = best[0]
+    width = args.width if args.width is not None else table.width
+    if width is not None and not width > 0.0:
+        raise UsageError(f"--width must be above 0, got {width:g}")
     if args.json:
         doc = {"task": spec.source, "actuator": actuators.actuator_record(a)}
         print(json.dumps(doc, indent=2))
@@ -712,12 +730,21 @@ def cmd_actuator(args: argparse.Namespace) -> int:
         print(actuators.actuator_table(a, f"{spec.source} (its best design)", spec.units or ""))
     if out is None:
         return 0
-    import matplotlib.pyplot as plt
+    if export is not None:
+        _write_cad(export.actuator, out, args.force, a, out, units=_units(args, spec), width=width)
+    elif out.lower().endswith(ANIMATION_TYPES):
+        plot = _plot_module()
+        _animated(out, args.force, lambda tmp: plot.animate_actuator(a, tmp, frames=args.frames or 60,
+                                                                     fps=args.fps or 20, width=width,
+                                                                     dpi=args.dpi or 80, units=spec.units))
+    else:
+        _plot_module()
+        import matplotlib.pyplot as plt
 
-    fig, (left, right) = plt.subplots(1, 2, figsize=(15.0, 6.2))
-    actuators.draw_map(amap, best=3, rank_by=args.actuator_rank_by, ax=left)
-    actuators.draw_actuator(a, ax=right)
-    fig.tight_layout()
-    _save(fig, out, _picture_dpi(args), args.force)
+        fig, (left, right) = plt.subplots(1, 2, figsize=(15.0, 6.2))
+        actuators.draw_map(amap, best=3, rank_by=rank_by, ax=left, units=spec.units)
+        actuators.draw_actuator(a, ax=right, units=spec.units, width=width)
+        fig.tight_layout()
+        _save(fig, out, _picture_dpi(args), args.force)
     print(f"wrote {out}", file=sys.stderr if args.json else sys.stdout)
     return 0

@@ -425,26 +425,36 @@ def _add_actuator(sub: _Commands) -> None:
                        description="Place a linear actuator between a ground pivot and a point of a moving "
                                    "link of the task's best design (the one-call design): the placement map "
                                    "over ground pivots (monotone stroke, stroke ratio, force transmission "
-                                   "angle, size) and the best placement.",
+                                   "angle, size) and the best placement. The task file's [actuator] table "
+                                   "gives the defaults (also where the ground pivot is searched, x, y, and "
+                                   "base_plate); these flags override it.",
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     _task_arg(p)
     p.add_argument("-o", "--output", default=None,
-                   help="also draw the placement map and the chosen design (.png, .pdf, ...)")
+                   help="also draw the placement map and the chosen design (.png, .pdf, ...), export the "
+                        "design with its cylinder (.dxf, .svg) or animate it (.gif, .mp4)")
     _json_arg(p)
-    p.add_argument("--link", choices=("coupler", "crank", "rocker"), default="coupler",
-                   help="the link the actuator acts on (default: coupler)")
+    p.add_argument("--link", choices=("coupler", "crank", "rocker"), default=None,
+                   help="the link the actuator acts on (default: [actuator] link, else coupler)")
     p.add_argument("--point", nargs=2, type=_finite, metavar=("X", "Y"),
-                   help="the actuator's moving point where it is at pose 1 (default: the middle of the "
-                        "coupler's A C, the crank's A or the rocker's C)")
-    p.add_argument("--max-stroke-ratio", type=_finite, default=1.8, metavar="R",
-                   help="largest acceptable open over closed length (default: 1.8; a cylinder's is below 2)")
+                   help="the actuator's moving point where it is at pose 1 (default: [actuator] point, else "
+                        "the middle of the coupler's A C, the crank's A or the rocker's C)")
+    p.add_argument("--max-stroke-ratio", type=_finite, default=None, metavar="R",
+                   help="largest acceptable open over closed length (default: [actuator] max_stroke_ratio, "
+                        "else 1.8; a cylinder's is below 2)")
     p.add_argument("--max-size-ratio", type=_finite, default=None, metavar="R",
                    help="largest size of the linkage with the open actuator over the task's span "
-                        "(default: the task's limits')")
+                        "(default: [actuator] max_size_ratio, else the task's limits')")
     p.add_argument("--actuator-rank-by", choices=("balanced", "transmission", "compact", "margin"),
-                   default="balanced", help="which placement to pick (default: balanced)")
-    p.add_argument("--map-grid", nargs=2, type=_ranged(2, 1024), default=(200, 200), metavar=("NX", "NY"),
-                   help="ground pivots sampled over the map's view (default: 200 200)")
+                   default=None, help="which placement to pick (default: [actuator] rank_by, else balanced)")
+    p.add_argument("--map-grid", nargs=2, type=_ranged(2, 1024), default=None, metavar=("NX", "NY"),
+                   help="ground pivots sampled over the map's view (default: [actuator] grid, else 200 200)")
+    p.add_argument("--width", type=_finite, default=None, metavar="W",
+                   help="the cylinder's width as drawn and exported (default: [actuator] width, else 0.06 "
+                        "of its closed length)")
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
+                   help="animation: frames from the first pose to the last (default 60)")
+    p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 20)")
     _units_arg(p)
     p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
     _force_arg(p)
