@@ -17,7 +17,7 @@ use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::geom::grid_arg;
 use crate::getters::getters;
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
+use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
 type Xy = (f64, f64);
@@ -896,10 +896,9 @@ fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
 /// The solution maps of `Filemon` (candidate driving pivots).
 #[pymethods]
 impl PyFilemon {
+    #[doc = text_signature!(MAP, "solution_map($self, *grid", ", progress=None")]
     #[pyo3(signature = (*grid, progress = None, **options),
-        text_signature = "($self, *grid, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, input=None, base_plate=None, obstacles=None, link_width=0.0, \
-        travel_samples=64, progress=None)")]
+        text_signature = None)]
     fn solution_map(
         &self,
         py: Python<'_>,
@@ -917,10 +916,13 @@ impl PyFilemon {
 /// The driven solution map of `Task` (candidate driven pivots).
 #[pymethods]
 impl PyTask {
+    #[doc = text_signature!(
+        MAP,
+        "driven_solution_map($self, driving_center, *grid",
+        ", progress=None"
+    )]
     #[pyo3(signature = (driving_center, *grid, progress = None, **options),
-        text_signature = "($self, driving_center, *grid, limits=None, \
-        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+        text_signature = None)]
     fn driven_solution_map(
         &self,
         py: Python<'_>,
