@@ -11,9 +11,10 @@ use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar};
 use crate::conv::{Count, PyPoint, Real, pt};
-use crate::design::{grid_alone, set_readonly};
+use crate::design::set_readonly;
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
+use crate::geom::grid_alone;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 

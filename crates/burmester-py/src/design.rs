@@ -15,7 +15,7 @@ use crate::classes::{PyDesignLimits, PyFilemon, PySynthesizedFourBar, PyTask, dy
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::geom::grid_arg;
+use crate::geom::grid_alone;
 use crate::getters::getters;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
@@ -936,17 +936,6 @@ impl PyTask {
         let opts = MapOptions::from_kwargs("Task.driven_solution_map", options, Keys::MAP)?;
         driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
     }
-}
-
-/// The grid of a map's positional arguments `grid` (a `Grid`, its tuple
-/// or its six numbers) and nothing else; a `TypeError` saying `what` the
-/// method takes otherwise.
-pub(crate) fn grid_alone(grid: &Bound<'_, PyTuple>, what: &'static str) -> PyResult<Grid> {
-    let (g, used) = grid_arg(grid)?;
-    if used != grid.len() {
-        return Err(PyTypeError::new_err(what));
-    }
-    Ok(g)
 }
 
 /// `Filemon.solution_map`.

@@ -15,8 +15,9 @@ use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask};
 use crate::conv::{
     Arrays, Count, FloatArray, PyPoint, Real, empty, fill_arrays, pt, py_bool, write_points,
 };
-use crate::design::{grid_alone, readonly, same_column, set_readonly};
+use crate::design::{readonly, same_column, set_readonly};
 use crate::errors::IntoPy;
+use crate::geom::grid_alone;
 use crate::geom::{PyGrid, vec2};
 use crate::getters::getters;
 use crate::linkage::{PyFourBar, mode};

@@ -7,7 +7,6 @@ use burmester::SliderDyad;
 use burmester::synthesis::FilemonArcs;
 use burmester::synthesis::three::Filemon;
 use numpy::PyArray2;
-use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
@@ -15,7 +14,7 @@ use crate::classes::PyTask;
 use crate::conv::{PyPoint, Real, pt};
 use crate::curves;
 use crate::errors::IntoPy;
-use crate::geom::{grid_arg, vec2};
+use crate::geom::{grid_alone, vec2};
 use crate::synthesis::filemon_methods;
 
 type Xy = (f64, f64);
@@ -85,13 +84,10 @@ impl PySliderFilemon {
         out: Option<Bound<'py, PyAny>>,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let (g, used) = grid_arg(grid)?;
-        if used != grid.len() {
-            return Err(PyTypeError::new_err(
-                "SliderFilemon.branch_map takes a grid (or its six numbers); pass the method \
-                 by name",
-            ));
-        }
+        let g = grid_alone(
+            grid,
+            "SliderFilemon.branch_map takes a grid (or its six numbers); pass the method by name",
+        )?;
         crate::sweep::branch_map(self.inner, py, g, method, out, progress.as_ref())
     }
 
@@ -147,12 +143,7 @@ pub(crate) fn slider_branch_free_arcs<'py>(
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let arcs = four_arcs(&task, circle, guide, "slider_branch_free_arcs")?;
     let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
-    let lines = if curves::circle_plane(plane)? {
-        py.detach(|| arcs.free_circle_arcs(&vp))
-    } else {
-        py.detach(|| arcs.free_center_arcs(&vp))
-    };
-    lines.iter().map(|l| curves::polyline(py, l)).collect()
+    curves::free_arcs(py, &arcs, &vp, curves::circle_plane(plane)?)
 }
 
 /// Four poses: the branch class of a driving center point on the curve for

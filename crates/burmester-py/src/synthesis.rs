@@ -14,7 +14,7 @@ use crate::conv::{
 };
 use crate::curves::{self, PyCoincidencePoint, PyCubic, PyCurveDyad};
 use crate::errors::IntoPy;
-use crate::geom::{PyConic, grid_arg, vec2};
+use crate::geom::{PyConic, grid_alone, grid_arg, vec2};
 use crate::getters::getters;
 use crate::linkage::{PyFourBar, PyLinkageFigures};
 
@@ -409,14 +409,7 @@ impl PyTask {
         let circle = curves::circle_plane(plane)?;
         let driven = four.dyad_from_center(driven_center.0).py()?;
         let arcs = four.filemon(&driven).py()?;
-        let lines = py.detach(|| {
-            if circle {
-                arcs.free_circle_arcs(&vp)
-            } else {
-                arcs.free_center_arcs(&vp)
-            }
-        });
-        lines.iter().map(|l| curves::polyline(py, l)).collect()
+        curves::free_arcs(py, &arcs, &vp, circle)
     }
 
     /// Four poses: the branch class (`"free"`, `"defective"`, `"boundary"`)
@@ -602,12 +595,7 @@ impl PyFilemon {
         out: Option<Bound<'py, PyAny>>,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let (g, used) = grid_arg(grid)?;
-        if used != grid.len() {
-            return Err(PyTypeError::new_err(
-                "margin_map takes a grid (or its six numbers)",
-            ));
-        }
+        let g = grid_alone(grid, "margin_map takes a grid (or its six numbers)")?;
         crate::sweep::margin_map(self.inner, py, g, out, progress.as_ref())
     }
 
