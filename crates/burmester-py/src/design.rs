@@ -144,18 +144,27 @@ pub(crate) trait StateColumn: Sized {
     ) -> PyResult<Vec<Self>>;
 }
 
+/// `item` as a 2-d array of `T`; a `TypeError` naming the column `name` of
+/// a pickled map otherwise.
+fn column_array<'py, T: Element>(
+    item: Bound<'py, PyAny>,
+    name: &str,
+) -> PyResult<Bound<'py, PyArray2<T>>> {
+    item.cast_into::<PyArray2<T>>().map_err(|e| {
+        PyTypeError::new_err(format!(
+            "column {name} of a pickled map: {}",
+            PyErr::from(e)
+        ))
+    })
+}
+
 /// The values of a 2-d array of `T` of shape `shape`, in row-major order.
 fn read_plain<T: Element + Copy>(
     item: Bound<'_, PyAny>,
     name: &'static str,
     shape: (usize, usize),
 ) -> PyResult<Vec<T>> {
-    let a = item.cast_into::<PyArray2<T>>().map_err(|e| {
-        PyTypeError::new_err(format!(
-            "column {name} of a pickled map: {}",
-            PyErr::from(e)
-        ))
-    })?;
+    let a = column_array::<T>(item, name)?;
     let ro = a.readonly();
     let v = ro.as_array();
     if v.shape() != [shape.0, shape.1] {
@@ -190,12 +199,7 @@ impl StateColumn for bool {
         shape: (usize, usize),
     ) -> PyResult<Vec<Self>> {
         // The dtype first (no element is read), then the bytes.
-        let a = item.cast_into::<PyArray2<bool>>().map_err(|e| {
-            PyTypeError::new_err(format!(
-                "column {name} of a pickled map: {}",
-                PyErr::from(e)
-            ))
-        })?;
+        let a = column_array::<bool>(item, name)?;
         let bytes = a.as_any().call_method1("view", ("u1",))?;
         let v = read_plain::<u8>(bytes, name, shape)?;
         if let Some(k) = v.iter().position(|&b| b > 1) {
