@@ -148,6 +148,23 @@ def test_dragging_a_pose_moves_it_and_redraws_the_map(ex):
     assert ex.solution_map == Task(moved).filemon(C0).solution_map(VIEW)
 
 
+def test_the_drag_method_sends_a_user_s_drag(ex):
+    """Explorer.drag (the scripted pictures' drag) against this file's own
+    event-by-event drag on a second explorer: the same poses, pivots and
+    linkage, and one redraw a motion."""
+    twin = bp.explore(Task(POSES), C0, VIEW)
+    twin.figure.canvas.draw()
+    ex.drag((2.0, 0.5), (2.6, 0.9), steps=3)
+    drag(twin, (2.0, 0.5), (2.6, 0.9), steps=3)
+    assert ex.figure.canvas.idle_draws == 3
+    assert ex.task.poses == twin.task.poses != POSES
+    ex.drag(ex.driving_center, (-5.0, 6.0))
+    drag(twin, twin.driving_center, (-5.0, 6.0), steps=4)
+    assert ex.driving_center == twin.driving_center == pytest.approx((-5.0, 6.0), abs=1e-9)
+    assert ex.linkage() == twin.linkage()
+    assert ex.error is None
+
+
 def test_dragging_c0_moves_the_driven_pivot(ex):
     a0 = ex.driving_center
     last = drag(ex, C0, (4.5, -1.8))

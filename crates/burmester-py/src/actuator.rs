@@ -11,10 +11,11 @@ use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar};
 use crate::conv::{Count, PyPoint, Real, pt};
-use crate::design::{grid_alone, set_readonly};
+use crate::design::set_readonly;
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
+use crate::geom::grid_alone;
+use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
 type Xy = (f64, f64);
@@ -557,11 +558,14 @@ fn same_bits(a: &ActuatorMap, b: &ActuatorMap) -> bool {
 /// between a ground pivot and a point of a moving link.
 #[pymethods]
 impl PySynthesizedFourBar {
+    #[doc = text_signature!(
+        ACTUATOR,
+        "actuator_map($self, *grid, link='coupler', point=None, max_stroke_ratio=1.8, samples=256",
+        ", progress=None"
+    )]
     #[pyo3(signature = (*grid, link = "coupler", point = None, max_stroke_ratio = Real(1.8),
         samples = Count(256), progress = None, **options),
-        text_signature = "($self, *grid, link='coupler', point=None, max_stroke_ratio=1.8, \
-        samples=256, limits=None, min_transmission_deg=None, max_link_ratio=None, \
-        base_plate=None, progress=None)")]
+        text_signature = None)]
     #[allow(clippy::too_many_arguments)]
     fn actuator_map(
         &self,
@@ -584,11 +588,14 @@ impl PySynthesizedFourBar {
         PyActuatorMap::new(py, map, self.task())
     }
 
+    #[doc = text_signature!(
+        ACTUATOR,
+        "actuator($self, ground, link='coupler', point=None, max_stroke_ratio=1.8, samples=256, *",
+        ""
+    )]
     #[pyo3(signature = (ground, link = "coupler", point = None, max_stroke_ratio = Real(1.8),
         samples = Count(256), **options),
-        text_signature = "($self, ground, link='coupler', point=None, max_stroke_ratio=1.8, \
-        samples=256, *, limits=None, min_transmission_deg=None, max_link_ratio=None, \
-        base_plate=None)")]
+        text_signature = None)]
     fn actuator(
         &self,
         ground: PyPoint,

@@ -13,9 +13,15 @@ use crate::conv::{Count, PyPoint};
 use crate::conv::{empty, slice_mut, writer};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::options::{Keys, MapOptions};
+use crate::options::{Keys, MapOptions, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run_in};
 
+#[doc = text_signature!(
+    MAP,
+    "_atlas_tile(task, driven, row_start, row_end, driving, *",
+    ", rank_by='balanced', envelope=None, threads=None, progress=None",
+    doc
+)]
 /// The cells of rows `row_start..row_end` of the driven grid, as a dict of
 /// NumPy arrays of shape `(rows, nx)` (`best_driving` and `best_index`:
 /// `(rows, nx, 2)`), computed on `threads` rayon threads (default: the
@@ -23,10 +29,7 @@ use crate::run::{WATCH_MIN_SAMPLES, run_in};
 #[pyfunction]
 #[pyo3(signature = (task, driven, row_start, row_end, driving, *, rank_by = "balanced",
     envelope = None, threads = None, progress = None, **options),
-    text_signature = "(task, driven, row_start, row_end, driving, *, limits=None, \
-    min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, obstacles=None, \
-    link_width=0.0, travel_samples=64, rank_by='balanced', envelope=None, threads=None, \
-    progress=None)")]
+    text_signature = None)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn _atlas_tile<'py>(
     py: Python<'py>,

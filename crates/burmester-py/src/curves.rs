@@ -7,7 +7,7 @@
 //! to Python values.
 
 use burmester::geom::Cubic;
-use burmester::synthesis::{CoincidencePoint, CurveDyad};
+use burmester::synthesis::{CoincidencePoint, CurveDyad, FilemonArcs};
 use burmester::{InvalidInput, Point2, Viewport};
 use numpy::PyArray2;
 use pyo3::exceptions::PyTypeError;
@@ -314,6 +314,25 @@ pub(crate) fn polyline<'py>(
 /// A viewport from its four numbers.
 pub(crate) fn viewport(xmin: Real, xmax: Real, ymin: Real, ymax: Real) -> PyResult<Viewport> {
     Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()
+}
+
+/// The branch-free arcs of a four-pose construction (any driven dyad kind)
+/// inside `vp`, of the circle-point curve where `circle` (else the
+/// center-point curve), as polylines; computed without the GIL.
+pub(crate) fn free_arcs<'py>(
+    py: Python<'py>,
+    arcs: &FilemonArcs,
+    vp: &Viewport,
+    circle: bool,
+) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
+    let lines = py.detach(|| {
+        if circle {
+            arcs.free_circle_arcs(vp)
+        } else {
+            arcs.free_center_arcs(vp)
+        }
+    });
+    lines.iter().map(|l| polyline(py, l)).collect()
 }
 
 /// Whether `plane` names the circle-point plane (`"circle"`) rather than

@@ -15,9 +15,9 @@ use crate::classes::{PyDesignLimits, PyFilemon, PySynthesizedFourBar, PyTask, dy
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::geom::grid_arg;
+use crate::geom::grid_alone;
 use crate::getters::getters;
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
+use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
 type Xy = (f64, f64);
@@ -144,18 +144,27 @@ pub(crate) trait StateColumn: Sized {
     ) -> PyResult<Vec<Self>>;
 }
 
+/// `item` as a 2-d array of `T`; a `TypeError` naming the column `name` of
+/// a pickled map otherwise.
+fn column_array<'py, T: Element>(
+    item: Bound<'py, PyAny>,
+    name: &str,
+) -> PyResult<Bound<'py, PyArray2<T>>> {
+    item.cast_into::<PyArray2<T>>().map_err(|e| {
+        PyTypeError::new_err(format!(
+            "column {name} of a pickled map: {}",
+            PyErr::from(e)
+        ))
+    })
+}
+
 /// The values of a 2-d array of `T` of shape `shape`, in row-major order.
 fn read_plain<T: Element + Copy>(
     item: Bound<'_, PyAny>,
     name: &'static str,
     shape: (usize, usize),
 ) -> PyResult<Vec<T>> {
-    let a = item.cast_into::<PyArray2<T>>().map_err(|e| {
-        PyTypeError::new_err(format!(
-            "column {name} of a pickled map: {}",
-            PyErr::from(e)
-        ))
-    })?;
+    let a = column_array::<T>(item, name)?;
     let ro = a.readonly();
     let v = ro.as_array();
     if v.shape() != [shape.0, shape.1] {
@@ -190,12 +199,7 @@ impl StateColumn for bool {
         shape: (usize, usize),
     ) -> PyResult<Vec<Self>> {
         // The dtype first (no element is read), then the bytes.
-        let a = item.cast_into::<PyArray2<bool>>().map_err(|e| {
-            PyTypeError::new_err(format!(
-                "column {name} of a pickled map: {}",
-                PyErr::from(e)
-            ))
-        })?;
+        let a = column_array::<bool>(item, name)?;
         let bytes = a.as_any().call_method1("view", ("u1",))?;
         let v = read_plain::<u8>(bytes, name, shape)?;
         if let Some(k) = v.iter().position(|&b| b > 1) {
@@ -896,10 +900,9 @@ fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
 /// The solution maps of `Filemon` (candidate driving pivots).
 #[pymethods]
 impl PyFilemon {
+    #[doc = text_signature!(MAP, "solution_map($self, *grid", ", progress=None")]
     #[pyo3(signature = (*grid, progress = None, **options),
-        text_signature = "($self, *grid, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, input=None, base_plate=None, obstacles=None, link_width=0.0, \
-        travel_samples=64, progress=None)")]
+        text_signature = None)]
     fn solution_map(
         &self,
         py: Python<'_>,
@@ -917,10 +920,13 @@ impl PyFilemon {
 /// The driven solution map of `Task` (candidate driven pivots).
 #[pymethods]
 impl PyTask {
+    #[doc = text_signature!(
+        MAP,
+        "driven_solution_map($self, driving_center, *grid",
+        ", progress=None"
+    )]
     #[pyo3(signature = (driving_center, *grid, progress = None, **options),
-        text_signature = "($self, driving_center, *grid, limits=None, \
-        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+        text_signature = None)]
     fn driven_solution_map(
         &self,
         py: Python<'_>,
@@ -934,17 +940,6 @@ impl PyTask {
         let opts = MapOptions::from_kwargs("Task.driven_solution_map", options, Keys::MAP)?;
         driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
     }
-}
-
-/// The grid of a map's positional arguments `grid` (a `Grid`, its tuple
-/// or its six numbers) and nothing else; a `TypeError` saying `what` the
-/// method takes otherwise.
-pub(crate) fn grid_alone(grid: &Bound<'_, PyTuple>, what: &'static str) -> PyResult<Grid> {
-    let (g, used) = grid_arg(grid)?;
-    if used != grid.len() {
-        return Err(PyTypeError::new_err(what));
-    }
-    Ok(g)
 }
 
 /// `Filemon.solution_map`.

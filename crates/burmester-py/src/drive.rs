@@ -15,12 +15,13 @@ use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask};
 use crate::conv::{
     Arrays, Count, FloatArray, PyPoint, Real, empty, fill_arrays, pt, py_bool, write_points,
 };
-use crate::design::{grid_alone, readonly, same_column, set_readonly};
+use crate::design::{readonly, same_column, set_readonly};
 use crate::errors::IntoPy;
+use crate::geom::grid_alone;
 use crate::geom::{PyGrid, vec2};
 use crate::getters::getters;
 use crate::linkage::{PyFourBar, mode};
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
+use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::pickle::{Reduced, reduce_to};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
@@ -758,11 +759,10 @@ getters!(PyDriveMap, context {
 /// an added dyad (the Watt II six-bar).
 #[pymethods]
 impl PySynthesizedFourBar {
+    #[doc = text_signature!(DRIVE, "drive_map($self, *grid, attachment=None", ", progress=None")]
     #[pyo3(signature = (*grid, attachment = None, progress = None,
         **options),
-        text_signature = "($self, *grid, attachment=None, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+        text_signature = None)]
     fn drive_map(
         &self,
         py: Python<'_>,
@@ -775,10 +775,9 @@ impl PySynthesizedFourBar {
         drive_map(self, py, grid, attachment, args, progress)
     }
 
+    #[doc = text_signature!(DRIVE, "drive($self, drive_pivot, attachment=None, *", "")]
     #[pyo3(signature = (drive_pivot, attachment = None, **options),
-        text_signature = "($self, drive_pivot, attachment=None, *, limits=None, \
-        min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
-        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, travel_samples=64)")]
+        text_signature = None)]
     fn drive(
         &self,
         drive_pivot: PyPoint,
@@ -789,11 +788,14 @@ impl PySynthesizedFourBar {
         drive(self, drive_pivot, attachment, args)
     }
 
+    #[doc = text_signature!(
+        CLASSIC,
+        "classic_drive($self, attachment=None, *, beyond_first=True, drive_transmission_deg=None",
+        ""
+    )]
     #[pyo3(signature = (attachment = None, *, beyond_first = true, drive_transmission_deg = None,
         **options),
-        text_signature = "($self, attachment=None, *, beyond_first=True, \
-        drive_transmission_deg=None, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None)")]
+        text_signature = None)]
     fn classic_drive(
         &self,
         attachment: Option<PyPoint>,
@@ -805,12 +807,14 @@ impl PySynthesizedFourBar {
         classic_drive(self, attachment, beyond_first, drive_transmission_deg, args)
     }
 
+    #[doc = text_signature!(
+        DRIVE,
+        "drive_search($self, *, ratios=None, angles_deg=None, reach=4.0, samples=96",
+        ", rank_by='balanced', progress=None"
+    )]
     #[pyo3(signature = (*, ratios = None, angles_deg = None, reach = Real(4.0),
         samples = Count(96), rank_by = "balanced", progress = None, **options),
-        text_signature = "($self, *, ratios=None, angles_deg=None, reach=4.0, samples=96, \
-        limits=None, min_transmission_deg=None, max_link_ratio=None, swing_margin_deg=0.0, \
-        max_time_ratio=None, base_plate=None, obstacles=None, link_width=0.0, \
-        travel_samples=64, rank_by='balanced', progress=None)")]
+        text_signature = None)]
     #[allow(clippy::too_many_arguments)]
     fn drive_search(
         &self,
@@ -828,10 +832,9 @@ impl PySynthesizedFourBar {
         drive_search(self, py, search, args, rank_by, progress)
     }
 
+    #[doc = text_signature!(DRIVE, "best_drive($self, *", ", rank_by='balanced', progress=None")]
     #[pyo3(signature = (*, rank_by = "balanced", progress = None, **options),
-        text_signature = "($self, *, limits=None, min_transmission_deg=None, \
-        max_link_ratio=None, swing_margin_deg=0.0, max_time_ratio=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, rank_by='balanced', progress=None)")]
+        text_signature = None)]
     fn best_drive(
         &self,
         py: Python<'_>,

@@ -141,6 +141,17 @@ pub(crate) fn grid_arg(args: &Bound<'_, PyTuple>) -> PyResult<(Grid, usize)> {
     Ok((six_numbers(|k| args.get_item(k))?, 6))
 }
 
+/// The grid of a map's positional arguments `grid` (a `Grid`, its tuple
+/// or its six numbers) and nothing else; a `TypeError` saying `what` the
+/// method takes otherwise.
+pub(crate) fn grid_alone(grid: &Bound<'_, PyTuple>, what: &'static str) -> PyResult<Grid> {
+    let (g, used) = grid_arg(grid)?;
+    if used != grid.len() {
+        return Err(PyTypeError::new_err(what));
+    }
+    Ok(g)
+}
+
 /// The grid of six numbers `xmin, xmax, ymin, ymax, nx, ny`, the `k`-th
 /// from `item(k)`.
 fn six_numbers<'py>(item: impl Fn(usize) -> PyResult<Bound<'py, PyAny>>) -> PyResult<Grid> {

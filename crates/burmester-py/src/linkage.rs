@@ -7,7 +7,7 @@
 
 use burmester::{
     AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, LinkageFigures, PerPose,
-    Point2,
+    Point2, SliderCrank, Vector2,
 };
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -21,6 +21,71 @@ use crate::pickle::{Reduced, reduce_to};
 /// Parses `"open"` / `"crossed"`.
 pub(crate) fn mode(s: &str) -> PyResult<AssemblyMode> {
     s.parse::<AssemblyMode>().py()
+}
+
+/// A linkage driven by a crank angle whose coupler carries a point: the
+/// four-bar and the slider-crank (the core's `coupler_path` of each).
+pub(crate) trait CouplerPath: Copy + Sync {
+    /// The coupler point `local` (coupler frame) at the crank angles
+    /// `theta2s` in `mode`.
+    fn path<'a>(
+        &'a self,
+        local: Vector2<f64>,
+        theta2s: &'a [f64],
+        mode: AssemblyMode,
+    ) -> impl Iterator<Item = burmester::Result<Point2<f64>>> + 'a;
+}
+
+/// [`CouplerPath`] for core linkage types by their `coupler_path`.
+macro_rules! coupler_path_of {
+    ($($linkage:ty),*) => {$(
+        impl CouplerPath for $linkage {
+            fn path<'a>(
+                &'a self,
+                local: Vector2<f64>,
+                theta2s: &'a [f64],
+                mode: AssemblyMode,
+            ) -> impl Iterator<Item = burmester::Result<Point2<f64>>> + 'a {
+                self.coupler_path(local, theta2s.iter().copied(), mode)
+            }
+        }
+    )*};
+}
+
+coupler_path_of!(FourBar, SliderCrank);
+
+/// `coupler_point(theta2, point, mode)` of a linkage's class.
+pub(crate) fn coupler_point(
+    linkage: &impl CouplerPath,
+    theta2: Real,
+    point: PyPoint,
+    mode: &str,
+) -> PyResult<(f64, f64)> {
+    let (m, angle) = (self::mode(mode)?, [theta2.0]);
+    let mut it = linkage.path(point.0.coords, &angle, m);
+    it.next().expect("one angle in, one point out").map(pt).py()
+}
+
+/// `coupler_path(point, theta2s, mode)` of a linkage's class: `(xs, ys,
+/// ok)` over the crank angles (NaN and False where the loop does not
+/// close); a bad point is an exception, not a path of NaN.
+pub(crate) fn coupler_path<'py>(
+    linkage: &impl CouplerPath,
+    py: Python<'py>,
+    point: PyPoint,
+    theta2s: FloatArray<'py>,
+    mode: &str,
+) -> PyResult<Arrays<'py>> {
+    let m = self::mode(mode)?;
+    let local = point.0.coords;
+    if let Some(Err(e @ burmester::Error::InvalidInput(_))) = linkage.path(local, &[0.0], m).next()
+    {
+        return Err(e).py();
+    }
+    let (flat, shape) = (theta2s.values(), theta2s.shape());
+    fill_arrays(py, shape, |xs, ys, ok| {
+        write_points(linkage.path(local, flat, m), xs, ys, ok);
+    })
 }
 
 /// A planar four-bar linkage.
@@ -187,10 +252,7 @@ impl PyFourBar {
 
     #[pyo3(signature = (theta2, point, mode = "open"))]
     fn coupler_point(&self, theta2: Real, point: PyPoint, mode: &str) -> PyResult<(f64, f64)> {
-        let mode = self::mode(mode)?;
-        let local = point.0.coords;
-        let mut it = self.inner.coupler_path(local, [theta2.0], mode);
-        it.next().expect("one angle in, one point out").map(pt).py()
+        coupler_point(&self.inner, theta2, point, mode)
     }
 
     #[pyo3(signature = (point, theta2s, mode = "open"))]
@@ -201,26 +263,7 @@ impl PyFourBar {
         theta2s: FloatArray<'py>,
         mode: &str,
     ) -> PyResult<Arrays<'py>> {
-        let mode = self::mode(mode)?;
-        let local = point.0.coords;
-        if !(local.x.is_finite() && local.y.is_finite()) {
-            // Report the bad point once, as an exception.
-            self.inner
-                .coupler_path(local, [0.0], mode)
-                .next()
-                .expect("one item")
-                .py()?;
-        }
-        let (flat, shape) = (theta2s.values(), theta2s.shape());
-        let fb = self.inner;
-        fill_arrays(py, shape, |xs, ys, ok| {
-            write_points(
-                fb.coupler_path(local, flat.iter().copied(), mode),
-                xs,
-                ys,
-                ok,
-            );
-        })
+        coupler_path(&self.inner, py, point, theta2s, mode)
     }
 
     /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or

@@ -13,30 +13,35 @@ use crate::classes::PyDesignLimits;
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::IntoPy;
 
-/// Calls `$callback! { ... }` with the map option keywords and the drive's
-/// two, each as `name: type, whether None is accepted (as not given)`, in
-/// order (every one may be left out; the defaults are those of
-/// [`DesignLimits`], [`Constraints`] and the drive's: no swing margin, no
-/// time ratio limit).
+/// Calls `$callback! { $args ... }` (the callback given as the tokens of
+/// its path in brackets, then its own arguments) with the map option
+/// keywords and the drive's two, each as `name: type, whether None is
+/// accepted (as not given), its default as the signatures show it, [taken
+/// by the maps, the drives, the classic drive, an actuator]`, in the order
+/// the signatures list them (every one may be left out; the defaults are
+/// those of [`DesignLimits`], [`Constraints`] and the drive's: no swing
+/// margin, no time ratio limit). The one list of the names: the extractor
+/// ([`Keys`], [`MapOptions`]) and the methods' text signatures
+/// ([`text_signature!`]) are made from it.
 macro_rules! map_option_keywords {
-    ($callback:ident) => {
-        $callback! {
-            limits: PyDesignLimits, true;
-            min_transmission_deg: Real, true;
-            max_link_ratio: Real, true;
-            input: String, true;
-            base_plate: Vec<PyPoint>, true;
-            obstacles: Vec<Vec<PyPoint>>, true;
-            link_width: Real, false;
-            travel_samples: Count, false;
-            swing_margin_deg: Real, false;
-            max_time_ratio: Real, true;
+    ([$($callback:tt)*] $($args:tt)*) => {
+        $($callback)*! { $($args)*
+            limits: PyDesignLimits, true, "None", [true true true true];
+            min_transmission_deg: Real, true, "None", [true true true true];
+            max_link_ratio: Real, true, "None", [true true true true];
+            input: String, true, "None", [true false false false];
+            swing_margin_deg: Real, false, "0.0", [false true true false];
+            max_time_ratio: Real, true, "None", [false true true false];
+            base_plate: Vec<PyPoint>, true, "None", [true true false true];
+            obstacles: Vec<Vec<PyPoint>>, true, "None", [true true false false];
+            link_width: Real, false, "0.0", [true true false false];
+            travel_samples: Count, false, "64", [true true false false];
         }
     };
 }
 
 macro_rules! define_keywords {
-    ($($name:ident: $ty:ty, $none:literal;)*) => {
+    ($($name:ident: $ty:ty, $none:literal, $default:literal, [$m:tt $d:tt $c:tt $a:tt];)*) => {
         /// The keywords as given (`None`: not given, or given as `None`).
         #[derive(Default)]
         struct Given {
@@ -50,8 +55,18 @@ macro_rules! define_keywords {
         }
 
         impl Keys {
-            /// Every keyword.
-            const EVERY: Keys = Keys { $($name: true,)* };
+            /// The map option keywords (the solution maps, the pair map, the
+            /// atlas): every one but the drive's.
+            pub(crate) const MAP: Keys = Keys { $($name: $m,)* };
+            /// The drives' keywords: every one but `input` (a drive's input
+            /// is the motor's crank).
+            pub(crate) const DRIVE: Keys = Keys { $($name: $d,)* };
+            /// The classic drive's: the limits but `input`, and the drive's,
+            /// no constraints.
+            pub(crate) const CLASSIC: Keys = Keys { $($name: $c,)* };
+            /// An actuator's: the limits but `input` (the actuator drives),
+            /// and the base plate (its ground pivot's only constraint).
+            pub(crate) const ACTUATOR: Keys = Keys { $($name: $a,)* };
 
             fn accepts(&self, name: &str) -> bool {
                 match name {
@@ -76,43 +91,54 @@ macro_rules! define_keywords {
     };
 }
 
-map_option_keywords!(define_keywords);
+map_option_keywords!([define_keywords]);
 
-impl Keys {
-    /// The map option keywords (the solution maps, the pair map, the
-    /// atlas): every one but the drive's.
-    pub(crate) const MAP: Keys = Keys {
-        swing_margin_deg: false,
-        max_time_ratio: false,
-        ..Keys::EVERY
+/// The option keywords of the set `$keys` (`MAP`, `DRIVE`, `CLASSIC` or
+/// `ACTUATOR`, as [`Keys`]) as a signature lists them: `, name=default`
+/// each, in order (a string literal, for `concat!`).
+macro_rules! keywords_signature {
+    ($keys:ident; $($name:ident: $ty:ty, $none:literal, $default:literal, [$($f:tt)*];)*) => {
+        concat!($($crate::options::keywords_signature!(@one $keys [$($f)*] $name $default)),*)
     };
-    /// The drives' keywords: every one but `input` (a drive's input is the
-    /// motor's crank).
-    pub(crate) const DRIVE: Keys = Keys {
-        input: false,
-        ..Keys::EVERY
+    (@one MAP [true $d:tt $c:tt $a:tt] $name:ident $default:literal) => {
+        concat!(", ", stringify!($name), "=", $default)
     };
-    /// The classic drive's: the limits but `input`, and the drive's, no
-    /// constraints.
-    pub(crate) const CLASSIC: Keys = Keys {
-        base_plate: false,
-        obstacles: false,
-        link_width: false,
-        travel_samples: false,
-        ..Keys::DRIVE
+    (@one DRIVE [$m:tt true $c:tt $a:tt] $name:ident $default:literal) => {
+        concat!(", ", stringify!($name), "=", $default)
     };
-    /// An actuator's: the limits but `input` (the actuator drives), and
-    /// the base plate (its ground pivot's only constraint).
-    pub(crate) const ACTUATOR: Keys = Keys {
-        base_plate: true,
-        obstacles: false,
-        link_width: false,
-        travel_samples: false,
-        swing_margin_deg: false,
-        max_time_ratio: false,
-        ..Keys::CLASSIC
+    (@one CLASSIC [$m:tt $d:tt true $a:tt] $name:ident $default:literal) => {
+        concat!(", ", stringify!($name), "=", $default)
+    };
+    (@one ACTUATOR [$m:tt $d:tt $c:tt true] $name:ident $default:literal) => {
+        concat!(", ", stringify!($name), "=", $default)
+    };
+    (@one $keys:ident [$($f:tt)*] $name:ident $default:literal) => {
+        ""
     };
 }
+
+/// The Python text signature of a method taking the option keywords of
+/// `$keys` (see [`Keys`]) as `**options`, for `#[doc = ...]` above a method
+/// marked `text_signature = None` (pyo3 takes only a literal there):
+/// `$head` (`"name($self, ..."`, up to the keywords), the keywords, then
+/// `$tail` (`", progress=None"`, up to the closing parenthesis), then the
+/// line that ends a signature;
+/// `doc` where doc comments follow (pyo3 joins them with a newline).
+macro_rules! text_signature {
+    ($keys:ident, $head:literal, $tail:literal) => {
+        concat!($crate::options::text_signature!($keys, $head, $tail, doc), "\n")
+    };
+    ($keys:ident, $head:literal, $tail:literal, doc) => {
+        concat!(
+            $head,
+            $crate::options::map_option_keywords!([$crate::options::keywords_signature] $keys;),
+            $tail,
+            ")\n--\n"
+        )
+    };
+}
+
+pub(crate) use {keywords_signature, map_option_keywords, text_signature};
 
 /// `value` as a `T` (`None` as no value where `none` says it may be), a
 /// `TypeError` naming the keyword as Python's own arguments do.

@@ -11,7 +11,7 @@ use crate::conv::{Count, PyPoint, Real};
 use crate::curves::PyCurveDyad;
 use crate::design::{py_map_class, ranked_getters};
 use crate::errors::IntoPy;
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
+use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::pickle::{Reduced, reduce_to};
 use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
 
@@ -266,11 +266,15 @@ impl PyPairMap {
 /// The pair map of `Task` (four poses).
 #[pymethods]
 impl PyTask {
+    #[doc = text_signature!(
+        MAP,
+        "pair_map($self, n_driving=256, n_driven=None, *",
+        ", progress=None",
+        doc
+    )]
     /// Four poses: the pair map (see the stub).
     #[pyo3(signature = (n_driving = Count(256), n_driven = None, *, progress = None, **options),
-        text_signature = "($self, n_driving=256, n_driven=None, *, limits=None, \
-        min_transmission_deg=None, max_link_ratio=None, input=None, base_plate=None, \
-        obstacles=None, link_width=0.0, travel_samples=64, progress=None)")]
+        text_signature = None)]
     fn pair_map(
         &self,
         py: Python<'_>,

@@ -12,11 +12,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::PyTask;
-use crate::conv::{
-    Arrays, Count, FloatArray, PyPoint, Real, fill_arrays, pt, to_numpy, write_points,
-};
+use crate::conv::{Arrays, Count, FloatArray, PyPoint, Real, pt, to_numpy};
 use crate::errors::IntoPy;
-use crate::linkage::mode;
+use crate::linkage::{self, mode};
 
 type Xy = (f64, f64);
 
@@ -148,9 +146,7 @@ impl PySliderCrank {
 
     #[pyo3(signature = (theta2, point, mode = "open"))]
     fn coupler_point(&self, theta2: Real, point: PyPoint, mode: &str) -> PyResult<Xy> {
-        let m = self::mode(mode)?;
-        let mut it = self.inner.coupler_path(point.0.coords, [theta2.0], m);
-        it.next().expect("one angle in, one point out").map(pt).py()
+        linkage::coupler_point(&self.inner, theta2, point, mode)
     }
 
     /// `(xs, ys, ok)` over the crank angles (NaN and False where the loop
@@ -163,18 +159,7 @@ impl PySliderCrank {
         theta2s: FloatArray<'py>,
         mode: &str,
     ) -> PyResult<Arrays<'py>> {
-        let m = self::mode(mode)?;
-        let local = point.0.coords;
-        // A bad point is an exception, not a path of NaN.
-        let first = self.inner.coupler_path(local, [0.0], m).next();
-        if let Some(Err(e @ burmester::Error::InvalidInput(_))) = first {
-            return Err(e).py();
-        }
-        let (flat, shape) = (theta2s.values(), theta2s.shape());
-        let sc = self.inner;
-        fill_arrays(py, shape, |xs, ys, ok| {
-            write_points(sc.coupler_path(local, flat.iter().copied(), m), xs, ys, ok);
-        })
+        linkage::coupler_path(&self.inner, py, point, theta2s, mode)
     }
 
     /// `((theta2, slider), (theta2, slider))`: the lowest and the highest

@@ -7,16 +7,15 @@ use burmester::SliderDyad;
 use burmester::synthesis::FilemonArcs;
 use burmester::synthesis::three::Filemon;
 use numpy::PyArray2;
-use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
 use crate::classes::PyTask;
-use crate::conv::{Count, PyPoint, Real, pt};
+use crate::conv::{PyPoint, Real, pt};
 use crate::curves;
 use crate::errors::IntoPy;
-use crate::geom::{PyConic, grid_arg, vec2};
-use crate::synthesis::line_tuple;
+use crate::geom::{grid_alone, vec2};
+use crate::synthesis::filemon_methods;
 
 type Xy = (f64, f64);
 
@@ -48,13 +47,6 @@ impl PySliderFilemon {
     }
 
     #[getter]
-    fn task(&self) -> PyTask {
-        PyTask {
-            inner: *self.inner.task(),
-        }
-    }
-
-    #[getter]
     fn circle(&self) -> Xy {
         pt(self.slider.circle)
     }
@@ -79,76 +71,8 @@ impl PySliderFilemon {
             .collect()
     }
 
-    #[getter]
-    fn all_defective(&self) -> bool {
-        self.inner.all_defective()
-    }
-
-    #[getter]
-    fn lines(&self) -> Vec<(Xy, Xy)> {
-        self.inner
-            .lines()
-            .iter()
-            .flatten()
-            .map(line_tuple)
-            .collect()
-    }
-
-    #[getter]
-    fn all_lines(&self) -> Vec<(Xy, Xy)> {
-        self.inner.all_lines().iter().map(line_tuple).collect()
-    }
-
-    #[getter]
-    fn sectors(&self) -> Vec<(f64, f64, bool)> {
-        self.inner.construction().sectors()
-    }
-
-    #[getter]
-    fn conics(&self) -> Vec<PyConic> {
-        let two = self.inner.conics();
-        two.iter()
-            .flatten()
-            .map(|&inner| PyConic { inner })
-            .collect()
-    }
-
-    #[getter]
-    fn extreme_poses(&self) -> Option<(usize, usize)> {
-        self.inner
-            .extreme_poses()
-            .map(|(ends, _)| (ends[0], ends[1]))
-    }
-
-    #[getter]
-    fn middle_pose(&self) -> Option<usize> {
-        Some(self.inner.extreme_poses()?.1)
-    }
-
-    fn line_conic(&self, pose: Count) -> PyResult<PyConic> {
-        Ok(PyConic {
-            inner: self.inner.line_conic(pose.0).py()?,
-        })
-    }
-
-    #[pyo3(signature = (center, method = "conic"))]
-    fn classify(&self, center: PyPoint, method: &str) -> PyResult<&'static str> {
-        let m = method.parse::<burmester::Method>().py()?;
-        Ok(self.inner.classify(center.0, m).py()?.as_str())
-    }
-
-    fn classify_circle_point(&self, circle: PyPoint) -> PyResult<&'static str> {
-        let b = self.inner.classify_circle_point(circle.0).py()?;
-        Ok(b.as_str())
-    }
-
     fn circle_signs(&self, circle: PyPoint) -> PyResult<Vec<f64>> {
         Ok(self.inner.circle_signs(circle.0).py()?.to_vec())
-    }
-
-    fn conic_values(&self, center: PyPoint) -> PyResult<Option<Xy>> {
-        let v = self.inner.conic_values(center.0).py()?;
-        Ok(v.map(|[a, b]| (a, b)))
     }
 
     #[pyo3(signature = (*grid, method = "conic", out = None, progress = None))]
@@ -160,13 +84,10 @@ impl PySliderFilemon {
         out: Option<Bound<'py, PyAny>>,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let (g, used) = grid_arg(grid)?;
-        if used != grid.len() {
-            return Err(PyTypeError::new_err(
-                "SliderFilemon.branch_map takes a grid (or its six numbers); pass the method \
-                 by name",
-            ));
-        }
+        let g = grid_alone(
+            grid,
+            "SliderFilemon.branch_map takes a grid (or its six numbers); pass the method by name",
+        )?;
         crate::sweep::branch_map(self.inner, py, g, method, out, progress.as_ref())
     }
 
@@ -186,6 +107,8 @@ impl PySliderFilemon {
         )
     }
 }
+
+filemon_methods!(PySliderFilemon);
 
 /// The four-pose construction of a slider driven dyad of `task`.
 fn four_arcs(
@@ -220,12 +143,7 @@ pub(crate) fn slider_branch_free_arcs<'py>(
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let arcs = four_arcs(&task, circle, guide, "slider_branch_free_arcs")?;
     let vp = curves::viewport(xmin, xmax, ymin, ymax)?;
-    let lines = if curves::circle_plane(plane)? {
-        py.detach(|| arcs.free_circle_arcs(&vp))
-    } else {
-        py.detach(|| arcs.free_center_arcs(&vp))
-    };
-    lines.iter().map(|l| curves::polyline(py, l)).collect()
+    curves::free_arcs(py, &arcs, &vp, curves::circle_plane(plane)?)
 }
 
 /// Four poses: the branch class of a driving center point on the curve for

@@ -14,7 +14,7 @@ use crate::conv::{
 };
 use crate::curves::{self, PyCoincidencePoint, PyCubic, PyCurveDyad};
 use crate::errors::IntoPy;
-use crate::geom::{PyConic, grid_arg, vec2};
+use crate::geom::{PyConic, grid_alone, grid_arg, vec2};
 use crate::getters::getters;
 use crate::linkage::{PyFourBar, PyLinkageFigures};
 
@@ -409,14 +409,7 @@ impl PyTask {
         let circle = curves::circle_plane(plane)?;
         let driven = four.dyad_from_center(driven_center.0).py()?;
         let arcs = four.filemon(&driven).py()?;
-        let lines = py.detach(|| {
-            if circle {
-                arcs.free_circle_arcs(&vp)
-            } else {
-                arcs.free_center_arcs(&vp)
-            }
-        });
-        lines.iter().map(|l| curves::polyline(py, l)).collect()
+        curves::free_arcs(py, &arcs, &vp, circle)
     }
 
     /// Four poses: the branch class (`"free"`, `"defective"`, `"boundary"`)
@@ -541,13 +534,6 @@ impl PyFilemon {
     }
 
     #[getter]
-    fn task(&self) -> PyTask {
-        PyTask {
-            inner: *self.inner.task(),
-        }
-    }
-
-    #[getter]
     fn driven_center(&self) -> PyResult<Xy> {
         // A Filemon is made from a driven center point (Task.filemon): a
         // crank; a slider's construction is a SliderFilemon.
@@ -565,49 +551,6 @@ impl PyFilemon {
         Some((pt(a), pt(b), pt(c)))
     }
 
-    #[getter]
-    fn lines(&self) -> Vec<(Xy, Xy)> {
-        self.inner
-            .lines()
-            .map(|ls| ls.iter().map(line_tuple).collect())
-            .unwrap_or_default()
-    }
-
-    #[getter]
-    fn all_lines(&self) -> Vec<(Xy, Xy)> {
-        self.inner.all_lines().iter().map(line_tuple).collect()
-    }
-
-    #[getter]
-    fn sectors(&self) -> Vec<(f64, f64, bool)> {
-        self.inner.construction().sectors()
-    }
-
-    #[getter]
-    fn conics(&self) -> Vec<PyConic> {
-        self.inner
-            .conics()
-            .map(|cs| cs.iter().map(|&inner| PyConic { inner }).collect())
-            .unwrap_or_default()
-    }
-
-    #[getter]
-    fn extreme_poses(&self) -> Option<(usize, usize)> {
-        self.inner.extreme_poses().map(|([a, b], _)| (a, b))
-    }
-
-    #[getter]
-    fn middle_pose(&self) -> Option<usize> {
-        self.inner.extreme_poses().map(|(_, m)| m)
-    }
-
-    fn line_conic(&self, pose: Count) -> PyResult<PyConic> {
-        self.inner
-            .line_conic(pose.0)
-            .map(|inner| PyConic { inner })
-            .py()
-    }
-
     #[pyo3(signature = (center, method = "conic"))]
     fn is_branch_free(&self, center: PyPoint, method: &str) -> PyResult<bool> {
         self.inner
@@ -615,26 +558,9 @@ impl PyFilemon {
             .py()
     }
 
-    #[pyo3(signature = (center, method = "conic"))]
-    fn classify(&self, center: PyPoint, method: &str) -> PyResult<&'static str> {
-        Ok(self
-            .inner
-            .classify(center.0, self::method(method)?)
-            .py()?
-            .as_str())
-    }
-
-    fn classify_circle_point(&self, circle: PyPoint) -> PyResult<&'static str> {
-        Ok(self.inner.classify_circle_point(circle.0).py()?.as_str())
-    }
-
     fn circle_signs(&self, circle: PyPoint) -> PyResult<(f64, f64, f64)> {
         let [a, b, c] = self.inner.circle_signs(circle.0).py()?;
         Ok((a, b, c))
-    }
-
-    fn conic_values(&self, center: PyPoint) -> PyResult<Option<(f64, f64)>> {
-        Ok(self.inner.conic_values(center.0).py()?.map(|[a, b]| (a, b)))
     }
 
     #[pyo3(signature = (*grid, method = None, out = None, progress = None),
@@ -669,12 +595,7 @@ impl PyFilemon {
         out: Option<Bound<'py, PyAny>>,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let (g, used) = grid_arg(grid)?;
-        if used != grid.len() {
-            return Err(PyTypeError::new_err(
-                "margin_map takes a grid (or its six numbers)",
-            ));
-        }
+        let g = grid_alone(grid, "margin_map takes a grid (or its six numbers)")?;
         crate::sweep::margin_map(self.inner, py, g, out, progress.as_ref())
     }
 
@@ -712,8 +633,96 @@ impl PyFilemon {
 
 getters!(PyFilemon, inner {
     fn Xy = pt: driven_circle;
-    fn bool: all_defective;
 });
+
+/// The methods of the three-pose construction (the core's `Filemon`, in
+/// the field `inner`) that do not depend on the driven dyad's kind, for
+/// `$class`: `Filemon` (a crank) and `SliderFilemon` (a slider) both.
+macro_rules! filemon_methods {
+    ($class:ty) => {
+        #[pymethods]
+        impl $class {
+            #[getter]
+            fn task(&self) -> $crate::classes::PyTask {
+                $crate::classes::PyTask {
+                    inner: *self.inner.task(),
+                }
+            }
+
+            #[getter]
+            fn all_defective(&self) -> bool {
+                self.inner.all_defective()
+            }
+
+            #[getter]
+            fn lines(&self) -> Vec<((f64, f64), (f64, f64))> {
+                let lines = self.inner.lines();
+                let lines = lines.iter().flatten();
+                lines.map($crate::synthesis::line_tuple).collect()
+            }
+
+            #[getter]
+            fn all_lines(&self) -> Vec<((f64, f64), (f64, f64))> {
+                let lines = self.inner.all_lines();
+                lines.iter().map($crate::synthesis::line_tuple).collect()
+            }
+
+            #[getter]
+            fn sectors(&self) -> Vec<(f64, f64, bool)> {
+                self.inner.construction().sectors()
+            }
+
+            #[getter]
+            fn conics(&self) -> Vec<$crate::geom::PyConic> {
+                let conics = self.inner.conics();
+                let conics = conics.iter().flatten();
+                conics
+                    .map(|&inner| $crate::geom::PyConic { inner })
+                    .collect()
+            }
+
+            #[getter]
+            fn extreme_poses(&self) -> Option<(usize, usize)> {
+                self.inner.extreme_poses().map(|([a, b], _)| (a, b))
+            }
+
+            #[getter]
+            fn middle_pose(&self) -> Option<usize> {
+                self.inner.extreme_poses().map(|(_, m)| m)
+            }
+
+            fn line_conic(&self, pose: $crate::conv::Count) -> PyResult<$crate::geom::PyConic> {
+                let inner = self.inner.line_conic(pose.0).py()?;
+                Ok($crate::geom::PyConic { inner })
+            }
+
+            #[pyo3(signature = (center, method = "conic"))]
+            fn classify(
+                &self,
+                center: $crate::conv::PyPoint,
+                method: &str,
+            ) -> PyResult<&'static str> {
+                let method = method.parse::<burmester::Method>().py()?;
+                Ok(self.inner.classify(center.0, method).py()?.as_str())
+            }
+
+            fn classify_circle_point(
+                &self,
+                circle: $crate::conv::PyPoint,
+            ) -> PyResult<&'static str> {
+                Ok(self.inner.classify_circle_point(circle.0).py()?.as_str())
+            }
+
+            fn conic_values(&self, center: $crate::conv::PyPoint) -> PyResult<Option<(f64, f64)>> {
+                Ok(self.inner.conic_values(center.0).py()?.map(|[a, b]| (a, b)))
+            }
+        }
+    };
+}
+
+pub(crate) use filemon_methods;
+
+filemon_methods!(PyFilemon);
 
 fn method(s: &str) -> PyResult<burmester::Method> {
     s.parse::<burmester::Method>().py()

@@ -13,7 +13,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
-from matplotlib.backend_bases import KeyEvent, MouseEvent
+from matplotlib.backend_bases import KeyEvent, MouseButton, MouseEvent
 from matplotlib.figure import Figure
 from matplotlib.image import AxesImage
 from matplotlib.lines import Line2D
@@ -434,6 +434,20 @@ class Explorer:
         for cid in self._cids:
             self.figure.canvas.mpl_disconnect(cid)
         self._cids = []
+
+    def drag(self, start: Point, end: Point, steps: int = 4) -> None:
+        """Drag from ``start`` to ``end`` (task coordinates) with the mouse
+        events a user's left-button drag sends: a press at ``start``,
+        ``steps`` motions along the straight line to ``end``, a release
+        there. For scripted pictures (the README's and the gallery's) and
+        tests: the events go through the figure's canvas as a user's do."""
+        canvas = self.figure.canvas
+        (x0, y0), (x1, y1) = point(start, "start"), point(end, "end")
+        path = [(x0 + (x1 - x0) * k / steps, y0 + (y1 - y0) * k / steps) for k in range(1, steps + 1)]
+        names = ["button_press_event"] + ["motion_notify_event"] * steps
+        for name, xy in list(zip(names, [(x0, y0)] + path)) + [("button_release_event", (x1, y1))]:
+            px, py = self.ax_map.transData.transform(xy)
+            canvas.callbacks.process(name, MouseEvent(name, canvas, px, py, button=MouseButton.LEFT))
 
     def _toolbar_busy(self) -> bool:
         toolbar = getattr(self.figure.canvas, "toolbar", None)
