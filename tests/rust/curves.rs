@@ -2187,6 +2187,23 @@ fn frames() -> Vec<Similarity> {
     ]
 }
 
+/// Exactly two finite Burmester points and no slider, one within `1e-8`
+/// (task sizes plus distance) of each of `want` (given in the task's frame)
+/// moved by `t`.
+fn two_points_at(five: &FivePositions, t: &Similarity, want: &[Point2<f64>]) {
+    let pts = five.burmester_points();
+    assert_eq!(pts.len(), 2, "{pts:?} in {t:?}");
+    assert!(five.sliders().is_empty(), "{five:?}");
+    for w in want {
+        let w = t.point(*w);
+        assert!(
+            pts.iter()
+                .any(|d| (d.center - w).norm() <= 1e-8 * (five.size() + w.coords.norm())),
+            "{w} not in {pts:?} in {t:?}"
+        );
+    }
+}
+
 /// The count with multiplicity: finite points and sliders.
 fn total(five: &FivePositions) -> usize {
     five.burmester_points().len() + five.sliders().len()
@@ -2202,17 +2219,7 @@ fn issue24_nearly_merging_burmester_points_count_two_or_four() {
         // A complex pair 2.3e-6 off the real plane: two points, in every frame.
         let five =
             FivePositions::new(&moved(&issue24_merging_poses(1.4085852732973474), &t)).unwrap();
-        let pts = five.burmester_points();
-        assert_eq!(pts.len(), 2, "{pts:?} in {t:?}");
-        assert!(five.sliders().is_empty());
-        for w in want {
-            let w = t.point(w);
-            assert!(
-                pts.iter()
-                    .any(|d| (d.center - w).norm() <= 1e-8 * (five.size() + w.coords.norm())),
-                "{w} not in {pts:?}"
-            );
-        }
+        two_points_at(&five, &t, &want);
         // A hair away (pose 5 moved by 1.76e-10): the pair is real, 1.1e-8 to
         // 6.4e-8 apart: four points, the near two within 1e-7 of where they
         // merge (each listed, or one double point listed twice).
@@ -3328,19 +3335,10 @@ fn issue24_a_double_root_that_is_two_real_points_gives_both() {
     for t in frames().into_iter().filter(|t| !far(t)) {
         let five =
             FivePositions::new(&moved(&poses, &t)).unwrap_or_else(|e| panic!("{e:?} in {t:?}"));
+        // Two roots 6.3e-5 apart are known to about eps over their
+        // separation: 1e-8 of the task's size and position.
+        two_points_at(&five, &t, &reference);
         let pts = five.burmester_points();
-        assert_eq!(pts.len(), 2, "{pts:?} in {t:?}");
-        assert!(five.sliders().is_empty(), "{five:?}");
-        for r in reference {
-            let w = t.point(r);
-            // Two roots 6.3e-5 apart are known to about eps over their
-            // separation: 1e-8 of the task's size and position.
-            assert!(
-                pts.iter()
-                    .any(|d| (d.center - w).norm() <= 1e-8 * (five.size() + w.coords.norm())),
-                "{w} not in {pts:?} in {t:?}"
-            );
-        }
         assert!(pts.iter().all(|d| five.residual(d) <= 1e-10), "{pts:?}");
     }
 }

@@ -1675,14 +1675,8 @@ mod tests {
     /// link).
     #[test]
     fn drive_lanes_are_the_scalar_path_on_every_width() {
-        let task = crate::example::task();
-        let f = task.filemon(crate::example::driven_center()).unwrap();
-        let grid = Grid::new(crate::example::viewport(), 60, 60).unwrap();
         let none = Constraints::default();
-        let map = f
-            .solution_map(&grid, &DesignLimits::default(), &none, &Control::new())
-            .unwrap();
-        let linkage = map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage;
+        let linkage = example_linkage(60, &DesignLimits::default());
         let a0 = linkage.driving.center;
         let g =
             Grid::from_bounds(a0.x - 40.0, a0.x + 40.0, a0.y - 40.0, a0.y + 40.0, 37, 29).unwrap();
@@ -1719,6 +1713,18 @@ mod tests {
         }
     }
 
+    /// The best-transmission linkage of the example's solution map on an
+    /// `n` x `n` grid under `limits`.
+    fn example_linkage(n: usize, limits: &DesignLimits) -> SynthesizedFourBar {
+        let task = crate::example::task();
+        let f = task.filemon(crate::example::driven_center()).unwrap();
+        let grid = Grid::new(crate::example::viewport(), n, n).unwrap();
+        let map = f
+            .solution_map(&grid, limits, &Constraints::default(), &Control::new())
+            .unwrap();
+        map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage
+    }
+
     /// A drive map with an obstacle polls its cancel flag inside a sample's
     /// clearance test, not only between samples: one sample's test over the
     /// turn took up to 40 ms (refined by halves where a link grazes the
@@ -1730,17 +1736,11 @@ mod tests {
     #[test]
     fn a_clearance_test_over_the_turn_stops_when_cancelled() {
         use core::sync::atomic::AtomicBool;
-        let task = crate::example::task();
-        let f = task.filemon(crate::example::driven_center()).unwrap();
-        let grid = Grid::new(crate::example::viewport(), 100, 100).unwrap();
         let limits = DesignLimits {
             min_transmission: 30f64.to_radians(),
             ..DesignLimits::default()
         };
-        let map = f
-            .solution_map(&grid, &limits, &Constraints::default(), &Control::new())
-            .unwrap();
-        let linkage = map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage;
+        let linkage = example_linkage(100, &limits);
         let a0 = linkage.driving.center;
         let wall = [(0.5, -9.0), (0.8, -9.0), (0.8, 9.0), (0.5, 9.0)]
             .map(|(x, y)| Point2::new(a0.x + x, a0.y + y))

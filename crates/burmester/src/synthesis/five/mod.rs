@@ -67,7 +67,9 @@ pub struct BurmesterFourBar {
 /// are found between its critical points, and a critical point where `R`
 /// is zero within the band is a **double root**: two Burmester points that
 /// merge, or a pair of complex ones, within rounding. It gives a double
-/// point, listed twice, so that the count with multiplicity (finite points
+/// point, listed twice (unless Newton's method, from the root and from its
+/// reflection, converges to two distinct real points on either side of it:
+/// two points closer than the band resolves, each listed once), so that the count with multiplicity (finite points
 /// and [`sliders`](FivePositions::sliders)) is 0, 2 or 4 in every frame.
 /// The curves share a point at infinity (a slider) when their asymptotic
 /// directions agree within the rounding of the computation and of the poses
@@ -843,8 +845,8 @@ const ASYMPTOTE_MATCH: f64 = 1e-6;
 /// Burmester point) or its circle point is at infinity.
 ///
 /// A double root (`mult` 2) may be two real points apart, closer than the
-/// resultant's rounding band resolves (two points `3e-5` task sizes apart
-/// were one double root whose estimate missed both by `1.5e-5`, beyond
+/// resultant's rounding band resolves (two points `6.3e-5` apart in a task
+/// of size 3 were one double root whose estimate lay between them, beyond
 /// what the check allows: the task was refused as unresolved): Newton's
 /// method, converged from the estimate to a point beyond a double point's
 /// reach and from the estimate reflected through it to a distinct point on
