@@ -78,6 +78,8 @@
 
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
+use core::sync::atomic::{AtomicBool, Ordering};
+
 use nalgebra::{Point2, Vector2};
 use pulp::{Arch, Simd, WithSimd};
 
@@ -797,7 +799,11 @@ impl DriveContext {
     /// (the columns then hold a partial map).
     pub fn map_into(&self, out: DriveColumnsOut<'_>, control: &Control<'_>) -> Result<()> {
         out.check_len(self.grid.len())?;
-        let judge = self.judge()?;
+        let mut judge = self.judge()?;
+        // A sample's clearance over the turn can take tens of milliseconds
+        // (refined by halves where a link grazes an obstacle): it polls the
+        // cancel flag between its intervals too.
+        judge.cancel = control.cancel_flag();
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let grid = &self.grid;
         let rows = RowsOfDrive { out, nx };
@@ -852,6 +858,7 @@ impl DriveContext {
         Ok(DriveJudge {
             context: self,
             prepared: self.constraints.prepare()?,
+            cancel: None,
         })
     }
 
@@ -1019,6 +1026,9 @@ impl DriveMap {
 struct DriveJudge<'a> {
     context: &'a DriveContext,
     prepared: Prepared,
+    /// The map's cancel flag: a clearance test stops (not clear) once it is
+    /// set, and the map is then [`Error::Cancelled`](crate::Error::Cancelled).
+    cancel: Option<&'a AtomicBool>,
 }
 
 impl DriveJudge<'_> {
@@ -1221,7 +1231,15 @@ impl DriveJudge<'_> {
         let rate = fmax(fmax(r, r / sd), fmax(l.input * turn, l.input * turn / sm));
         let n = self.prepared.samples();
         let step = TAU / n as f64;
-        (0..n).all(|k| self.interval_clear(six, step * (k as f64 + 0.5), 0.5 * step, rate))
+        (0..n).all(|k| {
+            self.going() && self.interval_clear(six, step * (k as f64 + 0.5), 0.5 * step, rate)
+        })
+    }
+
+    /// Whether the map goes on (its cancel flag, if any, is clear).
+    #[inline]
+    fn going(&self) -> bool {
+        self.cancel.is_none_or(|c| !c.load(Ordering::Relaxed))
     }
 
     fn interval_clear(&self, six: &SixBar, mid: f64, half: f64, rate: f64) -> bool {
@@ -1230,7 +1248,10 @@ impl DriveJudge<'_> {
             None => return false,
             Some(false) => {}
         }
-        if self.clear_at(six, mid, 0.0) != Some(true) || half < Constraints::MIN_STEP {
+        if self.clear_at(six, mid, 0.0) != Some(true)
+            || half < Constraints::MIN_STEP
+            || !self.going()
+        {
             return false;
         }
         let q = 0.5 * half;
@@ -1654,14 +1675,8 @@ mod tests {
     /// link).
     #[test]
     fn drive_lanes_are_the_scalar_path_on_every_width() {
-        let task = crate::example::task();
-        let f = task.filemon(crate::example::driven_center()).unwrap();
-        let grid = Grid::new(crate::example::viewport(), 60, 60).unwrap();
         let none = Constraints::default();
-        let map = f
-            .solution_map(&grid, &DesignLimits::default(), &none, &Control::new())
-            .unwrap();
-        let linkage = map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage;
+        let linkage = example_linkage(60, &DesignLimits::default());
         let a0 = linkage.driving.center;
         let g =
             Grid::from_bounds(a0.x - 40.0, a0.x + 40.0, a0.y - 40.0, a0.y + 40.0, 37, 29).unwrap();
@@ -1696,6 +1711,84 @@ mod tests {
             let counts = lanes_against_scalar(&context(&limits), &g);
             assert!(counts[0] > 0 && counts[1] > 0, "{counts:?} {limits:?}");
         }
+    }
+
+    /// The best-transmission linkage of the example's solution map on an
+    /// `n` x `n` grid under `limits`.
+    fn example_linkage(n: usize, limits: &DesignLimits) -> SynthesizedFourBar {
+        let task = crate::example::task();
+        let f = task.filemon(crate::example::driven_center()).unwrap();
+        let grid = Grid::new(crate::example::viewport(), n, n).unwrap();
+        let map = f
+            .solution_map(&grid, limits, &Constraints::default(), &Control::new())
+            .unwrap();
+        map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage
+    }
+
+    /// A drive map with an obstacle polls its cancel flag inside a sample's
+    /// clearance test, not only between samples: one sample's test over the
+    /// turn took up to 40 ms (refined by halves where a link grazes the
+    /// obstacle; measured from Python on the map of
+    /// `test_drive.py::test_ctrl_c_stops_a_drive_map`, whose Ctrl-C latency
+    /// that made 0.56 s under load), and the map waited for it. With the
+    /// flag set, every sample that was clear is no longer taken as clear
+    /// (the test stopped at once), and the map is `Cancelled`.
+    #[test]
+    fn a_clearance_test_over_the_turn_stops_when_cancelled() {
+        use core::sync::atomic::AtomicBool;
+        let limits = DesignLimits {
+            min_transmission: 30f64.to_radians(),
+            ..DesignLimits::default()
+        };
+        let linkage = example_linkage(100, &limits);
+        let a0 = linkage.driving.center;
+        let wall = [(0.5, -9.0), (0.8, -9.0), (0.8, 9.0), (0.5, 9.0)]
+            .map(|(x, y)| Point2::new(a0.x + x, a0.y + y))
+            .to_vec();
+        let constraints = Constraints {
+            obstacles: vec![wall],
+            link_width: 0.05,
+            travel_samples: 128,
+            ..Constraints::default()
+        };
+        let free = DesignLimits {
+            min_transmission: 0.0,
+            max_link_ratio: f64::INFINITY,
+            ..DesignLimits::default()
+        };
+        let g = Grid::from_bounds(a0.x - 9.0, a0.x + 9.0, a0.y - 9.0, a0.y + 9.0, 12, 12).unwrap();
+        let ctx = DriveContext::new(
+            &linkage,
+            linkage.driving.circle,
+            &g,
+            &free,
+            &DriveOptions::default(),
+            &constraints,
+        )
+        .unwrap();
+        let stop = AtomicBool::new(true);
+        let mut stopped = ctx.judge().unwrap();
+        stopped.cancel = Some(&stop);
+        let judge = ctx.judge().unwrap();
+        let mut clear = 0;
+        for k in 0..g.len() {
+            let d0 = ctx.point(k);
+            let e = ctx.swing.eval(d0);
+            if !(e.valid && judge.meets(&e)) {
+                continue;
+            }
+            let six = ctx.sixbar(d0, &e).unwrap();
+            if judge.clear_over_turn(&six, &e) {
+                clear += 1;
+                assert!(!stopped.clear_over_turn(&six, &e), "{d0}");
+            }
+        }
+        assert!(clear > 0, "no sample clears the wall");
+        let cancelled = Control::new().with_cancel(&stop);
+        assert!(matches!(
+            ctx.map(&cancelled),
+            Err(crate::Error::Cancelled { .. })
+        ));
     }
 
     /// Checks every row of `ctx`'s grid on every lane width against the

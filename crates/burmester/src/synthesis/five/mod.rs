@@ -67,7 +67,9 @@ pub struct BurmesterFourBar {
 /// are found between its critical points, and a critical point where `R`
 /// is zero within the band is a **double root**: two Burmester points that
 /// merge, or a pair of complex ones, within rounding. It gives a double
-/// point, listed twice, so that the count with multiplicity (finite points
+/// point, listed twice (unless Newton's method, from the root and from its
+/// reflection, converges to two distinct real points on either side of it:
+/// two points closer than the band resolves, each listed once), so that the count with multiplicity (finite points
 /// and [`sliders`](FivePositions::sliders)) is 0, 2 or 4 in every frame.
 /// The curves share a point at infinity (a slider) when their asymptotic
 /// directions agree within the rounding of the computation and of the poses
@@ -657,8 +659,9 @@ impl Elimination {
         for (g0, mult) in finite {
             let g0 = motion.local_of(sub.global_of(g0));
             match polish(motion, g0, mult)? {
-                Some(dyad) => points.extend(core::iter::repeat_n(dyad, mult)),
-                None => lost += mult,
+                Polished::One(dyad) => points.extend(core::iter::repeat_n(dyad, mult)),
+                Polished::Pair(a, b) => points.extend([a, b]),
+                Polished::None => lost += mult,
             }
         }
         let mut sliders = Vec::new();
@@ -841,11 +844,21 @@ const ASYMPTOTE_MATCH: f64 = 1e-6;
 /// its crank length varies by more than [`tolerance::BURMESTER_RESIDUAL`] (not a
 /// Burmester point) or its circle point is at infinity.
 ///
+/// A double root (`mult` 2) may be two real points apart, closer than the
+/// resultant's rounding band resolves (two points `6.3e-5` apart in a task
+/// of size 3 were one double root whose estimate lay between them, beyond
+/// what the check allows: the task was refused as unresolved): Newton's
+/// method, converged from the estimate to a point beyond a double point's
+/// reach and from the estimate reflected through it to a distinct point on
+/// the other side, both within a single point's reach and both checked,
+/// gives the two points (`Polished::Pair`). Otherwise the double point is
+/// listed twice as before.
+///
 /// # Errors
 ///
 /// [`crate::DegenerateError::InfinitelyManyBurmesterPoints`] when the four
 /// equations leave a whole line of circle points at the center.
-fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>> {
+fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
     let z0 = match m.form.solve(g0, &[1, 2, 3, 4]) {
         Ok(z) => z,
         Err(Failure::Undefined) => {
@@ -854,24 +867,91 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>
                  it are one)",
             ));
         }
-        Err(Failure::AtInfinity(_)) => return Ok(None),
+        Err(Failure::AtInfinity(_)) => return Ok(Polished::None),
     };
+    let scale = 1.0 + g0.norm();
+    let first = newton(m, g0);
+    if mult == 2 {
+        if let Some(pair) = split(m, g0, first, scale) {
+            return Ok(pair);
+        }
+    }
     let start = Dyad::new(m.global_of(g0), m.global_of(z0));
     let mut best = (residual(m, &start), start);
-    if let Some((g, z)) = newton(m, g0) {
+    if let Some((g, z, _)) = first {
         let d = Dyad::new(m.global_of(g), m.global_of(z));
-        let reach = if mult > 1 { 1e-6 } else { 1e-3 } * (1.0 + g0.norm());
+        let reach = if mult > 1 { DOUBLE_REACH } else { SINGLE_REACH } * scale;
         let r = residual(m, &d);
         if (g - g0).norm() <= reach && r <= best.0 {
             best = (r, d);
         }
     }
+    let (r, d) = best;
+    Ok(if accepted(m, &d, r) {
+        Polished::One(d)
+    } else {
+        Polished::None
+    })
+}
+
+/// What [`polish`] makes of a root of the elimination.
+enum Polished {
+    /// No Burmester point (not concyclic, or the circle point at infinity).
+    None,
+    /// One point (listed with the root's multiplicity).
+    One(Dyad),
+    /// A double root that is two distinct real points, each listed once.
+    Pair(Dyad, Dyad),
+}
+
+/// How far (times `1 + |G|`, local) Newton's method may move a simple root's
+/// center, and a double root's (as well placed as its rounding allows).
+const SINGLE_REACH: f64 = 1e-3;
+/// See [`SINGLE_REACH`].
+const DOUBLE_REACH: f64 = 1e-6;
+
+/// A double root at `g0` split into two real points (see [`polish`]):
+/// Newton's method from `g0` (`first`) and from `g0` reflected through it
+/// converged, on opposite sides of `g0`, to distinct points each beyond
+/// [`DOUBLE_REACH`] and within [`SINGLE_REACH`], both concyclic.
+fn split(
+    m: &LocalMotion,
+    g0: Vector2<f64>,
+    first: Option<(Vector2<f64>, Vector2<f64>, bool)>,
+    scale: f64,
+) -> Option<Polished> {
+    let (g1, z1, true) = first? else {
+        return None;
+    };
+    let within = |g: Vector2<f64>| {
+        let d = (g - g0).norm();
+        d > DOUBLE_REACH * scale && d <= SINGLE_REACH * scale
+    };
+    if !within(g1) {
+        return None;
+    }
+    let (g2, z2, true) = newton(m, g0 * 2.0 - g1)? else {
+        return None;
+    };
+    if !within(g2)
+        || !((g2 - g0).dot(&(g1 - g0)) < 0.0)
+        || !((g2 - g1).norm() > DOUBLE_REACH * scale)
+    {
+        return None;
+    }
+    let a = Dyad::new(m.global_of(g1), m.global_of(z1));
+    let b = Dyad::new(m.global_of(g2), m.global_of(z2));
+    (accepted(m, &a, residual(m, &a)) && accepted(m, &b, residual(m, &b)))
+        .then_some(Polished::Pair(a, b))
+}
+
+/// Whether the dyad `d` (crank-length spread `r`) passes [`polish`]'s check.
+fn accepted(m: &LocalMotion, d: &Dyad, r: f64) -> bool {
     // The crank-length spread of a point `D` task sizes out along the
     // normal of a line through the positions is about `(L / D)^2` (`L` the
     // span of the positions): far out, a Burmester point is told from a
     // stretch of line only that well, and rounding allows `64 eps` of the
     // coordinates over the crank's length.
-    let (r, d) = best;
     let positions: Vec<Point2<f64>> = (0..m.poses.len())
         .map(|k| m.displace(d.circle, 0, k))
         .collect();
@@ -886,7 +966,7 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Option<Dyad>
         .fold(d.center.coords.norm(), f64::max);
     let allowed = (tolerance::BURMESTER_RESIDUAL * (span / radius).powi(2))
         .max(64.0 * f64::EPSILON * (1.0 + coords / radius));
-    Ok((r <= allowed).then_some(d))
+    r <= allowed
 }
 
 /// A slider found by the elimination (circle point `z` local, direction
@@ -946,8 +1026,10 @@ fn check_slider(m: &LocalMotion, z: Vector2<f64>, u: Vector2<f64>) -> Option<Bur
 /// position rounding leaves loose along one direction: the steps wander at
 /// rounding level) the iterate with the smallest equation residual is
 /// returned, and the caller keeps it only if its crank lengths agree to
-/// [`tolerance::BURMESTER_RESIDUAL`]. `None` when a step is not finite.
-fn newton(m: &LocalMotion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f64>)> {
+/// [`tolerance::BURMESTER_RESIDUAL`]; the flag says whether the steps
+/// converged (false for that best iterate). `None` when a step is not
+/// finite.
+fn newton(m: &LocalMotion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f64>, bool)> {
     let mut g = g0;
     let mut z = m.form.solve(g, &[1, 2, 3, 4]).ok()?;
     let mut last = f64::INFINITY;
@@ -977,11 +1059,11 @@ fn newton(m: &LocalMotion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f6
         let size = 1.0 + g.norm() + z.norm();
         let n = step.norm();
         if n <= 8.0 * f64::EPSILON * size || (n >= last && n <= 1e-10 * size) {
-            return Some((g, z));
+            return Some((g, z, true));
         }
         last = n;
     }
-    Some((best.1, best.2))
+    Some((best.1, best.2, false))
 }
 
 #[cfg(test)]
