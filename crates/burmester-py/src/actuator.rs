@@ -74,6 +74,7 @@ fn point_grid(p: Point2<f64>) -> PyResult<Grid> {
 /// An actuator placement and its figures (read-only attributes, see the
 /// stub).
 #[pyclass(frozen, name = "Actuator", module = "burmester")]
+#[derive(Clone)]
 pub struct PyActuator {
     inner: Actuator,
     task: Task,
@@ -121,6 +122,59 @@ impl PyActuator {
             context: context.clone(),
             inner,
         }
+    }
+}
+
+impl PyActuator {
+    /// A placement found elsewhere (by `Task::design`) with the terms it
+    /// was found under.
+    pub(crate) fn found(
+        inner: Actuator,
+        task: Task,
+        options: &ActuatorOptions,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+    ) -> PyResult<Self> {
+        let grid = point_grid(inner.ground)?;
+        let context = ActuatorContext::new(
+            &inner.linkage,
+            inner.point,
+            &grid,
+            limits,
+            options,
+            constraints,
+        )
+        .py()?;
+        Ok(PyActuator::of(inner, task, &context))
+    }
+
+    /// The placement and the terms it was found under.
+    pub(crate) fn parts(&self) -> (Actuator, (ActuatorOptions, DesignLimits, Constraints)) {
+        let c = &self.context;
+        (
+            self.inner.clone(),
+            (*c.options(), *c.limits(), c.constraints().clone()),
+        )
+    }
+}
+
+#[pymethods]
+impl PyActuator {
+    /// The smallest gap over the travel between the strut and the links
+    /// that do not carry its point, the obstacles and the envelope.
+    #[getter]
+    fn min_clearance(&self) -> f64 {
+        self.inner.min_clearance
+    }
+    /// The input angle where the gap is smallest.
+    #[getter]
+    fn clearance_angle(&self) -> f64 {
+        self.inner.clearance_angle
+    }
+    /// The strut stays clear over the travel (`min_clearance > 0`).
+    #[getter]
+    fn clear(&self) -> bool {
+        self.inner.clear
     }
 }
 
@@ -220,6 +274,7 @@ impl PyActuator {
     /// Rebuilds a placement from its state (for pickling).
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (linkage, point, ground, limits, options, constraints, extra, envelope = None))]
     fn _from_state(
         linkage: PySynthesizedFourBar,
         point: PyPoint,
@@ -228,8 +283,17 @@ impl PyActuator {
         options: (String, f64, usize),
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
         extra: (Option<(usize, usize)>, f64, f64, Option<String>),
+        envelope: Option<Vec<PyPoint>>,
     ) -> PyResult<Self> {
-        let context = context_of(&linkage, point, ground.0, limits, options, constraints)?;
+        let context = context_of(
+            &linkage,
+            point,
+            ground.0,
+            limits,
+            options,
+            constraints,
+            envelope,
+        )?;
         let mut a = context.placement(ground.0).py()?;
         a.index = extra.0;
         a.margin = extra.1;
@@ -251,6 +315,11 @@ impl PyActuator {
             options_state(self.context.options()),
             constraint_state(self.context.constraints()),
             (a.index, a.margin, a.score, self.ranked_by()),
+            self.context
+                .constraints()
+                .envelope
+                .as_ref()
+                .map(|e| e.iter().map(|p| pt(*p)).collect::<Vec<_>>()),
         )
             .into_pyobject(py)?;
         Ok((py.get_type::<PyActuator>().getattr("_from_state")?, args))
@@ -310,6 +379,7 @@ fn context_of(
     limits: PyDesignLimits,
     options: (String, f64, usize),
     constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+    envelope: Option<Vec<PyPoint>>,
 ) -> PyResult<ActuatorContext> {
     let options = ActuatorOptions {
         link: options.0.parse::<ActuatorLink>().py()?,
@@ -323,7 +393,10 @@ fn context_of(
         &grid,
         &limits.inner,
         &options,
-        &constraints_of(constraints),
+        &Constraints {
+            envelope: envelope.map(|e| e.into_iter().map(|p| p.0).collect()),
+            ..constraints_of(constraints)
+        },
     )
     .py()
 }
@@ -490,6 +563,7 @@ impl PyActuatorMap {
             limits,
             options,
             constraints,
+            None,
         )?;
         let ctx = ActuatorContext::new(
             &linkage.inner,
