@@ -2237,7 +2237,7 @@ class Design:
         coarse: Tuple[Sequence[float], float],
         refined: Sequence[float],
         evaluations: int,
-        attached: Tuple[Optional[Drive], Optional[Actuator]] = (None, None),
+        attached: Tuple[Optional[Drive], Optional[Actuator]] = ...,
     ) -> Design:
         """Rebuilds a design from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2369,8 +2369,8 @@ class DesignReport:
         inputs: Tuple[
             Optional[Tuple[float, float]],
             Optional[Tuple[str, float, int, Optional[Point], int]],
-        ] = (None, None),
-        passed: Tuple[int, int] = (0, 0),
+        ] = ...,
+        passed: Tuple[int, int] = ...,
     ) -> DesignReport:
         """Rebuilds a report from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...

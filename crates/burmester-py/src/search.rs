@@ -633,10 +633,7 @@ impl PyDesignReport {
         counts: (usize, usize, usize, usize),
         rejections: Vec<(String, usize)>,
         near_misses: Vec<PyNearMiss>,
-        inputs: (
-            Option<(f64, f64)>,
-            Option<(String, f64, usize, Option<PyPoint>, usize)>,
-        ),
+        inputs: (Option<(f64, f64)>, Option<StrutState>),
         passed: (usize, usize),
     ) -> PyResult<Self> {
         let ((motor, actuator), (undriven, unplaced)) = (inputs, passed);
@@ -799,6 +796,10 @@ fn options(
         max_iterations: max_iterations.0,
     })
 }
+
+/// A report's actuator search as plain data (for pickling): the link, the
+/// stroke ratio limit, the travel samples, the point, the ground samples.
+type StrutState = (String, f64, usize, Option<PyPoint>, usize);
 
 /// The actuator's keywords of `burmester.design`.
 struct StrutArgs<'a> {
