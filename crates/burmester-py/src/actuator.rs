@@ -14,6 +14,7 @@ use crate::conv::{Count, PyPoint, Real, pt};
 use crate::design::{grid_alone, set_readonly};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
+use crate::getters::getters;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
@@ -158,25 +159,10 @@ impl PyActuator {
     }
 }
 
-#[pymethods]
-impl PyActuator {
-    /// The smallest gap over the travel between the strut and the links
-    /// that do not carry its point, the obstacles and the envelope.
-    #[getter]
-    fn min_clearance(&self) -> f64 {
-        self.inner.min_clearance
-    }
-    /// The input angle where the gap is smallest.
-    #[getter]
-    fn clearance_angle(&self) -> f64 {
-        self.inner.clearance_angle
-    }
-    /// The strut stays clear over the travel (`min_clearance > 0`).
-    #[getter]
-    fn clear(&self) -> bool {
-        self.inner.clear
-    }
-}
+getters!(PyActuator, inner {
+    f64: min_clearance, clearance_angle;
+    bool: clear;
+});
 
 /// The figures by name, each a getter of one element of
 /// [`PyActuator`]'s arrays.

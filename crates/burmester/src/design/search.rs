@@ -251,14 +251,12 @@ impl DesignOptions {
             motor.validate()?;
         }
         if let Some(actuator) = &self.actuator {
-            if self.motor.is_some() {
-                return Err(InvalidInput::UnknownName {
-                    what: "design input",
-                    expected: "a motor or a linear actuator, not both",
-                    found: "both".to_owned(),
-                }
-                .into());
-            }
+            let input = if self.motor.is_some() { "both" } else { "" };
+            in_set(
+                "design input",
+                input,
+                "a motor or a linear actuator, not both",
+            )?;
             actuator.validate()?;
         }
         self.space.validate(task, &self.limits)
@@ -269,6 +267,21 @@ impl DesignOptions {
         self.min_separation
             .unwrap_or(Self::DEFAULT_SEPARATION * task.span())
     }
+}
+
+/// Refuses `found` for `what` unless it is empty (`expected` says what
+/// may be given).
+fn in_set(what: &'static str, found: &str, expected: &'static str) -> Result<()> {
+    if found.is_empty() {
+        return Ok(());
+    }
+    let found = found.to_owned();
+    Err(InvalidInput::UnknownName {
+        what,
+        expected,
+        found,
+    }
+    .into())
 }
 
 /// Where the search found a design, or started from.

@@ -9,6 +9,7 @@ use parry2d_f64::query::distance;
 use parry2d_f64::shape::Segment;
 
 use crate::design::constraints::Prepared;
+use crate::design::space::segment_distance as point_segment;
 use crate::error::Result;
 use crate::geom::cross;
 use crate::linkage::actuator::ActuatorLink;
@@ -89,18 +90,6 @@ impl StrutCheck<'_> {
     }
 }
 
-/// The distance from `p` to the segment `a b`.
-pub(super) fn point_segment(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
-    let ab = b - a;
-    let n = ab.norm_squared();
-    let t = if n > 0.0 {
-        ((p - a).dot(&ab) / n).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p - (a + ab * t)).norm()
-}
-
 /// The distance between the segments `p1 p2` and `q1 q2` (0 where they
 /// cross).
 pub(super) fn segment_distance(
@@ -130,23 +119,16 @@ mod tests {
     fn segment_distances() {
         let p = |x, y| Point2::new(x, y);
         // Crossing, parallel, touching at an end, apart along a line.
-        assert_eq!(
-            segment_distance(p(0., 0.), p(2., 2.), p(0., 2.), p(2., 0.)),
-            0.0
-        );
-        assert_eq!(
-            segment_distance(p(0., 0.), p(2., 0.), p(0., 1.), p(2., 1.)),
-            1.0
-        );
-        assert_eq!(
-            segment_distance(p(0., 0.), p(1., 0.), p(1., 0.), p(1., 5.)),
-            0.0
-        );
-        assert_eq!(
-            segment_distance(p(0., 0.), p(1., 0.), p(3., 0.), p(4., 0.)),
-            2.0
-        );
-        assert_eq!(point_segment(p(0.5, 3.), p(0., 0.), p(1., 0.)), 3.0);
-        assert_eq!(point_segment(p(-3., 4.), p(0., 0.), p(0., 0.)), 5.0);
+        let cases = [
+            ([(0., 0.), (2., 2.), (0., 2.), (2., 0.)], 0.0),
+            ([(0., 0.), (2., 0.), (0., 1.), (2., 1.)], 1.0),
+            ([(0., 0.), (1., 0.), (1., 0.), (1., 5.)], 0.0),
+            ([(0., 0.), (1., 0.), (3., 0.), (4., 0.)], 2.0),
+        ];
+        for (s, want) in cases {
+            let [a, b, c, d] = s.map(|(x, y)| p(x, y));
+            assert_eq!(segment_distance(a, b, c, d), want);
+            assert_eq!(segment_distance(c, d, a, b), want);
+        }
     }
 }

@@ -4,9 +4,7 @@
 //! actuator's placement), lazily in rank order (the module docs of
 //! [`search`](super), "With a motor", "With a linear actuator").
 
-use super::{
-    ActuatorSearch, Design, DesignOptions, DesignReport, apart, rank_designs, sort_designs,
-};
+use super::{Design, DesignOptions, DesignReport, apart, rank_designs, sort_designs};
 use crate::design::Constraints;
 use crate::design::drive::{DriveOptions, best_drive};
 use crate::engine::Control;
@@ -27,7 +25,12 @@ impl Task {
     ) -> Result<Vec<Design>> {
         let sep = options.separation(self);
         if let Some(search) = &options.actuator {
-            let (designs, unplaced) = placed_designs(all, sep, options, search, control)?;
+            // Each with the best clear placement of its actuator.
+            let (designs, unplaced) =
+                attached_designs(all, sep, options.top, control, |d, part| {
+                    d.actuator = search.place(d, options, part)?;
+                    Ok(d.actuator.is_some())
+                })?;
             report.unplaced = unplaced;
             return Ok(designs);
         }
@@ -84,22 +87,6 @@ fn driven_designs(
             Err(Error::Drive(_)) => Ok(false),
             Err(e) => Err(e),
         }
-    })
-}
-
-/// The designs of `all` best first, at least `sep` apart, at most `top`,
-/// each with the best clear placement of its actuator under `search`; and
-/// how many were passed over for want of one.
-fn placed_designs(
-    all: Vec<Design>,
-    sep: f64,
-    options: &DesignOptions,
-    search: &ActuatorSearch,
-    control: &Control<'_>,
-) -> Result<(Vec<Design>, usize)> {
-    attached_designs(all, sep, options.top, control, |d, part| {
-        d.actuator = search.place(d, options, part)?;
-        Ok(d.actuator.is_some())
     })
 }
 
