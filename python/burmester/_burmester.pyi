@@ -2221,6 +2221,12 @@ class Design:
         drive's crank pivot on the pivot region, its links clear of the
         obstacles over a full crank turn); None without a motor, or when the
         input turns fully (the motor turns it directly)."""
+    @property
+    def actuator(self) -> Optional[Actuator]:
+        """With a linear actuator (``design(..., input="actuator")``): its
+        placement, found with the linkage (monotone, within the stroke
+        ratio and the limits, clear of the links, obstacles and envelope
+        over the travel); None without."""
     @staticmethod
     def _from_state(
         task: Task,
@@ -2230,11 +2236,10 @@ class Design:
         size_ratio: float,
         ranked_by: str,
         kind: str,
-        coarse: Sequence[float],
+        coarse: Tuple[Sequence[float], float],
         refined: Sequence[float],
-        coarse_score: float,
         evaluations: int,
-        drive: Optional[Drive] = None,
+        attached: Tuple[Optional[Drive], Optional[Actuator]] = ...,
     ) -> Design:
         """Rebuilds a design from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2340,6 +2345,14 @@ class DesignReport:
     @property
     def max_time_ratio(self) -> Optional[float]:
         """The motor's largest time ratio (None without a motor)."""
+    @property
+    def actuator(self) -> bool:
+        """Whether the designs were searched with a linear actuator
+        (``input="actuator"``)."""
+    @property
+    def unplaced(self) -> int:
+        """With a linear actuator: candidates passed over because no clear,
+        acceptable placement was found for them; 0 without."""
     def __len__(self) -> int: ...
     def __getitem__(self, index: int, /) -> Design: ...
     def __iter__(self) -> Iterator[Design]: ...
@@ -2355,8 +2368,11 @@ class DesignReport:
         counts: Tuple[int, int, int, int],
         rejections: Sequence[Tuple[str, int]],
         near_misses: Sequence[NearMiss],
-        motor: Optional[Tuple[float, float]] = None,
-        undriven: int = 0,
+        inputs: Tuple[
+            Optional[Tuple[float, float]],
+            Optional[Tuple[str, float, int, Optional[Point], int]],
+        ] = ...,
+        passed: Tuple[int, int] = ...,
     ) -> DesignReport:
         """Rebuilds a report from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2375,9 +2391,13 @@ def _design(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
-    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    input: Optional[Literal["any", "crank", "rocker", "motor", "actuator"]] = None,
     swing_margin_deg: float = ...,
     max_time_ratio: Optional[float] = None,
+    actuator_link: str = "coupler",
+    actuator_point: Optional[Point] = None,
+    max_stroke_ratio: float = ...,
+    actuator_samples: int = ...,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The design search in this process (see :func:`burmester.design`,
@@ -2397,9 +2417,13 @@ def _design_plan(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
-    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    input: Optional[Literal["any", "crank", "rocker", "motor", "actuator"]] = None,
     swing_margin_deg: float = ...,
     max_time_ratio: Optional[float] = None,
+    actuator_link: str = "coupler",
+    actuator_point: Optional[Point] = None,
+    max_stroke_ratio: float = ...,
+    actuator_samples: int = ...,
     progress: Optional[Progress] = None,
 ) -> dict[str, Any]:
     """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
@@ -2419,9 +2443,13 @@ def _design_from_atlas(
     coarse_pairs: int = ...,
     starts: int = ...,
     max_iterations: int = ...,
-    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    input: Optional[Literal["any", "crank", "rocker", "motor", "actuator"]] = None,
     swing_margin_deg: float = ...,
     max_time_ratio: Optional[float] = None,
+    actuator_link: str = "coupler",
+    actuator_point: Optional[Point] = None,
+    max_stroke_ratio: float = ...,
+    actuator_samples: int = ...,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere
@@ -2838,6 +2866,19 @@ class Actuator:
     @property
     def limits(self) -> DesignLimits:
         """The limits it was placed under."""
+    @property
+    def min_clearance(self) -> float:
+        """The smallest gap over the travel between the strut (its line
+        from ``G`` to ``Q``, as wide as the links) and the links that do
+        not carry ``Q``, the obstacles and the envelope's boundary;
+        negative where they overlap (a strut through its own link's bar
+        counts as an overlap)."""
+    @property
+    def clearance_angle(self) -> float:
+        """The input angle where the gap is smallest, radians."""
+    @property
+    def clear(self) -> bool:
+        """The strut stays clear over the travel (``min_clearance > 0``)."""
     def at(self, theta2: float) -> Tuple[Tuple[float, float], float]:
         """``((x, y), s)``: the moving point and the length at input angle
         ``theta2``."""
@@ -2855,6 +2896,7 @@ class Actuator:
         options: Tuple[str, float, int],
         constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
         extra: Tuple[Optional[Tuple[int, int]], float, float, Optional[str]],
+        envelope: Optional[Sequence[Point]] = None,
     ) -> Actuator:
         """Rebuilds a placement from its state (for pickling)."""
 

@@ -126,6 +126,8 @@ def actuator_record(a: Actuator) -> Dict[str, Any]:
         "size_ratio": a.size_ratio,
         "acceptable": a.acceptable,
         "ranked_by": a.ranked_by,
+        "min_clearance": a.min_clearance,
+        "clear": a.clear,
     }
 
 
@@ -155,6 +157,9 @@ def actuator_table(a: Actuator, source: Optional[str] = None, units: str = "") -
                      + ", ".join(f"{math.degrees(t):.1f} deg" for t in a.turning_points))
     lines.append(f"  link ratio {a.link_ratio:.2f}, size {a.size_ratio:.1f}x the task, "
                  f"{'acceptable' if a.acceptable else 'NOT acceptable'} under the limits")
+    lines.append(f"  {'clear' if a.clear else 'NOT clear'} over the travel: the strut's least gap to the links "
+                 f"(not those carrying Q), obstacles and envelope {a.min_clearance:.1f}{u} "
+                 f"(at input angle {math.degrees(a.clearance_angle):.1f} deg)")
     return "\n".join(lines)
 
 

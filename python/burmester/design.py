@@ -15,13 +15,21 @@ input swings carries the best drive the core finds for it
 (:attr:`burmester.Design.drive`, the Watt II six-bar of an added
 crank-rocker), one without an acceptable drive is passed over
 (:attr:`burmester.DesignReport.undriven`).
+
+With ``input="actuator"`` every design is driven by a linear actuator (a
+cylinder, a gas strut) placed with it: its ground pivot searched over the
+space's pivot region, its moving point on the chosen link, the placement
+monotone, within the stroke ratio and the limits, and clear of the links,
+obstacles and envelope over the travel (:attr:`burmester.Design.actuator`);
+one without such a placement is passed over
+(:attr:`burmester.DesignReport.unplaced`).
 """
 
 from __future__ import annotations
 
 import importlib
 import math
-from typing import Any, Callable, Dict, Literal, Optional
+from typing import Any, Callable, Dict, Literal, Optional, Tuple
 
 from burmester import _counts as counts
 from burmester._burmester import (
@@ -56,9 +64,13 @@ def design(
     starts: int = 48,
     max_iterations: int = 3000,
     tile_rows: Optional[int] = None,
-    input: Optional[Literal["any", "crank", "rocker", "motor"]] = None,
+    input: Optional[Literal["any", "crank", "rocker", "motor", "actuator"]] = None,
     swing_margin_deg: float = 0.0,
     max_time_ratio: float = math.inf,
+    actuator_link: Literal["coupler", "crank", "rocker"] = "coupler",
+    actuator_point: Optional[Tuple[float, float]] = None,
+    max_stroke_ratio: float = 1.8,
+    actuator_samples: int = 64,
 ) -> DesignReport:
     """The best linkages for ``task`` (three to five poses) inside ``space``
     (a :class:`burmester.Space`; default: pivots anywhere, no obstacles)
@@ -96,11 +108,29 @@ def design(
     distinct one (counted in :attr:`burmester.DesignReport.undriven`).
     Both are refused without ``input="motor"``. A bad ``input`` raises
     :class:`burmester.InvalidInputError`.
+
+    ``input="actuator"`` takes any input and drives every design by a linear
+    actuator (:attr:`burmester.Design.actuator`, a
+    :class:`burmester.Actuator`): between a ground pivot on the space's
+    pivot region (``actuator_samples`` candidates along the longer side of
+    its box, 2 to 512; with pivots anywhere, the linkage's box widened by
+    its size) and the point ``actuator_point`` of ``actuator_link`` where it
+    is at pose 1 (default: a few points of the link tried, the coupler's
+    moving pivots, points between them and the task's coupler point). The
+    placement is the best by ``rank_by`` whose length is monotone through
+    the poses, whose stroke ratio is at most ``max_stroke_ratio`` and which
+    meets ``limits`` (its force transmission angle, the link and size
+    ratios with the open actuator), and whose line stays clear of the links
+    that do not carry its point, the space's obstacles and envelope over
+    the travel (:attr:`burmester.Actuator.clear`). A design without one is
+    passed over (:attr:`burmester.DesignReport.unplaced`). These keywords
+    are refused without ``input="actuator"``.
     """
     kw: Dict[str, Any] = dict(space=space, limits=limits, rank_by=rank_by, top=top, min_separation=min_separation,
               coarse_driven=coarse_driven, coarse_driving=coarse_driving, coarse_pairs=coarse_pairs,
               starts=starts, max_iterations=max_iterations, input=input, swing_margin_deg=swing_margin_deg,
-              max_time_ratio=max_time_ratio)
+              max_time_ratio=max_time_ratio, actuator_link=actuator_link, actuator_point=actuator_point,
+              max_stroke_ratio=max_stroke_ratio, actuator_samples=actuator_samples)
     if client is None or not counts.of(task).filemon:  # the coarse pass on Dask is the atlas's
         return _design(task, progress=progress, **kw)
     from burmester.atlas import _DASK_MISSING, _on_dask

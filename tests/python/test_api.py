@@ -284,6 +284,11 @@ PROPERTIES = {
                            "point_at_poses limits max_stroke_ratio samples",
 }
 
+# Issue 27 (sdes31): a design's linear actuator and the strut's clearance.
+PROPERTIES[burmester.Design] += " actuator"
+PROPERTIES[burmester.DesignReport] += " actuator unplaced"
+PROPERTIES[burmester.Actuator] += " min_clearance clearance_angle clear"
+
 # Issue 27 (ssynth27): the slider records.
 PROPERTIES[burmester.SliderDyad] = "circle guide normal"
 PROPERTIES[burmester.InvertedSlider] = "swivel direction"

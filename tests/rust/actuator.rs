@@ -222,6 +222,33 @@ fn context(sfb: &SynthesizedFourBar, link: ActuatorLink, q: P, grid: &Grid) -> A
     .unwrap()
 }
 
+/// A random moving point about the crank joint `A` (within `r` along
+/// each axis) and ground pivot about `c` (within `2 r`).
+fn point_and_pivot(runner: &mut TestRunner, sfb: &SynthesizedFourBar, c: P, r: f64) -> (P, P) {
+    let (qx, qy, gx, gy) = (-1.0f64..1.0, -1.0f64..1.0, -2.0f64..2.0, -2.0f64..2.0)
+        .new_tree(runner)
+        .unwrap()
+        .current();
+    let q = sfb.driving.circle + Vector2::new(qx, qy) * r;
+    (q, c + Vector2::new(gx, gy) * r)
+}
+
+/// The context of the one ground pivot `g` under `constraints`.
+fn single(
+    sfb: &SynthesizedFourBar,
+    link: ActuatorLink,
+    q: P,
+    g: P,
+    constraints: &Constraints,
+) -> ActuatorContext {
+    let options = ActuatorOptions {
+        link,
+        ..ActuatorOptions::default()
+    };
+    let limits = DesignLimits::default();
+    ActuatorContext::new(sfb, q, &one_grid(g), &limits, &options, constraints).unwrap()
+}
+
 fn one_grid(p: P) -> Grid {
     Grid::from_bounds(p.x - 1.0, p.x + 1.0, p.y - 1.0, p.y + 1.0, 1, 1).unwrap()
 }
@@ -239,12 +266,7 @@ fn placements_agree_with_dense_driving() {
         let c = common::centroid(task.poses());
         let r = task.span();
         for _ in 0..5 {
-            let (qx, qy, gx, gy) = (-1.0f64..1.0, -1.0f64..1.0, -2.0f64..2.0, -2.0f64..2.0)
-                .new_tree(&mut runner)
-                .unwrap()
-                .current();
-            let q = sfb.driving.circle + Vector2::new(qx, qy) * r;
-            let g = c + Vector2::new(gx, gy) * r;
+            let (q, g) = point_and_pivot(&mut runner, &sfb, c, r);
             let ctx = context(&sfb, link, q, &one_grid(g));
             let Ok(a) = ctx.placement(g) else { continue };
             let own = Own::new(&sfb, link, q);
@@ -417,8 +439,8 @@ fn map_and_ranking_agree_with_placements() {
     assert!(ranked > 0);
 }
 
-/// Moving, rotating and scaling the linkage, the point and the pivot keeps
-/// every figure (lengths scale).
+/// Moving, rotating and scaling the linkage, the point, the pivot and the
+/// obstacle keeps every figure (lengths, the clearance among them, scale).
 #[test]
 fn figures_are_invariant_under_similarities() {
     let mut runner = TestRunner::new(common::config(1));
@@ -439,25 +461,30 @@ fn figures_are_invariant_under_similarities() {
         let map = |p: P| Point2::from(rot(p.coords, sa) * ss + Vector2::new(sx, sy));
         let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.3;
         let g = common::centroid(task.poses()) + Vector2::new(gx, gy) * task.span();
-        let poses: Vec<[f64; 3]> = task
-            .poses()
-            .iter()
-            .map(|p| {
-                let m = map(p.position);
-                [m.x, m.y, p.angle + sa]
-            })
-            .collect();
-        let task2 = Task::from_xya(&poses).unwrap();
-        let sfb2 = task2
-            .four_bar(
-                &Dyad::new(map(sfb.driving.center), map(sfb.driving.circle)),
-                &Dyad::new(map(sfb.driven.center), map(sfb.driven.circle)),
-            )
-            .unwrap();
-        let a = context(&sfb, link, q, &one_grid(g)).placement(g).unwrap();
-        let b = context(&sfb2, link, map(q), &one_grid(map(g)))
-            .placement(map(g))
-            .unwrap();
+        let (_, sfb2) = common::moved_linkage(&task, &sfb, map, sa);
+        // An obstacle and a link width, moved and scaled with the rest:
+        // the strut's clearance scales, its verdict stays.
+        let c = common::centroid(task.poses());
+        let h = 0.2 * task.span();
+        let obstacle = [(-h, 0.0), (h, 0.0), (0.0, h)].map(|(x, y)| c + Vector2::new(x, y));
+        let place = |s: &SynthesizedFourBar, q: P, g: P, o: Vec<P>, w: f64| {
+            let c = Constraints {
+                obstacles: vec![o],
+                link_width: w,
+                ..Constraints::none()
+            };
+            single(s, link, q, g, &c).placement(g).unwrap()
+        };
+        let w = 0.01 * task.span();
+        let a = place(&sfb, q, g, obstacle.to_vec(), w);
+        let b = place(&sfb2, map(q), map(g), obstacle.map(map).to_vec(), w * ss);
+        assert_eq!(
+            a.clear, b.clear,
+            "{} vs {}",
+            a.min_clearance, b.min_clearance
+        );
+        let gap = a.min_clearance * ss - b.min_clearance;
+        assert!(gap.abs() < 1e-6 * ss * task.span(), "{gap}");
         assert_eq!(a.monotone, b.monotone);
         assert_eq!(a.turning_points.len(), b.turning_points.len());
         assert!((a.stroke_ratio - b.stroke_ratio).abs() < 1e-9 * a.stroke_ratio);
@@ -505,16 +532,23 @@ fn bad_input_gives_typed_errors() {
             Err(Error::InvalidInput(InvalidInput::CountOutOfRange { .. }))
         ));
     }
+    // Obstacles are taken (the strut's clearance); one without an area
+    // is refused by name.
     let obstacles = Constraints {
         obstacles: vec![vec![P::new(0.0, 0.0), P::new(1.0, 0.0), P::new(0.0, 1.0)]],
         ..Constraints::none()
     };
-    let e = new(&ActuatorOptions::default(), &obstacles).unwrap_err();
-    assert!(matches!(
-        e,
-        Error::InvalidInput(InvalidInput::UnknownName { .. })
-    ));
-    assert!(e.to_string().contains("base_plate"), "{e}");
+    assert!(new(&ActuatorOptions::default(), &obstacles).is_ok());
+    let flat = Constraints {
+        obstacles: vec![vec![P::new(0.0, 0.0), P::new(1.0, 0.0), P::new(2.0, 0.0)]],
+        ..Constraints::none()
+    };
+    let e = new(&ActuatorOptions::default(), &flat).unwrap_err();
+    assert!(
+        matches!(e, Error::InvalidInput(InvalidInput::Polygon { .. })),
+        "{e}"
+    );
+    assert!(e.to_string().contains("obstacle 1"), "{e}");
     // A point on the crank's fixed pivot does not move.
     let crank = ActuatorOptions {
         link: ActuatorLink::Crank,
@@ -615,4 +649,313 @@ fn documented_maximum_grid_and_cancelling() {
         .placement(c + Vector2::new(0.0, -r))
         .unwrap();
     assert!(a.max_length > 0.0);
+}
+
+// The strut's clearance and the one-call design with an actuator.
+
+/// The test's own gap of the strut `G Q(t)` at input angle `t`: the links
+/// from the test's own joints, the distances by parry's segment query (the
+/// crate measures with its own closed form), a crossing of the link that
+/// carries `Q` by solving the two lines' intersection, an obstacle's
+/// distance from its edges and a containment test by winding.
+fn own_gap(
+    sfb: &SynthesizedFourBar,
+    own: &Own,
+    g: P,
+    t: f64,
+    width: f64,
+    obstacles: &[Vec<P>],
+) -> f64 {
+    use parry2d_f64::math::{Pose, Vector as V};
+    use parry2d_f64::query::distance;
+    use parry2d_f64::shape::Segment;
+    let seg = |a: P, b: P| Segment::new(V::new(a.x, a.y), V::new(b.x, b.y));
+    let dist = |a: (P, P), b: (P, P)| {
+        distance(
+            &Pose::identity(),
+            &seg(a.0, a.1),
+            &Pose::identity(),
+            &seg(b.0, b.1),
+        )
+        .unwrap()
+        .distance
+    };
+    let c = sfb.fourbar.solve(t, own.mode).unwrap();
+    let j = sfb.fourbar.joints(&c);
+    let q = own.at(t);
+    let r = 0.5 * width;
+    let mut gap = f64::INFINITY;
+    for (link, a, b) in [
+        (ActuatorLink::Crank, j.input_pivot, j.crank_joint),
+        (ActuatorLink::Coupler, j.crank_joint, j.rocker_joint),
+        (ActuatorLink::Rocker, j.output_pivot, j.rocker_joint),
+    ] {
+        // Q on the link (its own, or one joined to it at Q): a crossing
+        // away from Q only.
+        let ab = b - a;
+        let along = ((q - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+        let on = (q - (a + ab * along)).norm() <= 1e-9 * sfb.fourbar.lengths()[0].max(ab.norm());
+        if link == own.link || on {
+            // G + u (Q - G) = A + v (B - A), u in [0, 1) away from Q.
+            let (d, e) = (q - g, b - a);
+            let det = d.x * -e.y - d.y * -e.x;
+            if det.abs() > 1e-15 {
+                let w = a - g;
+                let u = (w.x * -e.y - w.y * -e.x) / det;
+                let v = (d.x * w.y - d.y * w.x) / det;
+                if (0.0..1.0 - 1e-6).contains(&u) && (0.0..=1.0).contains(&v) {
+                    gap = gap.min(-2.0 * r);
+                }
+            }
+        } else {
+            gap = gap.min(dist((g, q), (a, b)) - 2.0 * r);
+        }
+    }
+    for o in obstacles {
+        let inside = |p: P| {
+            let mut wind = 0.0;
+            for k in 0..o.len() {
+                let (a, b) = (o[k] - p, o[(k + 1) % o.len()] - p);
+                wind += (a.x * b.y - a.y * b.x).atan2(a.dot(&b));
+            }
+            wind.abs() > PI
+        };
+        let mut d = (0..o.len())
+            .map(|k| dist((g, q), (o[k], o[(k + 1) % o.len()])))
+            .fold(f64::INFINITY, f64::min);
+        if inside(g) || inside(q) {
+            d = 0.0;
+        }
+        gap = gap.min(d - r);
+    }
+    gap
+}
+
+/// The smallest of [`own_gap`] over `steps` of the travel.
+fn dense_gap(
+    sfb: &SynthesizedFourBar,
+    own: &Own,
+    g: P,
+    steps: usize,
+    width: f64,
+    obstacles: &[Vec<P>],
+) -> f64 {
+    let (start, span) = sfb.travel().unwrap();
+    (0..=steps)
+        .map(|k| {
+            let t = start + span * k as f64 / steps as f64;
+            own_gap(sfb, own, g, t, width, obstacles)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// A placement's clearance agrees with dense driving (8 000 steps, the
+/// test's own frame and distances), with and without an obstacle and a
+/// link width: the smallest gap to a part of the sample step's motion, the
+/// verdict wherever the gap is not within that of zero.
+#[test]
+fn clearance_agrees_with_dense_driving() {
+    let mut runner = TestRunner::new(common::config(1));
+    let (mut checked, mut verdicts, mut crossing) = (0, [0usize; 2], 0);
+    for case in 0..30 {
+        let (task, sfb) = random_linkage(&mut runner);
+        let link = ActuatorLink::ALL[case % 3];
+        let c = common::centroid(task.poses());
+        let r = task.span();
+        let (ox, oy, w) = (-1.5f64..1.5, -1.5f64..1.5, 0.0f64..0.05)
+            .new_tree(&mut runner)
+            .unwrap()
+            .current();
+        let o = c + Vector2::new(ox, oy) * r;
+        let h = 0.15 * r;
+        let obstacles = if case % 2 == 0 {
+            vec![vec![
+                o + Vector2::new(-h, -h),
+                o + Vector2::new(h, -h),
+                o + Vector2::new(0.0, h),
+            ]]
+        } else {
+            Vec::new()
+        };
+        let width = if case % 3 == 0 { w * r } else { 0.0 };
+        let constraints = Constraints {
+            obstacles: obstacles.clone(),
+            link_width: width,
+            ..Constraints::none()
+        };
+        for _ in 0..5 {
+            let (q, g) = point_and_pivot(&mut runner, &sfb, c, r);
+            let ctx = single(&sfb, link, q, g, &constraints);
+            let Ok(a) = ctx.placement(g) else { continue };
+            let own = Own::new(&sfb, link, q);
+            let d = dense_gap(&sfb, &own, g, 8_000, width, &obstacles);
+            // How far a point of the strut or a link moves in a step of
+            // the placement's sampling, bounded from dense samples.
+            let step = (ctx.travel_angles()[1] - ctx.travel_angles()[0]).abs();
+            let moves = 4.0 * step * r * (1.0 + 1.0 / sfb.figures.min_transmission.sin().max(0.1));
+            checked += 1;
+            assert_eq!(a.clear, a.min_clearance > 0.0);
+            // The refined gap is a gap at some angle: never below the
+            // true minimum, which dense driving approaches from above.
+            if d.abs() > moves {
+                assert_eq!(
+                    a.clear,
+                    d > 0.0,
+                    "case {case}: {} vs dense {d}",
+                    a.min_clearance
+                );
+            }
+            if d > -2.0 * (0.5 * width) + 1e-12 {
+                assert!(
+                    a.min_clearance <= d + 1e-9 * r && a.min_clearance >= d - moves,
+                    "case {case}: {} vs dense {d} (moves {moves})",
+                    a.min_clearance
+                );
+            } else {
+                crossing += 1;
+                assert!(a.min_clearance <= -width * 0.5 * 2.0 + 1e-12 || !a.clear);
+            }
+            verdicts[usize::from(a.clear)] += 1;
+        }
+    }
+    // Both verdicts are met often: [blocked, clear].
+    let enough = checked >= 100 && verdicts.iter().all(|&n| n >= 10);
+    assert!(enough, "{checked} {verdicts:?} {crossing}");
+}
+
+/// A strut through its own link: the rocker's pin at the rocker's middle
+/// and the ground pivot beyond the rocker's tip on its line crosses the
+/// rocker's bar.
+#[test]
+fn a_strut_through_its_own_link_is_not_clear() {
+    let mut runner = TestRunner::new(common::config(1));
+    let linkages: Vec<_> = (0..10).map(|_| random_linkage(&mut runner).1).collect();
+    for sfb in linkages {
+        let (c0, c1) = (sfb.driven.center, sfb.driven.circle);
+        let q = c0 + (c1 - c0) * 0.5;
+        // G on the far side of C0, on the rocker's line at pose 1: the
+        // strut runs along the bar through C0 there.
+        let g = c0 - (c1 - c0) * 0.7;
+        let ctx = single(&sfb, ActuatorLink::Rocker, q, g, &Constraints::none());
+        let a = ctx.placement(g).unwrap();
+        assert!(!a.clear && a.min_clearance <= 0.0, "{}", a.min_clearance);
+    }
+}
+
+/// The hood of `examples/hood.toml` in millimetres, and its design
+/// options.
+fn hood() -> (Task, burmester::DesignOptions) {
+    let task = Task::from_xya(&[
+        [0.0, 0.0, 0.0],
+        [-25.0, 45.0, 30f64.to_radians()],
+        [-40.0, 80.0, 60f64.to_radians()],
+    ])
+    .unwrap();
+    let limits = DesignLimits {
+        min_transmission: 40f64.to_radians(),
+        max_link_ratio: 10.0,
+        input: burmester::InputRequirement::Any,
+        min_grashof_margin: 0.01,
+        max_size_ratio: 8.0,
+        ..DesignLimits::default()
+    };
+    let options = burmester::DesignOptions {
+        limits,
+        space: burmester::Space {
+            pivots: burmester::PivotRegion::boxed(-150.0, 50.0, -100.0, 0.0).unwrap(),
+            ..burmester::Space::default()
+        },
+        top: 3,
+        starts: 12,
+        actuator: Some(burmester::ActuatorSearch::default()),
+        ..burmester::DesignOptions::default()
+    };
+    (task, options)
+}
+
+/// The one-call design with an actuator, on the hood: every design
+/// carries an actuator whose verdicts dense driving of the built linkage
+/// and strut confirms (monotone, stroke ratio, transmission, clearance,
+/// the ground pivot on the pivot region), and the linkage is the
+/// design's.
+#[test]
+fn the_design_places_a_clear_actuator_on_every_design() {
+    let (task, options) = hood();
+    let report = task.design(&options, &Control::new()).unwrap();
+    assert!(!report.designs.is_empty(), "{:?}", report.rejections);
+    assert_eq!(report.actuator, options.actuator);
+    for d in &report.designs {
+        let a = d.actuator.as_ref().expect("every design has its actuator");
+        assert_eq!(a.linkage, d.linkage);
+        assert!(a.monotone && a.acceptable && a.clear, "{a:?}");
+        assert!(options.space.pivots.contains(a.ground));
+        let own = Own::new(&d.linkage, a.link, a.point);
+        let dense = dense(&d.linkage, &own, a.ground, 8_000);
+        assert!(dense.turning.is_empty());
+        assert!(
+            dense.s_max / dense.s_min <= 1.8 + 1e-6,
+            "{}",
+            dense.s_max / dense.s_min
+        );
+        assert!((a.stroke_ratio - dense.s_max / dense.s_min).abs() < 1e-6);
+        assert!(dense.mu_min >= options.limits.min_transmission - 1e-5);
+        let gap = dense_gap(&d.linkage, &own, a.ground, 8_000, 0.0, &[]);
+        assert!(
+            gap > 0.0 && (gap - a.min_clearance).abs() < 1e-3 * task.span(),
+            "dense {gap} vs {} at Q {:?}",
+            a.min_clearance,
+            a.point
+        );
+    }
+    // The same design without the actuator ranks the same linkages first
+    // where they have an actuator (the actuator only filters).
+    let plain = burmester::DesignOptions {
+        actuator: None,
+        ..options.clone()
+    };
+    let bare = task.design(&plain, &Control::new()).unwrap();
+    assert!(bare.designs[0].actuator.is_none());
+    assert_eq!(bare.unplaced, 0);
+    if report.unplaced == 0 {
+        assert_eq!(bare.designs[0].linkage, report.designs[0].linkage);
+    }
+}
+
+/// The design's actuator options: the documented maximum of ground-pivot
+/// samples is searched, one more refused; a motor and an actuator together
+/// are refused; a cancelled placement search stops.
+#[test]
+fn design_actuator_options_at_their_limits() {
+    let (task, mut options) = hood();
+    options.top = 1;
+    options.starts = 2;
+    options.actuator = Some(burmester::ActuatorSearch {
+        samples: burmester::ActuatorSearch::MAX_SAMPLES,
+        point: Some(P::new(-40.0, -20.0)),
+        options: ActuatorOptions {
+            travel_samples: ActuatorOptions::MIN_TRAVEL_SAMPLES,
+            ..ActuatorOptions::default()
+        },
+    });
+    let report = task.design(&options, &Control::new()).unwrap();
+    for d in &report.designs {
+        assert!(
+            d.actuator
+                .as_ref()
+                .is_some_and(|a| a.clear && a.point == P::new(-40.0, -20.0))
+        );
+    }
+    let mut over = options.clone();
+    over.actuator.as_mut().unwrap().samples = burmester::ActuatorSearch::MAX_SAMPLES + 1;
+    assert!(matches!(
+        task.design(&over, &Control::new()),
+        Err(Error::InvalidInput(InvalidInput::CountOutOfRange { .. }))
+    ));
+    let mut both = options.clone();
+    both.motor = Some(burmester::design::DriveOptions::default());
+    let e = task.design(&both, &Control::new()).unwrap_err();
+    assert!(e.to_string().contains("not both"), "{e}");
+    let stop = AtomicBool::new(true);
+    let r = task.design(&options, &Control::new().with_cancel(&stop));
+    assert!(matches!(r, Err(Error::Cancelled { .. })), "{r:?}");
 }

@@ -1158,21 +1158,7 @@ fn figures_are_invariant_under_similarities() {
     let e = sfb.driving.circle;
     let (k, ang, off) = (3.7f64, 0.9f64, Vector2::new(5.0, -2.0));
     let tf = |p: P| Point2::from(rotate(p.coords, ang) * k + off);
-    let moved: Vec<[f64; 3]> = task
-        .poses()
-        .iter()
-        .map(|p| {
-            let q = tf(p.position);
-            [q.x, q.y, p.angle + ang]
-        })
-        .collect();
-    let t2 = Task::from_xya(&moved).unwrap();
-    let s2 = t2
-        .four_bar(
-            &Dyad::new(tf(sfb.driving.center), tf(sfb.driving.circle)),
-            &Dyad::new(tf(sfb.driven.center), tf(sfb.driven.circle)),
-        )
-        .unwrap();
+    let (_, s2) = common::moved_linkage(&task, &sfb, tf, ang);
     let a0 = sfb.driving.center;
     for d0 in [
         a0 + Vector2::new(1.3, 2.9),

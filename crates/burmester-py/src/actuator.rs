@@ -15,6 +15,7 @@ use crate::design::set_readonly;
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::geom::grid_alone;
+use crate::getters::getters;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
@@ -75,6 +76,7 @@ fn point_grid(p: Point2<f64>) -> PyResult<Grid> {
 /// An actuator placement and its figures (read-only attributes, see the
 /// stub).
 #[pyclass(frozen, name = "Actuator", module = "burmester")]
+#[derive(Clone)]
 pub struct PyActuator {
     inner: Actuator,
     task: Task,
@@ -124,6 +126,44 @@ impl PyActuator {
         }
     }
 }
+
+impl PyActuator {
+    /// A placement found elsewhere (by `Task::design`) with the terms it
+    /// was found under.
+    pub(crate) fn found(
+        inner: Actuator,
+        task: Task,
+        options: &ActuatorOptions,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+    ) -> PyResult<Self> {
+        let grid = point_grid(inner.ground)?;
+        let context = ActuatorContext::new(
+            &inner.linkage,
+            inner.point,
+            &grid,
+            limits,
+            options,
+            constraints,
+        )
+        .py()?;
+        Ok(PyActuator::of(inner, task, &context))
+    }
+
+    /// The placement and the terms it was found under.
+    pub(crate) fn parts(&self) -> (Actuator, (ActuatorOptions, DesignLimits, Constraints)) {
+        let c = &self.context;
+        (
+            self.inner.clone(),
+            (*c.options(), *c.limits(), c.constraints().clone()),
+        )
+    }
+}
+
+getters!(PyActuator, inner {
+    f64: min_clearance, clearance_angle;
+    bool: clear;
+});
 
 /// The figures by name, each a getter of one element of
 /// [`PyActuator`]'s arrays.
@@ -221,6 +261,7 @@ impl PyActuator {
     /// Rebuilds a placement from its state (for pickling).
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (linkage, point, ground, limits, options, constraints, extra, envelope = None))]
     fn _from_state(
         linkage: PySynthesizedFourBar,
         point: PyPoint,
@@ -229,8 +270,17 @@ impl PyActuator {
         options: (String, f64, usize),
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
         extra: (Option<(usize, usize)>, f64, f64, Option<String>),
+        envelope: Option<Vec<PyPoint>>,
     ) -> PyResult<Self> {
-        let context = context_of(&linkage, point, ground.0, limits, options, constraints)?;
+        let context = context_of(
+            &linkage,
+            point,
+            ground.0,
+            limits,
+            options,
+            constraints,
+            envelope,
+        )?;
         let mut a = context.placement(ground.0).py()?;
         a.index = extra.0;
         a.margin = extra.1;
@@ -252,6 +302,11 @@ impl PyActuator {
             options_state(self.context.options()),
             constraint_state(self.context.constraints()),
             (a.index, a.margin, a.score, self.ranked_by()),
+            self.context
+                .constraints()
+                .envelope
+                .as_ref()
+                .map(|e| e.iter().map(|p| pt(*p)).collect::<Vec<_>>()),
         )
             .into_pyobject(py)?;
         Ok((py.get_type::<PyActuator>().getattr("_from_state")?, args))
@@ -311,6 +366,7 @@ fn context_of(
     limits: PyDesignLimits,
     options: (String, f64, usize),
     constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+    envelope: Option<Vec<PyPoint>>,
 ) -> PyResult<ActuatorContext> {
     let options = ActuatorOptions {
         link: options.0.parse::<ActuatorLink>().py()?,
@@ -324,7 +380,10 @@ fn context_of(
         &grid,
         &limits.inner,
         &options,
-        &constraints_of(constraints),
+        &Constraints {
+            envelope: envelope.map(|e| e.into_iter().map(|p| p.0).collect()),
+            ..constraints_of(constraints)
+        },
     )
     .py()
 }
@@ -491,6 +550,7 @@ impl PyActuatorMap {
             limits,
             options,
             constraints,
+            None,
         )?;
         let ctx = ActuatorContext::new(
             &linkage.inner,

@@ -6,17 +6,18 @@
 //! `input="motor"` the designs whose input swings carry their drive
 //! (`burmester.Drive`).
 
-use burmester::design::DriveOptions;
+use burmester::design::{ActuatorOptions, DriveOptions};
 use burmester::{
-    AtlasBest, AtlasCell, Constraints, Design, DesignLimits, DesignOptions, DesignReport, Dyad,
-    InputRequirement, InvalidInput, Limit, NearMiss, PivotRegion, Point2, RankBy, SearchPoint,
-    Space, Task, Viewport,
+    ActuatorLink, ActuatorSearch, AtlasBest, AtlasCell, Constraints, Design, DesignLimits,
+    DesignOptions, DesignReport, Dyad, InputRequirement, InvalidInput, Limit, NearMiss,
+    PivotRegion, Point2, RankBy, SearchPoint, Space, Task, Viewport,
 };
 use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyIndexError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use crate::actuator::PyActuator;
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask, dyad_tuple};
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::drive::PyDrive;
@@ -260,6 +261,9 @@ pub struct PyDesign {
     inner: Design,
     /// The drive with what it was found under (`inner.drive` for Python).
     drive: Option<PyDrive>,
+    /// The actuator's options and the constraints it was placed under
+    /// (with `inner.actuator`, for Python).
+    strut: Option<(ActuatorOptions, DesignLimits, Constraints)>,
 }
 
 impl PyDesign {
@@ -280,8 +284,11 @@ impl PyDesign {
         });
         PyDesign {
             task,
-            inner: *d,
+            inner: d.clone(),
             drive,
+            strut: report
+                .actuator
+                .map(|a| (a.options, report.limits, report.space.constraints())),
         }
     }
 }
@@ -318,10 +325,21 @@ impl PyDesign {
     fn drive(&self) -> Option<PyDrive> {
         self.drive.clone()
     }
+    /// With `input="actuator"`: the linear actuator placed with the
+    /// linkage (None without).
+    #[getter]
+    fn actuator(&self) -> PyResult<Option<PyActuator>> {
+        match (&self.inner.actuator, &self.strut) {
+            (Some(a), Some((o, l, c))) => {
+                PyActuator::found(a.clone(), self.task, o, l, c).map(Some)
+            }
+            _ => Ok(None),
+        }
+    }
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
     #[pyo3(signature = (task, driving, driven, score, size_ratio, ranked_by, kind, coarse, refined,
-        coarse_score, evaluations, drive = None))]
+        evaluations, attached = (None, None)))]
     fn _from_state(
         task: PyTask,
         driving: (PyPoint, PyPoint),
@@ -330,15 +348,17 @@ impl PyDesign {
         size_ratio: f64,
         ranked_by: &str,
         kind: &str,
-        coarse: [f64; 4],
+        coarse: ([f64; 4], f64),
         refined: [f64; 4],
-        coarse_score: f64,
         evaluations: usize,
-        drive: Option<Bound<'_, PyDrive>>,
+        attached: (Option<Bound<'_, PyDrive>>, Option<Bound<'_, PyActuator>>),
     ) -> PyResult<Self> {
+        let ((coarse, coarse_score), (drive, actuator)) = (coarse, attached);
         let linkage = linkage_of(&task.inner, driving, driven)?;
         let drive = drive.map(|d| d.get().clone());
+        let strut = actuator.as_ref().map(|a| a.get().parts());
         Ok(PyDesign {
+            strut: strut.as_ref().map(|s| s.1.clone()),
             drive: drive.clone(),
             task: task.inner,
             inner: Design {
@@ -351,6 +371,7 @@ impl PyDesign {
                 coarse_score,
                 evaluations,
                 drive: drive.map(|d| d.inner),
+                actuator: strut.map(|s| s.0),
             },
         })
     }
@@ -366,11 +387,10 @@ impl PyDesign {
             d.size_ratio,
             d.ranked_by.as_str(),
             kind,
-            coarse,
+            (coarse, d.coarse_score),
             refined,
-            d.coarse_score,
             d.evaluations,
-            self.drive.clone(),
+            (self.drive.clone(), self.actuator().ok().flatten()),
         );
         reduce_to::<PyDesign>(py, "_from_state", args)
     }
@@ -551,6 +571,18 @@ impl PyDesignReport {
     fn undriven(&self) -> usize {
         self.inner.undriven
     }
+    /// With a linear actuator: the candidates passed over for want of a
+    /// clear, acceptable placement.
+    #[getter]
+    fn unplaced(&self) -> usize {
+        self.inner.unplaced
+    }
+    /// Whether the designs were searched with a linear actuator
+    /// (`input="actuator"`).
+    #[getter]
+    fn actuator(&self) -> bool {
+        self.inner.actuator.is_some()
+    }
     /// Whether the designs were searched with a motor (`input="motor"`).
     #[getter]
     fn motor(&self) -> bool {
@@ -589,7 +621,7 @@ impl PyDesignReport {
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
     #[pyo3(signature = (task, designs, limits, space, rank_by, min_separation, search_box, counts,
-        rejections, near_misses, motor = None, undriven = 0))]
+        rejections, near_misses, inputs = (None, None), passed = (0, 0)))]
     fn _from_state(
         task: PyTask,
         designs: Vec<PyDesign>,
@@ -601,9 +633,23 @@ impl PyDesignReport {
         counts: (usize, usize, usize, usize),
         rejections: Vec<(String, usize)>,
         near_misses: Vec<PyNearMiss>,
-        motor: Option<(f64, f64)>,
-        undriven: usize,
+        inputs: (Option<(f64, f64)>, Option<StrutState>),
+        passed: (usize, usize),
     ) -> PyResult<Self> {
+        let ((motor, actuator), (undriven, unplaced)) = (inputs, passed);
+        let actuator = actuator
+            .map(|(link, ratio, travel, point, samples)| {
+                Ok::<_, PyErr>(ActuatorSearch {
+                    options: ActuatorOptions {
+                        link: link.parse::<ActuatorLink>().py()?,
+                        max_stroke_ratio: ratio,
+                        travel_samples: travel,
+                    },
+                    point: point.map(|p| p.0),
+                    samples,
+                })
+            })
+            .transpose()?;
         Ok(PyDesignReport {
             task: task.inner,
             inner: DesignReport {
@@ -632,6 +678,8 @@ impl PyDesignReport {
                     max_time_ratio,
                 }),
                 undriven,
+                actuator,
+                unplaced,
             },
         })
     }
@@ -653,8 +701,20 @@ impl PyDesignReport {
             ),
             self.rejections(),
             self.near_misses(),
-            r.motor.map(|m| (m.swing_margin, m.max_time_ratio)),
-            r.undriven,
+            (
+                r.motor.map(|m| (m.swing_margin, m.max_time_ratio)),
+                r.actuator.map(|a| {
+                    let o = a.options;
+                    (
+                        o.link.as_str(),
+                        o.max_stroke_ratio,
+                        o.travel_samples,
+                        a.point.map(pt),
+                        a.samples,
+                    )
+                }),
+            ),
+            (r.undriven, r.unplaced),
         );
         reduce_to::<PyDesignReport>(py, "_from_state", args)
     }
@@ -702,12 +762,29 @@ fn options(
     input: Option<&str>,
     swing_margin_deg: Real,
     max_time_ratio: Option<Real>,
+    actuator_link: &str,
+    actuator_point: Option<PyPoint>,
+    max_stroke_ratio: Real,
+    actuator_samples: Count,
 ) -> PyResult<DesignOptions> {
     let mut limits = limits.map(|l| l.inner).unwrap_or_default();
-    let motor = motor_of(&mut limits, input, swing_margin_deg, max_time_ratio)?;
+    let strut = StrutArgs {
+        link: actuator_link,
+        point: actuator_point.map(|p| p.0),
+        max_stroke_ratio: max_stroke_ratio.0,
+        samples: actuator_samples.0,
+    };
+    let actuator = strut.search(&mut limits, input)?;
+    let motor = motor_of(
+        &mut limits,
+        input.filter(|_| actuator.is_none()),
+        swing_margin_deg,
+        max_time_ratio,
+    )?;
     Ok(DesignOptions {
         limits,
         motor,
+        actuator,
         space: space.map(|s| s.inner).unwrap_or_default(),
         rank_by: rank_by.parse::<RankBy>().py()?,
         top: top.0,
@@ -718,6 +795,59 @@ fn options(
         starts: starts.0,
         max_iterations: max_iterations.0,
     })
+}
+
+/// A report's actuator search as plain data (for pickling): the link, the
+/// stroke ratio limit, the travel samples, the point, the ground samples.
+type StrutState = (String, f64, usize, Option<PyPoint>, usize);
+
+/// The actuator's keywords of `burmester.design`.
+struct StrutArgs<'a> {
+    link: &'a str,
+    point: Option<Point2<f64>>,
+    max_stroke_ratio: f64,
+    samples: usize,
+}
+
+impl StrutArgs<'_> {
+    /// With `input="actuator"`: the actuator's search (any input); its
+    /// keywords refused otherwise.
+    fn search(
+        &self,
+        limits: &mut DesignLimits,
+        input: Option<&str>,
+    ) -> PyResult<Option<ActuatorSearch>> {
+        let wanted = input.is_some_and(|i| i.eq_ignore_ascii_case("actuator"));
+        if !wanted {
+            let set = self.link != "coupler"
+                || self.point.is_some()
+                || self.max_stroke_ratio != 1.8
+                || self.samples != 64;
+            if set {
+                return Err(crate::errors::invalid(
+                    "needs_actuator",
+                    format!(
+                        "actuator_link, actuator_point, max_stroke_ratio and actuator_samples set \
+                         the linear actuator; pass input=\"actuator\" with them (got input={:?})",
+                        input.unwrap_or("None")
+                    ),
+                ));
+            }
+            return Ok(None);
+        }
+        limits.input = InputRequirement::Any;
+        let search = ActuatorSearch {
+            options: ActuatorOptions {
+                link: self.link.parse::<ActuatorLink>().py()?,
+                max_stroke_ratio: self.max_stroke_ratio,
+                ..ActuatorOptions::default()
+            },
+            point: self.point,
+            samples: self.samples,
+        };
+        search.validate().py()?;
+        Ok(Some(search))
+    }
 }
 
 /// The motor's options of `input` (`"motor"`: any input, drives attached)
@@ -742,7 +872,8 @@ fn motor_of(
         crate::errors::to_py(
             InvalidInput::UnknownName {
                 what: "input",
-                expected: "\"any\", \"crank\", \"rocker\" or \"motor\" (or None: the limits' own)",
+                expected: "\"any\", \"crank\", \"rocker\", \"motor\" or \"actuator\" (or None: the \
+                           limits' own)",
                 found: input.to_owned(),
             }
             .into(),
@@ -787,6 +918,10 @@ macro_rules! design_keywords {
             input: [Option<&str>] = [None],
             swing_margin_deg: [Real] = [Real(0.0)],
             max_time_ratio: [Option<Real>] = [None],
+            actuator_link: [&str] = ["coupler"],
+            actuator_point: [Option<PyPoint>] = [None],
+            max_stroke_ratio: [Real] = [Real(1.8)],
+            actuator_samples: [Count] = [Count(64)],
         }
     };
 }

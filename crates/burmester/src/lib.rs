@@ -129,6 +129,7 @@ pub(crate) mod simd;
 pub mod synthesis;
 pub mod tolerance;
 
+pub use design::ActuatorSearch;
 pub use design::{
     AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, Pair,
     PairContext, PairMap, Pivot, PivotAtlas, RankBy, SolutionMap, Varying,

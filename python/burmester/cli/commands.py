@@ -8,7 +8,7 @@ import json
 import math
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Callable, List, Literal, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Literal, Optional, Tuple
 
 import numpy as np
 
@@ -404,6 +404,7 @@ def cmd_design(args: argparse.Namespace) -> int:
     spec = _with_units(_load(args.task), args)  # the task file's errors first
     margin = args.margin if args.margin is not None else 0.0
     max_time_ratio = args.max_time_ratio if args.max_time_ratio is not None else math.inf
+    strut = _design_strut(args)
     if not args.motor and (args.margin is not None or args.max_time_ratio is not None):
         raise UsageError("--margin and --max-time-ratio set the motor's drive: give --motor with them")
     if not 0.0 <= margin < 90.0:
@@ -435,18 +436,21 @@ def cmd_design(args: argparse.Namespace) -> int:
     try:
         report = burmester.design(task, space=spec.space, limits=spec.limits, rank_by=args.rank_by,
                                   top=args.top, client=client, progress=bar,
-                                  input="motor" if args.motor else None, swing_margin_deg=margin,
-                                  max_time_ratio=max_time_ratio)
+                                  input=strut.pop("input", "motor" if args.motor else None),
+                                  swing_margin_deg=margin, max_time_ratio=max_time_ratio, **strut)
     finally:
         if client is not None:
             client.close()
     if args.json:
         doc = design_document(spec, report)
+        doc = _actuator_document(doc, report) if report.actuator else doc
         print(json.dumps(_motor_document(doc, report) if report.motor else doc, indent=2))
     else:
         print(design_table(spec, report))
         if report.motor:
             print(motor_table(report))
+        if report.actuator:
+            print(_actuator_section(report, spec.units or ""))
     if out is None:
         return 0
     said = sys.stderr if args.json else sys.stdout
@@ -455,6 +459,15 @@ def cmd_design(args: argparse.Namespace) -> int:
         return 0
     sfb = report[0].linkage
     drive = report[0].drive
+    strut_placed = report[0].actuator
+    if strut_placed is not None and export is None and not animated:
+        from burmester import actuators
+
+        ax = actuators.draw_actuator(strut_placed)
+        _save(ax.figure, out, _picture_dpi(args), args.force)
+        print(f"wrote {out}: the best design with its linear actuator, stroke {strut_placed.stroke:.1f}, "
+              f"ratio {strut_placed.stroke_ratio:.3f}", file=said)
+        return 0
     if drive is not None:
         _draw_sixbar(args, drive, out, export, plot, units, args.travel,
                      title=f"best design with its motor drive ({drive.ranked_by or 'drive'})")
@@ -470,6 +483,60 @@ def cmd_design(args: argparse.Namespace) -> int:
     print(f"wrote {out}: the best design, {f.grashof}, {report[0].size_ratio:.1f}x the task's size, "
           f"transmission >= {f.min_transmission_deg:.1f} deg: {lengths}", file=said)
     return 0
+
+
+def _design_strut(args: argparse.Namespace) -> Dict[str, Any]:
+    """The keywords of ``burmester.design`` for ``design --input``:
+    ``--input motor`` sets ``args.motor``; ``--input actuator`` gives the
+    actuator's keywords, which are refused without it."""
+    which = args.design_input
+    if which == "motor":
+        args.motor = True
+        return {}
+    given = [flag for flag, v in (("--actuator-link", args.actuator_link), ("--actuator-point", args.actuator_point),
+                                  ("--max-stroke-ratio", args.max_stroke_ratio)) if v is not None]
+    if which != "actuator":
+        if given:
+            raise UsageError(f"{', '.join(given)} set the linear actuator: give --input actuator with them")
+        return {}
+    if args.motor:
+        raise UsageError("--motor and --input actuator: a design has one input, give one of them")
+    kw: Dict[str, Any] = {"input": "actuator"}
+    if args.actuator_link is not None:
+        kw["actuator_link"] = args.actuator_link
+    if args.actuator_point is not None:
+        kw["actuator_point"] = (args.actuator_point[0], args.actuator_point[1])
+    if args.max_stroke_ratio is not None:
+        if not args.max_stroke_ratio >= 1.0:
+            raise UsageError(f"--max-stroke-ratio must be at least 1, got {args.max_stroke_ratio:g}")
+        kw["max_stroke_ratio"] = args.max_stroke_ratio
+    return kw
+
+
+def _actuator_section(report: burmester.DesignReport, units: str) -> str:
+    """The actuator section of ``burmester design --input actuator``: each
+    design's placement (:func:`burmester.actuators.actuator_table`) and the
+    designs passed over for want of one."""
+    from burmester import actuators
+
+    lines = ["With a linear actuator:"]
+    for k, d in enumerate(report, start=1):
+        if d.actuator is not None:
+            lines.append(actuators.actuator_table(d.actuator, f"design {k}", units))
+    if report.unplaced:
+        lines.append(f"{report.unplaced} candidate design(s) passed over: no clear, acceptable actuator "
+                     "placement for them under these limits and this space.")
+    return "\n".join(lines)
+
+
+def _actuator_document(doc: Dict[str, Any], report: burmester.DesignReport) -> Dict[str, Any]:
+    """``doc`` with each design's ``"actuator"`` and the count passed over."""
+    from burmester import actuators
+
+    for entry, d in zip(doc["designs"], report):
+        entry["actuator"] = actuators.actuator_record(d.actuator) if d.actuator is not None else None
+    doc["unplaced"] = report.unplaced
+    return doc
 
 
 def _draw_linkage(args: argparse.Namespace, sfb: burmester.SynthesizedFourBar, task: burmester.Task,

@@ -252,6 +252,19 @@ def _add_design(sub: _Commands) -> None:
                    help="with --motor: swing the input this much beyond the first and last pose (default: 0)")
     p.add_argument("--max-time-ratio", type=_finite, default=None, metavar="R",
                    help="with --motor: largest acceptable time ratio of the strokes (default: no limit)")
+    p.add_argument("--input", choices=("motor", "actuator"), default=None, dest="design_input",
+                   help="motor: as --motor; actuator: every design driven by a linear actuator (a cylinder, "
+                   "a gas strut) placed with it: its ground pivot on the [space] pivot region, its length "
+                   "monotone through the poses, within --max-stroke-ratio and the limits, its line clear of "
+                   "the links, obstacles and envelope over the travel (-o then draws the best design with "
+                   "its actuator); one without such a placement is passed over")
+    p.add_argument("--actuator-link", choices=("coupler", "crank", "rocker"), default=None,
+                   help="with --input actuator: the link it acts on (default: coupler)")
+    p.add_argument("--actuator-point", type=_finite, nargs=2, default=None, metavar=("X", "Y"),
+                   help="with --input actuator: its moving point where it is at pose 1 (default: a few points "
+                   "of the link are tried)")
+    p.add_argument("--max-stroke-ratio", type=_finite, default=None, metavar="R",
+                   help="with --input actuator: largest open over closed length (default: 1.8)")
     _force_arg(p)
     p.set_defaults(func=cmd_design)
 

@@ -165,3 +165,31 @@ pub(crate) fn bits(c: &burmester::design::Columns) -> Vec<Vec<u64>> {
         c.acceptable.iter().map(|&v| u64::from(v)).collect(),
     ]
 }
+
+/// `task` and its linkage `sfb` moved by `tf` (a similarity that turns by
+/// `turn` radians): the moved task and the linkage rebuilt on it from the
+/// moved dyads.
+pub(crate) fn moved_linkage(
+    task: &Task,
+    sfb: &burmester::SynthesizedFourBar,
+    tf: impl Fn(Point2<f64>) -> Point2<f64>,
+    turn: f64,
+) -> (Task, burmester::SynthesizedFourBar) {
+    use burmester::Dyad;
+    let poses: Vec<[f64; 3]> = task
+        .poses()
+        .iter()
+        .map(|p| {
+            let q = tf(p.position);
+            [q.x, q.y, p.angle + turn]
+        })
+        .collect();
+    let moved = Task::from_xya(&poses).unwrap();
+    let linkage = moved
+        .four_bar(
+            &Dyad::new(tf(sfb.driving.center), tf(sfb.driving.circle)),
+            &Dyad::new(tf(sfb.driven.center), tf(sfb.driven.circle)),
+        )
+        .unwrap();
+    (moved, linkage)
+}

@@ -52,6 +52,32 @@
 //! golden section about its smallest sample. A monotone placement's
 //! `s_min` and `s_max` are its lengths at the first and the last pose,
 //! exact.
+//!
+//! # Clearance
+//!
+//! A [placement](ActuatorContext::placement) also says whether the strut,
+//! its line from `G` to `Q` a capsule as wide as the links
+//! ([`Constraints::link_width`]), stays clear over the travel
+//! ([`Actuator::min_clearance`], [`Actuator::clear`]) of
+//!
+//! * the linkage's links, each the capsule of its center line (the crank
+//!   `A0 A`, the coupler's bar `A B`, the rocker `C0 B`), except a link
+//!   that carries `Q` (the one it acts on, or one joined to it at `Q`):
+//!   such a link may not cross the strut away from `Q` (a strut through
+//!   its own link's bar, a bracket on the wrong side);
+//! * the constraints' obstacles (the ground pivot included: a pivot on an
+//!   obstacle is a hit) and the envelope's boundary (the ground pivot
+//!   inside it).
+//!
+//! The gap (the least distance less the capsules' half widths; negative
+//! where they overlap, and the two half widths below zero at a crossing)
+//! is taken at every travel sample and its smallest sample refined by
+//! golden section, as the transmission angle is: two contacts closer
+//! together than a sample step could be missed, as could a contact of a
+//! shape thinner than the links move in a step. The map's columns do not
+//! have it (its `acceptable` checks the ground pivot on the base plate);
+//! [`Task::design`](crate::Task::design) with an actuator keeps only clear
+//! placements.
 
 use nalgebra::{Point2, Vector2};
 
@@ -66,6 +92,10 @@ use crate::error::{
 use crate::geom::{Grid, PerPose};
 use crate::linkage::actuator::{ActuatorLink, LinkPoint};
 use crate::synthesis::SynthesizedFourBar;
+
+mod clearance;
+
+use clearance::StrutCheck;
 
 /// Calls `$callback! { ... }` with the actuator map's columns, each as
 /// `/// docs  name: type = value where there is no actuator`, in order. The
@@ -369,6 +399,15 @@ pub struct Actuator {
     pub size_ratio: f64,
     /// Whether it meets the limits of the context it came from.
     pub acceptable: bool,
+    /// The smallest gap over the travel between the strut (a capsule as
+    /// wide as the links) and the links that do not carry its moving
+    /// point, the obstacles and the envelope's boundary; negative where
+    /// they overlap (module docs, "Clearance").
+    pub min_clearance: f64,
+    /// The input angle where it is.
+    pub clearance_angle: f64,
+    /// The strut stays clear over the travel: `min_clearance > 0`.
+    pub clear: bool,
     /// Its sample `(j, i)` in a map, if it came from one.
     pub index: Option<(usize, usize)>,
     /// Its signed distance to the nearest non-monotone sample (grid units),
@@ -426,9 +465,8 @@ impl ActuatorContext {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] for invalid limits, options or constraints (an
-    /// envelope or obstacles among them: an actuator map checks the base
-    /// plate only), a non-finite point, or a grid of more than
+    /// [`InvalidInput`] for invalid limits, options or constraints, a
+    /// non-finite point, or a grid of more than
     /// [`MAX_GRID_SAMPLES`](Self::MAX_GRID_SAMPLES) samples;
     /// [`DriveError::NoTravel`] for a linkage that does not carry the
     /// coupler through its poses in order in one mode;
@@ -445,19 +483,6 @@ impl ActuatorContext {
         limits.validate()?;
         options.validate()?;
         constraints.prepare()?;
-        if constraints.envelope.is_some() || !constraints.obstacles.is_empty() {
-            let found = if constraints.envelope.is_some() {
-                "envelope"
-            } else {
-                "obstacles"
-            };
-            return Err(InvalidInput::UnknownName {
-                what: "actuator constraint",
-                expected: "base_plate (an actuator map checks the ground pivot on the base plate only)",
-                found: found.to_owned(),
-            }
-            .into());
-        }
         if grid.len() > Self::MAX_GRID_SAMPLES {
             return Err(InvalidInput::GridSize {
                 nx: grid.nx(),
@@ -503,7 +528,8 @@ impl ActuatorContext {
     pub fn options(&self) -> &ActuatorOptions {
         &self.options
     }
-    /// The constraints behind `acceptable` (a base plate).
+    /// The constraints: the base plate behind `acceptable`, the obstacles
+    /// and envelope behind a placement's clearance.
     pub fn constraints(&self) -> &Constraints {
         &self.constraints
     }
@@ -641,6 +667,7 @@ impl ActuatorContext {
             ..e
         };
         let acceptable = self.meets(&prepared, g, &exact, min_transmission);
+        let (min_clearance, clearance_angle) = self.clearance(&prepared, g)?;
         Ok(Actuator {
             linkage: self.linkage,
             link: self.options.link,
@@ -659,12 +686,45 @@ impl ActuatorContext {
             link_ratio: exact.link_ratio,
             size_ratio: exact.size_ratio,
             acceptable,
+            min_clearance,
+            clearance_angle,
+            clear: min_clearance > 0.0,
             index: None,
             margin: f64::NAN,
             score: f64::NAN,
             ranked_by: None,
             link_point: t.point,
         })
+    }
+
+    /// The strut's smallest gap over the travel with its ground pivot at
+    /// `g` and the input angle where it is (module docs, "Clearance").
+    fn clearance(&self, prepared: &Prepared, g: Point2<f64>) -> Result<(f64, f64)> {
+        let t = &self.travel;
+        let mode = match self.linkage.modes().first() {
+            Some(Some(m)) => *m,
+            _ => return Err(DriveError::NoTravel.into()),
+        };
+        let check = StrutCheck {
+            fourbar: &self.linkage.fourbar,
+            mode,
+            link: self.options.link,
+            prepared,
+            ground: g,
+            tiny: t.tiny,
+        };
+        let (mut worst, mut least) = (0, f64::INFINITY);
+        for (k, (&th, &q)) in t.theta.iter().zip(&t.q).enumerate() {
+            let gap = check.gap(th, q)?;
+            if gap < least {
+                (worst, least) = (k, gap);
+            }
+        }
+        let a = t.theta[worst.saturating_sub(1)];
+        let b = t.theta[(worst + 1).min(t.theta.len() - 1)];
+        let gap_at = |x: f64| check.gap(x, t.point.at(x)?.0);
+        let (th, gap) = golden_min(gap_at, a, b, least, t.theta[worst])?;
+        Ok((gap, th))
     }
 
     /// The placement of sample `k`, with its index.

@@ -471,6 +471,17 @@ impl Prepared {
         Some(true)
     }
 
+    /// The envelope's boundary edges, if any (the actuator's clearance,
+    /// `design::actuator`).
+    pub(crate) fn envelope_edges(&self) -> Option<&[Segment]> {
+        self.envelope.as_ref().map(|(_, e)| e.as_slice())
+    }
+
+    /// Half the links' width: the radius of their capsules.
+    pub(crate) fn radius(&self) -> f64 {
+        self.radius
+    }
+
     /// How many intervals the clearance check starts from.
     pub(crate) fn samples(&self) -> usize {
         self.samples

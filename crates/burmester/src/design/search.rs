@@ -68,6 +68,24 @@
 //! the four-bars: with [`InputRequirement::Crank`] no drive is ever
 //! needed, with [`InputRequirement::Rocker`] every design gets one.
 //!
+//! # With a linear actuator
+//!
+//! With [`DesignOptions::actuator`] every design returned is driven by a
+//! linear actuator (a cylinder, a gas strut) between a ground pivot on the
+//! space's pivot region and a point of one of its moving links
+//! ([`ActuatorSearch`]; the [actuator](crate::design::actuator) module).
+//! For each candidate, in rank order and only once it passes the
+//! separation test, the actuator's placement map over the pivot region's
+//! box (or, with pivots anywhere, the linkage's box widened by its size)
+//! is computed for the given moving point or for each of a few points of
+//! the link ([`ActuatorSearch::points`]), and the best placement by the
+//! design's ranking that is monotone, within the limits (the actuator's
+//! stroke ratio, its transmission angle, the link and size ratios with
+//! the open actuator) and **clear** over the travel (its line off the
+//! links that do not carry its point, the obstacles and the envelope,
+//! [`Actuator::clear`]) is attached ([`Design::actuator`]). A candidate
+//! with no such placement is passed over ([`DesignReport::unplaced`]).
+//!
 //! # When nothing fits
 //!
 //! The report has no designs, never an error and never a silent
@@ -83,6 +101,7 @@ use core::sync::atomic::{AtomicUsize, Ordering};
 use nalgebra::Point2;
 use rayon::prelude::*;
 
+use crate::design::actuator::Actuator;
 use crate::design::atlas::check_scored;
 use crate::design::constraints::Prepared;
 use crate::design::drive::{Drive, DriveOptions};
@@ -99,6 +118,9 @@ use crate::tolerance;
 
 mod motor;
 mod simplex;
+mod strut;
+
+pub use strut::ActuatorSearch;
 
 #[cfg(test)]
 mod judge_equal;
@@ -143,6 +165,10 @@ pub struct DesignOptions {
     /// swings gets the best drive under these options ([`Design::drive`];
     /// module docs, "With a motor"); default `None`: the four-bars alone.
     pub motor: Option<DriveOptions>,
+    /// With `Some`, every design is driven by a linear actuator placed
+    /// with it ([`Design::actuator`]; module docs, "With a linear
+    /// actuator"); default `None`. Not with a motor.
+    pub actuator: Option<ActuatorSearch>,
 }
 
 impl Default for DesignOptions {
@@ -159,6 +185,7 @@ impl Default for DesignOptions {
             starts: 48,
             max_iterations: 3000,
             motor: None,
+            actuator: None,
         }
     }
 }
@@ -223,6 +250,15 @@ impl DesignOptions {
         if let Some(motor) = &self.motor {
             motor.validate()?;
         }
+        if let Some(actuator) = &self.actuator {
+            let input = if self.motor.is_some() { "both" } else { "" };
+            in_set(
+                "design input",
+                input,
+                "a motor or a linear actuator, not both",
+            )?;
+            actuator.validate()?;
+        }
         self.space.validate(task, &self.limits)
     }
 
@@ -231,6 +267,21 @@ impl DesignOptions {
         self.min_separation
             .unwrap_or(Self::DEFAULT_SEPARATION * task.span())
     }
+}
+
+/// Refuses `found` for `what` unless it is empty (`expected` says what
+/// may be given).
+fn in_set(what: &'static str, found: &str, expected: &'static str) -> Result<()> {
+    if found.is_empty() {
+        return Ok(());
+    }
+    let found = found.to_owned();
+    Err(InvalidInput::UnknownName {
+        what,
+        expected,
+        found,
+    }
+    .into())
 }
 
 /// Where the search found a design, or started from.
@@ -262,7 +313,7 @@ pub enum SearchPoint {
 }
 
 /// One answer of the search.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Design {
     /// The linkage: its driving dyad drives ([`SynthesizedFourBar::driving`]).
     pub linkage: SynthesizedFourBar,
@@ -286,6 +337,10 @@ pub struct Design {
     /// poses, [`best_drive`](crate::design::best_drive)); `None` without a
     /// motor, or when the input turns fully (the motor turns it directly).
     pub drive: Option<Drive>,
+    /// With a linear actuator ([`DesignOptions::actuator`]): the best
+    /// placement found with the linkage, monotone, within the limits and
+    /// clear of the links, the obstacles and the envelope; `None` without.
+    pub actuator: Option<Actuator>,
 }
 
 /// A limit or a check a candidate can fail.
@@ -414,6 +469,12 @@ pub struct DesignReport {
     /// was acceptable (each would have been a design: acceptable and
     /// distinct from the better designs); 0 without a motor.
     pub undriven: usize,
+    /// How a linear actuator was placed, where the designs were searched
+    /// with one ([`DesignOptions::actuator`]).
+    pub actuator: Option<ActuatorSearch>,
+    /// With a linear actuator: the candidates passed over because no
+    /// placement for them was acceptable and clear; 0 without.
+    pub unplaced: usize,
 }
 
 impl DesignReport {
@@ -1084,6 +1145,8 @@ impl Task {
             near_misses: Vec::new(),
             motor: options.motor,
             undriven: 0,
+            actuator: options.actuator,
+            unplaced: 0,
         }
     }
 
@@ -1198,6 +1261,7 @@ impl Task {
                     coarse_score: s.score,
                     evaluations,
                     drive: None,
+                    actuator: None,
                 })
             })
             .collect();
@@ -1472,6 +1536,7 @@ impl Task {
                         coarse_score: score,
                         evaluations: 1,
                         drive: None,
+                        actuator: None,
                     });
                 }
             }

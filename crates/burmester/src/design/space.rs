@@ -148,7 +148,7 @@ impl PivotRegion {
 }
 
 /// The distance from `p` to the segment `ab`.
-fn segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
+pub(crate) fn segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
     let ab = b - a;
     let len2 = ab.norm_squared();
     let t = if len2 > 0.0 {

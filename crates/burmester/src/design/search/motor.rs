@@ -1,7 +1,8 @@
-//! The designs of a search with a motor ([`DesignOptions::motor`]): the
-//! ranked, distinct designs, each whose input swings given its best drive,
-//! lazily in rank order (the module docs of [`search`](super), "With a
-//! motor").
+//! The designs of a search with a motor ([`DesignOptions::motor`]) or a
+//! linear actuator ([`DesignOptions::actuator`]): the ranked, distinct
+//! designs, each whose input swings given its best drive (each given its
+//! actuator's placement), lazily in rank order (the module docs of
+//! [`search`](super), "With a motor", "With a linear actuator").
 
 use super::{Design, DesignOptions, DesignReport, apart, rank_designs, sort_designs};
 use crate::design::Constraints;
@@ -23,6 +24,16 @@ impl Task {
         control: &Control<'_>,
     ) -> Result<Vec<Design>> {
         let sep = options.separation(self);
+        if let Some(search) = &options.actuator {
+            // Each with the best clear placement of its actuator.
+            let (designs, unplaced) =
+                attached_designs(all, sep, options.top, control, |d, part| {
+                    d.actuator = search.place(d, options, part)?;
+                    Ok(d.actuator.is_some())
+                })?;
+            report.unplaced = unplaced;
+            return Ok(designs);
+        }
         match &options.motor {
             None => Ok(rank_designs(all, sep, options.top)),
             Some(motor) => {
@@ -50,54 +61,75 @@ fn drive_constraints(options: &DesignOptions) -> Constraints {
 /// were passed over for want of a drive. A drive is searched only for a
 /// candidate that passes the separation test against the designs kept.
 fn driven_designs(
-    mut all: Vec<Design>,
+    all: Vec<Design>,
     sep: f64,
     options: &DesignOptions,
     motor: &DriveOptions,
     control: &Control<'_>,
 ) -> Result<(Vec<Design>, usize)> {
-    sort_designs(&mut all);
     let constraints = drive_constraints(options);
-    // The drive search follows the cancel flag, not the design's progress.
+    attached_designs(all, sep, options.top, control, |d, part| {
+        if d.linkage.figures.input_full {
+            return Ok(true);
+        }
+        match best_drive(
+            &d.linkage,
+            &options.limits,
+            motor,
+            &constraints,
+            options.rank_by,
+            part,
+        ) {
+            Ok(drive) => {
+                d.drive = Some(drive);
+                Ok(true)
+            }
+            Err(Error::Drive(_)) => Ok(false),
+            Err(e) => Err(e),
+        }
+    })
+}
+
+/// The designs of `all` best first, at least `sep` apart, at most `top`,
+/// each that `attach` gives its drive (true); and how many `attach`
+/// passed over (false). `attach` runs only for a candidate that passes
+/// the separation test against the designs kept, with a control that
+/// follows `control`'s cancel flag.
+fn attached_designs(
+    mut all: Vec<Design>,
+    sep: f64,
+    top: usize,
+    control: &Control<'_>,
+    mut attach: impl FnMut(&mut Design, &Control<'_>) -> Result<bool>,
+) -> Result<(Vec<Design>, usize)> {
+    sort_designs(&mut all);
+    // The attached search follows the cancel flag, not the design's progress.
     let mut part = Control::new();
     if let Some(flag) = control.cancel_flag() {
         part = part.with_cancel(flag);
     }
     let mut out: Vec<Design> = Vec::new();
-    let mut undriven = 0;
+    let mut passed = 0;
     for mut d in all {
-        if out.len() >= options.top {
+        if out.len() >= top {
             break;
         }
         if !out.iter().all(|o| apart(&o.linkage, &d.linkage) >= sep) {
             continue;
         }
-        if !d.linkage.figures.input_full {
-            if control.is_cancelled() {
-                return Err(Error::Cancelled {
-                    done: out.len(),
-                    total: options.top,
-                });
-            }
-            match best_drive(
-                &d.linkage,
-                &options.limits,
-                motor,
-                &constraints,
-                options.rank_by,
-                &part,
-            ) {
-                Ok(drive) => d.drive = Some(drive),
-                Err(Error::Drive(_)) => {
-                    undriven += 1;
-                    continue;
-                }
-                Err(e) => return Err(e),
-            }
+        if control.is_cancelled() {
+            return Err(Error::Cancelled {
+                done: out.len(),
+                total: top,
+            });
         }
-        out.push(d);
+        if attach(&mut d, &part)? {
+            out.push(d);
+        } else {
+            passed += 1;
+        }
     }
-    Ok((out, undriven))
+    Ok((out, passed))
 }
 
 #[cfg(test)]
