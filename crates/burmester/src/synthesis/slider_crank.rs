@@ -34,7 +34,13 @@ impl DyadKind {
     /// joint - center)` ([`AssemblyMode::of_loop_within`]); a slider: the
     /// sign of `<crank_joint - joint, u>` ([`AssemblyMode::of_slider`], the
     /// limit of the crank's as its center goes to infinity along the
-    /// guide's normal). `None` at a toggle.
+    /// guide's normal). An inverted slider, whose moving pivot is at
+    /// infinity: `joint` is read as the swivel plus the slot's direction
+    /// where the slot is ([`InvertedSlider::slot_point_at`]), and the mode
+    /// is the sign of the slot position `<S - crank_joint, u3>`
+    /// ([`AssemblyMode::of_inverted`]). `None` at a toggle.
+    ///
+    /// [`InvertedSlider::slot_point_at`]: crate::InvertedSlider::slot_point_at
     pub fn assembly_mode(
         &self,
         crank_joint: Point2<f64>,
@@ -46,6 +52,9 @@ impl DyadKind {
                 AssemblyMode::of_loop_within(joint - crank_joint, joint - d.center, reach)
             }
             DyadKind::Slider(s) => AssemblyMode::of_slider(joint - crank_joint, s.guide, reach),
+            DyadKind::Inverted(v) => {
+                AssemblyMode::of_inverted(v.swivel - crank_joint, joint - v.swivel, reach)
+            }
         }
     }
 }
@@ -182,7 +191,7 @@ impl SynthesizedSliderCrank {
 }
 
 /// [`travel`] for 3 to 5 directions.
-fn travel_n(e: &[Vector2<f64>], g: Vector2<f64>, lo: bool, hi: bool) -> Option<Travel> {
+pub(crate) fn travel_n(e: &[Vector2<f64>], g: Vector2<f64>, lo: bool, hi: bool) -> Option<Travel> {
     match e.len() {
         3 => Some(travel::<3>(e.try_into().ok()?, g, lo, hi)),
         4 => Some(travel::<4>(e.try_into().ok()?, g, lo, hi)),
