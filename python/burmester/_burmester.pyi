@@ -68,6 +68,9 @@ __all__ = [
     "SynthesizedSliderCrank",
     "InvertedSlider",
     "SliderDyad",
+    "InvertedConfiguration",
+    "InvertedSliderCrank",
+    "SynthesizedInvertedSliderCrank",
 ]
 
 __version__: str
