@@ -23,9 +23,8 @@ use nalgebra::Vector2;
 use crate::error::{InvalidInput, Result};
 use crate::geom::{PerPose, Pose, cross, rotate};
 use crate::linkage::{AssemblyMode, Direction, InvertedSliderCrank};
-use crate::synthesis::dyad::{travel_angles_of, travel_of, travel_stops_of};
 use crate::synthesis::slider_crank::travel_n;
-use crate::synthesis::{CrankOrder, Dyad, DyadKind, InvertedSlider, Task};
+use crate::synthesis::{Dyad, DyadKind, InvertedSlider, Task};
 use crate::tolerance;
 
 /// An inverted slider-crank built from a driving crank and an inverted
@@ -73,30 +72,9 @@ pub struct SynthesizedInvertedSliderCrank {
     pub swing_used: f64,
 }
 
+crate::synthesis::crank_travel::crank_travel_methods!(SynthesizedInvertedSliderCrank);
+
 impl SynthesizedInvertedSliderCrank {
-    /// The most crank angles [`travel_angles`](Self::travel_angles) returns.
-    pub const MAX_TRAVEL_SAMPLES: usize = 1 << 20;
-
-    /// Whether every pose is in one assembly mode (no branch defect, no
-    /// toggle at a pose).
-    pub fn is_branch_free(&self) -> bool {
-        match self.modes.first() {
-            Some(Some(m)) => self.modes.iter().all(|x| *x == Some(*m)),
-            _ => false,
-        }
-    }
-
-    /// Whether the motion through the poses in order is feasible:
-    /// branch-free, one circuit and a driving direction.
-    pub fn feasible(&self) -> bool {
-        self.is_branch_free() && self.one_circuit && self.direction != Direction::None
-    }
-
-    /// The cyclic order of the crank's positions at the poses.
-    pub fn order(&self) -> CrankOrder {
-        CrankOrder::from_angles(&self.input_angles)
-    }
-
     /// The linkage's size: the crank, the ground, the distances of the
     /// task's coupler point from the crank pin and from the swivel at pose
     /// 1, and the length of slot the block runs on over the travel (the
@@ -135,33 +113,6 @@ impl SynthesizedInvertedSliderCrank {
             position: self.linkage.coupler_point(&c, self.coupler_point),
             angle: c.theta3 + self.coupler_angle_offset,
         })
-    }
-
-    /// The travel: the crank angle at pose 1 and the signed angle the
-    /// crank turns through the poses to the last (positive
-    /// counter-clockwise); `None` without a driving direction.
-    pub fn travel(&self) -> Option<(f64, f64)> {
-        travel_of(&self.input_angles, self.direction)
-    }
-
-    /// The crank angle at each pose along the [`travel`](Self::travel),
-    /// unwrapped (monotone from the angle at pose 1); `None` without a
-    /// travel.
-    pub fn travel_stops(&self) -> Option<PerPose<f64>> {
-        travel_stops_of(&self.input_angles, self.travel()?)
-    }
-
-    /// `samples` crank angles evenly spaced over the travel, both ends
-    /// included; empty without a travel.
-    ///
-    /// # Errors
-    ///
-    /// [`InvalidInput::CountOutOfRange`] for fewer than 2 or more than
-    /// [`SynthesizedInvertedSliderCrank::MAX_TRAVEL_SAMPLES`] samples;
-    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when they cannot
-    /// be allocated.
-    pub fn travel_angles(&self, samples: usize) -> Result<Vec<f64>> {
-        travel_angles_of(self.travel(), samples, Self::MAX_TRAVEL_SAMPLES)
     }
 }
 

@@ -20,6 +20,7 @@
 //!   [`InvertedSlider`]).
 
 mod branch;
+mod crank_travel;
 mod dyad;
 mod errors;
 pub mod five;
