@@ -55,6 +55,7 @@ from burmester.design import design
 from burmester._burmester import Actuator, ActuatorMap
 from burmester.actuators import design_actuator
 from burmester._burmester import InvertedSlider, SliderDyad
+from burmester._burmester import InvertedConfiguration, InvertedSliderCrank, SynthesizedInvertedSliderCrank
 
 __all__ = [
     "AtlasPair",
@@ -105,4 +106,7 @@ __all__ = [
     "SynthesizedSliderCrank",
     "InvertedSlider",
     "SliderDyad",
+    "InvertedConfiguration",
+    "InvertedSliderCrank",
+    "SynthesizedInvertedSliderCrank",
 ]

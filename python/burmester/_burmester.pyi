@@ -68,6 +68,9 @@ __all__ = [
     "SynthesizedSliderCrank",
     "InvertedSlider",
     "SliderDyad",
+    "InvertedConfiguration",
+    "InvertedSliderCrank",
+    "SynthesizedInvertedSliderCrank",
 ]
 
 __version__: str
@@ -881,6 +884,20 @@ class Task:
         leave its guide (take a slider point of the task and the line
         through its positions), and :class:`DegenerateError` for a coupler
         of no length."""
+    def inverted_slider_crank(
+        self, driving: Tuple[Point, Point], driven: Tuple[Point, Point]
+    ) -> SynthesizedInvertedSliderCrank:
+        """The inverted slider-crank of the driving crank ``(A0, A1)`` and
+        the inverted slider ``(S, d)``: its swivel ``S`` (the block's ground
+        pivot) and the slot's direction ``d`` at pose 1 (as
+        :attr:`InvertedSlider.swivel` and :attr:`InvertedSlider.direction`;
+        ``d`` need not be unit). The slot's offset from the crank pin is
+        ``cross(d, S - A1)``. Raises :class:`InvalidInputError` (``cause``
+        ``"not_a_dyad"``) when ``A1`` is not a circle point of ``A0``,
+        (``"not_a_slider"``) when the body line leaves the swivel at a pose
+        (take one of :meth:`inverted_sliders`), (``"zero_direction"``) for a
+        zero direction, and :class:`AssemblyError` when the slot can never
+        be assembled."""
     @overload
     def driven_solution_map(
         self,
@@ -3210,4 +3227,223 @@ class SynthesizedSliderCrank:
     def __eq__(self, other: object, /) -> bool: ...
     def _repr_png_(self) -> Optional[bytes]:
         """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+
+
+# the inverted slider-crank (issue 27)
+
+@final
+class InvertedConfiguration:
+    """One solved position of an inverted slider-crank (from
+    :meth:`InvertedSliderCrank.solve`)."""
+
+    @property
+    def theta2(self) -> float:
+        """The crank angle, as given."""
+    @property
+    def theta3(self) -> float:
+        """The coupler angle: the slot's direction, in (-pi, pi]."""
+    @property
+    def slot(self) -> float:
+        """The slot position ``t = <S - A, u3>``: the swivel's signed
+        distance along the slot from the foot of the perpendicular from the
+        crank pin (positive in ``"open"``)."""
+    @property
+    def mode(self) -> Mode:
+        """The assembly mode asked for."""
+    @property
+    def toggle(self) -> bool:
+        """True at a toggle (a dead position of the crank: the crank pin
+        ``|e|`` from the swivel, ``t = 0``), where both modes coincide."""
+    @property
+    def transmission_angle(self) -> float:
+        """The angle between the force the block and slot carry (normal to
+        the slot) and the line from the swivel to the crank pin, in
+        [0, pi/2] radians: ``cos mu = |e| / |S - A|`` (pi/2 ideal, always so
+        for a slot through the pin; 0 at a dead position)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, ...]: ...
+
+@final
+class InvertedSliderCrank:
+    """An inverted slider-crank (RRPR): a crank about ``pivot`` (``A0``)
+    whose coupler carries a straight slot that slides through a block
+    pivoted on the ground at ``swivel`` (``S``): the slotted lever of a
+    shaper's quick return, the rod of an oscillating cylinder. The slot is
+    the line ``y = offset`` of the coupler frame (origin the crank pin
+    ``A``, x along the slot); ``offset = 0`` puts the pin on the slot's
+    line.
+
+    Parts go by keyword only: ``InvertedSliderCrank(crank=...,
+    swivel=(x, y), offset=0.0, pivot=(0, 0))``.
+
+    The position analysis is Norton's (*Design of Machinery*, section 4.7,
+    eqs. 4.18-4.20), in closed form. The two assembly modes carry the
+    four-bar's names in the limit of a coupler pin far along the slot's
+    normal: ``"open"`` where the swivel is ahead of the crank pin along the
+    slot (``t > 0``), ``"crossed"`` where it is behind.
+
+    Raises :class:`InvalidInputError` for a crank that is not positive and
+    finite, a point or offset that is not finite or a linkage larger than
+    1e300, and :class:`AssemblyError` (``cause`` ``"swivel_out_of_reach"``)
+    when the offset is larger than ground plus crank.
+    """
+
+    def __new__(
+        cls,
+        *,
+        crank: float,
+        swivel: Point,
+        offset: float = 0.0,
+        pivot: Point = (0.0, 0.0),
+    ) -> "InvertedSliderCrank": ...
+    def __getnewargs_ex__(self) -> Tuple[Tuple[()], dict[str, Any]]: ...
+    @property
+    def crank(self) -> float:
+        """The crank length ``r``."""
+    @property
+    def pivot(self) -> Point:
+        """The crank pivot ``A0``."""
+    @property
+    def swivel(self) -> Point:
+        """The swivel ``S``: the block's ground pivot."""
+    @property
+    def offset(self) -> float:
+        """``e``: the slot's signed offset from the crank pin."""
+    @property
+    def ground(self) -> float:
+        """``g = |S - A0|``."""
+    @property
+    def turns_fully(self) -> bool:
+        """Whether the crank turns fully: ``|g - r| >= |e|``."""
+    @property
+    def input_range(self) -> Optional[list[Tuple[float, float]]]:
+        """None when the crank turns fully, else its ``(start, end)`` arc
+        (counter-clockwise, pointing away from the swivel), bounded by the
+        dead positions where the crank pin is ``|e|`` from the swivel."""
+    @property
+    def dead_positions(self) -> list[float]:
+        """The crank angles that bound the input range (empty for a crank
+        that turns fully)."""
+    @property
+    def stroke(self) -> float:
+        """How far the block runs along the slot over the crank's range:
+        ``sqrt((g + r)^2 - e^2) - sqrt(max((g - r)^2, e^2) - e^2)``, the
+        same in either mode."""
+    def solve(self, theta2: float, mode: Mode = "open") -> InvertedConfiguration:
+        """The position at crank angle ``theta2``. Raises
+        :class:`AssemblyError` (``cause`` ``"slot_out_of_reach"``) where the
+        crank pin is nearer the swivel than the offset,
+        :class:`InvalidInputError` for an angle that is not finite or beyond
+        1e9 in magnitude."""
+    def joints(self, theta2: float, mode: Mode = "open") -> Tuple[Point, Point, Point, Point]:
+        """``(A0, A, S, F)``: the crank pivot, the crank pin, the swivel and
+        the foot of the perpendicular from the pin to the slot."""
+    def coupler_point(self, theta2: float, point: Point, mode: Mode = "open") -> Point:
+        """Where the coupler point ``point`` (in the coupler frame: origin at
+        the crank pin, x along the slot) is."""
+    def coupler_path(
+        self, point: Point, theta2s: ArrayLike, mode: Mode = "open"
+    ) -> Tuple[FloatArray, FloatArray, BoolArray]:
+        """``(xs, ys, ok)`` of the coupler point over the crank angles (NaN
+        and False where the loop does not close); arrays of the input's
+        shape. Raises :class:`InvalidInputError` for a point that is not
+        finite and ``MemoryError`` when the arrays cannot be allocated."""
+    def slot_limits(
+        self, mode: Mode = "open"
+    ) -> Tuple[Tuple[float, float, float], Tuple[float, float, float]]:
+        """``((theta2, slot, theta3), (theta2, slot, theta3))``: the lowest
+        and the highest slot position in ``mode``."""
+    def swing(
+        self, mode: Mode = "open"
+    ) -> Optional[Tuple[Tuple[float, float, float], Tuple[float, float, float]]]:
+        """The slotted link's swing in ``mode``: its ends ``(theta2, slot,
+        theta3)``, lowest and highest ``theta3`` (unwrapped), where the crank
+        is perpendicular to the slot (or at a dead position); None where the
+        slotted link turns fully (``r > g + |e|``, Whitworth)."""
+    def time_ratio(self, mode: Mode = "open") -> Optional[float]:
+        """The quick-return ratio: the longer over the shorter crank angle
+        between the swing's ends; None without a swing or a full-turning
+        crank."""
+    def __eq__(self, other: object, /) -> bool: ...
+
+@final
+class SynthesizedInvertedSliderCrank:
+    """An inverted slider-crank built from a driving crank ``(A0, A1)`` and
+    an inverted slider ``(S, d)`` of a task
+    (:meth:`Task.inverted_slider_crank`); driving it to ``input_angles[k]``
+    in ``modes[k]`` places the task's coupler point and angle at pose
+    ``k + 1``."""
+
+    @property
+    def linkage(self) -> InvertedSliderCrank:
+        """The linkage (crank pivot ``A0``, the swivel ``S``, the offset)."""
+    @property
+    def driving(self) -> Tuple[Point, Point]:
+        """``(A0, A1)``."""
+    @property
+    def driven(self) -> Tuple[Point, Point]:
+        """``(S, d)``: the swivel and the slot's unit direction at pose 1."""
+    @property
+    def input_angles(self) -> list[float]:
+        """The crank angle at each pose, in (-pi, pi]."""
+    @property
+    def modes(self) -> list[Optional[Mode]]:
+        """The assembly mode at each pose (None at a toggle)."""
+    @property
+    def slot_positions(self) -> list[float]:
+        """The slot position at each pose."""
+    @property
+    def coupler_point(self) -> Point:
+        """The task's coupler point in the coupler frame."""
+    @property
+    def coupler_angle_offset(self) -> float:
+        """Task coupler angle minus the linkage's theta3."""
+    @property
+    def direction(self) -> Direction:
+        """The crank rotation that carries the coupler through the poses in
+        order (``"none"``: an order defect or poses on two circuits)."""
+    @property
+    def one_circuit(self) -> bool:
+        """Whether the crank angles at the poses lie on one arc of its range."""
+    @property
+    def min_transmission_deg(self) -> Optional[float]:
+        """The smallest transmission angle over the travel, degrees; None
+        without a travel."""
+    @property
+    def stroke_used(self) -> Optional[float]:
+        """How far the block runs along the slot over the travel; None
+        without a travel or with a branch defect."""
+    @property
+    def swing_used_deg(self) -> Optional[float]:
+        """How far the slotted link swings over the travel, degrees; None
+        without a travel or with a branch defect."""
+    @property
+    def size(self) -> float:
+        """Crank, ground, the coupler point's distances from the crank pin
+        and the swivel at pose 1, and the slot length the block runs on."""
+    @property
+    def size_ratio(self) -> float:
+        """:attr:`size` over the task's :attr:`Task.span`."""
+    @property
+    def branch_free(self) -> bool:
+        """Whether the poses are all in one assembly mode (none at a toggle)."""
+    @property
+    def feasible(self) -> bool:
+        """Branch-free, on one circuit and with a driving direction."""
+    @property
+    def order(self) -> str:
+        """The cyclic order of the crank's positions, ``"1-2-3"``."""
+    @property
+    def travel(self) -> Optional[Tuple[float, float]]:
+        """``(start, span)`` of the crank's travel through the poses, or None."""
+    @property
+    def travel_stops(self) -> Optional[list[float]]:
+        """The crank angle at each pose along the travel, unwrapped, or None."""
+    def travel_angles(self, samples: int) -> FloatArray:
+        """``samples`` crank angles evenly spaced over the travel, both ends
+        included (2 to 2**20; empty without a travel)."""
+    def pose_at(self, theta2: float, mode: Mode = "open") -> Pose:
+        """The coupler pose ``(x, y, angle)`` at crank angle ``theta2``."""
+    def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...

@@ -27,6 +27,8 @@ of the Burmester curves and points of four and five poses.
 - :func:`slider_crank`, :func:`animate_slider_crank`: a slider-crank (the
   guide as a line, the slider as a block on it), alone or synthesized for a
   task at its poses, and driven through them.
+- :func:`inverted_slider_crank`: an inverted slider-crank (the slotted
+  coupler and the block on its swivel), alone or synthesized for a task.
 
 Needs matplotlib (``pip install "burmester[plot]"``). Every drawing function
 takes an optional ``ax`` to draw into and returns the Axes, so you can keep
@@ -2125,6 +2127,123 @@ def animate_slider_crank(
     anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
     _save_animation(anim, path, fps, dpi)
     return anim
+
+
+# ---------------------------------------------------------------------------
+# The inverted slider-crank (issue 27): a crank whose coupler's slot slides
+# through a block pivoted on the ground.
+
+
+def _draw_inverted_at(ax: Axes, q: burmester.InvertedSliderCrank, theta2: float, mode: Mode, color: str,
+                      gid: str, alpha: float = 1.0, zorder: int = 4) -> Tuple[Line2D, Polygon]:
+    """The crank ``A0 A``, the slotted coupler (from the pin ``A`` to the
+    slot's foot ``F`` and along the slot over the block's travel in
+    ``mode``, gid ``gid``) and the block on the swivel (``gid + "-block"``)
+    at ``theta2``."""
+    a0, a, s, f = q.joints(theta2, mode)
+    c = q.solve(theta2, mode)
+    u = np.array([math.cos(c.theta3), math.sin(c.theta3)])
+    (lo, hi) = q.slot_limits(mode)
+    reach = max(abs(lo[1]), abs(hi[1]))
+    pad = 0.08 * (q.crank + q.ground)
+    t0, t1 = min(lo[1], hi[1], 0.0) - pad, max(lo[1], hi[1], 0.0) + pad
+    if reach == 0.0:
+        t0, t1 = -pad, pad
+    p0, p1 = np.array(f) + t0 * u, np.array(f) + t1 * u
+    chain = np.array([a0, a, f], dtype=float)
+    (ln,) = ax.plot(chain[:, 0], chain[:, 1], color=color, linewidth=2.2, marker="o", markersize=5,
+                    alpha=alpha, zorder=zorder)
+    ln.set_gid(gid)
+    (slot,) = ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color=color, linewidth=4.0, alpha=0.55 * alpha,
+                      solid_capstyle="round", zorder=zorder)
+    slot.set_gid(gid + "-slot")
+    w, h = 0.06 * (q.crank + q.ground), 0.03 * (q.crank + q.ground)
+    n = np.array([-u[1], u[0]])
+    sc = np.array(s)
+    corners = [sc + dx * w * u + dy * h * n for dx, dy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    block = Polygon(np.array(corners), closed=True, facecolor="#bdbdbd", edgecolor=color, alpha=alpha,
+                    zorder=zorder - 1)
+    block.set_gid(gid + "-block")
+    ax.add_patch(block)
+    return ln, block
+
+
+def inverted_slider_crank(
+    obj: Union[burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank],
+    theta2: Optional[float] = None,
+    mode: Mode = "open",
+    *,
+    labels: bool = True, legend: bool = True, units: Optional[str] = None, ax: Optional[Axes] = None,
+) -> Axes:
+    """Draw an inverted slider-crank: the crank and the slotted coupler
+    (gid ``"linkage"``, its slot ``"linkage-slot"``), the block on the
+    swivel (``"linkage-block"``), and the crank pivot and the swivel
+    (``"fixed-pivots"``).
+
+    A :class:`burmester.InvertedSliderCrank` is drawn at ``theta2``
+    (default: the crank pointing away from the swivel) in ``mode``, with the
+    crank pin's path. A :class:`burmester.SynthesizedInvertedSliderCrank` is
+    drawn at each of its poses (pose colours, gid ``"linkage-k"``), with the
+    task's poses as flags (``"pose-k"``) and the coupler point's path over
+    the travel (``"coupler-curve"``); ``theta2`` and ``mode`` are then
+    unused.
+
+    Raises:
+        burmester.AssemblyError: the loop does not close at ``theta2``.
+    """
+    ax = _new_axes(ax, (7.0, 6.0))
+    q = obj.linkage if isinstance(obj, burmester.SynthesizedInvertedSliderCrank) else obj
+    _markers(ax, [q.pivot, q.swivel], "fixed-pivots", "crank pivot A0, swivel S", marker="^", markersize=10,
+             color="0.2", zorder=6)
+    if isinstance(obj, burmester.SynthesizedInvertedSliderCrank):
+        modes = obj.modes
+        first: Mode = modes[0] or "open"
+        for k, (t, m) in enumerate(zip(obj.input_angles, modes), start=1):
+            _draw_inverted_at(ax, q, t, m or first, POSE_COLORS[k], f"linkage-{k}", alpha=0.85)
+            _, pin, _, foot = q.joints(t, m or first)
+            px, py, _ = obj.pose_at(t, m or first)
+            plate = Polygon(np.array([pin, foot, (px, py)]), closed=True, facecolor=POSE_COLORS[k],
+                            edgecolor=POSE_COLORS[k], alpha=0.15, zorder=3)
+            plate.set_gid(f"coupler-{k}")
+            ax.add_patch(plate)
+        if obj.travel is not None:
+            ts = np.array(obj.travel_angles(361))
+            xs, ys, ok = q.coupler_path(obj.coupler_point, ts, first)
+            (cc,) = ax.plot(xs[ok], ys[ok], color="#ff7f0e", linewidth=1.2, zorder=3, label="coupler curve")
+            cc.set_gid("coupler-curve")
+        poses = [obj.pose_at(t, m or first) for t, m in zip(obj.input_angles, modes)]
+        _draw_flags(ax, poses, 0.12 * (q.crank + q.ground), labels, zorder=7)
+        if labels:
+            stroke = "" if obj.stroke_used is None else f", stroke used {format_length(obj.stroke_used, units)}"
+            swing = "" if obj.swing_used_deg is None else f", swing {obj.swing_used_deg:.1f} deg"
+            ax.set_title(f"Inverted slider-crank: crank {format_length(q.crank, units)}, ground "
+                         f"{format_length(q.ground, units)}, offset {format_length(q.offset, units)}{stroke}"
+                         f"{swing}\nmodes {modes}, direction {obj.direction}", fontsize=10)
+    else:
+        away = math.atan2(q.pivot[1] - q.swivel[1], q.pivot[0] - q.swivel[0])
+        t = away if theta2 is None else float(theta2)
+        arcs = q.input_range
+        for k, (lo, hi) in enumerate(arcs or [(0.0, 2 * math.pi)]):
+            span = (hi - lo) % (2 * math.pi) or 2 * math.pi
+            ang = lo + np.linspace(0.0, span, 721)
+            (cp,) = ax.plot(q.pivot[0] + q.crank * np.cos(ang), q.pivot[1] + q.crank * np.sin(ang), color="0.6",
+                            linewidth=0.8, zorder=1, label="crank pin path" if k == 0 else None)
+            cp.set_gid("crank-path")
+        arts = _draw_inverted_at(ax, q, t, mode, POSE_COLORS[3], "linkage")
+        arts[0].set_label(f"theta2 = {math.degrees(t):.1f} deg, {mode}")
+        if labels:
+            a0, a, s, f = q.joints(t, mode)
+            for name, p in zip(("A0", "A", "S"), (a0, a, s)):
+                _label(ax, p, name)
+            sw = q.swing(mode)
+            swing = "" if sw is None else f", swing {math.degrees(sw[1][2] - sw[0][2]):.1f} deg"
+            ax.set_title(f"Inverted slider-crank: crank {format_length(q.crank, units)}, ground "
+                         f"{format_length(q.ground, units)}, offset {format_length(q.offset, units)}, "
+                         f"stroke {format_length(q.stroke, units)}{swing}", fontsize=10)
+    _around_data(ax, labels, units)
+    if legend:
+        _legend(ax)
+    return ax
 
 
 def slider_dyad(dyad: burmester.SliderDyad, task: Optional[Task] = None, *, labels: bool = True,

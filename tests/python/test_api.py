@@ -156,6 +156,34 @@ CLASSES += [burmester.SliderCrank, burmester.SliderConfiguration, burmester.Synt
 CLASSES += [burmester.SliderDyad, burmester.InvertedSlider]  # issue 27 (ssynth27)
 
 
+# The inverted slider-crank (issue 27, inv31).
+def _inverted_samples():
+    q = burmester.InvertedSliderCrank(crank=100.0, swivel=(30.0, -300.0), offset=12.0)
+    poses = []
+    for t2 in (-0.4, 0.3, 1.1):
+        c = q.solve(t2)
+        x, y = q.coupler_point(t2, (180.0, 40.0))
+        poses.append((x, y, c.theta3 + 0.4))
+    t = Task(poses)
+    inv = t.inverted_slider((30.0, -300.0))
+    _, a1, _, _ = q.joints(-0.4)
+    return {
+        "InvertedSliderCrank": q,
+        "InvertedConfiguration": q.solve(0.7, "crossed"),
+        "SynthesizedInvertedSliderCrank": t.inverted_slider_crank(((0.0, 0.0), a1), (inv.swivel, inv.direction)),
+    }
+
+
+_samples_slider = samples
+
+
+def samples():  # noqa: F811 (the samples so far and the inverted slider-crank's)
+    return {**_samples_slider(), **_inverted_samples()}
+
+
+CLASSES += [burmester.InvertedSliderCrank, burmester.InvertedConfiguration, burmester.SynthesizedInvertedSliderCrank]
+
+
 # ---------------------------------------------------------------------------
 # Pickling
 
@@ -334,6 +362,17 @@ METHODS[Task] += " slider_crank"
 # Issue 27 (ssynth27): slider dyads and inverted sliders.
 METHODS[Task] += " slider_circle slider_dyads slider_dyad inverted inverted_sliders inverted_slider"
 METHODS[burmester.InvertedSlider] = "body_line_at"
+# The inverted slider-crank (issue 27, inv31).
+PROPERTIES[burmester.InvertedSliderCrank] = (
+    "crank pivot swivel offset ground turns_fully input_range dead_positions stroke")
+PROPERTIES[burmester.InvertedConfiguration] = "theta2 theta3 slot mode toggle transmission_angle"
+PROPERTIES[burmester.SynthesizedInvertedSliderCrank] = (
+    "linkage driving driven input_angles modes slot_positions coupler_point coupler_angle_offset direction "
+    "one_circuit min_transmission_deg stroke_used swing_used_deg size size_ratio branch_free feasible order "
+    "travel travel_stops")
+METHODS[burmester.InvertedSliderCrank] = "solve joints coupler_point coupler_path slot_limits swing time_ratio"
+METHODS[burmester.SynthesizedInvertedSliderCrank] = "travel_angles pose_at"
+METHODS[Task] += " inverted_slider_crank"
 
 #: Methods without arguments, and why each is a method.
 NO_ARGUMENT_METHODS = {

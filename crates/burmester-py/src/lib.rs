@@ -21,6 +21,7 @@ mod drive;
 mod errors;
 mod geom;
 mod getters;
+mod inverted;
 mod linkage;
 mod options;
 mod pairs;
@@ -54,6 +55,10 @@ mod _burmester {
     use crate::errors::{AssemblyError, BurmesterError, DegenerateError, InvalidInputError};
     #[pymodule_export]
     use crate::geom::{PyConic, PyGrid, clip_line};
+    #[pymodule_export]
+    use crate::inverted::{
+        PyInvertedConfiguration, PyInvertedSliderCrank, PySynthesizedInvertedSliderCrank,
+    };
     #[pymodule_export]
     use crate::linkage::{PyConfiguration, PyFourBar, PyLinkageFigures};
     #[pymodule_export]

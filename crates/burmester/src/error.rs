@@ -489,6 +489,19 @@ pub enum InvalidInput {
         /// The kind given (`"slider"`).
         found: &'static str,
     },
+    /// An operation on the driven dyad that is not defined for an inverted
+    /// slider (its circle point is at infinity, normal to the slot).
+    #[error(
+        "{what} is not defined for an inverted slider as the driven dyad: its circle point is at \
+         infinity, so Filemon's lines through it are parallel (through the swivel's images \
+         D_k1(S), normal to the slot at pose 1) and no finite crank drives it; pass a revolute or \
+         slider driven dyad, or build the linkage with Task::inverted_slider_crank, whose modes at \
+         the poses give the branch verdict"
+    )]
+    InvertedDriven {
+        /// What is not defined.
+        what: &'static str,
+    },
     /// The quadratic and linear coefficients of a conic are all zero.
     #[error(
         "a conic needs A, B, C, D or E nonzero (all are zero); pass the coefficients of a curve"
@@ -680,6 +693,36 @@ pub enum AssemblyError {
         height: f64,
         /// The coupler's length.
         coupler: f64,
+    },
+    /// An inverted slider-crank's slot is offset from the crank pin by
+    /// more than ground and crank reach: no crank angle closes the loop.
+    #[error(
+        "the inverted slider-crank can never be assembled: its slot is {} from the crank pin, \
+         farther than ground and crank reach together ({}); reduce the slot's offset, move the \
+         swivel away from the crank pivot or lengthen the crank",
+        Num(*.offset), Num(*.reach)
+    )]
+    SwivelOutOfReach {
+        /// The slot's offset from the crank pin.
+        offset: f64,
+        /// Ground plus crank.
+        reach: f64,
+    },
+    /// At this crank angle the crank pin of an inverted slider-crank is
+    /// nearer the swivel than the slot's offset.
+    #[error(
+        "the inverted slider-crank's loop does not close at theta2 = {} rad: the crank pin is {} \
+         from the swivel, nearer than the slot's offset {}; choose a crank angle inside the input \
+         range (InvertedSliderCrank::input_range)",
+        Num(*.theta2), Num(*.distance), Num(*.offset)
+    )]
+    SlotOutOfReach {
+        /// The crank angle, in radians.
+        theta2: f64,
+        /// The crank pin's distance from the swivel.
+        distance: f64,
+        /// The slot's offset from the crank pin.
+        offset: f64,
     },
 }
 

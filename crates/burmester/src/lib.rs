@@ -146,10 +146,12 @@ pub use linkage::{
     AngleInterval, AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, Joints,
     LinkageFigures,
 };
+pub use linkage::{InvertedConfiguration, InvertedJoints, InvertedLimit, InvertedSliderCrank};
 pub use linkage::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};
 pub use linkage::{SliderConfiguration, SliderCrank, SliderJoints, SliderLimit};
 pub use nalgebra::{Point2, Vector2};
 pub use synthesis::InvertedSlider;
+pub use synthesis::SynthesizedInvertedSliderCrank;
 pub use synthesis::SynthesizedSliderCrank;
 pub use synthesis::three::{Cremona, Filemon, Method};
 pub use synthesis::{

@@ -6,6 +6,7 @@ pub mod actuator;
 pub(crate) mod figures;
 mod fourbar;
 pub(crate) mod grashof;
+mod inverted;
 pub mod sixbar;
 mod slider;
 
@@ -14,6 +15,7 @@ pub use figures::{Direction, LinkageFigures};
 pub use fourbar::{AssemblyMode, Configuration, FourBar, Joints};
 pub(crate) use grashof::input_bounds;
 pub use grashof::{AngleInterval, Grashof, InputRange};
+pub use inverted::{InvertedConfiguration, InvertedJoints, InvertedLimit, InvertedSliderCrank};
 pub use sixbar::{LimitPosition, SixBar, SixBarConfiguration, SixBarJoints, SixBarLengths};
 pub use slider::{SliderConfiguration, SliderCrank, SliderJoints, SliderLimit};
 

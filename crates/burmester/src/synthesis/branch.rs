@@ -111,11 +111,13 @@ crate::geom::debug_shows!(
 
 impl DyadKind {
     /// The center point where it is finite: `C0` for a crank, `None` for a
-    /// slider (its center is at infinity along the guide's normal).
+    /// slider (its center is at infinity along the guide's normal), the
+    /// swivel for an inverted slider.
     pub fn finite_center(&self) -> Option<Point2<f64>> {
         match self {
             DyadKind::Revolute(d) => Some(d.center),
             DyadKind::Slider(_) => None,
+            DyadKind::Inverted(v) => Some(v.swivel),
         }
     }
 
@@ -124,7 +126,8 @@ impl DyadKind {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::DrivenKind`] when the dyad is not a crank.
+    /// [`InvalidInput::DrivenKind`] when the dyad is a slider,
+    /// [`InvalidInput::InvertedDriven`] when it is an inverted slider.
     pub fn crank(&self, what: &'static str) -> Result<crate::synthesis::Dyad> {
         match self {
             DyadKind::Revolute(d) => Ok(*d),
@@ -133,6 +136,7 @@ impl DyadKind {
                 found: self.as_str(),
             }
             .into()),
+            DyadKind::Inverted(_) => Err(InvalidInput::InvertedDriven { what }.into()),
         }
     }
 
@@ -156,7 +160,12 @@ impl DyadKind {
     /// [`InvalidInput::ZeroDirection`] for a zero or non-finite guide,
     /// [`InvalidInput::NotADyad`] when the pin's positions `D_1k(C1)` are
     /// not on the guide (farther than [`tolerance::DYAD`] times the task's
-    /// size plus the pin's travel): not a slider dyad of the task.
+    /// size plus the pin's travel): not a slider dyad of the task. An
+    /// inverted slider: [`InvalidInput::InvertedDriven`] (its circle point
+    /// is at infinity, so its lines are parallel: the branch-free driving
+    /// circle points `A1` are those on one side of every line through
+    /// `D_k1(S)` normal to the slot, the sign of the slot position
+    /// `<D_k1(S) - A1, u>`, which [`Task::inverted_slider_crank`] reports).
     pub(crate) fn filemon_lines(&self, motion: &Motion, scale: f64) -> Result<FilemonLines> {
         match self {
             DyadKind::Revolute(driven) => {
@@ -216,6 +225,14 @@ impl DyadKind {
                 });
                 Ok(FilemonLines::of(s.into(), dirs, None))
             }
+            // Its circle point is at infinity (normal to the slot): the
+            // lines "through C1" are parallel, the lines through the
+            // swivel's images D_k1(S) normal to the slot at pose 1, which
+            // this construction (lines through one finite C1) cannot hold.
+            DyadKind::Inverted(_) => Err(InvalidInput::InvertedDriven {
+                what: "Filemon's construction",
+            }
+            .into()),
         }
     }
 }

@@ -20,10 +20,12 @@
 //!   [`InvertedSlider`]).
 
 mod branch;
+mod crank_travel;
 mod dyad;
 mod errors;
 pub mod five;
 pub mod four;
+mod inverted_crank;
 mod local;
 pub mod motion;
 mod order;
@@ -40,6 +42,7 @@ pub use five::{BurmesterFourBar, BurmesterSlider, FivePositions};
 pub use four::{
     ArcEnd, CoincidencePoint, CurveDyad, FilemonArcs, FourPositions, OrderArc, PairPole,
 };
+pub use inverted_crank::SynthesizedInvertedSliderCrank;
 pub use motion::{Motion, Pole};
 pub use order::{CrankOrder, Drive, Turn};
 pub use slider::{DyadKind, SliderDyad};

@@ -16,7 +16,7 @@ use nalgebra::{Point2, Vector2};
 
 use crate::error::{InvalidInput, Result};
 use crate::geom::{Line, normalized, perp};
-use crate::synthesis::Dyad;
+use crate::synthesis::{Dyad, InvertedSlider};
 
 /// A slider dyad: a pin on a straight guide fixed to the ground.
 ///
@@ -81,22 +81,32 @@ pub enum DyadKind {
     Revolute(Dyad),
     /// A pin on a straight guide fixed to the ground (center at infinity).
     Slider(SliderDyad),
+    /// A straight slot of the moving body through a block pivoted on the
+    /// ground at the swivel (the circle point at infinity, normal to the
+    /// slot; the kinematic inverse of a slider).
+    Inverted(InvertedSlider),
 }
 
 impl DyadKind {
-    /// The circle point: the moving pivot where it is at pose 1.
+    /// The circle point: the moving pivot where it is at pose 1. An
+    /// inverted slider's moving pivot is at infinity (normal to its slot):
+    /// its one finite joint, the swivel, is returned (every operation that
+    /// needs a finite circle point refuses an inverted slider first:
+    /// [`InvalidInput::InvertedDriven`]).
     pub fn circle(&self) -> Point2<f64> {
         match self {
             DyadKind::Revolute(d) => d.circle,
             DyadKind::Slider(s) => s.circle,
+            DyadKind::Inverted(v) => v.swivel,
         }
     }
 
-    /// `"revolute"` or `"slider"`.
+    /// `"revolute"`, `"slider"` or `"inverted"`.
     pub fn as_str(&self) -> &'static str {
         match self {
             DyadKind::Revolute(_) => "revolute",
             DyadKind::Slider(_) => "slider",
+            DyadKind::Inverted(_) => "inverted",
         }
     }
 }
@@ -110,6 +120,12 @@ impl From<Dyad> for DyadKind {
 impl From<SliderDyad> for DyadKind {
     fn from(s: SliderDyad) -> Self {
         DyadKind::Slider(s)
+    }
+}
+
+impl From<InvertedSlider> for DyadKind {
+    fn from(v: InvertedSlider) -> Self {
+        DyadKind::Inverted(v)
     }
 }
 

@@ -21,8 +21,7 @@ use crate::error::{InvalidInput, Result};
 use crate::geom::{PerPose, Pose, cross, perp, rotate};
 use crate::linkage::figures::{Travel, travel};
 use crate::linkage::{AssemblyMode, Direction, SliderCrank};
-use crate::synthesis::dyad::{travel_angles_of, travel_of, travel_stops_of};
-use crate::synthesis::{CrankOrder, Dyad, DyadKind, SliderDyad, Task};
+use crate::synthesis::{Dyad, DyadKind, SliderDyad, Task};
 use crate::tolerance;
 
 impl DyadKind {
@@ -34,7 +33,13 @@ impl DyadKind {
     /// joint - center)` ([`AssemblyMode::of_loop_within`]); a slider: the
     /// sign of `<crank_joint - joint, u>` ([`AssemblyMode::of_slider`], the
     /// limit of the crank's as its center goes to infinity along the
-    /// guide's normal). `None` at a toggle.
+    /// guide's normal). An inverted slider, whose moving pivot is at
+    /// infinity: `joint` is read as the swivel plus the slot's direction
+    /// where the slot is ([`InvertedSlider::slot_point_at`]), and the mode
+    /// is the sign of the slot position `<S - crank_joint, u3>`
+    /// ([`AssemblyMode::of_inverted`]). `None` at a toggle.
+    ///
+    /// [`InvertedSlider::slot_point_at`]: crate::InvertedSlider::slot_point_at
     pub fn assembly_mode(
         &self,
         crank_joint: Point2<f64>,
@@ -46,6 +51,9 @@ impl DyadKind {
                 AssemblyMode::of_loop_within(joint - crank_joint, joint - d.center, reach)
             }
             DyadKind::Slider(s) => AssemblyMode::of_slider(joint - crank_joint, s.guide, reach),
+            DyadKind::Inverted(v) => {
+                AssemblyMode::of_inverted(v.swivel - crank_joint, joint - v.swivel, reach)
+            }
         }
     }
 }
@@ -89,30 +97,9 @@ pub struct SynthesizedSliderCrank {
     pub stroke_used: f64,
 }
 
+crate::synthesis::crank_travel::crank_travel_methods!(SynthesizedSliderCrank);
+
 impl SynthesizedSliderCrank {
-    /// The most crank angles [`travel_angles`](Self::travel_angles) returns.
-    pub const MAX_TRAVEL_SAMPLES: usize = 1 << 20;
-
-    /// Whether every pose is in one assembly mode (no branch defect, no
-    /// toggle at a pose).
-    pub fn is_branch_free(&self) -> bool {
-        match self.modes.first() {
-            Some(Some(m)) => self.modes.iter().all(|x| *x == Some(*m)),
-            _ => false,
-        }
-    }
-
-    /// Whether the motion through the poses in order is feasible:
-    /// branch-free, one circuit and a driving direction.
-    pub fn feasible(&self) -> bool {
-        self.is_branch_free() && self.one_circuit && self.direction != Direction::None
-    }
-
-    /// The cyclic order of the crank's positions at the poses.
-    pub fn order(&self) -> CrankOrder {
-        CrankOrder::from_angles(&self.input_angles)
-    }
-
     /// The linkage's size: crank, coupler, the two other sides of the
     /// coupler triangle (the moving pivots and the task's coupler point),
     /// the offset (the ground from the pivot to the guide) and the length
@@ -152,37 +139,10 @@ impl SynthesizedSliderCrank {
             angle: c.theta3 + self.coupler_angle_offset,
         })
     }
-
-    /// The travel: the crank angle at pose 1 and the signed angle the
-    /// crank turns through the poses to the last (positive
-    /// counter-clockwise); `None` without a driving direction.
-    pub fn travel(&self) -> Option<(f64, f64)> {
-        travel_of(&self.input_angles, self.direction)
-    }
-
-    /// The crank angle at each pose along the [`travel`](Self::travel),
-    /// unwrapped (monotone from the angle at pose 1); `None` without a
-    /// travel.
-    pub fn travel_stops(&self) -> Option<PerPose<f64>> {
-        travel_stops_of(&self.input_angles, self.travel()?)
-    }
-
-    /// `samples` crank angles evenly spaced over the travel, both ends
-    /// included; empty without a travel.
-    ///
-    /// # Errors
-    ///
-    /// [`InvalidInput::CountOutOfRange`] for fewer than 2 or more than
-    /// [`SynthesizedSliderCrank::MAX_TRAVEL_SAMPLES`] samples;
-    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when they cannot
-    /// be allocated.
-    pub fn travel_angles(&self, samples: usize) -> Result<Vec<f64>> {
-        travel_angles_of(self.travel(), samples, Self::MAX_TRAVEL_SAMPLES)
-    }
 }
 
 /// [`travel`] for 3 to 5 directions.
-fn travel_n(e: &[Vector2<f64>], g: Vector2<f64>, lo: bool, hi: bool) -> Option<Travel> {
+pub(crate) fn travel_n(e: &[Vector2<f64>], g: Vector2<f64>, lo: bool, hi: bool) -> Option<Travel> {
     match e.len() {
         3 => Some(travel::<3>(e.try_into().ok()?, g, lo, hi)),
         4 => Some(travel::<4>(e.try_into().ok()?, g, lo, hi)),

@@ -86,6 +86,17 @@ impl InvertedSlider {
             direction: rotate(self.direction, task.rotation(1, k)?),
         })
     }
+
+    /// The swivel plus the slot's unit direction where the body is at pose
+    /// `k` (1-based) of `task`: the point that stands for the moving pivot
+    /// in [`DyadKind::assembly_mode`](crate::DyadKind::assembly_mode).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::PoseIndex`] for an index out of range.
+    pub fn slot_point_at(&self, task: &Task, k: usize) -> Result<Point2<f64>> {
+        Ok(self.swivel + rotate(self.direction, task.rotation(1, k)?))
+    }
 }
 
 /// The swivel is the pin of the inverted task's slider dyad, and the body

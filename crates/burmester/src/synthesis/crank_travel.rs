@@ -1,0 +1,73 @@
+//! What a linkage of a task driven by a crank derives from its crank angles,
+//! modes, direction and circuit at the poses, written once for the kinds
+//! that have them as fields (the slider-crank and the inverted
+//! slider-crank of a task).
+
+/// The branch, feasibility, order and travel methods of a synthesized
+/// linkage with the fields `input_angles`, `modes`, `direction` and
+/// `one_circuit`.
+macro_rules! crank_travel_methods {
+    ($Type:ident) => {
+        impl $Type {
+            /// The most crank angles [`travel_angles`](Self::travel_angles)
+            /// returns.
+            pub const MAX_TRAVEL_SAMPLES: usize = 1 << 20;
+
+            /// Whether every pose is in one assembly mode (no branch
+            /// defect, no toggle at a pose).
+            pub fn is_branch_free(&self) -> bool {
+                match self.modes.first() {
+                    Some(Some(m)) => self.modes.iter().all(|x| *x == Some(*m)),
+                    _ => false,
+                }
+            }
+
+            /// Whether the motion through the poses in order is feasible:
+            /// branch-free, one circuit and a driving direction.
+            pub fn feasible(&self) -> bool {
+                self.is_branch_free()
+                    && self.one_circuit
+                    && self.direction != $crate::linkage::Direction::None
+            }
+
+            /// The cyclic order of the crank's positions at the poses.
+            pub fn order(&self) -> $crate::synthesis::CrankOrder {
+                $crate::synthesis::CrankOrder::from_angles(&self.input_angles)
+            }
+
+            /// The travel: the crank angle at pose 1 and the signed angle
+            /// the crank turns through the poses to the last (positive
+            /// counter-clockwise); `None` without a driving direction.
+            pub fn travel(&self) -> Option<(f64, f64)> {
+                $crate::synthesis::dyad::travel_of(&self.input_angles, self.direction)
+            }
+
+            /// The crank angle at each pose along the
+            /// [`travel`](Self::travel), unwrapped (monotone from the angle
+            /// at pose 1); `None` without a travel.
+            pub fn travel_stops(&self) -> Option<$crate::geom::PerPose<f64>> {
+                $crate::synthesis::dyad::travel_stops_of(&self.input_angles, self.travel()?)
+            }
+
+            /// `samples` crank angles evenly spaced over the travel, both
+            /// ends included; empty without a travel.
+            ///
+            /// # Errors
+            ///
+            /// [`InvalidInput::CountOutOfRange`](crate::InvalidInput::CountOutOfRange)
+            /// for fewer than 2 or more than
+            /// [`MAX_TRAVEL_SAMPLES`](Self::MAX_TRAVEL_SAMPLES) samples;
+            /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when they
+            /// cannot be allocated.
+            pub fn travel_angles(&self, samples: usize) -> $crate::Result<Vec<f64>> {
+                $crate::synthesis::dyad::travel_angles_of(
+                    self.travel(),
+                    samples,
+                    Self::MAX_TRAVEL_SAMPLES,
+                )
+            }
+        }
+    };
+}
+
+pub(crate) use crank_travel_methods;

@@ -1,0 +1,271 @@
+//! The inverted slider-crank of a task: a driving crank `(A0, A1)` and an
+//! inverted slider (a line of the coupler through a ground swivel `S` at
+//! every pose, [`InvertedSlider`]), with what it takes to drive it through
+//! the task's poses.
+//!
+//! At pose `k` the crank pin is `A_k = D_1k(A1)` and the slot runs through
+//! `S` in the direction `u3_k = e^{i(theta_k - theta_1)} d` (`d` the body
+//! line's direction at pose 1). The input angle is `arg(A_k - A0)`; the
+//! assembly mode is the sign of the slot position `t_k = <S - A_k, u3_k>`,
+//! named as the position analysis names it ([`InvertedSliderCrank`]:
+//! [`AssemblyMode::Open`] where it is positive). Seen in the coupler frame
+//! at pose 1 that is `sign <D_k1(S) - A1, d>`: the side of the line through
+//! the swivel's image `D_k1(S)` normal to the slot on which `A1` lies
+//! (Filemon's construction with the circle point at infinity, whose lines
+//! are parallel: [`InvalidInput::InvertedDriven`] in
+//! [`FilemonLines`](crate::FilemonLines)). The order is the driving
+//! crank's, as for the four-bar and the slider-crank, with the ground line
+//! `S - A0` for the axis of the input range (the loop closes where
+//! `cos(theta2 - psi0) <= (g^2 + r^2 - e^2) / (2 g r)`).
+
+use nalgebra::Vector2;
+
+use crate::error::{InvalidInput, Result};
+use crate::geom::{PerPose, Pose, cross, rotate};
+use crate::linkage::{AssemblyMode, Direction, InvertedSliderCrank};
+use crate::synthesis::slider_crank::travel_n;
+use crate::synthesis::{Dyad, DyadKind, InvertedSlider, Task};
+use crate::tolerance;
+
+/// An inverted slider-crank built from a driving crank and an inverted
+/// slider of a task, with its input angle, assembly mode and slot position
+/// at each pose, its order and what a designer checks (module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SynthesizedInvertedSliderCrank {
+    /// The linkage: crank pivot `A0`, the swivel `S`, the slot's offset.
+    pub linkage: InvertedSliderCrank,
+    /// The driving dyad `(A0, A1)`.
+    pub driving: Dyad,
+    /// The driven inverted slider (the swivel and the slot at pose 1).
+    pub driven: InvertedSlider,
+    /// The crank angle at each pose (absolute, radians, in `(-pi, pi]`).
+    pub input_angles: PerPose<f64>,
+    /// The assembly mode at each pose; `None` where the pose is at a
+    /// toggle (the crank pin `|e|` from the swivel).
+    pub modes: PerPose<Option<AssemblyMode>>,
+    /// The slot position at each pose (as
+    /// [`InvertedConfiguration::slot`](crate::InvertedConfiguration::slot)).
+    pub slot_positions: PerPose<f64>,
+    /// The task's coupler point in the coupler frame (origin at the crank
+    /// pin `A`, x-axis along the slot).
+    pub coupler_point: Vector2<f64>,
+    /// The task's coupler angle minus the coupler angle `theta3`.
+    pub coupler_angle_offset: f64,
+    /// The crank rotation that carries the coupler from pose 1 through the
+    /// poses in order to the last.
+    pub direction: Direction,
+    /// Whether the crank angles at the poses lie on one circuit (one arc
+    /// of the input range; always true for a crank that turns fully).
+    pub one_circuit: bool,
+    /// The smallest transmission angle over the travel, radians in
+    /// `[0, pi/2]`; NaN without a travel.
+    pub min_transmission: f64,
+    /// The block's travel along the slot over the crank's travel from the
+    /// first pose to the last (the highest minus the lowest slot
+    /// position there); NaN without a travel or with a branch defect.
+    pub stroke_used: f64,
+    /// The slotted link's swing over the travel (its largest minus its
+    /// smallest angle there, radians, each measured within half a turn of
+    /// its angle at pose 1: a slotted link that turns more than half a
+    /// turn over the travel is not told apart); NaN without a travel or
+    /// with a branch defect.
+    pub swing_used: f64,
+}
+
+crate::synthesis::crank_travel::crank_travel_methods!(SynthesizedInvertedSliderCrank);
+
+impl SynthesizedInvertedSliderCrank {
+    /// The linkage's size: the crank, the ground, the distances of the
+    /// task's coupler point from the crank pin and from the swivel at pose
+    /// 1, and the length of slot the block runs on over the travel (the
+    /// [`stroke_used`](Self::stroke_used); the spread of the slot positions
+    /// at the poses where that is NaN).
+    pub fn size(&self) -> f64 {
+        let a = self.driving.circle;
+        let p = a + rotate(
+            self.coupler_point,
+            self.driven.direction.y.atan2(self.driven.direction.x),
+        );
+        let s = &self.slot_positions;
+        let slot = if self.stroke_used.is_nan() {
+            let hi = s.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            let lo = s.iter().copied().fold(f64::INFINITY, f64::min);
+            hi - lo
+        } else {
+            self.stroke_used
+        };
+        self.linkage.crank()
+            + self.linkage.ground()
+            + (p - a).norm()
+            + (p - self.driven.swivel).norm()
+            + slot
+    }
+
+    /// The coupler pose (the task's coupler point and angle) when the
+    /// crank is driven to `theta2` in `mode`.
+    ///
+    /// # Errors
+    ///
+    /// As [`InvertedSliderCrank::solve`].
+    pub fn pose_at(&self, theta2: f64, mode: AssemblyMode) -> Result<Pose> {
+        let c = self.linkage.solve(theta2, mode)?;
+        Ok(Pose {
+            position: self.linkage.coupler_point(&c, self.coupler_point),
+            angle: c.theta3 + self.coupler_angle_offset,
+        })
+    }
+}
+
+impl Task {
+    /// The inverted slider-crank built from a driving crank `(A0, A1)` and
+    /// an inverted slider (the swivel `S` and the slot's direction at pose
+    /// 1; [`Task::inverted_sliders`], [`Task::inverted_slider`]), with its
+    /// crank angle, assembly mode and slot position at each pose, its order
+    /// and figures. The slot's offset is `e = cross(d, S - A1)`.
+    ///
+    /// Driving the returned linkage to `input_angles[k]` in `modes[k]`
+    /// places the task's coupler point and angle at pose `k + 1`
+    /// ([`SynthesizedInvertedSliderCrank::pose_at`]).
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotADyad`] when the driving dyad's circle point is
+    /// not a circle point of its center (build it with
+    /// [`Task::dyad_from_center`]); [`InvalidInput::ZeroDirection`] for a
+    /// slot direction that is zero or not finite;
+    /// [`InvalidInput::NotASlider`] when the body line leaves the swivel at
+    /// a pose (take one of the task's inverted sliders); errors of
+    /// [`InvertedSliderCrank::new`].
+    pub fn inverted_slider_crank(
+        &self,
+        driving: &Dyad,
+        driven: &InvertedSlider,
+    ) -> Result<SynthesizedInvertedSliderCrank> {
+        self.check_dyad(driving, "driving dyad")?;
+        crate::error::finite_point(["swivel point x", "swivel point y"], driven.swivel)?;
+        let d = crate::geom::normalized(driven.direction).ok_or(InvalidInput::ZeroDirection {
+            name: "inverted slider's slot direction",
+            x: driven.direction.x,
+            y: driven.direction.y,
+        })?;
+        let driven = InvertedSlider {
+            swivel: driven.swivel,
+            direction: d,
+        };
+        let s = driven.swivel;
+        let n = self.len();
+        // The slot's direction at each pose and the body line's distance
+        // from the swivel there.
+        let motion = self.motion();
+        let swivel_images = motion.positions(s);
+        let travel_s = swivel_images
+            .iter()
+            .map(|p| (p - s).norm())
+            .fold(0.0, f64::max);
+        let slot = PerPose::from_fn(n, |k| rotate(d, motion.rotation0(0, k)));
+        let spread = (0..n)
+            .map(|k| cross(slot[k], swivel_images[k] - s).abs())
+            .fold(0.0, f64::max);
+        let spread = spread / (travel_s + self.scale());
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(spread <= tolerance::DYAD) {
+            return Err(InvalidInput::NotASlider {
+                which: "driven inverted slider (its body line leaves the swivel)",
+                spread,
+                tolerance: tolerance::DYAD,
+            }
+            .into());
+        }
+        let a = motion.positions(driving.circle);
+        let a0 = driving.center;
+        let offset = cross(d, s - a[0]);
+        let linkage = InvertedSliderCrank::new(a0, driving.length(), s, offset)?;
+        let input_angles = a.map(|p| {
+            let v = p - a0;
+            v.y.atan2(v.x)
+        });
+        let reach = linkage.crank() + linkage.ground();
+        let kind = DyadKind::Inverted(driven);
+        let modes = PerPose::from_fn(n, |k| {
+            let m = kind.assembly_mode(a[k], s + slot[k], reach)?;
+            let sol = linkage.solve(input_angles[k], m).ok()?;
+            (!sol.toggle).then_some(m)
+        });
+        let slot_positions = PerPose::from_fn(n, |k| (s - a[k]).dot(&slot[k]));
+        let g = s - a0;
+        let axis = if g.norm() > 0.0 { g } else { Vector2::x() };
+        let e: Vec<Vector2<f64>> = a.iter().map(|p| p - a0).collect();
+        let trav =
+            travel_n(&e, axis, true, linkage.turns_fully()).ok_or(InvalidInput::PoseCount {
+                found: n,
+                min: 3,
+                max: 5,
+            })?;
+        let last = n - 1;
+        let branch_free =
+            matches!(modes.first(), Some(Some(m)) if modes.iter().all(|x| *x == Some(*m)));
+        let (min_transmission, stroke_used, swing_used) = if trav.direction == Direction::None {
+            (f64::NAN, f64::NAN, f64::NAN)
+        } else {
+            // cos mu = |e| / rho is largest where rho = |S - A| is
+            // smallest: at an end of the travel or with the crank pointing
+            // at the swivel.
+            let r = linkage.crank();
+            let cos_mu =
+                |dir: Vector2<f64>| (offset.abs() / (g - dir.normalize() * r).norm()).min(1.0);
+            let mut worst = cos_mu(e[0]).max(cos_mu(e[last]));
+            if trav.contains(axis) {
+                worst = worst.max(cos_mu(axis));
+            }
+            let (stroke, swing) = match modes[0] {
+                Some(mode) if branch_free => {
+                    let at = |v: Vector2<f64>| linkage.solve(v.y.atan2(v.x), mode).ok();
+                    let mut ends: Vec<(f64, f64)> = [e[0], e[last], axis, -axis]
+                        .iter()
+                        .enumerate()
+                        .filter(|(i, v)| *i < 2 || trav.contains(**v))
+                        .filter_map(|(_, v)| at(*v).map(|c| (c.slot, c.theta3)))
+                        .collect();
+                    for p in linkage.stationary_positions(mode) {
+                        let v = Vector2::new(p.theta2.cos(), p.theta2.sin());
+                        if trav.contains(v) {
+                            ends.push((p.slot, p.theta3));
+                        }
+                    }
+                    let t3_ref = ends.first().map_or(0.0, |x| x.1);
+                    let (mut lo_t, mut hi_t, mut lo_a, mut hi_a) = (
+                        f64::INFINITY,
+                        f64::NEG_INFINITY,
+                        f64::INFINITY,
+                        f64::NEG_INFINITY,
+                    );
+                    for (t, a3) in ends {
+                        let a3 = crate::geom::wrap_angle(a3 - t3_ref);
+                        (lo_t, hi_t) = (lo_t.min(t), hi_t.max(t));
+                        (lo_a, hi_a) = (lo_a.min(a3), hi_a.max(a3));
+                    }
+                    (hi_t - lo_t, hi_a - lo_a)
+                }
+                _ => (f64::NAN, f64::NAN),
+            };
+            (worst.acos(), stroke, swing)
+        };
+        let theta3 = d.y.atan2(d.x);
+        let pose1 = self.poses()[0];
+        Ok(SynthesizedInvertedSliderCrank {
+            linkage,
+            driving: *driving,
+            driven,
+            input_angles,
+            modes,
+            slot_positions,
+            coupler_point: rotate(pose1.position - a[0], -theta3),
+            coupler_angle_offset: pose1.angle - theta3,
+            direction: trav.direction,
+            one_circuit: trav.one_circuit,
+            min_transmission,
+            stroke_used,
+            swing_used,
+        })
+    }
+}
