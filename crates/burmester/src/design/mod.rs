@@ -51,6 +51,7 @@ mod judge;
 mod kernel;
 mod limits;
 mod map;
+mod map_slider;
 mod options;
 pub mod pairs;
 mod rank;
