@@ -156,19 +156,23 @@ enum Driven {
     Near,
 }
 
+/// The slider-crank of the driving dyad `(a0, a1)` and the slider.
+fn built(a0: Point2<f64>, a1: Point2<f64>, slider: &SliderDyad) -> SliderCrank {
+    SliderCrank {
+        a0,
+        r: (a1 - a0).norm(),
+        l: (slider.circle - a1).norm(),
+        g: slider.circle,
+        u: slider.guide,
+    }
+}
+
 /// Builds the slider-crank of the driving dyad `(a0, a1)` and the slider
 /// `(b1, u)` of `poses` and drives it: the mode that reaches each pose at
 /// its crank angle (independent of the library: the solver above, the
 /// displacements from the poses).
 fn drive(poses: &[Pose], a0: Point2<f64>, a1: Point2<f64>, slider: &SliderDyad) -> Driven {
-    let b1 = slider.circle;
-    let sc = SliderCrank {
-        a0,
-        r: (a1 - a0).norm(),
-        l: (b1 - a1).norm(),
-        g: b1,
-        u: slider.guide,
-    };
+    let (b1, sc) = (slider.circle, built(a0, a1, slider));
     let mut modes = Vec::new();
     let mut phis = Vec::new();
     for k in 0..poses.len() {
@@ -631,14 +635,7 @@ struct Dense {
 }
 
 fn dense_figures(poses: &[Pose], a0: Point2<f64>, a1: Point2<f64>, slider: &SliderDyad) -> Dense {
-    let b1 = slider.circle;
-    let sc = SliderCrank {
-        a0,
-        r: (a1 - a0).norm(),
-        l: (b1 - a1).norm(),
-        g: b1,
-        u: slider.guide,
-    };
+    let (b1, sc) = (slider.circle, built(a0, a1, slider));
     let band = 1e-6 * sc.l * sc.l;
     let n = 4096;
     let discs: Vec<f64> = (0..n)

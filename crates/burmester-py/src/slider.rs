@@ -335,7 +335,7 @@ pub struct PySynthesizedSliderCrank {
 }
 
 impl PySynthesizedSliderCrank {
-    fn new(s: SynthesizedSliderCrank, task: Task) -> Self {
+    pub(crate) fn new(s: SynthesizedSliderCrank, task: Task) -> Self {
         let (d, g) = (&s.driving, &s.driven);
         PySynthesizedSliderCrank {
             inner: s,
