@@ -203,3 +203,17 @@ def test_the_picture(press):
     import matplotlib.pyplot as plt
 
     plt.close(ax.figure)
+
+
+def test_progress_and_interrupt(press):
+    _, _, f, _ = press
+    calls = []
+
+    def progress(done, total):
+        calls.append((done, total))
+        if len(calls) > 2:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        f.solution_map(Grid(-300, 300, -300, 300, 1000, 1000), progress=progress)
+    assert len(calls) == 3 and calls[0][1] == 1000  # rows

@@ -874,7 +874,7 @@ fn simulate_agrees_with_driving_and_with_the_exact_map() {
         let f = Filemon::new(&task, slider).unwrap();
         let map = slider_map(&f, &grid);
         let sim = f.branch_map(&grid, Method::Simulate);
-        for k in 0..grid.len() {
+        for (k, &sim_k) in sim.iter().enumerate() {
             let a0 = map.context.point(k);
             let Ok(a1) = task.circle_point(a0) else {
                 continue;
@@ -893,7 +893,7 @@ fn simulate_agrees_with_driving_and_with_the_exact_map() {
             };
             let got = f.classify(a0, Method::Simulate).unwrap();
             assert_eq!(got, want, "{a0}");
-            assert_eq!(sim[k], got == Branch::Free);
+            assert_eq!(sim_k, got == Branch::Free);
             // Simulate is the exact map's branch flag and circuit flag.
             let c = &map.columns;
             assert_eq!(
