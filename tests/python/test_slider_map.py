@@ -217,3 +217,17 @@ def test_progress_and_interrupt(press):
     with pytest.raises(KeyboardInterrupt):
         f.solution_map(Grid(-300, 300, -300, 300, 1000, 1000), progress=progress)
     assert len(calls) == 3 and calls[0][1] == 1000  # rows
+
+
+def test_a_lid_turned_100_degrees_has_at_most_40_degrees_transmission():
+    """The coupler turns with the task: over a travel that turns it by 100
+    degrees its angle to the guide's normal comes within 90 - 50 degrees of
+    it somewhere, whatever the pivot: the map's best is 40 degrees."""
+    task = Task([(0.0, 0.0, 0.0), (30.0, 60.0, math.radians(45)), (40.0, 140.0, math.radians(100))])
+    best = []
+    for s in task.slider_dyads(6):
+        m = SliderFilemon(task, s.circle, s.guide).solution_map(Grid(-400, 400, -400, 400, 80, 80))
+        mu = np.degrees(m.min_transmission_rad[m.valid & (m.direction != 0)])
+        best.append(float(np.nanmax(mu)))
+        assert (mu <= 40.0 + 1e-4).all()
+    assert min(best) > 39.0  # reached within the grid's spacing
