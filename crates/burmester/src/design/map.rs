@@ -183,7 +183,10 @@ impl Filemon {
     /// The solution-space map over candidate driving center points `A0`
     /// on `grid` (see [`design`](crate::design)), following `control`. The
     /// branch-free flag is exactly the `conic` branch map; the other
-    /// figures come from the linkage at each sample.
+    /// figures come from the linkage at each sample: the four-bar of a
+    /// driven crank, the slider-crank ([`MapContext::slider_crank`]) of a
+    /// driven slider (no Grashof class; the crank's rotatability
+    /// `r + |e| <= l` is `input_full`).
     ///
     /// # Errors
     ///
