@@ -1422,8 +1422,11 @@ class SliderFilemon:
     def classify(self, center: Point, method: Method = "conic") -> BranchClass:
         """The branch class of a driving center point: ``"conic"`` (the signs
         of the two conics) or ``"direct"`` (its circle point, then the signs
-        at the three poses). ``"simulate"`` drives a four-bar and raises
-        :class:`InvalidInputError` (``cause`` ``"driven_kind"``) here."""
+        at the three poses). ``"simulate"`` builds the slider-crank
+        (:meth:`Task.slider_crank`) and drives it by crank angle from pose to
+        pose, in pose 1's assembly mode, as :meth:`Filemon.classify` drives a
+        four-bar: it also sees the circuit defect of a crank rocking on two
+        arcs."""
     def classify_circle_point(self, circle: Point) -> BranchClass:
         """Filemon's test of a driving circle point in the circle-point plane."""
     def circle_signs(self, circle: Point) -> list[float]:
@@ -1441,9 +1444,9 @@ class SliderFilemon:
         progress: Optional[Progress] = None,
     ) -> BoolArray:
         """Classify every candidate driving center point of a grid, as
-        :meth:`Filemon.branch_map` (``"conic"`` or ``"direct"``; the
-        method by name only). Shape ``(ny, nx)``, True where strictly
-        branch-free."""
+        :meth:`Filemon.branch_map` (``"conic"``, ``"direct"`` or
+        ``"simulate"``; the method by name only). Shape ``(ny, nx)``, True
+        where strictly branch-free."""
     @overload
     def branch_map(
         self,
@@ -1459,6 +1462,37 @@ class SliderFilemon:
         out: Optional[BoolArray] = None,
         progress: Optional[Progress] = None,
     ) -> BoolArray: ...
+    def solution_map(
+        self,
+        *grid: Union[Grid, GridTuple, float],
+        progress: Optional[Progress] = None,
+        **options: Unpack[MapOptions],
+    ) -> SolutionMap:
+        """The solution map over candidate driving center points ``A0`` with
+        this driven slider: the columns of :meth:`Filemon.solution_map`, each
+        sample's linkage the slider-crank :meth:`SolutionMap.slider_crank`
+        (:attr:`SolutionMap.fixed_kind` is ``"slider"``, :attr:`SolutionMap.fixed_dyad`
+        is ``(C1, u)``).
+
+        ``branch_free`` is exactly :meth:`branch_map`; ``grashof`` is 255
+        everywhere (Grashof's law is a four-bar's): the crank's own
+        rotatability is ``input_full`` (it turns fully exactly when
+        ``r + |e| <= l``, :meth:`SliderCrank.turns_fully`); ``direction``,
+        ``one_circuit`` and ``min_transmission_rad`` (the angle between the
+        coupler and the guide's normal, over the travel) are the
+        slider-crank's (:class:`SynthesizedSliderCrank`); ``link_ratio`` is
+        longest over shortest of the crank and the coupler; ``size_ratio`` is
+        :attr:`SynthesizedSliderCrank.size` over :attr:`Task.span`.
+        ``acceptable`` applies the limits as to a four-bar, the longest link
+        among crank, coupler and offset, and ``min_grashof_margin`` to the
+        distance from the slider-crank's change points,
+        ``min(|l - r - e|, |l - r + e|) / (r + l + |e|)``. A ``base_plate``
+        holds ``A0``; ``obstacles`` (and an envelope) are checked over a
+        four-bar's travel and raise :class:`InvalidInputError` (``cause``
+        ``"driven_kind"``) here, as :meth:`SolutionMap.best_pivots` and
+        :meth:`SolutionMap.linkage` do on this map. Grid, GIL, progress and
+        Ctrl-C as :meth:`Filemon.solution_map` (the grid a :class:`Grid`,
+        its tuple or its six numbers)."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
 
@@ -1793,8 +1827,8 @@ class Pivot:
 
 @final
 class SolutionMap:
-    """The solution-space map (from :meth:`Filemon.solution_map` or
-    :meth:`Task.driven_solution_map`): one read-only NumPy array per column,
+    """The solution-space map (from :meth:`Filemon.solution_map`,
+    :meth:`SliderFilemon.solution_map` or :meth:`Task.driven_solution_map`): one read-only NumPy array per column,
     of shape ``(ny, nx)``, row ``j`` for ``y_j``, like
     :meth:`Filemon.branch_map` (allocated by NumPy and filled in place by the
     core, no copy)."""
@@ -1854,7 +1888,13 @@ class SolutionMap:
     @property
     def fixed_dyad(self) -> Tuple[Point, Point]:
         """The dyad that stays fixed: the driven ``(C0, C1)`` of a driving
-        map, the driving ``(A0, A1)`` of a driven one."""
+        map, the driving ``(A0, A1)`` of a driven one; ``(C1, u)`` of a
+        driven slider (:meth:`SliderFilemon.solution_map`)."""
+    @property
+    def fixed_kind(self) -> Literal["revolute", "slider"]:
+        """The kind of the fixed dyad: ``"slider"`` for a map of
+        :meth:`SliderFilemon.solution_map` (its linkages are slider-cranks,
+        :meth:`slider_crank`), else ``"revolute"``."""
     @property
     def task(self) -> Task:
         """The task."""
@@ -1864,7 +1904,14 @@ class SolutionMap:
     def point(self, j: int, i: int) -> Point:
         """The candidate center point of sample ``[j, i]``."""
     def linkage(self, j: int, i: int) -> SynthesizedFourBar:
-        """The linkage of sample ``[j, i]``."""
+        """The linkage of sample ``[j, i]``; :class:`InvalidInputError`
+        (``cause`` ``"driven_kind"``) on a map with a driven slider (use
+        :meth:`slider_crank`)."""
+    def slider_crank(self, j: int, i: int) -> SynthesizedSliderCrank:
+        """The slider-crank of sample ``[j, i]`` of a map with a driven
+        slider (:meth:`SliderFilemon.solution_map`); :class:`InvalidInputError`
+        (``cause`` ``"driven_kind"``) on a map with a driven crank, as
+        :meth:`linkage` for an invalid sample."""
     def margin(self, j: int, i: int) -> float:
         """The signed margin of sample ``[j, i]``: positive where branch-free.
         For a driving map the first-order distance to the nearer transformed
@@ -1899,7 +1946,10 @@ class SolutionMap:
 
         The candidates are selected, not sorted (``O(n log k)`` for ``n``
         samples; the Pareto front sorts them); a large ``k`` or map releases
-        the GIL and Ctrl-C raises :class:`KeyboardInterrupt`."""
+        the GIL and Ctrl-C raises :class:`KeyboardInterrupt`. A map with a
+        driven slider raises :class:`InvalidInputError` (``cause``
+        ``"driven_kind"``: a :class:`Pivot` carries a four-bar); rank its
+        columns and build each with :meth:`slider_crank`."""
     def pareto_front(self) -> list[Pivot]:
         """Every acceptable candidate on the Pareto front of the minimum
         transmission angle (larger is better) and the size ratio (smaller is

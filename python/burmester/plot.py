@@ -1467,6 +1467,10 @@ def solution_map(
     (``smap.branch_free``), the acceptable pivots, contours of the minimum
     transmission angle over the travel, and the best pivots
     (:meth:`burmester.SolutionMap.best_pivots`, numbered stars). A map of
+    driving pivots with a driven slider
+    (:meth:`burmester.SliderFilemon.solution_map`) is drawn with the same
+    overlays, the slider's guide (gid ``"guide"``) and pin ``C1``
+    (``"driven-pin"``) in place of the curves and the best pivots. A map of
     driven pivots (:meth:`burmester.Task.driven_solution_map`) is drawn the
     same way over the driven plane (gids ``"branch-map"``,
     ``"transmission"``, ``"pivots"``), with the fixed driving pivot
@@ -1482,10 +1486,12 @@ def solution_map(
     Returns:
         The Axes.
     """
-    best = [p.center for p in smap.best_pivots(pivots)] if pivots > 0 else []
+    slider = smap.fixed_kind == "slider"
+    # A map with a driven slider has no Pivot records (they carry a four-bar).
+    best = [p.center for p in smap.best_pivots(pivots)] if pivots > 0 and not slider else []
     transmission = np.degrees(smap.min_transmission_rad)
     fixed = smap.fixed_dyad[0]
-    if smap.varying == "driving":
+    if smap.varying == "driving" and not slider:
         return center_plane(
             smap.task.filemon(fixed), smap.grid, free=smap.branch_free, acceptable=smap.acceptable,
             transmission=transmission, transmission_levels=transmission_levels, pivots=best or None,
@@ -1510,26 +1516,49 @@ def solution_map(
         ax.clabel(cs, fmt="%g°", fontsize=7)
         handles.append(Line2D([], [], color="#636363", linewidth=0.8, label="transmission angle, deg"))
     handles.append(_draw_poses(ax, smap.task, labels))
-    handles.append(_markers(
-        ax, [fixed], "driving-pivot", "driving crank's fixed pivot A0",
-        marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=5,
-    ))
+    if slider:
+        handles.extend(_draw_slider_guide(ax, smap, extent))
+    else:
+        handles.append(_markers(
+            ax, [fixed], "driving-pivot", "driving crank's fixed pivot A0",
+            marker="^", markersize=9, color="#ff7f0e", markeredgecolor="black", zorder=5,
+        ))
     if best:
         handles.append(_markers(
             ax, best, "pivots", "best driven pivots",
             marker="*", markersize=13, color="#ffd700", markeredgecolor="black", zorder=6,
         ))
+    name = "C1" if slider else "A0"
     if labels:
-        _label(ax, fixed, "A0")
+        _label(ax, fixed, name)
         for k, p in enumerate(best, start=1):
             _label(ax, p, str(k))
-        ax.set_title("Driven crank center-point plane")
+        ax.set_title("Driving crank center-point plane, driven slider" if slider
+                     else "Driven crank center-point plane")
     if labels or units:
         label_axes(ax, units)
-    note_outside(ax, extent, [("A0", fixed)] + [(str(k), p) for k, p in enumerate(best, start=1)]
+    note_outside(ax, extent, [(name, fixed)] + [(str(k), p) for k, p in enumerate(best, start=1)]
                  + [(f"pose {k}", q[:2]) for k, q in enumerate(smap.task.poses, start=1)], units)
     _finish(ax, extent, legend, handles)
     return ax
+
+
+def _draw_slider_guide(ax: Axes, smap: burmester.SolutionMap, extent: Extent) -> List[Artist]:
+    """The driven slider of a solution map: its guide through ``C1`` (gid
+    ``"guide"``, clipped to the view) and the pin ``C1`` (``"driven-pin"``)."""
+    c1, u = smap.fixed_dyad
+    out: List[Artist] = []
+    seg = clip_line(c1, u, extent)
+    if seg:
+        (line,) = ax.plot([seg[0][0], seg[1][0]], [seg[0][1], seg[1][1]], color="#ff7f0e",
+                          linewidth=1.2, zorder=4, label="driven slider's guide")
+        line.set_gid("guide")
+        out.append(line)
+    out.append(_markers(
+        ax, [c1], "driven-pin", "driven slider's pin C1",
+        marker="s", markersize=8, color="#ff7f0e", markeredgecolor="black", zorder=5,
+    ))
+    return out
 
 
 def atlas(

@@ -279,7 +279,7 @@ PROPERTIES = {
     DesignLimits: "min_transmission_deg max_link_ratio input max_size_ratio max_link_length min_grashof_margin",
     Pivot: "center index linkage figures margin size_ratio score ranked_by",
     SolutionMap: "valid branch_free grashof input_full direction one_circuit min_transmission_rad link_ratio "
-                 "size_ratio acceptable grid extent shape varying fixed_dyad task limits",
+                 "size_ratio acceptable grid extent shape varying fixed_dyad task limits fixed_kind",
     burmester.PivotAtlas: "branch_free_fraction shape rank_by",
     burmester.AtlasPair: "driven driving min_transmission_deg link_ratio margin n_acceptable driven_index driving_index "
                          "score size_ratio",
@@ -335,7 +335,7 @@ METHODS = {
              "branch_map margin_map margin solution_map",
     SynthesizedFourBar: "travel_angles pose_at score drive_map drive classic_drive drive_search best_drive "
                         "actuator_map actuator",
-    SolutionMap: "point linkage margin best_pivots pareto_front",
+    SolutionMap: "point linkage margin best_pivots pareto_front slider_crank",
     burmester.PivotAtlas: "best_pairs",
     burmester.AtlasPair: "linkage",
     burmester.Space: "contains_pivot search_box",
@@ -343,7 +343,8 @@ METHODS = {
     burmester.SixBar: "solve transmission_angles toggle joints pose_at coupler_path crank_angles crank_angles_for_input",
     burmester.Drive: "turn_angles pose_at",
     burmester.DriveMap: "point drive best_drives pareto_front classic_drive",
-    burmester.SliderFilemon: "line_conic classify classify_circle_point circle_signs conic_values branch_map",
+    burmester.SliderFilemon: "line_conic classify classify_circle_point circle_signs conic_values branch_map "
+    "solution_map",
     burmester.Actuator: "at travel",
     burmester.ActuatorMap: "ground placement best_placements pareto_front",
 }

@@ -38,6 +38,9 @@ CHILD = textwrap.dedent(
     small_pairs = t4.pair_map(256)
     f.branch_map(Grid(*VP, 512, 512))        # the thread pool started before the limit
     fb = FourBar(ground=4, crank=1, coupler=3, rocker=3)
+    slider = t3.slider_dyads(1)[0]
+    sf = burmester.SliderFilemon(t3, slider.circle, slider.guide)
+    sf.solution_map(Grid(*VP, 64, 64))
     calls = {{
         "branch_map": lambda: f.branch_map(big),
         "branch_map_row": lambda: f.branch_map(row),
@@ -67,6 +70,7 @@ CHILD = textwrap.dedent(
         "solve_many": lambda: fb.solve_many(np.zeros(4 * 10**7)),
         "coupler_path": lambda: fb.coupler_path((1.0, 0.5), np.zeros(4 * 10**7)),
         "travel_angles": lambda: f.four_bar((-3.0, 4.0)).travel_angles(2**20),
+        "slider_solution_map": lambda: sf.solution_map(big),
     }}
     call = calls[name]
     def vm():
@@ -121,6 +125,7 @@ CASES = {
     "solve_many": (256, {"memory"}),
     "coupler_path": (256, {"memory"}),
     "travel_angles": (256, {"ok"}),
+    "slider_solution_map": (512, {"memory"}),      # a driven slider's map at Grid's maximum
 }
 
 

@@ -156,19 +156,23 @@ enum Driven {
     Near,
 }
 
+/// The slider-crank of the driving dyad `(a0, a1)` and the slider.
+fn built(a0: Point2<f64>, a1: Point2<f64>, slider: &SliderDyad) -> SliderCrank {
+    SliderCrank {
+        a0,
+        r: (a1 - a0).norm(),
+        l: (slider.circle - a1).norm(),
+        g: slider.circle,
+        u: slider.guide,
+    }
+}
+
 /// Builds the slider-crank of the driving dyad `(a0, a1)` and the slider
 /// `(b1, u)` of `poses` and drives it: the mode that reaches each pose at
 /// its crank angle (independent of the library: the solver above, the
 /// displacements from the poses).
 fn drive(poses: &[Pose], a0: Point2<f64>, a1: Point2<f64>, slider: &SliderDyad) -> Driven {
-    let b1 = slider.circle;
-    let sc = SliderCrank {
-        a0,
-        r: (a1 - a0).norm(),
-        l: (b1 - a1).norm(),
-        g: b1,
-        u: slider.guide,
-    };
+    let (b1, sc) = (slider.circle, built(a0, a1, slider));
     let mut modes = Vec::new();
     let mut phis = Vec::new();
     for k in 0..poses.len() {
@@ -481,28 +485,39 @@ fn slider_errors_are_typed() {
     let e = Filemon::new(&task, off).unwrap_err();
     assert_eq!(cause_of(&e), "not_a_dyad");
     assert!(e.to_string().contains("slider"), "{e}");
-    // What needs a four-bar refuses a slider, saying why.
+    // What needs a four-bar refuses a slider, saying why (the simulate
+    // method and the solution map drive the slider-crank instead).
     let f = Filemon::new(&task, slider).unwrap();
-    for e in [
-        f.classify(sc.a0, Method::Simulate).unwrap_err(),
-        f.four_bar(sc.a0).unwrap_err(),
-        f.solution_map(
-            &Grid::from_bounds(-1.0, 1.0, -1.0, 1.0, 4, 4).unwrap(),
+    let grid = Grid::from_bounds(-1.0, 1.0, -1.0, 1.0, 4, 4).unwrap();
+    let map = f
+        .solution_map(
+            &grid,
             &Default::default(),
             &burmester::Constraints::none(),
             &Control::new(),
         )
-        .unwrap_err(),
+        .unwrap();
+    let obstacles = burmester::Constraints {
+        obstacles: vec![vec![
+            Point2::new(50.0, 50.0),
+            Point2::new(51.0, 50.0),
+            Point2::new(51.0, 51.0),
+        ]],
+        ..burmester::Constraints::none()
+    };
+    for e in [
+        f.four_bar(sc.a0).unwrap_err(),
+        map.context.linkage(0).unwrap_err(),
+        f.solution_map(&grid, &Default::default(), &obstacles, &Control::new())
+            .unwrap_err(),
     ] {
         assert_eq!(cause_of(&e), "driven_kind");
         assert!(e.to_string().contains("slider"), "{e}");
     }
-    let grid = Grid::from_bounds(-1.0, 1.0, -1.0, 1.0, 4, 4).unwrap();
+    assert!(f.classify(sc.a0, Method::Simulate).is_ok());
     let mut out = vec![false; grid.len()];
-    let e = f
-        .branch_map_into(&grid, Method::Simulate, &mut out, &Control::new())
-        .unwrap_err();
-    assert_eq!(cause_of(&e), "driven_kind");
+    f.branch_map_into(&grid, Method::Simulate, &mut out, &Control::new())
+        .unwrap();
     // Four poses: the three-pose construction is refused, the four-pose
     // one takes the slider.
     let (four, slider4, _) = random_slider_crank(&mut rng, 4);
@@ -588,4 +603,444 @@ fn four_poses_arcs_agree_with_driving_the_slider_crank() {
          {circuit} circuit, {near} near"
     );
     assert!(free > 200 && defective > 100);
+}
+
+// The solution map with a driven slider (every column) and the simulate
+// method, against driving the built slider-crank densely with the solver
+// above.
+
+/// What driving the slider-crank of `(a0, a1)` and the slider densely by
+/// crank angle says about the map's figures (independent of the library).
+#[derive(Debug)]
+struct Dense {
+    /// The loop closes at every crank angle (`None`: within 1e-6 `l^2` of a
+    /// change point, not compared).
+    full: Option<bool>,
+    /// The crank rotation that meets the poses in order from pose 1 without
+    /// the loop opening: `1`, `-1` or `0` (`None`: a dead position within
+    /// the walking band, not compared).
+    direction: Option<i8>,
+    /// Every pose on one arc of the crank's range.
+    one_circuit: bool,
+    /// The smallest transmission angle over the travel (the angle between
+    /// the coupler and the guide's normal, `cos mu = |q| / l`), sampled
+    /// every 1e-3 rad; NaN without a travel.
+    min_mu: f64,
+    /// The span of the slider's positions over the travel in pose 1's mode.
+    stroke: f64,
+    /// Crank and coupler lengths and the offset.
+    r: f64,
+    l: f64,
+    e: f64,
+}
+
+fn dense_figures(poses: &[Pose], a0: Point2<f64>, a1: Point2<f64>, slider: &SliderDyad) -> Dense {
+    let (b1, sc) = (slider.circle, built(a0, a1, slider));
+    let band = 1e-6 * sc.l * sc.l;
+    let n = 4096;
+    let discs: Vec<f64> = (0..n)
+        .map(|i| sc.parts(i as f64 * TAU / n as f64).2)
+        .collect();
+    let lowest = discs.iter().copied().fold(f64::INFINITY, f64::min);
+    // The lowest disc is at the crank along the normal: check it exactly.
+    let n_u = Vector2::new(-sc.u.y, sc.u.x);
+    let lowest = [n_u, -n_u]
+        .iter()
+        .map(|d| sc.parts(d.y.atan2(d.x)).2)
+        .fold(lowest, f64::min);
+    let full = (lowest.abs() > band).then_some(lowest > 0.0);
+    let phis: Vec<f64> = (0..poses.len())
+        .map(|k| {
+            let a = displace(poses, k, a1);
+            (a.y - a0.y).atan2(a.x - a0.x)
+        })
+        .collect();
+    let one_circuit = phis.windows(2).all(|w| sc.can_turn(w[0], w[1]));
+    // Walk from pose 1 each way: the poses in order, the loop closed.
+    let step = 2e-3;
+    let mut direction = Some(0);
+    let mut travel = None;
+    for dir in [1.0, -1.0] {
+        let dist: Vec<f64> = phis
+            .iter()
+            .map(|p| ((p - phis[0]) * dir).rem_euclid(TAU))
+            .collect();
+        let in_order = dist.windows(2).all(|w| w[0] < w[1]);
+        let end = dist[dist.len() - 1];
+        let steps = (end / step).ceil() as usize;
+        let low = (0..=steps)
+            .map(|s| sc.parts(phis[0] + dir * end * s as f64 / steps as f64).2)
+            .fold(f64::INFINITY, f64::min);
+        if low.abs() <= band {
+            direction = None;
+        }
+        if in_order && low > 0.0 {
+            if let Some(d) = direction.as_mut() {
+                *d = dir as i8;
+            }
+            travel = Some((dir * end, steps));
+        }
+    }
+    let (mut min_mu, mut stroke) = (f64::NAN, f64::NAN);
+    if let Some((span, steps)) = travel {
+        let (p, _, disc) = sc.parts(phis[0]);
+        let t1 = sc.u.dot(&(b1 - sc.g));
+        let mode = (t1 - p).signum();
+        let _ = disc;
+        let at = |s: f64| {
+            let (p, _, disc) = sc.parts(phis[0] + span * s / steps as f64);
+            p + mode * disc.max(0.0).sqrt()
+        };
+        let (mut lo, mut hi, mut mu) = ((f64::INFINITY, 0), (f64::NEG_INFINITY, 0), f64::INFINITY);
+        for s in 0..=steps {
+            let phi = phis[0] + span * s as f64 / steps as f64;
+            let (_, q, _) = sc.parts(phi);
+            mu = mu.min((q.abs() / sc.l).min(1.0).acos());
+            let t = at(s as f64);
+            if t < lo.0 {
+                lo = (t, s);
+            }
+            if t > hi.0 {
+                hi = (t, s);
+            }
+        }
+        // The extremes refined within a step either side, 1e-3 steps.
+        let refine = |s: usize, pick: fn(f64, f64) -> f64| {
+            (0..=2000)
+                .map(|i| (s as f64 - 1.0 + i as f64 * 1e-3).clamp(0.0, steps as f64))
+                .map(at)
+                .fold(at(s as f64), pick)
+        };
+        min_mu = mu;
+        stroke = refine(hi.1, f64::max) - refine(lo.1, f64::min);
+    }
+    Dense {
+        full,
+        direction,
+        one_circuit,
+        min_mu,
+        stroke,
+        r: sc.r,
+        l: sc.l,
+        e: cross(sc.u, a0 - b1),
+    }
+}
+
+/// The largest distance between two pose positions (`Task::span`, written
+/// here from its definition).
+fn span_of(poses: &[Pose]) -> f64 {
+    let mut s: f64 = 0.0;
+    for p in poses {
+        for q in poses {
+            s = s.max((p.position - q.position).norm());
+        }
+    }
+    s
+}
+
+fn slider_map(f: &Filemon, grid: &Grid) -> burmester::SolutionMap {
+    f.solution_map(
+        grid,
+        &Default::default(),
+        &burmester::Constraints::none(),
+        &Control::new(),
+    )
+    .unwrap()
+}
+
+#[test]
+fn slider_map_columns_agree_with_driving_the_built_slider_crank() {
+    let mut rng = Rng(31);
+    let grid = Grid::from_bounds(-4.0, 4.0, -4.0, 4.0, 14, 14).unwrap();
+    let mut seen = [0usize; 9];
+    for _ in 0..16 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let f = Filemon::new(&task, slider).unwrap();
+        let map = slider_map(&f, &grid);
+        let c = &map.columns;
+        let span = span_of(task.poses());
+        for k in 0..grid.len() {
+            let a0 = map.context.point(k);
+            let Ok(a1) = task.circle_point(a0) else {
+                assert!(!c.valid[k]);
+                continue;
+            };
+            if (a1 - a0).norm() > 1e3 || (slider.circle - a1).norm() < 1e-9 {
+                continue;
+            }
+            assert!(c.valid[k], "{a0}");
+            seen[0] += 1;
+            assert_eq!(c.grashof[k], burmester::SolutionMap::GRASHOF_NONE);
+            let d = dense_figures(task.poses(), a0, a1, &slider);
+            // Branch: the map's flag is the conic branch map; driving says
+            // which mode reaches each pose.
+            match drive(task.poses(), a0, a1, &slider) {
+                Driven::Near => {}
+                Driven::Free | Driven::Circuit => {
+                    assert!(c.branch_free[k], "{a0}");
+                    seen[1] += 1;
+                }
+                Driven::Defective => {
+                    assert!(!c.branch_free[k], "{a0}");
+                    seen[1] += 1;
+                }
+            }
+            if let Some(full) = d.full {
+                assert_eq!(c.input_full[k], full, "{a0}: {d:?}");
+                seen[2] += 1;
+            }
+            if let Some(dir) = d.direction {
+                assert_eq!(c.direction[k], dir, "{a0}: {d:?}");
+                seen[3] += 1;
+                if dir != 0 {
+                    let mu = c.min_transmission_rad[k] as f64;
+                    // The dense minimum is at most 1e-3 rad of crank off.
+                    assert!(
+                        mu <= d.min_mu + 1e-6 && mu >= d.min_mu - 2e-2,
+                        "{a0}: {mu} vs {}",
+                        d.min_mu
+                    );
+                    seen[4] += 1;
+                } else {
+                    assert!(c.min_transmission_rad[k].is_nan());
+                }
+            }
+            if d.direction.is_some() && d.full.is_some() {
+                assert_eq!(c.one_circuit[k], d.one_circuit, "{a0}: {d:?}");
+                seen[5] += 1;
+            }
+            let ratio = d.r.max(d.l) / d.r.min(d.l);
+            assert!((c.link_ratio[k] as f64 - ratio).abs() <= 1e-5 * ratio);
+            // The size: crank, coupler, the coupler triangle's other sides
+            // (the coupler point is pose 1's position), the offset and the
+            // guide the slider runs on over the travel.
+            let p = task.poses()[0].position;
+            let sc = map.context.slider_crank(k).unwrap();
+            let guide = if c.branch_free[k] && d.direction.is_some_and(|x| x != 0) {
+                seen[6] += 1;
+                assert!(
+                    (sc.stroke_used - d.stroke).abs() <= 1e-5 * (1.0 + d.stroke),
+                    "{a0}: {} vs {}",
+                    sc.stroke_used,
+                    d.stroke
+                );
+                d.stroke
+            } else {
+                sc.size() - (d.r + d.l + (p - a1).norm() + (p - slider.circle).norm() + d.e.abs())
+            };
+            let size = d.r + d.l + (p - a1).norm() + (p - slider.circle).norm() + d.e.abs() + guide;
+            assert!(
+                (c.size_ratio[k] as f64 - size / span).abs() <= 1e-5 * size / span,
+                "{a0}"
+            );
+            // The map's linkage is the slider-crank of the sample.
+            assert!((sc.linkage.crank() - d.r).abs() <= 1e-9 * (1.0 + d.r));
+            assert!((sc.linkage.coupler() - d.l).abs() <= 1e-9 * (1.0 + d.l));
+            // acceptable: branch-free and the default limits, read from the
+            // columns and the offset (the rotatability margin).
+            let margin =
+                ((d.l - d.r - d.e).abs()).min((d.l - d.r + d.e).abs()) / (d.r + d.l + d.e.abs());
+            let want = c.branch_free[k]
+                && c.one_circuit[k]
+                && c.direction[k] != 0
+                && (c.link_ratio[k] as f64) <= 10.0
+                && margin >= 0.01
+                && sc.min_transmission >= 30f64.to_radians();
+            if (margin - 0.01).abs() > 1e-9 {
+                assert_eq!(c.acceptable[k], want, "{a0}");
+                seen[7] += u8::from(want) as usize;
+            }
+        }
+    }
+    eprintln!(
+        "samples {}, branch {}, input_full {}, direction {}, transmission {}, one_circuit {}, \
+         stroke {}, acceptable {}",
+        seen[0], seen[1], seen[2], seen[3], seen[4], seen[5], seen[6], seen[7]
+    );
+    assert!(
+        seen[0] > 3000 && seen[1] > 3000 && seen[3] > 3000,
+        "{seen:?}"
+    );
+    assert!(seen[4] > 500 && seen[7] > 100, "{seen:?}");
+}
+
+#[test]
+fn simulate_agrees_with_driving_and_with_the_exact_map() {
+    let mut rng = Rng(32);
+    let grid = Grid::from_bounds(-4.0, 4.0, -4.0, 4.0, 20, 20).unwrap();
+    let (mut agree, mut circuit) = (0, 0);
+    for _ in 0..12 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let f = Filemon::new(&task, slider).unwrap();
+        let map = slider_map(&f, &grid);
+        let sim = f.branch_map(&grid, Method::Simulate);
+        for (k, &sim_k) in sim.iter().enumerate() {
+            let a0 = map.context.point(k);
+            let Ok(a1) = task.circle_point(a0) else {
+                continue;
+            };
+            if (a1 - a0).norm() > 1e3 {
+                continue;
+            }
+            let want = match drive(task.poses(), a0, a1, &slider) {
+                Driven::Near => continue,
+                Driven::Free => Branch::Free,
+                Driven::Defective => Branch::Defective,
+                Driven::Circuit => {
+                    circuit += 1;
+                    Branch::Defective
+                }
+            };
+            let got = f.classify(a0, Method::Simulate).unwrap();
+            assert_eq!(got, want, "{a0}");
+            assert_eq!(sim_k, got == Branch::Free);
+            // Simulate is the exact map's branch flag and circuit flag.
+            let c = &map.columns;
+            assert_eq!(
+                got == Branch::Free,
+                c.branch_free[k] && c.one_circuit[k],
+                "{a0}"
+            );
+            agree += 1;
+        }
+    }
+    eprintln!("simulate agrees with driving at {agree} samples ({circuit} circuit defects)");
+    assert!(agree > 3000 && circuit > 0, "{agree} {circuit}");
+}
+
+/// A press in mm: crank 40 about the origin, coupler 160, the ram's pin on
+/// a horizontal guide 10 above the crank pivot, at crank angles 30, 90 and
+/// 150 degrees (the coupler's pose: the crank pin and the coupler's angle).
+fn press() -> (Task, SliderDyad) {
+    let sc = SliderCrank {
+        a0: Point2::origin(),
+        r: 40.0,
+        l: 160.0,
+        g: Point2::new(0.0, 10.0),
+        u: Vector2::x(),
+    };
+    let poses: Vec<Pose> = [30f64, 90.0, 150.0]
+        .iter()
+        .map(|d| pose_of(&sc, d.to_radians(), 1.0).unwrap())
+        .collect();
+    let b1 = sc.slider(30f64.to_radians(), 1.0).unwrap();
+    (
+        Task::new(&poses).unwrap(),
+        SliderDyad::new(b1, sc.u).unwrap(),
+    )
+}
+
+#[test]
+fn the_generating_crank_of_a_press_is_acceptable() {
+    let (task, slider) = press();
+    let f = Filemon::new(&task, slider).unwrap();
+    let grid = Grid::from_bounds(-105.0, 105.0, -105.0, 105.0, 21, 21).unwrap();
+    let map = slider_map(&f, &grid);
+    let k = 10 * 21 + 10;
+    assert_eq!(map.context.point(k), Point2::origin());
+    let c = &map.columns;
+    assert!(c.valid[k] && c.branch_free[k] && c.acceptable[k] && c.one_circuit[k]);
+    let sc = map.context.slider_crank(k).unwrap();
+    assert!((sc.linkage.crank() - 40.0).abs() < 1e-9);
+    assert!((sc.linkage.coupler() - 160.0).abs() < 1e-9);
+    assert!((sc.linkage.offset().abs() - 10.0).abs() < 1e-9);
+    // cos mu = |e + r sin theta| / l is largest at 90 degrees: 30 / 160.
+    let mu = (30.0f64 / 160.0).acos();
+    assert!((map.columns.min_transmission_rad[k] as f64 - mu).abs() < 1e-6);
+    assert_eq!(map.columns.direction[k], 1);
+    assert!(map.columns.input_full[k]);
+    assert_eq!(
+        f.classify(Point2::origin(), Method::Simulate).unwrap(),
+        Branch::Free
+    );
+    // Its margin is positive (branch-free), and a Pivot carries a four-bar.
+    assert!(map.margin(k) > 0.0);
+    let e = map
+        .best_pivots(3, None, burmester::RankBy::Balanced)
+        .unwrap_err();
+    assert_eq!(cause_of(&e), "driven_kind");
+    assert_eq!(map.context.varying.as_str(), "driving");
+    assert_eq!(map.context.varying.fixed(), DyadKind::Slider(slider));
+    // A crank's map has no slider-crank.
+    let revolute = task.filemon(Point2::new(300.0, -200.0)).unwrap();
+    let rmap = slider_map(&revolute, &grid);
+    assert_eq!(
+        cause_of(&rmap.context.slider_crank(0).unwrap_err()),
+        "driven_kind"
+    );
+}
+
+#[test]
+fn slider_map_is_invariant_under_moves_rotations_and_scaling() {
+    let mut rng = Rng(33);
+    let (n, h) = (24, 4.0);
+    let mut compared = 0;
+    let mut flips = 0;
+    for _ in 0..10 {
+        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+        let (s, t) = (
+            rng.range(0.01, 100.0),
+            Vector2::new(rng.range(-50.0, 50.0), rng.range(-50.0, 50.0)),
+        );
+        // A quarter turn keeps the grid's samples on a grid: (x, y) ->
+        // s (-y, x) + t.
+        let map_pt = |p: Point2<f64>| Point2::new(-p.y, p.x) * s + t;
+        let map_dir = |v: Vector2<f64>| Vector2::new(-v.y, v.x);
+        let poses: Vec<Pose> = task
+            .poses()
+            .iter()
+            .map(|p| {
+                let q = map_pt(p.position);
+                Pose::new(q.x, q.y, p.angle + PI / 2.0)
+            })
+            .collect();
+        let task2 = Task::new(&poses).unwrap();
+        let slider2 = SliderDyad::new(map_pt(slider.circle), map_dir(slider.guide)).unwrap();
+        let g1 = Grid::from_bounds(-h, h, -h, h, n, n).unwrap();
+        let g2 =
+            Grid::from_bounds(-h * s + t.x, h * s + t.x, -h * s + t.y, h * s + t.y, n, n).unwrap();
+        let m1 = slider_map(&Filemon::new(&task, slider).unwrap(), &g1);
+        let m2 = slider_map(&Filemon::new(&task2, slider2).unwrap(), &g2);
+        let (c1, c2) = (&m1.columns, &m2.columns);
+        for j in 0..n {
+            for i in 0..n {
+                let k1 = j * n + i;
+                let k2 = i * n + (n - 1 - j);
+                let p1 = m1.context.point(k1);
+                assert!(
+                    (map_pt(p1) - m2.context.point(k2)).norm()
+                        < 1e-9 * s * (1.0 + h) + 1e-9 * t.norm()
+                );
+                if !c1.valid[k1] || !c2.valid[k2] {
+                    assert_eq!(c1.valid[k1], c2.valid[k2]);
+                    continue;
+                }
+                // Exact flags may flip only within rounding of a curve.
+                let margin = m1.context.margin(k1, &c1.branch_free).abs();
+                let near = margin < 1e-6;
+                let same = c1.branch_free[k1] == c2.branch_free[k2]
+                    && c1.direction[k1] == c2.direction[k2]
+                    && c1.one_circuit[k1] == c2.one_circuit[k2]
+                    && c1.input_full[k1] == c2.input_full[k2]
+                    && c1.acceptable[k1] == c2.acceptable[k2];
+                if !same {
+                    assert!(near, "{p1}: margin {margin}");
+                    flips += 1;
+                    continue;
+                }
+                let close = |a: f32, b: f32| {
+                    (a.is_nan() && b.is_nan()) || (a - b).abs() <= 1e-4 * (1.0 + a.abs())
+                };
+                assert!(
+                    close(c1.min_transmission_rad[k1], c2.min_transmission_rad[k2]),
+                    "{p1}"
+                );
+                assert!(close(c1.link_ratio[k1], c2.link_ratio[k2]), "{p1}");
+                assert!(close(c1.size_ratio[k1], c2.size_ratio[k2]), "{p1}");
+                compared += 1;
+            }
+        }
+    }
+    eprintln!("invariance: {compared} samples equal, {flips} within rounding of a curve");
+    assert!(compared > 4000, "{compared}");
 }

@@ -2,8 +2,7 @@
 //! (the core's `design`).
 
 use burmester::{
-    DesignLimits, Dyad, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2, RankBy, Task,
-    Varying,
+    DesignLimits, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2, RankBy, Task, Varying,
 };
 use numpy::ndarray::Array2;
 use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods};
@@ -11,7 +10,7 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::classes::{PyDesignLimits, PyFilemon, PySynthesizedFourBar, PyTask, dyad_tuple};
+use crate::classes::{PyDesignLimits, PyFilemon, PySynthesizedFourBar, PyTask};
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
@@ -233,11 +232,14 @@ fn bad_state(name: &str, k: usize, nx: usize, what: String) -> PyErr {
 /// `[0, pi/2]`, a ratio below 1, an invalid sample with values, a valid one
 /// without them, a travel without a direction (or the other way round), an
 /// acceptable sample that is not branch-free, feasible and within the
-/// limits. (The bool bytes are checked as they are read.)
+/// limits; a Grashof class where `no_grashof` (a map of slider-cranks,
+/// `slider_map::NoGrashof`), none elsewhere. (The bool bytes are checked
+/// as they are read.)
 pub(crate) fn check_state(
     c: &burmester::design::Columns,
     nx: usize,
     limits: &DesignLimits,
+    no_grashof: bool,
 ) -> PyResult<()> {
     use burmester::{Grashof, SolutionMap};
     // f32 columns hold the f64 figures rounded: allow their rounding.
@@ -284,8 +286,8 @@ pub(crate) fn check_state(
             }
             continue;
         }
-        if g == SolutionMap::GRASHOF_NONE {
-            return bad("grashof", "no class for a valid sample".to_owned());
+        if (g == SolutionMap::GRASHOF_NONE) != no_grashof {
+            return bad("grashof", crate::slider_map::grashof_problem(no_grashof));
         }
         if lr.is_nan() || lr < 1.0 {
             return bad("link_ratio", format!("{lr} (at least 1 for a linkage)"));
@@ -395,7 +397,7 @@ macro_rules! py_map_class {
         /// A map with the solution map's columns (see the stub for the docs).
         #[pyclass(frozen, name = $pyname, module = "burmester")]
         pub struct $cls {
-            context: $ctx,
+            pub(crate) context: $ctx,
             $($(#[$doc])* #[pyo3(get)] $name: Py<PyArray2<$ty>>,)*
         }
 
@@ -475,7 +477,8 @@ macro_rules! py_map_class {
                 )*
                 // Values and rows a map can hold, and nothing else.
                 let cols = burmester::design::Columns { $($name,)* };
-                $crate::design::check_state(&cols, shape.1, &context.limits)?;
+                let no_grashof = $crate::slider_map::NoGrashof::no_grashof(&context);
+                $crate::design::check_state(&cols, shape.1, &context.limits, no_grashof)?;
                 let burmester::design::Columns { $($name,)* } = cols;
                 Ok($cls {
                     $($name: $crate::design::readonly(py, shape, $name)?,)*
@@ -759,7 +762,7 @@ impl PySolutionMap {
     /// The arguments of `_from_state` (for pickling).
     fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         let c = &self.context;
-        let fixed = dyad_tuple(&c.varying.fixed());
+        let fixed = crate::slider_map::fixed_tuple(&c.varying);
         let grid = PyGrid { inner: c.grid };
         let (task, limits) = (self.task(), self.limits());
         let columns = self.column_dict(py)?;
@@ -767,7 +770,7 @@ impl PySolutionMap {
         (
             grid,
             task,
-            c.varying.as_str(),
+            crate::slider_map::varying_state(&c.varying),
             fixed,
             limits,
             constraints,
@@ -781,7 +784,7 @@ impl PySolutionMap {
 impl PySolutionMap {
     #[getter]
     fn fixed_dyad(&self) -> (Xy, Xy) {
-        dyad_tuple(&self.context.varying.fixed())
+        crate::slider_map::fixed_tuple(&self.context.varying)
     }
     fn point(&self, j: Count, i: Count) -> PyResult<Xy> {
         self.grid().point(j, i)
@@ -828,16 +831,7 @@ impl PySolutionMap {
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
         columns: &Bound<'_, PyDict>,
     ) -> PyResult<Self> {
-        let dyad = Dyad::new(fixed.0.0, fixed.1.0);
-        let varying = match varying {
-            "driving" => Varying::Driving { driven: dyad },
-            "driven" => Varying::Driven { driving: dyad },
-            other => {
-                return Err(PyTypeError::new_err(format!(
-                    "varying must be 'driving' or 'driven', got {other:?}"
-                )));
-            }
-        };
+        let varying = crate::slider_map::varying_of(varying, fixed)?;
         let context = MapContext {
             grid: grid.inner,
             task: task.inner,
@@ -886,6 +880,9 @@ fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
             .task
             .driven_solution_map(&driving, &probe, &c.limits, &c.constraints, &control)
             .map(|_| Ok(())),
+        Varying::DrivingSlider { driven } => Filemon::new(&c.task, driven)?
+            .solution_map(&probe, &c.limits, &c.constraints, &control)
+            .map(|_| Ok(())),
     })
     .py()?
     .map_err(|()| {
@@ -897,24 +894,46 @@ fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
     })
 }
 
-/// The solution maps of `Filemon` (candidate driving pivots).
-#[pymethods]
-impl PyFilemon {
-    #[doc = text_signature!(MAP, "solution_map($self, *grid", ", progress=None")]
-    #[pyo3(signature = (*grid, progress = None, **options),
-        text_signature = None)]
-    fn solution_map(
-        &self,
-        py: Python<'_>,
-        grid: &Bound<'_, PyTuple>,
-        progress: Option<&Bound<'_, PyAny>>,
-        options: Option<&Bound<'_, PyDict>>,
-    ) -> PyResult<PySolutionMap> {
-        let what = "solution_map takes a grid (or its six numbers); the limits go by keyword";
-        let g = grid_alone(grid, what)?;
-        let opts = MapOptions::from_kwargs("Filemon.solution_map", options, Keys::MAP)?;
-        solution_map(py, self.inner, g, opts, progress)
-    }
+/// `solution_map` of a Python class `$cls` whose `inner` is a `Filemon`
+/// (`Filemon`, `SliderFilemon`), named `$name` in errors.
+macro_rules! filemon_solution_map_method {
+    ($cls:ty, $name:literal) => {
+        /// The solution map over candidate driving pivots.
+        #[pymethods]
+        impl $cls {
+            #[doc = $crate::options::text_signature!(MAP, "solution_map($self, *grid", ", progress=None")]
+            #[pyo3(signature = (*grid, progress = None, **options), text_signature = None)]
+            fn solution_map(
+                &self,
+                py: Python<'_>,
+                grid: &Bound<'_, pyo3::types::PyTuple>,
+                progress: Option<&Bound<'_, PyAny>>,
+                options: Option<&Bound<'_, pyo3::types::PyDict>>,
+            ) -> PyResult<$crate::design::PySolutionMap> {
+                let f = self.inner;
+                $crate::design::filemon_solution_map(py, f, $name, grid, progress, options)
+            }
+        }
+    };
+}
+pub(crate) use filemon_solution_map_method;
+
+filemon_solution_map_method!(PyFilemon, "Filemon.solution_map");
+
+/// `Filemon.solution_map` and `SliderFilemon.solution_map` (named `name`)
+/// from their Python arguments.
+pub(crate) fn filemon_solution_map(
+    py: Python<'_>,
+    f: Filemon,
+    name: &'static str,
+    grid: &Bound<'_, PyTuple>,
+    progress: Option<&Bound<'_, PyAny>>,
+    options: Option<&Bound<'_, PyDict>>,
+) -> PyResult<PySolutionMap> {
+    let what = "solution_map takes a grid (or its six numbers); the limits go by keyword";
+    let g = grid_alone(grid, what)?;
+    let opts = MapOptions::from_kwargs(name, options, Keys::MAP)?;
+    solution_map(py, f, g, opts, progress)
 }
 
 /// The driven solution map of `Task` (candidate driven pivots).
@@ -942,7 +961,7 @@ impl PyTask {
     }
 }
 
-/// `Filemon.solution_map`.
+/// `Filemon.solution_map` (and `SliderFilemon.solution_map`).
 fn solution_map(
     py: Python<'_>,
     f: Filemon,

@@ -31,6 +31,7 @@ mod search;
 mod slider;
 mod slider_branch;
 mod slider_dyads;
+mod slider_map;
 mod sweep;
 mod synthesis;
 

@@ -320,7 +320,7 @@ pub struct PySynthesizedSliderCrank {
 }
 
 impl PySynthesizedSliderCrank {
-    fn new(s: SynthesizedSliderCrank, task: Task) -> Self {
+    pub(crate) fn new(s: SynthesizedSliderCrank, task: Task) -> Self {
         let (d, g) = (&s.driving, &s.driven);
         PySynthesizedSliderCrank {
             inner: s,

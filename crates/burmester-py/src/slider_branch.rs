@@ -26,7 +26,7 @@ type Xy = (f64, f64);
 #[pyclass(frozen, eq, name = "SliderFilemon", module = "burmester")]
 #[derive(Clone, PartialEq)]
 pub(crate) struct PySliderFilemon {
-    inner: Filemon,
+    pub(crate) inner: Filemon,
     /// The slider as the construction keeps it (the guide normalized).
     slider: SliderDyad,
 }

@@ -477,16 +477,17 @@ pub enum InvalidInput {
         /// Its y.
         y: f64,
     },
-    /// An operation that needs a revolute driven dyad (a crank) was given a
-    /// dyad of another kind (a slider).
+    /// An operation was given a driven dyad of a kind it does not take: a
+    /// slider where a four-bar is built, a crank where a slider-crank is.
     #[error(
-        "{what} needs a revolute driven dyad (a crank), not a {found}; with a slider driven dyad \
-         use the conic or direct branch classification and the branch map"
+        "{what} does not take a {found} driven dyad: a four-bar needs a revolute driven dyad \
+         (a crank), a slider-crank a slider; build the linkage of the dyad's kind (linkage for \
+         a crank, slider_crank for a slider)"
     )]
     DrivenKind {
-        /// What needs a crank.
+        /// What does not take the kind.
         what: &'static str,
-        /// The kind given (`"slider"`).
+        /// The kind given (`"slider"` or `"revolute"`).
         found: &'static str,
     },
     /// An operation on the driven dyad that is not defined for an inverted

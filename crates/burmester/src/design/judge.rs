@@ -17,7 +17,7 @@ use crate::geom::Grid;
 use crate::linkage::LinkageFigures;
 use crate::linkage::figures::figures;
 use crate::synthesis::three::Maps;
-use crate::synthesis::{Dyad, Motion, Task, members_length};
+use crate::synthesis::{Dyad, Motion, SynthesizedSliderCrank, Task, members_length};
 use crate::tolerance;
 
 /// What the per-sample evaluation of every map shares, for any number of
@@ -41,6 +41,44 @@ impl Judge<'_> {
     /// The task's coupler point at pose 1 (for the members' length).
     pub(crate) fn point(&self) -> Point2<f64> {
         self.point
+    }
+
+    /// The task.
+    pub(crate) fn task(&self) -> &Task {
+        self.task
+    }
+
+    /// The sample of a slider-crank `sc` with branch flag `branch_free`
+    /// (module `map_slider`): its driving center must lie on the base
+    /// plate; there are no obstacles or envelope (refused before).
+    pub(crate) fn slider_sample(&self, sc: &SynthesizedSliderCrank, branch_free: bool) -> Sample {
+        let l = &sc.linkage;
+        let size_ratio = sc.size() * self.inv_span;
+        let (input_full, link_ratio) = (l.turns_fully(), l.link_ratio());
+        let lengths = [l.crank(), l.coupler(), l.offset().abs(), 0.0];
+        let acceptable = branch_free
+            && self.limits.meets_when(
+                sc.one_circuit,
+                sc.direction,
+                link_ratio,
+                input_full,
+                l.rotatability_margin(),
+                || sc.min_transmission >= self.limits.min_transmission,
+            )
+            && self.limits.meets_size(lengths, size_ratio)
+            && self.prepared.pivot_ok(sc.driving.center);
+        Sample {
+            valid: true,
+            branch_free,
+            grashof: crate::SolutionMap::GRASHOF_NONE,
+            input_full,
+            direction: sc.direction.code(),
+            one_circuit: sc.one_circuit,
+            min_transmission_rad: sc.min_transmission as f32,
+            link_ratio: link_ratio as f32,
+            size_ratio: size_ratio as f32,
+            acceptable,
+        }
     }
 }
 

@@ -13,12 +13,8 @@ use crate::error::{InvalidInput, Result, try_vec};
 use crate::geom::Grid;
 use crate::linkage::figures::figures;
 use crate::synthesis::three::{Filemon, Method};
-use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
+use crate::synthesis::{Dyad, DyadKind, SliderDyad, SynthesizedFourBar, Task};
 use crate::tolerance;
-
-/// What the solution map of a Filemon needs a crank for (the error of a
-/// slider driven dyad).
-const MAP_NEEDS_CRANK: &str = "the solution map (its figures are a four-bar's)";
 
 /// Which pivot a solution map varies.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -33,22 +29,32 @@ pub enum Varying {
         /// The fixed driving dyad `(A0, A1)`.
         driving: Dyad,
     },
+    /// Candidate driving center points `A0`, with this driven slider: each
+    /// sample's linkage is a slider-crank
+    /// ([`MapContext::slider_crank`]).
+    DrivingSlider {
+        /// The fixed driven slider (`C1` on its guide).
+        driven: SliderDyad,
+    },
 }
 
 impl Varying {
-    /// `"driving"` or `"driven"`: which center point varies.
+    /// `"driving"` or `"driven"`: which center point varies (a driving
+    /// map with a slider is `"driving"` too).
     pub fn as_str(&self) -> &'static str {
         match self {
-            Varying::Driving { .. } => "driving",
+            Varying::Driving { .. } | Varying::DrivingSlider { .. } => "driving",
             Varying::Driven { .. } => "driven",
         }
     }
 
-    /// The fixed dyad.
-    pub fn fixed(&self) -> Dyad {
+    /// The fixed dyad: a crank, or the driven slider of
+    /// [`Varying::DrivingSlider`].
+    pub fn fixed(&self) -> DyadKind {
         match *self {
-            Varying::Driving { driven } => driven,
-            Varying::Driven { driving } => driving,
+            Varying::Driving { driven } => driven.into(),
+            Varying::Driven { driving } => driving.into(),
+            Varying::DrivingSlider { driven } => driven.into(),
         }
     }
 }
@@ -109,13 +115,23 @@ impl MapContext {
     ///
     /// # Errors
     ///
-    /// As [`Task::four_bar`] (for an invalid sample).
+    /// As [`Task::four_bar`] (for an invalid sample);
+    /// [`InvalidInput::DrivenKind`] for a map with a driven slider (its
+    /// linkages are [`slider_crank`](Self::slider_crank)s).
     pub fn linkage(&self, k: usize) -> Result<SynthesizedFourBar> {
         let p = self.point(k);
-        let d = self.task.dyad_from_center(p)?;
         match self.varying {
-            Varying::Driving { driven } => self.task.four_bar(&d, &driven),
-            Varying::Driven { driving } => self.task.four_bar(&driving, &d),
+            Varying::Driving { driven } => {
+                self.task.four_bar(&self.task.dyad_from_center(p)?, &driven)
+            }
+            Varying::Driven { driving } => self
+                .task
+                .four_bar(&driving, &self.task.dyad_from_center(p)?),
+            Varying::DrivingSlider { .. } => Err(InvalidInput::DrivenKind {
+                what: "a map's four-bar (MapContext::linkage)",
+                found: "slider",
+            }
+            .into()),
         }
     }
 }
@@ -167,14 +183,17 @@ impl Filemon {
     /// The solution-space map over candidate driving center points `A0`
     /// on `grid` (see [`design`](crate::design)), following `control`. The
     /// branch-free flag is exactly the `conic` branch map; the other
-    /// figures come from the linkage at each sample.
+    /// figures come from the linkage at each sample: the four-bar of a
+    /// driven crank, the slider-crank ([`MapContext::slider_crank`]) of a
+    /// driven slider (no Grashof class; the crank's rotatability
+    /// `r + |e| <= l` is `input_full`).
     ///
     /// # Errors
     ///
     /// [`InvalidInput`] for invalid limits or constraints;
-    /// [`InvalidInput::DrivenKind`] for a slider driven dyad (its figures
-    /// are a slider-crank's; its branch map is
-    /// [`branch_map`](Self::branch_map));
+    /// [`InvalidInput::DrivenKind`] for a slider driven dyad with obstacles
+    /// or an envelope (their clearance is checked over a four-bar's travel;
+    /// a base plate is taken);
     /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when the columns
     /// cannot be allocated; [`Error::Cancelled`](crate::Error::Cancelled).
     pub fn solution_map(
@@ -186,11 +205,10 @@ impl Filemon {
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
         let options = CheckedOptions::new(limits, constraints)?;
-        let driven = self.driven_crank(MAP_NEEDS_CRANK)?;
         let sampler = Sampler::new(self.task(), &options)?.with_control(control);
-        let context = self.map_context(driven, grid, limits, constraints);
+        let context = self.map_context(grid, &options)?;
         fresh(grid, context, |out| {
-            self.fill_solution_map(driven, &sampler, grid, out, control)
+            self.fill_solution_map(&sampler, grid, out, control)
         })
     }
 
@@ -215,29 +233,44 @@ impl Filemon {
         control: &Control<'_>,
     ) -> Result<MapContext> {
         let options = CheckedOptions::new(limits, constraints)?;
-        let driven = self.driven_crank(MAP_NEEDS_CRANK)?;
         let sampler = Sampler::new(self.task(), &options)?.with_control(control);
-        let context = self.map_context(driven, grid, limits, constraints);
+        let context = self.map_context(grid, &options)?;
         into(grid, context, out, |out| {
-            self.fill_solution_map(driven, &sampler, grid, out, control)
+            self.fill_solution_map(&sampler, grid, out, control)
         })
     }
 
-    fn map_context(
-        &self,
-        driven: Dyad,
-        grid: &Grid,
-        limits: &DesignLimits,
-        constraints: &Constraints,
-    ) -> MapContext {
-        let varying = Varying::Driving { driven };
-        MapContext::new(grid, self.task(), varying, limits, constraints)
+    /// What the map is computed for; a driven slider with obstacles or an
+    /// envelope is refused (module `map_slider`).
+    fn map_context(&self, grid: &Grid, options: &CheckedOptions) -> Result<MapContext> {
+        let varying = match self.driven() {
+            DyadKind::Revolute(driven) => Varying::Driving { driven },
+            DyadKind::Slider(driven) => {
+                crate::design::map_slider::check_slider_options(options)?;
+                Varying::DrivingSlider { driven }
+            }
+            // A Filemon is never built with an inverted driven dyad
+            // (`FilemonLines::new` refuses it); say so rather than assume.
+            DyadKind::Inverted(_) => {
+                return Err(InvalidInput::InvertedDriven {
+                    what: "a solution map",
+                }
+                .into());
+            }
+        };
+        let (limits, constraints) = (options.limits(), options.constraints());
+        Ok(MapContext::new(
+            grid,
+            self.task(),
+            varying,
+            limits,
+            constraints,
+        ))
     }
 
     /// The columns of the map, the arguments checked.
     fn fill_solution_map(
         &self,
-        driven: Dyad,
         sampler: &Sampler<'_>,
         grid: &Grid,
         out: ColumnsOut<'_>,
@@ -245,8 +278,17 @@ impl Filemon {
     ) -> Result<()> {
         let mut branch = try_vec("a branch map", grid.len(), false)?;
         self.branch_map_into(grid, Method::Conic, &mut branch, control)?;
-        let c = sampler.fixed_pivots(&driven);
-        kernel::for_driven(sampler, driven, &c).fill(grid, &branch, out, control)
+        match self.driven() {
+            DyadKind::Revolute(driven) => {
+                let c = sampler.fixed_pivots(&driven);
+                kernel::for_driven(sampler, driven, &c).fill(grid, &branch, out, control)
+            }
+            DyadKind::Slider(driven) => sampler.fill_slider(driven, grid, &branch, out, control),
+            DyadKind::Inverted(_) => Err(InvalidInput::InvertedDriven {
+                what: "a solution map",
+            }
+            .into()),
+        }
     }
 }
 

@@ -20,6 +20,13 @@
 //! [`Task::driven_solution_map`](crate::Task::driven_solution_map) does the same the other way round: a
 //! fixed driving dyad, candidate driven center points.
 //!
+//! With a slider as the driven dyad (a [`Filemon`](crate::Filemon) of a
+//! [`SliderDyad`](crate::SliderDyad)), each sample's linkage is a
+//! slider-crank and the columns are its figures (`map_slider`:
+//! the crank's rotatability `r + |e| <= l` in place of Grashof's law, the
+//! transmission angle between coupler and guide normal;
+//! [`MapContext::slider_crank`]).
+//!
 //! For four poses, [`Task::pair_map`](crate::Task::pair_map) gives the same
 //! columns over pairs of dyads along the center-point curve: every linkage
 //! of the task on one picture ([`pairs`]).
@@ -51,6 +58,7 @@ mod judge;
 mod kernel;
 mod limits;
 mod map;
+mod map_slider;
 mod options;
 pub mod pairs;
 mod rank;

@@ -247,9 +247,11 @@ impl MapContext {
     /// by a search outwards from the sample (no memory sized by the grid).
     pub fn margin(&self, k: usize, branch_free: &[bool]) -> f64 {
         match self.varying {
-            Varying::Driving { driven } => Filemon::new(&self.task, driven)
-                .ok()
-                .map_or(f64::NEG_INFINITY, |f| f.margin_at(self.point(k))),
+            Varying::Driving { .. } | Varying::DrivingSlider { .. } => {
+                Filemon::new(&self.task, self.varying.fixed())
+                    .ok()
+                    .map_or(f64::NEG_INFINITY, |f| f.margin_at(self.point(k)))
+            }
             Varying::Driven { .. } => Nearest::new(&self.grid, branch_free).get(k),
         }
     }
@@ -270,7 +272,10 @@ impl MapContext {
     /// [`InvalidInput::OutsideRange`] for a negative or non-finite
     /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
     /// another length than the grid;
-    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory);
+    /// [`InvalidInput::DrivenKind`] for a map with a driven slider (a
+    /// [`Pivot`] carries a four-bar; rank its samples from the columns and
+    /// build each with [`MapContext::slider_crank`]).
     pub fn best_pivots(
         &self,
         k: usize,
@@ -297,6 +302,13 @@ impl MapContext {
         columns: RankColumns<'_>,
         control: &Control<'_>,
     ) -> Result<Vec<Pivot>> {
+        if let Varying::DrivingSlider { .. } = self.varying {
+            return Err(InvalidInput::DrivenKind {
+                what: "best_pivots (a Pivot carries a four-bar)",
+                found: "slider",
+            }
+            .into());
+        }
         best_with(self, k, min_separation, rank_by, columns, control)
     }
 }
@@ -355,7 +367,9 @@ impl RankedContext for MapContext {
 
     fn filemon(&self) -> Option<Option<Filemon>> {
         match self.varying {
-            Varying::Driving { driven } => Some(Filemon::new(&self.task, driven).ok()),
+            Varying::Driving { .. } | Varying::DrivingSlider { .. } => {
+                Some(Filemon::new(&self.task, self.varying.fixed()).ok())
+            }
             Varying::Driven { .. } => None,
         }
     }

@@ -34,8 +34,8 @@ use core::str::FromStr;
 use nalgebra::{Matrix2, Point2, Vector2};
 
 use crate::error::{InvalidInput, Result, finite_point};
-use crate::geom::{Conic, Line, LocalFrame, cross, normalized, wrap_angle};
-use crate::linkage::{AngleInterval, InputRange};
+use crate::geom::{Conic, Line, LocalFrame, Pose, cross, normalized, wrap_angle};
+use crate::linkage::{AngleInterval, AssemblyMode, InputRange};
 use crate::synthesis::branch::{Branch, FilemonLines};
 use crate::synthesis::three::{Cremona, Maps};
 use crate::synthesis::{Dyad, DyadKind, SynthesizedFourBar, Task};
@@ -51,7 +51,8 @@ pub enum Method {
     /// The circle point of the point, then the branch sign at the three
     /// poses.
     Direct,
-    /// Build the four-bar and drive it (a revolute driven dyad only): from
+    /// Build the linkage and drive it (the four-bar of a driven crank, the
+    /// slider-crank, [`Task::slider_crank`], of a driven slider): from
     /// each pose to the next, the
     /// input turns (either way, reversing between poses as needed) inside
     /// its input range in pose 1's assembly mode, in steps of at most
@@ -477,25 +478,61 @@ impl Filemon {
         }
     }
 
-    /// Drives the linkage from pose to pose ([`Method::Simulate`]).
+    /// Drives the linkage from pose to pose ([`Method::Simulate`]): the
+    /// four-bar of a driven crank, the slider-crank of a driven slider.
     fn classify_simulate(&self, a0: Point2<f64>) -> Result<Branch> {
-        self.driven_crank("the simulate branch method")?;
-        let fb = self.four_bar(a0)?;
-        let modes = fb.modes();
+        match self.driven() {
+            DyadKind::Revolute(_) => {
+                let fb = self.four_bar(a0)?;
+                let range = fb.fourbar.input_range();
+                let toggle = |t, m| fb.fourbar.solve(t, m).map(|c| c.toggle);
+                let pose = |t, m| fb.pose_at(t, m);
+                self.drive_through(&fb.input_angles, &fb.modes(), &range, toggle, pose)
+            }
+            DyadKind::Slider(driven) => {
+                let sc = self
+                    .task
+                    .slider_crank(&self.task.dyad_from_center(a0)?, &driven)?;
+                let range = sc.linkage.input_range();
+                let toggle = |t, m| sc.linkage.solve(t, m).map(|c| c.toggle);
+                let pose = |t, m| sc.pose_at(t, m);
+                self.drive_through(&sc.input_angles, &sc.modes, &range, toggle, pose)
+            }
+            // Never built with an inverted driven dyad (`FilemonLines::new`
+            // refuses it); say so rather than assume.
+            DyadKind::Inverted(_) => Err(InvalidInput::InvertedDriven {
+                what: "the simulate branch method",
+            }
+            .into()),
+        }
+    }
+
+    /// Drives a linkage whose crank is at `input_angles` in `modes` at the
+    /// poses and whose crank can be in `range` from each pose to the next
+    /// in pose 1's mode, in steps of at most `pi/8`; `toggle(theta, mode)`
+    /// solves the loop (whether it is at a toggle), `pose(theta, mode)`
+    /// gives the coupler's pose ([`Method::Simulate`]).
+    fn drive_through(
+        &self,
+        input_angles: &[f64],
+        modes: &[Option<AssemblyMode>],
+        range: &InputRange,
+        toggle: impl Fn(f64, AssemblyMode) -> Result<bool>,
+        pose: impl Fn(f64, AssemblyMode) -> Result<Pose>,
+    ) -> Result<Branch> {
         // A toggle at a design pose (the figures' one band, which the
         // position analysis shares) is the boundary, wherever it is.
-        let Some(mode) = modes[0] else {
+        let Some(Some(mode)) = modes.first().copied() else {
             return Ok(Branch::Boundary);
         };
         if modes.iter().any(Option::is_none) {
             return Ok(Branch::Boundary);
         }
-        let range = fb.fourbar.input_range();
         let poses = self.task.poses();
         let reach = tolerance::REACH * self.task.scale();
         for (k, want) in poses.iter().enumerate().skip(1) {
-            let (from, to) = (fb.input_angles[k - 1], fb.input_angles[k]);
-            let Some(path) = input_path(&range, from, to) else {
+            let (from, to) = (input_angles[k - 1], input_angles[k]);
+            let Some(path) = input_path(range, from, to) else {
                 // Not on the arc the input is on: a circuit defect (or a
                 // pose within rounding of a dead position).
                 return Ok(Branch::Defective);
@@ -503,18 +540,16 @@ impl Filemon {
             let steps = (path.abs() / FRAC_PI_8).ceil().max(1.0) as usize;
             for s in 1..=steps {
                 let theta = from + path * (s as f64 / steps as f64);
-                let c = match fb.fourbar.solve(theta, mode) {
-                    Ok(c) => c,
+                match toggle(theta, mode) {
                     Err(_) => return Ok(Branch::Defective),
-                };
-                if c.toggle {
                     // A dead position on the way, or a toggle at the pose.
-                    return Ok(Branch::Boundary);
+                    Ok(true) => return Ok(Branch::Boundary),
+                    Ok(false) => {}
                 }
             }
-            let pose = fb.pose_at(to, mode)?;
-            let dp = (pose.position - want.position).norm();
-            let da = wrap_angle(pose.angle - want.angle).abs();
+            let got = pose(to, mode)?;
+            let dp = (got.position - want.position).norm();
+            let da = wrap_angle(got.angle - want.angle).abs();
             if !(dp <= reach && da <= tolerance::REACH) {
                 return Ok(Branch::Defective);
             }

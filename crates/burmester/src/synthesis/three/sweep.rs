@@ -252,9 +252,6 @@ impl<'a> BranchRows<'a> {
 impl Filemon {
     /// The branch map over `grid` by `method`: one flag per sample,
     /// row-major, `true` where strictly branch-free (module docs).
-    /// [`Method::Simulate`] with a slider driven dyad is refused by
-    /// [`branch_map_into`](Self::branch_map_into); here it gives no free
-    /// sample.
     pub fn branch_map(&self, grid: &Grid, method: Method) -> Vec<bool> {
         let mut out = vec![false; grid.len()];
         // The buffer fits and nothing cancels: this cannot fail.
@@ -269,9 +266,6 @@ impl Filemon {
     ///
     /// [`InvalidInput::LengthMismatch`](crate::InvalidInput::LengthMismatch)
     /// when the buffer's length is not `grid.len()`;
-    /// [`InvalidInput::DrivenKind`](crate::InvalidInput::DrivenKind) for
-    /// [`Method::Simulate`] with a slider driven dyad (it drives a
-    /// four-bar);
     /// [`Error::Cancelled`](crate::Error::Cancelled) when `control` stopped
     /// it (the buffer then holds a partial map).
     pub fn branch_map_into(
@@ -282,9 +276,6 @@ impl Filemon {
         control: &Control<'_>,
     ) -> Result<()> {
         grid.check_len(out.len())?;
-        if method == Method::Simulate {
-            self.driven_crank("the simulate branch map")?;
-        }
         let Some([ca, cb]) = self.conics() else {
             return for_rows(grid.nx(), out, control, |_, row| row.fill(false));
         };
