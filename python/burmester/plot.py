@@ -61,7 +61,7 @@ from __future__ import annotations
 import math
 import re
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Dict, List, Literal, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -2004,6 +2004,35 @@ def animate_sixbar(
 # Slider linkages (issue 27)
 
 
+def _draw_crank_poses(ax: Axes, obj: Union[burmester.SynthesizedSliderCrank,
+                                              burmester.SynthesizedInvertedSliderCrank],
+                      draw_at: Callable[[float, Mode, str, str], Any],
+                      plate: Callable[[float, Mode], Sequence[Tuple[float, float]]], flag: float,
+                      labels: bool) -> None:
+    """A synthesized crank-driven linkage (the slider-crank, the inverted
+    one) at each of its poses: ``draw_at(theta2, mode, colour, gid)``, the
+    coupler plate (gid ``"coupler-k"``) through the two joints
+    ``plate(theta2, mode)`` and the task's coupler point, the coupler point's
+    path over the travel (``"coupler-curve"``) and the task's poses as flags
+    of size ``flag``."""
+    modes = obj.modes
+    first: Mode = modes[0] or "open"
+    for k, (t, m) in enumerate(zip(obj.input_angles, modes), start=1):
+        draw_at(t, m or first, POSE_COLORS[k], f"linkage-{k}")
+        px, py, _ = obj.pose_at(t, m or first)
+        patch = Polygon(np.array([*plate(t, m or first), (px, py)]), closed=True, facecolor=POSE_COLORS[k],
+                        edgecolor=POSE_COLORS[k], alpha=0.15, zorder=3)
+        patch.set_gid(f"coupler-{k}")
+        ax.add_patch(patch)
+    if obj.travel is not None:
+        ts = np.array(obj.travel_angles(361))
+        xs, ys, ok = obj.linkage.coupler_path(obj.coupler_point, ts, first)
+        (cc,) = ax.plot(xs[ok], ys[ok], color="#ff7f0e", linewidth=1.2, zorder=3, label="coupler curve")
+        cc.set_gid("coupler-curve")
+    poses = [obj.pose_at(t, m or first) for t, m in zip(obj.input_angles, modes)]
+    _draw_flags(ax, poses, flag, labels, zorder=7)
+
+
 def _draw_slider_at(ax: Axes, sc: burmester.SliderCrank, theta2: float, mode: Mode, color: str, gid: str,
                     alpha: float = 1.0, zorder: int = 4) -> Tuple[Line2D, Polygon]:
     """The chain ``A0 A B`` and the slider block at ``theta2`` (gids
@@ -2057,22 +2086,9 @@ def slider_crank(
         modes = obj.modes
         first: Mode = modes[0] or "open"
         _draw_guide(ax, sc, obj.input_angles[0], first)
-        for k, (t, m) in enumerate(zip(obj.input_angles, modes), start=1):
-            _draw_slider_at(ax, sc, t, m or first, POSE_COLORS[k], f"linkage-{k}", alpha=0.85)
-            # The coupler plate: the crank tip, the slider pin and the task's coupler point.
-            _, tip, pin = sc.joints(t, m or first)
-            px, py, _ = obj.pose_at(t, m or first)
-            plate = Polygon(np.array([tip, pin, (px, py)]), closed=True, facecolor=POSE_COLORS[k],
-                            edgecolor=POSE_COLORS[k], alpha=0.15, zorder=3)
-            plate.set_gid(f"coupler-{k}")
-            ax.add_patch(plate)
-        if obj.travel is not None:
-            ts = np.array(obj.travel_angles(361))
-            xs, ys, ok = sc.coupler_path(obj.coupler_point, ts, first)
-            (cc,) = ax.plot(xs[ok], ys[ok], color="#ff7f0e", linewidth=1.2, zorder=3, label="coupler curve")
-            cc.set_gid("coupler-curve")
-        poses = [obj.pose_at(t, m or first) for t, m in zip(obj.input_angles, modes)]
-        _draw_flags(ax, poses, 0.12 * (sc.crank + sc.coupler), labels, zorder=7)
+        # The coupler plate: the crank tip, the slider pin and the task's coupler point.
+        _draw_crank_poses(ax, obj, lambda t, m, c, g: _draw_slider_at(ax, sc, t, m, c, g, alpha=0.85),
+                          lambda t, m: sc.joints(t, m)[1:], 0.12 * (sc.crank + sc.coupler), labels)
         if labels:
             r, l = format_length(sc.crank, units), format_length(sc.coupler, units)
             stroke = "" if obj.stroke_used is None else f", stroke used {format_length(obj.stroke_used, units)}"
@@ -2226,22 +2242,9 @@ def inverted_slider_crank(
              color="0.2", zorder=6)
     if isinstance(obj, burmester.SynthesizedInvertedSliderCrank):
         modes = obj.modes
-        first: Mode = modes[0] or "open"
-        for k, (t, m) in enumerate(zip(obj.input_angles, modes), start=1):
-            _draw_inverted_at(ax, q, t, m or first, POSE_COLORS[k], f"linkage-{k}", alpha=0.85)
-            _, pin, _, foot = q.joints(t, m or first)
-            px, py, _ = obj.pose_at(t, m or first)
-            plate = Polygon(np.array([pin, foot, (px, py)]), closed=True, facecolor=POSE_COLORS[k],
-                            edgecolor=POSE_COLORS[k], alpha=0.15, zorder=3)
-            plate.set_gid(f"coupler-{k}")
-            ax.add_patch(plate)
-        if obj.travel is not None:
-            ts = np.array(obj.travel_angles(361))
-            xs, ys, ok = q.coupler_path(obj.coupler_point, ts, first)
-            (cc,) = ax.plot(xs[ok], ys[ok], color="#ff7f0e", linewidth=1.2, zorder=3, label="coupler curve")
-            cc.set_gid("coupler-curve")
-        poses = [obj.pose_at(t, m or first) for t, m in zip(obj.input_angles, modes)]
-        _draw_flags(ax, poses, 0.12 * (q.crank + q.ground), labels, zorder=7)
+        # The coupler plate: the crank pin, the slot's foot and the task's coupler point.
+        _draw_crank_poses(ax, obj, lambda t, m, c, g: _draw_inverted_at(ax, q, t, m, c, g, alpha=0.85),
+                          lambda t, m: q.joints(t, m)[1::2], 0.12 * (q.crank + q.ground), labels)
         if labels:
             stroke = "" if obj.stroke_used is None else f", stroke used {format_length(obj.stroke_used, units)}"
             swing = "" if obj.swing_used_deg is None else f", swing {obj.swing_used_deg:.1f} deg"

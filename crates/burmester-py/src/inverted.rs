@@ -4,30 +4,23 @@
 //! `Task.inverted_slider_crank`: convert and delegate.
 
 use burmester::{
-    AssemblyMode, Dyad, InvertedConfiguration, InvertedLimit, InvertedSlider, InvertedSliderCrank,
-    Point2, SynthesizedInvertedSliderCrank, Task,
+    Dyad, InvertedConfiguration, InvertedLimit, InvertedSlider, InvertedSliderCrank, Point2,
+    SynthesizedInvertedSliderCrank,
 };
-use numpy::PyArrayDyn;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::PyTask;
-use crate::conv::{
-    Arrays, Count, FloatArray, PyPoint, Real, fill_arrays, pt, to_numpy, write_points,
-};
+use crate::conv::{Arrays, FloatArray, PyPoint, Real, pt};
+use crate::crank_synth::synthesized_crank;
 use crate::errors::IntoPy;
-use crate::linkage::mode;
+use crate::linkage::{self, mode};
 
 type Xy = (f64, f64);
 
 /// `(theta2, slot, theta3)` of a limit, lowest and highest.
 type Limits = ((f64, f64, f64), (f64, f64, f64));
-
-/// `None` for NaN.
-fn finite_or_none(v: f64) -> Option<f64> {
-    (!v.is_nan()).then_some(v)
-}
 
 /// `(theta2, slot, theta3)` of a limit.
 fn limit(l: InvertedLimit) -> (f64, f64, f64) {
@@ -137,9 +130,7 @@ impl PyInvertedSliderCrank {
 
     #[pyo3(signature = (theta2, point, mode = "open"))]
     fn coupler_point(&self, theta2: Real, point: PyPoint, mode: &str) -> PyResult<Xy> {
-        let m = self::mode(mode)?;
-        let mut it = self.inner.coupler_path(point.0.coords, [theta2.0], m);
-        it.next().expect("one angle in, one point out").map(pt).py()
+        linkage::coupler_point(&self.inner, theta2, point, mode)
     }
 
     /// `(xs, ys, ok)` over the crank angles (NaN and False where the loop
@@ -152,17 +143,7 @@ impl PyInvertedSliderCrank {
         theta2s: FloatArray<'py>,
         mode: &str,
     ) -> PyResult<Arrays<'py>> {
-        let m = self::mode(mode)?;
-        let local = point.0.coords;
-        let first = self.inner.coupler_path(local, [0.0], m).next();
-        if let Some(Err(e @ burmester::Error::InvalidInput(_))) = first {
-            return Err(e).py();
-        }
-        let (flat, shape) = (theta2s.values(), theta2s.shape());
-        let sc = self.inner;
-        fill_arrays(py, shape, |xs, ys, ok| {
-            write_points(sc.coupler_path(local, flat.iter().copied(), m), xs, ys, ok);
-        })
+        linkage::coupler_path(&self.inner, py, point, theta2s, mode)
     }
 
     /// `((theta2, slot, theta3), (theta2, slot, theta3))`: the lowest and
@@ -276,133 +257,31 @@ impl PyInvertedConfiguration {
     }
 }
 
-/// An inverted slider-crank built from a driving crank and an inverted
-/// slider of a task; what it derives without arguments is computed once
-/// and read as fields.
-#[pyclass(frozen, name = "SynthesizedInvertedSliderCrank", module = "burmester")]
-#[derive(Clone)]
-pub struct PySynthesizedInvertedSliderCrank {
-    inner: SynthesizedInvertedSliderCrank,
-    /// The task it was built for (for pickling).
-    task: Task,
-    /// The arguments as given (for pickling and equality).
-    given: ((Xy, Xy), (Xy, Xy)),
-    #[pyo3(get)]
-    linkage: PyInvertedSliderCrank,
-    /// `(A0, A1)`.
-    #[pyo3(get)]
-    driving: (Xy, Xy),
-    /// `(S, d)`: the swivel and the slot's unit direction at pose 1.
-    #[pyo3(get)]
-    driven: (Xy, Xy),
-    #[pyo3(get)]
-    input_angles: Vec<f64>,
-    #[pyo3(get)]
-    modes: Vec<Option<&'static str>>,
-    #[pyo3(get)]
-    slot_positions: Vec<f64>,
-    #[pyo3(get)]
-    coupler_point: Xy,
-    #[pyo3(get)]
-    coupler_angle_offset: f64,
-    #[pyo3(get)]
-    direction: &'static str,
-    #[pyo3(get)]
-    one_circuit: bool,
-    #[pyo3(get)]
-    min_transmission_deg: Option<f64>,
-    #[pyo3(get)]
-    stroke_used: Option<f64>,
-    #[pyo3(get)]
-    swing_used_deg: Option<f64>,
-    #[pyo3(get)]
-    size: f64,
-    #[pyo3(get)]
-    size_ratio: f64,
-    #[pyo3(get)]
-    branch_free: bool,
-    #[pyo3(get)]
-    feasible: bool,
-    /// The cyclic order of the crank's positions, `"1-2-3"`.
-    #[pyo3(get)]
-    order: String,
-    #[pyo3(get)]
-    travel: Option<Xy>,
-    #[pyo3(get)]
-    travel_stops: Option<Vec<f64>>,
-}
-
-impl PySynthesizedInvertedSliderCrank {
-    fn new(s: SynthesizedInvertedSliderCrank, task: Task, given: ((Xy, Xy), (Xy, Xy))) -> Self {
-        let (d, g) = (&s.driving, &s.driven);
-        PySynthesizedInvertedSliderCrank {
-            inner: s,
-            task,
-            given,
-            linkage: s.linkage.into(),
-            driving: (pt(d.center), pt(d.circle)),
-            driven: (pt(g.swivel), (g.direction.x, g.direction.y)),
-            input_angles: s.input_angles.to_vec(),
-            modes: s
-                .modes
-                .iter()
-                .map(|m| m.map(AssemblyMode::as_str))
-                .collect(),
-            slot_positions: s.slot_positions.to_vec(),
-            coupler_point: (s.coupler_point.x, s.coupler_point.y),
-            coupler_angle_offset: s.coupler_angle_offset,
-            direction: s.direction.as_str(),
-            one_circuit: s.one_circuit,
-            min_transmission_deg: finite_or_none(s.min_transmission).map(f64::to_degrees),
-            stroke_used: finite_or_none(s.stroke_used),
-            swing_used_deg: finite_or_none(s.swing_used).map(f64::to_degrees),
-            size: s.size(),
-            size_ratio: s.size() / task.span(),
-            branch_free: s.is_branch_free(),
-            feasible: s.feasible(),
-            order: s.order().to_string(),
-            travel: s.travel(),
-            travel_stops: s.travel_stops().map(|t| t.to_vec()),
-        }
+synthesized_crank! {
+    /// An inverted slider-crank built from a driving crank and an inverted
+    /// slider of a task; what it derives without arguments is computed once
+    /// and read as fields.
+    pub struct PySynthesizedInvertedSliderCrank(
+        SynthesizedInvertedSliderCrank,
+        "SynthesizedInvertedSliderCrank",
+        linkage: PyInvertedSliderCrank
+    );
+    fn new(s, task, given: ((Xy, Xy), (Xy, Xy))) {
+        /// The arguments as given (for pickling and equality).
+        given: ((Xy, Xy), (Xy, Xy)) = given,
+        /// `(S, d)`: the swivel and the slot's unit direction at pose 1.
+        #[pyo3(get)]
+        driven: (Xy, Xy) = (pt(s.driven.swivel), (s.driven.direction.x, s.driven.direction.y)),
+        #[pyo3(get)]
+        slot_positions: Vec<f64> = s.slot_positions.to_vec(),
+        #[pyo3(get)]
+        swing_used_deg: Option<f64> = finite_or_none(s.swing_used).map(f64::to_degrees),
     }
+    reduce "inverted_slider_crank" with key(this) = this.given;
 }
 
 #[pymethods]
 impl PySynthesizedInvertedSliderCrank {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> crate::pickle::Reduced<'py> {
-        let task = Bound::new(py, PyTask { inner: self.task })?;
-        let args = self.given.into_pyobject(py)?;
-        Ok((task.getattr("inverted_slider_crank")?, args))
-    }
-    /// Equal when built from the same task and arguments, bit for bit (the
-    /// rest is a function of them; NaN figures would make a field-wise
-    /// comparison unequal to itself).
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        let bits = |(a, b): ((Xy, Xy), (Xy, Xy))| {
-            [a.0.0, a.0.1, a.1.0, a.1.1, b.0.0, b.0.1, b.1.0, b.1.1].map(f64::to_bits)
-        };
-        other
-            .cast::<PySynthesizedInvertedSliderCrank>()
-            .is_ok_and(|o| {
-                let o = o.get();
-                o.task == self.task && bits(o.given) == bits(self.given)
-            })
-    }
-    fn travel_angles<'py>(
-        &self,
-        py: Python<'py>,
-        samples: Count,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let s = self.inner;
-        let v = py.detach(|| s.travel_angles(samples.0)).py()?;
-        Ok(to_numpy(py, &[v.len()], v))
-    }
-    #[pyo3(signature = (theta2, mode = "open"))]
-    fn pose_at(&self, theta2: Real, mode: &str) -> PyResult<(f64, f64, f64)> {
-        let p = self.inner.pose_at(theta2.0, self::mode(mode)?).py()?;
-        Ok((p.position.x, p.position.y, p.angle))
-    }
-
     fn __repr__(&self) -> String {
         let l = &self.inner.linkage;
         format!(

@@ -14,6 +14,7 @@ mod actuator;
 mod atlas;
 mod classes;
 mod conv;
+mod crank_synth;
 mod curves;
 mod design;
 mod display;

@@ -6,8 +6,8 @@
 //! that takes an argument, can fail, or does real work is a **method**.
 
 use burmester::{
-    AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, LinkageFigures, PerPose,
-    Point2, SliderCrank, Vector2,
+    AssemblyMode, Configuration, Direction, FourBar, Grashof, InputRange, InvertedSliderCrank,
+    LinkageFigures, PerPose, Point2, SliderCrank, Vector2,
 };
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -24,7 +24,8 @@ pub(crate) fn mode(s: &str) -> PyResult<AssemblyMode> {
 }
 
 /// A linkage driven by a crank angle whose coupler carries a point: the
-/// four-bar and the slider-crank (the core's `coupler_path` of each).
+/// four-bar, the slider-crank and the inverted slider-crank (the core's
+/// `coupler_path` of each).
 pub(crate) trait CouplerPath: Copy + Sync {
     /// The coupler point `local` (coupler frame) at the crank angles
     /// `theta2s` in `mode`.
@@ -52,7 +53,7 @@ macro_rules! coupler_path_of {
     )*};
 }
 
-coupler_path_of!(FourBar, SliderCrank);
+coupler_path_of!(FourBar, SliderCrank, InvertedSliderCrank);
 
 /// `coupler_point(theta2, point, mode)` of a linkage's class.
 pub(crate) fn coupler_point(

@@ -3,16 +3,15 @@
 //! `synthesis::slider_crank`), with `Task.slider_crank`.
 
 use burmester::{
-    AssemblyMode, Dyad, Point2, SliderConfiguration, SliderCrank, SliderDyad,
-    SynthesizedSliderCrank, Task, Vector2,
+    Dyad, Point2, SliderConfiguration, SliderCrank, SliderDyad, SynthesizedSliderCrank, Vector2,
 };
-use numpy::PyArrayDyn;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::PyTask;
-use crate::conv::{Arrays, Count, FloatArray, PyPoint, Real, pt, to_numpy};
+use crate::conv::{Arrays, FloatArray, PyPoint, Real, pt};
+use crate::crank_synth::synthesized_crank;
 use crate::errors::IntoPy;
 use crate::linkage::{self, mode};
 
@@ -20,11 +19,6 @@ type Xy = (f64, f64);
 
 fn xy(v: Vector2<f64>) -> Xy {
     (v.x, v.y)
-}
-
-/// `None` for NaN.
-fn finite_or_none(v: f64) -> Option<f64> {
-    (!v.is_nan()).then_some(v)
 }
 
 /// A slider-crank (RRRP): crank about a fixed pivot, coupler, slider pin
@@ -267,125 +261,25 @@ impl PySliderConfiguration {
     }
 }
 
-/// A slider-crank built from a driving crank and a driven slider of a
-/// task; what it derives without arguments is computed once and read as
-/// fields.
-#[pyclass(frozen, name = "SynthesizedSliderCrank", module = "burmester")]
-#[derive(Clone)]
-pub struct PySynthesizedSliderCrank {
-    inner: SynthesizedSliderCrank,
-    /// The task it was built for (for pickling).
-    task: Task,
-    #[pyo3(get)]
-    linkage: PySliderCrank,
-    /// `(A0, A1)`.
-    #[pyo3(get)]
-    driving: (Xy, Xy),
-    /// `(C1, u)`.
-    #[pyo3(get)]
-    driven: (Xy, Xy),
-    #[pyo3(get)]
-    input_angles: Vec<f64>,
-    #[pyo3(get)]
-    modes: Vec<Option<&'static str>>,
-    #[pyo3(get)]
-    slider_positions: Vec<f64>,
-    #[pyo3(get)]
-    coupler_point: Xy,
-    #[pyo3(get)]
-    coupler_angle_offset: f64,
-    #[pyo3(get)]
-    direction: &'static str,
-    #[pyo3(get)]
-    one_circuit: bool,
-    #[pyo3(get)]
-    min_transmission_deg: Option<f64>,
-    #[pyo3(get)]
-    stroke_used: Option<f64>,
-    #[pyo3(get)]
-    size: f64,
-    #[pyo3(get)]
-    size_ratio: f64,
-    #[pyo3(get)]
-    branch_free: bool,
-    #[pyo3(get)]
-    feasible: bool,
-    /// The cyclic order of the crank's positions, `"1-2-3"`.
-    #[pyo3(get)]
-    order: String,
-    #[pyo3(get)]
-    travel: Option<Xy>,
-    #[pyo3(get)]
-    travel_stops: Option<Vec<f64>>,
-}
-
-impl PySynthesizedSliderCrank {
-    pub(crate) fn new(s: SynthesizedSliderCrank, task: Task) -> Self {
-        let (d, g) = (&s.driving, &s.driven);
-        PySynthesizedSliderCrank {
-            inner: s,
-            task,
-            linkage: s.linkage.into(),
-            driving: (pt(d.center), pt(d.circle)),
-            driven: (pt(g.circle), xy(g.guide)),
-            input_angles: s.input_angles.to_vec(),
-            modes: s
-                .modes
-                .iter()
-                .map(|m| m.map(AssemblyMode::as_str))
-                .collect(),
-            slider_positions: s.slider_positions.to_vec(),
-            coupler_point: xy(s.coupler_point),
-            coupler_angle_offset: s.coupler_angle_offset,
-            direction: s.direction.as_str(),
-            one_circuit: s.one_circuit,
-            min_transmission_deg: finite_or_none(s.min_transmission).map(f64::to_degrees),
-            stroke_used: finite_or_none(s.stroke_used),
-            size: s.size(),
-            size_ratio: s.size() / task.span(),
-            branch_free: s.is_branch_free(),
-            feasible: s.feasible(),
-            order: s.order().to_string(),
-            travel: s.travel(),
-            travel_stops: s.travel_stops().map(|t| t.to_vec()),
-        }
+synthesized_crank! {
+    /// A slider-crank built from a driving crank and a driven slider of a
+    /// task; what it derives without arguments is computed once and read as
+    /// fields.
+    pub struct PySynthesizedSliderCrank(
+        SynthesizedSliderCrank, "SynthesizedSliderCrank", linkage: PySliderCrank
+    );
+    fn new(s, task) {
+        /// `(C1, u)`.
+        #[pyo3(get)]
+        driven: (Xy, Xy) = (pt(s.driven.circle), xy(s.driven.guide)),
+        #[pyo3(get)]
+        slider_positions: Vec<f64> = s.slider_positions.to_vec(),
     }
+    reduce "slider_crank" with key(this) = (this.driving, this.driven);
 }
 
 #[pymethods]
 impl PySynthesizedSliderCrank {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> crate::pickle::Reduced<'py> {
-        let task = Bound::new(py, PyTask { inner: self.task })?;
-        let args = (self.driving, self.driven).into_pyobject(py)?;
-        Ok((task.getattr("slider_crank")?, args))
-    }
-    /// Equal when built from the same task and dyads, bit for bit (the
-    /// rest is a function of them; NaN figures would make a field-wise
-    /// comparison unequal to itself).
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        let bits = |(a, b): ((Xy, Xy), (Xy, Xy))| {
-            [a.0.0, a.0.1, a.1.0, a.1.1, b.0.0, b.0.1, b.1.0, b.1.1].map(f64::to_bits)
-        };
-        other.cast::<PySynthesizedSliderCrank>().is_ok_and(|o| {
-            let o = o.get();
-            o.task == self.task && bits((o.driving, o.driven)) == bits((self.driving, self.driven))
-        })
-    }
-    fn travel_angles<'py>(
-        &self,
-        py: Python<'py>,
-        samples: Count,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let s = self.inner;
-        let v = py.detach(|| s.travel_angles(samples.0)).py()?;
-        Ok(to_numpy(py, &[v.len()], v))
-    }
-    #[pyo3(signature = (theta2, mode = "open"))]
-    fn pose_at(&self, theta2: Real, mode: &str) -> PyResult<(f64, f64, f64)> {
-        let p = self.inner.pose_at(theta2.0, self::mode(mode)?).py()?;
-        Ok((p.position.x, p.position.y, p.angle))
-    }
-
     fn __repr__(&self) -> String {
         let l = &self.inner.linkage;
         format!(

@@ -247,6 +247,12 @@ pub struct InvertedSliderCrank {
     scale: f64,
 }
 
+crate::linkage::crank_coupler_methods!(
+    InvertedSliderCrank,
+    InvertedConfiguration,
+    "along the slot"
+);
+
 impl InvertedSliderCrank {
     /// The largest extent: the crank pivot's and the swivel's distances
     /// from the origin (as `|x| + |y|`) plus the crank and the offset
@@ -408,36 +414,6 @@ impl InvertedSliderCrank {
             swivel: self.swivel,
             slot_foot: a + perp(unit(c.theta3)) * self.offset,
         }
-    }
-
-    /// Where a point fixed to the coupler is in a configuration (`local`
-    /// in the coupler frame: origin at the crank pin, x-axis along the
-    /// slot).
-    pub fn coupler_point(&self, c: &InvertedConfiguration, local: Vector2<f64>) -> Point2<f64> {
-        self.pivot + unit(c.theta2) * self.crank + rotate(local, c.theta3)
-    }
-
-    /// The path of a coupler point over the crank angles `theta2s`, lazily:
-    /// one result per angle (an error where the loop does not close).
-    ///
-    /// # Errors
-    ///
-    /// Each item is an error where [`InvertedSliderCrank::solve`] fails; a
-    /// non-finite `local` gives [`InvalidInput::NotFinite`] for every
-    /// item, a point whose position overflows [`InvalidInput::Overflow`].
-    pub fn coupler_path<'a, I>(
-        &'a self,
-        local: Vector2<f64>,
-        theta2s: I,
-        mode: AssemblyMode,
-    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
-    where
-        I: IntoIterator<Item = f64>,
-        I::IntoIter: 'a,
-    {
-        crate::linkage::coupler_path_of(local, theta2s, move |t| {
-            Ok(self.coupler_point(&self.solve(t, mode)?, local))
-        })
     }
 
     /// The angle `psi0` of the ground line, from the crank pivot to the

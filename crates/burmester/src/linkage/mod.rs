@@ -42,6 +42,55 @@ pub(crate) fn nonzero_links<const N: usize>(
     Ok(())
 }
 
+/// `coupler_point(c, local)` and `coupler_path(local, theta2s, mode)` of a
+/// crank-driven linkage `$Linkage` (fields `pivot` and `crank`) whose
+/// configuration `$Config` carries the crank angle `theta2` and the coupler
+/// angle `theta3`, the coupler frame's origin at the crank pin and its
+/// x-axis as `$axis` says: the slider-crank and the inverted slider-crank.
+macro_rules! crank_coupler_methods {
+    ($Linkage:ident, $Config:ident, $axis:literal) => {
+        impl $Linkage {
+            #[doc = concat!(
+                "Where a point fixed to the coupler is in a configuration (`local`\n",
+                "in the coupler frame: origin at the crank pin `A`, x-axis ",
+                $axis,
+                ")."
+            )]
+            pub fn coupler_point(&self, c: &$Config, local: Vector2<f64>) -> Point2<f64> {
+                self.pivot + unit(c.theta2) * self.crank + rotate(local, c.theta3)
+            }
+
+            /// The path of a coupler point over the crank angles `theta2s`,
+            /// lazily: one result per angle (an error where the loop does
+            /// not close).
+            ///
+            /// # Errors
+            ///
+            #[doc = concat!(
+                "Each item is an error where [`", stringify!($Linkage), "::solve`] fails; a\n",
+                "non-finite `local` gives [`InvalidInput::NotFinite`] for every\n",
+                "item, a point whose position overflows [`InvalidInput::Overflow`]."
+            )]
+            pub fn coupler_path<'a, I>(
+                &'a self,
+                local: Vector2<f64>,
+                theta2s: I,
+                mode: AssemblyMode,
+            ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
+            where
+                I: IntoIterator<Item = f64>,
+                I::IntoIter: 'a,
+            {
+                $crate::linkage::coupler_path_of(local, theta2s, move |t| {
+                    Ok(self.coupler_point(&self.solve(t, mode)?, local))
+                })
+            }
+        }
+    };
+}
+
+pub(crate) use crank_coupler_methods;
+
 /// The path of a coupler point `local` over the input angles `theta2s`,
 /// lazily, `at(t)` placing it at the angle `t` (a linkage's
 /// `coupler_path`): an error where `at` fails, [`InvalidInput::NotFinite`]

@@ -253,6 +253,12 @@ impl PartialEq for SliderCrank {
     }
 }
 
+crate::linkage::crank_coupler_methods!(
+    SliderCrank,
+    SliderConfiguration,
+    "toward the slider pin `B`"
+);
+
 impl SliderCrank {
     /// The largest extent of a slider-crank: the crank pivot's distance
     /// from the origin (as `|x| + |y|`) plus the crank, the coupler and
@@ -452,35 +458,6 @@ impl SliderCrank {
             crank_joint: self.pivot + unit(c.theta2) * self.crank,
             slider_joint: self.guide_point(c.slider),
         }
-    }
-
-    /// Where a point fixed to the coupler is in a configuration (`local`
-    /// in the coupler frame: origin at `A`, x-axis toward `B`).
-    pub fn coupler_point(&self, c: &SliderConfiguration, local: Vector2<f64>) -> Point2<f64> {
-        self.pivot + unit(c.theta2) * self.crank + rotate(local, c.theta3)
-    }
-
-    /// The path of a coupler point over the crank angles `theta2s`, lazily:
-    /// one result per angle (an error where the loop does not close).
-    ///
-    /// # Errors
-    ///
-    /// Each item is an error where [`SliderCrank::solve`] fails; a
-    /// non-finite `local` gives [`InvalidInput::NotFinite`] for every
-    /// item, a point whose position overflows [`InvalidInput::Overflow`].
-    pub fn coupler_path<'a, I>(
-        &'a self,
-        local: Vector2<f64>,
-        theta2s: I,
-        mode: AssemblyMode,
-    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
-    where
-        I: IntoIterator<Item = f64>,
-        I::IntoIter: 'a,
-    {
-        crate::linkage::coupler_path_of(local, theta2s, move |t| {
-            Ok(self.coupler_point(&self.solve(t, mode)?, local))
-        })
     }
 
     /// Where the crank can be: all the way round exactly when

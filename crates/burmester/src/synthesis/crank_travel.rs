@@ -1,7 +1,71 @@
 //! What a linkage of a task driven by a crank derives from its crank angles,
 //! modes, direction and circuit at the poses, written once for the kinds
 //! that have them as fields (the slider-crank and the inverted
-//! slider-crank of a task).
+//! slider-crank of a task), with the struct holding those fields.
+
+/// The struct of a synthesized linkage driven by a crank: the linkage, the
+/// driving dyad, the driven one, the crank angle, assembly mode and the
+/// driven joint's position (`$positions`) at each pose, the task's coupler
+/// point and angle offset, the direction, circuit, smallest transmission
+/// angle and stroke used, then the fields of its own kind; with its
+/// [`crank_travel_methods`].
+macro_rules! crank_synthesized {
+    (
+        $(#[$meta:meta])*
+        pub struct $Type:ident {
+            $(#[$ld:meta])* linkage: $L:ty,
+            $(#[$dd:meta])* driven: $D:ty,
+            toggle: $toggle:literal,
+            $(#[$pd:meta])* $positions:ident,
+            axis: $axis:literal,
+            $(#[$sd:meta])* stroke_used,
+            $($(#[$xd:meta])* $extra:ident: $xt:ty,)*
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub struct $Type {
+            $(#[$ld])*
+            pub linkage: $L,
+            /// The driving dyad `(A0, A1)`.
+            pub driving: $crate::synthesis::Dyad,
+            $(#[$dd])*
+            pub driven: $D,
+            /// The crank angle at each pose (absolute, radians, in `(-pi, pi]`).
+            pub input_angles: $crate::geom::PerPose<f64>,
+            #[doc = concat!(
+                "The assembly mode at each pose; `None` where the pose is at a\n",
+                "toggle (", $toggle, ")."
+            )]
+            pub modes: $crate::geom::PerPose<Option<$crate::linkage::AssemblyMode>>,
+            $(#[$pd])*
+            pub $positions: $crate::geom::PerPose<f64>,
+            #[doc = concat!(
+                "The task's coupler point in the coupler frame (origin at the crank\n",
+                "pin `A`, x-axis ", $axis, ")."
+            )]
+            pub coupler_point: nalgebra::Vector2<f64>,
+            /// The task's coupler angle minus the coupler angle `theta3`.
+            pub coupler_angle_offset: f64,
+            /// The crank rotation that carries the coupler from pose 1 through the
+            /// poses in order to the last.
+            pub direction: $crate::linkage::Direction,
+            /// Whether the crank angles at the poses lie on one circuit (one arc
+            /// of the input range; always true for a crank that turns fully).
+            pub one_circuit: bool,
+            /// The smallest transmission angle over the travel, radians in
+            /// `[0, pi/2]`; NaN without a travel.
+            pub min_transmission: f64,
+            $(#[$sd])*
+            pub stroke_used: f64,
+            $($(#[$xd])* pub $extra: $xt,)*
+        }
+
+        $crate::synthesis::crank_travel::crank_travel_methods!($Type);
+    };
+}
+
+pub(crate) use crank_synthesized;
 
 /// The branch, feasibility, order and travel methods of a synthesized
 /// linkage with the fields `input_angles`, `modes`, `direction` and

@@ -27,52 +27,32 @@ use crate::synthesis::slider_crank::travel_n;
 use crate::synthesis::{Dyad, DyadKind, InvertedSlider, Task};
 use crate::tolerance;
 
-/// An inverted slider-crank built from a driving crank and an inverted
-/// slider of a task, with its input angle, assembly mode and slot position
-/// at each pose, its order and what a designer checks (module docs).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SynthesizedInvertedSliderCrank {
-    /// The linkage: crank pivot `A0`, the swivel `S`, the slot's offset.
-    pub linkage: InvertedSliderCrank,
-    /// The driving dyad `(A0, A1)`.
-    pub driving: Dyad,
-    /// The driven inverted slider (the swivel and the slot at pose 1).
-    pub driven: InvertedSlider,
-    /// The crank angle at each pose (absolute, radians, in `(-pi, pi]`).
-    pub input_angles: PerPose<f64>,
-    /// The assembly mode at each pose; `None` where the pose is at a
-    /// toggle (the crank pin `|e|` from the swivel).
-    pub modes: PerPose<Option<AssemblyMode>>,
-    /// The slot position at each pose (as
-    /// [`InvertedConfiguration::slot`](crate::InvertedConfiguration::slot)).
-    pub slot_positions: PerPose<f64>,
-    /// The task's coupler point in the coupler frame (origin at the crank
-    /// pin `A`, x-axis along the slot).
-    pub coupler_point: Vector2<f64>,
-    /// The task's coupler angle minus the coupler angle `theta3`.
-    pub coupler_angle_offset: f64,
-    /// The crank rotation that carries the coupler from pose 1 through the
-    /// poses in order to the last.
-    pub direction: Direction,
-    /// Whether the crank angles at the poses lie on one circuit (one arc
-    /// of the input range; always true for a crank that turns fully).
-    pub one_circuit: bool,
-    /// The smallest transmission angle over the travel, radians in
-    /// `[0, pi/2]`; NaN without a travel.
-    pub min_transmission: f64,
-    /// The block's travel along the slot over the crank's travel from the
-    /// first pose to the last (the highest minus the lowest slot
-    /// position there); NaN without a travel or with a branch defect.
-    pub stroke_used: f64,
-    /// The slotted link's swing over the travel (its largest minus its
-    /// smallest angle there, radians, each measured within half a turn of
-    /// its angle at pose 1: a slotted link that turns more than half a
-    /// turn over the travel is not told apart); NaN without a travel or
-    /// with a branch defect.
-    pub swing_used: f64,
+crate::synthesis::crank_travel::crank_synthesized! {
+    /// An inverted slider-crank built from a driving crank and an inverted
+    /// slider of a task, with its input angle, assembly mode and slot position
+    /// at each pose, its order and what a designer checks (module docs).
+    pub struct SynthesizedInvertedSliderCrank {
+        /// The linkage: crank pivot `A0`, the swivel `S`, the slot's offset.
+        linkage: InvertedSliderCrank,
+        /// The driven inverted slider (the swivel and the slot at pose 1).
+        driven: InvertedSlider,
+        toggle: "the crank pin `|e|` from the swivel",
+        /// The slot position at each pose (as
+        /// [`InvertedConfiguration::slot`](crate::InvertedConfiguration::slot)).
+        slot_positions,
+        axis: "along the slot",
+        /// The block's travel along the slot over the crank's travel from the
+        /// first pose to the last (the highest minus the lowest slot
+        /// position there); NaN without a travel or with a branch defect.
+        stroke_used,
+        /// The slotted link's swing over the travel (its largest minus its
+        /// smallest angle there, radians, each measured within half a turn of
+        /// its angle at pose 1: a slotted link that turns more than half a
+        /// turn over the travel is not told apart); NaN without a travel or
+        /// with a branch defect.
+        swing_used: f64,
+    }
 }
-
-crate::synthesis::crank_travel::crank_travel_methods!(SynthesizedInvertedSliderCrank);
 
 impl SynthesizedInvertedSliderCrank {
     /// The linkage's size: the crank, the ground, the distances of the

@@ -58,46 +58,26 @@ impl DyadKind {
     }
 }
 
-/// A slider-crank built from a driving crank and a driven slider of a
-/// task, with its input angle and assembly mode at each pose, its order
-/// and what a designer checks (module docs).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SynthesizedSliderCrank {
-    /// The linkage: crank pivot `A0`, the guide through `C1`.
-    pub linkage: SliderCrank,
-    /// The driving dyad `(A0, A1)`.
-    pub driving: Dyad,
-    /// The driven slider (`C1` on its guide).
-    pub driven: SliderDyad,
-    /// The crank angle at each pose (absolute, radians, in `(-pi, pi]`).
-    pub input_angles: PerPose<f64>,
-    /// The assembly mode at each pose; `None` where the pose is at a
-    /// toggle (the coupler perpendicular to the guide).
-    pub modes: PerPose<Option<AssemblyMode>>,
-    /// The slider's position at each pose (as
-    /// [`SliderConfiguration::slider`](crate::SliderConfiguration::slider)).
-    pub slider_positions: PerPose<f64>,
-    /// The task's coupler point in the coupler frame (origin at the crank
-    /// joint `A`, x-axis toward the slider pin).
-    pub coupler_point: Vector2<f64>,
-    /// The task's coupler angle minus the coupler angle `theta3`.
-    pub coupler_angle_offset: f64,
-    /// The crank rotation that carries the coupler from pose 1 through the
-    /// poses in order to the last.
-    pub direction: Direction,
-    /// Whether the crank angles at the poses lie on one circuit (one arc
-    /// of the input range; always true for a crank that turns fully).
-    pub one_circuit: bool,
-    /// The smallest transmission angle over the travel, radians in
-    /// `[0, pi/2]`; NaN without a travel.
-    pub min_transmission: f64,
-    /// The slider's travel along the guide over the crank's travel from
-    /// the first pose to the last (its highest minus its lowest position
-    /// there); NaN without a travel or with a branch defect.
-    pub stroke_used: f64,
+crate::synthesis::crank_travel::crank_synthesized! {
+    /// A slider-crank built from a driving crank and a driven slider of a
+    /// task, with its input angle and assembly mode at each pose, its order
+    /// and what a designer checks (module docs).
+    pub struct SynthesizedSliderCrank {
+        /// The linkage: crank pivot `A0`, the guide through `C1`.
+        linkage: SliderCrank,
+        /// The driven slider (`C1` on its guide).
+        driven: SliderDyad,
+        toggle: "the coupler perpendicular to the guide",
+        /// The slider's position at each pose (as
+        /// [`SliderConfiguration::slider`](crate::SliderConfiguration::slider)).
+        slider_positions,
+        axis: "toward the slider pin",
+        /// The slider's travel along the guide over the crank's travel from
+        /// the first pose to the last (its highest minus its lowest position
+        /// there); NaN without a travel or with a branch defect.
+        stroke_used,
+    }
 }
-
-crate::synthesis::crank_travel::crank_travel_methods!(SynthesizedSliderCrank);
 
 impl SynthesizedSliderCrank {
     /// The linkage's size: crank, coupler, the two other sides of the
