@@ -3,7 +3,8 @@
 //! fields read from the core's crank-driven synthesized linkages (whose
 //! branch, order and travel methods come from the core's
 //! `synthesis::crank_travel`), pickling through the task, equality, the
-//! travel's angles and the pose at a crank angle.
+//! travel's angles and the pose at a crank angle; and the equality and
+//! pickling of their solved positions.
 
 /// What a synthesized crank-driven linkage is built from besides the task:
 /// its two dyads as `((x, y), (x, y))` each.
@@ -162,3 +163,34 @@ macro_rules! synthesized_crank {
 }
 
 pub(crate) use synthesized_crank;
+
+/// `__eq__` (the same position of the same linkage) and `__reduce__`
+/// (through `$PyLinkage.solve(theta2, mode)`) of a solved position `$Py`
+/// of a crank-driven linkage, with the fields `inner` (the core's
+/// configuration) and `linkage` (the core's linkage).
+macro_rules! configuration_methods {
+    ($Py:ident, $PyLinkage:ident) => {
+        #[::pyo3::pymethods]
+        impl $Py {
+            fn __eq__(&self, other: &::pyo3::Bound<'_, ::pyo3::PyAny>) -> bool {
+                other.cast::<$Py>().is_ok_and(|o| {
+                    let o = o.get();
+                    o.inner == self.inner && o.linkage == self.linkage
+                })
+            }
+            fn __reduce__<'py>(
+                &self,
+                py: ::pyo3::Python<'py>,
+            ) -> ::pyo3::PyResult<(::pyo3::Bound<'py, ::pyo3::PyAny>, (f64, &'static str))> {
+                use ::pyo3::types::PyAnyMethods;
+                let sc = ::pyo3::Bound::new(py, $PyLinkage::from(self.linkage))?;
+                Ok((
+                    sc.getattr("solve")?,
+                    (self.inner.theta2, self.inner.mode.as_str()),
+                ))
+            }
+        }
+    };
+}
+
+pub(crate) use configuration_methods;

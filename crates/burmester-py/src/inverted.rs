@@ -13,7 +13,7 @@ use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::PyTask;
 use crate::conv::{Arrays, FloatArray, PyPoint, Real, pt};
-use crate::crank_synth::synthesized_crank;
+use crate::crank_synth::{configuration_methods, synthesized_crank};
 use crate::errors::IntoPy;
 use crate::linkage::{self, mode};
 
@@ -239,23 +239,9 @@ impl PyInvertedConfiguration {
             if c.toggle { "True" } else { "False" }
         )
     }
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other.cast::<PyInvertedConfiguration>().is_ok_and(|o| {
-            let o = o.get();
-            o.inner == self.inner && o.linkage == self.linkage
-        })
-    }
-    fn __reduce__<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, (f64, &'static str))> {
-        let sc = Bound::new(py, PyInvertedSliderCrank::from(self.linkage))?;
-        Ok((
-            sc.getattr("solve")?,
-            (self.inner.theta2, self.inner.mode.as_str()),
-        ))
-    }
 }
+
+configuration_methods!(PyInvertedConfiguration, PyInvertedSliderCrank);
 
 synthesized_crank! {
     /// An inverted slider-crank built from a driving crank and an inverted

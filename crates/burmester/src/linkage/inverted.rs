@@ -250,6 +250,7 @@ pub struct InvertedSliderCrank {
 crate::linkage::crank_coupler_methods!(
     InvertedSliderCrank,
     InvertedConfiguration,
+    InvertedJoints,
     "along the slot"
 );
 
@@ -393,16 +394,6 @@ impl InvertedSliderCrank {
             toggle: heron <= tol,
             transmission_angle: t.abs().atan2(e.abs()),
         })
-    }
-
-    /// The joints at `theta2` in `mode`.
-    ///
-    /// # Errors
-    ///
-    /// As [`InvertedSliderCrank::solve`].
-    pub fn joints_at(&self, theta2: f64, mode: AssemblyMode) -> Result<InvertedJoints> {
-        let c = self.solve(theta2, mode)?;
-        Ok(self.joints(&c))
     }
 
     /// The joints of a configuration of this linkage.

@@ -42,14 +42,25 @@ pub(crate) fn nonzero_links<const N: usize>(
     Ok(())
 }
 
-/// `coupler_point(c, local)` and `coupler_path(local, theta2s, mode)` of a
-/// crank-driven linkage `$Linkage` (fields `pivot` and `crank`) whose
+/// `joints_at(theta2, mode)` (as `$Joints`), `coupler_point(c, local)` and
+/// `coupler_path(local, theta2s, mode)` of a crank-driven linkage
+/// `$Linkage` (fields `pivot` and `crank`, a method `joints`) whose
 /// configuration `$Config` carries the crank angle `theta2` and the coupler
 /// angle `theta3`, the coupler frame's origin at the crank pin and its
 /// x-axis as `$axis` says: the slider-crank and the inverted slider-crank.
 macro_rules! crank_coupler_methods {
-    ($Linkage:ident, $Config:ident, $axis:literal) => {
+    ($Linkage:ident, $Config:ident, $Joints:ident, $axis:literal) => {
         impl $Linkage {
+            /// The joints at `theta2` in `mode`.
+            ///
+            /// # Errors
+            ///
+            #[doc = concat!("As [`", stringify!($Linkage), "::solve`].")]
+            pub fn joints_at(&self, theta2: f64, mode: AssemblyMode) -> Result<$Joints> {
+                let c = self.solve(theta2, mode)?;
+                Ok(self.joints(&c))
+            }
+
             #[doc = concat!(
                 "Where a point fixed to the coupler is in a configuration (`local`\n",
                 "in the coupler frame: origin at the crank pin `A`, x-axis ",

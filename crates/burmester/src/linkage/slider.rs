@@ -256,6 +256,7 @@ impl PartialEq for SliderCrank {
 crate::linkage::crank_coupler_methods!(
     SliderCrank,
     SliderConfiguration,
+    SliderJoints,
     "toward the slider pin `B`"
 );
 
@@ -439,16 +440,6 @@ impl SliderCrank {
             toggle: heron <= tol,
             transmission_angle: x.abs().atan2(h.abs()),
         })
-    }
-
-    /// The joints at `theta2` in `mode`.
-    ///
-    /// # Errors
-    ///
-    /// As [`SliderCrank::solve`].
-    pub fn joints_at(&self, theta2: f64, mode: AssemblyMode) -> Result<SliderJoints> {
-        let c = self.solve(theta2, mode)?;
-        Ok(self.joints(&c))
     }
 
     /// The joints of a configuration of this linkage.

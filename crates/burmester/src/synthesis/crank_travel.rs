@@ -8,7 +8,7 @@
 /// driven joint's position (`$positions`) at each pose, the task's coupler
 /// point and angle offset, the direction, circuit, smallest transmission
 /// angle and stroke used, then the fields of its own kind; with its
-/// [`crank_travel_methods`].
+/// [`crank_travel_methods`] and `pose_at`.
 macro_rules! crank_synthesized {
     (
         $(#[$meta:meta])*
@@ -62,6 +62,26 @@ macro_rules! crank_synthesized {
         }
 
         $crate::synthesis::crank_travel::crank_travel_methods!($Type);
+
+        impl $Type {
+            /// The coupler pose (the task's coupler point and angle) when the
+            /// crank is driven to `theta2` in `mode`.
+            ///
+            /// # Errors
+            ///
+            #[doc = concat!("As [`", stringify!($L), "::solve`].")]
+            pub fn pose_at(
+                &self,
+                theta2: f64,
+                mode: $crate::linkage::AssemblyMode,
+            ) -> $crate::Result<$crate::geom::Pose> {
+                let c = self.linkage.solve(theta2, mode)?;
+                Ok($crate::geom::Pose {
+                    position: self.linkage.coupler_point(&c, self.coupler_point),
+                    angle: c.theta3 + self.coupler_angle_offset,
+                })
+            }
+        }
     };
 }
 

@@ -8,9 +8,10 @@
 //! line's direction at pose 1). The input angle is `arg(A_k - A0)`; the
 //! assembly mode is the sign of the slot position `t_k = <S - A_k, u3_k>`,
 //! named as the position analysis names it ([`InvertedSliderCrank`]:
-//! [`AssemblyMode::Open`] where it is positive). Seen in the coupler frame
-//! at pose 1 that is `sign <D_k1(S) - A1, d>`: the side of the line through
-//! the swivel's image `D_k1(S)` normal to the slot on which `A1` lies
+//! [`AssemblyMode::Open`](crate::AssemblyMode::Open) where it is
+//! positive). Seen in the coupler frame at pose 1 that is
+//! `sign <D_k1(S) - A1, d>`: the side of the line through the swivel's
+//! image `D_k1(S)` normal to the slot on which `A1` lies
 //! (Filemon's construction with the circle point at infinity, whose lines
 //! are parallel: [`InvalidInput::InvertedDriven`] in
 //! [`FilemonLines`](crate::FilemonLines)). The order is the driving
@@ -21,8 +22,8 @@
 use nalgebra::Vector2;
 
 use crate::error::{InvalidInput, Result};
-use crate::geom::{PerPose, Pose, cross, rotate};
-use crate::linkage::{AssemblyMode, Direction, InvertedSliderCrank};
+use crate::geom::{PerPose, cross, rotate};
+use crate::linkage::{Direction, InvertedSliderCrank};
 use crate::synthesis::slider_crank::travel_n;
 use crate::synthesis::{Dyad, DyadKind, InvertedSlider, Task};
 use crate::tolerance;
@@ -79,20 +80,6 @@ impl SynthesizedInvertedSliderCrank {
             + (p - a).norm()
             + (p - self.driven.swivel).norm()
             + slot
-    }
-
-    /// The coupler pose (the task's coupler point and angle) when the
-    /// crank is driven to `theta2` in `mode`.
-    ///
-    /// # Errors
-    ///
-    /// As [`InvertedSliderCrank::solve`].
-    pub fn pose_at(&self, theta2: f64, mode: AssemblyMode) -> Result<Pose> {
-        let c = self.linkage.solve(theta2, mode)?;
-        Ok(Pose {
-            position: self.linkage.coupler_point(&c, self.coupler_point),
-            angle: c.theta3 + self.coupler_angle_offset,
-        })
     }
 }
 

@@ -18,7 +18,7 @@
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{InvalidInput, Result};
-use crate::geom::{PerPose, Pose, cross, perp, rotate};
+use crate::geom::{PerPose, cross, perp, rotate};
 use crate::linkage::figures::{Travel, travel};
 use crate::linkage::{AssemblyMode, Direction, SliderCrank};
 use crate::synthesis::{Dyad, DyadKind, SliderDyad, Task};
@@ -104,20 +104,6 @@ impl SynthesizedSliderCrank {
             + (p - c).norm()
             + self.linkage.offset().abs()
             + guide
-    }
-
-    /// The coupler pose (the task's coupler point and angle) when the
-    /// crank is driven to `theta2` in `mode`.
-    ///
-    /// # Errors
-    ///
-    /// As [`SliderCrank::solve`].
-    pub fn pose_at(&self, theta2: f64, mode: AssemblyMode) -> Result<Pose> {
-        let c = self.linkage.solve(theta2, mode)?;
-        Ok(Pose {
-            position: self.linkage.coupler_point(&c, self.coupler_point),
-            angle: c.theta3 + self.coupler_angle_offset,
-        })
     }
 }
 
