@@ -64,6 +64,19 @@ macro_rules! crank_synthesized {
         $crate::synthesis::crank_travel::crank_travel_methods!($Type);
 
         impl $Type {
+            /// The [`stroke_used`](Self::stroke_used), or where that is NaN
+            /// the spread of the driven joint's positions at the poses.
+            fn stroke_or_spread(&self) -> f64 {
+                if self.stroke_used.is_nan() {
+                    let s = &self.$positions;
+                    let hi = s.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                    let lo = s.iter().copied().fold(f64::INFINITY, f64::min);
+                    hi - lo
+                } else {
+                    self.stroke_used
+                }
+            }
+
             /// The coupler pose (the task's coupler point and angle) when the
             /// crank is driven to `theta2` in `mode`.
             ///

@@ -67,14 +67,7 @@ impl SynthesizedInvertedSliderCrank {
             self.coupler_point,
             self.driven.direction.y.atan2(self.driven.direction.x),
         );
-        let s = &self.slot_positions;
-        let slot = if self.stroke_used.is_nan() {
-            let hi = s.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            let lo = s.iter().copied().fold(f64::INFINITY, f64::min);
-            hi - lo
-        } else {
-            self.stroke_used
-        };
+        let slot = self.stroke_or_spread();
         self.linkage.crank()
             + self.linkage.ground()
             + (p - a).norm()

@@ -90,14 +90,7 @@ impl SynthesizedSliderCrank {
         let (a, c) = (self.driving.circle, self.driven.circle);
         let ac = c - a;
         let p = a + rotate(self.coupler_point, ac.y.atan2(ac.x));
-        let s = &self.slider_positions;
-        let guide = if self.stroke_used.is_nan() {
-            let hi = s.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            let lo = s.iter().copied().fold(f64::INFINITY, f64::min);
-            hi - lo
-        } else {
-            self.stroke_used
-        };
+        let guide = self.stroke_or_spread();
         self.linkage.crank()
             + self.linkage.coupler()
             + (p - a).norm()
