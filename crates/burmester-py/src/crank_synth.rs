@@ -164,14 +164,31 @@ macro_rules! synthesized_crank {
 
 pub(crate) use synthesized_crank;
 
+/// `__repr__` (`$name(theta2=.., theta3=.., $along=.., mode=.., toggle=..)`),
 /// `__eq__` (the same position of the same linkage) and `__reduce__`
 /// (through `$PyLinkage.solve(theta2, mode)`) of a solved position `$Py`
 /// of a crank-driven linkage, with the fields `inner` (the core's
 /// configuration) and `linkage` (the core's linkage).
 macro_rules! configuration_methods {
-    ($Py:ident, $PyLinkage:ident) => {
+    ($Py:ident, $PyLinkage:ident, $name:literal, $along:ident) => {
         #[::pyo3::pymethods]
         impl $Py {
+            fn __repr__(&self) -> String {
+                let c = &self.inner;
+                format!(
+                    concat!(
+                        $name,
+                        "(theta2={:?}, theta3={:?}, ",
+                        stringify!($along),
+                        "={:?}, mode='{}', toggle={})"
+                    ),
+                    c.theta2,
+                    c.theta3,
+                    c.$along,
+                    c.mode.as_str(),
+                    if c.toggle { "True" } else { "False" }
+                )
+            }
             fn __eq__(&self, other: &::pyo3::Bound<'_, ::pyo3::PyAny>) -> bool {
                 other.cast::<$Py>().is_ok_and(|o| {
                     let o = o.get();

@@ -226,22 +226,12 @@ impl PyInvertedConfiguration {
     }
 }
 
-#[pymethods]
-impl PyInvertedConfiguration {
-    fn __repr__(&self) -> String {
-        let c = &self.inner;
-        format!(
-            "InvertedConfiguration(theta2={:?}, theta3={:?}, slot={:?}, mode='{}', toggle={})",
-            c.theta2,
-            c.theta3,
-            c.slot,
-            c.mode.as_str(),
-            if c.toggle { "True" } else { "False" }
-        )
-    }
-}
-
-configuration_methods!(PyInvertedConfiguration, PyInvertedSliderCrank);
+configuration_methods!(
+    PyInvertedConfiguration,
+    PyInvertedSliderCrank,
+    "InvertedConfiguration",
+    slot
+);
 
 synthesized_crank! {
     /// An inverted slider-crank built from a driving crank and an inverted

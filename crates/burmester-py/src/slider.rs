@@ -230,22 +230,12 @@ impl PySliderConfiguration {
     }
 }
 
-#[pymethods]
-impl PySliderConfiguration {
-    fn __repr__(&self) -> String {
-        let c = &self.inner;
-        format!(
-            "SliderConfiguration(theta2={:?}, theta3={:?}, slider={:?}, mode='{}', toggle={})",
-            c.theta2,
-            c.theta3,
-            c.slider,
-            c.mode.as_str(),
-            if c.toggle { "True" } else { "False" }
-        )
-    }
-}
-
-configuration_methods!(PySliderConfiguration, PySliderCrank);
+configuration_methods!(
+    PySliderConfiguration,
+    PySliderCrank,
+    "SliderConfiguration",
+    slider
+);
 
 synthesized_crank! {
     /// A slider-crank built from a driving crank and a driven slider of a

@@ -168,3 +168,43 @@ macro_rules! crank_travel_methods {
 }
 
 pub(crate) use crank_travel_methods;
+
+impl crate::Task {
+    /// Checks that the points `p[k]` lie on the lines through `base` in the
+    /// directions `dir(k)` (unit): the largest distance from them over the
+    /// largest distance from `base` plus the task's scale must be within
+    /// [`tolerance::DYAD`](crate::tolerance::DYAD). A slider's pin
+    /// positions on its guide, an inverted slider's swivel on the body line
+    /// at each pose.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotASlider`](crate::InvalidInput::NotASlider) naming
+    /// `which`, with the spread found.
+    pub(crate) fn check_on_lines(
+        &self,
+        which: &'static str,
+        p: &[nalgebra::Point2<f64>],
+        base: nalgebra::Point2<f64>,
+        dir: impl Fn(usize) -> nalgebra::Vector2<f64>,
+    ) -> crate::Result<()> {
+        let reach = p.iter().map(|q| (q - base).norm()).fold(0.0, f64::max);
+        let off = p
+            .iter()
+            .enumerate()
+            .map(|(k, q)| crate::geom::cross(dir(k), q - base).abs())
+            .fold(0.0, f64::max);
+        let spread = off / (reach + self.scale());
+        let tolerance = crate::tolerance::DYAD;
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(spread <= tolerance) {
+            return Err(crate::InvalidInput::NotASlider {
+                which,
+                spread,
+                tolerance,
+            }
+            .into());
+        }
+        Ok(())
+    }
+}

@@ -26,7 +26,6 @@ use crate::geom::{PerPose, cross, rotate};
 use crate::linkage::{Direction, InvertedSliderCrank};
 use crate::synthesis::slider_crank::travel_n;
 use crate::synthesis::{Dyad, DyadKind, InvertedSlider, Task};
-use crate::tolerance;
 
 crate::synthesis::crank_travel::crank_synthesized! {
     /// An inverted slider-crank built from a driving crank and an inverted
@@ -118,24 +117,13 @@ impl Task {
         // from the swivel there.
         let motion = self.motion();
         let swivel_images = motion.positions(s);
-        let travel_s = swivel_images
-            .iter()
-            .map(|p| (p - s).norm())
-            .fold(0.0, f64::max);
         let slot = PerPose::from_fn(n, |k| rotate(d, motion.rotation0(0, k)));
-        let spread = (0..n)
-            .map(|k| cross(slot[k], swivel_images[k] - s).abs())
-            .fold(0.0, f64::max);
-        let spread = spread / (travel_s + self.scale());
-        #[allow(clippy::neg_cmp_op_on_partial_ord)]
-        if !(spread <= tolerance::DYAD) {
-            return Err(InvalidInput::NotASlider {
-                which: "driven inverted slider (its body line leaves the swivel)",
-                spread,
-                tolerance: tolerance::DYAD,
-            }
-            .into());
-        }
+        self.check_on_lines(
+            "driven inverted slider (its body line leaves the swivel)",
+            &swivel_images,
+            s,
+            |k| slot[k],
+        )?;
         let a = motion.positions(driving.circle);
         let a0 = driving.center;
         let offset = cross(d, s - a[0]);

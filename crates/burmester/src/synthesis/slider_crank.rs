@@ -18,7 +18,7 @@
 use nalgebra::{Point2, Vector2};
 
 use crate::error::{InvalidInput, Result};
-use crate::geom::{PerPose, cross, perp, rotate};
+use crate::geom::{PerPose, perp, rotate};
 use crate::linkage::figures::{Travel, travel};
 use crate::linkage::{AssemblyMode, Direction, SliderCrank};
 use crate::synthesis::{Dyad, DyadKind, SliderDyad, Task};
@@ -136,21 +136,7 @@ impl Task {
         self.check_dyad(driving, "driving dyad")?;
         let c = self.motion().positions(driven.circle);
         let u = driven.guide;
-        let reach_c = c.iter().map(|p| (p - c[0]).norm()).fold(0.0, f64::max);
-        let off = c
-            .iter()
-            .map(|p| cross(u, p - c[0]).abs())
-            .fold(0.0, f64::max);
-        let spread = off / (reach_c + self.scale());
-        #[allow(clippy::neg_cmp_op_on_partial_ord)]
-        if !(spread <= tolerance::DYAD) {
-            return Err(InvalidInput::NotASlider {
-                which: "driven slider",
-                spread,
-                tolerance: tolerance::DYAD,
-            }
-            .into());
-        }
+        self.check_on_lines("driven slider", &c, c[0], |_| u)?;
         crate::linkage::nonzero_links(
             [(driving.circle, driven.circle, "coupler link")],
             tolerance::POINT * self.scale(),
