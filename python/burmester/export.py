@@ -1648,3 +1648,191 @@ __all__ += ["actuator", "actuator_dxf", "actuator_svg", "slider_crank", "slider_
 
 slider_crank_dxf, slider_crank_svg = _only(".dxf", slider_crank), _only(".svg", slider_crank)
 actuator_dxf, actuator_svg = _only(".dxf", actuator), _only(".svg", actuator)
+
+
+# ---------------------------------------------------------------------------
+# The inverted slider-crank (issue 27): a crank whose coupler's slot slides
+# through a block pivoted on the ground at the swivel.
+
+LAYERS.update({
+    "SLOT": Layer(8, "#4d4d4d", "the slotted coupler's slot (the body line the block slides on), at each pose"),
+    "SWIVEL_BLOCK": Layer(9, "#969696", "the block turning on the swivel S, along the slot, at each pose"),
+})
+
+
+def _inverted_links(d: _Drawing, layer: str, s: _scene.InvertedScene, p: Optional[Point], what: str) -> None:
+    """Crank ``A0 A``, the coupler from the pin to the slot ``A F`` (with a
+    coupler point ``p``: the plate ``A F P``), the joint ``A`` (layer
+    ``layer``), the slot (``SLOT``) and the block on the swivel
+    (``SWIVEL_BLOCK``) of an inverted slider-crank position (the core's
+    joints)."""
+    d.polyline(layer, [s.pivot, s.crank_joint], f"crank A0 A, {what}")
+    if p is None:
+        d.polyline(layer, [s.crank_joint, s.foot], f"coupler A F (pin to slot), {what}")
+    else:
+        d.polyline(layer, [s.crank_joint, s.foot, p], f"coupler A F P, {what}", closed=True)
+    d.marker(layer, s.crank_joint, f"moving pivot A, {what}")
+    d.polyline("SLOT", s.slot, f"slot through the swivel, {what}")
+    d.polyline("SWIVEL_BLOCK", s.block, f"block on the swivel, {what}", closed=True)
+
+
+def _slot_along(q: burmester.InvertedSliderCrank, ts: Array, mode: Mode) -> Array:
+    """The slot position ``<S - A, u3>`` at the crank angles ``ts`` (the
+    core's coupler path of the pin ``(0, 0)`` and of ``(1, 0)``, one along
+    the slot); NaN where the loop does not close."""
+    ax, ay, _ = q.coupler_path((0.0, 0.0), ts, mode)
+    bx, by, _ = q.coupler_path((1.0, 0.0), ts, mode)
+    sx, sy = q.swivel
+    return cast(Array, (sx - ax) * (bx - ax) + (sy - ay) * (by - ay))
+
+
+def _inverted_drawing(obj: Union[burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank],
+                      theta2: Optional[float], mode: Mode, travel_samples: int, path_samples: int, labels: bool,
+                      dimensions: bool) -> _Drawing:
+    travel_samples = _samples("travel_samples", travel_samples, 0)
+    if travel_samples == 1:
+        raise burmester.InvalidInputError("travel_samples must be 0 (none) or at least 2, got 1")
+    path_samples = _samples("path_samples", path_samples, 8)
+    synthesized = isinstance(obj, burmester.SynthesizedInvertedSliderCrank)
+    stroke: Optional[Tuple[float, float]] = None  # the block's run along the slot at pose 1: from, length
+    if isinstance(obj, burmester.SynthesizedInvertedSliderCrank):
+        q = obj.linkage
+        scene = _scene.synthesized_inverted_scene(obj)
+        if travel_samples and obj.travel is None:
+            raise burmester.AssemblyError(
+                "the inverted slider-crank cannot be driven from pose 1 through the poses in order in one "
+                "mode (a branch, order or circuit defect), so it has no travel to sample: draw it without "
+                "travel samples (travel_samples=0)"
+            )
+        at: List[Tuple[str, _scene.InvertedScene, Optional[Point], str]] = [
+            (f"LINKAGE_{k}", x.scene, x.p, f"pose {k} ({x.mode or 'toggle'})")
+            for k, x in enumerate(scene.at_poses, start=1)]
+        pose1, pose1_p = scene.at_poses[0].scene, scene.at_poses[0].p
+        title = (f"inverted slider-crank at {len(at)} poses: crank {q.crank:g}, ground {q.ground:g}, "
+                 f"offset {q.offset:g}, A0 {q.pivot}, S {q.swivel}")
+        if obj.stroke_used is not None and obj.travel is not None:
+            # Where the block's run starts: the lowest slot position over the travel, sampled.
+            count = max(2, math.ceil(path_samples * abs(obj.travel[1]) / (2.0 * math.pi)) + 1)
+            slots = _slot_along(q, obj.travel_angles(count), scene.mode)
+            stroke = (float(np.nanmin(slots)), obj.stroke_used)
+    else:
+        q = obj
+        t = _scene.inverted_crank_angle(q, theta2)
+        pose1 = _scene.inverted_scene(q, t, mode)
+        at = [("LINKAGE_1", pose1, None, f"crank angle {math.degrees(t):.2f} deg ({mode})")]
+        pose1_p = None
+        title = (f"inverted slider-crank: crank {q.crank:g}, ground {q.ground:g}, offset {q.offset:g}, "
+                 f"A0 {q.pivot}, S {q.swivel}")
+        (lo, hi) = q.slot_limits(mode)
+        stroke = (lo[1], hi[1] - lo[1])
+    d = _Drawing(title)
+    d.marker("PIVOTS", q.pivot, "crank pivot A0", "A0" if labels else None)
+    d.marker("PIVOTS", q.swivel, "swivel S (the block's ground pivot)", "S" if labels else None)
+    if isinstance(obj, burmester.SynthesizedInvertedSliderCrank):
+        stops = obj.travel_stops
+        if stops is not None:
+            for k, (a, b) in enumerate(zip(stops[:-1], stops[1:]), start=1):
+                count = max(2, math.ceil(path_samples * abs(b - a) / (2.0 * math.pi)))
+                x, y, ok = q.coupler_path(obj.coupler_point, np.linspace(a, b, count + 1), scene.mode)
+                for run in _runs(x, y, ok):
+                    d.polyline("COUPLER_PATH", run, f"coupler path, pose {k} to pose {k + 1}")
+            if travel_samples:
+                for i, t in enumerate(obj.travel_angles(travel_samples).tolist(), start=1):
+                    s = _scene.inverted_scene(q, t, scene.mode)
+                    d.polyline("TRAVEL", [s.pivot, s.crank_joint, s.foot],
+                               f"crank and coupler, travel sample {i} of {travel_samples}")
+    for layer, s, p, what in at:
+        _inverted_links(d, layer, s, p, what)
+    if isinstance(obj, burmester.SynthesizedInvertedSliderCrank):
+        _poses(d, scene.poses, scene.flag, labels)
+    if dimensions:
+        s = pose1
+        _aligned(d, "crank A0 A, pose 1", s.pivot, s.crank_joint, 2.5)
+        _aligned(d, "ground A0 S", q.pivot, q.swivel, -2.5)
+        _aligned(d, "offset: the crank pin A to the slot, pose 1", s.crank_joint, s.foot, 2.5)
+        if pose1_p is not None:
+            _aligned(d, "coupler A P, pose 1", s.crank_joint, pose1_p, -2.5)
+        if stroke is not None:
+            (t0, run), (ux, uy) = stroke, s.direction
+            start = (s.foot[0] + t0 * ux, s.foot[1] + t0 * uy)
+            what = "used over the travel" if synthesized else "over the crank's range"
+            _aligned(d, f"stroke: the block's run along the slot {what}, at pose 1", start,
+                     (start[0] + run * ux, start[1] + run * uy), -4.0)
+        _ordinates(d, "A0", q.pivot)
+        _ordinates(d, "S", q.swivel)
+    return d
+
+
+def inverted_slider_crank(
+    obj: Union[burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank],
+    path: PathLike,
+    theta2: Optional[float] = None,
+    mode: Mode = "open",
+    *,
+    travel_samples: int = 0,
+    path_samples: int = DEFAULT_PATH_SAMPLES,
+    labels: bool = True,
+    dimensions: bool = True,
+    units: Optional[str] = DEFAULT_UNITS,
+) -> Path:
+    """Write an inverted slider-crank to a DXF or SVG file, by the path's
+    suffix (what :func:`burmester.plot.inverted_slider_crank` draws),
+    written beside it and moved into place when complete.
+
+    Layers: ``PIVOTS`` (the crank pivot ``A0`` and the swivel ``S``),
+    ``LINKAGE_k`` (the crank ``A0 A``, the coupler from the pin ``A`` to the
+    slot's foot ``F``, or the plate ``A F P`` to the task's coupler point,
+    and the joint ``A`` at pose k; a :class:`burmester.InvertedSliderCrank`
+    alone: ``LINKAGE_1`` at ``theta2``), ``SLOT`` (the slot: the body line
+    through ``F`` and ``S``, from beyond the foot to beyond the swivel's
+    farthest slot position, each pose: :func:`burmester._scene.inverted_scene`),
+    ``SWIVEL_BLOCK`` (the block centred on ``S``, along the slot, each
+    pose), ``POSES``, ``COUPLER_PATH`` (the coupler point over the travel,
+    pose k to k + 1), ``TRAVEL`` (with ``travel_samples``: the chain ``A0
+    A F``), ``DIMENSIONS`` (at pose 1: the crank, the ground ``A0 S``, the
+    slot's offset ``A F``, the coupler's ``A P``, and the stroke: the
+    block's run along the slot, :attr:`~burmester.SynthesizedInvertedSliderCrank.stroke_used`
+    over the travel, from the lowest slot position sampled over it, or for a
+    linkage alone :attr:`~burmester.InvertedSliderCrank.stroke` between its
+    :meth:`~burmester.InvertedSliderCrank.slot_limits`; ``A0``'s and
+    ``S``'s ordinates) and ``TEXT``. Every point is the core's
+    (:meth:`burmester.InvertedSliderCrank.joints`, ``solve``,
+    ``coupler_path``, :meth:`burmester.SynthesizedInvertedSliderCrank.pose_at`).
+
+    Parameters:
+        obj: a :class:`burmester.SynthesizedInvertedSliderCrank` (drawn at
+            its poses; ``theta2`` and ``mode`` unused) or a
+            :class:`burmester.InvertedSliderCrank` (drawn at ``theta2``,
+            default the crank pointing away from the swivel, in ``mode``).
+        path: the file, ending in ``.dxf`` or ``.svg`` (replaced if it exists).
+        travel_samples: a synthesized one: also draw crank and coupler at
+            this many crank angles over the travel (0: none; else 2 to
+            :data:`MAX_SAMPLES`).
+        path_samples: samples of the coupler path (and of the slot position
+            that places the stroke's dimension) per crank turn (8 to
+            :data:`MAX_SAMPLES`).
+        labels: write ``A0``, ``S`` and the pose numbers.
+        dimensions: dimension the links, the offset, the stroke and the pivots.
+        units: the unit recorded (the module's *Units*).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: another suffix, a folder that does not
+            exist, unknown units, a sample count out of range or an unknown mode.
+        burmester.AssemblyError: the loop does not close at ``theta2``, or
+            ``travel_samples`` for a linkage without a travel.
+        ImportError: ezdxf (for ``.dxf``) is not installed.
+    """
+    if not isinstance(obj, (burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank)):
+        raise TypeError(f"expected a burmester.InvertedSliderCrank or SynthesizedInvertedSliderCrank, "
+                        f"got {type(obj).__name__}")
+    return _export(path, units, lambda: _inverted_drawing(obj, theta2, mode, travel_samples, path_samples,
+                                                          labels, dimensions))
+
+
+__all__ += ["inverted_slider_crank", "inverted_slider_crank_dxf", "inverted_slider_crank_svg"]
+
+inverted_slider_crank_dxf = _only(".dxf", inverted_slider_crank)
+inverted_slider_crank_svg = _only(".svg", inverted_slider_crank)
