@@ -18,6 +18,12 @@ plane, to DXF (with ezdxf) and to SVG (with the standard library).
   best pivots), or its circle-point plane (Filemon's lines and branch-free
   double wedge, the image poles and their circle, ``C1`` and ``C'k``).
 
+The slider-crank (:func:`slider_crank`), the linkage driven by a linear
+actuator (:func:`actuator`) and the inverted slider-crank
+(:func:`inverted_slider_crank`: the slot through the block on its swivel)
+have their own functions and layers (their docstrings, and the README's
+table).
+
 Every file is written whole to a temporary file beside its target and moved
 into place when complete (:mod:`burmester._io`): a write error, a full disk
 or Ctrl-C leaves no partial file and an existing one as it was.
@@ -1683,7 +1689,7 @@ def _slot_along(q: burmester.InvertedSliderCrank, ts: Array, mode: Mode) -> Arra
     ax, ay, _ = q.coupler_path((0.0, 0.0), ts, mode)
     bx, by, _ = q.coupler_path((1.0, 0.0), ts, mode)
     sx, sy = q.swivel
-    return cast(Array, (sx - ax) * (bx - ax) + (sy - ay) * (by - ay))
+    return (sx - ax) * (bx - ax) + (sy - ay) * (by - ay)
 
 
 def _inverted_drawing(obj: Union[burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank],
@@ -1753,11 +1759,11 @@ def _inverted_drawing(obj: Union[burmester.InvertedSliderCrank, burmester.Synthe
         if pose1_p is not None:
             _aligned(d, "coupler A P, pose 1", s.crank_joint, pose1_p, -2.5)
         if stroke is not None:
-            (t0, run), (ux, uy) = stroke, s.direction
+            (t0, along), (ux, uy) = stroke, s.direction
             start = (s.foot[0] + t0 * ux, s.foot[1] + t0 * uy)
             what = "used over the travel" if synthesized else "over the crank's range"
             _aligned(d, f"stroke: the block's run along the slot {what}, at pose 1", start,
-                     (start[0] + run * ux, start[1] + run * uy), -4.0)
+                     (start[0] + along * ux, start[1] + along * uy), -4.0)
         _ordinates(d, "A0", q.pivot)
         _ordinates(d, "S", q.swivel)
     return d

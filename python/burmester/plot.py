@@ -2153,8 +2153,8 @@ def animate_slider_crank(
     sc = s.linkage
     fig, ax = plt.subplots(figsize=(6.0, 5.0))
     slider_crank(s, labels=False, legend=False, units=units, ax=ax)
-    for art in list(ax.get_children()):
-        if str(art.get_gid()).startswith(("linkage-", "coupler-")):
+    for art in list(ax.get_children()):  # the linkage at the poses (not the coupler curve): it moves now
+        if str(art.get_gid()).startswith(("linkage-", "coupler-")) and art.get_gid() != "coupler-curve":
             art.remove()
     scenes = [_scene.slider_scene(sc, t, mode) for t in sequence]
     polys = [(np.array([x.pivot, x.crank_joint, x.slider_joint]), np.array(x.block)) for x in scenes]
@@ -2475,8 +2475,8 @@ def animate_inverted_slider_crank(
     try:
         inverted_slider_crank(obj, sequence[0], mode, labels=False, legend=False,
                               units=units, ax=ax)
-        for art in list(ax.get_children()):
-            if str(art.get_gid()).startswith(("linkage", "coupler-")):
+        for art in list(ax.get_children()):  # the linkage at the poses: it moves now
+            if str(art.get_gid()).startswith(("linkage", "coupler-")) and art.get_gid() != "coupler-curve":
                 art.remove()
         polys = [(np.array([x.pivot, x.crank_joint, x.foot]), np.array(x.slot), np.array(x.block))
                  for x in scenes]

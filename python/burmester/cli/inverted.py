@@ -8,8 +8,8 @@ slider (:meth:`burmester.Task.inverted_sliders`), each built exactly by
 through the poses in order in one mode (``feasible``), with both fixed
 pivots where the task file's ``[space]`` allows them and within its
 ``[limits]`` (the smallest transmission angle over the travel, the size
-over the task's span, crank over ground or its inverse as the link ratio)
-are kept, ranked like the one-call design's ``balanced``: ``sin(mu min) /
+over the task's span, crank over ground or its inverse as the link ratio,
+and with ``input = "crank"`` a crank that turns fully) are kept, ranked like the one-call design's ``balanced``: ``sin(mu min) /
 sqrt(size ratio)``. The driving cranks: three poses, the crank pivots on a
 grid over the ``[space]`` search box (else the task file's ``[view]``);
 four poses, the center-point curve's dyads; five, the Burmester points.
@@ -92,7 +92,8 @@ def candidates(spec: TaskSpec, *, pivot: Optional[Point] = None, swivel: Optiona
     sliders = [task.inverted_slider(swivel)] if swivel is not None else task.inverted_sliders(samples)
     if not sliders:
         raise UsageError(f"{spec.source}: the task has no inverted slider (a line of the body through a fixed "
-                         "point at every pose): five poses have one only where a Burmester point is at infinity")
+                         "point at every pose): four or five poses have one only where the inverted motion's "
+                         "circle-point curve or Burmester points reach infinity; try three of the poses")
     space, lim = spec.space, spec.limits
     if space is not None:
         sliders = [s for s in sliders if swivel is not None or space.contains_pivot(s.swivel)]
@@ -113,7 +114,7 @@ def candidates(spec: TaskSpec, *, pivot: Optional[Point] = None, swivel: Optiona
             l = q.linkage
             if not l.ground > 0.0 or max(l.crank, l.ground) / min(l.crank, l.ground) > lim.max_link_ratio:
                 continue
-            if q.size_ratio > lim.max_size_ratio:
+            if q.size_ratio > lim.max_size_ratio or (lim.input == "crank" and not l.turns_fully):
                 continue
             kept.append(Candidate(math.sin(math.radians(mu)) / math.sqrt(q.size_ratio), q))
     kept.sort(key=lambda c: -c.score)
