@@ -409,42 +409,50 @@ def slider_crank_angle(sc: "SliderCrank", theta2: Optional[float]) -> float:
     return 0.0 if not arcs else arcs[0][0] + 0.5 * ((arcs[0][1] - arcs[0][0]) % (2 * math.pi))
 
 
-class SliderAtPose(NamedTuple):
-    """A synthesized slider-crank at pose k: its crank angle, its mode (None:
-    a toggle, drawn in the first pose's mode), the :class:`SliderScene`
-    there and the coupler point (the coupler plate is ``A B P``)."""
+class CrankAtPose(NamedTuple):
+    """A synthesized crank-driven linkage (a slider-crank, an inverted one)
+    at pose k: its crank angle, its mode (None: a toggle, drawn in the first
+    pose's mode), its kind's scene there (:class:`SliderScene`,
+    :class:`InvertedScene`) and the coupler point (the coupler plate is the
+    crank pin, the coupler's other joint and this point)."""
 
     theta2: float
     mode: Optional["Mode"]
-    scene: SliderScene
+    scene: Any
     p: Point
 
 
-class SynthesizedSliderScene(NamedTuple):
-    """A synthesized slider-crank at its poses: what
-    :func:`burmester.plot.slider_crank` and
-    :func:`burmester.export.slider_crank` draw. The guide (layer ``GUIDE``)
+class SynthesizedCrankScene(NamedTuple):
+    """A synthesized crank-driven linkage at its poses: what
+    :func:`burmester.plot.slider_crank` and :func:`burmester.export.slider_crank`
+    (or their inverted kin) draw. A slider-crank's guide (layer ``GUIDE``)
     is the first pose's scene's."""
 
     #: The mode of pose 1 (``"open"`` at a toggle): the coupler path's.
     mode: "Mode"
-    at_poses: List[SliderAtPose]
+    at_poses: List[CrankAtPose]
     #: The poses the linkage reaches (``POSES``), and a flag's length.
     poses: List[Tuple[float, float, float]]
     flag: float
 
 
-def synthesized_slider_scene(s: "SynthesizedSliderCrank") -> SynthesizedSliderScene:
-    """The :class:`SynthesizedSliderScene` of ``s``."""
-    sc = s.linkage
+def _synthesized_crank_scene(s: Any, scene_at: Any, size: float) -> SynthesizedCrankScene:
+    """The :class:`SynthesizedCrankScene` of ``s``, its kind's scene at an
+    angle ``scene_at(linkage, theta2, mode)`` and its size (the flags are
+    0.12 of it)."""
     first: "Mode" = s.modes[0] or "open"
-    at: List[SliderAtPose] = []
+    at: List[CrankAtPose] = []
     poses: List[Tuple[float, float, float]] = []
     for t, m in zip(s.input_angles, s.modes):
         x, y, a = s.pose_at(t, m or first)
-        at.append(SliderAtPose(t, m, slider_scene(sc, t, m or first), (x, y)))
+        at.append(CrankAtPose(t, m, scene_at(s.linkage, t, m or first), (x, y)))
         poses.append((x, y, a))
-    return SynthesizedSliderScene(first, at, poses, 0.12 * (sc.crank + sc.coupler))
+    return SynthesizedCrankScene(first, at, poses, 0.12 * size)
+
+
+def synthesized_slider_scene(s: "SynthesizedSliderCrank") -> SynthesizedCrankScene:
+    """The :class:`SynthesizedCrankScene` of a slider-crank (its scenes :class:`SliderScene`)."""
+    return _synthesized_crank_scene(s, slider_scene, s.linkage.crank + s.linkage.coupler)
 
 
 def slider_dyad_guide(dyad: "SliderDyad", task: Optional[Task] = None) -> Segment:
@@ -487,12 +495,19 @@ class InvertedScene(NamedTuple):
     crank_joint: Point
     swivel: Point
     foot: Point
-    #: The slot's unit direction (the coupler angle ``theta3``).
+    #: The slot's unit direction (the coupler angle ``theta3``), its two
+    #: ends (on the line through ``F`` and ``S``) and the block's four
+    #: corners (centred on ``S``).
     direction: Point
-    #: The slot's two ends, on the line through ``F`` and ``S``.
     slot: Segment
-    #: The block's four corners, centred on ``S``.
     block: List[Point]
+
+
+def crank_chain(s: "SliderScene | InvertedScene") -> List[Point]:
+    """The chain of joints of a crank-driven linkage's scene: ``A0 A B``
+    of a slider-crank, ``A0 A F`` of an inverted one (the coupler to the
+    slot)."""
+    return [s.pivot, s.crank_joint, s.slider_joint if isinstance(s, SliderScene) else s.foot]
 
 
 #: The slot's margin beyond the foot and the swivel's extreme positions, and
@@ -540,42 +555,10 @@ def inverted_range_angles(q: "InvertedSliderCrank", frames: int) -> List[float]:
     return [float(v) for v in lo + np.linspace(0.0, span, frames)]
 
 
-class InvertedAtPose(NamedTuple):
-    """A synthesized inverted slider-crank at pose k: its crank angle, its
-    mode (None: a toggle, drawn in the first pose's mode), the
-    :class:`InvertedScene` there and the coupler point (the coupler plate is
-    ``A F P``)."""
-
-    theta2: float
-    mode: Optional["Mode"]
-    scene: InvertedScene
-    p: Point
-
-
-class SynthesizedInvertedScene(NamedTuple):
-    """A synthesized inverted slider-crank at its poses: what
-    :func:`burmester.plot.inverted_slider_crank` and
-    :func:`burmester.export.inverted_slider_crank` draw."""
-
-    #: The mode of pose 1 (``"open"`` at a toggle): the coupler path's.
-    mode: "Mode"
-    at_poses: List[InvertedAtPose]
-    #: The poses the linkage reaches (``POSES``), and a flag's length.
-    poses: List[Tuple[float, float, float]]
-    flag: float
-
-
-def synthesized_inverted_scene(s: "SynthesizedInvertedSliderCrank") -> SynthesizedInvertedScene:
-    """The :class:`SynthesizedInvertedScene` of ``s``."""
-    q = s.linkage
-    first: "Mode" = s.modes[0] or "open"
-    at: List[InvertedAtPose] = []
-    poses: List[Tuple[float, float, float]] = []
-    for t, m in zip(s.input_angles, s.modes):
-        x, y, a = s.pose_at(t, m or first)
-        at.append(InvertedAtPose(t, m, inverted_scene(q, t, m or first), (x, y)))
-        poses.append((x, y, a))
-    return SynthesizedInvertedScene(first, at, poses, 0.12 * (q.crank + q.ground))
+def synthesized_inverted_scene(s: "SynthesizedInvertedSliderCrank") -> SynthesizedCrankScene:
+    """The :class:`SynthesizedCrankScene` of an inverted slider-crank (its
+    scenes :class:`InvertedScene`)."""
+    return _synthesized_crank_scene(s, inverted_scene, s.linkage.crank + s.linkage.ground)
 
 
 # ---------------------------------------------------------------------------

@@ -2188,7 +2188,7 @@ def _draw_inverted_at(ax: Axes, q: burmester.InvertedSliderCrank, theta2: float,
     travel in ``mode``, ``gid + "-slot"``) and the block on the swivel
     (``gid + "-block"``) at ``theta2`` (:func:`burmester._scene.inverted_scene`)."""
     sc = _scene.inverted_scene(q, theta2, mode)
-    chain = np.array([sc.pivot, sc.crank_joint, sc.foot], dtype=float)
+    chain = np.array(_scene.crank_chain(sc), dtype=float)
     (ln,) = ax.plot(chain[:, 0], chain[:, 1], color=color, linewidth=2.2, marker="o", markersize=5,
                     alpha=alpha, zorder=zorder)
     ln.set_gid(gid)
@@ -2478,8 +2478,7 @@ def animate_inverted_slider_crank(
         for art in list(ax.get_children()):  # the linkage at the poses: it moves now
             if str(art.get_gid()).startswith(("linkage", "coupler-")) and art.get_gid() != "coupler-curve":
                 art.remove()
-        polys = [(np.array([x.pivot, x.crank_joint, x.foot]), np.array(x.slot), np.array(x.block))
-                 for x in scenes]
+        polys = [(np.array(_scene.crank_chain(x)), np.array(x.slot), np.array(x.block)) for x in scenes]
         _fit_frames(ax, polys)
         label_axes(ax, units)
         ax.set_title(f"Inverted slider-crank {what} ({mode}): crank {format_length(q.crank, units)}, "

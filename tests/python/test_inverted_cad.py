@@ -28,19 +28,10 @@ mpl = pytest.importorskip("matplotlib")
 mpl.use("Agg")
 export = pytest.importorskip("burmester.export")
 from burmester import plot  # noqa: E402
+from test_slider_actuator_cad import SVG, circles, polylines, svg_paths  # noqa: E402  (DXF and SVG read back)
 
 HOOD = Path(__file__).resolve().parents[2] / "examples" / "hood.toml"
-SVG = "{http://www.w3.org/2000/svg}"
 POINT = (0.5, 0.8)  # the hand-made coupler point, in the coupler frame
-
-
-def polylines(doc, layer):
-    return [np.array(list(e.get_points("xy")), dtype=float)
-            for e in doc.modelspace().query(f'LWPOLYLINE[layer=="{layer}"]')]
-
-
-def circles(doc, layer):
-    return [np.array(e.dxf.center)[:2] for e in doc.modelspace().query(f'CIRCLE[layer=="{layer}"]')]
 
 
 def measurements(doc):
@@ -49,18 +40,8 @@ def measurements(doc):
 
 
 def svg_group(path, layer):
-    root = ET.parse(path).getroot()
-    (g,) = [g for g in root.findall(f"{SVG}g") if g.get("id") == layer]
+    (g,) = [g for g in ET.parse(path).getroot().findall(f"{SVG}g") if g.get("id") == layer]
     return g
-
-
-def svg_paths(path, layer):
-    """The polylines of an SVG layer in model coordinates (y flipped back)."""
-    out = []
-    for el in svg_group(path, layer).findall(f"{SVG}path"):
-        pts = [tuple(float(v) for v in p.strip().split()) for p in el.get("d").strip("MZ ").split("L")]
-        out.append(np.array([(x, -y) for x, y in pts]))
-    return out
 
 
 def closed_form(q, theta2, mode):
@@ -194,34 +175,37 @@ def test_a_linkage_alone_in_either_mode(tmp_path, known):
     np.testing.assert_allclose(polylines(doc, "LINKAGE_1")[0][1], closed_form(q, away, "open")[0], atol=1e-9)
 
 
-def test_export_errors_leave_no_file(tmp_path, known):
+@pytest.mark.parametrize("write, error, words", [
+    (lambda q, syn, d: export.inverted_slider_crank(syn, d / "x.dxf", travel_samples=1),
+     burmester.InvalidInputError, "travel_samples"),
+    (lambda q, syn, d: export.inverted_slider_crank(q, d / "x.png"), burmester.InvalidInputError, ".dxf or .svg"),
+    (lambda q, syn, d: export.inverted_slider_crank_svg(q, d / "x.dxf"), burmester.InvalidInputError, ".svg"),
+    (lambda q, syn, d: export.inverted_slider_crank(q, d / "x.dxf", mode="sideways"),
+     burmester.InvalidInputError, "sideways"),
+    # The pin nearer the swivel than the offset: the slot does not reach it.
+    (lambda q, syn, d: export.inverted_slider_crank(
+        InvertedSliderCrank(crank=1.0, swivel=(1.2, 0.0), offset=0.5), d / "x.dxf", 0.0), burmester.AssemblyError, "nearer than the slot"),
+    (lambda q, syn, d: export.inverted_slider_crank(q.pivot, d / "x.dxf"), TypeError, "InvertedSliderCrank"),
+])
+def test_export_errors_leave_no_file(tmp_path, known, write, error, words):
     q, _, syn = known
-    with pytest.raises(burmester.InvalidInputError, match="travel_samples"):
-        export.inverted_slider_crank(syn, tmp_path / "x.dxf", travel_samples=1)
-    with pytest.raises(burmester.InvalidInputError, match=".dxf or .svg"):
-        export.inverted_slider_crank(q, tmp_path / "x.png")
-    with pytest.raises(burmester.InvalidInputError):
-        export.inverted_slider_crank_svg(q, tmp_path / "x.dxf")
-    with pytest.raises(burmester.InvalidInputError):
-        export.inverted_slider_crank(q, tmp_path / "x.dxf", mode="sideways")
-    with pytest.raises(burmester.AssemblyError):  # the pin nearer the swivel than the offset
-        export.inverted_slider_crank(InvertedSliderCrank(crank=1.0, swivel=(1.2, 0.0), offset=0.5),
-                                     tmp_path / "x.dxf", 0.0)
-    with pytest.raises(TypeError):
-        export.inverted_slider_crank(object(), tmp_path / "x.dxf")
+    with pytest.raises(error, match=words):
+        write(q, syn, tmp_path)
     assert not list(tmp_path.iterdir())
 
 
 def test_export_at_the_documented_maximum(tmp_path, known):
     q, angles, syn = known
     doc = ezdxf.readfile(export.inverted_slider_crank(syn, tmp_path / "max.dxf", path_samples=export.MAX_SAMPLES))
-    stops = syn.travel_stops
-    pieces = polylines(doc, "COUPLER_PATH")
-    assert len(pieces) == len(angles) - 1
-    for (a, b), piece in zip(zip(stops[:-1], stops[1:]), pieces):
-        assert len(piece) == math.ceil(export.MAX_SAMPLES * abs(b - a) / (2 * math.pi)) + 1
-        np.testing.assert_allclose(piece[[0, -1]], [q.coupler_point(a, POINT, "open"),
-                                                    q.coupler_point(b, POINT, "open")], atol=1e-9)
+    # One leg a pose to the next, MAX_SAMPLES a crank turn, from pose to pose (the hand-made coupler point).
+    legs = polylines(doc, "COUPLER_PATH")
+    stops = np.array(syn.travel_stops)
+    assert len(stops) == len(angles)
+    assert [len(leg) for leg in legs] == [math.ceil(export.MAX_SAMPLES * abs(d) / (2 * math.pi)) + 1
+                                          for d in np.diff(stops)]
+    at_poses = np.array([q.coupler_point(float(t), POINT, "open") for t in stops])
+    np.testing.assert_allclose([leg[0] for leg in legs], at_poses[:-1], atol=1e-9)
+    np.testing.assert_allclose([leg[-1] for leg in legs], at_poses[1:], atol=1e-9)
     assert min(abs(m - syn.stroke_used) for m in measurements(doc)) < 1e-9
     for bad in (7, export.MAX_SAMPLES + 1):
         with pytest.raises(burmester.InvalidInputError, match="path_samples"):
@@ -299,23 +283,25 @@ def test_animation_errors(tmp_path, known):
 
 
 def test_interrupted_animation_keeps_the_old_file(tmp_path, known, monkeypatch):
+    """Ctrl-C at the third frame, two frames already written to the
+    temporary file: the old file stays as it was, nothing else is left."""
     import matplotlib.animation as animation
 
     _, _, syn = known
-    calls = []
+    written = iter(range(2))
+    grab = animation.PillowWriter.grab_frame
 
-    def grab_frame(self, **kw):
-        calls.append(1)
-        if len(calls) == 2:
+    def grab_then_interrupt(self, **kw):
+        if next(written, None) is None:
             raise KeyboardInterrupt
+        grab(self, **kw)
 
-    monkeypatch.setattr(animation.PillowWriter, "grab_frame", grab_frame)
-    target = tmp_path / "q.gif"
-    target.write_bytes(b"old")
+    monkeypatch.setattr(animation.PillowWriter, "grab_frame", grab_then_interrupt)
+    (tmp_path / "q.gif").write_bytes(b"old")
     with pytest.raises(KeyboardInterrupt):
-        plot.animate_inverted_slider_crank(syn, target, frames=6, dpi=20)
-    assert target.read_bytes() == b"old"
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["q.gif"]
+        plot.animate_inverted_slider_crank(syn, tmp_path / "q.gif", frames=6, dpi=20)
+    assert (tmp_path / "q.gif").read_bytes() == b"old"
+    assert [p.name for p in tmp_path.iterdir()] == ["q.gif"]
 
 
 # ---------------------------------------------------------------------------

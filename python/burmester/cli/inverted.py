@@ -28,21 +28,7 @@ import numpy as np
 
 import burmester
 from burmester.cli.base import UsageError, _fmt_point, _load, _with_units
-from burmester.cli.files import (
-    ANIMATION_TYPES,
-    CAD_TYPES,
-    PICTURE_TYPES,
-    _export_module,
-    _is_cad,
-    _output,
-    _picture_dpi,
-    _plot_module,
-    _save,
-    _types,
-    _units,
-    _write_cad,
-    _written,
-)
+from burmester.cli import files
 from burmester.cli.tables import table
 from burmester.taskfile import TaskSpec
 from burmester.units import format_length
@@ -156,17 +142,17 @@ def cmd_inverted(args: argparse.Namespace) -> int:
     ``.mp4``)."""
     spec = _with_units(_load(args.task), args)  # the task file's errors first
     out: Optional[str] = args.output
-    animated = out is not None and out.lower().endswith(ANIMATION_TYPES)
-    cad = out is not None and _is_cad(out)
+    animated = out is not None and out.lower().endswith(files.ANIMATION_TYPES)
+    cad = out is not None and files._is_cad(out)
     if out is not None:
-        _output(out, _types(PICTURE_TYPES, CAD_TYPES, ANIMATION_TYPES), args.force)
+        files._output(out, files._types(files.PICTURE_TYPES, files.CAD_TYPES, files.ANIMATION_TYPES), args.force)
     for flag, given in (("--frames", args.frames), ("--fps", args.fps)):
         if given is not None and not animated:
             raise UsageError(f"{flag} is for animations (-o ... .gif or .mp4)")
     if args.travel is not None and not cad:
         raise UsageError("--travel is for CAD exports (-o ... .dxf or .svg)")
-    export = _export_module(out) if out is not None and cad else None
-    units = _units(args, spec) if out is not None else None
+    export = files._export_module(out) if out is not None and cad else None
+    units = files._units(args, spec) if out is not None else None
     pivot = None if args.pivot is None else (args.pivot[0], args.pivot[1])
     swivel = None if args.swivel is None else (args.swivel[0], args.swivel[1])
     kept, built = candidates(spec, pivot=pivot, swivel=swivel, samples=args.samples, grid=args.pivot_grid)
@@ -189,17 +175,17 @@ def cmd_inverted(args: argparse.Namespace) -> int:
         return 0
     q = best[0].linkage
     if export is not None:
-        _write_cad(export.inverted_slider_crank, out, args.force, q, out, units=units,
+        files._write_cad(export.inverted_slider_crank, out, args.force, q, out, units=units,
                    travel_samples=args.travel or 0)
     elif animated:
-        plot = _plot_module()
+        plot = files._plot_module()
         try:
-            _written(out, args.force, lambda tmp: plot.animate_inverted_slider_crank(
+            files._written(out, args.force, lambda tmp: plot.animate_inverted_slider_crank(
                 q, tmp, frames=args.frames or 60, fps=args.fps or 20, dpi=args.dpi or 80, units=spec.units))
         except RuntimeError as e:  # no ffmpeg for .mp4
             raise UsageError(str(e)) from None
     else:
-        ax = _plot_module().inverted_slider_crank(q, units=spec.units)
-        _save(ax.figure, out, _picture_dpi(args), args.force)
+        ax = files._plot_module().inverted_slider_crank(q, units=spec.units)
+        files._save(ax.figure, out, files._picture_dpi(args), args.force)
     print(f"wrote {out}: the best inverted slider-crank", file=sys.stderr if args.json else sys.stdout)
     return 0
