@@ -13,7 +13,8 @@ and with ``input = "crank"`` a crank that turns fully) are kept, ranked like the
 sqrt(size ratio)``. The driving cranks: three poses, the crank pivots on a
 grid over the ``[space]`` search box (else the task file's ``[view]``);
 four poses, the center-point curve's dyads; five, the Burmester points.
-``--pivot`` and ``--swivel`` fix either.
+``--pivot`` and ``--swivel`` fix either. The space's obstacles and
+envelope are not checked over the travel (only where the pivots go).
 """
 
 from __future__ import annotations

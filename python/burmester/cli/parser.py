@@ -491,7 +491,9 @@ def _add_inverted(sub: _Commands) -> None:
         as the link ratio, size), are ranked by sin(mu min) / sqrt(size ratio) and printed. -o draws the
         best at its poses (.png, .pdf, ...), animates it through them (.gif, .mp4) or exports it to CAD
         (.dxf, .svg: the slot, the block on the swivel, the links, dimensioned). No task-file table:
-        --pivot and --swivel fix either fixed pivot.
+        --pivot and --swivel fix either fixed pivot. The [space]'s obstacles and envelope are not
+        checked over the travel (only where the pivots go): look at the picture, where the coupler
+        point's path over the travel is drawn.
     """)
     _task_arg(p)
     p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
