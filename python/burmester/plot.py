@@ -2412,7 +2412,8 @@ def animate_inverted_slider_crank(
 ) -> FuncAnimation:
     """Write an animation of an inverted slider-crank driven by its crank
     (``.gif`` or ``.mp4``): the moving crank and slotted coupler (gid
-    ``"moving-linkage"``), its slot (``"moving-linkage-slot"``) and the
+    ``"moving-linkage"``, its plate to the task's coupler point
+    ``"moving-coupler"``), its slot (``"moving-linkage-slot"``) and the
     block turning on the swivel (``"moving-linkage-block"``), over the
     fixed pivots (as :func:`inverted_slider_crank` draws them; every
     position is the core's, :func:`burmester._scene.inverted_scene`).
@@ -2478,25 +2479,42 @@ def animate_inverted_slider_crank(
         for art in list(ax.get_children()):  # the linkage at the poses: it moves now
             if str(art.get_gid()).startswith(("linkage", "coupler-")) and art.get_gid() != "coupler-curve":
                 art.remove()
-        polys = [(np.array(_scene.crank_chain(x)), np.array(x.slot), np.array(x.block)) for x in scenes]
-        _fit_frames(ax, polys)
+        # The coupler plate A F P of a synthesized one (P the task's coupler point), else the pin and foot.
+        points = [obj.pose_at(t, mode)[:2] for t in sequence] if isinstance(obj, burmester.SynthesizedInvertedSliderCrank) \
+            else [None] * len(sequence)
+        plates = [np.array([x.crank_joint, x.foot, *([p] if p is not None else [])]) for x, p in zip(scenes, points)]
+        polys = [(np.array(_scene.crank_chain(x)), np.array(x.slot), np.array(x.block), plate)
+                 for x, plate in zip(scenes, plates)]
+        _fit_frames(ax, [*polys, *((np.array(ax_line.get_xydata()),) for ax_line in ax.get_lines()
+                                   if ax_line.get_gid() == "coupler-curve")])
         label_axes(ax, units)
-        ax.set_title(f"Inverted slider-crank {what} ({mode}): crank {format_length(q.crank, units)}, "
+        ax.set_title(f"Inverted slider-crank {what} ({mode})\ncrank {format_length(q.crank, units)}, "
                      f"ground {format_length(q.ground, units)}, offset {format_length(q.offset, units)}",
                      fontsize=10)
-        # The moving chain, slot and block: drawn at the first frame, moved by each.
+        # The moving chain, slot, block and plate: drawn at the first frame, moved by each.
         chain_art, slot_art, block_art = _draw_inverted_at(ax, q, sequence[0], mode, "#333333", "moving-linkage",
                                                            zorder=8)
-
-        def update(i: int) -> List[Artist]:
-            chain, slot, corners = polys[i]
-            chain_art.set_data(chain[:, 0], chain[:, 1])
-            slot_art.set_data(slot[:, 0], slot[:, 1])
-            block_art.set_xy(corners)
-            return [chain_art, slot_art, block_art]
-
-        anim = FuncAnimation(fig, update, frames=len(sequence), interval=1000.0 / fps, blit=False)
-        _save_animation(anim, path, fps, dpi)
+        plate_art = Polygon(plates[0], closed=True, facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.5, zorder=7,
+                            gid="moving-coupler")
+        ax.add_patch(plate_art)
+        anim = _play(fig, path, [chain_art, slot_art, block_art, plate_art], polys, fps, dpi)
     finally:
         plt.close(fig)
+    return anim
+
+
+def _play(fig: Figure, path: Path, arts: Sequence[Union[Line2D, Polygon]],
+          frames: Sequence[Sequence[npt.NDArray[np.float64]]], fps: int, dpi: int) -> FuncAnimation:
+    """Move each of ``arts`` to its array of each frame (a line's points,
+    a polygon's corners) and write the animation (:func:`_save_animation`)."""
+    def update(i: int) -> List[Artist]:
+        for art, xy in zip(arts, frames[i]):
+            if isinstance(art, Polygon):
+                art.set_xy(xy)
+            else:
+                art.set_data(xy[:, 0], xy[:, 1])
+        return list(arts)
+
+    anim = FuncAnimation(fig, update, frames=len(frames), interval=1000.0 / fps, blit=False)
+    _save_animation(anim, path, fps, dpi)
     return anim

@@ -240,7 +240,8 @@ def test_animation_through_the_poses(tmp_path, known):
     with Image.open(out) as im:
         assert im.n_frames >= 8  # there and back
     arts = moving(anim)
-    assert {"moving-linkage", "moving-linkage-slot", "moving-linkage-block", "coupler-curve", "pose-1"} <= set(arts)
+    assert {"moving-linkage", "moving-linkage-slot", "moving-linkage-block", "moving-coupler", "coupler-curve",
+            "pose-1"} <= set(arts)
     assert anim._fig.axes[0].get_xlabel() == "x [mm]"
     # The first frame: the linkage at pose 1 (the closed form), the slot through the swivel.
     anim._func(0)
@@ -248,6 +249,11 @@ def test_animation_through_the_poses(tmp_path, known):
     np.testing.assert_allclose(np.array(arts["moving-linkage"].get_xydata()), [q.pivot, a, f], atol=1e-9)
     assert_slot_through_swivel(np.array(arts["moving-linkage-slot"].get_xydata()), q.swivel,
                                np.array([math.cos(theta3), math.sin(theta3)]))
+    # The coupler plate A F P moves with it, P on pose 1; every pose and the coupler curve in view.
+    np.testing.assert_allclose(arts["moving-coupler"].get_xy()[:3], [a, f, syn.pose_at(angles[0])[:2]], atol=1e-9)
+    (x0, x1), (y0, y1) = anim._fig.axes[0].get_xlim(), anim._fig.axes[0].get_ylim()
+    curve = np.array(arts["coupler-curve"].get_xydata())
+    assert (x0 < curve[:, 0]).all() and (curve[:, 0] < x1).all() and (y0 < curve[:, 1]).all() and (curve[:, 1] < y1).all()
     # A linkage alone: over its crank's range.
     plot.animate_inverted_slider_crank(q, tmp_path / "alone.gif", "crossed", frames=5, dpi=20)
     with Image.open(tmp_path / "alone.gif") as im:
