@@ -365,6 +365,18 @@ def test_the_cli_says_what_to_change(args, words, capsys, tmp_path, monkeypatch)
     assert not list(tmp_path.iterdir())
 
 
+def test_the_cli_search_at_its_documented_maximum(capsys):
+    """MAX_CANDIDATES driving cranks times swivels are built; one more set is refused, saying what to change."""
+    from burmester.cli import inverted
+
+    spec = taskfile.load(HOOD)
+    swivels = inverted.MAX_CANDIDATES // 24 ** 2  # the default pivot grid: 24 x 24 crank pivots, all in the box
+    kept, built = inverted.candidates(spec, samples=swivels)
+    assert built <= inverted.MAX_CANDIDATES and len(kept) > 0
+    assert main(["inverted", str(HOOD), "--samples", str(swivels + 1)]) == 2
+    assert "more than the 250000 candidates" in capsys.readouterr().err
+
+
 def test_the_cli_on_five_poses_says_there_is_none(capsys):
     five = Path(__file__).resolve().parents[2] / "examples" / "five.toml"
     assert main(["inverted", str(five)]) == 2

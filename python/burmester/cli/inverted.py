@@ -39,6 +39,9 @@ Point = Tuple[float, float]
 #: The inverted sliders sampled along the pole circle of three poses, and
 #: the crank pivots along each side of the grid, by default.
 DEFAULT_SAMPLES, DEFAULT_GRID = 72, 24
+#: The most candidates (driving cranks times inverted sliders) one search
+#: builds: about five seconds on one core.
+MAX_CANDIDATES = 250_000
 
 
 class Candidate(NamedTuple):
@@ -81,12 +84,17 @@ def candidates(spec: TaskSpec, *, pivot: Optional[Point] = None, swivel: Optiona
         raise UsageError(f"{spec.source}: the task has no inverted slider (a line of the body through a fixed "
                          "point at every pose): four or five poses have one only where the inverted motion's "
                          "circle-point curve or Burmester points reach infinity; try three of the poses")
+    cranks = _cranks(task, spec, pivot, grid)
+    if len(cranks) * len(sliders) > MAX_CANDIDATES:
+        raise UsageError(f"{len(cranks)} driving cranks x {len(sliders)} inverted sliders is more than the "
+                         f"{MAX_CANDIDATES} candidates one search builds; give fewer --samples or a smaller "
+                         "--pivot-grid, or fix one with --pivot or --swivel")
     space, lim = spec.space, spec.limits
     if space is not None:
         sliders = [s for s in sliders if swivel is not None or space.contains_pivot(s.swivel)]
     kept: List[Candidate] = []
     built = 0
-    for a0, a1 in _cranks(task, spec, pivot, grid):
+    for a0, a1 in cranks:
         if space is not None and pivot is None and not space.contains_pivot(a0):
             continue
         for s in sliders:

@@ -26,6 +26,7 @@ from burmester.cli.commands import (
 )
 from burmester.cli.inverted import DEFAULT_GRID as INVERTED_GRID
 from burmester.cli.inverted import DEFAULT_SAMPLES as INVERTED_SAMPLES
+from burmester.cli.inverted import MAX_CANDIDATES as INVERTED_MOST
 from burmester.cli.inverted import cmd_inverted
 
 
@@ -505,7 +506,8 @@ def _add_inverted(sub: _Commands) -> None:
                    help=f"three poses: swivels sampled along the pole circle, 1 to 10000 (default: {INVERTED_SAMPLES})")
     p.add_argument("--pivot-grid", type=_ranged(2, 200), default=INVERTED_GRID, metavar="N",
                    help=f"three poses: crank pivots on an N x N grid; four poses: about N*N/4 dyads along the "
-                   f"curve; 2 to 200 (default: {INVERTED_GRID})")
+                   f"curve; 2 to 200 (default: {INVERTED_GRID}); at most {INVERTED_MOST} candidates (cranks "
+                   "times swivels) are built")
     _top_arg(p, "inverted slider-cranks, 1 to 100", _ranged(1, 100))
     _json_arg(p)
     p.add_argument("-o", "--output", default=None,
