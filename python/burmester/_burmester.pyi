@@ -3416,6 +3416,8 @@ class InvertedSliderCrank:
         between the swing's ends; None without a swing or a full-turning
         crank."""
     def __eq__(self, other: object, /) -> bool: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
 
 @final
 class SynthesizedInvertedSliderCrank:
@@ -3497,3 +3499,5 @@ class SynthesizedInvertedSliderCrank:
         """The coupler pose ``(x, y, angle)`` at crank angle ``theta2``."""
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, ...]: ...
+    def _repr_png_(self) -> Optional[bytes]:
+        """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""

@@ -24,6 +24,8 @@ figures stay as they were) and returned as PNG bytes:
 ``SliderDyad``        :func:`burmester.plot.slider_dyad`
 ``Actuator``          :func:`burmester.actuators.draw_actuator`
 ``ActuatorMap``       :func:`burmester.actuators.draw_map`
+``InvertedSliderCrank`` :func:`burmester.plot.inverted_slider_crank` (alone)
+``SynthesizedInvertedSliderCrank`` :func:`burmester.plot.inverted_slider_crank` (at its poses)
 ===================== =============================================
 
 matplotlib is imported when a picture is asked for, not before: ``import
@@ -59,7 +61,9 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
                 ("Cubic", None), ("PivotAtlas", "atlas"), ("Design", "linkage"), ("Drive", "sixbar"),
                 ("SixBar", "sixbar"), ("DriveMap", "drive_map"), ("SliderCrank", "slider_crank"),
                 ("SynthesizedSliderCrank", "slider_crank"), ("SliderDyad", "slider_dyad"),
-                ("Actuator", "actuators.draw_actuator"), ("ActuatorMap", "actuators.draw_map"))
+                ("Actuator", "actuators.draw_actuator"), ("ActuatorMap", "actuators.draw_map"),
+                ("InvertedSliderCrank", "inverted_slider_crank"),
+                ("SynthesizedInvertedSliderCrank", "inverted_slider_crank"))
     for kind, name in pictures:
         if not isinstance(obj, getattr(burmester, kind)):
             continue

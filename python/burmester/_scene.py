@@ -31,6 +31,7 @@ from burmester.taskfile import (
 
 if TYPE_CHECKING:
     from burmester._burmester import Actuator, Method, Mode, SliderCrank, SliderDyad, SynthesizedSliderCrank
+    from burmester._burmester import InvertedSliderCrank, SynthesizedInvertedSliderCrank
 
     Array = npt.NDArray[np.float64]
 
@@ -377,14 +378,16 @@ def slider_scene(sc: "SliderCrank", theta2: float, mode: "Mode") -> SliderScene:
     return SliderScene(pivot, a, b, guide, block)
 
 
-def slider_crank_pose_angles(s: "SynthesizedSliderCrank", frames: int) -> List[float]:
+def slider_crank_pose_angles(s: "SynthesizedSliderCrank | SynthesizedInvertedSliderCrank", frames: int,
+                             what: str = "slider-crank") -> List[float]:
     """About ``frames`` crank angles from pose 1 through the poses in order
     to the last, the poses' own angles among them (the drive of a picture
-    or an animation); InvalidInputError for a linkage without a travel."""
+    or an animation); InvalidInputError (naming the linkage as ``what``)
+    for a linkage without a travel."""
     stops = s.travel_stops
     if stops is None:
         raise InvalidInputError(
-            "the slider-crank does not pass its poses in order in one mode (a branch, order or "
+            f"the {what} does not pass its poses in order in one mode (a branch, order or "
             "circuit defect), so it has no travel to draw; pick a feasible one (.feasible)"
         )
     angles: List[float] = []
@@ -406,42 +409,50 @@ def slider_crank_angle(sc: "SliderCrank", theta2: Optional[float]) -> float:
     return 0.0 if not arcs else arcs[0][0] + 0.5 * ((arcs[0][1] - arcs[0][0]) % (2 * math.pi))
 
 
-class SliderAtPose(NamedTuple):
-    """A synthesized slider-crank at pose k: its crank angle, its mode (None:
-    a toggle, drawn in the first pose's mode), the :class:`SliderScene`
-    there and the coupler point (the coupler plate is ``A B P``)."""
+class CrankAtPose(NamedTuple):
+    """A synthesized crank-driven linkage (a slider-crank, an inverted one)
+    at pose k: its crank angle, its mode (None: a toggle, drawn in the first
+    pose's mode), its kind's scene there (:class:`SliderScene`,
+    :class:`InvertedScene`) and the coupler point (the coupler plate is the
+    crank pin, the coupler's other joint and this point)."""
 
     theta2: float
     mode: Optional["Mode"]
-    scene: SliderScene
+    scene: Any
     p: Point
 
 
-class SynthesizedSliderScene(NamedTuple):
-    """A synthesized slider-crank at its poses: what
-    :func:`burmester.plot.slider_crank` and
-    :func:`burmester.export.slider_crank` draw. The guide (layer ``GUIDE``)
+class SynthesizedCrankScene(NamedTuple):
+    """A synthesized crank-driven linkage at its poses: what
+    :func:`burmester.plot.slider_crank` and :func:`burmester.export.slider_crank`
+    (or their inverted kin) draw. A slider-crank's guide (layer ``GUIDE``)
     is the first pose's scene's."""
 
     #: The mode of pose 1 (``"open"`` at a toggle): the coupler path's.
     mode: "Mode"
-    at_poses: List[SliderAtPose]
+    at_poses: List[CrankAtPose]
     #: The poses the linkage reaches (``POSES``), and a flag's length.
     poses: List[Tuple[float, float, float]]
     flag: float
 
 
-def synthesized_slider_scene(s: "SynthesizedSliderCrank") -> SynthesizedSliderScene:
-    """The :class:`SynthesizedSliderScene` of ``s``."""
-    sc = s.linkage
+def _synthesized_crank_scene(s: Any, scene_at: Any, size: float) -> SynthesizedCrankScene:
+    """The :class:`SynthesizedCrankScene` of ``s``, its kind's scene at an
+    angle ``scene_at(linkage, theta2, mode)`` and its size (the flags are
+    0.12 of it)."""
     first: "Mode" = s.modes[0] or "open"
-    at: List[SliderAtPose] = []
+    at: List[CrankAtPose] = []
     poses: List[Tuple[float, float, float]] = []
     for t, m in zip(s.input_angles, s.modes):
         x, y, a = s.pose_at(t, m or first)
-        at.append(SliderAtPose(t, m, slider_scene(sc, t, m or first), (x, y)))
+        at.append(CrankAtPose(t, m, scene_at(s.linkage, t, m or first), (x, y)))
         poses.append((x, y, a))
-    return SynthesizedSliderScene(first, at, poses, 0.12 * (sc.crank + sc.coupler))
+    return SynthesizedCrankScene(first, at, poses, 0.12 * size)
+
+
+def synthesized_slider_scene(s: "SynthesizedSliderCrank") -> SynthesizedCrankScene:
+    """The :class:`SynthesizedCrankScene` of a slider-crank (its scenes :class:`SliderScene`)."""
+    return _synthesized_crank_scene(s, slider_scene, s.linkage.crank + s.linkage.coupler)
 
 
 def slider_dyad_guide(dyad: "SliderDyad", task: Optional[Task] = None) -> Segment:
@@ -464,6 +475,90 @@ def slider_dyad_guide(dyad: "SliderDyad", task: Optional[Task] = None) -> Segmen
         lo, hi, span = -half, half, 0.0
     lo, hi = lo - 0.15 * span, hi + 0.15 * span
     return ((c[0] + lo * u[0], c[1] + lo * u[1]), (c[0] + hi * u[0], c[1] + hi * u[1]))
+
+
+# ---------------------------------------------------------------------------
+# The inverted slider-crank (issue 27): a crank whose coupler's slot slides
+# through a block pivoted on the ground at the swivel.
+
+
+class InvertedScene(NamedTuple):
+    """An inverted slider-crank at one crank angle (the core's
+    :meth:`burmester.InvertedSliderCrank.joints` and ``solve``): the crank
+    pivot ``A0``, the crank pin ``A``, the swivel ``S`` and the slot's foot
+    ``F`` (the foot of the perpendicular from ``A`` to the slot's line), the
+    slot's unit direction; the slot drawn from beyond the foot to beyond the
+    swivel's farthest slot position in the mode (layer ``SLOT``), and the
+    block on the swivel, along the slot (layer ``BLOCK``)."""
+
+    pivot: Point
+    crank_joint: Point
+    swivel: Point
+    foot: Point
+    #: The slot's unit direction (the coupler angle ``theta3``), its two
+    #: ends (on the line through ``F`` and ``S``) and the block's four
+    #: corners (centred on ``S``).
+    direction: Point
+    slot: Segment
+    block: List[Point]
+
+
+def crank_chain(s: "SliderScene | InvertedScene") -> List[Point]:
+    """The chain of joints of a crank-driven linkage's scene: ``A0 A B``
+    of a slider-crank, ``A0 A F`` of an inverted one (the coupler to the
+    slot)."""
+    return [s.pivot, s.crank_joint, s.slider_joint if isinstance(s, SliderScene) else s.foot]
+
+
+#: The slot's margin beyond the foot and the swivel's extreme positions, and
+#: the block's half length and half width, of crank plus ground.
+SLOT_MARGIN, BLOCK_HALF_LENGTH, BLOCK_HALF_WIDTH = 0.08, 0.06, 0.03
+
+
+def inverted_scene(q: "InvertedSliderCrank", theta2: float, mode: "Mode") -> InvertedScene:
+    """The inverted slider-crank ``q`` at ``theta2`` in ``mode``
+    (AssemblyError where the loop does not close there)."""
+    a0, a, s, f = q.joints(theta2, mode)
+    c = q.solve(theta2, mode)
+    ux, uy = math.cos(c.theta3), math.sin(c.theta3)
+    (lo, hi) = q.slot_limits(mode)
+    size = q.crank + q.ground
+    pad = SLOT_MARGIN * size
+    t0, t1 = min(lo[1], hi[1], 0.0) - pad, max(lo[1], hi[1], 0.0) + pad
+    slot = ((f[0] + t0 * ux, f[1] + t0 * uy), (f[0] + t1 * ux, f[1] + t1 * uy))
+    w, h = BLOCK_HALF_LENGTH * size, BLOCK_HALF_WIDTH * size
+    block = [(s[0] + su * w * ux - sn * h * uy, s[1] + su * w * uy + sn * h * ux)
+             for su, sn in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    return InvertedScene(a0, a, s, f, (ux, uy), slot, block)
+
+
+def inverted_crank_angle(q: "InvertedSliderCrank", theta2: Optional[float]) -> float:
+    """The crank angle an inverted slider-crank alone is drawn at:
+    ``theta2`` when given, else the crank pointing away from the swivel
+    (inside its range always: the pin is then farthest from the swivel)."""
+    if theta2 is not None:
+        return float(theta2)
+    return math.atan2(q.pivot[1] - q.swivel[1], q.pivot[0] - q.swivel[0])
+
+
+def inverted_range_angles(q: "InvertedSliderCrank", frames: int) -> List[float]:
+    """About ``frames`` crank angles over the crank's whole range: one turn
+    from the angle :func:`inverted_crank_angle` draws at when the crank
+    turns fully (the last frame one step short of the first), else from one
+    dead position to the other (:attr:`burmester.InvertedSliderCrank.input_range`)."""
+    arcs = q.input_range
+    if not arcs:
+        t = inverted_crank_angle(q, None)
+        return [float(v) for v in t + np.linspace(0.0, 2.0 * math.pi, frames + 1)[:-1]]
+    lo, hi = arcs[0]
+    span = (hi - lo) % (2.0 * math.pi)
+    return [float(v) for v in lo + np.linspace(0.0, span, frames)]
+
+
+def synthesized_inverted_scene(s: "SynthesizedInvertedSliderCrank") -> SynthesizedCrankScene:
+    """The :class:`SynthesizedCrankScene` of an inverted slider-crank (its
+    scenes :class:`InvertedScene`)."""
+    return _synthesized_crank_scene(s, inverted_scene, s.linkage.crank + s.linkage.ground)
 
 
 # ---------------------------------------------------------------------------

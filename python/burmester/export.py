@@ -18,6 +18,12 @@ plane, to DXF (with ezdxf) and to SVG (with the standard library).
   best pivots), or its circle-point plane (Filemon's lines and branch-free
   double wedge, the image poles and their circle, ``C1`` and ``C'k``).
 
+The slider-crank (:func:`slider_crank`), the linkage driven by a linear
+actuator (:func:`actuator`) and the inverted slider-crank
+(:func:`inverted_slider_crank`: the slot through the block on its swivel)
+have their own functions and layers (their docstrings, and the README's
+table).
+
 Every file is written whole to a temporary file beside its target and moved
 into place when complete (:mod:`burmester._io`): a write error, a full disk
 or Ctrl-C leaves no partial file and an existing one as it was.
@@ -1410,16 +1416,25 @@ LAYERS.update({
 })
 
 
+def _crank_coupler(d: _Drawing, layer: str, s: Any, joint: Sequence[float], name: str, p: Optional[Point],
+                   what: str) -> None:
+    """Crank ``A0 A``, the coupler from ``A`` to its other joint ``joint``
+    (called ``name``; with a coupler point ``p``: the plate ``A joint P``)
+    and the moving pivot ``A``, on ``layer``, of the position ``s`` of a
+    crank-driven linkage."""
+    d.polyline(layer, [s.pivot, s.crank_joint], f"crank A0 A, {what}")
+    if p is None:
+        d.polyline(layer, [s.crank_joint, joint], f"coupler A {name}, {what}")
+    else:
+        d.polyline(layer, [s.crank_joint, joint, p], f"coupler A {name} P, {what}", closed=True)
+    d.marker(layer, s.crank_joint, f"moving pivot A, {what}")
+
+
 def _slider_links(d: _Drawing, layer: str, s: _scene.SliderScene, p: Optional[Point], what: str) -> None:
     """Crank ``A0 A``, the coupler ``A B`` (with a coupler point ``p``: the
     plate ``A B P``), the joints ``A`` and ``B`` (layer ``layer``) and the
     slider block (``SLIDER``) of a slider-crank position (the core's joints)."""
-    d.polyline(layer, [s.pivot, s.crank_joint], f"crank A0 A, {what}")
-    if p is None:
-        d.polyline(layer, [s.crank_joint, s.slider_joint], f"coupler A B, {what}")
-    else:
-        d.polyline(layer, [s.crank_joint, s.slider_joint, p], f"coupler A B P, {what}", closed=True)
-    d.marker(layer, s.crank_joint, f"moving pivot A, {what}")
+    _crank_coupler(d, layer, s, s.slider_joint, "B", p, what)
     d.marker(layer, s.slider_joint, f"slider pin B, {what}")
     d.polyline("SLIDER", s.block, f"slider block, {what}", closed=True)
 
@@ -1444,57 +1459,96 @@ def _ordinates(d: _Drawing, name: str, point: Sequence[float]) -> None:
     d.dimensions.append(_Dimension("y", at, at, 0.0, f"fixed pivot {name}: y from the origin"))
 
 
-def _slider_drawing(obj: Union[burmester.SliderCrank, burmester.SynthesizedSliderCrank], theta2: Optional[float],
-                    mode: Mode, travel_samples: int, path_samples: int, labels: bool, dimensions: bool) -> _Drawing:
+def _crank_samples(travel_samples: int, path_samples: int) -> Tuple[int, int]:
+    """``(travel_samples, path_samples)`` of a crank-driven linkage's
+    drawing, checked: 0 or 2 to :data:`MAX_SAMPLES`, and 8 to it."""
     travel_samples = _samples("travel_samples", travel_samples, 0)
     if travel_samples == 1:
         raise burmester.InvalidInputError("travel_samples must be 0 (none) or at least 2, got 1")
-    path_samples = _samples("path_samples", path_samples, 8)
-    if isinstance(obj, burmester.SynthesizedSliderCrank):
-        sc = obj.linkage
-        scene = _scene.synthesized_slider_scene(obj)
-        first = scene.at_poses[0]
-        if travel_samples and obj.travel is None:
-            raise burmester.AssemblyError(
-                "the slider-crank cannot be driven from pose 1 through the poses in order in one mode "
-                "(a branch, order or circuit defect), so it has no travel to sample: draw it without "
-                "travel samples (travel_samples=0)"
-            )
-        at: List[Tuple[str, _scene.SliderScene, Optional[Point], str]] = [
-            (f"LINKAGE_{k}", x.scene, x.p, f"pose {k} ({x.mode or 'toggle'})")
-            for k, x in enumerate(scene.at_poses, start=1)]
-        guide_scene, pose1_p = first.scene, first.p
-        title = f"slider-crank at {len(at)} poses: crank {sc.crank:g}, coupler {sc.coupler:g}, A0 {sc.pivot}"
-    else:
-        sc = obj
-        t = _scene.slider_crank_angle(sc, theta2)
-        guide_scene = _scene.slider_scene(sc, t, mode)
-        at = [("LINKAGE_1", guide_scene, None, f"crank angle {math.degrees(t):.2f} deg ({mode})")]
-        pose1_p = None
-        title = f"slider-crank: crank {sc.crank:g}, coupler {sc.coupler:g}, offset {sc.offset:g}, A0 {sc.pivot}"
+    return travel_samples, _samples("path_samples", path_samples, 8)
+
+
+def _crank_parts(obj: Any, synthesized: bool, at_poses: Callable[[Any], Any], at_angle: Callable[[Any, float, Mode], Any],
+                 angle: Callable[[Any, Optional[float]], float], theta2: Optional[float], mode: Mode, what: str,
+                 travel_samples: int) -> Tuple[Any, Any, Any, Optional[Point], List[Tuple[str, Any, Optional[Point], str]]]:
+    """``(linkage, scene at the poses or None, scene at pose 1, coupler
+    point at pose 1 or None, at)`` of a crank-driven linkage ``obj`` (the
+    kind's scene functions: ``at_poses(obj)``, ``at_angle(linkage, t,
+    mode)``, ``angle(linkage, theta2)``); ``at`` holds ``(layer, scene,
+    coupler point, what)`` of each position drawn. AssemblyError for
+    ``travel_samples`` of a synthesized one without a travel (``what``
+    names the kind)."""
+    if not synthesized:
+        t = angle(obj, theta2)
+        pose1 = at_angle(obj, t, mode)
+        return obj, None, pose1, None, [("LINKAGE_1", pose1, None, f"crank angle {math.degrees(t):.2f} deg ({mode})")]
+    if travel_samples and obj.travel is None:
+        raise burmester.AssemblyError(
+            f"the {what} cannot be driven from pose 1 through the poses in order in one mode (a branch, "
+            "order or circuit defect), so it has no travel to sample: draw it without travel samples "
+            "(travel_samples=0)"
+        )
+    scene = at_poses(obj)
+    at = [(f"LINKAGE_{k}", x.scene, x.p, f"pose {k} ({x.mode or 'toggle'})")
+          for k, x in enumerate(scene.at_poses, start=1)]
+    return obj.linkage, scene, scene.at_poses[0].scene, scene.at_poses[0].p, at
+
+
+def _crank_paths(d: _Drawing, obj: Any, mode: Mode, path_samples: int, travel_samples: int,
+                 chain: Callable[[float], Sequence[Point]]) -> None:
+    """A synthesized crank-driven linkage's coupler path over the travel,
+    pose k to k + 1 (``COUPLER_PATH``, ``path_samples`` a crank turn), and
+    ``chain(theta2)`` at ``travel_samples`` crank angles over it (``TRAVEL``)."""
+    stops = obj.travel_stops
+    if stops is None:
+        return
+    for k, (a, b) in enumerate(zip(stops[:-1], stops[1:]), start=1):
+        count = max(2, math.ceil(path_samples * abs(b - a) / (2.0 * math.pi)))
+        x, y, ok = obj.linkage.coupler_path(obj.coupler_point, np.linspace(a, b, count + 1), mode)
+        for run in _runs(x, y, ok):
+            d.polyline("COUPLER_PATH", run, f"coupler path, pose {k} to pose {k + 1}")
+    for i, t in enumerate(obj.travel_angles(travel_samples).tolist() if travel_samples else [], start=1):
+        d.polyline("TRAVEL", chain(t), f"crank and coupler, travel sample {i} of {travel_samples}")
+
+
+def _crank_body(title: str, obj: Any, scene: Any, pose1: Any, at: Sequence[Tuple[str, Any, Optional[Point], str]],
+                links: Callable[[_Drawing, str, Any, Optional[Point], str], None], at_angle: Callable[[Any, float, Mode], Any],
+                mode: Mode, samples: Tuple[int, int], labels: bool, dimensions: bool) -> _Drawing:
+    """The drawing of a crank-driven linkage, what its kind shares with the
+    other's: the crank pivot ``A0``, for a synthesized one (``scene``, its
+    scene at the poses, not None) the coupler path and the travel
+    (:func:`_crank_paths`; ``samples``: travel and path samples), the
+    linkage at each entry of ``at`` (``links``), the poses and, with
+    ``dimensions``, the crank at pose 1 (``pose1``); the kind adds the rest."""
     d = _Drawing(title)
-    d.polyline("GUIDE", guide_scene.guide, "guide")
-    d.marker("PIVOTS", sc.pivot, "crank pivot A0", "A0" if labels else None)
-    if isinstance(obj, burmester.SynthesizedSliderCrank):
-        stops = obj.travel_stops
-        if stops is not None:
-            for k, (a, b) in enumerate(zip(stops[:-1], stops[1:]), start=1):
-                count = max(2, math.ceil(path_samples * abs(b - a) / (2.0 * math.pi)))
-                x, y, ok = sc.coupler_path(obj.coupler_point, np.linspace(a, b, count + 1), scene.mode)
-                for run in _runs(x, y, ok):
-                    d.polyline("COUPLER_PATH", run, f"coupler path, pose {k} to pose {k + 1}")
-            if travel_samples:
-                for i, t in enumerate(obj.travel_angles(travel_samples).tolist(), start=1):
-                    what = f"travel sample {i} of {travel_samples}"
-                    s = _scene.slider_scene(sc, t, scene.mode)
-                    d.polyline("TRAVEL", [s.pivot, s.crank_joint, s.slider_joint], f"crank and coupler, {what}")
+    d.marker("PIVOTS", pose1.pivot, "crank pivot A0", "A0" if labels else None)
+    if scene is not None:
+        _crank_paths(d, obj, scene.mode, samples[1], samples[0],
+                     lambda t: _scene.crank_chain(at_angle(obj.linkage, t, scene.mode)))
     for layer, s, p, what in at:
-        _slider_links(d, layer, s, p, what)
-    if isinstance(obj, burmester.SynthesizedSliderCrank):
+        links(d, layer, s, p, what)
+    if scene is not None:
         _poses(d, scene.poses, scene.flag, labels)
     if dimensions:
+        _aligned(d, "crank A0 A, pose 1", pose1.pivot, pose1.crank_joint, 2.5)
+    return d
+
+
+def _slider_drawing(obj: Union[burmester.SliderCrank, burmester.SynthesizedSliderCrank], theta2: Optional[float],
+                    mode: Mode, travel_samples: int, path_samples: int, labels: bool, dimensions: bool) -> _Drawing:
+    travel_samples, path_samples = _crank_samples(travel_samples, path_samples)
+    sc, scene, guide_scene, pose1_p, at = _crank_parts(
+        obj, isinstance(obj, burmester.SynthesizedSliderCrank), _scene.synthesized_slider_scene, _scene.slider_scene,
+        _scene.slider_crank_angle, theta2, mode, "slider-crank", travel_samples)
+    if scene is not None:
+        title = f"slider-crank at {len(at)} poses: crank {sc.crank:g}, coupler {sc.coupler:g}, A0 {sc.pivot}"
+    else:
+        title = f"slider-crank: crank {sc.crank:g}, coupler {sc.coupler:g}, offset {sc.offset:g}, A0 {sc.pivot}"
+    d = _crank_body(title, obj, scene, guide_scene, at, _slider_links, _scene.slider_scene, mode,
+                    (travel_samples, path_samples), labels, dimensions)
+    d.polyline("GUIDE", guide_scene.guide, "guide")
+    if dimensions:
         s = guide_scene
-        _aligned(d, "crank A0 A, pose 1", s.pivot, s.crank_joint, 2.5)
         _aligned(d, "coupler A B, pose 1", s.crank_joint, s.slider_joint, 2.5)
         if pose1_p is not None:
             _aligned(d, "coupler A P, pose 1", s.crank_joint, pose1_p, -2.5)
@@ -1505,7 +1559,8 @@ def _slider_drawing(obj: Union[burmester.SliderCrank, burmester.SynthesizedSlide
 
 
 def slider_crank(
-    obj: Union[burmester.SliderCrank, burmester.SynthesizedSliderCrank],
+    obj: Union[burmester.SliderCrank, burmester.SynthesizedSliderCrank, burmester.InvertedSliderCrank,
+               burmester.SynthesizedInvertedSliderCrank],
     path: PathLike,
     theta2: Optional[float] = None,
     mode: Mode = "open",
@@ -1539,7 +1594,8 @@ def slider_crank(
         obj: a :class:`burmester.SynthesizedSliderCrank` (drawn at its
             poses; ``theta2`` and ``mode`` unused) or a
             :class:`burmester.SliderCrank` (drawn at ``theta2``, default as
-            :func:`burmester.plot.slider_crank`, in ``mode``).
+            :func:`burmester.plot.slider_crank`, in ``mode``); an inverted
+            one is drawn as :func:`inverted_slider_crank` says.
         path: the file, ending in ``.dxf`` or ``.svg`` (replaced if it exists).
         travel_samples: a synthesized one: also draw crank and coupler at
             this many crank angles over the travel (0: none; else 2 to
@@ -1560,10 +1616,12 @@ def slider_crank(
             ``travel_samples`` for a linkage without a travel.
         ImportError: ezdxf (for ``.dxf``) is not installed.
     """
-    if not isinstance(obj, (burmester.SliderCrank, burmester.SynthesizedSliderCrank)):
-        raise TypeError(f"expected a burmester.SliderCrank or SynthesizedSliderCrank, got {type(obj).__name__}")
-    return _export(path, units, lambda: _slider_drawing(obj, theta2, mode, travel_samples, path_samples,
-                                                        labels, dimensions))
+    drawing = _CRANK_DRAWINGS.get(type(obj))
+    if drawing is None:
+        raise TypeError("expected a burmester.SliderCrank or SynthesizedSliderCrank (or an inverted one), got "
+                        f"{type(obj).__name__}")
+    return _export(path, units, lambda: drawing(obj, theta2, mode, travel_samples, path_samples, labels,
+                                                dimensions))
 
 
 def _actuator_drawing(a: burmester.Actuator, width: Optional[float], travel_samples: int, path_samples: int,
@@ -1648,3 +1706,155 @@ __all__ += ["actuator", "actuator_dxf", "actuator_svg", "slider_crank", "slider_
 
 slider_crank_dxf, slider_crank_svg = _only(".dxf", slider_crank), _only(".svg", slider_crank)
 actuator_dxf, actuator_svg = _only(".dxf", actuator), _only(".svg", actuator)
+
+
+# ---------------------------------------------------------------------------
+# The inverted slider-crank (issue 27): a crank whose coupler's slot slides
+# through a block pivoted on the ground at the swivel.
+
+LAYERS.update({
+    "SLOT": Layer(8, "#4d4d4d", "the slotted coupler's slot (the body line the block slides on), at each pose"),
+    "SWIVEL_BLOCK": Layer(9, "#969696", "the block turning on the swivel S, along the slot, at each pose"),
+})
+
+
+def _inverted_links(d: _Drawing, layer: str, s: _scene.InvertedScene, p: Optional[Point], what: str) -> None:
+    """Crank ``A0 A``, the coupler from the pin to the slot ``A F`` (with a
+    coupler point ``p``: the plate ``A F P``), the joint ``A`` (layer
+    ``layer``), the slot (``SLOT``) and the block on the swivel
+    (``SWIVEL_BLOCK``) of an inverted slider-crank position (the core's
+    joints)."""
+    _crank_coupler(d, layer, s, s.foot, "F", p, what)
+    d.polyline("SLOT", s.slot, f"slot through the swivel, {what}")
+    d.polyline("SWIVEL_BLOCK", s.block, f"block on the swivel, {what}", closed=True)
+
+
+def _slot_along(q: burmester.InvertedSliderCrank, ts: Array, mode: Mode) -> Array:
+    """The slot position ``<S - A, u3>`` at the crank angles ``ts`` (the
+    core's coupler path of the pin ``(0, 0)`` and of ``(1, 0)``, one along
+    the slot); NaN where the loop does not close."""
+    ax, ay, _ = q.coupler_path((0.0, 0.0), ts, mode)
+    bx, by, _ = q.coupler_path((1.0, 0.0), ts, mode)
+    sx, sy = q.swivel
+    return (sx - ax) * (bx - ax) + (sy - ay) * (by - ay)
+
+
+def _inverted_drawing(obj: Union[burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank],
+                      theta2: Optional[float], mode: Mode, travel_samples: int, path_samples: int, labels: bool,
+                      dimensions: bool) -> _Drawing:
+    travel_samples, path_samples = _crank_samples(travel_samples, path_samples)
+    synthesized = isinstance(obj, burmester.SynthesizedInvertedSliderCrank)
+    stroke: Optional[Tuple[float, float]] = None  # the block's run along the slot at pose 1: from, length
+    q, scene, pose1, pose1_p, at = _crank_parts(
+        obj, synthesized, _scene.synthesized_inverted_scene, _scene.inverted_scene, _scene.inverted_crank_angle,
+        theta2, mode, "inverted slider-crank", travel_samples)
+    title = (f"inverted slider-crank{f' at {len(at)} poses' if synthesized else ''}: crank {q.crank:g}, ground "
+             f"{q.ground:g}, offset {q.offset:g}, A0 {q.pivot}, S {q.swivel}")
+    if not isinstance(obj, burmester.SynthesizedInvertedSliderCrank):
+        (lo, hi) = q.slot_limits(mode)
+        stroke = (lo[1], hi[1] - lo[1])
+    elif obj.stroke_used is not None and obj.travel is not None:
+        # Where the block's run starts: the lowest slot position over the travel, sampled.
+        count = max(2, math.ceil(path_samples * abs(obj.travel[1]) / (2.0 * math.pi)) + 1)
+        slots = _slot_along(q, obj.travel_angles(count), scene.mode)
+        stroke = (float(np.nanmin(slots)), obj.stroke_used)
+    d = _crank_body(title, obj, scene, pose1, at, _inverted_links, _scene.inverted_scene, mode,
+                    (travel_samples, path_samples), labels, dimensions)
+    d.marker("PIVOTS", q.swivel, "swivel S (the block's ground pivot)", "S" if labels else None)
+    if dimensions:
+        s = pose1
+        _aligned(d, "ground A0 S", q.pivot, q.swivel, -2.5)
+        _aligned(d, "offset: the crank pin A to the slot, pose 1", s.crank_joint, s.foot, 2.5)
+        if pose1_p is not None:
+            _aligned(d, "coupler A P, pose 1", s.crank_joint, pose1_p, -2.5)
+        if stroke is not None:
+            (t0, along), (ux, uy) = stroke, s.direction
+            start = (s.foot[0] + t0 * ux, s.foot[1] + t0 * uy)
+            what = "used over the travel" if synthesized else "over the crank's range"
+            _aligned(d, f"stroke: the block's run along the slot {what}, at pose 1", start,
+                     (start[0] + along * ux, start[1] + along * uy), -4.0)
+        _ordinates(d, "A0", q.pivot)
+        _ordinates(d, "S", q.swivel)
+    return d
+
+
+def _for_kinds(kinds: Tuple[type, ...], export: Callable[_P, Path], name: str, doc: str) -> Callable[_P, Path]:
+    """``export`` for the objects of ``kinds`` only (another is a
+    TypeError), named ``name`` and documented by ``doc``: the same
+    arguments."""
+
+    @functools.wraps(export)
+    def only(*args: _P.args, **kwargs: _P.kwargs) -> Path:
+        obj = args[0] if args else kwargs.get("obj")
+        if not isinstance(obj, kinds):
+            raise TypeError(f"expected a burmester.{' or '.join(k.__name__ for k in kinds)}, got "
+                            f"{type(obj).__name__}")
+        return export(*args, **kwargs)
+
+    only.__name__ = only.__qualname__ = name
+    only.__doc__ = doc
+    return only
+
+
+#: The drawing of each kind of crank-driven slider linkage (:func:`slider_crank`).
+_CRANK_DRAWINGS: Dict[type, Callable[..., _Drawing]] = {
+    burmester.SliderCrank: _slider_drawing, burmester.SynthesizedSliderCrank: _slider_drawing,
+    burmester.InvertedSliderCrank: _inverted_drawing, burmester.SynthesizedInvertedSliderCrank: _inverted_drawing,
+}
+
+inverted_slider_crank = _for_kinds((burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank),
+                                   slider_crank, "inverted_slider_crank", """Write an inverted slider-crank to a DXF or SVG file, by the path's
+    suffix (what :func:`burmester.plot.inverted_slider_crank` draws),
+    written beside it and moved into place when complete.
+
+    Layers: ``PIVOTS`` (the crank pivot ``A0`` and the swivel ``S``),
+    ``LINKAGE_k`` (the crank ``A0 A``, the coupler from the pin ``A`` to the
+    slot's foot ``F``, or the plate ``A F P`` to the task's coupler point,
+    and the joint ``A`` at pose k; a :class:`burmester.InvertedSliderCrank`
+    alone: ``LINKAGE_1`` at ``theta2``), ``SLOT`` (the slot: the body line
+    through ``F`` and ``S``, from beyond the foot to beyond the swivel's
+    farthest slot position, each pose: :func:`burmester._scene.inverted_scene`),
+    ``SWIVEL_BLOCK`` (the block centred on ``S``, along the slot, each
+    pose), ``POSES``, ``COUPLER_PATH`` (the coupler point over the travel,
+    pose k to k + 1), ``TRAVEL`` (with ``travel_samples``: the chain ``A0
+    A F``), ``DIMENSIONS`` (at pose 1: the crank, the ground ``A0 S``, the
+    slot's offset ``A F``, the coupler's ``A P``, and the stroke: the
+    block's run along the slot, :attr:`~burmester.SynthesizedInvertedSliderCrank.stroke_used`
+    over the travel, from the lowest slot position sampled over it, or for a
+    linkage alone :attr:`~burmester.InvertedSliderCrank.stroke` between its
+    :meth:`~burmester.InvertedSliderCrank.slot_limits`; ``A0``'s and
+    ``S``'s ordinates) and ``TEXT``. Every point is the core's
+    (:meth:`burmester.InvertedSliderCrank.joints`, ``solve``,
+    ``coupler_path``, :meth:`burmester.SynthesizedInvertedSliderCrank.pose_at`).
+
+    Parameters:
+        obj: a :class:`burmester.SynthesizedInvertedSliderCrank` (drawn at
+            its poses; ``theta2`` and ``mode`` unused) or a
+            :class:`burmester.InvertedSliderCrank` (drawn at ``theta2``,
+            default the crank pointing away from the swivel, in ``mode``).
+        path: the file, ending in ``.dxf`` or ``.svg`` (replaced if it exists).
+        travel_samples: a synthesized one: also draw crank and coupler at
+            this many crank angles over the travel (0: none; else 2 to
+            :data:`MAX_SAMPLES`).
+        path_samples: samples of the coupler path (and of the slot position
+            that places the stroke's dimension) per crank turn (8 to
+            :data:`MAX_SAMPLES`).
+        labels: write ``A0``, ``S`` and the pose numbers.
+        dimensions: dimension the links, the offset, the stroke and the pivots.
+        units: the unit recorded (the module's *Units*).
+
+    Returns:
+        The path written.
+
+    Raises:
+        burmester.InvalidInputError: another suffix, a folder that does not
+            exist, unknown units, a sample count out of range or an unknown mode.
+        burmester.AssemblyError: the loop does not close at ``theta2``, or
+            ``travel_samples`` for a linkage without a travel.
+        ImportError: ezdxf (for ``.dxf``) is not installed.
+""")
+
+__all__ += ["inverted_slider_crank", "inverted_slider_crank_dxf", "inverted_slider_crank_svg"]
+
+inverted_slider_crank_dxf = _only(".dxf", inverted_slider_crank)
+inverted_slider_crank_svg = _only(".svg", inverted_slider_crank)

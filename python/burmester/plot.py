@@ -27,8 +27,10 @@ of the Burmester curves and points of four and five poses.
 - :func:`slider_crank`, :func:`animate_slider_crank`: a slider-crank (the
   guide as a line, the slider as a block on it), alone or synthesized for a
   task at its poses, and driven through them.
-- :func:`inverted_slider_crank`: an inverted slider-crank (the slotted
-  coupler and the block on its swivel), alone or synthesized for a task.
+- :func:`inverted_slider_crank`, :func:`animate_inverted_slider_crank`: an
+  inverted slider-crank (the slotted coupler and the block on its swivel),
+  alone or synthesized for a task, and driven over its range or through the
+  poses.
 
 Needs matplotlib (``pip install "burmester[plot]"``). Every drawing function
 takes an optional ``ax`` to draw into and returns the Axes, so you can keep
@@ -2151,8 +2153,8 @@ def animate_slider_crank(
     sc = s.linkage
     fig, ax = plt.subplots(figsize=(6.0, 5.0))
     slider_crank(s, labels=False, legend=False, units=units, ax=ax)
-    for art in list(ax.get_children()):
-        if str(art.get_gid()).startswith(("linkage-", "coupler-")):
+    for art in list(ax.get_children()):  # the linkage at the poses (not the coupler curve): it moves now
+        if str(art.get_gid()).startswith(("linkage-", "coupler-")) and art.get_gid() != "coupler-curve":
             art.remove()
     scenes = [_scene.slider_scene(sc, t, mode) for t in sequence]
     polys = [(np.array([x.pivot, x.crank_joint, x.slider_joint]), np.array(x.block)) for x in scenes]
@@ -2180,37 +2182,25 @@ def animate_slider_crank(
 
 
 def _draw_inverted_at(ax: Axes, q: burmester.InvertedSliderCrank, theta2: float, mode: Mode, color: str,
-                      gid: str, alpha: float = 1.0, zorder: int = 4) -> Tuple[Line2D, Polygon]:
+                      gid: str, alpha: float = 1.0, zorder: int = 4) -> Tuple[Line2D, Line2D, Polygon]:
     """The crank ``A0 A``, the slotted coupler (from the pin ``A`` to the
-    slot's foot ``F`` and along the slot over the block's travel in
-    ``mode``, gid ``gid``) and the block on the swivel (``gid + "-block"``)
-    at ``theta2``."""
-    a0, a, s, f = q.joints(theta2, mode)
-    c = q.solve(theta2, mode)
-    u = np.array([math.cos(c.theta3), math.sin(c.theta3)])
-    (lo, hi) = q.slot_limits(mode)
-    reach = max(abs(lo[1]), abs(hi[1]))
-    pad = 0.08 * (q.crank + q.ground)
-    t0, t1 = min(lo[1], hi[1], 0.0) - pad, max(lo[1], hi[1], 0.0) + pad
-    if reach == 0.0:
-        t0, t1 = -pad, pad
-    p0, p1 = np.array(f) + t0 * u, np.array(f) + t1 * u
-    chain = np.array([a0, a, f], dtype=float)
+    slot's foot ``F``, gid ``gid``, and along the slot over the block's
+    travel in ``mode``, ``gid + "-slot"``) and the block on the swivel
+    (``gid + "-block"``) at ``theta2`` (:func:`burmester._scene.inverted_scene`)."""
+    sc = _scene.inverted_scene(q, theta2, mode)
+    chain = np.array(_scene.crank_chain(sc), dtype=float)
     (ln,) = ax.plot(chain[:, 0], chain[:, 1], color=color, linewidth=2.2, marker="o", markersize=5,
                     alpha=alpha, zorder=zorder)
     ln.set_gid(gid)
+    (p0, p1) = sc.slot
     (slot,) = ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color=color, linewidth=4.0, alpha=0.55 * alpha,
                       solid_capstyle="round", zorder=zorder)
     slot.set_gid(gid + "-slot")
-    w, h = 0.06 * (q.crank + q.ground), 0.03 * (q.crank + q.ground)
-    n = np.array([-u[1], u[0]])
-    sc = np.array(s)
-    corners = [sc + dx * w * u + dy * h * n for dx, dy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-    block = Polygon(np.array(corners), closed=True, facecolor="#bdbdbd", edgecolor=color, alpha=alpha,
+    block = Polygon(np.array(sc.block), closed=True, facecolor="#bdbdbd", edgecolor=color, alpha=alpha,
                     zorder=zorder - 1)
     block.set_gid(gid + "-block")
     ax.add_patch(block)
-    return ln, block
+    return ln, slot, block
 
 
 def inverted_slider_crank(
@@ -2252,8 +2242,7 @@ def inverted_slider_crank(
                          f"{format_length(q.ground, units)}, offset {format_length(q.offset, units)}{stroke}"
                          f"{swing}\nmodes {modes}, direction {obj.direction}", fontsize=10)
     else:
-        away = math.atan2(q.pivot[1] - q.swivel[1], q.pivot[0] - q.swivel[0])
-        t = away if theta2 is None else float(theta2)
+        t = _scene.inverted_crank_angle(q, theta2)
         arcs = q.input_range
         for k, (lo, hi) in enumerate(arcs or [(0.0, 2 * math.pi)]):
             span = (hi - lo) % (2 * math.pi) or 2 * math.pi
@@ -2410,4 +2399,122 @@ def animate_actuator(
         _save_animation(anim, path, fps, dpi)
     finally:
         plt.close(fig)
+    return anim
+
+
+def animate_inverted_slider_crank(
+    obj: Union[burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank],
+    path: Union[str, Path],
+    mode: Mode = "open",
+    *,
+    frames: int = 60, fps: int = 20, dpi: int = 80,
+    units: Optional[str] = None,
+) -> FuncAnimation:
+    """Write an animation of an inverted slider-crank driven by its crank
+    (``.gif`` or ``.mp4``): the moving crank and slotted coupler (gid
+    ``"moving-linkage"``, its plate to the task's coupler point
+    ``"moving-coupler"``), its slot (``"moving-linkage-slot"``) and the
+    block turning on the swivel (``"moving-linkage-block"``), over the
+    fixed pivots (as :func:`inverted_slider_crank` draws them; every
+    position is the core's, :func:`burmester._scene.inverted_scene`).
+
+    A :class:`burmester.SynthesizedInvertedSliderCrank` is driven from pose
+    1 through the poses in order and back (the poses, the coupler curve
+    beneath; ``mode`` unused: the poses' own); an
+    :class:`burmester.InvertedSliderCrank` alone in ``mode`` over its
+    crank's range: one turn when the crank turns fully, else from one dead
+    position to the other and back (:func:`burmester._scene.inverted_range_angles`).
+    The file is written beside ``path`` and moved into place when complete
+    (Ctrl-C leaves none, and an existing file as it was).
+
+    Parameters:
+        obj: the linkage.
+        path: ``.gif`` (Pillow) or ``.mp4`` (ffmpeg).
+        mode: the assembly mode of a linkage alone.
+        frames: about how many frames from the first pose to the last (a
+            linkage alone: over its range), 2 to :data:`MAX_FRAMES`.
+        fps: frames per second (1 to :data:`MAX_FPS`).
+        dpi: resolution (1 to :data:`MAX_DPI`).
+        units: the unit of the lengths: on the axes and in the title.
+
+    Returns:
+        The matplotlib animation (already saved).
+
+    Raises:
+        burmester.InvalidInputError: a synthesized one without a travel
+            through the poses in order in one mode (``.feasible`` is False),
+            another file type, a folder that does not exist, a count out of
+            range or an unknown mode.
+        RuntimeError: ``.mp4`` without ffmpeg.
+    """
+    if not isinstance(obj, (burmester.InvertedSliderCrank, burmester.SynthesizedInvertedSliderCrank)):
+        raise TypeError(f"expected a burmester.InvertedSliderCrank or SynthesizedInvertedSliderCrank, "
+                        f"got {type(obj).__name__}")
+    path, frames, fps, dpi = _animation_target(path, frames, fps, dpi)
+    _check_ffmpeg(path)
+    if mode not in ("open", "crossed"):
+        raise burmester.InvalidInputError(f"mode must be 'open' or 'crossed', got {mode!r}")
+    if isinstance(obj, burmester.SynthesizedInvertedSliderCrank):
+        if not obj.feasible:
+            raise burmester.InvalidInputError(
+                f"the inverted slider-crank meets its poses in modes {obj.modes} and direction "
+                f"{obj.direction!r}: it cannot be driven through them in order in one mode; pick a feasible "
+                "one (.feasible)"
+            )
+        angles = _scene.slider_crank_pose_angles(obj, frames, "inverted slider-crank")
+        sequence = angles + angles[-2:0:-1]
+        mode = obj.modes[0] or "open"
+        q = obj.linkage
+        what = "driven through the poses"
+    else:
+        q = obj
+        angles = _scene.inverted_range_angles(q, frames)
+        sequence = angles if q.turns_fully else angles + angles[-2:0:-1]
+        what = "over a crank turn" if q.turns_fully else "between its dead positions"
+    scenes = [_scene.inverted_scene(q, t, mode) for t in sequence]
+    fig, ax = plt.subplots(figsize=(6.0, 5.0))
+    try:
+        inverted_slider_crank(obj, sequence[0], mode, labels=False, legend=False,
+                              units=units, ax=ax)
+        for art in list(ax.get_children()):  # the linkage at the poses: it moves now
+            if str(art.get_gid()).startswith(("linkage", "coupler-")) and art.get_gid() != "coupler-curve":
+                art.remove()
+        # The coupler plate A F P of a synthesized one (P the task's coupler point), else the pin and foot.
+        points = [obj.pose_at(t, mode)[:2] for t in sequence] if isinstance(obj, burmester.SynthesizedInvertedSliderCrank) \
+            else [None] * len(sequence)
+        plates = [np.array([x.crank_joint, x.foot, *([p] if p is not None else [])]) for x, p in zip(scenes, points)]
+        polys = [(np.array(_scene.crank_chain(x)), np.array(x.slot), np.array(x.block), plate)
+                 for x, plate in zip(scenes, plates)]
+        _fit_frames(ax, [*polys, *((np.array(ax_line.get_xydata()),) for ax_line in ax.get_lines()
+                                   if ax_line.get_gid() == "coupler-curve")])
+        label_axes(ax, units)
+        ax.set_title(f"Inverted slider-crank {what} ({mode})\ncrank {format_length(q.crank, units)}, "
+                     f"ground {format_length(q.ground, units)}, offset {format_length(q.offset, units)}",
+                     fontsize=10)
+        # The moving chain, slot, block and plate: drawn at the first frame, moved by each.
+        chain_art, slot_art, block_art = _draw_inverted_at(ax, q, sequence[0], mode, "#333333", "moving-linkage",
+                                                           zorder=8)
+        plate_art = Polygon(plates[0], closed=True, facecolor="#ff7f0e", edgecolor="#b35806", alpha=0.5, zorder=7,
+                            gid="moving-coupler")
+        ax.add_patch(plate_art)
+        anim = _play(fig, path, [chain_art, slot_art, block_art, plate_art], polys, fps, dpi)
+    finally:
+        plt.close(fig)
+    return anim
+
+
+def _play(fig: Figure, path: Path, arts: Sequence[Union[Line2D, Polygon]],
+          frames: Sequence[Sequence[npt.NDArray[np.float64]]], fps: int, dpi: int) -> FuncAnimation:
+    """Move each of ``arts`` to its array of each frame (a line's points,
+    a polygon's corners) and write the animation (:func:`_save_animation`)."""
+    def update(i: int) -> List[Artist]:
+        for art, xy in zip(arts, frames[i]):
+            if isinstance(art, Polygon):
+                art.set_xy(xy)
+            else:
+                art.set_data(xy[:, 0], xy[:, 1])
+        return list(arts)
+
+    anim = FuncAnimation(fig, update, frames=len(frames), interval=1000.0 / fps, blit=False)
+    _save_animation(anim, path, fps, dpi)
     return anim

@@ -1,7 +1,8 @@
 //! Pictures in Jupyter: the `_repr_png_` of `Task`, `Filemon`, `FourBar`,
 //! `SynthesizedFourBar`, `SolutionMap`, `PairMap` and `Cubic` (and, by
 //! `repr_png_for!`, `SliderCrank`, `SynthesizedSliderCrank`, `SliderDyad`,
-//! `Actuator` and `ActuatorMap`).
+//! `Actuator`, `ActuatorMap`, `InvertedSliderCrank` and
+//! `SynthesizedInvertedSliderCrank`).
 //!
 //! The binding draws nothing itself: each method hands the object to the
 //! pure-Python `burmester._display.repr_png`, which imports matplotlib only
@@ -41,4 +42,6 @@ repr_png_for!(
     crate::slider_dyads::PySliderDyad,
     crate::actuator::PyActuator,
     crate::actuator::PyActuatorMap,
+    crate::inverted::PyInvertedSliderCrank,
+    crate::inverted::PySynthesizedInvertedSliderCrank,
 );

@@ -13,6 +13,7 @@ Commands::
     burmester batch A.toml B.toml --top 5     # each task's best pivots, one JSON line per file
     burmester solve --ground 100 --crank 40 --coupler 120 --rocker 80 --theta2 40
     burmester drive [TASK.toml] -o six.gif    # a motor for the best linkage (an added dyad: a six-bar)
+    burmester inverted [TASK.toml] -o q.gif   # inverted slider-cranks (a slotted coupler on a ground swivel)
     burmester example > task.toml             # a task file to start from
 
 Without a task file, the commands use the built-in example. Without any

@@ -24,6 +24,10 @@ from burmester.cli.commands import (
     cmd_pivots,
     cmd_solve,
 )
+from burmester.cli.inverted import DEFAULT_GRID as INVERTED_GRID
+from burmester.cli.inverted import DEFAULT_SAMPLES as INVERTED_SAMPLES
+from burmester.cli.inverted import MAX_CANDIDATES as INVERTED_MOST
+from burmester.cli.inverted import cmd_inverted
 
 
 class _Parser(argparse.ArgumentParser):
@@ -188,7 +192,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"burmester {burmester.__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for add in (_add_map, _add_design, _add_pivots, _add_pairs, _add_linkage, _add_atlas, _add_batch, _add_solve,
-                _add_example, _add_drive, _add_actuator):
+                _add_example, _add_drive, _add_actuator, _add_inverted):
         add(sub)
     return parser
 
@@ -472,3 +476,43 @@ def _add_actuator(sub: _Commands) -> None:
     p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
     _force_arg(p)
     p.set_defaults(func=cmd_actuator)
+
+
+def _add_inverted(sub: _Commands) -> None:
+    p = sub.add_parser("inverted", help="inverted slider-cranks for the poses (a crank, a slotted coupler, a "
+                       "block on a ground swivel)",
+                       description=f"""
+        Find the task's inverted slider-cranks: a crank whose coupler carries a straight slot that slides
+        through a block pivoted on the ground at the swivel S (a slotted lever, an oscillating cylinder).
+        Every driving crank of the task (three poses: crank pivots A0 on a grid over the [space] search
+        box, else the [view]; four poses: the center-point curve; five: the Burmester points) is combined
+        with every inverted slider (three poses: swivels sampled on the pole circle; four and five: the
+        task's few), each built exactly; those the crank drives through the poses in order in one mode,
+        with both pivots in the [space] and within the [limits] (transmission angle, crank over ground
+        as the link ratio, size), are ranked by sin(mu min) / sqrt(size ratio) and printed. -o draws the
+        best at its poses (.png, .pdf, ...), animates it through them (.gif, .mp4) or exports it to CAD
+        (.dxf, .svg: the slot, the block on the swivel, the links, dimensioned). No task-file table:
+        --pivot and --swivel fix either fixed pivot. The [space]'s obstacles and envelope are not
+        checked over the travel (only where the pivots go): look at the picture, where the coupler
+        point's path over the travel is drawn.
+    """)
+    _task_arg(p)
+    p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
+                   help="the driving crank's fixed pivot A0 (default: searched)")
+    p.add_argument("--swivel", nargs=2, type=_finite, metavar=("X", "Y"),
+                   help="the block's ground pivot S, a point of the task's inverted sliders (three poses: on the "
+                   "pole circle; default: searched)")
+    p.add_argument("--samples", type=_ranged(1, 10_000), default=INVERTED_SAMPLES,
+                   help=f"three poses: swivels sampled along the pole circle, 1 to 10000 (default: {INVERTED_SAMPLES})")
+    p.add_argument("--pivot-grid", type=_ranged(2, 200), default=INVERTED_GRID, metavar="N",
+                   help=f"three poses: crank pivots on an N x N grid; four poses: about N*N/4 dyads along the "
+                   f"curve; 2 to 200 (default: {INVERTED_GRID}); at most {INVERTED_MOST} candidates (cranks "
+                   "times swivels) are built")
+    _top_arg(p, "inverted slider-cranks, 1 to 100", _ranged(1, 100))
+    _json_arg(p)
+    p.add_argument("-o", "--output", default=None,
+                   help="also draw the best: a picture (.png, .pdf, ...), an animation through the poses (.gif, "
+                   ".mp4) or a CAD export (.dxf, .svg)")
+    _drawing_args(p, ", 2 to 10000")
+    _force_arg(p)
+    p.set_defaults(func=cmd_inverted)
