@@ -1044,3 +1044,183 @@ fn slider_map_is_invariant_under_moves_rotations_and_scaling() {
     eprintln!("invariance: {compared} samples equal, {flips} within rounding of a curve");
     assert!(compared > 4000, "{compared}");
 }
+
+/// The exact slider-crank of every valid sample of a slider map, built
+/// from the task (`Task::slider_crank`), with the sample: the second
+/// method the ranking is checked against.
+fn exact_cells(
+    task: &Task,
+    slider: &SliderDyad,
+    map: &burmester::SolutionMap,
+) -> Vec<(usize, burmester::SynthesizedSliderCrank)> {
+    (0..map.context.grid.len())
+        .filter_map(|k| {
+            let d = task.dyad_from_center(map.context.point(k)).ok()?;
+            Some((k, task.slider_crank(&d, slider).ok()?))
+        })
+        .collect()
+}
+
+/// Whether the exact slider-crank `sc` meets the default limits (written
+/// here from their definitions: feasible, a transmission angle of 30
+/// degrees, a link ratio of 10, 1% from the change points), with the map's
+/// branch flag of its sample.
+fn acceptable_by_default(sc: &burmester::SynthesizedSliderCrank, branch_free: bool) -> bool {
+    branch_free
+        && sc.one_circuit
+        && sc.direction != burmester::Direction::None
+        && sc.linkage.link_ratio() <= 10.0
+        && sc.linkage.rotatability_margin() >= 0.01
+        && sc.min_transmission >= 30f64.to_radians()
+}
+
+#[test]
+fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
+    use burmester::RankBy;
+    let (task, slider) = press();
+    let f = Filemon::new(&task, slider).unwrap();
+    let grid = Grid::from_bounds(-150.0, 150.0, -150.0, 150.0, 41, 41).unwrap();
+    let map = slider_map(&f, &grid);
+    let cells = exact_cells(&task, &slider, &map);
+    let span = task.span();
+    let mut acceptable = 0;
+    for (k, sc) in &cells {
+        let want = acceptable_by_default(sc, map.columns.branch_free[*k]);
+        // The columns are f32: skip a sample whose transmission is within
+        // their rounding of the limit.
+        if (sc.min_transmission - 30f64.to_radians()).abs() > 1e-6 {
+            assert_eq!(map.columns.acceptable[*k], want, "sample {k}");
+        }
+        acceptable += usize::from(map.columns.acceptable[*k]);
+    }
+    assert!(acceptable > 50, "{acceptable} acceptable samples");
+    for rank_by in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
+        let best = map.best_slider_pivots(5, None, rank_by).unwrap();
+        assert!(!best.is_empty(), "{rank_by:?}");
+        let b = &best[0];
+        // Its linkage is the exact slider-crank of its center.
+        let d = task.dyad_from_center(b.center).unwrap();
+        let exact = task.slider_crank(&d, &slider).unwrap();
+        assert_eq!(b.linkage, exact);
+        assert_eq!(b.center, map.context.point(b.index.0 * 41 + b.index.1));
+        assert!((b.size_ratio - exact.size() / span).abs() <= 1e-12 * b.size_ratio);
+        // It reaches the poses, branch-free and in order: the library's
+        // verdict, the pose at each crank angle, and the independent solver.
+        assert!(exact.feasible(), "{rank_by:?}");
+        for (k, p) in task.poses().iter().enumerate() {
+            let at = exact
+                .pose_at(exact.input_angles[k], exact.modes[k].unwrap())
+                .unwrap();
+            assert!(
+                (at.position - p.position).norm() < 1e-9 * span,
+                "{rank_by:?} pose {k}"
+            );
+        }
+        assert_eq!(
+            drive(task.poses(), d.center, d.circle, &slider),
+            Driven::Free
+        );
+        let dense = dense_figures(task.poses(), d.center, d.circle, &slider);
+        assert!(
+            (dense.min_mu - exact.min_transmission).abs() < 1e-5,
+            "{} vs {}",
+            dense.min_mu,
+            exact.min_transmission
+        );
+        // Its score is the best of every acceptable cell rescored from the
+        // exact linkage, within the columns' f32 rounding.
+        let brute = cells
+            .iter()
+            .filter(|(k, _)| map.columns.acceptable[*k])
+            .filter_map(|(_, sc)| {
+                rank_by.score(
+                    sc.min_transmission,
+                    sc.size() / span,
+                    sc.linkage.link_ratio(),
+                )
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        let exact_score = rank_by
+            .score(
+                exact.min_transmission,
+                exact.size() / span,
+                exact.linkage.link_ratio(),
+            )
+            .unwrap();
+        let tol = 4.0 * f64::from(f32::EPSILON) * brute.abs().max(1.0);
+        assert!(
+            (exact_score - brute).abs() <= tol && (b.score - brute).abs() <= tol,
+            "{rank_by:?}: best {} (exact {exact_score}) vs brute force {brute}",
+            b.score
+        );
+        eprintln!(
+            "{rank_by:?}: best A0 ({:.1}, {:.1}) crank {:.1} coupler {:.1} offset {:.1} mu {:.1} deg size ratio {:.2} score {:.4} (brute force {brute:.4})",
+            b.center.x,
+            b.center.y,
+            exact.linkage.crank(),
+            exact.linkage.coupler(),
+            exact.linkage.offset(),
+            exact.min_transmission.to_degrees(),
+            b.size_ratio,
+            b.score
+        );
+        // Best first, and apart by the default separation.
+        for w in best.windows(2) {
+            assert!(w[0].score >= w[1].score - 1e-9, "{rank_by:?}");
+        }
+    }
+    // The margin ranking: branch-free samples by their margin to the conic.
+    let by_margin = map.best_slider_pivots(3, None, RankBy::Margin).unwrap();
+    assert!(by_margin[0].margin > 0.0 && by_margin[0].linkage.is_branch_free());
+    assert_eq!(
+        by_margin[0].margin,
+        map.margin(by_margin[0].index.0 * 41 + by_margin[0].index.1)
+    );
+    // The Pareto front: acceptable, sizes rising with the transmission, and
+    // no acceptable cell (rescored exactly) better in both beyond the f32
+    // rounding.
+    let front = map.slider_pareto_front().unwrap();
+    assert!(front.len() >= 2, "{}", front.len());
+    for w in front.windows(2) {
+        assert!(w[0].size_ratio <= w[1].size_ratio);
+        assert!(w[0].linkage.min_transmission < w[1].linkage.min_transmission);
+    }
+    let eps = 1e-6;
+    for p in &front {
+        assert!(p.linkage.feasible());
+        let (mu, s) = (p.linkage.min_transmission, p.size_ratio);
+        for (k, sc) in &cells {
+            if map.columns.acceptable[*k] {
+                let (m2, s2) = (sc.min_transmission, sc.size() / span);
+                assert!(
+                    !(m2 > mu * (1.0 + eps) && s2 < s * (1.0 - eps)),
+                    "front member ({mu}, {s}) dominated by sample {k} ({m2}, {s2})"
+                );
+            }
+        }
+    }
+    // Every pivot asked for (the documented maximum: usize::MAX), apart by
+    // nothing: every acceptable sample once.
+    let all = map
+        .best_slider_pivots(usize::MAX, Some(0.0), RankBy::Balanced)
+        .unwrap();
+    assert_eq!(all.len(), acceptable);
+    // The four-bar's ranking refuses a slider map, naming what to use, and
+    // the slider's a crank's map.
+    let e = map.best_pivots(3, None, RankBy::Balanced).unwrap_err();
+    assert_eq!(cause_of(&e), "driven_kind");
+    assert!(e.to_string().contains("best_slider_pivots"), "{e}");
+    let revolute = task.filemon(Point2::new(300.0, -200.0)).unwrap();
+    let rmap = slider_map(&revolute, &grid);
+    let e = rmap
+        .best_slider_pivots(3, None, RankBy::Balanced)
+        .unwrap_err();
+    assert_eq!(cause_of(&e), "driven_kind");
+    assert!(e.to_string().contains("best_pivots"), "{e}");
+    // A cancelled ranking stops with Cancelled.
+    let stop = std::sync::atomic::AtomicBool::new(true);
+    let e = map
+        .best_slider_pivots_with(3, None, RankBy::Pareto, &Control::new().with_cancel(&stop))
+        .unwrap_err();
+    assert!(matches!(e, Error::Cancelled { .. }), "{e:?}");
+}

@@ -11,8 +11,8 @@ use crate::design::{Columns, MapContext, SolutionMap, Varying};
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result, in_range, out_of_memory, try_push, try_vec};
 use crate::geom::Grid;
-use crate::synthesis::SynthesizedFourBar;
 use crate::synthesis::three::Filemon;
+use crate::synthesis::{SynthesizedFourBar, SynthesizedSliderCrank};
 use crate::tolerance;
 
 /// What a ranking of pivots orders by.
@@ -116,19 +116,22 @@ impl FromStr for RankBy {
     }
 }
 
-/// A candidate pivot of a solution map with its linkage.
+/// A candidate pivot of a solution map with its linkage: a
+/// [`SynthesizedFourBar`] (the default), or for a map whose driven dyad is
+/// a slider a [`SynthesizedSliderCrank`] ([`SliderPivot`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pivot {
+pub struct Pivot<L = SynthesizedFourBar> {
     /// The candidate center point.
     pub center: Point2<f64>,
     /// Its sample `(j, i)`: row `j` (for `y_j`), column `i` (for `x_i`).
     pub index: (usize, usize),
     /// The complete linkage, with its figures.
-    pub linkage: SynthesizedFourBar,
+    pub linkage: L,
     /// Its signed margin (see [`MapContext::margin`]).
     pub margin: f64,
     /// The linkage's size relative to the task's
-    /// ([`SynthesizedFourBar::size`] over [`Task::span`](crate::Task::span)).
+    /// ([`SynthesizedFourBar::size`] or [`SynthesizedSliderCrank::size`]
+    /// over [`Task::span`](crate::Task::span)).
     pub size_ratio: f64,
     /// Its score by the ranking (see [`RankBy::score`]; the margin for
     /// [`RankBy::Margin`], the minimum transmission angle for
@@ -137,6 +140,11 @@ pub struct Pivot {
     /// What ranked it.
     pub ranked_by: RankBy,
 }
+
+/// A candidate driving pivot of a solution map whose driven dyad is a
+/// slider, with its slider-crank
+/// ([`MapContext::best_slider_pivots`]).
+pub type SliderPivot = Pivot<SynthesizedSliderCrank>;
 
 /// The columns a ranking reads (they may live outside the core, for
 /// example in NumPy arrays).
@@ -235,6 +243,55 @@ impl SolutionMap {
     pub fn pareto_front(&self) -> Result<Vec<Pivot>> {
         self.best_pivots(usize::MAX, Some(0.0), RankBy::Pareto)
     }
+
+    /// The `k` best candidates of a map with a driven slider, best first,
+    /// each with its slider-crank (see
+    /// [`MapContext::best_slider_pivots`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`MapContext::best_slider_pivots`].
+    pub fn best_slider_pivots(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+    ) -> Result<Vec<SliderPivot>> {
+        self.context
+            .best_slider_pivots(k, min_separation, rank_by, self.rank_columns())
+    }
+
+    /// [`best_slider_pivots`](Self::best_slider_pivots) following
+    /// `control`.
+    ///
+    /// # Errors
+    ///
+    /// As [`MapContext::best_slider_pivots_with`].
+    pub fn best_slider_pivots_with(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+        control: &Control<'_>,
+    ) -> Result<Vec<SliderPivot>> {
+        self.context.best_slider_pivots_with(
+            k,
+            min_separation,
+            rank_by,
+            self.rank_columns(),
+            control,
+        )
+    }
+
+    /// The whole Pareto front of a map with a driven slider (as
+    /// [`pareto_front`](Self::pareto_front)), each with its slider-crank.
+    ///
+    /// # Errors
+    ///
+    /// As [`MapContext::best_slider_pivots`].
+    pub fn slider_pareto_front(&self) -> Result<Vec<SliderPivot>> {
+        self.best_slider_pivots(usize::MAX, Some(0.0), RankBy::Pareto)
+    }
 }
 
 impl MapContext {
@@ -304,12 +361,102 @@ impl MapContext {
     ) -> Result<Vec<Pivot>> {
         if let Varying::DrivingSlider { .. } = self.varying {
             return Err(InvalidInput::DrivenKind {
-                what: "best_pivots (a Pivot carries a four-bar)",
+                what: "best_pivots (its Pivot carries a four-bar; rank a map with a driven \
+                       slider by best_slider_pivots)",
                 found: "slider",
             }
             .into());
         }
         best_with(self, k, min_separation, rank_by, columns, control)
+    }
+
+    /// The `k` best candidate driving pivots of a map whose driven dyad is
+    /// a slider, best first, each with its slider-crank
+    /// ([`MapContext::slider_crank`]): the ranking of
+    /// [`best_pivots`](Self::best_pivots) on the slider-crank's columns
+    /// (module `map_slider`: the transmission angle between the coupler
+    /// and the guide's normal over the travel, the size ratio of
+    /// [`SynthesizedSliderCrank::size`], the link ratio of crank and
+    /// coupler). Every [`RankBy`] reads columns a slider-crank has; the
+    /// margin is the distance to the slider's transformed Filemon conic.
+    ///
+    /// # Errors
+    ///
+    /// As [`best_pivots`](Self::best_pivots), and
+    /// [`InvalidInput::DrivenKind`] for a map whose driven dyad is a crank
+    /// (rank it by [`best_pivots`](Self::best_pivots)).
+    pub fn best_slider_pivots(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+        columns: RankColumns<'_>,
+    ) -> Result<Vec<SliderPivot>> {
+        self.best_slider_pivots_with(k, min_separation, rank_by, columns, &Control::new())
+    }
+
+    /// [`best_slider_pivots`](Self::best_slider_pivots) following
+    /// `control` (as [`best_pivots_with`](Self::best_pivots_with)).
+    ///
+    /// # Errors
+    ///
+    /// As [`best_slider_pivots`](Self::best_slider_pivots);
+    /// [`Error::Cancelled`](crate::Error::Cancelled).
+    pub fn best_slider_pivots_with(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+        columns: RankColumns<'_>,
+        control: &Control<'_>,
+    ) -> Result<Vec<SliderPivot>> {
+        if !matches!(self.varying, Varying::DrivingSlider { .. }) {
+            return Err(InvalidInput::DrivenKind {
+                what: "best_slider_pivots (a map with a driven crank: rank it by best_pivots)",
+                found: "revolute",
+            }
+            .into());
+        }
+        best_with(
+            &SliderRanked(self),
+            k,
+            min_separation,
+            rank_by,
+            columns,
+            control,
+        )
+    }
+}
+
+/// A map with a driven slider, ranked: its items are [`SliderPivot`]s.
+struct SliderRanked<'a>(&'a MapContext);
+
+impl RankedContext for SliderRanked<'_> {
+    type Item = SliderPivot;
+    const WHAT: &'static str = "the best slider pivots";
+
+    fn grid(&self) -> &Grid {
+        &self.0.grid
+    }
+
+    fn filemon(&self) -> Option<Option<Filemon>> {
+        self.0.filemon()
+    }
+
+    fn item(&self, o: &Offer<'_>) -> Option<SliderPivot> {
+        let ctx = self.0;
+        let linkage = ctx.slider_crank(o.s).ok()?;
+        let (index, margin, size_ratio) =
+            o.placed_size(ctx.grid.nx(), linkage.size(), ctx.task.span());
+        Some(Pivot {
+            center: ctx.point(o.s),
+            index,
+            linkage,
+            margin,
+            size_ratio,
+            score: o.score,
+            ranked_by: o.rank_by,
+        })
     }
 }
 
@@ -350,7 +497,12 @@ impl Offer<'_> {
     /// The sample's `(row, column)` on a grid of `nx` columns, its margin
     /// and the size ratio of its linkage `l` on a task of span `span`.
     pub(crate) fn placed(&self, nx: usize, l: &SynthesizedFourBar, span: f64) -> Placed {
-        ((self.s / nx, self.s % nx), (self.margin)(), l.size() / span)
+        self.placed_size(nx, l.size(), span)
+    }
+
+    /// As [`placed`](Self::placed) for a linkage of size `size`.
+    pub(crate) fn placed_size(&self, nx: usize, size: f64, span: f64) -> Placed {
+        ((self.s / nx, self.s % nx), (self.margin)(), size / span)
     }
 }
 
