@@ -505,11 +505,14 @@ fn slider_errors_are_typed() {
         ]],
         ..burmester::Constraints::none()
     };
+    // Obstacles are checked over the slider-crank's travel (once refused).
+    assert!(
+        f.solution_map(&grid, &Default::default(), &obstacles, &Control::new())
+            .is_ok()
+    );
     for e in [
         f.four_bar(sc.a0).unwrap_err(),
         map.context.linkage(0).unwrap_err(),
-        f.solution_map(&grid, &Default::default(), &obstacles, &Control::new())
-            .unwrap_err(),
     ] {
         assert_eq!(cause_of(&e), "driven_kind");
         assert!(e.to_string().contains("slider"), "{e}");
@@ -1223,4 +1226,174 @@ fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
         .best_slider_pivots_with(3, None, RankBy::Pareto, &Control::new().with_cancel(&stop))
         .unwrap_err();
     assert!(matches!(e, Error::Cancelled { .. }), "{e:?}");
+}
+
+/// The smallest gap over the travel between the moving parts of the
+/// slider-crank of `(a0, a1)` and the slider, driven densely by this
+/// file's solver: from the obstacles (crank `A0 A` and coupler `A B`) and
+/// from the envelope's edges (crank, coupler and the coupler triangle
+/// with the task's point), parry distances between segments and polygons
+/// (minus nothing: compare with the links' half width). `None` without a
+/// travel (no crank rotation meets the poses in order with the loop
+/// closed).
+fn dense_gaps(
+    poses: &[Pose],
+    a0: Point2<f64>,
+    a1: Point2<f64>,
+    slider: &SliderDyad,
+    obstacles: &[Vec<Point2<f64>>],
+    envelope: &[Point2<f64>],
+) -> Option<(f64, f64)> {
+    use parry2d_f64::math::{Pose as PPose, Vector as V};
+    use parry2d_f64::query::distance;
+    use parry2d_f64::shape::{ConvexPolygon, Segment};
+    let (b1, sc) = (slider.circle, built(a0, a1, slider));
+    let p1 = poses[0].position;
+    let phis: Vec<f64> = (0..poses.len())
+        .map(|k| {
+            let a = displace(poses, k, a1);
+            (a.y - a0.y).atan2(a.x - a0.x)
+        })
+        .collect();
+    let (p, _, _) = sc.parts(phis[0]);
+    let mode = (sc.u.dot(&(b1 - sc.g)) - p).signum();
+    let steps = 1000;
+    let travel = [1.0, -1.0].into_iter().find_map(|dir: f64| {
+        let dist: Vec<f64> = phis
+            .iter()
+            .map(|p| ((p - phis[0]) * dir).rem_euclid(TAU))
+            .collect();
+        let end = dist[dist.len() - 1];
+        let closed =
+            (0..=steps).all(|s| sc.parts(phis[0] + dir * end * s as f64 / steps as f64).2 > 0.0);
+        (dist.windows(2).all(|w| w[0] < w[1]) && closed).then_some(dir * end)
+    })?;
+    let v = |q: Point2<f64>| V::new(q.x, q.y);
+    let seg = |a: Point2<f64>, b: Point2<f64>| Segment::new(v(a), v(b));
+    let id = PPose::identity();
+    let hulls: Vec<ConvexPolygon> = obstacles
+        .iter()
+        .map(|o| {
+            ConvexPolygon::from_convex_hull(&o.iter().map(|q| v(*q)).collect::<Vec<_>>()).unwrap()
+        })
+        .collect();
+    let n = envelope.len();
+    let edges: Vec<Segment> = (0..n)
+        .map(|k| seg(envelope[k], envelope[(k + 1) % n]))
+        .collect();
+    let local = p1 - a1;
+    let angle1 = (b1 - a1).y.atan2((b1 - a1).x);
+    let (mut to_obstacles, mut to_envelope) = (f64::INFINITY, f64::INFINITY);
+    for s in 0..=steps {
+        let phi = phis[0] + travel * s as f64 / steps as f64;
+        let a = sc.pin(phi);
+        let b = sc.slider(phi, mode)?;
+        let t = (b - a).y.atan2((b - a).x) - angle1;
+        let pt = a + Vector2::new(
+            t.cos() * local.x - t.sin() * local.y,
+            t.sin() * local.x + t.cos() * local.y,
+        );
+        for (x, y) in [(a0, a), (a, b)] {
+            for h in &hulls {
+                to_obstacles =
+                    to_obstacles.min(distance(&id, &seg(x, y), &id, h).unwrap().distance);
+            }
+        }
+        for (x, y) in [(a0, a), (a, b), (a, pt), (b, pt)] {
+            for e in &edges {
+                to_envelope = to_envelope.min(distance(&id, &seg(x, y), &id, e).unwrap().distance);
+            }
+        }
+    }
+    Some((to_obstacles, to_envelope))
+}
+
+#[test]
+fn slider_map_obstacles_and_envelope_agree_with_driving_the_built_slider_crank() {
+    let (task, slider) = press();
+    let f = Filemon::new(&task, slider).unwrap();
+    let grid = Grid::from_bounds(-150.0, 150.0, -150.0, 150.0, 25, 25).unwrap();
+    let free = slider_map(&f, &grid);
+    let rect = |x0: f64, x1: f64, y0: f64, y1: f64| {
+        vec![
+            Point2::new(x0, y0),
+            Point2::new(x1, y0),
+            Point2::new(x1, y1),
+            Point2::new(x0, y1),
+        ]
+    };
+    // A block above the ram's path, a floor plate below the guide and a
+    // housing (mm); links 8 mm wide.
+    let obstacles = vec![
+        rect(70.0, 110.0, 40.0, 70.0),
+        rect(120.0, 220.0, -40.0, -12.0),
+    ];
+    let envelope = rect(-140.0, 260.0, -110.0, 110.0);
+    let width = 8.0;
+    let constraints = burmester::Constraints {
+        obstacles: obstacles.clone(),
+        envelope: Some(envelope.clone()),
+        link_width: width,
+        ..burmester::Constraints::none()
+    };
+    let map = f
+        .solution_map(&grid, &Default::default(), &constraints, &Control::new())
+        .unwrap();
+    let inside = |q: Point2<f64>| q.x > -140.0 && q.x < 260.0 && q.y > -110.0 && q.y < 110.0;
+    let (mut clear, mut struck, mut escapes, mut borderline) = (0, 0, 0, 0);
+    for k in 0..grid.len() {
+        if !free.columns.acceptable[k] {
+            // Constraints only take samples away.
+            assert!(!map.columns.acceptable[k], "sample {k}");
+            continue;
+        }
+        let a0 = map.context.point(k);
+        let d = task.dyad_from_center(a0).unwrap();
+        let (to_obstacles, to_envelope) =
+            dense_gaps(task.poses(), a0, d.circle, &slider, &obstacles, &envelope)
+                .expect("an acceptable sample has a travel");
+        let r = 0.5 * width;
+        // The dense samples are 1/1000 of the travel apart (a point moves
+        // at most about 1 mm between two): within 2 mm of the half width
+        // the verdict is not compared.
+        let gap = (to_obstacles - r).min(if inside(a0) { to_envelope - r } else { -1.0 });
+        if gap.abs() < 2.0 {
+            borderline += 1;
+            continue;
+        }
+        assert_eq!(
+            map.columns.acceptable[k],
+            gap > 0.0,
+            "sample {k} at {a0}: gaps {to_obstacles} (obstacles), {to_envelope} (envelope)"
+        );
+        if gap > 0.0 {
+            clear += 1;
+        } else if to_obstacles < r {
+            struck += 1;
+        } else {
+            escapes += 1;
+        }
+    }
+    eprintln!(
+        "obstacles: {clear} clear, {struck} struck, {escapes} leave the envelope, {borderline} within 2 mm"
+    );
+    assert!(
+        clear > 20 && struck > 20 && escapes > 5,
+        "{clear} {struck} {escapes}"
+    );
+    // The best pivot under the constraints is clear by the dense check.
+    let best = map
+        .best_slider_pivots(1, None, burmester::RankBy::Balanced)
+        .unwrap();
+    let d = task.dyad_from_center(best[0].center).unwrap();
+    let (o, e) = dense_gaps(
+        task.poses(),
+        d.center,
+        d.circle,
+        &slider,
+        &obstacles,
+        &envelope,
+    )
+    .unwrap();
+    assert!(o > 0.5 * width && e > 0.5 * width, "{o} {e}");
 }

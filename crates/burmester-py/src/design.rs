@@ -498,7 +498,7 @@ macro_rules! py_map_class {
 
             /// The columns a ranking reads, borrowed from the arrays, passed
             /// to `f`.
-            fn with_rank_columns<R>(
+            pub(crate) fn with_rank_columns<R>(
                 &self,
                 py: Python<'_>,
                 f: impl FnOnce(burmester::design::RankColumns<'_>) -> PyResult<R>,

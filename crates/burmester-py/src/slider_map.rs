@@ -2,12 +2,13 @@
 //! `SolutionMap.slider_crank` and `SolutionMap.fixed_kind`, and how a map's
 //! fixed dyad of either kind crosses to Python and back (its pickle).
 
-use burmester::{Dyad, MapContext, PairContext, SliderDyad, Varying};
+use burmester::{Dyad, MapContext, PairContext, RankBy, SliderDyad, SliderPivot, Varying};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
+use pyo3::types::PyList;
 
 use crate::classes::dyad_tuple;
-use crate::conv::{Count, PyPoint, pt};
+use crate::conv::{Count, PyPoint, Real, pt};
 use crate::design::PySolutionMap;
 use crate::errors::IntoPy;
 use crate::slider::PySynthesizedSliderCrank;
@@ -100,3 +101,191 @@ impl PySolutionMap {
 }
 
 crate::design::filemon_solution_map_method!(PySliderFilemon, "SliderFilemon.solution_map");
+
+#[pymethods]
+impl PySolutionMap {
+    /// The `k` best candidate crank pivots of a map with a driven slider,
+    /// as `SliderPivot`s (the core's `best_slider_pivots`).
+    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
+        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
+    fn best_slider_pivots<'py>(
+        &self,
+        py: Python<'py>,
+        k: Count,
+        min_separation: Option<Real>,
+        rank_by: &str,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let rank_by = rank_by.parse::<RankBy>().py()?;
+        self.slider_ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
+    }
+
+    /// The Pareto front of a map with a driven slider, as `SliderPivot`s.
+    fn slider_pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        self.slider_ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
+    }
+}
+
+impl PySolutionMap {
+    /// The ranking of a map with a driven slider, Ctrl-C polled on a long
+    /// one.
+    fn slider_ranked<'py>(
+        &self,
+        py: Python<'py>,
+        k: usize,
+        sep: Option<f64>,
+        rank_by: RankBy,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let ctx = &self.context;
+        let watch = crate::design::ranking_is_long(ctx.grid.len(), k);
+        let best = self.with_rank_columns(py, |cols| {
+            crate::run::run_in(py, watch, None, None, "samples", |control| {
+                ctx.best_slider_pivots_with(k, sep, rank_by, cols, control)
+            })
+        })?;
+        crate::run::list_polled(py, &best, |b| {
+            Ok(Bound::new(py, PySliderPivot::of(ctx.task, b))?.into_any())
+        })
+    }
+}
+
+/// A candidate driving pivot of a solution map with a driven slider, with
+/// its slider-crank (`SolutionMap.best_pivots` of such a map).
+#[pyclass(frozen, name = "SliderPivot", module = "burmester")]
+#[derive(Clone)]
+pub struct PySliderPivot {
+    center: Xy,
+    index: (usize, usize),
+    linkage: PySynthesizedSliderCrank,
+    margin: f64,
+    score: f64,
+    ranked_by: RankBy,
+}
+
+impl PySliderPivot {
+    fn of(task: burmester::Task, p: &SliderPivot) -> Self {
+        PySliderPivot {
+            center: pt(p.center),
+            index: p.index,
+            linkage: PySynthesizedSliderCrank::new(p.linkage, task),
+            margin: p.margin,
+            score: p.score,
+            ranked_by: p.ranked_by,
+        }
+    }
+}
+
+#[pymethods]
+impl PySliderPivot {
+    #[new]
+    fn new(
+        center: PyPoint,
+        index: (Count, Count),
+        linkage: &Bound<'_, PySynthesizedSliderCrank>,
+        margin: Real,
+        score: Real,
+        ranked_by: &str,
+    ) -> PyResult<Self> {
+        let linkage = linkage.get().clone();
+        // The pivot is its slider-crank's crank pivot.
+        let a0 = linkage.core().driving.center;
+        if center.0 != a0 {
+            return Err(crate::errors::invalid(
+                "inconsistent_state",
+                format!(
+                    "a SliderPivot at ({}, {}) with a slider-crank whose crank pivot is {:?}: \
+                     the pivot must be the crank pivot",
+                    center.0.x,
+                    center.0.y,
+                    pt(a0)
+                ),
+            ));
+        }
+        Ok(PySliderPivot {
+            center: pt(center.0),
+            index: (index.0.0, index.1.0),
+            linkage,
+            margin: margin.0,
+            score: score.0,
+            ranked_by: ranked_by.parse::<RankBy>().py()?,
+        })
+    }
+    #[allow(clippy::type_complexity)]
+    fn __getnewargs__(
+        &self,
+    ) -> (
+        Xy,
+        (usize, usize),
+        PySynthesizedSliderCrank,
+        f64,
+        f64,
+        &'static str,
+    ) {
+        (
+            self.center,
+            self.index,
+            self.linkage.clone(),
+            self.margin,
+            self.score,
+            self.ranked_by.as_str(),
+        )
+    }
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other.cast::<PySliderPivot>().is_ok_and(|o| {
+            let o = o.get();
+            o.center == self.center
+                && o.index == self.index
+                && o.linkage.core() == self.linkage.core()
+                && o.margin.to_bits() == self.margin.to_bits()
+                && o.score.to_bits() == self.score.to_bits()
+                && o.ranked_by == self.ranked_by
+        })
+    }
+    fn __repr__(&self) -> String {
+        let (x, y) = self.center;
+        let l = self.linkage.core();
+        let mu = if l.min_transmission.is_nan() {
+            "None".to_owned()
+        } else {
+            format!("{:.3}", l.min_transmission.to_degrees())
+        };
+        format!(
+            "<SliderPivot center=({x:.6}, {y:.6}) index={:?} crank={:.6} coupler={:.6} \
+             offset={:.6} min_transmission_deg={mu} size_ratio={:.3} by {}>",
+            self.index,
+            l.linkage.crank(),
+            l.linkage.coupler(),
+            l.linkage.offset(),
+            self.size_ratio(),
+            self.ranked_by.as_str()
+        )
+    }
+    /// The candidate crank pivot `A0`.
+    #[getter]
+    fn center(&self) -> Xy {
+        self.center
+    }
+    #[getter]
+    fn index(&self) -> (usize, usize) {
+        self.index
+    }
+    #[getter]
+    fn linkage(&self) -> PySynthesizedSliderCrank {
+        self.linkage.clone()
+    }
+    #[getter]
+    fn margin(&self) -> f64 {
+        self.margin
+    }
+    #[getter]
+    fn size_ratio(&self) -> f64 {
+        self.linkage.size_ratio_of()
+    }
+    #[getter]
+    fn score(&self) -> f64 {
+        self.score
+    }
+    #[getter]
+    fn ranked_by(&self) -> &'static str {
+        self.ranked_by.as_str()
+    }
+}
