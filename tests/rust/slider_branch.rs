@@ -1222,8 +1222,16 @@ fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
     assert!(e.to_string().contains("best_pivots"), "{e}");
     // A cancelled ranking stops with Cancelled.
     let stop = std::sync::atomic::AtomicBool::new(true);
+    let control = Control::new().with_cancel(&stop);
     let e = map
-        .best_slider_pivots_with(3, None, RankBy::Pareto, &Control::new().with_cancel(&stop))
+        .context
+        .best_pivots_with::<burmester::SynthesizedSliderCrank>(
+            3,
+            None,
+            RankBy::Pareto,
+            map.rank_columns(),
+            &control,
+        )
         .unwrap_err();
     assert!(matches!(e, Error::Cancelled { .. }), "{e:?}");
 }

@@ -102,23 +102,10 @@ impl PySolutionMap {
 
 crate::design::filemon_solution_map_method!(PySliderFilemon, "SliderFilemon.solution_map");
 
+crate::design::ranking_method!(PySolutionMap, best_slider_pivots, slider_ranked);
+
 #[pymethods]
 impl PySolutionMap {
-    /// The `k` best candidate crank pivots of a map with a driven slider,
-    /// as `SliderPivot`s (the core's `best_slider_pivots`).
-    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
-        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_slider_pivots<'py>(
-        &self,
-        py: Python<'py>,
-        k: Count,
-        min_separation: Option<Real>,
-        rank_by: &str,
-    ) -> PyResult<Bound<'py, PyList>> {
-        let rank_by = rank_by.parse::<RankBy>().py()?;
-        self.slider_ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
-    }
-
     /// The Pareto front of a map with a driven slider, as `SliderPivot`s.
     fn slider_pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         self.slider_ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
@@ -139,7 +126,9 @@ impl PySolutionMap {
         let watch = crate::design::ranking_is_long(ctx.grid.len(), k);
         let best = self.with_rank_columns(py, |cols| {
             crate::run::run_in(py, watch, None, None, "samples", |control| {
-                ctx.best_slider_pivots_with(k, sep, rank_by, cols, control)
+                ctx.best_pivots_with::<burmester::SynthesizedSliderCrank>(
+                    k, sep, rank_by, cols, control,
+                )
             })
         })?;
         crate::run::list_polled(py, &best, |b| {
@@ -200,45 +189,7 @@ impl PySliderPivot {
                 ),
             ));
         }
-        Ok(PySliderPivot {
-            center: pt(center.0),
-            index: (index.0.0, index.1.0),
-            linkage,
-            margin: margin.0,
-            score: score.0,
-            ranked_by: ranked_by.parse::<RankBy>().py()?,
-        })
-    }
-    #[allow(clippy::type_complexity)]
-    fn __getnewargs__(
-        &self,
-    ) -> (
-        Xy,
-        (usize, usize),
-        PySynthesizedSliderCrank,
-        f64,
-        f64,
-        &'static str,
-    ) {
-        (
-            self.center,
-            self.index,
-            self.linkage.clone(),
-            self.margin,
-            self.score,
-            self.ranked_by.as_str(),
-        )
-    }
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other.cast::<PySliderPivot>().is_ok_and(|o| {
-            let o = o.get();
-            o.center == self.center
-                && o.index == self.index
-                && o.linkage.core() == self.linkage.core()
-                && o.margin.to_bits() == self.margin.to_bits()
-                && o.score.to_bits() == self.score.to_bits()
-                && o.ranked_by == self.ranked_by
-        })
+        Self::from_parts(center, index, linkage, (margin, score), ranked_by)
     }
     fn __repr__(&self) -> String {
         let (x, y) = self.center;
@@ -259,33 +210,20 @@ impl PySliderPivot {
             self.ranked_by.as_str()
         )
     }
-    /// The candidate crank pivot `A0`.
-    #[getter]
-    fn center(&self) -> Xy {
-        self.center
-    }
-    #[getter]
-    fn index(&self) -> (usize, usize) {
-        self.index
-    }
-    #[getter]
-    fn linkage(&self) -> PySynthesizedSliderCrank {
-        self.linkage.clone()
-    }
-    #[getter]
-    fn margin(&self) -> f64 {
-        self.margin
-    }
     #[getter]
     fn size_ratio(&self) -> f64 {
         self.linkage.size_ratio_of()
     }
-    #[getter]
-    fn score(&self) -> f64 {
-        self.score
-    }
-    #[getter]
-    fn ranked_by(&self) -> &'static str {
-        self.ranked_by.as_str()
-    }
 }
+
+crate::design::ranked_getters!(
+    PySliderPivot,
+    PySynthesizedSliderCrank,
+    |l: &PySynthesizedSliderCrank| *l.core()
+);
+
+crate::design::pivot_methods!(PySliderPivot, PySynthesizedSliderCrank);
+
+crate::getters::getters!(PySliderPivot {
+    Xy: center;
+});

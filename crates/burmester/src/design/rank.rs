@@ -143,7 +143,7 @@ pub struct Pivot<L = SynthesizedFourBar> {
 
 /// A candidate driving pivot of a solution map whose driven dyad is a
 /// slider, with its slider-crank
-/// ([`MapContext::best_slider_pivots`]).
+/// ([`MapContext::best_pivots_with`]).
 pub type SliderPivot = Pivot<SynthesizedSliderCrank>;
 
 /// The columns a ranking reads (they may live outside the core, for
@@ -246,41 +246,20 @@ impl SolutionMap {
 
     /// The `k` best candidates of a map with a driven slider, best first,
     /// each with its slider-crank (see
-    /// [`MapContext::best_slider_pivots`]).
+    /// [`MapContext::best_pivots_with`]).
     ///
     /// # Errors
     ///
-    /// As [`MapContext::best_slider_pivots`].
+    /// As [`MapContext::best_pivots_with`].
     pub fn best_slider_pivots(
         &self,
         k: usize,
         min_separation: Option<f64>,
         rank_by: RankBy,
     ) -> Result<Vec<SliderPivot>> {
-        self.context
-            .best_slider_pivots(k, min_separation, rank_by, self.rank_columns())
-    }
-
-    /// [`best_slider_pivots`](Self::best_slider_pivots) following
-    /// `control`.
-    ///
-    /// # Errors
-    ///
-    /// As [`MapContext::best_slider_pivots_with`].
-    pub fn best_slider_pivots_with(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-        control: &Control<'_>,
-    ) -> Result<Vec<SliderPivot>> {
-        self.context.best_slider_pivots_with(
-            k,
-            min_separation,
-            rank_by,
-            self.rank_columns(),
-            control,
-        )
+        let columns = self.rank_columns();
+        let control = Control::new();
+        (self.context).best_pivots_with(k, min_separation, rank_by, columns, &control)
     }
 
     /// The whole Pareto front of a map with a driven slider (as
@@ -288,7 +267,7 @@ impl SolutionMap {
     ///
     /// # Errors
     ///
-    /// As [`MapContext::best_slider_pivots`].
+    /// As [`MapContext::best_pivots_with`].
     pub fn slider_pareto_front(&self) -> Result<Vec<SliderPivot>> {
         self.best_slider_pivots(usize::MAX, Some(0.0), RankBy::Pareto)
     }
@@ -345,120 +324,92 @@ impl MapContext {
 
     /// [`best_pivots`](Self::best_pivots) following `control`: the cancel
     /// flag is checked every few thousand samples and candidates; progress
-    /// is not reported.
+    /// is not reported. Its pivots carry the linkage `L` of the map's
+    /// driven kind: a [`SynthesizedFourBar`] ([`Pivot`]) for a driven
+    /// crank, a [`SynthesizedSliderCrank`] ([`SliderPivot`]) for a driven
+    /// slider, ranked the same way on the slider-crank's columns (module
+    /// `map_slider`: the transmission angle between the coupler and the
+    /// guide's normal over the travel, the size ratio of
+    /// [`SynthesizedSliderCrank::size`], the link ratio of crank and
+    /// coupler; every [`RankBy`] reads columns a slider-crank has, and the
+    /// margin is the distance to the slider's transformed Filemon conic).
     ///
     /// # Errors
     ///
     /// As [`best_pivots`](Self::best_pivots);
-    /// [`Error::Cancelled`](crate::Error::Cancelled).
-    pub fn best_pivots_with(
+    /// [`Error::Cancelled`](crate::Error::Cancelled);
+    /// [`InvalidInput::DrivenKind`] for pivots of the other kind than the
+    /// map's driven dyad (naming the ranking to use instead).
+    pub fn best_pivots_with<L: PivotLinkage>(
         &self,
         k: usize,
         min_separation: Option<f64>,
         rank_by: RankBy,
         columns: RankColumns<'_>,
         control: &Control<'_>,
-    ) -> Result<Vec<Pivot>> {
-        if let Varying::DrivingSlider { .. } = self.varying {
+    ) -> Result<Vec<Pivot<L>>> {
+        let is_slider = matches!(self.varying, Varying::DrivingSlider { .. });
+        if is_slider != L::SLIDER {
             return Err(InvalidInput::DrivenKind {
-                what: "best_pivots (its Pivot carries a four-bar; rank a map with a driven \
-                       slider by best_slider_pivots)",
-                found: "slider",
+                what: if L::SLIDER {
+                    "best_slider_pivots (a map with a driven crank: rank it by best_pivots)"
+                } else {
+                    "best_pivots (its Pivot carries a four-bar; rank a map with a driven slider \
+                     by best_slider_pivots)"
+                },
+                found: if is_slider { "slider" } else { "revolute" },
             }
             .into());
         }
-        best_with(self, k, min_separation, rank_by, columns, control)
-    }
-
-    /// The `k` best candidate driving pivots of a map whose driven dyad is
-    /// a slider, best first, each with its slider-crank
-    /// ([`MapContext::slider_crank`]): the ranking of
-    /// [`best_pivots`](Self::best_pivots) on the slider-crank's columns
-    /// (module `map_slider`: the transmission angle between the coupler
-    /// and the guide's normal over the travel, the size ratio of
-    /// [`SynthesizedSliderCrank::size`], the link ratio of crank and
-    /// coupler). Every [`RankBy`] reads columns a slider-crank has; the
-    /// margin is the distance to the slider's transformed Filemon conic.
-    ///
-    /// # Errors
-    ///
-    /// As [`best_pivots`](Self::best_pivots), and
-    /// [`InvalidInput::DrivenKind`] for a map whose driven dyad is a crank
-    /// (rank it by [`best_pivots`](Self::best_pivots)).
-    pub fn best_slider_pivots(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-        columns: RankColumns<'_>,
-    ) -> Result<Vec<SliderPivot>> {
-        self.best_slider_pivots_with(k, min_separation, rank_by, columns, &Control::new())
-    }
-
-    /// [`best_slider_pivots`](Self::best_slider_pivots) following
-    /// `control` (as [`best_pivots_with`](Self::best_pivots_with)).
-    ///
-    /// # Errors
-    ///
-    /// As [`best_slider_pivots`](Self::best_slider_pivots);
-    /// [`Error::Cancelled`](crate::Error::Cancelled).
-    pub fn best_slider_pivots_with(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-        columns: RankColumns<'_>,
-        control: &Control<'_>,
-    ) -> Result<Vec<SliderPivot>> {
-        if !matches!(self.varying, Varying::DrivingSlider { .. }) {
-            return Err(InvalidInput::DrivenKind {
-                what: "best_slider_pivots (a map with a driven crank: rank it by best_pivots)",
-                found: "revolute",
-            }
-            .into());
-        }
-        best_with(
-            &SliderRanked(self),
-            k,
-            min_separation,
-            rank_by,
-            columns,
-            control,
-        )
+        let ranked = Ranked(self, core::marker::PhantomData::<L>);
+        best_with(&ranked, k, min_separation, rank_by, columns, control)
     }
 }
 
-/// A map with a driven slider, ranked: its items are [`SliderPivot`]s.
-struct SliderRanked<'a>(&'a MapContext);
+/// The linkage a ranked [`Pivot`] of a solution map carries: a
+/// [`SynthesizedFourBar`] (a driven crank) or a [`SynthesizedSliderCrank`]
+/// (a driven slider). Sealed: implemented for those two only.
+pub trait PivotLinkage: Sized + sealed::Sealed {
+    /// Whether it is the linkage of a map with a driven slider.
+    const SLIDER: bool;
+    /// The linkage of sample `s` of the map `ctx`; `None` for an invalid
+    /// sample.
+    #[doc(hidden)]
+    fn of_sample(ctx: &MapContext, s: usize) -> Option<Self>;
+    /// Its size (over [`Task::span`](crate::Task::span): the size ratio).
+    #[doc(hidden)]
+    fn linkage_size(&self) -> f64;
+}
 
-impl RankedContext for SliderRanked<'_> {
-    type Item = SliderPivot;
-    const WHAT: &'static str = "the best slider pivots";
+mod sealed {
+    /// Seals [`PivotLinkage`](super::PivotLinkage).
+    pub trait Sealed {}
+    impl Sealed for crate::synthesis::SynthesizedFourBar {}
+    impl Sealed for crate::synthesis::SynthesizedSliderCrank {}
+}
 
-    fn grid(&self) -> &Grid {
-        &self.0.grid
+impl PivotLinkage for SynthesizedFourBar {
+    const SLIDER: bool = false;
+    fn of_sample(ctx: &MapContext, s: usize) -> Option<Self> {
+        ctx.linkage(s).ok()
     }
-
-    fn filemon(&self) -> Option<Option<Filemon>> {
-        self.0.filemon()
-    }
-
-    fn item(&self, o: &Offer<'_>) -> Option<SliderPivot> {
-        let ctx = self.0;
-        let linkage = ctx.slider_crank(o.s).ok()?;
-        let (index, margin, size_ratio) =
-            o.placed_size(ctx.grid.nx(), linkage.size(), ctx.task.span());
-        Some(Pivot {
-            center: ctx.point(o.s),
-            index,
-            linkage,
-            margin,
-            size_ratio,
-            score: o.score,
-            ranked_by: o.rank_by,
-        })
+    fn linkage_size(&self) -> f64 {
+        self.size()
     }
 }
+
+impl PivotLinkage for SynthesizedSliderCrank {
+    const SLIDER: bool = true;
+    fn of_sample(ctx: &MapContext, s: usize) -> Option<Self> {
+        ctx.slider_crank(s).ok()
+    }
+    fn linkage_size(&self) -> f64 {
+        self.size()
+    }
+}
+
+/// A map ranked into pivots carrying the linkage `L`.
+struct Ranked<'a, L>(&'a MapContext, core::marker::PhantomData<L>);
 
 /// What the rankings of a map need of its context: the pivot map's
 /// ([`MapContext`]) and the pair map's
@@ -509,36 +460,37 @@ impl Offer<'_> {
 /// What [`Offer::placed`] gives: the index, the margin, the size ratio.
 pub(crate) type Placed = ((usize, usize), f64, f64);
 
-impl RankedContext for MapContext {
-    type Item = Pivot;
+impl<L: PivotLinkage> RankedContext for Ranked<'_, L> {
+    type Item = Pivot<L>;
     const WHAT: &'static str = "the best pivots";
 
     fn grid(&self) -> &Grid {
-        &self.grid
+        &self.0.grid
     }
 
     fn filemon(&self) -> Option<Option<Filemon>> {
-        match self.varying {
+        let ctx = self.0;
+        match ctx.varying {
             Varying::Driving { .. } | Varying::DrivingSlider { .. } => {
-                Some(Filemon::new(&self.task, self.varying.fixed()).ok())
+                Some(Filemon::new(&ctx.task, ctx.varying.fixed()).ok())
             }
             Varying::Driven { .. } => None,
         }
     }
 
-    fn item(&self, o: &Offer<'_>) -> Option<Pivot> {
-        let linkage = self.linkage(o.s).ok()?;
-        let (index, margin, size_ratio) = o.placed(self.grid.nx(), &linkage, self.task.span());
-        let (score, ranked_by) = (o.score, o.rank_by);
-        let center = self.point(o.s);
+    fn item(&self, o: &Offer<'_>) -> Option<Pivot<L>> {
+        let ctx = self.0;
+        let linkage = L::of_sample(ctx, o.s)?;
+        let (index, margin, size_ratio) =
+            o.placed_size(ctx.grid.nx(), linkage.linkage_size(), ctx.task.span());
         Some(Pivot {
-            center,
+            center: ctx.point(o.s),
             index,
             linkage,
             margin,
             size_ratio,
-            score,
-            ranked_by,
+            score: o.score,
+            ranked_by: o.rank_by,
         })
     }
 }
