@@ -71,6 +71,7 @@ __all__ = [
     "InvertedConfiguration",
     "InvertedSliderCrank",
     "SynthesizedInvertedSliderCrank",
+    "SliderPivot",
 ]
 
 __version__: str

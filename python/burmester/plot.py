@@ -1559,12 +1559,14 @@ def _fit_legend(ax: Axes, new_figure: bool) -> Axes:
     it whole (an axes' legend outside it is cut off, and with the map's equal
     aspect constrained layout alone does not place it inside). A figure the
     caller gave is left as it is."""
-    leg = ax.get_legend()
-    if not new_figure or leg is None:
+    from matplotlib.figure import Figure as TopFigure
+
+    leg, fig = ax.get_legend(), ax.get_figure()
+    if not new_figure or leg is None or not isinstance(fig, TopFigure):
         return ax
-    fig = ax.figure
     fig.set_layout_engine("constrained")
-    handles, labels = leg.legend_handles, [t.get_text() for t in leg.get_texts()]
+    handles = [h for h in leg.legend_handles if h is not None]
+    labels = [t.get_text() for h, t in zip(leg.legend_handles, leg.get_texts()) if h is not None]
     leg.remove()
     fig.legend(handles, labels, loc="outside right upper", fontsize="small")
     return ax
