@@ -206,3 +206,27 @@ def test_the_cli_maps_and_ranks_a_driven_slider(press, tmp_path, capsys):
     assert "not a slider point" in capsys.readouterr().err
     assert main(["pivots", str(path)]) == 2
     assert "only 'burmester map' takes a driven slider" in capsys.readouterr().err
+
+
+def test_the_press_example_ranks_a_slider_crank_a_designer_would_build(tmp_path, capsys):
+    """examples/press.toml (mm, a motor that turns fully): the best
+    slider-crank turns fully, passes the poses on one branch in order, keeps
+    the rod well off the guide's normal, and is smaller than the 40/160 mm
+    one the poses were made from."""
+    pytest.importorskip("matplotlib")
+    from pathlib import Path
+
+    from burmester import taskfile
+    from burmester.cli import main
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "press.toml"
+    spec = taskfile.load(path)
+    c1, u = spec.driven_slider
+    smap = SliderFilemon(spec.task, c1, u).solution_map(spec.view, limits=spec.limits)
+    best = smap.best_slider_pivots(1)[0]
+    sc = best.linkage
+    assert sc.linkage.turns_fully and sc.feasible and sc.min_transmission_deg > 60.0
+    made_from = spec.task.slider_crank(((0.0, 0.0), spec.task.circle_point((0.0, 0.0))), (c1, u))
+    assert made_from.feasible and sc.size_ratio < made_from.size_ratio
+    assert main(["map", str(path), "-o", str(tmp_path / "press.png")]) == 0
+    assert f"{sc.linkage.crank:.3f}" in capsys.readouterr().out
