@@ -678,7 +678,7 @@ def _driven(r: _Reader, doc: Mapping[str, Any], task: Task, required: bool) -> O
     r.only_keys("driven", driven, ["center", "circle", "slider"])
     given = [key for key in ("center", "circle", "slider") if key in driven]
     if len(given) != 1:
-        found = " and ".join(given) if given else "neither"
+        found = ("both " if len(given) == 2 else "all of ") + " and ".join(given) if given else "neither"
         raise r.fail(
             "[driven]",
             f"expected exactly one of center = [x, y] (the fixed pivot C0), "

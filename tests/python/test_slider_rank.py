@@ -230,3 +230,23 @@ def test_the_press_example_ranks_a_slider_crank_a_designer_would_build(tmp_path,
     assert made_from.feasible and sc.size_ratio < made_from.size_ratio
     assert main(["map", str(path), "-o", str(tmp_path / "press.png")]) == 0
     assert f"{sc.linkage.crank:.3f}" in capsys.readouterr().out
+
+
+def test_task_files_name_a_slider_or_say_what_is_wrong(press):
+    from burmester import taskfile
+
+    task, b1, _, _ = press
+    poses = "\n".join(f"[[pose]]\nx = {x!r}\ny = {y!r}\nangle_deg = {math.degrees(t)!r}\n" for x, y, t in task.poses)
+    spec = taskfile.loads(f"{poses}\n[driven]\nslider = [{b1[0]!r}, {b1[1]!r}]\n", "press.toml")
+    c1, u = spec.driven_slider
+    assert c1 == pytest.approx(b1, abs=1e-9) and abs(u[0] * U[1] - u[1] * U[0]) < 1e-9
+    assert spec.driven_center is None
+    with pytest.raises(taskfile.TaskFileError, match="only 'burmester map' takes a driven slider"):
+        spec.filemon()
+    with pytest.raises(taskfile.TaskFileError, match=r"driven\.slider.*not a slider point"):
+        taskfile.loads(f"{poses}\n[driven]\nslider = [1.0, 2.0]\n", "off.toml")
+    with pytest.raises(taskfile.TaskFileError, match="both center and slider"):
+        taskfile.loads(f"{poses}\n[driven]\ncenter = [1.0, 2.0]\nslider = [1.0, 2.0]\n", "two.toml")
+    four = poses + "\n[[pose]]\nx = 1.0\ny = 2.0\nangle_deg = 3.0\n"
+    with pytest.raises(taskfile.TaskFileError, match="three poses"):
+        taskfile.loads(f"{four}\n[driven]\nslider = [1.0, 2.0]\n", "four.toml")
