@@ -56,6 +56,7 @@ from burmester._burmester import Actuator, ActuatorMap
 from burmester.actuators import design_actuator
 from burmester._burmester import InvertedSlider, SliderDyad
 from burmester._burmester import InvertedConfiguration, InvertedSliderCrank, SynthesizedInvertedSliderCrank
+from burmester._burmester import SliderPivot
 
 __all__ = [
     "AtlasPair",
@@ -109,4 +110,5 @@ __all__ = [
     "InvertedConfiguration",
     "InvertedSliderCrank",
     "SynthesizedInvertedSliderCrank",
+    "SliderPivot",
 ]

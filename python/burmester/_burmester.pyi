@@ -71,6 +71,7 @@ __all__ = [
     "InvertedConfiguration",
     "InvertedSliderCrank",
     "SynthesizedInvertedSliderCrank",
+    "SliderPivot",
 ]
 
 __version__: str
@@ -1490,7 +1491,8 @@ class SliderFilemon:
         holds ``A0``; ``obstacles`` (and an envelope) are checked over a
         four-bar's travel and raise :class:`InvalidInputError` (``cause``
         ``"driven_kind"``) here, as :meth:`SolutionMap.best_pivots` and
-        :meth:`SolutionMap.linkage` do on this map. Grid, GIL, progress and
+        :meth:`SolutionMap.linkage` do on this map (rank it by
+        :meth:`SolutionMap.best_slider_pivots`). Grid, GIL, progress and
         Ctrl-C as :meth:`Filemon.solution_map` (the grid a :class:`Grid`,
         its tuple or its six numbers)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -1826,6 +1828,49 @@ class Pivot:
     def __getnewargs__(self) -> Tuple[Point, Tuple[int, int], SynthesizedFourBar, float, float, str]: ...
 
 @final
+class SliderPivot:
+    """A candidate crank pivot of a solution map with a driven slider, with
+    its slider-crank (from :meth:`SolutionMap.best_slider_pivots`)."""
+
+    def __new__(
+        cls,
+        center: Point,
+        index: Tuple[int, int],
+        linkage: SynthesizedSliderCrank,
+        margin: float,
+        score: float,
+        ranked_by: RankBy,
+    ) -> SliderPivot: ...
+    @property
+    def center(self) -> Point:
+        """The candidate crank pivot ``A0``."""
+    @property
+    def index(self) -> Tuple[int, int]:
+        """Its sample ``(j, i)`` in the map: row ``j``, column ``i``."""
+    @property
+    def linkage(self) -> SynthesizedSliderCrank:
+        """The complete slider-crank (:meth:`Task.slider_crank` of the crank
+        of ``A0`` and the map's slider)."""
+    @property
+    def margin(self) -> float:
+        """Its signed margin to the slider's transformed Filemon conic (see
+        :meth:`SolutionMap.margin`)."""
+    @property
+    def size_ratio(self) -> float:
+        """The slider-crank's size relative to the task's
+        (:attr:`SynthesizedSliderCrank.size_ratio`)."""
+    @property
+    def score(self) -> float:
+        """Its score by the ranking that chose it (as :attr:`Pivot.score`)."""
+    @property
+    def ranked_by(self) -> RankBy:
+        """What ranked it (see :meth:`SolutionMap.best_slider_pivots`)."""
+    def __eq__(self, other: object, /) -> bool: ...
+    def __getnewargs__(
+        self,
+    ) -> Tuple[Point, Tuple[int, int], SynthesizedSliderCrank, float, float, str]: ...
+
+@final
 class SolutionMap:
     """The solution-space map (from :meth:`Filemon.solution_map`,
     :meth:`SliderFilemon.solution_map` or :meth:`Task.driven_solution_map`): one read-only NumPy array per column,
@@ -1948,13 +1993,34 @@ class SolutionMap:
         samples; the Pareto front sorts them); a large ``k`` or map releases
         the GIL and Ctrl-C raises :class:`KeyboardInterrupt`. A map with a
         driven slider raises :class:`InvalidInputError` (``cause``
-        ``"driven_kind"``: a :class:`Pivot` carries a four-bar); rank its
-        columns and build each with :meth:`slider_crank`."""
+        ``"driven_kind"``: a :class:`Pivot` carries a four-bar); rank it
+        by :meth:`best_slider_pivots`."""
     def pareto_front(self) -> list[Pivot]:
         """Every acceptable candidate on the Pareto front of the minimum
         transmission angle (larger is better) and the size ratio (smaller is
         better), from the most compact to the best transmission:
         ``best_pivots(k=all, min_separation=0, rank_by="pareto")``."""
+    def best_slider_pivots(
+        self, k: int = 5, min_separation: Optional[float] = None, rank_by: RankBy = "balanced"
+    ) -> list[SliderPivot]:
+        """The ``k`` best candidate crank pivots ``A0`` of a map with a driven
+        slider (:meth:`SliderFilemon.solution_map`), best first, as
+        :class:`SliderPivot` records each with its slider-crank: the
+        rankings of :meth:`best_pivots` (every ``rank_by``) on the
+        slider-crank's columns: ``mu`` the transmission angle between the
+        coupler and the guide's normal over the travel, the size ratio of
+        :attr:`SynthesizedSliderCrank.size` (crank, coupler, the coupler
+        triangle, the offset and the guide used), the link ratio of crank and
+        coupler; the margin is the distance to the slider's transformed
+        Filemon conic. :meth:`best_pivots` refuses such a map
+        (:class:`InvalidInputError`, ``cause`` ``"driven_kind"``: its
+        :class:`Pivot` carries a four-bar), and this method refuses a map with
+        a driven crank the same way (rank it by :meth:`best_pivots`). ``k``
+        has no upper bound (all candidates); a long ranking polls Ctrl-C."""
+    def slider_pareto_front(self) -> list[SliderPivot]:
+        """The Pareto front of a map with a driven slider (as
+        :meth:`pareto_front`), as :class:`SliderPivot` records:
+        ``best_slider_pivots(k=all, min_separation=0, rank_by="pareto")``."""
     def _repr_png_(self) -> Optional[bytes]:
         """The picture Jupyter shows (see :mod:`burmester._display`): PNG
         bytes, or None when matplotlib is not installed."""

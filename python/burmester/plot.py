@@ -1472,7 +1472,8 @@ def solution_map(
     driving pivots with a driven slider
     (:meth:`burmester.SliderFilemon.solution_map`) is drawn with the same
     overlays, the slider's guide (gid ``"guide"``) and pin ``C1``
-    (``"driven-pin"``) in place of the curves and the best pivots. A map of
+    (``"driven-pin"``) in place of the curves, and its best crank pivots
+    (:meth:`burmester.SolutionMap.best_slider_pivots`). A map of
     driven pivots (:meth:`burmester.Task.driven_solution_map`) is drawn the
     same way over the driven plane (gids ``"branch-map"``,
     ``"transmission"``, ``"pivots"``), with the fixed driving pivot
@@ -1486,19 +1487,26 @@ def solution_map(
             labels name the points).
 
     Returns:
-        The Axes.
+        The Axes. On a figure it makes, the layout is constrained so that the
+        legend (right of the axes) lies inside the figure: a default
+        ``savefig`` keeps it whole.
     """
     slider = smap.fixed_kind == "slider"
-    # A map with a driven slider has no Pivot records (they carry a four-bar).
-    best = [p.center for p in smap.best_pivots(pivots)] if pivots > 0 and not slider else []
+    # A map with a driven slider ranks its slider-cranks (SliderPivot records).
+    ranked: Sequence[Union[burmester.Pivot, burmester.SliderPivot]] = []
+    if pivots > 0:
+        ranked = smap.best_slider_pivots(pivots) if slider else smap.best_pivots(pivots)
+    best = [p.center for p in ranked]
     transmission = np.degrees(smap.min_transmission_rad)
     fixed = smap.fixed_dyad[0]
     if smap.varying == "driving" and not slider:
-        return center_plane(
+        drawn = center_plane(
             smap.task.filemon(fixed), smap.grid, free=smap.branch_free, acceptable=smap.acceptable,
             transmission=transmission, transmission_levels=transmission_levels, pivots=best or None,
             labels=labels, legend=legend, units=units, ax=ax,
         )
+        return _fit_legend(drawn, ax is None)
+    new_figure = ax is None
     ax = _new_axes(ax)
     extent = smap.extent
     img = ax.imshow(
@@ -1507,7 +1515,8 @@ def solution_map(
     )
     img.set_gid("branch-map")
     handles: List[Artist] = [
-        Patch(facecolor=FREE_COLOR, edgecolor="0.5", label="branch-free driven pivot"),
+        Patch(facecolor=FREE_COLOR, edgecolor="0.5",
+              label="branch-free crank pivot A0" if slider else "branch-free driven pivot"),
         Patch(facecolor=ACCEPT_COLOR, edgecolor="0.5", label="branch-free and acceptable"),
     ]
     if np.isfinite(transmission).any():
@@ -1527,7 +1536,7 @@ def solution_map(
         ))
     if best:
         handles.append(_markers(
-            ax, best, "pivots", "best driven pivots",
+            ax, best, "pivots", "best driving pivots A0" if slider else "best driven pivots",
             marker="*", markersize=13, color="#ffd700", markeredgecolor="black", zorder=6,
         ))
     name = "C1" if slider else "A0"
@@ -1542,6 +1551,26 @@ def solution_map(
     note_outside(ax, extent, [(name, fixed)] + [(str(k), p) for k, p in enumerate(best, start=1)]
                  + [(f"pose {k}", q[:2]) for k, q in enumerate(smap.task.poses, start=1)], units)
     _finish(ax, extent, legend, handles)
+    return _fit_legend(ax, new_figure)
+
+
+def _fit_legend(ax: Axes, new_figure: bool) -> Axes:
+    """On a figure :func:`solution_map` made, the legend to the right of the
+    axes becomes the figure's (``loc="outside right upper"``) under
+    constrained layout, which makes room for it: a default ``savefig`` keeps
+    it whole (an axes' legend outside it is cut off, and with the map's equal
+    aspect constrained layout alone does not place it inside). A figure the
+    caller gave is left as it is."""
+    from matplotlib.figure import Figure as TopFigure
+
+    leg, fig = ax.get_legend(), ax.get_figure()
+    if not new_figure or leg is None or not isinstance(fig, TopFigure):
+        return ax
+    fig.set_layout_engine("constrained")
+    handles = [h for h in leg.legend_handles if h is not None]
+    labels = [t.get_text() for h, t in zip(leg.legend_handles, leg.get_texts()) if h is not None]
+    leg.remove()
+    fig.legend(handles, labels, loc="outside right upper", fontsize="small")
     return ax
 
 

@@ -26,6 +26,7 @@ required::
     [driven]              # the driven dyad, by its fixed pivot C0 ...
     center = [4.0, -1.0]
     # circle = [x, y]     # ... or by its moving pivot C1 at pose 1 (not both)
+    # slider = [x, y]     # ... or a slider: its pin C1 at pose 1 (burmester map only)
 
     [view]                # the driving crank's center-point plane: shown and swept
     x = [-8.0, 8.0]       # xmin, xmax
@@ -42,6 +43,14 @@ required::
 in the file: any name (``"mm"``, ``"in"``, ``"m"``); it scales nothing, and
 is only said (see :mod:`burmester.units`). Without it lengths are bare
 numbers (CAD exports record millimetres unless told otherwise).
+
+``[driven] slider = [x, y]`` (three poses) makes the driven dyad a slider:
+its pin ``C1`` at pose 1, a point of the task's slider circle
+(:meth:`burmester.Task.slider_circle`, within the core's tolerance: take one
+of :meth:`burmester.Task.slider_dyads`), its guide the line through the
+pin's three positions. ``burmester map`` then draws the slider solution map
+(every crank pivot ``A0`` a slider-crank) and ranks its slider-cranks; the
+commands that build a four-bar refuse it.
 
 Without ``[driven]``, a three-pose file leaves both fixed pivots to
 ``burmester design``, which searches them (the other commands need a driven
@@ -162,6 +171,10 @@ class TaskSpec:
     #: A linear actuator to place (``[actuator]``), for ``burmester
     #: actuator``; None: the command's defaults.
     actuator: Optional["ActuatorSpec"] = None
+    #: A driven slider (``[driven] slider = [x, y]``, three poses): its pin
+    #: ``C1`` at pose 1 and the guide's direction ``u`` (the line through
+    #: the pin's positions), for ``burmester map``; None: a driven crank.
+    driven_slider: Optional[Tuple[Point, Point]] = None
 
     @property
     def task(self) -> Task:
@@ -174,6 +187,12 @@ class TaskSpec:
         :class:`TaskFileError` for a task of four or five poses (no driven
         dyad: only ``burmester map`` draws those)."""
         offers = counts.of(self.poses).filemon
+        if self.driven_slider is not None:
+            raise TaskFileError(
+                f"{self.source}: [driven] names a slider (slider = [x, y]): only 'burmester map' takes "
+                "a driven slider (its slider-cranks); give the driven crank's fixed pivot "
+                "(center = [x, y]) for this command"
+            )
         if offers and self.driven_center is None:
             raise TaskFileError(
                 f"{self.source}: has no [driven] table: give the driven crank's fixed pivot "
@@ -486,6 +505,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
 
     # [driven]: optional; without it `burmester design` searches both pivots
     center = _driven(r, doc, task, required=False)
+    slider = _driven_slider(r, doc, task)
     if center is not None:
         try:
             filemon = task.filemon(center)
@@ -500,7 +520,8 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
 
     limits = _limits(r, doc)
     return TaskSpec(tuple(poses), center, view, limits, source, units=units, space=_space(r, doc),
-                    actuator=_actuator(r, doc))
+                    actuator=_actuator(r, doc),
+                    driven_slider=slider)
 
 
 def _units(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
@@ -654,14 +675,18 @@ def _driven(r: _Reader, doc: Mapping[str, Any], task: Task, required: bool) -> O
     driven = r.table(doc, "driven", required=required)
     if driven is None:
         return None
-    r.only_keys("driven", driven, ["center", "circle"])
-    if ("center" in driven) == ("circle" in driven):
-        found = "both" if "center" in driven else "neither"
+    r.only_keys("driven", driven, ["center", "circle", "slider"])
+    given = [key for key in ("center", "circle", "slider") if key in driven]
+    if len(given) != 1:
+        found = ("both " if len(given) == 2 else "all of ") + " and ".join(given) if given else "neither"
         raise r.fail(
             "[driven]",
-            f"expected exactly one of center = [x, y] (the fixed pivot C0) or "
-            f"circle = [x, y] (the moving pivot C1 at pose 1), found {found}",
+            f"expected exactly one of center = [x, y] (the fixed pivot C0), "
+            f"circle = [x, y] (the moving pivot C1 at pose 1) or slider = [x, y] (a slider's pin at "
+            f"pose 1), found {found}",
         )
+    if "slider" in driven:
+        return None  # _driven_slider reads it
     if "center" in driven:
         center = r.point("driven.center", driven["center"])
         if counts.of(task).curves:
@@ -675,6 +700,24 @@ def _driven(r: _Reader, doc: Mapping[str, Any], task: Task, required: bool) -> O
         return task.center_point(circle)
     except BurmesterError as e:
         raise r.fail("driven.circle", f"has no center point: {e}") from None
+
+
+def _driven_slider(r: _Reader, doc: Mapping[str, Any], task: Task) -> Optional[Tuple[Point, Point]]:
+    """The driven slider of ``[driven] slider = [x, y]`` (three poses): the
+    pin ``C1`` at pose 1, which must lie on the task's slider circle
+    (:meth:`burmester.Task.slider_dyad`), and its guide's direction (the
+    line through the pin's positions)."""
+    driven = doc.get("driven")
+    if not isinstance(driven, Mapping) or "slider" not in driven:
+        return None
+    pin = r.point("driven.slider", driven["slider"])
+    if not counts.of(task).filemon:
+        raise r.fail("driven.slider", "a driven slider is for three poses (the slider solution map)")
+    try:
+        dyad = task.slider_dyad(pin)
+    except BurmesterError as e:
+        raise r.fail("driven.slider", f"is not a slider point of the three poses: {e}") from None
+    return dyad.circle, dyad.guide
 
 
 def _parse_many(
@@ -698,6 +741,7 @@ def _parse_many(
         raise r.fail("[[pose]]", f"the {len(poses)} poses cannot be used: {e}") from None
     limits = _limits(r, doc)
     driven = _driven(r, doc, task, required=False) if count.driven else None
+    _driven_slider(r, doc, task)  # refused: a driven slider is for three poses
     return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units=units, space=_space(r, doc),
                     actuator=_actuator(r, doc))
 

@@ -184,6 +184,25 @@ def samples():  # noqa: F811 (the samples so far and the inverted slider-crank's
 CLASSES += [burmester.InvertedSliderCrank, burmester.InvertedConfiguration, burmester.SynthesizedInvertedSliderCrank]
 
 
+# A ranked pivot of a solution map with a driven slider (issue 27, srank32).
+def _slider_pivot_samples():
+    from test_slider_branch import U, _press_task
+
+    task, b1 = _press_task()
+    smap = burmester.SliderFilemon(task, b1, U).solution_map(Grid(-300.0, 300.0, -300.0, 300.0, 21, 21))
+    return {"SliderPivot": smap.best_slider_pivots(1)[0]}
+
+
+_samples_inverted = samples
+
+
+def samples():  # noqa: F811 (the samples so far and the slider map's pivots)
+    return {**_samples_inverted(), **_slider_pivot_samples()}
+
+
+CLASSES += [burmester.SliderPivot]
+
+
 # ---------------------------------------------------------------------------
 # Pickling
 
@@ -373,6 +392,8 @@ PROPERTIES[burmester.SynthesizedInvertedSliderCrank] = (
     "travel travel_stops")
 METHODS[burmester.InvertedSliderCrank] = "solve joints coupler_point coupler_path slot_limits swing time_ratio"
 METHODS[burmester.SynthesizedInvertedSliderCrank] = "travel_angles pose_at"
+PROPERTIES[burmester.SliderPivot] = "center index linkage margin size_ratio score ranked_by"  # srank32
+METHODS[SolutionMap] += " best_slider_pivots slider_pareto_front"
 METHODS[Task] += " inverted_slider_crank"
 
 #: Methods without arguments, and why each is a method.
@@ -396,6 +417,8 @@ NO_ARGUMENT_METHODS = {
 # Issue 27 (ssynth27).
 NO_ARGUMENT_METHODS[(Task, "slider_circle")] = "fails for four or five poses"
 NO_ARGUMENT_METHODS[(Task, "inverted")] = "can fail (the inverted poses are checked as a task's); does work"
+NO_ARGUMENT_METHODS[(SolutionMap, "slider_pareto_front")] = (  # srank32
+    "fails for a map with a driven crank; does work: scans every sample and builds each slider-crank on the front")
 
 
 def _public(cls):

@@ -505,11 +505,14 @@ fn slider_errors_are_typed() {
         ]],
         ..burmester::Constraints::none()
     };
+    // Obstacles are checked over the slider-crank's travel (once refused).
+    assert!(
+        f.solution_map(&grid, &Default::default(), &obstacles, &Control::new())
+            .is_ok()
+    );
     for e in [
         f.four_bar(sc.a0).unwrap_err(),
         map.context.linkage(0).unwrap_err(),
-        f.solution_map(&grid, &Default::default(), &obstacles, &Control::new())
-            .unwrap_err(),
     ] {
         assert_eq!(cause_of(&e), "driven_kind");
         assert!(e.to_string().contains("slider"), "{e}");
@@ -1043,4 +1046,362 @@ fn slider_map_is_invariant_under_moves_rotations_and_scaling() {
     }
     eprintln!("invariance: {compared} samples equal, {flips} within rounding of a curve");
     assert!(compared > 4000, "{compared}");
+}
+
+/// The exact slider-crank of every valid sample of a slider map, built
+/// from the task (`Task::slider_crank`), with the sample: the second
+/// method the ranking is checked against.
+fn exact_cells(
+    task: &Task,
+    slider: &SliderDyad,
+    map: &burmester::SolutionMap,
+) -> Vec<(usize, burmester::SynthesizedSliderCrank)> {
+    (0..map.context.grid.len())
+        .filter_map(|k| {
+            let d = task.dyad_from_center(map.context.point(k)).ok()?;
+            Some((k, task.slider_crank(&d, slider).ok()?))
+        })
+        .collect()
+}
+
+/// Whether the exact slider-crank `sc` meets the default limits (written
+/// here from their definitions: feasible, a transmission angle of 30
+/// degrees, a link ratio of 10, 1% from the change points), with the map's
+/// branch flag of its sample.
+fn acceptable_by_default(sc: &burmester::SynthesizedSliderCrank, branch_free: bool) -> bool {
+    branch_free
+        && sc.one_circuit
+        && sc.direction != burmester::Direction::None
+        && sc.linkage.link_ratio() <= 10.0
+        && sc.linkage.rotatability_margin() >= 0.01
+        && sc.min_transmission >= 30f64.to_radians()
+}
+
+#[test]
+fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
+    use burmester::RankBy;
+    let (task, slider) = press();
+    let f = Filemon::new(&task, slider).unwrap();
+    let grid = Grid::from_bounds(-150.0, 150.0, -150.0, 150.0, 41, 41).unwrap();
+    let map = slider_map(&f, &grid);
+    let cells = exact_cells(&task, &slider, &map);
+    let span = task.span();
+    let mut acceptable = 0;
+    for (k, sc) in &cells {
+        let want = acceptable_by_default(sc, map.columns.branch_free[*k]);
+        // The columns are f32: skip a sample whose transmission is within
+        // their rounding of the limit.
+        if (sc.min_transmission - 30f64.to_radians()).abs() > 1e-6 {
+            assert_eq!(map.columns.acceptable[*k], want, "sample {k}");
+        }
+        acceptable += usize::from(map.columns.acceptable[*k]);
+    }
+    assert!(acceptable > 50, "{acceptable} acceptable samples");
+    for rank_by in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
+        let best = map.best_slider_pivots(5, None, rank_by).unwrap();
+        assert!(!best.is_empty(), "{rank_by:?}");
+        let b = &best[0];
+        // Its linkage is the exact slider-crank of its center.
+        let d = task.dyad_from_center(b.center).unwrap();
+        let exact = task.slider_crank(&d, &slider).unwrap();
+        assert_eq!(b.linkage, exact);
+        assert_eq!(b.center, map.context.point(b.index.0 * 41 + b.index.1));
+        assert!((b.size_ratio - exact.size() / span).abs() <= 1e-12 * b.size_ratio);
+        // It reaches the poses, branch-free and in order: the library's
+        // verdict, the pose at each crank angle, and the independent solver.
+        assert!(exact.feasible(), "{rank_by:?}");
+        for (k, p) in task.poses().iter().enumerate() {
+            let at = exact
+                .pose_at(exact.input_angles[k], exact.modes[k].unwrap())
+                .unwrap();
+            assert!(
+                (at.position - p.position).norm() < 1e-9 * span,
+                "{rank_by:?} pose {k}"
+            );
+        }
+        assert_eq!(
+            drive(task.poses(), d.center, d.circle, &slider),
+            Driven::Free
+        );
+        let dense = dense_figures(task.poses(), d.center, d.circle, &slider);
+        assert!(
+            (dense.min_mu - exact.min_transmission).abs() < 1e-5,
+            "{} vs {}",
+            dense.min_mu,
+            exact.min_transmission
+        );
+        // Its score is the best of every acceptable cell rescored from the
+        // exact linkage, within the columns' f32 rounding.
+        let brute = cells
+            .iter()
+            .filter(|(k, _)| map.columns.acceptable[*k])
+            .filter_map(|(_, sc)| {
+                rank_by.score(
+                    sc.min_transmission,
+                    sc.size() / span,
+                    sc.linkage.link_ratio(),
+                )
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        let exact_score = rank_by
+            .score(
+                exact.min_transmission,
+                exact.size() / span,
+                exact.linkage.link_ratio(),
+            )
+            .unwrap();
+        let tol = 4.0 * f64::from(f32::EPSILON) * brute.abs().max(1.0);
+        assert!(
+            (exact_score - brute).abs() <= tol && (b.score - brute).abs() <= tol,
+            "{rank_by:?}: best {} (exact {exact_score}) vs brute force {brute}",
+            b.score
+        );
+        eprintln!(
+            "{rank_by:?}: best A0 ({:.1}, {:.1}) crank {:.1} coupler {:.1} offset {:.1} mu {:.1} deg size ratio {:.2} score {:.4} (brute force {brute:.4})",
+            b.center.x,
+            b.center.y,
+            exact.linkage.crank(),
+            exact.linkage.coupler(),
+            exact.linkage.offset(),
+            exact.min_transmission.to_degrees(),
+            b.size_ratio,
+            b.score
+        );
+        // Best first, and apart by the default separation.
+        for w in best.windows(2) {
+            assert!(w[0].score >= w[1].score - 1e-9, "{rank_by:?}");
+        }
+    }
+    // The margin ranking: branch-free samples by their margin to the conic.
+    let by_margin = map.best_slider_pivots(3, None, RankBy::Margin).unwrap();
+    assert!(by_margin[0].margin > 0.0 && by_margin[0].linkage.is_branch_free());
+    assert_eq!(
+        by_margin[0].margin,
+        map.margin(by_margin[0].index.0 * 41 + by_margin[0].index.1)
+    );
+    // The Pareto front: acceptable, sizes rising with the transmission, and
+    // no acceptable cell (rescored exactly) better in both beyond the f32
+    // rounding.
+    let front = map.slider_pareto_front().unwrap();
+    assert!(front.len() >= 2, "{}", front.len());
+    for w in front.windows(2) {
+        assert!(w[0].size_ratio <= w[1].size_ratio);
+        assert!(w[0].linkage.min_transmission < w[1].linkage.min_transmission);
+    }
+    let eps = 1e-6;
+    for p in &front {
+        assert!(p.linkage.feasible());
+        let (mu, s) = (p.linkage.min_transmission, p.size_ratio);
+        for (k, sc) in &cells {
+            if map.columns.acceptable[*k] {
+                let (m2, s2) = (sc.min_transmission, sc.size() / span);
+                assert!(
+                    !(m2 > mu * (1.0 + eps) && s2 < s * (1.0 - eps)),
+                    "front member ({mu}, {s}) dominated by sample {k} ({m2}, {s2})"
+                );
+            }
+        }
+    }
+    // Every pivot asked for (the documented maximum: usize::MAX), apart by
+    // nothing: every acceptable sample once.
+    let all = map
+        .best_slider_pivots(usize::MAX, Some(0.0), RankBy::Balanced)
+        .unwrap();
+    assert_eq!(all.len(), acceptable);
+    // The four-bar's ranking refuses a slider map, naming what to use, and
+    // the slider's a crank's map.
+    let e = map.best_pivots(3, None, RankBy::Balanced).unwrap_err();
+    assert_eq!(cause_of(&e), "driven_kind");
+    assert!(e.to_string().contains("best_slider_pivots"), "{e}");
+    let revolute = task.filemon(Point2::new(300.0, -200.0)).unwrap();
+    let rmap = slider_map(&revolute, &grid);
+    let e = rmap
+        .best_slider_pivots(3, None, RankBy::Balanced)
+        .unwrap_err();
+    assert_eq!(cause_of(&e), "driven_kind");
+    assert!(e.to_string().contains("best_pivots"), "{e}");
+    // A cancelled ranking stops with Cancelled.
+    let stop = std::sync::atomic::AtomicBool::new(true);
+    let control = Control::new().with_cancel(&stop);
+    let e = map
+        .context
+        .best_pivots_with::<burmester::SynthesizedSliderCrank>(
+            3,
+            None,
+            RankBy::Pareto,
+            map.rank_columns(),
+            &control,
+        )
+        .unwrap_err();
+    assert!(matches!(e, Error::Cancelled { .. }), "{e:?}");
+}
+
+/// The smallest gap over the travel between the moving parts of the
+/// slider-crank of `(a0, a1)` and the slider, driven densely by this
+/// file's solver: from the obstacles (crank `A0 A` and coupler `A B`) and
+/// from the envelope's edges (crank, coupler and the coupler triangle
+/// with the task's point), parry distances between segments and polygons
+/// (minus nothing: compare with the links' half width). `None` without a
+/// travel (no crank rotation meets the poses in order with the loop
+/// closed).
+fn dense_gaps(
+    poses: &[Pose],
+    a0: Point2<f64>,
+    a1: Point2<f64>,
+    slider: &SliderDyad,
+    obstacles: &[Vec<Point2<f64>>],
+    envelope: &[Point2<f64>],
+) -> Option<(f64, f64)> {
+    use parry2d_f64::math::{Pose as PPose, Vector as V};
+    use parry2d_f64::query::distance;
+    use parry2d_f64::shape::{ConvexPolygon, Segment};
+    let (b1, sc) = (slider.circle, built(a0, a1, slider));
+    let p1 = poses[0].position;
+    let phis: Vec<f64> = (0..poses.len())
+        .map(|k| {
+            let a = displace(poses, k, a1);
+            (a.y - a0.y).atan2(a.x - a0.x)
+        })
+        .collect();
+    let (p, _, _) = sc.parts(phis[0]);
+    let mode = (sc.u.dot(&(b1 - sc.g)) - p).signum();
+    let steps = 1000;
+    let travel = [1.0, -1.0].into_iter().find_map(|dir: f64| {
+        let dist: Vec<f64> = phis
+            .iter()
+            .map(|p| ((p - phis[0]) * dir).rem_euclid(TAU))
+            .collect();
+        let end = dist[dist.len() - 1];
+        let closed =
+            (0..=steps).all(|s| sc.parts(phis[0] + dir * end * s as f64 / steps as f64).2 > 0.0);
+        (dist.windows(2).all(|w| w[0] < w[1]) && closed).then_some(dir * end)
+    })?;
+    let v = |q: Point2<f64>| V::new(q.x, q.y);
+    let seg = |a: Point2<f64>, b: Point2<f64>| Segment::new(v(a), v(b));
+    let id = PPose::identity();
+    let hulls: Vec<ConvexPolygon> = obstacles
+        .iter()
+        .map(|o| {
+            ConvexPolygon::from_convex_hull(&o.iter().map(|q| v(*q)).collect::<Vec<_>>()).unwrap()
+        })
+        .collect();
+    let n = envelope.len();
+    let edges: Vec<Segment> = (0..n)
+        .map(|k| seg(envelope[k], envelope[(k + 1) % n]))
+        .collect();
+    let local = p1 - a1;
+    let angle1 = (b1 - a1).y.atan2((b1 - a1).x);
+    let (mut to_obstacles, mut to_envelope) = (f64::INFINITY, f64::INFINITY);
+    for s in 0..=steps {
+        let phi = phis[0] + travel * s as f64 / steps as f64;
+        let a = sc.pin(phi);
+        let b = sc.slider(phi, mode)?;
+        let t = (b - a).y.atan2((b - a).x) - angle1;
+        let pt = a + Vector2::new(
+            t.cos() * local.x - t.sin() * local.y,
+            t.sin() * local.x + t.cos() * local.y,
+        );
+        for (x, y) in [(a0, a), (a, b)] {
+            for h in &hulls {
+                to_obstacles =
+                    to_obstacles.min(distance(&id, &seg(x, y), &id, h).unwrap().distance);
+            }
+        }
+        for (x, y) in [(a0, a), (a, b), (a, pt), (b, pt)] {
+            for e in &edges {
+                to_envelope = to_envelope.min(distance(&id, &seg(x, y), &id, e).unwrap().distance);
+            }
+        }
+    }
+    Some((to_obstacles, to_envelope))
+}
+
+#[test]
+fn slider_map_obstacles_and_envelope_agree_with_driving_the_built_slider_crank() {
+    let (task, slider) = press();
+    let f = Filemon::new(&task, slider).unwrap();
+    let grid = Grid::from_bounds(-150.0, 150.0, -150.0, 150.0, 25, 25).unwrap();
+    let free = slider_map(&f, &grid);
+    let rect = |x0: f64, x1: f64, y0: f64, y1: f64| {
+        vec![
+            Point2::new(x0, y0),
+            Point2::new(x1, y0),
+            Point2::new(x1, y1),
+            Point2::new(x0, y1),
+        ]
+    };
+    // A block above the ram's path, a floor plate below the guide and a
+    // housing (mm); links 8 mm wide.
+    let obstacles = vec![
+        rect(70.0, 110.0, 40.0, 70.0),
+        rect(120.0, 220.0, -40.0, -12.0),
+    ];
+    let envelope = rect(-140.0, 260.0, -110.0, 110.0);
+    let width = 8.0;
+    let constraints = burmester::Constraints {
+        obstacles: obstacles.clone(),
+        envelope: Some(envelope.clone()),
+        link_width: width,
+        ..burmester::Constraints::none()
+    };
+    let map = f
+        .solution_map(&grid, &Default::default(), &constraints, &Control::new())
+        .unwrap();
+    let inside = |q: Point2<f64>| q.x > -140.0 && q.x < 260.0 && q.y > -110.0 && q.y < 110.0;
+    let (mut clear, mut struck, mut escapes, mut borderline) = (0, 0, 0, 0);
+    for k in 0..grid.len() {
+        if !free.columns.acceptable[k] {
+            // Constraints only take samples away.
+            assert!(!map.columns.acceptable[k], "sample {k}");
+            continue;
+        }
+        let a0 = map.context.point(k);
+        let d = task.dyad_from_center(a0).unwrap();
+        let (to_obstacles, to_envelope) =
+            dense_gaps(task.poses(), a0, d.circle, &slider, &obstacles, &envelope)
+                .expect("an acceptable sample has a travel");
+        let r = 0.5 * width;
+        // The dense samples are 1/1000 of the travel apart (a point moves
+        // at most about 1 mm between two): within 2 mm of the half width
+        // the verdict is not compared.
+        let gap = (to_obstacles - r).min(if inside(a0) { to_envelope - r } else { -1.0 });
+        if gap.abs() < 2.0 {
+            borderline += 1;
+            continue;
+        }
+        assert_eq!(
+            map.columns.acceptable[k],
+            gap > 0.0,
+            "sample {k} at {a0}: gaps {to_obstacles} (obstacles), {to_envelope} (envelope)"
+        );
+        if gap > 0.0 {
+            clear += 1;
+        } else if to_obstacles < r {
+            struck += 1;
+        } else {
+            escapes += 1;
+        }
+    }
+    eprintln!(
+        "obstacles: {clear} clear, {struck} struck, {escapes} leave the envelope, {borderline} within 2 mm"
+    );
+    assert!(
+        clear > 20 && struck > 20 && escapes > 5,
+        "{clear} {struck} {escapes}"
+    );
+    // The best pivot under the constraints is clear by the dense check.
+    let best = map
+        .best_slider_pivots(1, None, burmester::RankBy::Balanced)
+        .unwrap();
+    let d = task.dyad_from_center(best[0].center).unwrap();
+    let (o, e) = dense_gaps(
+        task.poses(),
+        d.center,
+        d.circle,
+        &slider,
+        &obstacles,
+        &envelope,
+    )
+    .unwrap();
+    assert!(o > 0.5 * width && e > 0.5 * width, "{o} {e}");
 }

@@ -498,7 +498,7 @@ macro_rules! py_map_class {
 
             /// The columns a ranking reads, borrowed from the arrays, passed
             /// to `f`.
-            fn with_rank_columns<R>(
+            pub(crate) fn with_rank_columns<R>(
                 &self,
                 py: Python<'_>,
                 f: impl FnOnce(burmester::design::RankColumns<'_>) -> PyResult<R>,
@@ -588,22 +588,20 @@ macro_rules! py_solution_map {
 
 burmester::solution_map_columns!(py_solution_map);
 
-/// The getters a ranked sample of a map shares (`Pivot`, `Pair`): a
-/// `#[pymethods]` block for `$cls`, whose fields `index`, `linkage`,
-/// `margin`, `score` and `ranked_by` they read.
+/// The getters a ranked sample of a map shares (`Pivot`, `Pair`,
+/// `SliderPivot`): a `#[pymethods]` block for `$cls`, whose fields
+/// `index`, `linkage` (of the class `$L`, compared by `$key(&linkage)`),
+/// `margin`, `score` and `ranked_by` they read. Without `$L`: a
+/// four-bar's, with the figures, the size ratio and the repr's end.
 macro_rules! ranked_getters {
     ($cls:ident) => {
-        impl $cls {
-            /// The same ranking of the same linkage as `o` (floats by their
-            /// bits), for `__eq__`.
-            fn same_ranking(&self, o: &Self) -> bool {
-                o.index == self.index
-                    && o.linkage == self.linkage
-                    && o.margin.to_bits() == self.margin.to_bits()
-                    && o.score.to_bits() == self.score.to_bits()
-                    && o.ranked_by == self.ranked_by
-            }
+        $crate::design::ranked_getters!(
+            $cls,
+            $crate::classes::PySynthesizedFourBar,
+            |l: &$crate::classes::PySynthesizedFourBar| l.clone()
+        );
 
+        impl $cls {
             /// The end of the repr: the Grashof class, the transmission,
             /// the size ratio and the ranking.
             fn ranked_repr(&self) -> String {
@@ -625,24 +623,42 @@ macro_rules! ranked_getters {
         #[pymethods]
         impl $cls {
             #[getter]
-            fn index(&self) -> (usize, usize) {
-                self.index
-            }
-            #[getter]
-            fn linkage(&self) -> $crate::classes::PySynthesizedFourBar {
-                self.linkage.clone()
-            }
-            #[getter]
             fn figures(&self) -> $crate::linkage::PyLinkageFigures {
                 self.linkage.figures()
             }
             #[getter]
-            fn margin(&self) -> f64 {
-                self.margin
-            }
-            #[getter]
             fn size_ratio(&self) -> f64 {
                 self.linkage.size_ratio()
+            }
+        }
+    };
+    ($cls:ident, $L:ty, $key:expr) => {
+        impl $cls {
+            /// The same ranking of the same linkage as `o` (floats by their
+            /// bits), for `__eq__`.
+            fn same_ranking(&self, o: &Self) -> bool {
+                let key = $key;
+                o.index == self.index
+                    && key(&o.linkage) == key(&self.linkage)
+                    && o.margin.to_bits() == self.margin.to_bits()
+                    && o.score.to_bits() == self.score.to_bits()
+                    && o.ranked_by == self.ranked_by
+            }
+        }
+
+        #[pymethods]
+        impl $cls {
+            #[getter]
+            fn index(&self) -> (usize, usize) {
+                self.index
+            }
+            #[getter]
+            fn linkage(&self) -> $L {
+                self.linkage.clone()
+            }
+            #[getter]
+            fn margin(&self) -> f64 {
+                self.margin
             }
             #[getter]
             fn score(&self) -> f64 {
@@ -656,6 +672,82 @@ macro_rules! ranked_getters {
     };
 }
 pub(crate) use ranked_getters;
+
+/// The `#[pymethods]` block of a ranking method `$name` of the map class
+/// `$cls` (`k=5, min_separation=None, rank_by='balanced'`), delegating to
+/// its `$ranked(py, k, min_separation, rank_by)`.
+macro_rules! ranking_method {
+    ($cls:ident, $name:ident, $ranked:ident) => {
+        #[pymethods]
+        impl $cls {
+            #[pyo3(signature = (k = $crate::conv::Count(5), min_separation = None, rank_by = "balanced"),
+                text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
+            fn $name<'py>(
+                &self,
+                py: Python<'py>,
+                k: $crate::conv::Count,
+                min_separation: Option<$crate::conv::Real>,
+                rank_by: &str,
+            ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+                use $crate::errors::IntoPy;
+                let rank_by = rank_by.parse::<burmester::RankBy>().py()?;
+                self.$ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
+            }
+        }
+    };
+}
+pub(crate) use ranking_method;
+
+/// `__getnewargs__` (the arguments of `__new__`) and `__eq__` (the same
+/// center and ranking, floats by their bits) of a ranked pivot `$cls`
+/// (`Pivot`, `SliderPivot`) whose linkage is a `$L`.
+macro_rules! pivot_methods {
+    ($cls:ident, $L:ty) => {
+        impl $cls {
+            /// The pivot of `__new__`'s arguments, checked by the caller
+            /// but for the ranking's name.
+            fn from_parts(
+                center: $crate::conv::PyPoint,
+                index: ($crate::conv::Count, $crate::conv::Count),
+                linkage: $L,
+                (margin, score): ($crate::conv::Real, $crate::conv::Real),
+                ranked_by: &str,
+            ) -> PyResult<Self> {
+                use $crate::errors::IntoPy;
+                Ok($cls {
+                    center: $crate::conv::pt(center.0),
+                    index: (index.0.0, index.1.0),
+                    linkage,
+                    margin: margin.0,
+                    score: score.0,
+                    ranked_by: ranked_by.parse::<burmester::RankBy>().py()?,
+                })
+            }
+        }
+
+        #[pymethods]
+        impl $cls {
+            #[allow(clippy::type_complexity)]
+            fn __getnewargs__(&self) -> ((f64, f64), (usize, usize), $L, f64, f64, &'static str) {
+                (
+                    self.center,
+                    self.index,
+                    self.linkage.clone(),
+                    self.margin,
+                    self.score,
+                    self.ranked_by.as_str(),
+                )
+            }
+            fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+                other.cast::<$cls>().is_ok_and(|o| {
+                    let o = o.get();
+                    o.center == self.center && self.same_ranking(o)
+                })
+            }
+        }
+    };
+}
+pub(crate) use pivot_methods;
 
 ranked_getters!(PyPivot);
 
@@ -710,39 +802,7 @@ impl PyPivot {
                 ),
             ));
         }
-        Ok(PyPivot {
-            center: pt(center.0),
-            index: (index.0.0, index.1.0),
-            linkage,
-            margin: margin.0,
-            score: score.0,
-            ranked_by: ranked_by.parse::<RankBy>().py()?,
-        })
-    }
-    fn __getnewargs__(
-        &self,
-    ) -> (
-        Xy,
-        (usize, usize),
-        PySynthesizedFourBar,
-        f64,
-        f64,
-        &'static str,
-    ) {
-        (
-            self.center,
-            self.index,
-            self.linkage.clone(),
-            self.margin,
-            self.score,
-            self.ranked_by.as_str(),
-        )
-    }
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other.cast::<PyPivot>().is_ok_and(|o| {
-            let o = o.get();
-            o.center == self.center && self.same_ranking(o)
-        })
+        Self::from_parts(center, index, linkage, (margin, score), ranked_by)
     }
     fn __repr__(&self) -> String {
         let (x, y) = self.center;
@@ -757,6 +817,10 @@ impl PyPivot {
 getters!(PyPivot {
     Xy: center;
 });
+
+pivot_methods!(PyPivot, PySynthesizedFourBar);
+
+ranking_method!(PySolutionMap, best_pivots, ranked);
 
 impl PySolutionMap {
     /// The arguments of `_from_state` (for pickling).
@@ -804,18 +868,6 @@ impl PySolutionMap {
         let bf = bf.as_slice()?;
         let ctx = &self.context;
         Ok(py.detach(|| ctx.margin(k, bf)))
-    }
-    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
-        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_pivots<'py>(
-        &self,
-        py: Python<'py>,
-        k: Count,
-        min_separation: Option<Real>,
-        rank_by: &str,
-    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
-        let rank_by = rank_by.parse::<RankBy>().py()?;
-        self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
     }
 
     /// Rebuilds a map from its state (for pickling).

@@ -76,6 +76,8 @@ mod _burmester {
     #[pymodule_export]
     use crate::slider_dyads::{PyInvertedSlider, PySliderDyad};
     #[pymodule_export]
+    use crate::slider_map::PySliderPivot;
+    #[pymodule_export]
     use crate::synthesis::PyPole;
 
     #[pymodule_init]

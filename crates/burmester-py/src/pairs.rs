@@ -24,6 +24,7 @@ macro_rules! py_pair_map {
 burmester::solution_map_columns!(py_pair_map);
 
 ranked_getters!(PyPair);
+crate::design::ranking_method!(PyPairMap, best_pairs, ranked);
 
 /// A pair of dyads of a pair map with its linkage.
 #[pyclass(frozen, name = "Pair", module = "burmester")]
@@ -220,18 +221,6 @@ impl PyPairMap {
         Ok(Array2::from_shape_vec(ctx.shape(), m)
             .expect("one value per pair")
             .into_pyarray(py))
-    }
-    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
-        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_pairs<'py>(
-        &self,
-        py: Python<'py>,
-        k: Count,
-        min_separation: Option<Real>,
-        rank_by: &str,
-    ) -> PyResult<Bound<'py, PyList>> {
-        let rank_by = rank_by.parse::<RankBy>().py()?;
-        self.ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
     }
 
     /// Rebuilds a map from its state (for pickling): the samples are

@@ -254,6 +254,18 @@ synthesized_crank! {
     reduce "slider_crank" with key(this) = (this.driving, this.driven);
 }
 
+impl PySynthesizedSliderCrank {
+    /// The core's slider-crank.
+    pub(crate) fn core(&self) -> &SynthesizedSliderCrank {
+        &self.inner
+    }
+
+    /// Its size over its task's span.
+    pub(crate) fn size_ratio_of(&self) -> f64 {
+        self.size_ratio
+    }
+}
+
 #[pymethods]
 impl PySynthesizedSliderCrank {
     fn __repr__(&self) -> String {

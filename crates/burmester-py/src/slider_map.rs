@@ -2,12 +2,13 @@
 //! `SolutionMap.slider_crank` and `SolutionMap.fixed_kind`, and how a map's
 //! fixed dyad of either kind crosses to Python and back (its pickle).
 
-use burmester::{Dyad, MapContext, PairContext, SliderDyad, Varying};
+use burmester::{Dyad, MapContext, PairContext, RankBy, SliderDyad, SliderPivot, Varying};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
+use pyo3::types::PyList;
 
 use crate::classes::dyad_tuple;
-use crate::conv::{Count, PyPoint, pt};
+use crate::conv::{Count, PyPoint, Real, pt};
 use crate::design::PySolutionMap;
 use crate::errors::IntoPy;
 use crate::slider::PySynthesizedSliderCrank;
@@ -100,3 +101,129 @@ impl PySolutionMap {
 }
 
 crate::design::filemon_solution_map_method!(PySliderFilemon, "SliderFilemon.solution_map");
+
+crate::design::ranking_method!(PySolutionMap, best_slider_pivots, slider_ranked);
+
+#[pymethods]
+impl PySolutionMap {
+    /// The Pareto front of a map with a driven slider, as `SliderPivot`s.
+    fn slider_pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        self.slider_ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
+    }
+}
+
+impl PySolutionMap {
+    /// The ranking of a map with a driven slider, Ctrl-C polled on a long
+    /// one.
+    fn slider_ranked<'py>(
+        &self,
+        py: Python<'py>,
+        k: usize,
+        sep: Option<f64>,
+        rank_by: RankBy,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let ctx = &self.context;
+        let watch = crate::design::ranking_is_long(ctx.grid.len(), k);
+        let best = self.with_rank_columns(py, |cols| {
+            crate::run::run_in(py, watch, None, None, "samples", |control| {
+                ctx.best_pivots_with::<burmester::SynthesizedSliderCrank>(
+                    k, sep, rank_by, cols, control,
+                )
+            })
+        })?;
+        crate::run::list_polled(py, &best, |b| {
+            Ok(Bound::new(py, PySliderPivot::of(ctx.task, b))?.into_any())
+        })
+    }
+}
+
+/// A candidate driving pivot of a solution map with a driven slider, with
+/// its slider-crank (`SolutionMap.best_pivots` of such a map).
+#[pyclass(frozen, name = "SliderPivot", module = "burmester")]
+#[derive(Clone)]
+pub struct PySliderPivot {
+    center: Xy,
+    index: (usize, usize),
+    linkage: PySynthesizedSliderCrank,
+    margin: f64,
+    score: f64,
+    ranked_by: RankBy,
+}
+
+impl PySliderPivot {
+    fn of(task: burmester::Task, p: &SliderPivot) -> Self {
+        PySliderPivot {
+            center: pt(p.center),
+            index: p.index,
+            linkage: PySynthesizedSliderCrank::new(p.linkage, task),
+            margin: p.margin,
+            score: p.score,
+            ranked_by: p.ranked_by,
+        }
+    }
+}
+
+#[pymethods]
+impl PySliderPivot {
+    #[new]
+    fn new(
+        center: PyPoint,
+        index: (Count, Count),
+        linkage: &Bound<'_, PySynthesizedSliderCrank>,
+        margin: Real,
+        score: Real,
+        ranked_by: &str,
+    ) -> PyResult<Self> {
+        let linkage = linkage.get().clone();
+        // The pivot is its slider-crank's crank pivot.
+        let a0 = linkage.core().driving.center;
+        if center.0 != a0 {
+            return Err(crate::errors::invalid(
+                "inconsistent_state",
+                format!(
+                    "a SliderPivot at ({}, {}) with a slider-crank whose crank pivot is {:?}: \
+                     the pivot must be the crank pivot",
+                    center.0.x,
+                    center.0.y,
+                    pt(a0)
+                ),
+            ));
+        }
+        Self::from_parts(center, index, linkage, (margin, score), ranked_by)
+    }
+    fn __repr__(&self) -> String {
+        let (x, y) = self.center;
+        let l = self.linkage.core();
+        let mu = if l.min_transmission.is_nan() {
+            "None".to_owned()
+        } else {
+            format!("{:.3}", l.min_transmission.to_degrees())
+        };
+        format!(
+            "<SliderPivot center=({x:.6}, {y:.6}) index={:?} crank={:.6} coupler={:.6} \
+             offset={:.6} min_transmission_deg={mu} size_ratio={:.3} by {}>",
+            self.index,
+            l.linkage.crank(),
+            l.linkage.coupler(),
+            l.linkage.offset(),
+            self.size_ratio(),
+            self.ranked_by.as_str()
+        )
+    }
+    #[getter]
+    fn size_ratio(&self) -> f64 {
+        self.linkage.size_ratio_of()
+    }
+}
+
+crate::design::ranked_getters!(
+    PySliderPivot,
+    PySynthesizedSliderCrank,
+    |l: &PySynthesizedSliderCrank| *l.core()
+);
+
+crate::design::pivot_methods!(PySliderPivot, PySynthesizedSliderCrank);
+
+crate::getters::getters!(PySliderPivot {
+    Xy: center;
+});

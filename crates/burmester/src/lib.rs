@@ -138,6 +138,7 @@ pub use design::{
     Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, PivotRegion, SearchPoint,
     Space,
 };
+pub use design::{PivotLinkage, SliderPivot};
 pub use engine::Control;
 pub use error::{AssemblyError, DegenerateError, DriveError, Error, InvalidInput, Result};
 pub use geom::{CircleOrLine, Conic, ConicKind, Grid, Line, PerPose, Pose, Similarity, Viewport};

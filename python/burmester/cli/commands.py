@@ -34,6 +34,7 @@ from burmester.cli.base import (
     _with_units,
     progress_for,
 )
+from burmester.cli import slider_map
 from burmester.cli.files import (
     ANIMATION_TYPES,
     CAD_TYPES,
@@ -76,6 +77,9 @@ EXAMPLE_FOURBAR = (100.0, 40.0, 120.0, 80.0)
 def cmd_map(args: argparse.Namespace) -> int:
     """``burmester map``: draw the center-point (or circle-point) plane."""
     spec = _with_units(_with_grid(_load(args.task), args.grid), args)  # the task file's errors first
+    spec = slider_map.with_driven_slider(spec, getattr(args, "driven_slider", None))
+    if spec.driven_slider is not None:  # a driven slider: its slider-cranks' map
+        return slider_map.map_slider(args, spec)
     _output(args.output, _types(PICTURE_TYPES, CAD_TYPES), args.force)
     units = _units(args, spec)
     cad = _is_cad(args.output)

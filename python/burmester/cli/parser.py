@@ -221,6 +221,13 @@ def _add_map(sub: _Commands) -> None:
     p.add_argument("--design", action="store_true",
                    help="overlay the solution-space map: pivots acceptable under the task's limits "
                    "shaded darker, contours of the minimum transmission angle over the travel")
+    p.add_argument("--driven-slider", type=float, nargs=2, metavar=("X", "Y"), default=None,
+                   help="three poses: make the driven dyad a slider whose pin is at (X, Y) at pose 1 (a "
+                   "point of the task's slider circle; its guide is the line through the pin's positions), "
+                   "in place of the task file's [driven] (which may name one: slider = [x, y]). Draws the "
+                   "slider solution map (every crank pivot A0 a slider-crank: branch-free and acceptable "
+                   "pivots, transmission contours, the guide) and prints the best slider-cranks (--pivots N, "
+                   "default 5)")
     _picture_args(p, "resolution of a picture, dots per inch, ", " (default: 100)")
     p.set_defaults(func=cmd_map)
 

@@ -49,7 +49,7 @@ use parry2d_f64::utils::point_in_poly2d;
 use crate::error::{InvalidInput, PolygonProblem, Result, bounded, count_in, in_range};
 use crate::geom::cross;
 use crate::linkage::AssemblyMode;
-use crate::synthesis::SynthesizedFourBar;
+use crate::synthesis::{SynthesizedFourBar, SynthesizedSliderCrank};
 use crate::tolerance;
 
 /// Where the linkage may be: a base plate for the fixed pivot being placed,
@@ -422,8 +422,21 @@ impl Prepared {
         clear_at: &dyn Fn(AssemblyMode, f64, f64) -> Option<bool>,
         go: Go<'_>,
     ) -> bool {
-        let (Some(Some(mode)), Some((start, span))) = (fb.modes().first().copied(), fb.travel())
-        else {
+        self.over_crank_travel(fb.modes().first().copied(), fb.travel(), rate, clear_at, go)
+    }
+
+    /// [`over_travel`](Self::over_travel) of a crank in assembly mode
+    /// `mode` (pose 1's) over the travel `(start, span)`; false without
+    /// them.
+    fn over_crank_travel(
+        &self,
+        mode: Option<Option<AssemblyMode>>,
+        travel: Option<(f64, f64)>,
+        rate: f64,
+        clear_at: &dyn Fn(AssemblyMode, f64, f64) -> Option<bool>,
+        go: Go<'_>,
+    ) -> bool {
+        let (Some(Some(mode)), Some((start, span))) = (mode, travel) else {
             return false;
         };
         let n = self.samples;
@@ -525,6 +538,84 @@ impl Prepared {
         };
         let clear_at = |mode, theta, extra| self.clear_at(fb, mode, theta, extra);
         self.over_travel(fb, rate, &clear_at, Go(cancel))
+    }
+}
+
+/// # A slider-crank over its travel
+///
+/// A slider-crank's moving parts (a map with a driven slider,
+/// [`SliderFilemon::solution_map`](crate::SliderFilemon::solution_map))
+/// are checked as a four-bar's, capsules `link_width` wide: against the
+/// obstacles the crank `A0 A` and the coupler `A B`; inside the envelope
+/// the crank and the coupler triangle `A B P` (`P` the task's coupler
+/// point). The slider's block is its pin `B` with the links' width: the
+/// coupler's capsule ends at `B`, so checking it over the whole travel
+/// checks the block's path, the length of guide the slider runs on (the
+/// [`stroke_used`](SynthesizedSliderCrank::stroke_used)). The block's own
+/// length and the rail beyond the stroke are the designer's (leave half
+/// the block's length free along the guide past the stroke).
+///
+/// The bound on how fast a point moves per radian of crank: the crank pin
+/// `A` moves `r`; the pin `B` moves along the guide with the component of
+/// `A`'s velocity along the coupler, `|v_B| sin mu <= r` (`mu` the
+/// transmission angle, between the coupler and the guide's normal), so
+/// `|v_B| <= r / sin mu`; the coupler turns at most `(|v_A| + |v_B|) / l`,
+/// and a point of the coupler at distance `d` from `A` moves at most
+/// `r + d r (1 + 1 / sin mu) / l`. The coupler's points are convex
+/// combinations of `A`, `B` and `P` (velocities affine), so
+/// `r (1 + 1 / sin mu) (1 + d / l)` with `d` the larger of `l` and `|P - A|`
+/// bounds every moving point.
+impl Prepared {
+    /// Whether the slider-crank `sc` clears the obstacles and stays inside
+    /// the envelope over the whole travel (see above); false once `cancel`
+    /// is set.
+    pub(crate) fn slider_motion_ok(
+        &self,
+        sc: &SynthesizedSliderCrank,
+        cancel: Option<&AtomicBool>,
+    ) -> bool {
+        if !self.checks_motion() {
+            return true;
+        }
+        if !self.in_envelope(sc.driving.center) {
+            return false;
+        }
+        let l = &sc.linkage;
+        let sin_mu = sc.min_transmission.sin();
+        let d = sc.coupler_point.norm().max(l.coupler());
+        let rate = l.crank() * (1.0 + 1.0 / sin_mu) * (1.0 + d / l.coupler());
+        if !(sin_mu > 0.0 && rate.is_finite()) {
+            return false;
+        }
+        let identity = parry2d_f64::math::Pose::identity();
+        let v = |p: Point2<f64>| PVector::new(p.x, p.y);
+        let clear_at = |mode: AssemblyMode, theta: f64, extra: f64| -> Option<bool> {
+            let j = l.joints_at(theta, mode).ok()?;
+            let p = j.coupler_point(sc.coupler_point);
+            let (a0, a, b) = (j.crank_pivot, j.crank_joint, j.slider_joint);
+            let hits = |(x, y): (Point2<f64>, Point2<f64>),
+                        shape: &dyn parry2d_f64::shape::Shape| {
+                let cap = Capsule::new(v(x), v(y), self.radius + extra);
+                intersection_test(&identity, &cap, &identity, shape)
+                    .map_or(true, |r| r.intersecting)
+            };
+            let struck = [(a0, a), (a, b)]
+                .into_iter()
+                .any(|seg| self.obstacles.iter().any(|o| hits(seg, o)));
+            let escapes = self.envelope.as_ref().is_some_and(|(_, edges)| {
+                [(a0, a), (a, b), (a, p), (b, p)]
+                    .into_iter()
+                    .any(|seg| edges.iter().any(|e| hits(seg, e)))
+            });
+            Some(!struck && !escapes)
+        };
+        self.over_crank_travel(
+            sc.modes.first().copied(),
+            sc.travel(),
+            rate,
+            &clear_at,
+            Go(cancel),
+        )
     }
 }
 

@@ -50,7 +50,8 @@ impl Judge<'_> {
 
     /// The sample of a slider-crank `sc` with branch flag `branch_free`
     /// (module `map_slider`): its driving center must lie on the base
-    /// plate; there are no obstacles or envelope (refused before).
+    /// plate, its moving parts clear the obstacles and stay inside the
+    /// envelope over the travel (`Prepared::slider_motion_ok`).
     pub(crate) fn slider_sample(&self, sc: &SynthesizedSliderCrank, branch_free: bool) -> Sample {
         let l = &sc.linkage;
         let size_ratio = sc.size() * self.inv_span;
@@ -66,7 +67,8 @@ impl Judge<'_> {
                 || sc.min_transmission >= self.limits.min_transmission,
             )
             && self.limits.meets_size(lengths, size_ratio)
-            && self.prepared.pivot_ok(sc.driving.center);
+            && self.prepared.pivot_ok(sc.driving.center)
+            && self.prepared.slider_motion_ok(sc, self.cancel);
         Sample {
             valid: true,
             branch_free,

@@ -190,10 +190,9 @@ impl Filemon {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] for invalid limits or constraints;
-    /// [`InvalidInput::DrivenKind`] for a slider driven dyad with obstacles
-    /// or an envelope (their clearance is checked over a four-bar's travel;
-    /// a base plate is taken);
+    /// [`InvalidInput`] for invalid limits or constraints (obstacles and
+    /// an envelope are checked over a slider-crank's travel too: module
+    /// `map_slider`);
     /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when the columns
     /// cannot be allocated; [`Error::Cancelled`](crate::Error::Cancelled).
     pub fn solution_map(
@@ -240,15 +239,11 @@ impl Filemon {
         })
     }
 
-    /// What the map is computed for; a driven slider with obstacles or an
-    /// envelope is refused (module `map_slider`).
+    /// What the map is computed for.
     fn map_context(&self, grid: &Grid, options: &CheckedOptions) -> Result<MapContext> {
         let varying = match self.driven() {
             DyadKind::Revolute(driven) => Varying::Driving { driven },
-            DyadKind::Slider(driven) => {
-                crate::design::map_slider::check_slider_options(options)?;
-                Varying::DrivingSlider { driven }
-            }
+            DyadKind::Slider(driven) => Varying::DrivingSlider { driven },
             // A Filemon is never built with an inverted driven dyad
             // (`FilemonLines::new` refuses it); say so rather than assume.
             DyadKind::Inverted(_) => {

@@ -30,8 +30,10 @@
 //! [`min_grashof_margin`](crate::DesignLimits::min_grashof_margin) bounds
 //! the distance from the slider-crank's change points
 //! ([`SliderCrank::rotatability_margin`]). A base plate holds `A0`;
-//! obstacles and an envelope are checked over a four-bar's travel and are
-//! refused with a driven slider.
+//! obstacles and an envelope are checked over the slider-crank's travel:
+//! the crank, the coupler (and its triangle with the coupler point, for the
+//! envelope) and the slider's block on its guide, capsules of the links'
+//! width (`design::constraints`, "A slider-crank over its travel").
 
 use nalgebra::Point2;
 
@@ -39,7 +41,6 @@ use crate::design::MapContext;
 use crate::design::columns::{ColumnsOut, Sample};
 use crate::design::judge::{Sampler, fill};
 use crate::design::map::Varying;
-use crate::design::options::CheckedOptions;
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result};
 use crate::geom::Grid;
@@ -61,19 +62,6 @@ impl SliderCrank {
         let (r, l, e) = (self.crank(), self.coupler(), self.offset());
         (l - r - e).abs().min((l - r + e).abs()) / (r + l + e.abs())
     }
-}
-
-/// Refuses what a driven slider's map does not check: obstacles and an
-/// envelope.
-pub(crate) fn check_slider_options(options: &CheckedOptions) -> Result<()> {
-    if options.prepared().checks_motion() {
-        return Err(InvalidInput::DrivenKind {
-            what: "the solution map's obstacles and envelope (checked over a four-bar's travel)",
-            found: "slider",
-        }
-        .into());
-    }
-    Ok(())
 }
 
 /// The slider-crank of candidate driving center `a0` with the driven

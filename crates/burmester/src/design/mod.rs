@@ -79,7 +79,7 @@ pub use drive::{
 pub use limits::{DesignLimits, InputRequirement};
 pub use map::{MapContext, SolutionMap, Varying};
 pub use pairs::{Pair, PairContext, PairMap};
-pub use rank::{Pivot, RankBy, RankColumns};
+pub use rank::{Pivot, PivotLinkage, RankBy, RankColumns, SliderPivot};
 pub use search::ActuatorSearch;
 pub use search::{Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, SearchPoint};
 pub use space::{PivotRegion, Space};

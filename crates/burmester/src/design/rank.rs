@@ -11,8 +11,8 @@ use crate::design::{Columns, MapContext, SolutionMap, Varying};
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result, in_range, out_of_memory, try_push, try_vec};
 use crate::geom::Grid;
-use crate::synthesis::SynthesizedFourBar;
 use crate::synthesis::three::Filemon;
+use crate::synthesis::{SynthesizedFourBar, SynthesizedSliderCrank};
 use crate::tolerance;
 
 /// What a ranking of pivots orders by.
@@ -116,19 +116,22 @@ impl FromStr for RankBy {
     }
 }
 
-/// A candidate pivot of a solution map with its linkage.
+/// A candidate pivot of a solution map with its linkage: a
+/// [`SynthesizedFourBar`] (the default), or for a map whose driven dyad is
+/// a slider a [`SynthesizedSliderCrank`] ([`SliderPivot`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pivot {
+pub struct Pivot<L = SynthesizedFourBar> {
     /// The candidate center point.
     pub center: Point2<f64>,
     /// Its sample `(j, i)`: row `j` (for `y_j`), column `i` (for `x_i`).
     pub index: (usize, usize),
     /// The complete linkage, with its figures.
-    pub linkage: SynthesizedFourBar,
+    pub linkage: L,
     /// Its signed margin (see [`MapContext::margin`]).
     pub margin: f64,
     /// The linkage's size relative to the task's
-    /// ([`SynthesizedFourBar::size`] over [`Task::span`](crate::Task::span)).
+    /// ([`SynthesizedFourBar::size`] or [`SynthesizedSliderCrank::size`]
+    /// over [`Task::span`](crate::Task::span)).
     pub size_ratio: f64,
     /// Its score by the ranking (see [`RankBy::score`]; the margin for
     /// [`RankBy::Margin`], the minimum transmission angle for
@@ -137,6 +140,11 @@ pub struct Pivot {
     /// What ranked it.
     pub ranked_by: RankBy,
 }
+
+/// A candidate driving pivot of a solution map whose driven dyad is a
+/// slider, with its slider-crank
+/// ([`MapContext::best_pivots_with`]).
+pub type SliderPivot = Pivot<SynthesizedSliderCrank>;
 
 /// The columns a ranking reads (they may live outside the core, for
 /// example in NumPy arrays).
@@ -235,6 +243,34 @@ impl SolutionMap {
     pub fn pareto_front(&self) -> Result<Vec<Pivot>> {
         self.best_pivots(usize::MAX, Some(0.0), RankBy::Pareto)
     }
+
+    /// The `k` best candidates of a map with a driven slider, best first,
+    /// each with its slider-crank (see
+    /// [`MapContext::best_pivots_with`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`MapContext::best_pivots_with`].
+    pub fn best_slider_pivots(
+        &self,
+        k: usize,
+        min_separation: Option<f64>,
+        rank_by: RankBy,
+    ) -> Result<Vec<SliderPivot>> {
+        let columns = self.rank_columns();
+        let control = Control::new();
+        (self.context).best_pivots_with(k, min_separation, rank_by, columns, &control)
+    }
+
+    /// The whole Pareto front of a map with a driven slider (as
+    /// [`pareto_front`](Self::pareto_front)), each with its slider-crank.
+    ///
+    /// # Errors
+    ///
+    /// As [`MapContext::best_pivots_with`].
+    pub fn slider_pareto_front(&self) -> Result<Vec<SliderPivot>> {
+        self.best_slider_pivots(usize::MAX, Some(0.0), RankBy::Pareto)
+    }
 }
 
 impl MapContext {
@@ -288,30 +324,92 @@ impl MapContext {
 
     /// [`best_pivots`](Self::best_pivots) following `control`: the cancel
     /// flag is checked every few thousand samples and candidates; progress
-    /// is not reported.
+    /// is not reported. Its pivots carry the linkage `L` of the map's
+    /// driven kind: a [`SynthesizedFourBar`] ([`Pivot`]) for a driven
+    /// crank, a [`SynthesizedSliderCrank`] ([`SliderPivot`]) for a driven
+    /// slider, ranked the same way on the slider-crank's columns (module
+    /// `map_slider`: the transmission angle between the coupler and the
+    /// guide's normal over the travel, the size ratio of
+    /// [`SynthesizedSliderCrank::size`], the link ratio of crank and
+    /// coupler; every [`RankBy`] reads columns a slider-crank has, and the
+    /// margin is the distance to the slider's transformed Filemon conic).
     ///
     /// # Errors
     ///
     /// As [`best_pivots`](Self::best_pivots);
-    /// [`Error::Cancelled`](crate::Error::Cancelled).
-    pub fn best_pivots_with(
+    /// [`Error::Cancelled`](crate::Error::Cancelled);
+    /// [`InvalidInput::DrivenKind`] for pivots of the other kind than the
+    /// map's driven dyad (naming the ranking to use instead).
+    pub fn best_pivots_with<L: PivotLinkage>(
         &self,
         k: usize,
         min_separation: Option<f64>,
         rank_by: RankBy,
         columns: RankColumns<'_>,
         control: &Control<'_>,
-    ) -> Result<Vec<Pivot>> {
-        if let Varying::DrivingSlider { .. } = self.varying {
+    ) -> Result<Vec<Pivot<L>>> {
+        let is_slider = matches!(self.varying, Varying::DrivingSlider { .. });
+        if is_slider != L::SLIDER {
             return Err(InvalidInput::DrivenKind {
-                what: "best_pivots (a Pivot carries a four-bar)",
-                found: "slider",
+                what: if L::SLIDER {
+                    "best_slider_pivots (a map with a driven crank: rank it by best_pivots)"
+                } else {
+                    "best_pivots (its Pivot carries a four-bar; rank a map with a driven slider \
+                     by best_slider_pivots)"
+                },
+                found: if is_slider { "slider" } else { "revolute" },
             }
             .into());
         }
-        best_with(self, k, min_separation, rank_by, columns, control)
+        let ranked = Ranked(self, core::marker::PhantomData::<L>);
+        best_with(&ranked, k, min_separation, rank_by, columns, control)
     }
 }
+
+/// The linkage a ranked [`Pivot`] of a solution map carries: a
+/// [`SynthesizedFourBar`] (a driven crank) or a [`SynthesizedSliderCrank`]
+/// (a driven slider). Sealed: implemented for those two only.
+pub trait PivotLinkage: Sized + sealed::Sealed {
+    /// Whether it is the linkage of a map with a driven slider.
+    const SLIDER: bool;
+    /// The linkage of sample `s` of the map `ctx`; `None` for an invalid
+    /// sample.
+    #[doc(hidden)]
+    fn of_sample(ctx: &MapContext, s: usize) -> Option<Self>;
+    /// Its size (over [`Task::span`](crate::Task::span): the size ratio).
+    #[doc(hidden)]
+    fn linkage_size(&self) -> f64;
+}
+
+mod sealed {
+    /// Seals [`PivotLinkage`](super::PivotLinkage).
+    pub trait Sealed {}
+    impl Sealed for crate::synthesis::SynthesizedFourBar {}
+    impl Sealed for crate::synthesis::SynthesizedSliderCrank {}
+}
+
+impl PivotLinkage for SynthesizedFourBar {
+    const SLIDER: bool = false;
+    fn of_sample(ctx: &MapContext, s: usize) -> Option<Self> {
+        ctx.linkage(s).ok()
+    }
+    fn linkage_size(&self) -> f64 {
+        self.size()
+    }
+}
+
+impl PivotLinkage for SynthesizedSliderCrank {
+    const SLIDER: bool = true;
+    fn of_sample(ctx: &MapContext, s: usize) -> Option<Self> {
+        ctx.slider_crank(s).ok()
+    }
+    fn linkage_size(&self) -> f64 {
+        self.size()
+    }
+}
+
+/// A map ranked into pivots carrying the linkage `L`.
+struct Ranked<'a, L>(&'a MapContext, core::marker::PhantomData<L>);
 
 /// What the rankings of a map need of its context: the pivot map's
 /// ([`MapContext`]) and the pair map's
@@ -350,43 +448,49 @@ impl Offer<'_> {
     /// The sample's `(row, column)` on a grid of `nx` columns, its margin
     /// and the size ratio of its linkage `l` on a task of span `span`.
     pub(crate) fn placed(&self, nx: usize, l: &SynthesizedFourBar, span: f64) -> Placed {
-        ((self.s / nx, self.s % nx), (self.margin)(), l.size() / span)
+        self.placed_size(nx, l.size(), span)
+    }
+
+    /// As [`placed`](Self::placed) for a linkage of size `size`.
+    pub(crate) fn placed_size(&self, nx: usize, size: f64, span: f64) -> Placed {
+        ((self.s / nx, self.s % nx), (self.margin)(), size / span)
     }
 }
 
 /// What [`Offer::placed`] gives: the index, the margin, the size ratio.
 pub(crate) type Placed = ((usize, usize), f64, f64);
 
-impl RankedContext for MapContext {
-    type Item = Pivot;
+impl<L: PivotLinkage> RankedContext for Ranked<'_, L> {
+    type Item = Pivot<L>;
     const WHAT: &'static str = "the best pivots";
 
     fn grid(&self) -> &Grid {
-        &self.grid
+        &self.0.grid
     }
 
     fn filemon(&self) -> Option<Option<Filemon>> {
-        match self.varying {
+        let ctx = self.0;
+        match ctx.varying {
             Varying::Driving { .. } | Varying::DrivingSlider { .. } => {
-                Some(Filemon::new(&self.task, self.varying.fixed()).ok())
+                Some(Filemon::new(&ctx.task, ctx.varying.fixed()).ok())
             }
             Varying::Driven { .. } => None,
         }
     }
 
-    fn item(&self, o: &Offer<'_>) -> Option<Pivot> {
-        let linkage = self.linkage(o.s).ok()?;
-        let (index, margin, size_ratio) = o.placed(self.grid.nx(), &linkage, self.task.span());
-        let (score, ranked_by) = (o.score, o.rank_by);
-        let center = self.point(o.s);
+    fn item(&self, o: &Offer<'_>) -> Option<Pivot<L>> {
+        let ctx = self.0;
+        let linkage = L::of_sample(ctx, o.s)?;
+        let (index, margin, size_ratio) =
+            o.placed_size(ctx.grid.nx(), linkage.linkage_size(), ctx.task.span());
         Some(Pivot {
-            center,
+            center: ctx.point(o.s),
             index,
             linkage,
             margin,
             size_ratio,
-            score,
-            ranked_by,
+            score: o.score,
+            ranked_by: o.rank_by,
         })
     }
 }
