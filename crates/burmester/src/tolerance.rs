@@ -367,6 +367,19 @@ pub const BURMESTER_ROUNDING: f64 = 64.0;
 /// near the task. Only the wording depends on it.
 pub const BURMESTER_FAR_FRAME: f64 = 1e3;
 
+/// Burmester points within this many task sizes of the poses' centroid are
+/// "near": an elimination of five poses is taken only when it lists at
+/// least as many near points (with multiplicity) as a better conditioned
+/// choice of the shared poses verified as distinct near points while losing
+/// other roots (a badly conditioned choice can find fewer roots, or none,
+/// and look clean). Farther out a point is known only to its distance
+/// squared times the rounding (a complex pair `1.2` task sizes off the real
+/// plane `1e6` task sizes out passes the concyclicity check as two real
+/// points in some choices), and a far point and a slider are within
+/// rounding of each other, so they do not count: `1e4`, the distance beyond
+/// which the fuzz target's frame check does not compare points either.
+pub const BURMESTER_NEAR: f64 = 1e4;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -214,7 +214,16 @@ impl FivePositions {
             }
         }
         pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
-        let mut fallback: Option<(usize, Vec<Dyad>, Vec<BurmesterSlider>)> = None;
+        // The answer: the first clean choice (every root a point, an even
+        // count of at most four) that lists at least as many points as an
+        // earlier (better conditioned) choice verified as distinct points
+        // within `BURMESTER_NEAR` task sizes while losing others:
+        // those points exist (each passed `polish`), so a later choice that
+        // finds fewer, none at all for a badly conditioned one, lost them
+        // too, within its rounding, and is not clean.
+        let mut taken: Option<(Vec<Dyad>, Vec<BurmesterSlider>)> = None;
+        let mut any = false;
+        let mut verified = 0;
         'choices: for &(_, i, j) in &pairs {
             let others: Vec<usize> = (0..5).filter(|&k| k != i && k != j).collect();
             for r in 0..3 {
@@ -225,7 +234,8 @@ impl FivePositions {
                 let Some(elim) = Elimination::new(&sub) else {
                     continue;
                 };
-                let (points, sliders, lost) = elim.points(&sub, &motion)?;
+                any = true;
+                let (points, sliders, lost, distinct) = elim.points(&sub, &motion)?;
                 // Two cubics meet in nine points: `Q`, `P13`, `P23`, the two
                 // circular points and at most four Burmester points. More
                 // (double roots of the resultant declared within a band wide
@@ -233,41 +243,48 @@ impl FivePositions {
                 // as a finite point and a slider) is this elimination's
                 // rounding, not an answer.
                 let total = points.len() + sliders.len();
-                let clean = lost == 0 && total % 2 == 0 && total <= MAX_POINTS;
-                if fallback.as_ref().is_none_or(|f| lost < f.0) || clean {
-                    fallback = Some((lost, points, sliders));
+                if total > MAX_POINTS {
+                    continue;
                 }
-                if clean {
+                let near = points
+                    .iter()
+                    .filter(|d| {
+                        (d.center - motion.origin).norm()
+                            <= tolerance::BURMESTER_NEAR * motion.scale
+                    })
+                    .count();
+                if lost == 0 && total % 2 == 0 && near >= verified {
+                    taken = Some((points, sliders));
                     break 'choices;
                 }
+                verified = verified.max(distinct);
             }
         }
-        if let Some((lost, points, sliders)) = &fallback {
-            let total = points.len() + sliders.len();
-            if *lost > 0 || total % 2 == 1 || total > MAX_POINTS {
-                // Poses given far from the origin for their size carry the
-                // rounding of their coordinates (`eps` of them), which can
-                // decide two nearly merging points (real, or a complex pair):
-                // say so, and what to change.
-                return Err(errors::unresolved(
-                    if motion.data_rounding.0 > tolerance::BURMESTER_FAR_FRAME {
-                        "from every choice of the shared poses a root of the elimination gives \
-                         no Burmester point, or the count with multiplicity is odd or above \
-                         four; the poses lie far from the origin for their size, and the \
-                         rounding of their coordinates decides these points: give them \
-                         relative to a point near the task (such as its centroid)"
-                    } else {
-                        "from every choice of the shared poses a root of the elimination gives \
-                         no Burmester point, or the count with multiplicity is odd or above four"
-                    },
-                ));
-            }
-        }
-        let Some((_, mut points, sliders)) = fallback else {
+        if !any {
             return Err(errors::infinitely_many(
                 "the center-point curves of every two four-pose subsets that share three poses \
                  have a common component (a curve of Burmester centers, or the line at \
                  infinity: a family of sliders)",
+            ));
+        }
+        let Some((mut points, sliders)) = taken else {
+            // Poses given far from the origin for their size carry the
+            // rounding of their coordinates (`eps` of them), which can
+            // decide two nearly merging points (real, or a complex pair):
+            // say so, and what to change.
+            return Err(errors::unresolved(
+                if motion.data_rounding.0 > tolerance::BURMESTER_FAR_FRAME {
+                    "from every choice of the shared poses a root of the elimination gives no \
+                     Burmester point, or the count with multiplicity is odd or above four, or \
+                     below what a better conditioned choice verified; the poses lie far from \
+                     the origin for their size, and the rounding of their coordinates decides \
+                     these points: give them relative to a point near the task (such as its \
+                     centroid)"
+                } else {
+                    "from every choice of the shared poses a root of the elimination gives no \
+                     Burmester point, or the count with multiplicity is odd or above four, or \
+                     below what a better conditioned choice verified"
+                },
             ));
         };
         points.sort_by(|a, b| {
@@ -659,21 +676,42 @@ impl Elimination {
     /// The Burmester points and sliders of this elimination (`motion` the
     /// task's own), each finished on the four circle equations and checked
     /// ([`polish`]), with the count with multiplicity of the roots that gave
-    /// none (lost).
+    /// none (lost) and the count of distinct finite points found within
+    /// [`tolerance::BURMESTER_NEAR`] task sizes (a double point listed twice
+    /// counts once: only its place is verified; a far point or a slider may
+    /// be the rounding of a complex pair or of each other).
     fn points(
         &self,
         sub: &LocalMotion,
         motion: &LocalMotion,
-    ) -> Result<(Vec<Dyad>, Vec<BurmesterSlider>, usize)> {
+    ) -> Result<(Vec<Dyad>, Vec<BurmesterSlider>, usize, usize)> {
         let (finite, infinite) = self.solve()?;
         let mut points = Vec::new();
         let mut lost = 0;
+        let mut distinct = 0;
+        // Two roots of the resultant are two directions from `Q`: they
+        // cannot be one Burmester point. A point that another root already
+        // gave (closer than a split pair may be) is that root's, and this
+        // root gave none.
+        let known = |points: &[Dyad], d: &Dyad| {
+            let near = 0.5 * DOUBLE_REACH * (motion.scale + (d.center - motion.origin).norm());
+            points.iter().any(|p| (p.center - d.center).norm() <= near)
+        };
+        let near = |d: &Dyad| {
+            (d.center - motion.origin).norm() <= tolerance::BURMESTER_NEAR * motion.scale
+        };
         for (g0, mult) in finite {
             let g0 = motion.local_of(sub.global_of(g0));
             match polish(motion, g0, mult)? {
-                Polished::One(dyad) => points.extend(core::iter::repeat_n(dyad, mult)),
-                Polished::Pair(a, b) => points.extend([a, b]),
-                Polished::None => lost += mult,
+                Polished::One(dyad) if !known(&points, &dyad) => {
+                    distinct += usize::from(near(&dyad));
+                    points.extend(core::iter::repeat_n(dyad, mult));
+                }
+                Polished::Pair(a, b) if !known(&points, &a) && !known(&points, &b) => {
+                    distinct += usize::from(near(&a)) + usize::from(near(&b));
+                    points.extend([a, b]);
+                }
+                _ => lost += mult,
             }
         }
         let mut sliders = Vec::new();
@@ -688,7 +726,7 @@ impl Elimination {
                 None => lost += mult,
             }
         }
-        Ok((points, sliders, lost))
+        Ok((points, sliders, lost, distinct))
     }
 
     /// The resultant at `w` from the forms' values there (more accurate
