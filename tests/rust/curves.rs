@@ -3376,7 +3376,7 @@ fn issue24_a_double_root_that_is_two_real_points_gives_both() {
 /// The merging task of the test above moved by `(-3e6, 2e6)`: the rounding
 /// of the moved coordinates (4.7e-10) makes its two real points a complex
 /// pair `1.7e-5` off the real plane (exact reference,
-/// fuzz/reference/far_frames.py: `-0.69599053047967283 +- 1.7172581309181425e-5 i`,
+/// `fuzz/reference/far_frames.py`: `-0.69599053047967283 +- 1.7172581309181425e-5 i`,
 /// `2.6694152929435544 +- 2.7256021138119819e-5 i` relative to the offset,
 /// and the pair `0.278` off as given): no real Burmester point. The
 /// library, which lists a complex pair within rounding as a double point,
@@ -3410,7 +3410,7 @@ fn issue24_a_far_frame_that_makes_a_merging_pair_complex_is_refused_with_what_to
 /// `point-not-found-in-another-frame-d1f9937d` and `-f5e30d14`), and 2 where
 /// it has four (`-c79b068d`). Now a clean choice must list at least the
 /// near points a better one verified. References: the exact elimination of
-/// the float tasks, fuzz/reference/class_c_fixed.py (sympy, mpmath at 60
+/// the float tasks, `fuzz/reference/class_c_fixed.py` (sympy, mpmath at 60
 /// digits; the other two common points a complex pair, 0.3 and 31 task
 /// sizes off the real plane).
 #[test]
@@ -3429,11 +3429,7 @@ fn issue24_a_choice_that_lost_roots_is_not_preferred() {
             -2.220446049250313e-16,
         ),
         (2.201099952609375, -2.201100126609375, 0.0),
-        (
-            -4.7390624999999994e-8,
-            -1.2660937499999998e-7,
-            -3.141592653589793,
-        ),
+        (-4.7390624999999994e-8, -1.2660937499999998e-7, -PI),
         (-4.42490323464102e-8, -1.27609375e-7, -1.0),
     ]);
     let d1f9937d_ref = [
@@ -3441,14 +3437,14 @@ fn issue24_a_choice_that_lost_roots_is_not_preferred() {
         Point2::new(1.100_549_951_279_728_5, -1.100_550_127_939_021_4),
     ];
     let f5e30d14 = task(&[
-        (1e-15, -1e-15, -3.141592653589793),
+        (1e-15, -1e-15, -PI),
         (0.0, -2.1692000000000002e-15, -2.169199999977308),
         (2.1854000000000003e-6, -2.1854000000000003e-6, 0.0),
         (3.141592653589793e-15, -1e-15, -1.0),
         (3.141592653589793e-15, 3.970625e-13, 0.0),
     ]);
     let f5e30d14_ref = [
-        Point2::new(6.064_425_392_903_350_1e-16, -3.049_718_026_157_612_1e-15),
+        Point2::new(6.064_425_392_903_35e-16, -3.049_718_026_157_612e-15),
         Point2::new(2.205_607_954_946_681e-6, 2.020_795_375_002_273_5e-8),
     ];
     for (poses, want, tol) in [

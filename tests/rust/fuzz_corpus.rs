@@ -62,7 +62,8 @@ replay_targets!(
 #[ignore]
 fn open_findings() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz/open");
-    let targets: [(&str, fn(&[u8])); 2] = [
+    type Check = fn(&[u8]);
+    let targets: [(&str, Check); 2] = [
         ("curves", checks::curves),
         ("burmester_points", checks::burmester_points),
     ];
