@@ -403,11 +403,14 @@ impl FivePositions {
 
 /// `(max - min) / max` of the crank lengths over the poses.
 fn residual(m: &LocalMotion, dyad: &Dyad) -> f64 {
-    let d: Vec<f64> = (0..m.poses.len())
-        .map(|k| (m.displace(dyad.circle, 0, k) - dyad.center).norm())
-        .collect();
-    let max = d.iter().copied().fold(0.0, f64::max);
-    let min = d.iter().copied().fold(f64::INFINITY, f64::min);
+    spread((0..m.poses.len()).map(|k| (m.displace(dyad.circle, 0, k) - dyad.center).norm()))
+}
+
+/// `(max - min) / max` of the crank lengths `d` (infinite when all vanish).
+fn spread(d: impl Iterator<Item = f64>) -> f64 {
+    let (min, max) = d.fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
     if max > 0.0 {
         (max - min) / max
     } else {
@@ -1004,16 +1007,7 @@ fn split(
 /// rounding of the check is then that of the task's own size, wherever the
 /// task is given).
 fn local_residual(m: &LocalMotion, g: Vector2<f64>, z: Vector2<f64>) -> f64 {
-    let d: Vec<f64> = (0..m.poses.len())
-        .map(|k| (m.form.displace(k, z) - g).norm())
-        .collect();
-    let max = d.iter().copied().fold(0.0, f64::max);
-    let min = d.iter().copied().fold(f64::INFINITY, f64::min);
-    if max > 0.0 {
-        (max - min) / max
-    } else {
-        f64::INFINITY
-    }
+    spread((0..m.poses.len()).map(|k| (m.form.displace(k, z) - g).norm()))
 }
 
 /// Whether the dyad of center `g` and circle point `z` (local, crank-length
