@@ -2101,9 +2101,19 @@ fn five_total(f: &FivePositions) -> usize {
 /// (finite, 0, 2 or 4 with the sliders, concyclic, sliders on a line), and
 /// in another frame (moved, turned, scaled, mirrored) the same count and
 /// the same points apart from any that nearly merge.
-pub fn burmester_points(data: &[u8]) {
+/// The five poses of a `burmester_points` input and the frame it moves
+/// them to (the same bytes as [`burmester_points`] reads).
+pub fn burmester_points_task(data: &[u8]) -> (Vec<Pose>, burmester::Result<Similarity>) {
     let mut inp = Input::new(data);
     let poses = structured_poses(&mut inp, 5);
+    let k = 10f64.powi(i32::from(inp.byte() % 7) - 3);
+    let t = Similarity::new(k, inp.nice(), Vector2::new(inp.nice(), inp.nice()) * k);
+    let t = t.map(|t| if inp.byte() % 2 == 0 { t.mirrored() } else { t });
+    (poses, t)
+}
+
+pub fn burmester_points(data: &[u8]) {
+    let (poses, t) = burmester_points_task(data);
     let five = match FivePositions::new(&poses) {
         Ok(f) => f,
         Err(e) => return message(&e),
@@ -2114,12 +2124,10 @@ pub fn burmester_points(data: &[u8]) {
     if !moderate {
         return;
     }
-    let k = 10f64.powi(i32::from(inp.byte() % 7) - 3);
-    let t = match Similarity::new(k, inp.nice(), Vector2::new(inp.nice(), inp.nice()) * k) {
+    let t = match t {
         Ok(t) => t,
         Err(e) => return message(&e),
     };
-    let t = if inp.byte() % 2 == 0 { t.mirrored() } else { t };
     let moved: Vec<Pose> = poses.iter().map(|q| t.pose(q)).collect();
     let Ok(other) = FivePositions::new(&moved) else {
         return;

@@ -339,6 +339,47 @@ pub fn slider_tolerance(l: f64, h: f64, rho: f64) -> f64 {
     k * e * ((l - h).abs() + (l + h).abs()) + k * k * e * e
 }
 
+// Five poses in far-moved frames (issue 24, fuzz32).
+
+/// The rounding allowance, in `eps` of the coordinates over the crank's
+/// length, of a Burmester point's concyclicity check and of a slider's
+/// collinearity check. The check runs in the task's own frame (origin the
+/// poses' centroid, unit their span: `LocalMotion`), so the coordinates are
+/// those of the task, not of where it is given: in the frame moved by
+/// `(1e6, -1e6)` the global coordinates' `64 eps` allowed a spread of
+/// `7e-8` (a crank of `0.2`) and passed points `2e-4` off two roots `5e-5`
+/// apart, each listed twice (a wrong count). The local positions, crank and
+/// center are each rounded once or twice in forming the spread from the
+/// four displacements (a few `eps` of the coordinates each); 64 leaves the
+/// margin the check had, and the points found are concyclic to about
+/// `1e-14`.
+pub const BURMESTER_ROUNDING: f64 = 64.0;
+
+/// Five poses whose coordinates exceed this many task sizes are "far from
+/// the origin" in the message of an unresolved task: there the rounding of
+/// the coordinates (`eps` of them, over `1e3` of it a `2e-13` task sizes)
+/// moves two nearly merging Burmester points by its square root, about
+/// `5e-7` task sizes and more, and can make a close real pair complex (the
+/// task of `issue24_a_double_root_that_is_two_real_points_gives_both`
+/// moved by `(-3e6, 2e6)`: its two real points `6.3e-5` apart are a complex
+/// pair `1.7e-5` off the real plane after the move's rounding, by the exact
+/// reference). The message then says to give the poses relative to a point
+/// near the task. Only the wording depends on it.
+pub const BURMESTER_FAR_FRAME: f64 = 1e3;
+
+/// Burmester points within this many task sizes of the poses' centroid are
+/// "near": an elimination of five poses is taken only when it lists at
+/// least as many near points (with multiplicity) as a better conditioned
+/// choice of the shared poses verified as distinct near points while losing
+/// other roots (a badly conditioned choice can find fewer roots, or none,
+/// and look clean). Farther out a point is known only to its distance
+/// squared times the rounding (a complex pair `1.2` task sizes off the real
+/// plane `1e6` task sizes out passes the concyclicity check as two real
+/// points in some choices), and a far point and a slider are within
+/// rounding of each other, so they do not count: `1e4`, the distance beyond
+/// which the fuzz target's frame check does not compare points either.
+pub const BURMESTER_NEAR: f64 = 1e4;
+
 #[cfg(test)]
 mod tests {
     use super::*;

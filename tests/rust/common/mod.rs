@@ -78,6 +78,17 @@ pub(crate) fn seed() -> proptest::test_runner::RngSeed {
     }
 }
 
+/// The fixed seed `fixed` for a test pinned to its own draw, or fresh draws
+/// with `BURMESTER_EXPLORE=1` (as [`seed`]).
+#[allow(dead_code)]
+pub(crate) fn seed_or(fixed: u64) -> proptest::test_runner::RngSeed {
+    if std::env::var_os("BURMESTER_EXPLORE").is_some() {
+        proptest::test_runner::RngSeed::Random
+    } else {
+        proptest::test_runner::RngSeed::Fixed(fixed)
+    }
+}
+
 /// `a` wrapped into `(-pi, pi]`.
 #[allow(unused_imports)]
 pub(crate) use burmester::geom::wrap_angle as wrap;

@@ -75,7 +75,6 @@ type Affine = [f64; 3];
 
 impl LinearForm {
     /// `D_1k(z) = R_k z + t_k` (0-based `k`).
-    #[cfg(test)]
     pub(crate) fn displace(&self, k: usize, z: Vector2<f64>) -> Vector2<f64> {
         let (c, s) = self.rot[k];
         rotate_cs(z, c, s) + self.trans[k]

@@ -214,7 +214,16 @@ impl FivePositions {
             }
         }
         pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
-        let mut fallback: Option<(usize, Vec<Dyad>, Vec<BurmesterSlider>)> = None;
+        // The answer: the first clean choice (every root a point, an even
+        // count of at most four) that lists at least as many points as an
+        // earlier (better conditioned) choice verified as distinct points
+        // within `BURMESTER_NEAR` task sizes while losing others:
+        // those points exist (each passed `polish`), so a later choice that
+        // finds fewer, none at all for a badly conditioned one, lost them
+        // too, within its rounding, and is not clean.
+        let mut taken: Option<(Vec<Dyad>, Vec<BurmesterSlider>)> = None;
+        let mut any = false;
+        let mut verified = 0;
         'choices: for &(_, i, j) in &pairs {
             let others: Vec<usize> = (0..5).filter(|&k| k != i && k != j).collect();
             for r in 0..3 {
@@ -225,7 +234,8 @@ impl FivePositions {
                 let Some(elim) = Elimination::new(&sub) else {
                     continue;
                 };
-                let (points, sliders, lost) = elim.points(&sub, &motion)?;
+                any = true;
+                let (points, sliders, lost, distinct) = elim.points(&sub, &motion)?;
                 // Two cubics meet in nine points: `Q`, `P13`, `P23`, the two
                 // circular points and at most four Burmester points. More
                 // (double roots of the resultant declared within a band wide
@@ -233,29 +243,48 @@ impl FivePositions {
                 // as a finite point and a slider) is this elimination's
                 // rounding, not an answer.
                 let total = points.len() + sliders.len();
-                let clean = lost == 0 && total % 2 == 0 && total <= MAX_POINTS;
-                if fallback.as_ref().is_none_or(|f| lost < f.0) || clean {
-                    fallback = Some((lost, points, sliders));
+                if total > MAX_POINTS {
+                    continue;
                 }
-                if clean {
+                let near = points
+                    .iter()
+                    .filter(|d| {
+                        (d.center - motion.origin).norm()
+                            <= tolerance::BURMESTER_NEAR * motion.scale
+                    })
+                    .count();
+                if lost == 0 && total % 2 == 0 && near >= verified {
+                    taken = Some((points, sliders));
                     break 'choices;
                 }
+                verified = verified.max(distinct);
             }
         }
-        if let Some((lost, points, sliders)) = &fallback {
-            let total = points.len() + sliders.len();
-            if *lost > 0 || total % 2 == 1 || total > MAX_POINTS {
-                return Err(errors::unresolved(
-                    "from every choice of the shared poses a root of the elimination gives no \
-                     Burmester point, or the count with multiplicity is odd or above four",
-                ));
-            }
-        }
-        let Some((_, mut points, sliders)) = fallback else {
+        if !any {
             return Err(errors::infinitely_many(
                 "the center-point curves of every two four-pose subsets that share three poses \
                  have a common component (a curve of Burmester centers, or the line at \
                  infinity: a family of sliders)",
+            ));
+        }
+        let Some((mut points, sliders)) = taken else {
+            // Poses given far from the origin for their size carry the
+            // rounding of their coordinates (`eps` of them), which can
+            // decide two nearly merging points (real, or a complex pair):
+            // say so, and what to change.
+            return Err(errors::unresolved(
+                if motion.data_rounding.0 > tolerance::BURMESTER_FAR_FRAME {
+                    "from every choice of the shared poses a root of the elimination gives no \
+                     Burmester point, or the count with multiplicity is odd or above four, or \
+                     below what a better conditioned choice verified; the poses lie far from \
+                     the origin for their size, and the rounding of their coordinates decides \
+                     these points: give them relative to a point near the task (such as its \
+                     centroid)"
+                } else {
+                    "from every choice of the shared poses a root of the elimination gives no \
+                     Burmester point, or the count with multiplicity is odd or above four, or \
+                     below what a better conditioned choice verified"
+                },
             ));
         };
         points.sort_by(|a, b| {
@@ -374,11 +403,14 @@ impl FivePositions {
 
 /// `(max - min) / max` of the crank lengths over the poses.
 fn residual(m: &LocalMotion, dyad: &Dyad) -> f64 {
-    let d: Vec<f64> = (0..m.poses.len())
-        .map(|k| (m.displace(dyad.circle, 0, k) - dyad.center).norm())
-        .collect();
-    let max = d.iter().copied().fold(0.0, f64::max);
-    let min = d.iter().copied().fold(f64::INFINITY, f64::min);
+    spread((0..m.poses.len()).map(|k| (m.displace(dyad.circle, 0, k) - dyad.center).norm()))
+}
+
+/// `(max - min) / max` of the crank lengths `d` (infinite when all vanish).
+fn spread(d: impl Iterator<Item = f64>) -> f64 {
+    let (min, max) = d.fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
     if max > 0.0 {
         (max - min) / max
     } else {
@@ -647,21 +679,42 @@ impl Elimination {
     /// The Burmester points and sliders of this elimination (`motion` the
     /// task's own), each finished on the four circle equations and checked
     /// ([`polish`]), with the count with multiplicity of the roots that gave
-    /// none (lost).
+    /// none (lost) and the count of distinct finite points found within
+    /// [`tolerance::BURMESTER_NEAR`] task sizes (a double point listed twice
+    /// counts once: only its place is verified; a far point or a slider may
+    /// be the rounding of a complex pair or of each other).
     fn points(
         &self,
         sub: &LocalMotion,
         motion: &LocalMotion,
-    ) -> Result<(Vec<Dyad>, Vec<BurmesterSlider>, usize)> {
+    ) -> Result<(Vec<Dyad>, Vec<BurmesterSlider>, usize, usize)> {
         let (finite, infinite) = self.solve()?;
         let mut points = Vec::new();
         let mut lost = 0;
+        let mut distinct = 0;
+        // Two roots of the resultant are two directions from `Q`: they
+        // cannot be one Burmester point. A point that another root already
+        // gave (closer than a split pair may be) is that root's, and this
+        // root gave none.
+        let known = |points: &[Dyad], d: &Dyad| {
+            let near = 0.5 * DOUBLE_REACH * (motion.scale + (d.center - motion.origin).norm());
+            points.iter().any(|p| (p.center - d.center).norm() <= near)
+        };
+        let near = |d: &Dyad| {
+            (d.center - motion.origin).norm() <= tolerance::BURMESTER_NEAR * motion.scale
+        };
         for (g0, mult) in finite {
             let g0 = motion.local_of(sub.global_of(g0));
             match polish(motion, g0, mult)? {
-                Polished::One(dyad) => points.extend(core::iter::repeat_n(dyad, mult)),
-                Polished::Pair(a, b) => points.extend([a, b]),
-                Polished::None => lost += mult,
+                Polished::One(dyad) if !known(&points, &dyad) => {
+                    distinct += usize::from(near(&dyad));
+                    points.extend(core::iter::repeat_n(dyad, mult));
+                }
+                Polished::Pair(a, b) if !known(&points, &a) && !known(&points, &b) => {
+                    distinct += usize::from(near(&a)) + usize::from(near(&b));
+                    points.extend([a, b]);
+                }
+                _ => lost += mult,
             }
         }
         let mut sliders = Vec::new();
@@ -676,7 +729,7 @@ impl Elimination {
                 None => lost += mult,
             }
         }
-        Ok((points, sliders, lost))
+        Ok((points, sliders, lost, distinct))
     }
 
     /// The resultant at `w` from the forms' values there (more accurate
@@ -876,19 +929,21 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
             return Ok(pair);
         }
     }
-    let start = Dyad::new(m.global_of(g0), m.global_of(z0));
-    let mut best = (residual(m, &start), start);
+    // Judged in the task's own frame (local: origin the poses' centroid,
+    // unit their span), so that the check and its rounding allowance do not
+    // depend on where the task is given: moved far out, the global
+    // coordinates' rounding would pass a point between two close roots.
+    let mut best = (local_residual(m, g0, z0), g0, z0);
     if let Some((g, z, _)) = first {
-        let d = Dyad::new(m.global_of(g), m.global_of(z));
         let reach = if mult > 1 { DOUBLE_REACH } else { SINGLE_REACH } * scale;
-        let r = residual(m, &d);
+        let r = local_residual(m, g, z);
         if (g - g0).norm() <= reach && r <= best.0 {
-            best = (r, d);
+            best = (r, g, z);
         }
     }
-    let (r, d) = best;
-    Ok(if accepted(m, &d, r) {
-        Polished::One(d)
+    let (r, g, z) = best;
+    Ok(if accepted(m, g, z, r) {
+        Polished::One(Dyad::new(m.global_of(g), m.global_of(z)))
     } else {
         Polished::None
     })
@@ -939,33 +994,40 @@ fn split(
     {
         return None;
     }
-    let a = Dyad::new(m.global_of(g1), m.global_of(z1));
-    let b = Dyad::new(m.global_of(g2), m.global_of(z2));
-    (accepted(m, &a, residual(m, &a)) && accepted(m, &b, residual(m, &b)))
-        .then_some(Polished::Pair(a, b))
+    (accepted(m, g1, z1, local_residual(m, g1, z1))
+        && accepted(m, g2, z2, local_residual(m, g2, z2)))
+    .then_some(Polished::Pair(
+        Dyad::new(m.global_of(g1), m.global_of(z1)),
+        Dyad::new(m.global_of(g2), m.global_of(z2)),
+    ))
 }
 
-/// Whether the dyad `d` (crank-length spread `r`) passes [`polish`]'s check.
-fn accepted(m: &LocalMotion, d: &Dyad, r: f64) -> bool {
+/// `(max - min) / max` of the crank lengths over the poses of the dyad
+/// with center `g` and circle point `z` in the task's local frame (the
+/// rounding of the check is then that of the task's own size, wherever the
+/// task is given).
+fn local_residual(m: &LocalMotion, g: Vector2<f64>, z: Vector2<f64>) -> f64 {
+    spread((0..m.poses.len()).map(|k| (m.form.displace(k, z) - g).norm()))
+}
+
+/// Whether the dyad of center `g` and circle point `z` (local, crank-length
+/// spread `r` from [`local_residual`]) passes [`polish`]'s check.
+fn accepted(m: &LocalMotion, g: Vector2<f64>, z: Vector2<f64>, r: f64) -> bool {
     // The crank-length spread of a point `D` task sizes out along the
     // normal of a line through the positions is about `(L / D)^2` (`L` the
     // span of the positions): far out, a Burmester point is told from a
-    // stretch of line only that well, and rounding allows `64 eps` of the
-    // coordinates over the crank's length.
-    let positions: Vec<Point2<f64>> = (0..m.poses.len())
-        .map(|k| m.displace(d.circle, 0, k))
-        .collect();
+    // stretch of line only that well, and rounding allows
+    // [`tolerance::BURMESTER_ROUNDING`] `eps` of the local coordinates (the
+    // task's own scale, not where it is given) over the crank's length.
+    let positions: Vec<Vector2<f64>> = (0..m.poses.len()).map(|k| m.form.displace(k, z)).collect();
     let span = positions
         .iter()
         .flat_map(|a| positions.iter().map(move |b| (a - b).norm()))
         .fold(0.0, f64::max);
-    let radius = (d.center - d.circle).norm().max(span);
-    let coords = positions
-        .iter()
-        .map(|p| p.coords.norm())
-        .fold(d.center.coords.norm(), f64::max);
+    let radius = (g - z).norm().max(span);
+    let coords = positions.iter().map(|p| p.norm()).fold(g.norm(), f64::max);
     let allowed = (tolerance::BURMESTER_RESIDUAL * (span / radius).powi(2))
-        .max(64.0 * f64::EPSILON * (1.0 + coords / radius));
+        .max(tolerance::BURMESTER_ROUNDING * f64::EPSILON * (1.0 + coords / radius));
     r <= allowed
 }
 
@@ -973,7 +1035,7 @@ fn accepted(m: &LocalMotion, d: &Dyad, r: f64) -> bool {
 /// `u`), checked as [`polish`] checks a finite point: the circle point's
 /// five positions must lie on a line normal to `u` within
 /// [`tolerance::BURMESTER_RESIDUAL`] of their span (or the rounding of their
-/// coordinates, `64 eps`). The circle point is solved from two of the four
+/// local coordinates, [`tolerance::BURMESTER_ROUNDING`] `eps`). The circle point is solved from two of the four
 /// conditions at infinity; those two alone do not make its positions
 /// collinear, and a root of the resultant within rounding of a common
 /// asymptotic direction (a near-degenerate task) can give a circle point
@@ -984,14 +1046,14 @@ fn check_slider(m: &LocalMotion, z: Vector2<f64>, u: Vector2<f64>) -> Option<Bur
     if !(circle.x.is_finite() && circle.y.is_finite() && u.x.is_finite() && u.y.is_finite()) {
         return None;
     }
-    let p: Vec<Point2<f64>> = (0..m.poses.len())
-        .map(|k| m.displace(circle, 0, k))
-        .collect();
+    // In the task's own frame (local), as `accepted`: the allowance is the
+    // rounding of the task's coordinates, not of where it is given.
+    let p: Vec<Vector2<f64>> = (0..m.poses.len()).map(|k| m.form.displace(k, z)).collect();
     let span = p
         .iter()
         .flat_map(|a| p.iter().map(move |b| (a - b).norm()))
         .fold(0.0, f64::max);
-    let coords = p.iter().map(|q| q.coords.norm()).fold(0.0, f64::max);
+    let coords = p.iter().map(|q| q.norm()).fold(0.0, f64::max);
     // The line's normal from the positions themselves (the root's direction
     // is known only to the resultant's conditioning): from the first
     // position to the farthest, which must be `u`'s within the loose
@@ -1012,7 +1074,8 @@ fn check_slider(m: &LocalMotion, z: Vector2<f64>, u: Vector2<f64>) -> Option<Bur
         .iter()
         .map(|q| (q - p[0]).dot(&n).abs())
         .fold(0.0, f64::max);
-    let allowed = (tolerance::BURMESTER_RESIDUAL * span).max(64.0 * f64::EPSILON * coords);
+    let allowed = (tolerance::BURMESTER_RESIDUAL * span)
+        .max(tolerance::BURMESTER_ROUNDING * f64::EPSILON * coords);
     (off <= allowed).then_some(BurmesterSlider {
         circle,
         direction: n,
