@@ -20,6 +20,7 @@ from typing import (
 import numpy as np
 import numpy.typing as npt
 from typing_extensions import Unpack
+from typing import type_check_only
 
 __all__ = [
     "Actuator",
@@ -3266,32 +3267,22 @@ class SliderCrank:
     def _repr_png_(self) -> Optional[bytes]:
         """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
 
-@final
-class SynthesizedSliderCrank:
-    """A slider-crank built from a driving crank ``(A0, A1)`` and a driven
-    slider ``(C1, u)`` of a task (:meth:`Task.slider_crank`); driving it to
-    ``input_angles[k]`` in ``modes[k]`` places the task's coupler point and
-    angle at pose ``k + 1``."""
+@type_check_only
+class _CrankSynthesized:
+    """What :class:`SynthesizedSliderCrank` and
+    :class:`SynthesizedInvertedSliderCrank` share: the properties of a
+    linkage of a task driven by a crank (in the stub only: the native
+    classes define each; the reference pages list them with each class)."""
 
-    @property
-    def linkage(self) -> SliderCrank:
-        """The linkage (crank pivot ``A0``, the guide through ``C1``)."""
     @property
     def driving(self) -> Tuple[Point, Point]:
         """``(A0, A1)``."""
-    @property
-    def driven(self) -> Tuple[Point, Point]:
-        """``(C1, u)``: the slider's pin at pose 1 and the guide's unit
-        direction."""
     @property
     def input_angles(self) -> list[float]:
         """The crank angle at each pose, in (-pi, pi]."""
     @property
     def modes(self) -> list[Optional[Mode]]:
         """The assembly mode at each pose (None at a toggle)."""
-    @property
-    def slider_positions(self) -> list[float]:
-        """The slider's position at each pose."""
     @property
     def coupler_point(self) -> Point:
         """The task's coupler point in the coupler frame."""
@@ -3310,14 +3301,6 @@ class SynthesizedSliderCrank:
         """The smallest transmission angle over the travel, degrees; None
         without a travel."""
     @property
-    def stroke_used(self) -> Optional[float]:
-        """How far the slider runs along its guide over the travel; None
-        without a travel or with a branch defect."""
-    @property
-    def size(self) -> float:
-        """Crank, coupler, the two other sides of the coupler triangle, the
-        offset and the guide length the slider runs on."""
-    @property
     def size_ratio(self) -> float:
         """:attr:`size` over the task's :attr:`Task.span`."""
     @property
@@ -3335,6 +3318,32 @@ class SynthesizedSliderCrank:
     @property
     def travel_stops(self) -> Optional[list[float]]:
         """The crank angle at each pose along the travel, unwrapped, or None."""
+
+@final
+class SynthesizedSliderCrank(_CrankSynthesized):
+    """A slider-crank built from a driving crank ``(A0, A1)`` and a driven
+    slider ``(C1, u)`` of a task (:meth:`Task.slider_crank`); driving it to
+    ``input_angles[k]`` in ``modes[k]`` places the task's coupler point and
+    angle at pose ``k + 1``."""
+
+    @property
+    def linkage(self) -> SliderCrank:
+        """The linkage (crank pivot ``A0``, the guide through ``C1``)."""
+    @property
+    def driven(self) -> Tuple[Point, Point]:
+        """``(C1, u)``: the slider's pin at pose 1 and the guide's unit
+        direction."""
+    @property
+    def slider_positions(self) -> list[float]:
+        """The slider's position at each pose."""
+    @property
+    def stroke_used(self) -> Optional[float]:
+        """How far the slider runs along its guide over the travel; None
+        without a travel or with a branch defect."""
+    @property
+    def size(self) -> float:
+        """Crank, coupler, the two other sides of the coupler triangle, the
+        offset and the guide length the slider runs on."""
     def travel_angles(self, samples: int) -> FloatArray:
         """``samples`` crank angles evenly spaced over the travel, both ends
         included (2 to 2**20; empty without a travel)."""
@@ -3486,7 +3495,7 @@ class InvertedSliderCrank:
         """A picture for Jupyter (:mod:`burmester._display`): PNG bytes, or None without matplotlib."""
 
 @final
-class SynthesizedInvertedSliderCrank:
+class SynthesizedInvertedSliderCrank(_CrankSynthesized):
     """An inverted slider-crank built from a driving crank ``(A0, A1)`` and
     an inverted slider ``(S, d)`` of a task
     (:meth:`Task.inverted_slider_crank`); driving it to ``input_angles[k]``
@@ -3497,37 +3506,11 @@ class SynthesizedInvertedSliderCrank:
     def linkage(self) -> InvertedSliderCrank:
         """The linkage (crank pivot ``A0``, the swivel ``S``, the offset)."""
     @property
-    def driving(self) -> Tuple[Point, Point]:
-        """``(A0, A1)``."""
-    @property
     def driven(self) -> Tuple[Point, Point]:
         """``(S, d)``: the swivel and the slot's unit direction at pose 1."""
     @property
-    def input_angles(self) -> list[float]:
-        """The crank angle at each pose, in (-pi, pi]."""
-    @property
-    def modes(self) -> list[Optional[Mode]]:
-        """The assembly mode at each pose (None at a toggle)."""
-    @property
     def slot_positions(self) -> list[float]:
         """The slot position at each pose."""
-    @property
-    def coupler_point(self) -> Point:
-        """The task's coupler point in the coupler frame."""
-    @property
-    def coupler_angle_offset(self) -> float:
-        """Task coupler angle minus the linkage's theta3."""
-    @property
-    def direction(self) -> Direction:
-        """The crank rotation that carries the coupler through the poses in
-        order (``"none"``: an order defect or poses on two circuits)."""
-    @property
-    def one_circuit(self) -> bool:
-        """Whether the crank angles at the poses lie on one arc of its range."""
-    @property
-    def min_transmission_deg(self) -> Optional[float]:
-        """The smallest transmission angle over the travel, degrees; None
-        without a travel."""
     @property
     def stroke_used(self) -> Optional[float]:
         """How far the block runs along the slot over the travel; None
@@ -3540,24 +3523,6 @@ class SynthesizedInvertedSliderCrank:
     def size(self) -> float:
         """Crank, ground, the coupler point's distances from the crank pin
         and the swivel at pose 1, and the slot length the block runs on."""
-    @property
-    def size_ratio(self) -> float:
-        """:attr:`size` over the task's :attr:`Task.span`."""
-    @property
-    def branch_free(self) -> bool:
-        """Whether the poses are all in one assembly mode (none at a toggle)."""
-    @property
-    def feasible(self) -> bool:
-        """Branch-free, on one circuit and with a driving direction."""
-    @property
-    def order(self) -> str:
-        """The cyclic order of the crank's positions, ``"1-2-3"``."""
-    @property
-    def travel(self) -> Optional[Tuple[float, float]]:
-        """``(start, span)`` of the crank's travel through the poses, or None."""
-    @property
-    def travel_stops(self) -> Optional[list[float]]:
-        """The crank angle at each pose along the travel, unwrapped, or None."""
     def travel_angles(self, samples: int) -> FloatArray:
         """``samples`` crank angles evenly spaced over the travel, both ends
         included (2 to 2**20; empty without a travel)."""

@@ -20,79 +20,44 @@ pub(crate) type M<S> = <S as Simd>::m64s;
 /// A vector of lanes.
 pub(crate) type V<S> = <S as Simd>::f64s;
 
+/// The methods of [`Ops`] that are one `pulp` operation:
+/// `name(args) -> V or M = pulp_method;` (types `V`, `M` or `f64`).
+macro_rules! lane_ops {
+    (@ty V) => { V<S> };
+    (@ty M) => { M<S> };
+    (@ty f64) => { f64 };
+    ($($(#[$doc:meta])* $name:ident($($arg:ident: $t:ident),*) -> $r:ident = $op:ident;)*) => {
+        $(
+            $(#[$doc])*
+            #[inline(always)]
+            pub(crate) fn $name(self, $($arg: lane_ops!(@ty $t)),*) -> lane_ops!(@ty $r) {
+                self.0.$op($($arg),*)
+            }
+        )*
+    };
+}
+
 impl<S: Simd> Ops<S> {
-    #[inline(always)]
-    pub(crate) fn sp(self, v: f64) -> V<S> {
-        self.0.splat_f64s(v)
-    }
-    #[inline(always)]
-    pub(crate) fn add(self, a: V<S>, b: V<S>) -> V<S> {
-        self.0.add_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn sub(self, a: V<S>, b: V<S>) -> V<S> {
-        self.0.sub_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn mul(self, a: V<S>, b: V<S>) -> V<S> {
-        self.0.mul_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn div(self, a: V<S>, b: V<S>) -> V<S> {
-        self.0.div_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn neg(self, a: V<S>) -> V<S> {
-        self.0.neg_f64s(a)
-    }
-    #[inline(always)]
-    pub(crate) fn abs(self, a: V<S>) -> V<S> {
-        self.0.abs_f64s(a)
-    }
-    #[inline(always)]
-    pub(crate) fn sqrt(self, a: V<S>) -> V<S> {
-        self.0.sqrt_f64s(a)
-    }
-    #[inline(always)]
-    pub(crate) fn lt(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.less_than_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn gt(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.greater_than_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn le(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.less_than_or_equal_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn ge(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.greater_than_or_equal_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn eq(self, a: V<S>, b: V<S>) -> M<S> {
-        self.0.equal_f64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn and(self, a: M<S>, b: M<S>) -> M<S> {
-        self.0.and_m64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn or(self, a: M<S>, b: M<S>) -> M<S> {
-        self.0.or_m64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn xor(self, a: M<S>, b: M<S>) -> M<S> {
-        self.0.xor_m64s(a, b)
-    }
-    #[inline(always)]
-    pub(crate) fn not(self, a: M<S>) -> M<S> {
-        self.0.not_m64s(a)
-    }
-    /// `m ? a : b` per lane.
-    #[inline(always)]
-    pub(crate) fn sel(self, m: M<S>, a: V<S>, b: V<S>) -> V<S> {
-        self.0.select_f64s(m, a, b)
+    lane_ops! {
+        sp(v: f64) -> V = splat_f64s;
+        add(a: V, b: V) -> V = add_f64s;
+        sub(a: V, b: V) -> V = sub_f64s;
+        mul(a: V, b: V) -> V = mul_f64s;
+        div(a: V, b: V) -> V = div_f64s;
+        neg(a: V) -> V = neg_f64s;
+        abs(a: V) -> V = abs_f64s;
+        sqrt(a: V) -> V = sqrt_f64s;
+        lt(a: V, b: V) -> M = less_than_f64s;
+        gt(a: V, b: V) -> M = greater_than_f64s;
+        le(a: V, b: V) -> M = less_than_or_equal_f64s;
+        ge(a: V, b: V) -> M = greater_than_or_equal_f64s;
+        eq(a: V, b: V) -> M = equal_f64s;
+        and(a: M, b: M) -> M = and_m64s;
+        or(a: M, b: M) -> M = or_m64s;
+        xor(a: M, b: M) -> M = xor_m64s;
+        not(a: M) -> M = not_m64s;
+        /// `m ? a : b` per lane.
+        sel(m: M, a: V, b: V) -> V = select_f64s;
     }
     /// The scalar path's `fmax` (`if a > b { a } else { b }`).
     #[inline(always)]
@@ -196,6 +161,20 @@ impl<S: Simd> Lanes for Ops<S> {
     }
 }
 
+/// `Lanes` methods given as a table: `name(args) -> F or M = body;`, the
+/// body an expression of the arguments (the two-lane [`Pair`]'s methods,
+/// each one operation of `wide`).
+macro_rules! lane_fns {
+    ($($name:ident($($arg:ident: $t:ident),*) -> $r:ident = $body:expr;)*) => {
+        $(
+            #[inline(always)]
+            fn $name(self, $($arg: Self::$t),*) -> Self::$r {
+                $body
+            }
+        )*
+    };
+}
+
 /// Two lanes of `wide` on the compiled target (SSE2 on x86-64, NEON on
 /// aarch64): the single [`FourBar::solve`](crate::linkage::FourBar::solve).
 #[derive(Clone, Copy)]
@@ -208,61 +187,21 @@ impl Lanes for Pair {
     fn sp(self, v: f64) -> wide::f64x2 {
         wide::f64x2::splat(v)
     }
-    #[inline(always)]
-    fn add(self, a: Self::F, b: Self::F) -> Self::F {
-        a + b
-    }
-    #[inline(always)]
-    fn sub(self, a: Self::F, b: Self::F) -> Self::F {
-        a - b
-    }
-    #[inline(always)]
-    fn mul(self, a: Self::F, b: Self::F) -> Self::F {
-        a * b
-    }
-    #[inline(always)]
-    fn div(self, a: Self::F, b: Self::F) -> Self::F {
-        a / b
-    }
-    #[inline(always)]
-    fn neg(self, a: Self::F) -> Self::F {
-        -a
-    }
-    #[inline(always)]
-    fn abs(self, a: Self::F) -> Self::F {
-        a.abs()
-    }
-    #[inline(always)]
-    fn sqrt(self, a: Self::F) -> Self::F {
-        a.sqrt()
-    }
-    #[inline(always)]
-    fn lt(self, a: Self::F, b: Self::F) -> Self::M {
-        a.simd_lt(b)
-    }
-    #[inline(always)]
-    fn gt(self, a: Self::F, b: Self::F) -> Self::M {
-        a.simd_gt(b)
-    }
-    #[inline(always)]
-    fn ge(self, a: Self::F, b: Self::F) -> Self::M {
-        a.simd_ge(b)
-    }
-    #[inline(always)]
-    fn eq(self, a: Self::F, b: Self::F) -> Self::M {
-        a.simd_eq(b)
-    }
-    #[inline(always)]
-    fn and(self, a: Self::M, b: Self::M) -> Self::M {
-        a & b
-    }
-    #[inline(always)]
-    fn sel(self, m: Self::M, a: Self::F, b: Self::F) -> Self::F {
-        m.select(a, b)
-    }
-    #[inline(always)]
-    fn sign_negative(self, a: Self::F) -> Self::M {
-        a.is_sign_negative()
+    lane_fns! {
+        add(a: F, b: F) -> F = a + b;
+        sub(a: F, b: F) -> F = a - b;
+        mul(a: F, b: F) -> F = a * b;
+        div(a: F, b: F) -> F = a / b;
+        neg(a: F) -> F = -a;
+        abs(a: F) -> F = a.abs();
+        sqrt(a: F) -> F = a.sqrt();
+        lt(a: F, b: F) -> M = a.simd_lt(b);
+        gt(a: F, b: F) -> M = a.simd_gt(b);
+        ge(a: F, b: F) -> M = a.simd_ge(b);
+        eq(a: F, b: F) -> M = a.simd_eq(b);
+        and(a: M, b: M) -> M = a & b;
+        sel(m: M, a: F, b: F) -> F = m.select(a, b);
+        sign_negative(a: F) -> M = a.is_sign_negative();
     }
 }
 

@@ -113,24 +113,18 @@ pub struct PivotAtlas {
     pub cells: Vec<AtlasCell>,
 }
 
-/// The task, both grids, the limits and constraints, and how many driven
-/// centers have an acceptable driving pivot, not every cell.
-impl core::fmt::Debug for PivotAtlas {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("PivotAtlas")
-            .field("task", &self.task)
-            .field("driven", &self.driven)
-            .field("driving", &self.driving)
-            .field("limits", &self.limits)
-            .field("constraints", &self.constraints)
-            .field("cells", &self.cells.len())
-            .field(
-                "with_acceptable",
-                &self.cells.iter().filter(|c| c.count > 0).count(),
-            )
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The task, both grids, the limits and constraints, and how many driven
+    /// centers have an acceptable driving pivot, not every cell.
+    PivotAtlas, a =>
+    task: a.task,
+    driven: a.driven,
+    driving: a.driving,
+    limits: a.limits,
+    constraints: a.constraints,
+    cells: a.cells.len(),
+    with_acceptable: a.cells.iter().filter(|c| c.count > 0).count(),
+);
 
 impl PivotAtlas {
     /// The branch-free fraction of cell `k`: branch-free driving samples

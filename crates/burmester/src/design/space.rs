@@ -12,8 +12,9 @@ use crate::design::constraints::check_simple_polygon;
 use crate::design::judge::Judge;
 use crate::design::options::CheckedOptions;
 use crate::design::{Constraints, DesignLimits};
-use crate::error::{InvalidInput, Result, finite};
-use crate::geom::Viewport;
+use crate::error::{InvalidInput, Result};
+pub(crate) use crate::geom::segment_distance;
+use crate::geom::{Viewport, finite_bounds};
 use crate::synthesis::Task;
 
 /// Where the fixed pivots of a design may go.
@@ -40,10 +41,13 @@ impl PivotRegion {
     /// xmin"`, ...); [`InvalidInput::OutsideRange`] for an inverted or
     /// empty box (naming `"pivot_box xmax"` or `"pivot_box ymax"`).
     pub fn boxed(xmin: f64, xmax: f64, ymin: f64, ymax: f64) -> Result<Self> {
-        finite("pivot_box xmin", xmin)?;
-        finite("pivot_box xmax", xmax)?;
-        finite("pivot_box ymin", ymin)?;
-        finite("pivot_box ymax", ymax)?;
+        let names = [
+            "pivot_box xmin",
+            "pivot_box xmax",
+            "pivot_box ymin",
+            "pivot_box ymax",
+        ];
+        finite_bounds(names, [xmin, xmax, ymin, ymax])?;
         for (name, lo, hi) in [
             ("pivot_box xmax", xmin, xmax),
             ("pivot_box ymax", ymin, ymax),
@@ -145,18 +149,6 @@ impl PivotRegion {
         }
         Viewport::new(xmin, xmax, ymin, ymax).ok()
     }
-}
-
-/// The distance from `p` to the segment `ab`.
-pub(crate) fn segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
-    let ab = b - a;
-    let len2 = ab.norm_squared();
-    let t = if len2 > 0.0 {
-        ((p - a).dot(&ab) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p - (a + ab * t)).norm()
 }
 
 /// The space a design must fit in (module docs).

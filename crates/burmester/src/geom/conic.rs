@@ -27,7 +27,7 @@ use nalgebra::{Matrix3, Point2, Vector2};
 use parry2d_f64::bounding_volume::Aabb;
 
 use crate::error::{InvalidInput, Result, finite};
-use crate::geom::{Line, LocalFrame, Viewport, cross};
+use crate::geom::{Line, LocalFrame, Viewport, cross, segment_distance};
 
 /// Relative tolerance of the kind tests (parabola, degenerate).
 const KIND_TOLERANCE: f64 = crate::tolerance::CONIC_KIND;
@@ -704,18 +704,6 @@ fn trim(t_of: &impl Fn(f64) -> f64, at: f64, mid: f64, far: f64) -> Option<f64> 
     None
 }
 
-/// Distance from `c` to the segment `a b`.
-fn segment_distance(c: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
-    let ab = b - a;
-    let l2 = ab.norm_squared();
-    let t = if l2 > 0.0 {
-        ((c - a).dot(&ab) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (a + ab * t - c).norm()
-}
-
 /// Real roots `r` of `q(p + r w) = 0`, sorted.
 fn roots_on_line(c: &Conic, p: Vector2<f64>, w: Vector2<f64>) -> Vec<f64> {
     let alpha = c.quad_local(w);
@@ -816,8 +804,12 @@ impl Sampler<'_> {
         let pm = point(sm);
         // Refine where the chord or the midpoint passes near the viewport.
         let reach = 2.0 * self.radius;
-        let relevant =
-            (pm - self.center).norm() <= reach || segment_distance(self.center, p0, p1) <= reach;
+        let relevant = (pm - self.center).norm() <= reach
+            || segment_distance(
+                Point2::from(self.center),
+                Point2::from(p0),
+                Point2::from(p1),
+            ) <= reach;
         if depth < Self::MAX_DEPTH && relevant && pm.iter().all(|v| v.is_finite()) {
             let chord = p1 - p0;
             let len = chord.norm();

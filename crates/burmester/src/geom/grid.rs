@@ -30,6 +30,15 @@ pub struct Viewport {
     pub ymax: f64,
 }
 
+/// Refuses a bound of a box that is not finite, naming it: `names` and
+/// `bounds` in the order `xmin`, `xmax`, `ymin`, `ymax`.
+pub(crate) fn finite_bounds(names: [&'static str; 4], bounds: [f64; 4]) -> Result<()> {
+    for (name, value) in names.into_iter().zip(bounds) {
+        finite(name, value)?;
+    }
+    Ok(())
+}
+
 impl Viewport {
     /// A viewport, validated.
     ///
@@ -38,10 +47,7 @@ impl Viewport {
     /// [`InvalidInput`] when a bound is not finite or `xmin >= xmax` or
     /// `ymin >= ymax`.
     pub fn new(xmin: f64, xmax: f64, ymin: f64, ymax: f64) -> Result<Self> {
-        finite("xmin", xmin)?;
-        finite("xmax", xmax)?;
-        finite("ymin", ymin)?;
-        finite("ymax", ymax)?;
+        finite_bounds(["xmin", "xmax", "ymin", "ymax"], [xmin, xmax, ymin, ymax])?;
         if xmin >= xmax || ymin >= ymax || !(xmax - xmin).is_finite() || !(ymax - ymin).is_finite()
         {
             return Err(InvalidInput::Viewport {

@@ -14,6 +14,7 @@ mod show;
 pub use conic::{Conic, ConicKind};
 pub use cubic::Cubic;
 pub(crate) use frame::{FAR, LocalFrame, local_frame};
+pub(crate) use grid::finite_bounds;
 pub use grid::{Grid, Viewport};
 pub use line::{CircleOrLine, Line};
 pub use pose::{MAX_POSES, PerPose, Pose, Similarity};
@@ -89,6 +90,18 @@ pub(crate) fn normalized(u: Vector2<f64>) -> Option<Vector2<f64>> {
 #[inline]
 pub(crate) fn point_is_finite(p: &Point2<f64>) -> bool {
     p.x.is_finite() && p.y.is_finite()
+}
+
+/// The distance from `p` to the segment `ab`.
+pub(crate) fn segment_distance(p: Point2<f64>, a: Point2<f64>, b: Point2<f64>) -> f64 {
+    let ab = b - a;
+    let len2 = ab.norm_squared();
+    let t = if len2 > 0.0 {
+        ((p - a).dot(&ab) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p - (a + ab * t)).norm()
 }
 
 #[cfg(test)]

@@ -328,21 +328,10 @@ pub(crate) fn figures_of(
     c: &[Point2<f64>],
     tiny: f64,
 ) -> Option<LinkageFigures> {
-    fn run<const N: usize>(
-        a0: Point2<f64>,
-        a: &[Point2<f64>],
-        c0: Point2<f64>,
-        c: &[Point2<f64>],
-        tiny: f64,
-    ) -> Option<LinkageFigures> {
-        let a: &[Point2<f64>; N] = a.try_into().ok()?;
-        let c: &[Point2<f64>; N] = c.try_into().ok()?;
-        figures::<true, N>(a0, a, c0, c, tiny)
-    }
     match a.len() {
-        3 => run::<3>(a0, a, c0, c, tiny),
-        4 => run::<4>(a0, a, c0, c, tiny),
-        5 => run::<5>(a0, a, c0, c, tiny),
+        3 => figures::<true, 3>(a0, a.try_into().ok()?, c0, c.try_into().ok()?, tiny),
+        4 => figures::<true, 4>(a0, a.try_into().ok()?, c0, c.try_into().ok()?, tiny),
+        5 => figures::<true, 5>(a0, a.try_into().ok()?, c0, c.try_into().ok()?, tiny),
         _ => None,
     }
 }

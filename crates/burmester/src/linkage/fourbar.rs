@@ -418,21 +418,18 @@ pub struct FourBar {
     rho_n: f64,
 }
 
-/// The lengths, the fixed pivots and the Grashof type, not the normalized
-/// quantities the solver keeps.
-impl core::fmt::Debug for FourBar {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("FourBar")
-            .field("ground", &self.ground)
-            .field("crank", &self.crank)
-            .field("coupler", &self.coupler)
-            .field("rocker", &self.rocker)
-            .field("input_pivot", &self.origin)
-            .field("output_pivot", &self.output_pivot())
-            .field("grashof", &self.grashof())
-            .finish()
-    }
-}
+crate::geom::debug_shows!(
+    /// The lengths, the fixed pivots and the Grashof type, not the normalized
+    /// quantities the solver keeps.
+    FourBar, l =>
+    ground: l.ground,
+    crank: l.crank,
+    coupler: l.coupler,
+    rocker: l.rocker,
+    input_pivot: l.origin,
+    output_pivot: l.output_pivot(),
+    grashof: l.grashof(),
+);
 
 impl FourBar {
     /// The largest extent of a linkage: the input pivot's distance from the
@@ -876,30 +873,6 @@ impl FourBar {
         a + rotate(local, c.theta3)
     }
 
-    /// The path of a coupler point over the input angles `theta2s`, lazily:
-    /// one result per angle (an error where the loop does not close).
-    ///
-    /// # Errors
-    ///
-    /// Each item is an error where [`FourBar::solve`] fails; a non-finite
-    /// `local` gives [`InvalidInput::NotFinite`] for every item, and a point
-    /// so far from the coupler that its position overflows gives
-    /// [`InvalidInput::Overflow`].
-    pub fn coupler_path<'a, I>(
-        &'a self,
-        local: Vector2<f64>,
-        theta2s: I,
-        mode: AssemblyMode,
-    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
-    where
-        I: IntoIterator<Item = f64>,
-        I::IntoIter: 'a,
-    {
-        crate::linkage::coupler_path_of(local, theta2s, move |t| {
-            Ok(self.joints_at(t, mode)?.coupler_point(local))
-        })
-    }
-
     /// Grashof type, the input being the crank link.
     ///
     /// The equality `s + l = p + q` is decided within a relative rounding
@@ -976,6 +949,10 @@ impl FourBar {
     }
 }
 
+crate::linkage::coupler_path_method!(FourBar, |l, t, mode, local| {
+    Ok(l.joints_at(t, mode)?.coupler_point(local))
+});
+
 /// The error of a position where every coupler angle closes the loop.
 #[cold]
 #[inline(never)]
@@ -988,12 +965,7 @@ fn indeterminate(theta2: f64) -> Error {
 #[cold]
 #[inline(never)]
 fn angle_error(theta2: f64) -> Error {
-    match crate::error::bounded(
-        "theta2",
-        theta2,
-        FourBar::MAX_ANGLE,
-        "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)",
-    ) {
+    match crate::linkage::bounded_theta2(theta2) {
         Err(e) => e.into(),
         Ok(_) => unreachable!("angle_error of a bounded angle"),
     }

@@ -260,9 +260,6 @@ impl InvertedSliderCrank {
     /// ([`FourBar::MAX_EXTENT`]).
     pub const MAX_EXTENT: f64 = FourBar::MAX_EXTENT;
 
-    /// The largest crank angle magnitude, radians ([`FourBar::MAX_ANGLE`]).
-    pub const MAX_ANGLE: f64 = FourBar::MAX_ANGLE;
-
     /// An inverted slider-crank with its crank pivot at `pivot`, crank
     /// length `crank`, the block's ground pivot at `swivel` and the slot's
     /// signed `offset` from the crank pin (the line `y = offset` of the
@@ -323,14 +320,6 @@ impl InvertedSliderCrank {
         })
     }
 
-    /// The crank pivot `A0`.
-    pub fn crank_pivot(&self) -> Point2<f64> {
-        self.pivot
-    }
-    /// The crank length `r`.
-    pub fn crank(&self) -> f64 {
-        self.crank
-    }
     /// The swivel `S`: the block's ground pivot.
     pub fn swivel(&self) -> Point2<f64> {
         self.swivel
@@ -348,12 +337,7 @@ impl InvertedSliderCrank {
     /// and its band.
     #[inline]
     fn close(&self, theta2: f64) -> Result<(Vector2<f64>, f64, f64)> {
-        crate::error::bounded(
-            "theta2",
-            theta2,
-            Self::MAX_ANGLE,
-            "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)",
-        )?;
+        super::bounded_theta2(theta2)?;
         let k = 1.0 / self.scale;
         let (r, e) = (self.crank * k, self.offset * k);
         let w = (self.swivel - self.pivot) * k - unit(theta2) * r;

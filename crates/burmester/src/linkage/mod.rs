@@ -42,15 +42,39 @@ pub(crate) fn nonzero_links<const N: usize>(
     Ok(())
 }
 
-/// `joints_at(theta2, mode)` (as `$Joints`), `coupler_point(c, local)` and
-/// `coupler_path(local, theta2s, mode)` of a crank-driven linkage
-/// `$Linkage` (fields `pivot` and `crank`, a method `joints`) whose
-/// configuration `$Config` carries the crank angle `theta2` and the coupler
-/// angle `theta3`, the coupler frame's origin at the crank pin and its
-/// x-axis as `$axis` says: the slider-crank and the inverted slider-crank.
+/// What an error says to do with an angle beyond the largest (a crank
+/// angle, a pose's angle).
+pub(crate) const ANGLE_HINT: &str =
+    "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)";
+
+/// Refuses a crank angle `theta2` that is not finite or beyond
+/// [`FourBar::MAX_ANGLE`] (the largest of every crank-driven linkage).
+pub(crate) fn bounded_theta2(theta2: f64) -> core::result::Result<f64, crate::InvalidInput> {
+    crate::error::bounded("theta2", theta2, FourBar::MAX_ANGLE, ANGLE_HINT)
+}
+
+/// `MAX_ANGLE`, `crank_pivot()`, `crank()`, `joints_at(theta2, mode)` (as
+/// `$Joints`), `coupler_point(c, local)` and `coupler_path(local, theta2s,
+/// mode)` of a crank-driven linkage `$Linkage` (fields `pivot` and
+/// `crank`, a method `joints`) whose configuration `$Config` carries the
+/// crank angle `theta2` and the coupler angle `theta3`, the coupler
+/// frame's origin at the crank pin and its x-axis as `$axis` says: the
+/// slider-crank and the inverted slider-crank.
 macro_rules! crank_coupler_methods {
     ($Linkage:ident, $Config:ident, $Joints:ident, $axis:literal) => {
         impl $Linkage {
+            /// The largest crank angle magnitude, radians ([`FourBar::MAX_ANGLE`]).
+            pub const MAX_ANGLE: f64 = $crate::FourBar::MAX_ANGLE;
+
+            /// The crank pivot `A0`.
+            pub fn crank_pivot(&self) -> Point2<f64> {
+                self.pivot
+            }
+            /// The crank length `r`.
+            pub fn crank(&self) -> f64 {
+                self.crank
+            }
+
             /// The joints at `theta2` in `mode`.
             ///
             /// # Errors
@@ -61,17 +85,29 @@ macro_rules! crank_coupler_methods {
                 Ok(self.joints(&c))
             }
 
-            #[doc = concat!(
-                "Where a point fixed to the coupler is in a configuration (`local`\n",
-                "in the coupler frame: origin at the crank pin `A`, x-axis ",
-                $axis,
-                ")."
-            )]
+            /// Where a point fixed to the coupler is in a configuration (`local`
+            #[doc = concat!("in the coupler frame: origin at the crank pin `A`, x-axis ", $axis, ").")]
             pub fn coupler_point(&self, c: &$Config, local: Vector2<f64>) -> Point2<f64> {
                 self.pivot + unit(c.theta2) * self.crank + rotate(local, c.theta3)
             }
+        }
 
-            /// The path of a coupler point over the crank angles `theta2s`,
+        $crate::linkage::coupler_path_method!($Linkage, |l, t, mode, local| {
+            Ok(l.coupler_point(&l.solve(t, mode)?, local))
+        });
+    };
+}
+
+pub(crate) use crank_coupler_methods;
+
+/// `coupler_path(local, theta2s, mode)` of a linkage `$Linkage` with a
+/// method `solve`, `|l, t, mode, local| body` placing the coupler point
+/// `local` of the linkage `l` at the input angle `t` in `mode`: the
+/// four-bar, the slider-crank and the inverted slider-crank.
+macro_rules! coupler_path_method {
+    ($Linkage:ident, |$l:ident, $t:ident, $mode:ident, $local:ident| $body:expr) => {
+        impl $Linkage {
+            /// The path of a coupler point over the input angles `theta2s`,
             /// lazily: one result per angle (an error where the loop does
             /// not close).
             ///
@@ -80,7 +116,8 @@ macro_rules! crank_coupler_methods {
             #[doc = concat!(
                 "Each item is an error where [`", stringify!($Linkage), "::solve`] fails; a\n",
                 "non-finite `local` gives [`InvalidInput::NotFinite`] for every\n",
-                "item, a point whose position overflows [`InvalidInput::Overflow`]."
+                "item, and a point so far from the coupler that its position\n",
+                "overflows gives [`InvalidInput::Overflow`]."
             )]
             pub fn coupler_path<'a, I>(
                 &'a self,
@@ -92,15 +129,18 @@ macro_rules! crank_coupler_methods {
                 I: IntoIterator<Item = f64>,
                 I::IntoIter: 'a,
             {
-                $crate::linkage::coupler_path_of(local, theta2s, move |t| {
-                    Ok(self.coupler_point(&self.solve(t, mode)?, local))
-                })
+                let at = |$l: &Self,
+                          $t: f64,
+                          $mode: AssemblyMode,
+                          $local: Vector2<f64>|
+                 -> Result<Point2<f64>> { $body };
+                $crate::linkage::coupler_path_of(local, theta2s, move |t| at(self, t, mode, local))
             }
         }
     };
 }
 
-pub(crate) use crank_coupler_methods;
+pub(crate) use coupler_path_method;
 
 /// The path of a coupler point `local` over the input angles `theta2s`,
 /// lazily, `at(t)` placing it at the angle `t` (a linkage's

@@ -355,28 +355,18 @@ impl SixBar {
             (j.input_pivot, j.output_pivot, "ground A0-C0"),
         ];
         super::nonzero_links(links, tiny)?;
-        let drive = FourBar::from_pivots(
-            j.drive_pivot,
-            j.input_pivot,
-            (j.crank_joint - j.drive_pivot).norm(),
-            (j.attachment - j.crank_joint).norm(),
-            (j.attachment - j.input_pivot).norm(),
-        )?;
-        let motion = FourBar::from_pivots(
-            j.input_pivot,
-            j.output_pivot,
-            (j.input_joint - j.input_pivot).norm(),
-            (j.rocker_joint - j.input_joint).norm(),
-            (j.rocker_joint - j.output_pivot).norm(),
-        )?;
-        let drive_mode =
-            AssemblyMode::of_loop(j.attachment - j.crank_joint, j.attachment - j.input_pivot)
-                .ok_or(DriveError::ToggleJoints { which: "drive" })?;
-        let motion_mode = AssemblyMode::of_loop(
-            j.rocker_joint - j.input_joint,
-            j.rocker_joint - j.output_pivot,
-        )
-        .ok_or(DriveError::ToggleJoints { which: "motion" })?;
+        // A loop through the fixed pivot `p0`, the joints `a` and `b` and
+        // the fixed pivot `p1`, and its assembly mode (None at a toggle).
+        let four_bar = |p0: Point2<f64>, a: Point2<f64>, b: Point2<f64>, p1: Point2<f64>| {
+            FourBar::from_pivots(p0, p1, (a - p0).norm(), (b - a).norm(), (b - p1).norm())
+                .map(|f| (f, AssemblyMode::of_loop(b - a, b - p1)))
+        };
+        let (drive, drive_mode) =
+            four_bar(j.drive_pivot, j.crank_joint, j.attachment, j.input_pivot)?;
+        let (motion, motion_mode) =
+            four_bar(j.input_pivot, j.input_joint, j.rocker_joint, j.output_pivot)?;
+        let drive_mode = drive_mode.ok_or(DriveError::ToggleJoints { which: "drive" })?;
+        let motion_mode = motion_mode.ok_or(DriveError::ToggleJoints { which: "motion" })?;
         let (e, a) = (j.attachment - j.input_pivot, j.input_joint - j.input_pivot);
         let delta = e.y.atan2(e.x) - a.y.atan2(a.x);
         let ac = j.rocker_joint - j.input_joint;

@@ -266,9 +266,6 @@ impl SliderCrank {
     /// the offset ([`FourBar::MAX_EXTENT`]).
     pub const MAX_EXTENT: f64 = FourBar::MAX_EXTENT;
 
-    /// The largest crank angle magnitude, radians ([`FourBar::MAX_ANGLE`]).
-    pub const MAX_ANGLE: f64 = FourBar::MAX_ANGLE;
-
     /// A slider-crank with its crank pivot at `pivot`, crank length
     /// `crank`, coupler length `coupler`, and the guide through
     /// `guide_point` in the direction `guide_direction` (any length;
@@ -350,14 +347,6 @@ impl SliderCrank {
         self.given
     }
 
-    /// The crank pivot `A0`.
-    pub fn crank_pivot(&self) -> Point2<f64> {
-        self.pivot
-    }
-    /// The crank length `r`.
-    pub fn crank(&self) -> f64 {
-        self.crank
-    }
     /// The coupler length `l`.
     pub fn coupler(&self) -> f64 {
         self.coupler
@@ -393,12 +382,7 @@ impl SliderCrank {
     /// direction, `a_u`, `h`, `H` and its band.
     #[inline]
     fn close(&self, theta2: f64) -> Result<(Vector2<f64>, f64, f64, f64, f64)> {
-        crate::error::bounded(
-            "theta2",
-            theta2,
-            Self::MAX_ANGLE,
-            "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)",
-        )?;
+        super::bounded_theta2(theta2)?;
         let (s2, c2) = libm::sincos(theta2);
         let d = Vector2::new(c2, s2);
         let k = 1.0 / self.scale;

@@ -733,7 +733,7 @@ pub(crate) fn check_poses(poses: &[Pose]) -> Result<()> {
             names[2],
             p.angle,
             Task::MAX_ANGLE,
-            "reduce it modulo 2 pi (beyond, a double cannot hold the angle to 1e-7 rad)",
+            crate::linkage::ANGLE_HINT,
         )?;
     }
     Ok(())
