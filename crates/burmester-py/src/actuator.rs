@@ -31,12 +31,12 @@ struct ActuatorArgs {
 }
 
 impl ActuatorArgs {
+    /// `strut`: the strut's diameter and least gap.
     fn new(
         method: &str,
-        link: &str,
-        point: Option<PyPoint>,
-        max_stroke_ratio: Real,
-        samples: Count,
+        (link, point): (&str, Option<PyPoint>),
+        (max_stroke_ratio, samples): (Real, Count),
+        strut: (Real, Real),
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
         let m = MapOptions::from_kwargs(method, options, Keys::ACTUATOR)?;
@@ -47,6 +47,8 @@ impl ActuatorArgs {
                 link: link.parse::<ActuatorLink>().py()?,
                 max_stroke_ratio: max_stroke_ratio.0,
                 travel_samples: samples.0,
+                actuator_width: strut.0.0,
+                min_gap: strut.1.0,
             },
             constraints: m.constraints,
         })
@@ -218,6 +220,18 @@ impl PyActuator {
             inner: *self.context.limits(),
         }
     }
+    #[getter]
+    fn actuator_width(&self) -> f64 {
+        self.context.options().actuator_width
+    }
+    #[getter]
+    fn min_gap(&self) -> f64 {
+        self.context.options().min_gap
+    }
+    #[getter]
+    fn link_width(&self) -> f64 {
+        self.context.constraints().link_width
+    }
 
     /// `((x, y), s)`: the moving point and the actuator's length at input
     /// angle `theta2`.
@@ -261,7 +275,8 @@ impl PyActuator {
     /// Rebuilds a placement from its state (for pickling).
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
-    #[pyo3(signature = (linkage, point, ground, limits, options, constraints, extra, envelope = None))]
+    #[pyo3(signature = (linkage, point, ground, limits, options, constraints, extra, envelope = None,
+        strut = None))]
     fn _from_state(
         linkage: PySynthesizedFourBar,
         point: PyPoint,
@@ -271,13 +286,14 @@ impl PyActuator {
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
         extra: (Option<(usize, usize)>, f64, f64, Option<String>),
         envelope: Option<Vec<PyPoint>>,
+        strut: Option<(f64, f64)>,
     ) -> PyResult<Self> {
         let context = context_of(
             &linkage,
             point,
             ground.0,
             limits,
-            options,
+            (options, strut),
             constraints,
             envelope,
         )?;
@@ -307,6 +323,7 @@ impl PyActuator {
                 .envelope
                 .as_ref()
                 .map(|e| e.iter().map(|p| pt(*p)).collect::<Vec<_>>()),
+            strut_state(self.context.options()),
         )
             .into_pyobject(py)?;
         Ok((py.get_type::<PyActuator>().getattr("_from_state")?, args))
@@ -358,20 +375,29 @@ fn options_state(o: &ActuatorOptions) -> (&'static str, f64, usize) {
     (o.link.as_str(), o.max_stroke_ratio, o.travel_samples)
 }
 
+/// The strut's diameter and least gap as plain data (for pickling; a
+/// pickle without them, from before they were options, reads as 0, 0).
+fn strut_state(o: &ActuatorOptions) -> (f64, f64) {
+    (o.actuator_width, o.min_gap)
+}
+
 /// The context of a pickled map or placement.
 fn context_of(
     linkage: &PySynthesizedFourBar,
     point: PyPoint,
     at: Point2<f64>,
     limits: PyDesignLimits,
-    options: (String, f64, usize),
+    (options, strut): ((String, f64, usize), Option<(f64, f64)>),
     constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
     envelope: Option<Vec<PyPoint>>,
 ) -> PyResult<ActuatorContext> {
+    let (actuator_width, min_gap) = strut.unwrap_or((0.0, 0.0));
     let options = ActuatorOptions {
         link: options.0.parse::<ActuatorLink>().py()?,
         max_stroke_ratio: options.1,
         travel_samples: options.2,
+        actuator_width,
+        min_gap,
     };
     let grid = point_grid(at)?;
     ActuatorContext::new(
@@ -423,7 +449,30 @@ macro_rules! py_actuator_map {
                 })
             }
         }
+
+        /// Whether two maps' columns hold the same bits (NaN equal to NaN).
+        fn same_columns(a: &ActuatorMap, b: &ActuatorMap) -> bool {
+            let (a, b) = (&a.columns, &b.columns);
+            true $(&& SameBits::same_bits(&a.$name, &b.$name))*
+        }
     };
+}
+
+/// Equality of a column's values by their bits (NaN equal to NaN).
+trait SameBits {
+    fn same_bits(a: &Self, b: &Self) -> bool;
+}
+
+impl SameBits for Vec<bool> {
+    fn same_bits(a: &Self, b: &Self) -> bool {
+        a == b
+    }
+}
+
+impl SameBits for Vec<f32> {
+    fn same_bits(a: &Self, b: &Self) -> bool {
+        a.len() == b.len() && a.iter().zip(b).all(|(p, q)| p.to_bits() == q.to_bits())
+    }
 }
 
 burmester::actuator_map_columns!(py_actuator_map);
@@ -506,6 +555,14 @@ impl PyActuatorMap {
     fn samples(&self) -> usize {
         self.map.context.options().travel_samples
     }
+    #[getter]
+    fn actuator_width(&self) -> f64 {
+        self.map.context.options().actuator_width
+    }
+    #[getter]
+    fn min_gap(&self) -> f64 {
+        self.map.context.options().min_gap
+    }
     /// The candidate ground pivot of sample `(j, i)`.
     fn ground(&self, j: Count, i: Count) -> PyResult<Xy> {
         self.grid().point(j, i)
@@ -534,6 +591,8 @@ impl PyActuatorMap {
 
     /// Rebuilds a map from its state (for pickling): computed again.
     #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (linkage, point, grid, limits, options, constraints, strut = None))]
     fn _from_state(
         py: Python<'_>,
         linkage: PySynthesizedFourBar,
@@ -542,13 +601,14 @@ impl PyActuatorMap {
         limits: PyDesignLimits,
         options: (String, f64, usize),
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+        strut: Option<(f64, f64)>,
     ) -> PyResult<Self> {
         let ctx = context_of(
             &linkage,
             point,
             Point2::origin(),
             limits,
-            options,
+            (options, strut),
             constraints,
             None,
         )?;
@@ -577,6 +637,7 @@ impl PyActuatorMap {
             self.limits(),
             options_state(c.options()),
             constraint_state(c.constraints()),
+            strut_state(c.options()),
         )
             .into_pyobject(py)?;
         Ok((py.get_type::<PyActuatorMap>().getattr("_from_state")?, args))
@@ -585,7 +646,7 @@ impl PyActuatorMap {
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other.cast::<PyActuatorMap>().is_ok_and(|o| {
             let (a, b) = (&o.get().map, &self.map);
-            a.context == b.context && o.get().task == self.task && same_bits(a, b)
+            a.context == b.context && o.get().task == self.task && same_columns(a, b)
         })
     }
 
@@ -598,33 +659,19 @@ impl PyActuatorMap {
     }
 }
 
-/// Whether two maps' columns hold the same bits (NaN equal to NaN).
-fn same_bits(a: &ActuatorMap, b: &ActuatorMap) -> bool {
-    let f = |x: &[f32], y: &[f32]| x.iter().zip(y).all(|(p, q)| p.to_bits() == q.to_bits());
-    let (a, b) = (&a.columns, &b.columns);
-    a.valid == b.valid
-        && a.monotone == b.monotone
-        && a.extends == b.extends
-        && a.acceptable == b.acceptable
-        && f(&a.min_transmission_rad, &b.min_transmission_rad)
-        && f(&a.stroke_ratio, &b.stroke_ratio)
-        && f(&a.stroke, &b.stroke)
-        && f(&a.closed_length, &b.closed_length)
-        && f(&a.link_ratio, &b.link_ratio)
-        && f(&a.size_ratio, &b.size_ratio)
-}
-
 /// The actuator methods of `SynthesizedFourBar`: a linear actuator added
 /// between a ground pivot and a point of a moving link.
 #[pymethods]
 impl PySynthesizedFourBar {
     #[doc = text_signature!(
         ACTUATOR,
-        "actuator_map($self, *grid, link='coupler', point=None, max_stroke_ratio=1.8, samples=256",
+        "actuator_map($self, *grid, link='coupler', point=None, max_stroke_ratio=1.8, samples=256, \
+         actuator_width=0.0, min_gap=0.0",
         ", progress=None"
     )]
     #[pyo3(signature = (*grid, link = "coupler", point = None, max_stroke_ratio = Real(1.8),
-        samples = Count(256), progress = None, **options),
+        samples = Count(256), actuator_width = Real(0.0), min_gap = Real(0.0), progress = None,
+        **options),
         text_signature = None)]
     #[allow(clippy::too_many_arguments)]
     fn actuator_map(
@@ -635,11 +682,19 @@ impl PySynthesizedFourBar {
         point: Option<PyPoint>,
         max_stroke_ratio: Real,
         samples: Count,
+        actuator_width: Real,
+        min_gap: Real,
         progress: Option<&Bound<'_, PyAny>>,
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyActuatorMap> {
         let m = "SynthesizedFourBar.actuator_map";
-        let args = ActuatorArgs::new(m, link, point, max_stroke_ratio, samples, options)?;
+        let args = ActuatorArgs::new(
+            m,
+            (link, point),
+            (max_stroke_ratio, samples),
+            (actuator_width, min_gap),
+            options,
+        )?;
         let what = "actuator_map takes a grid (or its six numbers); the rest goes by keyword";
         let g = grid_alone(grid, what)?;
         let ctx = args.context(self, &g)?;
@@ -650,12 +705,14 @@ impl PySynthesizedFourBar {
 
     #[doc = text_signature!(
         ACTUATOR,
-        "actuator($self, ground, link='coupler', point=None, max_stroke_ratio=1.8, samples=256, *",
+        "actuator($self, ground, link='coupler', point=None, max_stroke_ratio=1.8, samples=256, \
+         actuator_width=0.0, min_gap=0.0, *",
         ""
     )]
     #[pyo3(signature = (ground, link = "coupler", point = None, max_stroke_ratio = Real(1.8),
-        samples = Count(256), **options),
+        samples = Count(256), actuator_width = Real(0.0), min_gap = Real(0.0), **options),
         text_signature = None)]
+    #[allow(clippy::too_many_arguments)]
     fn actuator(
         &self,
         ground: PyPoint,
@@ -663,10 +720,18 @@ impl PySynthesizedFourBar {
         point: Option<PyPoint>,
         max_stroke_ratio: Real,
         samples: Count,
+        actuator_width: Real,
+        min_gap: Real,
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyActuator> {
         let m = "SynthesizedFourBar.actuator";
-        let args = ActuatorArgs::new(m, link, point, max_stroke_ratio, samples, options)?;
+        let args = ActuatorArgs::new(
+            m,
+            (link, point),
+            (max_stroke_ratio, samples),
+            (actuator_width, min_gap),
+            options,
+        )?;
         let ctx = args.context(self, &point_grid(ground.0)?)?;
         let a = ctx.placement(ground.0).py()?;
         Ok(PyActuator::of(a, self.task(), &ctx))
