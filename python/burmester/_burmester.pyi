@@ -3039,8 +3039,9 @@ class ActuatorMap:
         """The strut's least gap over the sampled travel, task units: its
         capsule (:attr:`actuator_width`) to the links' capsules
         (``link_width``), the obstacles and the envelope; negative where
-        they overlap; NaN where not valid. At least a placement's refined
-        :attr:`Actuator.min_clearance`."""
+        they overlap. Computed where the rest of ``acceptable`` holds
+        (monotone, within the limits, on the base plate); NaN elsewhere. At
+        least a placement's refined :attr:`Actuator.min_clearance`."""
     @property
     def acceptable(self) -> BoolArray:
         """Monotone and within the limits and the base plate, and clear:

@@ -329,6 +329,7 @@ grid = [10, 1]                   | actuator.grid[1]          | 2 to 20000
 base_plate = [[0, 0], [1, 0]]    | actuator.base_plate       | at least 3 points
 stroke = 10                      | actuator.stroke           | unknown key
 width = -1                       | actuator.width            | above 0
+min_gap = -1                     | actuator.min_gap          | at least 0
 """
 
 

@@ -77,12 +77,14 @@ def test_the_clearance_column(maps):
     for m in maps:
         c = m.clearance
         assert c.dtype == np.float32 and c.shape == m.shape and not c.flags.writeable
-        assert np.array_equal(np.isfinite(c), m.valid)
+        # Computed where the rest of the limits are met: monotone, every
+        # acceptable sample among them.
+        assert not (np.isfinite(c) & ~m.monotone).any() and np.isfinite(c[m.acceptable]).all()
     # The widths move every gap by their two halves (the links that do not
     # carry Q: the nearest one sets the gap where it is positive).
     assert (sized.actuator_width, sized.min_gap) == (20.0, 3.0)
     with np.errstate(invalid="ignore"):
-        far = bare.valid & (bare.clearance > 20.0)
+        far = np.isfinite(bare.clearance) & (bare.clearance > 20.0)
         assert np.allclose(sized.clearance[far], bare.clearance[far] - 15.0, atol=1e-3)
         # acceptable: the bare map's acceptable samples whose gap reaches 3 mm
         # (the rest of the limits alike), exactly.
@@ -94,7 +96,8 @@ def test_the_clearance_column(maps):
 
 def test_placements_agree_with_own_driving(maps):
     _, sized = maps
-    picked = sized.best_placements(3) + [sized.placement(j, i) for j, i in np.argwhere(sized.valid)[::997]]
+    picked = sized.best_placements(3) + [sized.placement(j, i)
+                                         for j, i in np.argwhere(np.isfinite(sized.clearance))[::97]]
     for a in picked:
         own = _own_gap(a) - 0.5 * (20.0 + 10.0)
         j, i = a.index
@@ -171,6 +174,7 @@ def test_task_file_and_command_line(tmp_path, capsys):
     assert "min_gap = 3.0" in text and "width = 20.0" in text and "link_width = 10.0" in text
     spec = taskfile.load(str(HOOD))
     assert (spec.actuator.width, spec.actuator.min_gap) == (20.0, 3.0)
+    assert taskfile.loads(taskfile.dumps(spec)).actuator == spec.actuator  # written out and read back
     bad = tmp_path / "bad.toml"
     bad.write_text(text.replace("min_gap = 3.0", "min_gap = -3.0"))
     with pytest.raises(taskfile.TaskFileError, match=r"actuator\.min_gap.*at least 0"):

@@ -241,20 +241,21 @@ fn single(
     g: P,
     constraints: &Constraints,
 ) -> ActuatorContext {
-    single_strut(sfb, link, (q, g), 0.0, constraints)
+    single_strut(sfb, link, (q, g), (0.0, 0.0), constraints)
 }
 
-/// [`single`] with a strut `width` wide.
+/// [`single`] with a strut `width` wide that must keep `min_gap`.
 fn single_strut(
     sfb: &SynthesizedFourBar,
     link: ActuatorLink,
     (q, g): (P, P),
-    width: f64,
+    (width, min_gap): (f64, f64),
     constraints: &Constraints,
 ) -> ActuatorContext {
     let options = ActuatorOptions {
         link,
         actuator_width: width,
+        min_gap,
         ..ActuatorOptions::default()
     };
     let limits = DesignLimits::default();
@@ -411,7 +412,7 @@ fn map_and_ranking_agree_with_placements() {
             ActuatorContext::new(&sfb, q, &grid, &limits, &options, &Constraints::none()).unwrap();
         let map = ctx.map(&Control::new()).unwrap();
         let cols = &map.columns;
-        for k in (0..grid.len()).step_by(7) {
+        for k in (0..grid.len()).step_by(29) {
             let Ok(a) = ctx.placement_at(k) else {
                 assert!(!cols.valid[k]);
                 continue;
@@ -486,7 +487,7 @@ fn figures_are_invariant_under_similarities() {
                 ..Constraints::none()
             };
             // The strut twice as wide as the links.
-            single_strut(s, link, (q, g), 2.0 * w, &c)
+            single_strut(s, link, (q, g), (2.0 * w, 0.0), &c)
                 .placement(g)
                 .unwrap()
         };
@@ -676,9 +677,12 @@ fn documented_maximum_grid_and_cancelling() {
         side * side
     );
     assert!(map.columns.monotone.iter().any(|&m| !m));
-    // The clearance is there wherever the actuator is, and nowhere else.
-    for (v, c) in map.columns.valid.iter().zip(&map.columns.clearance) {
-        assert_eq!(*v, c.is_finite(), "{v} {c}");
+    // The clearance is there only where the actuator is monotone, and
+    // wherever it is acceptable.
+    let cols = &map.columns;
+    for k in 0..side * side {
+        assert!(!cols.clearance[k].is_finite() || cols.monotone[k], "{k}");
+        assert!(!cols.acceptable[k] || cols.clearance[k] > 0.0, "{k}");
     }
     let big = Grid::from_bounds(c.x - r, c.x + r, c.y - r, c.y + r, side, side + 1).unwrap();
     assert!(matches!(
@@ -839,7 +843,7 @@ fn clearance_agrees_with_dense_driving() {
         };
         for _ in 0..5 {
             let (q, g) = point_and_pivot(&mut runner, &sfb, c, r);
-            let ctx = single_strut(&sfb, link, (q, g), strut, &constraints);
+            let ctx = single_strut(&sfb, link, (q, g), (strut, 0.0), &constraints);
             let Ok(a) = ctx.placement(g) else { continue };
             let own = Own::new(&sfb, link, q);
             let d = dense_gap(&sfb, &own, g, 8_000, (width, strut), &obstacles);
@@ -1014,89 +1018,112 @@ fn design_actuator_options_at_their_limits() {
     assert!(matches!(r, Err(Error::Cancelled { .. })), "{r:?}");
 }
 
-/// A strut that passes the crank's fixed pivot at a known distance: the
-/// ground pivot `G` a distance `d` behind `A0` against the crank's middle
-/// direction, on a linkage whose crank stays in front of `A0` over the
-/// travel and whose rocker point stays behind `G` (both checked by driving
-/// it densely, with the test's own gap at least `d` everywhere). The
-/// placement's and the map's gap are `d` less the two half widths; the
-/// least gap `min_gap` rejects it exactly above that.
+/// The rocker's middle `Q` (at pose 1) and a ground pivot `G` a distance
+/// `d` behind the crank's fixed pivot `A0`, against the crank's middle
+/// direction `u`, where the construction holds over the travel (checked by
+/// driving the linkage densely): the crank in front of `A0`, `Q` behind
+/// `G`, `G` off the rocker's bar by `2 d` (the strut does not lie along
+/// its own link), and the test's own gap at least `d` everywhere, so that
+/// the strut's nearest link is the crank at `A0`, `d` away.
+fn passing_the_crank_pivot(sfb: &SynthesizedFourBar, d: f64) -> Option<(P, P)> {
+    let (start, span) = sfb.travel()?;
+    let mode = sfb.modes()[0]?;
+    if span.abs() > 0.8 * PI {
+        return None;
+    }
+    let joints = |t: f64| sfb.fourbar.joints(&sfb.fourbar.solve(t, mode).unwrap());
+    let mid = joints(start + 0.5 * span);
+    let u = (mid.crank_joint - mid.input_pivot).normalize();
+    let g = mid.input_pivot - u * d;
+    let q = sfb.driven.center + (sfb.driven.circle - sfb.driven.center) * 0.5;
+    let own = Own::new(sfb, ActuatorLink::Rocker, q);
+    let off_bar = |p: P, a: P, b: P| {
+        let ab = b - a;
+        let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+        (p - (a + ab * t)).norm()
+    };
+    let steps = 2_000;
+    let holds = (0..=steps).all(|k| {
+        let t = start + span * k as f64 / steps as f64;
+        let j = joints(t);
+        (j.crank_joint - j.input_pivot).dot(&u) > 0.0
+            && (own.at(t) - g).dot(&u) < 0.0
+            && off_bar(g, j.output_pivot, j.rocker_joint) > 2.0 * d
+            && own_gap(sfb, &own, g, t, (0.0, 0.0), &[]) >= d - 1e-9 * d
+    });
+    holds.then_some((q, g))
+}
+
+/// Limits every monotone placement meets.
+fn open_limits() -> DesignLimits {
+    DesignLimits {
+        min_transmission: 0.0,
+        max_link_ratio: f64::INFINITY,
+        max_size_ratio: f64::INFINITY,
+        max_link_length: f64::INFINITY,
+        ..DesignLimits::default()
+    }
+}
+
+/// A strut that passes the crank's fixed pivot at a known distance `d`
+/// ([`passing_the_crank_pivot`]): the placement's and the map's gap are
+/// `d` less the two half widths; the least gap `min_gap` rejects it
+/// exactly above that.
 #[test]
 fn a_strut_passing_a_link_at_a_known_distance() {
     let mut runner = TestRunner::new(common::config(1));
-    let mut found = 0;
-    for _ in 0..400 {
-        let (task, sfb) = random_linkage(&mut runner);
-        let (start, span) = sfb.travel().unwrap();
-        if span.abs() > 0.8 * PI {
-            continue;
-        }
-        let mode = sfb.modes()[0].unwrap();
-        let joints = |t: f64| sfb.fourbar.joints(&sfb.fourbar.solve(t, mode).unwrap());
-        let mid = joints(start + 0.5 * span);
-        let u = (mid.crank_joint - mid.input_pivot).normalize();
-        let d = 0.05 * task.span();
-        let g = mid.input_pivot - u * d;
-        let q = sfb.driven.center + (sfb.driven.circle - sfb.driven.center) * 0.5;
-        let own = Own::new(&sfb, ActuatorLink::Rocker, q);
-        // The construction's premises, densely: the crank in front of A0,
-        // Q behind G, nothing nearer than A0, and G off the rocker's bar
-        // (the strut does not lie along its own link).
-        let steps = 4_000;
-        let off_bar = |p: P, a: P, b: P| {
-            let ab = b - a;
-            let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
-            (p - (a + ab * t)).norm()
-        };
-        let ok = (0..=steps).all(|k| {
-            let t = start + span * k as f64 / steps as f64;
-            let j = joints(t);
-            (j.crank_joint - j.input_pivot).dot(&u) > 0.0
-                && (own.at(t) - g).dot(&u) < 0.0
-                && off_bar(g, j.output_pivot, j.rocker_joint) > 2.0 * d
-                && own_gap(&sfb, &own, g, t, (0.0, 0.0), &[]) >= d - 1e-9 * d
-        });
-        if !ok {
-            continue;
-        }
-        found += 1;
-        let (wl, ws) = (0.3 * d, 0.5 * d);
-        let want = d - 0.5 * wl - 0.5 * ws;
-        let c = Constraints {
-            link_width: wl,
-            ..Constraints::none()
-        };
-        let at = |min_gap: f64| {
-            let options = ActuatorOptions {
-                link: ActuatorLink::Rocker,
-                actuator_width: ws,
-                min_gap,
-                ..ActuatorOptions::default()
+    let found = (0..400)
+        .filter(|_| {
+            let (task, sfb) = random_linkage(&mut runner);
+            let d = 0.05 * task.span();
+            let Some((q, g)) = passing_the_crank_pivot(&sfb, d) else {
+                return false;
             };
-            let limits = DesignLimits::default();
-            let ctx = ActuatorContext::new(&sfb, q, &one_grid(g), &limits, &options, &c).unwrap();
-            let map = ctx.map(&Control::new()).unwrap();
-            (ctx.placement(g).unwrap(), map)
-        };
-        let (a, map) = at(0.0);
-        assert!(
-            (a.min_clearance - want).abs() < 1e-9 * task.span(),
-            "{} vs {want}",
-            a.min_clearance
-        );
-        assert!(a.clear);
-        let sampled = f64::from(map.columns.clearance[0]);
-        assert!((sampled - want).abs() < 1e-6 * want, "{sampled} vs {want}");
-        // min_gap just below the gap keeps it, just above rejects it (the
-        // placement and the map sample alike).
-        let (below, map_below) = at(want * (1.0 - 1e-6));
-        assert!(below.clear && below.acceptable == a.acceptable);
-        assert_eq!(map_below.columns.acceptable[0], map.columns.acceptable[0]);
-        let (above, map_above) = at(want * (1.0 + 1e-6));
-        assert!(!above.clear && !above.acceptable);
-        assert!(!map_above.columns.acceptable[0]);
-        assert_eq!(above.min_clearance, a.min_clearance);
-    }
+            let (wl, ws) = (0.3 * d, 0.5 * d);
+            let want = d - 0.5 * wl - 0.5 * ws;
+            let c = Constraints {
+                link_width: wl,
+                ..Constraints::none()
+            };
+            let at = |min_gap: f64| {
+                let options = ActuatorOptions {
+                    link: ActuatorLink::Rocker,
+                    actuator_width: ws,
+                    min_gap,
+                    max_stroke_ratio: f64::INFINITY,
+                    ..ActuatorOptions::default()
+                };
+                let ctx = ActuatorContext::new(&sfb, q, &one_grid(g), &open_limits(), &options, &c)
+                    .unwrap();
+                (ctx.placement(g).unwrap(), ctx.map(&Control::new()).unwrap())
+            };
+            let (a, map) = at(0.0);
+            assert!(
+                (a.min_clearance - want).abs() < 1e-9 * task.span(),
+                "{} vs {want}",
+                a.min_clearance
+            );
+            assert!(a.clear);
+            // The map computes it where the actuator is monotone (the other
+            // limits are open here).
+            let sampled = f64::from(map.columns.clearance[0]);
+            assert_eq!(sampled.is_finite(), a.monotone);
+            assert!(
+                !a.monotone || (sampled - want).abs() < 1e-6 * want,
+                "{sampled} vs {want}"
+            );
+            // min_gap just below the gap keeps it, just above rejects it
+            // (the placement and the map sample alike).
+            let (below, map_below) = at(want * (1.0 - 1e-6));
+            assert!(below.clear && below.acceptable == a.acceptable);
+            assert_eq!(map_below.columns.acceptable[0], map.columns.acceptable[0]);
+            let (above, map_above) = at(want * (1.0 + 1e-6));
+            assert!(!above.clear && !above.acceptable);
+            assert!(!map_above.columns.acceptable[0]);
+            assert_eq!(above.min_clearance, a.min_clearance);
+            true
+        })
+        .count();
     assert!(found >= 5, "{found} linkages met the construction");
 }
 
@@ -1113,27 +1140,24 @@ fn the_min_gap_filters_the_map_exactly() {
         let (task, sfb) = random_linkage(&mut runner);
         let r = task.span();
         let c = common::centroid(task.poses());
-        let grid = Grid::from_bounds(
-            c.x - 2.0 * r,
-            c.x + 2.0 * r,
-            c.y - 2.0 * r,
-            c.y + 2.0 * r,
-            48,
-            40,
-        )
-        .unwrap();
+        let (lo, hi) = (
+            c - Vector2::new(2.0, 2.0) * r,
+            c + Vector2::new(2.0, 2.0) * r,
+        );
+        let grid = Grid::from_bounds(lo.x, hi.x, lo.y, hi.y, 48, 40).unwrap();
         let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.4;
         let link = ActuatorLink::ALL[case % 3];
         let cons = Constraints {
             link_width: 0.02 * r,
             ..Constraints::none()
         };
-        let limits = DesignLimits::default();
+        let limits = open_limits();
         let map_at = |min_gap: f64| {
             let options = ActuatorOptions {
                 link,
                 actuator_width: 0.03 * r,
                 min_gap,
+                max_stroke_ratio: f64::INFINITY,
                 ..ActuatorOptions::default()
             };
             let ctx = ActuatorContext::new(&sfb, q, &grid, &limits, &options, &cons).unwrap();
@@ -1165,8 +1189,8 @@ fn the_min_gap_filters_the_map_exactly() {
         // Placements refine the sampled gap downward, a little.
         let step = (zero.context.travel_angles()[1] - zero.context.travel_angles()[0]).abs();
         let moves = 4.0 * step * r * (1.0 + 1.0 / sfb.figures.min_transmission.sin().max(0.1));
-        for k in (0..grid.len()).step_by(97) {
-            if !z.valid[k] {
+        for k in (0..grid.len()).step_by(29) {
+            if !z.clearance[k].is_finite() {
                 continue;
             }
             let a = zero.context.placement_at(k).unwrap();

@@ -31,14 +31,15 @@ struct ActuatorArgs {
 }
 
 impl ActuatorArgs {
-    /// `strut`: the strut's diameter and least gap.
+    /// `terms`: the link, the point, the stroke ratio limit, the travel's
+    /// samples; `strut`: the strut's diameter and least gap.
     fn new(
         method: &str,
-        (link, point): (&str, Option<PyPoint>),
-        (max_stroke_ratio, samples): (Real, Count),
+        terms: (&str, Option<PyPoint>, Real, Count),
         strut: (Real, Real),
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
+        let (link, point, max_stroke_ratio, samples) = terms;
         let m = MapOptions::from_kwargs(method, options, Keys::ACTUATOR)?;
         Ok(ActuatorArgs {
             point: point.map(|p| p.0),
@@ -166,6 +167,10 @@ getters!(PyActuator, inner {
     f64: min_clearance, clearance_angle;
     bool: clear;
 });
+// The strut's terms it was placed under, and the map's.
+getters!(PyActuator, [context.options()] { f64: actuator_width, min_gap; });
+getters!(PyActuator, [context.constraints()] { f64: link_width; });
+getters!(PyActuatorMap, [map.context.options()] { f64: max_stroke_ratio, actuator_width, min_gap; });
 
 /// The figures by name, each a getter of one element of
 /// [`PyActuator`]'s arrays.
@@ -219,18 +224,6 @@ impl PyActuator {
         PyDesignLimits {
             inner: *self.context.limits(),
         }
-    }
-    #[getter]
-    fn actuator_width(&self) -> f64 {
-        self.context.options().actuator_width
-    }
-    #[getter]
-    fn min_gap(&self) -> f64 {
-        self.context.options().min_gap
-    }
-    #[getter]
-    fn link_width(&self) -> f64 {
-        self.context.constraints().link_width
     }
 
     /// `((x, y), s)`: the moving point and the actuator's length at input
@@ -548,20 +541,8 @@ impl PyActuatorMap {
         }
     }
     #[getter]
-    fn max_stroke_ratio(&self) -> f64 {
-        self.map.context.options().max_stroke_ratio
-    }
-    #[getter]
     fn samples(&self) -> usize {
         self.map.context.options().travel_samples
-    }
-    #[getter]
-    fn actuator_width(&self) -> f64 {
-        self.map.context.options().actuator_width
-    }
-    #[getter]
-    fn min_gap(&self) -> f64 {
-        self.map.context.options().min_gap
     }
     /// The candidate ground pivot of sample `(j, i)`.
     fn ground(&self, j: Count, i: Count) -> PyResult<Xy> {
@@ -688,13 +669,8 @@ impl PySynthesizedFourBar {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyActuatorMap> {
         let m = "SynthesizedFourBar.actuator_map";
-        let args = ActuatorArgs::new(
-            m,
-            (link, point),
-            (max_stroke_ratio, samples),
-            (actuator_width, min_gap),
-            options,
-        )?;
+        let terms = (link, point, max_stroke_ratio, samples);
+        let args = ActuatorArgs::new(m, terms, (actuator_width, min_gap), options)?;
         let what = "actuator_map takes a grid (or its six numbers); the rest goes by keyword";
         let g = grid_alone(grid, what)?;
         let ctx = args.context(self, &g)?;
@@ -725,13 +701,8 @@ impl PySynthesizedFourBar {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyActuator> {
         let m = "SynthesizedFourBar.actuator";
-        let args = ActuatorArgs::new(
-            m,
-            (link, point),
-            (max_stroke_ratio, samples),
-            (actuator_width, min_gap),
-            options,
-        )?;
+        let terms = (link, point, max_stroke_ratio, samples);
+        let args = ActuatorArgs::new(m, terms, (actuator_width, min_gap), options)?;
         let ctx = args.context(self, &point_grid(ground.0)?)?;
         let a = ctx.placement(ground.0).py()?;
         Ok(PyActuator::of(a, self.task(), &ctx))

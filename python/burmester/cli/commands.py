@@ -801,7 +801,7 @@ def cmd_actuator(args: argparse.Namespace) -> int:
         raise UsageError(f"--actuator-width must be above 0, got {width:g}")
     gap = _strut_gap(width, args.min_gap, table)
     amap = actuators.actuator_map(sfb, table.view, (nx, ny), link=link, point=point, max_stroke_ratio=ratio,
-                                  limits=lim, base_plate=plate, link_width=spec.space.link_width, **gap)
+                                  limits=lim, base_plate=plate, link_width=spec.space.link_width if spec.space is not None else 0.0, **gap)
     best = amap.best_placements(1, rank_by=rank_by)
     if not best:
         mono = int(np.count_nonzero(amap.monotone))

@@ -141,7 +141,9 @@ map_columns! {
     /// The strut's least gap over the sampled travel, task units: its
     /// capsule (`actuator_width`) to the links' capsules
     /// (`link_width`), the obstacles and the envelope (module docs,
-    /// "Clearance"); negative where they overlap.
+    /// "Clearance"); negative where they overlap. Computed where the
+    /// rest of `acceptable` holds (monotone, within the limits, on the
+    /// base plate); NaN elsewhere.
     clearance: f32 = f32::NAN,
     /// Monotone and within the limits: the stroke ratio, the
     /// transmission angle, the link and size ratios, the longest link,
@@ -613,14 +615,20 @@ impl ActuatorContext {
             return ActuatorSample::INVALID;
         }
         let mu = e.min_sin.asin();
-        let check = self.strut_check(prepared, g);
-        let t = &self.travel;
-        let gap = t
-            .joints
-            .iter()
-            .zip(&t.q)
-            .map(|(j, &q)| check.gap_at(j, q))
-            .fold(f64::INFINITY, f64::min);
+        // The gap where the rest of the limits are met (NaN elsewhere: not
+        // computed, as it would not make the sample acceptable).
+        let meets = self.meets(prepared, g, &e, mu);
+        let gap = if meets {
+            let check = self.strut_check(prepared, g);
+            let t = &self.travel;
+            t.joints
+                .iter()
+                .zip(&t.q)
+                .map(|(j, &q)| check.gap_at(j, q))
+                .fold(f64::INFINITY, f64::min)
+        } else {
+            f64::NAN
+        };
         ActuatorSample {
             valid: true,
             monotone: e.monotone,
@@ -632,7 +640,7 @@ impl ActuatorContext {
             link_ratio: e.link_ratio as f32,
             size_ratio: e.size_ratio as f32,
             clearance: gap as f32,
-            acceptable: self.meets(prepared, g, &e, mu) && self.clear(gap),
+            acceptable: meets && self.clear(gap),
         }
     }
 
