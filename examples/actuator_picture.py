@@ -6,8 +6,8 @@ The linkage is the one-call design's best hinge for ``examples/hood.toml``
 says: from a ground pivot on the body (its ``base_plate``: the task's
 ``[space]``, below the closed hood) to a bracket on the hood. The picture shows the placement map (left:
 where the strut's ground pivot may go; the dark region meets a stroke
-ratio of at most 1.8 and a force transmission angle of at least the task's
-40 degrees) and the chosen design at the three poses with the strut drawn
+ratio of at most 1.8, a force transmission angle of at least the task's
+40 degrees and the strut's clearance from the links) and the chosen design at the three poses with the strut drawn
 as a cylinder (right). The table printed is the README's.
 """
 
@@ -38,9 +38,12 @@ def hood_strut() -> "tuple[burmester.ActuatorMap, burmester.Actuator]":
     assert t is not None and t.view is not None and t.base_plate is not None
     lim = spec.limits
     limits = burmester.DesignLimits(lim.min_transmission_deg, lim.max_link_ratio, lim.input, t.max_size_ratio)
+    # Its clearance: the gas spring's body (``width``) against the hinge's
+    # links (``[space] link_width``), at least ``min_gap`` apart.
     amap = actuators.actuator_map(sfb, t.view, t.grid, link=t.link, point=t.point,
                                   max_stroke_ratio=t.max_stroke_ratio, limits=limits,
-                                  base_plate=list(t.base_plate))
+                                  base_plate=list(t.base_plate), link_width=spec.space.link_width,
+                                  actuator_width=t.width or 0.0, min_gap=t.min_gap or 0.0)
     best = amap.best_placements(1, rank_by="balanced")
     if not best:
         raise SystemExit("no acceptable strut placement")

@@ -143,9 +143,11 @@ class ClassicDriveOptions(LimitOptions, _DriveKeywords, total=False):
 class ActuatorMapOptions(LimitOptions, total=False):
     """The keywords of the actuator placements
     (:meth:`SynthesizedFourBar.actuator_map`): the limits but ``input`` (the
-    actuator drives) and ``base_plate`` (the ground pivot inside it)."""
+    actuator drives), ``base_plate`` (the ground pivot inside it) and
+    ``link_width`` (the links' width in the strut's clearance)."""
 
     base_plate: Optional[Sequence[Point]]
+    link_width: float
 
 class MapOptions(DriveMapOptions, total=False):
     """The map option keywords of the solution maps, the pair map and the
@@ -1683,6 +1685,8 @@ class SynthesizedFourBar:
         point: Optional[Point] = None,
         max_stroke_ratio: float = 1.8,
         samples: int = 256,
+        actuator_width: float = 0.0,
+        min_gap: float = 0.0,
         progress: Optional[Progress] = None,
         **options: Unpack[ActuatorMapOptions],
     ) -> ActuatorMap:
@@ -1699,14 +1703,20 @@ class SynthesizedFourBar:
         2), the actuator's minimum force transmission angle (90 degrees
         minus the angle between its line and the velocity of ``Q``; at
         least the limits' ``min_transmission_deg``), the link and size
-        ratios with the actuator, and ``acceptable``. At most 2**20 samples
+        ratios with the actuator, the strut's ``clearance`` (its least gap
+        over the sampled travel: its capsule ``actuator_width`` wide, its
+        diameter in task units, default 0, against the links' capsules
+        ``link_width`` wide, the obstacles and the envelope) and
+        ``acceptable`` (the limits, and the clearance above 0 and at least
+        ``min_gap``, task units, default 0). At most 2**20 samples
         (1024 x 1024). Releases the GIL; ``progress`` and Ctrl-C as
         :meth:`Filemon.solution_map`.
 
         Raises :class:`DriveError` (``"no_travel"``) for an infeasible
         linkage, :class:`DegenerateError` for a point on the crank's or the
         rocker's fixed pivot, :class:`InvalidInputError` for bad options (an
-        unknown link, a stroke ratio limit below 1, a grid too large)."""
+        unknown link, a stroke ratio limit below 1, a grid too large, a
+        negative ``actuator_width`` or ``min_gap``)."""
     def actuator(
         self,
         ground: Point,
@@ -1714,6 +1724,8 @@ class SynthesizedFourBar:
         point: Optional[Point] = None,
         max_stroke_ratio: float = 1.8,
         samples: int = 256,
+        actuator_width: float = 0.0,
+        min_gap: float = 0.0,
         **options: Unpack[ActuatorMapOptions],
     ) -> Actuator:
         """The actuator from the ground pivot ``ground`` (see
@@ -2506,7 +2518,7 @@ class DesignReport:
             Optional[Tuple[float, float]],
             Optional[Tuple[str, float, int, Optional[Point], int]],
         ] = ...,
-        passed: Tuple[int, int] = ...,
+        passed: Union[Tuple[int, int], Tuple[int, int, Optional[Tuple[float, float]]]] = ...,
     ) -> DesignReport:
         """Rebuilds a report from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2532,6 +2544,8 @@ def _design(
     actuator_point: Optional[Point] = None,
     max_stroke_ratio: float = ...,
     actuator_samples: int = ...,
+    actuator_width: float = ...,
+    min_gap: float = ...,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The design search in this process (see :func:`burmester.design`,
@@ -2558,6 +2572,8 @@ def _design_plan(
     actuator_point: Optional[Point] = None,
     max_stroke_ratio: float = ...,
     actuator_samples: int = ...,
+    actuator_width: float = ...,
+    min_gap: float = ...,
     progress: Optional[Progress] = None,
 ) -> dict[str, Any]:
     """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
@@ -2584,6 +2600,8 @@ def _design_from_atlas(
     actuator_point: Optional[Point] = None,
     max_stroke_ratio: float = ...,
     actuator_samples: int = ...,
+    actuator_width: float = ...,
+    min_gap: float = ...,
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere
@@ -3003,16 +3021,28 @@ class Actuator:
     @property
     def min_clearance(self) -> float:
         """The smallest gap over the travel between the strut (its line
-        from ``G`` to ``Q``, as wide as the links) and the links that do
-        not carry ``Q``, the obstacles and the envelope's boundary;
-        negative where they overlap (a strut through its own link's bar
-        counts as an overlap)."""
+        from ``G`` to ``Q``, a capsule :attr:`actuator_width` wide) and the
+        links that do not carry ``Q`` (capsules :attr:`link_width` wide),
+        the obstacles and the envelope's boundary; negative where they
+        overlap (a strut through its own link's bar counts as an
+        overlap)."""
     @property
     def clearance_angle(self) -> float:
         """The input angle where the gap is smallest, radians."""
     @property
     def clear(self) -> bool:
-        """The strut stays clear over the travel (``min_clearance > 0``)."""
+        """The strut stays clear over the travel: ``min_clearance`` above 0
+        and at least :attr:`min_gap` (``acceptable`` requires it)."""
+    @property
+    def actuator_width(self) -> float:
+        """The strut's diameter its clearance was measured with (task
+        units; one diameter for the strut: its body's)."""
+    @property
+    def min_gap(self) -> float:
+        """The least gap it had to keep (task units)."""
+    @property
+    def link_width(self) -> float:
+        """The links' width its clearance was measured with (task units)."""
     def at(self, theta2: float) -> Tuple[Tuple[float, float], float]:
         """``((x, y), s)``: the moving point and the length at input angle
         ``theta2``."""
@@ -3031,6 +3061,7 @@ class Actuator:
         constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
         extra: Tuple[Optional[Tuple[int, int]], float, float, Optional[str]],
         envelope: Optional[Sequence[Point]] = None,
+        strut: Optional[Tuple[float, float]] = None,
     ) -> Actuator:
         """Rebuilds a placement from its state (for pickling)."""
 
@@ -3071,8 +3102,17 @@ class ActuatorMap:
     def size_ratio(self) -> npt.NDArray[np.float32]:
         """The linkage and the open actuator over the task's span."""
     @property
+    def clearance(self) -> npt.NDArray[np.float32]:
+        """The strut's least gap over the sampled travel, task units: its
+        capsule (:attr:`actuator_width`) to the links' capsules
+        (``link_width``), the obstacles and the envelope; negative where
+        they overlap. Computed where the rest of ``acceptable`` holds
+        (monotone, within the limits, on the base plate); NaN elsewhere. At
+        least a placement's refined :attr:`Actuator.min_clearance`."""
+    @property
     def acceptable(self) -> BoolArray:
-        """Monotone and within the limits and the base plate."""
+        """Monotone and within the limits and the base plate, and clear:
+        ``clearance`` above 0 and at least :attr:`min_gap`."""
     @property
     def grid(self) -> Grid:
         """The grid of candidate ground pivots."""
@@ -3103,6 +3143,12 @@ class ActuatorMap:
     @property
     def samples(self) -> int:
         """The input angles sampling the travel."""
+    @property
+    def actuator_width(self) -> float:
+        """The strut's diameter behind ``clearance`` (task units)."""
+    @property
+    def min_gap(self) -> float:
+        """The least gap behind ``acceptable`` (task units)."""
     def ground(self, j: int, i: int) -> Tuple[float, float]:
         """The candidate ground pivot of sample ``(j, i)``."""
     def placement(self, j: int, i: int) -> Actuator:
@@ -3127,6 +3173,7 @@ class ActuatorMap:
         linkage: SynthesizedFourBar, point: Point, grid: Grid, limits: DesignLimits,
         options: Tuple[str, float, int],
         constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        strut: Optional[Tuple[float, float]] = None,
     ) -> ActuatorMap:
         """Rebuilds a map from its state (for pickling): computed again."""
 

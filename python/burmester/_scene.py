@@ -642,6 +642,8 @@ class ActuatorScene(NamedTuple):
 def actuator_scene(a: "Actuator", width: Optional[float] = None) -> ActuatorScene:
     """The :class:`ActuatorScene` of ``a``, its cylinder ``width`` wide
     (default :data:`CYLINDER_WIDTH` of its closed length)."""
+    if width is None and a.actuator_width > 0.0:  # the strut's diameter, as its clearance took it
+        width = a.actuator_width
     w = CYLINDER_WIDTH * a.min_length if width is None else float(width)
     at = [actuator_at(a, t, w) for t in a.linkage.input_angles]
     return ActuatorScene(linkage_scene(a.linkage, None), a.ground, a.link, w, at)

@@ -73,7 +73,8 @@ def actuator_map(
     :class:`burmester.SynthesizedFourBar` or a design) over ``view``
     (default :func:`default_view`) on ``samples`` ``(nx, ny)``; ``options``
     as :meth:`burmester.SynthesizedFourBar.actuator_map` (``link``,
-    ``point``, ``max_stroke_ratio``, the limits, ``base_plate``)."""
+    ``point``, ``max_stroke_ratio``, ``actuator_width``, ``min_gap``, the
+    limits, ``base_plate``, ``link_width``)."""
     sfb = _linkage_of(linkage)
     v = tuple(view) if view is not None else default_view(sfb)
     return sfb.actuator_map(*v, *samples, **options)
@@ -100,10 +101,18 @@ def design_actuator(
         raise InvalidInputError(
             f"no acceptable actuator placement in the view ({mono} of {amap.monotone.size} ground "
             f"pivots give a monotone stroke); widen the view, move the point, or relax "
-            f"max_stroke_ratio ({amap.max_stroke_ratio:g}) or min_transmission_deg "
-            f"({amap.limits.min_transmission_deg:g})"
+            f"max_stroke_ratio ({amap.max_stroke_ratio:g}), min_transmission_deg "
+            f"({amap.limits.min_transmission_deg:g}) or min_gap ({amap.min_gap:g}; "
+            f"{clear_count(amap)} of them keep it)"
         )
     return best[0]
+
+
+def clear_count(amap: ActuatorMap) -> int:
+    """How many monotone samples of ``amap`` keep its least gap."""
+    with np.errstate(invalid="ignore"):
+        ok = amap.monotone & (amap.clearance > 0.0) & (amap.clearance >= amap.min_gap)
+    return int(np.count_nonzero(ok))
 
 
 def actuator_record(a: Actuator) -> Dict[str, Any]:
@@ -128,6 +137,8 @@ def actuator_record(a: Actuator) -> Dict[str, Any]:
         "ranked_by": a.ranked_by,
         "min_clearance": a.min_clearance,
         "clear": a.clear,
+        "actuator_width": a.actuator_width,
+        "min_gap": a.min_gap,
     }
 
 
@@ -159,8 +170,14 @@ def actuator_table(a: Actuator, source: Optional[str] = None, units: str = "") -
                  f"{'acceptable' if a.acceptable else 'NOT acceptable'} under the limits")
     lines.append(f"  {'clear' if a.clear else 'NOT clear'} over the travel: the strut's least gap to the links "
                  f"(not those carrying Q), obstacles and envelope {a.min_clearance:.1f}{u} "
-                 f"(at input angle {math.degrees(a.clearance_angle):.1f} deg)")
+                 f"(at input angle {math.degrees(a.clearance_angle):.1f} deg; strut {a.actuator_width:g}{u} "
+                 f"wide, links {_link_width(a):g}{u}, least gap {a.min_gap:g}{u})")
     return "\n".join(lines)
+
+
+def _link_width(a: Actuator) -> float:
+    """The links' width the placement's clearance was measured with."""
+    return float(a.link_width)
 
 
 def draw_map(amap: ActuatorMap, *, best: int = 3, rank_by: "RankBy" = "balanced",
@@ -183,6 +200,17 @@ def draw_map(amap: ActuatorMap, *, best: int = 3, rank_by: "RankBy" = "balanced"
     handles: List[Any] = plot.placement_map(ax, amap.grid, amap.monotone, amap.acceptable, mu, plot.ACTUATOR_MAP_CMAP,
                                             ("monotone stroke", "meets the limits"), "actuator-map",
                                             transmission_levels)
+    gap = max(amap.min_gap, 0.0)
+    with np.errstate(invalid="ignore"):
+        near = np.where(amap.monotone, amap.clearance, np.nan)
+    if np.isfinite(near).any() and np.nanmin(near) < gap < np.nanmax(near):
+        xs, ys = amap.grid.cell_centers()
+        cs = ax.contour(xs, ys, near, levels=[gap], colors="#00897b", linewidths=1.2, linestyles="--", zorder=4)
+        cs.set_gid("clearance")
+        from matplotlib.lines import Line2D
+
+        handles.append(Line2D([], [], color="#00897b", linestyle="--",
+                              label=f"strut's gap = {gap:g} (min_gap; clear on the far side)"))
     sfb = amap.linkage
     placements = amap.best_placements(best, rank_by=rank_by) if best > 0 else []
     if placements:

@@ -71,6 +71,8 @@ def design(
     actuator_point: Optional[Tuple[float, float]] = None,
     max_stroke_ratio: float = 1.8,
     actuator_samples: int = 64,
+    actuator_width: float = 0.0,
+    min_gap: float = 0.0,
 ) -> DesignReport:
     """The best linkages for ``task`` (three to five poses) inside ``space``
     (a :class:`burmester.Space`; default: pivots anywhere, no obstacles)
@@ -125,12 +127,20 @@ def design(
     the travel (:attr:`burmester.Actuator.clear`). A design without one is
     passed over (:attr:`burmester.DesignReport.unplaced`). These keywords
     are refused without ``input="actuator"``.
+
+    ``actuator_width`` is the strut's diameter (task units, default 0: its
+    center line; give the body's, the thicker part) and ``min_gap`` the least
+    gap (task units, default 0) its capsule must keep from the links'
+    capsules (the space's ``link_width``), the obstacles and the envelope over
+    the travel: a placement nearer than that is not clear. Both at least 0
+    (:class:`burmester.InvalidInputError` otherwise).
     """
     kw: Dict[str, Any] = dict(space=space, limits=limits, rank_by=rank_by, top=top, min_separation=min_separation,
               coarse_driven=coarse_driven, coarse_driving=coarse_driving, coarse_pairs=coarse_pairs,
               starts=starts, max_iterations=max_iterations, input=input, swing_margin_deg=swing_margin_deg,
               max_time_ratio=max_time_ratio, actuator_link=actuator_link, actuator_point=actuator_point,
               max_stroke_ratio=max_stroke_ratio, actuator_samples=actuator_samples)
+    kw.update(actuator_width=actuator_width, min_gap=min_gap)
     if client is None or not counts.of(task).filemon:  # the coarse pass on Dask is the atlas's
         return _design(task, progress=progress, **kw)
     from burmester.atlas import _DASK_MISSING, _on_dask

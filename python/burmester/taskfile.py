@@ -904,7 +904,14 @@ class ActuatorSpec:
         y = [-200.0, 200.0]          # ... ymin, ymax (default: about the linkage)
         grid = [320, 320]            # ground pivots sampled along x and y, 2 to 1024 each
         base_plate = [[-150, -100], [50, -100], [50, 0], [-150, 0]]   # G inside this polygon
-        width = 18.0                 # the cylinder's body as drawn and exported (default: 0.06 of its closed length)
+        width = 18.0                 # the strut's diameter (its body's): its clearance, as drawn and exported
+        min_gap = 3.0                # the least gap to the links, obstacles and envelope over the travel
+
+    ``width`` is the strut's real diameter: its capsule in the clearance
+    (against the links, ``[space] link_width`` wide) and the cylinder drawn
+    and exported (without it: a line in the clearance, 0.06 of its closed
+    length as drawn). ``min_gap`` (default 0) is the least gap a placement
+    keeps; both in task units.
     """
 
     link: Literal["coupler", "crank", "rocker"] = "coupler"
@@ -918,9 +925,13 @@ class ActuatorSpec:
     view: Optional[Tuple[float, float, float, float]] = None
     grid: Tuple[int, int] = (200, 200)
     base_plate: Optional[Tuple[Point, ...]] = None
-    #: The cylinder's width in the pictures, the animation and the CAD
-    #: export (its rod is 0.45 of it); None: 0.06 of its closed length.
+    #: The strut's diameter: its capsule in the clearance and the
+    #: cylinder's width in the pictures, the animation and the CAD export
+    #: (its rod is 0.45 of it); None: a line in the clearance, 0.06 of its
+    #: closed length as drawn.
     width: Optional[float] = None
+    #: The least gap over the travel (task units); None: 0.
+    min_gap: Optional[float] = None
 
 
 def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
@@ -929,7 +940,7 @@ def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
     if t is None:
         return None
     r.only_keys("actuator", t, ["link", "point", "max_stroke_ratio", "max_size_ratio", "rank_by", "x", "y",
-                                "grid", "base_plate", "width"])
+                                "grid", "base_plate", "width", "min_gap"])
     kw: Dict[str, Any] = {}
     for key, allowed in (("link", ACTUATOR_LINKS), ("rank_by", ACTUATOR_RANKINGS)):
         if key in t:
@@ -942,7 +953,8 @@ def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
     # Each number: (its lowest value, whether that is allowed, what it is), TOML's inf for no size limit.
     for key, (low, closed, what) in (("max_stroke_ratio", (1.0, True, "at least 1 (open over closed length)")),
                                      ("max_size_ratio", (0.0, False, "a ratio above 0 (or inf: no limit)")),
-                                     ("width", (0.0, False, "a width above 0 (task units)"))):
+                                     ("width", (0.0, False, "a width above 0 (task units)")),
+                                     ("min_gap", (0.0, True, "a gap of at least 0 (task units)"))):
         if key in t:
             value = r.number(f"actuator.{key}", t[key], "a number", no_limit=key == "max_size_ratio")
             if value < low or (value == low and not closed):
@@ -991,5 +1003,7 @@ def _dump_actuator(a: ActuatorSpec, note: Any) -> Any:
         t.add("base_plate", note(tomlkit.item([[float(x), float(y)] for x, y in a.base_plate]),
                                  "G inside this polygon"))
     if a.width is not None:
-        t.add("width", note(tomlkit.item(float(a.width)), "the cylinder's width as drawn and exported"))
+        t.add("width", note(tomlkit.item(float(a.width)), "the strut's diameter: its clearance, as drawn"))
+    if a.min_gap is not None:
+        t.add("min_gap", note(tomlkit.item(float(a.min_gap)), "the least gap over the travel"))
     return t

@@ -336,6 +336,10 @@ PROPERTIES[burmester.Design] += " actuator"
 PROPERTIES[burmester.DesignReport] += " actuator unplaced"
 PROPERTIES[burmester.Actuator] += " min_clearance clearance_angle clear"
 
+# Issue 27 (clr32): the strut's diameter and least gap, the map's clearance column.
+PROPERTIES[burmester.Actuator] += " actuator_width min_gap link_width"
+PROPERTIES[burmester.ActuatorMap] += " clearance actuator_width min_gap"
+
 # Issue 27 (ssynth27): the slider records.
 PROPERTIES[burmester.SliderDyad] = "circle guide normal"
 PROPERTIES[burmester.InvertedSlider] = "swivel direction"

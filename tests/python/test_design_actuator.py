@@ -98,7 +98,9 @@ def _dense(a, steps=4000):
 
 def test_hood_designs_carry_a_clear_actuator():
     task, space, limits = _hood()
-    r = burmester.design(task, space=space, limits=limits, input="actuator", **QUICK)
+    # The strut as wide as the links (what the gap below takes off).
+    r = burmester.design(task, space=space, limits=limits, input="actuator", actuator_width=space.link_width,
+                         **QUICK)
     assert r.actuator and len(r) >= 1 and r.limits.input == "any"
     box = space.pivot_box
     for d in r:
@@ -128,10 +130,13 @@ def test_moving_and_scaling_the_hood_moves_and_scales_the_actuator():
     # is laid over the box), so the designs of both are matched by their
     # pivots; the actuator of each matched hinge must map.
     task, space, limits = _hood()
-    r = burmester.design(task, space=space, limits=limits, input="actuator", top=5, starts=12)
+    # A 20 mm strut 3 mm clear, scaled with the rest.
+    r = burmester.design(task, space=space, limits=limits, input="actuator", top=5, starts=12,
+                         actuator_width=20.0, min_gap=3.0)
     (dx, dy), k = (250.0, -40.0), 2.5
     task2, space2, limits2 = _hood((dx, dy), k)
-    r2 = burmester.design(task2, space=space2, limits=limits2, input="actuator", top=5, starts=12)
+    r2 = burmester.design(task2, space=space2, limits=limits2, input="actuator", top=5, starts=12,
+                          actuator_width=20.0 * k, min_gap=3.0 * k)
 
     def moved(p):
         return np.array([k * p[0] + dx, k * p[1] + dy])
@@ -151,6 +156,7 @@ def test_moving_and_scaling_the_hood_moves_and_scales_the_actuator():
             assert b.stroke == pytest.approx(k * a.stroke, rel=1e-4)
             assert b.min_clearance == pytest.approx(k * a.min_clearance, rel=1e-3, abs=1e-3 * task2.span)
             assert b.clear == a.clear and b.monotone == a.monotone
+            assert a.min_clearance >= 3.0 and (b.actuator_width, b.min_gap) == (20.0 * k, 3.0 * k)
     assert matched >= 1
 
 

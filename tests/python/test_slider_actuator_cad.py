@@ -329,6 +329,7 @@ grid = [10, 1]                   | actuator.grid[1]          | 2 to 20000
 base_plate = [[0, 0], [1, 0]]    | actuator.base_plate       | at least 3 points
 stroke = 10                      | actuator.stroke           | unknown key
 width = -1                       | actuator.width            | above 0
+min_gap = -1                     | actuator.min_gap          | at least 0
 """
 
 
@@ -355,6 +356,14 @@ def test_the_cli_reads_the_table_and_the_flags_override_it(tmp_path, capsys):
     # A flag overrides the table.
     assert main(["actuator", str(HOOD), "--map-grid", "64", "64", "--max-stroke-ratio", "1.9", "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["actuator"]["max_stroke_ratio"] == 1.9
+    # The strut's diameter is the table's width (20 mm) in its clearance
+    # too; --width overrides it there as well.
+    assert from_file["actuator_width"] == 20.0 and from_file["min_gap"] == 3.0
+    assert from_file["min_clearance"] >= 3.0
+    assert main(["actuator", str(HOOD), "--map-grid", "64", "64", "--width", "18", "--json"]) == 0
+    thinner = json.loads(capsys.readouterr().out)["actuator"]
+    assert thinner["actuator_width"] == 18.0 and thinner["min_clearance"] >= 3.0
+    gx, gy = thinner["ground"]
     # -o writes the CAD export and the animation too.
     out = tmp_path / "strut.dxf"
     assert main(["actuator", str(HOOD), "--map-grid", "64", "64", "-o", str(out), "--width", "18"]) == 0

@@ -241,8 +241,21 @@ fn single(
     g: P,
     constraints: &Constraints,
 ) -> ActuatorContext {
+    single_strut(sfb, link, (q, g), (0.0, 0.0), constraints)
+}
+
+/// [`single`] with a strut `width` wide that must keep `min_gap`.
+fn single_strut(
+    sfb: &SynthesizedFourBar,
+    link: ActuatorLink,
+    (q, g): (P, P),
+    (width, min_gap): (f64, f64),
+    constraints: &Constraints,
+) -> ActuatorContext {
     let options = ActuatorOptions {
         link,
+        actuator_width: width,
+        min_gap,
         ..ActuatorOptions::default()
     };
     let limits = DesignLimits::default();
@@ -399,7 +412,7 @@ fn map_and_ranking_agree_with_placements() {
             ActuatorContext::new(&sfb, q, &grid, &limits, &options, &Constraints::none()).unwrap();
         let map = ctx.map(&Control::new()).unwrap();
         let cols = &map.columns;
-        for k in (0..grid.len()).step_by(7) {
+        for k in (0..grid.len()).step_by(29) {
             let Ok(a) = ctx.placement_at(k) else {
                 assert!(!cols.valid[k]);
                 continue;
@@ -473,7 +486,10 @@ fn figures_are_invariant_under_similarities() {
                 link_width: w,
                 ..Constraints::none()
             };
-            single(s, link, q, g, &c).placement(g).unwrap()
+            // The strut twice as wide as the links.
+            single_strut(s, link, (q, g), (2.0 * w, 0.0), &c)
+                .placement(g)
+                .unwrap()
         };
         let w = 0.01 * task.span();
         let a = place(&sfb, q, g, obstacle.to_vec(), w);
@@ -522,6 +538,37 @@ fn bad_input_gives_typed_errors() {
         ..ActuatorOptions::default()
     };
     assert!(new(&bad, &none).is_err());
+    // A negative or non-finite strut width or least gap: refused by name,
+    // the message saying what to pass.
+    for v in [-1.0, f64::NAN, f64::INFINITY] {
+        for (bad, name) in [
+            (
+                ActuatorOptions {
+                    actuator_width: v,
+                    ..ActuatorOptions::default()
+                },
+                "actuator_width",
+            ),
+            (
+                ActuatorOptions {
+                    min_gap: v,
+                    ..ActuatorOptions::default()
+                },
+                "min_gap",
+            ),
+        ] {
+            let e = new(&bad, &none).unwrap_err();
+            assert!(
+                matches!(&e, Error::InvalidInput(InvalidInput::OutsideRange { name: n, .. }) if *n == name),
+                "{e:?}"
+            );
+            let m = e.to_string();
+            assert!(
+                m.contains(name) && m.contains("pass a value in that range"),
+                "{m}"
+            );
+        }
+    }
     for n in [2, ActuatorOptions::MAX_TRAVEL_SAMPLES + 1] {
         let bad = ActuatorOptions {
             travel_samples: n,
@@ -630,6 +677,13 @@ fn documented_maximum_grid_and_cancelling() {
         side * side
     );
     assert!(map.columns.monotone.iter().any(|&m| !m));
+    // The clearance is there only where the actuator is monotone, and
+    // wherever it is acceptable.
+    let cols = &map.columns;
+    for k in 0..side * side {
+        assert!(!cols.clearance[k].is_finite() || cols.monotone[k], "{k}");
+        assert!(!cols.acceptable[k] || cols.clearance[k] > 0.0, "{k}");
+    }
     let big = Grid::from_bounds(c.x - r, c.x + r, c.y - r, c.y + r, side, side + 1).unwrap();
     assert!(matches!(
         ActuatorContext::new(&sfb, q, &big, &limits, &options, &none),
@@ -657,13 +711,15 @@ fn documented_maximum_grid_and_cancelling() {
 /// from the test's own joints, the distances by parry's segment query (the
 /// crate measures with its own closed form), a crossing of the link that
 /// carries `Q` by solving the two lines' intersection, an obstacle's
-/// distance from its edges and a containment test by winding.
+/// distance from its edges and a containment test by winding; the
+/// strut's and the links' half widths taken off (`width`: the links', the
+/// strut's).
 fn own_gap(
     sfb: &SynthesizedFourBar,
     own: &Own,
     g: P,
     t: f64,
-    width: f64,
+    width: (f64, f64),
     obstacles: &[Vec<P>],
 ) -> f64 {
     use parry2d_f64::math::{Pose, Vector as V};
@@ -683,7 +739,7 @@ fn own_gap(
     let c = sfb.fourbar.solve(t, own.mode).unwrap();
     let j = sfb.fourbar.joints(&c);
     let q = own.at(t);
-    let r = 0.5 * width;
+    let (r, rs) = (0.5 * width.0, 0.5 * width.1);
     let mut gap = f64::INFINITY;
     for (link, a, b) in [
         (ActuatorLink::Crank, j.input_pivot, j.crank_joint),
@@ -704,11 +760,11 @@ fn own_gap(
                 let u = (w.x * -e.y - w.y * -e.x) / det;
                 let v = (d.x * w.y - d.y * w.x) / det;
                 if (0.0..1.0 - 1e-6).contains(&u) && (0.0..=1.0).contains(&v) {
-                    gap = gap.min(-2.0 * r);
+                    gap = gap.min(-(r + rs));
                 }
             }
         } else {
-            gap = gap.min(dist((g, q), (a, b)) - 2.0 * r);
+            gap = gap.min(dist((g, q), (a, b)) - r - rs);
         }
     }
     for o in obstacles {
@@ -726,7 +782,7 @@ fn own_gap(
         if inside(g) || inside(q) {
             d = 0.0;
         }
-        gap = gap.min(d - r);
+        gap = gap.min(d - rs);
     }
     gap
 }
@@ -737,7 +793,7 @@ fn dense_gap(
     own: &Own,
     g: P,
     steps: usize,
-    width: f64,
+    width: (f64, f64),
     obstacles: &[Vec<P>],
 ) -> f64 {
     let (start, span) = sfb.travel().unwrap();
@@ -750,9 +806,10 @@ fn dense_gap(
 }
 
 /// A placement's clearance agrees with dense driving (8 000 steps, the
-/// test's own frame and distances), with and without an obstacle and a
-/// link width: the smallest gap to a part of the sample step's motion, the
-/// verdict wherever the gap is not within that of zero.
+/// test's own frame and distances), with and without an obstacle, a link
+/// width and a strut width (each drawn on its own): the smallest gap to a
+/// part of the sample step's motion, the verdict wherever the gap is not
+/// within that of zero.
 #[test]
 fn clearance_agrees_with_dense_driving() {
     let mut runner = TestRunner::new(common::config(1));
@@ -762,7 +819,7 @@ fn clearance_agrees_with_dense_driving() {
         let link = ActuatorLink::ALL[case % 3];
         let c = common::centroid(task.poses());
         let r = task.span();
-        let (ox, oy, w) = (-1.5f64..1.5, -1.5f64..1.5, 0.0f64..0.05)
+        let (ox, oy, w, ws) = (-1.5f64..1.5, -1.5f64..1.5, 0.0f64..0.05, 0.0f64..0.08)
             .new_tree(&mut runner)
             .unwrap()
             .current();
@@ -778,6 +835,7 @@ fn clearance_agrees_with_dense_driving() {
             Vec::new()
         };
         let width = if case % 3 == 0 { w * r } else { 0.0 };
+        let strut = if case % 5 < 3 { ws * r } else { 0.0 };
         let constraints = Constraints {
             obstacles: obstacles.clone(),
             link_width: width,
@@ -785,10 +843,10 @@ fn clearance_agrees_with_dense_driving() {
         };
         for _ in 0..5 {
             let (q, g) = point_and_pivot(&mut runner, &sfb, c, r);
-            let ctx = single(&sfb, link, q, g, &constraints);
+            let ctx = single_strut(&sfb, link, (q, g), (strut, 0.0), &constraints);
             let Ok(a) = ctx.placement(g) else { continue };
             let own = Own::new(&sfb, link, q);
-            let d = dense_gap(&sfb, &own, g, 8_000, width, &obstacles);
+            let d = dense_gap(&sfb, &own, g, 8_000, (width, strut), &obstacles);
             // How far a point of the strut or a link moves in a step of
             // the placement's sampling, bounded from dense samples.
             let step = (ctx.travel_angles()[1] - ctx.travel_angles()[0]).abs();
@@ -805,7 +863,7 @@ fn clearance_agrees_with_dense_driving() {
                     a.min_clearance
                 );
             }
-            if d > -2.0 * (0.5 * width) + 1e-12 {
+            if d > -0.5 * (width + strut) + 1e-12 {
                 assert!(
                     a.min_clearance <= d + 1e-9 * r && a.min_clearance >= d - moves,
                     "case {case}: {} vs dense {d} (moves {moves})",
@@ -813,7 +871,7 @@ fn clearance_agrees_with_dense_driving() {
                 );
             } else {
                 crossing += 1;
-                assert!(a.min_clearance <= -width * 0.5 * 2.0 + 1e-12 || !a.clear);
+                assert!(a.min_clearance <= -0.5 * (width + strut) + 1e-12 || !a.clear);
             }
             verdicts[usize::from(a.clear)] += 1;
         }
@@ -899,7 +957,7 @@ fn the_design_places_a_clear_actuator_on_every_design() {
         );
         assert!((a.stroke_ratio - dense.s_max / dense.s_min).abs() < 1e-6);
         assert!(dense.mu_min >= options.limits.min_transmission - 1e-5);
-        let gap = dense_gap(&d.linkage, &own, a.ground, 8_000, 0.0, &[]);
+        let gap = dense_gap(&d.linkage, &own, a.ground, 8_000, (0.0, 0.0), &[]);
         assert!(
             gap > 0.0 && (gap - a.min_clearance).abs() < 1e-3 * task.span(),
             "dense {gap} vs {} at Q {:?}",
@@ -958,4 +1016,191 @@ fn design_actuator_options_at_their_limits() {
     let stop = AtomicBool::new(true);
     let r = task.design(&options, &Control::new().with_cancel(&stop));
     assert!(matches!(r, Err(Error::Cancelled { .. })), "{r:?}");
+}
+
+/// The rocker's middle `Q` (at pose 1) and a ground pivot `G` a distance
+/// `d` behind the crank's fixed pivot `A0`, against the crank's middle
+/// direction `u`, where the construction holds over the travel (checked by
+/// driving the linkage densely): the crank in front of `A0`, `Q` behind
+/// `G`, `G` off the rocker's bar by `2 d` (the strut does not lie along
+/// its own link), and the test's own gap at least `d` everywhere, so that
+/// the strut's nearest link is the crank at `A0`, `d` away.
+fn passing_the_crank_pivot(sfb: &SynthesizedFourBar, d: f64) -> Option<(P, P)> {
+    let (start, span) = sfb.travel()?;
+    let mode = sfb.modes()[0]?;
+    if span.abs() > 0.8 * PI {
+        return None;
+    }
+    let joints = |t: f64| sfb.fourbar.joints(&sfb.fourbar.solve(t, mode).unwrap());
+    let mid = joints(start + 0.5 * span);
+    let u = (mid.crank_joint - mid.input_pivot).normalize();
+    let g = mid.input_pivot - u * d;
+    let q = sfb.driven.center + (sfb.driven.circle - sfb.driven.center) * 0.5;
+    let own = Own::new(sfb, ActuatorLink::Rocker, q);
+    let off_bar = |p: P, a: P, b: P| {
+        let ab = b - a;
+        let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+        (p - (a + ab * t)).norm()
+    };
+    let steps = 2_000;
+    let holds = (0..=steps).all(|k| {
+        let t = start + span * k as f64 / steps as f64;
+        let j = joints(t);
+        (j.crank_joint - j.input_pivot).dot(&u) > 0.0
+            && (own.at(t) - g).dot(&u) < 0.0
+            && off_bar(g, j.output_pivot, j.rocker_joint) > 2.0 * d
+            && own_gap(sfb, &own, g, t, (0.0, 0.0), &[]) >= d - 1e-9 * d
+    });
+    holds.then_some((q, g))
+}
+
+/// Limits every monotone placement meets.
+fn open_limits() -> DesignLimits {
+    DesignLimits {
+        min_transmission: 0.0,
+        max_link_ratio: f64::INFINITY,
+        max_size_ratio: f64::INFINITY,
+        max_link_length: f64::INFINITY,
+        ..DesignLimits::default()
+    }
+}
+
+/// A strut that passes the crank's fixed pivot at a known distance `d`
+/// ([`passing_the_crank_pivot`]): the placement's and the map's gap are
+/// `d` less the two half widths; the least gap `min_gap` rejects it
+/// exactly above that.
+#[test]
+fn a_strut_passing_a_link_at_a_known_distance() {
+    let mut runner = TestRunner::new(common::config(1));
+    let found = (0..400)
+        .filter(|_| {
+            let (task, sfb) = random_linkage(&mut runner);
+            let d = 0.05 * task.span();
+            let Some((q, g)) = passing_the_crank_pivot(&sfb, d) else {
+                return false;
+            };
+            let (wl, ws) = (0.3 * d, 0.5 * d);
+            let want = d - 0.5 * wl - 0.5 * ws;
+            let c = Constraints {
+                link_width: wl,
+                ..Constraints::none()
+            };
+            let at = |min_gap: f64| {
+                let options = ActuatorOptions {
+                    link: ActuatorLink::Rocker,
+                    actuator_width: ws,
+                    min_gap,
+                    max_stroke_ratio: f64::INFINITY,
+                    ..ActuatorOptions::default()
+                };
+                let ctx = ActuatorContext::new(&sfb, q, &one_grid(g), &open_limits(), &options, &c)
+                    .unwrap();
+                (ctx.placement(g).unwrap(), ctx.map(&Control::new()).unwrap())
+            };
+            let (a, map) = at(0.0);
+            assert!(
+                (a.min_clearance - want).abs() < 1e-9 * task.span(),
+                "{} vs {want}",
+                a.min_clearance
+            );
+            assert!(a.clear);
+            // The map computes it where the actuator is monotone (the other
+            // limits are open here).
+            let sampled = f64::from(map.columns.clearance[0]);
+            assert_eq!(sampled.is_finite(), a.monotone);
+            assert!(
+                !a.monotone || (sampled - want).abs() < 1e-6 * want,
+                "{sampled} vs {want}"
+            );
+            // min_gap just below the gap keeps it, just above rejects it
+            // (the placement and the map sample alike).
+            let (below, map_below) = at(want * (1.0 - 1e-6));
+            assert!(below.clear && below.acceptable == a.acceptable);
+            assert_eq!(map_below.columns.acceptable[0], map.columns.acceptable[0]);
+            let (above, map_above) = at(want * (1.0 + 1e-6));
+            assert!(!above.clear && !above.acceptable);
+            assert!(!map_above.columns.acceptable[0]);
+            assert_eq!(above.min_clearance, a.min_clearance);
+            true
+        })
+        .count();
+    assert!(found >= 5, "{found} linkages met the construction");
+}
+
+/// The map's `clearance` column and its `min_gap`: the column does not
+/// depend on `min_gap`; `acceptable` under a least gap is exactly the
+/// acceptable samples at gap 0 whose clearance reaches it; a sample's
+/// placement refines its clearance down from the sampled one, by at most
+/// what the links move in a sample step.
+#[test]
+fn the_min_gap_filters_the_map_exactly() {
+    let mut runner = TestRunner::new(common::config(1));
+    let (mut kept, mut dropped) = (0, 0);
+    for case in 0..6 {
+        let (task, sfb) = random_linkage(&mut runner);
+        let r = task.span();
+        let c = common::centroid(task.poses());
+        let (lo, hi) = (
+            c - Vector2::new(2.0, 2.0) * r,
+            c + Vector2::new(2.0, 2.0) * r,
+        );
+        let grid = Grid::from_bounds(lo.x, hi.x, lo.y, hi.y, 48, 40).unwrap();
+        let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.4;
+        let link = ActuatorLink::ALL[case % 3];
+        let cons = Constraints {
+            link_width: 0.02 * r,
+            ..Constraints::none()
+        };
+        let limits = open_limits();
+        let map_at = |min_gap: f64| {
+            let options = ActuatorOptions {
+                link,
+                actuator_width: 0.03 * r,
+                min_gap,
+                max_stroke_ratio: f64::INFINITY,
+                ..ActuatorOptions::default()
+            };
+            let ctx = ActuatorContext::new(&sfb, q, &grid, &limits, &options, &cons).unwrap();
+            ctx.map(&Control::new()).unwrap()
+        };
+        let zero = map_at(0.0);
+        let m = 0.1 * r;
+        let gapped = map_at(m);
+        let (z, g) = (&zero.columns, &gapped.columns);
+        let bits = |x: &[f32]| x.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&z.clearance), bits(&g.clearance));
+        for k in 0..grid.len() {
+            let gap = f64::from(z.clearance[k]);
+            if z.acceptable[k] {
+                assert!(gap > 0.0);
+            }
+            if (gap - m).abs() <= 1e-6 * r {
+                continue; // the column is f32: a tie is not decided by it
+            }
+            assert_eq!(g.acceptable[k], z.acceptable[k] && gap >= m, "sample {k}");
+            if z.acceptable[k] {
+                if gap >= m {
+                    kept += 1;
+                } else {
+                    dropped += 1;
+                }
+            }
+        }
+        // Placements refine the sampled gap downward, a little.
+        let step = (zero.context.travel_angles()[1] - zero.context.travel_angles()[0]).abs();
+        let moves = 4.0 * step * r * (1.0 + 1.0 / sfb.figures.min_transmission.sin().max(0.1));
+        for k in (0..grid.len()).step_by(29) {
+            if !z.clearance[k].is_finite() {
+                continue;
+            }
+            let a = zero.context.placement_at(k).unwrap();
+            let sampled = f64::from(z.clearance[k]);
+            assert!(
+                a.min_clearance <= sampled + 1e-6 * r && a.min_clearance >= sampled - moves,
+                "{} vs sampled {sampled}",
+                a.min_clearance
+            );
+        }
+    }
+    assert!(kept > 0 && dropped > 0, "{kept} kept, {dropped} dropped");
 }

@@ -31,14 +31,15 @@ struct ActuatorArgs {
 }
 
 impl ActuatorArgs {
+    /// `terms`: the link, the point, the stroke ratio limit, the travel's
+    /// samples; `strut`: the strut's diameter and least gap.
     fn new(
         method: &str,
-        link: &str,
-        point: Option<PyPoint>,
-        max_stroke_ratio: Real,
-        samples: Count,
+        terms: (&str, Option<PyPoint>, Real, Count),
+        strut: (Real, Real),
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
+        let (link, point, max_stroke_ratio, samples) = terms;
         let m = MapOptions::from_kwargs(method, options, Keys::ACTUATOR)?;
         Ok(ActuatorArgs {
             point: point.map(|p| p.0),
@@ -47,6 +48,8 @@ impl ActuatorArgs {
                 link: link.parse::<ActuatorLink>().py()?,
                 max_stroke_ratio: max_stroke_ratio.0,
                 travel_samples: samples.0,
+                actuator_width: strut.0.0,
+                min_gap: strut.1.0,
             },
             constraints: m.constraints,
         })
@@ -164,6 +167,10 @@ getters!(PyActuator, inner {
     f64: min_clearance, clearance_angle;
     bool: clear;
 });
+// The strut's terms it was placed under, and the map's.
+getters!(PyActuator, [context.options()] { f64: actuator_width, min_gap; });
+getters!(PyActuator, [context.constraints()] { f64: link_width; });
+getters!(PyActuatorMap, [map.context.options()] { f64: max_stroke_ratio, actuator_width, min_gap; });
 
 /// The figures by name, each a getter of one element of
 /// [`PyActuator`]'s arrays.
@@ -261,7 +268,8 @@ impl PyActuator {
     /// Rebuilds a placement from its state (for pickling).
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
-    #[pyo3(signature = (linkage, point, ground, limits, options, constraints, extra, envelope = None))]
+    #[pyo3(signature = (linkage, point, ground, limits, options, constraints, extra, envelope = None,
+        strut = None))]
     fn _from_state(
         linkage: PySynthesizedFourBar,
         point: PyPoint,
@@ -271,13 +279,14 @@ impl PyActuator {
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
         extra: (Option<(usize, usize)>, f64, f64, Option<String>),
         envelope: Option<Vec<PyPoint>>,
+        strut: Option<(f64, f64)>,
     ) -> PyResult<Self> {
         let context = context_of(
             &linkage,
             point,
             ground.0,
             limits,
-            options,
+            (options, strut),
             constraints,
             envelope,
         )?;
@@ -307,6 +316,7 @@ impl PyActuator {
                 .envelope
                 .as_ref()
                 .map(|e| e.iter().map(|p| pt(*p)).collect::<Vec<_>>()),
+            strut_state(self.context.options()),
         )
             .into_pyobject(py)?;
         Ok((py.get_type::<PyActuator>().getattr("_from_state")?, args))
@@ -358,20 +368,29 @@ fn options_state(o: &ActuatorOptions) -> (&'static str, f64, usize) {
     (o.link.as_str(), o.max_stroke_ratio, o.travel_samples)
 }
 
+/// The strut's diameter and least gap as plain data (for pickling; a
+/// pickle without them, from before they were options, reads as 0, 0).
+fn strut_state(o: &ActuatorOptions) -> (f64, f64) {
+    (o.actuator_width, o.min_gap)
+}
+
 /// The context of a pickled map or placement.
 fn context_of(
     linkage: &PySynthesizedFourBar,
     point: PyPoint,
     at: Point2<f64>,
     limits: PyDesignLimits,
-    options: (String, f64, usize),
+    (options, strut): ((String, f64, usize), Option<(f64, f64)>),
     constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
     envelope: Option<Vec<PyPoint>>,
 ) -> PyResult<ActuatorContext> {
+    let (actuator_width, min_gap) = strut.unwrap_or((0.0, 0.0));
     let options = ActuatorOptions {
         link: options.0.parse::<ActuatorLink>().py()?,
         max_stroke_ratio: options.1,
         travel_samples: options.2,
+        actuator_width,
+        min_gap,
     };
     let grid = point_grid(at)?;
     ActuatorContext::new(
@@ -423,7 +442,30 @@ macro_rules! py_actuator_map {
                 })
             }
         }
+
+        /// Whether two maps' columns hold the same bits (NaN equal to NaN).
+        fn same_columns(a: &ActuatorMap, b: &ActuatorMap) -> bool {
+            let (a, b) = (&a.columns, &b.columns);
+            true $(&& SameBits::same_bits(&a.$name, &b.$name))*
+        }
     };
+}
+
+/// Equality of a column's values by their bits (NaN equal to NaN).
+trait SameBits {
+    fn same_bits(a: &Self, b: &Self) -> bool;
+}
+
+impl SameBits for Vec<bool> {
+    fn same_bits(a: &Self, b: &Self) -> bool {
+        a == b
+    }
+}
+
+impl SameBits for Vec<f32> {
+    fn same_bits(a: &Self, b: &Self) -> bool {
+        a.len() == b.len() && a.iter().zip(b).all(|(p, q)| p.to_bits() == q.to_bits())
+    }
 }
 
 burmester::actuator_map_columns!(py_actuator_map);
@@ -499,10 +541,6 @@ impl PyActuatorMap {
         }
     }
     #[getter]
-    fn max_stroke_ratio(&self) -> f64 {
-        self.map.context.options().max_stroke_ratio
-    }
-    #[getter]
     fn samples(&self) -> usize {
         self.map.context.options().travel_samples
     }
@@ -534,6 +572,8 @@ impl PyActuatorMap {
 
     /// Rebuilds a map from its state (for pickling): computed again.
     #[staticmethod]
+    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (linkage, point, grid, limits, options, constraints, strut = None))]
     fn _from_state(
         py: Python<'_>,
         linkage: PySynthesizedFourBar,
@@ -542,13 +582,14 @@ impl PyActuatorMap {
         limits: PyDesignLimits,
         options: (String, f64, usize),
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+        strut: Option<(f64, f64)>,
     ) -> PyResult<Self> {
         let ctx = context_of(
             &linkage,
             point,
             Point2::origin(),
             limits,
-            options,
+            (options, strut),
             constraints,
             None,
         )?;
@@ -577,6 +618,7 @@ impl PyActuatorMap {
             self.limits(),
             options_state(c.options()),
             constraint_state(c.constraints()),
+            strut_state(c.options()),
         )
             .into_pyobject(py)?;
         Ok((py.get_type::<PyActuatorMap>().getattr("_from_state")?, args))
@@ -585,7 +627,7 @@ impl PyActuatorMap {
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other.cast::<PyActuatorMap>().is_ok_and(|o| {
             let (a, b) = (&o.get().map, &self.map);
-            a.context == b.context && o.get().task == self.task && same_bits(a, b)
+            a.context == b.context && o.get().task == self.task && same_columns(a, b)
         })
     }
 
@@ -598,33 +640,19 @@ impl PyActuatorMap {
     }
 }
 
-/// Whether two maps' columns hold the same bits (NaN equal to NaN).
-fn same_bits(a: &ActuatorMap, b: &ActuatorMap) -> bool {
-    let f = |x: &[f32], y: &[f32]| x.iter().zip(y).all(|(p, q)| p.to_bits() == q.to_bits());
-    let (a, b) = (&a.columns, &b.columns);
-    a.valid == b.valid
-        && a.monotone == b.monotone
-        && a.extends == b.extends
-        && a.acceptable == b.acceptable
-        && f(&a.min_transmission_rad, &b.min_transmission_rad)
-        && f(&a.stroke_ratio, &b.stroke_ratio)
-        && f(&a.stroke, &b.stroke)
-        && f(&a.closed_length, &b.closed_length)
-        && f(&a.link_ratio, &b.link_ratio)
-        && f(&a.size_ratio, &b.size_ratio)
-}
-
 /// The actuator methods of `SynthesizedFourBar`: a linear actuator added
 /// between a ground pivot and a point of a moving link.
 #[pymethods]
 impl PySynthesizedFourBar {
     #[doc = text_signature!(
         ACTUATOR,
-        "actuator_map($self, *grid, link='coupler', point=None, max_stroke_ratio=1.8, samples=256",
+        "actuator_map($self, *grid, link='coupler', point=None, max_stroke_ratio=1.8, samples=256, \
+         actuator_width=0.0, min_gap=0.0",
         ", progress=None"
     )]
     #[pyo3(signature = (*grid, link = "coupler", point = None, max_stroke_ratio = Real(1.8),
-        samples = Count(256), progress = None, **options),
+        samples = Count(256), actuator_width = Real(0.0), min_gap = Real(0.0), progress = None,
+        **options),
         text_signature = None)]
     #[allow(clippy::too_many_arguments)]
     fn actuator_map(
@@ -635,11 +663,14 @@ impl PySynthesizedFourBar {
         point: Option<PyPoint>,
         max_stroke_ratio: Real,
         samples: Count,
+        actuator_width: Real,
+        min_gap: Real,
         progress: Option<&Bound<'_, PyAny>>,
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyActuatorMap> {
         let m = "SynthesizedFourBar.actuator_map";
-        let args = ActuatorArgs::new(m, link, point, max_stroke_ratio, samples, options)?;
+        let terms = (link, point, max_stroke_ratio, samples);
+        let args = ActuatorArgs::new(m, terms, (actuator_width, min_gap), options)?;
         let what = "actuator_map takes a grid (or its six numbers); the rest goes by keyword";
         let g = grid_alone(grid, what)?;
         let ctx = args.context(self, &g)?;
@@ -650,12 +681,14 @@ impl PySynthesizedFourBar {
 
     #[doc = text_signature!(
         ACTUATOR,
-        "actuator($self, ground, link='coupler', point=None, max_stroke_ratio=1.8, samples=256, *",
+        "actuator($self, ground, link='coupler', point=None, max_stroke_ratio=1.8, samples=256, \
+         actuator_width=0.0, min_gap=0.0, *",
         ""
     )]
     #[pyo3(signature = (ground, link = "coupler", point = None, max_stroke_ratio = Real(1.8),
-        samples = Count(256), **options),
+        samples = Count(256), actuator_width = Real(0.0), min_gap = Real(0.0), **options),
         text_signature = None)]
+    #[allow(clippy::too_many_arguments)]
     fn actuator(
         &self,
         ground: PyPoint,
@@ -663,10 +696,13 @@ impl PySynthesizedFourBar {
         point: Option<PyPoint>,
         max_stroke_ratio: Real,
         samples: Count,
+        actuator_width: Real,
+        min_gap: Real,
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyActuator> {
         let m = "SynthesizedFourBar.actuator";
-        let args = ActuatorArgs::new(m, link, point, max_stroke_ratio, samples, options)?;
+        let terms = (link, point, max_stroke_ratio, samples);
+        let args = ActuatorArgs::new(m, terms, (actuator_width, min_gap), options)?;
         let ctx = args.context(self, &point_grid(ground.0)?)?;
         let a = ctx.placement(ground.0).py()?;
         Ok(PyActuator::of(a, self.task(), &ctx))

@@ -34,7 +34,7 @@ macro_rules! map_option_keywords {
             max_time_ratio: Real, true, "None", [false true true false];
             base_plate: Vec<PyPoint>, true, "None", [true true false true];
             obstacles: Vec<Vec<PyPoint>>, true, "None", [true true false false];
-            link_width: Real, false, "0.0", [true true false false];
+            link_width: Real, false, "0.0", [true true false true];
             travel_samples: Count, false, "64", [true true false false];
         }
     };

@@ -621,7 +621,7 @@ impl PyDesignReport {
     #[staticmethod]
     #[allow(clippy::too_many_arguments)]
     #[pyo3(signature = (task, designs, limits, space, rank_by, min_separation, search_box, counts,
-        rejections, near_misses, inputs = (None, None), passed = (0, 0)))]
+        rejections, near_misses, inputs = (None, None), passed = Passed::Counts(0, 0)))]
     fn _from_state(
         task: PyTask,
         designs: Vec<PyDesign>,
@@ -634,9 +634,15 @@ impl PyDesignReport {
         rejections: Vec<(String, usize)>,
         near_misses: Vec<PyNearMiss>,
         inputs: (Option<(f64, f64)>, Option<StrutState>),
-        passed: (usize, usize),
+        passed: Passed,
     ) -> PyResult<Self> {
-        let ((motor, actuator), (undriven, unplaced)) = (inputs, passed);
+        let (motor, actuator) = inputs;
+        let (undriven, unplaced, strut) = match passed {
+            Passed::Counts(u, p) => (u, p, None),
+            Passed::WithStrut(u, p, s) => (u, p, s),
+        };
+        // A pickle from before the strut's diameter and gap: 0, 0.
+        let (actuator_width, min_gap) = strut.unwrap_or((0.0, 0.0));
         let actuator = actuator
             .map(|(link, ratio, travel, point, samples)| {
                 Ok::<_, PyErr>(ActuatorSearch {
@@ -644,6 +650,8 @@ impl PyDesignReport {
                         link: link.parse::<ActuatorLink>().py()?,
                         max_stroke_ratio: ratio,
                         travel_samples: travel,
+                        actuator_width,
+                        min_gap,
                     },
                     point: point.map(|p| p.0),
                     samples,
@@ -714,7 +722,12 @@ impl PyDesignReport {
                     )
                 }),
             ),
-            (r.undriven, r.unplaced),
+            (
+                r.undriven,
+                r.unplaced,
+                r.actuator
+                    .map(|a| (a.options.actuator_width, a.options.min_gap)),
+            ),
         );
         reduce_to::<PyDesignReport>(py, "_from_state", args)
     }
@@ -766,6 +779,8 @@ fn options(
     actuator_point: Option<PyPoint>,
     max_stroke_ratio: Real,
     actuator_samples: Count,
+    actuator_width: Real,
+    min_gap: Real,
 ) -> PyResult<DesignOptions> {
     let mut limits = limits.map(|l| l.inner).unwrap_or_default();
     let strut = StrutArgs {
@@ -773,6 +788,8 @@ fn options(
         point: actuator_point.map(|p| p.0),
         max_stroke_ratio: max_stroke_ratio.0,
         samples: actuator_samples.0,
+        actuator_width: actuator_width.0,
+        min_gap: min_gap.0,
     };
     let actuator = strut.search(&mut limits, input)?;
     let motor = motor_of(
@@ -797,6 +814,15 @@ fn options(
     })
 }
 
+/// A report's counts of candidates passed over (undriven, unplaced) as
+/// pickled, with the actuator's diameter and least gap where it has them (a
+/// pickle from before they were options reads as 0, 0).
+#[derive(FromPyObject)]
+enum Passed {
+    WithStrut(usize, usize, Option<(f64, f64)>),
+    Counts(usize, usize),
+}
+
 /// A report's actuator search as plain data (for pickling): the link, the
 /// stroke ratio limit, the travel samples, the point, the ground samples.
 type StrutState = (String, f64, usize, Option<PyPoint>, usize);
@@ -807,6 +833,9 @@ struct StrutArgs<'a> {
     point: Option<Point2<f64>>,
     max_stroke_ratio: f64,
     samples: usize,
+    /// The strut's diameter and the least gap.
+    actuator_width: f64,
+    min_gap: f64,
 }
 
 impl StrutArgs<'_> {
@@ -822,13 +851,16 @@ impl StrutArgs<'_> {
             let set = self.link != "coupler"
                 || self.point.is_some()
                 || self.max_stroke_ratio != 1.8
-                || self.samples != 64;
+                || self.samples != 64
+                || self.actuator_width != 0.0
+                || self.min_gap != 0.0;
             if set {
                 return Err(crate::errors::invalid(
                     "needs_actuator",
                     format!(
-                        "actuator_link, actuator_point, max_stroke_ratio and actuator_samples set \
-                         the linear actuator; pass input=\"actuator\" with them (got input={:?})",
+                        "actuator_link, actuator_point, max_stroke_ratio, actuator_samples, \
+                         actuator_width and min_gap set the linear actuator; pass \
+                         input=\"actuator\" with them (got input={:?})",
                         input.unwrap_or("None")
                     ),
                 ));
@@ -840,6 +872,8 @@ impl StrutArgs<'_> {
             options: ActuatorOptions {
                 link: self.link.parse::<ActuatorLink>().py()?,
                 max_stroke_ratio: self.max_stroke_ratio,
+                actuator_width: self.actuator_width,
+                min_gap: self.min_gap,
                 ..ActuatorOptions::default()
             },
             point: self.point,
@@ -922,6 +956,8 @@ macro_rules! design_keywords {
             actuator_point: [Option<PyPoint>] = [None],
             max_stroke_ratio: [Real] = [Real(1.8)],
             actuator_samples: [Count] = [Count(64)],
+            actuator_width: [Real] = [Real(0.0)],
+            min_gap: [Real] = [Real(0.0)],
         }
     };
 }

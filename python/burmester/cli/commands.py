@@ -408,7 +408,7 @@ def cmd_design(args: argparse.Namespace) -> int:
     spec = _with_units(_load(args.task), args)  # the task file's errors first
     margin = args.margin if args.margin is not None else 0.0
     max_time_ratio = args.max_time_ratio if args.max_time_ratio is not None else math.inf
-    strut = _design_strut(args)
+    strut = _design_strut(args, spec.actuator)
     if not args.motor and (args.margin is not None or args.max_time_ratio is not None):
         raise UsageError("--margin and --max-time-ratio set the motor's drive: give --motor with them")
     if not 0.0 <= margin < 90.0:
@@ -489,16 +489,20 @@ def cmd_design(args: argparse.Namespace) -> int:
     return 0
 
 
-def _design_strut(args: argparse.Namespace) -> Dict[str, Any]:
+def _design_strut(args: argparse.Namespace, spec_actuator: Any = None) -> Dict[str, Any]:
     """The keywords of ``burmester.design`` for ``design --input``:
     ``--input motor`` sets ``args.motor``; ``--input actuator`` gives the
-    actuator's keywords, which are refused without it."""
+    actuator's keywords, which are refused without it (the strut's diameter
+    and least gap from ``spec_actuator``, the task file's ``[actuator]``,
+    where the flags do not give them)."""
     which = args.design_input
     if which == "motor":
         args.motor = True
         return {}
     given = [flag for flag, v in (("--actuator-link", args.actuator_link), ("--actuator-point", args.actuator_point),
-                                  ("--max-stroke-ratio", args.max_stroke_ratio)) if v is not None]
+                                  ("--max-stroke-ratio", args.max_stroke_ratio),
+                                  ("--actuator-width", args.actuator_width), ("--min-gap", args.min_gap))
+             if v is not None]
     if which != "actuator":
         if given:
             raise UsageError(f"{', '.join(given)} set the linear actuator: give --input actuator with them")
@@ -514,7 +518,21 @@ def _design_strut(args: argparse.Namespace) -> Dict[str, Any]:
         if not args.max_stroke_ratio >= 1.0:
             raise UsageError(f"--max-stroke-ratio must be at least 1, got {args.max_stroke_ratio:g}")
         kw["max_stroke_ratio"] = args.max_stroke_ratio
+    kw.update(_strut_gap(args.actuator_width, args.min_gap, spec_actuator))
     return kw
+
+
+def _strut_gap(width: Optional[float], min_gap: Optional[float], table: Any) -> Dict[str, float]:
+    """``actuator_width`` and ``min_gap``: the flags', else the task file's
+    ``[actuator]`` ``width`` and ``min_gap``, else 0 (refused below 0)."""
+    w = width if width is not None else (table.width if table is not None and table.width is not None else 0.0)
+    g = min_gap if min_gap is not None else (table.min_gap if table is not None and table.min_gap is not None
+                                             else 0.0)
+    if not w >= 0.0:
+        raise UsageError(f"--actuator-width must be at least 0 (the strut's diameter), got {w:g}")
+    if not g >= 0.0:
+        raise UsageError(f"--min-gap must be at least 0, got {g:g}")
+    return {"actuator_width": w, "min_gap": g}
 
 
 def _actuator_section(report: burmester.DesignReport, units: str) -> str:
@@ -782,18 +800,21 @@ def cmd_actuator(args: argparse.Namespace) -> int:
                                      size, lim.max_link_length, lim.min_grashof_margin)
     nx, ny = args.map_grid if args.map_grid is not None else table.grid
     plate = list(table.base_plate) if table.base_plate is not None else None
+    width = args.width if args.width is not None else table.width
+    if width is not None and not width > 0.0:
+        raise UsageError(f"--actuator-width must be above 0, got {width:g}")
+    gap = _strut_gap(width, args.min_gap, table)
     amap = actuators.actuator_map(sfb, table.view, (nx, ny), link=link, point=point, max_stroke_ratio=ratio,
-                                  limits=lim, base_plate=plate)
+                                  limits=lim, base_plate=plate, link_width=spec.space.link_width if spec.space is not None else 0.0, **gap)
     best = amap.best_placements(1, rank_by=rank_by)
     if not best:
         mono = int(np.count_nonzero(amap.monotone))
+        clear = actuators.clear_count(amap)
         raise UsageError(f"no acceptable actuator placement for {spec.source}: {mono} of {amap.monotone.size} "
-                         f"ground pivots give a monotone stroke; try another --point or --link, or relax "
-                         f"--max-stroke-ratio or the limits")
+                         f"ground pivots give a monotone stroke, {clear} keep the strut's least gap "
+                         f"({amap.min_gap:g}); try another --point or --link, or relax "
+                         f"--max-stroke-ratio, --min-gap or the limits")
     a = best[0]
-    width = args.width if args.width is not None else table.width
-    if width is not None and not width > 0.0:
-        raise UsageError(f"--width must be above 0, got {width:g}")
     if args.json:
         doc = {"task": spec.source, "actuator": actuators.actuator_record(a)}
         print(json.dumps(doc, indent=2))

@@ -276,6 +276,7 @@ def _add_design(sub: _Commands) -> None:
                    "of the link are tried)")
     p.add_argument("--max-stroke-ratio", type=_finite, default=None, metavar="R",
                    help="with --input actuator: largest open over closed length (default: 1.8)")
+    _strut_gap_args(p, "with --input actuator: ", "else 0: its center line", dest=None)
     _force_arg(p)
     p.set_defaults(func=cmd_design)
 
@@ -444,6 +445,19 @@ def _add_drive(sub: _Commands) -> None:
     p.set_defaults(func=cmd_drive)
 
 
+def _strut_gap_args(p: argparse.ArgumentParser, when: str, default: str, dest: Optional[str]) -> None:
+    """``--actuator-width`` (also ``--width`` where ``dest`` is ``"width"``,
+    as ``burmester actuator`` has always had it) and ``--min-gap``."""
+    names = ("--actuator-width",) if dest is None else ("--actuator-width", "--width")
+    p.add_argument(*names, type=_finite, default=None, metavar="W", dest=dest or "actuator_width",
+                   help=f"{when}the strut's diameter (its body's), task units: its capsule in the clearance to "
+                   f"the links ([space] link_width wide), the obstacles and the envelope, and the cylinder "
+                   f"drawn (default: [actuator] width, {default})")
+    p.add_argument("--min-gap", type=_finite, default=None, metavar="G",
+                   help=f"{when}the least gap the strut keeps over the travel, task units (default: "
+                   f"[actuator] min_gap, else 0)")
+
+
 def _add_actuator(sub: _Commands) -> None:
     p = sub.add_parser("actuator", help="a linear actuator (cylinder, gas strut) to drive the task's linkage",
                        description="Place a linear actuator between a ground pivot and a point of a moving "
@@ -473,9 +487,8 @@ def _add_actuator(sub: _Commands) -> None:
                    default=None, help="which placement to pick (default: [actuator] rank_by, else balanced)")
     p.add_argument("--map-grid", nargs=2, type=_ranged(2, 1024), default=None, metavar=("NX", "NY"),
                    help="ground pivots sampled over the map's view (default: [actuator] grid, else 200 200)")
-    p.add_argument("--width", type=_finite, default=None, metavar="W",
-                   help="the cylinder's width as drawn and exported (default: [actuator] width, else 0.06 "
-                        "of its closed length)")
+    _strut_gap_args(p, "", "else a line in the clearance, 0.06 of its closed length as drawn and exported",
+                    dest="width")
     p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
                    help="animation: frames from the first pose to the last (default 60)")
     p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 20)")

@@ -56,32 +56,37 @@
 //! # Clearance
 //!
 //! A [placement](ActuatorContext::placement) also says whether the strut,
-//! its line from `G` to `Q` a capsule as wide as the links
-//! ([`Constraints::link_width`]), stays clear over the travel
+//! its line from `G` to `Q` a capsule of the strut's diameter
+//! ([`ActuatorOptions::actuator_width`]: one diameter for the whole strut,
+//! give the body's), stays clear over the travel
 //! ([`Actuator::min_clearance`], [`Actuator::clear`]) of
 //!
-//! * the linkage's links, each the capsule of its center line (the crank
-//!   `A0 A`, the coupler's bar `A B`, the rocker `C0 B`), except a link
-//!   that carries `Q` (the one it acts on, or one joined to it at `Q`):
-//!   such a link may not cross the strut away from `Q` (a strut through
-//!   its own link's bar, a bracket on the wrong side);
+//! * the linkage's links, each the capsule of its center line, as wide as
+//!   [`Constraints::link_width`] (the crank `A0 A`, the coupler's bar
+//!   `A B`, the rocker `C0 B`), except a link that carries `Q` (the one it
+//!   acts on, or one joined to it at `Q`): such a link may not cross the
+//!   strut away from `Q` (a strut through its own link's bar, a bracket on
+//!   the wrong side);
 //! * the constraints' obstacles (the ground pivot included: a pivot on an
 //!   obstacle is a hit) and the envelope's boundary (the ground pivot
 //!   inside it).
 //!
-//! The gap (the least distance less the capsules' half widths; negative
-//! where they overlap, and the two half widths below zero at a crossing)
-//! is taken at every travel sample and its smallest sample refined by
+//! The gap is the least distance between the center lines less the two
+//! capsules' half widths (the strut's and the link's; the strut's alone
+//! against an obstacle or the envelope): negative where they overlap, and
+//! the two half widths below zero at a crossing. A placement is **clear**
+//! when its gap is above 0 and at least [`ActuatorOptions::min_gap`]; an
+//! acceptable placement is clear. The gap is taken at every travel sample
+//! (the map's `clearance` column, ranked with the other columns through
+//! `acceptable`) and for a placement its smallest sample is refined by
 //! golden section, as the transmission angle is: two contacts closer
 //! together than a sample step could be missed, as could a contact of a
-//! shape thinner than the links move in a step. The map's columns do not
-//! have it (its `acceptable` checks the ground pivot on the base plate);
-//! [`Task::design`](crate::Task::design) with an actuator keeps only clear
-//! placements.
+//! shape thinner than the links move in a step. The map's sampled
+//! clearance is therefore at least the placement's refined one.
 
 use nalgebra::{Point2, Vector2};
 
-use crate::design::columns::map_column_types;
+use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
 use crate::design::rank::{RankColumns, rank_samples, signed_distances_with};
 use crate::design::{Constraints, DesignLimits, RankBy};
@@ -91,80 +96,61 @@ use crate::error::{
 };
 use crate::geom::{Grid, PerPose};
 use crate::linkage::actuator::{ActuatorLink, LinkPoint};
+use crate::linkage::{AssemblyMode, Joints};
 use crate::synthesis::SynthesizedFourBar;
 
 mod clearance;
 
 use clearance::StrutCheck;
 
-/// Calls `$callback! { ... }` with the actuator map's columns, each as
-/// `/// docs  name: type = value where there is no actuator`, in order. The
-/// one list of the columns: the core's [`ActuatorColumns`] and the Python
-/// binding's `ActuatorMap` class are generated from it.
-#[macro_export]
-macro_rules! actuator_map_columns {
-    ($callback:ident) => {
-        $callback! {
-            /// The actuator has a length over the whole travel (the ground
-            /// pivot is off the point's path). Where false, the other columns
-            /// hold false or NaN.
-            valid: bool = false,
-            /// Its length is monotone from the first pose to the last (no
-            /// sampled sign change of `ds/dtheta2`).
-            monotone: bool = false,
-            /// Its length grows from the first pose to the last.
-            extends: bool = false,
-            /// The actuator's minimum force transmission angle over the
-            /// sampled travel, radians (90 degrees minus the angle between its
-            /// line and the velocity of its moving point).
-            min_transmission_rad: f32 = f32::NAN,
-            /// The longest over the shortest length over the travel.
-            stroke_ratio: f32 = f32::NAN,
-            /// The longest minus the shortest length over the travel.
-            stroke: f32 = f32::NAN,
-            /// The shortest length over the travel (the closed actuator).
-            closed_length: f32 = f32::NAN,
-            /// The longest over the shortest member: the linkage's links and
-            /// the actuator, closed and open.
-            link_ratio: f32 = f32::NAN,
-            /// The linkage's size and the open actuator over the task's span.
-            size_ratio: f32 = f32::NAN,
-            /// Monotone and within the limits: the stroke ratio, the
-            /// transmission angle, the link and size ratios, the longest link,
-            /// the ground pivot on the base plate.
-            acceptable: bool = false,
-        }
-    };
+map_columns! {
+    $ actuator_map_columns, "actuator map",
+    (
+        ActuatorColumns,
+        ActuatorColumnsOut,
+        ActuatorSample,
+        "an actuator map",
+        "The columns of an actuator map: one value per grid sample, row-major.",
+        "An actuator map's columns to write: one slice per column, one value per grid \
+         sample, row-major."
+    );
+    /// The actuator has a length over the whole travel (the ground
+    /// pivot is off the point's path). Where false, the other columns
+    /// hold false or NaN.
+    valid: bool = false,
+    /// Its length is monotone from the first pose to the last (no
+    /// sampled sign change of `ds/dtheta2`).
+    monotone: bool = false,
+    /// Its length grows from the first pose to the last.
+    extends: bool = false,
+    /// The actuator's minimum force transmission angle over the
+    /// sampled travel, radians (90 degrees minus the angle between its
+    /// line and the velocity of its moving point).
+    min_transmission_rad: f32 = f32::NAN,
+    /// The longest over the shortest length over the travel.
+    stroke_ratio: f32 = f32::NAN,
+    /// The longest minus the shortest length over the travel.
+    stroke: f32 = f32::NAN,
+    /// The shortest length over the travel (the closed actuator).
+    closed_length: f32 = f32::NAN,
+    /// The longest over the shortest member: the linkage's links and
+    /// the actuator, closed and open.
+    link_ratio: f32 = f32::NAN,
+    /// The linkage's size and the open actuator over the task's span.
+    size_ratio: f32 = f32::NAN,
+    /// The strut's least gap over the sampled travel, task units: its
+    /// capsule (`actuator_width`) to the links' capsules
+    /// (`link_width`), the obstacles and the envelope (module docs,
+    /// "Clearance"); negative where they overlap. Computed where the
+    /// rest of `acceptable` holds (monotone, within the limits, on the
+    /// base plate); NaN elsewhere.
+    clearance: f32 = f32::NAN,
+    /// Monotone and within the limits: the stroke ratio, the
+    /// transmission angle, the link and size ratios, the longest link,
+    /// the ground pivot on the base plate, and clear: the clearance
+    /// above 0 and at least `min_gap`.
+    acceptable: bool = false,
 }
-
-macro_rules! define_actuator_columns {
-    ($($t:tt)*) => {
-        map_column_types!(
-            ActuatorColumns,
-            ActuatorColumnsOut,
-            ActuatorSample,
-            "an actuator map",
-            "The columns of an actuator map: one value per grid sample, row-major.",
-            "An actuator map's columns to write: one slice per column, one value per grid \
-             sample, row-major.";
-            $($t)*
-        );
-        define_actuator_set! { $($t)* }
-    };
-}
-
-macro_rules! define_actuator_set {
-    ($($(#[$doc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
-        impl ActuatorColumnsOut<'_> {
-            /// Writes sample `i` of every column.
-            fn put(&mut self, i: usize, s: &ActuatorSample) {
-                $(self.$name[i] = s.$name;)*
-            }
-        }
-    };
-}
-
-crate::actuator_map_columns!(define_actuator_columns);
 
 /// The designer's options of an actuator beyond [`DesignLimits`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -178,6 +164,16 @@ pub struct ActuatorOptions {
     /// (default 256, from [`MIN_TRAVEL_SAMPLES`](Self::MIN_TRAVEL_SAMPLES)
     /// to [`MAX_TRAVEL_SAMPLES`](Self::MAX_TRAVEL_SAMPLES)).
     pub travel_samples: usize,
+    /// The strut's diameter, task units (default 0: its center line): its
+    /// capsule in the clearance (module docs, "Clearance"). One diameter for
+    /// the whole strut: give the thicker part's (a gas spring's or a
+    /// cylinder's body, not its rod). At least 0.
+    pub actuator_width: f64,
+    /// The least gap, task units, a placement must keep over its travel
+    /// (default 0: clear by any margin): a placement whose
+    /// [`min_clearance`](Actuator::min_clearance) is below it is not
+    /// [`clear`](Actuator::clear) nor acceptable. At least 0.
+    pub min_gap: f64,
 }
 
 impl Default for ActuatorOptions {
@@ -186,6 +182,8 @@ impl Default for ActuatorOptions {
             link: ActuatorLink::Coupler,
             max_stroke_ratio: 1.8,
             travel_samples: 256,
+            actuator_width: 0.0,
+            min_gap: 0.0,
         }
     }
 }
@@ -201,9 +199,14 @@ impl ActuatorOptions {
     /// # Errors
     ///
     /// [`InvalidInput::OutsideRange`] for a stroke ratio limit below 1 or
-    /// NaN (infinity: no limit); [`InvalidInput::CountOutOfRange`] for a
-    /// travel sample count out of its range.
+    /// NaN (infinity: no limit), a negative or non-finite `actuator_width`
+    /// or `min_gap` (or one past [`Constraints::MAX_COORDINATE`]);
+    /// [`InvalidInput::CountOutOfRange`] for a travel sample count out of
+    /// its range.
     pub fn validate(&self) -> Result<()> {
+        let most = Constraints::MAX_COORDINATE;
+        in_range("actuator_width", self.actuator_width, 0.0, most, "")?;
+        in_range("min_gap", self.min_gap, 0.0, most, "")?;
         in_range(
             "max_stroke_ratio",
             self.max_stroke_ratio,
@@ -226,6 +229,10 @@ impl ActuatorOptions {
 #[derive(Debug, Clone, PartialEq)]
 struct Travel {
     point: LinkPoint,
+    /// The travel's assembly mode.
+    mode: AssemblyMode,
+    /// The linkage's joints at each sample.
+    joints: Vec<Joints>,
     /// The sampled input angles, first pose to last.
     theta: Vec<f64>,
     /// `Q` at each sample.
@@ -397,16 +404,19 @@ pub struct Actuator {
     pub link_ratio: f64,
     /// The linkage and the open actuator over the task's span.
     pub size_ratio: f64,
-    /// Whether it meets the limits of the context it came from.
+    /// Whether it meets the limits of the context it came from, clear
+    /// ([`clear`](Self::clear)) among them.
     pub acceptable: bool,
-    /// The smallest gap over the travel between the strut (a capsule as
-    /// wide as the links) and the links that do not carry its moving
-    /// point, the obstacles and the envelope's boundary; negative where
-    /// they overlap (module docs, "Clearance").
+    /// The smallest gap over the travel between the strut (a capsule of
+    /// [`ActuatorOptions::actuator_width`]) and the links (capsules of
+    /// [`Constraints::link_width`]) that do not carry its moving point, the
+    /// obstacles and the envelope's boundary; negative where they overlap
+    /// (module docs, "Clearance").
     pub min_clearance: f64,
     /// The input angle where it is.
     pub clearance_angle: f64,
-    /// The strut stays clear over the travel: `min_clearance > 0`.
+    /// The strut stays clear over the travel: `min_clearance` above 0 and
+    /// at least [`ActuatorOptions::min_gap`].
     pub clear: bool,
     /// Its sample `(j, i)` in a map, if it came from one.
     pub index: Option<(usize, usize)>,
@@ -575,12 +585,18 @@ impl ActuatorContext {
             }
         })?;
         for (i, s) in samples.iter().enumerate() {
-            out.put(i, s);
+            out.set(i, *s);
         }
         Ok(())
     }
 
-    /// Whether sampled figures meet the limits.
+    /// Whether a least gap `gap` is clear: above 0 and at least the
+    /// options' `min_gap`.
+    fn clear(&self, gap: f64) -> bool {
+        gap > 0.0 && gap >= self.options.min_gap
+    }
+
+    /// Whether sampled figures meet the limits (the clearance apart).
     fn meets(&self, prepared: &Prepared, g: Point2<f64>, e: &Eval, mu: f64) -> bool {
         let l = &self.limits;
         e.monotone
@@ -599,6 +615,20 @@ impl ActuatorContext {
             return ActuatorSample::INVALID;
         }
         let mu = e.min_sin.asin();
+        // The gap where the rest of the limits are met (NaN elsewhere: not
+        // computed, as it would not make the sample acceptable).
+        let meets = self.meets(prepared, g, &e, mu);
+        let gap = if meets {
+            let check = self.strut_check(prepared, g);
+            let t = &self.travel;
+            t.joints
+                .iter()
+                .zip(&t.q)
+                .map(|(j, &q)| check.gap_at(j, q))
+                .fold(f64::INFINITY, f64::min)
+        } else {
+            f64::NAN
+        };
         ActuatorSample {
             valid: true,
             monotone: e.monotone,
@@ -609,7 +639,8 @@ impl ActuatorContext {
             closed_length: e.s_min as f32,
             link_ratio: e.link_ratio as f32,
             size_ratio: e.size_ratio as f32,
-            acceptable: self.meets(prepared, g, &e, mu),
+            clearance: gap as f32,
+            acceptable: meets && self.clear(gap),
         }
     }
 
@@ -666,8 +697,9 @@ impl ActuatorContext {
             size_ratio: (t.members + s_max) * t.inv_span,
             ..e
         };
-        let acceptable = self.meets(&prepared, g, &exact, min_transmission);
         let (min_clearance, clearance_angle) = self.clearance(&prepared, g)?;
+        let clear = self.clear(min_clearance);
+        let acceptable = self.meets(&prepared, g, &exact, min_transmission) && clear;
         Ok(Actuator {
             linkage: self.linkage,
             link: self.options.link,
@@ -688,7 +720,7 @@ impl ActuatorContext {
             acceptable,
             min_clearance,
             clearance_angle,
-            clear: min_clearance > 0.0,
+            clear,
             index: None,
             margin: f64::NAN,
             score: f64::NAN,
@@ -701,21 +733,10 @@ impl ActuatorContext {
     /// `g` and the input angle where it is (module docs, "Clearance").
     fn clearance(&self, prepared: &Prepared, g: Point2<f64>) -> Result<(f64, f64)> {
         let t = &self.travel;
-        let mode = match self.linkage.modes().first() {
-            Some(Some(m)) => *m,
-            _ => return Err(DriveError::NoTravel.into()),
-        };
-        let check = StrutCheck {
-            fourbar: &self.linkage.fourbar,
-            mode,
-            link: self.options.link,
-            prepared,
-            ground: g,
-            tiny: t.tiny,
-        };
+        let check = self.strut_check(prepared, g);
         let (mut worst, mut least) = (0, f64::INFINITY);
-        for (k, (&th, &q)) in t.theta.iter().zip(&t.q).enumerate() {
-            let gap = check.gap(th, q)?;
+        for (k, (j, &q)) in t.joints.iter().zip(&t.q).enumerate() {
+            let gap = check.gap_at(j, q);
             if gap < least {
                 (worst, least) = (k, gap);
             }
@@ -725,6 +746,20 @@ impl ActuatorContext {
         let gap_at = |x: f64| check.gap(x, t.point.at(x)?.0);
         let (th, gap) = golden_min(gap_at, a, b, least, t.theta[worst])?;
         Ok((gap, th))
+    }
+
+    /// What the strut's gap with its ground pivot at `g` is measured
+    /// against.
+    fn strut_check<'a>(&'a self, prepared: &'a Prepared, g: Point2<f64>) -> StrutCheck<'a> {
+        StrutCheck {
+            fourbar: &self.linkage.fourbar,
+            mode: self.travel.mode,
+            link: self.options.link,
+            prepared,
+            ground: g,
+            strut_radius: 0.5 * self.options.actuator_width,
+            tiny: self.travel.tiny,
+        }
     }
 
     /// The placement of sample `k`, with its index.
@@ -837,6 +872,17 @@ fn travel_of(
     let theta = linkage.travel_angles(n)?;
     let mut q = try_vec("an actuator's travel", n, Point2::origin())?;
     let mut v = try_vec("an actuator's travel", n, Vector2::zeros())?;
+    let o = Point2::origin();
+    let mut joints = try_vec(
+        "an actuator's travel",
+        n,
+        Joints {
+            input_pivot: o,
+            crank_joint: o,
+            rocker_joint: o,
+            output_pivot: o,
+        },
+    )?;
     // The velocity per unit of travel, first pose toward the last: along
     // a clockwise travel the input angle decreases.
     let (_, span) = linkage.travel().ok_or(DriveError::NoTravel)?;
@@ -844,6 +890,7 @@ fn travel_of(
     for (k, &th) in theta.iter().enumerate() {
         let (qk, vk) = lp.at(th)?;
         (q[k], v[k]) = (qk, vk * forward);
+        joints[k] = linkage.fourbar.joints_at(th, mode)?;
     }
     let mut at = [Point2::origin(); crate::geom::MAX_POSES];
     for (k, &th) in stops.iter().enumerate() {
@@ -854,6 +901,8 @@ fn travel_of(
     let link_max = lengths.iter().copied().fold(0.0, f64::max);
     Ok(Travel {
         point: lp,
+        mode,
+        joints,
         theta,
         q,
         v,

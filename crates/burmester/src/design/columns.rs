@@ -128,6 +128,49 @@ macro_rules! map_column_types {
 }
 pub(crate) use map_column_types;
 
+/// Defines a map's columns from its one list: the exported macro `$list`,
+/// which calls `$callback! { ... }` with the columns (each as `/// docs
+/// name: type = value where there is no sample`, in order; the Python
+/// binding generates its class from it), the core's column types
+/// ([`map_column_types!`]) and the columns-to-write's `set`, which writes
+/// one sample of every column. `$d` is a `$` token (for the macro it
+/// defines); `$map` names the map in the docs. The one definition of the
+/// drive map's and the actuator map's columns.
+macro_rules! map_columns {
+    ($d:tt $list:ident, $map:literal,
+     ($columns:ident, $out:ident, $sample:ident, $what:literal, $doc:literal, $out_doc:literal);
+     $($(#[$cdoc:meta])* $name:ident: $ty:ty = $invalid:expr,)*) => {
+        #[doc = concat!(
+            "Calls `$callback! { ... }` with the ", $map, "'s columns, each as `/// docs  ",
+            "name: type = value where there is none`, in order. The one list of the columns: ",
+            "the core's `", stringify!($columns), "` and the Python binding's class are ",
+            "generated from it."
+        )]
+        #[macro_export]
+        macro_rules! $list {
+            ($d callback:ident) => {
+                $d callback! {
+                    $($(#[$cdoc])* $name: $ty = $invalid,)*
+                }
+            };
+        }
+
+        $crate::design::columns::map_column_types!(
+            $columns, $out, $sample, $what, $doc, $out_doc;
+            $($(#[$cdoc])* $name: $ty = $invalid,)*
+        );
+
+        impl $out<'_> {
+            /// Writes sample `i` of every column.
+            #[inline(always)]
+            fn set(&mut self, i: usize, s: $sample) {
+                $(self.$name[i] = s.$name;)*
+            }
+        }
+    };
+}
+pub(crate) use map_columns;
+
 macro_rules! define_columns {
     ($($t:tt)*) => {
         map_column_types!(

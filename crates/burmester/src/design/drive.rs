@@ -83,7 +83,7 @@ use core::sync::atomic::{AtomicBool, Ordering};
 use nalgebra::{Point2, Vector2};
 use pulp::{Arch, Simd, WithSimd};
 
-use crate::design::columns::map_column_types;
+use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
 use crate::design::rank::{RankColumns, rank_samples, signed_distances_with, tie_order};
 use crate::design::{Constraints, DesignLimits, RankBy};
@@ -99,52 +99,37 @@ use crate::simd::{M, Ops, V, acos, acos1, atan2};
 use crate::synthesis::SynthesizedFourBar;
 use crate::tolerance;
 
-/// Calls `$callback! { ... }` with the drive map's columns, each as
-/// `/// docs  name: type = value where there is no drive`, in order. The
-/// one list of the columns: the core's [`DriveColumns`] and the Python
-/// binding's `DriveMap` class are generated from it.
-#[macro_export]
-macro_rules! drive_map_columns {
-    ($callback:ident) => {
-        $callback! {
-            /// A drive exists: a crank-rocker whose rocker swings exactly over
-            /// the travel with its margins, the six-bar turning fully with
-            /// neither loop toggling. Where false, the other columns hold
-            /// false or NaN.
-            valid: bool = false,
-            /// The smaller minimum transmission angle of the two loops over a
-            /// full crank turn, radians.
-            min_transmission_rad: f32 = f32::NAN,
-            /// The drive loop's minimum transmission angle over a full crank
-            /// turn, radians.
-            drive_transmission_rad: f32 = f32::NAN,
-            /// The time ratio of the strokes, the slower over the faster (at
-            /// least 1).
-            time_ratio: f32 = f32::NAN,
-            /// The six-bar's longest over its shortest link.
-            link_ratio: f32 = f32::NAN,
-            /// The six-bar's size (`SixBar::size`) over the task's span.
-            size_ratio: f32 = f32::NAN,
-            /// Meets the limits, the time ratio and the constraints.
-            acceptable: bool = false,
-        }
-    };
-}
-
-macro_rules! define_drive_columns {
-    ($($t:tt)*) => {
-        map_column_types!(
-            DriveColumns,
-            DriveColumnsOut,
-            DriveSample,
-            "a drive map",
-            "The columns of a drive map: one value per grid sample, row-major.",
-            "A drive map's columns to write: one slice per column, one value per grid \
-             sample, row-major.";
-            $($t)*
-        );
-        define_drive_rows! { $($t)* }
-    };
+map_columns! {
+    $ drive_map_columns, "drive map",
+    (
+        DriveColumns,
+        DriveColumnsOut,
+        DriveSample,
+        "a drive map",
+        "The columns of a drive map: one value per grid sample, row-major.",
+        "A drive map's columns to write: one slice per column, one value per grid \
+         sample, row-major."
+    );
+    /// A drive exists: a crank-rocker whose rocker swings exactly over
+    /// the travel with its margins, the six-bar turning fully with
+    /// neither loop toggling. Where false, the other columns hold
+    /// false or NaN.
+    valid: bool = false,
+    /// The smaller minimum transmission angle of the two loops over a
+    /// full crank turn, radians.
+    min_transmission_rad: f32 = f32::NAN,
+    /// The drive loop's minimum transmission angle over a full crank
+    /// turn, radians.
+    drive_transmission_rad: f32 = f32::NAN,
+    /// The time ratio of the strokes, the slower over the faster (at
+    /// least 1).
+    time_ratio: f32 = f32::NAN,
+    /// The six-bar's longest over its shortest link.
+    link_ratio: f32 = f32::NAN,
+    /// The six-bar's size (`SixBar::size`) over the task's span.
+    size_ratio: f32 = f32::NAN,
+    /// Meets the limits, the time ratio and the constraints.
+    acceptable: bool = false,
 }
 
 macro_rules! define_drive_rows {
@@ -161,17 +146,10 @@ macro_rules! define_drive_rows {
                 )
             }
         }
-
-        impl DriveColumnsOut<'_> {
-            #[inline(always)]
-            fn set(&mut self, i: usize, s: DriveSample) {
-                $(self.$name[i] = s.$name;)*
-            }
-        }
     };
 }
 
-crate::drive_map_columns!(define_drive_columns);
+drive_map_columns!(define_drive_rows);
 
 /// Rows of `nx` samples of a drive map's columns.
 struct RowsOfDrive<'a> {

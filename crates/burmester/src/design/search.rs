@@ -81,8 +81,11 @@
 //! the link ([`ActuatorSearch::points`]), and the best placement by the
 //! design's ranking that is monotone, within the limits (the actuator's
 //! stroke ratio, its transmission angle, the link and size ratios with
-//! the open actuator) and **clear** over the travel (its line off the
-//! links that do not carry its point, the obstacles and the envelope,
+//! the open actuator) and **clear** over the travel (its capsule,
+//! [`ActuatorOptions::actuator_width`](crate::design::ActuatorOptions::actuator_width)
+//! across, at least
+//! [`min_gap`](crate::design::ActuatorOptions::min_gap) off the links'
+//! capsules that do not carry its point, the obstacles and the envelope,
 //! [`Actuator::clear`]) is attached ([`Design::actuator`]). A candidate
 //! with no such placement is passed over ([`DesignReport::unplaced`]).
 //!

@@ -13,7 +13,7 @@ use crate::design::space::segment_distance as point_segment;
 use crate::error::Result;
 use crate::geom::cross;
 use crate::linkage::actuator::ActuatorLink;
-use crate::linkage::{AssemblyMode, FourBar};
+use crate::linkage::{AssemblyMode, FourBar, Joints};
 
 /// What the gap of a strut is measured against at one input angle.
 pub(super) struct StrutCheck<'a> {
@@ -26,21 +26,29 @@ pub(super) struct StrutCheck<'a> {
     pub(super) prepared: &'a Prepared,
     /// The strut's ground pivot `G`.
     pub(super) ground: Point2<f64>,
+    /// Half the strut's diameter (`ActuatorOptions::actuator_width`).
+    pub(super) strut_radius: f64,
     /// Distances at most this are contact (a crossing).
     pub(super) tiny: f64,
 }
 
 impl StrutCheck<'_> {
-    /// The gap at input angle `theta` with the moving point at `q`: the
-    /// least of the strut's distance to each link it does not share a pin
-    /// with less the two capsules' half widths, its distance to each
-    /// obstacle and to the envelope's boundary less its own half width
-    /// (negative by that distance when `G` is outside the envelope), and
-    /// minus the two half widths where it crosses a link it shares `Q`
-    /// with away from `Q`.
+    /// The gap at input angle `theta` with the moving point at `q` (see
+    /// [`gap_at`](Self::gap_at)).
     pub(super) fn gap(&self, theta: f64, q: Point2<f64>) -> Result<f64> {
         let j = self.fourbar.joints_at(theta, self.mode)?;
-        let r = self.prepared.radius();
+        Ok(self.gap_at(&j, q))
+    }
+
+    /// The gap with the linkage's joints at `j` and the moving point at
+    /// `q`: the least of the strut's distance to each link it does not
+    /// share a pin with less the strut's and the link's half widths, its
+    /// distance to each obstacle and to the envelope's boundary less its
+    /// own half width (negative by that distance when `G` is outside the
+    /// envelope), and minus the two half widths where it crosses a link it
+    /// shares `Q` with away from `Q`.
+    pub(super) fn gap_at(&self, j: &Joints, q: Point2<f64>) -> f64 {
+        let (r, rs) = (self.prepared.radius(), self.strut_radius);
         let g = self.ground;
         let links = [
             (ActuatorLink::Crank, j.input_pivot, j.crank_joint),
@@ -61,18 +69,20 @@ impl StrutCheck<'_> {
         for (which, a, b) in links {
             if which == self.link || point_segment(q, a, b) <= self.tiny {
                 if segment_distance(g, short, a, b) <= self.tiny {
-                    gap = gap.min(-2.0 * r);
+                    gap = gap.min(-(r + rs));
                 }
             } else {
-                gap = gap.min(segment_distance(g, q, a, b) - 2.0 * r);
+                gap = gap.min(segment_distance(g, q, a, b) - r - rs);
             }
         }
-        let v = |p: Point2<f64>| PVector::new(p.x, p.y);
-        let identity = parry2d_f64::math::Pose::identity();
-        let strut = Segment::new(v(g), v(q));
-        for o in &self.prepared.obstacles {
-            let dist = distance(&identity, &strut, &identity, o).map_or(0.0, |x| x.distance);
-            gap = gap.min(dist - r);
+        if !self.prepared.obstacles.is_empty() {
+            let v = |p: Point2<f64>| PVector::new(p.x, p.y);
+            let identity = parry2d_f64::math::Pose::identity();
+            let strut = Segment::new(v(g), v(q));
+            for o in &self.prepared.obstacles {
+                let dist = distance(&identity, &strut, &identity, o).map_or(0.0, |x| x.distance);
+                gap = gap.min(dist - rs);
+            }
         }
         if let Some(edges) = self.prepared.envelope_edges() {
             let p = |e: PVector| Point2::new(e.x, e.y);
@@ -81,12 +91,12 @@ impl StrutCheck<'_> {
                 .map(|e| segment_distance(g, q, p(e.a), p(e.b)))
                 .fold(f64::INFINITY, f64::min);
             gap = gap.min(if self.prepared.in_envelope(g) {
-                dist - r
+                dist - rs
             } else {
-                -dist - r
+                -dist - rs
             });
         }
-        Ok(gap)
+        gap
     }
 }
 
