@@ -130,6 +130,7 @@ pub mod synthesis;
 pub mod tolerance;
 
 pub use design::ActuatorSearch;
+pub use design::{DesignedLinkage, DrivenKind};
 pub use design::{
     AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, Pair,
     PairContext, PairMap, Pivot, PivotAtlas, RankBy, SolutionMap, Varying,
