@@ -263,10 +263,25 @@ impl Task {
         };
         let search_box = options.space.search_box(self, &options.limits);
         let driving = grid_over(&search_box, options.coarse_driving)?;
-        let dyads = |g: &crate::geom::Grid| -> Vec<Dyad> {
-            (0..g.len())
-                .filter_map(|k| self.dyad_from_center(g.point(k % g.nx(), k / g.nx())).ok())
-                .collect()
+        // The driving dyads of a grid, in parallel, following the cancel
+        // flag (a grid at the most is 65536 centers).
+        let dyads = |g: &crate::geom::Grid| -> Result<Vec<Dyad>> {
+            let out: Vec<Option<Dyad>> = (0..g.len())
+                .into_par_iter()
+                .map(|k| {
+                    if control.is_cancelled() {
+                        return None;
+                    }
+                    self.dyad_from_center(g.point(k % g.nx(), k / g.nx())).ok()
+                })
+                .collect();
+            if control.is_cancelled() {
+                return Err(Error::Cancelled {
+                    done: 0,
+                    total: g.len(),
+                });
+            }
+            Ok(out.into_iter().flatten().collect())
         };
         let sliders = |n: usize| -> Vec<(f64, SliderDyad)> {
             (0..n)
@@ -284,7 +299,7 @@ impl Task {
             (*a, *s, at)
         };
         let sl = sliders(options.coarse_driven);
-        let a = dyads(&driving);
+        let a = dyads(&driving)?;
         let sep = options.separation(self);
         let mut report = self.report(options, Some(search_box));
         let coarse = self.slider_coarse(
@@ -330,7 +345,7 @@ impl Task {
         report.designs = self.finish_designs(refined, options, &mut report, control)?;
         if report.designs.is_empty() {
             let census_box = grid_over(&search_box, CENSUS_DRIVING)?;
-            let a = dyads(&census_box);
+            let a = dyads(&census_box)?;
             let census: Vec<(Dyad, DyadKind)> = sl
                 .iter()
                 .flat_map(|(_, s)| a.iter().map(|a| (*a, DyadKind::Slider(*s))))
