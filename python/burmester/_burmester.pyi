@@ -2170,7 +2170,7 @@ def _atlas_tile(
 # ---------------------------------------------------------------------------
 # The design search (the public API is burmester.design)
 
-FoundBy = Literal["pivots", "parameters", "burmester"]
+FoundBy = Literal["pivots", "parameters", "burmester", "slider_circle", "slider_point"]
 LimitName = Literal[
     "branch_defect", "order", "transmission", "link_ratio", "input", "grashof_margin",
     "size_ratio", "link_length", "pivot_region", "obstacles", "envelope",
@@ -2243,11 +2243,16 @@ class Design:
     figures."""
 
     @property
-    def linkage(self) -> SynthesizedFourBar:
-        """The linkage (its driving dyad drives)."""
+    def linkage(self) -> Union[SynthesizedFourBar, SynthesizedSliderCrank]:
+        """The linkage (its driving dyad drives): a four-bar, or with
+        ``design(..., driven="slider")`` a slider-crank."""
     @property
-    def figures(self) -> LinkageFigures:
-        """``linkage.figures``."""
+    def figures(self) -> Optional[LinkageFigures]:
+        """A four-bar's ``linkage.figures`` (None for a slider-crank, whose
+        figures are the linkage's own properties)."""
+    @property
+    def driven_kind(self) -> Literal["revolute", "slider"]:
+        """``"revolute"`` for a four-bar, ``"slider"`` for a slider-crank."""
     @property
     def score(self) -> float:
         """Its score by the ranking (exact figures)."""
@@ -2261,8 +2266,9 @@ class Design:
     def driving_pivot(self) -> Point:
         """The driving crank's fixed pivot ``A0``."""
     @property
-    def driven_pivot(self) -> Point:
-        """The driven crank's fixed pivot ``C0``."""
+    def driven_pivot(self) -> Optional[Point]:
+        """The driven crank's fixed pivot ``C0`` (None for a slider-crank:
+        its guide, ``linkage.driven``, needs no pivot)."""
     @property
     def found_by(self) -> FoundBy:
         """What ``coarse`` and ``refined`` hold: the fixed pivots
@@ -2320,11 +2326,14 @@ class NearMiss:
     nothing fits): ``shortfall`` is its worst relative shortfall."""
 
     @property
-    def linkage(self) -> SynthesizedFourBar:
-        """The linkage."""
+    def linkage(self) -> Union[SynthesizedFourBar, SynthesizedSliderCrank]:
+        """The linkage (a four-bar, or a slider-crank)."""
     @property
-    def figures(self) -> LinkageFigures:
-        """``linkage.figures``."""
+    def figures(self) -> Optional[LinkageFigures]:
+        """A four-bar's ``linkage.figures`` (None for a slider-crank)."""
+    @property
+    def driven_kind(self) -> Literal["revolute", "slider"]:
+        """``"revolute"`` for a four-bar, ``"slider"`` for a slider-crank."""
     @property
     def size_ratio(self) -> float:
         """Its size over the task's."""
@@ -2342,6 +2351,7 @@ class NearMiss:
         size_ratio: float,
         misses: Sequence[str],
         shortfall: float,
+        driven_kind: str = "revolute",
     ) -> NearMiss:
         """Rebuilds a near miss from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2465,6 +2475,7 @@ def _design(
     actuator_point: Optional[Point] = None,
     max_stroke_ratio: float = ...,
     actuator_samples: int = ...,
+    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The design search in this process (see :func:`burmester.design`,
@@ -2491,6 +2502,7 @@ def _design_plan(
     actuator_point: Optional[Point] = None,
     max_stroke_ratio: float = ...,
     actuator_samples: int = ...,
+    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
 ) -> dict[str, Any]:
     """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
@@ -2517,6 +2529,7 @@ def _design_from_atlas(
     actuator_point: Optional[Point] = None,
     max_stroke_ratio: float = ...,
     actuator_samples: int = ...,
+    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere

@@ -162,6 +162,10 @@ class TaskSpec:
     #: A linear actuator to place (``[actuator]``), for ``burmester
     #: actuator``; None: the command's defaults.
     actuator: Optional["ActuatorSpec"] = None
+    #: The driven dyad ``burmester design`` searches (``[design] driven``):
+    #: ``"revolute"`` (four-bars) or ``"slider"`` (slider-cranks); None:
+    #: not given (revolute, unless ``--driven`` says otherwise).
+    design_driven: Optional[str] = None
 
     @property
     def task(self) -> Task:
@@ -448,12 +452,12 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     """
     r = _Reader(source)
     for key in doc:
-        if key not in ("pose", "driven", "view", "limits", "space", "units", "actuator"):
+        if key not in ("pose", "driven", "view", "limits", "space", "units", "actuator", "design"):
             hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
             if key in ("unit", "length_unit", "lengths"):
                 hint = ' (the unit of the lengths is units = "mm")'
             raise r.fail(key, f"unknown top-level key (expected units, [[pose]], [driven], [view], [limits], [space], "
-                              f"[actuator]){hint}")
+                              f"[actuator], [design]){hint}")
     units = _units(r, doc)
 
     # [[pose]] x3 (the branch maps of Filemon's construction need three), or
@@ -500,7 +504,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
 
     limits = _limits(r, doc)
     return TaskSpec(tuple(poses), center, view, limits, source, units=units, space=_space(r, doc),
-                    actuator=_actuator(r, doc))
+                    actuator=_actuator(r, doc), design_driven=_design_driven(r, doc))
 
 
 def _units(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
@@ -699,7 +703,7 @@ def _parse_many(
     limits = _limits(r, doc)
     driven = _driven(r, doc, task, required=False) if count.driven else None
     return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units=units, space=_space(r, doc),
-                    actuator=_actuator(r, doc))
+                    actuator=_actuator(r, doc), design_driven=_design_driven(r, doc))
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
@@ -792,6 +796,11 @@ def dumps(spec: TaskSpec) -> str:
         doc.add("space", _dump_space(spec.space, note))
     if spec.actuator is not None:
         doc.add("actuator", _dump_actuator(spec.actuator, note))
+    if spec.design_driven is not None:
+        design = note(tomlkit.table(), "burmester design (its flags override these)")
+        design.add("driven", note(tomlkit.item(spec.design_driven),
+                                  '"revolute" (four-bars) or "slider" (slider-cranks: a pin on a straight guide)'))
+        doc.add("design", design)
     return tomlkit.dumps(doc)
 
 
@@ -949,3 +958,22 @@ def _dump_actuator(a: ActuatorSpec, note: Any) -> Any:
     if a.width is not None:
         t.add("width", note(tomlkit.item(float(a.width)), "the cylinder's width as drawn and exported"))
     return t
+
+
+#: The driven dyads ``[design] driven`` names.
+DESIGN_DRIVEN = ("revolute", "slider")
+
+
+def _design_driven(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
+    """The ``[design]`` table's ``driven`` (None when absent)."""
+    t = r.table(doc, "design", required=False)
+    if t is None:
+        return None
+    r.only_keys("design", t, ["driven"])
+    if "driven" not in t:
+        return None
+    value = t["driven"]
+    if value not in DESIGN_DRIVEN:
+        names = ", ".join(f'"{a}"' for a in DESIGN_DRIVEN)
+        raise r.fail("design.driven", f"expected one of {names}, found {_describe(value)}")
+    return str(value)

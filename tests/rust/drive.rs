@@ -222,7 +222,7 @@ fn check_drive(task: &Task, d: &Drive, steps: usize) -> Checked {
         e: d.attachment,
         a: own.a1,
         c: own.c1,
-        theta2: d.linkage.input_angles()[0],
+        theta2: d.linkage.input_angles[0],
         mu_drive: f64::NAN,
         mu_motion: f64::NAN,
         gap: 1.0,
