@@ -250,10 +250,18 @@ fn linkage_of(
     match kind {
         DrivenKind::Revolute => task
             .four_bar(&a, &Dyad::new(driven.0.0, driven.1.0))
-            .map(Into::into),
+            .map(DesignedLinkage::FourBar),
         DrivenKind::Slider => SliderDyad::new(driven.0.0, driven.1.0.coords)
-            .and_then(|s| task.slider_crank(&a, &s))
-            .map(Into::into),
+            .and_then(|mut s| {
+                // A unit guide kept bit for bit (normalizing a unit vector
+                // again may move its last bit): the pickled design equals.
+                let u = driven.1.0.coords;
+                if (u.norm() - 1.0).abs() <= 4.0 * f64::EPSILON {
+                    s.guide = u;
+                }
+                task.slider_crank(&a, &s)
+            })
+            .map(DesignedLinkage::SliderCrank),
     }
     .py()
 }

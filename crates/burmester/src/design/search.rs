@@ -598,6 +598,16 @@ enum Figures {
     Slider(slider::SliderFigures),
 }
 
+/// A field both kinds of figures have.
+macro_rules! either {
+    ($f:expr, $field:ident) => {
+        match $f {
+            Figures::FourBar(f) => f.$field,
+            Figures::Slider(f) => f.$field,
+        }
+    };
+}
+
 impl Figures {
     fn branch_free(&self) -> bool {
         match self {
@@ -608,32 +618,19 @@ impl Figures {
 
     /// A driving direction and one circuit.
     fn ordered(&self) -> bool {
-        let (d, one) = match self {
-            Figures::FourBar(f) => (f.direction, f.one_circuit),
-            Figures::Slider(f) => (f.direction, f.one_circuit),
-        };
-        d != Direction::None && one
+        either!(self, direction) != Direction::None && either!(self, one_circuit)
     }
 
     fn min_transmission(&self) -> f64 {
-        match self {
-            Figures::FourBar(f) => f.min_transmission,
-            Figures::Slider(f) => f.min_transmission,
-        }
+        either!(self, min_transmission)
     }
 
     fn link_ratio(&self) -> f64 {
-        match self {
-            Figures::FourBar(f) => f.link_ratio,
-            Figures::Slider(f) => f.link_ratio,
-        }
+        either!(self, link_ratio)
     }
 
     fn input_full(&self) -> bool {
-        match self {
-            Figures::FourBar(f) => f.input_full,
-            Figures::Slider(f) => f.input_full,
-        }
+        either!(self, input_full)
     }
 
     /// The distance from the change point: the four-bar's Grashof
@@ -647,11 +644,7 @@ impl Figures {
 
     /// The longest link [`DesignLimits::max_link_length`] bounds.
     fn longest(&self) -> f64 {
-        let lengths = match self {
-            Figures::FourBar(f) => f.lengths,
-            Figures::Slider(f) => f.lengths,
-        };
-        lengths.iter().copied().fold(0.0, f64::max)
+        either!(self, lengths).iter().copied().fold(0.0, f64::max)
     }
 }
 
@@ -686,8 +679,14 @@ impl Verdict {
     /// verdict where [`Task::four_bar`] or [`Task::slider_crank`] fails).
     fn linkage(&self, task: &Task) -> Option<DesignedLinkage> {
         match &self.driven {
-            DyadKind::Revolute(d) => task.four_bar(&self.driving, d).ok().map(Into::into),
-            DyadKind::Slider(s) => task.slider_crank(&self.driving, s).ok().map(Into::into),
+            DyadKind::Revolute(d) => task
+                .four_bar(&self.driving, d)
+                .ok()
+                .map(DesignedLinkage::FourBar),
+            DyadKind::Slider(s) => task
+                .slider_crank(&self.driving, s)
+                .ok()
+                .map(DesignedLinkage::SliderCrank),
             DyadKind::Inverted(_) => None,
         }
     }

@@ -64,18 +64,6 @@ pub enum DesignedLinkage {
     SliderCrank(SynthesizedSliderCrank),
 }
 
-impl From<SynthesizedFourBar> for DesignedLinkage {
-    fn from(l: SynthesizedFourBar) -> Self {
-        DesignedLinkage::FourBar(l)
-    }
-}
-
-impl From<SynthesizedSliderCrank> for DesignedLinkage {
-    fn from(l: SynthesizedSliderCrank) -> Self {
-        DesignedLinkage::SliderCrank(l)
-    }
-}
-
 impl DesignedLinkage {
     /// Its driven dyad's kind.
     pub fn kind(&self) -> DrivenKind {

@@ -36,6 +36,7 @@ use super::{
 use crate::engine::Control;
 use crate::error::{Error, InvalidInput, Result};
 use crate::linkage::Direction;
+use crate::synthesis::three::SliderLocus;
 use crate::synthesis::{Dyad, DyadKind, SliderDyad, SynthesizedSliderCrank, Task};
 
 /// What the judge reads of a slider-crank.
@@ -144,8 +145,14 @@ impl Task {
     ) -> Result<DesignReport> {
         let exact = Exact::new(self, options, control)?;
         match self.len() {
-            3 => self.design_slider_three(&exact, options, control),
-            _ => self.design_slider_exact(&exact, options, control),
+            3 => {
+                let locus = self.slider_locus("Task::design")?;
+                self.design_slider_three(&exact, &locus, options, control)
+            }
+            _ => {
+                let sliders = self.finite_sliders()?;
+                self.design_slider_exact(&exact, &sliders, options, control)
+            }
         }
     }
 
@@ -241,10 +248,10 @@ impl Task {
     fn design_slider_three(
         &self,
         exact: &Exact<'_>,
+        locus: &SliderLocus,
         options: &DesignOptions,
         control: &Control<'_>,
     ) -> Result<DesignReport> {
-        let locus = self.slider_locus("Task::design")?;
         let line = locus.line();
         // The circle's parameter over a turn; the line's over (-pi/2, pi/2)
         // (the stereographic samples of `Task::slider_dyads`).
@@ -362,10 +369,10 @@ impl Task {
     fn design_slider_exact(
         &self,
         exact: &Exact<'_>,
+        sliders: &[SliderDyad],
         options: &DesignOptions,
         control: &Control<'_>,
     ) -> Result<DesignReport> {
-        let sliders = self.finite_sliders()?;
         let four = self.len() == 4;
         // The driving dyads with their curve parameter (four poses) or
         // Burmester index (five).
