@@ -162,7 +162,7 @@ def design(
         raise ImportError(_DASK_MISSING) from None
     # Validates everything here, with in-process errors, before any task.
     plan = _design_plan(task, **kw)
-    driven, driving, opts = plan["driven"], plan["driving"], dict(plan["atlas"])
-    _atlas_tile(task, driven, 0, 0, driving, **opts)
-    arrays = _on_dask(client, task, driven, driving, opts, progress, tile_rows)
+    driven_grid, driving, opts = plan["driven"], plan["driving"], dict(plan["atlas"])
+    _atlas_tile(task, driven_grid, 0, 0, driving, **opts)
+    arrays = _on_dask(client, task, driven_grid, driving, opts, progress, tile_rows)
     return _design_from_atlas(task, arrays, **kw)

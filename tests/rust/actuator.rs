@@ -899,7 +899,14 @@ fn the_design_places_a_clear_actuator_on_every_design() {
         );
         assert!((a.stroke_ratio - dense.s_max / dense.s_min).abs() < 1e-6);
         assert!(dense.mu_min >= options.limits.min_transmission - 1e-5);
-        let gap = dense_gap(d.linkage.four_bar().unwrap(), &own, a.ground, 8_000, 0.0, &[]);
+        let gap = dense_gap(
+            d.linkage.four_bar().unwrap(),
+            &own,
+            a.ground,
+            8_000,
+            0.0,
+            &[],
+        );
         assert!(
             gap > 0.0 && (gap - a.min_clearance).abs() < 1e-3 * task.span(),
             "dense {gap} vs {} at Q {:?}",

@@ -65,7 +65,11 @@ fn known_task(thetas: &[f64]) -> (Task, Point2<f64>, Point2<f64>) {
         })
         .collect();
     let (_, c, _) = textbook(thetas[0]);
-    (Task::new(&poses).unwrap(), world(Vector2::zeros()), world(c))
+    (
+        Task::new(&poses).unwrap(),
+        world(Vector2::zeros()),
+        world(c),
+    )
 }
 
 fn wrap(a: f64) -> f64 {
@@ -132,7 +136,10 @@ fn check_design(t: &Task, limits: &DesignLimits, d: &Design) {
     for th in sc.travel_angles(4001).unwrap() {
         let (_, _, c, mu) = own_solve(sc, th, open).expect("the loop opens over the travel");
         if let Some(p) = prev {
-            assert!((c - p).norm() < 0.05 * sc.linkage.coupler(), "a jump at {th}");
+            assert!(
+                (c - p).norm() < 0.05 * sc.linkage.coupler(),
+                "a jump at {th}"
+            );
         }
         prev = Some(c);
         let lib = sc.linkage.solve(th, mode).unwrap();
@@ -221,14 +228,21 @@ fn three_poses_beat_a_finer_brute_force() {
             continue;
         };
         for s in &sliders {
-            if let Some(x) = t.slider_crank(&a, s).ok().and_then(|sc| score_of(&t, &o, &sc)) {
+            if let Some(x) = t
+                .slider_crank(&a, s)
+                .ok()
+                .and_then(|sc| score_of(&t, &o, &sc))
+            {
                 brute = brute.max(x);
             }
         }
     }
     assert!(brute.is_finite());
     let got = best_score(&r.designs);
-    assert!(got >= brute - 1e-6 * brute.abs().max(1.0), "{got} < {brute}");
+    assert!(
+        got >= brute - 1e-6 * brute.abs().max(1.0),
+        "{got} < {brute}"
+    );
     // Distinct: crank pivots or pins apart by the separation.
     for (i, d) in r.designs.iter().enumerate() {
         for e in &r.designs[..i] {
@@ -256,7 +270,12 @@ fn four_poses_beat_finer_curve_samples() {
     }
     let four = t.four_positions("test").unwrap();
     let mut brute = f64::NEG_INFINITY;
-    for a in four.parameter_samples(4 * o.coarse_pairs).unwrap().into_iter().flatten() {
+    for a in four
+        .parameter_samples(4 * o.coarse_pairs)
+        .unwrap()
+        .into_iter()
+        .flatten()
+    {
         for s in &sliders {
             if let Some(x) = t
                 .slider_crank(&a.dyad(), s)
@@ -269,7 +288,10 @@ fn four_poses_beat_finer_curve_samples() {
     }
     assert!(brute.is_finite());
     let got = best_score(&r.designs);
-    assert!(got >= brute - 1e-6 * brute.abs().max(1.0), "{got} < {brute}");
+    assert!(
+        got >= brute - 1e-6 * brute.abs().max(1.0),
+        "{got} < {brute}"
+    );
 }
 
 /// The five-pose task of the known linkage: its crank is a Burmester
@@ -305,7 +327,12 @@ fn five_poses_find_the_known_slider_crank() {
     let r2 = t2.design(&o, &Control::new()).unwrap();
     assert_eq!(r2.designs.len(), r.designs.len());
     for (d, d2) in r.designs.iter().zip(&r2.designs) {
-        assert!((d2.score - d.score).abs() < 1e-7, "{} {}", d.score, d2.score);
+        assert!(
+            (d2.score - d.score).abs() < 1e-7,
+            "{} {}",
+            d.score,
+            d2.score
+        );
         assert!((d2.size_ratio - d.size_ratio).abs() < 1e-7 * d.size_ratio);
         let a = sim.point(d.linkage.driving().center);
         let c = sim.point(d.linkage.driven_point());
@@ -327,7 +354,12 @@ fn three_poses_moved_give_the_moved_answer() {
     let r2 = t2.design(&o, &Control::new()).unwrap();
     let (d, d2) = (&r.designs[0], &r2.designs[0]);
     check_design(&t2, &o.limits, d2);
-    assert!((d2.score - d.score).abs() < 1e-4 * d.score.abs(), "{} {}", d.score, d2.score);
+    assert!(
+        (d2.score - d.score).abs() < 1e-4 * d.score.abs(),
+        "{} {}",
+        d.score,
+        d2.score
+    );
     let a = sim.point(d.linkage.driving().center);
     assert!((d2.linkage.driving().center - a).norm() < 1e-2 * t2.span());
 }
@@ -342,15 +374,37 @@ fn refusals_are_typed() {
     let e = t.design(&with_motor, &Control::new()).unwrap_err();
     assert_eq!(e.cause(), "driven_kind", "{e}");
     assert!(e.to_string().contains("motor"));
-    let e = t.design_plan(&slider(DesignOptions::default())).unwrap_err();
+    let e = t
+        .design_plan(&slider(DesignOptions::default()))
+        .unwrap_err();
     assert_eq!(e.cause(), "driven_kind", "{e}");
     // Five poses without a slider Burmester point: the reason, typed.
     let poses = [
-        Pose::new(1.049199280691, 2.279426358634, 45.220037141544f64.to_radians()),
-        Pose::new(0.734502065472, 3.198658887874, 26.633426990744f64.to_radians()),
-        Pose::new(-0.378159188147, 3.063048993013, 21.786789298262f64.to_radians()),
-        Pose::new(-1.268710439724, 2.051150142014, 27.048624103934f64.to_radians()),
-        Pose::new(-1.411118156972, 0.597429126400, 48.044287536536f64.to_radians()),
+        Pose::new(
+            1.049199280691,
+            2.279426358634,
+            45.220037141544f64.to_radians(),
+        ),
+        Pose::new(
+            0.734502065472,
+            3.198658887874,
+            26.633426990744f64.to_radians(),
+        ),
+        Pose::new(
+            -0.378159188147,
+            3.063048993013,
+            21.786789298262f64.to_radians(),
+        ),
+        Pose::new(
+            -1.268710439724,
+            2.051150142014,
+            27.048624103934f64.to_radians(),
+        ),
+        Pose::new(
+            -1.411118156972,
+            0.597429126400,
+            48.044287536536f64.to_radians(),
+        ),
     ];
     let five = Task::new(&poses).unwrap();
     assert!(five.slider_dyads(1).unwrap().is_empty());
@@ -433,4 +487,3 @@ fn maxima_answer_a_cancel() {
         .unwrap_err();
     assert_eq!(e.cause(), "cancelled");
 }
-

@@ -9,9 +9,8 @@
 use burmester::design::{ActuatorOptions, DriveOptions};
 use burmester::{
     ActuatorLink, ActuatorSearch, AtlasBest, AtlasCell, Constraints, Design, DesignLimits,
-    DesignOptions, DesignReport, DesignedLinkage, DrivenKind, Dyad, InputRequirement,
-    InvalidInput, Limit, NearMiss, PivotRegion, Point2, RankBy, SearchPoint, SliderDyad, Space,
-    Task, Viewport,
+    DesignOptions, DesignReport, DesignedLinkage, DrivenKind, Dyad, InputRequirement, InvalidInput,
+    Limit, NearMiss, PivotRegion, Point2, RankBy, SearchPoint, SliderDyad, Space, Task, Viewport,
 };
 use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyIndexError, PyTypeError};
@@ -20,7 +19,6 @@ use pyo3::types::PyDict;
 
 use crate::actuator::PyActuator;
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask, dyad_tuple};
-use crate::slider::PySynthesizedSliderCrank;
 use crate::conv::{Count, PyPoint, Real, pt};
 use crate::drive::PyDrive;
 use crate::errors::IntoPy;
@@ -28,6 +26,7 @@ use crate::geom::PyGrid;
 use crate::getters::getters;
 use crate::pickle::{Reduced, reduce_to};
 use crate::run::run;
+use crate::slider::PySynthesizedSliderCrank;
 
 type Xy = (f64, f64);
 type Box4 = (f64, f64, f64, f64);
@@ -271,7 +270,9 @@ fn linkage_of(
 fn driven_tuple(l: &DesignedLinkage) -> ((f64, f64), (f64, f64)) {
     match l {
         DesignedLinkage::FourBar(f) => dyad_tuple(&f.driven),
-        DesignedLinkage::SliderCrank(s) => (pt(s.driven.circle), (s.driven.guide.x, s.driven.guide.y)),
+        DesignedLinkage::SliderCrank(s) => {
+            (pt(s.driven.circle), (s.driven.guide.x, s.driven.guide.y))
+        }
     }
 }
 

@@ -130,7 +130,6 @@ pub mod synthesis;
 pub mod tolerance;
 
 pub use design::ActuatorSearch;
-pub use design::{DesignedLinkage, DrivenKind};
 pub use design::{
     AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, Pair,
     PairContext, PairMap, Pivot, PivotAtlas, RankBy, SolutionMap, Varying,
@@ -139,6 +138,7 @@ pub use design::{
     Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, PivotRegion, SearchPoint,
     Space,
 };
+pub use design::{DesignedLinkage, DrivenKind};
 pub use engine::Control;
 pub use error::{AssemblyError, DegenerateError, DriveError, Error, InvalidInput, Result};
 pub use geom::{CircleOrLine, Conic, ConicKind, Grid, Line, PerPose, Pose, Similarity, Viewport};

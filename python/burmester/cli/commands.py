@@ -493,12 +493,11 @@ def cmd_design(args: argparse.Namespace) -> int:
     return 0
 
 
-def _design_driven(args: argparse.Namespace, spec: Any) -> str:
+def _design_driven(args: argparse.Namespace, spec: Any) -> Literal["revolute", "slider"]:
     """The driven dyad's kind of ``design``: ``--driven``, else the task
     file's ``[design] driven``, else ``"revolute"``."""
-    if args.driven is not None:
-        return str(args.driven)
-    return str(getattr(spec, "design_driven", None) or "revolute")
+    given = args.driven if args.driven is not None else getattr(spec, "design_driven", None)
+    return "slider" if given == "slider" else "revolute"
 
 
 def _draw_slider_design(args: argparse.Namespace, sc: burmester.SynthesizedSliderCrank, out: str,

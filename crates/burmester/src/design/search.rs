@@ -97,7 +97,7 @@
 //! the guide's normal over the travel; the link ratio of crank and
 //! coupler; the size with the stroke; `A0` in the pivot region, the guide
 //! needing no pivot). The limits read as for the slider solution map
-//! ([`map_slider`](crate::design::map_slider)): the links
+//! (the `map_slider` module of `design`): the links
 //! [`DesignLimits::max_link_length`] bounds are the crank, the coupler and
 //! the offset, and [`DesignLimits::min_grashof_margin`] bounds the
 //! distance from the crank's change points

@@ -321,7 +321,11 @@ impl Task {
     /// positions farthest apart; pointed toward the position farthest from
     /// the first. With the largest distance of a position from the guide.
     /// `None` when the positions all coincide (or are not finite).
-    pub(crate) fn guided(&self, circle: Point2<f64>, normal: Option<Vector2<f64>>) -> Option<SliderDyad> {
+    pub(crate) fn guided(
+        &self,
+        circle: Point2<f64>,
+        normal: Option<Vector2<f64>>,
+    ) -> Option<SliderDyad> {
         self.guided_off(circle, normal).map(|(s, _)| s)
     }
 

@@ -30,7 +30,7 @@ use nalgebra::Point2;
 use rayon::prelude::*;
 
 use super::{
-    COARSE_SHARE, CENSUS_DRIVING, DesignOptions, DesignReport, DrivenKind, Exact, Figures,
+    CENSUS_DRIVING, COARSE_SHARE, DesignOptions, DesignReport, DrivenKind, Exact, Figures,
     PROGRESS, SearchPoint, Start, Verdict, grid_over, pick_starts,
 };
 use crate::engine::Control;
@@ -99,7 +99,12 @@ pub(super) fn check_options(options: &DesignOptions) -> Result<()> {
 impl Exact<'_> {
     /// The verdict on the linkage of a driving dyad and a driven dyad of
     /// either kind, as [`judge`](Self::judge).
-    pub(super) fn judge_kind(&self, driving: &Dyad, driven: &DyadKind, all: bool) -> Option<Verdict> {
+    pub(super) fn judge_kind(
+        &self,
+        driving: &Dyad,
+        driven: &DyadKind,
+        all: bool,
+    ) -> Option<Verdict> {
         match driven {
             DyadKind::Revolute(d) => self.judge(driving, d, all),
             DyadKind::Slider(s) => {
