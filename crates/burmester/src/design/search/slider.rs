@@ -138,6 +138,9 @@ impl Exact<'_> {
 /// A coarse candidate: the driving dyad, the slider, where.
 type Candidate = (Dyad, SliderDyad, SearchPoint);
 
+/// One row of the coarse pass: judged, acceptable, the starts kept.
+type RowOut = (usize, usize, Vec<(Start, Verdict)>);
+
 /// The coarse pass polls the cancel flag every this many candidates.
 const POLL: usize = 256;
 
@@ -179,6 +182,7 @@ impl Task {
     /// of each row as starts: all with `keep` `None`, else the best `keep`
     /// at least the separation apart ([`pick_starts`]), so that memory does
     /// not grow with the grid.
+    #[allow(clippy::too_many_arguments)]
     fn slider_coarse(
         &self,
         exact: &Exact<'_>,
@@ -191,7 +195,7 @@ impl Task {
     ) -> Result<Vec<(Start, Verdict)>> {
         let done = AtomicUsize::new(0);
         let total = (rows * row_len).max(1);
-        let out: Vec<(usize, usize, Vec<(Start, Verdict)>)> = (0..rows)
+        let out: Vec<RowOut> = (0..rows)
             .into_par_iter()
             .map(|row| {
                 let (mut judged, mut acceptable) = (0, 0);
@@ -268,7 +272,7 @@ impl Task {
             }
         };
         let slider_at = |t: f64| -> Option<SliderDyad> {
-            if line && !(t.abs() < 0.5 * PI) {
+            if line && (t.is_nan() || t.abs() >= 0.5 * PI) {
                 return None;
             }
             self.guided(locus.point_at(t)?, None)
