@@ -375,6 +375,10 @@ METHODS[burmester.InvertedSliderCrank] = "solve joints coupler_point coupler_pat
 METHODS[burmester.SynthesizedInvertedSliderCrank] = "travel_angles pose_at"
 METHODS[Task] += " inverted_slider_crank"
 
+# The one-call design of slider-cranks (issue 27, sdes32).
+PROPERTIES[burmester.Design] += " driven_kind"
+PROPERTIES[burmester.NearMiss] += " driven_kind"
+
 #: Methods without arguments, and why each is a method.
 NO_ARGUMENT_METHODS = {
     (Grid, "cell_centers"): "does work: allocates two arrays",

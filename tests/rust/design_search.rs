@@ -803,31 +803,15 @@ fn example_designs_keep_off_the_change_point() {
 #[test]
 fn cancelled_while_running() {
     use core::sync::atomic::Ordering;
-    use std::time::{Duration, Instant};
+    use std::time::Duration;
     let t = example::task();
-    let stop = AtomicBool::new(false);
     let o = DesignOptions {
         coarse_driven: DesignOptions::MAX_COARSE_DRIVEN,
         coarse_driving: 32,
         ..DesignOptions::default()
     };
-    let (e, latency) = std::thread::scope(|s| {
-        let flagged = s.spawn(|| {
-            std::thread::sleep(Duration::from_millis(200));
-            stop.store(true, Ordering::Relaxed);
-            Instant::now()
-        });
-        // A pool of its own: the global one is shared with the other tests
-        // of this binary, whose long tasks would delay the answer.
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(2)
-            .build()
-            .unwrap();
-        let e = pool
-            .install(|| t.design(&o, &Control::new().with_cancel(&stop)))
-            .unwrap_err();
-        let done = Instant::now();
-        (e, done - flagged.join().unwrap())
+    let (e, latency) = common::cancelled_after(Duration::from_millis(200), |stop| {
+        t.design(&o, &Control::new().with_cancel(stop)).unwrap_err()
     });
     assert_eq!(e.cause(), "cancelled");
     assert!(latency < Duration::from_secs(1), "{latency:?}");

@@ -14,7 +14,9 @@
 
 use core::sync::atomic::{AtomicBool, Ordering};
 use std::f64::consts::PI;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+mod common;
 
 use burmester::{
     Control, Design, DesignLimits, DesignOptions, DrivenKind, Grid, Point2, Pose, Similarity,
@@ -188,6 +190,35 @@ fn best_score(designs: &[Design]) -> f64 {
     designs[0].score
 }
 
+/// The best design scores at least the best acceptable slider-crank of
+/// every `driving` dyad with every slider (to 1e-6 relative).
+fn beats_the_brute_force(
+    t: &Task,
+    o: &DesignOptions,
+    designs: &[Design],
+    driving: impl Iterator<Item = burmester::Dyad>,
+    sliders: &[burmester::SliderDyad],
+) {
+    let mut brute = f64::NEG_INFINITY;
+    for a in driving {
+        for s in sliders {
+            if let Some(x) = t
+                .slider_crank(&a, s)
+                .ok()
+                .and_then(|sc| score_of(t, o, &sc))
+            {
+                brute = brute.max(x);
+            }
+        }
+    }
+    assert!(brute.is_finite());
+    let got = best_score(designs);
+    assert!(
+        got >= brute - 1e-6 * brute.abs().max(1.0),
+        "{got} < {brute}"
+    );
+}
+
 #[test]
 fn three_poses_beat_a_finer_brute_force() {
     let (t, a0, c1) = known_task(&[0.3, 1.2, 2.0]);
@@ -222,27 +253,8 @@ fn three_poses_beat_a_finer_brute_force() {
     };
     let g = Grid::new(bx, nx, ny).unwrap();
     let sliders = t.slider_dyads(4 * o.coarse_driven).unwrap();
-    let mut brute = f64::NEG_INFINITY;
-    for k in 0..g.len() {
-        let Ok(a) = t.dyad_from_center(g.point(k % nx, k / nx)) else {
-            continue;
-        };
-        for s in &sliders {
-            if let Some(x) = t
-                .slider_crank(&a, s)
-                .ok()
-                .and_then(|sc| score_of(&t, &o, &sc))
-            {
-                brute = brute.max(x);
-            }
-        }
-    }
-    assert!(brute.is_finite());
-    let got = best_score(&r.designs);
-    assert!(
-        got >= brute - 1e-6 * brute.abs().max(1.0),
-        "{got} < {brute}"
-    );
+    let driving = (0..g.len()).filter_map(|k| t.dyad_from_center(g.point(k % nx, k / nx)).ok());
+    beats_the_brute_force(&t, &o, &r.designs, driving, &sliders);
     // Distinct: crank pivots or pins apart by the separation.
     for (i, d) in r.designs.iter().enumerate() {
         for e in &r.designs[..i] {
@@ -269,29 +281,9 @@ fn four_poses_beat_finer_curve_samples() {
         check_design(&t, &o.limits, d);
     }
     let four = t.four_positions("test").unwrap();
-    let mut brute = f64::NEG_INFINITY;
-    for a in four
-        .parameter_samples(4 * o.coarse_pairs)
-        .unwrap()
-        .into_iter()
-        .flatten()
-    {
-        for s in &sliders {
-            if let Some(x) = t
-                .slider_crank(&a.dyad(), s)
-                .ok()
-                .and_then(|sc| score_of(&t, &o, &sc))
-            {
-                brute = brute.max(x);
-            }
-        }
-    }
-    assert!(brute.is_finite());
-    let got = best_score(&r.designs);
-    assert!(
-        got >= brute - 1e-6 * brute.abs().max(1.0),
-        "{got} < {brute}"
-    );
+    let samples = four.parameter_samples(4 * o.coarse_pairs).unwrap();
+    let driving = samples.into_iter().flatten().map(|a| a.dyad());
+    beats_the_brute_force(&t, &o, &r.designs, driving, &sliders);
 }
 
 /// The five-pose task of the known linkage: its crank is a Burmester
@@ -452,21 +444,8 @@ fn maxima_answer_a_cancel() {
         top: DesignOptions::MAX_TOP,
         ..slider(DesignOptions::default())
     };
-    let stop = AtomicBool::new(false);
-    let (e, latency) = std::thread::scope(|s| {
-        let flagged = s.spawn(|| {
-            std::thread::sleep(Duration::from_millis(300));
-            stop.store(true, Ordering::Relaxed);
-            Instant::now()
-        });
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(2)
-            .build()
-            .unwrap();
-        let e = pool
-            .install(|| t.design(&o, &Control::new().with_cancel(&stop)))
-            .unwrap_err();
-        (e, Instant::now() - flagged.join().unwrap())
+    let (e, latency) = common::cancelled_after(Duration::from_millis(300), |stop| {
+        t.design(&o, &Control::new().with_cancel(stop)).unwrap_err()
     });
     assert_eq!(e.cause(), "cancelled");
     assert!(latency < Duration::from_secs(1), "{latency:?}");

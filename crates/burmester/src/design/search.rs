@@ -1111,6 +1111,12 @@ fn apart(a: &DesignedLinkage, b: &DesignedLinkage) -> f64 {
         .max((a.driven_point() - b.driven_point()).norm())
 }
 
+/// The dyad of `task` whose center is `(x[0], x[1])` (a refinement's
+/// coordinates), if any.
+fn dyad_at(task: &Task, x: &[f64]) -> Option<Dyad> {
+    task.dyad_from_center(Point2::new(x[0], x[1])).ok()
+}
+
 /// A coarse start: where, its pivots, its coarse score and size ratio.
 #[derive(Debug, Clone, Copy)]
 struct Start {
@@ -1364,8 +1370,7 @@ impl Task {
             plan.driven.dy(),
         ];
         let eval = |x: &[f64], margin: f64| {
-            let a = self.dyad_from_center(Point2::new(x[0], x[1])).ok()?;
-            let c = self.dyad_from_center(Point2::new(x[2], x[3])).ok()?;
+            let (a, c) = (dyad_at(self, &x[..2])?, dyad_at(self, &x[2..])?);
             exact.judge_with(&a, &c, false, margin)
         };
         let refined = self.refine_starts(

@@ -31,7 +31,7 @@ use rayon::prelude::*;
 
 use super::{
     CENSUS_DRIVING, COARSE_SHARE, DesignOptions, DesignReport, DrivenKind, Exact, Figures,
-    PROGRESS, SearchPoint, Start, Verdict, grid_over, pick_starts,
+    PROGRESS, SearchPoint, Start, Verdict, dyad_at, grid_over, pick_starts,
 };
 use crate::engine::Control;
 use crate::error::{Error, InvalidInput, Result};
@@ -336,8 +336,7 @@ impl Task {
         let dt = if line { PI / n } else { 2.0 * PI / n };
         let h = [driving.dx(), driving.dy(), dt];
         let eval = |x: &[f64], margin: f64| {
-            let a = self.dyad_from_center(Point2::new(x[0], x[1])).ok()?;
-            let s = slider_at(x[2])?;
+            let (a, s) = (dyad_at(self, x)?, slider_at(x[2])?);
             exact.judge_slider(&a, &s, false, margin)
         };
         let refined = self.refine_starts(
