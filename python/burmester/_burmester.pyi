@@ -2249,7 +2249,7 @@ def _atlas_tile(
 # ---------------------------------------------------------------------------
 # The design search (the public API is burmester.design)
 
-FoundBy = Literal["pivots", "parameters", "burmester"]
+FoundBy = Literal["pivots", "parameters", "burmester", "slider_circle", "slider_point"]
 LimitName = Literal[
     "branch_defect", "order", "transmission", "link_ratio", "input", "grashof_margin",
     "size_ratio", "link_length", "pivot_region", "obstacles", "envelope",
@@ -2322,11 +2322,16 @@ class Design:
     figures."""
 
     @property
-    def linkage(self) -> SynthesizedFourBar:
-        """The linkage (its driving dyad drives)."""
+    def linkage(self) -> Union[SynthesizedFourBar, SynthesizedSliderCrank]:
+        """The linkage (its driving dyad drives): a four-bar, or with
+        ``design(..., driven="slider")`` a slider-crank."""
     @property
-    def figures(self) -> LinkageFigures:
-        """``linkage.figures``."""
+    def figures(self) -> Optional[LinkageFigures]:
+        """A four-bar's ``linkage.figures`` (None for a slider-crank, whose
+        figures are the linkage's own properties)."""
+    @property
+    def driven_kind(self) -> Literal["revolute", "slider"]:
+        """``"revolute"`` for a four-bar, ``"slider"`` for a slider-crank."""
     @property
     def score(self) -> float:
         """Its score by the ranking (exact figures)."""
@@ -2340,8 +2345,9 @@ class Design:
     def driving_pivot(self) -> Point:
         """The driving crank's fixed pivot ``A0``."""
     @property
-    def driven_pivot(self) -> Point:
-        """The driven crank's fixed pivot ``C0``."""
+    def driven_pivot(self) -> Optional[Point]:
+        """The driven crank's fixed pivot ``C0`` (None for a slider-crank:
+        its guide, ``linkage.driven``, needs no pivot)."""
     @property
     def found_by(self) -> FoundBy:
         """What ``coarse`` and ``refined`` hold: the fixed pivots
@@ -2399,11 +2405,14 @@ class NearMiss:
     nothing fits): ``shortfall`` is its worst relative shortfall."""
 
     @property
-    def linkage(self) -> SynthesizedFourBar:
-        """The linkage."""
+    def linkage(self) -> Union[SynthesizedFourBar, SynthesizedSliderCrank]:
+        """The linkage (a four-bar, or a slider-crank)."""
     @property
-    def figures(self) -> LinkageFigures:
-        """``linkage.figures``."""
+    def figures(self) -> Optional[LinkageFigures]:
+        """A four-bar's ``linkage.figures`` (None for a slider-crank)."""
+    @property
+    def driven_kind(self) -> Literal["revolute", "slider"]:
+        """``"revolute"`` for a four-bar, ``"slider"`` for a slider-crank."""
     @property
     def size_ratio(self) -> float:
         """Its size over the task's."""
@@ -2421,6 +2430,7 @@ class NearMiss:
         size_ratio: float,
         misses: Sequence[str],
         shortfall: float,
+        driven_kind: str = "revolute",
     ) -> NearMiss:
         """Rebuilds a near miss from its state (for pickling)."""
     def __eq__(self, other: object, /) -> bool: ...
@@ -2546,6 +2556,7 @@ def _design(
     actuator_samples: int = ...,
     actuator_width: float = ...,
     min_gap: float = ...,
+    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The design search in this process (see :func:`burmester.design`,
@@ -2574,6 +2585,7 @@ def _design_plan(
     actuator_samples: int = ...,
     actuator_width: float = ...,
     min_gap: float = ...,
+    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
 ) -> dict[str, Any]:
     """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
@@ -2602,6 +2614,7 @@ def _design_from_atlas(
     actuator_samples: int = ...,
     actuator_width: float = ...,
     min_gap: float = ...,
+    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere

@@ -55,6 +55,8 @@ def drawer(obj: object) -> Callable[[Axes], Any]:
     import burmester
     from burmester import plot
 
+    if isinstance(obj, burmester.Design):  # the picture of its linkage, of either kind
+        return drawer(obj.linkage)
     # The picture of each kind: its type's name in burmester, the plot function's name (in order).
     pictures = (("Task", "poses"), ("Filemon", "center_plane"), ("FourBar", "four_bar"),
                 ("SynthesizedFourBar", "linkage"), ("SolutionMap", "solution_map"), ("PairMap", "pair_map"),

@@ -73,6 +73,7 @@ def design(
     actuator_samples: int = 64,
     actuator_width: float = 0.0,
     min_gap: float = 0.0,
+    driven: Literal["revolute", "slider"] = "revolute",
 ) -> DesignReport:
     """The best linkages for ``task`` (three to five poses) inside ``space``
     (a :class:`burmester.Space`; default: pivots anywhere, no obstacles)
@@ -134,14 +135,34 @@ def design(
     capsules (the space's ``link_width``), the obstacles and the envelope over
     the travel: a placement nearer than that is not clear. Both at least 0
     (:class:`burmester.InvalidInputError` otherwise).
+
+    ``driven="slider"`` designs slider-cranks: a driving crank of the task
+    driving a slider dyad of the task (its pin on a straight guide fixed to
+    the ground; :meth:`burmester.Task.slider_dyads`). Each
+    :attr:`burmester.Design.linkage` is then a
+    :class:`burmester.SynthesizedSliderCrank`, judged exactly as
+    :meth:`burmester.Task.slider_crank` builds it (one assembly mode at
+    every pose with no toggle between, the order, the transmission angle
+    between coupler and the guide's normal over the travel, the link ratio
+    of crank and coupler, the size with the stroke, ``A0`` in the pivot
+    region). Three poses search ``A0`` (``coarse_driving``) and the pin
+    along the slider circle (``coarse_driven``), refined over both; four
+    poses the center-point curve (``coarse_pairs``) times the slider points;
+    five poses the Burmester points times the slider Burmester points (a
+    task without slider points raises
+    :class:`burmester.InvalidInputError`, saying why). A motor, an actuator,
+    obstacles and an envelope are refused with a slider (their checks are a
+    four-bar's), and the search runs in this process (``client`` is not
+    used).
     """
     kw: Dict[str, Any] = dict(space=space, limits=limits, rank_by=rank_by, top=top, min_separation=min_separation,
               coarse_driven=coarse_driven, coarse_driving=coarse_driving, coarse_pairs=coarse_pairs,
               starts=starts, max_iterations=max_iterations, input=input, swing_margin_deg=swing_margin_deg,
               max_time_ratio=max_time_ratio, actuator_link=actuator_link, actuator_point=actuator_point,
-              max_stroke_ratio=max_stroke_ratio, actuator_samples=actuator_samples)
+              max_stroke_ratio=max_stroke_ratio, actuator_samples=actuator_samples, driven=driven)
     kw.update(actuator_width=actuator_width, min_gap=min_gap)
-    if client is None or not counts.of(task).filemon:  # the coarse pass on Dask is the atlas's
+    # The coarse pass on Dask is the four-bars' atlas.
+    if client is None or not counts.of(task).filemon or driven == "slider":
         return _design(task, progress=progress, **kw)
     from burmester.atlas import _DASK_MISSING, _on_dask
 
@@ -151,7 +172,7 @@ def design(
         raise ImportError(_DASK_MISSING) from None
     # Validates everything here, with in-process errors, before any task.
     plan = _design_plan(task, **kw)
-    driven, driving, opts = plan["driven"], plan["driving"], dict(plan["atlas"])
-    _atlas_tile(task, driven, 0, 0, driving, **opts)
-    arrays = _on_dask(client, task, driven, driving, opts, progress, tile_rows)
+    driven_grid, driving, opts = plan["driven"], plan["driving"], dict(plan["atlas"])
+    _atlas_tile(task, driven_grid, 0, 0, driving, **opts)
+    arrays = _on_dask(client, task, driven_grid, driving, opts, progress, tile_rows)
     return _design_from_atlas(task, arrays, **kw)

@@ -175,6 +175,10 @@ class TaskSpec:
     #: ``C1`` at pose 1 and the guide's direction ``u`` (the line through
     #: the pin's positions), for ``burmester map``; None: a driven crank.
     driven_slider: Optional[Tuple[Point, Point]] = None
+    #: The driven dyad ``burmester design`` searches (``[design] driven``):
+    #: ``"revolute"`` (four-bars) or ``"slider"`` (slider-cranks); None:
+    #: not given (revolute, unless ``--driven`` says otherwise).
+    design_driven: Optional[str] = None
 
     @property
     def task(self) -> Task:
@@ -467,12 +471,12 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
     """
     r = _Reader(source)
     for key in doc:
-        if key not in ("pose", "driven", "view", "limits", "space", "units", "actuator"):
+        if key not in ("pose", "driven", "view", "limits", "space", "units", "actuator", "design"):
             hint = " (the poses are [[pose]] tables)" if key in ("poses", "task") else ""
             if key in ("unit", "length_unit", "lengths"):
                 hint = ' (the unit of the lengths is units = "mm")'
             raise r.fail(key, f"unknown top-level key (expected units, [[pose]], [driven], [view], [limits], [space], "
-                              f"[actuator]){hint}")
+                              f"[actuator], [design]){hint}")
     units = _units(r, doc)
 
     # [[pose]] x3 (the branch maps of Filemon's construction need three), or
@@ -520,7 +524,7 @@ def parse_task(doc: Mapping[str, Any], source: str = "<task>") -> TaskSpec:
 
     limits = _limits(r, doc)
     return TaskSpec(tuple(poses), center, view, limits, source, units=units, space=_space(r, doc),
-                    actuator=_actuator(r, doc),
+                    actuator=_actuator(r, doc), design_driven=_design_driven(r, doc),
                     driven_slider=slider)
 
 
@@ -743,7 +747,7 @@ def _parse_many(
     driven = _driven(r, doc, task, required=False) if count.driven else None
     _driven_slider(r, doc, task)  # refused: a driven slider is for three poses
     return TaskSpec(poses, driven, _view(r, doc, default), limits, source, units=units, space=_space(r, doc),
-                    actuator=_actuator(r, doc))
+                    actuator=_actuator(r, doc), design_driven=_design_driven(r, doc))
 
 
 def loads(text: str, source: str = "<task>") -> TaskSpec:
@@ -836,6 +840,11 @@ def dumps(spec: TaskSpec) -> str:
         doc.add("space", _dump_space(spec.space, note))
     if spec.actuator is not None:
         doc.add("actuator", _dump_actuator(spec.actuator, note))
+    if spec.design_driven is not None:
+        design = note(tomlkit.table(), "burmester design (its flags override these)")
+        design.add("driven", note(tomlkit.item(spec.design_driven),
+                                  '"revolute" (four-bars) or "slider" (slider-cranks: a pin on a straight guide)'))
+        doc.add("design", design)
     return tomlkit.dumps(doc)
 
 
@@ -1007,3 +1016,22 @@ def _dump_actuator(a: ActuatorSpec, note: Any) -> Any:
     if a.min_gap is not None:
         t.add("min_gap", note(tomlkit.item(float(a.min_gap)), "the least gap over the travel"))
     return t
+
+
+#: The driven dyads ``[design] driven`` names.
+DESIGN_DRIVEN = ("revolute", "slider")
+
+
+def _design_driven(r: _Reader, doc: Mapping[str, Any]) -> Optional[str]:
+    """The ``[design]`` table's ``driven`` (None when absent)."""
+    t = r.table(doc, "design", required=False)
+    if t is None:
+        return None
+    r.only_keys("design", t, ["driven"])
+    if "driven" not in t:
+        return None
+    value = t["driven"]
+    if value not in DESIGN_DRIVEN:
+        names = ", ".join(f'"{a}"' for a in DESIGN_DRIVEN)
+        raise r.fail("design.driven", f"expected one of {names}, found {_describe(value)}")
+    return str(value)

@@ -400,6 +400,10 @@ PROPERTIES[burmester.SliderPivot] = "center index linkage margin size_ratio scor
 METHODS[SolutionMap] += " best_slider_pivots slider_pareto_front"
 METHODS[Task] += " inverted_slider_crank"
 
+# The one-call design of slider-cranks (issue 27, sdes32).
+PROPERTIES[burmester.Design] += " driven_kind"
+PROPERTIES[burmester.NearMiss] += " driven_kind"
+
 #: Methods without arguments, and why each is a method.
 NO_ARGUMENT_METHODS = {
     (Grid, "cell_centers"): "does work: allocates two arrays",

@@ -944,11 +944,11 @@ fn the_design_places_a_clear_actuator_on_every_design() {
     assert_eq!(report.actuator, options.actuator);
     for d in &report.designs {
         let a = d.actuator.as_ref().expect("every design has its actuator");
-        assert_eq!(a.linkage, d.linkage);
+        assert_eq!(&a.linkage, d.linkage.four_bar().unwrap());
         assert!(a.monotone && a.acceptable && a.clear, "{a:?}");
         assert!(options.space.pivots.contains(a.ground));
-        let own = Own::new(&d.linkage, a.link, a.point);
-        let dense = dense(&d.linkage, &own, a.ground, 8_000);
+        let own = Own::new(d.linkage.four_bar().unwrap(), a.link, a.point);
+        let dense = dense(d.linkage.four_bar().unwrap(), &own, a.ground, 8_000);
         assert!(dense.turning.is_empty());
         assert!(
             dense.s_max / dense.s_min <= 1.8 + 1e-6,
@@ -957,7 +957,14 @@ fn the_design_places_a_clear_actuator_on_every_design() {
         );
         assert!((a.stroke_ratio - dense.s_max / dense.s_min).abs() < 1e-6);
         assert!(dense.mu_min >= options.limits.min_transmission - 1e-5);
-        let gap = dense_gap(&d.linkage, &own, a.ground, 8_000, (0.0, 0.0), &[]);
+        let gap = dense_gap(
+            d.linkage.four_bar().unwrap(),
+            &own,
+            a.ground,
+            8_000,
+            (0.0, 0.0),
+            &[],
+        );
         assert!(
             gap > 0.0 && (gap - a.min_clearance).abs() < 1e-3 * task.span(),
             "dense {gap} vs {} at Q {:?}",

@@ -164,7 +164,7 @@ fn drive(t: &Task, sfb: &SynthesizedFourBar, limits: &DesignLimits) -> Vec<[Poin
 
 /// Every check of one design against the options, independently.
 fn check_design(t: &Task, o: &DesignOptions, d: &Design) {
-    let l = &d.linkage;
+    let l = d.linkage.four_bar().unwrap();
     let f = l.figures;
     drive(t, l, &o.limits);
     assert!(f.link_ratio <= o.limits.max_link_ratio);
@@ -196,9 +196,10 @@ fn check_report(t: &Task, o: &DesignOptions, designs: &[Design], sep: f64) {
         check_design(t, o, d);
         for e in &designs[..k] {
             assert!(e.score >= d.score - 1e-12, "not best first");
-            let apart = (e.linkage.driving.center - d.linkage.driving.center)
+            let (e, d) = (e.linkage.four_bar().unwrap(), d.linkage.four_bar().unwrap());
+            let apart = (e.driving.center - d.driving.center)
                 .norm()
-                .max((e.linkage.driven.center - d.linkage.driven.center).norm());
+                .max((e.driven.center - d.driven.center).norm());
             assert!(apart >= sep, "two designs {apart} apart");
         }
     }
@@ -323,8 +324,8 @@ fn five_poses_judge_every_pair_of_burmester_points() {
     check_report(&t, &o, &r.designs, r.min_separation);
     // The generating crank-rocker is among them, A0 driving.
     assert!(r.designs.iter().any(|d| {
-        (d.linkage.driving.center - Point2::new(0.0, 0.0)).norm() < 1e-6
-            && (d.linkage.driven.center - Point2::new(4.0, 0.0)).norm() < 1e-6
+        (d.linkage.driving().center - Point2::new(0.0, 0.0)).norm() < 1e-6
+            && (d.linkage.driven_point() - Point2::new(4.0, 0.0)).norm() < 1e-6
             && matches!(d.refined, SearchPoint::Burmester { .. })
     }));
     // Every acceptable ordered pair by the exact figures is found.
@@ -387,7 +388,7 @@ fn the_space_bounds_both_pivots_and_the_motion() {
         (p - (a + ab * s)).norm()
     };
     for d in &r.designs {
-        for [a0, a, c, c0, p] in drive(&t, &d.linkage, &o.limits) {
+        for [a0, a, c, c0, p] in drive(&t, d.linkage.four_bar().unwrap(), &o.limits) {
             // Inside the envelope: every joint (the box is convex, so the
             // links' segments and the coupler triangle are too).
             for q in [a0, a, c, c0, p] {
@@ -426,7 +427,7 @@ fn nothing_fits_gives_the_nearest_misses() {
     for m in &r.near_misses {
         assert!(m.shortfall >= last && m.shortfall > 0.0);
         last = m.shortfall;
-        let f = m.linkage.figures;
+        let f = m.linkage.four_bar().unwrap().figures;
         assert!(f.feasible(), "a near miss has a feasible motion");
         for l in &m.misses {
             match l {
@@ -787,7 +788,7 @@ fn example_designs_keep_off_the_change_point() {
     assert!(!r.designs.is_empty());
     check_report(&t, &o, &r.designs, r.min_separation);
     for d in &r.designs {
-        let m = margin_here(d.linkage.figures.lengths);
+        let m = margin_here(d.linkage.four_bar().unwrap().figures.lengths);
         assert!(
             m >= DesignLimits::DEFAULT_GRASHOF_MARGIN * (1.0 - 1e-12),
             "{m}"
@@ -802,31 +803,15 @@ fn example_designs_keep_off_the_change_point() {
 #[test]
 fn cancelled_while_running() {
     use core::sync::atomic::Ordering;
-    use std::time::{Duration, Instant};
+    use std::time::Duration;
     let t = example::task();
-    let stop = AtomicBool::new(false);
     let o = DesignOptions {
         coarse_driven: DesignOptions::MAX_COARSE_DRIVEN,
         coarse_driving: 32,
         ..DesignOptions::default()
     };
-    let (e, latency) = std::thread::scope(|s| {
-        let flagged = s.spawn(|| {
-            std::thread::sleep(Duration::from_millis(200));
-            stop.store(true, Ordering::Relaxed);
-            Instant::now()
-        });
-        // A pool of its own: the global one is shared with the other tests
-        // of this binary, whose long tasks would delay the answer.
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(2)
-            .build()
-            .unwrap();
-        let e = pool
-            .install(|| t.design(&o, &Control::new().with_cancel(&stop)))
-            .unwrap_err();
-        let done = Instant::now();
-        (e, done - flagged.join().unwrap())
+    let (e, latency) = common::cancelled_after(Duration::from_millis(200), |stop| {
+        t.design(&o, &Control::new().with_cancel(stop)).unwrap_err()
     });
     assert_eq!(e.cause(), "cancelled");
     assert!(latency < Duration::from_secs(1), "{latency:?}");

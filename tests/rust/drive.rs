@@ -1355,12 +1355,12 @@ fn design_with_a_motor_turns_every_design() {
     let limit = report.limits.min_transmission;
     let mut driven = 0;
     for d in &report.designs {
-        let f = &d.linkage.figures;
+        let f = &d.linkage.four_bar().unwrap().figures;
         match &d.drive {
             None => assert!(f.input_full, "a swinging design without a drive"),
             Some(drive) => {
                 assert!(!f.input_full, "a drive for a crank");
-                assert_eq!(drive.linkage, d.linkage);
+                assert_eq!(&drive.linkage, d.linkage.four_bar().unwrap());
                 assert!(drive.acceptable && drive.sixbar.crank_turns_fully());
                 let got = check_drive(&task, drive, 20_000);
                 assert!(
@@ -1425,7 +1425,7 @@ fn impossible_drives_are_passed_over() {
     assert!(
         any.designs
             .iter()
-            .all(|d| d.linkage.figures.input_full && d.drive.is_none())
+            .all(|d| d.linkage.input_full() && d.drive.is_none())
     );
     let swinging = feasible
         .designs
@@ -1450,7 +1450,7 @@ fn impossible_drives_are_passed_over() {
         )
         .unwrap();
     assert_eq!(cranks.undriven, 0);
-    assert!(cranks.designs.iter().all(|d| d.linkage.figures.input_full));
+    assert!(cranks.designs.iter().all(|d| d.linkage.input_full()));
 }
 
 /// The motor's options are checked, the most designs are allowed, and a
@@ -1486,7 +1486,7 @@ fn motor_design_bounds_and_cancelling() {
     assert!(
         r.designs
             .iter()
-            .all(|d| d.linkage.figures.input_full || d.drive.is_some())
+            .all(|d| d.linkage.input_full() || d.drive.is_some())
     );
     let too_many = DesignOptions {
         top: DesignOptions::MAX_TOP + 1,

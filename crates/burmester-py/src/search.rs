@@ -9,8 +9,8 @@
 use burmester::design::{ActuatorOptions, DriveOptions};
 use burmester::{
     ActuatorLink, ActuatorSearch, AtlasBest, AtlasCell, Constraints, Design, DesignLimits,
-    DesignOptions, DesignReport, Dyad, InputRequirement, InvalidInput, Limit, NearMiss,
-    PivotRegion, Point2, RankBy, SearchPoint, Space, Task, Viewport,
+    DesignOptions, DesignReport, DesignedLinkage, DrivenKind, Dyad, InputRequirement, InvalidInput,
+    Limit, NearMiss, PivotRegion, Point2, RankBy, SearchPoint, SliderDyad, Space, Task, Viewport,
 };
 use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyIndexError, PyTypeError};
@@ -26,6 +26,7 @@ use crate::geom::PyGrid;
 use crate::getters::getters;
 use crate::pickle::{Reduced, reduce_to};
 use crate::run::run;
+use crate::slider::PySynthesizedSliderCrank;
 
 type Xy = (f64, f64);
 type Box4 = (f64, f64, f64, f64);
@@ -172,6 +173,12 @@ fn point_state(p: &SearchPoint) -> (&'static str, [f64; 4]) {
         SearchPoint::Burmester { driving, driven } => {
             ("burmester", [driving as f64, driven as f64, 0.0, 0.0])
         }
+        SearchPoint::SliderCircle { driving, slider } => {
+            ("slider_circle", [driving.x, driving.y, slider, 0.0])
+        }
+        SearchPoint::SliderPoint { driving, slider } => {
+            ("slider_point", [driving, slider as f64, 0.0, 0.0])
+        }
     }
 }
 
@@ -189,6 +196,14 @@ fn point_of(kind: &str, v: [f64; 4]) -> PyResult<SearchPoint> {
             driving: v[0] as usize,
             driven: v[1] as usize,
         },
+        "slider_circle" => SearchPoint::SliderCircle {
+            driving: Point2::new(v[0], v[1]),
+            slider: v[2],
+        },
+        "slider_point" => SearchPoint::SliderPoint {
+            driving: v[0],
+            slider: v[1] as usize,
+        },
         other => {
             return Err(PyTypeError::new_err(format!(
                 "unknown search point kind {other:?}"
@@ -199,7 +214,8 @@ fn point_of(kind: &str, v: [f64; 4]) -> PyResult<SearchPoint> {
 
 /// A search point for Python: `((ax, ay), (cx, cy))` for pivots,
 /// `(s_driving, s_driven)` for curve parameters, `(i, j)` for Burmester
-/// points.
+/// points; with a driven slider `((ax, ay), t)` (three poses: the slider
+/// circle's parameter) or `(s_or_i, j)` (the slider dyad's index).
 fn point_py<'py>(py: Python<'py>, p: &SearchPoint) -> PyResult<Bound<'py, PyAny>> {
     Ok(match *p {
         SearchPoint::Pivots { driving, driven } => {
@@ -211,20 +227,68 @@ fn point_py<'py>(py: Python<'py>, p: &SearchPoint) -> PyResult<Bound<'py, PyAny>
         SearchPoint::Burmester { driving, driven } => {
             (driving, driven).into_pyobject(py)?.into_any()
         }
+        SearchPoint::SliderCircle { driving, slider } => {
+            (pt(driving), slider).into_pyobject(py)?.into_any()
+        }
+        SearchPoint::SliderPoint { driving, slider } => {
+            (driving, slider).into_pyobject(py)?.into_any()
+        }
     })
 }
 
-/// The linkage of two dyads of `task` (as built by the search).
+/// The linkage of two dyads of `task` (as built by the search): a
+/// four-bar of the driven `(C0, C1)`, or with `kind` slider a slider-crank
+/// of the driven `(C1, u)`.
 fn linkage_of(
     task: &Task,
     driving: (PyPoint, PyPoint),
     driven: (PyPoint, PyPoint),
-) -> PyResult<burmester::SynthesizedFourBar> {
-    task.four_bar(
-        &Dyad::new(driving.0.0, driving.1.0),
-        &Dyad::new(driven.0.0, driven.1.0),
-    )
+    kind: DrivenKind,
+) -> PyResult<DesignedLinkage> {
+    let a = Dyad::new(driving.0.0, driving.1.0);
+    match kind {
+        DrivenKind::Revolute => task
+            .four_bar(&a, &Dyad::new(driven.0.0, driven.1.0))
+            .map(DesignedLinkage::FourBar),
+        DrivenKind::Slider => SliderDyad::new(driven.0.0, driven.1.0.coords)
+            .and_then(|mut s| {
+                // A unit guide kept bit for bit (normalizing a unit vector
+                // again may move its last bit): the pickled design equals.
+                let u = driven.1.0.coords;
+                if (u.norm() - 1.0).abs() <= 4.0 * f64::EPSILON {
+                    s.guide = u;
+                }
+                task.slider_crank(&a, &s)
+            })
+            .map(DesignedLinkage::SliderCrank),
+    }
     .py()
+}
+
+/// The driven dyad of a designed linkage as two points (for pickling):
+/// `(C0, C1)`, or a slider's `(C1, u)`.
+fn driven_tuple(l: &DesignedLinkage) -> ((f64, f64), (f64, f64)) {
+    match l {
+        DesignedLinkage::FourBar(f) => dyad_tuple(&f.driven),
+        DesignedLinkage::SliderCrank(s) => {
+            (pt(s.driven.circle), (s.driven.guide.x, s.driven.guide.y))
+        }
+    }
+}
+
+/// A designed linkage for Python: a `SynthesizedFourBar` or a
+/// `SynthesizedSliderCrank`.
+fn linkage_py(py: Python<'_>, task: Task, l: &DesignedLinkage) -> PyResult<Py<PyAny>> {
+    Ok(match l {
+        DesignedLinkage::FourBar(f) => PySynthesizedFourBar::new(task, *f)
+            .into_pyobject(py)?
+            .into_any()
+            .unbind(),
+        DesignedLinkage::SliderCrank(s) => PySynthesizedSliderCrank::new(*s, task)
+            .into_pyobject(py)?
+            .into_any()
+            .unbind(),
+    })
 }
 
 /// The state readers a found linkage shares (`Design`, `NearMiss`): a
@@ -235,12 +299,20 @@ macro_rules! found_linkage_getters {
         #[pymethods]
         impl $cls {
             #[getter]
-            fn linkage(&self) -> PySynthesizedFourBar {
-                PySynthesizedFourBar::new(self.task, self.inner.linkage)
+            fn linkage(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                linkage_py(py, self.task, &self.inner.linkage)
             }
+            /// A four-bar's figures (None for a slider-crank: its
+            /// figures are the linkage's own fields).
             #[getter]
-            fn figures(&self) -> crate::linkage::PyLinkageFigures {
-                self.linkage().figures()
+            fn figures(&self) -> Option<crate::linkage::PyLinkageFigures> {
+                let f = self.inner.linkage.four_bar()?;
+                Some(PySynthesizedFourBar::new(self.task, *f).figures())
+            }
+            /// `"revolute"` (a four-bar) or `"slider"` (a slider-crank).
+            #[getter]
+            fn driven_kind(&self) -> &'static str {
+                self.inner.linkage.kind().as_str()
             }
             #[getter]
             fn size_ratio(&self) -> f64 {
@@ -298,12 +370,13 @@ impl PyDesign {
     /// The driving dyad's fixed pivot `A0` (its crank drives).
     #[getter]
     fn driving_pivot(&self) -> Xy {
-        pt(self.inner.linkage.driving.center)
+        pt(self.inner.linkage.driving().center)
     }
-    /// The driven dyad's fixed pivot `C0`.
+    /// The driven dyad's fixed pivot `C0` (None for a slider-crank,
+    /// whose guide needs no pivot).
     #[getter]
-    fn driven_pivot(&self) -> Xy {
-        pt(self.inner.linkage.driven.center)
+    fn driven_pivot(&self) -> Option<Xy> {
+        self.inner.linkage.four_bar().map(|f| pt(f.driven.center))
     }
     /// `"pivots"`, `"parameters"` or `"burmester"`: what `coarse` and
     /// `refined` are.
@@ -354,7 +427,13 @@ impl PyDesign {
         attached: (Option<Bound<'_, PyDrive>>, Option<Bound<'_, PyActuator>>),
     ) -> PyResult<Self> {
         let ((coarse, coarse_score), (drive, actuator)) = (coarse, attached);
-        let linkage = linkage_of(&task.inner, driving, driven)?;
+        let slider = kind.starts_with("slider");
+        let driven_kind = if slider {
+            DrivenKind::Slider
+        } else {
+            DrivenKind::Revolute
+        };
+        let linkage = linkage_of(&task.inner, driving, driven, driven_kind)?;
         let drive = drive.map(|d| d.get().clone());
         let strut = actuator.as_ref().map(|a| a.get().parts());
         Ok(PyDesign {
@@ -381,8 +460,8 @@ impl PyDesign {
         let (_, refined) = point_state(&d.refined);
         let args = (
             PyTask { inner: self.task },
-            dyad_tuple(&d.linkage.driving),
-            dyad_tuple(&d.linkage.driven),
+            dyad_tuple(d.linkage.driving()),
+            driven_tuple(&d.linkage),
             d.score,
             d.size_ratio,
             d.ranked_by.as_str(),
@@ -405,16 +484,27 @@ impl PyDesign {
         crate::display::repr_png(slf.as_any())
     }
     fn __repr__(&self) -> String {
-        let f = &self.inner.linkage.figures;
+        let l = &self.inner.linkage;
+        let a0 = l.driving().center;
+        let (what, driven) = match l {
+            DesignedLinkage::FourBar(f) => (
+                f.figures.grashof.to_string(),
+                format!("C0=({:.6}, {:.6})", f.driven.center.x, f.driven.center.y),
+            ),
+            DesignedLinkage::SliderCrank(s) => (
+                "slider-crank".to_owned(),
+                format!(
+                    "guide=({:.6}, {:.6}) along ({:.6}, {:.6})",
+                    s.driven.circle.x, s.driven.circle.y, s.driven.guide.x, s.driven.guide.y
+                ),
+            ),
+        };
         format!(
-            "<Design {} A0=({:.6}, {:.6}) C0=({:.6}, {:.6}) min_transmission_deg={:.3} \
+            "<Design {what} A0=({:.6}, {:.6}) {driven} min_transmission_deg={:.3} \
              size_ratio={:.3} score={:.6} by {}>",
-            f.grashof,
-            self.inner.linkage.driving.center.x,
-            self.inner.linkage.driving.center.y,
-            self.inner.linkage.driven.center.x,
-            self.inner.linkage.driven.center.y,
-            f.min_transmission.to_degrees(),
+            a0.x,
+            a0.y,
+            l.min_transmission().to_degrees(),
             self.inner.size_ratio,
             self.inner.score,
             self.inner.ranked_by.as_str()
@@ -450,6 +540,7 @@ impl PyNearMiss {
         self.inner.misses.iter().map(|l| l.as_str()).collect()
     }
     #[staticmethod]
+    #[pyo3(signature = (task, driving, driven, size_ratio, misses, shortfall, driven_kind = "revolute"))]
     fn _from_state(
         task: PyTask,
         driving: (PyPoint, PyPoint),
@@ -457,11 +548,13 @@ impl PyNearMiss {
         size_ratio: f64,
         misses: Vec<String>,
         shortfall: f64,
+        driven_kind: &str,
     ) -> PyResult<Self> {
+        let kind = DrivenKind::from_name(driven_kind).py()?;
         Ok(PyNearMiss {
             task: task.inner,
             inner: NearMiss {
-                linkage: linkage_of(&task.inner, driving, driven)?,
+                linkage: linkage_of(&task.inner, driving, driven, kind)?,
                 size_ratio,
                 misses: misses
                     .iter()
@@ -475,11 +568,12 @@ impl PyNearMiss {
         let m = &self.inner;
         let args = (
             PyTask { inner: self.task },
-            dyad_tuple(&m.linkage.driving),
-            dyad_tuple(&m.linkage.driven),
+            dyad_tuple(m.linkage.driving()),
+            driven_tuple(&m.linkage),
             m.size_ratio,
             self.misses(),
             m.shortfall,
+            m.linkage.kind().as_str(),
         );
         reduce_to::<PyNearMiss>(py, "_from_state", args)
     }
@@ -781,6 +875,7 @@ fn options(
     actuator_samples: Count,
     actuator_width: Real,
     min_gap: Real,
+    driven: &str,
 ) -> PyResult<DesignOptions> {
     let mut limits = limits.map(|l| l.inner).unwrap_or_default();
     let strut = StrutArgs {
@@ -811,6 +906,7 @@ fn options(
         coarse_pairs: coarse_pairs.0,
         starts: starts.0,
         max_iterations: max_iterations.0,
+        driven: DrivenKind::from_name(driven).py()?,
     })
 }
 
@@ -958,6 +1054,7 @@ macro_rules! design_keywords {
             actuator_samples: [Count] = [Count(64)],
             actuator_width: [Real] = [Real(0.0)],
             min_gap: [Real] = [Real(0.0)],
+            driven: [&str] = ["revolute"],
         }
     };
 }

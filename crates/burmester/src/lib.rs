@@ -139,6 +139,7 @@ pub use design::{
     Space,
 };
 pub use design::{PivotLinkage, SliderPivot};
+pub use design::{DesignedLinkage, DrivenKind};
 pub use engine::Control;
 pub use error::{AssemblyError, DegenerateError, DriveError, Error, InvalidInput, Result};
 pub use geom::{CircleOrLine, Conic, ConicKind, Grid, Line, PerPose, Pose, Similarity, Viewport};

@@ -441,7 +441,8 @@ def cmd_design(args: argparse.Namespace) -> int:
         report = burmester.design(task, space=spec.space, limits=spec.limits, rank_by=args.rank_by,
                                   top=args.top, client=client, progress=bar,
                                   input=strut.pop("input", "motor" if args.motor else None),
-                                  swing_margin_deg=margin, max_time_ratio=max_time_ratio, **strut)
+                                  swing_margin_deg=margin, max_time_ratio=max_time_ratio,
+                                  driven=_design_driven(args, spec), **strut)
     finally:
         if client is not None:
             client.close()
@@ -479,6 +480,13 @@ def cmd_design(args: argparse.Namespace) -> int:
               f"transmission >= {drive.min_transmission_deg:.1f} deg over a crank turn, time ratio "
               f"{drive.time_ratio:.3f}", file=said)
         return 0
+    if isinstance(sfb, burmester.SynthesizedSliderCrank):
+        _draw_slider_design(args, sfb, out, export, plot, spec.units,
+                            title=f"best design of {spec.source} ({report.rank_by})")
+        print(f"wrote {out}: the best design, a slider-crank, {report[0].size_ratio:.1f}x the task's size, "
+              f"transmission >= {sfb.min_transmission_deg or 0.0:.1f} deg, stroke "
+              f"{format_length(sfb.stroke_used or 0.0, spec.units)}", file=said)
+        return 0
     _draw_linkage(args, sfb, task, spec.units, out, export, plot, units,
                   title=f"best design of {spec.source} ({report.rank_by})")
     f = sfb.figures
@@ -487,6 +495,33 @@ def cmd_design(args: argparse.Namespace) -> int:
     print(f"wrote {out}: the best design, {f.grashof}, {report[0].size_ratio:.1f}x the task's size, "
           f"transmission >= {f.min_transmission_deg:.1f} deg: {lengths}", file=said)
     return 0
+
+
+def _design_driven(args: argparse.Namespace, spec: Any) -> Literal["revolute", "slider"]:
+    """The driven dyad's kind of ``design``: ``--driven``, else the task
+    file's ``[design] driven``, else ``"revolute"``."""
+    given = args.driven if args.driven is not None else getattr(spec, "design_driven", None)
+    return "slider" if given == "slider" else "revolute"
+
+
+def _draw_slider_design(args: argparse.Namespace, sc: burmester.SynthesizedSliderCrank, out: str,
+                        export: Optional[ModuleType], plot: Optional[ModuleType], task_units: Optional[str],
+                        title: Optional[str] = None) -> None:
+    """``design --driven slider -o``: the slider-crank exported (``export``;
+    at ``--travel`` positions too), animated through the poses (``.gif``,
+    ``.mp4``) or drawn at pose 1 (with ``title``)."""
+    if export is not None:
+        _write_cad(export.slider_crank, out, args.force, sc, out, travel_samples=args.travel or 0)
+        return
+    plot = _plot_module() if plot is None else plot
+    if out.lower().endswith(ANIMATION_TYPES):
+        _animated(out, args.force, lambda tmp: plot.animate_slider_crank(sc, tmp, frames=args.frames or 60,
+                                                                         fps=args.fps or 20, units=task_units))
+        return
+    ax = plot.slider_crank(sc, units=task_units)
+    if title is not None:
+        ax.set_title(title)
+    _save(ax.figure, out, _picture_dpi(args), args.force)
 
 
 def _design_strut(args: argparse.Namespace, spec_actuator: Any = None) -> Dict[str, Any]:

@@ -277,6 +277,11 @@ def _add_design(sub: _Commands) -> None:
     p.add_argument("--max-stroke-ratio", type=_finite, default=None, metavar="R",
                    help="with --input actuator: largest open over closed length (default: 1.8)")
     _strut_gap_args(p, "with --input actuator: ", "else 0: its center line", dest=None)
+    p.add_argument("--driven", choices=("revolute", "slider"), default=None,
+                   help="the driven dyad: revolute (a crank: four-bars) or slider (a pin on a straight guide "
+                   "fixed to the ground: slider-cranks, the guide and the stroke in the table); default: the "
+                   "task file's [design] driven, else revolute. A slider takes no motor, actuator, obstacles "
+                   "or envelope")
     _force_arg(p)
     p.set_defaults(func=cmd_design)
 

@@ -213,6 +213,78 @@ def _design_row(k: int, linkage: burmester.SynthesizedFourBar, size_ratio: float
             f"{f.link_ratio:.2f}", drive, last]
 
 
+#: The columns of a slider design's row (:func:`_slider_row`).
+_SLIDER_COLUMNS = [("#", "right"), ("A0 (x, y)", "right"), ("guide: C1 (x, y)", "right"),
+                   ("direction", "right"), ("size", "right"), ("crank", "right"), ("coupler", "right"),
+                   ("offset", "right"), ("stroke", "right"), ("mu min", "right"), ("ratio", "right"),
+                   ("drive", "left")]
+
+
+def _slider_row(k: int, sc: burmester.SynthesizedSliderCrank, size_ratio: float, last: str) -> List[str]:
+    """One row of a slider design: the crank pivot, the guide (the pin at
+    pose 1 and the guide's direction), size, crank, coupler, offset, stroke
+    used, transmission, link ratio, drive, and ``last``."""
+    lk = sc.linkage
+    mu = sc.min_transmission_deg
+    drive = f"{sc.direction} {sc.modes[0] or ''}".strip() if sc.branch_free else "branch defect"
+    ratio = max(lk.crank, lk.coupler) / min(lk.crank, lk.coupler)
+    stroke = sc.stroke_used
+    return [str(k), _fmt_point(sc.driving[0]), _fmt_point(sc.driven[0]),
+            f"({sc.driven[1][0]:.3f}, {sc.driven[1][1]:.3f})", _fmt_size(size_ratio),
+            f"{lk.crank:.3f}", f"{lk.coupler:.3f}", f"{lk.offset:.3f}",
+            f"{stroke:.3f}" if stroke is not None else "-", f"{mu:.1f}" if mu is not None else "-",
+            f"{ratio:.2f}", drive, last]
+
+
+def _slider_violations(sc: burmester.SynthesizedSliderCrank, limits: burmester.DesignLimits) -> List[str]:
+    """The limits a slider-crank misses, in words (the search's reading:
+    crank and coupler for the link ratio, crank, coupler and offset for the
+    link length)."""
+    lk = sc.linkage
+    bad = []
+    mu = sc.min_transmission_deg
+    if mu is not None and mu < limits.min_transmission_deg:
+        bad.append(f"transmission {mu:.1f} < {limits.min_transmission_deg:g} deg")
+    ratio = max(lk.crank, lk.coupler) / min(lk.crank, lk.coupler)
+    if ratio > limits.max_link_ratio:
+        bad.append(f"link ratio {ratio:.2f} > {limits.max_link_ratio:g}")
+    if sc.size_ratio > limits.max_size_ratio:
+        bad.append(f"size ratio {sc.size_ratio:.2f} > {limits.max_size_ratio:g}")
+    if max(lk.crank, lk.coupler, abs(lk.offset)) > limits.max_link_length:
+        bad.append(f"a link longer than {limits.max_link_length:g}")
+    return bad
+
+
+def slider_dict(sc: burmester.SynthesizedSliderCrank) -> Dict[str, Any]:
+    """A JSON-friendly dict of a designed slider-crank: its crank pivot,
+    guide (the pin at pose 1 and the direction), size, lengths, stroke,
+    transmission and drive."""
+    lk = sc.linkage
+    return {
+        "driving_center": list(sc.driving[0]),
+        "guide_point": list(sc.driven[0]),
+        "guide_direction": list(sc.driven[1]),
+        "size": sc.size,
+        "size_ratio": sc.size_ratio,
+        "crank": lk.crank,
+        "coupler": lk.coupler,
+        "offset": lk.offset,
+        "stroke_used": sc.stroke_used,
+        "input_full": lk.turns_fully,
+        "link_ratio": max(lk.crank, lk.coupler) / min(lk.crank, lk.coupler),
+        "min_transmission_deg": sc.min_transmission_deg,
+        "direction": sc.direction,
+        "modes": list(sc.modes),
+    }
+
+
+def _found_dict(linkage: Any, limits: burmester.DesignLimits) -> Dict[str, Any]:
+    """:func:`slider_dict` or the four-bar's ``linkage_dict``."""
+    if isinstance(linkage, burmester.SynthesizedSliderCrank):
+        return {"driven": "slider", **slider_dict(linkage), "violations": _slider_violations(linkage, limits)}
+    return pv.linkage_dict(linkage, limits)
+
+
 def design_table(spec: TaskSpec, report: burmester.DesignReport) -> str:
     """The text table of ``burmester design``: the task and ranking, the
     limits and the space every verdict was judged by, the designs (or the
@@ -226,8 +298,31 @@ def design_table(spec: TaskSpec, report: burmester.DesignReport) -> str:
     columns = [("#", "right"), ("A0 (x, y)", "right"), ("C0 (x, y)", "right"), ("size", "right"),
                ("ground", "right"), ("crank", "right"), ("coupler", "right"), ("rocker", "right"),
                ("Grashof type", "left"), ("mu min", "right"), ("ratio", "right"), ("drive", "left")]
-    if len(report):
-        rows = [_design_row(k, d.linkage, d.size_ratio, f"{d.score:.4f}") for k, d in enumerate(report, start=1)]
+    found = [d.linkage for d in report] + [m.linkage for m in report.near_misses]
+    sliders = any(isinstance(x, burmester.SynthesizedSliderCrank) for x in found)
+    if sliders:
+        columns = _SLIDER_COLUMNS
+
+    def row(k: int, linkage: Any, size_ratio: float, last: str) -> List[str]:
+        if isinstance(linkage, burmester.SynthesizedSliderCrank):
+            return _slider_row(k, linkage, size_ratio, last)
+        return _design_row(k, linkage, size_ratio, last)
+
+    if len(report) and sliders:
+        rows = [row(k, d.linkage, d.size_ratio, f"{d.score:.4f}") for k, d in enumerate(report, start=1)]
+        lines.append(table(columns + [("score", "right")], rows))
+        lines.append(
+            "Slider-cranks: A0 the crank's fixed pivot; the slider's pin runs on a straight guide fixed to "
+            "the ground, through C1 (the pin at pose 1) along the direction given (no pivot to place). "
+            "size: the links, the offset and the guide's run in task sizes. offset: the guide's distance "
+            "from A0. stroke: the slider's travel along the guide from the first pose to the last. mu "
+            "min: the smallest angle between coupler and the guide's normal over the travel (degrees). "
+            "ratio: the longer of crank and coupler over the shorter. Each meets the limits above, judged "
+            "exactly, refined from the best of a coarse search."
+        )
+    elif len(report):
+        rows = [_design_row(k, d.linkage, d.size_ratio, f"{d.score:.4f}")  # type: ignore[arg-type]
+                for k, d in enumerate(report, start=1)]
         lines.append(table(columns + [("score", "right")], rows))
         lines.append(
             "A0: the driving crank's fixed pivot, C0: the driven one's. size: the total length of the "
@@ -247,9 +342,11 @@ def design_table(spec: TaskSpec, report: burmester.DesignReport) -> str:
             lines.append("Nearest misses (a feasible motion, missing the limits by the least):")
             rows = []
             for k, m in enumerate(report.near_misses, start=1):
-                bad = pv.linkage_violations(m.linkage, report.limits, spec.units)
+                lk = m.linkage
+                bad = (_slider_violations(lk, report.limits) if isinstance(lk, burmester.SynthesizedSliderCrank)
+                       else pv.linkage_violations(lk, report.limits, spec.units))
                 bad += [w.replace("_", " ") for w in m.misses if w in ("pivot_region", "obstacles", "envelope")]
-                rows.append(_design_row(k, m.linkage, m.size_ratio, "; ".join(bad)))
+                rows.append(row(k, lk, m.size_ratio, "; ".join(bad)))
             lines.append(table(columns + [("misses", "left")], rows))
     return "\n".join(lines)
 
@@ -279,13 +376,13 @@ def design_document(spec: TaskSpec, report: burmester.DesignReport) -> Dict[str,
         "min_separation": report.min_separation,
         "designs": [
             {"score": d.score, "found_by": d.found_by, "coarse": d.coarse, "refined": d.refined,
-             "coarse_score": d.coarse_score, **pv.linkage_dict(d.linkage, lim)}
+             "coarse_score": d.coarse_score, **_found_dict(d.linkage, lim)}
             for d in report
         ],
         "rejections": dict(report.rejections),
         "census": report.census,
         "near_misses": [
-            {"misses": m.misses, "shortfall": m.shortfall, **pv.linkage_dict(m.linkage, lim)}
+            {"misses": m.misses, "shortfall": m.shortfall, **_found_dict(m.linkage, lim)}
             for m in report.near_misses
         ],
     }

@@ -204,3 +204,28 @@ pub(crate) fn moved_linkage(
         .unwrap();
     (moved, linkage)
 }
+
+/// Runs `f` with a cancel flag that a second thread sets `after` it
+/// starts, on a pool of two threads of its own (the global pool is shared
+/// with the other tests of a binary, whose long tasks would delay the
+/// answer): `f`'s answer and how long after the flag it came.
+pub(crate) fn cancelled_after<T: Send>(
+    after: std::time::Duration,
+    f: impl FnOnce(&core::sync::atomic::AtomicBool) -> T + Send,
+) -> (T, std::time::Duration) {
+    let stop = core::sync::atomic::AtomicBool::new(false);
+    std::thread::scope(|s| {
+        let flagged = s.spawn(|| {
+            std::thread::sleep(after);
+            stop.store(true, core::sync::atomic::Ordering::Relaxed);
+            std::time::Instant::now()
+        });
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .unwrap();
+        let out = pool.install(|| f(&stop));
+        let done = std::time::Instant::now();
+        (out, done - flagged.join().unwrap())
+    })
+}

@@ -81,5 +81,8 @@ pub use map::{MapContext, SolutionMap, Varying};
 pub use pairs::{Pair, PairContext, PairMap};
 pub use rank::{Pivot, PivotLinkage, RankBy, RankColumns, SliderPivot};
 pub use search::ActuatorSearch;
-pub use search::{Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, SearchPoint};
+pub use search::{
+    Design, DesignOptions, DesignPlan, DesignReport, DesignedLinkage, DrivenKind, Limit, NearMiss,
+    SearchPoint,
+};
 pub use space::{PivotRegion, Space};

@@ -89,6 +89,42 @@
 //! [`Actuator::clear`]) is attached ([`Design::actuator`]). A candidate
 //! with no such placement is passed over ([`DesignReport::unplaced`]).
 //!
+//! # A driven slider
+//!
+//! With [`DesignOptions::driven`] [`DrivenKind::Slider`] the designs are
+//! slider-cranks ([`DesignedLinkage::SliderCrank`]): a driving crank of the
+//! task driving a slider dyad of the task (its pin on a straight guide
+//! fixed to the ground, [`Task::slider_dyads`]), built and judged exactly
+//! by [`Task::slider_crank`] (branch: one assembly mode at every pose, no
+//! toggle between; order; the transmission angle between the coupler and
+//! the guide's normal over the travel; the link ratio of crank and
+//! coupler; the size with the stroke; `A0` in the pivot region, the guide
+//! needing no pivot). The limits read as for the slider solution map
+//! (the `map_slider` module of `design`): the links
+//! [`DesignLimits::max_link_length`] bounds are the crank, the coupler and
+//! the offset, and [`DesignLimits::min_grashof_margin`] bounds the
+//! distance from the crank's change points
+//! ([`SliderCrank::rotatability_margin`](crate::SliderCrank::rotatability_margin)).
+//!
+//! * **Three poses**: `A0` free in the plane, the slider's pin free on the
+//!   slider circle ([`Task::slider_circle`]): a coarse pass over
+//!   `coarse_driving` pivots along the search box's longer side times
+//!   `coarse_driven` pins along the circle (at its parameter, an angle on
+//!   a circle or the stereographic parameter on a line), each start
+//!   refined over `(A0, t)` by the same Nelder–Mead
+//!   ([`SearchPoint::SliderCircle`]).
+//! * **Four poses**: `coarse_pairs` dyads along the center-point curve
+//!   times the finitely many slider points, each start refined along the
+//!   curve parameter ([`SearchPoint::SliderPoint`]).
+//! * **Five poses**: every Burmester point times every slider Burmester
+//!   point. Four or five poses without a slider point are refused
+//!   ([`InvalidInput::NoSliderPoint`], saying why).
+//!
+//! The separation is measured between crank pivots and between the
+//! slider pins at pose 1 ([`DesignedLinkage::driven_point`]). A motor, a
+//! linear actuator, obstacles and an envelope are refused with a slider
+//! ([`InvalidInput::DrivenKind`]): their checks are a four-bar's.
+//!
 //! # When nothing fits
 //!
 //! The report has no designs, never an error and never a silent
@@ -115,14 +151,17 @@ use crate::engine::Control;
 use crate::error::{Error, InvalidInput, Result, count_in, in_range};
 use crate::geom::{Grid, Viewport};
 use crate::linkage::{Direction, LinkageFigures};
-use crate::synthesis::{Dyad, SynthesizedFourBar, Task};
+use crate::synthesis::{Dyad, DyadKind, Task};
 use crate::synthesis::{FivePositions, FourPositions};
 use crate::tolerance;
 
+mod linkage;
 mod motor;
 mod simplex;
+mod slider;
 mod strut;
 
+pub use linkage::{DesignedLinkage, DrivenKind};
 pub use strut::ActuatorSearch;
 
 #[cfg(test)]
@@ -172,6 +211,11 @@ pub struct DesignOptions {
     /// with it ([`Design::actuator`]; module docs, "With a linear
     /// actuator"); default `None`. Not with a motor.
     pub actuator: Option<ActuatorSearch>,
+    /// The driven dyad's kind: [`DrivenKind::Revolute`] (default) designs
+    /// four-bars, [`DrivenKind::Slider`] slider-cranks (module docs, "A
+    /// driven slider"; not with a motor, an actuator, obstacles or an
+    /// envelope).
+    pub driven: DrivenKind,
 }
 
 impl Default for DesignOptions {
@@ -189,6 +233,7 @@ impl Default for DesignOptions {
             max_iterations: 3000,
             motor: None,
             actuator: None,
+            driven: DrivenKind::Revolute,
         }
     }
 }
@@ -262,7 +307,8 @@ impl DesignOptions {
             )?;
             actuator.validate()?;
         }
-        self.space.validate(task, &self.limits)
+        self.space.validate(task, &self.limits)?;
+        slider::check_options(self)
     }
 
     /// The separation in the task's units.
@@ -313,16 +359,36 @@ pub enum SearchPoint {
         /// The driven dyad's.
         driven: usize,
     },
+    /// Three poses with a driven slider: the crank pivot and the slider
+    /// circle's parameter of the slider's pin (an angle on a circle, or
+    /// `t` of `q + 2 s tan(t) u` on a line; [`Task::slider_circle`]).
+    SliderCircle {
+        /// The driving pivot `A0`.
+        driving: Point2<f64>,
+        /// The slider circle's parameter of the pin.
+        slider: f64,
+    },
+    /// Four or five poses with a driven slider: the driving dyad's curve
+    /// parameter (four poses, [`FourPositions::dyad_at_parameter`]) or
+    /// Burmester point index (five poses, as a number), and the index of
+    /// the slider dyad ([`Task::slider_dyads`]).
+    SliderPoint {
+        /// The driving dyad's parameter or index.
+        driving: f64,
+        /// The slider dyad's index.
+        slider: usize,
+    },
 }
 
 /// One answer of the search.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Design {
-    /// The linkage: its driving dyad drives ([`SynthesizedFourBar::driving`]).
-    pub linkage: SynthesizedFourBar,
+    /// The linkage, of the kind searched for ([`DesignOptions::driven`]):
+    /// its driving dyad drives ([`DesignedLinkage::driving`]).
+    pub linkage: DesignedLinkage,
     /// Its score by the ranking ([`RankBy::score`] of its exact figures).
     pub score: f64,
-    /// Its size over the task's ([`SynthesizedFourBar::size`] over
+    /// Its size over the task's ([`DesignedLinkage::size`] over
     /// [`Task::span`]).
     pub size_ratio: f64,
     /// What ranked it.
@@ -419,7 +485,7 @@ impl Limit {
 #[derive(Debug, Clone, PartialEq)]
 pub struct NearMiss {
     /// The linkage.
-    pub linkage: SynthesizedFourBar,
+    pub linkage: DesignedLinkage,
     /// Its size over the task's.
     pub size_ratio: f64,
     /// The limits it misses.
@@ -527,14 +593,72 @@ fn grid_over(v: &Viewport, n: usize) -> Result<Grid> {
     Grid::new(*v, nx, ny)
 }
 
+/// The figures the exact judge reads: a four-bar's, or a slider-crank's
+/// (as the slider solution map reads them, `design::map_slider`).
+#[derive(Debug, Clone, Copy)]
+enum Figures {
+    FourBar(LinkageFigures),
+    Slider(slider::SliderFigures),
+}
+
+/// A field both kinds of figures have.
+macro_rules! either {
+    ($f:expr, $field:ident) => {
+        match $f {
+            Figures::FourBar(f) => f.$field,
+            Figures::Slider(f) => f.$field,
+        }
+    };
+}
+
+impl Figures {
+    fn branch_free(&self) -> bool {
+        match self {
+            Figures::FourBar(f) => f.branch_free(),
+            Figures::Slider(f) => f.branch_free,
+        }
+    }
+
+    /// A driving direction and one circuit.
+    fn ordered(&self) -> bool {
+        either!(self, direction) != Direction::None && either!(self, one_circuit)
+    }
+
+    fn min_transmission(&self) -> f64 {
+        either!(self, min_transmission)
+    }
+
+    fn link_ratio(&self) -> f64 {
+        either!(self, link_ratio)
+    }
+
+    fn input_full(&self) -> bool {
+        either!(self, input_full)
+    }
+
+    /// The distance from the change point: the four-bar's Grashof
+    /// margin, the slider-crank's rotatability margin.
+    fn margin(&self) -> f64 {
+        match self {
+            Figures::FourBar(f) => f.grashof_margin(),
+            Figures::Slider(f) => f.margin,
+        }
+    }
+
+    /// The longest link [`DesignLimits::max_link_length`] bounds.
+    fn longest(&self) -> f64 {
+        either!(self, lengths).iter().copied().fold(0.0, f64::max)
+    }
+}
+
 /// The verdict of the exact judge on one linkage: its dyads and figures
-/// (the linkage itself is built, by [`Task::four_bar`], only for the
-/// verdicts kept).
+/// (the linkage itself is built, by [`Task::four_bar`] or
+/// [`Task::slider_crank`], only for the verdicts kept).
 #[derive(Clone)]
 struct Verdict {
     driving: Dyad,
-    driven: Dyad,
-    figures: LinkageFigures,
+    driven: DyadKind,
+    figures: Figures,
     size_ratio: f64,
     fails: u16,
     shortfall: f64,
@@ -555,9 +679,19 @@ impl Verdict {
     }
 
     /// The linkage judged (`None` never, in fact: the judge gave no
-    /// verdict where [`Task::four_bar`] fails).
-    fn linkage(&self, task: &Task) -> Option<SynthesizedFourBar> {
-        task.four_bar(&self.driving, &self.driven).ok()
+    /// verdict where [`Task::four_bar`] or [`Task::slider_crank`] fails).
+    fn linkage(&self, task: &Task) -> Option<DesignedLinkage> {
+        match &self.driven {
+            DyadKind::Revolute(d) => task
+                .four_bar(&self.driving, d)
+                .ok()
+                .map(DesignedLinkage::FourBar),
+            DyadKind::Slider(s) => task
+                .slider_crank(&self.driving, s)
+                .ok()
+                .map(DesignedLinkage::SliderCrank),
+            DyadKind::Inverted(_) => None,
+        }
     }
 }
 
@@ -607,9 +741,7 @@ impl<'a> Exact<'a> {
         self.verdict(driving, driven, figures, size, all, min_margin)
     }
 
-    /// The verdict on the linkage of two dyads with figures `f` and size
-    /// `size` ([`SynthesizedFourBar::size`]), as
-    /// [`judge_with`](Self::judge_with).
+    /// [`verdict_of`](Self::verdict_of) for a four-bar.
     fn verdict(
         &self,
         driving: &Dyad,
@@ -619,10 +751,32 @@ impl<'a> Exact<'a> {
         all: bool,
         min_margin: f64,
     ) -> Option<Verdict> {
+        self.verdict_of(
+            driving,
+            DyadKind::Revolute(*driven),
+            Figures::FourBar(f),
+            size,
+            all,
+            min_margin,
+        )
+    }
+
+    /// The verdict on the linkage of two dyads with figures `f` and size
+    /// `size` ([`DesignedLinkage::size`]), as
+    /// [`judge_with`](Self::judge_with).
+    fn verdict_of(
+        &self,
+        driving: &Dyad,
+        driven: DyadKind,
+        f: Figures,
+        size: f64,
+        all: bool,
+        min_margin: f64,
+    ) -> Option<Verdict> {
         let size_ratio = size / self.span;
         let mut v = Verdict {
             driving: *driving,
-            driven: *driven,
+            driven,
             figures: f,
             size_ratio,
             fails: 0,
@@ -637,14 +791,14 @@ impl<'a> Exact<'a> {
         if !f.branch_free() {
             fail(&mut v, Limit::BranchDefect, f64::INFINITY);
         }
-        if f.direction == Direction::None || !f.one_circuit {
+        if !f.ordered() {
             fail(&mut v, Limit::Order, f64::INFINITY);
         }
         if v.fails != 0 && !all {
             return Some(v);
         }
         let lim = &self.limits;
-        let mu = f.min_transmission;
+        let mu = f.min_transmission();
         if !mu.is_nan() && mu < lim.min_transmission {
             fail(
                 &mut v,
@@ -652,22 +806,22 @@ impl<'a> Exact<'a> {
                 (lim.min_transmission - mu) / lim.min_transmission,
             );
         }
-        if f.link_ratio > lim.max_link_ratio {
+        if f.link_ratio() > lim.max_link_ratio {
             fail(
                 &mut v,
                 Limit::LinkRatio,
-                f.link_ratio / lim.max_link_ratio - 1.0,
+                f.link_ratio() / lim.max_link_ratio - 1.0,
             );
         }
         let input_ok = match lim.input {
             InputRequirement::Any => true,
-            InputRequirement::Crank => f.input_full,
-            InputRequirement::Rocker => !f.input_full,
+            InputRequirement::Crank => f.input_full(),
+            InputRequirement::Rocker => !f.input_full(),
         };
         if !input_ok {
             fail(&mut v, Limit::Input, 1.0);
         }
-        let margin = f.grashof_margin();
+        let margin = f.margin();
         if margin < min_margin {
             fail(
                 &mut v,
@@ -682,7 +836,7 @@ impl<'a> Exact<'a> {
                 size_ratio / lim.max_size_ratio - 1.0,
             );
         }
-        let longest = f.lengths.iter().copied().fold(0.0, f64::max);
+        let longest = f.longest();
         if longest > lim.max_link_length {
             fail(
                 &mut v,
@@ -690,11 +844,16 @@ impl<'a> Exact<'a> {
                 longest / lim.max_link_length - 1.0,
             );
         }
+        // A slider's guide is a fixed line: no pivot to place.
+        let driven_pivot = match &v.driven {
+            DyadKind::Revolute(d) => d.center,
+            _ => driving.center,
+        };
         let outside = self
             .region
             .distance_outside(driving.center)
-            .max(self.region.distance_outside(driven.center));
-        if !self.region.contains(driving.center) || !self.region.contains(driven.center) {
+            .max(self.region.distance_outside(driven_pivot));
+        if !self.region.contains(driving.center) || !self.region.contains(driven_pivot) {
             fail(&mut v, Limit::PivotRegion, outside / self.span);
         }
         // A linkage missing only the Grashof margin goes on to its raw
@@ -705,17 +864,20 @@ impl<'a> Exact<'a> {
         }
         // The motion's checks need a feasible motion (and the linkage).
         if v.motion_feasible() && self.prepared.checks_motion() {
+            // A slider design is refused with obstacles or an envelope
+            // (DesignOptions::validate): only a four-bar gets here.
             let linkage = v.linkage(self.task)?;
-            if !self.prepared.clearance_ok(&linkage, self.cancel) {
+            let four_bar = linkage.four_bar()?;
+            if !self.prepared.clearance_ok(four_bar, self.cancel) {
                 fail(&mut v, Limit::Obstacles, 1.0);
             }
-            if (v.fails == 0 || all) && !self.prepared.envelope_ok(&linkage, self.cancel) {
+            if (v.fails == 0 || all) && !self.prepared.envelope_ok(four_bar, self.cancel) {
                 fail(&mut v, Limit::Envelope, 1.0);
             }
         }
         v.raw = self
             .rank_by
-            .score(f.min_transmission, size_ratio, f.link_ratio);
+            .score(f.min_transmission(), size_ratio, f.link_ratio());
         if v.fails == 0 {
             v.score = v.raw;
         }
@@ -790,7 +952,7 @@ impl<F: Fn(&[f64], f64) -> Option<Verdict>> Objective<'_, F> {
             }
         }
         // Judged with a relaxed margin, acceptable only at the limits' own.
-        if v.figures.grashof_margin() < self.strict_margin {
+        if v.figures.margin() < self.strict_margin {
             return cost;
         }
         let mut best = self.best.borrow_mut();
@@ -946,10 +1108,16 @@ fn rounds<'a, F: Fn(&[f64], f64) -> Option<Verdict>>(
 
 /// The distance between two designs: the larger of their driving pivots'
 /// and driven pivots' distances.
-fn apart(a: &SynthesizedFourBar, b: &SynthesizedFourBar) -> f64 {
-    (a.driving.center - b.driving.center)
+fn apart(a: &DesignedLinkage, b: &DesignedLinkage) -> f64 {
+    (a.driving().center - b.driving().center)
         .norm()
-        .max((a.driven.center - b.driven.center).norm())
+        .max((a.driven_point() - b.driven_point()).norm())
+}
+
+/// The dyad of `task` whose center is `(x[0], x[1])` (a refinement's
+/// coordinates), if any.
+fn dyad_at(task: &Task, x: &[f64]) -> Option<Dyad> {
+    task.dyad_from_center(Point2::new(x[0], x[1])).ok()
 }
 
 /// A coarse start: where, its pivots, its coarse score and size ratio.
@@ -1053,6 +1221,9 @@ impl Task {
     /// ```
     pub fn design(&self, options: &DesignOptions, control: &Control<'_>) -> Result<DesignReport> {
         options.validate(self)?;
+        if options.driven == DrivenKind::Slider {
+            return self.design_slider(options, control);
+        }
         match self.len() {
             3 => {
                 let plan = self.plan(options)?;
@@ -1088,6 +1259,14 @@ impl Task {
             return Err(self.needs(3, "Task::design_plan"));
         }
         options.validate(self)?;
+        if options.driven == DrivenKind::Slider {
+            return Err(InvalidInput::DrivenKind {
+                what: "the pivot-pair atlas of Task::design_plan (a four-bar's coarse pass; \
+                       design with a driven slider in one call, Task::design)",
+                found: "slider",
+            }
+            .into());
+        }
         self.plan(options)
     }
 
@@ -1194,8 +1373,7 @@ impl Task {
             plan.driven.dy(),
         ];
         let eval = |x: &[f64], margin: f64| {
-            let a = self.dyad_from_center(Point2::new(x[0], x[1])).ok()?;
-            let c = self.dyad_from_center(Point2::new(x[2], x[3])).ok()?;
+            let (a, c) = (dyad_at(self, &x[..2])?, dyad_at(self, &x[2..])?);
             exact.judge_with(&a, &c, false, margin)
         };
         let refined = self.refine_starts(
@@ -1301,10 +1479,15 @@ impl Task {
                     .ok()
             })
             .collect();
-        let pairs: Vec<(Dyad, Dyad)> = driven
+        let pairs: Vec<(Dyad, DyadKind)> = driven
             .iter()
             .flatten()
-            .flat_map(|c| dyads.iter().flatten().map(move |a| (*a, *c)))
+            .flat_map(|c| {
+                dyads
+                    .iter()
+                    .flatten()
+                    .map(move |a| (*a, DyadKind::Revolute(*c)))
+            })
             .collect();
         self.census(exact, options, &pairs, report, control)
     }
@@ -1315,7 +1498,7 @@ impl Task {
         &self,
         exact: &Exact<'_>,
         options: &DesignOptions,
-        pairs: &[(Dyad, Dyad)],
+        pairs: &[(Dyad, DyadKind)],
         report: &mut DesignReport,
         control: &Control<'_>,
     ) -> Result<()> {
@@ -1330,7 +1513,7 @@ impl Task {
                     return (counts, judged, misses);
                 }
                 for (a, c) in chunk {
-                    let Some(v) = exact.judge(a, c, true) else {
+                    let Some(v) = exact.judge_kind(a, c, true) else {
                         continue;
                     };
                     judged += 1;
@@ -1479,7 +1662,7 @@ impl Task {
                 .flatten()
                 .map(|d| d.dyad())
                 .collect();
-            let pairs: Vec<(Dyad, Dyad)> = dyads
+            let pairs: Vec<(Dyad, DyadKind)> = dyads
                 .iter()
                 .enumerate()
                 .flat_map(|(i, a)| {
@@ -1487,7 +1670,7 @@ impl Task {
                         .iter()
                         .enumerate()
                         .filter(move |(j, _)| *j != i)
-                        .map(move |(_, c)| (*a, *c))
+                        .map(move |(_, c)| (*a, DyadKind::Revolute(*c)))
                 })
                 .collect();
             self.census(&exact, options, &pairs, &mut report, control)?;
@@ -1515,7 +1698,7 @@ impl Task {
                         total: points.len() * points.len().saturating_sub(1),
                     });
                 }
-                pairs.push((*a, *c));
+                pairs.push((*a, DyadKind::Revolute(*c)));
                 let Some(v) = exact.judge(a, c, false) else {
                     continue;
                 };

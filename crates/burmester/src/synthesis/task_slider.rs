@@ -309,7 +309,7 @@ impl Task {
 
     /// The slider circle of a task of three poses (`method` names the
     /// caller in the error).
-    fn slider_locus(&self, method: &'static str) -> Result<SliderLocus> {
+    pub(crate) fn slider_locus(&self, method: &'static str) -> Result<SliderLocus> {
         if self.len() != 3 {
             return Err(self.needs(3, method));
         }
@@ -321,7 +321,11 @@ impl Task {
     /// positions farthest apart; pointed toward the position farthest from
     /// the first. With the largest distance of a position from the guide.
     /// `None` when the positions all coincide (or are not finite).
-    fn guided(&self, circle: Point2<f64>, normal: Option<Vector2<f64>>) -> Option<SliderDyad> {
+    pub(crate) fn guided(
+        &self,
+        circle: Point2<f64>,
+        normal: Option<Vector2<f64>>,
+    ) -> Option<SliderDyad> {
         self.guided_off(circle, normal).map(|(s, _)| s)
     }
 

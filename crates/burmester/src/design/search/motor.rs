@@ -69,11 +69,15 @@ fn driven_designs(
 ) -> Result<(Vec<Design>, usize)> {
     let constraints = drive_constraints(options);
     attached_designs(all, sep, options.top, control, |d, part| {
-        if d.linkage.figures.input_full {
+        // A slider design is refused with a motor (DesignOptions::validate).
+        let Some(linkage) = d.linkage.four_bar() else {
+            return Ok(false);
+        };
+        if linkage.figures.input_full {
             return Ok(true);
         }
         match best_drive(
-            &d.linkage,
+            linkage,
             &options.limits,
             motor,
             &constraints,
@@ -157,7 +161,7 @@ mod tests {
             ..DesignOptions::default()
         };
         let all = refined(&options);
-        assert!(!all.is_empty() && all.iter().all(|d| !d.linkage.figures.input_full));
+        assert!(!all.is_empty() && all.iter().all(|d| !d.linkage.input_full()));
         let stop = AtomicBool::new(true);
         let control = Control::new().with_cancel(&stop);
         let r = driven_designs(all, 0.0, &options, &DriveOptions::default(), &control);

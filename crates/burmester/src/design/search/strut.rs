@@ -128,7 +128,10 @@ impl ActuatorSearch {
         options: &DesignOptions,
         control: &Control<'_>,
     ) -> Result<Option<Actuator>> {
-        let linkage = &d.linkage;
+        // A slider design is refused with an actuator (DesignOptions::validate).
+        let Some(linkage) = d.linkage.four_bar() else {
+            return Ok(None);
+        };
         let grid = grid_over(&self.view(linkage, options), self.samples)?;
         let constraints = options.space.constraints();
         let mut best: Option<Actuator> = None;

@@ -149,19 +149,32 @@ impl SliderLocus {
     /// the line at `q`, so that the samples crowd near the task and none is
     /// at infinity.
     pub(crate) fn samples(&self, n: usize, out: &mut Vec<Point2<f64>>) {
+        let line = self.is_line();
+        out.extend((0..n).filter_map(|j| {
+            let t = if line {
+                PI * (j as f64 + 0.5) / n as f64 - 0.5 * PI
+            } else {
+                2.0 * PI * j as f64 / n as f64
+            };
+            self.point_at(t)
+        }));
+    }
+
+    /// The point of the locus at parameter `t`, continuous in `t`: for a
+    /// circle the point at angle `t` counterclockwise from the point
+    /// nearest pose 1; for a line `q + 2 s tan(t) u` (`t` in `(-pi/2,
+    /// pi/2)`; module docs of [`samples`](Self::samples)). `None` for a
+    /// locus that is neither.
+    pub(crate) fn point_at(&self, t: f64) -> Option<Point2<f64>> {
         let gn = self.g.norm();
         if !(gn > 0.0) {
-            return;
+            return None;
         }
         let ghat = self.g / gn;
         if self.is_line() {
             let q = ghat * (-self.c / gn);
             let u = perp(ghat);
-            out.extend((0..n).map(|j| {
-                let psi = PI * (j as f64 + 0.5) / n as f64 - 0.5 * PI;
-                self.origin + (q + u * (2.0 * psi.tan())) * self.unit
-            }));
-            return;
+            return Some(self.origin + (q + u * (2.0 * t.tan())) * self.unit);
         }
         // The nearest point q0 = -s e0, e0 = sign(a) g/|g| the direction
         // from the center to pose 1, s = 2 c sign(a) / (|g| + 2 |a| r) its
@@ -170,13 +183,16 @@ impl SliderLocus {
         let q0 = ghat * (-2.0 * self.c / (gn + 2.0 * self.a.abs() * r));
         let e0 = ghat * self.a.signum();
         let t0 = perp(e0);
-        out.extend((0..n).map(|j| {
-            let phi = 2.0 * PI * j as f64 / n as f64;
-            let (s, c) = (0.5 * phi).sin_cos();
-            // cos(phi) - 1 = -2 sin^2(phi/2), sin(phi) = 2 sin cos.
-            let x = q0 + (e0 * (-2.0 * s * s) + t0 * (2.0 * s * c)) * r;
-            self.origin + x * self.unit
-        }));
+        let (s, c) = (0.5 * t).sin_cos();
+        // cos(t) - 1 = -2 sin^2(t/2), sin(t) = 2 sin cos.
+        let x = q0 + (e0 * (-2.0 * s * s) + t0 * (2.0 * s * c)) * r;
+        Some(self.origin + x * self.unit)
+    }
+
+    /// Whether the locus is a line (its parameter then runs over
+    /// `(-pi/2, pi/2)`, else over a full turn).
+    pub(crate) fn line(&self) -> bool {
+        self.is_line()
     }
 }
 
