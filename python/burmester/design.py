@@ -150,10 +150,12 @@ def design(
     poses the center-point curve (``coarse_pairs``) times the slider points;
     five poses the Burmester points times the slider Burmester points (a
     task without slider points raises
-    :class:`burmester.InvalidInputError`, saying why). A motor, an actuator,
-    obstacles and an envelope are refused with a slider (their checks are a
-    four-bar's), and the search runs in this process (``client`` is not
-    used).
+    :class:`burmester.InvalidInputError`, saying why). The space's
+    obstacles and envelope are checked over the slider-crank's travel (the
+    crank and the coupler as capsules of the links' width; the block is the
+    pin at the coupler's end). A motor and an actuator are refused with a
+    slider (they are searched on a four-bar), and the search runs in this
+    process (``client`` is not used).
     """
     kw: Dict[str, Any] = dict(space=space, limits=limits, rank_by=rank_by, top=top, min_separation=min_separation,
               coarse_driven=coarse_driven, coarse_driving=coarse_driving, coarse_pairs=coarse_pairs,

@@ -6,6 +6,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 
 import pytest
@@ -45,13 +46,26 @@ def circumcenter(a, b, c):
     return (a[0] + (vy * uu - uy * vv) / d, a[1] + (ux * vv - vx * uu) / d)
 
 
+#: How long a child of :func:`interrupt_child` may take, beyond its wait
+#: and its timeout, before the watchdog kills it (a loaded machine starts
+#: an interpreter and imports burmester in seconds, not minutes).
+CHILD_WATCHDOG_S = 180.0
+
+
 def interrupt_child(child, *args, after=0.3, timeout=60, ready=()):
     """Run ``python -c child *args`` here, wait for its line ``started``
     (then for each line of ``ready`` in turn), send it SIGINT ``after``
     seconds later and read the line it reports: (that line as JSON,
-    seconds from the signal to the line, return code, stderr)."""
+    seconds from the signal to the line, return code, stderr). A child not done
+    ``CHILD_WATCHDOG_S + after + timeout`` seconds after its start (one that
+    ignores SIGINT, say) is killed and the test fails: it never hangs the
+    suite."""
     p = subprocess.Popen([sys.executable, "-c", child, *args], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True, cwd=os.path.dirname(__file__))
+    # The reads below block: a watchdog kills a child that stops answering,
+    # which ends them with an empty line.
+    watchdog = threading.Timer(CHILD_WATCHDOG_S + after + timeout, p.kill)
+    watchdog.start()
     try:
         assert p.stdout.readline().strip() == "started", p.stderr.read()
         for expected in ready:
@@ -63,8 +77,10 @@ def interrupt_child(child, *args, after=0.3, timeout=60, ready=()):
         latency = time.monotonic() - sent
         _, err = p.communicate(timeout=timeout)
     finally:
+        watchdog.cancel()
         if p.poll() is None:
             p.kill()
+    assert line, f"the child gave no line after SIGINT (killed by the watchdog?): {err}"
     return json.loads(line), latency, p.returncode, err
 
 

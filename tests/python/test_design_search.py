@@ -234,7 +234,8 @@ def test_a_task_file_without_driven_and_with_a_space(tmp_path):
     from burmester import taskfile
 
     spec = taskfile.load(HOOD)
-    assert spec.driven_center is None and spec.space == Space(pivot_box=(-150, 50, -100, 0))
+    assert spec.driven_center is None
+    assert spec.space == Space(pivot_box=(-150, 50, -100, 0), link_width=10.0)
     assert spec.limits.max_size_ratio == 5.0
     again = taskfile.loads(taskfile.dumps(spec), "again")
     assert again.space == spec.space and again.limits == spec.limits and again.poses == spec.poses
@@ -245,7 +246,7 @@ def test_a_task_file_without_driven_and_with_a_space(tmp_path):
         (text.replace("pivot_x = [-150.0, 50.0]", "pivot_x = [50.0, -150.0]"), "space.pivot_x"),
         (text.replace("pivot_y = [-100.0, 0.0]", ""), "space.pivot_y"),
         (text + "pivot_polygon = [[0, 0], [1, 1], [1, 0], [0, 1]]\n", "[space]"),
-        (text.replace("[space]", "[space]\nlink_width = -1.0"), "space.link_width"),
+        (text.replace("link_width = 10.0", "link_width = -1.0"), "space.link_width"),
         (text.replace("[space]", "[space]\nwidth = 1.0"), "space.width"),
         (text.replace("max_size_ratio = 5.0", "max_size_ratio = 0.5"), "limits.max_size_ratio"),
     ]:

@@ -466,3 +466,115 @@ fn maxima_answer_a_cancel() {
         .unwrap_err();
     assert_eq!(e.cause(), "cancelled");
 }
+
+/// The distance from the segment `p q` to the convex polygon `poly`
+/// (0 where they meet), by hand: end points inside, edges crossing, else
+/// the least of the end-point-to-edge and vertex-to-segment distances.
+fn segment_polygon_distance(p: Point2<f64>, q: Point2<f64>, poly: &[Point2<f64>]) -> f64 {
+    let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
+    let point_seg = |x: Point2<f64>, a: Point2<f64>, b: Point2<f64>| {
+        let d = b - a;
+        let t = ((x - a).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
+        (x - (a + d * t)).norm()
+    };
+    let n = poly.len();
+    let inside = |x: Point2<f64>| {
+        let s: Vec<f64> = (0..n)
+            .map(|i| cross(poly[(i + 1) % n] - poly[i], x - poly[i]))
+            .collect();
+        s.iter().all(|&v| v >= 0.0) || s.iter().all(|&v| v <= 0.0)
+    };
+    if inside(p) || inside(q) {
+        return 0.0;
+    }
+    let mut best = f64::INFINITY;
+    for i in 0..n {
+        let (a, b) = (poly[i], poly[(i + 1) % n]);
+        let d1 = cross(q - p, a - p);
+        let d2 = cross(q - p, b - p);
+        let d3 = cross(b - a, p - a);
+        let d4 = cross(b - a, q - a);
+        if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
+            return 0.0;
+        }
+        best = best
+            .min(point_seg(p, a, b))
+            .min(point_seg(q, a, b))
+            .min(point_seg(a, p, q));
+    }
+    best
+}
+
+/// The least distance of the crank `A0 A` and the coupler `A B` of `sc`
+/// from `poly` over its travel, driven densely by the solver here.
+fn dense_obstacle_distance(sc: &SynthesizedSliderCrank, poly: &[Point2<f64>]) -> f64 {
+    let mode = sc.modes[0].unwrap();
+    let open = mode == burmester::AssemblyMode::Open;
+    let l = &sc.linkage;
+    let a0 = l.crank_pivot();
+    let mut least = f64::INFINITY;
+    for th in sc.travel_angles(4001).unwrap() {
+        let (_, _, b, _) = own_solve(sc, th, open).expect("closes over the travel");
+        let a = a0 + Vector2::new(th.cos(), th.sin()) * l.crank();
+        least = least
+            .min(segment_polygon_distance(a0, a, poly))
+            .min(segment_polygon_distance(a, b, poly));
+    }
+    least
+}
+
+#[test]
+fn obstacles_are_checked_over_the_slider_cranks_travel() {
+    // The best slider-crank without obstacles; then a square across its
+    // coupler at pose 1: every design then clears the square by the links'
+    // half width over its whole travel (driven densely here), and the
+    // first answer, which the square strikes, is not among them.
+    let (t, _, _) = known_task(&[0.3, 1.2, 2.0]);
+    // Fewer, shorter refinements: each point of one checks the travel
+    // against the square (slow in an unoptimised test build).
+    let o = DesignOptions {
+        top: 2,
+        starts: 3,
+        max_iterations: 200,
+        ..slider(DesignOptions::default())
+    };
+    let free = t.design(&o, &Control::new()).unwrap();
+    let first = *free.designs[0].linkage.slider_crank().unwrap();
+    let mode = first.modes[0].unwrap();
+    let stops = first.travel_stops().unwrap();
+    let j = first.linkage.joints_at(stops[0], mode).unwrap();
+    let mid = Point2::from((j.crank_joint.coords + j.slider_joint.coords) * 0.5);
+    let h = 0.04 * t.span();
+    let square = vec![
+        mid + Vector2::new(-h, -h),
+        mid + Vector2::new(h, -h),
+        mid + Vector2::new(h, h),
+        mid + Vector2::new(-h, h),
+    ];
+    assert_eq!(dense_obstacle_distance(&first, &square), 0.0, "the premise");
+    let width = 0.02 * t.span();
+    let o2 = DesignOptions {
+        space: burmester::Space {
+            obstacles: vec![square.clone()],
+            link_width: width,
+            ..Default::default()
+        },
+        ..o
+    };
+    let r = t.design(&o2, &Control::new()).unwrap();
+    assert!(!r.designs.is_empty(), "{:?}", r.rejections);
+    for d in &r.designs {
+        check_design(&t, &o2.limits, d);
+        let sc = d.linkage.slider_crank().unwrap();
+        let gap = dense_obstacle_distance(sc, &square);
+        // The library's test is exact over the travel (a bound on the
+        // links' speed); the dense check here may miss the closest
+        // approach between its samples by a sliver.
+        assert!(gap >= 0.5 * width - 1e-6 * t.span(), "gap {gap}");
+        assert!(
+            (sc.driving.center - first.driving.center).norm() > 1e-6 * t.span()
+                || (sc.linkage.foot() - first.linkage.foot()).norm() > 1e-6 * t.span(),
+            "the struck slider-crank came back"
+        );
+    }
+}

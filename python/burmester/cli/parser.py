@@ -280,8 +280,8 @@ def _add_design(sub: _Commands) -> None:
     p.add_argument("--driven", choices=("revolute", "slider"), default=None,
                    help="the driven dyad: revolute (a crank: four-bars) or slider (a pin on a straight guide "
                    "fixed to the ground: slider-cranks, the guide and the stroke in the table); default: the "
-                   "task file's [design] driven, else revolute. A slider takes no motor, actuator, obstacles "
-                   "or envelope")
+                   "task file's [design] driven, else revolute. A slider takes no motor or actuator; "
+                   "the space's obstacles and envelope are checked over its travel")
     _force_arg(p)
     p.set_defaults(func=cmd_design)
 

@@ -574,10 +574,24 @@ impl Prepared {
         sc: &SynthesizedSliderCrank,
         cancel: Option<&AtomicBool>,
     ) -> bool {
-        if !self.checks_motion() {
+        self.slider_checked(sc, Checks::Both, cancel)
+    }
+
+    /// [`slider_motion_ok`](Self::slider_motion_ok) for the obstacles
+    /// alone, the envelope alone, or both (the one-call design counts a
+    /// candidate's failures by limit).
+    pub(crate) fn slider_checked(
+        &self,
+        sc: &SynthesizedSliderCrank,
+        checks: Checks,
+        cancel: Option<&AtomicBool>,
+    ) -> bool {
+        let obstacles = checks != Checks::Envelope && !self.obstacles.is_empty();
+        let envelope = checks != Checks::Obstacles && self.envelope.is_some();
+        if !(obstacles || envelope) {
             return true;
         }
-        if !self.in_envelope(sc.driving.center) {
+        if envelope && !self.in_envelope(sc.driving.center) {
             return false;
         }
         let l = &sc.linkage;
@@ -599,14 +613,16 @@ impl Prepared {
                 intersection_test(&identity, &cap, &identity, shape)
                     .map_or(true, |r| r.intersecting)
             };
-            let struck = [(a0, a), (a, b)]
-                .into_iter()
-                .any(|seg| self.obstacles.iter().any(|o| hits(seg, o)));
-            let escapes = self.envelope.as_ref().is_some_and(|(_, edges)| {
-                [(a0, a), (a, b), (a, p), (b, p)]
+            let struck = obstacles
+                && [(a0, a), (a, b)]
                     .into_iter()
-                    .any(|seg| edges.iter().any(|e| hits(seg, e)))
-            });
+                    .any(|seg| self.obstacles.iter().any(|o| hits(seg, o)));
+            let escapes = envelope
+                && self.envelope.as_ref().is_some_and(|(_, edges)| {
+                    [(a0, a), (a, b), (a, p), (b, p)]
+                        .into_iter()
+                        .any(|seg| edges.iter().any(|e| hits(seg, e)))
+                });
             Some(!struck && !escapes)
         };
         self.over_crank_travel(
@@ -617,6 +633,18 @@ impl Prepared {
             Go(cancel),
         )
     }
+}
+
+/// What a slider-crank's motion is checked against
+/// ([`Prepared::slider_checked`]).
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum Checks {
+    /// The obstacles only.
+    Obstacles,
+    /// The envelope only.
+    Envelope,
+    /// Both.
+    Both,
 }
 
 /// Whether a clearance test may go on: its computation's cancel flag is

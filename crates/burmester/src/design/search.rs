@@ -121,9 +121,14 @@
 //!   ([`InvalidInput::NoSliderPoint`], saying why).
 //!
 //! The separation is measured between crank pivots and between the
-//! slider pins at pose 1 ([`DesignedLinkage::driven_point`]). A motor, a
-//! linear actuator, obstacles and an envelope are refused with a slider
-//! ([`InvalidInput::DrivenKind`]): their checks are a four-bar's.
+//! slider pins at pose 1 ([`DesignedLinkage::driven_point`]). The space's
+//! obstacles and envelope are checked over the slider-crank's travel as
+//! a slider solution map checks them (the crank and the coupler, capsules
+//! of the links' width, against the obstacles; the crank and the coupler
+//! triangle inside the envelope; the block is the pin at the coupler's
+//! end, its path along the guide checked with the coupler). A motor and a
+//! linear actuator are refused with a slider
+//! ([`InvalidInput::DrivenKind`]): they are searched on a four-bar.
 //!
 //! # When nothing fits
 //!
@@ -142,7 +147,7 @@ use rayon::prelude::*;
 
 use crate::design::actuator::Actuator;
 use crate::design::atlas::check_scored;
-use crate::design::constraints::Prepared;
+use crate::design::constraints::{Checks, Prepared};
 use crate::design::drive::{Drive, DriveOptions};
 use crate::design::rank::tie_order;
 use crate::design::space::{PivotRegion, Space};
@@ -213,8 +218,7 @@ pub struct DesignOptions {
     pub actuator: Option<ActuatorSearch>,
     /// The driven dyad's kind: [`DrivenKind::Revolute`] (default) designs
     /// four-bars, [`DrivenKind::Slider`] slider-cranks (module docs, "A
-    /// driven slider"; not with a motor, an actuator, obstacles or an
-    /// envelope).
+    /// driven slider"; not with a motor or an actuator).
     pub driven: DrivenKind,
 }
 
@@ -864,15 +868,25 @@ impl<'a> Exact<'a> {
         }
         // The motion's checks need a feasible motion (and the linkage).
         if v.motion_feasible() && self.prepared.checks_motion() {
-            // A slider design is refused with obstacles or an envelope
-            // (DesignOptions::validate): only a four-bar gets here.
             let linkage = v.linkage(self.task)?;
-            let four_bar = linkage.four_bar()?;
-            if !self.prepared.clearance_ok(four_bar, self.cancel) {
+            let (p, cancel) = (&self.prepared, self.cancel);
+            let clear = match &linkage {
+                DesignedLinkage::FourBar(fb) => p.clearance_ok(fb, cancel),
+                DesignedLinkage::SliderCrank(sc) => p.slider_checked(sc, Checks::Obstacles, cancel),
+            };
+            if !clear {
                 fail(&mut v, Limit::Obstacles, 1.0);
             }
-            if (v.fails == 0 || all) && !self.prepared.envelope_ok(four_bar, self.cancel) {
-                fail(&mut v, Limit::Envelope, 1.0);
+            if v.fails == 0 || all {
+                let inside = match &linkage {
+                    DesignedLinkage::FourBar(fb) => p.envelope_ok(fb, cancel),
+                    DesignedLinkage::SliderCrank(sc) => {
+                        p.slider_checked(sc, Checks::Envelope, cancel)
+                    }
+                };
+                if !inside {
+                    fail(&mut v, Limit::Envelope, 1.0);
+                }
             }
         }
         v.raw = self

@@ -69,23 +69,20 @@ impl SliderFigures {
     }
 }
 
-/// Refuses what a slider design does not take: a motor, an actuator (the
-/// drive and the strut are searched on a four-bar), obstacles and an
-/// envelope (checked over a four-bar's travel).
+/// Refuses what a slider design does not take: a motor or an actuator
+/// (the drive and the strut are searched on a four-bar). Obstacles and an
+/// envelope are checked over the slider-crank's travel
+/// (`Prepared::slider_checked`).
 pub(super) fn check_options(options: &DesignOptions) -> Result<()> {
     if options.driven != DrivenKind::Slider {
         return Ok(());
     }
-    let c = options.space.constraints();
     let what = if options.motor.is_some() {
         "a design with a motor (the drive is searched on a four-bar's input; design without \
          the motor, or with driven=\"revolute\")"
     } else if options.actuator.is_some() {
         "a design with a linear actuator (placed on a four-bar; design without the actuator, \
          or with driven=\"revolute\")"
-    } else if !c.obstacles.is_empty() || c.envelope.is_some() {
-        "a design's obstacles and envelope (checked over a four-bar's travel; leave them out \
-         and check the slider-crank's motion yourself, or design with driven=\"revolute\")"
     } else {
         return Ok(());
     };
