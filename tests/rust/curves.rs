@@ -3301,6 +3301,16 @@ fn issue24_a_count_six_task_has_the_reference_s_points() {
     }
 }
 
+/// The merging five-pose task of issue 24 (fuzz/README): two real
+/// Burmester points 6.3e-5 apart and a complex pair (x, y, angle).
+const MERGING_POSES: [(f64, f64, f64); 5] = [
+    (0.2558734599461988, -3.8836557689762725, 2.1596700471934955),
+    (1.5138333624383653, -3.75371689369933, 2.404112512166885),
+    (2.6829498241096728, -3.150577449352146, 2.6017096951878065),
+    (2.979515336818101, -2.8520483505789826, 2.6618014815462043),
+    (3.9867349059821655, -2.2514849554763976, 2.8333410696332884),
+];
+
 /// Issue 24, the merging task that was refused (found by
 /// `issue24_burmester_points_near_merging_in_any_frame` with a random seed,
 /// fuzz/README.md): two real Burmester points `6.3e-5` apart (in a task of
@@ -3313,16 +3323,10 @@ fn issue24_a_count_six_task_has_the_reference_s_points() {
 /// the two points, in every frame (moved, turned, scaled, mirrored).
 #[test]
 fn issue24_a_double_root_that_is_two_real_points_gives_both() {
-    let poses: Vec<Pose> = [
-        (0.2558734599461988, -3.8836557689762725, 2.1596700471934955),
-        (1.5138333624383653, -3.75371689369933, 2.404112512166885),
-        (2.6829498241096728, -3.150577449352146, 2.6017096951878065),
-        (2.979515336818101, -2.8520483505789826, 2.6618014815462043),
-        (3.9867349059821655, -2.2514849554763976, 2.8333410696332884),
-    ]
-    .iter()
-    .map(|&(x, y, a)| Pose::new(x, y, a))
-    .collect();
+    let poses: Vec<Pose> = MERGING_POSES
+        .iter()
+        .map(|&(x, y, a)| Pose::new(x, y, a))
+        .collect();
     // mpmath, 50 digits (the reference's elimination).
     let reference = [
         Point2::new(-0.696_007_308_824_153_2, 2.669_388_663_365_832),
@@ -3385,16 +3389,10 @@ fn issue24_a_double_root_that_is_two_real_points_gives_both() {
 /// poses lie far from the origin, never two or four points.
 #[test]
 fn issue24_a_far_frame_that_makes_a_merging_pair_complex_is_refused_with_what_to_do() {
-    let poses: Vec<Pose> = [
-        (0.2558734599461988, -3.8836557689762725, 2.1596700471934955),
-        (1.5138333624383653, -3.75371689369933, 2.404112512166885),
-        (2.6829498241096728, -3.150577449352146, 2.6017096951878065),
-        (2.979515336818101, -2.8520483505789826, 2.6618014815462043),
-        (3.9867349059821655, -2.2514849554763976, 2.8333410696332884),
-    ]
-    .iter()
-    .map(|&(x, y, a)| Pose::new(x - 3e6, y + 2e6, a))
-    .collect();
+    let poses: Vec<Pose> = MERGING_POSES
+        .iter()
+        .map(|&(x, y, a)| Pose::new(x - 3e6, y + 2e6, a))
+        .collect();
     match FivePositions::new(&poses) {
         Err(e @ Error::Degenerate(DegenerateError::UnresolvedBurmesterPoints { .. })) => {
             assert!(e.to_string().contains("far from the origin"), "{e}");
