@@ -1228,8 +1228,10 @@ impl Task {
     /// let options = DesignOptions { starts: 4, ..DesignOptions::default() };
     /// let report = task.design(&options, &Control::new())?;
     /// let best = &report.designs[0];
-    /// assert!(best.linkage.figures.feasible());
-    /// assert!(best.linkage.figures.min_transmission >= report.limits.min_transmission);
+    /// // A four-bar: the driven dyad is a crank by default (DesignOptions::driven).
+    /// let four_bar = best.linkage.four_bar().expect("a four-bar");
+    /// assert!(four_bar.figures.feasible());
+    /// assert!(four_bar.figures.min_transmission >= report.limits.min_transmission);
     /// assert_eq!(best.ranked_by, RankBy::Balanced);
     /// # Ok::<(), burmester::Error>(())
     /// ```
