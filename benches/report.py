@@ -27,7 +27,7 @@ import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Optional
+from typing import Any, Callable, Optional
 
 ROOT = Path(__file__).resolve().parent.parent
 # Where cargo (run from ROOT) and criterion write: CARGO_TARGET_DIR if set.
@@ -50,10 +50,11 @@ class Ratio:
 @dataclass
 class Section:
     title: str
-    #: cargo bench target names to run for this section.
-    benches: list[str]
     #: criterion id prefixes whose figures are listed.
     prefixes: list[str]
+    #: cargo bench target names to run for this section (none: its figures
+    #: are Python timings or another section's bench's).
+    benches: list[str] = field(default_factory=list)
     ratios: list[Ratio] = field(default_factory=list)
     #: Python timings: id -> (setup, statement, elements); run with timeit.
     python: dict[str, tuple[str, str, int]] = field(default_factory=dict)
@@ -64,11 +65,16 @@ class Section:
     extra: Optional[Callable[[dict[str, "Figure"]], list[str]]] = None
 
 
+def bench_section(bench: str, title: str, **rest: Any) -> Section:
+    """The section of the cargo bench ``bench``: runs it and lists its
+    figures (the criterion ids under ``bench/``)."""
+    return Section(title=title, benches=[bench], prefixes=[f"{bench}/"], **rest)
+
+
 SECTIONS: list[Section] = [
-    Section(
-        title="Position analysis (`position`)",
-        benches=["position"],
-        prefixes=["position/"],
+    bench_section(
+        "position",
+        "Position analysis (`position`)",
         ratios=[
             Ratio(
                 "four-bar 7.0.5 `pos()` / burmester `solve`",
@@ -216,7 +222,6 @@ SECTIONS.append(
 SECTIONS.append(
     Section(
         title="Solution-space map (`branch_sweep/solution_map`)",
-        benches=[],
         prefixes=[
             "branch_sweep/solution_map/",
             "branch_sweep/solution_map_into/",
@@ -296,10 +301,9 @@ SECTIONS.append(
 
 
 SECTIONS.append(
-    Section(
-        title="From poses to the best linkage (`design`)",
-        benches=["design"],
-        prefixes=["design/"],
+    bench_section(
+        "design",
+        "From poses to the best linkage (`design`)",
         ratios=[
             Ratio(
                 "brute force over both pivots at 4x resolution / `Task::design` (the design's "
@@ -348,7 +352,6 @@ def numpy_closed_form(th, s=1.0):
 SECTIONS.append(
     Section(
         title="Batch position analysis (`FourBar.solve_many`)",
-        benches=[],
         prefixes=["python/solve_many/"],
         ratios=[
             Ratio(
@@ -497,10 +500,9 @@ def atlas_extrapolation(figures: dict[str, Figure]) -> list[str]:
 
 
 SECTIONS.append(
-    Section(
-        title="Four and five poses: curves and Burmester points (`burmester_points`)",
-        benches=["burmester_points"],
-        prefixes=["burmester_points/"],
+    bench_section(
+        "burmester_points",
+        "Four and five poses: curves and Burmester points (`burmester_points`)",
         ratios=[
             Ratio(
                 "grid search / Burmester points",
@@ -530,10 +532,9 @@ SECTIONS.append(
 )
 
 SECTIONS.append(
-    Section(
-        title="Four poses: the pair map (`pair_map`)",
-        benches=["pair_map"],
-        prefixes=["pair_map/"],
+    bench_section(
+        "pair_map",
+        "Four poses: the pair map (`pair_map`)",
         note=(
             "`Task::pair_map` on poses 1-4 of the worked example of the notes "
             "(`positions-4-5.md`, section 6): n x n pairs of dyads sampled along the "
@@ -548,7 +549,6 @@ SECTIONS.append(
 SECTIONS.append(
     Section(
         title="Pivot-pair atlas (`burmester.pivot_atlas`)",
-        benches=[],
         prefixes=["python/atlas/"],
         ratios=[
             Ratio(
@@ -612,10 +612,9 @@ SECTIONS.append(
 
 
 SECTIONS.append(
-    Section(
-        title="A motor for a swinging input: the drive map (`drive_map`)",
-        benches=["drive_map"],
-        prefixes=["drive_map/"],
+    bench_section(
+        "drive_map",
+        "A motor for a swinging input: the drive map (`drive_map`)",
         ratios=[
             Ratio(
                 "drive map / solution map per sample, 1024^2 each, into given columns, same run",
