@@ -1300,33 +1300,7 @@ pub fn solution_map(data: &[u8]) {
         Err(e) => return message(&e),
     };
     let limits = limits_of(&mut inp);
-    let polygon = |inp: &mut Input<'_>| -> Vec<Point2<f64>> {
-        let n = inp.count(0, 5);
-        (0..n)
-            .map(|_| {
-                if inp.byte() % 4 == 0 {
-                    inp.point()
-                } else {
-                    near(inp, &t)
-                }
-            })
-            .collect()
-    };
-    let constraints = Constraints {
-        base_plate: if inp.byte() % 2 == 0 {
-            Some(polygon(&mut inp))
-        } else {
-            None
-        },
-        obstacles: (0..inp.count(0, 2)).map(|_| polygon(&mut inp)).collect(),
-        link_width: if inp.byte() % 3 == 0 {
-            inp.num()
-        } else {
-            inp.nice().abs() * s * 0.1
-        },
-        travel_samples: inp.count(0, 16),
-        envelope: None,
-    };
+    let constraints = constraints_of(&mut inp, &|inp| near(inp, &t), s);
     let control = Control::new();
     match f.solution_map(&grid, &limits, &constraints, &control) {
         Err(e) => message(&e),
