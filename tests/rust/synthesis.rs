@@ -92,6 +92,27 @@ fn a_published_style_example_round_trips() {
     assert!((d[0] - d[1]).abs() < 1e-12 && (d[0] - d[2]).abs() < 1e-12);
 }
 
+/// `circle_points` and `center_points` are `circle_point` and
+/// `center_point` point by point, errors included, from any iterable.
+#[test]
+fn the_lazy_maps_are_the_point_maps() {
+    let t = Task::from_xya(&[[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap();
+    let [p12, _, _] = cr(&t).poles();
+    let centers = vec![Point2::new(1.0, -2.0), p12, Point2::new(-3.0, 4.5)];
+    let circles: Vec<_> = t.circle_points(centers.clone()).collect();
+    assert_eq!(circles.len(), 3);
+    for (c, y) in circles.iter().zip(&centers) {
+        assert_eq!(*c, t.circle_point(*y));
+    }
+    assert!(circles[1].is_err(), "a pole has no circle point");
+    let xs = [circles[0].clone().unwrap(), circles[2].clone().unwrap()];
+    let back: Vec<_> = t.center_points(xs.iter().copied()).collect();
+    assert_eq!(back, xs.map(|x| t.center_point(x)));
+    for (b, y) in back.into_iter().zip([centers[0], centers[2]]) {
+        assert!((b.unwrap() - y).norm() < 1e-12);
+    }
+}
+
 #[test]
 fn degenerate_places_are_typed() {
     let t = Task::from_xya(&[[0.0, 0.0, 0.0], [2.0, 0.5, 0.4], [3.0, 2.0, 1.1]]).unwrap();
