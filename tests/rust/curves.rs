@@ -158,6 +158,19 @@ fn made(p: &LinkParams, n: usize, min_rotation: f64) -> Option<Made> {
     })
 }
 
+/// [`made`] inside a proptest, at the tests' smallest rotation (0.05 rad):
+/// a linkage that makes no task rejects the case.
+fn made_case(p: &LinkParams, n: usize) -> Result<Made, TestCaseError> {
+    made(p, n, 0.05).ok_or_else(|| TestCaseError::reject("the linkage makes no task"))
+}
+
+/// [`made_case`] of four poses, with their curves.
+fn made_four(p: &LinkParams) -> Result<(Made, FourPositions), TestCaseError> {
+    let m = made_case(p, 4)?;
+    let four = FourPositions::new(&m.poses).unwrap();
+    Ok((m, four))
+}
+
 /// Random poses within 5 of the origin.
 fn random_poses(n: usize) -> impl Strategy<Value = Vec<Pose>> {
     prop::collection::vec((-5.0f64..5.0, -5.0f64..5.0, -PI..PI), n)
@@ -393,10 +406,7 @@ proptest! {
 
     #[test]
     fn a_linkage_s_dyads_lie_on_both_curves(p in link_params()) {
-        let m = made(&p, 4, 0.05);
-        prop_assume!(m.is_some());
-        let m = m.unwrap();
-        let four = FourPositions::new(&m.poses).unwrap();
+        let (m, four) = made_four(&p)?;
         let s = four.size();
         for d in [m.a, m.b] {
             // Ten times the tolerance: next to a near-singular point of a
@@ -431,9 +441,7 @@ proptest! {
 
     #[test]
     fn a_linkage_s_dyads_are_burmester_points(p in link_params()) {
-        let m = made(&p, 5, 0.05);
-        prop_assume!(m.is_some());
-        linkage_burmester_points(&m.unwrap())?;
+        linkage_burmester_points(&made_case(&p, 5)?)?;
     }
 
     #[test]
@@ -837,12 +845,7 @@ proptest! {
 
     #[test]
     fn the_branch_verdict_matches_driving_the_linkage(p in link_params()) {
-        let m = made(&p, 4, 0.05);
-        prop_assume!(m.is_some());
-        let m = m.unwrap();
-        let four = FourPositions::new(&m.poses).unwrap();
-        check_branch(&four, &m.b, 120)?;
-        check_branch(&four, &m.a, 120)?;
+        check_made_branch(&p)?;
     }
 
     #[test]
@@ -1011,9 +1014,7 @@ proptest! {
 
     #[test]
     fn curves_and_points_move_with_the_task(p in link_params(), t in similarity()) {
-        let m = made(&p, 5, 0.05);
-        prop_assume!(m.is_some());
-        let m = m.unwrap();
+        let m = made_case(&p, 5)?;
         let moved: Vec<Pose> = m.poses.iter().map(|q| t.pose(q)).collect();
         // Five poses: the Burmester points are the images.
         let (a, b) = (FivePositions::new(&m.poses).unwrap(), FivePositions::new(&moved).unwrap());
@@ -1312,7 +1313,7 @@ fn a_dyad_next_to_an_arc_end_is_not_judged_by_simulation() {
             0.0,
         ],
     };
-    check_made_branch(&p);
+    check_made_branch(&p).unwrap();
 }
 
 /// Found by a proptest at 6000 cases: the line meets the conic almost
@@ -1416,7 +1417,21 @@ fn arc_ends_of_a_task_with_clustered_poles_have_their_centers() {
         start: 0.0,
         steps: [0.6742261564121641, 0.0, 0.0, 0.7657387520633812, 0.0],
     };
-    check_made_branch(&p);
+    check_made_branch(&p).unwrap();
+}
+
+/// The five-pose task made from `p` and the same task moved by `t`, each
+/// with its four Burmester points (asserted).
+fn four_points_here_and_moved(
+    p: &LinkParams,
+    t: &Similarity,
+) -> (Made, FivePositions, FivePositions) {
+    let m = made(p, 5, 0.05).unwrap();
+    let a = FivePositions::new(&m.poses).unwrap();
+    let b = FivePositions::new(&moved(&m.poses, t)).unwrap();
+    assert_eq!(a.burmester_points().len(), 4);
+    assert_eq!(b.burmester_points().len(), 4);
+    (m, a, b)
 }
 
 /// Found by a proptest at 8000 cases: the same task scaled by 1e-3 found
@@ -1445,15 +1460,8 @@ fn a_scaled_task_keeps_its_far_burmester_point() {
             0.34616014599613404,
         ],
     };
-    let m = made(&p, 5, 0.05).unwrap();
     let t = Similarity::new(0.001, 1.071435421936352, Vector2::zeros()).unwrap();
-    let moved: Vec<Pose> = m.poses.iter().map(|q| t.pose(q)).collect();
-    let (a, b) = (
-        FivePositions::new(&m.poses).unwrap(),
-        FivePositions::new(&moved).unwrap(),
-    );
-    assert_eq!(a.burmester_points().len(), 4);
-    assert_eq!(b.burmester_points().len(), 4);
+    let (_, a, b) = four_points_here_and_moved(&p, &t);
     for q in a.burmester_points() {
         let want = t.point(q.center);
         assert!(
@@ -1498,11 +1506,10 @@ fn circle_points_tend_to_the_slider_s_along_a_slow_asymptote() {
 }
 
 /// [`check_branch`] for both dyads of the linkage `p` makes (four poses).
-fn check_made_branch(p: &LinkParams) {
-    let m = made(p, 4, 0.05).unwrap();
-    let four = FourPositions::new(&m.poses).unwrap();
-    check_branch(&four, &m.b, 120).unwrap();
-    check_branch(&four, &m.a, 120).unwrap();
+fn check_made_branch(p: &LinkParams) -> Result<(), TestCaseError> {
+    let (m, four) = made_four(p)?;
+    check_branch(&four, &m.b, 120)?;
+    check_branch(&four, &m.a, 120)
 }
 
 /// Found by a proptest at 3000 cases: a random driven dyad whose circle
@@ -1632,17 +1639,10 @@ fn a_far_burmester_point_moves_with_the_task() {
             0.6048728776739899,
         ],
     };
-    let m = made(&p, 5, 0.05).unwrap();
     let t = Similarity::new(0.001, 0.24495795146937174, Vector2::zeros())
         .unwrap()
         .mirrored();
-    let moved: Vec<Pose> = m.poses.iter().map(|q| t.pose(q)).collect();
-    let (a, b) = (
-        FivePositions::new(&m.poses).unwrap(),
-        FivePositions::new(&moved).unwrap(),
-    );
-    assert_eq!(a.burmester_points().len(), 4);
-    assert_eq!(b.burmester_points().len(), 4);
+    let (m, a, b) = four_points_here_and_moved(&p, &t);
     let mut far = 0;
     for q in a.burmester_points() {
         let want = t.point(q.center);
@@ -1943,9 +1943,7 @@ proptest! {
     fn issue24_free_arcs_match_curve_branch_in_any_view(
         p in link_params(), pick in 0usize..1000, v in views(), t in similarity(),
     ) {
-        let m = made(&p, 4, 0.05);
-        prop_assume!(m.is_some());
-        let m = m.unwrap();
+        let m = made_case(&p, 4)?;
         let moved: Vec<Pose> = m.poses.iter().map(|q| t.pose(q)).collect();
         check_arcs_in_views(&moved, pick, &v)?;
     }
@@ -2004,25 +2002,18 @@ fn check_own_points(four: &FourPositions, n: usize) -> Result<usize, TestCaseErr
         );
     }
     let view = view_around(four, 4.0);
-    for g in four
-        .center_point_curve()
-        .polylines(&view)
-        .into_iter()
-        .flatten()
-    {
-        count += 1;
-        let z = four.circle_point(g);
-        prop_assert!(!matches!(z, Err(Error::InvalidInput(_))), "{}: {:?}", g, z);
-    }
-    for c in four
-        .circle_point_curve()
-        .polylines(&view)
-        .into_iter()
-        .flatten()
-    {
-        count += 1;
-        let g = four.center_point(c);
-        prop_assert!(!matches!(g, Err(Error::InvalidInput(_))), "{}: {:?}", c, g);
+    // Each curve's traced vertices, mapped to the other curve.
+    type Map = fn(&FourPositions, Point2<f64>) -> burmester::Result<Point2<f64>>;
+    let curves: [(&Cubic, Map); 2] = [
+        (four.center_point_curve(), FourPositions::circle_point),
+        (four.circle_point_curve(), FourPositions::center_point),
+    ];
+    for (curve, map) in curves {
+        for v in curve.polylines(&view).into_iter().flatten() {
+            count += 1;
+            let w = map(four, v);
+            prop_assert!(!matches!(w, Err(Error::InvalidInput(_))), "{}: {:?}", v, w);
+        }
     }
     for p in four.poles().iter().filter_map(|p| p.point) {
         count += 1;
@@ -2547,9 +2538,7 @@ proptest! {
         a in -PI..PI,
         t in similarity(),
     ) {
-        let m = made(&p, 5, 0.05);
-        prop_assume!(m.is_some());
-        let m = m.unwrap();
+        let m = made_case(&p, 5)?;
         let tasks = near_merges(&m.poses, Vector2::new(a.cos(), a.sin()), 0.5);
         for poses in tasks {
             let r = FivePositions::new(&poses);
