@@ -46,8 +46,11 @@ struct Made {
     fourbar: FourBar,
 }
 
-/// The parameters of a random linkage and of the input angles.
-#[derive(Debug, Clone)]
+/// The parameters of a random linkage and of the input angles. The
+/// default is zero everywhere (input pivot at the origin, ground along +x,
+/// coupler point at the crank pin, no angle offset, a fully turning
+/// crank's first angle at 0): the found cases below name what differs.
+#[derive(Debug, Clone, Default)]
 struct LinkParams {
     lengths: [f64; 4],
     origin: (f64, f64),
@@ -1299,12 +1302,7 @@ fn a_dyad_next_to_an_arc_end_is_not_judged_by_simulation() {
             1.9015306081725472,
             2.927401672198105,
         ],
-        origin: (0.0, 0.0),
-        ground_angle: 0.0,
-        local: (0.0, 0.0),
-        offset: 0.0,
         mode: true,
-        start: 0.0,
         steps: [
             0.2442556875482497,
             0.9389568054421229,
@@ -1312,6 +1310,7 @@ fn a_dyad_next_to_an_arc_end_is_not_judged_by_simulation() {
             0.4180496178509726,
             0.0,
         ],
+        ..LinkParams::default()
     };
     check_made_branch(&p).unwrap();
 }
@@ -1376,9 +1375,7 @@ fn a_burmester_point_far_away_is_found() {
         origin: (1.8520941560589466, 2.371859856562954),
         ground_angle: -2.582971492668893,
         local: (0.0, -2.341572886232787),
-        offset: 0.0,
         mode: false,
-        start: 0.0,
         steps: [
             0.35408369617892926,
             0.654575652077299,
@@ -1386,6 +1383,7 @@ fn a_burmester_point_far_away_is_found() {
             0.04258549813998431,
             0.16097427992558913,
         ],
+        ..LinkParams::default()
     };
     let m = made(&p, 5, 0.05).unwrap();
     linkage_burmester_points(&m).unwrap();
@@ -1412,10 +1410,9 @@ fn arc_ends_of_a_task_with_clustered_poles_have_their_centers() {
         origin: (-2.6028813812279616, 0.0),
         ground_angle: 1.634484193703516,
         local: (-0.8738919061070446, 2.2882187084173116),
-        offset: 0.0,
         mode: false,
-        start: 0.0,
         steps: [0.6742261564121641, 0.0, 0.0, 0.7657387520633812, 0.0],
+        ..LinkParams::default()
     };
     check_made_branch(&p).unwrap();
 }
@@ -1451,7 +1448,6 @@ fn a_scaled_task_keeps_its_far_burmester_point() {
         local: (2.860326328990715, -0.5699760760505732),
         offset: 1.2337597139419272,
         mode: false,
-        start: 0.0,
         steps: [
             0.9197864874507639,
             0.12541726827279356,
@@ -1459,6 +1455,7 @@ fn a_scaled_task_keeps_its_far_burmester_point() {
             0.9904258295751533,
             0.34616014599613404,
         ],
+        ..LinkParams::default()
     };
     let t = Similarity::new(0.001, 1.071435421936352, Vector2::zeros()).unwrap();
     let (_, a, b) = four_points_here_and_moved(&p, &t);
@@ -1593,13 +1590,10 @@ fn a_kite_s_circle_point_is_near_a_nearly_singular_curve() {
             1.5487947772530977,
             3.6076089507115108,
         ],
-        origin: (0.0, 0.0),
-        ground_angle: 0.0,
         local: (0.0, -2.3823764193486823),
-        offset: 0.0,
         mode: false,
-        start: 0.0,
         steps: [0.9766049468817277, 0.0, 0.0, 0.0, 0.0],
+        ..LinkParams::default()
     };
     let m = made(&p, 4, 0.05).unwrap();
     let four = FourPositions::new(&m.poses).unwrap();
@@ -1625,12 +1619,7 @@ fn a_far_burmester_point_moves_with_the_task() {
             1.0508018189192656,
             2.2952575496547136,
         ],
-        origin: (0.0, 0.0),
-        ground_angle: 0.0,
-        local: (0.0, 0.0),
-        offset: 0.0,
         mode: false,
-        start: 0.0,
         steps: [
             0.5785779627324169,
             0.7046771697198466,
@@ -1638,6 +1627,7 @@ fn a_far_burmester_point_moves_with_the_task() {
             0.1682964988384916,
             0.6048728776739899,
         ],
+        ..LinkParams::default()
     };
     let t = Similarity::new(0.001, 0.24495795146937174, Vector2::zeros())
         .unwrap()
