@@ -522,6 +522,10 @@ fn bad_input_gives_typed_errors() {
     let none = Constraints::none();
     let new =
         |o: &ActuatorOptions, c: &Constraints| ActuatorContext::new(&sfb, q, &g, &limits, o, c);
+    // The default options and no constraints, for another linkage or point.
+    let plain = |s: &SynthesizedFourBar, p: P| {
+        ActuatorContext::new(s, p, &g, &limits, &ActuatorOptions::default(), &none)
+    };
     let bad = ActuatorOptions {
         max_stroke_ratio: 0.5,
         ..ActuatorOptions::default()
@@ -606,14 +610,7 @@ fn bad_input_gives_typed_errors() {
         matches!(e, Error::Degenerate(DegenerateError::ZeroLengthLink { .. })),
         "{e}"
     );
-    let nan = ActuatorContext::new(
-        &sfb,
-        P::new(f64::NAN, 0.0),
-        &g,
-        &limits,
-        &ActuatorOptions::default(),
-        &none,
-    );
+    let nan = plain(&sfb, P::new(f64::NAN, 0.0));
     assert!(matches!(
         nan,
         Err(Error::InvalidInput(InvalidInput::NotFinite { .. }))
@@ -629,15 +626,7 @@ fn bad_input_gives_typed_errors() {
     // An infeasible linkage: the four-bar's own verdict stands.
     let mut infeasible = sfb;
     infeasible.figures.one_circuit = false;
-    let e = ActuatorContext::new(
-        &infeasible,
-        q,
-        &g,
-        &limits,
-        &ActuatorOptions::default(),
-        &none,
-    )
-    .unwrap_err();
+    let e = plain(&infeasible, q).unwrap_err();
     assert_eq!(e, Error::Drive(DriveError::NoTravel));
     let map = ctx.map(&Control::new()).unwrap();
     assert!(matches!(
