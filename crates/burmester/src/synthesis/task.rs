@@ -483,18 +483,26 @@ impl Task {
     }
 
     /// [`circle_point`](Self::circle_point) for each of `centers`, lazily.
-    pub fn circle_points<'a, I: IntoIterator<Item = Point2<f64>, IntoIter: 'a>>(
+    pub fn circle_points<'a, I>(
         &'a self,
         centers: I,
-    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a {
+    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
+    where
+        I: IntoIterator<Item = Point2<f64>>,
+        I::IntoIter: 'a,
+    {
         centers.into_iter().map(move |p| self.circle_point(p))
     }
 
     /// [`center_point`](Self::center_point) for each of `circles`, lazily.
-    pub fn center_points<'a, I: IntoIterator<Item = Point2<f64>, IntoIter: 'a>>(
+    pub fn center_points<'a, I>(
         &'a self,
         circles: I,
-    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a {
+    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
+    where
+        I: IntoIterator<Item = Point2<f64>>,
+        I::IntoIter: 'a,
+    {
         circles.into_iter().map(move |p| self.center_point(p))
     }
 
