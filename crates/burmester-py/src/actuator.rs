@@ -14,7 +14,7 @@ use crate::conv::{Count, PyPoint, Real, pt};
 use crate::design::set_readonly;
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::geom::grid_alone;
+use crate::geom::{grid_alone, grid_map_getters};
 use crate::getters::getters;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
@@ -491,28 +491,14 @@ impl PyActuatorMap {
     }
 }
 
+grid_map_getters!(
+    PyActuatorMap,
+    burmester::design::ActuatorColumns,
+    [map.context.grid()]
+);
+
 #[pymethods]
 impl PyActuatorMap {
-    /// The names of the columns, in order.
-    #[classattr]
-    fn columns() -> Vec<&'static str> {
-        burmester::design::ActuatorColumns::NAMES.to_vec()
-    }
-    #[getter]
-    fn grid(&self) -> PyGrid {
-        PyGrid {
-            inner: *self.map.context.grid(),
-        }
-    }
-    #[getter]
-    fn extent(&self) -> (f64, f64, f64, f64) {
-        let v = self.map.context.grid().viewport();
-        (v.xmin, v.xmax, v.ymin, v.ymax)
-    }
-    #[getter]
-    fn shape(&self) -> (usize, usize) {
-        (self.map.context.grid().ny(), self.map.context.grid().nx())
-    }
     #[getter]
     fn linkage(&self) -> PySynthesizedFourBar {
         PySynthesizedFourBar::new(self.task, *self.map.context.linkage())

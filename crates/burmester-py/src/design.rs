@@ -520,6 +520,8 @@ macro_rules! py_map_class {
             }
         }
 
+        $crate::geom::grid_map_getters!($cls, burmester::design::Columns, [context.grid]);
+
         /// What every map with the solution map's columns offers Python
         /// (each map's own methods are in its module).
         #[pymethods]
@@ -528,26 +530,6 @@ macro_rules! py_map_class {
             #[classattr]
             fn grashof_names() -> Vec<&'static str> {
                 burmester::Grashof::ALL.iter().map(|g| g.as_str()).collect()
-            }
-            /// The names of the columns, in order.
-            #[classattr]
-            fn columns() -> Vec<&'static str> {
-                burmester::design::Columns::NAMES.to_vec()
-            }
-            #[getter]
-            fn grid(&self) -> $crate::geom::PyGrid {
-                $crate::geom::PyGrid {
-                    inner: self.context.grid,
-                }
-            }
-            #[getter]
-            fn extent(&self) -> (f64, f64, f64, f64) {
-                let v = self.context.grid.viewport();
-                (v.xmin, v.xmax, v.ymin, v.ymax)
-            }
-            #[getter]
-            fn shape(&self) -> (usize, usize) {
-                (self.context.grid.ny(), self.context.grid.nx())
             }
             #[getter]
             fn task(&self) -> $crate::classes::PyTask {

@@ -17,8 +17,8 @@ use crate::conv::{
 };
 use crate::design::{readonly, same_column, set_readonly};
 use crate::errors::IntoPy;
-use crate::geom::grid_alone;
 use crate::geom::{PyGrid, vec2};
+use crate::geom::{grid_alone, grid_map_getters};
 use crate::getters::getters;
 use crate::linkage::{PyFourBar, mode};
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
@@ -597,28 +597,14 @@ impl PyDriveMap {
     }
 }
 
+grid_map_getters!(
+    PyDriveMap,
+    burmester::design::DriveColumns,
+    [context.grid()]
+);
+
 #[pymethods]
 impl PyDriveMap {
-    /// The names of the columns, in order.
-    #[classattr]
-    fn columns() -> Vec<&'static str> {
-        burmester::design::DriveColumns::NAMES.to_vec()
-    }
-    #[getter]
-    fn grid(&self) -> PyGrid {
-        PyGrid {
-            inner: *self.context.grid(),
-        }
-    }
-    #[getter]
-    fn extent(&self) -> (f64, f64, f64, f64) {
-        let v = self.context.grid().viewport();
-        (v.xmin, v.xmax, v.ymin, v.ymax)
-    }
-    #[getter]
-    fn shape(&self) -> (usize, usize) {
-        (self.context.grid().ny(), self.context.grid().nx())
-    }
     #[getter]
     fn linkage(&self) -> PySynthesizedFourBar {
         PySynthesizedFourBar::new(self.task, *self.context.linkage())
