@@ -11,7 +11,7 @@ use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar};
 use crate::conv::{Count, PyPoint, Real, pt};
-use crate::design::set_readonly;
+use crate::design::{ranking_method, set_readonly};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::geom::{grid_alone, grid_map_getters};
@@ -470,12 +470,16 @@ impl SameBits for Vec<f32> {
 
 burmester::actuator_map_columns!(py_actuator_map);
 
+ranking_method!(PyActuatorMap, best_placements, ranked -> Vec<PyActuator>);
+
 impl PyActuatorMap {
     /// The `k` best placements at least `sep` apart by `by`.
     fn ranked(
         &self,
         py: Python<'_>,
-        (k, sep, by): (usize, Option<f64>, RankBy),
+        k: usize,
+        sep: Option<f64>,
+        by: RankBy,
     ) -> PyResult<Vec<PyActuator>> {
         let map = &self.map;
         let found = py.detach(|| map.best_placements(k, sep, by)).py()?;
@@ -540,20 +544,8 @@ impl PyActuatorMap {
         let a = self.map.context.placement_at(k).py()?;
         Ok(PyActuator::of(a, self.task, &self.map.context))
     }
-    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
-        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_placements(
-        &self,
-        py: Python<'_>,
-        k: Count,
-        min_separation: Option<Real>,
-        rank_by: &str,
-    ) -> PyResult<Vec<PyActuator>> {
-        let rank_by = rank_by.parse::<RankBy>().py()?;
-        self.ranked(py, (k.0, min_separation.map(|r| r.0), rank_by))
-    }
     fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyActuator>> {
-        self.ranked(py, (usize::MAX, Some(0.0), RankBy::Pareto))
+        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
     }
 
     /// Rebuilds a map from its state (for pickling): computed again.

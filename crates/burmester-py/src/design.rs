@@ -657,9 +657,15 @@ pub(crate) use ranked_getters;
 
 /// The `#[pymethods]` block of a ranking method `$name` of the map class
 /// `$cls` (`k=5, min_separation=None, rank_by='balanced'`), delegating to
-/// its `$ranked(py, k, min_separation, rank_by)`.
+/// its `$ranked(py, k, min_separation, rank_by)`, which returns a list
+/// (`-> $ret` where that is not a `PyList`).
 macro_rules! ranking_method {
     ($cls:ident, $name:ident, $ranked:ident) => {
+        $crate::design::ranking_method!(
+            $cls, $name, $ranked -> Bound<'py, pyo3::types::PyList>
+        );
+    };
+    ($cls:ident, $name:ident, $ranked:ident -> $ret:ty) => {
         #[pymethods]
         impl $cls {
             #[pyo3(signature = (k = $crate::conv::Count(5), min_separation = None, rank_by = "balanced"),
@@ -670,7 +676,7 @@ macro_rules! ranking_method {
                 k: $crate::conv::Count,
                 min_separation: Option<$crate::conv::Real>,
                 rank_by: &str,
-            ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+            ) -> PyResult<$ret> {
                 use $crate::errors::IntoPy;
                 let rank_by = rank_by.parse::<burmester::RankBy>().py()?;
                 self.$ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
