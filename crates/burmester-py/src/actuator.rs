@@ -11,10 +11,10 @@ use pyo3::types::{PyDict, PyTuple};
 
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar};
 use crate::conv::{Count, PyPoint, Real, pt};
-use crate::design::set_readonly;
+use crate::design::{ranking_method, set_readonly};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::geom::grid_alone;
+use crate::geom::{grid_alone, grid_map_getters};
 use crate::getters::getters;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
@@ -470,12 +470,16 @@ impl SameBits for Vec<f32> {
 
 burmester::actuator_map_columns!(py_actuator_map);
 
+ranking_method!(PyActuatorMap, best_placements, ranked -> Vec<PyActuator>);
+
 impl PyActuatorMap {
     /// The `k` best placements at least `sep` apart by `by`.
     fn ranked(
         &self,
         py: Python<'_>,
-        (k, sep, by): (usize, Option<f64>, RankBy),
+        k: usize,
+        sep: Option<f64>,
+        by: RankBy,
     ) -> PyResult<Vec<PyActuator>> {
         let map = &self.map;
         let found = py.detach(|| map.best_placements(k, sep, by)).py()?;
@@ -491,28 +495,14 @@ impl PyActuatorMap {
     }
 }
 
+grid_map_getters!(
+    PyActuatorMap,
+    burmester::design::ActuatorColumns,
+    [map.context.grid()]
+);
+
 #[pymethods]
 impl PyActuatorMap {
-    /// The names of the columns, in order.
-    #[classattr]
-    fn columns() -> Vec<&'static str> {
-        burmester::design::ActuatorColumns::NAMES.to_vec()
-    }
-    #[getter]
-    fn grid(&self) -> PyGrid {
-        PyGrid {
-            inner: *self.map.context.grid(),
-        }
-    }
-    #[getter]
-    fn extent(&self) -> (f64, f64, f64, f64) {
-        let v = self.map.context.grid().viewport();
-        (v.xmin, v.xmax, v.ymin, v.ymax)
-    }
-    #[getter]
-    fn shape(&self) -> (usize, usize) {
-        (self.map.context.grid().ny(), self.map.context.grid().nx())
-    }
     #[getter]
     fn linkage(&self) -> PySynthesizedFourBar {
         PySynthesizedFourBar::new(self.task, *self.map.context.linkage())
@@ -554,20 +544,8 @@ impl PyActuatorMap {
         let a = self.map.context.placement_at(k).py()?;
         Ok(PyActuator::of(a, self.task, &self.map.context))
     }
-    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
-        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_placements(
-        &self,
-        py: Python<'_>,
-        k: Count,
-        min_separation: Option<Real>,
-        rank_by: &str,
-    ) -> PyResult<Vec<PyActuator>> {
-        let rank_by = rank_by.parse::<RankBy>().py()?;
-        self.ranked(py, (k.0, min_separation.map(|r| r.0), rank_by))
-    }
     fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyActuator>> {
-        self.ranked(py, (usize::MAX, Some(0.0), RankBy::Pareto))
+        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
     }
 
     /// Rebuilds a map from its state (for pickling): computed again.

@@ -79,3 +79,9 @@ impl PartialEq for PySynthesizedFourBar {
 pub(crate) struct PyDesignLimits {
     pub(crate) inner: DesignLimits,
 }
+
+impl From<DesignLimits> for PyDesignLimits {
+    fn from(inner: DesignLimits) -> Self {
+        PyDesignLimits { inner }
+    }
+}

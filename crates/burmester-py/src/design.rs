@@ -520,6 +520,8 @@ macro_rules! py_map_class {
             }
         }
 
+        $crate::geom::grid_map_getters!($cls, burmester::design::Columns, [context.grid]);
+
         /// What every map with the solution map's columns offers Python
         /// (each map's own methods are in its module).
         #[pymethods]
@@ -528,26 +530,6 @@ macro_rules! py_map_class {
             #[classattr]
             fn grashof_names() -> Vec<&'static str> {
                 burmester::Grashof::ALL.iter().map(|g| g.as_str()).collect()
-            }
-            /// The names of the columns, in order.
-            #[classattr]
-            fn columns() -> Vec<&'static str> {
-                burmester::design::Columns::NAMES.to_vec()
-            }
-            #[getter]
-            fn grid(&self) -> $crate::geom::PyGrid {
-                $crate::geom::PyGrid {
-                    inner: self.context.grid,
-                }
-            }
-            #[getter]
-            fn extent(&self) -> (f64, f64, f64, f64) {
-                let v = self.context.grid.viewport();
-                (v.xmin, v.xmax, v.ymin, v.ymax)
-            }
-            #[getter]
-            fn shape(&self) -> (usize, usize) {
-                (self.context.grid.ny(), self.context.grid.nx())
             }
             #[getter]
             fn task(&self) -> $crate::classes::PyTask {
@@ -675,9 +657,15 @@ pub(crate) use ranked_getters;
 
 /// The `#[pymethods]` block of a ranking method `$name` of the map class
 /// `$cls` (`k=5, min_separation=None, rank_by='balanced'`), delegating to
-/// its `$ranked(py, k, min_separation, rank_by)`.
+/// its `$ranked(py, k, min_separation, rank_by)`, which returns a list
+/// (`-> $ret` where that is not a `PyList`).
 macro_rules! ranking_method {
     ($cls:ident, $name:ident, $ranked:ident) => {
+        $crate::design::ranking_method!(
+            $cls, $name, $ranked -> Bound<'py, pyo3::types::PyList>
+        );
+    };
+    ($cls:ident, $name:ident, $ranked:ident -> $ret:ty) => {
         #[pymethods]
         impl $cls {
             #[pyo3(signature = (k = $crate::conv::Count(5), min_separation = None, rank_by = "balanced"),
@@ -688,7 +676,7 @@ macro_rules! ranking_method {
                 k: $crate::conv::Count,
                 min_separation: Option<$crate::conv::Real>,
                 rank_by: &str,
-            ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+            ) -> PyResult<$ret> {
                 use $crate::errors::IntoPy;
                 let rank_by = rank_by.parse::<burmester::RankBy>().py()?;
                 self.$ranked(py, k.0, min_separation.map(|r| r.0), rank_by)

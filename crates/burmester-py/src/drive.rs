@@ -15,10 +15,10 @@ use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask};
 use crate::conv::{
     Arrays, Count, FloatArray, PyPoint, Real, empty, fill_arrays, pt, py_bool, write_points,
 };
-use crate::design::{readonly, same_column, set_readonly};
+use crate::design::{ranking_method, readonly, same_column, set_readonly};
 use crate::errors::IntoPy;
-use crate::geom::grid_alone;
 use crate::geom::{PyGrid, vec2};
+use crate::geom::{grid_alone, grid_map_getters};
 use crate::getters::getters;
 use crate::linkage::{PyFourBar, mode};
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
@@ -557,6 +557,8 @@ macro_rules! py_drive_map {
 
 burmester::drive_map_columns!(py_drive_map);
 
+ranking_method!(PyDriveMap, best_drives, ranked -> Vec<PyDrive>);
+
 impl PyDriveMap {
     /// The `k` best drives, reading the NumPy columns in place.
     fn ranked(
@@ -597,28 +599,14 @@ impl PyDriveMap {
     }
 }
 
+grid_map_getters!(
+    PyDriveMap,
+    burmester::design::DriveColumns,
+    [context.grid()]
+);
+
 #[pymethods]
 impl PyDriveMap {
-    /// The names of the columns, in order.
-    #[classattr]
-    fn columns() -> Vec<&'static str> {
-        burmester::design::DriveColumns::NAMES.to_vec()
-    }
-    #[getter]
-    fn grid(&self) -> PyGrid {
-        PyGrid {
-            inner: *self.context.grid(),
-        }
-    }
-    #[getter]
-    fn extent(&self) -> (f64, f64, f64, f64) {
-        let v = self.context.grid().viewport();
-        (v.xmin, v.xmax, v.ymin, v.ymax)
-    }
-    #[getter]
-    fn shape(&self) -> (usize, usize) {
-        (self.context.grid().ny(), self.context.grid().nx())
-    }
     #[getter]
     fn linkage(&self) -> PySynthesizedFourBar {
         PySynthesizedFourBar::new(self.task, *self.context.linkage())
@@ -658,17 +646,6 @@ impl PyDriveMap {
         let k = self.sample(j, i)?;
         let d = self.context.drive_at(k).py()?;
         Ok(PyDrive::of(d, self.task, &self.context))
-    }
-    #[pyo3(signature = (k = Count(5), min_separation = None, rank_by = "balanced"),
-        text_signature = "($self, /, k=5, min_separation=None, rank_by='balanced')")]
-    fn best_drives(
-        &self,
-        py: Python<'_>,
-        k: Count,
-        min_separation: Option<Real>,
-        rank_by: &str,
-    ) -> PyResult<Vec<PyDrive>> {
-        self.ranked(py, k.0, min_separation.map(|r| r.0), rank(rank_by)?)
     }
     fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyDrive>> {
         self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)

@@ -108,10 +108,52 @@ getters!(PyGrid, inner {
     fn f64: dx, dy;
 });
 
-fn extent(g: &Grid) -> (f64, f64, f64, f64) {
+/// `(xmin, xmax, ymin, ymax)` of a grid's view.
+pub(crate) fn extent(g: &Grid) -> (f64, f64, f64, f64) {
     let v = g.viewport();
     (v.xmin, v.xmax, v.ymin, v.ymax)
 }
+
+/// What every map over a grid of samples offers Python: `columns` (the
+/// names of `$columns`, in order), `grid`, `extent` and `shape`, of the
+/// map `$cls` whose grid is `self.<path>` (a `Grid` or a `&Grid`, such as
+/// `[context.grid()]`).
+macro_rules! grid_map_getters {
+    ($cls:ty, $columns:ty, [$($path:tt)*]) => {
+        impl $cls {
+            /// The grid of its samples.
+            fn samples_grid(&self) -> ::burmester::Grid {
+                ::burmester::Grid::clone(&self.$($path)*)
+            }
+        }
+
+        #[::pyo3::pymethods]
+        impl $cls {
+            /// The names of the columns, in order.
+            #[classattr]
+            fn columns() -> Vec<&'static str> {
+                <$columns>::NAMES.to_vec()
+            }
+            #[getter]
+            fn grid(&self) -> $crate::geom::PyGrid {
+                $crate::geom::PyGrid {
+                    inner: self.samples_grid(),
+                }
+            }
+            #[getter]
+            fn extent(&self) -> (f64, f64, f64, f64) {
+                $crate::geom::extent(&self.samples_grid())
+            }
+            #[getter]
+            fn shape(&self) -> (usize, usize) {
+                let g = self.samples_grid();
+                (g.ny(), g.nx())
+            }
+        }
+    };
+}
+
+pub(crate) use grid_map_getters;
 
 /// A grid from the leading positional arguments of a call: a `Grid`, its
 /// six numbers `xmin, xmax, ymin, ymax, nx, ny` as one tuple or list (as

@@ -11,12 +11,12 @@ use burmester::{
 };
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
+use pyo3::types::PyTuple;
 
 use crate::conv::{Arrays, FloatArray, PyPoint, Real, fill_arrays, pt, py_bool, write_points};
 use crate::errors::{IntoPy, invalid};
 use crate::getters::getters;
-use crate::pickle::{Reduced, reduce_to};
+use crate::pickle::{Reduced, new_by_name, reduce_to};
 
 /// Parses `"open"` / `"crossed"`.
 pub(crate) fn mode(s: &str) -> PyResult<AssemblyMode> {
@@ -89,6 +89,59 @@ pub(crate) fn coupler_path<'py>(
     })
 }
 
+/// `coupler_point` and `coupler_path` of the class `$cls` of a linkage
+/// driven by a crank angle whose coupler carries a point (a
+/// [`CouplerPath`] held in `inner`), by [`coupler_point`] and
+/// [`coupler_path`].
+macro_rules! coupler_methods {
+    ($cls:ty) => {
+        #[::pyo3::pymethods]
+        impl $cls {
+            #[pyo3(signature = (theta2, point, mode = "open"))]
+            fn coupler_point(
+                &self,
+                theta2: $crate::conv::Real,
+                point: $crate::conv::PyPoint,
+                mode: &str,
+            ) -> ::pyo3::PyResult<(f64, f64)> {
+                $crate::linkage::coupler_point(&self.inner, theta2, point, mode)
+            }
+
+            /// `(xs, ys, ok)` over the crank angles (NaN and False where the loop
+            /// does not close).
+            #[pyo3(signature = (point, theta2s, mode = "open"))]
+            fn coupler_path<'py>(
+                &self,
+                py: ::pyo3::Python<'py>,
+                point: $crate::conv::PyPoint,
+                theta2s: $crate::conv::FloatArray<'py>,
+                mode: &str,
+            ) -> ::pyo3::PyResult<$crate::conv::Arrays<'py>> {
+                $crate::linkage::coupler_path(&self.inner, py, point, theta2s, mode)
+            }
+        }
+    };
+}
+
+pub(crate) use coupler_methods;
+
+/// The repr of a solved position of a crank-driven linkage,
+/// `name(theta2=.., theta3=.., <along>=.., mode='..', toggle=..)`, with
+/// `along` the name and value of its output (`theta4`, `slider`, `slot`).
+pub(crate) fn configuration_repr(
+    name: &str,
+    [theta2, theta3]: [f64; 2],
+    (along, value): (&str, f64),
+    mode: AssemblyMode,
+    toggle: bool,
+) -> String {
+    format!(
+        "{name}(theta2={theta2:?}, theta3={theta3:?}, {along}={value:?}, mode='{}', toggle={})",
+        mode.as_str(),
+        py_bool(toggle)
+    )
+}
+
 /// A planar four-bar linkage.
 #[pyclass(frozen, name = "FourBar", module = "burmester")]
 #[derive(Clone)]
@@ -144,18 +197,6 @@ impl PyFourBar {
         )
         .map(Self::from)
         .py()
-    }
-
-    fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<((), Bound<'py, PyDict>)> {
-        let f = &self.inner;
-        let kw = PyDict::new(py);
-        kw.set_item("ground", f.ground())?;
-        kw.set_item("crank", f.crank())?;
-        kw.set_item("coupler", f.coupler())?;
-        kw.set_item("rocker", f.rocker())?;
-        kw.set_item("origin", pt(f.input_pivot()))?;
-        kw.set_item("ground_angle", f.ground_angle())?;
-        Ok(((), kw))
     }
 
     #[staticmethod]
@@ -251,22 +292,6 @@ impl PyFourBar {
         ))
     }
 
-    #[pyo3(signature = (theta2, point, mode = "open"))]
-    fn coupler_point(&self, theta2: Real, point: PyPoint, mode: &str) -> PyResult<(f64, f64)> {
-        coupler_point(&self.inner, theta2, point, mode)
-    }
-
-    #[pyo3(signature = (point, theta2s, mode = "open"))]
-    fn coupler_path<'py>(
-        &self,
-        py: Python<'py>,
-        point: PyPoint,
-        theta2s: FloatArray<'py>,
-        mode: &str,
-    ) -> PyResult<Arrays<'py>> {
-        coupler_path(&self.inner, py, point, theta2s, mode)
-    }
-
     /// A picture for Jupyter: PNG bytes drawn by `burmester._display`, or
     /// None without matplotlib.
     fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
@@ -296,6 +321,17 @@ impl PyFourBar {
     }
 }
 
+new_by_name!(PyFourBar, f => {
+    "ground": f.ground(),
+    "crank": f.crank(),
+    "coupler": f.coupler(),
+    "rocker": f.rocker(),
+    "origin": pt(f.input_pivot()),
+    "ground_angle": f.ground_angle(),
+});
+
+coupler_methods!(PyFourBar);
+
 getters!(PyFourBar, inner {
     fn f64: ground, crank, coupler, rocker, ground_angle, link_ratio, grashof_margin;
     fn (f64, f64) = pt: input_pivot, output_pivot;
@@ -316,13 +352,12 @@ pub struct PyConfiguration {
 impl PyConfiguration {
     fn __repr__(&self) -> String {
         let c = &self.inner;
-        format!(
-            "Configuration(theta2={:?}, theta3={:?}, theta4={:?}, mode='{}', toggle={})",
-            c.theta2,
-            c.theta3,
-            c.theta4,
-            c.mode.as_str(),
-            py_bool(c.toggle)
+        configuration_repr(
+            "Configuration",
+            [c.theta2, c.theta3],
+            ("theta4", c.theta4),
+            c.mode,
+            c.toggle,
         )
     }
 

@@ -19,3 +19,26 @@ pub(crate) fn reduce_to<'py, T: PyTypeInfo>(
     let args = args.into_pyobject(py).map_err(Into::into)?;
     Ok((f, args.into_bound()))
 }
+
+/// `__getnewargs_ex__` of `$cls`, a class built from its parts by name
+/// only: `((), {name: value})`, each value an expression of `$s` (the
+/// wrapped core value, `self.inner`).
+macro_rules! new_by_name {
+    ($cls:ty, $s:ident => { $($name:literal: $value:expr),* $(,)? }) => {
+        #[::pyo3::pymethods]
+        impl $cls {
+            fn __getnewargs_ex__<'py>(
+                &self,
+                py: ::pyo3::Python<'py>,
+            ) -> ::pyo3::PyResult<((), ::pyo3::Bound<'py, ::pyo3::types::PyDict>)> {
+                use ::pyo3::types::PyDictMethods;
+                let $s = &self.inner;
+                let kw = ::pyo3::types::PyDict::new(py);
+                $(kw.set_item($name, $value)?;)*
+                Ok(((), kw))
+            }
+        }
+    };
+}
+
+pub(crate) use new_by_name;

@@ -526,9 +526,9 @@ fn limit_of(name: &str) -> PyResult<Limit> {
 }
 
 /// A candidate that misses the limits by little (when nothing fits).
-#[pyclass(frozen, from_py_object, name = "NearMiss", module = "burmester")]
-#[derive(Clone)]
-pub struct PyNearMiss {
+#[pyclass(frozen, eq, from_py_object, name = "NearMiss", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub(crate) struct PyNearMiss {
     task: Task,
     inner: NearMiss,
 }
@@ -577,11 +577,6 @@ impl PyNearMiss {
         );
         reduce_to::<PyNearMiss>(py, "_from_state", args)
     }
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other
-            .cast::<PyNearMiss>()
-            .is_ok_and(|o| o.get().task == self.task && o.get().inner == self.inner)
-    }
     fn __repr__(&self) -> String {
         format!(
             "<NearMiss misses {} by {:.4} size_ratio={:.3}>",
@@ -598,9 +593,9 @@ getters!(PyNearMiss, inner {
 
 /// What `burmester.design` found: a sequence of `Design`s, best first, and
 /// what the search ran under.
-#[pyclass(frozen, sequence, name = "DesignReport", module = "burmester")]
-#[derive(Clone)]
-pub struct PyDesignReport {
+#[pyclass(frozen, eq, sequence, name = "DesignReport", module = "burmester")]
+#[derive(Clone, PartialEq)]
+pub(crate) struct PyDesignReport {
     task: Task,
     inner: DesignReport,
 }
@@ -641,12 +636,6 @@ impl PyDesignReport {
     #[getter]
     fn main_rejection(&self) -> Option<&'static str> {
         self.inner.main_rejection().map(|l| l.as_str())
-    }
-    #[getter]
-    fn limits(&self) -> PyDesignLimits {
-        PyDesignLimits {
-            inner: self.inner.limits,
-        }
     }
     #[getter]
     fn space(&self) -> PySpace {
@@ -825,11 +814,6 @@ impl PyDesignReport {
         );
         reduce_to::<PyDesignReport>(py, "_from_state", args)
     }
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other
-            .cast::<PyDesignReport>()
-            .is_ok_and(|o| o.get().task == self.task && o.get().inner == self.inner)
-    }
     fn __repr__(&self) -> String {
         match self.inner.designs.first() {
             Some(d) => format!(
@@ -848,6 +832,7 @@ impl PyDesignReport {
 }
 
 getters!(PyDesignReport, inner {
+    PyDesignLimits = PyDesignLimits::from: limits;
     usize: census, coarse_candidates, coarse_acceptable, evaluations;
     str: rank_by;
     f64: min_separation;

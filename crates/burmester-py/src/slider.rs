@@ -7,13 +7,12 @@ use burmester::{
 };
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
+use pyo3::types::PyTuple;
 
-use crate::classes::PyTask;
-use crate::conv::{Arrays, FloatArray, PyPoint, Real, pt};
-use crate::crank_synth::{configuration_methods, synthesized_crank};
+use crate::conv::{PyPoint, Real, pt};
+use crate::crank_synth::{crank_linkage, synthesized_crank};
 use crate::errors::IntoPy;
-use crate::linkage::{self, mode};
+use crate::linkage::mode;
 
 type Xy = (f64, f64);
 
@@ -21,66 +20,37 @@ fn xy(v: Vector2<f64>) -> Xy {
     (v.x, v.y)
 }
 
-/// A slider-crank (RRRP): crank about a fixed pivot, coupler, slider pin
-/// on a straight guide. What it derives without arguments is computed once
-/// and read as fields.
-#[pyclass(frozen, name = "SliderCrank", module = "burmester")]
-#[derive(Clone)]
-pub struct PySliderCrank {
-    inner: SliderCrank,
-    #[pyo3(get)]
-    crank: f64,
-    #[pyo3(get)]
-    coupler: f64,
-    #[pyo3(get)]
-    pivot: Xy,
-    #[pyo3(get)]
-    guide: Xy,
-    #[pyo3(get)]
-    guide_normal: Xy,
-    #[pyo3(get)]
-    foot: Xy,
-    #[pyo3(get)]
-    offset: f64,
-    #[pyo3(get)]
-    link_ratio: f64,
-    #[pyo3(get)]
-    turns_fully: bool,
-    /// `None` when the crank turns fully, else its `(start, end)` arcs.
-    #[pyo3(get)]
-    input_range: Option<Vec<Xy>>,
-    #[pyo3(get)]
-    dead_positions: Vec<f64>,
-    /// `[(theta2, slider, mode)]` where crank and coupler are collinear.
-    #[pyo3(get)]
-    collinear_positions: Vec<(f64, f64, &'static str)>,
-}
-
-impl From<SliderCrank> for PySliderCrank {
-    fn from(s: SliderCrank) -> Self {
-        let range = s.input_range();
-        let (arcs, n) = range.arcs_array();
-        PySliderCrank {
-            inner: s,
-            crank: s.crank(),
-            coupler: s.coupler(),
-            pivot: pt(s.crank_pivot()),
-            guide: xy(s.guide()),
-            guide_normal: xy(s.guide_normal()),
-            foot: pt(s.foot()),
-            offset: s.offset(),
-            link_ratio: s.link_ratio(),
-            turns_fully: range.is_full(),
-            input_range: (!range.is_full())
-                .then(|| arcs[..n].iter().map(|a| (a.start, a.end)).collect()),
-            dead_positions: range.dead_positions(),
-            collinear_positions: s
-                .collinear_positions()
-                .into_iter()
-                .map(|(p, m)| (p.theta2, p.slider, m.as_str()))
-                .collect(),
-        }
+crank_linkage! {
+    /// A slider-crank (RRRP): crank about a fixed pivot, coupler, slider pin
+    /// on a straight guide. What it derives without arguments is computed once
+    /// and read as fields.
+    pub struct PySliderCrank(SliderCrank, "SliderCrank");
+    fn from(s) {
+        #[pyo3(get)]
+        coupler: f64 = s.coupler(),
+        #[pyo3(get)]
+        guide: Xy = xy(s.guide()),
+        #[pyo3(get)]
+        guide_normal: Xy = xy(s.guide_normal()),
+        #[pyo3(get)]
+        foot: Xy = pt(s.foot()),
+        #[pyo3(get)]
+        link_ratio: f64 = s.link_ratio(),
+        /// `[(theta2, slider, mode)]` where crank and coupler are collinear.
+        #[pyo3(get)]
+        collinear_positions: Vec<(f64, f64, &'static str)> = s
+            .collinear_positions()
+            .into_iter()
+            .map(|(p, m)| (p.theta2, p.slider, m.as_str()))
+            .collect(),
     }
+    by name {
+        "coupler": s.coupler(),
+        "guide_point": pt(s.guide_as_given().0),
+        "guide": xy(s.guide_as_given().1),
+    }
+    /// One solved position of a slider-crank: its fields.
+    pub struct PySliderConfiguration(SliderConfiguration, "SliderConfiguration", slider);
 }
 
 #[pymethods]
@@ -110,18 +80,6 @@ impl PySliderCrank {
             .py()
     }
 
-    fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<((), Bound<'py, PyDict>)> {
-        let s = &self.inner;
-        let kw = PyDict::new(py);
-        kw.set_item("crank", s.crank())?;
-        kw.set_item("coupler", s.coupler())?;
-        let (point, direction) = s.guide_as_given();
-        kw.set_item("guide_point", pt(point))?;
-        kw.set_item("guide", xy(direction))?;
-        kw.set_item("pivot", pt(s.crank_pivot()))?;
-        Ok(((), kw))
-    }
-
     fn guide_point(&self, slider: Real) -> Xy {
         pt(self.inner.guide_point(slider.0))
     }
@@ -136,24 +94,6 @@ impl PySliderCrank {
     fn joints(&self, theta2: Real, mode: &str) -> PyResult<(Xy, Xy, Xy)> {
         let j = self.inner.joints_at(theta2.0, self::mode(mode)?).py()?;
         Ok((pt(j.crank_pivot), pt(j.crank_joint), pt(j.slider_joint)))
-    }
-
-    #[pyo3(signature = (theta2, point, mode = "open"))]
-    fn coupler_point(&self, theta2: Real, point: PyPoint, mode: &str) -> PyResult<Xy> {
-        linkage::coupler_point(&self.inner, theta2, point, mode)
-    }
-
-    /// `(xs, ys, ok)` over the crank angles (NaN and False where the loop
-    /// does not close).
-    #[pyo3(signature = (point, theta2s, mode = "open"))]
-    fn coupler_path<'py>(
-        &self,
-        py: Python<'py>,
-        point: PyPoint,
-        theta2s: FloatArray<'py>,
-        mode: &str,
-    ) -> PyResult<Arrays<'py>> {
-        linkage::coupler_path(&self.inner, py, point, theta2s, mode)
     }
 
     /// `((theta2, slider), (theta2, slider))`: the lowest and the highest
@@ -186,56 +126,7 @@ impl PySliderCrank {
             p.y
         )
     }
-
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other
-            .cast::<PySliderCrank>()
-            .is_ok_and(|o| o.get().inner == self.inner)
-    }
 }
-
-/// One solved position of a slider-crank: its fields.
-#[pyclass(frozen, name = "SliderConfiguration", module = "burmester")]
-#[derive(Clone)]
-pub struct PySliderConfiguration {
-    inner: SliderConfiguration,
-    /// The linkage it is a position of (for pickling).
-    linkage: SliderCrank,
-    #[pyo3(get)]
-    theta2: f64,
-    #[pyo3(get)]
-    theta3: f64,
-    #[pyo3(get)]
-    slider: f64,
-    #[pyo3(get)]
-    mode: &'static str,
-    #[pyo3(get)]
-    toggle: bool,
-    #[pyo3(get)]
-    transmission_angle: f64,
-}
-
-impl PySliderConfiguration {
-    fn new(c: SliderConfiguration, linkage: SliderCrank) -> Self {
-        PySliderConfiguration {
-            inner: c,
-            linkage,
-            theta2: c.theta2,
-            theta3: c.theta3,
-            slider: c.slider,
-            mode: c.mode.as_str(),
-            toggle: c.toggle,
-            transmission_angle: c.transmission_angle,
-        }
-    }
-}
-
-configuration_methods!(
-    PySliderConfiguration,
-    PySliderCrank,
-    "SliderConfiguration",
-    slider
-);
 
 synthesized_crank! {
     /// A slider-crank built from a driving crank and a driven slider of a
@@ -251,7 +142,16 @@ synthesized_crank! {
         #[pyo3(get)]
         slider_positions: Vec<f64> = s.slider_positions.to_vec(),
     }
-    reduce "slider_crank" with key(this) = (this.driving, this.driven);
+    reduce with key(this) = (this.driving, this.driven);
+    repr crank, coupler, offset;
+    /// The slider-crank of the driving crank `(A0, A1)` and the driven
+    /// slider `(C1, u)` (its pin at pose 1 and the guide's direction).
+    fn slider_crank(task, driving, driven) {
+        let d = Dyad::new(driving.0.0, driving.1.0);
+        let s = SliderDyad::new(driven.0.0, driven.1.0.coords).py()?;
+        let inner = task.slider_crank(&d, &s).py()?;
+        Ok(PySynthesizedSliderCrank::new(inner, task))
+    }
 }
 
 impl PySynthesizedSliderCrank {
@@ -263,41 +163,5 @@ impl PySynthesizedSliderCrank {
     /// Its size over its task's span.
     pub(crate) fn size_ratio_of(&self) -> f64 {
         self.size_ratio
-    }
-}
-
-#[pymethods]
-impl PySynthesizedSliderCrank {
-    fn __repr__(&self) -> String {
-        let l = &self.inner.linkage;
-        format!(
-            "<SynthesizedSliderCrank crank={:.6} coupler={:.6} offset={:.6} branch_free={} \
-             direction={}>",
-            l.crank(),
-            l.coupler(),
-            l.offset(),
-            if self.inner.is_branch_free() {
-                "True"
-            } else {
-                "False"
-            },
-            self.inner.direction
-        )
-    }
-}
-
-#[pymethods]
-impl PyTask {
-    /// The slider-crank of the driving crank `(A0, A1)` and the driven
-    /// slider `(C1, u)` (its pin at pose 1 and the guide's direction).
-    fn slider_crank(
-        &self,
-        driving: (PyPoint, PyPoint),
-        driven: (PyPoint, PyPoint),
-    ) -> PyResult<PySynthesizedSliderCrank> {
-        let d = Dyad::new(driving.0.0, driving.1.0);
-        let s = SliderDyad::new(driven.0.0, driven.1.0.coords).py()?;
-        let inner = self.inner.slider_crank(&d, &s).py()?;
-        Ok(PySynthesizedSliderCrank::new(inner, self.inner))
     }
 }
