@@ -159,3 +159,64 @@ if __name__ == "__main__":
             f"{mpmath.nstr(root, 6)} (first order {mpmath.nstr(first, 6)}), "
             f"one ulp of the task moves the curve there by {mpmath.nstr(cond, 6)}"
         )
+
+
+def _motion(poses):
+    """Per pose k (0-based, pose 1 first): the exact rotation ``(c, s)`` of
+    ``theta_k - theta_1`` (60 digits) and ``t_k = p_k - R_k p_1``, mpmath."""
+    x1, y1 = mpmath.mpf(poses[0][0]), mpmath.mpf(poses[0][1])
+    out = []
+    for px, py, a in poses:
+        d = mpmath.mpf(a) - mpmath.mpf(poses[0][2])
+        c, s = mpmath.cos(d), mpmath.sin(d)
+        out.append((c, s, mpmath.mpf(px) - (c * x1 - s * y1), mpmath.mpf(py) - (s * x1 + c * y1)))
+    return out
+
+
+def project(terms, point):
+    """The exact curve's point nearest ``point`` along its gradient line."""
+    px, py = mpmath.mpf(point[0]), mpmath.mpf(point[1])
+    f, gx, gy = _eval(terms, px, py)
+    g = mpmath.sqrt(gx * gx + gy * gy)
+    ux, uy = gx / g, gy / g
+    t = -f / g
+    for _ in range(200):
+        fv, hx, hy = _eval(terms, px + ux * t, py + uy * t)
+        step = fv / (hx * ux + hy * uy)
+        t -= step
+        if abs(step) <= mpmath.mpf(10) ** -55 * (1 + abs(t)):
+            break
+    return px + ux * t, py + uy * t
+
+
+def exact_circle_point(poses, gx, gy):
+    """The circle point of an exact center ``(gx, gy)`` on the exact
+    center-point curve: ``|D_1k(z) - G| = |z - G|`` for k = 2, 3, 4,
+    linear in ``z``; least squares of the three (consistent on the
+    curve)."""
+    rows = []
+    for c, s, tx, ty in _motion(poses)[1:]:
+        # |R z + t - G|^2 = |z - G|^2:  2 z . (R^T (t - G) + G) = |G|^2 - |t - G|^2
+        ux, uy = tx - gx, ty - gy
+        ax = c * ux + s * uy + gx
+        ay = -s * ux + c * uy + gy
+        b = (gx * gx + gy * gy - ux * ux - uy * uy) / 2
+        rows.append((ax, ay, b))
+    a = mpmath.matrix([[r[0], r[1]] for r in rows])
+    b = mpmath.matrix([r[2] for r in rows])
+    z = mpmath.lu_solve(a.T * a, a.T * b)
+    return z[0], z[1]
+
+
+def branch_signs(poses, c0, c1, a1):
+    """The exact branch signs ``cross(C'_k - C1, A1 - C1)`` with
+    ``C'_k = D_k1(C0)`` (Filemon's construction, ``C'_1 = C0``)."""
+    out = []
+    c0x, c0y = mpmath.mpf(c0[0]), mpmath.mpf(c0[1])
+    c1x, c1y = mpmath.mpf(c1[0]), mpmath.mpf(c1[1])
+    for c, s, tx, ty in _motion(poses):
+        wx, wy = c0x - tx, c0y - ty
+        kx, ky = c * wx + s * wy, -s * wx + c * wy
+        dx, dy = kx - c1x, ky - c1y
+        out.append(dx * (a1[1] - c1y) - dy * (a1[0] - c1x))
+    return out

@@ -3608,3 +3608,53 @@ fn issue24_traced_vertices_are_settled_on_the_curve() {
         eprintln!("case {k}: {count} vertices, worst first-order distance {worst:e}");
     }
 }
+
+/// Class B of the `curves` fuzz target's open findings: poses 2, 3 and 4
+/// at one position (within 4e-6 in a task of 6e4) put a line of centers on
+/// the center-point curve whose circle points all lie within 1e-5 of
+/// pose 1's reference point `z`. Along it the branch classes are decided by
+/// circle points 1e-11 task sizes from Filemon's lines, where no arc end is
+/// resolved (the arcs have none): the library labelled centers free or
+/// defective by the rounding of `circle_point`, and a free arc's chord
+/// passed a defective point. The exact reference (`fuzz/reference/
+/// open_curves.py`: the exact curve of the float task, the exact circle
+/// point of the nearest exact curve point, exact Filemon signs from the
+/// given driven dyad) puts the free stretch at `t` in `(3304, 2.42e6)`
+/// along the line; the library called `t` up to `3.4e6` free (`t = 3e6`:
+/// exact signs `+, +, +, -0.0063`, defective; at the fuzz input's point
+/// `t = 1.0678e7` the exact signs are `1.5e8, 0.040, 0.79, -0.025`, A1
+/// `6e-7` from line 4 against a product of `1.6e9`). A center whose circle
+/// point lies within the on-curve tolerance of a Filemon line is now a
+/// boundary: every point of the line is, the same in every view.
+#[test]
+fn issue24_a_line_of_centers_with_one_circle_point_is_a_boundary() {
+    let poses = [
+        Pose::new(80996.09375, 8.03125, -0.09438671875),
+        Pose::new(-3.90625e-6, -3.90625e-6, -3.90625e-12),
+        Pose::new(-3.90625e-12, -3.90625e-6, -0.38671875),
+        Pose::new(-3.90625e-6, -3.90625e-6, 0.03515625),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let driven = Dyad::new(
+        Point2::new(-4.958626232109964e-5, -6.873538012985847e-6),
+        Point2::new(40497.85717548162, 1916.6746797701899),
+    );
+    let arcs = four.filemon(&driven).unwrap();
+    let z = poses[0].position;
+    let p = poses[1].position;
+    let m = Point2::from((z.coords + p.coords) * 0.5);
+    let d = z - p;
+    let n = Vector2::new(-d.y, d.x) / d.norm();
+    for t in [
+        -2e7, -1e7, -5e6, 0.0, 4e5, 1e6, 2e6, 3e6, 3.4e6, 1.0678e7, 2e7,
+    ] {
+        let g = m + n * t;
+        let a1 = four.circle_point(g).unwrap();
+        assert!(
+            (a1 - z).norm() <= 1e-9 * four.size(),
+            "{t}: {a1} not at {z}"
+        );
+        let class = arcs.classify_center_point(g).unwrap();
+        assert_eq!(class, Branch::Boundary, "t = {t}: {g} (circle point {a1})");
+    }
+}
