@@ -220,38 +220,13 @@ impl FilemonArcs {
     }
 
     /// The branch class of a driving center point `A0` on the center-point
-    /// curve (through its circle point `A1`): a boundary where `A1` lies
-    /// within the on-curve tolerance of one of Filemon's lines
-    /// ([`crate::tolerance::ON_CURVE_TOLERANCE`] times the task size plus
-    /// `A1`'s distance from the task, the accuracy to which the library
-    /// knows a circle point and so the arc ends), else the class of `A1`.
-    ///
-    /// A center is not given its circle point exactly: it is solved from
-    /// the center. Where a whole stretch of the center-point curve has its
-    /// circle points within rounding of one point (three poses at one
-    /// position: a line of centers whose circle point is pose 1's
-    /// reference point), the stretch's classes are decided by circle points
-    /// `1e-11` task sizes from Filemon's lines, where no arc end is resolved;
-    /// they were labelled free or defective by that rounding (issue 24,
-    /// class B of the `curves` fuzz target).
+    /// curve (through its circle point).
     ///
     /// # Errors
     ///
     /// As [`FourPositions::circle_point`].
     pub fn classify_center_point(&self, a0: Point2<f64>) -> Result<Branch> {
-        let a1 = self.four.circle_point(a0)?;
-        let known = crate::tolerance::ON_CURVE_TOLERANCE
-            * (self.four.size() + (a1 - self.four.motion.origin).norm());
-        let signs = self.circle_signs(a1);
-        let dirs = self.lines.directions();
-        if signs
-            .iter()
-            .zip(dirs.iter())
-            .any(|(s, d)| s.abs() <= known * d.norm())
-        {
-            return Ok(Branch::Boundary);
-        }
-        Ok(self.classify_circle_point(a1))
+        Ok(self.classify_circle_point(self.four.circle_point(a0)?))
     }
 
     /// The branch-free arcs of the circle-point curve in view.
