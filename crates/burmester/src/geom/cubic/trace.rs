@@ -241,8 +241,170 @@ impl View {
 type Marked = (Vector2<f64>, Option<usize>);
 
 pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace {
-    let (trace, _) = trace_impl(cubic, viewport, tol, &[]);
+    let (mut trace, _) = trace_impl(cubic, viewport, tol, &[]);
+    let reach = SETTLE_REACH * trace.tolerance;
+    for c in &mut trace.components {
+        for l in &mut c.polylines {
+            let settled = settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach);
+            *l = settled.into_iter().map(|(p, _)| p).collect();
+        }
+        c.polylines.retain(|l| l.len() >= 2);
+    }
     trace
+}
+
+/// The most a traced vertex moves when it is settled onto the curve, in
+/// chord tolerances: the drawing stays within the tolerance of the curve.
+const SETTLE_REACH: f64 = 0.1;
+
+/// A polyline's vertices settled onto the curve ([`settle`]); marks stay
+/// as given. An inner vertex that no Newton correction within `reach`
+/// brings onto the curve (along the gradient, or across the polyline) is
+/// left out: its neighbours' chord stands for the curve there. That happens
+/// where the curve is traced as a line and a conic that its coefficients
+/// give only to `1e-9`: at their crossing the cubic's two branches pass
+/// each other a little apart and the conic's vertex lies in the gap (the
+/// exact curve `1.6e-3` away in a task of `7.7`, within the chord
+/// tolerance but beyond the curve's rounding there: `open_curves.py`).
+fn settle_polyline(
+    cubic: &Cubic,
+    line: impl Iterator<Item = (Point2<f64>, Option<usize>)>,
+    viewport: &Viewport,
+    reach: f64,
+) -> Vec<(Point2<f64>, Option<usize>)> {
+    let mut line: Vec<(Point2<f64>, Option<usize>)> = line.collect();
+    // A closed polyline (last point the first) is a cycle: every vertex is
+    // an inner one, and it is closed again after.
+    let closed = line.len() > 3 && line[0] == line[line.len() - 1];
+    if closed {
+        line.pop();
+    }
+    let n = line.len();
+    let mut out = Vec::with_capacity(n + 1);
+    for (i, &(p, mark)) in line.iter().enumerate() {
+        if mark.is_some() {
+            out.push((p, mark));
+            continue;
+        }
+        let inner = closed || (i > 0 && i + 1 < n);
+        let across = inner.then(|| {
+            let chord = line[(i + 1) % n].0 - line[(i + n - 1) % n].0;
+            Vector2::new(-chord.y, chord.x)
+        });
+        match settle(cubic, p, viewport, reach, across) {
+            Some(q) => out.push((q, None)),
+            None if !inner => out.push((p, None)),
+            None => {}
+        }
+    }
+    if closed && !out.is_empty() {
+        out.push(out[0]);
+    }
+    out
+}
+
+/// Whether the local point `v` is on the curve within the rounding of its
+/// evaluation (the rule of [`Cubic::is_on`] at a singular point).
+fn on_curve_local(cubic: &Cubic, v: Vector2<f64>) -> bool {
+    cubic.eval_local(v).abs() <= 64.0 * f64::EPSILON * cubic.magnitude_local(v)
+}
+
+/// A traced vertex settled onto the curve: Newton steps on the curve's own
+/// value (in its local frame), each kept only while it lowers `|f|` and
+/// the vertex stays within `reach` (plane units) of where it was and
+/// inside the viewport, as in [`Cubic::refine_on_line`]. A vertex on an
+/// edge of the viewport moves along that edge (a crossing stays one);
+/// elsewhere along the gradient, or else along `across` (the normal of the
+/// polyline there). `None` when the vertex ends off the curve (beyond the
+/// rounding of its value). The sampler's points are roots of the pencil's
+/// quadratic through a point that may lie far from them (a view thousands
+/// of task sizes wide), and a curve traced as a line and a conic is that
+/// product only to `1e-9` of its coefficients: both leave vertices well
+/// within the chord tolerance but farther from the curve than its
+/// rounding, which the four-pose maps refuse as off the curve (issue 24,
+/// class A; `fuzz/reference/open_curves.py` measures them against the exact
+/// curves).
+fn settle(
+    cubic: &Cubic,
+    p: Point2<f64>,
+    viewport: &Viewport,
+    reach: f64,
+    across: Option<Vector2<f64>>,
+) -> Option<Point2<f64>> {
+    let inside = |q: Point2<f64>| {
+        q.x >= viewport.xmin && q.x <= viewport.xmax && q.y >= viewport.ymin && q.y <= viewport.ymax
+    };
+    let v = cubic.local_of(p);
+    // Far points (evaluated scaled) and degenerate reaches are left as
+    // they are: no claim either way.
+    if !(v.iter().all(|c| c.is_finite())
+        && cubic.eval_local(v).is_finite()
+        && reach.is_finite()
+        && reach > 0.0)
+    {
+        return Some(p);
+    }
+    if on_curve_local(cubic, v) {
+        return Some(p);
+    }
+    let on_x_edge = p.y == viewport.ymin || p.y == viewport.ymax;
+    let on_y_edge = p.x == viewport.xmin || p.x == viewport.xmax;
+    if on_x_edge || on_y_edge {
+        if on_x_edge && on_y_edge {
+            return Some(p);
+        }
+        // Along the edge: the other coordinate stays the edge's, exactly.
+        let d = if on_x_edge {
+            Vector2::new(1.0, 0.0)
+        } else {
+            Vector2::new(0.0, 1.0)
+        };
+        let t = cubic.refine_on_line(v, d, 0.0);
+        let mut q = cubic.global_of(v + d * t);
+        if on_x_edge {
+            q.y = p.y;
+        } else {
+            q.x = p.x;
+        }
+        let closer = cubic.evaluate(q).abs() < cubic.evaluate(p).abs();
+        let q = if closer && inside(q) && (q - p).norm() <= reach {
+            q
+        } else {
+            p
+        };
+        return on_curve_local(cubic, cubic.local_of(q)).then_some(q);
+    }
+    let reach_local = reach / cubic.scale;
+    let mut x = v;
+    let mut f = cubic.eval_local(v);
+    for _ in 0..Cubic::REFINE_STEPS {
+        if f == 0.0 {
+            break;
+        }
+        let g = cubic.grad_local(x);
+        let g2 = g.norm_squared();
+        if !(g2 > 0.0) {
+            break;
+        }
+        let y = x - g * (f / g2);
+        if !(y.iter().all(|c| c.is_finite()) && (y - v).norm() <= reach_local) {
+            break;
+        }
+        let fy = cubic.eval_local(y);
+        if !(fy.abs() < f.abs() && inside(cubic.global_of(y))) {
+            break;
+        }
+        (x, f) = (y, fy);
+    }
+    if on_curve_local(cubic, x) {
+        return Some(cubic.global_of(x));
+    }
+    let d = across.filter(|d| d.norm() > 0.0)?;
+    let d = d / d.norm();
+    let t = cubic.refine_on_line(v, d, 0.0);
+    let y = v + d * t;
+    let q = cubic.global_of(y);
+    (t.abs() <= reach_local && inside(q) && on_curve_local(cubic, y)).then_some(q)
 }
 
 /// The polylines of [`trace`] with given points of the curve made
@@ -261,6 +423,7 @@ pub(super) fn trace_marked(
 ) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
     let local: Vec<Vector2<f64>> = marks.iter().map(|m| cubic.local_of(*m)).collect();
     let (trace, marked) = trace_impl(cubic, viewport, tol, &local);
+    let reach = SETTLE_REACH * trace.tolerance;
     let mut out: Vec<Vec<(Point2<f64>, Option<usize>)>> = match marked {
         Some(lines) => lines
             .into_iter()
@@ -309,7 +472,10 @@ pub(super) fn trace_marked(
             }
         }
     }
-    out
+    out.into_iter()
+        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach))
+        .filter(|l| l.len() >= 2)
+        .collect()
 }
 
 /// [`trace`], and with marks the polylines with the marks as vertices

@@ -1,0 +1,222 @@
+"""Exact distances of points from the Burmester curves of four float poses
+(issue 24, classes A and B of `open/curves`, curv33).
+
+The center-point curve is ``det [a_k(G) b_k(G)] = 0`` (k = 2, 3, 4) with
+the rows of tests/python/burmester_reference.py (``a_k(G) . z = b_k(G)``);
+the circle-point curve is the same with the roles swapped: a circle point
+``z`` (pose 1) is on a circle about ``G`` at every pose exactly when
+``((R_k - I) z + t_k) . G = (R_k z) . t_k + |t_k|^2 / 2`` for k = 2, 3, 4 are
+consistent. Both are expanded exactly in rational arithmetic (sympy) from
+the float task (the cosines and sines of the angle differences taken to 60
+digits, so the task is the float task to 1e-55); nothing of the library is
+used. A point's distance from the exact curve is found by Newton steps
+along the gradient in mpmath at 60 digits (the first-order distance
+``|f| / |grad f|`` at the point, and the distance to the root found).
+
+``condition`` measures how far the exact curve moves at a point when
+every coordinate and angle of the task is moved by one ulp (16 random sign
+patterns): the accuracy that the float task itself allows there.
+
+    python fuzz/reference/open_curves.py
+"""
+
+import os
+import random
+import sys
+
+import mpmath
+import sympy as sp
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "python"))
+from burmester_reference import _det3, _exact, _rat, _rows  # noqa: E402
+
+mpmath.mp.dps = 60
+
+
+def _circle_rows(poses, x, y):
+    """The rows ``(a_k, b_k)`` of the circle-point condition, linear in the
+    circle point ``z = (x, y)``: ``a_k(z) . G = b_k(z)``."""
+    p1 = (_exact(poses[0][0]), _exact(poses[0][1]))
+    rows = []
+    for px, py, a in poses[1:]:
+        d = mpmath.mpf(a) - mpmath.mpf(poses[0][2])
+        c, s = _rat(mpmath.cos(d)), _rat(mpmath.sin(d))
+        pk = (_exact(px), _exact(py))
+        tx = pk[0] - (c * p1[0] - s * p1[1])
+        ty = pk[1] - (s * p1[0] + c * p1[1])
+        rzx, rzy = c * x - s * y, s * x + c * y
+        ax = rzx - x + tx
+        ay = rzy - y + ty
+        b = rzx * tx + rzy * ty + (tx * tx + ty * ty) / 2
+        rows.append((ax, ay, b))
+    return rows
+
+
+def curve(poses, circle):
+    """The exact cubic as a list of ``((i, j), mpf coefficient)``."""
+    x, y = sp.symbols("x y")
+    r = (_circle_rows if circle else _rows)(poses, x, y)
+    f = sp.Poly(_det3(r[0], r[1], r[2]), x, y)
+    return [(m, mpmath.mpf(c.p) / c.q) for m, c in zip(f.monoms(), f.coeffs())]
+
+
+def _eval(terms, px, py):
+    f = mpmath.mpf(0)
+    gx = mpmath.mpf(0)
+    gy = mpmath.mpf(0)
+    for (i, j), c in terms:
+        f += c * px**i * py**j
+        if i:
+            gx += c * i * px ** (i - 1) * py**j
+        if j:
+            gy += c * j * px**i * py ** (j - 1)
+    return f, gx, gy
+
+
+def distance(terms, point):
+    """``(first-order distance, distance to the root along the gradient
+    line)`` of the float point from the exact curve."""
+    px, py = mpmath.mpf(point[0]), mpmath.mpf(point[1])
+    f, gx, gy = _eval(terms, px, py)
+    g = mpmath.sqrt(gx * gx + gy * gy)
+    first = abs(f) / g if g else mpmath.inf
+    if g == 0:
+        return first, first
+    ux, uy = gx / g, gy / g
+    t = -f / g
+    for _ in range(100):
+        fv, hx, hy = _eval(terms, px + ux * t, py + uy * t)
+        slope = hx * ux + hy * uy
+        if slope == 0:
+            break
+        step = fv / slope
+        t -= step
+        if abs(step) <= mpmath.mpf(10) ** -50 * (1 + abs(t)):
+            break
+    return first, abs(t)
+
+
+def condition(poses, point, circle, patterns=16, seed=1):
+    """The largest exact distance of ``point``'s nearest curve point from
+    the curves of the task moved by one ulp per number (random signs)."""
+    base = distance(curve(poses, circle), point)[1]
+    rnd = random.Random(seed)
+    worst = mpmath.mpf(0)
+    for _ in range(patterns):
+        moved = [
+            tuple(v + rnd.choice((-1, 1)) * abs(v) * 2.0**-52 if v else v for v in p) for p in poses
+        ]
+        d = distance(curve(moved, circle), point)[1]
+        worst = max(worst, abs(d - base))
+    return worst
+
+
+CASES = {
+    # (poses, point, circle plane?, the library's distance and tolerance)
+    "traced-vertex-1.5-tolerances-off-ordinary-task": (
+        [
+            (-0.02275390625, -0.042015625, -0.04274609375),
+            (0.038853572944153, -0.9227064419647494, 0.08583984375),
+            (7.206768634628719, 6.860268617578484, 17.1875),
+            (0.046768867136560394, -0.28195069777709586, -0.0078125),
+        ],
+        (6.879749194537926, -6.505866381759142),
+        False,
+    ),
+    "traced-vertex-1.5-tolerances-off-moderate-task": (
+        [
+            (73.11328125, -105.09375, -23.93359375),
+            (-86.0720594203068, -127.75386565142762, -9.000000000000001e-9),
+            (64.86776245339738, 112.08311298228749, 28.06640625),
+            (-139.66718578418778, -81.98453299989845, 37.19921875),
+        ],
+        (-23.057505622825122, 0.0297661273105021),
+        False,
+    ),
+    "traced-vertex-1000-tolerances-off-far-pose": (
+        [
+            (0.00680005931015625, -3851.1718750001564, -0.205),
+            (-19099999.99320039, -3851.17187437, -96.0),
+            (0.00680025931015625, -3851.1701934, -49.0),
+            (0.008481209310156251, -3851.1718767417, 75.51),
+        ],
+        (-66.14193582814187, -3851.167216437248),
+        True,
+    ),
+}
+
+
+if __name__ == "__main__":
+    extra = sys.argv[1:]
+    for name, (poses, point, circle) in CASES.items():
+        if extra and not any(e in name for e in extra):
+            continue
+        terms = curve(poses, circle)
+        first, root = distance(terms, point)
+        cond = condition(poses, point, circle)
+        print(
+            f"{name}: {'circle' if circle else 'center'} point {point}: exact distance "
+            f"{mpmath.nstr(root, 6)} (first order {mpmath.nstr(first, 6)}), "
+            f"one ulp of the task moves the curve there by {mpmath.nstr(cond, 6)}"
+        )
+
+
+def _motion(poses):
+    """Per pose k (0-based, pose 1 first): the exact rotation ``(c, s)`` of
+    ``theta_k - theta_1`` (60 digits) and ``t_k = p_k - R_k p_1``, mpmath."""
+    x1, y1 = mpmath.mpf(poses[0][0]), mpmath.mpf(poses[0][1])
+    out = []
+    for px, py, a in poses:
+        d = mpmath.mpf(a) - mpmath.mpf(poses[0][2])
+        c, s = mpmath.cos(d), mpmath.sin(d)
+        out.append((c, s, mpmath.mpf(px) - (c * x1 - s * y1), mpmath.mpf(py) - (s * x1 + c * y1)))
+    return out
+
+
+def project(terms, point):
+    """The exact curve's point nearest ``point`` along its gradient line."""
+    px, py = mpmath.mpf(point[0]), mpmath.mpf(point[1])
+    f, gx, gy = _eval(terms, px, py)
+    g = mpmath.sqrt(gx * gx + gy * gy)
+    ux, uy = gx / g, gy / g
+    t = -f / g
+    for _ in range(200):
+        fv, hx, hy = _eval(terms, px + ux * t, py + uy * t)
+        step = fv / (hx * ux + hy * uy)
+        t -= step
+        if abs(step) <= mpmath.mpf(10) ** -55 * (1 + abs(t)):
+            break
+    return px + ux * t, py + uy * t
+
+
+def exact_circle_point(poses, gx, gy):
+    """The circle point of an exact center ``(gx, gy)`` on the exact
+    center-point curve: ``|D_1k(z) - G| = |z - G|`` for k = 2, 3, 4,
+    linear in ``z``; least squares of the three (consistent on the
+    curve)."""
+    rows = []
+    for c, s, tx, ty in _motion(poses)[1:]:
+        # |R z + t - G|^2 = |z - G|^2:  2 z . (R^T (t - G) + G) = |G|^2 - |t - G|^2
+        ux, uy = tx - gx, ty - gy
+        ax = c * ux + s * uy + gx
+        ay = -s * ux + c * uy + gy
+        b = (gx * gx + gy * gy - ux * ux - uy * uy) / 2
+        rows.append((ax, ay, b))
+    a = mpmath.matrix([[r[0], r[1]] for r in rows])
+    b = mpmath.matrix([r[2] for r in rows])
+    z = mpmath.lu_solve(a.T * a, a.T * b)
+    return z[0], z[1]
+
+
+def branch_signs(poses, c0, c1, a1):
+    """The exact branch signs ``cross(C'_k - C1, A1 - C1)`` with
+    ``C'_k = D_k1(C0)`` (Filemon's construction, ``C'_1 = C0``)."""
+    out = []
+    c0x, c0y = mpmath.mpf(c0[0]), mpmath.mpf(c0[1])
+    c1x, c1y = mpmath.mpf(c1[0]), mpmath.mpf(c1[1])
+    for c, s, tx, ty in _motion(poses):
+        wx, wy = c0x - tx, c0y - ty
+        kx, ky = c * wx + s * wy, -s * wx + c * wy
+        dx, dy = kx - c1x, ky - c1y
+        out.append(dx * (a1[1] - c1y) - dy * (a1[0] - c1x))
+    return out
