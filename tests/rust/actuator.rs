@@ -776,21 +776,12 @@ fn own_gap(
     gap
 }
 
-/// The smallest of [`own_gap`] over `steps` of the travel.
-fn dense_gap(
-    sfb: &SynthesizedFourBar,
-    own: &Own,
-    g: P,
-    steps: usize,
-    width: (f64, f64),
-    obstacles: &[Vec<P>],
-) -> f64 {
+/// The smallest of `f(t)` over `steps` of the travel of `sfb` (both ends
+/// included): dense driving, for [`own_gap`].
+fn least_over_travel(sfb: &SynthesizedFourBar, steps: usize, f: impl Fn(f64) -> f64) -> f64 {
     let (start, span) = sfb.travel().unwrap();
     (0..=steps)
-        .map(|k| {
-            let t = start + span * k as f64 / steps as f64;
-            own_gap(sfb, own, g, t, width, obstacles)
-        })
+        .map(|k| f(start + span * k as f64 / steps as f64))
         .fold(f64::INFINITY, f64::min)
 }
 
@@ -835,7 +826,8 @@ fn clearance_agrees_with_dense_driving() {
             let ctx = single_strut(&sfb, link, (q, g), (strut, 0.0), &constraints);
             let Ok(a) = ctx.placement(g) else { continue };
             let own = Own::new(&sfb, link, q);
-            let d = dense_gap(&sfb, &own, g, 8_000, (width, strut), &obstacles);
+            let gap = |t| own_gap(&sfb, &own, g, t, (width, strut), &obstacles);
+            let d = least_over_travel(&sfb, 8_000, gap);
             // How far a point of the strut or a link moves in a step of
             // the placement's sampling, bounded from dense samples.
             let step = (ctx.travel_angles()[1] - ctx.travel_angles()[0]).abs();
@@ -936,8 +928,9 @@ fn the_design_places_a_clear_actuator_on_every_design() {
         assert_eq!(&a.linkage, d.linkage.four_bar().unwrap());
         assert!(a.monotone && a.acceptable && a.clear, "{a:?}");
         assert!(options.space.pivots.contains(a.ground));
-        let own = Own::new(d.linkage.four_bar().unwrap(), a.link, a.point);
-        let dense = dense(d.linkage.four_bar().unwrap(), &own, a.ground, 8_000);
+        let fb = d.linkage.four_bar().unwrap();
+        let own = Own::new(fb, a.link, a.point);
+        let dense = dense(fb, &own, a.ground, 8_000);
         assert!(dense.turning.is_empty());
         assert!(
             dense.s_max / dense.s_min <= 1.8 + 1e-6,
@@ -946,14 +939,9 @@ fn the_design_places_a_clear_actuator_on_every_design() {
         );
         assert!((a.stroke_ratio - dense.s_max / dense.s_min).abs() < 1e-6);
         assert!(dense.mu_min >= options.limits.min_transmission - 1e-5);
-        let gap = dense_gap(
-            d.linkage.four_bar().unwrap(),
-            &own,
-            a.ground,
-            8_000,
-            (0.0, 0.0),
-            &[],
-        );
+        let gap = least_over_travel(fb, 8_000, |t| {
+            own_gap(fb, &own, a.ground, t, (0.0, 0.0), &[])
+        });
         assert!(
             gap > 0.0 && (gap - a.min_clearance).abs() < 1e-3 * task.span(),
             "dense {gap} vs {} at Q {:?}",

@@ -1202,6 +1202,24 @@ pub(crate) fn count_in(
     (min..=max).contains(&value).then_some(value).ok_or(error)
 }
 
+/// The one of `all` that `is` picks: the value of a name `found` that
+/// was parsed; [`InvalidInput::UnknownName`] for `found` as a `what` where
+/// none is, listing the names `expected`.
+pub(crate) fn named<T>(
+    all: impl IntoIterator<Item = T>,
+    is: impl FnMut(&T) -> bool,
+    what: &'static str,
+    expected: &'static str,
+    found: &str,
+) -> Result<T, InvalidInput> {
+    let unknown = || InvalidInput::UnknownName {
+        what,
+        expected,
+        found: found.to_owned(),
+    };
+    all.into_iter().find(is).ok_or_else(unknown)
+}
+
 /// Checks that a point is finite, naming its coordinates `"{what} x"` and
 /// `"{what} y"`.
 pub(crate) fn finite_point(

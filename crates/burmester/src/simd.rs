@@ -363,6 +363,45 @@ pub(crate) fn acos1(x: f64) -> f64 {
     acos(Ops(pulp::Scalar), x)
 }
 
+/// A lane width a kernel's tests run it on.
+#[cfg(test)]
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Width {
+    /// One lane: the scalar path.
+    One,
+    /// 128 bits, emulated.
+    B128,
+    /// 256 bits, emulated.
+    B256,
+    /// 512 bits, emulated.
+    B512,
+    /// The machine's own, as dispatched.
+    Dispatched,
+}
+
+#[cfg(test)]
+impl Width {
+    /// Every width, the scalar path first.
+    pub(crate) const ALL: [Width; 5] = [
+        Width::One,
+        Width::B128,
+        Width::B256,
+        Width::B512,
+        Width::Dispatched,
+    ];
+
+    /// Runs `kernel` on this width.
+    pub(crate) fn run<K: pulp::WithSimd>(self, kernel: K) -> K::Output {
+        match self {
+            Width::One => kernel.with_simd(pulp::Scalar),
+            Width::B128 => kernel.with_simd(pulp::Scalar128b),
+            Width::B256 => kernel.with_simd(pulp::Scalar256b),
+            Width::B512 => kernel.with_simd(pulp::Scalar512b),
+            Width::Dispatched => pulp::Arch::new().dispatch(kernel),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::{Ops, Pair, V, acos, atan2};

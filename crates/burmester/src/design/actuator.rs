@@ -88,7 +88,7 @@ use nalgebra::{Point2, Vector2};
 
 use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
-use crate::design::rank::{RankColumns, rank_samples, signed_distances_with};
+use crate::design::rank::{best_flagged, flagged_rank_columns};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::{Control, for_rows};
 use crate::error::{
@@ -449,19 +449,10 @@ impl Actuator {
     }
 }
 
-/// The columns a ranking of placements reads.
-#[derive(Debug, Clone, Copy)]
-pub struct ActuatorRankColumns<'a> {
-    /// The `monotone` column.
-    pub monotone: &'a [bool],
-    /// The `min_transmission_rad` column.
-    pub min_transmission_rad: &'a [f32],
-    /// The `link_ratio` column.
-    pub link_ratio: &'a [f32],
-    /// The `size_ratio` column.
-    pub size_ratio: &'a [f32],
-    /// The `acceptable` column.
-    pub acceptable: &'a [bool],
+flagged_rank_columns! {
+    /// The columns a ranking of placements reads.
+    ActuatorRankColumns, ActuatorMap, monotone;
+    Actuator, "the best placements"
 }
 
 impl ActuatorContext {
@@ -792,54 +783,14 @@ impl ActuatorContext {
         rank_by: RankBy,
         columns: ActuatorRankColumns<'_>,
     ) -> Result<Vec<Actuator>> {
-        let sep = min_separation.map_or_else(
-            || Ok(0.02 * self.grid.viewport().diagonal()),
-            |s| in_range("min_separation", s, 0.0, f64::MAX, ""),
-        )?;
-        let total = self.grid.len();
-        let ranked = RankColumns {
-            valid: columns.monotone,
-            branch_free: columns.monotone,
-            min_transmission_rad: columns.min_transmission_rad,
-            link_ratio: columns.link_ratio,
-            size_ratio: columns.size_ratio,
-            acceptable: columns.acceptable,
-        };
-        ranked.check_len(total)?;
-        let control = Control::new();
-        let distance = signed_distances_with(&self.grid, columns.monotone, &control)?;
-        let mut found: Vec<Actuator> = Vec::new();
-        let take = |s: usize, m: Option<f64>, score: f64| {
-            let g = self.ground(s);
-            let near = found.iter().any(|a| (a.ground - g).norm() < sep);
-            if found.len() < k && !near {
-                if let Ok(mut a) = self.placement_at(s) {
-                    a.margin = m.unwrap_or(distance[s]);
-                    a.score = score;
-                    a.ranked_by = Some(rank_by);
-                    found.push(a);
-                }
-            }
-            found.len() < k
-        };
-        rank_samples(total, rank_by, &ranked, &|s| distance[s], k, &control, take)?;
-        Ok(found)
+        let ranked = columns.ranked();
+        best_flagged(&self.grid, k, min_separation, rank_by, ranked, |s| {
+            self.placement_at(s)
+        })
     }
 }
 
 impl ActuatorMap {
-    /// The columns a ranking reads.
-    pub fn rank_columns(&self) -> ActuatorRankColumns<'_> {
-        let c = &self.columns;
-        ActuatorRankColumns {
-            monotone: &c.monotone,
-            min_transmission_rad: &c.min_transmission_rad,
-            link_ratio: &c.link_ratio,
-            size_ratio: &c.size_ratio,
-            acceptable: &c.acceptable,
-        }
-    }
-
     /// The `k` best placements (see [`ActuatorContext::best_placements`]).
     ///
     /// # Errors

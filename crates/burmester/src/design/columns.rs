@@ -171,6 +171,32 @@ macro_rules! map_columns {
 }
 pub(crate) use map_columns;
 
+/// Implements `Debug` for a map `$map` of a `context` and its `columns`
+/// (a [`Columns`]): what it was computed for, how many samples it has
+/// (the field `$samples`) and how many of them are branch-free and
+/// acceptable, not every value of every column. The solution map's and the
+/// pair map's.
+macro_rules! debug_map {
+    ($map:ident, $samples:literal) => {
+        #[doc = concat!(
+            "What the map was computed for and how many ", $samples, " are acceptable, not\n",
+            "every value of every column (those are [`", stringify!($map), "::columns`])."
+        )]
+        impl core::fmt::Debug for $map {
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                let count = |c: &[bool]| c.iter().filter(|&&b| b).count();
+                f.debug_struct(stringify!($map))
+                    .field("context", &self.context)
+                    .field($samples, &self.columns.valid.len())
+                    .field("branch_free", &count(&self.columns.branch_free))
+                    .field("acceptable", &count(&self.columns.acceptable))
+                    .finish()
+            }
+        }
+    };
+}
+pub(crate) use debug_map;
+
 macro_rules! define_columns {
     ($($t:tt)*) => {
         map_column_types!(

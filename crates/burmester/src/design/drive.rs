@@ -85,7 +85,7 @@ use pulp::{Arch, Simd, WithSimd};
 
 use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
-use crate::design::rank::{RankColumns, rank_samples, signed_distances_with, tie_order};
+use crate::design::rank::{best_flagged, flagged_rank_columns, tie_order};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::{Control, Rows, run_blocks_polled, run_blocks_with};
 use crate::error::{
@@ -907,7 +907,8 @@ impl DriveContext {
     ///
     /// [`InvalidInput::OutsideRange`] for a negative or non-finite
     /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-    /// another length than the grid.
+    /// another length than the grid;
+    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
     pub fn best_drives(
         &self,
         k: usize,
@@ -915,74 +916,20 @@ impl DriveContext {
         rank_by: RankBy,
         columns: DriveRankColumns<'_>,
     ) -> Result<Vec<Drive>> {
-        let sep = match min_separation {
-            Some(s) => in_range("min_separation", s, 0.0, f64::MAX, "")?,
-            None => 0.02 * self.grid.viewport().diagonal(),
-        };
-        let n = self.grid.len();
-        let rc = RankColumns {
-            valid: columns.valid,
-            branch_free: columns.valid,
-            min_transmission_rad: columns.min_transmission_rad,
-            link_ratio: columns.link_ratio,
-            size_ratio: columns.size_ratio,
-            acceptable: columns.acceptable,
-        };
-        rc.check_len(n)?;
-        // A drive map is small (its grid at most MAX_GRID_SAMPLES): every
-        // margin at once, by the distance transform.
-        let control = Control::new();
-        let margins = signed_distances_with(&self.grid, columns.valid, &control)?;
-        let margin = |s: usize| margins[s];
-        let mut out: Vec<Drive> = Vec::new();
-        rank_samples(n, rank_by, &rc, &margin, k, &control, |s, m, score| {
-            if out.len() >= k {
-                return false;
-            }
-            let p = self.point(s);
-            if out.iter().any(|q| (q.drive_pivot - p).norm() < sep) {
-                return true;
-            }
-            if let Ok(mut d) = self.drive_at(s) {
-                d.margin = m.unwrap_or_else(|| margin(s));
-                d.score = score;
-                d.ranked_by = Some(rank_by);
-                out.push(d);
-            }
-            out.len() < k
-        })?;
-        Ok(out)
+        let columns = columns.ranked();
+        best_flagged(&self.grid, k, min_separation, rank_by, columns, |s| {
+            self.drive_at(s)
+        })
     }
 }
 
-/// The columns a ranking of drives reads.
-#[derive(Debug, Clone, Copy)]
-pub struct DriveRankColumns<'a> {
-    /// The `valid` column.
-    pub valid: &'a [bool],
-    /// The `min_transmission_rad` column.
-    pub min_transmission_rad: &'a [f32],
-    /// The `link_ratio` column.
-    pub link_ratio: &'a [f32],
-    /// The `size_ratio` column.
-    pub size_ratio: &'a [f32],
-    /// The `acceptable` column.
-    pub acceptable: &'a [bool],
+flagged_rank_columns! {
+    /// The columns a ranking of drives reads.
+    DriveRankColumns, DriveMap, valid;
+    Drive, "the best drives"
 }
 
 impl DriveMap {
-    /// The columns a ranking reads.
-    pub fn rank_columns(&self) -> DriveRankColumns<'_> {
-        let c = &self.columns;
-        DriveRankColumns {
-            valid: &c.valid,
-            min_transmission_rad: &c.min_transmission_rad,
-            link_ratio: &c.link_ratio,
-            size_ratio: &c.size_ratio,
-            acceptable: &c.acceptable,
-        }
-    }
-
     /// The `k` best drives (see [`DriveContext::best_drives`]).
     ///
     /// # Errors
@@ -1646,6 +1593,7 @@ pub fn best_drive(
 mod tests {
     use super::*;
     use crate::linkage::sixbar::drive_worst_cos;
+    use crate::simd::Width;
 
     /// The drive map's rows on every lane width (1, 2, 4, 8 and as
     /// dispatched) give the scalar path's bits, sample by sample, with and
@@ -1778,9 +1726,9 @@ mod tests {
         let mut counts = [0usize; 2];
         for j in 0..g.ny() {
             let y = g.y(j);
-            let run = |f: &dyn Fn(DriveRow<'_>)| {
+            let run = |width: Width| {
                 let mut scratch = RowScratch::new(g);
-                f(DriveRow {
+                width.run(DriveRow {
                     swing: &ctx.swing,
                     limits: lim,
                     y,
@@ -1788,15 +1736,8 @@ mod tests {
                 });
                 scratch
             };
-            let widths: [&dyn Fn(DriveRow<'_>); 5] = [
-                &|r| r.with_simd(pulp::Scalar),
-                &|r| r.with_simd(pulp::Scalar128b),
-                &|r| r.with_simd(pulp::Scalar256b),
-                &|r| r.with_simd(pulp::Scalar512b),
-                &|r| Arch::new().dispatch(r),
-            ];
-            for w in widths {
-                let sc = run(w);
+            for width in Width::ALL {
+                let sc = run(width);
                 for i in 0..g.nx() {
                     let d0 = Point2::new(g.x(i), y);
                     let e = ctx.swing.eval(d0);

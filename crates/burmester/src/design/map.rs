@@ -3,7 +3,7 @@
 
 use nalgebra::Point2;
 
-use crate::design::columns::{Columns, ColumnsOut, Sample};
+use crate::design::columns::{Columns, ColumnsOut, Sample, debug_map};
 use crate::design::judge::{Sampler, fill};
 use crate::design::kernel;
 use crate::design::options::CheckedOptions;
@@ -12,6 +12,7 @@ use crate::engine::Control;
 use crate::error::{InvalidInput, Result, try_vec};
 use crate::geom::Grid;
 use crate::linkage::figures::figures;
+use crate::synthesis::errors::not_a_dyad;
 use crate::synthesis::three::{Filemon, Method};
 use crate::synthesis::{Dyad, DyadKind, SliderDyad, SynthesizedFourBar, Task};
 use crate::tolerance;
@@ -86,19 +87,7 @@ pub struct SolutionMap {
     pub columns: Columns,
 }
 
-/// What the map was computed for and how many samples are acceptable, not
-/// every value of every column (those are [`SolutionMap::columns`]).
-impl core::fmt::Debug for SolutionMap {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        let count = |c: &[bool]| c.iter().filter(|&&b| b).count();
-        f.debug_struct("SolutionMap")
-            .field("context", &self.context)
-            .field("samples", &self.columns.valid.len())
-            .field("branch_free", &count(&self.columns.branch_free))
-            .field("acceptable", &count(&self.columns.acceptable))
-            .finish()
-    }
-}
+debug_map!(SolutionMap, "samples");
 
 impl SolutionMap {
     /// The Grashof code of an invalid sample.
@@ -154,6 +143,54 @@ impl MapContext {
     }
 }
 
+/// What fills a map's columns.
+type Fill<'a> = dyn Fn(ColumnsOut<'_>) -> Result<()> + 'a;
+
+/// What a solution map is computed from: the Filemon construction of a
+/// map over candidate driving pivots, or the task and the driving dyad of
+/// a map over candidate driven pivots.
+#[derive(Clone, Copy)]
+enum Source<'a> {
+    Driving(&'a Filemon),
+    Driven(&'a Task, &'a Dyad),
+}
+
+impl Source<'_> {
+    /// The map's arguments checked, then `finish(context, fill)`: what the
+    /// map is computed for and the fill of its columns, for [`fresh`] (the
+    /// map's own columns, allocated once the arguments are checked) or
+    /// [`into`] (the caller's).
+    fn map<T>(
+        self,
+        grid: &Grid,
+        limits: &DesignLimits,
+        constraints: &Constraints,
+        control: &Control<'_>,
+        finish: impl FnOnce(MapContext, &Fill<'_>) -> Result<T>,
+    ) -> Result<T> {
+        let options = CheckedOptions::new(limits, constraints)?;
+        match self {
+            Source::Driving(filemon) => {
+                let sampler = Sampler::new(filemon.task(), &options)?.with_control(control);
+                let context = filemon.map_context(grid, &options)?;
+                finish(context, &|out| {
+                    filemon.fill_solution_map(&sampler, grid, out, control)
+                })
+            }
+            Source::Driven(task, driving) => {
+                let sampler = task
+                    .driven_sampler(driving, &options)?
+                    .with_control(control);
+                let varying = Varying::Driven { driving: *driving };
+                let context = MapContext::new(grid, task, varying, limits, constraints);
+                finish(context, &|out| {
+                    task.fill_driven_map(&sampler, driving, grid, out, control)
+                })
+            }
+        }
+    }
+}
+
 /// A map of `grid` computed for `context`: its columns allocated, then
 /// filled by `fill`.
 fn fresh(
@@ -203,11 +240,8 @@ impl Filemon {
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
-        let options = CheckedOptions::new(limits, constraints)?;
-        let sampler = Sampler::new(self.task(), &options)?.with_control(control);
-        let context = self.map_context(grid, &options)?;
-        fresh(grid, context, |out| {
-            self.fill_solution_map(&sampler, grid, out, control)
+        Source::Driving(self).map(grid, limits, constraints, control, |context, fill| {
+            fresh(grid, context, fill)
         })
     }
 
@@ -231,11 +265,8 @@ impl Filemon {
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
-        let options = CheckedOptions::new(limits, constraints)?;
-        let sampler = Sampler::new(self.task(), &options)?.with_control(control);
-        let context = self.map_context(grid, &options)?;
-        into(grid, context, out, |out| {
-            self.fill_solution_map(&sampler, grid, out, control)
+        Source::Driving(self).map(grid, limits, constraints, control, |context, fill| {
+            into(grid, context, out, fill)
         })
     }
 
@@ -306,13 +337,9 @@ impl Task {
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
-        let options = CheckedOptions::new(limits, constraints)?;
-        let sampler = self.driven_sampler(driving, &options)?;
-        let varying = Varying::Driven { driving: *driving };
-        let context = MapContext::new(grid, self, varying, limits, constraints);
-        fresh(grid, context, |out| {
-            let sampler = sampler.with_control(control);
-            self.fill_driven_map(&sampler, driving, grid, out, control)
+        let source = Source::Driven(self, driving);
+        source.map(grid, limits, constraints, control, |context, fill| {
+            fresh(grid, context, fill)
         })
     }
 
@@ -333,13 +360,9 @@ impl Task {
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
-        let options = CheckedOptions::new(limits, constraints)?;
-        let sampler = self.driven_sampler(driving, &options)?;
-        let varying = Varying::Driven { driving: *driving };
-        let context = MapContext::new(grid, self, varying, limits, constraints);
-        into(grid, context, out, |out| {
-            let sampler = sampler.with_control(control);
-            self.fill_driven_map(&sampler, driving, grid, out, control)
+        let source = Source::Driven(self, driving);
+        source.map(grid, limits, constraints, control, |context, fill| {
+            into(grid, context, out, fill)
         })
     }
 
@@ -354,12 +377,7 @@ impl Task {
         let d = self.dyad_from_center(driving.center)?;
         let spread = (d.circle - driving.circle).norm() / (self.scale() + driving.length());
         if spread.is_nan() || spread > tolerance::DYAD {
-            return Err(InvalidInput::NotADyad {
-                which: "driving dyad",
-                spread,
-                tolerance: tolerance::DYAD,
-            }
-            .into());
+            return Err(not_a_dyad("driving dyad", spread));
         }
         Ok(sampler)
     }

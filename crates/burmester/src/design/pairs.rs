@@ -31,7 +31,7 @@
 //! [`Task::four_bar`]. A pair of a dyad with itself (the same parameter on
 //! both axes) is not a linkage (its ground has no length): invalid.
 
-use crate::design::columns::{Columns, ColumnsOut, Sample};
+use crate::design::columns::{Columns, ColumnsOut, Sample, debug_map};
 use crate::design::judge::{Judge, fill_rows};
 use crate::design::options::CheckedOptions;
 use crate::design::rank::{Offer, RankColumns, RankedContext, best_with, signed_distances_with};
@@ -93,19 +93,7 @@ pub struct PairMap {
     pub columns: Columns,
 }
 
-/// What the map was computed for and how many pairs are acceptable, not
-/// every value of every column (those are [`PairMap::columns`]).
-impl core::fmt::Debug for PairMap {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        let count = |c: &[bool]| c.iter().filter(|&&b| b).count();
-        f.debug_struct("PairMap")
-            .field("context", &self.context)
-            .field("pairs", &self.columns.valid.len())
-            .field("branch_free", &count(&self.columns.branch_free))
-            .field("acceptable", &count(&self.columns.acceptable))
-            .finish()
-    }
-}
+debug_map!(PairMap, "pairs");
 
 /// A pair of dyads of a pair map with its linkage.
 #[derive(Debug, Clone, Copy, PartialEq)]

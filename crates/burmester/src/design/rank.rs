@@ -9,7 +9,7 @@ use nalgebra::Point2;
 
 use crate::design::{Columns, MapContext, SolutionMap, Varying};
 use crate::engine::Control;
-use crate::error::{InvalidInput, Result, in_range, out_of_memory, try_push, try_vec};
+use crate::error::{InvalidInput, Result, in_range, named, out_of_memory, try_push, try_vec};
 use crate::geom::Grid;
 use crate::synthesis::three::Filemon;
 use crate::synthesis::{SynthesizedFourBar, SynthesizedSliderCrank};
@@ -104,15 +104,9 @@ impl FromStr for RankBy {
     type Err = InvalidInput;
 
     fn from_str(s: &str) -> Result<Self, InvalidInput> {
-        let s_lower = s.to_ascii_lowercase();
-        RankBy::ALL
-            .into_iter()
-            .find(|r| r.as_str() == s_lower)
-            .ok_or_else(|| InvalidInput::UnknownName {
-                what: "ranking",
-                expected: "\"balanced\", \"transmission\", \"compact\", \"pareto\" or \"margin\"",
-                found: s.to_owned(),
-            })
+        let expected = "\"balanced\", \"transmission\", \"compact\", \"pareto\" or \"margin\"";
+        let is = |r: &RankBy| r.as_str().eq_ignore_ascii_case(s);
+        named(RankBy::ALL, is, "ranking", expected, s)
     }
 }
 
@@ -163,6 +157,69 @@ pub struct RankColumns<'a> {
     /// The `acceptable` column.
     pub acceptable: &'a [bool],
 }
+
+/// Defines the ranking of a map `$map` whose one flag column, `$ok`,
+/// stands for both `valid` and `branch_free` (a drive map's, an actuator
+/// map's): `$name`, the columns it reads, with `$map::rank_columns` and the
+/// columns as a solution map's ([`RankColumns`]) for [`best_flagged`], and
+/// its results `$item` (with public `margin`, `score` and `ranked_by`) as
+/// a [`FlaggedItem`] called `$what`.
+macro_rules! flagged_rank_columns {
+    ($(#[$doc:meta])* $name:ident, $map:ident, $ok:ident; $item:ident, $what:literal) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone, Copy)]
+        pub struct $name<'a> {
+            #[doc = concat!("The `", stringify!($ok), "` column.")]
+            pub $ok: &'a [bool],
+            /// The `min_transmission_rad` column.
+            pub min_transmission_rad: &'a [f32],
+            /// The `link_ratio` column.
+            pub link_ratio: &'a [f32],
+            /// The `size_ratio` column.
+            pub size_ratio: &'a [f32],
+            /// The `acceptable` column.
+            pub acceptable: &'a [bool],
+        }
+
+        impl<'a> $name<'a> {
+            /// The columns as a solution map's: the flag column is both
+            /// `valid` and `branch_free`.
+            fn ranked(self) -> $crate::design::RankColumns<'a> {
+                $crate::design::RankColumns {
+                    valid: self.$ok,
+                    branch_free: self.$ok,
+                    min_transmission_rad: self.min_transmission_rad,
+                    link_ratio: self.link_ratio,
+                    size_ratio: self.size_ratio,
+                    acceptable: self.acceptable,
+                }
+            }
+        }
+
+        impl $map {
+            /// The columns a ranking reads.
+            pub fn rank_columns(&self) -> $name<'_> {
+                let c = &self.columns;
+                $name {
+                    $ok: &c.$ok,
+                    min_transmission_rad: &c.min_transmission_rad,
+                    link_ratio: &c.link_ratio,
+                    size_ratio: &c.size_ratio,
+                    acceptable: &c.acceptable,
+                }
+            }
+        }
+
+        impl $crate::design::rank::FlaggedItem for $item {
+            const WHAT: &'static str = $what;
+
+            fn ranked(&mut self, margin: f64, score: f64, rank_by: RankBy) {
+                (self.margin, self.score, self.ranked_by) = (margin, score, Some(rank_by));
+            }
+        }
+    };
+}
+pub(crate) use flagged_rank_columns;
 
 impl RankColumns<'_> {
     /// The score of sample `s` by `rank_by` (see [`RankBy::score`]).
@@ -388,24 +445,25 @@ mod sealed {
     impl Sealed for crate::synthesis::SynthesizedSliderCrank {}
 }
 
-impl PivotLinkage for SynthesizedFourBar {
-    const SLIDER: bool = false;
-    fn of_sample(ctx: &MapContext, s: usize) -> Option<Self> {
-        ctx.linkage(s).ok()
-    }
-    fn linkage_size(&self) -> f64 {
-        self.size()
-    }
+/// Implements [`PivotLinkage`] for `$linkage`, the linkage of a map whose
+/// driven dyad is a slider when `$slider`, built by `MapContext::$of`.
+macro_rules! pivot_linkage {
+    ($($linkage:ty: $slider:literal, $of:ident;)*) => {$(
+        impl PivotLinkage for $linkage {
+            const SLIDER: bool = $slider;
+            fn of_sample(ctx: &MapContext, s: usize) -> Option<Self> {
+                ctx.$of(s).ok()
+            }
+            fn linkage_size(&self) -> f64 {
+                self.size()
+            }
+        }
+    )*};
 }
 
-impl PivotLinkage for SynthesizedSliderCrank {
-    const SLIDER: bool = true;
-    fn of_sample(ctx: &MapContext, s: usize) -> Option<Self> {
-        ctx.slider_crank(s).ok()
-    }
-    fn linkage_size(&self) -> f64 {
-        self.size()
-    }
+pivot_linkage! {
+    SynthesizedFourBar: false, linkage;
+    SynthesizedSliderCrank: true, slider_crank;
 }
 
 /// A map ranked into pivots carrying the linkage `L`.
@@ -420,6 +478,9 @@ pub(crate) trait RankedContext {
     type Item;
     /// What the results are called (for an allocation that fails).
     const WHAT: &'static str;
+    /// Whether every margin is computed at once (the distance transform,
+    /// for a map without a Filemon construction) whatever the ranking.
+    const ALL_MARGINS: bool = false;
     /// The grid of the samples (separations are measured on it).
     fn grid(&self) -> &Grid;
     /// The driving map's Filemon construction, for the margins: `Some`
@@ -445,6 +506,11 @@ pub(crate) struct Offer<'a> {
 }
 
 impl Offer<'_> {
+    /// The sample's margin.
+    pub(crate) fn margin(&self) -> f64 {
+        (self.margin)()
+    }
+
     /// The sample's `(row, column)` on a grid of `nx` columns, its margin
     /// and the size ratio of its linkage `l` on a task of span `span`.
     pub(crate) fn placed(&self, nx: usize, l: &SynthesizedFourBar, span: f64) -> Placed {
@@ -495,6 +561,74 @@ impl<L: PivotLinkage> RankedContext for Ranked<'_, L> {
     }
 }
 
+/// A result of a map whose one flag column stands for `valid` and
+/// `branch_free` ([`flagged_rank_columns!`]): a drive, a placement of an
+/// actuator.
+pub(crate) trait FlaggedItem {
+    /// What the results are called (for an allocation that fails).
+    const WHAT: &'static str;
+    /// Records the ranking that chose it: its margin, its score, the
+    /// ranking.
+    fn ranked(&mut self, margin: f64, score: f64, rank_by: RankBy);
+}
+
+/// A map with one flag column ranked: its grid and the result of each
+/// sample, `at`.
+struct Flagged<'a, F> {
+    grid: &'a Grid,
+    at: F,
+}
+
+impl<T: FlaggedItem, F: Fn(usize) -> Result<T>> RankedContext for Flagged<'_, F> {
+    type Item = T;
+    const WHAT: &'static str = T::WHAT;
+    const ALL_MARGINS: bool = true;
+
+    fn grid(&self) -> &Grid {
+        self.grid
+    }
+
+    fn filemon(&self) -> Option<Option<Filemon>> {
+        None
+    }
+
+    fn item(&self, o: &Offer<'_>) -> Option<T> {
+        let mut item = (self.at)(o.s).ok()?;
+        item.ranked(o.margin(), o.score, o.rank_by);
+        Some(item)
+    }
+}
+
+/// The `k` best results of a map with one flag column on `grid` (a drive
+/// map's, an actuator map's), best first, from its `columns` (as
+/// [`RankColumns`]: the flag column both `valid` and `branch_free`), by
+/// `rank_by`, each built by `at` (a sample without one is skipped), as
+/// [`best_with`] gives them; every margin is computed at once, by the
+/// distance transform (the distance to the nearest sample without the
+/// flag).
+///
+/// # Errors
+///
+/// As [`best_with`].
+pub(crate) fn best_flagged<T: FlaggedItem>(
+    grid: &Grid,
+    k: usize,
+    min_separation: Option<f64>,
+    rank_by: RankBy,
+    columns: RankColumns<'_>,
+    at: impl Fn(usize) -> Result<T>,
+) -> Result<Vec<T>> {
+    let flagged = Flagged { grid, at };
+    best_with(
+        &flagged,
+        k,
+        min_separation,
+        rank_by,
+        columns,
+        &Control::new(),
+    )
+}
+
 /// The `k` best results of a map with context `ctx`, best first, from its
 /// `columns`, by `rank_by` (as [`MapContext::best_pivots_with`] says),
 /// following `control`.
@@ -517,12 +651,14 @@ pub(crate) fn best_with<C: RankedContext>(
     };
     let n = grid.len();
     columns.check_len(n)?;
+    // A map that wants every margin asks for them all.
+    let want = if C::ALL_MARGINS { usize::MAX } else { k };
     let margins = Margins::new(
         grid,
         ctx.filemon(),
         columns.branch_free,
         rank_by,
-        k,
+        want,
         control,
     )?;
     let nx = grid.nx();

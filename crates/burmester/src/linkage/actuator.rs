@@ -29,7 +29,7 @@ use core::str::FromStr;
 
 use nalgebra::{Point2, Vector2};
 
-use crate::error::{DegenerateError, InvalidInput, Result};
+use crate::error::{DegenerateError, InvalidInput, Result, named};
 use crate::geom::rotate;
 use crate::linkage::{AssemblyMode, FourBar};
 
@@ -67,14 +67,14 @@ impl FromStr for ActuatorLink {
     type Err = InvalidInput;
 
     fn from_str(s: &str) -> core::result::Result<Self, InvalidInput> {
-        ActuatorLink::ALL
-            .into_iter()
-            .find(|l| l.as_str() == s)
-            .ok_or_else(|| InvalidInput::UnknownName {
-                what: "actuator link",
-                expected: "\"coupler\", \"crank\" or \"rocker\"",
-                found: s.to_owned(),
-            })
+        let expected = "\"coupler\", \"crank\" or \"rocker\"";
+        named(
+            ActuatorLink::ALL,
+            |l| l.as_str() == s,
+            "actuator link",
+            expected,
+            s,
+        )
     }
 }
 

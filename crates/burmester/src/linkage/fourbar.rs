@@ -1077,6 +1077,7 @@ impl WithSimd for SolveLanes<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::simd::Width;
 
     fn deg(x: f64) -> f64 {
         x.to_radians()
@@ -1101,9 +1102,9 @@ mod tests {
             ts.extend([f64::NAN, f64::INFINITY, 2e9, -0.0, 0.0]);
             for mode in AssemblyMode::BOTH {
                 let n = ts.len();
-                let run = |f: &dyn Fn(SolveLanes<'_>) -> usize| {
+                let run = |width: Width| {
                     let (mut t3, mut t4, mut ok) = (vec![0.0; n], vec![0.0; n], vec![false; n]);
-                    let count = f(SolveLanes {
+                    let count = width.run(SolveLanes {
                         fb,
                         theta2s: &ts,
                         mode,
@@ -1113,15 +1114,8 @@ mod tests {
                     });
                     (count, t3, t4, ok)
                 };
-                let widths: [&dyn Fn(SolveLanes<'_>) -> usize; 5] = [
-                    &|l| l.with_simd(pulp::Scalar),
-                    &|l| l.with_simd(pulp::Scalar128b),
-                    &|l| l.with_simd(pulp::Scalar256b),
-                    &|l| l.with_simd(pulp::Scalar512b),
-                    &|l| Arch::new().dispatch(l),
-                ];
-                for f in widths {
-                    let (count, t3, t4, ok) = run(f);
+                for width in Width::ALL {
+                    let (count, t3, t4, ok) = run(width);
                     assert_eq!(count, ok.iter().filter(|&&b| b).count());
                     for (i, &t) in ts.iter().enumerate() {
                         match fb.solve(t, mode) {

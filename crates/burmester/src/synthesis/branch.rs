@@ -41,7 +41,7 @@ use nalgebra::{Point2, Vector2};
 use crate::error::{DegenerateError, InvalidInput, Result};
 use crate::geom::{Line, PerPose, cross, normalized, rotate_cs};
 use crate::synthesis::motion::Motion;
-use crate::synthesis::{DyadKind, SliderDyad, Task};
+use crate::synthesis::{DyadKind, SliderDyad, Task, errors};
 use crate::tolerance;
 
 /// The branch class of a driving center point (or circle point).
@@ -210,12 +210,10 @@ impl DyadKind {
                     .fold((0.0f64, 0.0f64), |a, b| (a.0.max(b.0), a.1.max(b.1)));
                 let spread = off / (scale + travel);
                 if spread.is_nan() || spread > tolerance::DYAD {
-                    return Err(InvalidInput::NotADyad {
-                        which: "slider driven dyad (its pin's positions are off its guide)",
+                    return Err(errors::not_a_dyad(
+                        "slider driven dyad (its pin's positions are off its guide)",
                         spread,
-                        tolerance: tolerance::DYAD,
-                    }
-                    .into());
+                    ));
                 }
                 let n = s.normal();
                 let poses = motion.poses();

@@ -22,7 +22,7 @@
 mod branch;
 mod crank_travel;
 mod dyad;
-mod errors;
+pub(crate) mod errors;
 pub mod five;
 pub mod four;
 mod inverted_crank;
