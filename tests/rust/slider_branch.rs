@@ -20,24 +20,8 @@ use burmester::{
     Point2, Pose, SliderDyad, Task, Vector2, Viewport,
 };
 
-/// A small deterministic generator (splitmix64), so the cases are the same
-/// on every run.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
-    }
-}
+mod common;
+use common::splitmix::Rng;
 
 fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
     a.x * b.y - a.y * b.x
@@ -141,6 +125,21 @@ fn random_slider_crank(rng: &mut Rng, n: usize) -> (Task, SliderDyad, SliderCran
     }
 }
 
+/// `n` random slider-cranks of three poses ([`random_slider_crank`]), the
+/// same for the same `seed` on every run.
+fn random_slider_cranks(
+    seed: u64,
+    n: usize,
+) -> impl Iterator<Item = (Task, SliderDyad, SliderCrank)> {
+    let mut rng = Rng(seed);
+    (0..n).map(move |_| random_slider_crank(&mut rng, 3))
+}
+
+/// The `n` by `n` grid over the square `[-h, h]` by `[-h, h]`.
+fn square(h: f64, n: usize) -> Grid {
+    Grid::from_bounds(-h, h, -h, h, n, n).unwrap()
+}
+
 /// What driving the slider-crank of a driving center point densely says.
 #[derive(Debug, PartialEq)]
 enum Driven {
@@ -213,9 +212,7 @@ fn cause_of(e: &Error) -> &'static str {
 
 #[test]
 fn the_generating_crank_of_a_known_slider_crank_is_free() {
-    let mut rng = Rng(1);
-    for _ in 0..200 {
-        let (task, slider, sc) = random_slider_crank(&mut rng, 3);
+    for (task, slider, sc) in random_slider_cranks(1, 200) {
         let f = Filemon::new(&task, slider).unwrap();
         assert!(f.fixed_pivot_images().is_none());
         assert_eq!(f.driven(), DyadKind::Slider(slider));
@@ -395,9 +392,7 @@ fn conic_classification_agrees_with_the_circle_point_plane() {
 
 #[test]
 fn branch_map_is_the_pointwise_classification() {
-    let mut rng = Rng(6);
-    for _ in 0..10 {
-        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+    for (task, slider, _) in random_slider_cranks(6, 10) {
         let f = Filemon::new(&task, slider).unwrap();
         let grid = Grid::from_bounds(-4.0, 4.0, -3.0, 3.5, 97, 83).unwrap();
         for method in [Method::Conic, Method::Direct] {
@@ -488,7 +483,7 @@ fn slider_errors_are_typed() {
     // What needs a four-bar refuses a slider, saying why (the simulate
     // method and the solution map drive the slider-crank instead).
     let f = Filemon::new(&task, slider).unwrap();
-    let grid = Grid::from_bounds(-1.0, 1.0, -1.0, 1.0, 4, 4).unwrap();
+    let grid = square(1.0, 4);
     let map = f
         .solution_map(
             &grid,
@@ -753,11 +748,9 @@ fn slider_map(f: &Filemon, grid: &Grid) -> burmester::SolutionMap {
 
 #[test]
 fn slider_map_columns_agree_with_driving_the_built_slider_crank() {
-    let mut rng = Rng(31);
-    let grid = Grid::from_bounds(-4.0, 4.0, -4.0, 4.0, 14, 14).unwrap();
+    let grid = square(4.0, 14);
     let mut seen = [0usize; 9];
-    for _ in 0..16 {
-        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+    for (task, slider, _) in random_slider_cranks(31, 16) {
         let f = Filemon::new(&task, slider).unwrap();
         let map = slider_map(&f, &grid);
         let c = &map.columns;
@@ -869,11 +862,9 @@ fn slider_map_columns_agree_with_driving_the_built_slider_crank() {
 
 #[test]
 fn simulate_agrees_with_driving_and_with_the_exact_map() {
-    let mut rng = Rng(32);
-    let grid = Grid::from_bounds(-4.0, 4.0, -4.0, 4.0, 20, 20).unwrap();
+    let grid = square(4.0, 20);
     let (mut agree, mut circuit) = (0, 0);
-    for _ in 0..12 {
-        let (task, slider, _) = random_slider_crank(&mut rng, 3);
+    for (task, slider, _) in random_slider_cranks(32, 12) {
         let f = Filemon::new(&task, slider).unwrap();
         let map = slider_map(&f, &grid);
         let sim = f.branch_map(&grid, Method::Simulate);
@@ -913,8 +904,9 @@ fn simulate_agrees_with_driving_and_with_the_exact_map() {
 
 /// A press in mm: crank 40 about the origin, coupler 160, the ram's pin on
 /// a horizontal guide 10 above the crank pivot, at crank angles 30, 90 and
-/// 150 degrees (the coupler's pose: the crank pin and the coupler's angle).
-fn press() -> (Task, SliderDyad) {
+/// 150 degrees (the coupler's pose: the crank pin and the coupler's angle);
+/// its task, the ram's slider dyad and their Filemon lines.
+fn press() -> (Task, SliderDyad, Filemon) {
     let sc = SliderCrank {
         a0: Point2::origin(),
         r: 40.0,
@@ -927,17 +919,16 @@ fn press() -> (Task, SliderDyad) {
         .map(|d| pose_of(&sc, d.to_radians(), 1.0).unwrap())
         .collect();
     let b1 = sc.slider(30f64.to_radians(), 1.0).unwrap();
-    (
-        Task::new(&poses).unwrap(),
-        SliderDyad::new(b1, sc.u).unwrap(),
-    )
+    let task = Task::new(&poses).unwrap();
+    let slider = SliderDyad::new(b1, sc.u).unwrap();
+    let f = Filemon::new(&task, slider).unwrap();
+    (task, slider, f)
 }
 
 #[test]
 fn the_generating_crank_of_a_press_is_acceptable() {
-    let (task, slider) = press();
-    let f = Filemon::new(&task, slider).unwrap();
-    let grid = Grid::from_bounds(-105.0, 105.0, -105.0, 105.0, 21, 21).unwrap();
+    let (task, slider, f) = press();
+    let grid = square(105.0, 21);
     let map = slider_map(&f, &grid);
     let k = 10 * 21 + 10;
     assert_eq!(map.context.point(k), Point2::origin());
@@ -999,7 +990,7 @@ fn slider_map_is_invariant_under_moves_rotations_and_scaling() {
             .collect();
         let task2 = Task::new(&poses).unwrap();
         let slider2 = SliderDyad::new(map_pt(slider.circle), map_dir(slider.guide)).unwrap();
-        let g1 = Grid::from_bounds(-h, h, -h, h, n, n).unwrap();
+        let g1 = square(h, n);
         let g2 =
             Grid::from_bounds(-h * s + t.x, h * s + t.x, -h * s + t.y, h * s + t.y, n, n).unwrap();
         let m1 = slider_map(&Filemon::new(&task, slider).unwrap(), &g1);
@@ -1080,9 +1071,8 @@ fn acceptable_by_default(sc: &burmester::SynthesizedSliderCrank, branch_free: bo
 #[test]
 fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
     use burmester::RankBy;
-    let (task, slider) = press();
-    let f = Filemon::new(&task, slider).unwrap();
-    let grid = Grid::from_bounds(-150.0, 150.0, -150.0, 150.0, 41, 41).unwrap();
+    let (task, slider, f) = press();
+    let grid = square(150.0, 41);
     let map = slider_map(&f, &grid);
     let cells = exact_cells(&task, &slider, &map);
     let span = task.span();
@@ -1318,9 +1308,8 @@ fn dense_gaps(
 
 #[test]
 fn slider_map_obstacles_and_envelope_agree_with_driving_the_built_slider_crank() {
-    let (task, slider) = press();
-    let f = Filemon::new(&task, slider).unwrap();
-    let grid = Grid::from_bounds(-150.0, 150.0, -150.0, 150.0, 25, 25).unwrap();
+    let (task, slider, f) = press();
+    let grid = square(150.0, 25);
     let free = slider_map(&f, &grid);
     let rect = |x0: f64, x1: f64, y0: f64, y1: f64| {
         vec![

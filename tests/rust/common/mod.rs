@@ -11,6 +11,8 @@ use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
 
+pub(crate) mod splitmix;
+
 /// The notes' worked example (positions-4-5.md, section 6): five poses of
 /// the coupler of the crank-rocker `A0 = (0, 0)`, `B0 = (4, 0)`.
 pub(crate) fn notes_poses() -> [Pose; 5] {

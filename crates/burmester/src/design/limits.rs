@@ -3,44 +3,20 @@
 use crate::error::{InvalidInput, Result, in_range};
 use crate::linkage::{Direction, LinkageFigures};
 
-/// Which kind of input link a design requires.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub enum InputRequirement {
-    /// Any input that carries the coupler through the poses.
-    #[default]
-    Any,
-    /// The input must turn fully (a crank: motor-driven without reversing).
-    Crank,
-    /// The input must rock (not turn fully).
-    Rocker,
-}
-
-impl InputRequirement {
+crate::geom::parsed_enum! {
+    /// Which kind of input link a design requires.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+    pub enum InputRequirement("input requirement", "\"any\", \"crank\" or \"rocker\"") {
+        /// Any input that carries the coupler through the poses.
+        #[default]
+        Any => "any",
+        /// The input must turn fully (a crank: motor-driven without reversing).
+        Crank => "crank",
+        /// The input must rock (not turn fully).
+        Rocker => "rocker",
+    }
     /// `"any"`, `"crank"` or `"rocker"`.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            InputRequirement::Any => "any",
-            InputRequirement::Crank => "crank",
-            InputRequirement::Rocker => "rocker",
-        }
-    }
-}
-
-impl core::str::FromStr for InputRequirement {
-    type Err = InvalidInput;
-
-    fn from_str(s: &str) -> Result<Self, InvalidInput> {
-        match s.to_ascii_lowercase().as_str() {
-            "any" => Ok(InputRequirement::Any),
-            "crank" => Ok(InputRequirement::Crank),
-            "rocker" => Ok(InputRequirement::Rocker),
-            _ => Err(InvalidInput::UnknownName {
-                what: "input requirement",
-                expected: "\"any\", \"crank\" or \"rocker\"",
-                found: s.to_owned(),
-            }),
-        }
-    }
+    pub fn as_str;
 }
 
 /// The designer's limits behind the `acceptable` mask.

@@ -384,6 +384,50 @@ pub enum SearchPoint {
     },
 }
 
+impl SearchPoint {
+    /// The coordinates a refinement moves, the indices staying: both
+    /// pivots, both curve parameters, the crank pivot and the pin's
+    /// parameter, or the driving dyad's parameter; `None` for the
+    /// Burmester points (not refined).
+    fn coordinates(&self) -> Option<Vec<f64>> {
+        match *self {
+            SearchPoint::Pivots { driving, driven } => {
+                Some(vec![driving.x, driving.y, driven.x, driven.y])
+            }
+            SearchPoint::Parameters { driving, driven } => Some(vec![driving, driven]),
+            SearchPoint::SliderCircle { driving, slider } => {
+                Some(vec![driving.x, driving.y, slider])
+            }
+            SearchPoint::SliderPoint { driving, .. } => Some(vec![driving]),
+            SearchPoint::Burmester { .. } => None,
+        }
+    }
+
+    /// The point of the same kind (and indices) at the coordinates `x`, as
+    /// [`coordinates`](Self::coordinates) gives them.
+    fn moved_to(&self, x: &[f64]) -> SearchPoint {
+        match *self {
+            SearchPoint::Pivots { .. } => SearchPoint::Pivots {
+                driving: Point2::new(x[0], x[1]),
+                driven: Point2::new(x[2], x[3]),
+            },
+            SearchPoint::Parameters { .. } => SearchPoint::Parameters {
+                driving: x[0],
+                driven: x[1],
+            },
+            SearchPoint::SliderCircle { .. } => SearchPoint::SliderCircle {
+                driving: Point2::new(x[0], x[1]),
+                slider: x[2],
+            },
+            SearchPoint::SliderPoint { slider, .. } => SearchPoint::SliderPoint {
+                driving: x[0],
+                slider,
+            },
+            SearchPoint::Burmester { .. } => *self,
+        }
+    }
+}
+
 /// One answer of the search.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Design {
@@ -1392,23 +1436,7 @@ impl Task {
             let (a, c) = (dyad_at(self, &x[..2])?, dyad_at(self, &x[2..])?);
             exact.judge_with(&a, &c, false, margin)
         };
-        let refined = self.refine_starts(
-            &starts,
-            &h,
-            options,
-            control,
-            |s| {
-                let SearchPoint::Pivots { driving, driven } = s.point else {
-                    return None;
-                };
-                Some(vec![driving.x, driving.y, driven.x, driven.y])
-            },
-            &eval,
-            |x| SearchPoint::Pivots {
-                driving: Point2::new(x[0], x[1]),
-                driven: Point2::new(x[2], x[3]),
-            },
-        )?;
+        let refined = self.refine_starts(&starts, &h, options, control, &eval)?;
         report.evaluations = refined.iter().map(|d| d.evaluations).sum();
         report.designs = self.finish_designs(refined, options, &mut report, control)?;
         if report.designs.is_empty() {
@@ -1418,25 +1446,23 @@ impl Task {
         Ok(report)
     }
 
-    /// Refines every start (in parallel), each from `x0(start)` with steps
-    /// `h`, judging points by `eval` and naming them by `at`.
-    #[allow(clippy::too_many_arguments)]
+    /// Refines every start (in parallel), each from its point's
+    /// [`coordinates`](SearchPoint::coordinates) with steps `h`, judging
+    /// points by `eval`.
     fn refine_starts(
         &self,
         starts: &[Start],
         h: &[f64],
         options: &DesignOptions,
         control: &Control<'_>,
-        x0: impl Fn(&Start) -> Option<Vec<f64>> + Sync,
         eval: &(dyn Fn(&[f64], f64) -> Option<Verdict> + Sync),
-        at: impl Fn(&[f64]) -> SearchPoint + Sync,
     ) -> Result<Vec<Design>> {
         let done = AtomicUsize::new(0);
         let n = starts.len().max(1);
         let out: Vec<Option<Design>> = starts
             .par_iter()
             .map(|s| {
-                let x = x0(s)?;
+                let x = s.point.coordinates()?;
                 let (best, evaluations) = refine(
                     eval,
                     &x,
@@ -1454,7 +1480,7 @@ impl Task {
                     size_ratio: v.size_ratio,
                     ranked_by: options.rank_by,
                     coarse: s.point,
-                    refined: at(&xb),
+                    refined: s.point.moved_to(&xb),
                     coarse_score: s.score,
                     evaluations,
                     drive: None,
@@ -1653,21 +1679,7 @@ impl Task {
             let d = four.dyad_at_parameter(x[1]).ok()?;
             exact.judge_with(&a.dyad(), &d.dyad(), false, margin)
         };
-        let refined = self.refine_starts(
-            &starts,
-            &[step, step],
-            options,
-            control,
-            |s| match s.point {
-                SearchPoint::Parameters { driving, driven } => Some(vec![driving, driven]),
-                _ => None,
-            },
-            &eval,
-            |x| SearchPoint::Parameters {
-                driving: x[0],
-                driven: x[1],
-            },
-        )?;
+        let refined = self.refine_starts(&starts, &[step, step], options, control, &eval)?;
         report.evaluations = refined.iter().map(|d| d.evaluations).sum();
         report.designs = self.finish_designs(refined, options, &mut report, control)?;
         if report.designs.is_empty() {

@@ -18,7 +18,7 @@ pub(crate) use grid::finite_bounds;
 pub use grid::{Grid, Viewport};
 pub use line::{CircleOrLine, Line};
 pub use pose::{MAX_POSES, PerPose, Pose, Similarity};
-pub(crate) use show::{debug_shows, str_names};
+pub(crate) use show::{debug_shows, parsed_enum, str_names};
 
 use nalgebra::{Point2, Vector2};
 

@@ -12,22 +12,13 @@ use crate::engine::Control;
 use crate::linkage::LinkageFigures;
 use crate::synthesis::{Dyad, Pole, SynthesizedFourBar, Task};
 
-/// A small deterministic generator (splitmix64), uniform in `[0, 1)`.
-struct Rng(u64);
+/// The integration tests' generator (splitmix64), uniform in `[0, 1)`.
+#[path = "../../../../../tests/rust/common/splitmix.rs"]
+mod splitmix;
+use splitmix::Rng;
 
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
+    /// A point uniform in the square of half side `r` about `c`.
     fn point(&mut self, c: Point2<f64>, r: f64) -> Point2<f64> {
         c + Vector2::new(self.range(-r, r), self.range(-r, r))
     }

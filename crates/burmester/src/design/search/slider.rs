@@ -26,7 +26,6 @@
 use core::f64::consts::PI;
 use core::sync::atomic::{AtomicUsize, Ordering};
 
-use nalgebra::Point2;
 use rayon::prelude::*;
 
 use super::{
@@ -336,23 +335,7 @@ impl Task {
             let (a, s) = (dyad_at(self, x)?, slider_at(x[2])?);
             exact.judge_slider(&a, &s, false, margin)
         };
-        let refined = self.refine_starts(
-            &starts,
-            &h,
-            options,
-            control,
-            |s| match s.point {
-                SearchPoint::SliderCircle { driving, slider } => {
-                    Some(vec![driving.x, driving.y, slider])
-                }
-                _ => None,
-            },
-            &eval,
-            |x| SearchPoint::SliderCircle {
-                driving: Point2::new(x[0], x[1]),
-                slider: x[2],
-            },
-        )?;
+        let refined = self.refine_starts(&starts, &h, options, control, &eval)?;
         report.evaluations = refined.iter().map(|d| d.evaluations).sum();
         report.designs = self.finish_designs(refined, options, &mut report, control)?;
         if report.designs.is_empty() {
@@ -448,21 +431,7 @@ impl Task {
                     let a = f.dyad_at_parameter(x[0]).ok()?.dyad();
                     exact.judge_slider(&a, s, false, margin)
                 };
-                refined.extend(self.refine_starts(
-                    &mine,
-                    &[step],
-                    options,
-                    control,
-                    |st| match st.point {
-                        SearchPoint::SliderPoint { driving, .. } => Some(vec![driving]),
-                        _ => None,
-                    },
-                    &eval,
-                    |x| SearchPoint::SliderPoint {
-                        driving: x[0],
-                        slider: j,
-                    },
-                )?);
+                refined.extend(self.refine_starts(&mine, &[step], options, control, &eval)?);
             }
             report.evaluations = refined.iter().map(|d| d.evaluations).sum();
             refined

@@ -29,7 +29,6 @@
 //! poles and `C0`, exact conics, and the same sign test.
 
 use core::f64::consts::{FRAC_PI_8, TAU};
-use core::str::FromStr;
 
 use nalgebra::{Matrix2, Point2, Vector2};
 
@@ -41,55 +40,31 @@ use crate::synthesis::three::{Cremona, Maps};
 use crate::synthesis::{Dyad, DyadKind, SynthesizedFourBar, Task};
 use crate::tolerance;
 
-/// How to decide whether a driving center point is free of the branch defect.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Method {
-    /// The signs of the two transformed Filemon conics at the point: two
-    /// quadratic forms, no division. Defined everywhere, the pole circle
-    /// included.
-    Conic,
-    /// The circle point of the point, then the branch sign at the three
-    /// poses.
-    Direct,
-    /// Build the linkage and drive it (the four-bar of a driven crank, the
-    /// slider-crank, [`Task::slider_crank`], of a driven slider): from
-    /// each pose to the next, the
-    /// input turns (either way, reversing between poses as needed) inside
-    /// its input range in pose 1's assembly mode, in steps of at most
-    /// `pi/8`, every step solved by the position analysis, and the coupler
-    /// must land on the pose. Free when every pose is reached without a
-    /// dead position. Besides the branch defect this also sees the circuit
-    /// defect of an input that rocks in two separate arcs (poses on both),
-    /// which the sign tests cannot.
-    Simulate,
-}
-
-impl Method {
+crate::geom::parsed_enum! {
+    /// How to decide whether a driving center point is free of the branch defect.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+    pub enum Method("classification method", "\"conic\", \"direct\" or \"simulate\"") {
+        /// The signs of the two transformed Filemon conics at the point: two
+        /// quadratic forms, no division. Defined everywhere, the pole circle
+        /// included.
+        Conic => "conic",
+        /// The circle point of the point, then the branch sign at the three
+        /// poses.
+        Direct => "direct",
+        /// Build the linkage and drive it (the four-bar of a driven crank, the
+        /// slider-crank, [`Task::slider_crank`], of a driven slider): from
+        /// each pose to the next, the
+        /// input turns (either way, reversing between poses as needed) inside
+        /// its input range in pose 1's assembly mode, in steps of at most
+        /// `pi/8`, every step solved by the position analysis, and the coupler
+        /// must land on the pose. Free when every pose is reached without a
+        /// dead position. Besides the branch defect this also sees the circuit
+        /// defect of an input that rocks in two separate arcs (poses on both),
+        /// which the sign tests cannot.
+        Simulate => "simulate",
+    }
     /// `"conic"`, `"direct"` or `"simulate"`.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Method::Conic => "conic",
-            Method::Direct => "direct",
-            Method::Simulate => "simulate",
-        }
-    }
-}
-
-impl FromStr for Method {
-    type Err = InvalidInput;
-
-    fn from_str(s: &str) -> Result<Self, InvalidInput> {
-        match s.to_ascii_lowercase().as_str() {
-            "conic" => Ok(Method::Conic),
-            "direct" => Ok(Method::Direct),
-            "simulate" => Ok(Method::Simulate),
-            _ => Err(InvalidInput::UnknownName {
-                what: "classification method",
-                expected: "\"conic\", \"direct\" or \"simulate\"",
-                found: s.to_owned(),
-            }),
-        }
-    }
+    pub fn as_str;
 }
 
 /// A quadratic `y^T K y + L . y + F` in the task's local frame.

@@ -1,0 +1,23 @@
+//! A small deterministic generator (splitmix64), uniform in `[0, 1)`, so
+//! that random cases are the same on every run. Standard library only: the
+//! integration tests use it through `common`, the core's unit tests by
+//! path.
+
+/// The generator's state.
+pub(crate) struct Rng(pub(crate) u64);
+
+impl Rng {
+    /// The next number, uniform in `[0, 1)` (53 random bits).
+    pub(crate) fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// The next number, uniform in `[lo, hi)`.
+    pub(crate) fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+}
