@@ -3659,3 +3659,58 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
         Some((-0.18156912545425133, 931.6750915794414)),
     );
 }
+
+/// Issue 24 (five33): a double root of the resultant whose direction from
+/// `Q` holds two common points, one on each root of `f`'s quadratic (the
+/// quadratics proportional, beyond the rounding band's test): the point
+/// that `h`'s quadratic was nearest zero at was listed twice and the other
+/// lost. Each moved frame against the exact reference of its float task.
+#[test]
+fn issue24_two_points_on_one_line_from_q_are_both_listed() {
+    let task = |p: &[(f64, f64, f64)]| -> Vec<Pose> {
+        p.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect()
+    };
+    // fuzz/open/burmester_points/point-not-found-in-another-frame-23b098df,
+    // moved: both real points were listed twice (4 for 2), `3.5e-6` and
+    // `7.4e-6` task sizes off; poses 2, 3 and 5 within `1e-11` task sizes
+    // of one position.
+    assert_reference_points(
+        &task(&[
+            (-43421.83527723327, -134590.27692938136, 60.734375),
+            (-6.707766915776246e-9, 0.005859374999910994, 61.734375),
+            (3.865672158030011e-7, 0.005858387731671675, 61.234375),
+            (-0.234036564135073, -0.22635374650369577, 61.734374999999),
+            (-9.483919170690497e-7, 0.005858892718912664, 61.73436442),
+        ]),
+        &[
+            (-0.06213956355321914, 0.11155031771031864),
+            (108430.05430328513, -109281.67820035576),
+        ],
+        None,
+    );
+    // db462cb9, moved: `(-2.5e-5, -0.010016)` listed twice, `(0.005,
+    // 1.98781)` missing; the reference has a point at infinity too (the
+    // positions of poses 1 and 3, and of 2 and 4, coincide).
+    let db462cb9 = task(&[
+        (3.316796875e-11, -1.2890625e-10, 0.0),
+        (0.010000000033167969, 3.9756249998710937, 0.0),
+        (3.316796875e-11, -1.2890625e-10, -PI),
+        (0.010000000033167969, 3.9756249998710937, -PI),
+        (3.316796875e-11, -0.010000000128906249, -1.0),
+    ]);
+    let five = FivePositions::new(&db462cb9).unwrap_or_else(|e| panic!("{e:?}"));
+    let pts = five.burmester_points();
+    assert_eq!(pts.len(), 3, "{five:?}");
+    assert_eq!(five.sliders().len(), 1, "{five:?}");
+    for (x, y) in [
+        (0.0050000000331679685, 1.9878124998710937),
+        (-2.5193709610618778e-5, -0.010016087492318454),
+        (792.2725195312831, -0.0050000001289062495),
+    ] {
+        assert!(
+            pts.iter()
+                .any(|d| (d.center - Point2::new(x, y)).norm() <= 1e-8 * five.size()),
+            "({x}, {y}) not in {five:?}"
+        );
+    }
+}

@@ -915,8 +915,10 @@ impl Elimination {
                         (dv * t * t + ev * t + gv).abs()
                             / (dv.abs() * t * t + ev.abs() * t.abs() + gv.abs())
                     };
-                    let t = quadratic_roots(av, bv, cv)
-                        .into_iter()
+                    let roots_f = quadratic_roots(av, bv, cv);
+                    let t = roots_f
+                        .iter()
+                        .copied()
                         .filter(|t| t.is_finite())
                         .min_by(|x, y| rel(*x).total_cmp(&rel(*y)))
                         .unwrap_or(num / den);
@@ -924,6 +926,25 @@ impl Elimination {
                         cands.push(Common::At(self.q + w * t));
                     } else {
                         cands.push(Common::Infinite(w));
+                    }
+                    // A double root of the resultant whose direction holds
+                    // two common points, one on each root of `f`'s quadratic
+                    // (the quadratics proportional, beyond the rounding
+                    // band's test): both points (a point and a pole, or two
+                    // points), not the one listed twice.
+                    if mult >= 2 && roots_f.len() == 2 {
+                        let other = if roots_f[0] == t {
+                            roots_f[1]
+                        } else {
+                            roots_f[0]
+                        };
+                        if other.is_finite()
+                            && other.abs() <= far
+                            && rel(other) <= PROPORTIONAL_REL
+                            && (other - t).abs() > DOUBLE_REACH * (1.0 + t.abs())
+                        {
+                            cands.push(Common::At(self.q + w * other));
+                        }
                     }
                 }
             }
@@ -1051,6 +1072,13 @@ const MAX_POINTS: usize = 4;
 /// same when they agree within this (local units, plus the pole's distance;
 /// radians for directions at infinity).
 const POLE_MATCH: f64 = 1e-6;
+
+/// Along a double root of the resultant, the other root of `f`'s quadratic
+/// is a common point too when `h`'s quadratic is zero there within this
+/// much of its terms (a root's direction is known to about the square
+/// root of the band there; a root of `f` off `h` leaves terms of its own
+/// size).
+const PROPORTIONAL_REL: f64 = 1e-4;
 
 /// The root of the resultant nearest the curves' common asymptotic
 /// direction, within this many radians, is that common point at infinity.
