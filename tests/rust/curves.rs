@@ -3487,6 +3487,11 @@ fn issue24_a_choice_that_lost_roots_is_not_preferred() {
     );
 }
 
+/// Poses from `(x, y, angle)`.
+fn poses_of(p: &[(f64, f64, f64)]) -> Vec<Pose> {
+    p.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect()
+}
+
 /// The library's Burmester points of `poses` are the exact reference's
 /// (`fuzz/reference/open_five.py`'s elimination, sympy and mpmath at 60
 /// digits, of this float task): one listed point within `1e-8` task sizes
@@ -3536,13 +3541,10 @@ fn assert_reference_points(poses: &[Pose], near: &[(f64, f64)], far: Option<(f64
 /// such a pole is at infinity for the elimination and is matched there.
 #[test]
 fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
-    let task = |p: &[(f64, f64, f64)]| -> Vec<Pose> {
-        p.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect()
-    };
     // fuzz/open/burmester_points/point-not-found-in-another-frame-392c3f6d,
     // moved (was 2 of 4).
     assert_reference_points(
-        &task(&[
+        &poses_of(&[
             (920026676.147771, -391856310.4035118, 60.8584073464102),
             (246.09414185723062, 0.0009200260381097809, 62.4292036732051),
             (-2403.310290970858, -14237.617488571055, 60.8584073464102),
@@ -3559,7 +3561,7 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
     );
     // d2493702, moved (was 2 of 4).
     assert_reference_points(
-        &task(&[
+        &poses_of(&[
             (-9923.464039179265, -79.0070602912994, -99.87109375),
             (-9923.464118186386, -79.00712159280621, -99.77109375),
             (-9984.765563698493, -7.900712157919454e-5, -132.87109375),
@@ -3576,7 +3578,7 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
     );
     // d5f76a33, moved (was 2 of 4).
     assert_reference_points(
-        &task(&[
+        &poses_of(&[
             (-32226.768378512574, -94664.85831546837, -3.469717653589793),
             (
                 -0.01611333685684324,
@@ -3603,7 +3605,7 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
     // 3.5e17 task sizes out, a slider within rounding (as given: 3 and a
     // slider).
     assert_reference_points(
-        &task(&[
+        &poses_of(&[
             (-7651734.772242906, -24266192.346044935, -99.265625),
             (-7651734.772242906, -24266192.346044935, -102.4072176535898),
             (0.9537097958385649, -0.3007284910372859, -99.265625),
@@ -3619,7 +3621,7 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
     );
     // 533082da, moved (was 2: the point 89 task sizes out missed).
     assert_reference_points(
-        &task(&[
+        &poses_of(&[
             (-0.008567884056360787, 0.005156681374368464, 71.71484375),
             (-0.02570365216908236, 0.015470044123105391, 71.71484375),
             (0.0, 0.0, 68.5732510964102),
@@ -3640,7 +3642,7 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
     // 21ea384e, moved (was 2 and 2 sliders: a near point missed, a far
     // pole a slider).
     assert_reference_points(
-        &task(&[
+        &poses_of(&[
             (9.377734375000001e-14, 6.2390625e-14, 6.8e-13),
             (1.7109375e-14, 6.237568359374999e-14, -PI),
             (
@@ -3667,15 +3669,12 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
 /// lost. Each moved frame against the exact reference of its float task.
 #[test]
 fn issue24_two_points_on_one_line_from_q_are_both_listed() {
-    let task = |p: &[(f64, f64, f64)]| -> Vec<Pose> {
-        p.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect()
-    };
     // fuzz/open/burmester_points/point-not-found-in-another-frame-23b098df,
     // moved: both real points were listed twice (4 for 2), `3.5e-6` and
     // `7.4e-6` task sizes off; poses 2, 3 and 5 within `1e-11` task sizes
     // of one position.
     assert_reference_points(
-        &task(&[
+        &poses_of(&[
             (-43421.83527723327, -134590.27692938136, 60.734375),
             (-6.707766915776246e-9, 0.005859374999910994, 61.734375),
             (3.865672158030011e-7, 0.005858387731671675, 61.234375),
@@ -3691,7 +3690,7 @@ fn issue24_two_points_on_one_line_from_q_are_both_listed() {
     // db462cb9, moved: `(-2.5e-5, -0.010016)` listed twice, `(0.005,
     // 1.98781)` missing; the reference has a point at infinity too (the
     // positions of poses 1 and 3, and of 2 and 4, coincide).
-    let db462cb9 = task(&[
+    let db462cb9 = poses_of(&[
         (3.316796875e-11, -1.2890625e-10, 0.0),
         (0.010000000033167969, 3.9756249998710937, 0.0),
         (3.316796875e-11, -1.2890625e-10, -PI),
