@@ -8,7 +8,9 @@
 use nalgebra::{Matrix4, Point2, Vector2, Vector4};
 
 use crate::error::Result;
-use crate::geom::cubic::roots::{form_eval, form_mul, form_roots_mult, form_sub, quadratic_roots};
+use crate::geom::cubic::roots::{
+    form_eval, form_mul, form_roots_mult, form_sub, quadratic_roots, roots_in_mult,
+};
 use crate::geom::cubic::{gradient as grad, hessian as hess};
 use crate::geom::{Cubic, LocalFrame, PerPose, Pose, cross, perp, wrap_angle};
 use crate::synthesis::Dyad;
@@ -485,6 +487,41 @@ impl Bounded {
         }
     }
 
+    /// The form in coordinates turned by the angle whose cosine and sine
+    /// are `(c, s)`: `f'(w') = f(rot w')`, with its bound carried through
+    /// (the magnitudes, and the rounding of the turn: `eps` of each term
+    /// per factor).
+    fn rotated(&self, c: f64, s: f64) -> Bounded {
+        let n = self.v.len();
+        let turn = |f: &[f64], x: [f64; 2], y: [f64; 2]| {
+            let mut out = vec![0.0; n];
+            for (i, &coef) in f.iter().enumerate() {
+                let mut term = vec![coef];
+                for _ in 0..n - 1 - i {
+                    term = form_mul(&term, &x);
+                }
+                for _ in 0..i {
+                    term = form_mul(&term, &y);
+                }
+                for (o, t) in out.iter_mut().zip(&term) {
+                    *o += t;
+                }
+            }
+            out
+        };
+        let (ac, as_) = (c.abs(), s.abs());
+        let grown: Vec<f64> = self
+            .e
+            .iter()
+            .zip(&self.v)
+            .map(|(e, v)| e + n as f64 * v.abs())
+            .collect();
+        Bounded {
+            v: turn(&self.v, [c, -s], [s, c]),
+            e: turn(&grown, [ac, as_], [as_, ac]),
+        }
+    }
+
     /// The value at `w` and its error bound (in units of `eps`, with the
     /// rounding of the evaluation).
     fn at(&self, w: Vector2<f64>) -> (f64, f64) {
@@ -494,6 +531,15 @@ impl Bounded {
             form_eval(&self.e, ax, ay) + form_eval(&self.abs(), ax, ay),
         )
     }
+}
+
+/// The resultant `R(w) = (a g - c d)^2 - (a e - b d)(b g - c e)` of the
+/// forms `a, b, c, d, e, g`, with its rounding bound.
+fn resultant([a, b, c, d, e, g]: [&Bounded; 6]) -> Bounded {
+    let agcd = a.mul(g).sub(&c.mul(d));
+    let aebd = a.mul(e).sub(&b.mul(d));
+    let bgce = b.mul(g).sub(&c.mul(e));
+    agcd.mul(&agcd).sub(&aebd.mul(&bgce))
 }
 
 /// Whether a value is zero within the rounding band of its bound.
@@ -615,12 +661,6 @@ impl Elimination {
         let [d, e, g] = at_q([1, 2, 4], false);
         let [ad, bd, cd] = at_q([1, 2, 3], true);
         let [dd, ed, gd] = at_q([1, 2, 4], true);
-        let resultant = |[a, b, c, d, e, g]: [&Bounded; 6]| {
-            let agcd = a.mul(g).sub(&c.mul(d));
-            let aebd = a.mul(e).sub(&b.mul(d));
-            let bgce = b.mul(g).sub(&c.mul(e));
-            agcd.mul(&agcd).sub(&aebd.mul(&bgce))
-        };
         let r = resultant([&a, &b, &c, &d, &e, &g]);
         let rd = resultant([&ad, &bd, &cd, &dd, &ed, &gd]);
         if rd
@@ -755,6 +795,50 @@ impl Elimination {
         (r.0, tolerance::BURMESTER_EPS * f64::EPSILON * r.1)
     }
 
+    /// The real roots of the resultant (angles in `[0, pi)`, with their
+    /// multiplicity): those of [`form_roots_mult`] on its expanded
+    /// coefficients, and near every root of those coefficients (real, or
+    /// complex within [`CLUSTER_WINDOW`] of the real line) again from the
+    /// forms turned to put that root at `w = (1, 0)`.
+    ///
+    /// The expanded coefficients are accurate only relative to their own
+    /// size: where several roots crowd within `1e-5` rad of a direction
+    /// (Burmester points nearly on one line through `Q`) at `tan` `0.4`
+    /// from the chart's axis, the polynomial's terms there cancel to far
+    /// below their rounding, its critical points are noise, and two or four
+    /// real roots were lost (a task turned by a frame change listed 2 of its
+    /// 4 points; given with that line along an axis, all 4). Turned to the
+    /// crowd, the low coefficients are the forms' values there, as accurate
+    /// as [`Elimination::resultant_at`], so the roots are found alike in
+    /// every frame.
+    fn roots(&self) -> Vec<(f64, usize)> {
+        let value = |wx: f64, wy: f64| self.resultant_at(Vector2::new(wx, wy));
+        let mut roots = form_roots_mult(&self.r.v, &value);
+        let gap = |x: f64, y: f64| {
+            let d = (x - y).rem_euclid(core::f64::consts::PI);
+            d.min(core::f64::consts::PI - d)
+        };
+        for (center, half) in clusters(&self.r.v) {
+            let (s, c) = center.sin_cos();
+            let [a, b, cc, d, e, g] = self.forms.clone().map(|f| f.rotated(c, s));
+            let turned = resultant([&a, &b, &cc, &d, &e, &g]);
+            let t = half.tan();
+            let found: Vec<(f64, usize)> = roots_in_mult(&turned.v, -1.5 * t, 1.5 * t, &|u| {
+                value(c - s * u, s + c * u)
+            })
+            .into_iter()
+            .filter(|(u, _)| u.abs() <= t)
+            .map(|(u, m)| ((center + u.atan()).rem_euclid(core::f64::consts::PI), m))
+            .collect();
+            roots.retain(|&(r, _)| {
+                gap(r, center) > half && found.iter().all(|&(f, _)| gap(r, f) > CLUSTER_SAME)
+            });
+            roots.extend(found);
+        }
+        roots.sort_by(|x, y| x.0.total_cmp(&y.0));
+        roots
+    }
+
     /// The common points of the two curves other than `Q`, `P13`, `P23`
     /// and the circular points: `(centers (local), multiplicity)` and
     /// `(directions at infinity, multiplicity)`.
@@ -768,7 +852,7 @@ impl Elimination {
     /// among them once each and are taken out.
     #[allow(clippy::type_complexity)]
     fn solve(&self) -> Result<(Vec<(Vector2<f64>, usize)>, Vec<(Vector2<f64>, usize)>)> {
-        let roots = form_roots_mult(&self.r.v, &|wx, wy| self.resultant_at(Vector2::new(wx, wy)));
+        let roots = self.roots();
         let mut used = [false; 2];
         let mut finite = Vec::new();
         let mut infinite = Vec::new();
@@ -831,8 +915,10 @@ impl Elimination {
                         (dv * t * t + ev * t + gv).abs()
                             / (dv.abs() * t * t + ev.abs() * t.abs() + gv.abs())
                     };
-                    let t = quadratic_roots(av, bv, cv)
-                        .into_iter()
+                    let roots_f = quadratic_roots(av, bv, cv);
+                    let t = roots_f
+                        .iter()
+                        .copied()
                         .filter(|t| t.is_finite())
                         .min_by(|x, y| rel(*x).total_cmp(&rel(*y)))
                         .unwrap_or(num / den);
@@ -840,6 +926,25 @@ impl Elimination {
                         cands.push(Common::At(self.q + w * t));
                     } else {
                         cands.push(Common::Infinite(w));
+                    }
+                    // A double root of the resultant whose direction holds
+                    // two common points, one on each root of `f`'s quadratic
+                    // (the quadratics proportional, beyond the rounding
+                    // band's test): both points (a point and a pole, or two
+                    // points), not the one listed twice.
+                    if mult >= 2 && roots_f.len() == 2 {
+                        let other = if roots_f[0] == t {
+                            roots_f[1]
+                        } else {
+                            roots_f[0]
+                        };
+                        if other.is_finite()
+                            && other.abs() <= far
+                            && rel(other) <= PROPORTIONAL_REL
+                            && (other - t).abs() > DOUBLE_REACH * (1.0 + t.abs())
+                        {
+                            cands.push(Common::At(self.q + w * other));
+                        }
                     }
                 }
             }
@@ -856,6 +961,17 @@ impl Elimination {
                         }
                         (Common::Infinite(u), SharedPole::Infinite(x)) => {
                             cross(u, *x).abs() <= POLE_MATCH
+                        }
+                        // A pole so far out that its direction from `Q` is
+                        // within the match of a root to the asymptote is,
+                        // for this elimination, at infinity there too: that
+                        // root is the pole (a slider listed in its place
+                        // made a point near the task vanish, the count
+                        // even).
+                        (Common::Infinite(u), SharedPole::At(x)) => {
+                            let r = x - self.q;
+                            r.norm() * ASYMPTOTE_MATCH >= 1.0
+                                && cross(u, r / r.norm()).abs() <= ASYMPTOTE_MATCH
                         }
                         _ => false,
                     };
@@ -876,6 +992,77 @@ impl Elimination {
     }
 }
 
+/// The directions (angles in `[0, pi)`) of the roots of a binary form's
+/// expanded coefficients, real or within [`CLUSTER_WINDOW`] rad of the real
+/// line (the eigenvalues of the companion matrices of both charts), grouped
+/// into windows `(center, half width)` at least [`CLUSTER_WINDOW`] wide
+/// (see [`Elimination::roots`]). Empty when the eigenvalues are not found.
+fn clusters(f: &[f64]) -> Vec<(f64, f64)> {
+    use core::f64::consts::PI;
+    let mut angles = Vec::new();
+    let chart = |p: &[f64]| -> Vec<nalgebra::Complex<f64>> {
+        let mut n = p.len();
+        while n > 0 && p[n - 1] == 0.0 {
+            n -= 1;
+        }
+        if n < 2 || !p[..n].iter().all(|c| c.is_finite()) {
+            return Vec::new();
+        }
+        let deg = n - 1;
+        let lead = p[deg];
+        let comp = nalgebra::DMatrix::from_fn(deg, deg, |i, j| {
+            if i == 0 {
+                -p[deg - 1 - j] / lead
+            } else if i == j + 1 {
+                1.0
+            } else {
+                0.0
+            }
+        });
+        if !comp.iter().all(|v| v.is_finite()) {
+            return Vec::new();
+        }
+        comp.try_schur(f64::EPSILON, 1000)
+            .map(|s| s.complex_eigenvalues().iter().copied().collect())
+            .unwrap_or_default()
+    };
+    for u in chart(f) {
+        if u.re.abs() <= 1.0 && u.im.abs() / (1.0 + u.re * u.re) <= CLUSTER_WINDOW {
+            angles.push(u.re.atan().rem_euclid(PI));
+        }
+    }
+    let rev: Vec<f64> = f.iter().rev().copied().collect();
+    for v in chart(&rev) {
+        if v.re.abs() < 1.0 && v.im.abs() / (1.0 + v.re * v.re) <= CLUSTER_WINDOW {
+            angles.push(1.0f64.atan2(v.re));
+        }
+    }
+    angles.sort_by(f64::total_cmp);
+    let mut windows: Vec<(f64, f64)> = Vec::new();
+    for a in angles {
+        match windows.last_mut() {
+            Some((lo, hi)) if a - *hi <= 2.0 * CLUSTER_WINDOW => *hi = a,
+            _ => windows.push((a, a)),
+        }
+    }
+    windows
+        .into_iter()
+        .map(|(lo, hi)| (0.5 * (lo + hi), 0.5 * (hi - lo) + CLUSTER_WINDOW))
+        .collect()
+}
+
+/// The half width (rad) of a window in which the resultant's roots are
+/// found again from the forms turned to its center, and how far from the
+/// real line (rad) a complex root of the expanded coefficients may be to
+/// mark one: a crowd of `k` roots within `1e-5` rad is spread by the
+/// coefficients' rounding (`1e-13` relative and more) over about its
+/// `k`-th root (`1e-3` for four), which this holds with room.
+const CLUSTER_WINDOW: f64 = 1e-2;
+
+/// A root found in a window and one found outside it within this many
+/// rad are one root (found twice at the window's edge).
+const CLUSTER_SAME: f64 = 1e-9;
+
 /// The most Burmester points (with multiplicity, sliders included) five
 /// poses can have: the nine common points of two cubics less `Q`, `P13`,
 /// `P23` and the two circular points.
@@ -885,6 +1072,13 @@ const MAX_POINTS: usize = 4;
 /// same when they agree within this (local units, plus the pole's distance;
 /// radians for directions at infinity).
 const POLE_MATCH: f64 = 1e-6;
+
+/// Along a double root of the resultant, the other root of `f`'s quadratic
+/// is a common point too when `h`'s quadratic is zero there within this
+/// much of its terms (a root's direction is known to about the square
+/// root of the band there; a root of `f` off `h` leaves terms of its own
+/// size).
+const PROPORTIONAL_REL: f64 = 1e-4;
 
 /// The root of the resultant nearest the curves' common asymptotic
 /// direction, within this many radians, is that common point at infinity.
