@@ -28,7 +28,7 @@ import mpmath
 import sympy as sp
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "python"))
-from burmester_reference import _det3, _exact, _rat, _rows  # noqa: E402
+from burmester_reference import _det3, _displacements, _rows  # noqa: E402
 
 mpmath.mp.dps = 60
 
@@ -36,14 +36,8 @@ mpmath.mp.dps = 60
 def _circle_rows(poses, x, y):
     """The rows ``(a_k, b_k)`` of the circle-point condition, linear in the
     circle point ``z = (x, y)``: ``a_k(z) . G = b_k(z)``."""
-    p1 = (_exact(poses[0][0]), _exact(poses[0][1]))
     rows = []
-    for px, py, a in poses[1:]:
-        d = mpmath.mpf(a) - mpmath.mpf(poses[0][2])
-        c, s = _rat(mpmath.cos(d)), _rat(mpmath.sin(d))
-        pk = (_exact(px), _exact(py))
-        tx = pk[0] - (c * p1[0] - s * p1[1])
-        ty = pk[1] - (s * p1[0] + c * p1[1])
+    for c, s, tx, ty in _displacements(poses):
         rzx, rzy = c * x - s * y, s * x + c * y
         ax = rzx - x + tx
         ay = rzy - y + ty

@@ -34,20 +34,27 @@ def _mp(c):
     return mpmath.mpf(c.p) / c.q
 
 
+def _displacements(poses):
+    """Each pose ``k >= 2``'s displacement from pose 1, exact: the rotation's
+    ``(cos, sin)`` (the angle difference's, to 60 digits, as rationals) and
+    the translation ``t_k = p_k - R_k p_1``, as ``(c, s, tx, ty)``."""
+    p1 = (_exact(poses[0][0]), _exact(poses[0][1]))
+    out = []
+    for px, py, a in poses[1:]:
+        d = mpmath.mpf(a) - mpmath.mpf(poses[0][2])
+        c, s = _rat(mpmath.cos(d)), _rat(mpmath.sin(d))
+        pk = (_exact(px), _exact(py))
+        out.append((c, s, pk[0] - (c * p1[0] - s * p1[1]), pk[1] - (s * p1[0] + c * p1[1])))
+    return out
+
+
 def _rows(poses, x, y):
     """The rows ``(a_k . G-linear, b_k)`` of the dyad condition as sympy
     polynomials in the center ``G = (x, y)``: for each pose k >= 2,
     ``a_k(G) . z = b_k(G)`` with ``a_k(G) = conj(R_k) t_k + (1 - conj(R_k)) G``
     and ``b_k(G) = t_k . G - |t_k|^2 / 2``."""
-    p1 = (_exact(poses[0][0]), _exact(poses[0][1]))
     rows = []
-    for px, py, a in poses[1:]:
-        d = mpmath.mpf(a) - mpmath.mpf(poses[0][2])
-        c, s = _rat(mpmath.cos(d)), _rat(mpmath.sin(d))
-        pk = (_exact(px), _exact(py))
-        # t_k = p_k - R_k p_1
-        tx = pk[0] - (c * p1[0] - s * p1[1])
-        ty = pk[1] - (s * p1[0] + c * p1[1])
+    for c, s, tx, ty in _displacements(poses):
         # conj(R_k) t_k
         ckx, cky = c * tx + s * ty, -s * tx + c * ty
         mr, mi = 1 - c, s  # 1 - conj(R_k) = (1 - c) + i s
