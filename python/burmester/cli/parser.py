@@ -420,8 +420,7 @@ def _add_drive(sub: _Commands) -> None:
     p = sub.add_parser("drive", help="a motor for a linkage whose input swings: an added dyad (six-bar)",
                        description="Find the best motor drive for the task's linkage: a crank-rocker "
                                    "added to its input link (the Watt II six-bar), so a motor turning "
-                                   "a crank drives it through the poses.",
-                       formatter_class=argparse.RawDescriptionHelpFormatter)
+                                   "a crank drives it through the poses.")
     _task_arg(p)
     p.add_argument("-o", "--output", default=None,
                    help="also write the six-bar: a picture (.png, .pdf, ...), an animation over a "
@@ -470,8 +469,7 @@ def _add_actuator(sub: _Commands) -> None:
                                    "over ground pivots (monotone stroke, stroke ratio, force transmission "
                                    "angle, size) and the best placement. The task file's [actuator] table "
                                    "gives the defaults (also where the ground pivot is searched, x, y, and "
-                                   "base_plate); these flags override it.",
-                       formatter_class=argparse.RawDescriptionHelpFormatter)
+                                   "base_plate); these flags override it.")
     _task_arg(p)
     p.add_argument("-o", "--output", default=None,
                    help="also draw the placement map and the chosen design (.png, .pdf, ...), export the "
