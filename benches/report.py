@@ -126,7 +126,10 @@ SECTIONS.append(
     Section(
         title="Dense grid branch sweep (`branch_sweep`)",
         benches=["branch_sweep"],
-        prefixes=["branch_sweep/", "python/branch_map"],
+        # Not "python/branch_map" alone: its `direct` figure belongs to the
+        # solution map's section (below), timed by another run.
+        prefixes=["branch_sweep/", "python/branch_map/fresh/", "python/branch_map/np_ones/",
+                  "python/branch_map/out/", "python/branch_map/out_fill/"],
         ratios=[
             Ratio(
                 "`conic` / `memset` at 4096^2",
