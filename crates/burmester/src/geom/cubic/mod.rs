@@ -283,10 +283,15 @@ impl Cubic {
         if d <= tol {
             return (true, d);
         }
-        let v = self.local_of(p);
-        let zero = v.iter().all(|x| x.is_finite())
-            && self.eval_local(v).abs() <= 64.0 * f64::EPSILON * self.magnitude_local(v);
-        (zero, d)
+        (self.is_zero_local(self.local_of(p)), d)
+    }
+
+    /// Whether the curve's value at the local point `v` is zero within the
+    /// rounding of its evaluation: the test [`Cubic::is_on`] falls back to
+    /// at a singular point, where the distance estimate says nothing.
+    pub(crate) fn is_zero_local(&self, v: Vector2<f64>) -> bool {
+        v.iter().all(|x| x.is_finite())
+            && self.eval_local(v).abs() <= 64.0 * f64::EPSILON * self.magnitude_local(v)
     }
 
     /// The gradient at a local point (local units).

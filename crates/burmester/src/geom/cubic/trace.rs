@@ -303,12 +303,6 @@ fn settle_polyline(
     out
 }
 
-/// Whether the local point `v` is on the curve within the rounding of its
-/// evaluation (the rule of [`Cubic::is_on`] at a singular point).
-fn on_curve_local(cubic: &Cubic, v: Vector2<f64>) -> bool {
-    cubic.eval_local(v).abs() <= 64.0 * f64::EPSILON * cubic.magnitude_local(v)
-}
-
 /// A traced vertex settled onto the curve: Newton steps on the curve's own
 /// value (in its local frame), each kept only while it lowers `|f|` and
 /// the vertex stays within `reach` (plane units) of where it was and
@@ -331,9 +325,6 @@ fn settle(
     reach: f64,
     across: Option<Vector2<f64>>,
 ) -> Option<Point2<f64>> {
-    let inside = |q: Point2<f64>| {
-        q.x >= viewport.xmin && q.x <= viewport.xmax && q.y >= viewport.ymin && q.y <= viewport.ymax
-    };
     let v = cubic.local_of(p);
     // Far points (evaluated scaled) and degenerate reaches are left as
     // they are: no claim either way.
@@ -344,7 +335,7 @@ fn settle(
     {
         return Some(p);
     }
-    if on_curve_local(cubic, v) {
+    if cubic.is_zero_local(v) {
         return Some(p);
     }
     let on_x_edge = p.y == viewport.ymin || p.y == viewport.ymax;
@@ -367,12 +358,12 @@ fn settle(
             q.x = p.x;
         }
         let closer = cubic.evaluate(q).abs() < cubic.evaluate(p).abs();
-        let q = if closer && inside(q) && (q - p).norm() <= reach {
+        let q = if closer && viewport.contains(q) && (q - p).norm() <= reach {
             q
         } else {
             p
         };
-        return on_curve_local(cubic, cubic.local_of(q)).then_some(q);
+        return cubic.is_zero_local(cubic.local_of(q)).then_some(q);
     }
     let reach_local = reach / cubic.scale;
     let mut x = v;
@@ -391,12 +382,12 @@ fn settle(
             break;
         }
         let fy = cubic.eval_local(y);
-        if !(fy.abs() < f.abs() && inside(cubic.global_of(y))) {
+        if !(fy.abs() < f.abs() && viewport.contains(cubic.global_of(y))) {
             break;
         }
         (x, f) = (y, fy);
     }
-    if on_curve_local(cubic, x) {
+    if cubic.is_zero_local(x) {
         return Some(cubic.global_of(x));
     }
     let d = across.filter(|d| d.norm() > 0.0)?;
@@ -404,7 +395,7 @@ fn settle(
     let t = cubic.refine_on_line(v, d, 0.0);
     let y = v + d * t;
     let q = cubic.global_of(y);
-    (t.abs() <= reach_local && inside(q) && on_curve_local(cubic, y)).then_some(q)
+    (t.abs() <= reach_local && viewport.contains(q) && cubic.is_zero_local(y)).then_some(q)
 }
 
 /// The polylines of [`trace`] with given points of the curve made
