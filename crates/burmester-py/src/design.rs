@@ -570,87 +570,115 @@ macro_rules! py_solution_map {
 
 burmester::solution_map_columns!(py_solution_map);
 
+/// What a ranked sample of a map holds besides its place (`Pivot`,
+/// `Pair`, `SliderPivot`): its sample `(j, i)`, its linkage (of the class
+/// `L`), its margin, its score and the ranking that scored it.
+#[derive(Clone)]
+pub(crate) struct Ranked<L> {
+    pub(crate) index: (usize, usize),
+    pub(crate) linkage: L,
+    pub(crate) margin: f64,
+    pub(crate) score: f64,
+    pub(crate) ranked_by: RankBy,
+}
+
+impl<L> Ranked<L> {
+    /// The ranked part of `__new__`'s arguments (the ranking by its name).
+    pub(crate) fn new(
+        index: (Count, Count),
+        linkage: L,
+        (margin, score): (Real, Real),
+        ranked_by: &str,
+    ) -> PyResult<Self> {
+        Ok(Ranked {
+            index: (index.0.0, index.1.0),
+            linkage,
+            margin: margin.0,
+            score: score.0,
+            ranked_by: ranked_by.parse::<RankBy>().py()?,
+        })
+    }
+
+    /// The same ranking of the same linkage as `o` (the linkages compared
+    /// by `key`, floats by their bits), for `__eq__`.
+    pub(crate) fn same<K: PartialEq>(&self, o: &Self, key: impl Fn(&L) -> K) -> bool {
+        o.index == self.index
+            && key(&o.linkage) == key(&self.linkage)
+            && o.margin.to_bits() == self.margin.to_bits()
+            && o.score.to_bits() == self.score.to_bits()
+            && o.ranked_by == self.ranked_by
+    }
+}
+
+impl Ranked<PySynthesizedFourBar> {
+    /// The end of the repr: the Grashof class, the transmission, the size
+    /// ratio and the ranking.
+    pub(crate) fn repr(&self) -> String {
+        let f = &self.linkage.inner.figures;
+        let mu = if f.min_transmission.is_nan() {
+            "None".to_owned()
+        } else {
+            format!("{:.3}", f.min_transmission.to_degrees())
+        };
+        let size = self.linkage.size_ratio();
+        let by = self.ranked_by.as_str();
+        format!(
+            "{} min_transmission_deg={mu} size_ratio={size:.3} by {by}",
+            f.grashof
+        )
+    }
+}
+
+/// The [`Ranked`] part of the core's ranked sample `$p` (a `Pivot`, a
+/// `SliderPivot` or a `Pair`, whose fields have the same names), its
+/// linkage wrapped as `$linkage`.
+macro_rules! ranked_of {
+    ($p:expr, $linkage:expr) => {
+        $crate::design::Ranked {
+            index: $p.index,
+            linkage: $linkage,
+            margin: $p.margin,
+            score: $p.score,
+            ranked_by: $p.ranked_by,
+        }
+    };
+}
+pub(crate) use ranked_of;
+
 /// The getters a ranked sample of a map shares (`Pivot`, `Pair`,
-/// `SliderPivot`): a `#[pymethods]` block for `$cls`, whose fields
-/// `index`, `linkage` (of the class `$L`, compared by `$key(&linkage)`),
-/// `margin`, `score` and `ranked_by` they read. Without `$L`: a
-/// four-bar's, with the figures, the size ratio and the repr's end.
+/// `SliderPivot`): `#[pymethods]` blocks for `$cls`, which reads them from
+/// its field `ranked` (a [`Ranked`] of the linkage class `$L`). Without
+/// `$L`: a four-bar's, with the figures and the size ratio.
 macro_rules! ranked_getters {
     ($cls:ident) => {
-        $crate::design::ranked_getters!(
-            $cls,
-            $crate::classes::PySynthesizedFourBar,
-            |l: &$crate::classes::PySynthesizedFourBar| l.clone()
-        );
-
-        impl $cls {
-            /// The end of the repr: the Grashof class, the transmission,
-            /// the size ratio and the ranking.
-            fn ranked_repr(&self) -> String {
-                let f = &self.linkage.inner.figures;
-                let mu = if f.min_transmission.is_nan() {
-                    "None".to_owned()
-                } else {
-                    format!("{:.3}", f.min_transmission.to_degrees())
-                };
-                let size = self.linkage.size_ratio();
-                let by = self.ranked_by.as_str();
-                format!(
-                    "{} min_transmission_deg={mu} size_ratio={size:.3} by {by}",
-                    f.grashof
-                )
-            }
-        }
+        $crate::design::ranked_getters!($cls, $crate::classes::PySynthesizedFourBar);
 
         #[pymethods]
         impl $cls {
             #[getter]
             fn figures(&self) -> $crate::linkage::PyLinkageFigures {
-                self.linkage.figures()
+                self.ranked.linkage.figures()
             }
             #[getter]
             fn size_ratio(&self) -> f64 {
-                self.linkage.size_ratio()
+                self.ranked.linkage.size_ratio()
             }
         }
     };
-    ($cls:ident, $L:ty, $key:expr) => {
-        impl $cls {
-            /// The same ranking of the same linkage as `o` (floats by their
-            /// bits), for `__eq__`.
-            fn same_ranking(&self, o: &Self) -> bool {
-                let key = $key;
-                o.index == self.index
-                    && key(&o.linkage) == key(&self.linkage)
-                    && o.margin.to_bits() == self.margin.to_bits()
-                    && o.score.to_bits() == self.score.to_bits()
-                    && o.ranked_by == self.ranked_by
-            }
-        }
-
+    ($cls:ident, $L:ty) => {
         #[pymethods]
         impl $cls {
             #[getter]
-            fn index(&self) -> (usize, usize) {
-                self.index
-            }
-            #[getter]
             fn linkage(&self) -> $L {
-                self.linkage.clone()
-            }
-            #[getter]
-            fn margin(&self) -> f64 {
-                self.margin
-            }
-            #[getter]
-            fn score(&self) -> f64 {
-                self.score
-            }
-            #[getter]
-            fn ranked_by(&self) -> &'static str {
-                self.ranked_by.as_str()
+                self.ranked.linkage.clone()
             }
         }
+
+        $crate::getters::getters!($cls, ranked {
+            (usize, usize): index;
+            f64: margin, score;
+            str: ranked_by;
+        });
     };
 }
 pub(crate) use ranked_getters;
@@ -687,49 +715,28 @@ macro_rules! ranking_method {
 pub(crate) use ranking_method;
 
 /// `__getnewargs__` (the arguments of `__new__`) and `__eq__` (the same
-/// center and ranking, floats by their bits) of a ranked pivot `$cls`
-/// (`Pivot`, `SliderPivot`) whose linkage is a `$L`.
+/// center and ranking, floats by their bits, the linkages by `$key`) of a
+/// ranked pivot `$cls` (`Pivot`, `SliderPivot`) whose linkage is a `$L`.
 macro_rules! pivot_methods {
-    ($cls:ident, $L:ty) => {
-        impl $cls {
-            /// The pivot of `__new__`'s arguments, checked by the caller
-            /// but for the ranking's name.
-            fn from_parts(
-                center: $crate::conv::PyPoint,
-                index: ($crate::conv::Count, $crate::conv::Count),
-                linkage: $L,
-                (margin, score): ($crate::conv::Real, $crate::conv::Real),
-                ranked_by: &str,
-            ) -> PyResult<Self> {
-                use $crate::errors::IntoPy;
-                Ok($cls {
-                    center: $crate::conv::pt(center.0),
-                    index: (index.0.0, index.1.0),
-                    linkage,
-                    margin: margin.0,
-                    score: score.0,
-                    ranked_by: ranked_by.parse::<burmester::RankBy>().py()?,
-                })
-            }
-        }
-
+    ($cls:ident, $L:ty, $key:expr) => {
         #[pymethods]
         impl $cls {
             #[allow(clippy::type_complexity)]
             fn __getnewargs__(&self) -> ((f64, f64), (usize, usize), $L, f64, f64, &'static str) {
+                let r = &self.ranked;
                 (
                     self.center,
-                    self.index,
-                    self.linkage.clone(),
-                    self.margin,
-                    self.score,
-                    self.ranked_by.as_str(),
+                    r.index,
+                    r.linkage.clone(),
+                    r.margin,
+                    r.score,
+                    r.ranked_by.as_str(),
                 )
             }
             fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
                 other.cast::<$cls>().is_ok_and(|o| {
                     let o = o.get();
-                    o.center == self.center && self.same_ranking(o)
+                    o.center == self.center && self.ranked.same(&o.ranked, $key)
                 })
             }
         }
@@ -744,22 +751,14 @@ ranked_getters!(PyPivot);
 #[derive(Clone)]
 pub struct PyPivot {
     center: Xy,
-    index: (usize, usize),
-    linkage: PySynthesizedFourBar,
-    margin: f64,
-    score: f64,
-    ranked_by: RankBy,
+    ranked: Ranked<PySynthesizedFourBar>,
 }
 
 impl PyPivot {
     fn of(task: Task, p: &Pivot) -> Self {
         PyPivot {
             center: pt(p.center),
-            index: p.index,
-            linkage: PySynthesizedFourBar::new(task, p.linkage),
-            margin: p.margin,
-            score: p.score,
-            ranked_by: p.ranked_by,
+            ranked: ranked_of!(p, PySynthesizedFourBar::new(task, p.linkage)),
         }
     }
 }
@@ -790,14 +789,18 @@ impl PyPivot {
                 ),
             ));
         }
-        Self::from_parts(center, index, linkage, (margin, score), ranked_by)
+        let ranked = Ranked::new(index, linkage, (margin, score), ranked_by)?;
+        Ok(PyPivot {
+            center: pt(center.0),
+            ranked,
+        })
     }
     fn __repr__(&self) -> String {
         let (x, y) = self.center;
-        let index = self.index;
+        let index = self.ranked.index;
         format!(
             "<Pivot center=({x:.6}, {y:.6}) index={index:?} {}>",
-            self.ranked_repr()
+            self.ranked.repr()
         )
     }
 }
@@ -806,7 +809,7 @@ getters!(PyPivot {
     Xy: center;
 });
 
-pivot_methods!(PyPivot, PySynthesizedFourBar);
+pivot_methods!(PyPivot, PySynthesizedFourBar, PySynthesizedFourBar::clone);
 
 ranking_method!(PySolutionMap, best_pivots, ranked);
 

@@ -1,6 +1,6 @@
 //! `burmester.PairMap` and `burmester.Pair` (the core's `design::pairs`).
 
-use burmester::{Control, Pair, PairContext, Point2, RankBy, Task};
+use burmester::{Control, Pair, PairContext, Point2, Task};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
@@ -9,7 +9,7 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 use crate::classes::{PyDesignLimits, PySynthesizedFourBar, PyTask};
 use crate::conv::{Count, PyPoint, Real};
 use crate::curves::PyCurveDyad;
-use crate::design::{py_map_class, ranked_getters};
+use crate::design::{Ranked, py_map_class, ranked_getters, ranked_of};
 use crate::errors::IntoPy;
 use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
 use crate::pickle::{Reduced, reduce_to};
@@ -32,11 +32,7 @@ crate::design::ranking_method!(PyPairMap, best_pairs, ranked);
 pub struct PyPair {
     driving: PyCurveDyad,
     driven: PyCurveDyad,
-    index: (usize, usize),
-    linkage: PySynthesizedFourBar,
-    margin: f64,
-    score: f64,
-    ranked_by: RankBy,
+    ranked: Ranked<PySynthesizedFourBar>,
 }
 
 impl PyPair {
@@ -44,11 +40,7 @@ impl PyPair {
         PyPair {
             driving: (&p.driving).into(),
             driven: (&p.driven).into(),
-            index: p.index,
-            linkage: PySynthesizedFourBar::new(task, p.linkage),
-            margin: p.margin,
-            score: p.score,
-            ranked_by: p.ranked_by,
+            ranked: ranked_of!(p, PySynthesizedFourBar::new(task, p.linkage)),
         }
     }
 }
@@ -68,11 +60,7 @@ impl PyPair {
         Ok(PyPair {
             driving,
             driven,
-            index: (index.0.0, index.1.0),
-            linkage,
-            margin: margin.0,
-            score: score.0,
-            ranked_by: ranked_by.parse::<RankBy>().py()?,
+            ranked: Ranked::new(index, linkage, (margin, score), ranked_by)?,
         })
     }
     #[getter]
@@ -111,35 +99,38 @@ impl PyPair {
         Self::new(driving, driven, index, linkage, margin, score, ranked_by)
     }
     fn __reduce__<'py>(&self, py: Python<'py>) -> Reduced<'py> {
+        let r = &self.ranked;
         let args = (
             PyTask {
-                inner: self.linkage.task(),
+                inner: r.linkage.task(),
             },
             self.driving.clone(),
             self.driven.clone(),
-            self.index,
-            self.margin,
-            self.score,
-            self.ranked_by.as_str(),
+            r.index,
+            r.margin,
+            r.score,
+            r.ranked_by.as_str(),
         );
         reduce_to::<PyPair>(py, "_from_state", args)
     }
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other.cast::<PyPair>().is_ok_and(|o| {
             let o = o.get();
-            o.driving == self.driving && o.driven == self.driven && self.same_ranking(o)
+            o.driving == self.driving
+                && o.driven == self.driven
+                && self.ranked.same(&o.ranked, PySynthesizedFourBar::clone)
         })
     }
     fn __repr__(&self) -> String {
         let (a, c) = (self.driving.center, self.driven.center);
-        let index = self.index;
+        let index = self.ranked.index;
         format!(
             "<Pair driving=({:.6}, {:.6}) driven=({:.6}, {:.6}) index={index:?} {}>",
             a.0,
             a.1,
             c.0,
             c.1,
-            self.ranked_repr()
+            self.ranked.repr()
         )
     }
 }

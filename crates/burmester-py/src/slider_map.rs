@@ -143,22 +143,14 @@ impl PySolutionMap {
 #[derive(Clone)]
 pub struct PySliderPivot {
     center: Xy,
-    index: (usize, usize),
-    linkage: PySynthesizedSliderCrank,
-    margin: f64,
-    score: f64,
-    ranked_by: RankBy,
+    ranked: crate::design::Ranked<PySynthesizedSliderCrank>,
 }
 
 impl PySliderPivot {
     fn of(task: burmester::Task, p: &SliderPivot) -> Self {
         PySliderPivot {
             center: pt(p.center),
-            index: p.index,
-            linkage: PySynthesizedSliderCrank::new(p.linkage, task),
-            margin: p.margin,
-            score: p.score,
-            ranked_by: p.ranked_by,
+            ranked: crate::design::ranked_of!(p, PySynthesizedSliderCrank::new(p.linkage, task)),
         }
     }
 }
@@ -189,11 +181,15 @@ impl PySliderPivot {
                 ),
             ));
         }
-        Self::from_parts(center, index, linkage, (margin, score), ranked_by)
+        let ranked = crate::design::Ranked::new(index, linkage, (margin, score), ranked_by)?;
+        Ok(PySliderPivot {
+            center: pt(center.0),
+            ranked,
+        })
     }
     fn __repr__(&self) -> String {
         let (x, y) = self.center;
-        let l = self.linkage.core();
+        let l = self.ranked.linkage.core();
         let mu = if l.min_transmission.is_nan() {
             "None".to_owned()
         } else {
@@ -202,27 +198,27 @@ impl PySliderPivot {
         format!(
             "<SliderPivot center=({x:.6}, {y:.6}) index={:?} crank={:.6} coupler={:.6} \
              offset={:.6} min_transmission_deg={mu} size_ratio={:.3} by {}>",
-            self.index,
+            self.ranked.index,
             l.linkage.crank(),
             l.linkage.coupler(),
             l.linkage.offset(),
             self.size_ratio(),
-            self.ranked_by.as_str()
+            self.ranked.ranked_by.as_str()
         )
     }
     #[getter]
     fn size_ratio(&self) -> f64 {
-        self.linkage.size_ratio_of()
+        self.ranked.linkage.size_ratio_of()
     }
 }
 
-crate::design::ranked_getters!(
+crate::design::ranked_getters!(PySliderPivot, PySynthesizedSliderCrank);
+
+crate::design::pivot_methods!(
     PySliderPivot,
     PySynthesizedSliderCrank,
     |l: &PySynthesizedSliderCrank| *l.core()
 );
-
-crate::design::pivot_methods!(PySliderPivot, PySynthesizedSliderCrank);
 
 crate::getters::getters!(PySliderPivot {
     Xy: center;
