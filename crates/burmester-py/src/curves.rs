@@ -316,6 +316,37 @@ pub(crate) fn viewport(xmin: Real, xmax: Real, ymin: Real, ymax: Real) -> PyResu
     Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()
 }
 
+/// `polylines(xmin, xmax, ymin, ymax, tolerance=None)` of a curve class
+/// `$cls` (`Cubic`, `Conic`) wrapping a curve `inner`: `$lines(&inner,
+/// &viewport, tolerance)` computed without the GIL, as `(n, 2)` arrays.
+macro_rules! polylines_method {
+    ($cls:ident, $lines:expr) => {
+        #[pymethods]
+        impl $cls {
+            #[pyo3(signature = (xmin, xmax, ymin, ymax, tolerance = None))]
+            fn polylines<'py>(
+                &self,
+                py: Python<'py>,
+                xmin: $crate::conv::Real,
+                xmax: $crate::conv::Real,
+                ymin: $crate::conv::Real,
+                ymax: $crate::conv::Real,
+                tolerance: Option<$crate::conv::Real>,
+            ) -> PyResult<Vec<Bound<'py, numpy::PyArray2<f64>>>> {
+                use $crate::errors::IntoPy;
+                let vp = $crate::curves::viewport(xmin, xmax, ymin, ymax)?;
+                let (c, tolerance, lines_of) = (self.inner, tolerance.map(|t| t.0), $lines);
+                let lines = py.detach(|| lines_of(&c, &vp, tolerance)).py()?;
+                lines
+                    .iter()
+                    .map(|l| $crate::curves::polyline(py, l))
+                    .collect()
+            }
+        }
+    };
+}
+pub(crate) use polylines_method;
+
 /// The branch-free arcs of a four-pose construction (any driven dyad kind)
 /// inside `vp`, of the circle-point curve where `circle` (else the
 /// center-point curve), as polylines; computed without the GIL.
@@ -471,39 +502,6 @@ impl PyCubic {
             .collect())
     }
 
-    #[pyo3(signature = (xmin, xmax, ymin, ymax, tolerance = None))]
-    fn polylines<'py>(
-        &self,
-        py: Python<'py>,
-        xmin: Real,
-        xmax: Real,
-        ymin: Real,
-        ymax: Real,
-        tolerance: Option<Real>,
-    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-        let vp = viewport(xmin, xmax, ymin, ymax)?;
-        let diag = vp.diagonal();
-        let tolerance = match tolerance {
-            None => None,
-            Some(Real(t)) if (1e-9 * diag..=diag).contains(&t) => Some(t),
-            Some(Real(value)) => {
-                return Err(to_py(
-                    InvalidInput::OutsideRange {
-                        name: "tolerance",
-                        value,
-                        min: 1e-9 * diag,
-                        max: diag,
-                        unit: " (plane units: 1e-9 to 1 times the viewport's diagonal)",
-                    }
-                    .into(),
-                ));
-            }
-        };
-        let c = self.inner;
-        let trace = py.detach(|| c.trace(&vp, tolerance));
-        trace.polylines().iter().map(|l| polyline(py, l)).collect()
-    }
-
     fn __repr__(&self) -> String {
         let c: Vec<String> = self
             .inner
@@ -514,6 +512,28 @@ impl PyCubic {
         format!("Cubic([{}])", c.join(", "))
     }
 }
+
+/// `Cubic.polylines`'s `tolerance` (by default the core's), checked: from
+/// 1e-9 to 1 times the viewport's diagonal, the range `Conic::polylines`
+/// takes.
+fn cubic_tolerance(vp: &Viewport, tolerance: Option<f64>) -> burmester::Result<Option<f64>> {
+    let diag = vp.diagonal();
+    match tolerance {
+        Some(value) if !(1e-9 * diag..=diag).contains(&value) => Err(InvalidInput::OutsideRange {
+            name: "tolerance",
+            value,
+            min: 1e-9 * diag,
+            max: diag,
+            unit: " (plane units: 1e-9 to 1 times the viewport's diagonal)",
+        }
+        .into()),
+        t => Ok(t),
+    }
+}
+
+polylines_method!(PyCubic, |c: &Cubic, vp, tolerance| {
+    cubic_tolerance(vp, tolerance).map(|t| c.trace(vp, t).polylines())
+});
 
 getters!(PyCubic, inner {
     fn usize: degree;

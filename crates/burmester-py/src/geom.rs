@@ -1,7 +1,7 @@
 //! `burmester.Grid` and `burmester.Conic` (the core's `geom`).
 
 use burmester::{Conic, Grid, Vector2, Viewport};
-use numpy::{PyArray1, PyArray2, PyArrayDyn};
+use numpy::{PyArray1, PyArrayDyn};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PySequence, PyTuple};
@@ -296,26 +296,6 @@ impl PyConic {
         Ok(self.inner.distance_estimate(point.0))
     }
 
-    #[pyo3(signature = (xmin, xmax, ymin, ymax, tolerance = None))]
-    fn polylines<'py>(
-        &self,
-        py: Python<'py>,
-        xmin: Real,
-        xmax: Real,
-        ymin: Real,
-        ymax: Real,
-        tolerance: Option<Real>,
-    ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-        let vp = Viewport::new(xmin.0, xmax.0, ymin.0, ymax.0).py()?;
-        let tolerance = tolerance.map(|t| t.0);
-        let c = self.inner;
-        let lines = py.detach(|| c.polylines(&vp, tolerance)).py()?;
-        lines
-            .iter()
-            .map(|l| crate::curves::polyline(py, l))
-            .collect()
-    }
-
     fn __repr__(&self) -> String {
         let [a, b, c, d, e, f] = self.inner.coefficients();
         format!(
@@ -324,6 +304,8 @@ impl PyConic {
         )
     }
 }
+
+crate::curves::polylines_method!(PyConic, Conic::polylines);
 
 getters!(PyConic, inner {
     fn str: kind;
