@@ -468,8 +468,12 @@ fn maxima_answer_a_cancel() {
 }
 
 /// The distance from the segment `p q` to the convex polygon `poly`
-/// (0 where they meet), by hand: end points inside, edges crossing, else
-/// the least of the end-point-to-edge and vertex-to-segment distances.
+/// (0 where they meet), by another computation than the library's (which
+/// tests the edges for crossings): the distance of a point to the polygon
+/// (0 inside, else the least distance to an edge) is convex along the
+/// segment (the distance to a convex set), so a golden-section search over
+/// the segment's parameter finds its least value; the least value it
+/// evaluates is returned (exactly 0 once a point inside is found).
 fn segment_polygon_distance(p: Point2<f64>, q: Point2<f64>, poly: &[Point2<f64>]) -> f64 {
     let cross = |a: Vector2<f64>, b: Vector2<f64>| a.x * b.y - a.y * b.x;
     let point_seg = |x: Point2<f64>, a: Point2<f64>, b: Point2<f64>| {
@@ -484,25 +488,34 @@ fn segment_polygon_distance(p: Point2<f64>, q: Point2<f64>, poly: &[Point2<f64>]
             .collect();
         s.iter().all(|&v| v >= 0.0) || s.iter().all(|&v| v <= 0.0)
     };
-    if inside(p) || inside(q) {
-        return 0.0;
-    }
-    let mut best = f64::INFINITY;
-    for i in 0..n {
-        let (a, b) = (poly[i], poly[(i + 1) % n]);
-        let d1 = cross(q - p, a - p);
-        let d2 = cross(q - p, b - p);
-        let d3 = cross(b - a, p - a);
-        let d4 = cross(b - a, q - a);
-        if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
+    let at = |t: f64| {
+        let x = p + (q - p) * t;
+        if inside(x) {
             return 0.0;
         }
-        best = best
-            .min(point_seg(p, a, b))
-            .min(point_seg(q, a, b))
-            .min(point_seg(a, p, q));
+        (0..n)
+            .map(|i| point_seg(x, poly[i], poly[(i + 1) % n]))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut lo, mut hi) = (0.0, 1.0);
+    let (mut t1, mut t2) = (1.0 - g, g);
+    let (mut f1, mut f2) = (at(t1), at(t2));
+    let mut least = at(0.0).min(at(1.0)).min(f1).min(f2);
+    // 0.618^100 of the segment: below rounding.
+    for _ in 0..100 {
+        if f1 <= f2 {
+            (hi, t2, f2) = (t2, t1, f1);
+            t1 = hi - g * (hi - lo);
+            f1 = at(t1);
+        } else {
+            (lo, t1, f1) = (t1, t2, f2);
+            t2 = lo + g * (hi - lo);
+            f2 = at(t2);
+        }
+        least = least.min(f1).min(f2);
     }
-    best
+    least
 }
 
 /// The least distance of the crank `A0 A` and the coupler `A B` of `sc`

@@ -988,20 +988,13 @@ fn constraints_hold_over_the_whole_turn() {
             assert!(!map.columns.acceptable[k], "off the plate");
             continue;
         }
-        // Direct: dense crank angles, exact segment tests.
+        // Direct: dense crank angles, exact segment tests of the links
+        // found from the motion.
+        let links = moving_links(&d.sixbar);
         let collides = (0..2000).any(|s| {
-            let j: SixBarJoints = d.sixbar.joints_at(TAU * s as f64 / 2000.0).unwrap();
-            [
-                (j.drive_pivot, j.crank_joint),
-                (j.crank_joint, j.attachment),
-                (j.input_pivot, j.attachment),
-                (j.input_pivot, j.input_joint),
-                (j.input_joint, j.attachment),
-                (j.input_joint, j.rocker_joint),
-                (j.output_pivot, j.rocker_joint),
-            ]
-            .iter()
-            .any(|&(a, b)| seg_hits(a, b))
+            let j = d.sixbar.joints_at(TAU * s as f64 / 2000.0).unwrap();
+            let j = j.to_array();
+            links.iter().any(|&(a, b)| seg_hits(j[a], j[b]))
         });
         if collides {
             assert!(
@@ -1018,6 +1011,51 @@ fn constraints_hold_over_the_whole_turn() {
 
 fn grid_point(g: &Grid, k: usize) -> P {
     g.point(k % g.nx(), k / g.nx())
+}
+
+/// The moving links of `six` found from its motion, independently of the
+/// library's list of them: the pairs of its joints (`D0 D E A0 A C C0`, in
+/// [`SixBarJoints::to_array`]'s order; not the coupler point) whose
+/// distance stays the same over a crank turn, but for the pairs of fixed
+/// pivots (the ground), each segment once. Seven where no joints
+/// coincide: the drive crank, the drive coupler, the input link's three
+/// sides, the coupler and the rocker; fewer where they do (an attachment
+/// `E` at the input joint `A`: `A0 A` is `A0 E`, `A E` a point, six).
+fn moving_links(six: &SixBar) -> Vec<(usize, usize)> {
+    const FIXED: [usize; 3] = [0, 3, 6];
+    let turn: Vec<[P; 8]> = (0..16)
+        .map(|s| six.joints_at(TAU * s as f64 / 16.0).unwrap().to_array())
+        .collect();
+    let scale = six.size();
+    let near = |p: P, q: P| (p - q).norm() <= 1e-9 * scale;
+    let mut links: Vec<(usize, usize)> = Vec::new();
+    for a in 0..7 {
+        for b in a + 1..7 {
+            if FIXED.contains(&a) && FIXED.contains(&b) {
+                continue;
+            }
+            let d0 = (turn[0][a] - turn[0][b]).norm();
+            let rigid = turn
+                .iter()
+                .all(|j| ((j[a] - j[b]).norm() - d0).abs() <= 1e-9 * scale);
+            let (p, q) = (turn[0][a], turn[0][b]);
+            let again = links.iter().any(|&(c, d)| {
+                let (r, s) = (turn[0][c], turn[0][d]);
+                (near(p, r) && near(q, s)) || (near(p, s) && near(q, r))
+            });
+            if rigid && !again {
+                links.push((a, b));
+            }
+        }
+    }
+    // Every moving joint (D, E, A, C) is on a link.
+    for j in [1, 2, 4, 5] {
+        assert!(
+            links.iter().any(|&(a, b)| a == j || b == j),
+            "joint {j} on no link: {links:?}"
+        );
+    }
+    links
 }
 
 /// The attachment search returns drives best first, each the best of its

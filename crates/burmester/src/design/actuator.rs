@@ -88,7 +88,7 @@ use nalgebra::{Point2, Vector2};
 
 use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
-use crate::design::rank::{best_flagged, flagged_rank_columns};
+use crate::design::rank::{best, flagged_rank_columns};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::{Control, for_rows};
 use crate::error::{
@@ -764,46 +764,31 @@ impl ActuatorContext {
         Ok(a)
     }
 
-    /// The `k` best placements of a map's columns by `rank_by` (the
-    /// rankings of [`RankBy`] over the acceptable samples, the link ratio
-    /// that of the members with the actuator; [`RankBy::Margin`] orders the
-    /// monotone samples by their distance to the nearest non-monotone one).
-    /// Candidates closer than `min_separation` to a better one are skipped
-    /// (default, `None`: 2% of the viewport's diagonal).
-    ///
-    /// # Errors
-    ///
-    /// [`InvalidInput::OutsideRange`] for a negative or non-finite
-    /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-    /// another length than the grid; [`Error::OutOfMemory`](crate::Error::OutOfMemory).
-    pub fn best_placements(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-        columns: ActuatorRankColumns<'_>,
-    ) -> Result<Vec<Actuator>> {
-        let ranked = columns.ranked();
-        best_flagged(&self.grid, k, min_separation, rank_by, ranked, |s| {
-            self.placement_at(s)
-        })
+    best! {
+        /// The `k` best placements of a map's columns by `rank_by` (the
+        /// rankings of [`RankBy`] over the acceptable samples, the link ratio
+        /// that of the members with the actuator; [`RankBy::Margin`] orders the
+        /// monotone samples by their distance to the nearest non-monotone one).
+        /// Candidates closer than `min_separation` to a better one are skipped
+        /// (default, `None`: 2% of the viewport's diagonal).
+        ///
+        /// # Errors
+        ///
+        /// [`InvalidInput::OutsideRange`] for a negative or non-finite
+        /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
+        /// another length than the grid; [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+        best_placements(ActuatorRankColumns<'_>) -> Actuator, flagged placement_at
     }
 }
 
 impl ActuatorMap {
-    /// The `k` best placements (see [`ActuatorContext::best_placements`]).
-    ///
-    /// # Errors
-    ///
-    /// As [`ActuatorContext::best_placements`].
-    pub fn best_placements(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-    ) -> Result<Vec<Actuator>> {
-        self.context
-            .best_placements(k, min_separation, rank_by, self.rank_columns())
+    best! {
+        /// The `k` best placements (see [`ActuatorContext::best_placements`]).
+        ///
+        /// # Errors
+        ///
+        /// As [`ActuatorContext::best_placements`].
+        best_placements -> Actuator
     }
 }
 

@@ -85,7 +85,7 @@ use pulp::{Arch, Simd, WithSimd};
 
 use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
-use crate::design::rank::{best_flagged, flagged_rank_columns, tie_order};
+use crate::design::rank::{best, flagged_rank_columns, tie_order};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::{Control, Rows, run_blocks_polled, run_blocks_with};
 use crate::error::{
@@ -897,29 +897,20 @@ impl DriveContext {
         self.drive(d0)
     }
 
-    /// The `k` best drives of a map's columns by `rank_by` (the rankings of
-    /// [`RankBy`] over the acceptable samples; [`RankBy::Margin`] orders the
-    /// valid samples by their distance to the nearest sample without a
-    /// drive). Candidates closer than `min_separation` to a better one are
-    /// skipped (default, `None`: 2% of the viewport's diagonal).
-    ///
-    /// # Errors
-    ///
-    /// [`InvalidInput::OutsideRange`] for a negative or non-finite
-    /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-    /// another length than the grid;
-    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
-    pub fn best_drives(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-        columns: DriveRankColumns<'_>,
-    ) -> Result<Vec<Drive>> {
-        let columns = columns.ranked();
-        best_flagged(&self.grid, k, min_separation, rank_by, columns, |s| {
-            self.drive_at(s)
-        })
+    best! {
+        /// The `k` best drives of a map's columns by `rank_by` (the rankings of
+        /// [`RankBy`] over the acceptable samples; [`RankBy::Margin`] orders the
+        /// valid samples by their distance to the nearest sample without a
+        /// drive). Candidates closer than `min_separation` to a better one are
+        /// skipped (default, `None`: 2% of the viewport's diagonal).
+        ///
+        /// # Errors
+        ///
+        /// [`InvalidInput::OutsideRange`] for a negative or non-finite
+        /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
+        /// another length than the grid;
+        /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+        best_drives(DriveRankColumns<'_>) -> Drive, flagged drive_at
     }
 }
 
@@ -930,19 +921,13 @@ flagged_rank_columns! {
 }
 
 impl DriveMap {
-    /// The `k` best drives (see [`DriveContext::best_drives`]).
-    ///
-    /// # Errors
-    ///
-    /// As [`DriveContext::best_drives`].
-    pub fn best_drives(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-    ) -> Result<Vec<Drive>> {
-        self.context
-            .best_drives(k, min_separation, rank_by, self.rank_columns())
+    best! {
+        /// The `k` best drives (see [`DriveContext::best_drives`]).
+        ///
+        /// # Errors
+        ///
+        /// As [`DriveContext::best_drives`].
+        best_drives -> Drive
     }
 }
 

@@ -34,7 +34,9 @@
 use crate::design::columns::{Columns, ColumnsOut, Sample, debug_map};
 use crate::design::judge::{Judge, fill_rows};
 use crate::design::options::CheckedOptions;
-use crate::design::rank::{Offer, RankColumns, RankedContext, best_with, signed_distances_with};
+use crate::design::rank::{
+    Offer, RankColumns, RankedContext, best, best_with, signed_distances_with,
+};
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result, try_collect};
@@ -413,27 +415,21 @@ impl PairContext {
         signed_distances_with(&self.grid, branch_free, control)
     }
 
-    /// The `k` best pairs, best first, from the map's columns, by `rank_by`
-    /// (the rankings of the three-pose map, [`RankBy`]: runs of scores
-    /// within [`tolerance::RANK_TIE`](crate::tolerance::RANK_TIE) go to the
-    /// smaller size ratio, then the larger margin). A pair closer than
-    /// `min_separation` in the parameter plane to a better one is skipped,
-    /// so the list offers distinct options (default, `None`: 2% of the
-    /// plane's diagonal).
-    ///
-    /// # Errors
-    ///
-    /// [`InvalidInput::OutsideRange`] for a negative or non-finite
-    /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-    /// another length than the map.
-    pub fn best_pairs(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-        columns: RankColumns<'_>,
-    ) -> Result<Vec<Pair>> {
-        self.best_pairs_with(k, min_separation, rank_by, columns, &Control::new())
+    best! {
+        /// The `k` best pairs, best first, from the map's columns, by `rank_by`
+        /// (the rankings of the three-pose map, [`RankBy`]: runs of scores
+        /// within [`tolerance::RANK_TIE`](crate::tolerance::RANK_TIE) go to the
+        /// smaller size ratio, then the larger margin). A pair closer than
+        /// `min_separation` in the parameter plane to a better one is skipped,
+        /// so the list offers distinct options (default, `None`: 2% of the
+        /// plane's diagonal).
+        ///
+        /// # Errors
+        ///
+        /// [`InvalidInput::OutsideRange`] for a negative or non-finite
+        /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
+        /// another length than the map.
+        best_pairs(RankColumns<'_>) -> Pair, with best_pairs_with
     }
 
     /// [`best_pairs`](Self::best_pairs) following `control` (the cancel
@@ -521,19 +517,13 @@ impl PairMap {
         self.context.margins(&self.columns.branch_free)
     }
 
-    /// The `k` best pairs, best first (see [`PairContext::best_pairs`]).
-    ///
-    /// # Errors
-    ///
-    /// As [`PairContext::best_pairs`].
-    pub fn best_pairs(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-    ) -> Result<Vec<Pair>> {
-        self.context
-            .best_pairs(k, min_separation, rank_by, self.rank_columns())
+    best! {
+        /// The `k` best pairs, best first (see [`PairContext::best_pairs`]).
+        ///
+        /// # Errors
+        ///
+        /// As [`PairContext::best_pairs`].
+        best_pairs -> Pair
     }
 
     /// The whole Pareto front of the acceptable pairs over the minimum

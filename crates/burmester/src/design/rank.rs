@@ -221,6 +221,57 @@ macro_rules! flagged_rank_columns {
 }
 pub(crate) use flagged_rank_columns;
 
+/// A ranking `$best(k, min_separation, rank_by)`, documented by `$doc`:
+/// the `k` best `$item`s by `rank_by`, candidates closer than
+/// `min_separation` to a better one skipped. A map's (`$best -> $item`)
+/// is its context's `$best` over its own
+/// [`rank_columns`](SolutionMap::rank_columns). A context's takes the
+/// `columns` (`$best($columns) -> $item`) and, following a control
+/// (`with $with`), asks `$with` with a control that is never cancelled, or,
+/// for a map with one flag column (`flagged $at`), asks [`best_flagged`],
+/// each result built by `$at`.
+macro_rules! best {
+    ($(#[$doc:meta])* $best:ident -> $item:ty) => {
+        $crate::design::rank::best! {
+            @fn [$(#[$doc])*] $best(self, k, min_separation, rank_by) -> $item {
+                self.context
+                    .$best(k, min_separation, rank_by, self.rank_columns())
+            }
+        }
+    };
+    ($(#[$doc:meta])* $best:ident($columns:ty) -> $item:ty, with $with:ident) => {
+        $crate::design::rank::best! {
+            @fn [$(#[$doc])*] $best(self, k, min_separation, rank_by, columns: $columns) -> $item {
+                let control = $crate::engine::Control::new();
+                self.$with(k, min_separation, rank_by, columns, &control)
+            }
+        }
+    };
+    ($(#[$doc:meta])* $best:ident($columns:ty) -> $item:ty, flagged $at:ident) => {
+        $crate::design::rank::best! {
+            @fn [$(#[$doc])*] $best(self, k, min_separation, rank_by, columns: $columns) -> $item {
+                let ranked = columns.ranked();
+                $crate::design::rank::best_flagged(&self.grid, k, min_separation, rank_by, ranked, |s| {
+                    self.$at(s)
+                })
+            }
+        }
+    };
+    (@fn [$($doc:tt)*] $best:ident(
+        $s:ident, $k:ident, $sep:ident, $by:ident $(, $c:ident: $columns:ty)?
+    ) -> $item:ty $body:block) => {
+        $($doc)*
+        pub fn $best(
+            &$s,
+            $k: usize,
+            $sep: Option<f64>,
+            $by: $crate::design::RankBy,
+            $($c: $columns)?
+        ) -> $crate::error::Result<Vec<$item>> $body
+    };
+}
+pub(crate) use best;
+
 impl RankColumns<'_> {
     /// The score of sample `s` by `rank_by` (see [`RankBy::score`]).
     fn score(&self, s: usize, rank_by: RankBy) -> Option<f64> {
@@ -257,19 +308,13 @@ impl SolutionMap {
         self.context.margin(k, &self.columns.branch_free)
     }
 
-    /// The `k` best candidates, best first (see [`MapContext::best_pivots`]).
-    ///
-    /// # Errors
-    ///
-    /// As [`MapContext::best_pivots`].
-    pub fn best_pivots(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-    ) -> Result<Vec<Pivot>> {
-        self.context
-            .best_pivots(k, min_separation, rank_by, self.rank_columns())
+    best! {
+        /// The `k` best candidates, best first (see [`MapContext::best_pivots`]).
+        ///
+        /// # Errors
+        ///
+        /// As [`MapContext::best_pivots`].
+        best_pivots -> Pivot
     }
 
     /// [`best_pivots`](Self::best_pivots) following `control` (see
@@ -349,34 +394,28 @@ impl MapContext {
         }
     }
 
-    /// The `k` best candidates, best first, from the map's columns, by
-    /// `rank_by` (see [`RankBy`] for the candidates and scores of each
-    /// ranking; runs of scores within [`tolerance::RANK_TIE`] go to the
-    /// smaller size ratio, then the larger margin). Candidates closer than `min_separation` to a better
-    /// one are skipped, so the list offers distinct options (default,
-    /// `None`: 2% of the viewport's diagonal); candidates without a
-    /// linkage are skipped.
-    ///
-    /// The candidates are selected, not sorted: `O(n log k)` for `n`
-    /// samples (the Pareto front sorts its candidates, `O(n log n)`).
-    ///
-    /// # Errors
-    ///
-    /// [`InvalidInput::OutsideRange`] for a negative or non-finite
-    /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-    /// another length than the grid;
-    /// [`Error::OutOfMemory`](crate::Error::OutOfMemory);
-    /// [`InvalidInput::DrivenKind`] for a map with a driven slider (a
-    /// [`Pivot`] carries a four-bar; rank its samples from the columns and
-    /// build each with [`MapContext::slider_crank`]).
-    pub fn best_pivots(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-        columns: RankColumns<'_>,
-    ) -> Result<Vec<Pivot>> {
-        self.best_pivots_with(k, min_separation, rank_by, columns, &Control::new())
+    best! {
+        /// The `k` best candidates, best first, from the map's columns, by
+        /// `rank_by` (see [`RankBy`] for the candidates and scores of each
+        /// ranking; runs of scores within [`tolerance::RANK_TIE`] go to the
+        /// smaller size ratio, then the larger margin). Candidates closer than `min_separation` to a better
+        /// one are skipped, so the list offers distinct options (default,
+        /// `None`: 2% of the viewport's diagonal); candidates without a
+        /// linkage are skipped.
+        ///
+        /// The candidates are selected, not sorted: `O(n log k)` for `n`
+        /// samples (the Pareto front sorts its candidates, `O(n log n)`).
+        ///
+        /// # Errors
+        ///
+        /// [`InvalidInput::OutsideRange`] for a negative or non-finite
+        /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
+        /// another length than the grid;
+        /// [`Error::OutOfMemory`](crate::Error::OutOfMemory);
+        /// [`InvalidInput::DrivenKind`] for a map with a driven slider (a
+        /// [`Pivot`] carries a four-bar; rank its samples from the columns and
+        /// build each with [`MapContext::slider_crank`]).
+        best_pivots(RankColumns<'_>) -> Pivot, with best_pivots_with
     }
 
     /// [`best_pivots`](Self::best_pivots) following `control`: the cancel

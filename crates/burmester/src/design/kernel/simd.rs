@@ -1047,6 +1047,7 @@ mod tests {
     use crate::design::options::CheckedOptions;
     use crate::design::{Constraints, DesignLimits, InputRequirement};
     use crate::geom::{Grid, Viewport};
+    use crate::simd::Width;
     use crate::synthesis::Task;
     use proptest::prelude::*;
 
@@ -1138,27 +1139,25 @@ mod tests {
         let all = vec![true; grid.nx()];
         // The driving candidates' lanes computed beforehand (as the atlas
         // does, dispatched) and read on other lane widths.
-        let with_pre = |y: f64, out: &mut RowOut, wide: bool| {
+        let with_pre = |y: f64, out: &mut RowOut, width: Width| {
             let mut pre = RowPre::new(&xs).unwrap();
             k.pre_row(y, &xs, &all, &mut pre);
-            let l = Lanes {
+            width.run(Lanes {
                 pre: Some(&pre),
                 ..lanes(&k, y, &xs, out)
-            };
-            if wide {
-                l.with_simd(pulp::Scalar512b);
-            } else {
-                l.with_simd(pulp::Scalar);
-            }
+            });
         };
+        let (kr, xr) = (&k, &xs);
+        let on = |width: Width| move |y: f64, out: &mut RowOut| width.run(lanes(kr, y, xr, out));
+        let [one, b128, b256, b512] = [Width::One, Width::B128, Width::B256, Width::B512].map(on);
         let widths: [&RowFn<'_>; 7] = [
-            &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar),
-            &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar128b),
-            &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar256b),
-            &|y, out| lanes(&k, y, &xs, out).with_simd(pulp::Scalar512b),
+            &one,
+            &b128,
+            &b256,
+            &b512,
             &|y, out| k.row(y, &xs, &k.local_xs(&xs).unwrap(), out),
-            &|y, out| with_pre(y, out, false),
-            &|y, out| with_pre(y, out, true),
+            &|y, out| with_pre(y, out, Width::One),
+            &|y, out| with_pre(y, out, Width::B512),
         ];
         let mut n = 0;
         let nx = grid.nx();
