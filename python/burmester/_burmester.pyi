@@ -2534,30 +2534,41 @@ class DesignReport:
     def __eq__(self, other: object, /) -> bool: ...
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
 
+class _DesignOptions(TypedDict, total=False):
+    """The keywords of the native design functions: those of
+    :func:`burmester.design`, with its defaults (space None, limits None,
+    rank_by "balanced", top 5, min_separation None, coarse_driven 12,
+    coarse_driving 48, coarse_pairs 120, starts 48, max_iterations 3000,
+    input None, swing_margin_deg 0.0, max_time_ratio None, actuator_link
+    "coupler", actuator_point None, max_stroke_ratio 1.8, actuator_samples
+    64, actuator_width 0.0, min_gap 0.0, driven "revolute")."""
+
+    space: Optional[Space]
+    limits: Optional[DesignLimits]
+    rank_by: RankBy
+    top: int
+    min_separation: Optional[float]
+    coarse_driven: int
+    coarse_driving: int
+    coarse_pairs: int
+    starts: int
+    max_iterations: int
+    input: Optional[Literal["any", "crank", "rocker", "motor", "actuator"]]
+    swing_margin_deg: float
+    max_time_ratio: Optional[float]
+    actuator_link: str
+    actuator_point: Optional[Point]
+    max_stroke_ratio: float
+    actuator_samples: int
+    actuator_width: float
+    min_gap: float
+    driven: Literal["revolute", "slider"]
+
 def _design(
     task: Task,
     *,
-    space: Optional[Space] = None,
-    limits: Optional[DesignLimits] = None,
-    rank_by: RankBy = "balanced",
-    top: int = ...,
-    min_separation: Optional[float] = None,
-    coarse_driven: int = ...,
-    coarse_driving: int = ...,
-    coarse_pairs: int = ...,
-    starts: int = ...,
-    max_iterations: int = ...,
-    input: Optional[Literal["any", "crank", "rocker", "motor", "actuator"]] = None,
-    swing_margin_deg: float = ...,
-    max_time_ratio: Optional[float] = None,
-    actuator_link: str = "coupler",
-    actuator_point: Optional[Point] = None,
-    max_stroke_ratio: float = ...,
-    actuator_samples: int = ...,
-    actuator_width: float = ...,
-    min_gap: float = ...,
-    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
+    **options: Unpack[_DesignOptions],
 ) -> DesignReport:
     """The design search in this process (see :func:`burmester.design`,
     whose defaults these keywords share: top 5, coarse_driven 12,
@@ -2566,27 +2577,8 @@ def _design(
 def _design_plan(
     task: Task,
     *,
-    space: Optional[Space] = None,
-    limits: Optional[DesignLimits] = None,
-    rank_by: RankBy = "balanced",
-    top: int = ...,
-    min_separation: Optional[float] = None,
-    coarse_driven: int = ...,
-    coarse_driving: int = ...,
-    coarse_pairs: int = ...,
-    starts: int = ...,
-    max_iterations: int = ...,
-    input: Optional[Literal["any", "crank", "rocker", "motor", "actuator"]] = None,
-    swing_margin_deg: float = ...,
-    max_time_ratio: Optional[float] = None,
-    actuator_link: str = "coupler",
-    actuator_point: Optional[Point] = None,
-    max_stroke_ratio: float = ...,
-    actuator_samples: int = ...,
-    actuator_width: float = ...,
-    min_gap: float = ...,
-    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
+    **options: Unpack[_DesignOptions],
 ) -> dict[str, Any]:
     """The three-pose coarse pass: ``driven`` and ``driving`` grids and the
     ``atlas`` keywords of :func:`_atlas_tile`."""
@@ -2595,27 +2587,8 @@ def _design_from_atlas(
     task: Task,
     arrays: dict[str, Any],
     *,
-    space: Optional[Space] = None,
-    limits: Optional[DesignLimits] = None,
-    rank_by: RankBy = "balanced",
-    top: int = ...,
-    min_separation: Optional[float] = None,
-    coarse_driven: int = ...,
-    coarse_driving: int = ...,
-    coarse_pairs: int = ...,
-    starts: int = ...,
-    max_iterations: int = ...,
-    input: Optional[Literal["any", "crank", "rocker", "motor", "actuator"]] = None,
-    swing_margin_deg: float = ...,
-    max_time_ratio: Optional[float] = None,
-    actuator_link: str = "coupler",
-    actuator_point: Optional[Point] = None,
-    max_stroke_ratio: float = ...,
-    actuator_samples: int = ...,
-    actuator_width: float = ...,
-    min_gap: float = ...,
-    driven: Literal["revolute", "slider"] = "revolute",
     progress: Optional[Progress] = None,
+    **options: Unpack[_DesignOptions],
 ) -> DesignReport:
     """The refinement of a three-pose coarse pass computed elsewhere
     (``arrays``: :func:`_atlas_tile`'s arrays over the plan's driven grid)."""

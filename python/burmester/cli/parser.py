@@ -133,6 +133,17 @@ def _drawing_args(p: argparse.ArgumentParser, travel_range: str) -> None:
                    help=f"resolution of a picture, {MIN_DPI} to {MAX_DPI} (default: 100)")
 
 
+def _animation_args(p: argparse.ArgumentParser, frames: str, fps: int) -> None:
+    """``--frames`` (animation frames ``frames``), ``--fps`` (``fps`` when
+    not given), ``--units``, ``--dpi`` and ``--force`` of a command that
+    draws, animates or exports the linkage it designs a drive for."""
+    p.add_argument("--frames", type=_ranged(2, 10_000), default=None, help=f"animation: frames {frames}")
+    p.add_argument("--fps", type=_ranged(1, 240), default=None, help=f"animation: frames per second (default {fps})")
+    _units_arg(p)
+    p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
+    _force_arg(p)
+
+
 def _json_arg(p: argparse.ArgumentParser, text: str = "print JSON instead of a table") -> None:
     p.add_argument("--json", action="store_true", help=text)
 
@@ -441,11 +452,7 @@ def _add_drive(sub: _Commands) -> None:
     p.add_argument("--map", action="store_true", help="-o draws the drive map of the best drive's attachment")
     p.add_argument("--turn", type=_ranged(2, 10_000), default=None, metavar="N",
                    help="CAD export: also draw the six-bar at N crank angles over a turn")
-    p.add_argument("--frames", type=_ranged(2, 10_000), default=None, help="animation: frames per crank turn (default 120)")
-    p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 24)")
-    _units_arg(p)
-    p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
-    _force_arg(p)
+    _animation_args(p, "per crank turn (default 120)", 24)
     p.set_defaults(func=cmd_drive)
 
 
@@ -492,12 +499,7 @@ def _add_actuator(sub: _Commands) -> None:
                    help="ground pivots sampled over the map's view (default: [actuator] grid, else 200 200)")
     _strut_gap_args(p, "", "else a line in the clearance, 0.06 of its closed length as drawn and exported",
                     dest="width")
-    p.add_argument("--frames", type=_ranged(2, 10_000), default=None,
-                   help="animation: frames from the first pose to the last (default 60)")
-    p.add_argument("--fps", type=_ranged(1, 240), default=None, help="animation: frames per second (default 20)")
-    _units_arg(p)
-    p.add_argument("--dpi", type=_dpi, default=None, help=f"picture resolution, {MIN_DPI} to {MAX_DPI}")
-    _force_arg(p)
+    _animation_args(p, "from the first pose to the last (default 60)", 20)
     p.set_defaults(func=cmd_actuator)
 
 

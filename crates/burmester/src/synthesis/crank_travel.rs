@@ -1,7 +1,16 @@
 //! What a linkage of a task driven by a crank derives from its crank angles,
 //! modes, direction and circuit at the poses, written once for the kinds
 //! that have them as fields (the slider-crank and the inverted
-//! slider-crank of a task), with the struct holding those fields.
+//! slider-crank of a task), with the struct holding those fields, and the
+//! crank angles, modes and travel their constructors compute.
+
+use nalgebra::{Point2, Vector2};
+
+use crate::error::{InvalidInput, Result};
+use crate::geom::PerPose;
+use crate::linkage::AssemblyMode;
+use crate::linkage::figures::{Travel, travel};
+use crate::synthesis::DyadKind;
 
 /// The struct of a synthesized linkage driven by a crank: the linkage, the
 /// driving dyad, the driven one, the crank angle, assembly mode and the
@@ -64,6 +73,43 @@ macro_rules! crank_synthesized {
         $crate::synthesis::crank_travel::crank_travel_methods!($Type);
 
         impl $Type {
+            /// The struct from its parts: the linkage, the dyads, the crank
+            /// angles and modes at the poses (`crank_modes`), the crank's
+            /// travel (`crank_travel`), the task's coupler point and angle
+            /// offset in the coupler frame (`Task::coupler_point_along`),
+            /// the driven joint's positions and the figures (the smallest
+            /// transmission angle, the stroke used, then the kind's own).
+            #[allow(clippy::too_many_arguments)]
+            fn from_parts(
+                linkage: $L,
+                driving: $crate::synthesis::Dyad,
+                driven: $D,
+                (input_angles, modes): (
+                    $crate::geom::PerPose<f64>,
+                    $crate::geom::PerPose<Option<$crate::linkage::AssemblyMode>>,
+                ),
+                travel: $crate::linkage::figures::Travel,
+                (coupler_point, coupler_angle_offset): (nalgebra::Vector2<f64>, f64),
+                $positions: $crate::geom::PerPose<f64>,
+                (min_transmission, stroke_used, $($extra,)*): (f64, f64, $($xt,)*),
+            ) -> Self {
+                $Type {
+                    linkage,
+                    driving,
+                    driven,
+                    input_angles,
+                    modes,
+                    $positions,
+                    coupler_point,
+                    coupler_angle_offset,
+                    direction: travel.direction,
+                    one_circuit: travel.one_circuit,
+                    min_transmission,
+                    stroke_used,
+                    $($extra,)*
+                }
+            }
+
             /// The [`stroke_used`](Self::stroke_used), or where that is NaN
             /// the spread of the driven joint's positions at the poses.
             fn stroke_or_spread(&self) -> f64 {
@@ -113,10 +159,7 @@ macro_rules! crank_travel_methods {
             /// Whether every pose is in one assembly mode (no branch
             /// defect, no toggle at a pose).
             pub fn is_branch_free(&self) -> bool {
-                match self.modes.first() {
-                    Some(Some(m)) => self.modes.iter().all(|x| *x == Some(*m)),
-                    _ => false,
-                }
+                $crate::synthesis::crank_travel::branch_mode(&self.modes).is_some()
             }
 
             /// Whether the motion through the poses in order is feasible:
@@ -168,6 +211,70 @@ macro_rules! crank_travel_methods {
 }
 
 pub(crate) use crank_travel_methods;
+
+/// The one assembly mode of every pose, `None` with a branch defect or a
+/// toggle at a pose.
+pub(crate) fn branch_mode(modes: &[Option<AssemblyMode>]) -> Option<AssemblyMode> {
+    match modes.first() {
+        Some(Some(m)) if modes.iter().all(|x| *x == Some(*m)) => Some(*m),
+        _ => None,
+    }
+}
+
+/// The crank angles `arg(A_k - A0)` of a crank about `a0` whose pin is at
+/// `a[k]` at pose `k`, and the assembly mode at each pose of the linkage
+/// whose driven dyad is `kind` with its joint at `joint(k)`
+/// ([`DyadKind::assembly_mode`], `reach` as there); `None` at a toggle and
+/// where the position analysis' loop at the pose's crank angle does not
+/// assemble clear of its toggle in that mode (`clear(theta2, mode)`, as the
+/// four-bar's figures).
+pub(crate) fn crank_modes(
+    a: &PerPose<Point2<f64>>,
+    a0: Point2<f64>,
+    kind: DyadKind,
+    joint: impl Fn(usize) -> Point2<f64>,
+    reach: f64,
+    clear: impl Fn(f64, AssemblyMode) -> bool,
+) -> (PerPose<f64>, PerPose<Option<AssemblyMode>>) {
+    let input_angles = a.map(|p| {
+        let v = p - a0;
+        v.y.atan2(v.x)
+    });
+    let modes = PerPose::from_fn(a.len(), |k| {
+        let m = kind.assembly_mode(a[k], joint(k), reach)?;
+        clear(input_angles[k], m).then_some(m)
+    });
+    (input_angles, modes)
+}
+
+/// The directions `A_k - A0` of a crank about `a0` whose pin is at `a[k]`
+/// at pose `k`, and its travel through the poses ([`travel`] about `axis`,
+/// the input range's ends free where `lo`, `hi`).
+///
+/// # Errors
+///
+/// [`InvalidInput::PoseCount`] for other than 3 to 5 poses.
+pub(crate) fn crank_travel(
+    a: &PerPose<Point2<f64>>,
+    a0: Point2<f64>,
+    axis: Vector2<f64>,
+    lo: bool,
+    hi: bool,
+) -> Result<(Vec<Vector2<f64>>, Travel)> {
+    let e: Vec<Vector2<f64>> = a.iter().map(|p| p - a0).collect();
+    let trav = match e.len() {
+        3 => e.first_chunk().map(|e| travel::<3>(e, axis, lo, hi)),
+        4 => e.first_chunk().map(|e| travel::<4>(e, axis, lo, hi)),
+        5 => e.first_chunk().map(|e| travel::<5>(e, axis, lo, hi)),
+        _ => None,
+    };
+    let trav = trav.ok_or(InvalidInput::PoseCount {
+        found: e.len(),
+        min: 3,
+        max: 5,
+    })?;
+    Ok((e, trav))
+}
 
 impl crate::Task {
     /// Checks that the points `p[k]` lie on the lines through `base` in the

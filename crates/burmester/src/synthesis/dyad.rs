@@ -287,14 +287,14 @@ impl Task {
                 hint: "pass dyads nearer the task",
             },
         )?;
-        let (theta3, coupler_point) = self.coupler_frame(a[0], c[0]);
+        let (coupler_point, coupler_angle_offset) = self.coupler_point_along(a[0], c[0] - a[0]);
         Ok(SynthesizedFourBar {
             fourbar,
             driving: *driving,
             driven: *driven,
             input_angles,
             coupler_point,
-            coupler_angle_offset: self.poses()[0].angle - theta3,
+            coupler_angle_offset,
             figures,
         })
     }
@@ -303,9 +303,31 @@ impl Task {
     /// pivots are at `a1`, `c1` there, and the task's coupler point in the
     /// coupler's frame ([`SynthesizedFourBar::coupler_point`]).
     fn coupler_frame(&self, a1: Point2<f64>, c1: Point2<f64>) -> (f64, Vector2<f64>) {
-        let ac = c1 - a1;
-        let theta3 = ac.y.atan2(ac.x);
+        self.coupler_frame_along(a1, c1 - a1)
+    }
+
+    /// The coupler's angle `theta3` at pose 1 of a linkage whose coupler
+    /// frame has its origin at `a1` and its x-axis along `axis` there, and
+    /// the task's coupler point in that frame.
+    pub(crate) fn coupler_frame_along(
+        &self,
+        a1: Point2<f64>,
+        axis: Vector2<f64>,
+    ) -> (f64, Vector2<f64>) {
+        let theta3 = axis.y.atan2(axis.x);
         (theta3, rotate(self.poses()[0].position - a1, -theta3))
+    }
+
+    /// The task's coupler point in the coupler frame of
+    /// [`coupler_frame_along`](Self::coupler_frame_along) and its coupler
+    /// angle at pose 1 minus `theta3` there.
+    pub(crate) fn coupler_point_along(
+        &self,
+        a1: Point2<f64>,
+        axis: Vector2<f64>,
+    ) -> (Vector2<f64>, f64) {
+        let (theta3, point) = self.coupler_frame_along(a1, axis);
+        (point, self.poses()[0].angle - theta3)
     }
 
     /// The figures of [`four_bar`](Self::four_bar)'s linkage and its

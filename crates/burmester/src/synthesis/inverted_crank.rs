@@ -24,7 +24,7 @@ use nalgebra::Vector2;
 use crate::error::{InvalidInput, Result};
 use crate::geom::{PerPose, cross, rotate};
 use crate::linkage::{Direction, InvertedSliderCrank};
-use crate::synthesis::slider_crank::travel_n;
+use crate::synthesis::crank_travel::{branch_mode, crank_modes, crank_travel};
 use crate::synthesis::{Dyad, DyadKind, InvertedSlider, Task};
 
 crate::synthesis::crank_travel::crank_synthesized! {
@@ -128,31 +128,22 @@ impl Task {
         let a0 = driving.center;
         let offset = cross(d, s - a[0]);
         let linkage = InvertedSliderCrank::new(a0, driving.length(), s, offset)?;
-        let input_angles = a.map(|p| {
-            let v = p - a0;
-            v.y.atan2(v.x)
-        });
         let reach = linkage.crank() + linkage.ground();
         let kind = DyadKind::Inverted(driven);
-        let modes = PerPose::from_fn(n, |k| {
-            let m = kind.assembly_mode(a[k], s + slot[k], reach)?;
-            let sol = linkage.solve(input_angles[k], m).ok()?;
-            (!sol.toggle).then_some(m)
-        });
+        let (input_angles, modes) = crank_modes(
+            &a,
+            a0,
+            kind,
+            |k| s + slot[k],
+            reach,
+            |t, m| linkage.solve(t, m).is_ok_and(|sol| !sol.toggle),
+        );
         let slot_positions = PerPose::from_fn(n, |k| (s - a[k]).dot(&slot[k]));
         let g = s - a0;
         let axis = if g.norm() > 0.0 { g } else { Vector2::x() };
-        let e: Vec<Vector2<f64>> = a.iter().map(|p| p - a0).collect();
-        let trav =
-            travel_n(&e, axis, true, linkage.turns_fully()).ok_or(InvalidInput::PoseCount {
-                found: n,
-                min: 3,
-                max: 5,
-            })?;
+        let (e, trav) = crank_travel(&a, a0, axis, true, linkage.turns_fully())?;
         let last = n - 1;
-        let branch_free =
-            matches!(modes.first(), Some(Some(m)) if modes.iter().all(|x| *x == Some(*m)));
-        let (min_transmission, stroke_used, swing_used) = if trav.direction == Direction::None {
+        let figures = if trav.direction == Direction::None {
             (f64::NAN, f64::NAN, f64::NAN)
         } else {
             // cos mu = |e| / rho is largest where rho = |S - A| is
@@ -165,8 +156,8 @@ impl Task {
             if trav.contains(axis) {
                 worst = worst.max(cos_mu(axis));
             }
-            let (stroke, swing) = match modes[0] {
-                Some(mode) if branch_free => {
+            let (stroke, swing) = match branch_mode(&modes) {
+                Some(mode) => {
                     let at = |v: Vector2<f64>| linkage.solve(v.y.atan2(v.x), mode).ok();
                     let mut ends: Vec<(f64, f64)> = [e[0], e[last], axis, -axis]
                         .iter()
@@ -198,22 +189,15 @@ impl Task {
             };
             (worst.acos(), stroke, swing)
         };
-        let theta3 = d.y.atan2(d.x);
-        let pose1 = self.poses()[0];
-        Ok(SynthesizedInvertedSliderCrank {
+        Ok(SynthesizedInvertedSliderCrank::from_parts(
             linkage,
-            driving: *driving,
+            *driving,
             driven,
-            input_angles,
-            modes,
+            (input_angles, modes),
+            trav,
+            self.coupler_point_along(a[0], d),
             slot_positions,
-            coupler_point: rotate(pose1.position - a[0], -theta3),
-            coupler_angle_offset: pose1.angle - theta3,
-            direction: trav.direction,
-            one_circuit: trav.one_circuit,
-            min_transmission,
-            stroke_used,
-            swing_used,
-        })
+            figures,
+        ))
     }
 }

@@ -17,10 +17,10 @@
 
 use nalgebra::{Point2, Vector2};
 
-use crate::error::{InvalidInput, Result};
-use crate::geom::{PerPose, perp, rotate};
-use crate::linkage::figures::{Travel, travel};
+use crate::error::Result;
+use crate::geom::{perp, rotate};
 use crate::linkage::{AssemblyMode, Direction, SliderCrank};
+use crate::synthesis::crank_travel::{branch_mode, crank_modes, crank_travel};
 use crate::synthesis::{Dyad, DyadKind, SliderDyad, Task};
 use crate::tolerance;
 
@@ -100,16 +100,6 @@ impl SynthesizedSliderCrank {
     }
 }
 
-/// [`travel`] for 3 to 5 directions.
-pub(crate) fn travel_n(e: &[Vector2<f64>], g: Vector2<f64>, lo: bool, hi: bool) -> Option<Travel> {
-    match e.len() {
-        3 => Some(travel::<3>(e.try_into().ok()?, g, lo, hi)),
-        4 => Some(travel::<4>(e.try_into().ok()?, g, lo, hi)),
-        5 => Some(travel::<5>(e.try_into().ok()?, g, lo, hi)),
-        _ => None,
-    }
-}
-
 impl Task {
     /// The slider-crank built from a driving crank `(A0, A1)` and a driven
     /// slider (`C1` on its guide), with its crank angle, assembly mode and
@@ -128,6 +118,9 @@ impl Task {
     /// point of the task and the line through its positions);
     /// [`DegenerateError::ZeroLengthLink`](crate::DegenerateError::ZeroLengthLink)
     /// for a crank or coupler of no length; errors of [`SliderCrank::new`].
+    ///
+    /// [`InvalidInput::NotADyad`]: crate::InvalidInput::NotADyad
+    /// [`InvalidInput::NotASlider`]: crate::InvalidInput::NotASlider
     pub fn slider_crank(
         &self,
         driving: &Dyad,
@@ -150,33 +143,22 @@ impl Task {
             u,
         )?;
         let a = self.motion().positions(driving.circle);
-        let input_angles = a.map(|p| {
-            let v = p - a0;
-            v.y.atan2(v.x)
-        });
         let reach = linkage.crank() + linkage.offset().abs();
-        let kind = DyadKind::Slider(*driven);
-        let modes = PerPose::from_fn(a.len(), |k| {
-            let m = kind.assembly_mode(a[k], c[k], reach)?;
-            // The position analysis' loop at the pose's crank angle must
-            // assemble clear of its toggle too (as the four-bar's figures).
-            let sol = linkage.solve(input_angles[k], m).ok()?;
-            (!sol.toggle).then_some(m)
-        });
+        let (input_angles, modes) = crank_modes(
+            &a,
+            a0,
+            DyadKind::Slider(*driven),
+            |k| c[k],
+            reach,
+            |t, m| linkage.solve(t, m).is_ok_and(|sol| !sol.toggle),
+        );
         let foot = linkage.foot();
         let slider_positions = c.map(|p| (p - foot).dot(&u));
         let (lo, hi) = linkage.free_ends();
         let n = perp(u);
-        let e: Vec<Vector2<f64>> = a.iter().map(|p| p - a0).collect();
-        let trav = travel_n(&e, n, lo, hi).ok_or(InvalidInput::PoseCount {
-            found: a.len(),
-            min: 3,
-            max: 5,
-        })?;
+        let (e, trav) = crank_travel(&a, a0, n, lo, hi)?;
         let last = e.len() - 1;
-        let branch_free =
-            matches!(modes.first(), Some(Some(m)) if modes.iter().all(|x| *x == Some(*m)));
-        let (min_transmission, stroke_used) = if trav.direction == Direction::None {
+        let figures = if trav.direction == Direction::None {
             (f64::NAN, f64::NAN)
         } else {
             // cos mu = |h| / l with h = e + r <d, n>, convex in <d, n>: its
@@ -191,8 +173,8 @@ impl Task {
                     worst = worst.max(cos_mu(dn));
                 }
             }
-            let stroke = match modes[0] {
-                Some(mode) if branch_free => {
+            let stroke = match branch_mode(&modes) {
+                Some(mode) => {
                     let (mut lo_s, mut hi_s) = (
                         slider_positions[0].min(slider_positions[last]),
                         slider_positions[0].max(slider_positions[last]),
@@ -210,22 +192,15 @@ impl Task {
             };
             (worst.acos(), stroke)
         };
-        let ac = c[0] - a[0];
-        let theta3 = ac.y.atan2(ac.x);
-        let pose1 = self.poses()[0];
-        Ok(SynthesizedSliderCrank {
+        Ok(SynthesizedSliderCrank::from_parts(
             linkage,
-            driving: *driving,
-            driven: *driven,
-            input_angles,
-            modes,
+            *driving,
+            *driven,
+            (input_angles, modes),
+            trav,
+            self.coupler_point_along(a[0], c[0] - a[0]),
             slider_positions,
-            coupler_point: rotate(pose1.position - a[0], -theta3),
-            coupler_angle_offset: pose1.angle - theta3,
-            direction: trav.direction,
-            one_circuit: trav.one_circuit,
-            min_transmission,
-            stroke_used,
-        })
+            figures,
+        ))
     }
 }

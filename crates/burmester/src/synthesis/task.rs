@@ -19,6 +19,24 @@ use crate::synthesis::three::{Cremona, Linear, Maps};
 use crate::synthesis::{Dyad, FivePositions, FourPositions, SynthesizedFourBar};
 use crate::tolerance;
 
+/// A method of [`Task`] named `$name` that maps each of `$points` by the
+/// method `$each`, lazily: the iterator form of a map of one point.
+macro_rules! lazily {
+    ($(#[$doc:meta])* $name:ident = $each:ident($points:ident)) => {
+        $(#[$doc])*
+        pub fn $name<'a, I>(
+            &'a self,
+            $points: I,
+        ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
+        where
+            I: IntoIterator<Item = Point2<f64>>,
+            I::IntoIter: 'a,
+        {
+            $points.into_iter().map(move |p| self.$each(p))
+        }
+    };
+}
+
 /// Three to five poses of the coupler, validated, with their motion.
 ///
 /// Everything that holds for any number of poses (the displacements, the
@@ -482,28 +500,14 @@ impl Task {
             .center_point(circle)
     }
 
-    /// [`circle_point`](Self::circle_point) for each of `centers`, lazily.
-    pub fn circle_points<'a, I>(
-        &'a self,
-        centers: I,
-    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
-    where
-        I: IntoIterator<Item = Point2<f64>>,
-        I::IntoIter: 'a,
-    {
-        centers.into_iter().map(move |p| self.circle_point(p))
+    lazily! {
+        /// [`circle_point`](Self::circle_point) for each of `centers`, lazily.
+        circle_points = circle_point(centers)
     }
 
-    /// [`center_point`](Self::center_point) for each of `circles`, lazily.
-    pub fn center_points<'a, I>(
-        &'a self,
-        circles: I,
-    ) -> impl Iterator<Item = Result<Point2<f64>>> + 'a
-    where
-        I: IntoIterator<Item = Point2<f64>>,
-        I::IntoIter: 'a,
-    {
-        circles.into_iter().map(move |p| self.center_point(p))
+    lazily! {
+        /// [`center_point`](Self::center_point) for each of `circles`, lazily.
+        center_points = center_point(circles)
     }
 
     /// The same task transformed by a similarity (scale about the origin,
