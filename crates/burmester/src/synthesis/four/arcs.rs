@@ -7,7 +7,7 @@ use super::FourPositions;
 use super::split::split_by;
 use crate::error::Result;
 use crate::geom::cubic::roots::quadratic_roots;
-use crate::geom::{Line, LocalFrame, PerPose, Viewport, normalized};
+use crate::geom::{Cubic, Line, LocalFrame, PerPose, Viewport, normalized};
 use crate::synthesis::branch::FilemonLines;
 use crate::synthesis::errors;
 use crate::synthesis::motion::Motion;
@@ -276,8 +276,7 @@ impl FilemonArcs {
         // has no center point, and no mark is `never` then.
         let never = at.map_or(usize::MAX, |_| marks.len());
         marks.extend(at);
-        let lines = curve.polylines_marked(viewport, &marks);
-        free_pieces(&lines, never, |p| {
+        let free = |p: Point2<f64>| {
             if circle {
                 Some(self.classify_circle_point(p) == Branch::Free)
             } else {
@@ -285,8 +284,137 @@ impl FilemonArcs {
                     .ok()
                     .map(|b| b == Branch::Free)
             }
-        })
+        };
+        let lines = curve.polylines_marked(viewport, &marks);
+        let lines = resolve_changes(curve, &lines, &free);
+        free_pieces(&lines, never, free)
     }
+}
+
+/// The mark index of a class change found by [`resolve_changes`]: a
+/// vertex where the class may change, never the driven dyad's point.
+const CHANGE: usize = usize::MAX - 1;
+
+/// The curve's point nearest `m` on the line through `m` along the
+/// gradient there, if it lies between `a` and `b` (within the chord's
+/// length of both).
+fn curve_point_between(
+    curve: &Cubic,
+    m: Point2<f64>,
+    a: Point2<f64>,
+    b: Point2<f64>,
+) -> Option<Point2<f64>> {
+    let g = curve.gradient(m);
+    if !(g.x.is_finite() && g.y.is_finite()) || g.norm() == 0.0 {
+        return None;
+    }
+    let len = (b - a).norm();
+    curve
+        .intersect_line(&Line {
+            point: m,
+            direction: g,
+        })
+        .into_iter()
+        .filter(|q| q.x.is_finite() && q.y.is_finite())
+        .min_by(|p, q| (p - m).norm().total_cmp(&(q - m).norm()))
+        .filter(|q| (q - a).norm() <= len && (q - b).norm() <= len)
+}
+
+/// Where the class changes between two points of the curve with different
+/// classes, `a` (`la`) and `b`: bisection on the curve (the chord's
+/// middle taken back onto the curve along the gradient) until the two
+/// points are within rounding of each other or the curve between them
+/// is no longer found. Returns the point on the free side of the bracket
+/// (a free arc ends at a free point).
+fn change_between(
+    curve: &Cubic,
+    mut a: Point2<f64>,
+    la: bool,
+    mut b: Point2<f64>,
+    free: &impl Fn(Point2<f64>) -> Option<bool>,
+) -> Point2<f64> {
+    for _ in 0..200 {
+        let scale = a.coords.norm().max(b.coords.norm());
+        if (b - a).norm() <= 8.0 * f64::EPSILON * scale {
+            break;
+        }
+        let m = Point2::from((a.coords + b.coords) * 0.5);
+        let Some(q) = curve_point_between(curve, m, a, b) else {
+            break;
+        };
+        if q == a || q == b {
+            break;
+        }
+        match free(q) {
+            Some(l) if l == la => a = q,
+            Some(_) => b = q,
+            None => break,
+        }
+    }
+    if la { a } else { b }
+}
+
+/// The traced polylines with every class change that a chord hides made a
+/// vertex: the curve's point at the middle of each chord (taken back onto
+/// the curve along the gradient, between the chord's ends) is classified,
+/// and where its class differs from that of an end that is not a mark, the
+/// change is found by bisection on the curve ([`change_between`]) and
+/// inserted as a mark, the middle point as an ordinary vertex after it.
+///
+/// The exact arc ends are the meets of the extreme lines with the
+/// circle-point curve; on a curve with a line of centers whose circle
+/// points are nearly one point (three poses at nearly one position), those
+/// meets lie within rounding of that point, and their centers (the
+/// circle-to-center map of a point where a whole line of centers meets)
+/// are known only to rounding along the line, while the class of each
+/// center on it is well decided (its circle point moves smoothly along a
+/// tiny arc across the extreme lines). There a class change is found where
+/// it happens, in the plane of the curve.
+fn resolve_changes(
+    curve: &Cubic,
+    lines: &[Vec<(Point2<f64>, Option<usize>)>],
+    free: &impl Fn(Point2<f64>) -> Option<bool>,
+) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
+    lines
+        .iter()
+        .map(|line| {
+            let labels: Vec<Option<bool>> = line
+                .iter()
+                .map(|v| if v.1.is_some() { None } else { free(v.0) })
+                .collect();
+            let mut out = Vec::with_capacity(line.len());
+            for (i, v) in line.iter().enumerate() {
+                if i > 0 {
+                    let (a, b) = (line[i - 1].0, v.0);
+                    let (la, lb) = (labels[i - 1], labels[i]);
+                    if la.is_some() || lb.is_some() {
+                        let m = Point2::from((a.coords + b.coords) * 0.5);
+                        if let Some(q) =
+                            curve_point_between(curve, m, a, b).filter(|q| *q != a && *q != b)
+                        {
+                            if let Some(lm) = free(q) {
+                                let differs_a = la.is_some_and(|l| l != lm);
+                                let differs_b = lb.is_some_and(|l| l != lm);
+                                if differs_a {
+                                    let c = change_between(curve, a, !lm, q, free);
+                                    out.push((c, Some(CHANGE)));
+                                }
+                                if differs_a || differs_b {
+                                    out.push((q, None));
+                                }
+                                if differs_b {
+                                    let c = change_between(curve, q, lm, b, free);
+                                    out.push((c, Some(CHANGE)));
+                                }
+                            }
+                        }
+                    }
+                }
+                out.push(*v);
+            }
+            out
+        })
+        .collect()
 }
 
 /// The free arcs of polylines whose marked vertices (`Some(index)`) are
