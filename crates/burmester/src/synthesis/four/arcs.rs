@@ -239,8 +239,12 @@ impl FilemonArcs {
     /// tracer's own parameter), so each piece between two of them is a
     /// stretch of the curve of one class, labelled by its vertices; the
     /// free pieces are joined across the arc ends they share and cut at
-    /// `C1`. The arcs are the same in every view: the arcs of a smaller
-    /// view are those of a larger one, clipped.
+    /// `C1`. The curve's point at the middle of each chord is classified
+    /// too, and a change it shows is found on the curve by bisection and
+    /// made a vertex (where the exact arc ends are rounding: a line of
+    /// centers whose circle points are nearly one point). The arcs are the
+    /// same in every view: the arcs of a smaller view are those of a larger
+    /// one, clipped.
     pub fn free_circle_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
         let marks = self.ends.iter().map(|e| e.circle).collect();
         self.free_arcs(viewport, marks, true)
@@ -286,7 +290,10 @@ impl FilemonArcs {
             }
         };
         let lines = curve.polylines_marked(viewport, &marks);
-        let lines = resolve_changes(curve, &lines, &free);
+        // The curve's point of a chord lies within the trace's chord
+        // tolerance of it; twice that is the reach of the chord's own branch.
+        let reach = 2.0 * Cubic::DEFAULT_TOLERANCE * viewport.diagonal();
+        let lines = resolve_changes(curve, &lines, reach, &free);
         free_pieces(&lines, never, free)
     }
 }
@@ -296,11 +303,12 @@ impl FilemonArcs {
 const CHANGE: usize = usize::MAX - 1;
 
 /// The curve's point nearest `m` on the line through `m` along the
-/// gradient there, if it lies between `a` and `b` (within the chord's
-/// length of both).
+/// gradient there, if it lies within `reach` of `m` and between `a` and
+/// `b` (within the chord's length of both).
 fn curve_point_between(
     curve: &Cubic,
     m: Point2<f64>,
+    reach: f64,
     a: Point2<f64>,
     b: Point2<f64>,
 ) -> Option<Point2<f64>> {
@@ -317,7 +325,7 @@ fn curve_point_between(
         .into_iter()
         .filter(|q| q.x.is_finite() && q.y.is_finite())
         .min_by(|p, q| (p - m).norm().total_cmp(&(q - m).norm()))
-        .filter(|q| (q - a).norm() <= len && (q - b).norm() <= len)
+        .filter(|q| (q - m).norm() <= reach && (q - a).norm() <= len && (q - b).norm() <= len)
 }
 
 /// Where the class changes between two points of the curve with different
@@ -328,6 +336,7 @@ fn curve_point_between(
 /// (a free arc ends at a free point).
 fn change_between(
     curve: &Cubic,
+    reach: f64,
     mut a: Point2<f64>,
     la: bool,
     mut b: Point2<f64>,
@@ -339,7 +348,7 @@ fn change_between(
             break;
         }
         let m = Point2::from((a.coords + b.coords) * 0.5);
-        let Some(q) = curve_point_between(curve, m, a, b) else {
+        let Some(q) = curve_point_between(curve, m, reach, a, b) else {
             break;
         };
         if q == a || q == b {
@@ -356,10 +365,11 @@ fn change_between(
 
 /// The traced polylines with every class change that a chord hides made a
 /// vertex: the curve's point at the middle of each chord (taken back onto
-/// the curve along the gradient, between the chord's ends) is classified,
-/// and where its class differs from that of an end that is not a mark, the
-/// change is found by bisection on the curve ([`change_between`]) and
-/// inserted as a mark, the middle point as an ordinary vertex after it.
+/// the curve along the gradient, within `reach` of the middle and between
+/// the chord's ends) is classified, and where its class differs from that
+/// of an end that is not a mark, the change is found by bisection on the
+/// curve ([`change_between`]) and inserted as a mark, the middle point as
+/// an ordinary vertex after it.
 ///
 /// The exact arc ends are the meets of the extreme lines with the
 /// circle-point curve; on a curve with a line of centers whose circle
@@ -373,6 +383,7 @@ fn change_between(
 fn resolve_changes(
     curve: &Cubic,
     lines: &[Vec<(Point2<f64>, Option<usize>)>],
+    reach: f64,
     free: &impl Fn(Point2<f64>) -> Option<bool>,
 ) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
     lines
@@ -389,21 +400,21 @@ fn resolve_changes(
                     let (la, lb) = (labels[i - 1], labels[i]);
                     if la.is_some() || lb.is_some() {
                         let m = Point2::from((a.coords + b.coords) * 0.5);
-                        if let Some(q) =
-                            curve_point_between(curve, m, a, b).filter(|q| *q != a && *q != b)
+                        if let Some(q) = curve_point_between(curve, m, reach, a, b)
+                            .filter(|q| *q != a && *q != b)
                         {
                             if let Some(lm) = free(q) {
                                 let differs_a = la.is_some_and(|l| l != lm);
                                 let differs_b = lb.is_some_and(|l| l != lm);
                                 if differs_a {
-                                    let c = change_between(curve, a, !lm, q, free);
+                                    let c = change_between(curve, reach, a, !lm, q, free);
                                     out.push((c, Some(CHANGE)));
                                 }
                                 if differs_a || differs_b {
                                     out.push((q, None));
                                 }
                                 if differs_b {
-                                    let c = change_between(curve, q, lm, b, free);
+                                    let c = change_between(curve, reach, q, lm, b, free);
                                     out.push((c, Some(CHANGE)));
                                 }
                             }
