@@ -239,8 +239,9 @@ impl FilemonArcs {
     /// tracer's own parameter), so each piece between two of them is a
     /// stretch of the curve of one class, labelled by its vertices; the
     /// free pieces are joined across the arc ends they share and cut at
-    /// `C1`. The curve's point at the middle of each chord is classified
-    /// too, and a change it shows is found on the curve by bisection and
+    /// `C1`. The curve's point at the middle of each chord next to a mark
+    /// (or between vertices of different classes) is classified too, and a
+    /// change it shows is found on the curve by bisection and
     /// made a vertex (where the exact arc ends are rounding: a line of
     /// centers whose circle points are nearly one point). The arcs are the
     /// same in every view: the arcs of a smaller view are those of a larger
@@ -363,8 +364,9 @@ fn change_between(
     if la { a } else { b }
 }
 
-/// The traced polylines with every class change that a chord hides made a
-/// vertex: the curve's point at the middle of each chord (taken back onto
+/// The traced polylines with the class changes that a chord next to a mark
+/// (or between vertices of different classes) hides made vertices: the
+/// curve's point at the middle of such a chord (taken back onto
 /// the curve along the gradient, within `reach` of the middle and between
 /// the chord's ends) is classified, and where its class differs from that
 /// of an end that is not a mark, the change is found by bisection on the
@@ -398,7 +400,13 @@ fn resolve_changes(
                 if i > 0 {
                     let (a, b) = (line[i - 1].0, v.0);
                     let (la, lb) = (labels[i - 1], labels[i]);
-                    if la.is_some() || lb.is_some() {
+                    // A chord next to a mark (an arc end that may be
+                    // rounding along a line of centers) or whose ends
+                    // differ; between two vertices of one class away from
+                    // the marks a change is a pair of them, which the exact
+                    // arc ends resolve.
+                    let marked = line[i - 1].1.is_some() || v.1.is_some();
+                    if (la.is_some() || lb.is_some()) && (marked || la != lb) {
                         let m = Point2::from((a.coords + b.coords) * 0.5);
                         if let Some(q) = curve_point_between(curve, m, reach, a, b)
                             .filter(|q| *q != a && *q != b)
