@@ -142,6 +142,7 @@ CASES = {
 
 if __name__ == "__main__":
     extra = sys.argv[1:]
+
     for name, (poses, point, circle) in CASES.items():
         if extra and not any(e in name for e in extra):
             continue
@@ -214,3 +215,55 @@ def branch_signs(poses, c0, c1, a1):
         dx, dy = kx - c1x, ky - c1y
         out.append(dx * (a1[1] - c1y) - dy * (a1[0] - c1x))
     return out
+
+# Class B (curv34): the input `free-arc-chord-passes-defective-point-poses-at-one-position-3e4ebdb6`
+# (now in regressions/curves/): poses 2, 3, 4 at nearly one position, the
+# driven dyad of the fuzz check, and the line of centers near x = 3.2998.
+CLASS_B = (
+    [
+        (6.5996180078125, -8.2421875e-8, 66.99609375),
+        (8.550393225e-6, -8.3984375e-14, 0.058484375),
+        (8.6328125e-6, 0.0, 0.31640625),
+        (8.6328125e-6, 0.0, -8.242187500000001e-10),
+    ],
+    (6.045784821440137e-6, 4.125328799852609e-6),
+    (3.299814766909, 0.48602449227914374),
+)
+
+
+def class_b_changes(poses, c0, c1, x=3.2998, ys=None):
+    """Where the exact class changes along the line of centers near
+    ``x``: each sample ``(x, y)`` is taken onto the exact center-point curve
+    along its gradient, its exact circle point and Filemon signs decide
+    free (all four signs agree) or not, and each change is bisected
+    (60 steps) to the exact curve's ``y``."""
+    terms = curve(poses, False)
+
+    def free(y):
+        gx, gy = project(terms, (mpmath.mpf(x), mpmath.mpf(y)))
+        s = branch_signs(poses, c0, c1, exact_circle_point(poses, gx, gy))
+        return all(v > 0 for v in s) or all(v < 0 for v in s), gy
+
+    ys = ys or [-(10 ** (e / 20)) for e in range(-20, 60)]
+    out = []
+    prev = None
+    for y in ys:
+        f = free(y)[0]
+        if prev is not None and f != prev[1]:
+            lo, hi = prev[0], y
+            for _ in range(60):
+                mid = (lo + hi) / 2
+                if free(mid)[0] == prev[1]:
+                    lo = mid
+                else:
+                    hi = mid
+            out.append(("free to defective" if prev[1] else "defective to free", free(lo)[1]))
+        prev = (y, f)
+    return out
+
+
+
+if __name__ == "__main__" and sys.argv[1:] == ["class-b"]:
+    # python fuzz/reference/open_curves.py class-b
+    for kind, y in class_b_changes(*CLASS_B):
+        print(f"class B line x = 3.2998: {kind} at y = {mpmath.nstr(y, 15)}")

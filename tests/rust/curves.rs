@@ -3814,3 +3814,62 @@ fn issue24_two_points_on_one_line_from_q_are_both_listed() {
         );
     }
 }
+
+/// Issue 24, class B of `fuzz/open/curves` (curv34): poses 2, 3 and 4 at
+/// nearly one position put a line of centers (`x = 3.2998...`) on the
+/// center-point curve whose circle points all lie within `1e-5` of pose
+/// 1's reference point. The exact arc ends' centers there are known only
+/// to rounding along the line (the library put them at `y = -6.78` and
+/// `-1.71`), but the class of each center is well decided. The exact
+/// reference (`fuzz/reference/open_curves.py`, `class_b_changes`: the
+/// exact curve, circle points and Filemon signs of the float task in
+/// mpmath) puts the free stretch of the line at `y` in
+/// `(-16.2836851391207, -8.76198556324864)`; before the fix a free arc
+/// ran from `y = -10.47` to the false end at `-6.78`, over defective
+/// centers (`y = -8.62`).
+#[test]
+fn issue24_a_line_of_centers_with_one_circle_point_has_its_exact_free_stretch() {
+    let poses = [
+        Pose::new(6.5996180078125, -8.2421875e-8, 66.99609375),
+        Pose::new(8.550393225e-6, -8.3984375e-14, 0.058484375),
+        Pose::new(8.6328125e-6, 0.0, 0.31640625),
+        Pose::new(8.6328125e-6, 0.0, -8.242187500000001e-10),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let driven = Dyad::new(
+        Point2::new(6.045784821440137e-6, 4.125328799852609e-6),
+        Point2::new(3.299814766909, 0.48602449227914374),
+    );
+    let fa = four.filemon(&driven).unwrap();
+    let (lo, hi) = (-16.2836851391207, -8.76198556324864);
+    let big = Viewport::new(
+        -245.06204990381906,
+        248.36187182795828,
+        -246.71196088649415,
+        246.7119608452832,
+    )
+    .unwrap();
+    let small = Viewport::new(-10.0, 16.0, -30.0, 10.0).unwrap();
+    for view in [&big, &small] {
+        // The free arcs' points on the line (x within 1e-3 of 3.2998,
+        // y from -100 to 0): from the exact stretch's one end to the other.
+        let on_line: Vec<f64> = fa
+            .free_center_arcs(view)
+            .iter()
+            .flatten()
+            .filter(|p| (p.x - 3.2998).abs() < 1e-3 && (-100.0..0.0).contains(&p.y))
+            .map(|p| p.y)
+            .collect();
+        let top = on_line.iter().copied().fold(f64::MIN, f64::max);
+        let bottom = on_line.iter().copied().fold(f64::MAX, f64::min);
+        // Within 1e-5 (1.5e-6 task sizes): the signs move by 1.4e-7 per
+        // unit of y there and are the float circle points' rounding to
+        // about 1e-12 (measured: the ends 4.4e-6 and 1.0e-6 off).
+        assert!(
+            (top - hi).abs() < 1e-5 && (bottom - lo).abs() < 1e-5,
+            "free on the line from {bottom} to {top}, exact {lo} to {hi}, in {view:?}"
+        );
+        check_free_arcs_dense(&four, &fa, view, false).unwrap();
+        check_free_arcs_dense(&four, &fa, view, true).unwrap();
+    }
+}

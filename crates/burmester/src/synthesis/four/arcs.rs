@@ -7,7 +7,7 @@ use super::FourPositions;
 use super::split::split_by;
 use crate::error::Result;
 use crate::geom::cubic::roots::quadratic_roots;
-use crate::geom::{Line, LocalFrame, PerPose, Viewport, normalized};
+use crate::geom::{Cubic, Line, LocalFrame, PerPose, Viewport, normalized};
 use crate::synthesis::branch::FilemonLines;
 use crate::synthesis::errors;
 use crate::synthesis::motion::Motion;
@@ -239,8 +239,13 @@ impl FilemonArcs {
     /// tracer's own parameter), so each piece between two of them is a
     /// stretch of the curve of one class, labelled by its vertices; the
     /// free pieces are joined across the arc ends they share and cut at
-    /// `C1`. The arcs are the same in every view: the arcs of a smaller
-    /// view are those of a larger one, clipped.
+    /// `C1`. The curve's point at the middle of each chord next to a mark
+    /// (or between vertices of different classes) is classified too, and a
+    /// change it shows is found on the curve by bisection and
+    /// made a vertex (where the exact arc ends are rounding: a line of
+    /// centers whose circle points are nearly one point). The arcs are the
+    /// same in every view: the arcs of a smaller view are those of a larger
+    /// one, clipped.
     pub fn free_circle_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
         let marks = self.ends.iter().map(|e| e.circle).collect();
         self.free_arcs(viewport, marks, true)
@@ -276,8 +281,7 @@ impl FilemonArcs {
         // has no center point, and no mark is `never` then.
         let never = at.map_or(usize::MAX, |_| marks.len());
         marks.extend(at);
-        let lines = curve.polylines_marked(viewport, &marks);
-        free_pieces(&lines, never, |p| {
+        let free = |p: Point2<f64>| {
             if circle {
                 Some(self.classify_circle_point(p) == Branch::Free)
             } else {
@@ -285,8 +289,151 @@ impl FilemonArcs {
                     .ok()
                     .map(|b| b == Branch::Free)
             }
-        })
+        };
+        let lines = curve.polylines_marked(viewport, &marks);
+        // The curve's point of a chord lies within the trace's chord
+        // tolerance of it; twice that is the reach of the chord's own branch.
+        let reach = 2.0 * Cubic::DEFAULT_TOLERANCE * viewport.diagonal();
+        let lines = resolve_changes(curve, &lines, reach, &free);
+        free_pieces(&lines, never, free)
     }
+}
+
+/// The mark index of a class change found by [`resolve_changes`]: a
+/// vertex where the class may change, never the driven dyad's point.
+const CHANGE: usize = usize::MAX - 1;
+
+/// The curve's point nearest `m` on the line through `m` along the
+/// gradient there, if it lies within `reach` of `m` and between `a` and
+/// `b` (within the chord's length of both).
+fn curve_point_between(
+    curve: &Cubic,
+    m: Point2<f64>,
+    reach: f64,
+    a: Point2<f64>,
+    b: Point2<f64>,
+) -> Option<Point2<f64>> {
+    let g = curve.gradient(m);
+    if !(g.x.is_finite() && g.y.is_finite()) || g.norm() == 0.0 {
+        return None;
+    }
+    let len = (b - a).norm();
+    curve
+        .intersect_line(&Line {
+            point: m,
+            direction: g,
+        })
+        .into_iter()
+        .filter(|q| q.x.is_finite() && q.y.is_finite())
+        .min_by(|p, q| (p - m).norm().total_cmp(&(q - m).norm()))
+        .filter(|q| (q - m).norm() <= reach && (q - a).norm() <= len && (q - b).norm() <= len)
+}
+
+/// Where the class changes between two points of the curve with different
+/// classes, `a` (`la`) and `b`: bisection on the curve (the chord's
+/// middle taken back onto the curve along the gradient) until the two
+/// points are within rounding of each other or the curve between them
+/// is no longer found. Returns the point on the free side of the bracket
+/// (a free arc ends at a free point).
+fn change_between(
+    curve: &Cubic,
+    reach: f64,
+    mut a: Point2<f64>,
+    la: bool,
+    mut b: Point2<f64>,
+    free: &impl Fn(Point2<f64>) -> Option<bool>,
+) -> Point2<f64> {
+    for _ in 0..200 {
+        let scale = a.coords.norm().max(b.coords.norm());
+        if (b - a).norm() <= 8.0 * f64::EPSILON * scale {
+            break;
+        }
+        let m = Point2::from((a.coords + b.coords) * 0.5);
+        let Some(q) = curve_point_between(curve, m, reach, a, b) else {
+            break;
+        };
+        if q == a || q == b {
+            break;
+        }
+        match free(q) {
+            Some(l) if l == la => a = q,
+            Some(_) => b = q,
+            None => break,
+        }
+    }
+    if la { a } else { b }
+}
+
+/// The traced polylines with the class changes that a chord next to a mark
+/// (or between vertices of different classes) hides made vertices: the
+/// curve's point at the middle of such a chord (taken back onto
+/// the curve along the gradient, within `reach` of the middle and between
+/// the chord's ends) is classified, and where its class differs from that
+/// of an end that is not a mark, the change is found by bisection on the
+/// curve ([`change_between`]) and inserted as a mark, the middle point as
+/// an ordinary vertex after it.
+///
+/// The exact arc ends are the meets of the extreme lines with the
+/// circle-point curve; on a curve with a line of centers whose circle
+/// points are nearly one point (three poses at nearly one position), those
+/// meets lie within rounding of that point, and their centers (the
+/// circle-to-center map of a point where a whole line of centers meets)
+/// are known only to rounding along the line, while the class of each
+/// center on it is well decided (its circle point moves smoothly along a
+/// tiny arc across the extreme lines). There a class change is found where
+/// it happens, in the plane of the curve.
+fn resolve_changes(
+    curve: &Cubic,
+    lines: &[Vec<(Point2<f64>, Option<usize>)>],
+    reach: f64,
+    free: &impl Fn(Point2<f64>) -> Option<bool>,
+) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
+    lines
+        .iter()
+        .map(|line| {
+            let labels: Vec<Option<bool>> = line
+                .iter()
+                .map(|v| if v.1.is_some() { None } else { free(v.0) })
+                .collect();
+            let mut out = Vec::with_capacity(line.len());
+            for (i, v) in line.iter().enumerate() {
+                if i > 0 {
+                    let (a, b) = (line[i - 1].0, v.0);
+                    let (la, lb) = (labels[i - 1], labels[i]);
+                    // A chord next to a mark (an arc end that may be
+                    // rounding along a line of centers) or whose ends
+                    // differ; between two vertices of one class away from
+                    // the marks a change is a pair of them, which the exact
+                    // arc ends resolve.
+                    let marked = line[i - 1].1.is_some() || v.1.is_some();
+                    if (la.is_some() || lb.is_some()) && (marked || la != lb) {
+                        let m = Point2::from((a.coords + b.coords) * 0.5);
+                        if let Some(q) = curve_point_between(curve, m, reach, a, b)
+                            .filter(|q| *q != a && *q != b)
+                        {
+                            if let Some(lm) = free(q) {
+                                let differs_a = la.is_some_and(|l| l != lm);
+                                let differs_b = lb.is_some_and(|l| l != lm);
+                                if differs_a {
+                                    let c = change_between(curve, reach, a, !lm, q, free);
+                                    out.push((c, Some(CHANGE)));
+                                }
+                                if differs_a || differs_b {
+                                    out.push((q, None));
+                                }
+                                if differs_b {
+                                    let c = change_between(curve, reach, q, lm, b, free);
+                                    out.push((c, Some(CHANGE)));
+                                }
+                            }
+                        }
+                    }
+                }
+                out.push(*v);
+            }
+            out
+        })
+        .collect()
 }
 
 /// The free arcs of polylines whose marked vertices (`Some(index)`) are
