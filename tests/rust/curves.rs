@@ -3814,3 +3814,49 @@ fn issue24_two_points_on_one_line_from_q_are_both_listed() {
         );
     }
 }
+
+/// Issue 24 (five34): a line from the elimination's pole `Q` that lies on
+/// one of the two center-point curves within rounding (poses 1 and 2 at
+/// one position, poses 3 and 4 at another: the curve of those four holds
+/// the line through `Q` normal to them). Along it the common points are
+/// the other curve's roots, but the finite one was taken from the
+/// vanishing curve's own linear part (noise, next to `Q`), matched the pole
+/// `P23` there, and the pole's root then listed the point at `P12`'s
+/// position twice while the point `0.9` task sizes out was lost (the count
+/// with multiplicity right: a wrong answer, not a refusal). Against the
+/// exact reference of each frame's float task.
+#[test]
+fn issue24_a_line_on_one_curve_takes_the_other_curve_s_points() {
+    // fuzz/open/burmester_points/point-not-found-in-another-frame-62d691aa,
+    // moved (was `(1.0e-15, -1.0e-15)` twice, `(-1.57e-8, -1.57e-8)`
+    // missing).
+    assert_reference_points(
+        &poses_of(&[
+            (1e-15, -1e-15, -1.0),
+            (1e-15, -1e-15, -1e-6),
+            (1e-21, -1e-21, -1e-6),
+            (1e-21, -1e-21, -PI),
+            (6.283185307179586e-15, -3.1411e-8, -1.0),
+        ]),
+        &[
+            (-1.5705502141592713e-08, -1.5705503141593712e-08),
+            (1.0000007879762248e-15, -9.999997688010414e-16),
+        ],
+        None,
+    );
+    // The same task as given (it passed before).
+    assert_reference_points(
+        &poses_of(&[
+            (1e-12, 1e-12, 1.0),
+            (1e-12, 1e-12, 1e-6),
+            (9.999999999999999e-19, 9.999999999999999e-19, 1e-6),
+            (9.999999999999999e-19, 9.999999999999999e-19, PI),
+            (6.283185307179586e-12, 3.1411e-5, 1.0),
+        ]),
+        &[
+            (-1.570550214159271e-05, 1.5705503141593713e-05),
+            (1.0000007879762246e-12, 9.999997688010413e-13),
+        ],
+        None,
+    );
+}

@@ -896,15 +896,23 @@ impl Elimination {
                 || (self.asymptote.is_none() && negligible(av, am) && negligible(dv, dm))
             {
                 cands.push(Common::Infinite(w));
-                // A finite common root on the same line as well.
-                if mult >= 2 && negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b)) && bv != 0.0 {
-                    cands.push(Common::At(self.q + w * (-cv / bv)));
+                // A finite common root on the same line as well: the root
+                // of a curve's linear part, of `h`'s where the line lies on
+                // `f` within rounding (`f`'s parts are then noise: its root
+                // was taken next to `Q`, matched a pole there, and a point
+                // was lost).
+                let (lb, lc) = if line_f { (ev, gv) } else { (bv, cv) };
+                if mult >= 2 && negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b)) && lb != 0.0 {
+                    cands.push(Common::At(self.q + w * (-lc / lb)));
                 }
             } else {
                 let num = av * gv - cv * dv;
                 let den = bv * dv - av * ev;
                 if negligible(den, pb(b, d) + pb(a, e)) && negligible(num, pb(a, g) + pb(c, d)) {
-                    for t in quadratic_roots(av, bv, cv) {
+                    // The quadratics proportional: the roots of `f`'s, or of
+                    // `h`'s where the line lies on `f` (`f`'s are noise).
+                    let (qa, qb, qc) = if line_f { (dv, ev, gv) } else { (av, bv, cv) };
+                    for t in quadratic_roots(qa, qb, qc) {
                         cands.push(Common::At(self.q + w * t));
                     }
                 } else {
