@@ -5,7 +5,7 @@
 // branch.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use nalgebra::{Matrix4, Point2, Vector2, Vector4};
+use nalgebra::{Complex, Matrix4, Point2, Vector2, Vector4};
 
 use crate::error::Result;
 use crate::geom::cubic::roots::{
@@ -754,6 +754,8 @@ impl Elimination {
                     distinct += usize::from(near(&a)) + usize::from(near(&b));
                     points.extend([a, b]);
                 }
+                // A pair of complex points: no real point, none lost.
+                Polished::Complex => {}
                 _ => lost += mult,
             }
         }
@@ -896,15 +898,23 @@ impl Elimination {
                 || (self.asymptote.is_none() && negligible(av, am) && negligible(dv, dm))
             {
                 cands.push(Common::Infinite(w));
-                // A finite common root on the same line as well.
-                if mult >= 2 && negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b)) && bv != 0.0 {
-                    cands.push(Common::At(self.q + w * (-cv / bv)));
+                // A finite common root on the same line as well: the root
+                // of a curve's linear part, of `h`'s where the line lies on
+                // `f` within rounding (`f`'s parts are then noise: its root
+                // was taken next to `Q`, matched a pole there, and a point
+                // was lost).
+                let (lb, lc) = if line_f { (ev, gv) } else { (bv, cv) };
+                if mult >= 2 && negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b)) && lb != 0.0 {
+                    cands.push(Common::At(self.q + w * (-lc / lb)));
                 }
             } else {
                 let num = av * gv - cv * dv;
                 let den = bv * dv - av * ev;
                 if negligible(den, pb(b, d) + pb(a, e)) && negligible(num, pb(a, g) + pb(c, d)) {
-                    for t in quadratic_roots(av, bv, cv) {
+                    // The quadratics proportional: the roots of `f`'s, or of
+                    // `h`'s where the line lies on `f` (`f`'s are noise).
+                    let (qa, qb, qc) = if line_f { (dv, ev, gv) } else { (av, bv, cv) };
+                    for t in quadratic_roots(qa, qb, qc) {
                         cands.push(Common::At(self.q + w * t));
                     }
                 } else {
@@ -938,9 +948,25 @@ impl Elimination {
                         } else {
                             roots_f[0]
                         };
+                        // Proportional quadratics pair their roots one to
+                        // one: `h`'s root nearest `other` is not the one
+                        // nearest `t`. A near double root of `h` makes
+                        // `rel` small at both of `f`'s roots while only one
+                        // is common (a complex pair near merging, `7e-5`
+                        // task sizes off the real plane, was read as two
+                        // real points and the task refused).
+                        let roots_h = quadratic_roots(dv, ev, gv);
+                        let nearest = |x: f64| {
+                            roots_h
+                                .iter()
+                                .copied()
+                                .min_by(|p, q| (p - x).abs().total_cmp(&(q - x).abs()))
+                        };
                         if other.is_finite()
                             && other.abs() <= far
                             && rel(other) <= PROPORTIONAL_REL
+                            && roots_h.len() == 2
+                            && nearest(other) != nearest(t)
                             && (other - t).abs() > DOUBLE_REACH * (1.0 + t.abs())
                         {
                             cands.push(Common::At(self.q + w * other));
@@ -1122,6 +1148,9 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
         if let Some(pair) = split(m, g0, first, scale) {
             return Ok(pair);
         }
+        if complex_pair(m, g0, z0, scale) {
+            return Ok(Polished::Complex);
+        }
     }
     // Judged in the task's own frame (local: origin the poses' centroid,
     // unit their span), so that the check and its rounding allowance do not
@@ -1151,6 +1180,96 @@ enum Polished {
     One(Dyad),
     /// A double root that is two distinct real points, each listed once.
     Pair(Dyad, Dyad),
+    /// A double root that is a pair of complex points resolved apart from
+    /// the real plane ([`complex_pair`]): no real point.
+    Complex,
+}
+
+/// Whether the double root at `g0` (local, circle point `z0`) is a pair of
+/// complex Burmester points told apart from the real plane: Newton's method
+/// on the four circle equations in complex `(G, z)`, from `g0` moved off
+/// the real plane by [`SINGLE_REACH`] in either coordinate, converges (both
+/// starts) to a root within [`SINGLE_REACH`] of `g0` whose imaginary part
+/// is beyond [`DOUBLE_REACH`] and beyond the square root of the poses'
+/// rounding in their frame (all times `1 + |g0|`). Near a merge the two
+/// roots are simple ones `2 delta` apart, found to about `eps / delta`, so
+/// such a pair is resolved; a real double point (two real points, or one
+/// within rounding) draws the iterates to the real plane instead. Before,
+/// such a pair (`7e-5` task sizes off the real plane, its real part's crank
+/// lengths equal within the check's tolerance) was listed as a real double
+/// point in one frame and not in another.
+fn complex_pair(m: &LocalMotion, g0: Vector2<f64>, z0: Vector2<f64>, scale: f64) -> bool {
+    type C = Complex<f64>;
+    // Each row `a_k(G) . z - b_k(G)` with `a_k` and `b_k` affine in `G`.
+    let rows: Vec<([[f64; 3]; 2], [f64; 3])> = (1..5)
+        .map(|k| {
+            let (a0, b0) = m.form.row(k, Vector2::zeros());
+            let (ax, bx) = m.form.row(k, Vector2::x());
+            let (ay, by) = m.form.row(k, Vector2::y());
+            (
+                [
+                    [a0.x, ax.x - a0.x, ay.x - a0.x],
+                    [a0.y, ax.y - a0.y, ay.y - a0.y],
+                ],
+                [b0, bx - b0, by - b0],
+            )
+        })
+        .collect();
+    let affine = |p: &[f64; 3], g: [C; 2]| g[0] * p[1] + g[1] * p[2] + p[0];
+    let solve = |start: [C; 4]| -> Option<[C; 4]> {
+        let mut x = start;
+        let mut last = f64::INFINITY;
+        for _ in 0..60 {
+            let g = [x[0], x[1]];
+            let mut jac = Matrix4::<C>::zeros();
+            let mut rhs = Vector4::<C>::zeros();
+            for (r, (a, b)) in rows.iter().enumerate() {
+                let av = [affine(&a[0], g), affine(&a[1], g)];
+                rhs[r] = -(av[0] * x[2] + av[1] * x[3] - affine(b, g));
+                for i in 0..2 {
+                    jac[(r, i)] = x[2] * a[0][i + 1] + x[3] * a[1][i + 1] - b[i + 1];
+                    jac[(r, 2 + i)] = av[i];
+                }
+            }
+            let step = jac.lu().solve(&rhs)?;
+            if !step.iter().all(|v| v.re.is_finite() && v.im.is_finite()) {
+                return None;
+            }
+            for i in 0..4 {
+                x[i] += step[i];
+            }
+            let size = 1.0 + x.iter().map(|v| v.norm()).fold(0.0, f64::max);
+            let n = step.iter().map(|v| v.norm()).fold(0.0, f64::max);
+            if n <= 8.0 * f64::EPSILON * size || (n >= last && n <= 1e-10 * size) {
+                return Some(x);
+            }
+            last = n;
+        }
+        None
+    };
+    let off = SINGLE_REACH * scale;
+    // A change of the task by `rho` (relative) moves a double root's pair
+    // by about `sqrt(rho)`: the poses' own rounding in this frame (far out,
+    // `eps` of coordinates millions of task sizes out: the same merging task
+    // moved by `(-3e6, 2e6)` makes its real pair a complex one `1.7e-5`
+    // off) decides such a pair, which is then not told apart.
+    let (dp, da) = m.data_rounding;
+    let rounding = (tolerance::BURMESTER_EPS * f64::EPSILON * (dp + da)).sqrt();
+    let apart = DOUBLE_REACH.max(rounding) * scale;
+    [Vector2::<f64>::x(), Vector2::y()].iter().all(|d| {
+        let start = [
+            C::new(g0.x, off * d.x),
+            C::new(g0.y, off * d.y),
+            C::new(z0.x, 0.0),
+            C::new(z0.y, 0.0),
+        ];
+        let got = solve(start);
+        got.is_some_and(|x| {
+            let re = Vector2::new(x[0].re, x[1].re);
+            let im = Vector2::new(x[0].im, x[1].im);
+            (re - g0).norm() <= SINGLE_REACH * scale && im.norm() > apart
+        })
+    })
 }
 
 /// How far (times `1 + |G|`, local) Newton's method may move a simple root's
