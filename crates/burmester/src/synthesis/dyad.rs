@@ -299,21 +299,11 @@ impl Task {
         })
     }
 
-    /// The coupler's angle `theta3` at pose 1 of a linkage whose moving
-    /// pivots are at `a1`, `c1` there, and the task's coupler point in the
-    /// coupler's frame ([`SynthesizedFourBar::coupler_point`]).
-    fn coupler_frame(&self, a1: Point2<f64>, c1: Point2<f64>) -> (f64, Vector2<f64>) {
-        self.coupler_frame_along(a1, c1 - a1)
-    }
-
     /// The coupler's angle `theta3` at pose 1 of a linkage whose coupler
-    /// frame has its origin at `a1` and its x-axis along `axis` there, and
-    /// the task's coupler point in that frame.
-    pub(crate) fn coupler_frame_along(
-        &self,
-        a1: Point2<f64>,
-        axis: Vector2<f64>,
-    ) -> (f64, Vector2<f64>) {
+    /// frame has its origin at `a1` and its x-axis along `axis` there (a
+    /// four-bar's: from its crank pin toward its rocker pin), and the task's
+    /// coupler point in that frame ([`SynthesizedFourBar::coupler_point`]).
+    fn coupler_frame_along(&self, a1: Point2<f64>, axis: Vector2<f64>) -> (f64, Vector2<f64>) {
         let theta3 = axis.y.atan2(axis.x);
         (theta3, rotate(self.poses()[0].position - a1, -theta3))
     }
@@ -377,9 +367,10 @@ impl Task {
         // `SynthesizedFourBar::size`: the coupler point placed back from
         // the coupler's frame along the circle points' direction, which is
         // `theta3`'s own unless a zero's sign differs.
-        let (theta3, coupler_point) = self.coupler_frame(a[0], c[0]);
+        let ac1 = c[0] - a[0];
+        let (theta3, coupler_point) = self.coupler_frame_along(a[0], ac1);
         let (pa, pc) = (driving.circle, driven.circle);
-        let (ac, ac1) = (pc - pa, c[0] - a[0]);
+        let ac = pc - pa;
         let same = ac.x.to_bits() == ac1.x.to_bits() && ac.y.to_bits() == ac1.y.to_bits();
         let angle = if same { theta3 } else { ac.y.atan2(ac.x) };
         let p = pa + rotate(coupler_point, angle);
