@@ -1966,13 +1966,7 @@ fn issue24_near_poses(dx: f64, dy: f64) -> Vec<Pose> {
 /// many points were checked.
 fn check_own_points(four: &FourPositions, n: usize) -> Result<usize, TestCaseError> {
     let mut count = 0;
-    let mut dyads = Vec::new();
-    if let Ok(runs) = four.dyad_runs(n) {
-        dyads.extend(runs.into_iter().flatten());
-    }
-    if let Ok(samples) = four.parameter_samples(n) {
-        dyads.extend(samples.into_iter().flatten());
-    }
+    let dyads = common::curve_dyads::own_curve_dyads(four, n);
     for d in &dyads {
         count += 1;
         let z = four.circle_point(d.center);
