@@ -267,7 +267,11 @@ fn bench(c: &mut Criterion) {
     let view = Viewport::new(centre.x - h, centre.x + h, centre.y - h, centre.y + h).unwrap();
     let mut g = c.benchmark_group("burmester_points/trace");
     g.bench_function("center_point_curve", |b| {
-        b.iter(|| four.center_point_curve().trace(black_box(&view), None))
+        b.iter(|| {
+            four.center_point_curve()
+                .trace(black_box(&view), None)
+                .unwrap()
+        })
     });
     g.finish();
 

@@ -1773,6 +1773,9 @@ pub fn atlas(data: &[u8]) {
 use burmester::Similarity;
 use burmester::synthesis::{FilemonArcs, FivePositions, FourPositions};
 
+#[path = "../../tests/rust/common/curve_dyads.rs"]
+mod curve_dyads;
+
 /// `n` poses: raw numbers, or moderate ones with a chosen structure: nearly
 /// rotations about one point (curves whose coefficients cancel), three
 /// rotations about one point, pure translations, poses at one position,
@@ -1882,13 +1885,7 @@ pub fn curves(data: &[u8]) {
         matches!(r, Err(Error::InvalidInput(InvalidInput::OffCurve { .. })))
     };
     let n = inp.count(1, 24);
-    let mut dyads = Vec::new();
-    if let Ok(runs) = four.dyad_runs(n) {
-        dyads.extend(runs.into_iter().flatten());
-    }
-    if let Ok(s) = four.parameter_samples(n) {
-        dyads.extend(s.into_iter().flatten());
-    }
+    let dyads = curve_dyads::own_curve_dyads(&four, n);
     for d in &dyads {
         finite_pt("curve dyad center", d.center);
         finite_pt("curve dyad circle", d.circle);

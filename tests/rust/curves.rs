@@ -466,7 +466,7 @@ proptest! {
         let view = Viewport::new(c.x - r, c.x + r, c.y - r, c.y + r).unwrap();
         let four = FourPositions::new(&poses[..4]).unwrap();
         let poles: Vec<Point2<f64>> = four.poles().iter().filter(|p| matches!(p.poses, [1, 2] | [1, 3] | [2, 3])).filter_map(|p| p.point).collect();
-        for l in f.trace(&view, Some(1e-4 * r)).polylines() {
+        for l in f.trace(&view, Some(1e-4 * r)).unwrap().polylines() {
             for w in l.windows(2) {
                 let (a, b) = (h.evaluate(w[0]), h.evaluate(w[1]));
                 if a == 0.0 || b == 0.0 || (a < 0.0) == (b < 0.0) {
@@ -1078,7 +1078,7 @@ fn line_times_conic(l: [f64; 3], q: [f64; 6]) -> Cubic {
 /// `view` has a traced chord within the grid step plus twice the chord
 /// tolerance; every traced vertex is on the curve.
 fn check_against_scan(c: &Cubic, view: &Viewport, n: usize) -> Result<usize, TestCaseError> {
-    let trace = c.trace(view, None);
+    let trace = c.trace(view, None).unwrap();
     let polys = trace.polylines();
     let (w, h) = view.size();
     let (dx, dy) = (w / n as f64, h / n as f64);
@@ -1181,7 +1181,7 @@ proptest! {
             let scaled: Vec<Pose> = poses.iter().map(|p| s.pose(p)).collect();
             let four = FourPositions::new(&scaled).unwrap();
             let v = Viewport::new(base.xmin * f, base.xmax * f, base.ymin * f, base.ymax * f).unwrap();
-            let t = four.center_point_curve().trace(&v, None);
+            let t = four.center_point_curve().trace(&v, None).unwrap();
             // Back to the unit scale.
             let polys: Vec<Vec<Point2<f64>>> = t.polylines().into_iter()
                 .map(|l| l.into_iter().map(|p| Point2::from(p.coords / f)).collect()).collect();
@@ -1720,7 +1720,7 @@ fn check_free_arcs_dense(
     marks.push(if circle { driven.circle } else { driven.center });
     let diag = (view.xmax - view.xmin).hypot(view.ymax - view.ymin);
     let near_mark = |p: Point2<f64>| marks.iter().any(|m| (m - p).norm() <= 1e-6 * diag);
-    let fine = curve.trace(view, Some(2e-5 * diag)).polylines();
+    let fine = curve.trace(view, Some(2e-5 * diag)).unwrap().polylines();
     // Between two vertices of an arc: free.
     for arc in &arcs {
         for w in arc.windows(2) {
@@ -1966,13 +1966,7 @@ fn issue24_near_poses(dx: f64, dy: f64) -> Vec<Pose> {
 /// many points were checked.
 fn check_own_points(four: &FourPositions, n: usize) -> Result<usize, TestCaseError> {
     let mut count = 0;
-    let mut dyads = Vec::new();
-    if let Ok(runs) = four.dyad_runs(n) {
-        dyads.extend(runs.into_iter().flatten());
-    }
-    if let Ok(samples) = four.parameter_samples(n) {
-        dyads.extend(samples.into_iter().flatten());
-    }
+    let dyads = common::curve_dyads::own_curve_dyads(four, n);
     for d in &dyads {
         count += 1;
         let z = four.circle_point(d.center);

@@ -532,7 +532,9 @@ fn cubic_tolerance(vp: &Viewport, tolerance: Option<f64>) -> burmester::Result<O
 }
 
 polylines_method!(PyCubic, |c: &Cubic, vp, tolerance| {
-    cubic_tolerance(vp, tolerance).map(|t| c.trace(vp, t).polylines())
+    cubic_tolerance(vp, tolerance)
+        .and_then(|t| c.trace(vp, t))
+        .map(|t| t.polylines())
 });
 
 getters!(PyCubic, inner {

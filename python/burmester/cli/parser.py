@@ -118,6 +118,25 @@ def _force_arg(p: argparse.ArgumentParser) -> None:
     p.add_argument("--force", action="store_true", help="replace the output file if it exists")
 
 
+def _command(sub: _Commands, name: str, func: Callable[[argparse.Namespace], int], help: str,
+             description: str) -> argparse.ArgumentParser:
+    """The parser of the command ``name`` (``help`` in the list of commands,
+    ``description`` in its own help), run by ``func``."""
+    p = sub.add_parser(name, help=help, description=description)
+    p.set_defaults(func=func)
+    return p
+
+
+def _output_arg(p: argparse.ArgumentParser, text: str, default: Optional[str] = None) -> None:
+    """``-o``/``--output``: the file a command writes (``default`` when not given)."""
+    p.add_argument("-o", "--output", default=default, help=text)
+
+
+def _xy_arg(p: argparse.ArgumentParser, flag: str, text: str) -> None:
+    """A point given as ``flag X Y`` (two finite numbers), ``None`` when not given."""
+    p.add_argument(flag, nargs=2, type=_finite, metavar=("X", "Y"), help=text)
+
+
 def _drawing_args(p: argparse.ArgumentParser, travel_range: str) -> None:
     """``--frames``, ``--fps``, ``--travel``, ``--units`` and ``--dpi`` of a
     command that draws, animates or exports a linkage (``travel_range``:
@@ -209,8 +228,8 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _add_map(sub: _Commands) -> None:
-    p = sub.add_parser("map", help="draw the driving crank's center-point plane (or circle-point plane)",
-                       description="""
+    p = _command(sub, "map", cmd_map, help="draw the driving crank's center-point plane (or circle-point plane)",
+                 description="""
         Draw the driving crank's center-point plane as in Borm & Kim's Fig. 10 and 12: branch-free
         pivots shaded, the transformed Filemon curves, the poles, the pole triangle and circle, the
         driven crank's fixed pivot. A task of four poses draws its center-point curve coloured by the
@@ -218,9 +237,9 @@ def _add_map(sub: _Commands) -> None:
         center-point curves.
     """)
     _task_arg(p)
-    p.add_argument("-o", "--output", default="map.png",
-                   help="picture to write (.png, .pdf, ...; matplotlib), or CAD export (.dxf, .svg: a layer "
-                   "or group per concept, exact coordinates); default: map.png")
+    _output_arg(p, "picture to write (.png, .pdf, ...; matplotlib), or CAD export (.dxf, .svg: a layer "
+                "or group per concept, exact coordinates); default: map.png",
+                default="map.png")
     p.add_argument("--plane", choices=("center", "circle"), default="center",
                    help="center: center-point plane (Fig. 10/12); circle: circle-point plane (Fig. 3/11; "
                    "four poses: the circle-point curve by crank order)")
@@ -240,12 +259,11 @@ def _add_map(sub: _Commands) -> None:
                    "pivots, transmission contours, the guide) and prints the best slider-cranks (--pivots N, "
                    "default 5)")
     _picture_args(p, "resolution of a picture, dots per inch, ", " (default: 100)")
-    p.set_defaults(func=cmd_map)
 
 
 def _add_design(sub: _Commands) -> None:
-    p = sub.add_parser("design", help="from poses (and a space) to the best linkage: both pivots searched",
-                       description="""
+    p = _command(sub, "design", cmd_design, help="from poses (and a space) to the best linkage: both pivots searched",
+                 description="""
         Search the best linkages for the task's poses: three poses search both fixed pivots (a coarse
         pass, then each candidate refined continuously on its exact figures), four poses both curve
         parameters, five poses every pair of Burmester points. Every design is branch-free, passes the
@@ -259,9 +277,8 @@ def _add_design(sub: _Commands) -> None:
                  "balanced (default): sin(mu min) / sqrt(size x link ratio); transmission: the minimum "
                  "transmission angle; compact: the smallest linkage relative to the task")
     _json_arg(p)
-    p.add_argument("-o", "--output", default=None,
-                   help="also draw the best design: a picture (.png, .pdf, ...), an animation (.gif, .mp4) or "
-                   "a CAD export (.dxf, .svg)")
+    _output_arg(p, "also draw the best design: a picture (.png, .pdf, ...), an animation (.gif, .mp4) or "
+                "a CAD export (.dxf, .svg)")
     _drawing_args(p, "")
     _scheduler_arg(p, "run the three-pose coarse pass")
     p.add_argument("--motor", action="store_true",
@@ -294,12 +311,11 @@ def _add_design(sub: _Commands) -> None:
                    "task file's [design] driven, else revolute. A slider takes no motor or actuator; "
                    "the space's obstacles and envelope are checked over its travel")
     _force_arg(p)
-    p.set_defaults(func=cmd_design)
 
 
 def _add_pivots(sub: _Commands) -> None:
-    p = sub.add_parser("pivots", help="rank the acceptable driving pivots",
-                       description="""
+    p = _command(sub, "pivots", cmd_pivots, help="rank the acceptable driving pivots",
+                 description="""
         Rank the driving pivots A0 that are branch-free, pass the poses in order on one circuit and meet
         the task's limits (the solution-space map) by --rank-by, and show each one's four-bar and its
         size relative to the task. When none is acceptable, list branch-free pivots by their distance to
@@ -317,12 +333,11 @@ def _add_pivots(sub: _Commands) -> None:
                  "pareto: the front of transmission and size, compact to transmitting")
     _json_arg(p)
     _units_arg(p)
-    p.set_defaults(func=cmd_pivots)
 
 
 def _add_pairs(sub: _Commands) -> None:
-    p = sub.add_parser("pairs", help="four poses: rank the pairs of dyads (the pair map)",
-                       description="""
+    p = _command(sub, "pairs", cmd_pairs, help="four poses: rank the pairs of dyads (the pair map)",
+                 description="""
         For a task of four poses, the pair map: every pair of a driving and a driven dyad sampled along
         the center-point curve, with the solution map's figures; list the best acceptable pairs by
         --rank-by and draw the map with -o.
@@ -334,40 +349,36 @@ def _add_pairs(sub: _Commands) -> None:
     _rank_by_arg(p, pv.RANKINGS,
                  "the ranking, as for 'burmester pivots' (default: balanced)")
     _json_arg(p)
-    p.add_argument("-o", "--output", default=None,
-                   help="also draw the pair map as a picture (.png, .pdf, ...; matplotlib)")
+    _output_arg(p, "also draw the pair map as a picture (.png, .pdf, ...; matplotlib)")
     _picture_args(p, "resolution of the picture, ", " (default: 100)")
-    p.set_defaults(func=cmd_pairs)
 
 
 def _add_linkage(sub: _Commands) -> None:
-    p = sub.add_parser("linkage", help="draw or animate the four-bar of a driving pivot",
-                       description="""
+    p = _command(sub, "linkage", cmd_linkage, help="draw or animate the four-bar of a driving pivot",
+                 description="""
         Draw the four-bar at the three poses (.png, .pdf, ...), animate it driven through them (.gif, or
         .mp4 with ffmpeg), or export it to CAD (.dxf, .svg: a layer or group per concept, exact
         coordinates).
     """)
     _task_arg(p)
-    p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
-                   help="the driving crank's fixed pivot A0 (default: the best, as by 'burmester pivots')")
-    p.add_argument("-o", "--output", default="linkage.png",
-                   help="file to write: a picture (.png, .pdf, ...), an animation (.gif, .mp4) or a CAD "
-                   "export (.dxf, .svg); default: linkage.png")
+    _xy_arg(p, "--pivot", "the driving crank's fixed pivot A0 (default: the best, as by 'burmester pivots')")
+    _output_arg(p, "file to write: a picture (.png, .pdf, ...), an animation (.gif, .mp4) or a CAD "
+                "export (.dxf, .svg); default: linkage.png",
+                default="linkage.png")
     _drawing_args(p, ", 2 to 10000")
     _force_arg(p)
-    p.set_defaults(func=cmd_linkage)
 
 
 def _add_atlas(sub: _Commands) -> None:
-    p = sub.add_parser("atlas", help="both pivots at once: the best driving pivot of every driven center",
-                       description="""
+    p = _command(sub, "atlas", cmd_atlas, help="both pivots at once: the best driving pivot of every driven center",
+                 description="""
         For every driven center on a grid over the view, the solution map over driving centers reduced:
         shaded by the best achievable transmission angle, the count of acceptable driving pivots as
         contours, the best pair drawn.
     """)
     _task_arg(p)
-    p.add_argument("-o", "--output", default=None, help="picture to write (.png, .svg, .pdf; matplotlib, "
-                   "an image of the atlas, not a CAD export); default: atlas.png (none with --json unless given)")
+    _output_arg(p, "picture to write (.png, .svg, .pdf; matplotlib, "
+                "an image of the atlas, not a CAD export); default: atlas.png (none with --json unless given)")
     _json_arg(p, "print the best pairs as JSON")
     _top_arg(p, "pairs in the JSON")
     _scheduler_arg(p, "run")
@@ -379,12 +390,11 @@ def _add_atlas(sub: _Commands) -> None:
                  "how each driven center's best driving pivot is chosen: balanced (default), "
                  "transmission or compact, as for 'burmester pivots'")
     _picture_args(p, "resolution, ", " (default: 100)", default=100)
-    p.set_defaults(func=cmd_atlas)
 
 
 def _add_batch(sub: _Commands) -> None:
-    p = sub.add_parser("batch", help="the best driving pivots of many task files, one JSON line each",
-                       description="""
+    p = _command(sub, "batch", cmd_batch, help="the best driving pivots of many task files, one JSON line each",
+                 description="""
         Rank the driving pivots of each task file as 'burmester pivots --json' does, printing one JSON
         line per file (JSON lines), in order. A file that fails gives a line with an "error" field; the
         others still run, and the exit status is 2 at the end. With --scheduler, one Dask task per file.
@@ -396,12 +406,11 @@ def _add_batch(sub: _Commands) -> None:
     _rank_by_arg(p, pv.RANKINGS,
                  "the ranking, as for 'burmester pivots' (default: balanced)")
     _scheduler_arg(p, "run")
-    p.set_defaults(func=cmd_batch)
 
 
 def _add_solve(sub: _Commands) -> None:
-    p = sub.add_parser("solve", help="position analysis of a four-bar (angles in degrees)",
-                       description="""
+    p = _command(sub, "solve", cmd_solve, help="position analysis of a four-bar (angles in degrees)",
+                 description="""
         Solve a four-bar's position: the coupler and rocker angles for an input angle, in both assembly
         modes. Without --theta2, a table over a full turn. Without lengths, Norton's Example 4-1 (100,
         40, 120, 80).
@@ -416,29 +425,25 @@ def _add_solve(sub: _Commands) -> None:
                    help="assembly mode (default: both); open: sin(theta4 - theta3) > 0")
     p.add_argument("--step", type=_finite, default=None, metavar="DEG",
                    help="input angle step of the full-turn table, degrees (default: 30)")
-    p.set_defaults(func=cmd_solve)
 
 
 def _add_example(sub: _Commands) -> None:
-    p = sub.add_parser("example", help="print the built-in example as a task file",
-                       description="Print the built-in example task as a TOML task file, to edit.")
-    p.add_argument("-o", "--output", default=None, help="write to this .toml file instead of stdout")
+    p = _command(sub, "example", cmd_example, help="print the built-in example as a task file",
+                 description="Print the built-in example task as a TOML task file, to edit.")
+    _output_arg(p, "write to this .toml file instead of stdout")
     _force_arg(p)
-    p.set_defaults(func=cmd_example)
 
 
 def _add_drive(sub: _Commands) -> None:
-    p = sub.add_parser("drive", help="a motor for a linkage whose input swings: an added dyad (six-bar)",
-                       description="Find the best motor drive for the task's linkage: a crank-rocker "
-                                   "added to its input link (the Watt II six-bar), so a motor turning "
-                                   "a crank drives it through the poses.")
+    p = _command(sub, "drive", cmd_drive, help="a motor for a linkage whose input swings: an added dyad (six-bar)",
+                 description="Find the best motor drive for the task's linkage: a crank-rocker "
+                             "added to its input link (the Watt II six-bar), so a motor turning "
+                             "a crank drives it through the poses.")
     _task_arg(p)
-    p.add_argument("-o", "--output", default=None,
-                   help="also write the six-bar: a picture (.png, .pdf, ...), an animation over a "
-                        "crank turn (.gif, .mp4) or a CAD export (.dxf, .svg); with --map, the drive map")
+    _output_arg(p, "also write the six-bar: a picture (.png, .pdf, ...), an animation over a "
+                "crank turn (.gif, .mp4) or a CAD export (.dxf, .svg); with --map, the drive map")
     _json_arg(p)
-    p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
-                   help="three poses: the linkage's driving pivot A0 (default: the best by --rank-by)")
+    _xy_arg(p, "--pivot", "three poses: the linkage's driving pivot A0 (default: the best by --rank-by)")
     _rank_by_arg(p, pv.RANKINGS,
                  "which linkage of the task to drive (default: balanced)")
     p.add_argument("--drive-rank-by", choices=("balanced", "transmission", "compact"), default="balanced",
@@ -453,7 +458,6 @@ def _add_drive(sub: _Commands) -> None:
     p.add_argument("--turn", type=_ranged(2, 10_000), default=None, metavar="N",
                    help="CAD export: also draw the six-bar at N crank angles over a turn")
     _animation_args(p, "per crank turn (default 120)", 24)
-    p.set_defaults(func=cmd_drive)
 
 
 def _strut_gap_args(p: argparse.ArgumentParser, when: str, default: str, dest: Optional[str]) -> None:
@@ -470,23 +474,22 @@ def _strut_gap_args(p: argparse.ArgumentParser, when: str, default: str, dest: O
 
 
 def _add_actuator(sub: _Commands) -> None:
-    p = sub.add_parser("actuator", help="a linear actuator (cylinder, gas strut) to drive the task's linkage",
-                       description="Place a linear actuator between a ground pivot and a point of a moving "
-                                   "link of the task's best design (the one-call design): the placement map "
-                                   "over ground pivots (monotone stroke, stroke ratio, force transmission "
-                                   "angle, size) and the best placement. The task file's [actuator] table "
-                                   "gives the defaults (also where the ground pivot is searched, x, y, and "
-                                   "base_plate); these flags override it.")
+    p = _command(sub, "actuator", cmd_actuator,
+                 help="a linear actuator (cylinder, gas strut) to drive the task's linkage",
+                 description="Place a linear actuator between a ground pivot and a point of a moving "
+                             "link of the task's best design (the one-call design): the placement map "
+                             "over ground pivots (monotone stroke, stroke ratio, force transmission "
+                             "angle, size) and the best placement. The task file's [actuator] table "
+                             "gives the defaults (also where the ground pivot is searched, x, y, and "
+                             "base_plate); these flags override it.")
     _task_arg(p)
-    p.add_argument("-o", "--output", default=None,
-                   help="also draw the placement map and the chosen design (.png, .pdf, ...), export the "
-                        "design with its cylinder (.dxf, .svg) or animate it (.gif, .mp4)")
+    _output_arg(p, "also draw the placement map and the chosen design (.png, .pdf, ...), export the "
+                "design with its cylinder (.dxf, .svg) or animate it (.gif, .mp4)")
     _json_arg(p)
     p.add_argument("--link", choices=("coupler", "crank", "rocker"), default=None,
                    help="the link the actuator acts on (default: [actuator] link, else coupler)")
-    p.add_argument("--point", nargs=2, type=_finite, metavar=("X", "Y"),
-                   help="the actuator's moving point where it is at pose 1 (default: [actuator] point, else "
-                        "the middle of the coupler's A C, the crank's A or the rocker's C)")
+    _xy_arg(p, "--point", "the actuator's moving point where it is at pose 1 (default: [actuator] point, else "
+            "the middle of the coupler's A C, the crank's A or the rocker's C)")
     p.add_argument("--max-stroke-ratio", type=_finite, default=None, metavar="R",
                    help="largest acceptable open over closed length (default: [actuator] max_stroke_ratio, "
                         "else 1.8; a cylinder's is below 2)")
@@ -500,13 +503,12 @@ def _add_actuator(sub: _Commands) -> None:
     _strut_gap_args(p, "", "else a line in the clearance, 0.06 of its closed length as drawn and exported",
                     dest="width")
     _animation_args(p, "from the first pose to the last (default 60)", 20)
-    p.set_defaults(func=cmd_actuator)
 
 
 def _add_inverted(sub: _Commands) -> None:
-    p = sub.add_parser("inverted", help="inverted slider-cranks for the poses (a crank, a slotted coupler, a "
-                       "block on a ground swivel)",
-                       description=f"""
+    p = _command(sub, "inverted", cmd_inverted,
+                 help="inverted slider-cranks for the poses (a crank, a slotted coupler, a block on a ground swivel)",
+                 description=f"""
         Find the task's inverted slider-cranks: a crank whose coupler carries a straight slot that slides
         through a block pivoted on the ground at the swivel S (a slotted lever, an oscillating cylinder).
         Every driving crank of the task (three poses: crank pivots A0 on a grid over the [space] search
@@ -522,11 +524,9 @@ def _add_inverted(sub: _Commands) -> None:
         point's path over the travel is drawn.
     """)
     _task_arg(p)
-    p.add_argument("--pivot", nargs=2, type=_finite, metavar=("X", "Y"),
-                   help="the driving crank's fixed pivot A0 (default: searched)")
-    p.add_argument("--swivel", nargs=2, type=_finite, metavar=("X", "Y"),
-                   help="the block's ground pivot S, a point of the task's inverted sliders (three poses: on the "
-                   "pole circle; default: searched)")
+    _xy_arg(p, "--pivot", "the driving crank's fixed pivot A0 (default: searched)")
+    _xy_arg(p, "--swivel", "the block's ground pivot S, a point of the task's inverted sliders (three poses: on the "
+            "pole circle; default: searched)")
     p.add_argument("--samples", type=_ranged(1, 10_000), default=INVERTED_SAMPLES,
                    help=f"three poses: swivels sampled along the pole circle, 1 to 10000 (default: {INVERTED_SAMPLES})")
     p.add_argument("--pivot-grid", type=_ranged(2, 200), default=INVERTED_GRID, metavar="N",
@@ -535,9 +535,7 @@ def _add_inverted(sub: _Commands) -> None:
                    "times swivels) are built")
     _top_arg(p, "inverted slider-cranks, 1 to 100", _ranged(1, 100))
     _json_arg(p)
-    p.add_argument("-o", "--output", default=None,
-                   help="also draw the best: a picture (.png, .pdf, ...), an animation through the poses (.gif, "
-                   ".mp4) or a CAD export (.dxf, .svg)")
+    _output_arg(p, "also draw the best: a picture (.png, .pdf, ...), an animation through the poses (.gif, "
+                ".mp4) or a CAD export (.dxf, .svg)")
     _drawing_args(p, ", 2 to 10000")
     _force_arg(p)
-    p.set_defaults(func=cmd_inverted)

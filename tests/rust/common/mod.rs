@@ -11,6 +11,7 @@ use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
 
+pub(crate) mod curve_dyads;
 pub(crate) mod splitmix;
 
 /// The notes' worked example (positions-4-5.md, section 6): five poses of

@@ -89,7 +89,7 @@ const KIND_TOLERANCE: f64 = crate::tolerance::CUBIC_KIND;
 /// // The folium-like cubic y^2 = x^3 - x: an oval and an unbounded branch.
 /// let c = Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0])?;
 /// assert!(c.evaluate(Point2::new(1.0, 0.0)).abs() < 1e-15);
-/// let trace = c.trace(&Viewport::new(-3.0, 3.0, -3.0, 3.0)?, None);
+/// let trace = c.trace(&Viewport::new(-3.0, 3.0, -3.0, 3.0)?, None)?;
 /// assert_eq!(trace.in_view(), 2);
 /// assert!(trace.components.iter().any(|k| k.closed));
 /// # Ok::<(), burmester::Error>(())
@@ -488,14 +488,25 @@ impl Cubic {
 
     /// Every component of the curve that crosses `viewport`, traced into
     /// polylines (module docs). `tolerance` is the chord tolerance in the
-    /// units of the plane; `None` (or a value that is not a positive finite
-    /// number) gives [`Cubic::DEFAULT_TOLERANCE`] times the viewport's
-    /// diagonal.
-    pub fn trace(&self, viewport: &Viewport, tolerance: Option<f64>) -> CubicTrace {
-        let tol = tolerance
-            .filter(|t| t.is_finite() && *t > 0.0)
-            .unwrap_or(viewport.diagonal() * Self::DEFAULT_TOLERANCE);
-        trace::trace(self, viewport, tol)
+    /// units of the plane (below `1e-10` of the viewport's diagonal it is
+    /// raised to that); `None` gives [`Cubic::DEFAULT_TOLERANCE`] times the
+    /// viewport's diagonal.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::NotFinite`] for a tolerance that is NaN or infinite,
+    /// [`InvalidInput::NotPositive`] for one that is zero or negative.
+    pub fn trace(&self, viewport: &Viewport, tolerance: Option<f64>) -> Result<CubicTrace> {
+        let tol = match tolerance {
+            None => Self::default_tolerance(viewport),
+            Some(t) => crate::error::positive("tolerance", t)?,
+        };
+        Ok(trace::trace(self, viewport, tol))
+    }
+
+    /// [`Cubic::DEFAULT_TOLERANCE`] times the viewport's diagonal.
+    fn default_tolerance(viewport: &Viewport) -> f64 {
+        viewport.diagonal() * Self::DEFAULT_TOLERANCE
     }
 
     /// The polylines of [`Cubic::polylines`] with the given points of the
@@ -507,19 +518,14 @@ impl Cubic {
         viewport: &Viewport,
         marks: &[Point2<f64>],
     ) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
-        trace::trace_marked(
-            self,
-            viewport,
-            viewport.diagonal() * Self::DEFAULT_TOLERANCE,
-            marks,
-        )
+        trace::trace_marked(self, viewport, Self::default_tolerance(viewport), marks)
     }
 
     /// The polylines of [`Cubic::trace`] with the default tolerance, every
     /// component together. A closed component in view is one polyline whose
     /// last point equals its first.
     pub fn polylines(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        self.trace(viewport, None).polylines()
+        trace::trace(self, viewport, Self::default_tolerance(viewport)).polylines()
     }
 }
 

@@ -1127,7 +1127,7 @@ mod tests {
     fn an_oval_and_a_branch() {
         // y^2 = x^3 - x: an oval on [-1, 0] and a branch from x = 1.
         let c = Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
-        let t = c.trace(&vp(3.0), None);
+        let t = c.trace(&vp(3.0), None).unwrap();
         assert_eq!(t.components.len(), 2, "{t:?}");
         assert_eq!(t.in_view(), 2);
         let oval = t.components.iter().find(|k| k.bounded).unwrap();
@@ -1143,7 +1143,9 @@ mod tests {
             }
         }
         // Zoomed onto the oval only.
-        let t = c.trace(&Viewport::new(-1.2, 0.2, -1.0, 1.0).unwrap(), None);
+        let t = c
+            .trace(&Viewport::new(-1.2, 0.2, -1.0, 1.0).unwrap(), None)
+            .unwrap();
         assert_eq!(t.in_view(), 1);
         assert!(t.components.iter().any(|k| k.closed));
     }
@@ -1152,7 +1154,7 @@ mod tests {
     fn a_node_and_a_line_pair() {
         // The nodal cubic y^2 = x^2 (x + 1).
         let c = Cubic::new([0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
-        let t = c.trace(&vp(2.0), None);
+        let t = c.trace(&vp(2.0), None).unwrap();
         assert!(t.in_view() >= 1);
         // The loop passes near the node and through (-1, 0).
         assert!(distance(&t, Point2::new(-1.0, 0.0)) < t.tolerance);
@@ -1162,7 +1164,7 @@ mod tests {
         }
         // A line times a circle: x (x^2 + y^2 - 1).
         let c = Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0]).unwrap();
-        let t = c.trace(&vp(2.0), None);
+        let t = c.trace(&vp(2.0), None).unwrap();
         for p in [
             (0.0, 1.9),
             (0.0, -0.3),
@@ -1179,7 +1181,7 @@ mod tests {
     fn a_cusp_and_an_isolated_point() {
         // y^2 = x^3: a cusp at the origin.
         let c = Cubic::new([0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
-        let t = c.trace(&vp(2.0), None);
+        let t = c.trace(&vp(2.0), None).unwrap();
         assert!(distance(&t, Point2::new(0.0, 0.0)) < t.tolerance);
         assert!(distance(&t, Point2::new(1.0, 1.0)) < t.tolerance);
         assert!(distance(&t, Point2::new(1.0, -1.0)) < t.tolerance);
@@ -1189,7 +1191,7 @@ mod tests {
         // y^2 = x^2 (x - 1): an isolated point at the origin (not drawn) and
         // a branch from x = 1.
         let c = Cubic::new([0.0, 0.0, 0.0, -1.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
-        let t = c.trace(&vp(2.0), None);
+        let t = c.trace(&vp(2.0), None).unwrap();
         assert!(distance(&t, Point2::new(1.0, 0.0)) < t.tolerance);
         assert!(distance(&t, Point2::new(1.5, 1.5 * 0.5f64.sqrt())) < t.tolerance);
         for p in t.polylines().iter().flatten() {
@@ -1201,21 +1203,25 @@ mod tests {
     fn extreme_viewports_and_tolerances_finish() {
         let c = Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
         for h in [1e-300, 1e-12, 1e12, 1e300] {
-            let t = c.trace(&vp(h), None);
+            let t = c.trace(&vp(h), None).unwrap();
             for p in t.polylines().iter().flatten() {
                 assert!(p.x.is_finite() && p.y.is_finite());
             }
         }
-        let t = c.trace(&Viewport::new(-6e307, 6e307, -6e307, 6e307).unwrap(), None);
+        let t = c
+            .trace(&Viewport::new(-6e307, 6e307, -6e307, 6e307).unwrap(), None)
+            .unwrap();
         for p in t.polylines().iter().flatten() {
             assert!(p.x.is_finite() && p.y.is_finite());
         }
         // A tolerance far below rounding is raised; the work stays bounded.
-        let t = c.trace(&vp(3.0), Some(1e-300));
+        let t = c.trace(&vp(3.0), Some(1e-300)).unwrap();
         assert!(t.tolerance >= 1e-10 * 6.0 * 2f64.sqrt() * 0.99);
         assert!(t.polylines().iter().map(Vec::len).sum::<usize>() < 2_000_000);
         // A viewport far from the curve.
-        let t = c.trace(&Viewport::new(100.0, 101.0, -1.0, 0.0).unwrap(), None);
+        let t = c
+            .trace(&Viewport::new(100.0, 101.0, -1.0, 0.0).unwrap(), None)
+            .unwrap();
         assert_eq!(t.in_view(), 0);
     }
 
@@ -1223,12 +1229,61 @@ mod tests {
     fn three_lines() {
         // (x + 1.3 y) x (x + 1.1): every point near the view is on a line.
         let c = Cubic::new([0.0, 0.0, 0.0, 1.1, 1.43, 0.0, 1.0, 1.3, 0.0, 0.0]).unwrap();
-        let t = c.trace(&vp(4.0), None);
+        let t = c.trace(&vp(4.0), None).unwrap();
         for p in [(0.0, 3.0), (-1.1, -2.0), (2.6, -2.0), (0.0, 0.0)] {
             assert!(distance(&t, Point2::new(p.0, p.1)) < t.tolerance, "{p:?}");
         }
         for p in t.polylines().iter().flatten() {
             assert!(c.evaluate(*p).abs() < 1e-12, "{p}");
         }
+    }
+
+    #[test]
+    fn an_invalid_tolerance_is_a_typed_error() {
+        use crate::error::{Error, InvalidInput};
+        let c = Cubic::new([0.0, -1.0, 0.0, 0.0, 0.0, -1.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+        let view = vp(3.0);
+        // NaN and infinities are not finite; zero and below not positive.
+        let bad = [
+            (f64::NAN, "a finite number"),
+            (f64::INFINITY, "a finite number"),
+            (f64::NEG_INFINITY, "a finite number"),
+            (0.0, "greater than zero"),
+            (-0.0, "greater than zero"),
+            (-1e-3, "greater than zero"),
+            (-f64::MAX, "greater than zero"),
+        ];
+        for (t, want) in bad {
+            let e = c.trace(&view, Some(t)).unwrap_err();
+            let typed = match &e {
+                Error::InvalidInput(InvalidInput::NotFinite {
+                    name: "tolerance",
+                    value,
+                }) => !t.is_finite() && value.to_bits() == t.to_bits(),
+                Error::InvalidInput(InvalidInput::NotPositive {
+                    name: "tolerance",
+                    value,
+                }) => t.is_finite() && value.to_bits() == t.to_bits(),
+                _ => false,
+            };
+            assert!(typed, "{t}: {e:?}");
+            let message = e.to_string();
+            assert!(
+                message.starts_with(&format!("tolerance must be {want}")),
+                "{message}"
+            );
+        }
+        // The default, given or not, is one trace, and the one of `polylines`.
+        let default = c.trace(&view, None).unwrap();
+        let given = c
+            .trace(&view, Some(view.diagonal() * Cubic::DEFAULT_TOLERANCE))
+            .unwrap();
+        assert_eq!(
+            default.tolerance,
+            view.diagonal() * Cubic::DEFAULT_TOLERANCE
+        );
+        assert_eq!(default.polylines(), given.polylines());
+        assert_eq!(default.polylines(), c.polylines(&view));
+        assert_eq!(default.in_view(), 2);
     }
 }
