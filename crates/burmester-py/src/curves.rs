@@ -349,20 +349,21 @@ pub(crate) use polylines_method;
 
 /// The branch-free arcs of a four-pose construction (any driven dyad kind)
 /// inside `vp`, of the circle-point curve where `circle` (else the
-/// center-point curve), as polylines; computed without the GIL.
+/// center-point curve), as polylines; computed without the GIL, Ctrl-C
+/// watched (a degenerate task traces a million vertices: seconds).
 pub(crate) fn free_arcs<'py>(
     py: Python<'py>,
     arcs: &FilemonArcs,
     vp: &Viewport,
     circle: bool,
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-    let lines = py.detach(|| {
+    let lines = crate::run::run_in(py, true, None, None, "traced vertices", |control| {
         if circle {
-            arcs.free_circle_arcs(vp)
+            arcs.free_circle_arcs_with(vp, control)
         } else {
-            arcs.free_center_arcs(vp)
+            arcs.free_center_arcs_with(vp, control)
         }
-    });
+    })?;
     lines.iter().map(|l| polyline(py, l)).collect()
 }
 
