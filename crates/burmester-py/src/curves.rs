@@ -358,11 +358,7 @@ pub(crate) fn free_arcs<'py>(
     circle: bool,
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
     let lines = crate::run::run_in(py, true, None, None, "traced vertices", |control| {
-        if circle {
-            arcs.free_circle_arcs_with(vp, control)
-        } else {
-            arcs.free_center_arcs_with(vp, control)
-        }
+        arcs.free_arcs_with(vp, circle, control)
     })?;
     lines.iter().map(|l| polyline(py, l)).collect()
 }

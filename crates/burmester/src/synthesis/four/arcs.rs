@@ -249,25 +249,8 @@ impl FilemonArcs {
     /// one, clipped.
     pub fn free_circle_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
         // Without a cancel flag it never fails.
-        self.free_circle_arcs_with(viewport, &Control::new())
+        self.free_arcs_with(viewport, true, &Control::new())
             .unwrap_or_default()
-    }
-
-    /// [`free_circle_arcs`](Self::free_circle_arcs) following `control`:
-    /// the cancel flag is checked (and progress reported, in traced
-    /// vertices: each is classified, then each chord is looked at) every
-    /// 1024 vertices and before each bisection of a class change.
-    ///
-    /// # Errors
-    ///
-    /// [`crate::Error::Cancelled`] when the flag is set.
-    pub fn free_circle_arcs_with(
-        &self,
-        viewport: &Viewport,
-        control: &Control<'_>,
-    ) -> Result<Vec<Vec<Point2<f64>>>> {
-        let marks = self.ends.iter().map(|e| e.circle).collect();
-        self.free_arcs(viewport, marks, true, control)
     }
 
     /// The branch-free arcs of the center-point curve in view (the driving
@@ -278,35 +261,32 @@ impl FilemonArcs {
     /// its circle point.
     pub fn free_center_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
         // Without a cancel flag it never fails.
-        self.free_center_arcs_with(viewport, &Control::new())
+        self.free_arcs_with(viewport, false, &Control::new())
             .unwrap_or_default()
     }
 
-    /// [`free_center_arcs`](Self::free_center_arcs) following `control`, as
-    /// [`free_circle_arcs_with`](Self::free_circle_arcs_with).
+    /// [`free_circle_arcs`](Self::free_circle_arcs) (where `circle`) or
+    /// [`free_center_arcs`](Self::free_center_arcs) following `control`:
+    /// the cancel flag is checked before the trace, then (with a progress
+    /// report in traced vertices, each classified once) every 1024
+    /// vertices and before each bisection of a class change.
     ///
     /// # Errors
     ///
     /// [`crate::Error::Cancelled`] when the flag is set.
-    pub fn free_center_arcs_with(
+    pub fn free_arcs_with(
         &self,
         viewport: &Viewport,
-        control: &Control<'_>,
-    ) -> Result<Vec<Vec<Point2<f64>>>> {
-        let marks = self.ends.iter().filter_map(|e| e.center).collect();
-        self.free_arcs(viewport, marks, false, control)
-    }
-
-    /// The free arcs of one curve (the circle-point curve when `circle`)
-    /// with `marks` (the exact arc ends in its plane) and the driven dyad's
-    /// point there as the vertices where the class may change.
-    fn free_arcs(
-        &self,
-        viewport: &Viewport,
-        mut marks: Vec<Point2<f64>>,
         circle: bool,
         control: &Control<'_>,
     ) -> Result<Vec<Vec<Point2<f64>>>> {
+        // The exact arc ends in the curve's plane, and the driven dyad's
+        // point there, are the vertices where the class may change.
+        let mut marks: Vec<Point2<f64>> = self
+            .ends
+            .iter()
+            .filter_map(|e| if circle { Some(e.circle) } else { e.center })
+            .collect();
         let driven = self.driven();
         let (curve, at) = if circle {
             (self.four.circle_point_curve(), Some(driven.circle()))
@@ -353,7 +333,7 @@ struct Vertex {
     free: Option<bool>,
 }
 
-/// The progress of [`FilemonArcs::free_arcs`] in traced vertices, with its
+/// The progress of [`FilemonArcs::free_arcs_with`] in traced vertices, with its
 /// control.
 struct Poll<'a, 'c> {
     control: &'a Control<'c>,
