@@ -3958,3 +3958,82 @@ fn issue24_a_complex_pair_near_merging_is_resolved_in_every_frame() {
         None,
     );
 }
+
+/// The task, driven center and view of `fuzz/open/curves/slow-1.5-s-free-
+/// arcs-was-0.9-s-454464bc` (issue 24 item 10): a degenerate curve whose
+/// center-point trace in that view has about a million vertices, so that
+/// the free arcs take about a second.
+fn issue24_slow_free_arcs() -> (FourPositions, FilemonArcs, Viewport) {
+    let poses = [
+        Pose::new(130.2796224988182, 78.12500000555079, 3.981436403589793),
+        Pose::new(6.625753534563728, 78.12500000555079, -74.9834073464102),
+        Pose::new(156.0410816761015, 78.12500000555079, 3.068444216089793),
+        Pose::new(83.79937388360848, 78.12500000555079, -17.2060635964063),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let driven = four
+        .dyad_from_center(Point2::new(74.11694667838805, 72.28322417205871))
+        .unwrap();
+    let fa = four.filemon(&driven).unwrap();
+    let view = Viewport::new(
+        73.24133963475096,
+        74.99255372202514,
+        71.40761712842162,
+        73.1588312156958,
+    )
+    .unwrap();
+    (four, fa, view)
+}
+
+/// Issue 24 item 10: the free arcs follow a control. Without cancelling,
+/// progress up to `(total, total)`; a
+/// control that cancels at its `n`-th progress report stops there with
+/// `Cancelled` (before the end), and one cancelled before the call stops
+/// before tracing, in both planes.
+#[test]
+fn issue24_free_arcs_stop_when_cancelled() {
+    use std::sync::Mutex;
+    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+    use burmester::Control;
+
+    let (_, fa, view) = issue24_slow_free_arcs();
+    let stop = AtomicBool::new(false);
+    let last = Mutex::new((0, 0));
+    let hook = |d: usize, t: usize| *last.lock().unwrap() = (d, t);
+    let control = Control::new().with_cancel(&stop).with_progress(&hook);
+    // (`free_center_arcs` is this call without a flag.)
+    fa.free_arcs_with(&view, false, &control).unwrap();
+    let (done, total) = *last.lock().unwrap();
+    assert_eq!(done, total);
+    assert!(
+        total > 100_000,
+        "{total} traced vertices: not the slow input"
+    );
+    // (Two traces of a million vertices: seconds in a debug build.)
+    let n = 3;
+    let (stop, polls) = (AtomicBool::new(false), AtomicUsize::new(0));
+    let hook = |_: usize, _: usize| {
+        if polls.fetch_add(1, Ordering::Relaxed) + 1 >= n {
+            stop.store(true, Ordering::Relaxed);
+        }
+    };
+    let control = Control::new().with_cancel(&stop).with_progress(&hook);
+    let r = fa.free_arcs_with(&view, false, &control);
+    assert!(
+        matches!(r, Err(Error::Cancelled { done, total: t }) if done < t && t == total),
+        "{r:?}"
+    );
+    assert_eq!(polls.load(Ordering::Relaxed), n);
+    let stop = AtomicBool::new(true);
+    let control = Control::new().with_cancel(&stop);
+    for r in [
+        fa.free_arcs_with(&view, false, &control),
+        fa.free_arcs_with(&view, true, &control),
+    ] {
+        assert!(
+            matches!(r, Err(Error::Cancelled { done: 0, total: 0 })),
+            "{r:?}"
+        );
+    }
+}

@@ -349,20 +349,17 @@ pub(crate) use polylines_method;
 
 /// The branch-free arcs of a four-pose construction (any driven dyad kind)
 /// inside `vp`, of the circle-point curve where `circle` (else the
-/// center-point curve), as polylines; computed without the GIL.
+/// center-point curve), as polylines; computed without the GIL, Ctrl-C
+/// watched (a degenerate task traces a million vertices: seconds).
 pub(crate) fn free_arcs<'py>(
     py: Python<'py>,
     arcs: &FilemonArcs,
     vp: &Viewport,
     circle: bool,
 ) -> PyResult<Vec<Bound<'py, PyArray2<f64>>>> {
-    let lines = py.detach(|| {
-        if circle {
-            arcs.free_circle_arcs(vp)
-        } else {
-            arcs.free_center_arcs(vp)
-        }
-    });
+    let lines = crate::run::run_in(py, true, None, None, "traced vertices", |control| {
+        arcs.free_arcs_with(vp, circle, control)
+    })?;
     lines.iter().map(|l| polyline(py, l)).collect()
 }
 

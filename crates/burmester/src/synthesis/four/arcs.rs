@@ -3,8 +3,9 @@
 
 use nalgebra::Point2;
 
-use super::FourPositions;
 use super::split::split_by;
+use super::{FourPositions, POLL_SAMPLES};
+use crate::engine::Control;
 use crate::error::Result;
 use crate::geom::cubic::roots::quadratic_roots;
 use crate::geom::{Cubic, Line, LocalFrame, PerPose, Viewport, normalized};
@@ -247,8 +248,9 @@ impl FilemonArcs {
     /// same in every view: the arcs of a smaller view are those of a larger
     /// one, clipped.
     pub fn free_circle_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        let marks = self.ends.iter().map(|e| e.circle).collect();
-        self.free_arcs(viewport, marks, true)
+        // Without a cancel flag it never fails.
+        self.free_arcs_with(viewport, true, &Control::new())
+            .unwrap_or_default()
     }
 
     /// The branch-free arcs of the center-point curve in view (the driving
@@ -258,19 +260,33 @@ impl FilemonArcs {
     /// vertices where the class may change, each traced point classified by
     /// its circle point.
     pub fn free_center_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        let marks = self.ends.iter().filter_map(|e| e.center).collect();
-        self.free_arcs(viewport, marks, false)
+        // Without a cancel flag it never fails.
+        self.free_arcs_with(viewport, false, &Control::new())
+            .unwrap_or_default()
     }
 
-    /// The free arcs of one curve (the circle-point curve when `circle`)
-    /// with `marks` (the exact arc ends in its plane) and the driven dyad's
-    /// point there as the vertices where the class may change.
-    fn free_arcs(
+    /// [`free_circle_arcs`](Self::free_circle_arcs) (where `circle`) or
+    /// [`free_center_arcs`](Self::free_center_arcs) following `control`:
+    /// the cancel flag is checked before the trace, then (with a progress
+    /// report in traced vertices, each classified once) every 1024
+    /// vertices and before each bisection of a class change.
+    ///
+    /// # Errors
+    ///
+    /// [`crate::Error::Cancelled`] when the flag is set.
+    pub fn free_arcs_with(
         &self,
         viewport: &Viewport,
-        mut marks: Vec<Point2<f64>>,
         circle: bool,
-    ) -> Vec<Vec<Point2<f64>>> {
+        control: &Control<'_>,
+    ) -> Result<Vec<Vec<Point2<f64>>>> {
+        // The exact arc ends in the curve's plane, and the driven dyad's
+        // point there, are the vertices where the class may change.
+        let mut marks: Vec<Point2<f64>> = self
+            .ends
+            .iter()
+            .filter_map(|e| if circle { Some(e.circle) } else { e.center })
+            .collect();
         let driven = self.driven();
         let (curve, at) = if circle {
             (self.four.circle_point_curve(), Some(driven.circle()))
@@ -290,12 +306,56 @@ impl FilemonArcs {
                     .map(|b| b == Branch::Free)
             }
         };
+        control.check(0, 0)?;
         let lines = curve.polylines_marked(viewport, &marks);
+        // Progress counts the traced vertices, each classified once.
+        let mut poll = Poll {
+            control,
+            done: 0,
+            total: lines.iter().map(Vec::len).sum(),
+        };
         // The curve's point of a chord lies within the trace's chord
         // tolerance of it; twice that is the reach of the chord's own branch.
         let reach = 2.0 * Cubic::DEFAULT_TOLERANCE * viewport.diagonal();
-        let lines = resolve_changes(curve, &lines, reach, &free);
-        free_pieces(&lines, never, free)
+        let lines = resolve_changes(curve, &lines, reach, &free, &mut poll)?;
+        control.report(poll.total, poll.total);
+        Ok(free_pieces(&lines, never))
+    }
+}
+
+/// A traced vertex: where it is, the index of the mark it is (if any) and,
+/// for a vertex that is not a mark, whether it is free (`None` where it
+/// has no class).
+#[derive(Debug, Clone, Copy)]
+struct Vertex {
+    at: Point2<f64>,
+    mark: Option<usize>,
+    free: Option<bool>,
+}
+
+/// The progress of [`FilemonArcs::free_arcs_with`] in traced vertices, with its
+/// control.
+struct Poll<'a, 'c> {
+    control: &'a Control<'c>,
+    done: usize,
+    total: usize,
+}
+
+impl Poll<'_, '_> {
+    /// One more unit done: every [`POLL_SAMPLES`] units the progress is
+    /// reported and the cancel flag checked.
+    fn step(&mut self) -> Result<()> {
+        if self.done % POLL_SAMPLES == 0 {
+            self.check()?;
+        }
+        self.done += 1;
+        Ok(())
+    }
+
+    /// Reports the progress and checks the cancel flag now.
+    fn check(&self) -> Result<()> {
+        self.control.report(self.done, self.total);
+        self.control.check(self.done, self.total)
     }
 }
 
@@ -364,9 +424,10 @@ fn change_between(
     if la { a } else { b }
 }
 
-/// The traced polylines with the class changes that a chord next to a mark
-/// (or between vertices of different classes) hides made vertices: the
-/// curve's point at the middle of such a chord (taken back onto
+/// The traced polylines, each vertex that is not a mark classified by
+/// `free` (once: the labels go on with the vertices), with the class
+/// changes that a chord next to a mark (or between vertices of different
+/// classes) hides made vertices: the curve's point at the middle of such a chord (taken back onto
 /// the curve along the gradient, within `reach` of the middle and between
 /// the chord's ends) is classified, and where its class differs from that
 /// of an end that is not a mark, the change is found by bisection on the
@@ -387,25 +448,34 @@ fn resolve_changes(
     lines: &[Vec<(Point2<f64>, Option<usize>)>],
     reach: f64,
     free: &impl Fn(Point2<f64>) -> Option<bool>,
-) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
+    poll: &mut Poll<'_, '_>,
+) -> Result<Vec<Vec<Vertex>>> {
+    let change = |at| Vertex {
+        at,
+        mark: Some(CHANGE),
+        free: None,
+    };
     lines
         .iter()
         .map(|line| {
-            let labels: Vec<Option<bool>> = line
-                .iter()
-                .map(|v| if v.1.is_some() { None } else { free(v.0) })
-                .collect();
             let mut out = Vec::with_capacity(line.len());
-            for (i, v) in line.iter().enumerate() {
-                if i > 0 {
-                    let (a, b) = (line[i - 1].0, v.0);
-                    let (la, lb) = (labels[i - 1], labels[i]);
+            let mut prev: Option<Vertex> = None;
+            for &(at, mark) in line {
+                poll.step()?;
+                let v = Vertex {
+                    at,
+                    mark,
+                    free: if mark.is_some() { None } else { free(at) },
+                };
+                if let Some(u) = prev {
+                    let (a, b) = (u.at, v.at);
+                    let (la, lb) = (u.free, v.free);
                     // A chord next to a mark (an arc end that may be
                     // rounding along a line of centers) or whose ends
                     // differ; between two vertices of one class away from
                     // the marks a change is a pair of them, which the exact
                     // arc ends resolve.
-                    let marked = line[i - 1].1.is_some() || v.1.is_some();
+                    let marked = u.mark.is_some() || v.mark.is_some();
                     if (la.is_some() || lb.is_some()) && (marked || la != lb) {
                         let m = Point2::from((a.coords + b.coords) * 0.5);
                         if let Some(q) = curve_point_between(curve, m, reach, a, b)
@@ -414,24 +484,30 @@ fn resolve_changes(
                             if let Some(lm) = free(q) {
                                 let differs_a = la.is_some_and(|l| l != lm);
                                 let differs_b = lb.is_some_and(|l| l != lm);
+                                if differs_a || differs_b {
+                                    poll.check()?;
+                                }
                                 if differs_a {
-                                    let c = change_between(curve, reach, a, !lm, q, free);
-                                    out.push((c, Some(CHANGE)));
+                                    out.push(change(change_between(curve, reach, a, !lm, q, free)));
                                 }
                                 if differs_a || differs_b {
-                                    out.push((q, None));
+                                    out.push(Vertex {
+                                        at: q,
+                                        mark: None,
+                                        free: Some(lm),
+                                    });
                                 }
                                 if differs_b {
-                                    let c = change_between(curve, reach, q, lm, b, free);
-                                    out.push((c, Some(CHANGE)));
+                                    out.push(change(change_between(curve, reach, q, lm, b, free)));
                                 }
                             }
                         }
                     }
                 }
-                out.push(*v);
+                out.push(v);
+                prev = Some(v);
             }
-            out
+            Ok(out)
         })
         .collect()
 }
@@ -442,22 +518,19 @@ fn resolve_changes(
 /// between the marks (a piece whose labels disagree, where a change was not
 /// marked, is cut where they change, as [`split_by`] does), and
 /// consecutive free pieces are joined except at the mark `never` (never
-/// free), also around a closed polyline.
-fn free_pieces(
-    lines: &[Vec<(Point2<f64>, Option<usize>)>],
-    never: usize,
-    free: impl Fn(Point2<f64>) -> Option<bool>,
-) -> Vec<Vec<Point2<f64>>> {
+/// free), also around a closed polyline. The vertices' labels are those
+/// they carry (classified once, by [`resolve_changes`]).
+fn free_pieces(lines: &[Vec<Vertex>], never: usize) -> Vec<Vec<Point2<f64>>> {
     let mut out = Vec::new();
     for line in lines {
         if line.len() < 2 {
             continue;
         }
         // Cut at the marks.
-        let mut pieces: Vec<&[(Point2<f64>, Option<usize>)]> = Vec::new();
+        let mut pieces: Vec<&[Vertex]> = Vec::new();
         let mut start = 0;
         for i in 1..line.len() {
-            if line[i].1.is_some() || i + 1 == line.len() {
+            if line[i].mark.is_some() || i + 1 == line.len() {
                 pieces.push(&line[start..=i]);
                 start = i;
             }
@@ -467,47 +540,43 @@ fn free_pieces(
         // `never`).
         let mut runs: Vec<(bool, Vec<Point2<f64>>, bool)> = Vec::new();
         for piece in pieces {
-            let inner: Vec<Point2<f64>> = piece
+            let labels: Vec<Option<bool>> = piece
                 .iter()
                 .enumerate()
-                .filter(|(j, v)| v.1.is_none() || (*j != 0 && *j + 1 != piece.len()))
-                .map(|(_, v)| v.0)
+                .filter(|(j, v)| v.mark.is_none() || (*j != 0 && *j + 1 != piece.len()))
+                .map(|(_, v)| v.free)
                 .collect();
-            let labels: Vec<Option<bool>> = inner.iter().map(|&p| free(p)).collect();
-            let joinable = piece[0].1.is_some_and(|k| k != never);
+            let joinable = piece[0].mark.is_some_and(|k| k != never);
             let (yes, no) = labels.iter().fold((0, 0), |(y, n), l| match l {
                 Some(true) => (y + 1, n),
                 Some(false) => (y, n + 1),
                 None => (y, n),
             });
-            let points: Vec<Point2<f64>> = piece.iter().map(|v| v.0).collect();
+            let points: Vec<Point2<f64>> = piece.iter().map(|v| v.at).collect();
             if yes + no == labels.len() && (yes == 0 || no == 0) && !labels.is_empty() {
                 runs.push((yes > 0, points, joinable));
             } else {
                 // Labels disagree or are missing: cut where they change.
                 let cuts: Vec<Point2<f64>> = piece
                     .iter()
-                    .filter(|v| v.1.is_some())
-                    .map(|v| v.0)
+                    .filter(|v| v.mark.is_some())
+                    .map(|v| v.at)
                     .collect();
                 // A mark at an end takes the label of its neighbour.
                 let n = piece.len();
                 let label_at = |j: usize| -> Option<bool> {
-                    let j = if piece[j].1.is_some() && n > 2 {
+                    let j = if piece[j].mark.is_some() && n > 2 {
                         if j == 0 { 1 } else { n - 2 }
                     } else {
                         j
                     };
-                    if piece[j].1.is_some() {
-                        return None;
-                    }
-                    free(piece[j].0)
+                    piece[j].free
                 };
                 // The labels by the points' bits (a lookup, not a search: a
                 // piece may have a million vertices).
                 let all: std::collections::HashMap<(u64, u64), Option<bool>> = (0..n)
                     .map(|j| {
-                        let p = piece[j].0;
+                        let p = piece[j].at;
                         ((p.x.to_bits(), p.y.to_bits()), label_at(j))
                     })
                     .collect();
@@ -565,11 +634,11 @@ fn free_pieces(
         // Around a closed polyline: the last free run goes on into the
         // first when they meet at the polyline's start (not a mark, or a
         // mark other than `never`).
-        let closed = line[0].0 == line[line.len() - 1].0;
-        let start_ok = line[0].1.is_none_or(|k| k != never);
+        let closed = line[0].at == line[line.len() - 1].at;
+        let start_ok = line[0].mark.is_none_or(|k| k != never);
         if closed && start_ok && joined.len() >= 2 {
-            let first_at_start = joined[0].first() == Some(&line[0].0);
-            let last_at_end = joined[joined.len() - 1].last() == Some(&line[0].0);
+            let first_at_start = joined[0].first() == Some(&line[0].at);
+            let last_at_end = joined[joined.len() - 1].last() == Some(&line[0].at);
             if first_at_start && last_at_end {
                 let first = joined.remove(0);
                 if let Some(last) = joined.last_mut() {
