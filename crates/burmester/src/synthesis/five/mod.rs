@@ -551,6 +551,28 @@ impl Bounded {
     }
 }
 
+/// The six forms of an [`Elimination`] as arrays of their lengths
+/// (`(values, bounds)`): `a, d`, `b, e` and `c, g`.
+struct Fixed {
+    cubic: [([f64; 4], [f64; 4]); 2],
+    quadratic: [([f64; 3], [f64; 3]); 2],
+    linear: [([f64; 2], [f64; 2]); 2],
+}
+
+impl Fixed {
+    fn of([a, b, c, d, e, g]: [&Bounded; 6]) -> Self {
+        fn arr<const N: usize>(f: &Bounded) -> ([f64; N], [f64; N]) {
+            let take = |x: &[f64]| core::array::from_fn(|i| x.get(i).copied().unwrap_or(0.0));
+            (take(&f.v), take(&f.e))
+        }
+        Fixed {
+            cubic: [arr(a), arr(d)],
+            quadratic: [arr(b), arr(e)],
+            linear: [arr(c), arr(g)],
+        }
+    }
+}
+
 /// The powers `1, x, x^2, x^3` of a direction's first coordinate and of its
 /// magnitude, as `powi` forms them (so that [`Bounded::at_powers`] agrees
 /// with [`form_eval`] to the bit), and the second coordinate and its
@@ -634,6 +656,10 @@ struct Elimination {
     q: Vector2<f64>,
     /// `a, b, c` of `f` and `d, e, g` of `h` along the line `Q + t w`.
     forms: [Bounded; 6],
+    /// The same forms' values and bounds in arrays of their lengths (`a, d`
+    /// cubic, `b, e` quadratic, `c, g` linear), for
+    /// [`Elimination::resultant_at`].
+    fixed: Fixed,
     /// The resultant `R(w)`.
     r: Bounded,
     /// `P13` and `P23`.
@@ -772,6 +798,7 @@ impl Elimination {
         let asymptote = (common && n.norm() > 0.0).then(|| perp(n) / n.norm());
         Some(Elimination {
             q,
+            fixed: Fixed::of([&a, &b, &c, &d, &e, &g]),
             forms: [a, b, c, d, e, g],
             r,
             poles: [shared(0, 2), shared(1, 2)],
@@ -844,7 +871,10 @@ impl Elimination {
     /// products, and the rounding of each).
     fn resultant_at(&self, w: Vector2<f64>) -> (f64, f64) {
         let p = Powers::of(w);
-        let [a, b, c, d, e, g] = self.forms.each_ref().map(|f| f.at_powers(&p));
+        let f = &self.fixed;
+        let [a, d] = [0, 1].map(|i| p.at(f.cubic[i].0, f.cubic[i].1));
+        let [b, e] = [0, 1].map(|i| p.at(f.quadratic[i].0, f.quadratic[i].1));
+        let [c, g] = [0, 1].map(|i| p.at(f.linear[i].0, f.linear[i].1));
         // A product and a difference of `(value, error)` pairs.
         let mul = |x: (f64, f64), y: (f64, f64)| {
             let v = x.0 * y.0;
