@@ -525,11 +525,97 @@ impl Bounded {
     /// The value at `w` and its error bound (in units of `eps`, with the
     /// rounding of the evaluation).
     fn at(&self, w: Vector2<f64>) -> (f64, f64) {
-        let (ax, ay) = (w.x.abs(), w.y.abs());
+        self.at_powers(&Powers::of(w))
+    }
+
+    /// [`Bounded::at`] from the powers of `w`: the same arithmetic as
+    /// [`form_eval`] on the values, the bound and the magnitudes, without
+    /// allocating (as [`Elimination::resultant_at`] evaluates the six forms
+    /// from [`Fixed`], some 440 times per elimination on the notes' worked
+    /// example: the bisection on the accurate value).
+    fn at_powers(&self, p: &Powers) -> (f64, f64) {
+        match (self.v.as_slice(), self.e.as_slice()) {
+            ([v0, v1], [e0, e1]) => p.at([*v0, *v1], [*e0, *e1]),
+            ([v0, v1, v2], [e0, e1, e2]) => p.at([*v0, *v1, *v2], [*e0, *e1, *e2]),
+            ([v0, v1, v2, v3], [e0, e1, e2, e3]) => {
+                p.at([*v0, *v1, *v2, *v3], [*e0, *e1, *e2, *e3])
+            }
+            // Not one of the six forms (of degree 1 to 3).
+            _ => {
+                let (x, y, ax, ay) = (p.x[1], p.y, p.ax[1], p.ay);
+                (
+                    form_eval(&self.v, x, y),
+                    form_eval(&self.e, ax, ay) + form_eval(&self.abs(), ax, ay),
+                )
+            }
+        }
+    }
+}
+
+/// The six forms of an [`Elimination`] as arrays of their lengths
+/// (`(values, bounds)`): `a, d`, `b, e` and `c, g`.
+struct Fixed {
+    cubic: [([f64; 4], [f64; 4]); 2],
+    quadratic: [([f64; 3], [f64; 3]); 2],
+    linear: [([f64; 2], [f64; 2]); 2],
+}
+
+impl Fixed {
+    fn of([a, b, c, d, e, g]: [&Bounded; 6]) -> Self {
+        fn arr<const N: usize>(f: &Bounded) -> ([f64; N], [f64; N]) {
+            let take = |x: &[f64]| core::array::from_fn(|i| x.get(i).copied().unwrap_or(0.0));
+            (take(&f.v), take(&f.e))
+        }
+        Fixed {
+            cubic: [arr(a), arr(d)],
+            quadratic: [arr(b), arr(e)],
+            linear: [arr(c), arr(g)],
+        }
+    }
+}
+
+/// The powers `1, x, x^2, x^3` of a direction's first coordinate and of its
+/// magnitude, as `powi` forms them (so that [`Bounded::at_powers`] agrees
+/// with [`form_eval`] to the bit), and the second coordinate and its
+/// magnitude.
+struct Powers {
+    x: [f64; 4],
+    y: f64,
+    ax: [f64; 4],
+    ay: f64,
+}
+
+impl Powers {
+    /// A form of `N` coefficients `v` with bound `e` at the direction:
+    /// [`form_eval`]'s sums, term by term in its order.
+    #[inline]
+    fn at<const N: usize>(&self, v: [f64; N], e: [f64; N]) -> (f64, f64) {
+        let eval = |f: [f64; N], x: &[f64; 4], y: f64| {
+            let mut acc = 0.0;
+            let mut py = 1.0;
+            for (i, c) in f.into_iter().enumerate() {
+                acc += c * x[N - 1 - i] * py;
+                py *= y;
+            }
+            acc
+        };
         (
-            form_eval(&self.v, w.x, w.y),
-            form_eval(&self.e, ax, ay) + form_eval(&self.abs(), ax, ay),
+            eval(v, &self.x, self.y),
+            eval(e, &self.ax, self.ay) + eval(v.map(f64::abs), &self.ax, self.ay),
         )
+    }
+
+    fn of(w: Vector2<f64>) -> Self {
+        let pw = |x: f64| {
+            let x2 = x * x;
+            [1.0, x, x2, x * x2]
+        };
+        Powers {
+            x: pw(w.x),
+            y: w.y,
+            ax: pw(w.x.abs()),
+            ay: w.y.abs(),
+        }
     }
 }
 
@@ -571,6 +657,10 @@ struct Elimination {
     q: Vector2<f64>,
     /// `a, b, c` of `f` and `d, e, g` of `h` along the line `Q + t w`.
     forms: [Bounded; 6],
+    /// The same forms' values and bounds in arrays of their lengths (`a, d`
+    /// cubic, `b, e` quadratic, `c, g` linear), for
+    /// [`Elimination::resultant_at`].
+    fixed: Fixed,
     /// The resultant `R(w)`.
     r: Bounded,
     /// `P13` and `P23`.
@@ -709,6 +799,7 @@ impl Elimination {
         let asymptote = (common && n.norm() > 0.0).then(|| perp(n) / n.norm());
         Some(Elimination {
             q,
+            fixed: Fixed::of([&a, &b, &c, &d, &e, &g]),
             forms: [a, b, c, d, e, g],
             r,
             poles: [shared(0, 2), shared(1, 2)],
@@ -780,7 +871,11 @@ impl Elimination {
     /// first-order bound on its error (the forms' own errors through the
     /// products, and the rounding of each).
     fn resultant_at(&self, w: Vector2<f64>) -> (f64, f64) {
-        let [a, b, c, d, e, g] = self.forms.clone().map(|f| f.at(w));
+        let p = Powers::of(w);
+        let f = &self.fixed;
+        let [a, d] = [0, 1].map(|i| p.at(f.cubic[i].0, f.cubic[i].1));
+        let [b, e] = [0, 1].map(|i| p.at(f.quadratic[i].0, f.quadratic[i].1));
+        let [c, g] = [0, 1].map(|i| p.at(f.linear[i].0, f.linear[i].1));
         // A product and a difference of `(value, error)` pairs.
         let mul = |x: (f64, f64), y: (f64, f64)| {
             let v = x.0 * y.0;
@@ -813,16 +908,33 @@ impl Elimination {
     /// crowd, the low coefficients are the forms' values there, as accurate
     /// as [`Elimination::resultant_at`], so the roots are found alike in
     /// every frame.
+    ///
+    /// That search again (two eigenvalue problems, six forms turned and a
+    /// bisection per window: two thirds of the time of
+    /// [`FivePositions::new`] on the notes' worked example, measured with
+    /// the forms evaluated without allocating) is done only
+    /// where the first answer is in doubt ([`all_found`]): it is skipped
+    /// when the first search found six simple roots, each a sign change of
+    /// the accurate value, with that value beyond its band between every
+    /// two neighbours. Nothing is left then for a crowd to hide.
     fn roots(&self) -> Vec<(f64, usize)> {
         let value = |wx: f64, wy: f64| self.resultant_at(Vector2::new(wx, wy));
-        let mut roots = form_roots_mult(&self.r.v, &value);
-        let gap = |x: f64, y: f64| {
-            let d = (x - y).rem_euclid(core::f64::consts::PI);
-            d.min(core::f64::consts::PI - d)
-        };
+        let roots = form_roots_mult(&self.r.v, &value);
+        if all_found(&roots, &value) {
+            return roots;
+        }
+        self.searched_again(roots)
+    }
+
+    /// `roots` (of [`form_roots_mult`]) with those in each of [`clusters`]'
+    /// windows replaced by the roots found there again from the forms
+    /// turned to the window (see [`Elimination::roots`]).
+    fn searched_again(&self, mut roots: Vec<(f64, usize)>) -> Vec<(f64, usize)> {
+        let value = |wx: f64, wy: f64| self.resultant_at(Vector2::new(wx, wy));
+        let gap = angle_gap;
         for (center, half) in clusters(&self.r.v) {
             let (s, c) = center.sin_cos();
-            let [a, b, cc, d, e, g] = self.forms.clone().map(|f| f.rotated(c, s));
+            let [a, b, cc, d, e, g] = self.forms.each_ref().map(|f| f.rotated(c, s));
             let turned = resultant([&a, &b, &cc, &d, &e, &g]);
             let t = half.tan();
             let found: Vec<(f64, usize)> = roots_in_mult(&turned.v, -1.5 * t, 1.5 * t, &|u| {
@@ -860,10 +972,7 @@ impl Elimination {
         let mut infinite = Vec::new();
         let far = 1.0 / (tolerance::BURMESTER_EPS * f64::EPSILON);
         // The root of the common asymptotic direction: the nearest.
-        let gap = |s: f64, u: f64| {
-            let d = (s - u).rem_euclid(core::f64::consts::PI);
-            d.min(core::f64::consts::PI - d)
-        };
+        let gap = angle_gap;
         let at_infinity = self.asymptote.and_then(|u| {
             let su = u.y.atan2(u.x);
             roots
@@ -880,7 +989,7 @@ impl Elimination {
                 _ => Vector2::new(s.cos(), s.sin()),
             };
             let [(av, am), (bv, bm), (cv, cm), (dv, dm), (ev, em), (gv, gm)] =
-                self.forms.clone().map(|f| f.at(w));
+                self.forms.each_ref().map(|f| f.at(w));
             let line_f = negligible(av, am) && negligible(bv, bm) && negligible(cv, cm);
             let line_h = negligible(dv, dm) && negligible(ev, em) && negligible(gv, gm);
             if line_f && line_h {
@@ -1017,6 +1126,58 @@ impl Elimination {
         Ok((finite, infinite))
     }
 }
+
+/// The angle between two directions given as angles (mod `pi`).
+fn angle_gap(x: f64, y: f64) -> f64 {
+    let d = (x - y).rem_euclid(core::f64::consts::PI);
+    d.min(core::f64::consts::PI - d)
+}
+
+/// Whether the real roots `roots` (angles in `[0, pi)`, sorted, with their
+/// multiplicity) that [`form_roots_mult`] found of the resultant (accurate
+/// `value` and its rounding band, as [`Elimination::resultant_at`]) are
+/// all it has, each told apart from its neighbours, so that
+/// [`Elimination::roots`]' search again near every eigenvalue (in
+/// [`clusters`]' windows) would find the same: [`REAL_ROOTS`] roots, each
+/// simple, and the accurate value halfway between every two neighbours
+/// (the last and the first too) beyond [`APART`] times its band.
+///
+/// Sound: a simple root of [`form_roots_mult`] is a sign change of the
+/// accurate value between two points where it is beyond its band (a zero
+/// within the band is a double root there, and the intervals next to it
+/// are not searched), so each is a real root of the resultant, and the
+/// value beyond its band between two of them makes them two roots, not one
+/// double root (which the search again would decide where the value
+/// touches its band there). The resultant has at most [`REAL_ROOTS`] real
+/// roots (its degree, 8, less the circular points' pair, far off the real
+/// line), so these are all: no root is left to a crowd the expanded
+/// coefficients blur (the search again's reason: there, roots are lost, or
+/// found double, or as roots within the band of each other). Anything
+/// else (fewer roots: a complex pair, or roots lost; a double root; two
+/// roots not told apart) is searched again as before.
+fn all_found(roots: &[(f64, usize)], value: &dyn Fn(f64, f64) -> (f64, f64)) -> bool {
+    use core::f64::consts::PI;
+    roots.len() == REAL_ROOTS
+        && roots.iter().all(|&(_, m)| m == 1)
+        && roots
+            .iter()
+            .zip(roots.iter().cycle().skip(1))
+            .all(|(x, y)| {
+                // The neighbour after the last is the first, half a turn on.
+                let y = if y.0 > x.0 { y.0 } else { y.0 + PI };
+                let (s, c) = (0.5 * (x.0 + y)).sin_cos();
+                let (v, band) = value(c, s);
+                v.abs() > APART * band
+            })
+}
+
+/// How far beyond its rounding band (times) the resultant must be between
+/// two neighbouring roots for them to be told apart ([`all_found`]).
+const APART: f64 = 4.0;
+
+/// The most real roots the resultant has: its degree, 8, less the two
+/// circular points' (`w = (1, +-i)`, far off the real line).
+const REAL_ROOTS: usize = 6;
 
 /// The directions (angles in `[0, pi)`) of the roots of a binary form's
 /// expanded coefficients, real or within [`CLUSTER_WINDOW`] rad of the real
@@ -1201,20 +1362,19 @@ enum Polished {
 fn complex_pair(m: &LocalMotion, g0: Vector2<f64>, z0: Vector2<f64>, scale: f64) -> bool {
     type C = Complex<f64>;
     // Each row `a_k(G) . z - b_k(G)` with `a_k` and `b_k` affine in `G`.
-    let rows: Vec<([[f64; 3]; 2], [f64; 3])> = (1..5)
-        .map(|k| {
-            let (a0, b0) = m.form.row(k, Vector2::zeros());
-            let (ax, bx) = m.form.row(k, Vector2::x());
-            let (ay, by) = m.form.row(k, Vector2::y());
-            (
-                [
-                    [a0.x, ax.x - a0.x, ay.x - a0.x],
-                    [a0.y, ax.y - a0.y, ay.y - a0.y],
-                ],
-                [b0, bx - b0, by - b0],
-            )
-        })
-        .collect();
+    let rows: [([[f64; 3]; 2], [f64; 3]); 4] = core::array::from_fn(|r| {
+        let k = r + 1;
+        let (a0, b0) = m.form.row(k, Vector2::zeros());
+        let (ax, bx) = m.form.row(k, Vector2::x());
+        let (ay, by) = m.form.row(k, Vector2::y());
+        (
+            [
+                [a0.x, ax.x - a0.x, ay.x - a0.x],
+                [a0.y, ax.y - a0.y, ay.y - a0.y],
+            ],
+            [b0, bx - b0, by - b0],
+        )
+    });
     let affine = |p: &[f64; 3], g: [C; 2]| g[0] * p[1] + g[1] * p[2] + p[0];
     let solve = |start: [C; 4]| -> Option<[C; 4]> {
         let mut x = start;
@@ -1444,7 +1604,115 @@ fn newton(m: &LocalMotion, g0: Vector2<f64>) -> Option<(Vector2<f64>, Vector2<f6
 
 #[cfg(test)]
 mod tests {
+    use super::*;
     use crate::synthesis::local::cross3;
+
+    /// The worked example of `positions-4-5.md` section 6 (the bench's).
+    fn worked_example() -> Vec<Pose> {
+        [
+            (1.049199280691, 2.279426358634, 45.220037141544),
+            (0.734502065472, 3.198658887874, 26.633426990744),
+            (-0.378159188147, 3.063048993013, 21.786789298262),
+            (-1.268710439724, 2.051150142014, 27.048624103934),
+            (-1.411118156972, 0.597429126400, 48.044287536536),
+        ]
+        .iter()
+        .map(|&(x, y, a): &(f64, f64, f64)| Pose::new(x, y, a.to_radians()))
+        .collect()
+    }
+
+    #[test]
+    fn forms_at_a_direction_agree_with_form_eval_to_the_bit() {
+        // `at_powers` replaced `form_eval` on the values, the bounds and the
+        // magnitudes (allocating) in the resultant's bisection: the same
+        // arithmetic, so the same bits, at every kind of direction.
+        let forms = [
+            vec![1.25, -3.5e-3, 7.0, -0.1],
+            vec![-2.0, 1.0e5, 3.3],
+            vec![0.7, -1.9],
+            vec![0.0, 4.5, -1.0e-12, 2.0],
+            vec![1.0, 2.0, 3.0, 4.0, 5.0],
+        ];
+        let dirs = [
+            (1.0, 0.0),
+            (0.0, 1.0),
+            (0.6, -0.8),
+            (-0.31, 0.95),
+            (-1.0, -1.0e-9),
+            (1.0, 0.4142135623730951),
+            (-0.9999999, 1.3e-3),
+        ];
+        for (k, v) in forms.iter().enumerate() {
+            let e: Vec<f64> = v.iter().map(|x: &f64| 0.37 * x.abs() + k as f64).collect();
+            let f = Bounded { v: v.clone(), e };
+            for &(x, y) in &dirs {
+                let (ax, ay) = (f64::abs(x), f64::abs(y));
+                let want = (
+                    form_eval(&f.v, x, y),
+                    form_eval(&f.e, ax, ay) + form_eval(&f.abs(), ax, ay),
+                );
+                let got = f.at(Vector2::new(x, y));
+                assert_eq!(
+                    (got.0.to_bits(), got.1.to_bits()),
+                    (want.0.to_bits(), want.1.to_bits()),
+                    "form {k} at ({x}, {y}): {got:?} against {want:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_worked_example_needs_no_search_again_and_it_would_find_the_same() {
+        // The worked example's elimination (as `FivePositions::of` takes
+        // it: the first choice) has six simple, separated roots: `roots`
+        // skips the search again near every eigenvalue, which finds the
+        // same roots (within rounding) and multiplicities.
+        let poses = worked_example();
+        let motion = LocalMotion::new(&poses).unwrap();
+        let mut checked = 0;
+        for i in 0..5 {
+            for j in i + 1..5 {
+                let others: Vec<usize> = (0..5).filter(|&k| k != i && k != j).collect();
+                let order = [i, j, others[0], others[1], others[2]];
+                let sub = LocalMotion::new(&order.map(|x| poses[x])).unwrap();
+                let Some(elim) = Elimination::new(&sub) else {
+                    continue;
+                };
+                let value = |wx: f64, wy: f64| elim.resultant_at(Vector2::new(wx, wy));
+                let first = form_roots_mult(&elim.r.v, &value);
+                if !all_found(&first, &value) {
+                    continue;
+                }
+                checked += 1;
+                let again = elim.searched_again(first.clone());
+                assert_eq!(first.len(), again.len(), "{first:?} against {again:?}");
+                for (x, y) in first.iter().zip(&again) {
+                    assert_eq!(x.1, y.1);
+                    assert!(angle_gap(x.0, y.0) <= 1e-12, "{first:?} against {again:?}");
+                }
+                assert_eq!(elim.roots(), first);
+                // And the points it gives are the task's four (the notes'
+                // centers, from the linkage the task was made of and the
+                // notes' exact elimination, to their ten digits).
+                let (points, sliders, lost, _) = elim.points(&sub, &motion).unwrap();
+                assert_eq!((points.len(), sliders.len(), lost), (4, 0, 0));
+                for want in [
+                    (0.0, 0.0),
+                    (4.0, 0.0),
+                    (9.1415535429, 5.4771377313),
+                    (28.5694893347, -40.1577865973),
+                ] {
+                    let want = Point2::new(want.0, want.1);
+                    assert!(
+                        points.iter().any(|d| (d.center - want).norm() <= 1e-9),
+                        "{want} not among {points:?}"
+                    );
+                }
+            }
+        }
+        // Every choice of the pair has four real points and two poles.
+        assert_eq!(checked, 10);
+    }
 
     #[test]
     fn homogeneous_cross_is_the_meet() {
