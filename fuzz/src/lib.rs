@@ -1775,6 +1775,8 @@ use burmester::synthesis::{FilemonArcs, FivePositions, FourPositions};
 
 #[path = "../../tests/rust/common/curve_dyads.rs"]
 mod curve_dyads;
+#[path = "../../tests/rust/common/five_count.rs"]
+mod five_count;
 
 /// `n` poses: raw numbers, or moderate ones with a chosen structure: nearly
 /// rotations about one point (curves whose coefficients cancel), three
@@ -2063,11 +2065,6 @@ fn check_free_arcs(four: &FourPositions, arcs: &FilemonArcs, vp: &Viewport) {
     }
 }
 
-/// The count with multiplicity of five poses' Burmester points.
-fn five_total(f: &FivePositions) -> usize {
-    f.burmester_points().len() + f.sliders().len()
-}
-
 /// Five poses: the Burmester points are a typed error or a sound answer
 /// (finite, 0, 2 or 4 with the sliders, concyclic, sliders on a line), and
 /// in another frame (moved, turned, scaled, mirrored) the same count and
@@ -2202,14 +2199,9 @@ pub fn burmester_points(data: &[u8]) {
 /// concyclicity and each slider's collinearity where the task is moderate
 /// (within `1e-8`, or the rounding of the coordinates over the crank).
 fn check_five(f: &FivePositions) {
-    let n = five_total(f);
-    assert!(
-        n % 2 == 0 && n <= 4,
-        "count {n}: {:?} and sliders {:?} (poses {:?})",
-        f.burmester_points(),
-        f.sliders(),
-        f.poses()
-    );
+    if let Err(m) = five_count::sound_count(f) {
+        panic!("{m}");
+    }
     let size = f.size();
     let moderate = moderate_task(f.poses(), size);
     let coords = f
@@ -2232,9 +2224,7 @@ fn check_five(f: &FivePositions) {
     }
     for s in f.sliders() {
         finite_pt("slider circle point", s.circle);
-        let p: Vec<Point2<f64>> = (1..=5)
-            .map(|k| f.displace(s.circle, 1, k).expect("pose index"))
-            .collect();
+        let p = five_count::slider_positions(f, &s);
         let span = p.iter().map(|q| (q - p[0]).norm()).fold(size, f64::max);
         let c = coords.max(s.circle.coords.norm());
         for q in &p[1..] {

@@ -192,6 +192,7 @@ fn rotations_at_least(poses: &[Pose], min: f64) -> bool {
 // ---------------------------------------------------------------------------
 
 use common::centroid;
+use common::five_count::{slider_positions, sound_count, total};
 
 /// A square viewport of half-width `h` task sizes around the poses.
 fn view_around(four: &FourPositions, h: f64) -> Viewport {
@@ -2179,11 +2180,6 @@ fn two_points_at(five: &FivePositions, t: &Similarity, want: &[Point2<f64>]) {
     }
 }
 
-/// The count with multiplicity: finite points and sliders.
-fn total(five: &FivePositions) -> usize {
-    five.burmester_points().len() + five.sliders().len()
-}
-
 #[test]
 fn issue24_nearly_merging_burmester_points_count_two_or_four() {
     let want = [
@@ -2341,9 +2337,7 @@ fn issue24_degenerate_five_pose_tasks_say_so_in_every_frame() {
 /// normal to its direction.
 fn check_slider(five: &FivePositions, poses: &[Pose]) {
     for s in five.sliders() {
-        let p: Vec<Point2<f64>> = (1..=5)
-            .map(|k| five.displace(s.circle, 1, k).unwrap())
-            .collect();
+        let p = slider_positions(five, &s);
         for q in &p[1..] {
             let off = (q - p[0]).dot(&s.direction);
             assert!(off.abs() <= 1e-9 * five.size(), "{s:?}: {off}");
@@ -2358,25 +2352,12 @@ fn check_slider(five: &FivePositions, poses: &[Pose]) {
 /// the square of its rounding); every slider's circle point has collinear
 /// positions.
 fn check_five_sound(five: &FivePositions, poses: &[Pose]) -> Result<(), TestCaseError> {
-    let n = total(five);
-    prop_assert!(
-        n % 2 == 0 && n <= 4,
-        "count {}: {:?} {:?} poses {:?}",
-        n,
-        five.burmester_points(),
-        five.sliders(),
-        poses
-            .iter()
-            .map(|p| (p.position.x, p.position.y, p.angle))
-            .collect::<Vec<_>>()
-    );
+    sound_count(five).map_err(TestCaseError::fail)?;
     for d in five.burmester_points() {
         prop_assert!(spread(poses, d) <= 1e-8, "{:?}: {}", d, spread(poses, d));
     }
     for s in five.sliders() {
-        let p: Vec<Point2<f64>> = (1..=5)
-            .map(|k| five.displace(s.circle, 1, k).unwrap())
-            .collect();
+        let p = slider_positions(five, &s);
         let span = p.iter().map(|q| (q - p[0]).norm()).fold(0.0, f64::max);
         for q in &p[1..] {
             prop_assert!(

@@ -12,6 +12,7 @@ use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
 
 pub(crate) mod curve_dyads;
+pub(crate) mod five_count;
 pub(crate) mod splitmix;
 
 /// The notes' worked example (positions-4-5.md, section 6): five poses of
