@@ -2,7 +2,8 @@
 //! (the core's `design`).
 
 use burmester::{
-    DesignLimits, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2, RankBy, Task, Varying,
+    DesignLimits, Filemon, Grid, InputRequirement, MapContext, MapOptions, Pivot, Point2, RankBy,
+    Task, Varying,
 };
 use numpy::ndarray::Array2;
 use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods};
@@ -16,7 +17,7 @@ use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::geom::grid_alone;
 use crate::getters::getters;
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
+use crate::options::{constraint_state, constraints_of, map_options, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
 type Xy = (f64, f64);
@@ -910,21 +911,21 @@ fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
     let v = c.grid.viewport();
     let probe = Grid::from_bounds(v.xmin, v.xmax, v.ymin, v.ymax, 1, 1).py()?;
     let control = burmester::Control::new();
+    let opts = MapOptions::new(&c.limits, &c.constraints).py()?;
     py.detach(|| match c.varying {
         Varying::Driving { driven } => {
             let f = c.task.filemon(driven.center)?;
             if f.driven() != driven.into() {
                 return Ok(Err(()));
             }
-            f.solution_map(&probe, &c.limits, &c.constraints, &control)
-                .map(|_| Ok(()))
+            f.solution_map(&probe, &opts, &control).map(|_| Ok(()))
         }
         Varying::Driven { driving } => c
             .task
-            .driven_solution_map(&driving, &probe, &c.limits, &c.constraints, &control)
+            .driven_solution_map(&driving, &probe, &opts, &control)
             .map(|_| Ok(())),
         Varying::DrivingSlider { driven } => Filemon::new(&c.task, driven)?
-            .solution_map(&probe, &c.limits, &c.constraints, &control)
+            .solution_map(&probe, &opts, &control)
             .map(|_| Ok(())),
     })
     .py()?
@@ -975,8 +976,7 @@ pub(crate) fn filemon_solution_map(
 ) -> PyResult<PySolutionMap> {
     let what = "solution_map takes a grid (or its six numbers); the limits go by keyword";
     let g = grid_alone(grid, what)?;
-    let opts = MapOptions::from_kwargs(name, options, Keys::MAP)?;
-    solution_map(py, f, g, opts, progress)
+    solution_map(py, f, g, map_options(name, options)?, progress)
 }
 
 /// The driven solution map of `Task` (candidate driven pivots).
@@ -999,7 +999,7 @@ impl PyTask {
     ) -> PyResult<PySolutionMap> {
         let what = "driven_solution_map takes the driving center and a grid (or its six numbers)";
         let g = grid_alone(grid, what)?;
-        let opts = MapOptions::from_kwargs("Task.driven_solution_map", options, Keys::MAP)?;
+        let opts = map_options("Task.driven_solution_map", options)?;
         driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
     }
 }
@@ -1015,7 +1015,7 @@ fn solution_map(
     let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
     PySolutionMap::filled(py, (grid.ny(), grid.nx()), |out| {
         run(py, watch, progress, None, |control| {
-            f.solution_map_into(&grid, &opts.limits, &opts.constraints, out, control)
+            f.solution_map_into(&grid, &opts, out, control)
         })
     })
 }
@@ -1033,14 +1033,7 @@ fn driven_solution_map(
     let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
     PySolutionMap::filled(py, (grid.ny(), grid.nx()), |out| {
         run(py, watch, progress, None, |control| {
-            task.driven_solution_map_into(
-                &driving,
-                &grid,
-                &opts.limits,
-                &opts.constraints,
-                out,
-                control,
-            )
+            task.driven_solution_map_into(&driving, &grid, &opts, out, control)
         })
     })
 }

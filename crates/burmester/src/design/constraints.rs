@@ -325,6 +325,7 @@ fn self_intersects(pts: &[Point2<f64>]) -> bool {
 }
 
 /// Constraints as parry shapes.
+#[derive(Clone)]
 pub(crate) struct Prepared {
     plate: Option<Vec<PVector>>,
     pub(crate) obstacles: Vec<ConvexPolygon>,
@@ -335,6 +336,19 @@ pub(crate) struct Prepared {
 }
 
 impl Prepared {
+    /// The default constraints ([`Constraints::default`]) as shapes: what
+    /// [`Constraints::prepare`] gives them, without a check that cannot
+    /// fail.
+    pub(crate) fn unconstrained() -> Self {
+        Prepared {
+            plate: None,
+            obstacles: Vec::new(),
+            envelope: None,
+            radius: 0.0,
+            samples: Constraints::DEFAULT_TRAVEL_SAMPLES,
+        }
+    }
+
     /// Whether there is nothing to test: no base plate, no obstacles, no
     /// envelope.
     pub(crate) fn is_empty(&self) -> bool {
