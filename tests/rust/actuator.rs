@@ -1071,7 +1071,6 @@ fn open_limits() -> DesignLimits {
 #[test]
 fn a_strut_passing_a_link_at_a_known_distance() {
     let mut runner = TestRunner::new(common::config(1));
-    let map_options = MapOptions::new(&open_limits(), &c).unwrap();
     let found = (0..400)
         .filter(|_| {
             let (task, sfb) = random_linkage(&mut runner);
@@ -1093,8 +1092,14 @@ fn a_strut_passing_a_link_at_a_known_distance() {
                     max_stroke_ratio: f64::INFINITY,
                     ..ActuatorOptions::default()
                 };
-                let ctx =
-                    ActuatorContext::new(&sfb, q, &one_grid(g), &map_options, &options).unwrap();
+                let ctx = ActuatorContext::new(
+                    &sfb,
+                    q,
+                    &one_grid(g),
+                    &MapOptions::new(&open_limits(), &c).unwrap(),
+                    &options,
+                )
+                .unwrap();
                 (ctx.placement(g).unwrap(), ctx.map(&Control::new()).unwrap())
             };
             let (a, map) = at(0.0);

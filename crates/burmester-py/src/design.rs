@@ -1,8 +1,9 @@
 //! `burmester.DesignLimits`, `burmester.SolutionMap` and `burmester.Pivot`
 //! (the core's `design`).
 
+use burmester::design::ColumnsOut;
 use burmester::{
-    DesignLimits, Filemon, Grid, InputRequirement, MapContext, MapOptions, Pivot, Point2, RankBy,
+    Control, DesignLimits, Filemon, Grid, InputRequirement, MapContext, MapOptions, Pivot, RankBy,
     Task, Varying,
 };
 use numpy::ndarray::Array2;
@@ -976,7 +977,10 @@ pub(crate) fn filemon_solution_map(
 ) -> PyResult<PySolutionMap> {
     let what = "solution_map takes a grid (or its six numbers); the limits go by keyword";
     let g = grid_alone(grid, what)?;
-    solution_map(py, f, g, map_options(name, options)?, progress)
+    let opts = map_options(name, options)?;
+    grid_map(py, &g, progress, |out, control| {
+        f.solution_map_into(&g, &opts, out, control)
+    })
 }
 
 /// The driven solution map of `Task` (candidate driven pivots).
@@ -1000,40 +1004,25 @@ impl PyTask {
         let what = "driven_solution_map takes the driving center and a grid (or its six numbers)";
         let g = grid_alone(grid, what)?;
         let opts = map_options("Task.driven_solution_map", options)?;
-        driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
+        let task = self.inner;
+        let driving = task.dyad_from_center(driving_center.0).py()?;
+        grid_map(py, &g, progress, |out, control| {
+            task.driven_solution_map_into(&driving, &g, &opts, out, control)
+        })
     }
 }
 
-/// `Filemon.solution_map` (and `SliderFilemon.solution_map`).
-fn solution_map(
+/// A solution map over `grid`: fresh NumPy columns filled by `map_into`
+/// (the core's `_into` map), Ctrl-C watched and `progress` followed on a
+/// large grid.
+fn grid_map(
     py: Python<'_>,
-    f: Filemon,
-    grid: Grid,
-    opts: MapOptions,
+    grid: &Grid,
     progress: Option<&Bound<'_, PyAny>>,
+    map_into: impl FnOnce(ColumnsOut<'_>, &Control<'_>) -> burmester::Result<MapContext> + Send,
 ) -> PyResult<PySolutionMap> {
     let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
     PySolutionMap::filled(py, (grid.ny(), grid.nx()), |out| {
-        run(py, watch, progress, None, |control| {
-            f.solution_map_into(&grid, &opts, out, control)
-        })
-    })
-}
-
-/// `Task.driven_solution_map`.
-fn driven_solution_map(
-    py: Python<'_>,
-    task: Task,
-    driving_center: Point2<f64>,
-    grid: Grid,
-    opts: MapOptions,
-    progress: Option<&Bound<'_, PyAny>>,
-) -> PyResult<PySolutionMap> {
-    let driving = task.dyad_from_center(driving_center).py()?;
-    let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
-    PySolutionMap::filled(py, (grid.ny(), grid.nx()), |out| {
-        run(py, watch, progress, None, |control| {
-            task.driven_solution_map_into(&driving, &grid, &opts, out, control)
-        })
+        run(py, watch, progress, None, |control| map_into(out, control))
     })
 }

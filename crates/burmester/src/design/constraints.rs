@@ -774,6 +774,22 @@ mod tests {
         assert!(found[0] > 1000 && found[1] > 1000, "{found:?}");
     }
 
+    /// The shapes of no constraints, made without a check, are what the
+    /// check gives the default constraints.
+    #[test]
+    fn unconstrained_is_the_default_prepared() {
+        let (a, b) = (
+            Prepared::unconstrained(),
+            Constraints::default().prepare().unwrap(),
+        );
+        assert!(a.plate.is_none() && b.plate.is_none());
+        assert!(a.obstacles.is_empty() && b.obstacles.is_empty());
+        assert!(a.envelope.is_none() && b.envelope.is_none());
+        assert_eq!(a.radius.to_bits(), b.radius.to_bits());
+        assert_eq!(a.samples, b.samples);
+        assert!(a.is_empty() && !a.checks_motion());
+    }
+
     #[test]
     fn a_large_polygon_is_checked_quickly_or_refused() {
         // A circle of the most vertices allowed: checked (the sweep looks
