@@ -178,16 +178,10 @@ fn any_tiling_gives_the_same_cells() {
     let t = example::task();
     let driven = Grid::new(example::viewport(), 9, 7).unwrap();
     let driving = Grid::new(example::viewport(), 30, 24).unwrap();
-    let (limits, cons) = (lenient(), Constraints::default());
+    let options = MapOptions::new(&lenient(), &Constraints::default()).unwrap();
     let by = RankBy::Balanced;
     let whole = t
-        .pivot_atlas(
-            &driven,
-            &driving,
-            &MapOptions::new(&limits, &cons).unwrap(),
-            by,
-            &Control::new(),
-        )
+        .pivot_atlas(&driven, &driving, &options, by, &Control::new())
         .unwrap();
     assert!(whole.cells.iter().any(|c| c.best.is_some()));
     for tile in [1, 2, 3, 7] {
@@ -196,15 +190,8 @@ fn any_tiling_gives_the_same_cells() {
         while j < driven.ny() {
             let end = (j + tile).min(driven.ny());
             cells.extend(
-                t.pivot_atlas_rows(
-                    &driven,
-                    j..end,
-                    &driving,
-                    &MapOptions::new(&limits, &cons).unwrap(),
-                    by,
-                    &Control::new(),
-                )
-                .unwrap(),
+                t.pivot_atlas_rows(&driven, j..end, &driving, &options, by, &Control::new())
+                    .unwrap(),
             );
             j = end;
         }
@@ -249,26 +236,14 @@ fn bad_input_and_cancel() {
         Constraints::default(),
         RankBy::Balanced,
     );
+    let options = MapOptions::new(&l, &c).unwrap();
     assert!(
-        t.pivot_atlas_rows(
-            &g,
-            2..5,
-            &g,
-            &MapOptions::new(&l, &c).unwrap(),
-            by,
-            &Control::new()
-        )
-        .is_err()
+        t.pivot_atlas_rows(&g, 2..5, &g, &options, by, &Control::new())
+            .is_err()
     );
     let stop = AtomicBool::new(true);
     let e = t
-        .pivot_atlas(
-            &g,
-            &g,
-            &MapOptions::new(&l, &c).unwrap(),
-            by,
-            &Control::new().with_cancel(&stop),
-        )
+        .pivot_atlas(&g, &g, &options, by, &Control::new().with_cancel(&stop))
         .unwrap_err();
     assert!(matches!(e, burmester::Error::Cancelled { done: 0, .. }));
     let bad = Constraints {
@@ -283,13 +258,7 @@ fn bad_input_and_cancel() {
     // Rankings without a score are refused.
     for r in [RankBy::Pareto, RankBy::Margin] {
         let e = t
-            .pivot_atlas(
-                &g,
-                &g,
-                &MapOptions::new(&l, &c).unwrap(),
-                r,
-                &Control::new(),
-            )
+            .pivot_atlas(&g, &g, &options, r, &Control::new())
             .unwrap_err();
         assert_eq!(e.cause(), "unknown_name", "{e}");
     }

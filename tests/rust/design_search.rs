@@ -721,13 +721,8 @@ fn change_point_linkages_are_refused_under_the_default_margin() {
         assert!(no_margin.meets(&fig), "{lengths:?}: {fig:?}");
         assert_eq!(DesignLimits::default().meets(&fig), !at_change);
         for (limits, want) in [(DesignLimits::default(), !at_change), (no_margin, true)] {
-            let map = f
-                .solution_map(
-                    &g,
-                    &MapOptions::new(&limits, &Constraints::none()).unwrap(),
-                    &Control::new(),
-                )
-                .unwrap();
+            let options = MapOptions::new(&limits, &Constraints::none()).unwrap();
+            let map = f.solution_map(&g, &options, &Control::new()).unwrap();
             let k = (0..g.len()).find(|&k| map.context.point(k) == a0).unwrap();
             assert!(
                 map.columns.valid[k] && map.columns.branch_free[k],

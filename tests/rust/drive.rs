@@ -739,13 +739,8 @@ fn the_examples_triple_rocker_gets_a_motor() {
         min_transmission: 30f64.to_radians(),
         ..DesignLimits::default()
     };
-    let map = f
-        .solution_map(
-            &grid,
-            &MapOptions::new(&limits, &Constraints::none()).unwrap(),
-            &Control::new(),
-        )
-        .unwrap();
+    let options = MapOptions::new(&limits, &Constraints::none()).unwrap();
+    let map = f.solution_map(&grid, &options, &Control::new()).unwrap();
     let best = map.best_pivots(1, None, RankBy::Transmission).unwrap();
     let sfb = best[0].linkage;
     assert_eq!(sfb.figures.grashof, burmester::Grashof::TripleRocker);

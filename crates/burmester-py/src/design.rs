@@ -976,8 +976,7 @@ pub(crate) fn filemon_solution_map(
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<PySolutionMap> {
     let what = "solution_map takes a grid (or its six numbers); the limits go by keyword";
-    let g = grid_alone(grid, what)?;
-    let opts = map_options(name, options)?;
+    let (g, opts) = map_arguments(name, what, grid, options)?;
     grid_map(py, &g, progress, |out, control| {
         f.solution_map_into(&g, &opts, out, control)
     })
@@ -1002,14 +1001,24 @@ impl PyTask {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PySolutionMap> {
         let what = "driven_solution_map takes the driving center and a grid (or its six numbers)";
-        let g = grid_alone(grid, what)?;
-        let opts = map_options("Task.driven_solution_map", options)?;
+        let (g, opts) = map_arguments("Task.driven_solution_map", what, grid, options)?;
         let task = self.inner;
         let driving = task.dyad_from_center(driving_center.0).py()?;
         grid_map(py, &g, progress, |out, control| {
             task.driven_solution_map_into(&driving, &g, &opts, out, control)
         })
     }
+}
+
+/// The grid (a `Grid` or its six numbers; `what` says so in the error)
+/// and the checked map options of the arguments of map method `method`.
+fn map_arguments(
+    method: &str,
+    what: &str,
+    grid: &Bound<'_, PyTuple>,
+    options: Option<&Bound<'_, PyDict>>,
+) -> PyResult<(Grid, MapOptions)> {
+    Ok((grid_alone(grid, what)?, map_options(method, options)?))
 }
 
 /// A solution map over `grid`: fresh NumPy columns filled by `map_into`
