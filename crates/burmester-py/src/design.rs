@@ -1014,7 +1014,7 @@ impl PyTask {
 /// and the checked map options of the arguments of map method `method`.
 fn map_arguments(
     method: &str,
-    what: &str,
+    what: &'static str,
     grid: &Bound<'_, PyTuple>,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<(Grid, MapOptions)> {
