@@ -17,7 +17,7 @@
 
 use std::hint::black_box;
 
-use burmester::{Constraints, Control, DesignLimits, Grid, Method, example};
+use burmester::{Control, Grid, MapOptions, Method, example};
 use criterion::{
     BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group, criterion_main,
 };
@@ -69,24 +69,18 @@ fn sweep(c: &mut Criterion) {
             })
         });
         if n <= 1024 {
-            let limits = DesignLimits::default();
-            let none = Constraints::none();
+            let options = MapOptions::default();
             g.bench_with_input(BenchmarkId::new("solution_map", n), &n, |b, _| {
                 b.iter(|| {
-                    f.solution_map(black_box(&grid), &limits, &none, &control)
+                    f.solution_map(black_box(&grid), &options, &control)
                         .unwrap()
                 })
             });
             // The same map into the columns of an earlier one: no fresh
             // pages, like `direct` into its existing buffer.
-            let mut columns = f
-                .solution_map(&grid, &limits, &none, &control)
-                .unwrap()
-                .columns;
+            let mut columns = f.solution_map(&grid, &options, &control).unwrap().columns;
             g.bench_with_input(BenchmarkId::new("solution_map_into", n), &n, |b, _| {
-                b.iter(|| {
-                    shared::solution_map_into(&f, &grid, &limits, &none, &mut columns, &control)
-                })
+                b.iter(|| shared::solution_map_into(&f, &grid, &options, &mut columns, &control))
             });
             g.bench_with_input(BenchmarkId::new("simulate", n), &n, |b, _| {
                 b.iter(|| {

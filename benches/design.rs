@@ -9,7 +9,7 @@
 
 use std::hint::black_box;
 
-use burmester::{Control, DesignOptions, Grid, RankBy, Task, Viewport, example};
+use burmester::{Control, DesignOptions, Grid, MapOptions, RankBy, Task, Viewport, example};
 use criterion::{Criterion, criterion_group, criterion_main};
 
 /// A grid over `v` with `n` samples along its longer side (as the search's).
@@ -27,13 +27,14 @@ fn grid_over(v: &Viewport, n: usize) -> Grid {
 fn brute_force(task: &Task, options: &DesignOptions, bx: &Viewport) -> f64 {
     let driven = grid_over(bx, 4 * options.coarse_driven);
     let driving = grid_over(bx, 4 * options.coarse_driving);
-    let cons = options.space.constraints();
+    let map_options =
+        MapOptions::new(&options.limits, &options.space.constraints()).expect("the options");
     let mut best = f64::NEG_INFINITY;
     for k in 0..driven.len() {
         let c0 = driven.point(k % driven.nx(), k / driven.nx());
         let Ok(f) = task.filemon(c0) else { continue };
         let map = f
-            .solution_map(&driving, &options.limits, &cons, &Control::new())
+            .solution_map(&driving, &map_options, &Control::new())
             .expect("a map");
         if let Some(p) = map
             .best_pivots(1, None, options.rank_by)

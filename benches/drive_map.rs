@@ -13,22 +13,16 @@
 use std::hint::black_box;
 
 use burmester::design::{DriveContext, DriveOptions};
-use burmester::{Constraints, Control, DesignLimits, Grid, RankBy, example};
+use burmester::{Control, Grid, MapOptions, RankBy, example};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 fn drive_map(c: &mut Criterion) {
-    let (limits, none, control) = (
-        DesignLimits::default(),
-        Constraints::default(),
-        Control::new(),
-    );
+    let (options, control) = (MapOptions::default(), Control::new());
     let f = example::task()
         .filemon(example::driven_center())
         .expect("the example");
     let view = Grid::new(example::viewport(), 400, 400).expect("the view");
-    let smap = f
-        .solution_map(&view, &limits, &none, &control)
-        .expect("the map");
+    let smap = f.solution_map(&view, &options, &control).expect("the map");
     let linkage = smap
         .best_pivots(1, None, RankBy::Transmission)
         .expect("ranked")[0]
@@ -41,7 +35,7 @@ fn drive_map(c: &mut Criterion) {
     for n in [256usize, 1024] {
         g.throughput(Throughput::Elements((n * n) as u64));
         let grid = Grid::from_bounds(a0.x - h, a0.x + h, a0.y - h, a0.y + h, n, n).expect("grid");
-        let ctx = DriveContext::new(&linkage, e, &grid, &limits, &DriveOptions::default(), &none)
+        let ctx = DriveContext::new(&linkage, e, &grid, &options, &DriveOptions::default())
             .expect("a drive context");
         g.bench_with_input(BenchmarkId::new("drive_map", n), &n, |b, _| {
             b.iter(|| black_box(&ctx).map(&control).expect("the drive map"))
@@ -56,12 +50,12 @@ fn drive_map(c: &mut Criterion) {
         });
         let sgrid = Grid::new(example::viewport(), n, n).expect("grid");
         let mut scols = f
-            .solution_map(&sgrid, &limits, &none, &control)
+            .solution_map(&sgrid, &options, &control)
             .expect("the map")
             .columns;
         g.bench_with_input(BenchmarkId::new("solution_map_into", n), &n, |b, _| {
             b.iter(|| {
-                f.solution_map_into(black_box(&sgrid), &limits, &none, scols.as_out(), &control)
+                f.solution_map_into(black_box(&sgrid), &options, scols.as_out(), &control)
                     .expect("the map")
             })
         });

@@ -6,7 +6,7 @@
 
 use std::hint::black_box;
 
-use burmester::{Constraints, Control, DesignLimits, Task};
+use burmester::{Control, MapOptions, Task};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 /// Poses 1-4 of the worked example: the coupler of the crank-rocker
@@ -20,18 +20,14 @@ mod common;
 
 fn pair_map(c: &mut Criterion) {
     let task = task();
-    let (limits, none, control) = (
-        DesignLimits::default(),
-        Constraints::default(),
-        Control::new(),
-    );
+    let (options, control) = (MapOptions::default(), Control::new());
     let mut g = c.benchmark_group("pair_map");
     g.sample_size(10);
     for n in [256usize, 1024] {
         g.throughput(Throughput::Elements((n * n) as u64));
         g.bench_with_input(BenchmarkId::new("example", n), &n, |b, &n| {
             b.iter(|| {
-                task.pair_map(black_box(n), n, &limits, &none, &control)
+                task.pair_map(black_box(n), n, &options, &control)
                     .expect("the map")
             })
         });

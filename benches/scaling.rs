@@ -31,7 +31,7 @@ use std::hint::black_box;
 use burmester::design::{
     ActuatorContext, ActuatorOptions, DesignOptions, DriveContext, DriveOptions,
 };
-use burmester::{Constraints, Control, DesignLimits, FourBar, Grid, Method, RankBy, Task, example};
+use burmester::{Control, FourBar, Grid, MapOptions, Method, RankBy, Task, example};
 use criterion::{
     BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group, criterion_main,
 };
@@ -66,8 +66,7 @@ fn scaling(c: &mut Criterion) {
     let f = task.filemon(example::driven_center()).unwrap();
     let vp = example::viewport();
     let control = Control::new();
-    let limits = DesignLimits::default();
-    let none = Constraints::none();
+    let options = MapOptions::default();
     let fb = FourBar::new(100.0, 40.0, 120.0, 80.0).unwrap();
     let n_angles = 1_000_000usize;
     let angles: Vec<f64> = (0..n_angles)
@@ -87,7 +86,7 @@ fn scaling(c: &mut Criterion) {
     // transmission on a 400^2 view (the `drive_map` bench's).
     let view = Grid::new(vp, 400, 400).unwrap();
     let linkage = f
-        .solution_map(&view, &limits, &none, &control)
+        .solution_map(&view, &options, &control)
         .unwrap()
         .best_pivots(1, None, RankBy::Transmission)
         .unwrap()[0]
@@ -95,24 +94,16 @@ fn scaling(c: &mut Criterion) {
     let (a0, e) = (linkage.driving.center, linkage.driving.circle);
     let h = 4.0 * (e - a0).norm();
     let drive_grid = Grid::from_bounds(a0.x - h, a0.x + h, a0.y - h, a0.y + h, 1024, 1024).unwrap();
-    let drive = DriveContext::new(
-        &linkage,
-        e,
-        &drive_grid,
-        &limits,
-        &DriveOptions::default(),
-        &none,
-    )
-    .unwrap();
+    let drive =
+        DriveContext::new(&linkage, e, &drive_grid, &options, &DriveOptions::default()).unwrap();
     let q = nalgebra::center(&linkage.driving.circle, &linkage.driven.circle);
     let act_grid = Grid::from_bounds(a0.x - h, a0.x + h, a0.y - h, a0.y + h, 256, 256).unwrap();
     let actuator = ActuatorContext::new(
         &linkage,
         q,
         &act_grid,
-        &limits,
+        &options,
         &ActuatorOptions::default(),
-        &none,
     )
     .unwrap();
     let mut g = c.benchmark_group("scaling");
@@ -122,10 +113,7 @@ fn scaling(c: &mut Criterion) {
         let pool = pool(threads);
         for n in [1024usize, 2048] {
             let grid = Grid::new(vp, n, n).unwrap();
-            let mut columns = f
-                .solution_map(&grid, &limits, &none, &control)
-                .unwrap()
-                .columns;
+            let mut columns = f.solution_map(&grid, &options, &control).unwrap().columns;
             g.throughput(Throughput::Elements(grid.len() as u64));
             g.bench_with_input(
                 BenchmarkId::new(format!("solution_map_into/{n}"), threads),
@@ -133,14 +121,7 @@ fn scaling(c: &mut Criterion) {
                 |b, _| {
                     pool.install(|| {
                         b.iter(|| {
-                            shared::solution_map_into(
-                                &f,
-                                &grid,
-                                &limits,
-                                &none,
-                                &mut columns,
-                                &control,
-                            )
+                            shared::solution_map_into(&f, &grid, &options, &mut columns, &control)
                         })
                     })
                 },
@@ -183,8 +164,7 @@ fn scaling(c: &mut Criterion) {
                         task.pivot_atlas(
                             &driven,
                             &driving,
-                            &limits,
-                            &none,
+                            &options,
                             // The ranking of the measured logs.
                             RankBy::Transmission,
                             &control,
@@ -212,7 +192,7 @@ fn scaling(c: &mut Criterion) {
                 pool.install(|| {
                     b.iter(|| {
                         task4
-                            .pair_map(black_box(512), 512, &limits, &none, &control)
+                            .pair_map(black_box(512), 512, &options, &control)
                             .unwrap()
                     })
                 })

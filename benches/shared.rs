@@ -4,19 +4,18 @@
 use std::hint::black_box;
 
 use burmester::design::{Columns, MapContext};
-use burmester::{AssemblyMode, Constraints, Control, DesignLimits, Filemon, FourBar, Grid};
+use burmester::{AssemblyMode, Control, Filemon, FourBar, Grid, MapOptions};
 
 /// The solution map of `f` on `grid` into the columns of an earlier map
 /// (no fresh pages).
 pub(crate) fn solution_map_into(
     f: &Filemon,
     grid: &Grid,
-    limits: &DesignLimits,
-    none: &Constraints,
+    options: &MapOptions,
     columns: &mut Columns,
     control: &Control<'_>,
 ) -> MapContext {
-    f.solution_map_into(black_box(grid), limits, none, columns.as_out(), control)
+    f.solution_map_into(black_box(grid), options, columns.as_out(), control)
         .unwrap()
 }
 

@@ -35,8 +35,8 @@ use core::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use burmester::{
     AssemblyMode, CircleOrLine, Conic, Constraints, Control, DegenerateError, DesignLimits,
-    Direction, Dyad, Error, FourBar, Grashof, Grid, InputRequirement, InvalidInput, Line, Method,
-    Point2, Pole, Pose, RankBy, SolutionMap, Task, Vector2, Viewport,
+    Direction, Dyad, Error, FourBar, Grashof, Grid, InputRequirement, InvalidInput, Line,
+    MapOptions, Method, Point2, Pole, Pose, RankBy, SolutionMap, Task, Vector2, Viewport,
 };
 
 /// Reads numbers from the fuzzer's bytes; past the end everything is zero.
@@ -192,6 +192,14 @@ pub fn same<T: core::fmt::Debug>(what: &str, a: &T, b: &T) {
 /// Asserts that the message of `e` is not empty (formatting does not panic).
 pub fn message(e: &Error) {
     assert!(!e.to_string().is_empty());
+}
+
+/// The map options of `limits` and `constraints`, checked; `None` (the
+/// error's message checked) where they are invalid.
+fn map_options(limits: &DesignLimits, constraints: &Constraints) -> Option<MapOptions> {
+    MapOptions::new(limits, constraints)
+        .map_err(|e| message(&e))
+        .ok()
 }
 
 fn circle_or_line(what: &str, c: CircleOrLine) {
@@ -1301,29 +1309,26 @@ pub fn solution_map(data: &[u8]) {
     };
     let limits = limits_of(&mut inp);
     let constraints = constraints_of(&mut inp, &|inp| near(inp, &t), s);
+    let Some(options) = map_options(&limits, &constraints) else {
+        return;
+    };
     let control = Control::new();
-    match f.solution_map(&grid, &limits, &constraints, &control) {
+    match f.solution_map(&grid, &options, &control) {
         Err(e) => message(&e),
         Ok(map) => {
             check_solution_map(&map);
-            check_cancelled(f.solution_map(&grid, &limits, &constraints, &cancelled()));
+            check_cancelled(f.solution_map(&grid, &options, &cancelled()));
             check_pivots(&map, inp.count(0, 4), None);
         }
     }
     // The other direction, with the driving dyad at a probe point.
     let a0 = near(&mut inp, &t);
     if let Ok(driving) = t.dyad_from_center(a0) {
-        match t.driven_solution_map(&driving, &grid, &limits, &constraints, &control) {
+        match t.driven_solution_map(&driving, &grid, &options, &control) {
             Err(e) => message(&e),
             Ok(map) => {
                 check_solution_map(&map);
-                check_cancelled(t.driven_solution_map(
-                    &driving,
-                    &grid,
-                    &limits,
-                    &constraints,
-                    &cancelled(),
-                ));
+                check_cancelled(t.driven_solution_map(&driving, &grid, &options, &cancelled()));
                 check_pivots(&map, 2, Some(0.0));
             }
         }
@@ -1528,7 +1533,10 @@ pub fn pair_map(data: &[u8]) {
     if std::env::var_os("FUZZ_DEBUG").is_some() {
         eprintln!("{:?}\n{nd} x {nv}\n{limits:?}\n{constraints:?}", t.poses());
     }
-    let map = match t.pair_map(nd, nv, &limits, &constraints, &Control::new()) {
+    let Some(options) = map_options(&limits, &constraints) else {
+        return;
+    };
+    let map = match t.pair_map(nd, nv, &options, &Control::new()) {
         Ok(m) => m,
         Err(e) => return message(&e),
     };
@@ -1545,17 +1553,11 @@ pub fn pair_map(data: &[u8]) {
         last.fetch_max(d, Ordering::Relaxed);
     };
     let again = t
-        .pair_map(
-            nd,
-            nv,
-            &limits,
-            &constraints,
-            &Control::new().with_progress(&hook),
-        )
+        .pair_map(nd, nv, &options, &Control::new().with_progress(&hook))
         .expect("the same map with a progress hook");
     same("pair map with progress", &again, &map);
     assert!(matches!(
-        t.pair_map(nd, nv, &limits, &constraints, &cancelled()),
+        t.pair_map(nd, nv, &options, &cancelled()),
         Err(Error::Cancelled { .. })
     ));
     let c = &map.columns;
@@ -1671,6 +1673,9 @@ pub fn atlas(data: &[u8]) {
             t.poses()
         );
     }
+    let Some(options) = map_options(&limits, &constraints) else {
+        return;
+    };
     let last = AtomicUsize::new(0);
     let hook = |d: usize, total: usize| {
         assert!(d <= total);
@@ -1679,8 +1684,7 @@ pub fn atlas(data: &[u8]) {
     let atlas = match t.pivot_atlas(
         &driven,
         &driving,
-        &limits,
-        &constraints,
+        &options,
         RankBy::Transmission,
         &Control::new().with_progress(&hook),
     ) {
@@ -1701,7 +1705,7 @@ pub fn atlas(data: &[u8]) {
         };
         assert!(cell.valid, "cell {k} at {c0}");
         let map = f
-            .solution_map(&driving, &limits, &constraints, &Control::new())
+            .solution_map(&driving, &options, &Control::new())
             .expect("the atlas's own map");
         let col = &map.columns;
         let count = col.acceptable.iter().filter(|&&a| a).count() as u64;
@@ -1732,8 +1736,7 @@ pub fn atlas(data: &[u8]) {
             &driven,
             0..cut,
             &driving,
-            &limits,
-            &constraints,
+            &options,
             RankBy::Transmission,
             &Control::new(),
         )
@@ -1743,8 +1746,7 @@ pub fn atlas(data: &[u8]) {
             &driven,
             cut..driven.ny(),
             &driving,
-            &limits,
-            &constraints,
+            &options,
             RankBy::Transmission,
             &Control::new(),
         )
@@ -1755,8 +1757,7 @@ pub fn atlas(data: &[u8]) {
         t.pivot_atlas(
             &driven,
             &driving,
-            &limits,
-            &constraints,
+            &options,
             RankBy::Transmission,
             &cancelled()
         ),

@@ -16,8 +16,8 @@ use std::sync::atomic::AtomicBool;
 use burmester::design::{ActuatorContext, ActuatorOptions};
 use burmester::{
     ActuatorLink, AssemblyMode, Constraints, Control, DegenerateError, DesignLimits, DriveError,
-    Dyad, Error, FourBar, Grid, InputRange, InvalidInput, Point2, RankBy, SynthesizedFourBar, Task,
-    Vector2,
+    Dyad, Error, FourBar, Grid, InputRange, InvalidInput, MapOptions, Point2, RankBy,
+    SynthesizedFourBar, Task, Vector2,
 };
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
@@ -215,9 +215,8 @@ fn context(sfb: &SynthesizedFourBar, link: ActuatorLink, q: P, grid: &Grid) -> A
         sfb,
         q,
         grid,
-        &DesignLimits::default(),
+        &MapOptions::new(&DesignLimits::default(), &Constraints::none()).unwrap(),
         &options,
-        &Constraints::none(),
     )
     .unwrap()
 }
@@ -259,7 +258,14 @@ fn single_strut(
         ..ActuatorOptions::default()
     };
     let limits = DesignLimits::default();
-    ActuatorContext::new(sfb, q, &one_grid(g), &limits, &options, constraints).unwrap()
+    ActuatorContext::new(
+        sfb,
+        q,
+        &one_grid(g),
+        &MapOptions::new(&limits, constraints).unwrap(),
+        &options,
+    )
+    .unwrap()
 }
 
 fn one_grid(p: P) -> Grid {
@@ -408,8 +414,14 @@ fn map_and_ranking_agree_with_placements() {
             max_stroke_ratio: 2.5,
             ..ActuatorOptions::default()
         };
-        let ctx =
-            ActuatorContext::new(&sfb, q, &grid, &limits, &options, &Constraints::none()).unwrap();
+        let ctx = ActuatorContext::new(
+            &sfb,
+            q,
+            &grid,
+            &MapOptions::new(&limits, &Constraints::none()).unwrap(),
+            &options,
+        )
+        .unwrap();
         let map = ctx.map(&Control::new()).unwrap();
         let cols = &map.columns;
         for k in (0..grid.len()).step_by(29) {
@@ -520,11 +532,13 @@ fn bad_input_gives_typed_errors() {
     let g = one_grid(common::centroid(task.poses()));
     let limits = DesignLimits::default();
     let none = Constraints::none();
-    let new =
-        |o: &ActuatorOptions, c: &Constraints| ActuatorContext::new(&sfb, q, &g, &limits, o, c);
+    let new = |o: &ActuatorOptions, c: &Constraints| {
+        MapOptions::new(&limits, c).and_then(|m| ActuatorContext::new(&sfb, q, &g, &m, o))
+    };
     // The default options and no constraints, for another linkage or point.
+    let map_options = MapOptions::new(&limits, &none).unwrap();
     let plain = |s: &SynthesizedFourBar, p: P| {
-        ActuatorContext::new(s, p, &g, &limits, &ActuatorOptions::default(), &none)
+        ActuatorContext::new(s, p, &g, &map_options, &ActuatorOptions::default())
     };
     let bad = ActuatorOptions {
         max_stroke_ratio: 0.5,
@@ -605,7 +619,7 @@ fn bad_input_gives_typed_errors() {
         link: ActuatorLink::Crank,
         ..ActuatorOptions::default()
     };
-    let e = ActuatorContext::new(&sfb, sfb.driving.center, &g, &limits, &crank, &none).unwrap_err();
+    let e = ActuatorContext::new(&sfb, sfb.driving.center, &g, &map_options, &crank).unwrap_err();
     assert!(
         matches!(e, Error::Degenerate(DegenerateError::ZeroLengthLink { .. })),
         "{e}"
@@ -655,7 +669,8 @@ fn documented_maximum_grid_and_cancelling() {
     let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.5;
     let limits = DesignLimits::default();
     let none = Constraints::none();
-    let ctx = ActuatorContext::new(&sfb, q, &grid, &limits, &options, &none).unwrap();
+    let map_options = MapOptions::new(&limits, &none).unwrap();
+    let ctx = ActuatorContext::new(&sfb, q, &grid, &map_options, &options).unwrap();
     let map = ctx.map(&Control::new()).unwrap();
     assert_eq!(map.columns.valid.len(), side * side);
     let valid = map.columns.valid.iter().filter(|&&m| m).count();
@@ -675,7 +690,7 @@ fn documented_maximum_grid_and_cancelling() {
     }
     let big = Grid::from_bounds(c.x - r, c.x + r, c.y - r, c.y + r, side, side + 1).unwrap();
     assert!(matches!(
-        ActuatorContext::new(&sfb, q, &big, &limits, &options, &none),
+        ActuatorContext::new(&sfb, q, &big, &map_options, &options),
         Err(Error::InvalidInput(InvalidInput::GridSize { .. }))
     ));
     let stop = AtomicBool::new(true);
@@ -687,7 +702,7 @@ fn documented_maximum_grid_and_cancelling() {
         ..ActuatorOptions::default()
     };
     let one = one_grid(c);
-    let a = ActuatorContext::new(&sfb, q, &one, &limits, &most, &none)
+    let a = ActuatorContext::new(&sfb, q, &one, &map_options, &most)
         .unwrap()
         .placement(c + Vector2::new(0.0, -r))
         .unwrap();
@@ -1077,8 +1092,14 @@ fn a_strut_passing_a_link_at_a_known_distance() {
                     max_stroke_ratio: f64::INFINITY,
                     ..ActuatorOptions::default()
                 };
-                let ctx = ActuatorContext::new(&sfb, q, &one_grid(g), &open_limits(), &options, &c)
-                    .unwrap();
+                let ctx = ActuatorContext::new(
+                    &sfb,
+                    q,
+                    &one_grid(g),
+                    &MapOptions::new(&open_limits(), &c).unwrap(),
+                    &options,
+                )
+                .unwrap();
                 (ctx.placement(g).unwrap(), ctx.map(&Control::new()).unwrap())
             };
             let (a, map) = at(0.0);
@@ -1144,7 +1165,14 @@ fn the_min_gap_filters_the_map_exactly() {
                 max_stroke_ratio: f64::INFINITY,
                 ..ActuatorOptions::default()
             };
-            let ctx = ActuatorContext::new(&sfb, q, &grid, &limits, &options, &cons).unwrap();
+            let ctx = ActuatorContext::new(
+                &sfb,
+                q,
+                &grid,
+                &MapOptions::new(&limits, &cons).unwrap(),
+                &options,
+            )
+            .unwrap();
             ctx.map(&Control::new()).unwrap()
         };
         let zero = map_at(0.0);

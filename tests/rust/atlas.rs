@@ -6,8 +6,8 @@
 //! driven grid gives the same cells, bit for bit.
 
 use burmester::{
-    AtlasCell, Constraints, Control, DesignLimits, Grid, InputRequirement, Point2, RankBy, Task,
-    example,
+    AtlasCell, Constraints, Control, DesignLimits, Grid, InputRequirement, MapOptions, Point2,
+    RankBy, Task, example,
 };
 mod common;
 
@@ -28,8 +28,7 @@ fn first_row(
         driven,
         0..1,
         driving,
-        limits,
-        &Constraints::default(),
+        &MapOptions::new(limits, &Constraints::default()).unwrap(),
         rank_by,
         &Control::new(),
     )
@@ -55,7 +54,11 @@ fn reference(
         return AtlasCell::INVALID;
     };
     let map = f
-        .solution_map(driving, limits, &Constraints::default(), &Control::new())
+        .solution_map(
+            driving,
+            &MapOptions::new(limits, &Constraints::default()).unwrap(),
+            &Control::new(),
+        )
         .unwrap();
     let c = &map.columns;
     let count = c.acceptable.iter().filter(|&&a| a).count() as u64;
@@ -123,8 +126,7 @@ fn cells_equal_the_reduced_solution_maps() {
             .pivot_atlas(
                 &driven,
                 &driving,
-                &limits,
-                &Constraints::default(),
+                &MapOptions::new(&limits, &Constraints::default()).unwrap(),
                 rank_by,
                 &Control::new(),
             )
@@ -176,10 +178,10 @@ fn any_tiling_gives_the_same_cells() {
     let t = example::task();
     let driven = Grid::new(example::viewport(), 9, 7).unwrap();
     let driving = Grid::new(example::viewport(), 30, 24).unwrap();
-    let (limits, cons) = (lenient(), Constraints::default());
+    let options = MapOptions::new(&lenient(), &Constraints::default()).unwrap();
     let by = RankBy::Balanced;
     let whole = t
-        .pivot_atlas(&driven, &driving, &limits, &cons, by, &Control::new())
+        .pivot_atlas(&driven, &driving, &options, by, &Control::new())
         .unwrap();
     assert!(whole.cells.iter().any(|c| c.best.is_some()));
     for tile in [1, 2, 3, 7] {
@@ -188,16 +190,8 @@ fn any_tiling_gives_the_same_cells() {
         while j < driven.ny() {
             let end = (j + tile).min(driven.ny());
             cells.extend(
-                t.pivot_atlas_rows(
-                    &driven,
-                    j..end,
-                    &driving,
-                    &limits,
-                    &cons,
-                    by,
-                    &Control::new(),
-                )
-                .unwrap(),
+                t.pivot_atlas_rows(&driven, j..end, &driving, &options, by, &Control::new())
+                    .unwrap(),
             );
             j = end;
         }
@@ -242,13 +236,14 @@ fn bad_input_and_cancel() {
         Constraints::default(),
         RankBy::Balanced,
     );
+    let options = MapOptions::new(&l, &c).unwrap();
     assert!(
-        t.pivot_atlas_rows(&g, 2..5, &g, &l, &c, by, &Control::new())
+        t.pivot_atlas_rows(&g, 2..5, &g, &options, by, &Control::new())
             .is_err()
     );
     let stop = AtomicBool::new(true);
     let e = t
-        .pivot_atlas(&g, &g, &l, &c, by, &Control::new().with_cancel(&stop))
+        .pivot_atlas(&g, &g, &options, by, &Control::new().with_cancel(&stop))
         .unwrap_err();
     assert!(matches!(e, burmester::Error::Cancelled { done: 0, .. }));
     let bad = Constraints {
@@ -256,13 +251,14 @@ fn bad_input_and_cancel() {
         ..Constraints::default()
     };
     assert!(
-        t.pivot_atlas(&g, &g, &l, &bad, by, &Control::new())
+        MapOptions::new(&l, &bad)
+            .and_then(|o| t.pivot_atlas(&g, &g, &o, by, &Control::new()))
             .is_err()
     );
     // Rankings without a score are refused.
     for r in [RankBy::Pareto, RankBy::Margin] {
         let e = t
-            .pivot_atlas(&g, &g, &l, &c, r, &Control::new())
+            .pivot_atlas(&g, &g, &options, r, &Control::new())
             .unwrap_err();
         assert_eq!(e.cause(), "unknown_name", "{e}");
     }

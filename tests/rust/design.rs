@@ -8,8 +8,8 @@ use std::f64::consts::TAU;
 
 use burmester::linkage::Direction;
 use burmester::{
-    Constraints, Control, DesignLimits, Dyad, Grashof, Grid, InputRequirement, Method, Point2,
-    RankBy, SynthesizedFourBar, Task,
+    Constraints, Control, DesignLimits, Dyad, Grashof, Grid, InputRequirement, MapOptions, Method,
+    Point2, RankBy, SynthesizedFourBar, Task,
 };
 mod common;
 
@@ -468,8 +468,9 @@ fn constraints_match_direct_geometry() {
         travel_samples: 48,
         envelope: None,
     };
+    let options = MapOptions::new(&loose, &cons).unwrap();
     let m = f
-        .solution_map(&g, &loose, &cons, &Control::new())
+        .solution_map(&g, &options, &Control::new())
         .unwrap()
         .columns;
     let (mut kept, mut cut_plate, mut cut_obstacle, mut too_close) = (0, 0, 0, 0);
@@ -577,8 +578,9 @@ fn the_other_direction_maps_driven_pivots() {
     let limits = DesignLimits::default();
     let none = Constraints::none();
     let control = Control::new();
+    let options = MapOptions::new(&limits, &none).unwrap();
     let map = t
-        .driven_solution_map(&driving, &g, &limits, &none, &control)
+        .driven_solution_map(&driving, &g, &options, &control)
         .unwrap();
     let m = &map.columns;
     let mut free = 0;
@@ -604,10 +606,7 @@ fn the_other_direction_maps_driven_pivots() {
     );
     // A dyad that is not a dyad of the task is refused.
     let bad = Dyad::new(Point2::new(-3.0, 4.0), Point2::new(0.0, 0.0));
-    assert!(
-        t.driven_solution_map(&bad, &g, &limits, &none, &control)
-            .is_err()
-    );
+    assert!(t.driven_solution_map(&bad, &g, &options, &control).is_err());
 }
 
 #[test]
@@ -616,8 +615,9 @@ fn bad_limits_and_constraints_are_typed_errors() {
     let f = t.filemon(burmester::example::driven_center()).unwrap();
     let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 8, 8).unwrap();
     let control = Control::new();
-    let map =
-        |limits: &DesignLimits, cons: &Constraints| f.solution_map(&g, limits, cons, &control);
+    let map = |limits: &DesignLimits, cons: &Constraints| {
+        MapOptions::new(limits, cons).and_then(|o| f.solution_map(&g, &o, &control))
+    };
     let bad = DesignLimits {
         min_transmission: f64::NAN,
         ..DesignLimits::default()
@@ -923,22 +923,23 @@ fn maps_into_reused_columns_are_the_fresh_maps_bit_for_bit() {
         .transformed(1.7, 0.3, burmester::Vector2::new(1.0, -2.0))
         .unwrap();
     let mut reused = example_map(&moved, Point2::new(2.0, -1.0), &g).columns;
+    let options = MapOptions::new(&limits, &none).unwrap();
     for c0 in [Point2::new(-1.5, 2.5), Point2::new(3.0, 1.0)] {
         let f = t.filemon(c0).unwrap();
-        let fresh = f.solution_map(&g, &limits, &none, &control).unwrap();
+        let fresh = f.solution_map(&g, &options, &control).unwrap();
         assert_ne!(bits(&reused), bits(&fresh.columns));
         let context = f
-            .solution_map_into(&g, &limits, &none, reused.as_out(), &control)
+            .solution_map_into(&g, &options, reused.as_out(), &control)
             .unwrap();
         assert_eq!(context, fresh.context);
         assert_eq!(bits(&reused), bits(&fresh.columns), "driven center {c0}");
     }
     let driving = t.dyad_from_center(Point2::new(-3.0, 4.0)).unwrap();
     let fresh = t
-        .driven_solution_map(&driving, &g, &limits, &none, &control)
+        .driven_solution_map(&driving, &g, &options, &control)
         .unwrap();
     let context = t
-        .driven_solution_map_into(&driving, &g, &limits, &none, reused.as_out(), &control)
+        .driven_solution_map_into(&driving, &g, &options, reused.as_out(), &control)
         .unwrap();
     assert_eq!(context, fresh.context);
     assert_eq!(bits(&reused), bits(&fresh.columns));
@@ -947,7 +948,7 @@ fn maps_into_reused_columns_are_the_fresh_maps_bit_for_bit() {
     short.link_ratio.pop();
     let f = t.filemon(Point2::new(-1.5, 2.5)).unwrap();
     let err = f
-        .solution_map_into(&g, &limits, &none, short.as_out(), &control)
+        .solution_map_into(&g, &options, short.as_out(), &control)
         .unwrap_err();
     assert!(
         matches!(
@@ -960,7 +961,7 @@ fn maps_into_reused_columns_are_the_fresh_maps_bit_for_bit() {
         "{err}"
     );
     assert!(
-        t.driven_solution_map_into(&driving, &g, &limits, &none, short.as_out(), &control)
+        t.driven_solution_map_into(&driving, &g, &options, short.as_out(), &control)
             .is_err()
     );
 }
@@ -981,18 +982,19 @@ fn bad_arguments_are_reported_before_the_columns_are_allocated() {
     let invalid = |r: burmester::Result<burmester::SolutionMap>| {
         matches!(r, Err(burmester::Error::InvalidInput(_)))
     };
-    assert!(invalid(f.solution_map(&g, &bad, &none, &control)));
-    let driving = t.dyad_from_center(Point2::new(-3.0, 4.0)).unwrap();
     assert!(invalid(
-        t.driven_solution_map(&driving, &g, &bad, &none, &control)
+        MapOptions::new(&bad, &none).and_then(|o| f.solution_map(&g, &o, &control))
     ));
+    let driving = t.dyad_from_center(Point2::new(-3.0, 4.0)).unwrap();
+    assert!(invalid(MapOptions::new(&bad, &none).and_then(|o| {
+        t.driven_solution_map(&driving, &g, &o, &control)
+    })));
     let not_a_dyad = Dyad::new(Point2::new(-3.0, 4.0), Point2::new(0.0, 0.0));
     let limits = DesignLimits::default();
     assert!(invalid(t.driven_solution_map(
         &not_a_dyad,
         &g,
-        &limits,
-        &none,
+        &MapOptions::new(&limits, &none).unwrap(),
         &control
     )));
 }

@@ -16,7 +16,8 @@ use core::sync::atomic::AtomicBool;
 
 use burmester::{
     Constraints, Control, Design, DesignLimits, DesignOptions, Grid, InputRequirement, Limit,
-    PivotRegion, Point2, RankBy, SearchPoint, Space, SynthesizedFourBar, Task, Viewport, example,
+    MapOptions, PivotRegion, Point2, RankBy, SearchPoint, Space, SynthesizedFourBar, Task,
+    Viewport, example,
 };
 mod common;
 
@@ -61,7 +62,11 @@ fn brute_three(
         }
         let Ok(f) = t.filemon(c0) else { continue };
         let map = f
-            .solution_map(&driving, &o.limits, &cons, &Control::new())
+            .solution_map(
+                &driving,
+                &MapOptions::new(&o.limits, &cons).unwrap(),
+                &Control::new(),
+            )
             .unwrap();
         if let Some(p) = map.best_pivots(1, None, o.rank_by).unwrap().first() {
             if best.is_none_or(|b| p.score > b.0) {
@@ -295,7 +300,12 @@ fn four_pose_tasks_beat_the_finer_pair_map() {
         }
         let n = 4 * o.coarse_pairs;
         let map = t
-            .pair_map(n, n, &o.limits, &o.space.constraints(), &Control::new())
+            .pair_map(
+                n,
+                n,
+                &MapOptions::new(&o.limits, &o.space.constraints()).unwrap(),
+                &Control::new(),
+            )
             .unwrap();
         let Some(b) = map.best_pairs(1, None, o.rank_by).unwrap().first().copied() else {
             continue;
@@ -461,8 +471,7 @@ fn distributed_coarse_pass_gives_the_same_report() {
                 &plan.driven,
                 j..end,
                 &plan.driving,
-                &o.limits,
-                &plan.constraints,
+                &MapOptions::new(&o.limits, &plan.constraints).unwrap(),
                 o.rank_by,
                 &Control::new(),
             )
@@ -712,9 +721,8 @@ fn change_point_linkages_are_refused_under_the_default_margin() {
         assert!(no_margin.meets(&fig), "{lengths:?}: {fig:?}");
         assert_eq!(DesignLimits::default().meets(&fig), !at_change);
         for (limits, want) in [(DesignLimits::default(), !at_change), (no_margin, true)] {
-            let map = f
-                .solution_map(&g, &limits, &Constraints::none(), &Control::new())
-                .unwrap();
+            let options = MapOptions::new(&limits, &Constraints::none()).unwrap();
+            let map = f.solution_map(&g, &options, &Control::new()).unwrap();
             let k = (0..g.len()).find(|&k| map.context.point(k) == a0).unwrap();
             assert!(
                 map.columns.valid[k] && map.columns.branch_free[k],

@@ -20,8 +20,8 @@ use burmester::design::{
 };
 use burmester::{
     AssemblyMode, Constraints, Control, DesignLimits, DesignOptions, DriveError, Dyad, Error,
-    FourBar, Grid, InputRange, Point2, RankBy, SixBar, SixBarJoints, SynthesizedFourBar, Task,
-    Vector2,
+    FourBar, Grid, InputRange, MapOptions, Point2, RankBy, SixBar, SixBarJoints,
+    SynthesizedFourBar, Task, Vector2,
 };
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
@@ -426,9 +426,8 @@ fn swinging_task(runner: &mut TestRunner, n: usize) -> (Task, SynthesizedFourBar
 fn balanced_drive(sfb: &SynthesizedFourBar, limits: &DesignLimits) -> Result<Drive, Error> {
     best_drive(
         sfb,
-        limits,
+        &MapOptions::new(limits, &Constraints::none()).unwrap(),
         &DriveOptions::default(),
-        &Constraints::none(),
         RankBy::Balanced,
         &Control::new(),
     )
@@ -454,14 +453,8 @@ fn anything_context(
     grid: &Grid,
     constraints: &Constraints,
 ) -> Result<DriveContext, Error> {
-    DriveContext::new(
-        sfb,
-        e,
-        grid,
-        &anything(),
-        &DriveOptions::default(),
-        constraints,
-    )
+    MapOptions::new(&anything(), constraints)
+        .and_then(|o| DriveContext::new(sfb, e, grid, &o, &DriveOptions::default()))
 }
 
 /// [`search_drives`] of `sfb` with [`anything`] as its limits, the default
@@ -475,9 +468,8 @@ fn search_anything(
     search_drives(
         sfb,
         search,
-        &anything(),
+        &MapOptions::new(&anything(), &Constraints::none()).unwrap(),
         &DriveOptions::default(),
-        &Constraints::none(),
         rank_by,
         control,
     )
@@ -509,7 +501,14 @@ fn random_context(
         swing_margin: margin,
         ..DriveOptions::default()
     };
-    DriveContext::new(sfb, e, &grid, &anything(), &options, &Constraints::none()).ok()
+    DriveContext::new(
+        sfb,
+        e,
+        &grid,
+        &MapOptions::new(&anything(), &Constraints::none()).unwrap(),
+        &options,
+    )
+    .ok()
 }
 
 fn rotate(v: Vector2<f64>, a: f64) -> Vector2<f64> {
@@ -740,9 +739,8 @@ fn the_examples_triple_rocker_gets_a_motor() {
         min_transmission: 30f64.to_radians(),
         ..DesignLimits::default()
     };
-    let map = f
-        .solution_map(&grid, &limits, &Constraints::none(), &Control::new())
-        .unwrap();
+    let options = MapOptions::new(&limits, &Constraints::none()).unwrap();
+    let map = f.solution_map(&grid, &options, &Control::new()).unwrap();
     let best = map.best_pivots(1, None, RankBy::Transmission).unwrap();
     let sfb = best[0].linkage;
     assert_eq!(sfb.figures.grashof, burmester::Grashof::TripleRocker);
@@ -763,12 +761,13 @@ fn no_drive_says_why() {
     let grid = Grid::from_bounds(a0.x - 1.0, a0.x + 1.0, a0.y - 1.0, a0.y + 1.0, 8, 8).unwrap();
     let none = Constraints::none();
     let limits = DesignLimits::default();
+    let map_options = MapOptions::new(&limits, &none).unwrap();
     let ctx = |e: P, margin: f64| {
         let o = DriveOptions {
             swing_margin: margin,
             ..DriveOptions::default()
         };
-        DriveContext::new(&sfb, e, &grid, &limits, &o, &none)
+        DriveContext::new(&sfb, e, &grid, &map_options, &o)
     };
     // The attachment on A0.
     let e = ctx(a0, 0.0).unwrap_err();
@@ -798,7 +797,7 @@ fn no_drive_says_why() {
             ..DriveOptions::default()
         },
     ] {
-        let e = DriveContext::new(&sfb, sfb.driving.circle, &grid, &limits, &o, &none).unwrap_err();
+        let e = DriveContext::new(&sfb, sfb.driving.circle, &grid, &map_options, &o).unwrap_err();
         assert!(matches!(e, Error::InvalidInput(_)), "{e}");
     }
     let e = ctx(Point2::new(f64::NAN, 0.0), 0.0).unwrap_err();
@@ -814,7 +813,7 @@ fn no_drive_says_why() {
     // What a linkage's context at its own driving circle point refuses.
     let refused = |l: &SynthesizedFourBar| {
         let o = DriveOptions::default();
-        DriveContext::new(l, l.driving.circle, &grid, &limits, &o, &none).unwrap_err()
+        DriveContext::new(l, l.driving.circle, &grid, &map_options, &o).unwrap_err()
     };
     assert_eq!(refused(&bad), Error::Drive(DriveError::NoTravel));
     // A crank that turns more than half a turn between the poses.
@@ -1128,9 +1127,8 @@ fn documented_maxima_and_cancelling() {
         &sfb,
         sfb.driving.circle,
         &big,
-        &DesignLimits::default(),
+        &MapOptions::new(&DesignLimits::default(), &Constraints::none()).unwrap(),
         &DriveOptions::default(),
-        &Constraints::none(),
     )
     .unwrap();
     let stop = AtomicBool::new(true);
@@ -1321,9 +1319,8 @@ fn size_limits_bound_every_acceptable_drive() {
             &sfb,
             free.attachment(),
             free.grid(),
-            &limits,
+            &MapOptions::new(&limits, &Constraints::none()).unwrap(),
             &DriveOptions::default(),
-            &Constraints::none(),
         )
         .unwrap();
         let map = ctx.map(&Control::new()).unwrap();

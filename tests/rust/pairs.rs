@@ -14,8 +14,8 @@ use common::bits;
 use burmester::design::PairMap;
 use burmester::synthesis::{FourPositions, Turn};
 use burmester::{
-    Branch, Constraints, Control, DesignLimits, Direction, Error, InvalidInput, Point2, Pose,
-    RankBy, Task,
+    Branch, Constraints, Control, DesignLimits, Direction, Error, InvalidInput, MapOptions, Point2,
+    Pose, RankBy, Task,
 };
 
 /// The notes' worked example (positions-4-5.md, section 6): four poses of
@@ -48,13 +48,7 @@ fn map_with(
     n_driven: usize,
     control: &Control<'_>,
 ) -> Result<PairMap, Error> {
-    task.pair_map(
-        n_driving,
-        n_driven,
-        &DesignLimits::default(),
-        &Constraints::default(),
-        control,
-    )
+    task.pair_map(n_driving, n_driven, &MapOptions::default(), control)
 }
 
 /// The sample of `samples` whose center is nearest `p`, and its distance.
@@ -338,7 +332,7 @@ fn bad_input_gives_typed_errors() {
     let ctl = Control::new();
     let three = Task::new(&example_poses()[..3]).unwrap();
     assert!(matches!(
-        three.pair_map(8, 8, &l, &c, &ctl),
+        three.pair_map(8, 8, &MapOptions::new(&l, &c).unwrap(), &ctl),
         Err(Error::InvalidInput(InvalidInput::NeedsPoses {
             required: 4,
             found: 3,
@@ -348,7 +342,7 @@ fn bad_input_gives_typed_errors() {
     for (a, b) in [(0, 8), (8, 0), (1 << 20, 1 << 20), (usize::MAX, 2)] {
         assert!(
             matches!(
-                task.pair_map(a, b, &l, &c, &ctl),
+                task.pair_map(a, b, &MapOptions::new(&l, &c).unwrap(), &ctl),
                 Err(Error::InvalidInput(InvalidInput::GridSize { .. }))
             ),
             "{a} {b}"
@@ -359,7 +353,7 @@ fn bad_input_gives_typed_errors() {
         ..l
     };
     assert!(matches!(
-        task.pair_map(8, 8, &bad, &c, &ctl),
+        MapOptions::new(&bad, &c).and_then(|o| task.pair_map(8, 8, &o, &ctl)),
         Err(Error::InvalidInput(_))
     ));
     let m = map(&task, 8, 8);

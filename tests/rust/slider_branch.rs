@@ -16,8 +16,8 @@
 use std::f64::consts::{PI, TAU};
 
 use burmester::{
-    Branch, Control, Dyad, DyadKind, Error, Filemon, FilemonLines, Grid, InvalidInput, Method,
-    Point2, Pose, SliderDyad, Task, Vector2, Viewport,
+    Branch, Control, Dyad, DyadKind, Error, Filemon, FilemonLines, Grid, InvalidInput, MapOptions,
+    Method, Point2, Pose, SliderDyad, Task, Vector2, Viewport,
 };
 
 mod common;
@@ -487,8 +487,7 @@ fn slider_errors_are_typed() {
     let map = f
         .solution_map(
             &grid,
-            &Default::default(),
-            &burmester::Constraints::none(),
+            &MapOptions::new(&Default::default(), &burmester::Constraints::none()).unwrap(),
             &Control::new(),
         )
         .unwrap();
@@ -502,8 +501,12 @@ fn slider_errors_are_typed() {
     };
     // Obstacles are checked over the slider-crank's travel (once refused).
     assert!(
-        f.solution_map(&grid, &Default::default(), &obstacles, &Control::new())
-            .is_ok()
+        f.solution_map(
+            &grid,
+            &MapOptions::new(&Default::default(), &obstacles).unwrap(),
+            &Control::new()
+        )
+        .is_ok()
     );
     for e in [
         f.four_bar(sc.a0).unwrap_err(),
@@ -739,8 +742,7 @@ fn span_of(poses: &[Pose]) -> f64 {
 fn slider_map(f: &Filemon, grid: &Grid) -> burmester::SolutionMap {
     f.solution_map(
         grid,
-        &Default::default(),
-        &burmester::Constraints::none(),
+        &MapOptions::new(&Default::default(), &burmester::Constraints::none()).unwrap(),
         &Control::new(),
     )
     .unwrap()
@@ -1334,7 +1336,11 @@ fn slider_map_obstacles_and_envelope_agree_with_driving_the_built_slider_crank()
         ..burmester::Constraints::none()
     };
     let map = f
-        .solution_map(&grid, &Default::default(), &constraints, &Control::new())
+        .solution_map(
+            &grid,
+            &MapOptions::new(&Default::default(), &constraints).unwrap(),
+            &Control::new(),
+        )
         .unwrap();
     let inside = |q: Point2<f64>| q.x > -140.0 && q.x < 260.0 && q.y > -110.0 && q.y < 110.0;
     let (mut clear, mut struck, mut escapes, mut borderline) = (0, 0, 0, 0);

@@ -4,7 +4,7 @@
 //! link.
 
 use burmester::design::{Actuator, ActuatorContext, ActuatorMap, ActuatorOptions};
-use burmester::{ActuatorLink, Constraints, DesignLimits, Grid, Point2, RankBy, Task};
+use burmester::{ActuatorLink, Constraints, DesignLimits, Grid, MapOptions, Point2, RankBy, Task};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -16,7 +16,7 @@ use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::geom::{grid_alone, grid_map_getters};
 use crate::getters::getters;
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
+use crate::options::{Keys, Keywords, constraint_state, constraints_of, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
 type Xy = (f64, f64);
@@ -25,9 +25,8 @@ type Xy = (f64, f64);
 /// limits and the base plate.
 struct ActuatorArgs {
     point: Option<Point2<f64>>,
-    limits: DesignLimits,
     options: ActuatorOptions,
-    constraints: Constraints,
+    map_options: MapOptions,
 }
 
 impl ActuatorArgs {
@@ -40,10 +39,9 @@ impl ActuatorArgs {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
         let (link, point, max_stroke_ratio, samples) = terms;
-        let m = MapOptions::from_kwargs(method, options, Keys::ACTUATOR)?;
+        let k = Keywords::from_kwargs(method, options, Keys::ACTUATOR)?;
         Ok(ActuatorArgs {
             point: point.map(|p| p.0),
-            limits: m.limits,
             options: ActuatorOptions {
                 link: link.parse::<ActuatorLink>().py()?,
                 max_stroke_ratio: max_stroke_ratio.0,
@@ -51,7 +49,7 @@ impl ActuatorArgs {
                 actuator_width: strut.0.0,
                 min_gap: strut.1.0,
             },
-            constraints: m.constraints,
+            map_options: k.checked()?,
         })
     }
 
@@ -66,7 +64,7 @@ impl ActuatorArgs {
             ActuatorLink::Rocker => c,
             ActuatorLink::Coupler => a + (c - a) * 0.5,
         });
-        ActuatorContext::new(l, q, grid, &self.limits, &self.options, &self.constraints).py()
+        ActuatorContext::new(l, q, grid, &self.map_options, &self.options).py()
     }
 }
 
@@ -141,15 +139,9 @@ impl PyActuator {
         constraints: &Constraints,
     ) -> PyResult<Self> {
         let grid = point_grid(inner.ground)?;
-        let context = ActuatorContext::new(
-            &inner.linkage,
-            inner.point,
-            &grid,
-            limits,
-            options,
-            constraints,
-        )
-        .py()?;
+        let map_options = MapOptions::new(limits, constraints).py()?;
+        let context =
+            ActuatorContext::new(&inner.linkage, inner.point, &grid, &map_options, options).py()?;
         Ok(PyActuator::of(inner, task, &context))
     }
 
@@ -393,18 +385,12 @@ fn context_of(
         min_gap,
     };
     let grid = point_grid(at)?;
-    ActuatorContext::new(
-        &linkage.inner,
-        point.0,
-        &grid,
-        &limits.inner,
-        &options,
-        &Constraints {
-            envelope: envelope.map(|e| e.into_iter().map(|p| p.0).collect()),
-            ..constraints_of(constraints)
-        },
-    )
-    .py()
+    let constraints = Constraints {
+        envelope: envelope.map(|e| e.into_iter().map(|p| p.0).collect()),
+        ..constraints_of(constraints)
+    };
+    let map_options = MapOptions::new(&limits.inner, &constraints).py()?;
+    ActuatorContext::new(&linkage.inner, point.0, &grid, &map_options, &options).py()
 }
 
 /// A NumPy 2-D array of a column (read-only).
@@ -575,9 +561,8 @@ impl PyActuatorMap {
             &linkage.inner,
             ctx.point(),
             &grid.inner,
-            ctx.limits(),
+            ctx.map_options(),
             ctx.options(),
-            ctx.constraints(),
         )
         .py()?;
         let map = run(py, false, None, None, |control| ctx.map(control))?;

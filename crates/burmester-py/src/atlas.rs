@@ -13,7 +13,7 @@ use crate::conv::{Count, PyPoint};
 use crate::conv::{empty, slice_mut, writer};
 use crate::errors::IntoPy;
 use crate::geom::PyGrid;
-use crate::options::{Keys, MapOptions, text_signature};
+use crate::options::{Keys, Keywords, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run_in};
 
 #[doc = text_signature!(
@@ -45,8 +45,9 @@ pub(crate) fn _atlas_tile<'py>(
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let rank_by = rank_by.parse::<RankBy>().py()?;
-    let mut opts = MapOptions::from_kwargs("_atlas_tile", options, Keys::MAP)?;
-    opts.constraints.envelope = envelope.map(|v| v.into_iter().map(|p| p.0).collect());
+    let mut keywords = Keywords::from_kwargs("_atlas_tile", options, Keys::MAP)?;
+    keywords.constraints.envelope = envelope.map(|v| v.into_iter().map(|p| p.0).collect());
+    let opts = keywords.checked()?;
     let (t, dn, dv) = (task.inner, driven.inner, driving.inner);
     let (r0, r1) = (row_start.0, row_end.0);
     let pool = match threads {
@@ -68,17 +69,7 @@ pub(crate) fn _atlas_tile<'py>(
         None,
         "driving rows (over all driven centers)",
         |control| {
-            let work = || {
-                t.pivot_atlas_rows(
-                    &dn,
-                    r0..r1,
-                    &dv,
-                    &opts.limits,
-                    &opts.constraints,
-                    rank_by,
-                    control,
-                )
-            };
+            let work = || t.pivot_atlas_rows(&dn, r0..r1, &dv, &opts, rank_by, control);
             match &pool {
                 Some(p) => p.install(work),
                 None => work(),

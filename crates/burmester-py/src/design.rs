@@ -1,8 +1,10 @@
 //! `burmester.DesignLimits`, `burmester.SolutionMap` and `burmester.Pivot`
 //! (the core's `design`).
 
+use burmester::design::ColumnsOut;
 use burmester::{
-    DesignLimits, Filemon, Grid, InputRequirement, MapContext, Pivot, Point2, RankBy, Task, Varying,
+    Control, DesignLimits, Filemon, Grid, InputRequirement, MapContext, MapOptions, Pivot, RankBy,
+    Task, Varying,
 };
 use numpy::ndarray::Array2;
 use numpy::{Element, IntoPyArray, PyArray2, PyArrayMethods};
@@ -16,7 +18,7 @@ use crate::errors::IntoPy;
 use crate::geom::PyGrid;
 use crate::geom::grid_alone;
 use crate::getters::getters;
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
+use crate::options::{constraint_state, constraints_of, map_options, text_signature};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
 type Xy = (f64, f64);
@@ -910,21 +912,21 @@ fn check_context(py: Python<'_>, c: &MapContext) -> PyResult<()> {
     let v = c.grid.viewport();
     let probe = Grid::from_bounds(v.xmin, v.xmax, v.ymin, v.ymax, 1, 1).py()?;
     let control = burmester::Control::new();
+    let opts = MapOptions::new(&c.limits, &c.constraints).py()?;
     py.detach(|| match c.varying {
         Varying::Driving { driven } => {
             let f = c.task.filemon(driven.center)?;
             if f.driven() != driven.into() {
                 return Ok(Err(()));
             }
-            f.solution_map(&probe, &c.limits, &c.constraints, &control)
-                .map(|_| Ok(()))
+            f.solution_map(&probe, &opts, &control).map(|_| Ok(()))
         }
         Varying::Driven { driving } => c
             .task
-            .driven_solution_map(&driving, &probe, &c.limits, &c.constraints, &control)
+            .driven_solution_map(&driving, &probe, &opts, &control)
             .map(|_| Ok(())),
         Varying::DrivingSlider { driven } => Filemon::new(&c.task, driven)?
-            .solution_map(&probe, &c.limits, &c.constraints, &control)
+            .solution_map(&probe, &opts, &control)
             .map(|_| Ok(())),
     })
     .py()?
@@ -974,9 +976,10 @@ pub(crate) fn filemon_solution_map(
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<PySolutionMap> {
     let what = "solution_map takes a grid (or its six numbers); the limits go by keyword";
-    let g = grid_alone(grid, what)?;
-    let opts = MapOptions::from_kwargs(name, options, Keys::MAP)?;
-    solution_map(py, f, g, opts, progress)
+    let (g, opts) = map_arguments(name, what, grid, options)?;
+    grid_map(py, &g, progress, |out, control| {
+        f.solution_map_into(&g, &opts, out, control)
+    })
 }
 
 /// The driven solution map of `Task` (candidate driven pivots).
@@ -998,49 +1001,37 @@ impl PyTask {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PySolutionMap> {
         let what = "driven_solution_map takes the driving center and a grid (or its six numbers)";
-        let g = grid_alone(grid, what)?;
-        let opts = MapOptions::from_kwargs("Task.driven_solution_map", options, Keys::MAP)?;
-        driven_solution_map(py, self.inner, driving_center.0, g, opts, progress)
+        let (g, opts) = map_arguments("Task.driven_solution_map", what, grid, options)?;
+        let task = self.inner;
+        let driving = task.dyad_from_center(driving_center.0).py()?;
+        grid_map(py, &g, progress, |out, control| {
+            task.driven_solution_map_into(&driving, &g, &opts, out, control)
+        })
     }
 }
 
-/// `Filemon.solution_map` (and `SliderFilemon.solution_map`).
-fn solution_map(
-    py: Python<'_>,
-    f: Filemon,
-    grid: Grid,
-    opts: MapOptions,
-    progress: Option<&Bound<'_, PyAny>>,
-) -> PyResult<PySolutionMap> {
-    let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
-    PySolutionMap::filled(py, (grid.ny(), grid.nx()), |out| {
-        run(py, watch, progress, None, |control| {
-            f.solution_map_into(&grid, &opts.limits, &opts.constraints, out, control)
-        })
-    })
+/// The grid (a `Grid` or its six numbers; `what` says so in the error)
+/// and the checked map options of the arguments of map method `method`.
+fn map_arguments(
+    method: &str,
+    what: &'static str,
+    grid: &Bound<'_, PyTuple>,
+    options: Option<&Bound<'_, PyDict>>,
+) -> PyResult<(Grid, MapOptions)> {
+    Ok((grid_alone(grid, what)?, map_options(method, options)?))
 }
 
-/// `Task.driven_solution_map`.
-fn driven_solution_map(
+/// A solution map over `grid`: fresh NumPy columns filled by `map_into`
+/// (the core's `_into` map), Ctrl-C watched and `progress` followed on a
+/// large grid.
+fn grid_map(
     py: Python<'_>,
-    task: Task,
-    driving_center: Point2<f64>,
-    grid: Grid,
-    opts: MapOptions,
+    grid: &Grid,
     progress: Option<&Bound<'_, PyAny>>,
+    map_into: impl FnOnce(ColumnsOut<'_>, &Control<'_>) -> burmester::Result<MapContext> + Send,
 ) -> PyResult<PySolutionMap> {
-    let driving = task.dyad_from_center(driving_center).py()?;
     let watch = grid.len() >= WATCH_MIN_SAMPLES / 16;
     PySolutionMap::filled(py, (grid.ny(), grid.nx()), |out| {
-        run(py, watch, progress, None, |control| {
-            task.driven_solution_map_into(
-                &driving,
-                &grid,
-                &opts.limits,
-                &opts.constraints,
-                out,
-                control,
-            )
-        })
+        run(py, watch, progress, None, |control| map_into(out, control))
     })
 }

@@ -5,7 +5,9 @@
 use burmester::design::{
     AttachmentSearch, Drive, DriveColumnsOut, DriveContext, DriveOptions, search_drives,
 };
-use burmester::{Constraints, DesignLimits, Grid, Point2, RankBy, SixBar, SixBarJoints, Task};
+use burmester::{
+    Constraints, DesignLimits, Grid, MapOptions, Point2, RankBy, SixBar, SixBarJoints, Task,
+};
 use numpy::{PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -21,7 +23,7 @@ use crate::geom::{PyGrid, vec2};
 use crate::geom::{grid_alone, grid_map_getters};
 use crate::getters::getters;
 use crate::linkage::{PyFourBar, mode};
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
+use crate::options::{Keys, Keywords, constraint_state, constraints_of, text_signature};
 use crate::pickle::{Reduced, reduce_to};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
@@ -30,21 +32,19 @@ type Xy = (f64, f64);
 /// The drive options of the Python keywords: the limits (a `DesignLimits`
 /// or its keywords), the swing margin and time ratio, the constraints.
 struct DriveArgs {
-    limits: DesignLimits,
+    map_options: MapOptions,
     options: DriveOptions,
-    constraints: Constraints,
 }
 
 impl DriveArgs {
     /// The drive options of the keywords `options` of drive method
     /// `method`, which accepts `keys`.
     fn new(method: &str, options: Option<&Bound<'_, PyDict>>, keys: Keys) -> PyResult<Self> {
-        let m = MapOptions::from_kwargs(method, options, keys)?;
-        let options = DriveOptions::from_degrees(m.swing_margin_deg, m.max_time_ratio).py()?;
+        let k = Keywords::from_kwargs(method, options, keys)?;
+        let options = DriveOptions::from_degrees(k.swing_margin_deg, k.max_time_ratio).py()?;
         Ok(DriveArgs {
-            limits: m.limits,
+            map_options: k.checked()?,
             options,
-            constraints: m.constraints,
         })
     }
 
@@ -58,7 +58,7 @@ impl DriveArgs {
     ) -> PyResult<DriveContext> {
         let l = &linkage.inner;
         let e = attachment.map_or(l.driving.circle, |p| p.0);
-        DriveContext::new(l, e, grid, &self.limits, &self.options, &self.constraints).py()
+        DriveContext::new(l, e, grid, &self.map_options, &self.options).py()
     }
 }
 
@@ -324,15 +324,10 @@ impl PyDrive {
             max_time_ratio: options.1,
         };
         let constraints = constraints_of(constraints);
-        let ctx = DriveContext::new(
-            &linkage.inner,
-            attachment.0,
-            &point_grid(drive_pivot.0)?,
-            &limits.inner,
-            &options,
-            &constraints,
-        )
-        .py()?;
+        let map_options = MapOptions::new(&limits.inner, &constraints).py()?;
+        let grid = point_grid(drive_pivot.0)?;
+        let ctx =
+            DriveContext::new(&linkage.inner, attachment.0, &grid, &map_options, &options).py()?;
         let mut d = ctx.drive(drive_pivot.0).py()?;
         d.index = index;
         d.margin = margin;
@@ -684,13 +679,13 @@ impl PyDriveMap {
             swing_margin: options.0,
             max_time_ratio: options.1,
         };
+        let map_options = MapOptions::new(&limits.inner, &constraints_of(constraints)).py()?;
         let context = DriveContext::new(
             &linkage.inner,
             attachment.0,
             &grid.inner,
-            &limits.inner,
+            &map_options,
             &options,
-            &constraints_of(constraints),
         )
         .py()?;
         Self::from_columns(py, context, linkage.task(), columns)
@@ -889,9 +884,8 @@ fn drive_search(
         search_drives(
             &l,
             &search,
-            &args.limits,
+            &args.map_options,
             &args.options,
-            &args.constraints,
             rank_by,
             control,
         )
@@ -914,14 +908,7 @@ fn best_drive(
 ) -> PyResult<PyDrive> {
     let (l, rank_by) = (this.inner, rank(rank_by)?);
     let d = run(py, true, progress, None, |control| {
-        burmester::design::best_drive(
-            &l,
-            &args.limits,
-            &args.options,
-            &args.constraints,
-            rank_by,
-            control,
-        )
+        burmester::design::best_drive(&l, &args.map_options, &args.options, rank_by, control)
     })?;
     let ctx = args.context(
         this,

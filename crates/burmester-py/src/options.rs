@@ -4,7 +4,7 @@
 //! takes them as `**options` and names which of them it accepts
 //! ([`Keys`]); the names, types and defaults are written here only.
 
-use burmester::{Constraints, DesignLimits, InputRequirement, Point2};
+use burmester::{Constraints, DesignLimits, InputRequirement, MapOptions, Point2};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -21,7 +21,7 @@ use crate::errors::IntoPy;
 /// the signatures list them (every one may be left out; the defaults are
 /// those of [`DesignLimits`], [`Constraints`] and the drive's: no swing
 /// margin, no time ratio limit). The one list of the names: the extractor
-/// ([`Keys`], [`MapOptions`]) and the methods' text signatures
+/// ([`Keys`], [`Keywords`]) and the methods' text signatures
 /// ([`text_signature!`]) are made from it.
 macro_rules! map_option_keywords {
     ([$($callback:tt)*] $($args:tt)*) => {
@@ -163,20 +163,25 @@ where
     })
 }
 
-/// The map options of a call: the limits and the constraints, as the
-/// core takes them (it validates them), and the drive's swing margin
-/// (degrees) and largest time ratio.
-pub(crate) struct MapOptions {
+/// The option keywords of a call: the limits and the constraints, not yet
+/// checked ([`Keywords::checked`] gives the core's [`MapOptions`]), and
+/// the drive's swing margin (degrees) and largest time ratio.
+pub(crate) struct Keywords {
     pub(crate) limits: DesignLimits,
     pub(crate) constraints: Constraints,
     pub(crate) swing_margin_deg: f64,
     pub(crate) max_time_ratio: f64,
 }
 
-impl MapOptions {
+impl Keywords {
+    /// The limits and the constraints, checked by the core.
+    pub(crate) fn checked(&self) -> PyResult<MapOptions> {
+        MapOptions::new(&self.limits, &self.constraints).py()
+    }
+
     /// The options from the keywords `options` of method `method` (its
     /// name, for the error of a keyword it does not take), which accepts
-    /// `keys`; the core validates the values.
+    /// `keys`; [`checked`](Self::checked) validates the values.
     pub(crate) fn from_kwargs(
         method: &str,
         options: Option<&Bound<'_, PyDict>>,
@@ -222,7 +227,7 @@ impl MapOptions {
         };
         let pts = |v: Vec<PyPoint>| v.into_iter().map(|p| p.0).collect::<Vec<Point2<f64>>>();
         let d = Constraints::default();
-        Ok(MapOptions {
+        Ok(Keywords {
             limits,
             constraints: Constraints {
                 base_plate: g.base_plate.map(pts),
@@ -240,6 +245,15 @@ impl MapOptions {
             max_time_ratio: g.max_time_ratio.map_or(f64::INFINITY, |r| r.0),
         })
     }
+}
+
+/// The checked map options ([`Keys::MAP`]) of the keywords `options` of
+/// method `method`: what every map method takes.
+pub(crate) fn map_options(
+    method: &str,
+    options: Option<&Bound<'_, PyDict>>,
+) -> PyResult<MapOptions> {
+    Keywords::from_kwargs(method, options, Keys::MAP)?.checked()
 }
 
 /// The constraints as plain data (for pickling).

@@ -1,6 +1,6 @@
 //! `burmester.PairMap` and `burmester.Pair` (the core's `design::pairs`).
 
-use burmester::{Control, Pair, PairContext, Point2, Task};
+use burmester::{Control, MapOptions, Pair, PairContext, Point2, Task};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
@@ -11,7 +11,7 @@ use crate::conv::{Count, PyPoint, Real};
 use crate::curves::PyCurveDyad;
 use crate::design::{Ranked, py_map_class, ranked_getters, ranked_of};
 use crate::errors::IntoPy;
-use crate::options::{Keys, MapOptions, constraint_state, constraints_of, text_signature};
+use crate::options::{constraint_state, constraints_of, map_options, text_signature};
 use crate::pickle::{Reduced, reduce_to};
 use crate::run::{WATCH_MIN_SAMPLES, list_polled, run, run_in};
 
@@ -225,11 +225,9 @@ impl PyPairMap {
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
         columns: &Bound<'_, PyDict>,
     ) -> PyResult<Self> {
-        let constraints = constraints_of(constraints);
+        let opts = MapOptions::new(&limits.inner, &constraints_of(constraints)).py()?;
         let (ny, nx) = (shape.0.0, shape.1.0);
-        let context = py
-            .detach(|| task.inner.pair_context(nx, ny, &limits.inner, &constraints))
-            .py()?;
+        let context = py.detach(|| task.inner.pair_context(nx, ny, &opts)).py()?;
         Self::from_columns(py, context, (ny, nx), columns)
     }
 
@@ -263,7 +261,7 @@ impl PyTask {
         progress: Option<&Bound<'_, PyAny>>,
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyPairMap> {
-        let opts = MapOptions::from_kwargs("Task.pair_map", options, Keys::MAP)?;
+        let opts = map_options("Task.pair_map", options)?;
         let n_driven = n_driven.map_or(n_driving.0, |n| n.0);
         pair_map(py, self.inner, n_driving.0, n_driven, opts, progress)
     }
@@ -284,13 +282,7 @@ fn pair_map(
     // progress is the map's alone.
     let long = n_driving.saturating_add(n_driven) >= 1 << 14;
     let context = run_in(py, long, None, None, "dyads", |control| {
-        task.pair_context_with(
-            n_driving,
-            n_driven,
-            &opts.limits,
-            &opts.constraints,
-            control,
-        )
+        task.pair_context_with(n_driving, n_driven, &opts, control)
     })?;
     let shape = context.shape();
     PyPairMap::filled(py, shape, |out| {

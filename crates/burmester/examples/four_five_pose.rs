@@ -13,9 +13,7 @@
 //! ```
 
 use burmester::synthesis::{FivePositions, FourPositions};
-use burmester::{
-    AssemblyMode, Constraints, Control, DesignLimits, FourBar, Point2, Pose, RankBy, Task,
-};
+use burmester::{AssemblyMode, Control, FourBar, MapOptions, Point2, Pose, RankBy, Task};
 
 /// The pose of the coupler of `fb` at crank angle `deg`: the coupler point
 /// at (1, 1.5) in the frame at the crank joint, x toward the rocker joint.
@@ -71,13 +69,7 @@ fn main() -> Result<(), burmester::Error> {
 
     // The pair map: every (driving, driven) pair of dyads along the curve,
     // with the three-pose solution map's figures, and its best pairs.
-    let pairs = task4.pair_map(
-        200,
-        200,
-        &DesignLimits::default(),
-        &Constraints::default(),
-        &Control::new(),
-    )?;
+    let pairs = task4.pair_map(200, 200, &MapOptions::default(), &Control::new())?;
     let n_ok = pairs.columns.acceptable.iter().filter(|&&b| b).count();
     println!("pair map 200 x 200: {n_ok} acceptable pairs");
     for (k, p) in pairs

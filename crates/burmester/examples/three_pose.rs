@@ -9,8 +9,8 @@
 //! ```
 
 use burmester::{
-    AssemblyMode, Constraints, Control, DesignLimits, Grid, InputRequirement, Point2, RankBy, Task,
-    Viewport,
+    AssemblyMode, Constraints, Control, DesignLimits, Grid, InputRequirement, MapOptions, Point2,
+    RankBy, Task, Viewport,
 };
 
 fn main() -> Result<(), burmester::Error> {
@@ -47,7 +47,11 @@ fn main() -> Result<(), burmester::Error> {
     //    cancel flag (`with_progress`, `with_cancel`).
     let grid = Grid::new(Viewport::new(-250.0, 250.0, -250.0, 250.0)?, 400, 400)?;
     let limits = DesignLimits::from_degrees(40.0, 10.0, InputRequirement::Any)?;
-    let map = filemon.solution_map(&grid, &limits, &Constraints::default(), &Control::new())?;
+    let map = filemon.solution_map(
+        &grid,
+        &MapOptions::new(&limits, &Constraints::default())?,
+        &Control::new(),
+    )?;
     let share =
         |column: &[bool]| 100.0 * column.iter().filter(|&&b| b).count() as f64 / grid.len() as f64;
     println!(

@@ -60,8 +60,8 @@
 //!
 //! ```
 //! use burmester::{
-//!     AssemblyMode, Constraints, Control, DesignLimits, Grid, InputRequirement, Point2,
-//!     RankBy, Task, Viewport,
+//!     AssemblyMode, Constraints, Control, DesignLimits, Grid, InputRequirement, MapOptions,
+//!     Point2, RankBy, Task, Viewport,
 //! };
 //! // x, y (mm) and the coupler's angle (radians) at each pose.
 //! let task = Task::from_xya(&[
@@ -72,7 +72,9 @@
 //! let filemon = task.filemon(Point2::new(-60.0, -40.0))?; // the driven crank's C0
 //! let grid = Grid::new(Viewport::new(-250.0, 250.0, -250.0, 250.0)?, 200, 200)?;
 //! let limits = DesignLimits::from_degrees(40.0, 10.0, InputRequirement::Any)?;
-//! let map = filemon.solution_map(&grid, &limits, &Constraints::default(), &Control::new())?;
+//! // The limits and constraints checked once, for any number of maps.
+//! let options = MapOptions::new(&limits, &Constraints::default())?;
+//! let map = filemon.solution_map(&grid, &options, &Control::new())?;
 //! let best = map.best_pivots(3, None, RankBy::Balanced)?;
 //! let linkage = best[0].linkage; // a SynthesizedFourBar: lengths, pivots, figures
 //! assert!(linkage.figures.min_transmission.to_degrees() >= 40.0);
@@ -131,8 +133,8 @@ pub mod tolerance;
 
 pub use design::ActuatorSearch;
 pub use design::{
-    AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, Pair,
-    PairContext, PairMap, Pivot, PivotAtlas, RankBy, SolutionMap, Varying,
+    AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, MapOptions,
+    Pair, PairContext, PairMap, Pivot, PivotAtlas, RankBy, SolutionMap, Varying,
 };
 pub use design::{
     Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, PivotRegion, SearchPoint,

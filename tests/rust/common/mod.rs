@@ -4,8 +4,8 @@
 use std::f64::consts::PI;
 
 use burmester::{
-    AngleInterval, Constraints, Control, DesignLimits, Filemon, Grid, InputRange, Point2, Pose,
-    SolutionMap, Task, Vector2,
+    AngleInterval, Constraints, Control, DesignLimits, Filemon, Grid, InputRange, MapOptions,
+    Point2, Pose, SolutionMap, Task, Vector2,
 };
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
@@ -30,8 +30,12 @@ pub(crate) fn notes_poses() -> [Pose; 5] {
 
 /// The solution map of `f` on `g` under `limits`, with no constraints.
 pub(crate) fn solution_map(f: &Filemon, g: &Grid, limits: &DesignLimits) -> SolutionMap {
-    f.solution_map(g, limits, &Constraints::none(), &Control::new())
-        .unwrap()
+    f.solution_map(
+        g,
+        &MapOptions::new(limits, &Constraints::none()).unwrap(),
+        &Control::new(),
+    )
+    .unwrap()
 }
 
 /// The centroid of the poses' positions.

@@ -89,7 +89,7 @@ use nalgebra::{Point2, Vector2};
 use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
 use crate::design::rank::{best, flagged_rank_columns};
-use crate::design::{Constraints, DesignLimits, RankBy};
+use crate::design::{Constraints, DesignLimits, MapOptions, RankBy};
 use crate::engine::{Control, for_rows};
 use crate::error::{
     DegenerateError, DriveError, InvalidInput, Result, count_in, finite_point, in_range, try_vec,
@@ -349,9 +349,8 @@ pub struct ActuatorContext {
     grid: Grid,
     linkage: SynthesizedFourBar,
     point: Point2<f64>,
-    limits: DesignLimits,
+    map_options: MapOptions,
     options: ActuatorOptions,
-    constraints: Constraints,
     travel: Travel,
 }
 
@@ -466,7 +465,7 @@ impl ActuatorContext {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] for invalid limits, options or constraints, a
+    /// [`InvalidInput`] for invalid actuator options, a
     /// non-finite point, or a grid of more than
     /// [`MAX_GRID_SAMPLES`](Self::MAX_GRID_SAMPLES) samples;
     /// [`DriveError::NoTravel`] for a linkage that does not carry the
@@ -477,13 +476,10 @@ impl ActuatorContext {
         linkage: &SynthesizedFourBar,
         point: Point2<f64>,
         grid: &Grid,
-        limits: &DesignLimits,
+        map_options: &MapOptions,
         options: &ActuatorOptions,
-        constraints: &Constraints,
     ) -> Result<Self> {
-        limits.validate()?;
         options.validate()?;
-        constraints.prepare()?;
         if grid.len() > Self::MAX_GRID_SAMPLES {
             return Err(InvalidInput::GridSize {
                 nx: grid.nx(),
@@ -498,9 +494,8 @@ impl ActuatorContext {
             grid: *grid,
             linkage: *linkage,
             point,
-            limits: *limits,
+            map_options: map_options.clone(),
             options: *options,
-            constraints: constraints.clone(),
             travel,
         })
     }
@@ -523,7 +518,7 @@ impl ActuatorContext {
     }
     /// The limits behind `acceptable`.
     pub fn limits(&self) -> &DesignLimits {
-        &self.limits
+        self.map_options.limits()
     }
     /// The options.
     pub fn options(&self) -> &ActuatorOptions {
@@ -532,7 +527,11 @@ impl ActuatorContext {
     /// The constraints: the base plate behind `acceptable`, the obstacles
     /// and envelope behind a placement's clearance.
     pub fn constraints(&self) -> &Constraints {
-        &self.constraints
+        self.map_options.constraints()
+    }
+    /// The limits and the constraints, checked.
+    pub fn map_options(&self) -> &MapOptions {
+        &self.map_options
     }
     /// The sampled input angles of the travel, first pose to last.
     pub fn travel_angles(&self) -> &[f64] {
@@ -566,13 +565,13 @@ impl ActuatorContext {
     /// `grid.len()` values; as [`map`](Self::map).
     pub fn map_into(&self, mut out: ActuatorColumnsOut<'_>, control: &Control<'_>) -> Result<()> {
         out.check_len(self.grid.len())?;
-        let prepared = self.constraints.prepare()?;
+        let prepared = self.map_options.prepared();
         let nx = self.grid.nx();
         let mut samples = try_vec("an actuator map", self.grid.len(), ActuatorSample::INVALID)?;
         for_rows(nx, &mut samples, control, |j, row| {
             let y = self.grid.y(j);
             for (i, s) in row.iter_mut().enumerate() {
-                *s = self.sample(&prepared, Point2::new(self.grid.x(i), y));
+                *s = self.sample(prepared, Point2::new(self.grid.x(i), y));
             }
         })?;
         for (i, s) in samples.iter().enumerate() {
@@ -589,7 +588,7 @@ impl ActuatorContext {
 
     /// Whether sampled figures meet the limits (the clearance apart).
     fn meets(&self, prepared: &Prepared, g: Point2<f64>, e: &Eval, mu: f64) -> bool {
-        let l = &self.limits;
+        let l = self.limits();
         e.monotone
             && e.s_max / e.s_min <= self.options.max_stroke_ratio
             && mu >= l.min_transmission
@@ -680,7 +679,7 @@ impl ActuatorContext {
             let (th, sin) = golden_min(|x| t.sin_mu(g, x), a, b, e.min_sin, t.theta[k])?;
             (sin.asin(), th)
         };
-        let prepared = self.constraints.prepare()?;
+        let prepared = self.map_options.prepared();
         let exact = Eval {
             s_min,
             s_max,
@@ -688,9 +687,9 @@ impl ActuatorContext {
             size_ratio: (t.members + s_max) * t.inv_span,
             ..e
         };
-        let (min_clearance, clearance_angle) = self.clearance(&prepared, g)?;
+        let (min_clearance, clearance_angle) = self.clearance(prepared, g)?;
         let clear = self.clear(min_clearance);
-        let acceptable = self.meets(&prepared, g, &exact, min_transmission) && clear;
+        let acceptable = self.meets(prepared, g, &exact, min_transmission) && clear;
         Ok(Actuator {
             linkage: self.linkage,
             link: self.options.link,

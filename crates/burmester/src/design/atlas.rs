@@ -37,7 +37,7 @@ use rayon::prelude::*;
 
 use crate::design::judge::Sampler;
 use crate::design::kernel::{self, AtlasAsk, CosBand, DrivingRows, RowOut, RowPre, sample_score};
-use crate::design::options::CheckedOptions;
+use crate::design::options::MapOptions;
 use crate::design::rank::tie_order;
 use crate::design::{Constraints, DesignLimits, RankBy};
 use crate::engine::Control;
@@ -151,33 +151,25 @@ impl Task {
     /// # Errors
     ///
     /// [`InvalidInput::NeedsPoses`] for a task of four or five poses;
-    /// [`InvalidInput`] for invalid limits or constraints, or a ranking
-    /// without a score ([`RankBy::Pareto`], [`RankBy::Margin`]);
+    /// [`InvalidInput`] for an envelope that leaves out a pose, or a
+    /// ranking without a score ([`RankBy::Pareto`], [`RankBy::Margin`]);
     /// [`Error::OutOfMemory`]; [`Error::Cancelled`].
     pub fn pivot_atlas(
         &self,
         driven: &Grid,
         driving: &Grid,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         rank_by: RankBy,
         control: &Control<'_>,
     ) -> Result<PivotAtlas> {
-        let cells = self.pivot_atlas_rows(
-            driven,
-            0..driven.ny(),
-            driving,
-            limits,
-            constraints,
-            rank_by,
-            control,
-        )?;
+        let rows = 0..driven.ny();
+        let cells = self.pivot_atlas_rows(driven, rows, driving, options, rank_by, control)?;
         Ok(PivotAtlas {
             task: *self,
             driven: *driven,
             driving: *driving,
-            limits: *limits,
-            constraints: constraints.clone(),
+            limits: *options.limits(),
+            constraints: options.constraints().clone(),
             rank_by,
             cells,
         })
@@ -191,14 +183,12 @@ impl Task {
     ///
     /// As [`pivot_atlas`](Self::pivot_atlas);
     /// [`InvalidInput::OutsideRange`] for rows outside the driven grid.
-    #[allow(clippy::too_many_arguments)]
     pub fn pivot_atlas_rows(
         &self,
         driven: &Grid,
         rows: Range<usize>,
         driving: &Grid,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         rank_by: RankBy,
         control: &Control<'_>,
     ) -> Result<Vec<AtlasCell>> {
@@ -214,8 +204,7 @@ impl Task {
             }
             .into());
         }
-        let options = CheckedOptions::new(limits, constraints)?;
-        let sampler = Sampler::new(self, &options)?.with_control(control);
+        let sampler = Sampler::new(self, options)?.with_control(control);
         let nx = driven.nx();
         let cells_in_all = (rows.end - rows.start) * nx;
         let mut cells = try_vec("a pivot atlas", cells_in_all, AtlasCell::INVALID)?;

@@ -325,6 +325,7 @@ fn self_intersects(pts: &[Point2<f64>]) -> bool {
 }
 
 /// Constraints as parry shapes.
+#[derive(Clone)]
 pub(crate) struct Prepared {
     plate: Option<Vec<PVector>>,
     pub(crate) obstacles: Vec<ConvexPolygon>,
@@ -335,6 +336,19 @@ pub(crate) struct Prepared {
 }
 
 impl Prepared {
+    /// The default constraints ([`Constraints::default`]) as shapes: what
+    /// [`Constraints::prepare`] gives them, without a check that cannot
+    /// fail.
+    pub(crate) fn unconstrained() -> Self {
+        Prepared {
+            plate: None,
+            obstacles: Vec::new(),
+            envelope: None,
+            radius: 0.0,
+            samples: Constraints::DEFAULT_TRAVEL_SAMPLES,
+        }
+    }
+
     /// Whether there is nothing to test: no base plate, no obstacles, no
     /// envelope.
     pub(crate) fn is_empty(&self) -> bool {
@@ -758,6 +772,22 @@ mod tests {
             found[usize::from(want)] += 1;
         }
         assert!(found[0] > 1000 && found[1] > 1000, "{found:?}");
+    }
+
+    /// The shapes of no constraints, made without a check, are what the
+    /// check gives the default constraints.
+    #[test]
+    fn unconstrained_is_the_default_prepared() {
+        let (a, b) = (
+            Prepared::unconstrained(),
+            Constraints::default().prepare().unwrap(),
+        );
+        assert!(a.plate.is_none() && b.plate.is_none());
+        assert!(a.obstacles.is_empty() && b.obstacles.is_empty());
+        assert!(a.envelope.is_none() && b.envelope.is_none());
+        assert_eq!(a.radius.to_bits(), b.radius.to_bits());
+        assert_eq!(a.samples, b.samples);
+        assert!(a.is_empty() && !a.checks_motion());
     }
 
     #[test]

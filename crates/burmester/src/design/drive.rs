@@ -86,7 +86,7 @@ use pulp::{Arch, Simd, WithSimd};
 use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
 use crate::design::rank::{best, flagged_rank_columns, tie_order};
-use crate::design::{Constraints, DesignLimits, RankBy};
+use crate::design::{Constraints, DesignLimits, MapOptions, RankBy};
 use crate::engine::{Control, Rows, run_blocks_polled, run_blocks_with};
 use crate::error::{
     DegenerateError, DriveError, InvalidInput, Result, count_in, finite_point, in_range, outside,
@@ -481,9 +481,8 @@ pub struct DriveContext {
     grid: Grid,
     linkage: SynthesizedFourBar,
     attachment: Point2<f64>,
-    limits: DesignLimits,
+    map_options: MapOptions,
     options: DriveOptions,
-    constraints: Constraints,
     swing: Swing,
 }
 
@@ -657,8 +656,8 @@ impl DriveContext {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] for invalid limits, options or constraints (an
-    /// envelope among them: it is not checked over the crank's turn), or a
+    /// [`InvalidInput`] for invalid drive options, an envelope among the
+    /// constraints (it is not checked over the crank's turn), or a
     /// non-finite attachment; [`DriveError::NoTravel`] for a linkage
     /// that does not carry the coupler through its poses in order in one
     /// mode; [`DriveError::TravelTooLarge`] when the travel with its margins
@@ -669,14 +668,11 @@ impl DriveContext {
         linkage: &SynthesizedFourBar,
         attachment: Point2<f64>,
         grid: &Grid,
-        limits: &DesignLimits,
+        map_options: &MapOptions,
         options: &DriveOptions,
-        constraints: &Constraints,
     ) -> Result<Self> {
-        limits.validate()?;
         options.validate()?;
-        constraints.prepare()?;
-        if constraints.envelope.is_some() {
+        if map_options.constraints().envelope.is_some() {
             // The whole-turn checks cover the base plate and the obstacles;
             // an envelope would go unchecked, so it is refused.
             return Err(InvalidInput::UnknownName {
@@ -692,9 +688,8 @@ impl DriveContext {
             grid: *grid,
             linkage: *linkage,
             attachment,
-            limits: *limits,
+            map_options: map_options.clone(),
             options: *options,
-            constraints: constraints.clone(),
             swing,
         })
     }
@@ -713,7 +708,7 @@ impl DriveContext {
     }
     /// The limits behind `acceptable`.
     pub fn limits(&self) -> &DesignLimits {
-        &self.limits
+        self.map_options.limits()
     }
     /// The options.
     pub fn options(&self) -> &DriveOptions {
@@ -721,7 +716,11 @@ impl DriveContext {
     }
     /// The constraints behind `acceptable`.
     pub fn constraints(&self) -> &Constraints {
-        &self.constraints
+        self.map_options.constraints()
+    }
+    /// The limits and the constraints, checked.
+    pub fn map_options(&self) -> &MapOptions {
+        &self.map_options
     }
     /// The motion loop's input angle at the start and the end of the
     /// working stroke (the travel extended by the margins).
@@ -777,7 +776,7 @@ impl DriveContext {
     /// (the columns then hold a partial map).
     pub fn map_into(&self, out: DriveColumnsOut<'_>, control: &Control<'_>) -> Result<()> {
         out.check_len(self.grid.len())?;
-        let mut judge = self.judge()?;
+        let mut judge = self.judge();
         // A sample's clearance over the turn can take tens of milliseconds
         // (refined by halves where a link grazes an obstacle): it polls the
         // cancel flag between its intervals too.
@@ -822,22 +821,23 @@ impl DriveContext {
 
     /// The limits of [`DriveRow`]'s lanes.
     fn lane_limits(&self) -> [f64; 5] {
+        let limits = self.limits();
         [
-            self.limits.min_transmission,
-            self.limits.max_link_ratio,
+            limits.min_transmission,
+            limits.max_link_ratio,
             self.options.max_time_ratio,
-            self.limits.max_size_ratio,
-            self.limits.max_link_length,
+            limits.max_size_ratio,
+            limits.max_link_length,
         ]
     }
 
-    /// The prepared limits and constraints.
-    fn judge(&self) -> Result<DriveJudge<'_>> {
-        Ok(DriveJudge {
+    /// The limits and the prepared constraints.
+    fn judge(&self) -> DriveJudge<'_> {
+        DriveJudge {
             context: self,
-            prepared: self.constraints.prepare()?,
+            prepared: self.map_options.prepared(),
             cancel: None,
-        })
+        }
     }
 
     /// The drive with its crank pivot at `d0`.
@@ -849,7 +849,7 @@ impl DriveContext {
     /// non-finite point.
     pub fn drive(&self, d0: Point2<f64>) -> Result<Drive> {
         finite_point(["drive pivot x", "drive pivot y"], d0)?;
-        let judge = self.judge()?;
+        let judge = self.judge();
         judge.drive(d0)
     }
 
@@ -884,7 +884,7 @@ impl DriveContext {
         let rho = self.swing.rho;
         let swing = cross(pa, pb).abs().atan2(pa.dot(&pb));
         let mu = drive_transmission
-            .unwrap_or(0.5 * (self.limits.min_transmission + FRAC_PI_2 - 0.5 * swing));
+            .unwrap_or(0.5 * (self.limits().min_transmission + FRAC_PI_2 - 0.5 * swing));
         let design = CrankRockerDesign::unit_time_ratio(rho, swing, mu)?;
         let mid = self.swing.a0 + 0.5 * (pa + pb);
         let chord = pb - pa;
@@ -935,7 +935,7 @@ impl DriveMap {
 /// sample's columns and a drive's figures are computed.
 struct DriveJudge<'a> {
     context: &'a DriveContext,
-    prepared: Prepared,
+    prepared: &'a Prepared,
     /// The map's cancel flag: a clearance test stops (not clear) once it is
     /// set, and the map is then [`Error::Cancelled`](crate::Error::Cancelled).
     cancel: Option<&'a AtomicBool>,
@@ -947,13 +947,13 @@ impl DriveJudge<'_> {
     /// constraints): [`DriveRow`]'s `meets`, comparison for comparison.
     #[inline(always)]
     fn meets(&self, e: &Eval) -> bool {
-        let c = self.context;
+        let (c, l) = (self.context, self.context.limits());
         e.valid
-            && e.mu >= c.limits.min_transmission
-            && e.link_ratio <= c.limits.max_link_ratio
+            && e.mu >= l.min_transmission
+            && e.link_ratio <= l.max_link_ratio
             && e.time_ratio <= c.options.max_time_ratio
-            && e.size_ratio <= c.limits.max_size_ratio
-            && e.lmax <= c.limits.max_link_length
+            && e.size_ratio <= l.max_size_ratio
+            && e.lmax <= l.max_link_length
     }
 
     /// Whether `d0` is on the base plate and the six-bar of the drive clear
@@ -1431,17 +1431,17 @@ pub struct DriveSearch {
 ///
 /// # Errors
 ///
-/// [`InvalidInput`] for an invalid search, limits, options or constraints,
-/// or a ranking other than balanced, transmission or compact; the errors of
+/// [`InvalidInput`] for an invalid search or drive options, an envelope
+/// among the constraints, or a ranking other than balanced, transmission or
+/// compact; the errors of
 /// [`DriveContext::new`] that do not depend on the attachment (no travel,
 /// a travel too large, margins outside the input range);
 /// [`Error::Cancelled`](crate::Error::Cancelled).
 pub fn search_drives(
     linkage: &SynthesizedFourBar,
     search: &AttachmentSearch,
-    limits: &DesignLimits,
+    map_options: &MapOptions,
     options: &DriveOptions,
-    constraints: &Constraints,
     rank_by: RankBy,
     control: &Control<'_>,
 ) -> Result<DriveSearch> {
@@ -1467,7 +1467,7 @@ pub fn search_drives(
         let a0 = linkage.driving.center;
         let h = search.reach * rho;
         let grid = Grid::from_bounds(a0.x - h, a0.x + h, a0.y - h, a0.y + h, n, n)?;
-        let context = match DriveContext::new(linkage, e, &grid, limits, options, constraints) {
+        let context = match DriveContext::new(linkage, e, &grid, map_options, options) {
             Ok(c) => c,
             // An attachment too close to A0 for this linkage: skip it.
             Err(crate::Error::Degenerate(DegenerateError::ZeroLengthLink { .. })) => continue,
@@ -1534,11 +1534,11 @@ pub fn search_drives(
 ///
 /// ```
 /// use burmester::design::{best_drive, DriveOptions};
-/// use burmester::{Constraints, Control, DesignLimits, RankBy, example};
+/// use burmester::{Control, MapOptions, RankBy, example};
 /// let filemon = example::task().filemon(example::driven_center())?;
 /// let linkage = filemon.four_bar(burmester::Point2::new(-2.0, 6.0))?;
-/// match best_drive(&linkage, &DesignLimits::default(), &DriveOptions::default(),
-///                  &Constraints::default(), RankBy::Balanced, &Control::new()) {
+/// match best_drive(&linkage, &MapOptions::default(), &DriveOptions::default(),
+///                  RankBy::Balanced, &Control::new()) {
 ///     Ok(drive) => assert!(drive.sixbar.crank_turns_fully() && drive.acceptable),
 ///     Err(burmester::Error::Drive(why)) => println!("no drive: {why}"),
 ///     Err(e) => return Err(e),
@@ -1547,28 +1547,19 @@ pub fn search_drives(
 /// ```
 pub fn best_drive(
     linkage: &SynthesizedFourBar,
-    limits: &DesignLimits,
+    map_options: &MapOptions,
     options: &DriveOptions,
-    constraints: &Constraints,
     rank_by: RankBy,
     control: &Control<'_>,
 ) -> Result<Drive> {
     let search = AttachmentSearch::default();
-    let found = search_drives(
-        linkage,
-        &search,
-        limits,
-        options,
-        constraints,
-        rank_by,
-        control,
-    )?;
+    let found = search_drives(linkage, &search, map_options, options, rank_by, control)?;
     found.drives.into_iter().next().ok_or_else(|| {
         DriveError::NoAcceptableDrive {
             searched: found.searched,
             valid: found.valid,
             best_transmission_deg: found.best_transmission.to_degrees(),
-            min_transmission_deg: limits.min_transmission.to_degrees(),
+            min_transmission_deg: map_options.limits().min_transmission.to_degrees(),
         }
         .into()
     })
@@ -1586,7 +1577,6 @@ mod tests {
     /// link).
     #[test]
     fn drive_lanes_are_the_scalar_path_on_every_width() {
-        let none = Constraints::default();
         let linkage = example_linkage(60, &DesignLimits::default());
         let a0 = linkage.driving.center;
         let g =
@@ -1596,7 +1586,8 @@ mod tests {
             max_time_ratio: 1.3,
         };
         let context = |limits: &DesignLimits| {
-            DriveContext::new(&linkage, linkage.driving.circle, &g, limits, &opts, &none).unwrap()
+            let map_options = MapOptions::new(limits, &Constraints::default()).unwrap();
+            DriveContext::new(&linkage, linkage.driving.circle, &g, &map_options, &opts).unwrap()
         };
         // Size limits that cut through the valid samples: the medians of
         // their size ratios and longest links.
@@ -1631,7 +1622,11 @@ mod tests {
         let f = task.filemon(crate::example::driven_center()).unwrap();
         let grid = Grid::new(crate::example::viewport(), n, n).unwrap();
         let map = f
-            .solution_map(&grid, limits, &Constraints::default(), &Control::new())
+            .solution_map(
+                &grid,
+                &MapOptions::new(limits, &Constraints::default()).unwrap(),
+                &Control::new(),
+            )
             .unwrap();
         map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage
     }
@@ -1672,15 +1667,14 @@ mod tests {
             &linkage,
             linkage.driving.circle,
             &g,
-            &free,
+            &MapOptions::new(&free, &constraints).unwrap(),
             &DriveOptions::default(),
-            &constraints,
         )
         .unwrap();
         let stop = AtomicBool::new(true);
-        let mut stopped = ctx.judge().unwrap();
+        let mut stopped = ctx.judge();
         stopped.cancel = Some(&stop);
-        let judge = ctx.judge().unwrap();
+        let judge = ctx.judge();
         let mut clear = 0;
         for k in 0..g.len() {
             let d0 = ctx.point(k);
@@ -1706,7 +1700,7 @@ mod tests {
     /// scalar path and the map; counts the valid samples, not acceptable
     /// and acceptable.
     fn lanes_against_scalar(ctx: &DriveContext, g: &Grid) -> [usize; 2] {
-        let judge = ctx.judge().unwrap();
+        let judge = ctx.judge();
         let lim = ctx.lane_limits();
         let mut counts = [0usize; 2];
         for j in 0..g.ny() {

@@ -1,5 +1,5 @@
 //! The per-sample evaluation every map shares: the options checked once
-//! ([`CheckedOptions`]), the figures of a linkage judged into a sample's
+//! ([`MapOptions`]), the figures of a linkage judged into a sample's
 //! columns ([`Judge`]), the three-pose maps' candidates ([`Sampler`]), and
 //! the fill of a map's rows on the [`engine`](crate::engine).
 
@@ -10,7 +10,7 @@ use nalgebra::Point2;
 use crate::design::DesignLimits;
 use crate::design::columns::{ColumnsOut, Sample};
 use crate::design::constraints::Prepared;
-use crate::design::options::CheckedOptions;
+use crate::design::options::MapOptions;
 use crate::engine::{Control, run_blocks};
 use crate::error::{InvalidInput, Result};
 use crate::geom::Grid;
@@ -90,7 +90,7 @@ impl<'a> Judge<'a> {
     /// # Errors
     ///
     /// [`InvalidInput::Polygon`] for an envelope that leaves out a pose.
-    pub(crate) fn new(task: &'a Task, options: &'a CheckedOptions) -> Result<Self> {
+    pub(crate) fn new(task: &'a Task, options: &'a MapOptions) -> Result<Self> {
         let (limits, prepared) = (options.limits(), options.prepared());
         if let Some(env) = &options.constraints().envelope {
             if !task
@@ -230,7 +230,7 @@ impl<'a> Sampler<'a> {
     ///
     /// [`InvalidInput::NeedsPoses`] unless the task has three poses; as
     /// [`Judge::new`].
-    pub(crate) fn new(task: &'a Task, options: &'a CheckedOptions) -> Result<Self> {
+    pub(crate) fn new(task: &'a Task, options: &'a MapOptions) -> Result<Self> {
         let maps = task.three_poses("the solution map")?;
         Ok(Sampler {
             judge: Judge::new(task, options)?,

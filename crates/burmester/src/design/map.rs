@@ -6,7 +6,7 @@ use nalgebra::Point2;
 use crate::design::columns::{Columns, ColumnsOut, Sample, debug_map};
 use crate::design::judge::{Sampler, fill};
 use crate::design::kernel;
-use crate::design::options::CheckedOptions;
+use crate::design::options::MapOptions;
 use crate::design::{Constraints, DesignLimits};
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result, try_vec};
@@ -126,19 +126,13 @@ impl MapContext {
 }
 
 impl MapContext {
-    fn new(
-        grid: &Grid,
-        task: &Task,
-        varying: Varying,
-        limits: &DesignLimits,
-        constraints: &Constraints,
-    ) -> Self {
+    fn new(grid: &Grid, task: &Task, varying: Varying, options: &MapOptions) -> Self {
         MapContext {
             grid: *grid,
             task: *task,
             varying,
-            limits: *limits,
-            constraints: constraints.clone(),
+            limits: *options.limits(),
+            constraints: options.constraints().clone(),
         }
     }
 }
@@ -163,26 +157,22 @@ impl Source<'_> {
     fn map<T>(
         self,
         grid: &Grid,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         control: &Control<'_>,
         finish: impl FnOnce(MapContext, &Fill<'_>) -> Result<T>,
     ) -> Result<T> {
-        let options = CheckedOptions::new(limits, constraints)?;
         match self {
             Source::Driving(filemon) => {
-                let sampler = Sampler::new(filemon.task(), &options)?.with_control(control);
-                let context = filemon.map_context(grid, &options)?;
+                let sampler = Sampler::new(filemon.task(), options)?.with_control(control);
+                let context = filemon.map_context(grid, options)?;
                 finish(context, &|out| {
                     filemon.fill_solution_map(&sampler, grid, out, control)
                 })
             }
             Source::Driven(task, driving) => {
-                let sampler = task
-                    .driven_sampler(driving, &options)?
-                    .with_control(control);
+                let sampler = task.driven_sampler(driving, options)?.with_control(control);
                 let varying = Varying::Driven { driving: *driving };
-                let context = MapContext::new(grid, task, varying, limits, constraints);
+                let context = MapContext::new(grid, task, varying, options);
                 finish(context, &|out| {
                     task.fill_driven_map(&sampler, driving, grid, out, control)
                 })
@@ -227,20 +217,19 @@ impl Filemon {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] for invalid limits or constraints (obstacles and
-    /// an envelope are checked over a slider-crank's travel too: module
+    /// [`InvalidInput`] for an envelope that leaves out a pose (obstacles
+    /// and an envelope are checked over a slider-crank's travel too: module
     /// `map_slider`);
     /// [`Error::OutOfMemory`](crate::Error::OutOfMemory) when the columns
     /// cannot be allocated; [`Error::Cancelled`](crate::Error::Cancelled).
     pub fn solution_map(
         &self,
         grid: &Grid,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
-        Source::Driving(self).map(grid, limits, constraints, control, |context, fill| {
+        Source::Driving(self).map(grid, options, control, |context, fill| {
             fresh(grid, context, fill)
         })
     }
@@ -260,18 +249,17 @@ impl Filemon {
     pub fn solution_map_into(
         &self,
         grid: &Grid,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
-        Source::Driving(self).map(grid, limits, constraints, control, |context, fill| {
+        Source::Driving(self).map(grid, options, control, |context, fill| {
             into(grid, context, out, fill)
         })
     }
 
     /// What the map is computed for.
-    fn map_context(&self, grid: &Grid, options: &CheckedOptions) -> Result<MapContext> {
+    fn map_context(&self, grid: &Grid, options: &MapOptions) -> Result<MapContext> {
         let varying = match self.driven() {
             DyadKind::Revolute(driven) => Varying::Driving { driven },
             DyadKind::Slider(driven) => Varying::DrivingSlider { driven },
@@ -284,14 +272,7 @@ impl Filemon {
                 .into());
             }
         };
-        let (limits, constraints) = (options.limits(), options.constraints());
-        Ok(MapContext::new(
-            grid,
-            self.task(),
-            varying,
-            limits,
-            constraints,
-        ))
+        Ok(MapContext::new(grid, self.task(), varying, options))
     }
 
     /// The columns of the map, the arguments checked.
@@ -326,19 +307,18 @@ impl Task {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput`] for invalid limits or constraints, or a driving
-    /// dyad that is not a dyad of this task; as [`Filemon::solution_map`].
+    /// [`InvalidInput`] for a driving dyad that is not a dyad of this task;
+    /// as [`Filemon::solution_map`].
     pub fn driven_solution_map(
         &self,
         driving: &Dyad,
         grid: &Grid,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         control: &Control<'_>,
     ) -> Result<SolutionMap> {
         // The arguments are checked before the columns are allocated.
         let source = Source::Driven(self, driving);
-        source.map(grid, limits, constraints, control, |context, fill| {
+        source.map(grid, options, control, |context, fill| {
             fresh(grid, context, fill)
         })
     }
@@ -355,13 +335,12 @@ impl Task {
         &self,
         driving: &Dyad,
         grid: &Grid,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         out: ColumnsOut<'_>,
         control: &Control<'_>,
     ) -> Result<MapContext> {
         let source = Source::Driven(self, driving);
-        source.map(grid, limits, constraints, control, |context, fill| {
+        source.map(grid, options, control, |context, fill| {
             into(grid, context, out, fill)
         })
     }
@@ -371,7 +350,7 @@ impl Task {
     fn driven_sampler<'a>(
         &'a self,
         driving: &Dyad,
-        options: &'a CheckedOptions,
+        options: &'a MapOptions,
     ) -> Result<Sampler<'a>> {
         let sampler = Sampler::new(self, options)?;
         let d = self.dyad_from_center(driving.center)?;

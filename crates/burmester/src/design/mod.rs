@@ -78,6 +78,7 @@ pub use drive::{
 };
 pub use limits::{DesignLimits, InputRequirement};
 pub use map::{MapContext, SolutionMap, Varying};
+pub use options::MapOptions;
 pub use pairs::{Pair, PairContext, PairMap};
 pub use rank::{Pivot, PivotLinkage, RankBy, RankColumns, SliderPivot};
 pub use search::ActuatorSearch;

@@ -33,7 +33,7 @@
 
 use crate::design::columns::{Columns, ColumnsOut, Sample, debug_map};
 use crate::design::judge::{Judge, fill_rows};
-use crate::design::options::CheckedOptions;
+use crate::design::options::MapOptions;
 use crate::design::rank::{
     Offer, RankColumns, RankedContext, best, best_with, signed_distances_with,
 };
@@ -146,15 +146,15 @@ impl Task {
     /// length is below [`Task::MIN_PAIR_PARAMETER`] (poses 1 and 2 nearly
     /// coincide); [`InvalidInput::GridSize`] when a count is 0,
     /// above [`Task::MAX_PAIR_SAMPLES`], or the map has more than
-    /// [`Grid::MAX_POINTS`] pairs; [`InvalidInput`] for invalid limits or
-    /// constraints; [`Error::OutOfMemory`](crate::Error::OutOfMemory) when
+    /// [`Grid::MAX_POINTS`] pairs; [`InvalidInput`] for an envelope that
+    /// leaves out a pose; [`Error::OutOfMemory`](crate::Error::OutOfMemory) when
     /// the columns cannot be allocated;
     /// [`Error::Cancelled`](crate::Error::Cancelled).
     ///
     /// # Example
     ///
     /// ```
-    /// use burmester::{Constraints, Control, DesignLimits, RankBy, Task};
+    /// use burmester::{Constraints, Control, DesignLimits, MapOptions, RankBy, Task};
     /// // Four poses of the coupler of a crank-rocker (A0 = (0, 0), B0 = (4, 0)).
     /// let task = Task::from_xya(&[
     ///     [1.049199280691, 2.279426358634, 45.220037141544_f64.to_radians()],
@@ -162,8 +162,8 @@ impl Task {
     ///     [-0.378159188147, 3.063048993013, 21.786789298262_f64.to_radians()],
     ///     [-1.268710439724, 2.051150142014, 27.048624103934_f64.to_radians()],
     /// ])?;
-    /// let map = task.pair_map(64, 64, &DesignLimits::default(), &Constraints::default(),
-    ///     &Control::new())?;
+    /// let options = MapOptions::new(&DesignLimits::default(), &Constraints::default())?;
+    /// let map = task.pair_map(64, 64, &options, &Control::new())?;
     /// let best = map.best_pairs(3, None, RankBy::Balanced)?;
     /// assert!(!best.is_empty());
     /// for p in &best {
@@ -178,13 +178,12 @@ impl Task {
         &self,
         n_driving: usize,
         n_driven: usize,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         control: &Control<'_>,
     ) -> Result<PairMap> {
-        let context = self.pair_context(n_driving, n_driven, limits, constraints)?;
+        let context = self.pair_context(n_driving, n_driven, options)?;
         let mut columns = Columns::for_overwrite(context.grid.len())?;
-        context.map_into(columns.as_out(), control)?;
+        context.fill(options, columns.as_out(), control)?;
         Ok(PairMap { context, columns })
     }
 
@@ -200,10 +199,9 @@ impl Task {
         &self,
         n_driving: usize,
         n_driven: usize,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
     ) -> Result<PairContext> {
-        self.pair_context_with(n_driving, n_driven, limits, constraints, &Control::new())
+        self.pair_context_with(n_driving, n_driven, options, &Control::new())
     }
 
     /// [`pair_context`](Self::pair_context) following `control` (the
@@ -220,8 +218,7 @@ impl Task {
         &self,
         n_driving: usize,
         n_driven: usize,
-        limits: &DesignLimits,
-        constraints: &Constraints,
+        options: &MapOptions,
         control: &Control<'_>,
     ) -> Result<PairContext> {
         if self.len() != 4 {
@@ -242,7 +239,7 @@ impl Task {
             }
             .into());
         }
-        Judge::new(self, &CheckedOptions::new(limits, constraints)?)?;
+        Judge::new(self, options)?;
         let four: &FourPositions = self.four_positions("Task::pair_map")?;
         let length = four.parameter_length()?;
         // Poses 1 and 2 nearly alike leave the crank almost no rotation
@@ -264,8 +261,8 @@ impl Task {
             task: *self,
             driving: self.buildable(four.parameter_samples_with(n_driving, control)?, control)?,
             driven: self.buildable(four.parameter_samples_with(n_driven, control)?, control)?,
-            limits: *limits,
-            constraints: constraints.clone(),
+            limits: *options.limits(),
+            constraints: options.constraints().clone(),
         })
     }
 }
@@ -328,9 +325,19 @@ impl PairContext {
             }
         }
         out.check_len(self.grid.len())?;
+        self.fill(
+            &MapOptions::new(&self.limits, &self.constraints)?,
+            out,
+            control,
+        )
+    }
+
+    /// The columns of the map, this context checked to be one
+    /// [`Task::pair_context`] could give and `options` its limits and
+    /// constraints, checked.
+    fn fill(&self, options: &MapOptions, out: ColumnsOut<'_>, control: &Control<'_>) -> Result<()> {
         let (n_driving, n_driven) = (self.driving.len(), self.driven.len());
-        let options = CheckedOptions::new(&self.limits, &self.constraints)?;
-        let judge = Judge::new(&self.task, &options)?.with_control(control);
+        let judge = Judge::new(&self.task, options)?.with_control(control);
         // The moving pivots at the four poses, once per sample of each axis.
         let motion = self.task.motion();
         let pivots = |d: &Option<CurveDyad>| {

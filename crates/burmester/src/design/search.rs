@@ -151,7 +151,7 @@ use crate::design::constraints::{Checks, Prepared};
 use crate::design::drive::{Drive, DriveOptions};
 use crate::design::rank::tie_order;
 use crate::design::space::{PivotRegion, Space};
-use crate::design::{AtlasCell, DesignLimits, InputRequirement, RankBy};
+use crate::design::{AtlasCell, DesignLimits, InputRequirement, MapOptions, RankBy};
 use crate::engine::Control;
 use crate::error::{Error, InvalidInput, Result, count_in, in_range};
 use crate::geom::{Grid, Viewport};
@@ -1293,8 +1293,7 @@ impl Task {
                 let atlas = self.pivot_atlas(
                     &plan.driven,
                     &plan.driving,
-                    &options.limits,
-                    &plan.constraints,
+                    &MapOptions::new(&options.limits, &plan.constraints)?,
                     options.rank_by,
                     &control.with_hook(&hook),
                 )?;
@@ -1636,13 +1635,8 @@ impl Task {
         let length = four.parameter_length()?;
         let n = options.coarse_pairs;
         let hook = |d: usize, t: usize| control.report(COARSE_SHARE * d / t.max(1), PROGRESS);
-        let map = self.pair_map(
-            n,
-            n,
-            &options.limits,
-            &options.space.constraints(),
-            &control.with_hook(&hook),
-        )?;
+        let map_options = MapOptions::new(&options.limits, &options.space.constraints())?;
+        let map = self.pair_map(n, n, &map_options, &control.with_hook(&hook))?;
         let mut report = self.report(options, None);
         let c = &map.columns;
         report.coarse_candidates = c.valid.iter().filter(|v| **v).count();

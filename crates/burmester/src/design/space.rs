@@ -10,7 +10,7 @@ use nalgebra::Point2;
 
 use crate::design::constraints::check_simple_polygon;
 use crate::design::judge::Judge;
-use crate::design::options::CheckedOptions;
+use crate::design::options::MapOptions;
 use crate::design::{Constraints, DesignLimits};
 use crate::error::{InvalidInput, Result};
 pub(crate) use crate::geom::segment_distance;
@@ -228,7 +228,7 @@ impl Space {
     /// [`DesignLimits::validate`] and of the constraints' numbers.
     pub fn validate(&self, task: &Task, limits: &DesignLimits) -> Result<()> {
         self.pivots.validate()?;
-        Judge::new(task, &CheckedOptions::new(limits, &self.constraints())?)?;
+        Judge::new(task, &MapOptions::new(limits, &self.constraints())?)?;
         Ok(())
     }
 

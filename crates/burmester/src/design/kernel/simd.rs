@@ -1044,7 +1044,7 @@ mod tests {
     use crate::Pose;
     use crate::design::columns::{Columns, Sample};
     use crate::design::judge::Sampler;
-    use crate::design::options::CheckedOptions;
+    use crate::design::options::MapOptions;
     use crate::design::{Constraints, DesignLimits, InputRequirement};
     use crate::geom::{Grid, Viewport};
     use crate::simd::Width;
@@ -1125,7 +1125,7 @@ mod tests {
     }
 
     fn check_with(task: &Task, c0: Point2<f64>, grid: &Grid, limits: &DesignLimits) -> usize {
-        let options = CheckedOptions::new(limits, &Constraints::default()).unwrap();
+        let options = MapOptions::new(limits, &Constraints::default()).unwrap();
         let sampler = Sampler::new(task, &options).unwrap();
         let Ok(driven) = task.dyad_from_center(c0) else {
             return 0;

@@ -5,8 +5,8 @@
 //! [`search`](super), "With a motor", "With a linear actuator").
 
 use super::{Design, DesignOptions, DesignReport, apart, rank_designs, sort_designs};
-use crate::design::Constraints;
 use crate::design::drive::{DriveOptions, best_drive};
+use crate::design::{Constraints, MapOptions};
 use crate::engine::Control;
 use crate::error::{Error, Result};
 use crate::synthesis::Task;
@@ -67,7 +67,7 @@ fn driven_designs(
     motor: &DriveOptions,
     control: &Control<'_>,
 ) -> Result<(Vec<Design>, usize)> {
-    let constraints = drive_constraints(options);
+    let map_options = MapOptions::new(&options.limits, &drive_constraints(options))?;
     attached_designs(all, sep, options.top, control, |d, part| {
         // A slider design is refused with a motor (DesignOptions::validate).
         let Some(linkage) = d.linkage.four_bar() else {
@@ -76,14 +76,7 @@ fn driven_designs(
         if linkage.figures.input_full {
             return Ok(true);
         }
-        match best_drive(
-            linkage,
-            &options.limits,
-            motor,
-            &constraints,
-            options.rank_by,
-            part,
-        ) {
+        match best_drive(linkage, &map_options, motor, options.rank_by, part) {
             Ok(drive) => {
                 d.drive = Some(drive);
                 Ok(true)

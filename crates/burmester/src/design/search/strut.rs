@@ -6,6 +6,7 @@
 use nalgebra::Point2;
 
 use super::{Design, DesignOptions, grid_over};
+use crate::design::MapOptions;
 use crate::design::actuator::{Actuator, ActuatorContext, ActuatorOptions};
 use crate::engine::Control;
 use crate::error::{Error, Result, count_in, finite_point};
@@ -133,17 +134,10 @@ impl ActuatorSearch {
             return Ok(None);
         };
         let grid = grid_over(&self.view(linkage, options), self.samples)?;
-        let constraints = options.space.constraints();
+        let map_options = MapOptions::new(&options.limits, &options.space.constraints())?;
         let mut best: Option<Actuator> = None;
         for q in self.points(linkage) {
-            let ctx = match ActuatorContext::new(
-                linkage,
-                q,
-                &grid,
-                &options.limits,
-                &self.options,
-                &constraints,
-            ) {
+            let ctx = match ActuatorContext::new(linkage, q, &grid, &map_options, &self.options) {
                 Ok(ctx) => ctx,
                 // A point on a fixed pivot, or a linkage without a travel.
                 Err(Error::Degenerate(_) | Error::Drive(_)) => continue,
