@@ -2720,6 +2720,14 @@ class SixBar:
     def _repr_png_(self) -> Optional[bytes]:
         """The picture Jupyter shows (:func:`burmester.plot.sixbar`)."""
 
+# A drive's or drive map's options as pickled: the limits, (swing margin,
+# time ratio), the constraints (base plate, obstacles, link width, travel samples).
+_DriveState = Tuple[
+    DesignLimits,
+    Tuple[float, float],
+    Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+]
+
 @final
 class Drive:
     """A drive for a linkage: the six-bar, the crank angles at the poses and
@@ -2728,10 +2736,8 @@ class Drive:
 
     @staticmethod
     def _from_state(
-        linkage: SynthesizedFourBar, drive_pivot: Point, attachment: Point, limits: DesignLimits,
-        options: Tuple[float, float],
-        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
-        index: Optional[Tuple[int, int]], margin: float, score: float, ranked_by: Optional[str],
+        linkage: SynthesizedFourBar, drive_pivot: Point, attachment: Point, state: _DriveState,
+        ranked: Tuple[Optional[Tuple[int, int]], float, float, Optional[str]],
     ) -> Drive:
         """Rebuilds a drive from its state (for pickling)."""
     def __reduce__(self) -> Tuple[Any, ...]: ...
@@ -2909,9 +2915,7 @@ class DriveMap:
     def __reduce__(self) -> Tuple[Any, ...]: ...
     @staticmethod
     def _from_state(
-        linkage: SynthesizedFourBar, attachment: Point, grid: Grid, limits: DesignLimits,
-        options: Tuple[float, float],
-        constraints: Tuple[Optional[Sequence[Point]], Sequence[Sequence[Point]], float, int],
+        linkage: SynthesizedFourBar, attachment: Point, grid: Grid, state: _DriveState,
         columns: dict[str, Any],
     ) -> DriveMap:
         """Rebuilds a map from its state (for pickling)."""

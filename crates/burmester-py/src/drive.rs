@@ -23,7 +23,9 @@ use crate::geom::{PyGrid, vec2};
 use crate::geom::{grid_alone, grid_map_getters};
 use crate::getters::getters;
 use crate::linkage::{PyFourBar, mode};
-use crate::options::{Keys, Keywords, constraint_state, constraints_of, text_signature};
+use crate::options::{
+    ConstraintState, Keys, Keywords, constraint_state, constraints_of, text_signature,
+};
 use crate::pickle::{Reduced, reduce_to};
 use crate::run::{WATCH_MIN_SAMPLES, run};
 
@@ -306,33 +308,20 @@ fn bits(v: f64) -> u64 {
 impl PyDrive {
     /// Rebuilds a drive from its state (for pickling).
     #[staticmethod]
-    #[allow(clippy::too_many_arguments)]
     fn _from_state(
         linkage: PySynthesizedFourBar,
         drive_pivot: PyPoint,
         attachment: PyPoint,
-        limits: PyDesignLimits,
-        options: (f64, f64),
-        constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
-        index: Option<(usize, usize)>,
-        margin: f64,
-        score: f64,
-        ranked_by: Option<&str>,
+        state: DriveState,
+        ranked: (Option<(usize, usize)>, f64, f64, Option<String>),
     ) -> PyResult<Self> {
-        let options = DriveOptions {
-            swing_margin: options.0,
-            max_time_ratio: options.1,
-        };
-        let constraints = constraints_of(constraints);
-        let map_options = MapOptions::new(&limits.inner, &constraints).py()?;
+        let (map_options, options) = state.options()?;
         let grid = point_grid(drive_pivot.0)?;
         let ctx =
             DriveContext::new(&linkage.inner, attachment.0, &grid, &map_options, &options).py()?;
         let mut d = ctx.drive(drive_pivot.0).py()?;
-        d.index = index;
-        d.margin = margin;
-        d.score = score;
-        d.ranked_by = ranked_by.map(rank).transpose()?;
+        (d.index, d.margin, d.score) = (ranked.0, ranked.1, ranked.2);
+        d.ranked_by = ranked.3.as_deref().map(rank).transpose()?;
         Ok(PyDrive::of(d, linkage.task(), &ctx))
     }
 
@@ -342,13 +331,8 @@ impl PyDrive {
             PySynthesizedFourBar::new(self.task, d.linkage),
             pt(d.drive_pivot),
             pt(d.attachment),
-            PyDesignLimits { inner: self.limits },
-            (self.options.swing_margin, self.options.max_time_ratio),
-            constraint_state(&self.constraints),
-            d.index,
-            d.margin,
-            d.score,
-            d.ranked_by.map(|r| r.as_str()),
+            drive_state(&self.limits, &self.options, &self.constraints),
+            (d.index, d.margin, d.score, d.ranked_by.map(|r| r.as_str())),
         );
         reduce_to::<PyDrive>(py, "_from_state", args)
     }
@@ -664,22 +648,15 @@ impl PyDriveMap {
 
     /// Rebuilds a map from its state (for pickling).
     #[staticmethod]
-    #[allow(clippy::too_many_arguments)]
     fn _from_state(
         py: Python<'_>,
         linkage: PySynthesizedFourBar,
         attachment: PyPoint,
         grid: PyGrid,
-        limits: PyDesignLimits,
-        options: (f64, f64),
-        constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+        state: DriveState,
         columns: &Bound<'_, PyDict>,
     ) -> PyResult<Self> {
-        let options = DriveOptions {
-            swing_margin: options.0,
-            max_time_ratio: options.1,
-        };
-        let map_options = MapOptions::new(&limits.inner, &constraints_of(constraints)).py()?;
+        let (map_options, options) = state.options()?;
         let context = DriveContext::new(
             &linkage.inner,
             attachment.0,
@@ -697,9 +674,7 @@ impl PyDriveMap {
             self.linkage(),
             pt(c.attachment()),
             self.grid(),
-            self.limits(),
-            (c.options().swing_margin, c.options().max_time_ratio),
-            constraint_state(c.constraints()),
+            drive_state(c.limits(), c.options(), c.constraints()),
             self.column_dict(py)?,
         );
         reduce_to::<PyDriveMap>(py, "_from_state", args)
@@ -950,4 +925,40 @@ pub(crate) fn unit_time_ratio_crank_rocker(
     )
     .py()?;
     Ok((d.ground, d.crank, d.coupler, d.rocker))
+}
+
+/// A drive context's options as plain data (for pickling a drive or a drive
+/// map): the limits, the drive's options (swing margin, time ratio) and the
+/// constraints, written by [`drive_state`].
+#[derive(FromPyObject)]
+struct DriveState(
+    PyDesignLimits,
+    (f64, f64),
+    (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
+);
+
+impl DriveState {
+    /// The checked map options and the drive's options.
+    fn options(self) -> PyResult<(MapOptions, DriveOptions)> {
+        let DriveState(limits, (swing_margin, max_time_ratio), constraints) = self;
+        let map_options = MapOptions::new(&limits.inner, &constraints_of(constraints)).py()?;
+        let options = DriveOptions {
+            swing_margin,
+            max_time_ratio,
+        };
+        Ok((map_options, options))
+    }
+}
+
+/// What [`DriveState`] reads back.
+fn drive_state(
+    limits: &DesignLimits,
+    options: &DriveOptions,
+    constraints: &Constraints,
+) -> (PyDesignLimits, (f64, f64), ConstraintState) {
+    (
+        PyDesignLimits { inner: *limits },
+        (options.swing_margin, options.max_time_ratio),
+        constraint_state(constraints),
+    )
 }
