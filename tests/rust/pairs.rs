@@ -370,6 +370,18 @@ fn a_cancelled_map_stops_with_cancelled() {
 }
 
 #[test]
+fn a_cancelled_map_stops_while_it_samples_the_curves() {
+    // The driving axis at its documented maximum: ten million dyads take
+    // seconds. A cancelled map stops before them, in the curve's samples
+    // (it computed them all and stopped at the first row of the map before).
+    let task = example_task();
+    let stop = AtomicBool::new(true);
+    let n = Task::MAX_PAIR_SAMPLES;
+    let e = map_with(&task, n, 2, &Control::new().with_cancel(&stop)).unwrap_err();
+    assert_eq!(e, Error::Cancelled { done: 0, total: n });
+}
+
+#[test]
 fn a_context_maps_into_reused_columns_bit_for_bit() {
     let task = example_task();
     let fresh = map(&task, 37, 23);

@@ -100,6 +100,15 @@ impl<'a> Control<'a> {
         }
     }
 
+    /// The same cancel flag without the progress hook (for a stage of a
+    /// longer computation whose progress is not reported).
+    pub(crate) fn cancel_only(&self) -> Control<'a> {
+        Control {
+            cancel: self.cancel,
+            progress: None,
+        }
+    }
+
     /// The cancel flag, if any (a computation made of parts passes it on to
     /// each part's own control).
     pub(crate) fn cancel_flag(&self) -> Option<&'a AtomicBool> {

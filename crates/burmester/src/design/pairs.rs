@@ -181,7 +181,9 @@ impl Task {
         options: &MapOptions,
         control: &Control<'_>,
     ) -> Result<PairMap> {
-        let context = self.pair_context(n_driving, n_driven, options)?;
+        // The dyads follow the cancel flag; the progress is the map's rows.
+        let context =
+            self.pair_context_with(n_driving, n_driven, options, &control.cancel_only())?;
         let mut columns = Columns::for_overwrite(context.grid.len())?;
         context.fill(options, columns.as_out(), control)?;
         Ok(PairMap { context, columns })
