@@ -2225,7 +2225,7 @@ fn check_five(f: &FivePositions) {
     }
     for s in f.sliders() {
         finite_pt("slider circle point", s.circle);
-        let p = five_count::slider_positions(f, &s);
+        let p = five_count::slider_positions(f, s);
         let span = p.iter().map(|q| (q - p[0]).norm()).fold(size, f64::max);
         let c = coords.max(s.circle.coords.norm());
         for q in &p[1..] {

@@ -2337,7 +2337,7 @@ fn issue24_degenerate_five_pose_tasks_say_so_in_every_frame() {
 /// normal to its direction.
 fn check_slider(five: &FivePositions, poses: &[Pose]) {
     for s in five.sliders() {
-        let p = slider_positions(five, &s);
+        let p = slider_positions(five, s);
         for q in &p[1..] {
             let off = (q - p[0]).dot(&s.direction);
             assert!(off.abs() <= 1e-9 * five.size(), "{s:?}: {off}");
@@ -2357,7 +2357,7 @@ fn check_five_sound(five: &FivePositions, poses: &[Pose]) -> Result<(), TestCase
         prop_assert!(spread(poses, d) <= 1e-8, "{:?}: {}", d, spread(poses, d));
     }
     for s in five.sliders() {
-        let p = slider_positions(five, &s);
+        let p = slider_positions(five, s);
         let span = p.iter().map(|q| (q - p[0]).norm()).fold(0.0, f64::max);
         for q in &p[1..] {
             prop_assert!(

@@ -6,7 +6,7 @@ use nalgebra::Point2;
 use super::split::split_by;
 use super::{FourPositions, POLL_SAMPLES};
 use crate::engine::Control;
-use crate::error::Result;
+use crate::error::{Result, try_push};
 use crate::geom::cubic::roots::quadratic_roots;
 use crate::geom::{Cubic, Line, LocalFrame, PerPose, Viewport, normalized};
 use crate::synthesis::branch::FilemonLines;
@@ -424,6 +424,9 @@ fn change_between(
     if la { a } else { b }
 }
 
+/// What the free arcs' vertices are called where they cannot be allocated.
+const VERTICES: &str = "free arcs' vertices";
+
 /// The traced polylines, each vertex that is not a mark classified by
 /// `free` (once: the labels go on with the vertices), with the class
 /// changes that a chord next to a mark (or between vertices of different
@@ -458,7 +461,7 @@ fn resolve_changes(
     lines
         .iter()
         .map(|line| {
-            let mut out = Vec::with_capacity(line.len());
+            let mut out = super::try_vec_of::<Vertex>(VERTICES, line.len())?;
             let mut prev: Option<Vertex> = None;
             for &(at, mark) in line {
                 poll.step()?;
@@ -488,23 +491,35 @@ fn resolve_changes(
                                     poll.check()?;
                                 }
                                 if differs_a {
-                                    out.push(change(change_between(curve, reach, a, !lm, q, free)));
+                                    try_push(
+                                        &mut out,
+                                        VERTICES,
+                                        change(change_between(curve, reach, a, !lm, q, free)),
+                                    )?;
                                 }
                                 if differs_a || differs_b {
-                                    out.push(Vertex {
-                                        at: q,
-                                        mark: None,
-                                        free: Some(lm),
-                                    });
+                                    try_push(
+                                        &mut out,
+                                        VERTICES,
+                                        Vertex {
+                                            at: q,
+                                            mark: None,
+                                            free: Some(lm),
+                                        },
+                                    )?;
                                 }
                                 if differs_b {
-                                    out.push(change(change_between(curve, reach, q, lm, b, free)));
+                                    try_push(
+                                        &mut out,
+                                        VERTICES,
+                                        change(change_between(curve, reach, q, lm, b, free)),
+                                    )?;
                                 }
                             }
                         }
                     }
                 }
-                out.push(v);
+                try_push(&mut out, VERTICES, v)?;
                 prev = Some(v);
             }
             Ok(out)
