@@ -1988,9 +1988,17 @@ fn check_free_arcs(four: &FourPositions, arcs: &FilemonArcs, vp: &Viewport) {
     let diag = vp.diagonal();
     for circle in [false, true] {
         let (lines, curve) = if circle {
-            (arcs.free_circle_arcs(vp), four.circle_point_curve())
+            (
+                arcs.free_circle_arcs(vp)
+                    .expect("free arcs (no cancel flag: out of memory only)"),
+                four.circle_point_curve(),
+            )
         } else {
-            (arcs.free_center_arcs(vp), four.center_point_curve())
+            (
+                arcs.free_center_arcs(vp)
+                    .expect("free arcs (no cancel flag: out of memory only)"),
+                four.center_point_curve(),
+            )
         };
         let mut marks: Vec<Point2<f64>> = arcs
             .arc_ends()

@@ -802,7 +802,7 @@ fn check_branch(four: &FourPositions, driven: &Dyad, samples: usize) -> Result<(
             );
         }
     }
-    for arc in arcs.free_circle_arcs(&view) {
+    for arc in arcs.free_circle_arcs(&view).unwrap() {
         for p in &arc[1..arc.len() - 1] {
             prop_assert_eq!(arcs.classify_circle_point(*p), Branch::Free);
         }
@@ -1701,9 +1701,15 @@ fn check_free_arcs_dense(
     circle: bool,
 ) -> Result<usize, TestCaseError> {
     let (arcs, curve) = if circle {
-        (fa.free_circle_arcs(view), four.circle_point_curve())
+        (
+            fa.free_circle_arcs(view).unwrap(),
+            four.circle_point_curve(),
+        )
     } else {
-        (fa.free_center_arcs(view), four.center_point_curve())
+        (
+            fa.free_center_arcs(view).unwrap(),
+            four.center_point_curve(),
+        )
     };
     let class = |p: Point2<f64>| -> Option<Branch> {
         if circle {
@@ -1790,7 +1796,7 @@ fn check_free_arcs_by_driving(
 ) -> Result<(), TestCaseError> {
     let driven = fa.driven().crank("the test").unwrap();
     let s = four.size();
-    let arcs = fa.free_center_arcs(view);
+    let arcs = fa.free_center_arcs(view).unwrap();
     let fine = four.center_point_curve().polylines(view);
     let diag = (view.xmax - view.xmin).hypot(view.ymax - view.ymin);
     for p in fine.iter().flatten().step_by(5) {
@@ -1851,7 +1857,7 @@ fn issue24_free_arcs_next_to_c0_are_the_same_in_every_view() {
     let a = four.dyad_from_center(m).unwrap();
     assert!(!four.drive(&a, &driven).unwrap().is_branch_free());
     for view in [&big, &small] {
-        let arcs = fa.free_center_arcs(view);
+        let arcs = fa.free_center_arcs(view).unwrap();
         assert!(!arcs.is_empty());
         assert!(poly_dist(&arcs, m) > 1e-3, "{view:?}");
         // The arc next to C0 starts at the arc end, in both views.
@@ -2899,7 +2905,7 @@ fn issue24_the_driven_circle_point_is_a_boundary() {
         assert_eq!(arcs.classify_circle_point(c1), Branch::Boundary);
         let h = 2.0 * size;
         let vp = Viewport::new(c1.x - h, c1.x + h, c1.y - h, c1.y + h).unwrap();
-        for l in arcs.free_circle_arcs(&vp) {
+        for l in arcs.free_circle_arcs(&vp).unwrap() {
             for p in &l[1..l.len() - 1] {
                 assert!(
                     (p - c1).norm() > 1e-12 * size,
@@ -3055,7 +3061,7 @@ fn issue24_a_free_arc_never_ends_mid_chord_in_a_defective_stretch() {
                     .iter()
                     .any(|e| (e.circle - p).norm() <= 1e-6 * diag)
         };
-        for l in arcs.free_circle_arcs(&vp) {
+        for l in arcs.free_circle_arcs(&vp).unwrap() {
             for w in l.windows(2) {
                 for k in 0..=4 {
                     let m = w[0] + (w[1] - w[0]) * (k as f64 / 4.0);
@@ -3830,6 +3836,7 @@ fn issue24_a_line_of_centers_with_one_circle_point_has_its_exact_free_stretch() 
         // y from -100 to 0): from the exact stretch's one end to the other.
         let on_line: Vec<f64> = fa
             .free_center_arcs(view)
+            .unwrap()
             .iter()
             .flatten()
             .filter(|p| (p.x - 3.2998).abs() < 1e-3 && (-100.0..0.0).contains(&p.y))

@@ -591,7 +591,7 @@ fn four_poses_arcs_agree_with_driving_the_slider_crank() {
             }
         }
         // The free arcs' points are free.
-        for arc in arcs.free_center_arcs(&vp) {
+        for arc in arcs.free_center_arcs(&vp).unwrap() {
             for p in arc.iter().skip(1).step_by(5) {
                 if let Ok(b) = arcs.classify_center_point(*p) {
                     assert_ne!(b, Branch::Defective, "{p}");

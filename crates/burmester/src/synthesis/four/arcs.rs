@@ -247,10 +247,13 @@ impl FilemonArcs {
     /// centers whose circle points are nearly one point). The arcs are the
     /// same in every view: the arcs of a smaller view are those of a larger
     /// one, clipped.
-    pub fn free_circle_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        // Without a cancel flag it never fails.
+    ///
+    /// # Errors
+    ///
+    /// [`crate::Error::OutOfMemory`] when the labelled vertices cannot be
+    /// allocated.
+    pub fn free_circle_arcs(&self, viewport: &Viewport) -> Result<Vec<Vec<Point2<f64>>>> {
         self.free_arcs_with(viewport, true, &Control::new())
-            .unwrap_or_default()
     }
 
     /// The branch-free arcs of the center-point curve in view (the driving
@@ -259,10 +262,12 @@ impl FilemonArcs {
     /// the exact arc ends and `C0` (never free; a slider has none) as the
     /// vertices where the class may change, each traced point classified by
     /// its circle point.
-    pub fn free_center_arcs(&self, viewport: &Viewport) -> Vec<Vec<Point2<f64>>> {
-        // Without a cancel flag it never fails.
+    ///
+    /// # Errors
+    ///
+    /// As [`free_circle_arcs`](Self::free_circle_arcs).
+    pub fn free_center_arcs(&self, viewport: &Viewport) -> Result<Vec<Vec<Point2<f64>>>> {
         self.free_arcs_with(viewport, false, &Control::new())
-            .unwrap_or_default()
     }
 
     /// [`free_circle_arcs`](Self::free_circle_arcs) (where `circle`) or
@@ -273,6 +278,7 @@ impl FilemonArcs {
     ///
     /// # Errors
     ///
+    /// As [`free_circle_arcs`](Self::free_circle_arcs);
     /// [`crate::Error::Cancelled`] when the flag is set.
     pub fn free_arcs_with(
         &self,
