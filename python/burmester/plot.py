@@ -2290,10 +2290,7 @@ def inverted_slider_crank(
             ax.set_title(f"Inverted slider-crank: crank {format_length(q.crank, units)}, ground "
                          f"{format_length(q.ground, units)}, offset {format_length(q.offset, units)}, "
                          f"stroke {format_length(q.stroke, units)}{swing}", fontsize=10)
-    _around_data(ax, labels, units)
-    if legend:
-        _legend(ax)
-    return ax
+    return _framed(ax, labels, legend, units)
 
 
 def slider_dyad(dyad: burmester.SliderDyad, task: Optional[Task] = None, *, labels: bool = True,
