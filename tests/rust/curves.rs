@@ -4025,3 +4025,95 @@ fn issue24_free_arcs_stop_when_cancelled() {
         );
     }
 }
+
+/// Issue 24 (curv37, class A, `fuzz/open/curves/...-8166567f`, `-ff0c767c`,
+/// `-ccfd9a3e`): the circle-point trace of each task in the fuzz check's
+/// view, every vertex taken back by `center_point` (never `OffCurve`). The
+/// refused vertices were edge crossings: the crossing, found in the
+/// curve's local frame, came back to the plane an ulp outside the view's
+/// edge, so the settling took it for an inner point and left it where it
+/// was (`1.53e-18` off the exact curve against a tolerance of `8.6e-19`
+/// in a task of `1e-10`: `fuzz/reference/open_curves.py`).
+#[test]
+fn issue24_edge_crossings_are_settled_on_the_curve() {
+    type Case = ([(f64, f64, f64); 4], [f64; 4]);
+    let cases: [Case; 3] = [
+        (
+            [
+                (-9.36796875e-11, -3.9062500000000004e-24, 0.00803125),
+                (-1.00390625e-21, -9.90078125e-20, -3.90625),
+                (
+                    -3.9062500000000004e-24,
+                    -3.9062500000000004e-24,
+                    0.00999609375,
+                ),
+                (-1.00390625e-21, -9.90078125e-20, -0.9453125),
+            ],
+            [
+                -8.139118066402761e-10,
+                7.669329199109081e-10,
+                -7.904256210728244e-10,
+                7.904191054783599e-10,
+            ],
+        ),
+        (
+            [
+                (45.0, -0.015625, -0.205),
+                (-1910000000000000.0, 63.0, -96.0),
+                (65.0, 86240.0, 38.0),
+                (86240.0, -174.17000000000002, 1.7406999999999998e-5),
+            ],
+            [
+                -4.234718635805716e17,
+                4.225984489321785e17,
+                -4.2394305908839846e17,
+                4.221272534243516e17,
+            ],
+        ),
+        (
+            [
+                (3.112109375e-8, -3.5156250000000004e-5, 23.0),
+                (0.0, 1.571640625e-7, -8.984375000000001e-10),
+                (-4.0007812500000005e-8, -6.89375e-8, 0.0675546875),
+                (31433.59375, -76.0, 0.0),
+            ],
+            [
+                -69155.60879098617,
+                84820.33564295432,
+                -77033.00723725096,
+                76942.93719668953,
+            ],
+        ),
+    ];
+    for (k, (poses, v)) in cases.into_iter().enumerate() {
+        let poses = poses.map(|(x, y, a)| Pose::new(x, y, a));
+        let four = FourPositions::new(&poses).unwrap();
+        let vp = Viewport::new(v[0], v[1], v[2], v[3]).unwrap();
+        for circle in [false, true] {
+            let curve = if circle {
+                four.circle_point_curve()
+            } else {
+                four.center_point_curve()
+            };
+            let mut count = 0;
+            for p in curve.polylines(&vp).into_iter().flatten() {
+                count += 1;
+                assert!(vp.contains(p), "case {k}: {p} outside {vp:?}");
+                let other = if circle {
+                    four.center_point(p)
+                } else {
+                    four.circle_point(p)
+                };
+                assert!(
+                    !matches!(
+                        other,
+                        Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
+                    ),
+                    "case {k} (circle plane {circle}): traced {p} refused: {other:?}"
+                );
+            }
+            // (The refused vertices were in the circle plane.)
+            assert!(!circle || count >= 2, "case {k}: {count} vertices");
+        }
+    }
+}

@@ -287,6 +287,15 @@ fn settle_polyline(
             continue;
         }
         let inner = closed || (i > 0 && i + 1 < n);
+        // A crossing found in the local frame comes back to the plane an
+        // ulp or two off the view's edge (outside it, or inside but no
+        // longer on the edge for the settling): an end that close is put
+        // on the edge; every vertex inside the view.
+        let p = if inner { p } else { onto_edge(p, viewport) };
+        let p = Point2::new(
+            p.x.clamp(viewport.xmin, viewport.xmax),
+            p.y.clamp(viewport.ymin, viewport.ymax),
+        );
         let across = inner.then(|| {
             let chord = line[(i + 1) % n].0 - line[(i + n - 1) % n].0;
             Vector2::new(-chord.y, chord.x)
@@ -301,6 +310,25 @@ fn settle_polyline(
         out.push(out[0]);
     }
     out
+}
+
+/// `p` with a coordinate within 16 ulps (of the view's extent and place)
+/// of an edge of the viewport put on that edge.
+fn onto_edge(p: Point2<f64>, viewport: &Viewport) -> Point2<f64> {
+    let snap = |v: f64, lo: f64, hi: f64| {
+        let near = 16.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(hi - lo);
+        if (v - lo).abs() <= near {
+            lo
+        } else if (v - hi).abs() <= near {
+            hi
+        } else {
+            v
+        }
+    };
+    Point2::new(
+        snap(p.x, viewport.xmin, viewport.xmax),
+        snap(p.y, viewport.ymin, viewport.ymax),
+    )
 }
 
 /// A traced vertex settled onto the curve: Newton steps on the curve's own
