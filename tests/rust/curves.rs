@@ -4117,3 +4117,40 @@ fn issue24_edge_crossings_are_settled_on_the_curve() {
         }
     }
 }
+
+/// Issue 24 (curv37): the trace inside the free arcs reads the cancel flag.
+/// On the slow input the center-plane trace places the most vertices a
+/// trace may (its budget, about a million: seconds in a debug build, a
+/// fifth of a second in release), which it did before reading the flag
+/// again. A flag set 30 ms into the call now stops it inside the trace
+/// (`Cancelled`, `0` of `0`: no vertex classified yet; before, the first
+/// check after the trace reported the classified vertices) within a
+/// fraction of a second.
+#[test]
+fn issue24_a_cancelled_trace_stops_inside_the_trace() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::time::{Duration, Instant};
+
+    use burmester::Control;
+
+    let (_, fa, view) = issue24_slow_free_arcs();
+    let stop = AtomicBool::new(false);
+    let control = Control::new().with_cancel(&stop);
+    let (r, set, back) = std::thread::scope(|s| {
+        let setter = s.spawn(|| {
+            std::thread::sleep(Duration::from_millis(30));
+            stop.store(true, Ordering::Relaxed);
+            Instant::now()
+        });
+        let r = fa.free_arcs_with(&view, false, &control);
+        let back = Instant::now();
+        (r, setter.join().unwrap(), back)
+    });
+    let latency = back.saturating_duration_since(set);
+    eprintln!("returned {latency:?} after the flag was set");
+    assert!(
+        matches!(r, Err(Error::Cancelled { done: 0, total: 0 })),
+        "{r:?}"
+    );
+    assert!(latency < Duration::from_millis(500), "{latency:?}");
+}

@@ -2,6 +2,7 @@
 //! the docs of [`crate::geom::cubic`]).
 
 use core::f64::consts::PI;
+use core::sync::atomic::{AtomicBool, Ordering};
 
 use nalgebra::{Point2, Vector2};
 
@@ -219,8 +220,17 @@ impl Loop {
 /// samples): a bound on the work for any input.
 const MAX_VERTICES: usize = 1 << 20;
 
+/// A trace with a cancel flag reads it every this many vertices placed or
+/// settled (a power of two; a few milliseconds of work at most).
+const CANCEL_POLL: usize = 4096;
+
+/// Whether `cancel` is set.
+fn cancelled(cancel: Option<&AtomicBool>) -> bool {
+    cancel.is_some_and(|c| c.load(Ordering::Relaxed))
+}
+
 /// The local viewport and the sampling parameters.
-struct View {
+struct View<'c> {
     lo: Vector2<f64>,
     hi: Vector2<f64>,
     radius: f64,
@@ -228,9 +238,12 @@ struct View {
     max_chord: f64,
     /// Vertices left to place (a bound on the work, whatever the input).
     budget: core::cell::Cell<usize>,
+    /// A cancel flag, read every [`CANCEL_POLL`] vertices placed: once it
+    /// is set the budget is spent (the trace ends at once, unrefined).
+    cancel: Option<&'c AtomicBool>,
 }
 
-impl View {
+impl View<'_> {
     fn inside(&self, p: Vector2<f64>) -> bool {
         p.x >= self.lo.x && p.x <= self.hi.x && p.y >= self.lo.y && p.y <= self.hi.y
     }
@@ -241,11 +254,12 @@ impl View {
 type Marked = (Vector2<f64>, Option<usize>);
 
 pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace {
-    let (mut trace, _) = trace_impl(cubic, viewport, tol, &[]);
+    let (mut trace, _) = trace_impl(cubic, viewport, tol, &[], None);
     let reach = SETTLE_REACH * trace.tolerance;
     for c in &mut trace.components {
         for l in &mut c.polylines {
-            let settled = settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach);
+            let settled =
+                settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach, None);
             *l = settled.into_iter().map(|(p, _)| p).collect();
         }
         c.polylines.retain(|l| l.len() >= 2);
@@ -271,6 +285,7 @@ fn settle_polyline(
     line: impl Iterator<Item = (Point2<f64>, Option<usize>)>,
     viewport: &Viewport,
     reach: f64,
+    cancel: Option<&AtomicBool>,
 ) -> Vec<(Point2<f64>, Option<usize>)> {
     let mut line: Vec<(Point2<f64>, Option<usize>)> = line.collect();
     // A closed polyline (last point the first) is a cycle: every vertex is
@@ -282,6 +297,11 @@ fn settle_polyline(
     let n = line.len();
     let mut out = Vec::with_capacity(n + 1);
     for (i, &(p, mark)) in line.iter().enumerate() {
+        // Cancelled: the rest unsettled (the caller answers `Cancelled`).
+        if i % CANCEL_POLL == CANCEL_POLL - 1 && cancelled(cancel) {
+            out.extend_from_slice(&line[i..]);
+            return out;
+        }
         if mark.is_some() {
             out.push((p, mark));
             continue;
@@ -434,14 +454,24 @@ fn settle(
 /// mark it is. A mark that cannot be placed on a loop (a singular point,
 /// a curve traced as a line and a conic) is inserted into the nearest
 /// chord within the chord tolerance, if any.
+///
+/// # Errors
+///
+/// [`crate::Error::Cancelled`] (`0` of `0`: no vertex is given) when
+/// `cancel` is set during the trace, read every [`CANCEL_POLL`] vertices.
 pub(super) fn trace_marked(
     cubic: &Cubic,
     viewport: &Viewport,
     tol: f64,
     marks: &[Point2<f64>],
-) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
+    cancel: Option<&AtomicBool>,
+) -> crate::error::Result<Vec<super::MarkedPolyline>> {
+    let stop = || crate::Error::Cancelled { done: 0, total: 0 };
     let local: Vec<Vector2<f64>> = marks.iter().map(|m| cubic.local_of(*m)).collect();
-    let (trace, marked) = trace_impl(cubic, viewport, tol, &local);
+    let (trace, marked) = trace_impl(cubic, viewport, tol, &local, cancel);
+    if cancelled(cancel) {
+        return Err(stop());
+    }
     let reach = SETTLE_REACH * trace.tolerance;
     let mut out: Vec<Vec<(Point2<f64>, Option<usize>)>> = match marked {
         Some(lines) => lines
@@ -491,10 +521,15 @@ pub(super) fn trace_marked(
             }
         }
     }
-    out.into_iter()
-        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach))
+    let out: Vec<_> = out
+        .into_iter()
+        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach, cancel))
         .filter(|l| l.len() >= 2)
-        .collect()
+        .collect();
+    if cancelled(cancel) {
+        return Err(stop());
+    }
+    Ok(out)
 }
 
 /// [`trace`], and with marks the polylines with the marks as vertices
@@ -505,6 +540,7 @@ fn trace_impl(
     viewport: &Viewport,
     tol: f64,
     marks: &[Vector2<f64>],
+    cancel: Option<&AtomicBool>,
 ) -> (CubicTrace, Option<Vec<Vec<Marked>>>) {
     let empty = CubicTrace {
         components: Vec::new(),
@@ -530,6 +566,7 @@ fn trace_impl(
         tol: (tol / cubic.scale).max(2e-10 * radius),
         max_chord: 0.1 * radius,
         budget: core::cell::Cell::new(MAX_VERTICES),
+        cancel,
     };
     let Some(q) = choose_point(cubic, center, radius) else {
         return empty;
@@ -1101,7 +1138,11 @@ fn refine(
         }
         _ => true,
     };
-    let budget = view.budget.get();
+    let mut budget = view.budget.get();
+    if budget % CANCEL_POLL == 0 && budget > 0 && cancelled(view.cancel) {
+        budget = 0;
+        view.budget.set(0);
+    }
     if split && depth < MAX_DEPTH && lm > la && lm < lb && budget > 0 {
         view.budget.set(budget - 1);
         refine(point, a, (lm, pm), depth + 1, view, current, out);
