@@ -310,12 +310,8 @@ fn settle_polyline(
         // A crossing found in the local frame comes back to the plane an
         // ulp or two off the view's edge (outside it, or inside but no
         // longer on the edge for the settling): an end that close is put
-        // on the edge; every vertex inside the view.
+        // on the edge.
         let p = if inner { p } else { onto_edge(p, viewport) };
-        let p = Point2::new(
-            p.x.clamp(viewport.xmin, viewport.xmax),
-            p.y.clamp(viewport.ymin, viewport.ymax),
-        );
         let across = inner.then(|| {
             let chord = line[(i + 1) % n].0 - line[(i + n - 1) % n].0;
             Vector2::new(-chord.y, chord.x)
