@@ -1169,6 +1169,87 @@ fn refine(
 mod tests {
     use super::*;
 
+    /// The center-point cubic of `fuzz/open/curves/slow-1.5-s-free-arcs-
+    /// was-0.9-s-454464bc` as the plain expansion gave it (a conic whose
+    /// cubic terms are rounding, `4e-16`: its trace in this view places the
+    /// whole budget, 1,048,641 vertices, 12 s in a debug build), and that
+    /// view.
+    fn budget_cubic() -> (Cubic, Viewport) {
+        let c = [
+            -0.04316929184879281,
+            -0.05190961390288428,
+            0.32518737206245146,
+            1.0,
+            0.319259715244508,
+            -1.0,
+            4.298998941132615e-16,
+            2.739185166031401e-16,
+            3.6522468880418675e-16,
+            0.0,
+        ];
+        let cubic = Cubic::from_local(
+            c,
+            Point2::new(94.18645789827298, 78.12500000555079),
+            87.56070436370925,
+        );
+        let view = Viewport::new(
+            73.24133963475096,
+            74.99255372202514,
+            71.40761712842162,
+            73.1588312156958,
+        )
+        .unwrap();
+        (cubic, view)
+    }
+
+    /// A trace at the most vertices a trace may place stops on its cancel
+    /// flag: set before the call, at once; set 20 ms into it, within a
+    /// fraction of a second (it placed them all before, 12 s in a debug
+    /// build), `Cancelled` with no vertex given. In release the whole
+    /// trace is measured too (a fifth of a second): the budget, used up.
+    #[test]
+    fn a_trace_at_its_budget_stops_when_cancelled() {
+        use std::time::{Duration, Instant};
+        let (cubic, view) = budget_cubic();
+        let tol = Cubic::default_tolerance(&view);
+        let set = AtomicBool::new(true);
+        let t0 = Instant::now();
+        let r = trace_marked(&cubic, &view, tol, &[], Some(&set));
+        assert!(
+            matches!(r, Err(crate::Error::Cancelled { done: 0, total: 0 })),
+            "{r:?}"
+        );
+        assert!(
+            t0.elapsed() < Duration::from_millis(500),
+            "{:?}",
+            t0.elapsed()
+        );
+        let stop = AtomicBool::new(false);
+        let (r, at, back) = std::thread::scope(|s| {
+            let setter = s.spawn(|| {
+                std::thread::sleep(Duration::from_millis(20));
+                stop.store(true, Ordering::Relaxed);
+                Instant::now()
+            });
+            let r = trace_marked(&cubic, &view, tol, &[], Some(&stop));
+            (r, setter.join().unwrap(), Instant::now())
+        });
+        assert!(
+            matches!(r, Err(crate::Error::Cancelled { done: 0, total: 0 })),
+            "{r:?}"
+        );
+        let latency = back.saturating_duration_since(at);
+        assert!(latency < Duration::from_millis(500), "{latency:?}");
+        if !cfg!(debug_assertions) {
+            let n: usize = trace_marked(&cubic, &view, tol, &[], None)
+                .unwrap()
+                .iter()
+                .map(Vec::len)
+                .sum();
+            assert!(n > MAX_VERTICES, "{n} vertices: not at the budget");
+        }
+    }
+
     fn vp(h: f64) -> Viewport {
         Viewport::new(-h, h, -h, h).unwrap()
     }
