@@ -3540,18 +3540,7 @@ fn issue24_traced_vertices_are_settled_on_the_curve() {
             let d = curve.distance_estimate(p);
             worst = worst.max(d);
             assert!(d <= bound * four.size(), "case {k}: {p} is {d} off");
-            let other = if circle {
-                four.center_point(p)
-            } else {
-                four.circle_point(p)
-            };
-            assert!(
-                !matches!(
-                    other,
-                    Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
-                ),
-                "case {k}: traced {p} refused: {other:?}"
-            );
+            let other = taken_back(&four, p, circle, &format!("case {k}"));
             if k == 0 {
                 let z = other.unwrap();
                 let r: Vec<f64> = (1..=4)
@@ -3567,6 +3556,30 @@ fn issue24_traced_vertices_are_settled_on_the_curve() {
         assert!(count > 50, "case {k}: {count} vertices");
         eprintln!("case {k}: {count} vertices, worst first-order distance {worst:e}");
     }
+}
+
+/// The other plane's point of a traced point `p` of the center-point curve
+/// (or, `circle`, of the circle-point curve), asserted not refused as off
+/// the curve.
+fn taken_back(
+    four: &FourPositions,
+    p: Point2<f64>,
+    circle: bool,
+    what: &str,
+) -> Result<Point2<f64>, Error> {
+    let other = if circle {
+        four.center_point(p)
+    } else {
+        four.circle_point(p)
+    };
+    assert!(
+        !matches!(
+            other,
+            Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
+        ),
+        "{what}: traced {p} refused: {other:?}"
+    );
+    other
 }
 
 /// Poses from `(x, y, angle)`.
@@ -4099,17 +4112,11 @@ fn issue24_edge_crossings_are_settled_on_the_curve() {
             for p in curve.polylines(&vp).into_iter().flatten() {
                 count += 1;
                 assert!(vp.contains(p), "case {k}: {p} outside {vp:?}");
-                let other = if circle {
-                    four.center_point(p)
-                } else {
-                    four.circle_point(p)
-                };
-                assert!(
-                    !matches!(
-                        other,
-                        Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
-                    ),
-                    "case {k} (circle plane {circle}): traced {p} refused: {other:?}"
+                taken_back(
+                    &four,
+                    p,
+                    circle,
+                    &format!("case {k} (circle plane {circle})"),
                 );
             }
             // (The refused vertices were in the circle plane.)
