@@ -4112,7 +4112,7 @@ fn issue24_edge_crossings_are_settled_on_the_curve() {
             for p in curve.polylines(&vp).into_iter().flatten() {
                 count += 1;
                 assert!(vp.contains(p), "case {k}: {p} outside {vp:?}");
-                taken_back(
+                let _ = taken_back(
                     &four,
                     p,
                     circle,
