@@ -3540,18 +3540,7 @@ fn issue24_traced_vertices_are_settled_on_the_curve() {
             let d = curve.distance_estimate(p);
             worst = worst.max(d);
             assert!(d <= bound * four.size(), "case {k}: {p} is {d} off");
-            let other = if circle {
-                four.center_point(p)
-            } else {
-                four.circle_point(p)
-            };
-            assert!(
-                !matches!(
-                    other,
-                    Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
-                ),
-                "case {k}: traced {p} refused: {other:?}"
-            );
+            let other = taken_back(&four, p, circle, &format!("case {k}"));
             if k == 0 {
                 let z = other.unwrap();
                 let r: Vec<f64> = (1..=4)
@@ -3567,6 +3556,30 @@ fn issue24_traced_vertices_are_settled_on_the_curve() {
         assert!(count > 50, "case {k}: {count} vertices");
         eprintln!("case {k}: {count} vertices, worst first-order distance {worst:e}");
     }
+}
+
+/// The other plane's point of a traced point `p` of the center-point curve
+/// (or, `circle`, of the circle-point curve), asserted not refused as off
+/// the curve.
+fn taken_back(
+    four: &FourPositions,
+    p: Point2<f64>,
+    circle: bool,
+    what: &str,
+) -> Result<Point2<f64>, Error> {
+    let other = if circle {
+        four.center_point(p)
+    } else {
+        four.circle_point(p)
+    };
+    assert!(
+        !matches!(
+            other,
+            Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))
+        ),
+        "{what}: traced {p} refused: {other:?}"
+    );
+    other
 }
 
 /// Poses from `(x, y, angle)`.
@@ -4024,4 +4037,127 @@ fn issue24_free_arcs_stop_when_cancelled() {
             "{r:?}"
         );
     }
+}
+
+/// Issue 24 (curv37, class A, `fuzz/open/curves/...-8166567f`, `-ff0c767c`,
+/// `-ccfd9a3e`): the circle-point trace of each task in the fuzz check's
+/// view, every vertex taken back by `center_point` (never `OffCurve`). The
+/// refused vertices were edge crossings: the crossing, found in the
+/// curve's local frame, came back to the plane an ulp outside the view's
+/// edge, so the settling took it for an inner point and left it where it
+/// was (`1.53e-18` off the exact curve against a tolerance of `8.6e-19`
+/// in a task of `1e-10`: `fuzz/reference/open_curves.py`).
+#[test]
+fn issue24_edge_crossings_are_settled_on_the_curve() {
+    type Case = ([(f64, f64, f64); 4], [f64; 4]);
+    let cases: [Case; 3] = [
+        (
+            [
+                (-9.36796875e-11, -3.9062500000000004e-24, 0.00803125),
+                (-1.00390625e-21, -9.90078125e-20, -3.90625),
+                (
+                    -3.9062500000000004e-24,
+                    -3.9062500000000004e-24,
+                    0.00999609375,
+                ),
+                (-1.00390625e-21, -9.90078125e-20, -0.9453125),
+            ],
+            [
+                -8.139118066402761e-10,
+                7.669329199109081e-10,
+                -7.904256210728244e-10,
+                7.904191054783599e-10,
+            ],
+        ),
+        (
+            [
+                (45.0, -0.015625, -0.205),
+                (-1910000000000000.0, 63.0, -96.0),
+                (65.0, 86240.0, 38.0),
+                (86240.0, -174.17000000000002, 1.7406999999999998e-5),
+            ],
+            [
+                -4.234718635805716e17,
+                4.225984489321785e17,
+                -4.2394305908839846e17,
+                4.221272534243516e17,
+            ],
+        ),
+        (
+            [
+                (3.112109375e-8, -3.5156250000000004e-5, 23.0),
+                (0.0, 1.571640625e-7, -8.984375000000001e-10),
+                (-4.0007812500000005e-8, -6.89375e-8, 0.0675546875),
+                (31433.59375, -76.0, 0.0),
+            ],
+            [
+                -69155.60879098617,
+                84820.33564295432,
+                -77033.00723725096,
+                76942.93719668953,
+            ],
+        ),
+    ];
+    for (k, (poses, v)) in cases.into_iter().enumerate() {
+        let poses = poses.map(|(x, y, a)| Pose::new(x, y, a));
+        let four = FourPositions::new(&poses).unwrap();
+        let vp = Viewport::new(v[0], v[1], v[2], v[3]).unwrap();
+        for circle in [false, true] {
+            let curve = if circle {
+                four.circle_point_curve()
+            } else {
+                four.center_point_curve()
+            };
+            let mut count = 0;
+            for p in curve.polylines(&vp).into_iter().flatten() {
+                count += 1;
+                assert!(vp.contains(p), "case {k}: {p} outside {vp:?}");
+                let _ = taken_back(
+                    &four,
+                    p,
+                    circle,
+                    &format!("case {k} (circle plane {circle})"),
+                );
+            }
+            // (The refused vertices were in the circle plane.)
+            assert!(!circle || count >= 2, "case {k}: {count} vertices");
+        }
+    }
+}
+
+/// Issue 24 (curv37): the trace inside the free arcs reads the cancel flag.
+/// On the slow input the center-plane trace places the most vertices a
+/// trace may (its budget, about a million: seconds in a debug build, a
+/// fifth of a second in release), which it did before reading the flag
+/// again. A flag set 30 ms into the call now stops it inside the trace
+/// (`Cancelled`, `0` of `0`: no vertex classified yet; before, the first
+/// check after the trace reported the classified vertices) within a
+/// fraction of a second.
+#[test]
+fn issue24_a_cancelled_trace_stops_inside_the_trace() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::time::{Duration, Instant};
+
+    use burmester::Control;
+
+    let (_, fa, view) = issue24_slow_free_arcs();
+    let stop = AtomicBool::new(false);
+    let control = Control::new().with_cancel(&stop);
+    let (r, set, back) = std::thread::scope(|s| {
+        let setter = s.spawn(|| {
+            std::thread::sleep(Duration::from_millis(30));
+            stop.store(true, Ordering::Relaxed);
+            Instant::now()
+        });
+        let r = fa.free_arcs_with(&view, false, &control);
+        let back = Instant::now();
+        (r, setter.join().unwrap(), back)
+    });
+    let latency = back.saturating_duration_since(set);
+    eprintln!("returned {latency:?} after the flag was set");
+    assert!(
+        matches!(r, Err(Error::Cancelled { done: 0, total: 0 })),
+        "{r:?}"
+    );
+    assert!(latency < Duration::from_millis(500), "{latency:?}");
 }

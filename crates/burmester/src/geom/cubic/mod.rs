@@ -512,13 +512,26 @@ impl Cubic {
     /// The polylines of [`Cubic::polylines`] with the given points of the
     /// curve as vertices (see `trace::trace_marked`), each vertex with the
     /// index of the mark it is: the pieces between two marks are the
-    /// curve's own, whatever the viewport.
+    /// curve's own, whatever the viewport. With a `cancel` flag the trace
+    /// reads it every few thousand vertices (a trace may place up to a
+    /// million).
+    ///
+    /// # Errors
+    ///
+    /// [`crate::Error::Cancelled`] (`0` of `0`) once `cancel` is set.
     pub(crate) fn polylines_marked(
         &self,
         viewport: &Viewport,
         marks: &[Point2<f64>],
-    ) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
-        trace::trace_marked(self, viewport, Self::default_tolerance(viewport), marks)
+        cancel: Option<&core::sync::atomic::AtomicBool>,
+    ) -> Result<Vec<MarkedPolyline>> {
+        trace::trace_marked(
+            self,
+            viewport,
+            Self::default_tolerance(viewport),
+            marks,
+            cancel,
+        )
     }
 
     /// The polylines of [`Cubic::trace`] with the default tolerance, every
@@ -528,6 +541,10 @@ impl Cubic {
         trace::trace(self, viewport, Self::default_tolerance(viewport)).polylines()
     }
 }
+
+/// A polyline whose vertices each come with the index of the mark they
+/// are, if any ([`Cubic::polylines_marked`]).
+pub(crate) type MarkedPolyline = Vec<(Point2<f64>, Option<usize>)>;
 
 /// The gradient `[fx, fy]` at `(x, y)` of the cubic with the ascending
 /// coefficients `c` (`c00, c10, c01, c20, c11, c02, c30, c21, c12, c03`).

@@ -2,6 +2,7 @@
 //! the docs of [`crate::geom::cubic`]).
 
 use core::f64::consts::PI;
+use core::sync::atomic::{AtomicBool, Ordering};
 
 use nalgebra::{Point2, Vector2};
 
@@ -219,8 +220,17 @@ impl Loop {
 /// samples): a bound on the work for any input.
 const MAX_VERTICES: usize = 1 << 20;
 
+/// A trace with a cancel flag reads it every this many vertices placed or
+/// settled (a power of two; a few milliseconds of work at most).
+const CANCEL_POLL: usize = 4096;
+
+/// Whether `cancel` is set.
+fn cancelled(cancel: Option<&AtomicBool>) -> bool {
+    cancel.is_some_and(|c| c.load(Ordering::Relaxed))
+}
+
 /// The local viewport and the sampling parameters.
-struct View {
+struct View<'c> {
     lo: Vector2<f64>,
     hi: Vector2<f64>,
     radius: f64,
@@ -228,9 +238,12 @@ struct View {
     max_chord: f64,
     /// Vertices left to place (a bound on the work, whatever the input).
     budget: core::cell::Cell<usize>,
+    /// A cancel flag, read every [`CANCEL_POLL`] vertices placed: once it
+    /// is set the budget is spent (the trace ends at once, unrefined).
+    cancel: Option<&'c AtomicBool>,
 }
 
-impl View {
+impl View<'_> {
     fn inside(&self, p: Vector2<f64>) -> bool {
         p.x >= self.lo.x && p.x <= self.hi.x && p.y >= self.lo.y && p.y <= self.hi.y
     }
@@ -241,11 +254,12 @@ impl View {
 type Marked = (Vector2<f64>, Option<usize>);
 
 pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace {
-    let (mut trace, _) = trace_impl(cubic, viewport, tol, &[]);
+    let (mut trace, _) = trace_impl(cubic, viewport, tol, &[], None);
     let reach = SETTLE_REACH * trace.tolerance;
     for c in &mut trace.components {
         for l in &mut c.polylines {
-            let settled = settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach);
+            let settled =
+                settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach, None);
             *l = settled.into_iter().map(|(p, _)| p).collect();
         }
         c.polylines.retain(|l| l.len() >= 2);
@@ -271,6 +285,7 @@ fn settle_polyline(
     line: impl Iterator<Item = (Point2<f64>, Option<usize>)>,
     viewport: &Viewport,
     reach: f64,
+    cancel: Option<&AtomicBool>,
 ) -> Vec<(Point2<f64>, Option<usize>)> {
     let mut line: Vec<(Point2<f64>, Option<usize>)> = line.collect();
     // A closed polyline (last point the first) is a cycle: every vertex is
@@ -282,11 +297,21 @@ fn settle_polyline(
     let n = line.len();
     let mut out = Vec::with_capacity(n + 1);
     for (i, &(p, mark)) in line.iter().enumerate() {
+        // Cancelled: the rest unsettled (the caller answers `Cancelled`).
+        if i % CANCEL_POLL == CANCEL_POLL - 1 && cancelled(cancel) {
+            out.extend_from_slice(&line[i..]);
+            return out;
+        }
         if mark.is_some() {
             out.push((p, mark));
             continue;
         }
         let inner = closed || (i > 0 && i + 1 < n);
+        // A crossing found in the local frame comes back to the plane an
+        // ulp or two off the view's edge (outside it, or inside but no
+        // longer on the edge for the settling): an end that close is put
+        // on the edge.
+        let p = if inner { p } else { onto_edge(p, viewport) };
         let across = inner.then(|| {
             let chord = line[(i + 1) % n].0 - line[(i + n - 1) % n].0;
             Vector2::new(-chord.y, chord.x)
@@ -301,6 +326,25 @@ fn settle_polyline(
         out.push(out[0]);
     }
     out
+}
+
+/// `p` with a coordinate within 16 ulps (of the view's extent and place)
+/// of an edge of the viewport put on that edge.
+fn onto_edge(p: Point2<f64>, viewport: &Viewport) -> Point2<f64> {
+    let snap = |v: f64, lo: f64, hi: f64| {
+        let near = 16.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(hi - lo);
+        if (v - lo).abs() <= near {
+            lo
+        } else if (v - hi).abs() <= near {
+            hi
+        } else {
+            v
+        }
+    };
+    Point2::new(
+        snap(p.x, viewport.xmin, viewport.xmax),
+        snap(p.y, viewport.ymin, viewport.ymax),
+    )
 }
 
 /// A traced vertex settled onto the curve: Newton steps on the curve's own
@@ -406,14 +450,24 @@ fn settle(
 /// mark it is. A mark that cannot be placed on a loop (a singular point,
 /// a curve traced as a line and a conic) is inserted into the nearest
 /// chord within the chord tolerance, if any.
+///
+/// # Errors
+///
+/// [`crate::Error::Cancelled`] (`0` of `0`: no vertex is given) when
+/// `cancel` is set during the trace, read every [`CANCEL_POLL`] vertices.
 pub(super) fn trace_marked(
     cubic: &Cubic,
     viewport: &Viewport,
     tol: f64,
     marks: &[Point2<f64>],
-) -> Vec<Vec<(Point2<f64>, Option<usize>)>> {
+    cancel: Option<&AtomicBool>,
+) -> crate::error::Result<Vec<super::MarkedPolyline>> {
+    let stop = || crate::Error::Cancelled { done: 0, total: 0 };
     let local: Vec<Vector2<f64>> = marks.iter().map(|m| cubic.local_of(*m)).collect();
-    let (trace, marked) = trace_impl(cubic, viewport, tol, &local);
+    let (trace, marked) = trace_impl(cubic, viewport, tol, &local, cancel);
+    if cancelled(cancel) {
+        return Err(stop());
+    }
     let reach = SETTLE_REACH * trace.tolerance;
     let mut out: Vec<Vec<(Point2<f64>, Option<usize>)>> = match marked {
         Some(lines) => lines
@@ -463,10 +517,15 @@ pub(super) fn trace_marked(
             }
         }
     }
-    out.into_iter()
-        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach))
+    let out: Vec<_> = out
+        .into_iter()
+        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach, cancel))
         .filter(|l| l.len() >= 2)
-        .collect()
+        .collect();
+    if cancelled(cancel) {
+        return Err(stop());
+    }
+    Ok(out)
 }
 
 /// [`trace`], and with marks the polylines with the marks as vertices
@@ -477,6 +536,7 @@ fn trace_impl(
     viewport: &Viewport,
     tol: f64,
     marks: &[Vector2<f64>],
+    cancel: Option<&AtomicBool>,
 ) -> (CubicTrace, Option<Vec<Vec<Marked>>>) {
     let empty = CubicTrace {
         components: Vec::new(),
@@ -502,6 +562,7 @@ fn trace_impl(
         tol: (tol / cubic.scale).max(2e-10 * radius),
         max_chord: 0.1 * radius,
         budget: core::cell::Cell::new(MAX_VERTICES),
+        cancel,
     };
     let Some(q) = choose_point(cubic, center, radius) else {
         return empty;
@@ -1073,7 +1134,11 @@ fn refine(
         }
         _ => true,
     };
-    let budget = view.budget.get();
+    let mut budget = view.budget.get();
+    if budget % CANCEL_POLL == 0 && budget > 0 && cancelled(view.cancel) {
+        budget = 0;
+        view.budget.set(0);
+    }
     if split && depth < MAX_DEPTH && lm > la && lm < lb && budget > 0 {
         view.budget.set(budget - 1);
         refine(point, a, (lm, pm), depth + 1, view, current, out);
@@ -1103,6 +1168,83 @@ fn refine(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The center-point cubic of `fuzz/open/curves/slow-1.5-s-free-arcs-
+    /// was-0.9-s-454464bc` as the plain expansion gave it (a conic whose
+    /// cubic terms are rounding, `4e-16`: its trace in this view places the
+    /// whole budget, 1,048,641 vertices, 12 s in a debug build), and that
+    /// view.
+    fn budget_cubic() -> (Cubic, Viewport) {
+        let c = [
+            -0.04316929184879281,
+            -0.05190961390288428,
+            0.32518737206245146,
+            1.0,
+            0.319259715244508,
+            -1.0,
+            4.298998941132615e-16,
+            2.739185166031401e-16,
+            3.6522468880418675e-16,
+            0.0,
+        ];
+        let cubic = Cubic::from_local(
+            c,
+            Point2::new(94.18645789827298, 78.12500000555079),
+            87.56070436370925,
+        );
+        // Its center and half-widths.
+        let (c, h) = ((74.11694667838805, 72.28322417205871), 0.8756070436370891);
+        let view = Viewport::new(c.0 - h, c.0 + h, c.1 - h, c.1 + h).unwrap();
+        (cubic, view)
+    }
+
+    /// A trace at the most vertices a trace may place stops on its cancel
+    /// flag: set before the call, at once; set 20 ms into it, within a
+    /// fraction of a second (it placed them all before, 12 s in a debug
+    /// build), `Cancelled` with no vertex given. In release the whole
+    /// trace is measured too (a fifth of a second): the budget, used up.
+    #[test]
+    fn a_trace_at_its_budget_stops_when_cancelled() {
+        use std::time::{Duration, Instant};
+        let (cubic, view) = budget_cubic();
+        let tol = Cubic::default_tolerance(&view);
+        let set = AtomicBool::new(true);
+        let t0 = Instant::now();
+        let r = trace_marked(&cubic, &view, tol, &[], Some(&set));
+        assert!(
+            matches!(r, Err(crate::Error::Cancelled { done: 0, total: 0 })),
+            "{r:?}"
+        );
+        assert!(
+            t0.elapsed() < Duration::from_millis(500),
+            "{:?}",
+            t0.elapsed()
+        );
+        let stop = AtomicBool::new(false);
+        let (r, at, back) = std::thread::scope(|s| {
+            let setter = s.spawn(|| {
+                std::thread::sleep(Duration::from_millis(20));
+                stop.store(true, Ordering::Relaxed);
+                Instant::now()
+            });
+            let r = trace_marked(&cubic, &view, tol, &[], Some(&stop));
+            (r, setter.join().unwrap(), Instant::now())
+        });
+        assert!(
+            matches!(r, Err(crate::Error::Cancelled { done: 0, total: 0 })),
+            "{r:?}"
+        );
+        let latency = back.saturating_duration_since(at);
+        assert!(latency < Duration::from_millis(500), "{latency:?}");
+        if !cfg!(debug_assertions) {
+            let n: usize = trace_marked(&cubic, &view, tol, &[], None)
+                .unwrap()
+                .iter()
+                .map(Vec::len)
+                .sum();
+            assert!(n > MAX_VERTICES, "{n} vertices: not at the budget");
+        }
+    }
 
     fn vp(h: f64) -> Viewport {
         Viewport::new(-h, h, -h, h).unwrap()

@@ -272,14 +272,16 @@ impl FilemonArcs {
 
     /// [`free_circle_arcs`](Self::free_circle_arcs) (where `circle`) or
     /// [`free_center_arcs`](Self::free_center_arcs) following `control`:
-    /// the cancel flag is checked before the trace, then (with a progress
-    /// report in traced vertices, each classified once) every 1024
-    /// vertices and before each bisection of a class change.
+    /// the cancel flag is checked before the trace, inside it every 4096
+    /// vertices placed or settled (a trace may place a million), then
+    /// (with a progress report in traced vertices, each classified once)
+    /// every 1024 vertices and before each bisection of a class change.
     ///
     /// # Errors
     ///
     /// As [`free_circle_arcs`](Self::free_circle_arcs);
-    /// [`crate::Error::Cancelled`] when the flag is set.
+    /// [`crate::Error::Cancelled`] when the flag is set (`0` of `0` before
+    /// the trace or inside it).
     pub fn free_arcs_with(
         &self,
         viewport: &Viewport,
@@ -313,7 +315,8 @@ impl FilemonArcs {
             }
         };
         control.check(0, 0)?;
-        let lines = curve.polylines_marked(viewport, &marks);
+        // The trace itself reads the cancel flag (`Cancelled`, 0 of 0).
+        let lines = curve.polylines_marked(viewport, &marks, control.cancel_flag())?;
         // Progress counts the traced vertices, each classified once.
         let mut poll = Poll {
             control,
