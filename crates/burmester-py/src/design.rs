@@ -404,20 +404,18 @@ macro_rules! py_map_class {
         }
 
         impl $cls {
-            /// The `k` best samples by `rank_by` (`$item` records), reading
-            /// the NumPy columns in place.
+            /// The best samples by `ranking` (`$item` records), reading the
+            /// NumPy columns in place.
             fn ranked<'py>(
                 &self,
                 py: Python<'py>,
-                k: usize,
-                min_separation: Option<f64>,
-                rank_by: burmester::RankBy,
+                ranking: burmester::Ranking,
             ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
                 let ctx = &self.context;
-                let watch = $crate::design::ranking_is_long(ctx.grid.len(), k);
+                let watch = $crate::design::ranking_is_long(ctx.grid.len(), ranking.k());
                 let best = self.with_rank_columns(py, |cols| {
                     $crate::run::run_in(py, watch, None, None, "samples", |control| {
-                        ctx.$best(k, min_separation, rank_by, cols, control)
+                        ctx.$best(ranking, cols, control)
                     })
                 })?;
                 $crate::run::list_polled(py, &best, |b| {
@@ -552,7 +550,7 @@ macro_rules! py_map_class {
                 &self,
                 py: Python<'py>,
             ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
-                self.ranked(py, usize::MAX, Some(0.0), burmester::RankBy::Pareto)
+                self.ranked(py, burmester::Ranking::pareto_front())
             }
             /// A picture for Jupyter: PNG bytes drawn by `burmester._display`,
             /// or None without matplotlib.
@@ -687,8 +685,9 @@ pub(crate) use ranked_getters;
 
 /// The `#[pymethods]` block of a ranking method `$name` of the map class
 /// `$cls` (`k=5, min_separation=None, rank_by='balanced'`), delegating to
-/// its `$ranked(py, k, min_separation, rank_by)`, which returns a list
-/// (`-> $ret` where that is not a `PyList`).
+/// its `$ranked(py, ranking)` with the keywords checked once into a
+/// [`burmester::Ranking`], which returns a list (`-> $ret` where that is
+/// not a `PyList`).
 macro_rules! ranking_method {
     ($cls:ident, $name:ident, $ranked:ident) => {
         $crate::design::ranking_method!(
@@ -709,7 +708,9 @@ macro_rules! ranking_method {
             ) -> PyResult<$ret> {
                 use $crate::errors::IntoPy;
                 let rank_by = rank_by.parse::<burmester::RankBy>().py()?;
-                self.$ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
+                let separation = min_separation.map(|r| r.0);
+                let ranking = burmester::Ranking::try_new(k.0, separation, rank_by).py()?;
+                self.$ranked(py, ranking)
             }
         }
     };
