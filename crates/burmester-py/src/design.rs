@@ -389,6 +389,26 @@ pub(crate) fn same_column<T: Element + Bits>(
     }
 }
 
+/// The limits of a map class's context: a field of a solution map's
+/// ([`MapContext`]), part of a pair map's checked options
+/// ([`burmester::PairContext::map_options`]).
+pub(crate) trait ContextLimits {
+    /// The limits behind `acceptable`.
+    fn context_limits(&self) -> DesignLimits;
+}
+
+impl ContextLimits for MapContext {
+    fn context_limits(&self) -> DesignLimits {
+        self.limits
+    }
+}
+
+impl ContextLimits for burmester::PairContext {
+    fn context_limits(&self) -> DesignLimits {
+        *self.limits()
+    }
+}
+
 /// Defines a Python map class `$cls` (named `$pyname`) holding a context
 /// of type `$ctx` and the solution map's columns as read-only NumPy arrays
 /// of shape `(rows, columns)`: the one definition of how a map's columns
@@ -478,7 +498,8 @@ macro_rules! py_map_class {
                 // Values and rows a map can hold, and nothing else.
                 let cols = burmester::design::Columns { $($name,)* };
                 let no_grashof = $crate::slider_map::NoGrashof::no_grashof(&context);
-                $crate::design::check_state(&cols, shape.1, &context.limits, no_grashof)?;
+                let limits = $crate::design::ContextLimits::context_limits(&context);
+                $crate::design::check_state(&cols, shape.1, &limits, no_grashof)?;
                 let burmester::design::Columns { $($name,)* } = cols;
                 Ok($cls {
                     $($name: $crate::design::readonly(py, shape, $name)?,)*
@@ -540,7 +561,7 @@ macro_rules! py_map_class {
             #[getter]
             fn limits(&self) -> $crate::classes::PyDesignLimits {
                 $crate::classes::PyDesignLimits {
-                    inner: self.context.limits,
+                    inner: $crate::design::ContextLimits::context_limits(&self.context),
                 }
             }
             fn __reduce__<'py>(&self, py: Python<'py>) -> $crate::pickle::Reduced<'py> {

@@ -64,10 +64,8 @@ pub struct PairContext {
     pub driving: Vec<Option<CurveDyad>>,
     /// The driven dyad of each row; `None` as for [`PairContext::driving`].
     pub driven: Vec<Option<CurveDyad>>,
-    /// The limits behind `acceptable`.
-    pub limits: DesignLimits,
-    /// The constraints behind `acceptable`.
-    pub constraints: Constraints,
+    /// The limits and constraints behind `acceptable`, checked.
+    map_options: MapOptions,
 }
 
 /// The parameter plane, the task, how many dyads each axis has, the
@@ -79,8 +77,8 @@ impl core::fmt::Debug for PairContext {
             .field("task", &self.task)
             .field("driving_dyads", &self.driving.len())
             .field("driven_dyads", &self.driven.len())
-            .field("limits", &self.limits)
-            .field("constraints", &self.constraints)
+            .field("limits", self.limits())
+            .field("constraints", self.constraints())
             .finish()
     }
 }
@@ -263,8 +261,7 @@ impl Task {
             task: *self,
             driving: self.buildable(four.parameter_samples_with(n_driving, control)?, control)?,
             driven: self.buildable(four.parameter_samples_with(n_driven, control)?, control)?,
-            limits: *options.limits(),
-            constraints: options.constraints().clone(),
+            map_options: options.clone(),
         })
     }
 }
@@ -308,8 +305,9 @@ impl PairContext {
     /// when its task does not have four poses, as [`Task::pair_map`] for
     /// its limits and constraints; [`Error::Cancelled`](crate::Error::Cancelled).
     pub fn map_into(&self, out: ColumnsOut<'_>, control: &Control<'_>) -> Result<()> {
-        // The fields are public: a context put together by hand must still
-        // be one `pair_context` could give.
+        // The task and the dyads are public: a context changed by hand must
+        // still be one `pair_context` could give (its options were checked
+        // when it was made).
         if self.task.len() != 4 {
             return Err(self.task.needs(4, "PairContext::map_into"));
         }
@@ -327,11 +325,7 @@ impl PairContext {
             }
         }
         out.check_len(self.grid.len())?;
-        self.fill(
-            &MapOptions::new(&self.limits, &self.constraints)?,
-            out,
-            control,
-        )
+        self.fill(&self.map_options, out, control)
     }
 
     /// The columns of the map, this context checked to be one
@@ -363,6 +357,21 @@ impl PairContext {
             let free = fig.is_some_and(|f| f.branch_free());
             judge.sample(fig, free, &[da.center, dc.center], *da, *dc)
         })
+    }
+
+    /// The limits behind `acceptable`.
+    pub fn limits(&self) -> &DesignLimits {
+        self.map_options.limits()
+    }
+
+    /// The constraints behind `acceptable`.
+    pub fn constraints(&self) -> &Constraints {
+        self.map_options.constraints()
+    }
+
+    /// The limits and the constraints, checked (as the context was made).
+    pub fn map_options(&self) -> &MapOptions {
+        &self.map_options
     }
 
     /// `(n_driven, n_driving)`: the rows and the columns of the map.
