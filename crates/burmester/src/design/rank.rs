@@ -115,8 +115,8 @@ impl FromStr for RankBy {
 /// orders them ([`RankBy`]). Every `best_*` ranking of a map takes one
 /// ([`MapContext::best_pivots`], [`SolutionMap::best_pivots`],
 /// [`PairMap::best_pairs`](crate::PairMap::best_pairs),
-/// [`DriveMap::best_drives`](crate::DriveMap::best_drives),
-/// [`ActuatorMap::best_placements`](crate::ActuatorMap::best_placements),
+/// [`DriveMap::best_drives`](crate::design::DriveMap::best_drives),
+/// [`ActuatorMap::best_placements`](crate::design::ActuatorMap::best_placements),
 /// ...), so none of them checks it again.
 ///
 /// A candidate closer than the separation to a better one is skipped, so
