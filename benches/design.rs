@@ -9,7 +9,9 @@
 
 use std::hint::black_box;
 
-use burmester::{Control, DesignOptions, Grid, MapOptions, RankBy, Task, Viewport, example};
+use burmester::{
+    Control, DesignOptions, Grid, MapOptions, RankBy, Ranking, Task, Viewport, example,
+};
 use criterion::{Criterion, criterion_group, criterion_main};
 
 /// A grid over `v` with `n` samples along its longer side (as the search's).
@@ -37,7 +39,7 @@ fn brute_force(task: &Task, options: &DesignOptions, bx: &Viewport) -> f64 {
             .solution_map(&driving, &map_options, &Control::new())
             .expect("a map");
         if let Some(p) = map
-            .best_pivots(1, None, options.rank_by)
+            .best_pivots(Ranking::new(1, options.rank_by))
             .expect("a ranking")
             .first()
         {

@@ -13,7 +13,7 @@
 use std::hint::black_box;
 
 use burmester::design::{DriveContext, DriveOptions};
-use burmester::{Control, Grid, MapOptions, RankBy, example};
+use burmester::{Control, Grid, MapOptions, RankBy, Ranking, example};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 fn drive_map(c: &mut Criterion) {
@@ -24,7 +24,7 @@ fn drive_map(c: &mut Criterion) {
     let view = Grid::new(example::viewport(), 400, 400).expect("the view");
     let smap = f.solution_map(&view, &options, &control).expect("the map");
     let linkage = smap
-        .best_pivots(1, None, RankBy::Transmission)
+        .best_pivots(Ranking::new(1, RankBy::Transmission))
         .expect("ranked")[0]
         .linkage;
     let a0 = linkage.driving.center;

@@ -31,7 +31,7 @@ use std::hint::black_box;
 use burmester::design::{
     ActuatorContext, ActuatorOptions, DesignOptions, DriveContext, DriveOptions,
 };
-use burmester::{Control, FourBar, Grid, MapOptions, Method, RankBy, Task, example};
+use burmester::{Control, FourBar, Grid, MapOptions, Method, RankBy, Ranking, Task, example};
 use criterion::{
     BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group, criterion_main,
 };
@@ -88,7 +88,7 @@ fn scaling(c: &mut Criterion) {
     let linkage = f
         .solution_map(&view, &options, &control)
         .unwrap()
-        .best_pivots(1, None, RankBy::Transmission)
+        .best_pivots(Ranking::new(1, RankBy::Transmission))
         .unwrap()[0]
         .linkage;
     let (a0, e) = (linkage.driving.center, linkage.driving.circle);

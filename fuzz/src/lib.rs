@@ -36,7 +36,7 @@ use core::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use burmester::{
     AssemblyMode, CircleOrLine, Conic, Constraints, Control, DegenerateError, DesignLimits,
     Direction, Dyad, Error, FourBar, Grashof, Grid, InputRequirement, InvalidInput, Line,
-    MapOptions, Method, Point2, Pole, Pose, RankBy, SolutionMap, Task, Vector2, Viewport,
+    MapOptions, Method, Point2, Pole, Pose, RankBy, Ranking, SolutionMap, Task, Vector2, Viewport,
 };
 
 /// Reads numbers from the fuzzer's bytes; past the end everything is zero.
@@ -1360,8 +1360,8 @@ fn check_pivots(map: &SolutionMap, k: usize, min_separation: Option<f64>) {
     let sep = min_separation.unwrap_or(0.02 * map.context.grid.viewport().diagonal());
     for rank in RankBy::ALL {
         let pivots = map
-            .best_pivots(k, min_separation, rank)
-            .expect("a valid separation");
+            .best_pivots(Ranking::try_new(k, min_separation, rank).expect("a valid separation"))
+            .expect("a valid ranking");
         assert!(pivots.len() <= k);
         for (n, p) in pivots.iter().enumerate() {
             let (j, i) = p.index;
@@ -1397,7 +1397,7 @@ fn check_pivots(map: &SolutionMap, k: usize, min_separation: Option<f64>) {
     }
     for bad in [-1.0, f64::NAN, f64::INFINITY] {
         assert!(matches!(
-            map.best_pivots(k, Some(bad), RankBy::Transmission),
+            Ranking::try_new(k, Some(bad), RankBy::Transmission),
             Err(Error::InvalidInput(InvalidInput::OutsideRange { .. }))
         ));
     }
@@ -1586,13 +1586,14 @@ pub fn pair_map(data: &[u8]) {
         let k = inp.count(0, 4);
         if sep.is_some_and(|s| !s.is_finite()) {
             assert!(matches!(
-                map.best_pairs(k, sep, RankBy::Balanced),
+                Ranking::try_new(k, sep, RankBy::Balanced),
                 Err(Error::InvalidInput(InvalidInput::OutsideRange { .. }))
             ));
             continue;
         }
         for rank in RankBy::ALL {
-            let pairs = map.best_pairs(k, sep, rank).expect("a valid separation");
+            let ranking = Ranking::try_new(k, sep, rank).expect("a valid separation");
+            let pairs = map.best_pairs(ranking).expect("a valid ranking");
             assert!(pairs.len() <= k);
             let sep = sep.unwrap_or(0.02 * diag);
             let at = |p: &burmester::Pair| {
@@ -1715,8 +1716,9 @@ pub fn atlas(data: &[u8]) {
             (count, free),
             "cell {k} at {c0}"
         );
+        let first = Ranking::new(1, RankBy::Transmission).with_separation(0.0);
         let best = map
-            .best_pivots(1, Some(0.0), RankBy::Transmission)
+            .best_pivots(first.expect("a valid separation"))
             .expect("best pivots");
         match (&cell.best, best.first()) {
             (None, None) => {}

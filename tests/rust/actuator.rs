@@ -16,7 +16,7 @@ use std::sync::atomic::AtomicBool;
 use burmester::design::{ActuatorContext, ActuatorOptions};
 use burmester::{
     ActuatorLink, AssemblyMode, Constraints, Control, DegenerateError, DesignLimits, DriveError,
-    Dyad, Error, FourBar, Grid, InputRange, InvalidInput, MapOptions, Point2, RankBy,
+    Dyad, Error, FourBar, Grid, InputRange, InvalidInput, MapOptions, Point2, RankBy, Ranking,
     SynthesizedFourBar, Task, Vector2,
 };
 use proptest::prelude::*;
@@ -445,7 +445,7 @@ fn map_and_ranking_agree_with_placements() {
             }
         }
         for rank_by in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
-            let best = map.best_placements(5, None, rank_by).unwrap();
+            let best = map.best_placements(Ranking::new(5, rank_by)).unwrap();
             for w in best.windows(2) {
                 assert!(w[0].score >= w[1].score);
                 assert!((w[0].ground - w[1].ground).norm() >= 0.02 * grid.viewport().diagonal());
@@ -458,7 +458,9 @@ fn map_and_ranking_agree_with_placements() {
                 assert!(map.columns.acceptable[j * grid.nx() + i]);
             }
         }
-        let margin = map.best_placements(3, None, RankBy::Margin).unwrap();
+        let margin = map
+            .best_placements(Ranking::new(3, RankBy::Margin))
+            .unwrap();
         assert!(margin.iter().all(|a| a.monotone && a.margin > 0.0));
     }
     assert!(ranked > 0);
@@ -642,9 +644,10 @@ fn bad_input_gives_typed_errors() {
     infeasible.figures.one_circuit = false;
     let e = plain(&infeasible, q).unwrap_err();
     assert_eq!(e, Error::Drive(DriveError::NoTravel));
-    let map = ctx.map(&Control::new()).unwrap();
+    // A negative separation is refused where the ranking is made, before
+    // any map is ranked.
     assert!(matches!(
-        map.best_placements(1, Some(-1.0), RankBy::Balanced),
+        Ranking::new(1, RankBy::Balanced).with_separation(-1.0),
         Err(Error::InvalidInput(InvalidInput::OutsideRange { .. }))
     ));
 }

@@ -7,7 +7,7 @@
 
 use burmester::{
     AtlasCell, Constraints, Control, DesignLimits, Grid, InputRequirement, MapOptions, Point2,
-    RankBy, Task, example,
+    RankBy, Ranking, Task, example,
 };
 mod common;
 
@@ -63,18 +63,22 @@ fn reference(
     let c = &map.columns;
     let count = c.acceptable.iter().filter(|&&a| a).count() as u64;
     let branch_free = c.branch_free.iter().filter(|&&a| a).count() as u64;
-    let best = map.best_pivots(1, None, rank_by).unwrap().first().map(|p| {
-        let k = p.index.0 * driving.nx() + p.index.1;
-        burmester::AtlasBest {
-            driving: p.center,
-            index: p.index,
-            min_transmission_rad: c.min_transmission_rad[k],
-            link_ratio: c.link_ratio[k],
-            margin: p.margin,
-            size_ratio: c.size_ratio[k],
-            score: p.score,
-        }
-    });
+    let best = map
+        .best_pivots(Ranking::new(1, rank_by))
+        .unwrap()
+        .first()
+        .map(|p| {
+            let k = p.index.0 * driving.nx() + p.index.1;
+            burmester::AtlasBest {
+                driving: p.center,
+                index: p.index,
+                min_transmission_rad: c.min_transmission_rad[k],
+                link_ratio: c.link_ratio[k],
+                margin: p.margin,
+                size_ratio: c.size_ratio[k],
+                score: p.score,
+            }
+        });
     AtlasCell {
         valid: true,
         count,

@@ -3,7 +3,9 @@
 //! quantities kept inside, and never every value of a map.
 
 use burmester::synthesis::{FivePositions, FourPositions};
-use burmester::{AssemblyMode, DesignLimits, FourBar, Grid, Point2, Pose, RankBy, Task, Viewport};
+use burmester::{
+    AssemblyMode, DesignLimits, FourBar, Grid, Point2, Pose, RankBy, Ranking, Task, Viewport,
+};
 mod common;
 
 /// `value`'s debug text contains `want` and no internals.
@@ -91,7 +93,7 @@ fn task_filemon_and_maps_show_what_they_are_for() {
     assert!(text.len() < 2000, "{} characters", text.len());
     no_internals(&text);
 
-    let best = map.best_pivots(1, None, RankBy::Balanced).unwrap();
+    let best = map.best_pivots(Ranking::new(1, RankBy::Balanced)).unwrap();
     let text = format!("{:?}", best[0].linkage);
     assert!(text.contains("fourbar: FourBar { ground: "), "{text}");
     assert!(text.contains("modes: ["), "{text}");

@@ -8,8 +8,8 @@ use std::f64::consts::TAU;
 
 use burmester::linkage::Direction;
 use burmester::{
-    Constraints, Control, DesignLimits, Dyad, Grashof, Grid, InputRequirement, MapOptions, Method,
-    Point2, RankBy, SynthesizedFourBar, Task,
+    Constraints, Control, DesignLimits, Dyad, Error, Grashof, Grid, InputRequirement, InvalidInput,
+    MapOptions, Method, Point2, RankBy, Ranking, SynthesizedFourBar, Task,
 };
 mod common;
 
@@ -510,7 +510,9 @@ fn best_pivots_are_acceptable_ordered_separated_and_pass_the_poses() {
     let f = t.filemon(burmester::example::driven_center()).unwrap();
     let g = Grid::from_bounds(-8.0, 8.0, -8.0, 8.0, 200, 200).unwrap();
     let map = solution_map(&f, &g, &DesignLimits::default());
-    let best = map.best_pivots(5, None, RankBy::Transmission).unwrap();
+    let best = map
+        .best_pivots(Ranking::new(5, RankBy::Transmission))
+        .unwrap();
     assert!(!best.is_empty());
     let sep = 0.02 * g.viewport().diagonal();
     for (i, p) in best.iter().enumerate() {
@@ -548,7 +550,7 @@ fn best_pivots_are_acceptable_ordered_separated_and_pass_the_poses() {
     assert!((f64::from(top) - best[0].linkage.figures.min_transmission).abs() < 1e-6);
     // The fallback ranking: branch-free candidates by their margin to the
     // nearest curve, which is the Filemon margin at the pivot.
-    let by_margin = map.best_pivots(5, None, RankBy::Margin).unwrap();
+    let by_margin = map.best_pivots(Ranking::new(5, RankBy::Margin)).unwrap();
     assert!(!by_margin.is_empty());
     for (i, p) in by_margin.iter().enumerate() {
         let k = p.index.0 * g.nx() + p.index.1;
@@ -599,7 +601,9 @@ fn the_other_direction_maps_driven_pivots() {
         free += usize::from(m.branch_free[k]);
     }
     assert!(free > 0 && free < g.len());
-    let best = map.best_pivots(3, None, RankBy::Transmission).unwrap();
+    let best = map
+        .best_pivots(Ranking::new(3, RankBy::Transmission))
+        .unwrap();
     assert!(
         best.iter()
             .all(|p| m.acceptable[p.index.0 * g.nx() + p.index.1])
@@ -766,7 +770,9 @@ fn rankings_order_by_their_documented_scores() {
         }
     };
     for rank in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
-        let best = map.best_pivots(4, Some(0.0), rank).unwrap();
+        let best = map
+            .best_pivots(Ranking::new(4, rank).with_separation(0.0).unwrap())
+            .unwrap();
         assert_eq!(best.len(), 4);
         let k0 = best[0].index.0 * g.nx() + best[0].index.1;
         let top = acceptable
@@ -790,8 +796,10 @@ fn rankings_order_by_their_documented_scores() {
     // The designer's complaint: the best transmission on this example is a
     // large linkage; the balanced ranking offers a much smaller one that
     // still transmits well.
-    let by_mu = &map.best_pivots(1, None, RankBy::Transmission).unwrap()[0];
-    let balanced = &map.best_pivots(1, None, RankBy::Balanced).unwrap()[0];
+    let by_mu = &map
+        .best_pivots(Ranking::new(1, RankBy::Transmission))
+        .unwrap()[0];
+    let balanced = &map.best_pivots(Ranking::new(1, RankBy::Balanced)).unwrap()[0];
     assert!(
         balanced.size_ratio < 0.5 * by_mu.size_ratio,
         "{} vs {}",
@@ -858,8 +866,11 @@ fn the_pareto_front_is_exactly_the_nondominated_acceptable_samples() {
         );
     }
     // Its ends are the best of the compact and transmission rankings.
-    let compact = &map.best_pivots(1, Some(0.0), RankBy::Compact).unwrap()[0];
-    let mu = &map.best_pivots(1, Some(0.0), RankBy::Transmission).unwrap()[0];
+    let first = |r| {
+        let ranking = Ranking::new(1, r).with_separation(0.0).unwrap();
+        map.best_pivots(ranking).unwrap()[0]
+    };
+    let (compact, mu) = (&first(RankBy::Compact), &first(RankBy::Transmission));
     assert_eq!(c.size_ratio[at(&front[0])], c.size_ratio[at(compact)]);
     assert_eq!(
         c.min_transmission_rad[at(front.last().unwrap())],
@@ -894,10 +905,8 @@ fn ties_go_to_the_more_compact_linkage() {
         min_transmission_rad: &flat,
         ..map.rank_columns()
     };
-    let best = map
-        .context
-        .best_pivots(10, Some(0.0), RankBy::Transmission, cols)
-        .unwrap();
+    let ranking = Ranking::new(10, RankBy::Transmission).with_separation(0.0);
+    let best = map.context.best_pivots(ranking.unwrap(), cols).unwrap();
     let at = |p: &burmester::Pivot| p.index.0 * g.nx() + p.index.1;
     let smallest = (0..g.len())
         .filter(|&k| c.acceptable[k] && !flat[k].is_nan())
@@ -997,4 +1006,127 @@ fn bad_arguments_are_reported_before_the_columns_are_allocated() {
         &MapOptions::new(&limits, &none).unwrap(),
         &control
     )));
+}
+
+/// A [`Ranking`] refuses a negative or non-finite separation where it is
+/// made (the variant and message the rankings gave for it before), and
+/// ranks a map as a brute-force reference does: the acceptable samples by
+/// transmission (ties by size ratio, then margin, then sample), each kept
+/// unless closer than the separation to one kept before, the first `k`.
+#[test]
+fn a_ranking_is_checked_once_and_ranks_as_the_reference() {
+    for bad in [-1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let e = Ranking::new(3, RankBy::Balanced)
+            .with_separation(bad)
+            .unwrap_err();
+        let Error::InvalidInput(InvalidInput::OutsideRange {
+            name,
+            value,
+            min,
+            max,
+            unit,
+        }) = e
+        else {
+            panic!("{e:?}");
+        };
+        assert_eq!(
+            (name, min, max, unit),
+            ("min_separation", 0.0, f64::MAX, "")
+        );
+        assert_eq!(value.to_bits(), bad.to_bits());
+        assert!(
+            e.to_string()
+                .starts_with("min_separation must be between 0 and "),
+            "{e}"
+        );
+        assert!(
+            e.to_string().ends_with("; pass a value in that range"),
+            "{e}"
+        );
+        // (The same error from the optional form: compared as text, NaN
+        // being unequal to itself.)
+        let again = Ranking::try_new(3, Some(bad), RankBy::Balanced).unwrap_err();
+        assert_eq!(again.to_string(), e.to_string());
+    }
+    // Zero and None are valid; the accessors give back what was given.
+    let r = Ranking::try_new(7, None, RankBy::Compact).unwrap();
+    assert_eq!(
+        (r.k(), r.min_separation(), r.rank_by()),
+        (7, None, RankBy::Compact)
+    );
+    assert_eq!(r, Ranking::new(7, RankBy::Compact));
+    let r0 = r.with_separation(0.0).unwrap();
+    assert_eq!(r0.min_separation(), Some(0.0));
+    assert_eq!(Ranking::default(), Ranking::new(5, RankBy::Balanced));
+    let front = Ranking::pareto_front();
+    assert_eq!(
+        (front.k(), front.min_separation(), front.rank_by()),
+        (usize::MAX, Some(0.0), RankBy::Pareto)
+    );
+
+    // One map: the default separation is 2% of the viewport's diagonal,
+    // here 0.02 * hypot(16, 12) = 0.4.
+    let t = burmester::example::task();
+    let f = t.filemon(burmester::example::driven_center()).unwrap();
+    let g = Grid::from_bounds(-8.0, 8.0, -6.0, 6.0, 161, 121).unwrap();
+    let map = solution_map(&f, &g, &DesignLimits::default());
+    let c = &map.columns;
+    assert_eq!(
+        Ranking::new(1, RankBy::Balanced).separation(&g.viewport()),
+        0.4
+    );
+    let mut cand: Vec<usize> = (0..g.len()).filter(|&s| c.acceptable[s]).collect();
+    assert!(cand.len() > 100, "{} acceptable", cand.len());
+    cand.sort_by(|&a, &b| {
+        let mu = |s: usize| c.min_transmission_rad[s];
+        mu(b)
+            .total_cmp(&mu(a))
+            .then(c.size_ratio[a].total_cmp(&c.size_ratio[b]))
+            .then(map.margin(b).total_cmp(&map.margin(a)))
+            .then(a.cmp(&b))
+    });
+    let reference = |k: usize, sep: f64| {
+        let mut kept: Vec<usize> = Vec::new();
+        for &s in &cand {
+            if kept.len() == k {
+                break;
+            }
+            let p = map.context.point(s);
+            if kept
+                .iter()
+                .all(|&q| (map.context.point(q) - p).norm() >= sep)
+                && map.context.linkage(s).is_ok()
+            {
+                kept.push(s);
+            }
+        }
+        kept
+    };
+    let ranked = |r: Ranking| -> Vec<usize> {
+        let best = map.best_pivots(r).unwrap();
+        best.iter()
+            .map(|p| p.index.0 * g.nx() + p.index.1)
+            .collect()
+    };
+    // The separation matters on this map: the six best differ without it.
+    assert_ne!(reference(6, 0.4), reference(6, 0.0));
+    for (ranking, sep) in [
+        (Ranking::new(6, RankBy::Transmission), 0.4),
+        (
+            Ranking::new(6, RankBy::Transmission)
+                .with_separation(0.0)
+                .unwrap(),
+            0.0,
+        ),
+        (
+            Ranking::new(4, RankBy::Transmission)
+                .with_separation(2.5)
+                .unwrap(),
+            2.5,
+        ),
+    ] {
+        let expected = reference(ranking.k(), sep);
+        assert_eq!(expected.len(), ranking.k());
+        assert_eq!(ranked(ranking), expected, "{ranking:?}");
+    }
 }

@@ -16,7 +16,7 @@ use core::sync::atomic::AtomicBool;
 
 use burmester::{
     Constraints, Control, Design, DesignLimits, DesignOptions, Grid, InputRequirement, Limit,
-    MapOptions, PivotRegion, Point2, RankBy, SearchPoint, Space, SynthesizedFourBar, Task,
+    MapOptions, PivotRegion, Point2, RankBy, Ranking, SearchPoint, Space, SynthesizedFourBar, Task,
     Viewport, example,
 };
 mod common;
@@ -68,7 +68,7 @@ fn brute_three(
                 &Control::new(),
             )
             .unwrap();
-        if let Some(p) = map.best_pivots(1, None, o.rank_by).unwrap().first() {
+        if let Some(p) = map.best_pivots(Ranking::new(1, o.rank_by)).unwrap().first() {
             if best.is_none_or(|b| p.score > b.0) {
                 best = Some((p.score, p.center, c0));
             }
@@ -307,7 +307,12 @@ fn four_pose_tasks_beat_the_finer_pair_map() {
                 &Control::new(),
             )
             .unwrap();
-        let Some(b) = map.best_pairs(1, None, o.rank_by).unwrap().first().copied() else {
+        let Some(b) = map
+            .best_pairs(Ranking::new(1, o.rank_by))
+            .unwrap()
+            .first()
+            .copied()
+        else {
             continue;
         };
         let got = r.designs.first().map_or(f64::NEG_INFINITY, |d| d.score);

@@ -20,7 +20,7 @@ use burmester::design::{
 };
 use burmester::{
     AssemblyMode, Constraints, Control, DesignLimits, DesignOptions, DriveError, Dyad, Error,
-    FourBar, Grid, InputRange, MapOptions, Point2, RankBy, SixBar, SixBarJoints,
+    FourBar, Grid, InputRange, MapOptions, Point2, RankBy, Ranking, SixBar, SixBarJoints,
     SynthesizedFourBar, Task, Vector2,
 };
 use proptest::prelude::*;
@@ -564,7 +564,7 @@ fn returned_drives_pass_the_independent_check() {
         let map = ctx.map(&Control::new()).unwrap();
         let mut drives = Vec::new();
         for rank in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
-            drives.extend(map.best_drives(2, None, rank).unwrap());
+            drives.extend(map.best_drives(Ranking::new(2, rank)).unwrap());
         }
         for d in &drives {
             assert!(d.sixbar.crank_turns_fully());
@@ -741,7 +741,9 @@ fn the_examples_triple_rocker_gets_a_motor() {
     };
     let options = MapOptions::new(&limits, &Constraints::none()).unwrap();
     let map = f.solution_map(&grid, &options, &Control::new()).unwrap();
-    let best = map.best_pivots(1, None, RankBy::Transmission).unwrap();
+    let best = map
+        .best_pivots(Ranking::new(1, RankBy::Transmission))
+        .unwrap();
     let sfb = best[0].linkage;
     assert_eq!(sfb.figures.grashof, burmester::Grashof::TripleRocker);
     let d = balanced_drive(&sfb, &limits).unwrap();

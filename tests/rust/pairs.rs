@@ -15,7 +15,7 @@ use burmester::design::PairMap;
 use burmester::synthesis::{FourPositions, Turn};
 use burmester::{
     Branch, Constraints, Control, DesignLimits, Direction, Error, InvalidInput, MapOptions, Point2,
-    Pose, RankBy, Task,
+    Pose, RankBy, Ranking, Task,
 };
 
 /// The notes' worked example (positions-4-5.md, section 6): four poses of
@@ -270,7 +270,7 @@ fn best_pairs_rebuild_their_linkages_and_rank_by_score() {
     let task = example_task();
     let m = map(&task, 256, 256);
     for rank_by in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
-        let best = m.best_pairs(8, None, rank_by).unwrap();
+        let best = m.best_pairs(Ranking::new(8, rank_by)).unwrap();
         assert_eq!(best.len(), 8, "{rank_by:?}");
         for w in best.windows(2) {
             assert!(w[0].score >= w[1].score - 1e-12, "{rank_by:?}");
@@ -295,7 +295,7 @@ fn best_pairs_rebuild_their_linkages_and_rank_by_score() {
         }
     }
     // The best transmission is the largest acceptable value of the column.
-    let top = m.best_pairs(1, None, RankBy::Transmission).unwrap()[0];
+    let top = m.best_pairs(Ranking::new(1, RankBy::Transmission)).unwrap()[0];
     let max = (0..m.columns.acceptable.len())
         .filter(|&k| m.columns.acceptable[k])
         .map(|k| m.columns.min_transmission_rad[k])
@@ -358,7 +358,11 @@ fn bad_input_gives_typed_errors() {
     ));
     let m = map(&task, 8, 8);
     assert!(m.linkage(8, 0).is_err() && m.linkage(0, 8).is_err());
-    assert!(m.best_pairs(3, Some(-1.0), RankBy::Balanced).is_err());
+    assert!(
+        Ranking::new(3, RankBy::Balanced)
+            .with_separation(-1.0)
+            .is_err()
+    );
 }
 
 #[test]

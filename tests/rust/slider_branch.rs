@@ -15,6 +15,7 @@
 
 use std::f64::consts::{PI, TAU};
 
+use burmester::Ranking;
 use burmester::{
     Branch, Control, Dyad, DyadKind, Error, Filemon, FilemonLines, Grid, InvalidInput, MapOptions,
     Method, Point2, Pose, SliderDyad, Task, Vector2, Viewport,
@@ -952,7 +953,7 @@ fn the_generating_crank_of_a_press_is_acceptable() {
     // Its margin is positive (branch-free), and a Pivot carries a four-bar.
     assert!(map.margin(k) > 0.0);
     let e = map
-        .best_pivots(3, None, burmester::RankBy::Balanced)
+        .best_pivots(Ranking::new(3, burmester::RankBy::Balanced))
         .unwrap_err();
     assert_eq!(cause_of(&e), "driven_kind");
     assert_eq!(map.context.varying.as_str(), "driving");
@@ -1090,7 +1091,7 @@ fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
     }
     assert!(acceptable > 50, "{acceptable} acceptable samples");
     for rank_by in [RankBy::Balanced, RankBy::Transmission, RankBy::Compact] {
-        let best = map.best_slider_pivots(5, None, rank_by).unwrap();
+        let best = map.best_slider_pivots(Ranking::new(5, rank_by)).unwrap();
         assert!(!best.is_empty(), "{rank_by:?}");
         let b = &best[0];
         // Its linkage is the exact slider-crank of its center.
@@ -1165,7 +1166,9 @@ fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
         }
     }
     // The margin ranking: branch-free samples by their margin to the conic.
-    let by_margin = map.best_slider_pivots(3, None, RankBy::Margin).unwrap();
+    let by_margin = map
+        .best_slider_pivots(Ranking::new(3, RankBy::Margin))
+        .unwrap();
     assert!(by_margin[0].margin > 0.0 && by_margin[0].linkage.is_branch_free());
     assert_eq!(
         by_margin[0].margin,
@@ -1196,19 +1199,20 @@ fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
     }
     // Every pivot asked for (the documented maximum: usize::MAX), apart by
     // nothing: every acceptable sample once.
-    let all = map
-        .best_slider_pivots(usize::MAX, Some(0.0), RankBy::Balanced)
-        .unwrap();
+    let every = Ranking::new(usize::MAX, RankBy::Balanced).with_separation(0.0);
+    let all = map.best_slider_pivots(every.unwrap()).unwrap();
     assert_eq!(all.len(), acceptable);
     // The four-bar's ranking refuses a slider map, naming what to use, and
     // the slider's a crank's map.
-    let e = map.best_pivots(3, None, RankBy::Balanced).unwrap_err();
+    let e = map
+        .best_pivots(Ranking::new(3, RankBy::Balanced))
+        .unwrap_err();
     assert_eq!(cause_of(&e), "driven_kind");
     assert!(e.to_string().contains("best_slider_pivots"), "{e}");
     let revolute = task.filemon(Point2::new(300.0, -200.0)).unwrap();
     let rmap = slider_map(&revolute, &grid);
     let e = rmap
-        .best_slider_pivots(3, None, RankBy::Balanced)
+        .best_slider_pivots(Ranking::new(3, RankBy::Balanced))
         .unwrap_err();
     assert_eq!(cause_of(&e), "driven_kind");
     assert!(e.to_string().contains("best_pivots"), "{e}");
@@ -1218,9 +1222,7 @@ fn ranking_a_slider_map_agrees_with_rescoring_every_cell() {
     let e = map
         .context
         .best_pivots_with::<burmester::SynthesizedSliderCrank>(
-            3,
-            None,
-            RankBy::Pareto,
+            Ranking::new(3, RankBy::Pareto),
             map.rank_columns(),
             &control,
         )
@@ -1386,7 +1388,7 @@ fn slider_map_obstacles_and_envelope_agree_with_driving_the_built_slider_crank()
     );
     // The best pivot under the constraints is clear by the dense check.
     let best = map
-        .best_slider_pivots(1, None, burmester::RankBy::Balanced)
+        .best_slider_pivots(Ranking::new(1, burmester::RankBy::Balanced))
         .unwrap();
     let d = task.dyad_from_center(best[0].center).unwrap();
     let (o, e) = dense_gaps(

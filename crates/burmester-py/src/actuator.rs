@@ -4,7 +4,9 @@
 //! link.
 
 use burmester::design::{Actuator, ActuatorContext, ActuatorMap, ActuatorOptions};
-use burmester::{ActuatorLink, Constraints, DesignLimits, Grid, MapOptions, Point2, RankBy, Task};
+use burmester::{
+    ActuatorLink, Constraints, DesignLimits, Grid, MapOptions, Point2, RankBy, Ranking, Task,
+};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -459,16 +461,10 @@ burmester::actuator_map_columns!(py_actuator_map);
 ranking_method!(PyActuatorMap, best_placements, ranked -> Vec<PyActuator>);
 
 impl PyActuatorMap {
-    /// The `k` best placements at least `sep` apart by `by`.
-    fn ranked(
-        &self,
-        py: Python<'_>,
-        k: usize,
-        sep: Option<f64>,
-        by: RankBy,
-    ) -> PyResult<Vec<PyActuator>> {
+    /// The best placements by `ranking`.
+    fn ranked(&self, py: Python<'_>, ranking: Ranking) -> PyResult<Vec<PyActuator>> {
         let map = &self.map;
-        let found = py.detach(|| map.best_placements(k, sep, by)).py()?;
+        let found = py.detach(|| map.best_placements(ranking)).py()?;
         Ok(found
             .into_iter()
             .map(|a| PyActuator::of(a, self.task, &map.context))
@@ -531,7 +527,7 @@ impl PyActuatorMap {
         Ok(PyActuator::of(a, self.task, &self.map.context))
     }
     fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyActuator>> {
-        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
+        self.ranked(py, Ranking::pareto_front())
     }
 
     /// Rebuilds a map from its state (for pickling): computed again.

@@ -389,6 +389,26 @@ pub(crate) fn same_column<T: Element + Bits>(
     }
 }
 
+/// The limits of a map class's context: a field of a solution map's
+/// ([`MapContext`]), part of a pair map's checked options
+/// ([`burmester::PairContext::map_options`]).
+pub(crate) trait ContextLimits {
+    /// The limits behind `acceptable`.
+    fn context_limits(&self) -> DesignLimits;
+}
+
+impl ContextLimits for MapContext {
+    fn context_limits(&self) -> DesignLimits {
+        self.limits
+    }
+}
+
+impl ContextLimits for burmester::PairContext {
+    fn context_limits(&self) -> DesignLimits {
+        *self.limits()
+    }
+}
+
 /// Defines a Python map class `$cls` (named `$pyname`) holding a context
 /// of type `$ctx` and the solution map's columns as read-only NumPy arrays
 /// of shape `(rows, columns)`: the one definition of how a map's columns
@@ -404,20 +424,18 @@ macro_rules! py_map_class {
         }
 
         impl $cls {
-            /// The `k` best samples by `rank_by` (`$item` records), reading
-            /// the NumPy columns in place.
+            /// The best samples by `ranking` (`$item` records), reading the
+            /// NumPy columns in place.
             fn ranked<'py>(
                 &self,
                 py: Python<'py>,
-                k: usize,
-                min_separation: Option<f64>,
-                rank_by: burmester::RankBy,
+                ranking: burmester::Ranking,
             ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
                 let ctx = &self.context;
-                let watch = $crate::design::ranking_is_long(ctx.grid.len(), k);
+                let watch = $crate::design::ranking_is_long(ctx.grid.len(), ranking.k());
                 let best = self.with_rank_columns(py, |cols| {
                     $crate::run::run_in(py, watch, None, None, "samples", |control| {
-                        ctx.$best(k, min_separation, rank_by, cols, control)
+                        ctx.$best(ranking, cols, control)
                     })
                 })?;
                 $crate::run::list_polled(py, &best, |b| {
@@ -480,7 +498,8 @@ macro_rules! py_map_class {
                 // Values and rows a map can hold, and nothing else.
                 let cols = burmester::design::Columns { $($name,)* };
                 let no_grashof = $crate::slider_map::NoGrashof::no_grashof(&context);
-                $crate::design::check_state(&cols, shape.1, &context.limits, no_grashof)?;
+                let limits = $crate::design::ContextLimits::context_limits(&context);
+                $crate::design::check_state(&cols, shape.1, &limits, no_grashof)?;
                 let burmester::design::Columns { $($name,)* } = cols;
                 Ok($cls {
                     $($name: $crate::design::readonly(py, shape, $name)?,)*
@@ -542,7 +561,7 @@ macro_rules! py_map_class {
             #[getter]
             fn limits(&self) -> $crate::classes::PyDesignLimits {
                 $crate::classes::PyDesignLimits {
-                    inner: self.context.limits,
+                    inner: $crate::design::ContextLimits::context_limits(&self.context),
                 }
             }
             fn __reduce__<'py>(&self, py: Python<'py>) -> $crate::pickle::Reduced<'py> {
@@ -552,7 +571,7 @@ macro_rules! py_map_class {
                 &self,
                 py: Python<'py>,
             ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
-                self.ranked(py, usize::MAX, Some(0.0), burmester::RankBy::Pareto)
+                self.ranked(py, burmester::Ranking::pareto_front())
             }
             /// A picture for Jupyter: PNG bytes drawn by `burmester._display`,
             /// or None without matplotlib.
@@ -687,8 +706,9 @@ pub(crate) use ranked_getters;
 
 /// The `#[pymethods]` block of a ranking method `$name` of the map class
 /// `$cls` (`k=5, min_separation=None, rank_by='balanced'`), delegating to
-/// its `$ranked(py, k, min_separation, rank_by)`, which returns a list
-/// (`-> $ret` where that is not a `PyList`).
+/// its `$ranked(py, ranking)` with the keywords checked once into a
+/// [`burmester::Ranking`], which returns a list (`-> $ret` where that is
+/// not a `PyList`).
 macro_rules! ranking_method {
     ($cls:ident, $name:ident, $ranked:ident) => {
         $crate::design::ranking_method!(
@@ -709,7 +729,9 @@ macro_rules! ranking_method {
             ) -> PyResult<$ret> {
                 use $crate::errors::IntoPy;
                 let rank_by = rank_by.parse::<burmester::RankBy>().py()?;
-                self.$ranked(py, k.0, min_separation.map(|r| r.0), rank_by)
+                let separation = min_separation.map(|r| r.0);
+                let ranking = burmester::Ranking::try_new(k.0, separation, rank_by).py()?;
+                self.$ranked(py, ranking)
             }
         }
     };

@@ -6,7 +6,8 @@ use burmester::design::{
     AttachmentSearch, Drive, DriveColumnsOut, DriveContext, DriveOptions, search_drives,
 };
 use burmester::{
-    Constraints, DesignLimits, Grid, MapOptions, Point2, RankBy, SixBar, SixBarJoints, Task,
+    Constraints, DesignLimits, Grid, MapOptions, Point2, RankBy, Ranking, SixBar, SixBarJoints,
+    Task,
 };
 use numpy::{PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyTypeError;
@@ -539,14 +540,8 @@ burmester::drive_map_columns!(py_drive_map);
 ranking_method!(PyDriveMap, best_drives, ranked -> Vec<PyDrive>);
 
 impl PyDriveMap {
-    /// The `k` best drives, reading the NumPy columns in place.
-    fn ranked(
-        &self,
-        py: Python<'_>,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-    ) -> PyResult<Vec<PyDrive>> {
+    /// The best drives by `ranking`, reading the NumPy columns in place.
+    fn ranked(&self, py: Python<'_>, ranking: Ranking) -> PyResult<Vec<PyDrive>> {
         let valid = self.valid.bind(py).readonly();
         let mt = self.min_transmission_rad.bind(py).readonly();
         let lr = self.link_ratio.bind(py).readonly();
@@ -560,9 +555,7 @@ impl PyDriveMap {
             acceptable: acc.as_slice()?,
         };
         let ctx = &self.context;
-        let drives = py
-            .detach(|| ctx.best_drives(k, min_separation, rank_by, cols))
-            .py()?;
+        let drives = py.detach(|| ctx.best_drives(ranking, cols)).py()?;
         Ok(drives
             .into_iter()
             .map(|d| PyDrive::of(d, self.task, ctx))
@@ -627,7 +620,7 @@ impl PyDriveMap {
         Ok(PyDrive::of(d, self.task, &self.context))
     }
     fn pareto_front(&self, py: Python<'_>) -> PyResult<Vec<PyDrive>> {
-        self.ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
+        self.ranked(py, Ranking::pareto_front())
     }
     /// The closed-form drive of time ratio 1 in this map's context.
     #[pyo3(signature = (beyond_first = true, drive_transmission_deg = None))]

@@ -138,7 +138,7 @@ impl PyPair {
 impl PyPairMap {
     /// The arguments of `_from_state` (for pickling).
     fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let constraints = constraint_state(&self.context.constraints);
+        let constraints = constraint_state(self.context.constraints());
         let columns = self.column_dict(py)?;
         (
             self.task(),

@@ -2,7 +2,7 @@
 //! `SolutionMap.slider_crank` and `SolutionMap.fixed_kind`, and how a map's
 //! fixed dyad of either kind crosses to Python and back (its pickle).
 
-use burmester::{Dyad, MapContext, PairContext, RankBy, SliderDyad, SliderPivot, Varying};
+use burmester::{Dyad, MapContext, PairContext, Ranking, SliderDyad, SliderPivot, Varying};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyList;
@@ -108,7 +108,7 @@ crate::design::ranking_method!(PySolutionMap, best_slider_pivots, slider_ranked)
 impl PySolutionMap {
     /// The Pareto front of a map with a driven slider, as `SliderPivot`s.
     fn slider_pareto_front<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        self.slider_ranked(py, usize::MAX, Some(0.0), RankBy::Pareto)
+        self.slider_ranked(py, Ranking::pareto_front())
     }
 }
 
@@ -118,17 +118,13 @@ impl PySolutionMap {
     fn slider_ranked<'py>(
         &self,
         py: Python<'py>,
-        k: usize,
-        sep: Option<f64>,
-        rank_by: RankBy,
+        ranking: Ranking,
     ) -> PyResult<Bound<'py, PyList>> {
         let ctx = &self.context;
-        let watch = crate::design::ranking_is_long(ctx.grid.len(), k);
+        let watch = crate::design::ranking_is_long(ctx.grid.len(), ranking.k());
         let best = self.with_rank_columns(py, |cols| {
             crate::run::run_in(py, watch, None, None, "samples", |control| {
-                ctx.best_pivots_with::<burmester::SynthesizedSliderCrank>(
-                    k, sep, rank_by, cols, control,
-                )
+                ctx.best_pivots_with::<burmester::SynthesizedSliderCrank>(ranking, cols, control)
             })
         })?;
         crate::run::list_polled(py, &best, |b| {

@@ -13,7 +13,7 @@
 //! ```
 
 use burmester::synthesis::{FivePositions, FourPositions};
-use burmester::{AssemblyMode, Control, FourBar, MapOptions, Point2, Pose, RankBy, Task};
+use burmester::{AssemblyMode, Control, FourBar, MapOptions, Point2, Pose, RankBy, Ranking, Task};
 
 /// The pose of the coupler of `fb` at crank angle `deg`: the coupler point
 /// at (1, 1.5) in the frame at the crank joint, x toward the rocker joint.
@@ -73,7 +73,7 @@ fn main() -> Result<(), burmester::Error> {
     let n_ok = pairs.columns.acceptable.iter().filter(|&&b| b).count();
     println!("pair map 200 x 200: {n_ok} acceptable pairs");
     for (k, p) in pairs
-        .best_pairs(3, None, RankBy::Balanced)?
+        .best_pairs(Ranking::new(3, RankBy::Balanced))?
         .iter()
         .enumerate()
     {

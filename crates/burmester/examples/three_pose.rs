@@ -10,7 +10,7 @@
 
 use burmester::{
     AssemblyMode, Constraints, Control, DesignLimits, Grid, InputRequirement, MapOptions, Point2,
-    RankBy, Task, Viewport,
+    RankBy, Ranking, Task, Viewport,
 };
 
 fn main() -> Result<(), burmester::Error> {
@@ -64,7 +64,7 @@ fn main() -> Result<(), burmester::Error> {
 
     // 4. The best pivots by the balanced score (force transmission, a small
     //    linkage and even links together), kept apart from each other.
-    let best = map.best_pivots(3, None, RankBy::Balanced)?;
+    let best = map.best_pivots(Ranking::new(3, RankBy::Balanced))?;
     for (k, p) in best.iter().enumerate() {
         let f = &p.linkage.figures;
         println!(

@@ -61,7 +61,7 @@
 //! ```
 //! use burmester::{
 //!     AssemblyMode, Constraints, Control, DesignLimits, Grid, InputRequirement, MapOptions,
-//!     Point2, RankBy, Task, Viewport,
+//!     Point2, RankBy, Ranking, Task, Viewport,
 //! };
 //! // x, y (mm) and the coupler's angle (radians) at each pose.
 //! let task = Task::from_xya(&[
@@ -75,7 +75,7 @@
 //! // The limits and constraints checked once, for any number of maps.
 //! let options = MapOptions::new(&limits, &Constraints::default())?;
 //! let map = filemon.solution_map(&grid, &options, &Control::new())?;
-//! let best = map.best_pivots(3, None, RankBy::Balanced)?;
+//! let best = map.best_pivots(Ranking::new(3, RankBy::Balanced))?;
 //! let linkage = best[0].linkage; // a SynthesizedFourBar: lengths, pivots, figures
 //! assert!(linkage.figures.min_transmission.to_degrees() >= 40.0);
 //! assert!(linkage.is_branch_free());
@@ -134,7 +134,7 @@ pub mod tolerance;
 pub use design::ActuatorSearch;
 pub use design::{
     AtlasBest, AtlasCell, Constraints, DesignLimits, InputRequirement, MapContext, MapOptions,
-    Pair, PairContext, PairMap, Pivot, PivotAtlas, RankBy, SolutionMap, Varying,
+    Pair, PairContext, PairMap, Pivot, PivotAtlas, RankBy, Ranking, SolutionMap, Varying,
 };
 pub use design::{
     Design, DesignOptions, DesignPlan, DesignReport, Limit, NearMiss, PivotRegion, SearchPoint,

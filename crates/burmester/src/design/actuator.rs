@@ -764,25 +764,26 @@ impl ActuatorContext {
     }
 
     best! {
-        /// The `k` best placements of a map's columns by `rank_by` (the
-        /// rankings of [`RankBy`] over the acceptable samples, the link ratio
-        /// that of the members with the actuator; [`RankBy::Margin`] orders the
-        /// monotone samples by their distance to the nearest non-monotone one).
-        /// Candidates closer than `min_separation` to a better one are skipped
-        /// (default, `None`: 2% of the viewport's diagonal).
+        /// The [`Ranking::k`](crate::Ranking::k) best placements of a map's
+        /// columns by `ranking` (the rankings of [`RankBy`] over the acceptable
+        /// samples, the link ratio that of the members with the actuator;
+        /// [`RankBy::Margin`] orders the monotone samples by their distance to
+        /// the nearest non-monotone one). Candidates closer than the ranking's
+        /// separation to a better one are skipped (default: 2% of the
+        /// viewport's diagonal).
         ///
         /// # Errors
         ///
-        /// [`InvalidInput::OutsideRange`] for a negative or non-finite
-        /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-        /// another length than the grid; [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+        /// [`InvalidInput::LengthMismatch`] for columns of another length than
+        /// the grid; [`Error::OutOfMemory`](crate::Error::OutOfMemory).
         best_placements(ActuatorRankColumns<'_>) -> Actuator, flagged placement_at
     }
 }
 
 impl ActuatorMap {
     best! {
-        /// The `k` best placements (see [`ActuatorContext::best_placements`]).
+        /// The best placements by `ranking` (see
+        /// [`ActuatorContext::best_placements`]).
         ///
         /// # Errors
         ///

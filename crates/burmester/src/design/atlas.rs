@@ -13,8 +13,8 @@
 //!   scores within [`tolerance::RANK_TIE`] tie and go to the more compact
 //!   linkage, the smaller size ratio, then to the larger margin to the
 //!   nearest branch-defect boundary, as in the maps), exactly the first
-//!   pivot of [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(1,
-//!   .., rank_by)`, with its figures and score;
+//!   pivot of [`SolutionMap::best_pivots`](crate::SolutionMap::best_pivots)`(`[`Ranking::new`](crate::Ranking::new)`(1,
+//!   rank_by))`, with its figures and score;
 //! * the number of branch-free driving samples (the map's `branch_free`
 //!   column).
 //!
@@ -567,7 +567,7 @@ fn all_acceptable(
     Ok(out)
 }
 
-/// The first pivot `best_pivots(1, _, rank_by)` takes from
+/// The first pivot `best_pivots(Ranking::new(1, rank_by))` takes from
 /// the candidates `cand` (`(k, score)`, in sample order): sorted by score,
 /// runs of ties by size ratio then margin, the first with a linkage.
 fn best(

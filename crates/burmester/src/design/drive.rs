@@ -86,7 +86,7 @@ use pulp::{Arch, Simd, WithSimd};
 use crate::design::columns::map_columns;
 use crate::design::constraints::Prepared;
 use crate::design::rank::{best, flagged_rank_columns, tie_order};
-use crate::design::{Constraints, DesignLimits, MapOptions, RankBy};
+use crate::design::{Constraints, DesignLimits, MapOptions, RankBy, Ranking};
 use crate::engine::{Control, Rows, run_blocks_polled, run_blocks_with};
 use crate::error::{
     DegenerateError, DriveError, InvalidInput, Result, count_in, finite_point, in_range, outside,
@@ -898,18 +898,17 @@ impl DriveContext {
     }
 
     best! {
-        /// The `k` best drives of a map's columns by `rank_by` (the rankings of
-        /// [`RankBy`] over the acceptable samples; [`RankBy::Margin`] orders the
-        /// valid samples by their distance to the nearest sample without a
-        /// drive). Candidates closer than `min_separation` to a better one are
-        /// skipped (default, `None`: 2% of the viewport's diagonal).
+        /// The [`Ranking::k`](crate::Ranking::k) best drives of a map's
+        /// columns by `ranking` (the rankings of [`RankBy`] over the acceptable
+        /// samples; [`RankBy::Margin`] orders the valid samples by their
+        /// distance to the nearest sample without a drive). Candidates closer
+        /// than the ranking's separation to a better one are skipped (default:
+        /// 2% of the viewport's diagonal).
         ///
         /// # Errors
         ///
-        /// [`InvalidInput::OutsideRange`] for a negative or non-finite
-        /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-        /// another length than the grid;
-        /// [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+        /// [`InvalidInput::LengthMismatch`] for columns of another length than
+        /// the grid; [`Error::OutOfMemory`](crate::Error::OutOfMemory).
         best_drives(DriveRankColumns<'_>) -> Drive, flagged drive_at
     }
 }
@@ -922,7 +921,7 @@ flagged_rank_columns! {
 
 impl DriveMap {
     best! {
-        /// The `k` best drives (see [`DriveContext::best_drives`]).
+        /// The best drives by `ranking` (see [`DriveContext::best_drives`]).
         ///
         /// # Errors
         ///
@@ -1495,7 +1494,11 @@ pub fn search_drives(
                 }
             }
         }
-        if let Some(d) = map.best_drives(1, None, rank_by)?.into_iter().next() {
+        if let Some(d) = map
+            .best_drives(Ranking::new(1, rank_by))?
+            .into_iter()
+            .next()
+        {
             drives.push(d);
         }
     }
@@ -1628,7 +1631,9 @@ mod tests {
                 &Control::new(),
             )
             .unwrap();
-        map.best_pivots(1, None, RankBy::Transmission).unwrap()[0].linkage
+        map.best_pivots(Ranking::new(1, RankBy::Transmission))
+            .unwrap()[0]
+            .linkage
     }
 
     /// A drive map with an obstacle polls its cancel flag inside a sample's

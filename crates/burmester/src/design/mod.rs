@@ -80,7 +80,7 @@ pub use limits::{DesignLimits, InputRequirement};
 pub use map::{MapContext, SolutionMap, Varying};
 pub use options::MapOptions;
 pub use pairs::{Pair, PairContext, PairMap};
-pub use rank::{Pivot, PivotLinkage, RankBy, RankColumns, SliderPivot};
+pub use rank::{Pivot, PivotLinkage, RankBy, RankColumns, Ranking, SliderPivot};
 pub use search::ActuatorSearch;
 pub use search::{
     Design, DesignOptions, DesignPlan, DesignReport, DesignedLinkage, DrivenKind, Limit, NearMiss,

@@ -37,7 +37,7 @@ use crate::design::options::MapOptions;
 use crate::design::rank::{
     Offer, RankColumns, RankedContext, best, best_with, signed_distances_with,
 };
-use crate::design::{Constraints, DesignLimits, RankBy};
+use crate::design::{Constraints, DesignLimits, RankBy, Ranking};
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result, try_collect};
 use crate::geom::Grid;
@@ -64,10 +64,8 @@ pub struct PairContext {
     pub driving: Vec<Option<CurveDyad>>,
     /// The driven dyad of each row; `None` as for [`PairContext::driving`].
     pub driven: Vec<Option<CurveDyad>>,
-    /// The limits behind `acceptable`.
-    pub limits: DesignLimits,
-    /// The constraints behind `acceptable`.
-    pub constraints: Constraints,
+    /// The limits and constraints behind `acceptable`, checked.
+    map_options: MapOptions,
 }
 
 /// The parameter plane, the task, how many dyads each axis has, the
@@ -79,8 +77,8 @@ impl core::fmt::Debug for PairContext {
             .field("task", &self.task)
             .field("driving_dyads", &self.driving.len())
             .field("driven_dyads", &self.driven.len())
-            .field("limits", &self.limits)
-            .field("constraints", &self.constraints)
+            .field("limits", self.limits())
+            .field("constraints", self.constraints())
             .finish()
     }
 }
@@ -154,7 +152,7 @@ impl Task {
     /// # Example
     ///
     /// ```
-    /// use burmester::{Constraints, Control, DesignLimits, MapOptions, RankBy, Task};
+    /// use burmester::{Constraints, Control, DesignLimits, MapOptions, RankBy, Ranking, Task};
     /// // Four poses of the coupler of a crank-rocker (A0 = (0, 0), B0 = (4, 0)).
     /// let task = Task::from_xya(&[
     ///     [1.049199280691, 2.279426358634, 45.220037141544_f64.to_radians()],
@@ -164,7 +162,7 @@ impl Task {
     /// ])?;
     /// let options = MapOptions::new(&DesignLimits::default(), &Constraints::default())?;
     /// let map = task.pair_map(64, 64, &options, &Control::new())?;
-    /// let best = map.best_pairs(3, None, RankBy::Balanced)?;
+    /// let best = map.best_pairs(Ranking::new(3, RankBy::Balanced))?;
     /// assert!(!best.is_empty());
     /// for p in &best {
     ///     // The pair's linkage passes the four poses, branch-free, in order.
@@ -263,8 +261,7 @@ impl Task {
             task: *self,
             driving: self.buildable(four.parameter_samples_with(n_driving, control)?, control)?,
             driven: self.buildable(four.parameter_samples_with(n_driven, control)?, control)?,
-            limits: *options.limits(),
-            constraints: options.constraints().clone(),
+            map_options: options.clone(),
         })
     }
 }
@@ -308,8 +305,9 @@ impl PairContext {
     /// when its task does not have four poses, as [`Task::pair_map`] for
     /// its limits and constraints; [`Error::Cancelled`](crate::Error::Cancelled).
     pub fn map_into(&self, out: ColumnsOut<'_>, control: &Control<'_>) -> Result<()> {
-        // The fields are public: a context put together by hand must still
-        // be one `pair_context` could give.
+        // The task and the dyads are public: a context changed by hand must
+        // still be one `pair_context` could give (its options were checked
+        // when it was made).
         if self.task.len() != 4 {
             return Err(self.task.needs(4, "PairContext::map_into"));
         }
@@ -327,11 +325,7 @@ impl PairContext {
             }
         }
         out.check_len(self.grid.len())?;
-        self.fill(
-            &MapOptions::new(&self.limits, &self.constraints)?,
-            out,
-            control,
-        )
+        self.fill(&self.map_options, out, control)
     }
 
     /// The columns of the map, this context checked to be one
@@ -363,6 +357,21 @@ impl PairContext {
             let free = fig.is_some_and(|f| f.branch_free());
             judge.sample(fig, free, &[da.center, dc.center], *da, *dc)
         })
+    }
+
+    /// The limits behind `acceptable`.
+    pub fn limits(&self) -> &DesignLimits {
+        self.map_options.limits()
+    }
+
+    /// The constraints behind `acceptable`.
+    pub fn constraints(&self) -> &Constraints {
+        self.map_options.constraints()
+    }
+
+    /// The limits and the constraints, checked (as the context was made).
+    pub fn map_options(&self) -> &MapOptions {
+        &self.map_options
     }
 
     /// `(n_driven, n_driving)`: the rows and the columns of the map.
@@ -425,19 +434,18 @@ impl PairContext {
     }
 
     best! {
-        /// The `k` best pairs, best first, from the map's columns, by `rank_by`
-        /// (the rankings of the three-pose map, [`RankBy`]: runs of scores
-        /// within [`tolerance::RANK_TIE`](crate::tolerance::RANK_TIE) go to the
-        /// smaller size ratio, then the larger margin). A pair closer than
-        /// `min_separation` in the parameter plane to a better one is skipped,
-        /// so the list offers distinct options (default, `None`: 2% of the
-        /// plane's diagonal).
+        /// The [`Ranking::k`] best pairs, best first, from the map's columns,
+        /// by `ranking` (the rankings of the three-pose map, [`RankBy`]: runs
+        /// of scores within [`tolerance::RANK_TIE`](crate::tolerance::RANK_TIE)
+        /// go to the smaller size ratio, then the larger margin). A pair closer
+        /// than the ranking's separation in the parameter plane to a better one
+        /// is skipped, so the list offers distinct options (default:
+        /// [`Ranking::DEFAULT_SEPARATION`] of the plane's diagonal).
         ///
         /// # Errors
         ///
-        /// [`InvalidInput::OutsideRange`] for a negative or non-finite
-        /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-        /// another length than the map.
+        /// [`InvalidInput::LengthMismatch`] for columns of another length than
+        /// the map.
         best_pairs(RankColumns<'_>) -> Pair, with best_pairs_with
     }
 
@@ -453,13 +461,11 @@ impl PairContext {
     /// [`Error::Cancelled`](crate::Error::Cancelled).
     pub fn best_pairs_with(
         &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
+        ranking: Ranking,
         columns: RankColumns<'_>,
         control: &Control<'_>,
     ) -> Result<Vec<Pair>> {
-        best_with(self, k, min_separation, rank_by, columns, control)
+        best_with(self, ranking, columns, control)
     }
 }
 
@@ -527,7 +533,8 @@ impl PairMap {
     }
 
     best! {
-        /// The `k` best pairs, best first (see [`PairContext::best_pairs`]).
+        /// The best pairs by `ranking`, best first (see
+        /// [`PairContext::best_pairs`]).
         ///
         /// # Errors
         ///
@@ -537,13 +544,12 @@ impl PairMap {
 
     /// The whole Pareto front of the acceptable pairs over the minimum
     /// transmission angle and the size ratio, from the most compact to the
-    /// best transmission: `best_pairs(usize::MAX, Some(0.0),
-    /// RankBy::Pareto)`.
+    /// best transmission: `best_pairs(Ranking::pareto_front())`.
     ///
     /// # Errors
     ///
     /// As [`PairContext::best_pairs`].
     pub fn pareto_front(&self) -> Result<Vec<Pair>> {
-        self.best_pairs(usize::MAX, Some(0.0), RankBy::Pareto)
+        self.best_pairs(Ranking::pareto_front())
     }
 }

@@ -10,7 +10,7 @@ use nalgebra::Point2;
 use crate::design::{Columns, MapContext, SolutionMap, Varying};
 use crate::engine::Control;
 use crate::error::{InvalidInput, Result, in_range, named, out_of_memory, try_push, try_vec};
-use crate::geom::Grid;
+use crate::geom::{Grid, Viewport};
 use crate::synthesis::three::Filemon;
 use crate::synthesis::{SynthesizedFourBar, SynthesizedSliderCrank};
 use crate::tolerance;
@@ -107,6 +107,145 @@ impl FromStr for RankBy {
         let expected = "\"balanced\", \"transmission\", \"compact\", \"pareto\" or \"margin\"";
         let is = |r: &RankBy| r.as_str().eq_ignore_ascii_case(s);
         named(RankBy::ALL, is, "ranking", expected, s)
+    }
+}
+
+/// How a map's samples are ranked, checked once: how many to keep (`k`),
+/// the least distance between two of them (`min_separation`) and what
+/// orders them ([`RankBy`]). Every `best_*` ranking of a map takes one
+/// ([`MapContext::best_pivots`], [`SolutionMap::best_pivots`],
+/// [`PairMap::best_pairs`](crate::PairMap::best_pairs),
+/// [`DriveMap::best_drives`](crate::design::DriveMap::best_drives),
+/// [`ActuatorMap::best_placements`](crate::design::ActuatorMap::best_placements),
+/// ...), so none of them checks it again.
+///
+/// A candidate closer than the separation to a better one is skipped, so
+/// that the list offers distinct options. The separation is measured on
+/// the map's grid (in the task's units for a pivot map, in radians of crank
+/// rotation for a pair map); by default ([`Ranking::new`],
+/// `min_separation() == None`) it is [`Ranking::DEFAULT_SEPARATION`] of the
+/// diagonal of the map's viewport:
+///
+/// ```text
+/// separation = min_separation              (given, >= 0 and finite)
+///            = 0.02 * hypot(width, height)  (default: the viewport's)
+/// ```
+///
+/// # Example
+///
+/// ```
+/// use burmester::{Error, InvalidInput, RankBy, Ranking};
+/// let ranking = Ranking::new(3, RankBy::Transmission);
+/// assert_eq!((ranking.k(), ranking.min_separation()), (3, None));
+/// let apart = ranking.with_separation(0.5)?;
+/// assert_eq!(apart.min_separation(), Some(0.5));
+/// assert_eq!(apart.rank_by(), RankBy::Transmission);
+/// // A negative or non-finite separation is refused once, here.
+/// assert!(matches!(
+///     ranking.with_separation(-1.0),
+///     Err(Error::InvalidInput(InvalidInput::OutsideRange { name: "min_separation", .. }))
+/// ));
+/// // An optional separation (None: the default), as a binding gets it.
+/// assert_eq!(Ranking::try_new(3, Some(0.5), RankBy::Transmission)?, apart);
+/// # Ok::<(), burmester::Error>(())
+/// ```
+///
+/// # See also
+///
+/// [`MapOptions`](crate::MapOptions), the limits and constraints a map is
+/// computed under, checked once in the same way.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ranking {
+    k: usize,
+    min_separation: Option<f64>,
+    rank_by: RankBy,
+}
+
+impl Ranking {
+    /// The default minimum separation, as a share of the diagonal of the
+    /// map's viewport.
+    pub const DEFAULT_SEPARATION: f64 = 0.02;
+
+    /// The `k` best samples by `rank_by`, at least the default separation
+    /// apart ([`Ranking::DEFAULT_SEPARATION`] of the viewport's diagonal).
+    pub const fn new(k: usize, rank_by: RankBy) -> Self {
+        Ranking {
+            k,
+            min_separation: None,
+            rank_by,
+        }
+    }
+
+    /// The whole Pareto front of the acceptable samples over the minimum
+    /// transmission angle and the size ratio ([`RankBy::Pareto`]), none
+    /// left out: every one of them (`k = usize::MAX`) with no separation
+    /// (`Some(0.0)`).
+    pub const fn pareto_front() -> Self {
+        Ranking {
+            k: usize::MAX,
+            min_separation: Some(0.0),
+            rank_by: RankBy::Pareto,
+        }
+    }
+
+    /// This ranking with the minimum separation `min_separation`, in the
+    /// units of the map's grid.
+    ///
+    /// # Errors
+    ///
+    /// [`InvalidInput::OutsideRange`] for a negative or non-finite
+    /// `min_separation`.
+    pub fn with_separation(self, min_separation: f64) -> Result<Self> {
+        in_range("min_separation", min_separation, 0.0, f64::MAX, "")?;
+        Ok(Ranking {
+            min_separation: Some(min_separation),
+            ..self
+        })
+    }
+
+    /// [`Ranking::new`], then [`with_separation`](Self::with_separation)
+    /// where `min_separation` is given (`None`: the default): the form for a
+    /// caller whose separation is optional (a binding's keyword).
+    ///
+    /// # Errors
+    ///
+    /// As [`with_separation`](Self::with_separation).
+    pub fn try_new(k: usize, min_separation: Option<f64>, rank_by: RankBy) -> Result<Self> {
+        let ranking = Ranking::new(k, rank_by);
+        match min_separation {
+            Some(s) => ranking.with_separation(s),
+            None => Ok(ranking),
+        }
+    }
+
+    /// How many samples to keep, at most.
+    pub const fn k(&self) -> usize {
+        self.k
+    }
+
+    /// The minimum separation as given; `None`: the default.
+    pub const fn min_separation(&self) -> Option<f64> {
+        self.min_separation
+    }
+
+    /// What orders the samples.
+    pub const fn rank_by(&self) -> RankBy {
+        self.rank_by
+    }
+
+    /// The separation on a map whose viewport is `viewport`: the given one,
+    /// or [`Ranking::DEFAULT_SEPARATION`] of its diagonal.
+    pub fn separation(&self, viewport: &Viewport) -> f64 {
+        self.min_separation
+            .unwrap_or(Self::DEFAULT_SEPARATION * viewport.diagonal())
+    }
+}
+
+impl Default for Ranking {
+    /// The five best by the default ranking ([`RankBy::Balanced`]), at the
+    /// default separation: the binding's defaults.
+    fn default() -> Self {
+        Ranking::new(5, RankBy::default())
     }
 }
 
@@ -221,10 +360,10 @@ macro_rules! flagged_rank_columns {
 }
 pub(crate) use flagged_rank_columns;
 
-/// A ranking `$best(k, min_separation, rank_by)`, documented by `$doc`:
-/// the `k` best `$item`s by `rank_by`, candidates closer than
-/// `min_separation` to a better one skipped. A map's (`$best -> $item`)
-/// is its context's `$best` over its own
+/// A ranking `$best(ranking)`, documented by `$doc`: the
+/// [`Ranking::k`] best `$item`s by its [`RankBy`], candidates closer than
+/// its separation to a better one skipped. A map's (`$best -> $item`) is
+/// its context's `$best` over its own
 /// [`rank_columns`](SolutionMap::rank_columns). A context's takes the
 /// `columns` (`$best($columns) -> $item`) and, following a control
 /// (`with $with`), asks `$with` with a control that is never cancelled, or,
@@ -233,39 +372,32 @@ pub(crate) use flagged_rank_columns;
 macro_rules! best {
     ($(#[$doc:meta])* $best:ident -> $item:ty) => {
         $crate::design::rank::best! {
-            @fn [$(#[$doc])*] $best(self, k, min_separation, rank_by) -> $item {
-                self.context
-                    .$best(k, min_separation, rank_by, self.rank_columns())
+            @fn [$(#[$doc])*] $best(self, ranking) -> $item {
+                self.context.$best(ranking, self.rank_columns())
             }
         }
     };
     ($(#[$doc:meta])* $best:ident($columns:ty) -> $item:ty, with $with:ident) => {
         $crate::design::rank::best! {
-            @fn [$(#[$doc])*] $best(self, k, min_separation, rank_by, columns: $columns) -> $item {
-                let control = $crate::engine::Control::new();
-                self.$with(k, min_separation, rank_by, columns, &control)
+            @fn [$(#[$doc])*] $best(self, ranking, columns: $columns) -> $item {
+                self.$with(ranking, columns, &$crate::engine::Control::new())
             }
         }
     };
     ($(#[$doc:meta])* $best:ident($columns:ty) -> $item:ty, flagged $at:ident) => {
         $crate::design::rank::best! {
-            @fn [$(#[$doc])*] $best(self, k, min_separation, rank_by, columns: $columns) -> $item {
+            @fn [$(#[$doc])*] $best(self, ranking, columns: $columns) -> $item {
                 let ranked = columns.ranked();
-                $crate::design::rank::best_flagged(&self.grid, k, min_separation, rank_by, ranked, |s| {
-                    self.$at(s)
-                })
+                $crate::design::rank::best_flagged(&self.grid, ranking, ranked, |s| self.$at(s))
             }
         }
     };
-    (@fn [$($doc:tt)*] $best:ident(
-        $s:ident, $k:ident, $sep:ident, $by:ident $(, $c:ident: $columns:ty)?
-    ) -> $item:ty $body:block) => {
+    (@fn [$($doc:tt)*] $best:ident($s:ident, $r:ident $(, $c:ident: $columns:ty)?) -> $item:ty
+        $body:block) => {
         $($doc)*
         pub fn $best(
             &$s,
-            $k: usize,
-            $sep: Option<f64>,
-            $by: $crate::design::RankBy,
+            $r: $crate::design::Ranking,
             $($c: $columns)?
         ) -> $crate::error::Result<Vec<$item>> $body
     };
@@ -309,7 +441,8 @@ impl SolutionMap {
     }
 
     best! {
-        /// The `k` best candidates, best first (see [`MapContext::best_pivots`]).
+        /// The best candidates by `ranking`, best first (see
+        /// [`MapContext::best_pivots`]).
         ///
         /// # Errors
         ///
@@ -323,45 +456,31 @@ impl SolutionMap {
     /// # Errors
     ///
     /// As [`MapContext::best_pivots_with`].
-    pub fn best_pivots_with(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-        control: &Control<'_>,
-    ) -> Result<Vec<Pivot>> {
-        self.context
-            .best_pivots_with(k, min_separation, rank_by, self.rank_columns(), control)
+    pub fn best_pivots_with(&self, ranking: Ranking, control: &Control<'_>) -> Result<Vec<Pivot>> {
+        (self.context).best_pivots_with(ranking, self.rank_columns(), control)
     }
 
     /// The whole Pareto front of the acceptable candidates over the minimum
     /// transmission angle and the size ratio, from the most compact to the
-    /// best transmission: `best_pivots(usize::MAX, Some(0.0),
-    /// RankBy::Pareto)`.
+    /// best transmission: `best_pivots(Ranking::pareto_front())`.
     ///
     /// # Errors
     ///
     /// As [`MapContext::best_pivots`].
     pub fn pareto_front(&self) -> Result<Vec<Pivot>> {
-        self.best_pivots(usize::MAX, Some(0.0), RankBy::Pareto)
+        self.best_pivots(Ranking::pareto_front())
     }
 
-    /// The `k` best candidates of a map with a driven slider, best first,
+    /// The best candidates by `ranking` of a map with a driven slider, best first,
     /// each with its slider-crank (see
     /// [`MapContext::best_pivots_with`]).
     ///
     /// # Errors
     ///
     /// As [`MapContext::best_pivots_with`].
-    pub fn best_slider_pivots(
-        &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
-    ) -> Result<Vec<SliderPivot>> {
+    pub fn best_slider_pivots(&self, ranking: Ranking) -> Result<Vec<SliderPivot>> {
         let columns = self.rank_columns();
-        let control = Control::new();
-        (self.context).best_pivots_with(k, min_separation, rank_by, columns, &control)
+        (self.context).best_pivots_with(ranking, columns, &Control::new())
     }
 
     /// The whole Pareto front of a map with a driven slider (as
@@ -371,7 +490,7 @@ impl SolutionMap {
     ///
     /// As [`MapContext::best_pivots_with`].
     pub fn slider_pareto_front(&self) -> Result<Vec<SliderPivot>> {
-        self.best_slider_pivots(usize::MAX, Some(0.0), RankBy::Pareto)
+        self.best_slider_pivots(Ranking::pareto_front())
     }
 }
 
@@ -395,23 +514,22 @@ impl MapContext {
     }
 
     best! {
-        /// The `k` best candidates, best first, from the map's columns, by
-        /// `rank_by` (see [`RankBy`] for the candidates and scores of each
-        /// ranking; runs of scores within [`tolerance::RANK_TIE`] go to the
-        /// smaller size ratio, then the larger margin). Candidates closer than `min_separation` to a better
-        /// one are skipped, so the list offers distinct options (default,
-        /// `None`: 2% of the viewport's diagonal); candidates without a
-        /// linkage are skipped.
+        /// The [`Ranking::k`] best candidates, best first, from the map's
+        /// columns, by the ranking's [`RankBy`] (see [`RankBy`] for the
+        /// candidates and scores of each ranking; runs of scores within
+        /// [`tolerance::RANK_TIE`] go to the smaller size ratio, then the
+        /// larger margin). Candidates closer than the ranking's separation
+        /// to a better one are skipped, so the list offers distinct options
+        /// (default: [`Ranking::DEFAULT_SEPARATION`] of the viewport's
+        /// diagonal); candidates without a linkage are skipped.
         ///
         /// The candidates are selected, not sorted: `O(n log k)` for `n`
         /// samples (the Pareto front sorts its candidates, `O(n log n)`).
         ///
         /// # Errors
         ///
-        /// [`InvalidInput::OutsideRange`] for a negative or non-finite
-        /// `min_separation`; [`InvalidInput::LengthMismatch`] for columns of
-        /// another length than the grid;
-        /// [`Error::OutOfMemory`](crate::Error::OutOfMemory);
+        /// [`InvalidInput::LengthMismatch`] for columns of another length
+        /// than the grid; [`Error::OutOfMemory`](crate::Error::OutOfMemory);
         /// [`InvalidInput::DrivenKind`] for a map with a driven slider (a
         /// [`Pivot`] carries a four-bar; rank its samples from the columns and
         /// build each with [`MapContext::slider_crank`]).
@@ -438,9 +556,7 @@ impl MapContext {
     /// map's driven dyad (naming the ranking to use instead).
     pub fn best_pivots_with<L: PivotLinkage>(
         &self,
-        k: usize,
-        min_separation: Option<f64>,
-        rank_by: RankBy,
+        ranking: Ranking,
         columns: RankColumns<'_>,
         control: &Control<'_>,
     ) -> Result<Vec<Pivot<L>>> {
@@ -458,7 +574,7 @@ impl MapContext {
             .into());
         }
         let ranked = Ranked(self, core::marker::PhantomData::<L>);
-        best_with(&ranked, k, min_separation, rank_by, columns, control)
+        best_with(&ranked, ranking, columns, control)
     }
 }
 
@@ -638,10 +754,10 @@ impl<T: FlaggedItem, F: Fn(usize) -> Result<T>> RankedContext for Flagged<'_, F>
     }
 }
 
-/// The `k` best results of a map with one flag column on `grid` (a drive
-/// map's, an actuator map's), best first, from its `columns` (as
-/// [`RankColumns`]: the flag column both `valid` and `branch_free`), by
-/// `rank_by`, each built by `at` (a sample without one is skipped), as
+/// The best results of a map with one flag column on `grid` (a drive
+/// map's, an actuator map's) by `ranking`, best first, from its `columns`
+/// (as [`RankColumns`]: the flag column both `valid` and `branch_free`),
+/// each built by `at` (a sample without one is skipped), as
 /// [`best_with`] gives them; every margin is computed at once, by the
 /// distance transform (the distance to the nearest sample without the
 /// flag).
@@ -651,25 +767,15 @@ impl<T: FlaggedItem, F: Fn(usize) -> Result<T>> RankedContext for Flagged<'_, F>
 /// As [`best_with`].
 pub(crate) fn best_flagged<T: FlaggedItem>(
     grid: &Grid,
-    k: usize,
-    min_separation: Option<f64>,
-    rank_by: RankBy,
+    ranking: Ranking,
     columns: RankColumns<'_>,
     at: impl Fn(usize) -> Result<T>,
 ) -> Result<Vec<T>> {
-    let flagged = Flagged { grid, at };
-    best_with(
-        &flagged,
-        k,
-        min_separation,
-        rank_by,
-        columns,
-        &Control::new(),
-    )
+    best_with(&Flagged { grid, at }, ranking, columns, &Control::new())
 }
 
-/// The `k` best results of a map with context `ctx`, best first, from its
-/// `columns`, by `rank_by` (as [`MapContext::best_pivots_with`] says),
+/// The best results of a map with context `ctx` by `ranking`, best first,
+/// from its `columns` (as [`MapContext::best_pivots_with`] says),
 /// following `control`.
 ///
 /// # Errors
@@ -677,17 +783,13 @@ pub(crate) fn best_flagged<T: FlaggedItem>(
 /// As [`MapContext::best_pivots_with`].
 pub(crate) fn best_with<C: RankedContext>(
     ctx: &C,
-    k: usize,
-    min_separation: Option<f64>,
-    rank_by: RankBy,
+    ranking: Ranking,
     columns: RankColumns<'_>,
     control: &Control<'_>,
 ) -> Result<Vec<C::Item>> {
     let grid = ctx.grid();
-    let sep = match min_separation {
-        Some(s) => in_range("min_separation", s, 0.0, f64::MAX, "")?,
-        None => 0.02 * grid.viewport().diagonal(),
-    };
+    let (k, rank_by) = (ranking.k(), ranking.rank_by());
+    let sep = ranking.separation(&grid.viewport());
     let n = grid.len();
     columns.check_len(n)?;
     // A map that wants every margin asks for them all.

@@ -6,8 +6,8 @@
 use nalgebra::Point2;
 
 use super::{Design, DesignOptions, grid_over};
-use crate::design::MapOptions;
 use crate::design::actuator::{Actuator, ActuatorContext, ActuatorOptions};
+use crate::design::{MapOptions, Ranking};
 use crate::engine::Control;
 use crate::error::{Error, Result, count_in, finite_point};
 use crate::geom::Viewport;
@@ -144,7 +144,7 @@ impl ActuatorSearch {
                 Err(e) => return Err(e),
             };
             let map = ctx.map(control)?;
-            let found = map.best_placements(CANDIDATES, None, options.rank_by)?;
+            let found = map.best_placements(Ranking::new(CANDIDATES, options.rank_by))?;
             let clear = found
                 .into_iter()
                 .find(|a| a.acceptable && a.monotone && a.clear);
