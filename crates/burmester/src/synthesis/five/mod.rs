@@ -222,45 +222,92 @@ impl FivePositions {
         // within `BURMESTER_NEAR` task sizes while losing others:
         // those points exist (each passed `polish`), so a later choice that
         // finds fewer, none at all for a badly conditioned one, lost them
-        // too, within its rounding, and is not clean.
+        // too, within its rounding, and is not clean. And it lists every
+        // Burmester point at coincident poles (`P_ab = P_cd`, verified by
+        // `polish`), which the choices whose `Q` or shared pole is there
+        // cannot see (those come last; if no clean choice lists them all,
+        // the first clean one is taken, as before).
         let mut taken: Option<(Vec<Dyad>, Vec<BurmesterSlider>)> = None;
         let mut any = false;
         let mut verified = 0;
-        'choices: for &(_, i, j) in &pairs {
-            let others: Vec<usize> = (0..5).filter(|&k| k != i && k != j).collect();
+        let mut choices: Vec<[usize; 5]> = Vec::with_capacity(3 * pairs.len());
+        for &(_, i, j) in &pairs {
+            let mut others = [0; 3];
+            for (slot, k) in others.iter_mut().zip((0..5).filter(|&k| k != i && k != j)) {
+                *slot = k;
+            }
             for r in 0..3 {
-                let k = others[r];
-                let l: Vec<usize> = others.iter().copied().filter(|&x| x != k).collect();
-                let order = [i, j, k, l[0], l[1]];
-                let sub = LocalMotion::new(&order.map(|x| poses[x]))?;
-                let Some(elim) = Elimination::new(&sub) else {
-                    continue;
-                };
-                any = true;
-                let (points, sliders, lost, distinct) = elim.points(&sub, &motion)?;
-                // Two cubics meet in nine points: `Q`, `P13`, `P23`, the two
-                // circular points and at most four Burmester points. More
-                // (double roots of the resultant declared within a band wide
-                // enough to hold several critical points, or one root read
-                // as a finite point and a slider) is this elimination's
-                // rounding, not an answer.
-                let total = points.len() + sliders.len();
-                if total > MAX_POINTS {
-                    continue;
+                let [a, b] = [(r + 1) % 3, (r + 2) % 3].map(|x| others[x]);
+                choices.push([i, j, others[r], a.min(b), a.max(b)]);
+            }
+        }
+        // The Burmester points at coincident poles, verified: a choice must
+        // list them (see [`coincident_poles`]).
+        let mut required: Vec<Dyad> = Vec::new();
+        for g in coincident_poles(&motion) {
+            if let Ok(Polished::One(d)) = polish(&motion, g, 1) {
+                if !required.iter().any(|r| same_point(&motion, r, &d)) {
+                    required.push(d);
                 }
-                let near = points
+            }
+        }
+        // A choice whose `Q` or shared pole is at such a point is blind to
+        // it (the point is `Q`, or taken out as the pole) and its count is
+        // off there (`Q` a double common point): those choices last.
+        let at: Vec<Vector2<f64>> = required.iter().map(|d| motion.local_of(d.center)).collect();
+        if !at.is_empty() {
+            choices.sort_by_key(|o| {
+                [(o[0], o[1]), (o[0], o[2]), (o[1], o[2])]
                     .iter()
-                    .filter(|d| {
-                        (d.center - motion.origin).norm()
-                            <= tolerance::BURMESTER_NEAR * motion.scale
+                    .any(|&(a, b)| {
+                        let h = motion.pole(a, b);
+                        h[2] != 0.0 && {
+                            let x = Vector2::new(h[0] / h[2], h[1] / h[2]);
+                            at.iter()
+                                .any(|p| (x - p).norm() <= POLE_MATCH * (1.0 + x.norm()))
+                        }
                     })
-                    .count();
-                if lost == 0 && total % 2 == 0 && near >= verified {
+            });
+        }
+        let mut fallback: Option<(Vec<Dyad>, Vec<BurmesterSlider>)> = None;
+        'choices: for order in choices {
+            let sub = LocalMotion::new(&order.map(|x| poses[x]))?;
+            let Some(elim) = Elimination::new(&sub) else {
+                continue;
+            };
+            any = true;
+            let (points, sliders, lost, distinct) = elim.points(&sub, &motion)?;
+            // Two cubics meet in nine points: `Q`, `P13`, `P23`, the two
+            // circular points and at most four Burmester points. More
+            // (double roots of the resultant declared within a band wide
+            // enough to hold several critical points, or one root read
+            // as a finite point and a slider) is this elimination's
+            // rounding, not an answer.
+            let total = points.len() + sliders.len();
+            if total > MAX_POINTS {
+                continue;
+            }
+            let near = points
+                .iter()
+                .filter(|d| {
+                    (d.center - motion.origin).norm() <= tolerance::BURMESTER_NEAR * motion.scale
+                })
+                .count();
+            if lost == 0 && total % 2 == 0 && near >= verified {
+                if required
+                    .iter()
+                    .all(|r| points.iter().any(|d| same_point(&motion, r, d)))
+                {
                     taken = Some((points, sliders));
                     break 'choices;
                 }
-                verified = verified.max(distinct);
+                // Blind to a point at coincident poles: taken only if no
+                // clean choice lists them all (as before).
+                if fallback.is_none() {
+                    fallback = Some((points, sliders));
+                }
             }
+            verified = verified.max(distinct);
         }
         if !any {
             return Err(errors::infinitely_many(
@@ -269,7 +316,7 @@ impl FivePositions {
                  infinity: a family of sliders)",
             ));
         }
-        let Some((mut points, sliders)) = taken else {
+        let Some((mut points, sliders)) = taken.or(fallback) else {
             // Poses given far from the origin for their size carry the
             // rounding of their coordinates (`eps` of them), which can
             // decide two nearly merging points (real, or a complex pair):
@@ -418,6 +465,50 @@ fn spread(d: impl Iterator<Item = f64>) -> f64 {
     } else {
         f64::INFINITY
     }
+}
+
+/// The points where two poles of disjoint pairs of poses coincide (within
+/// [`POLE_MATCH`], local): `P_ab = P_cd` is a Burmester center (the
+/// rotations `a -> b` and `c -> d` about it leave two conditions on the
+/// circle point, which meet), found by no elimination from `Q = P_ab` or
+/// with `P_ab` for a shared pole: there it is `Q` itself, or taken out as
+/// the pole. (Two pairs of poses at one position each, half a turn apart:
+/// `P13 = P24`, a Burmester point that the first choices, each blind to it,
+/// left out with an even count; five37, `a3403902`, `beafcbe6`,
+/// `ce022d68`.)
+fn coincident_poles(m: &LocalMotion) -> Vec<Vector2<f64>> {
+    let mut poles = [([0usize; 2], None::<Vector2<f64>>); 10];
+    let mut n = 0;
+    for a in 0..5 {
+        for b in a + 1..5 {
+            let h = m.pole(a, b);
+            poles[n] = (
+                [a, b],
+                (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2])),
+            );
+            n += 1;
+        }
+    }
+    let mut out = Vec::new();
+    for (n, (p, x)) in poles.iter().enumerate() {
+        for (q, y) in &poles[n + 1..] {
+            let disjoint = p.iter().all(|i| !q.contains(i));
+            if let (true, Some(x), Some(y)) = (disjoint, x, y) {
+                if (x - y).norm() <= POLE_MATCH * (1.0 + x.norm()) {
+                    out.push((x + y) * 0.5);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Whether two Burmester points (global) are one: their centers within
+/// [`DOUBLE_REACH`] of `size + distance` (each polished by Newton's
+/// method to rounding; two points that close are one for [`polish`] too).
+fn same_point(m: &LocalMotion, a: &Dyad, b: &Dyad) -> bool {
+    let d = (a.center - m.origin).norm();
+    (a.center - b.center).norm() <= DOUBLE_REACH * (m.scale + d)
 }
 
 /// Three poses that make the Burmester points of five degenerate: three
