@@ -1805,6 +1805,53 @@ mod tests {
         assert_eq!(checked, 10);
     }
 
+    /// `clusters`' windows do not merge across the wrap at `0 = pi`: a crowd
+    /// of roots there (eigenvalues at small positive angles and just below
+    /// `pi`) gets a window on each side. Not a miss: each window holds its
+    /// eigenvalues with `CLUSTER_WINDOW` to spare on both sides (measured
+    /// with `angle_gap`, which wraps), so the crowd lies inside both, and the
+    /// search again of the later one replaces the roots the earlier found
+    /// within it (`searched_again` keeps a root only outside the window).
+    /// Every root of the expanded form, crowded at the wrap over `1e-6` to
+    /// `5e-3` rad (two, three or four of them, a quadratic or quartic whose
+    /// other roots are away), lies inside a window.
+    #[test]
+    fn a_crowd_at_the_wrap_lies_inside_the_windows() {
+        use core::f64::consts::PI;
+        for spread in [1e-6, 1e-4, 1e-3, 5e-3] {
+            // Roots (as `tan`) at `-spread`, `spread / 2`, and for the
+            // quartic `spread` and `3` (away).
+            let crowds: [&[f64]; 3] = [
+                &[-spread, 0.5 * spread],
+                &[-spread, 0.5 * spread, spread],
+                &[-spread, 0.5 * spread, spread, 3.0],
+            ];
+            for roots in crowds {
+                // Coefficients of `prod (u - r)`, lowest first.
+                let mut f = vec![1.0];
+                for &r in roots {
+                    let mut g = vec![0.0; f.len() + 1];
+                    for (i, c) in f.iter().enumerate() {
+                        g[i + 1] += c;
+                        g[i] -= r * c;
+                    }
+                    f = g;
+                }
+                let windows = clusters(&f);
+                // Two windows, one on each side of the wrap, both holding 0.
+                let holding = windows.iter().filter(|&&(c, h)| angle_gap(0.0, c) <= h);
+                assert_eq!(holding.count(), 2, "{windows:?}");
+                for &r in roots.iter().filter(|r| r.abs() < 1.0) {
+                    let a = r.atan().rem_euclid(PI);
+                    assert!(
+                        windows.iter().any(|&(c, h)| angle_gap(a, c) <= h),
+                        "root at {a} outside {windows:?} (spread {spread})"
+                    );
+                }
+            }
+        }
+    }
+
     #[test]
     fn homogeneous_cross_is_the_meet() {
         // The lines x = 1 and y = 2 meet at (1, 2).
