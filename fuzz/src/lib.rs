@@ -2222,17 +2222,21 @@ pub fn burmester_points(data: &[u8]) {
             let w = map(p.center);
             let sb = to.size() + (w - cb).norm();
             let allowed = (1e-6 + 10.0 * moved_by) * sb;
+            let nearest = to
+                .burmester_points()
+                .iter()
+                .map(|q| (q.center - w).norm())
+                .fold(f64::INFINITY, f64::min);
             assert!(
-                to.burmester_points()
-                    .iter()
-                    .any(|q| (q.center - w).norm() <= allowed),
+                nearest <= allowed,
                 "{} ({} task sizes away, circle point {} task sizes; rounding moves it {} of \
-                 size + d; in the other frame {w}) not among {:?} (poses {from_poses:?}; the \
-                 task: {poses:?}, moved {moved:?})",
+                 size + d; in the other frame {w}, the nearest point {} of size + d off) not \
+                 among {:?} (poses {from_poses:?}; the task: {poses:?}, moved {moved:?})",
                 p.center,
                 d / size,
                 (p.circle - ca).norm() / size,
                 moved_by,
+                nearest / sb,
                 to.burmester_points()
             );
         }

@@ -226,10 +226,7 @@ impl FivePositions {
         // Burmester point at coincident poles (`P_ab = P_cd`, verified by
         // `polish`), which the choices whose `Q` or shared pole is there
         // cannot see (those come last; if no clean choice lists them all,
-        // the first clean one is taken, as before).
-        let mut taken: Option<(Vec<Dyad>, Vec<BurmesterSlider>)> = None;
-        let mut any = false;
-        let mut verified = 0;
+        // the choices are tried again as before, without them).
         let mut choices: Vec<[usize; 5]> = Vec::with_capacity(3 * pairs.len());
         for &(_, i, j) in &pairs {
             let mut others = [0; 3];
@@ -251,12 +248,73 @@ impl FivePositions {
                 }
             }
         }
-        // A choice whose `Q` or shared pole is at such a point is blind to
-        // it (the point is `Q`, or taken out as the pole) and its count is
-        // off there (`Q` a double common point): those choices last.
-        let at: Vec<Vector2<f64>> = required.iter().map(|d| motion.local_of(d.center)).collect();
-        if !at.is_empty() {
-            choices.sort_by_key(|o| {
+        let mut any = false;
+        // The choices in `order`, the first clean one taken. With
+        // `required` points it must list them, and every point within
+        // `BURMESTER_NEAR` task sizes that an earlier choice verified (each
+        // passed `polish`: it exists, so a choice without it lost it).
+        let mut first_clean = |order: &[[usize; 5]],
+                               required: &[Dyad]|
+         -> Result<Option<(Vec<Dyad>, Vec<BurmesterSlider>)>> {
+            let mut verified = 0;
+            let mut seen: Vec<Dyad> = required.to_vec();
+            for &order in order {
+                let sub = LocalMotion::new(&order.map(|x| poses[x]))?;
+                let Some(elim) = Elimination::new(&sub) else {
+                    continue;
+                };
+                any = true;
+                let (points, sliders, lost, distinct) = elim.points(&sub, &motion)?;
+                // Two cubics meet in nine points: `Q`, `P13`, `P23`, the
+                // two circular points and at most four Burmester points.
+                // More (double roots of the resultant declared within a
+                // band wide enough to hold several critical points, or one
+                // root read as a finite point and a slider) is this
+                // elimination's rounding, not an answer.
+                let total = points.len() + sliders.len();
+                if total > MAX_POINTS {
+                    continue;
+                }
+                let near = points
+                    .iter()
+                    .filter(|d| {
+                        (d.center - motion.origin).norm()
+                            <= tolerance::BURMESTER_NEAR * motion.scale
+                    })
+                    .count();
+                if lost == 0
+                    && total % 2 == 0
+                    && near >= verified
+                    && seen
+                        .iter()
+                        .all(|r| points.iter().any(|d| same_point(&motion, r, d)))
+                {
+                    return Ok(Some((points, sliders)));
+                }
+                verified = verified.max(distinct);
+                if !required.is_empty() {
+                    for d in &points {
+                        let near = (d.center - motion.origin).norm()
+                            <= tolerance::BURMESTER_NEAR * motion.scale;
+                        if near && !seen.iter().any(|r| same_point(&motion, r, d)) {
+                            seen.push(*d);
+                        }
+                    }
+                }
+            }
+            Ok(None)
+        };
+        // With points at coincident poles: first the choices that can see
+        // them, the blind ones (whose `Q` or shared pole is at such a point:
+        // it is `Q`, a double common point there, or taken out as the
+        // pole) last, and the one taken must list them all; failing that,
+        // every choice as before, without them.
+        let mut taken = None;
+        if !required.is_empty() {
+            let at: Vec<Vector2<f64>> =
+                required.iter().map(|d| motion.local_of(d.center)).collect();
+            let mut seeing = choices.clone();
+            seeing.sort_by_key(|o| {
                 [(o[0], o[1]), (o[0], o[2]), (o[1], o[2])]
                     .iter()
                     .any(|&(a, b)| {
@@ -268,46 +326,10 @@ impl FivePositions {
                         }
                     })
             });
+            taken = first_clean(&seeing, &required)?;
         }
-        let mut fallback: Option<(Vec<Dyad>, Vec<BurmesterSlider>)> = None;
-        'choices: for order in choices {
-            let sub = LocalMotion::new(&order.map(|x| poses[x]))?;
-            let Some(elim) = Elimination::new(&sub) else {
-                continue;
-            };
-            any = true;
-            let (points, sliders, lost, distinct) = elim.points(&sub, &motion)?;
-            // Two cubics meet in nine points: `Q`, `P13`, `P23`, the two
-            // circular points and at most four Burmester points. More
-            // (double roots of the resultant declared within a band wide
-            // enough to hold several critical points, or one root read
-            // as a finite point and a slider) is this elimination's
-            // rounding, not an answer.
-            let total = points.len() + sliders.len();
-            if total > MAX_POINTS {
-                continue;
-            }
-            let near = points
-                .iter()
-                .filter(|d| {
-                    (d.center - motion.origin).norm() <= tolerance::BURMESTER_NEAR * motion.scale
-                })
-                .count();
-            if lost == 0 && total % 2 == 0 && near >= verified {
-                if required
-                    .iter()
-                    .all(|r| points.iter().any(|d| same_point(&motion, r, d)))
-                {
-                    taken = Some((points, sliders));
-                    break 'choices;
-                }
-                // Blind to a point at coincident poles: taken only if no
-                // clean choice lists them all (as before).
-                if fallback.is_none() {
-                    fallback = Some((points, sliders));
-                }
-            }
-            verified = verified.max(distinct);
+        if taken.is_none() {
+            taken = first_clean(&choices, &[])?;
         }
         if !any {
             return Err(errors::infinitely_many(
@@ -316,7 +338,7 @@ impl FivePositions {
                  infinity: a family of sliders)",
             ));
         }
-        let Some((mut points, sliders)) = taken.or(fallback) else {
+        let Some((mut points, sliders)) = taken else {
             // Poses given far from the origin for their size carry the
             // rounding of their coordinates (`eps` of them), which can
             // decide two nearly merging points (real, or a complex pair):
