@@ -224,9 +224,8 @@ impl FivePositions {
         // finds fewer, none at all for a badly conditioned one, lost them
         // too, within its rounding, and is not clean. And it lists every
         // Burmester point at coincident poles (`P_ab = P_cd`, verified by
-        // `polish`), which the choices whose `Q` or shared pole is there
-        // cannot see (those come last; if no clean choice lists them all,
-        // the choices are tried again as before, without them).
+        // `polish`) where one can: the choices whose `Q` or shared pole is
+        // there cannot see it.
         let mut choices: Vec<[usize; 5]> = Vec::with_capacity(3 * pairs.len());
         for &(_, i, j) in &pairs {
             let mut others = [0; 3];
@@ -253,9 +252,7 @@ impl FivePositions {
         // `required` points it must list them, and every point within
         // `BURMESTER_NEAR` task sizes that an earlier choice verified (each
         // passed `polish`: it exists, so a choice without it lost it).
-        let mut first_clean = |order: &[[usize; 5]],
-                               required: &[Dyad]|
-         -> Result<Option<(Vec<Dyad>, Vec<BurmesterSlider>)>> {
+        let mut first_clean = |order: &[[usize; 5]], required: &[Dyad]| -> Result<Option<Taken>> {
             let mut verified = 0;
             let mut seen: Vec<Dyad> = required.to_vec();
             for &order in order {
@@ -289,7 +286,7 @@ impl FivePositions {
                         .iter()
                         .all(|r| points.iter().any(|d| same_point(&motion, r, d)))
                 {
-                    return Ok(Some((points, sliders)));
+                    return Ok(Some((order, points, sliders)));
                 }
                 verified = verified.max(distinct);
                 if !required.is_empty() {
@@ -304,33 +301,54 @@ impl FivePositions {
             }
             Ok(None)
         };
-        // With points at coincident poles: first the choices that can see
-        // them, the blind ones (whose `Q` or shared pole is at such a point:
-        // it is `Q`, a double common point there, or taken out as the
-        // pole) last, and the one taken must list them all; failing that,
-        // every choice as before, without them.
-        let mut taken = None;
-        if !required.is_empty() {
-            let at: Vec<Vector2<f64>> =
-                required.iter().map(|d| motion.local_of(d.center)).collect();
-            let mut seeing = choices.clone();
-            seeing.sort_by_key(|o| {
-                [(o[0], o[1]), (o[0], o[2]), (o[1], o[2])]
-                    .iter()
-                    .any(|&(a, b)| {
-                        let h = motion.pole(a, b);
-                        h[2] != 0.0 && {
-                            let x = Vector2::new(h[0] / h[2], h[1] / h[2]);
-                            at.iter()
-                                .any(|p| (x - p).norm() <= POLE_MATCH * (1.0 + x.norm()))
-                        }
-                    })
+        // Every choice as before; where the answer lacks a point at
+        // coincident poles, or its `Q` is one (a double common point there,
+        // which hides the points on one line from it), the choices again
+        // with those blind to such a point last (its `Q` or a shared pole
+        // there: the point is `Q`, or taken out as the pole), the one taken
+        // listing them all and every near point an earlier one verified
+        // (else the answer as before). A choice whose shared pole is at the
+        // point and which lists it anyway stands: the choices before it that
+        // see the point were not clean, and those after (a complex pair
+        // near the real plane read as two points; a far point as a slider)
+        // are no better (fuzz findings `c268f9be`, `70ea2d4f`).
+        let at: Vec<Vector2<f64>> = required.iter().map(|d| motion.local_of(d.center)).collect();
+        let blind = |o: &[usize; 5]| {
+            [(o[0], o[1]), (o[0], o[2]), (o[1], o[2])]
+                .iter()
+                .any(|&(a, b)| {
+                    let h = motion.pole(a, b);
+                    h[2] != 0.0 && {
+                        let x = Vector2::new(h[0] / h[2], h[1] / h[2]);
+                        at.iter()
+                            .any(|p| (x - p).norm() <= POLE_MATCH * (1.0 + x.norm()))
+                    }
+                })
+        };
+        let mut taken = first_clean(&choices, &[])?;
+        let q_at = |o: &[usize; 5]| {
+            let h = motion.pole(o[0], o[1]);
+            h[2] != 0.0 && {
+                let x = Vector2::new(h[0] / h[2], h[1] / h[2]);
+                at.iter()
+                    .any(|p| (x - p).norm() <= POLE_MATCH * (1.0 + x.norm()))
+            }
+        };
+        let redo = !required.is_empty()
+            && taken.as_ref().is_none_or(|(o, p, _)| {
+                q_at(o)
+                    || required
+                        .iter()
+                        .any(|r| !p.iter().any(|d| same_point(&motion, r, d)))
             });
-            taken = first_clean(&seeing, &required)?;
+        if redo {
+            let mut seeing = choices.clone();
+            seeing.sort_by_key(blind);
+            if let Some(t) = first_clean(&seeing, &required)? {
+                taken = Some(t);
+            }
         }
-        if taken.is_none() {
-            taken = first_clean(&choices, &[])?;
-        }
+        let taken = taken.map(|(_, p, s)| (p, s));
         if !any {
             return Err(errors::infinitely_many(
                 "the center-point curves of every two four-pose subsets that share three poses \
@@ -488,6 +506,10 @@ fn spread(d: impl Iterator<Item = f64>) -> f64 {
         f64::INFINITY
     }
 }
+
+/// A choice of the shared poses taken (the order of the poses) and its
+/// Burmester points and sliders.
+type Taken = ([usize; 5], Vec<Dyad>, Vec<BurmesterSlider>);
 
 /// The points where two poles of disjoint pairs of poses coincide (within
 /// [`POLE_MATCH`], local): `P_ab = P_cd` is a Burmester center (the
