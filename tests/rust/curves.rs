@@ -3751,8 +3751,9 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
 /// blind to it (it is `Q`, a double common point there, or taken out as the
 /// pole); the first clean such choice was taken and the point left out (and
 /// with it, where it is `Q`, the two more on one line from it), an even
-/// count. Now the point at coincident poles, verified, is required of the
-/// choice taken, and those choices come last. Each task is the fuzz
+/// count. Now, where the answer lacks the point at coincident poles
+/// (verified) or its `Q` is that point, the choices are tried again with the
+/// blind ones last, the one taken listing it. Each task is the fuzz
 /// finding's other frame, against the exact reference of its float task
 /// (`fuzz/reference/open_five.py`): the reference's real points within
 /// `1e4` task sizes listed within `1e-8` of `size + d`, the farther ones
