@@ -2076,10 +2076,6 @@ fn check_free_arcs(four: &FourPositions, arcs: &FilemonArcs, vp: &Viewport) {
     }
 }
 
-/// Five poses: the Burmester points are a typed error or a sound answer
-/// (finite, 0, 2 or 4 with the sliders, concyclic, sliders on a line), and
-/// in another frame (moved, turned, scaled, mirrored) the same count and
-/// the same points apart from any that nearly merge.
 /// The five poses of a `burmester_points` input and the frame it moves
 /// them to (the same bytes as [`burmester_points`] reads).
 pub fn burmester_points_task(data: &[u8]) -> (Vec<Pose>, burmester::Result<Similarity>) {
@@ -2091,6 +2087,13 @@ pub fn burmester_points_task(data: &[u8]) -> (Vec<Pose>, burmester::Result<Simil
     (poses, t)
 }
 
+/// Five poses: the Burmester points are a typed error or a sound answer
+/// (finite, 0, 2 or 4 with the sliders, concyclic, sliders on a line), and
+/// in another frame (moved, turned, scaled, mirrored) the same points, each
+/// frame's among the other's, apart from any that nearly merge, lie beyond
+/// `1e4` task sizes, or are ill-conditioned at the rounding of the inputs
+/// (within `1e-6` of the other frame's size plus distance and ten times
+/// what that rounding moves the point: [`rounding_moves`]).
 pub fn burmester_points(data: &[u8]) {
     let (poses, t) = burmester_points_task(data);
     let five = match FivePositions::new(&poses) {
@@ -2122,88 +2125,241 @@ pub fn burmester_points(data: &[u8]) {
         )
     };
     let (ca, cb) = (c(&five), c(&other));
-    // The task perturbed, in its own frame, by the rounding of the frame
-    // change (4 ulps of each coordinate and angle in the other frame,
-    // brought back), one input at a time: fifteen tasks, each with one
-    // coordinate or angle moved by its rounding. A point that these
-    // perturbations move, added up (to first order the most that all of
-    // them together move it, whatever their signs), beyond a hundredth of
-    // the tolerance is ill-conditioned at the rounding of the frame change
-    // (see fuzz/README.md: nearly equal angles, poses at one position): no
-    // frame can reproduce it, so it is not compared. (Four sign patterns of
-    // all fifteen at once, the check before, missed the direction in which
-    // `0f885c44` and `b7fac67e` are ill-conditioned: each frame's points
-    // were its own exact ones.) A decision that depends on the frame is the
-    // same for the perturbed tasks and the task, and still shows in the
-    // other frame.
-    let perturbed: Vec<Option<FivePositions>> = (0..15)
-        .map(|n| {
-            let q: Vec<Pose> = poses
+    // How far the rounding of the frame change, and of the frame the
+    // library computes in, moves each exact point: first order, from the
+    // point's own equations ([`rounding_moves`]), each of the fifteen
+    // inputs moved alone by its rounding and the moves added up (the most
+    // that all of them together move it, whatever their signs). Each
+    // input's rounding: `4 eps` of its value in the other frame (brought
+    // back: the position's distance from the origin plus the frame's
+    // offset, the angle plus the frame's turn), and of what the library's
+    // own frame rounds, wherever the task is given (`LocalMotion`:
+    // positions relative to the poses' centroid in units of the task's
+    // size, angles as differences from pose 1's: `eps` of the size, and of
+    // the largest angle). Each frame's answer is then the exact point of
+    // its task moved by that rounding, to first order; the frames may
+    // differ by the check's tolerance (`1e-6` of the other frame's size
+    // plus distance) and ten times that move. A point that it moves beyond
+    // `1e-3` of `size + d` is not compared (ill-conditioned: a double point
+    // within rounding, a task within rounding of a degenerate one).
+    //
+    // The estimate is the exact point's, not the library's answers for
+    // perturbed tasks (the check before five37, which perturbed by the
+    // frame change's rounding alone and skipped any point the perturbed
+    // answers moved by `1e-8`): a library that loses a point in a
+    // perturbed task lost it, and that must not make a well-conditioned
+    // point look ill-conditioned (`ce022d68`: a point 5 task sizes out that
+    // the rounding moves by `1e-13` of `size + d`, missing in the other
+    // frame, mpmath); and tasks perturbed below the library's own rounding
+    // gave the same point, called stable, where the rounding of its frame
+    // moves the exact point by `5e-5` of `size + d` (`7aa89d36`: poses
+    // `1e-12` from the given origin in a task of size 1; each frame's
+    // answer within `4.9e-6` of its exact point, the frames `1e-5` apart).
+    //
+    // Both ways: each frame's points among the other's (a point in the
+    // other frame alone, off any of this frame's, is wrong in one of them).
+    let e = 4.0 * f64::EPSILON;
+    let rounding = |q: &[Pose], offset: f64, angle: f64, size: f64| -> Vec<(f64, f64)> {
+        let turn = q.iter().map(|p| p.angle.abs()).fold(0.0, f64::max);
+        q.iter()
+            .map(|p| {
+                (
+                    e * (p.position.coords.norm() + offset + size),
+                    e * (p.angle.abs() + turn + angle),
+                )
+            })
+            .collect()
+    };
+    // The frame change undone (for the points of the other frame).
+    let back = |w: Point2<f64>| {
+        let (s, c) = (-t.angle).sin_cos();
+        let v = w - t.offset;
+        let v = Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y) / t.factor;
+        Point2::from(if t.mirror { Vector2::new(v.x, -v.y) } else { v })
+    };
+    let ways: [Frame<'_>; 2] = [
+        (
+            &five,
+            &poses,
+            ca,
+            &other,
+            cb,
+            rounding(&poses, t.offset.norm() / t.factor, t.angle.abs(), size),
+            &|p| t.point(p),
+        ),
+        (
+            &other,
+            &moved,
+            cb,
+            &five,
+            ca,
+            rounding(&moved, t.offset.norm(), t.angle.abs(), other.size()),
+            &back,
+        ),
+    ];
+    for (from, from_poses, ca, to, cb, rounding, map) in ways {
+        let size = from.size();
+        let pts = from.burmester_points();
+        for (i, p) in pts.iter().enumerate() {
+            // A center or a circle point beyond 1e4 task sizes: a point at
+            // infinity in the fixed or the moving plane within rounding
+            // (the library reports a far center as a slider from `3e14`
+            // task sizes out; a far circle point it reports as it finds
+            // it: open, see fuzz/README.md).
+            let d = (p.center - ca).norm();
+            if d > 1e4 * size || (p.circle - ca).norm() > 1e4 * size {
+                continue;
+            }
+            let alone = pts
                 .iter()
                 .enumerate()
-                .map(|(k, p)| {
-                    let e = 4.0 * f64::EPSILON;
-                    let dp = e * (p.position.coords.norm() + t.offset.norm() / t.factor);
-                    let da = e * (p.angle.abs() + t.angle.abs());
-                    let d = |c: usize, by: f64| if n == 3 * k + c { by } else { 0.0 };
-                    Pose::new(
-                        p.position.x + d(0, dp),
-                        p.position.y + d(1, dp),
-                        p.angle + d(2, da),
-                    )
-                })
-                .collect();
-            FivePositions::new(&q).ok()
-        })
-        .collect();
-    let pts = five.burmester_points();
-    for (i, p) in pts.iter().enumerate() {
-        // A center or a circle point beyond 1e4 task sizes: a point at
-        // infinity in the fixed or the moving plane within rounding (the
-        // library reports a far center as a slider from `3e14` task sizes
-        // out; a far circle point it reports as it finds it: open, see
-        // fuzz/README.md).
-        let d = (p.center - ca).norm();
-        if d > 1e4 * size || (p.circle - ca).norm() > 1e4 * size {
-            continue;
-        }
-        let alone = pts
-            .iter()
-            .enumerate()
-            .all(|(j, q)| j == i || (q.center - p.center).norm() > 1e-2 * (size + d));
-        if !alone {
-            continue;
-        }
-        let moved_by: f64 = perturbed
-            .iter()
-            .map(|a| {
-                a.as_ref().map_or(f64::INFINITY, |a| {
-                    a.burmester_points()
-                        .iter()
-                        .map(|q| (q.center - p.center).norm())
-                        .fold(f64::INFINITY, f64::min)
-                })
-            })
-            .sum();
-        let stable = moved_by <= 1e-8 * (size + d);
-        if !stable {
-            continue;
-        }
-        let w = t.point(p.center);
-        let sb = other.size() + (w - cb).norm();
-        assert!(
-            other
+                .all(|(j, q)| j == i || (q.center - p.center).norm() > 1e-2 * (size + d));
+            if !alone {
+                continue;
+            }
+            let moved_by = rounding_moves(from_poses, ca, size, p, &rounding) / (size + d);
+            if moved_by.is_nan() || moved_by > 1e-3 {
+                continue;
+            }
+            let w = map(p.center);
+            let sb = to.size() + (w - cb).norm();
+            let allowed = (1e-6 + 10.0 * moved_by) * sb;
+            let nearest = to
                 .burmester_points()
                 .iter()
-                .any(|q| (q.center - w).norm() <= 1e-6 * sb),
-            "{} ({} task sizes away, circle point {} task sizes; moved {w}) not among {:?} \
-             (poses {poses:?}, moved {moved:?})",
-            p.center,
-            d / size,
-            (p.circle - ca).norm() / size,
-            other.burmester_points()
-        );
+                .map(|q| (q.center - w).norm())
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                nearest <= allowed,
+                "{} ({} task sizes away, circle point {} task sizes; rounding moves it {} of \
+                 size + d; in the other frame {w}, the nearest point {} of size + d off) not \
+                 among {:?} (poses {from_poses:?}; the task: {poses:?}, moved {moved:?})",
+                p.center,
+                d / size,
+                (p.circle - ca).norm() / size,
+                moved_by,
+                nearest / sb,
+                to.burmester_points()
+            );
+        }
     }
+}
+
+/// One way of [`burmester_points`]' comparison of two frames: the answer
+/// compared, its poses and centroid, the answer compared with and its
+/// centroid, the rounding of each input ([`rounding_moves`]), and the map
+/// of a point to the other frame.
+type Frame<'a> = (
+    &'a FivePositions,
+    &'a [Pose],
+    Point2<f64>,
+    &'a FivePositions,
+    Point2<f64>,
+    Vec<(f64, f64)>,
+    &'a dyn Fn(Point2<f64>) -> Point2<f64>,
+);
+
+/// How far the rounding of the inputs moves the Burmester point `p` of
+/// `poses` (centroid `origin`, size `size`), to first order: each input
+/// moved alone by its rounding (`rounding[k]`: pose `k`'s position,
+/// either coordinate, and angle), the moves of the center added up.
+/// Infinite where the point's equations are singular (a double point, or
+/// one not isolated).
+///
+/// The point's equations: with `D_k = P_k + R(a_k - a_1) (z - P_1)` the
+/// circle point `z`'s position at pose `k` and `G` the center, `E_k =
+/// |D_k - G|^2 - |z - G|^2 = 0` for `k = 2..5`. Their Jacobian in `(G,
+/// z)` has rows `2 (z - D_k)`, `2 R_k^T (D_k - G) - 2 (z - G)`; in the
+/// inputs, `dE_k / dP_k = 2 (D_k - G)`, `dE_k / dP_1 = -2 R_k^T (D_k -
+/// G)`, `dE_k / da_k = -dE_k / da_1 = 2 (D_k - G) . perp(D_k - P_k)`. A
+/// change `dq` of an input moves `(G, z)` by `-J^-1 (dE / dq) dq`. Worked
+/// in units of the task's size about its centroid (the quadratic terms
+/// neither overflow nor lose the task to the frame's offset). Checked
+/// against mpmath's Newton on the same equations with each input moved
+/// (five37: `7aa89d36`, `ce022d68`).
+fn rounding_moves(
+    poses: &[Pose],
+    origin: Point2<f64>,
+    size: f64,
+    p: &Dyad,
+    rounding: &[(f64, f64)],
+) -> f64 {
+    let local = |q: Point2<f64>| (q - origin) / size;
+    let perp = |v: Vector2<f64>| Vector2::new(-v.y, v.x);
+    let rot = |a: f64, v: Vector2<f64>| {
+        let (s, c) = a.sin_cos();
+        Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y)
+    };
+    let (g, z) = (local(p.center), local(p.circle));
+    let p1 = local(poses[0].position);
+    // Rows `k = 2..5`: the Jacobian in `(G, z)`, and each input's column.
+    let mut jac = [[0.0f64; 4]; 4];
+    let mut cols = [[0.0f64; 4]; 15];
+    for r in 0..4 {
+        let k = r + 1;
+        let pk = local(poses[k].position);
+        let a = poses[k].angle - poses[0].angle;
+        let d = pk + rot(a, z - p1);
+        let dg = d - g;
+        let rt = rot(-a, dg);
+        let jz = rt * 2.0 - (z - g) * 2.0;
+        jac[r] = [2.0 * (z.x - d.x), 2.0 * (z.y - d.y), jz.x, jz.y];
+        let turn = 2.0 * dg.dot(&perp(d - pk));
+        // Inputs: pose `j`'s x, y, angle at `3 j`, `3 j + 1`, `3 j + 2`.
+        cols[3 * k][r] += 2.0 * dg.x;
+        cols[3 * k + 1][r] += 2.0 * dg.y;
+        cols[3 * k + 2][r] += turn;
+        cols[0][r] -= 2.0 * rt.x;
+        cols[1][r] -= 2.0 * rt.y;
+        cols[2][r] -= turn;
+    }
+    let mut total = 0.0;
+    for (n, col) in cols.iter().enumerate() {
+        let (dp, da) = rounding[n / 3];
+        let dq = if n % 3 == 2 { da } else { dp / size };
+        let Some(x) = solve4(jac, *col) else {
+            return f64::INFINITY;
+        };
+        total += (x[0] * x[0] + x[1] * x[1]).sqrt() * dq;
+    }
+    // Back from units of the size.
+    if total.is_finite() {
+        total * size
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// `a x = b` by Gaussian elimination with partial pivoting; `None` when
+/// `a` is singular to rounding (a pivot below `1e-13` of the largest
+/// entry) or the answer not finite.
+fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> Option<[f64; 4]> {
+    let top = a.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    if !(top > 0.0 && top.is_finite()) {
+        return None;
+    }
+    for c in 0..4 {
+        let piv = (c..4).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
+        if a[piv][c].is_nan() || a[piv][c].abs() <= 1e-13 * top {
+            return None;
+        }
+        a.swap(c, piv);
+        b.swap(c, piv);
+        for i in c + 1..4 {
+            let f = a[i][c] / a[c][c];
+            let row = a[c];
+            for (v, r) in a[i].iter_mut().zip(row).skip(c) {
+                *v -= f * r;
+            }
+            b[i] -= f * b[c];
+        }
+    }
+    let mut x = [0.0; 4];
+    for c in (0..4).rev() {
+        let s: f64 = (c + 1..4).map(|j| a[c][j] * x[j]).sum();
+        x[c] = (b[c] - s) / a[c][c];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
 /// One five-pose answer on its own: the count always; each point's

@@ -222,28 +222,54 @@ impl FivePositions {
         // within `BURMESTER_NEAR` task sizes while losing others:
         // those points exist (each passed `polish`), so a later choice that
         // finds fewer, none at all for a badly conditioned one, lost them
-        // too, within its rounding, and is not clean.
-        let mut taken: Option<(Vec<Dyad>, Vec<BurmesterSlider>)> = None;
-        let mut any = false;
-        let mut verified = 0;
-        'choices: for &(_, i, j) in &pairs {
-            let others: Vec<usize> = (0..5).filter(|&k| k != i && k != j).collect();
+        // too, within its rounding, and is not clean. And it lists every
+        // Burmester point at coincident poles (`P_ab = P_cd`, verified by
+        // `polish`) where one can: the choices whose `Q` or shared pole is
+        // there cannot see it.
+        let mut choices: Vec<[usize; 5]> = Vec::with_capacity(3 * pairs.len());
+        for &(_, i, j) in &pairs {
+            let mut others = [0; 3];
+            for (slot, k) in others.iter_mut().zip((0..5).filter(|&k| k != i && k != j)) {
+                *slot = k;
+            }
             for r in 0..3 {
-                let k = others[r];
-                let l: Vec<usize> = others.iter().copied().filter(|&x| x != k).collect();
-                let order = [i, j, k, l[0], l[1]];
+                let [a, b] = [(r + 1) % 3, (r + 2) % 3].map(|x| others[x]);
+                choices.push([i, j, others[r], a.min(b), a.max(b)]);
+            }
+        }
+        // The Burmester points at coincident poles, verified: a choice must
+        // list them (see [`coincident_poles`]).
+        let mut required: Vec<Dyad> = Vec::new();
+        for g in coincident_poles(&motion) {
+            if let Ok(Polished::One(d)) = polish(&motion, g, 1) {
+                if concyclic_to_rounding(&motion, &d)
+                    && !required.iter().any(|r| same_point(&motion, r, &d))
+                {
+                    required.push(d);
+                }
+            }
+        }
+        let mut any = false;
+        // The choices in `order`, the first clean one taken. With
+        // `required` points it must list them, and every point within
+        // `BURMESTER_NEAR` task sizes that an earlier choice verified (each
+        // passed `polish`: it exists, so a choice without it lost it).
+        let mut first_clean = |order: &[[usize; 5]], required: &[Dyad]| -> Result<Option<Taken>> {
+            let mut verified = 0;
+            let mut seen: Vec<Dyad> = required.to_vec();
+            for &order in order {
                 let sub = LocalMotion::new(&order.map(|x| poses[x]))?;
                 let Some(elim) = Elimination::new(&sub) else {
                     continue;
                 };
                 any = true;
                 let (points, sliders, lost, distinct) = elim.points(&sub, &motion)?;
-                // Two cubics meet in nine points: `Q`, `P13`, `P23`, the two
-                // circular points and at most four Burmester points. More
-                // (double roots of the resultant declared within a band wide
-                // enough to hold several critical points, or one root read
-                // as a finite point and a slider) is this elimination's
-                // rounding, not an answer.
+                // Two cubics meet in nine points: `Q`, `P13`, `P23`, the
+                // two circular points and at most four Burmester points.
+                // More (double roots of the resultant declared within a
+                // band wide enough to hold several critical points, or one
+                // root read as a finite point and a slider) is this
+                // elimination's rounding, not an answer.
                 let total = points.len() + sliders.len();
                 if total > MAX_POINTS {
                     continue;
@@ -255,13 +281,66 @@ impl FivePositions {
                             <= tolerance::BURMESTER_NEAR * motion.scale
                     })
                     .count();
-                if lost == 0 && total % 2 == 0 && near >= verified {
-                    taken = Some((points, sliders));
-                    break 'choices;
+                if lost == 0
+                    && total % 2 == 0
+                    && near >= verified
+                    && seen
+                        .iter()
+                        .all(|r| points.iter().any(|d| same_point(&motion, r, d)))
+                {
+                    return Ok(Some((order, points, sliders)));
                 }
                 verified = verified.max(distinct);
+                if !required.is_empty() {
+                    for d in &points {
+                        let near = (d.center - motion.origin).norm()
+                            <= tolerance::BURMESTER_NEAR * motion.scale;
+                        if near && !seen.iter().any(|r| same_point(&motion, r, d)) {
+                            seen.push(*d);
+                        }
+                    }
+                }
+            }
+            Ok(None)
+        };
+        // Every choice as before; where the answer lacks a point at
+        // coincident poles, the choices again with those blind to such a
+        // point last (its `Q` or a shared pole there: the point is `Q`, a
+        // double common point, or taken out as the pole), the one taken
+        // listing them all and every near point an earlier one verified
+        // (else the answer as before). Only where the answer lacks one: a
+        // choice whose `Q` or shared pole is at the point and which lists
+        // it anyway stands (the choices after it read a complex pair near
+        // the real plane as two points, or a far point as a slider, on fuzz
+        // findings `c268f9be`, `70ea2d4f`, `6e2bbf64`).
+        let at: Vec<Vector2<f64>> = required.iter().map(|d| motion.local_of(d.center)).collect();
+        let blind = |o: &[usize; 5]| {
+            [(o[0], o[1]), (o[0], o[2]), (o[1], o[2])]
+                .iter()
+                .any(|&(a, b)| {
+                    let h = motion.pole(a, b);
+                    h[2] != 0.0 && {
+                        let x = Vector2::new(h[0] / h[2], h[1] / h[2]);
+                        at.iter()
+                            .any(|p| (x - p).norm() <= POLE_MATCH * (1.0 + x.norm()))
+                    }
+                })
+        };
+        let mut taken = first_clean(&choices, &[])?;
+        let redo = !required.is_empty()
+            && taken.as_ref().is_none_or(|(_, p, _)| {
+                required
+                    .iter()
+                    .any(|r| !p.iter().any(|d| same_point(&motion, r, d)))
+            });
+        if redo {
+            let mut seeing = choices.clone();
+            seeing.sort_by_key(blind);
+            if let Some(t) = first_clean(&seeing, &required)? {
+                taken = Some(t);
             }
         }
+        let taken = taken.map(|(_, p, s)| (p, s));
         if !any {
             return Err(errors::infinitely_many(
                 "the center-point curves of every two four-pose subsets that share three poses \
@@ -418,6 +497,70 @@ fn spread(d: impl Iterator<Item = f64>) -> f64 {
     } else {
         f64::INFINITY
     }
+}
+
+/// A choice of the shared poses taken (the order of the poses) and its
+/// Burmester points and sliders.
+type Taken = ([usize; 5], Vec<Dyad>, Vec<BurmesterSlider>);
+
+/// The points where two poles of disjoint pairs of poses coincide (within
+/// [`POLE_MATCH`], local): `P_ab = P_cd` is a Burmester center (the
+/// rotations `a -> b` and `c -> d` about it leave two conditions on the
+/// circle point, which meet), found by no elimination from `Q = P_ab` or
+/// with `P_ab` for a shared pole: there it is `Q` itself, or taken out as
+/// the pole. (Two pairs of poses at one position each, half a turn apart:
+/// `P13 = P24`, a Burmester point that the first choices, each blind to it,
+/// left out with an even count; five37, `a3403902`, `beafcbe6`,
+/// `ce022d68`.)
+fn coincident_poles(m: &LocalMotion) -> Vec<Vector2<f64>> {
+    let mut poles = [([0usize; 2], None::<Vector2<f64>>); 10];
+    let mut n = 0;
+    for a in 0..5 {
+        for b in a + 1..5 {
+            let h = m.pole(a, b);
+            poles[n] = (
+                [a, b],
+                (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2])),
+            );
+            n += 1;
+        }
+    }
+    let mut out = Vec::new();
+    for (n, (p, x)) in poles.iter().enumerate() {
+        for (q, y) in &poles[n + 1..] {
+            let disjoint = p.iter().all(|i| !q.contains(i));
+            if let (true, Some(x), Some(y)) = (disjoint, x, y) {
+                if (x - y).norm() <= POLE_MATCH * (1.0 + x.norm()) {
+                    out.push((x + y) * 0.5);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Whether the dyad (global) is concyclic to the rounding of its local
+/// coordinates ([`tolerance::BURMESTER_ROUNDING`] `eps` over the crank),
+/// not merely within [`polish`]'s looser far-point allowance: a point at
+/// nearly coincident poles that is not a Burmester point (the two lines of
+/// its circle point nearly parallel) passed that allowance and was required
+/// of every choice (fuzz findings `78b52e02`, `6e2bbf64`, `499481c1`).
+fn concyclic_to_rounding(m: &LocalMotion, d: &Dyad) -> bool {
+    let (g, z) = (m.local_of(d.center), m.local_of(d.circle));
+    let positions: Vec<Vector2<f64>> = (0..m.poses.len()).map(|k| m.form.displace(k, z)).collect();
+    let radius = positions.iter().map(|p| (p - g).norm()).fold(0.0, f64::max);
+    let coords = positions.iter().map(|p| p.norm()).fold(g.norm(), f64::max);
+    radius > 0.0
+        && local_residual(m, g, z)
+            <= tolerance::BURMESTER_ROUNDING * f64::EPSILON * (1.0 + coords / radius)
+}
+
+/// Whether two Burmester points (global) are one: their centers within
+/// [`DOUBLE_REACH`] of `size + distance` (each polished by Newton's
+/// method to rounding; two points that close are one for [`polish`] too).
+fn same_point(m: &LocalMotion, a: &Dyad, b: &Dyad) -> bool {
+    let d = (a.center - m.origin).norm();
+    (a.center - b.center).norm() <= DOUBLE_REACH * (m.scale + d)
 }
 
 /// Three poses that make the Burmester points of five degenerate: three
@@ -1712,6 +1855,53 @@ mod tests {
         }
         // Every choice of the pair has four real points and two poles.
         assert_eq!(checked, 10);
+    }
+
+    /// `clusters`' windows do not merge across the wrap at `0 = pi`: a crowd
+    /// of roots there (eigenvalues at small positive angles and just below
+    /// `pi`) gets a window on each side. Not a miss: each window holds its
+    /// eigenvalues with `CLUSTER_WINDOW` to spare on both sides (measured
+    /// with `angle_gap`, which wraps), so the crowd lies inside both, and the
+    /// search again of the later one replaces the roots the earlier found
+    /// within it (`searched_again` keeps a root only outside the window).
+    /// Every root of the expanded form, crowded at the wrap over `1e-6` to
+    /// `5e-3` rad (two, three or four of them, a quadratic or quartic whose
+    /// other roots are away), lies inside a window.
+    #[test]
+    fn a_crowd_at_the_wrap_lies_inside_the_windows() {
+        use core::f64::consts::PI;
+        for spread in [1e-6, 1e-4, 1e-3, 5e-3] {
+            // Roots (as `tan`) at `-spread`, `spread / 2`, and for the
+            // quartic `spread` and `3` (away).
+            let crowds: [&[f64]; 3] = [
+                &[-spread, 0.5 * spread],
+                &[-spread, 0.5 * spread, spread],
+                &[-spread, 0.5 * spread, spread, 3.0],
+            ];
+            for roots in crowds {
+                // Coefficients of `prod (u - r)`, lowest first.
+                let mut f = vec![1.0];
+                for &r in roots {
+                    let mut g = vec![0.0; f.len() + 1];
+                    for (i, c) in f.iter().enumerate() {
+                        g[i + 1] += c;
+                        g[i] -= r * c;
+                    }
+                    f = g;
+                }
+                let windows = clusters(&f);
+                // Two windows, one on each side of the wrap, both holding 0.
+                let holding = windows.iter().filter(|&&(c, h)| angle_gap(0.0, c) <= h);
+                assert_eq!(holding.count(), 2, "{windows:?}");
+                for &r in roots.iter().filter(|r| r.abs() < 1.0) {
+                    let a = r.atan().rem_euclid(PI);
+                    assert!(
+                        windows.iter().any(|&(c, h)| angle_gap(a, c) <= h),
+                        "root at {a} outside {windows:?} (spread {spread})"
+                    );
+                }
+            }
+        }
     }
 
     #[test]
