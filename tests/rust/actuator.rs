@@ -1219,3 +1219,196 @@ fn the_min_gap_filters_the_map_exactly() {
     }
     assert!(kept > 0 && dropped > 0, "{kept} kept, {dropped} dropped");
 }
+
+/// The context of an actuator map on `grid` for `link` at `q`, a strut
+/// `width` wide keeping `min_gap`, links `link_width` wide, under `limits`
+/// (no stroke ratio limit), the travel in `samples` samples.
+fn strut_context(
+    sfb: &SynthesizedFourBar,
+    (link, q, samples): (ActuatorLink, P, usize),
+    grid: &Grid,
+    (width, link_width, min_gap): (f64, f64, f64),
+    limits: &DesignLimits,
+) -> ActuatorContext {
+    let options = ActuatorOptions {
+        link,
+        actuator_width: width,
+        min_gap,
+        max_stroke_ratio: f64::INFINITY,
+        travel_samples: samples,
+    };
+    let c = Constraints {
+        link_width,
+        ..Constraints::none()
+    };
+    ActuatorContext::new(
+        sfb,
+        q,
+        grid,
+        &MapOptions::new(limits, &c).unwrap(),
+        &options,
+    )
+    .unwrap()
+}
+
+/// The rankings over the acceptable samples (all but the margin's).
+const ACCEPTABLE_RANKINGS: [RankBy; 4] = [
+    RankBy::Balanced,
+    RankBy::Transmission,
+    RankBy::Compact,
+    RankBy::Pareto,
+];
+
+/// A least gap just above a placement's own (refined) gap: the map of that
+/// one ground pivot does not accept it, and no ranking returns it. (The
+/// map judged the gap at its travel samples, at least the placement's
+/// refined one, so it accepted pivots whose placement's gap was below
+/// `min_gap` and the ranking returned them.)
+#[test]
+fn a_placement_just_below_min_gap_is_not_ranked() {
+    let mut runner = TestRunner::new(common::config(1));
+    let mut tried = 0;
+    for case in 0..6 {
+        let (task, sfb) = random_linkage(&mut runner);
+        let r = task.span();
+        let c = common::centroid(task.poses());
+        let grid = Grid::from_bounds(
+            c.x - 2.0 * r,
+            c.x + 2.0 * r,
+            c.y - 2.0 * r,
+            c.y + 2.0 * r,
+            24,
+            20,
+        )
+        .unwrap();
+        let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.4;
+        let at = (ActuatorLink::ALL[case % 3], q, 256);
+        let widths = |min_gap: f64| (0.03 * r, 0.02 * r, min_gap);
+        let zero = strut_context(&sfb, at, &grid, widths(0.0), &open_limits());
+        let map = zero.map(&Control::new()).unwrap();
+        for k in (0..grid.len()).step_by(2) {
+            if !map.columns.acceptable[k] {
+                continue;
+            }
+            let own = zero.placement_at(k).unwrap();
+            assert!(own.acceptable && own.clear, "{own:?}");
+            let min_gap = own.min_clearance + 1e-9 * r;
+            let one = strut_context(
+                &sfb,
+                at,
+                &one_grid(own.ground),
+                widths(min_gap),
+                &open_limits(),
+            );
+            let single = one.map(&Control::new()).unwrap();
+            let again = one.placement_at(0).unwrap();
+            assert!((again.min_clearance - own.min_clearance).abs() < 1e-12 * r);
+            assert!(!again.clear && !again.acceptable);
+            assert!(!single.columns.acceptable[0], "sample {k}: {own:?}");
+            for rank_by in ACCEPTABLE_RANKINGS {
+                let best = single.best_placements(1, None, rank_by).unwrap();
+                assert!(best.is_empty(), "{rank_by:?}: {best:?}");
+            }
+            tried += 1;
+        }
+    }
+    assert!(tried >= 10, "{tried} placements tried");
+}
+
+/// Property: over random linkages, links, moving points, widths, least
+/// gaps, transmission limits and travel samples, every placement a ranking over the
+/// acceptable samples returns is acceptable and clear by its own figures:
+/// its gap above 0 and at least `min_gap`; and the map's `acceptable`
+/// column holds only where the sample's placement is acceptable.
+#[test]
+fn every_ranked_placement_keeps_min_gap() {
+    let mut runner = TestRunner::new(common::config(1));
+    let (mut ranked, mut accepted) = (0, 0);
+    for case in 0..10 {
+        let (task, sfb) = random_linkage(&mut runner);
+        let (link, t, (ws, wl, gap), mu, (nx, ny), (near, pick, above), samples) = (
+            0usize..3,
+            0.2f64..0.8,
+            (0.0f64..0.06, 0.0f64..0.04, 0.0f64..0.15),
+            0.0f64..30.0,
+            (12usize..40, 12usize..40),
+            (any::<bool>(), 0.0f64..1.0, 0.0f64..1e-6),
+            prop_oneof![Just(256usize), 8usize..64],
+        )
+            .new_tree(&mut runner)
+            .unwrap()
+            .current();
+        let r = task.span();
+        let c = common::centroid(task.poses());
+        let grid = Grid::from_bounds(
+            c.x - 2.0 * r,
+            c.x + 2.0 * r,
+            c.y - 2.0 * r,
+            c.y + 2.0 * r,
+            nx,
+            ny,
+        )
+        .unwrap();
+        // On the link: along the coupler's bar, or along the crank's
+        // (rocker's) past the middle.
+        let (a, b) = match ActuatorLink::ALL[link] {
+            ActuatorLink::Coupler => (sfb.driving.circle, sfb.driven.circle),
+            ActuatorLink::Crank => (sfb.driving.center, sfb.driving.circle),
+            ActuatorLink::Rocker => (sfb.driven.center, sfb.driven.circle),
+        };
+        let q = a + (b - a) * t;
+        let limits = DesignLimits {
+            min_transmission: mu.to_radians(),
+            ..open_limits()
+        };
+        let at = (ActuatorLink::ALL[link], q, samples);
+        let widths = |min_gap: f64| (ws * r, wl * r, min_gap);
+        // Half the cases try, besides, least gaps just above the gaps of
+        // placements acceptable without one (where a judgement on fewer
+        // samples than the placement's errs), from the smallest to the
+        // largest.
+        let mut min_gaps = vec![gap * r];
+        if near {
+            let zero = strut_context(&sfb, at, &grid, widths(0.0), &limits);
+            let map = zero.map(&Control::new()).unwrap();
+            let mut gaps: Vec<f64> = (0..grid.len())
+                .filter(|&k| map.columns.acceptable[k])
+                .map(|k| zero.placement_at(k).unwrap().min_clearance)
+                .collect();
+            gaps.sort_by(f64::total_cmp);
+            let n = gaps.len();
+            let picks = n.min(6);
+            for m in 0..picks {
+                let k = ((m as f64 + pick) * n as f64 / picks as f64) as usize;
+                min_gaps.push(gaps[k.min(n - 1)] + above * r);
+            }
+        }
+        for min_gap in min_gaps {
+            let ctx = strut_context(&sfb, at, &grid, widths(min_gap), &limits);
+            let map = ctx.map(&Control::new()).unwrap();
+            for k in 0..grid.len() {
+                if map.columns.acceptable[k] {
+                    let a = ctx.placement_at(k).unwrap();
+                    assert!(a.acceptable && a.clear, "case {case}, sample {k}: {a:?}");
+                    assert!(a.min_clearance > 0.0 && a.min_clearance >= min_gap);
+                    accepted += 1;
+                }
+            }
+            for rank_by in ACCEPTABLE_RANKINGS {
+                for a in map.best_placements(6, None, rank_by).unwrap() {
+                    assert!(
+                        a.min_clearance > 0.0 && a.min_clearance >= min_gap,
+                        "case {case}, {rank_by:?}: gap {} below {min_gap}",
+                        a.min_clearance
+                    );
+                    assert!(a.acceptable && a.clear, "case {case}, {rank_by:?}: {a:?}");
+                    ranked += 1;
+                }
+            }
+        }
+    }
+    assert!(
+        ranked > 0 && accepted > 0,
+        "{ranked} ranked, {accepted} accepted"
+    );
+}

@@ -45,7 +45,8 @@
 //! count on the sign after them), so a root of even multiplicity (a
 //! stationary `s` that goes on in the same direction: still monotone) is
 //! not a turning point, and two roots closer together than the sample step
-//! can be missed. The map's figures are those of the samples; a
+//! can be missed. The map's figures are those of the samples (but its
+//! `clearance` and `acceptable`: "The map and its placements" below); a
 //! [placement](ActuatorContext::placement) refines each bracketed root by
 //! bisection to rounding (the turning points and, for a non-monotone
 //! placement, `s_min`/`s_max` there), and the minimum transmission angle by
@@ -77,12 +78,20 @@
 //! the two half widths below zero at a crossing. A placement is **clear**
 //! when its gap is above 0 and at least [`ActuatorOptions::min_gap`]; an
 //! acceptable placement is clear. The gap is taken at every travel sample
-//! (the map's `clearance` column, ranked with the other columns through
-//! `acceptable`) and for a placement its smallest sample is refined by
-//! golden section, as the transmission angle is: two contacts closer
-//! together than a sample step could be missed, as could a contact of a
-//! shape thinner than the links move in a step. The map's sampled
-//! clearance is therefore at least the placement's refined one.
+//! and its smallest sample is refined by golden section, as the
+//! transmission angle is: two contacts closer together than a sample step
+//! could be missed, as could a contact of a shape thinner than the links
+//! move in a step.
+//!
+//! # The map and its placements
+//!
+//! A map sample whose sampled figures meet the limits is judged as its
+//! [placement](ActuatorContext::placement) is, on the refined transmission
+//! angle and gap (each at most its smallest sample): its `clearance` column
+//! is the placement's [`min_clearance`](Actuator::min_clearance), and it is
+//! `acceptable` only where the placement is. So every placement the
+//! rankings over `acceptable` return ([`ActuatorContext::best_placements`])
+//! is acceptable and clear by its own figures, its gap at least `min_gap`.
 
 use nalgebra::{Point2, Vector2};
 
@@ -138,17 +147,19 @@ map_columns! {
     link_ratio: f32 = f32::NAN,
     /// The linkage's size and the open actuator over the task's span.
     size_ratio: f32 = f32::NAN,
-    /// The strut's least gap over the sampled travel, task units: its
-    /// capsule (`actuator_width`) to the links' capsules
-    /// (`link_width`), the obstacles and the envelope (module docs,
-    /// "Clearance"); negative where they overlap. Computed where the
-    /// rest of `acceptable` holds (monotone, within the limits, on the
-    /// base plate); NaN elsewhere.
+    /// The strut's least gap over the travel, task units, refined as the
+    /// sample's placement's (its `min_clearance`): its capsule
+    /// (`actuator_width`) to the links' capsules (`link_width`), the
+    /// obstacles and the envelope (module docs, "Clearance"); negative
+    /// where they overlap. Computed where the rest of `acceptable` holds
+    /// (monotone, within the limits, on the base plate); NaN elsewhere.
     clearance: f32 = f32::NAN,
     /// Monotone and within the limits: the stroke ratio, the
     /// transmission angle, the link and size ratios, the longest link,
     /// the ground pivot on the base plate, and clear: the clearance
-    /// above 0 and at least `min_gap`.
+    /// above 0 and at least `min_gap`; judged as the sample's placement is
+    /// (module docs, "The map and its placements"): where true, the
+    /// placement is acceptable.
     acceptable: bool = false,
 }
 
@@ -271,6 +282,22 @@ struct Eval {
     turns: usize,
 }
 
+/// The refined figures of one ground pivot and the verdict on them
+/// ([`ActuatorContext::judge`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Verdict {
+    /// The minimum transmission angle (0 when not monotone) and where.
+    min_transmission: f64,
+    worst_angle: f64,
+    /// The strut's least gap and where.
+    gap: f64,
+    gap_angle: f64,
+    /// The gap above 0 and at least `min_gap`.
+    clear: bool,
+    /// Within the limits and clear.
+    acceptable: bool,
+}
+
 impl Travel {
     /// The sampled figures of the ground pivot `g` (module docs). Calls
     /// `root(k0, k1)` for each bracket: `ds/dtheta2` of opposite signs at
@@ -322,6 +349,25 @@ impl Travel {
             link_ratio: lmax / lmin,
             size_ratio: (self.members + s_max) * self.inv_span,
             turns,
+        }
+    }
+
+    /// The figures `e` with the lengths exact: the shortest and the
+    /// longest of the lengths at the poses, `pose_lengths`, and at the
+    /// refined turning points, `turns` (none when monotone: then the
+    /// first and the last pose's), and the ratios of them.
+    fn exact(&self, e: &Eval, pose_lengths: &PerPose<f64>, turns: &[f64]) -> Eval {
+        let (mut s_min, mut s_max) = (f64::INFINITY, 0.0f64);
+        for &s in pose_lengths.iter().chain(turns) {
+            s_min = s_min.min(s);
+            s_max = s_max.max(s);
+        }
+        Eval {
+            s_min,
+            s_max,
+            link_ratio: self.link_max.max(s_max) / self.link_min.min(s_min),
+            size_ratio: (self.members + s_max) * self.inv_span,
+            ..*e
         }
     }
 
@@ -605,19 +651,23 @@ impl ActuatorContext {
             return ActuatorSample::INVALID;
         }
         let mu = e.min_sin.asin();
-        // The gap where the rest of the limits are met (NaN elsewhere: not
-        // computed, as it would not make the sample acceptable).
-        let meets = self.meets(prepared, g, &e, mu);
-        let gap = if meets {
-            let check = self.strut_check(prepared, g);
+        // Where the sampled figures meet the limits, the verdict is the
+        // placement's own: its refined transmission angle and gap are
+        // never above the sampled ones, so a sample judged on those could
+        // be acceptable while its placement is not (a gap just below
+        // `min_gap`). Elsewhere the gap is not computed (NaN): the refined
+        // figures would not make the sample acceptable.
+        let (gap, acceptable) = if self.meets(prepared, g, &e, mu) {
+            // Monotone (`meets`): the lengths are the poses'.
             let t = &self.travel;
-            t.joints
-                .iter()
-                .zip(&t.q)
-                .map(|(j, &q)| check.gap_at(j, q))
-                .fold(f64::INFINITY, f64::min)
+            let exact = t.exact(&e, &t.at_poses.map(|q| (q - g).norm()), &[]);
+            match self.judge(prepared, g, &exact, None) {
+                Ok(v) => (v.gap, v.acceptable),
+                // The placement fails too (the ranking skips it).
+                Err(_) => (f64::NAN, false),
+            }
         } else {
-            f64::NAN
+            (f64::NAN, false)
         };
         ActuatorSample {
             valid: true,
@@ -630,8 +680,43 @@ impl ActuatorContext {
             link_ratio: e.link_ratio as f32,
             size_ratio: e.size_ratio as f32,
             clearance: gap as f32,
-            acceptable: meets && self.clear(gap),
+            acceptable,
         }
+    }
+
+    /// The refined figures of the ground pivot `g` and the verdict on them,
+    /// from its sampled figures `e` and its first refined turning point
+    /// (`None` when monotone): shared by [`placement`](Self::placement)
+    /// and the map's `clearance` and `acceptable` columns, so that an
+    /// acceptable sample's placement is acceptable.
+    fn judge(
+        &self,
+        prepared: &Prepared,
+        g: Point2<f64>,
+        e: &Eval,
+        turning: Option<f64>,
+    ) -> Result<Verdict> {
+        let t = &self.travel;
+        let (min_transmission, worst_angle) = if let Some(th) = turning {
+            (0.0, th)
+        } else {
+            let k = e.worst;
+            let a = t.theta[k.saturating_sub(1)];
+            let b = t.theta[(k + 1).min(t.theta.len() - 1)];
+            let (th, sin) = golden_min(|x| t.sin_mu(g, x), a, b, e.min_sin, t.theta[k])?;
+            (sin.asin(), th)
+        };
+        let (gap, gap_angle) = self.clearance(prepared, g)?;
+        let clear = self.clear(gap);
+        let acceptable = clear && self.meets(prepared, g, e, min_transmission);
+        Ok(Verdict {
+            min_transmission,
+            worst_angle,
+            gap,
+            gap_angle,
+            clear,
+            acceptable,
+        })
     }
 
     /// The placement with its ground pivot at `g`, its turning points and
@@ -656,40 +741,22 @@ impl ActuatorContext {
             .into());
         }
         let mut turning = Vec::with_capacity(brackets.len());
-        let (mut s_min, mut s_max) = (f64::INFINITY, 0.0f64);
+        let mut turn_lengths = Vec::with_capacity(brackets.len());
         let pose_lengths = t.at_poses.map(|q| (q - g).norm());
-        for &s in pose_lengths.iter() {
-            s_min = s_min.min(s);
-            s_max = s_max.max(s);
-        }
         for (k0, k1) in brackets {
             let th = bisect(|x| t.rate(g, x), t.theta[k0], t.theta[k1])?;
             let (q, _) = t.point.at(th)?;
-            let s = (q - g).norm();
-            s_min = s_min.min(s);
-            s_max = s_max.max(s);
+            turn_lengths.push((q - g).norm());
             turning.push(th);
         }
-        let (min_transmission, worst_angle) = if let Some(&th) = turning.first() {
-            (0.0, th)
-        } else {
-            let k = e.worst;
-            let a = t.theta[k.saturating_sub(1)];
-            let b = t.theta[(k + 1).min(t.theta.len() - 1)];
-            let (th, sin) = golden_min(|x| t.sin_mu(g, x), a, b, e.min_sin, t.theta[k])?;
-            (sin.asin(), th)
-        };
-        let prepared = self.map_options.prepared();
-        let exact = Eval {
-            s_min,
-            s_max,
-            link_ratio: t.link_max.max(s_max) / t.link_min.min(s_min),
-            size_ratio: (t.members + s_max) * t.inv_span,
-            ..e
-        };
-        let (min_clearance, clearance_angle) = self.clearance(prepared, g)?;
-        let clear = self.clear(min_clearance);
-        let acceptable = self.meets(prepared, g, &exact, min_transmission) && clear;
+        let exact = t.exact(&e, &pose_lengths, &turn_lengths);
+        let (s_min, s_max) = (exact.s_min, exact.s_max);
+        let v = self.judge(
+            self.map_options.prepared(),
+            g,
+            &exact,
+            turning.first().copied(),
+        )?;
         Ok(Actuator {
             linkage: self.linkage,
             link: self.options.link,
@@ -703,14 +770,14 @@ impl ActuatorContext {
             max_length: s_max,
             stroke: s_max - s_min,
             stroke_ratio: s_max / s_min,
-            min_transmission,
-            worst_angle,
+            min_transmission: v.min_transmission,
+            worst_angle: v.worst_angle,
             link_ratio: exact.link_ratio,
             size_ratio: exact.size_ratio,
-            acceptable,
-            min_clearance,
-            clearance_angle,
-            clear,
+            acceptable: v.acceptable,
+            min_clearance: v.gap,
+            clearance_angle: v.gap_angle,
+            clear: v.clear,
             index: None,
             margin: f64::NAN,
             score: f64::NAN,
