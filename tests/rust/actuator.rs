@@ -1241,14 +1241,14 @@ fn strut_context(
         link_width,
         ..Constraints::none()
     };
-    ActuatorContext::new(
-        sfb,
-        q,
-        grid,
-        &MapOptions::new(limits, &c).unwrap(),
-        &options,
-    )
-    .unwrap()
+    let checked = MapOptions::new(limits, &c).unwrap();
+    ActuatorContext::new(sfb, q, grid, &checked, &options).unwrap()
+}
+
+/// An `nx` by `ny` grid within two spans of the task's centroid.
+fn about(task: &Task, nx: usize, ny: usize) -> Grid {
+    let (c, r) = (common::centroid(task.poses()), 2.0 * task.span());
+    Grid::from_bounds(c.x - r, c.x + r, c.y - r, c.y + r, nx, ny).unwrap()
 }
 
 /// The rankings over the acceptable samples (all but the margin's).
@@ -1266,21 +1266,12 @@ const ACCEPTABLE_RANKINGS: [RankBy; 4] = [
 /// `min_gap` and the ranking returned them.)
 #[test]
 fn a_placement_just_below_min_gap_is_not_ranked() {
-    let mut runner = TestRunner::new(common::config(1));
+    // The placements whose gap was tried.
     let mut tried = 0;
+    let mut runner = TestRunner::new(common::config(1));
     for case in 0..6 {
         let (task, sfb) = random_linkage(&mut runner);
-        let r = task.span();
-        let c = common::centroid(task.poses());
-        let grid = Grid::from_bounds(
-            c.x - 2.0 * r,
-            c.x + 2.0 * r,
-            c.y - 2.0 * r,
-            c.y + 2.0 * r,
-            24,
-            20,
-        )
-        .unwrap();
+        let (r, grid) = (task.span(), about(&task, 24, 20));
         let q = sfb.driving.circle + (sfb.driven.circle - sfb.driving.circle) * 0.4;
         let at = (ActuatorLink::ALL[case % 3], q, 256);
         let widths = |min_gap: f64| (0.03 * r, 0.02 * r, min_gap);
@@ -1316,14 +1307,16 @@ fn a_placement_just_below_min_gap_is_not_ranked() {
 }
 
 /// Property: over random linkages, links, moving points, widths, least
-/// gaps, transmission limits and travel samples, every placement a ranking over the
-/// acceptable samples returns is acceptable and clear by its own figures:
-/// its gap above 0 and at least `min_gap`; and the map's `acceptable`
-/// column holds only where the sample's placement is acceptable.
+/// gaps, transmission limits and travel samples, every placement a ranking
+/// over the acceptable samples returns is acceptable and clear by its own
+/// figures: its gap above 0 and at least `min_gap`; and the map's
+/// `acceptable` column holds only where the sample's placement is
+/// acceptable.
 #[test]
 fn every_ranked_placement_keeps_min_gap() {
     let mut runner = TestRunner::new(common::config(1));
-    let (mut ranked, mut accepted) = (0, 0);
+    // The placements ranked, the samples accepted.
+    let mut seen = [0usize; 2];
     for case in 0..10 {
         let (task, sfb) = random_linkage(&mut runner);
         let (link, t, (ws, wl, gap), mu, (nx, ny), (near, pick, above), samples) = (
@@ -1339,16 +1332,7 @@ fn every_ranked_placement_keeps_min_gap() {
             .unwrap()
             .current();
         let r = task.span();
-        let c = common::centroid(task.poses());
-        let grid = Grid::from_bounds(
-            c.x - 2.0 * r,
-            c.x + 2.0 * r,
-            c.y - 2.0 * r,
-            c.y + 2.0 * r,
-            nx,
-            ny,
-        )
-        .unwrap();
+        let grid = about(&task, nx, ny);
         // On the link: along the coupler's bar, or along the crank's
         // (rocker's) past the middle.
         let (a, b) = match ActuatorLink::ALL[link] {
@@ -1391,7 +1375,7 @@ fn every_ranked_placement_keeps_min_gap() {
                     let a = ctx.placement_at(k).unwrap();
                     assert!(a.acceptable && a.clear, "case {case}, sample {k}: {a:?}");
                     assert!(a.min_clearance > 0.0 && a.min_clearance >= min_gap);
-                    accepted += 1;
+                    seen[1] += 1;
                 }
             }
             for rank_by in ACCEPTABLE_RANKINGS {
@@ -1402,13 +1386,10 @@ fn every_ranked_placement_keeps_min_gap() {
                         a.min_clearance
                     );
                     assert!(a.acceptable && a.clear, "case {case}, {rank_by:?}: {a:?}");
-                    ranked += 1;
+                    seen[0] += 1;
                 }
             }
         }
     }
-    assert!(
-        ranked > 0 && accepted > 0,
-        "{ranked} ranked, {accepted} accepted"
-    );
+    assert!(seen[0] > 0 && seen[1] > 0, "{seen:?} ranked, accepted");
 }
