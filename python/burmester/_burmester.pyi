@@ -1704,7 +1704,7 @@ class SynthesizedFourBar:
         minus the angle between its line and the velocity of ``Q``; at
         least the limits' ``min_transmission_deg``), the link and size
         ratios with the actuator, the strut's ``clearance`` (its least gap
-        over the sampled travel: its capsule ``actuator_width`` wide, its
+        over the travel, refined as a placement's: its capsule ``actuator_width`` wide, its
         diameter in task units, default 0, against the links' capsules
         ``link_width`` wide, the obstacles and the envelope) and
         ``acceptable`` (the limits, and the clearance above 0 and at least
@@ -3093,16 +3093,18 @@ class ActuatorMap:
         """The linkage and the open actuator over the task's span."""
     @property
     def clearance(self) -> npt.NDArray[np.float32]:
-        """The strut's least gap over the sampled travel, task units: its
-        capsule (:attr:`actuator_width`) to the links' capsules
-        (``link_width``), the obstacles and the envelope; negative where
-        they overlap. Computed where the rest of ``acceptable`` holds
-        (monotone, within the limits, on the base plate); NaN elsewhere. At
-        least a placement's refined :attr:`Actuator.min_clearance`."""
+        """The strut's least gap over the travel, task units: its capsule
+        (:attr:`actuator_width`) to the links' capsules (``link_width``),
+        the obstacles and the envelope; negative where they overlap.
+        Computed where the rest of ``acceptable`` holds (monotone, within
+        the limits, on the base plate); NaN elsewhere. Refined as the
+        sample's placement's: its :attr:`Actuator.min_clearance`."""
     @property
     def acceptable(self) -> BoolArray:
         """Monotone and within the limits and the base plate, and clear:
-        ``clearance`` above 0 and at least :attr:`min_gap`."""
+        ``clearance`` above 0 and at least :attr:`min_gap`; judged as the
+        sample's placement is (on its refined gap and transmission angle),
+        so a ranked placement is acceptable by its own figures."""
     @property
     def grid(self) -> Grid:
         """The grid of candidate ground pivots."""
