@@ -40,7 +40,10 @@ impl Default for ActuatorSearch {
     }
 }
 
-/// How many placements of one map are judged for clearance, best first.
+/// How many placements of one map are asked for, best first: a ranking
+/// over the acceptable samples gives only acceptable, clear placements (the
+/// map judges a sample as its placement), the margin's the monotone ones,
+/// of which the first acceptable and clear is taken.
 const CANDIDATES: usize = 12;
 
 impl ActuatorSearch {
