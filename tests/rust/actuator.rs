@@ -1297,7 +1297,7 @@ fn a_placement_just_below_min_gap_is_not_ranked() {
             assert!(!again.clear && !again.acceptable);
             assert!(!single.columns.acceptable[0], "sample {k}: {own:?}");
             for rank_by in ACCEPTABLE_RANKINGS {
-                let best = single.best_placements(1, None, rank_by).unwrap();
+                let best = single.best_placements(Ranking::new(1, rank_by)).unwrap();
                 assert!(best.is_empty(), "{rank_by:?}: {best:?}");
             }
             tried += 1;
@@ -1379,7 +1379,7 @@ fn every_ranked_placement_keeps_min_gap() {
                 }
             }
             for rank_by in ACCEPTABLE_RANKINGS {
-                for a in map.best_placements(6, None, rank_by).unwrap() {
+                for a in map.best_placements(Ranking::new(6, rank_by)).unwrap() {
                     assert!(
                         a.min_clearance > 0.0 && a.min_clearance >= min_gap,
                         "case {case}, {rank_by:?}: gap {} below {min_gap}",
