@@ -667,3 +667,6 @@ impl PySynthesizedFourBar {
         Ok(PyActuator::of(a, self.task(), &ctx))
     }
 }
+
+// Pictures in Jupyter (`_repr_png_`).
+crate::display::repr_png_for!(PyActuator, PyActuatorMap);

@@ -235,7 +235,7 @@ fn bad_state(name: &str, k: usize, nx: usize, what: String) -> PyErr {
 /// without them, a travel without a direction (or the other way round), an
 /// acceptable sample that is not branch-free, feasible and within the
 /// limits; a Grashof class where `no_grashof` (a map of slider-cranks,
-/// `slider_map::NoGrashof`), none elsewhere. (The bool bytes are checked
+/// `map_state::NoGrashof`), none elsewhere. (The bool bytes are checked
 /// as they are read.)
 pub(crate) fn check_state(
     c: &burmester::design::Columns,
@@ -289,7 +289,7 @@ pub(crate) fn check_state(
             continue;
         }
         if (g == SolutionMap::GRASHOF_NONE) != no_grashof {
-            return bad("grashof", crate::slider_map::grashof_problem(no_grashof));
+            return bad("grashof", crate::map_state::grashof_problem(no_grashof));
         }
         if lr.is_nan() || lr < 1.0 {
             return bad("link_ratio", format!("{lr} (at least 1 for a linkage)"));
@@ -497,7 +497,7 @@ macro_rules! py_map_class {
                 )*
                 // Values and rows a map can hold, and nothing else.
                 let cols = burmester::design::Columns { $($name,)* };
-                let no_grashof = $crate::slider_map::NoGrashof::no_grashof(&context);
+                let no_grashof = $crate::map_state::NoGrashof::no_grashof(&context);
                 let limits = $crate::design::ContextLimits::context_limits(&context);
                 $crate::design::check_state(&cols, shape.1, &limits, no_grashof)?;
                 let burmester::design::Columns { $($name,)* } = cols;
@@ -841,7 +841,7 @@ impl PySolutionMap {
     /// The arguments of `_from_state` (for pickling).
     fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         let c = &self.context;
-        let fixed = crate::slider_map::fixed_tuple(&c.varying);
+        let fixed = crate::map_state::fixed_tuple(&c.varying);
         let grid = PyGrid { inner: c.grid };
         let (task, limits) = (self.task(), self.limits());
         let columns = self.column_dict(py)?;
@@ -849,7 +849,7 @@ impl PySolutionMap {
         (
             grid,
             task,
-            crate::slider_map::varying_state(&c.varying),
+            crate::map_state::varying_state(&c.varying),
             fixed,
             limits,
             constraints,
@@ -863,7 +863,7 @@ impl PySolutionMap {
 impl PySolutionMap {
     #[getter]
     fn fixed_dyad(&self) -> (Xy, Xy) {
-        crate::slider_map::fixed_tuple(&self.context.varying)
+        crate::map_state::fixed_tuple(&self.context.varying)
     }
     fn point(&self, j: Count, i: Count) -> PyResult<Xy> {
         self.grid().point(j, i)
@@ -898,7 +898,7 @@ impl PySolutionMap {
         constraints: (Option<Vec<PyPoint>>, Vec<Vec<PyPoint>>, f64, usize),
         columns: &Bound<'_, PyDict>,
     ) -> PyResult<Self> {
-        let varying = crate::slider_map::varying_of(varying, fixed)?;
+        let varying = crate::map_state::varying_of(varying, fixed)?;
         let context = MapContext {
             grid: grid.inner,
             task: task.inner,

@@ -20,28 +20,23 @@ pub(crate) fn repr_png(obj: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
 
 /// `_repr_png_` for each class named: the picture `burmester._display`
 /// draws for it (one method, [`repr_png`], for every class; issue 27's
-/// slider and actuator classes use it through this macro).
+/// slider and actuator classes use it through this macro, each in its own
+/// file, so this module depends on none of them).
 macro_rules! repr_png_for {
     ($($ty:ty),* $(,)?) => {
         $(
-            #[pymethods]
+            #[pyo3::pymethods]
             impl $ty {
                 /// A picture for Jupyter: PNG bytes drawn by
                 /// `burmester._display`, or None without matplotlib.
-                fn _repr_png_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-                    repr_png(slf.as_any())
+                fn _repr_png_(
+                    slf: &pyo3::Bound<'_, Self>,
+                ) -> pyo3::PyResult<pyo3::Py<pyo3::PyAny>> {
+                    $crate::display::repr_png(slf.as_any())
                 }
             }
         )*
     };
 }
 
-repr_png_for!(
-    crate::slider::PySliderCrank,
-    crate::slider::PySynthesizedSliderCrank,
-    crate::slider_dyads::PySliderDyad,
-    crate::actuator::PyActuator,
-    crate::actuator::PyActuatorMap,
-    crate::inverted::PyInvertedSliderCrank,
-    crate::inverted::PySynthesizedInvertedSliderCrank,
-);
+pub(crate) use repr_png_for;

@@ -167,3 +167,6 @@ synthesized_crank! {
         Ok(PySynthesizedInvertedSliderCrank::new(inner, task, given))
     }
 }
+
+// Pictures in Jupyter (`_repr_png_`).
+crate::display::repr_png_for!(PyInvertedSliderCrank, PySynthesizedInvertedSliderCrank);

@@ -24,6 +24,7 @@ mod geom;
 mod getters;
 mod inverted;
 mod linkage;
+mod map_state;
 mod options;
 mod pairs;
 mod pickle;

@@ -165,3 +165,6 @@ impl PySynthesizedSliderCrank {
         self.size_ratio
     }
 }
+
+// Pictures in Jupyter (`_repr_png_`).
+crate::display::repr_png_for!(PySliderCrank, PySynthesizedSliderCrank);

@@ -176,3 +176,6 @@ impl PyTask {
         Ok(PyInvertedSlider { inner })
     }
 }
+
+// Pictures in Jupyter (`_repr_png_`).
+crate::display::repr_png_for!(PySliderDyad);
