@@ -28,6 +28,7 @@ from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple
 import numpy as np
 
 import burmester
+from burmester import _counts
 from burmester.cli.base import UsageError, _fmt_point, _load, _with_units
 from burmester.cli import files
 from burmester.cli.tables import table
@@ -55,10 +56,10 @@ def _cranks(task: burmester.Task, spec: TaskSpec, pivot: Optional[Point], grid: 
     """The driving cranks ``(A0, A1)`` tried: ``pivot``'s alone when given."""
     if pivot is not None:
         return [task.dyad(pivot)]
-    n = len(task)
-    if n == 4:
+    offers = _counts.of(task)
+    if offers.curves:
         return [d.dyad for run in task.curve_dyads(grid * grid // 4 or 1) for d in run]
-    if n == 5:
+    if offers.burmester_points:
         return [(c, a) for c, a in task.burmester_points()]
     if spec.space is not None:
         x0, x1, y0, y1 = spec.space.search_box(task, spec.limits)
