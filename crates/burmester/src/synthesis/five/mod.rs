@@ -317,13 +317,10 @@ impl FivePositions {
         let blind = |o: &[usize; 5]| {
             [(o[0], o[1]), (o[0], o[2]), (o[1], o[2])]
                 .iter()
-                .any(|&(a, b)| {
-                    let h = motion.pole(a, b);
-                    h[2] != 0.0 && {
-                        let x = Vector2::new(h[0] / h[2], h[1] / h[2]);
-                        at.iter()
-                            .any(|p| (x - p).norm() <= POLE_MATCH * (1.0 + x.norm()))
-                    }
+                .filter_map(|&(a, b)| finite(motion.pole(a, b)))
+                .any(|x| {
+                    at.iter()
+                        .any(|p| (x - p).norm() <= POLE_MATCH * (1.0 + x.norm()))
                 })
         };
         let mut taken = first_clean(&choices, &[])?;
@@ -517,11 +514,7 @@ fn coincident_poles(m: &LocalMotion) -> Vec<Vector2<f64>> {
     let mut n = 0;
     for a in 0..5 {
         for b in a + 1..5 {
-            let h = m.pole(a, b);
-            poles[n] = (
-                [a, b],
-                (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2])),
-            );
+            poles[n] = ([a, b], finite(m.pole(a, b)));
             n += 1;
         }
     }
@@ -555,6 +548,12 @@ fn concyclic_to_rounding(m: &LocalMotion, d: &Dyad) -> bool {
             <= tolerance::BURMESTER_ROUNDING * f64::EPSILON * (1.0 + coords / radius)
 }
 
+/// A homogeneous local point (such as [`LocalMotion::pole`]) as a local
+/// point; `None` at infinity.
+fn finite(h: [f64; 3]) -> Option<Vector2<f64>> {
+    (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2]))
+}
+
 /// Whether two Burmester points (global) are one: their centers within
 /// [`DOUBLE_REACH`] of `size + distance` (each polished by Newton's
 /// method to rounding; two points that close are one for [`polish`] too).
@@ -568,7 +567,6 @@ fn same_point(m: &LocalMotion, a: &Dyad, b: &Dyad) -> bool {
 /// of one angle with collinear positions
 /// ([`LocalMotion::collinear_translations`]).
 fn degenerate_triples(m: &LocalMotion) -> Result<()> {
-    let finite = |h: [f64; 3]| (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2]));
     for i in 0..5 {
         for j in i + 1..5 {
             for k in j + 1..5 {
@@ -907,11 +905,12 @@ impl Elimination {
         }
         let shared = |j: usize, k: usize| {
             let h = sub.pole(j, k);
-            if h[2] != 0.0 {
-                SharedPole::At(Vector2::new(h[0] / h[2], h[1] / h[2]))
-            } else {
-                let d = Vector2::new(h[0], h[1]);
-                SharedPole::Infinite(d / d.norm())
+            match finite(h) {
+                Some(p) => SharedPole::At(p),
+                None => {
+                    let d = Vector2::new(h[0], h[1]);
+                    SharedPole::Infinite(d / d.norm())
+                }
             }
         };
         // The cubic part of a circular cubic is `(x^2 + y^2)(alpha x + beta y)`:
