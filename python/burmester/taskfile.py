@@ -901,7 +901,12 @@ MAX_ACTUATOR_GRID = 1024
 class ActuatorSpec:
     """The ``[actuator]`` table: a linear actuator (a cylinder, a gas
     strut) for ``burmester actuator`` to place on the task's linkage. Every
-    field has the command's default; its flags override them::
+    field has the command's default; its flags override them.
+    ``burmester design --input actuator`` reads its ``link``, ``point``,
+    ``max_stroke_ratio``, ``width`` and ``min_gap`` (the same point on
+    every design; ``--try-actuator-points`` tries a few points of the link
+    instead), each overridden by its flag; the other keys are
+    ``burmester actuator``'s::
 
         [actuator]
         link = "coupler"             # the link it acts on: "coupler", "crank" or "rocker"
@@ -994,7 +999,8 @@ def _dump_actuator(a: ActuatorSpec, note: Any) -> Any:
     """The ``[actuator]`` table (tomlkit), ``note`` adding a comment to an item."""
     import tomlkit
 
-    t = note(tomlkit.table(), "a linear actuator to place (burmester actuator; its flags override these)")
+    t = note(tomlkit.table(), "a linear actuator to place (burmester actuator; design --input actuator reads "
+                              "link, point, max_stroke_ratio, width, min_gap; the flags override these)")
     t.add("link", note(tomlkit.item(a.link), 'the link it acts on: "coupler", "crank" or "rocker"'))
     if a.point is not None:
         t.add("point", note(tomlkit.item([float(c) for c in a.point]), "its moving point Q at pose 1"))

@@ -184,12 +184,13 @@ def test_task_file_and_command_line(tmp_path, capsys):
     assert taskfile.load(str(old)).actuator.min_gap is None
     # design --input actuator takes the table's width and gap; the flags
     # override them.
-    assert main(["design", str(HOOD), "--input", "actuator", "--top", "1", "--json"]) == 0
+    assert main(["design", str(HOOD), "--input", "actuator", "--try-actuator-points", "--top", "1", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     for d in doc["designs"]:
         a = d["actuator"]
         assert (a["actuator_width"], a["min_gap"]) == (20.0, 3.0) and a["clear"] and a["min_clearance"] >= 3.0
-    assert main(["design", str(HOOD), "--input", "actuator", "--top", "1", "--min-gap", "25", "--json"]) == 0
+    assert main(["design", str(HOOD), "--input", "actuator", "--try-actuator-points", "--top", "1", "--min-gap", "25",
+                 "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert all(d["actuator"]["min_clearance"] >= 25.0 for d in doc["designs"])
     assert main(["design", str(HOOD), "--input", "actuator", "--min-gap", "-1"]) == 2

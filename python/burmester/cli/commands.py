@@ -527,14 +527,19 @@ def _draw_slider_design(args: argparse.Namespace, sc: burmester.SynthesizedSlide
 def _design_strut(args: argparse.Namespace, spec_actuator: Any = None) -> Dict[str, Any]:
     """The keywords of ``burmester.design`` for ``design --input``:
     ``--input motor`` sets ``args.motor``; ``--input actuator`` gives the
-    actuator's keywords, which are refused without it (the strut's diameter
-    and least gap from ``spec_actuator``, the task file's ``[actuator]``,
-    where the flags do not give them)."""
+    actuator's keywords, which are refused without it. The task file's
+    ``[actuator]`` table (``spec_actuator``) gives their defaults: its
+    ``link``, ``point``, ``max_stroke_ratio``, ``width`` and ``min_gap``,
+    each overridden by its flag (``--actuator-link``, ``--actuator-point``
+    or ``--try-actuator-points``, ``--max-stroke-ratio``,
+    ``--actuator-width``, ``--min-gap``); a bad value is a
+    :class:`UsageError` naming the flag or the key."""
     which = args.design_input
     if which == "motor":
         args.motor = True
         return {}
     given = [flag for flag, v in (("--actuator-link", args.actuator_link), ("--actuator-point", args.actuator_point),
+                                  ("--try-actuator-points", args.try_actuator_points or None),
                                   ("--max-stroke-ratio", args.max_stroke_ratio),
                                   ("--actuator-width", args.actuator_width), ("--min-gap", args.min_gap))
              if v is not None]
@@ -544,30 +549,61 @@ def _design_strut(args: argparse.Namespace, spec_actuator: Any = None) -> Dict[s
         return {}
     if args.motor:
         raise UsageError("--motor and --input actuator: a design has one input, give one of them")
+    if args.actuator_point is not None and args.try_actuator_points:
+        raise UsageError("--actuator-point and --try-actuator-points: give one of them (a point, or a few "
+                         "points of the link tried)")
+    table = spec_actuator
     kw: Dict[str, Any] = {"input": "actuator"}
-    if args.actuator_link is not None:
-        kw["actuator_link"] = args.actuator_link
-    if args.actuator_point is not None:
-        kw["actuator_point"] = (args.actuator_point[0], args.actuator_point[1])
-    if args.max_stroke_ratio is not None:
-        if not args.max_stroke_ratio >= 1.0:
-            raise UsageError(f"--max-stroke-ratio must be at least 1, got {args.max_stroke_ratio:g}")
-        kw["max_stroke_ratio"] = args.max_stroke_ratio
-    kw.update(_strut_gap(args.actuator_width, args.min_gap, spec_actuator))
+    link = _flag_or_key(args.actuator_link, "--actuator-link", table, "link")
+    if link is not None:
+        flag, value = link
+        if value not in ("coupler", "crank", "rocker"):
+            raise UsageError(f"{flag} must be \"coupler\", \"crank\" or \"rocker\", got {value!r}")
+        kw["actuator_link"] = value
+    point = None if args.try_actuator_points else _flag_or_key(args.actuator_point, "--actuator-point", table,
+                                                               "point")
+    if point is not None:
+        flag, value = point
+        try:
+            x, y = (float(c) for c in value)
+        except (TypeError, ValueError):
+            raise UsageError(f"{flag} must be a point [x, y], got {value!r}") from None
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise UsageError(f"{flag} must be a finite point [x, y], got {value!r}")
+        kw["actuator_point"] = (x, y)
+    ratio = _flag_or_key(args.max_stroke_ratio, "--max-stroke-ratio", table, "max_stroke_ratio")
+    if ratio is not None:
+        flag, value = ratio
+        if not value >= 1.0:
+            raise UsageError(f"{flag} must be at least 1 (open over closed length), got {value:g}")
+        kw["max_stroke_ratio"] = value
+    kw.update(_strut_gap(args.actuator_width, args.min_gap, table))
     return kw
+
+
+def _flag_or_key(flag_value: Any, flag: str, table: Any, key: str) -> Optional[Tuple[str, Any]]:
+    """``(what, value)``: the flag's value where given, else the task file's
+    ``[actuator]`` ``key`` where set (``what`` naming it for an error), else
+    None."""
+    if flag_value is not None:
+        return flag, flag_value
+    value = getattr(table, key, None) if table is not None else None
+    if value is None:
+        return None
+    return f"[actuator] {key} (in the task file; or give {flag})", value
 
 
 def _strut_gap(width: Optional[float], min_gap: Optional[float], table: Any) -> Dict[str, float]:
     """``actuator_width`` and ``min_gap``: the flags', else the task file's
-    ``[actuator]`` ``width`` and ``min_gap``, else 0 (refused below 0)."""
-    w = width if width is not None else (table.width if table is not None and table.width is not None else 0.0)
-    g = min_gap if min_gap is not None else (table.min_gap if table is not None and table.min_gap is not None
-                                             else 0.0)
-    if not w >= 0.0:
-        raise UsageError(f"--actuator-width must be at least 0 (the strut's diameter), got {w:g}")
-    if not g >= 0.0:
-        raise UsageError(f"--min-gap must be at least 0, got {g:g}")
-    return {"actuator_width": w, "min_gap": g}
+    ``[actuator]`` ``width`` and ``min_gap``, else 0 (refused below 0,
+    naming the flag or the key)."""
+    w = _flag_or_key(width, "--actuator-width", table, "width") or ("", 0.0)
+    g = _flag_or_key(min_gap, "--min-gap", table, "min_gap") or ("", 0.0)
+    if not w[1] >= 0.0:
+        raise UsageError(f"{w[0]} must be at least 0 (the strut's diameter), got {w[1]:g}")
+    if not g[1] >= 0.0:
+        raise UsageError(f"{g[0]} must be at least 0, got {g[1]:g}")
+    return {"actuator_width": w[1], "min_gap": g[1]}
 
 
 def _actuator_section(report: burmester.DesignReport, units: str) -> str:

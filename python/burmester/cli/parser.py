@@ -296,14 +296,20 @@ def _add_design(sub: _Commands) -> None:
                    "a gas strut) placed with it: its ground pivot on the [space] pivot region, its length "
                    "monotone through the poses, within --max-stroke-ratio and the limits, its line clear of "
                    "the links, obstacles and envelope over the travel (-o then draws the best design with "
-                   "its actuator); one without such a placement is passed over")
+                   "its actuator); one without such a placement is passed over. The task file's [actuator] "
+                   "table gives its link, point, max_stroke_ratio, width and min_gap (each flag below "
+                   "overrides its key; the table's other keys are burmester actuator's)")
     p.add_argument("--actuator-link", choices=("coupler", "crank", "rocker"), default=None,
-                   help="with --input actuator: the link it acts on (default: coupler)")
+                   help="with --input actuator: the link it acts on (default: [actuator] link, else coupler)")
     p.add_argument("--actuator-point", type=_finite, nargs=2, default=None, metavar=("X", "Y"),
-                   help="with --input actuator: its moving point where it is at pose 1 (default: a few points "
-                   "of the link are tried)")
+                   help="with --input actuator: its moving point where it is at pose 1, the same point for "
+                   "every design (default: [actuator] point, else a few points of the link are tried)")
+    p.add_argument("--try-actuator-points", action="store_true",
+                   help="with --input actuator: try a few points of the link on each design (the moving pivots, "
+                   "points between them, the coupler point), not [actuator] point")
     p.add_argument("--max-stroke-ratio", type=_finite, default=None, metavar="R",
-                   help="with --input actuator: largest open over closed length (default: 1.8)")
+                   help="with --input actuator: largest open over closed length (default: [actuator] "
+                   "max_stroke_ratio, else 1.8)")
     _strut_gap_args(p, "with --input actuator: ", "else 0: its center line", dest=None)
     p.add_argument("--driven", choices=("revolute", "slider"), default=None,
                    help="the driven dyad: revolute (a crank: four-bars) or slider (a pin on a straight guide "
