@@ -2509,6 +2509,12 @@ class DesignReport:
     def unplaced(self) -> int:
         """With a linear actuator: candidates passed over because no clear,
         acceptable placement was found for them; 0 without."""
+    @property
+    def actuator_max_size_ratio(self) -> Optional[float]:
+        """With a linear actuator: the largest size ratio of a design with
+        its open actuator (the ``actuator_max_size_ratio`` keyword of
+        :func:`burmester.design`, else :attr:`limits`'
+        ``max_size_ratio``; ``inf``: no limit); None without."""
     def __len__(self) -> int: ...
     def __getitem__(self, index: int, /) -> Design: ...
     def __iter__(self) -> Iterator[Design]: ...
@@ -2526,7 +2532,12 @@ class DesignReport:
         near_misses: Sequence[NearMiss],
         inputs: Tuple[
             Optional[Tuple[float, float]],
-            Optional[Tuple[str, float, int, Optional[Point], int]],
+            Optional[
+                Union[
+                    Tuple[str, float, int, Optional[Point], int, Optional[float]],
+                    Tuple[str, float, int, Optional[Point], int],
+                ]
+            ],
         ] = ...,
         passed: Union[Tuple[int, int], Tuple[int, int, Optional[Tuple[float, float]]]] = ...,
     ) -> DesignReport:
@@ -2541,7 +2552,8 @@ class _DesignOptions(TypedDict, total=False):
     coarse_driving 48, coarse_pairs 120, starts 48, max_iterations 3000,
     input None, swing_margin_deg 0.0, max_time_ratio None, actuator_link
     "coupler", actuator_point None, max_stroke_ratio 1.8, actuator_samples
-    64, actuator_width 0.0, min_gap 0.0, driven "revolute")."""
+    64, actuator_width 0.0, min_gap 0.0, actuator_max_size_ratio None,
+    driven "revolute")."""
 
     space: Optional[Space]
     limits: Optional[DesignLimits]
@@ -2562,6 +2574,7 @@ class _DesignOptions(TypedDict, total=False):
     actuator_samples: int
     actuator_width: float
     min_gap: float
+    actuator_max_size_ratio: Optional[float]
     driven: Literal["revolute", "slider"]
 
 def _design(

@@ -73,6 +73,7 @@ def design(
     actuator_samples: int = 64,
     actuator_width: float = 0.0,
     min_gap: float = 0.0,
+    actuator_max_size_ratio: Optional[float] = None,
     driven: Literal["revolute", "slider"] = "revolute",
 ) -> DesignReport:
     """The best linkages for ``task`` (three to five poses) inside ``space``
@@ -123,9 +124,11 @@ def design(
     placement is the best by ``rank_by`` whose length is monotone through
     the poses, whose stroke ratio is at most ``max_stroke_ratio`` and which
     meets ``limits`` (its force transmission angle, the link and size
-    ratios with the open actuator), and whose line stays clear of the links
-    that do not carry its point, the space's obstacles and envelope over
-    the travel (:attr:`burmester.Actuator.clear`). A design without one is
+    ratios with the open actuator; the size ratio's bound is
+    ``actuator_max_size_ratio``, default None: the limits'
+    ``max_size_ratio``, which the linkage alone meets too), and whose line
+    stays clear of the links that do not carry its point, the space's
+    obstacles and envelope over the travel (:attr:`burmester.Actuator.clear`). A design without one is
     passed over (:attr:`burmester.DesignReport.unplaced`). These keywords
     are refused without ``input="actuator"``.
 
@@ -134,7 +137,12 @@ def design(
     gap (task units, default 0) its capsule must keep from the links'
     capsules (the space's ``link_width``), the obstacles and the envelope over
     the travel: a placement nearer than that is not clear. Both at least 0
-    (:class:`burmester.InvalidInputError` otherwise).
+    (:class:`burmester.InvalidInputError` otherwise). ``actuator_max_size_ratio``
+    (at least 1, ``math.inf``: no limit; :class:`burmester.InvalidInputError`
+    naming ``actuator max_size_ratio`` otherwise) lets the linkage with its
+    open strut be larger than the linkage alone may be (a task file's
+    ``[actuator]`` ``max_size_ratio``); the report gives the bound applied
+    (:attr:`burmester.DesignReport.actuator_max_size_ratio`).
 
     ``driven="slider"`` designs slider-cranks: a driving crank of the task
     driving a slider dyad of the task (its pin on a straight guide fixed to
@@ -162,7 +170,7 @@ def design(
               starts=starts, max_iterations=max_iterations, input=input, swing_margin_deg=swing_margin_deg,
               max_time_ratio=max_time_ratio, actuator_link=actuator_link, actuator_point=actuator_point,
               max_stroke_ratio=max_stroke_ratio, actuator_samples=actuator_samples, driven=driven)
-    kw.update(actuator_width=actuator_width, min_gap=min_gap)
+    kw.update(actuator_width=actuator_width, min_gap=min_gap, actuator_max_size_ratio=actuator_max_size_ratio)
     # The coarse pass on Dask is the four-bars' atlas.
     if client is None or not counts.of(task).filemon or driven == "slider":
         return _design(task, progress=progress, **kw)

@@ -903,10 +903,10 @@ class ActuatorSpec:
     strut) for ``burmester actuator`` to place on the task's linkage. Every
     field has the command's default; its flags override them.
     ``burmester design --input actuator`` reads its ``link``, ``point``,
-    ``max_stroke_ratio``, ``width`` and ``min_gap`` (the same point on
-    every design; ``--try-actuator-points`` tries a few points of the link
-    instead), each overridden by its flag; the other keys are
-    ``burmester actuator``'s::
+    ``max_stroke_ratio``, ``max_size_ratio``, ``width`` and ``min_gap``
+    (the same point on every design; ``--try-actuator-points`` tries a few
+    points of the link instead), each overridden by its flag; the other
+    keys are ``burmester actuator``'s::
 
         [actuator]
         link = "coupler"             # the link it acts on: "coupler", "crank" or "rocker"
@@ -931,7 +931,10 @@ class ActuatorSpec:
     link: Literal["coupler", "crank", "rocker"] = "coupler"
     point: Optional[Point] = None
     max_stroke_ratio: float = 1.8
-    #: None: the task's ``[limits]`` ``max_size_ratio``.
+    #: The linkage with the open actuator over the task's span, at least 1
+    #: where used (``burmester actuator`` and ``design --input actuator``:
+    #: the linkage alone still meets ``[limits]``); None: the task's
+    #: ``[limits]`` ``max_size_ratio``.
     max_size_ratio: Optional[float] = None
     rank_by: "RankBy" = "balanced"
     #: ``(xmin, xmax, ymin, ymax)`` of the ground pivots searched; None:
@@ -1000,7 +1003,7 @@ def _dump_actuator(a: ActuatorSpec, note: Any) -> Any:
     import tomlkit
 
     t = note(tomlkit.table(), "a linear actuator to place (burmester actuator; design --input actuator reads "
-                              "link, point, max_stroke_ratio, width, min_gap; the flags override these)")
+                              "link, point, max_stroke_ratio, max_size_ratio, width, min_gap; the flags override these)")
     t.add("link", note(tomlkit.item(a.link), 'the link it acts on: "coupler", "crank" or "rocker"'))
     if a.point is not None:
         t.add("point", note(tomlkit.item([float(c) for c in a.point]), "its moving point Q at pose 1"))

@@ -196,9 +196,7 @@ def test_bad_actuator_input_names_the_field():
 def test_the_command_line_prints_and_draws_the_actuator(tmp_path, capsys):
     from burmester.cli import main
 
-    # The file's [actuator] point fits no hinge under its size limit (the
-    # README): a few points of the coupler tried, as burmester.design does.
-    args = ["design", str(HOOD), "--input", "actuator", "--top", "2", "--try-actuator-points"]
+    args = ["design", str(HOOD), "--input", "actuator", "--top", "2"]
     assert main([*args, "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert "unplaced" in doc and doc["designs"]

@@ -996,6 +996,7 @@ fn design_actuator_options_at_their_limits() {
             travel_samples: ActuatorOptions::MIN_TRAVEL_SAMPLES,
             ..ActuatorOptions::default()
         },
+        max_size_ratio: None,
     });
     let report = task.design(&options, &Control::new()).unwrap();
     for d in &report.designs {
@@ -1018,6 +1019,128 @@ fn design_actuator_options_at_their_limits() {
     let stop = AtomicBool::new(true);
     let r = task.design(&options, &Control::new().with_cancel(&stop));
     assert!(matches!(r, Err(Error::Cancelled { .. })), "{r:?}");
+}
+
+/// The hood as `examples/hood.toml` gives it to `burmester design
+/// --input actuator`: its file's size limit 5, its 10 mm links, its 20 mm
+/// strut keeping 3 mm on the bracket point `(-40, -20)`, one design asked.
+fn hood_on_its_bracket() -> (Task, burmester::DesignOptions) {
+    let (task, mut options) = hood();
+    options.limits.max_size_ratio = 5.0;
+    options.space.link_width = 10.0;
+    options.top = 1;
+    options.actuator = Some(burmester::ActuatorSearch {
+        point: Some(P::new(-40.0, -20.0)),
+        options: ActuatorOptions {
+            actuator_width: 20.0,
+            min_gap: 3.0,
+            ..ActuatorOptions::default()
+        },
+        ..burmester::ActuatorSearch::default()
+    });
+    (task, options)
+}
+
+/// The strut stage's own size bound (`ActuatorSearch::max_size_ratio`,
+/// the task file's `[actuator] max_size_ratio`): on the hood's bracket no
+/// hinge takes a strut under the limits' 5 (`None`, the default: each is
+/// passed over), while 8 places one. Its size with the open strut,
+/// recomputed from the linkage and the strut's longest length, is above 5
+/// and at most 8, the hinge alone at most 5; the placement at its ground
+/// pivot judged afresh is acceptable and clear under the limits with 8 and
+/// not acceptable under 5. Infinity, the documented most (no limit), is
+/// searched and ranks a hinge at least as good first; below 1, NaN and
+/// minus infinity are refused naming the field.
+#[test]
+fn the_strut_stage_applies_its_own_size_bound() {
+    let (task, options) = hood_on_its_bracket();
+    let bracket = P::new(-40.0, -20.0);
+    assert_eq!(burmester::ActuatorSearch::default().max_size_ratio, None);
+    let five = task.design(&options, &Control::new()).unwrap();
+    assert!(five.designs.is_empty() && five.unplaced > 0, "{five:?}");
+
+    let mut eight = options.clone();
+    eight.actuator.as_mut().unwrap().max_size_ratio = Some(8.0);
+    let search = eight.actuator.unwrap();
+    assert_eq!(search.limits(&eight.limits).max_size_ratio, 8.0);
+    assert_eq!(
+        options.actuator.unwrap().limits(&eight.limits),
+        eight.limits
+    );
+    let report = task.design(&eight, &Control::new()).unwrap();
+    assert_eq!(report.actuator, Some(search));
+    let d = report
+        .designs
+        .first()
+        .expect("a hinge with its strut under 8");
+    let a = d.actuator.as_ref().unwrap();
+    let fb = d.linkage.four_bar().unwrap();
+    assert_eq!(a.point, bracket);
+    assert!(a.acceptable && a.clear && a.min_clearance >= 3.0, "{a:?}");
+    let size = (fb.size() + a.max_length) / task.span();
+    assert!(
+        (size - a.size_ratio).abs() < 1e-9,
+        "{size} vs {}",
+        a.size_ratio
+    );
+    assert!(size > 5.0 && size <= 8.0, "{size}");
+    assert!(d.size_ratio <= 5.0 && (d.size_ratio - fb.size() / task.span()).abs() < 1e-9);
+    let judged = |max_size_ratio: f64| {
+        let limits = DesignLimits {
+            max_size_ratio,
+            ..eight.limits
+        };
+        let map_options = MapOptions::new(&limits, &eight.space.constraints()).unwrap();
+        let ctx = ActuatorContext::new(
+            fb,
+            bracket,
+            &one_grid(a.ground),
+            &map_options,
+            &search.options,
+        )
+        .unwrap();
+        ctx.placement(a.ground).unwrap()
+    };
+    let again = judged(8.0);
+    assert!(again.acceptable && again.clear);
+    assert!((again.size_ratio - a.size_ratio).abs() < 1e-12);
+    assert!(!judged(5.0).acceptable);
+
+    let mut open = eight.clone();
+    open.actuator.as_mut().unwrap().max_size_ratio = Some(f64::INFINITY);
+    let unbounded = task.design(&open, &Control::new()).unwrap();
+    let best = unbounded
+        .designs
+        .first()
+        .expect("no bound places at least as much");
+    assert!(best.score >= d.score, "{} < {}", best.score, d.score);
+    assert!(
+        best.actuator
+            .as_ref()
+            .is_some_and(|a| a.acceptable && a.clear)
+    );
+
+    for bad in [0.5, f64::NAN, f64::NEG_INFINITY, 1.0 - 1e-12] {
+        let mut o = eight.clone();
+        o.actuator.as_mut().unwrap().max_size_ratio = Some(bad);
+        let e = task.design(&o, &Control::new()).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::InvalidInput(InvalidInput::OutsideRange {
+                    name: "actuator max_size_ratio",
+                    ..
+                })
+            ),
+            "{bad}: {e:?}"
+        );
+        assert!(e.to_string().contains("actuator max_size_ratio"), "{e}");
+    }
+    let one = burmester::ActuatorSearch {
+        max_size_ratio: Some(1.0),
+        ..search
+    };
+    assert!(one.validate().is_ok());
 }
 
 /// The rocker's middle `Q` (at pose 1) and a ground pivot `G` a distance

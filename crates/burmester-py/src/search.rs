@@ -358,9 +358,13 @@ impl PyDesign {
             task,
             inner: d.clone(),
             drive,
-            strut: report
-                .actuator
-                .map(|a| (a.options, report.limits, report.space.constraints())),
+            strut: report.actuator.map(|a| {
+                (
+                    a.options,
+                    a.limits(&report.limits),
+                    report.space.constraints(),
+                )
+            }),
         }
     }
 }
@@ -666,6 +670,14 @@ impl PyDesignReport {
     fn actuator(&self) -> bool {
         self.inner.actuator.is_some()
     }
+    /// With a linear actuator: the largest size ratio of a design with its
+    /// open actuator (`actuator_max_size_ratio`, else the limits'); None
+    /// without an actuator.
+    #[getter]
+    fn actuator_max_size_ratio(&self) -> Option<f64> {
+        let r = &self.inner;
+        r.actuator.map(|a| a.limits(&r.limits).max_size_ratio)
+    }
     /// Whether the designs were searched with a motor (`input="motor"`).
     #[getter]
     fn motor(&self) -> bool {
@@ -727,7 +739,11 @@ impl PyDesignReport {
         // A pickle from before the strut's diameter and gap: 0, 0.
         let (actuator_width, min_gap) = strut.unwrap_or((0.0, 0.0));
         let actuator = actuator
-            .map(|(link, ratio, travel, point, samples)| {
+            .map(|state| {
+                let (link, ratio, travel, point, samples, max_size_ratio) = match state {
+                    StrutState::WithSize(l, r, t, p, n, m) => (l, r, t, p, n, m),
+                    StrutState::Before(l, r, t, p, n) => (l, r, t, p, n, None),
+                };
                 Ok::<_, PyErr>(ActuatorSearch {
                     options: ActuatorOptions {
                         link: link.parse::<ActuatorLink>().py()?,
@@ -738,6 +754,7 @@ impl PyDesignReport {
                     },
                     point: point.map(|p| p.0),
                     samples,
+                    max_size_ratio,
                 })
             })
             .transpose()?;
@@ -802,6 +819,7 @@ impl PyDesignReport {
                         o.travel_samples,
                         a.point.map(pt),
                         a.samples,
+                        a.max_size_ratio,
                     )
                 }),
             ),
@@ -860,6 +878,7 @@ fn options(
     actuator_samples: Count,
     actuator_width: Real,
     min_gap: Real,
+    actuator_max_size_ratio: Option<Real>,
     driven: &str,
 ) -> PyResult<DesignOptions> {
     let mut limits = limits.map(|l| l.inner).unwrap_or_default();
@@ -870,6 +889,7 @@ fn options(
         samples: actuator_samples.0,
         actuator_width: actuator_width.0,
         min_gap: min_gap.0,
+        max_size_ratio: actuator_max_size_ratio.map(|r| r.0),
     };
     let actuator = strut.search(&mut limits, input)?;
     let motor = motor_of(
@@ -905,8 +925,14 @@ enum Passed {
 }
 
 /// A report's actuator search as plain data (for pickling): the link, the
-/// stroke ratio limit, the travel samples, the point, the ground samples.
-type StrutState = (String, f64, usize, Option<PyPoint>, usize);
+/// stroke ratio limit, the travel samples, the point, the ground samples
+/// and the size ratio limit with the open actuator (a pickle from before it
+/// was an option has none: the limits').
+#[derive(FromPyObject)]
+enum StrutState {
+    WithSize(String, f64, usize, Option<PyPoint>, usize, Option<f64>),
+    Before(String, f64, usize, Option<PyPoint>, usize),
+}
 
 /// The actuator's keywords of `burmester.design`.
 struct StrutArgs<'a> {
@@ -917,6 +943,8 @@ struct StrutArgs<'a> {
     /// The strut's diameter and the least gap.
     actuator_width: f64,
     min_gap: f64,
+    /// The size ratio limit with the open actuator (None: the limits').
+    max_size_ratio: Option<f64>,
 }
 
 impl StrutArgs<'_> {
@@ -934,13 +962,15 @@ impl StrutArgs<'_> {
                 || self.max_stroke_ratio != 1.8
                 || self.samples != 64
                 || self.actuator_width != 0.0
-                || self.min_gap != 0.0;
+                || self.min_gap != 0.0
+                || self.max_size_ratio.is_some();
             if set {
                 return Err(crate::errors::invalid(
                     "needs_actuator",
                     format!(
                         "actuator_link, actuator_point, max_stroke_ratio, actuator_samples, \
-                         actuator_width and min_gap set the linear actuator; pass \
+                         actuator_width, min_gap and actuator_max_size_ratio set the linear \
+                         actuator; pass \
                          input=\"actuator\" with them (got input={:?})",
                         input.unwrap_or("None")
                     ),
@@ -959,6 +989,7 @@ impl StrutArgs<'_> {
             },
             point: self.point,
             samples: self.samples,
+            max_size_ratio: self.max_size_ratio,
         };
         search.validate().py()?;
         Ok(Some(search))
@@ -1039,6 +1070,7 @@ macro_rules! design_keywords {
             actuator_samples: [Count] = [Count(64)],
             actuator_width: [Real] = [Real(0.0)],
             min_gap: [Real] = [Real(0.0)],
+            actuator_max_size_ratio: [Option<Real>] = [None],
             driven: [&str] = ["revolute"],
         }
     };

@@ -529,9 +529,10 @@ def _design_strut(args: argparse.Namespace, spec_actuator: Any = None) -> Dict[s
     ``--input motor`` sets ``args.motor``; ``--input actuator`` gives the
     actuator's keywords, which are refused without it. The task file's
     ``[actuator]`` table (``spec_actuator``) gives their defaults: its
-    ``link``, ``point``, ``max_stroke_ratio``, ``width`` and ``min_gap``,
-    each overridden by its flag (``--actuator-link``, ``--actuator-point``
-    or ``--try-actuator-points``, ``--max-stroke-ratio``,
+    ``link``, ``point``, ``max_stroke_ratio``, ``max_size_ratio``, ``width``
+    and ``min_gap``, each overridden by its flag (``--actuator-link``,
+    ``--actuator-point`` or ``--try-actuator-points``,
+    ``--max-stroke-ratio``, ``--actuator-max-size-ratio``,
     ``--actuator-width``, ``--min-gap``); a bad value is a
     :class:`UsageError` naming the flag or the key."""
     which = args.design_input
@@ -541,6 +542,7 @@ def _design_strut(args: argparse.Namespace, spec_actuator: Any = None) -> Dict[s
     given = [flag for flag, v in (("--actuator-link", args.actuator_link), ("--actuator-point", args.actuator_point),
                                   ("--try-actuator-points", args.try_actuator_points or None),
                                   ("--max-stroke-ratio", args.max_stroke_ratio),
+                                  ("--actuator-max-size-ratio", args.actuator_max_size_ratio),
                                   ("--actuator-width", args.actuator_width), ("--min-gap", args.min_gap))
              if v is not None]
     if which != "actuator":
@@ -577,6 +579,13 @@ def _design_strut(args: argparse.Namespace, spec_actuator: Any = None) -> Dict[s
         if not value >= 1.0:
             raise UsageError(f"{flag} must be at least 1 (open over closed length), got {value:g}")
         kw["max_stroke_ratio"] = value
+    size = _flag_or_key(args.actuator_max_size_ratio, "--actuator-max-size-ratio", table, "max_size_ratio")
+    if size is not None:
+        flag, value = size
+        if not value >= 1.0:
+            raise UsageError(f"{flag} must be at least 1 (the linkage with the open actuator over the task's "
+                             f"span; inf: no limit), got {value:g}")
+        kw["actuator_max_size_ratio"] = value
     kw.update(_strut_gap(args.actuator_width, args.min_gap, table))
     return kw
 
@@ -612,7 +621,9 @@ def _actuator_section(report: burmester.DesignReport, units: str) -> str:
     designs passed over for want of one."""
     from burmester import actuators
 
-    lines = ["With a linear actuator:"]
+    size = report.actuator_max_size_ratio
+    bound = f"at most {size:g}x the task" if size is not None and math.isfinite(size) else "of any size"
+    lines = [f"With a linear actuator (the linkage with the open actuator {bound}):"]
     for k, d in enumerate(report, start=1):
         if d.actuator is not None:
             lines.append(actuators.actuator_table(d.actuator, f"design {k}", units))
@@ -629,6 +640,8 @@ def _actuator_document(doc: Dict[str, Any], report: burmester.DesignReport) -> D
     for entry, d in zip(doc["designs"], report):
         entry["actuator"] = actuators.actuator_record(d.actuator) if d.actuator is not None else None
     doc["unplaced"] = report.unplaced
+    size = report.actuator_max_size_ratio
+    doc["actuator_max_size_ratio"] = size if size is not None and math.isfinite(size) else None
     return doc
 
 

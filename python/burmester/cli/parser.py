@@ -297,8 +297,8 @@ def _add_design(sub: _Commands) -> None:
                    "monotone through the poses, within --max-stroke-ratio and the limits, its line clear of "
                    "the links, obstacles and envelope over the travel (-o then draws the best design with "
                    "its actuator); one without such a placement is passed over. The task file's [actuator] "
-                   "table gives its link, point, max_stroke_ratio, width and min_gap (each flag below "
-                   "overrides its key; the table's other keys are burmester actuator's)")
+                   "table gives its link, point, max_stroke_ratio, max_size_ratio, width and min_gap (each "
+                   "flag below overrides its key; the table's other keys are burmester actuator's)")
     p.add_argument("--actuator-link", choices=("coupler", "crank", "rocker"), default=None,
                    help="with --input actuator: the link it acts on (default: [actuator] link, else coupler)")
     p.add_argument("--actuator-point", type=_finite, nargs=2, default=None, metavar=("X", "Y"),
@@ -310,6 +310,10 @@ def _add_design(sub: _Commands) -> None:
     p.add_argument("--max-stroke-ratio", type=_finite, default=None, metavar="R",
                    help="with --input actuator: largest open over closed length (default: [actuator] "
                    "max_stroke_ratio, else 1.8)")
+    p.add_argument("--actuator-max-size-ratio", type=_finite, default=None, metavar="R",
+                   help="with --input actuator: largest size of the linkage with the open actuator over the "
+                   "task's span, at least 1 (default: [actuator] max_size_ratio, else [limits] "
+                   "max_size_ratio, which the linkage alone meets)")
     _strut_gap_args(p, "with --input actuator: ", "else 0: its center line", dest=None)
     p.add_argument("--driven", choices=("revolute", "slider"), default=None,
                    help="the driven dyad: revolute (a crank: four-bars) or slider (a pin on a straight guide "

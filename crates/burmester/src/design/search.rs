@@ -81,7 +81,9 @@
 //! the link ([`ActuatorSearch::points`]), and the best placement by the
 //! design's ranking that is monotone, within the limits (the actuator's
 //! stroke ratio, its transmission angle, the link and size ratios with
-//! the open actuator) and **clear** over the travel (its capsule,
+//! the open actuator, the size ratio's bound
+//! [`ActuatorSearch::max_size_ratio`], by default the limits') and
+//! **clear** over the travel (its capsule,
 //! [`ActuatorOptions::actuator_width`](crate::design::ActuatorOptions::actuator_width)
 //! across, at least
 //! [`min_gap`](crate::design::ActuatorOptions::min_gap) off the links'

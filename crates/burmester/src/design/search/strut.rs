@@ -7,9 +7,9 @@ use nalgebra::Point2;
 
 use super::{Design, DesignOptions, grid_over};
 use crate::design::actuator::{Actuator, ActuatorContext, ActuatorOptions};
-use crate::design::{MapOptions, Ranking};
+use crate::design::{DesignLimits, MapOptions, Ranking};
 use crate::engine::Control;
-use crate::error::{Error, Result, count_in, finite_point};
+use crate::error::{Error, Result, count_in, finite_point, in_range};
 use crate::geom::Viewport;
 use crate::linkage::actuator::ActuatorLink;
 use crate::synthesis::SynthesizedFourBar;
@@ -28,6 +28,15 @@ pub struct ActuatorSearch {
     /// box, or with pivots anywhere the linkage's box over its poses
     /// widened by its size on each side.
     pub samples: usize,
+    /// The largest size ratio of the linkage with the open actuator (its
+    /// size with the actuator's longest length over the task's span,
+    /// [`Actuator::size_ratio`]) a placement may have: at least 1,
+    /// infinity for no limit; `None` (default): the design's
+    /// [`DesignLimits::max_size_ratio`], the one the linkage alone meets
+    /// ([`limits`](Self::limits)). A strut reaching beyond the linkage can
+    /// be given more room than the linkage (a task file's `[actuator]`
+    /// `max_size_ratio`).
+    pub max_size_ratio: Option<f64>,
 }
 
 impl Default for ActuatorSearch {
@@ -36,6 +45,7 @@ impl Default for ActuatorSearch {
             options: ActuatorOptions::default(),
             point: None,
             samples: 64,
+            max_size_ratio: None,
         }
     }
 }
@@ -55,14 +65,36 @@ impl ActuatorSearch {
     /// # Errors
     ///
     /// As [`ActuatorOptions::validate`]; [`InvalidInput`](crate::InvalidInput)
-    /// for a sample count out of range or a non-finite point.
+    /// for a sample count out of range, a non-finite point or a
+    /// [`max_size_ratio`](Self::max_size_ratio) below 1 or NaN
+    /// ([`OutsideRange`](crate::InvalidInput::OutsideRange) naming
+    /// `actuator max_size_ratio`).
     pub fn validate(&self) -> Result<()> {
         self.options.validate()?;
         count_in("actuator samples", self.samples, 2, Self::MAX_SAMPLES)?;
         if let Some(p) = self.point {
             finite_point(["actuator point x", "actuator point y"], p)?;
         }
+        if let Some(r) = self.max_size_ratio {
+            in_range(
+                "actuator max_size_ratio",
+                r,
+                1.0,
+                f64::INFINITY,
+                " (the linkage with the open actuator over the task's span)",
+            )?;
+        }
         Ok(())
+    }
+
+    /// The limits a placement meets on a design searched under `limits`:
+    /// those, with [`max_size_ratio`](Self::max_size_ratio) in place of
+    /// theirs where given.
+    pub fn limits(&self, limits: &DesignLimits) -> DesignLimits {
+        DesignLimits {
+            max_size_ratio: self.max_size_ratio.unwrap_or(limits.max_size_ratio),
+            ..*limits
+        }
     }
 
     /// The moving points tried for `linkage` where it is at pose 1: the
@@ -137,7 +169,8 @@ impl ActuatorSearch {
             return Ok(None);
         };
         let grid = grid_over(&self.view(linkage, options), self.samples)?;
-        let map_options = MapOptions::new(&options.limits, &options.space.constraints())?;
+        let map_options =
+            MapOptions::new(&self.limits(&options.limits), &options.space.constraints())?;
         let mut best: Option<Actuator> = None;
         for q in self.points(linkage) {
             let ctx = match ActuatorContext::new(linkage, q, &grid, &map_options, &self.options) {
