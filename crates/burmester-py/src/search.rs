@@ -970,8 +970,7 @@ impl StrutArgs<'_> {
                     format!(
                         "actuator_link, actuator_point, max_stroke_ratio, actuator_samples, \
                          actuator_width, min_gap and actuator_max_size_ratio set the linear \
-                         actuator; pass \
-                         input=\"actuator\" with them (got input={:?})",
+                         actuator; pass input=\"actuator\" with them (got input={:?})",
                         input.unwrap_or("None")
                     ),
                 ));
