@@ -3,11 +3,16 @@
 ``width`` and ``min_gap`` are the defaults, each flag overrides its key,
 and a bad value is refused naming the key (or the flag).
 
-The task is ``examples/hood.toml`` with ``[limits] max_size_ratio`` raised
-to 8 (the table's own size limit for ``burmester actuator``): under 5 no
-hinge takes a strut on the table's bracket point (the README). Each answer
-is read from the command's JSON: the placement's own link, point, stroke
-ratio limit, width and gap, and its stroke ratio within the limit."""
+The first tests take ``examples/hood.toml`` with ``[limits]
+max_size_ratio`` raised to 8, the table's own size limit (written when the
+strut stage held the strut to ``[limits]``: under 5 no hinge took a strut on
+the table's bracket point). The last ones take the file as it is: the
+table's ``max_size_ratio`` bounds the hinge with its open strut, the
+limits' 5 the hinge alone, ``--actuator-max-size-ratio`` overrides the key,
+a bad value is named, and ``burmester.design``'s keyword has its default,
+its most (no bound), its pickle. Each answer is read from the command's
+JSON (or the report): the placement's own link, point, stroke ratio limit,
+width and gap, and its stroke ratio within the limit."""
 
 import argparse
 import json
