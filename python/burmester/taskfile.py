@@ -969,7 +969,7 @@ def _actuator(r: _Reader, doc: Mapping[str, Any]) -> Optional[ActuatorSpec]:
         kw["point"] = r.point("actuator.point", t["point"])
     # Each number: (its lowest value, whether that is allowed, what it is), TOML's inf for no size limit.
     for key, (low, closed, what) in (("max_stroke_ratio", (1.0, True, "at least 1 (open over closed length)")),
-                                     ("max_size_ratio", (0.0, False, "a ratio above 0 (or inf: no limit)")),
+                                     ("max_size_ratio", (1.0, True, "a ratio of at least 1 (or inf: no limit)")),
                                      ("width", (0.0, False, "a width above 0 (task units)")),
                                      ("min_gap", (0.0, True, "a gap of at least 0 (task units)"))):
         if key in t:

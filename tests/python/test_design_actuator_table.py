@@ -232,10 +232,11 @@ def test_the_tables_size_ratio_bounds_the_strut_not_the_hinge(capsys, tmp_path):
 
 
 def test_a_bad_size_ratio_is_named(capsys, tmp_path):
-    # The file's key below 1 (the file takes any ratio above 0 for
-    # burmester actuator, whose limits refuse it): named, nothing searched.
+    # The file's key below 1: refused as the file is read (the library's
+    # limits take no size ratio below 1), named, nothing searched.
     assert main(["design", str(_sized(tmp_path, "half.toml", "0.5")), "--input", "actuator"]) == 2
-    assert re.search(r"\[actuator\] max_size_ratio .*at least 1.*got 0\.5", capsys.readouterr().err)
+    assert re.search(r"actuator\.max_size_ratio: expected a ratio of at least 1.*found 0\.5",
+                     capsys.readouterr().err)
     assert main(["design", str(HOOD), "--input", "actuator", "--actuator-max-size-ratio", "0.9"]) == 2
     assert re.search(r"--actuator-max-size-ratio must be at least 1.*got 0\.9", capsys.readouterr().err)
     assert main(["design", str(HOOD), "--actuator-max-size-ratio", "8"]) == 2

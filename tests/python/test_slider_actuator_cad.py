@@ -321,7 +321,7 @@ rank_by = "best"                 | actuator.rank_by          | "margin"
 point = [1.0]                    | actuator.point            | [x, y]
 max_stroke_ratio = 0.9           | actuator.max_stroke_ratio | at least 1
 max_stroke_ratio = nan           | actuator.max_stroke_ratio | finite
-max_size_ratio = 0               | actuator.max_size_ratio   | above 0
+max_size_ratio = 0.5             | actuator.max_size_ratio   | at least 1
 x = [1.0, 2.0]                   | actuator.y                | missing
 x = [2.0, 1.0]\ny = [0.0, 1.0]   | actuator.x                | min < max
 grid = [1025, 10]                | actuator.grid[0]          | 2 to 1024
