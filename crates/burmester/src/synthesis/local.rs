@@ -28,6 +28,7 @@
 // branch.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use crate::geom::dd::Dd;
 use nalgebra::{Point2, Vector2};
 
 use super::errors;
@@ -303,90 +304,6 @@ fn solve_rows(rows: &[(Vector2<f64>, f64)]) -> Result<Vector2<f64>, Failure> {
         Ok(z)
     } else {
         Err(Failure::AtInfinity(perp(ai / ai.norm())))
-    }
-}
-
-/// A double-double number `hi + lo` (`|lo|` at most half an ulp of `hi`):
-/// about 106 bits, from error-free transformations (Dekker's product, no
-/// fused multiply-add needed), for the curves' coefficients, whose
-/// expansion may cancel most of its terms' digits.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Dd {
-    hi: f64,
-    lo: f64,
-}
-
-impl Dd {
-    const ZERO: Dd = Dd { hi: 0.0, lo: 0.0 };
-
-    fn of(v: f64) -> Dd {
-        Dd { hi: v, lo: 0.0 }
-    }
-
-    /// `a + b` exactly as a double-double.
-    fn sum(a: f64, b: f64) -> Dd {
-        let s = a + b;
-        let bb = s - a;
-        let e = (a - (s - bb)) + (b - bb);
-        Dd::fast(s, e)
-    }
-
-    /// `a + b` renormalised, for `|a| >= |b|` (or `a` zero).
-    fn fast(a: f64, b: f64) -> Dd {
-        let s = a + b;
-        Dd {
-            hi: s,
-            lo: b - (s - a),
-        }
-    }
-
-    /// `a b` exactly as a double-double (Dekker's split; exact unless a
-    /// partial product overflows or underflows).
-    fn prod(a: f64, b: f64) -> Dd {
-        fn split(a: f64) -> (f64, f64) {
-            let t = 134_217_729.0 * a; // 2^27 + 1
-            let hi = t - (t - a);
-            (hi, a - hi)
-        }
-        let p = a * b;
-        let (ah, al) = split(a);
-        let (bh, bl) = split(b);
-        let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-        // A split that overflows gives a NaN error term: the product alone.
-        Dd {
-            hi: p,
-            lo: if e.is_finite() { e } else { 0.0 },
-        }
-    }
-
-    fn add(self, o: Dd) -> Dd {
-        let s = Dd::sum(self.hi, o.hi);
-        let t = Dd::sum(self.lo, o.lo);
-        let u = Dd::fast(s.hi, s.lo + t.hi);
-        Dd::fast(u.hi, u.lo + t.lo)
-    }
-
-    fn neg(self) -> Dd {
-        Dd {
-            hi: -self.hi,
-            lo: -self.lo,
-        }
-    }
-
-    fn sub(self, o: Dd) -> Dd {
-        self.add(o.neg())
-    }
-
-    fn mul(self, o: Dd) -> Dd {
-        let p = Dd::prod(self.hi, o.hi);
-        Dd::fast(p.hi, p.lo + (self.hi * o.lo + self.lo * o.hi))
-    }
-
-    /// `self / d` for a double `d`.
-    fn div(self, d: f64) -> Dd {
-        let q1 = self.hi / d;
-        let r = self.sub(Dd::prod(q1, d));
-        Dd::fast(q1, r.hi / d)
     }
 }
 
