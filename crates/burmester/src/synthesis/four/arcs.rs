@@ -383,10 +383,15 @@ impl FilemonArcs {
                 None => apart(p) > r,
                 // How far the circle point moves as the center moves
                 // across the band (one side: twice that, for the other).
+                // (The linear conditions solved as `circle_point` solves
+                // them, without its on-curve test: the moved center is on
+                // the band's edge by construction.)
                 Some(z) => normalized(curve.gradient(p)).is_some_and(|g| {
-                    self.four
-                        .circle_point(p + g * r)
-                        .is_ok_and(|w| apart(z) > 2.0 * (w - z).norm())
+                    let motion = &self.four.motion;
+                    motion
+                        .form
+                        .solve(motion.local_of(p + g * r), &[1, 2, 3])
+                        .is_ok_and(|w| apart(z) > 2.0 * (motion.global_of(w) - z).norm())
                 }),
             }
         });
@@ -471,6 +476,12 @@ impl Poll<'_, '_> {
 /// classified. Measured `2e-13` to `3e-11` on such lines; an ordinary
 /// curve's ratio is of order 1, and falls to this only `1e3` task sizes
 /// out (as the square of the distance), where the check only costs time.
+/// Only chords of free ends (a free stretch hidden in a defective chord
+/// is omitted, not called free) longer than the reach of the chord's own
+/// branch (twice the trace's chord tolerance): a trace refined to its
+/// budget along such a line (a million vertices on the center plane of
+/// `traced-vertex-1.5-tolerances-off-ordinary-task`) would otherwise
+/// classify most middles too.
 const CONTRACTED: f64 = 1e-6;
 
 /// The mark index of a class change found by [`resolve_changes`]: a
@@ -610,8 +621,16 @@ fn resolve_changes(
                     // arc ends resolve, except on a stretch of centers whose
                     // circle points are nearly one point (`contracted`).
                     let marked = u.mark.is_some() || v.mark.is_some();
+                    // (Only a chord of free ends: a free stretch hidden in
+                    // a defective chord is omitted, not wrong.)
+                    let len = (b - a).norm();
                     let contracted = match (u.image, v.image) {
-                        (Some(za), Some(zb)) => (zb - za).norm() < CONTRACTED * (b - a).norm(),
+                        (Some(za), Some(zb)) => {
+                            la == Some(true)
+                                && lb == Some(true)
+                                && len > reach
+                                && (zb - za).norm() < CONTRACTED * len
+                        }
                         _ => false,
                     };
                     if (la.is_some() || lb.is_some()) && (marked || la != lb || contracted) {
