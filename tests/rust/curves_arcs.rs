@@ -9,25 +9,30 @@ use burmester::geom::{Cubic, Line};
 use burmester::synthesis::{FilemonArcs, FourPositions};
 use burmester::{Branch, Dyad, Point2, Pose, Viewport};
 
-/// A finding's task: its poses, the driven dyad (center, circle point) and
-/// the view of the fuzz check.
+/// A finding's task: its poses, the driven dyad and the view of the fuzz
+/// check, as the 20 numbers `x y angle` of the four poses, the driven
+/// center and circle point `x y`, and the view `xmin xmax ymin ymax`.
 struct Finding {
     name: &'static str,
-    poses: [(f64, f64, f64); 4],
-    driven: ((f64, f64), (f64, f64)),
-    view: [f64; 4],
+    numbers: &'static str,
 }
 
 impl Finding {
     fn arcs(&self) -> (FourPositions, FilemonArcs, Viewport) {
-        let poses = self.poses.map(|(x, y, a)| Pose::new(x, y, a));
+        let n: Vec<f64> = self
+            .numbers
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert_eq!(n.len(), 20, "{}", self.name);
+        let poses: Vec<Pose> = n[..12]
+            .chunks(3)
+            .map(|p| Pose::new(p[0], p[1], p[2]))
+            .collect();
         let four = FourPositions::new(&poses).unwrap();
-        let ((cx, cy), (zx, zy)) = self.driven;
-        let fa = four
-            .filemon(&Dyad::new(Point2::new(cx, cy), Point2::new(zx, zy)))
-            .unwrap();
-        let [x0, x1, y0, y1] = self.view;
-        (four, fa, Viewport::new(x0, x1, y0, y1).unwrap())
+        let driven = Dyad::new(Point2::new(n[12], n[13]), Point2::new(n[14], n[15]));
+        let fa = four.filemon(&driven).unwrap();
+        (four, fa, Viewport::new(n[16], n[17], n[18], n[19]).unwrap())
     }
 }
 
@@ -43,17 +48,17 @@ fn arc_points(
     view: &Viewport,
     circle: bool,
 ) -> Vec<Point2<f64>> {
-    let (arcs, curve) = if circle {
-        (
-            fa.free_circle_arcs(view).unwrap(),
-            four.circle_point_curve(),
-        )
+    let curve = if circle {
+        four.circle_point_curve()
     } else {
-        (
-            fa.free_center_arcs(view).unwrap(),
-            four.center_point_curve(),
-        )
+        four.center_point_curve()
     };
+    let arcs = if circle {
+        fa.free_circle_arcs(view)
+    } else {
+        fa.free_center_arcs(view)
+    };
+    let arcs = arcs.unwrap();
     let reach = 2.0 * Cubic::DEFAULT_TOLERANCE * view.diagonal();
     let mut out = Vec::new();
     for arc in &arcs {
@@ -85,16 +90,19 @@ fn arc_points(
 /// of each chord.
 fn assert_free_by_the_classifier(f: &Finding, circle: bool) {
     let (four, fa, view) = f.arcs();
-    let mut marks: Vec<Point2<f64>> = fa
-        .arc_ends()
-        .iter()
-        .filter_map(|e| if circle { Some(e.circle) } else { e.center })
-        .collect();
-    marks.extend(if circle {
+    // The exact arc ends of the plane and the driven dyad's point.
+    let driven = if circle {
         Some(fa.driven().circle())
     } else {
         fa.driven().finite_center()
-    });
+    };
+    let marks: Vec<Point2<f64>> = fa
+        .arc_ends()
+        .iter()
+        .map(|e| if circle { Some(e.circle) } else { e.center })
+        .chain([driven])
+        .flatten()
+        .collect();
     for p in arc_points(&four, &fa, &view, circle) {
         if marks
             .iter()
@@ -140,60 +148,33 @@ fn assert_free_by_the_classifier(f: &Finding, circle: bool) {
 fn arcs38_a_free_arc_ends_where_the_class_changes_on_a_line_of_centers() {
     let f1 = Finding {
         name: "f1c7cc58",
-        poses: [
-            (-85332.03125, -8.53359375e-8, -0.00099609375),
-            (-4.0078125e-9, 0.99609375, 0.038),
-            (4.411328125e-8, 0.9960936509960937, 0.98828125),
-            (-4.0078125e-9, 0.99609375, 36.0),
-        ],
-        driven: (
-            (-42667.328866685726, 112501.53533581641),
-            (-85332.03124988574, -1.3080044147795178e-7),
-        ),
-        view: [
-            -692657.4106981714,
-            607322.7529647999,
-            -537488.5464956692,
-            762491.617167302,
-        ],
+        numbers: "-85332.03125 -8.53359375e-8 -0.00099609375 \
+             -4.0078125e-9 0.99609375 0.038 \
+             4.411328125e-8 0.9960936509960937 0.98828125 \
+             -4.0078125e-9 0.99609375 36.0 \
+             -42667.328866685726 112501.53533581641 \
+             -85332.03124988574 -1.3080044147795178e-7 \
+             -692657.4106981714 607322.7529647999 -537488.5464956692 762491.617167302",
     };
     let ae = Finding {
         name: "aeb6fa97",
-        poses: [
-            (65171.875, -0.00082421875, 0.28515625),
-            (2.6e-8, 1.0599609375e-7, 0.058484375),
-            (0.0, 0.0, 0.31640625),
-            (0.0, 0.0, -8.242187500000001e-10),
-        ],
-        driven: (
-            (4.027167960884981e-6, 5.81786913413161e-7),
-            (32585.937389778766, -9033.004381799796),
-        ),
-        view: [
-            -57890.3181457356,
-            203306.3371276672,
-            -130542.82164415171,
-            130653.8336292511,
-        ],
+        numbers: "65171.875 -0.00082421875 0.28515625 \
+             2.6e-8 1.0599609375e-7 0.058484375 \
+             0.0 0.0 0.31640625 \
+             0.0 0.0 -8.242187500000001e-10 \
+             4.027167960884981e-6 5.81786913413161e-7 \
+             32585.937389778766 -9033.004381799796 \
+             -57890.3181457356 203306.3371276672 -130542.82164415171 130653.8336292511",
     };
     let e4 = Finding {
         name: "e478e665",
-        poses: [
-            (16800000000000.0, -49.0, 67.0),
-            (-2e-6, 1.7217e-5, 0.0),
-            (-2.0001293499999997e-6, 45.0, 65.0),
-            (16800000000000.0, -49.0, -2.0),
-        ],
-        driven: (
-            (8400000000010.857, 1670863885970.8276),
-            (16800000000012.563, -52.25901895378353),
-        ),
-        view: [
-            -8529464994445.471,
-            25333035005554.53,
-            -15305339239029.172,
-            18557160760970.83,
-        ],
+        numbers: "16800000000000.0 -49.0 67.0 \
+             -2e-6 1.7217e-5 0.0 \
+             -2.0001293499999997e-6 45.0 65.0 \
+             16800000000000.0 -49.0 -2.0 \
+             8400000000010.857 1670863885970.8276 \
+             16800000000012.563 -52.25901895378353 \
+             -8529464994445.471 25333035005554.53 -15305339239029.172 18557160760970.83",
     };
     for f in [&f1, &ae, &e4] {
         assert_free_by_the_classifier(f, false);
@@ -267,22 +248,13 @@ fn arcs38_no_free_arc_where_the_float_curve_does_not_decide_the_class() {
         (
             Finding {
                 name: "b1b9e681",
-                poses: [
-                    (0.029, 0.02911328125, 0.10911328125),
-                    (0.39294758245455985, -145.53651207120296, 0.11411328125),
-                    (121.48405906337575, 2316.9700673989696, 0.0294453125),
-                    (93.14170316818786, 2326.604872854859, 0.02911328125),
-                ],
-                driven: (
-                    (29113.293702136965, 0.1018072502065479),
-                    (29101.931527383866, -40.54681074942869),
-                ),
-                view: [
-                    29100.58196000477,
-                    29126.00544426916,
-                    -12.60993488198831,
-                    12.813549382401407,
-                ],
+                numbers: "0.029 0.02911328125 0.10911328125 \
+                     0.39294758245455985 -145.53651207120296 0.11411328125 \
+                     121.48405906337575 2316.9700673989696 0.0294453125 \
+                     93.14170316818786 2326.604872854859 0.02911328125 \
+                     29113.293702136965 0.1018072502065479 \
+                     29101.931527383866 -40.54681074942869 \
+                     29100.58196000477 29126.00544426916 -12.60993488198831 12.813549382401407",
             },
             true,
             (
@@ -293,22 +265,13 @@ fn arcs38_no_free_arc_where_the_float_curve_does_not_decide_the_class() {
         (
             Finding {
                 name: "ba20f608",
-                poses: [
-                    (3.811328125e-8, -3.90625e-12, -3.90625e-6),
-                    (1.4785886242328603e-5, -1.2410459465650447e-8, 0.00011328125),
-                    (0.0004921217246971382, 5.192602856307627e-7, 0.00390625),
-                    (5.299968222368006e-7, -1.5034116324888996e-10, 0.0),
-                ],
-                driven: (
-                    (0.00010105165434546933, 0.12585972458817024),
-                    (0.00011328238334189277, 0.1258476551454513),
-                ),
-                view: [
-                    9.739912429127849e-5,
-                    0.00010470418439966018,
-                    0.12585607205811605,
-                    0.12586337711822443,
-                ],
+                numbers: "3.811328125e-8 -3.90625e-12 -3.90625e-6 \
+                     1.4785886242328603e-5 -1.2410459465650447e-8 0.00011328125 \
+                     0.0004921217246971382 5.192602856307627e-7 0.00390625 \
+                     5.299968222368006e-7 -1.5034116324888996e-10 0.0 \
+                     0.00010105165434546933 0.12585972458817024 \
+                     0.00011328238334189277 0.1258476551454513 \
+                     9.739912429127849e-5 0.00010470418439966018 0.12585607205811605 0.12586337711822443",
             },
             true,
             (
@@ -319,22 +282,13 @@ fn arcs38_no_free_arc_where_the_float_curve_does_not_decide_the_class() {
         (
             Finding {
                 name: "e3a51fce",
-                poses: [
-                    (2.95625e-14, 9.1296875e-8, 0.00719140625),
-                    (4.848519619349593e-10, 9.130222176947819e-8, 0.02924609375),
-                    (-1.5806868623453932e-10, 9.129744339546386e-8, 0.0),
-                    (4.944860533113771e-10, 9.130281098769588e-8, 0.02968359375),
-                ],
-                driven: (
-                    (1.8263930423043563e-14, 1.1328139453088509e-7),
-                    (-4.956029419324403e-12, 1.132815607047482e-7),
-                ),
-                view: [
-                    -3.615749042899663e-12,
-                    3.65227690374575e-12,
-                    1.1327776051791176e-7,
-                    1.1328502854385842e-7,
-                ],
+                numbers: "2.95625e-14 9.1296875e-8 0.00719140625 \
+                     4.848519619349593e-10 9.130222176947819e-8 0.02924609375 \
+                     -1.5806868623453932e-10 9.129744339546386e-8 0.0 \
+                     4.944860533113771e-10 9.130281098769588e-8 0.02968359375 \
+                     1.8263930423043563e-14 1.1328139453088509e-7 \
+                     -4.956029419324403e-12 1.132815607047482e-7 \
+                     -3.615749042899663e-12 3.65227690374575e-12 1.1327776051791176e-7 1.1328502854385842e-7",
             },
             false,
             (
