@@ -235,7 +235,11 @@ fn arcs38_a_free_arc_ends_where_the_class_changes_on_a_line_of_centers() {
 /// and up to `6e-14` (`e3a51fce`, center plane, view `7e-12`) from the
 /// exact curve, where one ulp of the task moves it `3e-9`, `4e-17` and
 /// `3e-21`, and the library's classes of the float curve's points there
-/// flip from point to point. The exact curve is defective along each
+/// flip from point to point. And one (`4960ca6f`, center plane, found by
+/// this fix's first fuzz round) where the curve is resolved to `7e-27` but
+/// its points' coordinates (`2.9e-5`) only to `3.4e-21`, and the class
+/// changes from one ulp to the next (exact: defective along the chord, 9
+/// points, signs `-1.5e-29, -1.1e-30, -1.5e-29, +8e-31`). The exact curve is defective along each
 /// failing chord (17 points each: signs `+0.027` to `+3e-4` against
 /// `-1149` on `b1b9e681`; `-2.9e-14, +5.9e-15, +1.1e-12, -3.5e-14` on
 /// `ba20f608`; `-5e-31, +1e-30, -1e-30, +1.9e-24` on `e3a51fce`, and at the
@@ -294,6 +298,23 @@ fn arcs38_no_free_arc_where_the_float_curve_does_not_decide_the_class() {
             (
                 (-3.328298616733085e-12, 1.1328174568304719e-7),
                 (-3.0827631676050185e-12, 1.132817337896375e-7),
+            ),
+        ),
+        (
+            Finding {
+                name: "4960ca6f",
+                numbers: "3.90625e-15 2.900390625e-5 0.096 \
+                     1.1946484375e-19 2.900390625000007e-5 68.265625 \
+                     3.90625e-15 2.900390625e-5 19.0 \
+                     3.8953125e-14 2.900397451562489e-5 0.11499609375 \
+                     -5.755363012282212e-11 2.9003940416347032e-5 \
+                     -2.6012033759486935e-15 2.900390625410641e-5 \
+                     -5.806562238192276e-11 -5.7041637863721483e-11 2.9003939904354772e-5 2.9003940928339292e-5",
+            },
+            false,
+            (
+                (-5.75497612652247e-11, 2.9003940416345172e-5),
+                (-5.755026154639628e-11, 2.9003940416345413e-5),
             ),
         ),
     ];

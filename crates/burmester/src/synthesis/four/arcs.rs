@@ -333,8 +333,7 @@ impl FilemonArcs {
     /// The label of a point of the curve of its plane (`circle`: the
     /// circle-point curve): free only where the four signs agree and keep
     /// agreeing across the float curve's own resolution there
-    /// ([`resolution`], [`RESOLUTION`] times it), with the circle point of a
-    /// center point.
+    /// ([`resolution`]), with the circle point of a center point.
     ///
     /// The curve's coefficients are rounded to doubles, so a traced point,
     /// or the curve's point next to a chord, is known only to within that
@@ -377,8 +376,7 @@ impl FilemonArcs {
                 .zip(d.iter())
                 .fold(f64::INFINITY, |m, (s, d)| m.min(s.abs() / d.norm()))
         };
-        let decided = resolution(curve, p).is_some_and(|delta| {
-            let r = RESOLUTION * delta;
+        let decided = resolution(curve, p).is_some_and(|r| {
             match image {
                 None => apart(p) > r,
                 // How far the circle point moves as the center moves
@@ -410,7 +408,8 @@ struct Label {
     image: Option<Point2<f64>>,
 }
 
-/// The band about the float curve, in units of its [`resolution`], within
+/// The band about the float curve, in units of the first-order move of
+/// the rounding of its coefficients ([`resolution`]), within
 /// which a free point's class must hold: the band within which the tracer
 /// settles a vertex and the curve's point next to a chord is found
 /// ([`Cubic::is_on`]'s rule, `|f|` within `64 eps` of its terms).
@@ -418,14 +417,24 @@ const RESOLUTION: f64 = 64.0;
 
 /// The float curve's resolution at `p`: how far the rounding of its
 /// coefficients (half an ulp of each, `eps` of the terms' magnitude at
-/// `p`) moves the curve there, to first order; `None` where the gradient
-/// is zero or the point is not finite in the curve's frame.
+/// `p`) moves the curve there, to first order, [`RESOLUTION`] times that,
+/// and at least a few ulps of the point's own coordinates (a task of
+/// `5e-11` at `2.9e-5` from the origin, fuzz input `4960ca6f`, has its
+/// curve resolved to `7e-27` by its coefficients, but its points are placed
+/// only to `3.4e-21`, and the class there changes from one ulp to the next);
+/// `None` where the gradient is zero or the point is not finite in the
+/// curve's frame.
 fn resolution(curve: &Cubic, p: Point2<f64>) -> Option<f64> {
     // `f` and its terms over `m^3`, the gradient over `m^2` (local units).
     let (_, bound, g, m) = curve.value_and_bound(p, &[0.0; 10])?;
-    let d = f64::EPSILON * bound / g * m * curve.frame().1;
+    let d = RESOLUTION * f64::EPSILON * bound / g * m * curve.frame().1;
+    let d = d.max(ULPS * f64::EPSILON * p.coords.norm());
     d.is_finite().then_some(d)
 }
+
+/// How many ulps of a point's coordinates its class must hold across, at
+/// least.
+const ULPS: f64 = 4.0;
 
 /// A traced vertex: where it is, the index of the mark it is (if any) and,
 /// for a vertex that is not a mark, whether it is free (`None` where it
