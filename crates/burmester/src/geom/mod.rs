@@ -5,6 +5,7 @@
 
 pub mod conic;
 pub mod cubic;
+pub(crate) mod dd;
 mod frame;
 mod grid;
 mod line;

@@ -28,6 +28,7 @@
 // branch.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use crate::geom::dd::Dd;
 use nalgebra::{Point2, Vector2};
 
 use super::errors;
@@ -306,6 +307,131 @@ fn solve_rows(rows: &[(Vector2<f64>, f64)]) -> Result<Vector2<f64>, Failure> {
     }
 }
 
+/// A complex double-double `(re, im)`.
+type Cdd = (Dd, Dd);
+
+fn cmul(a: Cdd, b: Cdd) -> Cdd {
+    (
+        a.0.mul(b.0).sub(a.1.mul(b.1)),
+        a.0.mul(b.1).add(a.1.mul(b.0)),
+    )
+}
+
+fn conj(a: Cdd) -> Cdd {
+    (a.0, a.1.neg())
+}
+
+/// An affine polynomial of the plane in double-doubles.
+type AffineDd = [Dd; 3];
+
+fn mul2_dd(p: &AffineDd, q: &AffineDd) -> [Dd; 6] {
+    [
+        p[0].mul(q[0]),
+        p[0].mul(q[1]).add(p[1].mul(q[0])),
+        p[0].mul(q[2]).add(p[2].mul(q[0])),
+        p[1].mul(q[1]),
+        p[1].mul(q[2]).add(p[2].mul(q[1])),
+        p[2].mul(q[2]),
+    ]
+}
+
+#[rustfmt::skip]
+fn mul3_dd(q: &[Dd; 6], a: &AffineDd) -> [Dd; 10] {
+    [
+        q[0].mul(a[0]),
+        q[0].mul(a[1]).add(q[1].mul(a[0])), q[0].mul(a[2]).add(q[2].mul(a[0])),
+        q[1].mul(a[1]).add(q[3].mul(a[0])),
+        q[1].mul(a[2]).add(q[2].mul(a[1])).add(q[4].mul(a[0])),
+        q[2].mul(a[2]).add(q[5].mul(a[0])),
+        q[3].mul(a[1]), q[3].mul(a[2]).add(q[4].mul(a[1])),
+        q[4].mul(a[2]).add(q[5].mul(a[1])), q[5].mul(a[2]),
+    ]
+}
+
+/// `e^{i phi}` as a double-double, its real part `1 - 2 sin^2(phi / 2)`
+/// (so that `e^{i phi} - 1` keeps its digits for a small `phi`).
+fn unit_dd(phi: f64) -> Cdd {
+    let h = (0.5 * phi).sin();
+    (Dd::sum(1.0, -2.0 * h * h), Dd::of(phi.sin()))
+}
+
+impl LocalMotion {
+    /// The center-point cubic (`inverse == false`) or the circle-point
+    /// cubic of the first four poses: the expansion of
+    /// [`LinearForm::cubic`] (rows 2, 3, 4), accurate to what the poses
+    /// allow. The rows' entries are formed in double-double arithmetic from
+    /// the poses themselves (the local positions `(p_k - origin) / scale`,
+    /// each rotation `R_k` a product along a chain of the poses, nearest
+    /// angles first, of `e^{i (a_k - a_j)}`, so that two nearly equal
+    /// angles give rotations whose difference keeps its digits), and the
+    /// determinant is expanded in double-double: near a degenerate task
+    /// (poses at nearly one position and angle) the expansion cancels
+    /// most of its terms' digits, which the plain one
+    /// ([`LinearForm::cubic_bounds`]) then loses (`2e-8` of the largest
+    /// coefficient where the poses allow `1e-15`).
+    pub(crate) fn curve_cubic(&self, inverse: bool) -> [f64; 10] {
+        const N: usize = 4;
+        debug_assert!(self.poses.len() >= N);
+        let pos: [Cdd; N] = core::array::from_fn(|k| {
+            let p = self.poses[k].position;
+            (
+                Dd::sum(p.x, -self.origin.x).div(self.scale),
+                Dd::sum(p.y, -self.origin.y).div(self.scale),
+            )
+        });
+        // The rotations from pose 1, along the chain of nearest angles.
+        let angle = |k: usize| self.poses[k].angle;
+        let mut rot: [Option<Cdd>; N] = [None; N];
+        rot[0] = Some((Dd::of(1.0), Dd::ZERO));
+        for _ in 1..N {
+            let mut best: Option<(f64, usize, usize)> = None;
+            for k in (0..N).filter(|&k| rot[k].is_none()) {
+                for j in (0..N).filter(|&j| rot[j].is_some()) {
+                    let d = wrap_angle(angle(k) - angle(j)).abs();
+                    if best.is_none_or(|(b, ..)| d < b) {
+                        best = Some((d, j, k));
+                    }
+                }
+            }
+            let Some((_, j, k)) = best else { break };
+            rot[k] = rot[j].map(|r| cmul(r, unit_dd(angle(k) - angle(j))));
+        }
+        let rot = rot.map(|r| r.unwrap_or((Dd::of(f64::NAN), Dd::of(f64::NAN))));
+        // `t_k = q_k - R_k q_1`; the inverted motion's rotation is
+        // `conj(R_k)` and its translation `-conj(R_k) t_k`.
+        let disp: [(Cdd, Cdd); N] = core::array::from_fn(|k| {
+            let rq = cmul(rot[k], pos[0]);
+            let t = (pos[k].0.sub(rq.0), pos[k].1.sub(rq.1));
+            if inverse {
+                let ct = cmul(conj(rot[k]), t);
+                (conj(rot[k]), (ct.0.neg(), ct.1.neg()))
+            } else {
+                (rot[k], t)
+            }
+        });
+        // Row k as affine polynomials in `g` (as `LinearForm::row_poly`).
+        let row = |k: usize| -> [AffineDd; 3] {
+            let (r, t) = disp[k];
+            let ck = cmul(conj(r), t);
+            let (mr, mi) = (Dd::of(1.0).sub(r.0), r.1);
+            let half = t.0.mul(t.0).add(t.1.mul(t.1)).mul(Dd::of(-0.5));
+            [[ck.0, mr, mi.neg()], [ck.1, mi, mr], [half, t.0, t.1]]
+        };
+        let r = [row(1), row(2), row(3)];
+        let mut out = [Dd::ZERO; 10];
+        for (p, sign) in PERMS.iter().zip([1.0, 1.0, 1.0, -1.0, -1.0, -1.0]) {
+            let term = mul3_dd(&mul2_dd(&r[0][p[0]], &r[1][p[1]]), &r[2][p[2]]);
+            for i in 0..10 {
+                out[i] = out[i].add(Dd {
+                    hi: sign * term[i].hi,
+                    lo: sign * term[i].lo,
+                });
+            }
+        }
+        out.map(|v| v.hi + v.lo)
+    }
+}
+
 /// `p q` for affine `p`, `q`: a quadratic `[1, x, y, x^2, xy, y^2]`.
 fn mul2(p: &Affine, q: &Affine) -> [f64; 6] {
     [
@@ -551,6 +677,33 @@ mod tests {
             let k = c.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             assert!((cubic.evaluate(Point2::from(g)) * k - det).abs() < 1e-13);
         }
+    }
+
+    #[test]
+    fn the_accurate_cubic_is_the_plain_one_on_a_moderate_task() {
+        let m = motion();
+        for inverse in [false, true] {
+            let form = if inverse { m.form.inverse() } else { m.form };
+            let (plain, mag) = form.cubic([1, 2, 3]);
+            let accurate = m.curve_cubic(inverse);
+            for (a, b) in accurate.iter().zip(plain) {
+                assert!((a - b).abs() <= 1e-14 * mag, "{accurate:?} {plain:?}");
+            }
+        }
+        // The double-double parts: a product and a sum kept exactly.
+        let p = Dd::prod(1.0 + f64::EPSILON, 1.0 - f64::EPSILON);
+        assert_eq!((p.hi, p.lo), (1.0, -f64::EPSILON * f64::EPSILON));
+        let s = Dd::sum(1.0, 1e-30);
+        assert_eq!((s.hi, s.lo), (1.0, 1e-30));
+        assert!(
+            Dd::of(1.0)
+                .div(3.0)
+                .mul(Dd::of(3.0))
+                .sub(Dd::of(1.0))
+                .hi
+                .abs()
+                < 1e-31
+        );
     }
 
     #[test]

@@ -241,10 +241,14 @@ impl FilemonArcs {
     /// stretch of the curve of one class, labelled by its vertices; the
     /// free pieces are joined across the arc ends they share and cut at
     /// `C1`. The curve's point at the middle of each chord next to a mark
-    /// (or between vertices of different classes) is classified too, and a
-    /// change it shows is found on the curve by bisection and
+    /// (or between vertices of different classes, or on a stretch of
+    /// centers whose circle points are nearly one point) is classified
+    /// too, and a change it shows is found on the curve by bisection and
     /// made a vertex (where the exact arc ends are rounding: a line of
-    /// centers whose circle points are nearly one point). The arcs are the
+    /// centers whose circle points are nearly one point). A point is free
+    /// only where its class holds across the float curve's own resolution
+    /// there (near a singular point of a nearly degenerate task it may be
+    /// far coarser than the task allows; such stretches are omitted). The arcs are the
     /// same in every view: the arcs of a smaller view are those of a larger
     /// one, clipped.
     ///
@@ -305,15 +309,8 @@ impl FilemonArcs {
         // has no center point, and no mark is `never` then.
         let never = at.map_or(usize::MAX, |_| marks.len());
         marks.extend(at);
-        let free = |p: Point2<f64>| {
-            if circle {
-                Some(self.classify_circle_point(p) == Branch::Free)
-            } else {
-                self.classify_center_point(p)
-                    .ok()
-                    .map(|b| b == Branch::Free)
-            }
-        };
+        // Free only where the float curve decides it (see `label`).
+        let free = |p: Point2<f64>| self.label(p, circle);
         control.check(0, 0)?;
         // The trace itself reads the cancel flag (`Cancelled`, 0 of 0).
         let lines = curve.polylines_marked(viewport, &marks, control.cancel_flag())?;
@@ -326,20 +323,129 @@ impl FilemonArcs {
         // The curve's point of a chord lies within the trace's chord
         // tolerance of it; twice that is the reach of the chord's own branch.
         let reach = 2.0 * Cubic::DEFAULT_TOLERANCE * viewport.diagonal();
-        let lines = resolve_changes(curve, &lines, reach, &free, &mut poll)?;
+        let lines = resolve_changes(curve, &lines, reach, never, &free, &mut poll)?;
         control.report(poll.total, poll.total);
         Ok(free_pieces(&lines, never))
     }
 }
 
+impl FilemonArcs {
+    /// The label of a point of the curve of its plane (`circle`: the
+    /// circle-point curve): free only where the four signs agree and keep
+    /// agreeing across the float curve's own resolution there
+    /// ([`resolution`]), with the circle point of a center point.
+    ///
+    /// The curve's coefficients are rounded to doubles, so a traced point,
+    /// or the curve's point next to a chord, is known only to within that
+    /// band. Near a singular point (or on a nearly degenerate task) it is
+    /// far coarser than the task itself allows: on the circle plane of the
+    /// fuzz input `b1b9e681` the resolution is `1.5e-2` in a view of 25
+    /// (the exact curve `2.7e-3` from a traced point there, where one ulp
+    /// of the task moves it by `3e-9`), and the signs are `0.08` with the
+    /// lines' directions `42` long. A circle point nearer a Filemon line
+    /// than the band's width, or a center whose circle point is nearer one
+    /// than twice the way it moves as the center moves across the band
+    /// (measured on one side), has its class decided by rounding and is
+    /// not called free. On an ordinary curve this omits about `1e-14` task
+    /// sizes next to an arc end.
+    fn label(&self, p: Point2<f64>, circle: bool) -> Label {
+        let (is_free, image) = if circle {
+            (Some(self.classify_circle_point(p) == Branch::Free), None)
+        } else {
+            match self.four.circle_point(p) {
+                Ok(z) => (Some(self.classify_circle_point(z) == Branch::Free), Some(z)),
+                Err(_) => (None, None),
+            }
+        };
+        if is_free != Some(true) {
+            return Label {
+                free: is_free,
+                image,
+            };
+        }
+        let curve = if circle {
+            self.four.circle_point_curve()
+        } else {
+            self.four.center_point_curve()
+        };
+        // The distance of a circle point from the nearest Filemon line.
+        let d = self.lines.directions();
+        let apart = |z: Point2<f64>| {
+            let s = self.circle_signs(z);
+            s.iter()
+                .zip(d.iter())
+                .fold(f64::INFINITY, |m, (s, d)| m.min(s.abs() / d.norm()))
+        };
+        let decided = resolution(curve, p).is_some_and(|r| {
+            match image {
+                None => apart(p) > r,
+                // How far the circle point moves as the center moves
+                // across the band (one side: twice that, for the other).
+                // (The linear conditions solved as `circle_point` solves
+                // them, without its on-curve test: the moved center is on
+                // the band's edge by construction.)
+                Some(z) => normalized(curve.gradient(p)).is_some_and(|g| {
+                    let motion = &self.four.motion;
+                    motion
+                        .form
+                        .solve(motion.local_of(p + g * r), &[1, 2, 3])
+                        .is_ok_and(|w| apart(z) > 2.0 * (motion.global_of(w) - z).norm())
+                }),
+            }
+        });
+        Label {
+            free: Some(decided),
+            image,
+        }
+    }
+}
+
+/// A point's label ([`FilemonArcs::label`]): free (`None` where a center
+/// point has no class) and, in the center plane, its circle point.
+#[derive(Debug, Clone, Copy)]
+struct Label {
+    free: Option<bool>,
+    image: Option<Point2<f64>>,
+}
+
+/// The band about the float curve, in units of the first-order move of
+/// the rounding of its coefficients ([`resolution`]), within
+/// which a free point's class must hold: the band within which the tracer
+/// settles a vertex and the curve's point next to a chord is found
+/// ([`Cubic::is_on`]'s rule, `|f|` within `64 eps` of its terms).
+const RESOLUTION: f64 = 64.0;
+
+/// The float curve's resolution at `p`: how far the rounding of its
+/// coefficients (half an ulp of each, `eps` of the terms' magnitude at
+/// `p`) moves the curve there, to first order, [`RESOLUTION`] times that,
+/// and at least a few ulps of the point's own coordinates (a task of
+/// `5e-11` at `2.9e-5` from the origin, fuzz input `4960ca6f`, has its
+/// curve resolved to `7e-27` by its coefficients, but its points are placed
+/// only to `3.4e-21`, and the class there changes from one ulp to the next);
+/// `None` where the gradient is zero or the point is not finite in the
+/// curve's frame.
+fn resolution(curve: &Cubic, p: Point2<f64>) -> Option<f64> {
+    // `f` and its terms over `m^3`, the gradient over `m^2` (local units).
+    let (_, bound, g, m) = curve.value_and_bound(p, &[0.0; 10])?;
+    let d = RESOLUTION * f64::EPSILON * bound / g * m * curve.frame().1;
+    let d = d.max(ULPS * f64::EPSILON * p.coords.norm());
+    d.is_finite().then_some(d)
+}
+
+/// How many ulps of a point's coordinates its class must hold across, at
+/// least.
+const ULPS: f64 = 4.0;
+
 /// A traced vertex: where it is, the index of the mark it is (if any) and,
 /// for a vertex that is not a mark, whether it is free (`None` where it
-/// has no class).
+/// has no class) and its circle point (the center plane).
 #[derive(Debug, Clone, Copy)]
 struct Vertex {
     at: Point2<f64>,
     mark: Option<usize>,
     free: Option<bool>,
+    /// The circle point of a center point (the center plane, not a mark).
+    image: Option<Point2<f64>>,
 }
 
 /// The progress of [`FilemonArcs::free_arcs_with`] in traced vertices, with its
@@ -367,6 +473,25 @@ impl Poll<'_, '_> {
         self.control.check(self.done, self.total)
     }
 }
+
+/// Where [`resolve_changes`] takes a chord of the center plane for a
+/// stretch of centers whose circle points are nearly one point: its ends'
+/// circle points closer than this fraction of its length. On such a
+/// stretch (a line of centers of a task with three poses at nearly one
+/// position) the exact arc ends' centers are rounding along it or lost
+/// (the two meets of an extreme line with the circle-point curve a double
+/// root within rounding), while each center's class is well decided and
+/// can change and change back within one chord: the chord's middle is
+/// classified. Measured `2e-13` to `3e-11` on such lines; an ordinary
+/// curve's ratio is of order 1, and falls to this only `1e3` task sizes
+/// out (as the square of the distance), where the check only costs time.
+/// Only chords of free ends (a free stretch hidden in a defective chord
+/// is omitted, not called free) longer than the reach of the chord's own
+/// branch (twice the trace's chord tolerance): a trace refined to its
+/// budget along such a line (a million vertices on the center plane of
+/// `traced-vertex-1.5-tolerances-off-ordinary-task`) would otherwise
+/// classify most middles too.
+const CONTRACTED: f64 = 1e-6;
 
 /// The mark index of a class change found by [`resolve_changes`]: a
 /// vertex where the class may change, never the driven dyad's point.
@@ -410,7 +535,7 @@ fn change_between(
     mut a: Point2<f64>,
     la: bool,
     mut b: Point2<f64>,
-    free: &impl Fn(Point2<f64>) -> Option<bool>,
+    free: &impl Fn(Point2<f64>) -> Label,
 ) -> Point2<f64> {
     for _ in 0..200 {
         let scale = a.coords.norm().max(b.coords.norm());
@@ -424,7 +549,7 @@ fn change_between(
         if q == a || q == b {
             break;
         }
-        match free(q) {
+        match free(q).free {
             Some(l) if l == la => a = q,
             Some(_) => b = q,
             None => break,
@@ -444,7 +569,13 @@ const VERTICES: &str = "free arcs' vertices";
 /// the chord's ends) is classified, and where its class differs from that
 /// of an end that is not a mark, the change is found by bisection on the
 /// curve ([`change_between`]) and inserted as a mark, the middle point as
-/// an ordinary vertex after it.
+/// an ordinary vertex after it. The driven dyad's point (the mark `never`,
+/// a boundary) is never free: where the middle of its chord is free, the
+/// change between them is found the same way (on a line of centers whose
+/// circle points are nearly that of the driven dyad, the classifier's
+/// boundary about it covers a long stretch of the line). The middle of a
+/// chord whose ends' circle points are nearly one point ([`CONTRACTED`])
+/// is classified too.
 ///
 /// The exact arc ends are the meets of the extreme lines with the
 /// circle-point curve; on a curve with a line of centers whose circle
@@ -459,13 +590,15 @@ fn resolve_changes(
     curve: &Cubic,
     lines: &[Vec<(Point2<f64>, Option<usize>)>],
     reach: f64,
-    free: &impl Fn(Point2<f64>) -> Option<bool>,
+    never: usize,
+    free: &impl Fn(Point2<f64>) -> Label,
     poll: &mut Poll<'_, '_>,
 ) -> Result<Vec<Vec<Vertex>>> {
     let change = |at| Vertex {
         at,
         mark: Some(CHANGE),
         free: None,
+        image: None,
     };
     lines
         .iter()
@@ -474,10 +607,18 @@ fn resolve_changes(
             let mut prev: Option<Vertex> = None;
             for &(at, mark) in line {
                 poll.step()?;
+                let label = match mark {
+                    Some(_) => Label {
+                        free: None,
+                        image: None,
+                    },
+                    None => free(at),
+                };
                 let v = Vertex {
                     at,
                     mark,
-                    free: if mark.is_some() { None } else { free(at) },
+                    free: label.free,
+                    image: label.image,
                 };
                 if let Some(u) = prev {
                     let (a, b) = (u.at, v.at);
@@ -486,16 +627,33 @@ fn resolve_changes(
                     // rounding along a line of centers) or whose ends
                     // differ; between two vertices of one class away from
                     // the marks a change is a pair of them, which the exact
-                    // arc ends resolve.
+                    // arc ends resolve, except on a stretch of centers whose
+                    // circle points are nearly one point (`contracted`).
                     let marked = u.mark.is_some() || v.mark.is_some();
-                    if (la.is_some() || lb.is_some()) && (marked || la != lb) {
+                    // (Only a chord of free ends: a free stretch hidden in
+                    // a defective chord is omitted, not wrong.)
+                    let len = (b - a).norm();
+                    let contracted = match (u.image, v.image) {
+                        (Some(za), Some(zb)) => {
+                            la == Some(true)
+                                && lb == Some(true)
+                                && len > reach
+                                && (zb - za).norm() < CONTRACTED * len
+                        }
+                        _ => false,
+                    };
+                    if (la.is_some() || lb.is_some()) && (marked || la != lb || contracted) {
                         let m = Point2::from((a.coords + b.coords) * 0.5);
                         if let Some(q) = curve_point_between(curve, m, reach, a, b)
                             .filter(|q| *q != a && *q != b)
                         {
-                            if let Some(lm) = free(q) {
-                                let differs_a = la.is_some_and(|l| l != lm);
-                                let differs_b = lb.is_some_and(|l| l != lm);
+                            let lq = free(q);
+                            if let Some(lm) = lq.free {
+                                // The driven dyad's point is never free.
+                                let differs_a =
+                                    la.is_some_and(|l| l != lm) || (lm && u.mark == Some(never));
+                                let differs_b =
+                                    lb.is_some_and(|l| l != lm) || (lm && v.mark == Some(never));
                                 if differs_a || differs_b {
                                     poll.check()?;
                                 }
@@ -514,6 +672,7 @@ fn resolve_changes(
                                             at: q,
                                             mark: None,
                                             free: Some(lm),
+                                            image: lq.image,
                                         },
                                     )?;
                                 }

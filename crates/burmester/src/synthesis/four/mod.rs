@@ -325,8 +325,17 @@ impl FourPositions {
         if let Some(t) = motion.collinear_translations() {
             return Err(errors::collinear_translations(t.map(|k| k + 1)));
         }
-        let curve = |form: &crate::synthesis::local::LinearForm| -> Result<(Cubic, [f64; 10])> {
-            let (f, mags) = form.cubic_bounds([1, 2, 3]);
+        // The coefficients from the accurate expansion (poses at nearly one
+        // position cancel most of the plain one's digits); the scale of
+        // their rounding from the plain one's terms in magnitude.
+        let curve = |inverse: bool| -> Result<(Cubic, [f64; 10])> {
+            let form = if inverse {
+                motion.form.inverse()
+            } else {
+                motion.form
+            };
+            let (_, mags) = form.cubic_bounds([1, 2, 3]);
+            let f = motion.curve_cubic(inverse);
             let mag = mags.iter().fold(0.0f64, |m, v| m.max(*v));
             let max = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             if !(max > tolerance::DEGENERATE_CURVE * mag) {
@@ -342,8 +351,8 @@ impl FourPositions {
                 mags.map(|m| m / max),
             ))
         };
-        let (center_curve, center_bounds) = curve(&motion.form)?;
-        let (circle_curve, circle_bounds) = curve(&motion.form.inverse())?;
+        let (center_curve, center_bounds) = curve(false)?;
+        let (circle_curve, circle_bounds) = curve(true)?;
         let compat = Compat::new(&motion).ok();
         Ok(FourPositions {
             motion,

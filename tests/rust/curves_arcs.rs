@@ -1,0 +1,334 @@
+//! The branch-free arcs of four poses (issue 24, class B of the `curves`
+//! fuzz target: a free arc whose chord passes a defective point), on the
+//! tasks of the findings, against the exact classes of each float task
+//! (`fuzz/reference/open_curves.py`: the exact curves expanded in rationals,
+//! points taken onto them along the gradient and their exact circle points
+//! and Filemon signs in mpmath at 60 digits).
+
+use burmester::geom::{Cubic, Line};
+use burmester::synthesis::{FilemonArcs, FourPositions};
+use burmester::{Branch, Dyad, Point2, Pose, Viewport};
+
+/// A finding's task: its poses, the driven dyad and the view of the fuzz
+/// check, as the 20 numbers `x y angle` of the four poses, the driven
+/// center and circle point `x y`, and the view `xmin xmax ymin ymax`.
+struct Finding {
+    name: &'static str,
+    numbers: &'static str,
+}
+
+impl Finding {
+    fn arcs(&self) -> (FourPositions, FilemonArcs, Viewport) {
+        let n: Vec<f64> = self
+            .numbers
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert_eq!(n.len(), 20, "{}", self.name);
+        let poses: Vec<Pose> = n[..12]
+            .chunks(3)
+            .map(|p| Pose::new(p[0], p[1], p[2]))
+            .collect();
+        let four = FourPositions::new(&poses).unwrap();
+        let driven = Dyad::new(Point2::new(n[12], n[13]), Point2::new(n[14], n[15]));
+        let fa = four.filemon(&driven).unwrap();
+        (four, fa, Viewport::new(n[16], n[17], n[18], n[19]).unwrap())
+    }
+}
+
+/// The free arcs of one plane with, for each arc, its vertices and the
+/// curve's points next to its chords: at `1/16` steps along each chord,
+/// taken onto the curve along its gradient (the nearest point, when within
+/// twice the trace's chord tolerance and within the chord's length of both
+/// ends; elsewhere another branch is nearer and the point says nothing of
+/// this chord).
+fn arc_points(
+    four: &FourPositions,
+    fa: &FilemonArcs,
+    view: &Viewport,
+    circle: bool,
+) -> Vec<Point2<f64>> {
+    let curve = if circle {
+        four.circle_point_curve()
+    } else {
+        four.center_point_curve()
+    };
+    let arcs = if circle {
+        fa.free_circle_arcs(view)
+    } else {
+        fa.free_center_arcs(view)
+    };
+    let arcs = arcs.unwrap();
+    let reach = 2.0 * Cubic::DEFAULT_TOLERANCE * view.diagonal();
+    let mut out = Vec::new();
+    for arc in &arcs {
+        out.extend(arc.iter().copied());
+        for w in arc.windows(2) {
+            let len = (w[1] - w[0]).norm();
+            for k in 1..16 {
+                let m = w[0] + (w[1] - w[0]) * (f64::from(k) / 16.0);
+                let g = curve.gradient(m);
+                let near = curve
+                    .intersect_line(&Line {
+                        point: m,
+                        direction: g,
+                    })
+                    .into_iter()
+                    .min_by(|a, b| (a - m).norm().total_cmp(&(b - m).norm()));
+                out.extend(near.filter(|q| {
+                    (q - m).norm() <= reach && (q - w[0]).norm() <= len && (q - w[1]).norm() <= len
+                }));
+            }
+        }
+    }
+    out
+}
+
+/// Every point of [`arc_points`] free by the library's classifier, except
+/// within a millionth of the view of an arc end or the driven dyad's point
+/// (where the class is rounding); the fuzz check's rule, on sixteen points
+/// of each chord.
+fn assert_free_by_the_classifier(f: &Finding, circle: bool) {
+    let (four, fa, view) = f.arcs();
+    // The exact arc ends of the plane and the driven dyad's point.
+    let driven = if circle {
+        Some(fa.driven().circle())
+    } else {
+        fa.driven().finite_center()
+    };
+    let marks: Vec<Point2<f64>> = fa
+        .arc_ends()
+        .iter()
+        .map(|e| if circle { Some(e.circle) } else { e.center })
+        .chain([driven])
+        .flatten()
+        .collect();
+    for p in arc_points(&four, &fa, &view, circle) {
+        if marks
+            .iter()
+            .any(|m| (m - p).norm() <= 1e-6 * view.diagonal())
+        {
+            continue;
+        }
+        let class = if circle {
+            Ok(fa.classify_circle_point(p))
+        } else {
+            fa.classify_center_point(p)
+        };
+        if let Ok(b) = class {
+            assert_eq!(b, Branch::Free, "{}: a free arc passes {p}", f.name);
+        }
+    }
+}
+
+/// Three findings on lines of centers whose circle points are nearly one
+/// point (a task with three poses at nearly one position): the class
+/// changes along the line where the exact arc ends' centers do not say.
+///
+/// - `f1c7cc58`: the line `x = -42667` runs from `C0` (`y = 112501`, never
+///   free) to a vertex at `y = -537489`; the middle of that chord
+///   (`y = -212494`) is free, and the free arc ran from it up to `C0`,
+///   while the exact class is defective from `C0` down to
+///   `y = -167095.47` (exact change; pose 4's sign goes from `-2.2e-4` to
+///   `5.6e-5` over `y = -151557` to `-171869`, the library's within `1e-6`
+///   of it).
+/// - `aeb6fa97`: the line `x = 32585.94` is traced as one chord across the
+///   view with free ends and no arc ends (the two meets of each extreme
+///   line with the circle-point curve a double root lost to rounding);
+///   exactly defective for `y` in `(-11393.89, 7949.76)`.
+/// - `e478e665`: the line `x = 8.4e12` through `C0`, whose circle points lie
+///   within `POINT` task sizes of `C1` over `y` of about `(-3.9e12, 7.2e12)`:
+///   the classifier calls them a boundary (the exact class is free: an
+///   omitted stretch, not a wrong one), and the free arc ran up to `C0`
+///   across them.
+///
+/// Before the fix each fails the classifier's check (a chord through a
+/// defective or boundary point).
+#[test]
+fn arcs38_a_free_arc_ends_where_the_class_changes_on_a_line_of_centers() {
+    let f1 = Finding {
+        name: "f1c7cc58",
+        numbers: "-85332.03125 -8.53359375e-8 -0.00099609375 \
+             -4.0078125e-9 0.99609375 0.038 \
+             4.411328125e-8 0.9960936509960937 0.98828125 \
+             -4.0078125e-9 0.99609375 36.0 \
+             -42667.328866685726 112501.53533581641 \
+             -85332.03124988574 -1.3080044147795178e-7 \
+             -692657.4106981714 607322.7529647999 -537488.5464956692 762491.617167302",
+    };
+    let ae = Finding {
+        name: "aeb6fa97",
+        numbers: "65171.875 -0.00082421875 0.28515625 \
+             2.6e-8 1.0599609375e-7 0.058484375 \
+             0.0 0.0 0.31640625 \
+             0.0 0.0 -8.242187500000001e-10 \
+             4.027167960884981e-6 5.81786913413161e-7 \
+             32585.937389778766 -9033.004381799796 \
+             -57890.3181457356 203306.3371276672 -130542.82164415171 130653.8336292511",
+    };
+    let e4 = Finding {
+        name: "e478e665",
+        numbers: "16800000000000.0 -49.0 67.0 \
+             -2e-6 1.7217e-5 0.0 \
+             -2.0001293499999997e-6 45.0 65.0 \
+             16800000000000.0 -49.0 -2.0 \
+             8400000000010.857 1670863885970.8276 \
+             16800000000012.563 -52.25901895378353 \
+             -8529464994445.471 25333035005554.53 -15305339239029.172 18557160760970.83",
+    };
+    for f in [&f1, &ae, &e4] {
+        assert_free_by_the_classifier(f, false);
+        assert_free_by_the_classifier(f, true);
+    }
+
+    // Against the exact changes: nothing free on the defective stretch, and
+    // the free stretches reach it within 1e-2 of the view (the library's
+    // ends: -170960 against -167095.47; -11395.56 and 7951.25 against
+    // -11393.89 and 7949.76).
+    let on_line = |f: &Finding, x: f64| {
+        let (four, fa, view) = f.arcs();
+        let d = view.diagonal();
+        let ys: Vec<f64> = arc_points(&four, &fa, &view, false)
+            .into_iter()
+            .filter(|p| (p.x - x).abs() < 10.0)
+            .map(|p| p.y)
+            .collect();
+        (ys, d)
+    };
+    let (ys, d) = on_line(&f1, -42665.0);
+    let change = -167095.47;
+    assert!(
+        ys.iter().all(|&y| y < change),
+        "f1c7cc58: free above {change}"
+    );
+    let top = ys.iter().copied().fold(f64::MIN, f64::max);
+    assert!(
+        top > change - 1e-2 * d,
+        "f1c7cc58: the free stretch ends at {top}"
+    );
+    let (ys, d) = on_line(&ae, 32585.937);
+    let (lo, hi) = (-11393.89, 7949.76);
+    assert!(
+        ys.iter().all(|&y| !(lo..=hi).contains(&y)),
+        "aeb6fa97: free in ({lo}, {hi})"
+    );
+    let below = ys
+        .iter()
+        .copied()
+        .filter(|&y| y < lo)
+        .fold(f64::MIN, f64::max);
+    let above = ys
+        .iter()
+        .copied()
+        .filter(|&y| y > hi)
+        .fold(f64::MAX, f64::min);
+    assert!(
+        below > lo - 1e-2 * d && above < hi + 1e-2 * d,
+        "aeb6fa97: free up to {below} and from {above}"
+    );
+}
+
+/// Three findings where the float curve is resolved far more coarsely than
+/// the task allows (a nearly singular curve, rounded coefficients): the
+/// traced points near the failing chord lie `2.7e-3` (`b1b9e681`, circle
+/// plane, view 25 wide), `2.5e-9` (`ba20f608`, circle plane, view `7e-6`)
+/// and up to `6e-14` (`e3a51fce`, center plane, view `7e-12`) from the
+/// exact curve, where one ulp of the task moves it `3e-9`, `4e-17` and
+/// `3e-21`, and the library's classes of the float curve's points there
+/// flip from point to point. And one (`4960ca6f`, center plane, found by
+/// this fix's first fuzz round) where the curve is resolved to `7e-27` but
+/// its points' coordinates (`2.9e-5`) only to `3.4e-21`, and the class
+/// changes from one ulp to the next (exact: defective along the chord, 9
+/// points, signs `-1.5e-29, -1.1e-30, -1.5e-29, +8e-31`). The exact curve is defective along each
+/// failing chord (17 points each: signs `+0.027` to `+3e-4` against
+/// `-1149` on `b1b9e681`; `-2.9e-14, +5.9e-15, +1.1e-12, -3.5e-14` on
+/// `ba20f608`; `-5e-31, +1e-30, -1e-30, +1.9e-24` on `e3a51fce`, and at the
+/// 20 vertices of the free arc that remained there with the classifier's
+/// sampling alone). No free arc may come within the failing chord's length
+/// of its middle; before the fix each fails the classifier's check too.
+#[test]
+fn arcs38_no_free_arc_where_the_float_curve_does_not_decide_the_class() {
+    let cases = [
+        (
+            Finding {
+                name: "b1b9e681",
+                numbers: "0.029 0.02911328125 0.10911328125 \
+                     0.39294758245455985 -145.53651207120296 0.11411328125 \
+                     121.48405906337575 2316.9700673989696 0.0294453125 \
+                     93.14170316818786 2326.604872854859 0.02911328125 \
+                     29113.293702136965 0.1018072502065479 \
+                     29101.931527383866 -40.54681074942869 \
+                     29100.58196000477 29126.00544426916 -12.60993488198831 12.813549382401407",
+            },
+            true,
+            (
+                (29113.2552456969, -0.04261717655026587),
+                (29113.25292163006, -0.045356650649182484),
+            ),
+        ),
+        (
+            Finding {
+                name: "ba20f608",
+                numbers: "3.811328125e-8 -3.90625e-12 -3.90625e-6 \
+                     1.4785886242328603e-5 -1.2410459465650447e-8 0.00011328125 \
+                     0.0004921217246971382 5.192602856307627e-7 0.00390625 \
+                     5.299968222368006e-7 -1.5034116324888996e-10 0.0 \
+                     0.00010105165434546933 0.12585972458817024 \
+                     0.00011328238334189277 0.1258476551454513 \
+                     9.739912429127849e-5 0.00010470418439966018 0.12585607205811605 0.12586337711822443",
+            },
+            true,
+            (
+                (0.00010096459173341036, 0.12585980932293356),
+                (0.00010105068782698152, 0.1258597244099203),
+            ),
+        ),
+        (
+            Finding {
+                name: "e3a51fce",
+                numbers: "2.95625e-14 9.1296875e-8 0.00719140625 \
+                     4.848519619349593e-10 9.130222176947819e-8 0.02924609375 \
+                     -1.5806868623453932e-10 9.129744339546386e-8 0.0 \
+                     4.944860533113771e-10 9.130281098769588e-8 0.02968359375 \
+                     1.8263930423043563e-14 1.1328139453088509e-7 \
+                     -4.956029419324403e-12 1.132815607047482e-7 \
+                     -3.615749042899663e-12 3.65227690374575e-12 1.1327776051791176e-7 1.1328502854385842e-7",
+            },
+            false,
+            (
+                (-3.328298616733085e-12, 1.1328174568304719e-7),
+                (-3.0827631676050185e-12, 1.132817337896375e-7),
+            ),
+        ),
+        (
+            Finding {
+                name: "4960ca6f",
+                numbers: "3.90625e-15 2.900390625e-5 0.096 \
+                     1.1946484375e-19 2.900390625000007e-5 68.265625 \
+                     3.90625e-15 2.900390625e-5 19.0 \
+                     3.8953125e-14 2.900397451562489e-5 0.11499609375 \
+                     -5.755363012282212e-11 2.9003940416347032e-5 \
+                     -2.6012033759486935e-15 2.900390625410641e-5 \
+                     -5.806562238192276e-11 -5.7041637863721483e-11 2.9003939904354772e-5 2.9003940928339292e-5",
+            },
+            false,
+            (
+                (-5.75497612652247e-11, 2.9003940416345172e-5),
+                (-5.755026154639628e-11, 2.9003940416345413e-5),
+            ),
+        ),
+    ];
+    for (f, circle, ((ax, ay), (bx, by))) in &cases {
+        assert_free_by_the_classifier(f, *circle);
+        let (a, b) = (Point2::new(*ax, *ay), Point2::new(*bx, *by));
+        let m = Point2::from((a.coords + b.coords) * 0.5);
+        let (four, fa, view) = f.arcs();
+        for p in arc_points(&four, &fa, &view, *circle) {
+            assert!(
+                (p - m).norm() > (b - a).norm(),
+                "{}: a free arc passes {p}, by the failing chord {a} - {b}",
+                f.name
+            );
+        }
+    }
+}
