@@ -163,7 +163,7 @@ def condition(poses, circle, patterns=8, seed=1):
 
 
 CASES = {
-    "free-arc-chord-passes-defective-point-near-c0-poses-at-one-position-4279ce91": [
+    "free-arc-chord-passes-defective-point-coefficients-lost-digits-near-c0-4279ce91": [
         (80996.09375, -9.6875e-10, 8.99609375),
         (-0.09438671875, 0.28515625, 0.0),
         (0.0, -3.8671875e-10, -3.90625e-6),

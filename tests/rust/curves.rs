@@ -4306,7 +4306,7 @@ fn issue24_edge_crossings_are_settled_on_the_curve() {
     }
 }
 
-/// Issue 24 (curv37, class B, `fuzz/open/curves/...-4279ce91`): poses 2, 3
+/// Issue 24 (curv37, class B, `fuzz/regressions/curves/...-4279ce91`): poses 2, 3
 /// and 4 within `0.3` of one position in a task of `6e4`, poses 2 and 3
 /// `3.9e-6` rad apart. The plain expansion of the curves' determinant
 /// cancelled most of its terms' digits there, and the rows' entries had
