@@ -3578,7 +3578,7 @@ fn issue24_traced_vertices_are_settled_on_the_curve() {
             // oval instead (within 1 of its center the cubic's terms beyond
             // the second order are below `1e-8` of the value): at most
             // `0.1215` off, within the bound.
-            let oval = Point2::new(0.0033612056017542951521, -3851.1674592572486241);
+            let oval = Point2::new(0.003361205601754295, -3851.1674592572485);
             let d = if k == 2 && (p - oval).norm() < 1.0 {
                 near += 1;
                 ((p - oval).norm() - 0.00436759646342).abs()
@@ -4110,7 +4110,7 @@ fn issue24_a_complex_pair_near_merging_is_resolved_in_every_frame() {
 fn issue24_slow_free_arcs() -> (FourPositions, FilemonArcs, Viewport) {
     let poses = [
         Pose::new(-0.0050156325192544544, -0.04285546875, 2.145498903589793),
-        Pose::new(-0.024261718749999998, -0.04285546875, 3.141592653589793),
+        Pose::new(-0.024261718749999998, -0.04285546875, PI),
         Pose::new(0.04552510321552368, -0.04285546875, -69.9716886884063),
         Pose::new(-0.0242356624321997, -0.04285546875, 3.106436403589793),
     ];
