@@ -1580,8 +1580,14 @@ fn a_compatibility_sample_is_near_the_cubic() {
 /// Found by a proptest at 6000 cases: a linkage close to a kite (ground
 /// about the rocker, crank about the coupler), whose circle point sits next
 /// to a near-singular point of the circle-point curve: its value is 1.5e-13
-/// but its gradient 6e-6, so its first-order distance is 4.4 times the
-/// tolerance.
+/// but its gradient 6e-6, so its first-order distance was 4.4 times the
+/// tolerance. That was the rounding of the plain f64 coefficients, not the
+/// curve (curv38, last assertion): the exact curve of this float task
+/// (`fuzz/reference/coefficients.py`, `kite`) puts the circle point
+/// `4.9e-15` off by first-order distance, and the exact curves of the task
+/// with every number moved by one ulp (8 sign patterns) `1.0e-15` to
+/// `1.1e-14`; the plain coefficients were `4.1e-13` of the largest off the
+/// exact ones (`2.4e-8` of first-order distance there).
 #[test]
 fn a_kite_s_circle_point_is_near_a_nearly_singular_curve() {
     let p = LinkParams {
@@ -1604,7 +1610,27 @@ fn a_kite_s_circle_point_is_near_a_nearly_singular_curve() {
         assert!(on_curve(c, &four, d.circle, 10.0), "{}", d.circle);
         assert!(c.evaluate(d.circle).abs() < 1e-12);
     }
-    assert!(!on_curve(c, &four, m.b.circle, 1.0));
+    // The library's coefficients against the exact ones (normalised by the
+    // largest; one ulp of the task moves them `2.8e-13`): measured `9.7e-15`
+    // off. The circle point's first-order distance within a hundredth of
+    // the tolerance: what the coefficients' own rounding to doubles allows
+    // there (an ulp of the largest over the gradient, `5e-11`; measured
+    // `1.4e-12`), where the plain ones put it 4.4 tolerances off.
+    #[rustfmt::skip]
+    let exact = [
+        0.04781491940384491, -0.21047417100697288, 0.3003670833127072, 0.29379429146073865,
+        -0.9747697889118524, 0.4838604342125753, -0.10344856156660247, 1.0,
+        -0.10344856156660247, 1.0,
+    ];
+    let (local, _, _) = c.local_coefficients();
+    let err = local
+        .iter()
+        .zip(exact)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(err <= 3e-14, "{local:?} is {err:e} off");
+    let tol = ON_CURVE_TOLERANCE * (four.size() + (m.b.circle - centroid(four.poses())).norm());
+    let d = c.distance_estimate(m.b.circle);
+    assert!(d <= 1e-2 * tol, "{d:e} against a tolerance of {tol:e}");
 }
 
 /// Found by a proptest at 6000 cases: a Burmester point 5e4 task sizes
@@ -3535,9 +3561,30 @@ fn issue24_traced_vertices_are_settled_on_the_curve() {
         };
         let mut count = 0;
         let mut worst = 0.0f64;
+        let mut near = 0;
         for p in curve.polylines(&vp).into_iter().flatten() {
             count += 1;
-            let d = curve.distance_estimate(p);
+            // Case 2 (curv38): next to pose 1's position the exact curve is
+            // an oval of radius `0.00437` around a point where its gradient
+            // vanishes (the reference, `fuzz/reference/coefficients.py`,
+            // `oval`: its value there `-6.2e-20` of the largest coefficient,
+            // its Hessian `1.3337` times the identity to `4e-10`, the same
+            // to 4 digits in the task moved by one ulp of every number), a
+            // feature the curve in doubles cannot hold (its coefficients'
+            // rounding alone is `1e-17` there), so the library's curve has
+            // an oval of about `0.12` around it, and its first-order
+            // distance means nothing there (`1.47` and `27.7`, the gradient
+            // all but zero). Its vertices are measured against the exact
+            // oval instead (within 1 of its center the cubic's terms beyond
+            // the second order are below `1e-8` of the value): at most
+            // `0.1215` off, within the bound.
+            let oval = Point2::new(0.003361205601754295, -3851.1674592572485);
+            let d = if k == 2 && (p - oval).norm() < 1.0 {
+                near += 1;
+                ((p - oval).norm() - 0.00436759646342).abs()
+            } else {
+                curve.distance_estimate(p)
+            };
             worst = worst.max(d);
             assert!(d <= bound * four.size(), "case {k}: {p} is {d} off");
             let other = taken_back(&four, p, circle, &format!("case {k}"));
@@ -3554,7 +3601,11 @@ fn issue24_traced_vertices_are_settled_on_the_curve() {
             }
         }
         assert!(count > 50, "case {k}: {count} vertices");
-        eprintln!("case {k}: {count} vertices, worst first-order distance {worst:e}");
+        assert!(
+            k != 2 || near > 200,
+            "case {k}: {near} vertices at the oval"
+        );
+        eprintln!("case {k}: {count} vertices ({near} at the oval), worst distance {worst:e}");
     }
 }
 
@@ -3937,11 +3988,20 @@ fn issue24_a_line_of_centers_with_one_circle_point_has_its_exact_free_stretch() 
             .collect();
         let top = on_line.iter().copied().fold(f64::MIN, f64::max);
         let bottom = on_line.iter().copied().fold(f64::MAX, f64::min);
-        // Within 1e-5 (1.5e-6 task sizes): the signs move by 1.4e-7 per
-        // unit of y there and are the float circle points' rounding to
-        // about 1e-12 (measured: the ends 4.4e-6 and 1.0e-6 off).
+        // Inside the exact stretch (to 1e-5, 1.5e-6 task sizes: the signs
+        // move by 1.4e-7 per unit of y there and are the float circle
+        // points' rounding to about 1e-12), and most of it. Since the
+        // accurate coefficients (curv38) the arc ends' centers on the line,
+        // known only to rounding along it, land `0.034` and `0.002` inside
+        // the exact class changes, and the free arcs leave those stretches
+        // out: omitted, which is safe (nothing defective is called free:
+        // `check_free_arcs_dense` below), where a free end beyond the exact
+        // one would not be. (Before, the ends were within `4.4e-6` and
+        // `1.0e-6` of the exact ones; curv37's probe of the points between
+        // an arc end and its chord gave them back but cost fuzz findings.)
+        eprintln!("free on the line from {bottom} to {top}, exact {lo} to {hi}");
         assert!(
-            (top - hi).abs() < 1e-5 && (bottom - lo).abs() < 1e-5,
+            bottom >= lo - 1e-5 && top <= hi + 1e-5 && top - bottom >= 0.99 * (hi - lo),
             "free on the line from {bottom} to {top}, exact {lo} to {hi}, in {view:?}"
         );
         check_free_arcs_dense(&four, &fa, view, false).unwrap();
@@ -4040,30 +4100,71 @@ fn issue24_a_complex_pair_near_merging_is_resolved_in_every_frame() {
     );
 }
 
-/// The task, driven center and view of `fuzz/open/curves/slow-1.5-s-free-
-/// arcs-was-0.9-s-454464bc` (issue 24 item 10): a degenerate curve whose
-/// center-point trace in that view has about a million vertices, so that
-/// the free arcs take about a second.
+/// The task, driven center and view of `fuzz/open/curves/slow-center-trace-
+/// at-its-budget-30957a36` (issue 24 item 10; curv38): poses at one height
+/// (collinear positions) whose center-point trace in that view places the
+/// most vertices a trace may (its budget, about a million: 9 s in a debug
+/// build), so that the free arcs take seconds. (The input before,
+/// `454464bc`, took as long only because of the rounding of its cubic's
+/// coefficients: 65 traced vertices since they are accurate.)
 fn issue24_slow_free_arcs() -> (FourPositions, FilemonArcs, Viewport) {
     let poses = [
-        Pose::new(130.2796224988182, 78.12500000555079, 3.981436403589793),
-        Pose::new(6.625753534563728, 78.12500000555079, -74.9834073464102),
-        Pose::new(156.0410816761015, 78.12500000555079, 3.068444216089793),
-        Pose::new(83.79937388360848, 78.12500000555079, -17.2060635964063),
+        Pose::new(-0.0050156325192544544, -0.04285546875, 2.145498903589793),
+        Pose::new(-0.024261718749999998, -0.04285546875, PI),
+        Pose::new(0.04552510321552368, -0.04285546875, -69.9716886884063),
+        Pose::new(-0.0242356624321997, -0.04285546875, 3.106436403589793),
     ];
     let four = FourPositions::new(&poses).unwrap();
     let driven = four
-        .dyad_from_center(Point2::new(74.11694667838805, 72.28322417205871))
+        .dyad_from_center(Point2::new(0.018279447201332996, 0.010930869792860197))
         .unwrap();
     let fa = four.filemon(&driven).unwrap();
     let view = Viewport::new(
-        73.24133963475096,
-        74.99255372202514,
-        71.40761712842162,
-        73.1588312156958,
+        -0.029242633635673303,
+        0.0658015280383393,
+        -0.0365912110441461,
+        0.058452950629866496,
     )
     .unwrap();
     (four, fa, view)
+}
+
+/// Issue 24 (curv37): the trace inside the free arcs reads the cancel flag.
+/// On the slow input the center-plane trace places the most vertices a
+/// trace may (its budget, about a million: seconds in a debug build),
+/// which it did before reading the flag again. A flag set 30 ms into the
+/// call stops it inside the trace (`Cancelled`, `0` of `0`: no vertex
+/// classified yet; before curv37, the first check after the trace reported
+/// the classified vertices) within a fraction of a second. (Removed with
+/// the accurate coefficients, which made its input fast; back in curv38
+/// with a slow one.)
+#[test]
+fn issue24_a_cancelled_trace_stops_inside_the_trace() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::time::{Duration, Instant};
+
+    use burmester::Control;
+
+    let (_, fa, view) = issue24_slow_free_arcs();
+    let stop = AtomicBool::new(false);
+    let control = Control::new().with_cancel(&stop);
+    let (r, set, back) = std::thread::scope(|s| {
+        let setter = s.spawn(|| {
+            std::thread::sleep(Duration::from_millis(30));
+            stop.store(true, Ordering::Relaxed);
+            Instant::now()
+        });
+        let r = fa.free_arcs_with(&view, false, &control);
+        let back = Instant::now();
+        (r, setter.join().unwrap(), back)
+    });
+    let latency = back.saturating_duration_since(set);
+    eprintln!("returned {latency:?} after the flag was set");
+    assert!(
+        matches!(r, Err(Error::Cancelled { done: 0, total: 0 })),
+        "{r:?}"
+    );
+    assert!(latency < Duration::from_millis(500), "{latency:?}");
 }
 
 /// Issue 24 item 10: the free arcs follow a control. Without cancelling,
@@ -4205,7 +4306,7 @@ fn issue24_edge_crossings_are_settled_on_the_curve() {
     }
 }
 
-/// Issue 24 (curv37, class B, `fuzz/open/curves/...-4279ce91`): poses 2, 3
+/// Issue 24 (curv37, class B, `fuzz/regressions/curves/...-4279ce91`): poses 2, 3
 /// and 4 within `0.3` of one position in a task of `6e4`, poses 2 and 3
 /// `3.9e-6` rad apart. The plain expansion of the curves' determinant
 /// cancelled most of its terms' digits there, and the rows' entries had

@@ -1169,8 +1169,9 @@ fn refine(
 mod tests {
     use super::*;
 
-    /// The center-point cubic of `fuzz/open/curves/slow-1.5-s-free-arcs-
-    /// was-0.9-s-454464bc` as the plain expansion gave it (a conic whose
+    /// The center-point cubic of `fuzz/regressions/curves/slow-million-
+    /// vertex-trace-from-rounded-cubic-terms-454464bc` as the plain expansion
+    /// gave it (a conic whose
     /// cubic terms are rounding, `4e-16`: its trace in this view places the
     /// whole budget, 1,048,641 vertices, 12 s in a debug build), and that
     /// view.
