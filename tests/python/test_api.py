@@ -339,6 +339,8 @@ PROPERTIES[burmester.Actuator] += " min_clearance clearance_angle clear"
 # Issue 27 (clr32): the strut's diameter and least gap, the map's clearance column.
 PROPERTIES[burmester.Actuator] += " actuator_width min_gap link_width"
 PROPERTIES[burmester.ActuatorMap] += " clearance actuator_width min_gap"
+# The design's strut stage has its own size bound (act38).
+PROPERTIES[burmester.DesignReport] += " actuator_max_size_ratio"
 
 # Issue 27 (ssynth27): the slider records.
 PROPERTIES[burmester.SliderDyad] = "circle guide normal"
