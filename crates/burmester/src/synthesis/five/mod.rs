@@ -20,6 +20,8 @@ use crate::synthesis::order::{Drive, drive};
 use crate::synthesis::task::of_poses;
 use crate::tolerance;
 
+mod refine;
+
 /// A four-bar made of two Burmester dyads, classified for either dyad
 /// driving.
 #[derive(Debug, Clone, PartialEq)]
@@ -365,6 +367,7 @@ impl FivePositions {
                 },
             ));
         };
+        refined(&motion, &mut points);
         points.sort_by(|a, b| {
             (a.center - motion.origin)
                 .norm()
@@ -1474,6 +1477,36 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
         Polished::None
     })
 }
+
+/// The answer's points, each corrected by Newton's method on the four
+/// circle equations in double-double ([`refine`]): kept where it converges
+/// within [`REFINE_REACH`] (times `1 + |G|`, local) and within a quarter of
+/// the way to any other listed point (a point listed twice stays so).
+fn refined(m: &LocalMotion, points: &mut [Dyad]) {
+    let accurate = refine::Accurate::new(m);
+    let local: Vec<(Vector2<f64>, Vector2<f64>)> = points
+        .iter()
+        .map(|d| (m.local_of(d.center), m.local_of(d.circle)))
+        .collect();
+    for (i, d) in points.iter_mut().enumerate() {
+        let (g, z) = local[i];
+        let Some((g1, z1)) = accurate.newton(g, z) else {
+            continue;
+        };
+        let moved = (g1 - g).norm();
+        let apart = local
+            .iter()
+            .map(|(h, _)| (h - g).norm())
+            .filter(|&x| x > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        if moved <= REFINE_REACH * (1.0 + g.norm()) && moved <= 0.25 * apart {
+            *d = Dyad::new(m.global_of(g1), m.global_of(z1));
+        }
+    }
+}
+
+/// How far (times `1 + |G|`, local) [`refined`] may move a point.
+const REFINE_REACH: f64 = 1e-2;
 
 /// What [`polish`] makes of a root of the elimination.
 enum Polished {

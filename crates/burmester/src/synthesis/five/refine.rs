@@ -1,0 +1,143 @@
+//! The last correction of a Burmester point: Newton's method on the four
+//! circle equations evaluated in double-double from the poses themselves.
+//!
+//! The elimination and [`super::polish`] work on the linear form's rows,
+//! whose entries are rounded from the poses once (`t_k = p_k - R_k p_1`,
+//! `1 - conj(R_k)`), and near a degenerate task (poses at nearly one
+//! position, angles nearly equal or half a turn apart) those entries have
+//! lost most of their digits by cancellation: the point that zeroes the
+//! rounded rows lay `1e-6` to `3e-3` of `size + d` from the exact point of
+//! the float task, where the rounding of the inputs moves it by thirty to
+//! a thousand times less (fuzz/README.md, five38). The residual here is
+//! formed from the local positions and rotations in double-double, so
+//! that it is the float task's own to far below that rounding; the step
+//! (a 4x4 solve in `f64`) only needs to point the right way.
+
+// Comparisons are written `!(a > b)` on purpose: a NaN takes the failing
+// branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use nalgebra::{Matrix4, Vector2, Vector4};
+
+use crate::geom::dd::Dd;
+use crate::synthesis::local::LocalMotion;
+
+/// A complex (or plane) double-double `(re, im)`.
+type C = (Dd, Dd);
+
+fn add(a: C, b: C) -> C {
+    (a.0.add(b.0), a.1.add(b.1))
+}
+
+fn sub(a: C, b: C) -> C {
+    (a.0.sub(b.0), a.1.sub(b.1))
+}
+
+fn times(a: C, b: C) -> C {
+    (
+        a.0.mul(b.0).sub(a.1.mul(b.1)),
+        a.0.mul(b.1).add(a.1.mul(b.0)),
+    )
+}
+
+fn norm2(a: C) -> Dd {
+    a.0.mul(a.0).add(a.1.mul(a.1))
+}
+
+fn dd2(v: Vector2<f64>) -> C {
+    (Dd::of(v.x), Dd::of(v.y))
+}
+
+fn round2(a: C) -> Vector2<f64> {
+    Vector2::new(a.0.hi + a.0.lo, a.1.hi + a.1.lo)
+}
+
+/// The poses of a motion in its local frame, in double-double: each
+/// position `(p_k - origin) / scale` and each rotation `R_k = e^{i
+/// theta_1k}` with its real part `1 - 2 sin^2(theta_1k / 2)` (so that `R_k
+/// - 1` keeps its digits for a small angle).
+pub(super) struct Accurate {
+    pos: [C; 5],
+    rot: [C; 5],
+}
+
+impl Accurate {
+    pub(super) fn new(m: &LocalMotion) -> Self {
+        let pos = core::array::from_fn(|k| {
+            let p = m.poses[k].position;
+            (
+                Dd::sum(p.x, -m.origin.x).div(m.scale),
+                Dd::sum(p.y, -m.origin.y).div(m.scale),
+            )
+        });
+        let rot = core::array::from_fn(|k| {
+            let t = m.theta[k];
+            let h = (0.5 * t).sin();
+            let twice = Dd::prod(h, h).add(Dd::prod(h, h));
+            (Dd::of(1.0).sub(twice), Dd::of(t.sin()))
+        });
+        Accurate { pos, rot }
+    }
+
+    /// The four circle equations at the center `g` and circle point `z`
+    /// (local): `E_k = |D_k(z) - g|^2 - |z - g|^2` for `k = 2..5`, `D_k(z) =
+    /// p_k + R_k (z - p_1)`, and their Jacobian in `(g, z)`: rows `2 (z -
+    /// D_k)` and `2 conj(R_k) (D_k - g) - 2 (z - g)`.
+    fn equations(&self, g: Vector2<f64>, z: Vector2<f64>) -> (Vector4<f64>, Matrix4<f64>) {
+        let (gd, zd) = (dd2(g), dd2(z));
+        let w = sub(zd, self.pos[0]);
+        let u = sub(zd, gd);
+        let mut e = Vector4::zeros();
+        let mut jac = Matrix4::zeros();
+        for r in 0..4 {
+            let k = r + 1;
+            let rk = self.rot[k];
+            let d = sub(add(self.pos[k], times(rk, w)), gd);
+            let v = norm2(d).sub(norm2(u));
+            e[r] = v.hi + v.lo;
+            let dg = round2(sub(u, d)) * 2.0;
+            let dz = (round2(times((rk.0, rk.1.neg()), d)) - round2(u)) * 2.0;
+            jac[(r, 0)] = dg.x;
+            jac[(r, 1)] = dg.y;
+            jac[(r, 2)] = dz.x;
+            jac[(r, 3)] = dz.y;
+        }
+        (e, jac)
+    }
+
+    /// Newton's method from `(g, z)` (local) on [`equations`](Self::equations):
+    /// the converged point, or `None` when a step is not finite or the
+    /// steps do not shrink to rounding within a few iterations.
+    pub(super) fn newton(
+        &self,
+        g: Vector2<f64>,
+        z: Vector2<f64>,
+    ) -> Option<(Vector2<f64>, Vector2<f64>)> {
+        let (mut g, mut z) = (g, z);
+        let mut last = f64::INFINITY;
+        for _ in 0..ITERATIONS {
+            let (e, jac) = self.equations(g, z);
+            let step = jac.full_piv_lu().solve(&(-e))?;
+            if !step.iter().all(|v| v.is_finite()) {
+                return None;
+            }
+            g += Vector2::new(step[0], step[1]);
+            z += Vector2::new(step[2], step[3]);
+            let size = 1.0 + g.norm() + z.norm();
+            let n = step.norm();
+            if n <= 4.0 * f64::EPSILON * size || (n >= last && n <= 1e-12 * size) {
+                return Some((g, z));
+            }
+            if !(n < last) && last.is_finite() {
+                return None;
+            }
+            last = n;
+        }
+        None
+    }
+}
+
+/// At most this many steps: from the elimination's polished point (`3e-3`
+/// of `size + d` off at worst, in the inputs examined) Newton's method
+/// converges quadratically in a handful.
+const ITERATIONS: usize = 8;
