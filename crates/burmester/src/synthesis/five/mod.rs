@@ -1480,8 +1480,9 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
 
 /// The answer's points, each corrected by Newton's method on the four
 /// circle equations in double-double ([`refine`]): kept where it converges
-/// within [`REFINE_REACH`] (times `1 + |G|`, local) and within a quarter of
-/// the way to any other listed point (a point listed twice stays so).
+/// within [`REFINE_REACH`] (times `1 + |G|`, local), within a quarter of
+/// the way to any other listed point (a point listed twice stays so), and
+/// to a smaller residual of the accurate rows.
 fn refined(m: &LocalMotion, points: &mut [Dyad]) {
     let accurate = refine::Accurate::new(m);
     let local: Vec<(Vector2<f64>, Vector2<f64>)> = points
@@ -1499,7 +1500,10 @@ fn refined(m: &LocalMotion, points: &mut [Dyad]) {
             .map(|(h, _)| (h - g).norm())
             .filter(|&x| x > 0.0)
             .fold(f64::INFINITY, f64::min);
-        if moved <= REFINE_REACH * (1.0 + g.norm()) && moved <= 0.25 * apart {
+        if moved <= REFINE_REACH * (1.0 + g.norm())
+            && moved <= 0.25 * apart
+            && accurate.residual(g1, z1) <= accurate.residual(g, z)
+        {
             *d = Dyad::new(m.global_of(g1), m.global_of(z1));
         }
     }

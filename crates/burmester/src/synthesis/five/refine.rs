@@ -52,57 +52,70 @@ fn round2(a: C) -> Vector2<f64> {
     Vector2::new(a.0.hi + a.0.lo, a.1.hi + a.1.lo)
 }
 
-/// The poses of a motion in its local frame, in double-double: each
-/// position `(p_k - origin) / scale` and each rotation `R_k = e^{i
-/// theta_1k}` with its real part `1 - 2 sin^2(theta_1k / 2)` (so that `R_k
-/// - 1` keeps its digits for a small angle).
+/// The rows of the four circle equations of a motion, in double-double
+/// from its poses: in the local frame each position `q_k = (p_k - origin)
+/// / scale`, each rotation `R_k = e^{i theta_1k}` with `1 - R_k`'s real
+/// part `2 sin^2(theta_1k / 2)` (so that it keeps its digits for a small
+/// angle), `t_k = q_k - R_k q_1`; row `k` is `a_k(g) . z - b_k(g)` with
+/// `a_k(g) = conj(R_k) t_k + (1 - conj(R_k)) g` and `b_k(g) = t_k . g -
+/// |t_k|^2 / 2` (`LinearForm`'s, half of `|D_k(z) - g|^2 - |z - g|^2` with
+/// the `|z|^2` terms cancelled exactly: a circle point far out, `1e14` task
+/// sizes, would otherwise bring `eps |z|^2` from `|R_k| != 1`).
 pub(super) struct Accurate {
-    pos: [C; 5],
-    rot: [C; 5],
+    /// Per row `k = 2..5`: `conj(R_k) t_k`, `1 - conj(R_k)` as `(1 - cos,
+    /// sin)`, `t_k` and `|t_k|^2 / 2`.
+    rows: [(C, C, C, Dd); 4],
 }
 
 impl Accurate {
     pub(super) fn new(m: &LocalMotion) -> Self {
-        let pos = core::array::from_fn(|k| {
+        let q = |k: usize| {
             let p = m.poses[k].position;
             (
                 Dd::sum(p.x, -m.origin.x).div(m.scale),
                 Dd::sum(p.y, -m.origin.y).div(m.scale),
             )
-        });
-        let rot = core::array::from_fn(|k| {
+        };
+        let q1 = q(0);
+        let rows = core::array::from_fn(|r| {
+            let k = r + 1;
             let t = m.theta[k];
             let h = (0.5 * t).sin();
-            let twice = Dd::prod(h, h).add(Dd::prod(h, h));
-            (Dd::of(1.0).sub(twice), Dd::of(t.sin()))
+            let one_less = Dd::prod(h, h).add(Dd::prod(h, h));
+            let rot = (Dd::of(1.0).sub(one_less), Dd::of(t.sin()));
+            let tk = sub(q(k), times(rot, q1));
+            let ct = times((rot.0, rot.1.neg()), tk);
+            let half = norm2(tk).mul(Dd::of(0.5));
+            (ct, (one_less, rot.1), tk, half)
         });
-        Accurate { pos, rot }
+        Accurate { rows }
     }
 
-    /// The four circle equations at the center `g` and circle point `z`
-    /// (local): `E_k = |D_k(z) - g|^2 - |z - g|^2` for `k = 2..5`, `D_k(z) =
-    /// p_k + R_k (z - p_1)`, and their Jacobian in `(g, z)`: rows `2 (z -
-    /// D_k)` and `2 conj(R_k) (D_k - g) - 2 (z - g)`.
+    /// The four rows at the center `g` and circle point `z` (local), and
+    /// their Jacobian in `(g, z)`: `conj(1 - conj(R_k)) z - t_k` and
+    /// `a_k(g)`.
     fn equations(&self, g: Vector2<f64>, z: Vector2<f64>) -> (Vector4<f64>, Matrix4<f64>) {
         let (gd, zd) = (dd2(g), dd2(z));
-        let w = sub(zd, self.pos[0]);
-        let u = sub(zd, gd);
         let mut e = Vector4::zeros();
         let mut jac = Matrix4::zeros();
-        for r in 0..4 {
-            let k = r + 1;
-            let rk = self.rot[k];
-            let d = sub(add(self.pos[k], times(rk, w)), gd);
-            let v = norm2(d).sub(norm2(u));
+        for (r, (ct, m, t, half)) in self.rows.iter().enumerate() {
+            let a = add(*ct, times(*m, gd));
+            let b = t.0.mul(gd.0).add(t.1.mul(gd.1)).sub(*half);
+            let v = a.0.mul(zd.0).add(a.1.mul(zd.1)).sub(b);
             e[r] = v.hi + v.lo;
-            let dg = round2(sub(u, d)) * 2.0;
-            let dz = (round2(times((rk.0, rk.1.neg()), d)) - round2(u)) * 2.0;
+            let dg = round2(sub(times((m.0, m.1.neg()), zd), *t));
+            let dz = round2(a);
             jac[(r, 0)] = dg.x;
             jac[(r, 1)] = dg.y;
             jac[(r, 2)] = dz.x;
             jac[(r, 3)] = dz.y;
         }
         (e, jac)
+    }
+
+    /// The norm of the four rows at `(g, z)` (local).
+    pub(super) fn residual(&self, g: Vector2<f64>, z: Vector2<f64>) -> f64 {
+        self.equations(g, z).0.norm()
     }
 
     /// Newton's method from `(g, z)` (local) on [`equations`](Self::equations):
