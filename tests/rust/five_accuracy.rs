@@ -4,11 +4,13 @@
 //! `1e22`. The exact points were computed once by
 //! `tests/python/burmester_reference.py` (exact elimination, mpmath at 60
 //! digits) for these very floats and are written here; the cases are
-//! inputs of the `burmester_points` fuzz target (`fuzz/regressions/
-//! burmester_points/inaccurate-point-*`). Before the double-double
-//! correction (`five::refine`) the library's points were `3.6e-6` to
-//! `3.5e-3` of `size + d` off these, thirty to a thousand times what the
-//! rounding of the inputs moves them.
+//! inputs of the `burmester_points` fuzz target
+//! (`fuzz/regressions/burmester_points/inaccurate-point-rows-lost-digits-*`).
+//! Before the double-double correction (`five::refine`) the library's
+//! points were `3.6e-6` to `3.5e-3` of `size + d` off these, thirty to a
+//! thousand times what the rounding of the inputs moves them.
+
+use std::f64::consts::PI;
 
 use burmester::synthesis::FivePositions;
 use burmester::{Point2, Pose, Vector2};
@@ -166,10 +168,10 @@ fn issue24_near_degenerate_five_pose_points_are_the_exact_ones() {
     assert_at_exact(
         "47915008",
         &[
-            (-9984765.625, 9.99999999999999e+21, 3.141592653589793),
+            (-9984765.625, 9.99999999999999e+21, PI),
             (-9984765.625, 9.99999999999999e+21, 0.0),
             (-9984765.625, -1010397656.25, -2.5345e-05),
-            (-255639984765.625, 31405528879.64793, 3.141592653589793),
+            (-255639984765.625, 31405528879.64793, PI),
             (-9984765.62499778, 2349989602343.75, -0.1),
         ],
         &[
