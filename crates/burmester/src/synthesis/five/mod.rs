@@ -1158,8 +1158,21 @@ impl Elimination {
                 // was taken next to `Q`, matched a pole there, and a point
                 // was lost).
                 let (lb, lc) = if line_f { (ev, gv) } else { (bv, cv) };
-                if mult >= 2 && negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b)) && lb != 0.0 {
-                    cands.push(Common::At(self.q + w * (-lc / lb)));
+                let (ob, oc) = if line_f { (bv, cv) } else { (ev, gv) };
+                let t = -lc / lb;
+                // The two linear parts' roots agree within rounding, or
+                // within `PROPORTIONAL_REL` of their terms (the finite
+                // point's own direction is within the root's rounding of
+                // the asymptote, `7.5e-9` rad in `b56c8054`'s moved frame,
+                // and along lines this close to the asymptote the curves'
+                // crossings move `1e3` times faster: the roots `16.11306`
+                // task sizes out differed by `4.8e-7` of them, and the
+                // point was listed as a second slider). The candidate is
+                // then polished and checked like any other.
+                let agree = negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b))
+                    || (ob * t + oc).abs() <= PROPORTIONAL_REL * ((ob * t).abs() + oc.abs());
+                if mult >= 2 && agree && lb != 0.0 && t.is_finite() {
+                    cands.push(Common::At(self.q + w * t));
                 }
             } else {
                 let num = av * gv - cv * dv;

@@ -17,7 +17,7 @@
 // branch.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use nalgebra::{Matrix4, Vector2, Vector4};
+use nalgebra::{Matrix5, Vector2, Vector3, Vector4, Vector5};
 
 use crate::geom::dd::Dd;
 use crate::synthesis::local::LocalMotion;
@@ -91,55 +91,73 @@ impl Accurate {
         Accurate { rows }
     }
 
-    /// The four rows at the center `g` and circle point `z` (local), and
-    /// their Jacobian in `(g, z)`: `conj(1 - conj(R_k)) z - t_k` and
-    /// `a_k(g)`.
-    fn equations(&self, g: Vector2<f64>, z: Vector2<f64>) -> (Vector4<f64>, Matrix4<f64>) {
-        let (gd, zd) = (dd2(g), dd2(z));
-        let mut e = Vector4::zeros();
-        let mut jac = Matrix4::zeros();
+    /// The four rows at the center `g` and the circle point `z = Z / w`
+    /// (local, homogeneous: `|Z|^2 + w^2 = 1`), `a_k(g) . Z - b_k(g) w`,
+    /// with the normalisation as a fifth equation, and their Jacobian in
+    /// `(g, Z, w)`: `conj(1 - conj(R_k)) Z - t_k w`, `a_k(g)`, `-b_k(g)`.
+    fn equations(&self, g: Vector2<f64>, h: Vector3<f64>) -> (Vector5<f64>, Matrix5<f64>) {
+        let gd = dd2(g);
+        let zd = (Dd::of(h.x), Dd::of(h.y));
+        let mut e = Vector5::zeros();
+        let mut jac = Matrix5::zeros();
         for (r, (ct, m, t, half)) in self.rows.iter().enumerate() {
             let a = add(*ct, times(*m, gd));
             let b = t.0.mul(gd.0).add(t.1.mul(gd.1)).sub(*half);
-            let v = a.0.mul(zd.0).add(a.1.mul(zd.1)).sub(b);
+            let v = a.0.mul(zd.0).add(a.1.mul(zd.1)).sub(b.mul(Dd::of(h.z)));
             e[r] = v.hi + v.lo;
-            let dg = round2(sub(times((m.0, m.1.neg()), zd), *t));
+            let tw = (t.0.mul(Dd::of(h.z)), t.1.mul(Dd::of(h.z)));
+            let dg = round2(sub(times((m.0, m.1.neg()), zd), tw));
             let dz = round2(a);
             jac[(r, 0)] = dg.x;
             jac[(r, 1)] = dg.y;
             jac[(r, 2)] = dz.x;
             jac[(r, 3)] = dz.y;
+            jac[(r, 4)] = -(b.hi + b.lo);
         }
+        let n = Dd::prod(h.x, h.x)
+            .add(Dd::prod(h.y, h.y))
+            .add(Dd::prod(h.z, h.z))
+            .sub(Dd::of(1.0));
+        e[4] = n.hi + n.lo;
+        jac[(4, 2)] = 2.0 * h.x;
+        jac[(4, 3)] = 2.0 * h.y;
+        jac[(4, 4)] = 2.0 * h.z;
         (e, jac)
     }
 
-    /// The norm of the four rows at `(g, z)` (local).
+    /// The norm of the four rows at `(g, z)` (local), `z` normalised as in
+    /// [`equations`](Self::equations).
     pub(super) fn residual(&self, g: Vector2<f64>, z: Vector2<f64>) -> f64 {
-        self.equations(g, z).0.norm()
+        let e = self.equations(g, homogeneous(z)).0;
+        Vector4::new(e[0], e[1], e[2], e[3]).norm()
     }
 
     /// Newton's method from `(g, z)` (local) on [`equations`](Self::equations):
     /// the converged point, or `None` when a step is not finite or the
-    /// steps do not shrink to rounding within a few iterations.
+    /// steps do not shrink to rounding within a few iterations. The circle
+    /// point is homogeneous: one far out (a center at a pose's position,
+    /// its circle point `1e9` task sizes out) is known only in its
+    /// direction, and in `(g, z)` the steps diverged there.
     pub(super) fn newton(
         &self,
         g: Vector2<f64>,
         z: Vector2<f64>,
     ) -> Option<(Vector2<f64>, Vector2<f64>)> {
-        let (mut g, mut z) = (g, z);
+        let (mut g, mut h) = (g, homogeneous(z));
         let mut last = f64::INFINITY;
         for _ in 0..ITERATIONS {
-            let (e, jac) = self.equations(g, z);
+            let (e, jac) = self.equations(g, h);
             let step = jac.full_piv_lu().solve(&(-e))?;
             if !step.iter().all(|v| v.is_finite()) {
                 return None;
             }
-            g += Vector2::new(step[0], step[1]);
-            z += Vector2::new(step[2], step[3]);
-            let size = 1.0 + g.norm() + z.norm();
-            let n = step.norm();
-            if n <= 4.0 * f64::EPSILON * size || (n >= last && n <= 1e-12 * size) {
-                return Some((g, z));
+            let dg = Vector2::new(step[0], step[1]);
+            g += dg;
+            h += Vector3::new(step[2], step[3], step[4]);
+            let n = (dg.norm() / (1.0 + g.norm())).max(Vector3::new(step[2], step[3], step[4]).norm());
+            if n <= 4.0 * f64::EPSILON || (n >= last && n <= 1e-12) {
+                let z = Vector2::new(h.x, h.y) / h.z;
+                return z.iter().all(|v| v.is_finite()).then_some((g, z));
             }
             if !(n < last) && last.is_finite() {
                 return None;
@@ -148,6 +166,12 @@ impl Accurate {
         }
         None
     }
+}
+
+/// The circle point `z` as `(Z, w)` with `z = Z / w` and `|Z|^2 + w^2 = 1`.
+fn homogeneous(z: Vector2<f64>) -> Vector3<f64> {
+    let n = (1.0 + z.norm_squared()).sqrt();
+    Vector3::new(z.x / n, z.y / n, 1.0 / n)
 }
 
 /// At most this many steps: from the elimination's polished point (`3e-3`
