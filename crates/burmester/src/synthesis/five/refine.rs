@@ -154,7 +154,8 @@ impl Accurate {
             let dg = Vector2::new(step[0], step[1]);
             g += dg;
             h += Vector3::new(step[2], step[3], step[4]);
-            let n = (dg.norm() / (1.0 + g.norm())).max(Vector3::new(step[2], step[3], step[4]).norm());
+            let n =
+                (dg.norm() / (1.0 + g.norm())).max(Vector3::new(step[2], step[3], step[4]).norm());
             if n <= 4.0 * f64::EPSILON || (n >= last && n <= 1e-12) {
                 let z = Vector2::new(h.x, h.y) / h.z;
                 return z.iter().all(|v| v.is_finite()).then_some((g, z));
