@@ -242,7 +242,8 @@ fn issue24_near_degenerate_five_pose_points_are_the_exact_ones() {
 /// points at the exact reference's to `1e-9` of `size + d`.
 #[test]
 fn issue24_a_point_on_the_asymptote_s_double_root_is_not_a_slider() {
-    let cases: [(&str, [(f64, f64, f64); 5], &[(f64, f64)]); 4] = [
+    type Case = (&'static str, [(f64, f64, f64); 5], &'static [(f64, f64)]);
+    let cases: [Case; 4] = [
         (
             "b56c8054 moved",
             [
