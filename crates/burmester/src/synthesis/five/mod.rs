@@ -1502,9 +1502,14 @@ fn refined(m: &LocalMotion, points: &mut [Dyad]) {
         .iter()
         .map(|d| (m.local_of(d.center), m.local_of(d.circle)))
         .collect();
-    for (i, d) in points.iter_mut().enumerate() {
+    for i in 0..points.len() {
         let (g, z) = local[i];
-        let Some((g1, z1)) = accurate.newton(g, z) else {
+        // A point listed twice: as its first listing.
+        if let Some(j) = (0..i).find(|&j| local[j] == local[i]) {
+            points[i] = points[j];
+            continue;
+        }
+        let Some((g1, z1, start)) = accurate.newton(g, z) else {
             continue;
         };
         let moved = (g1 - g).norm();
@@ -1513,11 +1518,14 @@ fn refined(m: &LocalMotion, points: &mut [Dyad]) {
             .map(|(h, _)| (h - g).norm())
             .filter(|&x| x > 0.0)
             .fold(f64::INFINITY, f64::min);
+        // A move at the rounding of the local coordinates needs no check
+        // of the residual (most points of a moderate task).
+        let tiny = moved <= 1e-12 * (1.0 + g.norm());
         if moved <= REFINE_REACH * (1.0 + g.norm())
             && moved <= 0.25 * apart
-            && accurate.residual(g1, z1) <= accurate.residual(g, z)
+            && (tiny || accurate.residual(g1, z1) <= start)
         {
-            *d = Dyad::new(m.global_of(g1), m.global_of(z1));
+            points[i] = Dyad::new(m.global_of(g1), m.global_of(z1));
         }
     }
 }

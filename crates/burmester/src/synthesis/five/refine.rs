@@ -25,10 +25,6 @@ use crate::synthesis::local::LocalMotion;
 /// A complex (or plane) double-double `(re, im)`.
 type C = (Dd, Dd);
 
-fn add(a: C, b: C) -> C {
-    (a.0.add(b.0), a.1.add(b.1))
-}
-
 fn sub(a: C, b: C) -> C {
     (a.0.sub(b.0), a.1.sub(b.1))
 }
@@ -42,14 +38,6 @@ fn times(a: C, b: C) -> C {
 
 fn norm2(a: C) -> Dd {
     a.0.mul(a.0).add(a.1.mul(a.1))
-}
-
-fn dd2(v: Vector2<f64>) -> C {
-    (Dd::of(v.x), Dd::of(v.y))
-}
-
-fn round2(a: C) -> Vector2<f64> {
-    Vector2::new(a.0.hi + a.0.lo, a.1.hi + a.1.lo)
 }
 
 /// The rows of the four circle equations of a motion, in double-double
@@ -96,22 +84,22 @@ impl Accurate {
     /// with the normalisation as a fifth equation, and their Jacobian in
     /// `(g, Z, w)`: `conj(1 - conj(R_k)) Z - t_k w`, `a_k(g)`, `-b_k(g)`.
     fn equations(&self, g: Vector2<f64>, h: Vector3<f64>) -> (Vector5<f64>, Matrix5<f64>) {
-        let gd = dd2(g);
-        let zd = (Dd::of(h.x), Dd::of(h.y));
         let mut e = Vector5::zeros();
         let mut jac = Matrix5::zeros();
         for (r, (ct, m, t, half)) in self.rows.iter().enumerate() {
-            let a = add(*ct, times(*m, gd));
-            let b = t.0.mul(gd.0).add(t.1.mul(gd.1)).sub(*half);
-            let v = a.0.mul(zd.0).add(a.1.mul(zd.1)).sub(b.mul(Dd::of(h.z)));
+            let ax = ct.0.add(m.0.mul_f64(g.x)).sub(m.1.mul_f64(g.y));
+            let ay = ct.1.add(m.1.mul_f64(g.x)).add(m.0.mul_f64(g.y));
+            let b = t.0.mul_f64(g.x).add(t.1.mul_f64(g.y)).sub(*half);
+            let v = ax.mul_f64(h.x).add(ay.mul_f64(h.y)).sub(b.mul_f64(h.z));
             e[r] = v.hi + v.lo;
-            let tw = (t.0.mul(Dd::of(h.z)), t.1.mul(Dd::of(h.z)));
-            let dg = round2(sub(times((m.0, m.1.neg()), zd), tw));
-            let dz = round2(a);
-            jac[(r, 0)] = dg.x;
-            jac[(r, 1)] = dg.y;
-            jac[(r, 2)] = dz.x;
-            jac[(r, 3)] = dz.y;
+            // The Jacobian only steers the steps: in doubles, from the
+            // accurate entries rounded once.
+            let (mr, mi) = (m.0.hi + m.0.lo, m.1.hi + m.1.lo);
+            let (tx, ty) = (t.0.hi + t.0.lo, t.1.hi + t.1.lo);
+            jac[(r, 0)] = mr * h.x + mi * h.y - tx * h.z;
+            jac[(r, 1)] = mr * h.y - mi * h.x - ty * h.z;
+            jac[(r, 2)] = ax.hi + ax.lo;
+            jac[(r, 3)] = ay.hi + ay.lo;
             jac[(r, 4)] = -(b.hi + b.lo);
         }
         let n = Dd::prod(h.x, h.x)
@@ -133,34 +121,41 @@ impl Accurate {
     }
 
     /// Newton's method from `(g, z)` (local) on [`equations`](Self::equations):
-    /// the converged point, or `None` when a step is not finite or the
-    /// steps do not shrink to rounding within a few iterations. The circle
-    /// point is homogeneous: one far out (a center at a pose's position,
-    /// its circle point `1e9` task sizes out) is known only in its
-    /// direction, and in `(g, z)` the steps diverged there.
+    /// the converged point and the residual ([`residual`](Self::residual))
+    /// at the start, or `None` when a step is not finite or the steps do
+    /// not shrink within a few iterations. It ends after a step below
+    /// [`CONVERGED`] (relative): the point then carries that step, and
+    /// what is left is of its square. The circle point is homogeneous: one
+    /// far out (a center at a pose's position, its circle point `1e9` task
+    /// sizes out) is known only in its direction, and in `(g, z)` the steps
+    /// diverged there.
     pub(super) fn newton(
         &self,
         g: Vector2<f64>,
         z: Vector2<f64>,
-    ) -> Option<(Vector2<f64>, Vector2<f64>)> {
+    ) -> Option<(Vector2<f64>, Vector2<f64>, f64)> {
         let (mut g, mut h) = (g, homogeneous(z));
         let mut last = f64::INFINITY;
+        let mut start = f64::NAN;
         for _ in 0..ITERATIONS {
             let (e, jac) = self.equations(g, h);
-            let step = jac.full_piv_lu().solve(&(-e))?;
+            if start.is_nan() {
+                start = Vector4::new(e[0], e[1], e[2], e[3]).norm();
+            }
+            let step = jac.lu().solve(&(-e))?;
             if !step.iter().all(|v| v.is_finite()) {
                 return None;
             }
             let dg = Vector2::new(step[0], step[1]);
+            let dh = Vector3::new(step[2], step[3], step[4]);
             g += dg;
-            h += Vector3::new(step[2], step[3], step[4]);
-            let n =
-                (dg.norm() / (1.0 + g.norm())).max(Vector3::new(step[2], step[3], step[4]).norm());
-            if n <= 4.0 * f64::EPSILON || (n >= last && n <= 1e-12) {
+            h += dh;
+            let n = (dg.norm() / (1.0 + g.norm())).max(dh.norm());
+            if n <= CONVERGED {
                 let z = Vector2::new(h.x, h.y) / h.z;
-                return z.iter().all(|v| v.is_finite()).then_some((g, z));
+                return z.iter().all(|v| v.is_finite()).then_some((g, z, start));
             }
-            if !(n < last) && last.is_finite() {
+            if !(n < last) {
                 return None;
             }
             last = n;
@@ -174,6 +169,10 @@ fn homogeneous(z: Vector2<f64>) -> Vector3<f64> {
     let n = (1.0 + z.norm_squared()).sqrt();
     Vector3::new(z.x / n, z.y / n, 1.0 / n)
 }
+
+/// A step this small (relative to the center's `1 + |g|`, and to the
+/// normalised circle point) ends [`Accurate::newton`].
+const CONVERGED: f64 = 1e-12;
 
 /// At most this many steps: from the elimination's polished point (`3e-3`
 /// of `size + d` off at worst, in the inputs examined) Newton's method
