@@ -336,3 +336,74 @@ fn issue24_a_point_on_the_asymptote_s_double_root_is_not_a_slider() {
         assert_eq!(five.sliders().len(), 1, "{name}: {five:?}");
     }
 }
+
+/// A double root of the elimination that is one simple real point: Newton's
+/// method converges to the same point to rounding from both sides, and
+/// the root's other multiplicity is a complex pair whose directions from
+/// the elimination's pole lie within rounding of the point's. Each real
+/// point was listed twice (4 points where the exact reference has 2 real
+/// ones and a complex pair; `708d41e1`: 2 of 4 near ones a ghost double).
+/// Now each once, at the reference's points to `1e-9` of `size + d`.
+#[test]
+fn issue24_a_simple_point_on_a_double_root_is_listed_once() {
+    type Case = (&'static str, [(f64, f64, f64); 5], &'static [(f64, f64)]);
+    let cases: [Case; 3] = [
+        (
+            "68561dbd moved",
+            [
+                (-5.641550092355349, 8.257294505795791, 0.609375),
+                (-2.843567552564649e-15, 4.112738334986467e-15, 0.609400444),
+                (82000.5899897234, 57235.50682345072, 0.609374999999),
+                (-2.843567552564649e-15, 4.112738334986467e-15, 0.60937525444),
+                (0.17981062689681115, -0.25761246566474616, 0.709375),
+            ],
+            &[
+                (4.672880654977232, 3.193379813450958),
+                (41284.12446942171, 28212.202143504615),
+            ],
+        ),
+        (
+            "09c359d8 moved",
+            [
+                (-7.43931599e-11, -7.34375e-10, 0.0),
+                (-7.43931599e-11, -7.34375e-10, -1.0),
+                (-7.438434181469281e-11, -7.318405e-10, -PI),
+                (-7.439062499999999e-11, -7.34303e-10, 0.0),
+                (0.000999999925609375, -7.34375e-10, -6.283185307176395),
+            ],
+            &[
+                (-7.443254470974931e-11, -7.343516482218371e-10),
+                (0.000499999925567178, -1.760420658183394e-05),
+            ],
+        ),
+        (
+            "708d41e1 moved",
+            [
+                (1.0398711198593622, 0.04068798379594484, 0.04069921874509375),
+                (0.04069921874609375, -3.90625e-12, 0.04069921874609375),
+                (0.04069921874609375, -3.90625e-12, -3.1008934348436994),
+                (1.0398711198593622, 0.04068798379594484, -3.1008934348436994),
+                (0.035165652949314, 0.1358873785474983, 0.04069921874609375),
+            ],
+            &[
+                (-958485168172.8483, -1039861241971.677),
+                (0.5375183864043381, 0.08828768117172157),
+                (0.5402851693027059, 0.020343991896143502),
+                (1039861241972.5303, -958485168173.5725),
+            ],
+        ),
+    ];
+    for (name, poses, exact) in cases {
+        assert_at_exact(name, &poses, exact, 1e-9);
+        let q: Vec<Pose> = poses.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect();
+        let five = FivePositions::new(&q).unwrap();
+        let pts = five.burmester_points();
+        for (i, p) in pts.iter().enumerate() {
+            assert!(
+                pts[..i].iter().all(|q| q.center != p.center),
+                "{name}: {} listed twice ({pts:?})",
+                p.center
+            );
+        }
+    }
+}

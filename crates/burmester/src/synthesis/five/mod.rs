@@ -992,6 +992,11 @@ impl Elimination {
                 }
                 // A pair of complex points: no real point, none lost.
                 Polished::Complex => {}
+                // One simple point: once, its other multiplicity not real.
+                Polished::Simple(dyad) if !known(&points, &dyad) => {
+                    distinct += usize::from(near(&dyad));
+                    points.push(dyad);
+                }
                 _ => lost += mult,
             }
         }
@@ -1470,6 +1475,9 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
         if complex_pair(m, g0, z0, scale) {
             return Ok(Polished::Complex);
         }
+        if let Some(one) = simple(m, g0, first, scale) {
+            return Ok(one);
+        }
     }
     // Judged in the task's own frame (local: origin the poses' centroid,
     // unit their span), so that the check and its rounding allowance do not
@@ -1533,6 +1541,42 @@ fn refined(m: &LocalMotion, points: &mut [Dyad]) {
 /// How far (times `1 + |G|`, local) [`refined`] may move a point.
 const REFINE_REACH: f64 = 1e-2;
 
+/// A double root at `g0` that is one simple real point (see [`polish`]):
+/// Newton's method from `g0` (`first`) converged beyond a double point's
+/// reach ([`DOUBLE_REACH`], within [`SINGLE_REACH`]) and from `g0`
+/// reflected through that point converged to the same point to
+/// [`SIMPLE_SAME`] (times `1 + |G|`): at a simple root Newton's method ends
+/// at the rounding of the coordinates from either side, at a double one
+/// only at about its square root, apart. The root's other multiplicity is
+/// then not a real point: a complex pair whose directions from `Q` lie
+/// within the resultant's rounding of the point's (`3ef91cde`: two real
+/// points and a pair `0.3` task sizes off the real plane, every direction
+/// from `Q` within `1e-5` rad of two; each real point was listed twice).
+/// The point is listed once; the count of such a choice stays even only
+/// when another root is read the same way.
+fn simple(
+    m: &LocalMotion,
+    g0: Vector2<f64>,
+    first: Option<(Vector2<f64>, Vector2<f64>, bool)>,
+    scale: f64,
+) -> Option<Polished> {
+    let (g1, z1, true) = first? else {
+        return None;
+    };
+    let d = (g1 - g0).norm();
+    if !(d > DOUBLE_REACH * scale && d <= SINGLE_REACH * scale) {
+        return None;
+    }
+    let (g2, _, true) = newton(m, g0 * 2.0 - g1)? else {
+        return None;
+    };
+    ((g2 - g1).norm() <= SIMPLE_SAME * scale && accepted(m, g1, z1, local_residual(m, g1, z1)))
+        .then(|| Polished::Simple(Dyad::new(m.global_of(g1), m.global_of(z1))))
+}
+
+/// See [`simple`]: the rounding of the local coordinates, with room.
+const SIMPLE_SAME: f64 = 1e-12;
+
 /// What [`polish`] makes of a root of the elimination.
 enum Polished {
     /// No Burmester point (not concyclic, or the circle point at infinity).
@@ -1544,6 +1588,9 @@ enum Polished {
     /// A double root that is a pair of complex points resolved apart from
     /// the real plane ([`complex_pair`]): no real point.
     Complex,
+    /// A double root that is one simple real point ([`simple`]), listed
+    /// once: the root's other multiplicity is not a real point.
+    Simple(Dyad),
 }
 
 /// Whether the double root at `g0` (local, circle point `z0`) is a pair of
