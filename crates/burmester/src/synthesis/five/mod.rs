@@ -1469,13 +1469,14 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
     let scale = 1.0 + g0.norm();
     let first = newton(m, g0);
     if mult == 2 {
-        if let Some(pair) = split(m, g0, first, scale) {
+        let sides = both_sides(m, g0, first, scale);
+        if let Some(pair) = sides.and_then(|s| split(m, g0, s, scale)) {
             return Ok(pair);
         }
         if complex_pair(m, g0, z0, scale) {
             return Ok(Polished::Complex);
         }
-        if let Some(one) = simple(m, g0, first, scale) {
+        if let Some(one) = sides.and_then(|s| simple(m, s, scale)) {
             return Ok(one);
         }
     }
@@ -1541,10 +1542,11 @@ fn refined(m: &LocalMotion, points: &mut [Dyad]) {
 /// How far (times `1 + |G|`, local) [`refined`] may move a point.
 const REFINE_REACH: f64 = 1e-2;
 
-/// A double root at `g0` that is one simple real point (see [`polish`]):
-/// Newton's method from `g0` (`first`) converged beyond a double point's
-/// reach ([`DOUBLE_REACH`], within [`SINGLE_REACH`]) and from `g0`
-/// reflected through that point converged to the same point to
+/// A double root that is one simple real point (see [`polish`]): Newton's
+/// method from its estimate converged beyond a double point's reach
+/// ([`DOUBLE_REACH`], within [`SINGLE_REACH`]) and from the estimate
+/// reflected through that point ([`both_sides`]) converged to the same
+/// point to
 /// [`SIMPLE_SAME`] (times `1 + |G|`): at a simple root Newton's method ends
 /// at the rounding of the coordinates from either side, at a double one
 /// only at about its square root, apart. The root's other multiplicity is
@@ -1554,12 +1556,25 @@ const REFINE_REACH: f64 = 1e-2;
 /// from `Q` within `1e-5` rad of two; each real point was listed twice).
 /// The point is listed once; the count of such a choice stays even only
 /// when another root is read the same way.
-fn simple(
+fn simple(m: &LocalMotion, ((g1, z1), (g2, _)): Sides, scale: f64) -> Option<Polished> {
+    ((g2 - g1).norm() <= SIMPLE_SAME * scale && accepted(m, g1, z1, local_residual(m, g1, z1)))
+        .then(|| Polished::Simple(Dyad::new(m.global_of(g1), m.global_of(z1))))
+}
+
+/// Two converged points of Newton's method, each with its circle point
+/// ([`both_sides`]).
+type Sides = ((Vector2<f64>, Vector2<f64>), (Vector2<f64>, Vector2<f64>));
+
+/// Newton's method from a double root's estimate `g0` (`first`, converged
+/// beyond [`DOUBLE_REACH`] and within [`SINGLE_REACH`], times `scale`) and
+/// from `g0` reflected through that point (converged): both points with
+/// their circle points, for [`split`] and [`simple`] to judge.
+fn both_sides(
     m: &LocalMotion,
     g0: Vector2<f64>,
     first: Option<(Vector2<f64>, Vector2<f64>, bool)>,
     scale: f64,
-) -> Option<Polished> {
+) -> Option<Sides> {
     let (g1, z1, true) = first? else {
         return None;
     };
@@ -1567,11 +1582,10 @@ fn simple(
     if !(d > DOUBLE_REACH * scale && d <= SINGLE_REACH * scale) {
         return None;
     }
-    let (g2, _, true) = newton(m, g0 * 2.0 - g1)? else {
+    let (g2, z2, true) = newton(m, g0 * 2.0 - g1)? else {
         return None;
     };
-    ((g2 - g1).norm() <= SIMPLE_SAME * scale && accepted(m, g1, z1, local_residual(m, g1, z1)))
-        .then(|| Polished::Simple(Dyad::new(m.global_of(g1), m.global_of(z1))))
+    Some(((g1, z1), (g2, z2)))
 }
 
 /// See [`simple`]: the rounding of the local coordinates, with room.
@@ -1686,27 +1700,18 @@ const SINGLE_REACH: f64 = 1e-3;
 const DOUBLE_REACH: f64 = 1e-6;
 
 /// A double root at `g0` split into two real points (see [`polish`]):
-/// Newton's method from `g0` (`first`) and from `g0` reflected through it
-/// converged, on opposite sides of `g0`, to distinct points each beyond
+/// Newton's method from `g0` and from `g0` reflected through it
+/// ([`both_sides`]) converged, on opposite sides of `g0`, to distinct points each beyond
 /// [`DOUBLE_REACH`] and within [`SINGLE_REACH`], both concyclic.
 fn split(
     m: &LocalMotion,
     g0: Vector2<f64>,
-    first: Option<(Vector2<f64>, Vector2<f64>, bool)>,
+    ((g1, z1), (g2, z2)): Sides,
     scale: f64,
 ) -> Option<Polished> {
-    let (g1, z1, true) = first? else {
-        return None;
-    };
     let within = |g: Vector2<f64>| {
         let d = (g - g0).norm();
         d > DOUBLE_REACH * scale && d <= SINGLE_REACH * scale
-    };
-    if !within(g1) {
-        return None;
-    }
-    let (g2, z2, true) = newton(m, g0 * 2.0 - g1)? else {
-        return None;
     };
     if !within(g2)
         || !((g2 - g0).dot(&(g1 - g0)) < 0.0)
