@@ -78,6 +78,13 @@ impl Dd {
         Dd::fast(p.hi, p.lo + (self.hi * o.lo + self.lo * o.hi))
     }
 
+    /// `self b` for a double `b` (one product of doubles fewer than
+    /// [`mul`](Self::mul) of `Dd::of(b)` would spend on the zero `lo`).
+    pub(crate) fn mul_f64(self, b: f64) -> Dd {
+        let p = Dd::prod(self.hi, b);
+        Dd::fast(p.hi, p.lo + self.lo * b)
+    }
+
     /// `self / d` for a double `d`.
     pub(crate) fn div(self, d: f64) -> Dd {
         let q1 = self.hi / d;

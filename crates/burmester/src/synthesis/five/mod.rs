@@ -20,6 +20,8 @@ use crate::synthesis::order::{Drive, drive};
 use crate::synthesis::task::of_poses;
 use crate::tolerance;
 
+mod refine;
+
 /// A four-bar made of two Burmester dyads, classified for either dyad
 /// driving.
 #[derive(Debug, Clone, PartialEq)]
@@ -365,6 +367,7 @@ impl FivePositions {
                 },
             ));
         };
+        refined(&motion, &mut points);
         points.sort_by(|a, b| {
             (a.center - motion.origin)
                 .norm()
@@ -989,6 +992,11 @@ impl Elimination {
                 }
                 // A pair of complex points: no real point, none lost.
                 Polished::Complex => {}
+                // One simple point: once, its other multiplicity not real.
+                Polished::Simple(dyad) if !known(&points, &dyad) => {
+                    distinct += usize::from(near(&dyad));
+                    points.push(dyad);
+                }
                 _ => lost += mult,
             }
         }
@@ -1155,8 +1163,21 @@ impl Elimination {
                 // was taken next to `Q`, matched a pole there, and a point
                 // was lost).
                 let (lb, lc) = if line_f { (ev, gv) } else { (bv, cv) };
-                if mult >= 2 && negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b)) && lb != 0.0 {
-                    cands.push(Common::At(self.q + w * (-lc / lb)));
+                let (ob, oc) = if line_f { (bv, cv) } else { (ev, gv) };
+                let t = -lc / lb;
+                // The two linear parts' roots agree within rounding, or
+                // within `PROPORTIONAL_REL` of their terms (the finite
+                // point's own direction is within the root's rounding of
+                // the asymptote, `7.5e-9` rad in `b56c8054`'s moved frame,
+                // and along lines this close to the asymptote the curves'
+                // crossings move `1e3` times faster: the roots `16.11306`
+                // task sizes out differed by `4.8e-7` of them, and the
+                // point was listed as a second slider). The candidate is
+                // then polished and checked like any other.
+                let agree = negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b))
+                    || (ob * t + oc).abs() <= PROPORTIONAL_REL * ((ob * t).abs() + oc.abs());
+                if mult >= 2 && agree && lb != 0.0 && t.is_finite() {
+                    cands.push(Common::At(self.q + w * t));
                 }
             } else {
                 let num = av * gv - cv * dv;
@@ -1448,11 +1469,15 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
     let scale = 1.0 + g0.norm();
     let first = newton(m, g0);
     if mult == 2 {
-        if let Some(pair) = split(m, g0, first, scale) {
+        let sides = both_sides(m, g0, first, scale);
+        if let Some(pair) = sides.and_then(|s| split(m, g0, s, scale)) {
             return Ok(pair);
         }
         if complex_pair(m, g0, z0, scale) {
             return Ok(Polished::Complex);
+        }
+        if let Some(one) = sides.and_then(|s| simple(m, s, scale)) {
+            return Ok(one);
         }
     }
     // Judged in the task's own frame (local: origin the poses' centroid,
@@ -1475,6 +1500,97 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
     })
 }
 
+/// The answer's points, each corrected by Newton's method on the four
+/// circle equations in double-double ([`refine`]): kept where it converges
+/// within [`REFINE_REACH`] (times `1 + |G|`, local), within a quarter of
+/// the way to any other listed point (a point listed twice stays so), and
+/// to a smaller residual of the accurate rows.
+fn refined(m: &LocalMotion, points: &mut [Dyad]) {
+    let accurate = refine::Accurate::new(m);
+    let local: Vec<(Vector2<f64>, Vector2<f64>)> = points
+        .iter()
+        .map(|d| (m.local_of(d.center), m.local_of(d.circle)))
+        .collect();
+    for i in 0..points.len() {
+        let (g, z) = local[i];
+        // A point listed twice: as its first listing.
+        if let Some(j) = (0..i).find(|&j| local[j] == local[i]) {
+            points[i] = points[j];
+            continue;
+        }
+        let Some((g1, z1, start)) = accurate.newton(g, z) else {
+            continue;
+        };
+        let moved = (g1 - g).norm();
+        let apart = local
+            .iter()
+            .map(|(h, _)| (h - g).norm())
+            .filter(|&x| x > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        // A move at the rounding of the local coordinates needs no check
+        // of the residual (most points of a moderate task).
+        let tiny = moved <= 1e-12 * (1.0 + g.norm());
+        if moved <= REFINE_REACH * (1.0 + g.norm())
+            && moved <= 0.25 * apart
+            && (tiny || accurate.residual(g1, z1) <= start)
+        {
+            points[i] = Dyad::new(m.global_of(g1), m.global_of(z1));
+        }
+    }
+}
+
+/// How far (times `1 + |G|`, local) [`refined`] may move a point.
+const REFINE_REACH: f64 = 1e-2;
+
+/// A double root that is one simple real point (see [`polish`]): Newton's
+/// method from its estimate converged beyond a double point's reach
+/// ([`DOUBLE_REACH`], within [`SINGLE_REACH`]) and from the estimate
+/// reflected through that point ([`both_sides`]) converged to the same
+/// point to
+/// [`SIMPLE_SAME`] (times `1 + |G|`): at a simple root Newton's method ends
+/// at the rounding of the coordinates from either side, at a double one
+/// only at about its square root, apart. The root's other multiplicity is
+/// then not a real point: a complex pair whose directions from `Q` lie
+/// within the resultant's rounding of the point's (`3ef91cde`: two real
+/// points and a pair `0.3` task sizes off the real plane, every direction
+/// from `Q` within `1e-5` rad of two; each real point was listed twice).
+/// The point is listed once; the count of such a choice stays even only
+/// when another root is read the same way.
+fn simple(m: &LocalMotion, ((g1, z1), (g2, _)): Sides, scale: f64) -> Option<Polished> {
+    ((g2 - g1).norm() <= SIMPLE_SAME * scale && accepted(m, g1, z1, local_residual(m, g1, z1)))
+        .then(|| Polished::Simple(Dyad::new(m.global_of(g1), m.global_of(z1))))
+}
+
+/// Two converged points of Newton's method, each with its circle point
+/// ([`both_sides`]).
+type Sides = ((Vector2<f64>, Vector2<f64>), (Vector2<f64>, Vector2<f64>));
+
+/// Newton's method from a double root's estimate `g0` (`first`, converged
+/// beyond [`DOUBLE_REACH`] and within [`SINGLE_REACH`], times `scale`) and
+/// from `g0` reflected through that point (converged): both points with
+/// their circle points, for [`split`] and [`simple`] to judge.
+fn both_sides(
+    m: &LocalMotion,
+    g0: Vector2<f64>,
+    first: Option<(Vector2<f64>, Vector2<f64>, bool)>,
+    scale: f64,
+) -> Option<Sides> {
+    let (g1, z1, true) = first? else {
+        return None;
+    };
+    let d = (g1 - g0).norm();
+    if !(d > DOUBLE_REACH * scale && d <= SINGLE_REACH * scale) {
+        return None;
+    }
+    let (g2, z2, true) = newton(m, g0 * 2.0 - g1)? else {
+        return None;
+    };
+    Some(((g1, z1), (g2, z2)))
+}
+
+/// See [`simple`]: the rounding of the local coordinates, with room.
+const SIMPLE_SAME: f64 = 1e-12;
+
 /// What [`polish`] makes of a root of the elimination.
 enum Polished {
     /// No Burmester point (not concyclic, or the circle point at infinity).
@@ -1486,6 +1602,9 @@ enum Polished {
     /// A double root that is a pair of complex points resolved apart from
     /// the real plane ([`complex_pair`]): no real point.
     Complex,
+    /// A double root that is one simple real point ([`simple`]), listed
+    /// once: the root's other multiplicity is not a real point.
+    Simple(Dyad),
 }
 
 /// Whether the double root at `g0` (local, circle point `z0`) is a pair of
@@ -1581,27 +1700,18 @@ const SINGLE_REACH: f64 = 1e-3;
 const DOUBLE_REACH: f64 = 1e-6;
 
 /// A double root at `g0` split into two real points (see [`polish`]):
-/// Newton's method from `g0` (`first`) and from `g0` reflected through it
-/// converged, on opposite sides of `g0`, to distinct points each beyond
+/// Newton's method from `g0` and from `g0` reflected through it
+/// ([`both_sides`]) converged, on opposite sides of `g0`, to distinct points each beyond
 /// [`DOUBLE_REACH`] and within [`SINGLE_REACH`], both concyclic.
 fn split(
     m: &LocalMotion,
     g0: Vector2<f64>,
-    first: Option<(Vector2<f64>, Vector2<f64>, bool)>,
+    ((g1, z1), (g2, z2)): Sides,
     scale: f64,
 ) -> Option<Polished> {
-    let (g1, z1, true) = first? else {
-        return None;
-    };
     let within = |g: Vector2<f64>| {
         let d = (g - g0).norm();
         d > DOUBLE_REACH * scale && d <= SINGLE_REACH * scale
-    };
-    if !within(g1) {
-        return None;
-    }
-    let (g2, z2, true) = newton(m, g0 * 2.0 - g1)? else {
-        return None;
     };
     if !within(g2)
         || !((g2 - g0).dot(&(g1 - g0)) < 0.0)
