@@ -5,6 +5,12 @@
 //! * `trace/center_point_curve`: trace the center-point curve of poses
 //!   1-4 over a square view of half-width three task sizes about the
 //!   centroid of the poses (default polyline tolerance);
+//! * `curves/new`: `FourPositions::new` of poses 1-4 (the local frame, the
+//!   center- and circle-point cubics, formed in double-double since stop 38);
+//! * `curves/free_center_arcs`, `curves/free_circle_arcs`: the branch-free
+//!   arcs of both curves in that view for the driven dyad of the example's
+//!   crank-rocker (`C0 = (4, 0)`): the trace, each vertex classified, the
+//!   class changes bisected;
 //! * `points/exact`: the Burmester points of the five poses
 //!   (`FivePositions::new`: the curves, the candidates, Newton, the checks);
 //! * `points/grid_search`: the baseline. Candidate circle points on 12 radii
@@ -29,7 +35,7 @@ use std::hint::black_box;
 use std::path::PathBuf;
 
 use burmester::synthesis::{FivePositions, FourPositions};
-use burmester::{Point2, Pose, Vector2, Viewport};
+use burmester::{Dyad, Point2, Pose, Vector2, Viewport};
 use criterion::{Criterion, criterion_group, criterion_main};
 
 #[path = "../tests/rust/common/mod.rs"]
@@ -272,6 +278,25 @@ fn bench(c: &mut Criterion) {
                 .trace(black_box(&view), None)
                 .unwrap()
         })
+    });
+    g.finish();
+
+    let mut g = c.benchmark_group("burmester_points/curves");
+    g.bench_function("new", |b| {
+        b.iter(|| FourPositions::new(black_box(&poses[..4])).unwrap())
+    });
+    // The example's driven dyad: its rocker's fixed pivot, on the curve.
+    let driven = four
+        .curve_dyad(Point2::new(4.0, 0.0))
+        .expect("the example's C0 is a center point");
+    let arcs = four
+        .filemon(&Dyad::new(driven.center, driven.circle))
+        .expect("the example's driven dyad");
+    g.bench_function("free_center_arcs", |b| {
+        b.iter(|| arcs.free_center_arcs(black_box(&view)).unwrap())
+    });
+    g.bench_function("free_circle_arcs", |b| {
+        b.iter(|| arcs.free_circle_arcs(black_box(&view)).unwrap())
     });
     g.finish();
 

@@ -519,7 +519,11 @@ SECTIONS.append(
         note=(
             "The worked example of the notes (`positions-4-5.md`, section 6). `trace` traces "
             "the center-point curve of poses 1-4 over a square of half-width three task "
-            "sizes about the poses' centroid (default polyline tolerance). `points/exact` "
+            "sizes about the poses' centroid (default polyline tolerance). `curves/new` is "
+            "`FourPositions::new` of poses 1-4 (the cubics in double-double); "
+            "`curves/free_center_arcs` and `free_circle_arcs` the branch-free arcs of both "
+            "curves in that view for the driven dyad of the example's crank-rocker "
+            "(`C0 = (4, 0)`). `points/exact` "
             "is `FivePositions::new` on the five poses (curves, candidates, Newton, "
             "checks). `points/grid_search` is the search other tools use, written in the "
             "bench and measured in the same run: candidate circle points on 12 radii "
