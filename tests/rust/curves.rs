@@ -4327,3 +4327,52 @@ fn issue24_curve_coefficients_keep_their_digits_on_poses_at_one_position() {
     let d = four.center_point_curve().distance_estimate(p);
     assert!(d <= 1e-9, "{d}");
 }
+
+/// Issue 24 (trace38, class A: `fuzz/regressions/curves/traced-vertex-far-
+/// outside-the-view-off-the-curve-110094bf`, poses at one position): the
+/// circle-point trace in the fuzz check's view left a vertex at
+/// `(-2843.7, -3412.3)`, a million view sizes out of a view `0.003` wide,
+/// which `center_point` refused as off the curve (`1.17e-5` against a
+/// tolerance of `6.1e-6`). Each curve's trace in the view has every vertex
+/// in it, and `center_point` takes every traced circle point.
+#[test]
+fn trace38_traced_vertices_stay_in_their_view() {
+    let poses = [
+        Pose::new(
+            -98.04650351119562,
+            0.002342918359609375,
+            -1.2412198464102069,
+        ),
+        Pose::new(-98.04701331549798, 0.002342918359609375, 3.136592610257762),
+        Pose::new(-98.0470107762724, 0.002342918359609375, 3.2565926535897933),
+        Pose::new(-98.047013317374, 0.002342918359609375, 3.145498903589793),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let view = Viewport::new(
+        -98.04832293919648,
+        -98.0454481188109,
+        0.0009055082560539885,
+        0.003780328641636832,
+    )
+    .unwrap();
+    let mut count = 0;
+    for curve in [four.center_point_curve(), four.circle_point_curve()] {
+        for p in curve.polylines(&view).into_iter().flatten() {
+            assert!(view.contains(p), "{p} outside the view");
+            count += 1;
+        }
+    }
+    assert!(count > 0);
+    for p in four
+        .circle_point_curve()
+        .polylines(&view)
+        .into_iter()
+        .flatten()
+    {
+        let r = four.center_point(p);
+        assert!(
+            !matches!(r, Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))),
+            "traced circle point {p} refused: {r:?}"
+        );
+    }
+}

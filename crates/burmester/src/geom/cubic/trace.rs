@@ -235,6 +235,10 @@ struct View<'c> {
     hi: Vector2<f64>,
     radius: f64,
     tol: f64,
+    /// How far a point may lie beyond the viewport and count as in it: the
+    /// chord tolerance, or 16 ulps of the viewport's coordinates if more
+    /// (a view far from the curve's frame).
+    margin: f64,
     max_chord: f64,
     /// Vertices left to place (a bound on the work, whatever the input).
     budget: core::cell::Cell<usize>,
@@ -249,10 +253,10 @@ impl View<'_> {
     }
 
     /// The sides of the viewport that `p` lies beyond by more than the
-    /// chord tolerance, one bit each (left, right, below, above); `0` for
+    /// margin, one bit each (left, right, below, above); `0` for
     /// a point in view or within the tolerance of it.
     fn beyond(&self, p: Vector2<f64>) -> u8 {
-        let m = self.tol;
+        let m = self.margin;
         u8::from(p.x < self.lo.x - m)
             | u8::from(p.x > self.hi.x + m) << 1
             | u8::from(p.y < self.lo.y - m) << 2
@@ -565,12 +569,15 @@ fn trace_impl(
     if !(radius > 0.0 && radius.is_finite()) {
         return empty;
     }
+    // Never below a ten-billionth of the diagonal (rounding).
+    let tol = (tol / cubic.scale).max(2e-10 * radius);
+    let far = lo.amax().max(hi.amax());
     let view = View {
         lo,
         hi,
         radius,
-        // Never below a ten-billionth of the diagonal (rounding).
-        tol: (tol / cubic.scale).max(2e-10 * radius),
+        tol,
+        margin: tol.max(16.0 * f64::EPSILON * far),
         max_chord: 0.1 * radius,
         budget: core::cell::Cell::new(MAX_VERTICES),
         cancel,
@@ -1113,7 +1120,7 @@ fn sample(
     }
     // The piece sampled lies between two edge crossings with its middle in
     // view, so in view: a vertex beyond the viewport (by more than the
-    // tolerance) is not the piece's (a sheet's root taken far out, where
+    // margin) is not the piece's (a sheet's root taken far out, where
     // the pencil's quadratic is ill-conditioned, or a crossing missed) and
     // is left out, the polyline split there (issue 24, class A: such a
     // vertex millions of view sizes out, not on the curve to its rounding).
