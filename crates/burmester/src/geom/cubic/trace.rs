@@ -327,13 +327,26 @@ fn settle_polyline(
         // longer on the edge for the settling): an end that close is put
         // on the edge.
         let p = if inner { p } else { onto_edge(p, viewport) };
-        let across = inner.then(|| {
+        // An end off the viewport's edges (where a vertex beyond the view
+        // was left out, `sample`) is settled as an inner vertex is, across
+        // its one chord.
+        let edge = p.x == viewport.xmin
+            || p.x == viewport.xmax
+            || p.y == viewport.ymin
+            || p.y == viewport.ymax;
+        let free_end = !inner && !edge && n >= 2;
+        let across = if inner {
             let chord = line[(i + 1) % n].0 - line[(i + n - 1) % n].0;
-            Vector2::new(-chord.y, chord.x)
-        });
+            Some(Vector2::new(-chord.y, chord.x))
+        } else if free_end {
+            let chord = line[if i == 0 { 1 } else { n - 2 }].0 - p;
+            Some(Vector2::new(-chord.y, chord.x))
+        } else {
+            None
+        };
         match settle(cubic, p, viewport, reach, across) {
             Some(q) => out.push((q, None)),
-            None if !inner => out.push((p, None)),
+            None if !inner && !free_end => out.push((p, None)),
             None => {}
         }
     }
