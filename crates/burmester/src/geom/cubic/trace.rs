@@ -1316,13 +1316,14 @@ mod tests {
             Point2::new(-0.0019969776214826184, -0.04285546875),
             0.0475220808370063,
         );
-        let view = Viewport::new(
+        // `xmin, xmax, ymin, ymax`.
+        let v = [
             -0.029242633635673303,
             0.0658015280383393,
             -0.0365912110441461,
             0.058452950629866496,
-        )
-        .unwrap();
+        ];
+        let view = Viewport::new(v[0], v[1], v[2], v[3]).unwrap();
         let t = cubic.trace(&view, None).unwrap();
         let lines = t.polylines();
         let n: usize = lines.iter().map(Vec::len).sum();
