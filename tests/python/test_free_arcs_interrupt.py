@@ -10,12 +10,23 @@ import pytest
 
 from conftest import interrupt_child
 
-pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+pytestmark = [
+    pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals"),
+    # trace38: the input was slow only through a tracer defect (an oval
+    # 1e15 across, wholly outside the view, refined far out until the
+    # budget was spent), fixed: its trace is 65 vertices, a call a
+    # millisecond, so SIGINT lands between calls. No slow input for the
+    # free arcs is known (they take no tolerance; at the default one an
+    # honest trace is a few hundred vertices). The trace's cancel flag is
+    # tested in Rust on a long trace at the finest tolerance
+    # (``geom::cubic::trace::tests::a_long_trace_stops_when_cancelled``).
+    pytest.mark.skip(reason="no slow free-arcs input since trace38 fixed the tracer"),
+]
 
-#: ``fuzz/open/curves/slow-center-trace-a-million-points-outside-the-view-30957a36`` (curv38):
-#: poses, driven center and view. (The input before, ``454464bc``, was slow
-#: only through the rounding of its cubic's coefficients, which are accurate
-#: since curv38.)
+#: ``fuzz/regressions/curves/trace-spent-its-budget-far-outside-the-view-30957a36``
+#: (curv38; trace38): poses, driven center and view. (The input before,
+#: ``454464bc``, was slow only through the rounding of its cubic's
+#: coefficients, which are accurate since curv38.)
 SLOW_POSES = [
     (-0.0050156325192544544, -0.04285546875, 2.145498903589793),
     (-0.024261718749999998, -0.04285546875, 3.141592653589793),

@@ -4100,14 +4100,18 @@ fn issue24_a_complex_pair_near_merging_is_resolved_in_every_frame() {
     );
 }
 
-/// The task, driven center and view of `fuzz/open/curves/slow-center-trace-
-/// at-its-budget-30957a36` (issue 24 item 10; curv38): poses at one height
-/// (collinear positions) whose center-point trace in that view places the
-/// most vertices a trace may (its budget, about a million: 9 s in a debug
-/// build), so that the free arcs take seconds. (The input before,
-/// `454464bc`, took as long only because of the rounding of its cubic's
-/// coefficients: 65 traced vertices since they are accurate.)
-fn issue24_slow_free_arcs() -> (FourPositions, FilemonArcs, Viewport) {
+/// The task, driven center and view of `fuzz/regressions/curves/trace-spent-
+/// its-budget-far-outside-the-view-30957a36` (issue 24 item 10; curv38):
+/// poses at one height (collinear positions). Its center-point trace in
+/// that view placed the most vertices a trace may (its budget, about a
+/// million: 9 s in a debug build), so that the free arcs took seconds; that
+/// was a tracer defect (trace38: an oval `1e15` across, wholly outside the
+/// view, refined far out), and the trace is 65 vertices since. No slow
+/// input for the free arcs is known (they take no tolerance: at the default
+/// one an honest trace is a few hundred vertices); the trace's own cancel
+/// flag is tested on a long trace at the finest tolerance
+/// (`geom::cubic::trace::tests::a_long_trace_stops_when_cancelled`).
+fn issue24_degenerate_free_arcs() -> (FourPositions, FilemonArcs, Viewport) {
     let poses = [
         Pose::new(-0.0050156325192544544, -0.04285546875, 2.145498903589793),
         Pose::new(-0.024261718749999998, -0.04285546875, PI),
@@ -4129,44 +4133,6 @@ fn issue24_slow_free_arcs() -> (FourPositions, FilemonArcs, Viewport) {
     (four, fa, view)
 }
 
-/// Issue 24 (curv37): the trace inside the free arcs reads the cancel flag.
-/// On the slow input the center-plane trace places the most vertices a
-/// trace may (its budget, about a million: seconds in a debug build),
-/// which it did before reading the flag again. A flag set 30 ms into the
-/// call stops it inside the trace (`Cancelled`, `0` of `0`: no vertex
-/// classified yet; before curv37, the first check after the trace reported
-/// the classified vertices) within a fraction of a second. (Removed with
-/// the accurate coefficients, which made its input fast; back in curv38
-/// with a slow one.)
-#[test]
-fn issue24_a_cancelled_trace_stops_inside_the_trace() {
-    use std::sync::atomic::{AtomicBool, Ordering};
-    use std::time::{Duration, Instant};
-
-    use burmester::Control;
-
-    let (_, fa, view) = issue24_slow_free_arcs();
-    let stop = AtomicBool::new(false);
-    let control = Control::new().with_cancel(&stop);
-    let (r, set, back) = std::thread::scope(|s| {
-        let setter = s.spawn(|| {
-            std::thread::sleep(Duration::from_millis(30));
-            stop.store(true, Ordering::Relaxed);
-            Instant::now()
-        });
-        let r = fa.free_arcs_with(&view, false, &control);
-        let back = Instant::now();
-        (r, setter.join().unwrap(), back)
-    });
-    let latency = back.saturating_duration_since(set);
-    eprintln!("returned {latency:?} after the flag was set");
-    assert!(
-        matches!(r, Err(Error::Cancelled { done: 0, total: 0 })),
-        "{r:?}"
-    );
-    assert!(latency < Duration::from_millis(500), "{latency:?}");
-}
-
 /// Issue 24 item 10: the free arcs follow a control. Without cancelling,
 /// progress up to `(total, total)`; a
 /// control that cancels at its `n`-th progress report stops there with
@@ -4179,7 +4145,7 @@ fn issue24_free_arcs_stop_when_cancelled() {
 
     use burmester::Control;
 
-    let (_, fa, view) = issue24_slow_free_arcs();
+    let (_, fa, view) = issue24_degenerate_free_arcs();
     let stop = AtomicBool::new(false);
     let last = Mutex::new((0, 0));
     let hook = |d: usize, t: usize| *last.lock().unwrap() = (d, t);
@@ -4188,12 +4154,10 @@ fn issue24_free_arcs_stop_when_cancelled() {
     fa.free_arcs_with(&view, false, &control).unwrap();
     let (done, total) = *last.lock().unwrap();
     assert_eq!(done, total);
-    assert!(
-        total > 100_000,
-        "{total} traced vertices: not the slow input"
-    );
-    // (Two traces of a million vertices: seconds in a debug build.)
-    let n = 3;
+    assert!(total > 0, "{total} traced vertices");
+    // (A cancel at the first progress report of the vertices' classes:
+    // the trace is 65 vertices, one report every 1024.)
+    let n = 1;
     let (stop, polls) = (AtomicBool::new(false), AtomicUsize::new(0));
     let hook = |_: usize, _: usize| {
         if polls.fetch_add(1, Ordering::Relaxed) + 1 >= n {
@@ -4362,4 +4326,53 @@ fn issue24_curve_coefficients_keep_their_digits_on_poses_at_one_position() {
     let p = Point2::new(40497.97540367286, 8816.811801789368);
     let d = four.center_point_curve().distance_estimate(p);
     assert!(d <= 1e-9, "{d}");
+}
+
+/// Issue 24 (trace38, class A: `fuzz/regressions/curves/traced-vertex-far-
+/// outside-the-view-off-the-curve-110094bf`, poses at one position): the
+/// circle-point trace in the fuzz check's view left a vertex at
+/// `(-2843.7, -3412.3)`, a million view sizes out of a view `0.003` wide,
+/// which `center_point` refused as off the curve (`1.17e-5` against a
+/// tolerance of `6.1e-6`). Each curve's trace in the view has every vertex
+/// in it, and `center_point` takes every traced circle point.
+#[test]
+fn trace38_traced_vertices_stay_in_their_view() {
+    let poses = [
+        Pose::new(
+            -98.04650351119562,
+            0.002342918359609375,
+            -1.2412198464102069,
+        ),
+        Pose::new(-98.04701331549798, 0.002342918359609375, 3.136592610257762),
+        Pose::new(-98.0470107762724, 0.002342918359609375, 3.2565926535897933),
+        Pose::new(-98.047013317374, 0.002342918359609375, 3.145498903589793),
+    ];
+    let four = FourPositions::new(&poses).unwrap();
+    let view = Viewport::new(
+        -98.04832293919648,
+        -98.0454481188109,
+        0.0009055082560539885,
+        0.003780328641636832,
+    )
+    .unwrap();
+    let mut count = 0;
+    for curve in [four.center_point_curve(), four.circle_point_curve()] {
+        for p in curve.polylines(&view).into_iter().flatten() {
+            assert!(view.contains(p), "{p} outside the view");
+            count += 1;
+        }
+    }
+    assert!(count > 0);
+    for p in four
+        .circle_point_curve()
+        .polylines(&view)
+        .into_iter()
+        .flatten()
+    {
+        let r = four.center_point(p);
+        assert!(
+            !matches!(r, Err(Error::InvalidInput(InvalidInput::OffCurve { .. }))),
+            "traced circle point {p} refused: {r:?}"
+        );
+    }
 }
