@@ -420,7 +420,7 @@ fn issue24_a_simple_point_on_a_double_root_is_listed_once() {
 fn issue24_a_ghost_double_point_whose_newton_iteration_leaves_is_not_listed() {
     let poses = [
         (1e-15, 0.0, -4.5e-13),
-        (1e-15, -0.001, -6.283185307179586),
+        (1e-15, -0.001, -2.0 * PI),
         (-1.7172e-14, 3e-24, 2.5444e-5),
         (1e-15, -0.001, 25.399),
         (-1.7172e-14, 1.7172e-14, -1e-6),
