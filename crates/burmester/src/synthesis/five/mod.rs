@@ -1451,6 +1451,11 @@ const ASYMPTOTE_MATCH: f64 = 1e-6;
 /// gives the two points (`Polished::Pair`). Otherwise the double point is
 /// listed twice as before.
 ///
+/// An estimate within [`tolerance::BURMESTER_NEAR`] task sizes from which
+/// Newton's method converges beyond [`SINGLE_REACH`] (and the
+/// double-double Newton of [`refine`] beyond [`REFINE_REACH`]) is no point
+/// (`Polished::None`): no root of the four equations lies near it.
+///
 /// # Errors
 ///
 /// [`crate::DegenerateError::InfinitelyManyBurmesterPoints`] when the four
@@ -1488,11 +1493,12 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
     // [`tolerance::BURMESTER_NEAR`] task sizes converged (its steps at the
     // rounding of the coordinates) to a point beyond a simple root's reach:
     // no root of the four equations lies near the estimate, which is not a
-    // Burmester point however small its crank-length spread (a circle
-    // point `1e4` to `1e8` task sizes out makes that spread small relative
-    // to the crank anywhere near the curves' crossing: a badly conditioned
-    // choice read a complex pair, or a real point's double root, as a real
-    // double point `0.01` to `1` of `size + d` off every exact point).
+    // Burmester point however small its crank-length spread (relative to
+    // the crank: `427fbb95`'s ghost had its circle point `4e5` task sizes
+    // out). A badly conditioned choice read a complex pair, or a real
+    // point's double root, as a real double point `0.01` to `1` of `size +
+    // d` off every exact point, and it was the answer where the better
+    // choices had lost a root.
     // The rows' entries may have lost most of their digits (poses at
     // nearly one position or angle), and Newton's method on them may leave
     // a genuine point: the estimate is rejected only where the
