@@ -1451,6 +1451,11 @@ const ASYMPTOTE_MATCH: f64 = 1e-6;
 /// gives the two points (`Polished::Pair`). Otherwise the double point is
 /// listed twice as before.
 ///
+/// An estimate within [`tolerance::BURMESTER_NEAR`] task sizes from which
+/// Newton's method converges beyond [`SINGLE_REACH`] (and the
+/// double-double Newton of [`refine`] beyond [`REFINE_REACH`]) is no point
+/// (`Polished::None`): no root of the four equations lies near it.
+///
 /// # Errors
 ///
 /// [`crate::DegenerateError::InfinitelyManyBurmesterPoints`] when the four
@@ -1484,6 +1489,37 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
     // unit their span), so that the check and its rounding allowance do not
     // depend on where the task is given: moved far out, the global
     // coordinates' rounding would pass a point between two close roots.
+    // Newton's method from the estimate of a point within
+    // [`tolerance::BURMESTER_NEAR`] task sizes converged (its steps at the
+    // rounding of the coordinates) to a point beyond a simple root's reach:
+    // no root of the four equations lies near the estimate, which is not a
+    // Burmester point however small its crank-length spread (relative to
+    // the crank: `427fbb95`'s ghost had its circle point `4e5` task sizes
+    // out). A badly conditioned choice read a complex pair, or a real
+    // point's double root, as a real double point `0.01` to `1` of `size +
+    // d` off every exact point, and it was the answer where the better
+    // choices had lost a root.
+    // The rows' entries may have lost most of their digits (poses at
+    // nearly one position or angle), and Newton's method on them may leave
+    // a genuine point: the estimate is rejected only where the
+    // double-double Newton of [`refine`] does not converge within
+    // [`REFINE_REACH`] of it either (`18bd80a0`: points 850 task sizes out
+    // whose float iterations ended at another point, which [`refined`]
+    // puts within `1e-9` of the exact ones). Farther out than
+    // `BURMESTER_NEAR` a point is known only to its distance squared times
+    // the rounding, and is left as it was.
+    let near = (m.global_of(g0) - m.origin).norm() <= tolerance::BURMESTER_NEAR * m.scale;
+    let far_off = |g: Vector2<f64>| {
+        (g - g0).norm() > SINGLE_REACH * scale
+            && refine::Accurate::new(m)
+                .newton(g0, z0)
+                .is_none_or(|(g1, _, _)| (g1 - g0).norm() > REFINE_REACH * scale)
+    };
+    if let (Some((g, _, true)), true) = (first, near) {
+        if far_off(g) {
+            return Ok(Polished::None);
+        }
+    }
     let mut best = (local_residual(m, g0, z0), g0, z0);
     if let Some((g, z, _)) = first {
         let reach = if mult > 1 { DOUBLE_REACH } else { SINGLE_REACH } * scale;
