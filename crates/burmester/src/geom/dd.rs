@@ -1,6 +1,8 @@
 //! Double-double numbers: about 106 bits from error-free transformations
 //! of `f64`s, for the few sums that cancel most of their terms' digits (the
-//! four-pose curves' coefficients).
+//! four-pose curves' coefficients, the five-pose points' last correction).
+
+use core::ops::{Add, Mul};
 
 /// A double-double number `hi + lo` (`|lo|` at most half an ulp of `hi`):
 /// about 106 bits, from error-free transformations (Dekker's product, no
@@ -91,4 +93,46 @@ impl Dd {
         let r = self.sub(Dd::prod(q1, d));
         Dd::fast(q1, r.hi / d)
     }
+}
+
+// The operators, for code written once for `f64` and `Dd` (the polynomial
+// products of `synthesis::local`): the same operations as the methods.
+impl Add for Dd {
+    type Output = Dd;
+    fn add(self, o: Dd) -> Dd {
+        Dd::add(self, o)
+    }
+}
+
+impl Mul for Dd {
+    type Output = Dd;
+    fn mul(self, o: Dd) -> Dd {
+        Dd::mul(self, o)
+    }
+}
+
+/// A complex (or plane) double-double `(re, im)`.
+pub(crate) type Cdd = (Dd, Dd);
+
+/// `a b` of complex double-doubles.
+pub(crate) fn cmul(a: Cdd, b: Cdd) -> Cdd {
+    (
+        a.0.mul(b.0).sub(a.1.mul(b.1)),
+        a.0.mul(b.1).add(a.1.mul(b.0)),
+    )
+}
+
+/// `a - b` of complex double-doubles.
+pub(crate) fn csub(a: Cdd, b: Cdd) -> Cdd {
+    (a.0.sub(b.0), a.1.sub(b.1))
+}
+
+/// The conjugate of `a`.
+pub(crate) fn conj(a: Cdd) -> Cdd {
+    (a.0, a.1.neg())
+}
+
+/// `|a|^2`.
+pub(crate) fn norm2(a: Cdd) -> Dd {
+    a.0.mul(a.0).add(a.1.mul(a.1))
 }

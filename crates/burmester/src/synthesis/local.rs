@@ -28,7 +28,9 @@
 // branch.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::geom::dd::Dd;
+use crate::geom::dd::{Cdd, Dd, cmul, conj, csub, norm2};
+use core::ops::{Add, Mul};
+
 use nalgebra::{Point2, Vector2};
 
 use super::errors;
@@ -307,47 +309,6 @@ fn solve_rows(rows: &[(Vector2<f64>, f64)]) -> Result<Vector2<f64>, Failure> {
     }
 }
 
-/// A complex double-double `(re, im)`.
-type Cdd = (Dd, Dd);
-
-fn cmul(a: Cdd, b: Cdd) -> Cdd {
-    (
-        a.0.mul(b.0).sub(a.1.mul(b.1)),
-        a.0.mul(b.1).add(a.1.mul(b.0)),
-    )
-}
-
-fn conj(a: Cdd) -> Cdd {
-    (a.0, a.1.neg())
-}
-
-/// An affine polynomial of the plane in double-doubles.
-type AffineDd = [Dd; 3];
-
-fn mul2_dd(p: &AffineDd, q: &AffineDd) -> [Dd; 6] {
-    [
-        p[0].mul(q[0]),
-        p[0].mul(q[1]).add(p[1].mul(q[0])),
-        p[0].mul(q[2]).add(p[2].mul(q[0])),
-        p[1].mul(q[1]),
-        p[1].mul(q[2]).add(p[2].mul(q[1])),
-        p[2].mul(q[2]),
-    ]
-}
-
-#[rustfmt::skip]
-fn mul3_dd(q: &[Dd; 6], a: &AffineDd) -> [Dd; 10] {
-    [
-        q[0].mul(a[0]),
-        q[0].mul(a[1]).add(q[1].mul(a[0])), q[0].mul(a[2]).add(q[2].mul(a[0])),
-        q[1].mul(a[1]).add(q[3].mul(a[0])),
-        q[1].mul(a[2]).add(q[2].mul(a[1])).add(q[4].mul(a[0])),
-        q[2].mul(a[2]).add(q[5].mul(a[0])),
-        q[3].mul(a[1]), q[3].mul(a[2]).add(q[4].mul(a[1])),
-        q[4].mul(a[2]).add(q[5].mul(a[1])), q[5].mul(a[2]),
-    ]
-}
-
 /// `e^{i phi}` as a double-double, its real part `1 - 2 sin^2(phi / 2)`
 /// (so that `e^{i phi} - 1` keeps its digits for a small `phi`).
 fn unit_dd(phi: f64) -> Cdd {
@@ -356,6 +317,16 @@ fn unit_dd(phi: f64) -> Cdd {
 }
 
 impl LocalMotion {
+    /// The local position of pose `k`, `(p_k - origin) / scale`, in
+    /// double-double (the difference exact, the quotient to about 106 bits).
+    pub(crate) fn position_dd(&self, k: usize) -> Cdd {
+        let p = self.poses[k].position;
+        (
+            Dd::sum(p.x, -self.origin.x).div(self.scale),
+            Dd::sum(p.y, -self.origin.y).div(self.scale),
+        )
+    }
+
     /// The center-point cubic (`inverse == false`) or the circle-point
     /// cubic of the first four poses: the expansion of
     /// [`LinearForm::cubic`] (rows 2, 3, 4), accurate to what the poses
@@ -372,13 +343,7 @@ impl LocalMotion {
     pub(crate) fn curve_cubic(&self, inverse: bool) -> [f64; 10] {
         const N: usize = 4;
         debug_assert!(self.poses.len() >= N);
-        let pos: [Cdd; N] = core::array::from_fn(|k| {
-            let p = self.poses[k].position;
-            (
-                Dd::sum(p.x, -self.origin.x).div(self.scale),
-                Dd::sum(p.y, -self.origin.y).div(self.scale),
-            )
-        });
+        let pos: [Cdd; N] = core::array::from_fn(|k| self.position_dd(k));
         // The rotations from pose 1, along the chain of nearest angles.
         let angle = |k: usize| self.poses[k].angle;
         let mut rot: [Option<Cdd>; N] = [None; N];
@@ -400,8 +365,7 @@ impl LocalMotion {
         // `t_k = q_k - R_k q_1`; the inverted motion's rotation is
         // `conj(R_k)` and its translation `-conj(R_k) t_k`.
         let disp: [(Cdd, Cdd); N] = core::array::from_fn(|k| {
-            let rq = cmul(rot[k], pos[0]);
-            let t = (pos[k].0.sub(rq.0), pos[k].1.sub(rq.1));
+            let t = csub(pos[k], cmul(rot[k], pos[0]));
             if inverse {
                 let ct = cmul(conj(rot[k]), t);
                 (conj(rot[k]), (ct.0.neg(), ct.1.neg()))
@@ -410,17 +374,17 @@ impl LocalMotion {
             }
         });
         // Row k as affine polynomials in `g` (as `LinearForm::row_poly`).
-        let row = |k: usize| -> [AffineDd; 3] {
+        let row = |k: usize| -> [[Dd; 3]; 3] {
             let (r, t) = disp[k];
             let ck = cmul(conj(r), t);
             let (mr, mi) = (Dd::of(1.0).sub(r.0), r.1);
-            let half = t.0.mul(t.0).add(t.1.mul(t.1)).mul(Dd::of(-0.5));
+            let half = norm2(t).mul(Dd::of(-0.5));
             [[ck.0, mr, mi.neg()], [ck.1, mi, mr], [half, t.0, t.1]]
         };
         let r = [row(1), row(2), row(3)];
         let mut out = [Dd::ZERO; 10];
         for (p, sign) in PERMS.iter().zip([1.0, 1.0, 1.0, -1.0, -1.0, -1.0]) {
-            let term = mul3_dd(&mul2_dd(&r[0][p[0]], &r[1][p[1]]), &r[2][p[2]]);
+            let term = mul3(&mul2(&r[0][p[0]], &r[1][p[1]]), &r[2][p[2]]);
             for i in 0..10 {
                 out[i] = out[i].add(Dd {
                     hi: sign * term[i].hi,
@@ -432,8 +396,9 @@ impl LocalMotion {
     }
 }
 
-/// `p q` for affine `p`, `q`: a quadratic `[1, x, y, x^2, xy, y^2]`.
-fn mul2(p: &Affine, q: &Affine) -> [f64; 6] {
+/// `p q` for affine `p`, `q`: a quadratic `[1, x, y, x^2, xy, y^2]` (in
+/// doubles, or double-doubles for [`LocalMotion::curve_cubic`]).
+fn mul2<T: Copy + Add<Output = T> + Mul<Output = T>>(p: &[T; 3], q: &[T; 3]) -> [T; 6] {
     [
         p[0] * q[0],
         p[0] * q[1] + p[1] * q[0],
@@ -447,7 +412,7 @@ fn mul2(p: &Affine, q: &Affine) -> [f64; 6] {
 /// `q a` for a quadratic `q` and an affine `a`: a cubic, ascending (the
 /// terms of each degree on one line).
 #[rustfmt::skip]
-fn mul3(q: &[f64; 6], a: &Affine) -> [f64; 10] {
+fn mul3<T: Copy + Add<Output = T> + Mul<Output = T>>(q: &[T; 6], a: &[T; 3]) -> [T; 10] {
     [
         q[0] * a[0],
         q[0] * a[1] + q[1] * a[0], q[0] * a[2] + q[2] * a[0],

@@ -330,11 +330,8 @@ fn settle_polyline(
         // An end off the viewport's edges (where a vertex beyond the view
         // was left out, `sample`) is settled as an inner vertex is, across
         // its one chord.
-        let edge = p.x == viewport.xmin
-            || p.x == viewport.xmax
-            || p.y == viewport.ymin
-            || p.y == viewport.ymax;
-        let free_end = !inner && !edge && n >= 2;
+        let (on_x_edge, on_y_edge) = on_edges(p, viewport);
+        let free_end = !inner && !on_x_edge && !on_y_edge && n >= 2;
         let across = if inner {
             let chord = line[(i + 1) % n].0 - line[(i + n - 1) % n].0;
             Some(Vector2::new(-chord.y, chord.x))
@@ -354,6 +351,15 @@ fn settle_polyline(
         out.push(out[0]);
     }
     out
+}
+
+/// Whether `p` lies exactly on a horizontal edge of the viewport (`y` an
+/// edge's) and on a vertical one (`x` an edge's).
+fn on_edges(p: Point2<f64>, viewport: &Viewport) -> (bool, bool) {
+    (
+        p.y == viewport.ymin || p.y == viewport.ymax,
+        p.x == viewport.xmin || p.x == viewport.xmax,
+    )
 }
 
 /// `p` with a coordinate within 16 ulps (of the view's extent and place)
@@ -410,8 +416,7 @@ fn settle(
     if cubic.is_zero_local(v) {
         return Some(p);
     }
-    let on_x_edge = p.y == viewport.ymin || p.y == viewport.ymax;
-    let on_y_edge = p.x == viewport.xmin || p.x == viewport.xmax;
+    let (on_x_edge, on_y_edge) = on_edges(p, viewport);
     if on_x_edge || on_y_edge {
         if on_x_edge && on_y_edge {
             return Some(p);

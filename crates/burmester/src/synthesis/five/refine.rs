@@ -19,26 +19,8 @@
 
 use nalgebra::{Matrix5, Vector2, Vector3, Vector4, Vector5};
 
-use crate::geom::dd::Dd;
+use crate::geom::dd::{Cdd, Dd, cmul, conj, csub, norm2};
 use crate::synthesis::local::LocalMotion;
-
-/// A complex (or plane) double-double `(re, im)`.
-type C = (Dd, Dd);
-
-fn sub(a: C, b: C) -> C {
-    (a.0.sub(b.0), a.1.sub(b.1))
-}
-
-fn times(a: C, b: C) -> C {
-    (
-        a.0.mul(b.0).sub(a.1.mul(b.1)),
-        a.0.mul(b.1).add(a.1.mul(b.0)),
-    )
-}
-
-fn norm2(a: C) -> Dd {
-    a.0.mul(a.0).add(a.1.mul(a.1))
-}
 
 /// The rows of the four circle equations of a motion, in double-double
 /// from its poses: in the local frame each position `q_k = (p_k - origin)
@@ -52,27 +34,20 @@ fn norm2(a: C) -> Dd {
 pub(super) struct Accurate {
     /// Per row `k = 2..5`: `conj(R_k) t_k`, `1 - conj(R_k)` as `(1 - cos,
     /// sin)`, `t_k` and `|t_k|^2 / 2`.
-    rows: [(C, C, C, Dd); 4],
+    rows: [(Cdd, Cdd, Cdd, Dd); 4],
 }
 
 impl Accurate {
     pub(super) fn new(m: &LocalMotion) -> Self {
-        let q = |k: usize| {
-            let p = m.poses[k].position;
-            (
-                Dd::sum(p.x, -m.origin.x).div(m.scale),
-                Dd::sum(p.y, -m.origin.y).div(m.scale),
-            )
-        };
-        let q1 = q(0);
+        let q1 = m.position_dd(0);
         let rows = core::array::from_fn(|r| {
             let k = r + 1;
             let t = m.theta[k];
             let h = (0.5 * t).sin();
             let one_less = Dd::prod(h, h).add(Dd::prod(h, h));
             let rot = (Dd::of(1.0).sub(one_less), Dd::of(t.sin()));
-            let tk = sub(q(k), times(rot, q1));
-            let ct = times((rot.0, rot.1.neg()), tk);
+            let tk = csub(m.position_dd(k), cmul(rot, q1));
+            let ct = cmul(conj(rot), tk);
             let half = norm2(tk).mul(Dd::of(0.5));
             (ct, (one_less, rot.1), tk, half)
         });
