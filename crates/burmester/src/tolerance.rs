@@ -123,6 +123,18 @@ pub const BURMESTER_EPS: f64 = 16.0;
 /// Burmester points of five poses with them are not isolated.
 pub const BURMESTER_COMMON_POLE: f64 = 1e-9;
 
+/// The Burmester points of five poses computed with each pose in turn as
+/// the reference pose must agree within this many times `size + d` (`d`
+/// the point's distance from the poses' centroid), or the task is refused
+/// as not resolved within rounding
+/// ([`crate::synthesis::FivePositions::new`]). On ordinary tasks they
+/// agree to `1e-12` or better; where the rounding decides the answer (a
+/// task within rounding of a degenerate one) they differ by `1e-2` to `1`
+/// (stop 39: fuzz inputs of `burmester_points`). Points whose rounding
+/// moves them by more than this (ill-conditioned, near a double point) are
+/// refused too.
+pub const BURMESTER_AGREEMENT: f64 = 1e-4;
+
 /// Factor of `f64::EPSILON` of the loop closure's rounding, in the crate's
 /// one toggle criterion [`heron_tolerance`] (derived there). The measured
 /// rounding of Heron's product stays below `0.6 eps` times the bound's
