@@ -858,7 +858,10 @@ class Task:
         (``"infinitely_many_burmester_points"``, for example Cardan motion);
         or when all poses have one angle; and where no choice of the shared
         poses gives a clean elimination (an even count of at most four:
-        ``"unresolved_burmester_points"``, nearly coincident poses or angles)."""
+        ``"unresolved_burmester_points"``, nearly coincident poses or angles),
+        or where the points computed with each pose in turn as the reference
+        pose disagree (the same cause: the rounding decides them; the answer
+        is checked so on every call, and no ordinary task is refused)."""
     def burmester_curves(self) -> Tuple[Cubic, Cubic]:
         """Five poses only: the center-point curves of poses 1, 2, 3, 4 and
         1, 2, 3, 5; the Burmester centers are their common points other than
