@@ -647,11 +647,17 @@ fn resolve_changes(
     poll: &mut Poll<'_, '_>,
 ) -> Result<Vec<Vec<Vertex>>> {
     // A mark's own class where it is decided (not the driven dyad's point,
-    // never free, nor a change found here, on the free side of one).
+    // never free, nor a change found here, on the free side of one), each
+    // mark's found once (it ends two chords).
+    let known = core::cell::RefCell::new(Vec::<(usize, Option<bool>)>::new());
     let of_mark = |w: &Vertex| {
-        w.mark
-            .filter(|&k| k != never && k != CHANGE)
-            .and_then(|_| mark_class(w.at))
+        let k = w.mark.filter(|&k| k != never && k != CHANGE)?;
+        if let Some(&(_, c)) = known.borrow().iter().find(|(j, _)| *j == k) {
+            return c;
+        }
+        let c = mark_class(w.at);
+        known.borrow_mut().push((k, c));
+        c
     };
     let change = |at| Vertex {
         at,
