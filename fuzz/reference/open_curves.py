@@ -174,14 +174,20 @@ def project(terms, point):
     f, gx, gy = _eval(terms, px, py)
     g = mpmath.sqrt(gx * gx + gy * gy)
     ux, uy = gx / g, gy / g
-    t = -f / g
-    for _ in range(200):
-        fv, hx, hy = _eval(terms, px + ux * t, py + uy * t)
-        step = fv / (hx * ux + hy * uy)
-        t -= step
-        if abs(step) <= mpmath.mpf(10) ** -55 * (1 + abs(t)):
-            break
+    t = _root_on_line(terms, px, py, ux, uy, -f / g, 55)
     return px + ux * t, py + uy * t
+
+
+def _root_on_line(terms, px, py, dx, dy, t, digits):
+    """Newton's method for the exact curve along the line ``p + t d`` from
+    ``t``, to ``digits`` digits."""
+    for _ in range(200):
+        fv, hx, hy = _eval(terms, px + dx * t, py + dy * t)
+        step = fv / (hx * dx + hy * dy)
+        t -= step
+        if abs(step) <= mpmath.mpf(10) ** -digits * (1 + abs(t)):
+            break
+    return t
 
 
 def exact_circle_point(poses, gx, gy):
@@ -309,13 +315,7 @@ def edge_crossing(terms, point, horizontal):
     by Newton along the edge."""
     px, py = mpmath.mpf(point[0]), mpmath.mpf(point[1])
     dx, dy = (1, 0) if horizontal else (0, 1)
-    t = mpmath.mpf(0)
-    for _ in range(200):
-        f, gx, gy = _eval(terms, px + dx * t, py + dy * t)
-        step = f / (gx * dx + gy * dy)
-        t -= step
-        if abs(step) <= mpmath.mpf(10) ** -50 * (1 + abs(t)):
-            break
+    t = _root_on_line(terms, px, py, dx, dy, mpmath.mpf(0), 50)
     return px + dx * t, py + dy * t
 
 
