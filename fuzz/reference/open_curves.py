@@ -174,14 +174,20 @@ def project(terms, point):
     f, gx, gy = _eval(terms, px, py)
     g = mpmath.sqrt(gx * gx + gy * gy)
     ux, uy = gx / g, gy / g
-    t = -f / g
-    for _ in range(200):
-        fv, hx, hy = _eval(terms, px + ux * t, py + uy * t)
-        step = fv / (hx * ux + hy * uy)
-        t -= step
-        if abs(step) <= mpmath.mpf(10) ** -55 * (1 + abs(t)):
-            break
+    t = _root_on_line(terms, px, py, ux, uy, -f / g, 55)
     return px + ux * t, py + uy * t
+
+
+def _root_on_line(terms, px, py, dx, dy, t, digits):
+    """Newton's method for the exact curve along the line ``p + t d`` from
+    ``t``, to ``digits`` digits."""
+    for _ in range(200):
+        fv, hx, hy = _eval(terms, px + dx * t, py + dy * t)
+        step = fv / (hx * dx + hy * dy)
+        t -= step
+        if abs(step) <= mpmath.mpf(10) ** -digits * (1 + abs(t)):
+            break
+    return t
 
 
 def exact_circle_point(poses, gx, gy):
@@ -267,3 +273,80 @@ if __name__ == "__main__" and sys.argv[1:] == ["class-b"]:
     # python fuzz/reference/open_curves.py class-b
     for kind, y in class_b_changes(*CLASS_B):
         print(f"class B line x = 3.2998: {kind} at y = {mpmath.nstr(y, 15)}")
+
+
+# curv39: the open inputs of 2026-11-27 (trace38's round).
+#
+# Class A: each refused traced vertex is an edge crossing; its exact
+# distance, the exact curve's crossing of that edge (Newton along it), and
+# how far one ulp of the task moves the curve there. Values: poses, the
+# refused vertex, circle plane?, whether the edge is horizontal (y fixed).
+CURV39_A = {
+    "462b0310": ([(0.4811328144407864, 2.9339650901794435e-7, 0.3), (0.48113347558341263, 1.06454076802063e-6, 0.3),
+                  (0.48113413622760665, 1.8351036651763917e-6, 0.3), (0.4811347978232121, 2.6067762706451417e-6, -0.09371093750000001)],
+                 (0.48130940421703694, -0.00021997469210108082), False, True),
+    "32bb3f83": ([(350.7375049901827, 12412.904608977884, 0.0), (350.8348838964327, 12760.259609075263, -2.6139396203106458e-11),
+                  (350.9322628026827, 13107.614609172642, 3.141592653589793), (351.0296417089327, 13454.969609270021, 3.141592653589793)],
+                 (888.1983602397233, 12933.801499400006), True, False),
+    "a0c838da": ([(65980.46875, -3.125e-11, 0.0), (65980.46875000073, 2.923515628304813e-7, 0.0),
+                  (51807.298986901114, 40870.330931820965, 0.66796875), (51807.298986901405, 40870.330638813444, 0.66796875)],
+                 (7117.250695282906, -3257710.9797775005), True, True),
+    "0b584ef8": ([(-448.4375000000008, 7.345703125, 0.99609375), (-448.4368571484375, 7.34625, 0.02734375),
+                  (-448.4375, 7.345703124999191, 100.0), (-448.4375, 7.345703124999181, 41.0)],
+                 (-448.42378872024807, 7.346694153160071), True, False),
+    "1adec857": ([(-0.23734876171875, -0.00010509374999999999, 0.00099609375), (-0.2373488666699115, -0.00010516652559744242, 0.0),
+                  (-0.23754917297355035, 1.3712038398777763e-5, 73.1132813419961), (-0.23744995257071805, -0.0001249079846856963, 62.00390625)],
+                 (-0.23740489217118688, -0.001693510899327509), True, True),
+    "23b0b972": ([(-5719.914563671875, -400.4011343769531, 47.99609375), (-5719.914728009607, -400.4012468196019, 73.11328124999609),
+                  (-5719.921541005625, -400.3778269189091, 0.23828125), (-5719.9129256280585, -400.381870545572, 30.90625)],
+                 (-5719.830467605168, -399.9136084517557), True, True),
+    "32450c8c": ([(-4803059.73828125, 499.99999834882817, 0.28515625), (-4803061.4241018435, 485.3352358788436, 0.058484375),
+                  (-4803059.767863187, 502.0391289619362, 0.31640625), (-4803041.77176926, 502.0391223212631, 0.3164061599960937)],
+                 (-4803116.001904903, 270.46504067808485), False, True),
+    "e295bc14": ([(-41993473828.125, 15042886.328125, 73.03515625), (-42004646249.84896, 19625902.49269017, -8.3984375e-10),
+                  (-42004647968.12623, 19624159.82289651, 0.000375), (-42008781796.727806, 19625898.372381777, 0.0)],
+                 (-42002067405.50264, -354200972.20397985), False, True),
+}
+
+
+def edge_crossing(terms, point, horizontal):
+    """The exact curve's crossing of the edge through ``point`` (the line
+    ``y = point.y`` when ``horizontal``, else ``x = point.x``) nearest it,
+    by Newton along the edge."""
+    px, py = mpmath.mpf(point[0]), mpmath.mpf(point[1])
+    dx, dy = (1, 0) if horizontal else (0, 1)
+    t = _root_on_line(terms, px, py, dx, dy, mpmath.mpf(0), 50)
+    return px + dx * t, py + dy * t
+
+
+# Class B (center plane, lines of centers with nearly one circle point): the
+# poses, the driven center and circle point, the line's x and the ys to
+# sample for ``class_b_changes``.
+CURV39_B = {
+    "144ad15d": ([(65171.875, -0.00082421875, 0.28515625), (1.2600000000000002e-07, 1.0599609375e-07, 0.058484375),
+                  (0.0, 0.0005625000000000001, 0.31640625), (0.0, 0.0, -0.01405859375)],
+                 (-0.0018821909034159034, 0.0002852882436733973), (32585.93553837174, -3709.0527018913294),
+                 32585.9368, [-4000 + 50 * k for k in range(80)]),
+    "aaa7b4d6": ([(77171.875, -0.00082421875, 0.28515625), (2.6e-08, 1.0599609375e-07, 0.058484375),
+                  (0.0, 6.25e-05, 0.31640625), (0.0, 0.0, -0.01405859375)],
+                 (-0.0002089953050017357, 3.169590654379797e-05), (38585.93724048216, -4391.995036204313),
+                 38585.9374, [-4000 + 50 * k for k in range(80)]),
+    "910507b9": ([(-412423437.5, 8359.292578125, 0.03515625), (-416640624.9999974, 8359.37501059961, -81.98046875),
+                  (-416640625.0, 8359.375, 81.00390625), (-416640625.0, 8359.375, 4.5000000000000006e-08)],
+                 (-416640624.9999601, 8359.375190142902), (-414532031.0056545, 12508835.180179331),
+                 -414532031.25, [-3.1e7 + 1e6 * k for k in range(63)]),
+}
+
+
+if __name__ == "__main__" and sys.argv[1:] == ["curv39"]:
+    # python fuzz/reference/open_curves.py curv39
+    for name, (poses, point, circle, horizontal) in CURV39_A.items():
+        terms = curve(poses, circle)
+        first, root = distance(terms, point)
+        cx, cy = edge_crossing(terms, point, horizontal)
+        print(f"class A {name}: {'circle' if circle else 'center'} vertex {point} exact distance "
+              f"{mpmath.nstr(root, 4)}; the edge's exact crossing ({mpmath.nstr(cx, 20)}, {mpmath.nstr(cy, 20)}); "
+              f"one ulp moves the curve {mpmath.nstr(condition(poses, point, circle, 8), 3)}")
+    for name, (poses, c0, c1, x, ys) in CURV39_B.items():
+        for kind, y in class_b_changes(poses, c0, c1, x, ys):
+            print(f"class B {name}: line x = {x}: {kind} at y = {mpmath.nstr(y, 12)}")

@@ -332,3 +332,62 @@ fn arcs38_no_free_arc_where_the_float_curve_does_not_decide_the_class() {
         }
     }
 }
+
+/// curv39 (issue 24, class B, `fuzz/open/curves/...-144ad15d`, `-aaa7b4d6`,
+/// `-910507b9`): three tasks with poses 2, 3 and 4 at nearly one position,
+/// whose center-point curve has a line of centers with nearly one circle
+/// point. The exact arc ends' centers on it are rounding along the line and
+/// off the curve (`3.6e-4` off the exact curve against an on-curve
+/// tolerance of `6.5e-5`), `600`, `650` and `1.2e7` from the exact class
+/// changes: a free arc ran from the middle of a chord up to such a mark
+/// across the defective stretch between them. The exact free stretches of
+/// the line (`fuzz/reference/open_curves.py`'s `class_b_changes`: points
+/// taken onto the exact curve, their exact circle points and Filemon signs,
+/// each change bisected) are `(-3131.16456, -1725.84939)`,
+/// `(-3707.06548, -2044.63043)` and `(-12907215.83, -1469098.70)`. The
+/// free arcs' points on the line lie inside them (within `1e-9` of the
+/// view) and reach both ends within `1e-2` of the view, and the
+/// classifier's check holds (before the fix it fails: the chord from the
+/// middle to the mark passes a defective point).
+#[test]
+fn curv39_a_free_arc_ends_where_the_class_changes_next_to_an_arc_end_off_the_curve() {
+    // One finding a line: its name, the line's `x`, the exact free stretch
+    // `(lo, hi)` of `y` and the finding's 20 numbers ([`Finding`]).
+    const CASES: &str = "
+144ad15d 32585.9368 -3131.16456065 -1725.84939383 65171.875 -0.00082421875 0.28515625 1.2600000000000002e-7 1.0599609375e-7 0.058484375 0.0 0.0005625000000000001 0.31640625 0.0 0.0 -0.01405859375 -0.0018821909034159034 0.0002852882436733973 32585.93553837174 -3709.0527018913294 -961292.1501153591 993864.0998833813 -977266.9039038849 977889.3460948555
+aaa7b4d6 38585.9374 -3707.06548092 -2044.63042688 77171.875 -0.00082421875 0.28515625 2.6e-8 1.0599609375e-7 0.058484375 0.0 6.25e-5 0.31640625 0.0 0.0 -0.01405859375 -0.0002089953050017357 3.169590654379797e-5 38585.93724048216 -4391.995036204313 -1138293.437885988 1176862.8121137521 -1157209.5993418847 1157946.6506578554
+910507b9 -414532031.25 -12907215.8314 -1469098.70247 -412423437.5 8359.292578125 0.03515625 -416640624.9999974 8359.37501059961 -81.98046875 -416640625.0 8359.375 81.00390625 -416640625.0 8359.375 4.5000000000000006e-8 -416640624.9999601 8359.375190142902 -414532031.0056545 12508835.180179331 -448269531.24995357 -385011718.7499667 -31620546.874803305 31637265.62518359
+";
+    for line in CASES.lines().filter(|l| !l.is_empty()) {
+        let mut words = line.splitn(5, ' ');
+        let name = words.next().unwrap();
+        let [x, lo, hi]: [f64; 3] =
+            core::array::from_fn(|_| words.next().unwrap().parse().unwrap());
+        let f = Finding {
+            name,
+            numbers: words.next().unwrap(),
+        };
+        assert_free_by_the_classifier(&f, false);
+        assert_free_by_the_classifier(&f, true);
+        let (four, fa, view) = f.arcs();
+        let d = view.diagonal();
+        let ys: Vec<f64> = arc_points(&four, &fa, &view, false)
+            .into_iter()
+            .filter(|p| (p.x - x).abs() < 1e-6 * d)
+            .map(|p| p.y)
+            .collect();
+        let inside = |y: f64| y > lo - 1e-9 * d && y < hi + 1e-9 * d;
+        assert!(
+            ys.iter().all(|&y| inside(y)),
+            "{name}: free outside ({lo}, {hi}): {:?}",
+            ys.iter().filter(|&&y| !inside(y)).collect::<Vec<_>>()
+        );
+        let (low, high) = ys
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), &y| (a.min(y), b.max(y)));
+        assert!(
+            low < lo + 1e-2 * d && high > hi - 1e-2 * d,
+            "{name}: the free stretch {low} to {high} against ({lo}, {hi})"
+        );
+    }
+}

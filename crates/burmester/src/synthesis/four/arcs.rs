@@ -323,7 +323,8 @@ impl FilemonArcs {
         // The curve's point of a chord lies within the trace's chord
         // tolerance of it; twice that is the reach of the chord's own branch.
         let reach = 2.0 * Cubic::DEFAULT_TOLERANCE * viewport.diagonal();
-        let lines = resolve_changes(curve, &lines, reach, never, &free, &mut poll)?;
+        let mark_class = |p: Point2<f64>| self.mark_class(p, circle, reach);
+        let lines = resolve_changes(curve, &lines, reach, never, &free, &mark_class, &mut poll)?;
         control.report(poll.total, poll.total);
         Ok(free_pieces(&lines, never))
     }
@@ -349,20 +350,64 @@ impl FilemonArcs {
     /// not called free. On an ordinary curve this omits about `1e-14` task
     /// sizes next to an arc end.
     fn label(&self, p: Point2<f64>, circle: bool) -> Label {
-        let (is_free, image) = if circle {
-            (Some(self.classify_circle_point(p) == Branch::Free), None)
-        } else {
-            match self.four.circle_point(p) {
-                Ok(z) => (Some(self.classify_circle_point(z) == Branch::Free), Some(z)),
-                Err(_) => (None, None),
-            }
-        };
+        let (is_free, image) = self.raw_class(p, circle);
         if is_free != Some(true) {
             return Label {
                 free: is_free,
                 image,
             };
         }
+        Label {
+            free: Some(self.decided(p, circle, image)),
+            image,
+        }
+    }
+
+    /// The class of the curve's point next to a mark (an exact arc end, in
+    /// the plane of the curve; taken back onto the curve along its gradient,
+    /// within `reach`) where it holds across the float curve's resolution
+    /// there (as [`label`](Self::label) decides a free point): `Some(free)`
+    /// for a mark that is decidedly inside a stretch of one class, `None`
+    /// for one on its extreme line within rounding, as an arc end is, or
+    /// without a class. On a line of centers whose circle points are nearly
+    /// one point (three poses at nearly one position) an arc end's center is
+    /// rounding along the line and off the curve (curv34): the curve's
+    /// point next to it has its circle point well off the extreme line,
+    /// inside a stretch of one class, and the class changes somewhere
+    /// between it and the next vertex (fuzz inputs `144ad15d`, `aaa7b4d6`,
+    /// `910507b9`: the mark `600`, `650` and `1.2e7` from the exact change,
+    /// and `3.6e-4` off the exact curve against an on-curve tolerance of
+    /// `6.5e-5`, `fuzz/reference/open_curves.py`).
+    fn mark_class(&self, p: Point2<f64>, circle: bool, reach: f64) -> Option<bool> {
+        let curve = if circle {
+            self.four.circle_point_curve()
+        } else {
+            self.four.center_point_curve()
+        };
+        let q = curve_point_near(curve, p, reach)?;
+        let (is_free, image) = self.raw_class(q, circle);
+        is_free.filter(|_| self.decided(q, circle, image))
+    }
+
+    /// The class of a point by its four signs (free, or `None` where a
+    /// center point has no circle point), and the circle point of a center.
+    fn raw_class(&self, p: Point2<f64>, circle: bool) -> (Option<bool>, Option<Point2<f64>>) {
+        if circle {
+            (Some(self.classify_circle_point(p) == Branch::Free), None)
+        } else {
+            match self.four.circle_point(p) {
+                Ok(z) => (Some(self.classify_circle_point(z) == Branch::Free), Some(z)),
+                Err(_) => (None, None),
+            }
+        }
+    }
+
+    /// Whether the class of the curve's point `p` (with its circle point
+    /// `image` in the center plane) holds across the float curve's
+    /// resolution there: its circle point is farther from every Filemon
+    /// line than the band's width (the circle plane) or than twice the way
+    /// it moves as the center moves across the band (the center plane).
+    fn decided(&self, p: Point2<f64>, circle: bool, image: Option<Point2<f64>>) -> bool {
         let curve = if circle {
             self.four.circle_point_curve()
         } else {
@@ -376,7 +421,7 @@ impl FilemonArcs {
                 .zip(d.iter())
                 .fold(f64::INFINITY, |m, (s, d)| m.min(s.abs() / d.norm()))
         };
-        let decided = resolution(curve, p).is_some_and(|r| {
+        resolution(curve, p).is_some_and(|r| {
             match image {
                 None => apart(p) > r,
                 // How far the circle point moves as the center moves
@@ -392,11 +437,7 @@ impl FilemonArcs {
                         .is_ok_and(|w| apart(z) > 2.0 * (motion.global_of(w) - z).norm())
                 }),
             }
-        });
-        Label {
-            free: Some(decided),
-            image,
-        }
+        })
     }
 }
 
@@ -507,11 +548,17 @@ fn curve_point_between(
     a: Point2<f64>,
     b: Point2<f64>,
 ) -> Option<Point2<f64>> {
+    let len = (b - a).norm();
+    curve_point_near(curve, m, reach).filter(|q| (q - a).norm() <= len && (q - b).norm() <= len)
+}
+
+/// The curve's point nearest `m` on the line through `m` along the
+/// gradient there, if it lies within `reach` of `m`.
+fn curve_point_near(curve: &Cubic, m: Point2<f64>, reach: f64) -> Option<Point2<f64>> {
     let g = curve.gradient(m);
     if !(g.x.is_finite() && g.y.is_finite()) || g.norm() == 0.0 {
         return None;
     }
-    let len = (b - a).norm();
     curve
         .intersect_line(&Line {
             point: m,
@@ -520,7 +567,7 @@ fn curve_point_between(
         .into_iter()
         .filter(|q| q.x.is_finite() && q.y.is_finite())
         .min_by(|p, q| (p - m).norm().total_cmp(&(q - m).norm()))
-        .filter(|q| (q - m).norm() <= reach && (q - a).norm() <= len && (q - b).norm() <= len)
+        .filter(|q| (q - m).norm() <= reach)
 }
 
 /// Where the class changes between two points of the curve with different
@@ -575,7 +622,11 @@ const VERTICES: &str = "free arcs' vertices";
 /// circle points are nearly that of the driven dyad, the classifier's
 /// boundary about it covers a long stretch of the line). The middle of a
 /// chord whose ends' circle points are nearly one point ([`CONTRACTED`])
-/// is classified too.
+/// is classified too. A mark (other than the driven dyad's point and the
+/// changes found here) whose own point is decidedly of one class
+/// (`mark_class`: an arc end's center that is rounding along a line of
+/// centers, [`FilemonArcs::mark_class`]) counts as of that class, so a
+/// change between it and a middle of the other class is found the same way.
 ///
 /// The exact arc ends are the meets of the extreme lines with the
 /// circle-point curve; on a curve with a line of centers whose circle
@@ -592,8 +643,22 @@ fn resolve_changes(
     reach: f64,
     never: usize,
     free: &impl Fn(Point2<f64>) -> Label,
+    mark_class: &impl Fn(Point2<f64>) -> Option<bool>,
     poll: &mut Poll<'_, '_>,
 ) -> Result<Vec<Vec<Vertex>>> {
+    // A mark's own class where it is decided (not the driven dyad's point,
+    // never free, nor a change found here, on the free side of one), each
+    // mark's found once (it ends two chords).
+    let known = core::cell::RefCell::new(Vec::<(usize, Option<bool>)>::new());
+    let of_mark = |w: &Vertex| {
+        let k = w.mark.filter(|&k| k != never && k != CHANGE)?;
+        if let Some(&(_, c)) = known.borrow().iter().find(|(j, _)| *j == k) {
+            return c;
+        }
+        let c = mark_class(w.at);
+        known.borrow_mut().push((k, c));
+        c
+    };
     let change = |at| Vertex {
         at,
         mark: Some(CHANGE),
@@ -650,10 +715,12 @@ fn resolve_changes(
                             let lq = free(q);
                             if let Some(lm) = lq.free {
                                 // The driven dyad's point is never free.
-                                let differs_a =
-                                    la.is_some_and(|l| l != lm) || (lm && u.mark == Some(never));
-                                let differs_b =
-                                    lb.is_some_and(|l| l != lm) || (lm && v.mark == Some(never));
+                                let differs_a = la.is_some_and(|l| l != lm)
+                                    || (lm && u.mark == Some(never))
+                                    || of_mark(&u).is_some_and(|l| l != lm);
+                                let differs_b = lb.is_some_and(|l| l != lm)
+                                    || (lm && v.mark == Some(never))
+                                    || of_mark(&v).is_some_and(|l| l != lm);
                                 if differs_a || differs_b {
                                     poll.check()?;
                                 }
