@@ -443,3 +443,106 @@ fn issue24_a_ghost_double_point_whose_newton_iteration_leaves_is_not_listed() {
     .unwrap();
     assert_eq!(five.burmester_points().len(), 2, "no point listed twice");
 }
+
+/// Poses `(1, 0, 1e-12)`, `(0, 0, 0)`, `(0, 0, pi)`, `(1, 0, pi)` and a
+/// fifth of angle 0 (two half-turn pairs at two positions, poses of nearly
+/// one angle with their poles `1e12` task sizes out, `P13 = P24`): a choice
+/// of the shared poses whose `Q` is a Burmester point (`Q = P34 = (0.5,
+/// 0.25)` in `803d9c63`, or at the coincident poles next to `Q = P13` in
+/// `0c09dd2e`'s moved frame) sees it along a double root of the resultant
+/// that is also the direction of a shared pole `1e12` task sizes out. The
+/// far root matched the pole only to `1e-4` of its distance (its rounding:
+/// the curves' cubic parts are `1e-13`), so the pole was listed as a point
+/// (a ghost double, or a single ghost beside the point missing), and the
+/// point at `Q` (a root of each quadratic within `2e-5` of `Q`, on either
+/// side) was lost. Now the far root matches the pole within its rounding,
+/// and the point at `Q` is a candidate that `polish` finishes. Exact points
+/// from `tests/python/burmester_reference.py`; both frames of each (the
+/// far points, `1.8e12` task sizes out, are not compared). Before:
+/// `803d9c63` as given missed `(0.5, 0.25)`, `0c09dd2e` moved the point
+/// at the coincident poles.
+#[test]
+fn issue24_a_point_at_q_along_a_far_pole_s_direction_is_found() {
+    let cases: [(&str, [(f64, f64, f64); 5], [(f64, f64); 4]); 4] = [
+        (
+            "803d9c63",
+            [
+                (1.0, 0.0, 1e-12),
+                (0.0, 0.0, 0.0),
+                (0.0, 0.0, PI),
+                (1.0, 0.0, PI),
+                (0.0, 0.5, 0.0),
+            ],
+            [
+                (-999999999999.5, 999999999999.875),
+                (0.5, 0.25),
+                (0.5000000000000625, -1.25e-13),
+                (1000000000000.5, 1000000000000.375),
+            ],
+        ),
+        (
+            "803d9c63 moved",
+            [
+                (0.7422497254585013, 0.5707327554692566, 0.734374999999),
+                (0.0, -0.09939062500390625, 0.734375),
+                (0.0, -0.09939062500390625, -2.407217653589793),
+                (0.7422497254585013, 0.5707327554692566, -2.407217653589793),
+                (0.33506169023658144, -0.4705154877331569, 0.734375),
+            ],
+            [
+                (0.3711248627292133, 0.23567106523280987),
+                (0.5386557078475414, 0.05010863386804988),
+                (-72127940579.1655, -1412404350745.0813),
+                (1412404350746.0322, -72127940579.49553),
+            ],
+        ),
+        (
+            "0c09dd2e",
+            [
+                (1.0, 0.0, 1e-12),
+                (0.0, 0.0, 0.0),
+                (0.0, 0.0, PI),
+                (1.0, 0.0, PI),
+                (0.0, -0.136, 0.0),
+            ],
+            [
+                (-999999999999.5, 999999999999.7161),
+                (0.499999999999983, -1.25e-13),
+                (0.5, -0.068),
+                (1000000000000.5, 1000000000000.2161),
+            ],
+        ),
+        (
+            "0c09dd2e moved",
+            [
+                (51.33120315111327, 54.04068798379985, 0.04069921874509375),
+                (50.33203125, 54.0, 0.04069921874609375),
+                (50.33203125, 54.0, -3.1008934348436994),
+                (51.33120315111327, 54.04068798379985, -3.1008934348436994),
+                (50.32649768420322, 54.1358873785514, 0.04069921874609375),
+            ],
+            [
+                (-958485168122.5616, -1039861241917.6951),
+                (50.828850417658245, 54.088287681175636),
+                (50.831617200556614, 54.02034399190005),
+                (1039861242022.8218, -958485168119.5608),
+            ],
+        ),
+    ];
+    for (name, poses, exact) in cases {
+        assert_at_exact(name, &poses, &exact, 1e-9);
+        let five = FivePositions::new(
+            &poses
+                .iter()
+                .map(|&(x, y, a)| Pose::new(x, y, a))
+                .collect::<Vec<_>>(),
+        )
+        .unwrap();
+        // Four real points, none at infinity (the two far ones listed too).
+        assert_eq!(
+            (five.burmester_points().len(), five.sliders().len()),
+            (4, 0),
+            "{name}"
+        );
+    }
+}

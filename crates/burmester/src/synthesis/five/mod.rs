@@ -785,10 +785,12 @@ enum SharedPole {
     Infinite(Vector2<f64>),
 }
 
-/// A common point of the two cubics found along a line from `Q`.
+/// A common point of the two cubics found along a line from `Q`: a point
+/// (local) with the rounding of its distance from `Q` (local units; zero
+/// where not bounded), or a direction at infinity.
 #[derive(Debug, Clone, Copy)]
 enum Common {
-    At(Vector2<f64>),
+    At(Vector2<f64>, f64),
     Infinite(Vector2<f64>),
 }
 
@@ -1177,7 +1179,7 @@ impl Elimination {
                 let agree = negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b))
                     || (ob * t + oc).abs() <= PROPORTIONAL_REL * ((ob * t).abs() + oc.abs());
                 if mult >= 2 && agree && lb != 0.0 && t.is_finite() {
-                    cands.push(Common::At(self.q + w * t));
+                    cands.push(Common::At(self.q + w * t, 0.0));
                 }
             } else {
                 let num = av * gv - cv * dv;
@@ -1187,7 +1189,7 @@ impl Elimination {
                     // `h`'s where the line lies on `f` (`f`'s are noise).
                     let (qa, qb, qc) = if line_f { (dv, ev, gv) } else { (av, bv, cv) };
                     for t in quadratic_roots(qa, qb, qc) {
-                        cands.push(Common::At(self.q + w * t));
+                        cands.push(Common::At(self.q + w * t, 0.0));
                     }
                 } else {
                     // The root of `f`'s quadratic where `h`'s is nearest zero
@@ -1205,7 +1207,18 @@ impl Elimination {
                         .min_by(|x, y| rel(*x).total_cmp(&rel(*y)))
                         .unwrap_or(num / den);
                     if t.is_finite() && t.abs() <= far {
-                        cands.push(Common::At(self.q + w * t));
+                        // The rounding of the root (first order, from the
+                        // bounds of `f`'s parts): a far root `-b / a` is
+                        // known to the relative rounding of `a`, which
+                        // near a curve whose cubic part nearly vanishes
+                        // is large (`1e-2` in `803d9c63`).
+                        let slope = (2.0 * av * t + bv).abs();
+                        let dt = tolerance::BURMESTER_EPS
+                            * f64::EPSILON
+                            * (am * t * t + bm * t.abs() + cm)
+                            / slope;
+                        let dt = if dt.is_finite() { dt } else { 0.0 };
+                        cands.push(Common::At(self.q + w * t, dt));
                     } else {
                         cands.push(Common::Infinite(w));
                     }
@@ -1241,8 +1254,36 @@ impl Elimination {
                             && nearest(other) != nearest(t)
                             && (other - t).abs() > DOUBLE_REACH * (1.0 + t.abs())
                         {
-                            cands.push(Common::At(self.q + w * other));
+                            cands.push(Common::At(self.q + w * other, 0.0));
                         }
+                    }
+                    // Both quadratics with a root at `Q` within a
+                    // simple point's reach, on a double root of the
+                    // resultant whose common root taken is another
+                    // (far) one: the line is a common tangent of the
+                    // curves at `Q` within rounding, and `Q` a double
+                    // common point of them: a Burmester point at `Q`
+                    // (which the rounding of `c` and `g` put on either
+                    // side of it), a candidate that `polish` decides.
+                    // (`803d9c63`, `0c09dd2e`: the point at `Q = P34`,
+                    // or at coincident poles next to `Q`, along the
+                    // direction of a shared pole `1e12` task sizes out:
+                    // the roots of `f`'s and `h`'s quadratics there
+                    // `+-2.2e-5` and `+-2e-7`, the far pole taken and
+                    // the point lost.)
+                    let reach = SINGLE_REACH * (1.0 + self.q.norm());
+                    let at_q = |r: &[f64]| {
+                        r.iter()
+                            .copied()
+                            .filter(|x| x.abs() <= reach)
+                            .min_by(|x, y| x.abs().total_cmp(&y.abs()))
+                    };
+                    if let (true, Some(tf), Some(th)) = (
+                        mult >= 2 && t.is_finite() && t.abs() > reach && cands.len() == 1,
+                        at_q(&roots_f),
+                        at_q(&quadratic_roots(dv, ev, gv)),
+                    ) {
+                        cands.push(Common::At(self.q + w * (0.5 * (tf + th)), 0.0));
                     }
                 }
             }
@@ -1254,8 +1295,12 @@ impl Elimination {
                         continue;
                     }
                     let hit = match (cand, pole) {
-                        (Common::At(p), SharedPole::At(x)) => {
-                            (p - x).norm() <= POLE_MATCH * (1.0 + x.norm())
+                        // Within the match, or within the rounding of the
+                        // root's distance from `Q` (a pole `1e12` task
+                        // sizes out whose root is known to `1e-4` of it,
+                        // listed as a point: `803d9c63`).
+                        (Common::At(p, dt), SharedPole::At(x)) => {
+                            (p - x).norm() <= POLE_MATCH * (1.0 + x.norm()) + dt
                         }
                         (Common::Infinite(u), SharedPole::Infinite(x)) => {
                             cross(u, *x).abs() <= POLE_MATCH
@@ -1280,7 +1325,7 @@ impl Elimination {
                 }
                 if m > 0 {
                     match cand {
-                        Common::At(p) => finite.push((p, m)),
+                        Common::At(p, _) => finite.push((p, m)),
                         Common::Infinite(u) => infinite.push((u, m)),
                     }
                 }
