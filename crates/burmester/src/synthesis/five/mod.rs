@@ -1295,12 +1295,22 @@ impl Elimination {
                         continue;
                     }
                     let hit = match (cand, pole) {
-                        // Within the match, or within the rounding of the
-                        // root's distance from `Q` (a pole `1e12` task
-                        // sizes out whose root is known to `1e-4` of it,
-                        // listed as a point: `803d9c63`).
+                        // Within the match, or, for a pole beyond
+                        // `BURMESTER_NEAR` from `Q`, within the rounding of
+                        // the root's distance from `Q` (a pole `1.6e12`
+                        // task sizes out whose root, known to `1.7e-2` of
+                        // it, lay `3e-4` off it, was listed as a point:
+                        // `803d9c63`). Nearer, a pole and a Burmester point
+                        // within a badly conditioned root's rounding of
+                        // each other are both kept (`47915008`'s point 16
+                        // task sizes out, `1.6e-3` of it from a pole).
                         (Common::At(p, dt), SharedPole::At(x)) => {
-                            (p - x).norm() <= POLE_MATCH * (1.0 + x.norm()) + dt
+                            let r = (x - self.q).norm();
+                            let off = (p - x).norm();
+                            off <= POLE_MATCH * (1.0 + x.norm())
+                                || (r > tolerance::BURMESTER_NEAR
+                                    && dt <= FAR_ROOT_REL * r
+                                    && off <= dt)
                         }
                         (Common::Infinite(u), SharedPole::Infinite(x)) => {
                             cross(u, *x).abs() <= POLE_MATCH
@@ -1474,6 +1484,12 @@ const POLE_MATCH: f64 = 1e-6;
 /// root of the band there; a root of `f` off `h` leaves terms of its own
 /// size).
 const PROPORTIONAL_REL: f64 = 1e-4;
+
+/// A root of `f`'s quadratic matches a shared pole beyond
+/// [`tolerance::BURMESTER_NEAR`] (local) from `Q` within the root's own
+/// rounding only where that rounding is at most this much of the pole's
+/// distance (a root known to its order of magnitude matches nothing).
+const FAR_ROOT_REL: f64 = 0.1;
 
 /// The root of the resultant nearest the curves' common asymptotic
 /// direction, within this many radians, is that common point at infinity.
