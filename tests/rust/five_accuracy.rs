@@ -463,7 +463,8 @@ fn issue24_a_ghost_double_point_whose_newton_iteration_leaves_is_not_listed() {
 /// at the coincident poles.
 #[test]
 fn issue24_a_point_at_q_along_a_far_pole_s_direction_is_found() {
-    let cases: [(&str, [(f64, f64, f64); 5], [(f64, f64); 4]); 4] = [
+    type Case = (&'static str, [(f64, f64, f64); 5], [(f64, f64); 4]);
+    let cases: [Case; 4] = [
         (
             "803d9c63",
             [
