@@ -1259,8 +1259,8 @@ impl Elimination {
                     }
                     // Both quadratics with a root at `Q` within a
                     // simple point's reach, on a double root of the
-                    // resultant whose common root taken is another
-                    // (far) one: the line is a common tangent of the
+                    // resultant whose common root taken is another one
+                    // beyond [`far_root`]: the line is a common tangent of the
                     // curves at `Q` within rounding, and `Q` a double
                     // common point of them: a Burmester point at `Q`
                     // (which the rounding of `c` and `g` put on either
@@ -1279,7 +1279,7 @@ impl Elimination {
                             .min_by(|x, y| x.abs().total_cmp(&y.abs()))
                     };
                     if let (true, Some(tf), Some(th)) = (
-                        mult >= 2 && t.is_finite() && t.abs() > reach && cands.len() == 1,
+                        mult >= 2 && t.is_finite() && t.abs() > far_root() && cands.len() == 1,
                         at_q(&roots_f),
                         at_q(&quadratic_roots(dv, ev, gv)),
                     ) {
@@ -1308,9 +1308,7 @@ impl Elimination {
                             let r = (x - self.q).norm();
                             let off = (p - x).norm();
                             off <= POLE_MATCH * (1.0 + x.norm())
-                                || (r > tolerance::BURMESTER_NEAR
-                                    && dt <= FAR_ROOT_REL * r
-                                    && off <= dt)
+                                || (r > far_root() && dt <= FAR_ROOT_REL * r && off <= dt)
                         }
                         (Common::Infinite(u), SharedPole::Infinite(x)) => {
                             cross(u, *x).abs() <= POLE_MATCH
@@ -1485,11 +1483,26 @@ const POLE_MATCH: f64 = 1e-6;
 /// size).
 const PROPORTIONAL_REL: f64 = 1e-4;
 
-/// A root of `f`'s quadratic matches a shared pole beyond
-/// [`tolerance::BURMESTER_NEAR`] (local) from `Q` within the root's own
-/// rounding only where that rounding is at most this much of the pole's
-/// distance (a root known to its order of magnitude matches nothing).
+/// A root of `f`'s quadratic matches a shared pole beyond [`far_root`]
+/// from `Q` within the root's own rounding only where that rounding is at
+/// most this much of the pole's distance (a root known to its order of
+/// magnitude matches nothing).
 const FAR_ROOT_REL: f64 = 0.1;
+
+/// How far from `Q` (local) a common root along a line from it is within
+/// the square root of the rounding of infinity: `1 / sqrt(BURMESTER_EPS
+/// eps)`, about `1.7e7` task sizes. A root that far out lies where the
+/// curves' cubic parts, which place it, are within the square root of their
+/// rounding of vanishing (a pole of two poses `1e-12` rad apart, `1.6e12`
+/// task sizes out, in `803d9c63`): its distance is known only to that
+/// rounding, and [`Elimination::solve`] matches it to a shared pole there
+/// within it, and looks for a Burmester point at `Q` on the same line.
+/// Nearer (poles `1e5` to `1.6e7` task sizes out in fuzz inputs
+/// `622ff580`, `9d23e6b4`; a far root `0.8` to `3.5e4` out in `924ba8db`,
+/// `77a8a120`, `d01f0022`) those rules changed answers that were right.
+fn far_root() -> f64 {
+    1.0 / (tolerance::BURMESTER_EPS * f64::EPSILON).sqrt()
+}
 
 /// The root of the resultant nearest the curves' common asymptotic
 /// direction, within this many radians, is that common point at infinity.
