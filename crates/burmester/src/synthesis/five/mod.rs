@@ -332,11 +332,28 @@ impl FivePositions {
                     .iter()
                     .any(|r| !p.iter().any(|d| same_point(&motion, r, d)))
             });
-        if redo {
+        // A blind choice that lists the points at coincident poles may
+        // have lost a pair of others with them (its count even): the
+        // choices again with the blind ones last, taken only where that
+        // answer lists more points within `BURMESTER_NEAR` task sizes (each
+        // verified by `polish`), so that no point is lost.
+        let blind_taken =
+            !required.is_empty() && !redo && taken.as_ref().is_some_and(|(o, _, _)| blind(o));
+        let near = |p: &[Dyad]| {
+            p.iter()
+                .filter(|d| {
+                    (d.center - motion.origin).norm() <= tolerance::BURMESTER_NEAR * motion.scale
+                })
+                .count()
+        };
+        if redo || blind_taken {
             let mut seeing = choices.clone();
             seeing.sort_by_key(blind);
             if let Some(t) = first_clean(&seeing, &required)? {
-                taken = Some(t);
+                let more = taken.as_ref().is_none_or(|(_, p, _)| near(&t.1) > near(p));
+                if redo || more {
+                    taken = Some(t);
+                }
             }
         }
         let taken = taken.map(|(_, p, s)| (p, s));
