@@ -1295,12 +1295,12 @@ impl Elimination {
                             .filter(|x| x.abs() <= reach)
                             .min_by(|x, y| x.abs().total_cmp(&y.abs()))
                     };
-                    if let (true, Some(tf), Some(th)) = (
-                        mult >= 2 && t.is_finite() && t.abs() > far_root() && cands.len() == 1,
-                        at_q(&roots_f),
-                        at_q(&quadratic_roots(dv, ev, gv)),
-                    ) {
-                        cands.push(Common::At(self.q + w * (0.5 * (tf + th)), 0.0));
+                    if mult >= 2 && t.is_finite() && t.abs() > far_root() && cands.len() == 1 {
+                        if let (Some(tf), Some(th)) =
+                            (at_q(&roots_f), at_q(&quadratic_roots(dv, ev, gv)))
+                        {
+                            cands.push(Common::At(self.q + w * (0.5 * (tf + th)), 0.0));
+                        }
                     }
                 }
             }
