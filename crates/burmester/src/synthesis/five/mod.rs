@@ -1313,14 +1313,15 @@ impl Elimination {
                     }
                     let hit = match (cand, pole) {
                         // Within the match, or, for a pole beyond
-                        // `BURMESTER_NEAR` from `Q`, within the rounding of
+                        // [`far_root`] from `Q`, within the rounding of
                         // the root's distance from `Q` (a pole `1.6e12`
                         // task sizes out whose root, known to `1.7e-2` of
                         // it, lay `3e-4` off it, was listed as a point:
                         // `803d9c63`). Nearer, a pole and a Burmester point
                         // within a badly conditioned root's rounding of
                         // each other are both kept (`47915008`'s point 16
-                        // task sizes out, `1.6e-3` of it from a pole).
+                        // task sizes out, `1.6e-3` of it from a pole, was
+                        // lost to a match at any distance).
                         (Common::At(p, dt), SharedPole::At(x)) => {
                             let r = (x - self.q).norm();
                             let off = (p - x).norm();
