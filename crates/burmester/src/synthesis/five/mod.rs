@@ -392,11 +392,28 @@ impl FivePositions {
                     .iter()
                     .any(|r| !p.iter().any(|d| same_point(&motion, r, d)))
             });
-        if redo {
+        // A blind choice that lists the points at coincident poles may
+        // have lost a pair of others with them (its count even): the
+        // choices again with the blind ones last, taken only where that
+        // answer lists more points within `BURMESTER_NEAR` task sizes (each
+        // verified by `polish`), so that no point is lost.
+        let blind_taken =
+            !required.is_empty() && !redo && taken.as_ref().is_some_and(|(o, _, _)| blind(o));
+        let near = |p: &[Dyad]| {
+            p.iter()
+                .filter(|d| {
+                    (d.center - motion.origin).norm() <= tolerance::BURMESTER_NEAR * motion.scale
+                })
+                .count()
+        };
+        if redo || blind_taken {
             let mut seeing = choices.clone();
             seeing.sort_by_key(blind);
             if let Some(t) = first_clean(&seeing, &required)? {
-                taken = Some(t);
+                let more = taken.as_ref().is_none_or(|(_, p, _)| near(&t.1) > near(p));
+                if redo || more {
+                    taken = Some(t);
+                }
             }
         }
         let taken = taken.map(|(_, p, s)| (p, s));
@@ -845,10 +862,12 @@ enum SharedPole {
     Infinite(Vector2<f64>),
 }
 
-/// A common point of the two cubics found along a line from `Q`.
+/// A common point of the two cubics found along a line from `Q`: a point
+/// (local) with the rounding of its distance from `Q` (local units; zero
+/// where not bounded), or a direction at infinity.
 #[derive(Debug, Clone, Copy)]
 enum Common {
-    At(Vector2<f64>),
+    At(Vector2<f64>, f64),
     Infinite(Vector2<f64>),
 }
 
@@ -1237,7 +1256,7 @@ impl Elimination {
                 let agree = negligible(cv * ev - gv * bv, pb(c, e) + pb(g, b))
                     || (ob * t + oc).abs() <= PROPORTIONAL_REL * ((ob * t).abs() + oc.abs());
                 if mult >= 2 && agree && lb != 0.0 && t.is_finite() {
-                    cands.push(Common::At(self.q + w * t));
+                    cands.push(Common::At(self.q + w * t, 0.0));
                 }
             } else {
                 let num = av * gv - cv * dv;
@@ -1247,7 +1266,7 @@ impl Elimination {
                     // `h`'s where the line lies on `f` (`f`'s are noise).
                     let (qa, qb, qc) = if line_f { (dv, ev, gv) } else { (av, bv, cv) };
                     for t in quadratic_roots(qa, qb, qc) {
-                        cands.push(Common::At(self.q + w * t));
+                        cands.push(Common::At(self.q + w * t, 0.0));
                     }
                 } else {
                     // The root of `f`'s quadratic where `h`'s is nearest zero
@@ -1265,7 +1284,18 @@ impl Elimination {
                         .min_by(|x, y| rel(*x).total_cmp(&rel(*y)))
                         .unwrap_or(num / den);
                     if t.is_finite() && t.abs() <= far {
-                        cands.push(Common::At(self.q + w * t));
+                        // The rounding of the root (first order, from the
+                        // bounds of `f`'s parts): a far root `-b / a` is
+                        // known to the relative rounding of `a`, which
+                        // near a curve whose cubic part nearly vanishes
+                        // is large (`1e-2` in `803d9c63`).
+                        let slope = (2.0 * av * t + bv).abs();
+                        let dt = tolerance::BURMESTER_EPS
+                            * f64::EPSILON
+                            * (am * t * t + bm * t.abs() + cm)
+                            / slope;
+                        let dt = if dt.is_finite() { dt } else { 0.0 };
+                        cands.push(Common::At(self.q + w * t, dt));
                     } else {
                         cands.push(Common::Infinite(w));
                     }
@@ -1301,7 +1331,35 @@ impl Elimination {
                             && nearest(other) != nearest(t)
                             && (other - t).abs() > DOUBLE_REACH * (1.0 + t.abs())
                         {
-                            cands.push(Common::At(self.q + w * other));
+                            cands.push(Common::At(self.q + w * other, 0.0));
+                        }
+                    }
+                    // Both quadratics with a root at `Q` within a
+                    // simple point's reach, on a double root of the
+                    // resultant whose common root taken is another one
+                    // beyond [`far_root`]: the line is a common tangent of the
+                    // curves at `Q` within rounding, and `Q` a double
+                    // common point of them: a Burmester point at `Q`
+                    // (which the rounding of `c` and `g` put on either
+                    // side of it), a candidate that `polish` decides.
+                    // (`803d9c63`, `0c09dd2e`: the point at `Q = P34`,
+                    // or at coincident poles next to `Q`, along the
+                    // direction of a shared pole `1e12` task sizes out:
+                    // the roots of `f`'s and `h`'s quadratics there
+                    // `+-2.2e-5` and `+-2e-7`, the far pole taken and
+                    // the point lost.)
+                    let reach = SINGLE_REACH * (1.0 + self.q.norm());
+                    let at_q = |r: &[f64]| {
+                        r.iter()
+                            .copied()
+                            .filter(|x| x.abs() <= reach)
+                            .min_by(|x, y| x.abs().total_cmp(&y.abs()))
+                    };
+                    if mult >= 2 && t.is_finite() && t.abs() > far_root() && cands.len() == 1 {
+                        if let (Some(tf), Some(th)) =
+                            (at_q(&roots_f), at_q(&quadratic_roots(dv, ev, gv)))
+                        {
+                            cands.push(Common::At(self.q + w * (0.5 * (tf + th)), 0.0));
                         }
                     }
                 }
@@ -1314,8 +1372,21 @@ impl Elimination {
                         continue;
                     }
                     let hit = match (cand, pole) {
-                        (Common::At(p), SharedPole::At(x)) => {
-                            (p - x).norm() <= POLE_MATCH * (1.0 + x.norm())
+                        // Within the match, or, for a pole beyond
+                        // [`far_root`] from `Q`, within the rounding of
+                        // the root's distance from `Q` (a pole `1.6e12`
+                        // task sizes out whose root, known to `1.7e-2` of
+                        // it, lay `3e-4` off it, was listed as a point:
+                        // `803d9c63`). Nearer, a pole and a Burmester point
+                        // within a badly conditioned root's rounding of
+                        // each other are both kept (`47915008`'s point 16
+                        // task sizes out, `1.6e-3` of it from a pole, was
+                        // lost to a match at any distance).
+                        (Common::At(p, dt), SharedPole::At(x)) => {
+                            let r = (x - self.q).norm();
+                            let off = (p - x).norm();
+                            off <= POLE_MATCH * (1.0 + x.norm())
+                                || (r > far_root() && dt <= FAR_ROOT_REL * r && off <= dt)
                         }
                         (Common::Infinite(u), SharedPole::Infinite(x)) => {
                             cross(u, *x).abs() <= POLE_MATCH
@@ -1340,7 +1411,7 @@ impl Elimination {
                 }
                 if m > 0 {
                     match cand {
-                        Common::At(p) => finite.push((p, m)),
+                        Common::At(p, _) => finite.push((p, m)),
                         Common::Infinite(u) => infinite.push((u, m)),
                     }
                 }
@@ -1489,6 +1560,27 @@ const POLE_MATCH: f64 = 1e-6;
 /// root of the band there; a root of `f` off `h` leaves terms of its own
 /// size).
 const PROPORTIONAL_REL: f64 = 1e-4;
+
+/// A root of `f`'s quadratic matches a shared pole beyond [`far_root`]
+/// from `Q` within the root's own rounding only where that rounding is at
+/// most this much of the pole's distance (a root known to its order of
+/// magnitude matches nothing).
+const FAR_ROOT_REL: f64 = 0.1;
+
+/// How far from `Q` (local) a common root along a line from it is within
+/// the square root of the rounding of infinity: `1 / sqrt(BURMESTER_EPS
+/// eps)`, about `1.7e7` task sizes. A root that far out lies where the
+/// curves' cubic parts, which place it, are within the square root of their
+/// rounding of vanishing (a pole of two poses `1e-12` rad apart, `1.6e12`
+/// task sizes out, in `803d9c63`): its distance is known only to that
+/// rounding, and [`Elimination::solve`] matches it to a shared pole there
+/// within it, and looks for a Burmester point at `Q` on the same line.
+/// Nearer (poles `1e5` to `1.6e7` task sizes out in fuzz inputs
+/// `622ff580`, `9d23e6b4`; a far root `0.8` to `3.5e4` out in `924ba8db`,
+/// `77a8a120`, `d01f0022`) those rules changed answers that were right.
+fn far_root() -> f64 {
+    1.0 / (tolerance::BURMESTER_EPS * f64::EPSILON).sqrt()
+}
 
 /// The root of the resultant nearest the curves' common asymptotic
 /// direction, within this many radians, is that common point at infinity.
