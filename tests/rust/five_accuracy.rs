@@ -726,3 +726,65 @@ fn issue24_a_blind_choice_that_lost_a_pair_is_not_the_answer() {
         assert_family(name, poses, exact);
     }
 }
+
+/// A far root read both as a finite Burmester point and as a slider
+/// (five40, fuzz finding `4de1b986`: poses 2 to 4 within `2e-12` task sizes
+/// of one position, poses 1 and 5 at another `9e4` out, angles in two
+/// groups `1e-7` apart). As given, the choices that see all three near
+/// points listed the far fourth twice (a point `8.8e5` task sizes out and
+/// a slider along its direction: five in all) and were skipped; the answer
+/// was a choice that lost the near point `(-45040.68, 45113.28)` with the
+/// far one (2 points). Now refused (the reference poses disagree) or the
+/// exact points; moved, the exact points (three near ones to `1e-6` of
+/// `size + d`, as before).
+#[test]
+fn issue24_a_far_point_read_also_as_a_slider_does_not_lose_a_pair() {
+    let given = [
+        (-3.2003906250000004e-8, 90226.5625, 3.90625e-6),
+        (4.63671875e-9, -8.800000000000001e-8, -8.78515625e-8),
+        (
+            -8.77265625e-8,
+            -1.8021484375000002e-7,
+            -3.2367187500000006e-8,
+        ),
+        (
+            -1.8021875000000003e-7,
+            5.4273437500000004e-8,
+            -0.09246484375,
+        ),
+        (-3.2003906250000004e-8, 90226.5625, -0.09246493611328124),
+    ];
+    let exact = [
+        (-47604270188.52355, 45115.10528246511),
+        (-45040.68374890675, 45113.28125178833),
+        (0.04497046905326175, 45077.33080565351),
+        (6.831210875664416e-05, 34.28581250138755),
+    ];
+    let q: Vec<Pose> = given.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect();
+    match FivePositions::new(&q) {
+        Ok(_) => assert_at_exact("4de1b986", &given, &exact, 1e-6),
+        Err(_) => assert_refused("4de1b986", &given, &exact),
+    }
+    let moved = [
+        (75.63966415745165, -49.04591390347451, 0.99608984375),
+        (
+            -0.0923632813213427,
+            -9.246479105781268e-5,
+            0.9960938378515625,
+        ),
+        (
+            -0.09236328144895091,
+            -9.246481845668193e-5,
+            0.9960937823671875,
+        ),
+        (-0.09236328130240962, -9.246502355472336e-5, 1.08855859375),
+        (75.63966415745165, -49.04591390347451, 1.0885586861132812),
+    ];
+    let exact = [
+        (-25876937.5914632, -39956859.80609808),
+        (-0.0635853080657807, -0.018729667864098565),
+        (13.29020214697899, -62.32808267008591),
+        (37.74349973186493, -24.503423308421628),
+    ];
+    assert_at_exact("4de1b986 moved", &moved, &exact, 1e-6);
+}

@@ -325,7 +325,19 @@ impl FivePositions {
                     continue;
                 };
                 any = true;
-                let (points, sliders, lost, distinct) = elim.points(&sub, &motion)?;
+                let (points, mut sliders, lost, distinct) = elim.points(&sub, &motion)?;
+                // With three distinct near points verified (each passed
+                // `polish`), at most one more Burmester point exists: a far
+                // root read both as a finite point and as a slider (the far
+                // point's center along the slider's direction, its circle
+                // point the slider's) is that one point, and the slider its
+                // rounding (issue 24, five40). With fewer near points the
+                // slider stands (a far point and a point at infinity in
+                // nearly one direction: fuzz findings `08aa7d92`,
+                // `47fa849a`).
+                if distinct + 1 == MAX_POINTS && points.len() + sliders.len() > MAX_POINTS {
+                    sliders.retain(|s| !points.iter().any(|d| far_point_of_slider(&motion, d, s)));
+                }
                 // Two cubics meet in nine points: `Q`, `P13`, `P23`, the
                 // two circular points and at most four Burmester points.
                 // More (double roots of the resultant declared within a
@@ -1993,6 +2005,21 @@ fn check_slider(m: &LocalMotion, z: Vector2<f64>, u: Vector2<f64>) -> Option<Bur
         circle,
         direction: n,
     })
+}
+
+/// Whether the finite Burmester point `d`, beyond
+/// [`tolerance::BURMESTER_NEAR`] task sizes, is the slider `s` read a
+/// second time: its center along the slider's direction (within `1e-3`
+/// rad, the loose match of a root to the asymptote) and its circle point
+/// the slider's (within `1e-3` of `size + d`, `d` the circle point's
+/// distance from the centroid).
+fn far_point_of_slider(m: &LocalMotion, d: &Dyad, s: &BurmesterSlider) -> bool {
+    let g = d.center - m.origin;
+    if !(g.norm() > tolerance::BURMESTER_NEAR * m.scale) {
+        return false;
+    }
+    let reach = m.scale + (s.circle - m.origin).norm();
+    cross(g / g.norm(), s.direction).abs() <= 1e-3 && (d.circle - s.circle).norm() <= 1e-3 * reach
 }
 
 /// Newton's method on the four circle equations `a_k(G) . z = b_k(G)`
