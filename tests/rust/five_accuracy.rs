@@ -788,3 +788,56 @@ fn issue24_a_far_point_read_also_as_a_slider_does_not_lose_a_pair() {
     ];
     assert_at_exact("4de1b986 moved", &moved, &exact, 1e-6);
 }
+
+/// A real root of the resultant that the search of its window drops
+/// (five40): where the resultant's roots are all simple, a window whose
+/// ends lie within the resultant's rounding band and that finds no root
+/// keeps the root found there first (a change of sign of the accurate
+/// value beyond its band). `957b29d3` moved (poses 1 and 2 `6e-12` rad
+/// apart at one position) and `b916f313` as given (poses 1 and 2 `1e-8` rad
+/// apart at one position; both points `89` task sizes out): the best
+/// conditioned choice listed no point, three of its four real roots
+/// dropped so, where the exact task has two real points (and a complex
+/// pair `0.6` and `620` task sizes off the real plane). Fails before: no
+/// points.
+#[test]
+fn issue24_a_root_that_its_window_cannot_place_is_kept() {
+    assert_at_exact(
+        "957b29d3 moved",
+        &[
+            (-2.0641580041210355, -3.276603432641337, 0.9960938409960938),
+            (-2.0641580041210355, -3.276603432641337, 0.996093841),
+            (
+                0.8985753370371314,
+                -0.5414617157171036,
+                9.099609377116735e-8,
+            ),
+            (-2.674765096206945, 2.959454614345093, 0.9960938420000001),
+            (
+                1.4400370527476776,
+                0.2946136213242747,
+                5.1999999972629496e-8,
+            ),
+        ],
+        &[
+            (0.47927865508804735, 2.1605282432750896),
+            (-1.0289467892756383, -7.162923543047891),
+        ],
+        1e-6,
+    );
+    assert_at_exact(
+        "b916f313",
+        &[
+            (-3.90625e-6, -3.90625e-12, -3.90625e-12),
+            (-3.90625e-6, -3.90625e-12, 1.024609375e-8),
+            (-3.90625e-12, 0.00099609374609375, -3.84225390625e-6),
+            (1996.09375, -0.99609375, -3.8422578125e-6),
+            (90.0, 13000.0, 0.0009960937421874998),
+        ],
+        &[
+            (141803.45364794217, 939877.1955395764),
+            (-142600.50285724518, -913318.0147288884),
+        ],
+        1e-6,
+    );
+}

@@ -1173,6 +1173,7 @@ impl Elimination {
     fn searched_again(&self, mut roots: Vec<(f64, usize)>) -> Vec<(f64, usize)> {
         let value = |wx: f64, wy: f64| self.resultant_at(Vector2::new(wx, wy));
         let gap = angle_gap;
+        let all_simple = roots.iter().all(|&(_, m)| m == 1);
         for (center, half) in clusters(&self.r.v) {
             let (s, c) = center.sin_cos();
             let [a, b, cc, d, e, g] = self.forms.each_ref().map(|f| f.rotated(c, s));
@@ -1185,8 +1186,31 @@ impl Elimination {
             .filter(|(u, _)| u.abs() <= t)
             .map(|(u, m)| ((center + u.atan()).rem_euclid(core::f64::consts::PI), m))
             .collect();
-            roots.retain(|&(r, _)| {
-                gap(r, center) > half && found.iter().all(|&(f, _)| gap(r, f) > CLUSTER_SAME)
+            // A window that finds no root, with both its ends within the
+            // rounding band, keeps the one simple root found in it where
+            // every root found was simple: a change of sign of the
+            // accurate value beyond its band (its place uncertain, not its
+            // existence; `polish` finishes it). Fuzz findings `957b29d3`,
+            // `b916f313`, `c8458652` (five40): two poses `1e-8` rad or less
+            // apart at one position, three of the four real roots dropped
+            // so, and both Burmester points with them. Where a double root
+            // was found the band holds critical points, and the root stays
+            // dropped (the half-turn family of `0c09dd2e` is refused
+            // otherwise).
+            let inside: Vec<usize> = roots
+                .iter()
+                .filter(|&&(r, _)| gap(r, center) <= half)
+                .map(|&(_, m)| m)
+                .collect();
+            let blind = [-1.5 * t, 1.5 * t].iter().all(|&u| {
+                let (v, band) = value(c - s * u, s + c * u);
+                v.abs() <= band
+            });
+            let keep_simple = found.is_empty() && inside == [1] && blind && all_simple;
+            roots.retain(|&(r, m)| {
+                (keep_simple && m == 1)
+                    || (gap(r, center) > half
+                        && found.iter().all(|&(f, _)| gap(r, f) > CLUSTER_SAME))
             });
             roots.extend(found);
         }
