@@ -1158,19 +1158,40 @@ impl Elimination {
     /// when the first search found six simple roots, each a sign change of
     /// the accurate value, with that value beyond its band between every
     /// two neighbours. Nothing is left then for a crowd to hide.
+    #[cfg(test)]
     fn roots(&self) -> Vec<(f64, usize)> {
+        self.roots_placed().0
+    }
+
+    /// [`Self::roots`], and the roots among them placed only to their
+    /// window (angle, half width: see [`Self::searched_again`]).
+    #[allow(clippy::type_complexity)]
+    fn roots_placed(&self) -> (Vec<(f64, usize)>, Vec<(f64, f64)>) {
         let value = |wx: f64, wy: f64| self.resultant_at(Vector2::new(wx, wy));
         let roots = form_roots_mult(&self.r.v, &value);
         if all_found(&roots, &value) {
-            return roots;
+            return (roots, Vec::new());
         }
-        self.searched_again(roots)
+        let mut kept = Vec::new();
+        let roots = self.searched_again_keeping(roots, &mut kept);
+        (roots, kept)
     }
 
     /// `roots` (of [`form_roots_mult`]) with those in each of [`clusters`]'
     /// windows replaced by the roots found there again from the forms
     /// turned to the window (see [`Elimination::roots`]).
-    fn searched_again(&self, mut roots: Vec<(f64, usize)>) -> Vec<(f64, usize)> {
+    #[cfg(test)]
+    fn searched_again(&self, roots: Vec<(f64, usize)>) -> Vec<(f64, usize)> {
+        self.searched_again_keeping(roots, &mut Vec::new())
+    }
+
+    /// [`Self::searched_again`], the roots kept only to their window added
+    /// to `kept` (angle, the window's half width).
+    fn searched_again_keeping(
+        &self,
+        mut roots: Vec<(f64, usize)>,
+        kept: &mut Vec<(f64, f64)>,
+    ) -> Vec<(f64, usize)> {
         let value = |wx: f64, wy: f64| self.resultant_at(Vector2::new(wx, wy));
         let gap = angle_gap;
         let all_simple = roots.iter().all(|&(_, m)| m == 1);
@@ -1207,6 +1228,14 @@ impl Elimination {
                 v.abs() <= band
             });
             let keep_simple = found.is_empty() && inside == [1] && blind && all_simple;
+            if keep_simple {
+                kept.extend(
+                    roots
+                        .iter()
+                        .filter(|&&(r, m)| m == 1 && gap(r, center) <= half)
+                        .map(|&(r, _)| (r, half)),
+                );
+            }
             roots.retain(|&(r, m)| {
                 (keep_simple && m == 1)
                     || (gap(r, center) > half
@@ -1231,7 +1260,7 @@ impl Elimination {
     /// among them once each and are taken out.
     #[allow(clippy::type_complexity)]
     fn solve(&self) -> Result<(Vec<(Vector2<f64>, usize)>, Vec<(Vector2<f64>, usize)>)> {
-        let roots = self.roots();
+        let (roots, kept) = self.roots_placed();
         let mut used = [false; 2];
         let mut finite = Vec::new();
         let mut infinite = Vec::new();
@@ -1249,6 +1278,23 @@ impl Elimination {
                 .map(|(i, _)| i)
         });
         for (index, (s, mult)) in roots.into_iter().enumerate() {
+            // A root placed only to its window (`searched_again`): a shared
+            // pole whose direction from `Q` is in that window is that root
+            // (matched to the window, as the root is known; `ac54dbdb`
+            // refused otherwise, five40).
+            if let Some(&(_, half)) = kept.iter().find(|k| k.0 == s) {
+                let pole = (0..2).find(|&k| {
+                    let dir = match self.poles[k] {
+                        SharedPole::At(x) => x - self.q,
+                        SharedPole::Infinite(u) => u,
+                    };
+                    !used[k] && gap(dir.y.atan2(dir.x), s) <= half
+                });
+                if let Some(k) = pole {
+                    used[k] = true;
+                    continue;
+                }
+            }
             let w = match (at_infinity == Some(index), self.asymptote) {
                 (true, Some(u)) => u,
                 _ => Vector2::new(s.cos(), s.sin()),
