@@ -663,10 +663,19 @@ fn trace_impl(
     // B: loops `2e-7` to `5e-3` rad wide, `Delta` `1e-19` over coefficients
     // of `1e-4`). Such a curve is traced as its tangent line and the
     // quotient conic where that product is the curve within the settling's
-    // reach across the view (the vertices are then settled onto the curve).
+    // reach across the view, and only where every vertex of it settles onto
+    // the curve (a fuzz round found pure-translation tasks whose line or
+    // conic left vertices the maps refuse).
     if unplaced {
         if let Some(t) = trace_factored(cubic, q, viewport, &view, true) {
-            return (t, None);
+            let reach = SETTLE_REACH * t.tolerance;
+            let settles = t.components.iter().flat_map(|c| &c.polylines).all(|l| {
+                let s = settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach, None);
+                s.len() == l.len() && s.iter().all(|(p, _)| on_curve_in_plane(cubic, *p))
+            });
+            if settles {
+                return (t, None);
+            }
         }
     }
     // Each mark inside the viewport on its loop.
