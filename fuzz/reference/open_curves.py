@@ -350,3 +350,61 @@ if __name__ == "__main__" and sys.argv[1:] == ["curv39"]:
     for name, (poses, c0, c1, x, ys) in CURV39_B.items():
         for kind, y in class_b_changes(poses, c0, c1, x, ys):
             print(f"class B {name}: line x = {x}: {kind} at y = {mpmath.nstr(y, 12)}")
+
+
+# curv40 (the tracer's fold on a nearly straight piece): the poses, the
+# plane (circle?), the view (xmin xmax ymin ymax), and the traced
+# polylines' ends on the view's edges; each end's exact crossing of its edge.
+CURV40 = {
+    "e067e5da": ([(-0.00200390625, 107.5, 31.25), (-17.631854817288307, 106.02446735641578, -0.001),
+                  (-17.737756948394164, 106.00667311471496, 0.0), (-29.205900296226382, 103.41768675652295, 0.10955078125)],
+                 True, (-798.3274965931357, 779.8362538419599, -683.3446684106343, 894.8190820244613),
+                 [(779.8362538419599, 270.71128608102333), (-798.3274965931357, -276.96287193752573)]),
+    "719363d5": ([(-0.06526562500000001, -0.00082421875, 0.28515625), (2.6e-8, -8.3984375e-10, 0.058160156250000004),
+                  (2.6e-8, -8.3984375e-10, 0.31640625), (0.0, 0.0, -3.90625e-12)],
+                 False, (-41.447670459778394, 1.0803654727651093, -41.42202070338598, 1.1060152291575172),
+                 [(-0.046605511608247524, 1.1060152291575172), (0.49046644167890086, -41.42202070338598)]),
+    "5a77a1d1": ([(35836.490347108884, -0.10002734375, 2.145498903589793), (35840.234375, -0.10002734375, 3.141592653589793),
+                  (35840.23430756839, -0.10002734375, 3.145647341089793), (35840.229306159425, -0.10002734375, 3.106436446445262)],
+                 True, (35484.80055236068, 38282.7663499924, -1397.7099957011076, 1400.255801930611),
+                 [(35484.80055236068, 186.38558794412592), (38282.7663499924, -1279.1542721118733)]),
+    "5855fc72": ([(-2417.96875, 0.00025, -0.8515625), (0.00025002675, -9.648437500000001e-10, 0.058484375),
+                  (0.0, 0.0005, 0.31640625), (0.00025002675, -9.648437500000001e-10, 0.000500045)],
+                 True, (-789093.6007922697, 786364.2714849757, -1534229.613022059, 41228.25925518642),
+                 [(-1209.038713549146, 41228.25925518642), (-1206.7094062735025, -1534229.613022059)]),
+    "3633626e": ([(6526171874999.915, -82422.0004921875, 0.28515625), (-82419.3603359375, -83984.5004921875, 0.0),
+                  (1171874.9146640624, -0.1254921875, 81.00390625), (-0.0853359375, 599999.8745078126, -0.04266796875)],
+                 True, (-4137669216922467.0, 114539408766058.5, -4149784452624695.0, 102424173063830.25),
+                 [(3267196043912.9863, -4149784452624695.0), (3263011393493.4907, 102424173063830.25)]),
+}
+
+
+if __name__ == "__main__" and sys.argv[1:2] == ["curv40"]:
+    # python fuzz/reference/open_curves.py curv40 [x,y ...]: the exact
+    # crossings of the traced ends' edges, and the exact distance of any
+    # further points given (name:x,y).
+    pts = {}
+    for a in sys.argv[2:]:
+        n, xy = a.split(":")
+        pts.setdefault(n, []).append(tuple(float(v) for v in xy.split(",")))
+    for name, (poses, circle, (x0, x1, y0, y1), ends) in CURV40.items():
+        terms = curve(poses, circle)
+        for e in ends:
+            horizontal = e[1] in (y0, y1)
+            cx, cy = edge_crossing(terms, e, horizontal)
+            print(f"{name}: end {e} exact crossing ({mpmath.nstr(cx, 20)}, {mpmath.nstr(cy, 20)}) "
+                  f"off by {mpmath.nstr(abs(cx - e[0]) + abs(cy - e[1]), 3)}")
+        for p in pts.get(name, []):
+            first, root = distance(terms, p)
+            print(f"{name}: point {p} exact distance {mpmath.nstr(root, 4)} (first order {mpmath.nstr(first, 4)})")
+    # The exact curve's points next to the chord between the two ends, at
+    # fractions 0.1, 0.3, 0.5, 0.7, 0.9 of it (along the gradient line).
+    for name, (poses, circle, _view, (e0, e1)) in CURV40.items():
+        if pts:
+            break
+        terms = curve(poses, circle)
+        out = []
+        for f in (0.1, 0.3, 0.5, 0.7, 0.9):
+            x, y = project(terms, (e0[0] + f * (e1[0] - e0[0]), e0[1] + f * (e1[1] - e0[1])))
+            out.append(f"{mpmath.nstr(x, 20)} {mpmath.nstr(y, 20)}")
+        print(f"{name}: exact points " + "  ".join(out))

@@ -629,7 +629,7 @@ fn trace_impl(
         return empty;
     };
     if tangent_is_component(cubic, q, radius) {
-        if let Some(t) = trace_factored(cubic, q, viewport, &view) {
+        if let Some(t) = trace_factored(cubic, q, viewport, &view, false) {
             return (t, None);
         }
     }
@@ -647,9 +647,35 @@ fn trace_impl(
     let crossings = edge_crossings(cubic, &view);
     // Each crossing on its loop.
     let mut on_loop: Vec<Vec<(f64, Vector2<f64>)>> = vec![Vec::new(); loops.len()];
+    let mut unplaced = false;
     for x in crossings {
         if let Some((k, lambda)) = place(&pencil, &loops, x, &view) {
             on_loop[k].push((lambda, x));
+        } else {
+            unplaced = true;
+        }
+    }
+    // A crossing on no loop: the pencil's point may lie on a piece of the
+    // curve that is a line within the chord tolerance across the view.
+    // Every direction from it that holds that piece is then within
+    // rounding of its tangent, where `Delta` is rounding and its loops are
+    // noise, and the trace would fold back along the piece (issue 24, class
+    // B: loops `2e-7` to `5e-3` rad wide, `Delta` `1e-19` over coefficients
+    // of `1e-4`). Such a curve is traced as its tangent line and the
+    // quotient conic where that product is the curve within the settling's
+    // reach across the view, and only where every vertex of it settles onto
+    // the curve (a fuzz round found pure-translation tasks whose line or
+    // conic left vertices the maps refuse).
+    if unplaced {
+        if let Some(t) = trace_factored(cubic, q, viewport, &view, true) {
+            let reach = SETTLE_REACH * t.tolerance;
+            let settles = t.components.iter().flat_map(|c| &c.polylines).all(|l| {
+                let s = settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach, None);
+                s.len() == l.len() && s.iter().all(|(p, _)| on_curve_in_plane(cubic, *p))
+            });
+            if settles {
+                return (t, None);
+            }
         }
     }
     // Each mark inside the viewport on its loop.
@@ -896,12 +922,16 @@ fn tangent_is_component(cubic: &Cubic, x: Vector2<f64>, radius: f64) -> bool {
 /// A cubic with a line component through `q` (its tangent there):
 /// `f = L q2` with `L` the tangent line, traced as the line and the
 /// quotient conic (the existing [`crate::Conic`] sampler). `None` when the
-/// division leaves a remainder beyond rounding.
+/// division leaves a remainder beyond rounding (`1e-9` of the
+/// coefficients), or with `in_view`, beyond what moves the curve by
+/// [`SETTLE_REACH`] chord tolerances anywhere in the view (the remainder's
+/// bound over the view against the gradient at `q`).
 fn trace_factored(
     cubic: &Cubic,
     q: Vector2<f64>,
     viewport: &Viewport,
     view: &View,
+    in_view: bool,
 ) -> Option<CubicTrace> {
     let g = cubic.grad_local(q);
     let n = g.norm();
@@ -931,9 +961,33 @@ fn trace_factored(
     let f = nalgebra::DVector::from_column_slice(&cubic.c);
     let svd = m.clone().svd(true, true);
     let q2 = svd.solve(&f, 1e-14).ok()?;
-    let residual = (&m * &q2 - &f).norm();
-    if !(residual <= 1e-9 * f.norm()) {
-        return None;
+    let remainder = &m * &q2 - &f;
+    let exact = remainder.norm() <= 1e-9 * f.norm();
+    if !exact {
+        // The remainder's bound over the view (each monomial at the view's
+        // largest coordinates) and how far it moves the curve there.
+        let xm = view.lo.x.abs().max(view.hi.x.abs());
+        let ym = view.lo.y.abs().max(view.hi.y.abs());
+        const POWERS: [(i32, i32); 10] = [
+            (0, 0),
+            (1, 0),
+            (0, 1),
+            (2, 0),
+            (1, 1),
+            (0, 2),
+            (3, 0),
+            (2, 1),
+            (1, 2),
+            (0, 3),
+        ];
+        let bound: f64 = POWERS
+            .iter()
+            .zip(remainder.iter())
+            .map(|(&(i, j), r)| r.abs() * xm.powi(i) * ym.powi(j))
+            .sum();
+        if !(in_view && bound <= SETTLE_REACH * view.tol * n) {
+            return None;
+        }
     }
     // In the conic's order [A, B, C, D, E, F] (x^2, xy, y^2, x, y, 1).
     // A quotient whose quadratic terms are too small to move it, anywhere
