@@ -181,7 +181,7 @@ impl FivePositions {
     pub(crate) fn of(poses: &[Pose]) -> Result<Self> {
         let answer = Self::solve(poses)?;
         for r in 1..5 {
-            let turned: Vec<Pose> = (0..5).map(|k| poses[(k + r) % 5]).collect();
+            let turned: [Pose; 5] = core::array::from_fn(|k| poses[(k + r) % 5]);
             if let Ok(other) = Self::solve(&turned) {
                 if !answer.agrees(&other) || !other.agrees(&answer) {
                     return Err(errors::unresolved(
@@ -204,7 +204,7 @@ impl FivePositions {
         let own = self.burmester_points();
         own.iter().enumerate().all(|(i, p)| {
             let reach = size + (p.center - o).norm();
-            let near = reach <= (1.0 + tolerance::BURMESTER_NEAR) * size;
+            let near = is_near(&self.motion, p.center);
             let apart = own
                 .iter()
                 .enumerate()
@@ -348,13 +348,7 @@ impl FivePositions {
                 if total > MAX_POINTS {
                     continue;
                 }
-                let near = points
-                    .iter()
-                    .filter(|d| {
-                        (d.center - motion.origin).norm()
-                            <= tolerance::BURMESTER_NEAR * motion.scale
-                    })
-                    .count();
+                let near = near_count(&motion, &points);
                 if lost == 0
                     && total % 2 == 0
                     && near >= verified
@@ -367,9 +361,9 @@ impl FivePositions {
                 verified = verified.max(distinct);
                 if !required.is_empty() {
                     for d in &points {
-                        let near = (d.center - motion.origin).norm()
-                            <= tolerance::BURMESTER_NEAR * motion.scale;
-                        if near && !seen.iter().any(|r| same_point(&motion, r, d)) {
+                        if is_near(&motion, d.center)
+                            && !seen.iter().any(|r| same_point(&motion, r, d))
+                        {
                             seen.push(*d);
                         }
                     }
@@ -411,18 +405,13 @@ impl FivePositions {
         // verified by `polish`), so that no point is lost.
         let blind_taken =
             !required.is_empty() && !redo && taken.as_ref().is_some_and(|(o, _, _)| blind(o));
-        let near = |p: &[Dyad]| {
-            p.iter()
-                .filter(|d| {
-                    (d.center - motion.origin).norm() <= tolerance::BURMESTER_NEAR * motion.scale
-                })
-                .count()
-        };
         if redo || blind_taken {
             let mut seeing = choices.clone();
             seeing.sort_by_key(blind);
             if let Some(t) = first_clean(&seeing, &required)? {
-                let more = taken.as_ref().is_none_or(|(_, p, _)| near(&t.1) > near(p));
+                let more = taken
+                    .as_ref()
+                    .is_none_or(|(_, p, _)| near_count(&motion, &t.1) > near_count(&motion, p));
                 if redo || more {
                     taken = Some(t);
                 }
@@ -644,6 +633,17 @@ fn concyclic_to_rounding(m: &LocalMotion, d: &Dyad) -> bool {
 /// point; `None` at infinity.
 fn finite(h: [f64; 3]) -> Option<Vector2<f64>> {
     (h[2] != 0.0).then(|| Vector2::new(h[0] / h[2], h[1] / h[2]))
+}
+
+/// Whether a center (global) lies within [`tolerance::BURMESTER_NEAR`]
+/// task sizes of the poses' centroid.
+fn is_near(m: &LocalMotion, center: Point2<f64>) -> bool {
+    (center - m.origin).norm() <= tolerance::BURMESTER_NEAR * m.scale
+}
+
+/// How many of `points` have their centers [`is_near`].
+fn near_count(m: &LocalMotion, points: &[Dyad]) -> usize {
+    points.iter().filter(|d| is_near(m, d.center)).count()
 }
 
 /// Whether two Burmester points (global) are one: their centers within
@@ -1067,9 +1067,7 @@ impl Elimination {
             let near = 0.5 * DOUBLE_REACH * (motion.scale + (d.center - motion.origin).norm());
             points.iter().any(|p| (p.center - d.center).norm() <= near)
         };
-        let near = |d: &Dyad| {
-            (d.center - motion.origin).norm() <= tolerance::BURMESTER_NEAR * motion.scale
-        };
+        let near = |d: &Dyad| is_near(motion, d.center);
         for (g0, mult) in finite {
             let g0 = motion.local_of(sub.global_of(g0));
             match polish(motion, g0, mult)? {
@@ -1742,7 +1740,7 @@ fn polish(m: &LocalMotion, g0: Vector2<f64>, mult: usize) -> Result<Polished> {
     // puts within `1e-9` of the exact ones). Farther out than
     // `BURMESTER_NEAR` a point is known only to its distance squared times
     // the rounding, and is left as it was.
-    let near = (m.global_of(g0) - m.origin).norm() <= tolerance::BURMESTER_NEAR * m.scale;
+    let near = is_near(m, m.global_of(g0));
     let far_off = |g: Vector2<f64>| {
         (g - g0).norm() > SINGLE_REACH * scale
             && refine::Accurate::new(m)
