@@ -221,10 +221,7 @@ impl Cubic {
     /// `sum |c_ij| |x|^i |y|^j`: the scale of the rounding error of
     /// [`Cubic::eval_local`].
     pub(crate) fn magnitude_local(&self, v: Vector2<f64>) -> f64 {
-        let c = self.c.map(f64::abs);
-        let (x, y) = (v.x.abs(), v.y.abs());
-        c[0] + y * (c[2] + y * (c[5] + y * c[9]))
-            + x * (c[1] + y * (c[4] + y * c[8]) + x * (c[3] + y * c[7] + x * c[6]))
+        magnitude(&self.c, v.x, v.y)
     }
 
     /// The value and the rounding scale of the curve at `p` when its local
@@ -554,6 +551,17 @@ pub(crate) fn gradient(c: &[f64; 10], x: f64, y: f64) -> [f64; 2] {
         c[1] + 2.0 * c[3] * x + c[4] * y + 3.0 * c[6] * x * x + 2.0 * c[7] * x * y + c[8] * y * y,
         c[2] + c[4] * x + 2.0 * c[5] * y + c[7] * x * x + 2.0 * c[8] * x * y + 3.0 * c[9] * y * y,
     ]
+}
+
+/// `sum |c_ij| |x|^i |y|^j` for the cubic with the ascending coefficients
+/// `c` (as [`gradient`]): the bound on the terms of its value at `(x, y)`,
+/// and on its value anywhere in the box `|u| <= |x|`, `|v| <= |y|`.
+#[inline]
+pub(crate) fn magnitude(c: &[f64; 10], x: f64, y: f64) -> f64 {
+    let c = c.map(f64::abs);
+    let (x, y) = (x.abs(), y.abs());
+    c[0] + y * (c[2] + y * (c[5] + y * c[9]))
+        + x * (c[1] + y * (c[4] + y * c[8]) + x * (c[3] + y * c[7] + x * c[6]))
 }
 
 /// The Hessian `[fxx, fxy, fyy]` at `(x, y)` of the cubic with the

@@ -968,23 +968,8 @@ fn trace_factored(
         // largest coordinates) and how far it moves the curve there.
         let xm = view.lo.x.abs().max(view.hi.x.abs());
         let ym = view.lo.y.abs().max(view.hi.y.abs());
-        const POWERS: [(i32, i32); 10] = [
-            (0, 0),
-            (1, 0),
-            (0, 1),
-            (2, 0),
-            (1, 1),
-            (0, 2),
-            (3, 0),
-            (2, 1),
-            (1, 2),
-            (0, 3),
-        ];
-        let bound: f64 = POWERS
-            .iter()
-            .zip(remainder.iter())
-            .map(|(&(i, j), r)| r.abs() * xm.powi(i) * ym.powi(j))
-            .sum();
+        let r: [f64; 10] = core::array::from_fn(|k| remainder[k]);
+        let bound = super::magnitude(&r, xm, ym);
         if !(in_view && bound <= SETTLE_REACH * view.tol * n) {
             return None;
         }
