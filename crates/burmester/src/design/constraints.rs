@@ -10,7 +10,7 @@
 //! end. The crank tip moves `L2 dtheta`; the rocker tip moves
 //! `L4 dtheta4 = L2 dtheta |sin(theta2 - theta3)| / |sin mu|`, at most
 //! `L2 dtheta / sin mu_min` with `mu_min` the minimum transmission angle
-//! over the travel (exact, [`LinkageFigures::min_transmission`]). So within
+//! over the travel (exact, [`LinkageFigures::min_transmission`](crate::LinkageFigures::min_transmission)). So within
 //! `h` of an input angle every point of every moving link stays within
 //!
 //! ```text
@@ -558,7 +558,8 @@ impl Prepared {
 /// # A slider-crank over its travel
 ///
 /// A slider-crank's moving parts (a map with a driven slider,
-/// [`SliderFilemon::solution_map`](crate::SliderFilemon::solution_map))
+/// [`Filemon::solution_map`](crate::Filemon::solution_map) of a [`Filemon`](crate::Filemon)
+/// built with a driven slider; `SliderFilemon.solution_map` in Python)
 /// are checked as a four-bar's, capsules `link_width` wide: against the
 /// obstacles the crank `A0 A` and the coupler `A B`; inside the envelope
 /// the crank and the coupler triangle `A B P` (`P` the task's coupler

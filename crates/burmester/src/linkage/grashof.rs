@@ -263,7 +263,7 @@ pub(crate) struct InputBounds {
 }
 
 /// The input bounds of the lengths `[ground, crank, coupler, rocker]` (see
-/// [`FourBar::input_range`]); any positive scale.
+/// [`FourBar::input_range`](crate::FourBar::input_range)); any positive scale.
 pub(crate) fn input_bounds(lengths: [f64; 4]) -> InputBounds {
     // In units of the longer of ground and crank, so that neither the
     // squares nor `2 L1 L2` underflow (the link ratio is finite). A square

@@ -286,7 +286,7 @@ impl crate::Task {
     ///
     /// # Errors
     ///
-    /// [`InvalidInput::NotASlider`](crate::InvalidInput::NotASlider) naming
+    /// [`crate::InvalidInput::NotASlider`] naming
     /// `which`, with the spread found.
     pub(crate) fn check_on_lines(
         &self,

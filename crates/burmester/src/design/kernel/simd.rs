@@ -78,7 +78,7 @@ const MEETS: u8 = 64;
 /// `acos(w) >= angle` for a worst `|cos mu|` `w` in `[0, 1]`, by
 /// thresholds on `w` away from the angle and the `acos` near it: the answer
 /// is the comparison of the `acos` itself (as [`DesignLimits::meets`]
-/// takes it) wherever the crate's [`acos`](crate::simd::acos) and libm's
+/// takes it) wherever the crate's [`crate::simd::acos`] and libm's
 /// `cos` are within a tenth of [`CosBand::SLACK`] of the true values, which
 /// they are by many orders of magnitude (2 ulp and 1 ulp, about `4e-16`
 /// rad here).
