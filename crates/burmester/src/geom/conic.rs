@@ -570,7 +570,9 @@ impl Conic {
             current: Vec::new(),
             points: 0,
         };
-        if self.kind() == ConicKind::Degenerate {
+        if let Some((p, w)) = self.line_in_box(lo, hi, tol) {
+            sampler.line(p, w);
+        } else if self.kind() == ConicKind::Degenerate {
             for line in self.degenerate_lines(sampler.center) {
                 sampler.line(line.0, line.1);
             }
@@ -608,6 +610,35 @@ impl Conic {
             a.abs() * rx * rx + b.abs() * rx * ry + c.abs() * ry * ry + d.abs() * rx + e.abs() * ry;
         // Well beyond the rounding of either side; false for NaN or infinity.
         f.abs() > rest * (1.0 + 1e-9)
+    }
+
+    /// The line `D x + E y + F = 0` (local point and direction) where the
+    /// quadratic terms, bounded over the local box `lo..hi`, move the curve
+    /// from it by at most a thousandth of the chord tolerance `tol` (local
+    /// units) there: every point of the conic in the box is then within
+    /// that of the line and the line within it of the conic (its other
+    /// points lie beyond `|(D, E)| / |(A, B, C)|`, far out). Such a conic's
+    /// matrix is singular within rounding of its norm: taken for a line
+    /// pair (through a far center, or none for an isolated point), it drew
+    /// lines where the curve is not, or nothing where it crosses the view
+    /// (issue 24; the four-pose tracer met it in its quotient conics).
+    fn line_in_box(
+        &self,
+        lo: Vector2<f64>,
+        hi: Vector2<f64>,
+        tol: f64,
+    ) -> Option<(Vector2<f64>, Vector2<f64>)> {
+        let [a, b, c, d, e, f] = self.q;
+        let rx = lo.x.abs().max(hi.x.abs());
+        let ry = lo.y.abs().max(hi.y.abs());
+        let quadratic = a.abs() * rx * rx + b.abs() * rx * ry + c.abs() * ry * ry;
+        let n = Vector2::new(d, e);
+        let g = n.norm();
+        // False for NaN or infinity.
+        if !(g > 0.0 && quadratic <= 1e-3 * tol * g) {
+            return None;
+        }
+        Some((-n * (f / (g * g)), Vector2::new(-e, d)))
     }
 
     /// The lines of a degenerate conic (local point and direction).
@@ -1154,6 +1185,40 @@ mod tests {
             for line in c.polylines(&v, t).unwrap() {
                 assert!(line.iter().all(|p| p.x.is_finite() && p.y.is_finite()));
             }
+        }
+    }
+
+    /// A conic whose quadratic terms are `1e-14` of its linear ones is its
+    /// line `x + y = 1` across the view (its other points lie `1e14` out),
+    /// though its matrix is singular within `1e-12` of its norm (kind
+    /// `Degenerate`): it was taken for a line pair through its far center
+    /// (an ellipse: an isolated point) and nothing was drawn (issue 24).
+    /// Every vertex is on the conic within the tolerance, and the ends are
+    /// the line's exact crossings of the view's edges.
+    #[test]
+    fn a_conic_that_is_its_line_in_the_view_is_drawn_as_that_line() {
+        for (qa, qc) in [(1e-14, 1e-14), (1e-14, -1e-14), (3e-13, 0.0)] {
+            let c = Conic::new(qa, 0.0, qc, 1.0, 1.0, -1.0).unwrap();
+            assert_eq!(c.kind(), ConicKind::Degenerate);
+            let lines = c.polylines(&vp(), Some(1e-6)).unwrap();
+            assert_eq!(lines.len(), 1, "{lines:?}");
+            for p in &lines[0] {
+                let g = c.gradient(*p).norm();
+                assert!(c.evaluate(*p).abs() / g <= 1e-6, "{p}");
+            }
+            // x + y = 1 crosses the square [-5, 5]^2 at (-4, 5) and (5, -4).
+            let ends = [lines[0][0], *lines[0].last().unwrap()];
+            for want in [Point2::new(-4.0, 5.0), Point2::new(5.0, -4.0)] {
+                assert!(ends.iter().any(|p| (p - want).norm() <= 1e-9), "{ends:?}");
+            }
+        }
+        // A conic whose quadratic terms do move it in the view is sampled
+        // as before: the parabola y = x^2 / 10 is not its tangent line.
+        let parabola = Conic::new(0.1, 0.0, 0.0, 0.0, -1.0, 0.0).unwrap();
+        let lines = parabola.polylines(&vp(), None).unwrap();
+        assert!(lines.iter().flatten().count() > 10);
+        for p in lines.iter().flatten() {
+            assert!((p.y - 0.1 * p.x * p.x).abs() <= 1e-2, "{p}");
         }
     }
 }
