@@ -780,6 +780,15 @@ def machine() -> list[str]:
 
 
 SCALING = ROOT / "benches" / "scaling"
+NOTES = ROOT / "benches" / "notes.md"
+
+
+def notes_lines() -> list[str]:
+    """``benches/notes.md`` as it is (a ``## `` section written by hand: what
+    changed between full runs and the goals not met), or nothing."""
+    if not NOTES.exists():
+        return []
+    return [NOTES.read_text().strip("\n"), ""]
 
 
 def parse_scaling_log(path: Path) -> tuple[list[str], list[tuple[str, str, int, float, float, float]]]:
@@ -863,6 +872,7 @@ def write(figures: dict[str, Figure]) -> str:
         "",
         *machine(),
         "",
+        *notes_lines(),
     ]
     for s in SECTIONS:
         lines += [f"## {s.title}", ""]
@@ -927,6 +937,13 @@ def write_only(figures: dict[str, Figure], sections: list[Section]) -> str:
     # The scaling tables come from the committed logs, not from this run:
     # always as the logs say.
     kept.update(section_text("\n" + "\n".join(scaling_lines())))
+    # The notes by hand: always as `benches/notes.md` says, after the machine.
+    notes = section_text("\n" + "\n".join(notes_lines()))
+    for title in notes:
+        kept.pop(title, None)
+    first = dict(list(kept.items())[:1])
+    rest = dict(list(kept.items())[1:])
+    kept = {**first, **notes, **rest}
     return head.rstrip("\n") + "\n\n" + "\n".join(kept.values()).rstrip("\n")
 
 
