@@ -358,29 +358,24 @@ impl FilemonArcs {
                 room: 0.0,
             };
         }
-        let free = self.decided(p, circle, image);
-        // The room of a free point: its circle point's distance from the
-        // nearest Filemon line, signed by the half of the double wedge.
-        let z = image.unwrap_or(p);
-        let room = if free {
-            self.apart(z).copysign(self.circle_signs(z)[0])
-        } else {
-            0.0
-        };
+        let room = self.room(image.unwrap_or(p));
+        let free = self.decided(p, circle, image, room.abs());
         Label {
             free: Some(free),
             image,
-            room,
+            room: if free { room } else { 0.0 },
         }
     }
 
     /// The distance of a circle point from the nearest Filemon line (of
-    /// the four).
-    fn apart(&self, z: Point2<f64>) -> f64 {
+    /// the four), signed by the half of the double wedge it is in (the sign
+    /// of its first branch sign: the half of a free point).
+    fn room(&self, z: Point2<f64>) -> f64 {
         let s = self.circle_signs(z);
         s.iter()
             .zip(self.lines.directions().iter())
             .fold(f64::INFINITY, |m, (s, d)| m.min(s.abs() / d.norm()))
+            .copysign(s[0])
     }
 
     /// The class of the curve's point next to a mark (an exact arc end, in
@@ -406,7 +401,7 @@ impl FilemonArcs {
         };
         let q = curve_point_near(curve, p, reach)?;
         let (is_free, image) = self.raw_class(q, circle);
-        is_free.filter(|_| self.decided(q, circle, image))
+        is_free.filter(|_| self.decided(q, circle, image, self.room(image.unwrap_or(q)).abs()))
     }
 
     /// The class of a point by its four signs (free, or `None` where a
@@ -426,17 +421,24 @@ impl FilemonArcs {
     /// `image` in the center plane) holds across the float curve's
     /// resolution there: its circle point is farther from every Filemon
     /// line than the band's width (the circle plane) or than twice the way
-    /// it moves as the center moves across the band (the center plane).
-    fn decided(&self, p: Point2<f64>, circle: bool, image: Option<Point2<f64>>) -> bool {
+    /// it moves as the center moves across the band (the center plane);
+    /// `apart` is that circle point's distance from the nearest line
+    /// ([`room`](Self::room)).
+    fn decided(
+        &self,
+        p: Point2<f64>,
+        circle: bool,
+        image: Option<Point2<f64>>,
+        apart: f64,
+    ) -> bool {
         let curve = if circle {
             self.four.circle_point_curve()
         } else {
             self.four.center_point_curve()
         };
-        let apart = |z: Point2<f64>| self.apart(z);
         resolution(curve, p).is_some_and(|r| {
             match image {
-                None => apart(p) > r,
+                None => apart > r,
                 // How far the circle point moves as the center moves
                 // across the band (one side: twice that, for the other).
                 // (The linear conditions solved as `circle_point` solves
@@ -447,7 +449,7 @@ impl FilemonArcs {
                     motion
                         .form
                         .solve(motion.local_of(p + g * r), &[1, 2, 3])
-                        .is_ok_and(|w| apart(z) > 2.0 * (motion.global_of(w) - z).norm())
+                        .is_ok_and(|w| apart > 2.0 * (motion.global_of(w) - z).norm())
                 }),
             }
         })
