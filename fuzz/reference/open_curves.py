@@ -516,3 +516,31 @@ if __name__ == "__main__" and sys.argv[1:2] == ["curv41"]:
         print(f"  exactly free (F) or not (d) along the chord: {''.join('F' if f else 'd' for f in fs)}")
         for t, p in changes:
             print(f"  exact change at {t:.6f} of the chord: ({mpmath.nstr(p[0], 17)}, {mpmath.nstr(p[1], 17)})")
+
+
+# curv41's libFuzzer round: two class A findings (a traced center point on
+# the view's edge refused by `circle_point`), as CURV39_A: the poses, the
+# refused vertex, circle plane?, whether its edge is horizontal.
+CURV41_A = {
+    "11e1f642": ([(2.676510399999996e22, 2.919304e21, 0.0), (5.78085420887002e19, 2.919304e21, 0.0),
+                  (1.8506102137499996e23, 2.919304e21, 3.141592653589793),
+                  (1.1561654231082068e20, 2.919304e21, 3.141592653589793)],
+                 (52999887614849670000000.0, 2919304000000000000000.0), False, True),
+    "aefd216a": ([(2.8713e18, 3.1415926455116683, 0.0), (6.644645503795821e18, 7.270145734513581, 0.0),
+                  (3.2158560000000004e19, 35.18583763176272, 3.141592653589793),
+                  (3.0256323750000005e19, 33.10453250397926, 3.141592653589793)],
+                 (17982707313448956000.0, 32.0), False, True),
+}
+
+
+if __name__ == "__main__" and sys.argv[1:] == ["curv41-a"]:
+    # python fuzz/reference/open_curves.py curv41-a
+    for name, (poses, point, circle, horizontal) in CURV41_A.items():
+        terms = curve(poses, circle)
+        first, root = distance(terms, point)
+        cx, cy = edge_crossing(terms, point, horizontal)
+        print(f"class A {name}: {'circle' if circle else 'center'} vertex {point} exact distance "
+              f"{mpmath.nstr(root, 4)} (first order {mpmath.nstr(first, 4)}); the edge's exact crossing "
+              f"({mpmath.nstr(cx, 20)}, {mpmath.nstr(cy, 20)}); one ulp moves the curve "
+              f"{mpmath.nstr(condition(poses, point, circle, 8), 3)}; terms "
+              f"{', '.join(f'{m}: {mpmath.nstr(c, 5)}' for m, c in terms)}")
