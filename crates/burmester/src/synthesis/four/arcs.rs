@@ -643,7 +643,12 @@ const VERTICES: &str = "free arcs' vertices";
 /// circle points are nearly that of the driven dyad, the classifier's
 /// boundary about it covers a long stretch of the line). The middle of a
 /// chord whose ends' circle points are nearly one point ([`CONTRACTED`])
-/// is classified too. A mark (other than the driven dyad's point and the
+/// is classified too, and so is that of a chord of two free ends that may
+/// hide a crossing of an extreme line and back ([`Chords::hides`]: an
+/// end's circle point near a Filemon line, or the ends in different halves
+/// of the double wedge). Where a free middle is inserted next to a mark of
+/// unknown class, the half next to the mark is examined again
+/// ([`Chords::fill`]). A mark (other than the driven dyad's point and the
 /// changes found here) whose own point is decidedly of one class
 /// (`mark_class`: an arc end's center that is rounding along a line of
 /// centers, [`FilemonArcs::mark_class`]) counts as of that class, so a
@@ -869,7 +874,7 @@ fn change(at: Point2<f64>) -> Vertex {
 /// double wedge is convex, so a curve within `reach` of a chord whose ends
 /// are farther than `reach` inside one half stays inside it. In the center
 /// plane the circle points of the chord's stretch are only known at its
-/// ends. Measured on the fuzz inputs of `free-arc-chord-hides-a-stretch-*`:
+/// ends. Measured on the fuzz inputs `free-chord-of-two-free-ends-hides-*`:
 /// the curve crosses an extreme line and back within one chord of two free
 /// ends, next to `C1`, an arc end or a pair of meets lost to rounding.
 const HIDDEN: f64 = 1.0;
