@@ -338,15 +338,26 @@ CURV39_B = {
 }
 
 
+def class_a_report(name, poses, point, circle, horizontal, more=False):
+    """One class A row: the refused vertex's exact distance, its edge's
+    exact crossing and how far one ulp of the task moves the curve there
+    (``more``: also the first-order distance and the exact terms)."""
+    terms = curve(poses, circle)
+    first, root = distance(terms, point)
+    cx, cy = edge_crossing(terms, point, horizontal)
+    extra = f" (first order {mpmath.nstr(first, 4)})" if more else ""
+    line = (f"class A {name}: {'circle' if circle else 'center'} vertex {point} exact distance "
+            f"{mpmath.nstr(root, 4)}{extra}; the edge's exact crossing ({mpmath.nstr(cx, 20)}, {mpmath.nstr(cy, 20)}); "
+            f"one ulp moves the curve {mpmath.nstr(condition(poses, point, circle, 8), 3)}")
+    if more:
+        line += "; terms " + ", ".join(f"{m}: {mpmath.nstr(c, 5)}" for m, c in terms)
+    print(line)
+
+
 if __name__ == "__main__" and sys.argv[1:] == ["curv39"]:
     # python fuzz/reference/open_curves.py curv39
-    for name, (poses, point, circle, horizontal) in CURV39_A.items():
-        terms = curve(poses, circle)
-        first, root = distance(terms, point)
-        cx, cy = edge_crossing(terms, point, horizontal)
-        print(f"class A {name}: {'circle' if circle else 'center'} vertex {point} exact distance "
-              f"{mpmath.nstr(root, 4)}; the edge's exact crossing ({mpmath.nstr(cx, 20)}, {mpmath.nstr(cy, 20)}); "
-              f"one ulp moves the curve {mpmath.nstr(condition(poses, point, circle, 8), 3)}")
+    for name, case in CURV39_A.items():
+        class_a_report(name, *case)
     for name, (poses, c0, c1, x, ys) in CURV39_B.items():
         for kind, y in class_b_changes(poses, c0, c1, x, ys):
             print(f"class B {name}: line x = {x}: {kind} at y = {mpmath.nstr(y, 12)}")
@@ -535,12 +546,5 @@ CURV41_A = {
 
 if __name__ == "__main__" and sys.argv[1:] == ["curv41-a"]:
     # python fuzz/reference/open_curves.py curv41-a
-    for name, (poses, point, circle, horizontal) in CURV41_A.items():
-        terms = curve(poses, circle)
-        first, root = distance(terms, point)
-        cx, cy = edge_crossing(terms, point, horizontal)
-        print(f"class A {name}: {'circle' if circle else 'center'} vertex {point} exact distance "
-              f"{mpmath.nstr(root, 4)} (first order {mpmath.nstr(first, 4)}); the edge's exact crossing "
-              f"({mpmath.nstr(cx, 20)}, {mpmath.nstr(cy, 20)}); one ulp moves the curve "
-              f"{mpmath.nstr(condition(poses, point, circle, 8), 3)}; terms "
-              f"{', '.join(f'{m}: {mpmath.nstr(c, 5)}' for m, c in terms)}")
+    for name, case in CURV41_A.items():
+        class_a_report(name, *case, more=True)
