@@ -409,10 +409,11 @@ aaa7b4d6 38585.9374 -3707.06548092 -2044.63042688 77171.875 -0.00082421875 0.285
 /// to each exact class change (in view diagonals; `-` for none: `46b64ec4`
 /// omits `0.18` of the view next to them, where its labels are not
 /// decided; `39a73d5f`'s second change is the exact curve's point on
-/// another part of the curve, `4e12` off the chord), the exact curve's point `D` at the failing chord's middle
-/// (exactly defective), the exact class changes along that chord (each
-/// bisected on the exact curve, `fuzz/reference/open_curves.py curv41`),
-/// and the finding's 20 numbers ([`Finding`]). No free arc passes within
+/// another part of the curve, `1.6e13` from the chord), the exact curve's
+/// point `D` at the failing chord's middle (exactly defective), the exact
+/// class changes along that chord (each bisected on the exact curve,
+/// `fuzz/reference/open_curves.py curv41`), and the finding's 20 numbers
+/// ([`Finding`]). No free arc passes within
 /// half the distance from `D` to the nearest change, and the classifier's
 /// check holds on 16 points of every chord (before the fix it fails there).
 #[test]
