@@ -338,15 +338,26 @@ CURV39_B = {
 }
 
 
+def class_a_report(name, poses, point, circle, horizontal, more=False):
+    """One class A row: the refused vertex's exact distance, its edge's
+    exact crossing and how far one ulp of the task moves the curve there
+    (``more``: also the first-order distance and the exact terms)."""
+    terms = curve(poses, circle)
+    first, root = distance(terms, point)
+    cx, cy = edge_crossing(terms, point, horizontal)
+    extra = f" (first order {mpmath.nstr(first, 4)})" if more else ""
+    line = (f"class A {name}: {'circle' if circle else 'center'} vertex {point} exact distance "
+            f"{mpmath.nstr(root, 4)}{extra}; the edge's exact crossing ({mpmath.nstr(cx, 20)}, {mpmath.nstr(cy, 20)}); "
+            f"one ulp moves the curve {mpmath.nstr(condition(poses, point, circle, 8), 3)}")
+    if more:
+        line += "; terms " + ", ".join(f"{m}: {mpmath.nstr(c, 5)}" for m, c in terms)
+    print(line)
+
+
 if __name__ == "__main__" and sys.argv[1:] == ["curv39"]:
     # python fuzz/reference/open_curves.py curv39
-    for name, (poses, point, circle, horizontal) in CURV39_A.items():
-        terms = curve(poses, circle)
-        first, root = distance(terms, point)
-        cx, cy = edge_crossing(terms, point, horizontal)
-        print(f"class A {name}: {'circle' if circle else 'center'} vertex {point} exact distance "
-              f"{mpmath.nstr(root, 4)}; the edge's exact crossing ({mpmath.nstr(cx, 20)}, {mpmath.nstr(cy, 20)}); "
-              f"one ulp moves the curve {mpmath.nstr(condition(poses, point, circle, 8), 3)}")
+    for name, case in CURV39_A.items():
+        class_a_report(name, *case)
     for name, (poses, c0, c1, x, ys) in CURV39_B.items():
         for kind, y in class_b_changes(poses, c0, c1, x, ys):
             print(f"class B {name}: line x = {x}: {kind} at y = {mpmath.nstr(y, 12)}")
@@ -408,3 +419,132 @@ if __name__ == "__main__" and sys.argv[1:2] == ["curv40"]:
             x, y = project(terms, (e0[0] + f * (e1[0] - e0[0]), e0[1] + f * (e1[1] - e0[1])))
             out.append(f"{mpmath.nstr(x, 20)} {mpmath.nstr(y, 20)}")
         print(f"{name}: exact points " + "  ".join(out))
+
+
+# curv41: the 13 open class B inputs of stop 39's rounds. Each: circle
+# plane?, the library's class of the check's point (`classify`), the poses,
+# the driven dyad's C0 and C1, the failing chord's ends (on a11cbfa) and
+# the check's point (the float curve's point at the chord's middle).
+CURV41 = {
+    "31324d87": (True, "Defective",
+                 [(0.05825367578124999, 6403515.625, 32.99609375), (-0.08979319921875, -9.648437500000002e-08, 0.058484375), (9800.000050550781, 0.05, 0.00390625), (0.05825367578124999, 6403515.625, 33.8359375)],
+                 (715809.4476516463, 3220175.7585907504), (7260.515008336862, 6439565.881922528),
+                 ((-16955.41386695779, 6516559.222124699), (182219.03322689005, 6289994.032878297)), (92.24922208031603, 6403723.650372982)),
+    "364854dc": (True, "Defective",
+                 [(0.015625000000000187, 6.403515625e-08, 34.99609375), (0.015624999999999101, -9.6484375e-22, 0.058484375), (0.015625, 3.125e-14, 0.00390625), (0.015624999872, -1.2800000000099998e-10, 4.7000000000000004e-08)],
+                 (0.015624984886440116, 1.4678505772004302e-08), (0.015624941179273462, 8.640351830569613e-08),
+                 ((0.015623950566913687, 4.5261806339641523e-07), (0.015626143191377846, -3.5769370204132076e-07)), (0.015625046738564505, 4.708139736580192e-08)),
+    "39a73d5f": (True, "Defective",
+                 [(6517187500000000.0, 8517578124.999999, 0.08533203125), (6493360236821671.0, -556530050163462.5, 8e-09), (6485765796789330.0, 640616571750944.9, 0.18359375), (6343807809267905.0, 1494648987540833.0, 0.31640625)],
+                 (-284938511019519.0, 324798650228.1875), (-12802286733404.0, 799906376543.3125),
+                 ((-12455162131033.0, 383028641473.6875), (-11773259266824.0, 1157977528051.625)), (-12550861775246.0, 759135857208.0)),
+    "46b64ec4": (False, "Defective",
+                 [(-0.10675390625, 64.1015625, -0.10675392912109376), (-6.623145950926372, 57.86495073645306, 0.0), (-9.900053661252608, 54.16408072579688, 0.058484375), (-21.610188072305288, 35.823635733390226, 0.31640625)],
+                 (54.999982276682786, -3.233386279077877e-05), (61.36466118195946, 10.284069449524097),
+                 ((54.89935710156645, -0.6128190572919849), (55.05876264929795, 0.6127543895664034)), (54.97912445993883, -4.0743415098631885e-05)),
+    "7afa44b8": (True, "Defective",
+                 [(0.00199609375, 5.7324218750000004e-08, -3.90625e-12), (-3.90625e-12, -3.90625e-06, 0.01499609375), (80550.78125, 1.99609375, 0.0234375), (0.0, 2.6e-08, 0.04837890625)],
+                 (0.001176699162897421, -0.1388673164097718), (860460.9468367817, 38465535.662195235),
+                 ((0.009218004033755278, 0.1366094783081399), (0.019801638500211993, -0.40264514728242196)), (0.0012656906401389278, -0.13327776797051538)),
+    "7cf7d3a1": (False, "Boundary",
+                 [(0.0, 0.0, 0.3203125), (0.0, 0.99609375, -35.140625), (0.0, 0.99609375, 0.0), (0.0, 0.0, 18.97265625)],
+                 (-0.4980468749999999, 0.49804687500000006), (-1.3423717870212386e-16, 5.551115123125783e-17),
+                 ((0.2908186388220465, 0.48401634096579566), (0.2908186388220467, 0.512077409034204)), (0.2908186388220466, 0.4980468749999562)),
+    "9b4f278e": (True, "Defective",
+                 [(-8.088671875e-08, -3.90625e-12, 0.00099609375), (5.46875e-05, 64.96484375, 0.02734375), (0.0, -8.088671875e-08, 0.1), (0.0, 0.0, 0.0)],
+                 (1.0000790322566579e-06, -5.39372188157472e-06), (-0.42796905477327596, -32.482426922189475),
+                 ((4.9896005843900486e-06, -0.00014473302261208687), (1.8327314351902597e-06, 1.60181078996402e-05)), (-5.374119654469956e-07, -6.443500131325663e-05)),
+    "c6291f2d": (True, "Defective",
+                 [(2.675e-08, 6.0390625e-09, -0.00241792075), (2.675e-08, 6.0390625e-09, 0.058484375), (0.9765625, -0.00241789975390625, -41.0), (0.0, 8.945312500000001e-10, -0.023)],
+                 (-1.6588177059739806e-07, 8.967687649876627e-07), (3.1510313424466823, -17.07077049498886),
+                 ((1.2047344416510342e-07, -6.654412698092749e-07), (-5.621126174804036e-07, 2.4455333356115765e-06)), (-1.4440337073318155e-07, 9.068126874603585e-07)),
+    "eb1a5faa": (False, "Defective",
+                 [(-412423437.5, 8359.292578125, 0.03515625), (-416640624.9999974, 8359.37501059961, -81.98046875), (-416640625.0, 8359.375, 81.07421875), (-416640625.0, 8359.375, 4.5000000000000006e-08)],
+                 (-416640624.99995935, 8359.37523463886), (-414532031.0056545, 12508835.180179333),
+                 ((-414532031.0279528, 12126002.27959664), (-414532031.4361088, -9520124.859531816)), (-414532031.22480667, 1302938.7100324116)),
+    "f04da194": (True, "Defective",
+                 [(59999999550.78125, 312500001.0, 32.99609375), (-8984824.21875, 0.9999999815507813, 0.0), (59999999550.78125, 312500001.0, 1.0), (-449.21875, 312500001.0, 0.34765625)],
+                 (29989079575.76145, 87146984866.71089), (61172210616.46568, -1319630143.5197957),
+                 ((60709049561.38364, 908612749.8238901), (59216996557.29637, -1005636676.7861879)), (59676291058.78953, 325980190.8880736)),
+    "f18da199": (True, "Defective",
+                 [(-41164.04375, 6403474.4609375, 32.99609375), (-41164.15234375, -41.16406259648438, 0.058484375), (-41164.0625, 58.4453125, 0.00390625), (-53964.0625, -12841.164062599999, 0.0)],
+                 (-3406061.4395085876, 3177914.1100782314), (-3312064.7534788013, 3088121.416369059),
+                 ((-3399434.971931344, 3150168.792097484), (-3307199.852221628, 3084605.9008044787)), (-3330081.4581103995, 3124136.344894786)),
+    "f783a3c5": (False, "Boundary",
+                 [(-3.274627761523147e-14, 8.515625e-12, -34.0029385964102), (-3.2825261473097346e-14, 8.515625e-12, -34.0068448464102), (-3.851953221875e-14, 8.515625e-12, 3.141592653589793), (-3.8519238338422617e-14, 8.515625e-12, 3.137686403589793)],
+                 (-3.5661147692263743e-14, 8.525666968399642e-12), (-3.563275797682738e-14, 8.525691705076074e-12),
+                 ((-6.47155753728142e-14, 8.533907969269178e-12), (-6.589579449936511e-15, 8.517486639365457e-12)), (-3.5652577411375357e-14, 8.525697304317317e-12)),
+    "5856f48f": (False, "Defective",
+                 [(-0.42998948867187503, 1.05128125e-05, 0.0), (-0.42998951473198416, 1.053638031280996e-05, 0.0022460937500000003), (-0.4299899297156499, 1.0897792971164332e-05, 0.03742578125), (-0.429988530030535, 9.971394888299404e-06, -0.05016796875)],
+                 (-0.4299997991841345, -1.0754844431235276e-06), (-0.429999994496634, -1.0778125070485094e-06),
+                 ((-0.4299997991851563, -5.598873792390182e-06), (-0.42999979918515635, -6.108584684234303e-06)), (-0.42999979918515635, -5.8537292383122425e-06)),
+}
+
+
+def curv41_exact(name, steps=32):
+    """The exact class of the check's point (taken onto the exact curve
+    along the gradient; its exact circle point in the center plane; the
+    exact Filemon signs), the exact class of the exact curve's points next
+    to the chord at ``1/steps`` steps, and each change along it bisected
+    (50 steps) to the exact curve's point there."""
+    circle, _lib, poses, c0, c1, (a, b), q = CURV41[name]
+    terms = curve(poses, circle)
+
+    def cls(p):
+        x, y = project(terms, p)
+        a1 = (x, y) if circle else exact_circle_point(poses, x, y)
+        s = branch_signs(poses, c0, c1, a1)
+        return all(v > 0 for v in s) or all(v < 0 for v in s), (x, y), s
+
+    at = lambda t: (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+    free_q, pq, signs = cls(q)
+    ts = [k / steps for k in range(steps + 1)]
+    fs = [cls(at(t))[0] for t in ts]
+    changes = []
+    for k in range(steps):
+        if fs[k] != fs[k + 1]:
+            lo, hi = ts[k], ts[k + 1]
+            for _ in range(50):
+                mid = (lo + hi) / 2
+                if cls(at(mid))[0] == fs[k]:
+                    lo = mid
+                else:
+                    hi = mid
+            changes.append((lo, cls(at(lo))[1]))
+    return free_q, pq, signs, fs, changes
+
+
+if __name__ == "__main__" and sys.argv[1:2] == ["curv41"]:
+    # python fuzz/reference/open_curves.py curv41 [name ...]
+    for name, case in CURV41.items():
+        if sys.argv[2:] and name not in sys.argv[2:]:
+            continue
+        free_q, pq, signs, fs, changes = curv41_exact(name)
+        print(f"{name} ({'circle' if case[0] else 'center'} plane): the check's point is {case[1]} by the "
+              f"library, exactly {'free' if free_q else 'defective'} (signs "
+              f"{', '.join(mpmath.nstr(v, 3) for v in signs)}; on the exact curve at "
+              f"({mpmath.nstr(pq[0], 17)}, {mpmath.nstr(pq[1], 17)}))")
+        print(f"  exactly free (F) or not (d) along the chord: {''.join('F' if f else 'd' for f in fs)}")
+        for t, p in changes:
+            print(f"  exact change at {t:.6f} of the chord: ({mpmath.nstr(p[0], 17)}, {mpmath.nstr(p[1], 17)})")
+
+
+# curv41's libFuzzer round: two class A findings (a traced center point on
+# the view's edge refused by `circle_point`), as CURV39_A: the poses, the
+# refused vertex, circle plane?, whether its edge is horizontal.
+CURV41_A = {
+    "11e1f642": ([(2.676510399999996e22, 2.919304e21, 0.0), (5.78085420887002e19, 2.919304e21, 0.0),
+                  (1.8506102137499996e23, 2.919304e21, 3.141592653589793),
+                  (1.1561654231082068e20, 2.919304e21, 3.141592653589793)],
+                 (52999887614849670000000.0, 2919304000000000000000.0), False, True),
+    "aefd216a": ([(2.8713e18, 3.1415926455116683, 0.0), (6.644645503795821e18, 7.270145734513581, 0.0),
+                  (3.2158560000000004e19, 35.18583763176272, 3.141592653589793),
+                  (3.0256323750000005e19, 33.10453250397926, 3.141592653589793)],
+                 (17982707313448956000.0, 32.0), False, True),
+}
+
+
+if __name__ == "__main__" and sys.argv[1:] == ["curv41-a"]:
+    # python fuzz/reference/open_curves.py curv41-a
+    for name, case in CURV41_A.items():
+        class_a_report(name, *case, more=True)

@@ -355,12 +355,27 @@ impl FilemonArcs {
             return Label {
                 free: is_free,
                 image,
+                room: 0.0,
             };
         }
+        let room = self.room(image.unwrap_or(p));
+        let free = self.decided(p, circle, image, room.abs());
         Label {
-            free: Some(self.decided(p, circle, image)),
+            free: Some(free),
             image,
+            room: if free { room } else { 0.0 },
         }
+    }
+
+    /// The distance of a circle point from the nearest Filemon line (of
+    /// the four), signed by the half of the double wedge it is in (the sign
+    /// of its first branch sign: the half of a free point).
+    fn room(&self, z: Point2<f64>) -> f64 {
+        let s = self.circle_signs(z);
+        s.iter()
+            .zip(self.lines.directions().iter())
+            .fold(f64::INFINITY, |m, (s, d)| m.min(s.abs() / d.norm()))
+            .copysign(s[0])
     }
 
     /// The class of the curve's point next to a mark (an exact arc end, in
@@ -386,7 +401,7 @@ impl FilemonArcs {
         };
         let q = curve_point_near(curve, p, reach)?;
         let (is_free, image) = self.raw_class(q, circle);
-        is_free.filter(|_| self.decided(q, circle, image))
+        is_free.filter(|_| self.decided(q, circle, image, self.room(image.unwrap_or(q)).abs()))
     }
 
     /// The class of a point by its four signs (free, or `None` where a
@@ -406,24 +421,24 @@ impl FilemonArcs {
     /// `image` in the center plane) holds across the float curve's
     /// resolution there: its circle point is farther from every Filemon
     /// line than the band's width (the circle plane) or than twice the way
-    /// it moves as the center moves across the band (the center plane).
-    fn decided(&self, p: Point2<f64>, circle: bool, image: Option<Point2<f64>>) -> bool {
+    /// it moves as the center moves across the band (the center plane);
+    /// `apart` is that circle point's distance from the nearest line
+    /// ([`room`](Self::room)).
+    fn decided(
+        &self,
+        p: Point2<f64>,
+        circle: bool,
+        image: Option<Point2<f64>>,
+        apart: f64,
+    ) -> bool {
         let curve = if circle {
             self.four.circle_point_curve()
         } else {
             self.four.center_point_curve()
         };
-        // The distance of a circle point from the nearest Filemon line.
-        let d = self.lines.directions();
-        let apart = |z: Point2<f64>| {
-            let s = self.circle_signs(z);
-            s.iter()
-                .zip(d.iter())
-                .fold(f64::INFINITY, |m, (s, d)| m.min(s.abs() / d.norm()))
-        };
         resolution(curve, p).is_some_and(|r| {
             match image {
-                None => apart(p) > r,
+                None => apart > r,
                 // How far the circle point moves as the center moves
                 // across the band (one side: twice that, for the other).
                 // (The linear conditions solved as `circle_point` solves
@@ -434,7 +449,7 @@ impl FilemonArcs {
                     motion
                         .form
                         .solve(motion.local_of(p + g * r), &[1, 2, 3])
-                        .is_ok_and(|w| apart(z) > 2.0 * (motion.global_of(w) - z).norm())
+                        .is_ok_and(|w| apart > 2.0 * (motion.global_of(w) - z).norm())
                 }),
             }
         })
@@ -447,6 +462,10 @@ impl FilemonArcs {
 struct Label {
     free: Option<bool>,
     image: Option<Point2<f64>>,
+    /// For a free point, its circle point's distance from the nearest
+    /// Filemon line, signed by the half of the double wedge it is in (the
+    /// sign of its branch signs); `0` otherwise.
+    room: f64,
 }
 
 /// The band about the float curve, in units of the first-order move of
@@ -487,6 +506,8 @@ struct Vertex {
     free: Option<bool>,
     /// The circle point of a center point (the center plane, not a mark).
     image: Option<Point2<f64>>,
+    /// Its label's room ([`Label::room`]).
+    room: f64,
 }
 
 /// The progress of [`FilemonArcs::free_arcs_with`] in traced vertices, with its
@@ -622,7 +643,12 @@ const VERTICES: &str = "free arcs' vertices";
 /// circle points are nearly that of the driven dyad, the classifier's
 /// boundary about it covers a long stretch of the line). The middle of a
 /// chord whose ends' circle points are nearly one point ([`CONTRACTED`])
-/// is classified too. A mark (other than the driven dyad's point and the
+/// is classified too, and so is that of a chord of two free ends that may
+/// hide a crossing of an extreme line and back ([`Chords::hides`]: an
+/// end's circle point near a Filemon line, or the ends in different halves
+/// of the double wedge). Where a free middle is inserted next to a mark of
+/// unknown class, the half next to the mark is examined again
+/// ([`Chords::fill`]). A mark (other than the driven dyad's point and the
 /// changes found here) whose own point is decidedly of one class
 /// (`mark_class`: an arc end's center that is rounding along a line of
 /// centers, [`FilemonArcs::mark_class`]) counts as of that class, so a
@@ -659,11 +685,12 @@ fn resolve_changes(
         known.borrow_mut().push((k, c));
         c
     };
-    let change = |at| Vertex {
-        at,
-        mark: Some(CHANGE),
-        free: None,
-        image: None,
+    let ctx = Chords {
+        curve,
+        reach,
+        never,
+        free,
+        of_mark: &of_mark,
     };
     lines
         .iter()
@@ -676,6 +703,7 @@ fn resolve_changes(
                     Some(_) => Label {
                         free: None,
                         image: None,
+                        room: 0.0,
                     },
                     None => free(at),
                 };
@@ -684,75 +712,10 @@ fn resolve_changes(
                     mark,
                     free: label.free,
                     image: label.image,
+                    room: label.room,
                 };
                 if let Some(u) = prev {
-                    let (a, b) = (u.at, v.at);
-                    let (la, lb) = (u.free, v.free);
-                    // A chord next to a mark (an arc end that may be
-                    // rounding along a line of centers) or whose ends
-                    // differ; between two vertices of one class away from
-                    // the marks a change is a pair of them, which the exact
-                    // arc ends resolve, except on a stretch of centers whose
-                    // circle points are nearly one point (`contracted`).
-                    let marked = u.mark.is_some() || v.mark.is_some();
-                    // (Only a chord of free ends: a free stretch hidden in
-                    // a defective chord is omitted, not wrong.)
-                    let len = (b - a).norm();
-                    let contracted = match (u.image, v.image) {
-                        (Some(za), Some(zb)) => {
-                            la == Some(true)
-                                && lb == Some(true)
-                                && len > reach
-                                && (zb - za).norm() < CONTRACTED * len
-                        }
-                        _ => false,
-                    };
-                    if (la.is_some() || lb.is_some()) && (marked || la != lb || contracted) {
-                        let m = Point2::from((a.coords + b.coords) * 0.5);
-                        if let Some(q) = curve_point_between(curve, m, reach, a, b)
-                            .filter(|q| *q != a && *q != b)
-                        {
-                            let lq = free(q);
-                            if let Some(lm) = lq.free {
-                                // The driven dyad's point is never free.
-                                let differs_a = la.is_some_and(|l| l != lm)
-                                    || (lm && u.mark == Some(never))
-                                    || of_mark(&u).is_some_and(|l| l != lm);
-                                let differs_b = lb.is_some_and(|l| l != lm)
-                                    || (lm && v.mark == Some(never))
-                                    || of_mark(&v).is_some_and(|l| l != lm);
-                                if differs_a || differs_b {
-                                    poll.check()?;
-                                }
-                                if differs_a {
-                                    try_push(
-                                        &mut out,
-                                        VERTICES,
-                                        change(change_between(curve, reach, a, !lm, q, free)),
-                                    )?;
-                                }
-                                if differs_a || differs_b {
-                                    try_push(
-                                        &mut out,
-                                        VERTICES,
-                                        Vertex {
-                                            at: q,
-                                            mark: None,
-                                            free: Some(lm),
-                                            image: lq.image,
-                                        },
-                                    )?;
-                                }
-                                if differs_b {
-                                    try_push(
-                                        &mut out,
-                                        VERTICES,
-                                        change(change_between(curve, reach, q, lm, b, free)),
-                                    )?;
-                                }
-                            }
-                        }
-                    }
+                    ctx.fill(&u, &v, 0, &mut out, poll)?;
                 }
                 try_push(&mut out, VERTICES, v)?;
                 prev = Some(v);
@@ -761,6 +724,160 @@ fn resolve_changes(
         })
         .collect()
 }
+
+/// What [`resolve_changes`] examines each chord with.
+struct Chords<'a, F, M> {
+    curve: &'a Cubic,
+    reach: f64,
+    never: usize,
+    free: &'a F,
+    of_mark: &'a M,
+}
+
+/// How many times [`Chords::fill`] takes the half of a chord next to a
+/// mark of unknown class again.
+const REEXAMINE: usize = 64;
+
+impl<F, M> Chords<'_, F, M>
+where
+    F: Fn(Point2<f64>) -> Label,
+    M: Fn(&Vertex) -> Option<bool>,
+{
+    /// Whether a mark's own class is unknown (an arc end's point on its
+    /// extreme line within rounding, or one off the curve): not the driven
+    /// dyad's point (never free) nor a change found here.
+    fn unknown_mark(&self, w: &Vertex) -> bool {
+        w.mark.is_some_and(|k| k != self.never && k != CHANGE) && (self.of_mark)(w).is_none()
+    }
+
+    /// Whether a chord of two free ends may hide a stretch of the other
+    /// class ([`HIDDEN`]): its ends in different halves of the double wedge,
+    /// or either end's circle point nearer a Filemon line than the curve
+    /// may stray from the chord (the circle plane: `reach`) or than the
+    /// ends' circle points are apart (the center plane).
+    fn hides(&self, u: &Vertex, v: &Vertex) -> bool {
+        let span = match (u.image, v.image) {
+            (Some(za), Some(zb)) => (zb - za).norm(),
+            _ => self.reach,
+        };
+        u.room.is_sign_negative() != v.room.is_sign_negative()
+            || u.room.abs().min(v.room.abs()) <= HIDDEN * span
+    }
+
+    /// The vertices that the chord `u`-`v` hides, pushed onto `out` in
+    /// order (see [`resolve_changes`]): where the curve's point at its
+    /// middle has a class that differs from an end's, the change between
+    /// them (bisected) and the middle point. Where the middle is free and
+    /// inserted, and the other end is a mark of unknown class, the half
+    /// next to that mark is examined again (up to [`REEXAMINE`] times): a
+    /// chord from a mark across a free stretch to a defective vertex says
+    /// nothing of the stretch between the mark and the middle (fuzz input
+    /// `eb1a5faa`: an arc end's center that is rounding along a line of
+    /// centers, the exact class defective from it to `0.62` of the chord).
+    fn fill(
+        &self,
+        u: &Vertex,
+        v: &Vertex,
+        depth: usize,
+        out: &mut Vec<Vertex>,
+        poll: &mut Poll<'_, '_>,
+    ) -> Result<()> {
+        let (curve, reach, never, free) = (self.curve, self.reach, self.never, self.free);
+        let (a, b) = (u.at, v.at);
+        let (la, lb) = (u.free, v.free);
+        // A chord next to a mark (an arc end that may be rounding along a
+        // line of centers) or whose ends differ; between two vertices of
+        // one class away from the marks a change is a pair of them, which
+        // the exact arc ends resolve, except on a stretch of centers whose
+        // circle points are nearly one point (`contracted`) or where the
+        // chord may hide the pair (`hidden`).
+        let marked = u.mark.is_some() || v.mark.is_some();
+        // (Only a chord of free ends: a free stretch hidden in a defective
+        // chord is omitted, not wrong.)
+        let both_free = la == Some(true) && lb == Some(true);
+        let len = (b - a).norm();
+        let contracted = match (u.image, v.image) {
+            (Some(za), Some(zb)) => both_free && len > reach && (zb - za).norm() < CONTRACTED * len,
+            _ => false,
+        };
+        let hidden = both_free && self.hides(u, v);
+        if !((la.is_some() || lb.is_some()) && (marked || la != lb || contracted || hidden)) {
+            return Ok(());
+        }
+        let m = Point2::from((a.coords + b.coords) * 0.5);
+        let Some(q) = curve_point_between(curve, m, reach, a, b).filter(|q| *q != a && *q != b)
+        else {
+            return Ok(());
+        };
+        let lq = free(q);
+        let Some(lm) = lq.free else {
+            return Ok(());
+        };
+        // The driven dyad's point is never free.
+        let differs_a = la.is_some_and(|l| l != lm)
+            || (lm && u.mark == Some(never))
+            || (self.of_mark)(u).is_some_and(|l| l != lm);
+        let differs_b = lb.is_some_and(|l| l != lm)
+            || (lm && v.mark == Some(never))
+            || (self.of_mark)(v).is_some_and(|l| l != lm);
+        if !(differs_a || differs_b) {
+            return Ok(());
+        }
+        poll.check()?;
+        let w = Vertex {
+            at: q,
+            mark: None,
+            free: Some(lm),
+            image: lq.image,
+            room: lq.room,
+        };
+        let again = lm && depth < REEXAMINE;
+        if differs_a {
+            try_push(
+                out,
+                VERTICES,
+                change(change_between(curve, reach, a, !lm, q, free)),
+            )?;
+        } else if again && self.unknown_mark(u) {
+            self.fill(u, &w, depth + 1, out, poll)?;
+        }
+        try_push(out, VERTICES, w)?;
+        if differs_b {
+            try_push(
+                out,
+                VERTICES,
+                change(change_between(curve, reach, q, lm, b, free)),
+            )?;
+        } else if again && self.unknown_mark(v) {
+            self.fill(&w, v, depth + 1, out, poll)?;
+        }
+        Ok(())
+    }
+}
+
+/// A class change found by [`resolve_changes`], as a vertex.
+fn change(at: Point2<f64>) -> Vertex {
+    Vertex {
+        at,
+        mark: Some(CHANGE),
+        free: None,
+        image: None,
+        room: 0.0,
+    }
+}
+
+/// Where [`Chords::hides`] takes a chord of two free ends for one that may
+/// hide a stretch of the other class: an end's circle point within this
+/// many times the chord's span (the circle plane: the reach of the chord's
+/// own branch; the center plane: the distance of its ends' circle points)
+/// of a Filemon line. In the circle plane this is sure: each half of the
+/// double wedge is convex, so a curve within `reach` of a chord whose ends
+/// are farther than `reach` inside one half stays inside it. In the center
+/// plane the circle points of the chord's stretch are only known at its
+/// ends. Measured on the fuzz inputs `free-chord-of-two-free-ends-hides-*`:
+/// the curve crosses an extreme line and back within one chord of two free
+/// ends, next to `C1`, an arc end or a pair of meets lost to rounding.
+const HIDDEN: f64 = 1.0;
 
 /// The free arcs of polylines whose marked vertices (`Some(index)`) are
 /// the only places where the label can change: each polyline is cut at its
