@@ -975,21 +975,13 @@ fn trace_factored(
         }
     }
     // In the conic's order [A, B, C, D, E, F] (x^2, xy, y^2, x, y, 1).
-    // A quotient whose quadratic terms are too small to move it, anywhere
-    // in the view, by a thousandth of the chord tolerance from its line
-    // `D x + E y + F = 0` is that line there (its other points lie beyond
-    // `|(D, E)| / |(A, B, C)|`, far out). The conic sampler would take it
-    // for a line pair by its matrix (singular within `1e-12` of its norm)
-    // and draw lines where the curve is not (issue 24, class A: quadratic
-    // terms `2e-11` and `3e-16` of the linear ones, a line drawn across
-    // the view `165` and `1e6` from the exact curve, `open_curves.py`).
-    let far = view.lo.amax().max(view.hi.amax());
-    let quadratic = (q2[3].abs() + q2[4].abs() + q2[5].abs()) * far * far;
-    let qc = if quadratic <= 1e-3 * view.tol * q2[1].hypot(q2[2]) {
-        [0.0, 0.0, 0.0, q2[1], q2[2], q2[0]]
-    } else {
-        [q2[3], q2[4], q2[5], q2[1], q2[2], q2[0]]
-    };
+    // A quotient whose quadratic terms are too small to move it in the
+    // view is drawn by the conic sampler as its line `D x + E y + F = 0`
+    // (`Conic::polylines`; issue 24, class A: quadratic terms `2e-11` and
+    // `3e-16` of the linear ones, taken for a line pair by the conic's
+    // matrix, drew a line across the view `165` and `1e6` from the exact
+    // curve, `open_curves.py`).
+    let qc = [q2[3], q2[4], q2[5], q2[1], q2[2], q2[0]];
     let conic = crate::geom::Conic::local(qc, cubic.origin, cubic.scale, None);
     let tol = view.tol * cubic.scale;
     let mut components = Vec::new();
