@@ -841,3 +841,51 @@ fn issue24_a_root_that_its_window_cannot_place_is_kept() {
         1e-6,
     );
 }
+
+/// Fuzz findings `33fcbf9c` and `2461959a`, each in its moved frame
+/// (angles `100` and `65656` rad, known to `1.4e-14` and `1.5e-11`): the
+/// bound of the angles' rounding, from the magnitudes of the terms,
+/// called the resultant of every well conditioned choice of the shared
+/// poses zero within rounding (`1e-5` against `3e-8` in `33fcbf9c`, where
+/// the angles' rounding moves it by `1.4e-15`), and the answer came from a
+/// badly conditioned choice: no points where the exact task has two
+/// (`33fcbf9c`: four poses nearly rotations about one point, a complex pair
+/// `2e-3` off the real plane), two of four (`2461959a`). The angles'
+/// rounding is now measured (each angle moved alone). Exact points:
+/// `tests/python/burmester_reference.py` (mpmath). Fails before: no points;
+/// the point `(-8.6e16, -9.6e15)` missing.
+#[test]
+fn issue24_angles_known_to_their_rounding_do_not_skip_every_good_choice() {
+    assert_at_exact(
+        "33fcbf9c moved",
+        &[
+            (2.688393327041083, 1.9084406514770993, -102.7470614035898),
+            (-1.2101307279109845, -3.2701504594429127, -99.60546975),
+            (-2.4928766289830095, -0.4396138834149905, -100.60546875),
+            (2.6943628476454182, 1.916386853216854, -102.7470614035898),
+            (-1.2100898071492252, -3.2701941934657177, -99.605451498),
+        ],
+        &[
+            (0.4996073932088858, -0.4946992382217919),
+            (0.7391314461864061, -0.6808573556362969),
+        ],
+        1e-6,
+    );
+    assert_at_exact(
+        "2461959a moved",
+        &[
+            (330457.4099037527, -66962971.01374104, 65656.250001),
+            (2462350.512538664, -66736979.696875334, 65656.221999),
+            (316380.5643384256, -66963426.06423548, 65656.225327),
+            (104939064316461.33, -994478720754866.8, 65656.226959),
+            (104939064316461.33, -994478720754866.8, 65656.225327),
+        ],
+        &[
+            (-8.635743591294869e16, -9615358589019186.0),
+            (22250444.514649183, -253663633.98339164),
+            (52476485085244.37, -497238663825545.94),
+            (55292115152042.266, -496941817716133.2),
+        ],
+        1e-6,
+    );
+}
