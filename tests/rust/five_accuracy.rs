@@ -889,3 +889,75 @@ fn issue24_angles_known_to_their_rounding_do_not_skip_every_good_choice() {
         1e-6,
     );
 }
+
+/// A five-pose answer that lists a point twice where another reference
+/// pose lists it once is refused (`FivePositions::new`'s check; five41).
+/// Fuzz findings `3ef91cde` and `d984b3d2`, each in its moved frame: both
+/// points listed twice (a complex pair `0.25` task sizes off the real
+/// plane, and two points at infinity, read as double points and moved
+/// onto the simple ones by the refinement) where the exact task has each
+/// once (mpmath, `tests/python/burmester_reference.py`); the other
+/// reference poses list each once. The check compared only points apart
+/// from the others, so a double point passed it. Fails before: four points,
+/// each exact one twice.
+#[test]
+fn issue24_a_double_point_that_another_reference_pose_lists_once_is_refused() {
+    type Case = (&'static str, [(f64, f64, f64); 5], [(f64, f64); 2]);
+    let cases: [Case; 2] = [
+        (
+            "3ef91cde moved",
+            [
+                (-3.3907279326441238, -0.09944792341978526, -0.0997646929375),
+                (-2.39570352897566, -0.19904788792168798, -0.0997656929375),
+                (-3.390731058615301, -0.09944761051628546, 3.041826960652293),
+                (-3.390730959015024, -0.09944661548875583, 3.041826960652293),
+                (-3.3907309590140287, -0.09944661548885543, 0.9002343070625),
+            ],
+            [
+                (-3.3907296824220903, -0.09944963298278792),
+                (-2.893216957590906, -0.14924439066009987),
+            ],
+        ),
+        (
+            "d984b3d2 moved",
+            [
+                (
+                    1.5068567133818246e-5,
+                    -0.0006332161533354372,
+                    -64.39162109375,
+                ),
+                (
+                    1.5171517817306995e-5,
+                    -0.0006332731578474464,
+                    -64.39062487228125,
+                ),
+                (-3.893928431355109, -1.047530166343804, -64.390625),
+                (-923.2326123968348, 73283.2586258713, -64.390625),
+                (1.506836820337093e-5, -0.0006332834262157036, -64.390625),
+            ],
+            [
+                (-9752.13698791159, 36265.96943053909),
+                (-69.19089523121255, 257.8095375703168),
+            ],
+        ),
+    ];
+    for (name, poses, exact) in cases {
+        let q: Vec<Pose> = poses.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect();
+        match FivePositions::new(&q) {
+            Ok(f) => {
+                // Each exact point once: no point listed twice.
+                let pts = f.burmester_points();
+                for (i, p) in pts.iter().enumerate() {
+                    assert!(
+                        pts[i + 1..].iter().all(|d| d.center != p.center),
+                        "{name}: {} listed twice ({:?})",
+                        p.center,
+                        pts.iter().map(|d| d.center).collect::<Vec<_>>()
+                    );
+                }
+                assert_at_exact(name, &poses, &exact, 1e-6);
+            }
+            Err(_) => assert_refused(name, &poses, &exact),
+        }
+    }
+}
