@@ -841,3 +841,123 @@ fn issue24_a_root_that_its_window_cannot_place_is_kept() {
         1e-6,
     );
 }
+
+/// Fuzz findings `33fcbf9c` and `2461959a`, each in its moved frame
+/// (angles `100` and `65656` rad, known to `1.4e-14` and `1.5e-11`): the
+/// bound of the angles' rounding, from the magnitudes of the terms,
+/// called the resultant of every well conditioned choice of the shared
+/// poses zero within rounding (`1e-5` against `3e-8` in `33fcbf9c`, where
+/// the angles' rounding moves it by `1.4e-15`), and the answer came from a
+/// badly conditioned choice: no points where the exact task has two
+/// (`33fcbf9c`: four poses nearly rotations about one point, a complex pair
+/// `2e-3` off the real plane), two of four (`2461959a`). The angles'
+/// rounding is now measured (each angle moved alone). Exact points:
+/// `tests/python/burmester_reference.py` (mpmath). Fails before: no points;
+/// the point `(-8.6e16, -9.6e15)` missing.
+#[test]
+fn issue24_angles_known_to_their_rounding_do_not_skip_every_good_choice() {
+    assert_at_exact(
+        "33fcbf9c moved",
+        &[
+            (2.688393327041083, 1.9084406514770993, -102.7470614035898),
+            (-1.2101307279109845, -3.2701504594429127, -99.60546975),
+            (-2.4928766289830095, -0.4396138834149905, -100.60546875),
+            (2.6943628476454182, 1.916386853216854, -102.7470614035898),
+            (-1.2100898071492252, -3.2701941934657177, -99.605451498),
+        ],
+        &[
+            (0.4996073932088858, -0.4946992382217919),
+            (0.7391314461864061, -0.6808573556362969),
+        ],
+        1e-6,
+    );
+    assert_at_exact(
+        "2461959a moved",
+        &[
+            (330457.4099037527, -66962971.01374104, 65656.250001),
+            (2462350.512538664, -66736979.696875334, 65656.221999),
+            (316380.5643384256, -66963426.06423548, 65656.225327),
+            (104939064316461.33, -994478720754866.8, 65656.226959),
+            (104939064316461.33, -994478720754866.8, 65656.225327),
+        ],
+        &[
+            (-8.635743591294869e16, -9615358589019186.0),
+            (22250444.514649183, -253663633.98339164),
+            (52476485085244.37, -497238663825545.94),
+            (55292115152042.266, -496941817716133.2),
+        ],
+        1e-6,
+    );
+}
+
+/// A five-pose answer that lists a point twice where another reference
+/// pose lists it once is refused (`FivePositions::new`'s check; five41).
+/// Fuzz findings `3ef91cde` and `d984b3d2`, each in its moved frame: both
+/// points listed twice (a complex pair `0.25` task sizes off the real
+/// plane, and two points at infinity, read as double points and moved
+/// onto the simple ones by the refinement) where the exact task has each
+/// once (mpmath, `tests/python/burmester_reference.py`); the other
+/// reference poses list each once. The check compared only points apart
+/// from the others, so a double point passed it. Fails before: four points,
+/// each exact one twice.
+#[test]
+fn issue24_a_double_point_that_another_reference_pose_lists_once_is_refused() {
+    type Case = (&'static str, [(f64, f64, f64); 5], [(f64, f64); 2]);
+    let cases: [Case; 2] = [
+        (
+            "3ef91cde moved",
+            [
+                (-3.3907279326441238, -0.09944792341978526, -0.0997646929375),
+                (-2.39570352897566, -0.19904788792168798, -0.0997656929375),
+                (-3.390731058615301, -0.09944761051628546, 3.041826960652293),
+                (-3.390730959015024, -0.09944661548875583, 3.041826960652293),
+                (-3.3907309590140287, -0.09944661548885543, 0.9002343070625),
+            ],
+            [
+                (-3.3907296824220903, -0.09944963298278792),
+                (-2.893216957590906, -0.14924439066009987),
+            ],
+        ),
+        (
+            "d984b3d2 moved",
+            [
+                (
+                    1.5068567133818246e-5,
+                    -0.0006332161533354372,
+                    -64.39162109375,
+                ),
+                (
+                    1.5171517817306995e-5,
+                    -0.0006332731578474464,
+                    -64.39062487228125,
+                ),
+                (-3.893928431355109, -1.047530166343804, -64.390625),
+                (-923.2326123968348, 73283.2586258713, -64.390625),
+                (1.506836820337093e-5, -0.0006332834262157036, -64.390625),
+            ],
+            [
+                (-9752.13698791159, 36265.96943053909),
+                (-69.19089523121255, 257.8095375703168),
+            ],
+        ),
+    ];
+    for (name, poses, exact) in cases {
+        let q: Vec<Pose> = poses.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect();
+        match FivePositions::new(&q) {
+            Ok(f) => {
+                // Each exact point once: no point listed twice.
+                let pts = f.burmester_points();
+                for (i, p) in pts.iter().enumerate() {
+                    assert!(
+                        pts[i + 1..].iter().all(|d| d.center != p.center),
+                        "{name}: {} listed twice ({:?})",
+                        p.center,
+                        pts.iter().map(|d| d.center).collect::<Vec<_>>()
+                    );
+                }
+                assert_at_exact(name, &poses, &exact, 1e-6);
+            }
+            Err(_) => assert_refused(name, &poses, &exact),
+        }
+    }
+}
