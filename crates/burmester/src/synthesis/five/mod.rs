@@ -1214,7 +1214,13 @@ impl Elimination {
         (r.0, tolerance::BURMESTER_EPS * f64::EPSILON * r.1)
     }
 
-    /// The real roots of the resultant (angles in `[0, pi)`, with their
+    /// The first part of [`Self::roots_placed`] (tests).
+    #[cfg(test)]
+    fn roots(&self) -> Vec<(f64, usize)> {
+        self.roots_placed().0
+    }
+
+    /// First: the real roots of the resultant (angles in `[0, pi)`, with their
     /// multiplicity): those of [`form_roots_mult`] on its expanded
     /// coefficients, and near every root of those coefficients (real, or
     /// complex within [`CLUSTER_WINDOW`] of the real line) again from the
@@ -1239,13 +1245,9 @@ impl Elimination {
     /// when the first search found six simple roots, each a sign change of
     /// the accurate value, with that value beyond its band between every
     /// two neighbours. Nothing is left then for a crowd to hide.
-    #[cfg(test)]
-    fn roots(&self) -> Vec<(f64, usize)> {
-        self.roots_placed().0
-    }
-
-    /// [`Self::roots`], and the roots among them placed only to their
-    /// window (angle, half width: see [`Self::searched_again`]).
+    ///
+    /// Second: the roots among them placed only to their window (angle,
+    /// half width: see [`Self::searched_again_keeping`]).
     #[allow(clippy::type_complexity)]
     fn roots_placed(&self) -> (Vec<(f64, usize)>, Vec<(f64, f64)>) {
         let value = |wx: f64, wy: f64| self.resultant_at(Vector2::new(wx, wy));
@@ -1258,16 +1260,17 @@ impl Elimination {
         (roots, kept)
     }
 
-    /// `roots` (of [`form_roots_mult`]) with those in each of [`clusters`]'
-    /// windows replaced by the roots found there again from the forms
-    /// turned to the window (see [`Elimination::roots`]).
+    /// [`Self::searched_again_keeping`] without the kept roots (tests).
     #[cfg(test)]
     fn searched_again(&self, roots: Vec<(f64, usize)>) -> Vec<(f64, usize)> {
         self.searched_again_keeping(roots, &mut Vec::new())
     }
 
-    /// [`Self::searched_again`], the roots kept only to their window added
-    /// to `kept` (angle, the window's half width).
+    /// `roots` (of [`form_roots_mult`]) with those in each of [`clusters`]'
+    /// windows replaced by the roots found there again from the forms
+    /// turned to the window (see [`Elimination::roots_placed`]), the roots
+    /// kept only to their window added to `kept` (angle, the window's half
+    /// width).
     fn searched_again_keeping(
         &self,
         mut roots: Vec<(f64, usize)>,
@@ -1594,7 +1597,7 @@ fn angle_gap(x: f64, y: f64) -> f64 {
 /// multiplicity) that [`form_roots_mult`] found of the resultant (accurate
 /// `value` and its rounding band, as [`Elimination::resultant_at`]) are
 /// all it has, each told apart from its neighbours, so that
-/// [`Elimination::roots`]' search again near every eigenvalue (in
+/// [`Elimination::roots_placed`]' search again near every eigenvalue (in
 /// [`clusters`]' windows) would find the same: [`REAL_ROOTS`] roots, each
 /// simple, and the accurate value halfway between every two neighbours
 /// (the last and the first too) beyond [`APART`] times its band.
@@ -1640,7 +1643,7 @@ const REAL_ROOTS: usize = 6;
 /// expanded coefficients, real or within [`CLUSTER_WINDOW`] rad of the real
 /// line (the eigenvalues of the companion matrices of both charts), grouped
 /// into windows `(center, half width)` at least [`CLUSTER_WINDOW`] wide
-/// (see [`Elimination::roots`]). Empty when the eigenvalues are not found.
+/// (see [`Elimination::roots_placed`]). Empty when the eigenvalues are not found.
 fn clusters(f: &[f64]) -> Vec<(f64, f64)> {
     use core::f64::consts::PI;
     let mut angles = Vec::new();
