@@ -343,7 +343,12 @@ fn settle_polyline(
         };
         match settle(cubic, p, viewport, reach, across) {
             Some(q) => out.push((q, None)),
-            None if !inner && !free_end => out.push((p, None)),
+            // An edge end that does not settle along its edge: the
+            // nearest point of the curve within `reach` in the viewport,
+            // else the end as it is.
+            None if !inner && !free_end => {
+                out.push((settle_near(cubic, p, viewport, reach).unwrap_or(p), None));
+            }
             None => {}
         }
     }
@@ -483,6 +488,57 @@ fn settle(
     let y = v + d * t;
     let q = cubic.global_of(y);
     (t.abs() <= reach_local && viewport.contains(q) && cubic.is_zero_local(y)).then_some(q)
+}
+
+/// The curve's nearest point to `p` within `reach` (plane units) and in
+/// the viewport, on the curve as [`on_curve_in_plane`] asks, along eight
+/// lines through `p` (none of them parallel to an axis); `None` if there is
+/// none. For an edge end of the trace that does not settle along its edge:
+/// the crossing of a line and a quotient conic (`trace_factored`) drawn on
+/// the edge, where the curve is that product only to `1e-9` of its
+/// coefficients. There the product's node is a saddle of the curve's
+/// value (its gradient nearly zero) between two branches a little apart,
+/// the edge may be one of the product's lines (no crossing of the curve
+/// along it), and the node is off the curve by far more than its rounding
+/// (issue 24, curv42: a center-point curve of poses at angles `0` and `pi`
+/// `1e19` to `1e23` from the origin, the node `3.2e15` from the exact
+/// curve against an on-curve tolerance of `1.3e14`, `open_curves.py`). Every
+/// line through the node that is not along a branch meets the branches
+/// within a few times their distance from it.
+fn settle_near(
+    cubic: &Cubic,
+    p: Point2<f64>,
+    viewport: &Viewport,
+    reach: f64,
+) -> Option<Point2<f64>> {
+    let v = cubic.local_of(p);
+    let reach_local = reach / cubic.scale;
+    if !(v.iter().all(|c| c.is_finite()) && reach_local.is_finite() && reach_local > 0.0) {
+        return None;
+    }
+    let mut best: Option<(f64, Point2<f64>)> = None;
+    for k in 0..8 {
+        let ang = (f64::from(k) + 0.5) * PI / 8.0;
+        let w = Vector2::new(ang.cos(), ang.sin()) * reach_local;
+        for u in real_roots(&cubic.restriction_local(v, w)) {
+            if !(u.abs() <= 1.0) {
+                continue;
+            }
+            let u = cubic.refine_on_line(v, w, u);
+            if !(u.abs() <= 1.0) {
+                continue;
+            }
+            let q = cubic.global_of(v + w * u);
+            if !(viewport.contains(q) && on_curve_in_plane(cubic, q)) {
+                continue;
+            }
+            let d = (q - p).norm();
+            if best.is_none_or(|(b, _)| d < b) {
+                best = Some((d, q));
+            }
+        }
+    }
+    best.map(|(_, q)| q)
 }
 
 /// Whether the plane point `p` is on the curve as well as a point of the
