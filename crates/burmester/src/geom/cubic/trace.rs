@@ -273,8 +273,14 @@ pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace 
     let reach = SETTLE_REACH * trace.tolerance;
     for c in &mut trace.components {
         for l in &mut c.polylines {
-            let settled =
-                settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach, None);
+            let settled = settle_polyline(
+                cubic,
+                l.iter().map(|p| (*p, None)),
+                viewport,
+                reach,
+                true,
+                None,
+            );
             *l = settled.into_iter().map(|(p, _)| p).collect();
         }
         c.polylines.retain(|l| l.len() >= 2);
@@ -295,11 +301,17 @@ const SETTLE_REACH: f64 = 0.1;
 /// each other a little apart and the conic's vertex lies in the gap (the
 /// exact curve `1.6e-3` away in a task of `7.7`, within the chord
 /// tolerance but beyond the curve's rounding there: `open_curves.py`).
+/// An edge end that does not settle along its edge is kept, or with `near`
+/// moved to the curve's nearest point within `reach` where there is one
+/// (off the edge, inside the view). The relaxed factored trace's test
+/// (`trace_impl`) asks its ends to settle along their edges (`near`
+/// false): its line's end that does not is not the curve's crossing there.
 fn settle_polyline(
     cubic: &Cubic,
     line: impl Iterator<Item = (Point2<f64>, Option<usize>)>,
     viewport: &Viewport,
     reach: f64,
+    near: bool,
     cancel: Option<&AtomicBool>,
 ) -> Vec<(Point2<f64>, Option<usize>)> {
     let mut line: Vec<(Point2<f64>, Option<usize>)> = line.collect();
@@ -343,11 +355,12 @@ fn settle_polyline(
         };
         match settle(cubic, p, viewport, reach, across) {
             Some(q) => out.push((q, None)),
-            // An edge end that does not settle along its edge: the
-            // nearest point of the curve within `reach` in the viewport,
-            // else the end as it is.
+            // An edge end that does not settle along its edge: with `near`,
+            // the nearest point of the curve within `reach` in the viewport
+            // ([`settle_near`]); else (or if there is none) the end as it is.
             None if !inner && !free_end => {
-                out.push((settle_near(cubic, p, viewport, reach).unwrap_or(p), None));
+                let q = near.then(|| settle_near(cubic, p, viewport, reach));
+                out.push((q.flatten().unwrap_or(p), None));
             }
             None => {}
         }
@@ -633,7 +646,7 @@ pub(super) fn trace_marked(
     }
     let out: Vec<_> = out
         .into_iter()
-        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach, cancel))
+        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach, true, cancel))
         .filter(|l| l.len() >= 2)
         .collect();
     if cancelled(cancel) {
@@ -726,7 +739,14 @@ fn trace_impl(
         if let Some(t) = trace_factored(cubic, q, viewport, &view, true) {
             let reach = SETTLE_REACH * t.tolerance;
             let settles = t.components.iter().flat_map(|c| &c.polylines).all(|l| {
-                let s = settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach, None);
+                let s = settle_polyline(
+                    cubic,
+                    l.iter().map(|p| (*p, None)),
+                    viewport,
+                    reach,
+                    false,
+                    None,
+                );
                 s.len() == l.len() && s.iter().all(|(p, _)| on_curve_in_plane(cubic, *p))
             });
             if settles {
