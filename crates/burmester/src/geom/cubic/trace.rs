@@ -273,14 +273,8 @@ pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace 
     let reach = SETTLE_REACH * trace.tolerance;
     for c in &mut trace.components {
         for l in &mut c.polylines {
-            let settled = settle_polyline(
-                cubic,
-                l.iter().map(|p| (*p, None)),
-                viewport,
-                reach,
-                true,
-                None,
-            );
+            let points = l.iter().map(|p| (*p, None));
+            let settled = settle_polyline(cubic, points, viewport, reach, true, None);
             *l = settled.into_iter().map(|(p, _)| p).collect();
         }
         c.polylines.retain(|l| l.len() >= 2);
@@ -739,14 +733,8 @@ fn trace_impl(
         if let Some(t) = trace_factored(cubic, q, viewport, &view, true) {
             let reach = SETTLE_REACH * t.tolerance;
             let settles = t.components.iter().flat_map(|c| &c.polylines).all(|l| {
-                let s = settle_polyline(
-                    cubic,
-                    l.iter().map(|p| (*p, None)),
-                    viewport,
-                    reach,
-                    false,
-                    None,
-                );
+                let points = l.iter().map(|p| (*p, None));
+                let s = settle_polyline(cubic, points, viewport, reach, false, None);
                 s.len() == l.len() && s.iter().all(|(p, _)| on_curve_in_plane(cubic, *p))
             });
             if settles {
