@@ -548,3 +548,23 @@ if __name__ == "__main__" and sys.argv[1:] == ["curv41-a"]:
     # python fuzz/reference/open_curves.py curv41-a
     for name, case in CURV41_A.items():
         class_a_report(name, *case, more=True)
+
+
+# curv42: the two CURV41_A inputs traced again: the line's end at the line
+# pair's node settled onto the curve off the edge (`settle_near`); the new
+# end's exact distance and how far one ulp of the task moves the curve there.
+CURV42 = {
+    "11e1f642": (52999887322202690000000.0, 2919303562022854000000.0),
+    "aefd216a": (17982707308237832000.0, 7798999068.793272),
+}
+
+
+if __name__ == "__main__" and sys.argv[1:] == ["curv42"]:
+    # python fuzz/reference/open_curves.py curv42
+    for name, point in CURV42.items():
+        poses, _old, circle, _h = CURV41_A[name]
+        terms = curve(poses, circle)
+        first, root = distance(terms, point)
+        print(f"curv42 {name}: new end {point} exact distance {mpmath.nstr(root, 4)} "
+              f"(first order {mpmath.nstr(first, 4)}); one ulp moves the curve "
+              f"{mpmath.nstr(condition(poses, point, circle, 8), 3)}")

@@ -38,7 +38,9 @@
 //! cubic in one variable per edge). Each crossing is placed on its loop, and
 //! the stretches of a loop between consecutive crossings that lie inside
 //! the viewport are sampled adaptively, from crossing to crossing: the ends
-//! of every polyline are exact points of the curve on the edges, and a loop
+//! of every polyline are exact points of the curve on the edges (or, where
+//! no point of the curve on the edge is near an end, the curve's nearest
+//! point within a tenth of the chord tolerance inside), and a loop
 //! with no crossing is either wholly inside (one closed polyline) or wholly
 //! outside. `Q` is taken near the viewport and away from singular points of
 //! the curve; everything is in units of the viewport and of the curve's

@@ -273,8 +273,8 @@ pub(super) fn trace(cubic: &Cubic, viewport: &Viewport, tol: f64) -> CubicTrace 
     let reach = SETTLE_REACH * trace.tolerance;
     for c in &mut trace.components {
         for l in &mut c.polylines {
-            let settled =
-                settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach, None);
+            let points = l.iter().map(|p| (*p, None));
+            let settled = settle_polyline(cubic, points, viewport, reach, true, None);
             *l = settled.into_iter().map(|(p, _)| p).collect();
         }
         c.polylines.retain(|l| l.len() >= 2);
@@ -295,11 +295,17 @@ const SETTLE_REACH: f64 = 0.1;
 /// each other a little apart and the conic's vertex lies in the gap (the
 /// exact curve `1.6e-3` away in a task of `7.7`, within the chord
 /// tolerance but beyond the curve's rounding there: `open_curves.py`).
+/// An edge end that does not settle along its edge is kept, or with `near`
+/// moved to the curve's nearest point within `reach` where there is one
+/// (off the edge, inside the view). The relaxed factored trace's test
+/// (`trace_impl`) asks its ends to settle along their edges (`near`
+/// false): its line's end that does not is not the curve's crossing there.
 fn settle_polyline(
     cubic: &Cubic,
     line: impl Iterator<Item = (Point2<f64>, Option<usize>)>,
     viewport: &Viewport,
     reach: f64,
+    near: bool,
     cancel: Option<&AtomicBool>,
 ) -> Vec<(Point2<f64>, Option<usize>)> {
     let mut line: Vec<(Point2<f64>, Option<usize>)> = line.collect();
@@ -343,7 +349,13 @@ fn settle_polyline(
         };
         match settle(cubic, p, viewport, reach, across) {
             Some(q) => out.push((q, None)),
-            None if !inner && !free_end => out.push((p, None)),
+            // An edge end that does not settle along its edge: with `near`,
+            // the nearest point of the curve within `reach` in the viewport
+            // ([`settle_near`]); else (or if there is none) the end as it is.
+            None if !inner && !free_end => {
+                let q = near.then(|| settle_near(cubic, p, viewport, reach));
+                out.push((q.flatten().unwrap_or(p), None));
+            }
             None => {}
         }
     }
@@ -485,6 +497,57 @@ fn settle(
     (t.abs() <= reach_local && viewport.contains(q) && cubic.is_zero_local(y)).then_some(q)
 }
 
+/// The curve's nearest point to `p` within `reach` (plane units) and in
+/// the viewport, on the curve as [`on_curve_in_plane`] asks, along eight
+/// lines through `p` (none of them parallel to an axis); `None` if there is
+/// none. For an edge end of the trace that does not settle along its edge:
+/// the crossing of a line and a quotient conic (`trace_factored`) drawn on
+/// the edge, where the curve is that product only to `1e-9` of its
+/// coefficients. There the product's node is a saddle of the curve's
+/// value (its gradient nearly zero) between two branches a little apart,
+/// the edge may be one of the product's lines (no crossing of the curve
+/// along it), and the node is off the curve by far more than its rounding
+/// (issue 24, curv42: a center-point curve of poses at angles `0` and `pi`
+/// `1e19` to `1e23` from the origin, the node `3.2e15` from the exact
+/// curve against an on-curve tolerance of `1.3e14`, `open_curves.py`). Every
+/// line through the node that is not along a branch meets the branches
+/// within a few times their distance from it.
+fn settle_near(
+    cubic: &Cubic,
+    p: Point2<f64>,
+    viewport: &Viewport,
+    reach: f64,
+) -> Option<Point2<f64>> {
+    let v = cubic.local_of(p);
+    let reach_local = reach / cubic.scale;
+    if !(v.iter().all(|c| c.is_finite()) && reach_local.is_finite() && reach_local > 0.0) {
+        return None;
+    }
+    let mut best: Option<(f64, Point2<f64>)> = None;
+    for k in 0..8 {
+        let ang = (f64::from(k) + 0.5) * PI / 8.0;
+        let w = Vector2::new(ang.cos(), ang.sin()) * reach_local;
+        for u in real_roots(&cubic.restriction_local(v, w)) {
+            if !(u.abs() <= 1.0) {
+                continue;
+            }
+            let u = cubic.refine_on_line(v, w, u);
+            if !(u.abs() <= 1.0) {
+                continue;
+            }
+            let q = cubic.global_of(v + w * u);
+            if !(viewport.contains(q) && on_curve_in_plane(cubic, q)) {
+                continue;
+            }
+            let d = (q - p).norm();
+            if best.is_none_or(|(b, _)| d < b) {
+                best = Some((d, q));
+            }
+        }
+    }
+    best.map(|(_, q)| q)
+}
+
 /// Whether the plane point `p` is on the curve as well as a point of the
 /// plane can be: its value (local) within the rounding of its evaluation
 /// (`64 eps` of its terms, as [`Cubic::is_zero_local`]) plus what the
@@ -577,7 +640,7 @@ pub(super) fn trace_marked(
     }
     let out: Vec<_> = out
         .into_iter()
-        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach, cancel))
+        .map(|l| settle_polyline(cubic, l.into_iter(), viewport, reach, true, cancel))
         .filter(|l| l.len() >= 2)
         .collect();
     if cancelled(cancel) {
@@ -670,7 +733,8 @@ fn trace_impl(
         if let Some(t) = trace_factored(cubic, q, viewport, &view, true) {
             let reach = SETTLE_REACH * t.tolerance;
             let settles = t.components.iter().flat_map(|c| &c.polylines).all(|l| {
-                let s = settle_polyline(cubic, l.iter().map(|p| (*p, None)), viewport, reach, None);
+                let points = l.iter().map(|p| (*p, None));
+                let s = settle_polyline(cubic, points, viewport, reach, false, None);
                 s.len() == l.len() && s.iter().all(|(p, _)| on_curve_in_plane(cubic, *p))
             });
             if settles {
