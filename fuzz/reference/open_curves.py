@@ -481,13 +481,13 @@ CURV41 = {
 }
 
 
-def curv41_exact(name, steps=32):
+def curv41_exact(name, steps=32, case=None):
     """The exact class of the check's point (taken onto the exact curve
     along the gradient; its exact circle point in the center plane; the
     exact Filemon signs), the exact class of the exact curve's points next
     to the chord at ``1/steps`` steps, and each change along it bisected
     (50 steps) to the exact curve's point there."""
-    circle, _lib, poses, c0, c1, (a, b), q = CURV41[name]
+    circle, _lib, poses, c0, c1, (a, b), q = case or CURV41[name]
     terms = curve(poses, circle)
 
     def cls(p):
@@ -514,19 +514,24 @@ def curv41_exact(name, steps=32):
     return free_q, pq, signs, fs, changes
 
 
+def curv41_report(name, case, steps=32):
+    """Prints :func:`curv41_exact` of one case (``CURV41``'s layout)."""
+    free_q, pq, signs, fs, changes = curv41_exact(name, steps, case)
+    print(f"{name} ({'circle' if case[0] else 'center'} plane): the check's point is {case[1]} by the "
+          f"library, exactly {'free' if free_q else 'defective'} (signs "
+          f"{', '.join(mpmath.nstr(v, 3) for v in signs)}; on the exact curve at "
+          f"({mpmath.nstr(pq[0], 17)}, {mpmath.nstr(pq[1], 17)}))")
+    print(f"  exactly free (F) or not (d) along the chord: {''.join('F' if f else 'd' for f in fs)}")
+    for t, p in changes:
+        print(f"  exact change at {t:.6f} of the chord: ({mpmath.nstr(p[0], 17)}, {mpmath.nstr(p[1], 17)})")
+
+
 if __name__ == "__main__" and sys.argv[1:2] == ["curv41"]:
     # python fuzz/reference/open_curves.py curv41 [name ...]
     for name, case in CURV41.items():
         if sys.argv[2:] and name not in sys.argv[2:]:
             continue
-        free_q, pq, signs, fs, changes = curv41_exact(name)
-        print(f"{name} ({'circle' if case[0] else 'center'} plane): the check's point is {case[1]} by the "
-              f"library, exactly {'free' if free_q else 'defective'} (signs "
-              f"{', '.join(mpmath.nstr(v, 3) for v in signs)}; on the exact curve at "
-              f"({mpmath.nstr(pq[0], 17)}, {mpmath.nstr(pq[1], 17)}))")
-        print(f"  exactly free (F) or not (d) along the chord: {''.join('F' if f else 'd' for f in fs)}")
-        for t, p in changes:
-            print(f"  exact change at {t:.6f} of the chord: ({mpmath.nstr(p[0], 17)}, {mpmath.nstr(p[1], 17)})")
+        curv41_report(name, case)
 
 
 # curv41's libFuzzer round: two class A findings (a traced center point on
@@ -568,3 +573,51 @@ if __name__ == "__main__" and sys.argv[1:] == ["curv42"]:
         print(f"curv42 {name}: new end {point} exact distance {mpmath.nstr(root, 4)} "
               f"(first order {mpmath.nstr(first, 4)}); one ulp moves the curve "
               f"{mpmath.nstr(condition(poses, point, circle, 8), 3)}")
+
+
+# curv43: stop 40's final round's class B input (`401a552c`, center plane, a
+# view 4e7 wide): the failing chord on 77077b9 and the check's point.
+CURV43 = {
+    "401a552c": (False, "Defective",
+                 [(0.0001875, 64035.15625, 34.98046875), (-0.0008984375, 0.00018749903515625, 0.058484375),
+                  (0.015625, 0.03125, 0.53515625), (-128.0, -128.000000001, 0.015625047)],
+                 (-10417.623221495787, 30901.13359319052), (-4860.702347340231, 74064.6507156851),
+                 ((-822086.8293539063, 238112.70838937772), (828694.605832389, -195810.3315813626)),
+                 (338.0852884343815, 10608.22704690533)),
+}
+
+
+# The view of the fuzz check, and two short chords of the oval next to the
+# origin (vertices of a11cbfa's trace in that view) across which the exact
+# class changes: the exact arc ends' centers there.
+CURV43_VIEW = (-40658163.91094275, 1092545.0087307617, -20859377.66481233, 20891331.25486118)
+CURV43_OVAL = [((3275.1885548101504, 10673.540706404745), (4903.571358538844, 10360.635982675305)),
+               ((-3907.6146605670215, 5556.133574833442), (-3867.308412309909, 6708.559317533442))]
+
+
+def edge_roots(terms, fixed, value):
+    """The exact curve's real points on the line ``x = value`` (``fixed``
+    ``"x"``) or ``y = value``: the free coordinate's real roots."""
+    coeffs = {}
+    for (i, j), c in terms:
+        k, v = (j, c * mpmath.mpf(value) ** i) if fixed == "x" else (i, c * mpmath.mpf(value) ** j)
+        coeffs[k] = coeffs.get(k, 0) + v
+    poly = [coeffs.get(k, 0) for k in range(max(coeffs), -1, -1)]
+    roots = mpmath.polyroots(poly, maxsteps=400, extraprec=400)
+    return [mpmath.re(r) for r in roots if abs(mpmath.im(r)) <= mpmath.mpf(10) ** -40 * (1 + abs(r))]
+
+
+if __name__ == "__main__" and sys.argv[1:2] == ["curv43"]:
+    # python fuzz/reference/open_curves.py curv43 [steps]
+    steps = int(sys.argv[2]) if sys.argv[2:] else 64
+    for name, case in CURV43.items():
+        curv41_report(name, case, steps)
+        terms = curve(case[2], case[0])
+        x0, x1, y0, y1 = CURV43_VIEW
+        for fixed, value, lo, hi in [("x", x0, y0, y1), ("x", x1, y0, y1), ("y", y0, x0, x1), ("y", y1, x0, x1)]:
+            inside = [r for r in edge_roots(terms, fixed, value) if lo <= r <= hi]
+            print(f"  exact crossings of the edge {fixed} = {value}: {[mpmath.nstr(r, 17) for r in inside]}")
+        for a, b in CURV43_OVAL:
+            oval = (case[0], case[1], case[2], case[3], case[4], (a, b), a)
+            for t, p in curv41_exact(name, 16, oval)[4]:
+                print(f"  exact change on the oval's chord {a} - {b}: ({mpmath.nstr(p[0], 17)}, {mpmath.nstr(p[1], 17)})")

@@ -479,3 +479,81 @@ eb1a5faa center 1e-3 -414532031.22480669 1302938.7100324116 -414532031.2764607 -
         }
     }
 }
+
+/// The distance from `c` to the nearest of `points`.
+fn nearest<'a>(points: impl IntoIterator<Item = &'a Point2<f64>>, c: Point2<f64>) -> f64 {
+    points
+        .into_iter()
+        .map(|p| (p - c).norm())
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// curv43 (issue 24, class B, `fuzz/open/curves/` of stop 40's final
+/// round, `401a552c`, center plane, a view `4e7` wide): the center-point
+/// curve is a branch that is a line within the chord tolerance across the
+/// view (the asymptote's direction) and an oval `1.5e4` across next to the
+/// origin, whose top is defective between two arc ends' centers. The
+/// tracer's pencil point was on the branch, `2e7` from the origin, and the
+/// branch's crossing of the view's left edge lies along its tangent there
+/// within rounding: no loop of the pencil held it, the factored trace did
+/// not settle, and the crossing was dropped: the branch was traced from the
+/// right edge around its loop and back by a chord `1.3e6` long that passed
+/// within `1.1e4` of the oval's defective top, so a free arc's chord passed
+/// a defective point. Now the pencil is taken about another regular point
+/// (here on the oval) where every crossing is placed.
+///
+/// Exact values (`fuzz/reference/open_curves.py curv43`): the exact
+/// curve's crossings of the view's edges (the left and the right edge
+/// only), the exact curve's point `D` at the old chord's middle (exactly
+/// defective: signs `5.7e8, -8e8, -1.6e8, -8.4e8`) and the exact class
+/// changes on the oval next to it (the arc ends' centers). A traced vertex
+/// at each exact edge crossing, no free arc within half the distance from
+/// `D` to the nearest change, a free arc's vertex at each change, and the
+/// classifier's check on 16 points of every chord (before the fix it
+/// fails there).
+#[test]
+fn curv43_an_edge_crossing_on_no_loop_of_the_pencil_is_not_dropped() {
+    let f = Finding {
+        name: "401a552c",
+        numbers: "0.0001875 64035.15625 34.98046875 -0.0008984375 0.00018749903515625 0.058484375 \
+                  0.015625 0.03125 0.53515625 -128.0 -128.000000001 0.015625047 \
+                  -10417.623221495787 30901.13359319052 -4860.702347340231 74064.6507156851 \
+                  -40658163.91094275 1092545.0087307617 -20859377.66481233 20891331.25486118",
+    };
+    assert_free_by_the_classifier(&f, false);
+    assert_free_by_the_classifier(&f, true);
+    let (four, fa, view) = f.arcs();
+    let diag = view.diagonal();
+    let traced = four.center_point_curve().polylines(&view);
+    for c in [
+        Point2::new(-40658163.91094275, 10709519.294905048),
+        Point2::new(1092545.0087307617, -265168.86095518625),
+    ] {
+        let nearest = nearest(traced.iter().flatten(), c);
+        assert!(
+            nearest <= 1e-9 * diag,
+            "the exact edge crossing {c} is {nearest} from the trace"
+        );
+    }
+    let d = Point2::new(338.08528843438137, 10608.22704690533);
+    let changes = [
+        Point2::new(4720.4157980243845, 10407.393925807975),
+        Point2::new(-3923.4997018314953, 6001.007552233041),
+    ];
+    let r = 0.5 * nearest(&changes, d);
+    for p in arc_points(&four, &fa, &view, false) {
+        assert!(
+            (p - d).norm() > r,
+            "a free arc passes {p}, {} from the exactly defective {d}",
+            (p - d).norm()
+        );
+    }
+    let arcs = fa.free_center_arcs(&view).unwrap();
+    for c in &changes {
+        let nearest = nearest(arcs.iter().flatten(), *c);
+        assert!(
+            nearest <= 1e-6 * diag,
+            "the exact change {c} is {nearest} from the free arcs"
+        );
+    }
+}

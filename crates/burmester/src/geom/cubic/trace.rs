@@ -696,28 +696,35 @@ fn trace_impl(
             return (t, None);
         }
     }
-    let g = cubic.grad_local(q);
-    let h = cubic.hessian_local(q);
-    let pencil = Pencil {
-        cubic,
-        q,
-        alpha: cubic.cubic_form(),
-        beta: [0.5 * h[0], h[1], 0.5 * h[2]],
-        gamma: [g.x, g.y],
-        tangent: (g.x.atan2(-g.y)).rem_euclid(PI),
-    };
-    let loops = loops(&pencil);
-    let crossings = edge_crossings(cubic, &view);
-    // Each crossing on its loop.
-    let mut on_loop: Vec<Vec<(f64, Vector2<f64>)>> = vec![Vec::new(); loops.len()];
-    let mut unplaced = false;
-    for x in crossings {
-        if let Some((k, lambda)) = place(&pencil, &loops, x, &view) {
-            on_loop[k].push((lambda, x));
-        } else {
-            unplaced = true;
+    let pencil_at = |q: Vector2<f64>| {
+        let g = cubic.grad_local(q);
+        let h = cubic.hessian_local(q);
+        Pencil {
+            cubic,
+            q,
+            alpha: cubic.cubic_form(),
+            beta: [0.5 * h[0], h[1], 0.5 * h[2]],
+            gamma: [g.x, g.y],
+            tangent: (g.x.atan2(-g.y)).rem_euclid(PI),
         }
-    }
+    };
+    let crossings = edge_crossings(cubic, &view);
+    // Each crossing on its loop, and whether one is on no loop.
+    let place_all = |pencil: &Pencil<'_>, loops: &[Loop]| {
+        let mut on_loop: Vec<Vec<(f64, Vector2<f64>)>> = vec![Vec::new(); loops.len()];
+        let mut unplaced = false;
+        for &x in &crossings {
+            if let Some((k, lambda)) = place(pencil, loops, x, &view) {
+                on_loop[k].push((lambda, x));
+            } else {
+                unplaced = true;
+            }
+        }
+        (on_loop, unplaced)
+    };
+    let mut pencil = pencil_at(q);
+    let mut loops = loops(&pencil);
+    let (mut on_loop, unplaced) = place_all(&pencil, &loops);
     // A crossing on no loop: the pencil's point may lie on a piece of the
     // curve that is a line within the chord tolerance across the view.
     // Every direction from it that holds that piece is then within
@@ -739,6 +746,26 @@ fn trace_impl(
             });
             if settles {
                 return (t, None);
+            }
+        }
+        // Else the crossing would be dropped and the trace would run from
+        // the last placed one around its loop and back across the view
+        // (fuzz input `401a552c`: a nearly straight branch `5.8e7` long, its
+        // left edge crossing dropped, the trace's last chord `1.3e6` long
+        // back across a loop `1.5e4` across with defective stretches): the
+        // pencil is taken about another regular point of the curve (off
+        // that piece: about the frame's origin too), the first on which
+        // every crossing is placed; where there is none, as before.
+        let others = [center, Vector2::zeros()]
+            .into_iter()
+            .flat_map(|base| line_points(cubic, base, radius))
+            .filter(|x| *x != q && regular(cubic, *x, radius));
+        for x in others {
+            let p = pencil_at(x);
+            let l = self::loops(&p);
+            if let (on, false) = place_all(&p, &l) {
+                (pencil, loops, on_loop) = (p, l, on);
+                break;
             }
         }
     }
@@ -913,6 +940,34 @@ fn sample_knots(
     out
 }
 
+/// The curve's crossings of eight lines through `base`, each refined on
+/// the curve's own value (the base, the view's center, may be far from the
+/// curve, and the pencil's point is a vertex of the trace).
+fn line_points(cubic: &Cubic, base: Vector2<f64>, radius: f64) -> Vec<Vector2<f64>> {
+    let mut out = Vec::new();
+    for k in 0..8 {
+        let ang = (k as f64 + 0.3) * PI / 8.0;
+        let w = Vector2::new(ang.cos(), ang.sin()) * radius.max(f64::MIN_POSITIVE);
+        let coeffs = cubic.restriction_local(base, w);
+        for u in real_roots(&coeffs) {
+            let u = cubic.refine_on_line(base, w, u);
+            let x = base + w * u;
+            if x.iter().all(|v| v.is_finite()) {
+                out.push(x);
+            }
+        }
+    }
+    out
+}
+
+/// Whether [`choose_point`] takes the curve's point `x` for a regular one
+/// off line components (its first choice).
+fn regular(cubic: &Cubic, x: Vector2<f64>, radius: f64) -> bool {
+    let g = cubic.grad_local(x);
+    g.norm() / cubic.grad_magnitude_local(x).max(f64::MIN_POSITIVE) >= 1e-4
+        && !tangent_is_component(cubic, x, radius)
+}
+
 /// A point of the curve near the viewport and away from singular points:
 /// the curve's crossings of eight lines through the viewport's center,
 /// the nearest among the well-conditioned ones (gradient not small against
@@ -920,21 +975,7 @@ fn sample_knots(
 fn choose_point(cubic: &Cubic, center: Vector2<f64>, radius: f64) -> Option<Vector2<f64>> {
     let mut cands = Vec::new();
     for base in [center, Vector2::zeros()] {
-        for k in 0..8 {
-            let ang = (k as f64 + 0.3) * PI / 8.0;
-            let w = Vector2::new(ang.cos(), ang.sin()) * radius.max(f64::MIN_POSITIVE);
-            let coeffs = cubic.restriction_local(base, w);
-            for u in real_roots(&coeffs) {
-                // Refined on the curve's own value: the base (the view's
-                // center) may be far from the curve, and the pencil's point
-                // is a vertex of the trace.
-                let u = cubic.refine_on_line(base, w, u);
-                let x = base + w * u;
-                if x.iter().all(|v| v.is_finite()) {
-                    cands.push(x);
-                }
-            }
-        }
+        cands.extend(line_points(cubic, base, radius));
         if !cands.is_empty() {
             break;
         }
