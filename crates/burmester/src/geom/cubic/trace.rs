@@ -960,12 +960,20 @@ fn line_points(cubic: &Cubic, base: Vector2<f64>, radius: f64) -> Vec<Vector2<f6
     out
 }
 
+/// How regular the curve's point `x` is: its gradient against the scale
+/// of the gradient's terms ([`REGULAR`] and above: regular).
+fn regularity(cubic: &Cubic, x: Vector2<f64>) -> f64 {
+    cubic.grad_local(x).norm() / cubic.grad_magnitude_local(x).max(f64::MIN_POSITIVE)
+}
+
+/// The [`regularity`] from which [`choose_point`] takes a point for a
+/// regular one.
+const REGULAR: f64 = 1e-4;
+
 /// Whether [`choose_point`] takes the curve's point `x` for a regular one
 /// off line components (its first choice).
 fn regular(cubic: &Cubic, x: Vector2<f64>, radius: f64) -> bool {
-    let g = cubic.grad_local(x);
-    g.norm() / cubic.grad_magnitude_local(x).max(f64::MIN_POSITIVE) >= 1e-4
-        && !tangent_is_component(cubic, x, radius)
+    regularity(cubic, x) >= REGULAR && !tangent_is_component(cubic, x, radius)
 }
 
 /// A point of the curve near the viewport and away from singular points:
@@ -981,10 +989,8 @@ fn choose_point(cubic: &Cubic, center: Vector2<f64>, radius: f64) -> Option<Vect
         }
     }
     let score = |x: &Vector2<f64>| {
-        let g = cubic.grad_local(*x);
-        let reg = g.norm() / cubic.grad_magnitude_local(*x).max(f64::MIN_POSITIVE);
         let line = tangent_is_component(cubic, *x, radius);
-        (reg, line, (x - center).norm())
+        (regularity(cubic, *x), line, (x - center).norm())
     };
     let scored: Vec<_> = cands.iter().map(|x| (*x, score(x))).collect();
     let pick = |good: &dyn Fn(&(f64, bool, f64)) -> bool| {
@@ -997,8 +1003,8 @@ fn choose_point(cubic: &Cubic, center: Vector2<f64>, radius: f64) -> Option<Vect
     // Regular points off line components first, then regular points on a
     // line component (the curve is then divided by it), then the most
     // regular point.
-    pick(&|s| s.0 >= 1e-4 && !s.1)
-        .or_else(|| pick(&|s| s.0 >= 1e-4))
+    pick(&|s| s.0 >= REGULAR && !s.1)
+        .or_else(|| pick(&|s| s.0 >= REGULAR))
         .or_else(|| {
             scored
                 .iter()

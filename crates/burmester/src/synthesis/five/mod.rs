@@ -1041,7 +1041,7 @@ impl Elimination {
                 let [[ap, bp, cp], [dp, ep, gp]] = &forms;
                 let rp = resultant([ap, bp, cp, dp, ep, gp]);
                 within(&rp)
-                    || Self::angles_move(sub).is_none_or(|moved| {
+                    || Self::angles_move(sub, &r.v).is_none_or(|moved| {
                         rp.v.iter().zip(&rp.e).zip(&moved).all(|((v, e), m)| {
                             v.abs() <= tolerance::BURMESTER_EPS * (f64::EPSILON * (e + v.abs()) + m)
                         })
@@ -1097,15 +1097,15 @@ impl Elimination {
     }
 
     /// How far the rounding of `sub`'s angles moves the coefficients of
-    /// its resultant, to first order: each pose's angle moved alone by the
-    /// angles' rounding (`data_rounding`: twice `eps` of the largest
-    /// angle), the resultant computed again and the changes added up.
-    /// `None` where a moved task has no elimination.
-    fn angles_move(sub: &LocalMotion) -> Option<Vec<f64>> {
-        let base = Self::build(sub, false)?;
+    /// its resultant (`base`, as [`Self::build`] forms it), to first order:
+    /// each pose's angle moved alone by the angles' rounding
+    /// (`data_rounding`: twice `eps` of the largest angle), the resultant
+    /// computed again and the changes added up. `None` where a moved task
+    /// has no elimination.
+    fn angles_move(sub: &LocalMotion, base: &[f64]) -> Option<Vec<f64>> {
         let poses = sub.poses.as_slice();
         let da = sub.data_rounding.1 * f64::EPSILON;
-        let mut moved = vec![0.0; base.r.v.len()];
+        let mut moved = vec![0.0; base.len()];
         for k in 0..poses.len() {
             let q = PerPose::from_fn(poses.len(), |j| {
                 let mut p = poses[j];
@@ -1119,7 +1119,7 @@ impl Elimination {
             if other.r.v.len() != moved.len() {
                 return None;
             }
-            for (s, (a, b)) in moved.iter_mut().zip(other.r.v.iter().zip(&base.r.v)) {
+            for (s, (a, b)) in moved.iter_mut().zip(other.r.v.iter().zip(base)) {
                 *s += (a - b).abs();
             }
         }
@@ -2168,10 +2168,10 @@ fn check_slider(m: &LocalMotion, z: Vector2<f64>, u: Vector2<f64>) -> Option<Bur
 /// the slider's (within `1e-3` of `size + d`, `d` the circle point's
 /// distance from the centroid).
 fn far_point_of_slider(m: &LocalMotion, d: &Dyad, s: &BurmesterSlider) -> bool {
-    let g = d.center - m.origin;
-    if !(g.norm() > tolerance::BURMESTER_NEAR * m.scale) {
+    if is_near(m, d.center) {
         return false;
     }
+    let g = d.center - m.origin;
     let reach = m.scale + (s.circle - m.origin).norm();
     cross(g / g.norm(), s.direction).abs() <= 1e-3 && (d.circle - s.circle).norm() <= 1e-3 * reach
 }
