@@ -603,13 +603,25 @@ impl Conic {
     /// matrix singular within `1e-12` of its norm, and its "line pair" would
     /// be drawn where the curve is not.
     fn misses_box(&self, lo: Vector2<f64>, hi: Vector2<f64>) -> bool {
-        let [a, b, c, d, e, f] = self.q;
-        let rx = lo.x.abs().max(hi.x.abs());
-        let ry = lo.y.abs().max(hi.y.abs());
-        let rest =
-            a.abs() * rx * rx + b.abs() * rx * ry + c.abs() * ry * ry + d.abs() * rx + e.abs() * ry;
+        let [_, _, _, d, e, f] = self.q;
+        let (quadratic, rx, ry) = self.quadratic_in_box(lo, hi);
+        let rest = quadratic + d.abs() * rx + e.abs() * ry;
         // Well beyond the rounding of either side; false for NaN or infinity.
         f.abs() > rest * (1.0 + 1e-9)
+    }
+
+    /// A bound of the quadratic terms over the local box `lo..hi`,
+    /// `|A| rx^2 + |B| rx ry + |C| ry^2`, with the box's reach `rx`, `ry`
+    /// (the largest `|x|`, `|y|` in it).
+    fn quadratic_in_box(&self, lo: Vector2<f64>, hi: Vector2<f64>) -> (f64, f64, f64) {
+        let [a, b, c, ..] = self.q;
+        let rx = lo.x.abs().max(hi.x.abs());
+        let ry = lo.y.abs().max(hi.y.abs());
+        (
+            a.abs() * rx * rx + b.abs() * rx * ry + c.abs() * ry * ry,
+            rx,
+            ry,
+        )
     }
 
     /// The line `D x + E y + F = 0` (local point and direction) where the
@@ -628,10 +640,8 @@ impl Conic {
         hi: Vector2<f64>,
         tol: f64,
     ) -> Option<(Vector2<f64>, Vector2<f64>)> {
-        let [a, b, c, d, e, f] = self.q;
-        let rx = lo.x.abs().max(hi.x.abs());
-        let ry = lo.y.abs().max(hi.y.abs());
-        let quadratic = a.abs() * rx * rx + b.abs() * rx * ry + c.abs() * ry * ry;
+        let [_, _, _, d, e, f] = self.q;
+        let (quadratic, _, _) = self.quadratic_in_box(lo, hi);
         let n = Vector2::new(d, e);
         let g = n.norm();
         // False for NaN or infinity.
