@@ -151,7 +151,9 @@ impl FivePositions {
     /// are on its line) for every root and an even count of at most four
     /// (a task within rounding of a degenerate one, such as pairs of poses
     /// of one angle or half a turn apart, where the resultant's rounding
-    /// band holds several of its critical points), or when the points
+    /// band holds several of its critical points), when the answer lacks a
+    /// Burmester point at coincident poles (`P_ab = P_cd`, verified on the
+    /// circle equations) that no choice lists, or when the points
     /// computed with another pose as the reference disagree (see below).
     ///
     /// # The answer is checked
@@ -181,10 +183,20 @@ impl FivePositions {
     /// poses ([`check_poses`](crate::synthesis::task::check_poses): a
     /// task's).
     pub(crate) fn of(poses: &[Pose]) -> Result<Self> {
-        let answer = Self::solve(poses)?;
+        let (answer, lacking) = Self::solve(poses)?;
+        if lacking {
+            return Err(errors::unresolved(
+                "a Burmester point at coincident poles (verified on the circle equations) is \
+                 listed by no choice of the shared poses, and the answer lacks it",
+            ));
+        }
         for r in 1..5 {
             let turned: [Pose; 5] = core::array::from_fn(|k| poses[(k + r) % 5]);
-            if let Ok(other) = Self::solve(&turned) {
+            // Another reference pose's answer is compared even where it
+            // lacks such a point: refused in its own right, it would leave
+            // a wrong answer unchecked (five42: refusing it inside `solve`
+            // answered two frames wrongly that this comparison refuses).
+            if let Ok((other, _)) = Self::solve(&turned) {
                 if !answer.agrees(&other, true) || !other.agrees(&answer, false) {
                     return Err(errors::unresolved(
                         "the points computed with another pose as the reference pose disagree \
@@ -237,8 +249,11 @@ impl FivePositions {
     }
 
     /// The Burmester points of five poses with the first as the reference
-    /// pose, unchecked.
-    fn solve(poses: &[Pose]) -> Result<Self> {
+    /// pose, unchecked, and whether they lack a Burmester point at
+    /// coincident poles that no choice of the shared poses lists (see
+    /// below: [`Self::of`] refuses such an answer, and compares it with its
+    /// own where another reference pose gives it).
+    fn solve(poses: &[Pose]) -> Result<(Self, bool)> {
         let motion = LocalMotion::new(poses)?;
         // The pair with the best conditioned pole.
         let mut best = (0.0, 0, 1);
@@ -411,6 +426,7 @@ impl FivePositions {
                 })
         };
         let mut taken = first_clean(&choices, &[])?;
+        let mut lacking = false;
         let redo = !required.is_empty()
             && taken.as_ref().is_none_or(|(_, p, _)| {
                 required
@@ -434,6 +450,31 @@ impl FivePositions {
                 if redo || more {
                     taken = Some(t);
                 }
+            } else if redo {
+                // No choice lists them: the first answer lacks a point that
+                // exists (it passed `polish` and the concyclic test), and it
+                // was given anyway. Fuzz findings `1491101c` moved (the
+                // point at `Q` of the only choice left, two poses at one
+                // position: a double point listed in place of the two) and
+                // `76e9fa53` moved (a near point and the far one at
+                // coincident poles lost together), both answered by a
+                // choice admitted by five41's measurement of the angles'
+                // rounding, and refused before it. Loosely: a point within
+                // `1e-2` of `size + d` of it (the closeness of `agrees`),
+                // or a slider it is the far reading of, lists it. The
+                // points at coincident poles are polished from the poles,
+                // and at `DOUBLE_REACH` four right answers were refused
+                // (a far point listed `7e-6` of `size + d` off it,
+                // `2e0c2d74` moved; a near one `1.3e-3` off, where `polish`
+                // stayed at the pole, `24fd0b38`).
+                lacking = taken.as_ref().is_some_and(|(_, p, s)| {
+                    required.iter().any(|r| {
+                        let reach = motion.scale + (r.center - motion.origin).norm();
+                        !p.iter()
+                            .any(|d| (d.center - r.center).norm() <= 1e-2 * reach)
+                            && !s.iter().any(|s| far_point_of_slider(&motion, r, s))
+                    })
+                });
             }
         }
         let taken = taken.map(|(_, p, s)| (p, s));
@@ -476,18 +517,21 @@ impl FivePositions {
         };
         let curves = [curve([1, 2, 3]), curve([1, 2, 4])];
         let none = Point2::origin();
-        Ok(FivePositions {
-            motion,
-            points: PerPose::up_to(&points, Dyad::new(none, none)),
-            sliders: PerPose::up_to(
-                &sliders,
-                BurmesterSlider {
-                    circle: none,
-                    direction: Vector2::zeros(),
-                },
-            ),
-            curves,
-        })
+        Ok((
+            FivePositions {
+                motion,
+                points: PerPose::up_to(&points, Dyad::new(none, none)),
+                sliders: PerPose::up_to(
+                    &sliders,
+                    BurmesterSlider {
+                        circle: none,
+                        direction: Vector2::zeros(),
+                    },
+                ),
+                curves,
+            },
+            lacking,
+        ))
     }
 
     /// The five poses.
