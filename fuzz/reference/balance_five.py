@@ -40,7 +40,9 @@ def parse(path):
             name = line.split(" ", 1)[1].strip()
         elif name and (line.startswith("  task ") or line.startswith("  moved ")):
             frame, rest = line.strip().split(" ", 1)
-            out[(name, frame)] = (ast.literal_eval(rest), lines[i + 1].strip())
+            # Keyed by the frame's poses: an input renamed (moved to
+            # `regressions/`) is the same frame.
+            out[rest] = (ast.literal_eval(rest), lines[i + 1].strip(), f"{name} {frame}")
     return out
 
 
@@ -113,17 +115,18 @@ def judge(poses, answer):
 def main():
     base, new = parse(sys.argv[1]), parse(sys.argv[2])
     counts = Counter()
-    for key in sorted(base):
+    for key in sorted(base, key=lambda k: base[k][2]):
         if key not in new or base[key][1] == new[key][1]:
             continue
+        label = new[key][2]
         poses = base[key][0]
         try:
             a, b = judge(poses, base[key][1]), judge(poses, new[key][1])
         except Exception as e:  # the reference's own failure, reported
-            print(f"{key[0]} {key[1]}: reference failed {e!r}")
+            print(f"{label}: reference failed {e!r}")
             continue
         counts[(a[0], b[0])] += 1
-        print(f"{key[0]} {key[1]}: {a[0]} -> {b[0]}   [{a[1]}] -> [{b[1]}]")
+        print(f"{label}: {a[0]} -> {b[0]}   [{a[1]}] -> [{b[1]}]")
         sys.stdout.flush()
     print("transitions:")
     for (a, b), n in sorted(counts.items()):

@@ -1043,3 +1043,56 @@ fn issue24_an_answer_that_lacks_a_point_at_coincident_poles_is_refused() {
         }
     }
 }
+
+/// A line of common points of the two center-point curves that a later
+/// choice of the shared poses finds, where an earlier choice found
+/// isolated points, is that choice's rounding: the task is refused as not
+/// resolved, not as having infinitely many Burmester points (five42).
+/// Fuzz findings `9da3b0ea` moved and `cada740b` as given: four isolated
+/// exact points each (`tests/python/burmester_reference.py`, mpmath; the
+/// curves share no component). Fails before: `InfinitelyManyBurmesterPoints`.
+#[test]
+fn issue24_a_line_within_a_later_choice_s_rounding_is_not_infinitely_many_points() {
+    use burmester::{DegenerateError, Error};
+    let cases: [(&str, [(f64, f64, f64); 5]); 2] = [
+        (
+            "9da3b0ea moved",
+            [
+                (43723718355.99744, 999043660934.4398, -97.43310992320511),
+                (43723718355.99744, 999043660934.4398, -99.00390625),
+                (5.855549643737797, -0.17489487341568397, -99.00390625),
+                (-4.417801451614124, 0.2747242247391977, -99.003909579),
+                (-2.413092469320362, -99.9087384652794, -102.1454989035898),
+            ],
+        ),
+        (
+            "cada740b",
+            [
+                (
+                    -9.84375776953125e-10,
+                    6.054687499999999e-7,
+                    1.9921875000000004e-9,
+                ),
+                (-9.84375976953125e-10, 9.960937499999999e-7, -1e-9),
+                (
+                    -3.9160937597656245e-7,
+                    6.054687499933592e-7,
+                    -3.906250000003906,
+                ),
+                (
+                    7.498624999023438e-6,
+                    9.960937499999999e-7,
+                    -3.906250004003906,
+                ),
+                (-3.9160937597656245e-7, 6.054687499933592e-7, -3.906250001),
+            ],
+        ),
+    ];
+    for (name, poses) in cases {
+        let q: Vec<Pose> = poses.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect();
+        match FivePositions::new(&q) {
+            Err(Error::Degenerate(DegenerateError::UnresolvedBurmesterPoints { .. })) => {}
+            other => panic!("{name}: refused as not resolved expected, got {other:?}"),
+        }
+    }
+}

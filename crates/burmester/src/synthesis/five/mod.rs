@@ -7,7 +7,7 @@
 
 use nalgebra::{Complex, Matrix4, Point2, Vector2, Vector4};
 
-use crate::error::Result;
+use crate::error::{DegenerateError, Error, Result};
 use crate::geom::cubic::roots::{
     form_eval, form_mul, form_roots_mult, form_sub, quadratic_roots, roots_in_mult,
 };
@@ -151,7 +151,9 @@ impl FivePositions {
     /// are on its line) for every root and an even count of at most four
     /// (a task within rounding of a degenerate one, such as pairs of poses
     /// of one angle or half a turn apart, where the resultant's rounding
-    /// band holds several of its critical points), when the answer lacks a
+    /// band holds several of its critical points), when a choice finds a
+    /// line of common points where an earlier one found isolated points
+    /// (the line within rounding), when the answer lacks a
     /// Burmester point at coincident poles (`P_ab = P_cd`, verified on the
     /// circle equations) that no choice lists, or when the points
     /// computed with another pose as the reference disagree (see below).
@@ -346,6 +348,8 @@ impl FivePositions {
             }
         }
         let mut any = false;
+        // Whether a choice gave its points (without a line of them).
+        let mut solved = false;
         // The choices in `order`, the first clean one taken. With
         // `required` points it must list them, and every point within
         // `BURMESTER_NEAR` task sizes that an earlier choice verified (each
@@ -359,7 +363,32 @@ impl FivePositions {
                     continue;
                 };
                 any = true;
-                let (points, mut sliders, lost, distinct) = elim.points(&sub, &motion)?;
+                // A line of common points of the two curves (every point of
+                // it a Burmester center) from a later choice, where an
+                // earlier one found isolated common points: the line is
+                // this choice's rounding, and the task is refused as not
+                // resolved (five42: nine frames of the fuzz findings, each
+                // with four isolated exact points, were refused as having
+                // infinitely many; going on to the next choice instead
+                // answered one of them wrongly and refused two right ones).
+                // Where the points are not isolated, every choice that is
+                // not skipped finds the line.
+                let (points, mut sliders, lost, distinct) = match elim.points(&sub, &motion) {
+                    Ok(found) => {
+                        solved = true;
+                        found
+                    }
+                    Err(Error::Degenerate(DegenerateError::InfinitelyManyBurmesterPoints {
+                        ..
+                    })) if solved => {
+                        return Err(errors::unresolved(
+                            "a choice of the shared poses finds a line of common points of the \
+                             center-point curves where an earlier one finds isolated points: \
+                             the line is its rounding",
+                        ));
+                    }
+                    Err(e) => return Err(e),
+                };
                 // With three distinct near points verified (each passed
                 // `polish`), at most one more Burmester point exists: a far
                 // root read both as a finite point and as a slider (the far
