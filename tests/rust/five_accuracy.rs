@@ -1096,3 +1096,55 @@ fn issue24_a_line_within_a_later_choice_s_rounding_is_not_infinitely_many_points
         }
     }
 }
+
+/// Where the angles' rounding of a choice's resultant is measured (five41),
+/// the common asymptotic direction of its two curves is decided with the
+/// measured rounding too (five42): the magnitude bound that called the
+/// resultant zero also called the curves' asymptotic normals parallel, and
+/// a far point was read as a slider. Fuzz findings `5112b39f` moved (angles
+/// near `34132` rad; its point `770` task sizes out) and `1b251dfd` moved
+/// (angles near `100` rad; `310` task sizes out), each listed as one point
+/// and a slider where the exact task has two points and a complex pair
+/// (`tests/python/burmester_reference.py`, mpmath). Fails before: the far
+/// point missing.
+#[test]
+fn issue24_a_far_point_is_not_read_as_a_slider_where_the_angles_are_measured() {
+    assert_at_exact(
+        "5112b39f moved",
+        &[
+            (34132.81356346431, 34132.807079057115, 34132.81640625),
+            (34132.8125, 34132.8125, 34132.812499907),
+            (34132.81467874012, 34132.81574220304, 34132.8125),
+            (-21624.031478641824, -48701.44860150799, 34115.8125),
+            (34185.23950346967, 34210.82964521469, 34111.81640625),
+        ],
+        &[
+            (-51048397.172473684, 34359510.546512544),
+            (34175.25826364923, 34105.60954787749),
+        ],
+        1e-6,
+    );
+    assert_at_exact(
+        "1b251dfd moved",
+        &[
+            (0.0013260610120030126, 0.000491489768403724, -100.390625),
+            (-2.0527205034100092e-7, -4.49443205921284e-7, -99.390625),
+            (417.28562180055303, 908.775390202951, -99.390626),
+            (
+                4.172856217996443e-10,
+                9.087753902033683e-10,
+                -105.6738103071796,
+            ),
+            (
+                -2.0527205034100092e-7,
+                -4.49443205921284e-7,
+                -102.5322176535898,
+            ),
+        ],
+        &[
+            (0.0001473141378245786, 0.00032254084676396587),
+            (225175.98845560447, -102844.6682814264),
+        ],
+        1e-6,
+    );
+}

@@ -953,6 +953,13 @@ fn resultant([a, b, c, d, e, g]: [&Bounded; 6]) -> Bounded {
     agcd.mul(&agcd).sub(&aebd.mul(&bgce))
 }
 
+/// The normal `(alpha, beta)` of a circular cubic's real asymptotic
+/// direction from the coefficients of its cubic part
+/// `(x^2 + y^2)(alpha x + beta y)` (`x^3, x^2 y, x y^2, y^3`).
+fn cubic_normal(v: &[f64]) -> Vector2<f64> {
+    Vector2::new(0.5 * (v[0] + v[2]), 0.5 * (v[1] + v[3]))
+}
+
 /// Whether a value is zero within the rounding band of its bound.
 fn negligible(v: f64, bound: f64) -> bool {
     v.abs() <= tolerance::BURMESTER_EPS * f64::EPSILON * bound
@@ -1105,22 +1112,29 @@ impl Elimination {
         // conditioned choice was skipped and the answer lost both points
         // (five41). So where the bound of the positions' rounding alone
         // leaves the resultant standing, the angles' rounding is measured:
-        // each angle moved alone by it, the changes added up.
-        let vanishes = checked
-            && within(&rd)
-            && ({
-                // The positions' rounding as before, the angles' measured.
-                let forms = [[1, 2, 3], [1, 2, 4]].map(|rows| at_q(rows, true, false));
-                let [[ap, bp, cp], [dp, ep, gp]] = &forms;
-                let rp = resultant([ap, bp, cp, dp, ep, gp]);
-                within(&rp)
-                    || Self::angles_move(sub, &r.v).is_none_or(|moved| {
-                        rp.v.iter().zip(&rp.e).zip(&moved).all(|((v, e), m)| {
-                            v.abs() <= tolerance::BURMESTER_EPS * (f64::EPSILON * (e + v.abs()) + m)
-                        })
-                    })
+        // each angle moved alone by it, the changes added up. `measured`:
+        // the cubic parts with the positions' rounding, and how far the
+        // angles' rounding moves the two curves' asymptotic normals.
+        let measured = if checked && within(&rd) {
+            // The positions' rounding as before, the angles' measured.
+            let [[ap, bp, cp], [dp, ep, gp]] =
+                [[1, 2, 3], [1, 2, 4]].map(|rows| at_q(rows, true, false));
+            let rp = resultant([&ap, &bp, &cp, &dp, &ep, &gp]);
+            if within(&rp) {
+                return None;
+            }
+            let (moved, normals) = Self::angles_move(sub, &r.v, [&a, &d])?;
+            let vanishes = rp.v.iter().zip(&rp.e).zip(&moved).all(|((v, e), m)| {
+                v.abs() <= tolerance::BURMESTER_EPS * (f64::EPSILON * (e + v.abs()) + m)
             });
-        if vanishes || r.v.iter().any(|v| !v.is_finite()) {
+            if vanishes {
+                return None;
+            }
+            Some((ap, dp, normals))
+        } else {
+            None
+        };
+        if r.v.iter().any(|v| !v.is_finite()) {
             return None;
         }
         let shared = |j: usize, k: usize| {
@@ -1136,14 +1150,27 @@ impl Elimination {
         // The cubic part of a circular cubic is `(x^2 + y^2)(alpha x + beta y)`:
         // its real asymptotic direction is normal to `(alpha, beta)`.
         let normal = |k: &Bounded| {
-            let v = Vector2::new(0.5 * (k.v[0] + k.v[2]), 0.5 * (k.v[1] + k.v[3]));
+            let v = cubic_normal(&k.v);
             let e = Vector2::new(
                 0.5 * (k.e[0] + k.e[2] + k.v[0].abs() + k.v[2].abs()),
                 0.5 * (k.e[1] + k.e[3] + k.v[1].abs() + k.v[3].abs()),
             );
             (v, e)
         };
-        let ((nf, ef), (nh, eh)) = (normal(&ad), normal(&dd));
+        // Where the angles' rounding was measured, the common asymptotic
+        // direction is decided with it too: the magnitude bound that called
+        // the resultant zero also called the two curves' normals parallel,
+        // and a far point was read as a slider (fuzz findings `1c3f2c56`,
+        // `5112b39f` moved, `4.3e3` and `770` task sizes out: a point and a
+        // slider where the exact task has two points; `1b251dfd` moved,
+        // five42).
+        let ((nf, ef), (nh, eh)) = match &measured {
+            Some((ap, dp, [mf, mh])) => {
+                let ((nf, ef), (nh, eh)) = (normal(ap), normal(dp));
+                ((nf, ef + mf / f64::EPSILON), (nh, eh + mh / f64::EPSILON))
+            }
+            None => (normal(&ad), normal(&dd)),
+        };
         // A curve whose cubic part is zero within rounding has the line at
         // infinity for a component (every direction a slider's): this
         // choice is degenerate.
@@ -1170,15 +1197,23 @@ impl Elimination {
     }
 
     /// How far the rounding of `sub`'s angles moves the coefficients of
-    /// its resultant (`base`, as [`Self::build`] forms it), to first order:
-    /// each pose's angle moved alone by the angles' rounding
-    /// (`data_rounding`: twice `eps` of the largest angle), the resultant
-    /// computed again and the changes added up. `None` where a moved task
-    /// has no elimination.
-    fn angles_move(sub: &LocalMotion, base: &[f64]) -> Option<Vec<f64>> {
+    /// its resultant (`base`, as [`Self::build`] forms it) and the
+    /// asymptotic normals of its two curves (of their cubic parts `cubic`,
+    /// [`cubic_normal`]), to first order: each pose's angle moved alone by
+    /// the angles' rounding (`data_rounding`: twice `eps` of the largest
+    /// angle), the elimination built again and the changes added up (per
+    /// coordinate for the normals). `None` where a moved task has no
+    /// elimination.
+    #[allow(clippy::type_complexity)]
+    fn angles_move(
+        sub: &LocalMotion,
+        base: &[f64],
+        cubic: [&Bounded; 2],
+    ) -> Option<(Vec<f64>, [Vector2<f64>; 2])> {
         let poses = sub.poses.as_slice();
         let da = sub.data_rounding.1 * f64::EPSILON;
         let mut moved = vec![0.0; base.len()];
+        let mut normals = [Vector2::zeros(); 2];
         for k in 0..poses.len() {
             let q = PerPose::from_fn(poses.len(), |j| {
                 let mut p = poses[j];
@@ -1195,8 +1230,14 @@ impl Elimination {
             for (s, (a, b)) in moved.iter_mut().zip(other.r.v.iter().zip(base)) {
                 *s += (a - b).abs();
             }
+            for (n, (o, b)) in normals
+                .iter_mut()
+                .zip([&other.forms[0], &other.forms[3]].into_iter().zip(cubic))
+            {
+                *n += (cubic_normal(&o.v) - cubic_normal(&b.v)).abs();
+            }
         }
-        Some(moved)
+        Some((moved, normals))
     }
 
     /// The Burmester points and sliders of this elimination (`motion` the
