@@ -1054,7 +1054,8 @@ fn issue24_an_answer_that_lacks_a_point_at_coincident_poles_is_refused() {
 #[test]
 fn issue24_a_line_within_a_later_choice_s_rounding_is_not_infinitely_many_points() {
     use burmester::{DegenerateError, Error};
-    let cases: [(&str, [(f64, f64, f64); 5]); 2] = [
+    type Case = (&'static str, [(f64, f64, f64); 5]);
+    let cases: [Case; 2] = [
         (
             "9da3b0ea moved",
             [
