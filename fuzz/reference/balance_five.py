@@ -83,15 +83,22 @@ def judge(poses, answer):
         return "right", "not isolated"
     real, _ = ref
     s, (cx, cy) = size_c(poses)
-    near = lambda x, y: math.hypot(x - cx, y - cy) <= 1e4 * s  # noqa: E731
+    def reach_off(x, y, among):
+        """`size + d` at `(x, y)` (within `1e4` task sizes, else None) and the
+        distance from it to the nearest of `among` (exact where mpmath)."""
+        d = math.hypot(float(x) - cx, float(y) - cy)
+        if d > 1e4 * s:
+            return None, None
+        off = min((float(mpmath.sqrt((qx - x) ** 2 + (qy - y) ** 2)) for qx, qy in among), default=math.inf)
+        return s + d, off
+
     bad = []
     worst = 0.0
     for rx, ry in real:
-        fx, fy = float(rx), float(ry)
-        if not near(fx, fy):
+        reach, off = reach_off(rx, ry, pts)
+        if reach is None:
             continue
-        reach = s + math.hypot(fx - cx, fy - cy)
-        off = min((float(mpmath.sqrt((rx - x) ** 2 + (ry - y) ** 2)) for x, y in pts), default=math.inf)
+        fx, fy = float(rx), float(ry)
         if off > 1e-3 * reach:
             bad.append(f"missing ({fx:.6g},{fy:.6g})")
         here = sum(1 for x, y in pts if math.hypot(x - fx, y - fy) <= 1e-3 * reach)
@@ -99,10 +106,9 @@ def judge(poses, answer):
         if here > there:
             bad.append(f"dup ({fx:.6g},{fy:.6g})")
     for x, y in pts:
-        if not near(x, y):
+        reach, off = reach_off(x, y, real)
+        if reach is None:
             continue
-        reach = s + math.hypot(x - cx, y - cy)
-        off = min((float(mpmath.sqrt((rx - x) ** 2 + (ry - y) ** 2)) for rx, ry in real), default=math.inf)
         if off > 1e-3 * reach:
             bad.append(f"ghost ({x:.6g},{y:.6g})")
         elif off > 1e-6 * reach:
