@@ -7,7 +7,7 @@
 
 use nalgebra::{Complex, Matrix4, Point2, Vector2, Vector4};
 
-use crate::error::Result;
+use crate::error::{DegenerateError, Error, Result};
 use crate::geom::cubic::roots::{
     form_eval, form_mul, form_roots_mult, form_sub, quadratic_roots, roots_in_mult,
 };
@@ -151,7 +151,11 @@ impl FivePositions {
     /// are on its line) for every root and an even count of at most four
     /// (a task within rounding of a degenerate one, such as pairs of poses
     /// of one angle or half a turn apart, where the resultant's rounding
-    /// band holds several of its critical points), or when the points
+    /// band holds several of its critical points), when a choice finds a
+    /// line of common points where an earlier one found isolated points
+    /// (the line within rounding), when the answer lacks a
+    /// Burmester point at coincident poles (`P_ab = P_cd`, verified on the
+    /// circle equations) that no choice lists, or when the points
     /// computed with another pose as the reference disagree (see below).
     ///
     /// # The answer is checked
@@ -181,10 +185,20 @@ impl FivePositions {
     /// poses ([`check_poses`](crate::synthesis::task::check_poses): a
     /// task's).
     pub(crate) fn of(poses: &[Pose]) -> Result<Self> {
-        let answer = Self::solve(poses)?;
+        let (answer, lacking) = Self::solve(poses)?;
+        if lacking {
+            return Err(errors::unresolved(
+                "a Burmester point at coincident poles (verified on the circle equations) is \
+                 listed by no choice of the shared poses, and the answer lacks it",
+            ));
+        }
         for r in 1..5 {
             let turned: [Pose; 5] = core::array::from_fn(|k| poses[(k + r) % 5]);
-            if let Ok(other) = Self::solve(&turned) {
+            // Another reference pose's answer is compared even where it
+            // lacks such a point: refused in its own right, it would leave
+            // a wrong answer unchecked (five42: refusing it inside `solve`
+            // answered two frames wrongly that this comparison refuses).
+            if let Ok((other, _)) = Self::solve(&turned) {
                 if !answer.agrees(&other, true) || !other.agrees(&answer, false) {
                     return Err(errors::unresolved(
                         "the points computed with another pose as the reference pose disagree \
@@ -237,8 +251,11 @@ impl FivePositions {
     }
 
     /// The Burmester points of five poses with the first as the reference
-    /// pose, unchecked.
-    fn solve(poses: &[Pose]) -> Result<Self> {
+    /// pose, unchecked, and whether they lack a Burmester point at
+    /// coincident poles that no choice of the shared poses lists (see
+    /// below: [`Self::of`] refuses such an answer, and compares it with its
+    /// own where another reference pose gives it).
+    fn solve(poses: &[Pose]) -> Result<(Self, bool)> {
         let motion = LocalMotion::new(poses)?;
         // The pair with the best conditioned pole.
         let mut best = (0.0, 0, 1);
@@ -331,6 +348,8 @@ impl FivePositions {
             }
         }
         let mut any = false;
+        // Whether a choice gave its points (without a line of them).
+        let mut solved = false;
         // The choices in `order`, the first clean one taken. With
         // `required` points it must list them, and every point within
         // `BURMESTER_NEAR` task sizes that an earlier choice verified (each
@@ -344,7 +363,32 @@ impl FivePositions {
                     continue;
                 };
                 any = true;
-                let (points, mut sliders, lost, distinct) = elim.points(&sub, &motion)?;
+                // A line of common points of the two curves (every point of
+                // it a Burmester center) from a later choice, where an
+                // earlier one found isolated common points: the line is
+                // this choice's rounding, and the task is refused as not
+                // resolved (five42: nine frames of the fuzz findings, each
+                // with four isolated exact points, were refused as having
+                // infinitely many; going on to the next choice instead
+                // answered one of them wrongly and refused two right ones).
+                // Where the points are not isolated, every choice that is
+                // not skipped finds the line.
+                let (points, mut sliders, lost, distinct) = match elim.points(&sub, &motion) {
+                    Ok(found) => {
+                        solved = true;
+                        found
+                    }
+                    Err(Error::Degenerate(DegenerateError::InfinitelyManyBurmesterPoints {
+                        ..
+                    })) if solved => {
+                        return Err(errors::unresolved(
+                            "a choice of the shared poses finds a line of common points of the \
+                             center-point curves where an earlier one finds isolated points: \
+                             the line is its rounding",
+                        ));
+                    }
+                    Err(e) => return Err(e),
+                };
                 // With three distinct near points verified (each passed
                 // `polish`), at most one more Burmester point exists: a far
                 // root read both as a finite point and as a slider (the far
@@ -411,6 +455,7 @@ impl FivePositions {
                 })
         };
         let mut taken = first_clean(&choices, &[])?;
+        let mut lacking = false;
         let redo = !required.is_empty()
             && taken.as_ref().is_none_or(|(_, p, _)| {
                 required
@@ -434,6 +479,31 @@ impl FivePositions {
                 if redo || more {
                     taken = Some(t);
                 }
+            } else if redo {
+                // No choice lists them: the first answer lacks a point that
+                // exists (it passed `polish` and the concyclic test), and it
+                // was given anyway. Fuzz findings `1491101c` moved (the
+                // point at `Q` of the only choice left, two poses at one
+                // position: a double point listed in place of the two) and
+                // `76e9fa53` moved (a near point and the far one at
+                // coincident poles lost together), both answered by a
+                // choice admitted by five41's measurement of the angles'
+                // rounding, and refused before it. Loosely: a point within
+                // `1e-2` of `size + d` of it (the closeness of `agrees`),
+                // or a slider it is the far reading of, lists it. The
+                // points at coincident poles are polished from the poles,
+                // and at `DOUBLE_REACH` four right answers were refused
+                // (a far point listed `7e-6` of `size + d` off it,
+                // `2e0c2d74` moved; a near one `1.3e-3` off, where `polish`
+                // stayed at the pole, `24fd0b38`).
+                lacking = taken.as_ref().is_some_and(|(_, p, s)| {
+                    required.iter().any(|r| {
+                        let reach = motion.scale + (r.center - motion.origin).norm();
+                        !p.iter()
+                            .any(|d| (d.center - r.center).norm() <= 1e-2 * reach)
+                            && !s.iter().any(|s| far_point_of_slider(&motion, r, s))
+                    })
+                });
             }
         }
         let taken = taken.map(|(_, p, s)| (p, s));
@@ -476,18 +546,21 @@ impl FivePositions {
         };
         let curves = [curve([1, 2, 3]), curve([1, 2, 4])];
         let none = Point2::origin();
-        Ok(FivePositions {
-            motion,
-            points: PerPose::up_to(&points, Dyad::new(none, none)),
-            sliders: PerPose::up_to(
-                &sliders,
-                BurmesterSlider {
-                    circle: none,
-                    direction: Vector2::zeros(),
-                },
-            ),
-            curves,
-        })
+        Ok((
+            FivePositions {
+                motion,
+                points: PerPose::up_to(&points, Dyad::new(none, none)),
+                sliders: PerPose::up_to(
+                    &sliders,
+                    BurmesterSlider {
+                        circle: none,
+                        direction: Vector2::zeros(),
+                    },
+                ),
+                curves,
+            },
+            lacking,
+        ))
     }
 
     /// The five poses.
@@ -880,6 +953,13 @@ fn resultant([a, b, c, d, e, g]: [&Bounded; 6]) -> Bounded {
     agcd.mul(&agcd).sub(&aebd.mul(&bgce))
 }
 
+/// The normal `(alpha, beta)` of a circular cubic's real asymptotic
+/// direction from the coefficients of its cubic part
+/// `(x^2 + y^2)(alpha x + beta y)` (`x^3, x^2 y, x y^2, y^3`).
+fn cubic_normal(v: &[f64]) -> Vector2<f64> {
+    Vector2::new(0.5 * (v[0] + v[2]), 0.5 * (v[1] + v[3]))
+}
+
 /// Whether a value is zero within the rounding band of its bound.
 fn negligible(v: f64, bound: f64) -> bool {
     v.abs() <= tolerance::BURMESTER_EPS * f64::EPSILON * bound
@@ -1032,22 +1112,29 @@ impl Elimination {
         // conditioned choice was skipped and the answer lost both points
         // (five41). So where the bound of the positions' rounding alone
         // leaves the resultant standing, the angles' rounding is measured:
-        // each angle moved alone by it, the changes added up.
-        let vanishes = checked
-            && within(&rd)
-            && ({
-                // The positions' rounding as before, the angles' measured.
-                let forms = [[1, 2, 3], [1, 2, 4]].map(|rows| at_q(rows, true, false));
-                let [[ap, bp, cp], [dp, ep, gp]] = &forms;
-                let rp = resultant([ap, bp, cp, dp, ep, gp]);
-                within(&rp)
-                    || Self::angles_move(sub, &r.v).is_none_or(|moved| {
-                        rp.v.iter().zip(&rp.e).zip(&moved).all(|((v, e), m)| {
-                            v.abs() <= tolerance::BURMESTER_EPS * (f64::EPSILON * (e + v.abs()) + m)
-                        })
-                    })
+        // each angle moved alone by it, the changes added up. `measured`:
+        // the cubic parts with the positions' rounding, and how far the
+        // angles' rounding moves the two curves' asymptotic normals.
+        let measured = if checked && within(&rd) {
+            // The positions' rounding as before, the angles' measured.
+            let [[ap, bp, cp], [dp, ep, gp]] =
+                [[1, 2, 3], [1, 2, 4]].map(|rows| at_q(rows, true, false));
+            let rp = resultant([&ap, &bp, &cp, &dp, &ep, &gp]);
+            if within(&rp) {
+                return None;
+            }
+            let (moved, normals) = Self::angles_move(sub, &r.v, [&a, &d])?;
+            let vanishes = rp.v.iter().zip(&rp.e).zip(&moved).all(|((v, e), m)| {
+                v.abs() <= tolerance::BURMESTER_EPS * (f64::EPSILON * (e + v.abs()) + m)
             });
-        if vanishes || r.v.iter().any(|v| !v.is_finite()) {
+            if vanishes {
+                return None;
+            }
+            Some((ap, dp, normals))
+        } else {
+            None
+        };
+        if r.v.iter().any(|v| !v.is_finite()) {
             return None;
         }
         let shared = |j: usize, k: usize| {
@@ -1063,14 +1150,27 @@ impl Elimination {
         // The cubic part of a circular cubic is `(x^2 + y^2)(alpha x + beta y)`:
         // its real asymptotic direction is normal to `(alpha, beta)`.
         let normal = |k: &Bounded| {
-            let v = Vector2::new(0.5 * (k.v[0] + k.v[2]), 0.5 * (k.v[1] + k.v[3]));
+            let v = cubic_normal(&k.v);
             let e = Vector2::new(
                 0.5 * (k.e[0] + k.e[2] + k.v[0].abs() + k.v[2].abs()),
                 0.5 * (k.e[1] + k.e[3] + k.v[1].abs() + k.v[3].abs()),
             );
             (v, e)
         };
-        let ((nf, ef), (nh, eh)) = (normal(&ad), normal(&dd));
+        // Where the angles' rounding was measured, the common asymptotic
+        // direction is decided with it too: the magnitude bound that called
+        // the resultant zero also called the two curves' normals parallel,
+        // and a far point was read as a slider (fuzz findings `1c3f2c56`,
+        // `5112b39f` moved, `4.3e3` and `770` task sizes out: a point and a
+        // slider where the exact task has two points; `1b251dfd` moved,
+        // five42).
+        let ((nf, ef), (nh, eh)) = match &measured {
+            Some((ap, dp, [mf, mh])) => {
+                let ((nf, ef), (nh, eh)) = (normal(ap), normal(dp));
+                ((nf, ef + mf / f64::EPSILON), (nh, eh + mh / f64::EPSILON))
+            }
+            None => (normal(&ad), normal(&dd)),
+        };
         // A curve whose cubic part is zero within rounding has the line at
         // infinity for a component (every direction a slider's): this
         // choice is degenerate.
@@ -1097,15 +1197,23 @@ impl Elimination {
     }
 
     /// How far the rounding of `sub`'s angles moves the coefficients of
-    /// its resultant (`base`, as [`Self::build`] forms it), to first order:
-    /// each pose's angle moved alone by the angles' rounding
-    /// (`data_rounding`: twice `eps` of the largest angle), the resultant
-    /// computed again and the changes added up. `None` where a moved task
-    /// has no elimination.
-    fn angles_move(sub: &LocalMotion, base: &[f64]) -> Option<Vec<f64>> {
+    /// its resultant (`base`, as [`Self::build`] forms it) and the
+    /// asymptotic normals of its two curves (of their cubic parts `cubic`,
+    /// [`cubic_normal`]), to first order: each pose's angle moved alone by
+    /// the angles' rounding (`data_rounding`: twice `eps` of the largest
+    /// angle), the elimination built again and the changes added up (per
+    /// coordinate for the normals). `None` where a moved task has no
+    /// elimination.
+    #[allow(clippy::type_complexity)]
+    fn angles_move(
+        sub: &LocalMotion,
+        base: &[f64],
+        cubic: [&Bounded; 2],
+    ) -> Option<(Vec<f64>, [Vector2<f64>; 2])> {
         let poses = sub.poses.as_slice();
         let da = sub.data_rounding.1 * f64::EPSILON;
         let mut moved = vec![0.0; base.len()];
+        let mut normals = [Vector2::zeros(); 2];
         for k in 0..poses.len() {
             let q = PerPose::from_fn(poses.len(), |j| {
                 let mut p = poses[j];
@@ -1122,8 +1230,14 @@ impl Elimination {
             for (s, (a, b)) in moved.iter_mut().zip(other.r.v.iter().zip(base)) {
                 *s += (a - b).abs();
             }
+            for (n, (o, b)) in normals
+                .iter_mut()
+                .zip([&other.forms[0], &other.forms[3]].into_iter().zip(cubic))
+            {
+                *n += (cubic_normal(&o.v) - cubic_normal(&b.v)).abs();
+            }
         }
-        Some(moved)
+        Some((moved, normals))
     }
 
     /// The Burmester points and sliders of this elimination (`motion` the
