@@ -568,7 +568,7 @@ fn curv43_an_edge_crossing_on_no_loop_of_the_pencil_is_not_dropped() {
 ///
 /// - `1e3714ac`: the driven center `C0` is within rounding of the pole of
 ///   poses 1 and 3, so the lines of poses 1 and 3 are one line in doubles,
-///   and the circle points of the stretch lie within `3e-17` of `C0` (on
+///   and the circle points of the stretch lie within `5e-17` of `C0` (on
 ///   that line): the library's room `2.4e-20` to `3.2e-19`, below an ulp
 ///   of the coordinates (`4.3e-19`). The failing chord is exactly defective
 ///   all along (17 samples; the check's point `D` on the exact curve has
@@ -577,7 +577,7 @@ fn curv43_an_edge_crossing_on_no_loop_of_the_pencil_is_not_dropped() {
 ///   centers whose circle points are nearly one point); the check's point
 ///   `Q` is `5.3e-20` off the exact curve, and the classifier's best
 ///   conditioned pair of conditions there (poses 3 and 4) gives its circle
-///   point `1.4e-16` from the exact one (pair sensitivity `3000`), on the
+///   point `1.4e-16` from the exact one (a sensitivity to the offset of about `3000`), on the
 ///   other side of lines 1 to 3 (room `1.8e-16`): defective by the
 ///   classifier, exactly free, between two free vertices whose pair (poses
 ///   2 and 3) is accurate.
