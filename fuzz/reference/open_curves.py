@@ -621,3 +621,78 @@ if __name__ == "__main__" and sys.argv[1:2] == ["curv43"]:
             oval = (case[0], case[1], case[2], case[3], case[4], (a, b), a)
             for t, p in curv41_exact(name, 16, oval)[4]:
                 print(f"  exact change on the oval's chord {a} - {b}: ({mpmath.nstr(p[0], 17)}, {mpmath.nstr(p[1], 17)})")
+
+
+# curv44: the two open class B inputs of curv43's round (center plane, views
+# `5e-7` and `6e-6` wide about (0.00281, 0.00281)): the failing chord on
+# c281397 and the check's point (the float curve's point next to its middle).
+CURV44 = {
+    "1e3714ac": (False, "Defective",
+                 [(0.0028109375000000382, 0.0028109375, -0.00390625), (0.002810935470970648, 0.002810939687366846, -0.0789765625),
+                  (0.002810937610016462, 0.0028109373904124904, 0.0), (0.0028109981436248515, 0.0028109891285376274, 28.109375)],
+                 (0.0028109656093750763, 0.002810965609374931), (0.0028109632723313073, 0.0028109675381688586),
+                 ((0.0028109364281778534, 0.002810995071647829), (0.0028109278477387797, 0.002811003652082263)),
+                 (0.0028109321379583166, 0.002810999361865046)),
+    "9df66c48": (False, "Defective",
+                 [(0.0028109375000000382, 0.0028109375, -3.90625e-6), (0.0028109375000000382, 0.002810937500000002, 0.04790234375),
+                  (0.0028109375000000382, 0.0028109375000000022, 0.064), (0.0028109656093749623, 0.0028109656093750065, 28.109375)],
+                 (0.0028109374999999077, 0.0028109375000000257), (0.002810994700845522, 0.00281092105499147),
+                 ((0.0028109499897716692, 0.002810953119603331), (0.0028109503378418188, 0.0028109527715331818)),
+                 (0.0028109501638067438, 0.0028109529455682563)),
+}
+
+def _ulp_moved(values, rnd):
+    """``values`` each moved by one ulp (``2^-52`` of itself), random sign."""
+    return tuple(v + rnd.choice((-1, 1)) * abs(v) * 2.0**-52 if v else v for v in values)
+
+
+def curv44_moved(name, patterns=16, seed=1):
+    """The exact class of the check's point and of the chord's ends (each
+    the float point taken onto the exact curve along the gradient) with
+    every number of the task and of the driven dyad moved by one ulp
+    (random signs, ``patterns`` times): ``(free at a, q, b; the smallest
+    |sign| / |C'_k - C1| at q)`` per pattern, and the largest move of the
+    exact circle point of ``q``'s curve point."""
+    circle, _lib, poses, c0, c1, (a, b), q = CURV44[name]
+    rnd = random.Random(seed)
+    out = []
+    base = None
+    for k in range(patterns + 1):
+        if k == 0:
+            mp, m0, m1 = poses, c0, c1
+        else:
+            mp = [_ulp_moved(p, rnd) for p in poses]
+            m0, m1 = _ulp_moved(c0, rnd), _ulp_moved(c1, rnd)
+        terms = curve(mp, False)
+        row = []
+        for p in (a, q, b):
+            x, y = project(terms, p)
+            z = exact_circle_point(mp, x, y)
+            s = branch_signs(mp, m0, m1, z)
+            row.append(all(v > 0 for v in s) or all(v < 0 for v in s))
+            if p is q:
+                imgs = [_motion(mp)[j] for j in range(4)]
+                room = min(abs(v) / mpmath.hypot(*_image_minus_c1(c, sn, tx, ty, m0, m1))
+                           for v, (c, sn, tx, ty) in zip(s, imgs))
+                zq = z
+        base = base or zq
+        out.append((row, room, mpmath.hypot(zq[0] - base[0], zq[1] - base[1])))
+    return out
+
+
+def _image_minus_c1(c, s, tx, ty, c0, c1):
+    """``C'_k - C1`` (as :func:`branch_signs`)."""
+    wx, wy = mpmath.mpf(c0[0]) - tx, mpmath.mpf(c0[1]) - ty
+    return c * wx + s * wy - mpmath.mpf(c1[0]), -s * wx + c * wy - mpmath.mpf(c1[1])
+
+
+if __name__ == "__main__" and sys.argv[1:2] == ["curv44"]:
+    # python fuzz/reference/open_curves.py curv44 [steps]
+    steps = int(sys.argv[2]) if sys.argv[2:] else 32
+    for name, case in CURV44.items():
+        curv41_report(name, case, steps)
+        moved = curv44_moved(name)
+        for k, (row, room, dz) in enumerate(moved):
+            print(f"  {'float task' if k == 0 else f'moved {k:2d}'}: exactly free at the chord's start, "
+                  f"the check's point, its end: {row}; q's room {mpmath.nstr(room, 3)}, "
+                  f"its circle point moved {mpmath.nstr(dz, 3)}")

@@ -557,3 +557,83 @@ fn curv43_an_edge_crossing_on_no_loop_of_the_pencil_is_not_dropped() {
         );
     }
 }
+
+/// curv44 (issue 24, class B, `fuzz/open/curves/` of curv43's round, center
+/// plane, views `4.7e-7` and `6e-6` wide about `(0.00281, 0.00281)`): free
+/// arcs over stretches of centers whose circle points are nearly one point,
+/// where the class is not decided by the float task. Exact values
+/// (`fuzz/reference/open_curves.py curv44`, mpmath at 60 digits; each point
+/// taken onto the exact curve along the gradient, its exact circle point and
+/// Filemon signs):
+///
+/// - `1e3714ac`: the driven center `C0` is within rounding of the pole of
+///   poses 1 and 3, so the lines of poses 1 and 3 are one line in doubles,
+///   and the circle points of the stretch lie within `5e-17` of `C0` (on
+///   that line): the library's room `2.4e-20` to `3.2e-19`, below an ulp
+///   of the coordinates (`4.3e-19`). The failing chord is exactly defective
+///   all along (17 samples; the check's point `D` on the exact curve has
+///   signs `-2.6e-29, -2.3e-26, 4.5e-28, -1.2e-18`), and was free.
+/// - `9df66c48`: poses 1 to 3 at one position to `2e-18` (a line of
+///   centers whose circle points are nearly one point); the check's point
+///   `Q` is `5.3e-20` off the exact curve, and the classifier's best
+///   conditioned pair of conditions there (poses 3 and 4) gives its circle
+///   point `1.4e-16` from the exact one (a sensitivity to the offset of about `3000`), on the
+///   other side of lines 1 to 3 (room `1.8e-16`): defective by the
+///   classifier, exactly free, between two free vertices whose pair (poses
+///   2 and 3) is accurate.
+///
+/// In both, one ulp of every number of the task and the driven dyad (16
+/// random sign patterns) flips the exact class of the whole chord (4 and 6
+/// patterns of 16): such a stretch is now not called free. The classifier's
+/// check on 16 points of every chord of both planes (before the fix it
+/// fails there, in both), no free arc within `6e-9` of `D` (the old chord,
+/// exactly defective, reaches `6.07e-9` from it either way) and none within
+/// half the old chord (`2.5e-10`) of `Q`.
+#[test]
+fn curv44_no_free_arc_where_the_circle_point_of_a_contracted_stretch_is_rounding() {
+    let cases = [
+        (
+            Finding {
+                name: "1e3714ac",
+                numbers: "0.0028109375000000382 0.0028109375 -0.00390625 \
+                          0.002810935470970648 0.002810939687366846 -0.0789765625 \
+                          0.002810937610016462 0.0028109373904124904 0.0 \
+                          0.0028109981436248515 0.0028109891285376274 28.109375 \
+                          0.0028109656093750763 0.002810965609374931 \
+                          0.0028109632723313073 0.0028109675381688586 \
+                          0.0028107182241329165 0.0028111870113125513 \
+                          0.0028107165329894234 0.0028111853201690583",
+            },
+            Point2::new(0.0028109321379583166, 0.002810999361865046),
+            6e-9,
+        ),
+        (
+            Finding {
+                name: "9df66c48",
+                numbers: "0.0028109375000000382 0.0028109375 -3.90625e-6 \
+                          0.0028109375000000382 0.002810937500000002 0.04790234375 \
+                          0.0028109375000000382 0.0028109375000000022 0.064 \
+                          0.0028109656093749623 0.0028109656093750065 28.109375 \
+                          0.0028109374999999077 0.0028109375000000257 \
+                          0.002810994700845522 0.00281092105499147 \
+                          0.002807956050552088 0.0028139189494477274 \
+                          0.002807956050552206 0.0028139189494478453",
+            },
+            Point2::new(0.0028109501638067438, 0.0028109529455682563),
+            2.5e-10,
+        ),
+    ];
+    for (f, d, r) in &cases {
+        assert_free_by_the_classifier(f, false);
+        assert_free_by_the_classifier(f, true);
+        let (four, fa, view) = f.arcs();
+        for p in arc_points(&four, &fa, &view, false) {
+            assert!(
+                (p - d).norm() > *r,
+                "{}: a free arc passes {p}, {} from {d}",
+                f.name,
+                (p - d).norm()
+            );
+        }
+    }
+}

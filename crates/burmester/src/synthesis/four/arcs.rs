@@ -421,7 +421,9 @@ impl FilemonArcs {
     /// `image` in the center plane) holds across the float curve's
     /// resolution there: its circle point is farther from every Filemon
     /// line than the band's width (the circle plane) or than twice the way
-    /// it moves as the center moves across the band (the center plane);
+    /// it moves as the center moves across the band, by each pair of the
+    /// conditions where they are nearly parallel ([`NEARLY_PARALLEL`]), and
+    /// than [`ULPS`] ulps of its coordinates (the center plane);
     /// `apart` is that circle point's distance from the nearest line
     /// ([`room`](Self::room)).
     fn decided(
@@ -440,16 +442,34 @@ impl FilemonArcs {
             match image {
                 None => apart > r,
                 // How far the circle point moves as the center moves
-                // across the band (one side: twice that, for the other).
-                // (The linear conditions solved as `circle_point` solves
-                // them, without its on-curve test: the moved center is on
-                // the band's edge by construction.)
+                // across the band (one side: twice that, for the other),
+                // and at least a few ulps of the circle point's coordinates
+                // (the lines through `C1` are known no better; fuzz input
+                // `1e3714ac`). Where the conditions are nearly parallel,
+                // by each pair of them ([`NEARLY_PARALLEL`]). (Solved as
+                // `circle_point` solves them, without its on-curve test:
+                // the moved center is on the band's edge by construction.)
                 Some(z) => normalized(curve.gradient(p)).is_some_and(|g| {
                     let motion = &self.four.motion;
-                    motion
-                        .form
-                        .solve(motion.local_of(p + g * r), &[1, 2, 3])
-                        .is_ok_and(|w| apart > 2.0 * (motion.global_of(w) - z).norm())
+                    let moved = motion.local_of(p + g * r);
+                    let moves = |ks: &[usize]| {
+                        motion
+                            .form
+                            .solve(moved, ks)
+                            .map(|w| (motion.global_of(w) - z).norm())
+                    };
+                    let far = if nearly_parallel(&motion.form, moved) {
+                        // A pair without a unique solution there is not
+                        // one the classifier takes.
+                        PAIRS
+                            .iter()
+                            .filter_map(|ks| moves(ks).ok())
+                            .fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.max(d))))
+                    } else {
+                        moves(&[1, 2, 3]).ok()
+                    };
+                    apart > ULPS * f64::EPSILON * z.coords.norm()
+                        && far.is_some_and(|d| apart > 2.0 * d)
                 }),
             }
         })
@@ -495,6 +515,37 @@ fn resolution(curve: &Cubic, p: Point2<f64>) -> Option<f64> {
 /// How many ulps of a point's coordinates its class must hold across, at
 /// least.
 const ULPS: f64 = 4.0;
+
+/// The pairs of the circle-point conditions (poses 2, 3, 4; rows 1 to 3)
+/// whose solutions [`FilemonArcs::decided`] asks to agree on a center's
+/// class where the conditions are nearly parallel ([`NEARLY_PARALLEL`]).
+const PAIRS: [[usize; 2]; 3] = [[1, 2], [1, 3], [2, 3]];
+
+/// The sine of the angle between two of the three circle-point conditions
+/// (their vectors `a_k(g)`) below which, for every pair, they are nearly
+/// parallel (they nearly leave a line of circle points: a stretch of
+/// centers whose circle points are nearly one point, three poses at nearly
+/// one position). There the best conditioned pair, which `circle_point`
+/// solves, changes along the curve within a chord, and off the curve the
+/// pairs disagree: on fuzz input `9df66c48` (sines `0.004` to `0.03`) the
+/// determinant of poses 3 and 4 is `0.53`, `1.33` and `0.57` of that of
+/// poses 2 and 3 at a chord's start, the curve's point at its middle and
+/// its end (`5e-10` apart in a view `6e-6` wide), and the two pairs' circle
+/// points for that middle point (`5e-20` off the exact curve) are
+/// `1.4e-16` apart, against a distance of `1.8e-16` from the Filemon
+/// lines. Elsewhere the pairs are well apart (`0.46` to `0.97` on the line
+/// of centers of `f1c7cc58`, whose best pair does not change along it).
+const NEARLY_PARALLEL: f64 = 0.1;
+
+/// Whether the three circle-point conditions at the center `g` (local) are
+/// nearly parallel ([`NEARLY_PARALLEL`]).
+fn nearly_parallel(form: &crate::synthesis::local::LinearForm, g: nalgebra::Vector2<f64>) -> bool {
+    let a = [1, 2, 3].map(|k| form.row(k, g).0);
+    [(0, 1), (0, 2), (1, 2)].iter().all(|&(i, j)| {
+        let (u, v) = (a[i], a[j]);
+        (u.x * v.y - u.y * v.x).abs() < NEARLY_PARALLEL * u.norm() * v.norm()
+    })
+}
 
 /// A traced vertex: where it is, the index of the mark it is (if any) and,
 /// for a vertex that is not a mark, whether it is free (`None` where it
