@@ -37,7 +37,9 @@ shared poses `1, i, j` and takes the first that certifies):
    of higher multiplicity, or a tangency there: cannot certify). A pole at
    infinity (two of poses 1, 2, 3 with equal rotation: a translation) is
    a real common point at infinity, not a factor of `R`: allowed alone and
-   with no Burmester point at infinity, else cannot certify.
+   with at most one Burmester point at infinity (a slider in the pole's
+   direction: the circular points take an even number), else cannot
+   certify.
 4. `Q` must be squarefree (`gcd(Q, Q') = 1`): then each root of `Q` is one
    common point of multiplicity one, and a real root is a real point (its
    conjugate lies over the same X). If not, the next shear is tried; if no
@@ -48,18 +50,24 @@ shared poses `1, i, j` and takes the first that certifies):
    common points of every such pair of cubics (each once at least); the
    real common direction is the kernel of `L1` where `L1 || L2`. With
    `L1` not parallel to `L2` all are at the circular points (complex:
-   no sliders; more than zero such is reported as `circ`). With
-   `L1 || L2`, the real point at infinity takes `m >= 1` and the circular
-   points `2 (mc - 1)`: `4 - deg Q` = 1 -> one slider; 2 -> a double
-   slider (a common asymptote): cannot certify; 3 -> ambiguous: cannot
-   certify.
+   no sliders). With `L1 || L2`, the real point at infinity takes
+   `m >= 1` and the circular points `2 (mc - 1)`: `4 - deg Q` = 1 -> one
+   slider; 2 -> a double slider (a common asymptote, listed twice); 3 or
+   4 -> ambiguous: cannot certify.
+6. (`points_of`, for `check`) each isolated root refined by exact
+   bisection and its point's y, the common root of the two cubics there.
 
 `check(poses, points, sliders)` compares a library answer with it:
-refused when the finite count or the slider count differs, when the
-listed points (by `X = x - u y`) do not fall one each into the root
-intervals (the maximal ones: split at points between consecutive roots),
-or when a listed point's `X` is not within `(1 + |u|) 1e-6 (size + d)` of
-its own root (the judge's accuracy; a Sturm count on that interval).
+refused when the count of points within `1e4` task sizes differs, when
+those do not pair one to one with the exact near points each within
+`1e-3 (size + d)`, or when the total (listed + sliders) differs from the
+exact total (real finite + real at infinity); certified with a mark when
+a point is over `1e-6 (size + d)` off (the judge's accuracy).
+
+    python fuzz/reference/certificate_five.py --random N [seed]
+    python fuzz/reference/certificate_five.py --designer N [seed]
+
+measure ordinary and designer tasks (see `random_main`).
 
     python fuzz/reference/certificate_five.py dump.txt [more dumps]
 
@@ -544,8 +552,6 @@ def check(poses, points, sliders, cert=None):
     except CannotCertify as e:
         return "cannot", str(e)
     s, (cx, cy) = size_c(poses)
-    ivs = info["intervals"]
-    u = info["u"]
     exact_pts = points_of(info)
     near_roots = [float(((px - cx) ** 2 + (py - cy) ** 2) ** 0.5) <= 1e4 * s for px, py in exact_pts]
     listed_near = [(x, y) for x, y in points if math.hypot(x - cx, y - cy) <= 1e4 * s]
