@@ -1149,3 +1149,46 @@ fn issue24_a_far_point_is_not_read_as_a_slider_where_the_angles_are_measured() {
         1e-6,
     );
 }
+
+/// A crank-rocker in millimetres (ground about 100) driven to five crank
+/// angles, two of them `1e-7` rad apart (stop 41's designer-range stress,
+/// `fuzz/reference/moderate_five.py`, family `known-near`): poses 2 and 3
+/// are `8.4e-6` mm apart in a task of size about 40 mm. Every choice of the
+/// shared poses vanishes within its rounding (the two curves of each
+/// nearly one curve), and the task was refused, with every pose as the
+/// reference pose, as having infinitely many Burmester points; the exact
+/// float task (`burmester_reference.py`) has two isolated real points,
+/// `(412.9879979506825, 276.06221975137896)` and
+/// `(403.51129160717744, 174.4180587269174)`, and no slider. The refusal
+/// stands (the rounding of every elimination decides it) but says that
+/// the points are not resolved and to move the near poses apart. A task whose
+/// points are truly not isolated with no poses near each other (Cardan
+/// motion, `curves.rs`) keeps `InfinitelyManyBurmesterPoints`.
+#[test]
+fn issue24_nearly_coincident_poses_whose_every_elimination_vanishes_are_not_infinitely_many() {
+    use burmester::{DegenerateError, Error};
+    let poses = [
+        (367.9841706374187, 431.5876429720099, -0.8127201859561507),
+        (334.2172582590474, 420.93818917293066, -0.671687837024974),
+        (334.2172658572368, 420.938192891125, -0.6716878712875773),
+        (394.53493494900073, 431.97763619403185, -0.9128145772057858),
+        (384.04430266030647, 432.7087531478958, -0.874031963831141),
+    ];
+    for r in 0..5 {
+        let turned: Vec<Pose> = (0..5)
+            .map(|k| {
+                let (x, y, a) = poses[(k + r) % 5];
+                Pose::new(x, y, a)
+            })
+            .collect();
+        match FivePositions::new(&turned) {
+            Err(e @ Error::Degenerate(DegenerateError::UnresolvedBurmesterPoints { .. })) => {
+                assert!(
+                    e.to_string().contains("nearly coincide"),
+                    "reference pose {r}: {e}"
+                );
+            }
+            other => panic!("reference pose {r}: not resolved expected, got {other:?}"),
+        }
+    }
+}

@@ -299,6 +299,18 @@ pub const ON_CURVE_TOLERANCE: f64 = 1e-9;
 /// task size and their angles within this many radians (modulo `2 pi`).
 pub const COINCIDENT_POSES: f64 = 1e-12;
 
+/// Two poses nearly coincide when their points agree within this times the
+/// task size and their angles within this many radians (modulo `2 pi`).
+/// Only a message depends on it: where every elimination of five poses
+/// vanishes within its rounding (the two curves of each choice nearly
+/// share a component), a task with two such poses is refused as not
+/// resolved (the rounding decides; move the poses apart), not as having
+/// infinitely many Burmester points. A crank-rocker driven to two crank
+/// angles `1e-7` rad apart (the poses `2e-7` task sizes apart) has two
+/// isolated exact points where every choice vanished (stop 41's
+/// designer-range stress, `fuzz/reference/moderate_five.py`).
+pub const NEARLY_COINCIDENT_POSES: f64 = 1e-4;
+
 /// A curve vanishes identically (the poses are rotations about one point)
 /// when every coefficient of its exact expansion is at most this times the
 /// largest coefficient of the same expansion with every term taken in

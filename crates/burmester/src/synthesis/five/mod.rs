@@ -508,6 +508,20 @@ impl FivePositions {
         }
         let taken = taken.map(|(_, p, s)| (p, s));
         if !any {
+            // Every choice vanished within its rounding. Two poses that
+            // nearly coincide make the two curves of every choice nearly
+            // one curve (the choice sharing the other three poses) or
+            // leave one of them only the digits of their difference: the
+            // points may well be isolated (a crank-rocker's poses at crank
+            // angles `1e-7` rad apart have two), and the rounding decides.
+            if nearly_coincident(&motion) {
+                return Err(errors::unresolved(
+                    "two poses nearly coincide (their points within 1e-4 of the task's size and \
+                     their angles within 1e-4 rad), and every elimination vanishes within its \
+                     rounding: the rounding decides whether the Burmester points are isolated; \
+                     move those poses apart",
+                ));
+            }
             return Err(errors::infinitely_many(
                 "the center-point curves of every two four-pose subsets that share three poses \
                  have a common component (a curve of Burmester centers, or the line at \
@@ -951,6 +965,19 @@ fn resultant([a, b, c, d, e, g]: [&Bounded; 6]) -> Bounded {
     let aebd = a.mul(e).sub(&b.mul(d));
     let bgce = b.mul(g).sub(&c.mul(e));
     agcd.mul(&agcd).sub(&aebd.mul(&bgce))
+}
+
+/// Whether two poses nearly coincide
+/// ([`tolerance::NEARLY_COINCIDENT_POSES`]; the local positions are in
+/// task sizes).
+fn nearly_coincident(m: &LocalMotion) -> bool {
+    let n = m.pos.len();
+    (0..n)
+        .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+        .any(|(i, j)| {
+            (m.pos[j] - m.pos[i]).norm() <= tolerance::NEARLY_COINCIDENT_POSES
+                && wrap_angle(m.theta[j] - m.theta[i]).abs() <= tolerance::NEARLY_COINCIDENT_POSES
+        })
 }
 
 /// The normal `(alpha, beta)` of a circular cubic's real asymptotic
