@@ -640,35 +640,17 @@ def main():
 
 
 def crank_rocker_task(rng, k):
-    """A designer task (after the lead's /tmp/mod/moderate.py 'known-near'):
+    """A designer task (`moderate_five.py`'s `known-near`, the same draws):
     a crank-rocker in mm, its coupler driven to five crank angles, two of
-    them `10^-k` apart, moved and turned."""
-    while True:
-        g = rng.uniform(50, 300)
-        a = rng.uniform(0.1, 0.5) * g
-        b = rng.uniform(0.6, 1.6) * g
-        c = rng.uniform(0.5, 1.5) * g
-        srt = sorted([g, a, b, c])
-        if a == srt[0] and srt[0] + srt[-1] < srt[1] + srt[2] - 1e-3 * g:
-            break
-    px, py = rng.uniform(-1, 1) * b, rng.uniform(0.2, 1) * b
-    th0 = rng.uniform(0, 2 * math.pi)
-    ths = [th0] + [th0 + x for x in sorted(rng.uniform(0.2, 2 * math.pi - 0.2) for _ in range(4))]
-    ths[2] = ths[1] + 10.0 ** -k * rng.choice([-1, 1])
-    poses = []
-    for t in ths:
-        ax, ay = a * math.cos(t), a * math.sin(t)
-        dx, dy = g - ax, -ay
-        d = math.hypot(dx, dy)
-        ca = (b * b + d * d - c * c) / (2 * b * d)
-        if abs(ca) > 1:
-            return None
-        phi = math.atan2(dy, dx) + math.acos(ca)
-        poses.append((ax + px * math.cos(phi) - py * math.sin(phi), ay + px * math.sin(phi) + py * math.cos(phi), phi))
-    r = rng.uniform(-math.pi, math.pi)
-    tx, ty = rng.uniform(-500, 500), rng.uniform(-500, 500)
-    cr, sr = math.cos(r), math.sin(r)
-    return [(cr * x - sr * y + tx, sr * x + cr * y + ty, p + r) for x, y, p in poses]
+    them `10^-k` apart, moved and turned; `None` where it does not
+    assemble."""
+    import os
+
+    sys.path.insert(0, os.path.dirname(__file__))
+    from moderate_five import known
+
+    task = known(rng, k)
+    return None if task is None else task[0]
 
 
 def random_main(kind, n, seed):
