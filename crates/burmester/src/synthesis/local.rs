@@ -442,6 +442,19 @@ pub(crate) struct LocalMotion {
 
 crate::geom::local_frame!(LocalMotion);
 
+/// The first two poses (0-based) whose points agree within `tol` times
+/// `scale` and whose angles within `tol` radians (modulo `2 pi`), if any.
+pub(crate) fn close_pair(poses: &[Pose], scale: f64, tol: f64) -> Option<(usize, usize)> {
+    let n = poses.len();
+    (0..n)
+        .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+        .find(|&(i, j)| {
+            let d = (poses[j].position - poses[i].position).norm();
+            let a = wrap_angle(poses[j].angle - poses[i].angle).abs();
+            d <= tol * scale && a <= tol
+        })
+}
+
 impl LocalMotion {
     /// The motion of two to five `poses` that passed the one check of the
     /// poses ([`check_poses`](crate::synthesis::task::check_poses): finite,
@@ -464,14 +477,8 @@ impl LocalMotion {
             .iter()
             .map(|p| (p.position - origin).norm())
             .fold(0.0, f64::max);
-        for i in 0..poses.len() {
-            for j in i + 1..poses.len() {
-                let d = (poses[j].position - poses[i].position).norm();
-                let a = wrap_angle(poses[j].angle - poses[i].angle).abs();
-                if d <= tolerance::COINCIDENT_POSES * scale && a <= tolerance::COINCIDENT_POSES {
-                    return Err(errors::coincident_poses(i + 1, j + 1));
-                }
-            }
+        if let Some((i, j)) = close_pair(poses, scale, tolerance::COINCIDENT_POSES) {
+            return Err(errors::coincident_poses(i + 1, j + 1));
         }
         if scale == 0.0 {
             return Err(errors::common_pole(origin));

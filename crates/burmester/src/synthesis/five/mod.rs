@@ -15,7 +15,7 @@ use crate::geom::cubic::{gradient as grad, hessian as hess};
 use crate::geom::{Cubic, LocalFrame, PerPose, Pose, cross, perp, wrap_angle};
 use crate::synthesis::Dyad;
 use crate::synthesis::errors;
-use crate::synthesis::local::{Failure, LocalMotion};
+use crate::synthesis::local::{Failure, LocalMotion, close_pair};
 use crate::synthesis::order::{Drive, drive};
 use crate::synthesis::task::of_poses;
 use crate::tolerance;
@@ -514,7 +514,13 @@ impl FivePositions {
             // leave one of them only the digits of their difference: the
             // points may well be isolated (a crank-rocker's poses at crank
             // angles `1e-7` rad apart have two), and the rounding decides.
-            if nearly_coincident(&motion) {
+            if close_pair(
+                &motion.poses,
+                motion.scale,
+                tolerance::NEARLY_COINCIDENT_POSES,
+            )
+            .is_some()
+            {
                 return Err(errors::unresolved(
                     "two poses nearly coincide (their points within 1e-4 of the task's size and \
                      their angles within 1e-4 rad), and every elimination vanishes within its \
@@ -965,19 +971,6 @@ fn resultant([a, b, c, d, e, g]: [&Bounded; 6]) -> Bounded {
     let aebd = a.mul(e).sub(&b.mul(d));
     let bgce = b.mul(g).sub(&c.mul(e));
     agcd.mul(&agcd).sub(&aebd.mul(&bgce))
-}
-
-/// Whether two poses nearly coincide
-/// ([`tolerance::NEARLY_COINCIDENT_POSES`]; the local positions are in
-/// task sizes).
-fn nearly_coincident(m: &LocalMotion) -> bool {
-    let n = m.pos.len();
-    (0..n)
-        .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
-        .any(|(i, j)| {
-            (m.pos[j] - m.pos[i]).norm() <= tolerance::NEARLY_COINCIDENT_POSES
-                && wrap_angle(m.theta[j] - m.theta[i]).abs() <= tolerance::NEARLY_COINCIDENT_POSES
-        })
 }
 
 /// The normal `(alpha, beta)` of a circular cubic's real asymptotic

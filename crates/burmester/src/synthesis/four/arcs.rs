@@ -8,7 +8,7 @@ use super::{FourPositions, POLL_SAMPLES};
 use crate::engine::Control;
 use crate::error::{Result, try_push};
 use crate::geom::cubic::roots::quadratic_roots;
-use crate::geom::{Cubic, Line, LocalFrame, PerPose, Viewport, normalized};
+use crate::geom::{Cubic, Line, LocalFrame, PerPose, Viewport, cross, normalized};
 use crate::synthesis::branch::FilemonLines;
 use crate::synthesis::errors;
 use crate::synthesis::motion::Motion;
@@ -464,7 +464,7 @@ impl FilemonArcs {
                         PAIRS
                             .iter()
                             .filter_map(|ks| moves(ks).ok())
-                            .fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.max(d))))
+                            .reduce(f64::max)
                     } else {
                         moves(&[1, 2, 3]).ok()
                     };
@@ -541,9 +541,9 @@ const NEARLY_PARALLEL: f64 = 0.1;
 /// nearly parallel ([`NEARLY_PARALLEL`]).
 fn nearly_parallel(form: &crate::synthesis::local::LinearForm, g: nalgebra::Vector2<f64>) -> bool {
     let a = [1, 2, 3].map(|k| form.row(k, g).0);
-    [(0, 1), (0, 2), (1, 2)].iter().all(|&(i, j)| {
-        let (u, v) = (a[i], a[j]);
-        (u.x * v.y - u.y * v.x).abs() < NEARLY_PARALLEL * u.norm() * v.norm()
+    PAIRS.iter().all(|&[i, j]| {
+        let (u, v) = (a[i - 1], a[j - 1]);
+        cross(u, v).abs() < NEARLY_PARALLEL * u.norm() * v.norm()
     })
 }
 
