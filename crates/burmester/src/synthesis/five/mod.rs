@@ -20,6 +20,7 @@ use crate::synthesis::order::{Drive, drive};
 use crate::synthesis::task::of_poses;
 use crate::tolerance;
 
+mod certificate;
 mod refine;
 
 /// A four-bar made of two Burmester dyads, classified for either dyad

@@ -1,0 +1,1798 @@
+//! An exact count certificate for the five-pose Burmester points (issue 24;
+//! the algorithm of `fuzz/reference/certificate_five.py`, cert43): the
+//! number of real finite Burmester points and of real points at infinity of
+//! the float task, in exact integer and rational arithmetic.
+//!
+//! The task within rounding: each pose's rotation from pose 1 is the f64
+//! `(a_k - a_1).sin_cos()`, moved onto the unit circle exactly by its
+//! half-angle tangent (rounded to a double); positions are the floats'
+//! exact dyadic values. Steps: the two center-point cubics `f1`, `f2`
+//! (integer, primitive); a shear `x = X + u Y`; the resultant
+//! `R(X) = res_Y(f1, f2)` by ten 6x6 Bareiss determinants and Newton
+//! interpolation; the poles' linear factors divided out exactly (`Q`);
+//! `Q` squarefree; its real roots counted by a Sturm sequence and isolated
+//! by bisection; the Burmester points at infinity from `4 - deg Q`.
+//!
+//! Sizes: every input is a finite f64, an exact dyadic of at most
+//! `1024 + 1074` bits, and the degrees are fixed (cubics, a resultant of
+//! degree at most 9), so every integer here is bounded by a fixed multiple
+//! of the f64 exponent range (cubic coefficients within about 25 such
+//! values' bits, the resultant within about 6 times that); measured on
+//! ordinary tasks: cubic coefficients of ~530 bits, resultants of ~3200.
+//! The work per task is bounded the same way (no loop runs on the inputs'
+//! values except the bisection, which halves a power-of-two Cauchy bound
+//! down to the roots' separation, itself bounded by the sizes above).
+//!
+//! Not yet wired into `FivePositions::of` (the next session does; until
+//! then its items are unused outside the tests).
+#![allow(dead_code)]
+
+use std::cmp::Ordering;
+
+use num_bigint::{BigInt, Sign};
+use num_traits::{One, Signed, Zero};
+
+/// Why a task could not be certified (a degenerate or ambiguous exact
+/// task, a non-finite input, or an internal check that failed).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct CannotCertify(pub(crate) String);
+
+fn cannot<T>(why: &str) -> Result<T, CannotCertify> {
+    Err(CannotCertify(why.to_string()))
+}
+
+// ------------------------------------------------------------ rationals
+
+/// An exact rational, reduced, with a positive denominator.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Rat {
+    n: BigInt,
+    d: BigInt,
+}
+
+impl Rat {
+    fn new(n: BigInt, d: BigInt) -> Rat {
+        debug_assert!(!d.is_zero());
+        let g = num_integer_gcd(&n, &d);
+        let (mut n, mut d) = if g.is_one() { (n, d) } else { (n / &g, d / &g) };
+        if d.is_negative() {
+            n = -n;
+            d = -d;
+        }
+        Rat { n, d }
+    }
+    fn int(n: BigInt) -> Rat {
+        Rat {
+            n,
+            d: BigInt::one(),
+        }
+    }
+    fn small(n: i64) -> Rat {
+        Rat::int(BigInt::from(n))
+    }
+    fn zero() -> Rat {
+        Rat::small(0)
+    }
+    fn is_zero(&self) -> bool {
+        self.n.is_zero()
+    }
+    fn sign(&self) -> Sign {
+        self.n.sign()
+    }
+    fn add(&self, o: &Rat) -> Rat {
+        if self.d == o.d {
+            return Rat::new(&self.n + &o.n, self.d.clone());
+        }
+        Rat::new(&self.n * &o.d + &o.n * &self.d, &self.d * &o.d)
+    }
+    fn neg(&self) -> Rat {
+        Rat {
+            n: -&self.n,
+            d: self.d.clone(),
+        }
+    }
+    fn sub(&self, o: &Rat) -> Rat {
+        self.add(&o.neg())
+    }
+    fn mul(&self, o: &Rat) -> Rat {
+        Rat::new(&self.n * &o.n, &self.d * &o.d)
+    }
+    /// `self / o`; `o` nonzero (checked by every caller).
+    fn div(&self, o: &Rat) -> Rat {
+        Rat::new(&self.n * &o.d, &self.d * &o.n)
+    }
+    fn cmp(&self, o: &Rat) -> Ordering {
+        (&self.n * &o.d).cmp(&(&o.n * &self.d))
+    }
+    /// The exact value of a finite f64.
+    fn of_f64(v: f64) -> Result<Rat, CannotCertify> {
+        if !v.is_finite() {
+            return cannot("a non-finite pose");
+        }
+        if v == 0.0 {
+            return Ok(Rat::zero());
+        }
+        let bits = v.to_bits();
+        let exp = ((bits >> 52) & 0x7ff) as i64;
+        let frac = bits & ((1u64 << 52) - 1);
+        let (m, e) = if exp == 0 {
+            (frac, -1074)
+        } else {
+            (frac | (1u64 << 52), exp - 1075)
+        };
+        let m = if v < 0.0 {
+            -BigInt::from(m)
+        } else {
+            BigInt::from(m)
+        };
+        Ok(if e >= 0 {
+            Rat::int(m << e as usize)
+        } else {
+            Rat::new(m, BigInt::one() << (-e) as usize)
+        })
+    }
+    /// The nearest f64 (ties to even), for values within the f64 range.
+    fn to_f64(&self) -> f64 {
+        if self.is_zero() {
+            return 0.0;
+        }
+        let neg = self.n.is_negative();
+        let n = self.n.abs();
+        let d = &self.d;
+        let k = n.bits() as i64 - d.bits() as i64;
+        // q = floor(n 2^-e / d) with 54..56 bits, or e at the subnormal floor
+        let e = (k - 55).max(-1074);
+        let (num, den) = if e >= 0 {
+            (n, d << e as usize)
+        } else {
+            (n << (-e) as usize, d.clone())
+        };
+        let q = &num / &den;
+        let r = &num - &q * &den;
+        let extra = q.bits() as i64 - 53;
+        let (mut m, exp) = if extra > 0 {
+            let low = &q & ((BigInt::one() << extra as usize) - 1);
+            let half = BigInt::one() << (extra - 1) as usize;
+            let m = &q >> extra as usize;
+            let up = low > half || (low == half && (!r.is_zero() || m.bit(0)));
+            (if up { m + 1 } else { m }, e + extra)
+        } else {
+            let twice = &r << 1;
+            let up = twice > den || (twice == den && q.bit(0));
+            (if up { q + 1 } else { q }, e)
+        };
+        if m.bits() > 53 {
+            m >>= 1;
+            return signed(libm::ldexp(to_u64(&m) as f64, (exp + 1) as i32), neg);
+        }
+        signed(libm::ldexp(to_u64(&m) as f64, exp as i32), neg)
+    }
+}
+
+fn signed(v: f64, neg: bool) -> f64 {
+    if neg { -v } else { v }
+}
+
+fn to_u64(m: &BigInt) -> u64 {
+    m.iter_u64_digits().next().unwrap_or(0)
+}
+
+/// The non-negative gcd (Euclid; `gcd(0, 0) = 0`).
+fn num_integer_gcd(a: &BigInt, b: &BigInt) -> BigInt {
+    let (mut a, mut b) = (a.abs(), b.abs());
+    while !b.is_zero() {
+        let r = &a % &b;
+        a = b;
+        b = r;
+    }
+    a
+}
+
+fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
+    a / num_integer_gcd(a, b) * b
+}
+
+// ------------------------------------------------ step 1: the exact task
+
+/// The f64 rotation `(cos d, sin d)` (`d.sin_cos()`) moved onto the unit
+/// circle exactly by its half-angle tangent rounded to a double.
+pub(crate) fn unit_rotation(d: f64) -> Result<(Rat, Rat), CannotCertify> {
+    if !d.is_finite() {
+        return cannot("a non-finite pose");
+    }
+    let (s, c) = d.sin_cos();
+    if s == 0.0 {
+        return Ok(if c > 0.0 {
+            (Rat::small(1), Rat::zero())
+        } else {
+            (Rat::small(-1), Rat::zero())
+        });
+    }
+    let (cr, sr) = (Rat::of_f64(c)?, Rat::of_f64(s)?);
+    let one = Rat::small(1);
+    let tau = if c >= 0.0 {
+        sr.div(&one.add(&cr))
+    } else {
+        one.sub(&cr).div(&sr)
+    };
+    let tau = Rat::of_f64(tau.to_f64())?;
+    let t2 = tau.mul(&tau);
+    let den = one.add(&t2);
+    Ok((one.sub(&t2).div(&den), Rat::small(2).mul(&tau).div(&den)))
+}
+
+/// A displacement from pose 1: `G -> R G + t`, `R = (c, s)` exactly on the
+/// unit circle.
+#[derive(Debug, Clone)]
+struct Disp {
+    c: Rat,
+    s: Rat,
+    tx: Rat,
+    ty: Rat,
+}
+
+/// The exact displacements of poses 2..5 from pose 1.
+fn displacements(poses: &[[f64; 3]; 5]) -> Result<Vec<Disp>, CannotCertify> {
+    let p1x = Rat::of_f64(poses[0][0])?;
+    let p1y = Rat::of_f64(poses[0][1])?;
+    let mut out = Vec::with_capacity(4);
+    for p in &poses[1..] {
+        let (c, s) = unit_rotation(p[2] - poses[0][2])?;
+        let tx = Rat::of_f64(p[0])?.sub(&c.mul(&p1x).sub(&s.mul(&p1y)));
+        let ty = Rat::of_f64(p[1])?.sub(&s.mul(&p1x).add(&c.mul(&p1y)));
+        out.push(Disp { c, s, tx, ty });
+    }
+    Ok(out)
+}
+
+// ------------------------------------------ step 2: the center-point cubics
+
+/// A polynomial of total degree at most 3 in `(x, y)`: `c[i][j]` the
+/// coefficient of `x^i y^j`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Poly2<T> {
+    c: [[T; 4]; 4],
+}
+
+type RPoly2 = Poly2<Rat>;
+
+fn p2_zero() -> RPoly2 {
+    Poly2 {
+        c: std::array::from_fn(|_| std::array::from_fn(|_| Rat::zero())),
+    }
+}
+
+fn p2_lin(c0: Rat, cx: Rat, cy: Rat) -> RPoly2 {
+    let mut p = p2_zero();
+    p.c[0][0] = c0;
+    p.c[1][0] = cx;
+    p.c[0][1] = cy;
+    p
+}
+
+fn p2_add(p: &RPoly2, q: &RPoly2, sign: i64) -> RPoly2 {
+    let mut r = p.clone();
+    for i in 0..4 {
+        for j in 0..4 {
+            if !q.c[i][j].is_zero() {
+                let v = if sign < 0 {
+                    q.c[i][j].neg()
+                } else {
+                    q.c[i][j].clone()
+                };
+                r.c[i][j] = r.c[i][j].add(&v);
+            }
+        }
+    }
+    r
+}
+
+/// The product; both factors' degrees sum to at most 3 here (entries of
+/// degree 1, 3x3 determinants).
+fn p2_mul(p: &RPoly2, q: &RPoly2) -> RPoly2 {
+    let mut r = p2_zero();
+    for i in 0..4 {
+        for j in 0..4 - i {
+            if p.c[i][j].is_zero() {
+                continue;
+            }
+            for k in 0..4 - i - j {
+                for l in 0..4 - i - j - k {
+                    if !q.c[k][l].is_zero() {
+                        r.c[i + k][j + l] = r.c[i + k][j + l].add(&p.c[i][j].mul(&q.c[k][l]));
+                    }
+                }
+            }
+        }
+    }
+    r
+}
+
+fn det3(r: [&[RPoly2; 3]; 3]) -> RPoly2 {
+    let m2 =
+        |a: &RPoly2, b: &RPoly2, c: &RPoly2, d: &RPoly2| p2_add(&p2_mul(a, d), &p2_mul(b, c), -1);
+    let t1 = p2_mul(&r[0][0], &m2(&r[1][1], &r[1][2], &r[2][1], &r[2][2]));
+    let t2 = p2_mul(&r[0][1], &m2(&r[1][0], &r[1][2], &r[2][0], &r[2][2]));
+    let t3 = p2_mul(&r[0][2], &m2(&r[1][0], &r[1][1], &r[2][0], &r[2][1]));
+    p2_add(&p2_add(&t1, &t2, -1), &t3, 1)
+}
+
+/// `p` times the lcm of its denominators, divided by the gcd of the
+/// numerators (primitive).
+fn p2_integer(p: &RPoly2) -> Poly2<BigInt> {
+    let mut den = BigInt::one();
+    for row in &p.c {
+        for v in row {
+            den = lcm(&den, &v.d);
+        }
+    }
+    let q: [[BigInt; 4]; 4] =
+        std::array::from_fn(|i| std::array::from_fn(|j| &p.c[i][j].n * (&den / &p.c[i][j].d)));
+    let mut g = BigInt::zero();
+    for row in &q {
+        for v in row {
+            g = num_integer_gcd(&g, v);
+        }
+    }
+    if g.is_zero() {
+        return Poly2 { c: q };
+    }
+    Poly2 {
+        c: std::array::from_fn(|i| std::array::from_fn(|j| &q[i][j] / &g)),
+    }
+}
+
+fn p2_eval(p: &RPoly2, x: &Rat, y: &Rat) -> Rat {
+    let mut sum = Rat::zero();
+    let mut xi = Rat::small(1);
+    for i in 0..4 {
+        let mut yj = xi.clone();
+        for j in 0..4 - i {
+            if !p.c[i][j].is_zero() {
+                sum = sum.add(&p.c[i][j].mul(&yj));
+            }
+            yj = yj.mul(y);
+        }
+        xi = xi.mul(x);
+    }
+    sum
+}
+
+/// The two center-point cubics `f1 = det(rows 2,3,4)`, `f2 = det(rows
+/// 2,3,5)` (rational, before scaling), of the dyad condition's rows
+/// `a_k(G) . z = b_k(G)`.
+fn cubics(disp: &[Disp]) -> (RPoly2, RPoly2) {
+    let one = Rat::small(1);
+    let rows: Vec<[RPoly2; 3]> = disp
+        .iter()
+        .map(|d| {
+            let ckx = d.c.mul(&d.tx).add(&d.s.mul(&d.ty));
+            let cky = d.s.neg().mul(&d.tx).add(&d.c.mul(&d.ty));
+            let mr = one.sub(&d.c);
+            let mi = d.s.clone();
+            let ax = p2_lin(ckx, mr.clone(), mi.neg());
+            let ay = p2_lin(cky, mi, mr);
+            let sq = d.tx.mul(&d.tx).add(&d.ty.mul(&d.ty));
+            let b = p2_lin(sq.div(&Rat::small(2)).neg(), d.tx.clone(), d.ty.clone());
+            [ax, ay, b]
+        })
+        .collect();
+    let f1 = det3([&rows[0], &rows[1], &rows[2]]);
+    let f2 = det3([&rows[0], &rows[1], &rows[3]]);
+    (f1, f2)
+}
+
+/// The fixed point of `G -> R G + t` (`None`: a translation).
+fn fixed_point(d: &Disp) -> Option<(Rat, Rat)> {
+    let one = Rat::small(1);
+    let mr = one.sub(&d.c);
+    let det = mr.mul(&mr).add(&d.s.mul(&d.s));
+    if det.is_zero() {
+        return None;
+    }
+    let x = mr.mul(&d.tx).sub(&d.s.mul(&d.ty)).div(&det);
+    let y = d.s.mul(&d.tx).add(&mr.mul(&d.ty)).div(&det);
+    Some((x, y))
+}
+
+/// The poles P12, P13, P23.
+fn poles(disp: &[Disp]) -> [Option<(Rat, Rat)>; 3] {
+    let (d2, d3) = (&disp[0], &disp[1]);
+    let c = d3.c.mul(&d2.c).add(&d3.s.mul(&d2.s));
+    let s = d3.s.mul(&d2.c).sub(&d3.c.mul(&d2.s));
+    let tx = d3.tx.sub(&c.mul(&d2.tx).sub(&s.mul(&d2.ty)));
+    let ty = d3.ty.sub(&s.mul(&d2.tx).add(&c.mul(&d2.ty)));
+    [
+        fixed_point(d2),
+        fixed_point(d3),
+        fixed_point(&Disp { c, s, tx, ty }),
+    ]
+}
+
+/// `L` with the cubic part `(x^2 + y^2) L` of `f`: `(Lx, Ly)`, checked.
+fn cubic_part_line(f: &Poly2<BigInt>) -> Result<(BigInt, BigInt), CannotCertify> {
+    let (lx, ly) = (f.c[3][0].clone(), f.c[0][3].clone());
+    if f.c[2][1] != ly || f.c[1][2] != lx {
+        return cannot("internal: a cubic part that is not circular");
+    }
+    Ok((lx, ly))
+}
+
+// ------------------------------------------------ step 3: the resultant
+
+/// Univariate polynomials, lowest degree first, trimmed (no zero leading
+/// coefficient; the zero polynomial is empty).
+type UPoly = Vec<Rat>;
+
+fn binom(n: usize, k: usize) -> i64 {
+    [[1, 0, 0, 0], [1, 1, 0, 0], [1, 2, 1, 0], [1, 3, 3, 1]][n][k]
+}
+
+/// `q^3 p(X + u Y, Y)` (`u = a / q`) as coefficient lists in `Y`, each a
+/// list of integers in `X`, trimmed.
+fn shear(p: &Poly2<BigInt>, a: i64, q: i64) -> Vec<Vec<BigInt>> {
+    let mut out: [[BigInt; 4]; 4] =
+        std::array::from_fn(|_| std::array::from_fn(|_| BigInt::zero()));
+    for i in 0..4 {
+        for j in 0..4 - i {
+            let v = &p.c[i][j];
+            if v.is_zero() {
+                continue;
+            }
+            // (X + uY)^i Y^j = sum_k C(i,k) X^k (uY)^(i-k) Y^j
+            for k in 0..=i {
+                let e = i - k;
+                let f = BigInt::from(binom(i, k))
+                    * BigInt::from(a).pow(e as u32)
+                    * BigInt::from(q).pow((3 - e) as u32);
+                out[k][e + j] += v * f;
+            }
+        }
+    }
+    let deg_y = (0..4)
+        .rev()
+        .find(|&b| (0..4).any(|a| !out[a][b].is_zero()))
+        .unwrap_or(0);
+    (0..=deg_y)
+        .map(|b| {
+            let mut col: Vec<BigInt> = (0..4).map(|a| out[a][b].clone()).collect();
+            while col.last().is_some_and(|v| v.is_zero()) {
+                col.pop();
+            }
+            col
+        })
+        .collect()
+}
+
+fn ieval(a: &[BigInt], x: i64) -> BigInt {
+    let x = BigInt::from(x);
+    let mut r = BigInt::zero();
+    for v in a.iter().rev() {
+        r = r * &x + v;
+    }
+    r
+}
+
+/// The determinant of an integer matrix by Bareiss's fraction-free
+/// elimination (exact divisions).
+fn det_bareiss(mut m: Vec<Vec<BigInt>>) -> BigInt {
+    let n = m.len();
+    let mut negate = false;
+    let mut prev = BigInt::one();
+    for k in 0..n.saturating_sub(1) {
+        if m[k][k].is_zero() {
+            match (k + 1..n).find(|&r| !m[r][k].is_zero()) {
+                Some(r) => {
+                    m.swap(k, r);
+                    negate = !negate;
+                }
+                None => return BigInt::zero(),
+            }
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let v = (&m[i][j] * &m[k][k] - &m[i][k] * &m[k][j]) / &prev;
+                m[i][j] = v;
+            }
+        }
+        prev = m[k][k].clone();
+    }
+    let d = m[n - 1][n - 1].clone();
+    if negate { -d } else { d }
+}
+
+/// `res_Y` of two polynomials given as coefficient lists in `Y` (each a
+/// list in `X`): evaluation at `X = 0..9`, Sylvester determinants, Newton
+/// interpolation. Integer coefficients, lowest degree first, trimmed.
+fn resultant_y(c1: &[Vec<BigInt>], c2: &[Vec<BigInt>]) -> Result<Vec<BigInt>, CannotCertify> {
+    let (n1, n2) = (c1.len() - 1, c2.len() - 1);
+    let size = n1 + n2;
+    let xs: Vec<i64> = (0..10).collect();
+    let mut vals = Vec::with_capacity(xs.len());
+    for &x in &xs {
+        let a: Vec<BigInt> = c1.iter().map(|c| ieval(c, x)).collect();
+        let b: Vec<BigInt> = c2.iter().map(|c| ieval(c, x)).collect();
+        let mut rows = Vec::with_capacity(size);
+        for i in 0..n2 {
+            let mut row = vec![BigInt::zero(); size];
+            for k in 0..=n1 {
+                row[i + k] = a[n1 - k].clone();
+            }
+            rows.push(row);
+        }
+        for i in 0..n1 {
+            let mut row = vec![BigInt::zero(); size];
+            for k in 0..=n2 {
+                row[i + k] = b[n2 - k].clone();
+            }
+            rows.push(row);
+        }
+        vals.push(det_bareiss(rows));
+    }
+    let mut coef: Vec<Rat> = vals.into_iter().map(Rat::int).collect();
+    for j in 1..xs.len() {
+        for i in (j..xs.len()).rev() {
+            coef[i] = coef[i]
+                .sub(&coef[i - 1])
+                .div(&Rat::small(xs[i] - xs[i - j]));
+        }
+    }
+    let mut poly = vec![Rat::zero()];
+    for i in (0..xs.len()).rev() {
+        let mut new = vec![Rat::zero(); poly.len() + 1];
+        for (k, v) in poly.iter().enumerate() {
+            new[k + 1] = new[k + 1].add(v);
+            new[k] = new[k].sub(&v.mul(&Rat::small(xs[i])));
+        }
+        new[0] = new[0].add(&coef[i]);
+        poly = new;
+    }
+    if poly.iter().any(|v| !v.d.is_one()) {
+        return cannot("internal: the interpolated resultant is not integer");
+    }
+    let mut out: Vec<BigInt> = poly.into_iter().map(|v| v.n).collect();
+    while out.last().is_some_and(|v| v.is_zero()) {
+        out.pop();
+    }
+    Ok(out)
+}
+
+fn trim(mut a: UPoly) -> UPoly {
+    while a.last().is_some_and(|v| v.is_zero()) {
+        a.pop();
+    }
+    a
+}
+
+/// Quotient and remainder of `a / b` (`b` nonzero).
+fn udiv(a: &[Rat], b: &[Rat]) -> (UPoly, UPoly) {
+    let b = trim(b.to_vec());
+    let mut a = trim(a.to_vec());
+    let mut q = vec![Rat::zero(); (a.len() + 1).saturating_sub(b.len())];
+    while !b.is_empty() && a.len() >= b.len() {
+        let k = a.len() - b.len();
+        let c = a[a.len() - 1].div(&b[b.len() - 1]);
+        for (i, v) in b.iter().enumerate() {
+            a[i + k] = a[i + k].sub(&c.mul(v));
+        }
+        q[k] = c;
+        a = trim(a);
+    }
+    (trim(q), a)
+}
+
+fn uderiv(a: &[Rat]) -> UPoly {
+    trim(
+        (1..a.len())
+            .map(|i| a[i].mul(&Rat::small(i as i64)))
+            .collect(),
+    )
+}
+
+fn ugcd(a: &[Rat], b: &[Rat]) -> UPoly {
+    let (mut a, mut b) = (trim(a.to_vec()), trim(b.to_vec()));
+    while !b.is_empty() {
+        let r = udiv(&a, &b).1;
+        a = b;
+        b = r;
+    }
+    a
+}
+
+fn ueval(a: &[Rat], x: &Rat) -> Rat {
+    let mut r = Rat::zero();
+    for v in a.iter().rev() {
+        r = r.mul(x).add(v);
+    }
+    r
+}
+
+// ------------------------------------------- step 4: squarefree, Sturm
+
+fn sturm(a: &[Rat]) -> Vec<UPoly> {
+    let mut seq = vec![trim(a.to_vec()), uderiv(a)];
+    loop {
+        let r = udiv(&seq[seq.len() - 2], &seq[seq.len() - 1]).1;
+        if r.is_empty() {
+            break;
+        }
+        seq.push(r.iter().map(Rat::neg).collect());
+    }
+    seq
+}
+
+fn sign_changes(signs: impl Iterator<Item = Sign>) -> usize {
+    let mut last = Sign::NoSign;
+    let mut n = 0;
+    for s in signs.filter(|&s| s != Sign::NoSign) {
+        if last != Sign::NoSign && s != last {
+            n += 1;
+        }
+        last = s;
+    }
+    n
+}
+
+fn at_inf(seq: &[UPoly], negative: bool) -> usize {
+    sign_changes(seq.iter().map(|p| {
+        let s = p.last().map_or(Sign::NoSign, Rat::sign);
+        if negative && p.len() % 2 == 0 { -s } else { s }
+    }))
+}
+
+fn changes_at(seq: &[UPoly], x: &Rat) -> usize {
+    sign_changes(seq.iter().map(|p| ueval(p, x).sign()))
+}
+
+/// Sorted disjoint intervals `(lo, hi)`, one real root of the squarefree
+/// `q` each (Sturm counts, bisection of a power-of-two Cauchy bound).
+fn isolate(q: &[Rat]) -> Vec<(Rat, Rat)> {
+    let seq = sturm(q);
+    let n = at_inf(&seq, true) - at_inf(&seq, false);
+    if n == 0 {
+        return Vec::new();
+    }
+    let lead = &q[q.len() - 1];
+    let mut bound = Rat::small(1);
+    let mut maxr = Rat::zero();
+    for v in &q[..q.len() - 1] {
+        let r = v.div(lead);
+        let r = if r.sign() == Sign::Minus { r.neg() } else { r };
+        if r.cmp(&maxr) == Ordering::Greater {
+            maxr = r;
+        }
+    }
+    bound = bound.add(&maxr);
+    // 2^(ceil(log2 bound) + 1)
+    let mut p = Rat::small(1);
+    while p.cmp(&bound) == Ordering::Less {
+        p = p.mul(&Rat::small(2));
+    }
+    let bound = p.mul(&Rat::small(2));
+    let mut out = Vec::new();
+    let mut stack = vec![(bound.neg(), bound, n)];
+    let half = Rat::new(BigInt::one(), BigInt::from(2));
+    while let Some((lo, hi, k)) = stack.pop() {
+        match k {
+            0 => continue,
+            1 => {
+                out.push((lo, hi));
+                continue;
+            }
+            _ => {}
+        }
+        let mut mid = lo.add(&hi).mul(&half);
+        if ueval(q, &mid).is_zero() {
+            let a = lo.add(&hi.mul(&Rat::small(3))).div(&Rat::small(4));
+            mid = if !ueval(q, &a).is_zero() {
+                a
+            } else {
+                lo.mul(&Rat::small(3)).add(&hi).div(&Rat::small(4))
+            };
+        }
+        let left = changes_at(&seq, &lo) - changes_at(&seq, &mid);
+        stack.push((lo, mid.clone(), left));
+        stack.push((mid, hi, k - left));
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out
+}
+
+// ------------------------------------------------------ the certificate
+
+/// The shears `u = a / q` tried in turn.
+const SHEARS: [(i64, i64); 6] = [(3, 7), (-5, 11), (7, 13), (-2, 9), (11, 17), (-13, 19)];
+
+/// A certified count: the real finite Burmester points, the real ones at
+/// infinity (sliders), and what they came from.
+#[derive(Debug, Clone)]
+pub(crate) struct Certified {
+    /// The number of real finite Burmester points.
+    pub(crate) finite: usize,
+    /// The number of real Burmester points at infinity.
+    pub(crate) sliders: usize,
+    /// The shear `u = a / q` (`X = x - u y`).
+    pub(crate) shear: (i64, i64),
+    /// Isolating intervals of the finite points' `X`, sorted.
+    pub(crate) intervals: Vec<(Rat, Rat)>,
+    /// `Q`, the resultant with the poles' factors divided out (rational,
+    /// lowest degree first).
+    pub(crate) q: UPoly,
+    /// The resultant `res_Y(f1, f2)` of the sheared integer cubics.
+    pub(crate) resultant: Vec<BigInt>,
+    /// The integer primitive cubics `f1`, `f2`.
+    pub(crate) cubics: [Poly2<BigInt>; 2],
+    /// The pose order used (pose 1 first, the shared poses next).
+    pub(crate) order: [usize; 5],
+}
+
+/// The certificate on poses `1, i, j, k, l` for each choice of the shared
+/// poses `1, i, j`: the first that certifies, else the reasons of all.
+pub(crate) fn certify(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCertify> {
+    let mut reasons: Vec<String> = Vec::new();
+    for (i, j) in [(1, 2), (1, 3), (1, 4), (2, 3), (2, 4), (3, 4)] {
+        let mut order = [0, i, j, 0, 0];
+        let mut n = 3;
+        for k in 1..5 {
+            if k != i && k != j {
+                order[n] = k;
+                n += 1;
+            }
+        }
+        let task = order.map(|k| poses[k]);
+        match certify_order(&task) {
+            Ok(mut c) => {
+                c.order = order;
+                return Ok(c);
+            }
+            Err(e) => reasons.push(e.0),
+        }
+    }
+    reasons.sort();
+    reasons.dedup();
+    Err(CannotCertify(reasons.join("; ")))
+}
+
+/// The certificate with the shared poses 1, 2, 3 as given.
+pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCertify> {
+    let disp = displacements(poses)?;
+    let (f1q, f2q) = cubics(&disp);
+    let all = poles(&disp);
+    let pl: Vec<&(Rat, Rat)> = all.iter().flatten().collect();
+    let inf_poles = 3 - pl.len();
+    if inf_poles > 1 {
+        return cannot("poles at infinity (poses 1, 2, 3 all with one rotation)");
+    }
+    for p in &pl {
+        if !p2_eval(&f1q, &p.0, &p.1).is_zero() || !p2_eval(&f2q, &p.0, &p.1).is_zero() {
+            return cannot("internal: a pole off a cubic");
+        }
+    }
+    let (f1, f2) = (p2_integer(&f1q), p2_integer(&f2q));
+    let (l1, l2) = (cubic_part_line(&f1)?, cubic_part_line(&f2)?);
+    if (l1.0.is_zero() && l1.1.is_zero()) || (l2.0.is_zero() && l2.1.is_zero()) {
+        return cannot("a cubic of degree < 3 (the line at infinity a component)");
+    }
+    let parallel = (&l1.0 * &l2.1 - &l1.1 * &l2.0).is_zero();
+    let mut last = None;
+    for (a, q) in SHEARS {
+        let on = |l: &(BigInt, BigInt)| (&l.0 * a + &l.1 * q).is_zero();
+        if on(&l1) || on(&l2) {
+            continue;
+        }
+        let (c1, c2) = (shear(&f1, a, q), shear(&f2, a, q));
+        let r = resultant_y(&c1, &c2)?;
+        if r.is_empty() {
+            return cannot("a common component (the resultant vanishes)");
+        }
+        let mut qp: UPoly = r.iter().cloned().map(Rat::int).collect();
+        let u = Rat::new(BigInt::from(a), BigInt::from(q));
+        let xs: Vec<Rat> = pl.iter().map(|p| p.0.sub(&u.mul(&p.1))).collect();
+        for xp in &xs {
+            let (quo, rem) = udiv(&qp, &[xp.neg(), Rat::small(1)]);
+            if !rem.is_empty() {
+                return cannot("internal: a pole's factor does not divide the resultant");
+            }
+            qp = quo;
+        }
+        if xs.iter().any(|xp| ueval(&qp, xp).is_zero()) {
+            return cannot(
+                "a Burmester point at a pole (or coincident poles of higher multiplicity)",
+            );
+        }
+        if ugcd(&qp, &uderiv(&qp)).len() > 1 {
+            last = Some("a multiple common point (Q not squarefree for any shear)");
+            continue;
+        }
+        let deg = qp.len() - 1;
+        if deg > 4 {
+            return cannot("internal: more than four Burmester points");
+        }
+        let infinite = 4 - deg;
+        let sliders = if inf_poles > 0 {
+            if infinite > 1 {
+                return cannot("a pole at infinity and more than one Burmester point at infinity");
+            }
+            infinite
+        } else if !parallel {
+            0
+        } else if infinite == 0 {
+            return cannot("internal: a common asymptotic direction without a point at infinity");
+        } else if infinite <= 2 {
+            infinite
+        } else {
+            return cannot(
+                "3 or 4 Burmester points at infinity (at the real direction or the circular points)",
+            );
+        };
+        let intervals = isolate(&qp);
+        return Ok(Certified {
+            finite: intervals.len(),
+            sliders,
+            shear: (a, q),
+            intervals,
+            q: qp,
+            resultant: r,
+            cubics: [f1, f2],
+            order: [0, 1, 2, 3, 4],
+        });
+    }
+    cannot(last.unwrap_or("no admissible shear"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `2^61 - 1`: the expected big integers are written as residues.
+    const P: u64 = (1 << 61) - 1;
+
+    fn residue(v: &BigInt) -> u64 {
+        let p = BigInt::from(P);
+        let r = ((v % &p) + &p) % &p;
+        to_u64(&r)
+    }
+
+    /// The primitive integer multiple of a rational polynomial (positive
+    /// content), as the Python's `Qi`.
+    fn primitive(q: &[Rat]) -> Vec<BigInt> {
+        let mut den = BigInt::one();
+        for v in q {
+            den = lcm(&den, &v.d);
+        }
+        let ints: Vec<BigInt> = q.iter().map(|v| &v.n * (&den / &v.d)).collect();
+        let mut g = BigInt::zero();
+        for v in &ints {
+            g = num_integer_gcd(&g, v);
+        }
+        ints.iter().map(|v| v / &g).collect()
+    }
+
+    fn rat_str(r: &Rat) -> String {
+        if r.d.is_one() {
+            r.n.to_string()
+        } else {
+            format!("{}/{}", r.n, r.d)
+        }
+    }
+
+    struct Exact {
+        finite: usize,
+        sliders: usize,
+        shear: (i64, i64),
+        resultant: &'static [u64],
+        resultant_bits: u64,
+        q: &'static [u64],
+        q_bits: u64,
+        intervals: &'static [(&'static str, &'static str)],
+    }
+
+    struct Case {
+        label: &'static str,
+        poses: [[f64; 3]; 5],
+        /// Per pose 2..5: the bit length of `c`'s denominator, and `c`'s
+        /// numerator, `s`'s numerator, the denominator as residues.
+        rotations: [(u64, u64, u64, u64); 4],
+        f1: &'static [((usize, usize), u64)],
+        f2: &'static [((usize, usize), u64)],
+        cubic_bits: u64,
+        /// `certify_order` on the poses as given.
+        order: Result<Exact, &'static str>,
+        /// `certify`: finite, sliders, the pose order that certified.
+        certify: (usize, usize, [usize; 5]),
+    }
+
+    /// Expected values from `fuzz/reference/certificate_five.py` (run on the same
+    /// f64 poses; integers as residues mod `2^61 - 1`, non-negative).
+    const CASES: &[Case] = &[
+        Case {
+            label: "five.toml",
+            poses: [
+                [1.049199280691, 2.279426358634, 0.7892385359940679],
+                [0.734502065472, 3.198658887874, 0.4648409920780081],
+                [-0.378159188147, 3.063048993013, 0.3802512066929368],
+                [-1.268710439724, 2.051150142014, 0.47208754874794917],
+                [-1.411118156972, 0.5974291264, 0.8385310042874287],
+            ],
+            rotations: [
+                (
+                    111,
+                    732493103823302715,
+                    1513025236701015545,
+                    1574475805297233860,
+                ),
+                (
+                    111,
+                    729621583901942816,
+                    1657091159509385467,
+                    1577347325218593759,
+                ),
+                (
+                    111,
+                    840706305636809599,
+                    648338294465671547,
+                    1466262603483726976,
+                ),
+                (
+                    117,
+                    1229912756600075153,
+                    1731158564924527547,
+                    1147987846651546734,
+                ),
+            ],
+            f1: &[
+                ((0, 0), 1442202657367849792),
+                ((0, 1), 1204819298024021320),
+                ((0, 2), 2252790165956311024),
+                ((0, 3), 2603650098487648),
+                ((1, 0), 2212003927023722399),
+                ((1, 1), 1516797260112232807),
+                ((1, 2), 1138270008697169838),
+                ((2, 0), 1120724178656429578),
+                ((2, 1), 2603650098487648),
+                ((3, 0), 1138270008697169838),
+            ],
+            f2: &[
+                ((0, 0), 1697616435612024605),
+                ((0, 1), 1772661975860656648),
+                ((0, 2), 2112736637118461464),
+                ((0, 3), 87437475853901133),
+                ((1, 0), 1755623223561202899),
+                ((1, 1), 824549921383718630),
+                ((1, 2), 1466279118420009653),
+                ((2, 0), 97641484848531457),
+                ((2, 1), 87437475853901133),
+                ((3, 0), 1466279118420009653),
+            ],
+            cubic_bits: 549,
+            order: Ok(Exact {
+                finite: 4,
+                sliders: 0,
+                shear: (3, 7),
+                resultant: &[
+                    566176984401181199,
+                    134700407615406492,
+                    1001893539670636960,
+                    587035592426447548,
+                    77988506456367629,
+                    1046145729959260799,
+                    1766341361820302833,
+                    223510748847931145,
+                ],
+                resultant_bits: 3296,
+                q: &[
+                    1726179049200136465,
+                    602372380456128592,
+                    1414962992992789158,
+                    1483431050496021321,
+                    396753582288264765,
+                ],
+                q_bits: 1800,
+                intervals: &[("0", "4"), ("4", "6"), ("6", "8"), ("32", "64")],
+            }),
+            certify: (4, 0, [0, 1, 2, 3, 4]),
+        },
+        Case {
+            label: "random0",
+            poses: [
+                [-0.9146412074550625, 0.41972009104596175, 1.0861098494378196],
+                [-3.2333435580455614, -2.748404794218533, -1.4127082401956668],
+                [-3.833494665571362, -4.911943741129331, -1.0299289947499086],
+                [0.13713208502675656, 4.89492910377551, 0.5805307842943144],
+                [-1.215734288767191, -0.9495226468074396, 0.5739288852371378],
+            ],
+            rotations: [
+                (
+                    106,
+                    381102809693521076,
+                    1607771856837412241,
+                    1924744597566683979,
+                ),
+                (
+                    103,
+                    1934597951036459668,
+                    1393862131754979139,
+                    371246157688862059,
+                ),
+                (
+                    109,
+                    2031392050773555619,
+                    684474434023458436,
+                    274732433416848988,
+                ),
+                (
+                    109,
+                    64156962286485349,
+                    684473442041059926,
+                    2241967521903919258,
+                ),
+            ],
+            f1: &[
+                ((0, 0), 1954671050284692768),
+                ((0, 1), 156148492465358218),
+                ((0, 2), 435814387639068733),
+                ((0, 3), 2204922304639091374),
+                ((1, 0), 1500315597069479840),
+                ((1, 1), 1756441743968371558),
+                ((1, 2), 2119090011177072579),
+                ((2, 0), 1609076752725774895),
+                ((2, 1), 2204922304639091374),
+                ((3, 0), 2119090011177072579),
+            ],
+            f2: &[
+                ((0, 0), 1389861492127589352),
+                ((0, 1), 702415696646387538),
+                ((0, 2), 571189300619206361),
+                ((0, 3), 33157834658666440),
+                ((1, 0), 2037855396607378994),
+                ((1, 1), 2115185049492694508),
+                ((1, 2), 86284270552806587),
+                ((2, 0), 1497542056585192956),
+                ((2, 1), 33157834658666440),
+                ((3, 0), 86284270552806587),
+            ],
+            cubic_bits: 524,
+            order: Ok(Exact {
+                finite: 2,
+                sliders: 0,
+                shear: (3, 7),
+                resultant: &[
+                    258671280838261798,
+                    168042392711966371,
+                    1558319137747751759,
+                    530040016680454885,
+                    1257803947061424365,
+                    245892387313263940,
+                    225351611977953187,
+                    1764352743406340264,
+                ],
+                resultant_bits: 3182,
+                q: &[
+                    1113696363442837449,
+                    1720082125899652746,
+                    1655679318654563316,
+                    59162059687730854,
+                    273078072045664558,
+                ],
+                q_bits: 1734,
+                intervals: &[("-32", "-16"), ("-16", "0")],
+            }),
+            certify: (2, 0, [0, 1, 2, 3, 4]),
+        },
+        Case {
+            label: "random1",
+            poses: [
+                [-1.7388012738314007, -4.264465694217318, 1.024568690718627],
+                [1.1721995591408323, -3.8799017287035245, -1.289799937860248],
+                [-4.0537245370446495, 4.589232453363275, -1.176849403758692],
+                [1.253169687228409, 4.695674798615805, -1.3949900117989393],
+                [-1.1412115323682928, -0.2271902951518845, 1.2506683809439987],
+            ],
+            rotations: [
+                (
+                    103,
+                    1848348294741781628,
+                    173386080685239579,
+                    457495813983540099,
+                ),
+                (
+                    99,
+                    2082272042533904549,
+                    703124356568813821,
+                    223571035399266138,
+                ),
+                (
+                    106,
+                    348624911322831161,
+                    193643135508433722,
+                    1957222495937373894,
+                ),
+                (
+                    109,
+                    852048382212715139,
+                    540463912242605378,
+                    1454076101977689468,
+                ),
+            ],
+            f1: &[
+                ((0, 0), 196279974568447045),
+                ((0, 1), 268726639642482802),
+                ((0, 2), 2064529001801825920),
+                ((0, 3), 2051217986099999417),
+                ((1, 0), 1314953271706599960),
+                ((1, 1), 71512809077921266),
+                ((1, 2), 555233877716947933),
+                ((2, 0), 517195120612903624),
+                ((2, 1), 2051217986099999417),
+                ((3, 0), 555233877716947933),
+            ],
+            f2: &[
+                ((0, 0), 2279554807763411957),
+                ((0, 1), 1790348535336241356),
+                ((0, 2), 1007370607050583890),
+                ((0, 3), 660673739375595924),
+                ((1, 0), 1770063831030311041),
+                ((1, 1), 1669654512936574169),
+                ((1, 2), 2031035470979508944),
+                ((2, 0), 921583737374602041),
+                ((2, 1), 660673739375595924),
+                ((3, 0), 2031035470979508944),
+            ],
+            cubic_bits: 514,
+            order: Ok(Exact {
+                finite: 4,
+                sliders: 0,
+                shear: (3, 7),
+                resultant: &[
+                    2199654558513108816,
+                    29787277297035706,
+                    263158319823177979,
+                    1249405523977430146,
+                    1062538446327012484,
+                    1817356005457940388,
+                    2187569967928431111,
+                    390871795289604098,
+                ],
+                resultant_bits: 3103,
+                q: &[
+                    2216961058055230630,
+                    1887088542096846982,
+                    699276517839117633,
+                    853162136380051551,
+                    1738150055495863659,
+                ],
+                q_bits: 1709,
+                intervals: &[("-16", "-8"), ("-8", "-4"), ("-4", "0"), ("0", "256")],
+            }),
+            certify: (4, 0, [0, 1, 2, 3, 4]),
+        },
+        Case {
+            label: "random2",
+            poses: [
+                [-3.1140683494476518, -2.416531313425583, -0.7561060761684054],
+                [-4.507952627282976, 1.737168204826979, 0.9501163217394302],
+                [-0.6363494910402778, -4.621664752170085, 0.6407399407338459],
+                [2.3704601708394026, 1.5344604709370468, -0.5140414825935492],
+                [3.3048168920634797, 1.3055820356033463, 0.2699208364329264],
+            ],
+            rotations: [
+                (
+                    104,
+                    506714459317541676,
+                    770120574246229025,
+                    1799132947942663379,
+                ),
+                (
+                    107,
+                    2283066808849312624,
+                    1783484533766569022,
+                    22846569108558991,
+                ),
+                (
+                    109,
+                    1699411365795654207,
+                    2197790853050096863,
+                    606713118394750400,
+                ),
+                (
+                    107,
+                    2277505770456921056,
+                    18054038751539155,
+                    28407607500950559,
+                ),
+            ],
+            f1: &[
+                ((0, 0), 1896831895169902434),
+                ((0, 1), 398977736027733718),
+                ((0, 2), 434303301338914734),
+                ((0, 3), 514764327381328033),
+                ((1, 0), 439549893012599335),
+                ((1, 1), 573738630835174800),
+                ((1, 2), 582687769966151135),
+                ((2, 0), 1732925646004301962),
+                ((2, 1), 514764327381328033),
+                ((3, 0), 582687769966151135),
+            ],
+            f2: &[
+                ((0, 0), 884304466342030719),
+                ((0, 1), 980974576445426636),
+                ((0, 2), 1990452026560525492),
+                ((0, 3), 186626364587735962),
+                ((1, 0), 556085398171552621),
+                ((1, 1), 1522967917813043864),
+                ((1, 2), 1127579144283763103),
+                ((2, 0), 1441148029020061896),
+                ((2, 1), 186626364587735962),
+                ((3, 0), 1127579144283763103),
+            ],
+            cubic_bits: 526,
+            order: Ok(Exact {
+                finite: 4,
+                sliders: 0,
+                shear: (3, 7),
+                resultant: &[
+                    1767670525325635054,
+                    9690726543985006,
+                    1453651049934987306,
+                    64404425548049573,
+                    1675732839032401188,
+                    130195833913548929,
+                    1904800757610836148,
+                    408760763200476109,
+                ],
+                resultant_bits: 3189,
+                q: &[
+                    10563522684725157,
+                    1359958538869304093,
+                    261969515227951072,
+                    66966550069678323,
+                    2018460785778178245,
+                ],
+                q_bits: 1733,
+                intervals: &[("-4", "-2"), ("-2", "0"), ("0", "32"), ("32", "64")],
+            }),
+            certify: (4, 0, [0, 1, 2, 3, 4]),
+        },
+        Case {
+            label: "random3",
+            poses: [
+                [
+                    0.4052938633104306,
+                    -2.6673850801996335,
+                    -0.13328249767027023,
+                ],
+                [2.9405966949926965, 1.8375533070430228, -0.46227790527971946],
+                [3.1961395571639493, 3.39416196477519, -1.3691304338432202],
+                [-3.427307456039644, -2.7685349521672578, -1.4562346954635212],
+                [2.5345523360244613, 1.4679038938878524, 0.12960506115268045],
+            ],
+            rotations: [
+                (
+                    111,
+                    1936007408874999023,
+                    71870697262165439,
+                    370961500245537552,
+                ),
+                (
+                    103,
+                    434503072401763441,
+                    544932428870418073,
+                    1871344334858441614,
+                ),
+                (
+                    107,
+                    1544373533754095554,
+                    2251745033529271099,
+                    761539844203776061,
+                ),
+                (
+                    107,
+                    539591905943483377,
+                    1243002800328186378,
+                    1766321472014388238,
+                ),
+            ],
+            f1: &[
+                ((0, 0), 794927828401388198),
+                ((0, 1), 732853168458487012),
+                ((0, 2), 404694214278024411),
+                ((0, 3), 978805224109410042),
+                ((1, 0), 1493790768307339615),
+                ((1, 1), 1402372476307435980),
+                ((1, 2), 23688568708785207),
+                ((2, 0), 744693027749847399),
+                ((2, 1), 978805224109410042),
+                ((3, 0), 23688568708785207),
+            ],
+            f2: &[
+                ((0, 0), 242036868883906078),
+                ((0, 1), 611373429299452749),
+                ((0, 2), 93843723704016560),
+                ((0, 3), 1503563319461316160),
+                ((1, 0), 288664311555750770),
+                ((1, 1), 2157890853818969136),
+                ((1, 2), 517374837881488490),
+                ((2, 0), 377498147149446535),
+                ((2, 1), 1503563319461316160),
+                ((3, 0), 517374837881488490),
+            ],
+            cubic_bits: 528,
+            order: Ok(Exact {
+                finite: 2,
+                sliders: 0,
+                shear: (3, 7),
+                resultant: &[
+                    2087052916888692448,
+                    783759553536652427,
+                    2119267437998596977,
+                    888860049260894020,
+                    493908053047357370,
+                    908944401290992882,
+                    1006062950724334317,
+                    1528612988856808625,
+                ],
+                resultant_bits: 3191,
+                q: &[
+                    1351442423326699030,
+                    1845971497105203225,
+                    673601907222138778,
+                    553696113276632559,
+                    133544629025062855,
+                ],
+                q_bits: 1723,
+                intervals: &[("-256", "0"), ("0", "256")],
+            }),
+            certify: (2, 0, [0, 1, 2, 3, 4]),
+        },
+        Case {
+            label: "far-ghost-from-an-angle-measured-choice-3783e8a2 task",
+            poses: [
+                [-8.86718650390625, 819960937500.0, -3.90625e-12],
+                [-8.86718650390625, 819960937500.0, 0.0],
+                [
+                    9.960937499999999e-07,
+                    386093750000.0,
+                    2.7648437500000003e-08,
+                ],
+                [-70.03906150390627, 386093750000.0, -3.90625e-06],
+                [-723.5156240039064, 386093749999.96094, 0.00390625],
+            ],
+            rotations: [
+                (
+                    183,
+                    1529973893286962213,
+                    1446617873039800367,
+                    775869115926731739,
+                ),
+                (
+                    159,
+                    1349023921746453237,
+                    587051544585176940,
+                    956819224906194186,
+                ),
+                (
+                    141,
+                    355362355885104191,
+                    2250505138172804094,
+                    1950480653329114048,
+                ),
+                (
+                    123,
+                    75391311971152402,
+                    9007210717011826,
+                    2230451697242541551,
+                ),
+            ],
+            f1: &[
+                ((0, 0), 1130177872125585474),
+                ((0, 1), 1994922622035948982),
+                ((0, 2), 1211556619323746703),
+                ((0, 3), 391805561542723549),
+                ((1, 0), 892106287252230360),
+                ((1, 1), 1903008811047298020),
+                ((1, 2), 254271091933003492),
+                ((2, 0), 1240715266781493859),
+                ((2, 1), 391805561542723549),
+                ((3, 0), 254271091933003492),
+            ],
+            f2: &[
+                ((0, 0), 1764300763540759763),
+                ((0, 1), 641672321638914249),
+                ((0, 2), 2012695830028515297),
+                ((0, 3), 1160108101537215181),
+                ((1, 0), 1673669971037719661),
+                ((1, 1), 1509961418254602378),
+                ((1, 2), 1927086417623373685),
+                ((2, 0), 2207776739981152572),
+                ((2, 1), 1160108101537215181),
+                ((3, 0), 1927086417623373685),
+            ],
+            cubic_bits: 708,
+            order: Ok(Exact {
+                finite: 4,
+                sliders: 0,
+                shear: (3, 7),
+                resultant: &[
+                    735503170222186696,
+                    368944073767175939,
+                    1518777192810177117,
+                    2092151343722778187,
+                    2209049111546860571,
+                    1165304565356366229,
+                    379113920519763850,
+                    852643655898961473,
+                ],
+                resultant_bits: 3962,
+                q: &[
+                    1830471791337571016,
+                    1677326528379055120,
+                    603636595749557535,
+                    89867286278644621,
+                    1249848417297634934,
+                ],
+                q_bits: 2269,
+                intervals: &[
+                    ("-258771779584", "-258503344128"),
+                    ("-258503344128", "-258234908672"),
+                    ("-206158430208", "-137438953472"),
+                    ("0", "5846006549323611672814739330865132078623730171904"),
+                ],
+            }),
+            certify: (4, 0, [0, 1, 2, 3, 4]),
+        },
+        Case {
+            label: "no-points-from-an-angle-measured-choice-2683252a moved",
+            poses: [
+                [1222350383.195415, -305711581.83519876, -101577.36034265358],
+                [4850610.9421027675, -1213134.280645759, -101574.218751],
+                [9701193405603.488, -2426282445907.3125, -101574.218751],
+                [21.514809289400656, -5.182804670138333, -101574.21875],
+                [4850610.9421027675, -1213134.280645759, -101577.36034265358],
+            ],
+            rotations: [
+                (
+                    104,
+                    1757259635326225442,
+                    1120395292080476686,
+                    548583373887468513,
+                ),
+                (
+                    104,
+                    1757259635326225442,
+                    1120395292080476686,
+                    548583373887468513,
+                ),
+                (
+                    104,
+                    2014662912017077653,
+                    1631854922723246102,
+                    291180097330834026,
+                ),
+                (1, 1, 0, 1),
+            ],
+            f1: &[
+                ((0, 0), 1736171862901847424),
+                ((0, 1), 223857104371739688),
+                ((0, 2), 2100217169505311561),
+                ((0, 3), 1372086191988953824),
+                ((1, 0), 1490302629982624352),
+                ((1, 1), 1734682278083900925),
+                ((1, 2), 486933807192812977),
+                ((2, 0), 1612042890489604953),
+                ((2, 1), 1372086191988953824),
+                ((3, 0), 486933807192812977),
+            ],
+            f2: &[
+                ((0, 0), 1933477120198789318),
+                ((0, 1), 637813486428755341),
+                ((0, 2), 19895983726782475),
+                ((1, 0), 867503048927976673),
+                ((1, 1), 302476200775567586),
+                ((2, 0), 2285947025486911476),
+            ],
+            cubic_bits: 477,
+            order: Err("a cubic of degree < 3 (the line at infinity a component)"),
+            certify: (4, 0, [0, 1, 3, 2, 4]),
+        },
+    ];
+
+    fn max_bits(vs: impl IntoIterator<Item = BigInt>) -> u64 {
+        vs.into_iter().map(|v| v.bits()).max().unwrap_or(0)
+    }
+
+    // ---------------------------------------------------- step 1
+
+    #[test]
+    fn exact_f64_round_trips_and_rounds_to_nearest() {
+        let mut x = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for _ in 0..2000 {
+            let v = f64::from_bits(next());
+            if v.is_finite() {
+                assert_eq!(
+                    Rat::of_f64(v).unwrap().to_f64().to_bits(),
+                    v.to_bits(),
+                    "{v:e}"
+                );
+            }
+            // a / b of integers below 2^53: IEEE division rounds correctly
+            let a = (next() >> 11) as f64;
+            let b = ((next() >> 11) | 1) as f64;
+            let r = Rat::new(BigInt::from(a as u64), BigInt::from(b as u64));
+            assert_eq!(r.to_f64(), a / b, "{a} / {b}");
+            assert_eq!(r.neg().to_f64(), -(a / b));
+        }
+        // subnormal, tie to even, the smallest subnormal
+        for v in [
+            f64::MIN_POSITIVE / 3.0,
+            5e-324,
+            1.0 + f64::EPSILON,
+            f64::MAX,
+        ] {
+            assert_eq!(Rat::of_f64(v).unwrap().to_f64(), v);
+        }
+        let tie = Rat::of_f64(1.0)
+            .unwrap()
+            .add(&Rat::new(BigInt::one(), BigInt::one() << 53));
+        assert_eq!(tie.to_f64(), 1.0);
+        let tie = Rat::of_f64(1.0 + f64::EPSILON)
+            .unwrap()
+            .add(&Rat::new(BigInt::one(), BigInt::one() << 53));
+        assert_eq!(tie.to_f64(), 1.0 + 2.0 * f64::EPSILON);
+        assert!(Rat::of_f64(f64::NAN).is_err() && Rat::of_f64(f64::INFINITY).is_err());
+    }
+
+    #[test]
+    fn rotations_are_exactly_on_the_unit_circle_and_match_the_reference() {
+        for case in CASES {
+            for (k, &(bits, cn, sn, cd)) in case.rotations.iter().enumerate() {
+                let d = case.poses[k + 1][2] - case.poses[0][2];
+                let (c, s) = unit_rotation(d).unwrap();
+                assert_eq!(c.add(&Rat::zero()).mul(&c).add(&s.mul(&s)), Rat::small(1));
+                assert!(
+                    (c.to_f64() - d.cos()).abs() < 1e-15 && (s.to_f64() - d.sin()).abs() < 1e-15
+                );
+                assert_eq!(
+                    (c.d.bits(), residue(&c.n), residue(&s.n), residue(&c.d)),
+                    (bits, cn, sn, cd),
+                    "{} pose {}",
+                    case.label,
+                    k + 2
+                );
+            }
+        }
+        assert_eq!(unit_rotation(0.0).unwrap(), (Rat::small(1), Rat::zero()));
+        assert!(unit_rotation(f64::NAN).is_err());
+        let poses = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.1],
+            [f64::INFINITY, 0.0, 0.2],
+            [0.0, 1.0, 0.3],
+            [1.0, 1.0, 0.4],
+        ];
+        assert!(certify(&poses).is_err());
+    }
+
+    // ---------------------------------------------------- step 2
+
+    #[test]
+    fn cubics_match_the_reference() {
+        for case in CASES {
+            let disp = displacements(&case.poses).unwrap();
+            let (f1q, f2q) = cubics(&disp);
+            // the poles lie exactly on both cubics (rotations on the unit circle)
+            for p in poles(&disp).iter().flatten() {
+                assert!(p2_eval(&f1q, &p.0, &p.1).is_zero() && p2_eval(&f2q, &p.0, &p.1).is_zero());
+            }
+            let (f1, f2) = (p2_integer(&f1q), p2_integer(&f2q));
+            for (f, want) in [(&f1, &case.f1), (&f2, &case.f2)] {
+                cubic_part_line(f).unwrap();
+                for i in 0..4 {
+                    for j in 0..4 {
+                        let expected = want.iter().find(|w| w.0 == (i, j)).map_or(0, |w| w.1);
+                        assert_eq!(residue(&f.c[i][j]), expected, "{} ({i}, {j})", case.label);
+                    }
+                }
+            }
+            let all = f1.c.iter().chain(f2.c.iter()).flatten().cloned();
+            assert_eq!(max_bits(all), case.cubic_bits, "{}", case.label);
+        }
+    }
+
+    // ---------------------------------------------------- step 3
+
+    #[test]
+    fn bareiss_matches_cofactor_expansion() {
+        fn cofactor(m: &[Vec<BigInt>]) -> BigInt {
+            if m.len() == 1 {
+                return m[0][0].clone();
+            }
+            let mut sum = BigInt::zero();
+            for c in 0..m.len() {
+                let minor: Vec<Vec<BigInt>> = m[1..]
+                    .iter()
+                    .map(|r| {
+                        r.iter()
+                            .enumerate()
+                            .filter(|&(j, _)| j != c)
+                            .map(|(_, v)| v.clone())
+                            .collect()
+                    })
+                    .collect();
+                let t = &m[0][c] * cofactor(&minor);
+                sum = if c % 2 == 0 { sum + t } else { sum - t };
+            }
+            sum
+        }
+        let mut x = 12345_u64;
+        for n in 1..=6 {
+            for trial in 0..20 {
+                let m: Vec<Vec<BigInt>> = (0..n)
+                    .map(|_| {
+                        (0..n)
+                            .map(|_| {
+                                x = x
+                                    .wrapping_mul(6364136223846793005)
+                                    .wrapping_add(1442695040888963407);
+                                // zeros often (pivoting), big values sometimes
+                                let v = ((x >> 33) % 7) as i64 - 3;
+                                if trial % 3 == 0 {
+                                    BigInt::from(v) << 100
+                                } else {
+                                    BigInt::from(v)
+                                }
+                            })
+                            .collect()
+                    })
+                    .collect();
+                assert_eq!(det_bareiss(m.clone()), cofactor(&m), "n = {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn resultant_and_quotient_match_the_reference() {
+        for case in CASES {
+            let Ok(exact) = &case.order else { continue };
+            let c = certify_order(&case.poses).unwrap();
+            assert_eq!(c.shear, exact.shear, "{}", case.label);
+            let r: Vec<u64> = c.resultant.iter().map(residue).collect();
+            assert_eq!(r, exact.resultant, "{}", case.label);
+            assert_eq!(max_bits(c.resultant.iter().cloned()), exact.resultant_bits);
+            let q = primitive(&c.q);
+            assert_eq!(
+                q.iter().map(residue).collect::<Vec<_>>(),
+                exact.q,
+                "{}",
+                case.label
+            );
+            assert_eq!(max_bits(q), exact.q_bits);
+            // a second method at X = 11 (no interpolation node): the
+            // Sylvester determinant there equals the interpolated R(11)
+            let (a, qd) = c.shear;
+            let (c1, c2) = (shear(&c.cubics[0], a, qd), shear(&c.cubics[1], a, qd));
+            let (ca, cb): (Vec<BigInt>, Vec<BigInt>) = (
+                c1.iter().map(|p| ieval(p, 11)).collect(),
+                c2.iter().map(|p| ieval(p, 11)).collect(),
+            );
+            let mut rows = Vec::new();
+            for i in 0..3 {
+                let mut row = vec![BigInt::zero(); 6];
+                for k in 0..4 {
+                    row[i + k] = ca[3 - k].clone();
+                }
+                rows.push(row);
+            }
+            for i in 0..3 {
+                let mut row = vec![BigInt::zero(); 6];
+                for k in 0..4 {
+                    row[i + k] = cb[3 - k].clone();
+                }
+                rows.push(row);
+            }
+            assert_eq!(det_bareiss(rows), ieval(&c.resultant, 11), "{}", case.label);
+        }
+    }
+
+    // ---------------------------------------------------- step 4
+
+    #[test]
+    fn sturm_isolates_known_roots() {
+        // (X - 1)(X - 2)(X + 1/3)(X^2 + 1): three real roots
+        let lin = |r: Rat| vec![r.neg(), Rat::small(1)];
+        let mut p = vec![Rat::small(1), Rat::zero(), Rat::small(1)];
+        for r in [
+            Rat::small(1),
+            Rat::small(2),
+            Rat::new(BigInt::from(-1), BigInt::from(3)),
+        ] {
+            let l = lin(r);
+            let mut out = vec![Rat::zero(); p.len() + 1];
+            for (i, a) in p.iter().enumerate() {
+                for (j, b) in l.iter().enumerate() {
+                    out[i + j] = out[i + j].add(&a.mul(b));
+                }
+            }
+            p = out;
+        }
+        let iv = isolate(&p);
+        assert_eq!(iv.len(), 3);
+        for ((lo, hi), root) in iv.iter().zip([-1.0 / 3.0, 1.0, 2.0]) {
+            assert!(lo.to_f64() < root && root <= hi.to_f64(), "{root}");
+        }
+        assert!(ugcd(&p, &uderiv(&p)).len() == 1);
+        // a double root is seen by the squarefree test
+        let mut sq = p.clone();
+        sq.insert(0, Rat::zero());
+        sq.insert(0, Rat::zero());
+        assert!(ugcd(&sq, &uderiv(&sq)).len() > 1);
+        assert!(isolate(&[Rat::small(1), Rat::zero(), Rat::small(1)]).is_empty());
+    }
+
+    #[test]
+    fn counts_match_the_reference() {
+        for case in CASES {
+            match (&case.order, certify_order(&case.poses)) {
+                (Ok(exact), Ok(c)) => {
+                    assert_eq!(
+                        (c.finite, c.sliders),
+                        (exact.finite, exact.sliders),
+                        "{}",
+                        case.label
+                    );
+                    let iv: Vec<(String, String)> = c
+                        .intervals
+                        .iter()
+                        .map(|(a, b)| (rat_str(a), rat_str(b)))
+                        .collect();
+                    let want: Vec<(String, String)> = exact
+                        .intervals
+                        .iter()
+                        .map(|&(a, b)| (a.to_string(), b.to_string()))
+                        .collect();
+                    assert_eq!(iv, want, "{}", case.label);
+                    // each interval holds a sign change of Q
+                    for (lo, hi) in &c.intervals {
+                        assert_ne!(ueval(&c.q, lo).sign(), ueval(&c.q, hi).sign());
+                    }
+                }
+                (Err(why), Err(e)) => assert_eq!(e.0, *why, "{}", case.label),
+                (want, got) => panic!(
+                    "{}: want {:?}, got {:?}",
+                    case.label,
+                    want.as_ref().err(),
+                    got.err()
+                ),
+            }
+            let c = certify(&case.poses).unwrap();
+            assert_eq!(
+                (c.finite, c.sliders, c.order),
+                case.certify,
+                "{}",
+                case.label
+            );
+        }
+    }
+
+    #[test]
+    fn time_per_task() {
+        let runs = 1;
+        let start = std::time::Instant::now();
+        for _ in 0..runs {
+            for case in CASES {
+                certify(&case.poses).unwrap();
+            }
+        }
+        let per = start.elapsed().as_secs_f64() / (runs * CASES.len()) as f64;
+        println!(
+            "certificate: {:.3} ms per task ({} tasks x {runs})",
+            per * 1e3,
+            CASES.len()
+        );
+    }
+}
