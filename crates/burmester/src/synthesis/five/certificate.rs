@@ -581,24 +581,6 @@ fn udiv(a: &[Rat], b: &[Rat]) -> (UPoly, UPoly) {
     (trim(q), a)
 }
 
-fn uderiv(a: &[Rat]) -> UPoly {
-    trim(
-        (1..a.len())
-            .map(|i| a[i].mul(&Rat::small(i as i64)))
-            .collect(),
-    )
-}
-
-fn ugcd(a: &[Rat], b: &[Rat]) -> UPoly {
-    let (mut a, mut b) = (trim(a.to_vec()), trim(b.to_vec()));
-    while !b.is_empty() {
-        let r = udiv(&a, &b).1;
-        a = b;
-        b = r;
-    }
-    a
-}
-
 fn ueval(a: &[Rat], x: &Rat) -> Rat {
     let mut r = Rat::zero();
     for v in a.iter().rev() {
@@ -609,16 +591,87 @@ fn ueval(a: &[Rat], x: &Rat) -> Rat {
 
 // ------------------------------------------- step 4: squarefree, Sturm
 
-fn sturm(a: &[Rat]) -> Vec<UPoly> {
-    let mut seq = vec![trim(a.to_vec()), uderiv(a)];
+/// An integer polynomial, lowest degree first, trimmed.
+type IPoly = Vec<BigInt>;
+
+fn itrim(mut a: IPoly) -> IPoly {
+    while a.last().is_some_and(|v| v.is_zero()) {
+        a.pop();
+    }
+    a
+}
+
+/// `a` divided by the gcd of its coefficients (a positive factor).
+fn content_free(a: IPoly) -> IPoly {
+    let mut g = BigInt::zero();
+    for v in &a {
+        g = num_integer_gcd(&g, v);
+        if g.is_one() {
+            return a;
+        }
+    }
+    if g.is_zero() {
+        return a;
+    }
+    a.into_iter().map(|v| v / &g).collect()
+}
+
+/// The primitive integer polynomial with the roots and the signs of the
+/// rational `q` (a positive multiple).
+fn primitive_of(q: &[Rat]) -> IPoly {
+    let mut den = BigInt::one();
+    for v in q {
+        den = lcm(&den, &v.d);
+    }
+    content_free(q.iter().map(|v| &v.n * (&den / &v.d)).collect())
+}
+
+/// A positive multiple of the remainder of `a / b` (`b` nonzero):
+/// pseudo-division with `|lc(b)|`, so signs are kept.
+fn prem(a: &[BigInt], b: &[BigInt]) -> IPoly {
+    let lc = &b[b.len() - 1];
+    let (lc_abs, negative) = (lc.abs(), lc.is_negative());
+    let mut r = itrim(a.to_vec());
+    while r.len() >= b.len() {
+        let k = r.len() - b.len();
+        let c = r[r.len() - 1].clone();
+        for v in r.iter_mut() {
+            *v *= &lc_abs;
+        }
+        for (i, v) in b.iter().enumerate() {
+            let t = &c * v;
+            if negative {
+                r[i + k] += t;
+            } else {
+                r[i + k] -= t;
+            }
+        }
+        r = itrim(r);
+    }
+    r
+}
+
+fn ideriv(a: &[BigInt]) -> IPoly {
+    itrim((1..a.len()).map(|i| &a[i] * BigInt::from(i)).collect())
+}
+
+/// The Sturm sequence of `a`, each member scaled by a positive factor
+/// (primitive); its last member is `gcd(a, a')` up to a factor.
+fn sturm(a: &[BigInt]) -> Vec<IPoly> {
+    let mut seq = vec![content_free(itrim(a.to_vec())), content_free(ideriv(a))];
     loop {
-        let r = udiv(&seq[seq.len() - 2], &seq[seq.len() - 1]).1;
+        let r = prem(&seq[seq.len() - 2], &seq[seq.len() - 1]);
         if r.is_empty() {
             break;
         }
-        seq.push(r.iter().map(Rat::neg).collect());
+        seq.push(content_free(r.into_iter().map(|v| -v).collect()));
     }
     seq
+}
+
+/// `a` squarefree: `gcd(a, a')` a constant.
+fn squarefree(a: &[BigInt]) -> bool {
+    sturm(a).last().is_some_and(|g| g.len() == 1)
 }
 
 fn sign_changes(signs: impl Iterator<Item = Sign>) -> usize {
@@ -633,45 +686,84 @@ fn sign_changes(signs: impl Iterator<Item = Sign>) -> usize {
     n
 }
 
-fn at_inf(seq: &[UPoly], negative: bool) -> usize {
+fn at_inf(seq: &[IPoly], negative: bool) -> usize {
     sign_changes(seq.iter().map(|p| {
-        let s = p.last().map_or(Sign::NoSign, Rat::sign);
+        let s = p.last().map_or(Sign::NoSign, BigInt::sign);
         if negative && p.len() % 2 == 0 { -s } else { s }
     }))
 }
 
-fn changes_at(seq: &[UPoly], x: &Rat) -> usize {
-    sign_changes(seq.iter().map(|p| ueval(p, x).sign()))
+/// A dyadic rational `m / 2^k` (the bisection's points).
+#[derive(Debug, Clone)]
+struct Dyadic {
+    m: BigInt,
+    k: u64,
+}
+
+impl Dyadic {
+    fn normal(mut m: BigInt, mut k: u64) -> Dyadic {
+        if m.is_zero() {
+            return Dyadic { m, k: 0 };
+        }
+        let z = m.trailing_zeros().unwrap_or(0).min(k);
+        m >>= z;
+        k -= z;
+        Dyadic { m, k }
+    }
+    /// `(w_a a + w_b b) / (w_a + w_b)`, `w_a + w_b` a power of two `2^e`.
+    fn blend(a: &Dyadic, wa: i64, b: &Dyadic, wb: i64, e: u64) -> Dyadic {
+        let k = a.k.max(b.k);
+        let m = (&a.m << (k - a.k)) * wa + (&b.m << (k - b.k)) * wb;
+        Dyadic::normal(m, k + e)
+    }
+    fn rat(&self) -> Rat {
+        Rat::new(self.m.clone(), BigInt::one() << self.k)
+    }
+}
+
+/// The sign of `p(m / 2^k)` (of `2^(k deg p) p(m / 2^k)`, an integer).
+fn sign_at(p: &[BigInt], x: &Dyadic) -> Sign {
+    let Some(last) = p.last() else {
+        return Sign::NoSign;
+    };
+    let mut h = last.clone();
+    for (j, a) in p.iter().rev().skip(1).enumerate() {
+        h = h * &x.m + (a << (x.k * (j as u64 + 1)));
+    }
+    h.sign()
+}
+
+fn changes_at(seq: &[IPoly], x: &Dyadic) -> usize {
+    sign_changes(seq.iter().map(|p| sign_at(p, x)))
 }
 
 /// Sorted disjoint intervals `(lo, hi)`, one real root of the squarefree
-/// `q` each (Sturm counts, bisection of a power-of-two Cauchy bound).
-fn isolate(q: &[Rat]) -> Vec<(Rat, Rat)> {
+/// `q` each (Sturm counts, bisection of a power-of-two Cauchy bound; the
+/// Python's steps, in integers).
+fn isolate(q: &[BigInt]) -> Vec<(Rat, Rat)> {
     let seq = sturm(q);
     let n = at_inf(&seq, true) - at_inf(&seq, false);
     if n == 0 {
         return Vec::new();
     }
-    let lead = &q[q.len() - 1];
-    let mut bound = Rat::small(1);
-    let mut maxr = Rat::zero();
-    for v in &q[..q.len() - 1] {
-        let r = v.div(lead);
-        let r = if r.sign() == Sign::Minus { r.neg() } else { r };
-        if r.cmp(&maxr) == Ordering::Greater {
-            maxr = r;
-        }
+    // the least 2^e >= 1 + max |q_i / q_n|, doubled
+    let lead = q[q.len() - 1].abs();
+    let target = &lead
+        + q[..q.len() - 1]
+            .iter()
+            .map(BigInt::abs)
+            .max()
+            .unwrap_or_default();
+    let mut e = 0u64;
+    while (&lead << e) < target {
+        e += 1;
     }
-    bound = bound.add(&maxr);
-    // 2^(ceil(log2 bound) + 1)
-    let mut p = Rat::small(1);
-    while p.cmp(&bound) == Ordering::Less {
-        p = p.mul(&Rat::small(2));
-    }
-    let bound = p.mul(&Rat::small(2));
+    let bound = Dyadic {
+        m: BigInt::one() << (e + 1),
+        k: 0,
+    };
     let mut out = Vec::new();
-    let mut stack = vec![(bound.neg(), bound, n)];
-    let half = Rat::new(BigInt::one(), BigInt::from(2));
+    let mut stack = vec![(Dyadic { m: -&bound.m, k: 0 }, bound, n)];
     while let Some((lo, hi, k)) = stack.pop() {
         match k {
             0 => continue,
@@ -681,23 +773,23 @@ fn isolate(q: &[Rat]) -> Vec<(Rat, Rat)> {
             }
             _ => {}
         }
-        let mut mid = lo.add(&hi).mul(&half);
-        if ueval(q, &mid).is_zero() {
-            let a = lo.add(&hi.mul(&Rat::small(3))).div(&Rat::small(4));
-            mid = if !ueval(q, &a).is_zero() {
+        let mut mid = Dyadic::blend(&lo, 1, &hi, 1, 1);
+        if sign_at(q, &mid) == Sign::NoSign {
+            let a = Dyadic::blend(&lo, 1, &hi, 3, 2);
+            mid = if sign_at(q, &a) != Sign::NoSign {
                 a
             } else {
-                lo.mul(&Rat::small(3)).add(&hi).div(&Rat::small(4))
+                Dyadic::blend(&lo, 3, &hi, 1, 2)
             };
         }
         let left = changes_at(&seq, &lo) - changes_at(&seq, &mid);
         stack.push((lo, mid.clone(), left));
         stack.push((mid, hi, k - left));
     }
+    let mut out: Vec<(Rat, Rat)> = out.iter().map(|(a, b)| (a.rat(), b.rat())).collect();
     out.sort_by(|a, b| a.0.cmp(&b.0));
     out
 }
-
 // ------------------------------------------------------ the certificate
 
 /// The shears `u = a / q` tried in turn.
@@ -800,7 +892,8 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
                 "a Burmester point at a pole (or coincident poles of higher multiplicity)",
             );
         }
-        if ugcd(&qp, &uderiv(&qp)).len() > 1 {
+        let qi = primitive_of(&qp);
+        if !squarefree(&qi) {
             last = Some("a multiple common point (Q not squarefree for any shear)");
             continue;
         }
@@ -825,7 +918,7 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
                 "3 or 4 Burmester points at infinity (at the real direction or the circular points)",
             );
         };
-        let intervals = isolate(&qp);
+        let intervals = isolate(&qi);
         return Ok(Certified {
             finite: intervals.len(),
             sliders,
@@ -866,6 +959,25 @@ mod tests {
             g = num_integer_gcd(&g, v);
         }
         ints.iter().map(|v| v / &g).collect()
+    }
+
+    /// The rational Euclidean gcd (the reference of `squarefree`).
+    fn uderiv(a: &[Rat]) -> UPoly {
+        trim(
+            (1..a.len())
+                .map(|i| a[i].mul(&Rat::small(i as i64)))
+                .collect(),
+        )
+    }
+
+    fn ugcd(a: &[Rat], b: &[Rat]) -> UPoly {
+        let (mut a, mut b) = (trim(a.to_vec()), trim(b.to_vec()));
+        while !b.is_empty() {
+            let r = udiv(&a, &b).1;
+            a = b;
+            b = r;
+        }
+        a
     }
 
     fn rat_str(r: &Rat) -> String {
@@ -1720,18 +1832,18 @@ mod tests {
             }
             p = out;
         }
-        let iv = isolate(&p);
+        let iv = isolate(&primitive_of(&p));
         assert_eq!(iv.len(), 3);
         for ((lo, hi), root) in iv.iter().zip([-1.0 / 3.0, 1.0, 2.0]) {
             assert!(lo.to_f64() < root && root <= hi.to_f64(), "{root}");
         }
-        assert!(ugcd(&p, &uderiv(&p)).len() == 1);
+        assert!(ugcd(&p, &uderiv(&p)).len() == 1 && squarefree(&primitive_of(&p)));
         // a double root is seen by the squarefree test
         let mut sq = p.clone();
         sq.insert(0, Rat::zero());
         sq.insert(0, Rat::zero());
-        assert!(ugcd(&sq, &uderiv(&sq)).len() > 1);
-        assert!(isolate(&[Rat::small(1), Rat::zero(), Rat::small(1)]).is_empty());
+        assert!(ugcd(&sq, &uderiv(&sq)).len() > 1 && !squarefree(&primitive_of(&sq)));
+        assert!(isolate(&primitive_of(&[Rat::small(1), Rat::zero(), Rat::small(1)])).is_empty());
     }
 
     #[test]
