@@ -194,18 +194,27 @@ fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
 
 // ------------------------------------------------ step 1: the exact task
 
-/// The f64 rotation `(cos d, sin d)` (`d.sin_cos()`) moved onto the unit
-/// circle exactly by its half-angle tangent rounded to a double.
-pub(crate) fn unit_rotation(d: f64) -> Result<(Rat, Rat), CannotCertify> {
+/// The half-angle tangent of the f64 rotation `(cos d, sin d)`
+/// (`d.sin_cos()`).
+enum HalfAngle {
+    /// `sin d = 0`, `cos d > 0`.
+    Identity,
+    /// `sin d = 0`, `cos d < 0`.
+    HalfTurn,
+    /// `s / (1 + c)`, or `(1 - c) / s` for `c < 0`, rounded to a double.
+    Tangent(f64),
+}
+
+fn half_angle(d: f64) -> Result<HalfAngle, CannotCertify> {
     if !d.is_finite() {
         return cannot("a non-finite pose");
     }
     let (s, c) = d.sin_cos();
     if s == 0.0 {
         return Ok(if c > 0.0 {
-            (Rat::small(1), Rat::zero())
+            HalfAngle::Identity
         } else {
-            (Rat::small(-1), Rat::zero())
+            HalfAngle::HalfTurn
         });
     }
     let (cr, sr) = (Rat::of_f64(c)?, Rat::of_f64(s)?);
@@ -215,10 +224,14 @@ pub(crate) fn unit_rotation(d: f64) -> Result<(Rat, Rat), CannotCertify> {
     } else {
         one.sub(&cr).div(&sr)
     };
-    let tau = Rat::of_f64(tau.to_f64())?;
-    let t2 = tau.mul(&tau);
-    let den = one.add(&t2);
-    Ok((one.sub(&t2).div(&den), Rat::small(2).mul(&tau).div(&den)))
+    Ok(HalfAngle::Tangent(tau.to_f64()))
+}
+
+/// The f64 rotation `(cos d, sin d)` (`d.sin_cos()`) moved onto the unit
+/// circle exactly by its half-angle tangent rounded to a double: `(c, s)`.
+pub(crate) fn unit_rotation(d: f64) -> Result<(Rat, Rat), CannotCertify> {
+    let (c, s, d) = unit_rotation_int(d)?;
+    Ok((Rat::new(c, d.clone()), Rat::new(s, d)))
 }
 
 /// A displacement from pose 1: `G -> R G + t`, `R = (c, s)` exactly on the
@@ -254,43 +267,81 @@ pub(crate) struct Poly2<T> {
     c: [[T; 4]; 4],
 }
 
-type RPoly2 = Poly2<Rat>;
-
-fn p2_zero() -> RPoly2 {
-    Poly2 {
-        c: std::array::from_fn(|_| std::array::from_fn(|_| Rat::zero())),
-    }
+/// The task scaled to integers: per pose 2..5 the rotation `(C, S, D)`
+/// (`c = C / D`, `s = S / D`, exactly on the unit circle), and the
+/// positions `P / 2^e` (one exponent for all).
+struct IntTask {
+    rot: Vec<(BigInt, BigInt, BigInt)>,
+    pos: Vec<(BigInt, BigInt)>,
+    e: u64,
 }
 
-fn p2_lin(c0: Rat, cx: Rat, cy: Rat) -> RPoly2 {
-    let mut p = p2_zero();
+fn int_task(poses: &[[f64; 3]; 5]) -> Result<IntTask, CannotCertify> {
+    let mut rot = Vec::with_capacity(4);
+    for p in &poses[1..] {
+        rot.push(unit_rotation_int(p[2] - poses[0][2])?);
+    }
+    let mut exact = Vec::with_capacity(10);
+    for p in poses {
+        exact.push((Rat::of_f64(p[0])?, Rat::of_f64(p[1])?));
+    }
+    // every denominator is a power of two: the largest divides the others
+    let e = exact
+        .iter()
+        .flat_map(|(x, y)| [x.d.bits(), y.d.bits()])
+        .max()
+        .unwrap_or(1)
+        - 1;
+    let int = |r: &Rat| &r.n * ((BigInt::one() << e) / &r.d);
+    let pos = exact.iter().map(|(x, y)| (int(x), int(y))).collect();
+    Ok(IntTask { rot, pos, e })
+}
+
+/// `(C, S, D)` with `(C / D, S / D)` the rotation of [`unit_rotation`]:
+/// `tau = T / 2^k`, `D = 4^k + T^2`, `C = 4^k - T^2`, `S = 2^(k+1) T`.
+fn unit_rotation_int(d: f64) -> Result<(BigInt, BigInt, BigInt), CannotCertify> {
+    let tau = match half_angle(d)? {
+        HalfAngle::Identity => return Ok((BigInt::one(), BigInt::zero(), BigInt::one())),
+        HalfAngle::HalfTurn => return Ok((-BigInt::one(), BigInt::zero(), BigInt::one())),
+        HalfAngle::Tangent(t) => Rat::of_f64(t)?,
+    };
+    let k = tau.d.bits() - 1;
+    let four_k = BigInt::one() << (2 * k);
+    let t2 = &tau.n * &tau.n;
+    Ok((&four_k - &t2, &tau.n << (k + 1), &four_k + &t2))
+}
+
+fn ipoly_lin(c0: BigInt, cx: BigInt, cy: BigInt) -> Poly2<BigInt> {
+    let mut p = ip2_zero();
     p.c[0][0] = c0;
     p.c[1][0] = cx;
     p.c[0][1] = cy;
     p
 }
 
-fn p2_add(p: &RPoly2, q: &RPoly2, sign: i64) -> RPoly2 {
+fn ip2_zero() -> Poly2<BigInt> {
+    Poly2 {
+        c: std::array::from_fn(|_| std::array::from_fn(|_| BigInt::zero())),
+    }
+}
+
+fn ip2_add(p: &Poly2<BigInt>, q: &Poly2<BigInt>, sign: i64) -> Poly2<BigInt> {
     let mut r = p.clone();
     for i in 0..4 {
         for j in 0..4 {
-            if !q.c[i][j].is_zero() {
-                let v = if sign < 0 {
-                    q.c[i][j].neg()
-                } else {
-                    q.c[i][j].clone()
-                };
-                r.c[i][j] = r.c[i][j].add(&v);
+            if sign < 0 {
+                r.c[i][j] -= &q.c[i][j];
+            } else {
+                r.c[i][j] += &q.c[i][j];
             }
         }
     }
     r
 }
 
-/// The product; both factors' degrees sum to at most 3 here (entries of
-/// degree 1, 3x3 determinants).
-fn p2_mul(p: &RPoly2, q: &RPoly2) -> RPoly2 {
-    let mut r = p2_zero();
+/// The product; the factors' degrees sum to at most 3 here.
+fn ip2_mul(p: &Poly2<BigInt>, q: &Poly2<BigInt>) -> Poly2<BigInt> {
+    let mut r = ip2_zero();
     for i in 0..4 {
         for j in 0..4 - i {
             if p.c[i][j].is_zero() {
@@ -299,7 +350,7 @@ fn p2_mul(p: &RPoly2, q: &RPoly2) -> RPoly2 {
             for k in 0..4 - i - j {
                 for l in 0..4 - i - j - k {
                     if !q.c[k][l].is_zero() {
-                        r.c[i + k][j + l] = r.c[i + k][j + l].add(&p.c[i][j].mul(&q.c[k][l]));
+                        r.c[i + k][j + l] += &p.c[i][j] * &q.c[k][l];
                     }
                 }
             }
@@ -308,78 +359,71 @@ fn p2_mul(p: &RPoly2, q: &RPoly2) -> RPoly2 {
     r
 }
 
-fn det3(r: [&[RPoly2; 3]; 3]) -> RPoly2 {
-    let m2 =
-        |a: &RPoly2, b: &RPoly2, c: &RPoly2, d: &RPoly2| p2_add(&p2_mul(a, d), &p2_mul(b, c), -1);
-    let t1 = p2_mul(&r[0][0], &m2(&r[1][1], &r[1][2], &r[2][1], &r[2][2]));
-    let t2 = p2_mul(&r[0][1], &m2(&r[1][0], &r[1][2], &r[2][0], &r[2][2]));
-    let t3 = p2_mul(&r[0][2], &m2(&r[1][0], &r[1][1], &r[2][0], &r[2][1]));
-    p2_add(&p2_add(&t1, &t2, -1), &t3, 1)
+fn idet3(r: [&[Poly2<BigInt>; 3]; 3]) -> Poly2<BigInt> {
+    let m2 = |a, b, c, d| ip2_add(&ip2_mul(a, d), &ip2_mul(b, c), -1);
+    let t1 = ip2_mul(&r[0][0], &m2(&r[1][1], &r[1][2], &r[2][1], &r[2][2]));
+    let t2 = ip2_mul(&r[0][1], &m2(&r[1][0], &r[1][2], &r[2][0], &r[2][2]));
+    let t3 = ip2_mul(&r[0][2], &m2(&r[1][0], &r[1][1], &r[2][0], &r[2][1]));
+    ip2_add(&ip2_add(&t1, &t2, -1), &t3, 1)
 }
 
-/// `p` times the lcm of its denominators, divided by the gcd of the
-/// numerators (primitive).
-fn p2_integer(p: &RPoly2) -> Poly2<BigInt> {
-    let mut den = BigInt::one();
-    for row in &p.c {
-        for v in row {
-            den = lcm(&den, &v.d);
-        }
-    }
-    let q: [[BigInt; 4]; 4] =
-        std::array::from_fn(|i| std::array::from_fn(|j| &p.c[i][j].n * (&den / &p.c[i][j].d)));
+/// `f` divided by the gcd of its coefficients.
+fn ip2_primitive(f: Poly2<BigInt>) -> Poly2<BigInt> {
     let mut g = BigInt::zero();
-    for row in &q {
-        for v in row {
-            g = num_integer_gcd(&g, v);
-        }
+    for v in f.c.iter().flatten() {
+        g = num_integer_gcd(&g, v);
     }
-    if g.is_zero() {
-        return Poly2 { c: q };
+    if g.is_zero() || g.is_one() {
+        return f;
     }
     Poly2 {
-        c: std::array::from_fn(|i| std::array::from_fn(|j| &q[i][j] / &g)),
+        c: f.c.map(|row| row.map(|v| v / &g)),
     }
-}
-
-fn p2_eval(p: &RPoly2, x: &Rat, y: &Rat) -> Rat {
-    let mut sum = Rat::zero();
-    let mut xi = Rat::small(1);
-    for i in 0..4 {
-        let mut yj = xi.clone();
-        for j in 0..4 - i {
-            if !p.c[i][j].is_zero() {
-                sum = sum.add(&p.c[i][j].mul(&yj));
-            }
-            yj = yj.mul(y);
-        }
-        xi = xi.mul(x);
-    }
-    sum
 }
 
 /// The two center-point cubics `f1 = det(rows 2,3,4)`, `f2 = det(rows
-/// 2,3,5)` (rational, before scaling), of the dyad condition's rows
-/// `a_k(G) . z = b_k(G)`.
-fn cubics(disp: &[Disp]) -> (RPoly2, RPoly2) {
-    let one = Rat::small(1);
-    let rows: Vec<[RPoly2; 3]> = disp
+/// 2,3,5)` of the dyad condition's rows `a_k(G) . z = b_k(G)`, integer and
+/// primitive: row `k` scaled by `D_k^2 2^e`, the column `b` by `2^(e+1)`
+/// (positive factors; the Python's rational cubics made primitive).
+fn int_cubics(t: &IntTask) -> [Poly2<BigInt>; 2] {
+    let (p1x, p1y) = &t.pos[0];
+    let rows: Vec<[Poly2<BigInt>; 3]> = t
+        .rot
         .iter()
-        .map(|d| {
-            let ckx = d.c.mul(&d.tx).add(&d.s.mul(&d.ty));
-            let cky = d.s.neg().mul(&d.tx).add(&d.c.mul(&d.ty));
-            let mr = one.sub(&d.c);
-            let mi = d.s.clone();
-            let ax = p2_lin(ckx, mr.clone(), mi.neg());
-            let ay = p2_lin(cky, mi, mr);
-            let sq = d.tx.mul(&d.tx).add(&d.ty.mul(&d.ty));
-            let b = p2_lin(sq.div(&Rat::small(2)).neg(), d.tx.clone(), d.ty.clone());
+        .zip(&t.pos[1..])
+        .map(|((c, s, d), (px, py))| {
+            // tx = TX / (D 2^e), ty = TY / (D 2^e)
+            let tx = d * px - (c * p1x - s * p1y);
+            let ty = d * py - (s * p1x + c * p1y);
+            let de = d << t.e;
+            let mr = &de * (d - c);
+            let mi = &de * s;
+            let ax = ipoly_lin(c * &tx + s * &ty, mr.clone(), -&mi);
+            let ay = ipoly_lin(c * &ty - s * &tx, mi, mr);
+            let b = ipoly_lin(-(&tx * &tx + &ty * &ty), (&de * &tx) << 1, (&de * &ty) << 1);
             [ax, ay, b]
         })
         .collect();
-    let f1 = det3([&rows[0], &rows[1], &rows[2]]);
-    let f2 = det3([&rows[0], &rows[1], &rows[3]]);
-    (f1, f2)
+    [
+        ip2_primitive(idet3([&rows[0], &rows[1], &rows[2]])),
+        ip2_primitive(idet3([&rows[0], &rows[1], &rows[3]])),
+    ]
+}
+
+/// `f(x, y) = 0` exactly at a rational point (homogenized over the common
+/// denominator).
+fn ip2_vanishes(f: &Poly2<BigInt>, x: &Rat, y: &Rat) -> bool {
+    let d = lcm(&x.d, &y.d);
+    let (a, b) = (&x.n * (&d / &x.d), &y.n * (&d / &y.d));
+    let mut sum = BigInt::zero();
+    for i in 0..4 {
+        for j in 0..4 - i {
+            if !f.c[i][j].is_zero() {
+                sum += &f.c[i][j] * a.pow(i as u32) * b.pow(j as u32) * d.pow((3 - i - j) as u32);
+            }
+        }
+    }
+    sum.is_zero()
 }
 
 /// The fixed point of `G -> R G + t` (`None`: a translation).
@@ -669,9 +713,10 @@ fn sturm(a: &[BigInt]) -> Vec<IPoly> {
     seq
 }
 
-/// `a` squarefree: `gcd(a, a')` a constant.
-fn squarefree(a: &[BigInt]) -> bool {
-    sturm(a).last().is_some_and(|g| g.len() == 1)
+/// `a` squarefree: `gcd(a, a')` (the Sturm sequence's last member) a
+/// constant.
+fn squarefree(seq: &[IPoly]) -> bool {
+    seq.last().is_some_and(|g| g.len() == 1)
 }
 
 fn sign_changes(signs: impl Iterator<Item = Sign>) -> usize {
@@ -738,11 +783,10 @@ fn changes_at(seq: &[IPoly], x: &Dyadic) -> usize {
 }
 
 /// Sorted disjoint intervals `(lo, hi)`, one real root of the squarefree
-/// `q` each (Sturm counts, bisection of a power-of-two Cauchy bound; the
-/// Python's steps, in integers).
-fn isolate(q: &[BigInt]) -> Vec<(Rat, Rat)> {
-    let seq = sturm(q);
-    let n = at_inf(&seq, true) - at_inf(&seq, false);
+/// `q` each (`seq` its Sturm sequence: counts, bisection of a power-of-two
+/// Cauchy bound; the Python's steps, in integers).
+fn isolate(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
+    let n = at_inf(seq, true) - at_inf(seq, false);
     if n == 0 {
         return Vec::new();
     }
@@ -782,7 +826,7 @@ fn isolate(q: &[BigInt]) -> Vec<(Rat, Rat)> {
                 Dyadic::blend(&lo, 3, &hi, 1, 2)
             };
         }
-        let left = changes_at(&seq, &lo) - changes_at(&seq, &mid);
+        let left = changes_at(seq, &lo) - changes_at(seq, &mid);
         stack.push((lo, mid.clone(), left));
         stack.push((mid, hi, k - left));
     }
@@ -847,8 +891,9 @@ pub(crate) fn certify(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCertify>
 
 /// The certificate with the shared poses 1, 2, 3 as given.
 pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCertify> {
+    let task = int_task(poses)?;
+    let [f1, f2] = int_cubics(&task);
     let disp = displacements(poses)?;
-    let (f1q, f2q) = cubics(&disp);
     let all = poles(&disp);
     let pl: Vec<&(Rat, Rat)> = all.iter().flatten().collect();
     let inf_poles = 3 - pl.len();
@@ -856,11 +901,10 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
         return cannot("poles at infinity (poses 1, 2, 3 all with one rotation)");
     }
     for p in &pl {
-        if !p2_eval(&f1q, &p.0, &p.1).is_zero() || !p2_eval(&f2q, &p.0, &p.1).is_zero() {
+        if !ip2_vanishes(&f1, &p.0, &p.1) || !ip2_vanishes(&f2, &p.0, &p.1) {
             return cannot("internal: a pole off a cubic");
         }
     }
-    let (f1, f2) = (p2_integer(&f1q), p2_integer(&f2q));
     let (l1, l2) = (cubic_part_line(&f1)?, cubic_part_line(&f2)?);
     if (l1.0.is_zero() && l1.1.is_zero()) || (l2.0.is_zero() && l2.1.is_zero()) {
         return cannot("a cubic of degree < 3 (the line at infinity a component)");
@@ -893,7 +937,8 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
             );
         }
         let qi = primitive_of(&qp);
-        if !squarefree(&qi) {
+        let seq = sturm(&qi);
+        if !squarefree(&seq) {
             last = Some("a multiple common point (Q not squarefree for any shear)");
             continue;
         }
@@ -918,7 +963,7 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
                 "3 or 4 Burmester points at infinity (at the real direction or the circular points)",
             );
         };
-        let intervals = isolate(&qi);
+        let intervals = isolate(&qi, &seq);
         return Ok(Certified {
             finite: intervals.len(),
             sliders,
@@ -959,6 +1004,138 @@ mod tests {
             g = num_integer_gcd(&g, v);
         }
         ints.iter().map(|v| v / &g).collect()
+    }
+
+    // The rational cubics (the reference of `int_cubics`, the Python's
+    // steps in rationals).
+
+    type RPoly2 = Poly2<Rat>;
+
+    fn p2_zero() -> RPoly2 {
+        Poly2 {
+            c: std::array::from_fn(|_| std::array::from_fn(|_| Rat::zero())),
+        }
+    }
+
+    fn p2_lin(c0: Rat, cx: Rat, cy: Rat) -> RPoly2 {
+        let mut p = p2_zero();
+        p.c[0][0] = c0;
+        p.c[1][0] = cx;
+        p.c[0][1] = cy;
+        p
+    }
+
+    fn p2_add(p: &RPoly2, q: &RPoly2, sign: i64) -> RPoly2 {
+        let mut r = p.clone();
+        for i in 0..4 {
+            for j in 0..4 {
+                if !q.c[i][j].is_zero() {
+                    let v = if sign < 0 {
+                        q.c[i][j].neg()
+                    } else {
+                        q.c[i][j].clone()
+                    };
+                    r.c[i][j] = r.c[i][j].add(&v);
+                }
+            }
+        }
+        r
+    }
+
+    /// The product; both factors' degrees sum to at most 3 here (entries of
+    /// degree 1, 3x3 determinants).
+    fn p2_mul(p: &RPoly2, q: &RPoly2) -> RPoly2 {
+        let mut r = p2_zero();
+        for i in 0..4 {
+            for j in 0..4 - i {
+                if p.c[i][j].is_zero() {
+                    continue;
+                }
+                for k in 0..4 - i - j {
+                    for l in 0..4 - i - j - k {
+                        if !q.c[k][l].is_zero() {
+                            r.c[i + k][j + l] = r.c[i + k][j + l].add(&p.c[i][j].mul(&q.c[k][l]));
+                        }
+                    }
+                }
+            }
+        }
+        r
+    }
+
+    fn det3(r: [&[RPoly2; 3]; 3]) -> RPoly2 {
+        let m2 = |a: &RPoly2, b: &RPoly2, c: &RPoly2, d: &RPoly2| {
+            p2_add(&p2_mul(a, d), &p2_mul(b, c), -1)
+        };
+        let t1 = p2_mul(&r[0][0], &m2(&r[1][1], &r[1][2], &r[2][1], &r[2][2]));
+        let t2 = p2_mul(&r[0][1], &m2(&r[1][0], &r[1][2], &r[2][0], &r[2][2]));
+        let t3 = p2_mul(&r[0][2], &m2(&r[1][0], &r[1][1], &r[2][0], &r[2][1]));
+        p2_add(&p2_add(&t1, &t2, -1), &t3, 1)
+    }
+
+    /// `p` times the lcm of its denominators, divided by the gcd of the
+    /// numerators (primitive).
+    fn p2_integer(p: &RPoly2) -> Poly2<BigInt> {
+        let mut den = BigInt::one();
+        for row in &p.c {
+            for v in row {
+                den = lcm(&den, &v.d);
+            }
+        }
+        let q: [[BigInt; 4]; 4] =
+            std::array::from_fn(|i| std::array::from_fn(|j| &p.c[i][j].n * (&den / &p.c[i][j].d)));
+        let mut g = BigInt::zero();
+        for row in &q {
+            for v in row {
+                g = num_integer_gcd(&g, v);
+            }
+        }
+        if g.is_zero() {
+            return Poly2 { c: q };
+        }
+        Poly2 {
+            c: std::array::from_fn(|i| std::array::from_fn(|j| &q[i][j] / &g)),
+        }
+    }
+
+    fn p2_eval(p: &RPoly2, x: &Rat, y: &Rat) -> Rat {
+        let mut sum = Rat::zero();
+        let mut xi = Rat::small(1);
+        for i in 0..4 {
+            let mut yj = xi.clone();
+            for j in 0..4 - i {
+                if !p.c[i][j].is_zero() {
+                    sum = sum.add(&p.c[i][j].mul(&yj));
+                }
+                yj = yj.mul(y);
+            }
+            xi = xi.mul(x);
+        }
+        sum
+    }
+
+    /// The two center-point cubics `f1 = det(rows 2,3,4)`, `f2 = det(rows
+    /// 2,3,5)` (rational, before scaling), of the dyad condition's rows
+    /// `a_k(G) . z = b_k(G)`.
+    fn cubics(disp: &[Disp]) -> (RPoly2, RPoly2) {
+        let one = Rat::small(1);
+        let rows: Vec<[RPoly2; 3]> = disp
+            .iter()
+            .map(|d| {
+                let ckx = d.c.mul(&d.tx).add(&d.s.mul(&d.ty));
+                let cky = d.s.neg().mul(&d.tx).add(&d.c.mul(&d.ty));
+                let mr = one.sub(&d.c);
+                let mi = d.s.clone();
+                let ax = p2_lin(ckx, mr.clone(), mi.neg());
+                let ay = p2_lin(cky, mi, mr);
+                let sq = d.tx.mul(&d.tx).add(&d.ty.mul(&d.ty));
+                let b = p2_lin(sq.div(&Rat::small(2)).neg(), d.tx.clone(), d.ty.clone());
+                [ax, ay, b]
+            })
+            .collect();
+        let f1 = det3([&rows[0], &rows[1], &rows[2]]);
+        let f2 = det3([&rows[0], &rows[1], &rows[3]]);
+        (f1, f2)
     }
 
     /// The rational Euclidean gcd (the reference of `squarefree`).
@@ -1702,6 +1879,13 @@ mod tests {
                 assert!(p2_eval(&f1q, &p.0, &p.1).is_zero() && p2_eval(&f2q, &p.0, &p.1).is_zero());
             }
             let (f1, f2) = (p2_integer(&f1q), p2_integer(&f2q));
+            let [g1, g2] = int_cubics(&int_task(&case.poses).unwrap());
+            assert_eq!(
+                (&g1, &g2),
+                (&f1, &f2),
+                "{}: integer and rational cubics",
+                case.label
+            );
             for (f, want) in [(&f1, &case.f1), (&f2, &case.f2)] {
                 cubic_part_line(f).unwrap();
                 for i in 0..4 {
@@ -1832,18 +2016,20 @@ mod tests {
             }
             p = out;
         }
-        let iv = isolate(&primitive_of(&p));
+        let pi = primitive_of(&p);
+        let iv = isolate(&pi, &sturm(&pi));
         assert_eq!(iv.len(), 3);
         for ((lo, hi), root) in iv.iter().zip([-1.0 / 3.0, 1.0, 2.0]) {
             assert!(lo.to_f64() < root && root <= hi.to_f64(), "{root}");
         }
-        assert!(ugcd(&p, &uderiv(&p)).len() == 1 && squarefree(&primitive_of(&p)));
+        assert!(ugcd(&p, &uderiv(&p)).len() == 1 && squarefree(&sturm(&primitive_of(&p))));
         // a double root is seen by the squarefree test
         let mut sq = p.clone();
         sq.insert(0, Rat::zero());
         sq.insert(0, Rat::zero());
-        assert!(ugcd(&sq, &uderiv(&sq)).len() > 1 && !squarefree(&primitive_of(&sq)));
-        assert!(isolate(&primitive_of(&[Rat::small(1), Rat::zero(), Rat::small(1)])).is_empty());
+        assert!(ugcd(&sq, &uderiv(&sq)).len() > 1 && !squarefree(&sturm(&primitive_of(&sq))));
+        let none = primitive_of(&[Rat::small(1), Rat::zero(), Rat::small(1)]);
+        assert!(isolate(&none, &sturm(&none)).is_empty());
     }
 
     #[test]
