@@ -474,6 +474,8 @@ fn binom(n: usize, k: usize) -> i64 {
 
 /// `q^3 p(X + u Y, Y)` (`u = a / q`) as coefficient lists in `Y`, each a
 /// list of integers in `X`, trimmed.
+// `out[k][e + j]`: the Python's index arithmetic, kept.
+#[allow(clippy::needless_range_loop)]
 fn shear(p: &Poly2<BigInt>, a: i64, q: i64) -> Vec<Vec<BigInt>> {
     let mut out: [[BigInt; 4]; 4] =
         std::array::from_fn(|_| std::array::from_fn(|_| BigInt::zero()));
