@@ -1481,6 +1481,105 @@ no-points-from-an-angle-measured-choice-2683252a moved | 1222350383.195415 -3057
     }
 
     #[test]
+    fn far_exponents_and_a_translation_match_the_reference() {
+        // (poses, finite, sliders, intervals) from certificate_five.py;
+        // poses 1 and 2 of the last with one angle (the pole P12 at
+        // infinity)
+        type Expected = (
+            [[f64; 3]; 5],
+            usize,
+            usize,
+            &'static [(&'static str, &'static str)],
+        );
+        let tasks: [Expected; 3] = [
+            (
+                [
+                    [1e300, 2e299, 0.1],
+                    [-3e300, 1.5e300, 0.7],
+                    [2e300, -1e300, -0.4],
+                    [5e299, 7e299, 1.2],
+                    [-1e300, -2e300, 2.0],
+                ],
+                0,
+                0,
+                &[],
+            ),
+            (
+                [
+                    [1e-300, 2e-299, 0.1],
+                    [-3e-300, 1.5e-300, 0.7],
+                    [2e-300, -1e-300, -0.4],
+                    [5e-299, 7e-299, 1.2],
+                    [-1e-300, -2e-300, 2.0],
+                ],
+                2,
+                0,
+                &[],
+            ),
+            (
+                [
+                    [1.0, 2.0, 0.3],
+                    [-3.0, 1.5, 0.3],
+                    [2.0, -1.0, -0.4],
+                    [5.0, 7.0, 1.2],
+                    [-1.0, -2.0, 2.0],
+                ],
+                2,
+                0,
+                &[("-16", "-8"), ("-8", "0")],
+            ),
+        ];
+        for (poses, finite, sliders, intervals) in tasks {
+            let c = certify(&poses).unwrap();
+            assert_eq!(
+                (c.finite, c.sliders, c.order),
+                (finite, sliders, [0, 1, 2, 3, 4])
+            );
+            if !intervals.is_empty() {
+                let iv: Vec<(String, String)> = c
+                    .intervals
+                    .iter()
+                    .map(|(a, b)| (rat_str(a), rat_str(b)))
+                    .collect();
+                let want: Vec<(String, String)> = intervals
+                    .iter()
+                    .map(|&(a, b)| (a.into(), b.into()))
+                    .collect();
+                assert_eq!(iv, want);
+            }
+        }
+    }
+
+    #[test]
+    fn counts_are_invariant_under_exact_scaling_and_mirroring() {
+        // positions times 2^k and the mirror (x, -y, -a) are exact in f64
+        // and keep the Burmester points' count and kind
+        for case in &cases() {
+            let want = certify(&case.poses).unwrap();
+            let mut variants: Vec<(String, [[f64; 3]; 5])> = [-600, 600]
+                .iter()
+                .map(|&k| {
+                    let f = 2f64.powi(k);
+                    (
+                        format!("2^{k}"),
+                        case.poses.map(|p| [p[0] * f, p[1] * f, p[2]]),
+                    )
+                })
+                .collect();
+            variants.push(("mirrored".into(), case.poses.map(|p| [p[0], -p[1], -p[2]])));
+            for (what, poses) in variants {
+                let c = certify(&poses).unwrap();
+                assert_eq!(
+                    (c.finite, c.sliders),
+                    (want.finite, want.sliders),
+                    "{} {what}",
+                    case.label
+                );
+            }
+        }
+    }
+
+    #[test]
     fn time_per_task() {
         let runs = 1;
         let cases = cases();
