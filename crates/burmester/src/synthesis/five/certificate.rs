@@ -468,10 +468,6 @@ fn cubic_part_line(f: &Poly2<BigInt>) -> Result<(BigInt, BigInt), CannotCertify>
 
 // ------------------------------------------------ step 3: the resultant
 
-/// Univariate polynomials, lowest degree first, trimmed (no zero leading
-/// coefficient; the zero polynomial is empty).
-type UPoly = Vec<Rat>;
-
 fn binom(n: usize, k: usize) -> i64 {
     [[1, 0, 0, 0], [1, 1, 0, 0], [1, 2, 1, 0], [1, 3, 3, 1]][n][k]
 }
@@ -607,38 +603,6 @@ fn resultant_y(c1: &[Vec<BigInt>], c2: &[Vec<BigInt>]) -> Result<Vec<BigInt>, Ca
     Ok(out)
 }
 
-fn trim(mut a: UPoly) -> UPoly {
-    while a.last().is_some_and(|v| v.is_zero()) {
-        a.pop();
-    }
-    a
-}
-
-/// Quotient and remainder of `a / b` (`b` nonzero).
-fn udiv(a: &[Rat], b: &[Rat]) -> (UPoly, UPoly) {
-    let b = trim(b.to_vec());
-    let mut a = trim(a.to_vec());
-    let mut q = vec![Rat::zero(); (a.len() + 1).saturating_sub(b.len())];
-    while !b.is_empty() && a.len() >= b.len() {
-        let k = a.len() - b.len();
-        let c = a[a.len() - 1].div(&b[b.len() - 1]);
-        for (i, v) in b.iter().enumerate() {
-            a[i + k] = a[i + k].sub(&c.mul(v));
-        }
-        q[k] = c;
-        a = trim(a);
-    }
-    (trim(q), a)
-}
-
-fn ueval(a: &[Rat], x: &Rat) -> Rat {
-    let mut r = Rat::zero();
-    for v in a.iter().rev() {
-        r = r.mul(x).add(v);
-    }
-    r
-}
-
 // ------------------------------------------- step 4: squarefree, Sturm
 
 /// An integer polynomial, lowest degree first, trimmed.
@@ -664,16 +628,6 @@ fn content_free(a: IPoly) -> IPoly {
         return a;
     }
     a.into_iter().map(|v| v / &g).collect()
-}
-
-/// The primitive integer polynomial with the roots and the signs of the
-/// rational `q` (a positive multiple).
-fn primitive_of(q: &[Rat]) -> IPoly {
-    let mut den = BigInt::one();
-    for v in q {
-        den = lcm(&den, &v.d);
-    }
-    content_free(q.iter().map(|v| &v.n * (&den / &v.d)).collect())
 }
 
 /// A positive multiple of the remainder of `a / b` (`b` nonzero):
@@ -705,16 +659,45 @@ fn ideriv(a: &[BigInt]) -> IPoly {
     itrim((1..a.len()).map(|i| &a[i] * BigInt::from(i)).collect())
 }
 
-/// The Sturm sequence of `a`, each member scaled by a positive factor
-/// (primitive); its last member is `gcd(a, a')` up to a factor.
+/// The Sturm sequence of `a`, each member scaled by a positive factor;
+/// its last member is `gcd(a, a')` up to a factor. The factors are kept
+/// small without gcds: each pseudo-remainder is divided by the magnitude
+/// of the subresultant sequence's `beta_i` (Collins: `|beta_1| = 1`,
+/// `|psi_1| = 1`, `|psi_i| = |lc r_(i-1)|^d_(i-1) / |psi_(i-1)|^(d_(i-1) - 1)`,
+/// `|beta_i| = |lc r_(i-1)| |psi_i|^d_i`, `d_i = deg r_(i-1) - deg r_i`),
+/// an exact divisor; its signs do not matter here (a positive divisor
+/// keeps the Sturm signs). Where a division were not exact (not expected)
+/// the member's content is divided out instead.
 fn sturm(a: &[BigInt]) -> Vec<IPoly> {
-    let mut seq = vec![content_free(itrim(a.to_vec())), content_free(ideriv(a))];
+    let mut seq = vec![itrim(a.to_vec()), ideriv(a)];
+    let mut psi = BigInt::one();
+    let mut beta = BigInt::one();
+    let mut d_prev = 0usize;
     loop {
-        let r = prem(&seq[seq.len() - 2], &seq[seq.len() - 1]);
+        let (r0, r1) = (&seq[seq.len() - 2], &seq[seq.len() - 1]);
+        let d = r0.len() - r1.len();
+        if seq.len() > 2 {
+            // i >= 2: psi_i from lc(r_(i-1)) = lc(r0), d_(i-1) = d_prev
+            let lc = r0[r0.len() - 1].abs();
+            psi = if d_prev == 0 {
+                psi
+            } else {
+                lc.pow(d_prev as u32) / psi.pow((d_prev - 1) as u32)
+            };
+            beta = lc * psi.pow(d as u32);
+        }
+        let r = prem(r0, r1);
         if r.is_empty() {
             break;
         }
-        seq.push(content_free(r.into_iter().map(|v| -v).collect()));
+        let exact = r.iter().all(|v| (v % &beta).is_zero());
+        let r: IPoly = r.into_iter().map(|v| -v).collect();
+        seq.push(if exact {
+            r.into_iter().map(|v| v / &beta).collect()
+        } else {
+            content_free(r)
+        });
+        d_prev = d;
     }
     seq
 }
@@ -742,6 +725,43 @@ fn at_inf(seq: &[IPoly], negative: bool) -> usize {
         let s = p.last().map_or(Sign::NoSign, BigInt::sign);
         if negative && p.len() % 2 == 0 { -s } else { s }
     }))
+}
+
+/// `a / (D X - N)` for the root `x = N / D` (reduced): exact over the
+/// integers by Gauss's lemma (the divisor is primitive) when `x` is a
+/// root; otherwise an internal error.
+fn divide_linear(a: &[BigInt], x: &Rat) -> Result<IPoly, CannotCertify> {
+    let (n, d) = (&x.n, &x.d);
+    let mut r = a.to_vec();
+    let mut q = vec![BigInt::zero(); a.len().saturating_sub(1)];
+    for k in (0..q.len()).rev() {
+        // r's leading term r[k+1] X^(k+1) = c X^k (D X - N)
+        let (c, rem) = (&r[k + 1] / d, &r[k + 1] % d);
+        if !rem.is_zero() {
+            return cannot("internal: a pole's factor does not divide the resultant");
+        }
+        r[k + 1] = BigInt::zero();
+        r[k] += &c * n;
+        q[k] = c;
+    }
+    if !r[0].is_zero() {
+        return cannot("internal: a pole's factor does not divide the resultant");
+    }
+    Ok(itrim(q))
+}
+
+/// The sign of `p(N / D)` (of `D^deg p(N / D)`, an integer).
+fn sign_at_rat(p: &[BigInt], x: &Rat) -> Sign {
+    let Some(last) = p.last() else {
+        return Sign::NoSign;
+    };
+    let mut h = last.clone();
+    let mut dk = BigInt::one();
+    for a in p.iter().rev().skip(1) {
+        dk *= &x.d;
+        h = h * &x.n + a * &dk;
+    }
+    h.sign()
 }
 
 /// A dyadic rational `m / 2^k` (the bisection's points).
@@ -857,9 +877,10 @@ pub(crate) struct Certified {
     pub(crate) shear: (i64, i64),
     /// Isolating intervals of the finite points' `X`, sorted.
     pub(crate) intervals: Vec<(Rat, Rat)>,
-    /// `Q`, the resultant with the poles' factors divided out (rational,
-    /// lowest degree first).
-    pub(crate) q: UPoly,
+    /// `Q`, the resultant with the poles' factors divided out (integer, a
+    /// positive multiple of the Python's primitive `Q`, lowest degree
+    /// first).
+    pub(crate) q: IPoly,
     /// The resultant `res_Y(f1, f2)` of the sheared integer cubics.
     pub(crate) resultant: Vec<BigInt>,
     /// The integer primitive cubics `f1`, `f2`.
@@ -927,23 +948,18 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
         if r.is_empty() {
             return cannot("a common component (the resultant vanishes)");
         }
-        let mut qp: UPoly = r.iter().cloned().map(Rat::int).collect();
+        let mut qp = r.clone();
         let u = Rat::new(BigInt::from(a), BigInt::from(q));
         let xs: Vec<Rat> = pl.iter().map(|p| p.0.sub(&u.mul(&p.1))).collect();
         for xp in &xs {
-            let (quo, rem) = udiv(&qp, &[xp.neg(), Rat::small(1)]);
-            if !rem.is_empty() {
-                return cannot("internal: a pole's factor does not divide the resultant");
-            }
-            qp = quo;
+            qp = divide_linear(&qp, xp)?;
         }
-        if xs.iter().any(|xp| ueval(&qp, xp).is_zero()) {
+        if xs.iter().any(|xp| sign_at_rat(&qp, xp) == Sign::NoSign) {
             return cannot(
                 "a Burmester point at a pole (or coincident poles of higher multiplicity)",
             );
         }
-        let qi = primitive_of(&qp);
-        let seq = sturm(&qi);
+        let seq = sturm(&qp);
         if !squarefree(&seq) {
             last = Some("a multiple common point (Q not squarefree for any shear)");
             continue;
@@ -969,7 +985,7 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
                 "3 or 4 Burmester points at infinity (at the real direction or the circular points)",
             );
         };
-        let intervals = isolate(&qi, &seq);
+        let intervals = isolate(&qp, &seq);
         return Ok(Certified {
             finite: intervals.len(),
             sliders,
@@ -995,21 +1011,6 @@ mod tests {
         let p = BigInt::from(P);
         let r = ((v % &p) + &p) % &p;
         to_u64(&r)
-    }
-
-    /// The primitive integer multiple of a rational polynomial (positive
-    /// content), as the Python's `Qi`.
-    fn primitive(q: &[Rat]) -> Vec<BigInt> {
-        let mut den = BigInt::one();
-        for v in q {
-            den = lcm(&den, &v.d);
-        }
-        let ints: Vec<BigInt> = q.iter().map(|v| &v.n * (&den / &v.d)).collect();
-        let mut g = BigInt::zero();
-        for v in &ints {
-            g = num_integer_gcd(&g, v);
-        }
-        ints.iter().map(|v| v / &g).collect()
     }
 
     /// The dyad condition's 3x3 determinant for poses 1 and `k`, `l`, `m`
@@ -1073,6 +1074,53 @@ mod tests {
             b = r;
         }
         a
+    }
+
+    // Rational univariate polynomials (the references of the integer
+    // steps).
+
+    /// Univariate polynomials, lowest degree first, trimmed (no zero leading
+    /// coefficient; the zero polynomial is empty).
+    type UPoly = Vec<Rat>;
+    fn trim(mut a: UPoly) -> UPoly {
+        while a.last().is_some_and(|v| v.is_zero()) {
+            a.pop();
+        }
+        a
+    }
+
+    /// Quotient and remainder of `a / b` (`b` nonzero).
+    fn udiv(a: &[Rat], b: &[Rat]) -> (UPoly, UPoly) {
+        let b = trim(b.to_vec());
+        let mut a = trim(a.to_vec());
+        let mut q = vec![Rat::zero(); (a.len() + 1).saturating_sub(b.len())];
+        while !b.is_empty() && a.len() >= b.len() {
+            let k = a.len() - b.len();
+            let c = a[a.len() - 1].div(&b[b.len() - 1]);
+            for (i, v) in b.iter().enumerate() {
+                a[i + k] = a[i + k].sub(&c.mul(v));
+            }
+            q[k] = c;
+            a = trim(a);
+        }
+        (trim(q), a)
+    }
+
+    fn ueval(a: &[Rat], x: &Rat) -> Rat {
+        let mut r = Rat::zero();
+        for v in a.iter().rev() {
+            r = r.mul(x).add(v);
+        }
+        r
+    }
+    /// The primitive integer polynomial with the roots and the signs of the
+    /// rational `q` (a positive multiple).
+    fn primitive_of(q: &[Rat]) -> IPoly {
+        let mut den = BigInt::one();
+        for v in q {
+            den = lcm(&den, &v.d);
+        }
+        content_free(q.iter().map(|v| &v.n * (&den / &v.d)).collect())
     }
 
     fn rat_str(r: &Rat) -> String {
@@ -1368,7 +1416,7 @@ no-points-from-an-angle-measured-choice-2683252a moved | 1222350383.195415 -3057
             let r: Vec<u64> = c.resultant.iter().map(residue).collect();
             assert_eq!(r, exact.resultant, "{}", case.label);
             assert_eq!(max_bits(c.resultant.iter().cloned()), exact.resultant_bits);
-            let q = primitive(&c.q);
+            let q = content_free(c.q.clone());
             assert_eq!(
                 q.iter().map(residue).collect::<Vec<_>>(),
                 exact.q,
@@ -1441,6 +1489,36 @@ no-points-from-an-angle-measured-choice-2683252a moved | 1222350383.195415 -3057
     }
 
     #[test]
+    fn sturm_sequence_matches_the_primitive_one() {
+        // the reference: each pseudo-remainder made primitive by gcds
+        for case in &cases() {
+            let q = certify(&case.poses).unwrap().q;
+            let seq = sturm(&q);
+            let mut reference = vec![content_free(q.clone()), content_free(ideriv(&q))];
+            loop {
+                let r = prem(
+                    &reference[reference.len() - 2],
+                    &reference[reference.len() - 1],
+                );
+                if r.is_empty() {
+                    break;
+                }
+                reference.push(content_free(r.into_iter().map(|v| -v).collect()));
+            }
+            let primitive: Vec<IPoly> = seq.iter().cloned().map(content_free).collect();
+            assert_eq!(primitive, reference, "{}", case.label);
+            // the divided members stay within the subresultants' size (a
+            // determinant of order at most 7 in the coefficients)
+            let bits = |p: &IPoly| p.iter().map(BigInt::bits).max().unwrap_or(0);
+            assert!(
+                seq.iter().all(|p| bits(p) <= 7 * bits(&q) + 64),
+                "{}",
+                case.label
+            );
+        }
+    }
+
+    #[test]
     fn counts_match_the_reference() {
         for case in &cases() {
             match (&case.order, certify_order(&case.poses)) {
@@ -1459,7 +1537,7 @@ no-points-from-an-angle-measured-choice-2683252a moved | 1222350383.195415 -3057
                     assert_eq!(iv, exact.intervals, "{}", case.label);
                     // each interval holds a sign change of Q
                     for (lo, hi) in &c.intervals {
-                        assert_ne!(ueval(&c.q, lo).sign(), ueval(&c.q, hi).sign());
+                        assert_ne!(sign_at_rat(&c.q, lo), sign_at_rat(&c.q, hi));
                     }
                 }
                 (Err(why), Err(e)) => assert_eq!(e.0, *why, "{}", case.label),
