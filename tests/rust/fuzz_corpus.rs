@@ -57,11 +57,16 @@ replay_targets!(
 /// The open findings (`fuzz/open/<target>/`, see `fuzz/README.md`) replayed
 /// through their target's check: prints which still fail. Not a gate (they
 /// are open), so ignored: `cargo test --test fuzz_corpus -- --ignored
-/// --nocapture open_findings`.
+/// --nocapture open_findings`. `FUZZ_FINDINGS=regressions` replays (and
+/// dumps the five-pose answers of) `fuzz/regressions/` instead, for
+/// `fuzz/reference/balance_five.py`.
 #[test]
 #[ignore]
 fn open_findings() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz/open");
+    let dir = std::env::var("FUZZ_FINDINGS").unwrap_or_else(|_| "open".to_string());
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../fuzz")
+        .join(dir);
     type Check = fn(&[u8]);
     let targets: [(&str, Check); 2] = [
         ("curves", checks::curves),

@@ -29,14 +29,20 @@
 //! findings median 2.5 ms, max 4 ms; positions mixing `1e300` and
 //! `1e-300`: a 42,000-bit resultant, 97 ms; angles of `1e-300`: 39 ms.
 //!
-//! Not yet wired into `FivePositions::of` (the next session does; until
-//! then its items are unused outside the tests).
-#![allow(dead_code)]
+//! Step 6 (for judging an answer, [`refuses`]): each isolated root refined
+//! by exact bisection and its point's `y` from the first subresultant of
+//! the two sheared cubics; the answer's points within `BURMESTER_NEAR`
+//! task sizes must pair one to one with the exact ones there
+//! ([`disagreement`]). `FivePositions::of` refuses an answer that does not
+//! (stop 42); where the exact task cannot be certified (degenerate or
+//! ambiguous) the library's own checks answer.
 
 use std::cmp::Ordering;
 
 use num_bigint::{BigInt, Sign};
 use num_traits::{One, Signed, Zero};
+
+use crate::geom::Pose;
 
 /// Why a task could not be certified (a degenerate or ambiguous exact
 /// task, a non-finite input, or an internal check that failed).
@@ -82,6 +88,7 @@ impl Rat {
     fn is_zero(&self) -> bool {
         self.n.is_zero()
     }
+    #[cfg_attr(not(test), allow(dead_code))]
     fn sign(&self) -> Sign {
         self.n.sign()
     }
@@ -876,8 +883,12 @@ const SHEARS: [(i64, i64); 6] = [(3, 7), (-5, 11), (7, 13), (-2, 9), (11, 17), (
 #[derive(Debug, Clone)]
 pub(crate) struct Certified {
     /// The number of real finite Burmester points.
+    // read by the tests (the reference's values); the refusal reads the points
+    #[cfg_attr(not(test), allow(dead_code))]
     pub(crate) finite: usize,
     /// The number of real Burmester points at infinity.
+    // read by the tests (the reference's values); the refusal reads the points
+    #[cfg_attr(not(test), allow(dead_code))]
     pub(crate) sliders: usize,
     /// The shear `u = a / q` (`X = x - u y`).
     pub(crate) shear: (i64, i64),
@@ -888,6 +899,8 @@ pub(crate) struct Certified {
     /// first).
     pub(crate) q: IPoly,
     /// The resultant `res_Y(f1, f2)` of the sheared integer cubics.
+    // read by the tests (the reference's values); the refusal reads the points
+    #[cfg_attr(not(test), allow(dead_code))]
     pub(crate) resultant: Vec<BigInt>,
     /// The integer primitive cubics `f1`, `f2`.
     pub(crate) cubics: [Poly2<BigInt>; 2],
@@ -1006,6 +1019,222 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
     cannot(last.unwrap_or("no admissible shear"))
 }
 
+// ------------------------------------------- step 6: each root's point
+
+/// Bisection steps beyond which a root is refined no further (the widest
+/// isolating interval, `2^(e+2)` for `e` up to a few thousand bits, down
+/// to `2^-110` of the task's reach: well under this).
+const MAX_REFINE: usize = 8_192;
+
+/// The isolated root in `(lo, hi)` of `q` refined by exact bisection
+/// until the interval is at most `2^-110 (|lo| + |hi| + reach)` wide: its
+/// midpoint (exact where a midpoint is the root).
+fn refine(q: &[BigInt], lo: &Rat, hi: &Rat, reach: &Rat) -> Rat {
+    let (mut lo, mut hi) = (lo.clone(), hi.clone());
+    let low = sign_at_rat(q, &lo);
+    let half = Rat::new(BigInt::one(), BigInt::from(2));
+    let tiny = Rat::new(BigInt::one(), BigInt::one() << 110u32);
+    for _ in 0..MAX_REFINE {
+        let width = hi.sub(&lo);
+        let span = abs_rat(&lo).add(&abs_rat(&hi)).add(reach);
+        if width.cmp(&tiny.mul(&span)) != Ordering::Greater {
+            break;
+        }
+        let mid = lo.add(&hi).mul(&half);
+        match sign_at_rat(q, &mid) {
+            Sign::NoSign => return mid,
+            s if s == low => lo = mid,
+            _ => hi = mid,
+        }
+    }
+    lo.add(&hi).mul(&half)
+}
+
+fn abs_rat(r: &Rat) -> Rat {
+    if r.n.is_negative() {
+        r.neg()
+    } else {
+        r.clone()
+    }
+}
+
+/// `D^3 c(N / D)` for a column `c` (a polynomial in `X` of degree at most
+/// 3) at `X = N / D`: one positive factor `D^3` for every column.
+fn column_at(c: &[BigInt], x: &Rat) -> BigInt {
+    let mut sum = BigInt::zero();
+    for (k, v) in c.iter().enumerate() {
+        sum += v * x.n.pow(k as u32) * x.d.pow(3 - k as u32);
+    }
+    sum
+}
+
+/// The finite Burmester points `(x, y)` of a certificate, one per isolated
+/// root of `Q` (in the order of the intervals): `X` refined by exact
+/// bisection, `Y` the common root of the two sheared cubics over it, from
+/// the first subresultant `S1(Y) = s1 Y + s0` (`Y = -s0 / s1`: at a simple
+/// common point alone over its `X`, as `Q` squarefree and the `Y^3`
+/// coefficients constant make every root, `s1 != 0`), then
+/// `x = X + u Y`. `reach` (the task's size, `> 0`) sets the refinement's
+/// absolute floor.
+pub(crate) fn points(c: &Certified, reach: f64) -> Result<Vec<(f64, f64)>, CannotCertify> {
+    let (a, q) = c.shear;
+    let u = Rat::new(BigInt::from(a), BigInt::from(q));
+    let reach = Rat::of_f64(reach)?;
+    let [f1, f2] = &c.cubics;
+    let (c1, c2) = (shear(f1, a, q), shear(f2, a, q));
+    if c1.len() != 4 || c2.len() != 4 {
+        return cannot("internal: a sheared cubic without its Y^3 term");
+    }
+    let mut out = Vec::with_capacity(c.intervals.len());
+    for (lo, hi) in &c.intervals {
+        let x0 = refine(&c.q, lo, hi, &reach);
+        let a: Vec<BigInt> = c1.iter().map(|col| column_at(col, &x0)).collect();
+        let b: Vec<BigInt> = c2.iter().map(|col| column_at(col, &x0)).collect();
+        // Sylvester rows Y f1, f1, Y f2, f2 in the powers Y^4 .. Y^0
+        let z = BigInt::zero();
+        let rows = [
+            [&a[3], &a[2], &a[1], &a[0], &z],
+            [&z, &a[3], &a[2], &a[1], &a[0]],
+            [&b[3], &b[2], &b[1], &b[0], &z],
+            [&z, &b[3], &b[2], &b[1], &b[0]],
+        ];
+        let minor = |last: usize| {
+            det_bareiss(
+                rows.iter()
+                    .map(|r| vec![r[0].clone(), r[1].clone(), r[2].clone(), r[last].clone()])
+                    .collect(),
+            )
+        };
+        let (s1, s0) = (minor(3), minor(4));
+        if s1.is_zero() {
+            return cannot(
+                "internal: two common points over one X (the first subresultant vanishes)",
+            );
+        }
+        let y = Rat::new(-s0, s1);
+        let x = x0.add(&u.mul(&y));
+        out.push((x.to_f64(), y.to_f64()));
+    }
+    Ok(out)
+}
+
+// ------------------------------------------ the check of a listed answer
+
+/// How far (of `size + d`) a listed Burmester point may lie from its
+/// exact point (`d` the listed point's distance from the centroid).
+pub(crate) const PAIRING: f64 = 1e-3;
+
+/// Why a listed answer disagrees with the certificate: `None` where it
+/// agrees. The points within `near` task sizes (`BURMESTER_NEAR`) must
+/// match the exact ones one to one: each listed point there paired with
+/// its own exact point within [`PAIRING`] of `size + d`, and every exact
+/// point there paired with a listed one (a listed point just beyond
+/// `near` sizes may pair with an exact point just within, and the other
+/// way). Farther points and sliders (known only within rounding of each
+/// other: a far point may be read as a slider) are not compared.
+pub(crate) fn disagreement(
+    exact: &[(f64, f64)],
+    listed: &[(f64, f64)],
+    origin: (f64, f64),
+    size: f64,
+    near: f64,
+) -> Option<&'static str> {
+    let dist = |p: (f64, f64)| (p.0 - origin.0).hypot(p.1 - origin.1);
+    let is_near = |p: (f64, f64)| dist(p) <= near * size;
+    let close =
+        |l: (f64, f64), e: (f64, f64)| (l.0 - e.0).hypot(l.1 - e.1) <= PAIRING * (size + dist(l));
+    // every injective pairing of listed with exact points, as the exact
+    // index of each listed point (`None`: unpaired); at most 4 and 4
+    fn pairings(
+        n: usize,
+        m: usize,
+        used: &mut Vec<bool>,
+        at: &mut Vec<Option<usize>>,
+        f: &mut dyn FnMut(&[Option<usize>]) -> bool,
+    ) -> bool {
+        if at.len() == n {
+            return f(at);
+        }
+        at.push(None);
+        if pairings(n, m, used, at, f) {
+            return true;
+        }
+        at.pop();
+        for k in 0..m {
+            if !used[k] {
+                used[k] = true;
+                at.push(Some(k));
+                let found = pairings(n, m, used, at, f);
+                at.pop();
+                used[k] = false;
+                if found {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+    let ok = pairings(
+        listed.len(),
+        exact.len(),
+        &mut vec![false; exact.len()],
+        &mut Vec::with_capacity(listed.len()),
+        &mut |at: &[Option<usize>]| {
+            let listed_ok = at.iter().zip(listed).all(|(k, &l)| match k {
+                Some(k) => close(l, exact[*k]),
+                None => !is_near(l),
+            });
+            let exact_ok = exact
+                .iter()
+                .enumerate()
+                .all(|(k, &e)| !is_near(e) || at.contains(&Some(k)));
+            listed_ok && exact_ok
+        },
+    );
+    if ok {
+        return None;
+    }
+    let count = |ps: &[(f64, f64)]| ps.iter().filter(|&&p| is_near(p)).count();
+    Some(if count(listed) != count(exact) {
+        "the answer's count of Burmester points within 1e4 task sizes is not the float task's \
+         (counted in exact arithmetic)"
+    } else {
+        "a listed Burmester point is not within 1e-3 of size + d of the float task's exact \
+         point (found in exact arithmetic)"
+    })
+}
+
+/// The certificate's verdict on a five-pose answer listing the finite
+/// Burmester points `listed` (centers) of `poses`, with the poses'
+/// centroid `origin` and size: `Some(why)` refuses the answer (see
+/// [`disagreement`], with `near` the
+/// [`BURMESTER_NEAR`](crate::tolerance::BURMESTER_NEAR) sizes); `None` where
+/// it agrees or where the exact task cannot be certified (a degenerate or
+/// ambiguous exact task: the library's own checks answer those).
+pub(crate) fn refuses(
+    poses: &[Pose],
+    listed: &[(f64, f64)],
+    origin: (f64, f64),
+    size: f64,
+) -> Option<&'static str> {
+    let task: [[f64; 3]; 5] = poses
+        .get(..5)?
+        .iter()
+        .map(|p| [p.position.x, p.position.y, p.angle])
+        .collect::<Vec<_>>()
+        .try_into()
+        .ok()?;
+    let c = certify(&task).ok()?;
+    let exact = points(&c, size).ok()?;
+    disagreement(
+        &exact,
+        listed,
+        origin,
+        size,
+        crate::tolerance::BURMESTER_NEAR,
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1112,13 +1341,6 @@ mod tests {
         (trim(q), a)
     }
 
-    fn ueval(a: &[Rat], x: &Rat) -> Rat {
-        let mut r = Rat::zero();
-        for v in a.iter().rev() {
-            r = r.mul(x).add(v);
-        }
-        r
-    }
     /// The primitive integer polynomial with the roots and the signs of the
     /// rational `q` (a positive multiple).
     fn primitive_of(q: &[Rat]) -> IPoly {
@@ -1246,6 +1468,131 @@ point-not-found-in-another-frame-cbc8befa moved | 0.00046387496619138647 0.00098
                 }
             })
             .collect()
+    }
+
+    /// Each case's finite points by `certificate_five.py`'s `points_of` (mpmath,
+    /// 50 digits, rounded to f64): label, then `x y` per point in its order.
+    const POINTS: &str = "\
+five.toml | 1.8096286353591149e-12 -1.2698100992181122e-12 4.000000000000685 -1.5589419303707116e-12 9.141553542891431 5.477137731301525 28.569489334786752 -40.15778659754287
+random0 | -27.51402252991264 8.251050072848727 -3.6885331284552194 -1.1453549620434236
+random1 | -20.457175525532254 -27.198003962774322 -15.73871806194064 -25.33499516563052 -2.880069766189269 -1.5184408948096777 1.2426259379914597 -0.06461070916933928
+random2 | -9.082776410139736 -12.966222068395394 -0.2812621597266689 2.3462947803388046 -1.0824646881358937 -2.5437532125302265 51.210759674215986 -17.79565002708756
+random3 | -1.5784066401958408 0.6971015516175997 7.817423751988794 -3.243388663948926
+far-ghost-from-an-angle-measured-choice-3783e8a2 task | -209788418.0367162 603036236825.022 85.89602915905671 603027338629.8086 -70.1852268748019 386093420615.0845 224451663054364.4 603036241152.5342
+no-points-from-an-angle-measured-choice-2683252a moved | 2.4933041821393077e+21 9.969171594440423e+21 14551308.163940558 -3639297.787762919 2263053485748.055 -1256576200894.5476 161564525060.26395 -9659140452192.357
+designer k=2 | -161.17909668741459 -217.2703846006155 -84.39877584893257 -79.13921839514192 -94.31412734101976 -299.8937136031696 -35.790208131340925 -218.38382042818174
+designer k=5 | -371.6048397335646 -308.7472129021805 -241.65313134433723 -252.03535871856457 -275.4331897198544 -335.1987079883187 -301.99313053797204 -407.32685076257036
+designer k=8 | -122.86252368210977 251.95483048359597 -44.427497911755864 294.05967050027186 -50.967710268957475 232.10272362857114 -70.60549532108062 161.647926380063
+point-not-found-in-another-frame-ac2bde46 task | -875413461.5915049 3.997656275 -1.313232867318606 3.99765627499996 -1.3132328673205105 3.94755123743367
+point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.0004946791160408921 0.0005366249830956933 0.0004946791233116909 14.54931937278598 -98.92703003062458";
+
+    /// The size and centroid of `certificate_five.py`'s `size_c`.
+    fn size_c(poses: &[[f64; 3]; 5]) -> (f64, (f64, f64)) {
+        let cx = poses.iter().map(|p| p[0]).sum::<f64>() / 5.0;
+        let cy = poses.iter().map(|p| p[1]).sum::<f64>() / 5.0;
+        let s = poses
+            .iter()
+            .map(|p| (p[0] - cx).hypot(p[1] - cy))
+            .fold(0.0, f64::max);
+        (s, (cx, cy))
+    }
+
+    // ---------------------------------------------------- step 6
+
+    #[test]
+    fn points_match_the_reference() {
+        let reference: Vec<(String, Vec<(f64, f64)>)> = POINTS
+            .lines()
+            .map(|l| {
+                let (label, rest) = l.split_once(" | ").unwrap();
+                let v: Vec<f64> = rest
+                    .split_whitespace()
+                    .map(|v| v.parse().unwrap())
+                    .collect();
+                (
+                    label.to_string(),
+                    v.chunks(2).map(|c| (c[0], c[1])).collect(),
+                )
+            })
+            .collect();
+        let cases = cases();
+        assert_eq!(cases.len(), reference.len());
+        for (case, (label, expected)) in cases.iter().zip(&reference) {
+            assert_eq!(&case.label, label);
+            let c = certify(&case.poses).unwrap();
+            let (size, o) = size_c(&case.poses);
+            let got = points(&c, size).unwrap();
+            assert_eq!(got.len(), expected.len(), "{label}");
+            assert_eq!(got.len(), c.finite, "{label}");
+            for (g, e) in got.iter().zip(expected) {
+                let d = (e.0 - o.0).hypot(e.1 - o.1);
+                let off = (g.0 - e.0).hypot(g.1 - e.1) / (size + d);
+                assert!(off <= 1e-12, "{label}: {g:?} against {e:?} ({off:e})");
+            }
+            // the points are common points of the float cubics, in exact
+            // arithmetic: each within rounding of both (their values at the
+            // point against the terms' magnitude)
+            for &(x, y) in &got {
+                let (xr, yr) = (Rat::of_f64(x).unwrap(), Rat::of_f64(y).unwrap());
+                for f in &c.cubics {
+                    let mut mag = 0.0;
+                    for i in 0..4 {
+                        for j in 0..4 - i {
+                            let t = f.c[i][j]
+                                .to_string()
+                                .parse::<f64>()
+                                .unwrap_or(f64::INFINITY);
+                            mag += t.abs() * x.abs().powi(i as i32) * y.abs().powi(j as i32);
+                        }
+                    }
+                    let v = int_eval(f, &xr, &yr).to_f64().abs();
+                    assert!(
+                        v <= 1e-9 * mag,
+                        "{label}: ({x}, {y}) off a cubic: {v:e} of {mag:e}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_listed_answer_is_judged_by_the_exact_near_points() {
+        let o = (0.0, 0.0);
+        let exact = [(1.0, 0.0), (1.0, 1e-9), (5.0, 5.0), (3e4, 0.0)];
+        let near = 1e4;
+        // all four listed; the far one may be left out or read elsewhere
+        assert_eq!(disagreement(&exact, &exact, o, 1.0, near), None);
+        assert_eq!(disagreement(&exact, &exact[..3], o, 1.0, near), None);
+        // a double point for two nearly merging exact points
+        let double = [(1.0, 5e-10), (1.0, 5e-10), (5.0, 5.0)];
+        assert_eq!(disagreement(&exact, &double, o, 1.0, near), None);
+        // one of the merging pair lost: a near count that differs
+        let lost = [(1.0, 0.0), (5.0, 5.0)];
+        assert!(
+            disagreement(&exact, &lost, o, 1.0, near)
+                .unwrap()
+                .contains("count")
+        );
+        // a simple point listed twice, a point off its own, a ghost
+        let twice = [(5.0, 5.0), (5.0, 5.0), (1.0, 0.0)];
+        assert!(disagreement(&exact[1..], &twice, o, 1.0, near).is_some());
+        let off = [(1.0, 0.0), (1.0, 1e-9), (5.0, 5.02)];
+        let why = disagreement(&exact, &off, o, 1.0, near).unwrap();
+        assert!(why.contains("not within"), "{why}");
+        let ghost = [(1.0, 0.0), (1.0, 1e-9), (5.0, 5.0), (-3.0, 2.0)];
+        assert!(disagreement(&exact, &ghost, o, 1.0, near).is_some());
+        // within 1e-3 of size + d: a far-out near point with its own reach
+        let within = [(1.0, 0.0), (1.0, 1e-9), (5.0 + 4e-3, 5.0)];
+        assert_eq!(disagreement(&exact, &within, o, 1.0, near), None);
+        // across the near boundary: a listed point just beyond pairs with an
+        // exact point just within
+        let edge_exact = [(1e4 - 1e-3, 0.0)];
+        let edge_listed = [(1e4 + 1e-3, 0.0)];
+        assert_eq!(disagreement(&edge_exact, &edge_listed, o, 1.0, near), None);
+        assert_eq!(disagreement(&edge_listed, &edge_exact, o, 1.0, near), None);
+        // no exact near point, none listed near
+        assert_eq!(disagreement(&[], &[(2e4, 0.0)], o, 1.0, near), None);
+        assert!(disagreement(&[], &[(2.0, 0.0)], o, 1.0, near).is_some());
     }
 
     fn max_bits(vs: impl IntoIterator<Item = BigInt>) -> u64 {

@@ -156,8 +156,9 @@ impl FivePositions {
     /// line of common points where an earlier one found isolated points
     /// (the line within rounding), when the answer lacks a
     /// Burmester point at coincident poles (`P_ab = P_cd`, verified on the
-    /// circle equations) that no choice lists, or when the points
-    /// computed with another pose as the reference disagree (see below).
+    /// circle equations) that no choice lists, when the points
+    /// computed with another pose as the reference disagree, or when the
+    /// exact count disagrees (see below).
     ///
     /// # The answer is checked
     ///
@@ -178,6 +179,21 @@ impl FivePositions {
     /// one) and the task is refused rather than answered wrongly (issue
     /// 24). On ordinary tasks they agree (100,000 random tasks, none
     /// refused); the check costs four more computations.
+    ///
+    /// Then the answer is checked against an exact count: the float task
+    /// (each rotation from pose 1 moved onto the unit circle by its
+    /// half-angle tangent rounded to a double, the positions the exact
+    /// values of the floats) is solved in exact integer arithmetic (the
+    /// two center-point cubics, their resultant with the poles divided out,
+    /// a Sturm count of its real roots, each root's point from the first
+    /// subresultant), and the answer's points within `BURMESTER_NEAR` task
+    /// sizes must pair one to one with the exact ones there, each within
+    /// `1e-3` of `size + d`; otherwise the task is refused
+    /// ([`crate::DegenerateError::UnresolvedBurmesterPoints`]). Farther
+    /// points and sliders are not compared (a far point is known only
+    /// within rounding of a slider). Where the exact task is degenerate (a
+    /// Burmester point at a pole, a multiple point, a common component)
+    /// the checks above answer alone.
     pub fn new(poses: &[Pose]) -> Result<Self> {
         of_poses(poses, 5, "FivePositions::new", Self::of)
     }
@@ -207,6 +223,18 @@ impl FivePositions {
                     ));
                 }
             }
+        }
+        // The exact count (issue 24): the float task's Burmester points
+        // within `BURMESTER_NEAR` task sizes, counted and placed in exact
+        // arithmetic, must be the answer's.
+        let listed: Vec<(f64, f64)> = answer
+            .points
+            .iter()
+            .map(|d| (d.center.x, d.center.y))
+            .collect();
+        let o = answer.motion.origin;
+        if let Some(why) = certificate::refuses(poses, &listed, (o.x, o.y), answer.motion.scale) {
+            return Err(errors::unresolved(why));
         }
         Ok(answer)
     }
