@@ -1199,3 +1199,74 @@ fn issue24_nearly_coincident_poses_whose_every_elimination_vanishes_are_not_infi
         }
     }
 }
+
+/// An answer that the exact count contradicts is refused (stop 42): the
+/// float task solved in exact integer arithmetic (`FivePositions::new`'s
+/// last check). Three frames of `fuzz/open/burmester_points` whose answer
+/// passed every earlier check and was wrong against the exact points
+/// (`certificate_five.py`'s `points_of`, mpmath; `balance_five.py`'s
+/// judge agrees): a point missing from a pair (`eae1e20a` moved: listed
+/// `(127.015, 42.074)` alone, the exact pair's `(169.089, 15.058)` lost),
+/// no points where two exist (`0157aa6a` moved), and a simple point read
+/// as a near pair and a slider (`c49a3126`: two ghosts listed, the exact
+/// `(-3.456, -1.119)` missing). Each is now refused, or answered at the
+/// exact points (each within `1e-6` of `size + d`).
+#[test]
+fn issue24_an_answer_that_the_exact_count_contradicts_is_refused() {
+    use burmester::{DegenerateError, Error};
+    type Frame = (&'static str, [(f64, f64, f64); 5], &'static [(f64, f64)]);
+    let frames: [Frame; 3] = [
+        (
+            "eae1e20a moved",
+            [
+                (154.03023058681399, 84.14709848078965, 0.99999999999947),
+                (100.00000000006321, 9.84521052225239e-11, 1.0),
+                (100.0, 0.0, -2.141592653589793),
+                (154.03023058681399, 84.14709848078965, -2.141592653589793),
+                (184.14709848078968, -54.03023058681396, 1.0),
+            ],
+            &[
+                (127.01511529344542, 42.073549240412795),
+                (169.0886645338422, 15.058433946996649),
+                (56822084216412.45, -260701871679429.0),
+                (260701871679945.1, 56822084216366.95),
+            ],
+        ),
+        (
+            "0157aa6a moved",
+            [
+                (-3.2927775606855376, 101.48102067026616, -106.5322176535937),
+                (2.9333090118539644, 103.28439020876431, -103.3906260000039),
+                (2.2609942607602367, 100.25035539841507, -104.39062500000391),
+                (-3.3023210716129356, 101.47824601758283, -106.5322176535937),
+                (2.9333025193775355, 103.28444974884508, -103.3906077480039),
+            ],
+            &[
+                (-0.1797329205928153, 102.38270748872615),
+                (-0.09982683286199098, 102.09006156107938),
+            ],
+        ),
+        (
+            "c49a3126 task",
+            [
+                (-2.00390625e-9, 2.8515625e-10, 0.99609375),
+                (0.0, 9.9609375e-10, 0.996093694015625),
+                (2.20703125, 2.207031250996094, 2.2070312489921875),
+                (1996.09375, 0.00056640625, -3.90625e-6),
+                (2.2070312516015624, 0.0, 0.0),
+            ],
+            &[
+                (-3.4560759833558166, -1.1191045804104822),
+                (1002.7000894195206, 381.53143239738137),
+            ],
+        ),
+    ];
+    for (name, poses, exact) in frames {
+        let task: Vec<Pose> = poses.iter().map(|&(x, y, a)| Pose::new(x, y, a)).collect();
+        match FivePositions::new(&task) {
+            Err(Error::Degenerate(DegenerateError::UnresolvedBurmesterPoints { .. })) => {}
+            Err(e) => panic!("{name}: {e}"),
+            Ok(_) => assert_at_exact(name, &poses, exact, 1e-6),
+        }
+    }
+}
