@@ -230,6 +230,43 @@ def test_a_count_above_four_is_refused_or_the_reference_s(poses):
         assert any(close(p, r, t.scale, 1e-7) for r in ref), (p, ref)
 
 
+# Fuzz frames whose answer passed every earlier check and was wrong (a lost
+# pair point, no points where two exist, a simple point read as a near pair
+# and a slider): the exact count (`FivePositions::new`'s last check, stop
+# 42) refuses them; what is answered is the reference's.
+CONTRADICTED = [
+    [(154.03023058681399, 84.14709848078965, 0.99999999999947),
+     (100.00000000006321, 9.84521052225239e-11, 1.0), (100.0, 0.0, -2.141592653589793),
+     (154.03023058681399, 84.14709848078965, -2.141592653589793),
+     (184.14709848078968, -54.03023058681396, 1.0)],
+    [(-3.2927775606855376, 101.48102067026616, -106.5322176535937),
+     (2.9333090118539644, 103.28439020876431, -103.3906260000039),
+     (2.2609942607602367, 100.25035539841507, -104.39062500000391),
+     (-3.3023210716129356, 101.47824601758283, -106.5322176535937),
+     (2.9333025193775355, 103.28444974884508, -103.3906077480039)],
+    [(-2.00390625e-9, 2.8515625e-10, 0.99609375), (0.0, 9.9609375e-10, 0.996093694015625),
+     (2.20703125, 2.207031250996094, 2.2070312489921875), (1996.09375, 0.00056640625, -3.90625e-6),
+     (2.2070312516015624, 0.0, 0.0)],
+]
+
+
+@pytest.mark.parametrize("poses", CONTRADICTED, ids=["lost-pair-point", "no-points", "near-pair-and-slider"])
+def test_an_answer_the_exact_count_contradicts_is_refused_or_the_reference_s(poses):
+    ref, _ = reference.real_points(poses)
+    t = Task(poses)
+    try:
+        pts = [c for c, _ in t.burmester_points()]
+    except DegenerateError as e:
+        assert e.cause == "unresolved_burmester_points", e
+        assert "exact arithmetic" in str(e), e
+        return
+    o = (sum(p[0] for p in poses) / 5, sum(p[1] for p in poses) / 5)
+    near = [r for r in ref if math.dist(r, o) <= 1e4 * t.scale]
+    assert len([p for p in pts if math.dist(p, o) <= 1e4 * t.scale]) == len(near), pts
+    for r in near:
+        assert any(close(p, r, t.scale) for p in pts), (r, pts)
+
+
 @pytest.mark.parametrize("poses", [CASE_B, COLLINEAR], ids=["translations", "collinear"])
 def test_points_with_one_at_infinity_match_the_reference_in_every_frame(poses):
     ref, inf = reference.real_points(poses)
