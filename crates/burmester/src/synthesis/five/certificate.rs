@@ -682,6 +682,10 @@ fn ideriv(a: &[BigInt]) -> IPoly {
 /// keeps the Sturm signs). Where a division were not exact (not expected)
 /// the member's content is divided out instead.
 fn sturm(a: &[BigInt]) -> Vec<IPoly> {
+    if a.len() < 2 {
+        // a constant (every Burmester point at infinity): no roots
+        return vec![itrim(a.to_vec())];
+    }
     let mut seq = vec![itrim(a.to_vec()), ideriv(a)];
     let mut psi = BigInt::one();
     let mut beta = BigInt::one();
@@ -802,6 +806,11 @@ impl Dyadic {
     }
     fn rat(&self) -> Rat {
         Rat::new(self.m.clone(), BigInt::one() << self.k)
+    }
+    /// A rational whose denominator is a power of two (`None` otherwise).
+    fn of_rat(r: &Rat) -> Option<Dyadic> {
+        let k = r.d.bits() - 1;
+        (r.d == BigInt::one() << k).then(|| Dyadic::normal(r.n.clone(), k))
     }
 }
 
@@ -1026,36 +1035,35 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
 /// to `2^-110` of the task's reach: well under this).
 const MAX_REFINE: usize = 8_192;
 
-/// The isolated root in `(lo, hi)` of `q` refined by exact bisection
-/// until the interval is at most `2^-110 (|lo| + |hi| + reach)` wide: its
-/// midpoint (exact where a midpoint is the root).
-fn refine(q: &[BigInt], lo: &Rat, hi: &Rat, reach: &Rat) -> Rat {
-    let (mut lo, mut hi) = (lo.clone(), hi.clone());
-    let low = sign_at_rat(q, &lo);
-    let half = Rat::new(BigInt::one(), BigInt::from(2));
-    let tiny = Rat::new(BigInt::one(), BigInt::one() << 110u32);
+/// The isolated root in `(lo, hi)` of `q` refined by exact bisection (in
+/// dyadic rationals: no gcds) until the interval is about `2^-110` of
+/// `max(|lo|, |hi|, reach)` wide: its midpoint (exact where a midpoint is
+/// the root).
+fn refine(q: &[BigInt], lo: &Rat, hi: &Rat, reach: &Rat) -> Result<Rat, CannotCertify> {
+    let (Some(mut lo), Some(mut hi)) = (Dyadic::of_rat(lo), Dyadic::of_rat(hi)) else {
+        return cannot("internal: an isolating interval's end is not dyadic");
+    };
+    // log2 of a magnitude, within one
+    let log2 = |n: &BigInt, d: &BigInt| n.bits() as i64 - d.bits() as i64;
+    let floor = log2(&reach.n, &reach.d);
+    let low = sign_at(q, &lo);
     for _ in 0..MAX_REFINE {
-        let width = hi.sub(&lo);
-        let span = abs_rat(&lo).add(&abs_rat(&hi)).add(reach);
-        if width.cmp(&tiny.mul(&span)) != Ordering::Greater {
+        let top = [&lo, &hi]
+            .iter()
+            .map(|v| v.m.bits() as i64 - v.k as i64)
+            .fold(floor, i64::max);
+        let width = Dyadic::blend(&hi, 1, &lo, -1, 0); // hi - lo
+        if width.m.is_zero() || width.m.bits() as i64 - (width.k as i64) < top - 110 {
             break;
         }
-        let mid = lo.add(&hi).mul(&half);
-        match sign_at_rat(q, &mid) {
-            Sign::NoSign => return mid,
+        let mid = Dyadic::blend(&lo, 1, &hi, 1, 1);
+        match sign_at(q, &mid) {
+            Sign::NoSign => return Ok(mid.rat()),
             s if s == low => lo = mid,
             _ => hi = mid,
         }
     }
-    lo.add(&hi).mul(&half)
-}
-
-fn abs_rat(r: &Rat) -> Rat {
-    if r.n.is_negative() {
-        r.neg()
-    } else {
-        r.clone()
-    }
+    Ok(Dyadic::blend(&lo, 1, &hi, 1, 1).rat())
 }
 
 /// `D^3 c(N / D)` for a column `c` (a polynomial in `X` of degree at most
@@ -1087,7 +1095,7 @@ pub(crate) fn points(c: &Certified, reach: f64) -> Result<Vec<(f64, f64)>, Canno
     }
     let mut out = Vec::with_capacity(c.intervals.len());
     for (lo, hi) in &c.intervals {
-        let x0 = refine(&c.q, lo, hi, &reach);
+        let x0 = refine(&c.q, lo, hi, &reach)?;
         let a: Vec<BigInt> = c1.iter().map(|col| column_at(col, &x0)).collect();
         let b: Vec<BigInt> = c2.iter().map(|col| column_at(col, &x0)).collect();
         // Sylvester rows Y f1, f1, Y f2, f2 in the powers Y^4 .. Y^0
@@ -1131,13 +1139,18 @@ pub(crate) const PAIRING: f64 = 1e-3;
 /// point there paired with a listed one (a listed point just beyond
 /// `near` sizes may pair with an exact point just within, and the other
 /// way). Farther points and sliders (known only within rounding of each
-/// other: a far point may be read as a slider) are not compared.
+/// other: a far point may be read as a slider) are not compared. Listed
+/// near points left unpaired may stand two by two for a complex pair of
+/// the exact task where `complex_pair` says so (a double point: the
+/// library's answer for a pair that merges within its rounding, which the
+/// rotations' rounding onto the unit circle may leave complex).
 pub(crate) fn disagreement(
     exact: &[(f64, f64)],
     listed: &[(f64, f64)],
     origin: (f64, f64),
     size: f64,
     near: f64,
+    complex_pair: &dyn Fn((f64, f64), (f64, f64)) -> bool,
 ) -> Option<&'static str> {
     let dist = |p: (f64, f64)| (p.0 - origin.0).hypot(p.1 - origin.1);
     let is_near = |p: (f64, f64)| dist(p) <= near * size;
@@ -1182,13 +1195,29 @@ pub(crate) fn disagreement(
         &mut |at: &[Option<usize>]| {
             let listed_ok = at.iter().zip(listed).all(|(k, &l)| match k {
                 Some(k) => close(l, exact[*k]),
-                None => !is_near(l),
+                None => true,
             });
+            let left: Vec<(f64, f64)> = at
+                .iter()
+                .zip(listed)
+                .filter(|(k, l)| k.is_none() && is_near(**l))
+                .map(|(_, &l)| l)
+                .collect();
+            let pairs_ok = match left.len() {
+                0 => true,
+                2 => complex_pair(left[0], left[1]),
+                4 => [[0, 1, 2, 3], [0, 2, 1, 3], [0, 3, 1, 2]]
+                    .iter()
+                    .any(|[a, b, c, d]| {
+                        complex_pair(left[*a], left[*b]) && complex_pair(left[*c], left[*d])
+                    }),
+                _ => false,
+            };
             let exact_ok = exact
                 .iter()
                 .enumerate()
                 .all(|(k, &e)| !is_near(e) || at.contains(&Some(k)));
-            listed_ok && exact_ok
+            listed_ok && pairs_ok && exact_ok
         },
     );
     if ok {
@@ -1202,6 +1231,33 @@ pub(crate) fn disagreement(
         "a listed Burmester point is not within 1e-3 of size + d of the float task's exact \
          point (found in exact arithmetic)"
     })
+}
+
+/// The largest bit length of the integer cubics' coefficients that the
+/// exact check takes on (ordinary tasks about 550, the fuzz corpora's
+/// frames at most about 1,030): beyond it the task's numbers span too many
+/// binary orders of magnitude (coordinates far below the largest, such as
+/// `1e-200` beside `1`, or rotations between poses below about `1e-100`
+/// rad) for the check to stay within a few tens of milliseconds, and the
+/// answer is refused ([`TOO_WIDE`]). Measured (release, one core, loaded
+/// machine): 3,200 bits about 25 ms; 4,400 to 7,900 bits 100 to 300 ms.
+pub(crate) const MAX_CUBIC_BITS: u64 = 2_400;
+
+/// The refusal beyond [`MAX_CUBIC_BITS`].
+pub(crate) const TOO_WIDE: &str = "the poses' numbers span too many binary orders of magnitude \
+     for the exact count (a coordinate far below the task's largest, or two poses' angles within \
+     about 1e-100 rad): round such coordinates and angle differences to the task's precision";
+
+/// The largest bit length of the integer cubics' coefficients of the task
+/// (poses 1, 2, 3 shared).
+fn cubic_bits(task: &[[f64; 3]; 5]) -> Result<u64, CannotCertify> {
+    let t = int_task(task)?;
+    Ok(int_cubics(&t)
+        .iter()
+        .flat_map(|f| f.c.iter().flatten())
+        .map(BigInt::bits)
+        .max()
+        .unwrap_or(0))
 }
 
 /// The certificate's verdict on a five-pose answer listing the finite
@@ -1224,15 +1280,100 @@ pub(crate) fn refuses(
         .collect::<Vec<_>>()
         .try_into()
         .ok()?;
+    match cubic_bits(&task) {
+        Ok(bits) if bits > MAX_CUBIC_BITS => return Some(TOO_WIDE),
+        Ok(_) => {}
+        Err(_) => return None,
+    }
     let c = certify(&task).ok()?;
     let exact = points(&c, size).ok()?;
+    let pair = |a: (f64, f64), b: (f64, f64)| complex_pair_at(&c, a, b, origin, size);
     disagreement(
         &exact,
         listed,
         origin,
         size,
         crate::tolerance::BURMESTER_NEAR,
+        &pair,
     )
+}
+
+/// How close (of `size + d`) two listed points standing for a complex pair
+/// of the exact task lie to each other and to the pair.
+pub(crate) const PAIR_REACH: f64 = 1e-5;
+
+/// Whether two listed points `a`, `b` within [`PAIR_REACH`] of `size + d`
+/// of each other stand for a complex pair of the certificate's task: in
+/// `X` (the shear's coordinate), the disk about their midpoint of radius
+/// `r` (`PAIR_REACH (size + d) (1 + |u|)` plus their distance) holds no
+/// real root of `Q` (a Sturm count) and exactly two roots (Pellet's test
+/// on `Q`'s Taylor coefficients there, in exact rationals:
+/// `|q_2| r^2 > sum_(k != 2) |q_k| r^k`).
+fn complex_pair_at(
+    c: &Certified,
+    a: (f64, f64),
+    b: (f64, f64),
+    origin: (f64, f64),
+    size: f64,
+) -> bool {
+    let d = (a.0 - origin.0).hypot(a.1 - origin.1);
+    let gap = (a.0 - b.0).hypot(a.1 - b.1);
+    let reach = PAIR_REACH * (size + d);
+    if !(gap <= reach) {
+        return false;
+    }
+    let u = c.shear.0 as f64 / c.shear.1 as f64;
+    let r = reach * (1.0 + u.abs()) + gap * (1.0 + u.abs());
+    let ((mx, my), r) = (((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0), r);
+    let (Ok(mx), Ok(my), Ok(r)) = (Rat::of_f64(mx), Rat::of_f64(my), Rat::of_f64(r)) else {
+        return false;
+    };
+    if r.is_zero() {
+        return false;
+    }
+    let ur = Rat::new(BigInt::from(c.shear.0), BigInt::from(c.shear.1));
+    let xm = mx.sub(&ur.mul(&my));
+    // no real root within r
+    let seq = sturm(&c.q);
+    let (lo, hi) = (xm.sub(&r), xm.add(&r));
+    let changes = |x: &Rat| sign_changes(seq.iter().map(|p| sign_at_rat(p, x)));
+    if sign_at_rat(&c.q, &lo) == Sign::NoSign
+        || sign_at_rat(&c.q, &hi) == Sign::NoSign
+        || changes(&lo) != changes(&hi)
+    {
+        return false;
+    }
+    // Taylor coefficients at xm: repeated synthetic division
+    let mut t: Vec<Rat> = c.q.iter().cloned().map(Rat::int).collect();
+    let n = t.len();
+    for i in 0..n {
+        for j in (i..n - 1).rev() {
+            let v = t[j + 1].mul(&xm);
+            t[j] = t[j].add(&v);
+        }
+    }
+    if n < 3 {
+        return false;
+    }
+    let abs = |v: &Rat| {
+        if v.n.is_negative() {
+            v.neg()
+        } else {
+            v.clone()
+        }
+    };
+    let mut rk = Rat::small(1);
+    let (mut two, mut rest) = (Rat::zero(), Rat::zero());
+    for (k, q) in t.iter().enumerate() {
+        let term = abs(q).mul(&rk);
+        if k == 2 {
+            two = term;
+        } else {
+            rest = rest.add(&term);
+        }
+        rk = rk.mul(&r);
+    }
+    two.cmp(&rest) == Ordering::Greater
 }
 
 #[cfg(test)]
@@ -1555,44 +1696,108 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
         }
     }
 
+    /// A task bisected to where two Burmester points merge (the proptest
+    /// `issue24_burmester_points_near_merging_in_any_frame`'s draw): the
+    /// library lists a double point at `(-10.1544, -0.6154)` where the
+    /// certificate's task has a complex pair (mpmath on `certificate_five.py`'s
+    /// `Q`: `X = -9.89059897527 +- 7.18e-5 i`, `3.4e-6` of `(size + d)(1 + |u|)`).
+    #[test]
+    fn a_double_point_stands_for_a_complex_pair_only_within_reach() {
+        let t = [
+            [3.0653607684151782, 3.404510322410228, -1.8656328355815006],
+            [0.6720586959400408, 4.3336256718586785, -1.21374477807433],
+            [0.48196293416697733, 3.573544204279525, -1.1586064861140164],
+            [2.2385573593654735, 1.880116991393753, -1.6214637585185665],
+            [3.2134645568473554, 1.1691282560365681, -1.91927971680065],
+        ];
+        let c = certify(&t).unwrap();
+        assert_eq!((c.finite, c.sliders), (2, 0));
+        let (size, o) = size_c(&t);
+        let double = (-10.154351762279195, -0.6154231671715791);
+        assert!(complex_pair_at(&c, double, double, o, size));
+        // a near pair (not one point) there also
+        let other = (double.0 + 1e-7, double.1 - 1e-7);
+        assert!(complex_pair_at(&c, double, other, o, size));
+        // not two points too far apart, not at a real point, not away
+        let far = (double.0 + 1e-3, double.1);
+        assert!(!complex_pair_at(&c, double, far, o, size));
+        let real = (-0.013427726864169598, 1.5320186783702125);
+        assert!(!complex_pair_at(&c, real, real, o, size));
+        let away = (-10.0, -0.6);
+        assert!(!complex_pair_at(&c, away, away, o, size));
+        // the whole answer: accepted, and refused without the pair
+        let listed = [
+            real,
+            (-0.2697285685092796, -3.208431104658629),
+            double,
+            double,
+        ];
+        let exact = points(&c, size).unwrap();
+        let pair = |a, b| complex_pair_at(&c, a, b, o, size);
+        assert_eq!(disagreement(&exact, &listed, o, size, 1e4, &pair), None);
+        assert!(disagreement(&exact, &listed[..3], o, size, 1e4, &pair).is_some());
+    }
+
     #[test]
     fn a_listed_answer_is_judged_by_the_exact_near_points() {
         let o = (0.0, 0.0);
         let exact = [(1.0, 0.0), (1.0, 1e-9), (5.0, 5.0), (3e4, 0.0)];
         let near = 1e4;
+        let no = |_: (f64, f64), _: (f64, f64)| false;
         // all four listed; the far one may be left out or read elsewhere
-        assert_eq!(disagreement(&exact, &exact, o, 1.0, near), None);
-        assert_eq!(disagreement(&exact, &exact[..3], o, 1.0, near), None);
+        assert_eq!(disagreement(&exact, &exact, o, 1.0, near, &no), None);
+        assert_eq!(disagreement(&exact, &exact[..3], o, 1.0, near, &no), None);
         // a double point for two nearly merging exact points
         let double = [(1.0, 5e-10), (1.0, 5e-10), (5.0, 5.0)];
-        assert_eq!(disagreement(&exact, &double, o, 1.0, near), None);
+        assert_eq!(disagreement(&exact, &double, o, 1.0, near, &no), None);
         // one of the merging pair lost: a near count that differs
         let lost = [(1.0, 0.0), (5.0, 5.0)];
         assert!(
-            disagreement(&exact, &lost, o, 1.0, near)
+            disagreement(&exact, &lost, o, 1.0, near, &no)
                 .unwrap()
                 .contains("count")
         );
         // a simple point listed twice, a point off its own, a ghost
         let twice = [(5.0, 5.0), (5.0, 5.0), (1.0, 0.0)];
-        assert!(disagreement(&exact[1..], &twice, o, 1.0, near).is_some());
+        assert!(disagreement(&exact[1..], &twice, o, 1.0, near, &no).is_some());
         let off = [(1.0, 0.0), (1.0, 1e-9), (5.0, 5.02)];
-        let why = disagreement(&exact, &off, o, 1.0, near).unwrap();
+        let why = disagreement(&exact, &off, o, 1.0, near, &no).unwrap();
         assert!(why.contains("not within"), "{why}");
         let ghost = [(1.0, 0.0), (1.0, 1e-9), (5.0, 5.0), (-3.0, 2.0)];
-        assert!(disagreement(&exact, &ghost, o, 1.0, near).is_some());
+        assert!(disagreement(&exact, &ghost, o, 1.0, near, &no).is_some());
         // within 1e-3 of size + d: a far-out near point with its own reach
         let within = [(1.0, 0.0), (1.0, 1e-9), (5.0 + 4e-3, 5.0)];
-        assert_eq!(disagreement(&exact, &within, o, 1.0, near), None);
+        assert_eq!(disagreement(&exact, &within, o, 1.0, near, &no), None);
         // across the near boundary: a listed point just beyond pairs with an
         // exact point just within
         let edge_exact = [(1e4 - 1e-3, 0.0)];
         let edge_listed = [(1e4 + 1e-3, 0.0)];
-        assert_eq!(disagreement(&edge_exact, &edge_listed, o, 1.0, near), None);
-        assert_eq!(disagreement(&edge_listed, &edge_exact, o, 1.0, near), None);
+        assert_eq!(
+            disagreement(&edge_exact, &edge_listed, o, 1.0, near, &no),
+            None
+        );
+        assert_eq!(
+            disagreement(&edge_listed, &edge_exact, o, 1.0, near, &no),
+            None
+        );
         // no exact near point, none listed near
-        assert_eq!(disagreement(&[], &[(2e4, 0.0)], o, 1.0, near), None);
-        assert!(disagreement(&[], &[(2.0, 0.0)], o, 1.0, near).is_some());
+        assert_eq!(disagreement(&[], &[(2e4, 0.0)], o, 1.0, near, &no), None);
+        assert!(disagreement(&[], &[(2.0, 0.0)], o, 1.0, near, &no).is_some());
+        // a double point where the exact task has a complex pair: accepted
+        // only as `complex_pair` says
+        let yes = |_: (f64, f64), _: (f64, f64)| true;
+        let pair = [
+            (1.0, 0.0),
+            (1.0, 1e-9),
+            (5.0, 5.0),
+            (-3.0, 2.0),
+            (-3.0, 2.0),
+        ];
+        assert!(disagreement(&exact, &pair, o, 1.0, near, &no).is_some());
+        assert_eq!(disagreement(&exact, &pair, o, 1.0, near, &yes), None);
+        // never one point alone, nor for a missing exact point
+        assert!(disagreement(&exact, &ghost, o, 1.0, near, &yes).is_some());
+        assert!(disagreement(&exact, &lost, o, 1.0, near, &yes).is_some());
     }
 
     fn max_bits(vs: impl IntoIterator<Item = BigInt>) -> u64 {

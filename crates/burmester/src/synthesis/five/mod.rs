@@ -188,12 +188,20 @@ impl FivePositions {
     /// a Sturm count of its real roots, each root's point from the first
     /// subresultant), and the answer's points within `BURMESTER_NEAR` task
     /// sizes must pair one to one with the exact ones there, each within
-    /// `1e-3` of `size + d`; otherwise the task is refused
+    /// `1e-3` of `size + d` (a double point may stand for a complex pair of
+    /// the exact task within `1e-5` of `size + d` of it, found by Pellet's
+    /// test on the exact polynomial: a pair that merges within the
+    /// rounding); otherwise the task is refused
     /// ([`crate::DegenerateError::UnresolvedBurmesterPoints`]). Farther
     /// points and sliders are not compared (a far point is known only
     /// within rounding of a slider). Where the exact task is degenerate (a
     /// Burmester point at a pole, a multiple point, a common component)
-    /// the checks above answer alone.
+    /// the checks above answer alone. Tasks whose numbers span too many
+    /// binary orders of magnitude for the exact count to take a few tens of
+    /// milliseconds (a coordinate such as `1e-200` beside `1`, or two
+    /// poses' angles within about `1e-100` rad of each other) are refused
+    /// with a message that says so. The exact count costs about 3 ms on an
+    /// ordinary task.
     pub fn new(poses: &[Pose]) -> Result<Self> {
         of_poses(poses, 5, "FivePositions::new", Self::of)
     }
