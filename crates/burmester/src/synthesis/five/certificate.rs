@@ -1239,8 +1239,10 @@ pub(crate) fn disagreement(
 /// binary orders of magnitude (coordinates far below the largest, such as
 /// `1e-200` beside `1`, or rotations between poses below about `1e-100`
 /// rad) for the check to stay within a few tens of milliseconds, and the
-/// answer is refused ([`TOO_WIDE`]). Measured (release, one core, loaded
-/// machine): 3,200 bits about 25 ms; 4,400 to 7,900 bits 100 to 300 ms.
+/// answer is refused ([`TOO_WIDE`]). A coordinate `2^-1043` beside
+/// coordinates of 1, or a rotation of `2^-1037` rad, reaches it (test
+/// `the_check_at_its_bit_budget`): about 26 and 41 ms (release, one core,
+/// a loaded machine); beyond, 4,400 to 7,900 bits took 100 to 300 ms.
 pub(crate) const MAX_CUBIC_BITS: u64 = 2_400;
 
 /// The refusal beyond [`MAX_CUBIC_BITS`].
@@ -2240,5 +2242,56 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             per * 1e3,
             cases.len()
         );
+    }
+
+    /// The check at its documented maximum: a task whose cubics reach
+    /// [`MAX_CUBIC_BITS`] (a coordinate `2^-k` beside coordinates of 1, or
+    /// one rotation of `2^-k` rad) is certified (its time printed: tens of
+    /// milliseconds in release); one bit length beyond is refused as too
+    /// wide, without the resultant.
+    #[test]
+    fn the_check_at_its_bit_budget() {
+        let pose = |p: &[f64; 3]| Pose::new(p[0], p[1], p[2]);
+        for angle in [false, true] {
+            let task = |k: i32| {
+                let tiny = libm::ldexp(1.0, -k);
+                let mut t = [
+                    [0.0, 0.0, 0.1],
+                    [1.0, 0.2, 0.7],
+                    [2.0, 1.0, 1.3],
+                    [0.5, 3.0, 2.0],
+                    [-1.0, 1.0, -0.4],
+                ];
+                if angle {
+                    (t[0][2], t[1][2]) = (0.0, tiny);
+                } else {
+                    t[1][1] = tiny;
+                }
+                t
+            };
+            // the largest k within the budget
+            let k = (1..1074)
+                .take_while(|&k| cubic_bits(&task(k)).unwrap() <= MAX_CUBIC_BITS)
+                .last()
+                .unwrap();
+            assert!(k > 900, "{k}");
+            let (within, beyond) = (task(k), task(k + 1));
+            assert!(cubic_bits(&beyond).unwrap() > MAX_CUBIC_BITS);
+            let start = std::time::Instant::now();
+            let c = certify(&within).unwrap();
+            let exact = points(&c, 1.0).unwrap();
+            let poses: Vec<Pose> = within.iter().map(pose).collect();
+            let verdict = refuses(&poses, &exact, (0.0, 0.0), 1.0);
+            println!(
+                "{} 2^-{k}: {} bits, {} points, {:.1} ms",
+                if angle { "rotation" } else { "coordinate" },
+                cubic_bits(&within).unwrap(),
+                exact.len(),
+                start.elapsed().as_secs_f64() * 1e3
+            );
+            assert_ne!(verdict, Some(TOO_WIDE));
+            let poses: Vec<Pose> = beyond.iter().map(pose).collect();
+            assert_eq!(refuses(&poses, &exact, (0.0, 0.0), 1.0), Some(TOO_WIDE));
+        }
     }
 }
