@@ -2064,18 +2064,17 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
         ),
         &'static str,
     >;
-    /// `certify`'s: `(finite, sliders, shear, order, intervals)`, or the
-    /// reasons joined.
-    type CertifyWant = Result<
-        (
-            usize,
-            usize,
-            (i64, i64),
-            [usize; 5],
-            &'static [(&'static str, &'static str)],
-        ),
-        &'static str,
-    >;
+    /// `certify`'s certificate: `(finite, sliders, shear, order,
+    /// intervals)`.
+    type CertifyOk = (
+        usize,
+        usize,
+        (i64, i64),
+        [usize; 5],
+        &'static [(&'static str, &'static str)],
+    );
+    /// `certify`'s expected result, or the reasons joined.
+    type CertifyWant = Result<CertifyOk, &'static str>;
 
     fn interval_strs(c: &Certified) -> Vec<(String, String)> {
         c.intervals
@@ -2138,6 +2137,36 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
         }
     }
 
+    /// `matches_reference` where the shared poses 1, 2, 3 certify:
+    /// `(finite, sliders, shear)` and the intervals.
+    fn certified_as_given(
+        label: &str,
+        poses: &[[f64; 3]; 5],
+        (finite, sliders, shear): (usize, usize, (i64, i64)),
+        iv: &'static [(&'static str, &'static str)],
+    ) -> Certified {
+        let want = Ok((finite, sliders, shear, [0, 1, 2, 3, 4], iv));
+        matches_reference(label, poses, Ok((finite, sliders, shear, iv)), want).unwrap()
+    }
+
+    /// `matches_reference` where the shared poses 1, 2, 3 fail (`why`) and
+    /// a later choice certifies (`want`).
+    fn falls_through(
+        label: &str,
+        poses: &[[f64; 3]; 5],
+        why: &'static str,
+        want: CertifyOk,
+    ) -> Certified {
+        matches_reference(label, poses, Err(why), Ok(want)).unwrap()
+    }
+
+    /// `g` is exactly a Burmester center and its `X` lies in `c`'s
+    /// interval `k`.
+    fn center_in_interval(c: &Certified, poses: &[[f64; 3]; 5], g: &(Rat, Rat), k: usize) {
+        assert!(exact_center(poses, g));
+        assert_eq!(interval_of(c, g), Some(k));
+    }
+
     /// Whether `g` is exactly a Burmester center of the exact task (the
     /// certificate's rotations, exactly on the unit circle, and the floats'
     /// positions): a pose-1 point `z` with `|R_k z + t_k - g| = |z - g|`
@@ -2182,9 +2211,12 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             .position(|(lo, hi)| lo.cmp(&x) == Ordering::Less && x.cmp(hi) != Ordering::Greater)
     }
 
-    /// The library's answer (`FivePositions::new`): the listed centers and
-    /// the sliders' directions, or its error.
-    fn library(poses: &[[f64; 3]; 5]) -> Result<(Vec<[f64; 2]>, Vec<[f64; 2]>), String> {
+    /// The library's answer: the listed centers and the sliders'
+    /// directions.
+    type LibraryAnswer = (Vec<[f64; 2]>, Vec<[f64; 2]>);
+
+    /// The library's answer (`FivePositions::new`), or its error.
+    fn library(poses: &[[f64; 3]; 5]) -> Result<LibraryAnswer, String> {
         let p: Vec<crate::geom::Pose> = poses
             .iter()
             .map(|q| crate::geom::Pose::new(q[0], q[1], q[2]))
@@ -2244,6 +2276,23 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
         assert!(count.iter().all(|&n| n == 1), "{count:?}");
     }
 
+    /// Both cubics' real point at infinity is the direction (0, 1)
+    /// (`L = (Lx, 0)`), and the library agrees with `c`: one listed center
+    /// in each interval, and `sliders` sliders in the direction (0, 1).
+    fn vertical_sliders(c: &Certified, poses: &[[f64; 3]; 5], sliders: usize) {
+        for f in &c.cubics {
+            let (lx, ly) = cubic_part_line(f).unwrap();
+            assert!(ly.is_zero() && !lx.is_zero());
+        }
+        let (centers, directions) = library(poses).unwrap();
+        one_center_per_interval(c, &centers);
+        assert_eq!(directions.len(), sliders);
+        assert!(
+            directions.iter().all(|d| d[0].abs() < 1e-9),
+            "{directions:?}"
+        );
+    }
+
     const TAU_HALF: f64 = 0.9272952180016123;
 
     #[test]
@@ -2262,26 +2311,31 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             [5.0, 0.0, 1.2870022175865687],
         ];
         let iv: &[(&str, &str)] = &[("-16", "0"), ("0", "1"), ("1", "2")];
-        let c = matches_reference(
+        let c = certified_as_given(
             "a pole at infinity and a slider",
             &poses,
-            Ok((3, 1, (3, 7), iv)),
-            Ok((3, 1, (3, 7), [0, 1, 2, 3, 4], iv)),
-        )
-        .unwrap();
+            (3, 1, (3, 7)),
+            iv,
+        );
         assert!(poles(&displacements(&poses).unwrap())[0].is_none());
-        // both cubics' real point at infinity is the direction (0, 1):
-        // L(0, 1) = Ly = 0
-        for f in &c.cubics {
-            let (lx, ly) = cubic_part_line(f).unwrap();
-            assert!(ly.is_zero() && !lx.is_zero());
-        }
         // the library: three points, one in each interval, and one slider
         // in the direction (0, 1)
-        let (centers, sliders) = library(&poses).unwrap();
-        one_center_per_interval(&c, &centers);
-        assert_eq!(sliders.len(), 1);
-        assert!(sliders[0][0].abs() < 1e-9, "{sliders:?}");
+        vertical_sliders(&c, &poses, 1);
+        // pose 5 moved off the line by (2^-20, 2^-21): the slider becomes
+        // one far finite point (y about 6.6e6; the reference: 4 points, the
+        // new interval (-4194304, -2097152]), the three near ones stay
+        let mut moved = poses;
+        moved[4][0] += 2f64.powi(-20);
+        moved[4][1] += 2f64.powi(-21);
+        let m = certify_order(&moved).unwrap();
+        assert_eq!((m.finite, m.sliders, m.shear), (4, 0, (3, 7)));
+        let iv = want_strs(&[
+            ("-4194304", "-2097152"),
+            ("-2097152", "0"),
+            ("0", "1"),
+            ("1", "2"),
+        ]);
+        assert_eq!(interval_strs(&m), iv);
     }
 
     #[test]
@@ -2322,13 +2376,12 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             [2.0, 2.0, -2.4440506464219793],
             [0.0, -2.0, -2.1616780010823367],
         ];
-        let c = matches_reference(
+        let c = falls_through(
             "poles at infinity",
             &poses,
-            Err("poles at infinity (poses 1, 2, 3 all with one rotation)"),
-            Ok((0, 0, (3, 7), [0, 3, 4, 1, 2], &[])),
-        )
-        .unwrap();
+            "poles at infinity (poses 1, 2, 3 all with one rotation)",
+            (0, 0, (3, 7), [0, 3, 4, 1, 2], &[]),
+        );
         // the four other earlier choices, each as the reference says
         for (order, why) in [
             (
@@ -2373,21 +2426,12 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             [1.0, -1.0, -TAU_HALF],
             [-1.0, 0.0, TAU_HALF],
         ];
-        let c = matches_reference(
-            "a double slider",
-            &poses,
-            Ok((0, 2, (3, 7), &[])),
-            Ok((0, 2, (3, 7), [0, 1, 2, 3, 4], &[])),
-        )
-        .unwrap();
+        let c = certified_as_given("a double slider", &poses, (0, 2, (3, 7)), &[]);
         for order in [[0, 1, 4, 2, 3], [0, 2, 3, 1, 4], [0, 3, 4, 1, 2]] {
             let o = certify_order(&order.map(|k| poses[k])).unwrap();
             assert_eq!((o.finite, o.sliders), (0, 2), "{order:?}");
         }
-        for f in &c.cubics {
-            let (lx, ly) = cubic_part_line(f).unwrap();
-            assert!(ly.is_zero() && !lx.is_zero());
-        }
+        vertical_sliders(&c, &poses, 2);
         // the slider's circle point: five positions with one y, exactly
         let (bx, by) = (
             Rat::new(BigInt::from(-5), BigInt::from(8)),
@@ -2401,10 +2445,45 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             })
             .collect();
         assert!(ys.iter().all(|y| *y == by), "{ys:?}");
-        // the library: no point, the slider listed twice
-        let (centers, sliders) = library(&poses).unwrap();
-        assert!(centers.is_empty());
-        assert_eq!(sliders.len(), 2);
+        // pose 5 moved by (-2^-20, -2^-21): the double slider becomes two
+        // far real points (y about +-886, as the reference finds), both
+        // outside |X| <= 100; moved the other way, a complex pair
+        for (sign, finite) in [(-1.0, 2), (1.0, 0)] {
+            let mut moved = poses;
+            moved[4][0] += sign * 2f64.powi(-20);
+            moved[4][1] += sign * 2f64.powi(-21);
+            let m = certify_order(&moved).unwrap();
+            assert_eq!((m.finite, m.sliders, m.q.len() - 1), (finite, 0, 4));
+            let seq = sturm(&m.q);
+            let at = |v: i64| {
+                changes_at(
+                    &seq,
+                    &Dyadic {
+                        m: BigInt::from(v),
+                        k: 0,
+                    },
+                )
+            };
+            assert_eq!(at(-100) - at(100), 0);
+        }
+    }
+
+    #[test]
+    fn a_double_slider_with_two_finite_points() {
+        // all positions on the x axis (the moving origin a slider), poses 1
+        // and 4 with one angle, 3 and 5 with one angle: the poles P14, P35
+        // at infinity in the slider's direction (0, 1), as in
+        // `a_double_slider`; two real finite points besides
+        let poses = [
+            [2.0, 0.0, 0.0],
+            [-3.0, 0.0, 2.679411319197999],
+            [1.0, 0.0, -2.498091544796509],
+            [1.0, 0.0, 0.0],
+            [2.0, 0.0, -2.498091544796509],
+        ];
+        let iv: &[(&str, &str)] = &[("-8", "0"), ("0", "8")];
+        let c = certified_as_given("a double slider and two points", &poses, (2, 2, (3, 7)), iv);
+        vertical_sliders(&c, &poses, 2);
     }
 
     #[test]
@@ -2443,13 +2522,12 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             [2.0, -1.0, 2.498091544796509],
             [1.0, 1.0, 1.2870022175865687],
         ];
-        let c = matches_reference(
+        let c = falls_through(
             "a Burmester point at a pole",
             &poses,
-            Err("a Burmester point at a pole (or coincident poles of higher multiplicity)"),
-            Ok((2, 0, (3, 7), [0, 1, 3, 2, 4], &[("-32", "0"), ("0", "32")])),
-        )
-        .unwrap();
+            "a Burmester point at a pole (or coincident poles of higher multiplicity)",
+            (2, 0, (3, 7), [0, 1, 3, 2, 4], &[("-32", "0"), ("0", "32")]),
+        );
         let p13 = poles(&displacements(&poses).unwrap())[1].clone().unwrap();
         assert_eq!(
             p13,
@@ -2458,8 +2536,7 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
                 Rat::new(BigInt::from(-1), BigInt::from(2))
             )
         );
-        assert!(exact_center(&poses, &p13));
-        assert_eq!(interval_of(&c, &p13), Some(1));
+        center_in_interval(&c, &poses, &p13, 1);
         // (the check tells: the pole P12 = (1/6, -1/6) is no center)
         let p12 = poles(&displacements(&poses).unwrap())[0].clone().unwrap();
         assert_eq!(p12.0, Rat::new(BigInt::from(1), BigInt::from(6)));
@@ -2487,13 +2564,12 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             [3.0, 7.0, 1.2870022175865687],
             [-5.0, 2.0, -0.24870998909352288],
         ];
-        let c = matches_reference(
+        let c = falls_through(
             "coincident poles",
             &poses,
-            Err("a common component (the resultant vanishes)"),
-            Ok((2, 0, (3, 7), [0, 3, 4, 1, 2], &[("0", "64"), ("64", "128")])),
-        )
-        .unwrap();
+            "a common component (the resultant vanishes)",
+            (2, 0, (3, 7), [0, 3, 4, 1, 2], &[("0", "64"), ("64", "128")]),
+        );
         let p = (Rat::small(85), Rat::zero());
         for q in poles(&displacements(&poses).unwrap()) {
             assert_eq!(q, Some(p.clone()));
@@ -2516,8 +2592,7 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             let e = &f.c[2][0] + &a * 170;
             assert_eq!(p2_mul(&circle, &p2_lin(e, a, b)), f);
         }
-        assert!(exact_center(&poses, &p));
-        assert_eq!(interval_of(&c, &p), Some(1));
+        center_in_interval(&c, &poses, &p, 1);
         // (the library refuses this task: "rotations about one point")
     }
 
@@ -2567,13 +2642,7 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             assert_eq!(unit_rotation(poses[j][2]).unwrap(), (c, s.neg()));
         }
         let iv: &[(&str, &str)] = &[("-8388608", "0"), ("0", "8388608")];
-        let c = matches_reference(
-            "mirror symmetric",
-            &poses,
-            Ok((2, 0, (-5, 11), iv)),
-            Ok((2, 0, (-5, 11), [0, 1, 2, 3, 4], iv)),
-        )
-        .unwrap();
+        let c = certified_as_given("mirror symmetric", &poses, (2, 0, (-5, 11)), iv);
         // at 3/7: one double root (the complex pair's common X); at -5/11
         // the certificate's Q
         let q37 = q_at_shear(&poses, 3, 7);
