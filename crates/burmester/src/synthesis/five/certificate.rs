@@ -2150,14 +2150,17 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
     }
 
     /// `matches_reference` where the shared poses 1, 2, 3 fail (`why`) and
-    /// a later choice certifies (`want`).
+    /// a later choice certifies (`want`, step 6's `points`).
     fn falls_through(
         label: &str,
         poses: &[[f64; 3]; 5],
         why: &'static str,
         want: CertifyOk,
+        points: &[(f64, f64)],
     ) -> Certified {
-        matches_reference(label, poses, Err(why), Ok(want)).unwrap()
+        let c = matches_reference(label, poses, Err(why), Ok(want)).unwrap();
+        points_match(&c, poses, points);
+        c
     }
 
     /// `g` is exactly a Burmester center and its `X` lies in `c`'s
@@ -2165,6 +2168,21 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
     fn center_in_interval(c: &Certified, poses: &[[f64; 3]; 5], g: &(Rat, Rat), k: usize) {
         assert!(exact_center(poses, g));
         assert_eq!(interval_of(c, g), Some(k));
+    }
+
+    /// Step 6's points of `c` equal `certificate_five.py`'s `points_of`
+    /// (to `1e-12` of `size + d`).
+    fn points_match(c: &Certified, poses: &[[f64; 3]; 5], expected: &[(f64, f64)]) {
+        let (size, o) = size_c(poses);
+        let got = points(c, size).unwrap();
+        assert_eq!(got.len(), expected.len());
+        for (g, e) in got.iter().zip(expected) {
+            let d = (e.0 - o.0).hypot(e.1 - o.1);
+            assert!(
+                (g.0 - e.0).hypot(g.1 - e.1) <= 1e-12 * (size + d),
+                "{g:?} {e:?}"
+            );
+        }
     }
 
     /// Whether `g` is exactly a Burmester center of the exact task (the
@@ -2317,6 +2335,15 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             (3, 1, (3, 7)),
             iv,
         );
+        points_match(
+            &c,
+            &poses,
+            &[
+                (-0.5880398106564148, 5.700185404914164),
+                (1.572970050198376, 2.9539661333913383),
+                (1.7985559989901487, 0.8102118728352874),
+            ],
+        );
         assert!(poles(&displacements(&poses).unwrap())[0].is_none());
         // the library: three points, one in each interval, and one slider
         // in the direction (0, 1)
@@ -2381,6 +2408,7 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             &poses,
             "poles at infinity (poses 1, 2, 3 all with one rotation)",
             (0, 0, (3, 7), [0, 3, 4, 1, 2], &[]),
+            &[],
         );
         // the four other earlier choices, each as the reference says
         for (order, why) in [
@@ -2483,6 +2511,14 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
         ];
         let iv: &[(&str, &str)] = &[("-8", "0"), ("0", "8")];
         let c = certified_as_given("a double slider and two points", &poses, (2, 2, (3, 7)), iv);
+        points_match(
+            &c,
+            &poses,
+            &[
+                (-2.153279627147614, -1.8166912377080495e-41),
+                (0.6532796271476137, -1.9806415413326574e-42),
+            ],
+        );
         vertical_sliders(&c, &poses, 2);
     }
 
@@ -2527,6 +2563,7 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             &poses,
             "a Burmester point at a pole (or coincident poles of higher multiplicity)",
             (2, 0, (3, 7), [0, 1, 3, 2, 4], &[("-32", "0"), ("0", "32")]),
+            &[(-4.413244109980611, -4.808190581405396), (0.5, -0.5)],
         );
         let p13 = poles(&displacements(&poses).unwrap())[1].clone().unwrap();
         assert_eq!(
@@ -2569,6 +2606,7 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             &poses,
             "a common component (the resultant vanishes)",
             (2, 0, (3, 7), [0, 3, 4, 1, 2], &[("0", "64"), ("64", "128")]),
+            &[(14.757789558483408, 17.27430420207375), (85.0, 0.0)],
         );
         let p = (Rat::small(85), Rat::zero());
         for q in poles(&displacements(&poses).unwrap()) {
@@ -2643,6 +2681,14 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
         }
         let iv: &[(&str, &str)] = &[("-8388608", "0"), ("0", "8388608")];
         let c = certified_as_given("mirror symmetric", &poses, (2, 0, (-5, 11)), iv);
+        points_match(
+            &c,
+            &poses,
+            &[
+                (-26.63844849910239, 11.416477928186739),
+                (54.95663031728421, -23.552841564550377),
+            ],
+        );
         // at 3/7: one double root (the complex pair's common X); at -5/11
         // the certificate's Q
         let q37 = q_at_shear(&poses, 3, 7);
