@@ -416,7 +416,7 @@ def certify_order(poses):
     for p in pl:
         assert peval(f1q, *p) == 0 and peval(f2q, *p) == 0, "pole off a cubic"
     f1, f2 = to_integer(f1q), to_integer(f2q)
-    STATS["cubic_bits"] = max(abs(v).bit_length() for v in list(f1.values()) + list(f2.values()))
+    STATS["cubic_bits"] = max((abs(v).bit_length() for v in list(f1.values()) + list(f2.values())), default=0)
     L1, L2 = cubic_part_line(f1), cubic_part_line(f2)
     if L1 == (0, 0) or L2 == (0, 0):
         raise CannotCertify("a cubic of degree < 3 (the line at infinity a component)")

@@ -2294,4 +2294,762 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             assert_eq!(refuses(&poses, &exact, (0.0, 0.0), 1.0), Some(TOO_WIDE));
         }
     }
+
+    // ------------------------------ certify_order's branches, designed tasks
+    //
+    // One task per branch of `certify_order` / `certify`, each run through
+    // `fuzz/reference/certificate_five.py` (`certify_order`, `certify`,
+    // `points_of`); the expected values are its output. The tasks are
+    // exact by design: integer positions, and angles whose half-angle
+    // tangent (`unit_rotation`) comes out an exact small dyadic (1/2, 1/4,
+    // 3/4, ...: rotations `(3/5, 4/5)`, `(15/17, 8/17)`, ...), so the
+    // degenerate coincidences hold exactly; the small-integer ones were
+    // found by classifying random tasks of that grid by the reference's
+    // branch. Where a task certifies, one independent fact is checked too:
+    // a point found by construction is a Burmester center exactly (its
+    // circle point's five positions equidistant from it, solved directly
+    // from the exact task, no elimination) and lies in an isolating
+    // interval, or a slider's circle point has five collinear positions.
+
+    /// `certify_order`'s expected result: `(finite, sliders, shear,
+    /// intervals)`, or the reason.
+    type OrderWant = Result<
+        (
+            usize,
+            usize,
+            (i64, i64),
+            &'static [(&'static str, &'static str)],
+        ),
+        &'static str,
+    >;
+    /// `certify`'s certificate: `(finite, sliders, shear, order,
+    /// intervals)`.
+    type CertifyOk = (
+        usize,
+        usize,
+        (i64, i64),
+        [usize; 5],
+        &'static [(&'static str, &'static str)],
+    );
+    /// `certify`'s expected result, or the reasons joined.
+    type CertifyWant = Result<CertifyOk, &'static str>;
+
+    fn interval_strs(c: &Certified) -> Vec<(String, String)> {
+        c.intervals
+            .iter()
+            .map(|(a, b)| (rat_str(a), rat_str(b)))
+            .collect()
+    }
+
+    fn want_strs(iv: &[(&str, &str)]) -> Vec<(String, String)> {
+        iv.iter().map(|&(a, b)| (a.into(), b.into())).collect()
+    }
+
+    /// `certify_order` and `certify` on `poses` equal the reference's
+    /// (counts, shear, intervals, pose order, reasons); `certify`'s
+    /// certificate where it certifies.
+    fn matches_reference(
+        label: &str,
+        poses: &[[f64; 3]; 5],
+        order: OrderWant,
+        want: CertifyWant,
+    ) -> Option<Certified> {
+        match (certify_order(poses), order) {
+            (Ok(c), Ok((finite, sliders, shear, iv))) => {
+                assert_eq!(
+                    (c.finite, c.sliders, c.shear),
+                    (finite, sliders, shear),
+                    "{label}"
+                );
+                assert_eq!(interval_strs(&c), want_strs(iv), "{label}");
+                for (lo, hi) in &c.intervals {
+                    assert_ne!(sign_at_rat(&c.q, lo), sign_at_rat(&c.q, hi), "{label}");
+                }
+            }
+            (Err(e), Err(why)) => assert_eq!(e.0, why, "{label}"),
+            (got, want) => panic!(
+                "{label}: certify_order gave {:?}, the reference {:?}",
+                got.map(|c| (c.finite, c.sliders, c.shear)),
+                want.map(|w| (w.0, w.1, w.2))
+            ),
+        }
+        match (certify(poses), want) {
+            (Ok(c), Ok((finite, sliders, shear, order, iv))) => {
+                assert_eq!(
+                    (c.finite, c.sliders, c.shear, c.order),
+                    (finite, sliders, shear, order),
+                    "{label}"
+                );
+                assert_eq!(interval_strs(&c), want_strs(iv), "{label}");
+                Some(c)
+            }
+            (Err(e), Err(why)) => {
+                assert_eq!(e.0, why, "{label}");
+                None
+            }
+            (got, want) => panic!(
+                "{label}: certify gave {:?}, the reference {:?}",
+                got.map(|c| (c.finite, c.sliders, c.order)),
+                want.map(|w| (w.0, w.1, w.3))
+            ),
+        }
+    }
+
+    /// `matches_reference` where the shared poses 1, 2, 3 certify:
+    /// `(finite, sliders, shear)` and the intervals.
+    fn certified_as_given(
+        label: &str,
+        poses: &[[f64; 3]; 5],
+        (finite, sliders, shear): (usize, usize, (i64, i64)),
+        iv: &'static [(&'static str, &'static str)],
+    ) -> Certified {
+        let want = Ok((finite, sliders, shear, [0, 1, 2, 3, 4], iv));
+        matches_reference(label, poses, Ok((finite, sliders, shear, iv)), want).unwrap()
+    }
+
+    /// `matches_reference` where the shared poses 1, 2, 3 fail (`why`) and
+    /// a later choice certifies (`want`, step 6's `points`).
+    fn falls_through(
+        label: &str,
+        poses: &[[f64; 3]; 5],
+        why: &'static str,
+        want: CertifyOk,
+        points: &[(f64, f64)],
+    ) -> Certified {
+        let c = matches_reference(label, poses, Err(why), Ok(want)).unwrap();
+        points_match(&c, poses, points);
+        c
+    }
+
+    /// `g` is exactly a Burmester center and its `X` lies in `c`'s
+    /// interval `k`.
+    fn center_in_interval(c: &Certified, poses: &[[f64; 3]; 5], g: &(Rat, Rat), k: usize) {
+        assert!(exact_center(poses, g));
+        assert_eq!(interval_of(c, g), Some(k));
+    }
+
+    /// Step 6's points of `c` equal `certificate_five.py`'s `points_of`
+    /// (to `1e-12` of `size + d`).
+    fn points_match(c: &Certified, poses: &[[f64; 3]; 5], expected: &[(f64, f64)]) {
+        let (size, o) = size_c(poses);
+        let got = points(c, size).unwrap();
+        assert_eq!(got.len(), expected.len());
+        for (g, e) in got.iter().zip(expected) {
+            let d = (e.0 - o.0).hypot(e.1 - o.1);
+            assert!(
+                (g.0 - e.0).hypot(g.1 - e.1) <= 1e-12 * (size + d),
+                "{g:?} {e:?}"
+            );
+        }
+    }
+
+    /// Whether `g` is exactly a Burmester center of the exact task (the
+    /// certificate's rotations, exactly on the unit circle, and the floats'
+    /// positions): a pose-1 point `z` with `|R_k z + t_k - g| = |z - g|`
+    /// for the four displacements, each linear in `z`:
+    /// `z . 2 (R_k^T (t_k - g) + g) = |g|^2 - |t_k - g|^2`; `z` from two
+    /// independent rows, all four checked (a pole's row is `0 = 0`).
+    fn exact_center(poses: &[[f64; 3]; 5], g: &(Rat, Rat)) -> bool {
+        let rows: Vec<(Rat, Rat, Rat)> = displacements(poses)
+            .unwrap()
+            .iter()
+            .map(|d| {
+                let (ex, ey) = (d.tx.sub(&g.0), d.ty.sub(&g.1));
+                let vx = d.c.mul(&ex).add(&d.s.mul(&ey)).add(&g.0);
+                let vy = d.c.mul(&ey).sub(&d.s.mul(&ex)).add(&g.1);
+                let w = g.0.mul(&g.0).add(&g.1.mul(&g.1));
+                let w = w.sub(&ex.mul(&ex)).sub(&ey.mul(&ey));
+                (vx.add(&vx), vy.add(&vy), w)
+            })
+            .collect();
+        for i in 0..4 {
+            for j in i + 1..4 {
+                let (a, b) = (&rows[i], &rows[j]);
+                let det = a.0.mul(&b.1).sub(&a.1.mul(&b.0));
+                if det.is_zero() {
+                    continue;
+                }
+                let zx = a.2.mul(&b.1).sub(&a.1.mul(&b.2)).div(&det);
+                let zy = a.0.mul(&b.2).sub(&a.2.mul(&b.0)).div(&det);
+                return rows.iter().all(|r| r.0.mul(&zx).add(&r.1.mul(&zy)) == r.2);
+            }
+        }
+        false
+    }
+
+    /// The isolating interval of `c` (its shear) that holds the point `g`'s
+    /// `X = x - u y`: `(lo, hi]`, as the bisection counts roots.
+    fn interval_of(c: &Certified, g: &(Rat, Rat)) -> Option<usize> {
+        let u = Rat::new(BigInt::from(c.shear.0), BigInt::from(c.shear.1));
+        let x = g.0.sub(&u.mul(&g.1));
+        c.intervals
+            .iter()
+            .position(|(lo, hi)| lo.cmp(&x) == Ordering::Less && x.cmp(hi) != Ordering::Greater)
+    }
+
+    /// The library's answer: the listed centers and the sliders'
+    /// directions.
+    type LibraryAnswer = (Vec<[f64; 2]>, Vec<[f64; 2]>);
+
+    /// The library's answer (`FivePositions::new`), or its error.
+    fn library(poses: &[[f64; 3]; 5]) -> Result<LibraryAnswer, String> {
+        let p: Vec<crate::geom::Pose> = poses
+            .iter()
+            .map(|q| crate::geom::Pose::new(q[0], q[1], q[2]))
+            .collect();
+        super::super::FivePositions::new(&p)
+            .map(|f| {
+                let centers = f
+                    .burmester_points()
+                    .iter()
+                    .map(|d| [d.center.x, d.center.y]);
+                let sliders = f.sliders().iter().map(|s| [s.direction.x, s.direction.y]);
+                (centers.collect(), sliders.collect())
+            })
+            .map_err(|e| e.to_string())
+    }
+
+    /// The angles used below: `unit_rotation` of each has its half-angle
+    /// tangent exactly the dyadic `tau` (1/2, 1/4, 3/4, ...), so the
+    /// rotation is `((1 - tau^2), 2 tau) / (1 + tau^2)`.
+    #[test]
+    fn designed_angles_have_exact_dyadic_half_angle_tangents() {
+        for (angle, tau) in [
+            (0.9272952180016123, 0.5),
+            (0.4899573262537283, 0.25),
+            (1.2870022175865687, 0.75),
+            (0.24870998909352288, 0.125),
+            (2.498091544796509, 3.0),
+            (0.7175413405411444, 0.375),
+            (2.1616780010823367, 1.875),
+            (2.413634740570505, 2.625),
+            (2.4440506464219793, 2.75),
+            (2.5445947904174346, 3.25),
+        ] {
+            for (a, t) in [(angle, tau), (-angle, -tau)] {
+                let t = Rat::of_f64(t).unwrap();
+                let one = Rat::small(1);
+                let d = one.add(&t.mul(&t));
+                let want = (one.sub(&t.mul(&t)).div(&d), t.add(&t).div(&d));
+                assert_eq!(unit_rotation(a).unwrap(), want, "{a}");
+            }
+        }
+    }
+
+    /// Each of `c`'s intervals holds the `X` of exactly one of `centers`
+    /// (the library's points, f64), and each center lies in one.
+    fn one_center_per_interval(c: &Certified, centers: &[[f64; 2]]) {
+        let u = c.shear.0 as f64 / c.shear.1 as f64;
+        let mut count = vec![0; c.intervals.len()];
+        for p in centers {
+            let x = p[0] - u * p[1];
+            let k = c
+                .intervals
+                .iter()
+                .position(|(lo, hi)| lo.to_f64() < x && x <= hi.to_f64());
+            count[k.unwrap_or_else(|| panic!("{p:?} in no interval"))] += 1;
+        }
+        assert!(count.iter().all(|&n| n == 1), "{count:?}");
+    }
+
+    /// Both cubics' real point at infinity is the direction (0, 1)
+    /// (`L = (Lx, 0)`), and the library agrees with `c`: one listed center
+    /// in each interval, and `sliders` sliders in the direction (0, 1).
+    fn vertical_sliders(c: &Certified, poses: &[[f64; 3]; 5], sliders: usize) {
+        for f in &c.cubics {
+            let (lx, ly) = cubic_part_line(f).unwrap();
+            assert!(ly.is_zero() && !lx.is_zero());
+        }
+        let (centers, directions) = library(poses).unwrap();
+        one_center_per_interval(c, &centers);
+        assert_eq!(directions.len(), sliders);
+        assert!(
+            directions.iter().all(|d| d[0].abs() < 1e-9),
+            "{directions:?}"
+        );
+    }
+
+    const TAU_HALF: f64 = 0.9272952180016123;
+
+    #[test]
+    fn a_pole_at_infinity_with_one_slider() {
+        // poses 1 and 2 with one angle (a translation along x: P12 at
+        // infinity in the direction (0, 1)), and all five positions on the
+        // x axis: the moving origin is a slider whose center is at infinity
+        // in the pole's direction (the branch's "at most one Burmester
+        // point at infinity"); the pole alone (no slider) is
+        // `far_exponents_and_a_translation_match_the_reference`'s last task
+        let poses = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [3.0, 0.0, TAU_HALF],
+            [-2.0, 0.0, -0.4899573262537283],
+            [5.0, 0.0, 1.2870022175865687],
+        ];
+        let iv: &[(&str, &str)] = &[("-16", "0"), ("0", "1"), ("1", "2")];
+        let c = certified_as_given(
+            "a pole at infinity and a slider",
+            &poses,
+            (3, 1, (3, 7)),
+            iv,
+        );
+        points_match(
+            &c,
+            &poses,
+            &[
+                (-0.5880398106564148, 5.700185404914164),
+                (1.572970050198376, 2.9539661333913383),
+                (1.7985559989901487, 0.8102118728352874),
+            ],
+        );
+        assert!(poles(&displacements(&poses).unwrap())[0].is_none());
+        // the library: three points, one in each interval, and one slider
+        // in the direction (0, 1)
+        vertical_sliders(&c, &poses, 1);
+        // pose 5 moved off the line by (2^-20, 2^-21): the slider becomes
+        // one far finite point (y about 6.6e6; the reference: 4 points, the
+        // new interval (-4194304, -2097152]), the three near ones stay
+        let mut moved = poses;
+        moved[4][0] += 2f64.powi(-20);
+        moved[4][1] += 2f64.powi(-21);
+        let m = certify_order(&moved).unwrap();
+        assert_eq!((m.finite, m.sliders, m.shear), (4, 0, (3, 7)));
+        let iv = want_strs(&[
+            ("-4194304", "-2097152"),
+            ("-2097152", "0"),
+            ("0", "1"),
+            ("1", "2"),
+        ]);
+        assert_eq!(interval_strs(&m), iv);
+    }
+
+    #[test]
+    fn a_pole_at_infinity_with_more_points_at_infinity_cannot_certify() {
+        // poses 1 and 3 with one angle (P13 at infinity), poses 2, 4, 5
+        // rotations about (2, 1): the shared poses 1, 2, 3 leave
+        // `4 - deg Q = 2` (a double slider in the pole's direction or a
+        // pair at the circular points: ambiguous)
+        let poses = [
+            [-2.0, -1.0, 0.0],
+            [2.0, 1.0, 2.1616780010823367],
+            [0.0, 1.0, 0.0],
+            [2.0, 1.0, -2.413634740570505],
+            [2.0, 1.0, 2.4440506464219793],
+        ];
+        assert!(poles(&displacements(&poses).unwrap())[1].is_none());
+        matches_reference(
+            "a pole at infinity and two points at infinity",
+            &poses,
+            Err("a pole at infinity and more than one Burmester point at infinity"),
+            Err(
+                "a Burmester point at a pole (or coincident poles of higher multiplicity); \
+                 a pole at infinity and more than one Burmester point at infinity",
+            ),
+        );
+    }
+
+    #[test]
+    fn poles_at_infinity_fall_through_to_the_last_choice_of_shared_poses() {
+        // poses 1, 2, 3 with one angle (three poles at infinity); with the
+        // shared poses 1, 2, 4 / 1, 2, 5 / 1, 3, 4 / 1, 3, 5 a cubic holds
+        // two poles at infinity in different directions (its cubic part
+        // vanishes: the line at infinity a component); 1, 4, 5 certifies
+        let poses = [
+            [-1.0, -1.0, 0.0],
+            [-2.0, 0.0, 0.0],
+            [-1.0, 0.0, 0.0],
+            [2.0, 2.0, -2.4440506464219793],
+            [0.0, -2.0, -2.1616780010823367],
+        ];
+        let c = falls_through(
+            "poles at infinity",
+            &poses,
+            "poles at infinity (poses 1, 2, 3 all with one rotation)",
+            (0, 0, (3, 7), [0, 3, 4, 1, 2], &[]),
+            &[],
+        );
+        // the four other earlier choices, each as the reference says
+        for (order, why) in [
+            (
+                [0, 1, 3, 2, 4],
+                "a cubic of degree < 3 (the line at infinity a component)",
+            ),
+            (
+                [0, 1, 4, 2, 3],
+                "a cubic of degree < 3 (the line at infinity a component)",
+            ),
+            (
+                [0, 2, 3, 1, 4],
+                "a cubic of degree < 3 (the line at infinity a component)",
+            ),
+            (
+                [0, 2, 4, 1, 3],
+                "a cubic of degree < 3 (the line at infinity a component)",
+            ),
+        ] {
+            assert_eq!(certify_order(&order.map(|k| poses[k])).unwrap_err().0, why);
+        }
+        // `4 - deg Q = 2`, not parallel: the pair at the circular points
+        assert_eq!(c.q.len() - 1, 2);
+        // the library: no point, no slider
+        assert_eq!(library(&poses).unwrap(), (vec![], vec![]));
+    }
+
+    #[test]
+    fn a_double_slider() {
+        // poses 2 and 4 with one angle, 3 and 5 with the opposite one, each
+        // pair a translation by (1, 0): the moving point (-5/8, -5/4) (with
+        // the rotation (3/5, 4/5)) has its five positions on y = -5/4, a
+        // slider whose center is at infinity in the direction (0, 1), where
+        // both poles P24 and P35 lie too; `4 - deg Q = 2` with `L1 || L2`:
+        // a double slider (the same count with the shared poses 1, 2, 5 /
+        // 1, 3, 4 / 1, 4, 5; with 1, 2, 4 and 1, 3, 5 the pole at infinity
+        // P24 or P35 leaves it ambiguous)
+        let poses = [
+            [1.0, 0.0, 0.0],
+            [2.0, -1.0, -TAU_HALF],
+            [0.0, 0.0, TAU_HALF],
+            [1.0, -1.0, -TAU_HALF],
+            [-1.0, 0.0, TAU_HALF],
+        ];
+        let c = certified_as_given("a double slider", &poses, (0, 2, (3, 7)), &[]);
+        for order in [[0, 1, 4, 2, 3], [0, 2, 3, 1, 4], [0, 3, 4, 1, 2]] {
+            let o = certify_order(&order.map(|k| poses[k])).unwrap();
+            assert_eq!((o.finite, o.sliders), (0, 2), "{order:?}");
+        }
+        vertical_sliders(&c, &poses, 2);
+        // the slider's circle point: five positions with one y, exactly
+        let (bx, by) = (
+            Rat::new(BigInt::from(-5), BigInt::from(8)),
+            Rat::new(BigInt::from(-5), BigInt::from(4)),
+        );
+        let ys: Vec<Rat> = poses
+            .iter()
+            .map(|p| {
+                let (c, s) = unit_rotation(p[2]).unwrap();
+                Rat::of_f64(p[1]).unwrap().add(&s.mul(&bx)).add(&c.mul(&by))
+            })
+            .collect();
+        assert!(ys.iter().all(|y| *y == by), "{ys:?}");
+        // pose 5 moved by (-2^-20, -2^-21): the double slider becomes two
+        // far real points (y about +-886, as the reference finds), both
+        // outside |X| <= 100; moved the other way, a complex pair
+        for (sign, finite) in [(-1.0, 2), (1.0, 0)] {
+            let mut moved = poses;
+            moved[4][0] += sign * 2f64.powi(-20);
+            moved[4][1] += sign * 2f64.powi(-21);
+            let m = certify_order(&moved).unwrap();
+            assert_eq!((m.finite, m.sliders, m.q.len() - 1), (finite, 0, 4));
+            let seq = sturm(&m.q);
+            let at = |v: i64| {
+                changes_at(
+                    &seq,
+                    &Dyadic {
+                        m: BigInt::from(v),
+                        k: 0,
+                    },
+                )
+            };
+            assert_eq!(at(-100) - at(100), 0);
+        }
+    }
+
+    #[test]
+    fn a_double_slider_with_two_finite_points() {
+        // all positions on the x axis (the moving origin a slider), poses 1
+        // and 4 with one angle, 3 and 5 with one angle: the poles P14, P35
+        // at infinity in the slider's direction (0, 1), as in
+        // `a_double_slider`; two real finite points besides
+        let poses = [
+            [2.0, 0.0, 0.0],
+            [-3.0, 0.0, 2.679411319197999],
+            [1.0, 0.0, -2.498091544796509],
+            [1.0, 0.0, 0.0],
+            [2.0, 0.0, -2.498091544796509],
+        ];
+        let iv: &[(&str, &str)] = &[("-8", "0"), ("0", "8")];
+        let c = certified_as_given("a double slider and two points", &poses, (2, 2, (3, 7)), iv);
+        points_match(
+            &c,
+            &poses,
+            &[
+                (-2.153279627147614, -1.8166912377080495e-41),
+                (0.6532796271476137, -1.9806415413326574e-42),
+            ],
+        );
+        vertical_sliders(&c, &poses, 2);
+    }
+
+    #[test]
+    fn three_or_four_points_at_infinity_cannot_certify() {
+        // poses 3, 4, 5 with one angle (their positions on one line: every
+        // dyad through them a slider)
+        let poses = [
+            [1.0, 0.0, 0.0],
+            [2.0, 0.0, -2.413634740570505],
+            [0.0, -2.0, 0.7175413405411444],
+            [2.0, 2.0, 0.7175413405411444],
+            [1.0, 0.0, 0.7175413405411444],
+        ];
+        matches_reference(
+            "3 or 4 points at infinity",
+            &poses,
+            Err(
+                "3 or 4 Burmester points at infinity (at the real direction or the circular points)",
+            ),
+            Err(
+                "3 or 4 Burmester points at infinity (at the real direction or the circular points); \
+                 a cubic of degree < 3 (the line at infinity a component)",
+            ),
+        );
+    }
+
+    #[test]
+    fn a_burmester_point_at_a_pole_falls_through_to_another_choice() {
+        // the pole P13 = (1/2, -1/2) is a Burmester center: `Q(X_p) = 0`
+        // with the shared poses 1, 2, 3; with 1, 2, 4 it is no pole and an
+        // isolated root
+        let poses = [
+            [1.0, -2.0, 0.0],
+            [2.0, -1.0, 0.7175413405411444],
+            [1.0, 1.0, 2.498091544796509],
+            [2.0, -1.0, 2.498091544796509],
+            [1.0, 1.0, 1.2870022175865687],
+        ];
+        let c = falls_through(
+            "a Burmester point at a pole",
+            &poses,
+            "a Burmester point at a pole (or coincident poles of higher multiplicity)",
+            (2, 0, (3, 7), [0, 1, 3, 2, 4], &[("-32", "0"), ("0", "32")]),
+            &[(-4.413244109980611, -4.808190581405396), (0.5, -0.5)],
+        );
+        let p13 = poles(&displacements(&poses).unwrap())[1].clone().unwrap();
+        assert_eq!(
+            p13,
+            (
+                Rat::new(BigInt::from(1), BigInt::from(2)),
+                Rat::new(BigInt::from(-1), BigInt::from(2))
+            )
+        );
+        center_in_interval(&c, &poses, &p13, 1);
+        // (the check tells: the pole P12 = (1/6, -1/6) is no center)
+        let p12 = poles(&displacements(&poses).unwrap())[0].clone().unwrap();
+        assert_eq!(p12.0, Rat::new(BigInt::from(1), BigInt::from(6)));
+        assert!(!exact_center(&poses, &p12));
+        let (centers, sliders) = library(&poses).unwrap();
+        one_center_per_interval(&c, &centers);
+        assert!(sliders.is_empty());
+    }
+
+    #[test]
+    fn coincident_poles_give_a_common_component() {
+        // poses 2 and 3 rotations of pose 1 about (85, 0) (rotations
+        // (3/5, 4/5) and (15/17, 8/17)): P12 = P13 = P23. Coincident poles
+        // are always all three (two displacements from pose 1 that fix a
+        // point fix it in the third), and then both cubics are
+        // `((x - 85)^2 + y^2)` times a line: the resultant vanishes, so the
+        // reason "coincident poles of higher multiplicity" of `Q(X_p) = 0`
+        // is not reached by coincident poles (only by a Burmester point at
+        // a pole). The shared poses 1, 4, 5 certify: (85, 0) itself is a
+        // Burmester center (any circle point fits poses 1, 2, 3).
+        let poses = [
+            [0.0, 0.0, 0.0],
+            [34.0, -68.0, TAU_HALF],
+            [10.0, -40.0, 0.4899573262537283],
+            [3.0, 7.0, 1.2870022175865687],
+            [-5.0, 2.0, -0.24870998909352288],
+        ];
+        let c = falls_through(
+            "coincident poles",
+            &poses,
+            "a common component (the resultant vanishes)",
+            (2, 0, (3, 7), [0, 3, 4, 1, 2], &[("0", "64"), ("64", "128")]),
+            &[(14.757789558483408, 17.27430420207375), (85.0, 0.0)],
+        );
+        let p = (Rat::small(85), Rat::zero());
+        for q in poles(&displacements(&poses).unwrap()) {
+            assert_eq!(q, Some(p.clone()));
+        }
+        let circle = p2_add(
+            &p2_mul(
+                &p2_lin(BigInt::from(-85), BigInt::one(), BigInt::zero()),
+                &p2_lin(BigInt::from(-85), BigInt::one(), BigInt::zero()),
+            ),
+            &p2_mul(
+                &p2_lin(BigInt::zero(), BigInt::zero(), BigInt::one()),
+                &p2_lin(BigInt::zero(), BigInt::zero(), BigInt::one()),
+            ),
+            1,
+        );
+        for f in int_cubics(&int_task(&poses).unwrap()) {
+            // f = circle * (a x + b y + e): a, b from the cubic part, e
+            // from the x^2 coefficient (circle's x^2 - 170 x ...)
+            let (a, b) = (f.c[3][0].clone(), f.c[0][3].clone());
+            let e = &f.c[2][0] + &a * 170;
+            assert_eq!(p2_mul(&circle, &p2_lin(e, a, b)), f);
+        }
+        center_in_interval(&c, &poses, &p, 1);
+        // (the library refuses this task: "rotations about one point")
+    }
+
+    /// `Q` of the shared poses 1, 2, 3 at the shear `a / q` (the steps of
+    /// `certify_order`, for the tests of its shear loop).
+    fn q_at_shear(poses: &[[f64; 3]; 5], a: i64, q: i64) -> IPoly {
+        let [f1, f2] = int_cubics(&int_task(poses).unwrap());
+        let r = resultant_y(&shear(&f1, a, q), &shear(&f2, a, q)).unwrap();
+        let u = Rat::new(BigInt::from(a), BigInt::from(q));
+        let mut qp = r;
+        for p in poles(&displacements(poses).unwrap()).iter().flatten() {
+            qp = divide_linear(&qp, &p.0.sub(&u.mul(&p.1))).unwrap();
+        }
+        qp
+    }
+
+    #[test]
+    fn a_mirror_symmetric_task_takes_the_second_shear() {
+        // mirror symmetric about the line through the origin along (7, -3)
+        // (the reflection S = [[20, -21], [-21, -20]] / 29; pose 1 on the
+        // axis, poses 2 <-> 3 and 4 <-> 5 mirror images with opposite
+        // angles): S maps Burmester points to Burmester points and
+        // `p - S p` is normal to the axis, along (3, 7), so a point and its
+        // image have one `X = x - (3/7) y`. Here the two real points lie on
+        // the axis and the complex pair are each other's images: `Q` has a
+        // double root at the first shear 3/7, and the second, -5/11, is
+        // squarefree.
+        let t = 2.4440506464219793; // tau 11/4
+        let poses = [
+            [7.0, -3.0, 0.0],
+            [-58.0, 0.0, t],
+            [-40.0, 42.0, -t],
+            [-58.0, 29.0, t],
+            [-61.0, 22.0, -t],
+        ];
+        // the exact task is symmetric: positions S p, rotations conjugate
+        let mirror = |p: &[f64; 3]| {
+            [
+                (20.0 * p[0] - 21.0 * p[1]) / 29.0,
+                (-21.0 * p[0] - 20.0 * p[1]) / 29.0,
+            ]
+        };
+        assert_eq!(mirror(&poses[0]), [poses[0][0], poses[0][1]]);
+        for (i, j) in [(1, 2), (3, 4)] {
+            assert_eq!(mirror(&poses[i]), [poses[j][0], poses[j][1]]);
+            let (c, s) = unit_rotation(poses[i][2]).unwrap();
+            assert_eq!(unit_rotation(poses[j][2]).unwrap(), (c, s.neg()));
+        }
+        let iv: &[(&str, &str)] = &[("-8388608", "0"), ("0", "8388608")];
+        let c = certified_as_given("mirror symmetric", &poses, (2, 0, (-5, 11)), iv);
+        points_match(
+            &c,
+            &poses,
+            &[
+                (-26.63844849910239, 11.416477928186739),
+                (54.95663031728421, -23.552841564550377),
+            ],
+        );
+        // at 3/7: one double root (the complex pair's common X); at -5/11
+        // the certificate's Q
+        let q37 = q_at_shear(&poses, 3, 7);
+        let seq = sturm(&q37);
+        assert_eq!((q37.len() - 1, seq.last().unwrap().len() - 1), (4, 1));
+        assert_eq!(
+            content_free(q_at_shear(&poses, -5, 11)),
+            content_free(c.q.clone())
+        );
+        // the library: the two points on the axis (3 x + 7 y = 0), one in
+        // each interval
+        let (centers, sliders) = library(&poses).unwrap();
+        one_center_per_interval(&c, &centers);
+        for p in &centers {
+            assert!(
+                (3.0 * p[0] + 7.0 * p[1]).abs() < 1e-9 * (p[0].abs() + 1.0),
+                "{p:?}"
+            );
+        }
+        assert!(sliders.is_empty());
+    }
+
+    #[test]
+    fn a_multiple_common_point_cannot_certify_and_all_six_choices_fail() {
+        // poses 1 and 3 with one angle, 4 and 5 with one angle, poses 2 and
+        // 3 at one position: (-1, 1/2) is a double Burmester center (the
+        // library lists it twice); with the shared poses 1, 2, 3 `Q` has
+        // its double root at every shear, and every other choice fails too
+        let poses = [
+            [0.0, 1.0, 0.0],
+            [-2.0, 0.0, -0.7175413405411444],
+            [-2.0, 0.0, 0.0],
+            [0.0, 0.0, 2.5445947904174346],
+            [-2.0, 1.0, 2.5445947904174346],
+        ];
+        matches_reference(
+            "a multiple common point",
+            &poses,
+            Err("a multiple common point (Q not squarefree for any shear)"),
+            Err(
+                "a Burmester point at a pole (or coincident poles of higher multiplicity); \
+                 a cubic of degree < 3 (the line at infinity a component); \
+                 a multiple common point (Q not squarefree for any shear)",
+            ),
+        );
+        let g = (Rat::small(-1), Rat::new(BigInt::one(), BigInt::from(2)));
+        assert!(exact_center(&poses, &g));
+        for (a, q) in SHEARS {
+            // gcd(Q, Q') (the Sturm sequence's last member) is linear, its
+            // root the center's X
+            let seq = sturm(&q_at_shear(&poses, a, q));
+            let gcd = seq.last().unwrap();
+            let x =
+                g.0.sub(&Rat::new(BigInt::from(a), BigInt::from(q)).mul(&g.1));
+            assert_eq!(gcd.len(), 2, "{a}/{q}");
+            assert_eq!(sign_at_rat(gcd, &x), Sign::NoSign, "{a}/{q}");
+        }
+    }
+
+    #[test]
+    fn a_repeated_pose_gives_a_common_component_and_all_six_choices_fail() {
+        // poses 4 and 5 equal: f1 = f2 (R = 0) with the shared poses
+        // 1, 2, 3; every other choice shares pose 4 or 5 with a third
+        // row equal to another (a zero cubic)
+        let poses = [
+            [-2.0, -1.0, 0.0],
+            [2.0, 1.0, 2.1616780010823367],
+            [-2.0, -2.0, 2.1616780010823367],
+            [-1.0, 0.0, -2.413634740570505],
+            [-1.0, 0.0, -2.413634740570505],
+        ];
+        let [f1, f2] = int_cubics(&int_task(&poses).unwrap());
+        assert_eq!(f1, f2);
+        matches_reference(
+            "a repeated pose",
+            &poses,
+            Err("a common component (the resultant vanishes)"),
+            Err("a common component (the resultant vanishes); \
+                 a cubic of degree < 3 (the line at infinity a component)"),
+        );
+    }
+
+    #[test]
+    fn equal_poses_1_and_2_give_zero_cubics() {
+        // poses 1 and 2 equal: row 2 is zero, both cubics vanish
+        // identically (the reference raised on an empty `max` here before
+        // its fix)
+        let poses = [
+            [1.0, 2.0, 0.0],
+            [1.0, 2.0, 0.0],
+            [1.0, -1.0, 2.4440506464219793],
+            [1.0, -1.0, 0.7175413405411444],
+            [2.0, 0.0, 0.0],
+        ];
+        for f in int_cubics(&int_task(&poses).unwrap()) {
+            assert_eq!(f, p2_zero());
+        }
+        matches_reference(
+            "equal poses 1 and 2",
+            &poses,
+            Err("a cubic of degree < 3 (the line at infinity a component)"),
+            Err("a cubic of degree < 3 (the line at infinity a component); \
+                 poles at infinity (poses 1, 2, 3 all with one rotation)"),
+        );
+    }
 }
