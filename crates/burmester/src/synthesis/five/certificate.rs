@@ -39,7 +39,7 @@
 
 use std::cmp::Ordering;
 
-use num_bigint::{BigInt, Sign};
+use num_bigint::{BigInt, BigUint, Sign};
 use num_traits::{One, Signed, Zero};
 
 use crate::geom::Pose;
@@ -190,15 +190,52 @@ fn to_u64(m: &BigInt) -> u64 {
     m.iter_u64_digits().next().unwrap_or(0)
 }
 
-/// The non-negative gcd (Euclid; `gcd(0, 0) = 0`).
+/// The non-negative gcd (`gcd(0, 0) = 0`): Lehmer's algorithm (Knuth,
+/// TAOCP 2, 4.5.2, Algorithm L) on the leading 63 bits, each round's
+/// cofactors applied to the full numbers (or one division step where the
+/// leading bits decide no quotient), Euclid in `u64` once both fit a word.
 fn num_integer_gcd(a: &BigInt, b: &BigInt) -> BigInt {
-    let (mut a, mut b) = (a.abs(), b.abs());
-    while !b.is_zero() {
-        let r = &a % &b;
-        a = b;
-        b = r;
+    let (mut a, mut b) = (a.magnitude().clone(), b.magnitude().clone());
+    if a < b {
+        std::mem::swap(&mut a, &mut b);
     }
-    a
+    while b.bits() > 64 {
+        // a >= b > 2^64: the leading 63 bits of a, b at a's position
+        let shift = a.bits() - 63;
+        let top = |v: &BigUint| (v >> shift).iter_u64_digits().next().unwrap_or(0) as i128;
+        let (mut x, mut y) = (top(&a), top(&b));
+        let (mut ca, mut cb, mut cc, mut cd) = (1i128, 0i128, 0i128, 1i128);
+        while y + cc != 0 && y + cd != 0 {
+            let q = (x + ca) / (y + cc);
+            if q != (x + cb) / (y + cd) {
+                break;
+            }
+            (ca, cc) = (cc, ca - q * cc);
+            (cb, cd) = (cd, cb - q * cd);
+            (x, y) = (y, x - q * y);
+        }
+        // |ca|, |cb|, |cc|, |cd| < 2^63; the combinations are the
+        // remainders of the Euclidean steps taken (non-negative, checked)
+        let (sa, sb) = (BigInt::from(a.clone()), BigInt::from(b.clone()));
+        let (na, nb) = (&sa * ca + &sb * cb, &sa * cc + &sb * cd);
+        if cb == 0 || na.is_negative() || nb.is_negative() || na < nb {
+            let r = &a % &b;
+            a = b;
+            b = r;
+        } else {
+            a = na.into_parts().1;
+            b = nb.into_parts().1;
+        }
+    }
+    if b.is_zero() {
+        return BigInt::from(a);
+    }
+    let mut y = b.iter_u64_digits().next().unwrap_or(0);
+    let mut x = (&a % y).iter_u64_digits().next().unwrap_or(0);
+    while x != 0 {
+        (x, y) = (y % x, x);
+    }
+    BigInt::from(y)
 }
 
 fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
@@ -1802,6 +1839,65 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
 
     fn max_bits(vs: impl IntoIterator<Item = BigInt>) -> u64 {
         vs.into_iter().map(|v| v.bits()).max().unwrap_or(0)
+    }
+
+    // ------------------------------------ the fast paths and references
+
+    /// A xorshift stream for the random agreements below.
+    struct Stream(u64);
+
+    impl Stream {
+        fn next(&mut self) -> u64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            self.0
+        }
+        /// A random integer of up to `bits` bits, either sign, often with
+        /// long runs of zero or one bits.
+        fn int(&mut self, bits: u64) -> BigInt {
+            let n = self.next() % (bits + 1);
+            let mut v = BigInt::zero();
+            while v.bits() < n {
+                let w = match self.next() % 4 {
+                    0 => 0,
+                    1 => u64::MAX,
+                    _ => self.next(),
+                };
+                v = (v << 64) + w;
+            }
+            v >>= v.bits().saturating_sub(n);
+            if self.next() % 2 == 0 { -v } else { v }
+        }
+    }
+
+    #[test]
+    fn lehmer_gcd_matches_euclid() {
+        fn euclid(a: &BigInt, b: &BigInt) -> BigInt {
+            let (mut a, mut b) = (a.abs(), b.abs());
+            while !b.is_zero() {
+                let r = &a % &b;
+                a = b;
+                b = r;
+            }
+            a
+        }
+        let mut r = Stream(0x5851_f42d_4c95_7f2d);
+        for bits in [1, 40, 64, 65, 128, 300, 1000, 4000] {
+            for _ in 0..60 {
+                let g = r.int(bits / 2 + 1);
+                let (a, b) = (r.int(bits), r.int(bits));
+                // a common factor often, equal and zero operands sometimes
+                let (a, b) = match r.next() % 5 {
+                    0 => (&a * &g, &b * &g),
+                    1 => (a.clone(), a.clone()),
+                    2 => (a, BigInt::zero()),
+                    _ => (a, b),
+                };
+                assert_eq!(num_integer_gcd(&a, &b), euclid(&a, &b), "{a} {b}");
+                assert_eq!(num_integer_gcd(&b, &a), euclid(&a, &b), "{a} {b}");
+            }
+        }
     }
 
     // ---------------------------------------------------- step 1
