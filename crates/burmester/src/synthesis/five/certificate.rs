@@ -560,6 +560,7 @@ fn shear(p: &Poly2<BigInt>, a: i64, q: i64) -> Vec<Vec<BigInt>> {
         .collect()
 }
 
+#[cfg(test)]
 fn ieval(a: &[BigInt], x: i64) -> BigInt {
     let x = BigInt::from(x);
     let mut r = BigInt::zero();
@@ -571,6 +572,7 @@ fn ieval(a: &[BigInt], x: i64) -> BigInt {
 
 /// The determinant of an integer matrix by Bareiss's fraction-free
 /// elimination (exact divisions).
+#[cfg(test)]
 fn det_bareiss(mut m: Vec<Vec<BigInt>>) -> BigInt {
     let n = m.len();
     let mut negate = false;
@@ -597,10 +599,90 @@ fn det_bareiss(mut m: Vec<Vec<BigInt>>) -> BigInt {
     if negate { -d } else { d }
 }
 
+/// The product of two integer polynomials (lowest degree first; trimmed
+/// when the factors are).
+fn imul(a: &[BigInt], b: &[BigInt]) -> IPoly {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut r = vec![BigInt::zero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        if x.is_zero() {
+            continue;
+        }
+        for (j, y) in b.iter().enumerate() {
+            if !y.is_zero() {
+                r[i + j] += x * y;
+            }
+        }
+    }
+    r
+}
+
+/// `a + b` (`sign` 1) or `a - b` (`sign` -1), trimmed.
+fn iadd(a: &[BigInt], b: &[BigInt], sign: i64) -> IPoly {
+    let mut r = a.to_vec();
+    if r.len() < b.len() {
+        r.resize(b.len(), BigInt::zero());
+    }
+    for (v, w) in r.iter_mut().zip(b) {
+        if sign < 0 {
+            *v -= w;
+        } else {
+            *v += w;
+        }
+    }
+    itrim(r)
+}
+
+/// `res_Y` of two cubics in `Y` given as coefficient lists in `Y` (each a
+/// list of integers in `X`; both of `Y`-degree exactly 3, as every
+/// admissible shear gives): `-det B` of their 3x3 Bezout matrix, its
+/// entries integer polynomials in `X`, expanded exactly (no evaluation,
+/// no division). `B(y, z) = (f(y) g(z) - f(z) g(y)) / (y - z) =
+/// sum b_ij y^i z^j`, so `b_ij` sums `w_kl = f_k g_l - f_l g_k` over the
+/// `k > l` with `k + l = i + j + 1`, `l <= i, j < k`; for two cubics
+/// `res = (-1)^(3 (3 - 1) / 2) det B = -det B` (the Sylvester determinant
+/// of [`resultant_y_sylvester`], checked by the tests). Integer
+/// coefficients, lowest degree first, trimmed.
+fn resultant_y(c1: &[Vec<BigInt>], c2: &[Vec<BigInt>]) -> Result<Vec<BigInt>, CannotCertify> {
+    if c1.len() != 4 || c2.len() != 4 {
+        return cannot("internal: a sheared cubic of Y-degree other than 3");
+    }
+    let mut b: [[IPoly; 3]; 3] = Default::default();
+    for k in 1..4 {
+        for l in 0..k {
+            let w = iadd(&imul(&c1[k], &c2[l]), &imul(&c1[l], &c2[k]), -1);
+            for i in l..k {
+                let j = k - 1 - i + l;
+                if i <= j {
+                    b[i][j] = iadd(&b[i][j], &w, 1);
+                }
+            }
+        }
+    }
+    // symmetric: b_ji = b_ij; cofactors along the first row
+    let m = |p: &IPoly, q: &IPoly, r: &IPoly, s: &IPoly| iadd(&imul(p, q), &imul(r, s), -1);
+    let c0 = m(&b[1][1], &b[2][2], &b[1][2], &b[1][2]);
+    let c1 = m(&b[0][1], &b[2][2], &b[1][2], &b[0][2]);
+    let c2 = m(&b[0][1], &b[1][2], &b[1][1], &b[0][2]);
+    let det = iadd(
+        &iadd(&imul(&b[0][0], &c0), &imul(&b[0][1], &c1), -1),
+        &imul(&b[0][2], &c2),
+        1,
+    );
+    Ok(det.into_iter().map(|v| -v).collect())
+}
+
 /// `res_Y` of two polynomials given as coefficient lists in `Y` (each a
 /// list in `X`): evaluation at `X = 0..9`, Sylvester determinants, Newton
-/// interpolation. Integer coefficients, lowest degree first, trimmed.
-fn resultant_y(c1: &[Vec<BigInt>], c2: &[Vec<BigInt>]) -> Result<Vec<BigInt>, CannotCertify> {
+/// interpolation. Integer coefficients, lowest degree first, trimmed. The
+/// reference of [`resultant_y`] (the present one up to fast45).
+#[cfg(test)]
+fn resultant_y_sylvester(
+    c1: &[Vec<BigInt>],
+    c2: &[Vec<BigInt>],
+) -> Result<Vec<BigInt>, CannotCertify> {
     let (n1, n2) = (c1.len() - 1, c2.len() - 1);
     let size = n1 + n2;
     let xs: Vec<i64> = (0..10).collect();
@@ -1896,6 +1978,54 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
                 };
                 assert_eq!(num_integer_gcd(&a, &b), euclid(&a, &b), "{a} {b}");
                 assert_eq!(num_integer_gcd(&b, &a), euclid(&a, &b), "{a} {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn bezout_resultant_matches_sylvester() {
+        // random cubics of total degree 3 in (X, Y) (the reference
+        // interpolates a resultant of degree at most 9), with a constant
+        // nonzero Y^3 coefficient as the shears give; zero coefficients,
+        // small and big ones; then the module's tasks under every shear
+        let mut r = Stream(0x2545_f491_4f6c_dd1d);
+        for trial in 0..200 {
+            let bits = [3, 60, 500, 3000][trial % 4];
+            let cubic = |r: &mut Stream| -> Vec<Vec<BigInt>> {
+                (0..4)
+                    .map(|k| {
+                        let mut c: IPoly = (0..=3 - k).map(|_| r.int(bits)).collect();
+                        if r.next() % 4 == 0 {
+                            c[0] = BigInt::zero();
+                        }
+                        if k == 3 && c[0].is_zero() {
+                            c[0] = BigInt::one();
+                        }
+                        itrim(c)
+                    })
+                    .collect()
+            };
+            let (c1, c2) = (cubic(&mut r), cubic(&mut r));
+            assert_eq!(
+                resultant_y(&c1, &c2).unwrap(),
+                resultant_y_sylvester(&c1, &c2).unwrap(),
+                "trial {trial}"
+            );
+        }
+        for case in &cases() {
+            let [f1, f2] = int_cubics(&int_task(&case.poses).unwrap());
+            for (a, q) in SHEARS {
+                let (c1, c2) = (shear(&f1, a, q), shear(&f2, a, q));
+                if c1.len() == 4 && c2.len() == 4 {
+                    assert_eq!(
+                        resultant_y(&c1, &c2).unwrap(),
+                        resultant_y_sylvester(&c1, &c2).unwrap(),
+                        "{} ({a}, {q})",
+                        case.label
+                    );
+                } else {
+                    assert!(resultant_y(&c1, &c2).is_err());
+                }
             }
         }
     }
