@@ -763,18 +763,19 @@ fn content_free(a: IPoly) -> IPoly {
 }
 
 /// A positive multiple of the remainder of `a / b` (`b` nonzero):
-/// pseudo-division with `|lc(b)|`, so signs are kept.
+/// pseudo-division with `|lc(b)|`, so signs are kept. Each step drops
+/// the leading term it cancels instead of computing it.
 fn prem(a: &[BigInt], b: &[BigInt]) -> IPoly {
     let lc = &b[b.len() - 1];
     let (lc_abs, negative) = (lc.abs(), lc.is_negative());
     let mut r = itrim(a.to_vec());
     while r.len() >= b.len() {
         let k = r.len() - b.len();
-        let c = r[r.len() - 1].clone();
+        let c = r.pop().unwrap_or_default();
         for v in r.iter_mut() {
             *v *= &lc_abs;
         }
-        for (i, v) in b.iter().enumerate() {
+        for (i, v) in b[..b.len() - 1].iter().enumerate() {
             let t = &c * v;
             if negative {
                 r[i + k] += t;
@@ -792,20 +793,26 @@ fn ideriv(a: &[BigInt]) -> IPoly {
 }
 
 /// The Sturm sequence of `a`, each member scaled by a positive factor;
-/// its last member is `gcd(a, a')` up to a factor. The factors are kept
-/// small without gcds: each pseudo-remainder is divided by the magnitude
-/// of the subresultant sequence's `beta_i` (Collins: `|beta_1| = 1`,
-/// `|psi_1| = 1`, `|psi_i| = |lc r_(i-1)|^d_(i-1) / |psi_(i-1)|^(d_(i-1) - 1)`,
+/// its last member is `gcd(a, a')` up to a factor. `a` is made primitive
+/// first (a positive factor: the members shrink by its content's
+/// multiples). The factors are kept small without gcds: each
+/// pseudo-remainder is divided by the magnitude of the subresultant
+/// sequence's `beta_i` (Collins: `|beta_1| = 1`, `|psi_1| = 1`,
+/// `|psi_i| = |lc r_(i-1)|^d_(i-1) / |psi_(i-1)|^(d_(i-1) - 1)`,
 /// `|beta_i| = |lc r_(i-1)| |psi_i|^d_i`, `d_i = deg r_(i-1) - deg r_i`),
-/// an exact divisor; its signs do not matter here (a positive divisor
-/// keeps the Sturm signs). Where a division were not exact (not expected)
-/// the member's content is divided out instead.
+/// an exact divisor (checked: quotient times divisor); its signs do not
+/// matter here (a positive divisor keeps the Sturm signs). Where a
+/// division were not exact (not expected) the member's content is
+/// divided out instead. A constant member (the last) is kept as its sign
+/// (`1` or `-1`), all that is read of it.
 fn sturm(a: &[BigInt]) -> Vec<IPoly> {
     if a.len() < 2 {
         // a constant (every Burmester point at infinity): no roots
         return vec![itrim(a.to_vec())];
     }
-    let mut seq = vec![itrim(a.to_vec()), ideriv(a)];
+    let a = content_free(itrim(a.to_vec()));
+    let da = ideriv(&a);
+    let mut seq = vec![a, da];
     let mut psi = BigInt::one();
     let mut beta = BigInt::one();
     let mut d_prev = 0usize;
@@ -826,13 +833,27 @@ fn sturm(a: &[BigInt]) -> Vec<IPoly> {
         if r.is_empty() {
             break;
         }
-        let exact = r.iter().all(|v| (v % &beta).is_zero());
+        if r.len() == 1 {
+            // -r / |beta|: its sign is -r's
+            seq.push(vec![if r[0].is_negative() {
+                BigInt::one()
+            } else {
+                -BigInt::one()
+            }]);
+            break;
+        }
         let r: IPoly = r.into_iter().map(|v| -v).collect();
-        seq.push(if exact {
-            r.into_iter().map(|v| v / &beta).collect()
+        let divided: Option<IPoly> = if beta.is_one() {
+            Some(r.clone())
         } else {
-            content_free(r)
-        });
+            r.iter()
+                .map(|v| {
+                    let q = v / &beta;
+                    (&q * &beta == *v).then_some(q)
+                })
+                .collect()
+        };
+        seq.push(divided.unwrap_or_else(|| content_free(r)));
         d_prev = d;
     }
     seq
