@@ -294,8 +294,29 @@ struct Disp {
     ty: Rat,
 }
 
-/// The exact displacements of poses 2..5 from pose 1.
+/// The exact displacements of poses 2..5 from pose 1, reduced once from
+/// the integer task (`c = C / D`, `s = S / D`, `t = (TX, TY) / (D 2^e)`).
 fn displacements(poses: &[[f64; 3]; 5]) -> Result<Vec<Disp>, CannotCertify> {
+    let t = int_task(poses)?;
+    Ok(t.rot
+        .iter()
+        .zip(int_translations(&t))
+        .map(|((c, s, d), (tx, ty))| {
+            let de = d << t.e;
+            Disp {
+                c: Rat::new(c.clone(), d.clone()),
+                s: Rat::new(s.clone(), d.clone()),
+                tx: Rat::new(tx, de.clone()),
+                ty: Rat::new(ty, de),
+            }
+        })
+        .collect())
+}
+
+/// The reference of [`displacements`] (the present one up to fast45: in
+/// reduced rationals throughout).
+#[cfg(test)]
+fn displacements_reference(poses: &[[f64; 3]; 5]) -> Result<Vec<Disp>, CannotCertify> {
     let p1x = Rat::of_f64(poses[0][0])?;
     let p1y = Rat::of_f64(poses[0][1])?;
     let mut out = Vec::with_capacity(4);
@@ -440,15 +461,11 @@ fn ip2_primitive(f: Poly2<BigInt>) -> Poly2<BigInt> {
 /// primitive: row `k` scaled by `D_k^2 2^e`, the column `b` by `2^(e+1)`
 /// (positive factors; the Python's rational cubics made primitive).
 fn int_cubics(t: &IntTask) -> [Poly2<BigInt>; 2] {
-    let (p1x, p1y) = &t.pos[0];
     let rows: Vec<[Poly2<BigInt>; 3]> = t
         .rot
         .iter()
-        .zip(&t.pos[1..])
-        .map(|((c, s, d), (px, py))| {
-            // tx = TX / (D 2^e), ty = TY / (D 2^e)
-            let tx = d * px - (c * p1x - s * p1y);
-            let ty = d * py - (s * p1x + c * p1y);
+        .zip(int_translations(t))
+        .map(|((c, s, d), (tx, ty))| {
             let de = d << t.e;
             let mr = &de * (d - c);
             let mi = &de * s;
@@ -464,24 +481,129 @@ fn int_cubics(t: &IntTask) -> [Poly2<BigInt>; 2] {
     ]
 }
 
+/// The translations of poses 2..5 from pose 1 as `(TX, TY)`: `t = (TX,
+/// TY) / (D 2^e)`, `TX = D px - (C p1x - S p1y)`, `TY = D py - (S p1x +
+/// C p1y)`.
+fn int_translations(t: &IntTask) -> Vec<(BigInt, BigInt)> {
+    let (p1x, p1y) = &t.pos[0];
+    t.rot
+        .iter()
+        .zip(&t.pos[1..])
+        .map(|((c, s, d), (px, py))| (d * px - (c * p1x - s * p1y), d * py - (s * p1x + c * p1y)))
+        .collect()
+}
+
 /// `f(x, y) = 0` exactly at a rational point (homogenized over the common
 /// denominator).
 fn ip2_vanishes(f: &Poly2<BigInt>, x: &Rat, y: &Rat) -> bool {
     let d = lcm(&x.d, &y.d);
     let (a, b) = (&x.n * (&d / &x.d), &y.n * (&d / &y.d));
+    let powers = |v: &BigInt| -> [BigInt; 4] {
+        let v2 = v * v;
+        let v3 = &v2 * v;
+        [BigInt::one(), v.clone(), v2, v3]
+    };
+    let (pa, pb, pd) = (powers(&a), powers(&b), powers(&d));
     let mut sum = BigInt::zero();
     for i in 0..4 {
         for j in 0..4 - i {
             if !f.c[i][j].is_zero() {
-                sum += &f.c[i][j] * a.pow(i as u32) * b.pow(j as u32) * d.pow((3 - i - j) as u32);
+                sum += &f.c[i][j] * &pa[i] * &pb[j] * &pd[3 - i - j];
             }
         }
     }
     sum.is_zero()
 }
 
-/// The fixed point of `G -> R G + t` (`None`: a translation).
-fn fixed_point(d: &Disp) -> Option<(Rat, Rat)> {
+/// An unreduced fraction (`d > 0`): the poles' arithmetic, reduced once
+/// at the end (the same values as in [`Rat`], fewer gcds).
+#[derive(Debug, Clone)]
+struct Frac {
+    n: BigInt,
+    d: BigInt,
+}
+
+impl Frac {
+    fn of(r: &Rat) -> Frac {
+        Frac {
+            n: r.n.clone(),
+            d: r.d.clone(),
+        }
+    }
+    fn add(&self, o: &Frac, sign: i64) -> Frac {
+        let (a, b) = if self.d == o.d {
+            (self.n.clone(), o.n.clone())
+        } else {
+            (&self.n * &o.d, &o.n * &self.d)
+        };
+        let d = if self.d == o.d {
+            self.d.clone()
+        } else {
+            &self.d * &o.d
+        };
+        Frac {
+            n: if sign < 0 { a - b } else { a + b },
+            d,
+        }
+    }
+    fn mul(&self, o: &Frac) -> Frac {
+        Frac {
+            n: &self.n * &o.n,
+            d: &self.d * &o.d,
+        }
+    }
+    /// `self / o`, `o` nonzero.
+    fn div(&self, o: &Frac) -> Frac {
+        let (n, d) = (&self.n * &o.d, &self.d * &o.n);
+        if d.is_negative() {
+            Frac { n: -n, d: -d }
+        } else {
+            Frac { n, d }
+        }
+    }
+    fn rat(self) -> Rat {
+        Rat::new(self.n, self.d)
+    }
+}
+
+/// The fixed point of `G -> R G + t` (`None`: a translation), from
+/// `(c, s, tx, ty)`.
+fn fixed_point(d: [Frac; 4]) -> Option<(Rat, Rat)> {
+    let [c, s, tx, ty] = d;
+    let one = Frac {
+        n: BigInt::one(),
+        d: BigInt::one(),
+    };
+    let mr = one.add(&c, -1);
+    let det = mr.mul(&mr).add(&s.mul(&s), 1);
+    if det.n.is_zero() {
+        return None;
+    }
+    let x = mr.mul(&tx).add(&s.mul(&ty), -1).div(&det);
+    let y = s.mul(&tx).add(&mr.mul(&ty), 1).div(&det);
+    Some((x.rat(), y.rat()))
+}
+
+/// The poles P12, P13, P23 (unreduced arithmetic, each coordinate reduced
+/// once; the reference is [`poles_reference`]).
+fn poles(disp: &[Disp]) -> [Option<(Rat, Rat)>; 3] {
+    let f = |d: &Disp| [&d.c, &d.s, &d.tx, &d.ty].map(Frac::of);
+    let ([c2, s2, tx2, ty2], d3) = (f(&disp[0]), f(&disp[1]));
+    let c = d3[0].mul(&c2).add(&d3[1].mul(&s2), 1);
+    let s = d3[1].mul(&c2).add(&d3[0].mul(&s2), -1);
+    let tx = d3[2].add(&c.mul(&tx2).add(&s.mul(&ty2), -1), -1);
+    let ty = d3[3].add(&s.mul(&tx2).add(&c.mul(&ty2), 1), -1);
+    [
+        fixed_point(f(&disp[0])),
+        fixed_point(d3),
+        fixed_point([c, s, tx, ty]),
+    ]
+}
+
+/// The fixed point of `G -> R G + t` in reduced rationals (the reference
+/// of [`fixed_point`]).
+#[cfg(test)]
+fn fixed_point_reference(d: &Disp) -> Option<(Rat, Rat)> {
     let one = Rat::small(1);
     let mr = one.sub(&d.c);
     let det = mr.mul(&mr).add(&d.s.mul(&d.s));
@@ -493,17 +615,19 @@ fn fixed_point(d: &Disp) -> Option<(Rat, Rat)> {
     Some((x, y))
 }
 
-/// The poles P12, P13, P23.
-fn poles(disp: &[Disp]) -> [Option<(Rat, Rat)>; 3] {
+/// The poles P12, P13, P23 in reduced rationals (the present [`poles`]
+/// up to fast45).
+#[cfg(test)]
+fn poles_reference(disp: &[Disp]) -> [Option<(Rat, Rat)>; 3] {
     let (d2, d3) = (&disp[0], &disp[1]);
     let c = d3.c.mul(&d2.c).add(&d3.s.mul(&d2.s));
     let s = d3.s.mul(&d2.c).sub(&d3.c.mul(&d2.s));
     let tx = d3.tx.sub(&c.mul(&d2.tx).sub(&s.mul(&d2.ty)));
     let ty = d3.ty.sub(&s.mul(&d2.tx).add(&c.mul(&d2.ty)));
     [
-        fixed_point(d2),
-        fixed_point(d3),
-        fixed_point(&Disp { c, s, tx, ty }),
+        fixed_point_reference(d2),
+        fixed_point_reference(d3),
+        fixed_point_reference(&Disp { c, s, tx, ty }),
     ]
 }
 
@@ -1147,6 +1271,137 @@ fn isolate(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
         let left = v_lo - v_mid;
         stack.push((lo, mid.clone(), left, v_lo));
         stack.push((mid, hi, k - left, v_mid));
+    }
+    let mut out: Vec<(Rat, Rat)> = out.iter().map(|(a, b)| (a.rat(), b.rat())).collect();
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out
+}
+/// A positive multiple of the remainder of `a / b` (`b` nonzero):
+/// pseudo-division with `|lc(b)|`, so signs are kept. The reference of
+/// [`prem`] (the present one up to fast45).
+#[cfg(test)]
+fn prem_reference(a: &[BigInt], b: &[BigInt]) -> IPoly {
+    let lc = &b[b.len() - 1];
+    let (lc_abs, negative) = (lc.abs(), lc.is_negative());
+    let mut r = itrim(a.to_vec());
+    while r.len() >= b.len() {
+        let k = r.len() - b.len();
+        let c = r[r.len() - 1].clone();
+        for v in r.iter_mut() {
+            *v *= &lc_abs;
+        }
+        for (i, v) in b.iter().enumerate() {
+            let t = &c * v;
+            if negative {
+                r[i + k] += t;
+            } else {
+                r[i + k] -= t;
+            }
+        }
+        r = itrim(r);
+    }
+    r
+}
+
+/// The Sturm sequence of `a`, each member scaled by a positive factor;
+/// its last member is `gcd(a, a')` up to a factor. The factors are kept
+/// small without gcds: each pseudo-remainder is divided by the magnitude
+/// of the subresultant sequence's `beta_i` (Collins: `|beta_1| = 1`,
+/// `|psi_1| = 1`, `|psi_i| = |lc r_(i-1)|^d_(i-1) / |psi_(i-1)|^(d_(i-1) - 1)`,
+/// `|beta_i| = |lc r_(i-1)| |psi_i|^d_i`, `d_i = deg r_(i-1) - deg r_i`),
+/// an exact divisor; its signs do not matter here (a positive divisor
+/// keeps the Sturm signs). Where a division were not exact (not expected)
+/// the member's content is divided out instead. The reference of
+/// [`sturm`] (the present one up to fast45).
+#[cfg(test)]
+fn sturm_reference(a: &[BigInt]) -> Vec<IPoly> {
+    let mut seq = vec![itrim(a.to_vec()), ideriv(a)];
+    let mut psi = BigInt::one();
+    let mut beta = BigInt::one();
+    let mut d_prev = 0usize;
+    loop {
+        let (r0, r1) = (&seq[seq.len() - 2], &seq[seq.len() - 1]);
+        let d = r0.len() - r1.len();
+        if seq.len() > 2 {
+            // i >= 2: psi_i from lc(r_(i-1)) = lc(r0), d_(i-1) = d_prev
+            let lc = r0[r0.len() - 1].abs();
+            psi = if d_prev == 0 {
+                psi
+            } else {
+                lc.pow(d_prev as u32) / psi.pow((d_prev - 1) as u32)
+            };
+            beta = lc * psi.pow(d as u32);
+        }
+        let r = prem_reference(r0, r1);
+        if r.is_empty() {
+            break;
+        }
+        let exact = r.iter().all(|v| (v % &beta).is_zero());
+        let r: IPoly = r.into_iter().map(|v| -v).collect();
+        seq.push(if exact {
+            r.into_iter().map(|v| v / &beta).collect()
+        } else {
+            content_free(r)
+        });
+        d_prev = d;
+    }
+    seq
+}
+
+#[cfg(test)]
+fn changes_at_reference(seq: &[IPoly], x: &Dyadic) -> usize {
+    sign_changes(seq.iter().map(|p| sign_at(p, x)))
+}
+
+/// Sorted disjoint intervals `(lo, hi)`, one real root of the squarefree
+/// `q` each (`seq` its Sturm sequence: counts, bisection of a power-of-two
+/// Cauchy bound; the Python's steps, in integers). The reference of
+/// [`isolate`] (the present one up to fast45).
+#[cfg(test)]
+fn isolate_reference(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
+    let n = at_inf(seq, true) - at_inf(seq, false);
+    if n == 0 {
+        return Vec::new();
+    }
+    // the least 2^e >= 1 + max |q_i / q_n|, doubled
+    let lead = q[q.len() - 1].abs();
+    let target = &lead
+        + q[..q.len() - 1]
+            .iter()
+            .map(BigInt::abs)
+            .max()
+            .unwrap_or_default();
+    let mut e = 0u64;
+    while (&lead << e) < target {
+        e += 1;
+    }
+    let bound = Dyadic {
+        m: BigInt::one() << (e + 1),
+        k: 0,
+    };
+    let mut out = Vec::new();
+    let mut stack = vec![(Dyadic { m: -&bound.m, k: 0 }, bound, n)];
+    while let Some((lo, hi, k)) = stack.pop() {
+        match k {
+            0 => continue,
+            1 => {
+                out.push((lo, hi));
+                continue;
+            }
+            _ => {}
+        }
+        let mut mid = Dyadic::blend(&lo, 1, &hi, 1, 1);
+        if sign_at(q, &mid) == Sign::NoSign {
+            let a = Dyadic::blend(&lo, 1, &hi, 3, 2);
+            mid = if sign_at(q, &a) != Sign::NoSign {
+                a
+            } else {
+                Dyadic::blend(&lo, 3, &hi, 1, 2)
+            };
+        }
+        let left = changes_at_reference(seq, &lo) - changes_at_reference(seq, &mid);
+        stack.push((lo, mid.clone(), left));
+        stack.push((mid, hi, k - left));
     }
     let mut out: Vec<(Rat, Rat)> = out.iter().map(|(a, b)| (a.rat(), b.rat())).collect();
     out.sort_by(|a, b| a.0.cmp(&b.0));
@@ -2131,6 +2386,140 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
                 assert_eq!(num_integer_gcd(&b, &a), euclid(&a, &b), "{a} {b}");
             }
         }
+    }
+
+    /// The fast steps against their references (the present path up to
+    /// fast45) on one task: displacements, poles, and for the shears in
+    /// turn up to the first squarefree `Q` (the one `certify_order`
+    /// takes) the resultant, the Sturm sequence (up to positive factors)
+    /// and the isolating intervals; `certify_order`'s fields equal to
+    /// them. Returns the number of shears compared and whether a
+    /// certificate was compared.
+    fn agree_with_the_references(label: &str, poses: &[[f64; 3]; 5]) -> (usize, bool) {
+        let (disp, reference) = match (displacements(poses), displacements_reference(poses)) {
+            (Ok(a), Ok(b)) => (a, b),
+            (Err(a), Err(b)) => {
+                assert_eq!(a, b, "{label}");
+                return (0, false);
+            }
+            (a, b) => panic!("{label}: {:?} against {:?}", a.err(), b.err()),
+        };
+        for (a, b) in disp.iter().zip(&reference) {
+            assert_eq!(
+                (&a.c, &a.s, &a.tx, &a.ty),
+                (&b.c, &b.s, &b.tx, &b.ty),
+                "{label}"
+            );
+        }
+        let all = poles(&disp);
+        assert_eq!(all, poles_reference(&reference), "{label}");
+        let pl: Vec<&(Rat, Rat)> = all.iter().flatten().collect();
+        let [f1, f2] = int_cubics(&int_task(poses).unwrap());
+        let cert = certify_order(poses);
+        let mut compared = 0;
+        for (a, q) in SHEARS {
+            let (c1, c2) = (shear(&f1, a, q), shear(&f2, a, q));
+            if c1.len() != 4 || c2.len() != 4 {
+                assert!(resultant_y(&c1, &c2).is_err());
+                continue;
+            }
+            let r = resultant_y(&c1, &c2).unwrap();
+            assert_eq!(r, resultant_y_sylvester(&c1, &c2).unwrap(), "{label}");
+            compared += 1;
+            let u = Rat::new(BigInt::from(a), BigInt::from(q));
+            let mut qp = r.clone();
+            for p in &pl {
+                match divide_linear(&qp, &p.0.sub(&u.mul(&p.1))) {
+                    Ok(v) => qp = v,
+                    Err(_) => return (compared, false),
+                }
+            }
+            if r.is_empty() || qp.is_empty() {
+                return (compared, false);
+            }
+            let (seq, seq_ref) = (sturm(&qp), sturm_reference(&qp));
+            let primitive =
+                |s: Vec<IPoly>| -> Vec<IPoly> { s.into_iter().map(content_free).collect() };
+            assert_eq!(
+                primitive(seq.clone()),
+                primitive(seq_ref.clone()),
+                "{label}"
+            );
+            if !squarefree(&seq) {
+                continue;
+            }
+            let iv = isolate(&qp, &seq);
+            assert_eq!(iv, isolate_reference(&qp, &seq_ref), "{label}");
+            let certified = match &cert {
+                Ok(c) if c.shear == (a, q) => {
+                    assert_eq!(
+                        (&c.resultant, &c.q, &c.intervals),
+                        (&r, &qp, &iv),
+                        "{label}"
+                    );
+                    assert_eq!(c.finite, iv.len(), "{label}");
+                    true
+                }
+                _ => false,
+            };
+            return (compared, certified);
+        }
+        (compared, false)
+    }
+
+    #[test]
+    fn fast_steps_agree_with_the_present_ones() {
+        let (mut compared, mut certified) = (0, [0; 3]);
+        let mut tally = |kind: usize, (n, c): (usize, bool)| {
+            compared += n;
+            certified[kind] += usize::from(c);
+        };
+        for case in &cases() {
+            tally(0, agree_with_the_references(&case.label, &case.poses));
+        }
+        let far = [
+            [1e300, 2e299, 0.1],
+            [-3e300, 1.5e300, 0.7],
+            [2e300, -1e300, -0.4],
+            [5e299, 7e299, 1.2],
+            [-1e300, -2e300, 2.0],
+        ];
+        for (label, f) in [("far", 1.0), ("near", 1e-600)] {
+            let poses = far.map(|p| [p[0] * f, p[1] * f, p[2]]);
+            tally(0, agree_with_the_references(label, &poses));
+        }
+        // random tasks: ordinary ones (positions in [-5, 5], angles in
+        // [-1.5, 1.5]), equal angles (poles at infinity), and ones whose
+        // coordinates mix magnitudes 1e-300..1e300
+        let mut r = Stream(0x6a09_e667_f3bc_c909);
+        let mut unit = move || (r.next() >> 11) as f64 / (1u64 << 53) as f64;
+        for trial in 0..360 {
+            let mut poses: [[f64; 3]; 5] = std::array::from_fn(|_| {
+                [10.0 * unit() - 5.0, 10.0 * unit() - 5.0, 3.0 * unit() - 1.5]
+            });
+            if trial % 12 == 1 {
+                poses[1][2] = poses[0][2];
+            }
+            if trial >= 300 {
+                for p in poses.iter_mut() {
+                    for v in p.iter_mut().take(2) {
+                        *v *= 10f64.powi((600.0 * unit()) as i32 - 300);
+                    }
+                }
+            }
+            let kind = if trial >= 300 { 2 } else { 1 };
+            tally(
+                kind,
+                agree_with_the_references(&format!("random {trial}"), &poses),
+            );
+        }
+        // nearly all certify with the poses as given (the module's cases
+        // certified in another order aside)
+        assert!(compared >= 370, "{compared}");
+        assert!(
+            certified[0] >= 10 && certified[1] >= 290 && certified[2] >= 55,
+            "{certified:?}"
+        );
     }
 
     #[test]
