@@ -1219,10 +1219,40 @@ fn changes_at(seq: &[Approx], x: &Dyadic) -> usize {
 
 /// Sorted disjoint intervals `(lo, hi)`, one real root of the squarefree
 /// `q` each (`seq` its Sturm sequence: counts, bisection of a power-of-two
-/// Cauchy bound; the Python's steps, in integers). Each step counts the
-/// sign changes at its midpoint only (those at its left end come with the
-/// interval), signs by [`Approx::sign_at`].
+/// Cauchy bound; the Python's steps, in integers), signs by
+/// [`Approx::sign_at`].
 fn isolate(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
+    let approx: Vec<Approx> = seq.iter().map(|p| Approx::of(p)).collect();
+    let qa = Approx::of(q);
+    bisect(
+        q,
+        seq,
+        |x| qa.sign_at(x, dyadic_wide(x)) == Sign::NoSign,
+        |x| changes_at(&approx, x),
+    )
+}
+
+/// [`isolate`] with exact signs throughout (its reference).
+#[cfg(test)]
+fn isolate_reference(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
+    bisect(
+        q,
+        seq,
+        |x| sign_at(q, x) == Sign::NoSign,
+        |x| sign_changes(seq.iter().map(|p| sign_at(p, x))),
+    )
+}
+
+/// The bisection of [`isolate`]: `zero(x)` whether `q(x) = 0`,
+/// `changes(x)` the Sturm sequence's sign changes at `x`. Each step
+/// counts them at its midpoint only (those at its left end come with the
+/// interval).
+fn bisect(
+    q: &[BigInt],
+    seq: &[IPoly],
+    zero: impl Fn(&Dyadic) -> bool,
+    changes: impl Fn(&Dyadic) -> usize,
+) -> Vec<(Rat, Rat)> {
     let n = at_inf(seq, true) - at_inf(seq, false);
     if n == 0 {
         return Vec::new();
@@ -1243,11 +1273,9 @@ fn isolate(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
         m: BigInt::one() << (e + 1),
         k: 0,
     };
-    let seq: Vec<Approx> = seq.iter().map(|p| Approx::of(p)).collect();
-    let qa = Approx::of(q);
     let mut out = Vec::new();
     let lo = Dyadic { m: -&bound.m, k: 0 };
-    let v_lo = changes_at(&seq, &lo);
+    let v_lo = changes(&lo);
     let mut stack = vec![(lo, bound, n, v_lo)];
     while let Some((lo, hi, k, v_lo)) = stack.pop() {
         match k {
@@ -1259,15 +1287,15 @@ fn isolate(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
             _ => {}
         }
         let mut mid = Dyadic::blend(&lo, 1, &hi, 1, 1);
-        if qa.sign_at(&mid, dyadic_wide(&mid)) == Sign::NoSign {
+        if zero(&mid) {
             let a = Dyadic::blend(&lo, 1, &hi, 3, 2);
-            mid = if qa.sign_at(&a, dyadic_wide(&a)) != Sign::NoSign {
+            mid = if !zero(&a) {
                 a
             } else {
                 Dyadic::blend(&lo, 3, &hi, 1, 2)
             };
         }
-        let v_mid = changes_at(&seq, &mid);
+        let v_mid = changes(&mid);
         let left = v_lo - v_mid;
         stack.push((lo, mid.clone(), left, v_lo));
         stack.push((mid, hi, k - left, v_mid));
@@ -1276,137 +1304,7 @@ fn isolate(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
     out.sort_by(|a, b| a.0.cmp(&b.0));
     out
 }
-/// A positive multiple of the remainder of `a / b` (`b` nonzero):
-/// pseudo-division with `|lc(b)|`, so signs are kept. The reference of
-/// [`prem`] (the present one up to fast45).
-#[cfg(test)]
-fn prem_reference(a: &[BigInt], b: &[BigInt]) -> IPoly {
-    let lc = &b[b.len() - 1];
-    let (lc_abs, negative) = (lc.abs(), lc.is_negative());
-    let mut r = itrim(a.to_vec());
-    while r.len() >= b.len() {
-        let k = r.len() - b.len();
-        let c = r[r.len() - 1].clone();
-        for v in r.iter_mut() {
-            *v *= &lc_abs;
-        }
-        for (i, v) in b.iter().enumerate() {
-            let t = &c * v;
-            if negative {
-                r[i + k] += t;
-            } else {
-                r[i + k] -= t;
-            }
-        }
-        r = itrim(r);
-    }
-    r
-}
 
-/// The Sturm sequence of `a`, each member scaled by a positive factor;
-/// its last member is `gcd(a, a')` up to a factor. The factors are kept
-/// small without gcds: each pseudo-remainder is divided by the magnitude
-/// of the subresultant sequence's `beta_i` (Collins: `|beta_1| = 1`,
-/// `|psi_1| = 1`, `|psi_i| = |lc r_(i-1)|^d_(i-1) / |psi_(i-1)|^(d_(i-1) - 1)`,
-/// `|beta_i| = |lc r_(i-1)| |psi_i|^d_i`, `d_i = deg r_(i-1) - deg r_i`),
-/// an exact divisor; its signs do not matter here (a positive divisor
-/// keeps the Sturm signs). Where a division were not exact (not expected)
-/// the member's content is divided out instead. The reference of
-/// [`sturm`] (the present one up to fast45).
-#[cfg(test)]
-fn sturm_reference(a: &[BigInt]) -> Vec<IPoly> {
-    let mut seq = vec![itrim(a.to_vec()), ideriv(a)];
-    let mut psi = BigInt::one();
-    let mut beta = BigInt::one();
-    let mut d_prev = 0usize;
-    loop {
-        let (r0, r1) = (&seq[seq.len() - 2], &seq[seq.len() - 1]);
-        let d = r0.len() - r1.len();
-        if seq.len() > 2 {
-            // i >= 2: psi_i from lc(r_(i-1)) = lc(r0), d_(i-1) = d_prev
-            let lc = r0[r0.len() - 1].abs();
-            psi = if d_prev == 0 {
-                psi
-            } else {
-                lc.pow(d_prev as u32) / psi.pow((d_prev - 1) as u32)
-            };
-            beta = lc * psi.pow(d as u32);
-        }
-        let r = prem_reference(r0, r1);
-        if r.is_empty() {
-            break;
-        }
-        let exact = r.iter().all(|v| (v % &beta).is_zero());
-        let r: IPoly = r.into_iter().map(|v| -v).collect();
-        seq.push(if exact {
-            r.into_iter().map(|v| v / &beta).collect()
-        } else {
-            content_free(r)
-        });
-        d_prev = d;
-    }
-    seq
-}
-
-#[cfg(test)]
-fn changes_at_reference(seq: &[IPoly], x: &Dyadic) -> usize {
-    sign_changes(seq.iter().map(|p| sign_at(p, x)))
-}
-
-/// Sorted disjoint intervals `(lo, hi)`, one real root of the squarefree
-/// `q` each (`seq` its Sturm sequence: counts, bisection of a power-of-two
-/// Cauchy bound; the Python's steps, in integers). The reference of
-/// [`isolate`] (the present one up to fast45).
-#[cfg(test)]
-fn isolate_reference(q: &[BigInt], seq: &[IPoly]) -> Vec<(Rat, Rat)> {
-    let n = at_inf(seq, true) - at_inf(seq, false);
-    if n == 0 {
-        return Vec::new();
-    }
-    // the least 2^e >= 1 + max |q_i / q_n|, doubled
-    let lead = q[q.len() - 1].abs();
-    let target = &lead
-        + q[..q.len() - 1]
-            .iter()
-            .map(BigInt::abs)
-            .max()
-            .unwrap_or_default();
-    let mut e = 0u64;
-    while (&lead << e) < target {
-        e += 1;
-    }
-    let bound = Dyadic {
-        m: BigInt::one() << (e + 1),
-        k: 0,
-    };
-    let mut out = Vec::new();
-    let mut stack = vec![(Dyadic { m: -&bound.m, k: 0 }, bound, n)];
-    while let Some((lo, hi, k)) = stack.pop() {
-        match k {
-            0 => continue,
-            1 => {
-                out.push((lo, hi));
-                continue;
-            }
-            _ => {}
-        }
-        let mut mid = Dyadic::blend(&lo, 1, &hi, 1, 1);
-        if sign_at(q, &mid) == Sign::NoSign {
-            let a = Dyadic::blend(&lo, 1, &hi, 3, 2);
-            mid = if sign_at(q, &a) != Sign::NoSign {
-                a
-            } else {
-                Dyadic::blend(&lo, 3, &hi, 1, 2)
-            };
-        }
-        let left = changes_at_reference(seq, &lo) - changes_at_reference(seq, &mid);
-        stack.push((lo, mid.clone(), left));
-        stack.push((mid, hi, k - left));
-    }
-    let mut out: Vec<(Rat, Rat)> = out.iter().map(|(a, b)| (a.rat(), b.rat())).collect();
-    out.sort_by(|a, b| a.0.cmp(&b.0));
-    out
-}
 // ------------------------------------------------------ the certificate
 
 /// The shears `u = a / q` tried in turn.
@@ -2388,6 +2286,25 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
         }
     }
 
+    /// The Sturm sequence by rational remainders (`udiv`), each member
+    /// made primitive (the reference of `sturm`, up to positive factors).
+    fn primitive_sturm(q: &[BigInt]) -> Vec<IPoly> {
+        let rat = |p: &IPoly| -> UPoly { p.iter().cloned().map(Rat::int).collect() };
+        let mut reference = vec![content_free(q.to_vec()), content_free(ideriv(q))];
+        loop {
+            let (a, b) = (
+                &reference[reference.len() - 2],
+                &reference[reference.len() - 1],
+            );
+            let r = udiv(&rat(a), &rat(b)).1;
+            if r.is_empty() {
+                break;
+            }
+            reference.push(primitive_of(&r.iter().map(Rat::neg).collect::<UPoly>()));
+        }
+        reference
+    }
+
     /// The fast steps against their references (the present path up to
     /// fast45) on one task: displacements, poles, and for the shears in
     /// turn up to the first squarefree `Q` (the one `certify_order`
@@ -2437,14 +2354,9 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             if r.is_empty() || qp.is_empty() {
                 return (compared, false);
             }
-            let (seq, seq_ref) = (sturm(&qp), sturm_reference(&qp));
-            let primitive =
-                |s: Vec<IPoly>| -> Vec<IPoly> { s.into_iter().map(content_free).collect() };
-            assert_eq!(
-                primitive(seq.clone()),
-                primitive(seq_ref.clone()),
-                "{label}"
-            );
+            let (seq, seq_ref) = (sturm(&qp), primitive_sturm(&qp));
+            let primitive: Vec<IPoly> = seq.iter().cloned().map(content_free).collect();
+            assert_eq!(primitive, seq_ref, "{label}");
             if !squarefree(&seq) {
                 continue;
             }
@@ -2873,17 +2785,7 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
         for case in &cases() {
             let q = certify(&case.poses).unwrap().q;
             let seq = sturm(&q);
-            let mut reference = vec![content_free(q.clone()), content_free(ideriv(&q))];
-            loop {
-                let r = prem(
-                    &reference[reference.len() - 2],
-                    &reference[reference.len() - 1],
-                );
-                if r.is_empty() {
-                    break;
-                }
-                reference.push(content_free(r.into_iter().map(|v| -v).collect()));
-            }
+            let reference = primitive_sturm(&q);
             let primitive: Vec<IPoly> = seq.iter().cloned().map(content_free).collect();
             assert_eq!(primitive, reference, "{}", case.label);
             // the divided members stay within the subresultants' size (a
