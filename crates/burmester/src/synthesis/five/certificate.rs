@@ -216,15 +216,27 @@ fn num_integer_gcd(a: &BigInt, b: &BigInt) -> BigInt {
         }
         // |ca|, |cb|, |cc|, |cd| < 2^63; the combinations are the
         // remainders of the Euclidean steps taken (non-negative, checked)
-        let (sa, sb) = (BigInt::from(a.clone()), BigInt::from(b.clone()));
-        let (na, nb) = (&sa * ca + &sb * cb, &sa * cc + &sb * cd);
-        if cb == 0 || na.is_negative() || nb.is_negative() || na < nb {
-            let r = &a % &b;
-            a = b;
-            b = r;
-        } else {
-            a = na.into_parts().1;
-            b = nb.into_parts().1;
+        let combine = |p: i128, q: i128| -> Option<BigUint> {
+            // p a + q b, p and q of opposite signs (or one zero)
+            let (x, y) = (&a * p.unsigned_abs(), &b * q.unsigned_abs());
+            if p >= 0 && q <= 0 && x >= y {
+                Some(x - y)
+            } else if p <= 0 && q >= 0 && y >= x {
+                Some(y - x)
+            } else {
+                None
+            }
+        };
+        match (cb != 0).then(|| (combine(ca, cb), combine(cc, cd))) {
+            Some((Some(na), Some(nb))) if na >= nb => {
+                a = na;
+                b = nb;
+            }
+            _ => {
+                let r = &a % &b;
+                a = b;
+                b = r;
+            }
         }
     }
     if b.is_zero() {
@@ -435,12 +447,20 @@ fn p2_mul(p: &Poly2<BigInt>, q: &Poly2<BigInt>) -> Poly2<BigInt> {
     r
 }
 
-fn det3(r: [&[Poly2<BigInt>; 3]; 3]) -> Poly2<BigInt> {
-    let m2 = |a, b, c, d| p2_add(&p2_mul(a, d), &p2_mul(b, c), -1);
-    let t1 = p2_mul(&r[0][0], &m2(&r[1][1], &r[1][2], &r[2][1], &r[2][2]));
-    let t2 = p2_mul(&r[0][1], &m2(&r[1][0], &r[1][2], &r[2][0], &r[2][2]));
-    let t3 = p2_mul(&r[0][2], &m2(&r[1][0], &r[1][1], &r[2][0], &r[2][1]));
-    p2_add(&p2_add(&t1, &t2, -1), &t3, 1)
+/// The 3x3 determinants of rows `r0, r1, r` for each `r` of `last`, by
+/// cofactors along the last row (the 2x2 minors of `r0, r1` formed once,
+/// shared).
+fn det3_last_rows(
+    r0: &[Poly2<BigInt>; 3],
+    r1: &[Poly2<BigInt>; 3],
+    last: [&[Poly2<BigInt>; 3]; 2],
+) -> [Poly2<BigInt>; 2] {
+    let m2 = |i: usize, j: usize| p2_add(&p2_mul(&r0[i], &r1[j]), &p2_mul(&r0[j], &r1[i]), -1);
+    let (m0, m1, m2) = (m2(1, 2), m2(0, 2), m2(0, 1));
+    last.map(|r| {
+        let t = p2_add(&p2_mul(&r[0], &m0), &p2_mul(&r[1], &m1), -1);
+        p2_add(&t, &p2_mul(&r[2], &m2), 1)
+    })
 }
 
 /// `f` divided by the gcd of its coefficients.
@@ -479,10 +499,7 @@ fn int_cubics(t: &IntTask) -> [Poly2<BigInt>; 2] {
             [ax, ay, b]
         })
         .collect();
-    [
-        ip2_primitive(det3([&rows[0], &rows[1], &rows[2]])),
-        ip2_primitive(det3([&rows[0], &rows[1], &rows[3]])),
-    ]
+    det3_last_rows(&rows[0], &rows[1], [&rows[2], &rows[3]]).map(ip2_primitive)
 }
 
 /// The translations of poses 2..5 from pose 1 as `(TX, TY)`: `t = (TX,
