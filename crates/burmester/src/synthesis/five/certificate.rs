@@ -1079,9 +1079,10 @@ fn divide_linear(a: &[BigInt], x: &Rat) -> Result<IPoly, CannotCertify> {
     let mut r = a.to_vec();
     let mut q = vec![BigInt::zero(); a.len().saturating_sub(1)];
     for k in (0..q.len()).rev() {
-        // r's leading term r[k+1] X^(k+1) = c X^k (D X - N)
-        let (c, rem) = (&r[k + 1] / d, &r[k + 1] % d);
-        if !rem.is_zero() {
+        // r's leading term r[k+1] X^(k+1) = c X^k (D X - N); exact
+        // checked by the product (cheaper than a second division)
+        let c = &r[k + 1] / d;
+        if &c * d != r[k + 1] {
             return cannot("internal: a pole's factor does not divide the resultant");
         }
         r[k + 1] = BigInt::zero();
@@ -2579,6 +2580,34 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             assert_eq!(sign_of_prem_linear(&a, &b), exact, "trial {trial}");
         }
         assert!(zeros > 150, "{zeros}");
+    }
+
+    #[test]
+    fn linear_division_is_exact_or_refused() {
+        // (3X - 2)(X + 5)(7X^2 + 1) times 6: divided by its roots 2/3 and
+        // -5, refused at 1/3, 2 and 2/9 (not roots; 9X - 2 not a factor)
+        let big = BigInt::one() << 3000;
+        let mut p: IPoly = vec![BigInt::from(6) * &big];
+        for f in [
+            vec![BigInt::from(-2), BigInt::from(3)],
+            vec![BigInt::from(5), BigInt::one()],
+            vec![BigInt::one(), BigInt::zero(), BigInt::from(7)],
+        ] {
+            p = imul(&p, &f);
+        }
+        let r = |n: i64, d: i64| Rat::new(BigInt::from(n), BigInt::from(d));
+        let q = divide_linear(&divide_linear(&p, &r(2, 3)).unwrap(), &r(-5, 1)).unwrap();
+        assert_eq!(
+            q,
+            vec![
+                BigInt::from(6) * &big,
+                BigInt::zero(),
+                BigInt::from(42) * &big
+            ]
+        );
+        for x in [r(1, 3), r(2, 1), r(2, 9)] {
+            assert!(divide_linear(&p, &x).is_err(), "{x:?}");
+        }
     }
 
     #[test]
