@@ -8,10 +8,15 @@
 //! half-angle tangent (rounded to a double); positions are the floats'
 //! exact dyadic values. Steps: the two center-point cubics `f1`, `f2`
 //! (integer, primitive); a shear `x = X + u Y`; the resultant
-//! `R(X) = res_Y(f1, f2)` by ten 6x6 Bareiss determinants and Newton
-//! interpolation; the poles' linear factors divided out exactly (`Q`);
-//! `Q` squarefree; its real roots counted by a Sturm sequence and isolated
-//! by bisection; the Burmester points at infinity from `4 - deg Q`.
+//! `R(X) = res_Y(f1, f2)` as minus the determinant of the two cubics'
+//! 3x3 Bezout matrix, expanded in integer polynomials in `X` (no
+//! evaluation, no division); the poles' linear factors divided out
+//! exactly (`Q`); `Q` squarefree; its real roots counted by a Sturm
+//! sequence (of `Q`'s primitive part; subresultant divisions) and isolated
+//! by bisection; the Burmester points at infinity from `4 - deg Q`. Every
+//! sign of a polynomial at a dyadic point is taken from a wide-exponent
+//! `f64` Horner where a rigorous error bound decides it, exactly
+//! otherwise ([`Approx::sign_at`]); gcds by Lehmer's algorithm.
 //!
 //! Sizes (bounded by the f64 exponent range; the degrees are fixed, so
 //! no allocation grows with anything but these bit lengths): a position is
@@ -19,15 +24,17 @@
 //! `1024 + 1074` bits; a rotation's `C, S, D` at most about `2 (1074 + 53)`
 //! bits (a half-angle tangent down to the least double); the rows' entries
 //! a few such products, the cubics' coefficients (3x3 determinants of them)
-//! at most about 25,000 bits, the resultant (6x6 determinants of the
-//! sheared coefficients) at most about six times that, `Q` and its Sturm
+//! at most about 25,000 bits, the resultant (a 6x6 Sylvester determinant
+//! in the sheared coefficients) at most about six times that, `Q` and its Sturm
 //! sequence (subresultant-sized) at most about seven times `Q`'s. The
 //! bisection halves a power-of-two Cauchy bound down to the roots'
 //! separation, itself bounded by the same sizes. Measured (release, one
-//! core): ordinary tasks 530-bit cubics, 3,200-bit resultants, about 3 ms
-//! a task (`certificate_five.py`: 20 ms), the 186 frames of the open
-//! findings median 2.5 ms, max 4 ms; positions mixing `1e300` and
-//! `1e-300`: a 42,000-bit resultant, 97 ms; angles of `1e-300`: 39 ms.
+//! core; bench `points/certificate`, `points/certificate_mixed`):
+//! ordinary tasks 530-bit cubics, 3,200-bit resultants, about 0.3 ms a
+//! task (2.5 ms before fast45; `certificate_five.py`: 20 ms); positions
+//! mixing `1e300` and `1e-300`: a 42,000-bit resultant, about 9 ms (95
+//! ms before). Before fast45 the 186 frames of the open findings took a
+//! median 2.5 ms, max 4 ms, and angles of `1e-300` 39 ms.
 //!
 //! Step 6 (for judging an answer, [`refuses`]): each isolated root refined
 //! by exact bisection and its point's `y` from the first subresultant of
@@ -381,7 +388,7 @@ fn int_task(poses: &[[f64; 3]; 5]) -> Result<IntTask, CannotCertify> {
     Ok(IntTask { rot, pos, e })
 }
 
-/// `(C, S, D)` with `(C / D, S / D)` the rotation of [`unit_rotation`]:
+/// `(C, S, D)` with `(C / D, S / D)` the rotation of `unit_rotation`:
 /// `tau = T / 2^k`, `D = 4^k + T^2`, `C = 4^k - T^2`, `S = 2^(k+1) T`.
 fn unit_rotation_int(d: f64) -> Result<(BigInt, BigInt, BigInt), CannotCertify> {
     let tau = match half_angle(d)? {
@@ -606,7 +613,7 @@ fn fixed_point(d: [Frac; 4]) -> Option<(Rat, Rat)> {
 }
 
 /// The poles P12, P13, P23 (unreduced arithmetic, each coordinate reduced
-/// once; the reference is [`poles_reference`]).
+/// once; the reference is `poles_reference`).
 fn poles(disp: &[Disp]) -> [Option<(Rat, Rat)>; 3] {
     let f = |d: &Disp| [&d.c, &d.s, &d.tx, &d.ty].map(Frac::of);
     let ([c2, s2, tx2, ty2], d3) = (f(&disp[0]), f(&disp[1]));
@@ -787,7 +794,7 @@ fn iadd(a: &[BigInt], b: &[BigInt], sign: i64) -> IPoly {
 /// sum b_ij y^i z^j`, so `b_ij` sums `w_kl = f_k g_l - f_l g_k` over the
 /// `k > l` with `k + l = i + j + 1`, `l <= i, j < k`; for two cubics
 /// `res = (-1)^(3 (3 - 1) / 2) det B = -det B` (the Sylvester determinant
-/// of [`resultant_y_sylvester`], checked by the tests). Integer
+/// of `resultant_y_sylvester`, checked by the tests). Integer
 /// coefficients, lowest degree first, trimmed.
 fn resultant_y(c1: &[Vec<BigInt>], c2: &[Vec<BigInt>]) -> Result<Vec<BigInt>, CannotCertify> {
     if c1.len() != 4 || c2.len() != 4 {
