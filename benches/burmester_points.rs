@@ -13,6 +13,10 @@
 //!   class changes bisected;
 //! * `points/exact`: the Burmester points of the five poses
 //!   (`FivePositions::new`: the curves, the candidates, Newton, the checks);
+//! * `points/certificate`, `points/certificate_mixed`: the exact count
+//!   certificate of the five poses (`certified_count`, a hidden hook:
+//!   the cubics, the resultant, Sturm, isolation; issue 24), and of a
+//!   task whose positions mix magnitudes `1e300` and `1e-300`;
 //! * `points/grid_search`: the baseline. Candidate circle points on 12 radii
 //!   x 48 angles about each pose's position (radii `size/6 .. 2 size`, equal
 //!   steps: 5 x 576 = 2880 candidates); for each candidate its five
@@ -34,6 +38,7 @@ use std::f64::consts::TAU;
 use std::hint::black_box;
 use std::path::PathBuf;
 
+use burmester::synthesis::five::certified_count;
 use burmester::synthesis::{FivePositions, FourPositions};
 use burmester::{Dyad, Point2, Pose, Vector2, Viewport};
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -308,6 +313,20 @@ fn bench(c: &mut Criterion) {
     g.bench_function("grid_search", |b| {
         b.iter(|| GridSearch::new(black_box(poses)).count())
     });
+    // The exact count certificate (issue 24) of the example, and of a task
+    // whose positions mix magnitudes 1e300 and 1e-300 (its worst case).
+    let example = poses.map(|p| [p.position.x, p.position.y, p.angle]);
+    let mixed = [
+        [1e300, 2e-299, 0.1],
+        [-3e-300, 1.5e300, 0.7],
+        [2e300, -1e-300, -0.4],
+        [5e-299, 7e299, 1.2],
+        [-1e300, -2e-300, 2.0],
+    ];
+    for (name, task) in [("certificate", example), ("certificate_mixed", mixed)] {
+        assert!(certified_count(&task).is_some(), "{name}");
+        g.bench_function(name, |b| b.iter(|| certified_count(black_box(&task))));
+    }
     g.finish();
 }
 

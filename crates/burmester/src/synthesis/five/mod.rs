@@ -23,6 +23,9 @@ use crate::tolerance;
 mod certificate;
 mod refine;
 
+#[doc(hidden)]
+pub use certificate::certified_count;
+
 /// A four-bar made of two Burmester dyads, classified for either dyad
 /// driving.
 #[derive(Debug, Clone, PartialEq)]
