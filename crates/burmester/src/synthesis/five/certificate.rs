@@ -3592,6 +3592,7 @@ point-not-found-in-another-frame-cbc8befa moved | 0.0005366249336563596 0.000494
             let m = certify_order(&moved).unwrap();
             assert_eq!((m.finite, m.sliders, m.q.len() - 1), (finite, 0, 4));
             let seq = sturm(&m.q);
+            let seq: Vec<Approx> = seq.iter().map(|p| Approx::of(p)).collect();
             let at = |v: i64| {
                 changes_at(
                     &seq,
