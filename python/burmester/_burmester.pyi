@@ -865,10 +865,7 @@ class Task:
         where the answer's points within 1e4 task sizes are not those of the
         float task solved in exact integer arithmetic (the same cause; a
         double point may stand for a complex pair within 1e-5 of the size
-        of the real plane), or where the poses' numbers span too many
-        binary orders of magnitude for that exact count (the same cause: a
-        coordinate such as 1e-300 beside 1, or two angles within about
-        1e-100 rad)."""
+        of the real plane)."""
     def burmester_curves(self) -> Tuple[Cubic, Cubic]:
         """Five poses only: the center-point curves of poses 1, 2, 3, 4 and
         1, 2, 3, 5; the Burmester centers are their common points other than
