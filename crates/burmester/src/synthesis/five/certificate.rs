@@ -1588,7 +1588,6 @@ fn column_at(c: &[BigInt], x: &Rat) -> BigInt {
 /// absolute floor.
 pub(crate) fn points(c: &Certified, reach: f64) -> Result<Vec<(f64, f64)>, CannotCertify> {
     let (a, q) = c.shear;
-    let u = Rat::new(BigInt::from(a), BigInt::from(q));
     let reach = Rat::of_f64(reach)?;
     let [f1, f2] = &c.cubics;
     let (c1, c2) = (shear(f1, a, q), shear(f2, a, q));
@@ -1621,8 +1620,15 @@ pub(crate) fn points(c: &Certified, reach: f64) -> Result<Vec<(f64, f64)>, Canno
                 "internal: two common points over one X (the first subresultant vanishes)",
             );
         }
-        let y = Rat::new(-s0, s1);
-        let x = x0.add(&u.mul(&y));
+        // y = -s0 / s1 and x = x0 + (a / q) y = (n0 q s1 - a s0 d0) / (d0 q s1),
+        // rounded to f64 unreduced (no gcds: `to_f64` needs only d > 0)
+        let (s0, s1) = if s1.is_negative() { (-s0, -s1) } else { (s0, s1) };
+        let y = Rat { n: -&s0, d: s1.clone() };
+        let qs1 = &s1 * c.shear.1;
+        let x = Rat {
+            n: &x0.n * &qs1 - &s0 * &x0.d * c.shear.0,
+            d: &x0.d * qs1,
+        };
         out.push((x.to_f64(), y.to_f64()));
     }
     Ok(out)
