@@ -40,9 +40,12 @@
 //! by exact bisection and its point's `y` from the first subresultant of
 //! the two sheared cubics; the answer's points within `BURMESTER_NEAR`
 //! task sizes must pair one to one with the exact ones there
-//! ([`disagreement`]). `FivePositions::of` refuses an answer that does not
-//! (stop 42); where the exact task cannot be certified (degenerate or
-//! ambiguous) the library's own checks answer.
+//! ([`disagreement`]; a listed double point may stand for a complex pair
+//! of the exact task within [`PAIR_REACH`], [`complex_pair_at`]).
+//! `FivePositions::of` refuses an answer that does not (stop 42); where
+//! the exact task cannot be certified (degenerate or ambiguous) the
+//! library's own checks answer. The heaviest f64 tasks give cubics of
+//! about 10,600 bits (test `the_check_at_its_heaviest`: some tens of ms).
 
 use std::cmp::Ordering;
 
@@ -1622,8 +1625,15 @@ pub(crate) fn points(c: &Certified, reach: f64) -> Result<Vec<(f64, f64)>, Canno
         }
         // y = -s0 / s1 and x = x0 + (a / q) y = (n0 q s1 - a s0 d0) / (d0 q s1),
         // rounded to f64 unreduced (no gcds: `to_f64` needs only d > 0)
-        let (s0, s1) = if s1.is_negative() { (-s0, -s1) } else { (s0, s1) };
-        let y = Rat { n: -&s0, d: s1.clone() };
+        let (s0, s1) = if s1.is_negative() {
+            (-s0, -s1)
+        } else {
+            (s0, s1)
+        };
+        let y = Rat {
+            n: -&s0,
+            d: s1.clone(),
+        };
         let qs1 = &s1 * c.shear.1;
         let x = Rat {
             n: &x0.n * &qs1 - &s0 * &x0.d * c.shear.0,
