@@ -199,10 +199,12 @@ impl FivePositions {
     /// points and sliders are not compared (a far point is known only
     /// within rounding of a slider). Where the exact task is degenerate (a
     /// Burmester point at a pole, a multiple point, a common component)
-    /// the checks above answer alone. The exact count costs about 0.3 ms
-    /// on an ordinary task (its integers about 550 bits) and some tens of
-    /// milliseconds at the most on any f64 task (coordinates of `1e100`
-    /// beside subnormal ones and subnormal rotations: about 10,000 bits).
+    /// the checks above answer alone. The exact check costs about 0.7 ms on
+    /// an ordinary task (0.3 ms the count, the rest each point's place; its
+    /// integers about 550 bits; `FivePositions::new` about 0.83 ms in all on
+    /// the notes' worked example) and some tens of milliseconds at the most
+    /// on any f64 task (coordinates of `1e100` beside subnormal ones and
+    /// subnormal rotations: about 10,000 bits).
     pub fn new(poses: &[Pose]) -> Result<Self> {
         of_poses(poses, 5, "FivePositions::new", Self::of)
     }
