@@ -1107,8 +1107,14 @@ fn divide_linear(a: &[BigInt], x: &Rat) -> Result<IPoly, CannotCertify> {
 
 /// The sign of `p(N / D)` (of `D^deg p(N / D)`, an integer).
 fn sign_at_rat(p: &[BigInt], x: &Rat) -> Sign {
+    homogeneous_at(p, x, p.len().saturating_sub(1)).sign()
+}
+
+/// `D^n p(N / D)` at `x = N / D` (an integer for `n >= deg p`; one
+/// positive factor `D^n` for every `p` evaluated with the same `n`).
+fn homogeneous_at(p: &[BigInt], x: &Rat, n: usize) -> BigInt {
     let Some(last) = p.last() else {
-        return Sign::NoSign;
+        return BigInt::zero();
     };
     let mut h = last.clone();
     let mut dk = BigInt::one();
@@ -1116,7 +1122,7 @@ fn sign_at_rat(p: &[BigInt], x: &Rat) -> Sign {
         dk *= &x.d;
         h = h * &x.n + a * &dk;
     }
-    h.sign()
+    h * x.d.pow((n + 1 - p.len()) as u32)
 }
 
 /// A dyadic rational `m / 2^k` (the bisection's points).
@@ -1412,6 +1418,9 @@ pub(crate) struct Certified {
     /// positive multiple of the Python's primitive `Q`, lowest degree
     /// first).
     pub(crate) q: IPoly,
+    /// `Q`'s Sturm sequence (each member a positive multiple; the one the
+    /// count and the intervals came from).
+    pub(crate) sturm: Vec<IPoly>,
     /// The resultant `res_Y(f1, f2)` of the sheared integer cubics.
     // read by the tests (the reference's values); the refusal reads the points
     #[cfg_attr(not(test), allow(dead_code))]
@@ -1525,6 +1534,7 @@ pub(crate) fn certify_order(poses: &[[f64; 3]; 5]) -> Result<Certified, CannotCe
             shear: (a, q),
             intervals,
             q: qp,
+            sturm: seq,
             resultant: r,
             cubics: [f1, f2],
             order: [0, 1, 2, 3, 4],
@@ -1571,16 +1581,6 @@ fn refine(q: &[BigInt], lo: &Rat, hi: &Rat, reach: &Rat) -> Result<Rat, CannotCe
     Ok(Dyadic::blend(&lo, 1, &hi, 1, 1).rat())
 }
 
-/// `D^3 c(N / D)` for a column `c` (a polynomial in `X` of degree at most
-/// 3) at `X = N / D`: one positive factor `D^3` for every column.
-fn column_at(c: &[BigInt], x: &Rat) -> BigInt {
-    let mut sum = BigInt::zero();
-    for (k, v) in c.iter().enumerate() {
-        sum += v * x.n.pow(k as u32) * x.d.pow(3 - k as u32);
-    }
-    sum
-}
-
 /// The finite Burmester points `(x, y)` of a certificate, one per isolated
 /// root of `Q` (in the order of the intervals): `X` refined by exact
 /// bisection, `Y` the common root of the two sheared cubics over it, from
@@ -1600,8 +1600,10 @@ pub(crate) fn points(c: &Certified, reach: f64) -> Result<Vec<(f64, f64)>, Canno
     let mut out = Vec::with_capacity(c.intervals.len());
     for (lo, hi) in &c.intervals {
         let x0 = refine(&c.q, lo, hi, &reach)?;
-        let a: Vec<BigInt> = c1.iter().map(|col| column_at(col, &x0)).collect();
-        let b: Vec<BigInt> = c2.iter().map(|col| column_at(col, &x0)).collect();
+        // D^3 c(N / D) for each column c (degree at most 3 in X): one
+        // positive factor for every entry
+        let a: Vec<BigInt> = c1.iter().map(|col| homogeneous_at(col, &x0, 3)).collect();
+        let b: Vec<BigInt> = c2.iter().map(|col| homogeneous_at(col, &x0, 3)).collect();
         // Sylvester rows Y f1, f1, Y f2, f2 in the powers Y^4 .. Y^0
         let z = BigInt::zero();
         let rows = [
@@ -1715,13 +1717,22 @@ pub(crate) fn disagreement(
                 Some(k) => close(l, exact[*k]),
                 None => true,
             });
+            let exact_ok = exact
+                .iter()
+                .enumerate()
+                .all(|(k, &e)| !is_near(e) || at.contains(&Some(k)));
+            if !(listed_ok && exact_ok) {
+                return false;
+            }
+            // the near listed points left unpaired (each test exact: only
+            // where the pairing holds otherwise)
             let left: Vec<(f64, f64)> = at
                 .iter()
                 .zip(listed)
                 .filter(|(k, l)| k.is_none() && is_near(**l))
                 .map(|(_, &l)| l)
                 .collect();
-            let pairs_ok = match left.len() {
+            match left.len() {
                 0 => true,
                 2 => complex_pair(left[0], left[1]),
                 4 => [[0, 1, 2, 3], [0, 2, 1, 3], [0, 3, 1, 2]]
@@ -1730,12 +1741,7 @@ pub(crate) fn disagreement(
                         complex_pair(left[*a], left[*b]) && complex_pair(left[*c], left[*d])
                     }),
                 _ => false,
-            };
-            let exact_ok = exact
-                .iter()
-                .enumerate()
-                .all(|(k, &e)| !is_near(e) || at.contains(&Some(k)));
-            listed_ok && pairs_ok && exact_ok
+            }
         },
     );
     if ok {
@@ -1822,8 +1828,8 @@ fn complex_pair_at(
         return false;
     }
     let u = c.shear.0 as f64 / c.shear.1 as f64;
-    let r = reach * (1.0 + u.abs()) + gap * (1.0 + u.abs());
-    let ((mx, my), r) = (((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0), r);
+    let r = (reach + gap) * (1.0 + u.abs());
+    let (mx, my) = ((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0);
     let (Ok(mx), Ok(my), Ok(r)) = (Rat::of_f64(mx), Rat::of_f64(my), Rat::of_f64(r)) else {
         return false;
     };
@@ -1833,9 +1839,8 @@ fn complex_pair_at(
     let ur = Rat::new(BigInt::from(c.shear.0), BigInt::from(c.shear.1));
     let xm = mx.sub(&ur.mul(&my));
     // no real root within r
-    let seq = sturm(&c.q);
     let (lo, hi) = (xm.sub(&r), xm.add(&r));
-    let changes = |x: &Rat| sign_changes(seq.iter().map(|p| sign_at_rat(p, x)));
+    let changes = |x: &Rat| sign_changes(c.sturm.iter().map(|p| sign_at_rat(p, x)));
     if sign_at_rat(&c.q, &lo) == Sign::NoSign
         || sign_at_rat(&c.q, &hi) == Sign::NoSign
         || changes(&lo) != changes(&hi)
